@@ -1,0 +1,214 @@
+// What the effect compiler produces: GLSL per shader, reflection, and per-pass render-state
+// assignments in one canonical vocabulary (DX9 `AlphaBlendEnable = true;` and DX10
+// `SetBlendState(...)` both end up as StateAssignment rows). No GL here: the runtime maps this onto
+// its own cached state objects.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fxport/xlate/diagnostics.h"
+
+namespace fxport::xlate {
+
+enum class ShaderStage : std::uint8_t { Vertex, Pixel, Geometry };
+
+// "vs_3_0" -> {Vertex, 3, 0}; "ps_4_0_level_9_1" -> {Pixel, 4, 0}; "ps_2_a" -> {Pixel, 2, 1}.
+struct ShaderProfile {
+    ShaderStage stage = ShaderStage::Vertex;
+    int major = 0;
+    int minor = 0;
+    std::string name;  // as written in the effect
+
+    // D3D9 rasterisation rules (pixel centres at integer coordinates) apply to SM 1-3 shaders.
+    bool isD3D9() const { return major <= 3; }
+};
+
+// ---------------------------------------------------------------------------------------------
+// Parameters (the effect's global variables, as XNA's EffectParameterCollection sees them)
+
+enum class ParameterClass : std::uint8_t { Scalar, Vector, Matrix, Object, Struct };
+enum class ParameterType : std::uint8_t {
+    Void, Bool, Int, UInt, Float, String,
+    Texture, Texture1D, Texture2D, Texture3D, TextureCube,
+    Sampler, Sampler1D, Sampler2D, Sampler3D, SamplerCube, SamplerState,
+};
+
+struct Annotation {
+    std::string type;   // "string", "float", "int", "bool", "float4" ...
+    std::string name;
+    std::string value;  // initializer text as written (strings without quotes)
+};
+
+struct Parameter {
+    std::string name;
+    std::string semantic;  // SAS semantic, e.g. WORLDVIEWPROJECTION (upper-cased as written)
+    ParameterClass parameterClass = ParameterClass::Scalar;
+    ParameterType type = ParameterType::Float;
+    int rows = 1;          // matrix rows / 1 for vectors and scalars
+    int columns = 1;       // vector size / matrix columns
+    int elements = 0;      // array length; 0 = not an array
+    bool rowMajor = false; // HLSL packing: false = column_major (the HLSL default)
+    bool isStatic = false; // `static`/`const` globals are not parameters of the constant buffer
+
+    // Placement in the effect's uniform buffer ($Global); offset < 0 when the parameter is not in it
+    // (objects, statics). For a matrix, element [r][c] (HLSL indexing) lives at
+    //   offset + (rowMajor ? r*matrixStride + c*4 : c*matrixStride + r*4)
+    // and array element i at offset + i*arrayStride.
+    int offset = -1;
+    int size = 0;
+    int matrixStride = 0;
+    int arrayStride = 0;
+
+    // Default value from the source initializer, flattened row by row (bools and ints as numbers).
+    std::vector<double> defaultValue;
+    std::string defaultString;  // for `string` parameters
+    std::vector<Annotation> annotations;
+    std::vector<Parameter> members;  // for ParameterClass::Struct
+    SourceLocation declaredAt;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Sampler states: only what the effect specified is set; the rest is left to the device.
+
+enum class TextureFilter : std::uint8_t { None, Point, Linear, Anisotropic };
+enum class TextureAddress : std::uint8_t { Wrap, Mirror, Clamp, Border, MirrorOnce };
+enum class TextureKind : std::uint8_t { Texture1D, Texture2D, Texture3D, TextureCube };
+
+struct SamplerStateDesc {
+    std::optional<TextureFilter> minFilter, magFilter, mipFilter;
+    std::optional<TextureAddress> addressU, addressV, addressW;
+    std::optional<std::array<float, 4>> borderColor;
+    std::optional<int> maxAnisotropy;
+    std::optional<int> maxMipLevel;
+    std::optional<float> mipLodBias;
+    std::optional<float> minLod, maxLod;
+    bool operator==(const SamplerStateDesc&) const = default;
+};
+
+// One texture unit a shader samples. For DX9 samplers the unit is the sampler register
+// (register(sN) or the order fxc would give); `GraphicsDevice.Textures[unit]` feeds it unless the
+// effect names a texture parameter.
+struct SamplerBinding {
+    int unit = 0;
+    TextureKind kind = TextureKind::Texture2D;
+    std::string glslName;          // the uniform's name in the GLSL
+    std::string samplerName;       // effect sampler (DX9 `sampler S` / DX10 `SamplerState S`), may be empty
+    std::string textureParameter;  // texture parameter feeding it (`Texture = <T>` / DX10 Texture2D), may be empty
+    SamplerStateDesc state;        // the effect's sampler_state, applied at Apply()
+};
+
+// ---------------------------------------------------------------------------------------------
+// Compiled shaders
+
+struct VertexInput {
+    std::string semantic;  // upper case with index: "POSITION0", "TEXCOORD1"
+    int location = 0;
+    int components = 4;    // 1..4
+    bool isInteger = false;
+};
+
+struct UniformRange {  // a byte range of the uniform buffer this shader actually reads
+    int offset = 0;
+    int size = 0;
+};
+
+struct CompiledShader {
+    ShaderProfile profile;
+    std::string entryPoint;
+    std::string arguments;   // literal arguments of `compile ps_2_0 PS(true, 3)`, as written
+    std::string glsl;        // GLSL 4.50 core, separable (has gl_PerVertex redeclared)
+    std::vector<VertexInput> inputs;  // vertex shaders only
+    std::vector<SamplerBinding> samplers;
+    std::vector<int> parametersRead;      // indices into CompiledEffect::parameters
+    std::vector<UniformRange> uniformRangesRead;
+    int outputTargets = 0;                // pixel shaders: number of SV_Target outputs (MRT)
+    bool writesDepth = false;
+    // Vertex shaders compiled for vs_1_1..vs_3_0 add fxport_PixelOffset.xy * w to the position so
+    // that GL rasterises like D3D9; the runtime sets it from the viewport to (1/W, -1/H).
+    bool needsD3D9PixelOffset = false;
+    std::string hlslAfterRewrite;         // for debugging (FXPORT_DUMP); not serialised
+};
+
+// ---------------------------------------------------------------------------------------------
+// Passes and render states
+
+// Canonical render states. DX9 names map 1:1; DX10 state objects are expanded into these.
+enum class RenderState : std::uint8_t {
+    AlphaBlendEnable, SrcBlend, DestBlend, BlendOp,
+    SeparateAlphaBlendEnable, SrcBlendAlpha, DestBlendAlpha, BlendOpAlpha,
+    BlendFactor, ColorWriteEnable, MultiSampleMask,
+    ZEnable, ZWriteEnable, ZFunc,
+    StencilEnable, StencilFunc, StencilPass, StencilFail, StencilZFail,
+    StencilRef, StencilMask, StencilWriteMask, TwoSidedStencilMode,
+    CcwStencilFunc, CcwStencilPass, CcwStencilFail, CcwStencilZFail,
+    CullMode, FillMode, ScissorTestEnable, MultiSampleAntiAlias,
+    DepthBias, SlopeScaleDepthBias, DepthClipEnable,
+    AlphaTestEnable, AlphaFunc, AlphaRef, SrgbWriteEnable,
+};
+
+// Values of enumerated states (stored as numbers in StateAssignment::value[0]).
+enum class Blend : std::uint8_t {
+    Zero, One, SourceColor, InverseSourceColor, SourceAlpha, InverseSourceAlpha,
+    DestinationAlpha, InverseDestinationAlpha, DestinationColor, InverseDestinationColor,
+    SourceAlphaSaturation, BlendFactor, InverseBlendFactor,
+};
+enum class BlendFunction : std::uint8_t { Add, Subtract, ReverseSubtract, Min, Max };
+enum class CompareFunction : std::uint8_t { Never, Less, Equal, LessEqual, Greater, NotEqual, GreaterEqual, Always };
+enum class StencilOperation : std::uint8_t { Keep, Zero, Replace, IncrementSaturation, DecrementSaturation, Invert, Increment, Decrement };
+// D3D9 CullMode names which winding is culled: CCW culls counter-clockwise (XNA CullCounterClockwiseFace).
+enum class CullMode : std::uint8_t { None, CullClockwiseFace, CullCounterClockwiseFace };
+enum class FillMode : std::uint8_t { Point, WireFrame, Solid };
+
+struct StateAssignment {
+    RenderState state = RenderState::AlphaBlendEnable;
+    int index = 0;                       // render-target index for ColorWriteEnable[n] / BlendEnable[n]
+    std::array<double, 4> value{};       // bool/int/enum in value[0]; BlendFactor uses all four
+    SourceLocation where;
+};
+
+// A pass's choice of shader: usually one; for `VertexShader = (VSArray[VSIndices[ShaderIndex]])`
+// several, picked at Apply() by evaluating `selector` over the current parameter values.
+struct SelectorOp {
+    enum class Kind : std::uint8_t { PushConstant, PushParameter, IndexParameter } kind = Kind::PushConstant;
+    int value = 0;  // constant, or parameter index (IndexParameter pops an index, pushes param[index])
+};
+struct ShaderChoice {
+    std::vector<int> shaders;         // indices into CompiledEffect::shaders; empty = no shader (NULL)
+    std::vector<SelectorOp> selector; // empty = shaders[0]
+};
+
+struct Pass {
+    std::string name;
+    std::vector<Annotation> annotations;
+    ShaderChoice vertexShader, pixelShader, geometryShader;
+    std::vector<StateAssignment> states;  // in source order; later assignments win
+    bool valid = true;                    // false: a diagnostic says why (e.g. asm block)
+    SourceLocation declaredAt;
+};
+
+struct Technique {
+    std::string name;
+    std::vector<Annotation> annotations;
+    std::vector<Pass> passes;
+    SourceLocation declaredAt;
+};
+
+struct CompiledEffect {
+    std::string sourcePath;
+    std::vector<Technique> techniques;
+    std::vector<Parameter> parameters;
+    std::vector<CompiledShader> shaders;
+    int uniformBufferSize = 0;  // bytes of $Global (shared by every shader of the effect)
+    // Errors confined to a pass (the pass has valid=false) and warnings.
+    std::vector<Diagnostic> diagnostics;
+
+    bool hasErrors() const;
+    const Parameter* findParameter(const std::string& name) const;
+    int findTechnique(const std::string& name) const;  // -1 if absent
+};
+
+}  // namespace fxport::xlate

@@ -1,0 +1,51 @@
+// The effect compiler: .fx source in, CompiledEffect out. No GL, no runtime.
+//
+//   fxport::xlate::CompileOptions options;            // zero value = sensible defaults
+//   options.includeDirs.push_back("hlsl/common");
+//   CompiledEffect effect = fxport::xlate::compileEffectFile("hlsl/xna-deferred/GBuffer.fx", options);
+//
+// Errors that make the whole effect unusable throw CompileError (with file:line diagnostics);
+// problems confined to one pass (an `asm {}` shader, say) leave that pass invalid and are listed in
+// CompiledEffect::diagnostics.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "fxport/xlate/compiled_effect.h"
+
+namespace fxport::xlate {
+
+struct CompileOptions {
+    // Extra folders `#include` may read from. The effect's own folder is always allowed; nothing
+    // outside these folders is ever read (an include that escapes them is an error).
+    std::vector<std::string> includeDirs;
+    // `-D NAME=VALUE` style macros, applied before the source.
+    std::vector<std::pair<std::string, std::string>> defines;
+    // Compile only these techniques (by name); empty = all. Lets the runtime compile lazily what a
+    // scene uses.
+    std::vector<std::string> techniques;
+    // Errors confined to a pass (an `asm {}` shader, a bad state) normally fail the whole compile.
+    // With this set, such passes are kept with valid=false and the rest of the effect is returned.
+    bool keepValidPasses = false;
+    // Result cache. Empty = the default folder ($FXPORT_CACHE_DIR, else $XDG_CACHE_HOME/fxport,
+    // else ~/.cache/fxport). Set useCache=false to always compile.
+    std::string cacheDir;
+    bool useCache = true;
+    // Keep the rewritten HLSL of each shader in CompiledShader::hlslAfterRewrite. Also turned on
+    // (and written to files) by the environment variable FXPORT_DUMP=<folder>.
+    bool keepRewrittenHlsl = false;
+};
+
+// Compiles a file. Throws CompileError for fatal problems.
+CompiledEffect compileEffectFile(const std::string& path, const CompileOptions& options = {});
+
+// Compiles source text as if it were the file `virtualPath` (includes resolve beside it).
+CompiledEffect compileEffectSource(const std::string& source, const std::string& virtualPath,
+                                   const CompileOptions& options = {});
+
+// A version string that changes whenever compiled output may change (part of every cache key).
+const char* compilerVersion();
+
+}  // namespace fxport::xlate

@@ -1,0 +1,26 @@
+// The compiled-effect file: a CompiledEffect serialised as JSON, so the runtime can load effects
+// without glslang (and people can read what the compiler decided).
+#pragma once
+
+#include <string>
+
+#include "fxport/xlate/compiled_effect.h"
+
+namespace fxport::xlate {
+
+// Format version of the file; bump when the layout changes.
+inline constexpr int kEffectFileVersion = 1;
+
+std::string serializeEffect(const CompiledEffect& effect);
+// Throws CompileError (id FX3101) naming `nameForErrors` if the text is not a compiled effect of
+// this version.
+CompiledEffect deserializeEffect(const std::string& text, const std::string& nameForErrors);
+
+void saveEffectFile(const CompiledEffect& effect, const std::string& path);
+CompiledEffect loadEffectFile(const std::string& path);
+
+// Reflection only (no GLSL, no absolute paths): what the golden tests compare, and what
+// `fxport dump --reflection` prints.
+std::string reflectionJson(const CompiledEffect& effect);
+
+}  // namespace fxport::xlate

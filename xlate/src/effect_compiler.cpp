@@ -1,0 +1,561 @@
+// The effect compiler's driver: preprocess -> parse effect framework -> rewrite -> per shader
+// (entry wrapper -> glslang -> SPIRV-Cross) -> reflection. Each unique (stage, profile, entry,
+// arguments) is compiled once per effect, however many passes use it.
+#include "fxport/xlate/effect_compiler.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+#include "constant_eval.h"
+#include "effect_cache.h"
+#include "entry_wrapper.h"
+#include "fx_rewrite.h"
+#include "fx_syntax.h"
+#include "hlsl_to_spirv.h"
+#include "preprocess.h"
+#include "render_states.h"
+#include "spirv_to_glsl.h"
+#include "text_util.h"
+
+namespace fs = std::filesystem;
+
+namespace fxport::xlate {
+
+const char* compilerVersion() { return "fxport-xlate-1"; }
+
+namespace {
+
+std::optional<ShaderProfile> parseProfile(const std::string& name) {
+    std::string n = toLower(name);
+    ShaderProfile p;
+    p.name = name;
+    if (n.rfind("vs_", 0) == 0) p.stage = ShaderStage::Vertex;
+    else if (n.rfind("ps_", 0) == 0) p.stage = ShaderStage::Pixel;
+    else if (n.rfind("gs_", 0) == 0) p.stage = ShaderStage::Geometry;
+    else return std::nullopt;
+    std::string rest = n.substr(3);
+    size_t level = rest.find("_level_9_");
+    if (level != std::string::npos) rest = rest.substr(0, level);
+    static const std::map<std::string, std::pair<int, int>> versions = {
+        {"1_1", {1, 1}}, {"1_2", {1, 2}}, {"1_3", {1, 3}}, {"1_4", {1, 4}}, {"2_0", {2, 0}}, {"2_a", {2, 1}},
+        {"2_b", {2, 2}}, {"2_sw", {2, 0}}, {"2_x", {2, 1}}, {"3_0", {3, 0}}, {"3_sw", {3, 0}}, {"4_0", {4, 0}},
+        {"4_1", {4, 1}}, {"5_0", {5, 0}}};
+    auto it = versions.find(rest);
+    if (it == versions.end()) return std::nullopt;
+    std::tie(p.major, p.minor) = it->second;
+    if (p.stage == ShaderStage::Geometry && p.major < 4) return std::nullopt;
+    if (p.stage == ShaderStage::Vertex && p.major == 1 && p.minor != 1) return std::nullopt;
+    return p;
+}
+
+const char* stageName(ShaderStage s) {
+    switch (s) {
+    case ShaderStage::Vertex: return "vertex";
+    case ShaderStage::Pixel: return "pixel";
+    case ShaderStage::Geometry: return "geometry";
+    }
+    return "?";
+}
+
+ParameterType scalarType(const std::string& scalar) {
+    if (scalar == "bool") return ParameterType::Bool;
+    if (scalar == "int" || scalar == "min16int" || scalar == "min12int") return ParameterType::Int;
+    if (scalar == "uint" || scalar == "dword" || scalar == "min16uint") return ParameterType::UInt;
+    return ParameterType::Float;
+}
+
+ParameterType objectType(const std::string& type) {
+    std::string t = toLower(type.substr(0, type.find('<')));
+    if (t == "texture") return ParameterType::Texture;
+    if (t == "texture1d") return ParameterType::Texture1D;
+    if (t == "texture2d" || t == "texture2darray" || t == "texture2dms") return ParameterType::Texture2D;
+    if (t == "texture3d") return ParameterType::Texture3D;
+    if (t == "texturecube" || t == "texturecubearray") return ParameterType::TextureCube;
+    if (t == "sampler") return ParameterType::Sampler;
+    if (t == "sampler1d") return ParameterType::Sampler1D;
+    if (t == "sampler2d") return ParameterType::Sampler2D;
+    if (t == "sampler3d") return ParameterType::Sampler3D;
+    if (t == "samplercube") return ParameterType::SamplerCube;
+    if (t == "samplerstate" || t == "samplercomparisonstate") return ParameterType::SamplerState;
+    return ParameterType::Void;
+}
+
+struct ShaderKey {
+    ShaderStage stage;
+    std::string profile, entry, arguments;
+    bool operator<(const ShaderKey& o) const {
+        return std::tie(stage, profile, entry, arguments) < std::tie(o.stage, o.profile, o.entry, o.arguments);
+    }
+};
+
+class EffectBuilder {
+public:
+    EffectBuilder(const PreprocessedEffect& pre, const EffectSyntax& syntax, const RewrittenEffect& rewritten,
+                  const CompileOptions& options, CompiledEffect& effect)
+        : pre_(pre), syntax_(syntax), rewritten_(rewritten), options_(options), effect_(effect) {
+        baseLines_ = static_cast<int>(std::count(rewritten.hlsl.begin(), rewritten.hlsl.end(), '\n')) + 1;
+    }
+
+    void buildParameters();
+    void buildTechniques();
+    void finishReflection();
+
+private:
+    const PreprocessedEffect& pre_;
+    const EffectSyntax& syntax_;
+    const RewrittenEffect& rewritten_;
+    const CompileOptions& options_;
+    CompiledEffect& effect_;
+    int baseLines_ = 0;
+    std::map<ShaderKey, int> compiled_;  // -> index in effect_.shaders, -1 = failed
+    std::map<int, GlslShader> reflections_;
+    VaryingLocations varyings_;
+
+    Diagnostic at(Severity s, const char* id, const std::string& message, size_t token) const {
+        const Token& t = syntax_.tokens[std::min(token, syntax_.tokens.size() - 1)];
+        return pre_.map.make(s, id, message, t.line, t.column, t.kind == Token::Kind::End ? std::string() : t.text);
+    }
+    void error(const char* id, const std::string& message, size_t token) {
+        effect_.diagnostics.push_back(at(Severity::Error, id, message, token));
+    }
+
+    int compileShader(const FxShaderExpr& expr, ShaderStage expected, size_t blameToken);
+    bool resolveShader(const FxShaderExpr& expr, ShaderStage stage, ShaderChoice& choice, size_t blameToken);
+    bool buildSelector(TokenSpan span, std::vector<SelectorOp>& ops, size_t blameToken);
+    int parameterIndex(const std::string& name) const {
+        for (size_t i = 0; i < effect_.parameters.size(); ++i)
+            if (effect_.parameters[i].name == name) return static_cast<int>(i);
+        return -1;
+    }
+};
+
+void EffectBuilder::buildParameters() {
+    struct Item {
+        size_t token;
+        Parameter p;
+    };
+    std::vector<Item> items;
+    std::map<std::string, std::vector<double>> constants;  // earlier globals, for initializers like `= A * 2`
+    for (const auto& g : syntax_.globals) {
+        bool isStatic = std::find(g.modifiers.begin(), g.modifiers.end(), "static") != g.modifiers.end();
+        Parameter p;
+        p.name = g.name;
+        p.semantic = toUpper(g.semantic);
+        p.annotations = g.annotations;
+        p.isStatic = isStatic;
+        p.declaredAt = pre_.map.locate(syntax_.tokens[g.token].line, syntax_.tokens[g.token].column, g.name);
+        p.elements = g.arrayDims.empty() ? 0 : g.arrayDims[0];
+        p.rowMajor = std::find(g.modifiers.begin(), g.modifiers.end(), "row_major") != g.modifiers.end();
+        if (g.isStringParameter) {
+            p.parameterClass = ParameterClass::Object;
+            p.type = ParameterType::String;
+            if (!g.initializer.empty() && syntax_.tokens[g.initializer.begin].kind == Token::Kind::String)
+                p.defaultString = syntax_.tokens[g.initializer.begin].text;
+        } else if (const FxStruct* s = syntax_.findStruct(g.type)) {
+            p.parameterClass = ParameterClass::Struct;
+            p.type = ParameterType::Void;
+            for (const auto& m : s->members) {
+                Parameter mp;
+                mp.name = m.name;
+                auto b = describeBasicType(m.type);
+                mp.parameterClass = b.isMatrix ? ParameterClass::Matrix : b.columns > 1 ? ParameterClass::Vector : ParameterClass::Scalar;
+                mp.type = scalarType(b.scalar);
+                mp.rows = b.rows;
+                mp.columns = b.columns;
+                mp.elements = m.arrayDims.empty() ? 0 : m.arrayDims[0];
+                p.members.push_back(mp);
+            }
+        } else {
+            auto b = describeBasicType(g.type);
+            if (!b.ok) {
+                effect_.diagnostics.push_back(at(Severity::Warning, diag::kSyntax,
+                                                 "global '" + g.name + "' has type '" + g.type + "', which fxport does not expose as a parameter", g.token));
+                continue;
+            }
+            p.parameterClass = b.isMatrix ? ParameterClass::Matrix : b.columns > 1 ? ParameterClass::Vector : ParameterClass::Scalar;
+            p.type = scalarType(b.scalar);
+            p.rows = b.rows;
+            p.columns = b.columns;
+            if (!g.initializer.empty()) {
+                if (auto v = evaluateConstant(syntax_, g.initializer, constants)) {
+                    size_t want = static_cast<size_t>(b.rows * b.columns * std::max(1, p.elements));
+                    if (v->size() == 1 && want > 1) v->assign(want, (*v)[0]);  // `float4 c = 0;`
+                    p.defaultValue = *v;
+                    constants[g.name] = *v;
+                }
+            }
+        }
+        if (isStatic) continue;  // statics are not parameters in XNA (and not in $Global)
+        items.push_back({g.token, std::move(p)});
+    }
+    for (const auto& t : syntax_.textures) {
+        Parameter p;
+        p.name = t.name;
+        p.semantic = toUpper(t.semantic);
+        p.parameterClass = ParameterClass::Object;
+        p.type = objectType(t.type);
+        p.annotations = t.annotations;
+        p.declaredAt = pre_.map.locate(syntax_.tokens[t.token].line, syntax_.tokens[t.token].column, t.name);
+        items.push_back({t.token, std::move(p)});
+    }
+    for (size_t i = 0; i < syntax_.samplers.size(); ++i) {
+        const FxSampler& s = syntax_.samplers[i];
+        Parameter p;
+        p.name = s.name;
+        p.parameterClass = ParameterClass::Object;
+        p.type = s.dx10 ? ParameterType::SamplerState : objectType(std::string("sampler") + (rewritten_.samplers[i].kind == TextureKind::TextureCube ? "CUBE"
+                                                                                             : rewritten_.samplers[i].kind == TextureKind::Texture3D ? "3D"
+                                                                                             : rewritten_.samplers[i].kind == TextureKind::Texture1D ? "1D" : "2D"));
+        p.declaredAt = pre_.map.locate(syntax_.tokens[s.token].line, syntax_.tokens[s.token].column, s.name);
+        items.push_back({s.token, std::move(p)});
+    }
+    std::stable_sort(items.begin(), items.end(), [](const Item& a, const Item& b) { return a.token < b.token; });
+    for (auto& it : items) effect_.parameters.push_back(std::move(it.p));
+    // Texture parameters named by a sampler_state must exist.
+    for (const auto& s : rewritten_.samplers)
+        if (!s.textureParameter.empty() && parameterIndex(s.textureParameter) < 0)
+            if (const FxSampler* fs = syntax_.findSampler(s.name))
+                error(diag::kBadStateValue, "sampler '" + s.name + "' uses texture '" + s.textureParameter + "', which is not declared", fs->token);
+}
+
+bool EffectBuilder::buildSelector(TokenSpan span, std::vector<SelectorOp>& ops, size_t blameToken) {
+    // index := NUMBER | NAME | NAME '[' index ']'
+    const auto& t = syntax_.tokens;
+    if (span.empty()) return false;
+    if (span.end == span.begin + 1) {
+        if (t[span.begin].kind == Token::Kind::Number) {
+            ops.push_back({SelectorOp::Kind::PushConstant, std::atoi(t[span.begin].text.c_str())});
+            return true;
+        }
+        int p = parameterIndex(t[span.begin].text);
+        if (p < 0) {
+            error(diag::kUnknownShader, "shader index '" + t[span.begin].text + "' is not a parameter of this effect", blameToken);
+            return false;
+        }
+        ops.push_back({SelectorOp::Kind::PushParameter, p});
+        return true;
+    }
+    if (t[span.begin].isIdent() && t[span.begin + 1].is("[") && t[span.end - 1].is("]")) {
+        int p = parameterIndex(t[span.begin].text);
+        if (p < 0) {
+            error(diag::kUnknownShader, "shader index array '" + t[span.begin].text + "' is not a parameter of this effect", blameToken);
+            return false;
+        }
+        if (!buildSelector({span.begin + 2, span.end - 1}, ops, blameToken)) return false;
+        ops.push_back({SelectorOp::Kind::IndexParameter, p});
+        return true;
+    }
+    error(diag::kUnsupported, "shader index expression '" + syntax_.text(span) + "' is too complex (use a parameter, a literal or array[parameter])", blameToken);
+    return false;
+}
+
+int EffectBuilder::compileShader(const FxShaderExpr& expr, ShaderStage expected, size_t /*blameToken*/) {
+    auto profile = parseProfile(expr.profile);
+    if (!profile) {
+        error(diag::kBadProfile, "'" + expr.profile + "' is not a shader profile fxport knows (vs_1_1..vs_5_0, ps_2_0..ps_5_0, gs_4_0..gs_5_0)", expr.token + 1);
+        return -1;
+    }
+    if (profile->stage != expected) {
+        error(diag::kBadProfile, "profile '" + expr.profile + "' compiles a " + stageName(profile->stage) + " shader, but it is assigned to a " +
+                                     stageName(expected) + " shader",
+              expr.token + 1);
+        return -1;
+    }
+    if (expected == ShaderStage::Pixel && profile->major == 1) {
+        // ps_1_x HLSL is fine: it is compiled like ps_2_0 (same D3D9 rules).
+    }
+    ShaderKey key{expected, toLower(expr.profile), expr.entry, expr.arguments};
+    if (auto it = compiled_.find(key); it != compiled_.end()) return it->second;
+    compiled_[key] = -1;
+
+    const FxFunction* entry = syntax_.findFunction(expr.entry);
+    if (!entry) {
+        error(diag::kMissingEntry, "entry point '" + expr.entry + "' is not a function of this effect", expr.token);
+        return -1;
+    }
+    std::string source = rewritten_.hlsl;
+    std::string entryName = expr.entry;
+    bool wrapped = expected != ShaderStage::Geometry;
+    EntryWrapper wrapper;
+    if (wrapped) {
+        wrapper = buildEntryWrapper(syntax_, *entry, *profile, expr.arguments);
+        if (!wrapper.error.empty()) {
+            error(diag::kBadEntrySignature, wrapper.error, entry->token);
+            return -1;
+        }
+        source += wrapper.code;
+        entryName = kWrapperEntry;
+    }
+    HlslToSpirvRequest request;
+    request.source = &source;
+    request.stage = expected;
+    request.entryPoint = entryName;
+    request.dx9Compatible = rewritten_.dx9Samplers;
+    SpirvModule spirv = hlslToSpirv(request);
+    if (!spirv.errors.empty()) {
+        for (const auto& e : spirv.errors) {
+            if (e.line > 0 && e.line <= baseLines_) {
+                effect_.diagnostics.push_back(pre_.map.make(Severity::Error, diag::kHlsl, e.message, e.line, 0, e.token));
+            } else {
+                error(diag::kHlsl, "in the generated entry point for '" + expr.entry + "' (" + expr.profile + "): " + e.message, expr.token);
+            }
+        }
+        return -1;
+    }
+    GlslShader glsl = spirvToGlsl(std::move(spirv.words), expected, rewritten_, varyings_);
+    if (!glsl.error.empty()) {
+        error(diag::kSpirv, "SPIRV-Cross could not translate '" + expr.entry + "': " + glsl.error, expr.token);
+        return -1;
+    }
+    CompiledShader shader;
+    shader.profile = *profile;
+    shader.entryPoint = expr.entry;
+    shader.arguments = expr.arguments;
+    shader.glsl = glsl.glsl;
+    shader.inputs = glsl.inputs;
+    shader.samplers = glsl.samplers;
+    shader.uniformRangesRead = glsl.rangesRead;
+    shader.outputTargets = glsl.outputTargets;
+    shader.writesDepth = glsl.writesDepth;
+    shader.needsD3D9PixelOffset = wrapper.usesPixelOffset;
+    if (options_.keepRewrittenHlsl) shader.hlslAfterRewrite = source;
+    for (const auto& name : glsl.membersRead) {
+        int p = parameterIndex(name);
+        if (p >= 0 && std::find(shader.parametersRead.begin(), shader.parametersRead.end(), p) == shader.parametersRead.end())
+            shader.parametersRead.push_back(p);
+    }
+    for (const auto& s : glsl.samplers) {
+        for (const std::string& name : {s.textureParameter, s.samplerName}) {
+            int p = name.empty() ? -1 : parameterIndex(name);
+            if (p >= 0 && std::find(shader.parametersRead.begin(), shader.parametersRead.end(), p) == shader.parametersRead.end())
+                shader.parametersRead.push_back(p);
+        }
+    }
+    std::sort(shader.parametersRead.begin(), shader.parametersRead.end());
+    int index = static_cast<int>(effect_.shaders.size());
+    effect_.shaders.push_back(std::move(shader));
+    reflections_[index] = std::move(glsl);
+    compiled_[key] = index;
+    return index;
+}
+
+bool EffectBuilder::resolveShader(const FxShaderExpr& expr, ShaderStage stage, ShaderChoice& choice, size_t blameToken) {
+    switch (expr.kind) {
+    case FxShaderExpr::Kind::Null:
+        choice = {};
+        return true;
+    case FxShaderExpr::Kind::Compile: {
+        int s = compileShader(expr, stage, blameToken);
+        if (s < 0) return false;
+        choice.shaders = {s};
+        return true;
+    }
+    case FxShaderExpr::Kind::Asm:
+        error(diag::kUnsupported, "shader assembly (asm { ... }) is not supported: rewrite this shader in HLSL", expr.token);
+        return false;
+    case FxShaderExpr::Kind::StreamOut:
+        error(diag::kUnsupported, "geometry shaders with stream output (ConstructGSWithSO) are not supported", expr.token);
+        return false;
+    case FxShaderExpr::Kind::Variable:
+    case FxShaderExpr::Kind::ArrayElement: {
+        const FxShaderVariable* var = nullptr;
+        for (const auto& v : syntax_.shaderVariables)
+            if (v.name == expr.variable) var = &v;
+        if (!var) {
+            error(diag::kUnknownShader, "'" + expr.variable + "' is not a shader variable of this effect", expr.token);
+            return false;
+        }
+        if ((expr.kind == FxShaderExpr::Kind::ArrayElement) != var->isArray) {
+            error(diag::kUnknownShader, var->isArray ? "shader array '" + var->name + "' needs an index" : "'" + var->name + "' is not an array", expr.token);
+            return false;
+        }
+        choice.shaders.clear();
+        for (const auto& element : var->elements) {
+            ShaderChoice one;
+            if (!resolveShader(element, stage, one, blameToken)) return false;
+            if (one.shaders.size() > 1) {
+                error(diag::kUnsupported, "nested shader arrays are not supported", expr.token);
+                return false;
+            }
+            choice.shaders.push_back(one.shaders.empty() ? -1 : one.shaders[0]);
+        }
+        if (expr.kind == FxShaderExpr::Kind::ArrayElement) return buildSelector(expr.index, choice.selector, expr.token);
+        return true;
+    }
+    case FxShaderExpr::Kind::Invalid: break;
+    }
+    error(diag::kSyntax, "cannot understand this shader assignment (expected compile <profile> <entry>(...), a shader variable, or NULL)", blameToken);
+    return false;
+}
+
+void EffectBuilder::buildTechniques() {
+    StateContext stateContext{syntax_, pre_.map, effect_.diagnostics};
+    for (const auto& t : syntax_.techniques) {
+        if (!options_.techniques.empty() &&
+            std::find(options_.techniques.begin(), options_.techniques.end(), t.name) == options_.techniques.end())
+            continue;
+        Technique tech;
+        tech.name = t.name;
+        tech.annotations = t.annotations;
+        tech.declaredAt = pre_.map.locate(syntax_.tokens[t.token].line, syntax_.tokens[t.token].column);
+        for (const auto& p : t.passes) {
+            Pass pass;
+            pass.name = p.name;
+            pass.annotations = p.annotations;
+            pass.declaredAt = pre_.map.locate(syntax_.tokens[p.token].line, syntax_.tokens[p.token].column);
+            for (const auto& a : p.assignments) {
+                StateResult r = translatePassAssignment(a, stateContext, pass.states);
+                if (r == StateResult::Failed) pass.valid = false;
+                if (r != StateResult::NotAState) continue;
+                std::string n = toLower(a.name);
+                ShaderStage stage = n.find("vertex") != std::string::npos ? ShaderStage::Vertex
+                                    : n.find("pixel") != std::string::npos ? ShaderStage::Pixel
+                                                                           : ShaderStage::Geometry;
+                if (n == "sethullshader" || n == "setdomainshader" || n == "setcomputeshader") {
+                    FxShaderExpr e = parseShaderExpr(syntax_, a.value);
+                    if (e.kind == FxShaderExpr::Kind::Null) continue;
+                    error(diag::kUnsupported, a.name + ": tessellation and compute shaders are not supported", a.nameToken);
+                    pass.valid = false;
+                    continue;
+                }
+                FxShaderExpr e = parseShaderExpr(syntax_, a.value);
+                if (e.kind == FxShaderExpr::Kind::Invalid) e.token = a.nameToken;
+                ShaderChoice& target = stage == ShaderStage::Vertex ? pass.vertexShader
+                                       : stage == ShaderStage::Pixel ? pass.pixelShader
+                                                                     : pass.geometryShader;
+                if (!resolveShader(e, stage, target, a.nameToken)) pass.valid = false;
+            }
+            tech.passes.push_back(std::move(pass));
+        }
+        effect_.techniques.push_back(std::move(tech));
+    }
+}
+
+void EffectBuilder::finishReflection() {
+    // All shaders compile the same rewritten source, so $Global has one layout; take it from the
+    // first shader that has one and check the others agree.
+    const GlslShader* layout = nullptr;
+    for (const auto& [index, g] : reflections_) {
+        if (g.globalMembers.empty()) continue;
+        if (!layout) {
+            layout = &g;
+            continue;
+        }
+        bool same = g.globalMembers.size() == layout->globalMembers.size();
+        for (size_t i = 0; same && i < g.globalMembers.size(); ++i)
+            same = g.globalMembers[i].name == layout->globalMembers[i].name && g.globalMembers[i].offset == layout->globalMembers[i].offset;
+        if (!same) error(diag::kSpirv, "shaders of this effect disagree on the constant buffer layout (internal error)", 0);
+    }
+    if (!layout) return;
+    effect_.uniformBufferSize = layout->globalSize;
+    for (const auto& m : layout->globalMembers) {
+        int p = parameterIndex(m.name);
+        if (p < 0) continue;
+        Parameter& param = effect_.parameters[static_cast<size_t>(p)];
+        param.offset = m.offset;
+        param.size = m.size;
+        param.matrixStride = m.matrixStride;
+        param.arrayStride = m.arrayStride;
+        if (param.parameterClass == ParameterClass::Matrix) param.rowMajor = m.hlslRowMajor;
+    }
+}
+
+std::string cacheKey(const PreprocessedEffect& pre, const std::string& displayPath, const CompileOptions& options) {
+    std::string key = compilerVersion();
+    key += '\0' + displayPath + '\0' + pre.text;
+    for (const auto& t : options.techniques) key += '\0' + t;
+    key += options.keepValidPasses ? "\1" : "\2";
+    return hashHex(key) + hashHex(key + "salt");
+}
+
+void dumpIfAsked(const CompiledEffect& effect) {
+    const char* dir = std::getenv("FXPORT_DUMP");
+    if (!dir || !*dir) return;
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    std::string stem = fs::path(effect.sourcePath).stem().string();
+    for (size_t i = 0; i < effect.shaders.size(); ++i) {
+        const auto& s = effect.shaders[i];
+        std::string base = std::string(dir) + "/" + stem + "." + std::to_string(i) + "." + s.entryPoint + "." + s.profile.name;
+        std::ofstream(base + ".glsl") << s.glsl;
+        if (!s.hlslAfterRewrite.empty()) std::ofstream(base + ".hlsl") << s.hlslAfterRewrite;
+    }
+}
+
+CompiledEffect compile(const std::string& source, const std::string& displayPath, const std::string& absolutePath,
+                       const CompileOptions& optionsIn) {
+    CompileOptions options = optionsIn;
+    if (const char* dump = std::getenv("FXPORT_DUMP"); dump && *dump) {
+        options.keepRewrittenHlsl = true;
+        options.useCache = false;
+    }
+    PreprocessedEffect pre = preprocessEffect(source, displayPath, absolutePath, options);
+    std::string key;
+    if (options.useCache) {
+        key = cacheKey(pre, displayPath, options);
+        if (auto cached = loadCachedEffect(options.cacheDir, key)) return std::move(*cached);
+    }
+
+    EffectSyntax syntax = parseEffect(pre.text, pre.map);
+    CompiledEffect effect;
+    effect.sourcePath = displayPath;
+    if (syntax.techniques.empty()) {
+        Diagnostic d;
+        d.id = diag::kEmptyEffect;
+        d.message = "the effect has no technique; XNA needs at least one technique with a pass to draw with";
+        d.location = {displayPath, 0, 0};
+        throw CompileError({d});
+    }
+    RewrittenEffect rewritten = rewriteEffect(pre.text, syntax, pre.map, effect.diagnostics);
+    EffectBuilder builder(pre, syntax, rewritten, options, effect);
+    builder.buildParameters();
+    builder.buildTechniques();
+    builder.finishReflection();
+    if (!options.techniques.empty() && effect.techniques.empty()) {
+        Diagnostic d;
+        d.id = diag::kEmptyEffect;
+        d.message = "none of the requested techniques exists in the effect";
+        d.location = {displayPath, 0, 0};
+        throw CompileError({d});
+    }
+    dumpIfAsked(effect);
+    if (effect.hasErrors() && !options.keepValidPasses) {
+        std::vector<Diagnostic> errors;
+        for (const auto& d : effect.diagnostics)
+            if (d.severity == Severity::Error) errors.push_back(d);
+        throw CompileError(std::move(errors));
+    }
+    if (options.useCache) storeCachedEffect(options.cacheDir, key, effect);
+    return effect;
+}
+
+}  // namespace
+
+CompiledEffect compileEffectFile(const std::string& path, const CompileOptions& options) {
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) {
+        Diagnostic d;
+        d.id = diag::kFileUnreadable;
+        d.message = "'" + path + "' is a folder, not an effect file";
+        d.location = {path, 0, 0};
+        throw CompileError({d});
+    }
+    auto text = readFile(path);
+    if (!text) {
+        Diagnostic d;
+        d.id = diag::kFileUnreadable;
+        d.message = "cannot open '" + path + "'";
+        d.location = {path, 0, 0};
+        throw CompileError({d});
+    }
+    return compile(*text, path, path, options);
+}
+
+CompiledEffect compileEffectSource(const std::string& source, const std::string& virtualPath, const CompileOptions& options) {
+    return compile(source, virtualPath, virtualPath, options);
+}
+
+}  // namespace fxport::xlate

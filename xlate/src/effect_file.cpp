@@ -1,0 +1,410 @@
+#include "fxport/xlate/effect_file.h"
+
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <fstream>
+
+#include "text_util.h"
+
+using nlohmann::json;
+
+namespace fxport::xlate {
+
+namespace {
+
+// Enum <-> name tables: the file is meant to be read by people (golden reflection is reviewed).
+template <typename E, size_t N>
+struct Names {
+    std::array<const char*, N> names;
+    const char* of(E e) const { return static_cast<size_t>(e) < N ? names[static_cast<size_t>(e)] : "?"; }
+    E parse(const std::string& s) const {
+        for (size_t i = 0; i < N; ++i)
+            if (s == names[i]) return static_cast<E>(i);
+        throw std::runtime_error("unknown name '" + s + "'");
+    }
+};
+
+constexpr Names<ShaderStage, 3> kStage{{"vertex", "pixel", "geometry"}};
+constexpr Names<ParameterClass, 5> kClass{{"scalar", "vector", "matrix", "object", "struct"}};
+constexpr Names<ParameterType, 17> kType{{"void", "bool", "int", "uint", "float", "string", "texture", "texture1D",
+                                          "texture2D", "texture3D", "textureCube", "sampler", "sampler1D", "sampler2D",
+                                          "sampler3D", "samplerCube", "samplerState"}};
+constexpr Names<TextureFilter, 4> kFilter{{"none", "point", "linear", "anisotropic"}};
+constexpr Names<TextureAddress, 5> kAddress{{"wrap", "mirror", "clamp", "border", "mirrorOnce"}};
+constexpr Names<TextureKind, 4> kKind{{"1D", "2D", "3D", "cube"}};
+constexpr Names<RenderState, 38> kState{
+    {"AlphaBlendEnable", "SrcBlend", "DestBlend", "BlendOp", "SeparateAlphaBlendEnable", "SrcBlendAlpha",
+     "DestBlendAlpha", "BlendOpAlpha", "BlendFactor", "ColorWriteEnable", "MultiSampleMask", "ZEnable",
+     "ZWriteEnable", "ZFunc", "StencilEnable", "StencilFunc", "StencilPass", "StencilFail", "StencilZFail",
+     "StencilRef", "StencilMask", "StencilWriteMask", "TwoSidedStencilMode", "CcwStencilFunc", "CcwStencilPass",
+     "CcwStencilFail", "CcwStencilZFail", "CullMode", "FillMode", "ScissorTestEnable", "MultiSampleAntiAlias",
+     "DepthBias", "SlopeScaleDepthBias", "DepthClipEnable", "AlphaTestEnable", "AlphaFunc", "AlphaRef",
+     "SrgbWriteEnable"}};
+constexpr Names<Blend, 13> kBlend{{"Zero", "One", "SourceColor", "InverseSourceColor", "SourceAlpha",
+                                   "InverseSourceAlpha", "DestinationAlpha", "InverseDestinationAlpha",
+                                   "DestinationColor", "InverseDestinationColor", "SourceAlphaSaturation",
+                                   "BlendFactor", "InverseBlendFactor"}};
+constexpr Names<BlendFunction, 5> kBlendOp{{"Add", "Subtract", "ReverseSubtract", "Min", "Max"}};
+constexpr Names<CompareFunction, 8> kCompare{{"Never", "Less", "Equal", "LessEqual", "Greater", "NotEqual", "GreaterEqual", "Always"}};
+constexpr Names<StencilOperation, 8> kStencil{{"Keep", "Zero", "Replace", "IncrementSaturation", "DecrementSaturation", "Invert", "Increment", "Decrement"}};
+constexpr Names<CullMode, 3> kCull{{"None", "CullClockwiseFace", "CullCounterClockwiseFace"}};
+constexpr Names<FillMode, 3> kFill{{"Point", "WireFrame", "Solid"}};
+
+// A readable rendering of a state's value (the file stores numbers; this is for people).
+std::string valueName(const StateAssignment& s) {
+    int v = static_cast<int>(s.value[0]);
+    switch (s.state) {
+    case RenderState::SrcBlend: case RenderState::DestBlend: case RenderState::SrcBlendAlpha: case RenderState::DestBlendAlpha:
+        return kBlend.of(static_cast<Blend>(v));
+    case RenderState::BlendOp: case RenderState::BlendOpAlpha: return kBlendOp.of(static_cast<BlendFunction>(v));
+    case RenderState::ZFunc: case RenderState::StencilFunc: case RenderState::CcwStencilFunc: case RenderState::AlphaFunc:
+        return kCompare.of(static_cast<CompareFunction>(v));
+    case RenderState::StencilPass: case RenderState::StencilFail: case RenderState::StencilZFail:
+    case RenderState::CcwStencilPass: case RenderState::CcwStencilFail: case RenderState::CcwStencilZFail:
+        return kStencil.of(static_cast<StencilOperation>(v));
+    case RenderState::CullMode: return kCull.of(static_cast<CullMode>(v));
+    case RenderState::FillMode: return kFill.of(static_cast<FillMode>(v));
+    case RenderState::AlphaBlendEnable: case RenderState::SeparateAlphaBlendEnable: case RenderState::ZEnable:
+    case RenderState::ZWriteEnable: case RenderState::StencilEnable: case RenderState::TwoSidedStencilMode:
+    case RenderState::ScissorTestEnable: case RenderState::MultiSampleAntiAlias: case RenderState::DepthClipEnable:
+    case RenderState::AlphaTestEnable: case RenderState::SrgbWriteEnable:
+        return v ? "true" : "false";
+    default: return {};
+    }
+}
+
+json toJson(const SourceLocation& l) { return json{{"file", l.file}, {"line", l.line}, {"column", l.column}}; }
+SourceLocation locationFrom(const json& j) {
+    return {j.value("file", std::string()), j.value("line", 0), j.value("column", 0)};
+}
+
+json toJson(const std::vector<Annotation>& list) {
+    json a = json::array();
+    for (const auto& x : list) a.push_back({{"type", x.type}, {"name", x.name}, {"value", x.value}});
+    return a;
+}
+std::vector<Annotation> annotationsFrom(const json& j) {
+    std::vector<Annotation> out;
+    for (const auto& x : j) out.push_back({x.at("type"), x.at("name"), x.at("value")});
+    return out;
+}
+
+json toJson(const Parameter& p, bool withLocation) {
+    json j{{"name", p.name}, {"class", kClass.of(p.parameterClass)}, {"type", kType.of(p.type)}};
+    if (!p.semantic.empty()) j["semantic"] = p.semantic;
+    if (p.parameterClass != ParameterClass::Object) {
+        j["rows"] = p.rows;
+        j["columns"] = p.columns;
+    }
+    if (p.elements) j["elements"] = p.elements;
+    if (p.parameterClass == ParameterClass::Matrix) j["rowMajor"] = p.rowMajor;
+    if (p.offset >= 0) {
+        j["offset"] = p.offset;
+        j["size"] = p.size;
+        if (p.matrixStride) j["matrixStride"] = p.matrixStride;
+        if (p.arrayStride) j["arrayStride"] = p.arrayStride;
+    }
+    if (!p.defaultValue.empty()) j["default"] = p.defaultValue;
+    if (!p.defaultString.empty()) j["defaultString"] = p.defaultString;
+    if (!p.annotations.empty()) j["annotations"] = toJson(p.annotations);
+    if (!p.members.empty()) {
+        json m = json::array();
+        for (const auto& x : p.members) m.push_back(toJson(x, withLocation));
+        j["members"] = m;
+    }
+    if (withLocation) j["declaredAt"] = toJson(p.declaredAt);
+    return j;
+}
+Parameter parameterFrom(const json& j) {
+    Parameter p;
+    p.name = j.at("name");
+    p.parameterClass = kClass.parse(j.at("class"));
+    p.type = kType.parse(j.at("type"));
+    p.semantic = j.value("semantic", std::string());
+    p.rows = j.value("rows", 1);
+    p.columns = j.value("columns", 1);
+    p.elements = j.value("elements", 0);
+    p.rowMajor = j.value("rowMajor", false);
+    p.offset = j.value("offset", -1);
+    p.size = j.value("size", 0);
+    p.matrixStride = j.value("matrixStride", 0);
+    p.arrayStride = j.value("arrayStride", 0);
+    if (j.contains("default")) p.defaultValue = j["default"].get<std::vector<double>>();
+    p.defaultString = j.value("defaultString", std::string());
+    if (j.contains("annotations")) p.annotations = annotationsFrom(j["annotations"]);
+    if (j.contains("members"))
+        for (const auto& m : j["members"]) p.members.push_back(parameterFrom(m));
+    if (j.contains("declaredAt")) p.declaredAt = locationFrom(j["declaredAt"]);
+    return p;
+}
+
+json toJson(const SamplerStateDesc& s) {
+    json j = json::object();
+    if (s.minFilter) j["minFilter"] = kFilter.of(*s.minFilter);
+    if (s.magFilter) j["magFilter"] = kFilter.of(*s.magFilter);
+    if (s.mipFilter) j["mipFilter"] = kFilter.of(*s.mipFilter);
+    if (s.addressU) j["addressU"] = kAddress.of(*s.addressU);
+    if (s.addressV) j["addressV"] = kAddress.of(*s.addressV);
+    if (s.addressW) j["addressW"] = kAddress.of(*s.addressW);
+    if (s.borderColor) j["borderColor"] = *s.borderColor;
+    if (s.maxAnisotropy) j["maxAnisotropy"] = *s.maxAnisotropy;
+    if (s.maxMipLevel) j["maxMipLevel"] = *s.maxMipLevel;
+    if (s.mipLodBias) j["mipLodBias"] = *s.mipLodBias;
+    if (s.minLod) j["minLod"] = *s.minLod;
+    if (s.maxLod) j["maxLod"] = *s.maxLod;
+    return j;
+}
+SamplerStateDesc samplerStateFrom(const json& j) {
+    SamplerStateDesc s;
+    if (j.contains("minFilter")) s.minFilter = kFilter.parse(j["minFilter"]);
+    if (j.contains("magFilter")) s.magFilter = kFilter.parse(j["magFilter"]);
+    if (j.contains("mipFilter")) s.mipFilter = kFilter.parse(j["mipFilter"]);
+    if (j.contains("addressU")) s.addressU = kAddress.parse(j["addressU"]);
+    if (j.contains("addressV")) s.addressV = kAddress.parse(j["addressV"]);
+    if (j.contains("addressW")) s.addressW = kAddress.parse(j["addressW"]);
+    if (j.contains("borderColor")) s.borderColor = j["borderColor"].get<std::array<float, 4>>();
+    if (j.contains("maxAnisotropy")) s.maxAnisotropy = j["maxAnisotropy"].get<int>();
+    if (j.contains("maxMipLevel")) s.maxMipLevel = j["maxMipLevel"].get<int>();
+    if (j.contains("mipLodBias")) s.mipLodBias = j["mipLodBias"].get<float>();
+    if (j.contains("minLod")) s.minLod = j["minLod"].get<float>();
+    if (j.contains("maxLod")) s.maxLod = j["maxLod"].get<float>();
+    return s;
+}
+
+json toJson(const CompiledShader& s, const CompiledEffect& effect, bool withGlsl) {
+    json j{{"stage", kStage.of(s.profile.stage)}, {"profile", s.profile.name}, {"entryPoint", s.entryPoint}};
+    if (!s.arguments.empty()) j["arguments"] = s.arguments;
+    json inputs = json::array();
+    for (const auto& i : s.inputs)
+        inputs.push_back({{"semantic", i.semantic}, {"location", i.location}, {"components", i.components}, {"integer", i.isInteger}});
+    if (s.profile.stage == ShaderStage::Vertex) j["inputs"] = inputs;
+    json samplers = json::array();
+    for (const auto& b : s.samplers)
+        samplers.push_back({{"unit", b.unit}, {"kind", kKind.of(b.kind)}, {"glslName", b.glslName}, {"sampler", b.samplerName},
+                            {"texture", b.textureParameter}, {"state", toJson(b.state)}});
+    j["samplers"] = samplers;
+    json read = json::array();
+    for (int p : s.parametersRead) read.push_back(effect.parameters[static_cast<size_t>(p)].name);
+    j["parametersRead"] = read;
+    json ranges = json::array();
+    for (const auto& r : s.uniformRangesRead) ranges.push_back({r.offset, r.size});
+    j["uniformRangesRead"] = ranges;
+    if (s.profile.stage == ShaderStage::Pixel) {
+        j["outputTargets"] = s.outputTargets;
+        j["writesDepth"] = s.writesDepth;
+    }
+    j["d3d9PixelOffset"] = s.needsD3D9PixelOffset;
+    if (withGlsl) j["glsl"] = s.glsl;
+    return j;
+}
+
+json toJson(const ShaderChoice& c) {
+    json j{{"shaders", c.shaders}};
+    if (!c.selector.empty()) {
+        json ops = json::array();
+        for (const auto& op : c.selector) {
+            const char* kind = op.kind == SelectorOp::Kind::PushConstant ? "const" : op.kind == SelectorOp::Kind::PushParameter ? "param" : "index";
+            ops.push_back({kind, op.value});
+        }
+        j["selector"] = ops;
+    }
+    return j;
+}
+ShaderChoice choiceFrom(const json& j) {
+    ShaderChoice c;
+    c.shaders = j.at("shaders").get<std::vector<int>>();
+    if (j.contains("selector"))
+        for (const auto& op : j["selector"]) {
+            std::string k = op.at(0);
+            SelectorOp s;
+            s.kind = k == "const" ? SelectorOp::Kind::PushConstant : k == "param" ? SelectorOp::Kind::PushParameter : SelectorOp::Kind::IndexParameter;
+            s.value = op.at(1);
+            c.selector.push_back(s);
+        }
+    return c;
+}
+
+json techniquesJson(const CompiledEffect& effect, bool withLocation) {
+    json techniques = json::array();
+    for (const auto& t : effect.techniques) {
+        json passes = json::array();
+        for (const auto& p : t.passes) {
+            json states = json::array();
+            for (const auto& s : p.states) {
+                json sj{{"state", kState.of(s.state)}, {"value", s.state == RenderState::BlendFactor ? json(s.value) : json(s.value[0])}};
+                if (s.index) sj["index"] = s.index;
+                std::string name = valueName(s);
+                if (!name.empty()) sj["is"] = name;
+                if (withLocation) sj["where"] = toJson(s.where);
+                states.push_back(sj);
+            }
+            json pj{{"name", p.name}, {"valid", p.valid}, {"vertexShader", toJson(p.vertexShader)},
+                    {"pixelShader", toJson(p.pixelShader)}, {"geometryShader", toJson(p.geometryShader)}, {"states", states}};
+            if (!p.annotations.empty()) pj["annotations"] = toJson(p.annotations);
+            if (withLocation) pj["declaredAt"] = toJson(p.declaredAt);
+            passes.push_back(pj);
+        }
+        json tj{{"name", t.name}, {"passes", passes}};
+        if (!t.annotations.empty()) tj["annotations"] = toJson(t.annotations);
+        if (withLocation) tj["declaredAt"] = toJson(t.declaredAt);
+        techniques.push_back(tj);
+    }
+    return techniques;
+}
+
+json effectJson(const CompiledEffect& effect, bool full) {
+    json params = json::array();
+    for (const auto& p : effect.parameters) params.push_back(toJson(p, full));
+    json shaders = json::array();
+    for (const auto& s : effect.shaders) shaders.push_back(toJson(s, effect, full));
+    json j;
+    if (full) {
+        j["format"] = "fxport-effect";
+        j["version"] = kEffectFileVersion;
+        j["sourcePath"] = effect.sourcePath;
+    }
+    j["uniformBufferSize"] = effect.uniformBufferSize;
+    j["parameters"] = params;
+    j["techniques"] = techniquesJson(effect, full);
+    j["shaders"] = shaders;
+    if (full) {
+        json diags = json::array();
+        for (const auto& d : effect.diagnostics)
+            diags.push_back({{"severity", d.severity == Severity::Error ? "error" : "warning"}, {"id", d.id}, {"message", d.message},
+                             {"where", toJson(d.location)}, {"sourceLine", d.sourceLine}});
+        j["diagnostics"] = diags;
+    }
+    return j;
+}
+
+}  // namespace
+
+std::string serializeEffect(const CompiledEffect& effect) { return effectJson(effect, true).dump(1); }
+
+std::string reflectionJson(const CompiledEffect& effect) { return effectJson(effect, false).dump(2) + "\n"; }
+
+CompiledEffect deserializeEffect(const std::string& text, const std::string& nameForErrors) {
+    auto fail = [&](const std::string& why) -> CompiledEffect {
+        Diagnostic d;
+        d.id = diag::kEffectFile;
+        d.message = why;
+        d.location = {nameForErrors, 0, 0};
+        throw CompileError({d});
+    };
+    json j;
+    try {
+        j = json::parse(text);
+    } catch (const std::exception& e) {
+        return fail(std::string("not a compiled effect file (") + e.what() + ")");
+    }
+    if (!j.is_object() || j.value("format", std::string()) != "fxport-effect") return fail("not a compiled effect file");
+    if (j.value("version", 0) != kEffectFileVersion)
+        return fail("compiled effect file version " + std::to_string(j.value("version", 0)) + " is not the supported version " +
+                    std::to_string(kEffectFileVersion) + "; recompile it with fxport compile");
+    try {
+        CompiledEffect e;
+        e.sourcePath = j.value("sourcePath", std::string());
+        e.uniformBufferSize = j.value("uniformBufferSize", 0);
+        for (const auto& p : j.at("parameters")) e.parameters.push_back(parameterFrom(p));
+        std::map<std::string, int> paramIndex;
+        for (size_t i = 0; i < e.parameters.size(); ++i) paramIndex[e.parameters[i].name] = static_cast<int>(i);
+        for (const auto& s : j.at("shaders")) {
+            CompiledShader cs;
+            cs.profile.stage = kStage.parse(s.at("stage"));
+            cs.profile.name = s.at("profile");
+            std::string n = toLower(cs.profile.name);
+            cs.profile.major = n.size() > 3 ? n[3] - '0' : 0;
+            cs.profile.minor = n.size() > 5 ? (n[5] == 'a' ? 1 : n[5] == 'b' ? 2 : n[5] - '0') : 0;
+            cs.entryPoint = s.at("entryPoint");
+            cs.arguments = s.value("arguments", std::string());
+            cs.glsl = s.at("glsl");
+            if (s.contains("inputs"))
+                for (const auto& i : s["inputs"]) cs.inputs.push_back({i.at("semantic"), i.at("location"), i.at("components"), i.at("integer")});
+            for (const auto& b : s.at("samplers")) {
+                SamplerBinding sb;
+                sb.unit = b.at("unit");
+                sb.kind = kKind.parse(b.at("kind"));
+                sb.glslName = b.at("glslName");
+                sb.samplerName = b.at("sampler");
+                sb.textureParameter = b.at("texture");
+                sb.state = samplerStateFrom(b.at("state"));
+                cs.samplers.push_back(sb);
+            }
+            for (const auto& name : s.at("parametersRead")) cs.parametersRead.push_back(paramIndex.at(name.get<std::string>()));
+            for (const auto& r : s.at("uniformRangesRead")) cs.uniformRangesRead.push_back({r.at(0), r.at(1)});
+            cs.outputTargets = s.value("outputTargets", 0);
+            cs.writesDepth = s.value("writesDepth", false);
+            cs.needsD3D9PixelOffset = s.value("d3d9PixelOffset", false);
+            e.shaders.push_back(std::move(cs));
+        }
+        for (const auto& t : j.at("techniques")) {
+            Technique tech;
+            tech.name = t.at("name");
+            if (t.contains("annotations")) tech.annotations = annotationsFrom(t["annotations"]);
+            if (t.contains("declaredAt")) tech.declaredAt = locationFrom(t["declaredAt"]);
+            for (const auto& p : t.at("passes")) {
+                Pass pass;
+                pass.name = p.at("name");
+                pass.valid = p.at("valid");
+                pass.vertexShader = choiceFrom(p.at("vertexShader"));
+                pass.pixelShader = choiceFrom(p.at("pixelShader"));
+                pass.geometryShader = choiceFrom(p.at("geometryShader"));
+                if (p.contains("annotations")) pass.annotations = annotationsFrom(p["annotations"]);
+                if (p.contains("declaredAt")) pass.declaredAt = locationFrom(p["declaredAt"]);
+                for (const auto& s : p.at("states")) {
+                    StateAssignment a;
+                    a.state = kState.parse(s.at("state"));
+                    a.index = s.value("index", 0);
+                    if (s.at("value").is_array()) a.value = s["value"].get<std::array<double, 4>>();
+                    else a.value = {s["value"].get<double>(), 0, 0, 0};
+                    if (s.contains("where")) a.where = locationFrom(s["where"]);
+                    pass.states.push_back(a);
+                }
+                tech.passes.push_back(std::move(pass));
+            }
+            e.techniques.push_back(std::move(tech));
+        }
+        if (j.contains("diagnostics"))
+            for (const auto& d : j["diagnostics"]) {
+                Diagnostic diag;
+                diag.severity = d.at("severity") == "error" ? Severity::Error : Severity::Warning;
+                diag.id = d.at("id");
+                diag.message = d.at("message");
+                diag.location = locationFrom(d.at("where"));
+                diag.sourceLine = d.value("sourceLine", std::string());
+                e.diagnostics.push_back(diag);
+            }
+        return e;
+    } catch (const CompileError&) {
+        throw;
+    } catch (const std::exception& ex) {
+        return fail(std::string("damaged compiled effect file (") + ex.what() + ")");
+    }
+}
+
+void saveEffectFile(const CompiledEffect& effect, const std::string& path) {
+    std::ofstream out(path, std::ios::binary);
+    if (out) out << serializeEffect(effect);
+    if (!out) {
+        Diagnostic d;
+        d.id = diag::kEffectFile;
+        d.message = "cannot write '" + path + "'";
+        d.location = {path, 0, 0};
+        throw CompileError({d});
+    }
+}
+
+CompiledEffect loadEffectFile(const std::string& path) {
+    auto text = readFile(path);
+    if (!text) {
+        Diagnostic d;
+        d.id = diag::kEffectFile;
+        d.message = "cannot open compiled effect '" + path + "'";
+        d.location = {path, 0, 0};
+        throw CompileError({d});
+    }
+    return deserializeEffect(*text, path);
+}
+
+}  // namespace fxport::xlate

@@ -1,0 +1,324 @@
+#include "entry_wrapper.h"
+
+#include <cctype>
+#include <set>
+#include <sstream>
+
+#include "hlsl_types.h"
+#include "text_util.h"
+
+namespace fxport::xlate {
+
+std::pair<std::string, int> splitSemantic(const std::string& semantic) {
+    std::string s = toUpper(semantic);
+    size_t digits = s.size();
+    while (digits > 0 && std::isdigit(static_cast<unsigned char>(s[digits - 1]))) --digits;
+    if (digits == s.size()) return {s, 0};
+    return {s.substr(0, digits), std::atoi(s.c_str() + digits)};
+}
+
+namespace {
+
+bool isIntegerScalar(const std::string& s) {
+    return s == "int" || s == "uint" || s == "dword" || s == "min16int" || s == "min12int" || s == "min16uint" || s == "bool";
+}
+
+std::string vectorType(const std::string& scalar, int n) {
+    std::string s = scalar == "dword" ? "uint" : scalar;
+    return n == 1 ? s : s + std::to_string(n);
+}
+
+struct Leaf {
+    std::string access;      // HLSL l-value/r-value, e.g. "a0.tbn[1]"
+    std::string scalar;
+    int components = 4;
+    std::string semanticBase;
+    int semanticIndex = 0;
+    std::vector<std::string> interpolation;
+};
+
+class Flattener {
+public:
+    explicit Flattener(const EffectSyntax& syntax) : syntax_(syntax) {}
+    std::string error;
+
+    bool flatten(const std::string& type, const std::string& access, const std::string& semantic,
+                 const std::vector<int>& dims, const std::vector<std::string>& interpolation, std::vector<Leaf>& out,
+                 int depth = 0) {
+        if (depth > 8) {
+            error = "structures nested too deeply at '" + access + "'";
+            return false;
+        }
+        if (const FxStruct* s = syntax_.findStruct(type)) {
+            if (!dims.empty()) {
+                error = "arrays of structures as shader inputs or outputs are not supported ('" + access + "')";
+                return false;
+            }
+            for (const auto& m : s->members)
+                if (!flatten(m.type, access + "." + m.name, m.semantic, m.arrayDims, m.modifiers, out, depth + 1)) return false;
+            return true;
+        }
+        BasicType b = describeBasicType(type);
+        if (!b.ok) {
+            error = "type '" + type + "' of '" + access + "' cannot be a shader input or output";
+            return false;
+        }
+        if (semantic.empty()) {
+            error = "'" + access + "' has no semantic; every shader input and output needs one";
+            return false;
+        }
+        auto [base, index] = splitSemantic(semantic);
+        int count = dims.empty() ? 1 : dims[0];
+        int rows = b.isMatrix ? b.rows : 1;
+        for (int e = 0; e < count; ++e) {
+            for (int r = 0; r < rows; ++r) {
+                Leaf leaf;
+                leaf.access = access + (dims.empty() ? "" : "[" + std::to_string(e) + "]") + (b.isMatrix ? "[" + std::to_string(r) + "]" : "");
+                leaf.scalar = b.scalar;
+                leaf.components = b.columns;
+                leaf.semanticBase = base;
+                leaf.semanticIndex = index + e * rows + r;
+                leaf.interpolation = interpolation;
+                out.push_back(leaf);
+            }
+        }
+        return true;
+    }
+
+private:
+    const EffectSyntax& syntax_;
+};
+
+std::string widen(const std::string& expr, int n) {
+    switch (n) {
+    case 1: return "float4(" + expr + ", 0, 0, 0)";
+    case 2: return "float4(" + expr + ", 0, 0)";
+    case 3: return "float4(" + expr + ", 0)";
+    default: return "float4(" + expr + ")";
+    }
+}
+// Pixel-shader outputs: a scalar is replicated like fxc does for `float PS() : COLOR0`.
+std::string widenOutput(const std::string& expr, int n) {
+    switch (n) {
+    case 1: return "((float4)(" + expr + "))";
+    case 2: return "float4(" + expr + ", 0, 1)";
+    case 3: return "float4(" + expr + ", 1)";
+    default: return "float4(" + expr + ")";
+    }
+}
+std::string narrow(const std::string& v, int n) {
+    switch (n) {
+    case 1: return v + ".x";
+    case 2: return v + ".xy";
+    case 3: return v + ".xyz";
+    default: return v;
+    }
+}
+
+std::vector<std::string> splitArguments(const std::string& args) {
+    std::vector<std::string> out;
+    int depth = 0;
+    std::string cur;
+    for (char c : args) {
+        if (c == '(' || c == '[' || c == '{') ++depth;
+        if (c == ')' || c == ']' || c == '}') --depth;
+        if (c == ',' && depth == 0) {
+            out.emplace_back(trim(cur));
+            cur.clear();
+        } else {
+            cur += c;
+        }
+    }
+    if (!trim(cur).empty()) out.emplace_back(trim(cur));
+    return out;
+}
+
+bool has(const std::vector<std::string>& v, const char* s) {
+    for (const auto& x : v)
+        if (x == s) return true;
+    return false;
+}
+
+}  // namespace
+
+EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& entry, const ShaderProfile& profile,
+                               const std::string& arguments) {
+    EntryWrapper w;
+    const bool vertex = profile.stage == ShaderStage::Vertex;
+    Flattener flat(syntax);
+    std::vector<Leaf> inputs, outputs;
+    std::vector<std::string> locals, callArgs;
+    std::vector<std::string> literalArgs = splitArguments(arguments);
+    size_t nextLiteral = 0;
+
+    for (size_t i = 0; i < entry.parameters.size(); ++i) {
+        const FxParameter& p = entry.parameters[i];
+        std::string dims;
+        for (int d : p.arrayDims) dims += "[" + std::to_string(d) + "]";
+        if (has(p.modifiers, "uniform")) {
+            if (nextLiteral < literalArgs.size()) callArgs.push_back(literalArgs[nextLiteral++]);
+            else if (!p.defaultValue.empty()) callArgs.push_back(syntax.text(p.defaultValue));
+            else {
+                w.error = "uniform parameter '" + p.name + "' of '" + entry.name + "' gets no value: give it in the compile statement, e.g. compile " +
+                          profile.name + " " + entry.name + "(value)";
+                return w;
+            }
+            continue;
+        }
+        std::string local = "a" + std::to_string(i);
+        locals.push_back(p.type + " " + local + dims + ";");
+        callArgs.push_back(local);
+        bool isOut = has(p.modifiers, "out") || has(p.modifiers, "inout");
+        bool isIn = !has(p.modifiers, "out");
+        std::vector<std::string> interp;
+        for (const auto& m : p.modifiers)
+            if (m == "nointerpolation" || m == "linear" || m == "centroid" || m == "noperspective" || m == "sample") interp.push_back(m);
+        if (isIn && !flat.flatten(p.type, local, p.semantic, p.arrayDims, interp, inputs)) break;
+        if (isOut && !flat.flatten(p.type, local, p.semantic, p.arrayDims, interp, outputs)) break;
+    }
+    if (!flat.error.empty()) {
+        w.error = flat.error + " (in '" + entry.name + "')";
+        return w;
+    }
+    if (nextLiteral < literalArgs.size()) {
+        w.error = "'" + entry.name + "' is compiled with " + std::to_string(literalArgs.size()) + " argument(s) but has only " +
+                  std::to_string(nextLiteral) + " uniform parameter(s)";
+        return w;
+    }
+    bool returns = entry.returnType != "void";
+    if (returns && !flat.flatten(entry.returnType, "r", entry.returnSemantic, {}, {}, outputs)) {
+        w.error = flat.error + " (the return value of '" + entry.name + "')";
+        return w;
+    }
+
+    std::ostringstream params, fill, outStruct, copyOut;
+    bool firstParam = true;
+    auto addParam = [&](const std::string& decl) {
+        params << (firstParam ? "" : ", ") << decl;
+        firstParam = false;
+    };
+    bool fragCoordDeclared = false, frontFaceDeclared = false;
+    int n = 0;
+    for (const Leaf& leaf : inputs) {
+        std::string sem = leaf.semanticBase + std::to_string(leaf.semanticIndex);
+        std::string name = "i" + std::to_string(n++);
+        if (vertex) {
+            if (leaf.semanticBase == "SV_VERTEXID" || leaf.semanticBase == "SV_INSTANCEID") {
+                addParam("uint " + name + " : " + leaf.semanticBase);
+            } else {
+                addParam(vectorType(leaf.scalar, leaf.components) + " " + name + " : " + sem);
+            }
+            fill << "    " << leaf.access << " = " << name << ";\n";
+            continue;
+        }
+        // Pixel shader inputs.
+        const std::string& b = leaf.semanticBase;
+        if (b == "POSITION" || b == "SV_POSITION" || b == "VPOS") {
+            if (!fragCoordDeclared) addParam("float4 fxport_fragCoord : SV_Position");
+            fragCoordDeclared = true;
+            // D3D9 VPOS counts pixels from 0 at pixel centres; GL's gl_FragCoord has them at +0.5.
+            std::string v = b == "VPOS" ? "(fxport_fragCoord - float4(0.5, 0.5, 0, 0))" : "fxport_fragCoord";
+            fill << "    " << leaf.access << " = " << narrow(v, leaf.components) << ";\n";
+        } else if (b == "VFACE" || b == "SV_ISFRONTFACE") {
+            if (!frontFaceDeclared) addParam("bool fxport_frontFace : SV_IsFrontFace");
+            frontFaceDeclared = true;
+            fill << "    " << leaf.access << " = " << (b == "VFACE" ? "(fxport_frontFace ? 1.0 : -1.0)" : "fxport_frontFace") << ";\n";
+        } else if (b.rfind("SV_", 0) == 0) {
+            addParam(vectorType(leaf.scalar, leaf.components) + " " + name + " : " + b);
+            fill << "    " << leaf.access << " = " << name << ";\n";
+        } else if (isIntegerScalar(leaf.scalar)) {
+            addParam("nointerpolation " + vectorType(leaf.scalar == "bool" ? "uint" : leaf.scalar, leaf.components) + " " + name + " : " + sem);
+            fill << "    " << leaf.access << " = " << name << ";\n";
+        } else {
+            std::string interp;
+            for (const auto& m : leaf.interpolation) interp += m + " ";
+            addParam(interp + "float4 " + name + " : " + sem);
+            fill << "    " << leaf.access << " = " << narrow(name, leaf.components) << ";\n";
+        }
+    }
+
+    std::string positionMember;
+    int m = 0;
+    for (const Leaf& leaf : outputs) {
+        const std::string& b = leaf.semanticBase;
+        std::string name = "o" + std::to_string(m++);
+        if (vertex) {
+            if ((b == "POSITION" && leaf.semanticIndex == 0) || b == "SV_POSITION") {
+                outStruct << "    float4 " << name << " : SV_Position;\n";
+                copyOut << "    o." << name << " = " << widen(leaf.access, leaf.components) << ";\n";
+                if (leaf.components < 4) copyOut << "    o." << name << ".w = 1;\n";
+                positionMember = name;
+            } else if (b == "PSIZE") {
+                continue;  // point size: points are drawn with the device's size
+            } else if (b.rfind("SV_", 0) == 0) {
+                outStruct << "    " << vectorType(leaf.scalar, leaf.components) << " " << name << " : " << b << leaf.semanticIndex << ";\n";
+                copyOut << "    o." << name << " = " << leaf.access << ";\n";
+            } else if (isIntegerScalar(leaf.scalar)) {
+                outStruct << "    nointerpolation " << vectorType(leaf.scalar == "bool" ? "uint" : leaf.scalar, leaf.components) << " " << name
+                          << " : " << b << leaf.semanticIndex << ";\n";
+                copyOut << "    o." << name << " = " << leaf.access << ";\n";
+            } else {
+                std::string interp;
+                for (const auto& im : leaf.interpolation) interp += im + " ";
+                outStruct << "    " << interp << "float4 " << name << " : " << b << leaf.semanticIndex << ";\n";
+                std::string value = widen(leaf.access, leaf.components);
+                // vs_1_1..vs_2_x colour outputs are clamped to [0, 1] by D3D9 (oD0/oD1 registers).
+                if (b == "COLOR" && profile.major < 3) value = "saturate(" + value + ")";
+                copyOut << "    o." << name << " = " << value << ";\n";
+            }
+        } else {
+            if (b == "COLOR" || b == "SV_TARGET") {
+                std::string target = "SV_Target" + std::to_string(leaf.semanticIndex);
+                if (isIntegerScalar(leaf.scalar)) {
+                    outStruct << "    " << vectorType(leaf.scalar, leaf.components) << " " << name << " : " << target << ";\n";
+                    copyOut << "    o." << name << " = " << leaf.access << ";\n";
+                } else {
+                    outStruct << "    float4 " << name << " : " << target << ";\n";
+                    copyOut << "    o." << name << " = " << widenOutput(leaf.access, leaf.components) << ";\n";
+                }
+            } else if (b == "DEPTH" || b == "SV_DEPTH") {
+                outStruct << "    float " << name << " : SV_Depth;\n";
+                copyOut << "    o." << name << " = " << narrow("(float4)(" + leaf.access + ")", 1) << ";\n";
+            } else if (b == "SV_COVERAGE") {
+                outStruct << "    uint " << name << " : SV_Coverage;\n";
+                copyOut << "    o." << name << " = " << leaf.access << ";\n";
+            } else {
+                w.error = "pixel shader output '" + leaf.access + "' has semantic " + b + std::to_string(leaf.semanticIndex) +
+                          ", which is not a render target (COLORn / SV_Targetn) or depth";
+                return w;
+            }
+        }
+    }
+    if (vertex && positionMember.empty()) {
+        w.error = "vertex shader '" + entry.name + "' writes no position (POSITION or SV_Position)";
+        return w;
+    }
+    if (m == 0 && !vertex) {
+        w.error = "pixel shader '" + entry.name + "' has no output (COLOR0 / SV_Target0)";
+        return w;
+    }
+
+    std::ostringstream code;
+    code << "\n// ---- generated by fxport: entry wrapper for " << entry.name << " (" << profile.name << ")\n";
+    if (vertex && profile.isD3D9()) {
+        code << "cbuffer " << kInternalBlock << " { float4 " << kPixelOffset << "; };\n";
+        w.usesPixelOffset = true;
+    }
+    code << "struct fxport_Output {\n" << outStruct.str() << "};\n";
+    code << "fxport_Output " << kWrapperEntry << "(" << params.str() << ") {\n";
+    for (const auto& l : locals) code << "    " << l << "\n";
+    code << fill.str();
+    std::string call = entry.name + "(";
+    for (size_t i = 0; i < callArgs.size(); ++i) call += (i ? ", " : "") + callArgs[i];
+    call += ")";
+    if (returns) code << "    " << entry.returnType << " r = " << call << ";\n";
+    else code << "    " << call << ";\n";
+    code << "    fxport_Output o;\n" << copyOut.str();
+    if (w.usesPixelOffset)
+        code << "    o." << positionMember << ".xy += " << kPixelOffset << ".xy * o." << positionMember << ".w;\n";
+    code << "    return o;\n}\n";
+    w.code = code.str();
+    return w;
+}
+
+}  // namespace fxport::xlate

@@ -1,0 +1,778 @@
+// Effect-framework parser. It walks top-level declarations of the preprocessed text, records what
+// glslang cannot read (techniques, passes, sampler_state, texture objects, state objects, shader
+// variables, annotations, string parameters), and marks those byte ranges for removal. Everything it
+// does not recognise as effect syntax is left for glslang, which is the authority on plain HLSL.
+#include <algorithm>
+#include <cstdlib>
+#include <set>
+
+#include "fx_syntax.h"
+#include "source_map.h"
+#include "text_util.h"
+
+namespace fxport::xlate {
+
+const FxFunction* EffectSyntax::findFunction(const std::string& name) const {
+    for (const auto& f : functions)
+        if (f.name == name) return &f;
+    return nullptr;
+}
+const FxStruct* EffectSyntax::findStruct(const std::string& name) const {
+    for (const auto& s : structs)
+        if (s.name == name) return &s;
+    return nullptr;
+}
+const FxSampler* EffectSyntax::findSampler(const std::string& name) const {
+    for (const auto& s : samplers)
+        if (s.name == name) return &s;
+    return nullptr;
+}
+const FxTexture* EffectSyntax::findTexture(const std::string& name) const {
+    for (const auto& t : textures)
+        if (t.name == name) return &t;
+    return nullptr;
+}
+std::string EffectSyntax::text(TokenSpan span) const {
+    std::string out;
+    for (size_t i = span.begin; i < span.end && i < tokens.size(); ++i) {
+        if (!out.empty()) out += ' ';
+        if (tokens[i].kind == Token::Kind::String) out += '"' + tokens[i].text + '"';
+        else out += tokens[i].text;
+    }
+    return out;
+}
+
+namespace {
+
+bool isTechniqueKeyword(const std::string& s) {
+    return iequals(s, "technique") || iequals(s, "technique10") || iequals(s, "technique11");
+}
+// DX9 texture objects. The DX10 spellings (Texture2D ...) are DX10 objects unless a DX9
+// sampler_state names them (decided after parsing, see Parser::run).
+bool isDx9TextureType(const std::string& s) {
+    if (s == "Texture1D" || s == "Texture2D" || s == "Texture3D" || s == "TextureCube") return false;
+    return iequals(s, "texture") || iequals(s, "texture1D") || iequals(s, "texture2D") || iequals(s, "texture3D") ||
+           iequals(s, "textureCUBE");
+}
+bool isDx10TextureType(const std::string& full) {
+    const std::string s = full.substr(0, full.find('<'));  // Texture2D<float4>
+    static const char* const k[] = {"Texture1D", "Texture2D", "Texture3D", "TextureCube", "Texture1DArray",
+                                    "Texture2DArray", "TextureCubeArray", "Texture2DMS", "Texture2DMSArray", "Buffer"};
+    for (const char* t : k)
+        if (s == t) return true;
+    return false;
+}
+bool isDx9SamplerType(const std::string& s) {
+    return iequals(s, "sampler") || iequals(s, "sampler1D") || iequals(s, "sampler2D") || iequals(s, "sampler3D") ||
+           iequals(s, "samplerCUBE");
+}
+bool isDx10SamplerType(const std::string& s) {
+    return iequals(s, "SamplerState") || iequals(s, "SamplerComparisonState");
+}
+bool isStateObjectType(const std::string& s) {
+    return iequals(s, "BlendState") || iequals(s, "DepthStencilState") || iequals(s, "RasterizerState");
+}
+bool isShaderObjectType(const std::string& s) {
+    return iequals(s, "VertexShader") || iequals(s, "PixelShader") || iequals(s, "GeometryShader");
+}
+bool isTypeModifier(const std::string& s) {
+    static const std::set<std::string> k = {"static", "const", "uniform", "extern", "shared", "volatile", "precise",
+                                            "row_major", "column_major", "inline", "groupshared", "nointerpolation",
+                                            "linear", "centroid", "noperspective", "sample", "snorm", "unorm"};
+    return k.count(toLower(s)) > 0 && s == toLower(s);
+}
+bool isParameterModifier(const std::string& s) {
+    static const std::set<std::string> k = {"in", "out", "inout", "uniform", "const", "nointerpolation", "linear",
+                                            "centroid", "noperspective", "sample", "point", "line", "triangle",
+                                            "lineadj", "triangleadj", "row_major", "column_major", "precise"};
+    return k.count(s) > 0;
+}
+
+class Parser {
+public:
+    Parser(const std::string& text, const SourceMap& map) : text_(text), map_(map) {
+        syntax_.tokens = tokenize(text);
+    }
+
+    EffectSyntax run() {
+        while (!at().kind_is_end()) parseTopLevel();
+        for (auto& t : syntax_.textures) {
+            if (t.dx9Object) continue;
+            bool namedBySamplerState = false;
+            for (const auto& s : syntax_.samplers)
+                for (const auto& a : s.states)
+                    if (iequals(a.name, "texture"))
+                        for (size_t i = a.value.begin; i < a.value.end; ++i) namedBySamplerState |= tok(i).text == t.name;
+            if (namedBySamplerState) {
+                t.dx9Object = true;
+                blank(t.declaration.begin, t.declaration.end);
+            }
+        }
+        return std::move(syntax_);
+    }
+
+private:
+    const std::string& text_;
+    const SourceMap& map_;
+    EffectSyntax syntax_;
+    size_t pos_ = 0;
+
+    // --- token helpers -------------------------------------------------------------------
+    struct TokRef {
+        const Token& t;
+        bool kind_is_end() const { return t.kind == Token::Kind::End; }
+    };
+    TokRef at() const { return {tok(pos_)}; }
+    const Token& tok(size_t i) const { return syntax_.tokens[std::min(i, syntax_.tokens.size() - 1)]; }
+    const Token& cur() const { return tok(pos_); }
+    const Token& peek(size_t k = 1) const { return tok(pos_ + k); }
+    bool isEnd() const { return cur().kind == Token::Kind::End; }
+    bool accept(std::string_view p) {
+        if (cur().kind != Token::Kind::String && cur().text == p) {
+            ++pos_;
+            return true;
+        }
+        return false;
+    }
+
+    [[noreturn]] void fail(const char* id, const std::string& message, size_t tokenIndex) const {
+        const Token& t = tok(tokenIndex);
+        throw CompileError({map_.make(Severity::Error, id, message, t.line, t.column,
+                                      t.kind == Token::Kind::End ? std::string() : t.text)});
+    }
+    void expect(std::string_view p, const char* what) {
+        if (accept(p)) return;
+        if (isEnd()) fail(diag::kUnterminated, std::string("unexpected end of file: expected '") + std::string(p) + "' " + what, pos_);
+        fail(diag::kSyntax, std::string("expected '") + std::string(p) + "' " + what + ", found '" + cur().text + "'", pos_);
+    }
+    std::string expectIdentifier(const char* what) {
+        if (cur().isIdent()) return syntax_.tokens[pos_++].text;
+        if (isEnd()) fail(diag::kUnterminated, std::string("unexpected end of file: expected ") + what, pos_);
+        fail(diag::kSyntax, std::string("expected ") + what + ", found '" + cur().text + "'", pos_);
+    }
+
+    // Skips a balanced group starting at an opening bracket; returns the index after its closer.
+    size_t skipGroup(size_t i, const char* context) const {
+        const std::string open = tok(i).text;
+        const std::string close = open == "(" ? ")" : open == "[" ? "]" : open == "{" ? "}" : ">";
+        int depth = 0;
+        size_t start = i;
+        for (; tok(i).kind != Token::Kind::End; ++i) {
+            const Token& t = tok(i);
+            if (t.kind == Token::Kind::String) continue;
+            if (t.text == open) ++depth;
+            else if (t.text == close && --depth == 0) return i + 1;
+        }
+        fail(diag::kUnterminated, std::string("'") + open + "' of " + context + " is never closed", start);
+    }
+
+    void blank(size_t firstToken, size_t endToken) {
+        if (endToken <= firstToken) return;
+        size_t b = tok(firstToken).offset;
+        size_t e = endToken < syntax_.tokens.size() ? tok(endToken - 1).offset + tok(endToken - 1).text.size() : text_.size();
+        if (tok(endToken - 1).kind == Token::Kind::String) e += 2;  // quotes are not part of the token text
+        syntax_.edits.push_back({b, e, {}});
+    }
+
+    // --- annotations ---------------------------------------------------------------------
+    // `< type name = value; ... >`: returns the list; pos_ ends after '>'.
+    std::vector<Annotation> parseAnnotations() {
+        std::vector<Annotation> list;
+        size_t open = pos_;
+        expect("<", "to open annotations");
+        while (!accept(">")) {
+            if (isEnd()) fail(diag::kUnterminated, "annotation list is never closed with '>'", open);
+            Annotation a;
+            a.type = expectIdentifier("an annotation type");
+            a.name = expectIdentifier("an annotation name");
+            if (accept("[")) {  // array annotation
+                while (!accept("]")) {
+                    if (isEnd()) fail(diag::kUnterminated, "annotation array size is never closed", open);
+                    ++pos_;
+                }
+            }
+            expect("=", "in annotation");
+            size_t vb = pos_;
+            int depth = 0;
+            while (!isEnd() && !(depth == 0 && cur().is(";"))) {
+                if (cur().is("{") || cur().is("(")) ++depth;
+                if (cur().is("}") || cur().is(")")) --depth;
+                if (depth == 0 && cur().is(">")) break;
+                ++pos_;
+            }
+            // A lone string keeps its text without quotes; anything else is kept as written.
+            if (pos_ == vb + 1 && tok(vb).kind == Token::Kind::String) a.value = tok(vb).text;
+            else a.value = syntax_.text({vb, pos_});
+            accept(";");
+            list.push_back(std::move(a));
+        }
+        return list;
+    }
+
+    // --- state blocks: `{ Name[i] = value; ... }` ------------------------------------------
+    std::vector<FxAssignment> parseStateBlock(const char* context) {
+        std::vector<FxAssignment> list;
+        size_t open = pos_;
+        expect("{", context);
+        while (!accept("}")) {
+            if (isEnd()) fail(diag::kUnterminated, std::string(context) + " is never closed with '}'", open);
+            if (accept(";")) continue;
+            FxAssignment a;
+            a.nameToken = pos_;
+            a.name = expectIdentifier("a state name");
+            if (accept("[")) {
+                const Token& n = cur();
+                a.index = std::atoi(n.text.c_str());
+                ++pos_;
+                expect("]", "after state index");
+            }
+            if (cur().is("(")) {  // DX10 SetVertexShader(...);
+                a.isCall = true;
+                size_t after = skipGroup(pos_, context);
+                a.value = {pos_ + 1, after - 1};
+                pos_ = after;
+                expect(";", ("after " + a.name + "(...)").c_str());
+                list.push_back(std::move(a));
+                continue;
+            }
+            expect("=", ("after state '" + a.name + "'").c_str());
+            size_t vb = pos_;
+            int depth = 0;
+            while (true) {
+                if (isEnd()) fail(diag::kUnterminated, "state '" + a.name + "' has no ';' before the end of the file", a.nameToken);
+                const Token& t = cur();
+                if (t.kind != Token::Kind::String) {
+                    if (t.text == "(" || t.text == "{" || t.text == "[") ++depth;
+                    else if (t.text == ")" || t.text == "]") --depth;
+                    else if (t.text == "}") {
+                        if (depth == 0) fail(diag::kSyntax, "missing ';' after state '" + a.name + "'", pos_);
+                        --depth;
+                    } else if (t.text == ";" && depth == 0) break;
+                }
+                ++pos_;
+            }
+            a.value = {vb, pos_};
+            ++pos_;  // ';'
+            list.push_back(std::move(a));
+        }
+        return list;
+    }
+
+    // --- techniques ----------------------------------------------------------------------
+    void parseTechnique() {
+        size_t start = pos_;
+        FxTechnique tech;
+        tech.token = pos_;
+        ++pos_;
+        if (cur().isIdent()) tech.name = syntax_.tokens[pos_++].text;
+        if (cur().is("<")) tech.annotations = parseAnnotations();
+        if (!cur().is("{")) {
+            if (isEnd()) fail(diag::kUnterminated, "technique '" + tech.name + "' has no body", start);
+            fail(diag::kSyntax, "expected '{' to open technique '" + tech.name + "', found '" + cur().text + "'", pos_);
+        }
+        ++pos_;
+        while (!accept("}")) {
+            if (isEnd()) fail(diag::kUnterminated, "technique '" + tech.name + "' is never closed with '}'", start);
+            if (accept(";")) continue;
+            if (!iequals(cur().text, "pass"))
+                fail(diag::kSyntax, "expected 'pass' inside technique '" + tech.name + "', found '" + cur().text + "'", pos_);
+            FxPass pass;
+            pass.token = pos_;
+            ++pos_;
+            if (cur().isIdent()) pass.name = syntax_.tokens[pos_++].text;
+            if (cur().is("<")) pass.annotations = parseAnnotations();
+            if (!cur().is("{")) {
+                if (isEnd()) fail(diag::kUnterminated, "pass '" + pass.name + "' has no body", pass.token);
+                fail(diag::kSyntax, "expected '{' to open pass '" + pass.name + "', found '" + cur().text + "'", pos_);
+            }
+            pass.assignments = parseStateBlock("pass");
+            tech.passes.push_back(std::move(pass));
+        }
+        accept(";");
+        blank(start, pos_);
+        syntax_.techniques.push_back(std::move(tech));
+    }
+
+    // --- top level -------------------------------------------------------------------------
+    void parseTopLevel() {
+        const Token& t = cur();
+        if (t.is(";")) {
+            ++pos_;
+            return;
+        }
+        if (t.isIdent() && isTechniqueKeyword(t.text)) return parseTechnique();
+        if (t.is("struct")) return parseStruct();
+        if (t.is("cbuffer") || t.is("tbuffer")) return parseCbuffer();
+        if (t.is("typedef")) {
+            while (!isEnd() && !cur().is(";")) ++pos_;
+            accept(";");
+            return;
+        }
+        if (t.is("[")) {  // attributes before a function: [maxvertexcount(3)]
+            size_t after = skipGroup(pos_, "attribute");
+            pendingAttributes_ += syntax_.text({pos_, after});
+            pos_ = after;
+            return;
+        }
+        if (t.is("#")) {  // stray directive left by the preprocessor (e.g. #pragma): skip the line
+            int line = t.line;
+            while (!isEnd() && cur().line == line) ++pos_;
+            return;
+        }
+        if (!t.isIdent()) fail(diag::kSyntax, "unexpected '" + t.text + "' at file scope", pos_);
+        parseDeclaration();
+    }
+
+    void parseStruct() {
+        FxStruct s;
+        s.token = pos_;
+        ++pos_;
+        if (cur().isIdent()) s.name = syntax_.tokens[pos_++].text;
+        if (!cur().is("{")) {  // `struct X var;` use as a type
+            pos_ = s.token;
+            return parseDeclaration();
+        }
+        size_t open = pos_++;
+        while (!accept("}")) {
+            if (isEnd()) fail(diag::kUnterminated, "struct '" + s.name + "' is never closed with '}'", open);
+            FxStructMember m;
+            while (cur().isIdent() && isParameterModifier(cur().text) && !peek().is(";") && !peek().is(":") &&
+                   !peek().is("["))
+                m.modifiers.push_back(syntax_.tokens[pos_++].text);
+            m.type = parseTypeName();
+            m.name = expectIdentifier("a struct member name");
+            m.arrayDims = parseArrayDims();
+            while (accept(":")) {
+                std::string sem = expectIdentifier("a semantic");
+                if (cur().is("(")) pos_ = skipGroup(pos_, "semantic");  // packoffset(...)
+                else m.semantic = sem;
+            }
+            if (cur().is("<")) {
+                size_t a = pos_;
+                parseAnnotations();
+                blank(a, pos_);
+            }
+            while (accept(",")) {  // float a, b : TEXCOORD0; -- rare; keep first member's data
+                expectIdentifier("a struct member name");
+                parseArrayDims();
+                if (accept(":")) expectIdentifier("a semantic");
+            }
+            expect(";", ("after member '" + m.name + "' of struct '" + s.name + "'").c_str());
+            s.members.push_back(std::move(m));
+        }
+        while (!isEnd() && !cur().is(";")) ++pos_;  // optional declarators
+        accept(";");
+        syntax_.structs.push_back(std::move(s));
+    }
+
+    void parseCbuffer() {
+        ++pos_;
+        std::string name = cur().isIdent() ? syntax_.tokens[pos_++].text : std::string();
+        while (accept(":")) {
+            expectIdentifier("register");
+            if (cur().is("(")) pos_ = skipGroup(pos_, "register");
+        }
+        size_t open = pos_;
+        expect("{", ("to open cbuffer " + name).c_str());
+        while (!accept("}")) {
+            if (isEnd()) fail(diag::kUnterminated, "cbuffer '" + name + "' is never closed with '}'", open);
+            if (accept(";")) continue;
+            parseDeclaration(name);
+        }
+        accept(";");
+    }
+
+    std::vector<int> parseArrayDims() {
+        std::vector<int> dims;
+        while (cur().is("[")) {
+            size_t after = skipGroup(pos_, "array size");
+            dims.push_back(after == pos_ + 2 ? 0 : std::atoi(tok(pos_ + 1).text.c_str()));
+            if (after > pos_ + 3) dims.back() = evaluateIntExpression({pos_ + 1, after - 1});
+            pos_ = after;
+        }
+        return dims;
+    }
+
+    int evaluateIntExpression(TokenSpan span) {
+        // Array sizes are usually literals; simple products like [4*2] are evaluated, others -> 0.
+        long value = 0;
+        char op = '+';
+        for (size_t i = span.begin; i < span.end; ++i) {
+            const Token& t = tok(i);
+            if (t.kind == Token::Kind::Number) {
+                long v = std::strtol(t.text.c_str(), nullptr, 0);
+                value = op == '+' ? value + v : op == '-' ? value - v : op == '*' ? value * v : v ? value / v : 0;
+            } else if (t.text.size() == 1 && std::string("+-*/").find(t.text[0]) != std::string::npos) {
+                op = t.text[0];
+            } else {
+                return 0;
+            }
+        }
+        return static_cast<int>(value);
+    }
+
+    // A type name: identifier, optionally templated (`vector<float, 4>`, `Texture2D<float4>`).
+    std::string parseTypeName() {
+        std::string type = expectIdentifier("a type");
+        if (cur().is("<") && !peek().is(">")) {
+            size_t after = skipGroup(pos_, "template arguments");
+            type += syntax_.text({pos_, after});
+            pos_ = after;
+        }
+        return type;
+    }
+
+    void parseDeclaration(const std::string& cbuffer = {}) {
+        size_t start = pos_;
+        std::vector<std::string> modifiers;
+        std::vector<size_t> sharedTokens;
+        while (cur().isIdent() && isTypeModifier(cur().text)) {
+            if (cur().text == "shared") sharedTokens.push_back(pos_);
+            modifiers.push_back(syntax_.tokens[pos_++].text);
+        }
+        size_t typeToken = pos_;
+        std::string type = parseTypeName();
+        if (!cur().isIdent()) {
+            if (isEnd()) fail(diag::kUnterminated, "declaration of type '" + type + "' is cut off by the end of the file", typeToken);
+            fail(diag::kSyntax, "expected a name after type '" + type + "', found '" + cur().text + "'", pos_);
+        }
+        size_t nameToken = pos_;
+        std::string name = syntax_.tokens[pos_++].text;
+        for (size_t s : sharedTokens) blank(s, s + 1);  // DX10 effect-pool keyword, meaningless here
+
+        if (cur().is("(")) return parseFunction(type, name, nameToken, start);
+
+        if (isDx9TextureType(type) || (isDx10TextureType(type) && cbuffer.empty())) {
+            return parseTexture(type, name, nameToken, start, isDx9TextureType(type));
+        }
+        if (isDx9SamplerType(type) || isDx10SamplerType(type)) return parseSampler(type, name, nameToken, start);
+        if (isStateObjectType(type)) return parseStateObject(type, name, nameToken, start);
+        if (isShaderObjectType(type)) return parseShaderVariable(type, name, nameToken, start);
+        if (iequals(type, "string")) return parseStringParameter(name, nameToken, start);
+        parseVariable(type, modifiers, name, nameToken, cbuffer);
+    }
+
+    void parseFunction(const std::string& returnType, const std::string& name, size_t nameToken, size_t start) {
+        (void)start;
+        FxFunction f;
+        f.name = name;
+        f.returnType = returnType;
+        f.token = nameToken;
+        f.attributes = std::move(pendingAttributes_);
+        pendingAttributes_.clear();
+        size_t close = skipGroup(pos_, ("parameter list of '" + name + "'").c_str());
+        // Parameters: split at depth-0 commas.
+        size_t i = pos_ + 1;
+        while (i < close - 1) {
+            size_t j = i;
+            int depth = 0;
+            while (j < close - 1) {
+                const Token& t = tok(j);
+                if (t.is("(") || t.is("[") || t.is("{") || t.is("<")) ++depth;
+                if (t.is(")") || t.is("]") || t.is("}") || t.is(">")) --depth;
+                if (depth == 0 && t.is(",")) break;
+                ++j;
+            }
+            f.parameters.push_back(parseParameter({i, j}, name));
+            i = j + 1;
+        }
+        pos_ = close;
+        while (accept(":")) {
+            std::string sem = expectIdentifier("a semantic");
+            if (cur().is("(")) pos_ = skipGroup(pos_, "semantic");
+            else f.returnSemantic = sem;
+        }
+        if (accept(";")) return;  // prototype
+        if (!cur().is("{")) {
+            if (isEnd()) fail(diag::kUnterminated, "function '" + name + "' has no body before the end of the file", nameToken);
+            fail(diag::kSyntax, "expected '{' to open the body of function '" + name + "', found '" + cur().text + "'", pos_);
+        }
+        size_t after = skipGroup(pos_, ("body of function '" + name + "'").c_str());
+        f.body = {pos_ + 1, after - 1};
+        pos_ = after;
+        syntax_.functions.push_back(std::move(f));
+    }
+
+    FxParameter parseParameter(TokenSpan span, const std::string& function) {
+        FxParameter p;
+        size_t i = span.begin;
+        while (i < span.end && tok(i).isIdent() && isParameterModifier(tok(i).text) && i + 1 < span.end &&
+               tok(i + 1).isIdent())
+            p.modifiers.push_back(tok(i++).text);
+        if (i >= span.end || !tok(i).isIdent())
+            fail(diag::kSyntax, "malformed parameter in function '" + function + "'", i < span.end ? i : span.begin);
+        p.typeToken = i;
+        p.type = tok(i++).text;
+        if (i < span.end && tok(i).is("<")) {
+            size_t after = skipGroup(i, "template arguments");
+            p.type += syntax_.text({i, after});
+            i = after;
+        }
+        if (i < span.end && tok(i).isIdent()) p.name = tok(i++).text;
+        while (i < span.end && tok(i).is("[")) {
+            size_t after = skipGroup(i, "array size");
+            p.arrayDims.push_back(std::atoi(tok(i + 1).text.c_str()));
+            i = after;
+        }
+        while (i < span.end && tok(i).is(":")) {
+            ++i;
+            if (i < span.end && tok(i).isIdent()) {
+                std::string sem = tok(i++).text;
+                if (i < span.end && tok(i).is("(")) i = skipGroup(i, "semantic");
+                else p.semantic = sem;
+            }
+        }
+        if (i < span.end && tok(i).is("=")) p.defaultValue = {i + 1, span.end};
+        return p;
+    }
+
+    // Declarator tail shared by objects: [dims] (: semantic|register(x))* <annotations>?
+    struct Tail {
+        std::vector<int> dims;
+        std::string semantic;
+        int registerIndex = -1;
+        std::vector<Annotation> annotations;
+        size_t annotationBegin = 0, annotationEnd = 0;
+    };
+    Tail parseDeclaratorTail() {
+        Tail tail;
+        tail.dims = parseArrayDims();
+        while (accept(":")) {
+            std::string word = expectIdentifier("a semantic or register");
+            if (cur().is("(")) {
+                size_t after = skipGroup(pos_, word.c_str());
+                if (iequals(word, "register") && after >= pos_ + 3) {
+                    std::string reg = tok(pos_ + 1).text;  // s0, t3, c4 ...
+                    if (reg.size() > 1) tail.registerIndex = std::atoi(reg.c_str() + 1);
+                }
+                pos_ = after;
+            } else {
+                tail.semantic = word;
+            }
+        }
+        if (cur().is("<")) {
+            tail.annotationBegin = pos_;
+            tail.annotations = parseAnnotations();
+            tail.annotationEnd = pos_;
+        }
+        return tail;
+    }
+
+    // Skips an initializer to the ',' or ';' that ends it (depth 0). Returns its span.
+    TokenSpan skipInitializer(const std::string& name) {
+        size_t b = pos_;
+        int depth = 0;
+        while (true) {
+            if (isEnd()) fail(diag::kUnterminated, "declaration of '" + name + "' has no ';' before the end of the file", b);
+            const Token& t = cur();
+            if (t.kind != Token::Kind::String) {
+                if (t.is("(") || t.is("{") || t.is("[")) ++depth;
+                else if (t.is(")") || t.is("}") || t.is("]")) --depth;
+                else if (depth == 0 && (t.is(";") || t.is(","))) break;
+            }
+            ++pos_;
+        }
+        return {b, pos_};
+    }
+
+    void parseTexture(const std::string& type, const std::string& name, size_t nameToken, size_t start, bool dx9) {
+        FxTexture tex;
+        tex.name = name;
+        tex.type = type;
+        tex.dx9Object = dx9;
+        tex.token = nameToken;
+        Tail tail = parseDeclaratorTail();
+        tex.semantic = tail.semantic;
+        tex.explicitUnit = tail.registerIndex;
+        tex.annotations = tail.annotations;
+        if (accept("=")) skipInitializer(name);
+        expect(";", ("after texture '" + name + "'").c_str());
+        tex.declaration = {start, pos_};
+        if (dx9) blank(start, pos_);
+        else if (tail.annotationEnd > tail.annotationBegin) blank(tail.annotationBegin, tail.annotationEnd);
+        syntax_.textures.push_back(std::move(tex));
+    }
+
+    void parseSampler(const std::string& type, const std::string& name, size_t nameToken, size_t start) {
+        FxSampler s;
+        s.name = name;
+        s.type = type;
+        s.dx10 = isDx10SamplerType(type);
+        s.token = nameToken;
+        Tail tail = parseDeclaratorTail();
+        if (!tail.dims.empty())
+            fail(diag::kUnsupported, "sampler arrays ('" + name + "[]') are not supported", nameToken);
+        s.explicitUnit = tail.registerIndex;
+        if (accept("=")) {
+            if (!iequals(cur().text, "sampler_state"))
+                fail(diag::kSyntax, "expected 'sampler_state' after '" + name + " =', found '" + cur().text + "'", pos_);
+            ++pos_;
+            s.states = parseStateBlock("sampler_state");
+        } else if (cur().is("{")) {
+            s.states = parseStateBlock("sampler state block");
+        }
+        expect(";", ("after sampler '" + name + "'").c_str());
+        s.declaration = {start, pos_};
+        syntax_.samplers.push_back(std::move(s));
+    }
+
+    void parseStateObject(const std::string& type, const std::string& name, size_t nameToken, size_t start) {
+        FxStateObject o;
+        o.type = type;
+        o.name = name;
+        o.token = nameToken;
+        parseDeclaratorTail();
+        accept("=");
+        if (cur().is("{")) o.assignments = parseStateBlock((type + " block").c_str());
+        expect(";", ("after " + type + " '" + name + "'").c_str());
+        blank(start, pos_);
+        syntax_.stateObjects.push_back(std::move(o));
+    }
+
+    void parseShaderVariable(const std::string& type, const std::string& name, size_t nameToken, size_t start) {
+        FxShaderVariable v;
+        v.name = name;
+        v.type = type;
+        v.token = nameToken;
+        Tail tail = parseDeclaratorTail();
+        v.isArray = !tail.dims.empty();
+        if (accept("=")) {
+            if (cur().is("{")) {
+                size_t after = skipGroup(pos_, ("initializer of '" + name + "'").c_str());
+                size_t i = pos_ + 1;
+                while (i < after - 1) {
+                    size_t j = i;
+                    int depth = 0;
+                    while (j < after - 1) {
+                        if (tok(j).is("(") || tok(j).is("{")) ++depth;
+                        if (tok(j).is(")") || tok(j).is("}")) --depth;
+                        if (depth == 0 && tok(j).is(",")) break;
+                        ++j;
+                    }
+                    if (j > i) v.elements.push_back(parseShaderExpr(syntax_, {i, j}));
+                    i = j + 1;
+                }
+                pos_ = after;
+            } else {
+                TokenSpan init = skipInitializer(name);
+                v.elements.push_back(parseShaderExpr(syntax_, init));
+            }
+        }
+        expect(";", ("after shader variable '" + name + "'").c_str());
+        blank(start, pos_);
+        syntax_.shaderVariables.push_back(std::move(v));
+    }
+
+    void parseStringParameter(const std::string& name, size_t nameToken, size_t start) {
+        FxGlobal g;
+        g.name = name;
+        g.type = "string";
+        g.token = nameToken;
+        g.isStringParameter = true;
+        Tail tail = parseDeclaratorTail();
+        g.semantic = tail.semantic;
+        g.annotations = tail.annotations;
+        if (accept("=")) g.initializer = skipInitializer(name);
+        expect(";", ("after string '" + name + "'").c_str());
+        blank(start, pos_);
+        syntax_.globals.push_back(std::move(g));
+    }
+
+    void parseVariable(const std::string& type, const std::vector<std::string>& modifiers, std::string name,
+                       size_t nameToken, const std::string& cbuffer) {
+        while (true) {
+            FxGlobal g;
+            g.name = name;
+            g.type = type;
+            g.modifiers = modifiers;
+            g.token = nameToken;
+            g.cbuffer = cbuffer;
+            Tail tail = parseDeclaratorTail();
+            g.arrayDims = tail.dims;
+            g.semantic = tail.semantic;
+            g.annotations = tail.annotations;
+            if (tail.annotationEnd > tail.annotationBegin) blank(tail.annotationBegin, tail.annotationEnd);
+            if (accept("=")) g.initializer = skipInitializer(name);
+            syntax_.globals.push_back(std::move(g));
+            if (accept(",")) {
+                nameToken = pos_;
+                name = expectIdentifier("a variable name");
+                continue;
+            }
+            break;
+        }
+        if (!accept(";")) {
+            if (isEnd()) fail(diag::kUnterminated, "declaration of '" + name + "' has no ';' before the end of the file", nameToken);
+            fail(diag::kSyntax, "expected ';' after the declaration of '" + name + "', found '" + cur().text + "'", pos_);
+        }
+    }
+
+    std::string pendingAttributes_;
+};
+
+}  // namespace
+
+FxShaderExpr parseShaderExpr(const EffectSyntax& syntax, TokenSpan span) {
+    FxShaderExpr e;
+    e.token = span.begin;
+    auto t = [&](size_t i) -> const Token& { return syntax.tokens[std::min(i, syntax.tokens.size() - 1)]; };
+    // Strip surrounding parentheses: `(VSArray[i])`.
+    while (span.end > span.begin + 1 && t(span.begin).is("(") && t(span.end - 1).is(")")) {
+        ++span.begin;
+        --span.end;
+    }
+    if (span.empty()) return e;
+    const Token& first = t(span.begin);
+    if (span.end == span.begin + 1 && (iequals(first.text, "NULL") || first.text == "0")) {
+        e.kind = FxShaderExpr::Kind::Null;
+        return e;
+    }
+    if (iequals(first.text, "asm")) {
+        e.kind = FxShaderExpr::Kind::Asm;
+        return e;
+    }
+    if (iequals(first.text, "ConstructGSWithSO") || iequals(first.text, "ConstructGSWithSOExt")) {
+        e.kind = FxShaderExpr::Kind::StreamOut;
+        return e;
+    }
+    auto parseCall = [&](size_t i, size_t end) {
+        // ENTRY ( args )
+        if (i >= end || !t(i).isIdent()) return false;
+        e.entry = t(i).text;
+        if (i + 1 < end && t(i + 1).is("(") && t(end - 1).is(")")) e.arguments = syntax.text({i + 2, end - 1});
+        else if (i + 1 != end) return false;
+        return true;
+    };
+    if (iequals(first.text, "compile")) {
+        if (span.end < span.begin + 3) return e;
+        e.profile = t(span.begin + 1).text;
+        if (parseCall(span.begin + 2, span.end)) e.kind = FxShaderExpr::Kind::Compile;
+        return e;
+    }
+    if (iequals(first.text, "CompileShader")) {
+        // CompileShader( profile, ENTRY(args) )
+        if (span.end < span.begin + 6 || !t(span.begin + 1).is("(") || !t(span.end - 1).is(")")) return e;
+        e.profile = t(span.begin + 2).text;
+        if (!t(span.begin + 3).is(",")) return e;
+        if (parseCall(span.begin + 4, span.end - 1)) e.kind = FxShaderExpr::Kind::Compile;
+        return e;
+    }
+    if (first.isIdent() && span.end == span.begin + 1) {
+        e.kind = FxShaderExpr::Kind::Variable;
+        e.variable = first.text;
+        return e;
+    }
+    if (first.isIdent() && t(span.begin + 1).is("[") && t(span.end - 1).is("]")) {
+        e.kind = FxShaderExpr::Kind::ArrayElement;
+        e.variable = first.text;
+        e.index = {span.begin + 2, span.end - 1};
+        return e;
+    }
+    return e;
+}
+
+EffectSyntax parseEffect(const std::string& text, const SourceMap& map) {
+    return Parser(text, map).run();
+}
+
+}  // namespace fxport::xlate

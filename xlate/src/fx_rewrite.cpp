@@ -1,0 +1,271 @@
+#include "fx_rewrite.h"
+
+#include <algorithm>
+#include <numeric>
+#include <optional>
+#include <set>
+
+#include "render_states.h"
+#include "source_map.h"
+#include "text_util.h"
+
+namespace fxport::xlate {
+
+TextureKind textureKindOfType(const std::string& type) {
+    std::string t = toLower(type);
+    if (t.find("cube") != std::string::npos) return TextureKind::TextureCube;
+    if (t.find("3d") != std::string::npos) return TextureKind::Texture3D;
+    if (t.find("1d") != std::string::npos) return TextureKind::Texture1D;
+    return TextureKind::Texture2D;
+}
+
+namespace {
+
+const char* dx9SamplerType(TextureKind k) {
+    switch (k) {
+    case TextureKind::Texture1D: return "sampler1D";
+    case TextureKind::Texture2D: return "sampler2D";
+    case TextureKind::Texture3D: return "sampler3D";
+    case TextureKind::TextureCube: return "samplerCUBE";
+    }
+    return "sampler2D";
+}
+
+// Which dimension a DX9 texture intrinsic implies: tex2Dlod -> 2D, texCUBEbias -> cube ...
+std::optional<TextureKind> intrinsicKind(const std::string& name) {
+    if (name.rfind("texCUBE", 0) == 0) return TextureKind::TextureCube;
+    if (name.rfind("tex3D", 0) == 0) return TextureKind::Texture3D;
+    if (name.rfind("tex2D", 0) == 0) return TextureKind::Texture2D;
+    if (name.rfind("tex1D", 0) == 0) return TextureKind::Texture1D;
+    return std::nullopt;
+}
+
+bool isUntypedSampler(const std::string& type) { return type == "sampler" || type == "Sampler"; }
+bool isDx9Sampler(const std::string& type) {
+    std::string t = toLower(type);
+    return t == "sampler" || t == "sampler1d" || t == "sampler2d" || t == "sampler3d" || t == "samplercube";
+}
+
+// Union-find over "sampler slots": global samplers and sampler-typed function parameters. Passing
+// a sampler to a function joins the two slots; a texture intrinsic fixes the dimension of a set.
+class SamplerSlots {
+public:
+    int slot(const std::string& key) {
+        auto it = ids_.find(key);
+        if (it != ids_.end()) return it->second;
+        int id = static_cast<int>(parent_.size());
+        parent_.push_back(id);
+        kind_.push_back(std::nullopt);
+        where_.push_back(0);
+        ids_[key] = id;
+        return id;
+    }
+    int find(int x) { return parent_[static_cast<size_t>(x)] == x ? x : parent_[static_cast<size_t>(x)] = find(parent_[static_cast<size_t>(x)]); }
+    // Returns false on a contradiction.
+    bool setKind(int s, TextureKind k, size_t token) {
+        int r = find(s);
+        auto& cur = kind_[static_cast<size_t>(r)];
+        if (cur && *cur != k) return false;
+        if (!cur) where_[static_cast<size_t>(r)] = token;
+        cur = k;
+        return true;
+    }
+    bool join(int a, int b) {
+        a = find(a);
+        b = find(b);
+        if (a == b) return true;
+        auto ka = kind_[static_cast<size_t>(a)], kb = kind_[static_cast<size_t>(b)];
+        if (ka && kb && *ka != *kb) return false;
+        parent_[static_cast<size_t>(b)] = a;
+        if (!ka) {
+            kind_[static_cast<size_t>(a)] = kb;
+            where_[static_cast<size_t>(a)] = where_[static_cast<size_t>(b)];
+        }
+        return true;
+    }
+    std::optional<TextureKind> kind(int s) { return kind_[static_cast<size_t>(find(s))]; }
+
+private:
+    std::map<std::string, int> ids_;
+    std::vector<int> parent_;
+    std::vector<std::optional<TextureKind>> kind_;
+    std::vector<size_t> where_;
+};
+
+}  // namespace
+
+RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& syntax, const SourceMap& map,
+                              std::vector<Diagnostic>& diagnostics) {
+    RewrittenEffect out;
+    const auto& tokens = syntax.tokens;
+    auto fail = [&](const std::string& message, size_t token) {
+        const Token& t = tokens[token];
+        throw CompileError({map.make(Severity::Error, diag::kHlsl, message, t.line, t.column, t.text)});
+    };
+
+    // ---- 1. sampler dimensions ---------------------------------------------------------------
+    SamplerSlots slots;
+    for (const auto& s : syntax.samplers) {
+        if (s.dx10) continue;
+        out.dx9Samplers = true;
+        int id = slots.slot("g:" + s.name);
+        if (!isUntypedSampler(s.type)) slots.setKind(id, textureKindOfType(s.type), s.token);
+    }
+    auto functionKey = [](const FxFunction& f) { return f.name + "/" + std::to_string(f.parameters.size()); };
+    for (const auto& f : syntax.functions)
+        for (size_t i = 0; i < f.parameters.size(); ++i)
+            if (isDx9Sampler(f.parameters[i].type)) {
+                out.dx9Samplers = true;
+                int id = slots.slot("p:" + functionKey(f) + ":" + std::to_string(i));
+                if (!isUntypedSampler(f.parameters[i].type)) slots.setKind(id, textureKindOfType(f.parameters[i].type), f.parameters[i].typeToken);
+            }
+    // A sampler_state naming a typed texture (textureCUBE) fixes the sampler's dimension too.
+    for (const auto& s : syntax.samplers) {
+        if (s.dx10) continue;
+        for (const auto& a : s.states) {
+            if (!iequals(a.name, "texture")) continue;
+            for (size_t i = a.value.begin; i < a.value.end; ++i)
+                if (const FxTexture* t = syntax.findTexture(tokens[i].text); t && !iequals(t->type, "texture"))
+                    if (!slots.setKind(slots.slot("g:" + s.name), textureKindOfType(t->type), s.token))
+                        fail("sampler '" + s.name + "' is declared " + s.type + " but its texture '" + t->name + "' is a " + t->type, s.token);
+        }
+    }
+    auto slotOfName = [&](const FxFunction& f, const std::string& name) -> std::optional<int> {
+        for (size_t i = 0; i < f.parameters.size(); ++i)
+            if (f.parameters[i].name == name && isDx9Sampler(f.parameters[i].type))
+                return slots.slot("p:" + functionKey(f) + ":" + std::to_string(i));
+        if (const FxSampler* s = syntax.findSampler(name); s && !s->dx10) return slots.slot("g:" + s->name);
+        return std::nullopt;
+    };
+    for (const auto& f : syntax.functions) {
+        for (size_t i = f.body.begin; i + 2 < f.body.end; ++i) {
+            if (!tokens[i].isIdent() || !tokens[i + 1].is("(")) continue;
+            // Arguments that are a bare identifier: (name , or (name ) at depth 1.
+            std::vector<std::pair<size_t, std::string>> bareArgs;
+            int depth = 0;
+            size_t argIndex = 0, argStart = i + 2;
+            for (size_t j = i + 1; j < f.body.end; ++j) {
+                const Token& t = tokens[j];
+                if (t.is("(") || t.is("[") || t.is("{")) {
+                    ++depth;
+                    continue;
+                }
+                if ((t.is(")") || t.is("]") || t.is("}")) && --depth == 0) {
+                    if (j == argStart + 1 && tokens[argStart].isIdent()) bareArgs.push_back({argIndex, tokens[argStart].text});
+                    break;
+                }
+                if (depth == 1 && t.is(",")) {
+                    if (j == argStart + 1 && tokens[argStart].isIdent()) bareArgs.push_back({argIndex, tokens[argStart].text});
+                    ++argIndex;
+                    argStart = j + 1;
+                }
+            }
+            const std::string& callee = tokens[i].text;
+            if (auto k = intrinsicKind(callee)) {
+                for (const auto& [index, name] : bareArgs)
+                    if (index == 0)
+                        if (auto s = slotOfName(f, name); s && !slots.setKind(*s, *k, i))
+                            fail("sampler '" + name + "' is used as a " + std::string(dx9SamplerType(*slots.kind(*s))) +
+                                     " elsewhere but with " + callee + " here; a sampler has one dimension",
+                                 i);
+                continue;
+            }
+            for (const auto& g : syntax.functions) {
+                if (g.name != callee) continue;
+                for (const auto& [index, name] : bareArgs) {
+                    if (index >= g.parameters.size() || !isDx9Sampler(g.parameters[index].type)) continue;
+                    auto s = slotOfName(f, name);
+                    if (!s) continue;
+                    if (!slots.join(*s, slots.slot("p:" + functionKey(g) + ":" + std::to_string(index))))
+                        fail("sampler '" + name + "' is passed to parameter '" + g.parameters[index].name + "' of '" + g.name +
+                                 "', which is used with a different texture dimension",
+                             i);
+                }
+            }
+        }
+    }
+
+    // ---- 2. sampler units and states ----------------------------------------------------------
+    std::set<int> usedUnits;
+    for (const auto& s : syntax.samplers)
+        if (!s.dx10 && s.explicitUnit >= 0) usedUnits.insert(s.explicitUnit);
+    StateContext stateContext{syntax, map, diagnostics};
+    for (const auto& s : syntax.samplers) {
+        EffectSampler es;
+        es.name = s.name;
+        es.dx10 = s.dx10;
+        if (!s.dx10) {
+            es.kind = slots.kind(slots.slot("g:" + s.name)).value_or(TextureKind::Texture2D);
+            es.unit = s.explicitUnit;
+            if (es.unit < 0) {
+                int u = 0;
+                while (usedUnits.count(u)) ++u;
+                es.unit = u;
+                usedUnits.insert(u);
+            }
+        }
+        for (const auto& a : s.states) translateSamplerAssignment(a, stateContext, es.state, es.textureParameter);
+        out.samplers.push_back(std::move(es));
+    }
+    std::set<int> usedTextureUnits;
+    for (const auto& t : syntax.textures)
+        if (!t.dx9Object && t.explicitUnit >= 0) {
+            out.textureUnits[t.name] = t.explicitUnit;
+            usedTextureUnits.insert(t.explicitUnit);
+        }
+    for (const auto& t : syntax.textures) {
+        if (t.dx9Object || out.textureUnits.count(t.name)) continue;
+        int u = 0;
+        while (usedTextureUnits.count(u)) ++u;
+        out.textureUnits[t.name] = u;
+        usedTextureUnits.insert(u);
+    }
+
+    // ---- 3. apply edits ------------------------------------------------------------------------
+    std::vector<TextEdit> edits = syntax.edits;
+    auto spanBytes = [&](TokenSpan span) {
+        size_t b = tokens[span.begin].offset;
+        const Token& last = tokens[span.end - 1];
+        size_t e = last.offset + last.text.size() + (last.kind == Token::Kind::String ? 2 : 0);
+        return std::pair<size_t, size_t>(b, e);
+    };
+    for (size_t i = 0; i < syntax.samplers.size(); ++i) {
+        const FxSampler& s = syntax.samplers[i];
+        const EffectSampler& es = out.samplers[i];
+        auto [b, e] = spanBytes(s.declaration);
+        std::string decl = s.dx10 ? s.type + " " + s.name + ";"
+                                  : std::string(dx9SamplerType(es.kind)) + " " + s.name + " : register(s" + std::to_string(es.unit) + ");";
+        edits.push_back({b, e, decl});
+    }
+    for (const auto& f : syntax.functions)
+        for (size_t i = 0; i < f.parameters.size(); ++i)
+            if (isUntypedSampler(f.parameters[i].type)) {
+                auto k = slots.kind(slots.slot("p:" + functionKey(f) + ":" + std::to_string(i))).value_or(TextureKind::Texture2D);
+                const Token& t = tokens[f.parameters[i].typeToken];
+                edits.push_back({t.offset, t.offset + t.text.size(), dx9SamplerType(k)});
+            }
+    std::sort(edits.begin(), edits.end(), [](const TextEdit& a, const TextEdit& b) { return a.begin < b.begin; });
+    std::string hlsl;
+    hlsl.reserve(text.size());
+    size_t at = 0;
+    for (const auto& e : edits) {
+        if (e.begin < at) continue;  // nested in an earlier edit (annotations inside a blanked block)
+        hlsl.append(text, at, e.begin - at);
+        std::string original = text.substr(e.begin, e.end - e.begin);
+        // Keep the line count: the replacement goes first, then the original's newlines.
+        std::string replacement = e.replacement;
+        size_t replacementLen = replacement.size();
+        for (size_t k = 0; k < original.size(); ++k) {
+            char c = original[k];
+            if (c == '\n') replacement += '\n';
+            else if (k >= replacementLen) replacement += ' ';
+        }
+        hlsl += replacement;
+        at = e.end;
+    }
+    hlsl.append(text, at, std::string::npos);
+    out.hlsl = std::move(hlsl);
+    return out;
+}
+
+}  // namespace fxport::xlate

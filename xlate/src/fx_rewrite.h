@@ -1,0 +1,42 @@
+// Step 3a of the compiler: turn the effect into plain HLSL that glslang accepts, once per effect.
+//  - effect-framework syntax found by the parser is blanked (newlines kept, so line numbers hold);
+//  - DX9 samplers get their dimension: an untyped `sampler` used with texCUBE (directly or through a
+//    function parameter) becomes `samplerCUBE`; glslang would otherwise silently treat it as 2D;
+//  - every sampler gets its texture unit: register(sN) where given, otherwise the lowest free unit in
+//    declaration order.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "fx_syntax.h"
+
+namespace fxport::xlate {
+
+class SourceMap;
+
+struct EffectSampler {
+    std::string name;
+    TextureKind kind = TextureKind::Texture2D;
+    int unit = 0;
+    bool dx10 = false;
+    std::string textureParameter;  // DX9: Texture = <T>
+    SamplerStateDesc state;
+};
+
+struct RewrittenEffect {
+    std::string hlsl;      // the whole effect as plain HLSL (no entry wrapper yet)
+    bool dx9Samplers = false;  // compile with glslang's DX9-compatibility mode (tex2D, sampler2D ...)
+    std::vector<EffectSampler> samplers;
+    std::map<std::string, int> textureUnits;  // DX10 texture objects -> unit (register(tN) or order)
+};
+
+// Throws CompileError on contradictions (a sampler used as 2D and cube); sampler-state problems are
+// appended to `diagnostics`.
+RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& syntax, const SourceMap& map,
+                              std::vector<Diagnostic>& diagnostics);
+
+TextureKind textureKindOfType(const std::string& type);  // texture2D, samplerCUBE, Texture3D ... (2D default)
+
+}  // namespace fxport::xlate

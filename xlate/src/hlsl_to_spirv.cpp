@@ -1,0 +1,99 @@
+#include "hlsl_to_spirv.h"
+
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+#include <glslang/SPIRV/GlslangToSpv.h>
+
+#include <regex>
+
+#include "glslang_process.h"
+
+namespace fxport::xlate {
+
+namespace {
+
+EShLanguage languageOf(ShaderStage s) {
+    switch (s) {
+    case ShaderStage::Vertex: return EShLangVertex;
+    case ShaderStage::Pixel: return EShLangFragment;
+    case ShaderStage::Geometry: return EShLangGeometry;
+    }
+    return EShLangVertex;
+}
+
+// glslang logs "ERROR: <name>:<line>: '<token>' : <message>".
+std::vector<HlslError> parseLog(const std::string& log) {
+    std::vector<HlslError> errors;
+    static const std::regex re(R"(ERROR: [^:]*:(\d+): '([^']*)' : (.*))");
+    static const std::regex plain(R"(ERROR: (.*))");
+    size_t pos = 0;
+    while (pos < log.size()) {
+        size_t end = log.find('\n', pos);
+        if (end == std::string::npos) end = log.size();
+        std::string line = log.substr(pos, end - pos);
+        pos = end + 1;
+        std::smatch m;
+        if (std::regex_match(line, m, re)) {
+            HlslError e;
+            e.line = std::stoi(m[1].str());
+            e.token = m[2].str();
+            e.message = m[3].str();
+            while (!e.message.empty() && (e.message.back() == ' ' || e.message.back() == '\r')) e.message.pop_back();
+            if (!e.token.empty()) e.message = "'" + e.token + "' : " + e.message;
+            errors.push_back(e);
+        } else if (std::regex_match(line, m, plain)) {
+            std::string msg = m[1].str();
+            if (msg.find("compilation errors") != std::string::npos || msg.find("HLSL parsing failed") != std::string::npos) continue;
+            errors.push_back({0, {}, msg});
+        }
+    }
+    return errors;
+}
+
+}  // namespace
+
+SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
+    ensureGlslangInitialized();
+    SpirvModule out;
+    EShLanguage lang = languageOf(request.stage);
+    glslang::TShader shader(lang);
+    const char* text = request.source->c_str();
+    int length = static_cast<int>(request.source->size());
+    const char* name = "effect";
+    shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
+    shader.setEntryPoint(request.entryPoint.c_str());
+    shader.setSourceEntryPoint(request.entryPoint.c_str());
+    shader.setEnvInput(glslang::EShSourceHlsl, lang, glslang::EShClientVulkan, 100);
+    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
+    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
+    // Emits the HLSL semantic of every stage input/output (UserSemantic), which spirv_to_glsl uses
+    // to give varyings their fixed locations.
+    shader.setEnvTargetHlslFunctionality1();
+    shader.setHlslIoMapping(true);
+    auto messages = static_cast<EShMessages>(EShMsgReadHlsl | EShMsgSpvRules | EShMsgVulkanRules |
+                                             (request.dx9Compatible ? int(EShMsgHlslDX9Compatible) : 0));
+    if (!shader.parse(GetDefaultResources(), 100, false, messages)) {
+        out.errors = parseLog(shader.getInfoLog());
+        if (out.errors.empty()) out.errors.push_back({0, {}, shader.getInfoLog()});
+        return out;
+    }
+    glslang::TProgram program;
+    program.addShader(&shader);
+    if (!program.link(messages)) {
+        out.errors = parseLog(program.getInfoLog());
+        if (out.errors.empty()) out.errors.push_back({0, {}, program.getInfoLog()});
+        return out;
+    }
+    glslang::SpvOptions options;
+    options.disableOptimizer = !request.optimize;  // HLSL legalisation runs in both cases
+    options.optimizeSize = false;
+    options.validate = false;
+    spv::SpvBuildLogger logger;
+    glslang::GlslangToSpv(*program.getIntermediate(lang), out.words, &logger, &options);
+    std::string msgs = logger.getAllMessages();
+    if (msgs.find("error") != std::string::npos) out.errors.push_back({0, {}, msgs});
+    else out.warnings = msgs;
+    return out;
+}
+
+}  // namespace fxport::xlate

@@ -1,0 +1,35 @@
+// Step 4a: HLSL -> SPIR-V. The only file that calls glslang's compiler, so that DXC or
+// vkd3d-shader can replace it (glslang's HLSL front end is deprecated since April 2026).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "fxport/xlate/compiled_effect.h"
+
+namespace fxport::xlate {
+
+struct HlslError {
+    int line = 0;          // line in `source` (1-based), 0 if unknown
+    std::string token;     // offending token, when the front end names one
+    std::string message;
+};
+
+struct SpirvModule {
+    std::vector<std::uint32_t> words;
+    std::vector<HlslError> errors;  // non-empty = failed
+    std::string warnings;
+};
+
+struct HlslToSpirvRequest {
+    const std::string* source = nullptr;
+    ShaderStage stage = ShaderStage::Vertex;
+    std::string entryPoint;
+    bool dx9Compatible = false;  // tex2D/sampler2D (DX9 samplers) vs Texture2D.Sample (DX10)
+    bool optimize = true;        // legalisation always runs; this adds the performance passes
+};
+
+SpirvModule hlslToSpirv(const HlslToSpirvRequest& request);
+
+}  // namespace fxport::xlate

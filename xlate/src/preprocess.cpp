@@ -1,0 +1,268 @@
+#include "preprocess.h"
+
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <regex>
+
+#include "glslang_process.h"
+#include "text_util.h"
+
+namespace fs = std::filesystem;
+
+namespace fxport::xlate {
+
+void checkIsText(const std::string& source, const std::string& displayPath) {
+    int line = 1;
+    size_t i = 0;
+    auto fail = [&](const std::string& what) {
+        Diagnostic d;
+        d.id = diag::kNotText;
+        d.message = "the file is not HLSL text (" + what + ")";
+        d.location = {displayPath, line, 0};
+        throw CompileError({d});
+    };
+    while (i < source.size()) {
+        auto c = static_cast<unsigned char>(source[i]);
+        if (c == '\n') ++line;
+        if (c == 0) fail("it contains a NUL byte");
+        if (c < 0x80) {
+            if (c < 0x20 && c != '\n' && c != '\r' && c != '\t' && c != '\f' && c != '\v') fail("it contains control characters");
+            ++i;
+            continue;
+        }
+        int extra = (c & 0xE0) == 0xC0 ? 1 : (c & 0xF0) == 0xE0 ? 2 : (c & 0xF8) == 0xF0 ? 3 : -1;
+        if (extra < 0 || i + static_cast<size_t>(extra) >= source.size() + (extra == 0 ? 1 : 0)) fail("it is not valid UTF-8");
+        for (int k = 1; k <= extra; ++k)
+            if (i + static_cast<size_t>(k) >= source.size() || (static_cast<unsigned char>(source[i + static_cast<size_t>(k)]) & 0xC0) != 0x80)
+                fail("it is not valid UTF-8");
+        i += static_cast<size_t>(extra) + 1;
+    }
+}
+
+namespace {
+
+// Finds `relative` under `dir`, exactly or else component by component ignoring case.
+std::optional<fs::path> findCaseInsensitive(const fs::path& dir, const fs::path& relative) {
+    fs::path exact = dir / relative;
+    std::error_code ec;
+    if (fs::is_regular_file(exact, ec)) return exact;
+    fs::path cur = dir;
+    for (const auto& part : relative) {
+        if (part == "." || part.empty()) continue;
+        if (part == "..") {
+            cur = cur / "..";
+            continue;
+        }
+        fs::path next = cur / part;
+        if (!fs::exists(next, ec)) {
+            bool found = false;
+            for (const auto& entry : fs::directory_iterator(cur, ec)) {
+                if (iequals(entry.path().filename().string(), part.string())) {
+                    next = entry.path();
+                    found = true;
+                    break;
+                }
+            }
+            if (!found) return std::nullopt;
+        }
+        cur = next;
+    }
+    if (fs::is_regular_file(cur, ec)) return cur;
+    return std::nullopt;
+}
+
+bool isUnder(const fs::path& file, const fs::path& root) {
+    auto f = file.lexically_normal();
+    auto r = root.lexically_normal();
+    auto mismatch = std::mismatch(r.begin(), r.end(), f.begin(), f.end());
+    return mismatch.first == r.end() || (std::next(mismatch.first) == r.end() && mismatch.first->empty());
+}
+
+class RestrictedIncluder final : public glslang::TShader::Includer {
+public:
+    struct Root {
+        fs::path absolute;   // canonical
+        std::string display; // as the user named it
+    };
+
+    RestrictedIncluder(std::vector<Root> roots, std::string rootDisplay, fs::path rootAbsolute)
+        : roots_(std::move(roots)) {
+        displayToAbsolute_[rootDisplay] = std::move(rootAbsolute);
+    }
+
+    IncludeResult* includeLocal(const char* header, const char* includer, size_t depth) override {
+        return resolve(header, includer, depth);
+    }
+    IncludeResult* includeSystem(const char* header, const char* includer, size_t depth) override {
+        return resolve(header, includer, depth);
+    }
+    void releaseInclude(IncludeResult* result) override {
+        if (result) {
+            delete static_cast<std::string*>(result->userData);
+            delete result;
+        }
+    }
+
+    // Why each failed include failed, keyed by header name as written.
+    std::map<std::string, std::pair<const char*, std::string>> failures;
+    std::vector<std::pair<std::string, std::string>> loaded;  // (display, text)
+    std::vector<std::string> loadedAbsolute;
+
+private:
+    IncludeResult* resolve(const char* headerC, const char* includerC, size_t depth) {
+        std::string header = headerC;
+        std::string includer = includerC ? includerC : "";
+        auto absIt = displayToAbsolute_.find(includer);
+        fs::path includerAbs = absIt != displayToAbsolute_.end() ? absIt->second : fs::path();
+
+        // Search order: the including file's folder, then each root (effect folder, include dirs).
+        std::vector<std::pair<fs::path, std::string>> searchDirs;  // (absolute dir, display dir)
+        if (!includerAbs.empty()) searchDirs.push_back({includerAbs.parent_path(), fs::path(includer).parent_path().string()});
+        for (const auto& r : roots_) searchDirs.push_back({r.absolute, r.display});
+
+        std::optional<fs::path> found;
+        std::string display;
+        for (const auto& [dir, displayDir] : searchDirs) {
+            if (fs::path(header).is_absolute()) {
+                std::error_code ec;
+                if (fs::is_regular_file(header, ec)) found = fs::path(header);
+            } else {
+                found = findCaseInsensitive(dir, header);
+            }
+            if (found) {
+                std::error_code ec;
+                fs::path rel = fs::relative(*found, dir, ec);
+                display = (fs::path(displayDir) / (ec ? fs::path(header) : rel)).lexically_normal().string();
+                break;
+            }
+        }
+        if (!found) {
+            failures[header] = {diag::kIncludeNotFound, "cannot find include file '" + header + "' in the effect's folder or the include folders"};
+            return nullptr;
+        }
+        std::error_code ec;
+        fs::path canonical = fs::weakly_canonical(*found, ec);
+        bool allowed = false;
+        for (const auto& r : roots_)
+            if (isUnder(canonical, r.absolute)) allowed = true;
+        if (!allowed) {
+            failures[header] = {diag::kIncludeOutside, "include file '" + header +
+                                "' is outside the effect's folder and the include folders; pass its folder with -I to allow it"};
+            return nullptr;
+        }
+        // Cycle: the chain of includers is known from the depth glslang reports.
+        chain_.resize(depth);
+        if (depth >= 1) chain_[depth - 1] = includerAbs.empty() ? fs::path() : fs::weakly_canonical(includerAbs, ec);
+        for (const auto& p : chain_)
+            if (p == canonical) {
+                failures[header] = {diag::kIncludeCycle, "include cycle: '" + header + "' includes itself (directly or through other files)"};
+                return nullptr;
+            }
+        auto text = readFile(canonical.string());
+        if (!text) {
+            failures[header] = {diag::kFileUnreadable, "cannot read include file '" + header + "'"};
+            return nullptr;
+        }
+        displayToAbsolute_[display] = canonical;
+        loaded.push_back({display, *text});
+        loadedAbsolute.push_back(canonical.string());
+        auto* owned = new std::string(std::move(*text));
+        return new IncludeResult(display, owned->data(), owned->size(), owned);
+    }
+
+    std::vector<Root> roots_;
+    std::map<std::string, fs::path> displayToAbsolute_;
+    std::vector<fs::path> chain_;
+};
+
+}  // namespace
+
+PreprocessedEffect preprocessEffect(const std::string& source, const std::string& displayPath,
+                                    const std::string& absolutePath, const CompileOptions& options) {
+    ensureGlslangInitialized();
+    checkIsText(source, displayPath);
+
+    std::vector<RestrictedIncluder::Root> roots;
+    std::error_code ec;
+    fs::path rootAbs = fs::weakly_canonical(fs::absolute(absolutePath, ec), ec);
+    roots.push_back({rootAbs.parent_path(), fs::path(displayPath).parent_path().string()});
+    for (const auto& dir : options.includeDirs)
+        roots.push_back({fs::weakly_canonical(fs::absolute(dir, ec), ec), dir});
+
+    RestrictedIncluder includer(roots, displayPath, rootAbs);
+    std::string preamble = "#define FXPORT 1\n";
+    for (const auto& [name, value] : options.defines) preamble += "#define " + name + " " + value + "\n";
+
+    glslang::TShader shader(EShLangFragment);
+    const char* text = source.c_str();
+    const char* name = displayPath.c_str();
+    int length = static_cast<int>(source.size());
+    shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
+    shader.setEnvInput(glslang::EShSourceHlsl, EShLangFragment, glslang::EShClientOpenGL, 100);
+    shader.setPreamble(preamble.c_str());
+    std::string output;
+    auto messages = static_cast<EShMessages>(EShMsgReadHlsl | EShMsgOnlyPreprocessor);
+    bool ok = shader.preprocess(GetDefaultResources(), 100, ENoProfile, false, false, messages, &output, includer);
+
+    PreprocessedEffect result;
+    result.map.addFileText(displayPath, source);
+    for (const auto& [file, content] : includer.loaded) result.map.addFileText(file, content);
+    result.includedFiles = includer.loadedAbsolute;
+    if (!ok) {
+        // glslang reports "ERROR: file:line: 'token' : message"; lines here are ORIGINAL lines.
+        std::vector<Diagnostic> diags;
+        static const std::regex re(R"(ERROR: (.*):(\d+): (.*))");
+        std::string log = shader.getInfoLog();
+        size_t pos = 0;
+        while (pos < log.size()) {
+            size_t end = log.find('\n', pos);
+            if (end == std::string::npos) end = log.size();
+            std::string line = log.substr(pos, end - pos);
+            pos = end + 1;
+            std::smatch m;
+            if (!std::regex_match(line, m, re)) continue;
+            SourceLocation where{m[1].str(), std::stoi(m[2].str()), 0};
+            std::string msg = m[3].str();
+            const char* id = diag::kPreprocessor;
+            auto inc = msg.find("Could not process include directive for header name: ");
+            if (inc != std::string::npos) {
+                std::string header(trim(msg.substr(inc + 55)));
+                auto f = includer.failures.find(header);
+                if (f != includer.failures.end()) {
+                    id = f->second.first;
+                    msg = f->second.second;
+                }
+            }
+            Diagnostic d = result.map.makeAt(Severity::Error, id, msg, where);
+            std::string src = d.sourceLine;
+            auto tokStart = msg.find('\'');
+            if (tokStart != std::string::npos) {
+                auto tokEnd = msg.find('\'', tokStart + 1);
+                std::string tok = msg.substr(tokStart + 1, tokEnd - tokStart - 1);
+                std::string orig = result.map.originalLine(where.file, where.line);
+                if (!tok.empty() && tokEnd != std::string::npos) {
+                    auto at = orig.find(tok);
+                    (void)at;
+                }
+            }
+            diags.push_back(std::move(d));
+        }
+        if (diags.empty()) {
+            Diagnostic d;
+            d.id = diag::kPreprocessor;
+            d.message = "preprocessing failed: " + std::string(trim(log));
+            d.location = {displayPath, 0, 0};
+            diags.push_back(d);
+        }
+        throw CompileError(std::move(diags));
+    }
+    result.text = result.map.build(output, displayPath);
+    return result;
+}
+
+}  // namespace fxport::xlate

@@ -1,0 +1,114 @@
+#include "source_map.h"
+
+#include <cstdlib>
+#include <sstream>
+
+#include "text_util.h"
+
+namespace fxport::xlate {
+
+int SourceMap::fileIndex(const std::string& file) {
+    for (size_t i = 0; i < fileOrder_.size(); ++i)
+        if (fileOrder_[i] == file) return static_cast<int>(i);
+    fileOrder_.push_back(file);
+    return static_cast<int>(fileOrder_.size() - 1);
+}
+
+std::string SourceMap::build(const std::string& preprocessed, const std::string& rootFile) {
+    lines_.clear();
+    int current = fileIndex(rootFile);
+    int nextLine = 1;
+    std::string out;
+    out.reserve(preprocessed.size());
+    size_t pos = 0;
+    while (pos <= preprocessed.size()) {
+        size_t end = preprocessed.find('\n', pos);
+        if (end == std::string::npos) end = preprocessed.size();
+        std::string_view line(preprocessed.data() + pos, end - pos);
+        std::string_view t = trim(line);
+        if (t.rfind("#line", 0) == 0) {
+            // `#line N "file"`: the NEXT line is line N of file.
+            std::string rest(trim(t.substr(5)));
+            char* after = nullptr;
+            long n = std::strtol(rest.c_str(), &after, 10);
+            std::string_view tail = trim(std::string_view(after));
+            if (tail.size() >= 2 && tail.front() == '"') current = fileIndex(std::string(tail.substr(1, tail.find('"', 1) - 1)));
+            lines_.push_back({current, 0});
+            nextLine = static_cast<int>(n);
+            out.append("\n");
+        } else {
+            lines_.push_back({current, nextLine++});
+            out.append(line);
+            out.append("\n");
+        }
+        if (end == preprocessed.size()) break;
+        pos = end + 1;
+    }
+    return out;
+}
+
+void SourceMap::addFileText(const std::string& file, std::string text) {
+    std::vector<std::string> lines;
+    std::string cur;
+    for (char c : text) {
+        if (c == '\n') {
+            if (!cur.empty() && cur.back() == '\r') cur.pop_back();
+            lines.push_back(cur);
+            cur.clear();
+        } else {
+            cur += c;
+        }
+    }
+    lines.push_back(cur);
+    fileLines_[file] = std::move(lines);
+}
+
+std::string SourceMap::originalLine(const std::string& file, int line) const {
+    auto it = fileLines_.find(file);
+    if (it == fileLines_.end() || line < 1 || line > static_cast<int>(it->second.size())) return {};
+    return std::string(trim(it->second[static_cast<size_t>(line - 1)]));
+}
+
+SourceLocation SourceMap::locate(int line, int column, const std::string& token) const {
+    SourceLocation loc;
+    if (line < 1 || line > static_cast<int>(lines_.size())) {
+        loc.file = fileOrder_.empty() ? std::string() : fileOrder_[0];
+        return loc;
+    }
+    const LineOrigin& o = lines_[static_cast<size_t>(line - 1)];
+    loc.file = fileOrder_[static_cast<size_t>(o.fileIndex)];
+    loc.line = o.line;
+    auto it = fileLines_.find(loc.file);
+    if (it != fileLines_.end() && o.line >= 1 && o.line <= static_cast<int>(it->second.size())) {
+        const std::string& text = it->second[static_cast<size_t>(o.line - 1)];
+        size_t at = token.empty() ? std::string::npos : text.find(token);
+        if (at != std::string::npos) {
+            loc.column = static_cast<int>(at) + 1;
+        } else if (column > 0) {
+            loc.column = column;
+        } else {
+            size_t first = text.find_first_not_of(" \t");
+            loc.column = first == std::string::npos ? 1 : static_cast<int>(first) + 1;
+        }
+    } else {
+        loc.column = column;
+    }
+    return loc;
+}
+
+Diagnostic SourceMap::make(Severity severity, const char* id, std::string message, int line, int column,
+                           const std::string& token) const {
+    return makeAt(severity, id, std::move(message), locate(line, column, token));
+}
+
+Diagnostic SourceMap::makeAt(Severity severity, const char* id, std::string message, SourceLocation where) const {
+    Diagnostic d;
+    d.severity = severity;
+    d.id = id;
+    d.message = std::move(message);
+    d.sourceLine = originalLine(where.file, where.line);
+    d.location = std::move(where);
+    return d;
+}
+
+}  // namespace fxport::xlate

@@ -1,0 +1,198 @@
+#include "spirv_to_glsl.h"
+
+#include <spirv_cross/spirv_glsl.hpp>
+
+#include <algorithm>
+#include <set>
+
+#include "entry_wrapper.h"
+#include "text_util.h"
+
+namespace fxport::xlate {
+
+int VaryingLocations::locationOf(const std::string& semantic) {
+    auto [base, index] = splitSemantic(semantic);
+    // The fixed table: identical in every effect, so shaders of different effects link.
+    if (base == "TEXCOORD" && index < 16) return index;
+    if (base == "COLOR" && index < 4) return 16 + index;
+    if (base == "NORMAL" && index < 2) return 20 + index;
+    if (base == "TANGENT" && index == 0) return 22;
+    if (base == "BINORMAL" && index == 0) return 23;
+    if (base == "FOG") return 24;
+    if (base == "POSITION" && index >= 1 && index <= 2) return 24 + index;
+    if (base == "BLENDWEIGHT" && index == 0) return 27;
+    if (base == "BLENDINDICES" && index == 0) return 28;
+    auto it = custom_.find(semantic);
+    if (it != custom_.end()) return it->second;
+    // Other names: 29..31 first, then whatever the fixed table leaves unused in this effect.
+    std::set<int> used;
+    for (const auto& [k, v] : custom_) used.insert(v);
+    int loc = 29;
+    while (used.count(loc)) ++loc;
+    custom_[semantic] = loc;
+    return loc;
+}
+
+namespace {
+
+TextureKind kindOfImage(const spirv_cross::SPIRType& t) {
+    switch (t.image.dim) {
+    case spv::Dim1D: return TextureKind::Texture1D;
+    case spv::Dim3D: return TextureKind::Texture3D;
+    case spv::DimCube: return TextureKind::TextureCube;
+    default: return TextureKind::Texture2D;
+    }
+}
+
+}  // namespace
+
+GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, const RewrittenEffect& effect,
+                       VaryingLocations& varyings) {
+    GlslShader out;
+    try {
+        spirv_cross::CompilerGLSL compiler(std::move(spirv));
+        compiler.build_dummy_sampler_for_combined_images();
+        compiler.build_combined_image_samplers();
+        spirv_cross::ShaderResources res = compiler.get_shader_resources();
+
+        // ---- uniform blocks
+        for (const auto& ubo : res.uniform_buffers) {
+            std::string blockName = compiler.get_name(ubo.base_type_id);
+            compiler.unset_decoration(ubo.id, spv::DecorationDescriptorSet);
+            if (blockName == kInternalBlock) {
+                compiler.set_decoration(ubo.id, spv::DecorationBinding, 1);
+                continue;
+            }
+            if (blockName != "$Global") {
+                // User cbuffers share binding 0's numbering space after the internal block.
+                compiler.set_decoration(ubo.id, spv::DecorationBinding, 2 + static_cast<uint32_t>(&ubo - res.uniform_buffers.data()));
+                continue;
+            }
+            compiler.set_decoration(ubo.id, spv::DecorationBinding, 0);
+            const spirv_cross::SPIRType& type = compiler.get_type(ubo.base_type_id);
+            out.globalSize = static_cast<int>(compiler.get_declared_struct_size(type));
+            for (uint32_t i = 0; i < type.member_types.size(); ++i) {
+                UniformMember m;
+                m.name = compiler.get_member_name(ubo.base_type_id, i);
+                m.offset = static_cast<int>(compiler.type_struct_member_offset(type, i));
+                m.size = static_cast<int>(compiler.get_declared_struct_member_size(type, i));
+                const auto& mt = compiler.get_type(type.member_types[i]);
+                if (mt.columns > 1) {
+                    m.matrixStride = static_cast<int>(compiler.type_struct_member_matrix_stride(type, i));
+                    // SPIR-V sees HLSL's matrix transposed: RowMajor there is HLSL column_major.
+                    m.hlslRowMajor = !compiler.has_member_decoration(ubo.base_type_id, i, spv::DecorationRowMajor);
+                }
+                if (!mt.array.empty()) m.arrayStride = static_cast<int>(compiler.type_struct_member_array_stride(type, i));
+                out.globalMembers.push_back(m);
+            }
+            for (const auto& range : compiler.get_active_buffer_ranges(ubo.id)) {
+                out.membersRead.push_back(compiler.get_member_name(ubo.base_type_id, range.index));
+                out.rangesRead.push_back({static_cast<int>(range.offset), static_cast<int>(range.range)});
+            }
+        }
+
+        // ---- samplers: DX9 combined samplers keep their names; DX10 pairs get one per pair
+        std::set<int> usedUnits;
+        for (const auto& s : effect.samplers)
+            if (!s.dx10) usedUnits.insert(s.unit);
+        for (const auto& [name, unit] : effect.textureUnits) usedUnits.insert(unit);
+        for (const auto& img : res.sampled_images) {
+            std::string name = compiler.get_name(img.id);
+            bool combined = false;
+            for (const auto& c : compiler.get_combined_image_samplers()) combined |= c.combined_id == img.id;
+            if (combined) continue;
+            SamplerBinding b;
+            b.glslName = name;
+            b.samplerName = name;
+            b.kind = kindOfImage(compiler.get_type(img.type_id));
+            for (const auto& s : effect.samplers)
+                if (s.name == name) {
+                    b.unit = s.unit;
+                    b.textureParameter = s.textureParameter;
+                    b.state = s.state;
+                }
+            compiler.unset_decoration(img.id, spv::DecorationDescriptorSet);
+            compiler.set_decoration(img.id, spv::DecorationBinding, static_cast<uint32_t>(b.unit));
+            out.samplers.push_back(b);
+        }
+        std::set<int> pairUnits;
+        for (const auto& c : compiler.get_combined_image_samplers()) {
+            std::string image = compiler.get_name(c.image_id);
+            std::string sampler = compiler.get_name(c.sampler_id);
+            SamplerBinding b;
+            b.textureParameter = image;
+            b.kind = kindOfImage(compiler.get_type(compiler.get_type_from_variable(c.image_id).self));
+            for (const auto& s : effect.samplers)
+                if (s.name == sampler) {
+                    b.samplerName = sampler;
+                    b.state = s.state;
+                }
+            auto unit = effect.textureUnits.find(image);
+            int u = unit != effect.textureUnits.end() ? unit->second : 0;
+            if (pairUnits.count(u)) {  // the same texture with a second sampler: next free unit
+                u = 0;
+                while (usedUnits.count(u) || pairUnits.count(u)) ++u;
+            }
+            pairUnits.insert(u);
+            b.unit = u;
+            b.glslName = "fxport_" + image + "_" + (sampler.empty() ? std::string("default") : sampler);
+            compiler.set_name(c.combined_id, b.glslName);
+            compiler.set_decoration(c.combined_id, spv::DecorationBinding, static_cast<uint32_t>(u));
+            out.samplers.push_back(b);
+        }
+
+        // ---- interface locations
+        auto semanticOf = [&](spirv_cross::ID id) { return toUpper(compiler.get_decoration_string(id, spv::DecorationUserSemantic)); };
+        if (stage == ShaderStage::Vertex) {
+            std::vector<const spirv_cross::Resource*> inputs;
+            for (const auto& r : res.stage_inputs) inputs.push_back(&r);
+            std::sort(inputs.begin(), inputs.end(), [&](auto* a, auto* b) {
+                return compiler.get_decoration(a->id, spv::DecorationLocation) < compiler.get_decoration(b->id, spv::DecorationLocation);
+            });
+            int loc = 0;
+            for (const auto* r : inputs) {
+                const auto& t = compiler.get_type(r->type_id);
+                VertexInput vi;
+                vi.semantic = semanticOf(r->id);
+                auto [base, index] = splitSemantic(vi.semantic);
+                vi.semantic = base + std::to_string(index);
+                vi.location = loc;
+                vi.components = static_cast<int>(t.vecsize);
+                vi.isInteger = t.basetype != spirv_cross::SPIRType::Float && t.basetype != spirv_cross::SPIRType::Half &&
+                               t.basetype != spirv_cross::SPIRType::Double;
+                compiler.set_decoration(r->id, spv::DecorationLocation, static_cast<uint32_t>(loc));
+                loc += static_cast<int>(std::max(1u, t.columns));
+                out.inputs.push_back(vi);
+            }
+        } else {
+            for (const auto& r : res.stage_inputs) {
+                std::string sem = semanticOf(r.id);
+                if (!sem.empty()) compiler.set_decoration(r.id, spv::DecorationLocation, static_cast<uint32_t>(varyings.locationOf(sem)));
+            }
+        }
+        if (stage != ShaderStage::Pixel) {
+            for (const auto& r : res.stage_outputs) {
+                std::string sem = semanticOf(r.id);
+                if (!sem.empty()) compiler.set_decoration(r.id, spv::DecorationLocation, static_cast<uint32_t>(varyings.locationOf(sem)));
+            }
+        } else {
+            for (const auto& r : res.stage_outputs)
+                out.outputTargets = std::max(out.outputTargets, static_cast<int>(compiler.get_decoration(r.id, spv::DecorationLocation)) + 1);
+        }
+
+        spirv_cross::CompilerGLSL::Options options = compiler.get_common_options();
+        options.version = 450;
+        options.es = false;
+        options.separate_shader_objects = true;  // program pipelines: any VS with any PS
+        options.vertex.fixup_clipspace = false;  // D3D's z in [0, w] is kept: the runtime uses glClipControl
+        options.vertex.flip_vert_y = false;      // and an upper-left origin, so no flip either
+        compiler.set_common_options(options);
+        out.glsl = compiler.compile();
+        out.writesDepth = out.glsl.find("gl_FragDepth") != std::string::npos;
+    } catch (const std::exception& e) {
+        out.error = e.what();
+    }
+    return out;
+}
+
+}  // namespace fxport::xlate
