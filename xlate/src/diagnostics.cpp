@@ -11,7 +11,10 @@ std::string Diagnostic::format() const {
     }
     out += severity == Severity::Error ? ": error " : ": warning ";
     out += id + ": " + message;
-    if (!sourceLine.empty()) out += "\n    " + sourceLine;
+    if (!sourceLine.empty()) {
+        size_t first = sourceLine.find_first_not_of(" \t");
+        if (first != std::string::npos) out += "\n    " + sourceLine.substr(first);
+    }
     return out;
 }
 

@@ -86,8 +86,10 @@ ParameterType objectType(const std::string& type) {
 struct ShaderKey {
     ShaderStage stage;
     std::string profile, entry, arguments;
+    bool nextToGeometryShader;
     bool operator<(const ShaderKey& o) const {
-        return std::tie(stage, profile, entry, arguments) < std::tie(o.stage, o.profile, o.entry, o.arguments);
+        return std::tie(stage, profile, entry, arguments, nextToGeometryShader) <
+               std::tie(o.stage, o.profile, o.entry, o.arguments, o.nextToGeometryShader);
     }
 };
 
@@ -113,6 +115,7 @@ private:
     std::map<ShaderKey, int> compiled_;  // -> index in effect_.shaders, -1 = failed
     std::map<int, GlslShader> reflections_;
     VaryingLocations varyings_;
+    bool passHasGeometryShader_ = false;  // of the pass being built
 
     Diagnostic at(Severity s, const char* id, const std::string& message, size_t token) const {
         const Token& t = syntax_.tokens[std::min(token, syntax_.tokens.size() - 1)];
@@ -267,7 +270,7 @@ int EffectBuilder::compileShader(const FxShaderExpr& expr, ShaderStage expected,
     if (expected == ShaderStage::Pixel && profile->major == 1) {
         // ps_1_x HLSL is fine: it is compiled like ps_2_0 (same D3D9 rules).
     }
-    ShaderKey key{expected, toLower(expr.profile), expr.entry, expr.arguments};
+    ShaderKey key{expected, toLower(expr.profile), expr.entry, expr.arguments, passHasGeometryShader_};
     if (auto it = compiled_.find(key); it != compiled_.end()) return it->second;
     compiled_[key] = -1;
 
@@ -276,12 +279,12 @@ int EffectBuilder::compileShader(const FxShaderExpr& expr, ShaderStage expected,
         error(diag::kMissingEntry, "entry point '" + expr.entry + "' is not a function of this effect", expr.token);
         return -1;
     }
-    std::string source = rewritten_.hlsl;
+    std::string source = expected == ShaderStage::Geometry ? rewritten_.hlslForGeometryShader(expr.entry) : rewritten_.hlsl;
     std::string entryName = expr.entry;
     bool wrapped = expected != ShaderStage::Geometry;
     EntryWrapper wrapper;
     if (wrapped) {
-        wrapper = buildEntryWrapper(syntax_, *entry, *profile, expr.arguments);
+        wrapper = buildEntryWrapper(syntax_, *entry, *profile, expr.arguments, passHasGeometryShader_);
         if (!wrapper.error.empty()) {
             error(diag::kBadEntrySignature, wrapper.error, entry->token);
             return -1;
@@ -406,9 +409,18 @@ void EffectBuilder::buildTechniques() {
             pass.name = p.name;
             pass.annotations = p.annotations;
             pass.declaredAt = pre_.map.locate(syntax_.tokens[p.token].line, syntax_.tokens[p.token].column);
+            bool fixedFunction = false;
+            passHasGeometryShader_ = false;
+            for (const auto& a : p.assignments) {
+                std::string n = toLower(a.name);
+                if ((n == "geometryshader" || n == "setgeometryshader") &&
+                    parseShaderExpr(syntax_, a.value).kind != FxShaderExpr::Kind::Null)
+                    passHasGeometryShader_ = true;
+            }
             for (const auto& a : p.assignments) {
                 StateResult r = translatePassAssignment(a, stateContext, pass.states);
                 if (r == StateResult::Failed) pass.valid = false;
+                if (r == StateResult::Ignored) fixedFunction = true;
                 if (r != StateResult::NotAState) continue;
                 std::string n = toLower(a.name);
                 ShaderStage stage = n.find("vertex") != std::string::npos ? ShaderStage::Vertex
@@ -427,6 +439,18 @@ void EffectBuilder::buildTechniques() {
                                        : stage == ShaderStage::Pixel ? pass.pixelShader
                                                                      : pass.geometryShader;
                 if (!resolveShader(e, stage, target, a.nameToken)) pass.valid = false;
+            }
+            if (pass.valid && pass.vertexShader.shaders.empty() && pass.pixelShader.shaders.empty()) {
+                // A state-only pass (restoring states) is fine to Apply(); one that relies on the
+                // fixed-function pipeline (Lighting, TextureStage states ...) cannot draw anything.
+                if (fixedFunction) {
+                    error(diag::kUnsupported, "pass '" + p.name + "' uses the fixed-function pipeline (no shaders), which is not supported", p.token);
+                    pass.valid = false;
+                } else {
+                    effect_.diagnostics.push_back(at(Severity::Warning, diag::kUnsupported,
+                                                     "pass '" + p.name + "' has no shaders: Apply() sets its render states, but drawing with it needs shaders",
+                                                     p.token));
+                }
             }
             tech.passes.push_back(std::move(pass));
         }
@@ -506,7 +530,7 @@ CompiledEffect compile(const std::string& source, const std::string& displayPath
         Diagnostic d;
         d.id = diag::kEmptyEffect;
         d.message = "the effect has no technique; XNA needs at least one technique with a pass to draw with";
-        d.location = {displayPath, 0, 0};
+        d.location = {displayPath, std::max(1, pre.map.locate(static_cast<int>(syntax.tokens.back().line)).line), 1};
         throw CompileError({d});
     }
     RewrittenEffect rewritten = rewriteEffect(pre.text, syntax, pre.map, effect.diagnostics);

@@ -234,6 +234,7 @@ json techniquesJson(const CompiledEffect& effect, bool withLocation) {
             for (const auto& s : p.states) {
                 json sj{{"state", kState.of(s.state)}, {"value", s.state == RenderState::BlendFactor ? json(s.value) : json(s.value[0])}};
                 if (s.index) sj["index"] = s.index;
+                if (!s.parameter.empty()) sj["parameter"] = s.parameter;
                 std::string name = valueName(s);
                 if (!name.empty()) sj["is"] = name;
                 if (withLocation) sj["where"] = toJson(s.where);
@@ -356,6 +357,7 @@ CompiledEffect deserializeEffect(const std::string& text, const std::string& nam
                     StateAssignment a;
                     a.state = kState.parse(s.at("state"));
                     a.index = s.value("index", 0);
+                    a.parameter = s.value("parameter", std::string());
                     if (s.at("value").is_array()) a.value = s["value"].get<std::array<double, 4>>();
                     else a.value = {s["value"].get<double>(), 0, 0, 0};
                     if (s.contains("where")) a.where = locationFrom(s["where"]);

@@ -142,7 +142,7 @@ bool has(const std::vector<std::string>& v, const char* s) {
 }  // namespace
 
 EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& entry, const ShaderProfile& profile,
-                               const std::string& arguments) {
+                               const std::string& arguments, bool nextToGeometryShader) {
     EntryWrapper w;
     const bool vertex = profile.stage == ShaderStage::Vertex;
     Flattener flat(syntax);
@@ -229,9 +229,14 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
         } else if (isIntegerScalar(leaf.scalar)) {
             addParam("nointerpolation " + vectorType(leaf.scalar == "bool" ? "uint" : leaf.scalar, leaf.components) + " " + name + " : " + sem);
             fill << "    " << leaf.access << " = " << name << ";\n";
+        } else if (nextToGeometryShader) {
+            std::string interp;
+            for (const auto& im : leaf.interpolation) interp += im + " ";
+            addParam(interp + vectorType(leaf.scalar, leaf.components) + " " + name + " : " + sem);
+            fill << "    " << leaf.access << " = " << name << ";\n";
         } else {
             std::string interp;
-            for (const auto& m : leaf.interpolation) interp += m + " ";
+            for (const auto& im : leaf.interpolation) interp += im + " ";
             addParam(interp + "float4 " + name + " : " + sem);
             fill << "    " << leaf.access << " = " << narrow(name, leaf.components) << ";\n";
         }
@@ -243,15 +248,20 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
         const std::string& b = leaf.semanticBase;
         std::string name = "o" + std::to_string(m++);
         if (vertex) {
-            if ((b == "POSITION" && leaf.semanticIndex == 0) || b == "SV_POSITION") {
+            if ((b == "POSITION" && leaf.semanticIndex == 0 && !nextToGeometryShader) || b == "SV_POSITION") {
                 outStruct << "    float4 " << name << " : SV_Position;\n";
                 copyOut << "    o." << name << " = " << widen(leaf.access, leaf.components) << ";\n";
                 if (leaf.components < 4) copyOut << "    o." << name << ".w = 1;\n";
                 positionMember = name;
-            } else if (b == "PSIZE") {
+            } else if (b == "PSIZE" && !nextToGeometryShader) {
                 continue;  // point size: points are drawn with the device's size
             } else if (b.rfind("SV_", 0) == 0) {
                 outStruct << "    " << vectorType(leaf.scalar, leaf.components) << " " << name << " : " << b << leaf.semanticIndex << ";\n";
+                copyOut << "    o." << name << " = " << leaf.access << ";\n";
+            } else if (nextToGeometryShader) {
+                std::string interp;
+                for (const auto& im : leaf.interpolation) interp += im + " ";
+                outStruct << "    " << interp << vectorType(leaf.scalar, leaf.components) << " " << name << " : " << b << leaf.semanticIndex << ";\n";
                 copyOut << "    o." << name << " = " << leaf.access << ";\n";
             } else if (isIntegerScalar(leaf.scalar)) {
                 outStruct << "    nointerpolation " << vectorType(leaf.scalar == "bool" ? "uint" : leaf.scalar, leaf.components) << " " << name
@@ -289,7 +299,7 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
             }
         }
     }
-    if (vertex && positionMember.empty()) {
+    if (vertex && positionMember.empty() && !nextToGeometryShader) {
         w.error = "vertex shader '" + entry.name + "' writes no position (POSITION or SV_Position)";
         return w;
     }
@@ -314,7 +324,7 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
     if (returns) code << "    " << entry.returnType << " r = " << call << ";\n";
     else code << "    " << call << ";\n";
     code << "    fxport_Output o;\n" << copyOut.str();
-    if (w.usesPixelOffset)
+    if (w.usesPixelOffset && !positionMember.empty())
         code << "    o." << positionMember << ".xy += " << kPixelOffset << ".xy * o." << positionMember << ".w;\n";
     code << "    return o;\n}\n";
     w.code = code.str();

@@ -29,8 +29,11 @@ struct EntryWrapper {
     bool usesPixelOffset = false;
 };
 
+// `nextToGeometryShader`: the VS feeds, or the PS is fed by, a geometry shader. D3D10 matches those
+// signatures exactly, and so must GL: varyings keep their declared types, and a VS's POSITION stays
+// an ordinary varying (the GS writes SV_Position).
 EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& entry, const ShaderProfile& profile,
-                               const std::string& arguments);
+                               const std::string& arguments, bool nextToGeometryShader = false);
 
 // Splits "TEXCOORD12" into ("TEXCOORD", 12), upper-cased; "SV_Target" -> ("SV_TARGET", 0).
 std::pair<std::string, int> splitSemantic(const std::string& semantic);

@@ -96,6 +96,20 @@ public:
 
     EffectSyntax run() {
         while (!at().kind_is_end()) parseTopLevel();
+        // In SM4 code `sampler` is another name for SamplerState: a plain `sampler S` used as the
+        // sampler argument of Texture.Sample(S, ...) is a DX10 sampler, not a DX9 one.
+        for (auto& smp : syntax_.samplers) {
+            if (smp.dx10 || !iequals(smp.type, "sampler")) continue;
+            for (size_t i = 0; i + 3 < syntax_.tokens.size(); ++i) {
+                const std::string& m = tok(i + 1).text;
+                if (tok(i).is(".") && (m.rfind("Sample", 0) == 0 || m.rfind("Gather", 0) == 0) && tok(i + 2).is("(") &&
+                    tok(i + 3).text == smp.name) {
+                    smp.dx10 = true;
+                    smp.type = "SamplerState";
+                    break;
+                }
+            }
+        }
         for (auto& t : syntax_.textures) {
             if (t.dx9Object) continue;
             bool namedBySamplerState = false;
@@ -245,7 +259,7 @@ private:
                     if (t.text == "(" || t.text == "{" || t.text == "[") ++depth;
                     else if (t.text == ")" || t.text == "]") --depth;
                     else if (t.text == "}") {
-                        if (depth == 0) fail(diag::kSyntax, "missing ';' after state '" + a.name + "'", pos_);
+                        if (depth == 0) fail(diag::kSyntax, "missing ';' after state '" + a.name + "'", pos_ > vb ? pos_ - 1 : a.nameToken);
                         --depth;
                     } else if (t.text == ";" && depth == 0) break;
                 }
@@ -309,6 +323,7 @@ private:
             return;
         }
         if (t.is("[")) {  // attributes before a function: [maxvertexcount(3)]
+            if (pendingAttributes_.empty()) pendingAttributesStart_ = pos_;
             size_t after = skipGroup(pos_, "attribute");
             pendingAttributes_ += syntax_.text({pos_, after});
             pos_ = after;
@@ -368,6 +383,7 @@ private:
     void parseCbuffer() {
         ++pos_;
         std::string name = cur().isIdent() ? syntax_.tokens[pos_++].text : std::string();
+        syntax_.cbuffers.push_back(name);
         while (accept(":")) {
             expectIdentifier("register");
             if (cur().is("(")) pos_ = skipGroup(pos_, "register");
@@ -453,8 +469,8 @@ private:
     }
 
     void parseFunction(const std::string& returnType, const std::string& name, size_t nameToken, size_t start) {
-        (void)start;
         FxFunction f;
+        size_t declarationStart = pendingAttributes_.empty() ? start : pendingAttributesStart_;
         f.name = name;
         f.returnType = returnType;
         f.token = nameToken;
@@ -489,6 +505,8 @@ private:
         }
         size_t after = skipGroup(pos_, ("body of function '" + name + "'").c_str());
         f.body = {pos_ + 1, after - 1};
+        f.declaration = {declarationStart, after};
+        for (const auto& p : f.parameters) f.hasStreamParameter |= p.type.find("Stream<") != std::string::npos;
         pos_ = after;
         syntax_.functions.push_back(std::move(f));
     }
@@ -542,8 +560,12 @@ private:
             if (cur().is("(")) {
                 size_t after = skipGroup(pos_, word.c_str());
                 if (iequals(word, "register") && after >= pos_ + 3) {
-                    std::string reg = tok(pos_ + 1).text;  // s0, t3, c4 ...
+                    std::string reg = tok(after - 2).text;  // s0, t3, c4 ... (last argument)
                     if (reg.size() > 1) tail.registerIndex = std::atoi(reg.c_str() + 1);
+                    // DX9 constant registers (register(c8), register(vs, c8)) place a constant in ONE
+                    // stage's register file; the VS and PS files overlap, one GL uniform buffer cannot.
+                    // Only SetVertexShaderConstantF-style code cares, which XNA's Effect never is.
+                    if (reg[0] == 'c' || reg[0] == 'C' || (after > pos_ + 3)) blank(pos_ - 2, after);
                 }
                 pos_ = after;
             } else {
@@ -708,6 +730,7 @@ private:
     }
 
     std::string pendingAttributes_;
+    size_t pendingAttributesStart_ = 0;
 };
 
 }  // namespace

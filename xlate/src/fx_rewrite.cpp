@@ -94,6 +94,45 @@ private:
 
 }  // namespace
 
+namespace {
+
+std::string applyEdits(const std::string& text, std::vector<TextEdit> edits) {
+    std::sort(edits.begin(), edits.end(), [](const TextEdit& a, const TextEdit& b) { return a.begin < b.begin; });
+    std::string hlsl;
+    hlsl.reserve(text.size());
+    size_t at = 0;
+    for (const auto& e : edits) {
+        if (e.begin < at) continue;  // nested in an earlier edit (annotations inside a blanked block)
+        hlsl.append(text, at, e.begin - at);
+        std::string original = text.substr(e.begin, e.end - e.begin);
+        // Keep the line count: the replacement goes first, then the original's newlines.
+        std::string replacement = e.replacement;
+        size_t replacementLen = replacement.size();
+        for (size_t k = 0; k < original.size(); ++k) {
+            char c = original[k];
+            if (c == '\n') replacement += '\n';
+            else if (k >= replacementLen) replacement += ' ';
+        }
+        hlsl += replacement;
+        at = e.end;
+    }
+    hlsl.append(text, at, std::string::npos);
+    return hlsl;
+}
+
+}  // namespace
+
+std::string RewrittenEffect::hlslForGeometryShader(const std::string& entry) const {
+    std::vector<TextEdit> all = edits;
+    for (const auto& f : syntax->functions) {
+        if (!f.hasStreamParameter || f.name == entry || f.declaration.empty()) continue;
+        const Token& first = syntax->tokens[f.declaration.begin];
+        const Token& last = syntax->tokens[f.declaration.end - 1];
+        all.push_back({first.offset, last.offset + last.text.size(), {}});
+    }
+    return applyEdits(*sourceText, std::move(all));
+}
+
 RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& syntax, const SourceMap& map,
                               std::vector<Diagnostic>& diagnostics) {
     RewrittenEffect out;
@@ -244,27 +283,10 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
                 const Token& t = tokens[f.parameters[i].typeToken];
                 edits.push_back({t.offset, t.offset + t.text.size(), dx9SamplerType(k)});
             }
-    std::sort(edits.begin(), edits.end(), [](const TextEdit& a, const TextEdit& b) { return a.begin < b.begin; });
-    std::string hlsl;
-    hlsl.reserve(text.size());
-    size_t at = 0;
-    for (const auto& e : edits) {
-        if (e.begin < at) continue;  // nested in an earlier edit (annotations inside a blanked block)
-        hlsl.append(text, at, e.begin - at);
-        std::string original = text.substr(e.begin, e.end - e.begin);
-        // Keep the line count: the replacement goes first, then the original's newlines.
-        std::string replacement = e.replacement;
-        size_t replacementLen = replacement.size();
-        for (size_t k = 0; k < original.size(); ++k) {
-            char c = original[k];
-            if (c == '\n') replacement += '\n';
-            else if (k >= replacementLen) replacement += ' ';
-        }
-        hlsl += replacement;
-        at = e.end;
-    }
-    hlsl.append(text, at, std::string::npos);
-    out.hlsl = std::move(hlsl);
+    out.sourceText = &text;
+    out.syntax = &syntax;
+    out.edits = std::move(edits);
+    out.hlsl = out.hlslForGeometryShader({});
     return out;
 }
 

@@ -26,10 +26,18 @@ struct EffectSampler {
 };
 
 struct RewrittenEffect {
-    std::string hlsl;      // the whole effect as plain HLSL (no entry wrapper yet)
+    std::string hlsl;      // the whole effect as plain HLSL (no entry wrapper), geometry shaders left out
+    // The effect for compiling geometry shader `entry`: glslang 12 crashes on a source holding two
+    // functions that Append to streams, so every other stream function is left out.
+    std::string hlslForGeometryShader(const std::string& entry) const;
     bool dx9Samplers = false;  // compile with glslang's DX9-compatibility mode (tex2D, sampler2D ...)
     std::vector<EffectSampler> samplers;
     std::map<std::string, int> textureUnits;  // DX10 texture objects -> unit (register(tN) or order)
+
+    // What hlsl is made from (kept to make the geometry-shader variants).
+    const std::string* sourceText = nullptr;
+    const EffectSyntax* syntax = nullptr;
+    std::vector<TextEdit> edits;
 };
 
 // Throws CompileError on contradictions (a sampler used as 2D and cube); sampler-state problems are

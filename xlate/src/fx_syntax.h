@@ -136,6 +136,8 @@ struct FxFunction {
     std::string returnSemantic;
     std::vector<FxParameter> parameters;
     TokenSpan body;  // tokens between the braces
+    TokenSpan declaration;  // attributes, signature and body
+    bool hasStreamParameter = false;  // a geometry shader (inout TriangleStream<T> ...)
     size_t token = 0;
     std::string attributes;  // e.g. "[maxvertexcount(3)]"
 };
@@ -158,6 +160,7 @@ struct EffectSyntax {
     std::vector<FxStateObject> stateObjects;
     std::vector<FxShaderVariable> shaderVariables;
     std::vector<TextEdit> edits;  // framework syntax to remove before glslang sees the text
+    std::vector<std::string> cbuffers;  // names of user cbuffers, in declaration order
 
     const FxFunction* findFunction(const std::string& name) const;
     const FxStruct* findStruct(const std::string& name) const;

@@ -18,17 +18,20 @@ namespace fxport::xlate {
 
 void checkIsText(const std::string& source, const std::string& displayPath) {
     int line = 1;
-    size_t i = 0;
+    size_t i = 0, lineStart = 0;
     auto fail = [&](const std::string& what) {
         Diagnostic d;
         d.id = diag::kNotText;
         d.message = "the file is not HLSL text (" + what + ")";
-        d.location = {displayPath, line, 0};
+        d.location = {displayPath, line, static_cast<int>(i - lineStart) + 1};
         throw CompileError({d});
     };
     while (i < source.size()) {
         auto c = static_cast<unsigned char>(source[i]);
-        if (c == '\n') ++line;
+        if (c == '\n') {
+            ++line;
+            lineStart = i + 1;
+        }
         if (c == 0) fail("it contains a NUL byte");
         if (c < 0x80) {
             if (c < 0x20 && c != '\n' && c != '\r' && c != '\t' && c != '\f' && c != '\v') fail("it contains control characters");
@@ -45,6 +48,10 @@ void checkIsText(const std::string& source, const std::string& displayPath) {
 }
 
 namespace {
+
+std::string originalLineRaw(const SourceMap& map, const std::string& file, int line) {
+    return map.originalLine(file, line);  // trimmed; the column is then relative to the text shown
+}
 
 // Finds `relative` under `dir`, exactly or else component by component ignoring case.
 std::optional<fs::path> findCaseInsensitive(const fs::path& dir, const fs::path& relative) {
@@ -227,29 +234,28 @@ PreprocessedEffect preprocessEffect(const std::string& source, const std::string
             std::smatch m;
             if (!std::regex_match(line, m, re)) continue;
             SourceLocation where{m[1].str(), std::stoi(m[2].str()), 0};
-            std::string msg = m[3].str();
+            std::string msg(trim(m[3].str()));
             const char* id = diag::kPreprocessor;
-            auto inc = msg.find("Could not process include directive for header name: ");
+            static const std::string kIncludeFailed = "Could not process include directive for header name: ";
+            auto inc = msg.find(kIncludeFailed);
+            std::string token;
             if (inc != std::string::npos) {
-                std::string header(trim(msg.substr(inc + 55)));
+                std::string header(trim(msg.substr(inc + kIncludeFailed.size())));
+                token = header;
                 auto f = includer.failures.find(header);
                 if (f != includer.failures.end()) {
                     id = f->second.first;
                     msg = f->second.second;
                 }
+            } else if (auto q = msg.find('\''); q != std::string::npos) {
+                token = msg.substr(q + 1, msg.find('\'', q + 1) - q - 1);  // glslang quotes the offending token
             }
+            // Column: the offending token in the original line, else the line's first character.
+            std::string orig = originalLineRaw(result.map, where.file, where.line);
+            size_t at = token.empty() ? std::string::npos : orig.find(token);
+            if (at == std::string::npos) at = orig.find_first_not_of(" \t");
+            where.column = at == std::string::npos ? 1 : static_cast<int>(at) + 1;
             Diagnostic d = result.map.makeAt(Severity::Error, id, msg, where);
-            std::string src = d.sourceLine;
-            auto tokStart = msg.find('\'');
-            if (tokStart != std::string::npos) {
-                auto tokEnd = msg.find('\'', tokStart + 1);
-                std::string tok = msg.substr(tokStart + 1, tokEnd - tokStart - 1);
-                std::string orig = result.map.originalLine(where.file, where.line);
-                if (!tok.empty() && tokEnd != std::string::npos) {
-                    auto at = orig.find(tok);
-                    (void)at;
-                }
-            }
             diags.push_back(std::move(d));
         }
         if (diags.empty()) {

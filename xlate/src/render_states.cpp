@@ -371,6 +371,7 @@ bool expandDx10Object(const FxStateObject* object, const std::string& type, Stat
         if (kind == ValueKind::Bool && toLower(it->second->name) == "depthwritemask") {
             auto s = r.single();
             std::string n = s ? normalizeEnumName(*s) : "";
+            fields.erase(it);
             if (n == "all" || n == "depthwritemaskall" || n == "1") return 1;
             if (n == "zero" || n == "depthwritemaskzero" || n == "0") return 0;
             r.bad("ALL or ZERO");
@@ -586,12 +587,15 @@ StateResult translatePassAssignment(const FxAssignment& a, StateContext& ctx, st
     s.index = index;
     s.where = where;
     if (!readValue(r, it->second.kind, s.value)) {
-        auto obj = r.objectName();
-        if (obj && (ctx.syntax.tokens[a.value.begin].is("<") || ctx.syntax.tokens[a.value.begin].is("(")))
-            r.error(diag::kBadStateValue, "state '" + a.name + "' is set from parameter '" + *obj +
-                                              "'; states driven by parameters are not supported, use a literal value");
-        else
-            r.bad(describe(it->second.kind));
+        if (auto obj = r.objectName()) {
+            for (const auto& g : ctx.syntax.globals)
+                if (g.name == *obj) {
+                    s.parameter = *obj;  // evaluated at Apply() from the parameter's value
+                    out.push_back(s);
+                    return StateResult::Applied;
+                }
+        }
+        r.bad(describe(it->second.kind));
         return StateResult::Failed;
     }
     out.push_back(s);

@@ -66,7 +66,7 @@ void SourceMap::addFileText(const std::string& file, std::string text) {
 std::string SourceMap::originalLine(const std::string& file, int line) const {
     auto it = fileLines_.find(file);
     if (it == fileLines_.end() || line < 1 || line > static_cast<int>(it->second.size())) return {};
-    return std::string(trim(it->second[static_cast<size_t>(line - 1)]));
+    return it->second[static_cast<size_t>(line - 1)];
 }
 
 SourceLocation SourceMap::locate(int line, int column, const std::string& token) const {

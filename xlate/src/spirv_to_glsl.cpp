@@ -10,8 +10,9 @@
 
 namespace fxport::xlate {
 
-int VaryingLocations::locationOf(const std::string& semantic) {
-    auto [base, index] = splitSemantic(semantic);
+int VaryingLocations::locationOf(const std::string& semanticIn) {
+    auto [base, index] = splitSemantic(semanticIn);
+    const std::string semantic = base + std::to_string(index);  // "POSITION" and "POSITION0" are one
     // The fixed table: identical in every effect, so shaders of different effects link.
     if (base == "TEXCOORD" && index < 16) return index;
     if (base == "COLOR" && index < 4) return 16 + index;
@@ -24,11 +25,16 @@ int VaryingLocations::locationOf(const std::string& semantic) {
     if (base == "BLENDINDICES" && index == 0) return 28;
     auto it = custom_.find(semantic);
     if (it != custom_.end()) return it->second;
-    // Other names: 29..31 first, then whatever the fixed table leaves unused in this effect.
+    // Other names: 29..31 first, then the high TEXCOORD slots (15, 14 ...), which effects rarely use.
+    // Locations must stay below 32, the smallest GL_MAX_VARYING_VECTORS we target.
     std::set<int> used;
     for (const auto& [k, v] : custom_) used.insert(v);
     int loc = 29;
-    while (used.count(loc)) ++loc;
+    while (loc < 32 && used.count(loc)) ++loc;
+    if (loc == 32) {
+        loc = 15;
+        while (loc > 0 && used.count(loc)) --loc;
+    }
     custom_[semantic] = loc;
     return loc;
 }
@@ -64,8 +70,13 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
                 continue;
             }
             if (blockName != "$Global") {
-                // User cbuffers share binding 0's numbering space after the internal block.
-                compiler.set_decoration(ubo.id, spv::DecorationBinding, 2 + static_cast<uint32_t>(&ubo - res.uniform_buffers.data()));
+                // User cbuffers: binding 2 + their declaration order in the effect, the same in
+                // every stage whichever cbuffers a stage happens to use.
+                uint32_t order = 0;
+                const auto& names = effect.syntax->cbuffers;
+                auto it = std::find(names.begin(), names.end(), blockName);
+                order = it == names.end() ? static_cast<uint32_t>(names.size()) : static_cast<uint32_t>(it - names.begin());
+                compiler.set_decoration(ubo.id, spv::DecorationBinding, 2 + order);
                 continue;
             }
             compiler.set_decoration(ubo.id, spv::DecorationBinding, 0);

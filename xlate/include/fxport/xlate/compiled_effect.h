@@ -167,6 +167,9 @@ struct StateAssignment {
     RenderState state = RenderState::AlphaBlendEnable;
     int index = 0;                       // render-target index for ColorWriteEnable[n] / BlendEnable[n]
     std::array<double, 4> value{};       // bool/int/enum in value[0]; BlendFactor uses all four
+    // `AlphaRef = <AlphaReference>;`: the value is the named parameter's current value, read at
+    // Apply() (the effect framework's parameter-driven states). Empty for literal values.
+    std::string parameter;
     SourceLocation where;
 };
 

@@ -1,0 +1,254 @@
+// Broken-input tests: every malformed effect under tests/fixtures/broken (plus two binary files made
+// at run time) must fail with CompileError whose FIRST error names the right diagnostic id, file and
+// line, printed fxc-style as `file(line,col): error FXnnnn: sentence`. The `fxport check` command
+// line must report the same place and exit with status 1 (never a crash or a signal).
+//
+// Paths are relative to the repository root (the tests run there, see CMakeLists.txt).
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <typeinfo>
+#include <vector>
+
+#include "fxport/xlate/diagnostics.h"
+#include "fxport/xlate/effect_compiler.h"
+
+namespace fs = std::filesystem;
+using namespace fxport::xlate;
+
+namespace {
+
+const std::string kDir = "tests/fixtures/broken/";
+
+struct BrokenCase {
+    const char* name;          // test name
+    std::string effect;        // path of the .fx to compile (relative to the repository root)
+    const char* id;            // expected id of the first error
+    const char* file;          // file name the first error must point into (ends the location's path)
+    int line;                  // exact 1-based line of the first error
+};
+
+void PrintTo(const BrokenCase& c, std::ostream* os) { *os << c.name; }
+
+// Files that must contain bytes no text editor should be trusted to keep: written at run time.
+struct GeneratedFolder {
+    fs::path path = fs::temp_directory_path() / ("fxport_broken_inputs_" + std::to_string(::getpid()));
+    ~GeneratedFolder() {
+        std::error_code ec;
+        fs::remove_all(path, ec);
+    }
+};
+
+std::string generatedDir() {
+    static GeneratedFolder folder;
+    static const std::string dir = [] {
+        const fs::path& d = folder.path;
+        fs::create_directories(d);
+        auto write = [&](const char* name, const std::string& bytes) {
+            std::ofstream(d / name, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+        };
+        // A PNG header and chunk start: a binary file handed to the compiler by mistake. The first
+        // byte (0x89) is already not UTF-8, on line 1; NUL bytes follow.
+        using namespace std::string_literals;
+        write("binary_garbage.fx", "\x89PNG\r\n\x1a\n\0\0\0\rIHDR\0\0\0\x10\0\0\0\x10\x08\x06\0\0\0\x1f\xf3\xff\x61"s);
+        // A valid effect whose comment on line 4 is Latin-1 ("café" as E9), not UTF-8.
+        write("invalid_utf8.fx",
+              "// Broken: the comment below is Latin-1, not UTF-8.\n"
+              "float4 VS(float4 pos : POSITION0) : POSITION0 { return pos; }\n"
+              "\n"
+              "// Couleur du caf\xe9 au lait\n"
+              "float4 PS() : COLOR0 { return float4(1, 1, 1, 1); }\n"
+              "\n"
+              "technique Main { pass P0 { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n"s);
+        return d.string() + "/";
+    }();
+    return dir;
+}
+
+std::vector<BrokenCase> cases() {
+    return {
+        // Effect-framework structure.
+        {"UnterminatedTechnique", kDir + "unterminated_technique.fx", diag::kUnterminated, "unterminated_technique.fx", 5},
+        {"UnterminatedPass", kDir + "unterminated_pass.fx", diag::kUnterminated, "unterminated_pass.fx", 7},
+        {"MissingSemicolonAfterState", kDir + "missing_semicolon_state.fx", diag::kSyntax, "missing_semicolon_state.fx", 11},
+        // States.
+        {"UnknownRenderState", kDir + "unknown_render_state.fx", diag::kUnknownState, "unknown_render_state.fx", 10},
+        {"BadStateValue", kDir + "bad_state_value.fx", diag::kBadStateValue, "bad_state_value.fx", 10},
+        {"UnknownSamplerState", kDir + "unknown_sampler_state.fx", diag::kUnknownState, "unknown_sampler_state.fx", 7},
+        {"Dx10UndeclaredBlendState", kDir + "dx10_undeclared_blend_state.fx", diag::kBadStateValue, "dx10_undeclared_blend_state.fx", 13},
+        {"Dx10DepthStencilUnknownField", kDir + "dx10_depth_stencil_unknown_field.fx", diag::kUnknownState,
+         "dx10_depth_stencil_unknown_field.fx", 9},
+        // Shaders of a pass.
+        {"MissingEntryPoint", kDir + "missing_entry_point.fx", diag::kMissingEntry, "missing_entry_point.fx", 10},
+        {"BadProfile", kDir + "bad_profile.fx", diag::kBadProfile, "bad_profile.fx", 9},
+        {"ProfileStageMismatch", kDir + "profile_stage_mismatch.fx", diag::kBadProfile, "profile_stage_mismatch.fx", 9},
+        {"AsmPass", kDir + "asm_pass.fx", diag::kUnsupported, "asm_pass.fx", 9},
+        {"UnknownShaderVariable", kDir + "unknown_shader_variable.fx", diag::kUnknownShader, "unknown_shader_variable.fx", 10},
+        {"UniformParameterWithoutValue", kDir + "uniform_without_value.fx", diag::kBadEntrySignature, "uniform_without_value.fx", 4},
+        {"PixelShaderWithoutColor", kDir + "ps_without_color.fx", diag::kBadEntrySignature, "ps_without_color.fx", 4},
+        // Preprocessor and includes.
+        {"ErrorDirective", kDir + "error_directive.fx", diag::kPreprocessor, "error_directive.fx", 6},
+        {"BadMacroInvocation", kDir + "bad_macro_invocation.fx", diag::kPreprocessor, "bad_macro_invocation.fx", 8},
+        {"UnterminatedComment", kDir + "unterminated_comment.fx", diag::kPreprocessor, "unterminated_comment.fx", 5},
+        {"IncludeNotFound", kDir + "include_not_found.fx", diag::kIncludeNotFound, "include_not_found.fx", 3},
+        // The effect's own folder (outside/) is the only include root; ../secret.fxh exists but escapes it.
+        {"IncludeOutsideAllowedFolders", kDir + "outside/include_outside.fx", diag::kIncludeOutside, "include_outside.fx", 2},
+        // include_cycle.fx -> cycle_a.fxh -> cycle_b.fxh -> cycle_a.fxh: the include closing the cycle.
+        {"IncludeCycle", kDir + "include_cycle.fx", diag::kIncludeCycle, "cycle_b.fxh", 4},
+        // HLSL (glslang).
+        {"HlslTypeErrorInInclude", kDir + "hlsl_error_in_include.fx", diag::kHlsl, "type_error.fxh", 8},
+        {"HlslUndeclaredIdentifier", kDir + "undeclared_identifier.fx", diag::kHlsl, "undeclared_identifier.fx", 7},
+        // Not an effect at all. An empty file has only line 1 to point at.
+        {"EmptyFile", kDir + "empty.fx", diag::kEmptyEffect, "empty.fx", 1},
+        {"BinaryGarbage", generatedDir() + "binary_garbage.fx", diag::kNotText, "binary_garbage.fx", 1},
+        {"InvalidUtf8", generatedDir() + "invalid_utf8.fx", diag::kNotText, "invalid_utf8.fx", 4},
+    };
+}
+
+bool endsWith(const std::string& s, const std::string& suffix) {
+    return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+std::string quoted(const std::string& s) {
+    std::string out = "'";
+    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+struct RunResult {
+    bool exited = false;  // false: killed by a signal (a crash)
+    int status = -1;      // exit status when exited
+    std::string output;   // stdout and stderr
+};
+
+// Runs the fxport command line with `args` (already quoted), capturing stdout and stderr.
+RunResult runCli(const std::string& args) {
+    RunResult r;
+    std::string command = quoted(FXPORT_CLI_PATH) + " " + args + " 2>&1";
+    FILE* pipe = ::popen(command.c_str(), "r");
+    if (!pipe) return r;
+    std::array<char, 4096> buf{};
+    size_t n;
+    while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) r.output.append(buf.data(), n);
+    int wstatus = ::pclose(pipe);
+    // popen runs `sh -c`; a child killed by a signal shows as the shell's status 128+signal.
+    if (wstatus != -1 && WIFEXITED(wstatus) && WEXITSTATUS(wstatus) < 128) {
+        r.exited = true;
+        r.status = WEXITSTATUS(wstatus);
+    }
+    return r;
+}
+
+// Where the diagnostic must point, as printed: `name(line,` (fxc prints file(line,col)).
+std::string printedLocation(const BrokenCase& c) { return std::string(c.file) + "(" + std::to_string(c.line) + ","; }
+
+class BrokenInput : public ::testing::TestWithParam<BrokenCase> {};
+
+TEST_P(BrokenInput, LibraryReportsFirstErrorAtTheRightPlace) {
+    const BrokenCase& c = GetParam();
+    ASSERT_TRUE(fs::exists(c.effect)) << c.effect << " is missing (are the tests running from the repository root?)";
+    CompileOptions options;
+    options.useCache = false;
+    try {
+        CompiledEffect effect = compileEffectFile(c.effect, options);
+        FAIL() << c.effect << " compiled (" << effect.techniques.size() << " techniques), but it is broken";
+    } catch (const CompileError& e) {
+        const Diagnostic* first = nullptr;
+        for (const auto& d : e.diagnostics())
+            if (d.severity == Severity::Error) {
+                first = &d;
+                break;
+            }
+        ASSERT_NE(first, nullptr) << "CompileError without an error diagnostic: " << e.what();
+        std::string all = e.what();
+        EXPECT_EQ(first->id, c.id) << all;
+        EXPECT_TRUE(endsWith(first->location.file, c.file)) << "file '" << first->location.file << "', expected one ending in '"
+                                                            << c.file << "'\n" << all;
+        EXPECT_EQ(first->location.line, c.line) << all;
+        std::string formatted = first->format();
+        std::string where = std::string(c.file) + "(" + std::to_string(c.line);
+        EXPECT_NE(formatted.find(where), std::string::npos) << "'" << where << "' not in: " << formatted;
+        EXPECT_NE(formatted.find(std::string("error ") + c.id + ": "), std::string::npos) << formatted;
+        // The message is one sentence: some words, one line, no location of its own.
+        const std::string& m = first->message;
+        EXPECT_FALSE(m.empty());
+        EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+        int letters = 0;
+        for (char ch : m) letters += std::isalpha(static_cast<unsigned char>(ch)) ? 1 : 0;
+        EXPECT_GE(letters, 8) << "not a sentence: '" << m << "'";
+        EXPECT_NE(m.find(' '), std::string::npos) << "not a sentence: '" << m << "'";
+        EXPECT_EQ(m.rfind("ERROR", 0), std::string::npos) << "raw tool output: '" << m << "'";
+        EXPECT_EQ(m.find(first->location.file + ":"), std::string::npos) << "message repeats the location: '" << m << "'";
+    } catch (const std::exception& e) {
+        FAIL() << "threw " << typeid(e).name() << " instead of CompileError: " << e.what();
+    }
+}
+
+TEST_P(BrokenInput, CliCheckExitsOneAndPrintsTheLocation) {
+    const BrokenCase& c = GetParam();
+    RunResult r = runCli("check " + quoted(c.effect) + " --no-cache");
+    ASSERT_TRUE(r.exited) << "fxport check " << c.effect << " did not exit normally (crashed?):\n" << r.output;
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find(printedLocation(c)), std::string::npos)
+        << "expected a line containing '" << printedLocation(c) << "' in:\n" << r.output;
+    EXPECT_NE(r.output.find(std::string("error ") + c.id + ":"), std::string::npos) << r.output;
+}
+
+INSTANTIATE_TEST_SUITE_P(Fixtures, BrokenInput, ::testing::ValuesIn(cases()),
+                         [](const ::testing::TestParamInfo<BrokenCase>& p) { return std::string(p.param.name); });
+
+TEST(BrokenInputs, AtLeastFifteenCases) { EXPECT_GE(cases().size(), 15u); }
+
+TEST(BrokenInputs, LibraryReportsMissingFile) {
+    const std::string path = kDir + "no_such_effect.fx";
+    CompileOptions options;
+    options.useCache = false;
+    try {
+        compileEffectFile(path, options);
+        FAIL() << "compiled a file that does not exist";
+    } catch (const CompileError& e) {
+        ASSERT_FALSE(e.diagnostics().empty());
+        EXPECT_EQ(e.diagnostics().front().id, diag::kFileUnreadable);
+        EXPECT_EQ(e.diagnostics().front().location.file, path);
+    }
+}
+
+TEST(BrokenInputs, CliMissingPathExitsOne) {
+    RunResult r = runCli("check " + quoted(kDir + "no_such_effect.fx") + " --no-cache");
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("no_such_effect.fx"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(diag::kFileUnreadable), std::string::npos) << r.output;
+}
+
+TEST(BrokenInputs, CliCompileMissingPathExitsOne) {
+    fs::path out = fs::temp_directory_path() / ("fxport_broken_inputs_out_" + std::to_string(::getpid()) + ".fxo");
+    RunResult r = runCli("compile " + quoted(kDir + "no_such_effect.fx") + " -o " + quoted(out.string()) + " --no-cache");
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find(diag::kFileUnreadable), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(BrokenInputs, CliUnknownOptionExitsTwo) {
+    RunResult r = runCli("check " + quoted(kDir + "empty.fx") + " --no-such-option");
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("--no-such-option"), std::string::npos) << r.output;
+}
+
+TEST(BrokenInputs, CliUnknownCommandExitsTwo) {
+    RunResult r = runCli("--no-such-option");
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 2) << r.output;
+}
+
+}  // namespace
