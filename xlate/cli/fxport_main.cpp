@@ -130,11 +130,7 @@ void dump(const CompiledEffect& e, std::ostream& out) {
             out << "    pass " << p.name << (p.valid ? "" : "  [INVALID]") << ": vs " << choice(p.vertexShader) << ", ps " << choice(p.pixelShader);
             if (!p.geometryShader.shaders.empty()) out << ", gs " << choice(p.geometryShader);
             out << "\n";
-            std::string js = reflectionJson(e);
-            (void)js;
-            for (const auto& s : p.states) {
-                out << "      state " << static_cast<int>(s.state) << " [" << s.index << "] = " << s.value[0] << "\n";
-            }
+            for (const auto& s : p.states) out << "      " << describeStateAssignment(s) << "\n";
         }
     }
     out << "\nshaders:\n";

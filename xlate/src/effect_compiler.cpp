@@ -17,6 +17,7 @@
 #include "hlsl_to_spirv.h"
 #include "preprocess.h"
 #include "render_states.h"
+#include "shader_profile.h"
 #include "spirv_to_glsl.h"
 #include "text_util.h"
 
@@ -27,29 +28,6 @@ namespace fxport::xlate {
 const char* compilerVersion() { return "fxport-xlate-1"; }
 
 namespace {
-
-std::optional<ShaderProfile> parseProfile(const std::string& name) {
-    std::string n = toLower(name);
-    ShaderProfile p;
-    p.name = name;
-    if (n.rfind("vs_", 0) == 0) p.stage = ShaderStage::Vertex;
-    else if (n.rfind("ps_", 0) == 0) p.stage = ShaderStage::Pixel;
-    else if (n.rfind("gs_", 0) == 0) p.stage = ShaderStage::Geometry;
-    else return std::nullopt;
-    std::string rest = n.substr(3);
-    size_t level = rest.find("_level_9_");
-    if (level != std::string::npos) rest = rest.substr(0, level);
-    static const std::map<std::string, std::pair<int, int>> versions = {
-        {"1_1", {1, 1}}, {"1_2", {1, 2}}, {"1_3", {1, 3}}, {"1_4", {1, 4}}, {"2_0", {2, 0}}, {"2_a", {2, 1}},
-        {"2_b", {2, 2}}, {"2_sw", {2, 0}}, {"2_x", {2, 1}}, {"3_0", {3, 0}}, {"3_sw", {3, 0}}, {"4_0", {4, 0}},
-        {"4_1", {4, 1}}, {"5_0", {5, 0}}};
-    auto it = versions.find(rest);
-    if (it == versions.end()) return std::nullopt;
-    std::tie(p.major, p.minor) = it->second;
-    if (p.stage == ShaderStage::Geometry && p.major < 4) return std::nullopt;
-    if (p.stage == ShaderStage::Vertex && p.major == 1 && p.minor != 1) return std::nullopt;
-    return p;
-}
 
 const char* stageName(ShaderStage s) {
     switch (s) {
@@ -256,7 +234,7 @@ bool EffectBuilder::buildSelector(TokenSpan span, std::vector<SelectorOp>& ops, 
 }
 
 int EffectBuilder::compileShader(const FxShaderExpr& expr, ShaderStage expected, size_t /*blameToken*/) {
-    auto profile = parseProfile(expr.profile);
+    auto profile = parseShaderProfile(expr.profile);
     if (!profile) {
         error(diag::kBadProfile, "'" + expr.profile + "' is not a shader profile fxport knows (vs_1_1..vs_5_0, ps_2_0..ps_5_0, gs_4_0..gs_5_0)", expr.token + 1);
         return -1;
@@ -266,9 +244,6 @@ int EffectBuilder::compileShader(const FxShaderExpr& expr, ShaderStage expected,
                                      stageName(expected) + " shader",
               expr.token + 1);
         return -1;
-    }
-    if (expected == ShaderStage::Pixel && profile->major == 1) {
-        // ps_1_x HLSL is fine: it is compiled like ps_2_0 (same D3D9 rules).
     }
     ShaderKey key{expected, toLower(expr.profile), expr.entry, expr.arguments, passHasGeometryShader_};
     if (auto it = compiled_.find(key); it != compiled_.end()) return it->second;
@@ -492,7 +467,9 @@ std::string cacheKey(const PreprocessedEffect& pre, const std::string& displayPa
     key += '\0' + displayPath + '\0' + pre.text;
     for (const auto& t : options.techniques) key += '\0' + t;
     key += options.keepValidPasses ? "\1" : "\2";
-    return hashHex(key) + hashHex(key + "salt");
+    // Two 64-bit FNV-1a hashes (of the key, and of the key with a suffix) make a 128-bit name: a
+    // collision would silently return another effect, so 64 bits alone is too few for a shared cache.
+    return hashHex(key) + hashHex(key + "#2");
 }
 
 void dumpIfAsked(const CompiledEffect& effect) {

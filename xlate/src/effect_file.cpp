@@ -5,6 +5,7 @@
 #include <array>
 #include <fstream>
 
+#include "shader_profile.h"
 #include "text_util.h"
 
 using nlohmann::json;
@@ -281,6 +282,17 @@ json effectJson(const CompiledEffect& effect, bool full) {
 
 }  // namespace
 
+std::string describeStateAssignment(const StateAssignment& s) {
+    std::string out = kState.of(s.state);
+    if (s.index) out += "[" + std::to_string(s.index) + "]";
+    out += " = ";
+    if (!s.parameter.empty()) return out + "<" + s.parameter + ">";
+    std::string name = valueName(s);
+    if (!name.empty()) return out + name;
+    if (s.state == RenderState::BlendFactor) return out + json(s.value).dump();
+    return out + json(s.value[0]).dump();
+}
+
 std::string serializeEffect(const CompiledEffect& effect) { return effectJson(effect, true).dump(1); }
 
 std::string reflectionJson(const CompiledEffect& effect) { return effectJson(effect, false).dump(2) + "\n"; }
@@ -312,11 +324,10 @@ CompiledEffect deserializeEffect(const std::string& text, const std::string& nam
         for (size_t i = 0; i < e.parameters.size(); ++i) paramIndex[e.parameters[i].name] = static_cast<int>(i);
         for (const auto& s : j.at("shaders")) {
             CompiledShader cs;
-            cs.profile.stage = kStage.parse(s.at("stage"));
-            cs.profile.name = s.at("profile");
-            std::string n = toLower(cs.profile.name);
-            cs.profile.major = n.size() > 3 ? n[3] - '0' : 0;
-            cs.profile.minor = n.size() > 5 ? (n[5] == 'a' ? 1 : n[5] == 'b' ? 2 : n[5] - '0') : 0;
+            auto profile = parseShaderProfile(s.at("profile"));
+            if (!profile || profile->stage != kStage.parse(s.at("stage")))
+                return fail("shader profile '" + s.at("profile").get<std::string>() + "' does not match its stage");
+            cs.profile = *profile;
             cs.entryPoint = s.at("entryPoint");
             cs.arguments = s.value("arguments", std::string());
             cs.glsl = s.at("glsl");

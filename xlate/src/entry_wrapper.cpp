@@ -133,6 +133,12 @@ std::vector<std::string> splitArguments(const std::string& args) {
     return out;
 }
 
+std::string interpolationPrefix(const Leaf& leaf) {
+    std::string out;
+    for (const auto& m : leaf.interpolation) out += m + " ";
+    return out;
+}
+
 bool has(const std::vector<std::string>& v, const char* s) {
     for (const auto& x : v)
         if (x == s) return true;
@@ -230,13 +236,11 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
             addParam("nointerpolation " + vectorType(leaf.scalar == "bool" ? "uint" : leaf.scalar, leaf.components) + " " + name + " : " + sem);
             fill << "    " << leaf.access << " = " << name << ";\n";
         } else if (nextToGeometryShader) {
-            std::string interp;
-            for (const auto& im : leaf.interpolation) interp += im + " ";
+            const std::string interp = interpolationPrefix(leaf);
             addParam(interp + vectorType(leaf.scalar, leaf.components) + " " + name + " : " + sem);
             fill << "    " << leaf.access << " = " << name << ";\n";
         } else {
-            std::string interp;
-            for (const auto& im : leaf.interpolation) interp += im + " ";
+            const std::string interp = interpolationPrefix(leaf);
             addParam(interp + "float4 " + name + " : " + sem);
             fill << "    " << leaf.access << " = " << narrow(name, leaf.components) << ";\n";
         }
@@ -259,8 +263,7 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
                 outStruct << "    " << vectorType(leaf.scalar, leaf.components) << " " << name << " : " << b << leaf.semanticIndex << ";\n";
                 copyOut << "    o." << name << " = " << leaf.access << ";\n";
             } else if (nextToGeometryShader) {
-                std::string interp;
-                for (const auto& im : leaf.interpolation) interp += im + " ";
+                const std::string interp = interpolationPrefix(leaf);
                 outStruct << "    " << interp << vectorType(leaf.scalar, leaf.components) << " " << name << " : " << b << leaf.semanticIndex << ";\n";
                 copyOut << "    o." << name << " = " << leaf.access << ";\n";
             } else if (isIntegerScalar(leaf.scalar)) {
@@ -268,8 +271,7 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
                           << " : " << b << leaf.semanticIndex << ";\n";
                 copyOut << "    o." << name << " = " << leaf.access << ";\n";
             } else {
-                std::string interp;
-                for (const auto& im : leaf.interpolation) interp += im + " ";
+                const std::string interp = interpolationPrefix(leaf);
                 outStruct << "    " << interp << "float4 " << name << " : " << b << leaf.semanticIndex << ";\n";
                 std::string value = widen(leaf.access, leaf.components);
                 // vs_1_1..vs_2_x colour outputs are clamped to [0, 1] by D3D9 (oD0/oD1 registers).

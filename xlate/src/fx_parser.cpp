@@ -95,7 +95,7 @@ public:
     }
 
     EffectSyntax run() {
-        while (!at().kind_is_end()) parseTopLevel();
+        while (!isEnd()) parseTopLevel();
         // In SM4 code `sampler` is another name for SamplerState: a plain `sampler S` used as the
         // sampler argument of Texture.Sample(S, ...) is a DX10 sampler, not a DX9 one.
         for (auto& smp : syntax_.samplers) {
@@ -132,11 +132,6 @@ private:
     size_t pos_ = 0;
 
     // --- token helpers -------------------------------------------------------------------
-    struct TokRef {
-        const Token& t;
-        bool kind_is_end() const { return t.kind == Token::Kind::End; }
-    };
-    TokRef at() const { return {tok(pos_)}; }
     const Token& tok(size_t i) const { return syntax_.tokens[std::min(i, syntax_.tokens.size() - 1)]; }
     const Token& cur() const { return tok(pos_); }
     const Token& peek(size_t k = 1) const { return tok(pos_ + k); }

@@ -85,7 +85,9 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
         return out;
     }
     glslang::SpvOptions options;
-    options.disableOptimizer = !request.optimize;  // HLSL legalisation runs in both cases
+    // Never disabled: for HLSL this run (spirv-opt's passes inside glslang) is also the legalisation
+    // that makes sampler function parameters valid SPIR-V.
+    options.disableOptimizer = false;
     options.optimizeSize = false;
     options.validate = false;
     spv::SpvBuildLogger logger;

@@ -27,7 +27,6 @@ struct HlslToSpirvRequest {
     ShaderStage stage = ShaderStage::Vertex;
     std::string entryPoint;
     bool dx9Compatible = false;  // tex2D/sampler2D (DX9 samplers) vs Texture2D.Sample (DX10)
-    bool optimize = true;        // legalisation always runs; this adds the performance passes
 };
 
 SpirvModule hlslToSpirv(const HlslToSpirvRequest& request);

@@ -5,8 +5,6 @@
 
 #include <filesystem>
 #include <map>
-#include <memory>
-#include <mutex>
 #include <regex>
 
 #include "glslang_process.h"
@@ -48,10 +46,6 @@ void checkIsText(const std::string& source, const std::string& displayPath) {
 }
 
 namespace {
-
-std::string originalLineRaw(const SourceMap& map, const std::string& file, int line) {
-    return map.originalLine(file, line);  // trimmed; the column is then relative to the text shown
-}
 
 // Finds `relative` under `dir`, exactly or else component by component ignoring case.
 std::optional<fs::path> findCaseInsensitive(const fs::path& dir, const fs::path& relative) {
@@ -251,7 +245,7 @@ PreprocessedEffect preprocessEffect(const std::string& source, const std::string
                 token = msg.substr(q + 1, msg.find('\'', q + 1) - q - 1);  // glslang quotes the offending token
             }
             // Column: the offending token in the original line, else the line's first character.
-            std::string orig = originalLineRaw(result.map, where.file, where.line);
+            std::string orig = result.map.originalLine(where.file, where.line);
             size_t at = token.empty() ? std::string::npos : orig.find(token);
             if (at == std::string::npos) at = orig.find_first_not_of(" \t");
             where.column = at == std::string::npos ? 1 : static_cast<int>(at) + 1;

@@ -19,6 +19,10 @@ CompiledEffect deserializeEffect(const std::string& text, const std::string& nam
 void saveEffectFile(const CompiledEffect& effect, const std::string& path);
 CompiledEffect loadEffectFile(const std::string& path);
 
+// "SrcBlend = SourceAlpha", "ColorWriteEnable[1] = 7", "AlphaRef = <AlphaReference>": one state
+// assignment as people read it (for `fxport dump`).
+std::string describeStateAssignment(const StateAssignment& assignment);
+
 // Reflection only (no GLSL, no absolute paths): what the golden tests compare, and what
 // `fxport dump --reflection` prints.
 std::string reflectionJson(const CompiledEffect& effect);
