@@ -59,12 +59,13 @@ std::string generatedDir() {
         // byte (0x89) is already not UTF-8, on line 1; NUL bytes follow.
         using namespace std::string_literals;
         write("binary_garbage.fx", "\x89PNG\r\n\x1a\n\0\0\0\rIHDR\0\0\0\x10\0\0\0\x10\x08\x06\0\0\0\x1f\xf3\xff\x61"s);
-        // A valid effect whose comment on line 4 is Latin-1 ("café" as E9), not UTF-8.
+        // An effect whose code on line 4 holds a Latin-1 byte ("café" as E9), not UTF-8. (In a
+        // comment or a string the same byte is fine: see Encodings in translation_test.cpp.)
         write("invalid_utf8.fx",
-              "// Broken: the comment below is Latin-1, not UTF-8.\n"
+              "// Broken: the declaration below is Latin-1, not UTF-8.\n"
               "float4 VS(float4 pos : POSITION0) : POSITION0 { return pos; }\n"
               "\n"
-              "// Couleur du caf\xe9 au lait\n"
+              "float caf\xe9 = 1; // \xe9 in a comment alone would be fine\n"
               "float4 PS() : COLOR0 { return float4(1, 1, 1, 1); }\n"
               "\n"
               "technique Main { pass P0 { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n"s);
@@ -89,6 +90,7 @@ std::vector<BrokenCase> cases() {
         // Shaders of a pass.
         {"MissingEntryPoint", kDir + "missing_entry_point.fx", diag::kMissingEntry, "missing_entry_point.fx", 10},
         {"BadProfile", kDir + "bad_profile.fx", diag::kBadProfile, "bad_profile.fx", 9},
+        {"HostDefinedProfileMacroMissing", kDir + "host_profile_macro.fx", diag::kBadProfile, "host_profile_macro.fx", 9},
         {"ProfileStageMismatch", kDir + "profile_stage_mismatch.fx", diag::kBadProfile, "profile_stage_mismatch.fx", 9},
         {"AsmPass", kDir + "asm_pass.fx", diag::kUnsupported, "asm_pass.fx", 9},
         {"UnknownShaderVariable", kDir + "unknown_shader_variable.fx", diag::kUnknownShader, "unknown_shader_variable.fx", 10},
@@ -97,17 +99,23 @@ std::vector<BrokenCase> cases() {
         // Preprocessor and includes.
         {"ErrorDirective", kDir + "error_directive.fx", diag::kPreprocessor, "error_directive.fx", 6},
         {"BadMacroInvocation", kDir + "bad_macro_invocation.fx", diag::kPreprocessor, "bad_macro_invocation.fx", 8},
+        // TECHNIQUE(...) that no included header defines: named as an undefined macro, not a technique.
+        {"UndefinedTechniqueMacro", kDir + "technique_macro_undefined.fx", diag::kPreprocessor, "technique_macro_undefined.fx", 8},
         {"UnterminatedComment", kDir + "unterminated_comment.fx", diag::kPreprocessor, "unterminated_comment.fx", 5},
         {"IncludeNotFound", kDir + "include_not_found.fx", diag::kIncludeNotFound, "include_not_found.fx", 3},
         // The effect's own folder (outside/) is the only include root; ../secret.fxh exists but escapes it.
         {"IncludeOutsideAllowedFolders", kDir + "outside/include_outside.fx", diag::kIncludeOutside, "include_outside.fx", 2},
         // include_cycle.fx -> cycle_a.fxh -> cycle_b.fxh -> cycle_a.fxh: the include closing the cycle.
         {"IncludeCycle", kDir + "include_cycle.fx", diag::kIncludeCycle, "cycle_b.fxh", 4},
+        // fxc's search of the open files' folders never reaches outside the allowed folders.
+        {"IncludeOutsideThroughOpenFolders", kDir + "nested_outside/include_through_open_folders.fx", diag::kIncludeOutside,
+         "reach_out.fxh", 3},
         // HLSL (glslang).
         {"HlslTypeErrorInInclude", kDir + "hlsl_error_in_include.fx", diag::kHlsl, "type_error.fxh", 8},
         {"HlslUndeclaredIdentifier", kDir + "undeclared_identifier.fx", diag::kHlsl, "undeclared_identifier.fx", 7},
         // Not an effect at all. An empty file has only line 1 to point at.
         {"EmptyFile", kDir + "empty.fx", diag::kEmptyEffect, "empty.fx", 1},
+        {"LibraryWithoutTechnique", kDir + "library_header.fx", diag::kEmptyEffect, "library_header.fx", 1},
         {"BinaryGarbage", generatedDir() + "binary_garbage.fx", diag::kNotText, "binary_garbage.fx", 1},
         {"InvalidUtf8", generatedDir() + "invalid_utf8.fx", diag::kNotText, "invalid_utf8.fx", 4},
     };
@@ -206,6 +214,41 @@ INSTANTIATE_TEST_SUITE_P(Fixtures, BrokenInput, ::testing::ValuesIn(cases()),
                          [](const ::testing::TestParamInfo<BrokenCase>& p) { return std::string(p.param.name); });
 
 TEST(BrokenInputs, AtLeastFifteenCases) { EXPECT_GE(cases().size(), 15u); }
+
+// The first error of `path` (compiled without cache), for checks on its wording.
+Diagnostic firstError(const std::string& path) {
+    CompileOptions options;
+    options.useCache = false;
+    try {
+        compileEffectFile(path, options);
+    } catch (const CompileError& e) {
+        return e.diagnostics().front();
+    }
+    ADD_FAILURE() << path << " compiled";
+    return {};
+}
+
+TEST(BrokenInputs, MessagesNameWhatIsMissing) {
+    // A host-defined profile macro: the message names the macro and how to define it.
+    Diagnostic profile = firstError(kDir + "host_profile_macro.fx");
+    EXPECT_NE(profile.message.find("no macro 'PROFILE' is defined"), std::string::npos) << profile.message;
+    EXPECT_NE(profile.message.find("-D PROFILE=ps_3_0"), std::string::npos) << profile.message;
+    // An undefined macro used like TECHNIQUE(...): named, rather than "expected '{'".
+    Diagnostic macro = firstError(kDir + "technique_macro_undefined.fx");
+    EXPECT_NE(macro.message.find("no macro 'TECHNIQUE' is defined"), std::string::npos) << macro.message;
+    EXPECT_EQ(macro.sourceLine, "TECHNIQUE( Plain, VSMain, PSMain );");
+    // A header compiled on its own says so; an empty file says it is empty.
+    Diagnostic library = firstError(kDir + "library_header.fx");
+    EXPECT_NE(library.message.find("looks like a header"), std::string::npos) << library.message;
+    Diagnostic empty = firstError(kDir + "empty.fx");
+    EXPECT_NE(empty.message.find("no code"), std::string::npos) << empty.message;
+}
+
+TEST(BrokenInputs, HostMacroGivenWithDashDCompiles) {
+    RunResult r = runCli("check " + quoted(kDir + "host_profile_macro.fx") + " -D PROFILE=ps_3_0 --no-cache");
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 0) << r.output;
+}
 
 TEST(BrokenInputs, LibraryReportsMissingFile) {
     const std::string path = kDir + "no_such_effect.fx";

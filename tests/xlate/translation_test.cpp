@@ -4,13 +4,18 @@
 // dimensions, defaults, packing, literal arguments, shader arrays, state objects) hold.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <set>
 #include <sstream>
 
+#include "fxport/platform/gl.h"
 #include "fxport/xlate/effect_compiler.h"
 #include "fxport/xlate/effect_file.h"
 #include "gl_link_check.h"
@@ -45,6 +50,20 @@ std::string readText(const std::string& path) {
 // not emulate that (GL's gl_PointCoord), so the PS reads a varying no VS writes: a whole-program link
 // rejects it. Listed so the test shows the gap instead of hiding it.
 const std::set<std::string> kKnownLinkFailures = {"tests/fixtures/realworld/dx9_specifics/PointSprites.fx"};
+
+void expectReflectionMatchesGl(const CompiledEffect& e, int vs, int ps);
+
+// The first valid pass with a vertex and a pixel shader, if any: its uniform blocks as GL sees them.
+void expectFirstPassLayoutMatchesGl(const CompiledEffect& e) {
+    if (kKnownLinkFailures.count(e.sourcePath)) return;
+    for (const auto& t : e.techniques)
+        for (const auto& p : t.passes)
+            if (p.valid && !p.vertexShader.shaders.empty() && !p.pixelShader.shaders.empty() && p.vertexShader.shaders[0] >= 0 &&
+                p.pixelShader.shaders[0] >= 0 && p.geometryShader.shaders.empty()) {
+                expectReflectionMatchesGl(e, p.vertexShader.shaders[0], p.pixelShader.shaders[0]);
+                return;
+            }
+}
 
 // Links every valid pass's shader combination (each choice of a shader array too).
 void expectPassesLink(const CompiledEffect& e) {
@@ -87,6 +106,7 @@ TEST_P(SeedEffect, CompilesLinksAndMatchesGoldenReflection) {
     for (const auto& t : e.techniques)
         for (const auto& p : t.passes) EXPECT_TRUE(p.valid) << path;
     expectPassesLink(e);
+    expectFirstPassLayoutMatchesGl(e);
 
     // Golden: tests/golden/<seed>/<Effect>.json, written when FXPORT_UPDATE_GOLDEN=1 (then review the
     // diff by hand before committing it).
@@ -143,6 +163,7 @@ TEST_P(RealWorldFixture, TranslatesAndLinksOrNamesWhatIsUnsupported) {
     CompiledEffect e = compileEffectFile(path, noCache());
     EXPECT_FALSE(e.hasErrors());
     expectPassesLink(e);
+    expectFirstPassLayoutMatchesGl(e);
 }
 
 INSTANTIATE_TEST_SUITE_P(RealWorld, RealWorldFixture, ::testing::ValuesIn(effectsUnder("tests/fixtures/realworld")),
@@ -384,4 +405,437 @@ TEST(Translation, TechniqueFilterCompilesOnlyWhatIsAsked) {
     ASSERT_EQ(e.techniques.size(), 1u);
     EXPECT_EQ(e.techniques[0].name, "DualTextureEffectNoFog");
     EXPECT_EQ(e.shaders.size(), 2u);
+}
+
+// ---- uniform blocks: $Global and user cbuffers ---------------------------------------------------
+
+namespace {
+
+// What the GL driver says about one block member of a linked program (GL_UNIFORM resources).
+struct GlMember {
+    bool found = false;
+    int offset = -1, arrayStride = -1, matrixStride = -1, rowMajor = -1, blockBinding = -1, blockSize = -1;
+};
+
+// Links `vs` + `ps` (the driver's own layout, not ours) and looks up "<block>.<member>" for each
+// name; block names as SPIRV-Cross writes them ($Global -> _Global).
+std::map<std::string, GlMember> glLayout(const std::string& vs, const std::string& ps, const std::vector<std::string>& names) {
+    using namespace fxport::gl;
+    fxport::test::sharedTestContext();
+    auto compile = [](GLenum stage, const std::string& src) {
+        GLuint sh = glCreateShader(stage);
+        const char* text = src.c_str();
+        glShaderSource(sh, 1, &text, nullptr);
+        glCompileShader(sh);
+        return sh;
+    };
+    GLuint program = glCreateProgram();
+    GLuint v = compile(GL_VERTEX_SHADER, vs), f = compile(GL_FRAGMENT_SHADER, ps);
+    glAttachShader(program, v);
+    glAttachShader(program, f);
+    glLinkProgram(program);
+    GLint linked = 0;
+    glGetProgramiv(program, GL_LINK_STATUS, &linked);
+    std::map<std::string, GlMember> out;
+    for (const auto& name : linked ? names : std::vector<std::string>{}) {
+        GlMember m;
+        GLuint index = glGetProgramResourceIndex(program, GL_UNIFORM, name.c_str());
+        if (index != GL_INVALID_INDEX) {
+            const GLenum props[] = {GL_OFFSET, GL_ARRAY_STRIDE, GL_MATRIX_STRIDE, GL_IS_ROW_MAJOR, GL_BLOCK_INDEX};
+            GLint values[5] = {};
+            glGetProgramResourceiv(program, GL_UNIFORM, index, 5, props, 5, nullptr, values);
+            m.found = true;
+            m.offset = values[0];
+            m.arrayStride = values[1];
+            m.matrixStride = values[2];
+            m.rowMajor = values[3];
+            const GLenum blockProps[] = {GL_BUFFER_BINDING, GL_BUFFER_DATA_SIZE};
+            GLint blockValues[2] = {};
+            glGetProgramResourceiv(program, GL_UNIFORM_BLOCK, static_cast<GLuint>(values[4]), 2, blockProps, 2, nullptr, blockValues);
+            m.blockBinding = blockValues[0];
+            m.blockSize = blockValues[1];
+        }
+        out[name] = m;
+    }
+    glDeleteProgram(program);
+    glDeleteShader(v);
+    glDeleteShader(f);
+    return out;
+}
+
+std::string glslBlockName(const std::string& block) { return block == "$Global" ? "_Global" : block; }
+
+// Every parameter the reflection places in a block sits exactly where the GL driver, reading the
+// generated GLSL, puts it: same offset, strides, matrix order, block binding; the block is no
+// smaller than the driver's.
+void expectReflectionMatchesGl(const CompiledEffect& e, int vs, int ps) {
+    std::set<int> blocksDeclared;  // a shader declares every block it reads a range of
+    for (int s : {vs, ps})
+        for (const auto& r : e.shaders[size_t(s)].uniformRangesRead) blocksDeclared.insert(r.block);
+    std::vector<std::string> names;
+    for (const auto& p : e.parameters)
+        if (p.offset >= 0 && blocksDeclared.count(p.block))
+            names.push_back(glslBlockName(e.uniformBlocks.at(size_t(p.block)).name) + "." + p.name + (p.elements ? "[0]" : ""));
+    auto gl = glLayout(e.shaders[size_t(vs)].glsl, e.shaders[size_t(ps)].glsl, names);
+    size_t k = 0;
+    for (const auto& p : e.parameters) {
+        if (p.offset < 0 || !blocksDeclared.count(p.block)) continue;
+        const GlMember& m = gl[names[k++]];
+        const UniformBlock& b = e.uniformBlocks.at(size_t(p.block));
+        ASSERT_TRUE(m.found) << names[k - 1] << " is not a uniform of the linked program";
+        EXPECT_EQ(m.offset, p.offset) << p.name;
+        EXPECT_EQ(m.blockBinding, b.binding) << p.name;
+        EXPECT_GE(b.size, m.blockSize) << p.name << " in " << b.name;
+        if (p.elements) {
+            EXPECT_EQ(m.arrayStride, p.arrayStride) << p.name;
+        }
+        if (p.parameterClass == ParameterClass::Matrix) {
+            EXPECT_EQ(m.matrixStride, p.matrixStride) << p.name;
+            // GL sees the HLSL matrix transposed: HLSL column_major is GLSL row_major.
+            EXPECT_EQ(m.rowMajor, p.rowMajor ? 0 : 1) << p.name;
+        }
+    }
+}
+
+}  // namespace
+
+TEST(UniformBlocks, GlobalsAndCBuffersPackTheHlslWay) {
+    CompiledEffect e = compileEffectFile("tests/fixtures/realworld/dx10_11/CBufferLayout.fx", noCache());
+    ASSERT_EQ(e.uniformBlocks.size(), 4u);
+    auto block = [&](size_t i, const char* name, int binding, int size) {
+        EXPECT_EQ(e.uniformBlocks[i].name, name);
+        EXPECT_EQ(e.uniformBlocks[i].binding, binding) << name;
+        EXPECT_EQ(e.uniformBlocks[i].size, size) << name;
+    };
+    block(0, "$Global", 0, 96);
+    block(1, "PerFrame", 2, 176);
+    block(2, "PerMaterial", 3, 144);
+    block(3, "Debug", 4, 0);  // read by no shader: no buffer needed
+    EXPECT_EQ(e.uniformBufferSize, e.uniformBlocks[0].size);
+
+    // Offsets worked out by hand from fxc's packing rules (see the comments in the fixture).
+    auto at = [&](const char* name, int blockIndex, int offset, int size) {
+        const Parameter& p = param(e, name);
+        EXPECT_EQ(p.block, blockIndex) << name;
+        EXPECT_EQ(p.offset, offset) << name;
+        EXPECT_EQ(p.size, size) << name;
+    };
+    at("WorldViewProjection", 0, 0, 64);
+    at("FogColor", 0, 64, 16);
+    at("FogStart", 0, 80, 4);
+    at("FogEnd", 0, 84, 4);
+    at("LightDirection", 1, 0, 12);
+    at("LightIntensity", 1, 12, 4);  // a float after a float3 shares its register
+    at("ScreenSize", 1, 16, 8);
+    at("InvScreenSize", 1, 24, 8);   // two float2 share a register
+    at("View", 1, 32, 64);
+    at("Projection", 1, 96, 64);
+    at("Time", 1, 160, 4);
+    at("DiffuseColor", 2, 0, 16);
+    at("Palette", 2, 16, 64);
+    at("UvScale", 2, 80, 8);
+    at("UvOffset", 2, 88, 8);
+    at("UvRotation", 2, 96, 48);     // fxc counts 44 (the last column's w is padding); the GLSL mat3 is 48
+    at("DebugColor", 3, -1, 0);      // its block is read by no shader, but the parameter still names it
+    EXPECT_EQ(param(e, "Albedo").offset, -1);
+    EXPECT_FALSE(param(e, "View").rowMajor);
+    EXPECT_EQ(param(e, "View").matrixStride, 16);
+    EXPECT_TRUE(param(e, "Projection").rowMajor);
+    EXPECT_EQ(param(e, "Projection").matrixStride, 16);
+    EXPECT_EQ(param(e, "Palette").arrayStride, 16);
+    EXPECT_EQ(param(e, "Palette").elements, 4);
+    EXPECT_EQ(param(e, "UvRotation").matrixStride, 16);
+
+    // The shaders read ranges of the blocks they use, named by block; parametersRead covers cbuffers.
+    const Pass& pass = e.techniques.at(0).passes.at(0);
+    int vs = pass.vertexShader.shaders.at(0), ps = pass.pixelShader.shaders.at(0);
+    std::set<int> blocksRead;
+    for (const auto& r : e.shaders[size_t(ps)].uniformRangesRead) blocksRead.insert(r.block);
+    EXPECT_EQ(blocksRead, (std::set<int>{0, 1, 2}));
+    auto reads = [&](int shader, const char* name) {
+        const auto& list = e.shaders[size_t(shader)].parametersRead;
+        int index = int(&param(e, name) - e.parameters.data());
+        return std::find(list.begin(), list.end(), index) != list.end();
+    };
+    EXPECT_TRUE(reads(vs, "Projection"));
+    EXPECT_TRUE(reads(ps, "Palette"));
+    EXPECT_FALSE(reads(vs, "Palette"));
+    EXPECT_FALSE(reads(ps, "DebugColor"));
+
+    // And the GL driver agrees with every offset, stride and binding.
+    expectReflectionMatchesGl(e, vs, ps);
+
+    // The compiled-effect file keeps all of it.
+    CompiledEffect back = deserializeEffect(serializeEffect(e), "memory");
+    ASSERT_EQ(back.uniformBlocks.size(), 4u);
+    EXPECT_EQ(back.uniformBlocks[1].name, "PerFrame");
+    EXPECT_EQ(back.uniformBlocks[1].binding, 2);
+    EXPECT_EQ(back.uniformBlocks[1].size, 176);
+    EXPECT_EQ(param(back, "Time").block, 1);
+    EXPECT_EQ(param(back, "DebugColor").block, 3);
+    EXPECT_EQ(serializeEffect(back), serializeEffect(e));
+}
+
+// glslang packs a cbuffer the HLSL way, which GLSL cannot always declare: a float3 right after a
+// float (HLSL: offset 4, inside the first register) and a scalar in the unused tail of an array's
+// last register. Such a block is re-laid out with std140 rules (what glslang does for $Global
+// anyway); reflection reports the layout the GLSL really has, so the runtime's uploads land right.
+TEST(UniformBlocks, CBufferPackingGlslCannotDeclareFallsBackToStd140) {
+    const char* src = R"(
+float  GlobalTime;
+float3 GlobalTint;   // std140 in $Global: 16 (fxc: 4)
+cbuffer Awkward
+{
+    float  Scale;    // 0
+    float3 Tint;     // fxc: 4; std140: 16
+    float  Weights[3];  // fxc: 32, stride 16, last element ends at 68; std140: 32, 48 bytes
+    float  After;    // fxc: 68 (tail of Weights[2]'s register); std140: 80
+    float4x4 M;      // fxc: 80; std140: 96
+};
+cbuffer Fine { float3 Dir; float Len; };
+float4 VS(float4 p : POSITION) : SV_Position { return mul(p * Scale * Weights[2] + After, M) * Len + float4(Dir, 0); }
+float4 PS(float4 p : SV_Position) : SV_Target { return float4(Tint * GlobalTint * GlobalTime, Weights[1]); }
+technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelShader(CompileShader(ps_4_0, PS())); } }
+)";
+    CompiledEffect e = compileEffectSource(src, "virtual/Awkward.fx", noCache());
+    EXPECT_EQ(param(e, "GlobalTint").offset, 16);
+    EXPECT_EQ(param(e, "Scale").offset, 0);
+    EXPECT_EQ(param(e, "Tint").offset, 16);
+    EXPECT_EQ(param(e, "Weights").offset, 32);
+    EXPECT_EQ(param(e, "Weights").arrayStride, 16);
+    EXPECT_EQ(param(e, "After").offset, 80);
+    EXPECT_EQ(param(e, "M").offset, 96);
+    EXPECT_EQ(e.uniformBlocks.at(1).size, 160);
+    // A block GLSL can declare keeps the HLSL packing.
+    EXPECT_EQ(param(e, "Dir").offset, 0);
+    EXPECT_EQ(param(e, "Len").offset, 12);
+    EXPECT_EQ(param(e, "Len").block, 2);
+    const Pass& pass = e.techniques.at(0).passes.at(0);
+    expectReflectionMatchesGl(e, pass.vertexShader.shaders.at(0), pass.pixelShader.shaders.at(0));
+    expectPassesLink(e);
+}
+
+// ---- compile cache: a warm compile does not preprocess, so it must notice every input change --------
+
+namespace {
+
+struct TempTree {
+    fs::path root = fs::temp_directory_path() / ("fxport-cache-deps-" + std::to_string(::getpid()) + "-" +
+                                                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    TempTree() {
+        fs::remove_all(root);
+        fs::create_directories(root);
+    }
+    ~TempTree() {
+        std::error_code ec;
+        fs::remove_all(root, ec);
+    }
+    std::string write(const std::string& rel, const std::string& text) const {
+        fs::path p = root / rel;
+        fs::create_directories(p.parent_path());
+        std::ofstream(p, std::ios::binary) << text;
+        return p.string();
+    }
+    std::vector<fs::path> entries() const {
+        std::vector<fs::path> out;
+        if (fs::exists(root / "cache"))
+            for (const auto& f : fs::directory_iterator(root / "cache")) out.push_back(f.path());
+        return out;
+    }
+};
+
+// The inode of the only cache entry: the same inode after a compile means the entry was used, not
+// rewritten (stores write a new file and rename it into place).
+ino_t onlyEntryInode(const TempTree& t) {
+    auto entries = t.entries();
+    EXPECT_EQ(entries.size(), 1u);
+    struct stat st {};
+    if (entries.empty() || ::stat(entries[0].c_str(), &st) != 0) return 0;
+    return st.st_ino;
+}
+
+const char* kIncludingEffect =
+    "#include \"colors.fxh\"\n"
+    "float4 PS() : COLOR0 { return Tint; }\n"
+    "technique T { pass P { PixelShader = compile ps_2_0 PS(); } }\n";
+
+}  // namespace
+
+TEST(CompileCache, EditingAnIncludedFileMisses) {
+    TempTree t;
+    std::string fx = t.write("fx/main.fx", kIncludingEffect);
+    t.write("fx/colors.fxh", "float4 Tint = float4(1, 0, 0, 1);\n");
+    CompileOptions o;
+    o.cacheDir = (t.root / "cache").string();
+    EXPECT_EQ(param(compileEffectFile(fx, o), "Tint").defaultValue, (std::vector<double>{1, 0, 0, 1}));
+    ino_t first = onlyEntryInode(t);
+    // Unchanged: a hit (the entry is not rewritten) with the same result.
+    EXPECT_EQ(param(compileEffectFile(fx, o), "Tint").defaultValue, (std::vector<double>{1, 0, 0, 1}));
+    EXPECT_EQ(onlyEntryInode(t), first);
+    // The header changes (same size, same main file): a miss, and the new value.
+    t.write("fx/colors.fxh", "float4 Tint = float4(0, 1, 0, 1);\n");
+    EXPECT_EQ(param(compileEffectFile(fx, o), "Tint").defaultValue, (std::vector<double>{0, 1, 0, 1}));
+    EXPECT_NE(onlyEntryInode(t), first);
+    // A header deleted: the cache must not hide the error.
+    fs::remove(t.root / "fx/colors.fxh");
+    EXPECT_THROW(compileEffectFile(fx, o), CompileError);
+}
+
+TEST(CompileCache, AHeaderAppearingEarlierInTheSearchMisses) {
+    TempTree t;
+    std::string fx = t.write("fx/main.fx", kIncludingEffect);
+    t.write("lib/colors.fxh", "float4 Tint = float4(1, 0, 0, 1);\n");
+    CompileOptions o;
+    o.cacheDir = (t.root / "cache").string();
+    o.includeDirs = {(t.root / "lib").string()};
+    EXPECT_EQ(param(compileEffectFile(fx, o), "Tint").defaultValue, (std::vector<double>{1, 0, 0, 1}));
+    // The effect's own folder is searched before the include folders: a header created there wins.
+    t.write("fx/colors.fxh", "float4 Tint = float4(0, 0, 1, 1);\n");
+    EXPECT_EQ(param(compileEffectFile(fx, o), "Tint").defaultValue, (std::vector<double>{0, 0, 1, 1}));
+}
+
+TEST(CompileCache, DefinesIncludeFoldersAndLocationAreInTheKey) {
+    TempTree t;
+    const char* src =
+        "float4 Tint = float4(LEVEL, 0, 0, 1);\n"
+        "float4 PS() : COLOR0 { return Tint; }\n"
+        "technique T { pass P { PixelShader = compile ps_2_0 PS(); } }\n";
+    std::string fx = t.write("fx/main.fx", src);
+    CompileOptions o;
+    o.cacheDir = (t.root / "cache").string();
+    o.defines = {{"LEVEL", "1"}};
+    EXPECT_EQ(param(compileEffectFile(fx, o), "Tint").defaultValue.at(0), 1.0);
+    o.defines = {{"LEVEL", "0.5"}};
+    EXPECT_EQ(param(compileEffectFile(fx, o), "Tint").defaultValue.at(0), 0.5);
+    o.defines = {{"LEVEL", "1"}};
+    EXPECT_EQ(param(compileEffectFile(fx, o), "Tint").defaultValue.at(0), 1.0);
+    EXPECT_EQ(t.entries().size(), 2u);
+
+    // The same bytes in another folder, whose header differs, are another effect.
+    std::string a = t.write("a/main.fx", kIncludingEffect);
+    std::string b = t.write("b/main.fx", kIncludingEffect);
+    t.write("a/colors.fxh", "float4 Tint = float4(1, 1, 1, 1);\n");
+    t.write("b/colors.fxh", "float4 Tint = float4(2, 2, 2, 2);\n");
+    EXPECT_EQ(param(compileEffectFile(a, o), "Tint").defaultValue.at(0), 1.0);
+    EXPECT_EQ(param(compileEffectFile(b, o), "Tint").defaultValue.at(0), 2.0);
+}
+
+TEST(CompileCache, DamagedEntriesAreRecompiled) {
+    TempTree t;
+    std::string fx = t.write("fx/main.fx", kIncludingEffect);
+    t.write("fx/colors.fxh", "float4 Tint = float4(1, 0, 0, 1);\n");
+    CompileOptions o;
+    o.cacheDir = (t.root / "cache").string();
+    CompiledEffect cold = compileEffectFile(fx, o);
+    for (const std::string garbage : {"", "fxport-cache 1\n", "fxport-cache 1\n=\n{\"format\":", "not a cache entry"}) {
+        std::ofstream(t.entries().at(0), std::ios::binary) << garbage;
+        EXPECT_EQ(serializeEffect(compileEffectFile(fx, o)), serializeEffect(cold)) << garbage;
+    }
+}
+
+// ---- real-world constructs found in the wild (see tests/fixtures/realworld) -------------------------
+
+TEST(RealWorldConstructs, FxGroupsAreDissolvedIntoTechniques) {
+    CompiledEffect e = compileEffectFile("tests/fixtures/realworld/dx10_11/EffectGroup.fx", noCache());
+    std::vector<std::string> names;
+    for (const auto& t : e.techniques) names.push_back(t.name);
+    EXPECT_EQ(names, (std::vector<std::string>{"Plain", "Shade", "Dim|Shade"}));
+    EXPECT_EQ(e.findTechnique("Shade"), 1);
+    EXPECT_EQ(e.techniques[1].annotations.size(), 1u);  // the technique's own annotations survive
+    EXPECT_EQ(e.techniques[1].passes.at(0).name, "p0");
+}
+
+TEST(RealWorldConstructs, SharedEffectPoolVariablesAreOrdinaryOnes) {
+    CompiledEffect e = compileEffectFile("tests/fixtures/realworld/dx10_11/SharedPoolVariables.fx", noCache());
+    ASSERT_EQ(e.uniformBlocks.size(), 2u);
+    EXPECT_EQ(e.uniformBlocks[1].name, "PoolShared");
+    EXPECT_EQ(param(e, "SunDirection").block, 1);
+    EXPECT_EQ(param(e, "ViewProjection").offset, 32);
+    EXPECT_EQ(param(e, "SharedAlbedo").type, ParameterType::Texture2D);
+    EXPECT_EQ(param(e, "World").block, 0);
+}
+
+TEST(RealWorldConstructs, GeometryShaderKeepsTheStreamHelpersItCalls) {
+    CompiledEffect e = compileEffectFile("tests/fixtures/realworld/dx10_11/GeometryShaderHelper.fx", noCache());
+    const Pass& sprites = e.techniques.at(0).passes.at(0);
+    ASSERT_EQ(sprites.geometryShader.shaders.size(), 1u);
+    const std::string& gs = e.shaders[size_t(sprites.geometryShader.shaders[0])].glsl;
+    EXPECT_TRUE(hasLine(gs, "EmitVertex")) << gs;
+    EXPECT_TRUE(hasLine(gs, "layout\\(max_vertices = 4, triangle_strip\\) out;")) << gs;
+}
+
+TEST(RealWorldConstructs, TypedefsOfHalfVectorsAreNumericParameters) {
+    CompiledEffect e = compileEffectFile("tests/fixtures/realworld/dx9_specifics/HalfVectorTypedefs.fx", noCache());
+    EXPECT_EQ(param(e, "LightDir").parameterClass, ParameterClass::Vector);
+    EXPECT_EQ(param(e, "LightDir").columns, 3);
+    EXPECT_EQ(param(e, "LightDir").defaultValue, (std::vector<double>{0, -1, 0}));
+    EXPECT_EQ(param(e, "WorldViewProj").parameterClass, ParameterClass::Matrix);
+    EXPECT_EQ(param(e, "WorldViewProj").rows, 4);
+}
+
+TEST(RealWorldConstructs, IncludesSearchTheFoldersOfOpenFiles) {
+    // parts/detail/Falloff.fxh includes "Shared.fxh", which only exists beside parts/Lighting.fxh.
+    CompiledEffect e = compileEffectFile("tests/fixtures/realworld/includes/NestedIncludes.fx", noCache());
+    EXPECT_EQ(param(e, "LightRange").defaultValue, std::vector<double>{10});
+    EXPECT_EQ(param(e, "LightRange").declaredAt.file, "tests/fixtures/realworld/includes/parts/Shared.fxh");
+    EXPECT_EQ(param(e, "LightRange").declaredAt.line, 4);
+}
+
+TEST(RealWorldConstructs, LineDirectiveNamingTheFileItselfKeepsItsPath) {
+    // `#line 3 "Name.fx"` written by the effect: diagnostics still name the path it was opened by,
+    // so the offending line can be quoted.
+    const char* src =
+        "// first line\n"
+        "#line 3 \"Lined.fx\"\n"
+        "float4 PS() : COLOR0 { return undefined_thing; }\n"
+        "technique T { pass P { PixelShader = compile ps_2_0 PS(); } }\n";
+    try {
+        compileEffectSource(src, "virtual/dir/Lined.fx", noCache());
+        FAIL() << "compiled";
+    } catch (const CompileError& err) {
+        const Diagnostic& d = err.diagnostics().front();
+        EXPECT_EQ(d.location.file, "virtual/dir/Lined.fx");
+        EXPECT_EQ(d.location.line, 3);
+        EXPECT_NE(d.sourceLine.find("undefined_thing"), std::string::npos) << d.format();
+    }
+}
+
+// Effects written on Windows carry local code pages (Latin-1, GBK, Shift-JIS) in comments and in
+// annotation strings. Those bytes are accepted there; annotation strings come out as UTF-8 (each
+// byte that is not UTF-8 read as Latin-1), so the effect file and golden JSON stay valid.
+TEST(Encodings, LocalCodePageBytesInCommentsAndStringsAreAccepted) {
+    using namespace std::string_literals;
+    std::string src =
+        "// \xd1\xd5\xc9\xab\xcc\xf9\xcd\xbc: GBK bytes in a comment\n"
+        "/* caf\xe9 (Latin-1) in a block comment */\n"
+        "texture Tex < string SasUiLabel = \"\xd1\xd5\xc9\xab\"; >;\n"
+        "sampler S = sampler_state { Texture = <Tex>; };\n"
+        "string Note = \"na\xefve\";\n"
+        "float4 PS(float2 uv : TEXCOORD0) : COLOR0 { return tex2D(S, uv); } // \x82\xa0 Shift-JIS\n"
+        "technique T { pass P { PixelShader = compile ps_2_0 PS(); } }\n"s;
+    CompiledEffect e = compileEffectSource(src, "virtual/Encodings.fx", noCache());
+    ASSERT_EQ(param(e, "Tex").annotations.size(), 1u);
+    // D1 and D5 are not UTF-8 here and become U+00D1 U+00D5; C9 AB happens to be a valid UTF-8
+    // sequence (U+026B) and is kept as it is: only bytes that cannot be UTF-8 are reinterpreted.
+    EXPECT_EQ(param(e, "Tex").annotations[0].value, "\xc3\x91\xc3\x95\xc9\xab");
+    EXPECT_EQ(param(e, "Note").defaultString, "na\xc3\xafve");
+    CompiledEffect back = deserializeEffect(serializeEffect(e), "memory");
+    EXPECT_EQ(param(back, "Tex").annotations[0].value, param(e, "Tex").annotations[0].value);
+    EXPECT_NE(reflectionJson(e).find("SasUiLabel"), std::string::npos);
+}
+
+TEST(Encodings, BinaryAndNonUtf8CodeAreStillRejected) {
+    using namespace std::string_literals;
+    auto firstId = [](const std::string& src) {
+        try {
+            compileEffectSource(src, "virtual/Bad.fx", noCache());
+        } catch (const CompileError& e) {
+            return e.diagnostics().front().id;
+        }
+        return std::string("compiled");
+    };
+    EXPECT_EQ(firstId("float x\xe9 = 1;\ntechnique T { pass P { } }\n"s), diag::kNotText);
+    EXPECT_EQ(firstId("// fine \xe9\nfloat x = 1;\0\ntechnique T { pass P { } }\n"s), diag::kNotText);  // NUL: binary
+    // A string ends at its line: a stray quote cannot hide the next line's bytes.
+    EXPECT_EQ(firstId("float x = 1; // \"\nfloat y\xe9 = 2;\ntechnique T { pass P { } }\n"s), diag::kNotText);
 }

@@ -102,7 +102,10 @@ std::string typeText(const Parameter& p) {
 }
 
 void dump(const CompiledEffect& e, std::ostream& out) {
-    out << "effect " << e.sourcePath << "\n\nparameters (" << e.parameters.size() << "), constant buffer " << e.uniformBufferSize << " bytes:\n";
+    out << "effect " << e.sourcePath << "\n\nuniform blocks:\n";
+    for (const auto& b : e.uniformBlocks)
+        out << "  " << b.name << ": binding " << b.binding << ", " << b.size << " bytes" << (b.size ? "" : " (read by no shader)") << "\n";
+    out << "\nparameters (" << e.parameters.size() << "):\n";
     for (const auto& p : e.parameters) {
         out << "  " << typeText(p) << " " << p.name;
         if (p.elements) out << "[" << p.elements << "]";
@@ -113,7 +116,7 @@ void dump(const CompiledEffect& e, std::ostream& out) {
             out << "}";
         }
         if (!p.defaultString.empty()) out << " = \"" << p.defaultString << "\"";
-        if (p.offset >= 0) out << "   @" << p.offset << " size " << p.size << (p.parameterClass == ParameterClass::Matrix ? (p.rowMajor ? " row_major" : " column_major") : "");
+        if (p.offset >= 0) out << "   @" << (p.block ? e.uniformBlocks[static_cast<size_t>(p.block)].name + "+" : std::string()) << p.offset << " size " << p.size << (p.parameterClass == ParameterClass::Matrix ? (p.rowMajor ? " row_major" : " column_major") : "");
         for (const auto& a : p.annotations) out << "  <" << a.type << " " << a.name << " = " << a.value << ">";
         out << "\n";
     }

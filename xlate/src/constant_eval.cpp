@@ -115,7 +115,7 @@ private:
             if (t->text == "true") return std::vector<double>{1.0};
             if (t->text == "false") return std::vector<double>{0.0};
             if (accept("(")) {  // constructor: float3(1, 2, 3) / float4(v, 1)
-                BasicType b = describeBasicType(t->text);
+                BasicType b = describeBasicType(syntax_.resolveType(t->text));
                 if (!b.ok) return std::nullopt;
                 auto v = list(")");
                 if (!v) return std::nullopt;

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <string_view>
 
 #include "fxport/xlate/effect_file.h"
 #include "text_util.h"
@@ -12,6 +13,35 @@ namespace fs = std::filesystem;
 
 namespace fxport::xlate {
 
+namespace {
+
+// Entry layout: a header of dependency lines, then the serialised effect.
+//   fxport-cache 1
+//   + <content hash> <absolute path>      a file read through #include
+//   - <absolute path>                     a path the include search found empty
+//   =
+//   <compiled effect, JSON>
+constexpr std::string_view kMagic = "fxport-cache 1\n";
+
+std::string entryPath(const std::string& cacheDir, const std::string& key) {
+    return (cacheDir.empty() ? defaultCacheDir() : cacheDir) + "/" + key + ".fxeffect";
+}
+
+bool dependencyHolds(std::string_view line) {
+    if (line.size() < 3 || line[1] != ' ') return false;
+    if (line[0] == '-') {
+        std::error_code ec;
+        return !fs::exists(fs::path(std::string(line.substr(2))), ec) && !ec;
+    }
+    if (line[0] != '+') return false;
+    size_t space = line.find(' ', 2);
+    if (space == std::string_view::npos) return false;
+    auto text = readFile(std::string(line.substr(space + 1)));
+    return text && contentHash(*text) == line.substr(2, space - 2);
+}
+
+}  // namespace
+
 std::string defaultCacheDir() {
     if (const char* d = std::getenv("FXPORT_CACHE_DIR"); d && *d) return d;
     if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) return std::string(x) + "/fxport";
@@ -19,21 +49,36 @@ std::string defaultCacheDir() {
     return ".fxport-cache";
 }
 
-static std::string entryPath(const std::string& cacheDir, const std::string& key) {
-    return (cacheDir.empty() ? defaultCacheDir() : cacheDir) + "/" + key + ".fxeffect";
-}
-
 std::optional<CompiledEffect> loadCachedEffect(const std::string& cacheDir, const std::string& key) {
     auto text = readFile(entryPath(cacheDir, key));
     if (!text) return std::nullopt;
+    std::string_view rest(*text);
+    if (rest.substr(0, kMagic.size()) != kMagic) return std::nullopt;
+    rest.remove_prefix(kMagic.size());
+    for (;;) {
+        size_t end = rest.find('\n');
+        if (end == std::string_view::npos) return std::nullopt;
+        std::string_view line = rest.substr(0, end);
+        rest.remove_prefix(end + 1);
+        if (line == "=") break;
+        if (!dependencyHolds(line)) return std::nullopt;  // an include changed: recompile
+    }
     try {
-        return deserializeEffect(*text, key);
+        return deserializeEffect(rest, key);
     } catch (const std::exception&) {
         return std::nullopt;  // stale or damaged entry: recompile and overwrite
     }
 }
 
-void storeCachedEffect(const std::string& cacheDir, const std::string& key, const CompiledEffect& effect) {
+void storeCachedEffect(const std::string& cacheDir, const std::string& key, const std::vector<IncludeDependency>& dependencies,
+                       const CompiledEffect& effect) {
+    std::string entry(kMagic);
+    for (const auto& d : dependencies) {
+        if (d.path.find('\n') != std::string::npos) return;  // cannot be written down: do not cache
+        entry += d.hash.empty() ? "- " + d.path + "\n" : "+ " + d.hash + " " + d.path + "\n";
+    }
+    entry += "=\n";
+    entry += serializeEffect(effect, /*compact=*/true);
     std::string path = entryPath(cacheDir, key);
     std::error_code ec;
     fs::create_directories(fs::path(path).parent_path(), ec);
@@ -42,8 +87,12 @@ void storeCachedEffect(const std::string& cacheDir, const std::string& key, cons
     {
         std::ofstream out(tmp, std::ios::binary);
         if (!out) return;
-        out << serializeEffect(effect);
-        if (!out) return;
+        out.write(entry.data(), static_cast<std::streamsize>(entry.size()));
+        if (!out) {
+            out.close();
+            fs::remove(tmp, ec);
+            return;
+        }
     }
     fs::rename(tmp, path, ec);
     if (ec) fs::remove(tmp, ec);

@@ -25,7 +25,7 @@ namespace fs = std::filesystem;
 
 namespace fxport::xlate {
 
-const char* compilerVersion() { return "fxport-xlate-1"; }
+const char* compilerVersion() { return "fxport-xlate-2"; }
 
 namespace {
 
@@ -135,13 +135,13 @@ void EffectBuilder::buildParameters() {
             p.type = ParameterType::String;
             if (!g.initializer.empty() && syntax_.tokens[g.initializer.begin].kind == Token::Kind::String)
                 p.defaultString = syntax_.tokens[g.initializer.begin].text;
-        } else if (const FxStruct* s = syntax_.findStruct(g.type)) {
+        } else if (const FxStruct* s = syntax_.findStruct(syntax_.resolveType(g.type))) {
             p.parameterClass = ParameterClass::Struct;
             p.type = ParameterType::Void;
             for (const auto& m : s->members) {
                 Parameter mp;
                 mp.name = m.name;
-                auto b = describeBasicType(m.type);
+                auto b = describeBasicType(syntax_.resolveType(m.type));
                 mp.parameterClass = b.isMatrix ? ParameterClass::Matrix : b.columns > 1 ? ParameterClass::Vector : ParameterClass::Scalar;
                 mp.type = scalarType(b.scalar);
                 mp.rows = b.rows;
@@ -150,7 +150,7 @@ void EffectBuilder::buildParameters() {
                 p.members.push_back(mp);
             }
         } else {
-            auto b = describeBasicType(g.type);
+            auto b = describeBasicType(syntax_.resolveType(g.type));
             if (!b.ok) {
                 effect_.diagnostics.push_back(at(Severity::Warning, diag::kSyntax,
                                                  "global '" + g.name + "' has type '" + g.type + "', which fxport does not expose as a parameter", g.token));
@@ -170,6 +170,10 @@ void EffectBuilder::buildParameters() {
             }
         }
         if (isStatic) continue;  // statics are not parameters in XNA (and not in $Global)
+        if (!g.cbuffer.empty()) {
+            auto it = std::find(syntax_.cbuffers.begin(), syntax_.cbuffers.end(), g.cbuffer);
+            p.block = 1 + static_cast<int>(it - syntax_.cbuffers.begin());
+        }
         items.push_back({g.token, std::move(p)});
     }
     for (const auto& t : syntax_.textures) {
@@ -236,6 +240,18 @@ bool EffectBuilder::buildSelector(TokenSpan span, std::vector<SelectorOp>& ops, 
 int EffectBuilder::compileShader(const FxShaderExpr& expr, ShaderStage expected, size_t /*blameToken*/) {
     auto profile = parseShaderProfile(expr.profile);
     if (!profile) {
+        std::string p = toLower(expr.profile);
+        bool profileLike = p.size() > 3 && p[2] == '_' && p[1] == 's' && std::string("vpghdc").find(p[0]) != std::string::npos;
+        if (!profileLike) {
+            // An identifier the preprocessor left alone: a macro nobody defined. Effect hosts
+            // (Lightworks' PROFILE, BF2's LOWPSMODEL) define such profile macros themselves.
+            const char* example = expected == ShaderStage::Vertex ? "vs_3_0" : expected == ShaderStage::Pixel ? "ps_3_0" : "gs_4_0";
+            error(diag::kBadProfile, "'" + expr.profile + "' is not a shader profile, and no macro '" + expr.profile +
+                                         "' is defined; if the application that hosts this effect defines it, define it too (-D " +
+                                         expr.profile + "=" + example + ")",
+                  expr.token + 1);
+            return -1;
+        }
         error(diag::kBadProfile, "'" + expr.profile + "' is not a shader profile fxport knows (vs_1_1..vs_5_0, ps_2_0..ps_5_0, gs_4_0..gs_5_0)", expr.token + 1);
         return -1;
     }
@@ -434,42 +450,74 @@ void EffectBuilder::buildTechniques() {
 }
 
 void EffectBuilder::finishReflection() {
-    // All shaders compile the same rewritten source, so $Global has one layout; take it from the
-    // first shader that has one and check the others agree.
-    const GlslShader* layout = nullptr;
+    // Block list: $Global, then every user cbuffer in declaration order (bindings as spirv_to_glsl
+    // assigns them). All shaders compile the same rewritten source, so each block has one layout;
+    // take it from the first shader that declares the block and check the others agree. A block no
+    // shader reads keeps size 0 (its parameters keep offset -1).
+    effect_.uniformBlocks.clear();
+    effect_.uniformBlocks.push_back({"$Global", 0, 0});
+    for (size_t k = 0; k < syntax_.cbuffers.size(); ++k)
+        effect_.uniformBlocks.push_back({syntax_.cbuffers[k], static_cast<int>(2 + k), 0});
+    std::map<int, const UniformBlockLayout*> layouts;
     for (const auto& [index, g] : reflections_) {
-        if (g.globalMembers.empty()) continue;
-        if (!layout) {
-            layout = &g;
-            continue;
+        for (const auto& block : g.blocks) {
+            auto [it, inserted] = layouts.emplace(block.index, &block);
+            if (inserted) continue;
+            const UniformBlockLayout& first = *it->second;
+            bool same = block.size == first.size && block.members.size() == first.members.size();
+            for (size_t i = 0; same && i < block.members.size(); ++i)
+                same = block.members[i].name == first.members[i].name && block.members[i].offset == first.members[i].offset;
+            if (!same) error(diag::kSpirv, "shaders of this effect disagree on the layout of constant buffer '" + block.name + "' (internal error)", 0);
         }
-        bool same = g.globalMembers.size() == layout->globalMembers.size();
-        for (size_t i = 0; same && i < g.globalMembers.size(); ++i)
-            same = g.globalMembers[i].name == layout->globalMembers[i].name && g.globalMembers[i].offset == layout->globalMembers[i].offset;
-        if (!same) error(diag::kSpirv, "shaders of this effect disagree on the constant buffer layout (internal error)", 0);
     }
-    if (!layout) return;
-    effect_.uniformBufferSize = layout->globalSize;
-    for (const auto& m : layout->globalMembers) {
-        int p = parameterIndex(m.name);
-        if (p < 0) continue;
-        Parameter& param = effect_.parameters[static_cast<size_t>(p)];
-        param.offset = m.offset;
-        param.size = m.size;
-        param.matrixStride = m.matrixStride;
-        param.arrayStride = m.arrayStride;
-        if (param.parameterClass == ParameterClass::Matrix) param.rowMajor = m.hlslRowMajor;
+    for (const auto& [index, layout] : layouts) {
+        if (index < 0 || static_cast<size_t>(index) >= effect_.uniformBlocks.size()) continue;
+        effect_.uniformBlocks[static_cast<size_t>(index)].size = layout->size;
+        for (const auto& m : layout->members) {
+            int p = parameterIndex(m.name);
+            if (p < 0) continue;
+            Parameter& param = effect_.parameters[static_cast<size_t>(p)];
+            param.block = index;
+            param.offset = m.offset;
+            param.size = m.size;
+            param.matrixStride = m.matrixStride;
+            param.arrayStride = m.arrayStride;
+            if (param.parameterClass == ParameterClass::Matrix) param.rowMajor = m.hlslRowMajor;
+        }
     }
+    effect_.uniformBufferSize = effect_.uniformBlocks[0].size;
 }
 
-std::string cacheKey(const PreprocessedEffect& pre, const std::string& displayPath, const CompileOptions& options) {
-    std::string key = compilerVersion();
-    key += '\0' + displayPath + '\0' + pre.text;
-    for (const auto& t : options.techniques) key += '\0' + t;
-    key += options.keepValidPasses ? "\1" : "\2";
-    // Two 64-bit FNV-1a hashes (of the key, and of the key with a suffix) make a 128-bit name: a
-    // collision would silently return another effect, so 64 bits alone is too few for a shared cache.
-    return hashHex(key) + hashHex(key + "#2");
+// The cache key: everything a compile reads except the include files, which the entry lists with
+// their content hashes (see effect_cache.h). Fields are length-prefixed, so no two different
+// inputs concatenate to the same text.
+std::string cacheKey(const std::string& source, const std::string& displayPath, const std::string& absolutePath,
+                     const CompileOptions& options) {
+    std::error_code ec;
+    std::string key;
+    key.reserve(source.size() + 256);
+    auto field = [&](std::string_view tag, std::string_view value) {
+        key += tag;
+        key += std::to_string(value.size());
+        key += ':';
+        key += value;
+    };
+    field("V", compilerVersion());
+    field("P", displayPath);
+    // Includes resolve beside the effect and in the include folders: where those are matters.
+    field("A", fs::weakly_canonical(fs::absolute(absolutePath, ec), ec).string());
+    for (const auto& dir : options.includeDirs) {
+        field("I", dir);
+        field("i", fs::weakly_canonical(fs::absolute(dir, ec), ec).string());
+    }
+    for (const auto& [name, value] : options.defines) {
+        field("D", name);
+        field("d", value);
+    }
+    for (const auto& t : options.techniques) field("T", t);
+    field("K", options.keepValidPasses ? "1" : "0");
+    field("S", source);
+    return contentHash(key);
 }
 
 void dumpIfAsked(const CompiledEffect& effect) {
@@ -489,16 +537,14 @@ void dumpIfAsked(const CompiledEffect& effect) {
 CompiledEffect compile(const std::string& source, const std::string& displayPath, const std::string& absolutePath,
                        const CompileOptions& optionsIn) {
     CompileOptions options = optionsIn;
-    if (const char* dump = std::getenv("FXPORT_DUMP"); dump && *dump) {
-        options.keepRewrittenHlsl = true;
-        options.useCache = false;
-    }
-    PreprocessedEffect pre = preprocessEffect(source, displayPath, absolutePath, options);
+    if (const char* dump = std::getenv("FXPORT_DUMP"); dump && *dump) options.keepRewrittenHlsl = true;
+    if (options.keepRewrittenHlsl) options.useCache = false;  // the cache does not keep the rewritten HLSL
     std::string key;
     if (options.useCache) {
-        key = cacheKey(pre, displayPath, options);
+        key = cacheKey(source, displayPath, absolutePath, options);
         if (auto cached = loadCachedEffect(options.cacheDir, key)) return std::move(*cached);
     }
+    PreprocessedEffect pre = preprocessEffect(source, displayPath, absolutePath, options);
 
     EffectSyntax syntax = parseEffect(pre.text, pre.map);
     CompiledEffect effect;
@@ -506,8 +552,13 @@ CompiledEffect compile(const std::string& source, const std::string& displayPath
     if (syntax.techniques.empty()) {
         Diagnostic d;
         d.id = diag::kEmptyEffect;
-        d.message = "the effect has no technique; XNA needs at least one technique with a pass to draw with";
-        d.location = {displayPath, std::max(1, pre.map.locate(static_cast<int>(syntax.tokens.back().line)).line), 1};
+        // A file with code but no technique is most likely a header (a .fx/.fxh of shared functions,
+        // structs or typedefs that effects #include), not an effect of its own.
+        d.message = syntax.tokens.size() > 1
+                        ? "the file has no technique: it looks like a header that other effects #include (shared declarations or "
+                          "functions); compile the effect that includes it, since XNA needs at least one technique with a pass to draw with"
+                        : "the file has no code and no technique; XNA needs at least one technique with a pass to draw with";
+        d.location = {displayPath, 1, 1};  // a whole-file problem: its first line
         throw CompileError({d});
     }
     RewrittenEffect rewritten = rewriteEffect(pre.text, syntax, pre.map, effect.diagnostics);
@@ -529,7 +580,7 @@ CompiledEffect compile(const std::string& source, const std::string& displayPath
             if (d.severity == Severity::Error) errors.push_back(d);
         throw CompileError(std::move(errors));
     }
-    if (options.useCache) storeCachedEffect(options.cacheDir, key, effect);
+    if (options.useCache) storeCachedEffect(options.cacheDir, key, pre.dependencies, effect);
     return effect;
 }
 

@@ -100,6 +100,7 @@ json toJson(const Parameter& p, bool withLocation) {
     }
     if (p.elements) j["elements"] = p.elements;
     if (p.parameterClass == ParameterClass::Matrix) j["rowMajor"] = p.rowMajor;
+    if (p.block) j["block"] = p.block;
     if (p.offset >= 0) {
         j["offset"] = p.offset;
         j["size"] = p.size;
@@ -127,6 +128,7 @@ Parameter parameterFrom(const json& j) {
     p.columns = j.value("columns", 1);
     p.elements = j.value("elements", 0);
     p.rowMajor = j.value("rowMajor", false);
+    p.block = j.value("block", 0);
     p.offset = j.value("offset", -1);
     p.size = j.value("size", 0);
     p.matrixStride = j.value("matrixStride", 0);
@@ -189,7 +191,8 @@ json toJson(const CompiledShader& s, const CompiledEffect& effect, bool withGlsl
     for (int p : s.parametersRead) read.push_back(effect.parameters[static_cast<size_t>(p)].name);
     j["parametersRead"] = read;
     json ranges = json::array();
-    for (const auto& r : s.uniformRangesRead) ranges.push_back({r.offset, r.size});
+    for (const auto& r : s.uniformRangesRead)  // [offset, size] in $Global, [offset, size, block] elsewhere
+        ranges.push_back(r.block ? json{r.offset, r.size, r.block} : json{r.offset, r.size});
     j["uniformRangesRead"] = ranges;
     if (s.profile.stage == ShaderStage::Pixel) {
         j["outputTargets"] = s.outputTargets;
@@ -267,6 +270,9 @@ json effectJson(const CompiledEffect& effect, bool full) {
         j["sourcePath"] = effect.sourcePath;
     }
     j["uniformBufferSize"] = effect.uniformBufferSize;
+    json blocks = json::array();
+    for (const auto& b : effect.uniformBlocks) blocks.push_back({{"name", b.name}, {"binding", b.binding}, {"size", b.size}});
+    j["uniformBlocks"] = blocks;
     j["parameters"] = params;
     j["techniques"] = techniquesJson(effect, full);
     j["shaders"] = shaders;
@@ -293,11 +299,17 @@ std::string describeStateAssignment(const StateAssignment& s) {
     return out + json(s.value[0]).dump();
 }
 
-std::string serializeEffect(const CompiledEffect& effect) { return effectJson(effect, true).dump(1); }
+// Text that is not UTF-8 (a diagnostic quoting a Latin-1 comment, say) is written with U+FFFD in
+// its place rather than failing the whole file.
+std::string serializeEffect(const CompiledEffect& effect, bool compact) {
+    return effectJson(effect, true).dump(compact ? -1 : 1, ' ', false, json::error_handler_t::replace);
+}
 
-std::string reflectionJson(const CompiledEffect& effect) { return effectJson(effect, false).dump(2) + "\n"; }
+std::string reflectionJson(const CompiledEffect& effect) {
+    return effectJson(effect, false).dump(2, ' ', false, json::error_handler_t::replace) + "\n";
+}
 
-CompiledEffect deserializeEffect(const std::string& text, const std::string& nameForErrors) {
+CompiledEffect deserializeEffect(std::string_view text, const std::string& nameForErrors) {
     auto fail = [&](const std::string& why) -> CompiledEffect {
         Diagnostic d;
         d.id = diag::kEffectFile;
@@ -307,7 +319,7 @@ CompiledEffect deserializeEffect(const std::string& text, const std::string& nam
     };
     json j;
     try {
-        j = json::parse(text);
+        j = json::parse(text.begin(), text.end());
     } catch (const std::exception& e) {
         return fail(std::string("not a compiled effect file (") + e.what() + ")");
     }
@@ -319,6 +331,7 @@ CompiledEffect deserializeEffect(const std::string& text, const std::string& nam
         CompiledEffect e;
         e.sourcePath = j.value("sourcePath", std::string());
         e.uniformBufferSize = j.value("uniformBufferSize", 0);
+        for (const auto& b : j.at("uniformBlocks")) e.uniformBlocks.push_back({b.at("name"), b.at("binding"), b.at("size")});
         for (const auto& p : j.at("parameters")) e.parameters.push_back(parameterFrom(p));
         std::map<std::string, int> paramIndex;
         for (size_t i = 0; i < e.parameters.size(); ++i) paramIndex[e.parameters[i].name] = static_cast<int>(i);
@@ -344,7 +357,8 @@ CompiledEffect deserializeEffect(const std::string& text, const std::string& nam
                 cs.samplers.push_back(sb);
             }
             for (const auto& name : s.at("parametersRead")) cs.parametersRead.push_back(paramIndex.at(name.get<std::string>()));
-            for (const auto& r : s.at("uniformRangesRead")) cs.uniformRangesRead.push_back({r.at(0), r.at(1)});
+            for (const auto& r : s.at("uniformRangesRead"))
+                cs.uniformRangesRead.push_back({r.at(0), r.at(1), r.size() > 2 ? r.at(2).get<int>() : 0});
             cs.outputTargets = s.value("outputTargets", 0);
             cs.writesDepth = s.value("writesDepth", false);
             cs.needsD3D9PixelOffset = s.value("d3d9PixelOffset", false);

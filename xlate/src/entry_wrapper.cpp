@@ -49,7 +49,7 @@ public:
             error = "structures nested too deeply at '" + access + "'";
             return false;
         }
-        if (const FxStruct* s = syntax_.findStruct(type)) {
+        if (const FxStruct* s = syntax_.findStruct(syntax_.resolveType(type))) {
             if (!dims.empty()) {
                 error = "arrays of structures as shader inputs or outputs are not supported ('" + access + "')";
                 return false;
@@ -58,7 +58,7 @@ public:
                 if (!flatten(m.type, access + "." + m.name, m.semantic, m.arrayDims, m.modifiers, out, depth + 1)) return false;
             return true;
         }
-        BasicType b = describeBasicType(type);
+        BasicType b = describeBasicType(syntax_.resolveType(type));
         if (!b.ok) {
             error = "type '" + type + "' of '" + access + "' cannot be a shader input or output";
             return false;

@@ -4,6 +4,7 @@
 // does not recognise as effect syntax is left for glslang, which is the authority on plain HLSL.
 #include <algorithm>
 #include <cstdlib>
+#include <map>
 #include <set>
 
 #include "fx_syntax.h"
@@ -31,6 +32,10 @@ const FxTexture* EffectSyntax::findTexture(const std::string& name) const {
     for (const auto& t : textures)
         if (t.name == name) return &t;
     return nullptr;
+}
+const std::string& EffectSyntax::resolveType(const std::string& type) const {
+    auto it = typedefs.find(type);
+    return it == typedefs.end() ? type : it->second;
 }
 std::string EffectSyntax::text(TokenSpan span) const {
     std::string out;
@@ -178,8 +183,7 @@ private:
     void blank(size_t firstToken, size_t endToken) {
         if (endToken <= firstToken) return;
         size_t b = tok(firstToken).offset;
-        size_t e = endToken < syntax_.tokens.size() ? tok(endToken - 1).offset + tok(endToken - 1).text.size() : text_.size();
-        if (tok(endToken - 1).kind == Token::Kind::String) e += 2;  // quotes are not part of the token text
+        size_t e = endToken < syntax_.tokens.size() ? tok(endToken - 1).end : text_.size();
         syntax_.edits.push_back({b, e, {}});
     }
 
@@ -302,6 +306,33 @@ private:
         syntax_.techniques.push_back(std::move(tech));
     }
 
+    // Effects 11 `fxgroup Name <annotations> { technique11 ... }`: a named set of techniques. XNA
+    // has no groups, so the group is dissolved: its techniques join the effect's list under their
+    // own names (or "Group|Name", Effects 11's spelling, when an earlier technique has that name).
+    void parseGroup() {
+        size_t start = pos_++;
+        std::string group = cur().isIdent() ? syntax_.tokens[pos_++].text : std::string();
+        if (cur().is("<")) parseAnnotations();
+        if (!cur().is("{")) {
+            if (isEnd()) fail(diag::kUnterminated, "fxgroup '" + group + "' has no body", start);
+            fail(diag::kSyntax, "expected '{' to open fxgroup '" + group + "', found '" + cur().text + "'", pos_);
+        }
+        blank(start, ++pos_);
+        while (!cur().is("}")) {
+            if (isEnd()) fail(diag::kUnterminated, "fxgroup '" + group + "' is never closed with '}'", start);
+            if (accept(";")) continue;
+            if (!cur().isIdent() || !isTechniqueKeyword(cur().text))
+                fail(diag::kSyntax, "expected a technique inside fxgroup '" + group + "', found '" + cur().text + "'", pos_);
+            parseTechnique();
+            FxTechnique& tech = syntax_.techniques.back();
+            for (size_t i = 0; i + 1 < syntax_.techniques.size(); ++i)
+                if (syntax_.techniques[i].name == tech.name) tech.name = group + "|" + tech.name;
+        }
+        size_t close = pos_++;
+        if (cur().is(";")) ++pos_;
+        blank(close, pos_);
+    }
+
     // --- top level -------------------------------------------------------------------------
     void parseTopLevel() {
         const Token& t = cur();
@@ -309,11 +340,38 @@ private:
             ++pos_;
             return;
         }
+        // `NAME(...)` where a declaration must start is a macro call the preprocessor did not
+        // expand: no macro of that name is defined (MonoGame's TECHNIQUE(...) with a Macros.fxh that
+        // lacks it, say). Said plainly, rather than "expected '{'" or "expected a name after type".
+        if (t.isIdent() && peek().is("("))
+            fail(diag::kPreprocessor, "'" + t.text + "(...)' is used like a macro, but no macro '" + t.text +
+                                          "' is defined here (is the header that should define it included, and does it define it?)",
+                 pos_);
         if (t.isIdent() && isTechniqueKeyword(t.text)) return parseTechnique();
+        if (t.isIdent() && t.text == "fxgroup") return parseGroup();
         if (t.is("struct")) return parseStruct();
         if (t.is("cbuffer") || t.is("tbuffer")) return parseCbuffer();
+        if (t.is("shared") && (peek().is("cbuffer") || peek().is("tbuffer"))) {  // D3D10 effect pools: meaningless here
+            blank(pos_, pos_ + 1);
+            ++pos_;
+            return parseCbuffer();
+        }
         if (t.is("typedef")) {
-            while (!isEnd() && !cur().is(";")) ++pos_;
+            // `typedef vector<half, 3> vec3;`: remembered, so declarations typed `vec3` are known
+            // numeric types (parameters, entry signatures). The typedef stays for glslang.
+            size_t start = pos_++;
+            accept("const");
+            if (cur().isIdent() && !cur().is("struct")) {
+                std::string type = parseTypeName();
+                while (cur().isIdent()) {
+                    std::string name = syntax_.tokens[pos_++].text;
+                    if (!cur().is("[")) syntax_.typedefs[name] = syntax_.resolveType(type);  // arrays: left to glslang
+                    parseArrayDims();
+                    if (!accept(",")) break;
+                }
+            }
+            while (!isEnd() && !cur().is(";")) pos_ = cur().is("{") ? skipGroup(pos_, "typedef") : pos_ + 1;
+            if (isEnd()) fail(diag::kUnterminated, "typedef is cut off by the end of the file", start);
             accept(";");
             return;
         }

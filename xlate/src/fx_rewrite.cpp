@@ -97,12 +97,20 @@ private:
 namespace {
 
 std::string applyEdits(const std::string& text, std::vector<TextEdit> edits) {
-    std::sort(edits.begin(), edits.end(), [](const TextEdit& a, const TextEdit& b) { return a.begin < b.begin; });
+    // Outer edits first where two start together (`shared` blanked inside a blanked declaration).
+    std::sort(edits.begin(), edits.end(), [](const TextEdit& a, const TextEdit& b) {
+        return a.begin != b.begin ? a.begin < b.begin : a.end > b.end;
+    });
     std::string hlsl;
     hlsl.reserve(text.size());
     size_t at = 0;
-    for (const auto& e : edits) {
-        if (e.begin < at) continue;  // nested in an earlier edit (annotations inside a blanked block)
+    for (auto e : edits) {
+        if (e.begin < at) {
+            // Nested in an earlier edit (annotations inside a blanked block): nothing left to do,
+            // unless a blanking edit reaches past the earlier one; then blank the rest of it too.
+            if (e.end <= at || !e.replacement.empty()) continue;
+            e.begin = at;
+        }
         hlsl.append(text, at, e.begin - at);
         std::string original = text.substr(e.begin, e.end - e.begin);
         // Keep the line count: the replacement goes first, then the original's newlines.
@@ -123,12 +131,28 @@ std::string applyEdits(const std::string& text, std::vector<TextEdit> edits) {
 }  // namespace
 
 std::string RewrittenEffect::hlslForGeometryShader(const std::string& entry) const {
+    // Stream functions the entry calls (directly or through others: a helper that Appends for it)
+    // stay; the others go.
+    std::set<std::string> keep = {entry};
+    for (bool grew = true; grew;) {
+        grew = false;
+        for (const auto& f : syntax->functions) {
+            if (!keep.count(f.name)) continue;
+            for (size_t i = f.body.begin; i + 1 < f.body.end; ++i) {
+                const Token& t = syntax->tokens[i];
+                if (t.isIdent() && syntax->tokens[i + 1].is("(") && !keep.count(t.text) && syntax->findFunction(t.text)) {
+                    keep.insert(t.text);
+                    grew = true;
+                }
+            }
+        }
+    }
     std::vector<TextEdit> all = edits;
     for (const auto& f : syntax->functions) {
-        if (!f.hasStreamParameter || f.name == entry || f.declaration.empty()) continue;
+        if (!f.hasStreamParameter || keep.count(f.name) || f.declaration.empty()) continue;
         const Token& first = syntax->tokens[f.declaration.begin];
         const Token& last = syntax->tokens[f.declaration.end - 1];
-        all.push_back({first.offset, last.offset + last.text.size(), {}});
+        all.push_back({first.offset, last.end, {}});
     }
     return applyEdits(*sourceText, std::move(all));
 }
@@ -265,7 +289,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     auto spanBytes = [&](TokenSpan span) {
         size_t b = tokens[span.begin].offset;
         const Token& last = tokens[span.end - 1];
-        size_t e = last.offset + last.text.size() + (last.kind == Token::Kind::String ? 2 : 0);
+        size_t e = last.end;
         return std::pair<size_t, size_t>(b, e);
     };
     for (size_t i = 0; i < syntax.samplers.size(); ++i) {
@@ -281,8 +305,17 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
             if (isUntypedSampler(f.parameters[i].type)) {
                 auto k = slots.kind(slots.slot("p:" + functionKey(f) + ":" + std::to_string(i))).value_or(TextureKind::Texture2D);
                 const Token& t = tokens[f.parameters[i].typeToken];
-                edits.push_back({t.offset, t.offset + t.text.size(), dx9SamplerType(k)});
+                edits.push_back({t.offset, t.end, dx9SamplerType(k)});
             }
+    // glslang's HLSL front end takes no `half` (nor min16float ...) as the component type of
+    // vector<T, N> / matrix<T, R, C>; `half` alone it maps to float, as fxc does for SM4 (and SM2-3
+    // only treat it as a precision hint), so the template argument becomes float too.
+    for (size_t i = 0; i + 2 < tokens.size(); ++i) {
+        const Token& t = tokens[i + 2];
+        if ((tokens[i].text == "vector" || tokens[i].text == "matrix") && tokens[i + 1].is("<") && t.isIdent() &&
+            (t.text == "half" || t.text == "min16float" || t.text == "min10float"))
+            edits.push_back({t.offset, t.end, "float"});
+    }
     out.sourceText = &text;
     out.syntax = &syntax;
     out.edits = std::move(edits);

@@ -28,7 +28,7 @@ struct EffectSampler {
 struct RewrittenEffect {
     std::string hlsl;      // the whole effect as plain HLSL (no entry wrapper), geometry shaders left out
     // The effect for compiling geometry shader `entry`: glslang 12 crashes on a source holding two
-    // functions that Append to streams, so every other stream function is left out.
+    // functions that Append to streams, so every stream function `entry` does not call is left out.
     std::string hlslForGeometryShader(const std::string& entry) const;
     bool dx9Samplers = false;  // compile with glslang's DX9-compatibility mode (tex2D, sampler2D ...)
     std::vector<EffectSampler> samplers;

@@ -4,6 +4,7 @@
 // text, keeping line numbers (see fx_rewrite).
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -161,12 +162,14 @@ struct EffectSyntax {
     std::vector<FxShaderVariable> shaderVariables;
     std::vector<TextEdit> edits;  // framework syntax to remove before glslang sees the text
     std::vector<std::string> cbuffers;  // names of user cbuffers, in declaration order
+    std::map<std::string, std::string> typedefs;  // `typedef vector<half, 3> vec3;`: vec3 -> vector<half,3>
 
     const FxFunction* findFunction(const std::string& name) const;
     const FxStruct* findStruct(const std::string& name) const;
     const FxSampler* findSampler(const std::string& name) const;
     const FxTexture* findTexture(const std::string& name) const;
     std::string text(TokenSpan span) const;  // tokens joined with single spaces
+    const std::string& resolveType(const std::string& type) const;  // through typedefs (the type itself if none)
 };
 
 class SourceMap;

@@ -2,6 +2,8 @@
 
 #include <cctype>
 
+#include "text_util.h"
+
 namespace fxport::xlate {
 
 std::vector<Token> tokenize(const std::string& text) {
@@ -62,7 +64,9 @@ std::vector<Token> tokenize(const std::string& text) {
                 ++j;
             }
             t.kind = Token::Kind::String;
-            t.text = text.substr(i + 1, (j < text.size() ? j : text.size()) - i - 1);
+            // Strings are annotation and parameter metadata; old effects wrote them in a local
+            // code page (checkIsText lets that through), but everything downstream is UTF-8.
+            t.text = toValidUtf8(std::string_view(text).substr(i + 1, (j < text.size() ? j : text.size()) - i - 1));
             i = j < text.size() && text[j] == '"' ? j + 1 : j;
         } else {
             static const char* const kMulti[] = {"<<=", ">>=", "::", "==", "!=", "<=", ">=", "&&", "||", "++", "--",
@@ -80,11 +84,12 @@ std::vector<Token> tokenize(const std::string& text) {
             }
             i += t.text.size();
         }
+        t.end = i;
         tokens.push_back(std::move(t));
     }
     Token end;
     end.kind = Token::Kind::End;
-    end.offset = text.size();
+    end.offset = end.end = text.size();
     end.line = line;
     end.column = static_cast<int>(text.size() - lineStart) + 1;
     tokens.push_back(end);

@@ -12,6 +12,7 @@ struct Token {
     enum class Kind { Identifier, Number, String, Punct, End } kind = Kind::End;
     std::string text;
     size_t offset = 0;  // byte offset in the preprocessed text
+    size_t end = 0;     // one past the token's last byte there (quotes included; `text` may differ)
     int line = 1;       // preprocessed line (1-based)
     int column = 1;
 

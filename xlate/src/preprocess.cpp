@@ -15,6 +15,11 @@ namespace fs = std::filesystem;
 namespace fxport::xlate {
 
 void checkIsText(const std::string& source, const std::string& displayPath) {
+    // NUL and control bytes anywhere mean a binary file. Bytes that are not UTF-8 are fine inside
+    // comments and string literals (effects written on Windows carry Latin-1, GBK or Shift-JIS
+    // there: comments never reach the compiler, strings are annotation metadata, made UTF-8 by the
+    // lexer); anywhere else they cannot be HLSL.
+    enum class In { Code, LineComment, BlockComment, String } state = In::Code;
     int line = 1;
     size_t i = 0, lineStart = 0;
     auto fail = [&](const std::string& what) {
@@ -26,21 +31,55 @@ void checkIsText(const std::string& source, const std::string& displayPath) {
     };
     while (i < source.size()) {
         auto c = static_cast<unsigned char>(source[i]);
-        if (c == '\n') {
-            ++line;
-            lineStart = i + 1;
-        }
         if (c == 0) fail("it contains a NUL byte");
+        if (c == '\n') {
+            // A // comment ends with its line unless the line ends in a backslash; strings end there too.
+            size_t last = i;
+            while (last > lineStart && source[last - 1] == '\r') --last;
+            bool continued = last > lineStart && source[last - 1] == '\\';
+            if ((state == In::LineComment && !continued) || state == In::String) state = In::Code;
+            ++line;
+            lineStart = ++i;
+            continue;
+        }
+        if (c < 0x20 && c != '\r' && c != '\t' && c != '\f' && c != '\v') fail("it contains control characters");
+        char next = i + 1 < source.size() ? source[i + 1] : '\0';
+        switch (state) {
+        case In::Code:
+            if (c == '/' && next == '/') state = In::LineComment;
+            else if (c == '/' && next == '*') state = In::BlockComment;
+            else if (c == '"') state = In::String;
+            if (state != In::Code) {
+                i += c == '"' ? 1 : 2;
+                continue;
+            }
+            break;
+        case In::LineComment:
+            ++i;
+            continue;
+        case In::BlockComment:
+            if (c == '*' && next == '/') {
+                state = In::Code;
+                i += 2;
+            } else {
+                ++i;
+            }
+            continue;
+        case In::String:
+            if (c == '\\' && next != '\n' && next != '\0') ++i;
+            else if (c == '"') state = In::Code;
+            ++i;
+            continue;
+        }
         if (c < 0x80) {
-            if (c < 0x20 && c != '\n' && c != '\r' && c != '\t' && c != '\f' && c != '\v') fail("it contains control characters");
             ++i;
             continue;
         }
         int extra = (c & 0xE0) == 0xC0 ? 1 : (c & 0xF0) == 0xE0 ? 2 : (c & 0xF8) == 0xF0 ? 3 : -1;
-        if (extra < 0 || i + static_cast<size_t>(extra) >= source.size() + (extra == 0 ? 1 : 0)) fail("it is not valid UTF-8");
+        if (extra < 0) fail("it is not valid UTF-8 outside comments and strings");
         for (int k = 1; k <= extra; ++k)
             if (i + static_cast<size_t>(k) >= source.size() || (static_cast<unsigned char>(source[i + static_cast<size_t>(k)]) & 0xC0) != 0x80)
-                fail("it is not valid UTF-8");
+                fail("it is not valid UTF-8 outside comments and strings");
         i += static_cast<size_t>(extra) + 1;
     }
 }
@@ -112,7 +151,7 @@ public:
     // Why each failed include failed, keyed by header name as written.
     std::map<std::string, std::pair<const char*, std::string>> failures;
     std::vector<std::pair<std::string, std::string>> loaded;  // (display, text)
-    std::vector<std::string> loadedAbsolute;
+    std::vector<IncludeDependency> dependencies;
 
 private:
     IncludeResult* resolve(const char* headerC, const char* includerC, size_t depth) {
@@ -120,47 +159,64 @@ private:
         std::string includer = includerC ? includerC : "";
         auto absIt = displayToAbsolute_.find(includer);
         fs::path includerAbs = absIt != displayToAbsolute_.end() ? absIt->second : fs::path();
+        std::error_code ec;
 
-        // Search order: the including file's folder, then each root (effect folder, include dirs).
+        // The files open right now: chain_[d] includes the file at depth d + 1 (glslang reports the
+        // depth); the includer is the innermost one.
+        chain_.resize(depth);
+        if (depth >= 1) chain_[depth - 1] = {includerAbs, includer};
+
+        // fxc's search order for #include "file": the including file's folder, then the folders of
+        // the other files that are open, innermost first (ending with the effect's own folder),
+        // then the include folders. A file found outside the allowed roots is passed over.
         std::vector<std::pair<fs::path, std::string>> searchDirs;  // (absolute dir, display dir)
-        if (!includerAbs.empty()) searchDirs.push_back({includerAbs.parent_path(), fs::path(includer).parent_path().string()});
-        for (const auto& r : roots_) searchDirs.push_back({r.absolute, r.display});
+        auto addDir = [&](const fs::path& dir, const std::string& displayDir) {
+            for (const auto& d : searchDirs)
+                if (d.first == dir) return;
+            searchDirs.push_back({dir, displayDir});
+        };
+        for (size_t d = chain_.size(); d-- > 0;)
+            if (!chain_[d].first.empty()) addDir(chain_[d].first.parent_path(), fs::path(chain_[d].second).parent_path().string());
+        for (const auto& r : roots_) addDir(r.absolute, r.display);
 
         std::optional<fs::path> found;
+        fs::path canonical;
         std::string display;
+        bool foundOutside = false;
+        std::vector<std::string> looked;  // exact paths searched before the hit (they did not exist)
         for (const auto& [dir, displayDir] : searchDirs) {
             if (fs::path(header).is_absolute()) {
-                std::error_code ec;
                 if (fs::is_regular_file(header, ec)) found = fs::path(header);
             } else {
                 found = findCaseInsensitive(dir, header);
+                if (!found) looked.push_back((dir / header).lexically_normal().string());
             }
-            if (found) {
-                std::error_code ec;
-                fs::path rel = fs::relative(*found, dir, ec);
-                display = (fs::path(displayDir) / (ec ? fs::path(header) : rel)).lexically_normal().string();
-                break;
+            if (!found) continue;
+            canonical = fs::weakly_canonical(*found, ec);
+            bool allowed = false;
+            for (const auto& r : roots_)
+                if (isUnder(canonical, r.absolute)) allowed = true;
+            if (!allowed) {
+                foundOutside = true;
+                found.reset();
+                continue;
             }
+            fs::path rel = fs::relative(*found, dir, ec);
+            display = (fs::path(displayDir) / (ec ? fs::path(header) : rel)).lexically_normal().string();
+            break;
         }
-        if (!found) {
-            failures[header] = {diag::kIncludeNotFound, "cannot find include file '" + header + "' in the effect's folder or the include folders"};
-            return nullptr;
-        }
-        std::error_code ec;
-        fs::path canonical = fs::weakly_canonical(*found, ec);
-        bool allowed = false;
-        for (const auto& r : roots_)
-            if (isUnder(canonical, r.absolute)) allowed = true;
-        if (!allowed) {
+        if (!found && foundOutside) {
             failures[header] = {diag::kIncludeOutside, "include file '" + header +
                                 "' is outside the effect's folder and the include folders; pass its folder with -I to allow it"};
             return nullptr;
         }
-        // Cycle: the chain of includers is known from the depth glslang reports.
-        chain_.resize(depth);
-        if (depth >= 1) chain_[depth - 1] = includerAbs.empty() ? fs::path() : fs::weakly_canonical(includerAbs, ec);
+        if (!found) {
+            failures[header] = {diag::kIncludeNotFound, "cannot find include file '" + header +
+                                "' beside the including file, the other open files, the effect or in the include folders"};
+            return nullptr;
+        }
         for (const auto& p : chain_)
-            if (p == canonical) {
+            if (!p.first.empty() && fs::weakly_canonical(p.first, ec) == canonical) {
                 failures[header] = {diag::kIncludeCycle, "include cycle: '" + header + "' includes itself (directly or through other files)"};
                 return nullptr;
             }
@@ -170,15 +226,16 @@ private:
             return nullptr;
         }
         displayToAbsolute_[display] = canonical;
+        for (auto& path : looked) dependencies.push_back({std::move(path), {}});
+        dependencies.push_back({canonical.string(), contentHash(*text)});
         loaded.push_back({display, *text});
-        loadedAbsolute.push_back(canonical.string());
         auto* owned = new std::string(std::move(*text));
         return new IncludeResult(display, owned->data(), owned->size(), owned);
     }
 
     std::vector<Root> roots_;
     std::map<std::string, fs::path> displayToAbsolute_;
-    std::vector<fs::path> chain_;
+    std::vector<std::pair<fs::path, std::string>> chain_;  // open files: (absolute, display)
 };
 
 }  // namespace
@@ -213,7 +270,7 @@ PreprocessedEffect preprocessEffect(const std::string& source, const std::string
     PreprocessedEffect result;
     result.map.addFileText(displayPath, source);
     for (const auto& [file, content] : includer.loaded) result.map.addFileText(file, content);
-    result.includedFiles = includer.loadedAbsolute;
+    result.dependencies = std::move(includer.dependencies);
     if (!ok) {
         // glslang reports "ERROR: file:line: 'token' : message"; lines here are ORIGINAL lines.
         std::vector<Diagnostic> diags;

@@ -1,6 +1,7 @@
 // Step 1 of the compiler: glslang's HLSL preprocessor, with `#include` confined to the effect's own
 // folder and the caller's include folders (case-insensitive fallback, as effects written on Windows
-// expect), cycles reported, and user `#define`s applied.
+// expect; searched in fxc's order: the including file's folder, the other open files' folders, the
+// include folders), cycles reported, and user `#define`s applied.
 #pragma once
 
 #include <string>
@@ -11,10 +12,17 @@
 
 namespace fxport::xlate {
 
+// A file the result depends on: an include that was read (with its content hash), or a path the
+// include search looked at and found empty (a file appearing there later would change the result).
+struct IncludeDependency {
+    std::string path;  // absolute
+    std::string hash;  // contentHash() of the file; empty = the path must not exist
+};
+
 struct PreprocessedEffect {
     std::string text;        // preprocessed, `#line` markers blanked; line k maps through `map`
     SourceMap map;
-    std::vector<std::string> includedFiles;  // absolute paths read (for cache keys / dependency lists)
+    std::vector<IncludeDependency> dependencies;  // for the compile cache, in the order found
 };
 
 // `displayPath` is how diagnostics name the root file; `absolutePath` is where it lives (its folder
@@ -22,7 +30,8 @@ struct PreprocessedEffect {
 PreprocessedEffect preprocessEffect(const std::string& source, const std::string& displayPath,
                                     const std::string& absolutePath, const CompileOptions& options);
 
-// Rejects input that is not text (NUL bytes, invalid UTF-8) with a diagnostic naming the line.
+// Rejects input that is not text (NUL or control bytes; bytes that are not UTF-8 outside comments and
+// string literals) with a diagnostic naming the line.
 void checkIsText(const std::string& source, const std::string& displayPath);
 
 }  // namespace fxport::xlate

@@ -32,7 +32,22 @@ std::string SourceMap::build(const std::string& preprocessed, const std::string&
             char* after = nullptr;
             long n = std::strtol(rest.c_str(), &after, 10);
             std::string_view tail = trim(std::string_view(after));
-            if (tail.size() >= 2 && tail.front() == '"') current = fileIndex(std::string(tail.substr(1, tail.find('"', 1) - 1)));
+            if (tail.size() >= 2 && tail.front() == '"') {
+                // The preprocessor's markers name files as we gave them. A `#line 2 "Road.fx"` the
+                // effect itself wrote, naming its own file by its bare name, keeps the path we know
+                // (so the diagnostic can quote the line and editors can open it).
+                std::string name(tail.substr(1, tail.find('"', 1) - 1));
+                auto baseIs = [&](const std::string& path) {
+                    size_t slash = path.find_last_of("/\\");
+                    return slash != std::string::npos && path.compare(slash + 1, std::string::npos, name) == 0;
+                };
+                if (fileLines_.count(name) || !baseIs(fileOrder_[static_cast<size_t>(current)])) {
+                    int known = -1;
+                    for (size_t i = 0; i < fileOrder_.size() && known < 0 && !fileLines_.count(name); ++i)
+                        if (baseIs(fileOrder_[i])) known = static_cast<int>(i);
+                    current = known >= 0 ? known : fileIndex(name);
+                }
+            }
             lines_.push_back({current, 0});
             nextLine = static_cast<int>(n);
             out.append("\n");

@@ -41,6 +41,61 @@ int VaryingLocations::locationOf(const std::string& semanticIn) {
 
 namespace {
 
+// CompilerGLSL with access to its own test of whether GLSL can declare a block's layout.
+class GlslCompiler : public spirv_cross::CompilerGLSL {
+public:
+    using CompilerGLSL::CompilerGLSL;
+    bool glslCanDeclare(const spirv_cross::SPIRType& block) {
+        return buffer_is_packing_standard(block, spirv_cross::BufferPackingStd140) ||
+               buffer_is_packing_standard(block, spirv_cross::BufferPackingStd140EnhancedLayout);
+    }
+};
+
+uint32_t roundUp(uint32_t v, uint32_t to) { return (v + to - 1) / to * to; }
+
+// Re-lays out struct `structId` (a uniform block or a struct inside one) with std140 rules and
+// returns its std140 size. glslang packs a user cbuffer the HLSL way (a vector may start anywhere
+// that keeps it inside one 16-byte register; a member may use the tail of an array's last
+// register), which GLSL cannot always declare; std140 is what glslang uses for $Global. Array and
+// matrix strides are already 16-byte multiples in HLSL, so only offsets (and the strides of
+// arrays of re-laid-out structs) change.
+uint32_t relayoutStd140(GlslCompiler& c, uint32_t structId) {
+    const spirv_cross::SPIRType& type = c.get_type(structId);
+    uint32_t offset = 0;
+    for (uint32_t i = 0; i < type.member_types.size(); ++i) {
+        uint32_t memberTypeId = type.member_types[i];
+        const spirv_cross::SPIRType& mt = c.get_type(memberTypeId);
+        uint32_t align = 16, size = 0;
+        if (!mt.array.empty()) {
+            uint32_t stride = c.type_struct_member_array_stride(type, i);
+            if (mt.basetype == spirv_cross::SPIRType::Struct) {
+                uint32_t elementSize = roundUp(relayoutStd140(c, mt.self), 16);
+                if (elementSize > stride) {
+                    stride = elementSize;
+                    c.set_decoration(memberTypeId, spv::DecorationArrayStride, stride);
+                }
+            }
+            uint32_t count = 1;
+            for (uint32_t d = 0; d < mt.array.size(); ++d) count *= mt.array_size_literal[d] ? mt.array[d] : c.get_constant(mt.array[d]).scalar();
+            size = std::max(stride, 16u) * count;
+        } else if (mt.basetype == spirv_cross::SPIRType::Struct) {
+            size = roundUp(relayoutStd140(c, mt.self), 16);
+        } else if (mt.columns > 1) {
+            uint32_t stride = c.type_struct_member_matrix_stride(type, i);
+            bool rowMajor = c.has_member_decoration(structId, i, spv::DecorationRowMajor);
+            size = std::max(stride, 16u) * (rowMajor ? mt.vecsize : mt.columns);
+        } else {
+            uint32_t component = std::max(1u, mt.width / 8);
+            size = component * mt.vecsize;
+            align = mt.vecsize == 1 ? component : mt.vecsize == 2 ? 2 * component : 4 * component;
+        }
+        offset = roundUp(offset, align);
+        c.set_member_decoration(structId, i, spv::DecorationOffset, offset);
+        offset += size;
+    }
+    return offset;
+}
+
 TextureKind kindOfImage(const spirv_cross::SPIRType& t) {
     switch (t.image.dim) {
     case spv::Dim1D: return TextureKind::Texture1D;
@@ -56,10 +111,17 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
                        VaryingLocations& varyings) {
     GlslShader out;
     try {
-        spirv_cross::CompilerGLSL compiler(std::move(spirv));
+        GlslCompiler compiler(std::move(spirv));
         compiler.build_dummy_sampler_for_combined_images();
         compiler.build_combined_image_samplers();
         spirv_cross::ShaderResources res = compiler.get_shader_resources();
+        spirv_cross::CompilerGLSL::Options options = compiler.get_common_options();
+        options.version = 450;
+        options.es = false;
+        options.separate_shader_objects = true;  // program pipelines: any VS with any PS
+        options.vertex.fixup_clipspace = false;  // D3D's z in [0, w] is kept: the runtime uses glClipControl
+        options.vertex.flip_vert_y = false;      // and an upper-left origin, so no flip either
+        compiler.set_common_options(options);
 
         // ---- uniform blocks
         for (const auto& ubo : res.uniform_buffers) {
@@ -69,19 +131,21 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
                 compiler.set_decoration(ubo.id, spv::DecorationBinding, 1);
                 continue;
             }
+            UniformBlockLayout block;
+            block.name = blockName;
             if (blockName != "$Global") {
                 // User cbuffers: binding 2 + their declaration order in the effect, the same in
                 // every stage whichever cbuffers a stage happens to use.
-                uint32_t order = 0;
                 const auto& names = effect.syntax->cbuffers;
                 auto it = std::find(names.begin(), names.end(), blockName);
-                order = it == names.end() ? static_cast<uint32_t>(names.size()) : static_cast<uint32_t>(it - names.begin());
-                compiler.set_decoration(ubo.id, spv::DecorationBinding, 2 + order);
-                continue;
+                block.index = 1 + static_cast<int>(it - names.begin());  // one past the end: unknown, still distinct
             }
-            compiler.set_decoration(ubo.id, spv::DecorationBinding, 0);
+            compiler.set_decoration(ubo.id, spv::DecorationBinding, block.index == 0 ? 0u : static_cast<uint32_t>(1 + block.index));
             const spirv_cross::SPIRType& type = compiler.get_type(ubo.base_type_id);
-            out.globalSize = static_cast<int>(compiler.get_declared_struct_size(type));
+            if (!compiler.glslCanDeclare(type)) relayoutStd140(compiler, ubo.base_type_id);
+            // std140 pads a block to a 16-byte multiple (GL_BUFFER_DATA_SIZE counts the padding,
+            // and a bound buffer must be at least that big); D3D sizes cbuffers the same way.
+            block.size = static_cast<int>(roundUp(static_cast<uint32_t>(compiler.get_declared_struct_size(type)), 16));
             for (uint32_t i = 0; i < type.member_types.size(); ++i) {
                 UniformMember m;
                 m.name = compiler.get_member_name(ubo.base_type_id, i);
@@ -94,12 +158,13 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
                     m.hlslRowMajor = !compiler.has_member_decoration(ubo.base_type_id, i, spv::DecorationRowMajor);
                 }
                 if (!mt.array.empty()) m.arrayStride = static_cast<int>(compiler.type_struct_member_array_stride(type, i));
-                out.globalMembers.push_back(m);
+                block.members.push_back(m);
             }
             for (const auto& range : compiler.get_active_buffer_ranges(ubo.id)) {
                 out.membersRead.push_back(compiler.get_member_name(ubo.base_type_id, range.index));
-                out.rangesRead.push_back({static_cast<int>(range.offset), static_cast<int>(range.range)});
+                out.rangesRead.push_back({static_cast<int>(range.offset), static_cast<int>(range.range), block.index});
             }
+            out.blocks.push_back(std::move(block));
         }
 
         // ---- samplers: DX9 combined samplers keep their names; DX10 pairs get one per pair
@@ -191,13 +256,6 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
                 out.outputTargets = std::max(out.outputTargets, static_cast<int>(compiler.get_decoration(r.id, spv::DecorationLocation)) + 1);
         }
 
-        spirv_cross::CompilerGLSL::Options options = compiler.get_common_options();
-        options.version = 450;
-        options.es = false;
-        options.separate_shader_objects = true;  // program pipelines: any VS with any PS
-        options.vertex.fixup_clipspace = false;  // D3D's z in [0, w] is kept: the runtime uses glClipControl
-        options.vertex.flip_vert_y = false;      // and an upper-left origin, so no flip either
-        compiler.set_common_options(options);
         out.glsl = compiler.compile();
         out.writesDepth = out.glsl.find("gl_FragDepth") != std::string::npos;
     } catch (const std::exception& e) {

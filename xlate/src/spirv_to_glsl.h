@@ -1,6 +1,9 @@
 // Step 4b/5: SPIR-V -> GLSL 4.50 core with SPIRV-Cross, plus reflection of what the shader uses.
 // Here the D3D conventions that live in bindings and locations are fixed:
-//   - the effect's constant buffer ($Global) is UBO binding 0, fxport's internal block binding 1;
+//   - the effect's constant buffer ($Global) is UBO binding 0, fxport's internal block binding 1,
+//     user cbuffers 2 + their declaration order; a cbuffer whose HLSL packing GLSL cannot declare
+//     (a float3 right after a float, a scalar in the tail of an array's last register) is re-laid
+//     out with std140 rules, the rules glslang already uses for $Global;
 //   - a sampler's binding is its texture unit (DX9 register / DX10 texture register);
 //   - a varying's location is a fixed function of its semantic (TEXCOORDn -> n, COLORn -> 16+n ...),
 //     so any vertex and pixel shader with matching semantics link, whichever effect they come from;
@@ -34,14 +37,21 @@ struct UniformMember {
     bool hlslRowMajor = false;  // HLSL packing (SPIR-V decorates the transposed matrix)
 };
 
+// A uniform block as one shader declares it ($Global or a user cbuffer; not fxport's internal one).
+struct UniformBlockLayout {
+    std::string name;
+    int index = 0;  // in CompiledEffect::uniformBlocks: $Global 0, cbuffer k (declaration order) 1 + k
+    int size = 0;
+    std::vector<UniformMember> members;
+};
+
 struct GlslShader {
     std::string glsl;
     std::string error;  // non-empty = failed
     std::vector<VertexInput> inputs;
     std::vector<SamplerBinding> samplers;
-    std::vector<UniformMember> globalMembers;  // layout of $Global as this shader sees it
-    int globalSize = 0;
-    std::vector<std::string> membersRead;      // $Global members with active ranges
+    std::vector<UniformBlockLayout> blocks;  // the blocks this shader reads, as it declares them
+    std::vector<std::string> membersRead;    // block members with active ranges (any block)
     std::vector<UniformRange> rangesRead;
     int outputTargets = 0;
     bool writesDepth = false;

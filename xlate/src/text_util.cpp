@@ -39,6 +39,27 @@ bool startsWithI(std::string_view s, std::string_view prefix) {
     return s.size() >= prefix.size() && iequals(s.substr(0, prefix.size()), prefix);
 }
 
+std::string toValidUtf8(std::string_view s) {
+    std::string out;
+    out.reserve(s.size());
+    size_t i = 0;
+    while (i < s.size()) {
+        auto c = static_cast<unsigned char>(s[i]);
+        size_t extra = c < 0x80 ? 0 : (c & 0xE0) == 0xC0 && c >= 0xC2 ? 1 : (c & 0xF0) == 0xE0 ? 2 : (c & 0xF8) == 0xF0 && c <= 0xF4 ? 3 : 4;
+        bool valid = extra < 4 && i + extra < s.size();
+        for (size_t k = 1; valid && k <= extra; ++k) valid = (static_cast<unsigned char>(s[i + k]) & 0xC0) == 0x80;
+        if (valid) {
+            out.append(s.substr(i, extra + 1));
+            i += extra + 1;
+        } else {  // Latin-1: U+0080..U+00FF as two bytes
+            out += static_cast<char>(0xC0 | (c >> 6));
+            out += static_cast<char>(0x80 | (c & 0x3F));
+            ++i;
+        }
+    }
+    return out;
+}
+
 std::optional<std::string> readFile(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) return std::nullopt;
@@ -48,14 +69,32 @@ std::optional<std::string> readFile(const std::string& path) {
     return ss.str();
 }
 
-std::string hashHex(std::string_view data) {
-    std::uint64_t h = 1469598103934665603ull;
+namespace {
+std::uint64_t fnv1a(std::string_view data, std::uint64_t h) {
     for (unsigned char c : data) {
         h ^= c;
         h *= 1099511628211ull;
     }
+    return h;
+}
+}  // namespace
+
+std::string hashHex(std::string_view data) {
     char buf[17];
-    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(fnv1a(data, 1469598103934665603ull)));
+    return buf;
+}
+
+std::string contentHash(std::string_view data) {
+    // FNV-1a from two offset bases, the second also over the length: two 64-bit hashes in one pass.
+    std::uint64_t a = 1469598103934665603ull, b = 0x9ae16a3b2f90404full ^ data.size();
+    for (unsigned char c : data) {
+        a = (a ^ c) * 1099511628211ull;
+        b = (b ^ c) * 0x100000001b3ull;
+        b ^= b >> 29;
+    }
+    char buf[33];
+    std::snprintf(buf, sizeof buf, "%016llx%016llx", static_cast<unsigned long long>(a), static_cast<unsigned long long>(b));
     return buf;
 }
 

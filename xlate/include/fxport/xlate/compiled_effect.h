@@ -54,10 +54,13 @@ struct Parameter {
     bool rowMajor = false; // HLSL packing: false = column_major (the HLSL default)
     bool isStatic = false; // `static`/`const` globals are not parameters of the constant buffer
 
-    // Placement in the effect's uniform buffer ($Global); offset < 0 when the parameter is not in it
-    // (objects, statics). For a matrix, element [r][c] (HLSL indexing) lives at
+    // Placement in a uniform block: CompiledEffect::uniformBlocks[block] ($Global is block 0, a
+    // user `cbuffer` is 1 + its declaration order). offset < 0 when the parameter is in no block
+    // (objects, statics) or no shader of the effect reads its block (then `block` still names it).
+    // For a matrix, element [r][c] (HLSL indexing) lives at
     //   offset + (rowMajor ? r*matrixStride + c*4 : c*matrixStride + r*4)
-    // and array element i at offset + i*arrayStride.
+    // and array element i at offset + i*arrayStride (all in bytes from the start of the block).
+    int block = 0;
     int offset = -1;
     int size = 0;
     int matrixStride = 0;
@@ -111,9 +114,19 @@ struct VertexInput {
     bool isInteger = false;
 };
 
-struct UniformRange {  // a byte range of the uniform buffer this shader actually reads
+struct UniformRange {  // a byte range of a uniform block this shader actually reads
     int offset = 0;
     int size = 0;
+    int block = 0;    // index into CompiledEffect::uniformBlocks
+};
+
+// One GL uniform block of the effect. The layout is what the generated GLSL declares (std140, with
+// explicit member offsets where glslang kept HLSL cbuffer packing that GLSL can express); parameter
+// offsets are relative to the block's start.
+struct UniformBlock {
+    std::string name;  // "$Global" or the cbuffer's name
+    int binding = 0;   // GL uniform-buffer binding: $Global 0, user cbuffers 2 + declaration order
+    int size = 0;      // bytes; 0 when no shader of the effect reads the block
 };
 
 struct CompiledShader {
@@ -205,7 +218,10 @@ struct CompiledEffect {
     std::vector<Technique> techniques;
     std::vector<Parameter> parameters;
     std::vector<CompiledShader> shaders;
-    int uniformBufferSize = 0;  // bytes of $Global (shared by every shader of the effect)
+    // [0] is $Global, then every user cbuffer in declaration order (binding 1 is fxport's internal
+    // block, which is not listed: see CompiledShader::needsD3D9PixelOffset).
+    std::vector<UniformBlock> uniformBlocks;
+    int uniformBufferSize = 0;  // bytes of $Global, the same as uniformBlocks[0].size
     // Errors confined to a pass (the pass has valid=false) and warnings.
     std::vector<Diagnostic> diagnostics;
 

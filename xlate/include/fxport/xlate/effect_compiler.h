@@ -30,7 +30,9 @@ struct CompileOptions {
     // With this set, such passes are kept with valid=false and the rest of the effect is returned.
     bool keepValidPasses = false;
     // Result cache. Empty = the default folder ($FXPORT_CACHE_DIR, else $XDG_CACHE_HOME/fxport,
-    // else ~/.cache/fxport). Set useCache=false to always compile.
+    // else ~/.cache/fxport). Set useCache=false to always compile. An entry is found by the raw
+    // bytes of the .fx and these options (no preprocessing) and used only while every file it
+    // #included still has the same content.
     std::string cacheDir;
     bool useCache = true;
     // Keep the rewritten HLSL of each shader in CompiledShader::hlslAfterRewrite. Also turned on

@@ -3,18 +3,20 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 #include "fxport/xlate/compiled_effect.h"
 
 namespace fxport::xlate {
 
 // Format version of the file; bump when the layout changes.
-inline constexpr int kEffectFileVersion = 1;
+inline constexpr int kEffectFileVersion = 2;  // 2: uniformBlocks, Parameter::block, ranges per block
 
-std::string serializeEffect(const CompiledEffect& effect);
+// `compact` leaves out the indentation (what the compile cache stores); both forms load alike.
+std::string serializeEffect(const CompiledEffect& effect, bool compact = false);
 // Throws CompileError (id FX3101) naming `nameForErrors` if the text is not a compiled effect of
 // this version.
-CompiledEffect deserializeEffect(const std::string& text, const std::string& nameForErrors);
+CompiledEffect deserializeEffect(std::string_view text, const std::string& nameForErrors);
 
 void saveEffectFile(const CompiledEffect& effect, const std::string& path);
 CompiledEffect loadEffectFile(const std::string& path);
