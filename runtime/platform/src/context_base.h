@@ -19,6 +19,8 @@ public:
     void swapBuffers() override {}
     bool shouldClose() const override { return false; }
     void pollEvents() override {}
+    bool isKeyDown(int) const override { return false; }
+    MouseInput mouse() const override { return {}; }
     int width() const override { return width_; }
     int height() const override { return height_; }
     std::string rendererName() const override { return rendererName_; }

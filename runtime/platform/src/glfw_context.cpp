@@ -26,6 +26,36 @@ std::string lastGlfwError() {
 
 int g_liveWindows = 0;  // glfwInit with the first window, glfwTerminate after the last
 
+// Windows virtual-key code (XNA's Keys) -> GLFW key. Letters, digits and space coincide.
+int glfwKeyFor(int vk) {
+    if ((vk >= 'A' && vk <= 'Z') || (vk >= '0' && vk <= '9') || vk == ' ') return vk;
+    if (vk >= 0x70 && vk <= 0x7B) return GLFW_KEY_F1 + (vk - 0x70);        // F1..F12
+    if (vk >= 0x60 && vk <= 0x69) return GLFW_KEY_KP_0 + (vk - 0x60);      // NumPad0..9
+    switch (vk) {
+    case 0x1B: return GLFW_KEY_ESCAPE;
+    case 0x0D: return GLFW_KEY_ENTER;
+    case 0x09: return GLFW_KEY_TAB;
+    case 0x08: return GLFW_KEY_BACKSPACE;
+    case 0x25: return GLFW_KEY_LEFT;
+    case 0x26: return GLFW_KEY_UP;
+    case 0x27: return GLFW_KEY_RIGHT;
+    case 0x28: return GLFW_KEY_DOWN;
+    case 0x21: return GLFW_KEY_PAGE_UP;
+    case 0x22: return GLFW_KEY_PAGE_DOWN;
+    case 0xA0: return GLFW_KEY_LEFT_SHIFT;
+    case 0xA1: return GLFW_KEY_RIGHT_SHIFT;
+    case 0xA2: return GLFW_KEY_LEFT_CONTROL;
+    case 0xA3: return GLFW_KEY_RIGHT_CONTROL;
+    case 0xA4: return GLFW_KEY_LEFT_ALT;
+    case 0xA5: return GLFW_KEY_RIGHT_ALT;
+    case 0xBB: return GLFW_KEY_EQUAL;
+    case 0xBD: return GLFW_KEY_MINUS;
+    default: return GLFW_KEY_UNKNOWN;
+    }
+}
+
+double g_scroll = 0;  // accumulated by the scroll callback (one window is the usual case)
+
 class GLFWGraphicsContext final : public ContextBase {
 public:
     explicit GLFWGraphicsContext(const ContextDesc& desc)
@@ -47,6 +77,7 @@ public:
             throw std::runtime_error("glfw: could not open a window with an OpenGL 4.5 core context: " + why);
         }
         ++g_liveWindows;
+        glfwSetScrollCallback(window_, [](GLFWwindow*, double, double dy) { g_scroll += dy; });
     }
 
     ~GLFWGraphicsContext() override {
@@ -58,6 +89,22 @@ public:
     void swapBuffers() override { glfwSwapBuffers(window_); }
     bool shouldClose() const override { return glfwWindowShouldClose(window_) != 0; }
     void pollEvents() override { glfwPollEvents(); }
+    bool isKeyDown(int virtualKey) const override {
+        int key = glfwKeyFor(virtualKey);
+        return key != GLFW_KEY_UNKNOWN && glfwGetKey(window_, key) == GLFW_PRESS;
+    }
+    MouseInput mouse() const override {
+        MouseInput m;
+        double x = 0, y = 0;
+        glfwGetCursorPos(window_, &x, &y);
+        m.x = int(x);
+        m.y = int(y);
+        m.left = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+        m.right = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+        m.middle = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
+        m.scrollWheel = int(g_scroll * 120);
+        return m;
+    }
     // The window may have been resized (and on HiDPI screens pixels differ from screen units).
     int width() const override { return framebufferSize().first; }
     int height() const override { return framebufferSize().second; }

@@ -31,6 +31,13 @@ struct ContextDesc {
     bool vsync = false;
 };
 
+// Mouse position in window pixels (top-left origin) and buttons; all zero headless.
+struct MouseInput {
+    int x = 0, y = 0;
+    bool left = false, right = false, middle = false;
+    int scrollWheel = 0;  // accumulated, 120 per notch as in Windows/XNA
+};
+
 // One GL context and its default framebuffer. Creating one makes it current and loads the GL
 // functions. fxport drives GL from a single thread: contexts may be created, made current and
 // destroyed only on that thread.
@@ -56,6 +63,10 @@ public:
     virtual bool shouldClose() const = 0;
     // Processes window events; no-op headless.
     virtual void pollEvents() = 0;
+    // Keyboard and mouse of the window (GLFW); always up/zero headless. Keys are Windows
+    // virtual-key codes, which are XNA's Keys values ('A' = 65, F1 = 112, Escape = 27 ...).
+    virtual bool isKeyDown(int virtualKey) const = 0;
+    virtual MouseInput mouse() const = 0;
     // Size of the default framebuffer in pixels (a window's current size).
     virtual int width() const = 0;
     virtual int height() const = 0;

@@ -1,0 +1,223 @@
+// Effect: a .fx file run the way the XNA 4 / D3D effect framework runs it.
+//
+//   Effect gbuffer(device, "hlsl/xna-deferred/GBuffer.fx");   // compiled by xlate, cached
+//   gbuffer.Parameters["World"].SetValue(world);
+//   gbuffer.CurrentTechnique = gbuffer.Techniques["Technique1"];
+//   gbuffer.CurrentTechnique->Passes[0].Apply();               // program, constants, textures, states
+//   device.DrawIndexedPrimitives(...);
+//
+// Apply() binds the pass's shaders (a stage the pass does not assign keeps what was bound, as on
+// D3D9: a pixel-shader-only pass runs with SpriteBatch's vertex shader), uploads the constants that
+// changed since the last Apply, sets Textures[unit] from texture parameters and merges the effect's
+// sampler_state over SamplerStates[unit], and applies the pass's render states to the device's
+// BlendState/DepthStencilState/RasterizerState. Device states set after Apply() win, as in XNA.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "fxport/graphics/graphics_resource.h"
+#include "fxport/math.h"
+
+namespace fxport::xlate {
+struct CompiledEffect;
+}
+
+namespace fxport {
+
+class Effect;
+class Texture;
+class Texture2D;
+class TextureCube;
+
+enum class EffectParameterClass : std::uint8_t { Scalar, Vector, Matrix, Object, Struct };
+enum class EffectParameterType : std::uint8_t {
+    Void, Bool, Int32, Single, String, Texture, Texture1D, Texture2D, Texture3D, TextureCube, Sampler,
+};
+
+struct EffectAnnotation {
+    std::string Name;
+    std::string ParameterType;  // "string", "float", ...
+    std::string Value;          // as written in the source
+};
+
+class EffectParameter {
+public:
+    const std::string& Name() const;
+    const std::string& Semantic() const;
+    EffectParameterClass ParameterClass() const;
+    EffectParameterType ParameterType() const;
+    int RowCount() const;
+    int ColumnCount() const;
+    int ElementCount() const;  // 0 when not an array
+    const std::vector<EffectAnnotation>& Annotations() const;
+
+    // Each setter checks the parameter's class, type and size and throws ArgumentError naming the
+    // effect, the parameter, its HLSL type and what was passed. Values are written to the effect's
+    // constant buffer shadow; the next Apply() uploads what changed.
+    void SetValue(bool value);
+    void SetValue(int value);
+    void SetValue(float value);
+    void SetValue(const Vector2& value);
+    void SetValue(const Vector3& value);
+    void SetValue(const Vector4& value);
+    void SetValue(const Quaternion& value);
+    // XNA matrices: HLSL sees M[r][c] = XNA M(r+1)(c+1), for column_major and row_major alike. A
+    // float3x3 / float4x3 parameter takes the top-left part.
+    void SetValue(const Matrix& value);
+    void SetValueTranspose(const Matrix& value);
+    void SetValue(std::span<const float> values);
+    void SetValue(std::span<const int> values);
+    void SetValue(std::span<const Vector2> values);
+    void SetValue(std::span<const Vector3> values);
+    void SetValue(std::span<const Vector4> values);
+    void SetValue(std::span<const Matrix> values);
+    void SetValue(const std::vector<float>& values) { SetValue(std::span<const float>(values)); }
+    void SetValue(const std::vector<Vector2>& values) { SetValue(std::span<const Vector2>(values)); }
+    void SetValue(const std::vector<Vector3>& values) { SetValue(std::span<const Vector3>(values)); }
+    void SetValue(const std::vector<Vector4>& values) { SetValue(std::span<const Vector4>(values)); }
+    void SetValue(const std::vector<Matrix>& values) { SetValue(std::span<const Matrix>(values)); }
+    // Textures (nullptr unbinds). The texture must outlive its use or be disposed (which clears it).
+    void SetValue(Texture* texture);
+    void SetValue(Texture& texture) { SetValue(&texture); }
+    template <class T> void SetValue(const std::unique_ptr<T>& texture) { SetValue(static_cast<Texture*>(texture.get())); }
+    template <class T> void SetValue(const std::shared_ptr<T>& texture) { SetValue(static_cast<Texture*>(texture.get())); }
+
+    bool GetValueBoolean() const;
+    int GetValueInt32() const;
+    float GetValueSingle() const;
+    Vector2 GetValueVector2() const;
+    Vector3 GetValueVector3() const;
+    Vector4 GetValueVector4() const;
+    Matrix GetValueMatrix() const;
+    std::vector<float> GetValueSingleArray() const;   // every float of the parameter, row by row
+    std::vector<Matrix> GetValueMatrixArray(int count) const;
+    std::string GetValueString() const;
+    Texture* GetValueTexture() const;
+    Texture2D* GetValueTexture2D() const;
+    TextureCube* GetValueTextureCube() const;
+
+    int index() const { return index_; }
+
+private:
+    friend class Effect;
+    EffectParameter(Effect* effect, int index) : effect_(effect), index_(index) {}
+    Effect* effect_;
+    int index_;
+};
+
+class EffectParameterCollection {
+public:
+    // Throws ArgumentError naming the effect and listing its parameters when `name` is unknown.
+    EffectParameter& operator[](const std::string& name);
+    EffectParameter& operator[](int index);
+    // nullptr when absent (XNA's Parameters["x"] == null check).
+    EffectParameter* find(const std::string& name);
+    int Count() const { return int(items_.size()); }
+    auto begin() { return items_.begin(); }
+    auto end() { return items_.end(); }
+
+private:
+    friend class Effect;
+    Effect* effect_ = nullptr;
+    std::vector<EffectParameter> items_;
+};
+
+class EffectPass {
+public:
+    const std::string& Name() const { return name_; }
+    const std::vector<EffectAnnotation>& Annotations() const { return annotations_; }
+    void Apply();
+
+private:
+    friend class Effect;
+    EffectPass(Effect* effect, int technique, int pass, std::string name, std::vector<EffectAnnotation> annotations)
+        : effect_(effect), technique_(technique), pass_(pass), name_(std::move(name)), annotations_(std::move(annotations)) {}
+    Effect* effect_;
+    int technique_;
+    int pass_;
+    std::string name_;
+    std::vector<EffectAnnotation> annotations_;
+};
+
+class EffectPassCollection {
+public:
+    EffectPass& operator[](int index);
+    EffectPass& operator[](const std::string& name);
+    int Count() const { return int(items_.size()); }
+    auto begin() { return items_.begin(); }
+    auto end() { return items_.end(); }
+
+private:
+    friend class Effect;
+    std::string owner_;
+    std::vector<EffectPass> items_;
+};
+
+class EffectTechnique {
+public:
+    const std::string& Name() const { return name_; }
+    const std::vector<EffectAnnotation>& Annotations() const { return annotations_; }
+    EffectPassCollection Passes;
+
+private:
+    friend class Effect;
+    std::string name_;
+    std::vector<EffectAnnotation> annotations_;
+};
+
+class EffectTechniqueCollection {
+public:
+    // Pointers, as C# references: effect.CurrentTechnique = effect.Techniques["Shadow"];
+    EffectTechnique* operator[](int index);
+    EffectTechnique* operator[](const std::string& name);
+    int Count() const { return int(items_.size()); }
+
+private:
+    friend class Effect;
+    std::string owner_;
+    std::vector<std::unique_ptr<EffectTechnique>> items_;
+};
+
+struct EffectOptions {
+    std::vector<std::string> includeDirs;                        // extra #include folders
+    std::vector<std::pair<std::string, std::string>> defines;    // -D NAME=VALUE
+    std::vector<std::string> techniques;                         // compile only these; empty = all
+    bool useCache = true;                                        // xlate's content-hash cache
+    std::string cacheDir;                                        // empty = xlate's default
+};
+
+class Effect : public GraphicsResource {
+public:
+    // Compiles `fxPath` through xlate (cached). Throws xlate::CompileError with file:line diagnostics.
+    Effect(fxport::GraphicsDevice& device, const std::string& fxPath, const EffectOptions& options = {});
+    // From an effect already compiled (e.g. read from a compiled-effect file).
+    Effect(fxport::GraphicsDevice& device, const xlate::CompiledEffect& compiled);
+    // Reads a compiled-effect file written by `fxport compile`.
+    static std::unique_ptr<Effect> FromCompiledFile(fxport::GraphicsDevice& device, const std::string& path);
+    ~Effect() override;
+
+    EffectParameterCollection Parameters;
+    EffectTechniqueCollection Techniques;
+    EffectTechnique* CurrentTechnique = nullptr;
+
+    const xlate::CompiledEffect& compiled() const;
+    // The source path (for messages).
+    const std::string& sourcePath() const;
+
+    struct Impl;
+    Impl& impl() { return *impl_; }
+
+protected:
+    void releaseGpuObjects() override;
+
+private:
+    void build();
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace fxport

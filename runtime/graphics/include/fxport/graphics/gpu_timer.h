@@ -1,0 +1,57 @@
+// GpuTimer: GPU time of named sections of a frame (e.g. one per render pass), measured with GL
+// timestamp queries and read back a few frames later so measuring does not stall the pipeline.
+//
+//   GpuTimer timer(device);
+//   for each frame: timer.Begin("GBuffer"); ...draws...; timer.End(); ...; timer.EndFrame();
+//   timer.Finish();  for (auto& s : timer.Sections()) print(s.name, s.medianMs());
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace fxport {
+
+class GraphicsDevice;
+
+class GpuTimer {
+public:
+    struct Section {
+        std::string name;
+        std::vector<double> milliseconds;  // one entry per frame in which the section ran
+        double medianMs() const;
+    };
+
+    explicit GpuTimer(GraphicsDevice& device);
+    ~GpuTimer();
+    GpuTimer(const GpuTimer&) = delete;
+    GpuTimer& operator=(const GpuTimer&) = delete;
+
+    // Sections may nest; each Begin needs its End.
+    void Begin(const std::string& name);
+    void End();
+    // Marks the end of a frame: records the frame's total and collects results that are ready.
+    void EndFrame();
+    // Waits for every outstanding query and collects it (call before reading Sections()).
+    void Finish();
+
+    // In order of first appearance; the frame total is the section "frame".
+    const std::vector<Section>& Sections() const { return sections_; }
+
+private:
+    struct Pending;
+    void collect(bool wait);
+    std::uint32_t newQuery();
+    int sectionIndex(const std::string& name);
+
+    GraphicsDevice& device_;
+    std::vector<Section> sections_;
+    std::vector<std::unique_ptr<Pending>> pending_;
+    std::vector<std::unique_ptr<Pending>> open_;
+    std::vector<std::uint32_t> freeQueries_;
+    std::vector<std::uint32_t> allQueries_;
+    std::uint32_t frameStart_ = 0;
+};
+
+}  // namespace fxport

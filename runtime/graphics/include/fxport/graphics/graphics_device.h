@@ -1,0 +1,202 @@
+// GraphicsDevice: XNA 4's device over OpenGL 4.5, with D3D's conventions (see docs/DESIGN.md,
+// "D3D semantics on GL"): NDC depth [0,1], render targets stored top row first, D3D9 pixel centres
+// for SM1-3 vertex shaders, XNA culling, Textures[]/SamplerStates[] slots by sampler register.
+//
+// State is set the XNA way, by assigning public members (device.BlendState = BlendState::Additive;
+// device.Textures[0] = rt;). Setting only records the wish; the next draw compares each state with
+// what GL has and calls GL only for what differs (FNA's model).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fxport/graphics/blend_state.h"
+#include "fxport/graphics/depth_stencil_state.h"
+#include "fxport/graphics/rasterizer_state.h"
+#include "fxport/graphics/render_target.h"
+#include "fxport/graphics/sampler_state.h"
+#include "fxport/graphics/surface_format.h"
+#include "fxport/graphics/vertex_buffer.h"
+#include "fxport/graphics/viewport.h"
+#include "fxport/math.h"
+
+namespace fxport::platform {
+class GraphicsContext;
+}
+
+namespace fxport {
+
+class Effect;
+
+enum class PrimitiveType : std::uint8_t { TriangleList, TriangleStrip, LineList, LineStrip, PointList };
+
+enum class ClearOptions : std::uint8_t { Target = 1, DepthBuffer = 2, Stencil = 4 };
+constexpr ClearOptions operator|(ClearOptions a, ClearOptions b) { return ClearOptions(std::uint8_t(a) | std::uint8_t(b)); }
+
+struct PresentationParameters {
+    int BackBufferWidth = 800;
+    int BackBufferHeight = 480;
+    SurfaceFormat BackBufferFormat = SurfaceFormat::Color;
+    DepthFormat DepthStencilFormat = DepthFormat::Depth24Stencil8;
+    // fxport: where the GL context comes from: "osmesa" (CPU, headless; the default), "egl" (GPU,
+    // headless), "glfw" (a window). Empty = $FXPORT_PLATFORM, else osmesa.
+    std::string platform;
+    bool debug = false;          // GL debug context; driver messages go to stderr
+    std::string windowTitle;     // GLFW only
+};
+
+// Number of sampler/texture slots (D3D9 has 16 pixel samplers).
+inline constexpr int kMaxTextureSlots = 16;
+inline constexpr int kMaxRenderTargets = 4;
+
+// device.Textures[2] = texture; accepts Texture*, Texture&, unique_ptr and shared_ptr.
+class TextureSlot {
+public:
+    TextureSlot& operator=(Texture* texture) { texture_ = texture; return *this; }
+    TextureSlot& operator=(Texture& texture) { texture_ = &texture; return *this; }
+    TextureSlot& operator=(std::nullptr_t) { texture_ = nullptr; return *this; }
+    template <class T> TextureSlot& operator=(const std::unique_ptr<T>& t) { texture_ = t.get(); return *this; }
+    template <class T> TextureSlot& operator=(const std::shared_ptr<T>& t) { texture_ = t.get(); return *this; }
+    operator Texture*() const { return texture_; }
+    Texture* get() const { return texture_; }
+
+private:
+    Texture* texture_ = nullptr;
+};
+
+class TextureCollection {
+public:
+    TextureSlot& operator[](int slot);
+    const TextureSlot& operator[](int slot) const;
+
+private:
+    std::array<TextureSlot, kMaxTextureSlots> slots_{};
+};
+
+class SamplerStateCollection {
+public:
+    SamplerStateCollection();
+    fxport::SamplerState& operator[](int slot);
+    const fxport::SamplerState& operator[](int slot) const;
+
+private:
+    std::array<fxport::SamplerState, kMaxTextureSlots> slots_;
+};
+
+// Live GL objects made by this device (textures, renderbuffers, buffers, programs, pipelines,
+// framebuffers, vertex arrays, queries): what the resource-lifetime test checks returns to zero.
+struct GpuObjectCounts {
+    int textures = 0, renderbuffers = 0, buffers = 0, programs = 0, pipelines = 0, framebuffers = 0,
+        vertexArrays = 0, queries = 0;
+    int total() const { return textures + renderbuffers + buffers + programs + pipelines + framebuffers + vertexArrays + queries; }
+};
+
+class GraphicsDevice {
+public:
+    explicit GraphicsDevice(const fxport::PresentationParameters& parameters = {});
+    ~GraphicsDevice();
+    GraphicsDevice(const GraphicsDevice&) = delete;
+    GraphicsDevice& operator=(const GraphicsDevice&) = delete;
+
+    // --- state (recorded; applied at the next draw or clear). Member names are XNA's; the types
+    // are spelled fxport:: because each member is named like its type.
+    fxport::BlendState BlendState;
+    fxport::DepthStencilState DepthStencilState;
+    fxport::RasterizerState RasterizerState;
+    TextureCollection Textures;
+    SamplerStateCollection SamplerStates;
+    IndexBuffer* Indices = nullptr;
+    Rectangle ScissorRectangle;
+    // Reset to the whole target by SetRenderTarget(s), as in XNA.
+    fxport::Viewport Viewport;
+
+    void SetVertexBuffer(VertexBuffer* buffer, int vertexOffset = 0);
+    void SetVertexBuffer(VertexBuffer& buffer, int vertexOffset = 0) { SetVertexBuffer(&buffer, vertexOffset); }
+
+    // nullptr = the back buffer. Targets must all have the same size (D3D9's rule); the depth buffer
+    // is the first target's. Throws ArgumentError naming the target otherwise.
+    void SetRenderTarget(RenderTarget2D* target);
+    void SetRenderTarget(RenderTarget2D& target) { SetRenderTarget(&target); }
+    void SetRenderTarget(RenderTargetCube* target, CubeMapFace face);
+    void SetRenderTarget(RenderTargetCube& target, CubeMapFace face) { SetRenderTarget(&target, face); }
+    void SetRenderTargets(const std::vector<RenderTargetBinding>& bindings);
+    void SetRenderTargets(std::initializer_list<RenderTargetBinding> bindings) {
+        SetRenderTargets(std::vector<RenderTargetBinding>(bindings));
+    }
+    std::vector<RenderTargetBinding> GetRenderTargets() const;
+
+    // Clears every bound target (colour, depth, stencil) inside the viewport, ignoring blend and
+    // write masks the way D3D9 Clear does.
+    void Clear(Color color);
+    void Clear(ClearOptions options, Color color, float depth, int stencil);
+    void Clear(ClearOptions options, Vector4 color, float depth, int stencil);
+
+    // XNA 4 signatures. baseVertex is added to every index; minVertexIndex/numVertices are hints.
+    void DrawIndexedPrimitives(PrimitiveType primitiveType, int baseVertex, int minVertexIndex, int numVertices,
+                               int startIndex, int primitiveCount);
+    void DrawPrimitives(PrimitiveType primitiveType, int vertexStart, int primitiveCount);
+    template <class T>
+    void DrawUserPrimitives(PrimitiveType primitiveType, const T* vertexData, int vertexOffset, int primitiveCount) {
+        drawUser(primitiveType, vertexData + vertexOffset, sizeof(T), T::VertexDeclaration, nullptr, 0, 0, primitiveCount);
+    }
+    template <class T>
+    void DrawUserPrimitives(PrimitiveType primitiveType, const T* vertexData, int vertexOffset, int primitiveCount,
+                            const VertexDeclaration& declaration) {
+        drawUser(primitiveType, vertexData + vertexOffset, sizeof(T), declaration, nullptr, 0, 0, primitiveCount);
+    }
+    template <class T, class I>
+    void DrawUserIndexedPrimitives(PrimitiveType primitiveType, const T* vertexData, int vertexOffset, int numVertices,
+                                   const I* indexData, int indexOffset, int primitiveCount) {
+        static_assert(sizeof(I) == 2 || sizeof(I) == 4, "indices are 16 or 32 bit");
+        drawUserIndexed(primitiveType, vertexData + vertexOffset, sizeof(T), numVertices, T::VertexDeclaration,
+                        indexData + indexOffset, int(sizeof(I)), primitiveCount);
+    }
+    template <class T, class I>
+    void DrawUserIndexedPrimitives(PrimitiveType primitiveType, const T* vertexData, int vertexOffset, int numVertices,
+                                   const I* indexData, int indexOffset, int primitiveCount,
+                                   const VertexDeclaration& declaration) {
+        static_assert(sizeof(I) == 2 || sizeof(I) == 4, "indices are 16 or 32 bit");
+        drawUserIndexed(primitiveType, vertexData + vertexOffset, sizeof(T), numVertices, declaration,
+                        indexData + indexOffset, int(sizeof(I)), primitiveCount);
+    }
+
+    // Shows the back buffer (GLFW: flips it into the window and swaps; headless: no-op).
+    void Present();
+    // The back buffer's pixels, top row first.
+    std::vector<Color> GetBackBufferData() const;
+    void SaveBackBufferAsPng(const std::string& path) const;
+
+    const fxport::PresentationParameters& PresentationParameters() const { return parameters_; }
+    platform::GraphicsContext& context() { return *context_; }
+    std::string rendererName() const;
+    int maxTextureSize() const;
+    GpuObjectCounts liveGpuObjects() const;
+    // Waits until the GPU has finished everything submitted (for timing and tests).
+    void finish();
+    // fxport drives GL from one thread, and the device created last is the current one. With
+    // several devices alive, call makeCurrent() before using another; destroying a device makes
+    // the one created before it current again.
+    void makeCurrent();
+    // The device GL calls currently go to (the last created or made current); nullptr if none.
+    static GraphicsDevice* current();
+
+    struct Impl;
+    Impl& impl() { return *impl_; }
+    const Impl& impl() const { return *impl_; }
+
+private:
+    void drawUser(PrimitiveType type, const void* vertices, std::size_t stride, const VertexDeclaration& declaration,
+                  const void* indices, int indexSize, int vertexCount, int primitiveCount);
+    void drawUserIndexed(PrimitiveType type, const void* vertices, std::size_t stride, int vertexCount,
+                         const VertexDeclaration& declaration, const void* indices, int indexSize, int primitiveCount);
+
+    fxport::PresentationParameters parameters_;
+    std::unique_ptr<platform::GraphicsContext> context_;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace fxport

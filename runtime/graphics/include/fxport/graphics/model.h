@@ -1,0 +1,212 @@
+// Model: XNA 4's Model, loaded from glTF 2.0 (.gltf with its .bin/images, or .glb), so that the
+// tutorials' drawing loops port line by line:
+//
+//   std::unique_ptr<Model> model = Model::Load(device, "content/scene.glb");
+//   std::vector<Matrix> transforms(model->Bones.Count());
+//   model->CopyAbsoluteBoneTransformsTo(transforms);
+//   for (ModelMesh& mesh : model->Meshes) {
+//       for (ModelMeshPart& part : mesh.MeshParts) {
+//           device.SetVertexBuffer(part.VertexBuffer, part.VertexOffset);
+//           device.Indices = part.IndexBuffer;
+//           gbuffer.Parameters["World"].SetValue(transforms[mesh.ParentBone->Index] * world);
+//           gbuffer.Parameters["Texture"].SetValue(part.Effect->Parameters["Texture"].GetValueTexture2D());
+//           gbuffer.CurrentTechnique->Passes[0].Apply();
+//           device.DrawIndexedPrimitives(PrimitiveType::TriangleList, 0, 0, part.NumVertices,
+//                                        part.StartIndex, part.PrimitiveCount);
+//       }
+//   }
+//
+// How glTF becomes an XNA model:
+//  * Bones: one per node of the default scene (else scene 0, else every node that is no node's
+//    child), in depth-first order with children in the order the file lists them, so a parent
+//    always comes before its children. Root is Bones[0]: the scene's single root node, or, when the
+//    scene has several (or none), an added bone with an identity transform named after the scene
+//    ("Root" when the scene has no name) whose children are the scene's root nodes. Nodes outside
+//    the scene are not loaded.
+//  * ModelBone::Transform is the node's local transform as an XNA (row-vector) matrix: a node
+//    `matrix` is read as written (glTF's column-major array of a column-vector matrix is, element
+//    for element, the XNA matrix in M11, M12, ... order); translation/rotation/scale become
+//    CreateScale(s) * CreateFromQuaternion(r) * CreateTranslation(t). Absolute transforms follow XNA:
+//    absolute(bone) = bone.Transform * absolute(bone.Parent). glTF and XNA are both right-handed with
+//    +Y up: no axis conversion.
+//  * Meshes: one ModelMesh per node that has a mesh, in bone order; its ParentBone is that node's
+//    bone and its Name the node's name (the glTF mesh's name when the node has none). Nodes that
+//    instance the same glTF mesh share its buffers. One ModelMeshPart per triangle primitive.
+//  * Vertices: ModelVertex below (POSITION0, NORMAL0, TEXCOORD0, TANGENT0, BINORMAL0), what
+//    hlsl/xna-deferred/GBuffer.fx reads. The parts of one glTF mesh share one VertexBuffer and one
+//    IndexBuffer; a part's indices count from its first vertex, so draw with
+//    SetVertexBuffer(part.VertexBuffer, part.VertexOffset) and baseVertex 0 (as above), or with
+//    SetVertexBuffer(part.VertexBuffer) and baseVertex = part.VertexOffset (as XNA's ModelMesh.Draw).
+//    Indices are 16-bit when every part of the mesh has fewer than 65536 vertices, else 32-bit.
+//    Triangle strips and fans become lists; points and lines are refused.
+//  * Winding: glTF's front faces are counter-clockwise, XNA's clockwise (the default
+//    RasterizerState.CullCounterClockwise culls the back). Every triangle's winding is reversed on
+//    load (glTF indices a, b, c become a, c, b), so models draw with XNA's default states.
+//  * Missing normals become flat normals (the triangles are unshared first), as glTF prescribes.
+//  * Tangent frames: with a TANGENT attribute, Tangent = TANGENT.xyz and
+//    Binormal = cross(Normal, TANGENT.xyz) * TANGENT.w (glTF's definition). Without one they are
+//    generated from the texture coordinates (per-triangle UV derivatives, summed per vertex,
+//    Gram-Schmidt against the normal) with the same convention: Tangent points towards increasing u,
+//    Binormal = cross(Normal, Tangent) * w points towards decreasing v, i.e. towards the top of the
+//    image, which is where glTF normal textures put +Y (green up, "OpenGL" normal maps).
+//    DirectX-style normal maps (green down) need their green channel inverted by the content tool.
+//  * Materials: each part gets its own Effect made from runtime/graphics/shaders/ModelMaterial.fx
+//    (compiled once per process). Its texture parameters hold the part's textures:
+//        "Texture"     <- pbrMetallicRoughness.baseColorTexture            (default: 1x1 white)
+//        "NormalMap"   <- normalTexture                                    (default: 1x1 (128, 128, 255))
+//        "SpecularMap" <- extensions.KHR_materials_specular.specularTexture, else the fxport convention
+//                         extras: { "fxportSpecularMap": <texture index> } (default: 1x1 (0, 0, 0, 0))
+//    e.g. "materials": [{ "pbrMetallicRoughness": { "baseColorTexture": { "index": 0 } },
+//                         "normalTexture": { "index": 1 }, "extras": { "fxportSpecularMap": 2 } }].
+//    Texture colours are loaded as SurfaceFormat::Color with a full mip chain (box-filtered); colour
+//    factors, samplers, texCoord sets other than 0 and KHR_texture_transform are ignored. The default
+//    textures are shared by the parts of one Model.
+//  * Not loaded: skins, morph targets, animations, cameras, lights, vertex colours, TEXCOORD_1+.
+//
+// A Model owns everything it made (buffers, textures, effects); parts point into it, so the Model
+// must outlive their use. Bad input (missing or unreadable file, bad JSON, broken accessors, a
+// hierarchy that is not a tree, an unsupported primitive mode, a missing image) throws ArgumentError
+// whose message starts with the file's path and names the mesh/node/image at fault.
+#pragma once
+
+#include <cstddef>
+#include <iterator>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fxport/graphics/effect.h"
+#include "fxport/graphics/texture.h"
+#include "fxport/graphics/vertex_buffer.h"
+#include "fxport/graphics/vertex_declaration.h"
+#include "fxport/math.h"
+
+namespace fxport {
+
+class GraphicsDevice;
+class Model;
+class ModelBone;
+class ModelMesh;
+
+// The vertex of every Model (56 bytes), laid out as its VertexDeclaration says.
+struct ModelVertex {
+    Vector3 Position;           // POSITION0
+    Vector3 Normal;             // NORMAL0
+    Vector2 TextureCoordinate;  // TEXCOORD0
+    Vector3 Tangent;            // TANGENT0
+    Vector3 Binormal;           // BINORMAL0
+    static const fxport::VertexDeclaration VertexDeclaration;
+};
+
+// A read-only list of a Model's bones or meshes, as XNA's ModelBoneCollection/ModelMeshCollection:
+// indexed by position or by name, iterated as references (for (ModelMesh& mesh : model->Meshes)).
+template <class T>
+class ModelItemCollection {
+public:
+    class iterator {
+    public:
+        using iterator_category = std::forward_iterator_tag;
+        using value_type = T;
+        using difference_type = std::ptrdiff_t;
+        using pointer = T*;
+        using reference = T&;
+        iterator() = default;
+        explicit iterator(typename std::vector<T*>::const_iterator it) : it_(it) {}
+        T& operator*() const { return **it_; }
+        T* operator->() const { return *it_; }
+        iterator& operator++() { ++it_; return *this; }
+        iterator operator++(int) { iterator old = *this; ++it_; return old; }
+        bool operator==(const iterator&) const = default;
+
+    private:
+        typename std::vector<T*>::const_iterator it_;
+    };
+
+    int Count() const { return int(items_.size()); }
+    // Throw ArgumentError naming the model (and, for names, listing the known ones) when absent.
+    T& operator[](int index) const;
+    T& operator[](const std::string& name) const;
+    // The first item with that name, or nullptr (XNA's TryGetValue).
+    T* find(const std::string& name) const;
+    iterator begin() const { return iterator(items_.begin()); }
+    iterator end() const { return iterator(items_.end()); }
+
+private:
+    friend class Model;
+    const char* kind_ = "item";
+    const std::string* owner_ = nullptr;  // the model's path, for messages
+    std::vector<T*> items_;
+};
+
+using ModelBoneCollection = ModelItemCollection<ModelBone>;
+using ModelMeshCollection = ModelItemCollection<ModelMesh>;
+
+class ModelBone {
+public:
+    std::string Name;
+    int Index = 0;                       // position in Model::Bones
+    Matrix Transform = Matrix::Identity; // relative to Parent (XNA row-vector matrix)
+    ModelBone* Parent = nullptr;         // nullptr for Model::Root
+    ModelBoneCollection Children;
+};
+
+struct ModelMeshPart {
+    fxport::VertexBuffer* VertexBuffer = nullptr;
+    fxport::IndexBuffer* IndexBuffer = nullptr;
+    int VertexOffset = 0;    // first vertex of the part in VertexBuffer
+    int NumVertices = 0;     // vertices of the part (indices run 0 .. NumVertices - 1)
+    int StartIndex = 0;      // first index of the part in IndexBuffer
+    int PrimitiveCount = 0;  // triangles
+    // The part's material (see the file comment). Owned by the Model; may be replaced by the user's.
+    fxport::Effect* Effect = nullptr;
+    // fxport: the glTF material's name ("" when the primitive has none).
+    std::string materialName;
+};
+
+class ModelMesh {
+public:
+    std::string Name;
+    ModelBone* ParentBone = nullptr;
+    // Bounds of the mesh's vertices in its bone's space (centre of the bounding box, radius to the
+    // farthest vertex).
+    fxport::BoundingSphere BoundingSphere;
+    std::vector<ModelMeshPart> MeshParts;
+};
+
+class Model {
+public:
+    // Loads a .gltf or .glb file (see the file comment). Throws ArgumentError naming the file.
+    static std::unique_ptr<Model> Load(fxport::GraphicsDevice& device, const std::string& path);
+    ~Model();
+    Model(const Model&) = delete;
+    Model& operator=(const Model&) = delete;
+
+    ModelBoneCollection Bones;
+    ModelMeshCollection Meshes;
+    ModelBone* Root = nullptr;
+
+    // transforms[i] = the absolute transform of Bones[i] (Transform times every ancestor's, child
+    // first). The vector is resized to Bones.Count() when it is smaller; the pointer overload writes
+    // Bones.Count() matrices (size the array with Bones.Count(), as in XNA).
+    void CopyAbsoluteBoneTransformsTo(std::vector<Matrix>& transforms) const;
+    void CopyAbsoluteBoneTransformsTo(Matrix* transforms) const;
+    // Every bone's local Transform, and back. CopyBoneTransformsFrom throws ArgumentError when given
+    // fewer than Bones.Count() matrices.
+    void CopyBoneTransformsTo(std::vector<Matrix>& transforms) const;
+    void CopyBoneTransformsFrom(const std::vector<Matrix>& transforms);
+
+    // fxport: the file it was loaded from.
+    const std::string& sourcePath() const { return path_; }
+
+private:
+    struct Resources;
+    Model();
+    std::string path_;
+    std::unique_ptr<Resources> resources_;
+};
+
+// The collections' out-of-line members are defined, and instantiated for these two, in model.cpp.
+extern template class ModelItemCollection<ModelBone>;
+extern template class ModelItemCollection<ModelMesh>;
+
+}  // namespace fxport

@@ -1,0 +1,31 @@
+// RasterizerState: an immutable description with XNA's names and presets.
+#pragma once
+
+#include <cstdint>
+
+namespace fxport {
+
+// Which winding (as seen in the final image) is culled. XNA's front faces are clockwise, so the
+// default CullCounterClockwiseFace keeps clockwise triangles.
+enum class CullMode : std::uint8_t { None, CullClockwiseFace, CullCounterClockwiseFace };
+enum class FillMode : std::uint8_t { Solid, WireFrame };
+
+struct RasterizerState {
+    // Qualified type names: the members are named like their types, as in XNA.
+    fxport::CullMode CullMode = fxport::CullMode::CullCounterClockwiseFace;
+    fxport::FillMode FillMode = fxport::FillMode::Solid;
+    // D3D semantics: DepthBias is added to depth in [0,1] units; SlopeScaleDepthBias scales the
+    // depth slope.
+    float DepthBias = 0;
+    float SlopeScaleDepthBias = 0;
+    bool MultiSampleAntiAlias = true;
+    bool ScissorTestEnable = false;
+
+    bool operator==(const RasterizerState&) const = default;
+
+    static const RasterizerState CullClockwise;
+    static const RasterizerState CullCounterClockwise;
+    static const RasterizerState CullNone;
+};
+
+}  // namespace fxport

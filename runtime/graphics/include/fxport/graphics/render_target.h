@@ -1,0 +1,69 @@
+// Render targets: a texture plus (optionally) a depth/stencil buffer, as XNA 4 makes them.
+// Bound with GraphicsDevice::SetRenderTarget(s); sampled like any texture once unbound.
+#pragma once
+
+#include <cstdint>
+
+#include "fxport/graphics/texture.h"
+
+namespace fxport {
+
+class RenderTarget2D : public Texture2D {
+public:
+    RenderTarget2D(fxport::GraphicsDevice& device, int width, int height, bool mipMap = false,
+                   SurfaceFormat preferredFormat = SurfaceFormat::Color,
+                   DepthFormat preferredDepthFormat = DepthFormat::None, int preferredMultiSampleCount = 0,
+                   fxport::RenderTargetUsage usage = fxport::RenderTargetUsage::DiscardContents);
+    ~RenderTarget2D() override;
+
+    DepthFormat DepthStencilFormat() const { return depthFormat_; }
+    fxport::RenderTargetUsage RenderTargetUsage() const { return usage_; }
+    int MultiSampleCount() const { return 0; }  // multisampling is not implemented; 0 as XNA reports
+    bool isRenderTarget() const override { return true; }
+    std::uint32_t depthRenderbuffer() const { return depth_; }
+
+protected:
+    void releaseGpuObjects() override;
+
+private:
+    DepthFormat depthFormat_;
+    fxport::RenderTargetUsage usage_;
+    std::uint32_t depth_ = 0;
+};
+
+class RenderTargetCube : public TextureCube {
+public:
+    RenderTargetCube(fxport::GraphicsDevice& device, int size, bool mipMap = false,
+                     SurfaceFormat preferredFormat = SurfaceFormat::Color,
+                     DepthFormat preferredDepthFormat = DepthFormat::None, int preferredMultiSampleCount = 0,
+                     fxport::RenderTargetUsage usage = fxport::RenderTargetUsage::DiscardContents);
+    ~RenderTargetCube() override;
+
+    DepthFormat DepthStencilFormat() const { return depthFormat_; }
+    fxport::RenderTargetUsage RenderTargetUsage() const { return usage_; }
+    bool isRenderTarget() const override { return true; }
+    std::uint32_t depthRenderbuffer() const { return depth_; }
+
+protected:
+    void releaseGpuObjects() override;
+
+private:
+    DepthFormat depthFormat_;
+    fxport::RenderTargetUsage usage_;
+    std::uint32_t depth_ = 0;
+};
+
+// One entry of SetRenderTargets: a 2D target, or one face of a cube target.
+struct RenderTargetBinding {
+    Texture* RenderTarget = nullptr;  // a RenderTarget2D or RenderTargetCube
+    fxport::CubeMapFace CubeMapFace = fxport::CubeMapFace::PositiveX;
+
+    RenderTargetBinding() = default;
+    RenderTargetBinding(RenderTarget2D* target) : RenderTarget(target) {}
+    RenderTargetBinding(RenderTarget2D& target) : RenderTarget(&target) {}
+    RenderTargetBinding(RenderTargetCube* target, fxport::CubeMapFace face) : RenderTarget(target), CubeMapFace(face) {}
+    RenderTargetBinding(RenderTargetCube& target, fxport::CubeMapFace face) : RenderTarget(&target), CubeMapFace(face) {}
+    bool operator==(const RenderTargetBinding&) const = default;
+};
+
+}  // namespace fxport

@@ -1,0 +1,41 @@
+// XNA 4 surface and depth formats. Each maps to one GL internal format (see src/gl_formats.cpp);
+// the table below is the public view of what a texel holds.
+#pragma once
+
+#include <cstdint>
+
+namespace fxport {
+
+enum class SurfaceFormat : std::uint8_t {
+    Color,         // RGBA8 unorm (XNA Color's byte order: R, G, B, A)
+    Bgr565,
+    Bgra5551,
+    Bgra4444,
+    Alpha8,
+    Rgba1010102,
+    Rg32,          // RG16 unorm
+    Rgba64,        // RGBA16 unorm
+    NormalizedByte2,
+    NormalizedByte4,
+    Single,        // R32F
+    Vector2,       // RG32F
+    Vector4,       // RGBA32F
+    HalfSingle,    // R16F
+    HalfVector2,   // RG16F
+    HalfVector4,   // RGBA16F
+    HdrBlendable,  // RGBA16F (XNA's HDR format on D3D9)
+};
+
+enum class DepthFormat : std::uint8_t { None, Depth16, Depth24, Depth24Stencil8 };
+
+// What happens to a render target's contents when it is set as a target again. fxport keeps the
+// contents in both cases (GL has no discard on bind); DiscardContents is recorded for fidelity.
+enum class RenderTargetUsage : std::uint8_t { DiscardContents, PreserveContents, PlatformContents };
+
+// Bytes of one texel (what SetData/GetData exchange per pixel).
+int bytesPerPixel(SurfaceFormat format);
+// "Color", "HalfVector4" ... for messages.
+const char* surfaceFormatName(SurfaceFormat format);
+const char* depthFormatName(DepthFormat format);
+
+}  // namespace fxport

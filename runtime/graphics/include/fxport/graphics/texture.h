@@ -1,0 +1,115 @@
+// Textures: Texture2D (load PNG, SetData/GetData in any SurfaceFormat) and TextureCube. Render
+// targets derive from these (render_target.h). Texel data is stored top row first, as D3D does.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fxport/graphics/graphics_resource.h"
+#include "fxport/graphics/surface_format.h"
+#include "fxport/math.h"
+
+namespace fxport {
+
+// XNA's order of cube faces (also D3D's and GL's).
+enum class CubeMapFace : std::uint8_t { PositiveX, NegativeX, PositiveY, NegativeY, PositiveZ, NegativeZ };
+
+class Texture : public GraphicsResource {
+public:
+    enum class Kind : std::uint8_t { Texture2D, TextureCube };
+
+    SurfaceFormat Format() const { return format_; }
+    int LevelCount() const { return levels_; }
+    Kind kind() const { return kind_; }
+    // The GL texture name (an integer; for fxport internals and interop).
+    std::uint32_t glName() const { return name_; }
+    // True for RenderTarget2D / RenderTargetCube.
+    virtual bool isRenderTarget() const { return false; }
+
+protected:
+    Texture(fxport::GraphicsDevice& device, const char* typeName, Kind kind, SurfaceFormat format, int levels);
+    void releaseGpuObjects() override;
+    // Uploads/reads raw texels of one level (face = -1 for 2D). Checks the byte count.
+    void writeTexels(int face, int level, int x, int y, int w, int h, const void* data, std::size_t bytes);
+    void readTexels(int face, int level, void* data, std::size_t bytes) const;
+    int levelWidth(int base, int level) const;
+
+    std::uint32_t name_ = 0;
+    SurfaceFormat format_;
+    int levels_;
+    Kind kind_;
+};
+
+class Texture2D : public Texture {
+public:
+    Texture2D(fxport::GraphicsDevice& device, int width, int height, bool mipMap = false,
+              SurfaceFormat format = SurfaceFormat::Color);
+    ~Texture2D() override;
+
+    int Width() const { return width_; }
+    int Height() const { return height_; }
+    Rectangle Bounds() const { return Rectangle(0, 0, width_, height_); }
+
+    // T must be the texel type of Format() (Color for Color, float for Single, Vector4 for Vector4,
+    // uint16_t[4] packed types for Rgba64/HalfVector4 ...): sizeof(T) * count must equal the bytes of
+    // the level (whole level) or of `rect`.
+    template <class T> void SetData(const T* data, std::size_t count) { setData(0, nullptr, data, sizeof(T) * count); }
+    template <class T> void SetData(const std::vector<T>& data) { SetData(data.data(), data.size()); }
+    template <class T> void SetData(int level, const Rectangle* rect, const T* data, std::size_t count) {
+        setData(level, rect, data, sizeof(T) * count);
+    }
+    template <class T> void GetData(T* data, std::size_t count) const { getData(0, data, sizeof(T) * count); }
+    template <class T> std::vector<T> GetData() const {
+        std::vector<T> out(std::size_t(width_) * std::size_t(height_) * std::size_t(bytesPerPixel(format_)) / sizeof(T));
+        GetData(out.data(), out.size());
+        return out;
+    }
+
+    // Loads a PNG (or any format stb_image reads) as SurfaceFormat::Color. Throws ArgumentError
+    // naming the file when it cannot be read.
+    static std::unique_ptr<Texture2D> FromFile(fxport::GraphicsDevice& device, const std::string& path);
+    // Writes level 0 as an 8-bit RGBA PNG (float formats are clamped to [0,1]; one- and two-channel
+    // formats are shown as grey / red-green). Top row first, as the texture is stored.
+    void SaveAsPng(const std::string& path) const;
+
+    void setData(int level, const Rectangle* rect, const void* data, std::size_t bytes);
+    void getData(int level, void* data, std::size_t bytes) const;
+
+protected:
+    Texture2D(fxport::GraphicsDevice& device, const char* typeName, int width, int height, bool mipMap,
+              SurfaceFormat format);
+
+private:
+    void create(bool mipMap);
+    int width_;
+    int height_;
+};
+
+class TextureCube : public Texture {
+public:
+    TextureCube(fxport::GraphicsDevice& device, int size, bool mipMap = false,
+                SurfaceFormat format = SurfaceFormat::Color);
+    ~TextureCube() override;
+
+    int Size() const { return size_; }
+    template <class T> void SetData(CubeMapFace face, const T* data, std::size_t count) {
+        setData(face, data, sizeof(T) * count);
+    }
+    template <class T> void GetData(CubeMapFace face, T* data, std::size_t count) const {
+        getData(face, data, sizeof(T) * count);
+    }
+    void setData(CubeMapFace face, const void* data, std::size_t bytes);
+    void getData(CubeMapFace face, void* data, std::size_t bytes) const;
+
+protected:
+    TextureCube(fxport::GraphicsDevice& device, const char* typeName, int size, bool mipMap, SurfaceFormat format);
+
+private:
+    void create(bool mipMap);
+    int size_;
+};
+
+}  // namespace fxport

@@ -1,0 +1,148 @@
+// INTERNAL: the device's private state: what GL currently has (the shadow), the caches of GL
+// objects made from immutable descriptions, and the registry of live resources. Effects, textures
+// and buffers reach it through GraphicsDevice::impl().
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <tuple>
+#include <unordered_map>
+#include <vector>
+
+#include "fxport/graphics/graphics_device.h"
+#include "fxport/platform/gl.h"
+
+namespace fxport::xlate {
+struct CompiledShader;
+}
+
+namespace fxport {
+
+class GraphicsResource;
+
+// Uniform-buffer binding points per stage: D3D has separate constant slots per stage, so the same
+// HLSL binding (b0 = $Global, b1 = fxport's internal block, b2.. user cbuffers) gets a range per
+// stage. A pixel shader's $Global (its own effect's) never collides with the vertex shader's
+// (SpriteBatch's, say).
+inline constexpr int kUniformBindingsPerStage = 8;
+inline constexpr int kStageCount = 3;  // vertex, pixel, geometry
+inline int uniformBindingFor(int stage, int hlslBinding) { return stage * kUniformBindingsPerStage + hlslBinding; }
+inline constexpr int kInternalBlockBinding = 1;
+
+// A compiled shader made into a separable GL program, as the device needs it at draw time.
+struct ShaderProgram {
+    GLuint program = 0;
+    int stage = 0;                              // 0 vertex, 1 pixel, 2 geometry
+    const xlate::CompiledShader* shader = nullptr;  // owned by the effect
+    std::string label;                          // "GBuffer.fx: VertexShaderFunction (vs_2_0)"
+};
+
+struct GraphicsDevice::Impl {
+    explicit Impl(GraphicsDevice& owner) : device(owner) {}
+
+    GraphicsDevice& device;
+    GpuObjectCounts live;
+
+    // --- resource registry (so destroying a resource unbinds it everywhere)
+    std::vector<GraphicsResource*> resources;
+    std::vector<Effect*> effects;
+    int nextSerial = 1;
+    void forget(GraphicsResource* resource);
+
+    // --- render targets
+    std::vector<RenderTargetBinding> targets;   // empty = back buffer
+    std::unique_ptr<RenderTarget2D> backBuffer;
+    std::map<std::vector<std::uint64_t>, GLuint> framebuffers;  // attachment key -> FBO
+    GLuint boundFramebuffer = 0;
+    int targetWidth = 0, targetHeight = 0;
+    void bindTargets();
+    void generateMipsOfUnboundTargets(const std::vector<RenderTargetBinding>& previous);
+
+    // --- shaders set by EffectPass::Apply (a stage left null keeps what was there)
+    std::array<const ShaderProgram*, kStageCount> shaders{};
+    bool passApplied = false;
+    std::map<std::tuple<GLuint, GLuint, GLuint>, GLuint> pipelines;
+    GLuint boundPipeline = 0;
+
+    // --- uniform buffers: wanted (set by Apply) and bound
+    std::array<GLuint, kStageCount * kUniformBindingsPerStage> wantedUniformBuffers{};
+    std::array<GLuint, kStageCount * kUniformBindingsPerStage> boundUniformBuffers{};
+    GLuint internalBuffer = 0;           // fxport_Internal { float4 fxport_PixelOffset; }
+    std::array<float, 4> pixelOffset{};  // what internalBuffer holds
+
+    // --- vertex input
+    VertexBuffer* vertexBuffer = nullptr;
+    int vertexOffset = 0;
+    struct VertexArray {
+        GLuint vao = 0;
+        GLuint buffer = 0;
+        GLintptr offset = -1;
+        GLsizei stride = 0;
+        GLuint elements = 0;
+    };
+    std::unordered_map<std::string, VertexArray> vertexArrays;  // key: declaration + VS program
+    struct LastVertexArray {
+        const VertexDeclaration* declaration = nullptr;
+        VertexDeclaration copy;
+        GLuint program = 0;
+        VertexArray* array = nullptr;
+    } lastVertexArray;
+    GLuint boundVertexArray = 0;
+    VertexArray& vertexArrayFor(const VertexDeclaration& declaration);
+
+    // Streaming buffers for DrawUser(Indexed)Primitives: written with orphaning.
+    GLuint userVertices = 0, userIndices = 0;
+    GLsizeiptr userVerticesSize = 0, userIndicesSize = 0;
+    void streamUserData(GLuint& buffer, GLsizeiptr& capacity, const void* data, GLsizeiptr bytes);
+
+    // --- fixed-function state shadow (what GL has)
+    bool forceAll = true;  // the first flush sets everything
+    fxport::BlendState appliedBlend;
+    fxport::DepthStencilState appliedDepthStencil;
+    fxport::RasterizerState appliedRasterizer;
+    fxport::Viewport appliedViewport;
+    Rectangle appliedScissor;
+    std::array<GLuint, kMaxTextureSlots> boundTextures{};
+    std::array<GLuint, kMaxTextureSlots> boundSamplers{};
+    std::map<std::array<std::uint8_t, sizeof(SamplerState)>, GLuint> samplerObjects;  // SamplerState bytes -> GL sampler
+    GLuint samplerFor(const SamplerState& state);
+
+    void applyBlend(const fxport::BlendState& wanted);
+    void applyDepthStencil(const fxport::DepthStencilState& wanted);
+    void applyRasterizer(const fxport::RasterizerState& wanted);
+    void applyViewport(const fxport::Viewport& wanted);
+    void applyScissor(const Rectangle& wanted);
+    void applyTextures();
+    void applyShaders();
+
+    // Everything a draw needs, compared against the shadow. `what` names the draw call for errors.
+    void flush(const char* what);
+
+    // GL object bookkeeping: every create/delete goes through these so liveGpuObjects() is exact.
+    GLuint createTexture(GLenum target);
+    void deleteTexture(GLuint& name);
+    GLuint createBuffer();
+    void deleteBuffer(GLuint& name);
+    GLuint createRenderbuffer();
+    void deleteRenderbuffer(GLuint& name);
+    // Programs are shared by (stage, GLSL text) and reference-counted.
+    GLuint createProgram(GLenum stage, const std::string& source, const std::string& label);
+    struct CachedProgram {
+        GLuint program = 0;
+        int references = 0;
+    };
+    std::map<std::pair<GLenum, std::string>, CachedProgram> programCache;
+    void deleteProgram(GLuint& name);
+    GLuint createQuery(GLenum target);
+    void deleteQuery(GLuint& name);
+    // Forgets FBOs, pipelines and VAOs that mention a deleted texture / program / buffer.
+    void dropFramebuffersUsing(GLuint texture);
+    void dropPipelinesUsing(GLuint program);
+    void dropVertexArraysUsing(GLuint program);
+    void releaseAll();
+};
+
+}  // namespace fxport

@@ -1,0 +1,168 @@
+// What every draw does before calling GL: validate, then bring shaders, uniform buffers,
+// textures, samplers, vertex layout and fixed-function state up to date, touching only what
+// changed since the last draw.
+#include <algorithm>
+
+#include "device_impl.h"
+#include "fxport/graphics/errors.h"
+#include "fxport/graphics/texture.h"
+#include "fxport/xlate/compiled_effect.h"
+
+namespace fxport {
+
+namespace {
+
+struct AttributeFormat {
+    GLint size;
+    GLenum type;
+    GLboolean normalized;
+};
+
+AttributeFormat attributeFormat(VertexElementFormat f) {
+    switch (f) {
+    case VertexElementFormat::Single: return {1, GL_FLOAT, GL_FALSE};
+    case VertexElementFormat::Vector2: return {2, GL_FLOAT, GL_FALSE};
+    case VertexElementFormat::Vector3: return {3, GL_FLOAT, GL_FALSE};
+    case VertexElementFormat::Vector4: return {4, GL_FLOAT, GL_FALSE};
+    case VertexElementFormat::Color: return {4, GL_UNSIGNED_BYTE, GL_TRUE};
+    case VertexElementFormat::Byte4: return {4, GL_UNSIGNED_BYTE, GL_FALSE};
+    case VertexElementFormat::Short2: return {2, GL_SHORT, GL_FALSE};
+    case VertexElementFormat::Short4: return {4, GL_SHORT, GL_FALSE};
+    case VertexElementFormat::NormalizedShort2: return {2, GL_SHORT, GL_TRUE};
+    case VertexElementFormat::NormalizedShort4: return {4, GL_SHORT, GL_TRUE};
+    case VertexElementFormat::HalfVector2: return {2, GL_HALF_FLOAT, GL_FALSE};
+    case VertexElementFormat::HalfVector4: return {4, GL_HALF_FLOAT, GL_FALSE};
+    }
+    return {4, GL_FLOAT, GL_FALSE};
+}
+
+std::string textureName(const Texture* t) { return t->Name.empty() ? std::string("(unnamed)") : "'" + t->Name + "'"; }
+
+}  // namespace
+
+void GraphicsDevice::Impl::flush(const char* what) {
+    if (!passApplied || !shaders[0] || !shaders[1])
+        throw InvalidOperation(std::string(what) +
+                               ": no effect pass is applied (call effect.CurrentTechnique->Passes[i].Apply() first)");
+    if (boundFramebuffer == 0) bindTargets();
+    applyBlend(device.BlendState);
+    applyDepthStencil(device.DepthStencilState);
+    applyRasterizer(device.RasterizerState);
+    applyViewport(device.Viewport);
+    applyScissor(device.ScissorRectangle);
+    applyShaders();
+    applyTextures();
+    forceAll = false;
+}
+
+void GraphicsDevice::Impl::applyShaders() {
+    GLuint vs = shaders[0]->program, ps = shaders[1]->program, gs = shaders[2] ? shaders[2]->program : 0;
+    auto key = std::make_tuple(vs, ps, gs);
+    auto it = pipelines.find(key);
+    GLuint pipeline = 0;
+    if (it != pipelines.end()) {
+        pipeline = it->second;
+    } else {
+        glCreateProgramPipelines(1, &pipeline);
+        ++live.pipelines;
+        glUseProgramStages(pipeline, GL_VERTEX_SHADER_BIT, vs);
+        glUseProgramStages(pipeline, GL_FRAGMENT_SHADER_BIT, ps);
+        if (gs) glUseProgramStages(pipeline, GL_GEOMETRY_SHADER_BIT, gs);
+        pipelines.emplace(key, pipeline);
+    }
+    if (pipeline != boundPipeline) {
+        glBindProgramPipeline(pipeline);
+        boundPipeline = pipeline;
+    }
+    for (std::size_t i = 0; i < wantedUniformBuffers.size(); ++i) {
+        if (wantedUniformBuffers[i] == boundUniformBuffers[i] || i % kUniformBindingsPerStage == kInternalBlockBinding) continue;
+        glBindBufferBase(GL_UNIFORM_BUFFER, GLuint(i), wantedUniformBuffers[i]);
+        boundUniformBuffers[i] = wantedUniformBuffers[i];
+    }
+}
+
+void GraphicsDevice::Impl::applyTextures() {
+    for (const ShaderProgram* program : shaders) {
+        if (!program) continue;
+        for (const xlate::SamplerBinding& sampler : program->shader->samplers) {
+            int unit = sampler.unit;
+            if (unit < 0 || unit >= kMaxTextureSlots) continue;
+            Texture* texture = device.Textures[unit].get();
+            GLuint name = texture ? texture->glName() : 0;
+            if (texture) {
+                for (const RenderTargetBinding& b : targets)
+                    if (b.RenderTarget == texture)
+                        throw InvalidOperation("Draw: texture " + textureName(texture) + " in Textures[" +
+                                               std::to_string(unit) + "] is also the current render target; " +
+                                               "set another render target (or clear the slot) before sampling it");
+                bool cube = texture->kind() == Texture::Kind::TextureCube;
+                if (cube != (sampler.kind == xlate::TextureKind::TextureCube))
+                    throw InvalidOperation(std::string("Draw: ") + program->label + " samples a " +
+                                           (cube ? "2D" : "cube") + " texture at unit " + std::to_string(unit) +
+                                           " but Textures[" + std::to_string(unit) + "] holds a " +
+                                           (cube ? "cube" : "2D") + " texture " + textureName(texture));
+            }
+            if (forceAll || boundTextures[std::size_t(unit)] != name) {
+                glBindTextureUnit(GLuint(unit), name);
+                boundTextures[std::size_t(unit)] = name;
+            }
+            GLuint sampler_ = samplerFor(device.SamplerStates[unit]);
+            if (forceAll || boundSamplers[std::size_t(unit)] != sampler_) {
+                glBindSampler(GLuint(unit), sampler_);
+                boundSamplers[std::size_t(unit)] = sampler_;
+            }
+        }
+    }
+}
+
+GraphicsDevice::Impl::VertexArray& GraphicsDevice::Impl::vertexArrayFor(const VertexDeclaration& declaration) {
+    GLuint vs = shaders[0]->program;
+    LastVertexArray& last = lastVertexArray;
+    if (last.array && last.program == vs && last.declaration == &declaration && last.copy == declaration) {
+        if (boundVertexArray != last.array->vao) {
+            glBindVertexArray(last.array->vao);
+            boundVertexArray = last.array->vao;
+        }
+        return *last.array;
+    }
+    std::string key;
+    key += std::to_string(declaration.VertexStride());
+    for (const VertexElement& e : declaration.GetVertexElements())
+        key += ";" + std::to_string(e.Offset) + "," + std::to_string(int(e.VertexElementFormat)) + "," +
+               std::to_string(int(e.VertexElementUsage)) + "," + std::to_string(e.UsageIndex);
+    key += "|" + std::to_string(vs);
+    auto it = vertexArrays.find(key);
+    if (it == vertexArrays.end()) {
+        VertexArray va;
+        glCreateVertexArrays(1, &va.vao);
+        ++live.vertexArrays;
+        for (const xlate::VertexInput& input : shaders[0]->shader->inputs) {
+            const VertexElement* element = nullptr;
+            for (const VertexElement& e : declaration.GetVertexElements())
+                if (vertexElementSemantic(e) == input.semantic) element = &e;
+            // An input the declaration lacks reads the attribute's current value, (0,0,0,1),
+            // as D3D supplies for missing vertex components.
+            if (!element) continue;
+            GLuint location = GLuint(input.location);
+            AttributeFormat f = attributeFormat(element->VertexElementFormat);
+            glEnableVertexArrayAttrib(va.vao, location);
+            if (input.isInteger)
+                glVertexArrayAttribIFormat(va.vao, location, f.size, f.type, GLuint(element->Offset));
+            else
+                glVertexArrayAttribFormat(va.vao, location, f.size, f.type, f.normalized, GLuint(element->Offset));
+            glVertexArrayAttribBinding(va.vao, location, 0);
+        }
+        it = vertexArrays.emplace(key, va).first;
+    }
+    last.array = &it->second;
+    last.program = vs;
+    last.declaration = &declaration;
+    last.copy = declaration;
+    if (boundVertexArray != it->second.vao) {
+        glBindVertexArray(it->second.vao);
+        boundVertexArray = it->second.vao;
+    }
+    return it->second;
+}
+
+}  // namespace fxport

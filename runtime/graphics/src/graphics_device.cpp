@@ -1,0 +1,621 @@
+#include "fxport/graphics/graphics_device.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "device_impl.h"
+#include "effect_impl.h"
+#include "fxport/graphics/effect.h"
+#include "fxport/graphics/errors.h"
+#include "fxport/platform/graphics_context.h"
+#include "fxport/xlate/compiled_effect.h"
+#include "gl_formats.h"
+#include "image_io.h"
+
+namespace fxport {
+
+namespace {
+
+std::string slotError(int slot) {
+    return "slot " + std::to_string(slot) + " is outside 0.." + std::to_string(kMaxTextureSlots - 1);
+}
+
+GLenum glPrimitive(PrimitiveType type) {
+    switch (type) {
+    case PrimitiveType::TriangleList: return GL_TRIANGLES;
+    case PrimitiveType::TriangleStrip: return GL_TRIANGLE_STRIP;
+    case PrimitiveType::LineList: return GL_LINES;
+    case PrimitiveType::LineStrip: return GL_LINE_STRIP;
+    case PrimitiveType::PointList: return GL_POINTS;
+    }
+    return GL_TRIANGLES;
+}
+
+int vertexCountFor(PrimitiveType type, int primitives) {
+    switch (type) {
+    case PrimitiveType::TriangleList: return primitives * 3;
+    case PrimitiveType::TriangleStrip: return primitives + 2;
+    case PrimitiveType::LineList: return primitives * 2;
+    case PrimitiveType::LineStrip: return primitives + 1;
+    case PrimitiveType::PointList: return primitives;
+    }
+    return 0;
+}
+
+// Live devices, oldest first; the last one made current is what GL calls go to.
+std::vector<GraphicsDevice*>& liveDevices() {
+    static std::vector<GraphicsDevice*> devices;
+    return devices;
+}
+
+platform::Platform choosePlatform(const std::string& name) {
+    return name.empty() ? platform::defaultPlatform() : platform::platformFromString(name);
+}
+
+}  // namespace
+
+// --- slot collections
+
+TextureSlot& TextureCollection::operator[](int slot) {
+    if (slot < 0 || slot >= kMaxTextureSlots) throw ArgumentError("GraphicsDevice.Textures: " + slotError(slot));
+    return slots_[std::size_t(slot)];
+}
+const TextureSlot& TextureCollection::operator[](int slot) const {
+    if (slot < 0 || slot >= kMaxTextureSlots) throw ArgumentError("GraphicsDevice.Textures: " + slotError(slot));
+    return slots_[std::size_t(slot)];
+}
+
+SamplerStateCollection::SamplerStateCollection() { slots_.fill(SamplerState::LinearWrap); }
+SamplerState& SamplerStateCollection::operator[](int slot) {
+    if (slot < 0 || slot >= kMaxTextureSlots) throw ArgumentError("GraphicsDevice.SamplerStates: " + slotError(slot));
+    return slots_[std::size_t(slot)];
+}
+const SamplerState& SamplerStateCollection::operator[](int slot) const {
+    if (slot < 0 || slot >= kMaxTextureSlots) throw ArgumentError("GraphicsDevice.SamplerStates: " + slotError(slot));
+    return slots_[std::size_t(slot)];
+}
+
+// --- construction
+
+GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters) : parameters_(parameters) {
+    if (parameters_.BackBufferWidth <= 0 || parameters_.BackBufferHeight <= 0)
+        throw ArgumentError("GraphicsDevice: back buffer size " + std::to_string(parameters_.BackBufferWidth) + "x" +
+                            std::to_string(parameters_.BackBufferHeight) + " must be positive");
+    platform::ContextDesc desc;
+    desc.platform = choosePlatform(parameters_.platform);
+    desc.width = parameters_.BackBufferWidth;
+    desc.height = parameters_.BackBufferHeight;
+    desc.debug = parameters_.debug;
+    desc.title = parameters_.windowTitle;
+    context_ = platform::GraphicsContext::create(desc);
+    impl_ = std::make_unique<Impl>(*this);
+    liveDevices().push_back(this);
+
+    // The D3D conventions (docs/DESIGN.md): NDC z in [0,1], and window y from the top row so
+    // render targets come out top-row-first.
+    glClipControl(GL_UPPER_LEFT, GL_ZERO_TO_ONE);
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // D3D10+ filter across cube faces; D3D9 hardware did too
+
+    impl_->internalBuffer = impl_->createBuffer();
+    glNamedBufferStorage(impl_->internalBuffer, sizeof(float) * 4, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    for (int stage = 0; stage < kStageCount; ++stage)
+        glBindBufferBase(GL_UNIFORM_BUFFER, GLuint(uniformBindingFor(stage, kInternalBlockBinding)), impl_->internalBuffer);
+
+    impl_->backBuffer = std::make_unique<RenderTarget2D>(*this, parameters_.BackBufferWidth, parameters_.BackBufferHeight,
+                                                          false, parameters_.BackBufferFormat,
+                                                          parameters_.DepthStencilFormat);
+    impl_->backBuffer->Name = "BackBuffer";
+    SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+    ScissorRectangle = Rectangle(0, 0, parameters_.BackBufferWidth, parameters_.BackBufferHeight);
+}
+
+GraphicsDevice::~GraphicsDevice() {
+    // Resources the program still holds are disposed now (their GL objects die with the context)
+    // and cut loose, so their destructors later do not reach a dead device.
+    context_->makeCurrent();
+    impl_->backBuffer.reset();
+    std::vector<GraphicsResource*> remaining = impl_->resources;
+    for (GraphicsResource* r : remaining) r->Dispose();
+    for (GraphicsResource* r : remaining) r->device_ = nullptr;
+    impl_->releaseAll();
+    impl_.reset();
+    context_.reset();
+    auto& devices = liveDevices();
+    devices.erase(std::remove(devices.begin(), devices.end(), this), devices.end());
+    if (!devices.empty()) devices.back()->makeCurrent();
+}
+
+void GraphicsDevice::makeCurrent() {
+    context_->makeCurrent();
+    auto& devices = liveDevices();
+    devices.erase(std::remove(devices.begin(), devices.end(), this), devices.end());
+    devices.push_back(this);
+}
+
+GraphicsDevice* GraphicsDevice::current() { return liveDevices().empty() ? nullptr : liveDevices().back(); }
+
+std::string GraphicsDevice::rendererName() const { return context_->rendererName(); }
+
+int GraphicsDevice::maxTextureSize() const {
+    GLint size = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &size);
+    return size;
+}
+
+GpuObjectCounts GraphicsDevice::liveGpuObjects() const { return impl_->live; }
+
+void GraphicsDevice::finish() { glFinish(); }
+
+// --- render targets
+
+void GraphicsDevice::SetRenderTarget(RenderTarget2D* target) {
+    if (target == nullptr) SetRenderTargets(std::vector<RenderTargetBinding>{});
+    else SetRenderTargets(std::vector<RenderTargetBinding>{RenderTargetBinding(target)});
+}
+
+void GraphicsDevice::SetRenderTarget(RenderTargetCube* target, CubeMapFace face) {
+    if (target == nullptr) throw ArgumentError("GraphicsDevice.SetRenderTarget: the cube target is null");
+    SetRenderTargets(std::vector<RenderTargetBinding>{RenderTargetBinding(target, face)});
+}
+
+void GraphicsDevice::SetRenderTargets(const std::vector<RenderTargetBinding>& bindings) {
+    if (bindings.size() > std::size_t(kMaxRenderTargets))
+        throw ArgumentError("GraphicsDevice.SetRenderTargets: " + std::to_string(bindings.size()) +
+                            " targets; at most " + std::to_string(kMaxRenderTargets));
+    int width = 0, height = 0;
+    for (std::size_t i = 0; i < bindings.size(); ++i) {
+        Texture* t = bindings[i].RenderTarget;
+        std::string where = "GraphicsDevice.SetRenderTargets: binding " + std::to_string(i);
+        if (t == nullptr) throw ArgumentError(where + " is null");
+        if (!t->isRenderTarget())
+            throw ArgumentError(where + " ('" + t->Name + "') is a texture, not a render target");
+        if (t->IsDisposed()) throw InvalidOperation(where + " ('" + t->Name + "') was disposed");
+        int w = t->kind() == Texture::Kind::TextureCube ? static_cast<TextureCube*>(t)->Size() : static_cast<Texture2D*>(t)->Width();
+        int h = t->kind() == Texture::Kind::TextureCube ? static_cast<TextureCube*>(t)->Size() : static_cast<Texture2D*>(t)->Height();
+        if (i == 0) {
+            width = w;
+            height = h;
+        } else if (w != width || h != height) {
+            throw ArgumentError(where + " is " + std::to_string(w) + "x" + std::to_string(h) + ", binding 0 is " +
+                                std::to_string(width) + "x" + std::to_string(height) +
+                                ": all render targets must have the same size");
+        }
+    }
+    std::vector<RenderTargetBinding> previous = impl_->targets;
+    impl_->targets = bindings;
+    impl_->generateMipsOfUnboundTargets(previous);
+    impl_->bindTargets();
+    Viewport = fxport::Viewport(0, 0, impl_->targetWidth, impl_->targetHeight);
+}
+
+std::vector<RenderTargetBinding> GraphicsDevice::GetRenderTargets() const { return impl_->targets; }
+
+void GraphicsDevice::Impl::generateMipsOfUnboundTargets(const std::vector<RenderTargetBinding>& previous) {
+    // XNA regenerates a mipmapped render target's chain when it stops being a target.
+    for (const RenderTargetBinding& b : previous) {
+        if (!b.RenderTarget || b.RenderTarget->LevelCount() <= 1 || b.RenderTarget->IsDisposed()) continue;
+        if (std::find(targets.begin(), targets.end(), b) == targets.end()) glGenerateTextureMipmap(b.RenderTarget->glName());
+    }
+}
+
+void GraphicsDevice::Impl::bindTargets() {
+    std::vector<RenderTargetBinding> bindings = targets;
+    if (bindings.empty()) bindings.push_back(RenderTargetBinding(backBuffer.get()));
+    Texture* first = bindings[0].RenderTarget;
+    GLuint depth = first->kind() == Texture::Kind::TextureCube ? static_cast<RenderTargetCube*>(first)->depthRenderbuffer()
+                                                                : static_cast<RenderTarget2D*>(first)->depthRenderbuffer();
+    DepthFormat depthFormat = first->kind() == Texture::Kind::TextureCube
+                                  ? static_cast<RenderTargetCube*>(first)->DepthStencilFormat()
+                                  : static_cast<RenderTarget2D*>(first)->DepthStencilFormat();
+    std::vector<std::uint64_t> key;
+    for (const RenderTargetBinding& b : bindings)
+        key.push_back((std::uint64_t(b.RenderTarget->glName()) << 8) |
+                      (b.RenderTarget->kind() == Texture::Kind::TextureCube ? 1 + std::uint64_t(b.CubeMapFace) : 0));
+    key.push_back(std::uint64_t(depth) << 8 | 0xff);
+    targetWidth = first->kind() == Texture::Kind::TextureCube ? static_cast<TextureCube*>(first)->Size()
+                                                               : static_cast<Texture2D*>(first)->Width();
+    targetHeight = first->kind() == Texture::Kind::TextureCube ? static_cast<TextureCube*>(first)->Size()
+                                                                : static_cast<Texture2D*>(first)->Height();
+    auto it = framebuffers.find(key);
+    GLuint fbo = 0;
+    if (it != framebuffers.end()) {
+        fbo = it->second;
+    } else {
+        glCreateFramebuffers(1, &fbo);
+        ++live.framebuffers;
+        std::vector<GLenum> drawBuffers;
+        for (std::size_t i = 0; i < bindings.size(); ++i) {
+            GLenum attachment = GLenum(GL_COLOR_ATTACHMENT0 + i);
+            const RenderTargetBinding& b = bindings[i];
+            if (b.RenderTarget->kind() == Texture::Kind::TextureCube)
+                glNamedFramebufferTextureLayer(fbo, attachment, b.RenderTarget->glName(), 0, GLint(b.CubeMapFace));
+            else
+                glNamedFramebufferTexture(fbo, attachment, b.RenderTarget->glName(), 0);
+            drawBuffers.push_back(attachment);
+        }
+        glNamedFramebufferDrawBuffers(fbo, GLsizei(drawBuffers.size()), drawBuffers.data());
+        if (depth != 0)
+            glNamedFramebufferRenderbuffer(fbo, depthFormat == DepthFormat::Depth24Stencil8 ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
+                                           GL_RENDERBUFFER, depth);
+        GLenum status = glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER);
+        if (status != GL_FRAMEBUFFER_COMPLETE) {
+            glDeleteFramebuffers(1, &fbo);
+            --live.framebuffers;
+            throw InvalidOperation("GraphicsDevice.SetRenderTargets: the driver rejects this combination of targets (" +
+                                   std::string(surfaceFormatName(first->Format())) + ", framebuffer status 0x" +
+                                   std::to_string(status) + ")");
+        }
+        framebuffers.emplace(key, fbo);
+    }
+    if (fbo != boundFramebuffer) {
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+        boundFramebuffer = fbo;
+    }
+}
+
+void GraphicsDevice::Impl::dropFramebuffersUsing(GLuint texture) {
+    for (auto it = framebuffers.begin(); it != framebuffers.end();) {
+        bool uses = std::any_of(it->first.begin(), it->first.end(), [&](std::uint64_t k) {
+            return (k & 0xff) != 0xff && GLuint(k >> 8) == texture;
+        });
+        if (uses) {
+            if (boundFramebuffer == it->second) {
+                glBindFramebuffer(GL_FRAMEBUFFER, 0);
+                boundFramebuffer = 0;
+            }
+            glDeleteFramebuffers(1, &it->second);
+            --live.framebuffers;
+            it = framebuffers.erase(it);
+        } else {
+            ++it;
+        }
+    }
+}
+
+// --- clear
+
+void GraphicsDevice::Clear(Color color) {
+    Clear(ClearOptions::Target | ClearOptions::DepthBuffer | ClearOptions::Stencil, color.ToVector4(), 1.0f, 0);
+}
+
+void GraphicsDevice::Clear(ClearOptions options, Color color, float depth, int stencil) {
+    Clear(options, color.ToVector4(), depth, stencil);
+}
+
+void GraphicsDevice::Clear(ClearOptions options, Vector4 color, float depth, int stencil) {
+    Impl& d = *impl_;
+    if (d.boundFramebuffer == 0) d.bindTargets();  // the back buffer's FBO was dropped
+    d.applyViewport(Viewport);
+    // D3D9 clears the viewport rectangle, whatever the scissor, write masks and blend say.
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(Viewport.X, Viewport.Y, Viewport.Width, Viewport.Height);
+    unsigned bits = unsigned(options);
+    std::size_t colorTargets = std::max<std::size_t>(1, d.targets.size());
+    if (bits & unsigned(ClearOptions::Target)) {
+        const float c[4] = {color.X, color.Y, color.Z, color.W};
+        for (std::size_t i = 0; i < colorTargets; ++i) {
+            glColorMaski(GLuint(i), GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+            glClearNamedFramebufferfv(d.boundFramebuffer, GL_COLOR, GLint(i), c);
+        }
+    }
+    bool clearDepth = bits & unsigned(ClearOptions::DepthBuffer);
+    bool clearStencil = bits & unsigned(ClearOptions::Stencil);
+    if (clearDepth) glDepthMask(GL_TRUE);
+    if (clearStencil) glStencilMask(0xff);
+    if (clearDepth && clearStencil) {
+        glClearNamedFramebufferfi(d.boundFramebuffer, GL_DEPTH_STENCIL, 0, depth, stencil);
+    } else if (clearDepth) {
+        glClearNamedFramebufferfv(d.boundFramebuffer, GL_DEPTH, 0, &depth);
+    } else if (clearStencil) {
+        glClearNamedFramebufferiv(d.boundFramebuffer, GL_STENCIL, 0, &stencil);
+    }
+    // Put back what the shadow says GL has.
+    bool force = d.forceAll;
+    d.forceAll = true;
+    fxport::BlendState blend = d.appliedBlend;
+    fxport::DepthStencilState depthStencil = d.appliedDepthStencil;
+    fxport::RasterizerState rasterizer = d.appliedRasterizer;
+    Rectangle scissor = d.appliedScissor;
+    d.applyBlend(blend);
+    d.applyDepthStencil(depthStencil);
+    d.applyRasterizer(rasterizer);
+    d.applyScissor(scissor);
+    d.forceAll = force;
+}
+
+// --- draws
+
+void GraphicsDevice::SetVertexBuffer(VertexBuffer* buffer, int vertexOffset) {
+    if (buffer && buffer->IsDisposed()) throw InvalidOperation("GraphicsDevice.SetVertexBuffer: the buffer was disposed");
+    impl_->vertexBuffer = buffer;
+    impl_->vertexOffset = vertexOffset;
+}
+
+void GraphicsDevice::DrawIndexedPrimitives(PrimitiveType primitiveType, int baseVertex, int, int, int startIndex,
+                                           int primitiveCount) {
+    Impl& d = *impl_;
+    if (!d.vertexBuffer) throw InvalidOperation("DrawIndexedPrimitives: no vertex buffer set (SetVertexBuffer)");
+    if (!Indices) throw InvalidOperation("DrawIndexedPrimitives: no index buffer set (GraphicsDevice.Indices)");
+    if (Indices->IsDisposed()) throw InvalidOperation("DrawIndexedPrimitives: the index buffer was disposed");
+    int count = vertexCountFor(primitiveType, primitiveCount);
+    if (primitiveCount <= 0 || startIndex < 0 || startIndex + count > Indices->IndexCount())
+        throw ArgumentError("DrawIndexedPrimitives: " + std::to_string(primitiveCount) + " primitives from index " +
+                            std::to_string(startIndex) + " need " + std::to_string(count) + " indices; the index buffer has " +
+                            std::to_string(Indices->IndexCount()));
+    d.flush("DrawIndexedPrimitives");
+    const VertexDeclaration& declaration = d.vertexBuffer->VertexDeclaration();
+    Impl::VertexArray& va = d.vertexArrayFor(declaration);
+    GLintptr offset = GLintptr(d.vertexOffset) * declaration.VertexStride();
+    if (va.buffer != d.vertexBuffer->glName() || va.offset != offset || va.stride != declaration.VertexStride()) {
+        va.buffer = d.vertexBuffer->glName();
+        va.offset = offset;
+        va.stride = declaration.VertexStride();
+        glVertexArrayVertexBuffer(va.vao, 0, va.buffer, va.offset, va.stride);
+    }
+    if (va.elements != Indices->glName()) {
+        va.elements = Indices->glName();
+        glVertexArrayElementBuffer(va.vao, va.elements);
+    }
+    bool wide = Indices->IndexElementSize() == IndexElementSize::ThirtyTwoBits;
+    glDrawElementsBaseVertex(glPrimitive(primitiveType), count, wide ? GL_UNSIGNED_INT : GL_UNSIGNED_SHORT,
+                             reinterpret_cast<const void*>(std::uintptr_t(startIndex) * (wide ? 4u : 2u)), baseVertex);
+}
+
+void GraphicsDevice::DrawPrimitives(PrimitiveType primitiveType, int vertexStart, int primitiveCount) {
+    Impl& d = *impl_;
+    if (!d.vertexBuffer) throw InvalidOperation("DrawPrimitives: no vertex buffer set (SetVertexBuffer)");
+    int count = vertexCountFor(primitiveType, primitiveCount);
+    if (primitiveCount <= 0 || vertexStart < 0 || d.vertexOffset + vertexStart + count > d.vertexBuffer->VertexCount())
+        throw ArgumentError("DrawPrimitives: " + std::to_string(primitiveCount) + " primitives from vertex " +
+                            std::to_string(vertexStart) + " overrun the vertex buffer's " +
+                            std::to_string(d.vertexBuffer->VertexCount()) + " vertices");
+    d.flush("DrawPrimitives");
+    const VertexDeclaration& declaration = d.vertexBuffer->VertexDeclaration();
+    Impl::VertexArray& va = d.vertexArrayFor(declaration);
+    GLintptr offset = GLintptr(d.vertexOffset) * declaration.VertexStride();
+    if (va.buffer != d.vertexBuffer->glName() || va.offset != offset || va.stride != declaration.VertexStride()) {
+        va.buffer = d.vertexBuffer->glName();
+        va.offset = offset;
+        va.stride = declaration.VertexStride();
+        glVertexArrayVertexBuffer(va.vao, 0, va.buffer, va.offset, va.stride);
+    }
+    glDrawArrays(glPrimitive(primitiveType), vertexStart, count);
+}
+
+void GraphicsDevice::Impl::streamUserData(GLuint& buffer, GLsizeiptr& capacity, const void* data, GLsizeiptr bytes) {
+    if (buffer == 0) buffer = createBuffer();
+    // Orphan: a fresh store each time, so the driver never waits for the previous draw.
+    if (bytes > capacity) capacity = std::max<GLsizeiptr>(bytes, 64 * 1024);
+    glNamedBufferData(buffer, capacity, nullptr, GL_STREAM_DRAW);
+    glNamedBufferSubData(buffer, 0, bytes, data);
+}
+
+void GraphicsDevice::drawUser(PrimitiveType type, const void* vertices, std::size_t stride,
+                              const VertexDeclaration& declaration, const void*, int, int, int primitiveCount) {
+    Impl& d = *impl_;
+    if (primitiveCount <= 0) throw ArgumentError("DrawUserPrimitives: primitive count " + std::to_string(primitiveCount));
+    if (stride != std::size_t(declaration.VertexStride()))
+        throw ArgumentError("DrawUserPrimitives: the vertex type has " + std::to_string(stride) +
+                            " bytes, its declaration's stride is " + std::to_string(declaration.VertexStride()));
+    d.flush("DrawUserPrimitives");
+    int count = vertexCountFor(type, primitiveCount);
+    d.streamUserData(d.userVertices, d.userVerticesSize, vertices, GLsizeiptr(count) * GLsizeiptr(stride));
+    Impl::VertexArray& va = d.vertexArrayFor(declaration);
+    va.buffer = d.userVertices;
+    va.offset = 0;
+    va.stride = GLsizei(stride);
+    glVertexArrayVertexBuffer(va.vao, 0, va.buffer, 0, va.stride);
+    glDrawArrays(glPrimitive(type), 0, count);
+}
+
+void GraphicsDevice::drawUserIndexed(PrimitiveType type, const void* vertices, std::size_t stride, int vertexCount,
+                                     const VertexDeclaration& declaration, const void* indices, int indexSize,
+                                     int primitiveCount) {
+    Impl& d = *impl_;
+    if (primitiveCount <= 0 || vertexCount <= 0)
+        throw ArgumentError("DrawUserIndexedPrimitives: primitive count " + std::to_string(primitiveCount) +
+                            ", vertex count " + std::to_string(vertexCount));
+    if (stride != std::size_t(declaration.VertexStride()))
+        throw ArgumentError("DrawUserIndexedPrimitives: the vertex type has " + std::to_string(stride) +
+                            " bytes, its declaration's stride is " + std::to_string(declaration.VertexStride()));
+    d.flush("DrawUserIndexedPrimitives");
+    int count = vertexCountFor(type, primitiveCount);
+    d.streamUserData(d.userVertices, d.userVerticesSize, vertices, GLsizeiptr(vertexCount) * GLsizeiptr(stride));
+    d.streamUserData(d.userIndices, d.userIndicesSize, indices, GLsizeiptr(count) * indexSize);
+    Impl::VertexArray& va = d.vertexArrayFor(declaration);
+    va.buffer = d.userVertices;
+    va.offset = 0;
+    va.stride = GLsizei(stride);
+    glVertexArrayVertexBuffer(va.vao, 0, va.buffer, 0, va.stride);
+    va.elements = d.userIndices;
+    glVertexArrayElementBuffer(va.vao, va.elements);
+    glDrawElements(glPrimitive(type), count, indexSize == 4 ? GL_UNSIGNED_INT : GL_UNSIGNED_SHORT, nullptr);
+}
+
+// --- presentation and read-back
+
+void GraphicsDevice::Present() {
+    if (context_->platform() == platform::Platform::GLFW) {
+        // The back buffer is stored top row first; the window's row 0 is the bottom: flip once here.
+        std::vector<RenderTargetBinding> bound = impl_->targets;
+        impl_->targets.clear();
+        impl_->bindTargets();
+        int w = parameters_.BackBufferWidth, h = parameters_.BackBufferHeight;
+        glBlitNamedFramebuffer(impl_->boundFramebuffer, 0, 0, 0, w, h, 0, h, w, 0, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        impl_->targets = bound;
+        impl_->bindTargets();
+    }
+    context_->swapBuffers();
+    context_->pollEvents();
+}
+
+std::vector<Color> GraphicsDevice::GetBackBufferData() const {
+    std::vector<Color> pixels(std::size_t(parameters_.BackBufferWidth) * std::size_t(parameters_.BackBufferHeight));
+    impl_->backBuffer->GetData(pixels.data(), pixels.size());
+    return pixels;
+}
+
+void GraphicsDevice::SaveBackBufferAsPng(const std::string& path) const { impl_->backBuffer->SaveAsPng(path); }
+
+// --- GL object bookkeeping
+
+GLuint GraphicsDevice::Impl::createTexture(GLenum target) {
+    GLuint name = 0;
+    glCreateTextures(target, 1, &name);
+    ++live.textures;
+    return name;
+}
+void GraphicsDevice::Impl::deleteTexture(GLuint& name) {
+    if (!name) return;
+    for (int unit = 0; unit < kMaxTextureSlots; ++unit)
+        if (boundTextures[std::size_t(unit)] == name) boundTextures[std::size_t(unit)] = 0;
+    glDeleteTextures(1, &name);
+    --live.textures;
+    name = 0;
+}
+GLuint GraphicsDevice::Impl::createBuffer() {
+    GLuint name = 0;
+    glCreateBuffers(1, &name);
+    ++live.buffers;
+    return name;
+}
+void GraphicsDevice::Impl::deleteBuffer(GLuint& name) {
+    if (!name) return;
+    for (GLuint& b : boundUniformBuffers)
+        if (b == name) b = 0;
+    for (GLuint& b : wantedUniformBuffers)
+        if (b == name) b = 0;
+    for (auto& [key, va] : vertexArrays) {
+        if (va.buffer == name) va.buffer = 0, va.offset = -1;
+        if (va.elements == name) va.elements = 0;
+    }
+    glDeleteBuffers(1, &name);
+    --live.buffers;
+    name = 0;
+}
+GLuint GraphicsDevice::Impl::createRenderbuffer() {
+    GLuint name = 0;
+    glCreateRenderbuffers(1, &name);
+    ++live.renderbuffers;
+    return name;
+}
+void GraphicsDevice::Impl::deleteRenderbuffer(GLuint& name) {
+    if (!name) return;
+    glDeleteRenderbuffers(1, &name);
+    --live.renderbuffers;
+    name = 0;
+}
+GLuint GraphicsDevice::Impl::createProgram(GLenum stage, const std::string& source, const std::string& label) {
+    // Identical GLSL for the same stage shares one program (a model's per-part material effects,
+    // the same effect loaded twice): effects hold references, the last release deletes it.
+    auto cached = programCache.find({stage, source});
+    if (cached != programCache.end()) {
+        ++cached->second.references;
+        return cached->second.program;
+    }
+    const char* text = source.c_str();
+    GLuint program = glCreateShaderProgramv(stage, 1, &text);
+    GLint ok = 0;
+    glGetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        GLint length = 0;
+        glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+        std::string log(std::size_t(std::max(length, 1)), '\0');
+        glGetProgramInfoLog(program, GLsizei(log.size()), nullptr, log.data());
+        glDeleteProgram(program);
+        throw InvalidOperation(label + ": the GL driver rejected the translated shader:\n" + log);
+    }
+    ++live.programs;
+    programCache.emplace(std::make_pair(stage, source), CachedProgram{program, 1});
+    return program;
+}
+void GraphicsDevice::Impl::deleteProgram(GLuint& name) {
+    if (!name) return;
+    for (auto it = programCache.begin(); it != programCache.end(); ++it) {
+        if (it->second.program != name) continue;
+        if (--it->second.references > 0) {
+            name = 0;
+            return;
+        }
+        programCache.erase(it);
+        break;
+    }
+    dropPipelinesUsing(name);
+    dropVertexArraysUsing(name);
+    for (auto& s : shaders)
+        if (s && s->program == name) s = nullptr;
+    glDeleteProgram(name);
+    --live.programs;
+    name = 0;
+}
+GLuint GraphicsDevice::Impl::createQuery(GLenum target) {
+    GLuint name = 0;
+    glCreateQueries(target, 1, &name);
+    ++live.queries;
+    return name;
+}
+void GraphicsDevice::Impl::deleteQuery(GLuint& name) {
+    if (!name) return;
+    glDeleteQueries(1, &name);
+    --live.queries;
+    name = 0;
+}
+
+void GraphicsDevice::Impl::dropPipelinesUsing(GLuint program) {
+    for (auto it = pipelines.begin(); it != pipelines.end();) {
+        auto [vs, ps, gs] = it->first;
+        if (vs == program || ps == program || gs == program) {
+            if (boundPipeline == it->second) {
+                glBindProgramPipeline(0);
+                boundPipeline = 0;
+            }
+            glDeleteProgramPipelines(1, &it->second);
+            --live.pipelines;
+            it = pipelines.erase(it);
+        } else {
+            ++it;
+        }
+    }
+}
+
+void GraphicsDevice::Impl::dropVertexArraysUsing(GLuint program) {
+    std::string suffix = "|" + std::to_string(program);
+    for (auto it = vertexArrays.begin(); it != vertexArrays.end();) {
+        const std::string& key = it->first;
+        if (key.size() >= suffix.size() && key.compare(key.size() - suffix.size(), suffix.size(), suffix) == 0) {
+            if (boundVertexArray == it->second.vao) {
+                glBindVertexArray(0);
+                boundVertexArray = 0;
+            }
+            if (lastVertexArray.array == &it->second) lastVertexArray = {};
+            glDeleteVertexArrays(1, &it->second.vao);
+            --live.vertexArrays;
+            it = vertexArrays.erase(it);
+        } else {
+            ++it;
+        }
+    }
+}
+
+void GraphicsDevice::Impl::forget(GraphicsResource* resource) {
+    resources.erase(std::remove(resources.begin(), resources.end(), resource), resources.end());
+}
+
+void GraphicsDevice::Impl::releaseAll() {
+    glBindProgramPipeline(0);
+    glBindVertexArray(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    for (auto& [key, pipeline] : pipelines) glDeleteProgramPipelines(1, &pipeline), --live.pipelines;
+    pipelines.clear();
+    for (auto& [key, va] : vertexArrays) glDeleteVertexArrays(1, &va.vao), --live.vertexArrays;
+    vertexArrays.clear();
+    for (auto& [key, fbo] : framebuffers) glDeleteFramebuffers(1, &fbo), --live.framebuffers;
+    framebuffers.clear();
+    for (auto& [key, sampler] : samplerObjects) glDeleteSamplers(1, &sampler);
+    samplerObjects.clear();
+    deleteBuffer(internalBuffer);
+    deleteBuffer(userVertices);
+    deleteBuffer(userIndices);
+}
+
+}  // namespace fxport

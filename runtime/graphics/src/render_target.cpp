@@ -1,0 +1,71 @@
+#include "fxport/graphics/render_target.h"
+
+#include <algorithm>
+
+#include "device_impl.h"
+#include "fxport/graphics/errors.h"
+#include "gl_formats.h"
+
+namespace fxport {
+
+namespace {
+
+void checkRenderable(const std::string& who, SurfaceFormat format) {
+    if (!detail::isColorRenderable(format))
+        throw ArgumentError(who + ": SurfaceFormat::" + surfaceFormatName(format) +
+                            " cannot be rendered to on OpenGL 4.5 core");
+}
+
+GLuint makeDepth(GraphicsDevice& device, DepthFormat format, int width, int height) {
+    if (format == DepthFormat::None) return 0;
+    GLuint rb = device.impl().createRenderbuffer();
+    glNamedRenderbufferStorage(rb, detail::glDepthFormat(format), width, height);
+    return rb;
+}
+
+// Unbinds the target from the device's current render targets (back to the back buffer) when it
+// is destroyed while bound.
+void unbindIfTarget(GraphicsDevice& device, const Texture* target) {
+    auto& targets = device.impl().targets;
+    bool bound = std::any_of(targets.begin(), targets.end(),
+                             [&](const RenderTargetBinding& b) { return b.RenderTarget == target; });
+    if (bound) device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+}
+
+}  // namespace
+
+RenderTarget2D::RenderTarget2D(fxport::GraphicsDevice& device, int width, int height, bool mipMap,
+                               SurfaceFormat preferredFormat, DepthFormat preferredDepthFormat, int,
+                               fxport::RenderTargetUsage usage)
+    : Texture2D(device, "RenderTarget2D", width, height, mipMap, preferredFormat),
+      depthFormat_(preferredDepthFormat), usage_(usage) {
+    checkRenderable(describe(), preferredFormat);
+    depth_ = makeDepth(device, preferredDepthFormat, width, height);
+}
+
+RenderTarget2D::~RenderTarget2D() { disposeFromDestructor(); }
+
+void RenderTarget2D::releaseGpuObjects() {
+    unbindIfTarget(device(), this);
+    device().impl().deleteRenderbuffer(depth_);
+    Texture2D::releaseGpuObjects();
+}
+
+RenderTargetCube::RenderTargetCube(fxport::GraphicsDevice& device, int size, bool mipMap,
+                                   SurfaceFormat preferredFormat, DepthFormat preferredDepthFormat, int,
+                                   fxport::RenderTargetUsage usage)
+    : TextureCube(device, "RenderTargetCube", size, mipMap, preferredFormat),
+      depthFormat_(preferredDepthFormat), usage_(usage) {
+    checkRenderable(describe(), preferredFormat);
+    depth_ = makeDepth(device, preferredDepthFormat, size, size);
+}
+
+RenderTargetCube::~RenderTargetCube() { disposeFromDestructor(); }
+
+void RenderTargetCube::releaseGpuObjects() {
+    unbindIfTarget(device(), this);
+    device().impl().deleteRenderbuffer(depth_);
+    TextureCube::releaseGpuObjects();
+}
+
+}  // namespace fxport

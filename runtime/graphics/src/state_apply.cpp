@@ -1,0 +1,265 @@
+// The device's GL state shadow: each apply* compares the wanted description with what GL has
+// and calls GL only for the fields that differ (sokol/FNA style). forceAll makes the first flush
+// set everything, since the shadow starts as a guess.
+#include <cmath>
+#include <cstring>
+
+#include "device_impl.h"
+#include "fxport/graphics/errors.h"
+#include "fxport/graphics/texture.h"
+
+namespace fxport {
+
+namespace {
+
+GLenum glBlend(Blend b) {
+    switch (b) {
+    case Blend::One: return GL_ONE;
+    case Blend::Zero: return GL_ZERO;
+    case Blend::SourceColor: return GL_SRC_COLOR;
+    case Blend::InverseSourceColor: return GL_ONE_MINUS_SRC_COLOR;
+    case Blend::SourceAlpha: return GL_SRC_ALPHA;
+    case Blend::InverseSourceAlpha: return GL_ONE_MINUS_SRC_ALPHA;
+    case Blend::DestinationColor: return GL_DST_COLOR;
+    case Blend::InverseDestinationColor: return GL_ONE_MINUS_DST_COLOR;
+    case Blend::DestinationAlpha: return GL_DST_ALPHA;
+    case Blend::InverseDestinationAlpha: return GL_ONE_MINUS_DST_ALPHA;
+    case Blend::BlendFactor: return GL_CONSTANT_COLOR;
+    case Blend::InverseBlendFactor: return GL_ONE_MINUS_CONSTANT_COLOR;
+    case Blend::SourceAlphaSaturation: return GL_SRC_ALPHA_SATURATE;
+    }
+    return GL_ONE;
+}
+
+GLenum glBlendEquation(BlendFunction f) {
+    switch (f) {
+    case BlendFunction::Add: return GL_FUNC_ADD;
+    case BlendFunction::Subtract: return GL_FUNC_SUBTRACT;
+    case BlendFunction::ReverseSubtract: return GL_FUNC_REVERSE_SUBTRACT;
+    case BlendFunction::Min: return GL_MIN;
+    case BlendFunction::Max: return GL_MAX;
+    }
+    return GL_FUNC_ADD;
+}
+
+GLenum glCompare(CompareFunction f) {
+    switch (f) {
+    case CompareFunction::Always: return GL_ALWAYS;
+    case CompareFunction::Never: return GL_NEVER;
+    case CompareFunction::Less: return GL_LESS;
+    case CompareFunction::LessEqual: return GL_LEQUAL;
+    case CompareFunction::Equal: return GL_EQUAL;
+    case CompareFunction::GreaterEqual: return GL_GEQUAL;
+    case CompareFunction::Greater: return GL_GREATER;
+    case CompareFunction::NotEqual: return GL_NOTEQUAL;
+    }
+    return GL_ALWAYS;
+}
+
+GLenum glStencilOp(StencilOperation op) {
+    switch (op) {
+    case StencilOperation::Keep: return GL_KEEP;
+    case StencilOperation::Zero: return GL_ZERO;
+    case StencilOperation::Replace: return GL_REPLACE;
+    case StencilOperation::Increment: return GL_INCR_WRAP;
+    case StencilOperation::Decrement: return GL_DECR_WRAP;
+    case StencilOperation::IncrementSaturation: return GL_INCR;
+    case StencilOperation::DecrementSaturation: return GL_DECR;
+    case StencilOperation::Invert: return GL_INVERT;
+    }
+    return GL_KEEP;
+}
+
+GLenum glAddress(TextureAddressMode m) {
+    switch (m) {
+    case TextureAddressMode::Wrap: return GL_REPEAT;
+    case TextureAddressMode::Clamp: return GL_CLAMP_TO_EDGE;
+    case TextureAddressMode::Mirror: return GL_MIRRORED_REPEAT;
+    case TextureAddressMode::Border: return GL_CLAMP_TO_BORDER;
+    }
+    return GL_REPEAT;
+}
+
+// XNA filter -> (min linear, mag linear, mip linear).
+void filterParts(TextureFilter f, bool& minLinear, bool& magLinear, bool& mipLinear) {
+    switch (f) {
+    case TextureFilter::Linear: minLinear = magLinear = mipLinear = true; return;
+    case TextureFilter::Anisotropic: minLinear = magLinear = mipLinear = true; return;
+    case TextureFilter::Point: minLinear = magLinear = mipLinear = false; return;
+    case TextureFilter::LinearMipPoint: minLinear = magLinear = true; mipLinear = false; return;
+    case TextureFilter::PointMipLinear: minLinear = magLinear = false; mipLinear = true; return;
+    case TextureFilter::MinLinearMagPointMipLinear: minLinear = true; magLinear = false; mipLinear = true; return;
+    case TextureFilter::MinLinearMagPointMipPoint: minLinear = true; magLinear = false; mipLinear = false; return;
+    case TextureFilter::MinPointMagLinearMipLinear: minLinear = false; magLinear = true; mipLinear = true; return;
+    case TextureFilter::MinPointMagLinearMipPoint: minLinear = false; magLinear = true; mipLinear = false; return;
+    }
+}
+
+std::array<float, 4> colorFloats(Color c) {
+    return {c.R / 255.0f, c.G / 255.0f, c.B / 255.0f, c.A / 255.0f};
+}
+
+// XNA culling on GL. ARB_clip_control judges winding as it appears in NDC (with GL_UPPER_LEFT it
+// negates the window-space area to undo its own y flip), and our images show NDC +y at the top: a
+// triangle clockwise in the final image is clockwise to GL. XNA's front faces are clockwise, so
+// glFrontFace(GL_CW), and CullCounterClockwiseFace culls GL's back faces. (Pinned by
+// Conventions.CullModesFollowWindingAsSeen.)
+void applyCull(CullMode mode) {
+    if (mode == CullMode::None) {
+        glDisable(GL_CULL_FACE);
+        return;
+    }
+    glEnable(GL_CULL_FACE);
+    glFrontFace(GL_CW);
+    glCullFace(mode == CullMode::CullCounterClockwiseFace ? GL_BACK : GL_FRONT);
+}
+
+}  // namespace
+
+void GraphicsDevice::Impl::applyBlend(const fxport::BlendState& w) {
+    fxport::BlendState& a = appliedBlend;
+    if (forceAll || w.blendingEnabled() != a.blendingEnabled()) {
+        if (w.blendingEnabled()) glEnable(GL_BLEND);
+        else glDisable(GL_BLEND);
+    }
+    if (forceAll || w.ColorSourceBlend != a.ColorSourceBlend || w.ColorDestinationBlend != a.ColorDestinationBlend ||
+        w.AlphaSourceBlend != a.AlphaSourceBlend || w.AlphaDestinationBlend != a.AlphaDestinationBlend)
+        glBlendFuncSeparate(glBlend(w.ColorSourceBlend), glBlend(w.ColorDestinationBlend), glBlend(w.AlphaSourceBlend),
+                            glBlend(w.AlphaDestinationBlend));
+    if (forceAll || w.ColorBlendFunction != a.ColorBlendFunction || w.AlphaBlendFunction != a.AlphaBlendFunction)
+        glBlendEquationSeparate(glBlendEquation(w.ColorBlendFunction), glBlendEquation(w.AlphaBlendFunction));
+    if (forceAll || w.BlendFactor != a.BlendFactor) {
+        auto c = colorFloats(w.BlendFactor);
+        glBlendColor(c[0], c[1], c[2], c[3]);
+    }
+    const fxport::ColorWriteChannels wanted[4] = {w.ColorWriteChannels, w.ColorWriteChannels1, w.ColorWriteChannels2,
+                                                  w.ColorWriteChannels3};
+    const fxport::ColorWriteChannels had[4] = {a.ColorWriteChannels, a.ColorWriteChannels1, a.ColorWriteChannels2,
+                                               a.ColorWriteChannels3};
+    for (GLuint i = 0; i < 4; ++i) {
+        if (!forceAll && wanted[i] == had[i]) continue;
+        unsigned m = unsigned(wanted[i]);
+        glColorMaski(i, (m & 1) != 0, (m & 2) != 0, (m & 4) != 0, (m & 8) != 0);
+    }
+    if (forceAll || w.MultiSampleMask != a.MultiSampleMask) glSampleMaski(0, GLbitfield(w.MultiSampleMask));
+    a = w;
+}
+
+void GraphicsDevice::Impl::applyDepthStencil(const fxport::DepthStencilState& w) {
+    fxport::DepthStencilState& a = appliedDepthStencil;
+    // GL skips depth writes when the test is off; D3D too (ZENABLE false disables both).
+    if (forceAll || w.DepthBufferEnable != a.DepthBufferEnable) {
+        if (w.DepthBufferEnable) glEnable(GL_DEPTH_TEST);
+        else glDisable(GL_DEPTH_TEST);
+    }
+    if (forceAll || w.DepthBufferWriteEnable != a.DepthBufferWriteEnable) glDepthMask(w.DepthBufferWriteEnable);
+    if (forceAll || w.DepthBufferFunction != a.DepthBufferFunction) glDepthFunc(glCompare(w.DepthBufferFunction));
+    if (forceAll || w.StencilEnable != a.StencilEnable) {
+        if (w.StencilEnable) glEnable(GL_STENCIL_TEST);
+        else glDisable(GL_STENCIL_TEST);
+    }
+    // Front faces (clockwise as seen, XNA's front; GL_CW, see applyCull) use the main stencil ops;
+    // with two-sided mode the back faces use the CounterClockwise ones.
+    if (forceAll || !(w == a)) {
+        CompareFunction backFunc = w.TwoSidedStencilMode ? w.CounterClockwiseStencilFunction : w.StencilFunction;
+        StencilOperation backFail = w.TwoSidedStencilMode ? w.CounterClockwiseStencilFail : w.StencilFail;
+        StencilOperation backZFail = w.TwoSidedStencilMode ? w.CounterClockwiseStencilDepthBufferFail : w.StencilDepthBufferFail;
+        StencilOperation backPass = w.TwoSidedStencilMode ? w.CounterClockwiseStencilPass : w.StencilPass;
+        glStencilFuncSeparate(GL_FRONT, glCompare(w.StencilFunction), w.ReferenceStencil, GLuint(w.StencilMask));
+        glStencilFuncSeparate(GL_BACK, glCompare(backFunc), w.ReferenceStencil, GLuint(w.StencilMask));
+        glStencilOpSeparate(GL_FRONT, glStencilOp(w.StencilFail), glStencilOp(w.StencilDepthBufferFail), glStencilOp(w.StencilPass));
+        glStencilOpSeparate(GL_BACK, glStencilOp(backFail), glStencilOp(backZFail), glStencilOp(backPass));
+        glStencilMask(GLuint(w.StencilWriteMask));
+    }
+    a = w;
+}
+
+void GraphicsDevice::Impl::applyRasterizer(const fxport::RasterizerState& w) {
+    fxport::RasterizerState& a = appliedRasterizer;
+    if (forceAll || w.CullMode != a.CullMode) applyCull(w.CullMode);
+    if (forceAll || w.FillMode != a.FillMode) glPolygonMode(GL_FRONT_AND_BACK, w.FillMode == FillMode::Solid ? GL_FILL : GL_LINE);
+    if (forceAll || w.DepthBias != a.DepthBias || w.SlopeScaleDepthBias != a.SlopeScaleDepthBias) {
+        // D3D's DepthBias is in depth-range units; GL's units are the depth buffer's resolution
+        // (2^-24 for 24-bit depth), hence the scale.
+        if (w.DepthBias == 0 && w.SlopeScaleDepthBias == 0) {
+            glDisable(GL_POLYGON_OFFSET_FILL);
+            glDisable(GL_POLYGON_OFFSET_LINE);
+        } else {
+            glEnable(GL_POLYGON_OFFSET_FILL);
+            glEnable(GL_POLYGON_OFFSET_LINE);
+            glPolygonOffset(w.SlopeScaleDepthBias, w.DepthBias * float(1 << 24));
+        }
+    }
+    if (forceAll || w.ScissorTestEnable != a.ScissorTestEnable) {
+        if (w.ScissorTestEnable) glEnable(GL_SCISSOR_TEST);
+        else glDisable(GL_SCISSOR_TEST);
+    }
+    if (forceAll || w.MultiSampleAntiAlias != a.MultiSampleAntiAlias) {
+        if (w.MultiSampleAntiAlias) glEnable(GL_MULTISAMPLE);
+        else glDisable(GL_MULTISAMPLE);
+    }
+    a = w;
+}
+
+void GraphicsDevice::Impl::applyViewport(const fxport::Viewport& w) {
+    if (!forceAll && w == appliedViewport) return;
+    // Under GL_UPPER_LEFT, window y runs from the top row of the (top-row-first) target, like D3D:
+    // the viewport needs no flip.
+    glViewport(w.X, w.Y, w.Width, w.Height);
+    glDepthRangef(w.MinDepth, w.MaxDepth);
+    appliedViewport = w;
+    // D3D9 pixel centres: SM1-3 vertex shaders add fxport_PixelOffset.xy * w to the position,
+    // moving the geometry right and down by (half a pixel - 1/256 pixel). Half a pixel puts D3D9's
+    // integer pixel centres on GL's; the 1/256 (one step of the rasteriser's sub-pixel grid) keeps
+    // an edge that falls exactly on a centre just above/left of it, so coverage follows D3D's
+    // top-left rule on every driver instead of the GL implementation's own tie-break (llvmpipe
+    // drops the top row of a full-screen quad under GL_UPPER_LEFT without it). The price is an
+    // attribute bias of 1/256 pixel (docs/DESIGN.md).
+    constexpr float kShift = 2.0f * (0.5f - 1.0f / 256.0f);  // in NDC units per pixel
+    std::array<float, 4> offset = {w.Width > 0 ? kShift / float(w.Width) : 0.0f,
+                                   w.Height > 0 ? -kShift / float(w.Height) : 0.0f, 0.0f, 0.0f};
+    if (offset != pixelOffset) {
+        pixelOffset = offset;
+        glNamedBufferSubData(internalBuffer, 0, sizeof(float) * 4, pixelOffset.data());
+    }
+}
+
+void GraphicsDevice::Impl::applyScissor(const Rectangle& w) {
+    if (!forceAll && w == appliedScissor) return;
+    glScissor(w.X, w.Y, std::max(0, w.Width), std::max(0, w.Height));
+    appliedScissor = w;
+}
+
+GLuint GraphicsDevice::Impl::samplerFor(const SamplerState& s) {
+    std::array<std::uint8_t, sizeof(SamplerState)> key{};
+    // SamplerState is a plain aggregate of enums, ints, floats and a Vector4: compare by fields
+    // through a canonical byte image (padding zeroed by value-initialising a copy).
+    SamplerState canonical{};
+    canonical = s;
+    std::memcpy(key.data(), &canonical, sizeof canonical);
+    auto it = samplerObjects.find(key);
+    if (it != samplerObjects.end()) return it->second;
+    GLuint sampler = 0;
+    glCreateSamplers(1, &sampler);
+    bool minLinear = true, magLinear = true, mipLinear = true;
+    filterParts(s.Filter, minLinear, magLinear, mipLinear);
+    GLenum minFilter = s.UseMipMaps ? (minLinear ? (mipLinear ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR_MIPMAP_NEAREST)
+                                                 : (mipLinear ? GL_NEAREST_MIPMAP_LINEAR : GL_NEAREST_MIPMAP_NEAREST))
+                                    : (minLinear ? GL_LINEAR : GL_NEAREST);
+    glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GLint(minFilter));
+    glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, magLinear ? GL_LINEAR : GL_NEAREST);
+    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GLint(glAddress(s.AddressU)));
+    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GLint(glAddress(s.AddressV)));
+    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_R, GLint(glAddress(s.AddressW)));
+    glSamplerParameterf(sampler, GL_TEXTURE_MIN_LOD, float(s.MaxMipLevel));
+    glSamplerParameterf(sampler, GL_TEXTURE_LOD_BIAS, s.MipMapLevelOfDetailBias);
+    if (!s.UseMipMaps) glSamplerParameterf(sampler, GL_TEXTURE_MAX_LOD, float(s.MaxMipLevel));
+    const float border[4] = {s.BorderColor.X, s.BorderColor.Y, s.BorderColor.Z, s.BorderColor.W};
+    glSamplerParameterfv(sampler, GL_TEXTURE_BORDER_COLOR, border);
+    if (s.Filter == TextureFilter::Anisotropic)
+        glSamplerParameterf(sampler, GL_TEXTURE_MAX_ANISOTROPY, float(std::max(1, s.MaxAnisotropy)));
+    samplerObjects.emplace(std::move(key), sampler);
+    return sampler;
+}
+
+}  // namespace fxport

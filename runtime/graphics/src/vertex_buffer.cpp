@@ -1,0 +1,91 @@
+#include "fxport/graphics/vertex_buffer.h"
+
+#include "device_impl.h"
+#include "fxport/graphics/errors.h"
+
+namespace fxport {
+
+namespace {
+
+// Checks a SetData/GetData range and returns its byte size.
+std::size_t checkedRange(const std::string& who, const char* call, std::size_t offset, std::size_t elementSize,
+                         std::size_t count, std::size_t capacity) {
+    std::size_t bytes = elementSize * count;
+    if (offset + bytes > capacity)
+        throw ArgumentError(who + ": " + call + " of " + std::to_string(count) + " elements of " +
+                            std::to_string(elementSize) + " bytes at byte " + std::to_string(offset) +
+                            " overruns the buffer's " + std::to_string(capacity) + " bytes");
+    return bytes;
+}
+
+}  // namespace
+
+VertexBuffer::VertexBuffer(fxport::GraphicsDevice& device, const fxport::VertexDeclaration& declaration,
+                           int vertexCount, fxport::BufferUsage usage)
+    : GraphicsResource(device, "VertexBuffer"), declaration_(declaration), count_(vertexCount), usage_(usage) {
+    if (vertexCount <= 0 || declaration.VertexStride() <= 0)
+        throw ArgumentError(describe() + ": vertex count " + std::to_string(vertexCount) + " and stride " +
+                            std::to_string(declaration.VertexStride()) + " must both be positive");
+    name_ = device.impl().createBuffer();
+    glNamedBufferStorage(name_, GLsizeiptr(vertexCount) * declaration.VertexStride(), nullptr, GL_DYNAMIC_STORAGE_BIT);
+}
+
+VertexBuffer::~VertexBuffer() { disposeFromDestructor(); }
+
+void VertexBuffer::releaseGpuObjects() {
+    fxport::GraphicsDevice& d = device();
+    if (d.impl().vertexBuffer == this) d.impl().vertexBuffer = nullptr;
+    d.impl().deleteBuffer(name_);
+}
+
+void VertexBuffer::setData(int offsetInBytes, const void* data, std::size_t elementSize, std::size_t count) {
+    throwIfDisposed("SetData");
+    std::size_t capacity = std::size_t(count_) * std::size_t(declaration_.VertexStride());
+    std::size_t bytes = checkedRange(describe(), "SetData", std::size_t(offsetInBytes), elementSize, count, capacity);
+    glNamedBufferSubData(name_, offsetInBytes, GLsizeiptr(bytes), data);
+}
+
+void VertexBuffer::getData(void* data, std::size_t elementSize, std::size_t count) const {
+    throwIfDisposed("GetData");
+    std::size_t capacity = std::size_t(count_) * std::size_t(declaration_.VertexStride());
+    std::size_t bytes = checkedRange(describe(), "GetData", 0, elementSize, count, capacity);
+    glGetNamedBufferSubData(name_, 0, GLsizeiptr(bytes), data);
+}
+
+IndexBuffer::IndexBuffer(fxport::GraphicsDevice& device, fxport::IndexElementSize elementSize, int indexCount,
+                         fxport::BufferUsage usage)
+    : GraphicsResource(device, "IndexBuffer"), elementSize_(elementSize), count_(indexCount), usage_(usage) {
+    if (indexCount <= 0) throw ArgumentError(describe() + ": index count " + std::to_string(indexCount) + " must be positive");
+    name_ = device.impl().createBuffer();
+    glNamedBufferStorage(name_, GLsizeiptr(indexCount) * elementBytes(), nullptr, GL_DYNAMIC_STORAGE_BIT);
+}
+
+IndexBuffer::~IndexBuffer() { disposeFromDestructor(); }
+
+void IndexBuffer::releaseGpuObjects() {
+    fxport::GraphicsDevice& d = device();
+    if (d.Indices == this) d.Indices = nullptr;
+    d.impl().deleteBuffer(name_);
+}
+
+void IndexBuffer::setData(int offsetInBytes, const void* data, std::size_t elementSize, std::size_t count) {
+    throwIfDisposed("SetData");
+    if (elementSize != std::size_t(elementBytes()))
+        throw ArgumentError(describe() + ": SetData with " + std::to_string(elementSize * 8) + "-bit indices into a " +
+                            std::to_string(elementBytes() * 8) + "-bit index buffer");
+    std::size_t bytes = checkedRange(describe(), "SetData", std::size_t(offsetInBytes), elementSize, count,
+                                     std::size_t(count_) * std::size_t(elementBytes()));
+    glNamedBufferSubData(name_, offsetInBytes, GLsizeiptr(bytes), data);
+}
+
+void IndexBuffer::getData(void* data, std::size_t elementSize, std::size_t count) const {
+    throwIfDisposed("GetData");
+    if (elementSize != std::size_t(elementBytes()))
+        throw ArgumentError(describe() + ": GetData with " + std::to_string(elementSize * 8) + "-bit indices from a " +
+                            std::to_string(elementBytes() * 8) + "-bit index buffer");
+    std::size_t bytes = checkedRange(describe(), "GetData", 0, elementSize, count,
+                                     std::size_t(count_) * std::size_t(elementBytes()));
+    glGetNamedBufferSubData(name_, 0, GLsizeiptr(bytes), data);
+}
+
+}  // namespace fxport

@@ -1,0 +1,20 @@
+// fxport's math library: XNA 4's math types with XNA's names and conventions (row vectors,
+// right-handed, Direct3D [0, 1] depth), so C# host code ports line by line:
+//
+//   Matrix world = Matrix::CreateRotationY(angle) * Matrix::CreateTranslation(position);
+//   Matrix view = Matrix::CreateLookAt({0, 0, 5}, Vector3::Zero, Vector3::Up);
+//   Matrix projection = Matrix::CreatePerspectiveFieldOfView(MathHelper::PiOver4, aspect, 1, 100);
+//   device.Clear(Color::CornflowerBlue);
+//
+// Plain structs in namespace fxport; no GLM (nor any other library's) type appears in these headers.
+#pragma once
+
+#include "fxport/math/bounding_sphere.h"
+#include "fxport/math/color.h"
+#include "fxport/math/math_helper.h"
+#include "fxport/math/matrix.h"
+#include "fxport/math/quaternion.h"
+#include "fxport/math/rectangle.h"
+#include "fxport/math/vector2.h"
+#include "fxport/math/vector3.h"
+#include "fxport/math/vector4.h"

@@ -1,0 +1,95 @@
+// Vector2: XNA's two-component float vector. Plain data (8 bytes, X then Y), so arrays of it can go
+// straight into a vertex buffer.
+#pragma once
+
+#include <cmath>
+#include <type_traits>
+
+#include "fxport/math/math_helper.h"
+
+namespace fxport {
+
+struct Matrix;
+
+struct Vector2 {
+    float X = 0.0f;
+    float Y = 0.0f;
+
+    constexpr Vector2() = default;
+    constexpr explicit Vector2(float value) : X(value), Y(value) {}
+    constexpr Vector2(float x, float y) : X(x), Y(y) {}
+
+    static const Vector2 Zero;
+    static const Vector2 One;
+    static const Vector2 UnitX;
+    static const Vector2 UnitY;
+
+    float Length() const { return std::sqrt(LengthSquared()); }
+    constexpr float LengthSquared() const { return X * X + Y * Y; }
+    // In place. Like XNA, a zero vector becomes NaN.
+    void Normalize() {
+        const float inv = 1.0f / Length();
+        X *= inv;
+        Y *= inv;
+    }
+
+    static Vector2 Normalize(Vector2 value) {
+        value.Normalize();
+        return value;
+    }
+    static constexpr float Dot(Vector2 a, Vector2 b) { return a.X * b.X + a.Y * b.Y; }
+    static constexpr float DistanceSquared(Vector2 a, Vector2 b) {
+        return (a.X - b.X) * (a.X - b.X) + (a.Y - b.Y) * (a.Y - b.Y);
+    }
+    static float Distance(Vector2 a, Vector2 b) { return std::sqrt(DistanceSquared(a, b)); }
+    static constexpr Vector2 Lerp(Vector2 a, Vector2 b, float amount) {
+        return {a.X + (b.X - a.X) * amount, a.Y + (b.Y - a.Y) * amount};
+    }
+    static constexpr Vector2 Min(Vector2 a, Vector2 b) {
+        return {a.X < b.X ? a.X : b.X, a.Y < b.Y ? a.Y : b.Y};
+    }
+    static constexpr Vector2 Max(Vector2 a, Vector2 b) {
+        return {a.X > b.X ? a.X : b.X, a.Y > b.Y ? a.Y : b.Y};
+    }
+    // Per component, with MathHelper::Clamp's order of tests.
+    static constexpr Vector2 Clamp(Vector2 value, Vector2 min, Vector2 max) {
+        return {MathHelper::Clamp(value.X, min.X, max.X), MathHelper::Clamp(value.Y, min.Y, max.Y)};
+    }
+    // Reflects vector off a surface with the given (unit) normal.
+    static constexpr Vector2 Reflect(Vector2 vector, Vector2 normal) {
+        const float d = 2.0f * Dot(vector, normal);
+        return {vector.X - d * normal.X, vector.Y - d * normal.Y};
+    }
+    // As a point (w = 1: translation applies) and as a direction (w = 0).
+    static Vector2 Transform(Vector2 position, const Matrix& matrix);
+    static Vector2 TransformNormal(Vector2 normal, const Matrix& matrix);
+
+    constexpr Vector2& operator+=(Vector2 v) { X += v.X; Y += v.Y; return *this; }
+    constexpr Vector2& operator-=(Vector2 v) { X -= v.X; Y -= v.Y; return *this; }
+    constexpr Vector2& operator*=(Vector2 v) { X *= v.X; Y *= v.Y; return *this; }
+    constexpr Vector2& operator*=(float s) { X *= s; Y *= s; return *this; }
+    constexpr Vector2& operator/=(Vector2 v) { X /= v.X; Y /= v.Y; return *this; }
+    // XNA divides by a scalar as a multiply by its reciprocal; so do we, for the same results.
+    constexpr Vector2& operator/=(float s) { return *this *= 1.0f / s; }
+
+    friend constexpr bool operator==(const Vector2&, const Vector2&) = default;
+};
+
+inline constexpr Vector2 Vector2::Zero{0.0f, 0.0f};
+inline constexpr Vector2 Vector2::One{1.0f, 1.0f};
+inline constexpr Vector2 Vector2::UnitX{1.0f, 0.0f};
+inline constexpr Vector2 Vector2::UnitY{0.0f, 1.0f};
+
+constexpr Vector2 operator+(Vector2 a, Vector2 b) { return a += b; }
+constexpr Vector2 operator-(Vector2 a, Vector2 b) { return a -= b; }
+constexpr Vector2 operator*(Vector2 a, Vector2 b) { return a *= b; }
+constexpr Vector2 operator*(Vector2 v, float s) { return v *= s; }
+constexpr Vector2 operator*(float s, Vector2 v) { return v *= s; }
+constexpr Vector2 operator/(Vector2 a, Vector2 b) { return a /= b; }
+constexpr Vector2 operator/(Vector2 v, float s) { return v /= s; }
+constexpr Vector2 operator-(Vector2 v) { return {-v.X, -v.Y}; }
+
+static_assert(sizeof(Vector2) == 8 && std::is_standard_layout_v<Vector2> &&
+              std::is_trivially_copyable_v<Vector2>);
+
+}  // namespace fxport

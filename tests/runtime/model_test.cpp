@@ -1,0 +1,781 @@
+// Model loaded from glTF: bones, transforms, meshes and parts, vertex and index data read back from
+// the GPU buffers, material textures, generated tangent frames, error messages. Every glTF file is
+// written by the test itself (JSON + .bin or .glb + PNGs in a temporary folder), so each expected
+// value below is known independently of the loader.
+#include <gtest/gtest.h>
+#include <stb_image_write.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+#include "fxport/graphics.h"
+#include "fxport/graphics/model.h"
+#include "gltf_loader.h"         // runtime/graphics/src: gltfNodeMatrix
+#include "tangent_generation.h"  // runtime/graphics/src: generateTangents
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+namespace fxport {
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// Writing glTF files
+
+constexpr int kFloat = 5126, kUnsignedShort = 5123, kUnsignedInt = 5125;
+constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
+
+class GltfBuilder {
+public:
+    json doc = {{"asset", {{"version", "2.0"}, {"generator", "fxport model_test"}}}};
+
+    // Appends `data` (4-byte aligned) as a buffer view and an accessor over it; returns the accessor.
+    template <class T>
+    int accessor(const std::vector<T>& data, const char* type, int componentType, int components, int target) {
+        while (bin_.size() % 4) {
+            bin_.push_back(0);
+        }
+        const std::size_t offset = bin_.size();
+        const auto* bytes = reinterpret_cast<const unsigned char*>(data.data());
+        bin_.insert(bin_.end(), bytes, bytes + data.size() * sizeof(T));
+        json view = {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", data.size() * sizeof(T)}};
+        if (target) {
+            view["target"] = target;
+        }
+        doc["bufferViews"].push_back(view);
+        json acc = {{"bufferView", doc["bufferViews"].size() - 1},
+                    {"componentType", componentType},
+                    {"count", data.size() / std::size_t(components)},
+                    {"type", type}};
+        if (std::string(type) == "VEC3" && componentType == kFloat) {  // POSITION needs min/max
+            std::vector<double> lo(3, 1e30), hi(3, -1e30);
+            for (std::size_t i = 0; i < data.size(); ++i) {
+                lo[i % 3] = std::min(lo[i % 3], double(data[i]));
+                hi[i % 3] = std::max(hi[i % 3], double(data[i]));
+            }
+            acc["min"] = lo;
+            acc["max"] = hi;
+        }
+        doc["accessors"].push_back(acc);
+        return int(doc["accessors"].size() - 1);
+    }
+    int vec3(const std::vector<float>& v) { return accessor(v, "VEC3", kFloat, 3, kArrayBuffer); }
+    int vec2(const std::vector<float>& v) { return accessor(v, "VEC2", kFloat, 2, kArrayBuffer); }
+    int vec4(const std::vector<float>& v) { return accessor(v, "VEC4", kFloat, 4, kArrayBuffer); }
+    int indices16(const std::vector<std::uint16_t>& v) {
+        return accessor(v, "SCALAR", kUnsignedShort, 1, kElementArrayBuffer);
+    }
+    int indices32(const std::vector<std::uint32_t>& v) {
+        return accessor(v, "SCALAR", kUnsignedInt, 1, kElementArrayBuffer);
+    }
+
+    // .gltf + .bin beside it.
+    void writeGltf(const fs::path& path) {
+        const fs::path binPath = fs::path(path).replace_extension(".bin");
+        std::ofstream(binPath, std::ios::binary).write(reinterpret_cast<const char*>(bin_.data()), std::streamsize(bin_.size()));
+        json out = doc;
+        out["buffers"] = json::array({{{"uri", binPath.filename().string()}, {"byteLength", bin_.size()}}});
+        std::ofstream(path) << out.dump(2);
+    }
+
+    // Binary glTF: header, JSON chunk, BIN chunk.
+    void writeGlb(const fs::path& path) {
+        json out = doc;
+        out["buffers"] = json::array({{{"byteLength", bin_.size()}}});
+        std::string text = out.dump();
+        while (text.size() % 4) {
+            text += ' ';
+        }
+        std::vector<unsigned char> bin = bin_;
+        while (bin.size() % 4) {
+            bin.push_back(0);
+        }
+        std::vector<unsigned char> glb;
+        auto u32 = [&](std::uint32_t v) {
+            for (int i = 0; i < 4; ++i) {
+                glb.push_back(std::uint8_t(v >> (8 * i)));
+            }
+        };
+        glb.insert(glb.end(), {'g', 'l', 'T', 'F'});
+        u32(2);
+        u32(std::uint32_t(12 + 8 + text.size() + 8 + bin.size()));
+        u32(std::uint32_t(text.size()));
+        glb.insert(glb.end(), {'J', 'S', 'O', 'N'});
+        glb.insert(glb.end(), text.begin(), text.end());
+        u32(std::uint32_t(bin.size()));
+        glb.insert(glb.end(), {'B', 'I', 'N', '\0'});
+        glb.insert(glb.end(), bin.begin(), bin.end());
+        std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(glb.data()), std::streamsize(glb.size()));
+    }
+
+private:
+    std::vector<unsigned char> bin_;
+};
+
+void writePng(const fs::path& path, int width, int height, const std::vector<Color>& texels) {
+    ASSERT_EQ(texels.size(), std::size_t(width * height));
+    ASSERT_NE(stbi_write_png(path.string().c_str(), width, height, 4, texels.data(), width * 4), 0) << path;
+}
+
+// The quad every test mesh uses: the unit square in the XY plane facing +Z, u along +X and v along
+// -Y (glTF's texture origin is the top left, so the image's top row lies at y = 1).
+const std::vector<float> kQuadPositions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+const std::vector<float> kQuadNormals = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};
+const std::vector<float> kQuadUvs = {0, 1, 1, 1, 1, 0, 0, 0};
+// Counter-clockwise seen from +Z (glTF's front).
+const std::vector<std::uint16_t> kQuadIndices = {0, 1, 2, 0, 2, 3};
+
+const std::vector<Color> kAlbedoTexels = {Color(255, 0, 0, 255), Color(0, 255, 0, 255), Color(0, 0, 255, 255),
+                                          Color(255, 255, 255, 255)};
+const std::vector<Color> kNormalTexels = {Color(10, 20, 250, 255)};
+const std::vector<Color> kSpecularTexels = {Color(40, 80, 0, 255), Color(120, 160, 0, 255)};
+
+// ---------------------------------------------------------------------------------------------
+// Fixture: one device and one folder for the whole suite.
+
+class ModelTest : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        dir_ = new fs::path(fs::temp_directory_path() / ("fxport_model_test_" + std::to_string(::getpid())));
+        fs::create_directories(*dir_);
+        device_ = new GraphicsDevice(PresentationParameters{});
+    }
+    static void TearDownTestSuite() {
+        delete device_;
+        device_ = nullptr;
+        std::error_code ignored;
+        fs::remove_all(*dir_, ignored);
+        delete dir_;
+        dir_ = nullptr;
+    }
+    static GraphicsDevice& device() { return *device_; }
+    static fs::path file(const std::string& name) { return *dir_ / name; }
+
+    // The scene of most tests:
+    //   node 0 "Base":   rotation 90 degrees about +Z, translation (1, 2, 3); mesh 0; children 1, 2
+    //   node 1 "Arm":    translation (1, 0, 0), scale 2; mesh 1
+    //   node 2 "Marker": matrix = scale x by 3, translation (4, 5, 6); no mesh
+    //   mesh 0 "TexturedQuad": the quad with TANGENT (w = -1 on vertex 3), 16-bit indices, material 0
+    //     (base colour 2x2 PNG, normal 1x1 PNG, specular via extras.fxportSpecularMap 2x1 PNG)
+    //   mesh 1 "Plain": primitive 0 = the quad without tangents, 32-bit indices, material 1 (only
+    //     KHR_materials_specular.specularTexture); primitive 1 = one triangle in the XZ plane
+    //     without indices, normals, UVs or material.
+    static GltfBuilder sceneBuilder() {
+        writePng(file("albedo.png"), 2, 2, kAlbedoTexels);
+        writePng(file("normal.png"), 1, 1, kNormalTexels);
+        writePng(file("specular.png"), 2, 1, kSpecularTexels);
+
+        GltfBuilder b;
+        const float s = std::sqrt(0.5f);
+        b.doc["scene"] = 0;
+        b.doc["scenes"] = json::array({{{"nodes", {0}}}});
+        b.doc["nodes"] = json::array({
+            {{"name", "Base"}, {"rotation", {0, 0, s, s}}, {"translation", {1, 2, 3}}, {"mesh", 0}, {"children", {1, 2}}},
+            {{"name", "Arm"}, {"translation", {1, 0, 0}}, {"scale", {2, 2, 2}}, {"mesh", 1}},
+            {{"name", "Marker"}, {"matrix", {3, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 4, 5, 6, 1}}},
+        });
+        b.doc["images"] = json::array({{{"uri", "albedo.png"}}, {{"uri", "normal.png"}}, {{"uri", "specular.png"}}});
+        b.doc["textures"] = json::array({{{"source", 0}}, {{"source", 1}}, {{"source", 2}}});
+        b.doc["materials"] = json::array({
+            {{"name", "Painted"},
+             {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}},
+             {"normalTexture", {{"index", 1}}},
+             {"extras", {{"fxportSpecularMap", 2}}}},
+            {{"name", "Shiny"}, {"extensions", {{"KHR_materials_specular", {{"specularTexture", {{"index", 2}}}}}}}},
+        });
+        b.doc["extensionsUsed"] = {"KHR_materials_specular"};
+
+        const std::vector<float> tangents = {1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, -1};
+        json texturedQuad = {{"mode", 4},
+                             {"material", 0},
+                             {"indices", b.indices16(kQuadIndices)},
+                             {"attributes",
+                              {{"POSITION", b.vec3(kQuadPositions)},
+                               {"NORMAL", b.vec3(kQuadNormals)},
+                               {"TEXCOORD_0", b.vec2(kQuadUvs)},
+                               {"TANGENT", b.vec4(tangents)}}}};
+        json plainQuad = {{"material", 1},
+                          {"indices", b.indices32({0, 1, 2, 0, 2, 3})},
+                          {"attributes",
+                           {{"POSITION", b.vec3(kQuadPositions)},
+                            {"NORMAL", b.vec3(kQuadNormals)},
+                            {"TEXCOORD_0", b.vec2(kQuadUvs)}}}};
+        // Counter-clockwise seen from +Y: face normal +Y.
+        json bareTriangle = {{"attributes", {{"POSITION", b.vec3({0, 0, 0, 0, 0, 1, 1, 0, 0})}}}};
+        b.doc["meshes"] = json::array({
+            {{"name", "TexturedQuad"}, {"primitives", {texturedQuad}}},
+            {{"name", "Plain"}, {"primitives", {plainQuad, bareTriangle}}},
+        });
+        return b;
+    }
+
+    static std::string writeScene() {
+        sceneBuilder().writeGltf(file("scene.gltf"));
+        return file("scene.gltf").string();
+    }
+
+    // Loads a file that must fail; returns the message.
+    static std::string loadError(const fs::path& path) {
+        try {
+            Model::Load(device(), path.string());
+        } catch (const ArgumentError& e) {
+            return e.what();
+        }
+        ADD_FAILURE() << "loading " << path << " did not throw ArgumentError";
+        return "";
+    }
+
+    static GraphicsDevice* device_;
+    static fs::path* dir_;
+};
+
+GraphicsDevice* ModelTest::device_ = nullptr;
+fs::path* ModelTest::dir_ = nullptr;
+
+// ---------------------------------------------------------------------------------------------
+// Helpers for comparing
+
+void expectNear(const Matrix& actual, const Matrix& expected, float tolerance = 1e-5f) {
+    for (int i = 0; i < 16; ++i) {
+        EXPECT_NEAR(actual.data()[i], expected.data()[i], tolerance) << "element " << i << " (M" << (i / 4 + 1)
+                                                                      << (i % 4 + 1) << ")";
+    }
+}
+
+void expectNear(Vector3 actual, Vector3 expected, float tolerance = 1e-5f) {
+    EXPECT_NEAR(actual.X, expected.X, tolerance);
+    EXPECT_NEAR(actual.Y, expected.Y, tolerance);
+    EXPECT_NEAR(actual.Z, expected.Z, tolerance);
+}
+
+std::vector<ModelVertex> readVertices(const VertexBuffer& buffer) {
+    std::vector<ModelVertex> vertices(std::size_t(buffer.VertexCount()));
+    buffer.GetData(vertices.data(), vertices.size());
+    return vertices;
+}
+
+std::vector<std::uint32_t> readIndices(const IndexBuffer& buffer) {
+    std::vector<std::uint32_t> out;
+    if (buffer.IndexElementSize() == IndexElementSize::SixteenBits) {
+        std::vector<std::uint16_t> narrow(std::size_t(buffer.IndexCount()));
+        buffer.GetData(narrow.data(), narrow.size());
+        out.assign(narrow.begin(), narrow.end());
+    } else {
+        out.resize(std::size_t(buffer.IndexCount()));
+        buffer.GetData(out.data(), out.size());
+    }
+    return out;
+}
+
+std::vector<Color> texels(const ModelMeshPart& part, const char* parameter) {
+    Texture2D* texture = part.Effect->Parameters[parameter].GetValueTexture2D();
+    EXPECT_NE(texture, nullptr) << parameter;
+    return texture ? texture->GetData<Color>() : std::vector<Color>();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Tangent generation (runtime/graphics/src/tangent_generation.cpp)
+
+std::vector<Vector3> toVector3(const std::vector<float>& v) {
+    std::vector<Vector3> out;
+    for (std::size_t i = 0; i + 2 < v.size(); i += 3) {
+        out.emplace_back(v[i], v[i + 1], v[i + 2]);
+    }
+    return out;
+}
+
+std::vector<Vector2> toVector2(const std::vector<float>& v) {
+    std::vector<Vector2> out;
+    for (std::size_t i = 0; i + 1 < v.size(); i += 2) {
+        out.emplace_back(v[i], v[i + 1]);
+    }
+    return out;
+}
+
+const std::vector<std::uint32_t> kQuadIndices32(kQuadIndices.begin(), kQuadIndices.end());
+
+TEST(TangentGeneration, QuadWithUAlongXGivesTangentXAndBinormalTowardsImageTop) {
+    const auto positions = toVector3(kQuadPositions);
+    const auto normals = toVector3(kQuadNormals);
+    const auto tangents = detail::generateTangents(positions, normals, toVector2(kQuadUvs), kQuadIndices32);
+    ASSERT_EQ(tangents.size(), 4u);
+    for (std::size_t i = 0; i < 4; ++i) {
+        SCOPED_TRACE(i);
+        expectNear(Vector3(tangents[i].X, tangents[i].Y, tangents[i].Z), Vector3::UnitX);
+        EXPECT_EQ(tangents[i].W, 1.0f);
+        // glTF: binormal = cross(N, T) * w; v grows along -Y, so "decreasing v" is +Y.
+        expectNear(Vector3::Cross(normals[i], Vector3::UnitX) * tangents[i].W, Vector3::UnitY);
+    }
+}
+
+TEST(TangentGeneration, MirroredUvsFlipHandedness) {
+    // u grows along -X now; v still along -Y.
+    const std::vector<float> mirrored = {1, 1, 0, 1, 0, 0, 1, 0};
+    const auto normals = toVector3(kQuadNormals);
+    const auto tangents =
+        detail::generateTangents(toVector3(kQuadPositions), normals, toVector2(mirrored), kQuadIndices32);
+    for (std::size_t i = 0; i < 4; ++i) {
+        SCOPED_TRACE(i);
+        expectNear(Vector3(tangents[i].X, tangents[i].Y, tangents[i].Z), -Vector3::UnitX);
+        EXPECT_EQ(tangents[i].W, -1.0f);
+        expectNear(Vector3::Cross(normals[i], -Vector3::UnitX) * tangents[i].W, Vector3::UnitY);
+    }
+}
+
+TEST(TangentGeneration, TangentIsOrthogonalisedAgainstTheNormal) {
+    // Normals tilted towards +X by 36.87 degrees: dP/du = +X loses its normal part,
+    // (1, 0, 0) - n * 0.6 = (0.64, 0, -0.48) -> (0.8, 0, -0.6).
+    const std::vector<Vector3> normals(4, Vector3(0.6f, 0.0f, 0.8f));
+    const auto tangents = detail::generateTangents(toVector3(kQuadPositions), normals, toVector2(kQuadUvs), kQuadIndices32);
+    for (const Vector4& t : tangents) {
+        expectNear(Vector3(t.X, t.Y, t.Z), Vector3(0.8f, 0.0f, -0.6f));
+    }
+}
+
+TEST(TangentGeneration, DegenerateUvsGiveAUnitTangentOrthogonalToTheNormal) {
+    const std::vector<Vector2> zeroUvs(4);
+    const auto normals = toVector3(kQuadNormals);
+    for (const Vector4& t : detail::generateTangents(toVector3(kQuadPositions), normals, zeroUvs, kQuadIndices32)) {
+        const Vector3 xyz(t.X, t.Y, t.Z);
+        EXPECT_NEAR(xyz.Length(), 1.0f, 1e-6f);
+        EXPECT_NEAR(Vector3::Dot(xyz, normals[0]), 0.0f, 1e-6f);
+        EXPECT_EQ(t.W, 1.0f);
+    }
+    // A zero normal too: still finite.
+    const std::vector<Vector3> zeroNormals(4);
+    for (const Vector4& t : detail::generateTangents(toVector3(kQuadPositions), zeroNormals, zeroUvs, kQuadIndices32)) {
+        EXPECT_NEAR(Vector3(t.X, t.Y, t.Z).Length(), 1.0f, 1e-6f);
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Node transforms (no device needed)
+
+TEST(GltfNodeMatrix, TranslationRotationScaleAndMatrix) {
+    const double s = std::sqrt(0.5);
+    // Rotation by 90 degrees about +Z turns +X into +Y; XNA rows are the images of the axes.
+    expectNear(detail::gltfNodeMatrix({}, {1, 2, 3}, {0, 0, s, s}, {}),
+               Matrix(0, 1, 0, 0, -1, 0, 0, 0, 0, 0, 1, 0, 1, 2, 3, 1));
+    // Scale applies first, then rotation, then translation.
+    expectNear(detail::gltfNodeMatrix({}, {1, 2, 3}, {0, 0, s, s}, {2, 3, 4}),
+               Matrix(0, 2, 0, 0, -3, 0, 0, 0, 0, 0, 4, 0, 1, 2, 3, 1));
+    // A matrix is the same 16 numbers in XNA's order.
+    expectNear(detail::gltfNodeMatrix({1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16}, {9, 9, 9}, {}, {}),
+               Matrix(1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16));
+    // Agrees with the math library's own composition for an arbitrary rotation.
+    Quaternion q = Quaternion::Normalize(Quaternion(0.3f, -0.5f, 0.2f, 0.8f));
+    expectNear(detail::gltfNodeMatrix({}, {-1, 0.5, 7}, {q.X, q.Y, q.Z, q.W}, {0.5, 2, 1.5}),
+               Matrix::CreateScale(0.5f, 2.0f, 1.5f) * Matrix::CreateFromQuaternion(q) *
+                   Matrix::CreateTranslation(-1.0f, 0.5f, 7.0f));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Loading
+
+TEST_F(ModelTest, BonesFollowTheNodeHierarchy) {
+    const auto model = Model::Load(device(), writeScene());
+    ASSERT_EQ(model->Bones.Count(), 3);
+    EXPECT_EQ(model->Bones[0].Name, "Base");
+    EXPECT_EQ(model->Bones[1].Name, "Arm");
+    EXPECT_EQ(model->Bones[2].Name, "Marker");
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_EQ(model->Bones[i].Index, i);
+    }
+    ASSERT_EQ(model->Root, &model->Bones[0]);
+    EXPECT_EQ(model->Root->Parent, nullptr);
+    EXPECT_EQ(model->Bones["Arm"].Parent, model->Root);
+    EXPECT_EQ(model->Bones["Marker"].Parent, model->Root);
+    ASSERT_EQ(model->Root->Children.Count(), 2);
+    EXPECT_EQ(&model->Root->Children[0], &model->Bones[1]);
+    EXPECT_EQ(&model->Root->Children["Marker"], &model->Bones[2]);
+    EXPECT_EQ(model->Bones.find("Nothing"), nullptr);
+    EXPECT_THROW((void)model->Bones["Nothing"], ArgumentError);
+    EXPECT_THROW((void)model->Bones[3], ArgumentError);
+
+    // Local transforms.
+    expectNear(model->Bones[0].Transform, Matrix(0, 1, 0, 0, -1, 0, 0, 0, 0, 0, 1, 0, 1, 2, 3, 1));
+    expectNear(model->Bones[1].Transform, Matrix(2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0, 1, 0, 0, 1));
+    expectNear(model->Bones[2].Transform, Matrix(3, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 4, 5, 6, 1));
+    EXPECT_EQ(model->Bones[0].Transform.Translation(), Vector3(1, 2, 3));
+
+    // Absolute = local * parent's absolute (XNA order), worked out by hand:
+    //   Arm: rows (2,0,0)->(0,2,0), (0,2,0)->(-2,0,0), translation (1,0,0)->(0,1,0)+(1,2,3).
+    //   Marker: translation (4,5,6) -> (-5,4,6) + (1,2,3).
+    std::vector<Matrix> transforms;
+    model->CopyAbsoluteBoneTransformsTo(transforms);
+    ASSERT_EQ(transforms.size(), 3u);
+    expectNear(transforms[0], model->Bones[0].Transform);
+    expectNear(transforms[1], Matrix(0, 2, 0, 0, -2, 0, 0, 0, 0, 0, 2, 0, 1, 3, 3, 1));
+    expectNear(transforms[2], Matrix(0, 3, 0, 0, -1, 0, 0, 0, 0, 0, 1, 0, -4, 6, 9, 1));
+    expectNear(transforms[1].Translation(), Vector3(1, 3, 3));
+    // The child's point (1, 0, 0) lands where the parent's transform puts the child's (2, 0, 0)+(1, 0, 0).
+    expectNear(Vector3::Transform(Vector3(1, 0, 0), transforms[1]), Vector3(1, 5, 3));
+
+    Matrix array[3];
+    model->CopyAbsoluteBoneTransformsTo(array);
+    expectNear(array[2], transforms[2]);
+
+    // Changing a bone's Transform moves its children.
+    std::vector<Matrix> locals;
+    model->CopyBoneTransformsTo(locals);
+    locals[0] = Matrix::CreateTranslation(10, 0, 0);
+    model->CopyBoneTransformsFrom(locals);
+    model->CopyAbsoluteBoneTransformsTo(transforms);
+    expectNear(transforms[1].Translation(), Vector3(11, 0, 0));
+    EXPECT_THROW(model->CopyBoneTransformsFrom(std::vector<Matrix>(2)), ArgumentError);
+}
+
+TEST_F(ModelTest, MeshesAndParts) {
+    const auto model = Model::Load(device(), writeScene());
+    ASSERT_EQ(model->Meshes.Count(), 2);
+    ModelMesh& base = model->Meshes[0];
+    ModelMesh& arm = model->Meshes["Arm"];
+    EXPECT_EQ(base.Name, "Base");  // the node's name
+    EXPECT_EQ(&arm, &model->Meshes[1]);
+    EXPECT_EQ(base.ParentBone, &model->Bones[0]);
+    EXPECT_EQ(arm.ParentBone, &model->Bones[1]);
+    EXPECT_THROW((void)model->Meshes["Marker"], ArgumentError);  // a bone without a mesh
+
+    int visited = 0;
+    for (ModelMesh& mesh : model->Meshes) {
+        for (ModelMeshPart& part : mesh.MeshParts) {
+            EXPECT_NE(part.Effect, nullptr);
+            ++visited;
+        }
+    }
+    EXPECT_EQ(visited, 3);
+
+    ASSERT_EQ(base.MeshParts.size(), 1u);
+    const ModelMeshPart& quad = base.MeshParts[0];
+    EXPECT_EQ(quad.VertexOffset, 0);
+    EXPECT_EQ(quad.NumVertices, 4);
+    EXPECT_EQ(quad.StartIndex, 0);
+    EXPECT_EQ(quad.PrimitiveCount, 2);
+    EXPECT_EQ(quad.materialName, "Painted");
+    ASSERT_NE(quad.VertexBuffer, nullptr);
+    ASSERT_NE(quad.IndexBuffer, nullptr);
+    EXPECT_EQ(quad.VertexBuffer->VertexCount(), 4);
+    EXPECT_EQ(quad.VertexBuffer->VertexDeclaration(), ModelVertex::VertexDeclaration);
+    EXPECT_EQ(quad.IndexBuffer->IndexElementSize(), IndexElementSize::SixteenBits);
+
+    ASSERT_EQ(arm.MeshParts.size(), 2u);
+    const ModelMeshPart& plain = arm.MeshParts[0];
+    const ModelMeshPart& bare = arm.MeshParts[1];
+    EXPECT_EQ(plain.VertexBuffer, bare.VertexBuffer);  // one buffer per glTF mesh
+    EXPECT_EQ(plain.IndexBuffer, bare.IndexBuffer);
+    EXPECT_EQ(plain.VertexOffset, 0);
+    EXPECT_EQ(plain.NumVertices, 4);
+    EXPECT_EQ(plain.StartIndex, 0);
+    EXPECT_EQ(plain.PrimitiveCount, 2);
+    EXPECT_EQ(bare.VertexOffset, 4);
+    EXPECT_EQ(bare.NumVertices, 3);
+    EXPECT_EQ(bare.StartIndex, 6);
+    EXPECT_EQ(bare.PrimitiveCount, 1);
+    EXPECT_EQ(bare.materialName, "");
+    EXPECT_EQ(plain.VertexBuffer->VertexCount(), 7);
+    EXPECT_EQ(plain.IndexBuffer->IndexCount(), 9);
+    // 32-bit glTF indices still make a 16-bit buffer when the parts are small.
+    EXPECT_EQ(plain.IndexBuffer->IndexElementSize(), IndexElementSize::SixteenBits);
+    EXPECT_NE(plain.Effect, bare.Effect);  // one effect per part
+
+    // Bounding spheres in the bone's space: the quad's box centre and its half diagonal.
+    expectNear(base.BoundingSphere.Center, Vector3(0.5f, 0.5f, 0.0f));
+    EXPECT_NEAR(base.BoundingSphere.Radius, std::sqrt(0.5f), 1e-6f);
+}
+
+TEST_F(ModelTest, VertexAndIndexDataMatchTheFile) {
+    const auto model = Model::Load(device(), writeScene());
+    // Textured quad: every attribute as written; tangents from the file, binormal = cross(N, T) * w.
+    {
+        const ModelMeshPart& part = model->Meshes[0].MeshParts[0];
+        const auto vertices = readVertices(*part.VertexBuffer);
+        ASSERT_EQ(vertices.size(), 4u);
+        for (std::size_t i = 0; i < 4; ++i) {
+            SCOPED_TRACE(i);
+            EXPECT_EQ(vertices[i].Position, Vector3(kQuadPositions[3 * i], kQuadPositions[3 * i + 1], kQuadPositions[3 * i + 2]));
+            EXPECT_EQ(vertices[i].Normal, Vector3(0, 0, 1));
+            EXPECT_EQ(vertices[i].TextureCoordinate, Vector2(kQuadUvs[2 * i], kQuadUvs[2 * i + 1]));
+            EXPECT_EQ(vertices[i].Tangent, Vector3(1, 0, 0));
+            EXPECT_EQ(vertices[i].Binormal, i == 3 ? Vector3(0, -1, 0) : Vector3(0, 1, 0));
+        }
+        // Winding reversed for XNA: (0 1 2)(0 2 3) -> (0 2 1)(0 3 2).
+        EXPECT_EQ(readIndices(*part.IndexBuffer), (std::vector<std::uint32_t>{0, 2, 1, 0, 3, 2}));
+    }
+    // Plain mesh: the quad with generated tangents, then the bare triangle with a flat normal.
+    {
+        const ModelMeshPart& part = model->Meshes[1].MeshParts[0];
+        const auto vertices = readVertices(*part.VertexBuffer);
+        ASSERT_EQ(vertices.size(), 7u);
+        for (std::size_t i = 0; i < 4; ++i) {
+            SCOPED_TRACE(i);
+            EXPECT_EQ(vertices[i].Position, Vector3(kQuadPositions[3 * i], kQuadPositions[3 * i + 1], kQuadPositions[3 * i + 2]));
+            EXPECT_EQ(vertices[i].TextureCoordinate, Vector2(kQuadUvs[2 * i], kQuadUvs[2 * i + 1]));
+            expectNear(vertices[i].Tangent, Vector3(1, 0, 0));  // u grows along +X
+            expectNear(vertices[i].Binormal, Vector3(0, 1, 0));  // v shrinks along +Y
+        }
+        const Vector3 triangle[3] = {{0, 0, 0}, {0, 0, 1}, {1, 0, 0}};
+        for (std::size_t i = 4; i < 7; ++i) {
+            SCOPED_TRACE(i);
+            EXPECT_EQ(vertices[i].Position, triangle[i - 4]);
+            EXPECT_EQ(vertices[i].Normal, Vector3(0, 1, 0));  // flat: cross(b - a, c - a)
+            EXPECT_EQ(vertices[i].TextureCoordinate, Vector2(0, 0));
+            // No UVs: any unit frame orthogonal to the normal, never NaN.
+            EXPECT_NEAR(vertices[i].Tangent.Length(), 1.0f, 1e-6f);
+            EXPECT_NEAR(Vector3::Dot(vertices[i].Tangent, vertices[i].Normal), 0.0f, 1e-6f);
+            EXPECT_NEAR(vertices[i].Binormal.Length(), 1.0f, 1e-6f);
+            EXPECT_NEAR(Vector3::Dot(vertices[i].Binormal, vertices[i].Tangent), 0.0f, 1e-6f);
+        }
+        EXPECT_EQ(readIndices(*part.IndexBuffer), (std::vector<std::uint32_t>{0, 2, 1, 0, 3, 2, 0, 2, 1}));
+    }
+}
+
+TEST_F(ModelTest, MaterialTexturesAndDefaults) {
+    const auto model = Model::Load(device(), writeScene());
+    const ModelMeshPart& quad = model->Meshes[0].MeshParts[0];
+    const ModelMeshPart& plain = model->Meshes[1].MeshParts[0];
+    const ModelMeshPart& bare = model->Meshes[1].MeshParts[1];
+
+    EXPECT_EQ(texels(quad, "Texture"), kAlbedoTexels);
+    EXPECT_EQ(texels(quad, "NormalMap"), kNormalTexels);
+    EXPECT_EQ(texels(quad, "SpecularMap"), kSpecularTexels);  // extras.fxportSpecularMap
+    Texture2D* albedo = quad.Effect->Parameters["Texture"].GetValueTexture2D();
+    ASSERT_NE(albedo, nullptr);
+    EXPECT_EQ(albedo->Width(), 2);
+    EXPECT_EQ(albedo->Height(), 2);
+    EXPECT_EQ(albedo->Format(), SurfaceFormat::Color);
+    // A full mip chain, the 1x1 level the rounded average of the four texels.
+    ASSERT_EQ(albedo->LevelCount(), 2);
+    Color average;
+    albedo->getData(1, &average, sizeof average);
+    EXPECT_EQ(average, Color(128, 128, 128, 255));
+
+    EXPECT_EQ(texels(plain, "Texture"), std::vector<Color>{Color(255, 255, 255, 255)});
+    EXPECT_EQ(texels(plain, "NormalMap"), std::vector<Color>{Color(128, 128, 255, 255)});
+    EXPECT_EQ(texels(plain, "SpecularMap"), kSpecularTexels);  // KHR_materials_specular
+    EXPECT_EQ(texels(bare, "Texture"), std::vector<Color>{Color(255, 255, 255, 255)});
+    EXPECT_EQ(texels(bare, "NormalMap"), std::vector<Color>{Color(128, 128, 255, 255)});
+    EXPECT_EQ(texels(bare, "SpecularMap"), std::vector<Color>{Color(0, 0, 0, 0)});
+
+    // Textures are shared: one per image, one set of defaults per model.
+    EXPECT_EQ(quad.Effect->Parameters["SpecularMap"].GetValueTexture(),
+              plain.Effect->Parameters["SpecularMap"].GetValueTexture());
+    EXPECT_EQ(plain.Effect->Parameters["Texture"].GetValueTexture(), bare.Effect->Parameters["Texture"].GetValueTexture());
+}
+
+TEST_F(ModelTest, BinaryGltfLoadsTheSame) {
+    sceneBuilder().writeGlb(file("scene.glb"));
+    const auto model = Model::Load(device(), file("scene.glb").string());
+    ASSERT_EQ(model->Bones.Count(), 3);
+    ASSERT_EQ(model->Meshes.Count(), 2);
+    const ModelMeshPart& quad = model->Meshes[0].MeshParts[0];
+    const auto vertices = readVertices(*quad.VertexBuffer);
+    ASSERT_EQ(vertices.size(), 4u);
+    EXPECT_EQ(vertices[2].Position, Vector3(1, 1, 0));
+    EXPECT_EQ(vertices[2].TextureCoordinate, Vector2(1, 0));
+    EXPECT_EQ(texels(quad, "Texture"), kAlbedoTexels);
+}
+
+TEST_F(ModelTest, SeveralRootNodesGetARootBone) {
+    GltfBuilder b;
+    b.doc["scenes"] = json::array({{{"name", "Stage"}, {"nodes", {0, 1}}}});
+    b.doc["nodes"] = json::array({{{"mesh", 0}, {"translation", {0, 0, -5}}}, {{"name", "Second"}}});
+    b.doc["meshes"] = json::array({{{"name", "Lonely"},
+                                    {"primitives", {{{"attributes", {{"POSITION", b.vec3({0, 0, 0, 1, 0, 0, 0, 1, 0})}}}}}}}});
+    b.writeGltf(file("roots.gltf"));
+    const auto model = Model::Load(device(), file("roots.gltf").string());
+    ASSERT_EQ(model->Bones.Count(), 3);
+    EXPECT_EQ(model->Root->Name, "Stage");
+    EXPECT_EQ(model->Root->Transform, Matrix::Identity);
+    ASSERT_EQ(model->Root->Children.Count(), 2);
+    EXPECT_EQ(model->Bones[1].Parent, model->Root);
+    EXPECT_EQ(model->Bones[2].Name, "Second");
+    ASSERT_EQ(model->Meshes.Count(), 1);
+    EXPECT_EQ(model->Meshes[0].Name, "Lonely");  // the node has no name
+    EXPECT_EQ(model->Meshes[0].ParentBone, &model->Bones[1]);
+    std::vector<Matrix> transforms;
+    model->CopyAbsoluteBoneTransformsTo(transforms);
+    EXPECT_EQ(transforms[1].Translation(), Vector3(0, 0, -5));
+}
+
+TEST_F(ModelTest, StripsAndFansBecomeTriangleLists) {
+    GltfBuilder b;
+    const int strip = b.vec3({0, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0});
+    const int fan = b.vec3({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, -1, 1, 0});
+    b.doc["nodes"] = json::array({{{"name", "N"}, {"mesh", 0}}});
+    b.doc["meshes"] = json::array({{{"primitives",
+                                     {{{"mode", 5}, {"attributes", {{"POSITION", strip}, {"NORMAL", b.vec3(std::vector<float>(12, 0.0f))}}}},
+                                      {{"mode", 6}, {"attributes", {{"POSITION", fan}}}}}}}});
+    b.writeGltf(file("strips.gltf"));
+    const auto model = Model::Load(device(), file("strips.gltf").string());
+    const ModelMesh& mesh = model->Meshes[0];
+    ASSERT_EQ(mesh.MeshParts.size(), 2u);
+    EXPECT_EQ(mesh.MeshParts[0].PrimitiveCount, 2);
+    EXPECT_EQ(mesh.MeshParts[1].PrimitiveCount, 3);
+    const auto indices = readIndices(*mesh.MeshParts[0].IndexBuffer);
+    // Strip (0 1 2)(1 3 2), reversed: (0 2 1)(1 2 3). The fan has no normals, so its 3 triangles
+    // (1 2 0)(2 3 0)(3 4 0) are unshared into 9 vertices: (0 2 1)(3 5 4)(6 8 7).
+    EXPECT_EQ(indices, (std::vector<std::uint32_t>{0, 2, 1, 1, 2, 3, 0, 2, 1, 3, 5, 4, 6, 8, 7}));
+    EXPECT_EQ(mesh.MeshParts[1].NumVertices, 9);
+    const auto vertices = readVertices(*mesh.MeshParts[0].VertexBuffer);
+    // Zero normals in the file stay zero (no NaN); the fan's flat normals face +Z.
+    EXPECT_EQ(vertices[0].Normal, Vector3(0, 0, 0));
+    EXPECT_FALSE(std::isnan(vertices[0].Tangent.X));
+    EXPECT_EQ(vertices[4].Normal, Vector3(0, 0, 1));
+    EXPECT_EQ(vertices[4 + 2].Position, Vector3(0, 0, 0));  // fan triangle 0 = v1 v2 v0
+}
+
+TEST_F(ModelTest, LargePartsGetThirtyTwoBitIndices) {
+    // 70002 unindexed vertices (23334 triangles, no normals): over 65535 vertices in one part.
+    std::vector<float> positions;
+    for (int i = 0; i < 70002; ++i) {
+        positions.insert(positions.end(), {float(i % 3 == 1), float(i % 3 == 2), float(i / 3) * 0.001f});
+    }
+    GltfBuilder b;
+    b.doc["nodes"] = json::array({{{"name", "Big"}, {"mesh", 0}}});
+    b.doc["meshes"] = json::array({{{"primitives", {{{"attributes", {{"POSITION", b.vec3(positions)}}}}}}}});
+    b.writeGltf(file("big.gltf"));
+    const auto model = Model::Load(device(), file("big.gltf").string());
+    const ModelMeshPart& part = model->Meshes[0].MeshParts[0];
+    EXPECT_EQ(part.NumVertices, 70002);
+    EXPECT_EQ(part.PrimitiveCount, 23334);
+    ASSERT_EQ(part.IndexBuffer->IndexElementSize(), IndexElementSize::ThirtyTwoBits);
+    const auto indices = readIndices(*part.IndexBuffer);
+    ASSERT_EQ(indices.size(), 70002u);
+    EXPECT_EQ(indices[69999], 69999u);
+    EXPECT_EQ(indices[70000], 70001u);
+    EXPECT_EQ(indices[70001], 70000u);
+}
+
+TEST_F(ModelTest, DrawsWithXnaDefaultStatesAndItsOwnMaterial) {
+    // The textured quad, drawn with its part's effect over a 5x5 target: front-facing after the
+    // winding flip (the default CullCounterClockwise keeps it), each pixel showing the texel under
+    // it (D3D9 rasterisation: pixel i samples u = i / 5; point sampling, clamped).
+    const auto model = Model::Load(device(), writeScene());
+    ModelMesh& mesh = model->Meshes[0];
+    ModelMeshPart& part = mesh.MeshParts[0];
+    RenderTarget2D target(device(), 5, 5, false, SurfaceFormat::Color, DepthFormat::Depth24);
+    device().SetRenderTarget(&target);
+    device().Clear(Color::Black);
+    Effect& effect = *part.Effect;
+    effect.Parameters["World"].SetValue(Matrix::Identity);
+    effect.Parameters["View"].SetValue(Matrix::Identity);
+    effect.Parameters["Projection"].SetValue(Matrix::CreateOrthographicOffCenter(0, 1, 0, 1, -1, 1));
+    effect.CurrentTechnique->Passes[0].Apply();
+    device().SamplerStates[0] = SamplerState::PointClamp;
+    device().SamplerStates[2] = SamplerState::PointClamp;
+    device().SetVertexBuffer(part.VertexBuffer, part.VertexOffset);
+    device().Indices = part.IndexBuffer;
+    device().DrawIndexedPrimitives(PrimitiveType::TriangleList, 0, 0, part.NumVertices, part.StartIndex,
+                                   part.PrimitiveCount);
+    device().SetRenderTarget(nullptr);
+    const auto pixels = target.GetData<Color>();
+    ASSERT_EQ(pixels.size(), 25u);
+    // ModelMaterial.fx: rgb = albedo * saturate(0.5 + 0.5 * normal.z), a = specular.r, where the
+    // normal map's texel (10, 20, 250) gives normal.z = 250/255 * 2 - 1, so the factor is 250/255.
+    const float shade = 250.0f / 255.0f;
+    for (int y = 0; y < 5; ++y) {
+        for (int x = 0; x < 5; ++x) {
+            SCOPED_TRACE("pixel " + std::to_string(x) + "," + std::to_string(y));
+            const int tx = x < 3 ? 0 : 1, ty = y < 3 ? 0 : 1;  // u = x / 5 -> texel floor(2u)
+            const Color albedo = kAlbedoTexels[std::size_t(ty * 2 + tx)];
+            const Color pixel = pixels[std::size_t(y * 5 + x)];
+            EXPECT_NEAR(pixel.R, albedo.R * shade, 1.0);
+            EXPECT_NEAR(pixel.G, albedo.G * shade, 1.0);
+            EXPECT_NEAR(pixel.B, albedo.B * shade, 1.0);
+            EXPECT_NEAR(pixel.A, kSpecularTexels[std::size_t(tx)].R, 1.0);
+        }
+    }
+}
+
+TEST_F(ModelTest, DestroyingTheModelFreesItsGpuObjects) {
+    const std::string path = writeScene();
+    const GpuObjectCounts before = device().liveGpuObjects();
+    {
+        const auto model = Model::Load(device(), path);
+        const GpuObjectCounts loaded = device().liveGpuObjects();
+        EXPECT_EQ(loaded.textures, before.textures + 6);  // 3 defaults + 3 images
+        // A vertex and an index buffer per glTF mesh, plus whatever the effects hold (constants).
+        EXPECT_GE(loaded.buffers, before.buffers + 4);
+    }
+    const GpuObjectCounts after = device().liveGpuObjects();
+    EXPECT_EQ(after.textures, before.textures);
+    EXPECT_EQ(after.buffers, before.buffers);
+    EXPECT_EQ(after.total(), before.total());
+}
+
+// ---------------------------------------------------------------------------------------------
+// Errors: ArgumentError naming the file (and what in it), never a crash
+
+TEST_F(ModelTest, MissingFile) {
+    const std::string message = loadError(file("no_such_model.gltf"));
+    EXPECT_NE(message.find("no_such_model.gltf"), std::string::npos) << message;
+}
+
+TEST_F(ModelTest, BadJson) {
+    std::ofstream(file("bad.gltf")) << "{ \"asset\": { \"version\": \"2.0\" }, \"nodes\": [ {";
+    const std::string message = loadError(file("bad.gltf"));
+    EXPECT_NE(message.find("bad.gltf"), std::string::npos) << message;
+    std::ofstream(file("empty.glb")) << "glTF";
+    EXPECT_NE(loadError(file("empty.glb")).find("empty.glb"), std::string::npos);
+}
+
+TEST_F(ModelTest, UnsupportedPrimitiveMode) {
+    GltfBuilder b;
+    b.doc["nodes"] = json::array({{{"mesh", 0}}});
+    b.doc["meshes"] = json::array({{{"name", "Wires"},
+                                    {"primitives", {{{"mode", 1}, {"attributes", {{"POSITION", b.vec3({0, 0, 0, 1, 0, 0})}}}}}}}});
+    b.writeGltf(file("lines.gltf"));
+    const std::string message = loadError(file("lines.gltf"));
+    EXPECT_NE(message.find("lines.gltf"), std::string::npos) << message;
+    EXPECT_NE(message.find("mesh 0 'Wires'"), std::string::npos) << message;
+    EXPECT_NE(message.find("mode 1"), std::string::npos) << message;
+}
+
+TEST_F(ModelTest, BrokenReferences) {
+    auto expectError = [&](const std::string& name, json doc, const std::string& needle) {
+        SCOPED_TRACE(name);
+        GltfBuilder b;
+        const int position = b.vec3({0, 0, 0, 1, 0, 0, 0, 1, 0});
+        b.doc["nodes"] = json::array({{{"mesh", 0}}});
+        b.doc["meshes"] = json::array({{{"primitives", {{{"attributes", {{"POSITION", position}}}}}}}});
+        b.doc.merge_patch(doc);
+        b.writeGltf(file(name));
+        const std::string message = loadError(file(name));
+        EXPECT_NE(message.find(name), std::string::npos) << message;
+        EXPECT_NE(message.find(needle), std::string::npos) << message;
+    };
+    // More elements than the buffer view holds.
+    expectError("overrun.gltf", {{"accessors", {{{"bufferView", 0}, {"componentType", kFloat}, {"count", 1000}, {"type", "VEC3"}}}}},
+                "overrun buffer view 0");
+    // An index past the last vertex (the bits of 1.0f read as an unsigned int).
+    expectError("index.gltf",
+                {{"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"indices", 1}}}}}}},
+                 {"accessors", {{{"bufferView", 0}, {"componentType", kFloat}, {"count", 3}, {"type", "VEC3"}},
+                                {{"bufferView", 0}, {"byteOffset", 12}, {"componentType", kUnsignedInt}, {"count", 3},
+                                 {"type", "SCALAR"}}}}},
+                "index 1065353216 is out of range");
+    // A node hierarchy with a cycle.
+    expectError("cycle.gltf", {{"scenes", {{{"nodes", {0}}}}}, {"nodes", {{{"children", {1}}}, {{"children", {0}}}}}},
+                "not a tree");
+    // A material whose image file is missing.
+    expectError("image.gltf",
+                {{"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"material", 0}}}}}}},
+                 {"materials", {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}}},
+                 {"textures", {{{"source", 0}}}},
+                 {"images", {{{"uri", "missing.png"}}}}},
+                "image 0 'missing.png' could not be loaded");
+    // A primitive without positions.
+    expectError("noposition.gltf", {{"meshes", {{{"name", "Empty"}, {"primitives", {{{"attributes", {{"NORMAL", 0}}}}}}}}}},
+                "no POSITION");
+}
+
+}  // namespace
+}  // namespace fxport
