@@ -248,7 +248,8 @@ TEST_F(Conventions, MultipleRenderTargets) {
 // Row "cube faces in XNA CubeMapFace order": each face cleared to its own colour, sampled back by
 // direction; and a quad in a face's top-left quarter is found in the D3D direction for it.
 TEST_F(Conventions, CubeFacesByDirection) {
-    RenderTargetCube cube(device, 4, false, SurfaceFormat::Color);
+    // PreserveContents: each face is set twice (cleared, then drawn into).
+    RenderTargetCube cube(device, 4, false, SurfaceFormat::Color, DepthFormat::None, 0, RenderTargetUsage::PreserveContents);
     const Color colors[6] = {Color(255, 0, 0), Color(0, 255, 0), Color(0, 0, 255),
                              Color(255, 255, 0), Color(0, 255, 255), Color(255, 0, 255)};
     for (int f = 0; f < 6; ++f) {

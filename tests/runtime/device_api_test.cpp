@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 #include "fxport/platform/gl.h"
@@ -146,7 +147,7 @@ TEST(ApiMisuse, ClearErrorsNamingTheThing) {
     EXPECT_NE(wrongType.find("'Transform' (float4x4)"), std::string::npos) << wrongType;
     EXPECT_NE(wrongType.find("SetValue(Vector3)"), std::string::npos) << wrongType;
     EXPECT_THROW(effect.Parameters["Color"].SetValue(1.0f), ArgumentError);
-    EXPECT_THROW(effect.Parameters["Color"].SetValue(true), ArgumentError);
+    EXPECT_THROW(effect.Parameters["Color"].SetValue(true), ArgumentError);  // a float4 is not a scalar
     Texture2D tex(device, 1, 1);
     EXPECT_THROW(effect.Parameters["Color"].SetValue(tex), ArgumentError);
     EXPECT_THROW(effect.Parameters["Tex"].SetValue(Vector4()), ArgumentError);
@@ -316,6 +317,61 @@ TEST(Effects, FromCompiledFileMatchesSource) {
 }
 
 // Row "scissor": only the scissor rectangle is drawn when ScissorTestEnable is on; Clear ignores it.
+// XNA 4 (Windows) clears a DiscardContents target when it is set -- colour to purple, depth to 1 --
+// and keeps a PreserveContents one.
+TEST(DeviceState, DiscardContentsTargetsAreClearedWhenSet) {
+    GraphicsDevice& device = testDevice();
+    Effect effect(device, runtimeFixture("Conventions.fx"));
+    RenderTarget2D discard(device, 2, 2, false, SurfaceFormat::Color, DepthFormat::Depth24);
+    RenderTarget2D preserve(device, 2, 2, false, SurfaceFormat::Color, DepthFormat::Depth24, 0,
+                            RenderTargetUsage::PreserveContents);
+    for (RenderTarget2D* t : {&discard, &preserve}) {
+        device.SetRenderTarget(t);
+        device.Clear(ClearOptions::Target | ClearOptions::DepthBuffer, Color::White, 0.0f, 0);  // depth 0: nothing passes
+        device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+        device.SetRenderTarget(t);
+        device.BlendState = BlendState::Opaque;
+        device.RasterizerState = RasterizerState::CullNone;
+        device.DepthStencilState = DepthStencilState::Default;
+        effect.Parameters["Color"].SetValue(Vector4(0, 1, 0, 1));
+        effect.CurrentTechnique = effect.Techniques["SolidColor"];
+        effect.CurrentTechnique->Passes[0].Apply();
+        drawQuad(device, 0.5f);
+        device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+    }
+    // Discard: cleared to purple and depth 1 on the second set, so the quad at z=0.5 is drawn.
+    EXPECT_EQ(discard.GetData<Color>()[0], Color(0, 255, 0, 255));
+    // Preserve: still white with depth 0, so the quad fails the depth test.
+    EXPECT_EQ(preserve.GetData<Color>()[0], Color(255, 255, 255, 255));
+    RenderTarget2D fresh(device, 1, 1);
+    device.SetRenderTarget(fresh);
+    device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+    EXPECT_EQ(fresh.GetData<Color>()[0], Color(68, 34, 136, 255));
+    device.DepthStencilState = DepthStencilState::None;
+}
+
+// Scalars convert between int, float and bool as D3DX does (the tutorial sets a float from an int).
+TEST(Effects, ScalarSettersConvertLikeD3DX) {
+    GraphicsDevice& device = testDevice();
+    Effect effect(device, runtimeFixture("Conventions.fx"));
+    std::string path = ::testing::TempDir() + "/Scalars.fx";
+    {
+        std::FILE* f = std::fopen(path.c_str(), "w");
+        std::fputs("float size; int count; bool flag;\n"
+                   "float4 PS(float2 uv : TEXCOORD0) : COLOR0 { return float4(size, count, flag, 1); }\n"
+                   "technique T { pass P { PixelShader = compile ps_3_0 PS(); } }\n", f);
+        std::fclose(f);
+    }
+    Effect scalars(device, path);
+    scalars.Parameters["size"].SetValue(2048);
+    EXPECT_EQ(scalars.Parameters["size"].GetValueSingle(), 2048.0f);
+    scalars.Parameters["count"].SetValue(3.0f);
+    EXPECT_EQ(scalars.Parameters["count"].GetValueInt32(), 3);
+    scalars.Parameters["flag"].SetValue(1);
+    EXPECT_TRUE(scalars.Parameters["flag"].GetValueBoolean());
+    EXPECT_THROW(scalars.Parameters["size"].SetValue(Vector2(1, 2)), ArgumentError);
+}
+
 TEST(DeviceState, ScissorRectangle) {
     GraphicsDevice& device = testDevice();
     Effect effect(device, runtimeFixture("Conventions.fx"));

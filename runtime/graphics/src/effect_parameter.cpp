@@ -148,20 +148,18 @@ const std::vector<EffectAnnotation>& EffectParameter::Annotations() const {
     return out;
 }
 
+// Scalars convert between bool, int and float as D3DX's SetBool/SetInt/SetFloat do (the deferred
+// tutorial sets its float shadowMapSize from an int); vectors, matrices and class mismatches throw.
 void EffectParameter::SetValue(bool value) {
     Access a = access(effect_, index_);
-    if (a.p.type != xlate::ParameterType::Bool) a.fail("SetValue(bool): the parameter is not bool");
     a.set("SetValue(bool)", xlate::ParameterClass::Scalar, 1, 1, 1, false, [&](int, int, int) { return value ? 1.0 : 0.0; });
 }
 void EffectParameter::SetValue(int value) {
     Access a = access(effect_, index_);
-    if (a.p.type != xlate::ParameterType::Int && a.p.type != xlate::ParameterType::UInt)
-        a.fail("SetValue(int): the parameter is not int");
     a.set("SetValue(int)", xlate::ParameterClass::Scalar, 1, 1, 1, false, [&](int, int, int) { return double(value); });
 }
 void EffectParameter::SetValue(float value) {
     Access a = access(effect_, index_);
-    a.requireFloat("SetValue(float)");
     a.set("SetValue(float)", xlate::ParameterClass::Scalar, 1, 1, 1, false, [&](int, int, int) { return double(value); });
 }
 void EffectParameter::SetValue(const Vector2& v) {

@@ -186,6 +186,18 @@ void GraphicsDevice::SetRenderTargets(const std::vector<RenderTargetBinding>& bi
     impl_->generateMipsOfUnboundTargets(previous);
     impl_->bindTargets();
     Viewport = fxport::Viewport(0, 0, impl_->targetWidth, impl_->targetHeight);
+    // XNA 4 on Windows clears a DiscardContents target (colour to purple, depth and stencil too)
+    // whenever it is set, to behave like the Xbox where the contents are lost; code written for it
+    // relies on the depth clear (the deferred tutorial never clears its G-buffer depth).
+    // PreserveContents keeps them. The back buffer follows PresentationParameters.
+    fxport::RenderTargetUsage usage = parameters_.RenderTargetUsage;
+    if (!bindings.empty()) {
+        Texture* first = bindings[0].RenderTarget;
+        usage = first->kind() == Texture::Kind::TextureCube ? static_cast<RenderTargetCube*>(first)->RenderTargetUsage()
+                                                            : static_cast<RenderTarget2D*>(first)->RenderTargetUsage();
+    }
+    if (usage == fxport::RenderTargetUsage::DiscardContents)
+        Clear(ClearOptions::Target | ClearOptions::DepthBuffer | ClearOptions::Stencil, DiscardColor, 1.0f, 0);
 }
 
 std::vector<RenderTargetBinding> GraphicsDevice::GetRenderTargets() const { return impl_->targets; }

@@ -29,4 +29,10 @@ MouseState Mouse::GetState() {
     return s;
 }
 
+void Mouse::SetPosition(int x, int y) {
+    GraphicsDevice* device = GraphicsDevice::current();
+    if (!device) throw InvalidOperation("Mouse::SetPosition: no GraphicsDevice exists");
+    device->context().setMousePosition(x, y);
+}
+
 }  // namespace fxport

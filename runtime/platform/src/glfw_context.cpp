@@ -93,6 +93,7 @@ public:
         int key = glfwKeyFor(virtualKey);
         return key != GLFW_KEY_UNKNOWN && glfwGetKey(window_, key) == GLFW_PRESS;
     }
+    void setMousePosition(int x, int y) override { glfwSetCursorPos(window_, x, y); }
     MouseInput mouse() const override {
         MouseInput m;
         double x = 0, y = 0;

@@ -42,6 +42,8 @@ struct PresentationParameters {
     int BackBufferHeight = 480;
     SurfaceFormat BackBufferFormat = SurfaceFormat::Color;
     DepthFormat DepthStencilFormat = DepthFormat::Depth24Stencil8;
+    // DiscardContents (XNA's default): the back buffer is cleared to DiscardColor when set.
+    fxport::RenderTargetUsage RenderTargetUsage = fxport::RenderTargetUsage::DiscardContents;
     // fxport: where the GL context comes from: "osmesa" (CPU, headless; the default), "egl" (GPU,
     // headless), "glfw" (a window). Empty = $FXPORT_PLATFORM, else osmesa.
     std::string platform;
@@ -118,7 +120,10 @@ public:
     void SetVertexBuffer(VertexBuffer& buffer, int vertexOffset = 0) { SetVertexBuffer(&buffer, vertexOffset); }
 
     // nullptr = the back buffer. Targets must all have the same size (D3D9's rule); the depth buffer
-    // is the first target's. Throws ArgumentError naming the target otherwise.
+    // is the first target's. Throws ArgumentError naming the target otherwise. As XNA 4 on Windows
+    // does, a target whose RenderTargetUsage is DiscardContents is cleared when set: colour to
+    // DiscardColor, depth to 1, stencil to 0 (PreserveContents keeps what it held).
+    Color DiscardColor = Color(68, 34, 136, 255);
     void SetRenderTarget(RenderTarget2D* target);
     void SetRenderTarget(RenderTarget2D& target) { SetRenderTarget(&target); }
     void SetRenderTarget(RenderTargetCube* target, CubeMapFace face);

@@ -53,6 +53,8 @@ struct MouseState {
 class Mouse {
 public:
     static MouseState GetState();
+    // Moves the pointer to window pixel (x, y); no-op headless.
+    static void SetPosition(int x, int y);
 };
 
 }  // namespace fxport

@@ -67,6 +67,8 @@ public:
     // virtual-key codes, which are XNA's Keys values ('A' = 65, F1 = 112, Escape = 27 ...).
     virtual bool isKeyDown(int virtualKey) const = 0;
     virtual MouseInput mouse() const = 0;
+    // Moves the pointer (window pixels); no-op headless.
+    virtual void setMousePosition(int x, int y) = 0;
     // Size of the default framebuffer in pixels (a window's current size).
     virtual int width() const = 0;
     virtual int height() const = 0;
