@@ -1,0 +1,42 @@
+# content.deterministic: runs fxport_content twice into two fresh folders and requires identical
+# bytes in every file, and exactly the files listed in EXPECTED (content/CMakeLists.txt).
+# Inputs: TOOL (the fxport_content executable), WORK_DIR (scratch folder), EXPECTED (file names).
+foreach(var TOOL WORK_DIR EXPECTED)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "check_deterministic.cmake: -D${var}=... is required")
+  endif()
+endforeach()
+
+file(REMOVE_RECURSE ${WORK_DIR})
+foreach(run a b)
+  execute_process(COMMAND ${TOOL} ${WORK_DIR}/${run} RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "fxport_content run '${run}' failed (${rc})")
+  endif()
+  file(GLOB files_${run} RELATIVE ${WORK_DIR}/${run} ${WORK_DIR}/${run}/*)
+  list(SORT files_${run})
+endforeach()
+
+set(expected ${EXPECTED})
+list(SORT expected)
+if(NOT files_a STREQUAL expected)
+  message(FATAL_ERROR "fxport_content wrote:\n  ${files_a}\nexpected (content/CMakeLists.txt):\n  ${expected}")
+endif()
+if(NOT files_a STREQUAL files_b)
+  message(FATAL_ERROR "the two runs wrote different file sets:\n  ${files_a}\n  ${files_b}")
+endif()
+
+set(differ "")
+foreach(f ${files_a})
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK_DIR}/a/${f} ${WORK_DIR}/b/${f}
+                  RESULT_VARIABLE same)
+  if(NOT same EQUAL 0)
+    list(APPEND differ ${f})
+  endif()
+endforeach()
+if(differ)
+  message(FATAL_ERROR "not deterministic: these files differ between two runs: ${differ}")
+endif()
+list(LENGTH files_a count)
+message(STATUS "fxport_content is deterministic: ${count} files identical across two runs")
+file(REMOVE_RECURSE ${WORK_DIR})
