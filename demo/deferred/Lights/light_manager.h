@@ -1,0 +1,67 @@
+/// <summary>
+/// A Manager for all the light types
+/// </summary>
+// Lights.LightManager (seed 000, chapters 3-5, in its chapter 5 form). C#'s lists of references
+// become vectors of owning pointers: AddLight(new ...) hands the light over, RemoveLight(light)
+// destroys it.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "deferred/Lights/directional_light.h"
+#include "deferred/Lights/point_light.h"
+#include "deferred/Lights/spot_light.h"
+#include "deferred/xna.h"
+
+namespace TheCansinDeferredRenderer::Lights {
+
+class LightManager {
+    //Directional Lights
+    std::vector<std::unique_ptr<DirectionalLight>> directionalLights;
+    //Spot Lights
+    std::vector<std::unique_ptr<SpotLight>> spotLights;
+    //Point Lights
+    std::vector<std::unique_ptr<PointLight>> pointLights;
+    //Depth Writing Shader
+    Effect* depthWriter;
+
+public:
+    // #region Get Functions
+    //Get Directional Lights
+    const std::vector<std::unique_ptr<DirectionalLight>>& getDirectionalLights() const { return directionalLights; }
+    //Get Spot Lights
+    const std::vector<std::unique_ptr<SpotLight>>& getSpotLights() const { return spotLights; }
+    //Get Point Lights
+    const std::vector<std::unique_ptr<PointLight>>& getPointLights() const { return pointLights; }
+    // #endregion
+
+    //Constructor
+    explicit LightManager(ContentManager& Content);
+
+    //Add a Directional Light
+    void AddLight(std::unique_ptr<DirectionalLight> Light);
+    //Add a Spot Light
+    void AddLight(std::unique_ptr<SpotLight> Light);
+    //Add a Point Light
+    void AddLight(std::unique_ptr<PointLight> Light);
+    //Remove a Directional Light
+    void RemoveLight(DirectionalLight* Light);
+    //Remove a Spot Light
+    void RemoveLight(SpotLight* Light);
+    //Remove a Point Light
+    void RemoveLight(PointLight* Light);
+
+    //Draw Shadow Maps
+    void DrawShadowMaps(GraphicsDevice& GraphicsDevice, const std::vector<Model*>& Models);
+
+private:
+    //Draw a Shadow Map for a Spot Light
+    void DrawShadowMap(GraphicsDevice& GraphicsDevice, SpotLight& Light, const std::vector<Model*>& Models);
+    //Draw a Shadow Map for a Point Light
+    void DrawShadowMap(GraphicsDevice& GraphicsDevice, PointLight& Light, const std::vector<Model*>& Models);
+    //Draw Models
+    void DrawModels(GraphicsDevice& GraphicsDevice, const std::vector<Model*>& Models);
+};
+
+}  // namespace TheCansinDeferredRenderer::Lights

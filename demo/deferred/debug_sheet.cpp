@@ -1,0 +1,265 @@
+#include "deferred/debug_sheet.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "deferred/game1.h"
+
+namespace TheCansinDeferredRenderer {
+
+namespace {
+
+struct Image {
+    int width = 0;
+    int height = 0;
+    std::vector<Color> pixels;
+    Image(int w, int h) : width(w), height(h), pixels(std::size_t(w) * std::size_t(h)) {}
+    Color& at(int x, int y) { return pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
+};
+
+// Shown where a float target holds its "nothing here" value (cleared depth, empty shadow map).
+const Color kEmpty(20, 30, 70);
+
+Color grey(float v) { return Color(v, v, v, 1.0f); }
+
+Image fromColor(const Texture2D& texture, bool alphaAsGrey) {
+    Image image(texture.Width(), texture.Height());
+    std::vector<Color> data = texture.GetData<Color>();
+    for (std::size_t i = 0; i < data.size(); ++i) {
+        Color c = data[i];
+        image.pixels[i] = alphaAsGrey ? Color(int(c.A), int(c.A), int(c.A)) : Color(int(c.R), int(c.G), int(c.B));
+    }
+    return image;
+}
+
+// Rgba64 (16-bit unorm): rgb, or alpha as grey.
+Image fromRgba64(const Texture2D& texture, bool alphaAsGrey) {
+    Image image(texture.Width(), texture.Height());
+    std::vector<std::uint16_t> data = texture.GetData<std::uint16_t>();
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+        const std::uint16_t* t = &data[4 * i];
+        image.pixels[i] = alphaAsGrey ? grey(t[3] / 65535.0f) : Color(t[0] / 65535.0f, t[1] / 65535.0f, t[2] / 65535.0f);
+    }
+    return image;
+}
+
+// Values stretched so that the smallest shown becomes white and the largest black (near = bright);
+// `empty` marks texels to show as kEmpty. Returns the range in `range`.
+Image stretched(int width, int height, const std::vector<float>& values, const std::vector<bool>& empty,
+                std::array<float, 2>& range) {
+    Image image(width, height);
+    float lo = INFINITY, hi = -INFINITY;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        if (empty[i]) continue;
+        lo = std::min(lo, values[i]);
+        hi = std::max(hi, values[i]);
+    }
+    range = {lo, hi};
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        if (empty[i]) {
+            image.pixels[i] = kEmpty;
+        } else {
+            float t = hi > lo ? (values[i] - lo) / (hi - lo) : 0.0f;
+            image.pixels[i] = grey(1.0f - t);
+        }
+    }
+    return image;
+}
+
+// Exponential shadow map texels exp(distance / 2) (DepthWriter.fx) back to distances.
+std::vector<float> shadowDistances(const std::vector<float>& texels, std::vector<bool>& empty) {
+    std::vector<float> distances(texels.size());
+    empty.assign(texels.size(), false);
+    for (std::size_t i = 0; i < texels.size(); ++i) {
+        if (texels[i] <= 0.0f) empty[i] = true;
+        else distances[i] = 2.0f * std::log(texels[i]);
+    }
+    return distances;
+}
+
+// Area-averaged downscale (or nearest upscale) to w x h.
+Image resized(const Image& source, int w, int h) {
+    Image out(w, h);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            int x0 = x * source.width / w, x1 = std::max(x0 + 1, (x + 1) * source.width / w);
+            int y0 = y * source.height / h, y1 = std::max(y0 + 1, (y + 1) * source.height / h);
+            float sum[3] = {0, 0, 0};
+            int n = 0;
+            for (int sy = y0; sy < y1; ++sy) {
+                for (int sx = x0; sx < x1; ++sx) {
+                    const Color& c = source.pixels[std::size_t(sy) * std::size_t(source.width) + std::size_t(sx)];
+                    sum[0] += c.R;
+                    sum[1] += c.G;
+                    sum[2] += c.B;
+                    ++n;
+                }
+            }
+            out.at(x, y) = Color(int(sum[0] / float(n) + 0.5f), int(sum[1] / float(n) + 0.5f), int(sum[2] / float(n) + 0.5f));
+        }
+    }
+    return out;
+}
+
+// The label's value range; "empty" when no texel had a value.
+std::string format(const char* pattern, double a, double b) {
+    if (!(a <= b)) return " empty";
+    char text[128];
+    std::snprintf(text, sizeof text, pattern, a, b);
+    return text;
+}
+
+struct Tile {
+    std::string label;
+    std::string file;  // full-size file name
+    Image image;
+    int width;   // size on the sheet
+    int height;
+};
+
+}  // namespace
+
+void WriteDebugSheet(Game1& game, const std::string& path, const std::string& fullSizeDir) {
+    GraphicsDevice& device = *game.GraphicsDevice;
+    DeferredRenderer& renderer = game.getDeferredRenderer();
+    const auto& gbuffer = renderer.getGBuffer();
+    auto& gbuffer0 = *static_cast<Texture2D*>(gbuffer[0].RenderTarget);
+    auto& gbuffer1 = *static_cast<Texture2D*>(gbuffer[1].RenderTarget);
+    auto& gbuffer2 = *static_cast<Texture2D*>(gbuffer[2].RenderTarget);
+    const int W = gbuffer0.Width(), H = gbuffer0.Height();
+    const int tileW = 256, tileH = std::max(1, tileW * H / W);
+
+    std::vector<std::vector<Tile>> rows(4);
+    auto add = [&](int row, std::string label, std::string file, Image image, int w, int h) {
+        rows[std::size_t(row)].push_back(Tile{std::move(label), std::move(file), std::move(image), w, h});
+    };
+
+    // Row 0: G-buffer targets 0 and 1.
+    add(0, "GBuffer0.rgb albedo", "gbuffer0_albedo.png", fromRgba64(gbuffer0, false), tileW, tileH);
+    add(0, "GBuffer0.a spec intensity", "gbuffer0_alpha.png", fromRgba64(gbuffer0, true), tileW, tileH);
+    add(0, "GBuffer1.rgb view normals", "gbuffer1_normals.png", fromRgba64(gbuffer1, false), tileW, tileH);
+    add(0, "GBuffer1.a spec power/255", "gbuffer1_alpha.png", fromRgba64(gbuffer1, true), tileW, tileH);
+
+    // Row 1: G-buffer depth (z/w and view z) and the light map.
+    {
+        std::vector<Vector2> depth = gbuffer2.GetData<Vector2>();
+        std::vector<float> zw(depth.size()), viewDepth(depth.size());
+        std::vector<bool> empty(depth.size());
+        for (std::size_t i = 0; i < depth.size(); ++i) {
+            empty[i] = depth[i].X >= 1.0f;  // Clear.fx writes 1
+            zw[i] = depth[i].X;
+            viewDepth[i] = -depth[i].Y;
+        }
+        std::array<float, 2> range{};
+        Image zwImage = stretched(W, H, zw, empty, range);
+        add(1, "GBuffer2.r z/w" + format(" %.4f-%.4f", range[0], range[1]), "gbuffer2_zw.png", zwImage, tileW, tileH);
+        Image viewImage = stretched(W, H, viewDepth, empty, range);
+        add(1, "GBuffer2.g -viewZ" + format(" %.1f-%.1f", range[0], range[1]), "gbuffer2_viewz.png", viewImage, tileW, tileH);
+    }
+    add(1, "LightMap.rgb diffuse", "lightmap_rgb.png", fromColor(renderer.getLightMap(), false), tileW, tileH);
+    add(1, "LightMap.a specular", "lightmap_alpha.png", fromColor(renderer.getLightMap(), true), tileW, tileH);
+
+    // Row 2: shadow maps as distances from the light (near = bright).
+    const int shadowTile = tileH, faceTile = std::min(128, (4 * tileW - shadowTile) / 6 - 8);
+    for (auto& light : game.getLightManager().getSpotLights()) {
+        RenderTarget2D& map = *light->getShadowMap();
+        std::vector<bool> empty;
+        std::vector<float> distances = shadowDistances(map.GetData<float>(), empty);
+        std::array<float, 2> range{};
+        Image image = stretched(map.Width(), map.Height(), distances, empty, range);
+        add(2, "Spot shadow" + format(" %.1f-%.1f", range[0], range[1]), "spot_shadow.png", std::move(image), shadowTile,
+            shadowTile);
+        break;  // one is enough
+    }
+    for (auto& light : game.getLightManager().getPointLights()) {
+        RenderTargetCube& map = *light->getShadowMap();
+        const char* names[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
+        const char* files[6] = {"point_shadow_px.png", "point_shadow_nx.png", "point_shadow_py.png",
+                                "point_shadow_ny.png", "point_shadow_pz.png", "point_shadow_nz.png"};
+        for (int face = 0; face < 6; ++face) {
+            std::vector<float> texels(std::size_t(map.Size()) * std::size_t(map.Size()));
+            map.GetData(CubeMapFace(face), texels.data(), texels.size());
+            std::vector<bool> empty;
+            std::vector<float> distances = shadowDistances(texels, empty);
+            std::array<float, 2> range{};
+            Image image = stretched(map.Size(), map.Size(), distances, empty, range);
+            add(2, std::string("Pt") + names[face] + format(" %.0f-%.0f", range[0], range[1]), files[face],
+                std::move(image), faceTile, faceTile);
+        }
+        break;
+    }
+
+    // Row 3: the scene before SSAO, SSAO raw and blurred, the final back buffer.
+    add(3, "Scene (before SSAO)", "scene.png", fromColor(game.getScene(), false), tileW, tileH);
+    add(3, "SSAOTarget", "ssao.png", fromColor(game.getSSAO().getSSAOTarget(), false), tileW, tileH);
+    add(3, "BlurTarget", "ssao_blur.png", fromColor(game.getSSAO().getBlurTarget(), false), tileW, tileH);
+    {
+        Image backBuffer(W, H);
+        backBuffer.pixels = device.GetBackBufferData();
+        add(3, "Back buffer (final.png)", "final.png", std::move(backBuffer), tileW, tileH);
+    }
+
+    // Layout: rows of tiles, a 12-pixel label line above each tile.
+    const int gap = 8, labelH = 12;
+    int sheetW = gap, sheetH = gap;
+    for (auto& row : rows) {
+        int rowW = gap, rowH = 0;
+        for (Tile& t : row) {
+            rowW += t.width + gap;
+            rowH = std::max(rowH, t.height);
+        }
+        sheetW = std::max(sheetW, rowW);
+        sheetH += labelH + rowH + gap;
+    }
+
+    RenderTarget2D sheet(device, sheetW, sheetH, false, SurfaceFormat::Color, DepthFormat::None);
+    std::vector<RenderTargetBinding> previous = device.GetRenderTargets();
+    device.SetRenderTarget(&sheet);
+    device.Clear(Color(40, 40, 40));
+    SpriteBatch spriteBatch(device);
+    std::unique_ptr<SpriteFont> font = SpriteFont::createDebugFont(device);
+    std::vector<std::unique_ptr<Texture2D>> textures;
+
+    spriteBatch.Begin(SpriteSortMode::Deferred, BlendState::Opaque, SamplerState::PointClamp, nullptr, nullptr);
+    int y = gap;
+    std::vector<std::pair<std::string, Vector2>> labels;
+    for (auto& row : rows) {
+        int x = gap, rowH = 0;
+        for (Tile& t : row) {
+            Image small = resized(t.image, t.width, t.height);
+            auto texture = std::make_unique<Texture2D>(device, t.width, t.height, false, SurfaceFormat::Color);
+            texture->SetData(small.pixels);
+            spriteBatch.Draw(*texture, Rectangle(x, y + labelH, t.width, t.height), Color::White);
+            textures.push_back(std::move(texture));
+            labels.emplace_back(t.label, Vector2(float(x), float(y + 2)));
+            x += t.width + gap;
+            rowH = std::max(rowH, t.height);
+        }
+        y += labelH + rowH + gap;
+    }
+    spriteBatch.End();
+    spriteBatch.Begin(SpriteSortMode::Deferred, BlendState::AlphaBlend);
+    for (auto& [text, position] : labels) spriteBatch.DrawString(*font, text, position, Color::White);
+    spriteBatch.End();
+    device.SetRenderTargets(previous);
+    sheet.SaveAsPng(path);
+
+    if (!fullSizeDir.empty()) {
+        std::filesystem::create_directories(fullSizeDir);
+        for (auto& row : rows) {
+            for (Tile& t : row) {
+                Texture2D full(device, t.image.width, t.image.height, false, SurfaceFormat::Color);
+                full.SetData(t.image.pixels);
+                full.SaveAsPng((std::filesystem::path(fullSizeDir) / t.file).string());
+            }
+        }
+    }
+}
+
+}  // namespace TheCansinDeferredRenderer

@@ -1,0 +1,72 @@
+// Game1 (seed 000, chapter 6, the final chapter): the deferred renderer with a directional light,
+// a shadowed spot light and a shadowed point light, followed by SSAO; the G-buffer and SSAO debug
+// views on top. F1 held: no SSAO. Z/X and C/V change the SSAO sample radius and distance scale.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "deferred/Cameras/free_camera.h"
+#include "deferred/Lights/light_manager.h"
+#include "deferred/deferred_renderer.h"
+#include "deferred/ssao.h"
+#include "deferred/xna.h"
+
+namespace TheCansinDeferredRenderer {
+
+class Game1 : public Game {
+    //SpriteBatch
+    std::unique_ptr<SpriteBatch> spriteBatch;
+    //Sprite Font
+    SpriteFont* spriteFont = nullptr;
+    //Keyboard State Holders
+    KeyboardState currentK;
+    KeyboardState previousK;
+    //Mouse State Holder
+    MouseState currentM;
+    //Camera
+    std::unique_ptr<FreeCamera> Camera;
+    //Light Manager
+    std::unique_ptr<Lights::LightManager> lightManager;
+    //Deffered Renderer
+    std::unique_ptr<DeferredRenderer> deferredRenderer;
+    //SSAO
+    std::unique_ptr<SSAO> ssao;
+    //Scene
+    std::unique_ptr<RenderTarget2D> Scene;
+    //List of Models
+    std::vector<Model*> models;
+
+public:
+    Game1();
+
+    // fxport additions, for fxdemo: what it chooses before Start() and reads after the frames.
+    struct DemoSettings {
+        // The seed's camera starts at (0, 0, 5) looking at the origin; our Scene's floor is at
+        // y = 0, so the demo's viewpoint is a setting (fxdemo --camera).
+        Vector3 cameraPosition = Vector3(0.0f, 0.0f, 5.0f);
+        Vector3 cameraTarget = Vector3(0.0f, 0.0f, 0.0f);
+        // SSAO values a headless run starts with (the seed starts at 0, 0: no occlusion at all).
+        float sampleRadius = 0.0f;
+        float distanceScale = 0.0f;
+        // Draw the seed's debug views (G-buffer, SSAO, values) over the final image.
+        bool debugViews = true;
+        // GPU time of ShadowMaps and Debug (nullptr: not measured); the other passes are timed by
+        // DeferredRenderer/SSAO::setGpuTimer.
+        GpuTimer* gpuTimer = nullptr;
+    };
+    DemoSettings demo;
+    DeferredRenderer& getDeferredRenderer() { return *deferredRenderer; }
+    SSAO& getSSAO() { return *ssao; }
+    Lights::LightManager& getLightManager() { return *lightManager; }
+    RenderTarget2D& getScene() { return *Scene; }
+
+protected:
+    void Initialize() override;
+    void LoadContent() override;
+    void UnloadContent() override;
+    void Update(const GameTime& gameTime) override;
+    void Draw(const GameTime& gameTime) override;
+};
+
+}  // namespace TheCansinDeferredRenderer

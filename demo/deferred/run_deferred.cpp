@@ -1,0 +1,92 @@
+#include "deferred/run_deferred.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <thread>
+
+#include "deferred/debug_sheet.h"
+#include "deferred/game1.h"
+#include "fxport/platform/graphics_context.h"
+
+namespace TheCansinDeferredRenderer {
+
+int RunDeferred(const RunOptions& options) {
+    Game1 game;
+    game.graphics.PreferredBackBufferWidth = options.width;
+    game.graphics.PreferredBackBufferHeight = options.height;
+    game.graphics.platform = options.platform;
+    if (!options.contentDir.empty()) game.Content.RootDirectory = options.contentDir;
+    if (!options.hlslDir.empty()) game.Content.EffectDirectory = options.hlslDir + "/xna-deferred";
+    game.demo.cameraPosition = options.cameraPosition;
+    game.demo.cameraTarget = options.cameraTarget;
+    game.demo.sampleRadius = options.sampleRadius;
+    game.demo.distanceScale = options.distanceScale;
+    game.demo.debugViews = options.debugViews;
+
+    // The timer needs the device, which Start() makes: attach it after Start, before the first frame.
+    game.Start();
+    auto timer = std::make_unique<GpuTimer>(*game.GraphicsDevice);
+    // --lights: drop some of the seed's lights (to look at one light's contribution alone).
+    Lights::LightManager& lights = game.getLightManager();
+    auto keep = [&](char c) { return options.lights.find(c) != std::string::npos; };
+    while (!keep('d') && !lights.getDirectionalLights().empty()) lights.RemoveLight(lights.getDirectionalLights()[0].get());
+    while (!keep('s') && !lights.getSpotLights().empty()) lights.RemoveLight(lights.getSpotLights()[0].get());
+    while (!keep('p') && !lights.getPointLights().empty()) lights.RemoveLight(lights.getPointLights()[0].get());
+    game.getDeferredRenderer().setGpuTimer(timer.get());
+    game.getSSAO().setGpuTimer(timer.get());
+    game.demo.gpuTimer = timer.get();
+    const bool sync = options.syncPasses.value_or(options.platform == "osmesa");
+    PassTimer::syncDevice = sync ? game.GraphicsDevice : nullptr;
+
+    std::printf("fxdemo deferred: %dx%d on %s (%s)\n", options.width, options.height, options.platform.c_str(),
+                game.GraphicsDevice->rendererName().c_str());
+    std::printf("lights: %zu directional, %zu spot, %zu point; camera (%.2f, %.2f, %.2f) -> (%.2f, %.2f, %.2f); "
+                "SSAO sample radius %.3f, distance scale %.3f\n",
+                lights.getDirectionalLights().size(), lights.getSpotLights().size(), lights.getPointLights().size(),
+                double(options.cameraPosition.X), double(options.cameraPosition.Y), double(options.cameraPosition.Z),
+                double(options.cameraTarget.X), double(options.cameraTarget.Y), double(options.cameraTarget.Z),
+                double(options.sampleRadius), double(options.distanceScale));
+
+    if (options.platform == "glfw") {
+        // XNA's Run() in a window: fixed 60 Hz steps until the window closes, Escape, or --frames.
+        using Clock = std::chrono::steady_clock;
+        auto next = Clock::now();
+        while (!game.ExitRequested() && !game.GraphicsDevice->context().shouldClose() &&
+               (!options.frames || game.FrameCount() < *options.frames)) {
+            game.Tick();
+            timer->EndFrame();
+            next += std::chrono::microseconds(16667);
+            auto now = Clock::now();
+            if (next > now) std::this_thread::sleep_until(next);
+            else next = now;
+        }
+    } else {
+        const int frames = options.frames.value_or(3);
+        for (int i = 0; i < frames && !game.ExitRequested(); ++i) {
+            game.Tick();
+            timer->EndFrame();
+        }
+    }
+    game.GraphicsDevice->finish();
+    timer->Finish();
+
+    PassTimer::syncDevice = nullptr;
+    std::printf("%d frames; median GPU time per pass%s:\n", game.FrameCount(),
+                sync ? " (each pass finished before and after: --sync-passes)" : "");
+    for (const GpuTimer::Section& section : timer->Sections())
+        std::printf("  %-12s %9.3f ms\n", section.name.c_str(), section.medianMs());
+
+    if (options.platform != "glfw" || options.outDirGiven) {
+        std::filesystem::create_directories(options.outDir);
+        const std::string finalPath = (std::filesystem::path(options.outDir) / "final.png").string();
+        const std::string debugPath = (std::filesystem::path(options.outDir) / "debug.png").string();
+        game.GraphicsDevice->SaveBackBufferAsPng(finalPath);
+        WriteDebugSheet(game, debugPath,
+                        options.fullSizeImages ? (std::filesystem::path(options.outDir) / "targets").string() : "");
+        std::printf("wrote %s and %s\n", finalPath.c_str(), debugPath.c_str());
+    }
+    return 0;
+}
+
+}  // namespace TheCansinDeferredRenderer

@@ -1,0 +1,34 @@
+// `fxdemo deferred`: runs the port of "Deferred Rendering in XNA 4" (Game1) headless for a number of
+// frames, or in a window, and writes what it rendered.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "fxport/math.h"
+
+namespace TheCansinDeferredRenderer {
+
+struct RunOptions {
+    int width = 800;                // the seed's PreferredBackBuffer size
+    int height = 600;
+    std::optional<int> frames;      // headless default 3; in a window: until it closes
+    std::string outDir = "fxdemo-out";
+    bool outDirGiven = false;
+    std::string platform = "osmesa";  // osmesa | egl (--gpu) | glfw (--window)
+    fxport::Vector3 cameraPosition = fxport::Vector3(0.0f, 9.0f, 17.0f);
+    fxport::Vector3 cameraTarget = fxport::Vector3(0.0f, 1.5f, 0.0f);
+    float sampleRadius = 0.25f;
+    float distanceScale = 3.0f;
+    std::string lights = "dsp";     // which of the seed's lights to keep: directional, spot, point
+    bool debugViews = true;         // the seed's Debug() views over the final image
+    std::string contentDir;         // empty: FXPORT_CONTENT_DIR
+    std::string hlslDir;            // empty: FXPORT_HLSL_DIR
+    bool fullSizeImages = false;    // also every debug tile at full size under DIR/targets/
+    std::optional<bool> syncPasses; // finish the device around timed passes; default: on for osmesa
+};
+
+// Returns the process exit code.
+int RunDeferred(const RunOptions& options);
+
+}  // namespace TheCansinDeferredRenderer

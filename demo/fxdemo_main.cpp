@@ -1,0 +1,124 @@
+// fxdemo: the ported tutorial programs.
+//
+//   fxdemo deferred [--size WxH] [--frames N] [--out DIR] [--gpu] [--window]
+//                   [--camera PX,PY,PZ,TX,TY,TZ] [--ssao RADIUS,SCALE] [--lights dsp]
+//                   [--no-debug-views] [--targets] [--[no-]sync-passes] [--content DIR] [--hlsl DIR]
+//
+// deferred: "Deferred Rendering in XNA 4" (seed 000), the final chapter's Game1. Headless (OSMesa)
+// by default: renders N frames (3), writes DIR/final.png (the back buffer) and DIR/debug.png (every
+// intermediate target), and prints the median GPU time of each pass. --gpu: headless on the GPU
+// (EGL). --window: a GLFW window with the FreeCamera (W/A/S/D/Q/E, left mouse button to turn, Z/X
+// and C/V for SSAO, F1 without SSAO, Escape quits); images are written only with --out.
+// --targets: every debug-sheet tile also at full size in DIR/targets/. --lights: keep only some of
+// the seed's lights (d, s, p). --sync-passes (default on OSMesa): finish the device around each timed
+// pass, so that a deferring CPU rasterizer's work is counted in the right pass.
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "deferred/run_deferred.h"
+
+namespace {
+
+int usage(const char* message) {
+    if (message) std::fprintf(stderr, "fxdemo: %s\n", message);
+    std::fprintf(stderr,
+                 "usage: fxdemo deferred [--size WxH] [--frames N] [--out DIR] [--gpu] [--window]\n"
+                 "                       [--camera PX,PY,PZ,TX,TY,TZ] [--ssao RADIUS,SCALE] [--lights dsp]\n"
+                 "                       [--no-debug-views] [--targets] [--[no-]sync-passes] [--content DIR] [--hlsl DIR]\n");
+    return 2;
+}
+
+bool parseFloats(const std::string& text, std::vector<float>& out, std::size_t count) {
+    out.clear();
+    std::stringstream in(text);
+    std::string item;
+    while (std::getline(in, item, ',')) {
+        try {
+            std::size_t used = 0;
+            out.push_back(std::stof(item, &used));
+            if (used != item.size()) return false;
+        } catch (const std::exception&) {
+            return false;
+        }
+    }
+    return out.size() == count;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2) return usage(nullptr);
+    const std::string program = argv[1];
+    if (program != "deferred") return usage(("unknown program '" + program + "' (known: deferred)").c_str());
+
+    TheCansinDeferredRenderer::RunOptions options;
+    for (int i = 2; i < argc; ++i) {
+        const std::string arg = argv[i];
+        auto value = [&]() -> const char* { return i + 1 < argc ? argv[++i] : nullptr; };
+        if (arg == "--size") {
+            const char* v = value();
+            if (!v || std::sscanf(v, "%dx%d", &options.width, &options.height) != 2 || options.width <= 0 ||
+                options.height <= 0)
+                return usage("--size wants WxH, e.g. 800x600");
+        } else if (arg == "--frames") {
+            const char* v = value();
+            if (!v || std::atoi(v) <= 0) return usage("--frames wants a positive number");
+            options.frames = std::atoi(v);
+        } else if (arg == "--out") {
+            const char* v = value();
+            if (!v) return usage("--out wants a folder");
+            options.outDir = v;
+            options.outDirGiven = true;
+        } else if (arg == "--gpu") {
+            options.platform = "egl";
+        } else if (arg == "--window") {
+            options.platform = "glfw";
+        } else if (arg == "--camera") {
+            const char* v = value();
+            std::vector<float> f;
+            if (!v || !parseFloats(v, f, 6)) return usage("--camera wants PX,PY,PZ,TX,TY,TZ");
+            options.cameraPosition = fxport::Vector3(f[0], f[1], f[2]);
+            options.cameraTarget = fxport::Vector3(f[3], f[4], f[5]);
+        } else if (arg == "--ssao") {
+            const char* v = value();
+            std::vector<float> f;
+            if (!v || !parseFloats(v, f, 2)) return usage("--ssao wants RADIUS,SCALE");
+            options.sampleRadius = f[0];
+            options.distanceScale = f[1];
+        } else if (arg == "--lights") {
+            const char* v = value();
+            if (!v || std::string(v).find_first_not_of("dsp") != std::string::npos)
+                return usage("--lights wants letters of d (directional), s (spot), p (point)");
+            options.lights = v;
+        } else if (arg == "--no-debug-views") {
+            options.debugViews = false;
+        } else if (arg == "--sync-passes") {
+            options.syncPasses = true;
+        } else if (arg == "--no-sync-passes") {
+            options.syncPasses = false;
+        } else if (arg == "--targets") {
+            options.fullSizeImages = true;
+        } else if (arg == "--content") {
+            const char* v = value();
+            if (!v) return usage("--content wants a folder");
+            options.contentDir = v;
+        } else if (arg == "--hlsl") {
+            const char* v = value();
+            if (!v) return usage("--hlsl wants a folder");
+            options.hlslDir = v;
+        } else {
+            return usage(("unknown option '" + arg + "'").c_str());
+        }
+    }
+
+    try {
+        return TheCansinDeferredRenderer::RunDeferred(options);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "fxdemo: %s\n", e.what());
+        return 1;
+    }
+}
