@@ -92,6 +92,9 @@ struct GraphicsDevice::Impl {
     } lastVertexArray;
     GLuint boundVertexArray = 0;
     VertexArray& vertexArrayFor(const VertexDeclaration& declaration);
+    // The VAO for the current vertex buffer and vertex shader, with the buffer attached at the
+    // SetVertexBuffer offset.
+    VertexArray& bindVertexBuffer();
 
     // Streaming buffers for DrawUser(Indexed)Primitives: written with orphaning.
     GLuint userVertices = 0, userIndices = 0;

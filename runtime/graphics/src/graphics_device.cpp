@@ -42,6 +42,22 @@ int vertexCountFor(PrimitiveType type, int primitives) {
     return 0;
 }
 
+// What SetRenderTargets needs of a bound target, 2D or cube.
+struct TargetInfo {
+    int width, height;
+    GLuint depth;
+    DepthFormat depthFormat;
+    RenderTargetUsage usage;
+};
+TargetInfo targetInfo(const Texture* t) {
+    if (t->kind() == Texture::Kind::TextureCube) {
+        auto* c = static_cast<const RenderTargetCube*>(t);
+        return {c->Size(), c->Size(), c->depthRenderbuffer(), c->DepthStencilFormat(), c->RenderTargetUsage()};
+    }
+    auto* r = static_cast<const RenderTarget2D*>(t);
+    return {r->Width(), r->Height(), r->depthRenderbuffer(), r->DepthStencilFormat(), r->RenderTargetUsage()};
+}
+
 // Live devices, oldest first; the last one made current is what GL calls go to.
 std::vector<GraphicsDevice*>& liveDevices() {
     static std::vector<GraphicsDevice*> devices;
@@ -170,8 +186,7 @@ void GraphicsDevice::SetRenderTargets(const std::vector<RenderTargetBinding>& bi
         if (!t->isRenderTarget())
             throw ArgumentError(where + " ('" + t->Name + "') is a texture, not a render target");
         if (t->IsDisposed()) throw InvalidOperation(where + " ('" + t->Name + "') was disposed");
-        int w = t->kind() == Texture::Kind::TextureCube ? static_cast<TextureCube*>(t)->Size() : static_cast<Texture2D*>(t)->Width();
-        int h = t->kind() == Texture::Kind::TextureCube ? static_cast<TextureCube*>(t)->Size() : static_cast<Texture2D*>(t)->Height();
+        int w = targetInfo(t).width, h = targetInfo(t).height;
         if (i == 0) {
             width = w;
             height = h;
@@ -190,12 +205,8 @@ void GraphicsDevice::SetRenderTargets(const std::vector<RenderTargetBinding>& bi
     // whenever it is set, to behave like the Xbox where the contents are lost; code written for it
     // relies on the depth clear (the deferred tutorial never clears its G-buffer depth).
     // PreserveContents keeps them. The back buffer follows PresentationParameters.
-    fxport::RenderTargetUsage usage = parameters_.RenderTargetUsage;
-    if (!bindings.empty()) {
-        Texture* first = bindings[0].RenderTarget;
-        usage = first->kind() == Texture::Kind::TextureCube ? static_cast<RenderTargetCube*>(first)->RenderTargetUsage()
-                                                            : static_cast<RenderTarget2D*>(first)->RenderTargetUsage();
-    }
+    fxport::RenderTargetUsage usage =
+        bindings.empty() ? parameters_.RenderTargetUsage : targetInfo(bindings[0].RenderTarget).usage;
     if (usage == fxport::RenderTargetUsage::DiscardContents)
         Clear(ClearOptions::Target | ClearOptions::DepthBuffer | ClearOptions::Stencil, DiscardColor, 1.0f, 0);
 }
@@ -214,20 +225,16 @@ void GraphicsDevice::Impl::bindTargets() {
     std::vector<RenderTargetBinding> bindings = targets;
     if (bindings.empty()) bindings.push_back(RenderTargetBinding(backBuffer.get()));
     Texture* first = bindings[0].RenderTarget;
-    GLuint depth = first->kind() == Texture::Kind::TextureCube ? static_cast<RenderTargetCube*>(first)->depthRenderbuffer()
-                                                                : static_cast<RenderTarget2D*>(first)->depthRenderbuffer();
-    DepthFormat depthFormat = first->kind() == Texture::Kind::TextureCube
-                                  ? static_cast<RenderTargetCube*>(first)->DepthStencilFormat()
-                                  : static_cast<RenderTarget2D*>(first)->DepthStencilFormat();
+    TargetInfo info = targetInfo(first);
+    GLuint depth = info.depth;
+    DepthFormat depthFormat = info.depthFormat;
     std::vector<std::uint64_t> key;
     for (const RenderTargetBinding& b : bindings)
         key.push_back((std::uint64_t(b.RenderTarget->glName()) << 8) |
                       (b.RenderTarget->kind() == Texture::Kind::TextureCube ? 1 + std::uint64_t(b.CubeMapFace) : 0));
     key.push_back(std::uint64_t(depth) << 8 | 0xff);
-    targetWidth = first->kind() == Texture::Kind::TextureCube ? static_cast<TextureCube*>(first)->Size()
-                                                               : static_cast<Texture2D*>(first)->Width();
-    targetHeight = first->kind() == Texture::Kind::TextureCube ? static_cast<TextureCube*>(first)->Size()
-                                                                : static_cast<Texture2D*>(first)->Height();
+    targetWidth = info.width;
+    targetHeight = info.height;
     auto it = framebuffers.find(key);
     GLuint fbo = 0;
     if (it != framebuffers.end()) {
@@ -355,15 +362,7 @@ void GraphicsDevice::DrawIndexedPrimitives(PrimitiveType primitiveType, int base
                             std::to_string(startIndex) + " need " + std::to_string(count) + " indices; the index buffer has " +
                             std::to_string(Indices->IndexCount()));
     d.flush("DrawIndexedPrimitives");
-    const VertexDeclaration& declaration = d.vertexBuffer->VertexDeclaration();
-    Impl::VertexArray& va = d.vertexArrayFor(declaration);
-    GLintptr offset = GLintptr(d.vertexOffset) * declaration.VertexStride();
-    if (va.buffer != d.vertexBuffer->glName() || va.offset != offset || va.stride != declaration.VertexStride()) {
-        va.buffer = d.vertexBuffer->glName();
-        va.offset = offset;
-        va.stride = declaration.VertexStride();
-        glVertexArrayVertexBuffer(va.vao, 0, va.buffer, va.offset, va.stride);
-    }
+    Impl::VertexArray& va = d.bindVertexBuffer();
     if (va.elements != Indices->glName()) {
         va.elements = Indices->glName();
         glVertexArrayElementBuffer(va.vao, va.elements);
@@ -382,16 +381,21 @@ void GraphicsDevice::DrawPrimitives(PrimitiveType primitiveType, int vertexStart
                             std::to_string(vertexStart) + " overrun the vertex buffer's " +
                             std::to_string(d.vertexBuffer->VertexCount()) + " vertices");
     d.flush("DrawPrimitives");
-    const VertexDeclaration& declaration = d.vertexBuffer->VertexDeclaration();
-    Impl::VertexArray& va = d.vertexArrayFor(declaration);
-    GLintptr offset = GLintptr(d.vertexOffset) * declaration.VertexStride();
-    if (va.buffer != d.vertexBuffer->glName() || va.offset != offset || va.stride != declaration.VertexStride()) {
-        va.buffer = d.vertexBuffer->glName();
+    d.bindVertexBuffer();
+    glDrawArrays(glPrimitive(primitiveType), vertexStart, count);
+}
+
+GraphicsDevice::Impl::VertexArray& GraphicsDevice::Impl::bindVertexBuffer() {
+    const VertexDeclaration& declaration = vertexBuffer->VertexDeclaration();
+    VertexArray& va = vertexArrayFor(declaration);
+    GLintptr offset = GLintptr(vertexOffset) * declaration.VertexStride();
+    if (va.buffer != vertexBuffer->glName() || va.offset != offset || va.stride != declaration.VertexStride()) {
+        va.buffer = vertexBuffer->glName();
         va.offset = offset;
         va.stride = declaration.VertexStride();
         glVertexArrayVertexBuffer(va.vao, 0, va.buffer, va.offset, va.stride);
     }
-    glDrawArrays(glPrimitive(primitiveType), vertexStart, count);
+    return va;
 }
 
 void GraphicsDevice::Impl::streamUserData(GLuint& buffer, GLsizeiptr& capacity, const void* data, GLsizeiptr bytes) {
