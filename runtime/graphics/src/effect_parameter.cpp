@@ -1,5 +1,7 @@
 // EffectParameter::SetValue / GetValue: type-checked writes into the effect's constant-buffer
 // shadow, laid out as the reflection says (HLSL packing, column_major or row_major).
+#include <algorithm>
+#include <climits>
 #include <cstring>
 
 #include "effect_impl.h"
@@ -88,6 +90,23 @@ struct Access {
             fail(std::string(call) + (isArray ? " with " + std::to_string(count) + " elements overruns the array"
                                               : " on an array: pass an array of values"));
         requireStorage(call);
+        if (p.type == ParameterType::Float) {
+            // The common case (matrices, vectors of floats): direct stores, one dirty range.
+            std::vector<std::uint8_t>& shadow = e.blocks[std::size_t(p.block)].shadow;
+            int lo = INT_MAX, hi = 0;
+            for (int el = 0; el < count; ++el)
+                for (int r = 0; r < p.rows; ++r)
+                    for (int c = 0; c < p.columns; ++c) {
+                        int at = Effect::Impl::byteOffset(p, el, r, c);
+                        if (at < 0 || std::size_t(at) + 4 > shadow.size()) continue;  // trimmed by the optimiser
+                        float f = float(get(el, r, c));
+                        std::memcpy(&shadow[std::size_t(at)], &f, 4);
+                        lo = std::min(lo, at);
+                        hi = std::max(hi, at + 4);
+                    }
+            if (hi > lo) e.markDirty(p.block, lo, hi);
+            return;
+        }
         int spe = scalarsPerElement();
         for (int el = 0; el < count; ++el)
             for (int r = 0; r < p.rows; ++r)
