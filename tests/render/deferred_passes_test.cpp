@@ -1,0 +1,382 @@
+// Each pass of the deferred demo (hlsl/xna-deferred, set up as demo/deferred does) rendered headless
+// at 96x64 from fixed synthetic inputs, read back, and compared pixel by pixel with an independent
+// double-precision CPU reference of the same HLSL (deferred_reference.h) evaluated on the same
+// input texels under D3D9's sampling and pixel-centre rules (d3d9_sampling.h, scene_geometry.h).
+// Bounds: render_harness.h; the per-pixel slack: reference_eval.h. Each test prints its max / RMS
+// error ("[render] ..." lines) and records them as test properties.
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "deferred_reference.h"
+#include "deferred_scene.h"
+#include "gpu_passes.h"
+#include "render_harness.h"
+#include "runtime_test_support.h"
+
+namespace fxport::render_test {
+namespace {
+
+template <class F>
+std::vector<std::vector<int>> perPixel(int width, int height, F f) {
+    std::vector<std::vector<int>> out;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) out.push_back(f(x, y));
+    return out;
+}
+
+// Inputs shared by the tests, built once.
+struct PassInputs {
+    GraphicsDevice& device;
+    TestCamera camera;
+    Vector2 size{float(kWidth), float(kHeight)};
+    Mesh scene = testSceneMesh(), cone = spotLightGeometry(), sphere = pointLightGeometry();
+    GpuMesh sceneGpu = toGpu(scene), coneGpu = toGpu(cone), sphereGpu = toGpu(sphere);
+    Materials materials = makeMaterials();
+    Texture2D albedoMap, normalMap, specularMap;
+    GBufferImages gbuffer;
+    Texture2D gbuffer0, gbuffer1, gbuffer2;
+    DirectionalLightSetup directional{Vector3(0.3f, -1.0f, -0.4f), Vector4(1.0f, 0.85f, 0.7f, 1.0f), 0.9f};
+    SpotLightSetup spot = makeSpotLight(Vector3(0, 6, 0.5f), Vector3(0.15f, -1, 0.45f), Vector4(1, 0.95f, 0.8f, 1), 0.9f, true, 64);
+    CpuTexture spotShadow, cookie;
+    Texture2D spotShadowGpu, cookieGpu;
+    PointLightSetup point{Vector3(0.5f, 3, 1), 20, Vector4(0.9f, 0.95f, 1, 1), 0.8f, true, 32};
+    CpuCube pointShadow;
+    TextureCube pointShadowGpu;
+    CpuTexture randomNormals, lightMap, ssao, sceneImage;
+    Texture2D randomNormalsGpu, lightMapGpu, ssaoGpu, sceneImageGpu;
+
+    explicit PassInputs(GraphicsDevice& d)
+        : device(d), camera(makeCamera(Vector3(0, 9, 17), Vector3(0, 1.5f, 0), kWidth, kHeight)),
+          albedoMap(d, 16, 16, false, SurfaceFormat::Color), normalMap(d, 16, 16, false, SurfaceFormat::Color),
+          specularMap(d, 16, 16, false, SurfaceFormat::Color), gbuffer(makeSyntheticGBuffer(scene, camera, kWidth, kHeight)),
+          gbuffer0(d, kWidth, kHeight, false, SurfaceFormat::Rgba64), gbuffer1(d, kWidth, kHeight, false, SurfaceFormat::Rgba64),
+          gbuffer2(d, kWidth, kHeight, false, SurfaceFormat::Vector2), spotShadow(makeSpotShadowMap(scene, spot)),
+          cookie(makeSpotCookie(32)), spotShadowGpu(d, 64, 64, false, SurfaceFormat::Single),
+          cookieGpu(d, 32, 32, false, SurfaceFormat::Color), pointShadow(makePointShadowCube(scene, point)),
+          pointShadowGpu(d, 32, false, SurfaceFormat::Single), randomNormals(makeRandomNormals(16)),
+          lightMap(makeLightMapImage(kWidth, kHeight)), ssao(makeSsaoImage(kWidth, kHeight)),
+          sceneImage(makeSceneImage(kWidth, kHeight)), randomNormalsGpu(d, 16, 16, false, SurfaceFormat::Color),
+          lightMapGpu(d, kWidth, kHeight, false, SurfaceFormat::Color), ssaoGpu(d, kWidth, kHeight, false, SurfaceFormat::Color),
+          sceneImageGpu(d, kWidth, kHeight, false, SurfaceFormat::Color) {
+        upload(albedoMap, materials.albedo);
+        upload(normalMap, materials.normal);
+        upload(specularMap, materials.specular);
+        upload(gbuffer0, gbuffer.albedo);
+        upload(gbuffer1, gbuffer.normals);
+        upload(gbuffer2, gbuffer.depth);
+        upload(spotShadowGpu, spotShadow);
+        upload(cookieGpu, cookie);
+        for (int f = 0; f < 6; ++f) upload(pointShadowGpu, CubeMapFace(f), pointShadow.faces[std::size_t(f)]);
+        upload(randomNormalsGpu, randomNormals);
+        upload(lightMapGpu, lightMap);
+        upload(ssaoGpu, ssao);
+        upload(sceneImageGpu, sceneImage);
+    }
+
+    GBufferTextures gbufferTextures() const { return {&gbuffer.albedo, &gbuffer.normals, &gbuffer.depth}; }
+    View3D cameraView() const { return makeView(toM4(camera.View), toM4(camera.Projection), kWidth, kHeight); }
+};
+
+class DeferredPasses : public ::testing::Test {
+protected:
+    static PassInputs& in() {
+        static std::unique_ptr<PassInputs> inputs = std::make_unique<PassInputs>(test::testDevice());
+        return *inputs;
+    }
+    void TearDown() override { resetDevice(device); }
+
+    // Compares, reports, and fails with the first offending pixels.
+    static void check(const std::string& pass, const CpuTexture& gpu, const RefImage& ref, int maxChannels = 4) {
+        Comparison c = compare(pass, gpu, ref, maxChannels);
+        report(c);
+        EXPECT_EQ(c.failures, 0) << pass << ": " << c.failures << " of " << c.samples << " samples outside the bound\n"
+                                 << c.failureText;
+        // The bounds must still see a one-pixel shift wherever the image changes by more than them.
+        EXPECT_GE(c.shiftedFailureFraction, 0.5 * c.shiftVisibleFraction)
+            << pass << ": a one-pixel shift of the GPU image passes the bounds";
+    }
+
+    // The demo's cull decisions for the light volumes, and what they keep.
+    static Cull spotCull(const TestCamera& camera, const SpotLightSetup& light) {
+        float SL = std::fabs(Vector3::Dot(camera.Position - light.Position, light.Direction));
+        return SL < light.LightAngleCos() ? Cull::CounterClockwiseFace : Cull::ClockwiseFace;
+    }
+    static Cull pointCull(const TestCamera& camera, const PointLightSetup& light) {
+        Vector3 diff = camera.Position - light.Position;
+        float cameraToLight = float(std::sqrt(float(Vector3::Dot(diff, diff)))) / 100.0f;
+        return cameraToLight <= light.Radius ? Cull::ClockwiseFace : Cull::CounterClockwiseFace;
+    }
+
+    static SpotLightParams spotParams(const TestCamera& camera, const SpotLightSetup& light) {
+        SpotLightParams q;
+        q.inverseView = toM4(Matrix::Invert(camera.View));
+        q.inverseViewProjection = toM4(Matrix::Invert(camera.View * camera.Projection));
+        q.lightViewProjection = toM4(light.View * light.Projection);
+        q.cameraPosition = toV3(camera.Position);
+        q.lightPosition = toV3(light.Position);
+        q.S = toV3(light.Direction);
+        q.lightColor = toV4(light.Color);
+        q.lightIntensity = light.Intensity;
+        q.lightAngleCos = light.LightAngleCos();
+        q.lightHeight = light.FarPlane;
+        q.gbufferTextureSize = {kWidth, kHeight};
+        q.shadows = light.Shadows;
+        q.shadowMapSize = light.ShadowMapResolution;
+        q.depthPrecision = light.FarPlane;
+        q.depthBias = light.DepthBias;
+        return q;
+    }
+    static PointLightParams pointParams(const TestCamera& camera, const PointLightSetup& light) {
+        PointLightParams q;
+        q.inverseView = toM4(Matrix::Invert(camera.View));
+        q.inverseViewProjection = toM4(Matrix::Invert(camera.View * camera.Projection));
+        q.cameraPosition = toV3(camera.Position);
+        q.lightPosition = toV3(light.Position);
+        q.lightRadius = light.Radius;
+        q.lightColor = toV4(light.Color);
+        q.lightIntensity = light.Intensity;
+        q.gbufferTextureSize = {kWidth, kHeight};
+        q.shadows = light.Shadows;
+        q.depthPrecision = light.Radius;
+        q.depthBias = light.DepthBias();
+        q.shadowMapSize = light.ShadowMapResolution;
+        return q;
+    }
+
+    void spotTest(const std::string& pass, bool shadows) {
+        PassInputs& s = in();
+        SpotLightSetup light = s.spot;
+        light.Shadows = shadows;
+        RenderTarget2D lightMap(device, kWidth, kHeight, false, SurfaceFormat::Color, DepthFormat::Depth24Stencil8);
+        beginLightMap(device, lightMap, s.gbuffer0, s.gbuffer1, s.gbuffer2);
+        drawSpotLight(device, s.camera, light, s.cookieGpu, s.spotShadowGpu, s.coneGpu, s.size);
+        endLightMap(device);
+        device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+        CpuTexture gpu = readBack(lightMap);
+
+        WorldMesh cone = toWorld(s.cone, toM4(light.World));
+        View3D view = s.cameraView();
+        Cull cull = spotCull(s.camera, light);
+        SpotLightParams q = spotParams(s.camera, light);
+        GBufferTextures gb = s.gbufferTextures();
+        std::vector<std::vector<int>> coverage = perPixel(kWidth, kHeight, [&](int x, int y) { return coverageCandidates(cone, view, cull, x, y); });
+        RefImage ref = referenceImage(kWidth, kHeight, SurfaceFormat::Color, true, [&](Eval& ev, PixelPos p) {
+            return spotLightPixel(ev, gb, s.cookie, s.spotShadow, q, coverage[std::size_t(p.y * kWidth + p.x)], p);
+        });
+        check(pass, gpu, ref);
+    }
+
+    void pointTest(const std::string& pass, bool shadows) {
+        PassInputs& s = in();
+        PointLightSetup light = s.point;
+        light.Shadows = shadows;
+        RenderTarget2D lightMap(device, kWidth, kHeight, false, SurfaceFormat::Color, DepthFormat::Depth24Stencil8);
+        beginLightMap(device, lightMap, s.gbuffer0, s.gbuffer1, s.gbuffer2);
+        drawPointLight(device, s.camera, light, s.pointShadowGpu, s.sphereGpu, s.size);
+        endLightMap(device);
+        device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+        CpuTexture gpu = readBack(lightMap);
+
+        WorldMesh sphere = toWorld(s.sphere, toM4(light.World()));
+        View3D view = s.cameraView();
+        Cull cull = pointCull(s.camera, light);
+        PointLightParams q = pointParams(s.camera, light);
+        GBufferTextures gb = s.gbufferTextures();
+        std::vector<std::vector<int>> coverage = perPixel(kWidth, kHeight, [&](int x, int y) { return coverageCandidates(sphere, view, cull, x, y); });
+        RefImage ref = referenceImage(kWidth, kHeight, SurfaceFormat::Color, true, [&](Eval& ev, PixelPos p) {
+            return pointLightPixel(ev, gb, s.pointShadow, q, coverage[std::size_t(p.y * kWidth + p.x)], p);
+        });
+        check(pass, gpu, ref);
+    }
+
+    GraphicsDevice& device = test::testDevice();
+};
+
+TEST_F(DeferredPasses, Clear) {
+    RenderTarget2D g0(device, kWidth, kHeight, false, SurfaceFormat::Rgba64, DepthFormat::Depth24Stencil8);
+    RenderTarget2D g1(device, kWidth, kHeight, false, SurfaceFormat::Rgba64, DepthFormat::Depth24Stencil8);
+    RenderTarget2D g2(device, kWidth, kHeight, false, SurfaceFormat::Vector2, DepthFormat::Depth24Stencil8);
+    // Start from something else than the clear values.
+    for (RenderTarget2D* t : {&g0, &g1, &g2}) {
+        device.SetRenderTarget(t);
+        device.Clear(ClearOptions::Target | ClearOptions::DepthBuffer, Vector4(0.25f, 0.75f, 0.125f, 0.625f), 1.0f, 0);
+    }
+    clearGBuffer(device, {RenderTargetBinding(g0), RenderTargetBinding(g1), RenderTargetBinding(g2)});
+    device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+    RenderTarget2D* targets[3] = {&g0, &g1, &g2};
+    const char* names[3] = {"Clear.Albedo", "Clear.Normals", "Clear.Depth"};
+    for (int t = 0; t < 3; ++t) {
+        RefImage ref = referenceImage(kWidth, kHeight, targets[t]->Format(), false, [&](Eval&, PixelPos) { return clearPixel(t); });
+        check(names[t], readBack(*targets[t]), ref);
+    }
+}
+
+TEST_F(DeferredPasses, GBuffer) {
+    PassInputs& s = in();
+    RenderTarget2D g0(device, kWidth, kHeight, false, SurfaceFormat::Rgba64, DepthFormat::Depth24Stencil8);
+    RenderTarget2D g1(device, kWidth, kHeight, false, SurfaceFormat::Rgba64, DepthFormat::Depth24Stencil8);
+    RenderTarget2D g2(device, kWidth, kHeight, false, SurfaceFormat::Vector2, DepthFormat::Depth24Stencil8);
+    Matrix world = Matrix::Identity;
+    clearGBuffer(device, {RenderTargetBinding(g0), RenderTargetBinding(g1), RenderTargetBinding(g2)});
+    makeGBuffer(device, s.sceneGpu, world, s.camera, s.albedoMap, s.normalMap, s.specularMap);
+    device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+
+    GBufferPass pass;
+    pass.mesh = &s.scene;
+    pass.world = toM4(world);
+    pass.worldMesh = toWorld(s.scene, pass.world);
+    pass.camera = s.cameraView();
+    pass.view = toM4(s.camera.View);
+    pass.projection = toM4(s.camera.Projection);
+    pass.worldViewIT = toM4(Matrix::Transpose(Matrix::Invert(world * s.camera.View)));
+    pass.albedoMap = &s.materials.albedo;
+    pass.normalMap = &s.materials.normal;
+    pass.specularMap = &s.materials.specular;
+    std::vector<std::vector<int>> visible = perPixel(
+        kWidth, kHeight, [&](int x, int y) { return visibleCandidates(pass.worldMesh, pass.camera, Cull::CounterClockwiseFace, x, y); });
+    RenderTarget2D* targets[3] = {&g0, &g1, &g2};
+    const char* names[3] = {"GBuffer.Albedo", "GBuffer.Normals", "GBuffer.Depth"};
+    for (int t = 0; t < 3; ++t) {
+        RefImage ref = referenceImage(kWidth, kHeight, targets[t]->Format(), true, [&](Eval& ev, PixelPos p) {
+            return gbufferPixel(ev, pass, visible[std::size_t(p.y * kWidth + p.x)], p, t);
+        });
+        // 8-bit material textures filtered linearly: the slack is the rule here (see d3d9_sampling.h).
+        check(names[t], readBack(*targets[t]), ref);
+    }
+}
+
+TEST_F(DeferredPasses, DepthWriterSpotShadowMap) {
+    PassInputs& s = in();
+    const SpotLightSetup& light = s.spot;
+    int n = light.ShadowMapResolution;
+    RenderTarget2D shadowMap(device, n, n, false, SurfaceFormat::Single, DepthFormat::Depth24Stencil8);
+    drawSpotShadowMap(device, shadowMap, s.sceneGpu, light);
+    device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+
+    DepthWriterPass pass;
+    pass.mesh = &s.scene;
+    pass.world = M4::identity();
+    pass.worldMesh = toWorld(s.scene, pass.world);
+    pass.lightView = makeView(toM4(light.View), toM4(light.Projection), n, n);
+    pass.lightPosition = toV3(light.Position);
+    pass.depthPrecision = light.FarPlane;
+    std::vector<std::vector<int>> visible =
+        perPixel(n, n, [&](int x, int y) { return visibleCandidates(pass.worldMesh, pass.lightView, Cull::CounterClockwiseFace, x, y); });
+    RefImage ref = referenceImage(n, n, SurfaceFormat::Single, true, [&](Eval& ev, PixelPos p) {
+        return depthWriterPixel(ev, pass, visible[std::size_t(p.y * n + p.x)], p);
+    });
+    check("DepthWriter.Spot", readBack(shadowMap), ref, 1);
+}
+
+TEST_F(DeferredPasses, DepthWriterPointCubeShadowMap) {
+    PassInputs& s = in();
+    const PointLightSetup& light = s.point;
+    int n = light.ShadowMapResolution;
+    RenderTargetCube shadowMap(device, n, false, SurfaceFormat::Single, DepthFormat::Depth24Stencil8);
+    drawPointShadowMap(device, shadowMap, s.sceneGpu, light);
+    device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+
+    const char* faceNames[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
+    for (int f = 0; f < 6; ++f) {
+        DepthWriterPass pass;
+        pass.mesh = &s.scene;
+        pass.world = M4::identity();
+        pass.worldMesh = toWorld(s.scene, pass.world);
+        pass.lightView = makeView(toM4(light.FaceView(CubeMapFace(f))), toM4(light.FaceProjection()), n, n);
+        pass.lightPosition = toV3(light.Position);
+        pass.depthPrecision = light.Radius;
+        std::vector<std::vector<int>> visible =
+            perPixel(n, n, [&](int x, int y) { return visibleCandidates(pass.worldMesh, pass.lightView, Cull::CounterClockwiseFace, x, y); });
+        RefImage ref = referenceImage(n, n, SurfaceFormat::Single, true, [&](Eval& ev, PixelPos p) {
+            return depthWriterPixel(ev, pass, visible[std::size_t(p.y * n + p.x)], p);
+        });
+        check(std::string("DepthWriter.Cube") + faceNames[f], readBack(shadowMap, CubeMapFace(f)), ref, 1);
+    }
+}
+
+TEST_F(DeferredPasses, DirectionalLight) {
+    PassInputs& s = in();
+    RenderTarget2D lightMap(device, kWidth, kHeight, false, SurfaceFormat::Color, DepthFormat::Depth24Stencil8);
+    beginLightMap(device, lightMap, s.gbuffer0, s.gbuffer1, s.gbuffer2);
+    drawDirectionalLight(device, s.camera, s.directional, s.size);
+    endLightMap(device);
+    device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+
+    DirectionalLightParams q;
+    q.inverseViewProjection = toM4(Matrix::Invert(s.camera.View * s.camera.Projection));
+    q.inverseView = toM4(Matrix::Invert(s.camera.View));
+    q.cameraPosition = toV3(s.camera.Position);
+    q.L = toV3(Vector3::Normalize(s.directional.Direction));
+    q.lightColor = toV4(s.directional.Color);
+    q.lightIntensity = s.directional.Intensity;
+    q.gbufferTextureSize = {kWidth, kHeight};
+    GBufferTextures gb = s.gbufferTextures();
+    RefImage ref = referenceImage(kWidth, kHeight, SurfaceFormat::Color, false,
+                                  [&](Eval& ev, PixelPos p) { return directionalLightPixel(ev, gb, q, p); });
+    check("DirectionalLight", readBack(lightMap), ref);
+}
+
+TEST_F(DeferredPasses, SpotLightWithoutShadows) { spotTest("SpotLight.NoShadows", false); }
+TEST_F(DeferredPasses, SpotLightWithShadowsAndCookie) { spotTest("SpotLight.Shadows", true); }
+TEST_F(DeferredPasses, PointLightWithoutShadows) { pointTest("PointLight.NoShadows", false); }
+TEST_F(DeferredPasses, PointLightWithCubeShadows) { pointTest("PointLight.Shadows", true); }
+
+TEST_F(DeferredPasses, Composition) {
+    PassInputs& s = in();
+    RenderTarget2D scene(device, kWidth, kHeight, false, SurfaceFormat::Color, DepthFormat::Depth24Stencil8);
+    composeScene(device, scene, s.gbuffer0, s.lightMapGpu, s.size);
+    device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+    RefImage ref = referenceImage(kWidth, kHeight, SurfaceFormat::Color, false, [&](Eval& ev, PixelPos p) {
+        return compositionPixel(ev, s.gbuffer.albedo, s.lightMap, {kWidth, kHeight}, p);
+    });
+    check("Composition", readBack(scene), ref);
+}
+
+TEST_F(DeferredPasses, Ssao) {
+    PassInputs& s = in();
+    const float sampleRadius = 0.25f, distanceScale = 3.0f;  // fxdemo's starting values
+    RenderTarget2D target(device, kWidth, kHeight, false, SurfaceFormat::Color, DepthFormat::None);
+    renderSsao(device, target, s.gbuffer1, s.gbuffer2, s.randomNormalsGpu, s.camera, sampleRadius, distanceScale);
+    device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+    SsaoParams q;
+    q.projection = toM4(s.camera.Projection);
+    float cy = float(std::tan(double(s.camera.FieldOfView) / 2.0)) * s.camera.FarPlane;
+    q.cornerFustrum = {double(cy * s.camera.AspectRatio), double(cy), double(s.camera.FarPlane)};
+    q.sampleRadius = sampleRadius;
+    q.distanceScale = distanceScale;
+    q.gbufferTextureSize = {kWidth, kHeight};
+    RefImage ref = referenceImage(kWidth, kHeight, SurfaceFormat::Color, false, [&](Eval& ev, PixelPos p) {
+        return ssaoPixel(ev, s.gbuffer.normals, s.gbuffer.depth, s.randomNormals, q, p);
+    });
+    check("SSAO", readBack(target), ref);
+}
+
+TEST_F(DeferredPasses, SsaoBlur) {
+    PassInputs& s = in();
+    RenderTarget2D target(device, kWidth, kHeight, false, SurfaceFormat::Color, DepthFormat::None);
+    // BlurSSAO relies on RenderSSAO having set Textures[1] = GBuffer 1 (LinearClamp).
+    device.Textures[1] = &s.gbuffer1;
+    device.SamplerStates[1] = SamplerState::LinearClamp;
+    blurSsao(device, target, s.ssaoGpu, kWidth, kHeight);
+    device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+    V2 blurDirection{double(1.0f / float(kWidth)), double(1.0f / float(kHeight))};
+    RefImage ref = referenceImage(kWidth, kHeight, SurfaceFormat::Color, false, [&](Eval& ev, PixelPos p) {
+        return ssaoBlurPixel(ev, s.gbuffer.normals, s.ssao, blurDirection, {kWidth, kHeight}, p);
+    });
+    check("SSAOBlur", readBack(target), ref);
+}
+
+TEST_F(DeferredPasses, SsaoFinal) {
+    PassInputs& s = in();
+    RenderTarget2D target(device, kWidth, kHeight, false, SurfaceFormat::Color, DepthFormat::None);
+    composeSsao(device, target, s.sceneImageGpu, s.ssaoGpu, kWidth, kHeight);
+    device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+    V2 halfPixel{double(1.0f / float(kWidth)), double(1.0f / float(kHeight))};
+    RefImage ref = referenceImage(kWidth, kHeight, SurfaceFormat::Color, false,
+                                  [&](Eval& ev, PixelPos p) { return ssaoFinalPixel(ev, s.sceneImage, s.ssao, halfPixel, p); });
+    check("SSAOFinal", readBack(target), ref);
+}
+
+}  // namespace
+}  // namespace fxport::render_test
