@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "common/program_registry.h"
 #include "deferred/run_deferred.h"
 
 namespace {
@@ -29,6 +30,7 @@ int usage(const char* message) {
                  "usage: fxdemo deferred [--size WxH] [--frames N] [--out DIR] [--gpu] [--window]\n"
                  "                       [--camera PX,PY,PZ,TX,TY,TZ] [--ssao RADIUS,SCALE] [--lights dsp]\n"
                  "                       [--no-debug-views] [--targets] [--[no-]sync-passes] [--content DIR] [--hlsl DIR]\n");
+    for (const auto& [name, program] : fxdemo::programs()) std::fprintf(stderr, "       %s\n", program.usage.c_str());
     return 2;
 }
 
@@ -53,7 +55,13 @@ bool parseFloats(const std::string& text, std::vector<float>& out, std::size_t c
 int main(int argc, char** argv) {
     if (argc < 2) return usage(nullptr);
     const std::string program = argv[1];
-    if (program != "deferred") return usage(("unknown program '" + program + "' (known: deferred)").c_str());
+    if (program != "deferred") {
+        auto found = fxdemo::programs().find(program);
+        if (found != fxdemo::programs().end()) return found->second.main(argc - 1, argv + 1);
+        std::string known = "deferred";
+        for (const auto& [name, registered] : fxdemo::programs()) known += ", " + name;
+        return usage(("unknown program '" + program + "' (known: " + known + ")").c_str());
+    }
 
     TheCansinDeferredRenderer::RunOptions options;
     for (int i = 2; i < argc; ++i) {
