@@ -9,7 +9,7 @@
 #include "fxport/graphics/graphics_device.h"
 #include "fxport/xlate/compiled_effect.h"
 #include "fxport/xlate/effect_compiler.h"
-#include "fxport_generated/model_material_source.h"  // runtime/graphics/shaders/ModelMaterial.fx (model.cmake)
+#include "fxport_generated/model_material_source.h"  // runtime/graphics/shaders/ModelMaterial.fx (embed_effect.cmake)
 #include "gltf_loader.h"
 
 namespace fxport {
