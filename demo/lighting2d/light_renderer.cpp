@@ -1,0 +1,220 @@
+#include "lighting2d/light_renderer.h"
+
+namespace _2DLightingSystem {
+
+using fxport::demo::PassTimer;
+
+LightRenderer::LightRenderer(GraphicsDeviceManager& _graphics, fxport::GraphicsDevice& device)
+    : graphics(_graphics), GraphicsDevice(device) {}
+
+void LightRenderer::Initialize() {
+    const int W = GraphicsDevice.Viewport.Width;
+    const int H = GraphicsDevice.Viewport.Height;
+    backBufferCache = std::make_unique<RenderTarget2D>(GraphicsDevice, W, H);
+    midGroundTarget = std::make_unique<RenderTarget2D>(GraphicsDevice, W, H);
+    lightMap = std::make_unique<RenderTarget2D>(GraphicsDevice, W, H, false, SurfaceFormat::Color, DepthFormat::None, 1,
+                                                RenderTargetUsage::PreserveContents);
+    // Square (W x W): each column is one ray (pair), each row a fraction along it. HdrBlendable
+    // (RGBA16F) for the distance precision; sampled with PointClamp only (seed, Part 3).
+    unwrapTarget = std::make_unique<RenderTarget2D>(GraphicsDevice, W, W, false, SurfaceFormat::HdrBlendable,
+                                                    DepthFormat::None);
+    fullScreen = Rectangle(0, 0, W, H);
+    occlusionMap = std::make_unique<RenderTarget2D>(GraphicsDevice, W, 1, false, SurfaceFormat::HdrBlendable,
+                                                    DepthFormat::None);
+
+    collapseBlendState = BlendState();
+    collapseBlendState.ColorBlendFunction = BlendFunction::Min;
+    collapseBlendState.AlphaBlendFunction = BlendFunction::Min;
+    collapseBlendState.ColorSourceBlend = Blend::One;
+    collapseBlendState.ColorDestinationBlend = Blend::One;
+    collapseBlendState.AlphaSourceBlend = Blend::One;
+    collapseBlendState.AlphaDestinationBlend = Blend::One;
+
+    postProcessTarget = std::make_unique<RenderTarget2D>(GraphicsDevice, W, H);
+    horizontalBlurTarget = std::make_unique<RenderTarget2D>(GraphicsDevice, W, H);
+    verticalBlurTarget = std::make_unique<RenderTarget2D>(GraphicsDevice, W, H);
+}
+
+void LightRenderer::LoadContent(ContentManager& Content) {
+    spriteBatch = std::make_unique<SpriteBatch>(GraphicsDevice);
+    unwrap = Content.Load<Effect>("Effects/Unwrap");
+    unwrapSpotlight = Content.Load<Effect>("Effects/UnwrapSpotlight");
+    spotLight = Content.Load<Effect>("Effects/SpotLight");
+    pointLight = Content.Load<Effect>("Effects/PointLight");
+    verticalBlur = Content.Load<Effect>("Effects/VerticalBlur");
+    horizontalBlur = Content.Load<Effect>("Effects/HorizontalBlur");
+    lightBlend = Content.Load<Effect>("Effects/LightBlend");
+}
+
+void LightRenderer::BeginDrawBackground() {
+    GraphicsDevice.SetRenderTarget(backBufferCache.get());
+}
+
+void LightRenderer::BeginDrawShadowCasters() {
+    GraphicsDevice.SetRenderTarget(midGroundTarget.get());
+    GraphicsDevice.Clear(Color::Transparent);
+}
+
+void LightRenderer::DrawLitScene() {
+    // Error checking: the seed's "remember to set these" sentinels.
+    if (lightBias < 0) std::fprintf(stderr, "LightRenderer: lightBias is not set (%g)\n", double(lightBias));
+    if (minLight < 0) std::fprintf(stderr, "LightRenderer: minLight is not set (%g)\n", double(minLight));
+
+    PrepareResources();
+
+    for (const SpotLight& sLight : spotLights) {
+        // Spotlight specific calculations
+        const float lightDirAngle = sLight.GetBiasedAngle();
+        { PassTimer t(gpuTimer, "Unwrap"); UnwrapShadowCasters(sLight, lightDirAngle); }
+        { PassTimer t(gpuTimer, "OcclusionMap"); CreateOcclusionMap(); }
+        { PassTimer t(gpuTimer, "LightMap"); CreateLightMap(sLight, lightDirAngle); }
+        { PassTimer t(gpuTimer, "Blur"); BlurLightMaps(sLight); }
+        if (afterLight) afterLight(*this, sLight, true, afterLightUser);
+        { PassTimer t(gpuTimer, "Accumulate"); AccumulateLightMaps(sLight); }
+    }
+    for (const PointLight& pLight : pointLights) {
+        { PassTimer t(gpuTimer, "Unwrap"); UnwrapShadowCasters(pLight); }
+        { PassTimer t(gpuTimer, "OcclusionMap"); CreateOcclusionMap(); }
+        { PassTimer t(gpuTimer, "LightMap"); CreateLightMap(pLight); }
+        { PassTimer t(gpuTimer, "Blur"); BlurLightMaps(pLight); }
+        if (afterLight) afterLight(*this, pLight, false, afterLightUser);
+        { PassTimer t(gpuTimer, "Accumulate"); AccumulateLightMaps(pLight); }
+    }
+    { PassTimer t(gpuTimer, "FinalScene"); RenderFinalScene(); }
+}
+
+void LightRenderer::PrepareResources() {
+    screenDims = Vector2(float(GraphicsDevice.Viewport.Width), float(GraphicsDevice.Viewport.Height));
+    const float DiagonalLength = screenDims.Length();
+
+    unwrap->Parameters["TextureWidth"].SetValue(screenDims.X);
+    unwrap->Parameters["TextureHeight"].SetValue(screenDims.Y);
+    unwrap->Parameters["DiagonalLength"].SetValue(DiagonalLength);
+    unwrapSpotlight->Parameters["TextureWidth"].SetValue(screenDims.X);
+    unwrapSpotlight->Parameters["TextureHeight"].SetValue(screenDims.Y);
+    unwrapSpotlight->Parameters["DiagonalLength"].SetValue(DiagonalLength);
+
+    pointLight->Parameters["ScreenDimensions"].SetValue(screenDims);
+    pointLight->Parameters["DiagonalLength"].SetValue(DiagonalLength);
+    pointLight->Parameters["Bias"].SetValue(lightBias);
+    spotLight->Parameters["ScreenDimensions"].SetValue(screenDims);
+    spotLight->Parameters["DiagonalLength"].SetValue(DiagonalLength);
+    spotLight->Parameters["Bias"].SetValue(lightBias);
+
+    horizontalBlur->Parameters["ScreenDims"].SetValue(screenDims);
+    horizontalBlur->Parameters["minBlur"].SetValue(minBlur);
+    horizontalBlur->Parameters["maxBlur"].SetValue(maxBlur);
+    verticalBlur->Parameters["ScreenDims"].SetValue(screenDims);
+    verticalBlur->Parameters["minBlur"].SetValue(minBlur);
+    verticalBlur->Parameters["maxBlur"].SetValue(maxBlur);
+
+    // MinLight is a float4 in LightBlend.fx: the seed's float goes in as Vector4(minLight).
+    lightBlend->Parameters["MinLight"].SetValue(Vector4(minLight, minLight, minLight, minLight));
+
+    GraphicsDevice.SetRenderTarget(lightMap.get());
+    GraphicsDevice.Clear(Color::Black);
+}
+
+void LightRenderer::UnwrapShadowCasters(const SpotLight& sLight, float lightDirAngle) {
+    unwrapSpotlight->Parameters["LightPos"].SetValue(sLight.Position);
+    unwrapSpotlight->Parameters["MinAngle"].SetValue(lightDirAngle - sLight.outerAngle / 2.f);
+    unwrapSpotlight->Parameters["MaxAngle"].SetValue(lightDirAngle + sLight.outerAngle / 2.f);
+
+    GraphicsDevice.SetRenderTarget(unwrapTarget.get());
+    GraphicsDevice.Clear(Color::Transparent);
+    spriteBatch->Begin(SpriteSortMode::Deferred, BlendState::Opaque, SamplerState::PointClamp, nullptr, nullptr,
+                       unwrapSpotlight);
+    spriteBatch->Draw(*midGroundTarget, Rectangle(0, 0, fullScreen.Width, fullScreen.Width), Color::White);
+    spriteBatch->End();
+}
+
+void LightRenderer::UnwrapShadowCasters(const PointLight& pLight) {
+    unwrap->Parameters["LightPos"].SetValue(pLight.Position);
+
+    GraphicsDevice.SetRenderTarget(unwrapTarget.get());
+    GraphicsDevice.Clear(Color::Transparent);
+    spriteBatch->Begin(SpriteSortMode::Deferred, BlendState::Opaque, SamplerState::PointClamp, nullptr, nullptr, unwrap);
+    spriteBatch->Draw(*midGroundTarget, Rectangle(0, 0, fullScreen.Width, fullScreen.Width), Color::White);
+    spriteBatch->End();
+}
+
+void LightRenderer::CreateOcclusionMap() {
+    GraphicsDevice.SetRenderTarget(occlusionMap.get());
+    GraphicsDevice.Clear(Color::White);  // 1 = no occluder: the start value of the Min blend
+
+    spriteBatch->Begin(SpriteSortMode::Deferred, collapseBlendState, SamplerState::PointClamp, nullptr, nullptr);
+    for (int i = 0; i < fullScreen.Width; i++)
+        spriteBatch->Draw(*unwrapTarget, Rectangle(0, 0, GraphicsDevice.Viewport.Width, 1),
+                          Rectangle(0, i, GraphicsDevice.Viewport.Width, 1), Color::White);
+    spriteBatch->End();
+}
+
+void LightRenderer::CreateLightMap(const SpotLight& sLight, float lightDirAngle) {
+    spotLight->Parameters["LightPos"].SetValue(sLight.Position);
+    spotLight->Parameters["LightPow"].SetValue(sLight.Power);
+    spotLight->Parameters["Radius"].SetValue(sLight.radius);
+    spotLight->Parameters["OuterMinAngle"].SetValue(lightDirAngle - sLight.outerAngle / 2.f);
+    spotLight->Parameters["OuterMaxAngle"].SetValue(lightDirAngle + sLight.outerAngle / 2.f);
+    spotLight->Parameters["CenterAngle"].SetValue(lightDirAngle);
+    spotLight->Parameters["HalfInnerArc"].SetValue(sLight.innerAngle / 2.f);
+    spotLight->Parameters["HalfOuterArc"].SetValue(sLight.outerAngle / 2.f);
+    spotLight->Parameters["AngleBias"].SetValue(sLight.GetAngleBias());
+
+    GraphicsDevice.SetRenderTarget(postProcessTarget.get());
+    GraphicsDevice.Clear(Color::Black);
+    spriteBatch->Begin(SpriteSortMode::Deferred, BlendState::Opaque, SamplerState::PointClamp, nullptr, nullptr,
+                       spotLight);
+    spriteBatch->Draw(*occlusionMap, fullScreen, Color::White);
+    spriteBatch->End();
+}
+
+void LightRenderer::CreateLightMap(const PointLight& pLight) {
+    pointLight->Parameters["LightPos"].SetValue(pLight.Position);
+    pointLight->Parameters["LightPow"].SetValue(pLight.Power);
+    pointLight->Parameters["Radius"].SetValue(pLight.radius);
+
+    GraphicsDevice.SetRenderTarget(postProcessTarget.get());
+    GraphicsDevice.Clear(Color::Black);
+    spriteBatch->Begin(SpriteSortMode::Deferred, BlendState::Opaque, SamplerState::PointClamp, nullptr, nullptr,
+                       pointLight);
+    spriteBatch->Draw(*occlusionMap, fullScreen, Color::White);
+    spriteBatch->End();
+}
+
+void LightRenderer::BlurLightMaps(const Light& light) {
+    horizontalBlur->Parameters["LightPos"].SetValue(light.Position);
+    horizontalBlur->Parameters["Radius"].SetValue(light.radius);
+    GraphicsDevice.SetRenderTarget(horizontalBlurTarget.get());
+    spriteBatch->Begin(SpriteSortMode::Deferred, BlendState::Opaque, nullptr, nullptr, nullptr, horizontalBlur);
+    spriteBatch->Draw(*postProcessTarget, fullScreen, Color::White);
+    spriteBatch->End();
+
+    verticalBlur->Parameters["LightPos"].SetValue(light.Position);
+    verticalBlur->Parameters["Radius"].SetValue(light.radius);
+    GraphicsDevice.SetRenderTarget(verticalBlurTarget.get());
+    spriteBatch->Begin(SpriteSortMode::Deferred, BlendState::Opaque, nullptr, nullptr, nullptr, verticalBlur);
+    spriteBatch->Draw(*horizontalBlurTarget, fullScreen, Color::White);
+    spriteBatch->End();
+}
+
+void LightRenderer::AccumulateLightMaps(const Light& light) {
+    GraphicsDevice.SetRenderTarget(lightMap.get());  // PreserveContents: the lights so far stay
+    spriteBatch->Begin(SpriteSortMode::Deferred, BlendState::Additive, nullptr, nullptr, nullptr);
+    spriteBatch->Draw(*verticalBlurTarget, fullScreen, light.color);
+    spriteBatch->End();
+}
+
+void LightRenderer::RenderFinalScene() {
+    GraphicsDevice.SetRenderTarget(nullptr);
+    GraphicsDevice.Textures[1] = lightMap;
+    spriteBatch->Begin(SpriteSortMode::Deferred, BlendState::AlphaBlend, nullptr, nullptr, nullptr, lightBlend);
+    spriteBatch->Draw(*backBufferCache, fullScreen, Color::White);
+    spriteBatch->End();
+    GraphicsDevice.Textures[1] = nullptr;
+
+    spriteBatch->Begin();
+    spriteBatch->Draw(*midGroundTarget, fullScreen, Color::White);
+    spriteBatch->End();
+}
+
+}  // namespace _2DLightingSystem

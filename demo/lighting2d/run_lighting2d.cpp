@@ -1,0 +1,288 @@
+// fxdemo lighting2d: Rabid Lion Games' 2D lighting system with shadows (seed 002) on fxport.
+//
+//   fxdemo lighting2d [--size WxH] [--frames N] [--out DIR] [--gpu] [--window]
+//
+// Game1 draws a procedural background and a few opaque shadow-casting sprites through the
+// LightRenderer's Begin/End pattern, with three point lights and three spot lights, then
+// DrawLitScene(). Headless (OSMesa) by default: N frames (3), then DIR/final.png (the back buffer),
+// DIR/debug.png (a sheet of the intermediate targets) and each of them in DIR/targets/, and the
+// median GPU time of each step. --gpu: EGL; --window: GLFW (Escape quits).
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <thread>
+
+#include "common/game.h"
+#include "common/program_registry.h"
+#include "fxport/graphics/input.h"
+#include "fxport/platform/graphics_context.h"
+#include "lighting2d/light_renderer.h"
+
+namespace _2DLightingSystem {
+
+using fxport::demo::GameTime;
+using fxport::demo::PassTimer;
+
+// Procedural sprites (fxport: the seed's textures are not available; made with SetData).
+static std::unique_ptr<Texture2D> MakeTexture(fxport::GraphicsDevice& device, int w, int h,
+                                              Color (*texel)(int x, int y, int w, int h)) {
+    std::vector<Color> data(std::size_t(w) * std::size_t(h));
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) data[std::size_t(y) * std::size_t(w) + std::size_t(x)] = texel(x, y, w, h);
+    auto texture = std::make_unique<Texture2D>(device, w, h);
+    texture->SetData(data);
+    return texture;
+}
+
+class Game1 : public fxport::demo::Game {
+public:
+    std::unique_ptr<LightRenderer> lightRenderer;
+    std::unique_ptr<SpriteBatch> spriteBatch;
+    std::unique_ptr<Texture2D> background, box, disc, bar;
+
+    // fxport: debug copies of the targets of the first spot light and the first point light.
+    bool captureDebug = false;
+    std::unique_ptr<RenderTarget2D> dbgSpotUnwrap, dbgSpotOcclusion, dbgSpotLightMap, dbgSpotBlurred;
+    std::unique_ptr<RenderTarget2D> dbgPointUnwrap, dbgPointOcclusion, dbgPointLightMap, dbgPointBlurred;
+    bool spotCaptured = false, pointCaptured = false;
+
+    Game1() {
+        Content.RootDirectory = FXPORT_CONTENT_DIR;
+        Content.EffectDirectory = FXPORT_HLSL_DIR "/lighting2d";
+    }
+
+protected:
+    void Initialize() override {
+        lightRenderer = std::make_unique<LightRenderer>(graphics, *GraphicsDevice);
+        lightRenderer->Initialize();
+        // The developer's settings the seed asks for.
+        lightRenderer->lightBias = 3.f;
+        lightRenderer->minLight = 0.15f;
+        const float W = float(GraphicsDevice->Viewport.Width), H = float(GraphicsDevice->Viewport.Height);
+        auto at = [&](float fx, float fy) { return Vector2(std::round(fx * W), std::round(fy * H)); };
+        const float R = 0.7f * W;
+        lightRenderer->pointLights.emplace_back(at(0.22f, 0.30f), 1.0f, R * 0.8f, Color(255, 140, 60));
+        lightRenderer->pointLights.emplace_back(at(0.72f, 0.62f), 1.0f, R * 0.7f, Color(80, 160, 255));
+        lightRenderer->pointLights.emplace_back(at(0.50f, 0.90f), 0.8f, R * 0.5f, Color(120, 255, 120));
+        const float deg = MathHelper::Pi / 180.f;
+        // Straight down (angle 0: sinTheta == 0 exactly in the middle column of the unwrap),
+        // straight up (the port's Sign(0) case; angle PI), and a diagonal one.
+        lightRenderer->spotLights.emplace_back(at(0.50f, 0.04f), Vector2(0, 1), 30 * deg, 60 * deg, 1.2f, R,
+                                               Color(255, 255, 200));
+        lightRenderer->spotLights.emplace_back(at(0.88f, 0.95f), Vector2(0, -1), 20 * deg, 45 * deg, 1.0f, R,
+                                               Color(255, 80, 200));
+        lightRenderer->spotLights.emplace_back(at(0.03f, 0.92f), Vector2::Normalize(Vector2(1, -0.6f)), 25 * deg,
+                                               50 * deg, 1.0f, R, Color(255, 230, 90));
+        Game::Initialize();
+    }
+
+    void LoadContent() override {
+        spriteBatch = std::make_unique<SpriteBatch>(*GraphicsDevice);
+        lightRenderer->LoadContent(Content);
+        background = MakeTexture(*GraphicsDevice, 256, 256, [](int x, int y, int, int) {
+            const bool tile = ((x / 32) + (y / 32)) % 2 == 0;
+            const bool grout = x % 32 == 0 || y % 32 == 0;
+            const int v = grout ? 90 : (tile ? 200 : 170);
+            return Color(v, v - 10 + (x % 7), v - 30 + (y % 5), 255);
+        });
+        box = MakeTexture(*GraphicsDevice, 64, 64, [](int x, int y, int w, int h) {
+            const bool edge = x < 4 || y < 4 || x >= w - 4 || y >= h - 4;
+            return edge ? Color(60, 40, 20, 255) : Color(150, 100, 50, 255);
+        });
+        disc = MakeTexture(*GraphicsDevice, 64, 64, [](int x, int y, int w, int h) {
+            const float dx = x + 0.5f - w / 2.f, dy = y + 0.5f - h / 2.f;
+            return dx * dx + dy * dy < (w / 2.f) * (w / 2.f) ? Color(70, 110, 70, 255) : Color::Transparent;
+        });
+        // An "L": marks orientation (a flip would show).
+        bar = MakeTexture(*GraphicsDevice, 32, 96, [](int x, int y, int w, int h) {
+            (void)w;
+            return (x < 12 || y >= h - 12) ? Color(120, 120, 140, 255) : Color::Transparent;
+        });
+        const int W = GraphicsDevice->Viewport.Width, H = GraphicsDevice->Viewport.Height;
+        auto rt = [&](int w, int h) { return std::make_unique<RenderTarget2D>(*GraphicsDevice, w, h); };
+        dbgSpotUnwrap = rt(W, W); dbgSpotOcclusion = rt(W, 48); dbgSpotLightMap = rt(W, H); dbgSpotBlurred = rt(W, H);
+        dbgPointUnwrap = rt(W, W); dbgPointOcclusion = rt(W, 48); dbgPointLightMap = rt(W, H); dbgPointBlurred = rt(W, H);
+        lightRenderer->afterLightUser = this;
+        lightRenderer->afterLight = [](LightRenderer& r, const Light&, bool isSpot, void* user) {
+            auto& g = *static_cast<Game1*>(user);
+            if (!g.captureDebug || (isSpot ? g.spotCaptured : g.pointCaptured)) return;
+            (isSpot ? g.spotCaptured : g.pointCaptured) = true;
+            g.copy(*r.unwrapTarget, isSpot ? *g.dbgSpotUnwrap : *g.dbgPointUnwrap);
+            g.copy(*r.occlusionMap, isSpot ? *g.dbgSpotOcclusion : *g.dbgPointOcclusion);
+            g.copy(*r.postProcessTarget, isSpot ? *g.dbgSpotLightMap : *g.dbgPointLightMap);
+            g.copy(*r.verticalBlurTarget, isSpot ? *g.dbgSpotBlurred : *g.dbgPointBlurred);
+        };
+    }
+
+    void Update(const GameTime&) override {
+        if (Keyboard::GetState().IsKeyDown(Keys::Escape)) Exit();
+    }
+
+    void Draw(const GameTime&) override {
+        const int W = GraphicsDevice->Viewport.Width, H = GraphicsDevice->Viewport.Height;
+        spotCaptured = pointCaptured = false;
+        {
+            PassTimer t(gpuTimer, "Background");
+            lightRenderer->BeginDrawBackground();
+            spriteBatch->Begin(SpriteSortMode::Deferred, BlendState::Opaque, SamplerState::PointWrap, nullptr, nullptr);
+            spriteBatch->Draw(*background, Vector2(0, 0), Rectangle(0, 0, W, H), Color::White);
+            spriteBatch->End();
+            lightRenderer->EndDrawBackground();
+        }
+        {
+            PassTimer t(gpuTimer, "ShadowCasters");
+            lightRenderer->BeginDrawShadowCasters();
+            spriteBatch->Begin();
+            auto px = [&](float fx, float fy) { return Vector2(std::round(fx * W), std::round(fy * H)); };
+            spriteBatch->Draw(*box, Rectangle(int(px(0.35f, 0).X), int(px(0, 0.35f).Y), W / 12, W / 12), Color::White);
+            spriteBatch->Draw(*box, Rectangle(int(px(0.60f, 0).X), int(px(0, 0.25f).Y), W / 20, H / 3), Color::White);
+            spriteBatch->Draw(*disc, Rectangle(int(px(0.15f, 0).X), int(px(0, 0.55f).Y), W / 10, W / 10), Color::White);
+            spriteBatch->Draw(*disc, Rectangle(int(px(0.82f, 0).X), int(px(0, 0.30f).Y), W / 16, W / 16), Color::White);
+            spriteBatch->Draw(*bar, Rectangle(int(px(0.45f, 0).X), int(px(0, 0.62f).Y), W / 24, H / 5), Color::White);
+            spriteBatch->End();
+            lightRenderer->EndDrawShadowCasters();
+        }
+        lightRenderer->DrawLitScene();
+    }
+
+public:
+    GpuTimer* gpuTimer = nullptr;
+
+    // Leaves `to` bound: setting the light's target again would clear it (DiscardContents, as XNA
+    // does), and the next step sets its own target anyway.
+    void copy(Texture2D& from, RenderTarget2D& to) {
+        GraphicsDevice->SetRenderTarget(to);
+        spriteBatch->Begin(SpriteSortMode::Deferred, BlendState::Opaque, SamplerState::PointClamp, nullptr, nullptr);
+        spriteBatch->Draw(from, Rectangle(0, 0, to.Width(), to.Height()), Color::White);
+        spriteBatch->End();
+    }
+
+    // A sheet of the intermediate targets, 4 x 3 tiles of W/2 x H/2, saved with SaveAsPng.
+    void WriteDebug(const std::string& dir) {
+        const int W = GraphicsDevice->Viewport.Width, H = GraphicsDevice->Viewport.Height;
+        const int tw = W / 2, th = H / 2;
+        RenderTarget2D sheet(*GraphicsDevice, tw * 4, th * 3);
+        Texture2D* tiles[] = {lightRenderer->backBufferCache.get(), lightRenderer->midGroundTarget.get(),
+                              lightRenderer->lightMap.get(),        nullptr,
+                              dbgSpotUnwrap.get(),  dbgSpotOcclusion.get(),  dbgSpotLightMap.get(),  dbgSpotBlurred.get(),
+                              dbgPointUnwrap.get(), dbgPointOcclusion.get(), dbgPointLightMap.get(), dbgPointBlurred.get()};
+        GraphicsDevice->SetRenderTarget(sheet);
+        GraphicsDevice->Clear(Color(40, 0, 40));
+        spriteBatch->Begin(SpriteSortMode::Deferred, BlendState::Opaque, SamplerState::PointClamp, nullptr, nullptr);
+        for (int i = 0; i < 12; ++i)
+            if (tiles[i]) spriteBatch->Draw(*tiles[i], Rectangle((i % 4) * tw, (i / 4) * th, tw - 2, th - 2), Color::White);
+        spriteBatch->End();
+        GraphicsDevice->SetRenderTarget(nullptr);
+        sheet.SaveAsPng((std::filesystem::path(dir) / "debug.png").string());
+        const auto targets = std::filesystem::path(dir) / "targets";
+        std::filesystem::create_directories(targets);
+        auto save = [&](Texture2D& t, const char* name) { t.SaveAsPng((targets / name).string()); };
+        save(*lightRenderer->backBufferCache, "background.png");
+        save(*lightRenderer->midGroundTarget, "casters.png");
+        save(*lightRenderer->lightMap, "lightmap_accumulated.png");
+        save(*dbgSpotUnwrap, "spot0_unwrap.png");
+        save(*dbgSpotOcclusion, "spot0_occlusion.png");
+        save(*dbgSpotLightMap, "spot0_lightmap.png");
+        save(*dbgSpotBlurred, "spot0_blurred.png");
+        save(*dbgPointUnwrap, "point0_unwrap.png");
+        save(*dbgPointOcclusion, "point0_occlusion.png");
+        save(*dbgPointLightMap, "point0_lightmap.png");
+        save(*dbgPointBlurred, "point0_blurred.png");
+    }
+};
+
+static int usage(const char* message) {
+    if (message) std::fprintf(stderr, "fxdemo lighting2d: %s\n", message);
+    std::fprintf(stderr, "usage: fxdemo lighting2d [--size WxH] [--frames N] [--out DIR] [--gpu] [--window]\n");
+    return 2;
+}
+
+int runLighting2d(int argc, char** argv) {
+    int width = 800, height = 480, frames = 0;
+    std::string outDir = "out/lighting2d", platformName = "osmesa";
+    bool outGiven = false;
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        auto value = [&]() -> const char* { return i + 1 < argc ? argv[++i] : nullptr; };
+        if (arg == "--size") {
+            const char* v = value();
+            if (!v || std::sscanf(v, "%dx%d", &width, &height) != 2 || width <= 0 || height <= 0)
+                return usage("--size wants WxH");
+        } else if (arg == "--frames") {
+            const char* v = value();
+            if (!v || std::atoi(v) <= 0) return usage("--frames wants a positive number");
+            frames = std::atoi(v);
+        } else if (arg == "--out") {
+            const char* v = value();
+            if (!v) return usage("--out wants a folder");
+            outDir = v;
+            outGiven = true;
+        } else if (arg == "--gpu") {
+            platformName = "egl";
+        } else if (arg == "--window") {
+            platformName = "glfw";
+        } else {
+            return usage(("unknown option " + arg).c_str());
+        }
+    }
+
+    Game1 game;
+    game.graphics.PreferredBackBufferWidth = width;
+    game.graphics.PreferredBackBufferHeight = height;
+    game.graphics.platform = platformName;
+    game.Start();
+    auto timer = std::make_unique<GpuTimer>(*game.GraphicsDevice);
+    game.gpuTimer = timer.get();
+    game.lightRenderer->gpuTimer = timer.get();
+    const bool sync = platformName == "osmesa";
+    PassTimer::syncDevice = sync ? game.GraphicsDevice : nullptr;
+    std::printf("fxdemo lighting2d: %dx%d on %s (%s); %zu spot lights, %zu point lights\n", width, height,
+                platformName.c_str(), game.GraphicsDevice->rendererName().c_str(),
+                game.lightRenderer->spotLights.size(), game.lightRenderer->pointLights.size());
+
+    if (platformName == "glfw") {
+        using Clock = std::chrono::steady_clock;
+        auto next = Clock::now();
+        while (!game.ExitRequested() && !game.GraphicsDevice->context().shouldClose() &&
+               (!frames || game.FrameCount() < frames)) {
+            game.captureDebug = outGiven;
+            game.Tick();
+            timer->EndFrame();
+            next += std::chrono::microseconds(16667);
+            auto now = Clock::now();
+            if (next > now) std::this_thread::sleep_until(next);
+            else next = now;
+        }
+    } else {
+        const int n = frames ? frames : 3;
+        for (int i = 0; i < n; ++i) {
+            game.captureDebug = i == n - 1;  // the copies are not timed frames' work except in the last
+            game.Tick();
+            timer->EndFrame();
+        }
+    }
+    game.GraphicsDevice->finish();
+    timer->Finish();
+    PassTimer::syncDevice = nullptr;
+    std::printf("%d frames; median GPU time per pass (per light for the per-light steps; frame = the whole frame)%s:\n", game.FrameCount(),
+                sync ? " (each pass finished before and after)" : "");
+    for (const GpuTimer::Section& section : timer->Sections())
+        std::printf("  %-14s %9.3f ms\n", section.name.c_str(), section.medianMs());
+
+    if (platformName != "glfw" || outGiven) {
+        std::filesystem::create_directories(outDir);
+        const std::string finalPath = (std::filesystem::path(outDir) / "final.png").string();
+        game.GraphicsDevice->SaveBackBufferAsPng(finalPath);
+        game.WriteDebug(outDir);
+        std::printf("wrote %s, %s/debug.png and %s/targets/*.png\n", finalPath.c_str(), outDir.c_str(), outDir.c_str());
+    }
+    return 0;
+}
+
+}  // namespace _2DLightingSystem
+
+FXDEMO_PROGRAM(lighting2d, "fxdemo lighting2d [--size WxH] [--frames N] [--out DIR] [--gpu] [--window]",
+               _2DLightingSystem::runLighting2d);
