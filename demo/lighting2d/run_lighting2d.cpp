@@ -17,6 +17,7 @@
 
 #include "common/game.h"
 #include "common/program_registry.h"
+#include "common/run_options.h"
 #include "fxport/graphics/input.h"
 #include "fxport/platform/graphics_context.h"
 #include "lighting2d/light_renderer.h"
@@ -201,33 +202,21 @@ static int usage(const char* message) {
 }
 
 int runLighting2d(int argc, char** argv) {
-    int width = 800, height = 480, frames = 0;
-    std::string outDir = "out/lighting2d", platformName = "osmesa";
-    bool outGiven = false;
+    fxport::demo::CommonOptions common;
+    common.width = 800;
+    common.height = 480;
+    common.outDir = "out/lighting2d";
     for (int i = 1; i < argc; ++i) {
-        const std::string arg = argv[i];
-        auto value = [&]() -> const char* { return i + 1 < argc ? argv[++i] : nullptr; };
-        if (arg == "--size") {
-            const char* v = value();
-            if (!v || std::sscanf(v, "%dx%d", &width, &height) != 2 || width <= 0 || height <= 0)
-                return usage("--size wants WxH");
-        } else if (arg == "--frames") {
-            const char* v = value();
-            if (!v || std::atoi(v) <= 0) return usage("--frames wants a positive number");
-            frames = std::atoi(v);
-        } else if (arg == "--out") {
-            const char* v = value();
-            if (!v) return usage("--out wants a folder");
-            outDir = v;
-            outGiven = true;
-        } else if (arg == "--gpu") {
-            platformName = "egl";
-        } else if (arg == "--window") {
-            platformName = "glfw";
-        } else {
-            return usage(("unknown option " + arg).c_str());
+        std::string error;
+        switch (fxport::demo::parseCommonOption(argc, argv, i, common, error)) {
+        case fxport::demo::OptionResult::Consumed: continue;
+        case fxport::demo::OptionResult::Error: return usage(error.c_str());
+        case fxport::demo::OptionResult::NotMine: return usage(("unknown option " + std::string(argv[i])).c_str());
         }
     }
+    const int width = common.width, height = common.height, frames = common.frames.value_or(0);
+    const std::string outDir = common.outDir, platformName = common.platform;
+    const bool outGiven = common.outDirGiven;
 
     Game1 game;
     game.graphics.PreferredBackBufferWidth = width;

@@ -15,12 +15,17 @@
 #include <thread>
 
 #include "common/program_registry.h"
+#include "common/run_options.h"
 #include "fxport/platform/graphics_context.h"
 #include "pointlights/debug_sheet.h"
 #include "pointlights/game1.h"
 #include "pointlights/reference_check.h"
 
 namespace DeferredLighting {
+
+using fxport::demo::CommonOptions;
+using fxport::demo::OptionResult;
+using fxport::demo::parseCommonOption;
 
 namespace {
 
@@ -34,31 +39,19 @@ int usage(const char* message) {
 }  // namespace
 
 int runPointLights(int argc, char** argv) {
-    int width = 800, height = 600;
-    std::optional<int> frames;
-    std::string outDir = "fxdemo-out/pointlights";
-    bool outDirGiven = false;
+    CommonOptions common;
+    common.outDir = "fxdemo-out/pointlights";
     std::optional<double> time;
-    std::string platform = "osmesa";
     bool spot = false;
     bool check = false;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         auto value = [&]() -> const char* { return i + 1 < argc ? argv[++i] : nullptr; };
-        if (arg == "--size") {
-            const char* v = value();
-            if (!v || std::sscanf(v, "%dx%d", &width, &height) != 2 || width <= 0 || height <= 0)
-                return usage("--size wants WxH, e.g. 800x600");
-        } else if (arg == "--frames") {
-            const char* v = value();
-            if (!v || std::atoi(v) <= 0) return usage("--frames wants a positive number");
-            frames = std::atoi(v);
-        } else if (arg == "--out") {
-            const char* v = value();
-            if (!v) return usage("--out wants a folder");
-            outDir = v;
-            outDirGiven = true;
-        } else if (arg == "--time") {
+        std::string error;
+        OptionResult parsed = parseCommonOption(argc, argv, i, common, error);
+        if (parsed == OptionResult::Error) return usage(error.c_str());
+        if (parsed == OptionResult::Consumed) continue;
+        if (arg == "--time") {
             const char* v = value();
             char* end = nullptr;
             if (!v) return usage("--time wants seconds");
@@ -69,10 +62,6 @@ int runPointLights(int argc, char** argv) {
             check = true;
         } else if (arg == "--spot") {
             spot = true;
-        } else if (arg == "--gpu") {
-            platform = "egl";
-        } else if (arg == "--window") {
-            platform = "glfw";
         } else if (arg == "--help" || arg == "-h") {
             std::printf("usage: %s\n", kUsage);
             return 0;
@@ -84,21 +73,21 @@ int runPointLights(int argc, char** argv) {
     if (check && spot) return usage("--check models the directional and point lights only, not --spot");
 
     Game1 game;
-    game.graphics.PreferredBackBufferWidth = width;
-    game.graphics.PreferredBackBufferHeight = height;
-    game.graphics.platform = platform;
+    game.graphics.PreferredBackBufferWidth = common.width;
+    game.graphics.PreferredBackBufferHeight = common.height;
+    game.graphics.platform = common.platform;
     // Headless without --time: a fixed time, so that the default run is reproducible too.
-    game.demo.time = time ? time : (platform == "glfw" ? std::nullopt : std::optional<double>(1.0));
+    game.demo.time = time ? time : (common.platform == "glfw" ? std::nullopt : std::optional<double>(1.0));
 
     game.Start();
     game.getRenderer().drawSpotLight = spot;
     auto timer = std::make_unique<GpuTimer>(*game.GraphicsDevice);
     game.getRenderer().setGpuTimer(timer.get());
-    const bool sync = platform == "osmesa";
+    const bool sync = common.platform == "osmesa";
     PassTimer::syncDevice = sync ? game.GraphicsDevice : nullptr;
 
     const Camera& camera = game.getCamera();
-    std::printf("fxdemo pointlights: %dx%d on %s (%s)\n", width, height, platform.c_str(),
+    std::printf("fxdemo pointlights: %dx%d on %s (%s)\n", common.width, common.height, common.platform.c_str(),
                 game.GraphicsDevice->rendererName().c_str());
     std::printf("1 directional + 22 point lights; camera (%.2f, %.2f, %.2f); light rig scale %.2f centre (%.1f, %.1f, %.1f); "
                 "time %s\n",
@@ -107,11 +96,11 @@ int runPointLights(int argc, char** argv) {
                 double(game.getRenderer().lightRig.center.Y), double(game.getRenderer().lightRig.center.Z),
                 game.demo.time ? std::to_string(*game.demo.time).c_str() : "game clock");
 
-    if (platform == "glfw") {
+    if (common.platform == "glfw") {
         using Clock = std::chrono::steady_clock;
         auto next = Clock::now();
         while (!game.ExitRequested() && !game.GraphicsDevice->context().shouldClose() &&
-               (!frames || game.FrameCount() < *frames)) {
+               (!common.frames || game.FrameCount() < *common.frames)) {
             game.Tick();
             timer->EndFrame();
             next += std::chrono::microseconds(16667);
@@ -120,7 +109,7 @@ int runPointLights(int argc, char** argv) {
             else next = now;
         }
     } else {
-        const int n = frames.value_or(3);
+        const int n = common.frames.value_or(3);
         for (int i = 0; i < n && !game.ExitRequested(); ++i) {
             game.Tick();
             timer->EndFrame();
@@ -136,7 +125,7 @@ int runPointLights(int argc, char** argv) {
     if (spot)
         std::printf("spot light drawn with %s\n", game.getRenderer().spotInside ? "CullClockwise (camera inside)"
                                                                                  : "CullCounterClockwise");
-    std::printf("%d frames; median GPU time per pass%s:\n", game.FrameCount(),
+    std::printf("%d common.frames; median GPU time per pass%s:\n", game.FrameCount(),
                 sync ? " (each pass finished before and after)" : "");
     for (const GpuTimer::Section& section : timer->Sections())
         std::printf("  %-16s %9.3f ms\n", section.name.c_str(), section.medianMs());
@@ -144,10 +133,10 @@ int runPointLights(int argc, char** argv) {
     int status = 0;
     if (check && !CheckLightMap(game)) status = 1;
 
-    if (platform != "glfw" || outDirGiven) {
-        std::filesystem::create_directories(outDir);
-        const std::string finalPath = (std::filesystem::path(outDir) / "final.png").string();
-        const std::string debugPath = (std::filesystem::path(outDir) / "debug.png").string();
+    if (common.platform != "glfw" || common.outDirGiven) {
+        std::filesystem::create_directories(common.outDir);
+        const std::string finalPath = (std::filesystem::path(common.outDir) / "final.png").string();
+        const std::string debugPath = (std::filesystem::path(common.outDir) / "debug.png").string();
         game.GraphicsDevice->SaveBackBufferAsPng(finalPath);
         WriteDebugSheet(game, debugPath);
         std::printf("wrote %s and %s\n", finalPath.c_str(), debugPath.c_str());
@@ -157,5 +146,5 @@ int runPointLights(int argc, char** argv) {
 
 }  // namespace DeferredLighting
 
-FXDEMO_PROGRAM(pointlights, "fxdemo pointlights [--size WxH] [--frames N] [--out DIR] [--time T] [--gpu] [--window]",
+FXDEMO_PROGRAM(pointlights, "fxdemo pointlights [--size WxH] [--common.frames N] [--out DIR] [--time T] [--gpu] [--window]",
                DeferredLighting::runPointLights);

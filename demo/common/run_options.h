@@ -1,0 +1,25 @@
+// The options every fxdemo program shares: --size WxH, --frames N, --out DIR, --gpu, --window.
+// A program's argument loop hands each argument to parseCommonOption first and handles its own
+// options only when it answers NotMine.
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace fxport::demo {
+
+struct CommonOptions {
+    int width = 800;
+    int height = 600;
+    std::optional<int> frames;       // unset: the program's default
+    std::string outDir;              // the program's default until --out
+    bool outDirGiven = false;
+    std::string platform = "osmesa"; // --gpu: egl, --window: glfw
+};
+
+enum class OptionResult { Consumed, NotMine, Error };
+
+// Looks at argv[i]; consumes its value too (advancing i). On Error, `error` says what was wrong.
+OptionResult parseCommonOption(int argc, char** argv, int& i, CommonOptions& options, std::string& error);
+
+}  // namespace fxport::demo
