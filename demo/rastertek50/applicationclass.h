@@ -1,0 +1,99 @@
+////////////////////////////////////////////////////////////////////////////////
+// Filename: applicationclass.h
+////////////////////////////////////////////////////////////////////////////////
+#pragma once
+
+
+//////////////
+// INCLUDES //
+//////////////
+#include <memory>
+#include <string>
+
+#include "fxport/graphics.h"
+
+
+/////////////
+// GLOBALS //
+/////////////
+namespace Rastertek50 {
+
+const bool FULL_SCREEN = true;
+const bool VSYNC_ENABLED = true;
+const float SCREEN_DEPTH = 1000.0f;
+const float SCREEN_NEAR = 0.1f;
+
+}  // namespace Rastertek50
+
+
+///////////////////////
+// MY CLASS INCLUDES //
+///////////////////////
+#include "rastertek50/inputclass.h"
+#include "rastertek50/d3dclass.h"
+#include "rastertek50/cameraclass.h"
+#include "rastertek50/lightclass.h"
+#include "rastertek50/modelclass.h"
+#include "rastertek50/orthowindowclass.h"
+#include "rastertek50/deferredbuffersclass.h"
+#include "rastertek50/deferredshaderclass.h"
+#include "rastertek50/lightshaderclass.h"
+
+namespace Rastertek50 {
+
+////////////////////////////////////////////////////////////////////////////////
+// Class name: ApplicationClass
+////////////////////////////////////////////////////////////////////////////////
+class ApplicationClass
+{
+public:
+	ApplicationClass();
+	ApplicationClass(const ApplicationClass&) = delete;
+	~ApplicationClass();
+
+	// fxport: `platform` (osmesa, egl, glfw) and the effects' folder replace HINSTANCE and HWND.
+	bool Initialize(const std::string& platform, const std::string& hlslDir, int, int);
+	void Shutdown();
+	bool Frame();
+
+	// fxport additions: the passes are timed when a GpuTimer is attached; access for fxdemo.
+	void SetGpuTimer(fxport::GpuTimer* timer) { m_gpuTimer = timer; }
+	D3DClass* GetD3D() { return m_D3D.get(); }
+	DeferredBuffersClass* GetDeferredBuffers() { return m_DeferredBuffers.get(); }
+	ModelClass* GetModel() { return m_Model.get(); }
+	// The cube's rotation (radians) of the last frame rendered.
+	float GetRotation() const { return m_rotation; }
+
+private:
+	bool Render();
+	void RenderSceneToTexture();
+
+private:
+	std::unique_ptr<InputClass> m_Input;
+	std::unique_ptr<D3DClass> m_D3D;
+	std::unique_ptr<CameraClass> m_Camera;
+
+	// We have a regular directional light object.
+	std::unique_ptr<LightClass> m_Light;
+
+	// We have the cube model that we will be rendering.
+	std::unique_ptr<ModelClass> m_Model;
+
+	// This is the 2D window that will be used to do the post processing on with the new deferred light shader.
+	std::unique_ptr<OrthoWindowClass> m_FullScreenWindow;
+
+	// This is the deferred buffers object that will contain the two render to textures containing
+	// the deferred rendering information for the colors and the normals.
+	std::unique_ptr<DeferredBuffersClass> m_DeferredBuffers;
+
+	// And we have our deferred shader and the re-written directional light shader.
+	std::unique_ptr<DeferredShaderClass> m_DeferredShader;
+	std::unique_ptr<LightShaderClass> m_LightShader;
+
+	// fxport: the seed's `static float rotation` in RenderSceneToTexture, as a member so that it
+	// starts from 0 for each ApplicationClass (the rotation is a function of the frame number).
+	float m_rotation;
+	fxport::GpuTimer* m_gpuTimer;
+};
+
+}  // namespace Rastertek50

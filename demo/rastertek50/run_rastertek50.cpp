@@ -1,0 +1,168 @@
+// `fxdemo rastertek50`: Rastertek DirectX 10 tutorial 50, "Deferred Shading" (seed 004), on fxport.
+// The seed's SystemClass (window, message loop) is this function: it creates the ApplicationClass
+// and calls Frame() once per frame.
+//
+//   fxdemo rastertek50 [--size WxH] [--frames N] [--out DIR] [--gpu] [--window] [--hlsl DIR] [--check]
+//
+// Headless (OSMesa; --gpu: EGL) it renders N frames (default 25: the cube turns pi/100 per frame,
+// so frame 25 shows it at 45 degrees; the rotation depends only on the frame number), prints the
+// median GPU time of each pass, and writes DIR/final.png (the back buffer) and DIR/debug.png (the
+// two G-buffer targets side by side: left the colour target, right the normal target shown as
+// n * 0.5 + 0.5, with the cleared background, normal (0,0,0), left black). --window: a GLFW window,
+// until it is closed, Escape is pressed or N frames have run; images only with --out. --check: the
+// last frame against a CPU reference (reference_check.h); exit code 1 when it is off.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "common/pass_timer.h"
+#include "common/program_registry.h"
+#include "common/run_options.h"
+#include "fxport/graphics.h"
+#include "fxport/platform/graphics_context.h"
+#include "rastertek50/applicationclass.h"
+#include "rastertek50/reference_check.h"
+
+namespace Rastertek50 {
+
+namespace {
+
+const char* kUsage = "fxdemo rastertek50 [--size WxH] [--frames N] [--out DIR] [--gpu] [--window] [--hlsl DIR] [--check]";
+
+int usage(const char* message) {
+    if (message) std::fprintf(stderr, "fxdemo rastertek50: %s\n", message);
+    std::fprintf(stderr, "usage: %s\n", kUsage);
+    return 2;
+}
+
+std::uint8_t toByte(float v) {
+    if (!(v > 0.0f)) return 0;
+    if (v >= 1.0f) return 255;
+    return std::uint8_t(std::lround(v * 255.0f));
+}
+
+// The two G-buffer targets side by side (see the top of this file).
+void WriteDebugImage(ApplicationClass& application, const std::string& path) {
+    DeferredBuffersClass& buffers = *application.GetDeferredBuffers();
+    fxport::RenderTarget2D* color = buffers.GetShaderResourceView(0);
+    fxport::RenderTarget2D* normal = buffers.GetShaderResourceView(1);
+    const int w = color->Width(), h = color->Height();
+    const std::vector<fxport::Vector4> colors = color->GetData<fxport::Vector4>();
+    const std::vector<fxport::Vector4> normals = normal->GetData<fxport::Vector4>();
+    std::vector<fxport::Color> sheet(std::size_t(2 * w) * std::size_t(h));
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);
+            const fxport::Vector4 c = colors[i];
+            const fxport::Vector4 n = normals[i];
+            fxport::Color& left = sheet[std::size_t(y) * std::size_t(2 * w) + std::size_t(x)];
+            fxport::Color& right = sheet[std::size_t(y) * std::size_t(2 * w) + std::size_t(w + x)];
+            left = fxport::Color(toByte(c.X), toByte(c.Y), toByte(c.Z), std::uint8_t(255));
+            const bool empty = std::fabs(n.X) + std::fabs(n.Y) + std::fabs(n.Z) < 1e-4f;
+            right = empty ? fxport::Color(std::uint8_t(0), std::uint8_t(0), std::uint8_t(0), std::uint8_t(255))
+                          : fxport::Color(toByte(n.X * 0.5f + 0.5f), toByte(n.Y * 0.5f + 0.5f),
+                                          toByte(n.Z * 0.5f + 0.5f), std::uint8_t(255));
+        }
+    }
+    fxport::Texture2D image(*application.GetD3D()->GetDevice(), 2 * w, h, false, fxport::SurfaceFormat::Color);
+    image.SetData(sheet);
+    image.SaveAsPng(path);
+}
+
+int runRastertek50(int argc, char** argv) {
+    fxport::demo::CommonOptions common;
+    common.outDir = "fxdemo-out/rastertek50";
+    std::string hlslDir = FXPORT_HLSL_DIR;
+    bool check = false;
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        auto value = [&]() -> const char* { return i + 1 < argc ? argv[++i] : nullptr; };
+        std::string error;
+        fxport::demo::OptionResult parsed = fxport::demo::parseCommonOption(argc, argv, i, common, error);
+        if (parsed == fxport::demo::OptionResult::Error) return usage(error.c_str());
+        if (parsed == fxport::demo::OptionResult::Consumed) continue;
+        if (arg == "--check") {
+            check = true;
+        } else if (arg == "--hlsl") {
+            const char* v = value();
+            if (!v) return usage("--hlsl wants a folder");
+            hlslDir = v;
+        } else {
+            return usage(("unknown option '" + arg + "'").c_str());
+        }
+    }
+
+    try {
+        ApplicationClass application;
+        if (!application.Initialize(common.platform, hlslDir, common.width, common.height)) return 1;
+        fxport::GraphicsDevice& device = *application.GetD3D()->GetDevice();
+        auto timer = std::make_unique<fxport::GpuTimer>(device);
+        application.SetGpuTimer(timer.get());
+        const bool sync = common.platform == "osmesa";
+        fxport::demo::PassTimer::syncDevice = sync ? &device : nullptr;
+        std::printf("fxdemo rastertek50: %dx%d on %s (%s)\n", common.width, common.height, common.platform.c_str(),
+                    device.rendererName().c_str());
+
+        int frameCount = 0;
+        if (common.platform == "glfw") {
+            using Clock = std::chrono::steady_clock;
+            auto next = Clock::now();
+            while (!device.context().shouldClose() && (!common.frames || frameCount < *common.frames)) {
+                if (!application.Frame()) break;
+                timer->EndFrame();
+                ++frameCount;
+                next += std::chrono::microseconds(16667);
+                auto now = Clock::now();
+                if (next > now) std::this_thread::sleep_until(next);
+                else next = now;
+            }
+        } else {
+            const int n = common.frames.value_or(25);
+            for (; frameCount < n; ++frameCount) {
+                if (!application.Frame()) break;
+                timer->EndFrame();
+            }
+        }
+        device.finish();
+        timer->Finish();
+        fxport::demo::PassTimer::syncDevice = nullptr;
+
+        std::printf("%d common.frames, cube rotation %.4f rad; median GPU time per pass%s:\n", frameCount,
+                    double(application.GetRotation()), sync ? " (each pass finished before and after)" : "");
+        for (const fxport::GpuTimer::Section& section : timer->Sections())
+            std::printf("  %-12s %9.3f ms\n", section.name.c_str(), section.medianMs());
+
+        if (common.platform != "glfw" || common.outDirGiven) {
+            std::filesystem::create_directories(common.outDir);
+            const std::string finalPath = (std::filesystem::path(common.outDir) / "final.png").string();
+            const std::string debugPath = (std::filesystem::path(common.outDir) / "debug.png").string();
+            device.SaveBackBufferAsPng(finalPath);
+            WriteDebugImage(application, debugPath);
+            std::printf("wrote %s and %s\n", finalPath.c_str(), debugPath.c_str());
+        }
+        bool checked = true;
+        if (check) checked = RunReferenceCheck(application);
+        application.SetGpuTimer(nullptr);
+        timer.reset();
+        application.Shutdown();
+        if (!checked) return 1;
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "fxdemo rastertek50: %s\n", error.what());
+        return 1;
+    }
+    return 0;
+}
+
+}  // namespace
+
+}  // namespace Rastertek50
+
+FXDEMO_PROGRAM(rastertek50, "fxdemo rastertek50 [--size WxH] [--frames N] [--out DIR] [--gpu] [--window]",
+               Rastertek50::runRastertek50);
