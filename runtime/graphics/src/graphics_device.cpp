@@ -407,7 +407,7 @@ void GraphicsDevice::Impl::streamUserData(GLuint& buffer, GLsizeiptr& capacity, 
 }
 
 void GraphicsDevice::drawUser(PrimitiveType type, const void* vertices, std::size_t stride,
-                              const VertexDeclaration& declaration, const void*, int, int, int primitiveCount) {
+                              const VertexDeclaration& declaration, int primitiveCount) {
     Impl& d = *impl_;
     if (primitiveCount <= 0) throw ArgumentError("DrawUserPrimitives: primitive count " + std::to_string(primitiveCount));
     if (stride != std::size_t(declaration.VertexStride()))

@@ -146,12 +146,12 @@ public:
     void DrawPrimitives(PrimitiveType primitiveType, int vertexStart, int primitiveCount);
     template <class T>
     void DrawUserPrimitives(PrimitiveType primitiveType, const T* vertexData, int vertexOffset, int primitiveCount) {
-        drawUser(primitiveType, vertexData + vertexOffset, sizeof(T), T::VertexDeclaration, nullptr, 0, 0, primitiveCount);
+        drawUser(primitiveType, vertexData + vertexOffset, sizeof(T), T::VertexDeclaration, primitiveCount);
     }
     template <class T>
     void DrawUserPrimitives(PrimitiveType primitiveType, const T* vertexData, int vertexOffset, int primitiveCount,
                             const VertexDeclaration& declaration) {
-        drawUser(primitiveType, vertexData + vertexOffset, sizeof(T), declaration, nullptr, 0, 0, primitiveCount);
+        drawUser(primitiveType, vertexData + vertexOffset, sizeof(T), declaration, primitiveCount);
     }
     template <class T, class I>
     void DrawUserIndexedPrimitives(PrimitiveType primitiveType, const T* vertexData, int vertexOffset, int numVertices,
@@ -195,7 +195,7 @@ public:
 
 private:
     void drawUser(PrimitiveType type, const void* vertices, std::size_t stride, const VertexDeclaration& declaration,
-                  const void* indices, int indexSize, int vertexCount, int primitiveCount);
+                  int primitiveCount);
     void drawUserIndexed(PrimitiveType type, const void* vertices, std::size_t stride, int vertexCount,
                          const VertexDeclaration& declaration, const void* indices, int indexSize, int primitiveCount);
 
