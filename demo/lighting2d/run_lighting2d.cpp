@@ -1,12 +1,14 @@
 // fxdemo lighting2d: Rabid Lion Games' 2D lighting system with shadows (seed 002) on fxport.
 //
-//   fxdemo lighting2d [--size WxH] [--frames N] [--out DIR] [--gpu] [--window]
+//   fxdemo lighting2d [--size WxH] [--frames N] [--out DIR] [--gpu] [--window] [--check]
 //
 // Game1 draws a procedural background and a few opaque shadow-casting sprites through the
 // LightRenderer's Begin/End pattern, with three point lights and three spot lights, then
 // DrawLitScene(). Headless (OSMesa) by default: N frames (3), then DIR/final.png (the back buffer),
 // DIR/debug.png (a sheet of the intermediate targets) and each of them in DIR/targets/, and the
-// median GPU time of each step. --gpu: EGL; --window: GLFW (Escape quits).
+// median GPU time of each step. --gpu: EGL; --window: GLFW (Escape quits). --check: compare the first
+// spot light's and the first point light's targets of the last frame with CPU references of the
+// effects (reference_check.h); exit 1 if off.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -21,6 +23,7 @@
 #include "fxport/graphics/input.h"
 #include "fxport/platform/graphics_context.h"
 #include "lighting2d/light_renderer.h"
+#include "lighting2d/reference_check.h"
 
 namespace _2DLightingSystem {
 
@@ -49,6 +52,9 @@ public:
     std::unique_ptr<RenderTarget2D> dbgSpotUnwrap, dbgSpotOcclusion, dbgSpotLightMap, dbgSpotBlurred;
     std::unique_ptr<RenderTarget2D> dbgPointUnwrap, dbgPointOcclusion, dbgPointLightMap, dbgPointBlurred;
     bool spotCaptured = false, pointCaptured = false;
+    // fxport --check: the first spot and point light of each frame (the last frame's is checked).
+    CheckCapture* checkCapture = nullptr;
+    bool spotChecked = false, pointChecked = false;
 
     Game1() {
         Content.RootDirectory = FXPORT_CONTENT_DIR;
@@ -107,8 +113,12 @@ protected:
         dbgSpotUnwrap = rt(W, W); dbgSpotOcclusion = rt(W, 48); dbgSpotLightMap = rt(W, H); dbgSpotBlurred = rt(W, H);
         dbgPointUnwrap = rt(W, W); dbgPointOcclusion = rt(W, 48); dbgPointLightMap = rt(W, H); dbgPointBlurred = rt(W, H);
         lightRenderer->afterLightUser = this;
-        lightRenderer->afterLight = [](LightRenderer& r, const Light&, bool isSpot, void* user) {
+        lightRenderer->afterLight = [](LightRenderer& r, const Light& light, bool isSpot, void* user) {
             auto& g = *static_cast<Game1*>(user);
+            if (g.checkCapture && !(isSpot ? g.spotChecked : g.pointChecked)) {
+                (isSpot ? g.spotChecked : g.pointChecked) = true;
+                CaptureLight(r, light, isSpot, isSpot ? g.checkCapture->spot : g.checkCapture->point);
+            }
             if (!g.captureDebug || (isSpot ? g.spotCaptured : g.pointCaptured)) return;
             (isSpot ? g.spotCaptured : g.pointCaptured) = true;
             g.copy(*r.unwrapTarget, isSpot ? *g.dbgSpotUnwrap : *g.dbgPointUnwrap);
@@ -125,6 +135,7 @@ protected:
     void Draw(const GameTime&) override {
         const int W = GraphicsDevice->Viewport.Width, H = GraphicsDevice->Viewport.Height;
         spotCaptured = pointCaptured = false;
+        spotChecked = pointChecked = false;
         {
             PassTimer t(gpuTimer, "Background");
             lightRenderer->BeginDrawBackground();
@@ -197,7 +208,7 @@ public:
 
 static int usage(const char* message) {
     if (message) std::fprintf(stderr, "fxdemo lighting2d: %s\n", message);
-    std::fprintf(stderr, "usage: fxdemo lighting2d [--size WxH] [--frames N] [--out DIR] [--gpu] [--window]\n");
+    std::fprintf(stderr, "usage: fxdemo lighting2d [--size WxH] [--frames N] [--out DIR] [--gpu] [--window] [--check]\n");
     return 2;
 }
 
@@ -206,8 +217,13 @@ int runLighting2d(int argc, char** argv) {
     common.width = 800;
     common.height = 480;
     common.outDir = "out/lighting2d";
+    bool check = false;
     for (int i = 1; i < argc; ++i) {
         std::string error;
+        if (std::string(argv[i]) == "--check") {
+            check = true;
+            continue;
+        }
         switch (fxport::demo::parseCommonOption(argc, argv, i, common, error)) {
         case fxport::demo::OptionResult::Consumed: continue;
         case fxport::demo::OptionResult::Error: return usage(error.c_str());
@@ -226,6 +242,8 @@ int runLighting2d(int argc, char** argv) {
     auto timer = std::make_unique<GpuTimer>(*game.GraphicsDevice);
     game.gpuTimer = timer.get();
     game.lightRenderer->gpuTimer = timer.get();
+    CheckCapture checkCapture;
+    if (check) game.checkCapture = &checkCapture;
     const bool sync = platformName == "osmesa";
     PassTimer::syncDevice = sync ? game.GraphicsDevice : nullptr;
     std::printf("fxdemo lighting2d: %dx%d on %s (%s); %zu spot lights, %zu point lights\n", width, height,
@@ -268,10 +286,12 @@ int runLighting2d(int argc, char** argv) {
         game.WriteDebug(outDir);
         std::printf("wrote %s, %s/debug.png and %s/targets/*.png\n", finalPath.c_str(), outDir.c_str(), outDir.c_str());
     }
-    return 0;
+    int status = 0;
+    if (check && !CheckLighting(*game.lightRenderer, checkCapture)) status = 1;
+    return status;
 }
 
 }  // namespace _2DLightingSystem
 
-FXDEMO_PROGRAM(lighting2d, "fxdemo lighting2d [--size WxH] [--frames N] [--out DIR] [--gpu] [--window]",
+FXDEMO_PROGRAM(lighting2d, "fxdemo lighting2d [--size WxH] [--frames N] [--out DIR] [--gpu] [--window] [--check]",
                _2DLightingSystem::runLighting2d);
