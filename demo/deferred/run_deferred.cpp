@@ -1,10 +1,9 @@
 #include "deferred/run_deferred.h"
 
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <thread>
 
+#include "common/frame_loop.h"
 #include "deferred/debug_sheet.h"
 #include "deferred/game1.h"
 #include "fxport/platform/graphics_context.h"
@@ -48,28 +47,12 @@ int RunDeferred(const RunOptions& options) {
                 double(options.cameraTarget.X), double(options.cameraTarget.Y), double(options.cameraTarget.Z),
                 double(options.sampleRadius), double(options.distanceScale));
 
-    if (options.platform == "glfw") {
-        // XNA's Run() in a window: fixed 60 Hz steps until the window closes, Escape, or --frames.
-        using Clock = std::chrono::steady_clock;
-        auto next = Clock::now();
-        while (!game.ExitRequested() && !game.GraphicsDevice->context().shouldClose() &&
-               (!options.frames || game.FrameCount() < *options.frames)) {
-            game.Tick();
-            timer->EndFrame();
-            next += std::chrono::microseconds(16667);
-            auto now = Clock::now();
-            if (next > now) std::this_thread::sleep_until(next);
-            else next = now;
-        }
-    } else {
-        const int frames = options.frames.value_or(3);
-        for (int i = 0; i < frames && !game.ExitRequested(); ++i) {
-            game.Tick();
-            timer->EndFrame();
-        }
-    }
-    game.GraphicsDevice->finish();
-    timer->Finish();
+    // XNA's Run(): a window at 60 Hz until it closes, Escape or --frames; headless 3 frames.
+    fxport::demo::runFrameLoop(*game.GraphicsDevice, *timer, options.platform == "glfw", options.frames, 3, [&](int, bool) {
+        if (game.ExitRequested()) return false;
+        game.Tick();
+        return true;
+    });
 
     PassTimer::syncDevice = nullptr;
     std::printf("%d frames; median GPU time per pass%s:\n", game.FrameCount(),

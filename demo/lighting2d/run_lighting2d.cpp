@@ -9,14 +9,13 @@
 // median GPU time of each step. --gpu: EGL; --window: GLFW (Escape quits). --check: compare the first
 // spot light's and the first point light's targets of the last frame with CPU references of the
 // effects (reference_check.h); exit 1 if off.
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
-#include <thread>
 
+#include "common/frame_loop.h"
 #include "common/game.h"
 #include "common/program_registry.h"
 #include "common/run_options.h"
@@ -250,29 +249,16 @@ int runLighting2d(int argc, char** argv) {
                 platformName.c_str(), game.GraphicsDevice->rendererName().c_str(),
                 game.lightRenderer->spotLights.size(), game.lightRenderer->pointLights.size());
 
-    if (platformName == "glfw") {
-        using Clock = std::chrono::steady_clock;
-        auto next = Clock::now();
-        while (!game.ExitRequested() && !game.GraphicsDevice->context().shouldClose() &&
-               (!frames || game.FrameCount() < frames)) {
-            game.captureDebug = outGiven;
-            game.Tick();
-            timer->EndFrame();
-            next += std::chrono::microseconds(16667);
-            auto now = Clock::now();
-            if (next > now) std::this_thread::sleep_until(next);
-            else next = now;
-        }
-    } else {
-        const int n = frames ? frames : 3;
-        for (int i = 0; i < n; ++i) {
-            game.captureDebug = i == n - 1;  // the copies are not timed frames' work except in the last
-            game.Tick();
-            timer->EndFrame();
-        }
-    }
-    game.GraphicsDevice->finish();
-    timer->Finish();
+    const bool windowed = platformName == "glfw";
+    fxport::demo::runFrameLoop(*game.GraphicsDevice, *timer, windowed, frames ? std::optional<int>(frames) : std::nullopt, 3,
+                 [&](int, bool lastHeadless) {
+                     if (game.ExitRequested()) return false;
+                     // Headless, the debug copies are made in the last frame only (they are not
+                     // timed frames' work); in a window in every frame when --out asks for them.
+                     game.captureDebug = windowed ? outGiven : lastHeadless;
+                     game.Tick();
+                     return true;
+                 });
     PassTimer::syncDevice = nullptr;
     std::printf("%d frames; median GPU time per pass (per light for the per-light steps; frame = the whole frame)%s:\n", game.FrameCount(),
                 sync ? " (each pass finished before and after)" : "");

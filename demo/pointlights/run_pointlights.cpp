@@ -6,14 +6,13 @@
 //              Escape quits; images only with --out)
 //   --check    compare lightRT with a CPU reference of the light pass (reference_check.h); exit 1 if off
 //   --spot     also draw the chapter's exercise: one spot light (SpotLight.fx, cone volume)
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <optional>
 #include <string>
-#include <thread>
 
+#include "common/frame_loop.h"
 #include "common/program_registry.h"
 #include "common/run_options.h"
 #include "fxport/platform/graphics_context.h"
@@ -96,27 +95,11 @@ int runPointLights(int argc, char** argv) {
                 double(game.getRenderer().lightRig.center.Y), double(game.getRenderer().lightRig.center.Z),
                 game.demo.time ? std::to_string(*game.demo.time).c_str() : "game clock");
 
-    if (common.platform == "glfw") {
-        using Clock = std::chrono::steady_clock;
-        auto next = Clock::now();
-        while (!game.ExitRequested() && !game.GraphicsDevice->context().shouldClose() &&
-               (!common.frames || game.FrameCount() < *common.frames)) {
-            game.Tick();
-            timer->EndFrame();
-            next += std::chrono::microseconds(16667);
-            auto now = Clock::now();
-            if (next > now) std::this_thread::sleep_until(next);
-            else next = now;
-        }
-    } else {
-        const int n = common.frames.value_or(3);
-        for (int i = 0; i < n && !game.ExitRequested(); ++i) {
-            game.Tick();
-            timer->EndFrame();
-        }
-    }
-    game.GraphicsDevice->finish();
-    timer->Finish();
+    fxport::demo::runFrameLoop(*game.GraphicsDevice, *timer, common.platform == "glfw", common.frames, 3, [&](int, bool) {
+        if (game.ExitRequested()) return false;
+        game.Tick();
+        return true;
+    });
     PassTimer::syncDevice = nullptr;
 
     std::printf("last frame: %d point lights drawn with CullClockwise (camera inside: inner faces), %d with "
@@ -125,7 +108,7 @@ int runPointLights(int argc, char** argv) {
     if (spot)
         std::printf("spot light drawn with %s\n", game.getRenderer().spotInside ? "CullClockwise (camera inside)"
                                                                                  : "CullCounterClockwise");
-    std::printf("%d common.frames; median GPU time per pass%s:\n", game.FrameCount(),
+    std::printf("%d frames; median GPU time per pass%s:\n", game.FrameCount(),
                 sync ? " (each pass finished before and after)" : "");
     for (const GpuTimer::Section& section : timer->Sections())
         std::printf("  %-16s %9.3f ms\n", section.name.c_str(), section.medianMs());
@@ -146,5 +129,5 @@ int runPointLights(int argc, char** argv) {
 
 }  // namespace DeferredLighting
 
-FXDEMO_PROGRAM(pointlights, "fxdemo pointlights [--size WxH] [--common.frames N] [--out DIR] [--time T] [--gpu] [--window]",
+FXDEMO_PROGRAM(pointlights, "fxdemo pointlights [--size WxH] [--frames N] [--out DIR] [--time T] [--gpu] [--window]",
                DeferredLighting::runPointLights);

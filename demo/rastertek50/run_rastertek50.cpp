@@ -11,7 +11,6 @@
 // n * 0.5 + 0.5, with the cleared background, normal (0,0,0), left black). --window: a GLFW window,
 // until it is closed, Escape is pressed or N frames have run; images only with --out. --check: the
 // last frame against a CPU reference (reference_check.h); exit code 1 when it is off.
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -19,9 +18,9 @@
 #include <filesystem>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
+#include "common/frame_loop.h"
 #include "common/pass_timer.h"
 #include "common/program_registry.h"
 #include "common/run_options.h"
@@ -110,31 +109,11 @@ int runRastertek50(int argc, char** argv) {
         std::printf("fxdemo rastertek50: %dx%d on %s (%s)\n", common.width, common.height, common.platform.c_str(),
                     device.rendererName().c_str());
 
-        int frameCount = 0;
-        if (common.platform == "glfw") {
-            using Clock = std::chrono::steady_clock;
-            auto next = Clock::now();
-            while (!device.context().shouldClose() && (!common.frames || frameCount < *common.frames)) {
-                if (!application.Frame()) break;
-                timer->EndFrame();
-                ++frameCount;
-                next += std::chrono::microseconds(16667);
-                auto now = Clock::now();
-                if (next > now) std::this_thread::sleep_until(next);
-                else next = now;
-            }
-        } else {
-            const int n = common.frames.value_or(25);
-            for (; frameCount < n; ++frameCount) {
-                if (!application.Frame()) break;
-                timer->EndFrame();
-            }
-        }
-        device.finish();
-        timer->Finish();
+        const int frameCount = fxport::demo::runFrameLoop(device, *timer, common.platform == "glfw", common.frames, 25,
+                                                          [&](int, bool) { return application.Frame(); });
         fxport::demo::PassTimer::syncDevice = nullptr;
 
-        std::printf("%d common.frames, cube rotation %.4f rad; median GPU time per pass%s:\n", frameCount,
+        std::printf("%d frames, cube rotation %.4f rad; median GPU time per pass%s:\n", frameCount,
                     double(application.GetRotation()), sync ? " (each pass finished before and after)" : "");
         for (const fxport::GpuTimer::Section& section : timer->Sections())
             std::printf("  %-12s %9.3f ms\n", section.name.c_str(), section.medianMs());
