@@ -110,6 +110,7 @@ struct GraphicsDevice::Impl {
     Rectangle appliedScissor;
     std::array<GLuint, kMaxTextureSlots> boundTextures{};
     std::array<GLuint, kMaxTextureSlots> boundSamplers{};
+    std::array<SamplerState, kMaxTextureSlots> boundSamplerStates{};  // what boundSamplers were made from
     std::map<std::array<std::uint8_t, sizeof(SamplerState)>, GLuint> samplerObjects;  // SamplerState bytes -> GL sampler
     GLuint samplerFor(const SamplerState& state);
 

@@ -106,10 +106,15 @@ void GraphicsDevice::Impl::applyTextures() {
                 glBindTextureUnit(GLuint(unit), name);
                 boundTextures[std::size_t(unit)] = name;
             }
-            GLuint sampler_ = samplerFor(device.SamplerStates[unit]);
-            if (forceAll || boundSamplers[std::size_t(unit)] != sampler_) {
-                glBindSampler(GLuint(unit), sampler_);
-                boundSamplers[std::size_t(unit)] = sampler_;
+            // The sampler-object lookup (a map keyed by the state's bytes) runs only when the
+            // slot's state differs from what is bound, not on every draw.
+            const SamplerState& wanted = device.SamplerStates[unit];
+            std::size_t u = std::size_t(unit);
+            if (forceAll || boundSamplers[u] == 0 || !(boundSamplerStates[u] == wanted)) {
+                GLuint object = samplerFor(wanted);
+                if (forceAll || boundSamplers[u] != object) glBindSampler(GLuint(unit), object);
+                boundSamplers[u] = object;
+                boundSamplerStates[u] = wanted;
             }
         }
     }

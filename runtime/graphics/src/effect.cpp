@@ -123,7 +123,7 @@ void Effect::build() {
         e.blocks.push_back(std::move(block));
     }
 
-    // Programs, with each block moved to its stage's range of binding points.
+    // Programs (the device moves each uniform block to its stage's range of binding points).
     try {
         for (const xlate::CompiledShader& shader : c.shaders) {
             ShaderProgram p;
@@ -131,16 +131,6 @@ void Effect::build() {
             p.shader = &shader;
             p.label = e.displayName + ": " + shader.entryPoint + " (" + shader.profile.name + ")";
             p.program = d.createProgram(glStage(shader.profile.stage), shader.glsl, p.label);
-            GLint blockCount = 0;
-            glGetProgramiv(p.program, GL_ACTIVE_UNIFORM_BLOCKS, &blockCount);
-            for (GLint i = 0; i < blockCount; ++i) {
-                GLint binding = 0;
-                glGetActiveUniformBlockiv(p.program, GLuint(i), GL_UNIFORM_BLOCK_BINDING, &binding);
-                // `% per-stage` keeps this idempotent: a program shared with an effect loaded
-                // earlier (same GLSL) has been remapped already.
-                glUniformBlockBinding(p.program, GLuint(i),
-                                      GLuint(uniformBindingFor(p.stage, binding % kUniformBindingsPerStage)));
-            }
             e.programs.push_back(p);
         }
     } catch (...) {
