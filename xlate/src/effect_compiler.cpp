@@ -270,7 +270,6 @@ int EffectBuilder::compileShader(const FxShaderExpr& expr, ShaderStage expected,
         error(diag::kMissingEntry, "entry point '" + expr.entry + "' is not a function of this effect", expr.token);
         return -1;
     }
-    std::string source = expected == ShaderStage::Geometry ? rewritten_.hlslForGeometryShader(expr.entry) : rewritten_.hlsl;
     std::string entryName = expr.entry;
     bool wrapped = expected != ShaderStage::Geometry;
     EntryWrapper wrapper;
@@ -280,9 +279,21 @@ int EffectBuilder::compileShader(const FxShaderExpr& expr, ShaderStage expected,
             error(diag::kBadEntrySignature, wrapper.error, entry->token);
             return -1;
         }
-        source += wrapper.code;
         entryName = kWrapperEntry;
     }
+    if (options_.skipShaders) {  // the outline: which entry point, not its code
+        CompiledShader shader;
+        shader.profile = *profile;
+        shader.entryPoint = expr.entry;
+        shader.arguments = expr.arguments;
+        shader.needsD3D9PixelOffset = wrapper.usesPixelOffset;
+        int index = static_cast<int>(effect_.shaders.size());
+        effect_.shaders.push_back(std::move(shader));
+        compiled_[key] = index;
+        return index;
+    }
+    std::string source = expected == ShaderStage::Geometry ? rewritten_.hlslForGeometryShader(expr.entry) : rewritten_.hlsl;
+    if (wrapped) source += wrapper.code;
     HlslToSpirvRequest request;
     request.source = &source;
     request.stage = expected;
@@ -516,6 +527,7 @@ std::string cacheKey(const std::string& source, const std::string& displayPath, 
     }
     for (const auto& t : options.techniques) field("T", t);
     field("K", options.keepValidPasses ? "1" : "0");
+    if (options.skipShaders) field("O", "outline");
     field("S", source);
     return contentHash(key);
 }
@@ -528,6 +540,7 @@ void dumpIfAsked(const CompiledEffect& effect) {
     std::string stem = fs::path(effect.sourcePath).stem().string();
     for (size_t i = 0; i < effect.shaders.size(); ++i) {
         const auto& s = effect.shaders[i];
+        if (s.glsl.empty()) continue;  // an outline (CompileOptions::skipShaders) compiled nothing
         std::string base = std::string(dir) + "/" + stem + "." + std::to_string(i) + "." + s.entryPoint + "." + s.profile.name;
         std::ofstream(base + ".glsl") << s.glsl;
         if (!s.hlslAfterRewrite.empty()) std::ofstream(base + ".hlsl") << s.hlslAfterRewrite;

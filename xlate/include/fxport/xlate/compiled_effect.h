@@ -133,7 +133,9 @@ struct CompiledShader {
     ShaderProfile profile;
     std::string entryPoint;
     std::string arguments;   // literal arguments of `compile ps_2_0 PS(true, 3)`, as written
-    std::string glsl;        // GLSL 4.50 core, separable (has gl_PerVertex redeclared)
+    std::string glsl;        // GLSL 4.50 core, separable (has gl_PerVertex redeclared); empty in
+                             // an outline (CompileOptions::skipShaders), as are the fields below
+                             // except needsD3D9PixelOffset
     std::vector<VertexInput> inputs;  // vertex shaders only
     std::vector<SamplerBinding> samplers;
     std::vector<int> parametersRead;      // indices into CompiledEffect::parameters

@@ -38,6 +38,12 @@ struct CompileOptions {
     // Keep the rewritten HLSL of each shader in CompiledShader::hlslAfterRewrite. Also turned on
     // (and written to files) by the environment variable FXPORT_DUMP=<folder>.
     bool keepRewrittenHlsl = false;
+    // Parse the effect and build its outline -- techniques, passes (states, which entry point each
+    // stage uses), parameters with defaults -- but cross-compile no shader: CompiledShader::glsl
+    // stays empty, uniform blocks have size 0 and parameters offset -1. Profiles, entry points and
+    // entry signatures are still checked. What the runtime loads so that an effect's shaders are
+    // compiled only when one of its passes is first applied (then with `techniques` = that one).
+    bool skipShaders = false;
 };
 
 // Compiles a file. Throws CompileError for fatal problems.
