@@ -3,8 +3,11 @@
 #include "fxport/graphics/effect.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "effect_impl.h"
 #include "fxport/graphics/errors.h"
@@ -40,14 +43,64 @@ int stageIndex(xlate::ShaderStage stage) {
     return 0;
 }
 
-xlate::CompiledEffect compileFile(const std::string& path, const EffectOptions& options) {
+using Clock = std::chrono::steady_clock;
+double millisecondsSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+xlate::CompileOptions compileOptions(const EffectOptions& options, std::vector<std::string> techniques) {
     xlate::CompileOptions o;
     o.includeDirs = options.includeDirs;
     o.defines = options.defines;
-    o.techniques = options.techniques;
+    o.techniques = techniques.empty() ? options.techniques : std::move(techniques);
     o.useCache = options.useCache;
     o.cacheDir = options.cacheDir;
-    return xlate::compileEffectFile(path, o);
+    return o;
+}
+
+// The effect's bytes, read once at load: techniques compiled later compile the same text as the
+// outline (include files are read when compiling, as the cache key assumes).
+std::string readEffectSource(const std::string& path) {
+    std::error_code ec;
+    std::ifstream in(path, std::ios::binary);
+    if (std::filesystem::is_directory(path, ec) || !in) {
+        xlate::Diagnostic d;
+        d.id = xlate::diag::kFileUnreadable;
+        d.message = std::filesystem::is_directory(path, ec) ? "'" + path + "' is a folder, not an effect file" : "cannot open '" + path + "'";
+        d.location = {path, 0, 0};
+        throw xlate::CompileError({d});
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// Compiles the effect's kept source: `techniques` only, or every technique when empty.
+xlate::CompiledEffect compileSource(const Effect::Impl& e, std::vector<std::string> techniques) {
+    if (!e.fromSource)
+        throw InvalidOperation("Effect '" + e.displayName + "' was built from compiled code and has no source to compile");
+    return xlate::compileEffectSource(e.source, e.sourcePath, compileOptions(e.options, std::move(techniques)));
+}
+
+// The byte ranges of each uniform block a shader reads, sorted and merged.
+std::vector<Effect::Impl::BlockReads> readsOf(const xlate::CompiledShader& shader) {
+    std::vector<Effect::Impl::BlockReads> out;
+    for (const xlate::UniformRange& r : shader.uniformRangesRead) {
+        if (r.size <= 0) continue;
+        auto it = std::find_if(out.begin(), out.end(), [&](const auto& b) { return b.block == r.block; });
+        if (it == out.end()) it = out.insert(out.end(), Effect::Impl::BlockReads{r.block, {}});
+        it->ranges.push_back({r.offset, r.offset + r.size});
+    }
+    for (auto& b : out) {
+        std::sort(b.ranges.begin(), b.ranges.end());
+        std::vector<std::pair<int, int>> merged;
+        for (const auto& r : b.ranges) {
+            if (!merged.empty() && r.first <= merged.back().second) merged.back().second = std::max(merged.back().second, r.second);
+            else merged.push_back(r);
+        }
+        b.ranges = std::move(merged);
+    }
+    return out;
 }
 
 }  // namespace
@@ -82,14 +135,43 @@ std::string Effect::Impl::hlslTypeName(const xlate::Parameter& p) {
 
 Effect::Effect(fxport::GraphicsDevice& device, const std::string& fxPath, const EffectOptions& options)
     : GraphicsResource(device, "Effect"), impl_(std::make_unique<Impl>()) {
-    impl_->compiled = compileFile(fxPath, options);
+    Impl& e = *impl_;
+    e.fromSource = true;
+    e.sourcePath = fxPath;
+    e.options = options;
+    auto started = Clock::now();
+    e.source = readEffectSource(fxPath);
+    if (options.precompile) {
+        e.outline = compileSource(e, {});
+    } else {
+        xlate::CompileOptions o = compileOptions(options, {});
+        o.skipShaders = true;
+        e.outline = xlate::compileEffectSource(e.source, fxPath, o);
+    }
+    e.loadMilliseconds = millisecondsSince(started);
     build();
+    if (options.precompile) linkWhole(std::make_shared<const xlate::CompiledEffect>(e.outline));
 }
 
 Effect::Effect(fxport::GraphicsDevice& device, const xlate::CompiledEffect& compiled)
     : GraphicsResource(device, "Effect"), impl_(std::make_unique<Impl>()) {
-    impl_->compiled = compiled;
+    Impl& e = *impl_;
+    e.outline = compiled;
     build();
+    // Already compiled: link now (SpriteBatch's and Model's built-in effects come this way).
+    linkWhole(std::make_shared<const xlate::CompiledEffect>(compiled));
+}
+
+void Effect::linkWhole(std::shared_ptr<const xlate::CompiledEffect> whole) {
+    Impl& e = *impl_;
+    try {
+        Impl::Code& code = e.addCode(std::move(whole), device().impl());
+        e.whole = &code;
+        for (std::size_t t = 0; t < e.techniqueCode.size(); ++t) e.techniqueCode[t] = {&code, int(t)};
+    } catch (...) {
+        releaseGpuObjects();  // the constructor fails: leave nothing registered with the device
+        throw;
+    }
 }
 
 std::unique_ptr<Effect> Effect::FromCompiledFile(fxport::GraphicsDevice& device, const std::string& path) {
@@ -98,45 +180,202 @@ std::unique_ptr<Effect> Effect::FromCompiledFile(fxport::GraphicsDevice& device,
 
 Effect::~Effect() { disposeFromDestructor(); }
 
-const xlate::CompiledEffect& Effect::compiled() const { return impl_->compiled; }
-const std::string& Effect::sourcePath() const { return impl_->compiled.sourcePath; }
+const xlate::CompiledEffect& Effect::compiled() const {
+    if (!impl_->whole) const_cast<Effect*>(this)->Precompile();
+    return *impl_->whole->effect;
+}
+
+void Effect::Precompile() {
+    if (IsDisposed()) throw InvalidOperation("Effect '" + impl_->displayName + "'.Precompile(): the effect was disposed");
+    impl_->compileAll(device().impl());
+}
+
+const std::string& Effect::sourcePath() const { return impl_->outline.sourcePath; }
+
+EffectStatistics Effect::statistics() const {
+    const Impl& e = *impl_;
+    EffectStatistics s;
+    s.techniqueCount = int(e.techniqueCode.size());
+    for (std::size_t t = 0; t < e.techniqueCode.size(); ++t)
+        if (e.techniqueCode[t].code) s.compiledTechniques.push_back(e.outline.techniques[t].name);
+    s.loadMilliseconds = e.loadMilliseconds;
+    s.compileMilliseconds = e.compileMilliseconds;
+    s.linkMilliseconds = e.linkMilliseconds;
+    s.constantBytesUploaded = e.constantBytesUploaded;
+    s.constantUploads = e.constantUploads;
+    return s;
+}
+
+bool EffectTechnique::IsCompiled() const {
+    return effect_ && effect_->impl().techniqueCode[std::size_t(index_)].code != nullptr;
+}
+
+// --- layouts
+
+void Effect::Impl::layOutProvisionally() {
+    // Each block's numeric parameters packed one after another, row-major, 4 bytes a scalar: a
+    // place to keep values until a compiled shader says where they really go.
+    std::vector<int> sizes(blocks.size(), 0);
+    for (xlate::Parameter& p : outline.parameters) {
+        bool numeric = p.parameterClass == xlate::ParameterClass::Scalar || p.parameterClass == xlate::ParameterClass::Vector ||
+                       p.parameterClass == xlate::ParameterClass::Matrix;
+        if (p.isStatic || !numeric || p.block < 0 || std::size_t(p.block) >= blocks.size()) continue;
+        if (!blocks[std::size_t(p.block)].provisional) continue;
+        int& at = sizes[std::size_t(p.block)];
+        p.rowMajor = true;
+        p.matrixStride = p.columns * 4;
+        p.arrayStride = p.rows * p.columns * 4;
+        p.size = p.arrayStride * std::max(1, p.elements);
+        p.offset = at;
+        at += p.size;
+    }
+    for (std::size_t b = 0; b < blocks.size(); ++b)
+        if (blocks[b].provisional) blocks[b].shadow.assign(std::size_t(sizes[b]), 0);
+}
+
+void Effect::Impl::adoptLayouts(const xlate::CompiledEffect& code, GraphicsDevice::Impl& device) {
+    if (code.parameters.size() != outline.parameters.size() || code.uniformBlocks.size() != blocks.size())
+        throw InvalidOperation("Effect '" + displayName + "': a technique compiled with " + std::to_string(code.parameters.size()) +
+                               " parameters and " + std::to_string(code.uniformBlocks.size()) + " uniform blocks, the effect loaded with " +
+                               std::to_string(outline.parameters.size()) + " and " + std::to_string(blocks.size()) + " (internal error)");
+    for (std::size_t b = 0; b < blocks.size(); ++b) {
+        const xlate::UniformBlock& real = code.uniformBlocks[b];
+        Block& block = blocks[b];
+        if (real.size <= 0) continue;  // no shader of this code reads the block: nothing learnt
+        if (!block.provisional) {
+            if (int(block.shadow.size()) != real.size)
+                throw InvalidOperation("Effect '" + displayName + "': uniform block '" + real.name + "' has " + std::to_string(real.size) +
+                                       " bytes in one technique and " + std::to_string(block.shadow.size()) + " in another (internal error)");
+            continue;
+        }
+        // Move each value from its provisional place to the real one.
+        std::vector<std::uint8_t> shadow(std::size_t(real.size), 0);
+        for (std::size_t i = 0; i < outline.parameters.size(); ++i) {
+            xlate::Parameter& p = outline.parameters[i];
+            const xlate::Parameter& r = code.parameters[i];
+            if (p.name != r.name)
+                throw InvalidOperation("Effect '" + displayName + "': parameter " + std::to_string(i) + " is '" + r.name +
+                                       "' in a compiled technique but '" + p.name + "' in the effect (internal error)");
+            if (r.block != int(b)) continue;
+            if (p.offset >= 0 && r.offset >= 0)
+                for (int el = 0; el < std::max(1, p.elements); ++el)
+                    for (int row = 0; row < p.rows; ++row)
+                        for (int col = 0; col < p.columns; ++col) {
+                            int from = byteOffset(p, el, row, col), to = byteOffset(r, el, row, col);
+                            if (from < 0 || std::size_t(from) + 4 > block.shadow.size()) continue;
+                            if (to < 0 || std::size_t(to) + 4 > shadow.size()) continue;  // trimmed by the optimiser
+                            std::memcpy(&shadow[std::size_t(to)], &block.shadow[std::size_t(from)], 4);
+                        }
+            p.offset = r.offset;
+            p.size = r.size;
+            p.matrixStride = r.matrixStride;
+            p.arrayStride = r.arrayStride;
+            p.rowMajor = r.rowMajor;
+        }
+        block.shadow = std::move(shadow);
+        block.provisional = false;
+        block.buffer = device.createBuffer();
+        glNamedBufferStorage(block.buffer, real.size, nullptr, GL_DYNAMIC_STORAGE_BIT);
+        block.dirtyBegin = 0;
+        block.dirtyEnd = real.size;
+    }
+    for (std::size_t b = 0; b < blocks.size(); ++b)
+        if (!blocks[b].provisional) outline.uniformBlocks[b].size = int(blocks[b].shadow.size());
+}
+
+// --- compiling
+
+Effect::Impl::Code& Effect::Impl::addCode(std::shared_ptr<const xlate::CompiledEffect> effect, GraphicsDevice::Impl& device) {
+    adoptLayouts(*effect, device);
+    auto code = std::make_unique<Code>();
+    code->effect = std::move(effect);
+    auto started = Clock::now();
+    try {
+        for (const xlate::CompiledShader& shader : code->effect->shaders) {
+            ShaderProgram p;
+            p.stage = stageIndex(shader.profile.stage);
+            p.shader = &shader;
+            p.label = displayName + ": " + shader.entryPoint + " (" + shader.profile.name + ")";
+            p.program = device.createProgram(glStage(shader.profile.stage), shader.glsl, p.label);
+            code->programs.push_back(p);
+            code->reads.push_back(readsOf(shader));
+        }
+    } catch (...) {
+        for (ShaderProgram& p : code->programs) device.deleteProgram(p.program);
+        throw;
+    }
+    linkMilliseconds += millisecondsSince(started);
+    codes.push_back(std::move(code));
+    return *codes.back();
+}
+
+const Effect::Impl::TechniqueCode& Effect::Impl::ensureCompiled(int technique, GraphicsDevice::Impl& device) {
+    TechniqueCode& tc = techniqueCode[std::size_t(technique)];
+    if (tc.code) return tc;
+    const std::string& name = outline.techniques[std::size_t(technique)].name;
+    auto started = Clock::now();
+    auto effect = std::make_shared<const xlate::CompiledEffect>(compileSource(*this, {name}));
+    compileMilliseconds += millisecondsSince(started);
+    // The n-th technique of this name in the outline is the n-th in the code (names may repeat).
+    int nth = 0;
+    for (int t = 0; t < technique; ++t) nth += outline.techniques[std::size_t(t)].name == name;
+    int index = -1;
+    for (std::size_t t = 0; t < effect->techniques.size() && index < 0; ++t)
+        if (effect->techniques[t].name == name && nth-- == 0) index = int(t);
+    if (index < 0)
+        throw InvalidOperation("Effect '" + displayName + "': compiling technique '" + name + "' produced no such technique (internal error)");
+    Code& code = addCode(std::move(effect), device);
+    tc = {&code, index};
+    return tc;
+}
+
+void Effect::Impl::compileAll(GraphicsDevice::Impl& device) {
+    if (whole) return;
+    bool missing = false;
+    for (const TechniqueCode& tc : techniqueCode) missing |= tc.code == nullptr;
+    if (!missing && codes.size() == 1) {
+        whole = codes.front().get();
+        return;
+    }
+    auto started = Clock::now();
+    auto effect = std::make_shared<const xlate::CompiledEffect>(compileSource(*this, options.techniques));
+    compileMilliseconds += millisecondsSince(started);
+    if (effect->techniques.size() != techniqueCode.size())
+        throw InvalidOperation("Effect '" + displayName + "': the whole effect compiled to " + std::to_string(effect->techniques.size()) +
+                               " techniques, it loaded with " + std::to_string(techniqueCode.size()) + " (internal error)");
+    Code& code = addCode(std::move(effect), device);
+    whole = &code;
+    for (std::size_t t = 0; t < techniqueCode.size(); ++t)
+        if (!techniqueCode[t].code) techniqueCode[t] = {&code, int(t)};
+}
+
+void Effect::Impl::releasePrograms(GraphicsDevice::Impl& device) {
+    for (auto& code : codes)
+        for (ShaderProgram& p : code->programs) {
+            // The device may still point at this effect's ShaderProgram records (the GL program
+            // itself can outlive them when another effect shares it).
+            for (const ShaderProgram*& bound : device.shaders)
+                if (bound == &p) bound = nullptr;
+            device.deleteProgram(p.program);
+        }
+}
 
 void Effect::build() {
     Impl& e = *impl_;
     GraphicsDevice::Impl& d = device().impl();
-    const xlate::CompiledEffect& c = e.compiled;
+    const xlate::CompiledEffect& c = e.outline;
     e.displayName = std::filesystem::path(c.sourcePath).filename().string();
     if (e.displayName.empty()) e.displayName = "<effect>";
     Name = e.displayName;
 
-    // Uniform blocks with their CPU shadows.
+    // Uniform blocks: provisional shadows until compiled shaders give their layouts (an effect
+    // built from compiled code adopts them right after this).
     for (const xlate::UniformBlock& ub : c.uniformBlocks) {
         Impl::Block block;
         block.binding = ub.binding;
-        block.shadow.assign(std::size_t(std::max(ub.size, 0)), 0);
-        if (ub.size > 0) {
-            block.buffer = d.createBuffer();
-            glNamedBufferStorage(block.buffer, ub.size, nullptr, GL_DYNAMIC_STORAGE_BIT);
-            block.dirtyBegin = 0;
-            block.dirtyEnd = ub.size;
-        }
         e.blocks.push_back(std::move(block));
     }
-
-    // Programs (the device moves each uniform block to its stage's range of binding points).
-    try {
-        for (const xlate::CompiledShader& shader : c.shaders) {
-            ShaderProgram p;
-            p.stage = stageIndex(shader.profile.stage);
-            p.shader = &shader;
-            p.label = e.displayName + ": " + shader.entryPoint + " (" + shader.profile.name + ")";
-            p.program = d.createProgram(glStage(shader.profile.stage), shader.glsl, p.label);
-            e.programs.push_back(p);
-        }
-    } catch (...) {
-        releaseGpuObjects();
-        throw;
-    }
+    e.layOutProvisionally();
 
     // Parameters and their defaults.
     Parameters.effect_ = this;
@@ -169,8 +408,11 @@ void Effect::build() {
 
     // Techniques and passes.
     Techniques.owner_ = e.displayName;
+    e.techniqueCode.assign(c.techniques.size(), {});
     for (std::size_t t = 0; t < c.techniques.size(); ++t) {
         auto technique = std::make_unique<EffectTechnique>();
+        technique->effect_ = this;
+        technique->index_ = int(t);
         technique->name_ = c.techniques[t].name;
         technique->annotations_ = annotationsOf(c.techniques[t].annotations);
         technique->Passes.owner_ = e.displayName + " technique '" + technique->name_ + "'";
@@ -187,13 +429,7 @@ void Effect::build() {
 
 void Effect::releaseGpuObjects() {
     GraphicsDevice::Impl& d = device().impl();
-    for (ShaderProgram& p : impl_->programs) {
-        // The device may still point at this effect's ShaderProgram records (the GL program
-        // itself can outlive them when another effect shares it).
-        for (const ShaderProgram*& bound : d.shaders)
-            if (bound == &p) bound = nullptr;
-        d.deleteProgram(p.program);
-    }
+    impl_->releasePrograms(d);
     for (Impl::Block& b : impl_->blocks) d.deleteBuffer(b.buffer);
     d.effects.erase(std::remove(d.effects.begin(), d.effects.end(), this), d.effects.end());
 }

@@ -1,10 +1,22 @@
-// INTERNAL: an Effect's GL side: one separable program per compiled shader, one uniform buffer per
-// uniform block with a CPU shadow and a dirty byte range, and the texture each texture parameter
-// holds.
+// INTERNAL: an Effect's GL side.
+//
+// An effect loads as an outline (xlate's CompileOptions::skipShaders: techniques, passes,
+// parameters, no shader code); a technique's shaders are cross-compiled and linked the first time
+// one of its passes is applied (or by Precompile()). Each compile yields a Code: its own
+// CompiledEffect (filtered to the techniques it was asked for), a separable program per shader and,
+// per program, the byte ranges of each uniform block the shader reads.
+//
+// Constants live in one CPU shadow per uniform block with a dirty byte range. Until a compiled
+// shader declares a block, its layout is unknown; the shadow then uses a provisional packed layout
+// (each parameter row-major, tightly packed) so that SetValue/GetValue work before any Apply. When a
+// Code brings the real layout, adoptLayouts() moves every value to its real place and creates the
+// GL buffer. Apply() uploads, for each shader it binds, only the dirty bytes that shader reads; the
+// rest stays dirty for a later pass.
 #pragma once
 
 #include <climits>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -16,20 +28,55 @@
 namespace fxport {
 
 struct Effect::Impl {
-    xlate::CompiledEffect compiled;
+    // The outline: techniques, passes and parameters; parameter offsets are the block layouts known
+    // so far (provisional for a block no compiled shader declared yet).
+    xlate::CompiledEffect outline;
     std::string displayName;  // file name for messages: "GBuffer.fx"
 
+    // Where technique compiles come from: the effect's source (kept from load, so a technique
+    // compiled later matches the outline even if the file changes), or nothing when the effect
+    // was built from an already compiled effect.
+    bool fromSource = false;
+    std::string source;
+    std::string sourcePath;
+    EffectOptions options;
+
     struct Block {
-        GLuint buffer = 0;
+        GLuint buffer = 0;  // 0 while the layout is provisional
         int binding = 0;
+        bool provisional = true;
         std::vector<std::uint8_t> shadow;
         int dirtyBegin = INT_MAX;
         int dirtyEnd = 0;
     };
     std::vector<Block> blocks;
-    std::vector<Texture*> textures;           // per parameter (objects only)
-    std::vector<ShaderProgram> programs;      // per compiled shader
+    std::vector<Texture*> textures;  // per parameter (objects only)
     std::unordered_map<std::string, int> parameterIndex;
+
+    // Byte ranges [begin, end) of one block that a shader reads, sorted, merged.
+    struct BlockReads {
+        int block = 0;
+        std::vector<std::pair<int, int>> ranges;
+    };
+    struct Code {
+        std::shared_ptr<const xlate::CompiledEffect> effect;
+        std::vector<ShaderProgram> programs;               // per effect->shaders
+        std::vector<std::vector<BlockReads>> reads;        // per effect->shaders
+    };
+    std::vector<std::unique_ptr<Code>> codes;  // stable addresses: the device points at programs
+    struct TechniqueCode {
+        Code* code = nullptr;  // nullptr until compiled
+        int index = -1;        // the technique's index in code->effect->techniques
+    };
+    std::vector<TechniqueCode> techniqueCode;  // per outline technique
+    const Code* whole = nullptr;  // a Code holding every technique (Precompile/compiled())
+
+    // Introspection (Effect::statistics()).
+    double loadMilliseconds = 0;
+    double compileMilliseconds = 0;
+    double linkMilliseconds = 0;
+    std::uint64_t constantBytesUploaded = 0;
+    std::uint64_t constantUploads = 0;
 
     void forgetTexture(const Texture* texture) {
         for (Texture*& t : textures)
@@ -40,14 +87,22 @@ struct Effect::Impl {
         b.dirtyBegin = std::min(b.dirtyBegin, begin);
         b.dirtyEnd = std::max(b.dirtyEnd, end);
     }
-    void uploadDirty() {
-        for (Block& b : blocks) {
-            if (b.dirtyEnd <= b.dirtyBegin) continue;
-            glNamedBufferSubData(b.buffer, b.dirtyBegin, b.dirtyEnd - b.dirtyBegin, b.shadow.data() + b.dirtyBegin);
-            b.dirtyBegin = INT_MAX;
-            b.dirtyEnd = 0;
-        }
-    }
+    // Uploads the dirty bytes of each block that `reads` covers; what it does not cover stays dirty
+    // (as one range: the hull of what is left, so some bytes may be sent twice, never too few).
+    void uploadRead(const std::vector<BlockReads>& reads);
+
+    // Block layouts: start provisional, then take the real ones from a compiled effect.
+    void layOutProvisionally();
+    void adoptLayouts(const xlate::CompiledEffect& code, GraphicsDevice::Impl& device);
+
+    // Compiles (if needed) the technique `technique` of the outline and returns its code.
+    const TechniqueCode& ensureCompiled(int technique, GraphicsDevice::Impl& device);
+    // Compiles every technique not compiled yet, in one xlate call.
+    void compileAll(GraphicsDevice::Impl& device);
+    // Makes programs and read ranges for a compiled effect and adopts its layouts.
+    Code& addCode(std::shared_ptr<const xlate::CompiledEffect> effect, GraphicsDevice::Impl& device);
+    void releasePrograms(GraphicsDevice::Impl& device);
+
     // "float4x4", "float3[8]", "texture2D", for messages.
     static std::string hlslTypeName(const xlate::Parameter& p);
     // Byte offset in its block of element `element`, row `row`, column `column` (HLSL indexing).

@@ -120,7 +120,7 @@ struct Access {
 
 Access access(Effect* effect, int index) {
     Effect::Impl& e = effect->impl();
-    const xlate::Parameter& p = e.compiled.parameters[std::size_t(index)];
+    const xlate::Parameter& p = e.outline.parameters[std::size_t(index)];
     return Access{e, p};
 }
 
@@ -133,15 +133,15 @@ bool isTextureType(ParameterType t) {
 
 }  // namespace
 
-const std::string& EffectParameter::Name() const { return effect_->impl().compiled.parameters[std::size_t(index_)].name; }
+const std::string& EffectParameter::Name() const { return effect_->impl().outline.parameters[std::size_t(index_)].name; }
 const std::string& EffectParameter::Semantic() const {
-    return effect_->impl().compiled.parameters[std::size_t(index_)].semantic;
+    return effect_->impl().outline.parameters[std::size_t(index_)].semantic;
 }
 EffectParameterClass EffectParameter::ParameterClass() const {
-    return EffectParameterClass(effect_->impl().compiled.parameters[std::size_t(index_)].parameterClass);
+    return EffectParameterClass(effect_->impl().outline.parameters[std::size_t(index_)].parameterClass);
 }
 EffectParameterType EffectParameter::ParameterType() const {
-    switch (effect_->impl().compiled.parameters[std::size_t(index_)].type) {
+    switch (effect_->impl().outline.parameters[std::size_t(index_)].type) {
     case xlate::ParameterType::Void: return EffectParameterType::Void;
     case xlate::ParameterType::Bool: return EffectParameterType::Bool;
     case xlate::ParameterType::Int: case xlate::ParameterType::UInt: return EffectParameterType::Int32;
@@ -155,14 +155,14 @@ EffectParameterType EffectParameter::ParameterType() const {
     default: return EffectParameterType::Sampler;
     }
 }
-int EffectParameter::RowCount() const { return effect_->impl().compiled.parameters[std::size_t(index_)].rows; }
-int EffectParameter::ColumnCount() const { return effect_->impl().compiled.parameters[std::size_t(index_)].columns; }
-int EffectParameter::ElementCount() const { return effect_->impl().compiled.parameters[std::size_t(index_)].elements; }
+int EffectParameter::RowCount() const { return effect_->impl().outline.parameters[std::size_t(index_)].rows; }
+int EffectParameter::ColumnCount() const { return effect_->impl().outline.parameters[std::size_t(index_)].columns; }
+int EffectParameter::ElementCount() const { return effect_->impl().outline.parameters[std::size_t(index_)].elements; }
 const std::vector<EffectAnnotation>& EffectParameter::Annotations() const {
     // Built on first use; parameters rarely have annotations.
     static thread_local std::vector<EffectAnnotation> out;
     out.clear();
-    for (const xlate::Annotation& a : effect_->impl().compiled.parameters[std::size_t(index_)].annotations)
+    for (const xlate::Annotation& a : effect_->impl().outline.parameters[std::size_t(index_)].annotations)
         out.push_back({a.name, a.type, a.value});
     return out;
 }

@@ -1,4 +1,5 @@
 // EffectPass::Apply: what the D3D effect framework does at BeginPass/CommitChanges.
+#include <algorithm>
 #include <cstring>
 #include <iostream>
 
@@ -83,7 +84,7 @@ CullMode toCull(double v) {
 // The first number a parameter holds (for `AlphaRef = <AlphaReference>;` style states and shader
 // selectors).
 double parameterNumber(const Effect::Impl& e, int index, int element) {
-    const xlate::Parameter& p = e.compiled.parameters[std::size_t(index)];
+    const xlate::Parameter& p = e.outline.parameters[std::size_t(index)];
     if (p.offset < 0) return p.defaultValue.empty() ? 0.0 : p.defaultValue[0];
     const std::vector<std::uint8_t>& shadow = e.blocks[std::size_t(p.block)].shadow;
     int at = Effect::Impl::byteOffset(p, element, 0, 0);
@@ -239,7 +240,7 @@ SamplerState mergeSampler(SamplerState s, const xlate::SamplerStateDesc& e) {
 }
 
 // Evaluates `VertexShader = (VSArray[VSIndices[ShaderIndex]])` style selectors.
-int chooseShader(const Effect::Impl& e, const xlate::ShaderChoice& choice, const std::string& where) {
+int chooseShader(const Effect::Impl& e, const xlate::ShaderChoice& choice, const std::string& technique, const std::string& pass) {
     if (choice.selector.empty()) return choice.shaders[0];
     std::vector<int> stack;
     for (const xlate::SelectorOp& op : choice.selector) {
@@ -256,28 +257,51 @@ int chooseShader(const Effect::Impl& e, const xlate::ShaderChoice& choice, const
     }
     int pick = stack.empty() ? 0 : stack.back();
     if (pick < 0 || pick >= int(choice.shaders.size()))
-        throw InvalidOperation(where + ": the shader-array index evaluates to " + std::to_string(pick) +
+        throw InvalidOperation(e.displayName + " technique '" + technique + "' pass '" + pass + "': the shader-array index evaluates to " + std::to_string(pick) +
                                ", outside 0.." + std::to_string(choice.shaders.size() - 1));
     return choice.shaders[std::size_t(pick)];
 }
 
 }  // namespace
 
+void Effect::Impl::uploadRead(const std::vector<BlockReads>& reads) {
+    for (const BlockReads& r : reads) {
+        Block& b = blocks[std::size_t(r.block)];
+        if (b.dirtyEnd <= b.dirtyBegin || !b.buffer) continue;
+        // Walk the dirty range: send what a read range covers, remember the hull of the rest.
+        int leftBegin = INT_MAX, leftEnd = 0, cursor = b.dirtyBegin;
+        for (const auto& [begin, end] : r.ranges) {
+            int lo = std::max(begin, cursor), hi = std::min(end, b.dirtyEnd);
+            if (lo >= hi) continue;
+            if (lo > cursor) leftBegin = std::min(leftBegin, cursor), leftEnd = lo;
+            glNamedBufferSubData(b.buffer, lo, hi - lo, b.shadow.data() + lo);
+            constantBytesUploaded += std::uint64_t(hi - lo);
+            ++constantUploads;
+            cursor = hi;
+        }
+        if (cursor < b.dirtyEnd) leftBegin = std::min(leftBegin, cursor), leftEnd = b.dirtyEnd;
+        b.dirtyBegin = leftBegin;
+        b.dirtyEnd = leftEnd;
+    }
+}
+
 void EffectPass::Apply() {
     if (effect_->IsDisposed()) throw InvalidOperation("EffectPass '" + name_ + "'.Apply(): the effect was disposed");
     Effect::Impl& e = effect_->impl();
     GraphicsDevice& device = effect_->device();
     GraphicsDevice::Impl& d = device.impl();
-    const xlate::Technique& technique = e.compiled.techniques[std::size_t(technique_)];
+    // The first Apply of a technique compiles it (xlate, cached) and links its programs.
+    const Effect::Impl::TechniqueCode& code = e.ensureCompiled(technique_, d);
+    const xlate::CompiledEffect& compiled = *code.code->effect;
+    const xlate::Technique& technique = compiled.techniques[std::size_t(code.index)];
     const xlate::Pass& pass = technique.passes[std::size_t(pass_)];
-    std::string where = e.displayName + " technique '" + technique.name + "' pass '" + pass.name + "'";
     if (!pass.valid) {
+        std::string where = e.displayName + " technique '" + technique.name + "' pass '" + pass.name + "'";
         std::string why;
-        for (const xlate::Diagnostic& diag : e.compiled.diagnostics) why += "\n  " + diag.format();
+        for (const xlate::Diagnostic& diag : compiled.diagnostics) why += "\n  " + diag.format();
         throw InvalidOperation(where + " cannot run: the compiler rejected it" + why);
     }
 
-    e.uploadDirty();
     const xlate::ShaderChoice* choices[kStageCount] = {&pass.vertexShader, &pass.pixelShader, &pass.geometryShader};
     for (int stage = 0; stage < kStageCount; ++stage) {
         const xlate::ShaderChoice& choice = *choices[stage];
@@ -287,10 +311,17 @@ void EffectPass::Apply() {
             if (stage == 2 && !pass.vertexShader.shaders.empty()) d.shaders[2] = nullptr;
             continue;
         }
-        const ShaderProgram& program = e.programs[std::size_t(chooseShader(e, choice, where))];
+        std::size_t shader = std::size_t(chooseShader(e, choice, technique.name, pass.name));
+        const ShaderProgram& program = code.code->programs[shader];
         d.shaders[std::size_t(stage)] = &program;
-        for (const Effect::Impl::Block& block : e.blocks)
+        // Only the blocks this shader reads, and of those only the bytes it reads; changes to
+        // other constants stay dirty until a shader that reads them is applied.
+        const std::vector<Effect::Impl::BlockReads>& reads = code.code->reads[shader];
+        e.uploadRead(reads);
+        for (const Effect::Impl::BlockReads& r : reads) {
+            const Effect::Impl::Block& block = e.blocks[std::size_t(r.block)];
             if (block.buffer) d.wantedUniformBuffers[std::size_t(uniformBindingFor(stage, block.binding))] = block.buffer;
+        }
         for (const xlate::SamplerBinding& sampler : program.shader->samplers) {
             if (sampler.unit < 0 || sampler.unit >= kMaxTextureSlots) continue;
             if (!sampler.textureParameter.empty()) {

@@ -6,9 +6,13 @@
 //   gbuffer.CurrentTechnique->Passes[0].Apply();               // program, constants, textures, states
 //   device.DrawIndexedPrimitives(...);
 //
+// Loading an effect parses it (techniques, passes, parameters: all usable at once); a technique's
+// shaders are cross-compiled and linked the first time one of its passes is applied, or all at once
+// by Precompile() / EffectOptions::precompile for hosts that want no compile during a frame.
+//
 // Apply() binds the pass's shaders (a stage the pass does not assign keeps what was bound, as on
 // D3D9: a pixel-shader-only pass runs with SpriteBatch's vertex shader), uploads the constants that
-// changed since the last Apply, sets Textures[unit] from texture parameters and merges the effect's
+// changed since the last Apply and that the pass's shaders read (the others stay pending), sets Textures[unit] from texture parameters and merges the effect's
 // sampler_state over SamplerStates[unit], and applies the pass's render states to the device's
 // BlendState/DepthStencilState/RasterizerState. Device states set after Apply() win, as in XNA.
 #pragma once
@@ -163,9 +167,14 @@ public:
     const std::string& Name() const { return name_; }
     const std::vector<EffectAnnotation>& Annotations() const { return annotations_; }
     EffectPassCollection Passes;
+    // Whether this technique's shaders have been compiled (by an Apply of one of its passes, or by
+    // Precompile). fxport addition.
+    bool IsCompiled() const;
 
 private:
     friend class Effect;
+    Effect* effect_ = nullptr;
+    int index_ = 0;
     std::string name_;
     std::vector<EffectAnnotation> annotations_;
 };
@@ -189,6 +198,20 @@ struct EffectOptions {
     std::vector<std::string> techniques;                         // compile only these; empty = all
     bool useCache = true;                                        // xlate's content-hash cache
     std::string cacheDir;                                        // empty = xlate's default
+    // Compile every technique while loading, instead of each at the first Apply of one of its
+    // passes (no compile hitch later; load takes longer).
+    bool precompile = false;
+};
+
+// What an effect has compiled and uploaded so far (GL-free; for tools and tests).
+struct EffectStatistics {
+    std::vector<std::string> compiledTechniques;  // in the effect's order
+    int techniqueCount = 0;
+    double loadMilliseconds = 0;     // xlate at load: the outline (or the whole effect if precompiled)
+    double compileMilliseconds = 0;  // xlate for techniques compiled after load (cache hits included)
+    double linkMilliseconds = 0;     // making GL programs of compiled shaders
+    std::uint64_t constantBytesUploaded = 0;  // uniform-buffer bytes sent by Apply(), in total
+    std::uint64_t constantUploads = 0;        // uniform-buffer updates (buffer sub-data calls)
 };
 
 class Effect : public GraphicsResource {
@@ -205,7 +228,11 @@ public:
     EffectTechniqueCollection Techniques;
     EffectTechnique* CurrentTechnique = nullptr;
 
+    // The whole effect compiled (compiles the techniques not compiled yet).
     const xlate::CompiledEffect& compiled() const;
+    // Compiles and links every technique not compiled yet.
+    void Precompile();
+    EffectStatistics statistics() const;
     // The source path (for messages).
     const std::string& sourcePath() const;
 
@@ -217,6 +244,7 @@ protected:
 
 private:
     void build();
+    void linkWhole(std::shared_ptr<const xlate::CompiledEffect> whole);
     std::unique_ptr<Impl> impl_;
 };
 
