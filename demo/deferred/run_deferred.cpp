@@ -22,6 +22,11 @@ int RunDeferred(const RunOptions& options) {
     game.demo.sampleRadius = options.sampleRadius;
     game.demo.distanceScale = options.distanceScale;
     game.demo.debugViews = options.debugViews;
+    game.demo.gbufferFormats = options.gbufferFormats;
+    game.demo.spotShadowMapSize = options.spotShadowMapSize;
+    game.demo.pointShadowMapSize = options.pointShadowMapSize;
+    game.demo.ssao = options.ssao;
+    game.demo.ssaoHalfResolution = options.ssaoHalfResolution;
 
     // The timer needs the device, which Start() makes: attach it after Start, before the first frame.
     game.Start();
@@ -33,7 +38,7 @@ int RunDeferred(const RunOptions& options) {
     while (!keep('s') && !lights.getSpotLights().empty()) lights.RemoveLight(lights.getSpotLights()[0].get());
     while (!keep('p') && !lights.getPointLights().empty()) lights.RemoveLight(lights.getPointLights()[0].get());
     game.getDeferredRenderer().setGpuTimer(timer.get());
-    game.getSSAO().setGpuTimer(timer.get());
+    if (game.hasSSAO()) game.getSSAO().setGpuTimer(timer.get());
     game.demo.gpuTimer = timer.get();
     const bool sync = options.syncPasses.value_or(options.platform == "osmesa");
     PassTimer::syncDevice = sync ? game.GraphicsDevice : nullptr;
