@@ -36,6 +36,7 @@ int usage(const char* message) {
                  "                       [--gbuffer tutorial|color8|float32] [--spot-shadow N] [--point-shadow N]\n"
                  "                       [--no-ssao] [--ssao-half]\n");
     for (const auto& [name, program] : fxdemo::programs()) std::fprintf(stderr, "       %s\n", program.usage.c_str());
+    std::fprintf(stderr, "every program also takes --check-finite: after each pass, stop at the first NaN/Inf in a target\n");
     return 2;
 }
 
@@ -62,7 +63,14 @@ int main(int argc, char** argv) {
     const std::string program = argv[1];
     if (program != "deferred") {
         auto found = fxdemo::programs().find(program);
-        if (found != fxdemo::programs().end()) return found->second.main(argc - 1, argv + 1);
+        if (found != fxdemo::programs().end()) {
+            try {
+                return found->second.main(argc - 1, argv + 1);
+            } catch (const std::exception& e) {  // e.g. --check-finite's NonFiniteError
+                std::fprintf(stderr, "fxdemo %s: %s\n", program.c_str(), e.what());
+                return 1;
+            }
+        }
         std::string known = "deferred";
         for (const auto& [name, registered] : fxdemo::programs()) known += ", " + name;
         return usage(("unknown program '" + program + "' (known: " + known + ")").c_str());
@@ -134,6 +142,8 @@ int main(int argc, char** argv) {
             options.ssao = false;
         } else if (arg == "--ssao-half") {
             options.ssaoHalfResolution = true;
+        } else if (arg == "--check-finite") {
+            options.checkFinite = true;
         } else if (arg == "--targets") {
             options.fullSizeImages = true;
         } else if (arg == "--content") {

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "common/finite_check.h"
 #include "common/frame_loop.h"
 #include "deferred/debug_sheet.h"
 #include "deferred/game1.h"
@@ -42,6 +43,7 @@ int RunDeferred(const RunOptions& options) {
     game.demo.gpuTimer = timer.get();
     const bool sync = options.syncPasses.value_or(options.platform == "osmesa");
     PassTimer::syncDevice = sync ? game.GraphicsDevice : nullptr;
+    fxport::demo::FiniteCheckScope finite(game.GraphicsDevice, options.checkFinite);
 
     std::printf("fxdemo deferred: %dx%d on %s (%s)\n", options.width, options.height, options.platform.c_str(),
                 game.GraphicsDevice->rendererName().c_str());
