@@ -9,6 +9,9 @@
 // intermediate target), and prints the median GPU time of each pass. --gpu: headless on the GPU
 // (EGL). --window: a GLFW window with the FreeCamera (W/A/S/D/Q/E, left mouse button to turn, Z/X
 // and C/V for SSAO, F1 without SSAO, Escape quits); images are written only with --out.
+// --gbuffer: the G-buffer's formats (tutorial: Rgba64, Rgba64, Vector2; color8: Color, Color, Single;
+// float32: Vector4 x3). --spot-shadow N (256..4096, 2048) / --point-shadow N (64..1024, 256): shadow
+// map sizes. --no-ssao: no SSAO at all; --ssao-half: SSAO and its blur at half size.
 // --targets: every debug-sheet tile also at full size in DIR/targets/. --lights: keep only some of
 // the seed's lights (d, s, p). --sync-passes (default on OSMesa): finish the device around each timed
 // pass, so that a deferring CPU rasterizer's work is counted in the right pass.
@@ -29,8 +32,11 @@ int usage(const char* message) {
     std::fprintf(stderr,
                  "usage: fxdemo deferred [--size WxH] [--frames N] [--out DIR] [--gpu] [--window]\n"
                  "                       [--camera PX,PY,PZ,TX,TY,TZ] [--ssao RADIUS,SCALE] [--lights dsp]\n"
-                 "                       [--no-debug-views] [--targets] [--[no-]sync-passes] [--content DIR] [--hlsl DIR]\n");
+                 "                       [--no-debug-views] [--targets] [--[no-]sync-passes] [--content DIR] [--hlsl DIR]\n"
+                 "                       [--gbuffer tutorial|color8|float32] [--spot-shadow N] [--point-shadow N]\n"
+                 "                       [--no-ssao] [--ssao-half]\n");
     for (const auto& [name, program] : fxdemo::programs()) std::fprintf(stderr, "       %s\n", program.usage.c_str());
+    std::fprintf(stderr, "every program also takes --check-finite: after each pass, stop at the first NaN/Inf in a target\n");
     return 2;
 }
 
@@ -57,7 +63,14 @@ int main(int argc, char** argv) {
     const std::string program = argv[1];
     if (program != "deferred") {
         auto found = fxdemo::programs().find(program);
-        if (found != fxdemo::programs().end()) return found->second.main(argc - 1, argv + 1);
+        if (found != fxdemo::programs().end()) {
+            try {
+                return found->second.main(argc - 1, argv + 1);
+            } catch (const std::exception& e) {  // e.g. --check-finite's NonFiniteError
+                std::fprintf(stderr, "fxdemo %s: %s\n", program.c_str(), e.what());
+                return 1;
+            }
+        }
         std::string known = "deferred";
         for (const auto& [name, registered] : fxdemo::programs()) known += ", " + name;
         return usage(("unknown program '" + program + "' (known: " + known + ")").c_str());
@@ -108,6 +121,29 @@ int main(int argc, char** argv) {
             options.syncPasses = true;
         } else if (arg == "--no-sync-passes") {
             options.syncPasses = false;
+        } else if (arg == "--gbuffer") {
+            using Formats = TheCansinDeferredRenderer::Game1::DemoSettings::GBufferFormats;
+            const std::string v = i + 1 < argc ? argv[++i] : "";
+            if (v == "tutorial") options.gbufferFormats = Formats::Tutorial;
+            else if (v == "color8") options.gbufferFormats = Formats::Color8;
+            else if (v == "float32") options.gbufferFormats = Formats::Float32;
+            else return usage(("--gbuffer wants tutorial, color8 or float32, not '" + v + "'").c_str());
+        } else if (arg == "--spot-shadow" || arg == "--point-shadow") {
+            const char* v = value();
+            const bool spot = arg == "--spot-shadow";
+            const int lo = spot ? 256 : 64, hi = spot ? 4096 : 1024;
+            char* end = nullptr;
+            const long n = v ? std::strtol(v, &end, 10) : 0;
+            if (!v || *end || n < lo || n > hi)
+                return usage((arg + " wants a size in " + std::to_string(lo) + ".." + std::to_string(hi) + ", not '" +
+                              (v ? v : "") + "'").c_str());
+            (spot ? options.spotShadowMapSize : options.pointShadowMapSize) = int(n);
+        } else if (arg == "--no-ssao") {
+            options.ssao = false;
+        } else if (arg == "--ssao-half") {
+            options.ssaoHalfResolution = true;
+        } else if (arg == "--check-finite") {
+            options.checkFinite = true;
         } else if (arg == "--targets") {
             options.fullSizeImages = true;
         } else if (arg == "--content") {

@@ -11,6 +11,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "fxport/graphics.h"
 #include "fxport/graphics/model.h"
@@ -38,6 +39,20 @@ public:
     // when it cannot be loaded.
     template <class T> T* Load(const std::string& assetName);
 
+    // fxport: the options every effect is compiled with (e.g. useCache = false, so that a load's
+    // time is xlate's whole compile and not a cache hit).
+    EffectOptions effectOptions;
+    // fxport: every asset loaded, in order, with the time its load took (an effect's includes xlate's
+    // compile or cache lookup). What a program actually built: fxdemo --explain and tests read it.
+    struct LoadRecord {
+        std::string assetName;
+        std::string type;  // "Effect", "Model", "Texture2D", "SpriteFont"
+        double milliseconds = 0;
+    };
+    const std::vector<LoadRecord>& loadLog() const { return loadLog_; }
+    // The loaded effect of that asset name, or nullptr when it was never loaded (Load would load it).
+    Effect* findLoadedEffect(const std::string& assetName) const;
+
     // Frees everything loaded.
     void Unload();
 
@@ -50,6 +65,7 @@ private:
     std::map<std::string, std::unique_ptr<Model>> models_;
     std::map<std::string, std::unique_ptr<Texture2D>> textures_;
     std::map<std::string, std::unique_ptr<SpriteFont>> fonts_;
+    std::vector<LoadRecord> loadLog_;
 };
 
 template <> Effect* ContentManager::Load<Effect>(const std::string& assetName);

@@ -33,6 +33,8 @@ OptionResult parseCommonOption(int argc, char** argv, int& i, CommonOptions& o, 
         o.platform = "egl";
     } else if (arg == "--window") {
         o.platform = "glfw";
+    } else if (arg == "--check-finite") {
+        o.checkFinite = true;
     } else {
         return OptionResult::NotMine;
     }

@@ -1,4 +1,5 @@
-// The options every fxdemo program shares: --size WxH, --frames N, --out DIR, --gpu, --window.
+// The options every fxdemo program shares: --size WxH, --frames N, --out DIR, --gpu, --window,
+// --check-finite (scan every pass's targets for NaN/Inf: common/finite_check.h).
 // A program's argument loop hands each argument to parseCommonOption first and handles its own
 // options only when it answers NotMine.
 #pragma once
@@ -15,6 +16,7 @@ struct CommonOptions {
     std::string outDir;              // the program's default until --out
     bool outDirGiven = false;
     std::string platform = "osmesa"; // --gpu: egl, --window: glfw
+    bool checkFinite = false;        // --check-finite
 };
 
 enum class OptionResult { Consumed, NotMine, Error };

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "deferred/game1.h"
@@ -38,13 +39,51 @@ Image fromColor(const Texture2D& texture, bool alphaAsGrey) {
     return image;
 }
 
-// Rgba64 (16-bit unorm): rgb, or alpha as grey.
-Image fromRgba64(const Texture2D& texture, bool alphaAsGrey) {
+// A G-buffer target's texels as RGBA floats, in any of the formats DemoSettings::gbufferFormats
+// chooses (Rgba64 and Color: unorm to [0,1]; Single, Vector2, Vector4: as stored, absent channels 0).
+std::vector<Vector4> texelsOf(const Texture2D& texture) {
+    const std::size_t n = std::size_t(texture.Width()) * std::size_t(texture.Height());
+    std::vector<Vector4> out(n, Vector4(0, 0, 0, 0));
+    switch (texture.Format()) {
+    case SurfaceFormat::Rgba64: {
+        std::vector<std::uint16_t> data = texture.GetData<std::uint16_t>();
+        for (std::size_t i = 0; i < n; ++i)
+            out[i] = Vector4(data[4 * i] / 65535.0f, data[4 * i + 1] / 65535.0f, data[4 * i + 2] / 65535.0f,
+                             data[4 * i + 3] / 65535.0f);
+        break;
+    }
+    case SurfaceFormat::Color: {
+        std::vector<Color> data = texture.GetData<Color>();
+        for (std::size_t i = 0; i < n; ++i) out[i] = data[i].ToVector4();
+        break;
+    }
+    case SurfaceFormat::Single: {
+        std::vector<float> data = texture.GetData<float>();
+        for (std::size_t i = 0; i < n; ++i) out[i].X = data[i];
+        break;
+    }
+    case SurfaceFormat::Vector2: {
+        std::vector<Vector2> data = texture.GetData<Vector2>();
+        for (std::size_t i = 0; i < n; ++i) out[i] = Vector4(data[i].X, data[i].Y, 0, 0);
+        break;
+    }
+    case SurfaceFormat::Vector4:
+        out = texture.GetData<Vector4>();
+        break;
+    default:
+        throw ArgumentError(std::string("WriteDebugSheet: G-buffer target '") + texture.Name + "' has format " +
+                            surfaceFormatName(texture.Format()) + ", which the sheet does not read");
+    }
+    return out;
+}
+
+// A G-buffer colour target: rgb, or alpha as grey.
+Image fromGBuffer(const Texture2D& texture, bool alphaAsGrey) {
     Image image(texture.Width(), texture.Height());
-    std::vector<std::uint16_t> data = texture.GetData<std::uint16_t>();
+    std::vector<Vector4> data = texelsOf(texture);
     for (std::size_t i = 0; i < image.pixels.size(); ++i) {
-        const std::uint16_t* t = &data[4 * i];
-        image.pixels[i] = alphaAsGrey ? grey(t[3] / 65535.0f) : Color(t[0] / 65535.0f, t[1] / 65535.0f, t[2] / 65535.0f);
+        const Vector4& t = data[i];
+        image.pixels[i] = alphaAsGrey ? grey(t.W) : Color(t.X, t.Y, t.Z);
     }
     return image;
 }
@@ -141,14 +180,14 @@ void WriteDebugSheet(Game1& game, const std::string& path, const std::string& fu
     };
 
     // Row 0: G-buffer targets 0 and 1.
-    add(0, "GBuffer0.rgb albedo", "gbuffer0_albedo.png", fromRgba64(gbuffer0, false), tileW, tileH);
-    add(0, "GBuffer0.a spec intensity", "gbuffer0_alpha.png", fromRgba64(gbuffer0, true), tileW, tileH);
-    add(0, "GBuffer1.rgb view normals", "gbuffer1_normals.png", fromRgba64(gbuffer1, false), tileW, tileH);
-    add(0, "GBuffer1.a spec power/255", "gbuffer1_alpha.png", fromRgba64(gbuffer1, true), tileW, tileH);
+    add(0, "GBuffer0.rgb albedo", "gbuffer0_albedo.png", fromGBuffer(gbuffer0, false), tileW, tileH);
+    add(0, "GBuffer0.a spec intensity", "gbuffer0_alpha.png", fromGBuffer(gbuffer0, true), tileW, tileH);
+    add(0, "GBuffer1.rgb view normals", "gbuffer1_normals.png", fromGBuffer(gbuffer1, false), tileW, tileH);
+    add(0, "GBuffer1.a spec power/255", "gbuffer1_alpha.png", fromGBuffer(gbuffer1, true), tileW, tileH);
 
     // Row 1: G-buffer depth (z/w and view z) and the light map.
     {
-        std::vector<Vector2> depth = gbuffer2.GetData<Vector2>();
+        std::vector<Vector4> depth = texelsOf(gbuffer2);
         std::vector<float> zw(depth.size()), viewDepth(depth.size());
         std::vector<bool> empty(depth.size());
         for (std::size_t i = 0; i < depth.size(); ++i) {
@@ -168,6 +207,7 @@ void WriteDebugSheet(Game1& game, const std::string& path, const std::string& fu
     // Row 2: shadow maps as distances from the light (near = bright).
     const int shadowTile = tileH, faceTile = std::min(128, (4 * tileW - shadowTile) / 6 - 8);
     for (auto& light : game.getLightManager().getSpotLights()) {
+        if (!light->getShadowMap()) continue;  // fxport: made only when drawn (SpotLight::MakeShadowMap)
         RenderTarget2D& map = *light->getShadowMap();
         std::vector<bool> empty;
         std::vector<float> distances = shadowDistances(map.GetData<float>(), empty);
@@ -178,6 +218,7 @@ void WriteDebugSheet(Game1& game, const std::string& path, const std::string& fu
         break;  // one is enough
     }
     for (auto& light : game.getLightManager().getPointLights()) {
+        if (!light->getShadowMap()) continue;  // fxport: made only when drawn (PointLight::MakeShadowMap)
         RenderTargetCube& map = *light->getShadowMap();
         const char* names[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
         const char* files[6] = {"point_shadow_px.png", "point_shadow_nx.png", "point_shadow_py.png",
@@ -196,9 +237,11 @@ void WriteDebugSheet(Game1& game, const std::string& path, const std::string& fu
     }
 
     // Row 3: the scene before SSAO, SSAO raw and blurred, the final back buffer.
-    add(3, "Scene (before SSAO)", "scene.png", fromColor(game.getScene(), false), tileW, tileH);
-    add(3, "SSAOTarget", "ssao.png", fromColor(game.getSSAO().getSSAOTarget(), false), tileW, tileH);
-    add(3, "BlurTarget", "ssao_blur.png", fromColor(game.getSSAO().getBlurTarget(), false), tileW, tileH);
+    if (game.hasSSAO()) {  // fxport: DemoSettings::ssao off makes neither the Scene target nor SSAO's
+        add(3, "Scene (before SSAO)", "scene.png", fromColor(game.getScene(), false), tileW, tileH);
+        add(3, "SSAOTarget", "ssao.png", fromColor(game.getSSAO().getSSAOTarget(), false), tileW, tileH);
+        add(3, "BlurTarget", "ssao_blur.png", fromColor(game.getSSAO().getBlurTarget(), false), tileW, tileH);
+    }
     {
         Image backBuffer(W, H);
         backBuffer.pixels = device.GetBackBufferData();

@@ -5,7 +5,9 @@
 namespace TheCansinDeferredRenderer {
 
 //Constructor
-DeferredRenderer::DeferredRenderer(GraphicsDevice& GraphicsDevice, ContentManager& Content, int Width, int Height) {
+DeferredRenderer::DeferredRenderer(GraphicsDevice& GraphicsDevice, ContentManager& Content, int Width, int Height,
+                                   std::array<SurfaceFormat, 3> GBufferFormats)
+    : content(Content) {
     //Load Clear Shader
     Clear = Content.Load<Effect>("Effects/Clear");
     Clear->CurrentTechnique = Clear->Techniques[0];
@@ -13,14 +15,9 @@ DeferredRenderer::DeferredRenderer(GraphicsDevice& GraphicsDevice, ContentManage
     GBuffer = Content.Load<Effect>("Effects/GBuffer");
     GBuffer->CurrentTechnique = GBuffer->Techniques[0];
     //Load Directional Light Shader
-    directionalLight = Content.Load<Effect>("Effects/DirectionalLight");
-    directionalLight->CurrentTechnique = directionalLight->Techniques[0];
     //Load Point Light Shader
-    pointLight = Content.Load<Effect>("Effects/PointLight");
-    pointLight->CurrentTechnique = pointLight->Techniques[0];
     //Load Spot Light Shader
-    spotLight = Content.Load<Effect>("Effects/SpotLight");
-    spotLight->CurrentTechnique = spotLight->Techniques[0];
+    // fxport: each with the first light of its type (MakeLightMap).
     //Load Composition Shader
     compose = Content.Load<Effect>("Effects/Composition");
     compose->CurrentTechnique = compose->Techniques[0];
@@ -38,13 +35,13 @@ DeferredRenderer::DeferredRenderer(GraphicsDevice& GraphicsDevice, ContentManage
     GBufferTargets = std::vector<RenderTargetBinding>(3);
     //Intialize Each Target of the GBuffer
     GBufferTargetsOwned.push_back(std::make_unique<RenderTarget2D>(GraphicsDevice, Width, Height, false,
-                                                                   SurfaceFormat::Rgba64, DepthFormat::Depth24Stencil8));
+                                                                   GBufferFormats[0], DepthFormat::Depth24Stencil8));
     GBufferTargets[0] = RenderTargetBinding(GBufferTargetsOwned.back().get());
     GBufferTargetsOwned.push_back(std::make_unique<RenderTarget2D>(GraphicsDevice, Width, Height, false,
-                                                                   SurfaceFormat::Rgba64, DepthFormat::Depth24Stencil8));
+                                                                   GBufferFormats[1], DepthFormat::Depth24Stencil8));
     GBufferTargets[1] = RenderTargetBinding(GBufferTargetsOwned.back().get());
     GBufferTargetsOwned.push_back(std::make_unique<RenderTarget2D>(GraphicsDevice, Width, Height, false,
-                                                                   SurfaceFormat::Vector2, DepthFormat::Depth24Stencil8));
+                                                                   GBufferFormats[2], DepthFormat::Depth24Stencil8));
     GBufferTargets[2] = RenderTargetBinding(GBufferTargetsOwned.back().get());
     GBufferTargetsOwned[0]->Name = "GBuffer0";
     GBufferTargetsOwned[1]->Name = "GBuffer1";
@@ -56,9 +53,41 @@ DeferredRenderer::DeferredRenderer(GraphicsDevice& GraphicsDevice, ContentManage
     //Create Fullscreen Quad
     fsq = std::make_unique<FullscreenQuad>(GraphicsDevice);
     //Load Point Light Geometry
-    pointLightGeometry = Content.Load<Model>("PointLightGeometry");
     //Load Spot Light Geometry
-    spotLightGeometry = Content.Load<Model>("SpotLightGeometry");
+    // fxport: each with the first light of its type (PointLightGeometry(), SpotLightGeometry()).
+}
+
+Effect* DeferredRenderer::LoadEffect(const char* assetName) {
+    Effect* effect = content.Load<Effect>(assetName);
+    effect->CurrentTechnique = effect->Techniques[0];
+    return effect;
+}
+
+Model& DeferredRenderer::SpotLightGeometry() {
+    if (!spotLightGeometry) spotLightGeometry = content.Load<Model>("SpotLightGeometry");
+    return *spotLightGeometry;
+}
+
+Model& DeferredRenderer::PointLightGeometry() {
+    if (!pointLightGeometry) pointLightGeometry = content.Load<Model>("PointLightGeometry");
+    return *pointLightGeometry;
+}
+
+bool DeferredRenderer::IsVisible(const Lights::SpotLight& light, const BaseCamera& Camera) {
+    const BoundingSphere volume = SpotLightGeometry().Meshes[0].BoundingSphere.Transform(light.getWorld());
+    return BoundingFrustum(Camera.View * Camera.Projection).Intersects(volume);
+}
+
+bool DeferredRenderer::IsVisible(const Lights::PointLight& light, const BaseCamera& Camera) {
+    const BoundingSphere volume = PointLightGeometry().Meshes[0].BoundingSphere.Transform(light.World());
+    return BoundingFrustum(Camera.View * Camera.Projection).Intersects(volume);
+}
+
+std::vector<const RenderTarget2D*> DeferredRenderer::getTargets() const {
+    std::vector<const RenderTarget2D*> targets;
+    for (auto& target : GBufferTargetsOwned) targets.push_back(target.get());
+    targets.push_back(LightMap.get());
+    return targets;
 }
 
 //Draw Scene Deferred
@@ -196,138 +225,168 @@ void DeferredRenderer::MakeLightMap(GraphicsDevice& GraphicsDevice, Lights::Ligh
     //Calculate InverseViewProjection
     Matrix InverseViewProjection = Matrix::Invert(Camera.View * Camera.Projection);
 
-    //Set Directional Lights Globals
-    directionalLight->Parameters["InverseViewProjection"].SetValue(InverseViewProjection);
-    directionalLight->Parameters["inverseView"].SetValue(InverseView);
-    directionalLight->Parameters["CameraPosition"].SetValue(Camera.Position);
-    directionalLight->Parameters["GBufferTextureSize"].SetValue(GBufferTextureSize);
+    // fxport: what this frame draws (see FrameStats); a light type the scene lacks loads nothing
+    // and sets nothing; a spot or point light whose volume is outside the frustum is not drawn.
+    frameStats = FrameStats();
 
-    //Set the Directional Lights Geometry Buffers
-    fsq->ReadyBuffers(GraphicsDevice);
+    if (!Lights.getDirectionalLights().empty()) {
+        if (!directionalLight) directionalLight = LoadEffect("Effects/DirectionalLight");
+        //Set Directional Lights Globals
+        directionalLight->Parameters["InverseViewProjection"].SetValue(InverseViewProjection);
+        directionalLight->Parameters["inverseView"].SetValue(InverseView);
+        directionalLight->Parameters["CameraPosition"].SetValue(Camera.Position);
+        directionalLight->Parameters["GBufferTextureSize"].SetValue(GBufferTextureSize);
 
-    //Draw Directional Lights
-    for (auto& light : Lights.getDirectionalLights()) {
-        //Set Directional Light Parameters
-        directionalLight->Parameters["L"].SetValue(Vector3::Normalize(light->getDirection()));
-        directionalLight->Parameters["LightColor"].SetValue(light->getColor());
-        directionalLight->Parameters["LightIntensity"].SetValue(light->getIntensity());
+        //Set the Directional Lights Geometry Buffers
+        fsq->ReadyBuffers(GraphicsDevice);
 
-        //Apply
-        directionalLight->CurrentTechnique->Passes[0].Apply();
+        //Draw Directional Lights
+        for (auto& light : Lights.getDirectionalLights()) {
+            //Set Directional Light Parameters
+            directionalLight->Parameters["L"].SetValue(Vector3::Normalize(light->getDirection()));
+            directionalLight->Parameters["LightColor"].SetValue(light->getColor());
+            directionalLight->Parameters["LightIntensity"].SetValue(light->getIntensity());
 
-        //Draw
-        fsq->JustDraw(GraphicsDevice);
+            //Apply
+            directionalLight->CurrentTechnique->Passes[0].Apply();
+
+            //Draw
+            fsq->JustDraw(GraphicsDevice);
+            ++frameStats.directionalLightsDrawn;
+        }
     }
 
-    //Set Spot Lights Globals
-    spotLight->Parameters["View"].SetValue(Camera.View);
-    spotLight->Parameters["inverseView"].SetValue(InverseView);
-    spotLight->Parameters["Projection"].SetValue(Camera.Projection);
-    spotLight->Parameters["InverseViewProjection"].SetValue(InverseViewProjection);
-    spotLight->Parameters["CameraPosition"].SetValue(Camera.Position);
-    spotLight->Parameters["GBufferTextureSize"].SetValue(GBufferTextureSize);
+    if (!Lights.getSpotLights().empty()) {
+        if (!spotLight) spotLight = LoadEffect("Effects/SpotLight");
+        Model& spotLightGeometry = SpotLightGeometry();
+        //Set Spot Lights Globals
+        spotLight->Parameters["View"].SetValue(Camera.View);
+        spotLight->Parameters["inverseView"].SetValue(InverseView);
+        spotLight->Parameters["Projection"].SetValue(Camera.Projection);
+        spotLight->Parameters["InverseViewProjection"].SetValue(InverseViewProjection);
+        spotLight->Parameters["CameraPosition"].SetValue(Camera.Position);
+        spotLight->Parameters["GBufferTextureSize"].SetValue(GBufferTextureSize);
 
-    //Set Spot Lights Geometry Buffers
-    GraphicsDevice.SetVertexBuffer(spotLightGeometry->Meshes[0].MeshParts[0].VertexBuffer,
-                                   spotLightGeometry->Meshes[0].MeshParts[0].VertexOffset);
-    GraphicsDevice.Indices = spotLightGeometry->Meshes[0].MeshParts[0].IndexBuffer;
+        //Set Spot Lights Geometry Buffers
+        GraphicsDevice.SetVertexBuffer(spotLightGeometry.Meshes[0].MeshParts[0].VertexBuffer,
+                                       spotLightGeometry.Meshes[0].MeshParts[0].VertexOffset);
+        GraphicsDevice.Indices = spotLightGeometry.Meshes[0].MeshParts[0].IndexBuffer;
 
-    //Draw Spot Lights
-    for (auto& light : Lights.getSpotLights()) {
-        //Set Attenuation Cookie Texture and SamplerState
-        GraphicsDevice.Textures[3] = light->getAttenuationTexture();
+        //Draw Spot Lights
+        for (auto& light : Lights.getSpotLights()) {
+            // fxport: frustum culling.
+            if (!IsVisible(*light, Camera)) {
+                ++frameStats.spotLightsCulled;
+                continue;
+            }
 
-        //Set ShadowMap and SamplerState
-        GraphicsDevice.Textures[4] = light->getShadowMap();
+            //Set Attenuation Cookie Texture and SamplerState
+            GraphicsDevice.Textures[3] = light->getAttenuationTexture();
 
-        //Set Spot Light Parameters
-        spotLight->Parameters["World"].SetValue(light->getWorld());
-        spotLight->Parameters["LightViewProjection"].SetValue(light->getView() * light->getProjection());
-        spotLight->Parameters["LightPosition"].SetValue(light->getPosition());
-        spotLight->Parameters["LightColor"].SetValue(light->getColor());
-        spotLight->Parameters["LightIntensity"].SetValue(light->getIntensity());
-        spotLight->Parameters["S"].SetValue(light->getDirection());
-        spotLight->Parameters["LightAngleCos"].SetValue(light->LightAngleCos());
-        spotLight->Parameters["LightHeight"].SetValue(light->getFarPlane());
-        spotLight->Parameters["Shadows"].SetValue(light->getIsWithShadows());
-        spotLight->Parameters["shadowMapSize"].SetValue(light->getShadowMapResoloution());
-        spotLight->Parameters["DepthPrecision"].SetValue(light->getFarPlane());
-        spotLight->Parameters["DepthBias"].SetValue(light->getDepthBias());
+            //Set ShadowMap and SamplerState
+            GraphicsDevice.Textures[4] = light->getShadowMap();
 
-        // #region Set Cull Mode
-        //Calculate L
-        Vector3 L = Camera.Position - light->getPosition();
+            //Set Spot Light Parameters
+            spotLight->Parameters["World"].SetValue(light->getWorld());
+            spotLight->Parameters["LightViewProjection"].SetValue(light->getView() * light->getProjection());
+            spotLight->Parameters["LightPosition"].SetValue(light->getPosition());
+            spotLight->Parameters["LightColor"].SetValue(light->getColor());
+            spotLight->Parameters["LightIntensity"].SetValue(light->getIntensity());
+            spotLight->Parameters["S"].SetValue(light->getDirection());
+            spotLight->Parameters["LightAngleCos"].SetValue(light->LightAngleCos());
+            spotLight->Parameters["LightHeight"].SetValue(light->getFarPlane());
+            spotLight->Parameters["Shadows"].SetValue(light->getIsWithShadows());
+            spotLight->Parameters["shadowMapSize"].SetValue(light->getShadowMapResoloution());
+            spotLight->Parameters["DepthPrecision"].SetValue(light->getFarPlane());
+            spotLight->Parameters["DepthBias"].SetValue(light->getDepthBias());
 
-        //Calculate S.L
-        float SL = std::fabs(Vector3::Dot(L, light->getDirection()));
+            // #region Set Cull Mode
+            //Calculate L
+            Vector3 L = Camera.Position - light->getPosition();
 
-        //Check if SL is within the LightAngle, if so then draw the BackFaces, if not
-        //then draw the FrontFaces
-        if (SL < light->LightAngleCos())
-            GraphicsDevice.RasterizerState = RasterizerState::CullCounterClockwise;
-        else
-            GraphicsDevice.RasterizerState = RasterizerState::CullClockwise;
-        // #endregion
+            //Calculate S.L
+            float SL = std::fabs(Vector3::Dot(L, light->getDirection()));
 
-        //Apply
-        spotLight->CurrentTechnique->Passes[0].Apply();
+            //Check if SL is within the LightAngle, if so then draw the BackFaces, if not
+            //then draw the FrontFaces
+            if (SL < light->LightAngleCos())
+                GraphicsDevice.RasterizerState = RasterizerState::CullCounterClockwise;
+            else
+                GraphicsDevice.RasterizerState = RasterizerState::CullClockwise;
+            // #endregion
 
-        //Draw
-        GraphicsDevice.DrawIndexedPrimitives(PrimitiveType::TriangleList, 0, 0,
-                                             spotLightGeometry->Meshes[0].MeshParts[0].NumVertices,
-                                             spotLightGeometry->Meshes[0].MeshParts[0].StartIndex,
-                                             spotLightGeometry->Meshes[0].MeshParts[0].PrimitiveCount);
+            //Apply
+            spotLight->CurrentTechnique->Passes[0].Apply();
+
+            //Draw
+            GraphicsDevice.DrawIndexedPrimitives(PrimitiveType::TriangleList, 0, 0,
+                                                 spotLightGeometry.Meshes[0].MeshParts[0].NumVertices,
+                                                 spotLightGeometry.Meshes[0].MeshParts[0].StartIndex,
+                                                 spotLightGeometry.Meshes[0].MeshParts[0].PrimitiveCount);
+            ++frameStats.spotLightsDrawn;
+        }
     }
 
-    //Set Point Lights Geometry Buffers
-    GraphicsDevice.SetVertexBuffer(pointLightGeometry->Meshes[0].MeshParts[0].VertexBuffer,
-                                   pointLightGeometry->Meshes[0].MeshParts[0].VertexOffset);
-    GraphicsDevice.Indices = pointLightGeometry->Meshes[0].MeshParts[0].IndexBuffer;
+    if (!Lights.getPointLights().empty()) {
+        if (!pointLight) pointLight = LoadEffect("Effects/PointLight");
+        Model& pointLightGeometry = PointLightGeometry();
+        //Set Point Lights Geometry Buffers
+        GraphicsDevice.SetVertexBuffer(pointLightGeometry.Meshes[0].MeshParts[0].VertexBuffer,
+                                       pointLightGeometry.Meshes[0].MeshParts[0].VertexOffset);
+        GraphicsDevice.Indices = pointLightGeometry.Meshes[0].MeshParts[0].IndexBuffer;
 
-    //Set Point Lights Globals
-    pointLight->Parameters["inverseView"].SetValue(InverseView);
-    pointLight->Parameters["View"].SetValue(Camera.View);
-    pointLight->Parameters["Projection"].SetValue(Camera.Projection);
-    pointLight->Parameters["InverseViewProjection"].SetValue(InverseViewProjection);
-    pointLight->Parameters["CameraPosition"].SetValue(Camera.Position);
-    pointLight->Parameters["GBufferTextureSize"].SetValue(GBufferTextureSize);
+        //Set Point Lights Globals
+        pointLight->Parameters["inverseView"].SetValue(InverseView);
+        pointLight->Parameters["View"].SetValue(Camera.View);
+        pointLight->Parameters["Projection"].SetValue(Camera.Projection);
+        pointLight->Parameters["InverseViewProjection"].SetValue(InverseViewProjection);
+        pointLight->Parameters["CameraPosition"].SetValue(Camera.Position);
+        pointLight->Parameters["GBufferTextureSize"].SetValue(GBufferTextureSize);
 
-    //Draw Point Lights without Shadows
-    for (auto& light : Lights.getPointLights()) {
-        //Set Point Light Sampler
-        GraphicsDevice.Textures[4] = light->getShadowMap();
-        GraphicsDevice.SamplerStates[4] = SamplerState::PointWrap;
+        //Draw Point Lights without Shadows
+        for (auto& light : Lights.getPointLights()) {
+            // fxport: frustum culling.
+            if (!IsVisible(*light, Camera)) {
+                ++frameStats.pointLightsCulled;
+                continue;
+            }
 
-        //Set Point Light Parameters
-        pointLight->Parameters["World"].SetValue(light->World());
-        pointLight->Parameters["LightPosition"].SetValue(light->getPosition());
-        pointLight->Parameters["LightRadius"].SetValue(light->getRadius());
-        pointLight->Parameters["LightColor"].SetValue(light->getColor());
-        pointLight->Parameters["LightIntensity"].SetValue(light->getIntensity());
-        pointLight->Parameters["Shadows"].SetValue(light->getIsWithShadows());
-        pointLight->Parameters["DepthPrecision"].SetValue(light->getRadius());
-        pointLight->Parameters["DepthBias"].SetValue(light->getDepthBias());
-        pointLight->Parameters["shadowMapSize"].SetValue(light->getShadowMapResoloution());
+            //Set Point Light Sampler
+            GraphicsDevice.Textures[4] = light->getShadowMap();
+            GraphicsDevice.SamplerStates[4] = SamplerState::PointWrap;
 
-        //Set Cull Mode
-        Vector3 diff = Camera.Position - light->getPosition();
-        float CameraToLight = float(std::sqrt(float(Vector3::Dot(diff, diff)))) / 100.0f;
+            //Set Point Light Parameters
+            pointLight->Parameters["World"].SetValue(light->World());
+            pointLight->Parameters["LightPosition"].SetValue(light->getPosition());
+            pointLight->Parameters["LightRadius"].SetValue(light->getRadius());
+            pointLight->Parameters["LightColor"].SetValue(light->getColor());
+            pointLight->Parameters["LightIntensity"].SetValue(light->getIntensity());
+            pointLight->Parameters["Shadows"].SetValue(light->getIsWithShadows());
+            pointLight->Parameters["DepthPrecision"].SetValue(light->getRadius());
+            pointLight->Parameters["DepthBias"].SetValue(light->getDepthBias());
+            pointLight->Parameters["shadowMapSize"].SetValue(light->getShadowMapResoloution());
 
-        //If the Camera is in the light, render the backfaces, if it's out of the
-        //light, render the frontfaces
-        if (CameraToLight <= light->getRadius())
-            GraphicsDevice.RasterizerState = RasterizerState::CullClockwise;
-        else if (CameraToLight > light->getRadius())
-            GraphicsDevice.RasterizerState = RasterizerState::CullCounterClockwise;
+            //Set Cull Mode
+            Vector3 diff = Camera.Position - light->getPosition();
+            float CameraToLight = float(std::sqrt(float(Vector3::Dot(diff, diff)))) / 100.0f;
 
-        //Apply
-        pointLight->CurrentTechnique->Passes[0].Apply();
+            //If the Camera is in the light, render the backfaces, if it's out of the
+            //light, render the frontfaces
+            if (CameraToLight <= light->getRadius())
+                GraphicsDevice.RasterizerState = RasterizerState::CullClockwise;
+            else if (CameraToLight > light->getRadius())
+                GraphicsDevice.RasterizerState = RasterizerState::CullCounterClockwise;
 
-        //Draw
-        GraphicsDevice.DrawIndexedPrimitives(PrimitiveType::TriangleList, 0, 0,
-                                             pointLightGeometry->Meshes[0].MeshParts[0].NumVertices,
-                                             pointLightGeometry->Meshes[0].MeshParts[0].StartIndex,
-                                             pointLightGeometry->Meshes[0].MeshParts[0].PrimitiveCount);
+            //Apply
+            pointLight->CurrentTechnique->Passes[0].Apply();
+
+            //Draw
+            GraphicsDevice.DrawIndexedPrimitives(PrimitiveType::TriangleList, 0, 0,
+                                                 pointLightGeometry.Meshes[0].MeshParts[0].NumVertices,
+                                                 pointLightGeometry.Meshes[0].MeshParts[0].StartIndex,
+                                                 pointLightGeometry.Meshes[0].MeshParts[0].PrimitiveCount);
+            ++frameStats.pointLightsDrawn;
+        }
     }
 
     //Set States Off

@@ -2,6 +2,7 @@
 // accumulates the lights into the light map and composes the lit scene.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -16,12 +17,14 @@ class DeferredRenderer {
     Effect* Clear;
     //GBuffer Shader
     Effect* GBuffer;
+    // fxport: the light shaders and volumes are loaded the first time a light of their type is
+    // drawn (nullptr before), so a scene without spot or point lights never compiles their effects.
     //Directional Light Shader
-    Effect* directionalLight;
+    Effect* directionalLight = nullptr;
     //Point Light Shader
-    Effect* pointLight;
+    Effect* pointLight = nullptr;
     //Spot Light Shader
-    Effect* spotLight;
+    Effect* spotLight = nullptr;
     //Composition Shader
     Effect* compose;
     //LightMap BlendState
@@ -35,15 +38,18 @@ class DeferredRenderer {
     //Fullscreen Quad
     std::unique_ptr<FullscreenQuad> fsq;
     //Point Light Geometry
-    Model* pointLightGeometry;
+    Model* pointLightGeometry = nullptr;
     //Spot Light Geometry
-    Model* spotLightGeometry;
+    Model* spotLightGeometry = nullptr;
 
 public:
     //Get GBuffer
     const std::vector<RenderTargetBinding>& getGBuffer() const { return GBufferTargets; }
     //Constructor
-    DeferredRenderer(GraphicsDevice& GraphicsDevice, ContentManager& Content, int Width, int Height);
+    // fxport: GBufferFormats are the three targets' formats (the seed's: Rgba64, Rgba64, Vector2).
+    DeferredRenderer(GraphicsDevice& GraphicsDevice, ContentManager& Content, int Width, int Height,
+                     std::array<SurfaceFormat, 3> GBufferFormats = {SurfaceFormat::Rgba64, SurfaceFormat::Rgba64,
+                                                                    SurfaceFormat::Vector2});
 
     //Draw Scene Deferred
     void Draw(GraphicsDevice& GraphicsDevice, const std::vector<Model*>& Models, Lights::LightManager& Lights,
@@ -54,6 +60,20 @@ public:
     // fxport additions: the light map for fxdemo's debug sheet, and a GPU timer for the passes.
     RenderTarget2D& getLightMap() const { return *LightMap; }
     void setGpuTimer(GpuTimer* timer) { gpuTimer = timer; }
+
+    // fxport additions (issue 6): frustum culling of the light volumes and what the last Draw did.
+    // Whether the camera's frustum meets the light's volume (its geometry's bounding sphere under
+    // the light's World); loads the volume's model if it was not yet.
+    bool IsVisible(const Lights::SpotLight& light, const BaseCamera& Camera);
+    bool IsVisible(const Lights::PointLight& light, const BaseCamera& Camera);
+    struct FrameStats {
+        int directionalLightsDrawn = 0;
+        int spotLightsDrawn = 0, spotLightsCulled = 0;
+        int pointLightsDrawn = 0, pointLightsCulled = 0;
+    };
+    const FrameStats& getFrameStats() const { return frameStats; }
+    // The targets the renderer owns: the G-buffer's three and the light map.
+    std::vector<const RenderTarget2D*> getTargets() const;
 
 private:
     //Clear GBuffer
@@ -69,6 +89,12 @@ private:
     // here they are owned here and GBufferTargets points at them.
     std::vector<std::unique_ptr<RenderTarget2D>> GBufferTargetsOwned;
     GpuTimer* gpuTimer = nullptr;
+    ContentManager& content;
+    FrameStats frameStats;
+    // Load on first use (see the light shaders above).
+    Effect* LoadEffect(const char* assetName);
+    Model& SpotLightGeometry();
+    Model& PointLightGeometry();
 };
 
 }  // namespace TheCansinDeferredRenderer

@@ -1,6 +1,44 @@
 #include "deferred/game1.h"
 
+#include <algorithm>
+#include <array>
+#include <optional>
+#include <string>
+
 namespace TheCansinDeferredRenderer {
+
+namespace {
+
+// fxport: the DemoSettings knobs, checked before anything is created.
+void checkRange(const char* setting, int value, int lo, int hi) {
+    if (value < lo || value > hi)
+        throw ArgumentError(std::string("Game1::DemoSettings::") + setting + " = " + std::to_string(value) +
+                            " is outside " + std::to_string(lo) + ".." + std::to_string(hi));
+}
+
+std::array<SurfaceFormat, 3> gbufferFormatsOf(Game1::DemoSettings::GBufferFormats formats) {
+    switch (formats) {
+    case Game1::DemoSettings::GBufferFormats::Tutorial:
+        return {SurfaceFormat::Rgba64, SurfaceFormat::Rgba64, SurfaceFormat::Vector2};
+    case Game1::DemoSettings::GBufferFormats::Color8:
+        return {SurfaceFormat::Color, SurfaceFormat::Color, SurfaceFormat::Single};
+    case Game1::DemoSettings::GBufferFormats::Float32:
+        return {SurfaceFormat::Vector4, SurfaceFormat::Vector4, SurfaceFormat::Vector4};
+    }
+    throw ArgumentError("Game1::DemoSettings::gbufferFormats = " + std::to_string(int(formats)) + " is not a GBufferFormats");
+}
+
+}  // namespace
+
+SSAO& Game1::getSSAO() {
+    if (!ssao) throw InvalidOperation("Game1::getSSAO: SSAO is off (DemoSettings::ssao = false)");
+    return *ssao;
+}
+
+RenderTarget2D& Game1::getScene() {
+    if (!Scene) throw InvalidOperation("Game1::getScene: no Scene target without SSAO (DemoSettings::ssao = false)");
+    return *Scene;
+}
 
 Game1::Game1() {
     // graphics = new GraphicsDeviceManager(this): the Game base holds it.
@@ -24,19 +62,30 @@ void Game1::LoadContent() {
     //Create spriteFont
     spriteFont = Content.Load<SpriteFont>("DefaultFont");
 
+    // fxport: the knobs (DemoSettings) are checked before anything is made.
+    checkRange("spotShadowMapSize", demo.spotShadowMapSize, 256, 4096);
+    checkRange("pointShadowMapSize", demo.pointShadowMapSize, 64, 1024);
+
     //Create Deferred Renderer
     deferredRenderer = std::make_unique<DeferredRenderer>(*GraphicsDevice, Content, graphics.PreferredBackBufferWidth,
-                                                          graphics.PreferredBackBufferHeight);
+                                                          graphics.PreferredBackBufferHeight,
+                                                          gbufferFormatsOf(demo.gbufferFormats));
 
-    //Create SSAO
-    ssao = std::make_unique<SSAO>(*GraphicsDevice, Content, graphics.PreferredBackBufferWidth,
-                                  graphics.PreferredBackBufferHeight);
+    // fxport: SSAO and the Scene target it reads exist only with DemoSettings::ssao (the seed always
+    // makes them); without, Draw renders the composition straight to the back buffer, as F1 does.
+    if (demo.ssao) {
+        //Create SSAO
+        const int ssaoDivisor = demo.ssaoHalfResolution ? 2 : 1;
+        ssao = std::make_unique<SSAO>(*GraphicsDevice, Content,
+                                      std::max(1, graphics.PreferredBackBufferWidth / ssaoDivisor),
+                                      std::max(1, graphics.PreferredBackBufferHeight / ssaoDivisor));
 
-    //Create Scene Render Target
-    Scene = std::make_unique<RenderTarget2D>(*GraphicsDevice, graphics.PreferredBackBufferWidth,
-                                             graphics.PreferredBackBufferHeight, false, SurfaceFormat::Color,
-                                             DepthFormat::Depth24Stencil8);
-    Scene->Name = "Scene";
+        //Create Scene Render Target
+        Scene = std::make_unique<RenderTarget2D>(*GraphicsDevice, graphics.PreferredBackBufferWidth,
+                                                 graphics.PreferredBackBufferHeight, false, SurfaceFormat::Color,
+                                                 DepthFormat::Depth24Stencil8);
+        Scene->Name = "Scene";
+    }
 
     //Create Light Manager
     lightManager = std::make_unique<Lights::LightManager>(Content);
@@ -51,11 +100,13 @@ void Game1::LoadContent() {
 
     //Add a Spot Light
     lightManager->AddLight(std::make_unique<Lights::SpotLight>(*GraphicsDevice, Vector3(0, 15.0f, 0), Vector3(0, -1, 0),
-                                                               Color::White.ToVector4(), 0.10f, true, 2048, spotCookie));
+                                                               Color::White.ToVector4(), 0.10f, true, demo.spotShadowMapSize,
+                                                               spotCookie));
 
     //Add a Point Light
     lightManager->AddLight(std::make_unique<Lights::PointLight>(*GraphicsDevice, Vector3(0, 5.0f, 0), 20.0f,
-                                                                Color::White.ToVector4(), 0.80f, true, 256));
+                                                                Color::White.ToVector4(), 0.80f, true,
+                                                                demo.pointShadowMapSize));
 
     //Initialize Model List
     models = std::vector<Model*>();
@@ -65,8 +116,10 @@ void Game1::LoadContent() {
     models.push_back(scene);
 
     // fxport: the demo's starting values (see DemoSettings).
-    ssao->setSampleRadius(demo.sampleRadius);
-    ssao->setDistanceScale(demo.distanceScale);
+    if (ssao) {
+        ssao->setSampleRadius(demo.sampleRadius);
+        ssao->setDistanceScale(demo.distanceScale);
+    }
 }
 
 void Game1::UnloadContent() {}
@@ -86,7 +139,7 @@ void Game1::Update(const GameTime& gameTime) {
     Camera->Update(*this, currentK, previousK, currentM);
 
     //Modify
-    ssao->Modify(currentK);
+    if (ssao) ssao->Modify(currentK);
 
     Game::Update(gameTime);
 }
@@ -96,10 +149,19 @@ void Game1::Draw(const GameTime& gameTime) {
     GraphicsDevice->Clear(Color::CornflowerBlue);
 
     //Draw Shadow Maps
-    { PassTimer timed(demo.gpuTimer, "ShadowMaps"); lightManager->DrawShadowMaps(*GraphicsDevice, models); }
+    // fxport: only lights with shadows that the camera sees get (and draw) a shadow map; without any
+    // shadowed light there is no ShadowMaps pass (DrawShadowMaps still updates the spot lights).
+    {
+        std::optional<PassTimer> timed;
+        if (lightManager->HasShadowedLights()) timed.emplace(demo.gpuTimer, "ShadowMaps");
+        lightManager->DrawShadowMaps(
+            *GraphicsDevice, models,
+            [&](const Lights::SpotLight& light) { return deferredRenderer->IsVisible(light, *Camera); },
+            [&](const Lights::PointLight& light) { return deferredRenderer->IsVisible(light, *Camera); });
+    }
 
     //Draw with SSAO unless F1 is down
-    if (currentK.IsKeyDown(Keys::F1)) {
+    if (currentK.IsKeyDown(Keys::F1) || !ssao) {
         //Draw using Deferred Renderer straight to BackBuffer
         deferredRenderer->Draw(*GraphicsDevice, models, *lightManager, *Camera, nullptr);
     } else {
@@ -117,7 +179,7 @@ void Game1::Draw(const GameTime& gameTime) {
         deferredRenderer->Debug(*GraphicsDevice, *spriteBatch);
 
         //Debug SSAO
-        ssao->Debug(*spriteBatch, *spriteFont);
+        if (ssao) ssao->Debug(*spriteBatch, *spriteFont);
     }
 
     //Base Drawing

@@ -54,12 +54,26 @@ public:
         // GPU time of ShadowMaps and Debug (nullptr: not measured); the other passes are timed by
         // DeferredRenderer/SSAO::setGpuTimer.
         GpuTimer* gpuTimer = nullptr;
+        // Quality/cost knobs (issue 6; the seed's values are the defaults). Checked in LoadContent:
+        // a value out of range throws ArgumentError naming the setting.
+        // The G-buffer's three targets (albedo+spec intensity, normal+spec power, depth z/w + view z).
+        // Color8's depth target is Single: it keeps z/w only, and SSAO reads view z (.g) from it,
+        // so SSAO sees 0 there -- the knob shows what the tutorial's formats buy.
+        enum class GBufferFormats { Tutorial /*Rgba64,Rgba64,Vector2*/, Color8 /*Color,Color,Single*/, Float32 /*Vector4 x3*/ };
+        GBufferFormats gbufferFormats = GBufferFormats::Tutorial;
+        int spotShadowMapSize = 2048;   // 256..4096 (the seed's spot light: 2048)
+        int pointShadowMapSize = 256;   // cube face size, 64..1024 (the seed's point light: 256)
+        bool ssao = true;               // false: no SSAO targets/effects at all (the image is the light composition)
+        bool ssaoHalfResolution = false;  // SSAO and its blur at half the render size
     };
     DemoSettings demo;
     DeferredRenderer& getDeferredRenderer() { return *deferredRenderer; }
-    SSAO& getSSAO() { return *ssao; }
+    // Without SSAO (demo.ssao false) there is no SSAO and no Scene target: getSSAO/getScene throw
+    // InvalidOperation; hasSSAO says which.
+    bool hasSSAO() const { return ssao != nullptr; }
+    SSAO& getSSAO();
     Lights::LightManager& getLightManager() { return *lightManager; }
-    RenderTarget2D& getScene() { return *Scene; }
+    RenderTarget2D& getScene();
 
 protected:
     void Initialize() override;

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "common/finite_check.h"
 #include "common/frame_loop.h"
 #include "deferred/debug_sheet.h"
 #include "deferred/game1.h"
@@ -22,6 +23,11 @@ int RunDeferred(const RunOptions& options) {
     game.demo.sampleRadius = options.sampleRadius;
     game.demo.distanceScale = options.distanceScale;
     game.demo.debugViews = options.debugViews;
+    game.demo.gbufferFormats = options.gbufferFormats;
+    game.demo.spotShadowMapSize = options.spotShadowMapSize;
+    game.demo.pointShadowMapSize = options.pointShadowMapSize;
+    game.demo.ssao = options.ssao;
+    game.demo.ssaoHalfResolution = options.ssaoHalfResolution;
 
     // The timer needs the device, which Start() makes: attach it after Start, before the first frame.
     game.Start();
@@ -33,10 +39,11 @@ int RunDeferred(const RunOptions& options) {
     while (!keep('s') && !lights.getSpotLights().empty()) lights.RemoveLight(lights.getSpotLights()[0].get());
     while (!keep('p') && !lights.getPointLights().empty()) lights.RemoveLight(lights.getPointLights()[0].get());
     game.getDeferredRenderer().setGpuTimer(timer.get());
-    game.getSSAO().setGpuTimer(timer.get());
+    if (game.hasSSAO()) game.getSSAO().setGpuTimer(timer.get());
     game.demo.gpuTimer = timer.get();
     const bool sync = options.syncPasses.value_or(options.platform == "osmesa");
     PassTimer::syncDevice = sync ? game.GraphicsDevice : nullptr;
+    fxport::demo::FiniteCheckScope finite(game.GraphicsDevice, options.checkFinite);
 
     std::printf("fxdemo deferred: %dx%d on %s (%s)\n", options.width, options.height, options.platform.c_str(),
                 game.GraphicsDevice->rendererName().c_str());

@@ -162,8 +162,9 @@ void SSAO::Compose(GraphicsDevice& GraphicsDevice, RenderTarget2D* Scene, Render
     GraphicsDevice.SamplerStates[1] = SamplerState::LinearClamp;
 
     //Set Effect Parameters
-    composer->Parameters["halfPixel"].SetValue(
-        Vector2(1.0f / float(SSAOTarget->Width()), 1.0f / float(SSAOTarget->Height())));
+    // fxport: one texel of the image drawn (the Scene's size, as the output has it); the seed's
+    // SSAO target has that size too unless DemoSettings::ssaoHalfResolution halves it.
+    composer->Parameters["halfPixel"].SetValue(Vector2(1.0f / float(Scene->Width()), 1.0f / float(Scene->Height())));
     composer->CurrentTechnique->Passes[0].Apply();
 
     //Draw

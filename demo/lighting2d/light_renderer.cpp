@@ -1,5 +1,7 @@
 #include "lighting2d/light_renderer.h"
 
+#include <string>
+
 namespace _2DLightingSystem {
 
 using fxport::demo::PassTimer;
@@ -16,10 +18,14 @@ void LightRenderer::Initialize() {
                                                 RenderTargetUsage::PreserveContents);
     // Square (W x W): each column is one ray (pair), each row a fraction along it. HdrBlendable
     // (RGBA16F) for the distance precision; sampled with PointClamp only (seed, Part 3).
-    unwrapTarget = std::make_unique<RenderTarget2D>(GraphicsDevice, W, W, false, SurfaceFormat::HdrBlendable,
+    // fxport: rayCount x rayCount in occlusionFormat when the knobs are set (see the header).
+    if (rayCount < 0 || rayCount > 16384)
+        throw ArgumentError("LightRenderer: rayCount " + std::to_string(rayCount) + " is outside 0..16384");
+    const int rays = rayCount > 0 ? rayCount : W;
+    unwrapTarget = std::make_unique<RenderTarget2D>(GraphicsDevice, rays, rays, false, occlusionFormat,
                                                     DepthFormat::None);
     fullScreen = Rectangle(0, 0, W, H);
-    occlusionMap = std::make_unique<RenderTarget2D>(GraphicsDevice, W, 1, false, SurfaceFormat::HdrBlendable,
+    occlusionMap = std::make_unique<RenderTarget2D>(GraphicsDevice, rays, 1, false, occlusionFormat,
                                                     DepthFormat::None);
 
     collapseBlendState = BlendState();
@@ -33,6 +39,10 @@ void LightRenderer::Initialize() {
     postProcessTarget = std::make_unique<RenderTarget2D>(GraphicsDevice, W, H);
     horizontalBlurTarget = std::make_unique<RenderTarget2D>(GraphicsDevice, W, H);
     verticalBlurTarget = std::make_unique<RenderTarget2D>(GraphicsDevice, W, H);
+    // fxport: names for messages (fxdemo --check-finite) and debug labels.
+    backBufferCache->Name = "backBufferCache", midGroundTarget->Name = "midGroundTarget", lightMap->Name = "lightMap";
+    unwrapTarget->Name = "unwrapTarget", occlusionMap->Name = "occlusionMap", postProcessTarget->Name = "postProcessTarget";
+    horizontalBlurTarget->Name = "horizontalBlurTarget", verticalBlurTarget->Name = "verticalBlurTarget";
 }
 
 void LightRenderer::LoadContent(ContentManager& Content) {
@@ -124,7 +134,8 @@ void LightRenderer::UnwrapShadowCasters(const SpotLight& sLight, float lightDirA
     GraphicsDevice.Clear(Color::Transparent);
     spriteBatch->Begin(SpriteSortMode::Deferred, BlendState::Opaque, SamplerState::PointClamp, nullptr, nullptr,
                        unwrapSpotlight);
-    spriteBatch->Draw(*midGroundTarget, Rectangle(0, 0, fullScreen.Width, fullScreen.Width), Color::White);
+    // fxport: the unwrap target's size (the seed: fullScreen.Width square; see rayCount).
+    spriteBatch->Draw(*midGroundTarget, Rectangle(0, 0, RayCount(), RayCount()), Color::White);
     spriteBatch->End();
 }
 
@@ -134,7 +145,7 @@ void LightRenderer::UnwrapShadowCasters(const PointLight& pLight) {
     GraphicsDevice.SetRenderTarget(unwrapTarget.get());
     GraphicsDevice.Clear(Color::Transparent);
     spriteBatch->Begin(SpriteSortMode::Deferred, BlendState::Opaque, SamplerState::PointClamp, nullptr, nullptr, unwrap);
-    spriteBatch->Draw(*midGroundTarget, Rectangle(0, 0, fullScreen.Width, fullScreen.Width), Color::White);
+    spriteBatch->Draw(*midGroundTarget, Rectangle(0, 0, RayCount(), RayCount()), Color::White);
     spriteBatch->End();
 }
 
@@ -143,9 +154,9 @@ void LightRenderer::CreateOcclusionMap() {
     GraphicsDevice.Clear(Color::White);  // 1 = no occluder: the start value of the Min blend
 
     spriteBatch->Begin(SpriteSortMode::Deferred, collapseBlendState, SamplerState::PointClamp, nullptr, nullptr);
-    for (int i = 0; i < fullScreen.Width; i++)
-        spriteBatch->Draw(*unwrapTarget, Rectangle(0, 0, GraphicsDevice.Viewport.Width, 1),
-                          Rectangle(0, i, GraphicsDevice.Viewport.Width, 1), Color::White);
+    // fxport: RayCount() rows and columns (the seed: fullScreen.Width and the viewport's width, equal there).
+    for (int i = 0; i < RayCount(); i++)
+        spriteBatch->Draw(*unwrapTarget, Rectangle(0, 0, RayCount(), 1), Rectangle(0, i, RayCount(), 1), Color::White);
     spriteBatch->End();
 }
 

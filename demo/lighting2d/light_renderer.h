@@ -67,6 +67,14 @@ public:
     float minBlur = 0.0f;
     float maxBlur = 5.0f;
 
+    // fxport additions (knobs of `fxdemo report`), read by Initialize: the number of rays, which is
+    // the unwrap target's width and height (rays x samples per ray) and the occlusion map's width
+    // (0: the screen width, as the seed), and the format of those two targets (the seed's
+    // HdrBlendable; Color stores the distances in 8 bits, which the seed estimates at ~6 px at 720p).
+    int rayCount = 0;
+    SurfaceFormat occlusionFormat = SurfaceFormat::HdrBlendable;
+    int RayCount() const { return unwrapTarget ? unwrapTarget->Width() : 0; }
+
     // fxport: GPU time per step (PassTimer), and a hook that sees the targets after each light's
     // steps (for the debug images): called with the light and "spot"/"point".
     GpuTimer* gpuTimer = nullptr;

@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <string>
 
+#include "common/finite_check.h"
 #include "common/frame_loop.h"
 #include "common/game.h"
 #include "common/program_registry.h"
@@ -245,6 +246,7 @@ int runLighting2d(int argc, char** argv) {
     if (check) game.checkCapture = &checkCapture;
     const bool sync = platformName == "osmesa";
     PassTimer::syncDevice = sync ? game.GraphicsDevice : nullptr;
+    fxport::demo::FiniteCheckScope finite(game.GraphicsDevice, common.checkFinite);
     std::printf("fxdemo lighting2d: %dx%d on %s (%s); %zu spot lights, %zu point lights\n", width, height,
                 platformName.c_str(), game.GraphicsDevice->rendererName().c_str(),
                 game.lightRenderer->spotLights.size(), game.lightRenderer->pointLights.size());

@@ -2,25 +2,35 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace DeferredLighting {
 
 // Reconstructed (the series' Initialize/LoadContent, chapters 2-3, with what seed 001 adds):
 // XNA 4 form of the targets: colorRT carries the depth buffer the scene is drawn with.
 DeferredRenderer::DeferredRenderer(fxport::GraphicsDevice& GraphicsDevice, ContentManager& Content, Camera& camera,
-                                   QuadRenderer& quadRenderer, Scene& scene)
-    : camera(&camera), quadRenderer(&quadRenderer), scene(&scene), GraphicsDevice(GraphicsDevice) {
+                                   QuadRenderer& quadRenderer, Scene& scene, const Quality& quality)
+    : camera(&camera), quadRenderer(&quadRenderer), scene(&scene), quality(quality), GraphicsDevice(GraphicsDevice) {
     int backbufferWidth = GraphicsDevice.PresentationParameters().BackBufferWidth;
     int backbufferHeight = GraphicsDevice.PresentationParameters().BackBufferHeight;
 
+    // fxport: the formats are a knob of `fxdemo report` (Quality::gbufferFormats; Tutorial = the series').
+    SurfaceFormat colorFormat = SurfaceFormat::Color, depthFormat = SurfaceFormat::Single,
+                  lightFormat = SurfaceFormat::Color;
+    if (quality.gbufferFormats == GBufferFormats::Half16) {
+        colorFormat = lightFormat = SurfaceFormat::HalfVector4;
+        depthFormat = SurfaceFormat::HalfSingle;
+    } else if (quality.gbufferFormats == GBufferFormats::Float32) {
+        colorFormat = lightFormat = SurfaceFormat::Vector4;
+    }
     colorRT = std::make_unique<RenderTarget2D>(GraphicsDevice, backbufferWidth, backbufferHeight, false,
-                                               SurfaceFormat::Color, DepthFormat::Depth24);
+                                               colorFormat, DepthFormat::Depth24);
     normalRT = std::make_unique<RenderTarget2D>(GraphicsDevice, backbufferWidth, backbufferHeight, false,
-                                                SurfaceFormat::Color, DepthFormat::None);
+                                                colorFormat, DepthFormat::None);
     depthRT = std::make_unique<RenderTarget2D>(GraphicsDevice, backbufferWidth, backbufferHeight, false,
-                                               SurfaceFormat::Single, DepthFormat::None);
+                                               depthFormat, DepthFormat::None);
     lightRT = std::make_unique<RenderTarget2D>(GraphicsDevice, backbufferWidth, backbufferHeight, false,
-                                               SurfaceFormat::Color, DepthFormat::None);
+                                               lightFormat, DepthFormat::None);
     colorRT->Name = "colorRT";
     normalRT->Name = "normalRT";
     depthRT->Name = "depthRT";
@@ -35,6 +45,30 @@ DeferredRenderer::DeferredRenderer(fxport::GraphicsDevice& GraphicsDevice, Conte
     // fxport: the chapter's sphere.x has radius 1; the deferred demo's PointLightGeometry has
     // radius 100 (content/README.md), which DrawPointLight scales back (lightRig.sphereModelRadius).
     sphereModel = Content.Load<Model>("PointLightGeometry");
+    // fxport (report knob): a UV sphere of Quality::sphereSegments x sphereSegments/2, built as the
+    // content tool builds PointLightGeometry (same radius, vertex order and winding).
+    if (quality.sphereSegments > 0) {
+        if (quality.sphereSegments < 3)
+            throw ArgumentError("DeferredRenderer: sphereSegments " + std::to_string(quality.sphereSegments) +
+                                " is below 3");
+        const int segments = quality.sphereSegments, rings = std::max(2, segments / 2), columns = segments + 1;
+        for (int j = 0; j <= rings; ++j) {
+            const float phi = MathHelper::Pi * (float(j) / float(rings) - 0.5f);
+            const float cosPhi = (j == 0 || j == rings) ? 0.0f : std::cos(phi);
+            const float sinPhi = j == 0 ? -1.0f : (j == rings ? 1.0f : std::sin(phi));
+            for (int i = 0; i <= segments; ++i) {
+                const float theta = i == segments ? 0.0f : MathHelper::TwoPi * float(i) / float(segments);
+                const Vector3 n(cosPhi * std::sin(theta), sinPhi, cosPhi * std::cos(theta));
+                sphereVertices.push_back(VertexPositionColor(n * lightRig.sphereModelRadius, Color::White));
+            }
+        }
+        for (int j = 0; j < rings; ++j)
+            for (int i = 0; i < segments; ++i) {
+                auto at = [&](int ii, int jj) { return jj * columns + ii; };
+                if (j != 0) sphereIndices.insert(sphereIndices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+                if (j != rings - 1) sphereIndices.insert(sphereIndices.end(), {at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+            }
+    }
     // The exercise: "For the light volume, use cone.x". fxport: SpotLightGeometry.gltf, apex at the
     // origin, axis -Z, length 1, base radius 0.5 (content/README.md).
     spotLightEffect = Content.Load<Effect>("SpotLight");
@@ -135,6 +169,17 @@ void DeferredRenderer::DrawPointLight(Vector3 lightPosition, Color color, float 
                                 cameraToCenter < lightRadius + camera->NearDistance});
 
     pointLightEffect->Techniques[0]->Passes[0].Apply();
+    DrawLightSphere();
+    GraphicsDevice.RasterizerState = RasterizerState::CullCounterClockwise;
+}
+
+void DeferredRenderer::DrawLightSphere() {
+    if (!sphereVertices.empty()) {  // fxport: the generated sphere (Quality::sphereSegments)
+        GraphicsDevice.DrawUserIndexedPrimitives(PrimitiveType::TriangleList, sphereVertices.data(), 0,
+                                                 int(sphereVertices.size()), sphereIndices.data(), 0,
+                                                 int(sphereIndices.size() / 3));
+        return;
+    }
     for (ModelMesh& mesh : sphereModel->Meshes) {
         for (ModelMeshPart& meshPart : mesh.MeshParts) {
             GraphicsDevice.SetVertexBuffer(meshPart.VertexBuffer, meshPart.VertexOffset);
@@ -143,7 +188,23 @@ void DeferredRenderer::DrawPointLight(Vector3 lightPosition, Color color, float 
                                                  meshPart.StartIndex, meshPart.PrimitiveCount);
         }
     }
-    GraphicsDevice.RasterizerState = RasterizerState::CullCounterClockwise;
+}
+
+// fxport (report knob): Quality::lightCount lights in the chapter's pattern: alternately on its
+// first ring (radius 12, intensity 2) and second ring (radius 20, intensity 1), evenly spaced and
+// turning with the game time, colours cycling through the chapter's ten. The intensities are
+// scaled by min(1, 22 / N) so that the light map's total stays near the chapter's 22 lights'.
+void DeferredRenderer::DrawManyPointLights(const GameTime& gameTime, const Color* colors) {
+    const int n = quality.lightCount, perRing = (n + 1) / 2;
+    const float scale = std::min(1.0f, 22.0f / float(n));
+    for (int k = 0; k < n; k++) {
+        const int i = k / 2;
+        const double a = i * MathHelper::TwoPi / perRing + gameTime.TotalGameTimeSeconds;
+        if (k % 2 == 0)
+            DrawPointLight(Vector3(float(std::sin(a)), 0.3f, float(std::cos(a))) * 20, colors[i % 10], 12, 2 * scale);
+        else
+            DrawPointLight(Vector3(float(std::cos(a)), -0.6f, float(std::sin(a))) * 20, colors[i % 10], 20, scale);
+    }
 }
 
 // The chapter's exercise (fxport; not in the seed, which leaves it to the reader): the point
@@ -231,7 +292,8 @@ void DeferredRenderer::DrawLights(const GameTime& gameTime) {
         colors[9] = Color::Honeydew;
         float angle = float(gameTime.TotalGameTimeSeconds);
         (void)angle;
-        for (int i = 0; i < 10; i++) {
+        if (quality.lightCount > 0) DrawManyPointLights(gameTime, colors);
+        for (int i = 0; i < 10 && quality.lightCount == 0; i++) {
             Vector3 pos = Vector3(float(std::sin(i * MathHelper::TwoPi / 10 + gameTime.TotalGameTimeSeconds)), 0.3f,
                                   float(std::cos(i * MathHelper::TwoPi / 10 + gameTime.TotalGameTimeSeconds)));
             DrawPointLight(pos * 20, colors[i], 12, 2);
@@ -239,8 +301,10 @@ void DeferredRenderer::DrawLights(const GameTime& gameTime) {
                           float(std::sin(i * MathHelper::TwoPi / 10 + gameTime.TotalGameTimeSeconds)));
             DrawPointLight(pos * 20, colors[i], 20, 1);
         }
-        DrawPointLight(Vector3(0, float(std::sin(gameTime.TotalGameTimeSeconds * 0.8)) * 40, 0), Color::Red, 30, 5);
-        DrawPointLight(Vector3(0, 0, 70), Color::Wheat, 55 + 10 * float(std::sin(5 * gameTime.TotalGameTimeSeconds)), 3);
+        if (quality.lightCount == 0) {
+            DrawPointLight(Vector3(0, float(std::sin(gameTime.TotalGameTimeSeconds * 0.8)) * 40, 0), Color::Red, 30, 5);
+            DrawPointLight(Vector3(0, 0, 70), Color::Wheat, 55 + 10 * float(std::sin(5 * gameTime.TotalGameTimeSeconds)), 3);
+        }
     }
     if (drawSpotLight) {
         // fxport: the exercise's spot light, in Scene units: 7.5 above the courtyard's centre,

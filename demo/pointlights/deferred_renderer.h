@@ -16,7 +16,27 @@
 
 namespace DeferredLighting {
 
+// fxport addition (not in the seed): the quality/time knobs `fxdemo report` sweeps. Chosen before
+// the DeferredRenderer is made (the targets are made there); the defaults are the chapter's.
+enum class GBufferFormats {
+    Tutorial,  // the series' Color / Color / Single, light map Color
+    Half16,    // HalfVector4 / HalfVector4 / HalfSingle, light map HalfVector4
+    Float32,   // Vector4 / Vector4 / Single, light map Vector4 (GL blends 32-bit float targets)
+};
+struct RendererQuality {
+    GBufferFormats gbufferFormats = GBufferFormats::Tutorial;
+    // 0: the chapter's 22 point lights; N: N lights in the chapter's two animated rings.
+    int lightCount = 0;
+    // 0: PointLightGeometry (32 x 16); else a UV sphere of this many segments (rings = half).
+    int sphereSegments = 0;
+};
+
 class DeferredRenderer {
+public:
+    using GBufferFormats = DeferredLighting::GBufferFormats;
+    using Quality = RendererQuality;
+
+private:
     Camera* camera;
     QuadRenderer* quadRenderer;
     Scene* scene;
@@ -42,7 +62,8 @@ class DeferredRenderer {
 
 public:
     DeferredRenderer(fxport::GraphicsDevice& GraphicsDevice, ContentManager& Content, Camera& camera,
-                     QuadRenderer& quadRenderer, Scene& scene);
+                     QuadRenderer& quadRenderer, Scene& scene, const Quality& quality = Quality());
+    const Quality quality;  // fxport
     void Draw(const GameTime& gameTime);
 
     // fxport additions: the targets for fxdemo's debug sheet, a GPU timer for the passes, and how
@@ -84,6 +105,11 @@ private:
     void DrawSpotLight(Vector3 lightPosition, Vector3 spotDirection, Color color, float lightRadius,
                        float lightIntensity, float spotLightAngle, float spotDecayExponent);
     void DrawLights(const GameTime& gameTime);
+    // fxport: Quality::lightCount lights in the chapter's pattern; the generated light sphere.
+    void DrawManyPointLights(const GameTime& gameTime, const Color* colors);
+    void DrawLightSphere();
+    std::vector<VertexPositionColor> sphereVertices;
+    std::vector<int> sphereIndices;
 
     // XNA's DrawableGameComponent.GraphicsDevice.
     fxport::GraphicsDevice& GraphicsDevice;

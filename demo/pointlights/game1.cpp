@@ -22,7 +22,7 @@ void Game1::Initialize() {
 
 void Game1::LoadContent() {
     quadRenderer = std::make_unique<QuadRenderer>(*GraphicsDevice);
-    renderer = std::make_unique<DeferredRenderer>(*GraphicsDevice, Content, *camera, *quadRenderer, *scene);
+    renderer = std::make_unique<DeferredRenderer>(*GraphicsDevice, Content, *camera, *quadRenderer, *scene, demo.quality);
 }
 
 void Game1::Update(const GameTime& gameTime) {

@@ -34,6 +34,8 @@ public:
         float cameraArc = -25.0f;
         float cameraRotation = 0.0f;
         float cameraDistance = 20.0f;
+        // fxport (fxdemo report): G-buffer formats, light count, light-sphere tessellation.
+        DeferredRenderer::Quality quality;
     };
     DemoSettings demo;
     DeferredRenderer& getRenderer() { return *renderer; }

@@ -12,6 +12,7 @@
 #include <optional>
 #include <string>
 
+#include "common/finite_check.h"
 #include "common/frame_loop.h"
 #include "common/program_registry.h"
 #include "common/run_options.h"
@@ -84,6 +85,7 @@ int runPointLights(int argc, char** argv) {
     game.getRenderer().setGpuTimer(timer.get());
     const bool sync = common.platform == "osmesa";
     PassTimer::syncDevice = sync ? game.GraphicsDevice : nullptr;
+    fxport::demo::FiniteCheckScope finite(game.GraphicsDevice, common.checkFinite);
 
     const Camera& camera = game.getCamera();
     std::printf("fxdemo pointlights: %dx%d on %s (%s)\n", common.width, common.height, common.platform.c_str(),

@@ -97,7 +97,7 @@ bool ApplicationClass::Initialize(const std::string& platform, const std::string
 	m_DeferredBuffers = std::make_unique<DeferredBuffersClass>();
 
 	// Initialize the deferred buffers object.
-	result = m_DeferredBuffers->Initialize(m_D3D->GetDevice(), screenWidth, screenHeight, SCREEN_DEPTH, SCREEN_NEAR);
+	result = m_DeferredBuffers->Initialize(m_D3D->GetDevice(), screenWidth, screenHeight, SCREEN_DEPTH, SCREEN_NEAR, m_gbufferFormat);
 	if(!result)
 	{
 		MessageBox("Could not initialize the deferred buffers object.");

@@ -58,6 +58,10 @@ public:
 
 	// fxport additions: the passes are timed when a GpuTimer is attached; access for fxdemo.
 	void SetGpuTimer(fxport::GpuTimer* timer) { m_gpuTimer = timer; }
+	// fxport addition (a knob of `fxdemo report`): the G-buffer targets' format, set before
+	// Initialize. The seed's is R32G32B32A32_FLOAT (Vector4); HalfVector4 and Color (8-bit unorm,
+	// which clamps the signed normals the seed writes) are the cheaper ones.
+	void SetGBufferFormat(fxport::SurfaceFormat format) { m_gbufferFormat = format; }
 	D3DClass* GetD3D() { return m_D3D.get(); }
 	DeferredBuffersClass* GetDeferredBuffers() { return m_DeferredBuffers.get(); }
 	ModelClass* GetModel() { return m_Model.get(); }
@@ -94,6 +98,7 @@ private:
 	// starts from 0 for each ApplicationClass (the rotation is a function of the frame number).
 	float m_rotation;
 	fxport::GpuTimer* m_gpuTimer;
+	fxport::SurfaceFormat m_gbufferFormat = fxport::SurfaceFormat::Vector4;
 };
 
 }  // namespace Rastertek50

@@ -17,7 +17,8 @@ DeferredBuffersClass::~DeferredBuffersClass()
 }
 
 
-bool DeferredBuffersClass::Initialize(fxport::GraphicsDevice* device, int textureWidth, int textureHeight, float screenDepth, float screenNear)
+bool DeferredBuffersClass::Initialize(fxport::GraphicsDevice* device, int textureWidth, int textureHeight, float screenDepth, float screenNear,
+                                      fxport::SurfaceFormat format)
 {
 	int i;
 	(void)screenDepth;
@@ -38,9 +39,10 @@ bool DeferredBuffersClass::Initialize(fxport::GraphicsDevice* device, int textur
 	for(i=0; i<BUFFER_COUNT; i++)
 	{
 		m_renderTargetTextureArray[i] = std::make_unique<fxport::RenderTarget2D>(
-			*device, textureWidth, textureHeight, false, fxport::SurfaceFormat::Vector4,
+			*device, textureWidth, textureHeight, false, format,
 			i == 0 ? fxport::DepthFormat::Depth24Stencil8 : fxport::DepthFormat::None, 0,
 			fxport::RenderTargetUsage::PreserveContents);
+		m_renderTargetTextureArray[i]->Name = i == 0 ? "colorTexture" : "normalTexture";  // fxport: for messages
 	}
 
 	// Setup the viewport for rendering.

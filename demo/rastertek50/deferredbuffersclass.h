@@ -35,7 +35,9 @@ public:
 	DeferredBuffersClass(const DeferredBuffersClass&) = delete;
 	~DeferredBuffersClass();
 
-	bool Initialize(fxport::GraphicsDevice*, int, int, float, float);
+	// fxport: `format` is a knob of `fxdemo report` (the seed: DXGI_FORMAT_R32G32B32A32_FLOAT).
+	bool Initialize(fxport::GraphicsDevice*, int, int, float, float,
+	                fxport::SurfaceFormat format = fxport::SurfaceFormat::Vector4);
 	void Shutdown();
 
 	void SetRenderTargets(fxport::GraphicsDevice*);

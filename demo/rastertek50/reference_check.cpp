@@ -101,19 +101,10 @@ struct Mips {
     }
 };
 
-}  // namespace
-
-bool RunReferenceCheck(ApplicationClass& application) {
-    DeferredBuffersClass& buffers = *application.GetDeferredBuffers();
-    fxport::RenderTarget2D* colorTarget = buffers.GetShaderResourceView(0);
-    fxport::RenderTarget2D* normalTarget = buffers.GetShaderResourceView(1);
-    const int W = colorTarget->Width(), H = colorTarget->Height();
-    const std::vector<fxport::Vector4> gColor = colorTarget->GetData<fxport::Vector4>();
-    const std::vector<fxport::Vector4> gNormal = normalTarget->GetData<fxport::Vector4>();
-    const std::vector<fxport::Color> back = application.GetD3D()->GetDevice()->GetBackBufferData();
-
-    // The seed's constants: camera at (0,0,-10) looking +Z, fov pi/4, near 0.1, far 1000, world =
-    // RotationY(rotation); the LH matrices from D3DX's formulas, in double.
+// The cube's front-facing triangles in screen space for the last frame rendered: the seed's
+// constants (camera at (0,0,-10) looking +Z, fov pi/4, near 0.1, far 1000, world =
+// RotationY(rotation)), the LH matrices from D3DX's formulas, in double.
+std::vector<Triangle> screenTriangles(ApplicationClass& application, int W, int H) {
     const double rotation = double(application.GetRotation());
     const double c = std::cos(rotation), s = std::sin(rotation);
     const M4 world = {{{c, 0, -s, 0}, {0, 1, 0, 0}, {s, 0, c, 0}, {0, 0, 0, 1}}};
@@ -139,11 +130,27 @@ bool RunReferenceCheck(ApplicationClass& application) {
         t.normal = {n.x / len, n.y / len, n.z / len};
         if (edge(t.p[0], t.p[1], t.p[2].x, t.p[2].y) > 0) triangles.push_back(t);  // clockwise = front
     }
+    return triangles;
+}
 
-    const Mips mips{TextureClass::MipChain(model.GetTexture()->Width()), model.GetTexture()->Width()};
-    int coverageMismatch = 0, covered = 0;
-    double normalMax = 0;
-    std::vector<double> colorErrors;
+// Texcoord and LOD at pixel (x, y) from its 2x2 quad (coarse derivatives, as GPUs compute them),
+// then the trilinear sample.
+std::array<double, 3> sampleTexture(const Triangle& t, const Mips& mips, int x, int y) {
+    double u, v, u0, v0, ux, vx, uy, vy;
+    texcoord(t, x + 0.5, y + 0.5, u, v);
+    const int qx = x & ~1, qy = y & ~1;
+    texcoord(t, qx + 0.5, qy + 0.5, u0, v0);
+    texcoord(t, qx + 1.5, qy + 0.5, ux, vx);
+    texcoord(t, qx + 0.5, qy + 1.5, uy, vy);
+    const double size = mips.size;
+    const double dx = std::hypot((ux - u0) * size, (vx - v0) * size);
+    const double dy = std::hypot((uy - u0) * size, (vy - v0) * size);
+    const double lod = std::log2(std::max({dx, dy, 1e-12}));
+    return mips.trilinear(u, v, lod);
+}
+
+// Index of the triangle covering each pixel centre, -1 where none does.
+std::vector<int> coverage(const std::vector<Triangle>& triangles, int W, int H) {
     std::vector<int> owner(std::size_t(W) * std::size_t(H), -1);
     for (int y = 0; y < H; ++y)
         for (int x = 0; x < W; ++x) {
@@ -154,6 +161,27 @@ bool RunReferenceCheck(ApplicationClass& application) {
                     break;
                 }
         }
+    return owner;
+}
+
+}  // namespace
+
+bool RunReferenceCheck(ApplicationClass& application) {
+    DeferredBuffersClass& buffers = *application.GetDeferredBuffers();
+    fxport::RenderTarget2D* colorTarget = buffers.GetShaderResourceView(0);
+    fxport::RenderTarget2D* normalTarget = buffers.GetShaderResourceView(1);
+    const int W = colorTarget->Width(), H = colorTarget->Height();
+    const std::vector<fxport::Vector4> gColor = colorTarget->GetData<fxport::Vector4>();
+    const std::vector<fxport::Vector4> gNormal = normalTarget->GetData<fxport::Vector4>();
+    const std::vector<fxport::Color> back = application.GetD3D()->GetDevice()->GetBackBufferData();
+
+    const std::vector<Triangle> triangles = screenTriangles(application, W, H);
+    ModelClass& model = *application.GetModel();
+    const Mips mips{TextureClass::MipChain(model.GetTexture()->Width()), model.GetTexture()->Width()};
+    int coverageMismatch = 0, covered = 0;
+    double normalMax = 0;
+    std::vector<double> colorErrors;
+    const std::vector<int> owner = coverage(triangles, W, H);
     for (int y = 0; y < H; ++y)
         for (int x = 0; x < W; ++x) {
             const std::size_t i = std::size_t(y) * std::size_t(W) + std::size_t(x);
@@ -170,18 +198,7 @@ bool RunReferenceCheck(ApplicationClass& application) {
             const Triangle& t = triangles[std::size_t(owner[i])];
             normalMax = std::max({normalMax, std::fabs(n.X - t.normal.x), std::fabs(n.Y - t.normal.y),
                                   std::fabs(n.Z - t.normal.z)});
-            // Texcoord and LOD from the 2x2 quad (coarse derivatives, as GPUs compute them).
-            double u, v, u0, v0, ux, vx, uy, vy;
-            texcoord(t, x + 0.5, y + 0.5, u, v);
-            const int qx = x & ~1, qy = y & ~1;
-            texcoord(t, qx + 0.5, qy + 0.5, u0, v0);
-            texcoord(t, qx + 1.5, qy + 0.5, ux, vx);
-            texcoord(t, qx + 0.5, qy + 1.5, uy, vy);
-            const double size = mips.size;
-            const double dx = std::hypot((ux - u0) * size, (vx - v0) * size);
-            const double dy = std::hypot((uy - u0) * size, (vy - v0) * size);
-            const double lod = std::log2(std::max({dx, dy, 1e-12}));
-            const auto ref = mips.trilinear(u, v, lod);
+            const auto ref = sampleTexture(t, mips, x, y);
             const fxport::Vector4 g = gColor[i];
             colorErrors.push_back(std::max({std::fabs(g.X - ref[0]), std::fabs(g.Y - ref[1]), std::fabs(g.Z - ref[2])}));
         }
@@ -246,6 +263,30 @@ bool RunReferenceCheck(ApplicationClass& application) {
     std::printf("check back buffer (light.fx on the G-buffer): max error %d/255 (bound 1): %s\n", finalMax,
                 finalOk ? "ok" : "FAIL");
     return coverageOk && normalOk && colorOk && finalOk;
+}
+
+}  // namespace Rastertek50
+
+namespace Rastertek50 {
+
+std::vector<double> ReferenceImage(ApplicationClass& application) {
+    const fxport::RenderTarget2D& target = *application.GetDeferredBuffers()->GetShaderResourceView(0);
+    const int W = target.Width(), H = target.Height();
+    const std::vector<Triangle> triangles = screenTriangles(application, W, H);
+    const std::vector<int> owner = coverage(triangles, W, H);
+    ModelClass& model = *application.GetModel();
+    const Mips mips{TextureClass::MipChain(model.GetTexture()->Width()), model.GetTexture()->Width()};
+    std::vector<double> rgb(std::size_t(W) * std::size_t(H) * 3, 0.0);  // cleared G-buffer: black
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            const std::size_t i = std::size_t(y) * std::size_t(W) + std::size_t(x);
+            if (owner[i] < 0) continue;
+            const Triangle& t = triangles[std::size_t(owner[i])];
+            const auto colour = sampleTexture(t, mips, x, y);
+            const double intensity = std::clamp(-t.normal.z, 0.0, 1.0);  // lightDirection (0, 0, 1)
+            for (int k = 0; k < 3; ++k) rgb[i * 3 + std::size_t(k)] = std::clamp(colour[std::size_t(k)] * intensity, 0.0, 1.0);
+        }
+    return rgb;
 }
 
 }  // namespace Rastertek50

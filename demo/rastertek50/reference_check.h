@@ -9,11 +9,19 @@
 //     centres): saturate(colour * saturate(dot(normal, -lightDirection))), 8-bit rounding.
 #pragma once
 
+#include <vector>
+
 namespace Rastertek50 {
 
 class ApplicationClass;
 
 // Prints one line per check; returns true when all are within their bounds.
 bool RunReferenceCheck(ApplicationClass& application);
+
+// fxport (fxdemo report): the back buffer of the last frame as it would be without the G-buffer's
+// precision limits, RGB in [0, 1], W x H x 3, top row first: the cube rasterised and textured here
+// as above, lit by light.fx's saturate(colour * saturate(dot(normal, -lightDirection))) with the
+// exact normal. For even sizes (the ortho window then maps pixel (x, y) to texel (x, y)).
+std::vector<double> ReferenceImage(ApplicationClass& application);
 
 }  // namespace Rastertek50

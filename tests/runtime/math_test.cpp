@@ -695,4 +695,78 @@ TEST(BoundingSphere, TransformContainsIntersects) {
     EXPECT_FALSE(s.Intersects(BoundingSphere({5, 0, 0}, 2)));  // touching
 }
 
+// BoundingFrustum against clip space: a point is inside exactly when p * (view * projection) = clip
+// has -w <= x, y <= w and 0 <= z <= w (D3D's rule, which XNA's frustum planes encode).
+bool insideClipSpace(Vector3 p, const Matrix& viewProjection) {
+    const Vector4 c = Vector4::Transform(p, viewProjection);
+    return c.W > 0 && std::fabs(c.X) <= c.W && std::fabs(c.Y) <= c.W && c.Z >= 0 && c.Z <= c.W;
+}
+
+TEST(BoundingFrustum, PlanesAndCornersOfASimpleFrustum) {
+    // Camera at the origin looking down -Z, 90 degrees, square, near 1, far 10: the near plane's
+    // corners are at (+-1, +-1, -1), the far plane's at (+-10, +-10, -10).
+    const Matrix projection = Matrix::CreatePerspectiveFieldOfView(MathHelper::PiOver2, 1.0f, 1.0f, 10.0f);
+    const BoundingFrustum frustum(Matrix::Identity * projection);
+    EXPECT_TRUE(Near(frustum.Near().Normal, {0, 0, 1}));  // outwards: towards the camera
+    EXPECT_NEAR(frustum.Near().D, 1.0f, kEps);
+    EXPECT_TRUE(Near(frustum.Far().Normal, {0, 0, -1}));
+    EXPECT_NEAR(frustum.Far().D, -10.0f, 1e-4f);
+    const float s = std::sqrt(0.5f);
+    EXPECT_TRUE(Near(frustum.Left().Normal, {-s, 0, s}));
+    EXPECT_TRUE(Near(frustum.Top().Normal, {0, s, s}));
+    const auto corners = frustum.GetCorners();
+    EXPECT_TRUE(Near(corners[0], {-1, 1, -1}));
+    EXPECT_TRUE(Near(corners[2], {1, -1, -1}));
+    EXPECT_LT(Vector3::Distance(corners[4], {-10, 10, -10}), 1e-3f);
+    EXPECT_LT(Vector3::Distance(corners[6], {10, -10, -10}), 1e-3f);
+
+    EXPECT_EQ(frustum.Contains(Vector3(0, 0, -5)), ContainmentType::Contains);
+    EXPECT_EQ(frustum.Contains(Vector3(0, 0, -0.5f)), ContainmentType::Disjoint);  // before the near plane
+    EXPECT_EQ(frustum.Contains(Vector3(0, 0, -11)), ContainmentType::Disjoint);    // past the far plane
+    EXPECT_EQ(frustum.Contains(Vector3(6, 0, -5)), ContainmentType::Disjoint);     // right of x = -z
+
+    EXPECT_EQ(frustum.Contains(BoundingSphere({0, 0, -5}, 1)), ContainmentType::Contains);
+    EXPECT_EQ(frustum.Contains(BoundingSphere({0, 0, -5}, 10)), ContainmentType::Intersects);
+    EXPECT_EQ(frustum.Contains(BoundingSphere({20, 0, -5}, 1)), ContainmentType::Disjoint);
+    EXPECT_EQ(frustum.Contains(BoundingSphere({0, 0, 3}, 1)), ContainmentType::Disjoint);  // behind the camera
+    // Centre behind the camera, but the sphere reaches past the near plane (distance 2.5 < 3).
+    EXPECT_EQ(frustum.Contains(BoundingSphere({0, 0, 1.5f}, 3)), ContainmentType::Intersects);
+    EXPECT_FALSE(frustum.Intersects(BoundingSphere({0, 0, 1.5f}, 2)));
+    // Just across the right plane x = -z at z = -5: distance (5.5 - 5) / sqrt(2) = 0.354.
+    EXPECT_TRUE(frustum.Intersects(BoundingSphere({5.5f, 0, -5}, 0.36f)));
+    EXPECT_FALSE(frustum.Intersects(BoundingSphere({5.5f, 0, -5}, 0.35f)));
+}
+
+TEST(BoundingFrustum, AgreesWithClipSpaceForAMovedCamera) {
+    const Matrix view = Matrix::CreateLookAt({3, 9, 17}, {0, 1.5f, 0}, Vector3::Up);
+    const Matrix projection = Matrix::CreatePerspectiveFieldOfView(MathHelper::PiOver4, 4.0f / 3.0f, 0.5f, 60.0f);
+    const Matrix viewProjection = view * projection;
+    const BoundingFrustum frustum(viewProjection);
+    std::mt19937 rng(6);
+    std::uniform_real_distribution<float> coord(-70.0f, 70.0f), radius(0.1f, 8.0f);
+    int inside = 0, outside = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Vector3 p(coord(rng), coord(rng), coord(rng));
+        const bool expected = insideClipSpace(p, viewProjection);
+        ASSERT_EQ(frustum.Contains(p) == ContainmentType::Contains, expected) << i;
+        (expected ? inside : outside)++;
+        // A sphere: Disjoint means no point of it is inside, Contains that all of it is. Checked on
+        // its centre and the six points of its axes (samples of the exact answer).
+        const BoundingSphere sphere(p, radius(rng));
+        const ContainmentType c = frustum.Contains(sphere);
+        const Vector3 axes[7] = {{0, 0, 0}, {1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+        for (const Vector3& axis : axes) {
+            const bool in = insideClipSpace(sphere.Center + axis * (sphere.Radius * 0.999f), viewProjection);
+            if (c == ContainmentType::Disjoint) {
+                ASSERT_FALSE(in) << i;
+            }
+            if (c == ContainmentType::Contains) {
+                ASSERT_TRUE(in) << i;
+            }
+        }
+    }
+    EXPECT_GT(inside, 100);  // the random points test both sides
+    EXPECT_GT(outside, 100);
+}
+
 }  // namespace

@@ -16,7 +16,7 @@ void removeFrom(std::vector<std::unique_ptr<T>>& list, T* item) {
 }  // namespace
 
 //Constructor
-LightManager::LightManager(ContentManager& Content) {
+LightManager::LightManager(ContentManager& Content) : content(Content) {
     //Initialize Directional Lights
     directionalLights.clear();
     //Initialize Spot Lights
@@ -24,8 +24,15 @@ LightManager::LightManager(ContentManager& Content) {
     //Initialize Point Lights
     pointLights.clear();
     //Load the Depth Writing Shader
-    depthWriter = Content.Load<Effect>("Effects/DepthWriter");
-    depthWriter->CurrentTechnique = depthWriter->Techniques[0];
+    // fxport: in DrawShadowMaps, when the first shadow map is drawn.
+}
+
+bool LightManager::HasShadowedLights() const {
+    for (auto& Light : spotLights)
+        if (Light->getIsWithShadows()) return true;
+    for (auto& Light : pointLights)
+        if (Light->getIsWithShadows()) return true;
+    return false;
 }
 
 //Add a Directional Light
@@ -47,7 +54,17 @@ void LightManager::RemoveLight(SpotLight* Light) { removeFrom(spotLights, Light)
 void LightManager::RemoveLight(PointLight* Light) { removeFrom(pointLights, Light); }
 
 //Draw Shadow Maps
-void LightManager::DrawShadowMaps(GraphicsDevice& GraphicsDevice, const std::vector<Model*>& Models) {
+void LightManager::DrawShadowMaps(GraphicsDevice& GraphicsDevice, const std::vector<Model*>& Models,
+                                  const std::function<bool(const SpotLight&)>& spotVisible,
+                                  const std::function<bool(const PointLight&)>& pointVisible) {
+    // fxport: the depth writer is compiled the first time a shadow map is drawn.
+    auto needDepthWriter = [&] {
+        if (depthWriter) return;
+        //Load the Depth Writing Shader
+        depthWriter = content.Load<Effect>("Effects/DepthWriter");
+        depthWriter->CurrentTechnique = depthWriter->Techniques[0];
+    };
+
     //Set States
     GraphicsDevice.BlendState = BlendState::Opaque;
     GraphicsDevice.DepthStencilState = DepthStencilState::Default;
@@ -59,20 +76,26 @@ void LightManager::DrawShadowMaps(GraphicsDevice& GraphicsDevice, const std::vec
         Light->Update();
 
         //Draw it's Shadow Map
-        if (Light->getIsWithShadows()) DrawShadowMap(GraphicsDevice, *Light, Models);
+        if (Light->getIsWithShadows() && (!spotVisible || spotVisible(*Light))) {
+            needDepthWriter();
+            DrawShadowMap(GraphicsDevice, *Light, Models);
+        }
     }
 
     //Foreach PointLight with Shadows
     for (auto& Light : pointLights) {
         //Draw it's Shadow Map
-        if (Light->getIsWithShadows()) DrawShadowMap(GraphicsDevice, *Light, Models);
+        if (Light->getIsWithShadows() && (!pointVisible || pointVisible(*Light))) {
+            needDepthWriter();
+            DrawShadowMap(GraphicsDevice, *Light, Models);
+        }
     }
 }
 
 //Draw a Shadow Map for a Spot Light
 void LightManager::DrawShadowMap(GraphicsDevice& GraphicsDevice, SpotLight& Light, const std::vector<Model*>& Models) {
     //Set Light's Target onto the Graphics Device
-    GraphicsDevice.SetRenderTarget(Light.getShadowMap());
+    GraphicsDevice.SetRenderTarget(&Light.MakeShadowMap());
 
     //Clear Target
     GraphicsDevice.Clear(Color::Transparent);
@@ -108,7 +131,7 @@ void LightManager::DrawShadowMap(GraphicsDevice& GraphicsDevice, PointLight& Lig
     depthWriter->Parameters["DepthPrecision"].SetValue(Light.getRadius());
 
     // #region Forward
-    GraphicsDevice.SetRenderTarget(Light.getShadowMap(), CubeMapFace::PositiveZ);
+    GraphicsDevice.SetRenderTarget(&Light.MakeShadowMap(), CubeMapFace::PositiveZ);
     //Clear Target
     GraphicsDevice.Clear(Color::Transparent);
     //Set global Effect parameters
@@ -118,7 +141,7 @@ void LightManager::DrawShadowMap(GraphicsDevice& GraphicsDevice, PointLight& Lig
     // #endregion
 
     // #region Backward
-    GraphicsDevice.SetRenderTarget(Light.getShadowMap(), CubeMapFace::NegativeZ);
+    GraphicsDevice.SetRenderTarget(&Light.MakeShadowMap(), CubeMapFace::NegativeZ);
     //Clear Target
     GraphicsDevice.Clear(Color::Transparent);
     //Set global Effect parameters
@@ -128,7 +151,7 @@ void LightManager::DrawShadowMap(GraphicsDevice& GraphicsDevice, PointLight& Lig
     // #endregion
 
     // #region Left
-    GraphicsDevice.SetRenderTarget(Light.getShadowMap(), CubeMapFace::NegativeX);
+    GraphicsDevice.SetRenderTarget(&Light.MakeShadowMap(), CubeMapFace::NegativeX);
     //Clear Target
     GraphicsDevice.Clear(Color::Transparent);
     //Set global Effect parameters
@@ -138,7 +161,7 @@ void LightManager::DrawShadowMap(GraphicsDevice& GraphicsDevice, PointLight& Lig
     // #endregion
 
     // #region Right
-    GraphicsDevice.SetRenderTarget(Light.getShadowMap(), CubeMapFace::PositiveX);
+    GraphicsDevice.SetRenderTarget(&Light.MakeShadowMap(), CubeMapFace::PositiveX);
     //Clear Target
     GraphicsDevice.Clear(Color::Transparent);
     //Set global Effect parameters
@@ -148,7 +171,7 @@ void LightManager::DrawShadowMap(GraphicsDevice& GraphicsDevice, PointLight& Lig
     // #endregion
 
     // #region Down
-    GraphicsDevice.SetRenderTarget(Light.getShadowMap(), CubeMapFace::NegativeY);
+    GraphicsDevice.SetRenderTarget(&Light.MakeShadowMap(), CubeMapFace::NegativeY);
     //Clear Target
     GraphicsDevice.Clear(Color::Transparent);
     //Set global Effect parameters
@@ -158,7 +181,7 @@ void LightManager::DrawShadowMap(GraphicsDevice& GraphicsDevice, PointLight& Lig
     // #endregion
 
     // #region Up
-    GraphicsDevice.SetRenderTarget(Light.getShadowMap(), CubeMapFace::PositiveY);
+    GraphicsDevice.SetRenderTarget(&Light.MakeShadowMap(), CubeMapFace::PositiveY);
     //Clear Target
     GraphicsDevice.Clear(Color::Transparent);
     //Set global Effect parameters

@@ -6,6 +6,7 @@
 // destroys it.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -24,7 +25,10 @@ class LightManager {
     //Point Lights
     std::vector<std::unique_ptr<PointLight>> pointLights;
     //Depth Writing Shader
-    Effect* depthWriter;
+    // fxport: loaded with the first shadow map drawn (nullptr before): a scene without shadowed
+    // lights never compiles it.
+    Effect* depthWriter = nullptr;
+    ContentManager& content;
 
 public:
     // #region Get Functions
@@ -53,7 +57,14 @@ public:
     void RemoveLight(PointLight* Light);
 
     //Draw Shadow Maps
-    void DrawShadowMaps(GraphicsDevice& GraphicsDevice, const std::vector<Model*>& Models);
+    // fxport: spotVisible/pointVisible (when given) say whether the camera sees a light's volume; a
+    // light it does not see lights no pixel, so its shadow map is not drawn (nor made) this frame.
+    void DrawShadowMaps(GraphicsDevice& GraphicsDevice, const std::vector<Model*>& Models,
+                        const std::function<bool(const SpotLight&)>& spotVisible = {},
+                        const std::function<bool(const PointLight&)>& pointVisible = {});
+
+    // fxport: whether any light casts shadows (else Game1 runs no shadow-map pass at all).
+    bool HasShadowedLights() const;
 
 private:
     //Draw a Shadow Map for a Spot Light

@@ -18,9 +18,18 @@ PointLight::PointLight(GraphicsDevice& GraphicsDevice, Vector3 Position, float R
     //Set shadowMapResoloution
     this->shadowMapResoloution = shadowMapResoloution;
     //Make ShadowMap
-    shadowMap = std::make_unique<RenderTargetCube>(GraphicsDevice, getShadowMapResoloution(), false,
-                                                   SurfaceFormat::Single, DepthFormat::Depth24Stencil8);
-    shadowMap->Name = "PointLight.shadowMap";
+    // fxport: made on first use (MakeShadowMap).
+    graphicsDevice = &GraphicsDevice;
+}
+
+RenderTargetCube& PointLight::MakeShadowMap() {
+    // The seed's map; made again if the resolution changed since.
+    if (!shadowMap || shadowMap->Size() != getShadowMapResoloution()) {
+        shadowMap = std::make_unique<RenderTargetCube>(*graphicsDevice, getShadowMapResoloution(), false,
+                                                       SurfaceFormat::Single, DepthFormat::Depth24Stencil8);
+        shadowMap->Name = "PointLight.shadowMap";
+    }
+    return *shadowMap;
 }
 
 //Create World Matrix for Deferred Rendering Geometry

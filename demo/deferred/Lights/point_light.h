@@ -46,6 +46,7 @@ public:
     //Get DepthBias
     float getDepthBias() const { return (1.0f / (20 * radius)); }
     //Get ShadowMap
+    // fxport: nullptr until the light's shadow map is first drawn (MakeShadowMap).
     RenderTargetCube* getShadowMap() const { return shadowMap.get(); }
     // #endregion
 
@@ -70,6 +71,13 @@ public:
 
     //Create World Matrix for Deferred Rendering Geometry
     Matrix World() const;
+
+    // fxport: the seed makes the cube map in the constructor; here it is made the first time the
+    // light's shadow map is drawn (see SpotLight::MakeShadowMap). Returns the map.
+    RenderTargetCube& MakeShadowMap();
+
+private:
+    GraphicsDevice* graphicsDevice;
 };
 
 }  // namespace TheCansinDeferredRenderer::Lights

@@ -32,13 +32,23 @@ SpotLight::SpotLight(GraphicsDevice& GraphicsDevice, Vector3 Position, Vector3 D
     // argument; farPlane is the only one left, and DepthPrecision/LightHeight use it as the range).
     projection = Matrix::CreatePerspectiveFieldOfView(FOV, 1.0f, nearPlane, farPlane);
     //Shadow Map
-    shadowMap = std::make_unique<RenderTarget2D>(GraphicsDevice, getShadowMapResoloution(), getShadowMapResoloution(),
-                                                 false, SurfaceFormat::Single, DepthFormat::Depth24Stencil8);
-    shadowMap->Name = "SpotLight.shadowMap";
+    // fxport: made on first use (MakeShadowMap).
+    graphicsDevice = &GraphicsDevice;
     //Attenuation Texture
     attenuationTexture = AttenuationTexture;
     //Create View and World
     Update();
+}
+
+RenderTarget2D& SpotLight::MakeShadowMap() {
+    // The seed's map; made again if the resolution changed since.
+    if (!shadowMap || shadowMap->Width() != getShadowMapResoloution()) {
+        shadowMap = std::make_unique<RenderTarget2D>(*graphicsDevice, getShadowMapResoloution(),
+                                                     getShadowMapResoloution(), false, SurfaceFormat::Single,
+                                                     DepthFormat::Depth24Stencil8);
+        shadowMap->Name = "SpotLight.shadowMap";
+    }
+    return *shadowMap;
 }
 
 //Calculate the Cosine of the LightAngle

@@ -61,11 +61,13 @@ public:
     //Get IsWithShadows
     bool getIsWithShadows() const { return isWithShadows; }
     //Get ShadowMapResoloution
+    // fxport: the seed caps at 2048; the cap is 4096 here (XNA HiDef's largest texture) so that
+    // DemoSettings::spotShadowMapSize can sweep up to it. The seed's 2048 is unchanged.
     int getShadowMapResoloution() const {
-        if (shadowMapResoloution < 2048)
+        if (shadowMapResoloution < 4096)
             return shadowMapResoloution;
         else
-            return 2048;
+            return 4096;
     }
     //Get DepthBias
     float getDepthBias() const { return depthBias; }
@@ -76,6 +78,7 @@ public:
     //Get Projection
     Matrix getProjection() const { return projection; }
     //Get ShadowMap
+    // fxport: nullptr until the light's shadow map is first drawn (MakeShadowMap).
     RenderTarget2D* getShadowMap() const { return shadowMap.get(); }
     //Get Attenuation Texture
     Texture2D* getAttenuationTexture() const { return attenuationTexture; }
@@ -111,6 +114,14 @@ public:
 
     //Update
     void Update();
+
+    // fxport: the seed makes the shadow map in the constructor, for every spot light; here it is
+    // made the first time a shadow map is drawn for the light (LightManager::DrawShadowMaps), so a
+    // light that never casts shadows, or is never seen, has none. Returns the map.
+    RenderTarget2D& MakeShadowMap();
+
+private:
+    GraphicsDevice* graphicsDevice;
 };
 
 }  // namespace TheCansinDeferredRenderer::Lights

@@ -59,6 +59,9 @@ struct GraphicsDevice::Impl {
     GLuint boundFramebuffer = 0;
     int targetWidth = 0, targetHeight = 0;
     void bindTargets();
+    // What targetsBoundSinceMark() returns (the current bindings are added on every SetRenderTargets).
+    std::vector<RenderTargetBinding> boundSinceMark;
+    void noteBoundTargets();
     void generateMipsOfUnboundTargets(const std::vector<RenderTargetBinding>& previous);
 
     // --- shaders set by EffectPass::Apply (a stage left null keeps what was there)

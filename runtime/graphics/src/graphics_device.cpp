@@ -200,6 +200,7 @@ void GraphicsDevice::SetRenderTargets(const std::vector<RenderTargetBinding>& bi
     impl_->targets = bindings;
     impl_->generateMipsOfUnboundTargets(previous);
     impl_->bindTargets();
+    impl_->noteBoundTargets();
     Viewport = fxport::Viewport(0, 0, impl_->targetWidth, impl_->targetHeight);
     // XNA 4 on Windows clears a DiscardContents target (colour to purple, depth and stencil too)
     // whenever it is set, to behave like the Xbox where the contents are lost; code written for it
@@ -212,6 +213,22 @@ void GraphicsDevice::SetRenderTargets(const std::vector<RenderTargetBinding>& bi
 }
 
 std::vector<RenderTargetBinding> GraphicsDevice::GetRenderTargets() const { return impl_->targets; }
+
+void GraphicsDevice::Impl::noteBoundTargets() {
+    std::vector<RenderTargetBinding> now = targets;
+    if (now.empty()) now.push_back(RenderTargetBinding(backBuffer.get()));
+    for (const RenderTargetBinding& b : now)
+        if (std::find(boundSinceMark.begin(), boundSinceMark.end(), b) == boundSinceMark.end()) boundSinceMark.push_back(b);
+}
+
+void GraphicsDevice::markBoundTargets() {
+    impl_->boundSinceMark.clear();
+    impl_->noteBoundTargets();
+}
+
+std::vector<RenderTargetBinding> GraphicsDevice::targetsBoundSinceMark() const { return impl_->boundSinceMark; }
+
+RenderTarget2D& GraphicsDevice::backBufferTarget() { return *impl_->backBuffer; }
 
 void GraphicsDevice::Impl::generateMipsOfUnboundTargets(const std::vector<RenderTargetBinding>& previous) {
     // XNA regenerates a mipmapped render target's chain when it stops being a target.

@@ -26,6 +26,9 @@ GLuint makeDepth(GraphicsDevice& device, DepthFormat format, int width, int heig
 // Unbinds the target from the device's current render targets (back to the back buffer) when it
 // is destroyed while bound.
 void unbindIfTarget(GraphicsDevice& device, const Texture* target) {
+    auto& noted = device.impl().boundSinceMark;
+    noted.erase(std::remove_if(noted.begin(), noted.end(), [&](const RenderTargetBinding& b) { return b.RenderTarget == target; }),
+                noted.end());
     auto& targets = device.impl().targets;
     bool bound = std::any_of(targets.begin(), targets.end(),
                              [&](const RenderTargetBinding& b) { return b.RenderTarget == target; });
@@ -51,6 +54,14 @@ void RenderTarget2D::releaseGpuObjects() {
     Texture2D::releaseGpuObjects();
 }
 
+std::vector<Vector4> RenderTarget2D::GetDataAsVector4() const {
+    throwIfDisposed("GetDataAsVector4");
+    std::vector<Vector4> texels(std::size_t(Width()) * std::size_t(Height()));
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTextureImage(name_, 0, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * sizeof(Vector4)), texels.data());
+    return texels;
+}
+
 RenderTargetCube::RenderTargetCube(fxport::GraphicsDevice& device, int size, bool mipMap,
                                    SurfaceFormat preferredFormat, DepthFormat preferredDepthFormat, int,
                                    fxport::RenderTargetUsage usage)
@@ -66,6 +77,15 @@ void RenderTargetCube::releaseGpuObjects() {
     unbindIfTarget(device(), this);
     device().impl().deleteRenderbuffer(depth_);
     TextureCube::releaseGpuObjects();
+}
+
+std::vector<Vector4> RenderTargetCube::GetDataAsVector4(CubeMapFace face) const {
+    throwIfDisposed("GetDataAsVector4");
+    std::vector<Vector4> texels(std::size_t(Size()) * std::size_t(Size()));
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTextureSubImage(name_, 0, 0, 0, GLint(face), Size(), Size(), 1, GL_RGBA, GL_FLOAT,
+                         GLsizei(texels.size() * sizeof(Vector4)), texels.data());
+    return texels;
 }
 
 }  // namespace fxport

@@ -5,6 +5,7 @@
 #include "fxport/graphics/depth_stencil_state.h"
 #include "fxport/graphics/effect.h"
 #include "fxport/graphics/errors.h"
+#include "fxport/graphics/finite_check.h"
 #include "fxport/graphics/fullscreen_quad.h"
 #include "fxport/graphics/gpu_timer.h"
 #include "fxport/graphics/graphics_device.h"

@@ -134,6 +134,14 @@ public:
     }
     std::vector<RenderTargetBinding> GetRenderTargets() const;
 
+    // fxport, for checks of what a pass wrote (FiniteCheck, fxdemo --check-finite): markBoundTargets()
+    // starts a list, targetsBoundSinceMark() returns every binding (a cube face is its own binding)
+    // that was bound at the mark or set since, each once, in the order first bound. The back buffer
+    // appears as backBufferTarget(). A disposed target drops out of the list.
+    void markBoundTargets();
+    std::vector<RenderTargetBinding> targetsBoundSinceMark() const;
+    RenderTarget2D& backBufferTarget();  // to read (GetDataAsVector4); SetRenderTarget(nullptr) binds it
+
     // Clears every bound target (colour, depth, stencil) inside the viewport, ignoring blend and
     // write masks the way D3D9 Clear does.
     void Clear(Color color);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "fxport/graphics/texture.h"
 
@@ -21,6 +22,9 @@ public:
     int MultiSampleCount() const { return 0; }  // multisampling is not implemented; 0 as XNA reports
     bool isRenderTarget() const override { return true; }
     std::uint32_t depthRenderbuffer() const { return depth_; }
+    // fxport: level 0 as RGBA floats, top row first, whatever the format (GL's conversion: unorm to
+    // [0,1], half to float, absent channels as GL fills them: 0, 0, 1). For checks and references.
+    std::vector<Vector4> GetDataAsVector4() const;
 
 protected:
     void releaseGpuObjects() override;
@@ -43,6 +47,8 @@ public:
     fxport::RenderTargetUsage RenderTargetUsage() const { return usage_; }
     bool isRenderTarget() const override { return true; }
     std::uint32_t depthRenderbuffer() const { return depth_; }
+    // fxport: level 0 of one face as RGBA floats (as RenderTarget2D::GetDataAsVector4).
+    std::vector<Vector4> GetDataAsVector4(CubeMapFace face) const;
 
 protected:
     void releaseGpuObjects() override;

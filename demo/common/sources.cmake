@@ -1,0 +1,3 @@
+# Pieces every fxdemo program shares that are not listed in demo/CMakeLists.txt (paths relative to demo/).
+list(APPEND FXDEMO_SOURCES
+  common/finite_check.cpp)

@@ -1,0 +1,39 @@
+#include "report/measurement.h"
+
+#include <cmath>
+#include <limits>
+
+#include "fxport/graphics/errors.h"
+
+namespace fxport::report {
+
+ImageError compareImages(const std::vector<double>& got, const std::vector<double>& reference, const std::string& what) {
+    if (got.size() != reference.size() || got.empty())
+        throw ArgumentError(what + ": image of " + std::to_string(got.size()) + " values against a reference of " +
+                            std::to_string(reference.size()));
+    ImageError e;
+    double sum = 0;
+    for (std::size_t i = 0; i < got.size(); ++i) {
+        if (std::isnan(got[i]) || std::isnan(reference[i]))
+            throw ArgumentError(what + ": NaN at value " + std::to_string(i) + (std::isnan(got[i]) ? " of the image" : " of the reference"));
+        const double d = got[i] - reference[i];
+        sum += d * d;
+        e.max = std::max(e.max, std::fabs(d));
+    }
+    e.rms = std::sqrt(sum / double(got.size()));
+    e.psnr = e.rms > 0 ? 10.0 * std::log10(1.0 / (e.rms * e.rms)) : std::numeric_limits<double>::infinity();
+    return e;
+}
+
+std::vector<double> toRgb(const std::vector<Color>& pixels) {
+    std::vector<double> rgb;
+    rgb.reserve(pixels.size() * 3);
+    for (const Color& c : pixels) {
+        rgb.push_back(c.R / 255.0);
+        rgb.push_back(c.G / 255.0);
+        rgb.push_back(c.B / 255.0);
+    }
+    return rgb;
+}
+
+}  // namespace fxport::report

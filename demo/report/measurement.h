@@ -1,0 +1,39 @@
+// One row of `fxdemo report`: a demo run with one setting of one knob, its median GPU times and its
+// error against the reference image of the same scene.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "fxport/math.h"
+
+namespace fxport::report {
+
+struct ImageError {
+    double rms = 0;   // over all pixels and the R, G, B channels, values in [0, 1]
+    double max = 0;   // largest channel difference
+    double psnr = 0;  // 10 log10(1 / rms^2) dB (peak 1); infinite when rms is 0
+};
+
+// `got` and `reference` are RGB, 3 doubles per pixel, the same size. Throws ArgumentError when the
+// sizes differ or either holds a NaN.
+ImageError compareImages(const std::vector<double>& got, const std::vector<double>& reference, const std::string& what);
+
+// The back buffer (8-bit) as RGB doubles in [0, 1].
+std::vector<double> toRgb(const std::vector<Color>& pixels);
+
+struct Measurement {
+    std::string demo;       // "rastertek50", "lighting2d", "pointlights", "deferred"
+    std::string knob;       // e.g. "target format"
+    std::string setting;    // e.g. "R16G16B16A16_FLOAT"
+    bool seedDefault = false;  // the seed's own setting
+    std::string size;       // "800x600"
+    int frames = 0;
+    double frameMs = 0;     // median GPU time of the whole frame
+    std::vector<std::pair<std::string, double>> passMs;  // median GPU time per pass
+    ImageError error;
+    std::string reference;  // which reference the error is against
+};
+
+}  // namespace fxport::report

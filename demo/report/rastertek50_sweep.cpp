@@ -1,0 +1,51 @@
+// Rastertek tutorial 50 (seed 004): the G-buffer targets' format. Reference: the CPU rasteriser
+// and shading of rastertek50/reference_check (exact normals, trilinear texture, double).
+#include <memory>
+#include <stdexcept>
+
+#include "rastertek50/applicationclass.h"
+#include "rastertek50/reference_check.h"
+#include "report/sweep.h"
+
+namespace fxport::report {
+
+std::vector<Measurement> sweepRastertek50(const SweepOptions& options) {
+    struct Setting {
+        SurfaceFormat format;
+        const char* name;
+    };
+    const std::vector<Setting> settings = {{SurfaceFormat::Vector4, "R32G32B32A32_FLOAT"},
+                                           {SurfaceFormat::HalfVector4, "R16G16B16A16_FLOAT"},
+                                           {SurfaceFormat::Color, "R8G8B8A8_UNORM"}};
+    // Even sizes: the seed's ortho window maps pixel (x, y) to G-buffer texel (x, y) only then.
+    const int width = options.width ? options.width & ~1 : 800, height = options.height ? options.height & ~1 : 600;
+    std::vector<Measurement> out;
+    for (const Setting& s : settings) {
+        Rastertek50::ApplicationClass application;
+        application.SetGBufferFormat(s.format);
+        if (!application.Initialize(options.platform, FXPORT_HLSL_DIR, width, height))
+            throw std::runtime_error("rastertek50: Initialize failed");
+        GraphicsDevice& device = *application.GetD3D()->GetDevice();
+        auto timer = std::make_unique<GpuTimer>(device);
+        application.SetGpuTimer(timer.get());
+        Measurement m;
+        m.demo = "rastertek50";
+        m.knob = "target format";
+        m.setting = s.name;
+        m.seedDefault = s.format == SurfaceFormat::Vector4;
+        m.reference = "CPU raster + shading (exact)";
+        runTimedFrames(device, *timer, options, [&] { application.Frame(); }, m);
+        const std::vector<double> reference = Rastertek50::ReferenceImage(application);
+        m.error = compareImages(toRgb(device.GetBackBufferData()), reference, "rastertek50 " + m.setting);
+        if (out.empty()) saveReference(device, options, m.demo, reference, width, height);
+        saveImage(device, options, m);
+        application.SetGpuTimer(nullptr);
+        timer.reset();
+        application.Shutdown();
+        out.push_back(m);
+        if (options.progress) options.progress(m);
+    }
+    return out;
+}
+
+}  // namespace fxport::report

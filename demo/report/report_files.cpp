@@ -1,0 +1,84 @@
+#include "report/report_files.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <stdexcept>
+
+#include "report/report_plot.h"
+
+namespace fxport::report {
+
+namespace {
+
+std::string fixed(double v, const char* format) {
+    if (std::isinf(v)) return "inf";
+    char buf[64];
+    std::snprintf(buf, sizeof buf, format, v);
+    return buf;
+}
+
+std::string passes(const Measurement& m, const char* separator) {
+    std::string s;
+    for (const auto& [name, ms] : m.passMs) s += (s.empty() ? "" : separator) + name + " " + fixed(ms, "%.3f");
+    return s;
+}
+
+std::ofstream open(const std::string& path) {
+    std::ofstream out(path);
+    if (!out) throw std::runtime_error("cannot write " + path);
+    return out;
+}
+
+std::string csvField(const std::string& s) {
+    std::string q = "\"";
+    for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return q + "\"";
+}
+
+}  // namespace
+
+void writeCsv(const std::vector<Measurement>& rows, const std::string& path) {
+    std::ofstream out = open(path);
+    out << "demo,knob,setting,seed_default,size,frames,frame_ms_median,rms,max,psnr_db,passes_ms_median,reference\n";
+    for (const Measurement& m : rows)
+        out << m.demo << ',' << csvField(m.knob) << ',' << csvField(m.setting) << ',' << (m.seedDefault ? 1 : 0) << ','
+            << m.size << ',' << m.frames << ',' << fixed(m.frameMs, "%.4f") << ',' << fixed(m.error.rms, "%.6g") << ','
+            << fixed(m.error.max, "%.6g") << ',' << fixed(m.error.psnr, "%.2f") << ',' << csvField(passes(m, "; ")) << ','
+            << csvField(m.reference) << '\n';
+}
+
+void writeMarkdown(const std::vector<Measurement>& rows, const RunInfo& info, const std::string& path) {
+    std::ofstream out = open(path);
+    out << "# fxdemo report: error against GPU time\n\n"
+        << "- command: `" << info.command << "`\n- renderer: " << info.renderer << "\n- date: " << info.date
+        << "\n- frames per setting: " << info.frames << " (times are medians over them; GPU timestamp queries)\n\n"
+        << "Each knob is varied alone, the others at the seed's setting (marked *). Error: RMS, max and PSNR "
+           "(peak 1) over the R, G, B values in [0, 1] of the final 8-bit image against the reference named "
+           "for each demo. Pareto: no other setting of the same demo is both faster and more exact. "
+           "On OSMesa (llvmpipe) every pass is finished before and after it is timed, so its times add up "
+           "but include the synchronisation. The plot is `report.png`.\n";
+    std::map<std::string, std::vector<Measurement>> byDemo;
+    std::vector<std::string> order;
+    for (const Measurement& m : rows) {
+        if (!byDemo.count(m.demo)) order.push_back(m.demo);
+        byDemo[m.demo].push_back(m);
+    }
+    for (const std::string& demo : order) {
+        const std::vector<Measurement>& mine = byDemo[demo];
+        std::vector<bool> pareto(mine.size());
+        for (std::size_t i : paretoFront(mine)) pareto[i] = true;
+        out << "\n## " << demo << " (" << mine.front().size << ")\n\nReference: " << mine.front().reference << ".\n\n"
+            << "| knob | setting | frame ms | RMS | max | PSNR dB | Pareto | per pass ms |\n"
+            << "|---|---|---:|---:|---:|---:|:-:|---|\n";
+        for (std::size_t i = 0; i < mine.size(); ++i) {
+            const Measurement& m = mine[i];
+            out << "| " << m.knob << " | " << m.setting << (m.seedDefault ? " *" : "") << " | " << fixed(m.frameMs, "%.3f")
+                << " | " << fixed(m.error.rms, "%.5f") << " | " << fixed(m.error.max, "%.4f") << " | "
+                << fixed(m.error.psnr, "%.2f") << " | " << (pareto[i] ? "yes" : "") << " | " << passes(m, ", ") << " |\n";
+        }
+    }
+}
+
+}  // namespace fxport::report

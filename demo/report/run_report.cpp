@@ -1,0 +1,162 @@
+// `fxdemo report`: for each demo, sweeps the knobs that trade quality for time and measures both
+// (issue 6, part 1). Each setting builds the demo's game in-process, runs N frames with the GPU
+// timer, reads back the final image and compares it with a reference image of the same scene (see
+// each *_sweep.cpp for which). Writes DIR/report.md, DIR/report.csv, DIR/report.png and each
+// setting's image under DIR/images/.
+//
+//   fxdemo report [--out DIR] [--gpu] [--frames N] [--size WxH] [--quick] [--check] [--demos a,b,...]
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <string>
+
+#include "common/program_registry.h"
+#include "common/run_options.h"
+#include "report/report_files.h"
+#include "report/report_plot.h"
+#include "report/sweep.h"
+
+namespace fxport::report {
+
+namespace {
+
+const char* kUsage =
+    "fxdemo report [--out DIR] [--gpu] [--frames N] [--size WxH] [--quick] [--check] [--demos rastertek50,lighting2d,pointlights,deferred]";
+
+int usage(const std::string& message) {
+    std::fprintf(stderr, "fxdemo report: %s\nusage: %s\n", message.c_str(), kUsage);
+    return 2;
+}
+
+const Measurement* find(const std::vector<Measurement>& rows, const std::string& demo, const std::string& knob,
+                        const std::string& setting) {
+    for (const Measurement& m : rows)
+        if (m.demo == demo && m.knob == knob && m.setting == setting) return &m;
+    return nullptr;
+}
+
+// --check: properties that must hold whatever the machine (ctest). Prints each; false if any fails.
+bool checkReport(const std::vector<Measurement>& rows, const std::string& plot) {
+    bool ok = true;
+    auto expect = [&](bool condition, const std::string& what) {
+        std::printf("check %s: %s\n", what.c_str(), condition ? "ok" : "FAIL");
+        ok = ok && condition;
+    };
+    for (const Measurement& m : rows)
+        expect(m.frameMs > 0 && std::isfinite(m.frameMs) && std::isfinite(m.error.rms) && m.error.max >= m.error.rms,
+               m.demo + " " + m.knob + " " + m.setting + ": time > 0, finite RMS, max >= RMS");
+    // The seed's float32 G-buffer against the exact CPU image: only the back buffer's 8-bit rounding
+    // and edge pixels remain; 8-bit unorm clamps the signed normals, so it must be far worse.
+    const Measurement* f32 = find(rows, "rastertek50", "target format", "R32G32B32A32_FLOAT");
+    const Measurement* u8 = find(rows, "rastertek50", "target format", "R8G8B8A8_UNORM");
+    if (f32 && u8) {
+        expect(f32->error.rms < 2.0 / 255, "rastertek50 R32G32B32A32_FLOAT RMS < 2/255 against the CPU reference");
+        expect(u8->error.rms > 4 * f32->error.rms, "rastertek50 8-bit unorm error > 4x the float32 error");
+    }
+    // More rays can only resolve the casters' outlines better.
+    const Measurement *fewest = nullptr, *most = nullptr;
+    for (const Measurement& m : rows)
+        if (m.demo == "lighting2d" && m.knob == "ray count" && std::isdigit(static_cast<unsigned char>(m.setting.back()))) {
+            if (!fewest) fewest = &m;
+            most = &m;
+        }
+    if (fewest && most && fewest != most)
+        expect(most->error.rms < fewest->error.rms, "lighting2d: " + most->setting + " rays more exact than " + fewest->setting);
+    // A float light map and G-buffer against the chapter's 8-bit ones: no clamp, no 8-bit normals.
+    const Measurement* tutorial = find(rows, "pointlights", "G-buffer formats", "Color/Color/Single, light Color");
+    const Measurement* float32 = find(rows, "pointlights", "G-buffer formats", "Vector4 x2/Single, light Vector4");
+    if (tutorial && float32) expect(float32->error.rms < tutorial->error.rms, "pointlights: float32 formats more exact than the chapter's");
+    expect(std::filesystem::file_size(plot) > 1000, "report.png written");
+    return ok;
+}
+
+int runReport(int argc, char** argv) {
+    demo::CommonOptions common;
+    common.outDir = "fxdemo-out/report";
+    bool quick = false;
+    bool check = false;
+    std::string demos = "rastertek50,lighting2d,pointlights,deferred";
+    std::string command = "fxdemo report";
+    for (int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        std::string error;
+        const int at = i;
+        switch (demo::parseCommonOption(argc, argv, i, common, error)) {
+        case demo::OptionResult::Consumed:
+            if (arg == "--window") return usage("--window: the report runs headless (OSMesa, or EGL with --gpu)");
+            continue;
+        case demo::OptionResult::Error: return usage(error);
+        case demo::OptionResult::NotMine: break;
+        }
+        i = at;
+        if (arg == "--quick") quick = true;
+        else if (arg == "--check") check = true;
+        else if (arg == "--demos" && i + 1 < argc) demos = argv[++i];
+        else return usage("unknown option '" + arg + "'");
+    }
+    SweepOptions options;
+    options.platform = common.platform;
+    options.quick = quick;
+    options.frames = common.frames.value_or(quick ? 1 : (common.platform == "osmesa" ? 3 : 30));
+    if (options.frames < 1) return usage("--frames must be at least 1");
+    bool sizeGiven = false;
+    for (int i = 1; i < argc; ++i) sizeGiven |= std::string(argv[i]) == "--size";
+    if (sizeGiven) options.width = common.width, options.height = common.height;
+    else if (quick) options.width = 96, options.height = 64;
+    options.outDir = common.outDir;
+    options.progress = [](const Measurement& m) {
+        std::printf("  %-12s %-20s %-40s %9.3f ms  RMS %.5f  max %.4f  PSNR %6.2f dB\n", m.demo.c_str(), m.knob.c_str(),
+                    m.setting.c_str(), m.frameMs, m.error.rms, m.error.max, m.error.psnr);
+        std::fflush(stdout);
+    };
+    std::filesystem::create_directories(options.outDir);
+
+    std::vector<Measurement> rows;
+    auto wanted = [&](const std::string& name) { return ("," + demos + ",").find("," + name + ",") != std::string::npos; };
+    for (const std::string& name : {std::string("rastertek50"), std::string("lighting2d"), std::string("pointlights"),
+                                    std::string("deferred"), std::string("-")})
+        if (name != "-" && !wanted(name) && demos.find(name) != std::string::npos) return usage("--demos: " + demos);
+    using Sweep = std::vector<Measurement> (*)(const SweepOptions&);
+    const std::pair<const char*, Sweep> sweeps[] = {{"rastertek50", sweepRastertek50}, {"lighting2d", sweepLighting2d},
+                                                    {"pointlights", sweepPointLights}, {"deferred", sweepDeferred}};
+    int matched = 0;
+    for (const auto& [name, sweep] : sweeps) {
+        if (!wanted(name)) continue;
+        ++matched;
+        std::printf("%s:\n", name);
+        for (Measurement& m : sweep(options)) rows.push_back(m);
+    }
+    if (matched == 0) return usage("--demos names none of rastertek50, lighting2d, pointlights, deferred: '" + demos + "'");
+
+    // A device for the plot's text (and the renderer's name).
+    PresentationParameters parameters;
+    parameters.platform = options.platform;
+    parameters.BackBufferWidth = 64, parameters.BackBufferHeight = 64;
+    GraphicsDevice device(parameters);
+    RunInfo info;
+    info.command = command;
+    info.renderer = device.rendererName();
+    info.frames = options.frames;
+    const std::time_t now = std::time(nullptr);
+    char date[32];
+    std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+    info.date = date;
+    const auto dir = std::filesystem::path(options.outDir);
+    writeCsv(rows, (dir / "report.csv").string());
+    writeMarkdown(rows, info, (dir / "report.md").string());
+    writePlot(device, rows, "fxdemo report: RMS error vs median GPU frame time -- " + info.renderer + ", " + date,
+              (dir / "report.png").string());
+    std::printf("wrote %s/report.md, report.csv, report.png\n", options.outDir.c_str());
+    return check && !checkReport(rows, (dir / "report.png").string()) ? 1 : 0;
+}
+
+}  // namespace
+
+}  // namespace fxport::report
+
+FXDEMO_PROGRAM(report, "fxdemo report [--out DIR] [--gpu] [--frames N] [--size WxH] [--quick] [--check] [--demos a,b,...]",
+               fxport::report::runReport);

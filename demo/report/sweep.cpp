@@ -1,0 +1,70 @@
+#include "report/sweep.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+
+#include "common/frame_loop.h"
+#include "common/pass_timer.h"
+
+namespace fxport::report {
+
+void runTimedFrames(GraphicsDevice& device, GpuTimer& timer, const SweepOptions& options,
+                    const std::function<void()>& frame, Measurement& m) {
+    const bool sync = options.platform == "osmesa";
+    demo::PassTimer::syncDevice = sync ? &device : nullptr;
+    // One more frame than timed: the first (shader programs linked, targets first touched) is dropped.
+    const int run = demo::runFrameLoop(device, timer, false, options.frames + 1, options.frames + 1, [&](int, bool) {
+        frame();
+        return true;
+    });
+    demo::PassTimer::syncDevice = nullptr;
+    m.frames = run - 1;
+    auto median = [](std::vector<double> v) {
+        if (v.size() > 1) v.erase(v.begin());
+        std::sort(v.begin(), v.end());
+        return v.empty() ? 0.0 : (v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]));
+    };
+    m.passMs.clear();
+    for (const GpuTimer::Section& section : timer.Sections()) {
+        if (section.name == "frame") m.frameMs = median(section.milliseconds);
+        else m.passMs.emplace_back(section.name, median(section.milliseconds));
+    }
+    m.size = std::to_string(device.PresentationParameters().BackBufferWidth) + "x" +
+             std::to_string(device.PresentationParameters().BackBufferHeight);
+}
+
+namespace {
+
+std::string slug(std::string s) {
+    for (char& c : s)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '-';
+    return s;
+}
+
+}  // namespace
+
+void saveImage(GraphicsDevice& device, const SweepOptions& options, const Measurement& m) {
+    if (options.outDir.empty()) return;
+    const auto dir = std::filesystem::path(options.outDir) / "images" / m.demo;
+    std::filesystem::create_directories(dir);
+    device.SaveBackBufferAsPng((dir / (slug(m.knob) + "_" + slug(m.setting) + ".png")).string());
+}
+
+void saveReference(GraphicsDevice& device, const SweepOptions& options, const std::string& demo,
+                   const std::vector<double>& rgb, int width, int height) {
+    if (options.outDir.empty()) return;
+    std::vector<Color> pixels(std::size_t(width) * std::size_t(height));
+    for (std::size_t i = 0; i < pixels.size(); ++i) {
+        auto byte = [&](int k) { return int(std::lround(std::clamp(rgb[i * 3 + std::size_t(k)], 0.0, 1.0) * 255)); };
+        pixels[i] = Color(byte(0), byte(1), byte(2), 255);
+    }
+    Texture2D image(device, width, height);
+    image.SetData(pixels);
+    const auto dir = std::filesystem::path(options.outDir) / "images" / demo;
+    std::filesystem::create_directories(dir);
+    image.SaveAsPng((dir / "reference.png").string());
+}
+
+}  // namespace fxport::report

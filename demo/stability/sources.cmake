@@ -1,0 +1,4 @@
+# fxdemo stability (issue 6): stiff and extreme inputs through the real effects, FiniteCheck and CPU references.
+list(APPEND FXDEMO_SOURCES
+  stability/run_stability.cpp
+  stability/stability_cases.cpp)

@@ -1,0 +1,37 @@
+// fxdemo stability: stiff and extreme inputs run through the real effects of hlsl/xna-deferred
+// (unchanged), each result scanned by FiniteCheck and compared with a double-precision CPU
+// reference of the same maths. A case runs once as the tutorial does it ("as written") and, where
+// the tutorial's maths breaks, once more with an opt-in fix chosen by the host (no effect edited).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fxport/graphics.h"
+
+namespace fxport::stability {
+
+struct CaseResult {
+    std::string group;        // "exp-shadow", "far-from-origin", "pow00", "target-size"
+    std::string name;         // "d=180 Single"
+    std::string variant;      // "as written" or the fix, e.g. "light space x0.1"
+    int pixels = 0;           // pixels compared with the reference
+    std::int64_t nonFinite = 0;   // texels FiniteCheck found NaN/Inf in (all passes)
+    std::optional<NonFiniteTarget> first;  // the first pass/target/pixel that produced one
+    std::int64_t saturated = 0;   // finite texels stuck at the format's largest value (65504, FLT_MAX)
+    double rmsError = 0, maxError = 0;  // against the reference (relative where `relative`), finite texels only
+    bool relative = true;
+    std::string note;         // what the numbers mean for this case
+};
+
+struct SuiteOptions {
+    int size = 32;            // targets are size x size (the 1x1 and widest cases aside)
+    std::string hlslDir;      // hlsl/ root
+    bool largest = true;      // also the driver's widest target (max x 1)
+};
+
+// Runs every case on `device`; each case names its passes for FiniteCheck.
+std::vector<CaseResult> runStabilityCases(GraphicsDevice& device, const SuiteOptions& options);
+
+}  // namespace fxport::stability
