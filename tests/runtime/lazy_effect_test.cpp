@@ -204,6 +204,35 @@ TEST_F(LazyEffect, PrecompileCompilesEverythingUpFront) {
     for (const xlate::CompiledShader& s : whole.shaders) EXPECT_FALSE(s.glsl.empty()) << s.entryPoint;
 }
 
+// D3D9: a pass without a vertex shader keeps the one bound. When that is the effect's own (from
+// pass 0), a constant it reads that changed before pass 1's Apply must still reach it, although
+// pass 1's own shader does not read it.
+TEST_F(LazyEffect, KeptVertexShaderSeesConstantsChangedBeforeAPixelOnlyPass) {
+    std::string twoPasses = (dir / "TwoPasses.fx").string();
+    std::ofstream(twoPasses) << "float4x4 Transform;\n"
+                                "float4 Color;\n"
+                                "float4 VS(float4 p : POSITION0) : POSITION0 { return mul(p, Transform); }\n"
+                                "float4 PS() : COLOR0 { return Color; }\n"
+                                "technique T {\n"
+                                "  pass Full { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); }\n"
+                                "  pass PixelOnly { PixelShader = compile ps_3_0 PS(); }\n"
+                                "}\n";
+    Effect effect(device, twoPasses, options);
+    RenderTarget2D target(device, 4, 2, false, SurfaceFormat::Vector4);
+    device.SetRenderTarget(target);
+    device.Clear(Color::Transparent);
+    effect.Parameters["Transform"].SetValue(Matrix::Identity);
+    effect.Parameters["Color"].SetValue(Vector4(1, 1, 1, 1));
+    effect.CurrentTechnique->Passes["Full"].Apply();
+    effect.Parameters["Transform"].SetValue(Matrix::CreateTranslation(1, 0, 0));  // right half only
+    effect.CurrentTechnique->Passes["PixelOnly"].Apply();
+    drawQuad(device);
+    std::vector<float> px = readFloats(target);
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 4; ++x)
+            EXPECT_EQ(px[std::size_t(y * 4 + x) * 4 + 3], x < 2 ? 0.0f : 1.0f) << "pixel " << x << "," << y;
+}
+
 // An HLSL error that only glslang finds (an unknown variable inside a function) surfaces when a
 // technique is first applied, naming the file and line; loading parsed the effect without error.
 // (glslang compiles the whole source for every shader, so the error fails any technique.)

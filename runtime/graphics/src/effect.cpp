@@ -83,10 +83,10 @@ xlate::CompiledEffect compileSource(const Effect::Impl& e, std::vector<std::stri
 }
 
 // The byte ranges of each uniform block a shader reads, sorted and merged.
-std::vector<Effect::Impl::BlockReads> readsOf(const xlate::CompiledShader& shader) {
+std::vector<Effect::Impl::BlockReads> blockReadsOf(const xlate::CompiledShader& shader, std::size_t blockCount) {
     std::vector<Effect::Impl::BlockReads> out;
     for (const xlate::UniformRange& r : shader.uniformRangesRead) {
-        if (r.size <= 0) continue;
+        if (r.size <= 0 || r.block < 0 || std::size_t(r.block) >= blockCount) continue;
         auto it = std::find_if(out.begin(), out.end(), [&](const auto& b) { return b.block == r.block; });
         if (it == out.end()) it = out.insert(out.end(), Effect::Impl::BlockReads{r.block, {}});
         it->ranges.push_back({r.offset, r.offset + r.size});
@@ -298,7 +298,7 @@ Effect::Impl::Code& Effect::Impl::addCode(std::shared_ptr<const xlate::CompiledE
             p.label = displayName + ": " + shader.entryPoint + " (" + shader.profile.name + ")";
             p.program = device.createProgram(glStage(shader.profile.stage), shader.glsl, p.label);
             code->programs.push_back(p);
-            code->reads.push_back(readsOf(shader));
+            code->reads.push_back(blockReadsOf(shader, blocks.size()));
         }
     } catch (...) {
         for (ShaderProgram& p : code->programs) device.deleteProgram(p.program);

@@ -90,6 +90,13 @@ struct Effect::Impl {
     // Uploads the dirty bytes of each block that `reads` covers; what it does not cover stays dirty
     // (as one range: the hull of what is left, so some bytes may be sent twice, never too few).
     void uploadRead(const std::vector<BlockReads>& reads);
+    // What a program of this effect reads; nullptr for another effect's program.
+    const std::vector<BlockReads>* readsOf(const ShaderProgram* program) const {
+        for (const auto& code : codes)
+            for (std::size_t i = 0; i < code->programs.size(); ++i)
+                if (&code->programs[i] == program) return &code->reads[i];
+        return nullptr;
+    }
 
     // Block layouts: start provisional, then take the real ones from a compiled effect.
     void layOutProvisionally();

@@ -334,6 +334,12 @@ void EffectPass::Apply() {
             device.SamplerStates[sampler.unit] = mergeSampler(device.SamplerStates[sampler.unit], sampler.state);
         }
     }
+    // A stage the pass leaves alone keeps its shader (D3D9). When that is one of this effect's (an
+    // earlier pass's vertex shader under a pixel-shader-only pass), it reads this effect's
+    // constants too: send what changed of those.
+    for (int stage = 0; stage < kStageCount; ++stage)
+        if (choices[stage]->shaders.empty() && d.shaders[std::size_t(stage)])
+            if (const auto* reads = e.readsOf(d.shaders[std::size_t(stage)])) e.uploadRead(*reads);
     applyStates(e, pass.states, device);
     d.passApplied = true;
 }
