@@ -13,6 +13,7 @@
 // float32's relative precision, and the light pass needs nothing else (it inverts whatever
 // projection the host gives). The host then depth-tests GreaterEqual and clears depth to 0 -- the
 // effects are unchanged.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 

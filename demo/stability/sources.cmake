@@ -4,4 +4,5 @@ list(APPEND FXDEMO_SOURCES
   stability/stability_cases.cpp
   stability/case_support.cpp
   stability/gbuffer_pass.cpp
-  stability/depth_range_cases.cpp)
+  stability/depth_range_cases.cpp
+  stability/normal_cases.cpp)

@@ -292,6 +292,7 @@ std::vector<CaseResult> runStabilityCases(GraphicsDevice& device, const SuiteOpt
     }
 
     runDepthRangeCases(device, options, results);
+    runNormalCases(device, options, results);
     return results;
 }
 
