@@ -60,6 +60,17 @@ struct LightInputs {
 void drawLightOverTarget(GraphicsDevice& device, Effect& effect, RenderTarget2D& target, const LightInputs& inputs,
                          const std::string& passName, CaseResult& r);
 
+// xna-deferred PointLight.fx (Shadows off) in double, for pixel (x, y) of an n x n full-target
+// light pass whose G-buffer holds the plane z = -distance seen by a camera at the origin looking
+// down -z (fov `fov`, aspect 1), with G-buffer normal N (view = world space: inverseView = I).
+struct PointLightScene {
+    double distance, fov;
+    double light[3];
+    double radius;
+};
+void pointLightReference(const PointLightScene& scene, int x, int y, int n, const double N[3], double specularIntensity,
+                         double specularPower, double out[4]);
+
 // Light map read back as RGBA floats.
 std::vector<Vector4> readBack(RenderTarget2D& target);
 

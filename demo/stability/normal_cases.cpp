@@ -29,26 +29,7 @@ namespace {
 
 constexpr double kDistance = 5, kNear = 0.1, kFar = 100, kFov = 3.14159265358979 / 4, kRadius = 20;
 const double kLight[3] = {1, 2, -3};
-
-// The CPU reference: PointLight.fx's Phong (double) at pixel (x, y) for G-buffer normal N.
-void pointLightReference(int x, int y, int n, const double N[3], double specularIntensity, double specularPower,
-                         double out[4]) {
-    const double s = 1 / std::tan(kFov / 2);
-    const double P[3] = {pixelNdcX(x, n) * kDistance / s, pixelNdcY(y, n) * kDistance / s, -kDistance};
-    double L[3] = {kLight[0] - P[0], kLight[1] - P[1], kLight[2] - P[2]};
-    const double len = std::sqrt(L[0] * L[0] + L[1] * L[1] + L[2] * L[2]);
-    const double attenuation = std::clamp(1 - std::fmax(0.01, len) / (kRadius / 2), 0.0, 1.0);
-    for (double& c : L) c /= len;
-    const double NdotI = -(N[0] * L[0] + N[1] * L[1] + N[2] * L[2]);  // dot(N, -L)
-    double R[3] = {-L[0] - 2 * NdotI * N[0], -L[1] - 2 * NdotI * N[1], -L[2] - 2 * NdotI * N[2]};
-    const double rLen = std::sqrt(R[0] * R[0] + R[1] * R[1] + R[2] * R[2]);
-    const double eLen = std::sqrt(P[0] * P[0] + P[1] * P[1] + P[2] * P[2]);
-    const double RE = -(R[0] * P[0] + R[1] * P[1] + R[2] * P[2]) / (rLen * eLen);
-    const double NL = N[0] * L[0] + N[1] * L[1] + N[2] * L[2];
-    const double specular = specularIntensity * std::pow(std::clamp(RE, 0.0, 1.0), specularPower);
-    out[0] = out[1] = out[2] = attenuation * NL;
-    out[3] = attenuation * specular;
-}
+const PointLightScene kScene{kDistance, kFov, {kLight[0], kLight[1], kLight[2]}, kRadius};
 
 struct NormalInput {
     const char* name;
@@ -109,7 +90,7 @@ CaseResult runNormal(GraphicsDevice& device, Effect& gbuffer, Effect& pointLight
             const double got[4] = {t.X, t.Y, t.Z, t.W};
             auto errorFor = [&](const double normal[3]) {
                 double ref[4], worst = 0;
-                pointLightReference(x, y, n, normal, q.specularIntensity, specularPower, ref);
+                pointLightReference(kScene, x, y, n, normal, q.specularIntensity, specularPower, ref);
                 for (int c = 0; c < 4; ++c) worst = std::fmax(worst, std::fabs(got[c] - ref[c]));
                 return worst;
             };

@@ -5,4 +5,5 @@ list(APPEND FXDEMO_SOURCES
   stability/case_support.cpp
   stability/gbuffer_pass.cpp
   stability/depth_range_cases.cpp
-  stability/normal_cases.cpp)
+  stability/normal_cases.cpp
+  stability/point_light_cases.cpp)

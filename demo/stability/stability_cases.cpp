@@ -293,6 +293,7 @@ std::vector<CaseResult> runStabilityCases(GraphicsDevice& device, const SuiteOpt
 
     runDepthRangeCases(device, options, results);
     runNormalCases(device, options, results);
+    runPointLightCases(device, options, results);
     return results;
 }
 
