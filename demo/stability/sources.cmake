@@ -6,4 +6,5 @@ list(APPEND FXDEMO_SOURCES
   stability/gbuffer_pass.cpp
   stability/depth_range_cases.cpp
   stability/normal_cases.cpp
-  stability/point_light_cases.cpp)
+  stability/point_light_cases.cpp
+  stability/spot_cone_cases.cpp)

@@ -294,6 +294,7 @@ std::vector<CaseResult> runStabilityCases(GraphicsDevice& device, const SuiteOpt
     runDepthRangeCases(device, options, results);
     runNormalCases(device, options, results);
     runPointLightCases(device, options, results);
+    runSpotConeCases(device, options, results);
     return results;
 }
 
