@@ -7,4 +7,5 @@ list(APPEND FXDEMO_SOURCES
   stability/depth_range_cases.cpp
   stability/normal_cases.cpp
   stability/point_light_cases.cpp
-  stability/spot_cone_cases.cpp)
+  stability/spot_cone_cases.cpp
+  stability/unwrap_cases.cpp)
