@@ -11,7 +11,9 @@
 // and C/V for SSAO, F1 without SSAO, Escape quits); images are written only with --out.
 // --gbuffer: the G-buffer's formats (tutorial: Rgba64, Rgba64, Vector2; color8: Color, Color, Single;
 // float32: Vector4 x3). --spot-shadow N (256..4096, 2048) / --point-shadow N (64..1024, 256): shadow
-// map sizes. --no-ssao: no SSAO at all; --ssao-half: SSAO and its blur at half size.
+// map sizes. --no-ssao: no SSAO at all; --ssao-half: SSAO and its blur at half size. --explain:
+// print the effects, render targets (bytes) and passes built and left out, with each effect's
+// compile time, against the all-features scene (built once more by the same code).
 // --targets: every debug-sheet tile also at full size in DIR/targets/. --lights: keep only some of
 // the seed's lights (d, s, p). --sync-passes (default on OSMesa): finish the device around each timed
 // pass, so that a deferring CPU rasterizer's work is counted in the right pass.
@@ -34,7 +36,7 @@ int usage(const char* message) {
                  "                       [--camera PX,PY,PZ,TX,TY,TZ] [--ssao RADIUS,SCALE] [--lights dsp]\n"
                  "                       [--no-debug-views] [--targets] [--[no-]sync-passes] [--content DIR] [--hlsl DIR]\n"
                  "                       [--gbuffer tutorial|color8|float32] [--spot-shadow N] [--point-shadow N]\n"
-                 "                       [--no-ssao] [--ssao-half]\n");
+                 "                       [--no-ssao] [--ssao-half] [--explain]\n");
     for (const auto& [name, program] : fxdemo::programs()) std::fprintf(stderr, "       %s\n", program.usage.c_str());
     std::fprintf(stderr, "every program also takes --check-finite: after each pass, stop at the first NaN/Inf in a target\n");
     return 2;
@@ -121,6 +123,8 @@ int main(int argc, char** argv) {
             options.syncPasses = true;
         } else if (arg == "--no-sync-passes") {
             options.syncPasses = false;
+        } else if (arg == "--check-finite") {
+            options.checkFinite = true;
         } else if (arg == "--gbuffer") {
             using Formats = TheCansinDeferredRenderer::Game1::DemoSettings::GBufferFormats;
             const std::string v = i + 1 < argc ? argv[++i] : "";
@@ -142,8 +146,8 @@ int main(int argc, char** argv) {
             options.ssao = false;
         } else if (arg == "--ssao-half") {
             options.ssaoHalfResolution = true;
-        } else if (arg == "--check-finite") {
-            options.checkFinite = true;
+        } else if (arg == "--explain") {
+            options.explain = true;
         } else if (arg == "--targets") {
             options.fullSizeImages = true;
         } else if (arg == "--content") {

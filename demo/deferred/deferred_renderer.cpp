@@ -74,11 +74,13 @@ Model& DeferredRenderer::PointLightGeometry() {
 }
 
 bool DeferredRenderer::IsVisible(const Lights::SpotLight& light, const BaseCamera& Camera) {
+    if (!frustumCulling) return true;
     const BoundingSphere volume = SpotLightGeometry().Meshes[0].BoundingSphere.Transform(light.getWorld());
     return BoundingFrustum(Camera.View * Camera.Projection).Intersects(volume);
 }
 
 bool DeferredRenderer::IsVisible(const Lights::PointLight& light, const BaseCamera& Camera) {
+    if (!frustumCulling) return true;
     const BoundingSphere volume = PointLightGeometry().Meshes[0].BoundingSphere.Transform(light.World());
     return BoundingFrustum(Camera.View * Camera.Projection).Intersects(volume);
 }

@@ -63,7 +63,9 @@ public:
 
     // fxport additions (issue 6): frustum culling of the light volumes and what the last Draw did.
     // Whether the camera's frustum meets the light's volume (its geometry's bounding sphere under
-    // the light's World); loads the volume's model if it was not yet.
+    // the light's World); loads the volume's model if it was not yet. Always true with
+    // frustumCulling off (the seed's behaviour: every light drawn, every shadow map made).
+    bool frustumCulling = true;
     bool IsVisible(const Lights::SpotLight& light, const BaseCamera& Camera);
     bool IsVisible(const Lights::PointLight& light, const BaseCamera& Camera);
     struct FrameStats {

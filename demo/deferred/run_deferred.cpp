@@ -5,14 +5,17 @@
 
 #include "common/finite_check.h"
 #include "common/frame_loop.h"
+#include "deferred/build_report.h"
 #include "deferred/debug_sheet.h"
 #include "deferred/game1.h"
 #include "fxport/platform/graphics_context.h"
 
 namespace TheCansinDeferredRenderer {
 
-int RunDeferred(const RunOptions& options) {
-    Game1 game;
+namespace {
+
+// The options that shape the game, set before Start().
+void Configure(Game1& game, const RunOptions& options) {
     game.graphics.PreferredBackBufferWidth = options.width;
     game.graphics.PreferredBackBufferHeight = options.height;
     game.graphics.platform = options.platform;
@@ -28,6 +31,39 @@ int RunDeferred(const RunOptions& options) {
     game.demo.pointShadowMapSize = options.pointShadowMapSize;
     game.demo.ssao = options.ssao;
     game.demo.ssaoHalfResolution = options.ssaoHalfResolution;
+    // --explain: every effect compiled by xlate in this process, so that the load times compare.
+    if (options.explain) game.Content.effectOptions.useCache = false;
+}
+
+// --explain's yardstick: the seed's scene with every feature (all three lights with shadows, SSAO,
+// no frustum culling) at the same size, camera and knobs, built and drawn once by the same code.
+BuildReport ReportAllFeatures(const RunOptions& options) {
+    // This game has its own device: the main run's --check-finite scan stays with the main run.
+    FiniteCheck* const mainRunCheck = PassTimer::finiteCheck;
+    PassTimer::finiteCheck = nullptr;
+    Game1 game;
+    Configure(game, options);
+    game.demo.ssao = true;
+    game.Start();
+    game.getDeferredRenderer().frustumCulling = false;
+    GpuTimer timer(*game.GraphicsDevice);
+    game.getDeferredRenderer().setGpuTimer(&timer);
+    game.getSSAO().setGpuTimer(&timer);
+    game.demo.gpuTimer = &timer;
+    game.Tick();
+    timer.EndFrame();
+    timer.Finish();
+    BuildReport report = ReportBuild(game, &timer);
+    game.demo.gpuTimer = nullptr;
+    PassTimer::finiteCheck = mainRunCheck;
+    return report;
+}
+
+}  // namespace
+
+int RunDeferred(const RunOptions& options) {
+    Game1 game;
+    Configure(game, options);
 
     // The timer needs the device, which Start() makes: attach it after Start, before the first frame.
     game.Start();
@@ -75,6 +111,11 @@ int RunDeferred(const RunOptions& options) {
         WriteDebugSheet(game, debugPath,
                         options.fullSizeImages ? (std::filesystem::path(options.outDir) / "targets").string() : "");
         std::printf("wrote %s and %s\n", finalPath.c_str(), debugPath.c_str());
+    }
+
+    if (options.explain) {
+        const BuildReport built = ReportBuild(game, timer.get());
+        PrintExplain(stdout, built, ReportAllFeatures(options));
     }
     return 0;
 }

@@ -27,13 +27,14 @@ struct RunOptions {
     std::string hlslDir;            // empty: FXPORT_HLSL_DIR
     bool fullSizeImages = false;    // also every debug tile at full size under DIR/targets/
     std::optional<bool> syncPasses; // finish the device around timed passes; default: on for osmesa
-    bool checkFinite = false;       // --check-finite: scan every pass's targets for NaN/Inf
     // Game1::DemoSettings' quality/cost knobs (--gbuffer, --spot-shadow, --point-shadow, --no-ssao, --ssao-half).
     Game1::DemoSettings::GBufferFormats gbufferFormats = Game1::DemoSettings::GBufferFormats::Tutorial;
     int spotShadowMapSize = 2048;
     int pointShadowMapSize = 256;
     bool ssao = true;
     bool ssaoHalfResolution = false;
+    bool explain = false;           // --explain: print what was built and left out (deferred/build_report.h)
+    bool checkFinite = false;       // --check-finite: scan every pass's targets for NaN/Inf
 };
 
 // Returns the process exit code.

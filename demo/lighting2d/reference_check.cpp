@@ -143,10 +143,10 @@ void unwrapRef(const Setup& s, const LightCapture& l, int x, int y, Range out[2]
     }
 }
 
-bool checkLight(LightRenderer& r, const Setup& s, const LightCapture& l) {
+bool checkLight(LightRenderer& r, const Setup& s, const LightCapture& l, int index) {
     const int W = s.W, H = s.H;
-    std::printf(" first %s light at (%g, %g), radius %g, power %g\n", l.isSpot ? "spot" : "point", l.posX, l.posY,
-                double(l.radius), double(l.power));
+    std::printf(" light %d: %s light at (%g, %g), radius %g, power %g\n", index, l.isSpot ? "spot" : "point", l.posX,
+                l.posY, double(l.radius), double(l.power));
     if (!l.valid) {
         std::printf("  not captured: FAIL\n");
         return false;
@@ -284,11 +284,165 @@ bool checkLight(LightRenderer& r, const Setup& s, const LightCapture& l) {
     return pass;
 }
 
+
+// ---- per-pixel intervals (accumulation and final image) ------------------------------------
+
+// What the GPU may have written: per pixel and channel, [lo, hi] in LSB.
+struct RefImage {
+    int W = 0, H = 0;
+    std::vector<double> lo, hi;
+    RefImage(int w, int h) : W(w), H(h), lo(std::size_t(w) * std::size_t(h) * 4), hi(lo.size()) {}
+    std::size_t at(int x, int y, int c) const { return (std::size_t(y) * std::size_t(W) + std::size_t(x)) * 4 + std::size_t(c); }
+    void set(int x, int y, int c, double l, double h) { lo[at(x, y, c)] = l, hi[at(x, y, c)] = h; }
+};
+
+double channel(const Color& p, int c) { return c == 0 ? p.R : c == 1 ? p.G : c == 2 ? p.B : p.A; }
+
+// Every sample inside its interval; and the GPU image moved by one pixel (in x, then in y) must fail
+// on at least half of the samples where it differs from the unshifted image by more than 1 LSB (and
+// the unshifted sample passed): the bound is tight enough to see a shift.
+bool compare(const char* name, const char* bound, const RefImage& ref, const std::vector<Color>& gpu) {
+    long samples = 0, fails = 0, changed[2] = {0, 0}, shiftedFails[2] = {0, 0};
+    double maxExcess = 0, widthSum = 0;
+    int wx = 0, wy = 0, wc = 0;
+    auto G = [&](int x, int y, int c) { return channel(gpu[std::size_t(y) * std::size_t(ref.W) + std::size_t(x)], c); };
+    for (int y = 0; y < ref.H; ++y)
+        for (int x = 0; x < ref.W; ++x)
+            for (int c = 0; c < 4; ++c) {
+                const std::size_t i = ref.at(x, y, c);
+                const double g = G(x, y, c), excess = std::max(ref.lo[i] - g, g - ref.hi[i]);
+                ++samples;
+                widthSum += ref.hi[i] - ref.lo[i];
+                if (excess > 0) {
+                    ++fails;
+                    if (excess > maxExcess) maxExcess = excess, wx = x, wy = y, wc = c;
+                    continue;
+                }
+                for (int k = 0; k < 2; ++k) {
+                    const int sx = k == 0 ? x - 1 : x, sy = k == 0 ? y : y - 1;
+                    if (sx < 0 || sy < 0) continue;
+                    const double shifted = G(sx, sy, c);
+                    if (std::fabs(shifted - g) <= 1.0) continue;
+                    ++changed[k];
+                    if (shifted < ref.lo[i] || shifted > ref.hi[i]) ++shiftedFails[k];
+                }
+            }
+    const bool shiftSeen = changed[0] > 0 && changed[1] > 0 && 2 * shiftedFails[0] >= changed[0] &&
+                           2 * shiftedFails[1] >= changed[1];
+    std::printf("  %-26s %ld of %ld samples outside (max by %.3g); mean interval width %.3g; bound: %s\n", name, fails,
+                samples, maxExcess, samples ? widthSum / double(samples) : 0.0, bound);
+    if (fails)
+        std::printf("  %-26s worst at (%d, %d) channel %d: gpu %g, reference [%g, %g]\n", "", wx, wy, wc, G(wx, wy, wc),
+                    ref.lo[ref.at(wx, wy, wc)], ref.hi[ref.at(wx, wy, wc)]);
+    std::printf("  %-26s 1-pixel shift: fails %ld of %ld changed samples in x, %ld of %ld in y: %s\n", "",
+                shiftedFails[0], changed[0], shiftedFails[1], changed[1], shiftSeen ? "seen" : "NOT SEEN");
+    const bool pass = fails == 0 && shiftSeen;
+    std::printf("  %-26s %s\n", "", pass ? "ok" : "FAIL");
+    return pass;
+}
+
+// A SpriteBatch LINEAR sample of a W x H Color texture drawn 1:1 at pixel (x, y): texel (x, y) with
+// weight 255/256 per axis, its right/lower neighbours with 1/256 (clamped, or wrapped with `wrap`).
+// The interval spans the texel and the filtered value, +-1 LSB where the texels differ (8-bit
+// filters round after the horizontal lerps and again after the vertical one). Channel c, LSB.
+void linearSample(const std::vector<Color>& img, int W, int H, int x, int y, int c, bool wrap, double& lo, double& hi) {
+    auto T = [&](int i, int j) {
+        i = wrap ? (i % W + W) % W : std::clamp(i, 0, W - 1);
+        j = wrap ? (j % H + H) % H : std::clamp(j, 0, H - 1);
+        return channel(img[std::size_t(j) * std::size_t(W) + std::size_t(i)], c);
+    };
+    const double f = 1.0 / 256.0;
+    const double t00 = T(x, y), t10 = T(x + 1, y), t01 = T(x, y + 1), t11 = T(x + 1, y + 1);
+    const double filtered = (1 - f) * ((1 - f) * t00 + f * t10) + f * ((1 - f) * t01 + f * t11);
+    lo = std::min(t00, filtered), hi = std::max(t00, filtered);
+    if (t00 != t10 || t00 != t01 || t00 != t11) lo -= 1.0, hi += 1.0;
+    lo = std::max(lo, 0.0), hi = std::min(hi, 255.0);
+}
+
+// 8-bit rounding of a value in [lo, hi] LSB, with float32 shader error around a half.
+void roundRange(double& lo, double& hi) {
+    lo = std::clamp(std::floor(lo - 0.05 + 0.5), 0.0, 255.0);
+    hi = std::clamp(std::floor(hi + 0.05 + 0.5), 0.0, 255.0);
+}
+
+// AccumulateLightMaps: lightMap cleared to black, then for each light
+// spriteBatch.Draw(verticalBlurTarget, fullScreen, light.color) with BlendState.Additive
+// (SourceAlpha, One): every blurred map (alpha 255), tinted, rounded to 8 bits, added, saturating.
+bool checkAccumulation(LightRenderer& r, const CheckCapture& capture, int W, int H, const std::vector<Color>& gpu) {
+    RefImage ref(W, H);
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            double sumLo[4] = {0, 0, 0, 255}, sumHi[4] = {0, 0, 0, 255};
+            for (const LightCapture& l : capture.lights) {
+                double aLo, aHi;
+                linearSample(l.vBlur, W, H, x, y, 3, false, aLo, aHi);
+                for (int c = 0; c < 3; ++c) {
+                    double lo, hi;
+                    linearSample(l.vBlur, W, H, x, y, c, false, lo, hi);
+                    const double tint = channel(l.color, c) / 255.0, alpha = channel(l.color, 3) / 255.0;
+                    lo *= tint * aLo / 255 * alpha, hi *= tint * aHi / 255 * alpha;  // colour * SourceAlpha
+                    roundRange(lo, hi);
+                    sumLo[c] += lo, sumHi[c] += hi;
+                }
+            }
+            for (int c = 0; c < 4; ++c) ref.set(x, y, c, std::min(sumLo[c], 255.0), std::min(sumHi[c], 255.0));
+        }
+    (void)r;
+    std::printf(" accumulation of %zu lights (AccumulateLightMaps, from the GPU's blurred maps):\n", capture.lights.size());
+    return compare("lightMap", "per light: LINEAR sample +-1 LSB, tint, 8-bit rounding; summed, saturating", ref, gpu);
+}
+
+// RenderFinalScene: LightBlend.fx over backBufferCache (s0, SpriteBatch's LinearClamp) and lightMap
+// (s1: Textures[1], its sampler state the device's: clamp or wrap accepted), AlphaBlend; then
+// midGroundTarget with SpriteBatch's defaults (AlphaBlend, LinearClamp).
+bool checkFinal(LightRenderer& r, int W, int H, const std::vector<Color>& lightMap, const std::vector<Color>& back) {
+    const std::vector<Color> background = r.backBufferCache->GetData<Color>();
+    const std::vector<Color> casters = r.midGroundTarget->GetData<Color>();
+    const double minLight = double(r.minLight);
+    RefImage ref(W, H);
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            // LightBlend.fx's output, rounded to 8 bits
+            double out[4][2];
+            for (int c = 0; c < 4; ++c) {
+                double bLo, bHi, lLo, lHi, wLo, wHi;
+                linearSample(background, W, H, x, y, c, false, bLo, bHi);
+                linearSample(lightMap, W, H, x, y, c, false, lLo, lHi);
+                linearSample(lightMap, W, H, x, y, c, true, wLo, wHi);
+                lLo = std::min(lLo, wLo), lHi = std::max(lHi, wHi);
+                if (c < 3) {
+                    lLo = lLo * (1 - minLight) + minLight * 255, lHi = lHi * (1 - minLight) + minLight * 255;
+                }
+                out[c][0] = bLo * lLo / 255, out[c][1] = bHi * lHi / 255;
+                roundRange(out[c][0], out[c][1]);
+            }
+            // AlphaBlend (One, InverseSourceAlpha) over what the back buffer held: only an opaque
+            // result makes that irrelevant; otherwise anything is accepted.
+            const bool opaque = out[3][0] == 255;
+            double gA[2];
+            linearSample(casters, W, H, x, y, 3, false, gA[0], gA[1]);
+            for (int c = 0; c < 4; ++c) {
+                double dst[2] = {opaque ? out[c][0] : 0.0, opaque ? out[c][1] : 255.0};
+                double g[2];
+                linearSample(casters, W, H, x, y, c, false, g[0], g[1]);
+                double lo = g[0] + dst[0] * (1 - gA[1] / 255), hi = g[1] + dst[1] * (1 - gA[0] / 255);
+                if (gA[0] > 0 && gA[1] < 255) lo -= 1, hi += 1;  // the blend's 8-bit multiply
+                roundRange(lo, hi);
+                ref.set(x, y, c, lo, hi);
+            }
+        }
+    std::printf(" final image (RenderFinalScene, from the GPU's backBufferCache, lightMap and midGroundTarget; MinLight %g):\n",
+                minLight);
+    return compare("back buffer", "LINEAR samples +-1 LSB, LightBlend.fx, 8-bit rounding, AlphaBlend of the casters",
+                   ref, back);
+}
+
 }  // namespace
 
 void CaptureLight(LightRenderer& r, const Light& light, bool isSpot, LightCapture& out) {
     out.valid = true;
     out.isSpot = isSpot;
+    out.color = light.color;
     out.posX = light.Position.X, out.posY = light.Position.Y;
     out.power = light.Power, out.radius = light.radius;
     if (isSpot) {
@@ -307,12 +461,25 @@ void CaptureLight(LightRenderer& r, const Light& light, bool isSpot, LightCaptur
 bool CheckLighting(LightRenderer& r, const CheckCapture& capture) {
     Setup s;
     s.W = r.midGroundTarget->Width(), s.H = r.midGroundTarget->Height();
+    // Read first: the back buffer as RenderFinalScene left it.
+    const std::vector<Color> back = r.GraphicsDevice.GetBackBufferData();
+    if (r.unwrapTarget->Width() != s.W || r.unwrapTarget->Format() != SurfaceFormat::HdrBlendable) {
+        std::printf("CPU reference: models the seed's W x W RGBA16F unwrap target only (here %d rays, format %d): FAIL\n",
+                    r.unwrapTarget->Width(), int(r.unwrapTarget->Format()));
+        return false;
+    }
     const float fw = float(s.W), fh = float(s.H);
     s.TW = fw, s.TH = fh, s.Diag = double(Vector2(fw, fh).Length());
     s.casters = r.midGroundTarget->GetData<Color>();
-    std::printf("CPU reference (double) of the per-light steps, %dx%d, lightBias %g:\n", s.W, s.H, double(r.lightBias));
-    bool pass = checkLight(r, s, capture.spot);
-    pass &= checkLight(r, s, capture.point);
+    const std::size_t lights = r.spotLights.size() + r.pointLights.size();
+    std::printf("CPU reference (double) of every step, %dx%d, lightBias %g, %zu lights:\n", s.W, s.H, double(r.lightBias),
+                lights);
+    bool pass = capture.lights.size() == lights;
+    if (!pass) std::printf("  %zu lights captured of %zu: FAIL\n", capture.lights.size(), lights);
+    for (std::size_t i = 0; i < capture.lights.size(); ++i) pass &= checkLight(r, s, capture.lights[i], int(i));
+    const std::vector<Color> lightMap = r.lightMap->GetData<Color>();
+    pass &= checkAccumulation(r, capture, s.W, s.H, lightMap);
+    pass &= checkFinal(r, s.W, s.H, lightMap, back);
     std::printf("  %s\n", pass ? "PASS" : "FAIL");
     return pass;
 }

@@ -6,9 +6,9 @@
 // LightRenderer's Begin/End pattern, with three point lights and three spot lights, then
 // DrawLitScene(). Headless (OSMesa) by default: N frames (3), then DIR/final.png (the back buffer),
 // DIR/debug.png (a sheet of the intermediate targets) and each of them in DIR/targets/, and the
-// median GPU time of each step. --gpu: EGL; --window: GLFW (Escape quits). --check: compare the first
-// spot light's and the first point light's targets of the last frame with CPU references of the
-// effects (reference_check.h); exit 1 if off.
+// median GPU time of each step. --gpu: EGL; --window: GLFW (Escape quits). --check: compare every
+// light's targets, the accumulated light map and the back buffer of the last frame with CPU
+// references of the effects (reference_check.h); exit 1 if off.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -52,9 +52,8 @@ public:
     std::unique_ptr<RenderTarget2D> dbgSpotUnwrap, dbgSpotOcclusion, dbgSpotLightMap, dbgSpotBlurred;
     std::unique_ptr<RenderTarget2D> dbgPointUnwrap, dbgPointOcclusion, dbgPointLightMap, dbgPointBlurred;
     bool spotCaptured = false, pointCaptured = false;
-    // fxport --check: the first spot and point light of each frame (the last frame's is checked).
+    // fxport --check: every light of each frame (the last frame's are checked).
     CheckCapture* checkCapture = nullptr;
-    bool spotChecked = false, pointChecked = false;
 
     Game1() {
         Content.RootDirectory = FXPORT_CONTENT_DIR;
@@ -115,9 +114,9 @@ protected:
         lightRenderer->afterLightUser = this;
         lightRenderer->afterLight = [](LightRenderer& r, const Light& light, bool isSpot, void* user) {
             auto& g = *static_cast<Game1*>(user);
-            if (g.checkCapture && !(isSpot ? g.spotChecked : g.pointChecked)) {
-                (isSpot ? g.spotChecked : g.pointChecked) = true;
-                CaptureLight(r, light, isSpot, isSpot ? g.checkCapture->spot : g.checkCapture->point);
+            if (g.checkCapture) {
+                g.checkCapture->lights.emplace_back();
+                CaptureLight(r, light, isSpot, g.checkCapture->lights.back());
             }
             if (!g.captureDebug || (isSpot ? g.spotCaptured : g.pointCaptured)) return;
             (isSpot ? g.spotCaptured : g.pointCaptured) = true;
@@ -135,7 +134,7 @@ protected:
     void Draw(const GameTime&) override {
         const int W = GraphicsDevice->Viewport.Width, H = GraphicsDevice->Viewport.Height;
         spotCaptured = pointCaptured = false;
-        spotChecked = pointChecked = false;
+        if (checkCapture) checkCapture->lights.clear();
         {
             PassTimer t(gpuTimer, "Background");
             lightRenderer->BeginDrawBackground();
@@ -267,6 +266,9 @@ int runLighting2d(int argc, char** argv) {
     for (const GpuTimer::Section& section : timer->Sections())
         std::printf("  %-14s %9.3f ms\n", section.name.c_str(), section.medianMs());
 
+    // Before the images: the check reads the back buffer.
+    int status = 0;
+    if (check && !CheckLighting(*game.lightRenderer, checkCapture)) status = 1;
     if (platformName != "glfw" || outGiven) {
         std::filesystem::create_directories(outDir);
         const std::string finalPath = (std::filesystem::path(outDir) / "final.png").string();
@@ -274,8 +276,6 @@ int runLighting2d(int argc, char** argv) {
         game.WriteDebug(outDir);
         std::printf("wrote %s, %s/debug.png and %s/targets/*.png\n", finalPath.c_str(), outDir.c_str(), outDir.c_str());
     }
-    int status = 0;
-    if (check && !CheckLighting(*game.lightRenderer, checkCapture)) status = 1;
     return status;
 }
 

@@ -71,8 +71,8 @@ DeferredRenderer::DeferredRenderer(fxport::GraphicsDevice& GraphicsDevice, Conte
     }
     // The exercise: "For the light volume, use cone.x". fxport: SpotLightGeometry.gltf, apex at the
     // origin, axis -Z, length 1, base radius 0.5 (content/README.md).
-    spotLightEffect = Content.Load<Effect>("SpotLight");
-    coneModel = Content.Load<Model>("SpotLightGeometry");
+    // fxport: loaded with the first spot light drawn (DrawSpotLight).
+    content = &Content;
 
     halfPixel.X = 0.5f / float(GraphicsDevice.PresentationParameters().BackBufferWidth);
     halfPixel.Y = 0.5f / float(GraphicsDevice.PresentationParameters().BackBufferHeight);
@@ -129,6 +129,14 @@ void DeferredRenderer::DrawPointLight(Vector3 lightPosition, Color color, float 
     // seed's DrawLights below stays as written.
     lightPosition = lightRig.center + lightPosition * lightRig.scale;
     lightRadius *= lightRig.scale;
+
+    // fxport (issue 6): frustum culling. The volume drawn is the sphere of lightRadius (the model's
+    // vertices lie on it); if the camera's frustum does not meet it, the light lights no pixel seen.
+    if (frustumCulling &&
+        !BoundingFrustum(camera->View * camera->Projection).Intersects(BoundingSphere(lightPosition, lightRadius))) {
+        ++culledLights;
+        return;
+    }
 
     //set the G-Buffer parameters
     pointLightEffect->Parameters["colorMap"].SetValue(colorRT.get());
@@ -215,6 +223,10 @@ void DeferredRenderer::DrawManyPointLights(const GameTime& gameTime, const Color
 void DeferredRenderer::DrawSpotLight(Vector3 lightPosition, Vector3 spotDirection, Color color, float lightRadius,
                                      float lightIntensity, float spotLightAngle, float spotDecayExponent) {
     spotDirection = Vector3::Normalize(spotDirection);
+    if (!spotLightEffect) {  // fxport: on first use
+        spotLightEffect = content->Load<Effect>("SpotLight");
+        coneModel = content->Load<Model>("SpotLightGeometry");
+    }
     //set the G-Buffer parameters
     spotLightEffect->Parameters["colorMap"].SetValue(colorRT.get());
     spotLightEffect->Parameters["normalMap"].SetValue(normalRT.get());
@@ -271,7 +283,7 @@ void DeferredRenderer::DrawLights(const GameTime& gameTime) {
     // what makes each pixel lit once.
     GraphicsDevice.DepthStencilState = DepthStencilState::None;
 
-    insideLights = outsideLights = 0;
+    insideLights = outsideLights = culledLights = 0;
     drawnPointLights.clear();
     {
         PassTimer timed(gpuTimer, "DirectionalLight");

@@ -54,9 +54,11 @@ private:
 
     Effect* finalCombineEffect;
 
-    // The chapter's exercise (fxport, not in the seed): SpotLight.fx and the cone volume.
-    Effect* spotLightEffect;
-    Model* coneModel;  //spot light volume
+    // The chapter's exercise (fxport, not in the seed): SpotLight.fx and the cone volume, loaded
+    // the first time the spot light is drawn (a scene without it never compiles SpotLight.fx).
+    Effect* spotLightEffect = nullptr;
+    Model* coneModel = nullptr;  //spot light volume
+    ContentManager* content = nullptr;
 
     Vector2 halfPixel;
 
@@ -95,6 +97,10 @@ public:
     // Counts of the last frame's point lights drawn with each cull mode.
     int insideLights = 0, outsideLights = 0;
     bool spotInside = false;
+    // fxport (issue 6): a point light whose sphere is outside the camera's frustum is not drawn
+    // (frustumCulling off: every light is drawn, as in the chapter); how many the last frame left out.
+    bool frustumCulling = true;
+    int culledLights = 0;
 
 private:
     void SetGBuffer();

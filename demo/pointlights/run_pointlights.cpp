@@ -4,8 +4,13 @@
 //   --time T   draw every frame at game time T (the lights' animation), so a frame is reproducible
 //   --gpu      headless on the GPU (EGL); --window: a GLFW window (arrow keys orbit, W/S zoom,
 //              Escape quits; images only with --out)
-//   --check    compare lightRT with a CPU reference of the light pass (reference_check.h); exit 1 if off
+//   --check    compare the last frame's G-buffer, lightRT and back buffer with CPU references of the
+//              passes (reference_check.h); exit 1 if off
 //   --spot     also draw the chapter's exercise: one spot light (SpotLight.fx, cone volume)
+//   --camera ARC,ROTATION,DISTANCE  the orbit camera's start (degrees, degrees, units; -25,0,20)
+//   --no-cull  draw every point light, also those outside the view frustum (as the chapter)
+//   --explain  print the effects (compile time), targets (bytes) and passes built and left out,
+//              and the point lights drawn and frustum-culled, against the all-features scene
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -17,6 +22,7 @@
 #include "common/program_registry.h"
 #include "common/run_options.h"
 #include "fxport/platform/graphics_context.h"
+#include "pointlights/build_report.h"
 #include "pointlights/debug_sheet.h"
 #include "pointlights/game1.h"
 #include "pointlights/reference_check.h"
@@ -29,7 +35,8 @@ using fxport::demo::parseCommonOption;
 
 namespace {
 
-const char* kUsage = "fxdemo pointlights [--size WxH] [--frames N] [--out DIR] [--time T] [--gpu] [--window]";
+const char* kUsage = "fxdemo pointlights [--size WxH] [--frames N] [--out DIR] [--time T] [--gpu] [--window]\n"
+                     "                          [--camera A,R,D] [--no-cull] [--explain]";
 
 int usage(const char* message) {
     std::fprintf(stderr, "fxdemo pointlights: %s\nusage: %s\n", message, kUsage);
@@ -44,6 +51,10 @@ int runPointLights(int argc, char** argv) {
     std::optional<double> time;
     bool spot = false;
     bool check = false;
+    bool explain = false;
+    bool cull = true;
+    bool cameraGiven = false;
+    float cameraArc = 0, cameraRotation = 0, cameraDistance = 0;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         auto value = [&]() -> const char* { return i + 1 < argc ? argv[++i] : nullptr; };
@@ -62,6 +73,16 @@ int runPointLights(int argc, char** argv) {
             check = true;
         } else if (arg == "--spot") {
             spot = true;
+        } else if (arg == "--explain") {
+            explain = true;
+        } else if (arg == "--no-cull") {
+            cull = false;
+        } else if (arg == "--camera") {
+            const char* v = value();
+            if (!v || std::sscanf(v, "%f,%f,%f", &cameraArc, &cameraRotation, &cameraDistance) != 3 ||
+                !(cameraDistance > 0))
+                return usage("--camera wants ARC,ROTATION,DISTANCE (degrees, degrees, units > 0)");
+            cameraGiven = true;
         } else if (arg == "--help" || arg == "-h") {
             std::printf("usage: %s\n", kUsage);
             return 0;
@@ -70,7 +91,8 @@ int runPointLights(int argc, char** argv) {
         }
     }
 
-    if (check && spot) return usage("--check models the directional and point lights only, not --spot");
+    // The check recomputes the spot light from the frame's game time: it needs a fixed one.
+    if (check && spot && !time && common.platform == "glfw") return usage("--check --spot in a window wants --time T");
 
     Game1 game;
     game.graphics.PreferredBackBufferWidth = common.width;
@@ -78,9 +100,17 @@ int runPointLights(int argc, char** argv) {
     game.graphics.platform = common.platform;
     // Headless without --time: a fixed time, so that the default run is reproducible too.
     game.demo.time = time ? time : (common.platform == "glfw" ? std::nullopt : std::optional<double>(1.0));
+    if (cameraGiven) {
+        game.demo.cameraArc = cameraArc;
+        game.demo.cameraRotation = cameraRotation;
+        game.demo.cameraDistance = cameraDistance;
+    }
+    // --explain: every effect compiled by xlate in this process, so that the load times compare.
+    if (explain) game.Content.effectOptions.useCache = false;
 
     game.Start();
     game.getRenderer().drawSpotLight = spot;
+    game.getRenderer().frustumCulling = cull;
     auto timer = std::make_unique<GpuTimer>(*game.GraphicsDevice);
     game.getRenderer().setGpuTimer(timer.get());
     const bool sync = common.platform == "osmesa";
@@ -105,8 +135,8 @@ int runPointLights(int argc, char** argv) {
     PassTimer::syncDevice = nullptr;
 
     std::printf("last frame: %d point lights drawn with CullClockwise (camera inside: inner faces), %d with "
-                "CullCounterClockwise\n",
-                game.getRenderer().insideLights, game.getRenderer().outsideLights);
+                "CullCounterClockwise, %d outside the view frustum not drawn\n",
+                game.getRenderer().insideLights, game.getRenderer().outsideLights, game.getRenderer().culledLights);
     if (spot)
         std::printf("spot light drawn with %s\n", game.getRenderer().spotInside ? "CullClockwise (camera inside)"
                                                                                  : "CullCounterClockwise");
@@ -116,7 +146,7 @@ int runPointLights(int argc, char** argv) {
         std::printf("  %-16s %9.3f ms\n", section.name.c_str(), section.medianMs());
 
     int status = 0;
-    if (check && !CheckLightMap(game)) status = 1;
+    if (check && !CheckPasses(game, spot, game.demo.time.value_or(0.0))) status = 1;
 
     if (common.platform != "glfw" || common.outDirGiven) {
         std::filesystem::create_directories(common.outDir);
@@ -126,10 +156,13 @@ int runPointLights(int argc, char** argv) {
         WriteDebugSheet(game, debugPath);
         std::printf("wrote %s and %s\n", finalPath.c_str(), debugPath.c_str());
     }
+    if (explain) ExplainAgainstAllFeatures(stdout, game, ReportBuild(game, timer.get()));
     return status;
 }
 
 }  // namespace DeferredLighting
 
-FXDEMO_PROGRAM(pointlights, "fxdemo pointlights [--size WxH] [--frames N] [--out DIR] [--time T] [--gpu] [--window]",
+FXDEMO_PROGRAM(pointlights,
+               "fxdemo pointlights [--size WxH] [--frames N] [--out DIR] [--time T] [--gpu] [--window] [--camera A,R,D]\n"
+               "                          [--no-cull] [--explain]",
                DeferredLighting::runPointLights);

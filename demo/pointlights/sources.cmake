@@ -1,5 +1,6 @@
 # fxdemo pointlights (issue 5, item 1): Catalin Zima's point lights (seed 001).
 list(APPEND FXDEMO_SOURCES
+  pointlights/build_report.cpp
   pointlights/camera.cpp
   pointlights/debug_sheet.cpp
   pointlights/deferred_renderer.cpp

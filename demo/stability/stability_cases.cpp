@@ -1,5 +1,7 @@
 #include "stability/stability_cases.h"
 
+#include "stability/case_support.h"
+
 #include <cfloat>
 #include <cmath>
 #include <limits>
@@ -30,28 +32,6 @@ float formatMax(SurfaceFormat f) {
                    f == SurfaceFormat::HdrBlendable
                ? 65504.0f
                : FLT_MAX;
-}
-
-struct Accumulator {
-    double sumSq = 0, worst = 0;
-    int n = 0;
-    void add(double e) {
-        sumSq += e * e;
-        worst = std::fmax(worst, e);
-        ++n;
-    }
-    void into(CaseResult& r) const {
-        r.pixels = n;
-        r.rmsError = n ? std::sqrt(sumSq / n) : 0;
-        r.maxError = worst;
-    }
-};
-
-void takeFindings(const std::vector<NonFiniteTarget>& found, CaseResult& r) {
-    for (const NonFiniteTarget& f : found) {
-        r.nonFinite += f.count;
-        if (!r.first) r.first = f;
-    }
 }
 
 CaseResult runShadowWrite(GraphicsDevice& device, Effect& depthWriter, const ShadowSetup& s, const std::string& group,
@@ -310,6 +290,12 @@ std::vector<CaseResult> runStabilityCases(GraphicsDevice& device, const SuiteOpt
         results.push_back(runClearedGBufferLight(device, pointLight, s, n, "as written"));
         results.push_back(runClearedGBufferLight(device, pointLightSafe, s, n, "#define pow(x,y) pow(max(x,1e-30),y)"));
     }
+
+    runDepthRangeCases(device, options, results);
+    runNormalCases(device, options, results);
+    runPointLightCases(device, options, results);
+    runSpotConeCases(device, options, results);
+    runUnwrapCases(device, options, results);
     return results;
 }
 

@@ -13,7 +13,7 @@
 namespace fxport::stability {
 
 struct CaseResult {
-    std::string group;        // "exp-shadow", "far-from-origin", "pow00", "target-size"
+    std::string group;        // "exp-shadow", "far-from-origin", "pow00", "target-size", "near-far", ...
     std::string name;         // "d=180 Single"
     std::string variant;      // "as written" or the fix, e.g. "light space x0.1"
     int pixels = 0;           // pixels compared with the reference
@@ -33,5 +33,17 @@ struct SuiteOptions {
 
 // Runs every case on `device`; each case names its passes for FiniteCheck.
 std::vector<CaseResult> runStabilityCases(GraphicsDevice& device, const SuiteOptions& options);
+
+// The case groups, each in its own file (appending to `results`):
+// near/far ratios 1e2..1e7 through GBuffer.fx depth and PointLight.fx's reconstruction.
+void runDepthRangeCases(GraphicsDevice& device, const SuiteOptions& options, std::vector<CaseResult>& results);
+// zero-length, denormal and tiny vertex normals through GBuffer.fx into a lit pixel.
+void runNormalCases(GraphicsDevice& device, const SuiteOptions& options, std::vector<CaseResult>& results);
+// point light radius -> 0 and -> 1e6 on lit pixels; the camera at the light, inside its volume.
+void runPointLightCases(GraphicsDevice& device, const SuiteOptions& options, std::vector<CaseResult>& results);
+// spot cone angles near 0 and 180 degrees (xna-deferred SpotLight.fx).
+void runSpotConeCases(GraphicsDevice& device, const SuiteOptions& options, std::vector<CaseResult>& results);
+// lighting2d unwrap rays with sin or cos exactly 0 (Unwrap.fx, UnwrapSpotlight.fx).
+void runUnwrapCases(GraphicsDevice& device, const SuiteOptions& options, std::vector<CaseResult>& results);
 
 }  // namespace fxport::stability
