@@ -12,8 +12,9 @@
 //
 // Apply() binds the pass's shaders (a stage the pass does not assign keeps what was bound, as on
 // D3D9: a pixel-shader-only pass runs with SpriteBatch's vertex shader), uploads the constants that
-// changed since the last Apply and that the pass's shaders read (the others stay pending), sets Textures[unit] from texture parameters and merges the effect's
-// sampler_state over SamplerStates[unit], and applies the pass's render states to the device's
+// changed since the last Apply and that the pass's shaders read (the others stay pending), sets
+// Textures[unit] from texture parameters and merges the effect's sampler_state over
+// SamplerStates[unit], and applies the pass's render states to the device's
 // BlendState/DepthStencilState/RasterizerState. Device states set after Apply() win, as in XNA.
 #pragma once
 
@@ -62,7 +63,7 @@ public:
 
     // Each setter checks the parameter's class, type and size and throws ArgumentError naming the
     // effect, the parameter, its HLSL type and what was passed. Values are written to the effect's
-    // constant buffer shadow; the next Apply() uploads what changed.
+    // constant buffer shadow; the next Apply() whose shaders read them uploads what changed.
     void SetValue(bool value);
     void SetValue(int value);
     void SetValue(float value);
