@@ -54,7 +54,7 @@ void writeCsv(const std::string& path, const std::vector<CaseResult>& results) {
 void writeMarkdown(const std::string& path, const std::vector<CaseResult>& results, const std::string& renderer, int size) {
     std::ofstream out(path);
     out << "# fxdemo stability\n\nRenderer: " << renderer << "; targets " << size << "x" << size
-        << " unless named. Effects: hlsl/xna-deferred, unchanged. Each row: one run of the real effect, every target "
+        << " unless named. Effects: hlsl/xna-deferred and hlsl/lighting2d (unwrap), unchanged. Each row: one run of the real effect, every target "
            "scanned by FiniteCheck, the finite texels compared with a double-precision CPU reference.\n\n"
         << "## Where the tutorial's maths breaks\n\n"
         << "- **Exponential shadow maps** (DepthWriter.fx stores exp(DepthPrecision/2 * d/DepthPrecision) = exp(d/2)): "
