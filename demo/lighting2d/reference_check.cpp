@@ -143,6 +143,100 @@ void unwrapRef(const Setup& s, const LightCapture& l, int x, int y, Range out[2]
     }
 }
 
+// ---- per-pixel intervals (accumulation and final image) ------------------------------------
+
+// What the GPU may have written: per pixel and channel, [lo, hi] in LSB.
+struct RefImage {
+    int W = 0, H = 0;
+    std::vector<double> lo, hi;
+    RefImage(int w, int h) : W(w), H(h), lo(std::size_t(w) * std::size_t(h) * 4), hi(lo.size()) {}
+    std::size_t at(int x, int y, int c) const { return (std::size_t(y) * std::size_t(W) + std::size_t(x)) * 4 + std::size_t(c); }
+    void set(int x, int y, int c, double l, double h) { lo[at(x, y, c)] = l, hi[at(x, y, c)] = h; }
+};
+
+double channel(const Color& p, int c) { return c == 0 ? p.R : c == 1 ? p.G : c == 2 ? p.B : p.A; }
+
+// The GPU image moved by one pixel (in x, then in y) must fall outside the intervals on at least half
+// of the samples where it differs from the unshifted image by more than 1 LSB (and the unshifted
+// sample is inside): the bound is tight enough to see a shift. Prints one line.
+bool shiftTest(const char* name, const RefImage& ref, const std::vector<Color>& gpu) {
+    long changed[2] = {0, 0}, shiftedFails[2] = {0, 0};
+    auto G = [&](int x, int y, int c) { return channel(gpu[std::size_t(y) * std::size_t(ref.W) + std::size_t(x)], c); };
+    for (int y = 0; y < ref.H; ++y)
+        for (int x = 0; x < ref.W; ++x)
+            for (int c = 0; c < 4; ++c) {
+                const std::size_t i = ref.at(x, y, c);
+                const double g = G(x, y, c);
+                if (g < ref.lo[i] || g > ref.hi[i]) continue;
+                for (int k = 0; k < 2; ++k) {
+                    const int sx = k == 0 ? x - 1 : x, sy = k == 0 ? y : y - 1;
+                    if (sx < 0 || sy < 0) continue;
+                    const double shifted = G(sx, sy, c);
+                    if (std::fabs(shifted - g) <= 1.0) continue;
+                    ++changed[k];
+                    if (shifted < ref.lo[i] || shifted > ref.hi[i]) ++shiftedFails[k];
+                }
+            }
+    const bool seen = changed[0] > 0 && changed[1] > 0 && 2 * shiftedFails[0] >= changed[0] &&
+                      2 * shiftedFails[1] >= changed[1];
+    std::printf("  %-26s 1-pixel shift: fails %ld of %ld changed samples in x, %ld of %ld in y: %s\n", name,
+                shiftedFails[0], changed[0], shiftedFails[1], changed[1], seen ? "seen" : "NOT SEEN");
+    return seen;
+}
+
+// Every sample inside its interval, and shiftTest.
+bool compare(const char* name, const char* bound, const RefImage& ref, const std::vector<Color>& gpu) {
+    long samples = 0, fails = 0;
+    double maxExcess = 0, widthSum = 0;
+    int wx = 0, wy = 0, wc = 0;
+    auto G = [&](int x, int y, int c) { return channel(gpu[std::size_t(y) * std::size_t(ref.W) + std::size_t(x)], c); };
+    for (int y = 0; y < ref.H; ++y)
+        for (int x = 0; x < ref.W; ++x)
+            for (int c = 0; c < 4; ++c) {
+                const std::size_t i = ref.at(x, y, c);
+                const double g = G(x, y, c), excess = std::max(ref.lo[i] - g, g - ref.hi[i]);
+                ++samples;
+                widthSum += ref.hi[i] - ref.lo[i];
+                if (excess > 0) {
+                    ++fails;
+                    if (excess > maxExcess) maxExcess = excess, wx = x, wy = y, wc = c;
+                }
+            }
+    std::printf("  %-26s %ld of %ld samples outside (max by %.3g); mean interval width %.3g; bound: %s\n", name, fails,
+                samples, maxExcess, samples ? widthSum / double(samples) : 0.0, bound);
+    if (fails)
+        std::printf("  %-26s worst at (%d, %d) channel %d: gpu %g, reference [%g, %g]\n", "", wx, wy, wc, G(wx, wy, wc),
+                    ref.lo[ref.at(wx, wy, wc)], ref.hi[ref.at(wx, wy, wc)]);
+    const bool seen = shiftTest("", ref, gpu);
+    const bool pass = fails == 0 && seen;
+    std::printf("  %-26s %s\n", "", pass ? "ok" : "FAIL");
+    return pass;
+}
+
+// A SpriteBatch LINEAR sample of a W x H Color texture drawn 1:1 at pixel (x, y): texel (x, y) with
+// weight 255/256 per axis, its right/lower neighbours with 1/256 (clamped, or wrapped with `wrap`).
+// The interval spans the texel and the filtered value, +-1 LSB where the texels differ (8-bit
+// filters round after the horizontal lerps and again after the vertical one). Channel c, LSB.
+void linearSample(const std::vector<Color>& img, int W, int H, int x, int y, int c, bool wrap, double& lo, double& hi) {
+    auto T = [&](int i, int j) {
+        i = wrap ? (i % W + W) % W : std::clamp(i, 0, W - 1);
+        j = wrap ? (j % H + H) % H : std::clamp(j, 0, H - 1);
+        return channel(img[std::size_t(j) * std::size_t(W) + std::size_t(i)], c);
+    };
+    const double f = 1.0 / 256.0;
+    const double t00 = T(x, y), t10 = T(x + 1, y), t01 = T(x, y + 1), t11 = T(x + 1, y + 1);
+    const double filtered = (1 - f) * ((1 - f) * t00 + f * t10) + f * ((1 - f) * t01 + f * t11);
+    lo = std::min(t00, filtered), hi = std::max(t00, filtered);
+    if (t00 != t10 || t00 != t01 || t00 != t11) lo -= 1.0, hi += 1.0;
+    lo = std::max(lo, 0.0), hi = std::min(hi, 255.0);
+}
+
+// 8-bit rounding of a value in [lo, hi] LSB, with float32 shader error around a half.
+void roundRange(double& lo, double& hi) {
+    lo = std::clamp(std::floor(lo - 0.05 + 0.5), 0.0, 255.0);
+    hi = std::clamp(std::floor(hi + 0.05 + 0.5), 0.0, 255.0);
+}
+
 bool checkLight(LightRenderer& r, const Setup& s, const LightCapture& l, int index) {
     const int W = s.W, H = s.H;
     std::printf(" light %d: %s light at (%g, %g), radius %g, power %g\n", index, l.isSpot ? "spot" : "point", l.posX,
@@ -194,6 +288,7 @@ bool checkLight(LightRenderer& r, const Setup& s, const LightCapture& l, int ind
              "1 LSB (8-bit rounding of a float32 result)"};
     const double Lx = l.posX, Ly = l.posY, R = l.radius, Pow = l.power, Bias = r.lightBias;
     auto occ = [&](int i, int c) { return halfToDouble(l.occlusion[std::size_t(i) * 4 + std::size_t(c)]); };
+    RefImage lightRef(W, H);
     for (int y = 0; y < H; ++y)
         for (int x = 0; x < W; ++x) {
             const double sx_ = double(W) * ((x + kBias) / W), sy_ = double(H) * ((y + kBias) / H);
@@ -236,9 +331,14 @@ bool checkLight(LightRenderer& r, const Setup& s, const LightCapture& l, int ind
             Range ref = (p.b == -1 || lit[0] != lit[1]) ? either(0.0, litV) : one(lit[0] ? litV : 0.0);
             const Color& g = l.lightMap[std::size_t(y) * std::size_t(W) + std::size_t(x)];
             const int gpu[4] = {g.R, g.G, g.B, g.A};
-            for (int c = 0; c < 4; ++c) sl.add(double(gpu[c]), c < 3 ? ref : one(255.0), 1.0, x, y, c);
+            for (int c = 0; c < 4; ++c) {
+                const Range rc = c < 3 ? ref : one(255.0);
+                sl.add(double(gpu[c]), rc, 1.0, x, y, c);
+                lightRef.set(x, y, c, rc.lo - 1.0, rc.hi + 1.0);
+            }
         }
     pass &= sl.report();
+    pass &= shiftTest("", lightRef, l.lightMap);
     // (4) blur: HorizontalBlur.fx / VerticalBlur.fx (LinearClamp) from the GPU's previous target
     for (int pass2 = 0; pass2 < 2; ++pass2) {
         const bool horizontal = pass2 == 0;
@@ -256,6 +356,7 @@ bool checkLight(LightRenderer& r, const Setup& s, const LightCapture& l, int ind
                                          {2, 0.120985},  {3, 0.064759},  {4, 0.026995},  {5, 0.008764},
                                          {6, 0.002216}};
         const double minB = double(r.minBlur), maxB = double(r.maxBlur);
+        RefImage blurRef(W, H);
         for (int y = 0; y < H; ++y)
             for (int x = 0; x < W; ++x) {
                 const double u = (x + kBias) / W, v = (y + kBias) / H;
@@ -277,93 +378,18 @@ bool checkLight(LightRenderer& r, const Setup& s, const LightCapture& l, int ind
                 const double ref = std::round(std::clamp(sum, 0.0, 1.0) * 255);
                 const Color& g = outGpu[std::size_t(y) * std::size_t(W) + std::size_t(x)];
                 const int gpu[4] = {g.R, g.G, g.B, g.A};
-                for (int c = 0; c < 4; ++c) sb.add(double(gpu[c]), one(c < 3 ? ref : 255.0), 1.0 + slack, x, y, c);
+                for (int c = 0; c < 4; ++c) {
+                    const double rc = c < 3 ? ref : 255.0;
+                    sb.add(double(gpu[c]), one(rc), 1.0 + slack, x, y, c);
+                    blurRef.set(x, y, c, rc - 1.0 - slack, rc + 1.0 + slack);
+                }
             }
         pass &= sb.report();
+        pass &= shiftTest("", blurRef, outGpu);
     }
     return pass;
 }
 
-
-// ---- per-pixel intervals (accumulation and final image) ------------------------------------
-
-// What the GPU may have written: per pixel and channel, [lo, hi] in LSB.
-struct RefImage {
-    int W = 0, H = 0;
-    std::vector<double> lo, hi;
-    RefImage(int w, int h) : W(w), H(h), lo(std::size_t(w) * std::size_t(h) * 4), hi(lo.size()) {}
-    std::size_t at(int x, int y, int c) const { return (std::size_t(y) * std::size_t(W) + std::size_t(x)) * 4 + std::size_t(c); }
-    void set(int x, int y, int c, double l, double h) { lo[at(x, y, c)] = l, hi[at(x, y, c)] = h; }
-};
-
-double channel(const Color& p, int c) { return c == 0 ? p.R : c == 1 ? p.G : c == 2 ? p.B : p.A; }
-
-// Every sample inside its interval; and the GPU image moved by one pixel (in x, then in y) must fail
-// on at least half of the samples where it differs from the unshifted image by more than 1 LSB (and
-// the unshifted sample passed): the bound is tight enough to see a shift.
-bool compare(const char* name, const char* bound, const RefImage& ref, const std::vector<Color>& gpu) {
-    long samples = 0, fails = 0, changed[2] = {0, 0}, shiftedFails[2] = {0, 0};
-    double maxExcess = 0, widthSum = 0;
-    int wx = 0, wy = 0, wc = 0;
-    auto G = [&](int x, int y, int c) { return channel(gpu[std::size_t(y) * std::size_t(ref.W) + std::size_t(x)], c); };
-    for (int y = 0; y < ref.H; ++y)
-        for (int x = 0; x < ref.W; ++x)
-            for (int c = 0; c < 4; ++c) {
-                const std::size_t i = ref.at(x, y, c);
-                const double g = G(x, y, c), excess = std::max(ref.lo[i] - g, g - ref.hi[i]);
-                ++samples;
-                widthSum += ref.hi[i] - ref.lo[i];
-                if (excess > 0) {
-                    ++fails;
-                    if (excess > maxExcess) maxExcess = excess, wx = x, wy = y, wc = c;
-                    continue;
-                }
-                for (int k = 0; k < 2; ++k) {
-                    const int sx = k == 0 ? x - 1 : x, sy = k == 0 ? y : y - 1;
-                    if (sx < 0 || sy < 0) continue;
-                    const double shifted = G(sx, sy, c);
-                    if (std::fabs(shifted - g) <= 1.0) continue;
-                    ++changed[k];
-                    if (shifted < ref.lo[i] || shifted > ref.hi[i]) ++shiftedFails[k];
-                }
-            }
-    const bool shiftSeen = changed[0] > 0 && changed[1] > 0 && 2 * shiftedFails[0] >= changed[0] &&
-                           2 * shiftedFails[1] >= changed[1];
-    std::printf("  %-26s %ld of %ld samples outside (max by %.3g); mean interval width %.3g; bound: %s\n", name, fails,
-                samples, maxExcess, samples ? widthSum / double(samples) : 0.0, bound);
-    if (fails)
-        std::printf("  %-26s worst at (%d, %d) channel %d: gpu %g, reference [%g, %g]\n", "", wx, wy, wc, G(wx, wy, wc),
-                    ref.lo[ref.at(wx, wy, wc)], ref.hi[ref.at(wx, wy, wc)]);
-    std::printf("  %-26s 1-pixel shift: fails %ld of %ld changed samples in x, %ld of %ld in y: %s\n", "",
-                shiftedFails[0], changed[0], shiftedFails[1], changed[1], shiftSeen ? "seen" : "NOT SEEN");
-    const bool pass = fails == 0 && shiftSeen;
-    std::printf("  %-26s %s\n", "", pass ? "ok" : "FAIL");
-    return pass;
-}
-
-// A SpriteBatch LINEAR sample of a W x H Color texture drawn 1:1 at pixel (x, y): texel (x, y) with
-// weight 255/256 per axis, its right/lower neighbours with 1/256 (clamped, or wrapped with `wrap`).
-// The interval spans the texel and the filtered value, +-1 LSB where the texels differ (8-bit
-// filters round after the horizontal lerps and again after the vertical one). Channel c, LSB.
-void linearSample(const std::vector<Color>& img, int W, int H, int x, int y, int c, bool wrap, double& lo, double& hi) {
-    auto T = [&](int i, int j) {
-        i = wrap ? (i % W + W) % W : std::clamp(i, 0, W - 1);
-        j = wrap ? (j % H + H) % H : std::clamp(j, 0, H - 1);
-        return channel(img[std::size_t(j) * std::size_t(W) + std::size_t(i)], c);
-    };
-    const double f = 1.0 / 256.0;
-    const double t00 = T(x, y), t10 = T(x + 1, y), t01 = T(x, y + 1), t11 = T(x + 1, y + 1);
-    const double filtered = (1 - f) * ((1 - f) * t00 + f * t10) + f * ((1 - f) * t01 + f * t11);
-    lo = std::min(t00, filtered), hi = std::max(t00, filtered);
-    if (t00 != t10 || t00 != t01 || t00 != t11) lo -= 1.0, hi += 1.0;
-    lo = std::max(lo, 0.0), hi = std::min(hi, 255.0);
-}
-
-// 8-bit rounding of a value in [lo, hi] LSB, with float32 shader error around a half.
-void roundRange(double& lo, double& hi) {
-    lo = std::clamp(std::floor(lo - 0.05 + 0.5), 0.0, 255.0);
-    hi = std::clamp(std::floor(hi + 0.05 + 0.5), 0.0, 255.0);
-}
 
 // AccumulateLightMaps: lightMap cleared to black, then for each light
 // spriteBatch.Draw(verticalBlurTarget, fullScreen, light.color) with BlendState.Additive

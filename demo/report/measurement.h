@@ -28,6 +28,9 @@ struct Measurement {
     std::string knob;       // e.g. "target format"
     std::string setting;    // e.g. "R16G16B16A16_FLOAT"
     bool seedDefault = false;  // the seed's own setting
+    // False for a knob that changes the scene itself (pointlights' light count): such a setting is
+    // no alternative to the others, so it is left out of the Pareto front.
+    bool sameScene = true;
     std::string size;       // "800x600"
     int frames = 0;
     double frameMs = 0;     // median GPU time of the whole frame

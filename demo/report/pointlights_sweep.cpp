@@ -165,6 +165,7 @@ std::vector<Measurement> sweepPointLights(const SweepOptions& options) {
         m.knob = s.knob;
         m.setting = s.setting;
         m.seedDefault = s.seed;
+        m.sameScene = !(s.knob == "light count" && !s.seed);
         m.reference = "CPU light pass (exact volumes, unclamped) on the float32 G-buffer";
         runTimedFrames(*game->GraphicsDevice, *timer, options, [&] { game->Tick(); }, m);
         const std::vector<double> reference = referenceImage(*game, g);

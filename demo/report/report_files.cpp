@@ -53,10 +53,12 @@ void writeMarkdown(const std::vector<Measurement>& rows, const RunInfo& info, co
     std::ofstream out = open(path);
     out << "# fxdemo report: error against GPU time\n\n"
         << "- command: `" << info.command << "`\n- renderer: " << info.renderer << "\n- date: " << info.date
-        << "\n- frames per setting: " << info.frames << " (times are medians over them; GPU timestamp queries)\n\n"
+        << "\n- frames per setting: " << info.warmupFrames << " or more untimed (" << info.warmupSeconds << " s at least), then " << info.frames
+        << " timed (times are medians over them; GPU timestamp queries)\n\n"
         << "Each knob is varied alone, the others at the seed's setting (marked *). Error: RMS, max and PSNR "
            "(peak 1) over the R, G, B values in [0, 1] of the final 8-bit image against the reference named "
-           "for each demo. Pareto: no other setting of the same demo is both faster and more exact. "
+           "for each demo. Pareto: no other setting of the same demo is both faster and more exact (settings "
+           "that change the scene, pointlights' light count, are left out). "
            "On OSMesa (llvmpipe) every pass is finished before and after it is timed, so its times add up "
            "but include the synchronisation. The plot is `report.png`.\n";
     std::map<std::string, std::vector<Measurement>> byDemo;

@@ -13,6 +13,8 @@ struct RunInfo {
     std::string renderer;  // GL renderer string
     std::string date;      // UTC
     int frames = 0;
+    int warmupFrames = 0;
+    double warmupSeconds = 0;
 };
 
 void writeCsv(const std::vector<Measurement>& rows, const std::string& path);

@@ -10,9 +10,10 @@ namespace fxport::report {
 std::vector<std::size_t> paretoFront(const std::vector<Measurement>& rows) {
     std::vector<std::size_t> front;
     for (std::size_t i = 0; i < rows.size(); ++i) {
+        if (!rows[i].sameScene) continue;
         bool dominated = false;
         for (std::size_t j = 0; j < rows.size() && !dominated; ++j)
-            dominated = j != i && rows[j].frameMs <= rows[i].frameMs && rows[j].error.rms <= rows[i].error.rms &&
+            dominated = j != i && rows[j].sameScene && rows[j].frameMs <= rows[i].frameMs && rows[j].error.rms <= rows[i].error.rms &&
                         (rows[j].frameMs < rows[i].frameMs || rows[j].error.rms < rows[i].error.rms);
         if (!dominated) front.push_back(i);
     }
@@ -131,7 +132,9 @@ void panel(Canvas& canvas, std::vector<Text>& texts, const std::vector<Measureme
             if (rows[i].seedDefault) canvas.disc(X(rows[i].frameMs), Y(rows[i].error.rms), 3, Color::White);
         }
         // Label each curve's first and last setting.
+        // (Not the seed's setting: every curve passes through it.)
         for (std::size_t i : {idx.front(), idx.back()}) {
+            if (rows[i].seedDefault) continue;
             std::string s = rows[i].setting.substr(0, 22);
             texts.push_back({s, Vector2(float(X(rows[i].frameMs) + 8), float(Y(rows[i].error.rms) - 12)), c});
             if (idx.size() == 1) break;
@@ -139,7 +142,8 @@ void panel(Canvas& canvas, std::vector<Text>& texts, const std::vector<Measureme
         // Legend below the axes.
         const int ly = bottom + 44 + int(k) * 14;
         canvas.line(left, ly + 4, left + 24, ly + 4, c, 3);
-        texts.push_back({knobOrder[k], Vector2(float(left + 32), float(ly)), Color::Black});
+        texts.push_back({knobOrder[k] + (rows[idx.back()].sameScene ? "" : " (changes the scene: not in the Pareto front)"),
+                         Vector2(float(left + 32), float(ly)), Color::Black});
     }
     for (std::size_t i : front) canvas.disc(X(rows[i].frameMs), Y(rows[i].error.rms), 9, Color::Black, true);
     const int ly = bottom + 44 + int(knobOrder.size()) * 14;

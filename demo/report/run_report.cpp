@@ -103,6 +103,8 @@ int runReport(int argc, char** argv) {
     options.quick = quick;
     options.frames = common.frames.value_or(quick ? 1 : (common.platform == "osmesa" ? 3 : 30));
     if (options.frames < 1) return usage("--frames must be at least 1");
+    options.warmupFrames = common.platform == "osmesa" ? 1 : 10;
+    options.warmupSeconds = common.platform == "osmesa" ? 0 : 1.0;
     bool sizeGiven = false;
     for (int i = 1; i < argc; ++i) sizeGiven |= std::string(argv[i]) == "--size";
     if (sizeGiven) options.width = common.width, options.height = common.height;
@@ -141,6 +143,8 @@ int runReport(int argc, char** argv) {
     info.command = command;
     info.renderer = device.rendererName();
     info.frames = options.frames;
+    info.warmupFrames = options.warmupFrames;
+    info.warmupSeconds = options.warmupSeconds;
     const std::time_t now = std::time(nullptr);
     char date[32];
     std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));

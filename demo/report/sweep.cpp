@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 
@@ -14,15 +15,24 @@ void runTimedFrames(GraphicsDevice& device, GpuTimer& timer, const SweepOptions&
                     const std::function<void()>& frame, Measurement& m) {
     const bool sync = options.platform == "osmesa";
     demo::PassTimer::syncDevice = sync ? &device : nullptr;
-    // One more frame than timed: the first (shader programs linked, targets first touched) is dropped.
-    const int run = demo::runFrameLoop(device, timer, false, options.frames + 1, options.frames + 1, [&](int, bool) {
+    // Warm-up frames first (shader programs linked, targets first touched, GPU clocks up after the
+    // CPU-only work of the previous setting): timed like the others, then dropped.
+    int warmup = 0;
+    const auto start = std::chrono::steady_clock::now();
+    auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    while (warmup < options.warmupFrames || elapsed() < options.warmupSeconds) {
+        frame();
+        timer.EndFrame();
+        ++warmup;
+        if (warmup % 8 == 0) device.finish();  // so that the clock measures the GPU's work
+    }
+    m.frames = demo::runFrameLoop(device, timer, false, options.frames, options.frames, [&](int, bool) {
         frame();
         return true;
     });
     demo::PassTimer::syncDevice = nullptr;
-    m.frames = run - 1;
-    auto median = [](std::vector<double> v) {
-        if (v.size() > 1) v.erase(v.begin());
+    auto median = [&](std::vector<double> v) {
+        if (v.size() > std::size_t(warmup)) v.erase(v.begin(), v.begin() + warmup);
         std::sort(v.begin(), v.end());
         return v.empty() ? 0.0 : (v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]));
     };

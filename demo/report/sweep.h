@@ -14,6 +14,8 @@ namespace fxport::report {
 struct SweepOptions {
     std::string platform = "osmesa";  // or "egl" (--gpu)
     int frames = 3;                   // timed frames per setting
+    int warmupFrames = 1;             // run first, not timed (GPU clocks, first use of programs)
+    double warmupSeconds = 0;         // ... and for at least this long (a GPU's clocks ramp up slowly)
     bool quick = false;               // few settings at a tiny size (ctest)
     int width = 0, height = 0;        // 0: each demo's own default size
     std::string outDir;               // where the per-setting images go (empty: none)
