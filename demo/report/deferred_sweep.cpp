@@ -1,12 +1,18 @@
 // The XNA 4 deferred renderer (seed 000): G-buffer formats, spot and point shadow-map sizes, SSAO
-// on/off and at half resolution, render size. Reference: the highest setting in float32 (Float32
-// G-buffer, 4096 spot / 1024 point shadow maps, SSAO at full resolution) at the report's size; a
-// smaller render size is scaled up bilinearly before the comparison.
+// on/off and at half resolution, render size. Two errors per setting, a smaller render size scaled
+// up bilinearly before each comparison:
+//  * the final image against the highest setting in float32 (Float32 G-buffer, 4096 spot / 1024
+//    point shadow maps, SSAO at full resolution) at the report's size (SSAO has no exact answer);
+//  * the LightMap target against the exact light map of that highest setting's frame
+//    (report/deferred_light_map_reference.h: unshadowed lighting in double on its float32 G-buffer,
+//    shadows by ray casting the scene's triangles).
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <memory>
 
 #include "deferred/game1.h"
+#include "report/deferred_light_map_reference.h"
 #include "report/sweep.h"
 
 namespace fxport::report {
@@ -23,27 +29,49 @@ struct Knobs {
     double scale = 1.0;  // render size / report size
 };
 
-// Bilinear (pixel centres aligned) from w x h to W x H, RGB.
-std::vector<double> upscale(const std::vector<double>& rgb, int w, int h, int W, int H) {
+// Bilinear (pixel centres aligned) from w x h to W x H, `n` channels per pixel.
+std::vector<double> upscale(const std::vector<double>& rgb, int w, int h, int W, int H, int n = 3) {
     if (w == W && h == H) return rgb;
-    std::vector<double> out(std::size_t(W) * std::size_t(H) * 3);
+    const std::size_t N = std::size_t(n);
+    std::vector<double> out(std::size_t(W) * std::size_t(H) * N);
     for (int y = 0; y < H; ++y)
         for (int x = 0; x < W; ++x) {
             const double sx = std::clamp((x + 0.5) * w / W - 0.5, 0.0, double(w - 1));
             const double sy = std::clamp((y + 0.5) * h / H - 0.5, 0.0, double(h - 1));
             const int x0 = int(sx), y0 = int(sy), x1 = std::min(x0 + 1, w - 1), y1 = std::min(y0 + 1, h - 1);
             const double fx = sx - x0, fy = sy - y0;
-            for (int k = 0; k < 3; ++k) {
-                auto at = [&](int xi, int yi) { return rgb[(std::size_t(yi) * std::size_t(w) + std::size_t(xi)) * 3 + std::size_t(k)]; };
-                out[(std::size_t(y) * std::size_t(W) + std::size_t(x)) * 3 + std::size_t(k)] =
+            for (int k = 0; k < n; ++k) {
+                auto at = [&](int xi, int yi) { return rgb[(std::size_t(yi) * std::size_t(w) + std::size_t(xi)) * N + std::size_t(k)]; };
+                out[(std::size_t(y) * std::size_t(W) + std::size_t(x)) * N + std::size_t(k)] =
                     (at(x0, y0) * (1 - fx) + at(x1, y0) * fx) * (1 - fy) + (at(x0, y1) * (1 - fx) + at(x1, y1) * fx) * fy;
             }
         }
     return out;
 }
 
-// Runs the game with `k`; fills the times of `m` when `timed`; returns the final image at W x H.
-std::vector<double> run(const SweepOptions& options, int W, int H, const Knobs& k, Measurement* m) {
+// Where a light map differs from the exact one: |difference| x 4, the largest of R, G, B, A
+// (specular), as grey RGB; pixels without an exact answer in dark red.
+std::vector<double> difference(const std::vector<double>& lightMap, const ExactLightMap& exact) {
+    std::vector<double> out;
+    for (std::size_t p = 0; p < exact.defined.size(); ++p) {
+        double d = 0;
+        for (std::size_t c = 0; c < 4; ++c) d = std::max(d, std::fabs(lightMap[p * 4 + c] - exact.rgba[p * 4 + c]));
+        if (exact.defined[p]) out.insert(out.end(), {4 * d, 4 * d, 4 * d});
+        else out.insert(out.end(), {0.5, 0.0, 0.0});
+    }
+    return out;
+}
+
+struct Images {
+    std::vector<double> image;     // final image, RGB, W x H
+    std::vector<double> lightMap;  // LightMap target, RGBA, W x H
+    ExactLightMap exactLightMap;   // when asked for (needs the Float32 G-buffer)
+};
+
+// Runs the game with `k`; fills the times of `m` when given; returns its images at W x H.
+// `exactLightMap`: when given, the setting's light-map difference from it is saved beside its image.
+Images run(const SweepOptions& options, int W, int H, const Knobs& k, Measurement* m, bool exact = false,
+           const ExactLightMap* exactLightMap = nullptr) {
     Game1 game;
     const int w = std::max(8, int(std::lround(W * k.scale))), h = std::max(8, int(std::lround(H * k.scale)));
     game.graphics.PreferredBackBufferWidth = w;
@@ -63,11 +91,35 @@ std::vector<double> run(const SweepOptions& options, int W, int H, const Knobs& 
     Measurement scratch;
     runTimedFrames(*game.GraphicsDevice, *timer, options, [&] { game.Tick(); }, m ? *m : scratch);
     if (m) saveImage(*game.GraphicsDevice, options, *m);
-    std::vector<double> image = upscale(toRgb(game.GraphicsDevice->GetBackBufferData()), w, h, W, H);
+    Images images;
+    images.image = upscale(toRgb(game.GraphicsDevice->GetBackBufferData()), w, h, W, H);
+    images.lightMap = upscale(readDeferredLightMap(game), w, h, W, H, 4);
+    if (m && exactLightMap) {
+        std::string name = m->knob + "_" + m->setting;
+        for (char& c : name)
+            if (!std::isalnum(static_cast<unsigned char>(c))) c = '-';
+        saveReference(*game.GraphicsDevice, options, "deferred", difference(images.lightMap, *exactLightMap), W, H,
+                      "light-map-difference-x4_" + name + ".png");
+    }
+    if (exact) {
+        images.exactLightMap = exactDeferredLightMap(game);
+        // Saved beside the settings' images as RGB (its A, the specular sum, is not shown).
+        // Both light maps of this frame, the GPU's and the exact one, beside the settings' images
+        // (RGB; their A, the specular sum, is not shown).
+        auto rgbOf = [](const std::vector<double>& rgba) {
+            std::vector<double> rgb;
+            for (std::size_t i = 0; i < rgba.size(); i += 4) rgb.insert(rgb.end(), {rgba[i], rgba[i + 1], rgba[i + 2]});
+            return rgb;
+        };
+        saveReference(*game.GraphicsDevice, options, "deferred", rgbOf(images.exactLightMap.rgba), w, h, "light-map_exact.png");
+        saveReference(*game.GraphicsDevice, options, "deferred", rgbOf(images.lightMap), w, h, "light-map_highest-setting.png");
+        saveReference(*game.GraphicsDevice, options, "deferred", difference(images.lightMap, images.exactLightMap), w, h,
+                      "light-map_highest-setting_difference-x4.png");
+    }
     game.getDeferredRenderer().setGpuTimer(nullptr);
     if (game.hasSSAO()) game.getSSAO().setGpuTimer(nullptr);
     game.demo.gpuTimer = nullptr;
-    return image;
+    return images;
 }
 
 }  // namespace
@@ -77,7 +129,14 @@ std::vector<Measurement> sweepDeferred(const SweepOptions& options) {
     using F = Settings::GBufferFormats;
     Knobs best;
     best.formats = F::Float32, best.spot = 4096, best.point = 1024;
-    const std::vector<double> reference = run(options, W, H, best, nullptr);
+    const Images reference = run(options, W, H, best, nullptr, true);
+    const auto undefined = std::count(reference.exactLightMap.defined.begin(), reference.exactLightMap.defined.end(), 0);
+    char leftOut[160];
+    std::snprintf(leftOut, sizeof leftOut, "; silhouette pixels, where the passes shade no surface, left out: %.1f %%",
+                  100.0 * double(undefined) / double(reference.exactLightMap.defined.size()));
+    const std::string lightMapReference =
+        std::string("exact light map (lighting in double, shadows by ray casting the scene's triangles) on the highest "
+                    "setting's float32 G-buffer") + leftOut;
 
     struct Setting {
         std::string knob, setting;
@@ -88,7 +147,7 @@ std::vector<Measurement> sweepDeferred(const SweepOptions& options) {
     std::vector<Setting> settings;
     auto with = [&](auto change) { Knobs k = seed; change(k); return k; };
     settings.push_back({"G-buffer formats", "Rgba64/Rgba64/Vector2 (tutorial)", seed, true});
-    settings.push_back({"G-buffer formats", "Color/Color/Single", with([](Knobs& k) { k.formats = F::Color8; }), false});
+    settings.push_back({"G-buffer formats", "Color/Color/Single (SSAO white: it reads depth from .g)", with([](Knobs& k) { k.formats = F::Color8; }), false});
     settings.push_back({"G-buffer formats", "Vector4 x3", with([](Knobs& k) { k.formats = F::Float32; }), false});
     for (int s : options.quick ? std::vector<int>{256, 2048} : std::vector<int>{256, 512, 1024, 2048, 4096})
         settings.push_back({"spot shadow map", std::to_string(s), with([&](Knobs& k) { k.spot = s; }), s == 2048});
@@ -111,8 +170,12 @@ std::vector<Measurement> sweepDeferred(const SweepOptions& options) {
         m.setting = s.setting;
         m.seedDefault = s.seed;
         m.reference = "highest setting in float32 (Vector4 x3, 4096/1024 shadows, full SSAO)";
-        const std::vector<double> image = run(options, W, H, s.k, &m);
-        m.error = compareImages(image, reference, "deferred " + s.knob + " " + s.setting);
+        m.lightMapReference = lightMapReference;
+        const Images images = run(options, W, H, s.k, &m, false, &reference.exactLightMap);
+        m.error = compareImages(images.image, reference.image, "deferred " + s.knob + " " + s.setting);
+        m.lightMapError = compareImages(images.lightMap, reference.exactLightMap.rgba, "deferred light map " + s.knob + " " + s.setting,
+                                        &reference.exactLightMap.defined);
+        m.hasLightMapError = true;
         out.push_back(m);
         if (options.progress) options.progress(m);
     }

@@ -18,7 +18,10 @@ struct ImageError {
 
 // `got` and `reference` are RGB, 3 doubles per pixel, the same size. Throws ArgumentError when the
 // sizes differ or either holds a NaN.
-ImageError compareImages(const std::vector<double>& got, const std::vector<double>& reference, const std::string& what);
+// `defined`, when given, has one entry per pixel (the values are split evenly among them): pixels
+// where it is 0 are left out (the reference has no answer there).
+ImageError compareImages(const std::vector<double>& got, const std::vector<double>& reference, const std::string& what,
+                         const std::vector<char>* defined = nullptr);
 
 // The back buffer (8-bit) as RGB doubles in [0, 1].
 std::vector<double> toRgb(const std::vector<Color>& pixels);
@@ -37,6 +40,12 @@ struct Measurement {
     std::vector<std::pair<std::string, double>> passMs;  // median GPU time per pass
     ImageError error;
     std::string reference;  // which reference the error is against
+    // A second error where a demo has one: the deferred demo's LightMap target (RGBA, A = specular)
+    // against its exact light map (report/deferred_light_map_reference.h), which the shadow-map and
+    // G-buffer knobs change; the final image's reference cannot be exact there (SSAO).
+    bool hasLightMapError = false;
+    ImageError lightMapError;
+    std::string lightMapReference;
 };
 
 }  // namespace fxport::report

@@ -41,12 +41,15 @@ std::string csvField(const std::string& s) {
 
 void writeCsv(const std::vector<Measurement>& rows, const std::string& path) {
     std::ofstream out = open(path);
-    out << "demo,knob,setting,seed_default,size,frames,frame_ms_median,rms,max,psnr_db,passes_ms_median,reference\n";
+    out << "demo,knob,setting,seed_default,size,frames,frame_ms_median,rms,max,psnr_db,passes_ms_median,reference,"
+           "light_map_rms,light_map_max,light_map_psnr_db,light_map_reference\n";
     for (const Measurement& m : rows)
         out << m.demo << ',' << csvField(m.knob) << ',' << csvField(m.setting) << ',' << (m.seedDefault ? 1 : 0) << ','
             << m.size << ',' << m.frames << ',' << fixed(m.frameMs, "%.4f") << ',' << fixed(m.error.rms, "%.6g") << ','
             << fixed(m.error.max, "%.6g") << ',' << fixed(m.error.psnr, "%.2f") << ',' << csvField(passes(m, "; ")) << ','
-            << csvField(m.reference) << '\n';
+            << csvField(m.reference) << ',' << (m.hasLightMapError ? fixed(m.lightMapError.rms, "%.6g") : "") << ','
+            << (m.hasLightMapError ? fixed(m.lightMapError.max, "%.6g") : "") << ','
+            << (m.hasLightMapError ? fixed(m.lightMapError.psnr, "%.2f") : "") << ',' << csvField(m.lightMapReference) << '\n';
 }
 
 void writeMarkdown(const std::vector<Measurement>& rows, const RunInfo& info, const std::string& path) {
@@ -57,7 +60,7 @@ void writeMarkdown(const std::vector<Measurement>& rows, const RunInfo& info, co
         << " timed (times are medians over them; GPU timestamp queries)\n\n"
         << "Each knob is varied alone, the others at the seed's setting (marked *). Error: RMS, max and PSNR "
            "(peak 1) over the R, G, B values in [0, 1] of the final 8-bit image against the reference named "
-           "for each demo. Pareto: no other setting of the same demo is both faster and more exact (settings "
+           "for each demo; the deferred demo adds the same three for its light map against an exact one. Pareto: no other setting of the same demo is both faster and more exact (settings "
            "that change the scene, pointlights' light count, are left out). "
            "On OSMesa (llvmpipe) every pass is finished before and after it is timed, so its times add up "
            "but include the synchronisation. The plot is `report.png`.\n";
@@ -71,14 +74,23 @@ void writeMarkdown(const std::vector<Measurement>& rows, const RunInfo& info, co
         const std::vector<Measurement>& mine = byDemo[demo];
         std::vector<bool> pareto(mine.size());
         for (std::size_t i : paretoFront(mine)) pareto[i] = true;
-        out << "\n## " << demo << " (" << mine.front().size << ")\n\nReference: " << mine.front().reference << ".\n\n"
-            << "| knob | setting | frame ms | RMS | max | PSNR dB | Pareto | per pass ms |\n"
-            << "|---|---|---:|---:|---:|---:|:-:|---|\n";
+        const bool lightMap = mine.front().hasLightMapError;
+        out << "\n## " << demo << " (" << mine.front().size << ")\n\nReference: " << mine.front().reference << ".\n";
+        if (lightMap)
+            out << "Light map columns (LM): the LightMap target (RGBA, A = specular) against the " << mine.front().lightMapReference
+                << ". Pareto uses the final image's RMS.\n";
+        out << "\n| knob | setting | frame ms | RMS | max | PSNR dB |" << (lightMap ? " LM RMS | LM max | LM PSNR dB |" : "")
+            << " Pareto | per pass ms |\n"
+            << "|---|---|---:|---:|---:|---:|" << (lightMap ? "---:|---:|---:|" : "") << ":-:|---|\n";
         for (std::size_t i = 0; i < mine.size(); ++i) {
             const Measurement& m = mine[i];
             out << "| " << m.knob << " | " << m.setting << (m.seedDefault ? " *" : "") << " | " << fixed(m.frameMs, "%.3f")
                 << " | " << fixed(m.error.rms, "%.5f") << " | " << fixed(m.error.max, "%.4f") << " | "
-                << fixed(m.error.psnr, "%.2f") << " | " << (pareto[i] ? "yes" : "") << " | " << passes(m, ", ") << " |\n";
+                << fixed(m.error.psnr, "%.2f") << " | ";
+            if (lightMap)
+                out << fixed(m.lightMapError.rms, "%.5f") << " | " << fixed(m.lightMapError.max, "%.4f") << " | "
+                    << fixed(m.lightMapError.psnr, "%.2f") << " | ";
+            out << (pareto[i] ? "yes" : "") << " | " << passes(m, ", ") << " |\n";
         }
     }
 }

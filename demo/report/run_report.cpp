@@ -69,6 +69,21 @@ bool checkReport(const std::vector<Measurement>& rows, const std::string& plot) 
     const Measurement* tutorial = find(rows, "pointlights", "G-buffer formats", "Color/Color/Single, light Color");
     const Measurement* float32 = find(rows, "pointlights", "G-buffer formats", "Vector4 x2/Single, light Vector4");
     if (tutorial && float32) expect(float32->error.rms < tutorial->error.rms, "pointlights: float32 formats more exact than the chapter's");
+    // The deferred light map against the exact one (ray-cast shadows): finite, and a larger point
+    // shadow cube can only resolve the point light's shadow edges better than the smallest.
+    const Measurement *smallestCube = nullptr, *largestCube = nullptr;
+    for (const Measurement& m : rows) {
+        if (!m.hasLightMapError) continue;
+        expect(std::isfinite(m.lightMapError.rms) && m.lightMapError.max >= m.lightMapError.rms && m.lightMapError.max <= 1,
+               m.demo + " " + m.knob + " " + m.setting + ": light map error finite, RMS <= max <= 1");
+        if (m.knob == "point shadow cube") {
+            if (!smallestCube) smallestCube = &m;
+            largestCube = &m;
+        }
+    }
+    if (smallestCube && largestCube && smallestCube != largestCube)
+        expect(largestCube->lightMapError.rms < smallestCube->lightMapError.rms,
+               "deferred: point shadow cube " + largestCube->setting + " light map nearer the exact one than " + smallestCube->setting);
     expect(std::filesystem::file_size(plot) > 1000, "report.png written");
     return ok;
 }
@@ -111,8 +126,11 @@ int runReport(int argc, char** argv) {
     else if (quick) options.width = 96, options.height = 64;
     options.outDir = common.outDir;
     options.progress = [](const Measurement& m) {
-        std::printf("  %-12s %-20s %-40s %9.3f ms  RMS %.5f  max %.4f  PSNR %6.2f dB\n", m.demo.c_str(), m.knob.c_str(),
+        std::printf("  %-12s %-20s %-40s %9.3f ms  RMS %.5f  max %.4f  PSNR %6.2f dB", m.demo.c_str(), m.knob.c_str(),
                     m.setting.c_str(), m.frameMs, m.error.rms, m.error.max, m.error.psnr);
+        if (m.hasLightMapError)
+            std::printf("  light map: RMS %.5f  max %.4f  PSNR %6.2f dB", m.lightMapError.rms, m.lightMapError.max, m.lightMapError.psnr);
+        std::printf("\n");
         std::fflush(stdout);
     };
     std::filesystem::create_directories(options.outDir);

@@ -63,7 +63,7 @@ void saveImage(GraphicsDevice& device, const SweepOptions& options, const Measur
 }
 
 void saveReference(GraphicsDevice& device, const SweepOptions& options, const std::string& demo,
-                   const std::vector<double>& rgb, int width, int height) {
+                   const std::vector<double>& rgb, int width, int height, const std::string& name) {
     if (options.outDir.empty()) return;
     std::vector<Color> pixels(std::size_t(width) * std::size_t(height));
     for (std::size_t i = 0; i < pixels.size(); ++i) {
@@ -74,7 +74,7 @@ void saveReference(GraphicsDevice& device, const SweepOptions& options, const st
     image.SetData(pixels);
     const auto dir = std::filesystem::path(options.outDir) / "images" / demo;
     std::filesystem::create_directories(dir);
-    image.SaveAsPng((dir / "reference.png").string());
+    image.SaveAsPng((dir / name).string());
 }
 
 }  // namespace fxport::report

@@ -30,9 +30,9 @@ void runTimedFrames(GraphicsDevice& device, GpuTimer& timer, const SweepOptions&
 // Writes the back buffer to outDir/<demo>/<knob>-<setting>.png when outDir is set.
 void saveImage(GraphicsDevice& device, const SweepOptions& options, const Measurement& m);
 
-// Writes `rgb` (W x H x 3 in [0, 1]) to outDir/images/<demo>/reference.png when outDir is set.
+// Writes `rgb` (W x H x 3 in [0, 1]) to outDir/images/<demo>/<name> when outDir is set.
 void saveReference(GraphicsDevice& device, const SweepOptions& options, const std::string& demo,
-                   const std::vector<double>& rgb, int width, int height);
+                   const std::vector<double>& rgb, int width, int height, const std::string& name = "reference.png");
 
 std::vector<Measurement> sweepRastertek50(const SweepOptions& options);
 std::vector<Measurement> sweepLighting2d(const SweepOptions& options);
