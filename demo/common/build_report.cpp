@@ -81,10 +81,12 @@ void BuildReport::addLoadedEffects(const ContentManager& content) {
         if (!effect) continue;
         EffectEntry e;
         e.asset = record.assetName;
-        e.loadMs = record.milliseconds;
+        const EffectStatistics stats = effect->statistics();
+        e.loadMs = stats.loadMilliseconds + stats.compileMilliseconds + stats.linkMilliseconds;
         for (int i = 0; i < effect->Techniques.Count(); ++i) {
             EffectTechnique& technique = *effect->Techniques[i];
-            e.techniques.push_back(technique.Name() + "(" + std::to_string(technique.Passes.Count()) + ")");
+            e.techniques.push_back(technique.Name() + "(" + std::to_string(technique.Passes.Count()) + ")" +
+                                   (technique.IsCompiled() ? "+" : ""));
             e.passes += technique.Passes.Count();
         }
         effects.push_back(std::move(e));
@@ -123,8 +125,8 @@ void PrintExplain(std::FILE* out, const BuildReport& built, const BuildReport& a
                       "  all-features: %s\n",
                  allFeaturesText);
 
-    std::fprintf(out, "effects (techniques(passes); load time = xlate compile without cache + GL programs; the\n"
-                      "process's first compile also pays xlate's start-up):\n");
+    std::fprintf(out, "effects (techniques(passes), + = compiled; time = outline at load + techniques compiled at\n"
+                      "first Apply + GL programs; the process's first compile also pays xlate's start-up):\n");
     std::set<std::string> seen;
     auto printEffect = [&](const std::string& asset) {
         if (!seen.insert(asset).second) return;

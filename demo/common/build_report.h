@@ -18,9 +18,11 @@ namespace fxport::demo {
 struct BuildReport {
     struct EffectEntry {
         std::string asset;                    // "Effects/SpotLight"
-        std::vector<std::string> techniques;  // "Name(passes)"
+        std::vector<std::string> techniques;  // "Name(passes)", "+" appended when it was compiled
         int passes = 0;
-        double loadMs = 0;                    // xlate's compile (or cache hit) and the GL programs
+        // Effect::statistics(): the outline at load, then the techniques compiled at their first
+        // Apply (xlate, cache hits included) and their GL programs.
+        double loadMs = 0;
     };
     struct TargetEntry {
         std::string name;
