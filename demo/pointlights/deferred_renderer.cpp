@@ -132,8 +132,11 @@ void DeferredRenderer::DrawPointLight(Vector3 lightPosition, Color color, float 
 
     // fxport (issue 6): frustum culling. The volume drawn is the sphere of lightRadius (the model's
     // vertices lie on it); if the camera's frustum does not meet it, the light lights no pixel seen.
-    if (frustumCulling &&
-        !BoundingFrustum(camera->View * camera->Projection).Intersects(BoundingSphere(lightPosition, lightRadius))) {
+    const bool culled = frustumCulling && !BoundingFrustum(camera->View * camera->Projection)
+                                               .Intersects(BoundingSphere(lightPosition, lightRadius));
+    const bool cameraInside = Vector3::Distance(camera->Position, lightPosition) < lightRadius + camera->NearDistance;
+    drawnPointLights.push_back({lightPosition, color.ToVector3(), lightRadius, lightIntensity, cameraInside, culled});
+    if (culled) {
         ++culledLights;
         return;
     }
@@ -173,8 +176,6 @@ void DeferredRenderer::DrawPointLight(Vector3 lightPosition, Color color, float 
         GraphicsDevice.RasterizerState = RasterizerState::CullCounterClockwise;
         ++outsideLights;
     }
-    drawnPointLights.push_back({lightPosition, color.ToVector3(), lightRadius, lightIntensity,
-                                cameraToCenter < lightRadius + camera->NearDistance});
 
     pointLightEffect->Techniques[0]->Passes[0].Apply();
     DrawLightSphere();

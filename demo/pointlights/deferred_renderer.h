@@ -83,12 +83,15 @@ public:
     LightRig lightRig;
     // fxdemo --spot: also draw the chapter's exercise, one spot light sweeping over the scene.
     bool drawSpotLight = false;
-    // The last frame's lights as drawn (after the light rig), for fxdemo's CPU reference check.
+    // The last frame's lights (after the light rig), for fxdemo's CPU reference check -- the culled
+    // ones too, so that the reference (which lights every pixel a light reaches) catches a light
+    // culled by mistake.
     struct DrawnPointLight {
         Vector3 position;
         Vector3 color;
         float radius, intensity;
         bool inside;
+        bool culled;
     };
     std::vector<DrawnPointLight> drawnPointLights;
     Vector3 drawnDirection;

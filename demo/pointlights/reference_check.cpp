@@ -625,10 +625,11 @@ bool checkLightMapAndCombine(Game1& game, bool spot, double time) {
             directionalOnly[std::size_t(y) * std::size_t(W) + std::size_t(x)] = !othersReach;
         }
     const GpuImage gpuLight = fromColors(light, W, H);
-    std::printf("CPU reference of lightRT (DirectionalLight.fx + %zu x PointLight.fx%s, %d drawn from inside; sphere's "
-                "inscribed radius %.4f of its vertices'):\n",
-                r.drawnPointLights.size(), spot ? " + SpotLight.fx" : "", r.insideLights + (spot && r.spotInside),
-                sphereRatio);
+    std::printf("CPU reference of lightRT (DirectionalLight.fx + %zu x PointLight.fx%s, %d of them culled by the "
+                "renderer but not by the reference, %d drawn from inside; sphere's inscribed radius %.4f of its "
+                "vertices'):\n",
+                r.drawnPointLights.size(), spot ? " + SpotLight.fx" : "", r.culledLights,
+                r.insideLights + (spot && r.spotInside), sphereRatio);
     const char* lightBound = "each light's 8-bit rounding (+-0.05 LSB of a half), summed; hull over sample points; "
                              "0 accepted between a sphere's faces and its radius";
     bool pass = compare("lightRT", lightBound, refLight, gpuLight, 1.0);
