@@ -12,6 +12,7 @@
 #include <memory>
 
 #include "deferred/game1.h"
+#include "deferred/run_deferred.h"
 #include "report/deferred_light_map_reference.h"
 #include "report/sweep.h"
 
@@ -77,6 +78,14 @@ Images run(const SweepOptions& options, int W, int H, const Knobs& k, Measuremen
     game.graphics.PreferredBackBufferWidth = w;
     game.graphics.PreferredBackBufferHeight = h;
     game.graphics.platform = options.platform;
+    // The viewpoint and SSAO values `fxdemo deferred` renders with (Game1's own defaults are the
+    // seed's: a camera at floor height and SSAO radius 0, which would leave half the image black and
+    // the SSAO knobs measuring nothing).
+    const TheCansinDeferredRenderer::RunOptions shown;
+    game.demo.cameraPosition = shown.cameraPosition;
+    game.demo.cameraTarget = shown.cameraTarget;
+    game.demo.sampleRadius = shown.sampleRadius;
+    game.demo.distanceScale = shown.distanceScale;
     game.demo.debugViews = false;
     game.demo.gbufferFormats = k.formats;
     game.demo.spotShadowMapSize = k.spot;
