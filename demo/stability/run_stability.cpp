@@ -111,9 +111,14 @@ void writeMarkdown(const std::string& path, const std::vector<CaseResult>& resul
            "Matrix::Invert of singular/near-singular matrices is pinned in tests/runtime/matrix_invert_test.cpp.\n";
 }
 
-// What must hold for the groups of issue 6's second list. Bounds: 1e-5 where the GPU evaluates the
-// same float32 formula as the double reference (observed <= 3e-6: a few ulps, amplified by the
-// reconstruction); 1e-4 where an Rgba64 normal (1.5e-5 steps per component) feeds the light.
+// What must hold for the groups of issue 6's second list. Bounds: 5e-5 where the GPU evaluates the
+// same float32 formula as the double reference (observed <= 3e-6 on llvmpipe, 2.5e-5 on an H100,
+// whose pow/rsqrt are approximations D3D and GL allow); 1e-4 where an Rgba64 normal (1.5e-5 steps
+// per component) feeds the light. Unwrap rays whose sin or cos is only nearly 0 (float pi/2, pi)
+// from a light ON the texture's edge are reported, not asserted: the answer turns on the sign of a
+// 4e-8 sine, which a GPU's approximate sin/cos need not keep (an H100 took the other side).
+const double kGpuFloat = 5e-5;
+
 void checkNewGroups(const std::vector<CaseResult>& results,
                     const std::function<void(const CaseResult&, const std::string&)>& fail,
                     std::vector<std::string>& failures) {
@@ -133,12 +138,12 @@ void checkNewGroups(const std::vector<CaseResult>& results,
             ++seen;
             const int exponent = std::atoi(r.name.c_str() + r.name.find("1e") + 2);
             const double D = 0.05 * std::pow(10.0, exponent);  // f/2, n = 0.1
-            if (fixed) clean(r, 1e-5 * D);
+            if (fixed) clean(r, kGpuFloat * D);
             else if (exponent == 7) broken(r, 1e-3 * D, "float32 z/w to lose the distance at f/n = 1e7");
         } else if (r.group == "normals") {
             ++seen;
             const bool rgba64 = named("Rgba64");
-            if (fixed || named("unit")) clean(r, rgba64 ? 1e-4 : 1e-5);
+            if (fixed || named("unit")) clean(r, rgba64 ? 1e-4 : kGpuFloat);
             else if (!rgba64) {
                 if (r.nonFinite == 0 || !r.first || r.first->pass != "GBuffer")
                     fail(r, "normalize(0) NaN not reported in pass GBuffer: " + firstText(r));
@@ -148,15 +153,16 @@ void checkNewGroups(const std::vector<CaseResult>& results,
             const bool sphere = r.variant.rfind("sphere", 0) == 0;
             if (sphere && (r.variant.find("no switch") != std::string::npos || named("r=1e+06")))
                 broken(r, 0.4, "the sphere to leave the light out");
-            else clean(r, 1e-5);
+            else clean(r, kGpuFloat);
         } else if (r.group == "spot-cone") {
             ++seen;
-            if (fixed) clean(r, 1e-5);
+            if (fixed) clean(r, kGpuFloat);
             else if (named("FOV 0.1") || named("FOV 179.9") || named("facing away"))
                 broken(r, 0.1, "cos(FOV) as the cone test to light the wrong pixels");
         } else if (r.group == "unwrap") {
             ++seen;
-            clean(r, 1e-6);
+            const bool nearZeroOnEdge = named("~0") && (named("light x=0") || named("light y=0"));
+            if (!nearZeroOnEdge) clean(r, 1e-6);
         }
     }
     if (seen == 0) failures.push_back("none of the near-far/normals/point-light/spot-cone/unwrap cases ran");
