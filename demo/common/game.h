@@ -22,9 +22,9 @@ struct GameTime {
 struct GraphicsDeviceManager {
     int PreferredBackBufferWidth = 800;
     int PreferredBackBufferHeight = 480;
-    // fxport: "osmesa" (headless, CPU), "egl" (headless, GPU) or "glfw" (window); see
-    // PresentationParameters::platform.
-    std::string platform = "osmesa";
+    // fxport: "osmesa" (headless, CPU), "egl" (headless, GPU) or "glfw" (window); empty (games
+    // driven by tests): $FXPORT_PLATFORM, else osmesa. See PresentationParameters::platform.
+    std::string platform;
 };
 
 class Game {
