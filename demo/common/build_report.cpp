@@ -78,19 +78,22 @@ void BuildReport::addLoadedEffects(const ContentManager& content) {
     for (const ContentManager::LoadRecord& record : content.loadLog()) {
         if (record.type != "Effect") continue;
         Effect* effect = content.findLoadedEffect(record.assetName);
-        if (!effect) continue;
-        EffectEntry e;
-        e.asset = record.assetName;
-        const EffectStatistics stats = effect->statistics();
-        e.loadMs = stats.loadMilliseconds + stats.compileMilliseconds + stats.linkMilliseconds;
-        for (int i = 0; i < effect->Techniques.Count(); ++i) {
-            EffectTechnique& technique = *effect->Techniques[i];
-            e.techniques.push_back(technique.Name() + "(" + std::to_string(technique.Passes.Count()) + ")" +
-                                   (technique.IsCompiled() ? "+" : ""));
-            e.passes += technique.Passes.Count();
-        }
-        effects.push_back(std::move(e));
+        if (effect) addEffect(record.assetName, *effect);
     }
+}
+
+void BuildReport::addEffect(const std::string& name, Effect& effect) {
+    EffectEntry e;
+    e.asset = name;
+    const EffectStatistics stats = effect.statistics();
+    e.loadMs = stats.loadMilliseconds + stats.compileMilliseconds + stats.linkMilliseconds;
+    for (int i = 0; i < effect.Techniques.Count(); ++i) {
+        EffectTechnique& technique = *effect.Techniques[i];
+        e.techniques.push_back(technique.Name() + "(" + std::to_string(technique.Passes.Count()) + ")" +
+                               (technique.IsCompiled() ? "+" : ""));
+        e.passes += technique.Passes.Count();
+    }
+    effects.push_back(std::move(e));
 }
 
 void BuildReport::addTarget(const RenderTarget2D& target) {

@@ -45,6 +45,8 @@ struct BuildReport {
     // Filling it in: every effect `content` loaded, in load order; a target; the timer's sections
     // (call after GpuTimer::Finish).
     void addLoadedEffects(const ContentManager& content);
+    // One effect the demo created itself (not through a ContentManager), listed as `name`.
+    void addEffect(const std::string& name, Effect& effect);
     void addTarget(const RenderTarget2D& target);
     void addTarget(const RenderTargetCube& target);
     void addPasses(const GpuTimer& timer);

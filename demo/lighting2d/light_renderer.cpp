@@ -47,13 +47,23 @@ void LightRenderer::Initialize() {
 
 void LightRenderer::LoadContent(ContentManager& Content) {
     spriteBatch = std::make_unique<SpriteBatch>(GraphicsDevice);
-    unwrap = Content.Load<Effect>("Effects/Unwrap");
-    unwrapSpotlight = Content.Load<Effect>("Effects/UnwrapSpotlight");
-    spotLight = Content.Load<Effect>("Effects/SpotLight");
-    pointLight = Content.Load<Effect>("Effects/PointLight");
+    // fxport (issue 6): the light types' effects wait for a light of that type (LoadLightEffects).
+    content = &Content;
     verticalBlur = Content.Load<Effect>("Effects/VerticalBlur");
     horizontalBlur = Content.Load<Effect>("Effects/HorizontalBlur");
     lightBlend = Content.Load<Effect>("Effects/LightBlend");
+}
+
+void LightRenderer::LoadLightEffects() {
+    if (!content) throw InvalidOperation("LightRenderer: DrawLitScene before LoadContent (no ContentManager to load the light effects from)");
+    if (!spotLights.empty() && !spotLight) {
+        unwrapSpotlight = content->Load<Effect>("Effects/UnwrapSpotlight");
+        spotLight = content->Load<Effect>("Effects/SpotLight");
+    }
+    if (!pointLights.empty() && !pointLight) {
+        unwrap = content->Load<Effect>("Effects/Unwrap");
+        pointLight = content->Load<Effect>("Effects/PointLight");
+    }
 }
 
 void LightRenderer::BeginDrawBackground() {
@@ -97,19 +107,19 @@ void LightRenderer::PrepareResources() {
     screenDims = Vector2(float(GraphicsDevice.Viewport.Width), float(GraphicsDevice.Viewport.Height));
     const float DiagonalLength = screenDims.Length();
 
-    unwrap->Parameters["TextureWidth"].SetValue(screenDims.X);
-    unwrap->Parameters["TextureHeight"].SetValue(screenDims.Y);
-    unwrap->Parameters["DiagonalLength"].SetValue(DiagonalLength);
-    unwrapSpotlight->Parameters["TextureWidth"].SetValue(screenDims.X);
-    unwrapSpotlight->Parameters["TextureHeight"].SetValue(screenDims.Y);
-    unwrapSpotlight->Parameters["DiagonalLength"].SetValue(DiagonalLength);
-
-    pointLight->Parameters["ScreenDimensions"].SetValue(screenDims);
-    pointLight->Parameters["DiagonalLength"].SetValue(DiagonalLength);
-    pointLight->Parameters["Bias"].SetValue(lightBias);
-    spotLight->Parameters["ScreenDimensions"].SetValue(screenDims);
-    spotLight->Parameters["DiagonalLength"].SetValue(DiagonalLength);
-    spotLight->Parameters["Bias"].SetValue(lightBias);
+    LoadLightEffects();
+    for (Effect* e : {unwrap, unwrapSpotlight}) {
+        if (!e) continue;  // fxport: no light of that type drawn yet
+        e->Parameters["TextureWidth"].SetValue(screenDims.X);
+        e->Parameters["TextureHeight"].SetValue(screenDims.Y);
+        e->Parameters["DiagonalLength"].SetValue(DiagonalLength);
+    }
+    for (Effect* e : {pointLight, spotLight}) {
+        if (!e) continue;
+        e->Parameters["ScreenDimensions"].SetValue(screenDims);
+        e->Parameters["DiagonalLength"].SetValue(DiagonalLength);
+        e->Parameters["Bias"].SetValue(lightBias);
+    }
 
     horizontalBlur->Parameters["ScreenDims"].SetValue(screenDims);
     horizontalBlur->Parameters["minBlur"].SetValue(minBlur);

@@ -52,6 +52,8 @@ public:
     std::unique_ptr<RenderTarget2D> horizontalBlurTarget;
     std::unique_ptr<RenderTarget2D> verticalBlurTarget;
 
+    // fxport (issue 6): unwrapSpotlight and spotLight are loaded when the first spot light is drawn,
+    // unwrap and pointLight when the first point light is (nullptr until then).
     Effect* unwrapSpotlight = nullptr;
     Effect* unwrap = nullptr;
     Effect* spotLight = nullptr;
@@ -83,6 +85,7 @@ public:
 
 private:
     void PrepareResources();
+    void LoadLightEffects();
     void UnwrapShadowCasters(const SpotLight& sLight, float lightDirAngle);
     void UnwrapShadowCasters(const PointLight& pLight);
     void CreateOcclusionMap();
@@ -95,6 +98,8 @@ private:
     Rectangle fullScreen;
     Vector2 screenDims;
     std::unique_ptr<SpriteBatch> spriteBatch;
+    // fxport (issue 6): where LoadLightEffects loads a light type's effects from, at its first light.
+    ContentManager* content = nullptr;
 };
 
 }  // namespace _2DLightingSystem

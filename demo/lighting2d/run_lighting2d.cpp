@@ -1,6 +1,7 @@
 // fxdemo lighting2d: Rabid Lion Games' 2D lighting system with shadows (seed 002) on fxport.
 //
 //   fxdemo lighting2d [--size WxH] [--frames N] [--out DIR] [--gpu] [--window] [--check]
+//                     [--lights sp] [--explain]
 //
 // Game1 draws a procedural background and a few opaque shadow-casting sprites through the
 // LightRenderer's Begin/End pattern, with three point lights and three spot lights, then
@@ -8,7 +9,9 @@
 // DIR/debug.png (a sheet of the intermediate targets) and each of them in DIR/targets/, and the
 // median GPU time of each step. --gpu: EGL; --window: GLFW (Escape quits). --check: compare every
 // light's targets, the accumulated light map and the back buffer of the last frame with CPU
-// references of the effects (reference_check.h); exit 1 if off.
+// references of the effects (reference_check.h); exit 1 if off. --lights: the light types drawn
+// (s spot, p point; both by default). --explain: the effects (compile time), targets (bytes) and
+// passes built and left out against the all-features scene (build_report.h).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -22,6 +25,7 @@
 #include "common/run_options.h"
 #include "fxport/graphics/input.h"
 #include "fxport/platform/graphics_context.h"
+#include "lighting2d/build_report.h"
 #include "lighting2d/light_renderer.h"
 #include "lighting2d/reference_check.h"
 
@@ -54,6 +58,8 @@ public:
     bool spotCaptured = false, pointCaptured = false;
     // fxport --check: every light of each frame (the last frame's are checked).
     CheckCapture* checkCapture = nullptr;
+    // fxport --lights: the light types of the scene, set before Start().
+    bool withSpotLights = true, withPointLights = true;
 
     Game1() {
         Content.RootDirectory = FXPORT_CONTENT_DIR;
@@ -70,18 +76,22 @@ protected:
         const float W = float(GraphicsDevice->Viewport.Width), H = float(GraphicsDevice->Viewport.Height);
         auto at = [&](float fx, float fy) { return Vector2(std::round(fx * W), std::round(fy * H)); };
         const float R = 0.7f * W;
-        lightRenderer->pointLights.emplace_back(at(0.22f, 0.30f), 1.0f, R * 0.8f, Color(255, 140, 60));
-        lightRenderer->pointLights.emplace_back(at(0.72f, 0.62f), 1.0f, R * 0.7f, Color(80, 160, 255));
-        lightRenderer->pointLights.emplace_back(at(0.50f, 0.90f), 0.8f, R * 0.5f, Color(120, 255, 120));
+        if (withPointLights) {
+            lightRenderer->pointLights.emplace_back(at(0.22f, 0.30f), 1.0f, R * 0.8f, Color(255, 140, 60));
+            lightRenderer->pointLights.emplace_back(at(0.72f, 0.62f), 1.0f, R * 0.7f, Color(80, 160, 255));
+            lightRenderer->pointLights.emplace_back(at(0.50f, 0.90f), 0.8f, R * 0.5f, Color(120, 255, 120));
+        }
         const float deg = MathHelper::Pi / 180.f;
         // Straight down (angle 0: sinTheta == 0 exactly in the middle column of the unwrap),
         // straight up (the port's Sign(0) case; angle PI), and a diagonal one.
-        lightRenderer->spotLights.emplace_back(at(0.50f, 0.04f), Vector2(0, 1), 30 * deg, 60 * deg, 1.2f, R,
-                                               Color(255, 255, 200));
-        lightRenderer->spotLights.emplace_back(at(0.88f, 0.95f), Vector2(0, -1), 20 * deg, 45 * deg, 1.0f, R,
-                                               Color(255, 80, 200));
-        lightRenderer->spotLights.emplace_back(at(0.03f, 0.92f), Vector2::Normalize(Vector2(1, -0.6f)), 25 * deg,
-                                               50 * deg, 1.0f, R, Color(255, 230, 90));
+        if (withSpotLights) {
+            lightRenderer->spotLights.emplace_back(at(0.50f, 0.04f), Vector2(0, 1), 30 * deg, 60 * deg, 1.2f, R,
+                                                   Color(255, 255, 200));
+            lightRenderer->spotLights.emplace_back(at(0.88f, 0.95f), Vector2(0, -1), 20 * deg, 45 * deg, 1.0f, R,
+                                                   Color(255, 80, 200));
+            lightRenderer->spotLights.emplace_back(at(0.03f, 0.92f), Vector2::Normalize(Vector2(1, -0.6f)), 25 * deg,
+                                                   50 * deg, 1.0f, R, Color(255, 230, 90));
+        }
         Game::Initialize();
     }
 
@@ -108,9 +118,20 @@ protected:
             return (x < 12 || y >= h - 12) ? Color(120, 120, 140, 255) : Color::Transparent;
         });
         const int W = GraphicsDevice->Viewport.Width, H = GraphicsDevice->Viewport.Height;
-        auto rt = [&](int w, int h) { return std::make_unique<RenderTarget2D>(*GraphicsDevice, w, h); };
-        dbgSpotUnwrap = rt(W, W); dbgSpotOcclusion = rt(W, 48); dbgSpotLightMap = rt(W, H); dbgSpotBlurred = rt(W, H);
-        dbgPointUnwrap = rt(W, W); dbgPointOcclusion = rt(W, 48); dbgPointLightMap = rt(W, H); dbgPointBlurred = rt(W, H);
+        auto rt = [&](int w, int h, const char* name) {
+            auto target = std::make_unique<RenderTarget2D>(*GraphicsDevice, w, h);
+            target->Name = name;
+            return target;
+        };
+        // Only for the light types the scene has (issue 6: nothing it does not need).
+        if (!lightRenderer->spotLights.empty()) {
+            dbgSpotUnwrap = rt(W, W, "debug.spotUnwrap"), dbgSpotOcclusion = rt(W, 48, "debug.spotOcclusion");
+            dbgSpotLightMap = rt(W, H, "debug.spotLightMap"), dbgSpotBlurred = rt(W, H, "debug.spotBlurred");
+        }
+        if (!lightRenderer->pointLights.empty()) {
+            dbgPointUnwrap = rt(W, W, "debug.pointUnwrap"), dbgPointOcclusion = rt(W, 48, "debug.pointOcclusion");
+            dbgPointLightMap = rt(W, H, "debug.pointLightMap"), dbgPointBlurred = rt(W, H, "debug.pointBlurred");
+        }
         lightRenderer->afterLightUser = this;
         lightRenderer->afterLight = [](LightRenderer& r, const Light& light, bool isSpot, void* user) {
             auto& g = *static_cast<Game1*>(user);
@@ -119,6 +140,7 @@ protected:
                 CaptureLight(r, light, isSpot, g.checkCapture->lights.back());
             }
             if (!g.captureDebug || (isSpot ? g.spotCaptured : g.pointCaptured)) return;
+            if (!(isSpot ? g.dbgSpotUnwrap : g.dbgPointUnwrap)) return;  // a light added after LoadContent
             (isSpot ? g.spotCaptured : g.pointCaptured) = true;
             g.copy(*r.unwrapTarget, isSpot ? *g.dbgSpotUnwrap : *g.dbgPointUnwrap);
             g.copy(*r.occlusionMap, isSpot ? *g.dbgSpotOcclusion : *g.dbgPointOcclusion);
@@ -162,6 +184,15 @@ protected:
 public:
     GpuTimer* gpuTimer = nullptr;
 
+    // --explain: the renderer's build and this program's debug copies.
+    BuildReport Report(const GpuTimer* timer) {
+        BuildReport report = ReportBuild(Content, *lightRenderer, timer);
+        for (const auto* t : {&dbgSpotUnwrap, &dbgSpotOcclusion, &dbgSpotLightMap, &dbgSpotBlurred, &dbgPointUnwrap,
+                              &dbgPointOcclusion, &dbgPointLightMap, &dbgPointBlurred})
+            if (*t) report.addTarget(**t);
+        return report;
+    }
+
     // Leaves `to` bound: setting the light's target again would clear it (DiscardContents, as XNA
     // does), and the next step sets its own target anyway.
     void copy(Texture2D& from, RenderTarget2D& to) {
@@ -190,25 +221,61 @@ public:
         sheet.SaveAsPng((std::filesystem::path(dir) / "debug.png").string());
         const auto targets = std::filesystem::path(dir) / "targets";
         std::filesystem::create_directories(targets);
-        auto save = [&](Texture2D& t, const char* name) { t.SaveAsPng((targets / name).string()); };
-        save(*lightRenderer->backBufferCache, "background.png");
-        save(*lightRenderer->midGroundTarget, "casters.png");
-        save(*lightRenderer->lightMap, "lightmap_accumulated.png");
-        save(*dbgSpotUnwrap, "spot0_unwrap.png");
-        save(*dbgSpotOcclusion, "spot0_occlusion.png");
-        save(*dbgSpotLightMap, "spot0_lightmap.png");
-        save(*dbgSpotBlurred, "spot0_blurred.png");
-        save(*dbgPointUnwrap, "point0_unwrap.png");
-        save(*dbgPointOcclusion, "point0_occlusion.png");
-        save(*dbgPointLightMap, "point0_lightmap.png");
-        save(*dbgPointBlurred, "point0_blurred.png");
+        auto save = [&](const auto& t, const char* name) {
+            if (t) t->SaveAsPng((targets / name).string());
+        };
+        save(lightRenderer->backBufferCache, "background.png");
+        save(lightRenderer->midGroundTarget, "casters.png");
+        save(lightRenderer->lightMap, "lightmap_accumulated.png");
+        save(dbgSpotUnwrap, "spot0_unwrap.png");
+        save(dbgSpotOcclusion, "spot0_occlusion.png");
+        save(dbgSpotLightMap, "spot0_lightmap.png");
+        save(dbgSpotBlurred, "spot0_blurred.png");
+        save(dbgPointUnwrap, "point0_unwrap.png");
+        save(dbgPointOcclusion, "point0_occlusion.png");
+        save(dbgPointLightMap, "point0_lightmap.png");
+        save(dbgPointBlurred, "point0_blurred.png");
     }
 };
 
+static const char* kUsage =
+    "fxdemo lighting2d [--size WxH] [--frames N] [--out DIR] [--gpu] [--window] [--check] [--lights sp] [--explain]";
+
 static int usage(const char* message) {
     if (message) std::fprintf(stderr, "fxdemo lighting2d: %s\n", message);
-    std::fprintf(stderr, "usage: fxdemo lighting2d [--size WxH] [--frames N] [--out DIR] [--gpu] [--window] [--check]\n");
+    std::fprintf(stderr, "usage: %s\n", kUsage);
     return 2;
+}
+
+// --explain's yardstick: the seed's scene with both light types (3 spot, 3 point lights), at the
+// same size, platform and renderer knobs, built and drawn once by the same code in this run.
+static void ExplainAgainstAllFeatures(const Game1& game, const BuildReport& built) {
+    // This game has its own device: the main run's --check-finite scan stays with the main run.
+    fxport::FiniteCheck* const mainRunCheck = PassTimer::finiteCheck;
+    PassTimer::finiteCheck = nullptr;
+    BuildReport all;
+    {
+        Game1 everything;
+        everything.graphics.PreferredBackBufferWidth = game.graphics.PreferredBackBufferWidth;
+        everything.graphics.PreferredBackBufferHeight = game.graphics.PreferredBackBufferHeight;
+        everything.graphics.platform = game.graphics.platform;
+        everything.Content.effectOptions = game.Content.effectOptions;
+        everything.Start();
+        GpuTimer timer(*everything.GraphicsDevice);
+        everything.gpuTimer = &timer;
+        everything.lightRenderer->gpuTimer = &timer;
+        everything.captureDebug = true;  // as the main run's last frame
+        everything.Tick();
+        timer.EndFrame();
+        timer.Finish();
+        all = everything.Report(&timer);
+        everything.gpuTimer = nullptr;
+        everything.lightRenderer->gpuTimer = nullptr;
+    }
+    PassTimer::finiteCheck = mainRunCheck;
+    fxport::demo::PrintExplain(stdout, built, all, "the seed's scene: 3 spot and 3 point lights; same size and platform");
+    std::printf("lights drawn: %d spot, %d point (all-features: %d spot, %d point); the passes run once per light\n",
+                built.spotLights, built.pointLights, all.spotLights, all.pointLights);
 }
 
 int runLighting2d(int argc, char** argv) {
@@ -217,11 +284,27 @@ int runLighting2d(int argc, char** argv) {
     common.height = 480;
     common.outDir = "out/lighting2d";
     bool check = false;
+    bool explain = false;
+    std::string lights = "sp";
     for (int i = 1; i < argc; ++i) {
         std::string error;
         if (std::string(argv[i]) == "--check") {
             check = true;
             continue;
+        }
+        if (std::string(argv[i]) == "--explain") {
+            explain = true;
+            continue;
+        }
+        if (std::string(argv[i]) == "--lights") {
+            lights = i + 1 < argc ? argv[++i] : "";
+            if (lights.empty() || lights.find_first_not_of("sp") != std::string::npos)
+                return usage(("--lights wants the letters s (spot) and p (point), got '" + lights + "'").c_str());
+            continue;
+        }
+        if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
+            std::printf("usage: %s\n", kUsage);
+            return 0;
         }
         switch (fxport::demo::parseCommonOption(argc, argv, i, common, error)) {
         case fxport::demo::OptionResult::Consumed: continue;
@@ -237,6 +320,10 @@ int runLighting2d(int argc, char** argv) {
     game.graphics.PreferredBackBufferWidth = width;
     game.graphics.PreferredBackBufferHeight = height;
     game.graphics.platform = platformName;
+    game.withSpotLights = lights.find('s') != std::string::npos;
+    game.withPointLights = lights.find('p') != std::string::npos;
+    // --explain: every effect compiled by xlate in this process, so that the load times compare.
+    if (explain) game.Content.effectOptions.useCache = false;
     game.Start();
     auto timer = std::make_unique<GpuTimer>(*game.GraphicsDevice);
     game.gpuTimer = timer.get();
@@ -276,10 +363,13 @@ int runLighting2d(int argc, char** argv) {
         game.WriteDebug(outDir);
         std::printf("wrote %s, %s/debug.png and %s/targets/*.png\n", finalPath.c_str(), outDir.c_str(), outDir.c_str());
     }
+    if (explain) ExplainAgainstAllFeatures(game, game.Report(timer.get()));
     return status;
 }
 
 }  // namespace _2DLightingSystem
 
-FXDEMO_PROGRAM(lighting2d, "fxdemo lighting2d [--size WxH] [--frames N] [--out DIR] [--gpu] [--window] [--check]",
+FXDEMO_PROGRAM(lighting2d,
+               "fxdemo lighting2d [--size WxH] [--frames N] [--out DIR] [--gpu] [--window] [--check] [--lights sp]\n"
+               "                         [--explain]",
                _2DLightingSystem::runLighting2d);
