@@ -9,12 +9,13 @@ list(APPEND FXDEMO_TESTS demo.lighting2d.check.frames)
 
 # fxdemo lighting2d --explain (issue 6): a scene of point lights only loads neither spot effect and
 # allocates no spot debug copies; the all-features scene (3 spot, 3 point lights) built in the same
-# run has them, so they are listed as left out. And the other way round for spot lights only.
+# run has them, so they are listed as left out (the spot unwrap copy: 96 x 96 x 4 bytes). And the
+# other way round for spot lights only.
 add_test(NAME demo.lighting2d.explain.point_only
          COMMAND fxdemo lighting2d --size 96x64 --frames 1 --lights p --explain
                  --out ${CMAKE_BINARY_DIR}/test-out/lighting2d-explain-p)
 set_tests_properties(demo.lighting2d.explain.point_only PROPERTIES
-  PASS_REGULAR_EXPRESSION "built +Effects/Unwrap .*built +Effects/PointLight .*left out +Effects/UnwrapSpotlight .*left out +Effects/SpotLight .*effects: 5 built.*all-features 7.*left out +debug\\.spotUnwrap .*lights drawn: 0 spot, 3 point \\(all-features: 3 spot, 3 point\\)"
+  PASS_REGULAR_EXPRESSION "built +Effects/Unwrap .*built +Effects/PointLight .*left out +Effects/UnwrapSpotlight .*left out +Effects/SpotLight .*effects: 5 built.*all-features 7.*left out +debug\\.spotUnwrap +96x96 Color +36864 B.*lights drawn: 0 spot, 3 point \\(all-features: 3 spot, 3 point\\)"
   FAIL_REGULAR_EXPRESSION "built +Effects/(UnwrapSpotlight|SpotLight) ")
 add_test(NAME demo.lighting2d.explain.spot_only
          COMMAND fxdemo lighting2d --size 96x64 --frames 1 --lights s --explain

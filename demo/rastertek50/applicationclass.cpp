@@ -106,6 +106,7 @@ bool ApplicationClass::Initialize(const std::string& platform, const std::string
 
 	// Create the deferred shader object.
 	m_DeferredShader = std::make_unique<DeferredShaderClass>();
+	m_DeferredShader->SetEffectOptions(m_effectOptions);  // fxport
 
 	// Initialize the deferred shader object.
 	result = m_DeferredShader->Initialize(m_D3D->GetDevice(), hlslDir);
@@ -117,6 +118,7 @@ bool ApplicationClass::Initialize(const std::string& platform, const std::string
 
 	// Create the light shader object.
 	m_LightShader = std::make_unique<LightShaderClass>();
+	m_LightShader->SetEffectOptions(m_effectOptions);  // fxport
 
 	// Initialize the light shader object.
 	result = m_LightShader->Initialize(m_D3D->GetDevice(), hlslDir);

@@ -62,7 +62,12 @@ public:
 	// Initialize. The seed's is R32G32B32A32_FLOAT (Vector4); HalfVector4 and Color (8-bit unorm,
 	// which clamps the signed normals the seed writes) are the cheaper ones.
 	void SetGBufferFormat(fxport::SurfaceFormat format) { m_gbufferFormat = format; }
+	// fxport addition (issue 6, fxdemo --explain): the options both effects are compiled with, set
+	// before Initialize.
+	void SetEffectOptions(const fxport::EffectOptions& options) { m_effectOptions = options; }
 	D3DClass* GetD3D() { return m_D3D.get(); }
+	DeferredShaderClass* GetDeferredShader() { return m_DeferredShader.get(); }
+	LightShaderClass* GetLightShader() { return m_LightShader.get(); }
 	DeferredBuffersClass* GetDeferredBuffers() { return m_DeferredBuffers.get(); }
 	ModelClass* GetModel() { return m_Model.get(); }
 	// The cube's rotation (radians) of the last frame rendered.
@@ -99,6 +104,7 @@ private:
 	float m_rotation;
 	fxport::GpuTimer* m_gpuTimer;
 	fxport::SurfaceFormat m_gbufferFormat = fxport::SurfaceFormat::Vector4;
+	fxport::EffectOptions m_effectOptions;
 };
 
 }  // namespace Rastertek50

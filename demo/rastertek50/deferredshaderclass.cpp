@@ -68,7 +68,7 @@ bool DeferredShaderClass::InitializeShader(fxport::GraphicsDevice* device, const
 	// Load the shader in from the file (fxport: compiled by xlate, cached).
 	try
 	{
-		m_effect = std::make_unique<fxport::Effect>(*device, filename);
+		m_effect = std::make_unique<fxport::Effect>(*device, filename, m_effectOptions);
 	}
 	catch(const std::exception& error)
 	{

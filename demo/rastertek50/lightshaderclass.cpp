@@ -72,7 +72,7 @@ bool LightShaderClass::InitializeShader(fxport::GraphicsDevice* device, const st
 	// Load the shader in from the file (fxport: compiled by xlate, cached).
 	try
 	{
-		m_effect = std::make_unique<fxport::Effect>(*device, filename);
+		m_effect = std::make_unique<fxport::Effect>(*device, filename, m_effectOptions);
 	}
 	catch(const std::exception& error)
 	{

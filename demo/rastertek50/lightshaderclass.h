@@ -29,6 +29,10 @@ public:
 
 	// fxport: `hlslDir` is the folder holding rastertek/light.fx (the seed's "../Engine/").
 	bool Initialize(fxport::GraphicsDevice*, const std::string& hlslDir);
+	// fxport additions (issue 6, fxdemo --explain): the options the effect is compiled with (set
+	// before Initialize; e.g. useCache = false so that compile times compare) and the effect itself.
+	void SetEffectOptions(const fxport::EffectOptions& options) { m_effectOptions = options; }
+	fxport::Effect* GetEffect() { return m_effect.get(); }
 	void Shutdown();
 	void Render(fxport::GraphicsDevice*, int, D3DXMATRIX, D3DXMATRIX, D3DXMATRIX, fxport::Texture*, 
 		    fxport::Texture*, D3DXVECTOR3);
@@ -44,6 +48,7 @@ private:
 
 private:
 	std::unique_ptr<fxport::Effect> m_effect;
+	fxport::EffectOptions m_effectOptions;
 	fxport::EffectTechnique* m_technique;
 	// fxport: the input layout is the vertex buffer's VertexDeclaration (OrthoWindowClass::VertexDeclaration).
 

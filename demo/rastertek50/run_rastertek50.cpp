@@ -3,6 +3,7 @@
 // and calls Frame() once per frame.
 //
 //   fxdemo rastertek50 [--size WxH] [--frames N] [--out DIR] [--gpu] [--window] [--hlsl DIR] [--check]
+//                      [--explain]
 //
 // Headless (OSMesa; --gpu: EGL) it renders N frames (default 25: the cube turns pi/100 per frame,
 // so frame 25 shows it at 45 degrees; the rotation depends only on the frame number), prints the
@@ -10,7 +11,10 @@
 // two G-buffer targets side by side: left the colour target, right the normal target shown as
 // n * 0.5 + 0.5, with the cleared background, normal (0,0,0), left black). --window: a GLFW window,
 // until it is closed, Escape is pressed or N frames have run; images only with --out. --check: the
-// last frame against a CPU reference (reference_check.h); exit code 1 when it is off.
+// last frame against a CPU reference (reference_check.h); exit code 1 when it is off. --explain: the
+// effects (compile time, xlate's cache off), render targets (bytes) and passes built; the seed's
+// pipeline has no optional part, so this run is its all-features configuration and nothing is left
+// out.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -20,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "common/build_report.h"
 #include "common/frame_loop.h"
 #include "common/pass_timer.h"
 #include "common/program_registry.h"
@@ -33,7 +38,8 @@ namespace Rastertek50 {
 
 namespace {
 
-const char* kUsage = "fxdemo rastertek50 [--size WxH] [--frames N] [--out DIR] [--gpu] [--window] [--hlsl DIR] [--check]";
+const char* kUsage =
+    "fxdemo rastertek50 [--size WxH] [--frames N] [--out DIR] [--gpu] [--window] [--hlsl DIR] [--check] [--explain]";
 
 int usage(const char* message) {
     if (message) std::fprintf(stderr, "fxdemo rastertek50: %s\n", message);
@@ -75,11 +81,23 @@ void WriteDebugImage(ApplicationClass& application, const std::string& path) {
     image.SaveAsPng(path);
 }
 
+// --explain: the two effects the shader classes created, the G-buffer's two targets (the first one
+// carries the depth buffer) and the passes the timer saw.
+fxport::demo::BuildReport ReportBuild(ApplicationClass& application, const fxport::GpuTimer& timer) {
+    fxport::demo::BuildReport report;
+    report.addEffect("rastertek/deferred.fx", *application.GetDeferredShader()->GetEffect());
+    report.addEffect("rastertek/light.fx", *application.GetLightShader()->GetEffect());
+    for (int i = 0; i < BUFFER_COUNT; ++i) report.addTarget(*application.GetDeferredBuffers()->GetShaderResourceView(i));
+    report.addPasses(timer);
+    return report;
+}
+
 int runRastertek50(int argc, char** argv) {
     fxport::demo::CommonOptions common;
     common.outDir = "fxdemo-out/rastertek50";
     std::string hlslDir = FXPORT_HLSL_DIR;
     bool check = false;
+    bool explain = false;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         auto value = [&]() -> const char* { return i + 1 < argc ? argv[++i] : nullptr; };
@@ -89,6 +107,8 @@ int runRastertek50(int argc, char** argv) {
         if (parsed == fxport::demo::OptionResult::Consumed) continue;
         if (arg == "--check") {
             check = true;
+        } else if (arg == "--explain") {
+            explain = true;
         } else if (arg == "--hlsl") {
             const char* v = value();
             if (!v) return usage("--hlsl wants a folder");
@@ -100,6 +120,10 @@ int runRastertek50(int argc, char** argv) {
 
     try {
         ApplicationClass application;
+        // --explain: both effects compiled by xlate in this process, so that the times compare.
+        fxport::EffectOptions effectOptions;
+        effectOptions.useCache = !explain;
+        application.SetEffectOptions(effectOptions);
         if (!application.Initialize(common.platform, hlslDir, common.width, common.height)) return 1;
         fxport::GraphicsDevice& device = *application.GetD3D()->GetDevice();
         auto timer = std::make_unique<fxport::GpuTimer>(device);
@@ -129,6 +153,14 @@ int runRastertek50(int argc, char** argv) {
         }
         bool checked = true;
         if (check) checked = RunReferenceCheck(application);
+        if (explain) {
+            // The pipeline is fixed (no light types, shadows or options to leave out): the
+            // all-features configuration is this build itself.
+            const fxport::demo::BuildReport built = ReportBuild(application, *timer);
+            fxport::demo::PrintExplain(stdout, built, built,
+                                       "the seed's pipeline, which has no optional part (G-buffer pass, light pass): "
+                                       "this run; nothing can be left out");
+        }
         application.SetGpuTimer(nullptr);
         timer.reset();
         application.Shutdown();
@@ -144,5 +176,7 @@ int runRastertek50(int argc, char** argv) {
 
 }  // namespace Rastertek50
 
-FXDEMO_PROGRAM(rastertek50, "fxdemo rastertek50 [--size WxH] [--frames N] [--out DIR] [--gpu] [--window]",
+FXDEMO_PROGRAM(rastertek50,
+               "fxdemo rastertek50 [--size WxH] [--frames N] [--out DIR] [--gpu] [--window] [--hlsl DIR] [--check]\n"
+               "                          [--explain]",
                Rastertek50::runRastertek50);
