@@ -28,6 +28,7 @@
 #include "lighting2d/build_report.h"
 #include "lighting2d/light_renderer.h"
 #include "lighting2d/reference_check.h"
+#include "lighting2d/scene_sprites.h"
 
 namespace _2DLightingSystem {
 
@@ -35,15 +36,6 @@ using fxport::demo::GameTime;
 using fxport::demo::PassTimer;
 
 // Procedural sprites (fxport: the seed's textures are not available; made with SetData).
-static std::unique_ptr<Texture2D> MakeTexture(fxport::GraphicsDevice& device, int w, int h,
-                                              Color (*texel)(int x, int y, int w, int h)) {
-    std::vector<Color> data(std::size_t(w) * std::size_t(h));
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) data[std::size_t(y) * std::size_t(w) + std::size_t(x)] = texel(x, y, w, h);
-    auto texture = std::make_unique<Texture2D>(device, w, h);
-    texture->SetData(data);
-    return texture;
-}
 
 class Game1 : public fxport::demo::Game {
 public:
@@ -98,25 +90,11 @@ protected:
     void LoadContent() override {
         spriteBatch = std::make_unique<SpriteBatch>(*GraphicsDevice);
         lightRenderer->LoadContent(Content);
-        background = MakeTexture(*GraphicsDevice, 256, 256, [](int x, int y, int, int) {
-            const bool tile = ((x / 32) + (y / 32)) % 2 == 0;
-            const bool grout = x % 32 == 0 || y % 32 == 0;
-            const int v = grout ? 90 : (tile ? 200 : 170);
-            return Color(v, v - 10 + (x % 7), v - 30 + (y % 5), 255);
-        });
-        box = MakeTexture(*GraphicsDevice, 64, 64, [](int x, int y, int w, int h) {
-            const bool edge = x < 4 || y < 4 || x >= w - 4 || y >= h - 4;
-            return edge ? Color(60, 40, 20, 255) : Color(150, 100, 50, 255);
-        });
-        disc = MakeTexture(*GraphicsDevice, 64, 64, [](int x, int y, int w, int h) {
-            const float dx = x + 0.5f - w / 2.f, dy = y + 0.5f - h / 2.f;
-            return dx * dx + dy * dy < (w / 2.f) * (w / 2.f) ? Color(70, 110, 70, 255) : Color::Transparent;
-        });
-        // An "L": marks orientation (a flip would show).
-        bar = MakeTexture(*GraphicsDevice, 32, 96, [](int x, int y, int w, int h) {
-            (void)w;
-            return (x < 12 || y >= h - 12) ? Color(120, 120, 140, 255) : Color::Transparent;
-        });
+        SceneSprites sprites = MakeSceneSprites(*GraphicsDevice);
+        background = std::move(sprites.background);
+        box = std::move(sprites.box);
+        disc = std::move(sprites.disc);
+        bar = std::move(sprites.bar);
         const int W = GraphicsDevice->Viewport.Width, H = GraphicsDevice->Viewport.Height;
         auto rt = [&](int w, int h, const char* name) {
             auto target = std::make_unique<RenderTarget2D>(*GraphicsDevice, w, h);

@@ -11,6 +11,7 @@
 
 #include "common/game.h"
 #include "lighting2d/light_renderer.h"
+#include "lighting2d/scene_sprites.h"
 #include "report/lighting2d_reference.h"
 #include "report/sweep.h"
 
@@ -26,14 +27,6 @@ struct Knobs {
     float maxBlur = 5.0f;
 };
 
-std::unique_ptr<Texture2D> makeTexture(fxport::GraphicsDevice& device, int w, int h, Color (*texel)(int x, int y, int w, int h)) {
-    std::vector<Color> data(std::size_t(w) * std::size_t(h));
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) data[std::size_t(y) * std::size_t(w) + std::size_t(x)] = texel(x, y, w, h);
-    auto texture = std::make_unique<Texture2D>(device, w, h);
-    texture->SetData(data);
-    return texture;
-}
 
 class Scene2D : public demo::Game {
 public:
@@ -68,22 +61,11 @@ protected:
     void LoadContent() override {
         spriteBatch_ = std::make_unique<SpriteBatch>(*GraphicsDevice);
         lightRenderer->LoadContent(Content);
-        background_ = makeTexture(*GraphicsDevice, 256, 256, [](int x, int y, int, int) {
-            const bool tile = ((x / 32) + (y / 32)) % 2 == 0;
-            const int v = (x % 32 == 0 || y % 32 == 0) ? 90 : (tile ? 200 : 170);
-            return Color(v, v - 10 + (x % 7), v - 30 + (y % 5), 255);
-        });
-        box_ = makeTexture(*GraphicsDevice, 64, 64, [](int x, int y, int w, int h) {
-            const bool edge = x < 4 || y < 4 || x >= w - 4 || y >= h - 4;
-            return edge ? Color(60, 40, 20, 255) : Color(150, 100, 50, 255);
-        });
-        disc_ = makeTexture(*GraphicsDevice, 64, 64, [](int x, int y, int w, int h) {
-            const float dx = x + 0.5f - w / 2.f, dy = y + 0.5f - h / 2.f;
-            return dx * dx + dy * dy < (w / 2.f) * (w / 2.f) ? Color(70, 110, 70, 255) : Color::Transparent;
-        });
-        bar_ = makeTexture(*GraphicsDevice, 32, 96, [](int x, int y, int, int h) {
-            return (x < 12 || y >= h - 12) ? Color(120, 120, 140, 255) : Color::Transparent;
-        });
+        _2DLightingSystem::SceneSprites sprites = _2DLightingSystem::MakeSceneSprites(*GraphicsDevice);
+        background_ = std::move(sprites.background);
+        box_ = std::move(sprites.box);
+        disc_ = std::move(sprites.disc);
+        bar_ = std::move(sprites.bar);
     }
 
     void Draw(const demo::GameTime&) override {
