@@ -319,21 +319,12 @@ bool checkGBuffer(Game1& game) {
             }
             std::vector<ModelVertex> vertices(std::size_t(part.VertexBuffer->VertexCount()));
             part.VertexBuffer->GetData(vertices.data(), vertices.size());
-            std::vector<int> indices(std::size_t(part.IndexBuffer->IndexCount()));
-            if (part.IndexBuffer->elementBytes() == 2) {
-                std::vector<std::uint16_t> i16(indices.size());
-                part.IndexBuffer->GetData(i16.data(), i16.size());
-                std::copy(i16.begin(), i16.end(), indices.begin());
-            } else {
-                std::vector<std::uint32_t> i32(indices.size());
-                part.IndexBuffer->GetData(i32.data(), i32.size());
-                for (std::size_t k = 0; k < i32.size(); ++k) indices[k] = int(i32[k]);
-            }
+            const std::vector<std::uint32_t> indices = part.IndexBuffer->GetIndices();
             for (int p = 0; p < part.PrimitiveCount; ++p) {
                 std::vector<ClipVertex> poly;
                 for (int k = 0; k < 3; ++k) {
                     const ModelVertex& mv =
-                        vertices[std::size_t(part.VertexOffset + indices[std::size_t(part.StartIndex + 3 * p + k)])];
+                        vertices[std::size_t(part.VertexOffset + int(indices[std::size_t(part.StartIndex + 3 * p + k)]))];
                     const D4 worldPos = mul(D4{mv.Position.X, mv.Position.Y, mv.Position.Z, 1}, world);
                     poly.push_back({mul(worldPos, viewProjection), mul3(d3(mv.Normal), world),
                                     double(mv.TextureCoordinate.X), double(mv.TextureCoordinate.Y)});
@@ -462,21 +453,12 @@ double inscribedRatio(Model& model) {
         for (ModelMeshPart& part : mesh.MeshParts) {
             std::vector<ModelVertex> vertices(std::size_t(part.VertexBuffer->VertexCount()));
             part.VertexBuffer->GetData(vertices.data(), vertices.size());
-            std::vector<int> indices(std::size_t(part.IndexBuffer->IndexCount()));
-            if (part.IndexBuffer->elementBytes() == 2) {
-                std::vector<std::uint16_t> i16(indices.size());
-                part.IndexBuffer->GetData(i16.data(), i16.size());
-                std::copy(i16.begin(), i16.end(), indices.begin());
-            } else {
-                std::vector<std::uint32_t> i32(indices.size());
-                part.IndexBuffer->GetData(i32.data(), i32.size());
-                for (std::size_t k = 0; k < i32.size(); ++k) indices[k] = int(i32[k]);
-            }
+            const std::vector<std::uint32_t> indices = part.IndexBuffer->GetIndices();
             for (const ModelVertex& v : vertices) vertexRadius = std::max(vertexRadius, length(d3(v.Position)));
             for (int p = 0; p < part.PrimitiveCount; ++p) {
                 D3 q[3];
                 for (int k = 0; k < 3; ++k)
-                    q[k] = d3(vertices[std::size_t(part.VertexOffset + indices[std::size_t(part.StartIndex + 3 * p + k)])].Position);
+                    q[k] = d3(vertices[std::size_t(part.VertexOffset + int(indices[std::size_t(part.StartIndex + 3 * p + k)]))].Position);
                 const D3 e1 = q[1] - q[0], e2 = q[2] - q[0];
                 D3 n = {e1.y * e2.z - e1.z * e2.y, e1.z * e2.x - e1.x * e2.z, e1.x * e2.y - e1.y * e2.x};
                 if (length(n) == 0) continue;  // degenerate (pole) triangle

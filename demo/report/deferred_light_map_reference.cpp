@@ -53,20 +53,11 @@ std::vector<Triangle> worldTriangles(const Model& model, const Matrix& world) {
         for (const ModelMeshPart& part : mesh.MeshParts) {
             std::vector<ModelVertex> vertices(std::size_t(part.VertexBuffer->VertexCount()));
             part.VertexBuffer->GetData(vertices.data(), vertices.size());
-            std::vector<int> indices(std::size_t(part.IndexBuffer->IndexCount()));
-            if (part.IndexBuffer->IndexElementSize() == IndexElementSize::SixteenBits) {
-                std::vector<std::uint16_t> small(indices.size());
-                part.IndexBuffer->GetData(small.data(), small.size());
-                std::copy(small.begin(), small.end(), indices.begin());
-            } else {
-                std::vector<std::uint32_t> large(indices.size());
-                part.IndexBuffer->GetData(large.data(), large.size());
-                std::copy(large.begin(), large.end(), indices.begin());
-            }
+            const std::vector<std::uint32_t> indices = part.IndexBuffer->GetIndices();
             for (int k = 0; k < part.PrimitiveCount; ++k) {
                 Triangle tri;
                 for (int c = 0; c < 3; ++c) {
-                    const int index = part.VertexOffset + indices[std::size_t(part.StartIndex + 3 * k + c)];
+                    const int index = part.VertexOffset + int(indices[std::size_t(part.StartIndex + 3 * k + c)]);
                     const Vector3 p = vertices[std::size_t(index)].Position;
                     tri[std::size_t(c)] = (rt::mul(rt::V4{p.X, p.Y, p.Z, 1}, m)).xyz();
                 }

@@ -258,6 +258,18 @@ TEST(ResourceLifetime, NothingLeftAliveAfterDestruction) {
 }
 
 // A resource destroyed while bound is unbound everywhere (slots, effect parameters, targets).
+TEST(Buffers, GetIndicesWidensEitherElementSize) {
+    GraphicsDevice& device = testDevice();
+    IndexBuffer narrow(device, IndexElementSize::SixteenBits, 4);
+    const std::uint16_t small[4] = {0, 65535, 7, 1};
+    narrow.SetData(small, 4);
+    EXPECT_EQ(narrow.GetIndices(), (std::vector<std::uint32_t>{0, 65535, 7, 1}));
+    IndexBuffer wide(device, IndexElementSize::ThirtyTwoBits, 3);
+    const std::uint32_t large[3] = {70000, 0, 4000000000u};
+    wide.SetData(large, 3);
+    EXPECT_EQ(wide.GetIndices(), (std::vector<std::uint32_t>{70000, 0, 4000000000u}));
+}
+
 TEST(ResourceLifetime, DestroyedTextureIsUnboundEverywhere) {
     GraphicsDevice& device = testDevice();
     Effect effect(device, runtimeFixture("Conventions.fx"));

@@ -262,19 +262,6 @@ std::vector<ModelVertex> readVertices(const VertexBuffer& buffer) {
     return vertices;
 }
 
-std::vector<std::uint32_t> readIndices(const IndexBuffer& buffer) {
-    std::vector<std::uint32_t> out;
-    if (buffer.IndexElementSize() == IndexElementSize::SixteenBits) {
-        std::vector<std::uint16_t> narrow(std::size_t(buffer.IndexCount()));
-        buffer.GetData(narrow.data(), narrow.size());
-        out.assign(narrow.begin(), narrow.end());
-    } else {
-        out.resize(std::size_t(buffer.IndexCount()));
-        buffer.GetData(out.data(), out.size());
-    }
-    return out;
-}
-
 std::vector<Color> texels(const ModelMeshPart& part, const char* parameter) {
     Texture2D* texture = part.Effect->Parameters[parameter].GetValueTexture2D();
     EXPECT_NE(texture, nullptr) << parameter;
@@ -507,7 +494,7 @@ TEST_F(ModelTest, VertexAndIndexDataMatchTheFile) {
             EXPECT_EQ(vertices[i].Binormal, i == 3 ? Vector3(0, -1, 0) : Vector3(0, 1, 0));
         }
         // Winding reversed for XNA: (0 1 2)(0 2 3) -> (0 2 1)(0 3 2).
-        EXPECT_EQ(readIndices(*part.IndexBuffer), (std::vector<std::uint32_t>{0, 2, 1, 0, 3, 2}));
+        EXPECT_EQ(part.IndexBuffer->GetIndices(), (std::vector<std::uint32_t>{0, 2, 1, 0, 3, 2}));
     }
     // Plain mesh: the quad with generated tangents, then the bare triangle with a flat normal.
     {
@@ -533,7 +520,7 @@ TEST_F(ModelTest, VertexAndIndexDataMatchTheFile) {
             EXPECT_NEAR(vertices[i].Binormal.Length(), 1.0f, 1e-6f);
             EXPECT_NEAR(Vector3::Dot(vertices[i].Binormal, vertices[i].Tangent), 0.0f, 1e-6f);
         }
-        EXPECT_EQ(readIndices(*part.IndexBuffer), (std::vector<std::uint32_t>{0, 2, 1, 0, 3, 2, 0, 2, 1}));
+        EXPECT_EQ(part.IndexBuffer->GetIndices(), (std::vector<std::uint32_t>{0, 2, 1, 0, 3, 2, 0, 2, 1}));
     }
 }
 
@@ -619,7 +606,7 @@ TEST_F(ModelTest, StripsAndFansBecomeTriangleLists) {
     ASSERT_EQ(mesh.MeshParts.size(), 2u);
     EXPECT_EQ(mesh.MeshParts[0].PrimitiveCount, 2);
     EXPECT_EQ(mesh.MeshParts[1].PrimitiveCount, 3);
-    const auto indices = readIndices(*mesh.MeshParts[0].IndexBuffer);
+    const auto indices = mesh.MeshParts[0].IndexBuffer->GetIndices();
     // Strip (0 1 2)(1 3 2), reversed: (0 2 1)(1 2 3). The fan has no normals, so its 3 triangles
     // (1 2 0)(2 3 0)(3 4 0) are unshared into 9 vertices: (0 2 1)(3 5 4)(6 8 7).
     EXPECT_EQ(indices, (std::vector<std::uint32_t>{0, 2, 1, 1, 2, 3, 0, 2, 1, 3, 5, 4, 6, 8, 7}));
@@ -647,7 +634,7 @@ TEST_F(ModelTest, LargePartsGetThirtyTwoBitIndices) {
     EXPECT_EQ(part.NumVertices, 70002);
     EXPECT_EQ(part.PrimitiveCount, 23334);
     ASSERT_EQ(part.IndexBuffer->IndexElementSize(), IndexElementSize::ThirtyTwoBits);
-    const auto indices = readIndices(*part.IndexBuffer);
+    const auto indices = part.IndexBuffer->GetIndices();
     ASSERT_EQ(indices.size(), 70002u);
     EXPECT_EQ(indices[69999], 69999u);
     EXPECT_EQ(indices[70000], 70001u);

@@ -1,5 +1,7 @@
 #include "fxport/graphics/vertex_buffer.h"
 
+#include <algorithm>
+
 #include "device_impl.h"
 #include "fxport/graphics/errors.h"
 
@@ -86,6 +88,18 @@ void IndexBuffer::getData(void* data, std::size_t elementSize, std::size_t count
     std::size_t bytes = checkedRange(describe(), "GetData", 0, elementSize, count,
                                      std::size_t(count_) * std::size_t(elementBytes()));
     glGetNamedBufferSubData(name_, 0, GLsizeiptr(bytes), data);
+}
+
+std::vector<std::uint32_t> IndexBuffer::GetIndices() const {
+    std::vector<std::uint32_t> indices(static_cast<std::size_t>(count_));
+    if (elementSize_ == fxport::IndexElementSize::ThirtyTwoBits) {
+        getData(indices.data(), 4, indices.size());
+    } else {
+        std::vector<std::uint16_t> narrow(indices.size());
+        getData(narrow.data(), 2, narrow.size());
+        std::copy(narrow.begin(), narrow.end(), indices.begin());
+    }
+    return indices;
 }
 
 }  // namespace fxport

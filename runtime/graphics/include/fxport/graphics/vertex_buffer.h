@@ -60,6 +60,9 @@ public:
     template <class T> void SetData(const T* data, std::size_t count) { setData(0, data, sizeof(T), count); }
     template <class T> void SetData(const std::vector<T>& data) { SetData(data.data(), data.size()); }
     template <class T> void GetData(T* data, std::size_t count) const { getData(data, sizeof(T), count); }
+    // fxport: every index, widened to 32 bits whatever the element size (tools and CPU references
+    // that read a mesh back need not care how it was stored).
+    std::vector<std::uint32_t> GetIndices() const;
 
     void setData(int offsetInBytes, const void* data, std::size_t elementSize, std::size_t count);
     void getData(void* data, std::size_t elementSize, std::size_t count) const;
