@@ -59,8 +59,9 @@ struct GraphicsDevice::Impl {
     GLuint boundFramebuffer = 0;
     int targetWidth = 0, targetHeight = 0;
     void bindTargets();
-    // What targetsBoundSinceMark() returns (the current bindings are added on every SetRenderTargets).
+    // What targetsBoundSinceMark() returns (after the first mark, the bindings of every SetRenderTargets).
     std::vector<RenderTargetBinding> boundSinceMark;
+    bool trackingBoundTargets = false;  // set by the first markBoundTargets(): hosts that never check pay nothing
     void noteBoundTargets();
     void generateMipsOfUnboundTargets(const std::vector<RenderTargetBinding>& previous);
 

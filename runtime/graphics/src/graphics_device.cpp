@@ -215,13 +215,16 @@ void GraphicsDevice::SetRenderTargets(const std::vector<RenderTargetBinding>& bi
 std::vector<RenderTargetBinding> GraphicsDevice::GetRenderTargets() const { return impl_->targets; }
 
 void GraphicsDevice::Impl::noteBoundTargets() {
-    std::vector<RenderTargetBinding> now = targets;
-    if (now.empty()) now.push_back(RenderTargetBinding(backBuffer.get()));
-    for (const RenderTargetBinding& b : now)
+    if (!trackingBoundTargets) return;
+    auto note = [&](const RenderTargetBinding& b) {
         if (std::find(boundSinceMark.begin(), boundSinceMark.end(), b) == boundSinceMark.end()) boundSinceMark.push_back(b);
+    };
+    if (targets.empty()) note(RenderTargetBinding(backBuffer.get()));
+    for (const RenderTargetBinding& b : targets) note(b);
 }
 
 void GraphicsDevice::markBoundTargets() {
+    impl_->trackingBoundTargets = true;
     impl_->boundSinceMark.clear();
     impl_->noteBoundTargets();
 }
