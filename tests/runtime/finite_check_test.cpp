@@ -8,6 +8,9 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <string>
+
+#include <unistd.h>
 
 #include "runtime_test_support.h"
 
@@ -29,7 +32,10 @@ technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile
 
 Effect& onePixelEffect() {
     static std::unique_ptr<Effect> effect = [] {
-        const auto path = std::filesystem::temp_directory_path() / "fxport_finite_check_one_pixel.fx";
+        // One file per process: ctest runs each test case as its own process, in parallel, and a
+        // shared name let one process read the file while another was rewriting it.
+        const auto path = std::filesystem::temp_directory_path() /
+                          ("fxport_finite_check_one_pixel_" + std::to_string(::getpid()) + ".fx");
         std::ofstream(path) << kOnePixelEffect;
         return std::make_unique<Effect>(testDevice(), path.string());
     }();

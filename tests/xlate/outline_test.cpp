@@ -11,6 +11,8 @@
 #include <tuple>
 #include <vector>
 
+#include <unistd.h>
+
 #include "fxport/xlate/effect_compiler.h"
 
 namespace fs = std::filesystem;
@@ -146,7 +148,7 @@ TEST(Outline, OneTechniqueCompilesOnlyItsShadersWithTheFullLayout) {
 // The outline is cached apart from the full compile (its own key), and a warm outline is read back
 // equal.
 TEST(Outline, IsCachedUnderItsOwnKey) {
-    fs::path dir = fs::temp_directory_path() / "fxport_outline_cache_test";
+    fs::path dir = fs::temp_directory_path() / ("fxport_outline_cache_test_" + std::to_string(::getpid()));
     fs::remove_all(dir);
     CompileOptions o;
     o.cacheDir = dir.string();
