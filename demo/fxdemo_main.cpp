@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "common/program_registry.h"
+#include "common/run_options.h"
 #include "deferred/run_deferred.h"
 
 namespace {
@@ -38,7 +39,9 @@ int usage(const char* message) {
                  "                       [--gbuffer tutorial|color8|float32] [--spot-shadow N] [--point-shadow N]\n"
                  "                       [--no-ssao] [--ssao-half] [--explain]\n");
     for (const auto& [name, program] : fxdemo::programs()) std::fprintf(stderr, "       %s\n", program.usage.c_str());
-    std::fprintf(stderr, "every program also takes --check-finite: after each pass, stop at the first NaN/Inf in a target\n");
+    std::fprintf(stderr, "every program also takes --check-finite: after each pass, stop at the first NaN/Inf in a target;\n"
+                         "and --define NAME=VALUE (repeatable): a #define every effect is compiled with,\n"
+                         "e.g. --define 'pow(x, y)=pow(max(x, 1e-30), y)' (see fxdemo stability)\n");
     return 2;
 }
 
@@ -79,28 +82,20 @@ int main(int argc, char** argv) {
     }
 
     TheCansinDeferredRenderer::RunOptions options;
+    // The options every program shares (--size, --frames, --out, --gpu, --window, --check-finite,
+    // --define) are parsed by common/run_options, as the other programs do.
+    fxport::demo::CommonOptions common;
+    common.width = options.width;
+    common.height = options.height;
+    common.outDir = options.outDir;
     for (int i = 2; i < argc; ++i) {
         const std::string arg = argv[i];
         auto value = [&]() -> const char* { return i + 1 < argc ? argv[++i] : nullptr; };
-        if (arg == "--size") {
-            const char* v = value();
-            if (!v || std::sscanf(v, "%dx%d", &options.width, &options.height) != 2 || options.width <= 0 ||
-                options.height <= 0)
-                return usage("--size wants WxH, e.g. 800x600");
-        } else if (arg == "--frames") {
-            const char* v = value();
-            if (!v || std::atoi(v) <= 0) return usage("--frames wants a positive number");
-            options.frames = std::atoi(v);
-        } else if (arg == "--out") {
-            const char* v = value();
-            if (!v) return usage("--out wants a folder");
-            options.outDir = v;
-            options.outDirGiven = true;
-        } else if (arg == "--gpu") {
-            options.platform = "egl";
-        } else if (arg == "--window") {
-            options.platform = "glfw";
-        } else if (arg == "--camera") {
+        std::string error;
+        const fxport::demo::OptionResult parsed = fxport::demo::parseCommonOption(argc, argv, i, common, error);
+        if (parsed == fxport::demo::OptionResult::Error) return usage(error.c_str());
+        if (parsed == fxport::demo::OptionResult::Consumed) continue;
+        if (arg == "--camera") {
             const char* v = value();
             std::vector<float> f;
             if (!v || !parseFloats(v, f, 6)) return usage("--camera wants PX,PY,PZ,TX,TY,TZ");
@@ -123,8 +118,6 @@ int main(int argc, char** argv) {
             options.syncPasses = true;
         } else if (arg == "--no-sync-passes") {
             options.syncPasses = false;
-        } else if (arg == "--check-finite") {
-            options.checkFinite = true;
         } else if (arg == "--gbuffer") {
             using Formats = TheCansinDeferredRenderer::Game1::DemoSettings::GBufferFormats;
             const std::string v = i + 1 < argc ? argv[++i] : "";
@@ -162,6 +155,15 @@ int main(int argc, char** argv) {
             return usage(("unknown option '" + arg + "'").c_str());
         }
     }
+
+    options.width = common.width;
+    options.height = common.height;
+    options.frames = common.frames;
+    options.outDir = common.outDir;
+    options.outDirGiven = common.outDirGiven;
+    options.platform = common.platform;
+    options.checkFinite = common.checkFinite;
+    options.defines = common.defines;
 
     try {
         return TheCansinDeferredRenderer::RunDeferred(options);

@@ -5,6 +5,13 @@
 
 namespace fxport::demo {
 
+bool parseDefine(const std::string& text, std::pair<std::string, std::string>& out) {
+    const std::size_t eq = text.find('=');
+    if (eq == std::string::npos || eq == 0) return false;
+    out = {text.substr(0, eq), text.substr(eq + 1)};
+    return true;
+}
+
 OptionResult parseCommonOption(int argc, char** argv, int& i, CommonOptions& o, std::string& error) {
     const std::string arg = argv[i];
     auto value = [&]() -> const char* { return i + 1 < argc ? argv[++i] : nullptr; };
@@ -35,6 +42,14 @@ OptionResult parseCommonOption(int argc, char** argv, int& i, CommonOptions& o, 
         o.platform = "glfw";
     } else if (arg == "--check-finite") {
         o.checkFinite = true;
+    } else if (arg == "--define") {
+        const char* v = value();
+        std::pair<std::string, std::string> define;
+        if (!v || !parseDefine(v, define)) {
+            error = std::string("--define wants NAME=VALUE, not '") + (v ? v : "") + "'";
+            return OptionResult::Error;
+        }
+        o.defines.push_back(define);
     } else {
         return OptionResult::NotMine;
     }

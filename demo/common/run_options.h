@@ -1,11 +1,14 @@
 // The options every fxdemo program shares: --size WxH, --frames N, --out DIR, --gpu, --window,
-// --check-finite (scan every pass's targets for NaN/Inf: common/finite_check.h).
+// --check-finite (scan every pass's targets for NaN/Inf: common/finite_check.h), --define NAME=VALUE
+// (a #define every effect of the program is compiled with; repeatable).
 // A program's argument loop hands each argument to parseCommonOption first and handles its own
 // options only when it answers NotMine.
 #pragma once
 
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace fxport::demo {
 
@@ -17,7 +20,13 @@ struct CommonOptions {
     bool outDirGiven = false;
     std::string platform = "osmesa"; // --gpu: egl, --window: glfw
     bool checkFinite = false;        // --check-finite
+    // --define NAME=VALUE: passed to every effect (EffectOptions::defines), e.g. the stability
+    // suite's opt-in fixes: --define 'pow(x, y)=pow(max(x, 1e-30), y)'. Split at the first '='.
+    std::vector<std::pair<std::string, std::string>> defines;
 };
+
+// Parses --define's NAME=VALUE; false when there is no '=' or no name.
+bool parseDefine(const std::string& text, std::pair<std::string, std::string>& out);
 
 enum class OptionResult { Consumed, NotMine, Error };
 

@@ -33,6 +33,7 @@ void Configure(Game1& game, const RunOptions& options) {
     game.demo.ssaoHalfResolution = options.ssaoHalfResolution;
     // --explain: every effect compiled by xlate in this process, so that the load times compare.
     if (options.explain) game.Content.effectOptions.useCache = false;
+    game.Content.effectOptions.defines = options.defines;
 }
 
 // --explain's yardstick: the seed's scene with every feature (all three lights with shadows, SSAO,

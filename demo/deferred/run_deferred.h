@@ -4,6 +4,8 @@
 
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "deferred/game1.h"
 #include "fxport/math.h"
@@ -35,6 +37,7 @@ struct RunOptions {
     bool ssaoHalfResolution = false;
     bool explain = false;           // --explain: print what was built and left out (deferred/build_report.h)
     bool checkFinite = false;       // --check-finite: scan every pass's targets for NaN/Inf
+    std::vector<std::pair<std::string, std::string>> defines;  // --define NAME=VALUE: every effect's #defines
 };
 
 // Returns the process exit code.

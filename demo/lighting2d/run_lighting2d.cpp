@@ -302,6 +302,7 @@ int runLighting2d(int argc, char** argv) {
     game.withPointLights = lights.find('p') != std::string::npos;
     // --explain: every effect compiled by xlate in this process, so that the load times compare.
     if (explain) game.Content.effectOptions.useCache = false;
+    game.Content.effectOptions.defines = common.defines;
     game.Start();
     auto timer = std::make_unique<GpuTimer>(*game.GraphicsDevice);
     game.gpuTimer = timer.get();

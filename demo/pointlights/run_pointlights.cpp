@@ -8,6 +8,8 @@
 //              passes (reference_check.h); exit 1 if off
 //   --spot     also draw the chapter's exercise: one spot light (SpotLight.fx, cone volume)
 //   --camera ARC,ROTATION,DISTANCE  the orbit camera's start (degrees, degrees, units; -25,0,20)
+//   --gbuffer tutorial|half16|float32  the G-buffer's and lightRT's formats (the series' Color/Color/
+//              Single with a Color light map; HalfVector4 x2/HalfSingle; Vector4 x2/Single)
 //   --no-cull  draw every point light, also those outside the view frustum (as the chapter)
 //   --explain  print the effects (compile time), targets (bytes) and passes built and left out,
 //              and the point lights drawn and frustum-culled, against the all-features scene
@@ -36,7 +38,8 @@ using fxport::demo::parseCommonOption;
 namespace {
 
 const char* kUsage = "fxdemo pointlights [--size WxH] [--frames N] [--out DIR] [--time T] [--gpu] [--window]\n"
-                     "                          [--camera A,R,D] [--no-cull] [--explain]";
+                     "                          [--spot] [--check] [--camera A,R,D] [--no-cull]\n"
+                     "                          [--gbuffer tutorial|half16|float32] [--explain]";
 
 int usage(const char* message) {
     std::fprintf(stderr, "fxdemo pointlights: %s\nusage: %s\n", message, kUsage);
@@ -54,6 +57,7 @@ int runPointLights(int argc, char** argv) {
     bool explain = false;
     bool cull = true;
     bool cameraGiven = false;
+    GBufferFormats formats = GBufferFormats::Tutorial;
     float cameraArc = 0, cameraRotation = 0, cameraDistance = 0;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
@@ -75,6 +79,13 @@ int runPointLights(int argc, char** argv) {
             spot = true;
         } else if (arg == "--explain") {
             explain = true;
+        } else if (arg == "--gbuffer") {
+            const char* v = value();
+            const std::string name = v ? v : "";
+            if (name == "tutorial") formats = GBufferFormats::Tutorial;
+            else if (name == "half16") formats = GBufferFormats::Half16;
+            else if (name == "float32") formats = GBufferFormats::Float32;
+            else return usage(("--gbuffer wants tutorial, half16 or float32, not '" + name + "'").c_str());
         } else if (arg == "--no-cull") {
             cull = false;
         } else if (arg == "--camera") {
@@ -91,6 +102,8 @@ int runPointLights(int argc, char** argv) {
         }
     }
 
+    if (check && formats != GBufferFormats::Tutorial)
+        return usage("--check models the series' Color/Color/Single targets only: leave out --gbuffer");
     // The check recomputes the spot light from the frame's game time: it needs a fixed one.
     if (check && spot && !time && common.platform == "glfw") return usage("--check --spot in a window wants --time T");
 
@@ -100,6 +113,7 @@ int runPointLights(int argc, char** argv) {
     game.graphics.platform = common.platform;
     // Headless without --time: a fixed time, so that the default run is reproducible too.
     game.demo.time = time ? time : (common.platform == "glfw" ? std::nullopt : std::optional<double>(1.0));
+    game.demo.quality.gbufferFormats = formats;
     if (cameraGiven) {
         game.demo.cameraArc = cameraArc;
         game.demo.cameraRotation = cameraRotation;
@@ -107,6 +121,7 @@ int runPointLights(int argc, char** argv) {
     }
     // --explain: every effect compiled by xlate in this process, so that the load times compare.
     if (explain) game.Content.effectOptions.useCache = false;
+    game.Content.effectOptions.defines = common.defines;
 
     game.Start();
     game.getRenderer().drawSpotLight = spot;
@@ -162,7 +177,4 @@ int runPointLights(int argc, char** argv) {
 
 }  // namespace DeferredLighting
 
-FXDEMO_PROGRAM(pointlights,
-               "fxdemo pointlights [--size WxH] [--frames N] [--out DIR] [--time T] [--gpu] [--window] [--camera A,R,D]\n"
-               "                          [--no-cull] [--explain]",
-               DeferredLighting::runPointLights);
+FXDEMO_PROGRAM(pointlights, DeferredLighting::kUsage, DeferredLighting::runPointLights);

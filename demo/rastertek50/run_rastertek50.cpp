@@ -123,6 +123,7 @@ int runRastertek50(int argc, char** argv) {
         // --explain: both effects compiled by xlate in this process, so that the times compare.
         fxport::EffectOptions effectOptions;
         effectOptions.useCache = !explain;
+        effectOptions.defines = common.defines;
         application.SetEffectOptions(effectOptions);
         if (!application.Initialize(common.platform, hlslDir, common.width, common.height)) return 1;
         fxport::GraphicsDevice& device = *application.GetD3D()->GetDevice();

@@ -116,6 +116,8 @@ int runReport(int argc, char** argv) {
         else if (arg == "--demos" && i + 1 < argc) demos = argv[++i];
         else return usage("unknown option '" + arg + "'");
     }
+    if (!common.defines.empty()) return usage("--define: the report measures the effects as written");
+    if (common.checkFinite) return usage("--check-finite: run it on a demo (fxdemo <name> --check-finite)");
     SweepOptions options;
     options.platform = common.platform;
     options.quick = quick;
