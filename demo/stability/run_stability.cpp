@@ -54,7 +54,7 @@ void writeCsv(const std::string& path, const std::vector<CaseResult>& results) {
 void writeMarkdown(const std::string& path, const std::vector<CaseResult>& results, const std::string& renderer, int size) {
     std::ofstream out(path);
     out << "# fxdemo stability\n\nRenderer: " << renderer << "; targets " << size << "x" << size
-        << " unless named. Effects: hlsl/xna-deferred and hlsl/lighting2d (unwrap), unchanged. Each row: one run of the real effect, every target "
+        << " unless named. Effects: hlsl/xna-deferred, hlsl/zima-lights (pow00 \"cleared\" and zima-radius rows) and hlsl/lighting2d (unwrap), unchanged. Each row: one run of the real effect, every target "
            "scanned by FiniteCheck, the finite texels compared with a double-precision CPU reference.\n\n"
         << "## Where the tutorial's maths breaks\n\n"
         << "- **Exponential shadow maps** (DepthWriter.fx stores exp(DepthPrecision/2 * d/DepthPrecision) = exp(d/2)): "
@@ -71,7 +71,11 @@ void writeMarkdown(const std::string& path, const std::vector<CaseResult>& resul
            "0 * pow(0, 0): undefined in GLSL, NaN wherever a driver evaluates exp2(y log2 x) literally (0 * -Inf); "
            "the pow00 rows show what this driver does. Where it is NaN, the demo's Color light map stores it as 0, so "
            "it is invisible there; a float light map keeps it. Fix offered (runtime, opt-in, no edit of the effect): compile with the define "
-           "`pow(x, y)` = `pow(max(x, 1e-30), y)` (EffectOptions::defines).\n"
+           "`pow(x, y)` = `pow(max(x, 1e-30), y)` (EffectOptions::defines). Catalin Zima's PointLight.fx and "
+           "SpotLight.fx (fxdemo pointlights) have the same term; their rows are named \"cleared, point/spot\". In "
+           "fxdemo pointlights the light volumes of lights near the walls cover background pixels; with the "
+           "tutorial's Color lightRT, GL clamps the blend's source to [0, 1], which takes a NaN to 0 in practice; the "
+           "half16/float32 light maps (--gbuffer) keep it.\n"
         << "- **Near/far ratio** (GBuffer.fx stores z/w = f/(f-n) (1 - n/D)): z/w crowds against 1, where float32 "
            "resolves 6e-8, so the distance PointLight.fx reconstructs moves in steps of ~D^2/n * 6e-8 (near-far rows: "
            "1e-6 D at f/n = 1e2, 6e-2 D at 1e7). Fix offered (host, opt-in): a reversed-Z projection (M33 = n/(f-n), "
@@ -86,7 +90,8 @@ void writeMarkdown(const std::string& path, const std::vector<CaseResult>& resul
         << "- **Camera inside a point light's volume larger than the far plane**: the inner faces of the light's "
            "sphere (the demos' cull switch) are all clipped, and the light vanishes. Fix offered (host): draw the "
            "light as a full-screen quad when the camera is inside. Radius 0 and 1e-6 are harmless (1 - Inf saturates "
-           "to 0; max(.01) avoids 0/0).\n"
+           "to 0; max(.01) avoids 0/0). Zima's lights divide by the radius without a guard: radius 0 gives "
+           "saturate(1 - |L| / 0) = 0 on IEEE hardware (zima-radius rows).\n"
         << "- **Spot cone test** (SpotLight.fx: lit where dot(L, S) <= LightAngleCos, the demo passes cos(FOV)): L points "
            "at the light, so the test admits angle(-L, S) <= 180 - FOV, not FOV/2. Right only with the seed's 90 degrees "
            "and its cookie; below 90 it lights pixels behind the light, above 120 it narrows the cone (179.9: only the "
@@ -104,8 +109,8 @@ void writeMarkdown(const std::string& path, const std::vector<CaseResult>& resul
             << " | " << firstText(r) << " |\n";
     out << "\nNotes per case:\n\n";
     for (const CaseResult& r : results) out << "- " << r.group << " / " << r.name << " / " << r.variant << ": " << r.note << "\n";
-    out << "\nNot covered by this suite yet (issue 6 list): Catalin Zima's PointLight.fx/SpotLight.fx (the cases run "
-           "xna-deferred's; Zima's spot test SdL > cos(angle) is the correct half-angle form), DirectionalLight.fx's "
+    out << "\nNot covered by this suite yet (issue 6 list): Catalin Zima's lights beyond pow(0, 0) and radius 0 (the "
+           "other cases run xna-deferred's; Zima's spot test SdL > cos(angle) is the correct half-angle form), DirectionalLight.fx's "
            "reconstruction (it sets Position.y from UV.x, as written), a surface point exactly at a light "
            "(normalize(0) of the light vector), and the driver's largest square target (only max x 1 runs). "
            "Matrix::Invert of singular/near-singular matrices is pinned in tests/runtime/matrix_invert_test.cpp.\n";
@@ -159,6 +164,9 @@ void checkNewGroups(const std::vector<CaseResult>& results,
             if (fixed) clean(r, kGpuFloat);
             else if (named("FOV 0.1") || named("FOV 179.9") || named("facing away"))
                 broken(r, 0.1, "cos(FOV) as the cone test to light the wrong pixels");
+        } else if (r.group == "zima-radius") {
+            ++seen;
+            clean(r, 0.0);  // saturate(1 - |L| / 0) = 0 exactly
         } else if (r.group == "unwrap") {
             ++seen;
             const bool nearZeroOnEdge = named("~0") && (named("light x=0") || named("light y=0"));
@@ -229,6 +237,7 @@ int runStability(int argc, char** argv) {
     }
     if (common.width != 32 || common.height != 32) options.size = common.width;  // --size WxH: W
     if (common.platform == "glfw") return usage("runs headless only (--gpu for EGL)");
+    if (!common.defines.empty()) return usage("--define: each case picks its own defines (as written and fixed)");
 
     PresentationParameters parameters;
     parameters.BackBufferWidth = parameters.BackBufferHeight = 16;

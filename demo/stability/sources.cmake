@@ -8,4 +8,5 @@ list(APPEND FXDEMO_SOURCES
   stability/normal_cases.cpp
   stability/point_light_cases.cpp
   stability/spot_cone_cases.cpp
-  stability/unwrap_cases.cpp)
+  stability/unwrap_cases.cpp
+  stability/zima_light_cases.cpp)

@@ -295,6 +295,7 @@ std::vector<CaseResult> runStabilityCases(GraphicsDevice& device, const SuiteOpt
     runNormalCases(device, options, results);
     runPointLightCases(device, options, results);
     runSpotConeCases(device, options, results);
+    runZimaLightCases(device, options, results);
     runUnwrapCases(device, options, results);
     return results;
 }

@@ -1,6 +1,6 @@
-// fxdemo stability: stiff and extreme inputs run through the real effects of hlsl/xna-deferred
-// (unchanged), each result scanned by FiniteCheck and compared with a double-precision CPU
-// reference of the same maths. A case runs once as the tutorial does it ("as written") and, where
+// fxdemo stability: stiff and extreme inputs run through the real effects of hlsl/ (xna-deferred
+// mostly; zima-lights and lighting2d where theirs differ), unchanged, each result scanned by
+// FiniteCheck and compared with a double-precision CPU reference of the same maths. A case runs once as the tutorial does it ("as written") and, where
 // the tutorial's maths breaks, once more with an opt-in fix chosen by the host (no effect edited).
 #pragma once
 
@@ -43,6 +43,8 @@ void runNormalCases(GraphicsDevice& device, const SuiteOptions& options, std::ve
 void runPointLightCases(GraphicsDevice& device, const SuiteOptions& options, std::vector<CaseResult>& results);
 // spot cone angles near 0 and 180 degrees (xna-deferred SpotLight.fx).
 void runSpotConeCases(GraphicsDevice& device, const SuiteOptions& options, std::vector<CaseResult>& results);
+// Zima's PointLight.fx / SpotLight.fx (fxdemo pointlights): pow(0, 0) on cleared pixels, radius 0.
+void runZimaLightCases(GraphicsDevice& device, const SuiteOptions& options, std::vector<CaseResult>& results);
 // lighting2d unwrap rays with sin or cos exactly 0 (Unwrap.fx, UnwrapSpotlight.fx).
 void runUnwrapCases(GraphicsDevice& device, const SuiteOptions& options, std::vector<CaseResult>& results);
 
