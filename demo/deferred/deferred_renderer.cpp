@@ -1,5 +1,6 @@
 #include "deferred/deferred_renderer.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace TheCansinDeferredRenderer {
@@ -73,10 +74,28 @@ Model& DeferredRenderer::PointLightGeometry() {
     return *pointLightGeometry;
 }
 
+// fxport: the spot light's volume is SpotLightGeometry (a cone, apex at the origin, axis -Z, length
+// 1, base radius 0.5; its vertices lie on that cone, so the mesh is inside it) under the light's
+// World. The cone is outside the frustum when it is wholly outside one plane (normals point out):
+// both its apex and the nearest point of its base disk lie outside. The mesh's bounding sphere was
+// tested before: for a cone 100 long it is 100 across and almost never outside a plane.
 bool DeferredRenderer::IsVisible(const Lights::SpotLight& light, const BaseCamera& Camera) {
     if (!frustumCulling) return true;
-    const BoundingSphere volume = SpotLightGeometry().Meshes[0].BoundingSphere.Transform(light.getWorld());
-    return BoundingFrustum(Camera.View * Camera.Projection).Intersects(volume);
+    const Matrix world = light.getWorld();
+    const Vector3 apex = Vector3::Transform(Vector3(0, 0, 0), world);
+    const Vector3 baseCentre = Vector3::Transform(Vector3(0, 0, -1), world);
+    const float baseRadius = (Vector3::Transform(Vector3(0.5f, 0, -1), world) - baseCentre).Length();
+    const Vector3 axis = Vector3::Normalize(baseCentre - apex);
+    const BoundingFrustum frustum(Camera.View * Camera.Projection);
+    for (const Plane* plane : {&frustum.Near(), &frustum.Far(), &frustum.Left(), &frustum.Right(), &frustum.Top(),
+                               &frustum.Bottom()}) {
+        // The base disk's nearest point to the plane is its centre moved by the radius along the
+        // plane's normal with the axis component taken out: |n - (n.a) a| = sqrt(1 - (n.a)^2).
+        const float along = Vector3::Dot(plane->Normal, axis);
+        const float diskNearest = plane->DotCoordinate(baseCentre) - baseRadius * std::sqrt(std::max(0.0f, 1 - along * along));
+        if (plane->DotCoordinate(apex) > 0 && diskNearest > 0) return false;
+    }
+    return true;
 }
 
 bool DeferredRenderer::IsVisible(const Lights::PointLight& light, const BaseCamera& Camera) {

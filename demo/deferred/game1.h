@@ -73,6 +73,7 @@ public:
     bool hasSSAO() const { return ssao != nullptr; }
     SSAO& getSSAO();
     Lights::LightManager& getLightManager() { return *lightManager; }
+    const FreeCamera& getCamera() const { return *Camera; }
     RenderTarget2D& getScene();
 
 protected:

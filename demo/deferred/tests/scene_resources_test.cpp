@@ -187,6 +187,34 @@ TEST(DeferredScene, LightsOutsideTheFrustumAreNotDrawnAndChangeNoPixel) {
     EXPECT_TRUE(withCulling == t.game.GraphicsDevice->GetBackBufferData());
 }
 
+// A spot light behind the camera, pointing away from the view: its cone (90 degrees, 100 long) lies
+// wholly behind the near plane, while the cone mesh's bounding sphere (radius ~100) reaches far
+// into the view, so only the cone test culls it. Turned round towards the courtyard, it is drawn.
+TEST(DeferredScene, SpotConeBehindTheCameraIsCulledThoughItsBoundingSphereIsInView) {
+    TestGame t;
+    Lights::SpotLight& spot = *t.game.getLightManager().getSpotLights()[0];
+    spot.setPosition(Vector3(0, 15.0f, 40.0f));
+    spot.setDirection(Vector3(0, 0, 1));
+    const BuildReport away = t.frame();
+    EXPECT_EQ(away.lights.spotLightsDrawn, 0);
+    EXPECT_EQ(away.lights.spotLightsCulled, 1);
+    const std::vector<Color> withCulling = t.game.GraphicsDevice->GetBackBufferData();
+    // The sphere test the cone replaced would have drawn it: check that premise.
+    const BoundingSphere sphere =
+        t.game.Content.Load<Model>("SpotLightGeometry")->Meshes[0].BoundingSphere.Transform(spot.getWorld());
+    EXPECT_TRUE(BoundingFrustum(t.game.getCamera().View * t.game.getCamera().Projection).Intersects(sphere));
+    // Drawn anyway, it lights no pixel the camera sees.
+    t.game.getDeferredRenderer().frustumCulling = false;
+    EXPECT_EQ(t.frame().lights.spotLightsDrawn, 1);
+    EXPECT_TRUE(withCulling == t.game.GraphicsDevice->GetBackBufferData());
+
+    t.game.getDeferredRenderer().frustumCulling = true;
+    spot.setDirection(Vector3(0, -15.0f, -40.0f));
+    const BuildReport towards = t.frame();
+    EXPECT_EQ(towards.lights.spotLightsDrawn, 1);
+    EXPECT_EQ(towards.lights.spotLightsCulled, 0);
+}
+
 TEST(DeferredScene, LightInViewIsDrawn) {
     TestGame t;  // the default viewpoint sees all three lights
     const BuildReport report = t.frame();
