@@ -297,6 +297,7 @@ void ApplicationClass::RenderSceneToTexture()
 	{
 		m_rotation -= 360.0f;
 	}
+	if(m_fixedRotation) m_rotation = *m_fixedRotation;  // fxport: SetFixedRotation
 
 	// Rotate the world matrix by the rotation value so that the cube will spin.
 	worldMatrix = D3DXMatrixRotationY(m_rotation);

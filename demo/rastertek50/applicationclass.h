@@ -8,6 +8,7 @@
 // INCLUDES //
 //////////////
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "fxport/graphics.h"
@@ -72,6 +73,9 @@ public:
 	ModelClass* GetModel() { return m_Model.get(); }
 	// The cube's rotation (radians) of the last frame rendered.
 	float GetRotation() const { return m_rotation; }
+	// fxport addition (`fxdemo report`): every frame draws the cube at this rotation instead of
+	// turning it, so that settings timed over different numbers of frames show the same image.
+	void SetFixedRotation(float radians) { m_fixedRotation = radians; }
 
 private:
 	bool Render();
@@ -102,6 +106,7 @@ private:
 	// fxport: the seed's `static float rotation` in RenderSceneToTexture, as a member so that it
 	// starts from 0 for each ApplicationClass (the rotation is a function of the frame number).
 	float m_rotation;
+	std::optional<float> m_fixedRotation;  // fxport
 	fxport::GpuTimer* m_gpuTimer;
 	fxport::SurfaceFormat m_gbufferFormat = fxport::SurfaceFormat::Vector4;
 	fxport::EffectOptions m_effectOptions;
