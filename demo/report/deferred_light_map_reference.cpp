@@ -119,8 +119,10 @@ ExactLightMap exactDeferredLightMap(Game1& game) {
     const auto& stats = renderer.getFrameStats();
     const auto& lights = game.getLightManager();
 
-    // A pass's value at a pixel: the exact-arithmetic path of the pass reference.
-    using PassFunction = std::function<rt::V4(int x, int y)>;
+    // A pass's value at a pixel: the exact-arithmetic path of the pass reference, with ray-cast
+    // visibility (first) and with the ideal exponential shadow test (second).
+    using PassValue = std::pair<rt::V4, rt::V4>;
+    using PassFunction = std::function<PassValue(int x, int y)>;
     std::vector<PassFunction> passes;
     for (const auto& light : lights.getDirectionalLights()) {
         rt::DirectionalLightParams q;
@@ -134,7 +136,8 @@ ExactLightMap exactDeferredLightMap(Game1& game) {
         q.gbufferTextureSize = gbufferSize;
         passes.push_back([&gb, q, W, H](int x, int y) {
             rt::Eval ev;
-            return rt::directionalLightPixel(ev, gb, q, {x, y, W, H}).lo;
+            const rt::V4 lit = rt::directionalLightPixel(ev, gb, q, {x, y, W, H}).lo;
+            return PassValue{lit, lit};
         });
     }
     // Where a shadow ray starts: the surface point of the G-buffer texel whose depth the pass
@@ -142,13 +145,53 @@ ExactLightMap exactDeferredLightMap(Game1& game) {
     // at that texel's own screen position: a point on the surface up to float32 depth rounding.
     // (The pass shades the pixel's screen position at that depth, a point up to one depth step off
     // the surface; rays from there would hit their own surface where the light grazes it.)
-    auto texelSurface = [&](int x, int y) {
+    // shaded: the point the pass itself shades instead (the pixel's screen position at that depth).
+    auto texelPoint = [&](int x, int y, bool shaded) {
         const rt::V2 ndc = rt::pixelNdc(x, y, W, H);
         const rt::V2 uv = rt::V2{ndc.x + 1, -ndc.y + 1} * 0.5 - rt::V2{1.0 / W, 1.0 / H};
         const int tx = std::clamp(int(std::floor(W * uv.x)), 0, W - 1), ty = std::clamp(int(std::floor(H * uv.y)), 0, H - 1);
-        const rt::V2 tndc = rt::pixelNdc(tx, ty, W, H);
+        const rt::V2 tndc = shaded ? ndc : rt::pixelNdc(tx, ty, W, H);
         const rt::V4 s = rt::mul(rt::V4{tndc.x, tndc.y, depth.at(tx, ty).x, 1}, inverseViewProjection);
         return s.xyz() / s.w;
+    };
+    auto texelSurface = [&](int x, int y) { return texelPoint(x, y, false); };
+    // The terminator (see the header): does the facet under the pixel's surface point face away from
+    // `light`? The facet: of the scene triangles the camera ray crosses within 2 % of the point's
+    // distance, the one whose plane passes nearest the point; its normal turned towards the camera.
+    ExactLightMap out;
+    out.terminator.assign(std::size_t(W) * std::size_t(H), 0);
+    auto facetFacesAway = [&](int x, int y, rt::V3 light) {
+        const rt::V3 surface = texelSurface(x, y);
+        const rt::V3 toSurface = surface - cameraPosition;
+        const double distance = rt::length(toSurface);
+        const rt::V3 direction = toSurface / distance;
+        double nearest = 1e300;
+        rt::V3 facetNormal{};
+        scene.forEachHit(cameraPosition, direction, 0.98 * distance, 1.02 * distance, [&](int i) {
+            const Triangle& t = scene.triangle(i);
+            rt::V3 n = rt::cross(t[1] - t[0], t[2] - t[0]);
+            const double len = rt::length(n);
+            if (len == 0) return;
+            n = n / len;
+            const double off = std::fabs(rt::dot(n, surface - t[0]));
+            if (off < nearest) nearest = off, facetNormal = rt::dot(n, direction) > 0 ? n * -1.0 : n;
+        });
+        return nearest < 1e300 && rt::dot(facetNormal, light - surface) <= 0;
+    };
+    auto markTerminator = [&](int x, int y, rt::V4 lit, rt::V3 light) {
+        if ((lit.x > 0 || lit.y > 0 || lit.z > 0 || lit.w > 0) && facetFacesAway(x, y, light))
+            out.terminator[std::size_t(y) * std::size_t(W) + std::size_t(x)] = 1;
+    };
+    // ShadowFactor with an exact shadow map (see idealEsmRgba in the header).
+    // Evaluated where the effect evaluates it, at the shaded point: a point a depth step off the
+    // surface only moves d_occ or d by that step, which the exponential test's bias absorbs.
+    auto idealEsm = [&](int x, int y, rt::V3 light, double depthPrecision, double depthBias) {
+        const rt::V3 surface = texelPoint(x, y, true);
+        const rt::V3 d = surface - light;
+        const double distance = rt::length(d);
+        const double occluder = std::min(distance, scene.closestHit(light, d / distance, 0, distance));
+        const double len = std::max(0.01, distance) / depthPrecision;
+        return std::exp(0.5 * std::max(0.01, occluder)) * std::exp(-(depthPrecision * 0.5) * (len - depthBias));
     };
     auto visible = [&](int x, int y, rt::V3 light) {
         const rt::V3 surface = texelSurface(x, y);
@@ -199,12 +242,15 @@ ExactLightMap exactDeferredLightMap(Game1& game) {
         const Volume* volume = volumes.back().get();
         const rt::CpuTexture* cookie = cookies.back().get();
         const bool shadowed = light->getIsWithShadows();
-        passes.push_back([&, q, volume, cookie, shadowed](int x, int y) {
+        const double depthPrecision = light->getFarPlane(), depthBias = light->getDepthBias();
+        passes.push_back([&, q, volume, cookie, shadowed, depthPrecision, depthBias](int x, int y) {
             const int fragments = volumeFragments(*volume->mesh, camera, volume->cullClockwise, x, y);
-            if (fragments == 0) return rt::V4{};
+            if (fragments == 0) return PassValue{};
             rt::Eval ev;
             const rt::V4 lit = rt::spotLightPixel(ev, gb, *cookie, noShadowMap, q, {fragments}, {x, y, W, H}).lo;
-            return shadowed ? lit * visible(x, y, q.lightPosition) : lit;
+            if (!shadowed) return PassValue{lit, lit};
+            markTerminator(x, y, lit, q.lightPosition);
+            return PassValue{lit * visible(x, y, q.lightPosition), lit * idealEsm(x, y, q.lightPosition, depthPrecision, depthBias)};
         });
     }
     for (const auto& light : lights.getPointLights()) {
@@ -225,17 +271,20 @@ ExactLightMap exactDeferredLightMap(Game1& game) {
         q.shadowMapSize = 1;
         const Volume* volume = volumes.back().get();
         const bool shadowed = light->getIsWithShadows();
-        passes.push_back([&, q, volume, shadowed](int x, int y) {
+        const double depthPrecision = light->getRadius(), depthBias = light->getDepthBias();
+        passes.push_back([&, q, volume, shadowed, depthPrecision, depthBias](int x, int y) {
             const int fragments = volumeFragments(*volume->mesh, camera, volume->cullClockwise, x, y);
-            if (fragments == 0) return rt::V4{};
+            if (fragments == 0) return PassValue{};
             rt::Eval ev;
             const rt::V4 lit = rt::pointLightPixel(ev, gb, noShadowCube, q, {fragments}, {x, y, W, H}).lo;
-            return shadowed ? lit * visible(x, y, q.lightPosition) : lit;
+            if (!shadowed) return PassValue{lit, lit};
+            markTerminator(x, y, lit, q.lightPosition);
+            return PassValue{lit * visible(x, y, q.lightPosition), lit * idealEsm(x, y, q.lightPosition, depthPrecision, depthBias)};
         });
     }
 
-    ExactLightMap out;
     out.rgba.assign(std::size_t(W) * std::size_t(H) * 4, 0.0);
+    out.idealEsmRgba.assign(std::size_t(W) * std::size_t(H) * 4, 0.0);
     out.defined.assign(std::size_t(W) * std::size_t(H), 1);
     for (int y = 0; y < H; ++y)
         for (int x = 0; x < W; ++x) {
@@ -244,10 +293,15 @@ ExactLightMap exactDeferredLightMap(Game1& game) {
             const rt::V3 surface = texelSurface(x, y);
             if (rt::length(own.xyz() / own.w - surface) > kUndefinedAt * rt::length(surface - cameraPosition))
                 out.defined[std::size_t(y) * std::size_t(W) + std::size_t(x)] = 0;
-            double* px = &out.rgba[(std::size_t(y) * std::size_t(W) + std::size_t(x)) * 4];
+            const std::size_t at = (std::size_t(y) * std::size_t(W) + std::size_t(x)) * 4;
+            double* px = &out.rgba[at];
+            double* esm = &out.idealEsmRgba[at];
             for (const PassFunction& pass : passes) {
-                const rt::V4 v = pass(x, y);
-                for (int c = 0; c < 4; ++c) px[c] = std::min(1.0, px[c] + rt::saturate(v[c]));
+                const auto [exact, withEsm] = pass(x, y);
+                for (int c = 0; c < 4; ++c) {
+                    px[c] = std::min(1.0, px[c] + rt::saturate(exact[c]));
+                    esm[c] = std::min(1.0, esm[c] + rt::saturate(withEsm[c]));
+                }
             }
         }
     return out;

@@ -42,9 +42,24 @@ inline constexpr double kShadowRayStart = 0.02;
 // is ~0.8 / height of it: 0.013 at 64 rows, on a surface facing the camera).
 inline constexpr double kUndefinedAt = 0.05;
 
+// The shadow terminator: a pixel that a shadowed light lights through its G-buffer normal (the
+// mesh's smooth, interpolated normal) while the mesh facet under it faces away from the light. The
+// ray cast, exact for the faceted mesh, shadows such a point (the ray leaves through the object's
+// own triangles); an exponential shadow map, biased and soft, lights it. Neither is wrong for the
+// mesh the effects see; the two answers simply differ there, whatever the shadow map's size. The
+// facet is the scene triangle that the camera ray meets at the pixel's surface point.
 struct ExactLightMap {
     std::vector<double> rgba;  // RGBA per pixel (A = specular), rows from the top, in [0, 1]
     std::vector<char> defined; // per pixel: 0 at silhouettes (see kUndefinedAt)
+    std::vector<char> terminator;  // per pixel: 1 on a shadowed light's terminator (above)
+    // The same light map with each shadowed light's visibility replaced by what the effects'
+    // exponential shadow test gives with an exact, infinitely fine shadow map: ShadowFactor =
+    // exp(DP/2 * d_occ/DP) * exp(-DP/2 * (max(.01, d)/DP - DepthBias)) = exp(-(d - d_occ)/2 + DP
+    // DepthBias/2), d_occ the distance from the light to the first scene triangle towards the
+    // point (ray cast), DP = DepthPrecision (the spot's far plane, the point light's radius). What
+    // is left between the GPU and this is the shadow map's sampling; between this and `rgba`, the
+    // exponential test itself (soft over a few units behind every caster, and its bias).
+    std::vector<double> idealEsmRgba;
 };
 
 // At the game's back-buffer size. Throws ArgumentError when the game's G-buffer is not float32 or

@@ -52,11 +52,13 @@ std::vector<double> upscale(const std::vector<double>& rgb, int w, int h, int W,
 
 // Where a light map differs from the exact one: |difference| x 4, the largest of R, G, B, A
 // (specular), as grey RGB; pixels without an exact answer in dark red.
-std::vector<double> difference(const std::vector<double>& lightMap, const ExactLightMap& exact) {
+std::vector<double> difference(const std::vector<double>& lightMap, const ExactLightMap& exact,
+                               const std::vector<double>* against = nullptr) {
+    const std::vector<double>& reference = against ? *against : exact.rgba;
     std::vector<double> out;
     for (std::size_t p = 0; p < exact.defined.size(); ++p) {
         double d = 0;
-        for (std::size_t c = 0; c < 4; ++c) d = std::max(d, std::fabs(lightMap[p * 4 + c] - exact.rgba[p * 4 + c]));
+        for (std::size_t c = 0; c < 4; ++c) d = std::max(d, std::fabs(lightMap[p * 4 + c] - reference[p * 4 + c]));
         if (exact.defined[p]) out.insert(out.end(), {4 * d, 4 * d, 4 * d});
         else out.insert(out.end(), {0.5, 0.0, 0.0});
     }
@@ -112,7 +114,6 @@ Images run(const SweepOptions& options, int W, int H, const Knobs& k, Measuremen
     }
     if (exact) {
         images.exactLightMap = exactDeferredLightMap(game);
-        // Saved beside the settings' images as RGB (its A, the specular sum, is not shown).
         // Both light maps of this frame, the GPU's and the exact one, beside the settings' images
         // (RGB; their A, the specular sum, is not shown).
         auto rgbOf = [](const std::vector<double>& rgba) {
@@ -124,6 +125,20 @@ Images run(const SweepOptions& options, int W, int H, const Knobs& k, Measuremen
         saveReference(*game.GraphicsDevice, options, "deferred", rgbOf(images.lightMap), w, h, "light-map_highest-setting.png");
         saveReference(*game.GraphicsDevice, options, "deferred", difference(images.lightMap, images.exactLightMap), w, h,
                       "light-map_highest-setting_difference-x4.png");
+        saveReference(*game.GraphicsDevice, options, "deferred", rgbOf(images.exactLightMap.idealEsmRgba), w, h, "light-map_ideal-esm.png");
+        saveReference(*game.GraphicsDevice, options, "deferred",
+                      difference(images.lightMap, images.exactLightMap, &images.exactLightMap.idealEsmRgba), w, h,
+                      "light-map_highest-setting_vs-ideal-esm_difference-x4.png");
+        saveReference(*game.GraphicsDevice, options, "deferred",
+                      difference(images.exactLightMap.idealEsmRgba, images.exactLightMap), w, h,
+                      "light-map_ideal-esm_vs-exact_difference-x4.png");
+        // Which pixels the "off terminator" error leaves out: terminator white, silhouettes grey.
+        std::vector<double> mask;
+        for (std::size_t i = 0; i < images.exactLightMap.defined.size(); ++i) {
+            const double v = images.exactLightMap.terminator[i] ? 1.0 : images.exactLightMap.defined[i] ? 0.0 : 0.5;
+            mask.insert(mask.end(), {v, v, v});
+        }
+        saveReference(*game.GraphicsDevice, options, "deferred", mask, w, h, "light-map_left-out_terminator-white_silhouette-grey.png");
     }
     game.getDeferredRenderer().setGpuTimer(nullptr);
     if (game.hasSSAO()) game.getSSAO().setGpuTimer(nullptr);
@@ -140,9 +155,22 @@ std::vector<Measurement> sweepDeferred(const SweepOptions& options) {
     best.formats = F::Float32, best.spot = 4096, best.point = 1024;
     const Images reference = run(options, W, H, best, nullptr, true);
     const auto undefined = std::count(reference.exactLightMap.defined.begin(), reference.exactLightMap.defined.end(), 0);
-    char leftOut[160];
-    std::snprintf(leftOut, sizeof leftOut, "; silhouette pixels, where the passes shade no surface, left out: %.1f %%",
-                  100.0 * double(undefined) / double(reference.exactLightMap.defined.size()));
+    std::vector<char> offTerminator = reference.exactLightMap.defined;
+    for (std::size_t i = 0; i < offTerminator.size(); ++i) offTerminator[i] &= char(!reference.exactLightMap.terminator[i]);
+    const auto terminator = std::count(offTerminator.begin(), offTerminator.end(), 0) - undefined;
+    // How far the exponential shadow test itself is from hard shadows, with a perfect shadow map.
+    const ImageError esmItself = compareImages(reference.exactLightMap.idealEsmRgba, reference.exactLightMap.rgba,
+                                               "deferred ideal-ESM light map", &reference.exactLightMap.defined);
+    char leftOut[640];
+    std::snprintf(leftOut, sizeof leftOut,
+                  "; silhouette pixels, where the passes shade no surface, left out: %.1f %%. \"off term.\": also "
+                  "without the %.1f %% of pixels on a shadowed light's terminator (lit by the smooth G-buffer normal "
+                  "while the mesh facet faces away: the ray cast shadows them, a shadow map of any size lights them). "
+                  "\"vs ESM\": against the light map the effects' exponential shadow test gives with exact, infinitely fine "
+                  "shadow maps (occluder distances by ray casting), i.e. the shadow maps' sampling error alone; that "
+                  "ideal-ESM light map is itself RMS %.5f (max %.4f) from the exact one",
+                  100.0 * double(undefined) / double(offTerminator.size()), 100.0 * double(terminator) / double(offTerminator.size()),
+                  esmItself.rms, esmItself.max);
     const std::string lightMapReference =
         std::string("exact light map (lighting in double, shadows by ray casting the scene's triangles) on the highest "
                     "setting's float32 G-buffer") + leftOut;
@@ -184,6 +212,11 @@ std::vector<Measurement> sweepDeferred(const SweepOptions& options) {
         m.error = compareImages(images.image, reference.image, "deferred " + s.knob + " " + s.setting);
         m.lightMapError = compareImages(images.lightMap, reference.exactLightMap.rgba, "deferred light map " + s.knob + " " + s.setting,
                                         &reference.exactLightMap.defined);
+        m.lightMapErrorOffTerminator = compareImages(images.lightMap, reference.exactLightMap.rgba,
+                                                     "deferred light map off terminator " + s.knob + " " + s.setting, &offTerminator);
+        m.lightMapErrorVsIdealEsm = compareImages(images.lightMap, reference.exactLightMap.idealEsmRgba,
+                                                  "deferred light map vs ideal ESM " + s.knob + " " + s.setting,
+                                                  &reference.exactLightMap.defined);
         m.hasLightMapError = true;
         out.push_back(m);
         if (options.progress) options.progress(m);

@@ -45,6 +45,12 @@ struct Measurement {
     // G-buffer knobs change; the final image's reference cannot be exact there (SSAO).
     bool hasLightMapError = false;
     ImageError lightMapError;
+    // The same, with the shadow terminator's pixels also left out (ExactLightMap::terminator):
+    // what the shadow-map knobs can still change.
+    ImageError lightMapErrorOffTerminator;
+    // The LightMap against the ideal-ESM light map (ExactLightMap::idealEsmRgba): the shadow
+    // maps' sampling error alone, which their size does change.
+    ImageError lightMapErrorVsIdealEsm;
     std::string lightMapReference;
 };
 

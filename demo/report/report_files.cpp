@@ -42,14 +42,19 @@ std::string csvField(const std::string& s) {
 void writeCsv(const std::vector<Measurement>& rows, const std::string& path) {
     std::ofstream out = open(path);
     out << "demo,knob,setting,seed_default,size,frames,frame_ms_median,rms,max,psnr_db,passes_ms_median,reference,"
-           "light_map_rms,light_map_max,light_map_psnr_db,light_map_reference\n";
+           "light_map_rms,light_map_max,light_map_psnr_db,light_map_reference,light_map_rms_off_terminator,"
+           "light_map_max_off_terminator,light_map_rms_vs_ideal_esm,light_map_max_vs_ideal_esm\n";
     for (const Measurement& m : rows)
         out << m.demo << ',' << csvField(m.knob) << ',' << csvField(m.setting) << ',' << (m.seedDefault ? 1 : 0) << ','
             << m.size << ',' << m.frames << ',' << fixed(m.frameMs, "%.4f") << ',' << fixed(m.error.rms, "%.6g") << ','
             << fixed(m.error.max, "%.6g") << ',' << fixed(m.error.psnr, "%.2f") << ',' << csvField(passes(m, "; ")) << ','
             << csvField(m.reference) << ',' << (m.hasLightMapError ? fixed(m.lightMapError.rms, "%.6g") : "") << ','
             << (m.hasLightMapError ? fixed(m.lightMapError.max, "%.6g") : "") << ','
-            << (m.hasLightMapError ? fixed(m.lightMapError.psnr, "%.2f") : "") << ',' << csvField(m.lightMapReference) << '\n';
+            << (m.hasLightMapError ? fixed(m.lightMapError.psnr, "%.2f") : "") << ',' << csvField(m.lightMapReference) << ','
+            << (m.hasLightMapError ? fixed(m.lightMapErrorOffTerminator.rms, "%.6g") : "") << ','
+            << (m.hasLightMapError ? fixed(m.lightMapErrorOffTerminator.max, "%.6g") : "") << ','
+            << (m.hasLightMapError ? fixed(m.lightMapErrorVsIdealEsm.rms, "%.6g") : "") << ','
+            << (m.hasLightMapError ? fixed(m.lightMapErrorVsIdealEsm.max, "%.6g") : "") << '\n';
 }
 
 void writeMarkdown(const std::vector<Measurement>& rows, const RunInfo& info, const std::string& path) {
@@ -79,9 +84,9 @@ void writeMarkdown(const std::vector<Measurement>& rows, const RunInfo& info, co
         if (lightMap)
             out << "Light map columns (LM): the LightMap target (RGBA, A = specular) against the " << mine.front().lightMapReference
                 << ". Pareto uses the final image's RMS.\n";
-        out << "\n| knob | setting | frame ms | RMS | max | PSNR dB |" << (lightMap ? " LM RMS | LM max | LM PSNR dB |" : "")
+        out << "\n| knob | setting | frame ms | RMS | max | PSNR dB |" << (lightMap ? " LM RMS | LM max | LM PSNR dB | LM RMS off term. | LM RMS vs ESM | LM max vs ESM |" : "")
             << " Pareto | per pass ms |\n"
-            << "|---|---|---:|---:|---:|---:|" << (lightMap ? "---:|---:|---:|" : "") << ":-:|---|\n";
+            << "|---|---|---:|---:|---:|---:|" << (lightMap ? "---:|---:|---:|---:|---:|---:|" : "") << ":-:|---|\n";
         for (std::size_t i = 0; i < mine.size(); ++i) {
             const Measurement& m = mine[i];
             out << "| " << m.knob << " | " << m.setting << (m.seedDefault ? " *" : "") << " | " << fixed(m.frameMs, "%.3f")
@@ -89,7 +94,9 @@ void writeMarkdown(const std::vector<Measurement>& rows, const RunInfo& info, co
                 << fixed(m.error.psnr, "%.2f") << " | ";
             if (lightMap)
                 out << fixed(m.lightMapError.rms, "%.5f") << " | " << fixed(m.lightMapError.max, "%.4f") << " | "
-                    << fixed(m.lightMapError.psnr, "%.2f") << " | ";
+                    << fixed(m.lightMapError.psnr, "%.2f") << " | " << fixed(m.lightMapErrorOffTerminator.rms, "%.5f")
+                    << " | " << fixed(m.lightMapErrorVsIdealEsm.rms, "%.5f") << " | " << fixed(m.lightMapErrorVsIdealEsm.max, "%.4f")
+                    << " | ";
             out << (pareto[i] ? "yes" : "") << " | " << passes(m, ", ") << " |\n";
         }
     }

@@ -111,7 +111,7 @@ bool TriangleBvh::walk(V3 origin, V3 direction, double tMin, double tMax, Visit&
             for (int i = n.first; i < n.first + n.count; ++i) {
                 const int tri = order_[std::size_t(i)];
                 double t = 0;
-                if (intersect(triangles_[std::size_t(tri)], origin, direction, t) && t >= tMin && t <= tMax && visit(tri))
+                if (intersect(triangles_[std::size_t(tri)], origin, direction, t) && t >= tMin && t <= tMax && visit(tri, t))
                     return true;
             }
         } else {
@@ -123,11 +123,20 @@ bool TriangleBvh::walk(V3 origin, V3 direction, double tMin, double tMax, Visit&
 }
 
 bool TriangleBvh::anyHit(V3 origin, V3 direction, double tMin, double tMax) const {
-    return walk(origin, direction, tMin, tMax, [&](int) { return true; });
+    return walk(origin, direction, tMin, tMax, [&](int, double) { return true; });
+}
+
+double TriangleBvh::closestHit(V3 origin, V3 direction, double tMin, double tMax) const {
+    double closest = std::numeric_limits<double>::infinity();
+    walk(origin, direction, tMin, tMax, [&](int, double t) {
+        closest = std::min(closest, t);
+        return false;
+    });
+    return closest;
 }
 
 void TriangleBvh::forEachHit(V3 origin, V3 direction, double tMin, double tMax, const std::function<void(int)>& visit) const {
-    walk(origin, direction, tMin, tMax, [&](int tri) {
+    walk(origin, direction, tMin, tMax, [&](int tri, double) {
         visit(tri);
         return false;
     });

@@ -21,6 +21,8 @@ public:
 
     // True when a triangle meets origin + t * direction for some t in [tMin, tMax].
     bool anyHit(V3 origin, V3 direction, double tMin, double tMax) const;
+    // The smallest t in [tMin, tMax] at which a triangle meets the ray; infinity when none does.
+    double closestHit(V3 origin, V3 direction, double tMin, double tMax) const;
     // Calls visit(triangle index) for every triangle met for t in [tMin, tMax].
     void forEachHit(V3 origin, V3 direction, double tMin, double tMax, const std::function<void(int)>& visit) const;
 
