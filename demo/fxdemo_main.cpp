@@ -39,7 +39,7 @@ int usage(const char* message) {
                  "                       [--gbuffer tutorial|color8|float32] [--spot-shadow N] [--point-shadow N]\n"
                  "                       [--no-ssao] [--ssao-half] [--explain]\n");
     for (const auto& [name, program] : fxdemo::programs()) std::fprintf(stderr, "       %s\n", program.usage.c_str());
-    std::fprintf(stderr, "every program also takes --check-finite: after each pass, stop at the first NaN/Inf in a target;\n"
+    std::fprintf(stderr, "the four demos also take --check-finite: after each pass, stop at the first NaN/Inf in a target;\n"
                          "and --define NAME=VALUE (repeatable): a #define every effect is compiled with,\n"
                          "e.g. --define 'pow(x, y)=pow(max(x, 1e-30), y)' (see fxdemo stability)\n");
     return 2;
