@@ -21,6 +21,25 @@ GBufferTextures::GBufferTextures(GraphicsDevice& device, int size, const std::ve
     depth.SetData(depthTexels);
 }
 
+void drawFullTargetQuad(GraphicsDevice& device) {
+    static const VertexPositionTexture v[6] = {
+        {Vector3(-1, 1, 0.5f), Vector2(0, 0)},  {Vector3(1, 1, 0.5f), Vector2(1, 0)}, {Vector3(-1, -1, 0.5f), Vector2(0, 1)},
+        {Vector3(-1, -1, 0.5f), Vector2(0, 1)}, {Vector3(1, 1, 0.5f), Vector2(1, 0)}, {Vector3(1, -1, 0.5f), Vector2(1, 1)}};
+    device.DrawUserPrimitives(PrimitiveType::TriangleList, v, 0, 2);
+}
+
+Accumulator errorAgainstZero(RenderTarget2D& target) {
+    Accumulator acc;
+    for (const Vector4& t : target.GetDataAsVector4()) {
+        const float c[4] = {t.X, t.Y, t.Z, t.W};
+        double worst = 0;
+        bool finite = true;
+        for (float x : c) finite = finite && std::isfinite(x), worst = std::fmax(worst, std::fabs(double(x)));
+        if (finite) acc.add(worst);
+    }
+    return acc;
+}
+
 void drawLightOverTarget(GraphicsDevice& device, Effect& effect, RenderTarget2D& target, const LightInputs& inputs,
                          const std::string& passName, CaseResult& r) {
     FiniteCheck check(device);
@@ -41,10 +60,7 @@ void drawLightOverTarget(GraphicsDevice& device, Effect& effect, RenderTarget2D&
     device.Textures[3] = inputs.slot3;
     device.Textures[4] = inputs.slot4;
     for (int slot = 0; slot < 5; ++slot) device.SamplerStates[slot] = SamplerState::PointClamp;
-    VertexPositionTexture v[6] = {{Vector3(-1, 1, 0.5f), Vector2(0, 0)},  {Vector3(1, 1, 0.5f), Vector2(1, 0)},
-                                  {Vector3(-1, -1, 0.5f), Vector2(0, 1)}, {Vector3(-1, -1, 0.5f), Vector2(0, 1)},
-                                  {Vector3(1, 1, 0.5f), Vector2(1, 0)},   {Vector3(1, -1, 0.5f), Vector2(1, 1)}};
-    device.DrawUserPrimitives(PrimitiveType::TriangleList, v, 0, 2);
+    drawFullTargetQuad(device);
     device.SetRenderTarget(nullptr);
     for (int slot = 0; slot < 5; ++slot) device.Textures[slot] = nullptr;
     takeFindings(check.endPass(), r);

@@ -46,6 +46,13 @@ struct GBufferTextures {
                     const std::vector<Vector4>& normalTexels, const std::vector<float>& depthTexels);
 };
 
+// Two triangles covering the target at NDC z = 0.5, UV (0, 0) top left (for a light pass whose
+// World = View = Projection = identity: every pixel runs the pass once).
+void drawFullTargetQuad(GraphicsDevice& device);
+
+// max |channel| of each finite texel against a reference of 0 (NaN/Inf texels are FiniteCheck's).
+Accumulator errorAgainstZero(RenderTarget2D& target);
+
 // Draws `effect` (a light pass whose vertex shader is World*View*Projection) over the whole
 // `target` with a quad at NDC z = 0.5 (World = View = Projection = identity), the G-buffer on
 // samplers 0..2 and the cookie and shadow map on 3 and 4, point sampling; FiniteCheck names the

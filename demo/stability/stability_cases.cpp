@@ -190,24 +190,13 @@ CaseResult runClearedGBufferLight(GraphicsDevice& device, Effect& pointLight, co
     device.Textures[2] = depth;
     device.Textures[4] = shadow;
     for (int slot : {0, 1, 2, 4}) device.SamplerStates[slot] = SamplerState::PointClamp;
-    VertexPositionTexture v[6] = {{Vector3(-1, 1, 0.5f), Vector2(0, 0)},  {Vector3(1, 1, 0.5f), Vector2(1, 0)},
-                                  {Vector3(-1, -1, 0.5f), Vector2(0, 1)}, {Vector3(-1, -1, 0.5f), Vector2(0, 1)},
-                                  {Vector3(1, 1, 0.5f), Vector2(1, 0)},   {Vector3(1, -1, 0.5f), Vector2(1, 1)}};
-    device.DrawUserPrimitives(PrimitiveType::TriangleList, v, 0, 2);
+    drawFullTargetQuad(device);
     device.SetRenderTarget(nullptr);
     for (int slot : {0, 1, 2, 4}) device.Textures[slot] = nullptr;
     takeFindings(check.endPass(), r);
 
     // Reference: 0 everywhere (every term is multiplied by a cleared 0).
-    Accumulator acc;
-    for (const Vector4& t : lightMap.GetDataAsVector4()) {
-        const float c[4] = {t.X, t.Y, t.Z, t.W};
-        double worst = 0;
-        bool finite = true;
-        for (float x : c) finite = finite && std::isfinite(x), worst = std::fmax(worst, std::fabs(double(x)));
-        if (finite) acc.add(worst);
-    }
-    acc.into(r);
+    errorAgainstZero(lightMap).into(r);
     r.note = "cleared G-buffer must light to exactly 0; error = max |channel|";
     return r;
 }

@@ -90,10 +90,7 @@ CaseResult runZimaLight(GraphicsDevice& device, Effect& effect, const ZimaLight&
     device.DepthStencilState = DepthStencilState::None;
     device.RasterizerState = RasterizerState::CullNone;
     effect.CurrentTechnique->Passes[0].Apply();
-    VertexPositionTexture v[6] = {{Vector3(-1, 1, 0.5f), Vector2(0, 0)},  {Vector3(1, 1, 0.5f), Vector2(1, 0)},
-                                  {Vector3(-1, -1, 0.5f), Vector2(0, 1)}, {Vector3(-1, -1, 0.5f), Vector2(0, 1)},
-                                  {Vector3(1, 1, 0.5f), Vector2(1, 0)},   {Vector3(1, -1, 0.5f), Vector2(1, 1)}};
-    device.DrawUserPrimitives(PrimitiveType::TriangleList, v, 0, 2);
+    drawFullTargetQuad(device);
     device.SetRenderTarget(nullptr);
     takeFindings(check.endPass(), r);
 
@@ -113,15 +110,7 @@ CaseResult runZimaLight(GraphicsDevice& device, Effect& effect, const ZimaLight&
         }
 
     // Reference: 0 everywhere (cleared: every term multiplied by 0; radius 0: attenuation 0).
-    Accumulator acc;
-    for (const Vector4& t : lightMap.GetDataAsVector4()) {
-        const float c[4] = {t.X, t.Y, t.Z, t.W};
-        double worst = 0;
-        bool finite = true;
-        for (float x : c) finite = finite && std::isfinite(x), worst = std::fmax(worst, std::fabs(double(x)));
-        if (finite) acc.add(worst);
-    }
-    acc.into(r);
+    errorAgainstZero(lightMap).into(r);
     char note[256];
     std::snprintf(note, sizeof note,
                   "zima-lights/%s.fx, radius %g; must light to exactly 0; error = max |channel|; %d of %d pixels %s",
