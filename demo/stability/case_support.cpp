@@ -40,6 +40,29 @@ Accumulator errorAgainstZero(RenderTarget2D& target) {
     return acc;
 }
 
+void setUnshadowedPointLight(Effect& pointLight, const Matrix& inverseView, const Matrix& inverseViewProjection,
+                             Vector3 camera, Vector3 light, float radius) {
+    auto& p = pointLight.Parameters;
+    p["inverseView"].SetValue(inverseView);
+    p["InverseViewProjection"].SetValue(inverseViewProjection);
+    p["CameraPosition"].SetValue(camera);
+    p["LightPosition"].SetValue(light);
+    p["LightRadius"].SetValue(radius);
+    p["LightColor"].SetValue(Vector4(1, 1, 1, 1));
+    p["LightIntensity"].SetValue(1.0f);
+    p["Shadows"].SetValue(false);
+    p["DepthPrecision"].SetValue(std::fmax(radius, 1e-3f));
+    p["DepthBias"].SetValue(1.0f / 2000.0f);
+    p["shadowMapSize"].SetValue(1.0f);
+}
+
+UnitShadowCube::UnitShadowCube(GraphicsDevice& device) : cube(device, 1, false, SurfaceFormat::Single) {
+    for (int f = 0; f < 6; ++f) {
+        const float one = 1.0f;
+        cube.SetData(CubeMapFace(f), &one, 1);
+    }
+}
+
 void drawLightOverTarget(GraphicsDevice& device, Effect& effect, RenderTarget2D& target, const LightInputs& inputs,
                          const std::string& passName, CaseResult& r) {
     FiniteCheck check(device);

@@ -53,6 +53,16 @@ void drawFullTargetQuad(GraphicsDevice& device);
 // max |channel| of each finite texel against a reference of 0 (NaN/Inf texels are FiniteCheck's).
 Accumulator errorAgainstZero(RenderTarget2D& target);
 
+// xna-deferred PointLight.fx as every case uses it: a white light of intensity 1 with Shadows
+// off (DepthBias, DepthPrecision and shadowMapSize set anyway, to values the shadow branch would
+// accept). The shadow cube is still sampled-bound: `UnitShadowCube` is a 1x1 cube of ones.
+void setUnshadowedPointLight(Effect& pointLight, const Matrix& inverseView, const Matrix& inverseViewProjection,
+                             Vector3 camera, Vector3 light, float radius);
+struct UnitShadowCube {
+    TextureCube cube;
+    explicit UnitShadowCube(GraphicsDevice& device);
+};
+
 // Draws `effect` (a light pass whose vertex shader is World*View*Projection) over the whole
 // `target` with a quad at NDC z = 0.5 (World = View = Projection = identity), the G-buffer on
 // samplers 0..2 and the cookie and shadow map on 3 and 4, point sampling; FiniteCheck names the

@@ -71,28 +71,15 @@ CaseResult runDepthRange(GraphicsDevice& device, Effect& gbuffer, Effect& pointL
     Texture2D albedoTexture(device, n, n, false, SurfaceFormat::Vector4), normalTexture(device, n, n, false, SurfaceFormat::Vector4);
     albedoTexture.SetData(albedo);
     normalTexture.SetData(normals);
-    TextureCube shadow(device, 1, false, SurfaceFormat::Single);
-    for (int f = 0; f < 6; ++f) {
-        const float one = 1.0f;
-        shadow.SetData(CubeMapFace(f), &one, 1);
-    }
+    UnitShadowCube shadow(device);
 
     const double R = 4 * farPlane;
-    pointLight.Parameters["inverseView"].SetValue(Matrix::Identity);
-    pointLight.Parameters["InverseViewProjection"].SetValue(Matrix::Invert(q.projection));
-    pointLight.Parameters["CameraPosition"].SetValue(Vector3(0, 0, 0));
-    pointLight.Parameters["LightPosition"].SetValue(Vector3(0, 0, 0));
-    pointLight.Parameters["LightRadius"].SetValue(float(R));
-    pointLight.Parameters["LightColor"].SetValue(Vector4(1, 1, 1, 1));
-    pointLight.Parameters["LightIntensity"].SetValue(1.0f);
-    pointLight.Parameters["Shadows"].SetValue(false);
-    pointLight.Parameters["DepthPrecision"].SetValue(float(R));
-    pointLight.Parameters["DepthBias"].SetValue(1.0f / 2000.0f);
-    pointLight.Parameters["shadowMapSize"].SetValue(1.0f);
+    setUnshadowedPointLight(pointLight, Matrix::Identity, Matrix::Invert(q.projection), Vector3(0, 0, 0), Vector3(0, 0, 0),
+                            float(R));
     RenderTarget2D lightMap(device, n, n, false, SurfaceFormat::Vector4, DepthFormat::None);
     lightMap.Name = "LightMap (Vector4)";
     LightInputs in;
-    in.albedo = &albedoTexture, in.normals = &normalTexture, in.depth = g.depth.get(), in.slot4 = &shadow;
+    in.albedo = &albedoTexture, in.normals = &normalTexture, in.depth = g.depth.get(), in.slot4 = &shadow.cube;
     drawLightOverTarget(device, pointLight, lightMap, in, "PointLight", r);
 
     // Stored depth against z/w in double; reconstructed distance against |P|.

@@ -52,26 +52,13 @@ CaseResult runNormal(GraphicsDevice& device, Effect& gbuffer, Effect& pointLight
     q.projection = Matrix::CreatePerspectiveFieldOfView(float(kFov), 1.0f, float(kNear), float(kFar));
     GBufferTargets g = drawGBufferQuad(device, gbuffer, q, n, r);
 
-    TextureCube shadow(device, 1, false, SurfaceFormat::Single);
-    for (int f = 0; f < 6; ++f) {
-        const float one = 1.0f;
-        shadow.SetData(CubeMapFace(f), &one, 1);
-    }
-    pointLight.Parameters["inverseView"].SetValue(Matrix::Identity);
-    pointLight.Parameters["InverseViewProjection"].SetValue(Matrix::Invert(q.projection));
-    pointLight.Parameters["CameraPosition"].SetValue(Vector3(0, 0, 0));
-    pointLight.Parameters["LightPosition"].SetValue(Vector3(float(kLight[0]), float(kLight[1]), float(kLight[2])));
-    pointLight.Parameters["LightRadius"].SetValue(float(kRadius));
-    pointLight.Parameters["LightColor"].SetValue(Vector4(1, 1, 1, 1));
-    pointLight.Parameters["LightIntensity"].SetValue(1.0f);
-    pointLight.Parameters["Shadows"].SetValue(false);
-    pointLight.Parameters["DepthPrecision"].SetValue(float(kRadius));
-    pointLight.Parameters["DepthBias"].SetValue(1.0f / 2000.0f);
-    pointLight.Parameters["shadowMapSize"].SetValue(1.0f);
+    UnitShadowCube shadow(device);
+    setUnshadowedPointLight(pointLight, Matrix::Identity, Matrix::Invert(q.projection), Vector3(0, 0, 0),
+                            Vector3(float(kLight[0]), float(kLight[1]), float(kLight[2])), float(kRadius));
     RenderTarget2D lightMap(device, n, n, false, SurfaceFormat::Vector4, DepthFormat::None);
     lightMap.Name = "LightMap (Vector4)";
     LightInputs in;
-    in.albedo = g.albedo.get(), in.normals = g.normals.get(), in.depth = g.depth.get(), in.slot4 = &shadow;
+    in.albedo = g.albedo.get(), in.normals = g.normals.get(), in.depth = g.depth.get(), in.slot4 = &shadow.cube;
     drawLightOverTarget(device, pointLight, lightMap, in, "PointLight", r);
 
     // A denormal input may be flushed to 0 before any arithmetic (GLSL allows it; D3D10+ requires it

@@ -63,26 +63,12 @@ CaseResult runPoint(GraphicsDevice& device, Effect& pointLight, const GBufferTar
     r.relative = false;
     const Matrix projection = Matrix::CreatePerspectiveFieldOfView(float(kFov), 1.0f, float(kNear), float(kFar));
     const Vector3 light(float(c.light[0]), float(c.light[1]), float(c.light[2]));
-    TextureCube shadow(device, 1, false, SurfaceFormat::Single);
-    for (int f = 0; f < 6; ++f) {
-        const float one = 1.0f;
-        shadow.SetData(CubeMapFace(f), &one, 1);
-    }
-    pointLight.Parameters["inverseView"].SetValue(Matrix::Identity);
-    pointLight.Parameters["InverseViewProjection"].SetValue(Matrix::Invert(projection));
-    pointLight.Parameters["CameraPosition"].SetValue(Vector3(0, 0, 0));
-    pointLight.Parameters["LightPosition"].SetValue(light);
-    pointLight.Parameters["LightRadius"].SetValue(float(c.radius));
-    pointLight.Parameters["LightColor"].SetValue(Vector4(1, 1, 1, 1));
-    pointLight.Parameters["LightIntensity"].SetValue(1.0f);
-    pointLight.Parameters["Shadows"].SetValue(false);
-    pointLight.Parameters["DepthPrecision"].SetValue(float(std::fmax(c.radius, 1e-3)));
-    pointLight.Parameters["DepthBias"].SetValue(1.0f / 2000.0f);
-    pointLight.Parameters["shadowMapSize"].SetValue(1.0f);
+    UnitShadowCube shadow(device);
+    setUnshadowedPointLight(pointLight, Matrix::Identity, Matrix::Invert(projection), Vector3(0, 0, 0), light, float(c.radius));
     RenderTarget2D lightMap(device, n, n, false, SurfaceFormat::Vector4, DepthFormat::None);
     lightMap.Name = "LightMap (Vector4)";
     LightInputs in;
-    in.albedo = g.albedo.get(), in.normals = g.normals.get(), in.depth = g.depth.get(), in.slot4 = &shadow;
+    in.albedo = g.albedo.get(), in.normals = g.normals.get(), in.depth = g.depth.get(), in.slot4 = &shadow.cube;
     if (volume == Volume::Quad) {
         drawLightOverTarget(device, pointLight, lightMap, in, "PointLight", r);
     } else {

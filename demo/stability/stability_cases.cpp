@@ -147,53 +147,20 @@ CaseResult runClearedGBufferLight(GraphicsDevice& device, Effect& pointLight, co
     // 0.5 as 128/255, which decodes to 0.0039 and lights cleared pixels a little: NL != 0).
     Texture2D normals(device, size, size, false, SurfaceFormat::Vector4);
     Texture2D depth(device, size, size, false, SurfaceFormat::Single);
-    TextureCube shadow(device, 1, false, SurfaceFormat::Single);
+    UnitShadowCube shadow(device);
     albedo.SetData(std::vector<Color>(n, Color(std::uint8_t(0), std::uint8_t(0), std::uint8_t(0), std::uint8_t(0))));
     normals.SetData(std::vector<Vector4>(n, Vector4(0.5f, 0.5f, 0.5f, 0.0f)));
     depth.SetData(std::vector<float>(n, 1.0f));
-    for (int f = 0; f < 6; ++f) {
-        const float one = 1.0f;
-        shadow.SetData(CubeMapFace(f), &one, 1);
-    }
     RenderTarget2D lightMap(device, size, size, false, SurfaceFormat::HdrBlendable, DepthFormat::None);
     lightMap.Name = "LightMap (HdrBlendable)";
 
     const Matrix view = Matrix::CreateLookAt(s.camera, Vector3(0, 0, 0), Vector3::Up);
     const Matrix projection = Matrix::CreatePerspectiveFieldOfView(MathHelper::PiOver4, 1.0f, 0.1f, 100.0f);
-    FiniteCheck check(device);
-    check.beginPass("PointLight");
-    device.SetRenderTarget(lightMap);
-    device.Clear(Color::TransparentBlack);
-    device.BlendState = BlendState::Opaque;
-    device.DepthStencilState = DepthStencilState::None;
-    device.RasterizerState = RasterizerState::CullNone;
-    // The light volume as a full-screen quad: World = View = Projection = identity, so
-    // ScreenPosition is the quad's clip position and every pixel is lit once.
-    pointLight.Parameters["World"].SetValue(Matrix::Identity);
-    pointLight.Parameters["View"].SetValue(Matrix::Identity);
-    pointLight.Parameters["Projection"].SetValue(Matrix::Identity);
-    pointLight.Parameters["inverseView"].SetValue(Matrix::Invert(view));
-    pointLight.Parameters["InverseViewProjection"].SetValue(Matrix::Invert(view * projection));
-    pointLight.Parameters["CameraPosition"].SetValue(s.camera);
-    pointLight.Parameters["LightPosition"].SetValue(s.light);
-    pointLight.Parameters["LightRadius"].SetValue(s.radius);
-    pointLight.Parameters["LightColor"].SetValue(Vector4(1, 1, 1, 1));
-    pointLight.Parameters["LightIntensity"].SetValue(1.0f);
-    pointLight.Parameters["GBufferTextureSize"].SetValue(Vector2(float(size), float(size)));
-    pointLight.Parameters["Shadows"].SetValue(false);
-    pointLight.Parameters["DepthPrecision"].SetValue(s.radius);
-    pointLight.Parameters["DepthBias"].SetValue(1.0f / 2000.0f);
-    pointLight.Parameters["shadowMapSize"].SetValue(1.0f);
-    pointLight.CurrentTechnique->Passes[0].Apply();
-    device.Textures[0] = albedo;
-    device.Textures[1] = normals;
-    device.Textures[2] = depth;
-    device.Textures[4] = shadow;
-    for (int slot : {0, 1, 2, 4}) device.SamplerStates[slot] = SamplerState::PointClamp;
-    drawFullTargetQuad(device);
-    device.SetRenderTarget(nullptr);
-    for (int slot : {0, 1, 2, 4}) device.Textures[slot] = nullptr;
-    takeFindings(check.endPass(), r);
+    // The light volume as a full-screen quad (drawLightOverTarget): every pixel is lit once.
+    setUnshadowedPointLight(pointLight, Matrix::Invert(view), Matrix::Invert(view * projection), s.camera, s.light, s.radius);
+    LightInputs in;
+    in.albedo = &albedo, in.normals = &normals, in.depth = &depth, in.slot4 = &shadow.cube;
+    drawLightOverTarget(device, pointLight, lightMap, in, "PointLight", r);
 
     // Reference: 0 everywhere (every term is multiplied by a cleared 0).
     errorAgainstZero(lightMap).into(r);
