@@ -6,10 +6,10 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
-#include <memory>
 #include <string>
 #include <vector>
 
+#include "common/tile_sheet.h"
 #include "deferred/game1.h"
 
 namespace TheCansinDeferredRenderer {
@@ -248,50 +248,12 @@ void WriteDebugSheet(Game1& game, const std::string& path, const std::string& fu
         add(3, "Back buffer (final.png)", "final.png", std::move(backBuffer), tileW, tileH);
     }
 
-    // Layout: rows of tiles, a 12-pixel label line above each tile.
-    const int gap = 8, labelH = 12;
-    int sheetW = gap, sheetH = gap;
-    for (auto& row : rows) {
-        int rowW = gap, rowH = 0;
-        for (Tile& t : row) {
-            rowW += t.width + gap;
-            rowH = std::max(rowH, t.height);
-        }
-        sheetW = std::max(sheetW, rowW);
-        sheetH += labelH + rowH + gap;
+    std::vector<std::vector<fxport::demo::SheetTile>> sheet;
+    for (const auto& row : rows) {
+        sheet.emplace_back();
+        for (const Tile& t : row) sheet.back().push_back({t.label, t.width, t.height, resized(t.image, t.width, t.height).pixels});
     }
-
-    RenderTarget2D sheet(device, sheetW, sheetH, false, SurfaceFormat::Color, DepthFormat::None);
-    std::vector<RenderTargetBinding> previous = device.GetRenderTargets();
-    device.SetRenderTarget(&sheet);
-    device.Clear(Color(40, 40, 40));
-    SpriteBatch spriteBatch(device);
-    std::unique_ptr<SpriteFont> font = SpriteFont::createDebugFont(device);
-    std::vector<std::unique_ptr<Texture2D>> textures;
-
-    spriteBatch.Begin(SpriteSortMode::Deferred, BlendState::Opaque, SamplerState::PointClamp, nullptr, nullptr);
-    int y = gap;
-    std::vector<std::pair<std::string, Vector2>> labels;
-    for (auto& row : rows) {
-        int x = gap, rowH = 0;
-        for (Tile& t : row) {
-            Image small = resized(t.image, t.width, t.height);
-            auto texture = std::make_unique<Texture2D>(device, t.width, t.height, false, SurfaceFormat::Color);
-            texture->SetData(small.pixels);
-            spriteBatch.Draw(*texture, Rectangle(x, y + labelH, t.width, t.height), Color::White);
-            textures.push_back(std::move(texture));
-            labels.emplace_back(t.label, Vector2(float(x), float(y + 2)));
-            x += t.width + gap;
-            rowH = std::max(rowH, t.height);
-        }
-        y += labelH + rowH + gap;
-    }
-    spriteBatch.End();
-    spriteBatch.Begin(SpriteSortMode::Deferred, BlendState::AlphaBlend);
-    for (auto& [text, position] : labels) spriteBatch.DrawString(*font, text, position, Color::White);
-    spriteBatch.End();
-    device.SetRenderTargets(previous);
-    sheet.SaveAsPng(path);
+    fxport::demo::WriteTileSheet(device, sheet, path);
 
     if (!fullSizeDir.empty()) {
         std::filesystem::create_directories(fullSizeDir);

@@ -3,22 +3,16 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <memory>
 #include <vector>
 
-#include "fxport/graphics/sprite_batch.h"
-#include "fxport/graphics/sprite_font.h"
+#include "common/tile_sheet.h"
 #include "pointlights/game1.h"
 
 namespace DeferredLighting {
 
 namespace {
 
-struct Tile {
-    std::string label;
-    int width, height;
-    std::vector<Color> pixels;
-};
+using Tile = fxport::demo::SheetTile;
 
 std::vector<Color> rgbOf(const std::vector<Color>& data) {
     std::vector<Color> out(data.size());
@@ -99,36 +93,7 @@ void WriteDebugSheet(Game1& game, const std::string& path) {
     add(1, "lightRT.a specular", alphaOf(light));
     add(1, "back buffer (final.png)", device.GetBackBufferData());
 
-    const int gap = 8, labelH = 12;
-    const int sheetW = gap + 4 * (tileW + gap), sheetH = gap + 2 * (labelH + tileH + gap);
-    RenderTarget2D sheet(device, sheetW, sheetH, false, SurfaceFormat::Color, DepthFormat::None);
-    std::vector<RenderTargetBinding> previous = device.GetRenderTargets();
-    device.SetRenderTarget(&sheet);
-    device.Clear(Color(40, 40, 40));
-    SpriteBatch spriteBatch(device);
-    std::unique_ptr<SpriteFont> font = SpriteFont::createDebugFont(device);
-    std::vector<std::unique_ptr<Texture2D>> textures;
-    std::vector<std::pair<std::string, Vector2>> labels;
-    spriteBatch.Begin(SpriteSortMode::Deferred, BlendState::Opaque, SamplerState::PointClamp, nullptr, nullptr);
-    int y = gap;
-    for (auto& row : rows) {
-        int x = gap;
-        for (Tile& t : row) {
-            auto texture = std::make_unique<Texture2D>(device, t.width, t.height, false, SurfaceFormat::Color);
-            texture->SetData(t.pixels);
-            spriteBatch.Draw(*texture, Rectangle(x, y + labelH, t.width, t.height), Color::White);
-            textures.push_back(std::move(texture));
-            labels.emplace_back(t.label, Vector2(float(x), float(y + 2)));
-            x += t.width + gap;
-        }
-        y += labelH + tileH + gap;
-    }
-    spriteBatch.End();
-    spriteBatch.Begin(SpriteSortMode::Deferred, BlendState::AlphaBlend);
-    for (auto& [text, position] : labels) spriteBatch.DrawString(*font, text, position, Color::White);
-    spriteBatch.End();
-    device.SetRenderTargets(previous);
-    sheet.SaveAsPng(path);
+    fxport::demo::WriteTileSheet(device, rows, path);
 }
 
 }  // namespace DeferredLighting
