@@ -9,59 +9,35 @@
 #include <vector>
 
 #include "pointlights/game1.h"
+#include "ref_math.h"
 
 namespace DeferredLighting {
 
 namespace {
 
-// ---- double-precision HLSL math --------------------------------------------------------------
+// ---- double-precision HLSL math: tests/render's (ref_math.h) ------------------------------------
 
-struct D3 {
-    double x, y, z;
-};
-D3 operator+(D3 a, D3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-D3 operator-(D3 a, D3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-D3 operator*(D3 a, double s) { return {a.x * s, a.y * s, a.z * s}; }
-double dot(D3 a, D3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-double length(D3 a) { return std::sqrt(dot(a, a)); }
-D3 normalize(D3 a) { return a * (1.0 / length(a)); }
-double saturate(double v) { return std::clamp(v, 0.0, 1.0); }
+namespace rt = fxport::render_test;
+using D3 = rt::V3;
+using D4 = rt::V4;
+using rt::dot;
+using rt::length;
+using rt::M4;
+using rt::mul;
+using rt::mul3;
+using rt::normalize;
+using rt::reflect;
+using rt::saturate;
+using rt::operator+;
+using rt::operator-;
+using rt::operator*;
 D3 d3(Vector3 v) { return {v.X, v.Y, v.Z}; }
-// HLSL reflect(i, n) = i - 2 * dot(n, i) * n
-D3 reflect(D3 i, D3 n) { return i - n * (2 * dot(n, i)); }
-
-struct D4 {
-    double x, y, z, w;
-};
 // An XNA matrix (as the GPU receives it, in float) in double; points are row vectors (mul(v, M)).
-struct M4 {
-    double m[4][4];
-};
 M4 toM4(const Matrix& a) {
     const float v[16] = {a.M11, a.M12, a.M13, a.M14, a.M21, a.M22, a.M23, a.M24,
                          a.M31, a.M32, a.M33, a.M34, a.M41, a.M42, a.M43, a.M44};
     M4 r;
     for (int i = 0; i < 16; ++i) r.m[i / 4][i % 4] = v[i];
-    return r;
-}
-D4 mul(D4 v, const M4& a) {
-    const double in[4] = {v.x, v.y, v.z, v.w};
-    double o[4];
-    for (int j = 0; j < 4; ++j) o[j] = in[0] * a.m[0][j] + in[1] * a.m[1][j] + in[2] * a.m[2][j] + in[3] * a.m[3][j];
-    return {o[0], o[1], o[2], o[3]};
-}
-D3 mul3(D3 v, const M4& a) {  // mul(float3, World): the upper 3x3
-    return {v.x * a.m[0][0] + v.y * a.m[1][0] + v.z * a.m[2][0], v.x * a.m[0][1] + v.y * a.m[1][1] + v.z * a.m[2][1],
-            v.x * a.m[0][2] + v.y * a.m[1][2] + v.z * a.m[2][2]};
-}
-M4 operator*(const M4& a, const M4& b) {
-    M4 r;
-    for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j) {
-            double s = 0;
-            for (int k = 0; k < 4; ++k) s += a.m[i][k] * b.m[k][j];
-            r.m[i][j] = s;
-        }
     return r;
 }
 
