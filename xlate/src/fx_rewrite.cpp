@@ -1,10 +1,13 @@
 #include "fx_rewrite.h"
 
+#include "matrix_swizzle.h"
+
 #include <algorithm>
 #include <numeric>
 #include <optional>
 #include <set>
 
+#include "matrix_swizzle.h"
 #include "render_states.h"
 #include "source_map.h"
 #include "text_util.h"
@@ -316,6 +319,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
             (t.text == "half" || t.text == "min16float" || t.text == "min10float"))
             edits.push_back({t.offset, t.end, "float"});
     }
+    for (auto& e : lowerMatrixSwizzles(tokens)) edits.push_back(std::move(e));
     out.sourceText = &text;
     out.syntax = &syntax;
     out.edits = std::move(edits);
