@@ -4,6 +4,7 @@
 //   fxport check PATH... [-I dir] [-D NAME=VALUE] [--no-cache] [--warnings]
 // Exit status: 0 success, 1 an effect failed to compile, 2 bad usage.
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -149,6 +150,20 @@ void dump(const CompiledEffect& e, std::ostream& out) {
     }
 }
 
+// Directory scans take effects in any case (.fx, .Fx, .FX); headers (.fxh, .hlsli ...) and loose
+// shader files (.hlsl, .vs, .ps: they need --entry and --profile) are compiled only when named.
+bool isEffectFile(const fs::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext == ".fx";
+}
+
+bool isHeaderFile(const fs::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext == ".fxh" || ext == ".hlsli";
+}
+
 std::vector<std::string> collectEffects(const std::vector<std::string>& paths, std::vector<std::string>& missing) {
     std::vector<std::string> files;
     for (const auto& p : paths) {
@@ -156,7 +171,7 @@ std::vector<std::string> collectEffects(const std::vector<std::string>& paths, s
         if (fs::is_directory(p, ec)) {
             std::vector<std::string> found;
             for (const auto& entry : fs::recursive_directory_iterator(p, ec))
-                if (entry.is_regular_file() && (entry.path().extension() == ".fx" || entry.path().extension() == ".FX"))
+                if (entry.is_regular_file() && isEffectFile(entry.path()))
                     found.push_back(entry.path().string());
             std::sort(found.begin(), found.end());
             files.insert(files.end(), found.begin(), found.end());
@@ -213,6 +228,10 @@ int main(int argc, char** argv) {
                 ++failed;
             }
             for (const auto& f : files) {
+                if (isHeaderFile(f)) {
+                    std::cout << f << ": skipped: a header is compiled through the effects that #include it\n";
+                    continue;
+                }
                 try {
                     CompiledEffect e = compileEffectFile(f, a.options);
                     std::cout << f << ": ok (" << e.techniques.size() << " techniques, " << e.shaders.size() << " shaders)\n";

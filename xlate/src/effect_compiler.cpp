@@ -562,6 +562,7 @@ CompiledEffect compile(const std::string& source, const std::string& displayPath
     EffectSyntax syntax = parseEffect(pre.text, pre.map);
     CompiledEffect effect;
     effect.sourcePath = displayPath;
+    effect.diagnostics = pre.warnings;
     if (syntax.techniques.empty()) {
         Diagnostic d;
         d.id = diag::kEmptyEffect;

@@ -8,6 +8,7 @@
 #include <regex>
 
 #include "glslang_process.h"
+#include "text_encoding.h"
 #include "text_util.h"
 
 namespace fs = std::filesystem;
@@ -84,6 +85,33 @@ void checkIsText(const std::string& source, const std::string& displayPath) {
     }
 }
 
+void prepareSourceText(std::string& text, const std::string& displayPath, std::vector<Diagnostic>& warnings) {
+    static const std::regex directive(R"(^[ \t]*#[ \t]*line\b)");
+    static const std::regex wellFormed(R"(^[ \t]*#[ \t]*line[ \t]+[0-9]+([ \t]+"[^"\n]*")?[ \t]*(//.*)?\r?$)");
+    int line = 1;
+    for (size_t start = 0; start < text.size(); ++line) {
+        size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        auto first = text.begin() + static_cast<std::ptrdiff_t>(start), last = text.begin() + static_cast<std::ptrdiff_t>(end);
+        if (std::regex_search(first, last, directive)) {
+            std::string original(first, last);
+            if (!std::regex_match(original, wellFormed)) {
+                Diagnostic d;
+                d.severity = Severity::Warning;
+                d.id = diag::kPreprocessor;
+                d.message = "malformed #line directive ignored (expected #line NUMBER or #line NUMBER \"file\")";
+                d.location = {displayPath, line, static_cast<int>(original.find('#')) + 1};
+                d.sourceLine = original;
+                warnings.push_back(std::move(d));
+            }
+            for (size_t k = start; k < end; ++k)
+                if (text[k] != '\r') text[k] = ' ';
+        }
+        start = end + 1;
+    }
+    if (!text.empty() && text.back() != '\n') text += '\n';
+}
+
 namespace {
 
 // Finds `relative` under `dir`, exactly or else component by component ignoring case.
@@ -152,6 +180,7 @@ public:
     std::map<std::string, std::pair<const char*, std::string>> failures;
     std::vector<std::pair<std::string, std::string>> loaded;  // (display, text)
     std::vector<IncludeDependency> dependencies;
+    std::vector<Diagnostic> warnings;
 
 private:
     IncludeResult* resolve(const char* headerC, const char* includerC, size_t depth) {
@@ -227,7 +256,9 @@ private:
         }
         displayToAbsolute_[display] = canonical;
         for (auto& path : looked) dependencies.push_back({std::move(path), {}});
-        dependencies.push_back({canonical.string(), contentHash(*text)});
+        dependencies.push_back({canonical.string(), contentHash(*text)});  // the raw bytes, as the cache re-reads them
+        *text = sourceTextAsUtf8(*text);
+        prepareSourceText(*text, display, warnings);
         loaded.push_back({display, *text});
         auto* owned = new std::string(std::move(*text));
         return new IncludeResult(display, owned->data(), owned->size(), owned);
@@ -240,10 +271,13 @@ private:
 
 }  // namespace
 
-PreprocessedEffect preprocessEffect(const std::string& source, const std::string& displayPath,
+PreprocessedEffect preprocessEffect(const std::string& rawSource, const std::string& displayPath,
                                     const std::string& absolutePath, const CompileOptions& options) {
     ensureGlslangInitialized();
+    std::string source = sourceTextAsUtf8(rawSource);  // BOM / UTF-16: fxc reads them all
     checkIsText(source, displayPath);
+    std::vector<Diagnostic> lineWarnings;
+    prepareSourceText(source, displayPath, lineWarnings);
 
     std::vector<RestrictedIncluder::Root> roots;
     std::error_code ec;
@@ -271,10 +305,12 @@ PreprocessedEffect preprocessEffect(const std::string& source, const std::string
     result.map.addFileText(displayPath, source);
     for (const auto& [file, content] : includer.loaded) result.map.addFileText(file, content);
     result.dependencies = std::move(includer.dependencies);
+    result.warnings = std::move(lineWarnings);
+    result.warnings.insert(result.warnings.end(), includer.warnings.begin(), includer.warnings.end());
     if (!ok) {
         // glslang reports "ERROR: file:line: 'token' : message"; lines here are ORIGINAL lines.
         std::vector<Diagnostic> diags;
-        static const std::regex re(R"(ERROR: (.*):(\d+): (.*))");
+        static const std::regex re(R"(ERROR: (.*):(-?\d{1,9}): (.*))");
         std::string log = shader.getInfoLog();
         size_t pos = 0;
         while (pos < log.size()) {
@@ -285,6 +321,7 @@ PreprocessedEffect preprocessEffect(const std::string& source, const std::string
             std::smatch m;
             if (!std::regex_match(line, m, re)) continue;
             SourceLocation where{m[1].str(), std::stoi(m[2].str()), 0};
+            if (where.line < 1) where.line = 1;  // glslang's end-of-input errors can say line 0
             std::string msg(trim(m[3].str()));
             const char* id = diag::kPreprocessor;
             static const std::string kIncludeFailed = "Could not process include directive for header name: ";
@@ -313,7 +350,7 @@ PreprocessedEffect preprocessEffect(const std::string& source, const std::string
             Diagnostic d;
             d.id = diag::kPreprocessor;
             d.message = "preprocessing failed: " + std::string(trim(log));
-            d.location = {displayPath, 0, 0};
+            d.location = {displayPath, 1, 1};  // glslang named no line: the file as a whole
             diags.push_back(d);
         }
         throw CompileError(std::move(diags));

@@ -23,6 +23,7 @@ struct PreprocessedEffect {
     std::string text;        // preprocessed, `#line` markers blanked; line k maps through `map`
     SourceMap map;
     std::vector<IncludeDependency> dependencies;  // for the compile cache, in the order found
+    std::vector<Diagnostic> warnings;             // malformed `#line` directives (ignored)
 };
 
 // `displayPath` is how diagnostics name the root file; `absolutePath` is where it lives (its folder
@@ -32,6 +33,12 @@ PreprocessedEffect preprocessEffect(const std::string& source, const std::string
 
 // Rejects input that is not text (NUL or control bytes; bytes that are not UTF-8 outside comments and
 // string literals) with a diagnostic naming the line.
+// Prepares a file's decoded text for glslang: every `#line` directive the effect wrote is blanked
+// (diagnostics then name the file and line a person can open, never a line 0 or a file that does
+// not exist), a malformed one is reported in `warnings`; a missing final newline is added (glslang
+// rejects `#include "x"` as the last bytes of a file).
+void prepareSourceText(std::string& text, const std::string& displayPath, std::vector<Diagnostic>& warnings);
+
 void checkIsText(const std::string& source, const std::string& displayPath);
 
 }  // namespace fxport::xlate

@@ -1,5 +1,6 @@
 #include "source_map.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <sstream>
 
@@ -86,11 +87,25 @@ std::string SourceMap::originalLine(const std::string& file, int line) const {
 
 SourceLocation SourceMap::locate(int line, int column, const std::string& token) const {
     SourceLocation loc;
-    if (line < 1 || line > static_cast<int>(lines_.size())) {
+    if (lines_.empty()) {
         loc.file = fileOrder_.empty() ? std::string() : fileOrder_[0];
         return loc;
     }
-    const LineOrigin& o = lines_[static_cast<size_t>(line - 1)];
+    // Past the last line, or on a line of no file (a marker, what glslang appends at the end): the
+    // end of the nearest line before it that has one (where "unexpected end of file" happens).
+    size_t index = static_cast<size_t>(std::clamp(line, 1, static_cast<int>(lines_.size())) - 1);
+    bool atEnd = line > static_cast<int>(lines_.size());
+    while (index > 0 && lines_[index].line == 0) {
+        --index;
+        atEnd = true;
+    }
+    const LineOrigin& o = lines_[index];
+    if (atEnd && o.line > 0) {
+        loc.file = fileOrder_[static_cast<size_t>(o.fileIndex)];
+        loc.line = o.line;
+        loc.column = static_cast<int>(originalLine(loc.file, o.line).size()) + 1;
+        return loc;
+    }
     loc.file = fileOrder_[static_cast<size_t>(o.fileIndex)];
     loc.line = o.line;
     auto it = fileLines_.find(loc.file);

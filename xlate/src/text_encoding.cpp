@@ -1,0 +1,62 @@
+// Decoding of effect sources (see text_encoding.h).
+#include "text_encoding.h"
+
+#include <cstdint>
+
+namespace fxport::xlate {
+
+namespace {
+
+void appendUtf8(std::string& out, std::uint32_t cp) {
+    if (cp < 0x80) {
+        out += static_cast<char>(cp);
+    } else if (cp < 0x800) {
+        out += static_cast<char>(0xC0 | (cp >> 6));
+        out += static_cast<char>(0x80 | (cp & 0x3F));
+    } else if (cp < 0x10000) {
+        out += static_cast<char>(0xE0 | (cp >> 12));
+        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (cp & 0x3F));
+    } else {
+        out += static_cast<char>(0xF0 | (cp >> 18));
+        out += static_cast<char>(0x80 | ((cp >> 12) & 0x3F));
+        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (cp & 0x3F));
+    }
+}
+
+std::string utf16ToUtf8(std::string_view bytes, bool bigEndian) {
+    constexpr std::uint32_t kReplacement = 0xFFFD;
+    std::string out;
+    out.reserve(bytes.size() / 2 + 8);
+    auto unit = [&](size_t i) {
+        auto a = static_cast<unsigned char>(bytes[i]), b = static_cast<unsigned char>(bytes[i + 1]);
+        return static_cast<std::uint32_t>(bigEndian ? (a << 8) | b : (b << 8) | a);
+    };
+    size_t i = 0;
+    for (; i + 1 < bytes.size(); i += 2) {
+        std::uint32_t u = unit(i);
+        if (u >= 0xD800 && u < 0xDC00 && i + 3 < bytes.size()) {
+            std::uint32_t low = unit(i + 2);
+            if (low >= 0xDC00 && low < 0xE000) {
+                appendUtf8(out, 0x10000 + ((u - 0xD800) << 10) + (low - 0xDC00));
+                i += 2;
+                continue;
+            }
+        }
+        appendUtf8(out, u >= 0xD800 && u < 0xE000 ? kReplacement : u);
+    }
+    if (i < bytes.size()) appendUtf8(out, kReplacement);
+    return out;
+}
+
+}  // namespace
+
+std::string sourceTextAsUtf8(std::string_view raw) {
+    if (raw.substr(0, 3) == "\xEF\xBB\xBF") return std::string(raw.substr(3));
+    if (raw.substr(0, 2) == "\xFF\xFE") return utf16ToUtf8(raw.substr(2), false);
+    if (raw.substr(0, 2) == "\xFE\xFF") return utf16ToUtf8(raw.substr(2), true);
+    return std::string(raw);
+}
+
+}  // namespace fxport::xlate
