@@ -190,3 +190,66 @@ TEST(DirectoryScan, TakesEffectsInAnyCaseAndNeverHeadersAlone) {
     EXPECT_NE(r.output.find("skipped: a header"), std::string::npos) << r.output;
     fs::remove_all(dir);
 }
+
+// ---- 2. texture objects named in sampler blocks ---------------------------------------------------
+
+TEST(TextureObjectsInSamplers, StayObjectsAndTakeTheSamplersState) {
+    CompiledEffect e = compileEffectFile(kWild + "texture_objects/TextureInSampler.fx", noCache());
+    EXPECT_EQ(param(e, "Tex").type, ParameterType::Texture2D);
+    EXPECT_EQ(param(e, "Env").type, ParameterType::TextureCube);
+    const CompiledShader& ps = e.shaders[size_t(e.techniques[0].passes[0].pixelShader.shaders[0])];
+    bool texPoint = false, envCube = false;
+    for (const auto& s : ps.samplers) {
+        if (s.textureParameter == "Tex" && s.samplerName == "PointClamp")
+            texPoint = s.state.minFilter == TextureFilter::Point && s.state.addressU == TextureAddress::Clamp;
+        if (s.textureParameter == "Env" && s.samplerName == "EnvSampler") envCube = s.kind == TextureKind::TextureCube;
+    }
+    EXPECT_TRUE(texPoint) << reflectionJson(e);
+    EXPECT_TRUE(envCube) << reflectionJson(e);
+    expectAllPassesLink(e);
+}
+
+// ---- 5. pixel shaders without outputs -------------------------------------------------------------
+
+TEST(PixelShaderWithoutOutput, DepthOnlyPassesTranslateForPs3AndSm4) {
+    CompiledEffect e = compileEffectFile(kWild + "depth_only/DepthOnlyClip.fx", noCache());
+    for (const auto& t : e.techniques) {
+        const CompiledShader& ps = e.shaders[size_t(t.passes[0].pixelShader.shaders[0])];
+        EXPECT_EQ(ps.outputTargets, 0) << t.name;
+        EXPECT_NE(ps.glsl.find("discard"), std::string::npos) << t.name;
+    }
+    expectAllPassesLink(e);
+    // ps_2_0 must write COLOR0 (fxc X4530): still FX1403, with fxc's reason.
+    Diagnostic d = firstError("void PS(float2 uv : TEXCOORD0) { clip(uv.x); }\n"
+                              "technique T { pass P { PixelShader = compile ps_2_0 PS(); } }\n",
+                              "virtual/Ps2.fx");
+    EXPECT_EQ(d.id, diag::kBadEntrySignature);
+    EXPECT_NE(d.message.find("X4530"), std::string::npos) << d.message;
+}
+
+// ---- 6. ColorWriteEnable spellings --------------------------------------------------------------
+
+TEST(ColorWriteEnable, MonoGameAndFxcSpellingsBecomeMasks) {
+    CompiledEffect e = compileEffectFile(kWild + "states/ColorWriteSpellings.fx", noCache());
+    auto masks = [&](const std::string& pass) {
+        std::vector<std::pair<int, int>> out;  // (target, mask)
+        for (const auto& p : e.techniques[0].passes)
+            if (p.name == pass)
+                for (const auto& s : p.states)
+                    if (s.state == RenderState::ColorWriteEnable) out.push_back({s.index, int(s.value[0])});
+        return out;
+    };
+    using M = std::vector<std::pair<int, int>>;
+    EXPECT_EQ(masks("AllOn"), (M{{0, 15}}));
+    EXPECT_EQ(masks("AllOff"), (M{{0, 0}}));
+    EXPECT_EQ(masks("NoneOff"), (M{{0, 0}}));
+    EXPECT_EQ(masks("RedGreen"), (M{{0, 3}}));
+    EXPECT_EQ(masks("Numeric"), (M{{0, 8}}));
+    EXPECT_EQ(masks("Targets"), (M{{0, 15}, {1, 0}, {2, 0}, {3, 15}}));
+    expectAllPassesLink(e);
+    Diagnostic d = firstError("float4 PS() : COLOR0 { return 1; }\n"
+                              "technique T { pass P { PixelShader = compile ps_2_0 PS(); ColorWriteEnable = Purple; } }\n",
+                              "virtual/Cwe.fx");
+    EXPECT_EQ(d.id, diag::kBadStateValue);
+    EXPECT_EQ(d.location.line, 2);
+}
