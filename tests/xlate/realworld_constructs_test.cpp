@@ -253,3 +253,70 @@ TEST(ColorWriteEnable, MonoGameAndFxcSpellingsBecomeMasks) {
     EXPECT_EQ(d.id, diag::kBadStateValue);
     EXPECT_EQ(d.location.line, 2);
 }
+
+// ---- 3. #include "../x.fxh" inside an include root ------------------------------------------------
+
+TEST(IncludeRoot, UpwardIncludesResolveInsideTheRootOnly) {
+    const std::string root = "tests/fixtures/include_root";
+    const std::string effect = root + "/Effects/Water/Water.fx";
+    CompileOptions options = noCache();
+    options.includeRoot = root;
+    CompiledEffect e = compileEffectFile(effect, options);
+    EXPECT_EQ(param(e, "LightDirection").declaredAt.file, root + "/Effects/Shared/Lighting.fxh");
+    EXPECT_EQ(param(e, "LightDirection").declaredAt.line, 3);
+    expectAllPassesLink(e);
+
+    // Default root = the effect's folder: FX1103 at the #include, naming the resolved file and the option.
+    try {
+        compileEffectFile(effect, noCache());
+        FAIL() << "compiled without a root";
+    } catch (const CompileError& err) {
+        const Diagnostic& d = err.diagnostics().front();
+        EXPECT_EQ(d.id, diag::kIncludeOutside);
+        EXPECT_EQ(d.location.file, effect);
+        EXPECT_EQ(d.location.line, 2);
+        EXPECT_NE(d.message.find(fs::absolute(root + "/Effects/Shared/Lighting.fxh").lexically_normal().string()), std::string::npos) << d.message;
+        EXPECT_NE(d.message.find("--root"), std::string::npos) << d.message;
+        EXPECT_NE(d.message.find("includeRoot"), std::string::npos) << d.message;
+    }
+    // A root that holds the sibling folder but not Common/: the second hop fails, in the header.
+    options.includeRoot = root + "/Effects";
+    try {
+        compileEffectFile(effect, options);
+        FAIL() << "compiled with a root that lacks Common/";
+    } catch (const CompileError& err) {
+        EXPECT_EQ(err.diagnostics().front().location.file, root + "/Effects/Shared/Lighting.fxh");
+        EXPECT_EQ(err.diagnostics().front().location.line, 2);
+    }
+}
+
+TEST(IncludeRoot, SymbolicLinksLeavingTheRootAreRefused) {
+    fs::path dir = freshTempDir("symlink");
+    fs::create_directories(dir / "root" / "fx");
+    fs::create_directories(dir / "elsewhere");
+    std::ofstream(dir / "elsewhere" / "Secret.fxh") << "float4 Secret() { return 1; }\n";
+    fs::create_symlink(dir / "elsewhere" / "Secret.fxh", dir / "root" / "Linked.fxh");
+    std::ofstream(dir / "root" / "fx" / "Uses.fx") << "#include \"../Linked.fxh\"\nfloat4 PS() : COLOR0 { return Secret(); }\n"
+                                                     "technique T { pass P { PixelShader = compile ps_2_0 PS(); } }\n";
+    CompileOptions options = noCache();
+    options.includeRoot = (dir / "root").string();
+    try {
+        compileEffectFile((dir / "root" / "fx" / "Uses.fx").string(), options);
+        FAIL() << "a symbolic link out of the root was followed";
+    } catch (const CompileError& err) {
+        EXPECT_EQ(err.diagnostics().front().id, diag::kIncludeOutside);
+        EXPECT_NE(err.diagnostics().front().message.find("elsewhere"), std::string::npos) << err.what();
+    }
+    fs::remove_all(dir);
+}
+
+TEST(IncludeRoot, CheckOfAFolderUsesItAsTheRoot) {
+    RunResult r = runCli("check --no-cache tests/fixtures/include_root");
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("Water.fx: ok"), std::string::npos) << r.output;
+    r = runCli("check --no-cache tests/fixtures/include_root/Effects/Water/Water.fx");
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("Water.fx(2,11): error FX1103"), std::string::npos) << r.output;
+    r = runCli("check --no-cache --root tests/fixtures/include_root tests/fixtures/include_root/Effects/Water/Water.fx");
+    EXPECT_EQ(r.status, 0) << r.output;
+}

@@ -521,6 +521,7 @@ std::string cacheKey(const std::string& source, const std::string& displayPath, 
         field("I", dir);
         field("i", fs::weakly_canonical(fs::absolute(dir, ec), ec).string());
     }
+    if (!options.includeRoot.empty()) field("R", fs::weakly_canonical(fs::absolute(options.includeRoot, ec), ec).string());
     for (const auto& [name, value] : options.defines) {
         field("D", name);
         field("d", value);
