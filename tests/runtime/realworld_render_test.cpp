@@ -131,5 +131,23 @@ TEST_F(RealWorldRender, ColorWriteEnableSpellingsMaskChannels) {
     }
 }
 
+// Item 4: fxc's implicit conversions: HalfOf(float4) uses .x, Scale(float3, float4) uses .xy and
+// .x, Tint(0.5) promotes the scalar to a float4.
+TEST_F(RealWorldRender, ImplicitConversionsComputeWhatFxcDoes) {
+    Effect effect(device, wild("conversions/ImplicitConversions.fx"), noCache());
+    const double in[4] = {0.3, 0.9, 0.5, 0.7};
+    effect.Parameters["Input"].SetValue(Vector4(float(in[0]), float(in[1]), float(in[2]), float(in[3])));
+    RenderTarget2D target(device, 2, 2, false, SurfaceFormat::Vector4);
+    device.SetRenderTarget(target);
+    device.Clear(Color::Black);
+    effect.CurrentTechnique->Passes[0].Apply();
+    drawQuad(device);
+    std::vector<float> px = readFloats(target);
+    const double expected[4] = {float(in[0]) * 0.5, double(float(in[0])) * float(in[0]), double(float(in[1])) * float(in[0]),
+                                0.5 * 0.5 + 0.5 * 0.25};
+    for (size_t p = 0; p < 4; ++p)
+        for (size_t k = 0; k < 4; ++k) EXPECT_NEAR(px[p * 4 + k], expected[k], 1e-6) << "pixel " << p << " channel " << k;
+}
+
 }  // namespace
 }  // namespace fxport

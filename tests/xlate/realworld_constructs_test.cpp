@@ -320,3 +320,41 @@ TEST(IncludeRoot, CheckOfAFolderUsesItAsTheRoot) {
     r = runCli("check --no-cache --root tests/fixtures/include_root tests/fixtures/include_root/Effects/Water/Water.fx");
     EXPECT_EQ(r.status, 0) << r.output;
 }
+
+// ---- 4. implicit conversions in calls -----------------------------------------------------------
+
+TEST(ImplicitConversions, VectorToScalarTruncationAndPromotionTranslateWithFxcWarnings) {
+    const std::string path = kWild + "conversions/ImplicitConversions.fx";
+    CompiledEffect e = compileEffectFile(path, noCache());
+    std::vector<std::pair<int, std::string>> warnings;
+    for (const auto& d : e.diagnostics)
+        if (d.id == diag::kImplicitConversion) {
+            EXPECT_EQ(d.severity, Severity::Warning);
+            EXPECT_EQ(d.location.file, path);
+            EXPECT_NE(d.message.find("implicit truncation of vector type"), std::string::npos) << d.message;
+            EXPECT_NE(d.message.find("X3206"), std::string::npos) << d.message;
+            warnings.push_back({d.location.line, d.message.substr(d.message.find("argument"))});
+        }
+    using W = std::vector<std::pair<int, std::string>>;
+    EXPECT_EQ(warnings, (W{{27, "argument 1 of 'HalfOf' is float4, parameter 'x' is float; its first component is used"},
+                           {28, "argument 1 of 'Scale' is float3, parameter 'v' is float2; its first components are used"},
+                           {28, "argument 2 of 'Scale' is float4, parameter 's' is float; its first component is used"}}));
+    expectAllPassesLink(e);
+}
+
+TEST(ImplicitConversions, CallsThatResolvedBeforeAreUntouchedAndRealErrorsStay) {
+    // An overload the effect declares itself is chosen, not a generated one: no warning.
+    CompiledEffect e = compileEffectSource("float f(float x) { return x; }\nfloat f(float4 x) { return x.w; }\n"
+                                           "float4 PS(float4 c : COLOR0) : COLOR0 { return f(c); }\n"
+                                           "technique T { pass P { PixelShader = compile ps_3_0 PS(); } }\n",
+                                           "virtual/Own.fx", noCache());
+    for (const auto& d : e.diagnostics) EXPECT_NE(d.id, diag::kImplicitConversion) << d.format();
+    EXPECT_NE(e.shaders[0].glsl.find(".w"), std::string::npos) << e.shaders[0].glsl;
+    // A call no conversion can fix (a struct where a float goes) is still FX2001 at its line.
+    Diagnostic d = firstError("struct S { float a; };\nfloat f(float x) { return x; }\n"
+                              "float4 PS(float4 c : COLOR0) : COLOR0 { S s; s.a = 1; return f(s); }\n"
+                              "technique T { pass P { PixelShader = compile ps_3_0 PS(); } }\n",
+                              "virtual/Bad.fx");
+    EXPECT_EQ(d.id, diag::kHlsl);
+    EXPECT_EQ(d.location.line, 3);
+}
