@@ -190,3 +190,171 @@ TEST(DirectoryScan, TakesEffectsInAnyCaseAndNeverHeadersAlone) {
     EXPECT_NE(r.output.find("skipped: a header"), std::string::npos) << r.output;
     fs::remove_all(dir);
 }
+
+// ---- 2. texture objects named in sampler blocks ---------------------------------------------------
+
+TEST(TextureObjectsInSamplers, StayObjectsAndTakeTheSamplersState) {
+    CompiledEffect e = compileEffectFile(kWild + "texture_objects/TextureInSampler.fx", noCache());
+    EXPECT_EQ(param(e, "Tex").type, ParameterType::Texture2D);
+    EXPECT_EQ(param(e, "Env").type, ParameterType::TextureCube);
+    const CompiledShader& ps = e.shaders[size_t(e.techniques[0].passes[0].pixelShader.shaders[0])];
+    bool texPoint = false, envCube = false;
+    for (const auto& s : ps.samplers) {
+        if (s.textureParameter == "Tex" && s.samplerName == "PointClamp")
+            texPoint = s.state.minFilter == TextureFilter::Point && s.state.addressU == TextureAddress::Clamp;
+        if (s.textureParameter == "Env" && s.samplerName == "EnvSampler") envCube = s.kind == TextureKind::TextureCube;
+    }
+    EXPECT_TRUE(texPoint) << reflectionJson(e);
+    EXPECT_TRUE(envCube) << reflectionJson(e);
+    expectAllPassesLink(e);
+}
+
+// ---- 5. pixel shaders without outputs -------------------------------------------------------------
+
+TEST(PixelShaderWithoutOutput, DepthOnlyPassesTranslateForPs3AndSm4) {
+    CompiledEffect e = compileEffectFile(kWild + "depth_only/DepthOnlyClip.fx", noCache());
+    for (const auto& t : e.techniques) {
+        const CompiledShader& ps = e.shaders[size_t(t.passes[0].pixelShader.shaders[0])];
+        EXPECT_EQ(ps.outputTargets, 0) << t.name;
+        EXPECT_NE(ps.glsl.find("discard"), std::string::npos) << t.name;
+    }
+    expectAllPassesLink(e);
+    // ps_2_0 must write COLOR0 (fxc X4530): still FX1403, with fxc's reason.
+    Diagnostic d = firstError("void PS(float2 uv : TEXCOORD0) { clip(uv.x); }\n"
+                              "technique T { pass P { PixelShader = compile ps_2_0 PS(); } }\n",
+                              "virtual/Ps2.fx");
+    EXPECT_EQ(d.id, diag::kBadEntrySignature);
+    EXPECT_NE(d.message.find("X4530"), std::string::npos) << d.message;
+}
+
+// ---- 6. ColorWriteEnable spellings --------------------------------------------------------------
+
+TEST(ColorWriteEnable, MonoGameAndFxcSpellingsBecomeMasks) {
+    CompiledEffect e = compileEffectFile(kWild + "states/ColorWriteSpellings.fx", noCache());
+    auto masks = [&](const std::string& pass) {
+        std::vector<std::pair<int, int>> out;  // (target, mask)
+        for (const auto& p : e.techniques[0].passes)
+            if (p.name == pass)
+                for (const auto& s : p.states)
+                    if (s.state == RenderState::ColorWriteEnable) out.push_back({s.index, int(s.value[0])});
+        return out;
+    };
+    using M = std::vector<std::pair<int, int>>;
+    EXPECT_EQ(masks("AllOn"), (M{{0, 15}}));
+    EXPECT_EQ(masks("AllOff"), (M{{0, 0}}));
+    EXPECT_EQ(masks("NoneOff"), (M{{0, 0}}));
+    EXPECT_EQ(masks("RedGreen"), (M{{0, 3}}));
+    EXPECT_EQ(masks("Numeric"), (M{{0, 8}}));
+    EXPECT_EQ(masks("Targets"), (M{{0, 15}, {1, 0}, {2, 0}, {3, 15}}));
+    expectAllPassesLink(e);
+    Diagnostic d = firstError("float4 PS() : COLOR0 { return 1; }\n"
+                              "technique T { pass P { PixelShader = compile ps_2_0 PS(); ColorWriteEnable = Purple; } }\n",
+                              "virtual/Cwe.fx");
+    EXPECT_EQ(d.id, diag::kBadStateValue);
+    EXPECT_EQ(d.location.line, 2);
+}
+
+// ---- 3. #include "../x.fxh" inside an include root ------------------------------------------------
+
+TEST(IncludeRoot, UpwardIncludesResolveInsideTheRootOnly) {
+    const std::string root = "tests/fixtures/include_root";
+    const std::string effect = root + "/Effects/Water/Water.fx";
+    CompileOptions options = noCache();
+    options.includeRoot = root;
+    CompiledEffect e = compileEffectFile(effect, options);
+    EXPECT_EQ(param(e, "LightDirection").declaredAt.file, root + "/Effects/Shared/Lighting.fxh");
+    EXPECT_EQ(param(e, "LightDirection").declaredAt.line, 3);
+    expectAllPassesLink(e);
+
+    // Default root = the effect's folder: FX1103 at the #include, naming the resolved file and the option.
+    try {
+        compileEffectFile(effect, noCache());
+        FAIL() << "compiled without a root";
+    } catch (const CompileError& err) {
+        const Diagnostic& d = err.diagnostics().front();
+        EXPECT_EQ(d.id, diag::kIncludeOutside);
+        EXPECT_EQ(d.location.file, effect);
+        EXPECT_EQ(d.location.line, 2);
+        EXPECT_NE(d.message.find(fs::absolute(root + "/Effects/Shared/Lighting.fxh").lexically_normal().string()), std::string::npos) << d.message;
+        EXPECT_NE(d.message.find("--root"), std::string::npos) << d.message;
+        EXPECT_NE(d.message.find("includeRoot"), std::string::npos) << d.message;
+    }
+    // A root that holds the sibling folder but not Common/: the second hop fails, in the header.
+    options.includeRoot = root + "/Effects";
+    try {
+        compileEffectFile(effect, options);
+        FAIL() << "compiled with a root that lacks Common/";
+    } catch (const CompileError& err) {
+        EXPECT_EQ(err.diagnostics().front().location.file, root + "/Effects/Shared/Lighting.fxh");
+        EXPECT_EQ(err.diagnostics().front().location.line, 2);
+    }
+}
+
+TEST(IncludeRoot, SymbolicLinksLeavingTheRootAreRefused) {
+    fs::path dir = freshTempDir("symlink");
+    fs::create_directories(dir / "root" / "fx");
+    fs::create_directories(dir / "elsewhere");
+    std::ofstream(dir / "elsewhere" / "Secret.fxh") << "float4 Secret() { return 1; }\n";
+    fs::create_symlink(dir / "elsewhere" / "Secret.fxh", dir / "root" / "Linked.fxh");
+    std::ofstream(dir / "root" / "fx" / "Uses.fx") << "#include \"../Linked.fxh\"\nfloat4 PS() : COLOR0 { return Secret(); }\n"
+                                                     "technique T { pass P { PixelShader = compile ps_2_0 PS(); } }\n";
+    CompileOptions options = noCache();
+    options.includeRoot = (dir / "root").string();
+    try {
+        compileEffectFile((dir / "root" / "fx" / "Uses.fx").string(), options);
+        FAIL() << "a symbolic link out of the root was followed";
+    } catch (const CompileError& err) {
+        EXPECT_EQ(err.diagnostics().front().id, diag::kIncludeOutside);
+        EXPECT_NE(err.diagnostics().front().message.find("elsewhere"), std::string::npos) << err.what();
+    }
+    fs::remove_all(dir);
+}
+
+TEST(IncludeRoot, CheckOfAFolderUsesItAsTheRoot) {
+    RunResult r = runCli("check --no-cache tests/fixtures/include_root");
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("Water.fx: ok"), std::string::npos) << r.output;
+    r = runCli("check --no-cache tests/fixtures/include_root/Effects/Water/Water.fx");
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("Water.fx(2,11): error FX1103"), std::string::npos) << r.output;
+    r = runCli("check --no-cache --root tests/fixtures/include_root tests/fixtures/include_root/Effects/Water/Water.fx");
+    EXPECT_EQ(r.status, 0) << r.output;
+}
+
+// ---- 4. implicit conversions in calls -----------------------------------------------------------
+
+TEST(ImplicitConversions, VectorToScalarTruncationAndPromotionTranslateWithFxcWarnings) {
+    const std::string path = kWild + "conversions/ImplicitConversions.fx";
+    CompiledEffect e = compileEffectFile(path, noCache());
+    std::vector<std::pair<int, std::string>> warnings;
+    for (const auto& d : e.diagnostics)
+        if (d.id == diag::kImplicitConversion) {
+            EXPECT_EQ(d.severity, Severity::Warning);
+            EXPECT_EQ(d.location.file, path);
+            EXPECT_NE(d.message.find("implicit truncation of vector type"), std::string::npos) << d.message;
+            EXPECT_NE(d.message.find("X3206"), std::string::npos) << d.message;
+            warnings.push_back({d.location.line, d.message.substr(d.message.find("argument"))});
+        }
+    using W = std::vector<std::pair<int, std::string>>;
+    EXPECT_EQ(warnings, (W{{27, "argument 1 of 'HalfOf' is float4, parameter 'x' is float; its first component is used"},
+                           {28, "argument 1 of 'Scale' is float3, parameter 'v' is float2; its first components are used"},
+                           {28, "argument 2 of 'Scale' is float4, parameter 's' is float; its first component is used"}}));
+    expectAllPassesLink(e);
+}
+
+TEST(ImplicitConversions, CallsThatResolvedBeforeAreUntouchedAndRealErrorsStay) {
+    // An overload the effect declares itself is chosen, not a generated one: no warning.
+    CompiledEffect e = compileEffectSource("float f(float x) { return x; }\nfloat f(float4 x) { return x.w; }\n"
+                                           "float4 PS(float4 c : COLOR0) : COLOR0 { return f(c); }\n"
+                                           "technique T { pass P { PixelShader = compile ps_3_0 PS(); } }\n",
+                                           "virtual/Own.fx", noCache());
+    for (const auto& d : e.diagnostics) EXPECT_NE(d.id, diag::kImplicitConversion) << d.format();
+    EXPECT_NE(e.shaders[0].glsl.find(".w"), std::string::npos) << e.shaders[0].glsl;
+    // A call no conversion can fix (a struct where a float goes) is still FX2001 at its line.
+    Diagnostic d = firstError("struct S { float a; };\nfloat f(float x) { return x; }\n"
+                              "float4 PS(float4 c : COLOR0) : COLOR0 { S s; s.a = 1; return f(s); }\n"
+                              "technique T { pass P { PixelShader = compile ps_3_0 PS(); } }\n",
+                              "virtual/Bad.fx");
+    EXPECT_EQ(d.id, diag::kHlsl);
+    EXPECT_EQ(d.location.line, 3);
+}

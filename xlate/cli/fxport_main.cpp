@@ -2,6 +2,8 @@
 //   fxport compile IN.fx -o OUT [-I dir] [-D NAME=VALUE] [--technique NAME] [--no-cache]
 //   fxport dump IN.fx [--reflection] [-I dir] [-D NAME=VALUE]
 //   fxport check PATH... [-I dir] [-D NAME=VALUE] [--no-cache] [--warnings]
+//   --root DIR: `#include "../x.fxh"` may reach files inside DIR (default: the effect's folder, or
+//   the folder `check` scans)
 // Exit status: 0 success, 1 an effect failed to compile, 2 bad usage.
 #include <algorithm>
 #include <cctype>
@@ -23,7 +25,8 @@ namespace {
 const char* kUsage =
     "usage: fxport compile IN.fx -o OUT [-I dir] [-D NAME=VALUE] [--technique NAME] [--no-cache]\n"
     "       fxport dump IN.fx [--reflection] [-I dir] [-D NAME=VALUE]\n"
-    "       fxport check PATH... [-I dir] [-D NAME=VALUE] [--no-cache] [--warnings]\n";
+    "       fxport check PATH... [-I dir] [-D NAME=VALUE] [--no-cache] [--warnings]\n"
+    "       (all: --root DIR lets #include \"../x.fxh\" reach files inside DIR)\n";
 
 struct Args {
     std::string command;
@@ -64,6 +67,8 @@ bool parseArgs(int argc, char** argv, Args& a, std::string& error) {
             a.options.defines.push_back({v.substr(0, eq), eq == std::string::npos ? "1" : v.substr(eq + 1)});
         } else if (s.rfind("-o", 0) == 0) {
             if (!value(a.output)) return false;
+        } else if (s == "--root") {
+            if (!value(a.options.includeRoot)) return false;
         } else if (s == "--technique") {
             if (!value(v)) return false;
             a.options.techniques.push_back(v);
@@ -164,8 +169,9 @@ bool isHeaderFile(const fs::path& path) {
     return ext == ".fxh" || ext == ".hlsli";
 }
 
-std::vector<std::string> collectEffects(const std::vector<std::string>& paths, std::vector<std::string>& missing) {
-    std::vector<std::string> files;
+// (file, include root): an effect found by scanning a folder may #include upwards within that folder.
+std::vector<std::pair<std::string, std::string>> collectEffects(const std::vector<std::string>& paths, std::vector<std::string>& missing) {
+    std::vector<std::pair<std::string, std::string>> files;
     for (const auto& p : paths) {
         std::error_code ec;
         if (fs::is_directory(p, ec)) {
@@ -174,9 +180,9 @@ std::vector<std::string> collectEffects(const std::vector<std::string>& paths, s
                 if (entry.is_regular_file() && isEffectFile(entry.path()))
                     found.push_back(entry.path().string());
             std::sort(found.begin(), found.end());
-            files.insert(files.end(), found.begin(), found.end());
+            for (auto& f : found) files.push_back({std::move(f), p});
         } else if (fs::exists(p, ec)) {
-            files.push_back(p);
+            files.push_back({p, std::string()});
         } else {
             missing.push_back(p);
         }
@@ -227,13 +233,15 @@ int main(int argc, char** argv) {
                 std::cout << m << ": error FX1001: no such file or folder\n";
                 ++failed;
             }
-            for (const auto& f : files) {
+            for (const auto& [f, scannedRoot] : files) {
+                CompileOptions options = a.options;
+                if (options.includeRoot.empty()) options.includeRoot = scannedRoot;
                 if (isHeaderFile(f)) {
                     std::cout << f << ": skipped: a header is compiled through the effects that #include it\n";
                     continue;
                 }
                 try {
-                    CompiledEffect e = compileEffectFile(f, a.options);
+                    CompiledEffect e = compileEffectFile(f, options);
                     std::cout << f << ": ok (" << e.techniques.size() << " techniques, " << e.shaders.size() << " shaders)\n";
                     if (a.showWarnings) printDiagnostics(e.diagnostics, true);
                     ++passed;

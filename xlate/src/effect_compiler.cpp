@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 
 #include "constant_eval.h"
 #include "effect_cache.h"
@@ -15,6 +16,7 @@
 #include "fx_rewrite.h"
 #include "fx_syntax.h"
 #include "hlsl_to_spirv.h"
+#include "implicit_conversions.h"
 #include "preprocess.h"
 #include "render_states.h"
 #include "shader_profile.h"
@@ -300,6 +302,42 @@ int EffectBuilder::compileShader(const FxShaderExpr& expr, ShaderStage expected,
     request.entryPoint = entryName;
     request.dx9Compatible = rewritten_.dx9Samplers;
     SpirvModule spirv = hlslToSpirv(request);
+    // A vector passed to a scalar parameter of the effect's own function: fxc uses .x (warning
+    // X3206), glslang finds no overload. Compile again with overloads that take vectors there
+    // (glslang stops at the first such call, so as often as new functions turn up).
+    std::set<std::string> unmatched;
+    std::vector<HlslError> conversionCalls;  // the calls glslang rejected, for the warnings
+    auto collect = [&](const SpirvModule& m) {
+        bool grew = false;
+        for (const auto& e : m.errors)
+            if (e.message.find("no matching overloaded function") != std::string::npos && syntax_.findFunction(e.token)) {
+                grew |= unmatched.insert(e.token).second;
+                conversionCalls.push_back(e);
+            }
+        return grew;
+    };
+    for (int round = 0; round < 16 && collect(spirv); ++round) {
+        std::vector<TextEdit> overloads = vectorToScalarOverloads(syntax_, unmatched);
+        std::string retried = rewritten_.hlslForGeometryShader(expected == ShaderStage::Geometry ? expr.entry : std::string(), overloads);
+        if (wrapped) retried += wrapper.code;
+        request.source = &retried;
+        SpirvModule next = hlslToSpirv(request);
+        if (!next.errors.empty() && next.errors.front().message.find("no matching overloaded function") == std::string::npos) break;
+        spirv = std::move(next);
+        source = std::move(retried);
+        request.source = &source;
+    }
+    if (!conversionCalls.empty() && spirv.errors.empty()) {
+        for (const auto& e : conversionCalls) {
+            Diagnostic d = pre_.map.make(Severity::Warning, diag::kImplicitConversion,
+                                         std::string(kTruncationWarning) + ": a vector argument of '" + e.token +
+                                             "' is passed to a scalar parameter; its first component is used",
+                                         e.line, 0, e.token + "(");
+            bool known = false;  // already said, with the types, by findImplicitTruncations
+            for (const auto& w : effect_.diagnostics) known |= w.id == d.id && w.location.file == d.location.file && w.location.line == d.location.line;
+            if (!known) effect_.diagnostics.push_back(std::move(d));
+        }
+    }
     if (!spirv.errors.empty()) {
         for (const auto& e : spirv.errors) {
             if (e.line > 0 && e.line <= baseLines_) {
@@ -521,6 +559,7 @@ std::string cacheKey(const std::string& source, const std::string& displayPath, 
         field("I", dir);
         field("i", fs::weakly_canonical(fs::absolute(dir, ec), ec).string());
     }
+    if (!options.includeRoot.empty()) field("R", fs::weakly_canonical(fs::absolute(options.includeRoot, ec), ec).string());
     for (const auto& [name, value] : options.defines) {
         field("D", name);
         field("d", value);
@@ -576,6 +615,7 @@ CompiledEffect compile(const std::string& source, const std::string& displayPath
         throw CompileError({d});
     }
     RewrittenEffect rewritten = rewriteEffect(pre.text, syntax, pre.map, effect.diagnostics);
+    for (auto& w : findImplicitTruncations(syntax, pre.map)) effect.diagnostics.push_back(std::move(w));
     EffectBuilder builder(pre, syntax, rewritten, options, effect);
     builder.buildParameters();
     builder.buildTechniques();

@@ -305,8 +305,12 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
         w.error = "vertex shader '" + entry.name + "' writes no position (POSITION or SV_Position)";
         return w;
     }
-    if (m == 0 && !vertex) {
-        w.error = "pixel shader '" + entry.name + "' has no output (COLOR0 / SV_Target0)";
+    // A pixel shader without outputs (a depth-only pass, maybe with clip()) is fine from ps_3_0 on;
+    // fxc rejects it for ps_1_x/ps_2_x (X4530), so does fxport.
+    bool noOutputs = m == 0 && !vertex;
+    if (noOutputs && profile.major < 3) {
+        w.error = "pixel shader '" + entry.name + "' has no output: " + profile.name +
+                  " pixel shaders must minimally write all four components of COLOR0 (fxc X4530; ps_3_0 and later may write nothing)";
         return w;
     }
 
@@ -316,8 +320,8 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
         code << "cbuffer " << kInternalBlock << " { float4 " << kPixelOffset << "; };\n";
         w.usesPixelOffset = true;
     }
-    code << "struct fxport_Output {\n" << outStruct.str() << "};\n";
-    code << "fxport_Output " << kWrapperEntry << "(" << params.str() << ") {\n";
+    if (!noOutputs) code << "struct fxport_Output {\n" << outStruct.str() << "};\n";
+    code << (noOutputs ? "void " : "fxport_Output ") << kWrapperEntry << "(" << params.str() << ") {\n";
     for (const auto& l : locals) code << "    " << l << "\n";
     code << fill.str();
     std::string call = entry.name + "(";
@@ -325,6 +329,11 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
     call += ")";
     if (returns) code << "    " << entry.returnType << " r = " << call << ";\n";
     else code << "    " << call << ";\n";
+    if (noOutputs) {
+        code << "}\n";
+        w.code = code.str();
+        return w;
+    }
     code << "    fxport_Output o;\n" << copyOut.str();
     if (w.usesPixelOffset && !positionMember.empty())
         code << "    o." << positionMember << ".xy += " << kPixelOffset << ".xy * o." << positionMember << ".w;\n";

@@ -117,12 +117,18 @@ public:
         }
         for (auto& t : syntax_.textures) {
             if (t.dx9Object) continue;
+            // A Texture2D named by a DX9 sampler_state is the DX9 texture of that sampler, unless
+            // code uses it as an object too (`T.Sample(s, uv)`: effects mixing DX10 objects with
+            // DX9-style sampler blocks). A DX10 SamplerState's `Texture = <T>` binds nothing.
             bool namedBySamplerState = false;
             for (const auto& s : syntax_.samplers)
                 for (const auto& a : s.states)
-                    if (iequals(a.name, "texture"))
+                    if (!s.dx10 && iequals(a.name, "texture"))
                         for (size_t i = a.value.begin; i < a.value.end; ++i) namedBySamplerState |= tok(i).text == t.name;
-            if (namedBySamplerState) {
+            bool usedInCode = false;
+            for (const auto& f : syntax_.functions)
+                for (size_t i = f.body.begin; i < f.body.end && !usedInCode; ++i) usedInCode = tok(i).isIdent() && tok(i).text == t.name;
+            if (namedBySamplerState && !usedInCode) {
                 t.dx9Object = true;
                 blank(t.declaration.begin, t.declaration.end);
             }

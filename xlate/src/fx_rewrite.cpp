@@ -133,7 +133,7 @@ std::string applyEdits(const std::string& text, std::vector<TextEdit> edits) {
 
 }  // namespace
 
-std::string RewrittenEffect::hlslForGeometryShader(const std::string& entry) const {
+std::string RewrittenEffect::hlslForGeometryShader(const std::string& entry, const std::vector<TextEdit>& extra) const {
     // Stream functions the entry calls (directly or through others: a helper that Appends for it)
     // stay; the others go.
     std::set<std::string> keep = {entry};
@@ -151,6 +151,7 @@ std::string RewrittenEffect::hlslForGeometryShader(const std::string& entry) con
         }
     }
     std::vector<TextEdit> all = edits;
+    all.insert(all.end(), extra.begin(), extra.end());
     for (const auto& f : syntax->functions) {
         if (!f.hasStreamParameter || keep.count(f.name) || f.declaration.empty()) continue;
         const Token& first = syntax->tokens[f.declaration.begin];

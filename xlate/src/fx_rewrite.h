@@ -29,7 +29,8 @@ struct RewrittenEffect {
     std::string hlsl;      // the whole effect as plain HLSL (no entry wrapper), geometry shaders left out
     // The effect for compiling geometry shader `entry`: glslang 12 crashes on a source holding two
     // functions that Append to streams, so every stream function `entry` does not call is left out.
-    std::string hlslForGeometryShader(const std::string& entry) const;
+    // `extra` edits are applied too (overloads for implicit conversions, see implicit_conversions.h).
+    std::string hlslForGeometryShader(const std::string& entry, const std::vector<TextEdit>& extra = {}) const;
     bool dx9Samplers = false;  // compile with glslang's DX9-compatibility mode (tex2D, sampler2D ...)
     std::vector<EffectSampler> samplers;
     std::map<std::string, int> textureUnits;  // DX10 texture objects -> unit (register(tN) or order)

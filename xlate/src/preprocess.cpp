@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <regex>
 
 #include "glslang_process.h"
@@ -158,8 +159,10 @@ public:
         std::string display; // as the user named it
     };
 
-    RestrictedIncluder(std::vector<Root> roots, std::string rootDisplay, fs::path rootAbsolute)
-        : roots_(std::move(roots)) {
+    // `roots` are searched and allowed; `extraAllowed` (CompileOptions::includeRoot) is allowed
+    // only: fxc reaches it through `../` from the including file, never by searching it.
+    RestrictedIncluder(std::vector<Root> roots, std::optional<Root> extraAllowed, std::string rootDisplay, fs::path rootAbsolute)
+        : roots_(std::move(roots)), extraAllowed_(std::move(extraAllowed)) {
         displayToAbsolute_[rootDisplay] = std::move(rootAbsolute);
     }
 
@@ -212,6 +215,7 @@ private:
         fs::path canonical;
         std::string display;
         bool foundOutside = false;
+        std::string outsidePath;  // the first candidate that exists but lies outside every root
         std::vector<std::string> looked;  // exact paths searched before the hit (they did not exist)
         for (const auto& [dir, displayDir] : searchDirs) {
             if (fs::path(header).is_absolute()) {
@@ -221,11 +225,13 @@ private:
                 if (!found) looked.push_back((dir / header).lexically_normal().string());
             }
             if (!found) continue;
+            // Canonical: a symbolic link inside a root that points outside it is outside.
             canonical = fs::weakly_canonical(*found, ec);
-            bool allowed = false;
+            bool allowed = extraAllowed_ && isUnder(canonical, extraAllowed_->absolute);
             for (const auto& r : roots_)
                 if (isUnder(canonical, r.absolute)) allowed = true;
             if (!allowed) {
+                if (!foundOutside) outsidePath = canonical.string();
                 foundOutside = true;
                 found.reset();
                 continue;
@@ -235,8 +241,10 @@ private:
             break;
         }
         if (!found && foundOutside) {
-            failures[header] = {diag::kIncludeOutside, "include file '" + header +
-                                "' is outside the effect's folder and the include folders; pass its folder with -I to allow it"};
+            std::string root = extraAllowed_ ? "the include root '" + extraAllowed_->display + "'" : std::string("the effect's folder");
+            failures[header] = {diag::kIncludeOutside, "include file '" + header + "' resolves to '" + outsidePath + "', outside " + root +
+                                " and the include folders; allow it with --root DIR (CompileOptions::includeRoot) "
+                                "naming a folder that holds both, or -I with its folder"};
             return nullptr;
         }
         if (!found) {
@@ -265,6 +273,7 @@ private:
     }
 
     std::vector<Root> roots_;
+    std::optional<Root> extraAllowed_;
     std::map<std::string, fs::path> displayToAbsolute_;
     std::vector<std::pair<fs::path, std::string>> chain_;  // open files: (absolute, display)
 };
@@ -286,7 +295,9 @@ PreprocessedEffect preprocessEffect(const std::string& rawSource, const std::str
     for (const auto& dir : options.includeDirs)
         roots.push_back({fs::weakly_canonical(fs::absolute(dir, ec), ec), dir});
 
-    RestrictedIncluder includer(roots, displayPath, rootAbs);
+    std::optional<RestrictedIncluder::Root> includeRoot;
+    if (!options.includeRoot.empty()) includeRoot = RestrictedIncluder::Root{fs::weakly_canonical(fs::absolute(options.includeRoot, ec), ec), options.includeRoot};
+    RestrictedIncluder includer(roots, includeRoot, displayPath, rootAbs);
     std::string preamble = "#define FXPORT 1\n";
     for (const auto& [name, value] : options.defines) preamble += "#define " + name + " " + value + "\n";
 

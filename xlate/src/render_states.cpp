@@ -201,7 +201,7 @@ struct ValueReader {
         return std::array<double, 4>{nums[0], nums[1], nums[2], nums[3]};
     }
 
-    // RED | GREEN | BLUE | ALPHA, D3DCOLORWRITEENABLE_*, or a number.
+    // RED | GREEN | BLUE | ALPHA, D3DCOLORWRITEENABLE_*, a number, or MonoGame's true/false/None.
     std::optional<int> colorMask() const {
         int mask = 0;
         bool any = false;
@@ -216,7 +216,8 @@ struct ValueReader {
             else if (n == "green") mask |= 2;
             else if (n == "blue") mask |= 4;
             else if (n == "alpha") mask |= 8;
-            else if (n == "all") mask |= 15;
+            else if (n == "all" || n == "true") mask |= 15;  // MonoGame's dialect: true / false / None
+            else if (n == "none" || n == "false") mask |= 0;
             else if (t.kind == Token::Kind::Number) mask |= static_cast<int>(std::strtol(t.text.c_str(), nullptr, 0));
             else return std::nullopt;
             any = true;
@@ -340,7 +341,7 @@ const char* describe(ValueKind kind) {
     case ValueKind::StencilOp: return "a stencil operation (Keep, Zero, Replace, IncrSat, DecrSat, Invert, Incr, Decr)";
     case ValueKind::Cull: return "a cull mode (None, CW, CCW)";
     case ValueKind::Fill: return "a fill mode (Point, Wireframe, Solid)";
-    case ValueKind::ColorMask: return "a colour mask (RED | GREEN | BLUE | ALPHA or a number)";
+    case ValueKind::ColorMask: return "a colour mask (RED | GREEN | BLUE | ALPHA, All, None, true, false or a number)";
     case ValueKind::Vector4: return "a float4";
     }
     return "valid";

@@ -51,6 +51,7 @@ double millisecondsSince(Clock::time_point start) {
 xlate::CompileOptions compileOptions(const EffectOptions& options, std::vector<std::string> techniques) {
     xlate::CompileOptions o;
     o.includeDirs = options.includeDirs;
+    o.includeRoot = options.includeRoot;
     o.defines = options.defines;
     o.techniques = techniques.empty() ? options.techniques : std::move(techniques);
     o.useCache = options.useCache;

@@ -21,6 +21,10 @@ struct CompileOptions {
     // Extra folders `#include` may read from. The effect's own folder is always allowed; nothing
     // outside these folders is ever read (an include that escapes them is an error).
     std::vector<std::string> includeDirs;
+    // A folder `#include "../Common/x.fxh"` may climb up to (fxc resolves relative to the including
+    // file, also upwards). Empty = the effect's own folder. `fxport check DIR` uses DIR; `--root`.
+    // Files are judged by their real path: a symbolic link leaving the root is outside it.
+    std::string includeRoot;
     // `-D NAME=VALUE` style macros, applied before the source.
     std::vector<std::pair<std::string, std::string>> defines;
     // Compile only these techniques (by name); empty = all. Lets the runtime compile lazily what a
