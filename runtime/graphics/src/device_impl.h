@@ -129,6 +129,29 @@ struct GraphicsDevice::Impl {
     // Everything a draw needs, compared against the shadow. `what` names the draw call for errors.
     void flush(const char* what);
 
+    // --- clears of the bound targets not yet sent to GL (pending_clear.cpp). A clear of the whole
+    // target (the one SetRenderTargets does for DiscardContents, and Clear over a full viewport) is
+    // recorded per channel, a later clear of the same channel replaces it, and it reaches GL when
+    // something needs that channel: colour before any draw or read-back of a bound target, depth and
+    // stencil before a draw that tests them. Leaving a DiscardContents target drops a depth/stencil
+    // clear nothing used (its next binding clears them again and nothing can read them); colour is
+    // always executed (the target may be sampled).
+    struct PendingClear {
+        unsigned options = 0;  // ClearOptions bits still to execute
+        Vector4 color;
+        float depth = 1;
+        int stencil = 0;
+    } pendingClear;
+    bool deferClears = true;  // PresentationParameters::DeferClears and $FXPORT_DEFER_CLEARS
+    ClearStatistics clearStats;
+    void executeClear(const Rectangle& rect, unsigned options, const Vector4& color, float depth, int stencil);
+    void recordClear(unsigned options, const Vector4& color, float depth, int stencil);
+    void resolvePendingClear(unsigned options);           // executes the pending part within `options`
+    void resolvePendingClearBeforeDraw(const fxport::DepthStencilState& state);
+    void resolvePendingClearBeforeRead(const Texture* texture);
+    void leaveBoundTargets();                               // before SetRenderTargets changes them
+    fxport::RenderTargetUsage boundUsage() const;           // of the bound targets (the first one's, or the back buffer's)
+
     // GL object bookkeeping: every create/delete goes through these so liveGpuObjects() is exact.
     GLuint createTexture(GLenum target);
     void deleteTexture(GLuint& name);

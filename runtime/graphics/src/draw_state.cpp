@@ -45,6 +45,7 @@ void GraphicsDevice::Impl::flush(const char* what) {
         throw InvalidOperation(std::string(what) +
                                ": no effect pass is applied (call effect.CurrentTechnique->Passes[i].Apply() first)");
     if (boundFramebuffer == 0) bindTargets();
+    resolvePendingClearBeforeDraw(device.DepthStencilState);
     applyBlend(device.BlendState);
     applyDepthStencil(device.DepthStencilState);
     applyRasterizer(device.RasterizerState);

@@ -106,6 +106,8 @@ GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters)
     context_ = platform::GraphicsContext::create(desc);
     impl_ = std::make_unique<Impl>(*this);
     liveDevices().push_back(this);
+    const char* defer = std::getenv("FXPORT_DEFER_CLEARS");
+    impl_->deferClears = parameters_.DeferClears && !(defer && std::string(defer) == "0");
 
     // The D3D conventions (docs/DESIGN.md): NDC z in [0,1], and window y from the top row so
     // render targets come out top-row-first.
@@ -160,6 +162,8 @@ int GraphicsDevice::maxTextureSize() const {
 
 GpuObjectCounts GraphicsDevice::liveGpuObjects() const { return impl_->live; }
 
+ClearStatistics GraphicsDevice::clearStatistics() const { return impl_->clearStats; }
+
 void GraphicsDevice::finish() { glFinish(); }
 
 // --- render targets
@@ -196,6 +200,7 @@ void GraphicsDevice::SetRenderTargets(const std::vector<RenderTargetBinding>& bi
                                 ": all render targets must have the same size");
         }
     }
+    impl_->leaveBoundTargets();
     std::vector<RenderTargetBinding> previous = impl_->targets;
     impl_->targets = bindings;
     impl_->generateMipsOfUnboundTargets(previous);
@@ -210,6 +215,10 @@ void GraphicsDevice::SetRenderTargets(const std::vector<RenderTargetBinding>& bi
         bindings.empty() ? parameters_.RenderTargetUsage : targetInfo(bindings[0].RenderTarget).usage;
     if (usage == fxport::RenderTargetUsage::DiscardContents)
         Clear(ClearOptions::Target | ClearOptions::DepthBuffer | ClearOptions::Stencil, DiscardColor, 1.0f, 0);
+}
+
+fxport::RenderTargetUsage GraphicsDevice::Impl::boundUsage() const {
+    return targets.empty() ? device.parameters_.RenderTargetUsage : targetInfo(targets[0].RenderTarget).usage;
 }
 
 std::vector<RenderTargetBinding> GraphicsDevice::GetRenderTargets() const { return impl_->targets; }
@@ -324,42 +333,17 @@ void GraphicsDevice::Clear(ClearOptions options, Color color, float depth, int s
 void GraphicsDevice::Clear(ClearOptions options, Vector4 color, float depth, int stencil) {
     Impl& d = *impl_;
     if (d.boundFramebuffer == 0) d.bindTargets();  // the back buffer's FBO was dropped
-    d.applyViewport(Viewport);
-    // D3D9 clears the viewport rectangle, whatever the scissor, write masks and blend say.
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(Viewport.X, Viewport.Y, Viewport.Width, Viewport.Height);
-    unsigned bits = unsigned(options);
-    std::size_t colorTargets = std::max<std::size_t>(1, d.targets.size());
-    if (bits & unsigned(ClearOptions::Target)) {
-        const float c[4] = {color.X, color.Y, color.Z, color.W};
-        for (std::size_t i = 0; i < colorTargets; ++i) {
-            glColorMaski(GLuint(i), GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-            glClearNamedFramebufferfv(d.boundFramebuffer, GL_COLOR, GLint(i), c);
-        }
+    unsigned bits = unsigned(options) & unsigned(ClearOptions::Target | ClearOptions::DepthBuffer | ClearOptions::Stencil);
+    d.clearStats.requested += long((bits & 1u) != 0) + long((bits & 2u) != 0) + long((bits & 4u) != 0);
+    // D3D9 clears the viewport rectangle, whatever the scissor, write masks and blend say; a clear of
+    // the whole target may wait (pending_clear.cpp).
+    bool wholeTarget = Viewport.X == 0 && Viewport.Y == 0 && Viewport.Width == d.targetWidth && Viewport.Height == d.targetHeight;
+    if (d.deferClears && wholeTarget) {
+        d.recordClear(bits, color, depth, stencil);
+        return;
     }
-    bool clearDepth = bits & unsigned(ClearOptions::DepthBuffer);
-    bool clearStencil = bits & unsigned(ClearOptions::Stencil);
-    if (clearDepth) glDepthMask(GL_TRUE);
-    if (clearStencil) glStencilMask(0xff);
-    if (clearDepth && clearStencil) {
-        glClearNamedFramebufferfi(d.boundFramebuffer, GL_DEPTH_STENCIL, 0, depth, stencil);
-    } else if (clearDepth) {
-        glClearNamedFramebufferfv(d.boundFramebuffer, GL_DEPTH, 0, &depth);
-    } else if (clearStencil) {
-        glClearNamedFramebufferiv(d.boundFramebuffer, GL_STENCIL, 0, &stencil);
-    }
-    // Put back what the shadow says GL has.
-    bool force = d.forceAll;
-    d.forceAll = true;
-    fxport::BlendState blend = d.appliedBlend;
-    fxport::DepthStencilState depthStencil = d.appliedDepthStencil;
-    fxport::RasterizerState rasterizer = d.appliedRasterizer;
-    Rectangle scissor = d.appliedScissor;
-    d.applyBlend(blend);
-    d.applyDepthStencil(depthStencil);
-    d.applyRasterizer(rasterizer);
-    d.applyScissor(scissor);
-    d.forceAll = force;
+    d.resolvePendingClear(~0u);
+    d.executeClear(Rectangle(Viewport.X, Viewport.Y, Viewport.Width, Viewport.Height), bits, color, depth, stencil);
 }
 
 // --- draws
@@ -473,6 +457,7 @@ void GraphicsDevice::drawUserIndexed(PrimitiveType type, const void* vertices, s
 void GraphicsDevice::Present() {
     if (context_->platform() == platform::Platform::GLFW) {
         // The back buffer is stored top row first; the window's row 0 is the bottom: flip once here.
+        impl_->resolvePendingClearBeforeRead(impl_->backBuffer.get());
         std::vector<RenderTargetBinding> bound = impl_->targets;
         impl_->targets.clear();
         impl_->bindTargets();

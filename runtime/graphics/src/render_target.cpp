@@ -58,6 +58,7 @@ std::vector<Vector4> RenderTarget2D::GetDataAsVector4() const {
     throwIfDisposed("GetDataAsVector4");
     std::vector<Vector4> texels(std::size_t(Width()) * std::size_t(Height()));
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    device().impl().resolvePendingClearBeforeRead(this);
     glGetTextureImage(name_, 0, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * sizeof(Vector4)), texels.data());
     return texels;
 }
@@ -83,6 +84,7 @@ std::vector<Vector4> RenderTargetCube::GetDataAsVector4(CubeMapFace face) const 
     throwIfDisposed("GetDataAsVector4");
     std::vector<Vector4> texels(std::size_t(Size()) * std::size_t(Size()));
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    device().impl().resolvePendingClearBeforeRead(this);
     glGetTextureSubImage(name_, 0, 0, 0, GLint(face), Size(), Size(), 1, GL_RGBA, GL_FLOAT,
                          GLsizei(texels.size() * sizeof(Vector4)), texels.data());
     return texels;

@@ -76,6 +76,7 @@ void Texture::writeTexels(int face, int level, int x, int y, int w, int h, const
 
 void Texture::readTexels(int face, int level, void* data, std::size_t bytes) const {
     const detail::GlTextureFormat& f = detail::glFormat(format_);
+    device().impl().resolvePendingClearBeforeRead(this);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     if (face < 0) {
         glGetTextureImage(name_, level, f.format, f.type, GLsizei(bytes), data);
@@ -145,6 +146,7 @@ void Texture2D::SaveAsPng(const std::string& path) const {
     // Read back as floats in GL's RGBA expansion, then quantise: one path for every format.
     std::vector<float> texels(std::size_t(width_) * std::size_t(height_) * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    device().impl().resolvePendingClearBeforeRead(this);
     glGetTextureImage(name_, 0, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * sizeof(float)), texels.data());
     std::vector<std::uint8_t> rgba(texels.size());
     for (std::size_t i = 0; i < texels.size(); i += 4) {

@@ -48,6 +48,11 @@ struct PresentationParameters {
     // headless), "glfw" (a window). Empty = $FXPORT_PLATFORM, else osmesa.
     std::string platform;
     bool debug = false;          // GL debug context; driver messages go to stderr
+    // fxport: clears of a whole target are recorded and sent to GL only when a draw or read needs the
+    // channel; a clear replaced by a later one, or a depth/stencil clear of a DiscardContents target
+    // that no draw tested, never runs. The pixels are the same either way; false (or
+    // $FXPORT_DEFER_CLEARS=0) executes every clear at once, as written.
+    bool DeferClears = true;
     std::string windowTitle;     // GLFW only
 };
 
@@ -95,6 +100,14 @@ struct GpuObjectCounts {
     int textures = 0, renderbuffers = 0, buffers = 0, programs = 0, pipelines = 0, framebuffers = 0,
         vertexArrays = 0, queries = 0;
     int total() const { return textures + renderbuffers + buffers + programs + pipelines + framebuffers + vertexArrays + queries; }
+};
+
+// What the device did with the clears it was asked for (PresentationParameters::DeferClears).
+struct ClearStatistics {
+    long requested = 0;  // channel clears asked for (colour, depth, stencil each count; SetRenderTargets' too)
+    long executed = 0;   // channel clears sent to GL
+    long replaced = 0;   // pending channel clears overwritten by a later clear before any use
+    long dropped = 0;    // depth/stencil clears of a DiscardContents target left before any draw tested them
 };
 
 class GraphicsDevice {
@@ -188,6 +201,7 @@ public:
     std::string rendererName() const;
     int maxTextureSize() const;
     GpuObjectCounts liveGpuObjects() const;
+    ClearStatistics clearStatistics() const;
     // Waits until the GPU has finished everything submitted (for timing and tests).
     void finish();
     // fxport drives GL from one thread, and the device created last is the current one. With

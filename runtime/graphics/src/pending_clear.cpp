@@ -1,0 +1,109 @@
+// Clears that wait until something needs them (issue 16): XNA 4 clears a DiscardContents target
+// when it is bound, and ports clear it again right after; D3D drivers fold such clears, GL ones
+// execute both. The device records a clear of the whole target per channel (colour, depth,
+// stencil) and sends it when a draw or a read-back needs that channel, so a clear replaced by the
+// next one, and a depth/stencil clear of a target nothing draws into with depth, cost nothing. The
+// pixels are the same as executing every clear at once (PresentationParameters::DeferClears=false
+// does that; tests compare the two).
+#include <algorithm>
+
+#include "device_impl.h"
+#include "fxport/graphics/render_target.h"
+
+namespace fxport {
+
+namespace {
+constexpr unsigned kColor = unsigned(ClearOptions::Target);
+constexpr unsigned kDepth = unsigned(ClearOptions::DepthBuffer);
+constexpr unsigned kStencil = unsigned(ClearOptions::Stencil);
+long channels(unsigned bits) { return long((bits & kColor) != 0) + long((bits & kDepth) != 0) + long((bits & kStencil) != 0); }
+}  // namespace
+
+void GraphicsDevice::Impl::executeClear(const Rectangle& rect, unsigned options, const Vector4& color, float depth,
+                                        int stencil) {
+    if (options == 0) return;
+    if (boundFramebuffer == 0) bindTargets();
+    clearStats.executed += channels(options);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(rect.X, rect.Y, rect.Width, rect.Height);
+    std::size_t colorTargets = std::max<std::size_t>(1, targets.size());
+    if (options & kColor) {
+        const float c[4] = {color.X, color.Y, color.Z, color.W};
+        for (std::size_t i = 0; i < colorTargets; ++i) {
+            glColorMaski(GLuint(i), GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+            glClearNamedFramebufferfv(boundFramebuffer, GL_COLOR, GLint(i), c);
+        }
+    }
+    bool clearDepth = options & kDepth;
+    bool clearStencil = options & kStencil;
+    if (clearDepth) glDepthMask(GL_TRUE);
+    if (clearStencil) glStencilMask(0xff);
+    if (clearDepth && clearStencil) {
+        glClearNamedFramebufferfi(boundFramebuffer, GL_DEPTH_STENCIL, 0, depth, stencil);
+    } else if (clearDepth) {
+        glClearNamedFramebufferfv(boundFramebuffer, GL_DEPTH, 0, &depth);
+    } else if (clearStencil) {
+        glClearNamedFramebufferiv(boundFramebuffer, GL_STENCIL, 0, &stencil);
+    }
+    // Put back what the shadow says GL has.
+    bool force = forceAll;
+    forceAll = true;
+    fxport::BlendState blend = appliedBlend;
+    fxport::DepthStencilState depthStencil = appliedDepthStencil;
+    fxport::RasterizerState rasterizer = appliedRasterizer;
+    Rectangle scissor = appliedScissor;
+    applyBlend(blend);
+    applyDepthStencil(depthStencil);
+    applyRasterizer(rasterizer);
+    applyScissor(scissor);
+    forceAll = force;
+}
+
+void GraphicsDevice::Impl::recordClear(unsigned options, const Vector4& color, float depth, int stencil) {
+    clearStats.replaced += channels(pendingClear.options & options);
+    pendingClear.options |= options;
+    if (options & kColor) pendingClear.color = color;
+    if (options & kDepth) pendingClear.depth = depth;
+    if (options & kStencil) pendingClear.stencil = stencil;
+}
+
+void GraphicsDevice::Impl::resolvePendingClear(unsigned options) {
+    unsigned now = pendingClear.options & options;
+    if (now == 0) return;
+    pendingClear.options &= ~now;
+    executeClear(Rectangle(0, 0, targetWidth, targetHeight), now, pendingClear.color, pendingClear.depth,
+                 pendingClear.stencil);
+}
+
+void GraphicsDevice::Impl::resolvePendingClearBeforeDraw(const fxport::DepthStencilState& state) {
+    if (pendingClear.options == 0) return;
+    // A depth test reads the depth buffer, a stencil test the stencil buffer; writes need a test on
+    // (D3D writes depth only where the depth test is enabled). D24S8 clears both in one call, so a
+    // draw that needs either resolves both.
+    unsigned needed = kColor;
+    if (state.DepthBufferEnable || state.StencilEnable) needed |= kDepth | kStencil;
+    resolvePendingClear(needed);
+}
+
+void GraphicsDevice::Impl::resolvePendingClearBeforeRead(const Texture* texture) {
+    if (!(pendingClear.options & kColor)) return;
+    bool bound = targets.empty() ? texture == backBuffer.get()
+                                 : std::any_of(targets.begin(), targets.end(),
+                                               [&](const RenderTargetBinding& b) { return b.RenderTarget == texture; });
+    if (bound) resolvePendingClear(kColor);
+}
+
+void GraphicsDevice::Impl::leaveBoundTargets() {
+    resolvePendingClear(kColor);  // a render target is read as a texture after it is unbound
+    if (pendingClear.options == 0) return;
+    if (boundUsage() == fxport::RenderTargetUsage::DiscardContents) {
+        // Nothing tested this depth/stencil buffer since the clear, nothing can read it, and binding
+        // the target again clears it again.
+        clearStats.dropped += channels(pendingClear.options);
+        pendingClear.options = 0;
+        return;
+    }
+    resolvePendingClear(~0u);
+}
+
+}  // namespace fxport

@@ -1,0 +1,142 @@
+// Clears that wait until needed (runtime/graphics/src/pending_clear.cpp): the pixels are those of
+// executing every clear at once, and the statistics show what was saved. Each case runs on a
+// device that defers and on one that does not (PresentationParameters::DeferClears), and the
+// pixels of the two are compared with the value the clears and draws must give.
+#include <gtest/gtest.h>
+
+#include "runtime_test_support.h"
+
+namespace fxport {
+namespace {
+
+using test::drawQuad;
+using test::readFloats;
+using test::runtimeFixture;
+
+struct Device {
+    explicit Device(bool defer) {
+        PresentationParameters p;
+        p.BackBufferWidth = 8;
+        p.BackBufferHeight = 4;
+        p.DeferClears = defer;
+        device = std::make_unique<GraphicsDevice>(p);
+        effect = std::make_unique<Effect>(*device, runtimeFixture("Conventions.fx"));
+        effect->CurrentTechnique = effect->Techniques["SolidColor"];
+        device->BlendState = BlendState::Opaque;
+        device->RasterizerState = RasterizerState::CullNone;
+    }
+    void draw(Vector4 color, const DepthStencilState& depth, float z = 0.5f) {
+        effect->Parameters["Color"].SetValue(color);
+        device->DepthStencilState = depth;
+        effect->CurrentTechnique->Passes[0].Apply();
+        drawQuad(*device, z);
+    }
+    std::unique_ptr<GraphicsDevice> device;
+    std::unique_ptr<Effect> effect;
+};
+
+std::vector<float> pixel(const std::vector<float>& texels, int index) {
+    return {texels[std::size_t(index) * 4], texels[std::size_t(index) * 4 + 1], texels[std::size_t(index) * 4 + 2],
+            texels[std::size_t(index) * 4 + 3]};
+}
+
+// The bind clear of a DiscardContents target followed by the port's own Clear: one colour clear
+// reaches GL, and a target nothing draws into with depth never has its depth cleared.
+TEST(DeferredClears, ClearAfterBindReplacesTheBindClear) {
+    for (bool defer : {true, false}) {
+        SCOPED_TRACE(defer ? "deferred" : "immediate");
+        Device d(defer);
+        RenderTarget2D target(*d.device, 8, 4, false, SurfaceFormat::Vector4, DepthFormat::Depth24Stencil8);
+        ClearStatistics before = d.device->clearStatistics();
+        d.device->SetRenderTarget(target);
+        d.device->Clear(Color(0, 0, 255, 255));
+        d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+        std::vector<float> texels = readFloats(target);
+        for (int i = 0; i < 32; ++i) EXPECT_EQ(pixel(texels, i), (std::vector<float>{0, 0, 1, 1})) << "texel " << i;
+        ClearStatistics after = d.device->clearStatistics();
+        // Asked: binding the target (colour, depth, stencil), the port's Clear (the same), binding
+        // the back buffer again (XNA clears a DiscardContents back buffer too).
+        EXPECT_EQ(after.requested - before.requested, 9);
+        if (defer) {
+            // Sent to GL: the back buffer's pending colour when it was left, and the Clear's colour
+            // when the target was left; the back buffer's new bind clear is still pending.
+            EXPECT_EQ(after.executed - before.executed, 2);
+            EXPECT_EQ(after.replaced - before.replaced, 3);  // the target's bind clear, by the Clear
+            EXPECT_EQ(after.dropped - before.dropped, 4);   // depth+stencil of the back buffer, then of the target
+        } else {
+            EXPECT_EQ(after.executed - before.executed, 9);
+            EXPECT_EQ(after.replaced + after.dropped, 0);
+        }
+    }
+}
+
+// A depth-tested draw after the bind sees the depth clear: the far quad drawn second loses to the
+// near one only if depth was cleared to 1 first and written by the near one.
+TEST(DeferredClears, DepthTestedDrawSeesThePendingDepthClear) {
+    for (bool defer : {true, false}) {
+        SCOPED_TRACE(defer ? "deferred" : "immediate");
+        Device d(defer);
+        RenderTarget2D target(*d.device, 8, 4, false, SurfaceFormat::Vector4, DepthFormat::Depth24Stencil8);
+        d.device->SetRenderTarget(target);
+        d.draw(Vector4(1, 0, 0, 1), DepthStencilState::None);      // colour only: depth stays pending
+        d.draw(Vector4(0, 1, 0, 1), DepthStencilState::Default, 0.25f);  // needs depth = 1 to pass
+        d.draw(Vector4(0, 0, 1, 1), DepthStencilState::Default, 0.75f);  // behind: rejected
+        d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+        std::vector<float> texels = readFloats(target);
+        for (int i = 0; i < 32; ++i) EXPECT_EQ(pixel(texels, i), (std::vector<float>{0, 1, 0, 1})) << "texel " << i;
+    }
+}
+
+// A clear of part of the target (a smaller viewport) executes at once after what is pending.
+TEST(DeferredClears, ViewportClearAfterPendingWholeClear) {
+    for (bool defer : {true, false}) {
+        SCOPED_TRACE(defer ? "deferred" : "immediate");
+        Device d(defer);
+        RenderTarget2D target(*d.device, 8, 4, false, SurfaceFormat::Vector4);
+        d.device->SetRenderTarget(target);
+        d.device->Clear(Color(255, 0, 0, 255));
+        d.device->Viewport = Viewport(2, 1, 3, 2);
+        d.device->Clear(Color(0, 255, 0, 255));
+        d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+        std::vector<float> texels = readFloats(target);
+        for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < 8; ++x) {
+                bool inside = x >= 2 && x < 5 && y >= 1 && y < 3;
+                EXPECT_EQ(pixel(texels, y * 8 + x), (std::vector<float>{inside ? 0.f : 1.f, inside ? 1.f : 0.f, 0, 1}))
+                    << x << "," << y;
+            }
+    }
+}
+
+// PreserveContents: a depth clear nobody used is still executed when the target is left, since the
+// next binding keeps the buffer: a later depth-tested draw behind 0.5 must fail against the
+// cleared-and-then-written value.
+TEST(DeferredClears, PreserveContentsKeepsDepthClears) {
+    for (bool defer : {true, false}) {
+        SCOPED_TRACE(defer ? "deferred" : "immediate");
+        Device d(defer);
+        RenderTarget2D target(*d.device, 8, 4, false, SurfaceFormat::Vector4, DepthFormat::Depth24Stencil8, 0,
+                              RenderTargetUsage::PreserveContents);
+        d.device->SetRenderTarget(target);
+        d.device->Clear(ClearOptions::Target | ClearOptions::DepthBuffer, Vector4(0, 0, 0, 1), 0.5f, 0);
+        d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+        d.device->SetRenderTarget(target);
+        d.draw(Vector4(1, 1, 1, 1), DepthStencilState::Default, 0.75f);  // behind the cleared 0.5: rejected
+        d.draw(Vector4(1, 0, 1, 1), DepthStencilState::Default, 0.25f);  // in front: drawn
+        d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+        std::vector<float> texels = readFloats(target);
+        for (int i = 0; i < 32; ++i) EXPECT_EQ(pixel(texels, i), (std::vector<float>{1, 0, 1, 1})) << "texel " << i;
+    }
+}
+
+// Reading the bound back buffer sees a pending clear.
+TEST(DeferredClears, BackBufferReadSeesPendingClear) {
+    Device d(true);
+    d.device->Clear(Color(10, 20, 30, 255));
+    std::vector<Color> pixels = d.device->GetBackBufferData();
+    ASSERT_EQ(pixels.size(), 32u);
+    for (const Color& c : pixels) EXPECT_TRUE(c.R == 10 && c.G == 20 && c.B == 30 && c.A == 255);
+}
+
+}  // namespace
+}  // namespace fxport
