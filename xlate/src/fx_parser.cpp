@@ -805,6 +805,7 @@ FxShaderExpr parseShaderExpr(const EffectSyntax& syntax, TokenSpan span) {
     }
     if (iequals(first.text, "asm")) {
         e.kind = FxShaderExpr::Kind::Asm;
+        if (span.end >= span.begin + 3 && t(span.begin + 1).is("{") && t(span.end - 1).is("}")) e.asmBlock = {span.begin + 1, span.end};
         return e;
     }
     if (iequals(first.text, "ConstructGSWithSO") || iequals(first.text, "ConstructGSWithSOExt")) {
