@@ -340,9 +340,8 @@ void Translator::instruction(const AsmInstruction& ins) {
     const auto& o = ins.operands;
     auto binary = [&](const char* fmt) {
         if (!expectOperands(3)) return;
-        std::string a = source(o[1]), b = source(o[2]), r = fmt;
-        r.replace(r.find("A"), 1, a);
-        r.replace(r.find("B"), 1, b);
+        std::string a = source(o[1]), b = source(o[2]), r;
+        for (const char* c = fmt; *c; ++c) r += *c == '$' ? (*++c == '0' ? a : b) : std::string(1, *c);
         write(o[0], r);
     };
     if (op == "dcl") return declaration(ins);
@@ -366,17 +365,17 @@ void Translator::instruction(const AsmInstruction& ins) {
         }
         return write(o[0], v);
     }
-    if (op == "add") return binary("(A + B)");
-    if (op == "sub") return binary("(A - B)");
-    if (op == "mul") return binary("(A * B)");
-    if (op == "min") return binary("min(A, B)");
-    if (op == "max") return binary("max(A, B)");
-    if (op == "slt") return binary("((float4)(A < B))");
-    if (op == "sge") return binary("((float4)(A >= B))");
-    if (op == "dp3") return binary("((float4)dot((A).xyz, (B).xyz))");
-    if (op == "dp4") return binary("((float4)dot(A, B))");
-    if (op == "crs") return binary("float4(cross((A).xyz, (B).xyz), 0)");
-    if (op == "dst") return binary("float4(1.0, (A).y * (B).y, (A).z, (B).w)");
+    if (op == "add") return binary("($0 + $1)");
+    if (op == "sub") return binary("($0 - $1)");
+    if (op == "mul") return binary("($0 * $1)");
+    if (op == "min") return binary("min($0, $1)");
+    if (op == "max") return binary("max($0, $1)");
+    if (op == "slt") return binary("((float4)($0 < $1))");
+    if (op == "sge") return binary("((float4)($0 >= $1))");
+    if (op == "dp3") return binary("((float4)dot(($0).xyz, ($1).xyz))");
+    if (op == "dp4") return binary("((float4)dot($0, $1))");
+    if (op == "crs") return binary("float4(cross(($0).xyz, ($1).xyz), 0)");
+    if (op == "dst") return binary("float4(1.0, ($0).y * ($1).y, ($0).z, ($1).w)");
     if (op == "mad") {
         if (!expectOperands(4)) return;
         return write(o[0], "(" + source(o[1]) + " * " + source(o[2]) + " + " + source(o[3]) + ")");
