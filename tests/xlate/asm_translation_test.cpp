@@ -174,6 +174,23 @@ TEST(AsmTranslation, UnboundConstantIsAWarningAtItsLine) {
     EXPECT_NE(d->message.find("c7"), std::string::npos) << d->message;
 }
 
+// `;` starts a comment in shader assembly; an apostrophe there must not reach the preprocessor
+// as an unclosed character literal.
+TEST(AsmTranslation, SemicolonCommentsMayHoldQuotes) {
+    CompiledEffect e = compileEffectSource("float4 VS(float4 p : POSITION) : POSITION { return p; }\n"
+                                           "technique T { pass P {\n"
+                                           "  VertexShader = compile vs_2_0 VS();\n"
+                                           "  PixelShader = asm {\n"
+                                           "    ps_1_1          ; it's the \"version\" (don't care)\n"
+                                           "    def c0, 1.0f, 0.5f, -0.25, 1e-1\n"
+                                           "    mov r0, c0      ; copy\n"
+                                           "  };\n"
+                                           "} }\n",
+                                           "quotes.fx", noCache());
+    EXPECT_FALSE(e.hasErrors());
+    EXPECT_EQ(e.shaders.size(), 2u);
+}
+
 TEST(AsmTranslation, BadConstantBindingNamesTheState) {
     auto ds = errorsOf("struct S { float4 a; };\nS s;\n"
                        "technique T { pass P {\n"

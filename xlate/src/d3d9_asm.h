@@ -70,6 +70,10 @@ struct AsmProgram {
 bool parseAsmProgram(const std::string& text, int firstLine, ShaderStage expected, const SourceMap& map,
                      std::vector<Diagnostic>& diagnostics, AsmProgram& out);
 
+// The source with every `;` comment inside an asm block turned into spaces (newlines kept). Run
+// before the preprocessor, which would otherwise choke on `; it's` (an unclosed character literal).
+std::string blankAsmLineComments(const std::string& source);
+
 // ---- translation ----------------------------------------------------------------------------
 
 struct AsmBindings {

@@ -254,6 +254,72 @@ private:
 
 }  // namespace
 
+std::string blankAsmLineComments(const std::string& source) {
+    std::string out = source;
+    enum class In { Code, LineComment, BlockComment, String } state = In::Code;
+    int asmDepth = 0;          // > 0 inside the braces of an asm block
+    bool afterAsmKeyword = false;
+    for (size_t i = 0; i < out.size(); ++i) {
+        char c = out[i];
+        char next = i + 1 < out.size() ? out[i + 1] : '\0';
+        switch (state) {
+        case In::LineComment:
+            if (c == '\n') state = In::Code;
+            continue;
+        case In::BlockComment:
+            if (c == '*' && next == '/') {
+                state = In::Code;
+                ++i;
+            }
+            continue;
+        case In::String:
+            if (c == '\\') ++i;
+            else if (c == '"' || c == '\n') state = In::Code;
+            continue;
+        case In::Code: break;
+        }
+        if (c == '/' && next == '/') {
+            state = In::LineComment;
+            ++i;
+            continue;
+        }
+        if (c == '/' && next == '*') {
+            state = In::BlockComment;
+            ++i;
+            continue;
+        }
+        if (asmDepth > 0) {
+            if (c == ';') {
+                while (i < out.size() && out[i] != '\n') out[i++] = ' ';
+                --i;
+            } else if (c == '{') {
+                ++asmDepth;
+            } else if (c == '}') {
+                --asmDepth;
+            }
+            continue;
+        }
+        if (c == '"') {
+            state = In::String;
+            continue;
+        }
+        bool wordStart = i == 0 || !(std::isalnum(static_cast<unsigned char>(out[i - 1])) || out[i - 1] == '_');
+        if (wordStart && (c == 'a' || c == 'A') && i + 3 <= out.size() && iequals(std::string_view(out).substr(i, 3), "asm") &&
+            !(i + 3 < out.size() && (std::isalnum(static_cast<unsigned char>(out[i + 3])) || out[i + 3] == '_'))) {
+            afterAsmKeyword = true;
+            i += 2;
+            continue;
+        }
+        if (afterAsmKeyword && c == '{') {
+            asmDepth = 1;
+            afterAsmKeyword = false;
+        } else if (!std::isspace(static_cast<unsigned char>(c))) {
+            afterAsmKeyword = false;
+        }
+    }
+    return out;
+}
+
 bool parseAsmProgram(const std::string& text, int firstLine, ShaderStage expected, const SourceMap& map,
                      std::vector<Diagnostic>& diagnostics, AsmProgram& out) {
     // `;` starts a comment to the end of the line in shader assembly (// and /* */ are gone already).

@@ -27,7 +27,7 @@ namespace fs = std::filesystem;
 
 namespace fxport::xlate {
 
-const char* compilerVersion() { return "fxport-xlate-2"; }
+const char* compilerVersion() { return "fxport-xlate-3"; }  // 3: asm { } blocks translate
 
 namespace {
 

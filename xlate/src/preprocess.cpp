@@ -7,6 +7,7 @@
 #include <map>
 #include <regex>
 
+#include "d3d9_asm.h"
 #include "glslang_process.h"
 #include "text_util.h"
 
@@ -229,7 +230,7 @@ private:
         for (auto& path : looked) dependencies.push_back({std::move(path), {}});
         dependencies.push_back({canonical.string(), contentHash(*text)});
         loaded.push_back({display, *text});
-        auto* owned = new std::string(std::move(*text));
+        auto* owned = new std::string(blankAsmLineComments(*text));
         return new IncludeResult(display, owned->data(), owned->size(), owned);
     }
 
@@ -257,9 +258,10 @@ PreprocessedEffect preprocessEffect(const std::string& source, const std::string
     for (const auto& [name, value] : options.defines) preamble += "#define " + name + " " + value + "\n";
 
     glslang::TShader shader(EShLangFragment);
-    const char* text = source.c_str();
+    const std::string cleaned = blankAsmLineComments(source);
+    const char* text = cleaned.c_str();
     const char* name = displayPath.c_str();
-    int length = static_cast<int>(source.size());
+    int length = static_cast<int>(cleaned.size());
     shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
     shader.setEnvInput(glslang::EShSourceHlsl, EShLangFragment, glslang::EShClientOpenGL, 100);
     shader.setPreamble(preamble.c_str());
