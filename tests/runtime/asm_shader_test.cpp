@@ -182,5 +182,50 @@ TEST_F(AsmShaders, Vs11WithPs20) {
         2e-3);
 }
 
+// vs_2_0 registers filled from pass states (a macro of them, repeated per technique): a row_major
+// matrix (rows in c0..c3), a float4x3 (column_major: its three columns in c4..c6), an array read
+// through mova + c[a0.x + 8], literal constants; lit, dst, sincos, expp, logp. Each technique's HLSL
+// pixel shader shows one output; vertex results are interpolated over each triangle.
+TEST_F(AsmShaders, Vs20RegisterBindingsAndMacros) {
+    Effect effect(device, asmFixture("AsmVs20Registers.fx"));
+    // row_major: register i holds row i, so the shader computes M * p; the host sets the transpose
+    // of XNA's row-vector matrix, as D3D9 code for row_major constants did.
+    effect.Parameters["ViewProj"].SetValueTranspose(Matrix::CreateScale(2, 2, 1) * Matrix::CreateTranslation(-1, -1, 0));
+    Matrix world = Matrix::Identity;
+    world.M13 = 0.5f;  // r0.z = 0.5 x: a transposed upload would move the quad instead
+    effect.Parameters["World"].SetValue(world);
+    const std::vector<Vector4> palette = {Vector4(0.1f, 0.2f, 0.3f, 0.4f), Vector4(0.9f, 0.9f, 0.9f, 0.9f), Vector4(0.8f, 0.6f, 0.4f, 0.2f)};
+    effect.Parameters["Palette"].SetValue(palette);
+    RenderTarget2D target(device, kSize, kSize, false, SurfaceFormat::Vector4);
+    device.SetRenderTarget(target);
+
+    auto draw = [&](const char* technique) {
+        device.Clear(Color::Black);
+        effect.CurrentTechnique = effect.Techniques[technique];
+        effect.CurrentTechnique->Passes[0].Apply();
+        drawUnitQuad(device);
+    };
+    // Per-vertex values at texture coordinate (u, v); the position is (u, 1 - v, 0, 1).
+    draw("OutWorld");
+    expectPixels(target, [](double u, double v) { return interpolate([](double a, double b) { return V4{a, 1 - b, 0.5 * a, 1}; }, u, v); }, 2e-3);
+    draw("OutDst");
+    expectPixels(target, [](double u, double v) { return interpolate([](double, double b) { return V4{1, 2 * b, 0, 1}; }, u, v); }, 2e-3);
+    draw("OutLit");
+    auto lit = [](double a, double b) {
+        double x = a - 0.25, y = b;
+        return V4{1, std::max(x, 0.0), x > 0 && y > 0 ? std::pow(y, 16.0) : 0.0, 1};
+    };
+    expectPixels(target, [&](double u, double v) { return interpolate(lit, u, v); }, 2e-3);
+    draw("OutSinCos");
+    auto trig = [](double a, double b) { return V4{std::cos(3 * b), std::sin(3 * b), std::exp2(a), 4.0}; };
+    expectPixels(target, [&](double u, double v) { return interpolate(trig, u, v); }, 2e-3);
+    draw("OutPalette");
+    auto pal = [&](double a, double) {
+        const Vector4& p = palette[std::size_t(std::floor(2 * a + 0.5))];  // mova rounds 2u to the nearest
+        return V4{p.X, p.Y, p.Z, p.W};
+    };
+    expectPixels(target, [&](double u, double v) { return interpolate(pal, u, v); }, 2e-3);
+}
+
 }  // namespace
 }  // namespace fxport
