@@ -191,6 +191,23 @@ TEST(AsmTranslation, SemicolonCommentsMayHoldQuotes) {
     EXPECT_EQ(e.shaders.size(), 2u);
 }
 
+// DX8-era spellings met in public effects: `c[1]` for c1, a shader variable named as `<PS>`.
+TEST(AsmTranslation, Dx8Spellings) {
+    CompiledEffect e = compileEffectSource("float4 Color;\n"
+                                           "PixelShader PS = asm { ps.1.1 mov r0, c[1] };\n"
+                                           "technique T { pass P {\n"
+                                           "  VertexShader = asm { vs.1.1 dcl_position v0 mov oPos, v0 mov oD0, c[2] };\n"
+                                           "  VertexShaderConstant[2] = <Color>;\n"
+                                           "  PixelShaderConstant[1] = <Color>;\n"
+                                           "  PixelShader = <PS>;\n"
+                                           "} }\n",
+                                           "dx8.fx", noCache());
+    ASSERT_FALSE(e.hasErrors());
+    const Pass& p = e.techniques.at(0).passes.at(0);
+    EXPECT_TRUE(reads(e, shaderOf(e, p.pixelShader), "Color"));
+    EXPECT_TRUE(reads(e, shaderOf(e, p.vertexShader), "Color"));
+}
+
 TEST(AsmTranslation, BadConstantBindingNamesTheState) {
     auto ds = errorsOf("struct S { float4 a; };\nS s;\n"
                        "technique T { pass P {\n"

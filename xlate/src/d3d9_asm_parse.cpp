@@ -231,13 +231,12 @@ private:
                 } else if (k.kind == Token::Kind::Number) {
                     offset += sign * std::atoi(k.text.c_str());
                 } else {
-                    return fail("relative addressing takes a0.x and a number, not '" + k.text + "'", k);
+                    return fail("a register index takes a0.x and numbers, not '" + k.text + "'", k);
                 }
                 ++pos_;
             }
             ++pos_;
-            if (!sawAddress) return fail("a relative address needs the address register a0", open);
-            o.reg.relative = true;
+            o.reg.relative = sawAddress;  // c[2] (DX8 spelling) is just c2
             o.reg.index = offset;
         }
         if (o.reg.index < 0) return fail("register '" + r.text + "' has no number", r);
