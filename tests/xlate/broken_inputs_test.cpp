@@ -92,7 +92,7 @@ std::vector<BrokenCase> cases() {
         {"BadProfile", kDir + "bad_profile.fx", diag::kBadProfile, "bad_profile.fx", 9},
         {"HostDefinedProfileMacroMissing", kDir + "host_profile_macro.fx", diag::kBadProfile, "host_profile_macro.fx", 9},
         {"ProfileStageMismatch", kDir + "profile_stage_mismatch.fx", diag::kBadProfile, "profile_stage_mismatch.fx", 9},
-        {"AsmPass", kDir + "asm_pass.fx", diag::kUnsupported, "asm_pass.fx", 9},
+        {"AsmUntranslatedInstruction", kDir + "asm_pass.fx", diag::kUnsupported, "asm_pass.fx", 10},
         {"UnknownShaderVariable", kDir + "unknown_shader_variable.fx", diag::kUnknownShader, "unknown_shader_variable.fx", 10},
         {"UniformParameterWithoutValue", kDir + "uniform_without_value.fx", diag::kBadEntrySignature, "uniform_without_value.fx", 4},
         {"PixelShaderWithoutColor", kDir + "ps_without_color.fx", diag::kBadEntrySignature, "ps_without_color.fx", 4},

@@ -10,7 +10,9 @@
 #include <map>
 #include <set>
 
+#include "asm_pass_bindings.h"
 #include "constant_eval.h"
+#include "d3d9_asm.h"
 #include "effect_cache.h"
 #include "entry_wrapper.h"
 #include "fx_rewrite.h"
@@ -27,7 +29,7 @@ namespace fs = std::filesystem;
 
 namespace fxport::xlate {
 
-const char* compilerVersion() { return "fxport-xlate-2"; }
+const char* compilerVersion() { return "fxport-xlate-3"; }  // 3: asm { } blocks translate
 
 namespace {
 
@@ -75,7 +77,7 @@ struct ShaderKey {
 
 class EffectBuilder {
 public:
-    EffectBuilder(const PreprocessedEffect& pre, const EffectSyntax& syntax, const RewrittenEffect& rewritten,
+    EffectBuilder(const PreprocessedEffect& pre, const EffectSyntax& syntax, RewrittenEffect& rewritten,
                   const CompileOptions& options, CompiledEffect& effect)
         : pre_(pre), syntax_(syntax), rewritten_(rewritten), options_(options), effect_(effect) {
         baseLines_ = static_cast<int>(std::count(rewritten.hlsl.begin(), rewritten.hlsl.end(), '\n')) + 1;
@@ -88,7 +90,7 @@ public:
 private:
     const PreprocessedEffect& pre_;
     const EffectSyntax& syntax_;
-    const RewrittenEffect& rewritten_;
+    RewrittenEffect& rewritten_;  // asm shaders add their texture stages' samplers
     const CompileOptions& options_;
     CompiledEffect& effect_;
     int baseLines_ = 0;
@@ -96,6 +98,8 @@ private:
     std::map<int, GlslShader> reflections_;
     VaryingLocations varyings_;
     bool passHasGeometryShader_ = false;  // of the pass being built
+    AsmPassBindings passAsm_;             // of the pass being built: what its asm shaders' registers hold
+    int asmFunctions_ = 0;
 
     Diagnostic at(Severity s, const char* id, const std::string& message, size_t token) const {
         const Token& t = syntax_.tokens[std::min(token, syntax_.tokens.size() - 1)];
@@ -106,6 +110,12 @@ private:
     }
 
     int compileShader(const FxShaderExpr& expr, ShaderStage expected, size_t blameToken);
+    int compileAsmShader(const FxShaderExpr& expr, ShaderStage expected);
+    bool isAsmShader(const FxShaderExpr& expr) const;
+    // glslang + SPIRV-Cross + reflection of one shader; `source` is the whole HLSL to compile.
+    int emitShader(const ShaderKey& key, const ShaderProfile& profile, const FxShaderExpr& expr, const std::string& displayEntry,
+                   const std::string& arguments, const std::string& source, const std::string& entryName,
+                   const EntryWrapper& wrapper, bool dx9Compatible);
     bool resolveShader(const FxShaderExpr& expr, ShaderStage stage, ShaderChoice& choice, size_t blameToken);
     bool buildSelector(TokenSpan span, std::vector<SelectorOp>& ops, size_t blameToken);
     int parameterIndex(const std::string& name) const {
@@ -283,24 +293,94 @@ int EffectBuilder::compileShader(const FxShaderExpr& expr, ShaderStage expected,
         }
         entryName = kWrapperEntry;
     }
+    std::string source;
+    if (!options_.skipShaders) {
+        source = expected == ShaderStage::Geometry ? rewritten_.hlslForGeometryShader(expr.entry) : rewritten_.hlsl;
+        if (wrapped) source += wrapper.code;
+    }
+    return emitShader(key, *profile, expr, expr.entry, expr.arguments, source, entryName, wrapper, rewritten_.dx9Samplers);
+}
+
+bool EffectBuilder::isAsmShader(const FxShaderExpr& expr) const {
+    if (expr.kind == FxShaderExpr::Kind::Asm) return true;
+    if (expr.kind != FxShaderExpr::Kind::Variable && expr.kind != FxShaderExpr::Kind::ArrayElement) return false;
+    for (const auto& v : syntax_.shaderVariables)
+        if (v.name == expr.variable)
+            for (const auto& e : v.elements)
+                if (e.kind == FxShaderExpr::Kind::Asm) return true;
+    return false;
+}
+
+// The hook for shader assembly: translate the block to an HLSL function (d3d9_asm.h) with the
+// registers the pass binds, then compile it like any entry point.
+int EffectBuilder::compileAsmShader(const FxShaderExpr& expr, ShaderStage expected) {
+    if (expr.asmBlock.empty()) {
+        error(diag::kSyntax, "'asm' must be followed by the shader assembly in braces: asm { ps_1_1 ... }", expr.token);
+        return -1;
+    }
+    const Token& open = syntax_.tokens[expr.asmBlock.begin];
+    const Token& close = syntax_.tokens[expr.asmBlock.end - 1];
+    std::string text = pre_.text.substr(open.end, close.offset - open.end);
+    AsmProgram program;
+    if (!parseAsmProgram(text, open.line, expected, pre_.map, effect_.diagnostics, program)) return -1;
+    const bool vertex = expected == ShaderStage::Vertex;
+    std::string signature = vertex ? passAsm_.vertexSignature : passAsm_.pixelSignature;
+    if (!vertex)
+        for (const auto& [n, stage] : passAsm_.stages) signature += "s" + std::to_string(n) + ":" + stage.signature;
+    // Shown as the entry point (dumps, `fxport dump`): where the block is.
+    std::string displayEntry = "asm_line" + std::to_string(pre_.map.locate(program.versionLine).line);
+    ShaderKey key{expected, toLower(program.profile.name), displayEntry + "@" + std::to_string(expr.asmBlock.begin), signature,
+                  passHasGeometryShader_};
+    if (auto it = compiled_.find(key); it != compiled_.end()) return it->second;
+    compiled_[key] = -1;
+    std::string function = "fxport_asm" + std::to_string(asmFunctions_++);
+    TranslatedAsm translated = translateAsmProgram(program, function, vertex ? passAsm_.vertex : passAsm_.pixel, pre_.map, effect_.diagnostics);
+    if (!translated.ok) return -1;
+    for (const auto& [n, kind] : translated.samplers) {
+        EffectSampler es;
+        es.name = asmSamplerName(function, n);
+        es.kind = kind;
+        es.unit = n;  // D3D9 texture stage n is GraphicsDevice.Textures[n]
+        if (auto it = passAsm_.stages.find(n); it != passAsm_.stages.end()) {
+            es.textureParameter = it->second.textureParameter;
+            es.state = it->second.state;
+        }
+        rewritten_.samplers.push_back(std::move(es));
+    }
+    EntryWrapper wrapper = buildEntryWrapper(syntax_, translated.entry, program.profile, {}, passHasGeometryShader_);
+    if (!wrapper.error.empty()) {
+        error(diag::kBadEntrySignature, wrapper.error, expr.token);
+        return -1;
+    }
+    std::string source;
+    if (!options_.skipShaders) source = rewritten_.hlsl + translated.code + wrapper.code;
+    FxShaderExpr shown = expr;
+    shown.entry = displayEntry;
+    shown.profile = program.profile.name;
+    return emitShader(key, program.profile, shown, displayEntry, signature, source, kWrapperEntry, wrapper,
+                      rewritten_.dx9Samplers || !translated.samplers.empty());
+}
+
+int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile, const FxShaderExpr& expr, const std::string& displayEntry,
+                              const std::string& arguments, const std::string& source, const std::string& entryName,
+                              const EntryWrapper& wrapper, bool dx9Compatible) {
+    const ShaderStage expected = profile.stage;
     if (options_.skipShaders) {  // the outline: which entry point, not its code
         CompiledShader shader;
-        shader.profile = *profile;
-        shader.entryPoint = expr.entry;
-        shader.arguments = expr.arguments;
+        shader.profile = profile;
+        shader.entryPoint = displayEntry;
+        shader.arguments = arguments;
         shader.needsD3D9PixelOffset = wrapper.usesPixelOffset;
         int index = static_cast<int>(effect_.shaders.size());
         effect_.shaders.push_back(std::move(shader));
         compiled_[key] = index;
         return index;
     }
-    std::string source = expected == ShaderStage::Geometry ? rewritten_.hlslForGeometryShader(expr.entry) : rewritten_.hlsl;
-    if (wrapped) source += wrapper.code;
     HlslToSpirvRequest request;
     request.source = &source;
     request.stage = expected;
     request.entryPoint = entryName;
-    request.dx9Compatible = rewritten_.dx9Samplers;
+    request.dx9Compatible = dx9Compatible;
     SpirvModule spirv = hlslToSpirv(request);
     // A vector passed to a scalar parameter of the effect's own function: fxc uses .x (warning
     // X3206), glslang finds no overload. Compile again with overloads that take vectors there
@@ -354,9 +434,9 @@ int EffectBuilder::compileShader(const FxShaderExpr& expr, ShaderStage expected,
         return -1;
     }
     CompiledShader shader;
-    shader.profile = *profile;
-    shader.entryPoint = expr.entry;
-    shader.arguments = expr.arguments;
+    shader.profile = profile;
+    shader.entryPoint = displayEntry;
+    shader.arguments = arguments;
     shader.glsl = glsl.glsl;
     shader.inputs = glsl.inputs;
     shader.samplers = glsl.samplers;
@@ -396,9 +476,12 @@ bool EffectBuilder::resolveShader(const FxShaderExpr& expr, ShaderStage stage, S
         choice.shaders = {s};
         return true;
     }
-    case FxShaderExpr::Kind::Asm:
-        error(diag::kUnsupported, "shader assembly (asm { ... }) is not supported: rewrite this shader in HLSL", expr.token);
-        return false;
+    case FxShaderExpr::Kind::Asm: {
+        int s = compileAsmShader(expr, stage);
+        if (s < 0) return false;
+        choice.shaders = {s};
+        return true;
+    }
     case FxShaderExpr::Kind::StreamOut:
         error(diag::kUnsupported, "geometry shaders with stream output (ConstructGSWithSO) are not supported", expr.token);
         return false;
@@ -457,7 +540,20 @@ void EffectBuilder::buildTechniques() {
                     parseShaderExpr(syntax_, a.value).kind != FxShaderExpr::Kind::Null)
                     passHasGeometryShader_ = true;
             }
+            bool vertexIsAsm = false, pixelIsAsm = false;
             for (const auto& a : p.assignments) {
+                std::string n = toLower(a.name);
+                if (n != "vertexshader" && n != "pixelshader") continue;
+                (n == "vertexshader" ? vertexIsAsm : pixelIsAsm) |= isAsmShader(parseShaderExpr(syntax_, a.value));
+            }
+            std::vector<bool> consumedByAsm;
+            size_t errorsBefore = effect_.diagnostics.size();
+            passAsm_ = collectAsmPassBindings(p, vertexIsAsm, pixelIsAsm, rewritten_, stateContext, consumedByAsm);
+            for (size_t d = errorsBefore; d < effect_.diagnostics.size(); ++d)
+                if (effect_.diagnostics[d].severity == Severity::Error) pass.valid = false;
+            for (size_t ai = 0; ai < p.assignments.size(); ++ai) {
+                const FxAssignment& a = p.assignments[ai];
+                if (consumedByAsm[ai]) continue;
                 StateResult r = translatePassAssignment(a, stateContext, pass.states);
                 if (r == StateResult::Failed) pass.valid = false;
                 if (r == StateResult::Ignored) fixedFunction = true;

@@ -798,8 +798,8 @@ FxShaderExpr parseShaderExpr(const EffectSyntax& syntax, TokenSpan span) {
     FxShaderExpr e;
     e.token = span.begin;
     auto t = [&](size_t i) -> const Token& { return syntax.tokens[std::min(i, syntax.tokens.size() - 1)]; };
-    // Strip surrounding parentheses: `(VSArray[i])`.
-    while (span.end > span.begin + 1 && t(span.begin).is("(") && t(span.end - 1).is(")")) {
+    // Strip surrounding parentheses: `(VSArray[i])`, and angle brackets: `<PS>` (DX8-era effects).
+    while (span.end > span.begin + 1 && ((t(span.begin).is("(") && t(span.end - 1).is(")")) || (t(span.begin).is("<") && t(span.end - 1).is(">")))) {
         ++span.begin;
         --span.end;
     }
@@ -811,6 +811,7 @@ FxShaderExpr parseShaderExpr(const EffectSyntax& syntax, TokenSpan span) {
     }
     if (iequals(first.text, "asm")) {
         e.kind = FxShaderExpr::Kind::Asm;
+        if (span.end >= span.begin + 3 && t(span.begin + 1).is("{") && t(span.end - 1).is("}")) e.asmBlock = {span.begin + 1, span.end};
         return e;
     }
     if (iequals(first.text, "ConstructGSWithSO") || iequals(first.text, "ConstructGSWithSOExt")) {

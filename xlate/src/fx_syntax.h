@@ -37,6 +37,7 @@ struct FxShaderExpr {
     std::string arguments;  // Compile: literal arguments as written, e.g. "true, 3"
     std::string variable;   // Variable / ArrayElement
     TokenSpan index;        // ArrayElement: the index expression
+    TokenSpan asmBlock;     // Asm: from '{' to '}' of `asm { ... }` (see d3d9_asm.h)
     size_t token = 0;       // for diagnostics
 };
 

@@ -8,6 +8,7 @@
 #include <optional>
 #include <regex>
 
+#include "d3d9_asm.h"
 #include "glslang_process.h"
 #include "text_encoding.h"
 #include "text_util.h"
@@ -268,7 +269,7 @@ private:
         *text = sourceTextAsUtf8(*text);
         prepareSourceText(*text, display, warnings);
         loaded.push_back({display, *text});
-        auto* owned = new std::string(std::move(*text));
+        auto* owned = new std::string(blankAsmLineComments(*text));
         return new IncludeResult(display, owned->data(), owned->size(), owned);
     }
 
@@ -302,9 +303,10 @@ PreprocessedEffect preprocessEffect(const std::string& rawSource, const std::str
     for (const auto& [name, value] : options.defines) preamble += "#define " + name + " " + value + "\n";
 
     glslang::TShader shader(EShLangFragment);
-    const char* text = source.c_str();
+    const std::string cleaned = blankAsmLineComments(source);
+    const char* text = cleaned.c_str();
     const char* name = displayPath.c_str();
-    int length = static_cast<int>(source.size());
+    int length = static_cast<int>(cleaned.size());
     shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
     shader.setEnvInput(glslang::EShSourceHlsl, EShLangFragment, glslang::EShClientOpenGL, 100);
     shader.setPreamble(preamble.c_str());

@@ -1,0 +1,231 @@
+// Shader assembly (asm { } blocks) through the whole pipeline: the effects under
+// tests/fixtures/realworld/asm_sm1 are drawn on the headless device and every pixel is compared
+// with a double-precision CPU evaluation of the same instructions as D3D9 defines them (modifier
+// order, co-issue, ps_1_x's [-1, 1] range, constant registers filled from parameters, matrix
+// columns in consecutive registers, vertex-shader results interpolated over each triangle).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "runtime_test_support.h"
+
+namespace fxport {
+namespace {
+
+using test::readFloats;
+using test::testDevice;
+using V4 = std::array<double, 4>;
+
+constexpr int kSize = 8;  // target and quad: 8x8 pixels, texture 4x4 (2x2 pixels per texel)
+
+std::string asmFixture(const std::string& name) { return std::string(FXPORT_ASM_FIXTURES) + "/" + name; }
+
+double clamp1(double x) { return std::clamp(x, -1.0, 1.0); }
+double sat(double x) { return std::clamp(x, 0.0, 1.0); }
+
+// Texel (tx, ty) of the test texture, as stored (Color, 8 bits per channel).
+Color texel(int tx, int ty) {
+    return Color(std::uint8_t(30 + 60 * tx), std::uint8_t(200 - 40 * ty), std::uint8_t(30 + 70 * ty), std::uint8_t(255 - 80 * tx));
+}
+V4 texelValue(double u, double v) {
+    int tx = std::min(3, int(std::floor(u * 4))), ty = std::min(3, int(std::floor(v * 4)));
+    Color c = texel(tx, ty);
+    return {c.R / 255.0, c.G / 255.0, c.B / 255.0, c.A / 255.0};
+}
+
+std::unique_ptr<Texture2D> makeTexture(GraphicsDevice& device) {
+    auto tex = std::make_unique<Texture2D>(device, 4, 4);
+    std::vector<Color> data;
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x) data.push_back(texel(x, y));
+    tex->SetData(data);
+    return tex;
+}
+
+// Two triangles over the target, position (u, 1 - v) in [0, 1]^2 and texture coordinate (u, v):
+// (0,0) (1,0) (0,1), then (0,1) (1,0) (1,1), as tests/runtime's full-screen quad.
+void drawUnitQuad(GraphicsDevice& device) {
+    auto vertex = [](float u, float v) { return VertexPositionTexture(Vector3(u, 1 - v, 0), Vector2(u, v)); };
+    std::vector<VertexPositionTexture> q = {vertex(0, 0), vertex(1, 0), vertex(0, 1), vertex(0, 1), vertex(1, 0), vertex(1, 1)};
+    device.DrawUserPrimitives(PrimitiveType::TriangleList, q.data(), 0, 2);
+}
+
+// The texture coordinate D3D9 rasterisation gives pixel i: its centre i / size, plus the
+// 1/256-pixel bias fxport's half-pixel fix-up leaves (docs/DESIGN.md, "D3D9 pixel centres").
+double pixelCoordinate(int i) { return (i + 1.0 / 256) / kSize; }
+
+// A vertex-shader output f(u, v) computed at the four corners, interpolated at (u, v) over the
+// triangle of the quad that holds it (the diagonal is u + v = 1).
+template <class F> V4 interpolate(F f, double u, double v) {
+    V4 out{};
+    V4 f00 = f(0, 0), f10 = f(1, 0), f01 = f(0, 1), f11 = f(1, 1);
+    for (int k = 0; k < 4; ++k)
+        out[k] = u + v <= 1 ? (1 - u - v) * f00[k] + u * f10[k] + v * f01[k] : (1 - v) * f10[k] + (u + v - 1) * f11[k] + (1 - u) * f01[k];
+    return out;
+}
+
+class AsmShaders : public ::testing::Test {
+protected:
+    void SetUp() override {
+        device.BlendState = BlendState::Opaque;
+        device.DepthStencilState = DepthStencilState::None;
+        device.RasterizerState = RasterizerState::CullNone;
+    }
+    void TearDown() override {
+        device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+        for (int i = 0; i < kMaxTextureSlots; ++i) device.Textures[i] = nullptr;
+    }
+    template <class Expected> void expectPixels(RenderTarget2D& target, Expected expected, double tolerance) {
+        std::vector<float> px = readFloats(target);
+        int mismatches = 0;
+        for (int y = 0; y < kSize; ++y)
+            for (int x = 0; x < kSize; ++x) {
+                V4 e = expected(pixelCoordinate(x), pixelCoordinate(y));
+                for (int k = 0; k < 4; ++k) {
+                    double got = px[std::size_t((y * kSize + x) * 4 + k)];
+                    if (std::abs(got - e[k]) > tolerance && ++mismatches <= 12)
+                        ADD_FAILURE() << "pixel " << x << "," << y << " channel " << k << ": got " << got << ", expected " << e[k];
+                }
+            }
+        EXPECT_EQ(mismatches, 0);
+    }
+    GraphicsDevice& device = testDevice();
+};
+
+// ps_1_1: tex, texcoord, def, _bx2/_bias/1-/- sources, _x2/_d2/_x4/_sat results, masks, selectors,
+// co-issued pairs reading the register their partner writes, cnd on r0.a, lrp, and constants
+// clamped to ps_1_x's [-1, 1] (Tint.x = 1.5 and Tint.z = -2 read as 1 and -1).
+TEST_F(AsmShaders, Ps11ModifiersCoissueAndRange) {
+    Effect effect(device, asmFixture("AsmPs11Modifiers.fx"));
+    auto tex = makeTexture(device);
+    effect.Parameters["Tex"].SetValue(tex);
+    RenderTarget2D target(device, kSize, kSize, false, SurfaceFormat::Vector4);
+    device.SetRenderTarget(target);
+    device.Clear(Color::Black);
+    effect.CurrentTechnique->Passes[0].Apply();
+    drawUnitQuad(device);
+
+    const V4 c0{clamp1(1.5), 0.5, clamp1(-2.0), 1.0}, c1{0.6, -0.3, 0.9, 0.0}, c2{0.25, 0.5, 0.75, 1.0};
+    expectPixels(
+        target,
+        [&](double u, double v) {
+            V4 t0 = texelValue(u, v);
+            V4 t1{sat(u), sat(v), sat(0.5 * (u + v)), 1.0};
+            V4 v0{u, 1 - v, 0.5, 0.25 + 0.5 * v};
+            V4 r0, r1;
+            for (int k = 0; k < 4; ++k) r0[k] = clamp1(t0[k] * c0[k]);                                       // mul
+            for (int k = 0; k < 4; ++k) r1[k] = clamp1(2 * ((2 * (t1[k] - 0.5)) * (v0[k] - 0.5) + c2[k]));  // mad_x2
+            double dp = clamp1(sat(r1[0] * c1[0] + r1[1] * c1[1] + r1[2] * c1[2]));                       // dp3_sat r1.rgb
+            double r1b = r1[2];                                                                              // +mov r1.a, r1.b
+            r1 = {dp, dp, dp, clamp1(r1b)};
+            double oldA = r0[3];
+            for (int k = 0; k < 3; ++k) r0[k] = clamp1((1 - t1[k]) + v0[3] * (r0[k] - (1 - t1[k])));  // lrp r0.rgb
+            r0[3] = clamp1(0.5 * (t0[2] + -(oldA - 0.5)));                                             // +add_d2 r0.a, t0.b, -r0.a_bias
+            for (int k = 0; k < 2; ++k) r1[k] = clamp1((r1[k] - c2[2]) * 4);                           // sub_x4 r1.rg
+            V4 out = r0[3] > 0.5 ? r0 : r1;                                                            // cnd r0, r0.a, r0, r1
+            for (double& x : out) x = sat(x);                                                          // r0 -> colour
+            return out;
+        },
+        2e-3);
+}
+
+// vs_1_1 (m4x4 with the matrix from VertexShaderConstant4[0] = <WorldViewProj>, a constant set
+// through VertexShaderConstant1[4], slt/sge/min/max/frc/mad, masks) feeding ps_2_0 (texld through
+// Texture[0] = <Tex> and MinFilter[0] = Point, cmp, rsq, rcp, log, exp, pow, nrm, abs, mad).
+TEST_F(AsmShaders, Vs11WithPs20) {
+    Effect effect(device, asmFixture("AsmVs11Ps20.fx"));
+    auto tex = makeTexture(device);
+    effect.Parameters["Tex"].SetValue(tex);
+    // Position (x, y) in [0, 1]^2 -> NDC (2x - 1, 2y - 1). A transposed upload would put the
+    // translation into w and draw nothing like the quad.
+    effect.Parameters["WorldViewProj"].SetValue(Matrix::CreateScale(2, 2, 1) * Matrix::CreateTranslation(-1, -1, 0));
+    effect.Parameters["Scale"].SetValue(Vector4(0.75f, 1.25f, 0, 0));
+    const V4 gain{0.5, -0.25, 1.0, 2.0};
+    RenderTarget2D target(device, kSize, kSize, false, SurfaceFormat::Vector4);
+    device.SetRenderTarget(target);
+    device.Clear(Color::Black);
+    effect.CurrentTechnique->Passes[0].Apply();
+    drawUnitQuad(device);
+
+    auto oT1 = [](double u, double v) { return V4{u * 0.75, v * 1.25, u * v, 1.0}; };
+    auto oD0 = [](double u, double v) {
+        double f = 3 * u - std::floor(3 * u);
+        V4 r1{u < 0.5 ? 1.0 : 0.0, v >= 0.5 ? 1.0 : 0.0, std::max(u, v), std::min(f, 0.5)};
+        for (double& x : r1) x = sat(x * 0.5);  // mad oD0, r1, 0.5, 0; D3D9 clamps oD# to [0, 1]
+        return r1;
+    };
+    expectPixels(
+        target,
+        [&](double u, double v) {
+            V4 t1 = interpolate(oT1, u, v), v0 = interpolate(oD0, u, v), r0 = texelValue(u, v);
+            V4 r1, r2, r3, r4, r6, r7, r8;
+            for (int k = 0; k < 4; ++k) {
+                r1[k] = t1[k] - 0.5;
+                r2[k] = r1[k] >= 0 ? r0[k] : v0[k];
+                r3[k] = r1[k] * r1[k] + 0.25;
+                r7[k] = std::abs(r1[k]);
+            }
+            r4 = {1 / std::sqrt(std::abs(r3[0])), 1 / r3[1], std::log2(std::abs(r3[2])), std::exp2(r1[0])};
+            double r5 = std::pow(std::abs(r3[0]), 2.0);
+            double len = std::sqrt(r1[0] * r1[0] + r1[1] * r1[1] + r1[2] * r1[2]);
+            for (int k = 0; k < 4; ++k) {
+                r6[k] = r1[k] / len;
+                r8[k] = r4[k] * 0.25 + r2[k];
+                r8[k] = r6[k] * gain[k] + r8[k];
+                r8[k] += r7[k];
+                r8[k] = r5 * 0.25 + r8[k];
+            }
+            return r8;
+        },
+        2e-3);
+}
+
+// vs_2_0 registers filled from pass states (a macro of them, repeated per technique): a row_major
+// matrix (rows in c0..c3), a float4x3 (column_major: its three columns in c4..c6), an array read
+// through mova + c[a0.x + 8], literal constants; lit, dst, sincos, expp, logp. Each technique's HLSL
+// pixel shader shows one output; vertex results are interpolated over each triangle.
+TEST_F(AsmShaders, Vs20RegisterBindingsAndMacros) {
+    Effect effect(device, asmFixture("AsmVs20Registers.fx"));
+    // row_major: register i holds row i, so the shader computes M * p; the host sets the transpose
+    // of XNA's row-vector matrix, as D3D9 code for row_major constants did.
+    effect.Parameters["ViewProj"].SetValueTranspose(Matrix::CreateScale(2, 2, 1) * Matrix::CreateTranslation(-1, -1, 0));
+    Matrix world = Matrix::Identity;
+    world.M13 = 0.5f;  // r0.z = 0.5 x: a transposed upload would move the quad instead
+    effect.Parameters["World"].SetValue(world);
+    const std::vector<Vector4> palette = {Vector4(0.1f, 0.2f, 0.3f, 0.4f), Vector4(0.9f, 0.9f, 0.9f, 0.9f), Vector4(0.8f, 0.6f, 0.4f, 0.2f)};
+    effect.Parameters["Palette"].SetValue(palette);
+    RenderTarget2D target(device, kSize, kSize, false, SurfaceFormat::Vector4);
+    device.SetRenderTarget(target);
+
+    auto draw = [&](const char* technique) {
+        device.Clear(Color::Black);
+        effect.CurrentTechnique = effect.Techniques[technique];
+        effect.CurrentTechnique->Passes[0].Apply();
+        drawUnitQuad(device);
+    };
+    // Per-vertex values at texture coordinate (u, v); the position is (u, 1 - v, 0, 1).
+    draw("OutWorld");
+    expectPixels(target, [](double u, double v) { return interpolate([](double a, double b) { return V4{a, 1 - b, 0.5 * a, 1}; }, u, v); }, 2e-3);
+    draw("OutDst");
+    expectPixels(target, [](double u, double v) { return interpolate([](double, double b) { return V4{1, 2 * b, 0, 1}; }, u, v); }, 2e-3);
+    draw("OutLit");
+    auto lit = [](double a, double b) {
+        double x = a - 0.25, y = b;
+        return V4{1, std::max(x, 0.0), x > 0 && y > 0 ? std::pow(y, 16.0) : 0.0, 1};
+    };
+    expectPixels(target, [&](double u, double v) { return interpolate(lit, u, v); }, 2e-3);
+    draw("OutSinCos");
+    auto trig = [](double a, double b) { return V4{std::cos(3 * b), std::sin(3 * b), std::exp2(a), 4.0}; };
+    expectPixels(target, [&](double u, double v) { return interpolate(trig, u, v); }, 2e-3);
+    draw("OutPalette");
+    auto pal = [&](double a, double) {
+        const Vector4& p = palette[std::size_t(std::floor(2 * a + 0.5))];  // mova rounds 2u to the nearest
+        return V4{p.X, p.Y, p.Z, p.W};
+    };
+    expectPixels(target, [&](double u, double v) { return interpolate(pal, u, v); }, 2e-3);
+}
+
+}  // namespace
+}  // namespace fxport
