@@ -64,8 +64,8 @@ float4 PSAlphaTest(VSOutput pin, uniform int compare, uniform bool fog) : COLOR0
     { \
         pass \
         { \
-            VertexShader = compile vs_3_0 VSAlphaTest(V, F); \
-            PixelShader = compile ps_3_0 PSAlphaTest(C, F); \
+            VertexShader = compile vs_3_0 VSAlphaTest(STOCK_FLAG_##V, STOCK_FLAG_##F); \
+            PixelShader = compile ps_3_0 PSAlphaTest(C, STOCK_FLAG_##F); \
         } \
     }
 

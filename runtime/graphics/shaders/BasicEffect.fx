@@ -83,8 +83,8 @@ float4 PSBasic(VSOutput pin, uniform int lighting, uniform bool textured, unifor
     { \
         pass \
         { \
-            VertexShader = compile vs_3_0 VSBasic(L, T, V, F); \
-            PixelShader = compile ps_3_0 PSBasic(L, T, V, F); \
+            VertexShader = compile vs_3_0 VSBasic(L, STOCK_FLAG_##T, STOCK_FLAG_##V, STOCK_FLAG_##F); \
+            PixelShader = compile ps_3_0 PSBasic(L, STOCK_FLAG_##T, STOCK_FLAG_##V, STOCK_FLAG_##F); \
         } \
     }
 

@@ -62,8 +62,8 @@ float4 PSDualTexture(VSOutput pin, uniform bool fog) : COLOR0
     { \
         pass \
         { \
-            VertexShader = compile vs_3_0 VSDualTexture(V, F); \
-            PixelShader = compile ps_3_0 PSDualTexture(F); \
+            VertexShader = compile vs_3_0 VSDualTexture(STOCK_FLAG_##V, STOCK_FLAG_##F); \
+            PixelShader = compile ps_3_0 PSDualTexture(STOCK_FLAG_##F); \
         } \
     }
 

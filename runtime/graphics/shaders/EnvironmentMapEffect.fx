@@ -77,8 +77,8 @@ float4 PSEnvironmentMap(VSOutput pin, uniform bool specular, uniform bool fog) :
     { \
         pass \
         { \
-            VertexShader = compile vs_3_0 VSEnvironmentMap(R, F); \
-            PixelShader = compile ps_3_0 PSEnvironmentMap(S, F); \
+            VertexShader = compile vs_3_0 VSEnvironmentMap(STOCK_FLAG_##R, STOCK_FLAG_##F); \
+            PixelShader = compile ps_3_0 PSEnvironmentMap(STOCK_FLAG_##S, STOCK_FLAG_##F); \
         } \
     }
 

@@ -87,8 +87,8 @@ float4 PSSkinned(VSOutput pin, uniform bool perPixel, uniform bool fog) : COLOR0
     { \
         pass \
         { \
-            VertexShader = compile vs_3_0 VSSkinned(W, P, F); \
-            PixelShader = compile ps_3_0 PSSkinned(P, F); \
+            VertexShader = compile vs_3_0 VSSkinned(W, STOCK_FLAG_##P, STOCK_FLAG_##F); \
+            PixelShader = compile ps_3_0 PSSkinned(STOCK_FLAG_##P, STOCK_FLAG_##F); \
         } \
     }
 

@@ -85,3 +85,8 @@ float3 WorldNormal(float3 objectNormal)
 {
     return normalize(mul(objectNormal, (float3x3)WorldInverseTranspose));
 }
+
+// Technique macros spell 0/1 feature digits as bool literals for the entry points' uniform bool
+// parameters (technique names keep the digits).
+#define STOCK_FLAG_0 false
+#define STOCK_FLAG_1 true
