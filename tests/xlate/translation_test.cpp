@@ -303,13 +303,13 @@ TEST(Translation, Dx9RenderStatesBecomeCanonicalRows) {
     const auto& states = e.techniques[0].passes[0].states;
     ASSERT_EQ(states.size(), 5u);
     EXPECT_EQ(states[0].state, RenderState::AlphaBlendEnable);
-    EXPECT_EQ(states[0].value[0], 1);
+    EXPECT_EQ(std::get<bool>(states[0].value), true);
     EXPECT_EQ(states[1].state, RenderState::SrcBlend);
-    EXPECT_EQ(states[1].value[0], double(Blend::SourceAlpha));
-    EXPECT_EQ(states[2].value[0], double(Blend::InverseSourceAlpha));
-    EXPECT_EQ(states[3].value[0], double(CullMode::None));
+    EXPECT_EQ(std::get<Blend>(states[1].value), Blend::SourceAlpha);
+    EXPECT_EQ(std::get<Blend>(states[2].value), Blend::InverseSourceAlpha);
+    EXPECT_EQ(std::get<CullMode>(states[3].value), CullMode::None);
     EXPECT_EQ(states[4].state, RenderState::ZWriteEnable);
-    EXPECT_EQ(states[4].value[0], 0);
+    EXPECT_EQ(std::get<bool>(states[4].value), false);
     EXPECT_EQ(states[4].where.line, 24);  // points at the original source line
 }
 
@@ -334,15 +334,20 @@ technique10 T { pass P {
             if (a.state == s && a.index == 0) return &a;
         return nullptr;
     };
+    // A missing row reads as `false`, which std::get of any other type rejects (the test fails).
+    auto value = [&](RenderState s) {
+        const StateAssignment* a = find(s);
+        return a ? a->value : StateValue{};
+    };
     ASSERT_TRUE(find(RenderState::AlphaBlendEnable));
-    EXPECT_EQ(find(RenderState::AlphaBlendEnable)->value[0], 1);
-    EXPECT_EQ(find(RenderState::DestBlend)->value[0], double(Blend::One));
-    EXPECT_EQ(find(RenderState::SrcBlendAlpha)->value[0], double(Blend::One));   // D3D10 default
-    EXPECT_EQ(find(RenderState::DestBlendAlpha)->value[0], double(Blend::Zero));  // D3D10 default
-    EXPECT_EQ(find(RenderState::ZWriteEnable)->value[0], 0);
-    EXPECT_EQ(find(RenderState::ZFunc)->value[0], double(CompareFunction::Less));
+    EXPECT_EQ(std::get<bool>(value(RenderState::AlphaBlendEnable)), true);
+    EXPECT_EQ(std::get<Blend>(value(RenderState::DestBlend)), Blend::One);
+    EXPECT_EQ(std::get<Blend>(value(RenderState::SrcBlendAlpha)), Blend::One);   // D3D10 default
+    EXPECT_EQ(std::get<Blend>(value(RenderState::DestBlendAlpha)), Blend::Zero);  // D3D10 default
+    EXPECT_EQ(std::get<bool>(value(RenderState::ZWriteEnable)), false);
+    EXPECT_EQ(std::get<CompareFunction>(value(RenderState::ZFunc)), CompareFunction::Less);
     // CullMode FRONT with clockwise front faces culls clockwise triangles.
-    EXPECT_EQ(find(RenderState::CullMode)->value[0], double(CullMode::CullClockwiseFace));
+    EXPECT_EQ(std::get<CullMode>(value(RenderState::CullMode)), CullMode::CullClockwiseFace);
     const CompiledShader& ps = e.shaders[size_t(p.pixelShader.shaders[0])];
     ASSERT_EQ(ps.samplers.size(), 1u);
     EXPECT_EQ(ps.samplers[0].textureParameter, "tex");
@@ -351,6 +356,63 @@ technique10 T { pass P {
     EXPECT_EQ(ps.samplers[0].state.mipFilter, TextureFilter::Point);
     EXPECT_FALSE(ps.needsD3D9PixelOffset);
     expectPassesLink(e);
+}
+
+TEST(Translation, PassStatesAreTypedAndParametersResolvedToIndices) {
+    CompiledEffect e = compileEffectFile("tests/fixtures/realworld/annotations_states/RenderStates.fx", noCache());
+    auto stateOf = [&](const std::string& technique, int pass, RenderState state) -> StateAssignment {
+        const auto& rows = e.techniques[std::size_t(e.findTechnique(technique))].passes[std::size_t(pass)].states;
+        for (const auto& a : rows)
+            if (a.state == state) return a;
+        ADD_FAILURE() << technique << " pass " << pass << " sets no state " << int(state);
+        return {};
+    };
+    StateAssignment alphaRef = stateOf("Translucent", 0, RenderState::AlphaRef);
+    ASSERT_GE(alphaRef.parameter, 0);
+    EXPECT_EQ(e.parameters[std::size_t(alphaRef.parameter)].name, "AlphaReference");
+    StateAssignment stencilRef = stateOf("StencilMask", 0, RenderState::StencilRef);  // `(StencilReference)` form
+    ASSERT_GE(stencilRef.parameter, 0);
+    EXPECT_EQ(e.parameters[std::size_t(stencilRef.parameter)].name, "StencilReference");
+    EXPECT_EQ(std::get<CompareFunction>(stateOf("Translucent", 0, RenderState::AlphaFunc).value), CompareFunction::Greater);
+    EXPECT_EQ(std::get<Blend>(stateOf("Translucent", 0, RenderState::DestBlendAlpha).value), Blend::InverseSourceAlpha);
+    EXPECT_EQ(std::get<int>(stateOf("Translucent", 0, RenderState::ColorWriteEnable).value), 7);
+    EXPECT_EQ(std::get<int>(stateOf("StencilMask", 0, RenderState::StencilWriteMask).value), -1);  // 0xFFFFFFFF
+    EXPECT_EQ(std::get<FillMode>(stateOf("StencilMask", 1, RenderState::FillMode).value), FillMode::WireFrame);
+    EXPECT_EQ(std::get<float>(stateOf("StencilMask", 1, RenderState::SlopeScaleDepthBias).value), 1.0f);
+    EXPECT_EQ(std::get<bool>(stateOf("StencilMask", 2, RenderState::MultiSampleAntiAlias).value), true);
+
+    // The file keeps types and parameter references: what comes back equals what went in.
+    CompiledEffect back = deserializeEffect(serializeEffect(e), "memory");
+    ASSERT_EQ(back.techniques.size(), e.techniques.size());
+    for (std::size_t t = 0; t < e.techniques.size(); ++t)
+        for (std::size_t p = 0; p < e.techniques[t].passes.size(); ++p) {
+            const auto& a = e.techniques[t].passes[p].states;
+            const auto& b = back.techniques[t].passes[p].states;
+            ASSERT_EQ(a.size(), b.size());
+            for (std::size_t i = 0; i < a.size(); ++i) {
+                EXPECT_EQ(a[i].state, b[i].state);
+                EXPECT_EQ(a[i].parameter, b[i].parameter);
+                if (a[i].parameter < 0) {
+                    EXPECT_EQ(a[i].value, b[i].value) << describeStateAssignment(a[i], e);
+                }
+            }
+        }
+    EXPECT_EQ(describeStateAssignment(alphaRef, e), "AlphaRef = <AlphaReference>");
+}
+
+TEST(Translation, ParameterDrivenStatesReadD3D9Codes) {
+    // D3DBLEND_SRCALPHA is 5, D3DCMP_GREATER 5, D3DCULL_CW 2, D3DFILL_WIREFRAME 2.
+    EXPECT_EQ(std::get<Blend>(stateValueFromD3D9(RenderState::SrcBlend, 5)), Blend::SourceAlpha);
+    EXPECT_EQ(std::get<Blend>(stateValueFromD3D9(RenderState::DestBlend, 15)), Blend::InverseBlendFactor);
+    EXPECT_EQ(std::get<CompareFunction>(stateValueFromD3D9(RenderState::AlphaFunc, 5)), CompareFunction::Greater);
+    EXPECT_EQ(std::get<CullMode>(stateValueFromD3D9(RenderState::CullMode, 2)), CullMode::CullClockwiseFace);
+    EXPECT_EQ(std::get<FillMode>(stateValueFromD3D9(RenderState::FillMode, 2)), FillMode::WireFrame);
+    EXPECT_EQ(std::get<bool>(stateValueFromD3D9(RenderState::ZEnable, 1)), true);
+    EXPECT_EQ(std::get<int>(stateValueFromD3D9(RenderState::AlphaRef, 128)), 128);
+    EXPECT_EQ(std::get<float>(stateValueFromD3D9(RenderState::DepthBias, -0.25)), -0.25f);
+    // Codes D3D9 does not define keep the state's default.
+    EXPECT_EQ(std::get<Blend>(stateValueFromD3D9(RenderState::SrcBlend, 0)), Blend::One);
+    EXPECT_EQ(std::get<CompareFunction>(stateValueFromD3D9(RenderState::ZFunc, 99)), CompareFunction::LessEqual);
 }
 
 TEST(Translation, ShaderArraysAreSelectedByParameters) {

@@ -139,7 +139,7 @@ void dump(const CompiledEffect& e, std::ostream& out) {
             out << "    pass " << p.name << (p.valid ? "" : "  [INVALID]") << ": vs " << choice(p.vertexShader) << ", ps " << choice(p.pixelShader);
             if (!p.geometryShader.shaders.empty()) out << ", gs " << choice(p.geometryShader);
             out << "\n";
-            for (const auto& s : p.states) out << "      " << describeStateAssignment(s) << "\n";
+            for (const auto& s : p.states) out << "      " << describeStateAssignment(s, e) << "\n";
         }
     }
     out << "\nshaders:\n";

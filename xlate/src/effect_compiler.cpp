@@ -518,7 +518,7 @@ bool EffectBuilder::resolveShader(const FxShaderExpr& expr, ShaderStage stage, S
 }
 
 void EffectBuilder::buildTechniques() {
-    StateContext stateContext{syntax_, pre_.map, effect_.diagnostics};
+    StateContext stateContext{syntax_, pre_.map, effect_.diagnostics, &effect_.parameters};
     for (const auto& t : syntax_.techniques) {
         if (!options_.techniques.empty() &&
             std::find(options_.techniques.begin(), options_.techniques.end(), t.name) == options_.techniques.end())

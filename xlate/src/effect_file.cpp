@@ -4,6 +4,7 @@
 
 #include <array>
 #include <fstream>
+#include <variant>
 
 #include "shader_profile.h"
 #include "text_util.h"
@@ -52,27 +53,39 @@ constexpr Names<StencilOperation, 8> kStencil{{"Keep", "Zero", "Replace", "Incre
 constexpr Names<CullMode, 3> kCull{{"None", "CullClockwiseFace", "CullCounterClockwiseFace"}};
 constexpr Names<FillMode, 3> kFill{{"Point", "WireFrame", "Solid"}};
 
-// A readable rendering of a state's value (the file stores numbers; this is for people).
-std::string valueName(const StateAssignment& s) {
-    int v = static_cast<int>(s.value[0]);
-    switch (s.state) {
-    case RenderState::SrcBlend: case RenderState::DestBlend: case RenderState::SrcBlendAlpha: case RenderState::DestBlendAlpha:
-        return kBlend.of(static_cast<Blend>(v));
-    case RenderState::BlendOp: case RenderState::BlendOpAlpha: return kBlendOp.of(static_cast<BlendFunction>(v));
-    case RenderState::ZFunc: case RenderState::StencilFunc: case RenderState::CcwStencilFunc: case RenderState::AlphaFunc:
-        return kCompare.of(static_cast<CompareFunction>(v));
-    case RenderState::StencilPass: case RenderState::StencilFail: case RenderState::StencilZFail:
-    case RenderState::CcwStencilPass: case RenderState::CcwStencilFail: case RenderState::CcwStencilZFail:
-        return kStencil.of(static_cast<StencilOperation>(v));
-    case RenderState::CullMode: return kCull.of(static_cast<CullMode>(v));
-    case RenderState::FillMode: return kFill.of(static_cast<FillMode>(v));
-    case RenderState::AlphaBlendEnable: case RenderState::SeparateAlphaBlendEnable: case RenderState::ZEnable:
-    case RenderState::ZWriteEnable: case RenderState::StencilEnable: case RenderState::TwoSidedStencilMode:
-    case RenderState::ScissorTestEnable: case RenderState::MultiSampleAntiAlias: case RenderState::DepthClipEnable:
-    case RenderState::AlphaTestEnable: case RenderState::SrgbWriteEnable:
-        return v ? "true" : "false";
-    default: return {};
-    }
+// A state's value as people read it: enum names, true/false, numbers, a float4 as an array.
+json valueJson(const StateValue& value) {
+    struct ToJson {
+        json operator()(bool v) const { return v; }
+        json operator()(int v) const { return v; }
+        json operator()(float v) const { return v; }
+        json operator()(Blend v) const { return kBlend.of(v); }
+        json operator()(BlendFunction v) const { return kBlendOp.of(v); }
+        json operator()(CompareFunction v) const { return kCompare.of(v); }
+        json operator()(StencilOperation v) const { return kStencil.of(v); }
+        json operator()(CullMode v) const { return kCull.of(v); }
+        json operator()(FillMode v) const { return kFill.of(v); }
+        json operator()(const std::array<float, 4>& v) const { return v; }
+    };
+    return std::visit(ToJson{}, value);
+}
+
+// The inverse, for a value of `state` (whose alternative says how to read the JSON).
+StateValue valueFrom(RenderState state, const json& j) {
+    struct FromJson {
+        const json& j;
+        StateValue operator()(bool) const { return j.get<bool>(); }
+        StateValue operator()(int) const { return j.get<int>(); }
+        StateValue operator()(float) const { return j.get<float>(); }
+        StateValue operator()(Blend) const { return kBlend.parse(j.get<std::string>()); }
+        StateValue operator()(BlendFunction) const { return kBlendOp.parse(j.get<std::string>()); }
+        StateValue operator()(CompareFunction) const { return kCompare.parse(j.get<std::string>()); }
+        StateValue operator()(StencilOperation) const { return kStencil.parse(j.get<std::string>()); }
+        StateValue operator()(CullMode) const { return kCull.parse(j.get<std::string>()); }
+        StateValue operator()(FillMode) const { return kFill.parse(j.get<std::string>()); }
+        StateValue operator()(const std::array<float, 4>&) const { return j.get<std::array<float, 4>>(); }
+    };
+    return std::visit(FromJson{j}, defaultStateValue(state));
 }
 
 json toJson(const SourceLocation& l) { return json{{"file", l.file}, {"line", l.line}, {"column", l.column}}; }
@@ -236,11 +249,10 @@ json techniquesJson(const CompiledEffect& effect, bool withLocation) {
         for (const auto& p : t.passes) {
             json states = json::array();
             for (const auto& s : p.states) {
-                json sj{{"state", kState.of(s.state)}, {"value", s.state == RenderState::BlendFactor ? json(s.value) : json(s.value[0])}};
+                json sj{{"state", kState.of(s.state)}};
+                if (s.parameter >= 0) sj["parameter"] = effect.parameters[static_cast<size_t>(s.parameter)].name;
+                else sj["value"] = valueJson(s.value);
                 if (s.index) sj["index"] = s.index;
-                if (!s.parameter.empty()) sj["parameter"] = s.parameter;
-                std::string name = valueName(s);
-                if (!name.empty()) sj["is"] = name;
                 if (withLocation) sj["where"] = toJson(s.where);
                 states.push_back(sj);
             }
@@ -288,15 +300,14 @@ json effectJson(const CompiledEffect& effect, bool full) {
 
 }  // namespace
 
-std::string describeStateAssignment(const StateAssignment& s) {
+std::string describeStateAssignment(const StateAssignment& s, const CompiledEffect& effect) {
     std::string out = kState.of(s.state);
     if (s.index) out += "[" + std::to_string(s.index) + "]";
     out += " = ";
-    if (!s.parameter.empty()) return out + "<" + s.parameter + ">";
-    std::string name = valueName(s);
-    if (!name.empty()) return out + name;
-    if (s.state == RenderState::BlendFactor) return out + json(s.value).dump();
-    return out + json(s.value[0]).dump();
+    if (s.parameter >= 0 && static_cast<size_t>(s.parameter) < effect.parameters.size())
+        return out + "<" + effect.parameters[static_cast<size_t>(s.parameter)].name + ">";
+    json v = valueJson(s.value);
+    return out + (v.is_string() ? v.get<std::string>() : v.dump());
 }
 
 // Text that is not UTF-8 (a diagnostic quoting a Latin-1 comment, say) is written with U+FFFD in
@@ -382,9 +393,8 @@ CompiledEffect deserializeEffect(std::string_view text, const std::string& nameF
                     StateAssignment a;
                     a.state = kState.parse(s.at("state"));
                     a.index = s.value("index", 0);
-                    a.parameter = s.value("parameter", std::string());
-                    if (s.at("value").is_array()) a.value = s["value"].get<std::array<double, 4>>();
-                    else a.value = {s["value"].get<double>(), 0, 0, 0};
+                    if (s.contains("parameter")) a.parameter = paramIndex.at(s["parameter"].get<std::string>());
+                    else a.value = valueFrom(a.state, s.at("value"));
                     if (s.contains("where")) a.where = locationFrom(s["where"]);
                     pass.states.push_back(a);
                 }

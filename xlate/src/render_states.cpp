@@ -6,6 +6,7 @@
 #include <set>
 
 #include "source_map.h"
+#include "state_values.h"
 #include "text_util.h"
 
 namespace fxport::xlate {
@@ -241,7 +242,7 @@ void push(std::vector<StateAssignment>& out, RenderState s, double v, const Sour
     StateAssignment a;
     a.state = s;
     a.index = index;
-    a.value = {v, 0, 0, 0};
+    a.value = stateValueFromCanonical(s, v);
     a.where = where;
     out.push_back(a);
 }
@@ -528,7 +529,7 @@ StateResult translateDx10Call(const FxAssignment& a, StateContext& ctx, std::vec
         if (auto v = r.vector4()) {
             StateAssignment s;
             s.state = RenderState::BlendFactor;
-            s.value = *v;
+            s.value = std::array<float, 4>{float((*v)[0]), float((*v)[1]), float((*v)[2]), float((*v)[3])};
             s.where = where;
             out.push_back(s);
         }
@@ -587,11 +588,12 @@ StateResult translatePassAssignment(const FxAssignment& a, StateContext& ctx, st
     s.state = it->second.state;
     s.index = index;
     s.where = where;
-    if (!readValue(r, it->second.kind, s.value)) {
-        if (auto obj = r.objectName()) {
-            for (const auto& g : ctx.syntax.globals)
-                if (g.name == *obj) {
-                    s.parameter = *obj;  // evaluated at Apply() from the parameter's value
+    std::array<double, 4> raw{};
+    if (!readValue(r, it->second.kind, raw)) {
+        if (auto obj = r.objectName(); obj && ctx.parameters) {
+            for (std::size_t p = 0; p < ctx.parameters->size(); ++p)
+                if ((*ctx.parameters)[p].name == *obj) {
+                    s.parameter = static_cast<int>(p);  // evaluated at Apply() from the parameter's value
                     out.push_back(s);
                     return StateResult::Applied;
                 }
@@ -599,6 +601,10 @@ StateResult translatePassAssignment(const FxAssignment& a, StateContext& ctx, st
         r.bad(describe(it->second.kind));
         return StateResult::Failed;
     }
+    if (it->second.kind == ValueKind::Vector4)
+        s.value = std::array<float, 4>{float(raw[0]), float(raw[1]), float(raw[2]), float(raw[3])};
+    else
+        s.value = stateValueFromCanonical(s.state, raw[0]);
     out.push_back(s);
     return StateResult::Applied;
 }

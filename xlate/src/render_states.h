@@ -17,6 +17,9 @@ struct StateContext {
     const EffectSyntax& syntax;
     const SourceMap& map;
     std::vector<Diagnostic>& diagnostics;  // errors and warnings are appended here
+    // The effect's parameters, for states that name one (`AlphaRef = <AlphaReference>;`): the row
+    // gets the parameter's index. nullptr where no pass states are translated.
+    const std::vector<Parameter>* parameters = nullptr;
 };
 
 enum class StateResult {

@@ -104,6 +104,24 @@ std::vector<Effect::Impl::BlockReads> blockReadsOf(const xlate::CompiledShader& 
     return out;
 }
 
+// The texture units a shader samples, with texture parameters resolved to indices and the
+// effect's sampler_state decoded.
+std::vector<SamplerSlot> samplerSlotsOf(const xlate::CompiledShader& shader, const Effect::Impl& e) {
+    std::vector<SamplerSlot> out;
+    for (const xlate::SamplerBinding& sampler : shader.samplers) {
+        if (sampler.unit < 0 || sampler.unit >= kMaxTextureSlots) continue;
+        SamplerSlot slot;
+        slot.unit = sampler.unit;
+        if (!sampler.textureParameter.empty()) {
+            auto it = e.parameterIndex.find(sampler.textureParameter);
+            if (it != e.parameterIndex.end()) slot.textureParameter = it->second;
+        }
+        slot.state = decodeSamplerState(sampler.state);
+        out.push_back(slot);
+    }
+    return out;
+}
+
 }  // namespace
 
 std::string Effect::Impl::hlslTypeName(const xlate::Parameter& p) {
@@ -247,7 +265,7 @@ void Effect::Impl::layOutProvisionally() {
         at += p.size;
     }
     for (std::size_t b = 0; b < blocks.size(); ++b)
-        if (blocks[b].provisional) blocks[b].shadow.assign(std::size_t(sizes[b]), 0);
+        if (blocks[b].provisional) blocks[b].constants.bytes.assign(std::size_t(sizes[b]), 0);
 }
 
 void Effect::Impl::adoptLayouts(const xlate::CompiledEffect& code, GraphicsDevice::Impl& device) {
@@ -260,13 +278,14 @@ void Effect::Impl::adoptLayouts(const xlate::CompiledEffect& code, GraphicsDevic
         Block& block = blocks[b];
         if (real.size <= 0) continue;  // no shader of this code reads the block: nothing learnt
         if (!block.provisional) {
-            if (int(block.shadow.size()) != real.size)
+            if (int(block.constants.bytes.size()) != real.size)
                 throw InvalidOperation("Effect '" + displayName + "': uniform block '" + real.name + "' has " + std::to_string(real.size) +
-                                       " bytes in one technique and " + std::to_string(block.shadow.size()) + " in another (internal error)");
+                                       " bytes in one technique and " + std::to_string(block.constants.bytes.size()) + " in another (internal error)");
             continue;
         }
         // Move each value from its provisional place to the real one.
-        std::vector<std::uint8_t> shadow(std::size_t(real.size), 0);
+        ConstantBlock moved;
+        moved.bytes.assign(std::size_t(real.size), 0);
         for (std::size_t i = 0; i < outline.parameters.size(); ++i) {
             xlate::Parameter& p = outline.parameters[i];
             const xlate::Parameter& r = code.parameters[i];
@@ -275,29 +294,25 @@ void Effect::Impl::adoptLayouts(const xlate::CompiledEffect& code, GraphicsDevic
                                        "' in a compiled technique but '" + p.name + "' in the effect (internal error)");
             if (r.block != int(b)) continue;
             if (p.offset >= 0 && r.offset >= 0)
-                for (int el = 0; el < std::max(1, p.elements); ++el)
-                    for (int row = 0; row < p.rows; ++row)
-                        for (int col = 0; col < p.columns; ++col) {
-                            int from = byteOffset(p, el, row, col), to = byteOffset(r, el, row, col);
-                            if (from < 0 || std::size_t(from) + 4 > block.shadow.size()) continue;
-                            if (to < 0 || std::size_t(to) + 4 > shadow.size()) continue;  // trimmed by the optimiser
-                            std::memcpy(&shadow[std::size_t(to)], &block.shadow[std::size_t(from)], 4);
-                        }
+                block.constants.forEachScalar(p, std::max(1, p.elements), [&](const ConstantBlock::Scalar& from) {
+                    int to = ConstantBlock::offsetOf(r, from.element, from.row, from.column);
+                    if (moved.holds(to))  // else trimmed by the optimiser
+                        std::memcpy(&moved.bytes[std::size_t(to)], &block.constants.bytes[std::size_t(from.offset)], 4);
+                });
             p.offset = r.offset;
             p.size = r.size;
             p.matrixStride = r.matrixStride;
             p.arrayStride = r.arrayStride;
             p.rowMajor = r.rowMajor;
         }
-        block.shadow = std::move(shadow);
+        block.constants = std::move(moved);
         block.provisional = false;
         block.buffer = device.createBuffer();
         glNamedBufferStorage(block.buffer, real.size, nullptr, GL_DYNAMIC_STORAGE_BIT);
-        block.dirtyBegin = 0;
-        block.dirtyEnd = real.size;
+        block.constants.markDirty(0, real.size);
     }
     for (std::size_t b = 0; b < blocks.size(); ++b)
-        if (!blocks[b].provisional) outline.uniformBlocks[b].size = int(blocks[b].shadow.size());
+        if (!blocks[b].provisional) outline.uniformBlocks[b].size = int(blocks[b].constants.bytes.size());
 }
 
 // --- compiling
@@ -316,6 +331,11 @@ Effect::Impl::Code& Effect::Impl::addCode(std::shared_ptr<const xlate::CompiledE
             p.program = device.createProgram(glStage(shader.profile.stage), shader.glsl, p.label);
             code->programs.push_back(p);
             code->reads.push_back(blockReadsOf(shader, blocks.size()));
+            code->samplers.push_back(samplerSlotsOf(shader, *this));
+        }
+        for (const xlate::Technique& technique : code->effect->techniques) {
+            std::vector<PassStates>& passes = code->passStates.emplace_back();
+            for (const xlate::Pass& pass : technique.passes) passes.push_back(decodePassStates(pass));
         }
     } catch (...) {
         for (ShaderProgram& p : code->programs) device.deleteProgram(p.program);
@@ -402,25 +422,9 @@ void Effect::build() {
         e.parameterIndex.emplace(c.parameters[i].name, int(i));
         const xlate::Parameter& p = c.parameters[i];
         if (p.offset < 0 || p.defaultValue.empty() || p.block < 0 || std::size_t(p.block) >= e.blocks.size()) continue;
-        Impl::Block& block = e.blocks[std::size_t(p.block)];
-        std::size_t k = 0;
-        for (int el = 0; el < std::max(1, p.elements); ++el)
-            for (int r = 0; r < p.rows; ++r)
-                for (int col = 0; col < p.columns && k < p.defaultValue.size(); ++col, ++k) {
-                    int at = Impl::byteOffset(p, el, r, col);
-                    if (at < 0 || std::size_t(at) + 4 > block.shadow.size()) continue;
-                    double v = p.defaultValue[k];
-                    if (p.type == xlate::ParameterType::Float) {
-                        float f = float(v);
-                        std::memcpy(&block.shadow[std::size_t(at)], &f, 4);
-                    } else if (p.type == xlate::ParameterType::Int) {
-                        std::int32_t n = std::int32_t(v);
-                        std::memcpy(&block.shadow[std::size_t(at)], &n, 4);
-                    } else {
-                        std::uint32_t n = v != 0 ? (p.type == xlate::ParameterType::Bool ? 1u : std::uint32_t(v)) : 0u;
-                        std::memcpy(&block.shadow[std::size_t(at)], &n, 4);
-                    }
-                }
+        e.blocks[std::size_t(p.block)].constants.store(
+            p, std::max(1, p.elements), [&](const ConstantBlock::Scalar& s) { return p.defaultValue[std::size_t(s.index)]; },
+            [&](const ConstantBlock::Scalar& s) { return std::size_t(s.index) < p.defaultValue.size(); });
     }
 
     // Techniques and passes.

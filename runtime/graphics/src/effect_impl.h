@@ -6,7 +6,7 @@
 // CompiledEffect (filtered to the techniques it was asked for), a separable program per shader and,
 // per program, the byte ranges of each uniform block the shader reads.
 //
-// Constants live in one CPU shadow per uniform block with a dirty byte range. Until a compiled
+// Constants live in one CPU shadow per uniform block with a dirty byte range (ConstantBlock). Until a compiled
 // shader declares a block, its layout is unknown; the shadow then uses a provisional packed layout
 // (each parameter row-major, tightly packed) so that SetValue/GetValue work before any Apply. When a
 // Code brings the real layout, adoptLayouts() moves every value to its real place and creates the
@@ -21,9 +21,11 @@
 #include <unordered_map>
 #include <vector>
 
+#include "constant_block.h"
 #include "device_impl.h"
 #include "fxport/graphics/effect.h"
 #include "fxport/xlate/compiled_effect.h"
+#include "pass_states.h"
 
 namespace fxport {
 
@@ -45,9 +47,7 @@ struct Effect::Impl {
         GLuint buffer = 0;  // 0 while the layout is provisional
         int binding = 0;
         bool provisional = true;
-        std::vector<std::uint8_t> shadow;
-        int dirtyBegin = INT_MAX;
-        int dirtyEnd = 0;
+        ConstantBlock constants;  // the CPU shadow and its dirty range
     };
     std::vector<Block> blocks;
     std::vector<Texture*> textures;  // per parameter (objects only)
@@ -62,6 +62,8 @@ struct Effect::Impl {
         std::shared_ptr<const xlate::CompiledEffect> effect;
         std::vector<ShaderProgram> programs;               // per effect->shaders
         std::vector<std::vector<BlockReads>> reads;        // per effect->shaders
+        std::vector<std::vector<SamplerSlot>> samplers;    // per effect->shaders, decoded once
+        std::vector<std::vector<PassStates>> passStates;   // per effect->techniques, per pass, decoded once
     };
     std::vector<std::unique_ptr<Code>> codes;  // stable addresses: the device points at programs
     struct TechniqueCode {
@@ -82,10 +84,12 @@ struct Effect::Impl {
         for (Texture*& t : textures)
             if (t == texture) t = nullptr;
     }
-    void markDirty(int block, int begin, int end) {
-        Block& b = blocks[std::size_t(block)];
-        b.dirtyBegin = std::min(b.dirtyBegin, begin);
-        b.dirtyEnd = std::max(b.dirtyEnd, end);
+    // The first scalar of element `element` of parameter `index` (for parameter-driven states and
+    // shader selectors); the default value for a parameter without storage.
+    double parameterNumber(int index, int element) const {
+        const xlate::Parameter& p = outline.parameters[std::size_t(index)];
+        if (p.offset < 0) return p.defaultValue.empty() ? 0.0 : p.defaultValue[0];
+        return blocks[std::size_t(p.block)].constants.load(p, element * p.rows * p.columns);
     }
     // Uploads the dirty bytes of each block that `reads` covers; what it does not cover stays dirty
     // (as one range: the hull of what is left, so some bytes may be sent twice, never too few).
@@ -112,15 +116,6 @@ struct Effect::Impl {
 
     // "float4x4", "float3[8]", "texture2D", for messages.
     static std::string hlslTypeName(const xlate::Parameter& p);
-    // Byte offset in its block of element `element`, row `row`, column `column` (HLSL indexing).
-    static int byteOffset(const xlate::Parameter& p, int element, int row, int column) {
-        int offset = p.offset + element * p.arrayStride;
-        if (p.parameterClass == xlate::ParameterClass::Matrix)
-            offset += p.rowMajor ? row * p.matrixStride + column * 4 : column * p.matrixStride + row * 4;
-        else
-            offset += column * 4;
-        return offset;
-    }
 };
 
 }  // namespace fxport

@@ -1,8 +1,7 @@
 // EffectParameter::SetValue / GetValue: type-checked writes into the effect's constant-buffer
 // shadow, laid out as the reflection says (HLSL packing, column_major or row_major).
 #include <algorithm>
-#include <climits>
-#include <cstring>
+#include <span>
 
 #include "effect_impl.h"
 #include "fxport/graphics/errors.h"
@@ -38,45 +37,18 @@ struct Access {
             fail(std::string(call) + ": no shader of the effect reads this parameter, so it has no storage");
     }
 
-    // Writes scalar k (row by row, element by element) as the parameter's own type.
-    void write(int k, double value) const {
-        int spe = scalarsPerElement();
-        int element = k / spe, r = (k % spe) / p.columns, c = k % p.columns;
-        int at = Effect::Impl::byteOffset(p, element, r, c);
-        std::vector<std::uint8_t>& shadow = e.blocks[std::size_t(p.block)].shadow;
-        if (at < 0 || std::size_t(at) + 4 > shadow.size()) return;  // trimmed by the optimiser
-        if (p.type == ParameterType::Float) {
-            float f = float(value);
-            std::memcpy(&shadow[std::size_t(at)], &f, 4);
-        } else if (p.type == ParameterType::Int) {
-            std::int32_t n = std::int32_t(value);
-            std::memcpy(&shadow[std::size_t(at)], &n, 4);
-        } else {
-            std::uint32_t n = p.type == ParameterType::Bool ? (value != 0 ? 1u : 0u) : std::uint32_t(value);
-            std::memcpy(&shadow[std::size_t(at)], &n, 4);
-        }
-        e.markDirty(p.block, at, at + 4);
+    ConstantBlock& block() const { return e.blocks[std::size_t(p.block)].constants; }
+
+    // Writes values[k] into scalar k (row by row, element by element) for the first n scalars.
+    template <class T>
+    void writeFirst(std::span<const T> values) const {
+        block().store(
+            p, elementCount(), [&](const ConstantBlock::Scalar& s) { return double(values[std::size_t(s.index)]); },
+            [&](const ConstantBlock::Scalar& s) { return std::size_t(s.index) < values.size(); });
     }
     double read(int k) const {
-        int spe = scalarsPerElement();
-        int element = k / spe, r = (k % spe) / p.columns, c = k % p.columns;
         if (p.offset < 0) return std::size_t(k) < p.defaultValue.size() ? p.defaultValue[std::size_t(k)] : 0.0;
-        int at = Effect::Impl::byteOffset(p, element, r, c);
-        const std::vector<std::uint8_t>& shadow = e.blocks[std::size_t(p.block)].shadow;
-        if (at < 0 || std::size_t(at) + 4 > shadow.size()) return 0;
-        if (p.type == ParameterType::Float) {
-            float f;
-            std::memcpy(&f, &shadow[std::size_t(at)], 4);
-            return f;
-        }
-        if (p.type == ParameterType::Int) {
-            std::int32_t n;
-            std::memcpy(&n, &shadow[std::size_t(at)], 4);
-            return n;
-        }
-        std::uint32_t n;
-        std::memcpy(&n, &shadow[std::size_t(at)], 4);
-        return n;
+        return block().load(p, k);
     }
 
     // SetValue of `count` elements each of `rows`x`cols` scalars given by get(element, r, c).
@@ -90,27 +62,7 @@ struct Access {
             fail(std::string(call) + (isArray ? " with " + std::to_string(count) + " elements overruns the array"
                                               : " on an array: pass an array of values"));
         requireStorage(call);
-        if (p.type == ParameterType::Float) {
-            // The common case (matrices, vectors of floats): direct stores, one dirty range.
-            std::vector<std::uint8_t>& shadow = e.blocks[std::size_t(p.block)].shadow;
-            int lo = INT_MAX, hi = 0;
-            for (int el = 0; el < count; ++el)
-                for (int r = 0; r < p.rows; ++r)
-                    for (int c = 0; c < p.columns; ++c) {
-                        int at = Effect::Impl::byteOffset(p, el, r, c);
-                        if (at < 0 || std::size_t(at) + 4 > shadow.size()) continue;  // trimmed by the optimiser
-                        float f = float(get(el, r, c));
-                        std::memcpy(&shadow[std::size_t(at)], &f, 4);
-                        lo = std::min(lo, at);
-                        hi = std::max(hi, at + 4);
-                    }
-            if (hi > lo) e.markDirty(p.block, lo, hi);
-            return;
-        }
-        int spe = scalarsPerElement();
-        for (int el = 0; el < count; ++el)
-            for (int r = 0; r < p.rows; ++r)
-                for (int c = 0; c < p.columns; ++c) write(el * spe + r * p.columns + c, get(el, r, c));
+        block().store(p, count, [&](const ConstantBlock::Scalar& s) { return double(get(s.element, s.row, s.column)); });
     }
 
     void requireFloat(const char* call) const {
@@ -220,7 +172,7 @@ void EffectParameter::SetValue(std::span<const float> values) {
     if (int(values.size()) > total)
         a.fail("SetValue(float[]) with " + std::to_string(values.size()) + " values; the parameter holds " + std::to_string(total));
     a.requireStorage("SetValue(float[])");
-    for (std::size_t k = 0; k < values.size(); ++k) a.write(int(k), values[k]);
+    a.writeFirst(values);
 }
 void EffectParameter::SetValue(std::span<const int> values) {
     Access a = access(effect_, index_);
@@ -229,7 +181,7 @@ void EffectParameter::SetValue(std::span<const int> values) {
     if (int(values.size()) > total)
         a.fail("SetValue(int[]) with " + std::to_string(values.size()) + " values; the parameter holds " + std::to_string(total));
     a.requireStorage("SetValue(int[])");
-    for (std::size_t k = 0; k < values.size(); ++k) a.write(int(k), values[k]);
+    a.writeFirst(values);
 }
 void EffectParameter::SetValue(std::span<const Vector2> values) {
     Access a = access(effect_, index_);

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "device_impl.h"
+#include "sampler_filter.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/texture.h"
 
@@ -78,21 +79,6 @@ GLenum glAddress(TextureAddressMode m) {
     case TextureAddressMode::Border: return GL_CLAMP_TO_BORDER;
     }
     return GL_REPEAT;
-}
-
-// XNA filter -> (min linear, mag linear, mip linear).
-void filterParts(TextureFilter f, bool& minLinear, bool& magLinear, bool& mipLinear) {
-    switch (f) {
-    case TextureFilter::Linear: minLinear = magLinear = mipLinear = true; return;
-    case TextureFilter::Anisotropic: minLinear = magLinear = mipLinear = true; return;
-    case TextureFilter::Point: minLinear = magLinear = mipLinear = false; return;
-    case TextureFilter::LinearMipPoint: minLinear = magLinear = true; mipLinear = false; return;
-    case TextureFilter::PointMipLinear: minLinear = magLinear = false; mipLinear = true; return;
-    case TextureFilter::MinLinearMagPointMipLinear: minLinear = true; magLinear = false; mipLinear = true; return;
-    case TextureFilter::MinLinearMagPointMipPoint: minLinear = true; magLinear = false; mipLinear = false; return;
-    case TextureFilter::MinPointMagLinearMipLinear: minLinear = false; magLinear = true; mipLinear = true; return;
-    case TextureFilter::MinPointMagLinearMipPoint: minLinear = false; magLinear = true; mipLinear = false; return;
-    }
 }
 
 std::array<float, 4> colorFloats(Color c) {
@@ -241,8 +227,7 @@ GLuint GraphicsDevice::Impl::samplerFor(const SamplerState& s) {
     if (it != samplerObjects.end()) return it->second;
     GLuint sampler = 0;
     glCreateSamplers(1, &sampler);
-    bool minLinear = true, magLinear = true, mipLinear = true;
-    filterParts(s.Filter, minLinear, magLinear, mipLinear);
+    auto [minLinear, magLinear, mipLinear, anisotropic] = splitFilter(s.Filter);
     GLenum minFilter = s.UseMipMaps ? (minLinear ? (mipLinear ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR_MIPMAP_NEAREST)
                                                  : (mipLinear ? GL_NEAREST_MIPMAP_LINEAR : GL_NEAREST_MIPMAP_NEAREST))
                                     : (minLinear ? GL_LINEAR : GL_NEAREST);
@@ -256,7 +241,7 @@ GLuint GraphicsDevice::Impl::samplerFor(const SamplerState& s) {
     if (!s.UseMipMaps) glSamplerParameterf(sampler, GL_TEXTURE_MAX_LOD, float(s.MaxMipLevel));
     const float border[4] = {s.BorderColor.X, s.BorderColor.Y, s.BorderColor.Z, s.BorderColor.W};
     glSamplerParameterfv(sampler, GL_TEXTURE_BORDER_COLOR, border);
-    if (s.Filter == TextureFilter::Anisotropic)
+    if (anisotropic)
         glSamplerParameterf(sampler, GL_TEXTURE_MAX_ANISOTROPY, float(std::max(1, s.MaxAnisotropy)));
     samplerObjects.emplace(std::move(key), sampler);
     return sampler;

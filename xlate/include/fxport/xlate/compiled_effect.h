@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "fxport/xlate/diagnostics.h"
@@ -165,7 +166,7 @@ enum class RenderState : std::uint8_t {
     AlphaTestEnable, AlphaFunc, AlphaRef, SrgbWriteEnable,
 };
 
-// Values of enumerated states (stored as numbers in StateAssignment::value[0]).
+// Values of enumerated states.
 enum class Blend : std::uint8_t {
     Zero, One, SourceColor, InverseSourceColor, SourceAlpha, InverseSourceAlpha,
     DestinationAlpha, InverseDestinationAlpha, DestinationColor, InverseDestinationColor,
@@ -178,15 +179,29 @@ enum class StencilOperation : std::uint8_t { Keep, Zero, Replace, IncrementSatur
 enum class CullMode : std::uint8_t { None, CullClockwiseFace, CullCounterClockwiseFace };
 enum class FillMode : std::uint8_t { Point, WireFrame, Solid };
 
+// A state's value, typed: which alternative a state holds is fixed by the state (see
+// defaultStateValue): bool for the *Enable states, Blend for SrcBlend ..., int for masks, stencil
+// and alpha references, float for the depth biases, a float4 for BlendFactor.
+using StateValue = std::variant<bool, int, float, Blend, BlendFunction, CompareFunction, StencilOperation, CullMode,
+                                FillMode, std::array<float, 4>>;
+
 struct StateAssignment {
     RenderState state = RenderState::AlphaBlendEnable;
-    int index = 0;                       // render-target index for ColorWriteEnable[n] / BlendEnable[n]
-    std::array<double, 4> value{};       // bool/int/enum in value[0]; BlendFactor uses all four
-    // `AlphaRef = <AlphaReference>;`: the value is the named parameter's current value, read at
-    // Apply() (the effect framework's parameter-driven states). Empty for literal values.
-    std::string parameter;
+    int index = 0;                 // render-target index for ColorWriteEnable[n] / BlendEnable[n]
+    StateValue value = false;      // the literal value (of the state's alternative)
+    // `AlphaRef = <AlphaReference>;`: index into CompiledEffect::parameters of the parameter whose
+    // current value the runtime reads at Apply() (the effect framework's parameter-driven states;
+    // converted with stateValueFromD3D9). -1 for literal values.
+    int parameter = -1;
     SourceLocation where;
 };
+
+// The value `state` holds when nothing set it, and so the alternative of StateValue it uses.
+StateValue defaultStateValue(RenderState state);
+// A number as D3D9 stores the state (D3DBLEND/D3DCMPFUNC/D3DCULL ... codes, 0/1 for bools, the
+// value itself for ints and floats) -> the state's typed value; codes D3D9 does not define give
+// the default. For parameter-driven states, whose value is only known at Apply().
+StateValue stateValueFromD3D9(RenderState state, double number);
 
 // A pass's choice of shader: usually one; for `VertexShader = (VSArray[VSIndices[ShaderIndex]])`
 // several, picked at Apply() by evaluating `selector` over the current parameter values.

@@ -10,7 +10,8 @@
 namespace fxport::xlate {
 
 // Format version of the file; bump when the layout changes.
-inline constexpr int kEffectFileVersion = 2;  // 2: uniformBlocks, Parameter::block, ranges per block
+inline constexpr int kEffectFileVersion = 3;  // 2: uniformBlocks, Parameter::block, ranges per block
+                                             // 3: typed pass-state values, parameters by index
 
 // `compact` leaves out the indentation (what the compile cache stores); both forms load alike.
 std::string serializeEffect(const CompiledEffect& effect, bool compact = false);
@@ -23,7 +24,7 @@ CompiledEffect loadEffectFile(const std::string& path);
 
 // "SrcBlend = SourceAlpha", "ColorWriteEnable[1] = 7", "AlphaRef = <AlphaReference>": one state
 // assignment as people read it (for `fxport dump`).
-std::string describeStateAssignment(const StateAssignment& assignment);
+std::string describeStateAssignment(const StateAssignment& assignment, const CompiledEffect& effect);
 
 // Reflection only (no GLSL, no absolute paths): what the golden tests compare, and what
 // `fxport dump --reflection` prints.

@@ -1,0 +1,76 @@
+// INTERNAL: a pass's render states and a shader's sampler states, decoded once when the technique
+// is compiled (xlate's typed rows -> the runtime's own enums, texture parameters -> indices), so
+// that EffectPass::Apply() only copies values: no name look-up, no number -> enum conversion
+// (except for parameter-driven states, whose value is only known at Apply()).
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "fxport/graphics/blend_state.h"
+#include "fxport/graphics/depth_stencil_state.h"
+#include "fxport/graphics/effect.h"
+#include "fxport/graphics/rasterizer_state.h"
+#include "fxport/graphics/sampler_state.h"
+#include "fxport/xlate/compiled_effect.h"
+
+namespace fxport {
+
+class GraphicsDevice;
+
+// One state assignment in runtime types. Only the field that `state` uses is meaningful.
+struct PassStateRow {
+    xlate::RenderState state = xlate::RenderState::AlphaBlendEnable;
+    int index = 0;       // render target of ColorWriteEnable[n]
+    int parameter = -1;  // >= 0: the value is this parameter's, read at Apply()
+    bool flag = false;
+    int integer = 0;
+    float number = 0;
+    Blend blend = Blend::One;
+    BlendFunction function = BlendFunction::Add;
+    CompareFunction compare = CompareFunction::Always;
+    StencilOperation stencil = StencilOperation::Keep;
+    CullMode cull = CullMode::CullCounterClockwiseFace;
+    FillMode fill = FillMode::Solid;
+    Color factor;
+};
+
+// Fills the typed field of `row` from xlate's value for the row's state.
+void setRowValue(PassStateRow& row, const xlate::StateValue& value);
+
+struct PassStates {
+    std::vector<PassStateRow> rows;  // in source order: later rows win
+    bool hasParameterRows = false;
+};
+
+PassStates decodePassStates(const xlate::Pass& pass);
+
+// Sets the rows over the device's BlendState/DepthStencilState/RasterizerState (D3D9 keeps
+// AlphaBlendEnable, SrcBlend ... as separate states; XNA's objects are folded back). Parameter-
+// driven rows read `effect`'s current parameter values.
+void applyPassStates(const PassStates& states, const Effect::Impl& effect, GraphicsDevice& device);
+
+// The effect's sampler_state over the device's SamplerStates[unit]: what the effect specified.
+struct SamplerOverride {
+    std::optional<TextureAddressMode> addressU, addressV, addressW;
+    std::optional<bool> minLinear, magLinear, mipLinear;
+    bool minAnisotropic = false;      // MinFilter = Anisotropic (only meaningful when minLinear is set)
+    std::optional<bool> useMipMaps;   // MipFilter = None -> false
+    std::optional<int> maxAnisotropy, maxMipLevel;
+    std::optional<float> mipLodBias;
+    std::optional<Vector4> borderColor;
+    bool empty = true;
+
+    SamplerState over(SamplerState device) const;
+};
+
+// One texture unit a shader samples, ready for Apply().
+struct SamplerSlot {
+    int unit = 0;
+    int textureParameter = -1;  // index into the effect's parameters; -1: Textures[unit] as set by the host
+    SamplerOverride state;
+};
+
+SamplerOverride decodeSamplerState(const xlate::SamplerStateDesc& desc);
+
+}  // namespace fxport
