@@ -8,7 +8,8 @@
 //   SpriteFont  <name>.spritefont (XNA's XML font description: FontName, Size, Spacing, UseKerning,
 //               Style, DefaultCharacter, CharacterRegions; the font found by fontconfig, or a .ttf
 //               named like FontName beside it), <name>.fnt (BMFont, text format, with its page
-//               PNGs), <name>.ttf / <name>.otf (Size 16 px, printable ASCII + Latin-1, '?' default)
+//               PNGs), <name>.ttf / <name>.otf (XNA's new-SpriteFont template: Size 14 points,
+//               characters 32..126, Spacing 0, no DefaultCharacter); metrics in sprite_font_import.h
 //
 // Search folders: RootDirectory (relative paths are taken from the working directory), and for
 // effects first EffectDirectory when set, where the asset's last path component is used
