@@ -1,5 +1,6 @@
 // SpriteFont: XNA 4's bitmap font (a texture of glyphs plus per-glyph metrics), drawn with
-// SpriteBatch::DrawString. fxport has no content pipeline for fonts yet; createDebugFont makes a
+// SpriteBatch::DrawString. Fonts from files (TrueType, BMFont, XNA .spritefont descriptions) come from
+// ContentManager::Load<SpriteFont> / fxport/framework/sprite_font_import.h; createDebugFont makes a
 // small built-in one (8x8 pixel glyphs of printable ASCII, the public-domain font8x8 / IBM PC BIOS
 // shapes) for on-screen debug text, as the tutorials' "DefaultFont" is used.
 //
