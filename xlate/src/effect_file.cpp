@@ -54,7 +54,10 @@ constexpr Names<FillMode, 3> kFill{{"Point", "WireFrame", "Solid"}};
 
 // A readable rendering of a state's value (the file stores numbers; this is for people).
 std::string valueName(const StateAssignment& s) {
-    int v = static_cast<int>(s.value[0]);
+    // Values come from the effect (ColorWriteEnable, a sample mask of 0xFFFFFFFF): only small ones
+    // name an enum member, and converting a double beyond int's range would be undefined.
+    double raw = s.value[0];
+    int v = raw >= -1024 && raw <= 1024 ? static_cast<int>(raw) : -1;
     switch (s.state) {
     case RenderState::SrcBlend: case RenderState::DestBlend: case RenderState::SrcBlendAlpha: case RenderState::DestBlendAlpha:
         return kBlend.of(static_cast<Blend>(v));
