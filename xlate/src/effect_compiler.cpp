@@ -624,6 +624,14 @@ CompiledEffect compileEffectFile(const std::string& path, const CompileOptions& 
         d.location = {path, 0, 0};
         throw CompileError({d});
     }
+    if (auto size = fs::file_size(path, ec); !ec && size > limits::kMaxFileBytes) {
+        Diagnostic d;  // said before reading it: a file of gigabytes is not read into memory
+        d.id = diag::kInputTooLarge;
+        d.message = "the file has " + std::to_string(size) + " bytes; fxport compiles source files of at most " +
+                    std::to_string(limits::kMaxFileBytes >> 20) + " MiB";
+        d.location = {path, 0, 0};
+        throw CompileError({d});
+    }
     auto text = readFile(path);
     if (!text) {
         Diagnostic d;

@@ -233,6 +233,11 @@ private:
                 failures[header] = {diag::kIncludeCycle, "include cycle: '" + header + "' includes itself (directly or through other files)"};
                 return nullptr;
             }
+        if (auto size = fs::file_size(canonical, ec); !ec && size > limits::kMaxFileBytes) {
+            failures[header] = {diag::kInputTooLarge, "include file '" + header + "' has " + std::to_string(size) +
+                                                          " bytes; fxport compiles source files of at most " + std::to_string(limits::kMaxFileBytes >> 20) + " MiB"};
+            return nullptr;
+        }
         auto text = readFile(canonical.string());
         if (!text) {
             failures[header] = {diag::kFileUnreadable, "cannot read include file '" + header + "'"};
