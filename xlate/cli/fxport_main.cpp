@@ -5,10 +5,13 @@
 //   --root DIR: `#include "../x.fxh"` may reach files inside DIR (default: the effect's folder, or
 //   the folder `check` scans)
 // Exit status: 0 success, 1 an effect failed to compile, 2 bad usage.
+#include <unistd.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -37,6 +40,43 @@ struct Args {
     bool showWarnings = false;
 };
 
+// A -D's name is a macro name, optionally with a parameter list; neither part may hold a line
+// break (it would start a directive of its own in the preamble).
+bool validDefine(const std::string& name, const std::string& body) {
+    if (name.empty() || !(std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_')) return false;
+    size_t i = 0;
+    while (i < name.size() && (std::isalnum(static_cast<unsigned char>(name[i])) || name[i] == '_')) ++i;
+    bool paramsOk = i == name.size() || (name[i] == '(' && name.back() == ')' && name.find_first_of("()", i + 1) == name.size() - 1);
+    return paramsOk && name.find_first_of("\r\n") == std::string::npos && body.find_first_of("\r\n") == std::string::npos;
+}
+
+// Writes `text` to `path` through a temporary file in the same folder, renamed over `path` only
+// once complete: a compile killed mid-write leaves the previous output, never half a file.
+bool writeAtomically(const std::string& path, const std::string& text, std::string& error) {
+    fs::path target(path);
+    fs::path tmp = target;
+    tmp += ".tmp" + std::to_string(::getpid());
+    {
+        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+        if (out) out.write(text.data(), static_cast<std::streamsize>(text.size()));
+        out.flush();
+        if (!out) {
+            std::error_code ec;
+            fs::remove(tmp, ec);
+            error = "cannot write '" + path + "'";
+            return false;
+        }
+    }
+    std::error_code ec;
+    fs::rename(tmp, target, ec);
+    if (ec) {
+        fs::remove(tmp, ec);
+        error = "cannot write '" + path + "' (" + ec.message() + ")";
+        return false;
+    }
+    return true;
+}
+
 bool parseArgs(int argc, char** argv, Args& a, std::string& error) {
     if (argc < 2) {
         error = "missing command";
@@ -60,11 +100,21 @@ bool parseArgs(int argc, char** argv, Args& a, std::string& error) {
         std::string v;
         if (s.rfind("-I", 0) == 0) {
             if (!value(v)) return false;
+            std::error_code ec;
+            if (!fs::is_directory(v, ec)) {
+                error = "option -I: '" + v + "' is not a folder";
+                return false;
+            }
             a.options.includeDirs.push_back(v);
         } else if (s.rfind("-D", 0) == 0) {
             if (!value(v)) return false;
             auto eq = v.find('=');
-            a.options.defines.push_back({v.substr(0, eq), eq == std::string::npos ? "1" : v.substr(eq + 1)});
+            std::string name = v.substr(0, eq), body = eq == std::string::npos ? "1" : v.substr(eq + 1);
+            if (!validDefine(name, body)) {
+                error = "option -D: '" + v + "' is not NAME, NAME=VALUE or NAME(ARGS)=VALUE";
+                return false;
+            }
+            a.options.defines.push_back({name, body});
         } else if (s.rfind("-o", 0) == 0) {
             if (!value(a.output)) return false;
         } else if (s == "--root") {
@@ -205,9 +255,18 @@ int main(int argc, char** argv) {
                 std::cerr << "fxport: compile needs one input and -o OUT\n" << kUsage;
                 return 2;
             }
+            std::error_code ec;
+            if (fs::exists(a.output, ec) && fs::equivalent(a.inputs[0], a.output, ec)) {
+                std::cerr << "fxport: option -o: '" << a.output << "' is the input effect; name another file\n";
+                return 2;
+            }
             CompiledEffect e = compileEffectFile(a.inputs[0], a.options);
             printDiagnostics(e.diagnostics, true);
-            saveEffectFile(e, a.output);
+            std::string writeError;
+            if (!writeAtomically(a.output, serializeEffect(e), writeError)) {
+                std::cerr << "fxport: " << writeError << "\n";
+                return 1;
+            }
             return 0;
         }
         if (a.command == "dump") {

@@ -1,6 +1,9 @@
+// Evaluates parameter initialisers (see constant_eval.h) by recursive descent, nesting bounded.
 #include "constant_eval.h"
 
 #include <cstdlib>
+
+#include "input_limits.h"
 
 #include "text_util.h"
 
@@ -18,11 +21,25 @@ public:
         if (!v || pos_ != end_) return std::nullopt;
         return v;
     }
+    bool tooDeep() const { return tooDeep_; }
 
 private:
     const EffectSyntax& syntax_;
     size_t pos_, end_;
     const std::map<std::string, std::vector<double>>& known_;
+    // Every level of ( or { is one level of recursion here: bounded, so that 30 000
+    // nested parentheses are a diagnostic and not a stack overflow.
+    int depth_ = 0;
+    bool tooDeep_ = false;
+    struct Level {
+        Evaluator& e;
+        explicit Level(Evaluator& ev) : e(ev) {
+            if (++e.depth_ > limits::kMaxNesting + 1) e.tooDeep_ = true;  // + 1: the initializer itself
+        }
+        ~Level() { --e.depth_; }
+        Level(const Level&) = delete;
+        Level& operator=(const Level&) = delete;
+    };
 
     const Token* cur() const { return pos_ < end_ ? &syntax_.tokens[pos_] : nullptr; }
     bool accept(const char* p) {
@@ -45,6 +62,8 @@ private:
     }
 
     std::optional<std::vector<double>> expression() {
+        Level level(*this);
+        if (tooDeep_) return std::nullopt;
         auto left = term();
         while (left && cur() && (cur()->is("+") || cur()->is("-"))) {
             char op = cur()->text[0];
@@ -67,14 +86,15 @@ private:
         return left;
     }
     std::optional<std::vector<double>> unary() {
-        if (accept("-")) {
-            auto v = unary();
-            if (v)
-                for (double& x : *v) x = -x;
-            return v;
+        bool negate = false;  // a loop, not recursion: `- - - 1` costs no stack
+        for (;;) {
+            if (accept("-")) negate = !negate;
+            else if (!accept("+")) break;
         }
-        if (accept("+")) return unary();
-        return primary();
+        auto v = primary();
+        if (v && negate)
+            for (double& x : *v) x = -x;
+        return v;
     }
     std::optional<std::vector<double>> list(const char* close) {
         std::vector<double> all;
@@ -134,8 +154,11 @@ private:
 }  // namespace
 
 std::optional<std::vector<double>> evaluateConstant(const EffectSyntax& syntax, TokenSpan span,
-                                                    const std::map<std::string, std::vector<double>>& known) {
-    return Evaluator(syntax, span, known).run();
+                                                    const std::map<std::string, std::vector<double>>& known, bool* tooDeep) {
+    Evaluator evaluator(syntax, span, known);
+    auto value = evaluator.run();
+    if (tooDeep) *tooDeep = evaluator.tooDeep();
+    return value;
 }
 
 }  // namespace fxport::xlate

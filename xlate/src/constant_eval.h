@@ -13,7 +13,10 @@
 
 namespace fxport::xlate {
 
+// `tooDeep`, when given, is set when the expression nests deeper than limits::kMaxNesting (the
+// result is then nullopt).
 std::optional<std::vector<double>> evaluateConstant(const EffectSyntax& syntax, TokenSpan span,
-                                                    const std::map<std::string, std::vector<double>>& known);
+                                                    const std::map<std::string, std::vector<double>>& known,
+                                                    bool* tooDeep = nullptr);
 
 }  // namespace fxport::xlate

@@ -19,6 +19,8 @@
 #include "fx_syntax.h"
 #include "hlsl_to_spirv.h"
 #include "implicit_conversions.h"
+
+#include "input_limits.h"
 #include "preprocess.h"
 #include "render_states.h"
 #include "shader_profile.h"
@@ -141,6 +143,12 @@ void EffectBuilder::buildParameters() {
         p.isStatic = isStatic;
         p.declaredAt = pre_.map.locate(syntax_.tokens[g.token].line, syntax_.tokens[g.token].column, g.name);
         p.elements = g.arrayDims.empty() ? 0 : g.arrayDims[0];
+        if (long long n = arrayElementCount(g.arrayDims); n > limits::kMaxArrayElements) {
+            error(diag::kArrayTooLarge, "array '" + g.name + "' has " + std::to_string(n) + " elements; fxport accepts at most " +
+                                            std::to_string(limits::kMaxArrayElements) + " in one array",
+                  g.token);
+            continue;
+        }
         p.rowMajor = std::find(g.modifiers.begin(), g.modifiers.end(), "row_major") != g.modifiers.end();
         if (g.isStringParameter) {
             p.parameterClass = ParameterClass::Object;
@@ -159,6 +167,10 @@ void EffectBuilder::buildParameters() {
                 mp.rows = b.rows;
                 mp.columns = b.columns;
                 mp.elements = m.arrayDims.empty() ? 0 : m.arrayDims[0];
+                if (long long n = arrayElementCount(m.arrayDims); n > limits::kMaxArrayElements)
+                    error(diag::kArrayTooLarge, "member '" + m.name + "' of struct '" + s->name + "' has " + std::to_string(n) +
+                                                    " elements; fxport accepts at most " + std::to_string(limits::kMaxArrayElements) + " in one array",
+                          g.token);
                 p.members.push_back(mp);
             }
         } else {
@@ -173,7 +185,12 @@ void EffectBuilder::buildParameters() {
             p.rows = b.rows;
             p.columns = b.columns;
             if (!g.initializer.empty()) {
-                if (auto v = evaluateConstant(syntax_, g.initializer, constants)) {
+                bool tooDeep = false;
+                auto v = evaluateConstant(syntax_, g.initializer, constants, &tooDeep);
+                if (tooDeep)
+                    error(diag::kNestingTooDeep, "the initializer of '" + g.name + "' nests more than " + std::to_string(limits::kMaxNesting) +
+                                                     " levels deep, the most fxport evaluates", g.token);
+                if (v) {
                     size_t want = static_cast<size_t>(b.rows * b.columns * std::max(1, p.elements));
                     if (v->size() == 1 && want > 1) v->assign(want, (*v)[0]);  // `float4 c = 0;`
                     p.defaultValue = *v;
@@ -742,6 +759,14 @@ CompiledEffect compileEffectFile(const std::string& path, const CompileOptions& 
         Diagnostic d;
         d.id = diag::kFileUnreadable;
         d.message = "'" + path + "' is a folder, not an effect file";
+        d.location = {path, 0, 0};
+        throw CompileError({d});
+    }
+    if (auto size = fs::file_size(path, ec); !ec && size > limits::kMaxFileBytes) {
+        Diagnostic d;  // said before reading it: a file of gigabytes is not read into memory
+        d.id = diag::kInputTooLarge;
+        d.message = "the file has " + std::to_string(size) + " bytes; fxport compiles source files of at most " +
+                    std::to_string(limits::kMaxFileBytes >> 20) + " MiB";
         d.location = {path, 0, 0};
         throw CompileError({d});
     }

@@ -3,6 +3,7 @@
 // variables, annotations, string parameters), and marks those byte ranges for removal. Everything it
 // does not recognise as effect syntax is left for glslang, which is the authority on plain HLSL.
 #include <algorithm>
+#include <climits>
 #include <cstdlib>
 #include <map>
 #include <set>
@@ -461,8 +462,7 @@ private:
         std::vector<int> dims;
         while (cur().is("[")) {
             size_t after = skipGroup(pos_, "array size");
-            dims.push_back(after == pos_ + 2 ? 0 : std::atoi(tok(pos_ + 1).text.c_str()));
-            if (after > pos_ + 3) dims.back() = evaluateIntExpression({pos_ + 1, after - 1});
+            dims.push_back(after == pos_ + 2 ? 0 : evaluateIntExpression({pos_ + 1, after - 1}));
             pos_ = after;
         }
         return dims;
@@ -470,13 +470,20 @@ private:
 
     int evaluateIntExpression(TokenSpan span) {
         // Array sizes are usually literals; simple products like [4*2] are evaluated, others -> 0.
-        long value = 0;
+        // Saturates at INT_MAX rather than overflowing: a size too large for an int is reported as
+        // too large (FX1204) by the compiler, never wrapped into a small or negative one.
+        long long value = 0;
         char op = '+';
         for (size_t i = span.begin; i < span.end; ++i) {
             const Token& t = tok(i);
             if (t.kind == Token::Kind::Number) {
-                long v = std::strtol(t.text.c_str(), nullptr, 0);
-                value = op == '+' ? value + v : op == '-' ? value - v : op == '*' ? value * v : v ? value / v : 0;
+                long long v = std::min<long long>(std::strtoll(t.text.c_str(), nullptr, 0), INT_MAX);
+                long long r = 0;
+                bool overflow = op == '+'   ? __builtin_add_overflow(value, v, &r)
+                                : op == '-' ? __builtin_sub_overflow(value, v, &r)
+                                : op == '*' ? __builtin_mul_overflow(value, v, &r)
+                                            : (r = v ? value / v : 0, false);
+                value = overflow ? INT_MAX : std::clamp<long long>(r, INT_MIN, INT_MAX);
             } else if (t.text.size() == 1 && std::string("+-*/").find(t.text[0]) != std::string::npos) {
                 op = t.text[0];
             } else {

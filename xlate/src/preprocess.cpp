@@ -7,10 +7,12 @@
 #include <map>
 #include <optional>
 #include <regex>
+#include <set>
 
 #include "d3d9_asm.h"
 #include "glslang_process.h"
 #include "text_encoding.h"
+#include "input_limits.h"
 #include "text_util.h"
 
 namespace fs = std::filesystem;
@@ -182,6 +184,10 @@ public:
 
     // Why each failed include failed, keyed by header name as written.
     std::map<std::string, std::pair<const char*, std::string>> failures;
+    // A limit (input_limits.h) an include broke, located inside it: reported instead of glslang's
+    // "could not process include" at the directive.
+    std::optional<Diagnostic> limitProblem;
+    size_t totalBytes = 0;  // of every file read, the effect's included
     std::vector<std::pair<std::string, std::string>> loaded;  // (display, text)
     std::vector<IncludeDependency> dependencies;
     std::vector<Diagnostic> warnings;
@@ -198,15 +204,20 @@ private:
         // depth); the includer is the innermost one.
         chain_.resize(depth);
         if (depth >= 1) chain_[depth - 1] = {includerAbs, includer};
+        if (depth + 1 > limits::kMaxIncludeDepth || ++includesFollowed_ > limits::kMaxIncludeFiles) {
+            failures[header] = {diag::kIncludeLimit, depth + 1 > limits::kMaxIncludeDepth
+                                                         ? "#include nested more than " + std::to_string(limits::kMaxIncludeDepth) + " files deep, the most fxport follows"
+                                                         : "more than " + std::to_string(limits::kMaxIncludeFiles) + " #include directives, the most fxport follows for one effect"};
+            return nullptr;
+        }
 
         // fxc's search order for #include "file": the including file's folder, then the folders of
         // the other files that are open, innermost first (ending with the effect's own folder),
         // then the include folders. A file found outside the allowed roots is passed over.
         std::vector<std::pair<fs::path, std::string>> searchDirs;  // (absolute dir, display dir)
+        std::set<fs::path> seenDirs;
         auto addDir = [&](const fs::path& dir, const std::string& displayDir) {
-            for (const auto& d : searchDirs)
-                if (d.first == dir) return;
-            searchDirs.push_back({dir, displayDir});
+            if (seenDirs.insert(dir).second) searchDirs.push_back({dir, displayDir});
         };
         for (size_t d = chain_.size(); d-- > 0;)
             if (!chain_[d].first.empty()) addDir(chain_[d].first.parent_path(), fs::path(chain_[d].second).parent_path().string());
@@ -253,14 +264,32 @@ private:
                                 "' beside the including file, the other open files, the effect or in the include folders"};
             return nullptr;
         }
+        // The chain's paths are canonical already (displayToAbsolute_ holds only canonical ones):
+        // comparing them costs no file-system call, so a long include chain stays linear.
         for (const auto& p : chain_)
-            if (!p.first.empty() && fs::weakly_canonical(p.first, ec) == canonical) {
+            if (!p.first.empty() && p.first == canonical) {
                 failures[header] = {diag::kIncludeCycle, "include cycle: '" + header + "' includes itself (directly or through other files)"};
                 return nullptr;
             }
+        if (auto size = fs::file_size(canonical, ec); !ec && size > limits::kMaxFileBytes) {
+            failures[header] = {diag::kInputTooLarge, "include file '" + header + "' has " + std::to_string(size) +
+                                                          " bytes; fxport compiles source files of at most " + std::to_string(limits::kMaxFileBytes >> 20) + " MiB"};
+            return nullptr;
+        }
         auto text = readFile(canonical.string());
         if (!text) {
             failures[header] = {diag::kFileUnreadable, "cannot read include file '" + header + "'"};
+            return nullptr;
+        }
+        totalBytes += text->size();
+        if (auto problem = checkSourceText(*text, display)) {
+            if (!limitProblem) limitProblem = std::move(problem);  // thrown as is when glslang gives up
+            failures[header] = {diag::kPreprocessor, "include file '" + header + "' is beyond fxport's limits"};
+            return nullptr;
+        }
+        if (totalBytes > limits::kMaxTotalBytes) {
+            failures[header] = {diag::kInputTooLarge, "the effect and its includes have more than " + std::to_string(limits::kMaxTotalBytes >> 20) +
+                                                          " MiB of source, the most fxport compiles"};
             return nullptr;
         }
         displayToAbsolute_[display] = canonical;
@@ -277,6 +306,7 @@ private:
     std::optional<Root> extraAllowed_;
     std::map<std::string, fs::path> displayToAbsolute_;
     std::vector<std::pair<fs::path, std::string>> chain_;  // open files: (absolute, display)
+    size_t includesFollowed_ = 0;
 };
 
 }  // namespace
@@ -286,6 +316,7 @@ PreprocessedEffect preprocessEffect(const std::string& rawSource, const std::str
     ensureGlslangInitialized();
     std::string source = sourceTextAsUtf8(rawSource);  // BOM / UTF-16: fxc reads them all
     checkIsText(source, displayPath);
+    if (auto problem = checkSourceText(source, displayPath)) throw CompileError({*problem});
     std::vector<Diagnostic> lineWarnings;
     prepareSourceText(source, displayPath, lineWarnings);
 
@@ -299,6 +330,7 @@ PreprocessedEffect preprocessEffect(const std::string& rawSource, const std::str
     std::optional<RestrictedIncluder::Root> includeRoot;
     if (!options.includeRoot.empty()) includeRoot = RestrictedIncluder::Root{fs::weakly_canonical(fs::absolute(options.includeRoot, ec), ec), options.includeRoot};
     RestrictedIncluder includer(roots, includeRoot, displayPath, rootAbs);
+    includer.totalBytes = source.size();
     std::string preamble = "#define FXPORT 1\n";
     for (const auto& [name, value] : options.defines) preamble += "#define " + name + " " + value + "\n";
 
@@ -320,6 +352,7 @@ PreprocessedEffect preprocessEffect(const std::string& rawSource, const std::str
     result.dependencies = std::move(includer.dependencies);
     result.warnings = std::move(lineWarnings);
     result.warnings.insert(result.warnings.end(), includer.warnings.begin(), includer.warnings.end());
+    if (!ok && includer.limitProblem) throw CompileError({*includer.limitProblem});
     if (!ok) {
         // glslang reports "ERROR: file:line: 'token' : message"; lines here are ORIGINAL lines.
         std::vector<Diagnostic> diags;
@@ -368,7 +401,21 @@ PreprocessedEffect preprocessEffect(const std::string& rawSource, const std::str
         }
         throw CompileError(std::move(diags));
     }
+    if (output.size() > limits::kMaxPreprocessedBytes) {
+        Diagnostic d;
+        d.id = diag::kMacroLimit;
+        d.message = "macro expansion makes the effect " + std::to_string(output.size() >> 20) + " MiB long; fxport compiles at most " +
+                    std::to_string(limits::kMaxPreprocessedBytes >> 20) + " MiB after preprocessing";
+        d.location = {displayPath, 0, 0};
+        throw CompileError({d});
+    }
     result.text = result.map.build(output, displayPath);
+    // Macros can nest brackets that no file shows (`#define P(x) (x)` called through other macros).
+    if (auto p = findNestingPastLimit(result.text))
+        throw CompileError({result.map.make(Severity::Error, diag::kNestingTooDeep,
+                                            "after macro expansion, brackets are nested more than " + std::to_string(limits::kMaxNesting) +
+                                                " levels deep here, the most fxport accepts",
+                                            p->line, p->column)});
     return result;
 }
 

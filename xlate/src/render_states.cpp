@@ -172,7 +172,7 @@ struct ValueReader {
         auto it = table.names.find(normalizeEnumName(*s));
         if (it != table.names.end()) return it->second;
         auto n = number();
-        if (n) {
+        if (n && *n >= -1024 && *n <= 1024) {  // converting a double beyond int's range is undefined
             auto c = table.d3d9Codes.find(static_cast<int>(*n));
             if (c != table.d3d9Codes.end()) return c->second;
         }

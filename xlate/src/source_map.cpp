@@ -1,6 +1,7 @@
 #include "source_map.h"
 
 #include <algorithm>
+#include <climits>
 #include <cstdlib>
 #include <sstream>
 
@@ -50,10 +51,11 @@ std::string SourceMap::build(const std::string& preprocessed, const std::string&
                 }
             }
             lines_.push_back({current, 0});
-            nextLine = static_cast<int>(n);
+            nextLine = static_cast<int>(std::clamp<long>(n, 0, INT_MAX));  // input_limits rejects #line past INT_MAX
             out.append("\n");
         } else {
-            lines_.push_back({current, nextLine++});
+            lines_.push_back({current, nextLine});
+            if (nextLine < INT_MAX) ++nextLine;
             out.append(line);
             out.append("\n");
         }

@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -61,6 +62,10 @@ std::string toValidUtf8(std::string_view s) {
 }
 
 std::optional<std::string> readFile(const std::string& path) {
+    // Regular files only: a FIFO or a device named by an #include (or a damaged cache entry) would
+    // block or never end.
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) return std::nullopt;
     std::ifstream in(path, std::ios::binary);
     if (!in) return std::nullopt;
     std::ostringstream ss;

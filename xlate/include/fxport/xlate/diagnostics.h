@@ -42,6 +42,16 @@ inline constexpr const char* kImplicitConversion = "FX2002";  // fxc's implicit 
 inline constexpr const char* kSpirv = "FX2101";               // SPIR-V optimisation / cross-compilation failed
 inline constexpr const char* kCache = "FX3001";               // cache read/write problem (warning)
 inline constexpr const char* kEffectFile = "FX3101";          // compiled-effect file unreadable or wrong version
+// Limits on what one effect may cost (docs/limits.md lists the values).
+inline constexpr const char* kInputTooLarge = "FX1005";       // a source file (or all of them) larger than the limit
+inline constexpr const char* kIncludeLimit = "FX1105";        // #include nested too deep or too many files
+inline constexpr const char* kMacroLimit = "FX1106";          // macro expansion too large, or preprocessing ran out of time/memory
+inline constexpr const char* kNestingTooDeep = "FX1203";      // ( [ { nested deeper than the limit
+inline constexpr const char* kArrayTooLarge = "FX1204";       // an array with more elements than the limit
+// The HLSL front end (glslang + SPIRV-Cross) runs in a worker process; what it could not survive:
+inline constexpr const char* kFrontEndCrashed = "FX9001";     // the worker died (a crash inside glslang/SPIRV-Cross)
+inline constexpr const char* kFrontEndTimeout = "FX9002";     // the worker ran past its time limit
+inline constexpr const char* kFrontEndMemory = "FX9003";      // the worker ran past its memory limit
 }  // namespace diag
 
 struct Diagnostic {

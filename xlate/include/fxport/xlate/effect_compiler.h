@@ -48,6 +48,11 @@ struct CompileOptions {
     // entry signatures are still checked. What the runtime loads so that an effect's shaders are
     // compiled only when one of its passes is first applied (then with `techniques` = that one).
     bool skipShaders = false;
+    // Run the HLSL front end (preprocessing, glslang, SPIRV-Cross) in this process. By default a
+    // compile that misses the cache runs in a forked worker process with time and memory limits,
+    // so that a crash inside glslang on a malformed effect becomes a diagnostic (FX9001-FX9003)
+    // instead of taking the caller down. The fuzzers set this to find such crashes.
+    bool inProcess = false;
 };
 
 // Compiles a file. Throws CompileError for fatal problems.
