@@ -1,13 +1,23 @@
-// Each pass of the deferred demo (hlsl/xna-deferred, set up as demo/deferred does) rendered headless
+// Each pass of the deferred demo (hlsl/xna-deferred) rendered headless
 // at 96x64 from fixed synthetic inputs, read back, and compared pixel by pixel with an independent
 // double-precision CPU reference of the same HLSL (deferred_reference.h) evaluated on the same
 // input texels under D3D9's sampling and pixel-centre rules (d3d9_sampling.h, scene_geometry.h).
 // Bounds: render_harness.h; the per-pixel slack: reference_eval.h. Each test prints its max / RMS
 // error ("[render] ..." lines) and records them as test properties.
+//
+// The passes that run on the renderer's own targets are run by the shipped code itself: the demo's
+// DeferredRenderer (ClearGBuffer, MakeLightMap with a directional light, MakeFinal) and SSAO
+// (BlurSSAO, Compose), one pass at a time on inputs uploaded into their targets. The passes that
+// draw the tests' own meshes (GBuffer, the shadow maps, the spot and point light volumes) and SSAO
+// (which samples the content's random-normal texture) still go through gpu_passes.h, a copy of
+// the demo's code written for those meshes.
 #include <gtest/gtest.h>
 
 #include <memory>
 
+#include "deferred/Lights/light_manager.h"
+#include "deferred/deferred_renderer.h"
+#include "deferred/ssao.h"
 #include "reference/deferred_reference.h"
 #include "deferred_scene.h"
 #include "gpu_passes.h"
@@ -44,7 +54,7 @@ struct PassInputs {
     CpuCube pointShadow;
     TextureCube pointShadowGpu;
     CpuTexture randomNormals, lightMap, ssao, sceneImage;
-    Texture2D randomNormalsGpu, lightMapGpu, ssaoGpu, sceneImageGpu;
+    Texture2D randomNormalsGpu;
 
     explicit PassInputs(GraphicsDevice& d)
         : device(d), camera(makeCamera(Vector3(0, 9, 17), Vector3(0, 1.5f, 0), kWidth, kHeight)),
@@ -56,9 +66,7 @@ struct PassInputs {
           cookieGpu(d, 32, 32, false, SurfaceFormat::Color), pointShadow(makePointShadowCube(scene, point)),
           pointShadowGpu(d, 32, false, SurfaceFormat::Single), randomNormals(makeRandomNormals(16)),
           lightMap(makeLightMapImage(kWidth, kHeight)), ssao(makeSsaoImage(kWidth, kHeight)),
-          sceneImage(makeSceneImage(kWidth, kHeight)), randomNormalsGpu(d, 16, 16, false, SurfaceFormat::Color),
-          lightMapGpu(d, kWidth, kHeight, false, SurfaceFormat::Color), ssaoGpu(d, kWidth, kHeight, false, SurfaceFormat::Color),
-          sceneImageGpu(d, kWidth, kHeight, false, SurfaceFormat::Color) {
+          sceneImage(makeSceneImage(kWidth, kHeight)), randomNormalsGpu(d, 16, 16, false, SurfaceFormat::Color) {
         upload(albedoMap, materials.albedo);
         upload(normalMap, materials.normal);
         upload(specularMap, materials.specular);
@@ -69,13 +77,39 @@ struct PassInputs {
         upload(cookieGpu, cookie);
         for (int f = 0; f < 6; ++f) upload(pointShadowGpu, CubeMapFace(f), pointShadow.faces[std::size_t(f)]);
         upload(randomNormalsGpu, randomNormals);
-        upload(lightMapGpu, lightMap);
-        upload(ssaoGpu, ssao);
-        upload(sceneImageGpu, sceneImage);
     }
 
     GBufferTextures gbufferTextures() const { return {&gbuffer.albedo, &gbuffer.normals, &gbuffer.depth}; }
     View3D cameraView() const { return makeView(toM4(camera.View), toM4(camera.Projection), kWidth, kHeight); }
+};
+
+// A BaseCamera with the test camera's matrices (the renderer reads View, Projection, Position).
+struct FixedCamera : TheCansinDeferredRenderer::BaseCamera {
+    explicit FixedCamera(const TestCamera& c) {
+        Position = c.Position;
+        View = c.View;
+        Projection = c.Projection;
+        FieldOfView = c.FieldOfView;
+        AspectRatio = c.AspectRatio;
+        NearPlane = c.NearPlane;
+        FarPlane = c.FarPlane;
+    }
+};
+
+// The shipped renderer and SSAO of demo/deferred at the tests' size, with the effects from hlsl/
+// and the content from the build's content/ (SSAO loads its random normals), made once.
+struct ShippedRenderer {
+    fxport::demo::ContentManager content;
+    std::unique_ptr<TheCansinDeferredRenderer::DeferredRenderer> renderer;
+    std::unique_ptr<TheCansinDeferredRenderer::SSAO> ssao;
+    explicit ShippedRenderer(GraphicsDevice& device) {
+        content.setGraphicsDevice(&device);
+        content.RootDirectory = FXPORT_CONTENT_DIR;
+        content.EffectDirectory = std::string(FXPORT_HLSL_DIR) + "/xna-deferred";
+        renderer = std::make_unique<TheCansinDeferredRenderer::DeferredRenderer>(device, content, kWidth, kHeight);
+        ssao = std::make_unique<TheCansinDeferredRenderer::SSAO>(device, content, kWidth, kHeight);
+    }
+    RenderTarget2D& gbuffer(int i) const { return *static_cast<RenderTarget2D*>(renderer->getGBuffer()[std::size_t(i)].RenderTarget); }
 };
 
 class DeferredPasses : public ::testing::Test {
@@ -83,6 +117,16 @@ protected:
     static PassInputs& in() {
         static std::unique_ptr<PassInputs> inputs = std::make_unique<PassInputs>(test::testDevice());
         return *inputs;
+    }
+    static ShippedRenderer& shipped() {
+        static std::unique_ptr<ShippedRenderer> r = std::make_unique<ShippedRenderer>(test::testDevice());
+        return *r;
+    }
+    // The inputs' G-buffer, in the renderer's own G-buffer targets.
+    static void uploadGBuffer(ShippedRenderer& r, const PassInputs& s) {
+        upload(r.gbuffer(0), s.gbuffer.albedo);
+        upload(r.gbuffer(1), s.gbuffer.normals);
+        upload(r.gbuffer(2), s.gbuffer.depth);
     }
     void TearDown() override { resetDevice(device); }
 
@@ -194,21 +238,18 @@ protected:
 };
 
 TEST_F(DeferredPasses, Clear) {
-    RenderTarget2D g0(device, kWidth, kHeight, false, SurfaceFormat::Rgba64, DepthFormat::Depth24Stencil8);
-    RenderTarget2D g1(device, kWidth, kHeight, false, SurfaceFormat::Rgba64, DepthFormat::Depth24Stencil8);
-    RenderTarget2D g2(device, kWidth, kHeight, false, SurfaceFormat::Vector2, DepthFormat::Depth24Stencil8);
+    ShippedRenderer& r = shipped();
     // Start from something else than the clear values.
-    for (RenderTarget2D* t : {&g0, &g1, &g2}) {
-        device.SetRenderTarget(t);
+    for (int t = 0; t < 3; ++t) {
+        device.SetRenderTarget(&r.gbuffer(t));
         device.Clear(ClearOptions::Target | ClearOptions::DepthBuffer, Vector4(0.25f, 0.75f, 0.125f, 0.625f), 1.0f, 0);
     }
-    clearGBuffer(device, {RenderTargetBinding(g0), RenderTargetBinding(g1), RenderTargetBinding(g2)});
+    r.renderer->ClearGBuffer(device);
     device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
-    RenderTarget2D* targets[3] = {&g0, &g1, &g2};
     const char* names[3] = {"Clear.Albedo", "Clear.Normals", "Clear.Depth"};
     for (int t = 0; t < 3; ++t) {
-        RefImage ref = referenceImage(kWidth, kHeight, targets[t]->Format(), false, [&](Eval&, PixelPos) { return clearPixel(t); });
-        check(names[t], readBack(*targets[t]), ref);
+        RefImage ref = referenceImage(kWidth, kHeight, r.gbuffer(t).Format(), false, [&](Eval&, PixelPos) { return clearPixel(t); });
+        check(names[t], readBack(r.gbuffer(t)), ref);
     }
 }
 
@@ -297,11 +338,15 @@ TEST_F(DeferredPasses, DepthWriterPointCubeShadowMap) {
 
 TEST_F(DeferredPasses, DirectionalLight) {
     PassInputs& s = in();
-    RenderTarget2D lightMap(device, kWidth, kHeight, false, SurfaceFormat::Color, DepthFormat::Depth24Stencil8);
-    beginLightMap(device, lightMap, s.gbuffer0, s.gbuffer1, s.gbuffer2);
-    drawDirectionalLight(device, s.camera, s.directional, s.size);
-    endLightMap(device);
+    ShippedRenderer& r = shipped();
+    uploadGBuffer(r, s);
+    TheCansinDeferredRenderer::Lights::LightManager lights(r.content);
+    lights.AddLight(std::make_unique<TheCansinDeferredRenderer::Lights::DirectionalLight>(
+        s.directional.Direction, s.directional.Color, s.directional.Intensity));
+    FixedCamera camera(s.camera);
+    r.renderer->MakeLightMap(device, lights, camera);
     device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+    ASSERT_EQ(r.renderer->getFrameStats().directionalLightsDrawn, 1);
 
     DirectionalLightParams q;
     q.inverseViewProjection = toM4(Matrix::Invert(s.camera.View * s.camera.Projection));
@@ -314,7 +359,7 @@ TEST_F(DeferredPasses, DirectionalLight) {
     GBufferTextures gb = s.gbufferTextures();
     RefImage ref = referenceImage(kWidth, kHeight, SurfaceFormat::Color, false,
                                   [&](Eval& ev, PixelPos p) { return directionalLightPixel(ev, gb, q, p); });
-    check("DirectionalLight", readBack(lightMap), ref);
+    check("DirectionalLight", readBack(r.renderer->getLightMap()), ref);
 }
 
 TEST_F(DeferredPasses, SpotLightWithoutShadows) { spotTest("SpotLight.NoShadows", false); }
@@ -324,8 +369,11 @@ TEST_F(DeferredPasses, PointLightWithCubeShadows) { pointTest("PointLight.Shadow
 
 TEST_F(DeferredPasses, Composition) {
     PassInputs& s = in();
+    ShippedRenderer& r = shipped();
+    upload(r.gbuffer(0), s.gbuffer.albedo);
+    upload(r.renderer->getLightMap(), s.lightMap);
     RenderTarget2D scene(device, kWidth, kHeight, false, SurfaceFormat::Color, DepthFormat::Depth24Stencil8);
-    composeScene(device, scene, s.gbuffer0, s.lightMapGpu, s.size);
+    r.renderer->MakeFinal(device, &scene);
     device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
     RefImage ref = referenceImage(kWidth, kHeight, SurfaceFormat::Color, false, [&](Eval& ev, PixelPos p) {
         return compositionPixel(ev, s.gbuffer.albedo, s.lightMap, {kWidth, kHeight}, p);
@@ -354,11 +402,13 @@ TEST_F(DeferredPasses, Ssao) {
 
 TEST_F(DeferredPasses, SsaoBlur) {
     PassInputs& s = in();
-    RenderTarget2D target(device, kWidth, kHeight, false, SurfaceFormat::Color, DepthFormat::None);
+    ShippedRenderer& r = shipped();
+    upload(r.ssao->getSSAOTarget(), s.ssao);
     // BlurSSAO relies on RenderSSAO having set Textures[1] = GBuffer 1 (LinearClamp).
     device.Textures[1] = &s.gbuffer1;
     device.SamplerStates[1] = SamplerState::LinearClamp;
-    blurSsao(device, target, s.ssaoGpu, kWidth, kHeight);
+    r.ssao->BlurSSAO(device);
+    RenderTarget2D& target = r.ssao->getBlurTarget();
     device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
     V2 blurDirection{double(1.0f / float(kWidth)), double(1.0f / float(kHeight))};
     RefImage ref = referenceImage(kWidth, kHeight, SurfaceFormat::Color, false, [&](Eval& ev, PixelPos p) {
@@ -369,8 +419,13 @@ TEST_F(DeferredPasses, SsaoBlur) {
 
 TEST_F(DeferredPasses, SsaoFinal) {
     PassInputs& s = in();
+    ShippedRenderer& r = shipped();
+    // Compose(useBlurredSSAO = true) reads the blurred target: the inputs' SSAO image goes there.
+    upload(r.ssao->getBlurTarget(), s.ssao);
+    RenderTarget2D scene(device, kWidth, kHeight, false, SurfaceFormat::Color, DepthFormat::None);
+    upload(scene, s.sceneImage);
     RenderTarget2D target(device, kWidth, kHeight, false, SurfaceFormat::Color, DepthFormat::None);
-    composeSsao(device, target, s.sceneImageGpu, s.ssaoGpu, kWidth, kHeight);
+    r.ssao->Compose(device, &scene, &target, true);
     device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
     V2 halfPixel{double(1.0f / float(kWidth)), double(1.0f / float(kHeight))};
     RefImage ref = referenceImage(kWidth, kHeight, SurfaceFormat::Color, false,
