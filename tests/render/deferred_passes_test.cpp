@@ -5,12 +5,13 @@
 // Bounds: render_harness.h; the per-pixel slack: reference_eval.h. Each test prints its max / RMS
 // error ("[render] ..." lines) and records them as test properties.
 //
-// The passes that run on the renderer's own targets are run by the shipped code itself: the demo's
-// DeferredRenderer (ClearGBuffer, MakeLightMap with a directional light, MakeFinal) and SSAO
-// (BlurSSAO, Compose), one pass at a time on inputs uploaded into their targets. The passes that
-// draw the tests' own meshes (GBuffer, the shadow maps, the spot and point light volumes) and SSAO
-// (which samples the content's random-normal texture) still go through gpu_passes.h, a copy of
-// the demo's code written for those meshes.
+// The light and composition passes run in the shipped code itself: the demo's DeferredRenderer
+// (ClearGBuffer; MakeLightMap with one directional, spot or point light of the demo's Lights
+// classes, their shadow maps and the cookie uploaded, the volumes the content's models; MakeFinal)
+// and SSAO (BlurSSAO, Compose), one pass at a time on inputs uploaded into their targets. The
+// passes that draw the tests' own meshes (GBuffer, the DepthWriter shadow maps: the shipped code
+// draws only glTF Models) and RenderSSAO (the shipped SSAO samples the content's mipmapped random
+// normals) still go through gpu_passes.h, a copy of the demo's code for those meshes.
 #include <gtest/gtest.h>
 
 #include <memory>
@@ -40,8 +41,8 @@ struct PassInputs {
     GraphicsDevice& device;
     TestCamera camera;
     Vector2 size{float(kWidth), float(kHeight)};
-    Mesh scene = testSceneMesh(), cone = spotLightGeometry(), sphere = pointLightGeometry();
-    GpuMesh sceneGpu = toGpu(scene), coneGpu = toGpu(cone), sphereGpu = toGpu(sphere);
+    Mesh scene = testSceneMesh();
+    GpuMesh sceneGpu = toGpu(scene);
     Materials materials = makeMaterials();
     Texture2D albedoMap, normalMap, specularMap;
     GBufferImages gbuffer;
@@ -49,10 +50,9 @@ struct PassInputs {
     DirectionalLightSetup directional{Vector3(0.3f, -1.0f, -0.4f), Vector4(1.0f, 0.85f, 0.7f, 1.0f), 0.9f};
     SpotLightSetup spot = makeSpotLight(Vector3(0, 6, 0.5f), Vector3(0.15f, -1, 0.45f), Vector4(1, 0.95f, 0.8f, 1), 0.9f, true, 64);
     CpuTexture spotShadow, cookie;
-    Texture2D spotShadowGpu, cookieGpu;
+    Texture2D cookieGpu;
     PointLightSetup point{Vector3(0.5f, 3, 1), 20, Vector4(0.9f, 0.95f, 1, 1), 0.8f, true, 32};
     CpuCube pointShadow;
-    TextureCube pointShadowGpu;
     CpuTexture randomNormals, lightMap, ssao, sceneImage;
     Texture2D randomNormalsGpu;
 
@@ -62,9 +62,8 @@ struct PassInputs {
           specularMap(d, 16, 16, false, SurfaceFormat::Color), gbuffer(makeSyntheticGBuffer(scene, camera, kWidth, kHeight)),
           gbuffer0(d, kWidth, kHeight, false, SurfaceFormat::Rgba64), gbuffer1(d, kWidth, kHeight, false, SurfaceFormat::Rgba64),
           gbuffer2(d, kWidth, kHeight, false, SurfaceFormat::Vector2), spotShadow(makeSpotShadowMap(scene, spot)),
-          cookie(makeSpotCookie(32)), spotShadowGpu(d, 64, 64, false, SurfaceFormat::Single),
-          cookieGpu(d, 32, 32, false, SurfaceFormat::Color), pointShadow(makePointShadowCube(scene, point)),
-          pointShadowGpu(d, 32, false, SurfaceFormat::Single), randomNormals(makeRandomNormals(16)),
+          cookie(makeSpotCookie(32)), cookieGpu(d, 32, 32, false, SurfaceFormat::Color),
+          pointShadow(makePointShadowCube(scene, point)), randomNormals(makeRandomNormals(16)),
           lightMap(makeLightMapImage(kWidth, kHeight)), ssao(makeSsaoImage(kWidth, kHeight)),
           sceneImage(makeSceneImage(kWidth, kHeight)), randomNormalsGpu(d, 16, 16, false, SurfaceFormat::Color) {
         upload(albedoMap, materials.albedo);
@@ -73,9 +72,7 @@ struct PassInputs {
         upload(gbuffer0, gbuffer.albedo);
         upload(gbuffer1, gbuffer.normals);
         upload(gbuffer2, gbuffer.depth);
-        upload(spotShadowGpu, spotShadow);
         upload(cookieGpu, cookie);
-        for (int f = 0; f < 6; ++f) upload(pointShadowGpu, CubeMapFace(f), pointShadow.faces[std::size_t(f)]);
         upload(randomNormalsGpu, randomNormals);
     }
 
@@ -110,6 +107,27 @@ struct ShippedRenderer {
         ssao = std::make_unique<TheCansinDeferredRenderer::SSAO>(device, content, kWidth, kHeight);
     }
     RenderTarget2D& gbuffer(int i) const { return *static_cast<RenderTarget2D*>(renderer->getGBuffer()[std::size_t(i)].RenderTarget); }
+    // A light volume as the renderer draws it (the content's model, part 0 of mesh 0, under the
+    // light's World only), for the reference's coverage.
+    Mesh lightVolume(const char* asset) {
+        const ModelMeshPart& part = content.Load<Model>(asset)->Meshes[0].MeshParts[0];
+        std::vector<ModelVertex> vertices(std::size_t(part.VertexBuffer->VertexCount()));
+        part.VertexBuffer->GetData(vertices.data(), vertices.size());
+        const std::vector<std::uint32_t> indices = part.IndexBuffer->GetIndices();
+        Mesh mesh;
+        for (const ModelVertex& v : vertices) {
+            MeshVertex m;
+            m.position = {double(v.Position.X), double(v.Position.Y), double(v.Position.Z)};
+            mesh.vertices.push_back(m);
+        }
+        for (int k = 0; k < part.PrimitiveCount; ++k) {
+            std::array<int, 3> t;
+            for (int c = 0; c < 3; ++c)
+                t[std::size_t(c)] = part.VertexOffset + int(indices[std::size_t(part.StartIndex + 3 * k + c)]);
+            mesh.triangles.push_back(t);
+        }
+        return mesh;
+    }
 };
 
 class DeferredPasses : public ::testing::Test {
@@ -188,18 +206,34 @@ protected:
         return q;
     }
 
+    // The shipped renderer's MakeLightMap with one spot light of the demo's Lights::SpotLight, its
+    // shadow map and cookie the inputs' (the volume: the content's SpotLightGeometry).
     void spotTest(const std::string& pass, bool shadows) {
+        using namespace TheCansinDeferredRenderer;
         PassInputs& s = in();
+        ShippedRenderer& r = shipped();
+        uploadGBuffer(r, s);
+        Lights::LightManager lights(r.content);
+        auto owned = std::make_unique<Lights::SpotLight>(device, s.spot.Position, s.spot.Direction, s.spot.Color, s.spot.Intensity,
+                                                         shadows, s.spot.ShadowMapResolution, &s.cookieGpu);
+        const Lights::SpotLight& shipped = *owned;
+        upload(owned->MakeShadowMap(), s.spotShadow);
+        lights.AddLight(std::move(owned));
+        FixedCamera camera(s.camera);
+        r.renderer->frustumCulling = false;  // the seed's behaviour: every light drawn
+        r.renderer->MakeLightMap(device, lights, camera);
+        device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+        ASSERT_EQ(r.renderer->getFrameStats().spotLightsDrawn, 1);
+        CpuTexture gpu = readBack(r.renderer->getLightMap());
+
+        // The reference's light: the shipped light's own matrices and values.
         SpotLightSetup light = s.spot;
         light.Shadows = shadows;
-        RenderTarget2D lightMap(device, kWidth, kHeight, false, SurfaceFormat::Color, DepthFormat::Depth24Stencil8);
-        beginLightMap(device, lightMap, s.gbuffer0, s.gbuffer1, s.gbuffer2);
-        drawSpotLight(device, s.camera, light, s.cookieGpu, s.spotShadowGpu, s.coneGpu, s.size);
-        endLightMap(device);
-        device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
-        CpuTexture gpu = readBack(lightMap);
-
-        WorldMesh cone = toWorld(s.cone, toM4(light.World));
+        light.View = shipped.getView();
+        light.Projection = shipped.getProjection();
+        light.World = shipped.getWorld();
+        light.Direction = shipped.getDirection();
+        WorldMesh cone = toWorld(r.lightVolume("SpotLightGeometry"), toM4(light.World));
         View3D view = s.cameraView();
         Cull cull = spotCull(s.camera, light);
         SpotLightParams q = spotParams(s.camera, light);
@@ -211,21 +245,33 @@ protected:
         check(pass, gpu, ref);
     }
 
+    // The same with one Lights::PointLight (the volume: the content's PointLightGeometry).
     void pointTest(const std::string& pass, bool shadows) {
+        using namespace TheCansinDeferredRenderer;
         PassInputs& s = in();
+        ShippedRenderer& r = shipped();
+        uploadGBuffer(r, s);
+        Lights::LightManager lights(r.content);
+        auto owned = std::make_unique<Lights::PointLight>(device, s.point.Position, s.point.Radius, s.point.Color, s.point.Intensity,
+                                                          shadows, s.point.ShadowMapResolution);
+        const Lights::PointLight& shipped = *owned;
+        RenderTargetCube& shadowMap = owned->MakeShadowMap();
+        for (int f = 0; f < 6; ++f) upload(shadowMap, CubeMapFace(f), s.pointShadow.faces[std::size_t(f)]);
+        lights.AddLight(std::move(owned));
+        FixedCamera camera(s.camera);
+        r.renderer->frustumCulling = false;
+        r.renderer->MakeLightMap(device, lights, camera);
+        device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+        ASSERT_EQ(r.renderer->getFrameStats().pointLightsDrawn, 1);
+        CpuTexture gpu = readBack(r.renderer->getLightMap());
+
         PointLightSetup light = s.point;
         light.Shadows = shadows;
-        RenderTarget2D lightMap(device, kWidth, kHeight, false, SurfaceFormat::Color, DepthFormat::Depth24Stencil8);
-        beginLightMap(device, lightMap, s.gbuffer0, s.gbuffer1, s.gbuffer2);
-        drawPointLight(device, s.camera, light, s.pointShadowGpu, s.sphereGpu, s.size);
-        endLightMap(device);
-        device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
-        CpuTexture gpu = readBack(lightMap);
-
-        WorldMesh sphere = toWorld(s.sphere, toM4(light.World()));
+        WorldMesh sphere = toWorld(r.lightVolume("PointLightGeometry"), toM4(shipped.World()));
         View3D view = s.cameraView();
         Cull cull = pointCull(s.camera, light);
         PointLightParams q = pointParams(s.camera, light);
+        q.depthBias = shipped.getDepthBias();
         GBufferTextures gb = s.gbufferTextures();
         std::vector<std::vector<int>> coverage = perPixel(kWidth, kHeight, [&](int x, int y) { return coverageCandidates(sphere, view, cull, x, y); });
         RefImage ref = referenceImage(kWidth, kHeight, SurfaceFormat::Color, true, [&](Eval& ev, PixelPos p) {
