@@ -2,7 +2,9 @@
 // --check-finite (scan every pass's targets for NaN/Inf: common/finite_check.h), --define NAME=VALUE
 // (a #define every effect of the program is compiled with; repeatable).
 // A program's argument loop hands each argument to parseCommonOption first and handles its own
-// options only when it answers NotMine.
+// options only when it answers NotMine; after the loop, checkCommonOptions asks the driver what only
+// it knows. Every usage error is one line in one wording (usageError), exit status 2; --help is
+// answered by the dispatcher (fxdemo_main.cpp) from the program's registered usage.
 #pragma once
 
 #include <optional>
@@ -30,7 +32,20 @@ bool parseDefine(const std::string& text, std::pair<std::string, std::string>& o
 
 enum class OptionResult { Consumed, NotMine, Error };
 
-// Looks at argv[i]; consumes its value too (advancing i). On Error, `error` says what was wrong.
+// Looks at argv[i]; consumes its value too (advancing i). On Error, `error` says what was wrong
+// (wants()'s wording).
 OptionResult parseCommonOption(int argc, char** argv, int& i, CommonOptions& options, std::string& error);
+
+// What the driver decides: a --size above GL_MAX_TEXTURE_SIZE (every GL 4.1 driver, which the
+// runtime requires, takes 16384; a larger size is asked of the driver the run will use). False with
+// `error` set when the size cannot be made.
+bool checkCommonOptions(const CommonOptions& options, std::string& error);
+
+// The one wording of a bad value: "<option> wants <what>, not '<value>'" (value null: no value given).
+std::string wants(const std::string& option, const std::string& what, const char* value);
+// An argument no option of the program matches.
+std::string unknownOption(const std::string& program, const std::string& arg);
+// Prints "fxdemo <program>: <message>" as one line on stderr; returns 2 (a usage error).
+int usageError(const std::string& program, const std::string& message);
 
 }  // namespace fxport::demo

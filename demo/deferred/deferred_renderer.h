@@ -77,7 +77,9 @@ public:
     // The targets the renderer owns: the G-buffer's three and the light map.
     std::vector<const RenderTarget2D*> getTargets() const;
 
-private:
+    // fxport: the passes Draw runs, public (private in the seed) so that the render tests can run
+    // the shipped renderer one pass at a time on inputs they upload into its targets (getGBuffer(),
+    // getLightMap()) and read each pass's target back (tests/render/deferred_passes_test.cpp).
     //Clear GBuffer
     void ClearGBuffer(GraphicsDevice& GraphicsDevice);
     //GBuffer Creation
@@ -86,6 +88,8 @@ private:
     void MakeLightMap(GraphicsDevice& GraphicsDevice, Lights::LightManager& Lights, BaseCamera& Camera);
     //Composition
     void MakeFinal(GraphicsDevice& GraphicsDevice, RenderTarget2D* Output);
+
+private:
 
     // fxport: C# keeps the G-buffer targets alive through GBufferTargets (garbage collection);
     // here they are owned here and GBufferTargets points at them.

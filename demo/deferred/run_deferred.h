@@ -42,5 +42,8 @@ struct RunOptions {
 
 // Returns the process exit code.
 int RunDeferred(const RunOptions& options);
+// `fxdemo deferred [options]` (registered with FXDEMO_PROGRAM): parses argv (argv[0] is "deferred")
+// into RunOptions and runs; 2 on a usage error.
+int RunDeferredProgram(int argc, char** argv);
 
 }  // namespace TheCansinDeferredRenderer

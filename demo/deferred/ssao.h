@@ -75,7 +75,7 @@ public:
     RenderTarget2D& getBlurTarget() const { return *BlurTarget; }
     void setGpuTimer(GpuTimer* timer) { gpuTimer = timer; }
 
-private:
+    // fxport: SSAO's passes, public (private in the seed) for the render tests, as DeferredRenderer's.
     //Render SSAO
     void RenderSSAO(GraphicsDevice& GraphicsDevice, const std::vector<RenderTargetBinding>& GBuffer,
                     BaseCamera& Camera);
@@ -85,6 +85,8 @@ private:
 
     //Compose
     void Compose(GraphicsDevice& GraphicsDevice, RenderTarget2D* Scene, RenderTarget2D* Output, bool useBlurredSSAO);
+
+private:
 
     GpuTimer* gpuTimer = nullptr;
 };

@@ -6,6 +6,8 @@
 #include <cstring>
 #include <string>
 
+#include "reference/ref_image.h"
+
 namespace _2DLightingSystem {
 
 namespace {
@@ -145,72 +147,24 @@ void unwrapRef(const Setup& s, const LightCapture& l, int x, int y, Range out[2]
 
 // ---- per-pixel intervals (accumulation and final image) ------------------------------------
 
-// What the GPU may have written: per pixel and channel, [lo, hi] in LSB.
-struct RefImage {
-    int W = 0, H = 0;
-    std::vector<double> lo, hi;
-    RefImage(int w, int h) : W(w), H(h), lo(std::size_t(w) * std::size_t(h) * 4), hi(lo.size()) {}
-    std::size_t at(int x, int y, int c) const { return (std::size_t(y) * std::size_t(W) + std::size_t(x)) * 4 + std::size_t(c); }
-    void set(int x, int y, int c, double l, double h) { lo[at(x, y, c)] = l, hi[at(x, y, c)] = h; }
-};
+// What the GPU may have written: per pixel and channel, [lo, hi] in LSB (reference/ref_image.h).
+using fxport::reference::RefImage;
 
 double channel(const Color& p, int c) { return c == 0 ? p.R : c == 1 ? p.G : c == 2 ? p.B : p.A; }
 
-// The GPU image moved by one pixel (in x, then in y) must fall outside the intervals on at least half
-// of the samples where it differs from the unshifted image by more than 1 LSB (and the unshifted
-// sample is inside): the bound is tight enough to see a shift. Prints one line.
-bool shiftTest(const char* name, const RefImage& ref, const std::vector<Color>& gpu) {
-    long changed[2] = {0, 0}, shiftedFails[2] = {0, 0};
-    auto G = [&](int x, int y, int c) { return channel(gpu[std::size_t(y) * std::size_t(ref.W) + std::size_t(x)], c); };
-    for (int y = 0; y < ref.H; ++y)
-        for (int x = 0; x < ref.W; ++x)
-            for (int c = 0; c < 4; ++c) {
-                const std::size_t i = ref.at(x, y, c);
-                const double g = G(x, y, c);
-                if (g < ref.lo[i] || g > ref.hi[i]) continue;
-                for (int k = 0; k < 2; ++k) {
-                    const int sx = k == 0 ? x - 1 : x, sy = k == 0 ? y : y - 1;
-                    if (sx < 0 || sy < 0) continue;
-                    const double shifted = G(sx, sy, c);
-                    if (std::fabs(shifted - g) <= 1.0) continue;
-                    ++changed[k];
-                    if (shifted < ref.lo[i] || shifted > ref.hi[i]) ++shiftedFails[k];
-                }
-            }
-    const bool seen = changed[0] > 0 && changed[1] > 0 && 2 * shiftedFails[0] >= changed[0] &&
-                      2 * shiftedFails[1] >= changed[1];
-    std::printf("  %-26s 1-pixel shift: fails %ld of %ld changed samples in x, %ld of %ld in y: %s\n", name,
-                shiftedFails[0], changed[0], shiftedFails[1], changed[1], seen ? "seen" : "NOT SEEN");
-    return seen;
+fxport::reference::GpuImage asGpuImage(const std::vector<Color>& gpu, int W, int H) {
+    static_assert(sizeof(Color) == 4, "Color is R, G, B, A bytes");
+    return fxport::reference::GpuImage::fromRgba8(reinterpret_cast<const unsigned char*>(gpu.data()), W, H);
 }
 
-// Every sample inside its interval, and shiftTest.
+// The one-pixel-shift check alone (changes of more than 1 LSB); prints one line.
+bool shiftTest(const char* name, const RefImage& ref, const std::vector<Color>& gpu) {
+    return fxport::reference::checkShift(name, ref, asGpuImage(gpu, ref.width, ref.height), 1.0);
+}
+
+// Every sample inside its interval, and the one-pixel-shift check.
 bool compare(const char* name, const char* bound, const RefImage& ref, const std::vector<Color>& gpu) {
-    long samples = 0, fails = 0;
-    double maxExcess = 0, widthSum = 0;
-    int wx = 0, wy = 0, wc = 0;
-    auto G = [&](int x, int y, int c) { return channel(gpu[std::size_t(y) * std::size_t(ref.W) + std::size_t(x)], c); };
-    for (int y = 0; y < ref.H; ++y)
-        for (int x = 0; x < ref.W; ++x)
-            for (int c = 0; c < 4; ++c) {
-                const std::size_t i = ref.at(x, y, c);
-                const double g = G(x, y, c), excess = std::max(ref.lo[i] - g, g - ref.hi[i]);
-                ++samples;
-                widthSum += ref.hi[i] - ref.lo[i];
-                if (excess > 0) {
-                    ++fails;
-                    if (excess > maxExcess) maxExcess = excess, wx = x, wy = y, wc = c;
-                }
-            }
-    std::printf("  %-26s %ld of %ld samples outside (max by %.3g); mean interval width %.3g; bound: %s\n", name, fails,
-                samples, maxExcess, samples ? widthSum / double(samples) : 0.0, bound);
-    if (fails)
-        std::printf("  %-26s worst at (%d, %d) channel %d: gpu %g, reference [%g, %g]\n", "", wx, wy, wc, G(wx, wy, wc),
-                    ref.lo[ref.at(wx, wy, wc)], ref.hi[ref.at(wx, wy, wc)]);
-    const bool seen = shiftTest("", ref, gpu);
-    const bool pass = fails == 0 && seen;
-    std::printf("  %-26s %s\n", "", pass ? "ok" : "FAIL");
-    return pass;
+    return fxport::reference::checkImage(name, bound, ref, asGpuImage(gpu, ref.width, ref.height), 1.0);
 }
 
 // A SpriteBatch LINEAR sample of a W x H Color texture drawn 1:1 at pixel (x, y): texel (x, y) with
@@ -218,17 +172,9 @@ bool compare(const char* name, const char* bound, const RefImage& ref, const std
 // The interval spans the texel and the filtered value, +-1 LSB where the texels differ (8-bit
 // filters round after the horizontal lerps and again after the vertical one). Channel c, LSB.
 void linearSample(const std::vector<Color>& img, int W, int H, int x, int y, int c, bool wrap, double& lo, double& hi) {
-    auto T = [&](int i, int j) {
-        i = wrap ? (i % W + W) % W : std::clamp(i, 0, W - 1);
-        j = wrap ? (j % H + H) % H : std::clamp(j, 0, H - 1);
+    fxport::reference::linearSample8(W, H, x, y, wrap, [&](int i, int j) {
         return channel(img[std::size_t(j) * std::size_t(W) + std::size_t(i)], c);
-    };
-    const double f = 1.0 / 256.0;
-    const double t00 = T(x, y), t10 = T(x + 1, y), t01 = T(x, y + 1), t11 = T(x + 1, y + 1);
-    const double filtered = (1 - f) * ((1 - f) * t00 + f * t10) + f * ((1 - f) * t01 + f * t11);
-    lo = std::min(t00, filtered), hi = std::max(t00, filtered);
-    if (t00 != t10 || t00 != t01 || t00 != t11) lo -= 1.0, hi += 1.0;
-    lo = std::max(lo, 0.0), hi = std::min(hi, 255.0);
+    }, lo, hi);
 }
 
 // 8-bit rounding of a value in [lo, hi] LSB, with float32 shader error around a half.
@@ -288,7 +234,7 @@ bool checkLight(LightRenderer& r, const Setup& s, const LightCapture& l, int ind
              "1 LSB (8-bit rounding of a float32 result)"};
     const double Lx = l.posX, Ly = l.posY, R = l.radius, Pow = l.power, Bias = r.lightBias;
     auto occ = [&](int i, int c) { return halfToDouble(l.occlusion[std::size_t(i) * 4 + std::size_t(c)]); };
-    RefImage lightRef(W, H);
+    RefImage lightRef(W, H, 4);
     for (int y = 0; y < H; ++y)
         for (int x = 0; x < W; ++x) {
             const double sx_ = double(W) * ((x + kBias) / W), sy_ = double(H) * ((y + kBias) / H);
@@ -356,7 +302,7 @@ bool checkLight(LightRenderer& r, const Setup& s, const LightCapture& l, int ind
                                          {2, 0.120985},  {3, 0.064759},  {4, 0.026995},  {5, 0.008764},
                                          {6, 0.002216}};
         const double minB = double(r.minBlur), maxB = double(r.maxBlur);
-        RefImage blurRef(W, H);
+        RefImage blurRef(W, H, 4);
         for (int y = 0; y < H; ++y)
             for (int x = 0; x < W; ++x) {
                 const double u = (x + kBias) / W, v = (y + kBias) / H;
@@ -395,7 +341,7 @@ bool checkLight(LightRenderer& r, const Setup& s, const LightCapture& l, int ind
 // spriteBatch.Draw(verticalBlurTarget, fullScreen, light.color) with BlendState.Additive
 // (SourceAlpha, One): every blurred map (alpha 255), tinted, rounded to 8 bits, added, saturating.
 bool checkAccumulation(LightRenderer& r, const CheckCapture& capture, int W, int H, const std::vector<Color>& gpu) {
-    RefImage ref(W, H);
+    RefImage ref(W, H, 4);
     for (int y = 0; y < H; ++y)
         for (int x = 0; x < W; ++x) {
             double sumLo[4] = {0, 0, 0, 255}, sumHi[4] = {0, 0, 0, 255};
@@ -425,7 +371,7 @@ bool checkFinal(LightRenderer& r, int W, int H, const std::vector<Color>& lightM
     const std::vector<Color> background = r.backBufferCache->GetData<Color>();
     const std::vector<Color> casters = r.midGroundTarget->GetData<Color>();
     const double minLight = double(r.minLight);
-    RefImage ref(W, H);
+    RefImage ref(W, H, 4);
     for (int y = 0; y < H; ++y)
         for (int x = 0; x < W; ++x) {
             // LightBlend.fx's output, rounded to 8 bits

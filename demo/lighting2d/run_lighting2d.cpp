@@ -216,14 +216,7 @@ public:
     }
 };
 
-static const char* kUsage =
-    "fxdemo lighting2d [--size WxH] [--frames N] [--out DIR] [--gpu] [--window] [--check] [--lights sp] [--explain]";
-
-static int usage(const char* message) {
-    if (message) std::fprintf(stderr, "fxdemo lighting2d: %s\n", message);
-    std::fprintf(stderr, "usage: %s\n", kUsage);
-    return 2;
-}
+static int usage(const std::string& message) { return fxport::demo::usageError("lighting2d", message); }
 
 // --explain's yardstick: the seed's scene with both light types (3 spot, 3 point lights), at the
 // same size, platform and renderer knobs, built and drawn once by the same code in this run.
@@ -275,21 +268,19 @@ int runLighting2d(int argc, char** argv) {
             continue;
         }
         if (std::string(argv[i]) == "--lights") {
-            lights = i + 1 < argc ? argv[++i] : "";
+            const char* v = i + 1 < argc ? argv[++i] : nullptr;
+            lights = v ? v : "";
             if (lights.empty() || lights.find_first_not_of("sp") != std::string::npos)
-                return usage(("--lights wants the letters s (spot) and p (point), got '" + lights + "'").c_str());
+                return usage(fxport::demo::wants("--lights", "the letters s (spot) and p (point)", v));
             continue;
-        }
-        if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
-            std::printf("usage: %s\n", kUsage);
-            return 0;
         }
         switch (fxport::demo::parseCommonOption(argc, argv, i, common, error)) {
         case fxport::demo::OptionResult::Consumed: continue;
-        case fxport::demo::OptionResult::Error: return usage(error.c_str());
-        case fxport::demo::OptionResult::NotMine: return usage(("unknown option " + std::string(argv[i])).c_str());
+        case fxport::demo::OptionResult::Error: return usage(error);
+        case fxport::demo::OptionResult::NotMine: return usage(fxport::demo::unknownOption("lighting2d", argv[i]));
         }
     }
+    if (std::string error; !fxport::demo::checkCommonOptions(common, error)) return usage(error);
     const int width = common.width, height = common.height, frames = common.frames.value_or(0);
     const std::string outDir = common.outDir, platformName = common.platform;
     const bool outGiven = common.outDirGiven;
@@ -350,5 +341,11 @@ int runLighting2d(int argc, char** argv) {
 
 FXDEMO_PROGRAM(lighting2d,
                "fxdemo lighting2d [--size WxH] [--frames N] [--out DIR] [--gpu] [--window] [--check] [--lights sp]\n"
-               "                         [--explain]",
+               "                         [--explain]\n"
+               "  Rabid Lion Games' 2D lighting system (seed 002): writes DIR/final.png and DIR/debug.png.\n"
+               "  --size WxH     back buffer size (800x480)      --frames N   frames to run headless\n"
+               "  --out DIR      where the images go (out/lighting2d)\n"
+               "  --check        compare every light's steps, the light map and the frame with CPU references\n"
+               "  --lights sp    keep only the spot (s) and/or point (p) lights\n"
+               "  --explain      print the effects, targets and passes built and left out",
                _2DLightingSystem::runLighting2d);

@@ -9,7 +9,8 @@
 #include <vector>
 
 #include "pointlights/game1.h"
-#include "ref_math.h"
+#include "reference/ref_image.h"
+#include "reference/ref_math.h"
 
 namespace DeferredLighting {
 
@@ -17,7 +18,7 @@ namespace {
 
 // ---- double-precision HLSL math: tests/render's (ref_math.h) ------------------------------------
 
-namespace rt = fxport::render_test;
+namespace rt = fxport::reference;
 using D3 = rt::V3;
 using D4 = rt::V4;
 using rt::dot;
@@ -55,76 +56,19 @@ const double kLodSlack = 0.5;
 // Texture filtering in 8-bit fixed point: bilinear and mip weights of 8 bits and rounded results.
 const double kFilterSlack = 1.0;
 
-// ---- per-pixel intervals and their comparison ------------------------------------------------
+// ---- per-pixel intervals and their comparison: reference/ref_image.h ---------------------------
 
-// What the GPU may have written: per pixel and channel, [lo, hi] (8-bit targets in LSB).
-struct RefImage {
-    int W = 0, H = 0, C = 0;
-    std::vector<double> lo, hi;
-    RefImage(int w, int h, int c) : W(w), H(h), C(c), lo(std::size_t(w * h * c)), hi(std::size_t(w * h * c)) {}
-    std::size_t at(int x, int y, int c) const { return (std::size_t(y) * std::size_t(W) + std::size_t(x)) * std::size_t(C) + std::size_t(c); }
-    void set(int x, int y, int c, double l, double h) { lo[at(x, y, c)] = l, hi[at(x, y, c)] = h; }
-};
-struct GpuImage {
-    int W = 0, H = 0, C = 0;
-    std::vector<double> v;
-    double at(int x, int y, int c) const { return v[(std::size_t(y) * std::size_t(W) + std::size_t(x)) * std::size_t(C) + std::size_t(c)]; }
-};
+using fxport::reference::GpuImage;
+using fxport::reference::RefImage;
+
 GpuImage fromColors(const std::vector<Color>& data, int W, int H) {
-    GpuImage g{W, H, 4, std::vector<double>(data.size() * 4)};
-    for (std::size_t i = 0; i < data.size(); ++i) {
-        g.v[i * 4] = data[i].R, g.v[i * 4 + 1] = data[i].G, g.v[i * 4 + 2] = data[i].B, g.v[i * 4 + 3] = data[i].A;
-    }
-    return g;
+    static_assert(sizeof(Color) == 4, "Color is R, G, B, A bytes");
+    return GpuImage::fromRgba8(reinterpret_cast<const unsigned char*>(data.data()), W, H);
 }
 
-// Every sample inside its interval; and the GPU image moved by one pixel (in x, then in y) must fail
-// on at least half of the samples where it differs from the unshifted image by more than
-// `changeThreshold` (and the unshifted sample passed). `mask`: only these pixels (null: all).
 bool compare(const char* name, const char* bound, const RefImage& ref, const GpuImage& gpu, double changeThreshold,
              const std::vector<char>* mask = nullptr) {
-    long samples = 0, fails = 0;
-    double maxExcess = 0, widthSum = 0;
-    int wx = 0, wy = 0, wc = 0;
-    long changed[2] = {0, 0}, shiftedFails[2] = {0, 0};
-    for (int y = 0; y < ref.H; ++y)
-        for (int x = 0; x < ref.W; ++x) {
-            if (mask && !(*mask)[std::size_t(y) * std::size_t(ref.W) + std::size_t(x)]) continue;
-            for (int c = 0; c < ref.C; ++c) {
-                const std::size_t i = ref.at(x, y, c);
-                const double g = gpu.at(x, y, c);
-                const double excess = std::max(ref.lo[i] - g, g - ref.hi[i]);
-                ++samples;
-                widthSum += ref.hi[i] - ref.lo[i];
-                if (excess > 0) {
-                    ++fails;
-                    if (excess > maxExcess) maxExcess = excess, wx = x, wy = y, wc = c;
-                    continue;
-                }
-                for (int s = 0; s < 2; ++s) {
-                    const int sx = s == 0 ? x - 1 : x, sy = s == 0 ? y : y - 1;
-                    if (sx < 0 || sy < 0) continue;
-                    const double shifted = gpu.at(sx, sy, c);
-                    if (std::fabs(shifted - g) <= changeThreshold) continue;
-                    ++changed[s];
-                    if (shifted < ref.lo[i] || shifted > ref.hi[i]) ++shiftedFails[s];
-                }
-            }
-        }
-    const bool shiftSeen = changed[0] > 0 && changed[1] > 0 && 2 * shiftedFails[0] >= changed[0] &&
-                           2 * shiftedFails[1] >= changed[1];
-    std::printf("  %-34s %ld of %ld samples outside (max by %.3g); mean interval width %.3g; bound: %s\n", name, fails,
-                samples, maxExcess, samples ? widthSum / double(samples) : 0.0, bound);
-    if (fails) {
-        const std::size_t i = ref.at(wx, wy, wc);
-        std::printf("  %-34s worst at (%d, %d) channel %d: gpu %.7g, reference [%.7g, %.7g]\n", "", wx, wy, wc,
-                    gpu.at(wx, wy, wc), ref.lo[i], ref.hi[i]);
-    }
-    std::printf("  %-34s 1-pixel shift: fails %ld of %ld changed samples in x, %ld of %ld in y: %s\n", "",
-                shiftedFails[0], changed[0], shiftedFails[1], changed[1], shiftSeen ? "seen" : "NOT SEEN");
-    const bool pass = fails == 0 && shiftSeen;
-    std::printf("  %-34s %s\n", "", pass ? "ok" : "FAIL");
-    return pass;
+    return fxport::reference::checkImage(name, bound, ref, gpu, changeThreshold, mask);
 }
 
 // 8-bit conversion of a value known to lie in [lo, hi] LSB (before conversion). Direct3D 10+'s
@@ -406,7 +350,7 @@ bool checkGBuffer(Game1& game) {
     const GpuImage gpuColor = fromColors(r.getColorRT().GetData<Color>(), W, H);
     const GpuImage gpuNormal = fromColors(r.getNormalRT().GetData<Color>(), W, H);
     GpuImage gpuDepth{W, H, 1, {}};
-    for (float d : r.getDepthRT().GetData<float>()) gpuDepth.v.push_back(double(d));
+    for (float d : r.getDepthRT().GetData<float>()) gpuDepth.values.push_back(double(d));
     std::printf("CPU reference of the G-buffer (RenderGBuffer.fx, %zu triangles after culling and clipping, %zu textures; "
                 "%ld pixels with more than one candidate surface):\n",
                 tris.size(), textures.size(), ambiguous);
@@ -465,17 +409,11 @@ struct PixelInputs {
 // unfiltered texel and the filtered value, +-1 LSB where the texels differ (8-bit filters round after
 // the horizontal lerps and again after the vertical one: seen on llvmpipe). Channel c, LSB.
 void linearSample(const std::vector<Color>& img, int W, int H, int x, int y, int c, double& lo, double& hi) {
-    auto T = [&](int i, int j) {
-        const Color& p = img[std::size_t(std::clamp(j, 0, H - 1)) * std::size_t(W) + std::size_t(std::clamp(i, 0, W - 1))];
+    fxport::reference::linearSample8(W, H, x - 1, y - 1, false, [&](int i, int j) {
+        const Color& p = img[std::size_t(j) * std::size_t(W) + std::size_t(i)];
         const double v[4] = {double(p.R), double(p.G), double(p.B), double(p.A)};
         return v[c];
-    };
-    const double f = 1.0 / 256.0;
-    const double t00 = T(x - 1, y - 1), t10 = T(x, y - 1), t01 = T(x - 1, y), t11 = T(x, y);
-    const double filtered = (1 - f) * ((1 - f) * t00 + f * t10) + f * ((1 - f) * t01 + f * t11);
-    lo = std::min(t00, filtered), hi = std::max(t00, filtered);
-    if (t00 != t10 || t00 != t01 || t00 != t11) lo -= 1.0, hi += 1.0;
-    lo = std::max(lo, 0.0), hi = std::min(hi, 255.0);
+    }, lo, hi);
 }
 
 // pow(saturate(d), p) with p = 0 at d = 0: HLSL/GLSL leave pow(0, 0) open.

@@ -13,6 +13,7 @@
 //   --no-cull  draw every point light, also those outside the view frustum (as the chapter)
 //   --explain  print the effects (compile time), targets (bytes) and passes built and left out,
 //              and the point lights drawn and frustum-culled, against the all-features scene
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -39,12 +40,19 @@ namespace {
 
 const char* kUsage = "fxdemo pointlights [--size WxH] [--frames N] [--out DIR] [--time T] [--gpu] [--window]\n"
                      "                          [--spot] [--check] [--camera A,R,D] [--no-cull]\n"
-                     "                          [--gbuffer tutorial|half16|float32] [--explain]";
+                     "                          [--gbuffer tutorial|half16|float32] [--explain]\n"
+                     "  Catalin Zima's deferred point lights (seed 001): writes DIR/final.png and DIR/debug.png.\n"
+                     "  --size WxH     back buffer size (800x600)      --frames N   frames to run headless\n"
+                     "  --out DIR      where the images go (fxdemo-out/pointlights)\n"
+                     "  --time T       game time in seconds of the first frame (the lights move with it)\n"
+                     "  --spot         add the chapter's exercise, a spot light\n"
+                     "  --check        compare the G-buffer, light map and frame with CPU references\n"
+                     "  --camera A,R,D the camera's arc, rotation (degrees) and distance\n"
+                     "  --no-cull      draw every light, also those outside the view frustum\n"
+                     "  --gbuffer F    the G-buffer's formats: tutorial (Color, Color, Single), half16, float32\n"
+                     "  --explain      print the effects, targets and passes built and left out";
 
-int usage(const char* message) {
-    std::fprintf(stderr, "fxdemo pointlights: %s\nusage: %s\n", message, kUsage);
-    return 2;
-}
+int usage(const std::string& message) { return fxport::demo::usageError("pointlights", message); }
 
 }  // namespace
 
@@ -64,14 +72,14 @@ int runPointLights(int argc, char** argv) {
         auto value = [&]() -> const char* { return i + 1 < argc ? argv[++i] : nullptr; };
         std::string error;
         OptionResult parsed = parseCommonOption(argc, argv, i, common, error);
-        if (parsed == OptionResult::Error) return usage(error.c_str());
+        if (parsed == OptionResult::Error) return usage(error);
         if (parsed == OptionResult::Consumed) continue;
         if (arg == "--time") {
             const char* v = value();
             char* end = nullptr;
-            if (!v) return usage("--time wants seconds");
+            if (!v) return usage(fxport::demo::wants("--time", "seconds", v));
             double t = std::strtod(v, &end);
-            if (end == v || *end) return usage("--time wants seconds");
+            if (end == v || *end || !std::isfinite(t)) return usage(fxport::demo::wants("--time", "seconds", v));
             time = t;
         } else if (arg == "--check") {
             check = true;
@@ -85,22 +93,20 @@ int runPointLights(int argc, char** argv) {
             if (name == "tutorial") formats = GBufferFormats::Tutorial;
             else if (name == "half16") formats = GBufferFormats::Half16;
             else if (name == "float32") formats = GBufferFormats::Float32;
-            else return usage(("--gbuffer wants tutorial, half16 or float32, not '" + name + "'").c_str());
+            else return usage(fxport::demo::wants("--gbuffer", "tutorial, half16 or float32", v));
         } else if (arg == "--no-cull") {
             cull = false;
         } else if (arg == "--camera") {
             const char* v = value();
             if (!v || std::sscanf(v, "%f,%f,%f", &cameraArc, &cameraRotation, &cameraDistance) != 3 ||
                 !(cameraDistance > 0))
-                return usage("--camera wants ARC,ROTATION,DISTANCE (degrees, degrees, units > 0)");
+                return usage(fxport::demo::wants("--camera", "ARC,ROTATION,DISTANCE (degrees, degrees, units > 0)", v));
             cameraGiven = true;
-        } else if (arg == "--help" || arg == "-h") {
-            std::printf("usage: %s\n", kUsage);
-            return 0;
         } else {
-            return usage(("unknown argument " + arg).c_str());
+            return usage(fxport::demo::unknownOption("pointlights", arg));
         }
     }
+    if (std::string error; !fxport::demo::checkCommonOptions(common, error)) return usage(error);
 
     if (check && formats != GBufferFormats::Tutorial)
         return usage("--check models the series' Color/Color/Single targets only: leave out --gbuffer");

@@ -7,21 +7,17 @@
 #include <vector>
 
 #include "rastertek50/applicationclass.h"
+#include "reference/ref_math.h"
 
 namespace Rastertek50 {
 
 namespace {
 
-struct V3 { double x, y, z; };
-struct V4 { double x, y, z, w; };
-using M4 = std::array<std::array<double, 4>, 4>;  // row vectors: v' = v * M
-
-V4 mul(V4 v, const M4& m) {
-    return {v.x * m[0][0] + v.y * m[1][0] + v.z * m[2][0] + v.w * m[3][0],
-            v.x * m[0][1] + v.y * m[1][1] + v.z * m[2][1] + v.w * m[3][1],
-            v.x * m[0][2] + v.y * m[1][2] + v.z * m[2][2] + v.w * m[3][2],
-            v.x * m[0][3] + v.y * m[1][3] + v.z * m[2][3] + v.w * m[3][3]};
-}
+// Double-precision HLSL math (row vectors, mul(v, M)) from reference/.
+using fxport::reference::M4;
+using fxport::reference::V3;
+using fxport::reference::V4;
+using fxport::reference::mul;
 
 struct ScreenVertex {
     double x, y, invW;  // pixels (y down), 1/w

@@ -38,14 +38,7 @@ namespace Rastertek50 {
 
 namespace {
 
-const char* kUsage =
-    "fxdemo rastertek50 [--size WxH] [--frames N] [--out DIR] [--gpu] [--window] [--hlsl DIR] [--check] [--explain]";
-
-int usage(const char* message) {
-    if (message) std::fprintf(stderr, "fxdemo rastertek50: %s\n", message);
-    std::fprintf(stderr, "usage: %s\n", kUsage);
-    return 2;
-}
+int usage(const std::string& message) { return fxport::demo::usageError("rastertek50", message); }
 
 std::uint8_t toByte(float v) {
     if (!(v > 0.0f)) return 0;
@@ -103,7 +96,7 @@ int runRastertek50(int argc, char** argv) {
         auto value = [&]() -> const char* { return i + 1 < argc ? argv[++i] : nullptr; };
         std::string error;
         fxport::demo::OptionResult parsed = fxport::demo::parseCommonOption(argc, argv, i, common, error);
-        if (parsed == fxport::demo::OptionResult::Error) return usage(error.c_str());
+        if (parsed == fxport::demo::OptionResult::Error) return usage(error);
         if (parsed == fxport::demo::OptionResult::Consumed) continue;
         if (arg == "--check") {
             check = true;
@@ -111,12 +104,13 @@ int runRastertek50(int argc, char** argv) {
             explain = true;
         } else if (arg == "--hlsl") {
             const char* v = value();
-            if (!v) return usage("--hlsl wants a folder");
+            if (!v) return usage(fxport::demo::wants("--hlsl", "a folder", v));
             hlslDir = v;
         } else {
-            return usage(("unknown option '" + arg + "'").c_str());
+            return usage(fxport::demo::unknownOption("rastertek50", arg));
         }
     }
+    if (std::string error; !fxport::demo::checkCommonOptions(common, error)) return usage(error);
 
     try {
         ApplicationClass application;
@@ -179,5 +173,11 @@ int runRastertek50(int argc, char** argv) {
 
 FXDEMO_PROGRAM(rastertek50,
                "fxdemo rastertek50 [--size WxH] [--frames N] [--out DIR] [--gpu] [--window] [--hlsl DIR] [--check]\n"
-               "                          [--explain]",
+               "                          [--explain]\n"
+               "  Rastertek DirectX 10 tutorial 50, deferred shading (seed 004): writes DIR/final.png and DIR/debug.png.\n"
+               "  --size WxH     back buffer size (800x600)      --frames N   frames to run headless\n"
+               "  --out DIR      where the images go (fxdemo-out/rastertek50)\n"
+               "  --hlsl DIR     the effects' folder (the source tree's hlsl/)\n"
+               "  --check        compare the G-buffer and the frame with a CPU reference\n"
+               "  --explain      print the effects, targets and passes built and left out",
                Rastertek50::runRastertek50);

@@ -1,14 +1,25 @@
-// Each pass of the deferred demo (hlsl/xna-deferred, set up as demo/deferred does) rendered headless
+// Each pass of the deferred demo (hlsl/xna-deferred) rendered headless
 // at 96x64 from fixed synthetic inputs, read back, and compared pixel by pixel with an independent
 // double-precision CPU reference of the same HLSL (deferred_reference.h) evaluated on the same
 // input texels under D3D9's sampling and pixel-centre rules (d3d9_sampling.h, scene_geometry.h).
 // Bounds: render_harness.h; the per-pixel slack: reference_eval.h. Each test prints its max / RMS
 // error ("[render] ..." lines) and records them as test properties.
+//
+// The light and composition passes run in the shipped code itself: the demo's DeferredRenderer
+// (ClearGBuffer; MakeLightMap with one directional, spot or point light of the demo's Lights
+// classes, their shadow maps and the cookie uploaded, the volumes the content's models; MakeFinal)
+// and SSAO (BlurSSAO, Compose), one pass at a time on inputs uploaded into their targets. The
+// passes that draw the tests' own meshes (GBuffer, the DepthWriter shadow maps: the shipped code
+// draws only glTF Models) and RenderSSAO (the shipped SSAO samples the content's mipmapped random
+// normals) still go through gpu_passes.h, a copy of the demo's code for those meshes.
 #include <gtest/gtest.h>
 
 #include <memory>
 
-#include "deferred_reference.h"
+#include "deferred/Lights/light_manager.h"
+#include "deferred/deferred_renderer.h"
+#include "deferred/ssao.h"
+#include "reference/deferred_reference.h"
 #include "deferred_scene.h"
 #include "gpu_passes.h"
 #include "render_harness.h"
@@ -30,8 +41,8 @@ struct PassInputs {
     GraphicsDevice& device;
     TestCamera camera;
     Vector2 size{float(kWidth), float(kHeight)};
-    Mesh scene = testSceneMesh(), cone = spotLightGeometry(), sphere = pointLightGeometry();
-    GpuMesh sceneGpu = toGpu(scene), coneGpu = toGpu(cone), sphereGpu = toGpu(sphere);
+    Mesh scene = testSceneMesh();
+    GpuMesh sceneGpu = toGpu(scene);
     Materials materials = makeMaterials();
     Texture2D albedoMap, normalMap, specularMap;
     GBufferImages gbuffer;
@@ -39,12 +50,11 @@ struct PassInputs {
     DirectionalLightSetup directional{Vector3(0.3f, -1.0f, -0.4f), Vector4(1.0f, 0.85f, 0.7f, 1.0f), 0.9f};
     SpotLightSetup spot = makeSpotLight(Vector3(0, 6, 0.5f), Vector3(0.15f, -1, 0.45f), Vector4(1, 0.95f, 0.8f, 1), 0.9f, true, 64);
     CpuTexture spotShadow, cookie;
-    Texture2D spotShadowGpu, cookieGpu;
+    Texture2D cookieGpu;
     PointLightSetup point{Vector3(0.5f, 3, 1), 20, Vector4(0.9f, 0.95f, 1, 1), 0.8f, true, 32};
     CpuCube pointShadow;
-    TextureCube pointShadowGpu;
     CpuTexture randomNormals, lightMap, ssao, sceneImage;
-    Texture2D randomNormalsGpu, lightMapGpu, ssaoGpu, sceneImageGpu;
+    Texture2D randomNormalsGpu;
 
     explicit PassInputs(GraphicsDevice& d)
         : device(d), camera(makeCamera(Vector3(0, 9, 17), Vector3(0, 1.5f, 0), kWidth, kHeight)),
@@ -52,30 +62,72 @@ struct PassInputs {
           specularMap(d, 16, 16, false, SurfaceFormat::Color), gbuffer(makeSyntheticGBuffer(scene, camera, kWidth, kHeight)),
           gbuffer0(d, kWidth, kHeight, false, SurfaceFormat::Rgba64), gbuffer1(d, kWidth, kHeight, false, SurfaceFormat::Rgba64),
           gbuffer2(d, kWidth, kHeight, false, SurfaceFormat::Vector2), spotShadow(makeSpotShadowMap(scene, spot)),
-          cookie(makeSpotCookie(32)), spotShadowGpu(d, 64, 64, false, SurfaceFormat::Single),
-          cookieGpu(d, 32, 32, false, SurfaceFormat::Color), pointShadow(makePointShadowCube(scene, point)),
-          pointShadowGpu(d, 32, false, SurfaceFormat::Single), randomNormals(makeRandomNormals(16)),
+          cookie(makeSpotCookie(32)), cookieGpu(d, 32, 32, false, SurfaceFormat::Color),
+          pointShadow(makePointShadowCube(scene, point)), randomNormals(makeRandomNormals(16)),
           lightMap(makeLightMapImage(kWidth, kHeight)), ssao(makeSsaoImage(kWidth, kHeight)),
-          sceneImage(makeSceneImage(kWidth, kHeight)), randomNormalsGpu(d, 16, 16, false, SurfaceFormat::Color),
-          lightMapGpu(d, kWidth, kHeight, false, SurfaceFormat::Color), ssaoGpu(d, kWidth, kHeight, false, SurfaceFormat::Color),
-          sceneImageGpu(d, kWidth, kHeight, false, SurfaceFormat::Color) {
+          sceneImage(makeSceneImage(kWidth, kHeight)), randomNormalsGpu(d, 16, 16, false, SurfaceFormat::Color) {
         upload(albedoMap, materials.albedo);
         upload(normalMap, materials.normal);
         upload(specularMap, materials.specular);
         upload(gbuffer0, gbuffer.albedo);
         upload(gbuffer1, gbuffer.normals);
         upload(gbuffer2, gbuffer.depth);
-        upload(spotShadowGpu, spotShadow);
         upload(cookieGpu, cookie);
-        for (int f = 0; f < 6; ++f) upload(pointShadowGpu, CubeMapFace(f), pointShadow.faces[std::size_t(f)]);
         upload(randomNormalsGpu, randomNormals);
-        upload(lightMapGpu, lightMap);
-        upload(ssaoGpu, ssao);
-        upload(sceneImageGpu, sceneImage);
     }
 
     GBufferTextures gbufferTextures() const { return {&gbuffer.albedo, &gbuffer.normals, &gbuffer.depth}; }
     View3D cameraView() const { return makeView(toM4(camera.View), toM4(camera.Projection), kWidth, kHeight); }
+};
+
+// A BaseCamera with the test camera's matrices (the renderer reads View, Projection, Position).
+struct FixedCamera : TheCansinDeferredRenderer::BaseCamera {
+    explicit FixedCamera(const TestCamera& c) {
+        Position = c.Position;
+        View = c.View;
+        Projection = c.Projection;
+        FieldOfView = c.FieldOfView;
+        AspectRatio = c.AspectRatio;
+        NearPlane = c.NearPlane;
+        FarPlane = c.FarPlane;
+    }
+};
+
+// The shipped renderer and SSAO of demo/deferred at the tests' size, with the effects from hlsl/
+// and the content from the build's content/ (SSAO loads its random normals), made once.
+struct ShippedRenderer {
+    fxport::demo::ContentManager content;
+    std::unique_ptr<TheCansinDeferredRenderer::DeferredRenderer> renderer;
+    std::unique_ptr<TheCansinDeferredRenderer::SSAO> ssao;
+    explicit ShippedRenderer(GraphicsDevice& device) {
+        content.setGraphicsDevice(&device);
+        content.RootDirectory = FXPORT_CONTENT_DIR;
+        content.EffectDirectory = std::string(FXPORT_HLSL_DIR) + "/xna-deferred";
+        renderer = std::make_unique<TheCansinDeferredRenderer::DeferredRenderer>(device, content, kWidth, kHeight);
+        ssao = std::make_unique<TheCansinDeferredRenderer::SSAO>(device, content, kWidth, kHeight);
+    }
+    RenderTarget2D& gbuffer(int i) const { return *static_cast<RenderTarget2D*>(renderer->getGBuffer()[std::size_t(i)].RenderTarget); }
+    // A light volume as the renderer draws it (the content's model, part 0 of mesh 0, under the
+    // light's World only), for the reference's coverage.
+    Mesh lightVolume(const char* asset) {
+        const ModelMeshPart& part = content.Load<Model>(asset)->Meshes[0].MeshParts[0];
+        std::vector<ModelVertex> vertices(std::size_t(part.VertexBuffer->VertexCount()));
+        part.VertexBuffer->GetData(vertices.data(), vertices.size());
+        const std::vector<std::uint32_t> indices = part.IndexBuffer->GetIndices();
+        Mesh mesh;
+        for (const ModelVertex& v : vertices) {
+            MeshVertex m;
+            m.position = {double(v.Position.X), double(v.Position.Y), double(v.Position.Z)};
+            mesh.vertices.push_back(m);
+        }
+        for (int k = 0; k < part.PrimitiveCount; ++k) {
+            std::array<int, 3> t;
+            for (int c = 0; c < 3; ++c)
+                t[std::size_t(c)] = part.VertexOffset + int(indices[std::size_t(part.StartIndex + 3 * k + c)]);
+            mesh.triangles.push_back(t);
+        }
+        return mesh;
+    }
 };
 
 class DeferredPasses : public ::testing::Test {
@@ -83,6 +135,16 @@ protected:
     static PassInputs& in() {
         static std::unique_ptr<PassInputs> inputs = std::make_unique<PassInputs>(test::testDevice());
         return *inputs;
+    }
+    static ShippedRenderer& shipped() {
+        static std::unique_ptr<ShippedRenderer> r = std::make_unique<ShippedRenderer>(test::testDevice());
+        return *r;
+    }
+    // The inputs' G-buffer, in the renderer's own G-buffer targets.
+    static void uploadGBuffer(ShippedRenderer& r, const PassInputs& s) {
+        upload(r.gbuffer(0), s.gbuffer.albedo);
+        upload(r.gbuffer(1), s.gbuffer.normals);
+        upload(r.gbuffer(2), s.gbuffer.depth);
     }
     void TearDown() override { resetDevice(device); }
 
@@ -144,18 +206,34 @@ protected:
         return q;
     }
 
+    // The shipped renderer's MakeLightMap with one spot light of the demo's Lights::SpotLight, its
+    // shadow map and cookie the inputs' (the volume: the content's SpotLightGeometry).
     void spotTest(const std::string& pass, bool shadows) {
+        using namespace TheCansinDeferredRenderer;
         PassInputs& s = in();
+        ShippedRenderer& r = shipped();
+        uploadGBuffer(r, s);
+        Lights::LightManager lights(r.content);
+        auto owned = std::make_unique<Lights::SpotLight>(device, s.spot.Position, s.spot.Direction, s.spot.Color, s.spot.Intensity,
+                                                         shadows, s.spot.ShadowMapResolution, &s.cookieGpu);
+        const Lights::SpotLight& shipped = *owned;
+        upload(owned->MakeShadowMap(), s.spotShadow);
+        lights.AddLight(std::move(owned));
+        FixedCamera camera(s.camera);
+        r.renderer->frustumCulling = false;  // the seed's behaviour: every light drawn
+        r.renderer->MakeLightMap(device, lights, camera);
+        device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+        ASSERT_EQ(r.renderer->getFrameStats().spotLightsDrawn, 1);
+        CpuTexture gpu = readBack(r.renderer->getLightMap());
+
+        // The reference's light: the shipped light's own matrices and values.
         SpotLightSetup light = s.spot;
         light.Shadows = shadows;
-        RenderTarget2D lightMap(device, kWidth, kHeight, false, SurfaceFormat::Color, DepthFormat::Depth24Stencil8);
-        beginLightMap(device, lightMap, s.gbuffer0, s.gbuffer1, s.gbuffer2);
-        drawSpotLight(device, s.camera, light, s.cookieGpu, s.spotShadowGpu, s.coneGpu, s.size);
-        endLightMap(device);
-        device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
-        CpuTexture gpu = readBack(lightMap);
-
-        WorldMesh cone = toWorld(s.cone, toM4(light.World));
+        light.View = shipped.getView();
+        light.Projection = shipped.getProjection();
+        light.World = shipped.getWorld();
+        light.Direction = shipped.getDirection();
+        WorldMesh cone = toWorld(r.lightVolume("SpotLightGeometry"), toM4(light.World));
         View3D view = s.cameraView();
         Cull cull = spotCull(s.camera, light);
         SpotLightParams q = spotParams(s.camera, light);
@@ -167,21 +245,33 @@ protected:
         check(pass, gpu, ref);
     }
 
+    // The same with one Lights::PointLight (the volume: the content's PointLightGeometry).
     void pointTest(const std::string& pass, bool shadows) {
+        using namespace TheCansinDeferredRenderer;
         PassInputs& s = in();
+        ShippedRenderer& r = shipped();
+        uploadGBuffer(r, s);
+        Lights::LightManager lights(r.content);
+        auto owned = std::make_unique<Lights::PointLight>(device, s.point.Position, s.point.Radius, s.point.Color, s.point.Intensity,
+                                                          shadows, s.point.ShadowMapResolution);
+        const Lights::PointLight& shipped = *owned;
+        RenderTargetCube& shadowMap = owned->MakeShadowMap();
+        for (int f = 0; f < 6; ++f) upload(shadowMap, CubeMapFace(f), s.pointShadow.faces[std::size_t(f)]);
+        lights.AddLight(std::move(owned));
+        FixedCamera camera(s.camera);
+        r.renderer->frustumCulling = false;
+        r.renderer->MakeLightMap(device, lights, camera);
+        device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+        ASSERT_EQ(r.renderer->getFrameStats().pointLightsDrawn, 1);
+        CpuTexture gpu = readBack(r.renderer->getLightMap());
+
         PointLightSetup light = s.point;
         light.Shadows = shadows;
-        RenderTarget2D lightMap(device, kWidth, kHeight, false, SurfaceFormat::Color, DepthFormat::Depth24Stencil8);
-        beginLightMap(device, lightMap, s.gbuffer0, s.gbuffer1, s.gbuffer2);
-        drawPointLight(device, s.camera, light, s.pointShadowGpu, s.sphereGpu, s.size);
-        endLightMap(device);
-        device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
-        CpuTexture gpu = readBack(lightMap);
-
-        WorldMesh sphere = toWorld(s.sphere, toM4(light.World()));
+        WorldMesh sphere = toWorld(r.lightVolume("PointLightGeometry"), toM4(shipped.World()));
         View3D view = s.cameraView();
         Cull cull = pointCull(s.camera, light);
         PointLightParams q = pointParams(s.camera, light);
+        q.depthBias = shipped.getDepthBias();
         GBufferTextures gb = s.gbufferTextures();
         std::vector<std::vector<int>> coverage = perPixel(kWidth, kHeight, [&](int x, int y) { return coverageCandidates(sphere, view, cull, x, y); });
         RefImage ref = referenceImage(kWidth, kHeight, SurfaceFormat::Color, true, [&](Eval& ev, PixelPos p) {
@@ -194,21 +284,18 @@ protected:
 };
 
 TEST_F(DeferredPasses, Clear) {
-    RenderTarget2D g0(device, kWidth, kHeight, false, SurfaceFormat::Rgba64, DepthFormat::Depth24Stencil8);
-    RenderTarget2D g1(device, kWidth, kHeight, false, SurfaceFormat::Rgba64, DepthFormat::Depth24Stencil8);
-    RenderTarget2D g2(device, kWidth, kHeight, false, SurfaceFormat::Vector2, DepthFormat::Depth24Stencil8);
+    ShippedRenderer& r = shipped();
     // Start from something else than the clear values.
-    for (RenderTarget2D* t : {&g0, &g1, &g2}) {
-        device.SetRenderTarget(t);
+    for (int t = 0; t < 3; ++t) {
+        device.SetRenderTarget(&r.gbuffer(t));
         device.Clear(ClearOptions::Target | ClearOptions::DepthBuffer, Vector4(0.25f, 0.75f, 0.125f, 0.625f), 1.0f, 0);
     }
-    clearGBuffer(device, {RenderTargetBinding(g0), RenderTargetBinding(g1), RenderTargetBinding(g2)});
+    r.renderer->ClearGBuffer(device);
     device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
-    RenderTarget2D* targets[3] = {&g0, &g1, &g2};
     const char* names[3] = {"Clear.Albedo", "Clear.Normals", "Clear.Depth"};
     for (int t = 0; t < 3; ++t) {
-        RefImage ref = referenceImage(kWidth, kHeight, targets[t]->Format(), false, [&](Eval&, PixelPos) { return clearPixel(t); });
-        check(names[t], readBack(*targets[t]), ref);
+        RefImage ref = referenceImage(kWidth, kHeight, r.gbuffer(t).Format(), false, [&](Eval&, PixelPos) { return clearPixel(t); });
+        check(names[t], readBack(r.gbuffer(t)), ref);
     }
 }
 
@@ -297,11 +384,15 @@ TEST_F(DeferredPasses, DepthWriterPointCubeShadowMap) {
 
 TEST_F(DeferredPasses, DirectionalLight) {
     PassInputs& s = in();
-    RenderTarget2D lightMap(device, kWidth, kHeight, false, SurfaceFormat::Color, DepthFormat::Depth24Stencil8);
-    beginLightMap(device, lightMap, s.gbuffer0, s.gbuffer1, s.gbuffer2);
-    drawDirectionalLight(device, s.camera, s.directional, s.size);
-    endLightMap(device);
+    ShippedRenderer& r = shipped();
+    uploadGBuffer(r, s);
+    TheCansinDeferredRenderer::Lights::LightManager lights(r.content);
+    lights.AddLight(std::make_unique<TheCansinDeferredRenderer::Lights::DirectionalLight>(
+        s.directional.Direction, s.directional.Color, s.directional.Intensity));
+    FixedCamera camera(s.camera);
+    r.renderer->MakeLightMap(device, lights, camera);
     device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+    ASSERT_EQ(r.renderer->getFrameStats().directionalLightsDrawn, 1);
 
     DirectionalLightParams q;
     q.inverseViewProjection = toM4(Matrix::Invert(s.camera.View * s.camera.Projection));
@@ -314,7 +405,7 @@ TEST_F(DeferredPasses, DirectionalLight) {
     GBufferTextures gb = s.gbufferTextures();
     RefImage ref = referenceImage(kWidth, kHeight, SurfaceFormat::Color, false,
                                   [&](Eval& ev, PixelPos p) { return directionalLightPixel(ev, gb, q, p); });
-    check("DirectionalLight", readBack(lightMap), ref);
+    check("DirectionalLight", readBack(r.renderer->getLightMap()), ref);
 }
 
 TEST_F(DeferredPasses, SpotLightWithoutShadows) { spotTest("SpotLight.NoShadows", false); }
@@ -324,8 +415,11 @@ TEST_F(DeferredPasses, PointLightWithCubeShadows) { pointTest("PointLight.Shadow
 
 TEST_F(DeferredPasses, Composition) {
     PassInputs& s = in();
+    ShippedRenderer& r = shipped();
+    upload(r.gbuffer(0), s.gbuffer.albedo);
+    upload(r.renderer->getLightMap(), s.lightMap);
     RenderTarget2D scene(device, kWidth, kHeight, false, SurfaceFormat::Color, DepthFormat::Depth24Stencil8);
-    composeScene(device, scene, s.gbuffer0, s.lightMapGpu, s.size);
+    r.renderer->MakeFinal(device, &scene);
     device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
     RefImage ref = referenceImage(kWidth, kHeight, SurfaceFormat::Color, false, [&](Eval& ev, PixelPos p) {
         return compositionPixel(ev, s.gbuffer.albedo, s.lightMap, {kWidth, kHeight}, p);
@@ -354,11 +448,13 @@ TEST_F(DeferredPasses, Ssao) {
 
 TEST_F(DeferredPasses, SsaoBlur) {
     PassInputs& s = in();
-    RenderTarget2D target(device, kWidth, kHeight, false, SurfaceFormat::Color, DepthFormat::None);
+    ShippedRenderer& r = shipped();
+    upload(r.ssao->getSSAOTarget(), s.ssao);
     // BlurSSAO relies on RenderSSAO having set Textures[1] = GBuffer 1 (LinearClamp).
     device.Textures[1] = &s.gbuffer1;
     device.SamplerStates[1] = SamplerState::LinearClamp;
-    blurSsao(device, target, s.ssaoGpu, kWidth, kHeight);
+    r.ssao->BlurSSAO(device);
+    RenderTarget2D& target = r.ssao->getBlurTarget();
     device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
     V2 blurDirection{double(1.0f / float(kWidth)), double(1.0f / float(kHeight))};
     RefImage ref = referenceImage(kWidth, kHeight, SurfaceFormat::Color, false, [&](Eval& ev, PixelPos p) {
@@ -369,8 +465,13 @@ TEST_F(DeferredPasses, SsaoBlur) {
 
 TEST_F(DeferredPasses, SsaoFinal) {
     PassInputs& s = in();
+    ShippedRenderer& r = shipped();
+    // Compose(useBlurredSSAO = true) reads the blurred target: the inputs' SSAO image goes there.
+    upload(r.ssao->getBlurTarget(), s.ssao);
+    RenderTarget2D scene(device, kWidth, kHeight, false, SurfaceFormat::Color, DepthFormat::None);
+    upload(scene, s.sceneImage);
     RenderTarget2D target(device, kWidth, kHeight, false, SurfaceFormat::Color, DepthFormat::None);
-    composeSsao(device, target, s.sceneImageGpu, s.ssaoGpu, kWidth, kHeight);
+    r.ssao->Compose(device, &scene, &target, true);
     device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
     V2 halfPixel{double(1.0f / float(kWidth)), double(1.0f / float(kHeight))};
     RefImage ref = referenceImage(kWidth, kHeight, SurfaceFormat::Color, false,

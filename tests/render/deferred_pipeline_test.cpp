@@ -16,7 +16,7 @@
 #include <functional>
 #include <memory>
 
-#include "deferred_reference.h"
+#include "reference/deferred_reference.h"
 #include "deferred_scene.h"
 #include "gpu_passes.h"
 #include "render_harness.h"

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "deterministic_random.h"
+#include "reference/deterministic_random.h"
 #include "render_harness.h"
 
 namespace fxport::render_test {

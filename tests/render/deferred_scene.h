@@ -5,11 +5,14 @@
 // each pass's branches are exercised.
 #pragma once
 
-#include "d3d9_sampling.h"
+#include "reference/d3d9_sampling.h"
 #include "fxport/graphics.h"
-#include "scene_geometry.h"
+#include "reference/scene_geometry.h"
 
 namespace fxport::render_test {
+
+// The CPU references (V4, Range4, Eval, the deferred passes ...) are reference/'s, used here unqualified.
+using namespace fxport::reference;
 
 // The render tests' target size (the G-buffer, light map, SSAO and output targets).
 inline constexpr int kWidth = 96;

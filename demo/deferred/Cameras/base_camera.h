@@ -29,6 +29,8 @@ public:
 protected:
     //Constructor: a perspective projection filling the game's viewport
     BaseCamera(Game& game, Vector3 Position);
+    // fxport: a camera whose matrices the subclass sets itself (the render tests' fixed camera).
+    BaseCamera() = default;
     //Remake Projection from FieldOfView, AspectRatio, NearPlane and FarPlane
     void UpdateProjection();
 };

@@ -1,13 +1,11 @@
-#include "report/triangle_bvh.h"
+#include "reference/triangle_bvh.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-namespace fxport::report {
+namespace fxport::reference {
 
-using render_test::cross;
-using render_test::dot;
 
 namespace {
 
@@ -142,4 +140,4 @@ void TriangleBvh::forEachHit(V3 origin, V3 direction, double tMin, double tMax, 
     });
 }
 
-}  // namespace fxport::report
+}  // namespace fxport::reference

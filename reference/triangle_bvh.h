@@ -1,5 +1,5 @@
 // A bounding-volume hierarchy over world-space triangles, in double, for the exact references of
-// `fxdemo report`: shadow rays (is anything between a surface point and the light?) and light
+// `fxdemo report` (quality/report): shadow rays (is anything between a surface point and the light?) and light
 // volumes (which triangles of a cone or sphere does a pixel's ray cross?). Median split on the
 // longest axis of the centroids' box; Moller-Trumbore intersection.
 #pragma once
@@ -8,11 +8,10 @@
 #include <functional>
 #include <vector>
 
-#include "ref_math.h"
+#include "reference/ref_math.h"
 
-namespace fxport::report {
+namespace fxport::reference {
 
-using render_test::V3;
 using Triangle = std::array<V3, 3>;
 
 class TriangleBvh {
@@ -44,4 +43,4 @@ private:
     int used_ = 0;
 };
 
-}  // namespace fxport::report
+}  // namespace fxport::reference

@@ -23,13 +23,7 @@ namespace fxport::report {
 
 namespace {
 
-const char* kUsage =
-    "fxdemo report [--out DIR] [--gpu] [--frames N] [--size WxH] [--quick] [--check] [--demos rastertek50,lighting2d,pointlights,deferred]";
-
-int usage(const std::string& message) {
-    std::fprintf(stderr, "fxdemo report: %s\nusage: %s\n", message.c_str(), kUsage);
-    return 2;
-}
+int usage(const std::string& message) { return demo::usageError("report", message); }
 
 const Measurement* find(const std::vector<Measurement>& rows, const std::string& demo, const std::string& knob,
                         const std::string& setting) {
@@ -109,7 +103,7 @@ int runReport(int argc, char** argv) {
         const int at = i;
         switch (demo::parseCommonOption(argc, argv, i, common, error)) {
         case demo::OptionResult::Consumed:
-            if (arg == "--window") return usage("--window: the report runs headless (OSMesa, or EGL with --gpu)");
+            if (arg == "--window") return usage("--window: the report runs headless (OSMesa, or EGL with --gpu); leave it out");
             continue;
         case demo::OptionResult::Error: return usage(error);
         case demo::OptionResult::NotMine: break;
@@ -117,16 +111,18 @@ int runReport(int argc, char** argv) {
         i = at;
         if (arg == "--quick") quick = true;
         else if (arg == "--check") check = true;
-        else if (arg == "--demos" && i + 1 < argc) demos = argv[++i];
-        else return usage("unknown option '" + arg + "'");
+        else if (arg == "--demos") {
+            if (i + 1 >= argc) return usage(demo::wants("--demos", "a list of rastertek50, lighting2d, pointlights, deferred", nullptr));
+            demos = argv[++i];
+        } else return usage(demo::unknownOption("report", arg));
     }
+    if (std::string error; !demo::checkCommonOptions(common, error)) return usage(error);
     if (!common.defines.empty()) return usage("--define: the report measures the effects as written");
     if (common.checkFinite) return usage("--check-finite: run it on a demo (fxdemo <name> --check-finite)");
     SweepOptions options;
     options.platform = common.platform;
     options.quick = quick;
     options.frames = common.frames.value_or(quick ? 1 : (common.platform == "osmesa" ? 3 : 30));
-    if (options.frames < 1) return usage("--frames must be at least 1");
     options.warmupFrames = common.platform == "osmesa" ? 1 : 10;
     options.warmupSeconds = common.platform == "osmesa" ? 0 : 1.0;
     bool sizeGiven = false;
@@ -150,7 +146,7 @@ int runReport(int argc, char** argv) {
     auto wanted = [&](const std::string& name) { return ("," + demos + ",").find("," + name + ",") != std::string::npos; };
     for (const std::string& name : {std::string("rastertek50"), std::string("lighting2d"), std::string("pointlights"),
                                     std::string("deferred"), std::string("-")})
-        if (name != "-" && !wanted(name) && demos.find(name) != std::string::npos) return usage("--demos: " + demos);
+        if (name != "-" && !wanted(name) && demos.find(name) != std::string::npos) return usage(demo::wants("--demos", "a comma-separated list of rastertek50, lighting2d, pointlights, deferred", demos.c_str()));
     using Sweep = std::vector<Measurement> (*)(const SweepOptions&);
     const std::pair<const char*, Sweep> sweeps[] = {{"rastertek50", sweepRastertek50}, {"lighting2d", sweepLighting2d},
                                                     {"pointlights", sweepPointLights}, {"deferred", sweepDeferred}};
@@ -161,7 +157,7 @@ int runReport(int argc, char** argv) {
         std::printf("%s:\n", name);
         for (Measurement& m : sweep(options)) rows.push_back(m);
     }
-    if (matched == 0) return usage("--demos names none of rastertek50, lighting2d, pointlights, deferred: '" + demos + "'");
+    if (matched == 0) return usage(demo::wants("--demos", "a comma-separated list of rastertek50, lighting2d, pointlights, deferred", demos.c_str()));
 
     // A device for the plot's text (and the renderer's name).
     PresentationParameters parameters;
@@ -191,5 +187,14 @@ int runReport(int argc, char** argv) {
 
 }  // namespace fxport::report
 
-FXDEMO_PROGRAM(report, "fxdemo report [--out DIR] [--gpu] [--frames N] [--size WxH] [--quick] [--check] [--demos a,b,...]",
+FXDEMO_PROGRAM(report,
+               "fxdemo report [--out DIR] [--gpu] [--frames N] [--size WxH] [--quick] [--check] [--demos a,b,...]\n"
+               "  Error against GPU time for each demo's quality knobs: DIR/report.md, report.csv, report.png.\n"
+               "  --out DIR      where the report goes (fxdemo-out/report)\n"
+               "  --gpu          headless on the GPU (EGL) instead of OSMesa\n"
+               "  --frames N     timed frames per setting (OSMesa 3, GPU 30; --quick 1)\n"
+               "  --size WxH     the demos' size (each demo's own; --quick 96x64)\n"
+               "  --quick        tiny sizes, one timed frame: a smoke run\n"
+               "  --check        assert what must hold on any machine (exit 1 if not)\n"
+               "  --demos LIST   which sweeps: rastertek50,lighting2d,pointlights,deferred (all)",
                fxport::report::runReport);

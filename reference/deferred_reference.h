@@ -12,11 +12,11 @@
 
 #include <vector>
 
-#include "d3d9_sampling.h"
-#include "reference_eval.h"
-#include "scene_geometry.h"
+#include "reference/d3d9_sampling.h"
+#include "reference/reference_eval.h"
+#include "reference/scene_geometry.h"
 
-namespace fxport::render_test {
+namespace fxport::reference {
 
 struct PixelPos {
     int x, y, width, height;
@@ -115,4 +115,4 @@ Range4 ssaoBlurPixel(Eval& ev, const CpuTexture& normals, const CpuTexture& ssao
 // ---- SSAOFinal.fx
 Range4 ssaoFinalPixel(Eval& ev, const CpuTexture& scene, const CpuTexture& ssao, V2 halfPixel, PixelPos p);
 
-}  // namespace fxport::render_test
+}  // namespace fxport::reference

@@ -23,10 +23,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "reference_eval.h"
-#include "ref_math.h"
+#include "reference/reference_eval.h"
+#include "reference/ref_math.h"
 
-namespace fxport::render_test {
+namespace fxport::reference {
 
 // Precision of the stored texels (what the GPU's filter and the target's rounding work with).
 enum class TexelFormat : std::uint8_t { Unorm8, Unorm16, Float32 };
@@ -89,4 +89,4 @@ CubeAddress cubeAddress(V3 dir);
 // The direction through (s, t) of a face: the inverse of cubeAddress.
 V3 cubeDirection(int face, double s, double t);
 
-}  // namespace fxport::render_test
+}  // namespace fxport::reference

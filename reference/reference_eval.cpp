@@ -1,10 +1,10 @@
-#include "reference_eval.h"
+#include "reference/reference_eval.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-namespace fxport::render_test {
+namespace fxport::reference {
 
 Range4 hull(const Range4& a, const Range4& b) {
     Range4 r;
@@ -149,4 +149,4 @@ PixelResult evaluatePixel(const PixelFunction& fn, const EvalOptions& options) {
     return Evaluator{fn, options}.evaluate();
 }
 
-}  // namespace fxport::render_test
+}  // namespace fxport::reference

@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace fxport::render_test {
+namespace fxport::reference {
 
 struct V2 {
     double x = 0, y = 0;
@@ -117,4 +117,4 @@ inline M4 inverse(const M4& a) {
 
 inline V4 point(V3 p) { return {p.x, p.y, p.z, 1}; }
 
-}  // namespace fxport::render_test
+}  // namespace fxport::reference

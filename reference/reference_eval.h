@@ -24,9 +24,9 @@
 #include <functional>
 #include <vector>
 
-#include "ref_math.h"
+#include "reference/ref_math.h"
 
-namespace fxport::render_test {
+namespace fxport::reference {
 
 // A reference value D3D9 leaves in [lo, hi] (lo == hi almost everywhere). `exact` marks values a
 // pass writes as constants (Clear.fx, cleared targets): they carry no uncertainty downstream.
@@ -84,4 +84,4 @@ struct PixelResult {
 using PixelFunction = std::function<Range4(Eval&)>;
 PixelResult evaluatePixel(const PixelFunction& fn, const EvalOptions& options);
 
-}  // namespace fxport::render_test
+}  // namespace fxport::reference

@@ -4,7 +4,7 @@
 
 #include <cstdint>
 
-namespace fxport::render_test {
+namespace fxport::reference {
 
 class Random {
 public:
@@ -22,4 +22,4 @@ private:
     std::uint64_t state_;
 };
 
-}  // namespace fxport::render_test
+}  // namespace fxport::reference

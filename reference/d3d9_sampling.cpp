@@ -1,9 +1,9 @@
-#include "d3d9_sampling.h"
+#include "reference/d3d9_sampling.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace fxport::render_test {
+namespace fxport::reference {
 
 namespace {
 
@@ -177,4 +177,4 @@ Range4 texCUBEPointRange(Eval& ev, const CpuCube& cube, V3 d) {
     return ev.read(r, masked(tol, kX));
 }
 
-}  // namespace fxport::render_test
+}  // namespace fxport::reference

@@ -1,12 +1,12 @@
-#include "scene_geometry.h"
+#include "reference/scene_geometry.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include "deterministic_random.h"
+#include "reference/deterministic_random.h"
 
-namespace fxport::render_test {
+namespace fxport::reference {
 
 namespace {
 
@@ -300,4 +300,4 @@ std::vector<int> coverageCandidates(const WorldMesh& m, const View3D& v, Cull cu
     return out;
 }
 
-}  // namespace fxport::render_test
+}  // namespace fxport::reference

@@ -8,6 +8,7 @@
 //              every fix leaves no NaN/Inf and stays within its bound; unwrap rays match.
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -21,12 +22,7 @@ namespace fxport::stability {
 
 namespace {
 
-const char* kUsage = "fxdemo stability [--size N] [--out DIR] [--gpu] [--no-largest] [--assert] [--hlsl DIR]";
-
-int usage(const std::string& message) {
-    std::fprintf(stderr, "fxdemo stability: %s\nusage: %s\n", message.c_str(), kUsage);
-    return 2;
-}
+int usage(const std::string& message) { return demo::usageError("stability", message); }
 
 std::string firstText(const CaseResult& r) { return r.first ? r.first->describe() : "-"; }
 
@@ -223,8 +219,11 @@ int runStability(int argc, char** argv) {
         const std::string arg = argv[i];
         std::string error;
         if (arg == "--size" && i + 1 < argc && std::string(argv[i + 1]).find('x') == std::string::npos) {
-            options.size = std::atoi(argv[++i]);
-            if (options.size <= 0 || options.size > 4096) return usage("--size wants N in 1..4096");
+            const char* v = argv[++i];
+            char* end = nullptr;
+            const long n = std::strtol(v, &end, 10);
+            if (end == v || *end || n <= 0 || n > 4096) return usage(demo::wants("--size", "N (or NxN) in 1..4096", v));
+            options.size = int(n);
             continue;
         }
         demo::OptionResult parsed = demo::parseCommonOption(argc, argv, i, common, error);
@@ -232,11 +231,19 @@ int runStability(int argc, char** argv) {
         if (parsed == demo::OptionResult::Consumed) continue;
         if (arg == "--assert") assertMode = true;
         else if (arg == "--no-largest") options.largest = false;
-        else if (arg == "--hlsl" && i + 1 < argc) options.hlslDir = argv[++i];
-        else return usage("unknown option '" + arg + "'");
+        else if (arg == "--hlsl") {
+            if (i + 1 >= argc) return usage(demo::wants("--hlsl", "a folder", nullptr));
+            options.hlslDir = argv[++i];
+        } else return usage(demo::unknownOption("stability", arg));
     }
-    if (common.width != 32 || common.height != 32) options.size = common.width;  // --size WxH: W
-    if (common.platform == "glfw") return usage("runs headless only (--gpu for EGL)");
+    if (common.width != 32 || common.height != 32) {  // --size WxH: W
+        if (common.width > 4096) {
+            const std::string size = std::to_string(common.width) + "x" + std::to_string(common.height);
+            return usage(demo::wants("--size", "N (or NxN) in 1..4096", size.c_str()));
+        }
+        options.size = common.width;
+    }
+    if (common.platform == "glfw") return usage("--window: the suite runs headless only (--gpu for EGL); leave it out");
     if (!common.defines.empty()) return usage("--define: each case picks its own defines (as written and fixed)");
 
     PresentationParameters parameters;
@@ -270,5 +277,13 @@ int runStability(int argc, char** argv) {
 
 }  // namespace fxport::stability
 
-FXDEMO_PROGRAM(stability, "fxdemo stability [--size N] [--out DIR] [--gpu] [--no-largest] [--assert]",
+FXDEMO_PROGRAM(stability,
+               "fxdemo stability [--size N] [--out DIR] [--gpu] [--no-largest] [--assert] [--hlsl DIR]\n"
+               "  Stiff and extreme inputs through the real effects: NaN/Inf scans and CPU references per case.\n"
+               "  --size N       the cases' target size, 1..4096 (32)\n"
+               "  --out DIR      where the table and images go (fxdemo-out/stability)\n"
+               "  --gpu          headless on the GPU (EGL) instead of OSMesa\n"
+               "  --no-largest   leave out the driver's widest target (GL_MAX_TEXTURE_SIZE x 1)\n"
+               "  --assert       exit 1 unless the known breakages show and every opt-in fix holds\n"
+               "  --hlsl DIR     the effects' folder (the source tree's hlsl/)",
                fxport::stability::runStability);

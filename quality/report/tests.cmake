@@ -2,4 +2,4 @@
 # hold on any machine (see checkReport in run_report.cpp).
 add_test(NAME demo.report.quick
          COMMAND fxdemo report --quick --check --out ${CMAKE_BINARY_DIR}/test-out/report)
-list(APPEND FXDEMO_TESTS demo.report.quick)
+list(APPEND FXDEMO_QUALITY_TESTS demo.report.quick)

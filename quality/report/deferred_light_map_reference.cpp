@@ -4,12 +4,14 @@
 #include <cmath>
 #include <string>
 
-#include "deferred_reference.h"
-#include "report/triangle_bvh.h"
+#include "reference/deferred_reference.h"
+#include "reference/triangle_bvh.h"
 
 namespace fxport::report {
 
-namespace rt = fxport::render_test;
+namespace rt = fxport::reference;
+using reference::Triangle;
+using reference::TriangleBvh;
 using TheCansinDeferredRenderer::Game1;
 
 namespace {

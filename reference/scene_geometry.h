@@ -14,9 +14,9 @@
 #include <array>
 #include <vector>
 
-#include "ref_math.h"
+#include "reference/ref_math.h"
 
-namespace fxport::render_test {
+namespace fxport::reference {
 
 inline constexpr double kPixelBias = 1.0 / 256;
 
@@ -82,4 +82,4 @@ std::vector<int> visibleCandidates(const WorldMesh& m, const View3D& v, Cull cul
 // candidates as above.
 std::vector<int> coverageCandidates(const WorldMesh& m, const View3D& v, Cull cull, int x, int y);
 
-}  // namespace fxport::render_test
+}  // namespace fxport::reference

@@ -1,10 +1,10 @@
-#include "deferred_reference.h"
+#include "reference/deferred_reference.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-namespace fxport::render_test {
+namespace fxport::reference {
 
 namespace {
 
@@ -348,4 +348,4 @@ Range4 ssaoFinalPixel(Eval& ev, const CpuTexture& scene, const CpuTexture& ssao,
     return Range4::of(tex2D(ev, scene, kLinearClamp, UV) * tex2D(ev, ssao, kLinearClamp, UV));
 }
 
-}  // namespace fxport::render_test
+}  // namespace fxport::reference
