@@ -97,8 +97,9 @@ struct UsageError {
     std::string message;
 };
 
-// fxc's switches (fxc /?) beside ours. Attached values (/Tps_3_0, /DNAME=1) are read only when the
-// rest has no '/', so an absolute path (/tmp/a.fx, /Data/b.fx) is never taken for a switch.
+// fxc's switches (fxc /?) beside ours. An argument with an attached value (/Tps_3_0, /DNAME=1,
+// /Foout.fxo) is a switch only when it is not a path: its first component (/tmp, /home) is not a
+// folder at the root, so absolute paths keep working.
 struct FxcAlias {
     const char* fxc;
     const char* ours;
@@ -118,7 +119,7 @@ std::vector<std::pair<std::string, std::string>> withFxcAliases(int argc, char**
                 if (s == a.fxc) {
                     out.push_back({a.ours, s});
                     done = true;
-                } else if (s.compare(0, n, a.fxc) == 0 && s.find('/', 1) == std::string::npos && !fs::exists(s, ec)) {
+                } else if (s.compare(0, n, a.fxc) == 0 && !fs::exists(fs::path("/") / s.substr(1, s.find('/', 1) - 1), ec)) {
                     out.push_back({a.ours, a.fxc});
                     out.push_back({s.substr(n), s.substr(n)});
                     done = true;
