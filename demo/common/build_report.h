@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "common/content_manager.h"
+#include "fxport/framework.h"
 #include "fxport/graphics.h"
 
 namespace fxport::demo {

@@ -60,7 +60,9 @@ void Game1::LoadContent() {
     spriteBatch = std::make_unique<SpriteBatch>(*GraphicsDevice);
 
     //Create spriteFont
-    spriteFont = Content.Load<SpriteFont>("DefaultFont");
+    // fxport: the built-in debug font stands for the tutorial's DefaultFont.spritefont (not in the seed).
+    debugFont = SpriteFont::createDebugFont(*GraphicsDevice);
+    spriteFont = debugFont.get();
 
     // fxport: the knobs (DemoSettings) are checked before anything is made.
     checkRange("spotShadowMapSize", demo.spotShadowMapSize, 256, 4096);

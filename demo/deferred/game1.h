@@ -19,6 +19,7 @@ class Game1 : public Game {
     std::unique_ptr<SpriteBatch> spriteBatch;
     //Sprite Font
     SpriteFont* spriteFont = nullptr;
+    std::unique_ptr<SpriteFont> debugFont;  // fxport: owns spriteFont
     //Keyboard State Holders
     KeyboardState currentK;
     KeyboardState previousK;

@@ -17,7 +17,7 @@ target_include_directories(deferred_scene_test PRIVATE ${CMAKE_CURRENT_SOURCE_DI
 target_compile_definitions(deferred_scene_test PRIVATE
   FXPORT_HLSL_DIR="${PROJECT_SOURCE_DIR}/hlsl"
   FXPORT_CONTENT_DIR="${CMAKE_BINARY_DIR}/content")
-target_link_libraries(deferred_scene_test PRIVATE fxport_graphics fxport_platform fxport_warnings GTest::gtest_main)
+target_link_libraries(deferred_scene_test PRIVATE fxport_framework fxport_graphics fxport_platform fxport_warnings GTest::gtest_main)
 set_source_files_properties(${FXDEMO_DEFERRED_TEST_SOURCES} PROPERTIES COMPILE_OPTIONS -Wno-shadow)
 if(TARGET content)
   add_dependencies(deferred_scene_test content)

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "common/build_report.h"
-#include "common/content_manager.h"
+#include "fxport/framework.h"
 #include "lighting2d/light_renderer.h"
 
 namespace _2DLightingSystem {

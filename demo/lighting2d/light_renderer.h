@@ -11,8 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "common/content_manager.h"
-#include "common/game.h"
+#include "fxport/framework.h"
 #include "common/pass_timer.h"
 #include "fxport/graphics.h"
 #include "lighting2d/lights.h"
@@ -20,8 +19,8 @@
 namespace _2DLightingSystem {
 
 using namespace fxport;
-using fxport::demo::GraphicsDeviceManager;
-using fxport::demo::ContentManager;
+using fxport::GraphicsDeviceManager;
+using fxport::ContentManager;
 
 class LightRenderer {
 public:

@@ -20,7 +20,7 @@
 
 #include "common/finite_check.h"
 #include "common/frame_loop.h"
-#include "common/game.h"
+#include "fxport/framework.h"
 #include "common/program_registry.h"
 #include "common/run_options.h"
 #include "fxport/graphics/input.h"
@@ -32,12 +32,12 @@
 
 namespace _2DLightingSystem {
 
-using fxport::demo::GameTime;
+using fxport::GameTime;
 using fxport::demo::PassTimer;
 
 // Procedural sprites (fxport: the seed's textures are not available; made with SetData).
 
-class Game1 : public fxport::demo::Game {
+class Game1 : public fxport::Game {
 public:
     std::unique_ptr<LightRenderer> lightRenderer;
     std::unique_ptr<SpriteBatch> spriteBatch;

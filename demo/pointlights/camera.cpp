@@ -11,7 +11,7 @@ Camera::Camera(float aspectRatio) {
 }
 
 void Camera::Update(const GameTime& gameTime, const KeyboardState& keyboardState) {
-    float time = float(gameTime.ElapsedGameTimeSeconds) * 60.0f;
+    float time = float(gameTime.ElapsedGameTime.TotalSeconds()) * 60.0f;
     if (keyboardState.IsKeyDown(Keys::Up)) cameraArc += time * 0.5f;
     if (keyboardState.IsKeyDown(Keys::Down)) cameraArc -= time * 0.5f;
     //limit the arc movement

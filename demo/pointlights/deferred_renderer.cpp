@@ -208,7 +208,7 @@ void DeferredRenderer::DrawManyPointLights(const GameTime& gameTime, const Color
     const float scale = std::min(1.0f, 22.0f / float(n));
     for (int k = 0; k < n; k++) {
         const int i = k / 2;
-        const double a = i * MathHelper::TwoPi / perRing + gameTime.TotalGameTimeSeconds;
+        const double a = i * MathHelper::TwoPi / perRing + gameTime.TotalGameTime.TotalSeconds();
         if (k % 2 == 0)
             DrawPointLight(Vector3(float(std::sin(a)), 0.3f, float(std::cos(a))) * 20, colors[i % 10], 12, 2 * scale);
         else
@@ -303,27 +303,27 @@ void DeferredRenderer::DrawLights(const GameTime& gameTime) {
         colors[7] = Color::CornflowerBlue;
         colors[8] = Color::Gold;
         colors[9] = Color::Honeydew;
-        float angle = float(gameTime.TotalGameTimeSeconds);
+        float angle = float(gameTime.TotalGameTime.TotalSeconds());
         (void)angle;
         if (quality.lightCount > 0) DrawManyPointLights(gameTime, colors);
         for (int i = 0; i < 10 && quality.lightCount == 0; i++) {
-            Vector3 pos = Vector3(float(std::sin(i * MathHelper::TwoPi / 10 + gameTime.TotalGameTimeSeconds)), 0.3f,
-                                  float(std::cos(i * MathHelper::TwoPi / 10 + gameTime.TotalGameTimeSeconds)));
+            Vector3 pos = Vector3(float(std::sin(i * MathHelper::TwoPi / 10 + gameTime.TotalGameTime.TotalSeconds())), 0.3f,
+                                  float(std::cos(i * MathHelper::TwoPi / 10 + gameTime.TotalGameTime.TotalSeconds())));
             DrawPointLight(pos * 20, colors[i], 12, 2);
-            pos = Vector3(float(std::cos(i * MathHelper::TwoPi / 10 + gameTime.TotalGameTimeSeconds)), -0.6f,
-                          float(std::sin(i * MathHelper::TwoPi / 10 + gameTime.TotalGameTimeSeconds)));
+            pos = Vector3(float(std::cos(i * MathHelper::TwoPi / 10 + gameTime.TotalGameTime.TotalSeconds())), -0.6f,
+                          float(std::sin(i * MathHelper::TwoPi / 10 + gameTime.TotalGameTime.TotalSeconds())));
             DrawPointLight(pos * 20, colors[i], 20, 1);
         }
         if (quality.lightCount == 0) {
-            DrawPointLight(Vector3(0, float(std::sin(gameTime.TotalGameTimeSeconds * 0.8)) * 40, 0), Color::Red, 30, 5);
-            DrawPointLight(Vector3(0, 0, 70), Color::Wheat, 55 + 10 * float(std::sin(5 * gameTime.TotalGameTimeSeconds)), 3);
+            DrawPointLight(Vector3(0, float(std::sin(gameTime.TotalGameTime.TotalSeconds() * 0.8)) * 40, 0), Color::Red, 30, 5);
+            DrawPointLight(Vector3(0, 0, 70), Color::Wheat, 55 + 10 * float(std::sin(5 * gameTime.TotalGameTime.TotalSeconds())), 3);
         }
     }
     if (drawSpotLight) {
         // fxport: the exercise's spot light, in Scene units: 7.5 above the courtyard's centre,
         // sweeping around the vertical, 25 degree half-angle, reaching 14 units.
         PassTimer timed(gpuTimer, "SpotLight");
-        double t = gameTime.TotalGameTimeSeconds;
+        double t = gameTime.TotalGameTime.TotalSeconds();
         DrawSpotLight(Vector3(0, 7.5f, 0), Vector3(0.6f * float(std::sin(t)), -1.0f, 0.6f * float(std::cos(t))),
                       Color::White, 14.0f, 3.0f, MathHelper::ToRadians(25.0f), 4.0f);
     }

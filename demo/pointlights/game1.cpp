@@ -36,7 +36,7 @@ void Game1::Update(const GameTime& gameTime) {
 
 void Game1::Draw(const GameTime& gameTime) {
     GameTime time = gameTime;
-    if (demo.time) time.TotalGameTimeSeconds = *demo.time;
+    if (demo.time) time.TotalGameTime = TimeSpan::FromSeconds(*demo.time);
     renderer->Draw(time);
     Game::Draw(gameTime);
 }

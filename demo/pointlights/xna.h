@@ -3,8 +3,7 @@
 // tutorial's namespace so that the C++ reads like the C#.
 #pragma once
 
-#include "common/content_manager.h"
-#include "common/game.h"
+#include "fxport/framework.h"
 #include "common/pass_timer.h"
 #include "fxport/graphics.h"
 #include "fxport/graphics/model.h"

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <memory>
 
-#include "common/game.h"
+#include "fxport/framework.h"
 #include "lighting2d/light_renderer.h"
 #include "lighting2d/scene_sprites.h"
 #include "report/lighting2d_reference.h"
@@ -28,7 +28,7 @@ struct Knobs {
 };
 
 
-class Scene2D : public demo::Game {
+class Scene2D : public fxport::Game {
 public:
     explicit Scene2D(const Knobs& knobs) : knobs_(knobs) {
         Content.RootDirectory = FXPORT_CONTENT_DIR;
@@ -68,7 +68,7 @@ protected:
         bar_ = std::move(sprites.bar);
     }
 
-    void Draw(const demo::GameTime&) override {
+    void Draw(const fxport::GameTime&) override {
         const int W = GraphicsDevice->Viewport.Width, H = GraphicsDevice->Viewport.Height;
         {
             demo::PassTimer t(gpuTimer, "Background");

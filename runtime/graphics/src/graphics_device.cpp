@@ -125,6 +125,27 @@ GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters)
     ScissorRectangle = Rectangle(0, 0, parameters_.BackBufferWidth, parameters_.BackBufferHeight);
 }
 
+void GraphicsDevice::Reset(const fxport::PresentationParameters& parameters) {
+    if (parameters.BackBufferWidth <= 0 || parameters.BackBufferHeight <= 0)
+        throw ArgumentError("GraphicsDevice.Reset: back buffer size " + std::to_string(parameters.BackBufferWidth) + "x" +
+                            std::to_string(parameters.BackBufferHeight) + " must be positive");
+    makeCurrent();
+    parameters_.BackBufferWidth = parameters.BackBufferWidth;
+    parameters_.BackBufferHeight = parameters.BackBufferHeight;
+    parameters_.BackBufferFormat = parameters.BackBufferFormat;
+    parameters_.DepthStencilFormat = parameters.DepthStencilFormat;
+    parameters_.RenderTargetUsage = parameters.RenderTargetUsage;
+    std::erase_if(impl_->boundSinceMark,
+                  [&](const RenderTargetBinding& b) { return b.RenderTarget == impl_->backBuffer.get(); });
+    impl_->backBuffer.reset();  // its framebuffers go with it
+    impl_->backBuffer = std::make_unique<RenderTarget2D>(*this, parameters_.BackBufferWidth, parameters_.BackBufferHeight,
+                                                          false, parameters_.BackBufferFormat,
+                                                          parameters_.DepthStencilFormat);
+    impl_->backBuffer->Name = "BackBuffer";
+    SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+    ScissorRectangle = Rectangle(0, 0, parameters_.BackBufferWidth, parameters_.BackBufferHeight);
+}
+
 GraphicsDevice::~GraphicsDevice() {
     // Resources the program still holds are disposed now (their GL objects die with the context)
     // and cut loose, so their destructors later do not reach a dead device.

@@ -186,6 +186,10 @@ public:
     void SaveBackBufferAsPng(const std::string& path) const;
 
     const fxport::PresentationParameters& PresentationParameters() const { return parameters_; }
+    // XNA's Reset(PresentationParameters): makes the back buffer again with the new size, formats and
+    // usage (its contents are lost) and binds it. The platform, window and debug flag stay as they
+    // were (a window keeps its size). Throws ArgumentError for a size that is not positive.
+    void Reset(const fxport::PresentationParameters& parameters);
     platform::GraphicsContext& context() { return *context_; }
     std::string rendererName() const;
     int maxTextureSize() const;

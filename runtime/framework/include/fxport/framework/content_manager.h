@@ -1,0 +1,105 @@
+// ContentManager: XNA's Content.Load<T>("name"). XNA loads .xnb files its content pipeline built;
+// fxport loads the sources. An asset name has no extension, '/' separates folders, and each type
+// tries these files, in order, under each search folder:
+//
+//   Effect      <name>.fx (compiled by xlate, cached), <name>.fxeffect (precompiled: fxport compile)
+//   Texture2D   <name>.png, <name>.jpg, <name>.jpeg, <name>.bmp, <name>.tga
+//   Model       <name>.gltf, <name>.glb
+//   SpriteFont  <name>.spritefont (XNA's XML font description: FontName, Size, Spacing, UseKerning,
+//               Style, DefaultCharacter, CharacterRegions; the font found by fontconfig, or a .ttf
+//               named like FontName beside it), <name>.fnt (BMFont, text format, with its page
+//               PNGs), <name>.ttf / <name>.otf (Size 16 px, printable ASCII + Latin-1, '?' default)
+//
+// Search folders: RootDirectory (relative paths are taken from the working directory), and for
+// effects first EffectDirectory when set, where the asset's last path component is used
+// ("Effects/Clear" -> <EffectDirectory>/Clear.fx), so .fx sources can stay where they are.
+// A missing asset throws ContentLoadException naming the asset, the type and every path tried.
+//
+// As in XNA, the manager owns what it loads, returns the same object for the same name (cached per
+// type and name), and frees everything at Unload() or destruction.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "fxport/graphics/effect.h"
+#include "fxport/graphics/errors.h"
+#include "fxport/graphics/model.h"
+#include "fxport/graphics/sprite_font.h"
+#include "fxport/graphics/texture.h"
+
+namespace fxport {
+
+class GraphicsDevice;
+
+// XNA's ContentLoadException: the asset could not be found or read.
+class ContentLoadException : public std::runtime_error {
+public:
+    explicit ContentLoadException(const std::string& what) : std::runtime_error(what) {}
+};
+
+class ContentManager {
+public:
+    ContentManager() = default;
+    // fxport: XNA's ContentManager(IServiceProvider, rootDirectory); the service it needs is the device.
+    explicit ContentManager(GraphicsDevice& device, std::string rootDirectory = {});
+    ~ContentManager();
+    ContentManager(const ContentManager&) = delete;
+    ContentManager& operator=(const ContentManager&) = delete;
+
+    // The folder asset names are relative to (XNA's Content.RootDirectory).
+    std::string RootDirectory;
+    // fxport: a folder searched first for effects, by the asset's last path component (see above).
+    std::string EffectDirectory;
+    // fxport: the options every effect is compiled with (include folders, defines, cache).
+    EffectOptions effectOptions;
+
+    // fxport: a Game sets its device here when it makes it; a standalone manager takes it in the
+    // constructor.
+    void setGraphicsDevice(GraphicsDevice* device) { device_ = device; }
+
+    // T is Effect, Texture2D, Model or SpriteFont (other types do not link). Throws
+    // ContentLoadException naming the asset and the paths tried when no file exists, and the
+    // loader's error (ArgumentError, xlate::CompileError ...) prefixed with the asset name when the
+    // file cannot be read.
+    template <class T> T* Load(const std::string& assetName);
+
+    // Frees everything loaded (models first: their parts reference effects and textures).
+    void Unload();
+
+    // fxport: every asset loaded, in order, with the time its load took (an effect's includes
+    // xlate's compile or cache lookup): what a program actually built (fxdemo --explain reads it).
+    struct LoadRecord {
+        std::string assetName;
+        std::string type;  // "Effect", "Texture2D", "Model", "SpriteFont"
+        std::string path;  // the file loaded
+        double milliseconds = 0;
+    };
+    const std::vector<LoadRecord>& loadLog() const { return loadLog_; }
+    // fxport: the loaded effect of that asset name, or nullptr when it was never loaded.
+    Effect* findLoadedEffect(const std::string& assetName) const;
+
+private:
+    GraphicsDevice& device(const std::string& assetName, const char* type) const;
+    // The first existing file among the candidates; throws ContentLoadException listing them all.
+    std::string locate(const std::string& assetName, const char* type, const std::vector<std::string>& candidates) const;
+    std::vector<std::string> candidates(const std::string& folder, const std::string& name,
+                                        std::initializer_list<const char*> extensions) const;
+
+    GraphicsDevice* device_ = nullptr;
+    std::map<std::string, std::unique_ptr<Effect>> effects_;
+    std::map<std::string, std::unique_ptr<Model>> models_;
+    std::map<std::string, std::unique_ptr<Texture2D>> textures_;
+    std::map<std::string, std::unique_ptr<SpriteFont>> fonts_;
+    std::vector<LoadRecord> loadLog_;
+};
+
+template <> Effect* ContentManager::Load<Effect>(const std::string& assetName);
+template <> Texture2D* ContentManager::Load<Texture2D>(const std::string& assetName);
+template <> Model* ContentManager::Load<Model>(const std::string& assetName);
+template <> SpriteFont* ContentManager::Load<SpriteFont>(const std::string& assetName);
+
+}  // namespace fxport

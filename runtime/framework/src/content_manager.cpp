@@ -1,0 +1,150 @@
+// ContentManager: asset name -> file (the mapping in content_manager.h), loading, caching by name,
+// the load log.
+#include "fxport/framework/content_manager.h"
+
+#include <chrono>
+#include <filesystem>
+
+#include "fxport/graphics/graphics_device.h"
+#include "fxport/graphics/model.h"
+#include "fxport/graphics/sprite_font.h"
+#include "fxport/graphics/texture.h"
+#include "sprite_font_import.h"
+
+namespace fxport {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Times one load for the load log.
+class LoadTimer {
+public:
+    double milliseconds() const {
+        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
+    }
+
+private:
+    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+std::string quoted(const std::string& assetName) { return "\"" + assetName + "\""; }
+
+std::string lowerExtension(const std::string& path) {
+    std::string extension = fs::path(path).extension().string();
+    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return extension;
+}
+
+// Runs a loader; its error gets the asset's name in front (the loader names the file).
+template <class F> auto loadNamed(const std::string& type, const std::string& assetName, F&& load) {
+    try {
+        return load();
+    } catch (const ContentLoadException&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw ContentLoadException("ContentManager.Load<" + type + ">(" + quoted(assetName) + "): " + e.what());
+    }
+}
+
+}  // namespace
+
+ContentManager::ContentManager(GraphicsDevice& device, std::string rootDirectory)
+    : RootDirectory(std::move(rootDirectory)), device_(&device) {}
+
+ContentManager::~ContentManager() { Unload(); }
+
+void ContentManager::Unload() {
+    // Models' parts may reference effects and textures: drop the models first.
+    models_.clear();
+    fonts_.clear();
+    textures_.clear();
+    effects_.clear();
+    loadLog_.clear();
+}
+
+Effect* ContentManager::findLoadedEffect(const std::string& assetName) const {
+    auto it = effects_.find(assetName);
+    return it == effects_.end() ? nullptr : it->second.get();
+}
+
+GraphicsDevice& ContentManager::device(const std::string& assetName, const char* type) const {
+    if (!device_)
+        throw InvalidOperation(std::string("ContentManager.Load<") + type + ">(" + quoted(assetName) +
+                               "): no GraphicsDevice yet (a Game sets it in Run/Start; else construct the "
+                               "ContentManager with the device)");
+    return *device_;
+}
+
+std::vector<std::string> ContentManager::candidates(const std::string& folder, const std::string& name,
+                                                    std::initializer_list<const char*> extensions) const {
+    std::vector<std::string> paths;
+    for (const char* extension : extensions) paths.push_back((fs::path(folder) / (name + extension)).string());
+    return paths;
+}
+
+std::string ContentManager::locate(const std::string& assetName, const char* type,
+                                   const std::vector<std::string>& paths) const {
+    if (assetName.empty()) throw ArgumentError(std::string("ContentManager.Load<") + type + ">: empty asset name");
+    for (const std::string& path : paths) {
+        std::error_code error;
+        if (fs::is_regular_file(path, error)) return path;
+    }
+    std::string tried;
+    for (const std::string& path : paths) tried += "\n  " + path;
+    throw ContentLoadException(std::string("ContentManager.Load<") + type + ">(" + quoted(assetName) +
+                               "): no file for the asset; tried:" + tried);
+}
+
+template <> Effect* ContentManager::Load<Effect>(const std::string& assetName) {
+    if (auto it = effects_.find(assetName); it != effects_.end()) return it->second.get();
+    std::vector<std::string> paths;
+    if (!EffectDirectory.empty())
+        paths = candidates(EffectDirectory, fs::path(assetName).filename().string(), {".fx", ".fxeffect"});
+    for (const std::string& path : candidates(RootDirectory, assetName, {".fx", ".fxeffect"})) paths.push_back(path);
+    const std::string file = locate(assetName, "Effect", paths);
+    GraphicsDevice& graphicsDevice = device(assetName, "Effect");
+    LoadTimer timer;
+    std::unique_ptr<Effect> effect = loadNamed("Effect", assetName, [&] {
+        return lowerExtension(file) == ".fxeffect" ? Effect::FromCompiledFile(graphicsDevice, file)
+                                                   : std::make_unique<Effect>(graphicsDevice, file, effectOptions);
+    });
+    effect->Name = fs::path(assetName).filename().string();
+    loadLog_.push_back({assetName, "Effect", file, timer.milliseconds()});
+    return effects_.emplace(assetName, std::move(effect)).first->second.get();
+}
+
+template <> Texture2D* ContentManager::Load<Texture2D>(const std::string& assetName) {
+    if (auto it = textures_.find(assetName); it != textures_.end()) return it->second.get();
+    const std::string file =
+        locate(assetName, "Texture2D", candidates(RootDirectory, assetName, {".png", ".jpg", ".jpeg", ".bmp", ".tga"}));
+    GraphicsDevice& graphicsDevice = device(assetName, "Texture2D");
+    LoadTimer timer;
+    auto texture = loadNamed("Texture2D", assetName, [&] { return Texture2D::FromFile(graphicsDevice, file); });
+    texture->Name = assetName;
+    loadLog_.push_back({assetName, "Texture2D", file, timer.milliseconds()});
+    return textures_.emplace(assetName, std::move(texture)).first->second.get();
+}
+
+template <> Model* ContentManager::Load<Model>(const std::string& assetName) {
+    if (auto it = models_.find(assetName); it != models_.end()) return it->second.get();
+    const std::string file = locate(assetName, "Model", candidates(RootDirectory, assetName, {".gltf", ".glb"}));
+    GraphicsDevice& graphicsDevice = device(assetName, "Model");
+    LoadTimer timer;
+    auto model = loadNamed("Model", assetName, [&] { return Model::Load(graphicsDevice, file); });
+    loadLog_.push_back({assetName, "Model", file, timer.milliseconds()});
+    return models_.emplace(assetName, std::move(model)).first->second.get();
+}
+
+template <> SpriteFont* ContentManager::Load<SpriteFont>(const std::string& assetName) {
+    if (auto it = fonts_.find(assetName); it != fonts_.end()) return it->second.get();
+    const std::string file = locate(assetName, "SpriteFont",
+                                    candidates(RootDirectory, assetName, {".spritefont", ".fnt", ".ttf", ".otf"}));
+    GraphicsDevice& graphicsDevice = device(assetName, "SpriteFont");
+    LoadTimer timer;
+    auto font = loadNamed("SpriteFont", assetName, [&] { return importSpriteFont(graphicsDevice, file); });
+    loadLog_.push_back({assetName, "SpriteFont", file, timer.milliseconds()});
+    return fonts_.emplace(assetName, std::move(font)).first->second.get();
+}
+
+}  // namespace fxport

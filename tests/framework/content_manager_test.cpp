@@ -1,0 +1,127 @@
+// fxport::ContentManager: asset name -> file mapping (content_manager.h), caching by name, Unload,
+// and the errors that name the asset and every path tried. Files are written to a temp folder.
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "fxport/framework.h"
+
+namespace fxport {
+namespace {
+
+namespace fs = std::filesystem;
+
+class ContentManagerTest : public ::testing::Test {
+protected:
+    static GraphicsDevice& device() {
+        static GraphicsDevice d(PresentationParameters{});
+        return d;
+    }
+    void SetUp() override {
+        root = fs::temp_directory_path() /
+               ("fxport-content-" + std::to_string(::getpid()) + "-" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(root);
+        fs::create_directories(root / "Textures");
+        fs::create_directories(root / "Effects");
+    }
+    void TearDown() override { fs::remove_all(root); }
+
+    // A 2x1 PNG: red, then green.
+    void writeTexture(const fs::path& path) {
+        Texture2D texture(device(), 2, 1, false, SurfaceFormat::Color);
+        const Color texels[2] = {Color::Red, Color::Lime};
+        texture.SetData(texels, 2);
+        texture.SaveAsPng(path.string());
+    }
+
+    fs::path root;
+};
+
+TEST_F(ContentManagerTest, LoadsATextureByNameWithoutExtensionAndCachesIt) {
+    writeTexture(root / "Textures" / "Pair.png");
+    ContentManager content(device(), root.string());
+    Texture2D* texture = content.Load<Texture2D>("Textures/Pair");
+    ASSERT_NE(texture, nullptr);
+    EXPECT_EQ(texture->Width(), 2);
+    EXPECT_EQ(texture->Height(), 1);
+    Color texels[2];
+    texture->GetData(texels, 2);
+    EXPECT_TRUE(texels[0] == Color::Red);
+    EXPECT_TRUE(texels[1] == Color::Lime);
+    EXPECT_EQ(content.Load<Texture2D>("Textures/Pair"), texture);  // same object for the same name
+    ASSERT_EQ(content.loadLog().size(), 1u);
+    EXPECT_EQ(content.loadLog()[0].path, (root / "Textures" / "Pair.png").string());
+    content.Unload();
+    EXPECT_TRUE(content.loadLog().empty());
+    Texture2D* again = content.Load<Texture2D>("Textures/Pair");
+    ASSERT_NE(again, nullptr);
+    EXPECT_EQ(content.loadLog().size(), 1u);  // loaded from the file again
+}
+
+TEST_F(ContentManagerTest, MissingAssetNamesTheAssetAndEveryPathTried) {
+    ContentManager content(device(), root.string());
+    auto expectMessage = [&](auto load, const std::string& type, const std::string& asset,
+                             std::initializer_list<const char*> extensions) {
+        try {
+            load();
+            ADD_FAILURE() << type << " " << asset << " loaded";
+        } catch (const ContentLoadException& e) {
+            const std::string message = e.what();
+            EXPECT_NE(message.find("Load<" + type + ">(\"" + asset + "\")"), std::string::npos) << message;
+            for (const char* extension : extensions)
+                EXPECT_NE(message.find((root / (asset + extension)).string()), std::string::npos)
+                    << extension << " missing from: " << message;
+        }
+    };
+    expectMessage([&] { content.Load<Texture2D>("Textures/Nope"); }, "Texture2D", "Textures/Nope",
+                  {".png", ".jpg", ".jpeg", ".bmp", ".tga"});
+    expectMessage([&] { content.Load<Model>("Nope"); }, "Model", "Nope", {".gltf", ".glb"});
+    expectMessage([&] { content.Load<Effect>("Effects/Nope"); }, "Effect", "Effects/Nope", {".fx", ".fxeffect"});
+    expectMessage([&] { content.Load<SpriteFont>("Nope"); }, "SpriteFont", "Nope",
+                  {".spritefont", ".fnt", ".ttf", ".otf"});
+}
+
+TEST_F(ContentManagerTest, UnreadableFileNamesTheAssetAndTheFile) {
+    std::ofstream(root / "Textures" / "Broken.png") << "not a png";
+    ContentManager content(device(), root.string());
+    try {
+        content.Load<Texture2D>("Textures/Broken");
+        ADD_FAILURE() << "a broken PNG loaded";
+    } catch (const ContentLoadException& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("Load<Texture2D>(\"Textures/Broken\")"), std::string::npos) << message;
+        EXPECT_NE(message.find("Broken.png"), std::string::npos) << message;
+    }
+}
+
+TEST_F(ContentManagerTest, EffectsFromRootOrEffectDirectory) {
+    const fs::path fixture = fs::path(FXPORT_RUNTIME_FIXTURES) / "Conventions.fx";
+    fs::copy_file(fixture, root / "Effects" / "Conventions.fx");
+    ContentManager content(device(), root.string());
+    Effect* effect = content.Load<Effect>("Effects/Conventions");
+    ASSERT_NE(effect, nullptr);
+    EXPECT_EQ(effect->Name, "Conventions");
+    EXPECT_GT(effect->Techniques.Count(), 0);
+    EXPECT_EQ(content.findLoadedEffect("Effects/Conventions"), effect);
+    EXPECT_EQ(content.findLoadedEffect("Effects/Other"), nullptr);
+
+    // EffectDirectory: the .fx files where they are, found by the asset's last path component.
+    ContentManager sources(device(), (root / "elsewhere").string());
+    sources.EffectDirectory = fixture.parent_path().string();
+    Effect* fromSources = sources.Load<Effect>("Effects/Conventions");
+    ASSERT_NE(fromSources, nullptr);
+    EXPECT_EQ(sources.loadLog()[0].path, fixture.string());
+}
+
+TEST_F(ContentManagerTest, LoadWithoutADeviceIsAnError) {
+    writeTexture(root / "Textures" / "Pair.png");
+    ContentManager content;
+    content.RootDirectory = root.string();
+    EXPECT_THROW(content.Load<Texture2D>("Textures/Pair"), InvalidOperation);
+}
+
+}  // namespace
+}  // namespace fxport
