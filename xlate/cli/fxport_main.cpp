@@ -1,15 +1,18 @@
 // fxport: the effect compiler's command line.
-//   fxport compile IN.fx -o OUT [-I dir] [-D NAME=VALUE] [--technique NAME] [--no-cache]
+//   fxport compile IN.fx -o OUT [-I dir] [-D NAME=VALUE] [--technique NAME] [--no-cache] [--depfile FILE]
 //   fxport dump IN.fx [--reflection] [-I dir] [-D NAME=VALUE]
 //   fxport check PATH... [-I dir] [-D NAME=VALUE] [--no-cache] [--warnings]
 //   --root DIR: `#include "../x.fxh"` may reach files inside DIR (default: the effect's folder, or
 //   the folder `check` scans)
-// Exit status: 0 success, 1 an effect failed to compile, 2 bad usage.
+//   fxport --help | fxport COMMAND --help | fxport --version
+// fxc spellings are accepted beside the long forms: /E, /T, /D, /I, /Fo, /?.
+// Exit status: 0 success, 1 an effect failed to compile, 2 bad usage (one line naming the option).
 #include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -26,18 +29,72 @@ using namespace fxport::xlate;
 namespace {
 
 const char* kUsage =
-    "usage: fxport compile IN.fx -o OUT [-I dir] [-D NAME=VALUE] [--technique NAME] [--no-cache]\n"
+    "usage: fxport compile IN.fx -o OUT [-I dir] [-D NAME=VALUE] [--technique NAME] [--no-cache] [--depfile FILE]\n"
     "       fxport dump IN.fx [--reflection] [-I dir] [-D NAME=VALUE]\n"
     "       fxport check PATH... [-I dir] [-D NAME=VALUE] [--no-cache] [--warnings]\n"
-    "       (all: --root DIR lets #include \"../x.fxh\" reach files inside DIR)\n";
+    "       (all: --root DIR lets #include \"../x.fxh\" reach files inside DIR)\n"
+    "       fxport --version | fxport --help | fxport COMMAND --help\n";
+
+const char* kHelp =
+    "fxport: compiles Direct3D 9-11 effects (.fx, as written for XNA 4 and D3D10/11) to GLSL 4.50 with\n"
+    "reflection and pass states, for the fxport runtime (Effect::FromCompiledFile loads the output).\n"
+    "\n"
+    "commands:\n"
+    "  compile   compile one effect to a compiled-effect file (what fxport_add_effects runs)\n"
+    "  dump      print an effect's techniques, states, parameters and GLSL (or its reflection as JSON)\n"
+    "  check     compile every .fx under the given files/folders, one line each\n"
+    "\n"
+    "options of every command:\n"
+    "  -I DIR, /I DIR           a folder #include may read from (repeatable)\n"
+    "  -D NAME[=VALUE], /D ...  define a macro before the source (repeatable; VALUE defaults to 1)\n"
+    "  -h, --help, /?           help (after a command: that command's help)\n"
+    "  --version                print fxport's version\n"
+    "\n"
+    "Diagnostics read file(line,col): error FXnnnn: message. Exit status: 0 ok, 1 an effect failed,\n"
+    "2 bad usage. Environment: FXPORT_CACHE_DIR (compile cache), FXPORT_DUMP=DIR (rewritten HLSL, GLSL).\n"
+    "'fxport COMMAND --help' lists a command's options.\n";
+
+const char* commandHelp(const std::string& command) {
+    if (command == "compile")
+        return "usage: fxport compile IN.fx -o OUT [options]\n"
+               "Compiles IN.fx (every technique) and writes the compiled effect (JSON) to OUT.\n"
+               "  -o OUT, /Fo OUT       the compiled-effect file to write (required)\n"
+               "  -I DIR, /I DIR        a folder #include may read from (repeatable)\n"
+               "  -D NAME[=VALUE], /D   define a macro (repeatable)\n"
+               "  --technique NAME      compile only this technique (repeatable)\n"
+               "  --no-cache            do not read or write the compile cache\n"
+               "  --depfile FILE        also write FILE: Make-style dependencies of OUT (the effect and\n"
+               "                        every file it #includes), for Ninja/Make depfile support\n"
+               "  /E NAME, /T PROFILE   fxc's entry point and profile (for loose shaders)\n";
+    if (command == "dump")
+        return "usage: fxport dump IN.fx [options]\n"
+               "Prints the effect's uniform blocks, parameters, techniques with their states, and each\n"
+               "shader's inputs, samplers and GLSL.\n"
+               "  --reflection          print the reflection as JSON instead (no GLSL)\n"
+               "  -I DIR, /I DIR        a folder #include may read from (repeatable)\n"
+               "  -D NAME[=VALUE], /D   define a macro (repeatable)\n";
+    if (command == "check")
+        return "usage: fxport check PATH... [options]\n"
+               "Compiles each effect file, and every .fx under each folder; prints one line per effect,\n"
+               "then \"N passed, M failed\". Exit status 1 when any failed.\n"
+               "  -I DIR, /I DIR        a folder #include may read from (repeatable)\n"
+               "  -D NAME[=VALUE], /D   define a macro (repeatable)\n"
+               "  --no-cache            do not read or write the compile cache\n"
+               "  --warnings            print warnings too\n";
+    return nullptr;
+}
 
 struct Args {
     std::string command;
     std::vector<std::string> inputs;
     std::string output;
+    std::string depfile;
     CompileOptions options;
     bool reflectionOnly = false;
     bool showWarnings = false;
+    bool help = false;
+    bool version = false;
+    std::vector<std::string> given;  // options as typed, to say which do not belong to the command
 };
 
 // A -D's name is a macro name, optionally with a parameter list; neither part may hold a line
@@ -75,34 +132,94 @@ bool writeAtomically(const std::string& path, const std::string& text, std::stri
         return false;
     }
     return true;
+
+// A usage error: one line naming the option (as typed) and the value.
+struct UsageError {
+    std::string message;
+};
+
+// fxc's switches (fxc /?) beside ours. An argument with an attached value (/Tps_3_0, /DNAME=1,
+// /Foout.fxo) is a switch only when it is not a path: its first component (/tmp, /home) is not a
+// folder at the root, so absolute paths keep working.
+struct FxcAlias {
+    const char* fxc;
+    const char* ours;
+};
+const FxcAlias kFxcAliases[] = {{"/Fo", "-o"}, {"/E", "--entry"}, {"/T", "--profile"}, {"/D", "-D"}, {"/I", "-I"}, {"/?", "--help"}};
+
+// Rewrites fxc switches to our spellings, remembering what was typed (for messages).
+std::vector<std::pair<std::string, std::string>> withFxcAliases(int argc, char** argv) {
+    std::vector<std::pair<std::string, std::string>> out;  // (ours, as typed)
+    for (int i = 1; i < argc; ++i) {
+        std::string s = argv[i];
+        bool done = false;
+        if (!s.empty() && s[0] == '/') {
+            std::error_code ec;
+            for (const auto& a : kFxcAliases) {
+                size_t n = std::strlen(a.fxc);
+                if (s == a.fxc) {
+                    out.push_back({a.ours, s});
+                    done = true;
+                } else if (s.compare(0, n, a.fxc) == 0 && !fs::exists(fs::path("/") / s.substr(1, s.find('/', 1) - 1), ec)) {
+                    out.push_back({a.ours, a.fxc});
+                    out.push_back({s.substr(n), s.substr(n)});
+                    done = true;
+                }
+                if (done) break;
+            }
+        }
+        if (!done) out.push_back({s, s});
+    }
+    return out;
 }
 
 bool parseArgs(int argc, char** argv, Args& a, std::string& error) {
-    if (argc < 2) {
-        error = "missing command";
+    auto args = withFxcAliases(argc, argv);
+    size_t first = 0;
+    if (!args.empty() && (args[0].first == "--help" || args[0].first == "-h" || args[0].first == "--version")) {
+        a.help = args[0].first != "--version";
+        a.version = !a.help;
+        if (args.size() > 1) {
+            error = "option '" + args[0].second + "' takes no further arguments (got '" + args[1].second + "')";
+            return false;
+        }
+        return true;
+    }
+    if (args.empty()) {
+        error = "missing command (compile, dump or check; see 'fxport --help')";
         return false;
     }
-    a.command = argv[1];
-    for (int i = 2; i < argc; ++i) {
-        std::string s = argv[i];
+    a.command = args[first].first;
+    for (size_t i = first + 1; i < args.size(); ++i) {
+        std::string s = args[i].first;
+        const std::string& typed = args[i].second;
         auto value = [&](std::string& out) {
             if (s.size() > 2 && (s.rfind("-I", 0) == 0 || s.rfind("-D", 0) == 0 || s.rfind("-o", 0) == 0)) {
                 out = s.substr(2);
                 return true;
             }
-            if (i + 1 >= argc) {
-                error = "option " + s + " needs a value";
+            if (i + 1 >= args.size()) {
+                error = "option '" + typed + "' needs a value";
                 return false;
             }
-            out = argv[++i];
+            out = args[++i].first;
+            if (out.empty()) {
+                error = "option '" + typed + "' has an empty value";
+                return false;
+            }
             return true;
         };
         std::string v;
+        if (s == "--help" || s == "-h") {
+            a.help = true;
+            continue;
+        }
+        if (!s.empty() && s[0] == '-') a.given.push_back(typed.rfind("-", 0) == 0 && typed.size() > 2 && typed[1] != '-' ? typed.substr(0, 2) : typed);
         if (s.rfind("-I", 0) == 0) {
             if (!value(v)) return false;
             std::error_code ec;
             if (!fs::is_directory(v, ec)) {
-                error = "option -I: '" + v + "' is not a folder";
+                error = "option '-I' has a bad value '" + v + "': not a folder";
                 return false;
             }
             a.options.includeDirs.push_back(v);
@@ -111,7 +228,7 @@ bool parseArgs(int argc, char** argv, Args& a, std::string& error) {
             auto eq = v.find('=');
             std::string name = v.substr(0, eq), body = eq == std::string::npos ? "1" : v.substr(eq + 1);
             if (!validDefine(name, body)) {
-                error = "option -D: '" + v + "' is not NAME, NAME=VALUE or NAME(ARGS)=VALUE";
+                error = "option '" + typed.substr(0, 2) + "' has a bad value '" + v + "': want NAME, NAME=VALUE or NAME(ARGS)=VALUE";
                 return false;
             }
             a.options.defines.push_back({name, body});
@@ -119,6 +236,8 @@ bool parseArgs(int argc, char** argv, Args& a, std::string& error) {
             if (!value(a.output)) return false;
         } else if (s == "--root") {
             if (!value(a.options.includeRoot)) return false;
+        } else if (s == "--depfile") {
+            if (!value(a.depfile)) return false;
         } else if (s == "--technique") {
             if (!value(v)) return false;
             a.options.techniques.push_back(v);
@@ -129,13 +248,46 @@ bool parseArgs(int argc, char** argv, Args& a, std::string& error) {
         } else if (s == "--warnings") {
             a.showWarnings = true;
         } else if (!s.empty() && s[0] == '-') {
-            error = "unknown option " + s;
+            error = "option '" + typed + "' is unknown (see 'fxport " + a.command + " --help')";
             return false;
         } else {
             a.inputs.push_back(s);
         }
     }
     return true;
+}
+
+// Options that only one command reads; given to another they would be ignored silently.
+std::string misplacedOption(const Args& a) {
+    struct Only {
+        const char* option;
+        const char* command;
+    };
+    static const Only only[] = {{"-o", "compile"}, {"/Fo", "compile"}, {"--depfile", "compile"}, {"--reflection", "dump"}, {"--warnings", "check"}};
+    for (const auto& given : a.given)
+        for (const auto& o : only)
+            if (given == o.option && a.command != o.command)
+                return "option '" + given + "' is not an option of '" + a.command + "' (only of '" + o.command + "')";
+    return {};
+}
+
+// Make's syntax: spaces, '#' and '$' escaped; Ninja reads the same.
+std::string makeEscaped(const std::string& path) {
+    std::string out;
+    for (char c : path) {
+        if (c == ' ' || c == '#' || c == '\\') out += '\\';
+        if (c == '$') out += '$';
+        out += c;
+    }
+    return out;
+}
+
+void writeDepfile(const std::string& depfile, const std::string& output, const std::vector<std::string>& files) {
+    std::ofstream out(depfile);
+    out << makeEscaped(output) << ":";
+    for (const auto& f : files) out << " \\\n  " << makeEscaped(f);
+    out << "\n";
+    if (!out) throw std::runtime_error("cannot write the depfile '" + depfile + "'");
 }
 
 void printDiagnostics(const std::vector<Diagnostic>& diags, bool warnings) {
@@ -246,18 +398,39 @@ int main(int argc, char** argv) {
     Args a;
     std::string error;
     if (!parseArgs(argc, argv, a, error)) {
-        std::cerr << "fxport: " << error << "\n" << kUsage;
+        std::cerr << "fxport: " << error << "\n";
+        return 2;
+    }
+    if (a.version) {
+        std::cout << "fxport " << FXPORT_VERSION << " (effect compiler " << compilerVersion() << ")\n";
+        return 0;
+    }
+    if (a.help && a.command.empty()) {
+        std::cout << kHelp << "\n" << kUsage;
+        return 0;
+    }
+    const char* help = commandHelp(a.command);
+    if (!help) {
+        std::cerr << "fxport: unknown command '" << a.command << "' (commands: compile, dump, check; see 'fxport --help')\n";
+        return 2;
+    }
+    if (a.help) {
+        std::cout << help;
+        return 0;
+    }
+    if (std::string misplaced = misplacedOption(a); !misplaced.empty()) {
+        std::cerr << "fxport: " << misplaced << "\n";
         return 2;
     }
     try {
         if (a.command == "compile") {
             if (a.inputs.size() != 1 || a.output.empty()) {
-                std::cerr << "fxport: compile needs one input and -o OUT\n" << kUsage;
+                std::cerr << "fxport: compile needs one input and -o OUT (see 'fxport compile --help')\n";
                 return 2;
             }
             std::error_code ec;
             if (fs::exists(a.output, ec) && fs::equivalent(a.inputs[0], a.output, ec)) {
-                std::cerr << "fxport: option -o: '" << a.output << "' is the input effect; name another file\n";
+                std::cerr << "fxport: option '-o' has a bad value '" << a.output << "': it is the input effect; name another file\n";
                 return 2;
             }
             CompiledEffect e = compileEffectFile(a.inputs[0], a.options);
@@ -267,11 +440,12 @@ int main(int argc, char** argv) {
                 std::cerr << "fxport: " << writeError << "\n";
                 return 1;
             }
+            if (!a.depfile.empty()) writeDepfile(a.depfile, a.output, effectDependencies(a.inputs[0], a.options));
             return 0;
         }
         if (a.command == "dump") {
             if (a.inputs.size() != 1) {
-                std::cerr << "fxport: dump needs one input\n" << kUsage;
+                std::cerr << "fxport: dump needs one input (see 'fxport dump --help')\n";
                 return 2;
             }
             CompiledEffect e = compileEffectFile(a.inputs[0], a.options);
@@ -282,7 +456,7 @@ int main(int argc, char** argv) {
         }
         if (a.command == "check") {
             if (a.inputs.empty()) {
-                std::cerr << "fxport: check needs at least one path\n" << kUsage;
+                std::cerr << "fxport: check needs at least one path (see 'fxport check --help')\n";
                 return 2;
             }
             std::vector<std::string> missing;
@@ -313,8 +487,7 @@ int main(int argc, char** argv) {
             std::cout << passed << " passed, " << failed << " failed\n";
             return failed ? 1 : 0;
         }
-        std::cerr << "fxport: unknown command '" << a.command << "'\n" << kUsage;
-        return 2;
+        return 2;  // unreachable: commandHelp() knows every command
     } catch (const CompileError& e) {
         printDiagnostics(e.diagnostics(), true);
         return 1;

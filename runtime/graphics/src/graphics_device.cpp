@@ -497,7 +497,9 @@ std::vector<Color> GraphicsDevice::GetBackBufferData() const {
     return pixels;
 }
 
-void GraphicsDevice::SaveBackBufferAsPng(const std::string& path) const { impl_->backBuffer->SaveAsPng(path); }
+// The frame as a window shows it: the back buffer's alpha does not reach the screen (XNA's neither),
+// so it is written as 255; an effect that leaves alpha 0 must not save see-through pixels.
+void GraphicsDevice::SaveBackBufferAsPng(const std::string& path) const { impl_->backBuffer->savePng(path, /*opaque=*/true); }
 
 // --- GL object bookkeeping
 

@@ -140,7 +140,9 @@ std::unique_ptr<Texture2D> Texture2D::FromFile(fxport::GraphicsDevice& device, c
     return texture;
 }
 
-void Texture2D::SaveAsPng(const std::string& path) const {
+void Texture2D::SaveAsPng(const std::string& path) const { savePng(path, false); }
+
+void Texture2D::savePng(const std::string& path, bool opaque) const {
     throwIfDisposed("SaveAsPng");
     const detail::GlTextureFormat& f = detail::glFormat(format_);
     // Read back as floats in GL's RGBA expansion, then quantise: one path for every format.
@@ -154,6 +156,7 @@ void Texture2D::SaveAsPng(const std::string& path) const {
         if (f.channels == 1) c[1] = c[2] = c[0], c[3] = 1;  // grey
         if (f.channels == 2) c[2] = 0, c[3] = 1;
         if (format_ == SurfaceFormat::Alpha8) c[0] = c[1] = c[2] = c[3] = texels[i];
+        if (opaque) c[3] = 1;
         for (int k = 0; k < 4; ++k) {
             float v = std::isfinite(c[k]) ? std::clamp(c[k], 0.0f, 1.0f) : 0.0f;
             rgba[i + std::size_t(k)] = std::uint8_t(std::lround(v * 255.0f));

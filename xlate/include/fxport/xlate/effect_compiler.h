@@ -62,6 +62,11 @@ CompiledEffect compileEffectFile(const std::string& path, const CompileOptions& 
 CompiledEffect compileEffectSource(const std::string& source, const std::string& virtualPath,
                                    const CompileOptions& options = {});
 
+// The files compiling `path` reads: the effect itself, then every file it #includes (absolute
+// paths, each once), for build systems (`fxport compile --depfile`). Runs only the preprocessor.
+// Throws CompileError (file:line) when the effect cannot be read or preprocessed.
+std::vector<std::string> effectDependencies(const std::string& path, const CompileOptions& options = {});
+
 // A version string that changes whenever compiled output may change (part of every cache key).
 const char* compilerVersion();
 

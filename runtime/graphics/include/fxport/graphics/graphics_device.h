@@ -194,6 +194,8 @@ public:
     void Present();
     // The back buffer's pixels, top row first.
     std::vector<Color> GetBackBufferData() const;
+    // The frame as a screen shows it: RGB of the back buffer, alpha written as 255 (RenderTarget2D's
+    // SaveAsPng keeps alpha, as XNA's does).
     void SaveBackBufferAsPng(const std::string& path) const;
 
     const fxport::PresentationParameters& PresentationParameters() const { return parameters_; }

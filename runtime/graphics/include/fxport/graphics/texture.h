@@ -74,6 +74,9 @@ public:
     // Writes level 0 as an 8-bit RGBA PNG (float formats are clamped to [0,1]; one- and two-channel
     // formats are shown as grey / red-green). Top row first, as the texture is stored.
     void SaveAsPng(const std::string& path) const;
+    // SaveAsPng with alpha written as 255 when `opaque`: how SaveBackBufferAsPng saves the frame, which
+    // a screen shows without its alpha (XNA's too).
+    void savePng(const std::string& path, bool opaque) const;
 
     void setData(int level, const Rectangle* rect, const void* data, std::size_t bytes);
     void getData(int level, void* data, std::size_t bytes) const;
