@@ -17,6 +17,7 @@
 #include <memory>
 
 #include "deferred/Lights/light_manager.h"
+#include "fxport/framework/content_manager.h"
 #include "deferred/deferred_renderer.h"
 #include "deferred/ssao.h"
 #include "reference/deferred_reference.h"
@@ -96,7 +97,7 @@ struct FixedCamera : TheCansinDeferredRenderer::BaseCamera {
 // The shipped renderer and SSAO of demo/deferred at the tests' size, with the effects from hlsl/
 // and the content from the build's content/ (SSAO loads its random normals), made once.
 struct ShippedRenderer {
-    fxport::demo::ContentManager content;
+    fxport::ContentManager content;
     std::unique_ptr<TheCansinDeferredRenderer::DeferredRenderer> renderer;
     std::unique_ptr<TheCansinDeferredRenderer::SSAO> ssao;
     explicit ShippedRenderer(GraphicsDevice& device) {

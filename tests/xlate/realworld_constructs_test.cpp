@@ -236,7 +236,7 @@ TEST(ColorWriteEnable, MonoGameAndFxcSpellingsBecomeMasks) {
         for (const auto& p : e.techniques[0].passes)
             if (p.name == pass)
                 for (const auto& s : p.states)
-                    if (s.state == RenderState::ColorWriteEnable) out.push_back({s.index, int(s.value[0])});
+                    if (s.state == RenderState::ColorWriteEnable) out.push_back({s.index, std::get<int>(s.value)});
         return out;
     };
     using M = std::vector<std::pair<int, int>>;

@@ -132,6 +132,7 @@ bool writeAtomically(const std::string& path, const std::string& text, std::stri
         return false;
     }
     return true;
+}
 
 // A usage error: one line naming the option (as typed) and the value.
 struct UsageError {

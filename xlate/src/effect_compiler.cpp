@@ -393,8 +393,9 @@ int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile
         compiled_[key] = index;
         return index;
     }
+    std::string current = source;  // replaced when overloads are added below
     HlslToSpirvRequest request;
-    request.source = &source;
+    request.source = &current;
     request.stage = expected;
     request.entryPoint = entryName;
     request.dx9Compatible = dx9Compatible;
@@ -413,16 +414,19 @@ int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile
             }
         return grew;
     };
-    for (int round = 0; round < 16 && collect(spirv); ++round) {
+    // The effect's part of the source (what follows it: the entry wrapper, translated asm) is kept.
+    const std::string base = expected == ShaderStage::Geometry ? rewritten_.hlslForGeometryShader(expr.entry) : rewritten_.hlsl;
+    const bool retryable = source.compare(0, base.size(), base) == 0;
+    for (int round = 0; retryable && round < 16 && collect(spirv); ++round) {
         std::vector<TextEdit> overloads = vectorToScalarOverloads(syntax_, unmatched);
         std::string retried = rewritten_.hlslForGeometryShader(expected == ShaderStage::Geometry ? expr.entry : std::string(), overloads);
-        if (wrapped) retried += wrapper.code;
+        retried += source.substr(base.size());
         request.source = &retried;
         SpirvModule next = hlslToSpirv(request);
         if (!next.errors.empty() && next.errors.front().message.find("no matching overloaded function") == std::string::npos) break;
         spirv = std::move(next);
-        source = std::move(retried);
-        request.source = &source;
+        current = std::move(retried);
+        request.source = &current;
     }
     if (!conversionCalls.empty() && spirv.errors.empty()) {
         for (const auto& e : conversionCalls) {
@@ -461,7 +465,7 @@ int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile
     shader.outputTargets = glsl.outputTargets;
     shader.writesDepth = glsl.writesDepth;
     shader.needsD3D9PixelOffset = wrapper.usesPixelOffset;
-    if (options_.keepRewrittenHlsl) shader.hlslAfterRewrite = source;
+    if (options_.keepRewrittenHlsl) shader.hlslAfterRewrite = current;
     for (const auto& name : glsl.membersRead) {
         int p = parameterIndex(name);
         if (p >= 0 && std::find(shader.parametersRead.begin(), shader.parametersRead.end(), p) == shader.parametersRead.end())
