@@ -149,5 +149,46 @@ TEST_F(RealWorldRender, ImplicitConversionsComputeWhatFxcDoes) {
         for (size_t k = 0; k < 4; ++k) EXPECT_NEAR(px[p * 4 + k], expected[k], 1e-6) << "pixel " << p << " channel " << k;
 }
 
+// Item 8: a vertex shader file and a pixel shader file (each with its own structs and cbuffers)
+// make one Effect; cbuffer members of both are set by name.
+TEST_F(RealWorldRender, LooseShaderFilesMakeAnEffectWithNamedCBufferMembers) {
+    auto effect = Effect::FromShaderFiles(device, {wild("loose/Textured.vs"), "TexturedVertexShader", "vs_5_0"},
+                                          {wild("loose/Textured.ps"), "TexturedPixelShader", "ps_5_0"}, noCache());
+    ASSERT_EQ(effect->Techniques.Count(), 1);
+    const int W = 8, H = 8, T = 4;
+    Texture2D tex(device, T, T, false, SurfaceFormat::Color);
+    std::vector<Color> texels(T * T);
+    for (int i = 0; i < T * T; ++i) texels[size_t(i)] = Color(16 * i, 255 - 12 * i, (i * 37) % 256, 255);
+    tex.SetData(texels);
+    const double diffuse[4] = {0.5, 1.0, 0.25, 1.0}, tint[4] = {0.25, 0.125, 0.5, 0.0};
+    effect->Parameters["worldMatrix"].SetValue(Matrix::CreateScale(0.5f));
+    effect->Parameters["viewMatrix"].SetValue(Matrix::Identity);
+    effect->Parameters["projectionMatrix"].SetValue(Matrix::Identity);
+    effect->Parameters["diffuseColor"].SetValue(Vector4(float(diffuse[0]), float(diffuse[1]), float(diffuse[2]), float(diffuse[3])));
+    effect->Parameters["vertexTint"].SetValue(Vector4(float(tint[0]), float(tint[1]), float(tint[2]), float(tint[3])));
+    effect->Parameters["shaderTexture"].SetValue(tex);
+
+    RenderTarget2D target(device, W, H, false, SurfaceFormat::Vector4);
+    device.SetRenderTarget(target);
+    device.Clear(Color::Black);
+    effect->CurrentTechnique->Passes[0].Apply();
+    device.SamplerStates[0] = SamplerState::PointClamp;
+    drawQuad(device);
+    std::vector<float> px = readFloats(target);
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            // The quad scaled by 0.5 covers NDC [-0.5, 0.5]: pixels 2..5; its UV there (SM4 pixel
+            // centres) is (x + 0.5) / 4 - 0.5, point-sampled from the 4x4 texture.
+            bool inside = x >= 2 && x <= 5 && y >= 2 && y <= 5;
+            const Color& c = texels[size_t(std::max(0, std::min(T - 1, int(std::floor(((y + 0.5) / 4 - 0.5) * T)))) * T +
+                                           std::max(0, std::min(T - 1, int(std::floor(((x + 0.5) / 4 - 0.5) * T)))))];
+            const double sample[4] = {c.R / 255.0, c.G / 255.0, c.B / 255.0, c.A / 255.0};
+            for (int k = 0; k < 4; ++k) {
+                double expected = inside ? sample[k] * diffuse[k] + tint[k] * 0.5 : (k == 3 ? 1.0 : 0.0);
+                EXPECT_NEAR(px[size_t(y * W + x) * 4 + size_t(k)], expected, 1e-5) << "pixel " << x << "," << y << " channel " << k;
+            }
+        }
+}
+
 }  // namespace
 }  // namespace fxport
