@@ -190,5 +190,35 @@ TEST_F(RealWorldRender, LooseShaderFilesMakeAnEffectWithNamedCBufferMembers) {
         }
 }
 
+// Found in the real-world sample: matrix swizzles read from parameters (glslang's SPIR-V for them
+// crashed spirv-opt). HLSL M[r][c] is XNA's M(r+1)(c+1).
+TEST_F(RealWorldRender, MatrixSwizzlesReadTheElementsTheyName) {
+    Effect effect(device, wild("matrix_swizzle/MatrixSwizzles.fx"), noCache());
+    double v[4][4], w[4][4];
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) {
+            v[r][c] = 0.1 * (r + 1) - 0.03 * c + (r == c ? 0.5 : 0.0);
+            w[r][c] = 0.05 * (c + 1) + 0.2 * r;
+        }
+    auto toMatrix = [](const double (&m)[4][4]) {
+        return Matrix(float(m[0][0]), float(m[0][1]), float(m[0][2]), float(m[0][3]), float(m[1][0]), float(m[1][1]), float(m[1][2]),
+                      float(m[1][3]), float(m[2][0]), float(m[2][1]), float(m[2][2]), float(m[2][3]), float(m[3][0]), float(m[3][1]),
+                      float(m[3][2]), float(m[3][3]));
+    };
+    effect.Parameters["View"].SetValue(toMatrix(v));
+    effect.Parameters["World"].SetValue(toMatrix(w));
+    RenderTarget2D target(device, 2, 2, false, SurfaceFormat::Vector4);
+    device.SetRenderTarget(target);
+    device.Clear(Color::Black);
+    effect.CurrentTechnique->Passes[0].Apply();
+    drawQuad(device);
+    std::vector<float> px = readFloats(target);
+    double eyeX = 0;
+    for (int i = 0; i < 3; ++i) eyeX += -v[3][i] * v[0][i];  // mul(-V[3].xyz, transpose(V3x3)).x
+    const double expected[4] = {eyeX, w[3][1] + w[0][0], w[1][1] * v[0][1], v[0][1] + v[2][2]};
+    for (size_t p = 0; p < 4; ++p)
+        for (size_t k = 0; k < 4; ++k) EXPECT_NEAR(px[p * 4 + k], expected[k], 1e-5) << "pixel " << p << " channel " << k;
+}
+
 }  // namespace
 }  // namespace fxport

@@ -40,6 +40,27 @@ std::optional<TextureKind> intrinsicKind(const std::string& name) {
     return std::nullopt;
 }
 
+// `_m30_m31_m32` (zero-based) or `_41_42_43` (one-based) -> (row, column) pairs; empty if not one.
+std::vector<std::pair<int, int>> matrixSwizzle(const Token& t) {
+    std::vector<std::pair<int, int>> out;
+    if (!t.isIdent() || t.text.empty() || t.text[0] != '_') return {};
+    const std::string& s = t.text;
+    for (size_t i = 0; i < s.size();) {
+        if (s[i] != '_') return {};
+        if (i + 1 < s.size() && s[i + 1] == 'm') {
+            if (i + 3 >= s.size() || s[i + 2] < '0' || s[i + 2] > '3' || s[i + 3] < '0' || s[i + 3] > '3') return {};
+            out.push_back({s[i + 2] - '0', s[i + 3] - '0'});
+            i += 4;
+        } else {
+            if (i + 2 >= s.size() || s[i + 1] < '1' || s[i + 1] > '4' || s[i + 2] < '1' || s[i + 2] > '4') return {};
+            out.push_back({s[i + 1] - '1', s[i + 2] - '1'});
+            i += 3;
+        }
+    }
+    if (out.size() > 4) return {};
+    return out;
+}
+
 bool isUntypedSampler(const std::string& type) { return type == "sampler" || type == "Sampler"; }
 bool isDx9Sampler(const std::string& type) {
     std::string t = toLower(type);
@@ -317,6 +338,49 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
             (t.text == "half" || t.text == "min16float" || t.text == "min10float"))
             edits.push_back({t.offset, t.end, "float"});
     }
+    // Matrix swizzles (`View._m30_m31_m32`, `World._41_42_43`) crash spirv-opt 2023's constant
+    // folding on glslang's output: read as the elements they name, `float3(View[3][0], ...)`
+    // (HLSL's M[r][c] is row r, column c, whatever the packing). Written swizzles stay.
+    for (const auto& f : syntax.functions)
+        for (size_t i = f.body.begin + 1; i + 1 < f.body.end; ++i) {
+            auto elements = matrixSwizzle(tokens[i + 1]);
+            if (!tokens[i].is(".") || elements.empty()) continue;
+            const Token& after = tokens[i + 2 < tokens.size() ? i + 2 : i + 1];
+            if (after.kind == Token::Kind::Punct && after.text.size() <= 3 && after.text.back() == '=' && after.text != "==" &&
+                after.text != "<=" && after.text != ">=" && after.text != "!=")
+                continue;
+            // The base: a chain of names, member accesses and [..]/(..) groups ending at the '.'.
+            size_t b = i;
+            while (b > f.body.begin) {
+                const Token& t = tokens[b - 1];
+                if (t.is("]") || t.is(")")) {
+                    const char* open = t.is("]") ? "[" : "(";
+                    int depth = 0;
+                    size_t k = b - 1;
+                    for (; k > f.body.begin; --k) {
+                        if (tokens[k].is(t.text)) ++depth;
+                        else if (tokens[k].is(open) && --depth == 0) break;
+                    }
+                    if (depth != 0) break;
+                    b = k;
+                    if (std::string(open) == "(" && !(b > f.body.begin && tokens[b - 1].isIdent())) break;  // a parenthesised base
+                    continue;
+                }
+                if (t.isIdent() || (t.is(".") && b - 1 > f.body.begin && tokens[b - 2].isIdent())) {
+                    --b;
+                    continue;
+                }
+                break;
+            }
+            if (b == i) continue;
+            std::string base = "(" + text.substr(tokens[b].offset, tokens[i].offset - tokens[b].offset) + ")";
+            std::string value;
+            for (const auto& [r, c] : elements)
+                value += (value.empty() ? "" : ", ") + base + "[" + std::to_string(r) + "][" + std::to_string(c) + "]";
+            if (elements.size() > 1) value = "float" + std::to_string(elements.size()) + "(" + value + ")";
+            else value = "(" + value + ")";
+            edits.push_back({tokens[b].offset, tokens[i + 1].end, value});
+        }
     out.sourceText = &text;
     out.syntax = &syntax;
     out.edits = std::move(edits);
