@@ -124,6 +124,16 @@ TEST(Encodings, DiagnosticsKeepLinesAndColumnsThroughBomAndUtf16) {
     EXPECT_EQ(first.sourceLine, "<bad");
 }
 
+TEST(Encodings, ClassicMacLineEndsAndDosEndOfFileMark) {
+    Diagnostic d = firstError("float4 PS() : COLOR0\r{ return undefined_x; }\rtechnique T { pass P { PixelShader = compile ps_2_0 PS(); } }\r",
+                              "virtual/Mac.fx");
+    EXPECT_EQ(d.location.line, 2);
+    EXPECT_EQ(d.location.column, 10);
+    CompiledEffect e = compileEffectSource("float4 PS() : COLOR0 { return 1; }\r\ntechnique T { pass P { PixelShader = compile ps_2_0 PS(); } }\r\n\x1a",
+                                           "virtual/Dos.fx", noCache());
+    EXPECT_EQ(e.shaders.size(), 1u);
+}
+
 // ---- 10. end-of-file and #line diagnostics carry file(line,col) ----------------------------------
 
 TEST(EndOfFileDiagnostics, EveryErrorNamesFileLineAndColumn) {
