@@ -149,5 +149,76 @@ TEST_F(RealWorldRender, ImplicitConversionsComputeWhatFxcDoes) {
         for (size_t k = 0; k < 4; ++k) EXPECT_NEAR(px[p * 4 + k], expected[k], 1e-6) << "pixel " << p << " channel " << k;
 }
 
+// Item 8: a vertex shader file and a pixel shader file (each with its own structs and cbuffers)
+// make one Effect; cbuffer members of both are set by name.
+TEST_F(RealWorldRender, LooseShaderFilesMakeAnEffectWithNamedCBufferMembers) {
+    auto effect = Effect::FromShaderFiles(device, {wild("loose/Textured.vs"), "TexturedVertexShader", "vs_5_0"},
+                                          {wild("loose/Textured.ps"), "TexturedPixelShader", "ps_5_0"}, noCache());
+    ASSERT_EQ(effect->Techniques.Count(), 1);
+    const int W = 8, H = 8, T = 4;
+    Texture2D tex(device, T, T, false, SurfaceFormat::Color);
+    std::vector<Color> texels(T * T);
+    for (int i = 0; i < T * T; ++i) texels[size_t(i)] = Color(16 * i, 255 - 12 * i, (i * 37) % 256, 255);
+    tex.SetData(texels);
+    const double diffuse[4] = {0.5, 1.0, 0.25, 1.0}, tint[4] = {0.25, 0.125, 0.5, 0.0};
+    effect->Parameters["worldMatrix"].SetValue(Matrix::CreateScale(0.5f));
+    effect->Parameters["viewMatrix"].SetValue(Matrix::Identity);
+    effect->Parameters["projectionMatrix"].SetValue(Matrix::Identity);
+    effect->Parameters["diffuseColor"].SetValue(Vector4(float(diffuse[0]), float(diffuse[1]), float(diffuse[2]), float(diffuse[3])));
+    effect->Parameters["vertexTint"].SetValue(Vector4(float(tint[0]), float(tint[1]), float(tint[2]), float(tint[3])));
+    effect->Parameters["shaderTexture"].SetValue(tex);
+
+    RenderTarget2D target(device, W, H, false, SurfaceFormat::Vector4);
+    device.SetRenderTarget(target);
+    device.Clear(Color::Black);
+    effect->CurrentTechnique->Passes[0].Apply();
+    device.SamplerStates[0] = SamplerState::PointClamp;
+    drawQuad(device);
+    std::vector<float> px = readFloats(target);
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            // The quad scaled by 0.5 covers NDC [-0.5, 0.5]: pixels 2..5; its UV there (SM4 pixel
+            // centres) is (x + 0.5) / 4 - 0.5, point-sampled from the 4x4 texture.
+            bool inside = x >= 2 && x <= 5 && y >= 2 && y <= 5;
+            const Color& c = texels[size_t(std::max(0, std::min(T - 1, int(std::floor(((y + 0.5) / 4 - 0.5) * T)))) * T +
+                                           std::max(0, std::min(T - 1, int(std::floor(((x + 0.5) / 4 - 0.5) * T)))))];
+            const double sample[4] = {c.R / 255.0, c.G / 255.0, c.B / 255.0, c.A / 255.0};
+            for (int k = 0; k < 4; ++k) {
+                double expected = inside ? sample[k] * diffuse[k] + tint[k] * 0.5 : (k == 3 ? 1.0 : 0.0);
+                EXPECT_NEAR(px[size_t(y * W + x) * 4 + size_t(k)], expected, 1e-5) << "pixel " << x << "," << y << " channel " << k;
+            }
+        }
+}
+
+// Found in the real-world sample: matrix swizzles read from parameters (glslang's SPIR-V for them
+// crashed spirv-opt). HLSL M[r][c] is XNA's M(r+1)(c+1).
+TEST_F(RealWorldRender, MatrixSwizzlesReadTheElementsTheyName) {
+    Effect effect(device, wild("matrix_swizzle/MatrixSwizzles.fx"), noCache());
+    double v[4][4], w[4][4];
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) {
+            v[r][c] = 0.1 * (r + 1) - 0.03 * c + (r == c ? 0.5 : 0.0);
+            w[r][c] = 0.05 * (c + 1) + 0.2 * r;
+        }
+    auto toMatrix = [](const double (&m)[4][4]) {
+        return Matrix(float(m[0][0]), float(m[0][1]), float(m[0][2]), float(m[0][3]), float(m[1][0]), float(m[1][1]), float(m[1][2]),
+                      float(m[1][3]), float(m[2][0]), float(m[2][1]), float(m[2][2]), float(m[2][3]), float(m[3][0]), float(m[3][1]),
+                      float(m[3][2]), float(m[3][3]));
+    };
+    effect.Parameters["View"].SetValue(toMatrix(v));
+    effect.Parameters["World"].SetValue(toMatrix(w));
+    RenderTarget2D target(device, 2, 2, false, SurfaceFormat::Vector4);
+    device.SetRenderTarget(target);
+    device.Clear(Color::Black);
+    effect.CurrentTechnique->Passes[0].Apply();
+    drawQuad(device);
+    std::vector<float> px = readFloats(target);
+    double eyeX = 0;
+    for (int i = 0; i < 3; ++i) eyeX += -v[3][i] * v[0][i];  // mul(-V[3].xyz, transpose(V3x3)).x
+    const double expected[4] = {eyeX, w[3][1] + w[0][0], w[1][1] * v[0][1], v[0][1] + v[2][2]};
+    for (size_t p = 0; p < 4; ++p)
+        for (size_t k = 0; k < 4; ++k) EXPECT_NEAR(px[p * 4 + k], expected[k], 1e-5) << "pixel " << p << " channel " << k;
+}
+
 }  // namespace
 }  // namespace fxport

@@ -124,6 +124,16 @@ TEST(Encodings, DiagnosticsKeepLinesAndColumnsThroughBomAndUtf16) {
     EXPECT_EQ(first.sourceLine, "<bad");
 }
 
+TEST(Encodings, ClassicMacLineEndsAndDosEndOfFileMark) {
+    Diagnostic d = firstError("float4 PS() : COLOR0\r{ return undefined_x; }\rtechnique T { pass P { PixelShader = compile ps_2_0 PS(); } }\r",
+                              "virtual/Mac.fx");
+    EXPECT_EQ(d.location.line, 2);
+    EXPECT_EQ(d.location.column, 10);
+    CompiledEffect e = compileEffectSource("float4 PS() : COLOR0 { return 1; }\r\ntechnique T { pass P { PixelShader = compile ps_2_0 PS(); } }\r\n\x1a",
+                                           "virtual/Dos.fx", noCache());
+    EXPECT_EQ(e.shaders.size(), 1u);
+}
+
 // ---- 10. end-of-file and #line diagnostics carry file(line,col) ----------------------------------
 
 TEST(EndOfFileDiagnostics, EveryErrorNamesFileLineAndColumn) {
@@ -357,4 +367,92 @@ TEST(ImplicitConversions, CallsThatResolvedBeforeAreUntouchedAndRealErrorsStay) 
                               "virtual/Bad.fx");
     EXPECT_EQ(d.id, diag::kHlsl);
     EXPECT_EQ(d.location.line, 3);
+}
+
+// ---- 8. loose shader files by entry point and profile -------------------------------------------
+
+TEST(LooseShaderFiles, EntryPointsOfOneFileShareItsCBuffer) {
+    const std::string path = kWild + "loose/Combined.hlsl";
+    CompiledEffect e = compileShaderFiles({{path, "VSMain", "vs_4_0"}, {path, "PSMain", "ps_4_0"}}, noCache());
+    ASSERT_EQ(e.techniques.size(), 1u);
+    EXPECT_EQ(e.techniques[0].name, "VSMain+PSMain");
+    ASSERT_EQ(e.techniques[0].passes.size(), 1u);
+    EXPECT_EQ(e.shaders.size(), 2u);
+    const Parameter& color = param(e, "Color");
+    EXPECT_EQ(e.uniformBlocks[size_t(color.block)].name, "PerFrame");
+    EXPECT_GE(color.offset, 0);
+    expectAllPassesLink(e);
+}
+
+TEST(LooseShaderFiles, SeparateFilesMergeIntoOnePassWithEveryCBufferMember) {
+    CompiledEffect e = compileShaderFiles({{kWild + "loose/Textured.vs", "TexturedVertexShader", "vs_5_0"},
+                                           {kWild + "loose/Textured.ps", "TexturedPixelShader", "ps_5_0"}},
+                                          noCache());
+    const Pass& pass = e.techniques.at(0).passes.at(0);
+    ASSERT_EQ(pass.vertexShader.shaders.size(), 1u);
+    ASSERT_EQ(pass.pixelShader.shaders.size(), 1u);
+    EXPECT_EQ(e.shaders[size_t(pass.vertexShader.shaders[0])].profile.name, "vs_5_0");
+    EXPECT_EQ(e.shaders[size_t(pass.pixelShader.shaders[0])].profile.name, "ps_5_0");
+    for (const char* name : {"worldMatrix", "viewMatrix", "projectionMatrix", "vertexTint", "diffuseColor"}) {
+        const Parameter& p = param(e, name);
+        EXPECT_GE(p.offset, 0) << name;
+        EXPECT_GT(e.uniformBlocks.at(size_t(p.block)).size, 0) << name;
+    }
+    EXPECT_EQ(e.uniformBlocks[size_t(param(e, "diffuseColor").block)].name, "LightBuffer");
+    // Round trip through the compiled-effect file, as `fxport compile` writes it.
+    CompiledEffect back = deserializeEffect(serializeEffect(e), "memory");
+    EXPECT_EQ(reflectionJson(back), reflectionJson(e));
+    expectAllPassesLink(e);
+}
+
+TEST(LooseShaderFiles, OptionErrorsNameTheOptionAndLooseFilesWithoutEntrySayIt) {
+    const std::string ps = kWild + "loose/Textured.ps";
+    auto firstOf = [](const std::vector<ShaderEntry>& entries) {
+        try {
+            compileShaderFiles(entries, noCache());
+        } catch (const CompileError& e) {
+            return e.diagnostics().front();
+        }
+        return Diagnostic{};
+    };
+    Diagnostic missing = firstOf({{ps, "NoSuchFunction", "ps_5_0"}});
+    EXPECT_EQ(missing.id, diag::kMissingEntry);
+    EXPECT_NE(missing.message.find("'NoSuchFunction' (--entry, fxc /E)"), std::string::npos) << missing.message;
+    Diagnostic profile = firstOf({{ps, "TexturedPixelShader", "ps_9_9"}});
+    EXPECT_EQ(profile.id, diag::kBadProfile);
+    EXPECT_NE(profile.message.find("'ps_9_9' (--profile, fxc /T)"), std::string::npos) << profile.message;
+    // Without an entry point: a loose file says so and lists its candidates.
+    try {
+        compileEffectFile(ps, noCache());
+        FAIL() << "compiled without an entry point";
+    } catch (const CompileError& err) {
+        const Diagnostic& d = err.diagnostics().front();
+        EXPECT_NE(d.message.find("loose shader file"), std::string::npos) << d.message;
+        EXPECT_NE(d.message.find("--entry NAME --profile"), std::string::npos) << d.message;
+        EXPECT_NE(d.message.find("TexturedPixelShader"), std::string::npos) << d.message;
+        EXPECT_EQ(d.message.find("no technique: it looks like a header"), std::string::npos) << d.message;
+    }
+    // Two files whose globals of one name sit at different places: one parameter cannot feed both.
+    fs::path dir = freshTempDir("loose");
+    std::ofstream(dir / "a.vs") << "float4 Shared; float4 OnlyA;\nfloat4 VS(float4 p : POSITION) : SV_Position { return p * OnlyA * Shared; }\n";
+    std::ofstream(dir / "b.ps") << "float4 Shared;\nfloat4 PS() : SV_Target { return Shared; }\n";
+    Diagnostic clash = firstOf({{(dir / "a.vs").string(), "VS", "vs_4_0"}, {(dir / "b.ps").string(), "PS", "ps_4_0"}});
+    EXPECT_NE(clash.message.find("'Shared'"), std::string::npos) << clash.message;
+    fs::remove_all(dir);
+}
+
+TEST(LooseShaderFiles, CommandLineTakesEntryAndProfile) {
+    const std::string path = kWild + "loose/Combined.hlsl";
+    RunResult r = runCli("check --no-cache '" + path + "'");
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("loose shader file"), std::string::npos) << r.output;
+    fs::path out = freshTempDir("loosecli") / "Combined.json";
+    r = runCli("compile --no-cache --entry VSMain --profile vs_4_0 --entry PSMain --profile ps_4_0 '" + path + "' -o '" + out.string() + "'");
+    EXPECT_EQ(r.status, 0) << r.output;
+    CompiledEffect e = loadEffectFile(out.string());
+    EXPECT_EQ(e.techniques.at(0).name, "VSMain+PSMain");
+    r = runCli("check --no-cache --entry VSMain '" + path + "'");
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("needs a --profile"), std::string::npos) << r.output;
+    fs::remove_all(out.parent_path());
 }

@@ -2,6 +2,7 @@
 //   fxport compile IN.fx -o OUT [-I dir] [-D NAME=VALUE] [--technique NAME] [--no-cache] [--depfile FILE]
 //   fxport dump IN.fx [--reflection] [-I dir] [-D NAME=VALUE]
 //   fxport check PATH... [-I dir] [-D NAME=VALUE] [--no-cache] [--warnings]
+//   --entry NAME --profile P (repeatable): a loose shader file (no technique) by entry point, as fxc /E /T
 //   --root DIR: `#include "../x.fxh"` may reach files inside DIR (default: the effect's folder, or
 //   the folder `check` scans)
 //   fxport --help | fxport COMMAND --help | fxport --version
@@ -30,6 +31,7 @@ namespace {
 
 const char* kUsage =
     "usage: fxport compile IN.fx -o OUT [-I dir] [-D NAME=VALUE] [--technique NAME] [--no-cache] [--depfile FILE]\n"
+    "       fxport compile IN.hlsl -o OUT --entry NAME --profile vs_5_0 [--entry NAME --profile ps_5_0]\n"
     "       fxport dump IN.fx [--reflection] [-I dir] [-D NAME=VALUE]\n"
     "       fxport check PATH... [-I dir] [-D NAME=VALUE] [--no-cache] [--warnings]\n"
     "       (all: --root DIR lets #include \"../x.fxh\" reach files inside DIR)\n"
@@ -95,7 +97,17 @@ struct Args {
     bool help = false;
     bool version = false;
     std::vector<std::string> given;  // options as typed, to say which do not belong to the command
+    std::vector<ShaderEntry> entries;  // --entry NAME --profile P (fxc /E /T), for loose shader files
+    int profiles = 0;
 };
+
+// A loose shader file with --entry/--profile (fxc /E /T), else an effect.
+CompiledEffect compileInput(const std::string& file, const Args& a, const CompileOptions& options) {
+    if (a.entries.empty()) return compileEffectFile(file, options);
+    std::vector<ShaderEntry> entries = a.entries;
+    for (auto& e : entries) e.path = file;
+    return compileShaderFiles(entries, options);
+}
 
 // A -D's name is a macro name, optionally with a parameter list; neither part may hold a line
 // break (it would start a directive of its own in the preamble).
@@ -235,6 +247,16 @@ bool parseArgs(int argc, char** argv, Args& a, std::string& error) {
             a.options.defines.push_back({name, body});
         } else if (s.rfind("-o", 0) == 0) {
             if (!value(a.output)) return false;
+        } else if (s == "--entry") {
+            if (!value(v)) return false;
+            a.entries.push_back({{}, v, {}});
+        } else if (s == "--profile") {
+            if (!value(v)) return false;
+            if (a.entries.empty() || a.profiles >= static_cast<int>(a.entries.size())) {
+                error = "option '" + typed + "' (" + v + ") needs an --entry before it (--entry NAME --profile vs_5_0)";
+                return false;
+            }
+            a.entries[static_cast<size_t>(a.profiles++)].profile = v;
         } else if (s == "--root") {
             if (!value(a.options.includeRoot)) return false;
         } else if (s == "--depfile") {
@@ -254,6 +276,10 @@ bool parseArgs(int argc, char** argv, Args& a, std::string& error) {
         } else {
             a.inputs.push_back(s);
         }
+    }
+    if (a.profiles != static_cast<int>(a.entries.size())) {
+        error = "option '--entry' (" + a.entries.back().entryPoint + ") needs a --profile after it (--entry NAME --profile ps_5_0)";
+        return false;
     }
     return true;
 }
@@ -434,7 +460,7 @@ int main(int argc, char** argv) {
                 std::cerr << "fxport: option '-o' has a bad value '" << a.output << "': it is the input effect; name another file\n";
                 return 2;
             }
-            CompiledEffect e = compileEffectFile(a.inputs[0], a.options);
+            CompiledEffect e = compileInput(a.inputs[0], a, a.options);
             printDiagnostics(e.diagnostics, true);
             std::string writeError;
             if (!writeAtomically(a.output, serializeEffect(e), writeError)) {
@@ -449,7 +475,7 @@ int main(int argc, char** argv) {
                 std::cerr << "fxport: dump needs one input (see 'fxport dump --help')\n";
                 return 2;
             }
-            CompiledEffect e = compileEffectFile(a.inputs[0], a.options);
+            CompiledEffect e = compileInput(a.inputs[0], a, a.options);
             printDiagnostics(e.diagnostics, true);
             if (a.reflectionOnly) std::cout << reflectionJson(e);
             else dump(e, std::cout);
@@ -475,7 +501,7 @@ int main(int argc, char** argv) {
                     continue;
                 }
                 try {
-                    CompiledEffect e = compileEffectFile(f, options);
+                    CompiledEffect e = compileInput(f, a, options);
                     std::cout << f << ": ok (" << e.techniques.size() << " techniques, " << e.shaders.size() << " shaders)\n";
                     if (a.showWarnings) printDiagnostics(e.diagnostics, true);
                     ++passed;

@@ -19,8 +19,8 @@
 #include "fx_syntax.h"
 #include "hlsl_to_spirv.h"
 #include "implicit_conversions.h"
-
 #include "input_limits.h"
+#include "loose_shaders.h"
 #include "preprocess.h"
 #include "render_states.h"
 #include "shader_profile.h"
@@ -80,8 +80,9 @@ struct ShaderKey {
 class EffectBuilder {
 public:
     EffectBuilder(const PreprocessedEffect& pre, const EffectSyntax& syntax, RewrittenEffect& rewritten,
-                  const CompileOptions& options, CompiledEffect& effect)
-        : pre_(pre), syntax_(syntax), rewritten_(rewritten), options_(options), effect_(effect) {
+                  const CompileOptions& options, CompiledEffect& effect, VaryingLocations* sharedVaryings)
+        : pre_(pre), syntax_(syntax), rewritten_(rewritten), options_(options), effect_(effect),
+          varyings_(sharedVaryings ? *sharedVaryings : ownVaryings_) {
         baseLines_ = static_cast<int>(std::count(rewritten.hlsl.begin(), rewritten.hlsl.end(), '\n')) + 1;
     }
 
@@ -98,7 +99,8 @@ private:
     int baseLines_ = 0;
     std::map<ShaderKey, int> compiled_;  // -> index in effect_.shaders, -1 = failed
     std::map<int, GlslShader> reflections_;
-    VaryingLocations varyings_;
+    VaryingLocations ownVaryings_;
+    VaryingLocations& varyings_;  // custom semantics' locations: this effect's, or shared by loose files
     bool passHasGeometryShader_ = false;  // of the pass being built
     AsmPassBindings passAsm_;             // of the pass being built: what its asm shaders' registers hold
     int asmFunctions_ = 0;
@@ -703,8 +705,28 @@ void dumpIfAsked(const CompiledEffect& effect) {
     }
 }
 
-CompiledEffect compile(const std::string& source, const std::string& displayPath, const std::string& absolutePath,
-                       const CompileOptions& optionsIn) {
+// Candidate entry points of a file without techniques: functions with a semantic on their result
+// or on a parameter (what fxc's /E would name).
+std::string entryPointCandidates(const EffectSyntax& syntax) {
+    std::string names;
+    for (const auto& f : syntax.functions) {
+        bool semantic = !f.returnSemantic.empty();
+        for (const auto& p : f.parameters) semantic |= !p.semantic.empty();
+        if (semantic && names.find(" " + f.name + ",") == std::string::npos) names += " " + f.name + ",";
+    }
+    if (!names.empty()) names.pop_back();
+    return names;
+}
+
+bool isLooseShaderPath(const std::string& path) {
+    std::string ext = toLower(fs::path(path).extension().string());
+    return ext == ".hlsl" || ext == ".vs" || ext == ".ps" || ext == ".gs" || ext == ".vsh" || ext == ".psh" || ext == ".shader";
+}
+
+}  // namespace
+
+CompiledEffect compileEffectText(const std::string& source, const std::string& displayPath, const std::string& absolutePath,
+                                 const CompileOptions& optionsIn, VaryingLocations* sharedVaryings) {
     CompileOptions options = optionsIn;
     if (const char* dump = std::getenv("FXPORT_DUMP"); dump && *dump) options.keepRewrittenHlsl = true;
     if (options.keepRewrittenHlsl) options.useCache = false;  // the cache does not keep the rewritten HLSL
@@ -724,7 +746,11 @@ CompiledEffect compile(const std::string& source, const std::string& displayPath
         d.id = diag::kEmptyEffect;
         // A file with code but no technique is most likely a header (a .fx/.fxh of shared functions,
         // structs or typedefs that effects #include), not an effect of its own.
-        d.message = syntax.tokens.size() > 1
+        std::string candidates = entryPointCandidates(syntax);
+        d.message = isLooseShaderPath(displayPath) || (!candidates.empty() && toLower(fs::path(displayPath).extension().string()) != ".fx")
+                        ? "'" + displayPath + "' is a loose shader file (no technique): name the entry point and profile, as fxc /E /T does: "
+                          "--entry NAME --profile ps_5_0 (fxport compile, check, dump; compileShaderFiles(), Effect::FromShaderFiles())" + (candidates.empty() ? std::string() : " (entry points here:" + candidates + ")")
+                    : syntax.tokens.size() > 1
                         ? "the file has no technique: it looks like a header that other effects #include (shared declarations or "
                           "functions); compile the effect that includes it, since XNA needs at least one technique with a pass to draw with"
                         : "the file has no code and no technique; XNA needs at least one technique with a pass to draw with";
@@ -733,7 +759,7 @@ CompiledEffect compile(const std::string& source, const std::string& displayPath
     }
     RewrittenEffect rewritten = rewriteEffect(pre.text, syntax, pre.map, effect.diagnostics);
     for (auto& w : findImplicitTruncations(syntax, pre.map)) effect.diagnostics.push_back(std::move(w));
-    EffectBuilder builder(pre, syntax, rewritten, options, effect);
+    EffectBuilder builder(pre, syntax, rewritten, options, effect, sharedVaryings);
     builder.buildParameters();
     builder.buildTechniques();
     builder.finishReflection();
@@ -753,6 +779,13 @@ CompiledEffect compile(const std::string& source, const std::string& displayPath
     }
     if (options.useCache) storeCachedEffect(options.cacheDir, key, pre.dependencies, effect);
     return effect;
+}
+
+namespace {
+
+CompiledEffect compile(const std::string& source, const std::string& displayPath, const std::string& absolutePath,
+                       const CompileOptions& options) {
+    return compileEffectText(source, displayPath, absolutePath, options, nullptr);
 }
 
 }  // namespace

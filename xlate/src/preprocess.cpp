@@ -97,7 +97,8 @@ void prepareSourceText(std::string& text, const std::string& displayPath, std::v
         size_t end = text.find('\n', start);
         if (end == std::string::npos) end = text.size();
         auto first = text.begin() + static_cast<std::ptrdiff_t>(start), last = text.begin() + static_cast<std::ptrdiff_t>(end);
-        if (std::regex_search(first, last, directive)) {
+        size_t hash = text.find_first_not_of(" \t", start);
+        if (hash < end && text[hash] == '#' && std::regex_search(first, last, directive)) {
             std::string original(first, last);
             if (!std::regex_match(original, wellFormed)) {
                 Diagnostic d;

@@ -53,10 +53,16 @@ std::string utf16ToUtf8(std::string_view bytes, bool bigEndian) {
 }  // namespace
 
 std::string sourceTextAsUtf8(std::string_view raw) {
-    if (raw.substr(0, 3) == "\xEF\xBB\xBF") return std::string(raw.substr(3));
-    if (raw.substr(0, 2) == "\xFF\xFE") return utf16ToUtf8(raw.substr(2), false);
-    if (raw.substr(0, 2) == "\xFE\xFF") return utf16ToUtf8(raw.substr(2), true);
-    return std::string(raw);
+    std::string text;
+    if (raw.substr(0, 3) == "\xEF\xBB\xBF") text = std::string(raw.substr(3));
+    else if (raw.substr(0, 2) == "\xFF\xFE") text = utf16ToUtf8(raw.substr(2), false);
+    else if (raw.substr(0, 2) == "\xFE\xFF") text = utf16ToUtf8(raw.substr(2), true);
+    else text = std::string(raw);
+    // A DOS end-of-file mark (Ctrl-Z) ends the text; classic Mac line ends (a lone CR) are lines.
+    while (!text.empty() && text.back() == '\x1A') text.pop_back();
+    for (size_t i = 0; i < text.size(); ++i)
+        if (text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n')) text[i] = '\n';
+    return text;
 }
 
 }  // namespace fxport::xlate

@@ -67,6 +67,21 @@ CompiledEffect compileEffectSource(const std::string& source, const std::string&
 // Throws CompileError (file:line) when the effect cannot be read or preprocessed.
 std::vector<std::string> effectDependencies(const std::string& path, const CompileOptions& options = {});
 
+// One entry point of a loose shader file (D3D10/11 style: no technique), as fxc's /E and /T name it.
+struct ShaderEntry {
+    std::string path;        // the .hlsl / .vs / .ps file
+    std::string entryPoint;  // fxc /E: the function
+    std::string profile;     // fxc /T: vs_5_0, ps_4_0, gs_4_0, ps_2_0 ...
+};
+
+// Compiles loose shader files into an effect with one technique (named after the entry points,
+// joined by '+') holding one pass "P0" that uses each entry point for its profile's stage. Its
+// globals and cbuffer members are parameters like an effect's. Entry points in the same file
+// compile together; different files are compiled apart and merged, so each may declare its own
+// structs and cbuffers; a parameter both declare must agree (a shared header's cbuffer does).
+// Throws CompileError (a bad profile or a missing entry point names the option and the file).
+CompiledEffect compileShaderFiles(const std::vector<ShaderEntry>& entries, const CompileOptions& options = {});
+
 // A version string that changes whenever compiled output may change (part of every cache key).
 const char* compilerVersion();
 

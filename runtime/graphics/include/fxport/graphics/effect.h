@@ -232,6 +232,16 @@ public:
     Effect(fxport::GraphicsDevice& device, const EffectSource& source, const EffectOptions& options = {});
     // From an effect already compiled (e.g. read from a compiled-effect file).
     Effect(fxport::GraphicsDevice& device, const xlate::CompiledEffect& compiled);
+    // Loose shader files (D3D10/11 style, no technique), as D3DCompileFromFile(path, ..., entry,
+    // profile) names them: an effect of one technique with one pass "P0" running both entry
+    // points; globals and cbuffer members are Parameters like an effect's (effect_from_shaders.cpp).
+    struct ShaderFile {
+        std::string path;
+        std::string entryPoint;  // fxc /E
+        std::string profile;     // fxc /T: vs_5_0, ps_4_0, ps_2_0 ...
+    };
+    static std::unique_ptr<Effect> FromShaderFiles(fxport::GraphicsDevice& device, const ShaderFile& vertexShader,
+                                                   const ShaderFile& pixelShader, const EffectOptions& options = {});
     // Reads a compiled-effect file written by `fxport compile`.
     static std::unique_ptr<Effect> FromCompiledFile(fxport::GraphicsDevice& device, const std::string& path);
     ~Effect() override;
