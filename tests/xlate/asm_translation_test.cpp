@@ -208,6 +208,16 @@ TEST(AsmTranslation, Dx8Spellings) {
     EXPECT_TRUE(reads(e, shaderOf(e, p.vertexShader), "Color"));
 }
 
+TEST(AsmTranslation, Dx8DeclBlockIsNamed) {
+    auto ds = errorsOf("technique T { pass P {\n"
+                       "  VertexShader = decl { float v0[3]; } asm { vs.1.0 mov oPos, v0 };\n"
+                       "} }\n");
+    ASSERT_FALSE(ds.empty());
+    EXPECT_EQ(ds.front().id, "FX1404");
+    EXPECT_EQ(ds.front().location.line, 2);
+    EXPECT_NE(ds.front().message.find("decl"), std::string::npos) << ds.front().message;
+}
+
 TEST(AsmTranslation, BadConstantBindingNamesTheState) {
     auto ds = errorsOf("struct S { float4 a; };\nS s;\n"
                        "technique T { pass P {\n"
