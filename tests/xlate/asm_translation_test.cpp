@@ -218,6 +218,42 @@ TEST(AsmTranslation, Dx8DeclBlockIsNamed) {
     EXPECT_NE(ds.front().message.find("decl"), std::string::npos) << ds.front().message;
 }
 
+// Malformed assembly is a diagnostic on the asm's line, never a crash or generated code glslang
+// rejects.
+TEST(AsmTranslation, MalformedAssemblyIsADiagnosticAtItsLine) {
+    const char* const bodies[] = {"",
+                                  "ps_1_1 mov",
+                                  "ps_1_1 mov r0,",
+                                  "ps_1_1 def c0, 1",
+                                  "ps_1_1 mov r0, c4000000000",
+                                  "ps_2_0 m4x4 oC0, r0, c2147483647",
+                                  "ps_2_0 mov oC0.q, r0",
+                                  "ps_2_0 mov oC0, r0.xyzwx",
+                                  "ps_1_1 + + mov r0, t0",
+                                  "ps_2_0 texld r0, t0, c0 mov oC0, r0",
+                                  "ps_2_0 dcl_foo s0 mov oC0, c0",
+                                  "ps_1_1 mov r0, t0_foo",
+                                  "ps_2_0 mov_x9 oC0, c0",
+                                  "ps_2_0 mov oC0, b0",
+                                  "ps_1_1 mov oC0, c0",
+                                  "vs_1_1 dcl_position v0 mov oPos, v0 mov oC0, v0",
+                                  "vs_1_1 dcl_bogus v0 mov oPos, v0",
+                                  "vs_1_1 dcl_position v0 mov oD0, v0"};
+    for (const char* body : bodies) {
+        SCOPED_TRACE(body);
+        bool vertex = body[0] == 'v';
+        std::string source = std::string("float4 VS(float4 p : POSITION) : POSITION { return p; }\n"
+                                         "float4 PS() : COLOR { return 0; }\n"
+                                         "technique T { pass P {\n") +
+                             (vertex ? "  PixelShader = compile ps_2_0 PS();\n  VertexShader = asm { " : "  VertexShader = compile vs_2_0 VS();\n  PixelShader = asm { ") +
+                             body + " };\n} }\n";
+        auto ds = errorsOf(source);
+        ASSERT_FALSE(ds.empty());
+        EXPECT_EQ(ds.front().location.line, 5) << ds.front().format();
+        EXPECT_NE(ds.front().id, "FX2001") << ds.front().format();  // not glslang choking on generated code
+    }
+}
+
 TEST(AsmTranslation, BadConstantBindingNamesTheState) {
     auto ds = errorsOf("struct S { float4 a; };\nS s;\n"
                        "technique T { pass P {\n"

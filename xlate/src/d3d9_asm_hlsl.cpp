@@ -71,6 +71,7 @@ private:
     std::set<std::string> inputsRead_;           // parameter names
     std::set<std::string> outputsWritten_;       // o_* locals
     std::set<int> temps_;
+    std::set<int> textureRegisters_;              // ps_1_1-1_3 t# (locals written by tex/texcoord)
     std::set<int> warnedConstants_;
     std::map<int, TextureKind> samplersUsed_;
     bool usesAddress_ = false, relative_ = false;
@@ -146,7 +147,10 @@ private:
             return constant(r, token);
         }
         if (r.type == "t" && !vertex_) {
-            if (ps1_ && !ps14_) return "t" + n;  // written by tex/texcoord first
+            if (ps1_ && !ps14_) {  // written by tex/texcoord first
+                textureRegisters_.insert(r.index);
+                return "t" + n;
+            }
             std::string name = "t" + n;
             inputsRead_.insert(name);
             return name;
@@ -196,7 +200,10 @@ private:
             usesAddress_ = true;
             return "a0";
         }
-        if (r.type == "t" && ps1_ && !ps14_) return "t" + n;
+        if (r.type == "t" && ps1_ && !ps14_) {
+            textureRegisters_.insert(r.index);
+            return "t" + n;
+        }
         std::string out;
         if (vertex_) {
             if (r.type == "opos") out = "o_Pos";
@@ -553,8 +560,7 @@ TranslatedAsm Translator::run() {
         }
     }
     for (int r : temps_) prologue << "    float4 r" << r << " = float4(0, 0, 0, 0);\n";
-    if (ps1_ && !ps14_)
-        for (int t = 0; t < 4; ++t) prologue << "    float4 t" << t << " = float4(0, 0, 0, 0);\n";
+    for (int t : textureRegisters_) prologue << "    float4 t" << t << " = float4(0, 0, 0, 0);\n";
     if (usesAddress_) prologue << "    float4 a0 = float4(0, 0, 0, 0);\n";
     for (const std::string& o : outputsWritten_) prologue << "    float4 " << o << " = float4(0, 0, 0, 1);\n";
     if (relative_) {
