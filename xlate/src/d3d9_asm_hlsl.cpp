@@ -74,6 +74,7 @@ private:
     std::set<int> textureRegisters_;              // ps_1_1-1_3 t# (locals written by tex/texcoord)
     std::set<int> warnedConstants_;
     std::map<int, TextureKind> samplersUsed_;
+    std::vector<std::string> rows_;              // texm3x2pad/texm3x3pad results waiting for their texm3x*
     bool usesAddress_ = false, relative_ = false;
     const AsmInstruction* ins_ = nullptr;        // being translated (for diagnostics)
     std::ostringstream body_;
@@ -455,6 +456,48 @@ void Translator::instruction(const AsmInstruction& ins) {
     if (op == "texcoord" && ps1_ && !ps14_) {  // (saturate(uvw), 1)
         if (!expectOperands(1)) return;
         return write(o[0], "float4(saturate(" + texcoordInput(o[0].reg.index) + ".xyz), 1.0)", false);
+    }
+    // ps_1_1-1_3 texture-address instructions: rows of a matrix multiply (texcoord set N . src),
+    // dependent reads through another texture's colour.
+    if (ps1_ && !ps14_ && (op == "texm3x2pad" || op == "texm3x3pad")) {
+        if (!expectOperands(2)) return;
+        std::string row = "fxport_row" + std::to_string(tempCounter_++);
+        body_ << "    float " << row << " = dot(" << texcoordInput(o[0].reg.index) << ".xyz, (" << source(o[1]) << ").xyz);\n";
+        rows_.push_back(row);
+        return;
+    }
+    if (ps1_ && !ps14_ && (op == "texm3x2tex" || op == "texm3x3tex" || op == "texm3x3" || op == "texm3x3spec" || op == "texm3x3vspec")) {
+        const bool three = op != "texm3x2tex";
+        if (!expectOperands(op == "texm3x3spec" ? 3 : 2)) return;
+        size_t need = three ? 2 : 1;
+        if (rows_.size() < need) return error(op + " needs the " + (three ? "two texm3x3pad" : "texm3x2pad") + " instructions before it");
+        int n = o[0].reg.index;
+        std::string last = "dot(" + texcoordInput(n) + ".xyz, (" + source(o[1]) + ").xyz)";
+        std::string coords = three ? "float4(" + rows_[rows_.size() - 2] + ", " + rows_.back() + ", " + last + ", 0)"
+                                   : "float4(" + rows_.back() + ", " + last + ", 0, 0)";
+        rows_.clear();
+        // Written into a t register: ps_1_x's register range applies, as to arithmetic results.
+        if (op == "texm3x3") return write(o[0], "float4((" + coords + ").xyz, 1.0)", true);
+        if (op == "texm3x3spec" || op == "texm3x3vspec") {
+            // Reflect the eye vector about the normal (u, v, w): 2 N (N.E) / (N.N) - E.
+            std::string eye = op == "texm3x3spec" ? "(" + source(o[2]) + ").xyz"
+                                                  : "float3(" + texcoordInput(n - 2) + ".w, " + texcoordInput(n - 1) + ".w, " + texcoordInput(n) + ".w)";
+            std::string nv = "fxport_n" + std::to_string(tempCounter_++), ev = "fxport_e" + std::to_string(tempCounter_++);
+            body_ << "    float3 " << nv << " = (" << coords << ").xyz;\n    float3 " << ev << " = " << eye << ";\n";
+            coords = "float4(2.0 * " + nv + " * dot(" + nv + ", " + ev + ") / dot(" + nv + ", " + nv + ") - " + ev + ", 0)";
+        }
+        return write(o[0], sample(n, coords), false);
+    }
+    if (ps1_ && !ps14_ && (op == "texreg2ar" || op == "texreg2gb" || op == "texreg2rgb" || op == "texdp3" || op == "texdp3tex")) {
+        if (!expectOperands(2)) return;
+        int n = o[0].reg.index;
+        std::string src = source(o[1]);
+        if (op == "texdp3") return write(o[0], replicate("dot(" + texcoordInput(n) + ".xyz, (" + src + ").xyz)"), true);
+        std::string coords = op == "texreg2ar"   ? "float4((" + src + ").w, (" + src + ").x, 0, 0)"
+                             : op == "texreg2gb" ? "float4((" + src + ").y, (" + src + ").z, 0, 0)"
+                             : op == "texreg2rgb" ? "float4((" + src + ").xyz, 0)"
+                                                  : "float4(dot(" + texcoordInput(n) + ".xyz, (" + src + ").xyz), 0, 0, 0)";
+        return write(o[0], sample(n, coords), false);
     }
     if (op == "texkill") {
         if (!expectOperands(1)) return;
