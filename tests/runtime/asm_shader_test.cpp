@@ -229,7 +229,8 @@ TEST_F(AsmShaders, Vs20RegisterBindingsAndMacros) {
 
 // ps_1_1/1_2 texture-address instructions: texm3x2pad + texm3x2tex read a second texture at
 // (texcoord1 . n, texcoord2 . n) with n = t0_bx2, texreg2ar at (t0.a, t0.r), texm3x3pad x2 +
-// texm3x3 give the three rows as a colour, texdp3 the dot with texcoord set 1. Point sampling with
+// texm3x3 give the three rows as a colour, texdp3 the dot with texcoord set 1, texbeml offsets
+// stage 1's coordinates by the bump-environment matrix of pass states. Point sampling with
 // clamping; a pixel whose dependent coordinate lies within 1e-3 of a texel edge is not checked
 // (which texel a tie picks is the rasteriser's business).
 TEST_F(AsmShaders, Ps11TextureAddressing) {
@@ -307,6 +308,17 @@ TEST_F(AsmShaders, Ps11TextureAddressing) {
         double d = clamp1(dot3(in.tc1, in.t0));
         V4 out;
         for (int k = 0; k < 4; ++k) out[k] = sat(clamp1(d * in.t0[k]));
+        return out;
+    });
+    // texbeml: stage 1 read at texcoord1 + [[0.25, BumpScale], [-0.125, 0.5]] (t0.r, t0.g), times
+    // saturate(t0.b * 0.5 + 0.25).
+    check("BumpEnv", [&](double u, double v, bool& tie) {
+        Inputs in = inputs(u, v);
+        const V4& t0 = in.t0;
+        V4 s = sample2(u + 0.25 * t0[0] + double(0.2f) * t0[1], v - 0.125 * t0[0] + 0.5 * t0[1], tie);
+        double l = sat(t0[2] * 0.5 + 0.25);
+        V4 out;
+        for (int k = 0; k < 4; ++k) out[k] = sat(clamp1(s[k] * l));
         return out;
     });
     EXPECT_LT(skipped, 8) << "too many texel-edge ties for the check to mean much";

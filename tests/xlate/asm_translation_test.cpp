@@ -111,15 +111,15 @@ TEST(AsmTranslation, UntranslatedInstructionIsAnErrorAtItsLine) {
                        "  PixelShader = asm {\n"
                        "    ps_1_3\n"
                        "    tex t0\n"
-                       "    texbeml t1, t0\n"
+                       "    texm3x2depth t1, t0\n"
                        "    mov r0, t1\n"
                        "  };\n"
                        "} }\n");
     const Diagnostic* d = find(ds, "FX1404");
     ASSERT_NE(d, nullptr);
     EXPECT_EQ(d->location.line, 7);
-    EXPECT_NE(d->message.find("texbeml"), std::string::npos) << d->message;
-    EXPECT_NE(d->sourceLine.find("texbeml"), std::string::npos);
+    EXPECT_NE(d->message.find("texm3x2depth"), std::string::npos) << d->message;
+    EXPECT_NE(d->sourceLine.find("texm3x2depth"), std::string::npos);
 }
 
 TEST(AsmTranslation, UnknownModifierAndRegisterAreErrorsAtTheirLines) {

@@ -81,6 +81,9 @@ struct AsmBindings {
     std::map<int, std::string> constants;
     // Sampler stage -> what the pass binds there (ps_1_x declares no sampler dimensions).
     std::map<int, TextureKind> stageKinds;
+    // Sampler stage -> bump-environment state (bumpenvmat00 ... bumpenvmat11, bumpenvlscale,
+    // bumpenvloffset, lower-case) -> float HLSL expression, for texbem/texbeml/bem. Unset = 0.
+    std::map<int, std::map<std::string, std::string>> bumpEnvironment;
 };
 
 struct TranslatedAsm {

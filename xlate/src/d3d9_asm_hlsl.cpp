@@ -260,6 +260,14 @@ private:
         pending_.clear();
     }
 
+    // The stage's bump-environment state as a float expression ("00" ... "11", "lscale", "loffset").
+    std::string bump(int stage, const std::string& which) {
+        std::string key = which.size() == 2 ? "bumpenvmat" + which : "bumpenv" + which;
+        auto s = bindings_.bumpEnvironment.find(stage);
+        if (s == bindings_.bumpEnvironment.end()) return "0.0";
+        auto v = s->second.find(key);
+        return v == s->second.end() ? "0.0" : v->second;
+    }
     TextureKind kindOfStage(int stage) {
         if (auto it = samplerDcl_.find(stage); it != samplerDcl_.end()) return it->second;
         if (auto it = bindings_.stageKinds.find(stage); it != bindings_.stageKinds.end()) return it->second;
@@ -498,6 +506,26 @@ void Translator::instruction(const AsmInstruction& ins) {
                              : op == "texreg2rgb" ? "float4((" + src + ").xyz, 0)"
                                                   : "float4(dot(" + texcoordInput(n) + ".xyz, (" + src + ").xyz), 0, 0, 0)";
         return write(o[0], sample(n, coords), false);
+    }
+    // Bump-environment mapping: the stage's 2x2 matrix (BumpEnvMat00[n] ...) turns src.rg into a
+    // texture-coordinate offset; texbeml scales the sample by src.b * BumpEnvLScale + BumpEnvLOffset.
+    if ((op == "texbem" || op == "texbeml") && ps1_ && !ps14_) {
+        if (!expectOperands(2)) return;
+        int n = o[0].reg.index;
+        std::string src = source(o[1]), tc = texcoordInput(n);
+        std::string coords = "float4(" + tc + ".x + " + bump(n, "00") + " * (" + src + ").x + " + bump(n, "10") + " * (" + src + ").y, " + tc +
+                             ".y + " + bump(n, "01") + " * (" + src + ").x + " + bump(n, "11") + " * (" + src + ").y, 0, 0)";
+        std::string v = sample(n, coords);
+        if (op == "texbeml") v = "(" + v + " * saturate((" + src + ").z * " + bump(n, "lscale") + " + " + bump(n, "loffset") + "))";
+        return write(o[0], v, false);
+    }
+    if (op == "bem" && ps14_) {  // ps_1_4: dst.rg = src0.rg + matrix(stage of dst) * src1.rg
+        if (!expectOperands(3)) return;
+        int n = o[0].reg.index;
+        std::string a = source(o[1]), b = source(o[2]);
+        return write(o[0], "float4((" + a + ").x + " + bump(n, "00") + " * (" + b + ").x + " + bump(n, "10") + " * (" + b + ").y, (" + a + ").y + " +
+                               bump(n, "01") + " * (" + b + ").x + " + bump(n, "11") + " * (" + b + ").y, 0, 0)",
+                     true, "xy");
     }
     if (op == "texkill") {
         if (!expectOperands(1)) return;
