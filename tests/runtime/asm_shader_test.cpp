@@ -230,8 +230,9 @@ TEST_F(AsmShaders, Vs20RegisterBindingsAndMacros) {
 // ps_1_1/1_2 texture-address instructions: texm3x2pad + texm3x2tex read a second texture at
 // (texcoord1 . n, texcoord2 . n) with n = t0_bx2, texreg2ar at (t0.a, t0.r), texm3x3pad x2 +
 // texm3x3 give the three rows as a colour, texdp3 the dot with texcoord set 1, texbeml offsets
-// stage 1's coordinates by the bump-environment matrix of pass states. Point sampling with
-// clamping; a pixel whose dependent coordinate lies within 1e-3 of a texel edge is not checked
+// stage 1's coordinates by the bump-environment matrix of pass states, and a ps.1.4 shader reads
+// through texcrd/texld/_dz and a phase-2 dependent texld. Point sampling with
+// clamping; a pixel whose dependent coordinate lies within 1e-4 of a texel edge is not checked
 // (which texel a tie picks is the rasteriser's business).
 TEST_F(AsmShaders, Ps11TextureAddressing) {
     Effect effect(device, asmFixture("AsmPs11TextureAddressing.fx"));
@@ -250,7 +251,7 @@ TEST_F(AsmShaders, Ps11TextureAddressing) {
     int skipped = 0;
     auto edgeTie = [](double c) {
         double x = std::clamp(c, 0.0, 1.0) * 4;
-        return c > 0 && c < 1 && std::abs(x - std::round(x)) < 1e-3 * 4;
+        return c > 0 && c < 1 && std::abs(x - std::round(x)) < 1e-4 * 4;
     };
     auto sample2 = [&](double a, double b, bool& tie) {
         tie = tie || edgeTie(a) || edgeTie(b);
@@ -319,6 +320,19 @@ TEST_F(AsmShaders, Ps11TextureAddressing) {
         double l = sat(t0[2] * 0.5 + 0.25);
         V4 out;
         for (int k = 0; k < 4; ++k) out[k] = sat(clamp1(s[k] * l));
+        return out;
+    });
+    // ps_1_4: r0 = texcoord set 1 (u, v, 0.5); r1 = Tex at (u, v); r3 = Tex2 at (u, v) / 0.5;
+    // phase 2: r2 = Tex2 at r0; per component r1 > 0.5 ? r2 : 0.5; then (r0 + r3) / 2, alpha r3.b.
+    check("Ps14Phases", [&](double u, double v, bool& tie) {
+        V4 r1 = texelValue(u, v);
+        V4 r3 = sample2(u / 0.5, v / 0.5, tie);
+        V4 r2 = sample2(u, v, tie);
+        V4 out;
+        for (int k = 0; k < 4; ++k) out[k] = r1[k] > 0.5 ? r2[k] : 0.5;
+        for (int k = 0; k < 3; ++k) out[k] = clamp1(0.5 * (out[k] + r3[k]));
+        out[3] = r3[2];
+        for (double& x : out) x = sat(x);
         return out;
     });
     EXPECT_LT(skipped, 8) << "too many texel-edge ties for the check to mean much";
