@@ -95,7 +95,8 @@ struct TranslatedAsm {
 
 std::string asmSamplerName(const std::string& functionName, int stage);
 
-// `where` names the block in the generated code's comment.
+// `functionName` names the generated function (and its samplers, asmSamplerName); diagnostics go to
+// `diagnostics`, located through `map`. `ok` is false after an error.
 TranslatedAsm translateAsmProgram(const AsmProgram& program, const std::string& functionName, const AsmBindings& bindings,
                                   const SourceMap& map, std::vector<Diagnostic>& diagnostics);
 

@@ -3,7 +3,6 @@
 // modifiers (_x2 ... _d8, _sat, then ps_1_x's [-1, 1] range) and writes the destination's mask;
 // a ps_1_x co-issued pair (`+mov r0.a, ...`) computes both results before either is written.
 #include <algorithm>
-#include <cmath>
 #include <set>
 #include <sstream>
 
@@ -66,7 +65,6 @@ private:
 
     std::map<int, std::string> defs_;            // def c# -> float4 literal
     std::map<int, std::string> inputSemantic_;   // v# (vertex) / t#, v# (pixel) -> semantic
-    std::map<int, std::string> pixelTexcoordDcl_;
     std::map<int, TextureKind> samplerDcl_;      // ps_2_0 dcl_2d s# ...
     std::set<std::string> inputsRead_;           // parameter names
     std::set<std::string> outputsWritten_;       // o_* locals

@@ -1,6 +1,7 @@
 // Parser of D3D9 shader assembly text (the inside of an effect's `asm { }` block) into
 // instructions. Instructions need no line breaks: an operand is a register with optional modifiers,
 // so the first token after an operand that is not ',' starts the next instruction.
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
 
@@ -81,7 +82,7 @@ public:
 
     bool run(ShaderStage expected, AsmProgram& out) {
         if (!parseVersion(expected, out)) return false;
-        while (!at().kind_is_end()) {
+        while (cur().kind != Token::Kind::End) {
             AsmInstruction ins;
             if (!parseInstruction(ins)) return false;
             out.instructions.push_back(std::move(ins));
@@ -90,16 +91,11 @@ public:
     }
 
 private:
-    struct Cursor {
-        const Token* tok;
-        bool kind_is_end() const { return tok->kind == Token::Kind::End; }
-    };
     std::vector<Token> t_;
     size_t pos_ = 0;
     const SourceMap& map_;
     std::vector<Diagnostic>& diagnostics_;
 
-    Cursor at() const { return {&t_[std::min(pos_, t_.size() - 1)]}; }
     const Token& cur() const { return t_[std::min(pos_, t_.size() - 1)]; }
     const Token& peek(size_t k) const { return t_[std::min(pos_ + k, t_.size() - 1)]; }
 
