@@ -111,15 +111,15 @@ TEST(AsmTranslation, UntranslatedInstructionIsAnErrorAtItsLine) {
                        "  PixelShader = asm {\n"
                        "    ps_1_3\n"
                        "    tex t0\n"
-                       "    texreg2ar t1, t0\n"
+                       "    texm3x2depth t1, t0\n"
                        "    mov r0, t1\n"
                        "  };\n"
                        "} }\n");
     const Diagnostic* d = find(ds, "FX1404");
     ASSERT_NE(d, nullptr);
     EXPECT_EQ(d->location.line, 7);
-    EXPECT_NE(d->message.find("texreg2ar"), std::string::npos) << d->message;
-    EXPECT_NE(d->sourceLine.find("texreg2ar"), std::string::npos);
+    EXPECT_NE(d->message.find("texm3x2depth"), std::string::npos) << d->message;
+    EXPECT_NE(d->sourceLine.find("texm3x2depth"), std::string::npos);
 }
 
 TEST(AsmTranslation, UnknownModifierAndRegisterAreErrorsAtTheirLines) {
@@ -206,6 +206,52 @@ TEST(AsmTranslation, Dx8Spellings) {
     const Pass& p = e.techniques.at(0).passes.at(0);
     EXPECT_TRUE(reads(e, shaderOf(e, p.pixelShader), "Color"));
     EXPECT_TRUE(reads(e, shaderOf(e, p.vertexShader), "Color"));
+}
+
+TEST(AsmTranslation, Dx8DeclBlockIsNamed) {
+    auto ds = errorsOf("technique T { pass P {\n"
+                       "  VertexShader = decl { float v0[3]; } asm { vs.1.0 mov oPos, v0 };\n"
+                       "} }\n");
+    ASSERT_FALSE(ds.empty());
+    EXPECT_EQ(ds.front().id, "FX1404");
+    EXPECT_EQ(ds.front().location.line, 2);
+    EXPECT_NE(ds.front().message.find("decl"), std::string::npos) << ds.front().message;
+}
+
+// Malformed assembly is a diagnostic on the asm's line, never a crash or generated code glslang
+// rejects.
+TEST(AsmTranslation, MalformedAssemblyIsADiagnosticAtItsLine) {
+    const char* const bodies[] = {"",
+                                  "ps_1_1 mov",
+                                  "ps_1_1 mov r0,",
+                                  "ps_1_1 def c0, 1",
+                                  "ps_1_1 mov r0, c4000000000",
+                                  "ps_2_0 m4x4 oC0, r0, c2147483647",
+                                  "ps_2_0 mov oC0.q, r0",
+                                  "ps_2_0 mov oC0, r0.xyzwx",
+                                  "ps_1_1 + + mov r0, t0",
+                                  "ps_2_0 texld r0, t0, c0 mov oC0, r0",
+                                  "ps_2_0 dcl_foo s0 mov oC0, c0",
+                                  "ps_1_1 mov r0, t0_foo",
+                                  "ps_2_0 mov_x9 oC0, c0",
+                                  "ps_2_0 mov oC0, b0",
+                                  "ps_1_1 mov oC0, c0",
+                                  "vs_1_1 dcl_position v0 mov oPos, v0 mov oC0, v0",
+                                  "vs_1_1 dcl_bogus v0 mov oPos, v0",
+                                  "vs_1_1 dcl_position v0 mov oD0, v0"};
+    for (const char* body : bodies) {
+        SCOPED_TRACE(body);
+        bool vertex = body[0] == 'v';
+        std::string source = std::string("float4 VS(float4 p : POSITION) : POSITION { return p; }\n"
+                                         "float4 PS() : COLOR { return 0; }\n"
+                                         "technique T { pass P {\n") +
+                             (vertex ? "  PixelShader = compile ps_2_0 PS();\n  VertexShader = asm { " : "  VertexShader = compile vs_2_0 VS();\n  PixelShader = asm { ") +
+                             body + " };\n} }\n";
+        auto ds = errorsOf(source);
+        ASSERT_FALSE(ds.empty());
+        EXPECT_EQ(ds.front().location.line, 5) << ds.front().format();
+        EXPECT_NE(ds.front().id, "FX2001") << ds.front().format();  // not glslang choking on generated code
+    }
 }
 
 TEST(AsmTranslation, BadConstantBindingNamesTheState) {

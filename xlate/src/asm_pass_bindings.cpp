@@ -1,6 +1,7 @@
 // Pass states -> register contents of shader-assembly shaders (see asm_pass_bindings.h).
 #include "asm_pass_bindings.h"
 
+#include <algorithm>
 #include <sstream>
 
 #include "constant_eval.h"
@@ -115,6 +116,28 @@ public:
         return true;
     }
 
+    bool bindBumpEnvironment(const FxAssignment& a, const std::string& lower, std::map<std::string, std::string>& out, std::string& signature) {
+        static const char* const k[] = {"bumpenvmat00", "bumpenvmat01", "bumpenvmat10", "bumpenvmat11", "bumpenvlscale", "bumpenvloffset"};
+        if (std::find(std::begin(k), std::end(k), lower) == std::end(k)) return bad(a, "unknown texture-stage state '" + a.name + "'");
+        TokenSpan s = a.value;
+        const auto& t = ctx_.syntax.tokens;
+        std::string name = s.end == s.begin + 3 && t[s.begin + 1].isIdent() ? t[s.begin + 1].text : s.end == s.begin + 1 && t[s.begin].isIdent() ? t[s.begin].text : "";
+        bool isParameter = false;
+        for (const auto& g : ctx_.syntax.globals) isParameter |= !name.empty() && g.name == name;
+        if (isParameter) {
+            out[lower] = "((float)" + name + ")";
+        } else if (auto v = evaluateConstant(ctx_.syntax, s, {}); v && v->size() == 1) {
+            std::ostringstream n;
+            n.precision(9);
+            n << (*v)[0];
+            out[lower] = "(" + n.str() + ")";
+        } else {
+            return bad(a, a.name + " takes a number or a float parameter (<Name>)");
+        }
+        signature += lower + std::to_string(a.index) + "=" + out[lower] + ";";
+        return true;
+    }
+
     bool bindSamplerStage(const FxAssignment& a, AsmTextureStage& stage) {
         std::string lower = toLower(a.name);
         stage.signature += lower + "=" + ctx_.syntax.text(a.value) + ";";
@@ -179,6 +202,11 @@ AsmPassBindings collectAsmPassBindings(const FxPass& pass, bool vertexIsAsm, boo
             continue;
         }
         if (!pixelIsAsm) continue;
+        if (lower.rfind("bumpenv", 0) == 0 && a.index >= 0) {  // texbem's 2x2 matrix, texbeml's luminance scale/offset
+            consumed[i] = true;
+            c.bindBumpEnvironment(a, lower, out.pixel.bumpEnvironment[a.index], out.pixelSignature);
+            continue;
+        }
         if (lower == "texture" || lower == "sampler" || (a.index >= 0 && isStageSamplerState(lower))) {
             consumed[i] = true;
             c.bindSamplerStage(a, out.stages[a.index < 0 ? 0 : a.index]);

@@ -3,6 +3,7 @@
 // VertexShaderConstant/1/2/3, PixelShaderConstant/1/2/3/4, and literal values such as
 // `VertexShaderConstant1[9] = {0, 0, 0, 1};`), and for an asm pixel shader the texture stages it
 // samples: `Sampler[0] = (MySampler);`, `Texture[0] = <MyTexture>;`, `MinFilter[0] = Linear;` ...
+// and the bump-environment states texbem/texbeml/bem read (`BumpEnvMat00[1] = 0.5;` ...).
 //
 // Register contents follow D3DX: a parameter fills as many consecutive registers as it occupies in
 // a shader (all of them, whatever the digit in the state's name says), each register float4 with

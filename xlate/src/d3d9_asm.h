@@ -81,6 +81,9 @@ struct AsmBindings {
     std::map<int, std::string> constants;
     // Sampler stage -> what the pass binds there (ps_1_x declares no sampler dimensions).
     std::map<int, TextureKind> stageKinds;
+    // Sampler stage -> bump-environment state (bumpenvmat00 ... bumpenvmat11, bumpenvlscale,
+    // bumpenvloffset, lower-case) -> float HLSL expression, for texbem/texbeml/bem. Unset = 0.
+    std::map<int, std::map<std::string, std::string>> bumpEnvironment;
 };
 
 struct TranslatedAsm {
@@ -92,7 +95,8 @@ struct TranslatedAsm {
 
 std::string asmSamplerName(const std::string& functionName, int stage);
 
-// `where` names the block in the generated code's comment.
+// `functionName` names the generated function (and its samplers, asmSamplerName); diagnostics go to
+// `diagnostics`, located through `map`. `ok` is false after an error.
 TranslatedAsm translateAsmProgram(const AsmProgram& program, const std::string& functionName, const AsmBindings& bindings,
                                   const SourceMap& map, std::vector<Diagnostic>& diagnostics);
 

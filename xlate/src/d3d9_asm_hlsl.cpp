@@ -3,7 +3,6 @@
 // modifiers (_x2 ... _d8, _sat, then ps_1_x's [-1, 1] range) and writes the destination's mask;
 // a ps_1_x co-issued pair (`+mov r0.a, ...`) computes both results before either is written.
 #include <algorithm>
-#include <cmath>
 #include <set>
 #include <sstream>
 
@@ -66,13 +65,14 @@ private:
 
     std::map<int, std::string> defs_;            // def c# -> float4 literal
     std::map<int, std::string> inputSemantic_;   // v# (vertex) / t#, v# (pixel) -> semantic
-    std::map<int, std::string> pixelTexcoordDcl_;
     std::map<int, TextureKind> samplerDcl_;      // ps_2_0 dcl_2d s# ...
     std::set<std::string> inputsRead_;           // parameter names
     std::set<std::string> outputsWritten_;       // o_* locals
     std::set<int> temps_;
+    std::set<int> textureRegisters_;              // ps_1_1-1_3 t# (locals written by tex/texcoord)
     std::set<int> warnedConstants_;
     std::map<int, TextureKind> samplersUsed_;
+    std::vector<std::string> rows_;              // texm3x2pad/texm3x3pad results waiting for their texm3x*
     bool usesAddress_ = false, relative_ = false;
     const AsmInstruction* ins_ = nullptr;        // being translated (for diagnostics)
     std::ostringstream body_;
@@ -146,7 +146,10 @@ private:
             return constant(r, token);
         }
         if (r.type == "t" && !vertex_) {
-            if (ps1_ && !ps14_) return "t" + n;  // written by tex/texcoord first
+            if (ps1_ && !ps14_) {  // written by tex/texcoord first
+                textureRegisters_.insert(r.index);
+                return "t" + n;
+            }
             std::string name = "t" + n;
             inputsRead_.insert(name);
             return name;
@@ -196,7 +199,10 @@ private:
             usesAddress_ = true;
             return "a0";
         }
-        if (r.type == "t" && ps1_ && !ps14_) return "t" + n;
+        if (r.type == "t" && ps1_ && !ps14_) {
+            textureRegisters_.insert(r.index);
+            return "t" + n;
+        }
         std::string out;
         if (vertex_) {
             if (r.type == "opos") out = "o_Pos";
@@ -252,6 +258,14 @@ private:
         pending_.clear();
     }
 
+    // The stage's bump-environment state as a float expression ("00" ... "11", "lscale", "loffset").
+    std::string bump(int stage, const std::string& which) {
+        std::string key = which.size() == 2 ? "bumpenvmat" + which : "bumpenv" + which;
+        auto s = bindings_.bumpEnvironment.find(stage);
+        if (s == bindings_.bumpEnvironment.end()) return "0.0";
+        auto v = s->second.find(key);
+        return v == s->second.end() ? "0.0" : v->second;
+    }
     TextureKind kindOfStage(int stage) {
         if (auto it = samplerDcl_.find(stage); it != samplerDcl_.end()) return it->second;
         if (auto it = bindings_.stageKinds.find(stage); it != bindings_.stageKinds.end()) return it->second;
@@ -449,6 +463,68 @@ void Translator::instruction(const AsmInstruction& ins) {
         if (!expectOperands(1)) return;
         return write(o[0], "float4(saturate(" + texcoordInput(o[0].reg.index) + ".xyz), 1.0)", false);
     }
+    // ps_1_1-1_3 texture-address instructions: rows of a matrix multiply (texcoord set N . src),
+    // dependent reads through another texture's colour.
+    if (ps1_ && !ps14_ && (op == "texm3x2pad" || op == "texm3x3pad")) {
+        if (!expectOperands(2)) return;
+        std::string row = "fxport_row" + std::to_string(tempCounter_++);
+        body_ << "    float " << row << " = dot(" << texcoordInput(o[0].reg.index) << ".xyz, (" << source(o[1]) << ").xyz);\n";
+        rows_.push_back(row);
+        return;
+    }
+    if (ps1_ && !ps14_ && (op == "texm3x2tex" || op == "texm3x3tex" || op == "texm3x3" || op == "texm3x3spec" || op == "texm3x3vspec")) {
+        const bool three = op != "texm3x2tex";
+        if (!expectOperands(op == "texm3x3spec" ? 3 : 2)) return;
+        size_t need = three ? 2 : 1;
+        if (rows_.size() < need) return error(op + " needs the " + (three ? "two texm3x3pad" : "texm3x2pad") + " instructions before it");
+        int n = o[0].reg.index;
+        std::string last = "dot(" + texcoordInput(n) + ".xyz, (" + source(o[1]) + ").xyz)";
+        std::string coords = three ? "float4(" + rows_[rows_.size() - 2] + ", " + rows_.back() + ", " + last + ", 0)"
+                                   : "float4(" + rows_.back() + ", " + last + ", 0, 0)";
+        rows_.clear();
+        // Written into a t register: ps_1_x's register range applies, as to arithmetic results.
+        if (op == "texm3x3") return write(o[0], "float4((" + coords + ").xyz, 1.0)", true);
+        if (op == "texm3x3spec" || op == "texm3x3vspec") {
+            // Reflect the eye vector about the normal (u, v, w): 2 N (N.E) / (N.N) - E.
+            std::string eye = op == "texm3x3spec" ? "(" + source(o[2]) + ").xyz"
+                                                  : "float3(" + texcoordInput(n - 2) + ".w, " + texcoordInput(n - 1) + ".w, " + texcoordInput(n) + ".w)";
+            std::string nv = "fxport_n" + std::to_string(tempCounter_++), ev = "fxport_e" + std::to_string(tempCounter_++);
+            body_ << "    float3 " << nv << " = (" << coords << ").xyz;\n    float3 " << ev << " = " << eye << ";\n";
+            coords = "float4(2.0 * " + nv + " * dot(" + nv + ", " + ev + ") / dot(" + nv + ", " + nv + ") - " + ev + ", 0)";
+        }
+        return write(o[0], sample(n, coords), false);
+    }
+    if (ps1_ && !ps14_ && (op == "texreg2ar" || op == "texreg2gb" || op == "texreg2rgb" || op == "texdp3" || op == "texdp3tex")) {
+        if (!expectOperands(2)) return;
+        int n = o[0].reg.index;
+        std::string src = source(o[1]);
+        if (op == "texdp3") return write(o[0], replicate("dot(" + texcoordInput(n) + ".xyz, (" + src + ").xyz)"), true);
+        std::string coords = op == "texreg2ar"   ? "float4((" + src + ").w, (" + src + ").x, 0, 0)"
+                             : op == "texreg2gb" ? "float4((" + src + ").y, (" + src + ").z, 0, 0)"
+                             : op == "texreg2rgb" ? "float4((" + src + ").xyz, 0)"
+                                                  : "float4(dot(" + texcoordInput(n) + ".xyz, (" + src + ").xyz), 0, 0, 0)";
+        return write(o[0], sample(n, coords), false);
+    }
+    // Bump-environment mapping: the stage's 2x2 matrix (BumpEnvMat00[n] ...) turns src.rg into a
+    // texture-coordinate offset; texbeml scales the sample by src.b * BumpEnvLScale + BumpEnvLOffset.
+    if ((op == "texbem" || op == "texbeml") && ps1_ && !ps14_) {
+        if (!expectOperands(2)) return;
+        int n = o[0].reg.index;
+        std::string src = source(o[1]), tc = texcoordInput(n);
+        std::string coords = "float4(" + tc + ".x + " + bump(n, "00") + " * (" + src + ").x + " + bump(n, "10") + " * (" + src + ").y, " + tc +
+                             ".y + " + bump(n, "01") + " * (" + src + ").x + " + bump(n, "11") + " * (" + src + ").y, 0, 0)";
+        std::string v = sample(n, coords);
+        if (op == "texbeml") v = "(" + v + " * saturate((" + src + ").z * " + bump(n, "lscale") + " + " + bump(n, "loffset") + "))";
+        return write(o[0], v, false);
+    }
+    if (op == "bem" && ps14_) {  // ps_1_4: dst.rg = src0.rg + matrix(stage of dst) * src1.rg
+        if (!expectOperands(3)) return;
+        int n = o[0].reg.index;
+        std::string a = source(o[1]), b = source(o[2]);
+        return write(o[0], "float4((" + a + ").x + " + bump(n, "00") + " * (" + b + ").x + " + bump(n, "10") + " * (" + b + ").y, (" + a + ").y + " +
+                               bump(n, "01") + " * (" + b + ").x + " + bump(n, "11") + " * (" + b + ").y, 0, 0)",
+                     true, "xy");
+    }
     if (op == "texkill") {
         if (!expectOperands(1)) return;
         std::string v = ps1_ && !ps14_ ? texcoordInput(o[0].reg.index) : source(o[0]);
@@ -553,8 +629,7 @@ TranslatedAsm Translator::run() {
         }
     }
     for (int r : temps_) prologue << "    float4 r" << r << " = float4(0, 0, 0, 0);\n";
-    if (ps1_ && !ps14_)
-        for (int t = 0; t < 4; ++t) prologue << "    float4 t" << t << " = float4(0, 0, 0, 0);\n";
+    for (int t : textureRegisters_) prologue << "    float4 t" << t << " = float4(0, 0, 0, 0);\n";
     if (usesAddress_) prologue << "    float4 a0 = float4(0, 0, 0, 0);\n";
     for (const std::string& o : outputsWritten_) prologue << "    float4 " << o << " = float4(0, 0, 0, 1);\n";
     if (relative_) {

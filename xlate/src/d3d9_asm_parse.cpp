@@ -1,6 +1,7 @@
 // Parser of D3D9 shader assembly text (the inside of an effect's `asm { }` block) into
 // instructions. Instructions need no line breaks: an operand is a register with optional modifiers,
 // so the first token after an operand that is not ',' starts the next instruction.
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
 
@@ -45,7 +46,9 @@ bool splitRegister(const std::string& name, AsmRegister& reg) {
     for (const char* t : kTypes)
         if (base == t) {
             reg.type = base;
-            reg.index = digits == n.size() ? -1 : std::atoi(n.c_str() + digits);
+            // No register file has more than a few hundred registers; 4096 keeps index arithmetic
+            // (m4x4 reads index + 3, c[a0.x + n]) far from overflow.
+            reg.index = digits == n.size() ? -1 : n.size() - digits > 4 ? 4096 : std::atoi(n.c_str() + digits);
             return true;
         }
     return false;
@@ -79,7 +82,7 @@ public:
 
     bool run(ShaderStage expected, AsmProgram& out) {
         if (!parseVersion(expected, out)) return false;
-        while (!at().kind_is_end()) {
+        while (cur().kind != Token::Kind::End) {
             AsmInstruction ins;
             if (!parseInstruction(ins)) return false;
             out.instructions.push_back(std::move(ins));
@@ -88,20 +91,19 @@ public:
     }
 
 private:
-    struct Cursor {
-        const Token* tok;
-        bool kind_is_end() const { return tok->kind == Token::Kind::End; }
-    };
     std::vector<Token> t_;
     size_t pos_ = 0;
     const SourceMap& map_;
     std::vector<Diagnostic>& diagnostics_;
 
-    Cursor at() const { return {&t_[std::min(pos_, t_.size() - 1)]}; }
     const Token& cur() const { return t_[std::min(pos_, t_.size() - 1)]; }
     const Token& peek(size_t k) const { return t_[std::min(pos_ + k, t_.size() - 1)]; }
 
-    bool fail(const std::string& message, const Token& where) {
+    bool fail(std::string message, const Token& where) {
+        if (where.kind == Token::Kind::End) {
+            size_t found = message.find(", found ''");
+            if (found != std::string::npos) message = message.substr(0, found) + ", but the asm block ends here";
+        }
         diagnostics_.push_back(map_.make(Severity::Error, diag::kSyntax, message, where.line, where.column,
                                          where.kind == Token::Kind::End ? std::string() : where.text));
         return false;
@@ -229,7 +231,7 @@ private:
                 } else if (k.is("-")) {
                     sign = -1;
                 } else if (k.kind == Token::Kind::Number) {
-                    offset += sign * std::atoi(k.text.c_str());
+                    offset += sign * (k.text.size() > 4 ? 4096 : std::atoi(k.text.c_str()));
                 } else {
                     return fail("a register index takes a0.x and numbers, not '" + k.text + "'", k);
                 }
@@ -240,6 +242,7 @@ private:
             o.reg.index = offset;
         }
         if (o.reg.index < 0) return fail("register '" + r.text + "' has no number", r);
+        if (o.reg.index >= 4096 || o.reg.index < -4096) return fail("register '" + r.text + "' is out of range", r);
         if (cur().is(".") && peek(1).isIdent()) {
             std::vector<std::string> sw = splitUnderscore(peek(1).text);
             if (!isSwizzle(toLower(sw[0]))) return fail("'" + sw[0] + "' is not a swizzle or write mask", peek(1));

@@ -593,6 +593,12 @@ void EffectBuilder::buildTechniques() {
                     continue;
                 }
                 FxShaderExpr e = parseShaderExpr(syntax_, a.value);
+                if (e.kind == FxShaderExpr::Kind::Invalid && !a.value.empty() && iequals(syntax_.tokens[a.value.begin].text, "decl")) {
+                    error(diag::kUnsupported, "DirectX 8 vertex declarations (VertexShader = decl { ... } asm { ... }) are not supported: "
+                                              "declare the inputs with dcl_position v0 ... inside the asm block (vs_1_1)", a.nameToken);
+                    pass.valid = false;
+                    continue;
+                }
                 if (e.kind == FxShaderExpr::Kind::Invalid) e.token = a.nameToken;
                 ShaderChoice& target = stage == ShaderStage::Vertex ? pass.vertexShader
                                        : stage == ShaderStage::Pixel ? pass.pixelShader
