@@ -5,13 +5,13 @@
 // Bounds: render_harness.h; the per-pixel slack: reference_eval.h. Each test prints its max / RMS
 // error ("[render] ..." lines) and records them as test properties.
 //
-// The light and composition passes run in the shipped code itself: the demo's DeferredRenderer
+// The passes run in the shipped code itself wherever it can: the demo's DeferredRenderer
 // (ClearGBuffer; MakeLightMap with one directional, spot or point light of the demo's Lights
 // classes, their shadow maps and the cookie uploaded, the volumes the content's models; MakeFinal)
-// and SSAO (BlurSSAO, Compose), one pass at a time on inputs uploaded into their targets. The
-// passes that draw the tests' own meshes (GBuffer, the DepthWriter shadow maps: the shipped code
-// draws only glTF Models) and RenderSSAO (the shipped SSAO samples the content's mipmapped random
-// normals) still go through gpu_passes.h, a copy of the demo's code for those meshes.
+// and SSAO (RenderSSAO with the content's random normals, BlurSSAO, Compose), one pass at a time on
+// inputs uploaded into their targets. The passes that draw the tests' own meshes (GBuffer, the
+// DepthWriter shadow maps: the shipped code draws only glTF Models) still go through gpu_passes.h,
+// a copy of the demo's code for those meshes.
 #include <gtest/gtest.h>
 
 #include <memory>
@@ -46,34 +46,27 @@ struct PassInputs {
     Materials materials = makeMaterials();
     Texture2D albedoMap, normalMap, specularMap;
     GBufferImages gbuffer;
-    Texture2D gbuffer0, gbuffer1, gbuffer2;
     DirectionalLightSetup directional{Vector3(0.3f, -1.0f, -0.4f), Vector4(1.0f, 0.85f, 0.7f, 1.0f), 0.9f};
     SpotLightSetup spot = makeSpotLight(Vector3(0, 6, 0.5f), Vector3(0.15f, -1, 0.45f), Vector4(1, 0.95f, 0.8f, 1), 0.9f, true, 64);
     CpuTexture spotShadow, cookie;
     Texture2D cookieGpu;
     PointLightSetup point{Vector3(0.5f, 3, 1), 20, Vector4(0.9f, 0.95f, 1, 1), 0.8f, true, 32};
     CpuCube pointShadow;
-    CpuTexture randomNormals, lightMap, ssao, sceneImage;
-    Texture2D randomNormalsGpu;
+    CpuTexture lightMap, ssao, sceneImage;
 
     explicit PassInputs(GraphicsDevice& d)
         : device(d), camera(makeCamera(Vector3(0, 9, 17), Vector3(0, 1.5f, 0), kWidth, kHeight)),
           albedoMap(d, 16, 16, false, SurfaceFormat::Color), normalMap(d, 16, 16, false, SurfaceFormat::Color),
           specularMap(d, 16, 16, false, SurfaceFormat::Color), gbuffer(makeSyntheticGBuffer(scene, camera, kWidth, kHeight)),
-          gbuffer0(d, kWidth, kHeight, false, SurfaceFormat::Rgba64), gbuffer1(d, kWidth, kHeight, false, SurfaceFormat::Rgba64),
-          gbuffer2(d, kWidth, kHeight, false, SurfaceFormat::Vector2), spotShadow(makeSpotShadowMap(scene, spot)),
+          spotShadow(makeSpotShadowMap(scene, spot)),
           cookie(makeSpotCookie(32)), cookieGpu(d, 32, 32, false, SurfaceFormat::Color),
-          pointShadow(makePointShadowCube(scene, point)), randomNormals(makeRandomNormals(16)),
+          pointShadow(makePointShadowCube(scene, point)),
           lightMap(makeLightMapImage(kWidth, kHeight)), ssao(makeSsaoImage(kWidth, kHeight)),
-          sceneImage(makeSceneImage(kWidth, kHeight)), randomNormalsGpu(d, 16, 16, false, SurfaceFormat::Color) {
+          sceneImage(makeSceneImage(kWidth, kHeight)) {
         upload(albedoMap, materials.albedo);
         upload(normalMap, materials.normal);
         upload(specularMap, materials.specular);
-        upload(gbuffer0, gbuffer.albedo);
-        upload(gbuffer1, gbuffer.normals);
-        upload(gbuffer2, gbuffer.depth);
         upload(cookieGpu, cookie);
-        upload(randomNormalsGpu, randomNormals);
     }
 
     GBufferTextures gbufferTextures() const { return {&gbuffer.albedo, &gbuffer.normals, &gbuffer.depth}; }
@@ -429,10 +422,19 @@ TEST_F(DeferredPasses, Composition) {
 
 TEST_F(DeferredPasses, Ssao) {
     PassInputs& s = in();
+    ShippedRenderer& r = shipped();
+    uploadGBuffer(r, s);
     const float sampleRadius = 0.25f, distanceScale = 3.0f;  // fxdemo's starting values
-    RenderTarget2D target(device, kWidth, kHeight, false, SurfaceFormat::Color, DepthFormat::None);
-    renderSsao(device, target, s.gbuffer1, s.gbuffer2, s.randomNormalsGpu, s.camera, sampleRadius, distanceScale);
+    r.ssao->setSampleRadius(sampleRadius);
+    r.ssao->setDistanceScale(distanceScale);
+    FixedCamera camera(s.camera);
+    r.ssao->RenderSSAO(device, r.renderer->getGBuffer(), camera);
     device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+    RenderTarget2D& target = r.ssao->getSSAOTarget();
+    // SSAO samples the content's random normals (RandomNormals.png, no mip levels): the reference reads the same texels.
+    const Texture2D& randomNormalsGpu = *r.content.Load<Texture2D>("RandomNormals");
+    ASSERT_EQ(randomNormalsGpu.LevelCount(), 1);
+    const CpuTexture randomNormals = readBack(randomNormalsGpu);
     SsaoParams q;
     q.projection = toM4(s.camera.Projection);
     float cy = float(std::tan(double(s.camera.FieldOfView) / 2.0)) * s.camera.FarPlane;
@@ -441,7 +443,7 @@ TEST_F(DeferredPasses, Ssao) {
     q.distanceScale = distanceScale;
     q.gbufferTextureSize = {kWidth, kHeight};
     RefImage ref = referenceImage(kWidth, kHeight, SurfaceFormat::Color, false, [&](Eval& ev, PixelPos p) {
-        return ssaoPixel(ev, s.gbuffer.normals, s.gbuffer.depth, s.randomNormals, q, p);
+        return ssaoPixel(ev, s.gbuffer.normals, s.gbuffer.depth, randomNormals, q, p);
     });
     check("SSAO", readBack(target), ref);
 }
@@ -451,7 +453,8 @@ TEST_F(DeferredPasses, SsaoBlur) {
     ShippedRenderer& r = shipped();
     upload(r.ssao->getSSAOTarget(), s.ssao);
     // BlurSSAO relies on RenderSSAO having set Textures[1] = GBuffer 1 (LinearClamp).
-    device.Textures[1] = &s.gbuffer1;
+    uploadGBuffer(r, s);
+    device.Textures[1] = &r.gbuffer(1);
     device.SamplerStates[1] = SamplerState::LinearClamp;
     r.ssao->BlurSSAO(device);
     RenderTarget2D& target = r.ssao->getBlurTarget();
