@@ -17,13 +17,12 @@
 #include <memory>
 
 #include "deferred/Lights/light_manager.h"
-#include "deferred/deferred_renderer.h"
-#include "deferred/ssao.h"
 #include "reference/deferred_reference.h"
 #include "deferred_scene.h"
 #include "gpu_passes.h"
 #include "render_harness.h"
 #include "runtime_test_support.h"
+#include "shipped_renderer.h"
 
 namespace fxport::render_test {
 namespace {
@@ -73,66 +72,13 @@ struct PassInputs {
     View3D cameraView() const { return makeView(toM4(camera.View), toM4(camera.Projection), kWidth, kHeight); }
 };
 
-// A BaseCamera with the test camera's matrices (the renderer reads View, Projection, Position).
-struct FixedCamera : TheCansinDeferredRenderer::BaseCamera {
-    explicit FixedCamera(const TestCamera& c) {
-        Position = c.Position;
-        View = c.View;
-        Projection = c.Projection;
-        FieldOfView = c.FieldOfView;
-        AspectRatio = c.AspectRatio;
-        NearPlane = c.NearPlane;
-        FarPlane = c.FarPlane;
-    }
-};
-
-// The shipped renderer and SSAO of demo/deferred at the tests' size, with the effects from hlsl/
-// and the content from the build's content/ (SSAO loads its random normals), made once.
-struct ShippedRenderer {
-    fxport::demo::ContentManager content;
-    std::unique_ptr<TheCansinDeferredRenderer::DeferredRenderer> renderer;
-    std::unique_ptr<TheCansinDeferredRenderer::SSAO> ssao;
-    explicit ShippedRenderer(GraphicsDevice& device) {
-        content.setGraphicsDevice(&device);
-        content.RootDirectory = FXPORT_CONTENT_DIR;
-        content.EffectDirectory = std::string(FXPORT_HLSL_DIR) + "/xna-deferred";
-        renderer = std::make_unique<TheCansinDeferredRenderer::DeferredRenderer>(device, content, kWidth, kHeight);
-        ssao = std::make_unique<TheCansinDeferredRenderer::SSAO>(device, content, kWidth, kHeight);
-    }
-    RenderTarget2D& gbuffer(int i) const { return *static_cast<RenderTarget2D*>(renderer->getGBuffer()[std::size_t(i)].RenderTarget); }
-    // A light volume as the renderer draws it (the content's model, part 0 of mesh 0, under the
-    // light's World only), for the reference's coverage.
-    Mesh lightVolume(const char* asset) {
-        const ModelMeshPart& part = content.Load<Model>(asset)->Meshes[0].MeshParts[0];
-        std::vector<ModelVertex> vertices(std::size_t(part.VertexBuffer->VertexCount()));
-        part.VertexBuffer->GetData(vertices.data(), vertices.size());
-        const std::vector<std::uint32_t> indices = part.IndexBuffer->GetIndices();
-        Mesh mesh;
-        for (const ModelVertex& v : vertices) {
-            MeshVertex m;
-            m.position = {double(v.Position.X), double(v.Position.Y), double(v.Position.Z)};
-            mesh.vertices.push_back(m);
-        }
-        for (int k = 0; k < part.PrimitiveCount; ++k) {
-            std::array<int, 3> t;
-            for (int c = 0; c < 3; ++c)
-                t[std::size_t(c)] = part.VertexOffset + int(indices[std::size_t(part.StartIndex + 3 * k + c)]);
-            mesh.triangles.push_back(t);
-        }
-        return mesh;
-    }
-};
-
 class DeferredPasses : public ::testing::Test {
 protected:
     static PassInputs& in() {
         static std::unique_ptr<PassInputs> inputs = std::make_unique<PassInputs>(test::testDevice());
         return *inputs;
     }
-    static ShippedRenderer& shipped() {
-        static std::unique_ptr<ShippedRenderer> r = std::make_unique<ShippedRenderer>(test::testDevice());
-        return *r;
-    }
+    static ShippedRenderer& shipped() { return shippedRenderer(test::testDevice()); }
     // The inputs' G-buffer, in the renderer's own G-buffer targets.
     static void uploadGBuffer(ShippedRenderer& r, const PassInputs& s) {
         upload(r.gbuffer(0), s.gbuffer.albedo);
@@ -213,7 +159,6 @@ protected:
         upload(owned->MakeShadowMap(), s.spotShadow);
         lights.AddLight(std::move(owned));
         FixedCamera camera(s.camera);
-        r.renderer->frustumCulling = false;  // the seed's behaviour: every light drawn
         r.renderer->MakeLightMap(device, lights, camera);
         device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
         ASSERT_EQ(r.renderer->getFrameStats().spotLightsDrawn, 1);
@@ -252,7 +197,6 @@ protected:
         for (int f = 0; f < 6; ++f) upload(shadowMap, CubeMapFace(f), s.pointShadow.faces[std::size_t(f)]);
         lights.AddLight(std::move(owned));
         FixedCamera camera(s.camera);
-        r.renderer->frustumCulling = false;
         r.renderer->MakeLightMap(device, lights, camera);
         device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
         ASSERT_EQ(r.renderer->getFrameStats().pointLightsDrawn, 1);
@@ -294,11 +238,11 @@ TEST_F(DeferredPasses, Clear) {
 
 TEST_F(DeferredPasses, GBuffer) {
     PassInputs& s = in();
-    RenderTarget2D g0(device, kWidth, kHeight, false, SurfaceFormat::Rgba64, DepthFormat::Depth24Stencil8);
-    RenderTarget2D g1(device, kWidth, kHeight, false, SurfaceFormat::Rgba64, DepthFormat::Depth24Stencil8);
-    RenderTarget2D g2(device, kWidth, kHeight, false, SurfaceFormat::Vector2, DepthFormat::Depth24Stencil8);
+    ShippedRenderer& r = shipped();
     Matrix world = Matrix::Identity;
-    clearGBuffer(device, {RenderTargetBinding(g0), RenderTargetBinding(g1), RenderTargetBinding(g2)});
+    // The renderer's ClearGBuffer binds and clears its G-buffer; the tests' mesh is drawn into it as
+    // MakeGBuffer draws a Model part (gpu_passes.h).
+    r.renderer->ClearGBuffer(device);
     makeGBuffer(device, s.sceneGpu, world, s.camera, s.albedoMap, s.normalMap, s.specularMap);
     device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
 
@@ -315,7 +259,7 @@ TEST_F(DeferredPasses, GBuffer) {
     pass.specularMap = &s.materials.specular;
     std::vector<std::vector<int>> visible = perPixel(
         kWidth, kHeight, [&](int x, int y) { return visibleCandidates(pass.worldMesh, pass.camera, Cull::CounterClockwiseFace, x, y); });
-    RenderTarget2D* targets[3] = {&g0, &g1, &g2};
+    RenderTarget2D* targets[3] = {&r.gbuffer(0), &r.gbuffer(1), &r.gbuffer(2)};
     const char* names[3] = {"GBuffer.Albedo", "GBuffer.Normals", "GBuffer.Depth"};
     for (int t = 0; t < 3; ++t) {
         RefImage ref = referenceImage(kWidth, kHeight, targets[t]->Format(), true, [&](Eval& ev, PixelPos p) {
@@ -432,9 +376,7 @@ TEST_F(DeferredPasses, Ssao) {
     device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
     RenderTarget2D& target = r.ssao->getSSAOTarget();
     // SSAO samples the content's random normals (RandomNormals.png, no mip levels): the reference reads the same texels.
-    const Texture2D& randomNormalsGpu = *r.content.Load<Texture2D>("RandomNormals");
-    ASSERT_EQ(randomNormalsGpu.LevelCount(), 1);
-    const CpuTexture randomNormals = readBack(randomNormalsGpu);
+    const CpuTexture randomNormals = r.randomNormals();
     SsaoParams q;
     q.projection = toM4(s.camera.Projection);
     float cy = float(std::tan(double(s.camera.FieldOfView) / 2.0)) * s.camera.FarPlane;
