@@ -1,4 +1,4 @@
-// CPU textures and Direct3D 9 texture sampling for the references of tests/render.
+// CPU textures and Direct3D 9 texture sampling for the CPU references (reference/): the render tests, the demos' --check, quality/.
 //
 // D3D9's rules, as the effects were written against them (not the runtime's code):
 //  * texel (i, j) covers u in [i/W, (i+1)/W), v in [j/H, (j+1)/H); row 0 is the top row;

@@ -158,25 +158,34 @@ GpuImage GpuImage::fromRgba8(const unsigned char* rgba, int width, int height) {
     return g;
 }
 
-ShiftCheck shiftCheck(const RefImage& ref, const GpuImage& gpu, double changeThreshold, const std::vector<char>* mask) {
-    ShiftCheck k;
+namespace {
+
+// Every sample (x, y, channel, index) of the pixels in `mask` (null: all), row by row.
+template <class F>
+void forEachSample(const RefImage& ref, const std::vector<char>* mask, F f) {
     for (int y = 0; y < ref.height; ++y)
         for (int x = 0; x < ref.width; ++x) {
             if (mask && !(*mask)[std::size_t(y) * std::size_t(ref.width) + std::size_t(x)]) continue;
-            for (int c = 0; c < ref.channels; ++c) {
-                const std::size_t i = ref.index(x, y, c);
-                const double g = gpu.at(x, y, c);
-                if (g < ref.lo[i] || g > ref.hi[i]) continue;
-                for (int s = 0; s < 2; ++s) {
-                    const int sx = s == 0 ? x - 1 : x, sy = s == 0 ? y : y - 1;
-                    if (sx < 0 || sy < 0) continue;
-                    const double shifted = gpu.at(sx, sy, c);
-                    if (std::fabs(shifted - g) <= changeThreshold) continue;
-                    ++k.changed[s];
-                    if (shifted < ref.lo[i] || shifted > ref.hi[i]) ++k.shiftedFails[s];
-                }
-            }
+            for (int c = 0; c < ref.channels; ++c) f(x, y, c, ref.index(x, y, c));
         }
+}
+
+}  // namespace
+
+ShiftCheck shiftCheck(const RefImage& ref, const GpuImage& gpu, double changeThreshold, const std::vector<char>* mask) {
+    ShiftCheck k;
+    forEachSample(ref, mask, [&](int x, int y, int c, std::size_t i) {
+        const double g = gpu.at(x, y, c);
+        if (g < ref.lo[i] || g > ref.hi[i]) return;
+        for (int s = 0; s < 2; ++s) {
+            const int sx = s == 0 ? x - 1 : x, sy = s == 0 ? y : y - 1;
+            if (sx < 0 || sy < 0) continue;
+            const double shifted = gpu.at(sx, sy, c);
+            if (std::fabs(shifted - g) <= changeThreshold) continue;
+            ++k.changed[s];
+            if (shifted < ref.lo[i] || shifted > ref.hi[i]) ++k.shiftedFails[s];
+        }
+    });
     return k;
 }
 
@@ -199,21 +208,16 @@ bool checkImage(const char* name, const char* bound, const RefImage& ref, const 
     long samples = 0, fails = 0;
     double maxExcess = 0, widthSum = 0;
     int wx = 0, wy = 0, wc = 0;
-    for (int y = 0; y < ref.height; ++y)
-        for (int x = 0; x < ref.width; ++x) {
-            if (mask && !(*mask)[std::size_t(y) * std::size_t(ref.width) + std::size_t(x)]) continue;
-            for (int c = 0; c < ref.channels; ++c) {
-                const std::size_t i = ref.index(x, y, c);
-                const double g = gpu.at(x, y, c);
-                const double excess = std::max(ref.lo[i] - g, g - ref.hi[i]);
-                ++samples;
-                widthSum += ref.hi[i] - ref.lo[i];
-                if (excess > 0) {
-                    ++fails;
-                    if (excess > maxExcess) maxExcess = excess, wx = x, wy = y, wc = c;
-                }
-            }
+    forEachSample(ref, mask, [&](int x, int y, int c, std::size_t i) {
+        const double g = gpu.at(x, y, c);
+        const double excess = std::max(ref.lo[i] - g, g - ref.hi[i]);
+        ++samples;
+        widthSum += ref.hi[i] - ref.lo[i];
+        if (excess > 0) {
+            ++fails;
+            if (excess > maxExcess) maxExcess = excess, wx = x, wy = y, wc = c;
         }
+    });
     std::printf("  %-34s %ld of %ld samples outside (max by %.3g); mean interval width %.3g; bound: %s\n", name, fails,
                 samples, maxExcess, samples ? widthSum / double(samples) : 0.0, bound);
     if (fails) {

@@ -1,4 +1,4 @@
-// Double-precision vector and matrix math for the CPU references of tests/render, with HLSL's
+// Double-precision vector and matrix math for the CPU references (reference/), with HLSL's
 // meaning: row vectors, mul(v, M) = sum_i v[i] * M[i][*] (XNA's layout, M[0] = M11..M14), frac,
 // lerp, saturate, reflect as the HLSL intrinsics define them. Independent of fxport's float math:
 // matrices that the runtime receives are converted once (toM4 in render_harness.h) and used here

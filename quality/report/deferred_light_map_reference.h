@@ -8,7 +8,7 @@
 //    (GBufferFormats::Float32): the reference then starts from float32 positions, normals and
 //    specular terms, not from a CPU rasterisation of the scene (normal and specular maps included);
 //    what differs between settings is the G-buffer format, the shadow maps and the render size.
-//  * Unshadowed lighting per pass: tests/render's double-precision pass references
+//  * Unshadowed lighting per pass: reference/'s double-precision pass references
 //    (deferred_reference.h: directionalLightPixel, spotLightPixel, pointLightPixel with Shadows off,
 //    the tutorial's quirks included -- the G-buffer read one texel up-left, the directional light's
 //    Position.y = -(UV.x * 2 - 1), the spot cone test SL <= LightAngleCos), each pixel on its

@@ -5,26 +5,24 @@
 // Bounds: render_harness.h; the per-pixel slack: reference_eval.h. Each test prints its max / RMS
 // error ("[render] ..." lines) and records them as test properties.
 //
-// The light and composition passes run in the shipped code itself: the demo's DeferredRenderer
+// The passes run in the shipped code itself wherever it can: the demo's DeferredRenderer
 // (ClearGBuffer; MakeLightMap with one directional, spot or point light of the demo's Lights
 // classes, their shadow maps and the cookie uploaded, the volumes the content's models; MakeFinal)
-// and SSAO (BlurSSAO, Compose), one pass at a time on inputs uploaded into their targets. The
-// passes that draw the tests' own meshes (GBuffer, the DepthWriter shadow maps: the shipped code
-// draws only glTF Models) and RenderSSAO (the shipped SSAO samples the content's mipmapped random
-// normals) still go through gpu_passes.h, a copy of the demo's code for those meshes.
+// and SSAO (RenderSSAO with the content's random normals, BlurSSAO, Compose), one pass at a time on
+// inputs uploaded into their targets. The passes that draw the tests' own meshes (GBuffer, the
+// DepthWriter shadow maps: the shipped code draws only glTF Models) still go through gpu_passes.h,
+// a copy of the demo's code for those meshes.
 #include <gtest/gtest.h>
 
 #include <memory>
 
 #include "deferred/Lights/light_manager.h"
-#include "fxport/framework/content_manager.h"
-#include "deferred/deferred_renderer.h"
-#include "deferred/ssao.h"
 #include "reference/deferred_reference.h"
 #include "deferred_scene.h"
 #include "gpu_passes.h"
 #include "render_harness.h"
 #include "runtime_test_support.h"
+#include "shipped_renderer.h"
 
 namespace fxport::render_test {
 namespace {
@@ -47,88 +45,31 @@ struct PassInputs {
     Materials materials = makeMaterials();
     Texture2D albedoMap, normalMap, specularMap;
     GBufferImages gbuffer;
-    Texture2D gbuffer0, gbuffer1, gbuffer2;
     DirectionalLightSetup directional{Vector3(0.3f, -1.0f, -0.4f), Vector4(1.0f, 0.85f, 0.7f, 1.0f), 0.9f};
     SpotLightSetup spot = makeSpotLight(Vector3(0, 6, 0.5f), Vector3(0.15f, -1, 0.45f), Vector4(1, 0.95f, 0.8f, 1), 0.9f, true, 64);
     CpuTexture spotShadow, cookie;
     Texture2D cookieGpu;
     PointLightSetup point{Vector3(0.5f, 3, 1), 20, Vector4(0.9f, 0.95f, 1, 1), 0.8f, true, 32};
     CpuCube pointShadow;
-    CpuTexture randomNormals, lightMap, ssao, sceneImage;
-    Texture2D randomNormalsGpu;
+    CpuTexture lightMap, ssao, sceneImage;
 
     explicit PassInputs(GraphicsDevice& d)
         : device(d), camera(makeCamera(Vector3(0, 9, 17), Vector3(0, 1.5f, 0), kWidth, kHeight)),
           albedoMap(d, 16, 16, false, SurfaceFormat::Color), normalMap(d, 16, 16, false, SurfaceFormat::Color),
           specularMap(d, 16, 16, false, SurfaceFormat::Color), gbuffer(makeSyntheticGBuffer(scene, camera, kWidth, kHeight)),
-          gbuffer0(d, kWidth, kHeight, false, SurfaceFormat::Rgba64), gbuffer1(d, kWidth, kHeight, false, SurfaceFormat::Rgba64),
-          gbuffer2(d, kWidth, kHeight, false, SurfaceFormat::Vector2), spotShadow(makeSpotShadowMap(scene, spot)),
+          spotShadow(makeSpotShadowMap(scene, spot)),
           cookie(makeSpotCookie(32)), cookieGpu(d, 32, 32, false, SurfaceFormat::Color),
-          pointShadow(makePointShadowCube(scene, point)), randomNormals(makeRandomNormals(16)),
+          pointShadow(makePointShadowCube(scene, point)),
           lightMap(makeLightMapImage(kWidth, kHeight)), ssao(makeSsaoImage(kWidth, kHeight)),
-          sceneImage(makeSceneImage(kWidth, kHeight)), randomNormalsGpu(d, 16, 16, false, SurfaceFormat::Color) {
+          sceneImage(makeSceneImage(kWidth, kHeight)) {
         upload(albedoMap, materials.albedo);
         upload(normalMap, materials.normal);
         upload(specularMap, materials.specular);
-        upload(gbuffer0, gbuffer.albedo);
-        upload(gbuffer1, gbuffer.normals);
-        upload(gbuffer2, gbuffer.depth);
         upload(cookieGpu, cookie);
-        upload(randomNormalsGpu, randomNormals);
     }
 
     GBufferTextures gbufferTextures() const { return {&gbuffer.albedo, &gbuffer.normals, &gbuffer.depth}; }
     View3D cameraView() const { return makeView(toM4(camera.View), toM4(camera.Projection), kWidth, kHeight); }
-};
-
-// A BaseCamera with the test camera's matrices (the renderer reads View, Projection, Position).
-struct FixedCamera : TheCansinDeferredRenderer::BaseCamera {
-    explicit FixedCamera(const TestCamera& c) {
-        Position = c.Position;
-        View = c.View;
-        Projection = c.Projection;
-        FieldOfView = c.FieldOfView;
-        AspectRatio = c.AspectRatio;
-        NearPlane = c.NearPlane;
-        FarPlane = c.FarPlane;
-    }
-};
-
-// The shipped renderer and SSAO of demo/deferred at the tests' size, with the effects from hlsl/
-// and the content from the build's content/ (SSAO loads its random normals), made once.
-struct ShippedRenderer {
-    fxport::ContentManager content;
-    std::unique_ptr<TheCansinDeferredRenderer::DeferredRenderer> renderer;
-    std::unique_ptr<TheCansinDeferredRenderer::SSAO> ssao;
-    explicit ShippedRenderer(GraphicsDevice& device) {
-        content.setGraphicsDevice(&device);
-        content.RootDirectory = FXPORT_CONTENT_DIR;
-        content.EffectDirectory = std::string(FXPORT_HLSL_DIR) + "/xna-deferred";
-        renderer = std::make_unique<TheCansinDeferredRenderer::DeferredRenderer>(device, content, kWidth, kHeight);
-        ssao = std::make_unique<TheCansinDeferredRenderer::SSAO>(device, content, kWidth, kHeight);
-    }
-    RenderTarget2D& gbuffer(int i) const { return *static_cast<RenderTarget2D*>(renderer->getGBuffer()[std::size_t(i)].RenderTarget); }
-    // A light volume as the renderer draws it (the content's model, part 0 of mesh 0, under the
-    // light's World only), for the reference's coverage.
-    Mesh lightVolume(const char* asset) {
-        const ModelMeshPart& part = content.Load<Model>(asset)->Meshes[0].MeshParts[0];
-        std::vector<ModelVertex> vertices(std::size_t(part.VertexBuffer->VertexCount()));
-        part.VertexBuffer->GetData(vertices.data(), vertices.size());
-        const std::vector<std::uint32_t> indices = part.IndexBuffer->GetIndices();
-        Mesh mesh;
-        for (const ModelVertex& v : vertices) {
-            MeshVertex m;
-            m.position = {double(v.Position.X), double(v.Position.Y), double(v.Position.Z)};
-            mesh.vertices.push_back(m);
-        }
-        for (int k = 0; k < part.PrimitiveCount; ++k) {
-            std::array<int, 3> t;
-            for (int c = 0; c < 3; ++c)
-                t[std::size_t(c)] = part.VertexOffset + int(indices[std::size_t(part.StartIndex + 3 * k + c)]);
-            mesh.triangles.push_back(t);
-        }
-        return mesh;
-    }
 };
 
 class DeferredPasses : public ::testing::Test {
@@ -137,10 +78,7 @@ protected:
         static std::unique_ptr<PassInputs> inputs = std::make_unique<PassInputs>(test::testDevice());
         return *inputs;
     }
-    static ShippedRenderer& shipped() {
-        static std::unique_ptr<ShippedRenderer> r = std::make_unique<ShippedRenderer>(test::testDevice());
-        return *r;
-    }
+    static ShippedRenderer& shipped() { return shippedRenderer(test::testDevice()); }
     // The inputs' G-buffer, in the renderer's own G-buffer targets.
     static void uploadGBuffer(ShippedRenderer& r, const PassInputs& s) {
         upload(r.gbuffer(0), s.gbuffer.albedo);
@@ -221,7 +159,6 @@ protected:
         upload(owned->MakeShadowMap(), s.spotShadow);
         lights.AddLight(std::move(owned));
         FixedCamera camera(s.camera);
-        r.renderer->frustumCulling = false;  // the seed's behaviour: every light drawn
         r.renderer->MakeLightMap(device, lights, camera);
         device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
         ASSERT_EQ(r.renderer->getFrameStats().spotLightsDrawn, 1);
@@ -260,7 +197,6 @@ protected:
         for (int f = 0; f < 6; ++f) upload(shadowMap, CubeMapFace(f), s.pointShadow.faces[std::size_t(f)]);
         lights.AddLight(std::move(owned));
         FixedCamera camera(s.camera);
-        r.renderer->frustumCulling = false;
         r.renderer->MakeLightMap(device, lights, camera);
         device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
         ASSERT_EQ(r.renderer->getFrameStats().pointLightsDrawn, 1);
@@ -302,11 +238,11 @@ TEST_F(DeferredPasses, Clear) {
 
 TEST_F(DeferredPasses, GBuffer) {
     PassInputs& s = in();
-    RenderTarget2D g0(device, kWidth, kHeight, false, SurfaceFormat::Rgba64, DepthFormat::Depth24Stencil8);
-    RenderTarget2D g1(device, kWidth, kHeight, false, SurfaceFormat::Rgba64, DepthFormat::Depth24Stencil8);
-    RenderTarget2D g2(device, kWidth, kHeight, false, SurfaceFormat::Vector2, DepthFormat::Depth24Stencil8);
+    ShippedRenderer& r = shipped();
     Matrix world = Matrix::Identity;
-    clearGBuffer(device, {RenderTargetBinding(g0), RenderTargetBinding(g1), RenderTargetBinding(g2)});
+    // The renderer's ClearGBuffer binds and clears its G-buffer; the tests' mesh is drawn into it as
+    // MakeGBuffer draws a Model part (gpu_passes.h).
+    r.renderer->ClearGBuffer(device);
     makeGBuffer(device, s.sceneGpu, world, s.camera, s.albedoMap, s.normalMap, s.specularMap);
     device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
 
@@ -323,7 +259,7 @@ TEST_F(DeferredPasses, GBuffer) {
     pass.specularMap = &s.materials.specular;
     std::vector<std::vector<int>> visible = perPixel(
         kWidth, kHeight, [&](int x, int y) { return visibleCandidates(pass.worldMesh, pass.camera, Cull::CounterClockwiseFace, x, y); });
-    RenderTarget2D* targets[3] = {&g0, &g1, &g2};
+    RenderTarget2D* targets[3] = {&r.gbuffer(0), &r.gbuffer(1), &r.gbuffer(2)};
     const char* names[3] = {"GBuffer.Albedo", "GBuffer.Normals", "GBuffer.Depth"};
     for (int t = 0; t < 3; ++t) {
         RefImage ref = referenceImage(kWidth, kHeight, targets[t]->Format(), true, [&](Eval& ev, PixelPos p) {
@@ -430,10 +366,17 @@ TEST_F(DeferredPasses, Composition) {
 
 TEST_F(DeferredPasses, Ssao) {
     PassInputs& s = in();
+    ShippedRenderer& r = shipped();
+    uploadGBuffer(r, s);
     const float sampleRadius = 0.25f, distanceScale = 3.0f;  // fxdemo's starting values
-    RenderTarget2D target(device, kWidth, kHeight, false, SurfaceFormat::Color, DepthFormat::None);
-    renderSsao(device, target, s.gbuffer1, s.gbuffer2, s.randomNormalsGpu, s.camera, sampleRadius, distanceScale);
+    r.ssao->setSampleRadius(sampleRadius);
+    r.ssao->setDistanceScale(distanceScale);
+    FixedCamera camera(s.camera);
+    r.ssao->RenderSSAO(device, r.renderer->getGBuffer(), camera);
     device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+    RenderTarget2D& target = r.ssao->getSSAOTarget();
+    // SSAO samples the content's random normals (RandomNormals.png, no mip levels): the reference reads the same texels.
+    const CpuTexture randomNormals = r.randomNormals();
     SsaoParams q;
     q.projection = toM4(s.camera.Projection);
     float cy = float(std::tan(double(s.camera.FieldOfView) / 2.0)) * s.camera.FarPlane;
@@ -442,7 +385,7 @@ TEST_F(DeferredPasses, Ssao) {
     q.distanceScale = distanceScale;
     q.gbufferTextureSize = {kWidth, kHeight};
     RefImage ref = referenceImage(kWidth, kHeight, SurfaceFormat::Color, false, [&](Eval& ev, PixelPos p) {
-        return ssaoPixel(ev, s.gbuffer.normals, s.gbuffer.depth, s.randomNormals, q, p);
+        return ssaoPixel(ev, s.gbuffer.normals, s.gbuffer.depth, randomNormals, q, p);
     });
     check("SSAO", readBack(target), ref);
 }
@@ -452,7 +395,8 @@ TEST_F(DeferredPasses, SsaoBlur) {
     ShippedRenderer& r = shipped();
     upload(r.ssao->getSSAOTarget(), s.ssao);
     // BlurSSAO relies on RenderSSAO having set Textures[1] = GBuffer 1 (LinearClamp).
-    device.Textures[1] = &s.gbuffer1;
+    uploadGBuffer(r, s);
+    device.Textures[1] = &r.gbuffer(1);
     device.SamplerStates[1] = SamplerState::LinearClamp;
     r.ssao->BlurSSAO(device);
     RenderTarget2D& target = r.ssao->getBlurTarget();

@@ -1,7 +1,12 @@
 // The whole deferred frame end to end, as demo/deferred draws it (Game1.Draw with SSAO): shadow
 // maps -> clear G-buffer -> G-buffer -> light map (directional + spot with cookie and shadows +
 // point with cube shadows) -> composition -> SSAO -> blur -> final, with the final chapter's light
-// setup (at the tests' small sizes), rendered headless at 96x64.
+// setup (at the tests' small sizes), rendered headless at 96x64. The shipped DeferredRenderer and
+// SSAO (shipped_renderer.h) run every stage but two: the G-buffer and the shadow maps draw the
+// tests' scene mesh, which the shipped code (it draws glTF Models) cannot, so gpu_passes.h draws
+// them -- into the renderer's own G-buffer and the demo lights' own shadow maps -- and RenderSSAO
+// runs with the tests' random normals (gpu_passes.h says why). The light volumes are the content's
+// models, as the demo has them.
 //
 // Two comparisons per stage:
 //  * "E2E.<stage>": the reference composed from the per-pass references -- each reference stage
@@ -21,6 +26,7 @@
 #include "gpu_passes.h"
 #include "render_harness.h"
 #include "runtime_test_support.h"
+#include "shipped_renderer.h"
 
 namespace fxport::render_test {
 namespace {
@@ -47,12 +53,14 @@ Range4 operator+(const Range4& a, const Range4& b) { return {a.lo + b.lo, a.hi +
 // The frame's fixed inputs (Game1.LoadContent's lights, fxdemo's camera and SSAO values) and the
 // reference of every stage as a function of that stage's input textures.
 struct Frame {
+    explicit Frame(ShippedRenderer& shipped)
+        : cone(shipped.lightVolume("SpotLightGeometry")), sphere(shipped.lightVolume("PointLightGeometry")) {}
     TestCamera camera = makeCamera(Vector3(0, 9, 17), Vector3(0, 1.5f, 0), W, H);
     DirectionalLightSetup directional{Vector3::Down, Color::White.ToVector4(), 0.05f};
     SpotLightSetup spot = makeSpotLight(Vector3(0, 15, 0), Vector3(0, -1, 0), Color::White.ToVector4(), 0.10f, true, 64);
     PointLightSetup point{Vector3(0, 5, 0), 20, Color::White.ToVector4(), 0.80f, true, 32};
     float sampleRadius = 0.25f, distanceScale = 3.0f;
-    Mesh scene = testSceneMesh(), cone = spotLightGeometry(), sphere = pointLightGeometry();
+    Mesh scene = testSceneMesh(), cone, sphere;  // the light volumes: the content's models
     Materials materials = makeMaterials();
     CpuTexture cookie = makeSpotCookie(32), randomNormals = makeRandomNormals(16);
     View3D cameraView = makeView(toM4(camera.View), toM4(camera.Projection), W, H);
@@ -196,9 +204,10 @@ struct GpuFrame {
     CpuTexture gbuffer[3], lightMap, scene, ssao, blur, final;
 };
 
-GpuFrame renderFrame(GraphicsDevice& device, const Frame& f) {
-    const Vector2 size{float(W), float(H)};
-    GpuMesh sceneGpu = toGpu(f.scene), coneGpu = toGpu(f.cone), sphereGpu = toGpu(f.sphere);
+GpuFrame renderFrame(GraphicsDevice& device, Frame& f) {
+    using namespace TheCansinDeferredRenderer;
+    ShippedRenderer& r = shippedRenderer(device);
+    GpuMesh sceneGpu = toGpu(f.scene);
     Texture2D albedoMap(device, 16, 16, false, SurfaceFormat::Color), normalMap(device, 16, 16, false, SurfaceFormat::Color),
         specularMap(device, 16, 16, false, SurfaceFormat::Color), cookie(device, 32, 32, false, SurfaceFormat::Color),
         randomNormals(device, 16, 16, false, SurfaceFormat::Color);
@@ -207,46 +216,57 @@ GpuFrame renderFrame(GraphicsDevice& device, const Frame& f) {
     upload(specularMap, f.materials.specular);
     upload(cookie, f.cookie);
     upload(randomNormals, f.randomNormals);
-    RenderTarget2D spotShadow(device, 64, 64, false, SurfaceFormat::Single, DepthFormat::Depth24Stencil8);
-    RenderTargetCube pointShadow(device, 32, false, SurfaceFormat::Single, DepthFormat::Depth24Stencil8);
-    RenderTarget2D g0(device, W, H, false, SurfaceFormat::Rgba64, DepthFormat::Depth24Stencil8);
-    RenderTarget2D g1(device, W, H, false, SurfaceFormat::Rgba64, DepthFormat::Depth24Stencil8);
-    RenderTarget2D g2(device, W, H, false, SurfaceFormat::Vector2, DepthFormat::Depth24Stencil8);
-    RenderTarget2D lightMap(device, W, H, false, SurfaceFormat::Color, DepthFormat::Depth24Stencil8);
     RenderTarget2D scene(device, W, H, false, SurfaceFormat::Color, DepthFormat::Depth24Stencil8);
-    RenderTarget2D ssaoTarget(device, W, H, false, SurfaceFormat::Color, DepthFormat::None);
-    RenderTarget2D blurTarget(device, W, H, false, SurfaceFormat::Color, DepthFormat::None);
     RenderTarget2D output(device, W, H, false, SurfaceFormat::Color, DepthFormat::None);
 
-    // LightManager.DrawShadowMaps
+    // Game1.LoadContent's lights, as the demo's Lights classes; the references take their matrices.
+    Lights::LightManager lights(r.content);
+    lights.AddLight(std::make_unique<Lights::DirectionalLight>(f.directional.Direction, f.directional.Color, f.directional.Intensity));
+    auto spot = std::make_unique<Lights::SpotLight>(device, f.spot.Position, f.spot.Direction, f.spot.Color, f.spot.Intensity,
+                                                    f.spot.Shadows, f.spot.ShadowMapResolution, &cookie);
+    f.spot.View = spot->getView();
+    f.spot.Projection = spot->getProjection();
+    f.spot.World = spot->getWorld();
+    f.spot.Direction = spot->getDirection();
+    auto point = std::make_unique<Lights::PointLight>(device, f.point.Position, f.point.Radius, f.point.Color, f.point.Intensity,
+                                                      f.point.Shadows, f.point.ShadowMapResolution);
+    RenderTarget2D& spotShadow = spot->MakeShadowMap();
+    RenderTargetCube& pointShadow = point->MakeShadowMap();
+    lights.AddLight(std::move(spot));
+    lights.AddLight(std::move(point));
+    FixedCamera camera(f.camera);
+
+    // LightManager.DrawShadowMaps (the tests' mesh: gpu_passes.h), into the lights' own maps
     drawSpotShadowMap(device, spotShadow, sceneGpu, f.spot);
     drawPointShadowMap(device, pointShadow, sceneGpu, f.point);
-    // DeferredRenderer.Draw
-    clearGBuffer(device, {RenderTargetBinding(g0), RenderTargetBinding(g1), RenderTargetBinding(g2)});
+    // DeferredRenderer.Draw: its states, ClearGBuffer, the G-buffer of the tests' mesh (gpu_passes.h)
+    // into the renderer's G-buffer, MakeLightMap, MakeFinal
+    device.BlendState = BlendState::Opaque;
+    device.DepthStencilState = DepthStencilState::Default;
+    device.RasterizerState = RasterizerState::CullCounterClockwise;
+    r.renderer->ClearGBuffer(device);
     makeGBuffer(device, sceneGpu, Matrix::Identity, f.camera, albedoMap, normalMap, specularMap);
-    beginLightMap(device, lightMap, g0, g1, g2);
-    drawDirectionalLight(device, f.camera, f.directional, size);
-    drawSpotLight(device, f.camera, f.spot, cookie, spotShadow, coneGpu, size);
-    drawPointLight(device, f.camera, f.point, pointShadow, sphereGpu, size);
-    endLightMap(device);
-    composeScene(device, scene, g0, lightMap, size);
-    // SSAO.Draw
-    renderSsao(device, ssaoTarget, g1, g2, randomNormals, f.camera, f.sampleRadius, f.distanceScale);
-    blurSsao(device, blurTarget, ssaoTarget, W, H);
-    composeSsao(device, output, scene, blurTarget, W, H);
+    r.renderer->MakeLightMap(device, lights, camera);
+    r.renderer->MakeFinal(device, &scene);
+    // SSAO.Draw: RenderSSAO with the tests' random normals (gpu_passes.h says why) into SSAO's
+    // target, then the shipped BlurSSAO and Compose
+    renderSsao(device, r.ssao->getSSAOTarget(), r.gbuffer(1), r.gbuffer(2), randomNormals, f.camera, f.sampleRadius,
+               f.distanceScale);
+    r.ssao->BlurSSAO(device);
+    r.ssao->Compose(device, &scene, &output, true);
     resetDevice(device);
+    const auto& stats = r.renderer->getFrameStats();
+    EXPECT_EQ(stats.directionalLightsDrawn + stats.spotLightsDrawn + stats.pointLightsDrawn, 3);
 
     GpuFrame g;
     g.spotShadow = readBack(spotShadow);
-    g.cube.size = 32;
+    g.cube.size = pointShadow.Size();
     for (int face = 0; face < 6; ++face) g.cube.faces[std::size_t(face)] = readBack(pointShadow, CubeMapFace(face));
-    g.gbuffer[0] = readBack(g0);
-    g.gbuffer[1] = readBack(g1);
-    g.gbuffer[2] = readBack(g2);
-    g.lightMap = readBack(lightMap);
+    for (int t = 0; t < 3; ++t) g.gbuffer[t] = readBack(r.gbuffer(t));
+    g.lightMap = readBack(r.renderer->getLightMap());
     g.scene = readBack(scene);
-    g.ssao = readBack(ssaoTarget);
-    g.blur = readBack(blurTarget);
+    g.ssao = readBack(r.ssao->getSSAOTarget());
+    g.blur = readBack(r.ssao->getBlurTarget());
     g.final = readBack(output);
     return g;
 }
@@ -261,7 +281,7 @@ void check(const std::string& name, const CpuTexture& gpu, const RefImage& ref, 
 TEST(DeferredPipeline, WholeFrameMatchesComposedReference) {
     GraphicsDevice& device = test::testDevice();
     resetDevice(device);
-    Frame f;
+    Frame f(shippedRenderer(device));
     GpuFrame gpu = renderFrame(device, f);
 
     // The reference chain.
@@ -297,7 +317,7 @@ TEST(DeferredPipeline, WholeFrameMatchesComposedReference) {
 TEST(DeferredPipeline, EachStageMatchesItsReferenceOnTheFramesOwnInputs) {
     GraphicsDevice& device = test::testDevice();
     resetDevice(device);
-    Frame f;
+    Frame f(shippedRenderer(device));
     GpuFrame gpu = renderFrame(device, f);
     GBufferTextures gb{&gpu.gbuffer[0], &gpu.gbuffer[1], &gpu.gbuffer[2]};
     check("Frame.LightMap", gpu.lightMap, f.lightMap(gb, gpu.spotShadow, gpu.cube));

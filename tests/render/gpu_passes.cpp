@@ -10,28 +10,11 @@ namespace {
 
 std::string effectPath(const char* name) { return std::string(FXPORT_HLSL_DIR) + "/xna-deferred/" + name + ".fx"; }
 
-// LightMapBS: One/One/Add for colour and alpha.
-BlendState lightMapBlendState() {
-    BlendState bs;
-    bs.ColorSourceBlend = Blend::One;
-    bs.ColorDestinationBlend = Blend::One;
-    bs.ColorBlendFunction = BlendFunction::Add;
-    bs.AlphaSourceBlend = Blend::One;
-    bs.AlphaDestinationBlend = Blend::One;
-    bs.AlphaBlendFunction = BlendFunction::Add;
-    return bs;
-}
-
 }  // namespace
 
 DeferredEffects::DeferredEffects(GraphicsDevice& device)
-    : Clear(device, effectPath("Clear")), GBuffer(device, effectPath("GBuffer")), DepthWriter(device, effectPath("DepthWriter")),
-      DirectionalLight(device, effectPath("DirectionalLight")), SpotLight(device, effectPath("SpotLight")),
-      PointLight(device, effectPath("PointLight")), Compose(device, effectPath("Composition")), Ssao(device, effectPath("SSAO")),
-      SsaoBlur(device, effectPath("SSAOBlur")), SsaoFinal(device, effectPath("SSAOFinal")) {
-    for (Effect* e : {&Clear, &GBuffer, &DepthWriter, &DirectionalLight, &SpotLight, &PointLight, &Compose, &Ssao, &SsaoBlur,
-                      &SsaoFinal})
-        e->CurrentTechnique = e->Techniques[0];
+    : GBuffer(device, effectPath("GBuffer")), DepthWriter(device, effectPath("DepthWriter")), Ssao(device, effectPath("SSAO")) {
+    for (Effect* e : {&GBuffer, &DepthWriter, &Ssao}) e->CurrentTechnique = e->Techniques[0];
 }
 
 DeferredEffects& deferredEffects(GraphicsDevice& device) {
@@ -60,18 +43,6 @@ GpuMesh toGpu(const Mesh& mesh) {
 void drawMesh(GraphicsDevice& device, const GpuMesh& mesh) {
     device.DrawUserIndexedPrimitives(PrimitiveType::TriangleList, mesh.vertices.data(), 0, int(mesh.vertices.size()),
                                      mesh.indices.data(), 0, int(mesh.indices.size() / 3));
-}
-
-void clearGBuffer(GraphicsDevice& device, const std::vector<RenderTargetBinding>& gbuffer) {
-    DeferredEffects& fx = deferredEffects(device);
-    device.BlendState = BlendState::Opaque;
-    device.DepthStencilState = DepthStencilState::Default;
-    device.RasterizerState = RasterizerState::CullCounterClockwise;
-    device.DepthStencilState = DepthStencilState::DepthRead;
-    device.SetRenderTargets(gbuffer);
-    fx.Clear.CurrentTechnique->Passes[0].Apply();
-    FullscreenQuad fsq(device);
-    fsq.Draw(device);
 }
 
 void makeGBuffer(GraphicsDevice& device, const GpuMesh& scene, const Matrix& world, const TestCamera& camera,
@@ -126,122 +97,6 @@ void drawPointShadowMap(GraphicsDevice& device, RenderTargetCube& shadowMap, con
     }
 }
 
-void beginLightMap(GraphicsDevice& device, RenderTarget2D& lightMap, Texture& gbuffer0, Texture& gbuffer1, Texture& gbuffer2) {
-    device.SetRenderTarget(lightMap);
-    device.Clear(Color::Transparent);
-    device.BlendState = lightMapBlendState();
-    device.DepthStencilState = DepthStencilState::DepthRead;
-    device.Textures[0] = &gbuffer0;
-    device.SamplerStates[0] = SamplerState::LinearClamp;
-    device.Textures[1] = &gbuffer1;
-    device.SamplerStates[1] = SamplerState::LinearClamp;
-    device.Textures[2] = &gbuffer2;
-    device.SamplerStates[2] = SamplerState::PointClamp;
-    device.SamplerStates[3] = SamplerState::LinearClamp;
-    device.SamplerStates[4] = SamplerState::PointClamp;
-}
-
-void drawDirectionalLight(GraphicsDevice& device, const TestCamera& camera, const DirectionalLightSetup& light,
-                          Vector2 gbufferTextureSize) {
-    DeferredEffects& fx = deferredEffects(device);
-    Matrix inverseView = Matrix::Invert(camera.View);
-    Matrix inverseViewProjection = Matrix::Invert(camera.View * camera.Projection);
-    Effect& e = fx.DirectionalLight;
-    e.Parameters["InverseViewProjection"].SetValue(inverseViewProjection);
-    e.Parameters["inverseView"].SetValue(inverseView);
-    e.Parameters["CameraPosition"].SetValue(camera.Position);
-    e.Parameters["GBufferTextureSize"].SetValue(gbufferTextureSize);
-    FullscreenQuad fsq(device);
-    fsq.ReadyBuffers(device);
-    e.Parameters["L"].SetValue(Vector3::Normalize(light.Direction));
-    e.Parameters["LightColor"].SetValue(light.Color);
-    e.Parameters["LightIntensity"].SetValue(light.Intensity);
-    e.CurrentTechnique->Passes[0].Apply();
-    fsq.JustDraw(device);
-}
-
-void drawSpotLight(GraphicsDevice& device, const TestCamera& camera, const SpotLightSetup& light, Texture2D& cookie,
-                   Texture2D& shadowMap, const GpuMesh& cone, Vector2 gbufferTextureSize) {
-    DeferredEffects& fx = deferredEffects(device);
-    Effect& e = fx.SpotLight;
-    e.Parameters["View"].SetValue(camera.View);
-    e.Parameters["inverseView"].SetValue(Matrix::Invert(camera.View));
-    e.Parameters["Projection"].SetValue(camera.Projection);
-    e.Parameters["InverseViewProjection"].SetValue(Matrix::Invert(camera.View * camera.Projection));
-    e.Parameters["CameraPosition"].SetValue(camera.Position);
-    e.Parameters["GBufferTextureSize"].SetValue(gbufferTextureSize);
-    device.Textures[3] = &cookie;
-    device.Textures[4] = &shadowMap;
-    e.Parameters["World"].SetValue(light.World);
-    e.Parameters["LightViewProjection"].SetValue(light.View * light.Projection);
-    e.Parameters["LightPosition"].SetValue(light.Position);
-    e.Parameters["LightColor"].SetValue(light.Color);
-    e.Parameters["LightIntensity"].SetValue(light.Intensity);
-    e.Parameters["S"].SetValue(light.Direction);
-    e.Parameters["LightAngleCos"].SetValue(light.LightAngleCos());
-    e.Parameters["LightHeight"].SetValue(light.FarPlane);
-    e.Parameters["Shadows"].SetValue(light.Shadows);
-    e.Parameters["shadowMapSize"].SetValue(light.ShadowMapResolution);
-    e.Parameters["DepthPrecision"].SetValue(light.FarPlane);
-    e.Parameters["DepthBias"].SetValue(light.DepthBias);
-    Vector3 L = camera.Position - light.Position;
-    float SL = std::fabs(Vector3::Dot(L, light.Direction));
-    if (SL < light.LightAngleCos()) device.RasterizerState = RasterizerState::CullCounterClockwise;
-    else device.RasterizerState = RasterizerState::CullClockwise;
-    e.CurrentTechnique->Passes[0].Apply();
-    drawMesh(device, cone);
-}
-
-void drawPointLight(GraphicsDevice& device, const TestCamera& camera, const PointLightSetup& light,
-                    TextureCube& shadowMap, const GpuMesh& sphere, Vector2 gbufferTextureSize) {
-    DeferredEffects& fx = deferredEffects(device);
-    Effect& e = fx.PointLight;
-    e.Parameters["inverseView"].SetValue(Matrix::Invert(camera.View));
-    e.Parameters["View"].SetValue(camera.View);
-    e.Parameters["Projection"].SetValue(camera.Projection);
-    e.Parameters["InverseViewProjection"].SetValue(Matrix::Invert(camera.View * camera.Projection));
-    e.Parameters["CameraPosition"].SetValue(camera.Position);
-    e.Parameters["GBufferTextureSize"].SetValue(gbufferTextureSize);
-    device.Textures[4] = &shadowMap;
-    device.SamplerStates[4] = SamplerState::PointWrap;
-    e.Parameters["World"].SetValue(light.World());
-    e.Parameters["LightPosition"].SetValue(light.Position);
-    e.Parameters["LightRadius"].SetValue(light.Radius);
-    e.Parameters["LightColor"].SetValue(light.Color);
-    e.Parameters["LightIntensity"].SetValue(light.Intensity);
-    e.Parameters["Shadows"].SetValue(light.Shadows);
-    e.Parameters["DepthPrecision"].SetValue(light.Radius);
-    e.Parameters["DepthBias"].SetValue(light.DepthBias());
-    e.Parameters["shadowMapSize"].SetValue(light.ShadowMapResolution);
-    Vector3 diff = camera.Position - light.Position;
-    float CameraToLight = float(std::sqrt(float(Vector3::Dot(diff, diff)))) / 100.0f;
-    if (CameraToLight <= light.Radius) device.RasterizerState = RasterizerState::CullClockwise;
-    else if (CameraToLight > light.Radius) device.RasterizerState = RasterizerState::CullCounterClockwise;
-    e.CurrentTechnique->Passes[0].Apply();
-    drawMesh(device, sphere);
-}
-
-void endLightMap(GraphicsDevice& device) {
-    device.BlendState = BlendState::Opaque;
-    device.RasterizerState = RasterizerState::CullCounterClockwise;
-    device.DepthStencilState = DepthStencilState::Default;
-}
-
-void composeScene(GraphicsDevice& device, RenderTarget2D& output, Texture& gbuffer0, Texture& lightMap,
-                  Vector2 gbufferTextureSize) {
-    DeferredEffects& fx = deferredEffects(device);
-    device.SetRenderTarget(output);
-    device.Clear(Color::Transparent);
-    device.Textures[0] = &gbuffer0;
-    device.SamplerStates[0] = SamplerState::LinearClamp;
-    device.Textures[1] = &lightMap;
-    device.SamplerStates[1] = SamplerState::LinearClamp;
-    fx.Compose.Parameters["GBufferTextureSize"].SetValue(gbufferTextureSize);
-    fx.Compose.CurrentTechnique->Passes[0].Apply();
-    FullscreenQuad fsq(device);
-    fsq.Draw(device);
-}
-
 void renderSsao(GraphicsDevice& device, RenderTarget2D& target, Texture& gbuffer1, Texture& gbuffer2,
                 Texture2D& randomNormals, const TestCamera& camera, float sampleRadius, float distanceScale) {
     DeferredEffects& fx = deferredEffects(device);
@@ -267,33 +122,6 @@ void renderSsao(GraphicsDevice& device, RenderTarget2D& target, Texture& gbuffer
     e.Parameters["distanceScale"].SetValue(distanceScale);
     e.Parameters["GBufferTextureSize"].SetValue(Vector2(float(target.Width()), float(target.Height())));
     e.CurrentTechnique->Passes[0].Apply();
-    FullscreenQuad fsq(device);
-    fsq.Draw(device);
-}
-
-void blurSsao(GraphicsDevice& device, RenderTarget2D& blurTarget, Texture& ssao, int ssaoWidth, int ssaoHeight) {
-    DeferredEffects& fx = deferredEffects(device);
-    device.SetRenderTarget(blurTarget);
-    device.Clear(Color::White);
-    device.Textures[3] = &ssao;
-    device.SamplerStates[3] = SamplerState::LinearClamp;
-    fx.SsaoBlur.Parameters["blurDirection"].SetValue(Vector2(1.0f / float(ssaoWidth), 1.0f / float(ssaoHeight)));
-    fx.SsaoBlur.Parameters["targetSize"].SetValue(Vector2(float(ssaoWidth), float(ssaoHeight)));
-    fx.SsaoBlur.CurrentTechnique->Passes[0].Apply();
-    FullscreenQuad fsq(device);
-    fsq.Draw(device);
-}
-
-void composeSsao(GraphicsDevice& device, RenderTarget2D& output, Texture& scene, Texture& blurred, int ssaoWidth, int ssaoHeight) {
-    DeferredEffects& fx = deferredEffects(device);
-    device.SetRenderTarget(output);
-    device.Clear(Color::White);
-    device.Textures[0] = &scene;
-    device.SamplerStates[0] = SamplerState::LinearClamp;
-    device.Textures[1] = &blurred;
-    device.SamplerStates[1] = SamplerState::LinearClamp;
-    fx.SsaoFinal.Parameters["halfPixel"].SetValue(Vector2(1.0f / float(ssaoWidth), 1.0f / float(ssaoHeight)));
-    fx.SsaoFinal.CurrentTechnique->Passes[0].Apply();
     FullscreenQuad fsq(device);
     fsq.Draw(device);
 }

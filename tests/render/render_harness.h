@@ -1,4 +1,4 @@
-// The GPU side of the render tests and the comparison with the CPU references: converting the
+// The GPU side of the render tests (the comparison itself is reference/ref_image.h): converting the
 // runtime's float values to the references' doubles, uploading CPU textures in the demo's surface
 // formats (quantised exactly as the GPU stores them), reading targets back, evaluating a reference
 // image, comparing and reporting max / RMS error per pass.
