@@ -714,7 +714,16 @@ bool translateSamplerAssignment(const FxAssignment& a, StateContext& ctx, Sample
     if (key == "mipmaplodbias" || key == "miplodbias") return numeric(state.mipLodBias);
     if (key == "minlod") return numeric(state.minLod);
     if (key == "maxlod") return numeric(state.maxLod);
-    if (key == "srgbtexture" || key == "elementindex" || key == "dmapoffset" || key == "comparisonfunc") {
+    if (key == "comparisonfunc") {
+        auto f = r.enumeration(compareTable());
+        if (!f) {
+            r.bad(describe(ValueKind::Compare));
+            return false;
+        }
+        state.comparison = CompareFunction(*f);
+        return true;
+    }
+    if (key == "srgbtexture" || key == "elementindex" || key == "dmapoffset") {
         const Token& t = ctx.syntax.tokens[a.nameToken];
         ctx.diagnostics.push_back(ctx.map.make(Severity::Warning, diag::kIgnoredState,
                                                "sampler state '" + a.name + "' is not supported and is ignored", t.line,

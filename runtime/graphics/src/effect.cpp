@@ -377,6 +377,7 @@ void Effect::Impl::releasePrograms(GraphicsDevice::Impl& device) {
             for (const ShaderProgram*& bound : device.shaders)
                 if (bound == &p) bound = nullptr;
             device.deleteProgram(p.program);
+            if (p.alphaTestProgram) device.deleteProgram(p.alphaTestProgram);
         }
 }
 
