@@ -195,5 +195,23 @@ TEST_F(PassStateEmulation, ComparisonSamplersFilterTheComparisonsAsD3D10AndGLDef
     }
 }
 
+// --- what cannot be emulated is said once per effect, at load
+
+TEST(PassStateWarnings, TheRuntimeReportsEachDroppedStateOnceWhenTheEffectLoads) {
+    std::vector<std::string> reported;
+    EffectWarningHandler old = SetEffectWarningHandler([&](const std::string& w) { reported.push_back(w); });
+    {
+        Effect effect(testDevice(), test::runtimeFixture("../states/UnhonouredStates.fx"));
+        EXPECT_EQ(reported.size(), 10u);  // the fixture's ten dropped states
+        for (const std::string& w : reported) EXPECT_NE(w.find("UnhonouredStates.fx("), std::string::npos) << w;
+        effect.CurrentTechnique->Passes[0].Apply();  // nothing more at Apply
+        EXPECT_EQ(reported.size(), 10u);
+    }
+    std::size_t before = reported.size();
+    { Effect clean(testDevice(), test::runtimeFixture("PassStateEmulation.fx")); }
+    EXPECT_EQ(reported.size(), before);  // emulated states are not reported
+    SetEffectWarningHandler(old);
+}
+
 }  // namespace
 }  // namespace fxport

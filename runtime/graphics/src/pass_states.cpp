@@ -176,7 +176,10 @@ void applyPassStates(const PassStates& states, const Effect::Impl& e, GraphicsDe
         }
         const PassStateRow& s = *row;
         switch (s.state) {
-        case RenderState::AlphaBlendEnable: blendEnable = s.flag; blendTouched = true; break;
+        case RenderState::AlphaBlendEnable:
+            // XNA's BlendState has one enable; D3D10's BlendEnable[n > 0] is warned about by xlate.
+            if (s.index == 0) blendEnable = s.flag, blendTouched = true;
+            break;
         case RenderState::SrcBlend: blend.ColorSourceBlend = s.blend; blendTouched = true; break;
         case RenderState::DestBlend: blend.ColorDestinationBlend = s.blend; blendTouched = true; break;
         case RenderState::BlendOp: blend.ColorBlendFunction = s.function; blendTouched = true; break;

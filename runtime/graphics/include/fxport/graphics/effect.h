@@ -19,6 +19,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -214,6 +215,13 @@ struct EffectStatistics {
     std::uint64_t constantBytesUploaded = 0;  // uniform-buffer bytes sent by Apply(), in total
     std::uint64_t constantUploads = 0;        // uniform-buffer updates (buffer sub-data calls)
 };
+
+// Pass states the effect sets that fxport cannot honour (fixed-function states, AlphaToCoverage,
+// DepthClipEnable = FALSE ...; xlate's FX1303/FX1304 warnings) are reported once per effect when it
+// loads, one call per state: "file(line,col): warning FX1304: ...". The default handler writes them
+// to stderr; a host may set its own, or an empty function to silence them. Returns the old handler.
+using EffectWarningHandler = std::function<void(const std::string& warning)>;
+EffectWarningHandler SetEffectWarningHandler(EffectWarningHandler handler);
 
 class Effect : public GraphicsResource {
 public:
