@@ -294,4 +294,34 @@ TEST(BrokenInputs, CliUnknownCommandExitsTwo) {
     EXPECT_EQ(r.status, 2) << r.output;
 }
 
+// Issue 13.4: no pass state dropped without a word. Each state of the fixture that fxport cannot
+// reproduce is warned about at its file:line by the library and by `fxport check` with and without
+// --warnings; the states fxport now emulates (alpha test, sRGB write, ComparisonFunc) are not.
+TEST(UnhonouredStates, EachIsWarnedAtItsLineByDefault) {
+    const std::string fixture = "tests/fixtures/states/UnhonouredStates.fx";
+    const int dropped[] = {5, 7, 11, 12, 15, 16, 17, 30, 31, 32};
+    const int honoured[] = {8, 33, 34, 35, 36};
+    auto at = [&](int line) { return "UnhonouredStates.fx(" + std::to_string(line) + ","; };
+
+    CompileOptions options;
+    options.useCache = false;
+    std::vector<Diagnostic> diags = compileEffectFile(fixture, options).diagnostics;
+    for (int line : dropped) {
+        bool found = false;
+        for (const Diagnostic& d : diags) found |= d.location.line == line && d.dropsState() && d.severity == Severity::Warning;
+        EXPECT_TRUE(found) << "no FX1303/FX1304 warning at line " << line;
+    }
+    for (const Diagnostic& d : diags)
+        for (int line : honoured) EXPECT_NE(d.location.line, line) << d.format();
+
+    for (const char* flags : {"", " --warnings"}) {
+        SCOPED_TRACE(std::string("fxport check") + flags);
+        RunResult r = runCli("check " + quoted(fixture) + " --no-cache" + flags);
+        ASSERT_TRUE(r.exited) << r.output;
+        EXPECT_EQ(r.status, 0) << r.output;
+        for (int line : dropped) EXPECT_NE(r.output.find(at(line)), std::string::npos) << "line " << line << " not listed:\n" << r.output;
+        for (int line : honoured) EXPECT_EQ(r.output.find(at(line)), std::string::npos) << "line " << line << " listed:\n" << r.output;
+    }
+}
+
 }  // namespace

@@ -169,6 +169,7 @@ json toJson(const SamplerStateDesc& s) {
     if (s.mipLodBias) j["mipLodBias"] = *s.mipLodBias;
     if (s.minLod) j["minLod"] = *s.minLod;
     if (s.maxLod) j["maxLod"] = *s.maxLod;
+    if (s.comparison) j["comparison"] = kCompare.of(*s.comparison);
     return j;
 }
 SamplerStateDesc samplerStateFrom(const json& j) {
@@ -185,6 +186,7 @@ SamplerStateDesc samplerStateFrom(const json& j) {
     if (j.contains("mipLodBias")) s.mipLodBias = j["mipLodBias"].get<float>();
     if (j.contains("minLod")) s.minLod = j["minLod"].get<float>();
     if (j.contains("maxLod")) s.maxLod = j["maxLod"].get<float>();
+    if (j.contains("comparison")) s.comparison = kCompare.parse(j["comparison"]);
     return s;
 }
 

@@ -272,6 +272,8 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
             }
         }
         for (const auto& a : s.states) translateSamplerAssignment(a, stateContext, es.state, es.textureParameter);
+        // A comparison sampler compares even without ComparisonFunc (D3D10's default is NEVER).
+        if (iequals(s.type, "SamplerComparisonState") && !es.state.comparison) es.state.comparison = CompareFunction::Never;
         out.samplers.push_back(std::move(es));
     }
     std::set<int> usedTextureUnits;

@@ -34,6 +34,13 @@ std::string normalizeEnumName(std::string_view raw) {
     return out;
 }
 
+// A state (or value) the runtime cannot reproduce: accepted, ignored, and said so at file:line.
+void warnUnhonoured(StateContext& ctx, const FxAssignment& a, const std::string& why) {
+    const Token& t = ctx.syntax.tokens[a.nameToken];
+    ctx.diagnostics.push_back(ctx.map.make(Severity::Warning, diag::kUnhonouredState, "state '" + a.name + "' " + why,
+                                           t.line, t.column, t.text));
+}
+
 struct EnumTable {
     std::map<std::string, int> names;  // normalised name -> value
     std::map<int, int> d3d9Codes;      // numeric D3D9 code -> value
@@ -411,11 +418,20 @@ bool expandDx10Object(const FxStateObject* object, const std::string& type, Stat
     };
 
     if (iequals(type, "BlendState")) {
+        double firstEnable = 0;
         for (int i = 0; i < 8; ++i) {
             std::string idx = "[" + std::to_string(i) + "]";
             bool any = fields.count("blendenable" + idx) || fields.count("rendertargetwritemask" + idx) || i == 0;
             if (!any) continue;
-            push(out, RenderState::AlphaBlendEnable, get("blendenable" + idx, ValueKind::Bool, 0), where, i);
+            const FxAssignment* enable = fields.count("blendenable" + idx) ? fields["blendenable" + idx] : nullptr;
+            double enabled = get("blendenable" + idx, ValueKind::Bool, 0);
+            if (i == 0) firstEnable = enabled;
+            else if (enable && enabled != firstEnable)
+                warnUnhonoured(ctx, *enable, "is not honoured: render target " + std::to_string(i) +
+                                                 " blends as target 0 does (XNA's BlendState has one blend enable)");
+            if (i >= 4 && fields.count("rendertargetwritemask" + idx))
+                warnUnhonoured(ctx, *fields["rendertargetwritemask" + idx], "is not honoured: XNA has four render targets");
+            push(out, RenderState::AlphaBlendEnable, enabled, where, i);
             auto mask = fields.find("rendertargetwritemask" + idx);
             double m = 15;
             if (mask != fields.end()) {
@@ -436,7 +452,11 @@ bool expandDx10Object(const FxStateObject* object, const std::string& type, Stat
         push(out, RenderState::SrcBlendAlpha, get("srcblendalpha", ValueKind::Blend, int(Blend::One)), where);
         push(out, RenderState::DestBlendAlpha, get("destblendalpha", ValueKind::Blend, int(Blend::Zero)), where);
         push(out, RenderState::BlendOpAlpha, get("blendopalpha", ValueKind::BlendOp, int(BlendFunction::Add)), where);
-        fields.erase("alphatocoverageenable");
+        if (auto it = fields.find("alphatocoverageenable"); it != fields.end()) {
+            if (ValueReader{ctx, *it->second}.boolean().value_or(true))
+                warnUnhonoured(ctx, *it->second, "is not honoured: alpha-to-coverage is not implemented (XNA's BlendState has none)");
+            fields.erase(it);
+        }
     } else if (iequals(type, "DepthStencilState")) {
         push(out, RenderState::ZEnable, get("depthenable", ValueKind::Bool, 1), where);
         push(out, RenderState::ZWriteEnable, get("depthwritemask", ValueKind::Bool, 1), where);
@@ -472,11 +492,23 @@ bool expandDx10Object(const FxStateObject* object, const std::string& type, Stat
         push(out, RenderState::FillMode, fillValue, where);
         push(out, RenderState::DepthBias, get("depthbias", ValueKind::Float, 0), where);
         push(out, RenderState::SlopeScaleDepthBias, get("slopescaleddepthbias", ValueKind::Float, 0), where);
-        push(out, RenderState::DepthClipEnable, get("depthclipenable", ValueKind::Bool, 1), where);
+        const FxAssignment* depthClip = fields.count("depthclipenable") ? fields["depthclipenable"] : nullptr;
+        double clip = get("depthclipenable", ValueKind::Bool, 1);
+        if (depthClip && clip == 0)
+            warnUnhonoured(ctx, *depthClip, "= FALSE is not honoured: geometry is clipped at the near and far planes");
+        push(out, RenderState::DepthClipEnable, clip, where);
         push(out, RenderState::ScissorTestEnable, get("scissorenable", ValueKind::Bool, 0), where);
         push(out, RenderState::MultiSampleAntiAlias, get("multisampleenable", ValueKind::Bool, 0), where);
-        fields.erase("antialiasedlineenable");
-        fields.erase("depthbiasclamp");
+        if (auto it = fields.find("antialiasedlineenable"); it != fields.end()) {
+            if (ValueReader{ctx, *it->second}.boolean().value_or(true))
+                warnUnhonoured(ctx, *it->second, "is not honoured: lines are drawn without antialiasing");
+            fields.erase(it);
+        }
+        if (auto it = fields.find("depthbiasclamp"); it != fields.end()) {
+            if (ValueReader{ctx, *it->second}.number().value_or(1) != 0)
+                warnUnhonoured(ctx, *it->second, "is not honoured: the depth bias is not clamped");
+            fields.erase(it);
+        }
     }
     for (const auto& [key, assignment] : fields) {  // whatever is left was not understood
         const Token& t = ctx.syntax.tokens[assignment->nameToken];
@@ -605,6 +637,12 @@ StateResult translatePassAssignment(const FxAssignment& a, StateContext& ctx, st
         s.value = std::array<float, 4>{float(raw[0]), float(raw[1]), float(raw[2]), float(raw[3])};
     else
         s.value = stateValueFromCanonical(s.state, raw[0]);
+    if (s.state == RenderState::FillMode && std::get<FillMode>(s.value) == FillMode::Point)
+        warnUnhonoured(ctx, a, "= Point is not honoured: drawn as WireFrame (XNA's FillMode has no point mode)");
+    if (s.state == RenderState::ZEnable && r.single() && normalizeEnumName(*r.single()) == "usew")
+        warnUnhonoured(ctx, a, "= USEW is not honoured: w-buffering is not available, the z-buffer is used");
+    if (s.state == RenderState::ColorWriteEnable && s.index > 3)
+        warnUnhonoured(ctx, a, "is not honoured: XNA has four render targets");
     out.push_back(s);
     return StateResult::Applied;
 }
@@ -713,9 +751,23 @@ bool translateSamplerAssignment(const FxAssignment& a, StateContext& ctx, Sample
     if (key == "maxanisotropy") return numeric(state.maxAnisotropy);
     if (key == "maxmiplevel") return numeric(state.maxMipLevel);
     if (key == "mipmaplodbias" || key == "miplodbias") return numeric(state.mipLodBias);
-    if (key == "minlod") return numeric(state.minLod);
-    if (key == "maxlod") return numeric(state.maxLod);
-    if (key == "srgbtexture" || key == "elementindex" || key == "dmapoffset" || key == "comparisonfunc") {
+    if (key == "minlod" || key == "maxlod") {
+        bool ok = numeric(key == "minlod" ? state.minLod : state.maxLod);
+        // The defaults (0 and FLT_MAX) restrict nothing; a narrower mip range is not reproduced.
+        if (ok && ((state.minLod && *state.minLod > 0) || (state.maxLod && *state.maxLod < 1000)))
+            warnUnhonoured(ctx, a, "is not honoured: SamplerState has no mip-level range (MaxMipLevel is XNA's only limit)");
+        return ok;
+    }
+    if (key == "comparisonfunc") {
+        auto f = r.enumeration(compareTable());
+        if (!f) {
+            r.bad(describe(ValueKind::Compare));
+            return false;
+        }
+        state.comparison = CompareFunction(*f);
+        return true;
+    }
+    if (key == "srgbtexture" || key == "elementindex" || key == "dmapoffset") {
         const Token& t = ctx.syntax.tokens[a.nameToken];
         ctx.diagnostics.push_back(ctx.map.make(Severity::Warning, diag::kIgnoredState,
                                                "sampler state '" + a.name + "' is not supported and is ignored", t.line,

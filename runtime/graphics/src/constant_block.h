@@ -86,12 +86,22 @@ struct ConstantBlock {
     template <class Value, class Wanted>
     void store(const xlate::Parameter& p, int elements, Value&& value, Wanted&& wanted) {
         int lo = INT_MAX, hi = 0;
-        forEachScalar(p, elements, [&](const Scalar& s) {
-            if (!wanted(s)) return;
-            encode(p, s.offset, value(s));
-            lo = std::min(lo, s.offset);
-            hi = std::max(hi, s.offset + 4);
-        });
+        auto each = [&](auto&& write) {
+            forEachScalar(p, elements, [&](const Scalar& s) {
+                if (!wanted(s)) return;
+                write(s);
+                lo = std::min(lo, s.offset);
+                hi = std::max(hi, s.offset + 4);
+            });
+        };
+        if (p.type == xlate::ParameterType::Float) {  // the common case (matrices, float vectors): plain stores
+            each([&](const Scalar& s) {
+                float f = float(value(s));
+                std::memcpy(&bytes[std::size_t(s.offset)], &f, 4);
+            });
+        } else {
+            each([&](const Scalar& s) { encode(p, s.offset, value(s)); });
+        }
         if (hi > lo) markDirty(lo, hi);
     }
     template <class Value>

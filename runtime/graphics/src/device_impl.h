@@ -38,6 +38,21 @@ struct ShaderProgram {
     int stage = 0;                              // 0 vertex, 1 pixel, 2 geometry
     const xlate::CompiledShader* shader = nullptr;  // owned by the effect
     std::string label;                          // "GBuffer.fx: VertexShaderFunction (vs_2_0)"
+    // Pixel shaders: the D3D9 alpha-test variant (xlate::alphaTestVariant), made at the first draw
+    // that needs it; a cache on a record the device otherwise only reads, hence mutable.
+    mutable GLuint alphaTestProgram = 0;
+    mutable GLint alphaFuncLocation = -1, alphaRefLocation = -1;
+    mutable bool alphaTestUnavailable = false;  // the shader writes no colour to test
+};
+
+// D3D9 render states GL core lacks, as the last EffectPass::Apply() set them (off unless its pass
+// says otherwise).
+struct PassEmulation {
+    bool alphaTest = false;
+    int alphaFunction = 8;      // D3DCMPFUNC code (8 = ALWAYS)
+    float alphaReference = 0;   // (AlphaRef & 0xFF) / 255
+    bool srgbWrite = false;     // GL_FRAMEBUFFER_SRGB
+    bool operator==(const PassEmulation&) const = default;
 };
 
 struct GraphicsDevice::Impl {
@@ -68,6 +83,10 @@ struct GraphicsDevice::Impl {
     // --- shaders set by EffectPass::Apply (a stage left null keeps what was there)
     std::array<const ShaderProgram*, kStageCount> shaders{};
     bool passApplied = false;
+    PassEmulation emulation;         // wanted (set by Apply)
+    bool appliedSrgbWrite = false;   // what GL has
+    // Picks the pixel program: the shader's own, or its alpha-test variant (made on first use).
+    GLuint pixelProgramFor(const ShaderProgram& program);
     std::map<std::tuple<GLuint, GLuint, GLuint>, GLuint> pipelines;
     GLuint boundPipeline = 0;
 

@@ -2,10 +2,13 @@
 // textures, samplers, vertex layout and fixed-function state up to date, touching only what
 // changed since the last draw.
 #include <algorithm>
+#include <iostream>
+#include <optional>
 
 #include "device_impl.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/texture.h"
+#include "fxport/xlate/alpha_test.h"
 #include "fxport/xlate/compiled_effect.h"
 
 namespace fxport {
@@ -53,11 +56,37 @@ void GraphicsDevice::Impl::flush(const char* what) {
     applyScissor(device.ScissorRectangle);
     applyShaders();
     applyTextures();
+    if (forceAll || emulation.srgbWrite != appliedSrgbWrite) {
+        // Converts only on sRGB-encoded attachments (SurfaceFormat::ColorSRgb); others are
+        // written unconverted (docs/DESIGN.md, "Pass states GL core lacks").
+        if (emulation.srgbWrite) glEnable(GL_FRAMEBUFFER_SRGB);
+        else glDisable(GL_FRAMEBUFFER_SRGB);
+        appliedSrgbWrite = emulation.srgbWrite;
+    }
     forceAll = false;
 }
 
+GLuint GraphicsDevice::Impl::pixelProgramFor(const ShaderProgram& program) {
+    if (!emulation.alphaTest || program.alphaTestUnavailable) return program.program;
+    if (!program.alphaTestProgram) {
+        std::optional<std::string> glsl = xlate::alphaTestVariant(program.shader->glsl);
+        if (!glsl) {
+            program.alphaTestUnavailable = true;
+            std::cerr << "fxport: " << program.label << ": AlphaTestEnable is set but the shader writes no float4 colour to"
+                      << " render target 0; drawing without the alpha test\n";
+            return program.program;
+        }
+        program.alphaTestProgram = createProgram(GL_FRAGMENT_SHADER, *glsl, program.label + " [alpha test]");
+        program.alphaFuncLocation = glGetUniformLocation(program.alphaTestProgram, xlate::kAlphaFuncUniform);
+        program.alphaRefLocation = glGetUniformLocation(program.alphaTestProgram, xlate::kAlphaRefUniform);
+    }
+    glProgramUniform1i(program.alphaTestProgram, program.alphaFuncLocation, emulation.alphaFunction);
+    glProgramUniform1f(program.alphaTestProgram, program.alphaRefLocation, emulation.alphaReference);
+    return program.alphaTestProgram;
+}
+
 void GraphicsDevice::Impl::applyShaders() {
-    GLuint vs = shaders[0]->program, ps = shaders[1]->program, gs = shaders[2] ? shaders[2]->program : 0;
+    GLuint vs = shaders[0]->program, ps = pixelProgramFor(*shaders[1]), gs = shaders[2] ? shaders[2]->program : 0;
     auto key = std::make_tuple(vs, ps, gs);
     auto it = pipelines.find(key);
     GLuint pipeline = 0;

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 
 #include "effect_impl.h"
@@ -122,7 +123,18 @@ std::vector<SamplerSlot> samplerSlotsOf(const xlate::CompiledShader& shader, con
     return out;
 }
 
+EffectWarningHandler& warningHandler() {
+    static EffectWarningHandler handler = [](const std::string& warning) { std::cerr << "fxport: " << warning << "\n"; };
+    return handler;
+}
+
 }  // namespace
+
+EffectWarningHandler SetEffectWarningHandler(EffectWarningHandler handler) {
+    EffectWarningHandler old = std::move(warningHandler());
+    warningHandler() = std::move(handler);
+    return old;
+}
 
 std::string Effect::Impl::hlslTypeName(const xlate::Parameter& p) {
     std::string base;
@@ -394,6 +406,7 @@ void Effect::Impl::releasePrograms(GraphicsDevice::Impl& device) {
             for (const ShaderProgram*& bound : device.shaders)
                 if (bound == &p) bound = nullptr;
             device.deleteProgram(p.program);
+            if (p.alphaTestProgram) device.deleteProgram(p.alphaTestProgram);
         }
 }
 
@@ -404,6 +417,11 @@ void Effect::build() {
     e.displayName = std::filesystem::path(c.sourcePath).filename().string();
     if (e.displayName.empty()) e.displayName = "<effect>";
     Name = e.displayName;
+
+    // No state dropped silently: what xlate could not honour is said once, here.
+    if (const EffectWarningHandler& report = warningHandler())
+        for (const xlate::Diagnostic& diag : c.diagnostics)
+            if (diag.severity == xlate::Severity::Warning && diag.dropsState()) report(diag.format());
 
     // Uniform blocks: provisional shadows until compiled shaders give their layouts (an effect
     // built from compiled code adopts them right after this).

@@ -8,7 +8,7 @@ namespace {
 
 // Indexed by SurfaceFormat. Bgr565/Bgra5551/Bgra4444 use GL's packed types with BGRA order so the
 // bytes XNA hands us upload unchanged.
-const std::array<detail::GlTextureFormat, 17> kFormats = {{
+const std::array<detail::GlTextureFormat, 19> kFormats = {{
     {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, 4, 4, false},                     // Color
     {GL_RGB565, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, 2, 3, false},              // Bgr565
     {GL_RGB5_A1, GL_BGRA, GL_UNSIGNED_SHORT_1_5_5_5_REV, 2, 4, false},      // Bgra5551
@@ -26,12 +26,14 @@ const std::array<detail::GlTextureFormat, 17> kFormats = {{
     {GL_RG16F, GL_RG, GL_HALF_FLOAT, 4, 2, true},                           // HalfVector2
     {GL_RGBA16F, GL_RGBA, GL_HALF_FLOAT, 8, 4, true},                       // HalfVector4
     {GL_RGBA16F, GL_RGBA, GL_HALF_FLOAT, 8, 4, true},                       // HdrBlendable
+    {GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, GL_FLOAT, 4, 1, true},      // Depth32
+    {GL_SRGB8_ALPHA8, GL_RGBA, GL_UNSIGNED_BYTE, 4, 4, false},              // ColorSRgb
 }};
 
 const char* const kFormatNames[] = {
     "Color", "Bgr565", "Bgra5551", "Bgra4444", "Alpha8", "Rgba1010102", "Rg32", "Rgba64",
     "NormalizedByte2", "NormalizedByte4", "Single", "Vector2", "Vector4", "HalfSingle",
-    "HalfVector2", "HalfVector4", "HdrBlendable",
+    "HalfVector2", "HalfVector4", "HdrBlendable", "Depth32", "ColorSRgb",
 };
 
 }  // namespace
@@ -64,7 +66,7 @@ GLenum glDepthFormat(DepthFormat format) {
 
 bool isColorRenderable(SurfaceFormat format) {
     // Snorm formats are not required to be renderable in GL 4.5 core.
-    return format != SurfaceFormat::NormalizedByte2 && format != SurfaceFormat::NormalizedByte4;
+    return format != SurfaceFormat::NormalizedByte2 && format != SurfaceFormat::NormalizedByte4 && format != SurfaceFormat::Depth32;
 }
 
 }  // namespace detail

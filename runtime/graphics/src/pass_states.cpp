@@ -3,6 +3,7 @@
 
 #include <variant>
 
+#include "device_impl.h"
 #include "effect_impl.h"
 #include "fxport/graphics/graphics_device.h"
 #include "sampler_filter.h"
@@ -129,8 +130,33 @@ PassStates decodePassStates(const xlate::Pass& pass) {
     return out;
 }
 
+namespace {
+
+// D3DCMPFUNC code of a comparison (what the alpha-test variant's uniform takes).
+int d3d9CompareCode(CompareFunction f) {
+    switch (f) {
+    case CompareFunction::Never: return 1;
+    case CompareFunction::Less: return 2;
+    case CompareFunction::Equal: return 3;
+    case CompareFunction::LessEqual: return 4;
+    case CompareFunction::Greater: return 5;
+    case CompareFunction::NotEqual: return 6;
+    case CompareFunction::GreaterEqual: return 7;
+    case CompareFunction::Always: return 8;
+    }
+    return 8;
+}
+
+}  // namespace
+
 void applyPassStates(const PassStates& states, const Effect::Impl& e, GraphicsDevice& device) {
-    if (states.rows.empty()) return;
+    // Alpha test and sRGB write belong to the pass: off unless it turns them on (XNA 4's device
+    // has neither, so nothing else would ever turn them off).
+    PassEmulation emulation;
+    if (states.rows.empty()) {
+        device.impl().emulation = emulation;
+        return;
+    }
     BlendState blend = device.BlendState;
     DepthStencilState depth = device.DepthStencilState;
     RasterizerState raster = device.RasterizerState;
@@ -150,7 +176,10 @@ void applyPassStates(const PassStates& states, const Effect::Impl& e, GraphicsDe
         }
         const PassStateRow& s = *row;
         switch (s.state) {
-        case RenderState::AlphaBlendEnable: blendEnable = s.flag; blendTouched = true; break;
+        case RenderState::AlphaBlendEnable:
+            // XNA's BlendState has one enable; D3D10's BlendEnable[n > 0] is warned about by xlate.
+            if (s.index == 0) blendEnable = s.flag, blendTouched = true;
+            break;
         case RenderState::SrcBlend: blend.ColorSourceBlend = s.blend; blendTouched = true; break;
         case RenderState::DestBlend: blend.ColorDestinationBlend = s.blend; blendTouched = true; break;
         case RenderState::BlendOp: blend.ColorBlendFunction = s.function; blendTouched = true; break;
@@ -190,16 +219,17 @@ void applyPassStates(const PassStates& states, const Effect::Impl& e, GraphicsDe
         case RenderState::MultiSampleAntiAlias: raster.MultiSampleAntiAlias = s.flag; break;
         case RenderState::DepthBias: raster.DepthBias = s.number; break;
         case RenderState::SlopeScaleDepthBias: raster.SlopeScaleDepthBias = s.number; break;
+        case RenderState::AlphaTestEnable: emulation.alphaTest = s.flag; break;
+        case RenderState::AlphaFunc: emulation.alphaFunction = d3d9CompareCode(s.compare); break;
+        case RenderState::AlphaRef: emulation.alphaReference = float(s.integer & 0xFF) / 255.0f; break;
+        case RenderState::SrgbWriteEnable: emulation.srgbWrite = s.flag; break;
         case RenderState::DepthClipEnable:
-        case RenderState::AlphaTestEnable:
-        case RenderState::AlphaFunc:
-        case RenderState::AlphaRef:
-        case RenderState::SrgbWriteEnable:
-            // No GL core equivalent that the shader does not have to do itself; xlate warned when
-            // it compiled the effect (these are listed in CompiledEffect::diagnostics).
+            // Not honoured (XNA's RasterizerState has no depth clamp); xlate warns where it is
+            // set to false.
             break;
         }
     }
+    device.impl().emulation = emulation;
     if (blendTouched) {
         if (!separateAlpha) {
             blend.AlphaSourceBlend = blend.ColorSourceBlend;
@@ -235,12 +265,17 @@ SamplerOverride decodeSamplerState(const xlate::SamplerStateDesc& e) {
     o.maxMipLevel = e.maxMipLevel;
     o.mipLodBias = e.mipLodBias;
     if (e.borderColor) o.borderColor = Vector4((*e.borderColor)[0], (*e.borderColor)[1], (*e.borderColor)[2], (*e.borderColor)[3]);
+    if (e.comparison) o.comparison = toCompare(*e.comparison);
     o.empty = !(e.addressU || e.addressV || e.addressW || e.minFilter || e.magFilter || e.mipFilter || e.maxAnisotropy ||
                 e.maxMipLevel || e.mipLodBias || e.borderColor);
     return o;
 }
 
 SamplerState SamplerOverride::over(SamplerState s) const {
+    // A shader's sampler either compares (sampler2DShadow in the GLSL) or not; GL leaves the
+    // other combinations undefined, so every slot says which.
+    s.UseComparison = comparison.has_value();
+    if (comparison) s.ComparisonFunction = *comparison;
     if (empty) return s;
     if (addressU) s.AddressU = *addressU;
     if (addressV) s.AddressV = *addressV;

@@ -59,7 +59,8 @@ struct SamplerOverride {
     std::optional<int> maxAnisotropy, maxMipLevel;
     std::optional<float> mipLodBias;
     std::optional<Vector4> borderColor;
-    bool empty = true;
+    std::optional<CompareFunction> comparison;  // a comparison sampler; none turns comparison off
+    bool empty = true;                          // nothing but (no) comparison
 
     SamplerState over(SamplerState device) const;
 };

@@ -241,6 +241,8 @@ GLuint GraphicsDevice::Impl::samplerFor(const SamplerState& s) {
     if (!s.UseMipMaps) glSamplerParameterf(sampler, GL_TEXTURE_MAX_LOD, float(s.MaxMipLevel));
     const float border[4] = {s.BorderColor.X, s.BorderColor.Y, s.BorderColor.Z, s.BorderColor.W};
     glSamplerParameterfv(sampler, GL_TEXTURE_BORDER_COLOR, border);
+    glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, s.UseComparison ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
+    glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_FUNC, GLint(glCompare(s.ComparisonFunction)));
     if (anisotropic)
         glSamplerParameterf(sampler, GL_TEXTURE_MAX_ANISOTROPY, float(std::max(1, s.MaxAnisotropy)));
     samplerObjects.emplace(std::move(key), sampler);

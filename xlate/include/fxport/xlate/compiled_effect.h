@@ -78,6 +78,7 @@ struct Parameter {
 // ---------------------------------------------------------------------------------------------
 // Sampler states: only what the effect specified is set; the rest is left to the device.
 
+enum class CompareFunction : std::uint8_t { Never, Less, Equal, LessEqual, Greater, NotEqual, GreaterEqual, Always };
 enum class TextureFilter : std::uint8_t { None, Point, Linear, Anisotropic };
 enum class TextureAddress : std::uint8_t { Wrap, Mirror, Clamp, Border, MirrorOnce };
 enum class TextureKind : std::uint8_t { Texture1D, Texture2D, Texture3D, TextureCube };
@@ -90,6 +91,9 @@ struct SamplerStateDesc {
     std::optional<int> maxMipLevel;
     std::optional<float> mipLodBias;
     std::optional<float> minLod, maxLod;
+    // D3D10 SamplerComparisonState's ComparisonFunc: SampleCmp passes where `reference FUNC texel`
+    // (GL's TEXTURE_COMPARE_FUNC has the same operand order).
+    std::optional<CompareFunction> comparison;
     bool operator==(const SamplerStateDesc&) const = default;
 };
 
@@ -173,7 +177,6 @@ enum class Blend : std::uint8_t {
     SourceAlphaSaturation, BlendFactor, InverseBlendFactor,
 };
 enum class BlendFunction : std::uint8_t { Add, Subtract, ReverseSubtract, Min, Max };
-enum class CompareFunction : std::uint8_t { Never, Less, Equal, LessEqual, Greater, NotEqual, GreaterEqual, Always };
 enum class StencilOperation : std::uint8_t { Keep, Zero, Replace, IncrementSaturation, DecrementSaturation, Invert, Increment, Decrement };
 // D3D9 CullMode names which winding is culled: CCW culls counter-clockwise (XNA CullCounterClockwiseFace).
 enum class CullMode : std::uint8_t { None, CullClockwiseFace, CullCounterClockwiseFace };

@@ -32,6 +32,7 @@ inline constexpr const char* kUnterminated = "FX1202";        // block or string
 inline constexpr const char* kUnknownState = "FX1301";        // pass/sampler/state-object assignment not known
 inline constexpr const char* kBadStateValue = "FX1302";       // known state, value not understood
 inline constexpr const char* kIgnoredState = "FX1303";        // fixed-function state accepted and ignored (warning)
+inline constexpr const char* kUnhonouredState = "FX1304";     // state or value GL/XNA cannot reproduce, ignored (warning)
 inline constexpr const char* kBadProfile = "FX1401";          // compile target like vs_9_9 or a ps profile for a VS
 inline constexpr const char* kMissingEntry = "FX1402";        // compile names a function that does not exist
 inline constexpr const char* kBadEntrySignature = "FX1403";   // entry parameter/return we cannot map
@@ -63,6 +64,9 @@ struct Diagnostic {
 
     // "file(line,col): error FX1201: message" plus, when known, the source line on the next row.
     std::string format() const;
+    // A state the effect sets that fxport ignores (FX1303, FX1304): reported by default, by
+    // `fxport check` and by the runtime when the effect loads, so that none is dropped silently.
+    bool dropsState() const { return id == diag::kIgnoredState || id == diag::kUnhonouredState; }
 };
 
 // Thrown by the compiler for errors that stop the whole effect (fatal). Per-pass problems are

@@ -19,6 +19,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -223,6 +224,13 @@ struct EffectSource {
     std::string text;
     std::string virtualPath;
 };
+
+// Pass states the effect sets that fxport cannot honour (fixed-function states, AlphaToCoverage,
+// DepthClipEnable = FALSE ...; xlate's FX1303/FX1304 warnings) are reported once per effect when it
+// loads, one call per state: "file(line,col): warning FX1304: ...". The default handler writes them
+// to stderr; a host may set its own, or an empty function to silence them. Returns the old handler.
+using EffectWarningHandler = std::function<void(const std::string& warning)>;
+EffectWarningHandler SetEffectWarningHandler(EffectWarningHandler handler);
 
 class Effect : public GraphicsResource {
 public:

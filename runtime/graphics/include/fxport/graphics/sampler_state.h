@@ -3,6 +3,7 @@
 
 #include <cstdint>
 
+#include "fxport/graphics/depth_stencil_state.h"
 #include "fxport/math.h"
 
 namespace fxport {
@@ -24,6 +25,11 @@ struct SamplerState {
     // fxport additions for what D3D9 effects can say and XNA's enum cannot:
     Vector4 BorderColor = Vector4(0, 0, 0, 0);  // D3D9 BORDERCOLOR (XNA has no Border mode colour)
     bool UseMipMaps = true;                      // false = D3D9 MIPFILTER = NONE (sample level MaxMipLevel only)
+    // D3D10 SamplerComparisonState: SampleCmp returns the filtered result of `reference
+    // ComparisonFunction texel` (0 or 1 per texel, then weighted as the filter says). Set by an
+    // effect's comparison sampler at Apply(); needs a SurfaceFormat::Depth32 texture.
+    bool UseComparison = false;
+    CompareFunction ComparisonFunction = CompareFunction::Never;
 
     bool operator==(const SamplerState&) const = default;
 

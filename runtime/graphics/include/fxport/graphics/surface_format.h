@@ -24,6 +24,11 @@ enum class SurfaceFormat : std::uint8_t {
     HalfVector2,   // RG16F
     HalfVector4,   // RGBA16F
     HdrBlendable,  // RGBA16F (XNA's HDR format on D3D9)
+    // fxport additions (XNA has neither):
+    Depth32,       // 32-bit float depth texture (SetData/GetData: float), sampled by D3D10
+                   // SamplerComparisonState (SampleCmp) for PCF shadows; not a render-target format
+    ColorSRgb,     // RGBA8 stored sRGB-encoded: a target D3D9's SRGBWriteEnable encodes into (and
+                   // that sampling decodes to linear)
 };
 
 enum class DepthFormat : std::uint8_t { None, Depth16, Depth24, Depth24Stencil8 };
