@@ -36,9 +36,7 @@ VSOutput VSBasic(VSInput vin, uniform int lighting, uniform bool textured, unifo
     vout.Specular = 0;
     if (fog)
         vout.Specular.a = ComputeFogFactor(vin.Position);
-    // Passed through even when untextured: choosing between it and a constant on a uniform flag
-    // (with ?: or if) crashes the SPIRV-Tools 2022.4 folder that glslang runs.
-    vout.TexCoord = vin.TexCoord;
+    vout.TexCoord = vin.TexCoord;  // unused by the untextured permutations
     vout.PositionWS = mul(vin.Position, World).xyz;
     vout.NormalWS = 0;
     if (lighting == 1)

@@ -26,6 +26,7 @@
 // Vertices need POSITION0, plus NORMAL0 when lit, TEXCOORD0 when textured, COLOR0 with vertex colour.
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include "fxport/graphics/effect.h"

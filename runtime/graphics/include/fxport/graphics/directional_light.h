@@ -3,7 +3,9 @@
 //   effect.DirectionalLight0.Direction = Vector3::Normalize(Vector3(1, -1, -1));
 //   effect.DirectionalLight0.Enabled = true;
 // A disabled light contributes nothing (its colours are sent as zero). Direction is used as given
-// (XNA does not normalise it either): it points from the light into the scene.
+// (XNA does not normalise it either): it points from the light into the scene. The defaults
+// below are fxport's (white diffuse, no highlight, pointing down -Z); a program that lights a
+// stock effect without setting its lights or calling EnableDefaultLighting should not rely on them.
 #pragma once
 
 #include "fxport/math.h"
