@@ -9,6 +9,7 @@
 // Plain structs in namespace fxport; no GLM (nor any other library's) type appears in these headers.
 #pragma once
 
+#include "fxport/math/bounding_box.h"
 #include "fxport/math/bounding_frustum.h"
 #include "fxport/math/bounding_sphere.h"
 #include "fxport/math/color.h"
@@ -16,6 +17,7 @@
 #include "fxport/math/matrix.h"
 #include "fxport/math/plane.h"
 #include "fxport/math/quaternion.h"
+#include "fxport/math/ray.h"
 #include "fxport/math/rectangle.h"
 #include "fxport/math/vector2.h"
 #include "fxport/math/vector3.h"
