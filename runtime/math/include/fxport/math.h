@@ -7,6 +7,8 @@
 //   device.Clear(Color::CornflowerBlue);
 //
 // Plain structs in namespace fxport; no GLM (nor any other library's) type appears in these headers.
+// XNA's read-only properties are const methods (matrix.Translation()), settable ones that do work a
+// getter plus setName (frustum.setMatrix); Nullable<float> results are std::optional (docs/API.md).
 #pragma once
 
 #include "fxport/math/bounding_box.h"
