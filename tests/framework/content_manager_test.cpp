@@ -105,6 +105,14 @@ TEST_F(ContentManagerTest, EffectsFromRootOrEffectDirectory) {
     ASSERT_NE(effect, nullptr);
     EXPECT_EQ(effect->Name, "Conventions");
     EXPECT_GT(effect->Techniques.Count(), 0);
+    // docs/API.md rule 2: indexers throw naming the key, find() is the C# null test.
+    EXPECT_EQ(effect->Techniques.find("NoSuchTechnique"), nullptr);
+    EXPECT_THROW(effect->Techniques["NoSuchTechnique"], ArgumentError);
+    EffectTechnique* first = effect->Techniques[0];
+    EXPECT_EQ(effect->Techniques.find(first->Name()), first);
+    EXPECT_EQ(first->Passes.find("NoSuchPass"), nullptr);
+    EXPECT_EQ(first->Passes.find(first->Passes[0].Name()), &first->Passes[0]);
+    EXPECT_EQ(effect->Parameters.find("NoSuchParameter"), nullptr);
     EXPECT_EQ(content.findLoadedEffect("Effects/Conventions"), effect);
     EXPECT_EQ(content.findLoadedEffect("Effects/Other"), nullptr);
 

@@ -9,7 +9,7 @@
 #include "fxport/graphics/model.h"
 #include "fxport/graphics/sprite_font.h"
 #include "fxport/graphics/texture.h"
-#include "sprite_font_import.h"
+#include "font_file_loader.h"
 
 namespace fxport {
 

@@ -510,6 +510,18 @@ EffectPass& EffectPassCollection::operator[](const std::string& name) {
     throw ArgumentError(owner_ + " has no pass named '" + name + "'");
 }
 
+EffectPass* EffectPassCollection::find(const std::string& name) {
+    for (EffectPass& p : items_)
+        if (p.Name() == name) return &p;
+    return nullptr;
+}
+
+EffectTechnique* EffectTechniqueCollection::find(const std::string& name) {
+    for (auto& t : items_)
+        if (t->Name() == name) return t.get();
+    return nullptr;
+}
+
 EffectTechnique* EffectTechniqueCollection::operator[](int index) {
     if (index < 0 || index >= Count())
         throw ArgumentError("Effect '" + owner_ + "': technique index " + std::to_string(index) + " is outside 0.." +

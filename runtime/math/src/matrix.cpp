@@ -2,6 +2,8 @@
 // rounding. Only Invert goes through GLM.
 #include "fxport/math/matrix.h"
 
+#include "fxport/math/plane.h"
+
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -395,5 +397,66 @@ Matrix Matrix::CreateOrthographicOffCenter(float left, float right, float bottom
     result.M44 = 1.0f;
     return result;
 }
+
+
+Matrix Matrix::CreateConstrainedBillboard(Vector3 objectPosition, Vector3 cameraPosition, Vector3 rotateAxis,
+                                          std::optional<Vector3> cameraForwardVector,
+                                          std::optional<Vector3> objectForwardVector) {
+    // XNA's threshold: within about 3.4 degrees of the axis, the camera direction gives no facing.
+    constexpr float kNearlyParallel = 0.9982547f;
+    Vector3 toObject = objectPosition - cameraPosition;
+    const float distanceSquared = toObject.LengthSquared();
+    if (distanceSquared < 0.0001f) toObject = cameraForwardVector ? -*cameraForwardVector : Vector3::Forward;
+    else toObject = toObject * (1.0f / std::sqrt(distanceSquared));
+    Vector3 right, backward;
+    if (std::fabs(Vector3::Dot(rotateAxis, toObject)) > kNearlyParallel) {
+        Vector3 facing = objectForwardVector ? *objectForwardVector : Vector3::Forward;
+        if (std::fabs(Vector3::Dot(rotateAxis, facing)) > kNearlyParallel)
+            facing = std::fabs(Vector3::Dot(rotateAxis, Vector3::Forward)) > kNearlyParallel ? Vector3::Right
+                                                                                             : Vector3::Forward;
+        right = Vector3::Normalize(Vector3::Cross(rotateAxis, facing));
+        backward = Vector3::Normalize(Vector3::Cross(right, rotateAxis));
+    } else {
+        right = Vector3::Normalize(Vector3::Cross(rotateAxis, toObject));
+        backward = Vector3::Normalize(Vector3::Cross(right, rotateAxis));
+    }
+    return {right.X,          right.Y,          right.Z,          0.0f,
+            rotateAxis.X,     rotateAxis.Y,     rotateAxis.Z,     0.0f,
+            backward.X,       backward.Y,       backward.Z,       0.0f,
+            objectPosition.X, objectPosition.Y, objectPosition.Z, 1.0f};
+}
+
+Matrix Matrix::CreateReflection(const Plane& value) {
+    const Plane p = Plane::Normalize(value);
+    const float x = p.Normal.X, y = p.Normal.Y, z = p.Normal.Z;
+    const float a = -2.0f * x, b = -2.0f * y, c = -2.0f * z;
+    return {a * x + 1.0f, b * x,        c * x,        0.0f,
+            a * y,        b * y + 1.0f, c * y,        0.0f,
+            a * z,        b * z,        c * z + 1.0f, 0.0f,
+            a * p.D,      b * p.D,      c * p.D,      1.0f};
+}
+
+Matrix Matrix::CreateShadow(Vector3 lightDirection, const Plane& plane) {
+    const Plane p = Plane::Normalize(plane);
+    const float dot = Vector3::Dot(p.Normal, lightDirection);
+    const float a = -p.Normal.X, b = -p.Normal.Y, c = -p.Normal.Z, d = -p.D;
+    const Vector3 l = lightDirection;
+    return {a * l.X + dot, a * l.Y,       a * l.Z,       0.0f,
+            b * l.X,       b * l.Y + dot, b * l.Z,       0.0f,
+            c * l.X,       c * l.Y,       c * l.Z + dot, 0.0f,
+            d * l.X,       d * l.Y,       d * l.Z,       dot};
+}
+
+Matrix Matrix::Transform(const Matrix& value, const Quaternion& rotation) {
+    return value * CreateFromQuaternion(rotation);
+}
+
+Matrix Matrix::Divide(const Matrix& a, const Matrix& b) {
+    Matrix r;
+    for (int i = 0; i < 16; ++i) r.data()[i] = a.data()[i] / b.data()[i];
+    return r;
+}
+
+Matrix Matrix::Divide(const Matrix& matrix, float divider) { return Multiply(matrix, 1.0f / divider); }
 
 }  // namespace fxport

@@ -52,4 +52,18 @@ Vector4 Vector4::Transform(Vector2 p, const Matrix& m) {
     return Transform(Vector4(p, 0.0f, 1.0f), m);
 }
 
+Vector2 Vector2::Transform(Vector2 v, const Quaternion& q) {
+    const Vector3 r = Vector3::Transform(Vector3(v, 0.0f), q);
+    return {r.X, r.Y};
+}
+
+Vector4 Vector4::Transform(Vector4 v, const Quaternion& q) {
+    const Vector3 r = Vector3::Transform(Vector3(v.X, v.Y, v.Z), q);
+    return {r.X, r.Y, r.Z, v.W};
+}
+
+Vector4 Vector4::Transform(Vector3 v, const Quaternion& q) { return Transform(Vector4(v, 1.0f), q); }
+
+Vector4 Vector4::Transform(Vector2 v, const Quaternion& q) { return Transform(Vector4(v, 0.0f, 1.0f), q); }
+
 }  // namespace fxport

@@ -1,5 +1,10 @@
 // Everything of fxport's XNA framework layer (Game, GraphicsDeviceManager, GameTime, ContentManager)
 // and the runtime it stands on: `#include "fxport/framework.h"` is a port's one include.
+//
+// Where C# cannot be mirrored (docs/API.md): a property is a public member when the object only stores
+// it, a const method when it is computed or fixed at creation (texture->Width()), a getter plus
+// setName(value) when setting does work; a name lookup that XNA answers with null throws ArgumentError
+// naming the key (find(name) returns nullptr for the C# null test); Nullable<T> is std::optional<T>.
 #pragma once
 
 #include "fxport/framework/content_manager.h"

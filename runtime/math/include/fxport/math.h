@@ -7,8 +7,11 @@
 //   device.Clear(Color::CornflowerBlue);
 //
 // Plain structs in namespace fxport; no GLM (nor any other library's) type appears in these headers.
+// XNA's read-only properties are const methods (matrix.Translation()), settable ones that do work a
+// getter plus setName (frustum.setMatrix); Nullable<float> results are std::optional (docs/API.md).
 #pragma once
 
+#include "fxport/math/bounding_box.h"
 #include "fxport/math/bounding_frustum.h"
 #include "fxport/math/bounding_sphere.h"
 #include "fxport/math/color.h"
@@ -16,6 +19,7 @@
 #include "fxport/math/matrix.h"
 #include "fxport/math/plane.h"
 #include "fxport/math/quaternion.h"
+#include "fxport/math/ray.h"
 #include "fxport/math/rectangle.h"
 #include "fxport/math/vector2.h"
 #include "fxport/math/vector3.h"

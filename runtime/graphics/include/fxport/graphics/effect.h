@@ -155,6 +155,8 @@ class EffectPassCollection {
 public:
     EffectPass& operator[](int index);
     EffectPass& operator[](const std::string& name);
+    // nullptr when absent (XNA's Passes["x"] == null check; docs/API.md rule 2).
+    EffectPass* find(const std::string& name);
     int Count() const { return int(items_.size()); }
     auto begin() { return items_.begin(); }
     auto end() { return items_.end(); }
@@ -187,6 +189,8 @@ public:
     // Pointers, as C# references: effect.CurrentTechnique = effect.Techniques["Shadow"];
     EffectTechnique* operator[](int index);
     EffectTechnique* operator[](const std::string& name);
+    // nullptr when absent (XNA's Techniques["x"] == null check; docs/API.md rule 2).
+    EffectTechnique* find(const std::string& name);
     int Count() const { return int(items_.size()); }
 
 private:

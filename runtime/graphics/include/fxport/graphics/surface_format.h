@@ -33,8 +33,10 @@ enum class SurfaceFormat : std::uint8_t {
 
 enum class DepthFormat : std::uint8_t { None, Depth16, Depth24, Depth24Stencil8 };
 
-// What happens to a render target's contents when it is set as a target again. fxport keeps the
-// contents in both cases (GL has no discard on bind); DiscardContents is recorded for fidelity.
+// What happens to a render target's contents when it is set as a target again, as XNA 4 on Windows:
+// SetRenderTarget(s) clears a DiscardContents target (colour to GraphicsDevice::DiscardColor, depth
+// to 1, stencil to 0; the back buffer follows PresentationParameters::RenderTargetUsage);
+// PreserveContents (and PlatformContents, treated alike) keeps them. See graphics_device.h.
 enum class RenderTargetUsage : std::uint8_t { DiscardContents, PreserveContents, PlatformContents };
 
 // Bytes of one texel (what SetData/GetData exchange per pixel).

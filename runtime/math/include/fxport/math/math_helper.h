@@ -45,6 +45,24 @@ struct MathHelper {
         return value1 + (value2 - value1) * amount1 + (value3 - value1) * amount2;
     }
 
+    // Catmull-Rom spline through value2 (amount 0) and value3 (amount 1), value1 and value4 the
+    // neighbours; computed in double as XNA.
+    static constexpr float CatmullRom(float value1, float value2, float value3, float value4, float amount) {
+        const double a = amount, a2 = a * a, a3 = a2 * a;
+        return static_cast<float>(0.5 * (2.0 * value2 + (value3 - value1) * a +
+                                         (2.0 * value1 - 5.0 * value2 + 4.0 * value3 - value4) * a2 +
+                                         (3.0 * value2 - value1 - 3.0 * value3 + value4) * a3));
+    }
+    // Cubic Hermite spline from value1 (tangent1) to value2 (tangent2); exact at amount 0 and 1.
+    static constexpr float Hermite(float value1, float tangent1, float value2, float tangent2, float amount) {
+        if (amount == 0.0f) return value1;
+        if (amount == 1.0f) return value2;
+        const double s = amount, s2 = s * s, s3 = s2 * s;
+        const double v1 = value1, v2 = value2, t1 = tangent1, t2 = tangent2;
+        return static_cast<float>((2.0 * v1 - 2.0 * v2 + t2 + t1) * s3 + (3.0 * v2 - 3.0 * v1 - 2.0 * t1 - t2) * s2 +
+                                  t1 * s + v1);
+    }
+
     // Reduces an angle to (-Pi, Pi]. Like XNA, the remainder is taken in double against the float
     // 2*Pi, so angles that are exact multiples of TwoPi wrap to 0.
     static float WrapAngle(float angle) {

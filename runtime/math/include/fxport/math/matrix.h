@@ -22,6 +22,8 @@
 
 namespace fxport {
 
+struct Plane;
+
 struct Matrix {
     float M11 = 0.0f, M12 = 0.0f, M13 = 0.0f, M14 = 0.0f;
     float M21 = 0.0f, M22 = 0.0f, M23 = 0.0f, M24 = 0.0f;
@@ -110,6 +112,24 @@ struct Matrix {
                                   Vector3 cameraUpVector,
                                   std::optional<Vector3> cameraForwardVector = std::nullopt);
 
+    // Cylindrical billboard: rotates about rotateAxis only, towards the camera. When the camera (or,
+    // with the camera on the object, cameraForwardVector) lies along the axis, objectForwardVector
+    // (else Forward, else Right) fixes the facing, as XNA.
+    static Matrix CreateConstrainedBillboard(Vector3 objectPosition, Vector3 cameraPosition, Vector3 rotateAxis,
+                                             std::optional<Vector3> cameraForwardVector = std::nullopt,
+                                             std::optional<Vector3> objectForwardVector = std::nullopt);
+    // Mirror through a plane (normalised first).
+    static Matrix CreateReflection(const Plane& value);
+    // Flattens geometry onto a plane as a shadow cast along lightDirection (the direction towards a
+    // directional light; XNA's w = 0 light). The result has M44 = Dot(plane normal, lightDirection):
+    // divide by w (Vector4::Transform) for the point on the plane.
+    static Matrix CreateShadow(Vector3 lightDirection, const Plane& plane);
+    // Rotates a matrix by a quaternion: matrix * CreateFromQuaternion(rotation).
+    static Matrix Transform(const Matrix& value, const Quaternion& rotation);
+    // Element by element, as XNA.
+    static Matrix Divide(const Matrix& a, const Matrix& b);
+    static Matrix Divide(const Matrix& matrix, float divider);
+
     // Projections, Direct3D style: view z = -nearPlaneDistance maps to NDC depth 0 and
     // z = -farPlaneDistance to 1. Like XNA, arguments outside their range (fov not in (0, Pi),
     // near <= 0, far <= 0, near >= far) throw std::out_of_range.
@@ -129,6 +149,8 @@ struct Matrix {
     Matrix& operator*=(float s) { return *this = Multiply(*this, s); }
     Matrix& operator+=(const Matrix& m) { return *this = Add(*this, m); }
     Matrix& operator-=(const Matrix& m) { return *this = Subtract(*this, m); }
+    Matrix& operator/=(const Matrix& m) { return *this = Divide(*this, m); }
+    Matrix& operator/=(float d) { return *this = Divide(*this, d); }
 
     friend constexpr bool operator==(const Matrix&, const Matrix&) = default;
 };
@@ -145,6 +167,8 @@ inline Matrix operator*(float s, const Matrix& m) { return Matrix::Multiply(m, s
 inline Matrix operator+(const Matrix& a, const Matrix& b) { return Matrix::Add(a, b); }
 inline Matrix operator-(const Matrix& a, const Matrix& b) { return Matrix::Subtract(a, b); }
 inline Matrix operator-(const Matrix& m) { return Matrix::Negate(m); }
+inline Matrix operator/(const Matrix& a, const Matrix& b) { return Matrix::Divide(a, b); }
+inline Matrix operator/(const Matrix& m, float d) { return Matrix::Divide(m, d); }
 
 static_assert(sizeof(Matrix) == 64 && std::is_standard_layout_v<Matrix> &&
               std::is_trivially_copyable_v<Matrix>);

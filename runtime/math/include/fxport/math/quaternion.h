@@ -85,6 +85,14 @@ struct Quaternion {
     static constexpr Quaternion Multiply(Quaternion q, float scale) {
         return {q.X * scale, q.Y * scale, q.Z * scale, q.W * scale};
     }
+    // XNA's arithmetic statics (the operators do the same). Divide is q1 * Inverse(q2).
+    static constexpr Quaternion Add(Quaternion a, Quaternion b) { return {a.X + b.X, a.Y + b.Y, a.Z + b.Z, a.W + b.W}; }
+    static constexpr Quaternion Subtract(Quaternion a, Quaternion b) {
+        return {a.X - b.X, a.Y - b.Y, a.Z - b.Z, a.W - b.W};
+    }
+    static constexpr Quaternion Negate(Quaternion q) { return {-q.X, -q.Y, -q.Z, -q.W}; }
+    static constexpr Quaternion Divide(Quaternion q1, Quaternion q2) { return Multiply(q1, Inverse(q2)); }
+
     // Rotation value1 followed by rotation value2.
     static constexpr Quaternion Concatenate(Quaternion value1, Quaternion value2) {
         return Multiply(value2, value1);
@@ -104,6 +112,7 @@ constexpr Quaternion operator-(Quaternion a, Quaternion b) {
     return {a.X - b.X, a.Y - b.Y, a.Z - b.Z, a.W - b.W};
 }
 constexpr Quaternion operator-(Quaternion q) { return {-q.X, -q.Y, -q.Z, -q.W}; }
+constexpr Quaternion operator/(Quaternion a, Quaternion b) { return Quaternion::Divide(a, b); }
 
 static_assert(sizeof(Quaternion) == 16 && std::is_standard_layout_v<Quaternion>);
 

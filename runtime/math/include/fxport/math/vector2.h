@@ -10,6 +10,7 @@
 namespace fxport {
 
 struct Matrix;
+struct Quaternion;
 
 struct Vector2 {
     float X = 0.0f;
@@ -63,6 +64,30 @@ struct Vector2 {
     // As a point (w = 1: translation applies) and as a direction (w = 0).
     static Vector2 Transform(Vector2 position, const Matrix& matrix);
     static Vector2 TransformNormal(Vector2 normal, const Matrix& matrix);
+    // Rotated by a (unit) quaternion, as the point (X, Y, 0).
+    static Vector2 Transform(Vector2 value, const Quaternion& rotation);
+
+    // XNA's spline and blend statics, per component (MathHelper's formulas).
+    static constexpr Vector2 SmoothStep(Vector2 value1, Vector2 value2, float amount) {
+        return Vector2(MathHelper::SmoothStep(value1.X, value2.X, amount), MathHelper::SmoothStep(value1.Y, value2.Y, amount));
+    }
+    static constexpr Vector2 CatmullRom(Vector2 value1, Vector2 value2, Vector2 value3, Vector2 value4, float amount) {
+        return Vector2(MathHelper::CatmullRom(value1.X, value2.X, value3.X, value4.X, amount), MathHelper::CatmullRom(value1.Y, value2.Y, value3.Y, value4.Y, amount));
+    }
+    static constexpr Vector2 Hermite(Vector2 value1, Vector2 tangent1, Vector2 value2, Vector2 tangent2, float amount) {
+        return Vector2(MathHelper::Hermite(value1.X, tangent1.X, value2.X, tangent2.X, amount), MathHelper::Hermite(value1.Y, tangent1.Y, value2.Y, tangent2.Y, amount));
+    }
+    static constexpr Vector2 Barycentric(Vector2 value1, Vector2 value2, Vector2 value3, float amount1, float amount2) {
+        return Vector2(MathHelper::Barycentric(value1.X, value2.X, value3.X, amount1, amount2), MathHelper::Barycentric(value1.Y, value2.Y, value3.Y, amount1, amount2));
+    }
+    // XNA's arithmetic statics (the operators do the same).
+    static constexpr Vector2 Add(Vector2 a, Vector2 b) { return Vector2(a.X + b.X, a.Y + b.Y); }
+    static constexpr Vector2 Subtract(Vector2 a, Vector2 b) { return Vector2(a.X - b.X, a.Y - b.Y); }
+    static constexpr Vector2 Multiply(Vector2 a, Vector2 b) { return Vector2(a.X * b.X, a.Y * b.Y); }
+    static constexpr Vector2 Multiply(Vector2 a, float s) { return Vector2(a.X * s, a.Y * s); }
+    static constexpr Vector2 Divide(Vector2 a, Vector2 b) { return Vector2(a.X / b.X, a.Y / b.Y); }
+    static constexpr Vector2 Divide(Vector2 a, float d) { return Multiply(a, 1.0f / d); }
+    static constexpr Vector2 Negate(Vector2 a) { return Vector2(-a.X, -a.Y); }
 
     constexpr Vector2& operator+=(Vector2 v) { X += v.X; Y += v.Y; return *this; }
     constexpr Vector2& operator-=(Vector2 v) { X -= v.X; Y -= v.Y; return *this; }

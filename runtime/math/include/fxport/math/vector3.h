@@ -84,6 +84,28 @@ struct Vector3 {
     // Rotates by a (unit) quaternion; equals Transform(value, Matrix::CreateFromQuaternion(rotation)).
     static Vector3 Transform(Vector3 value, const Quaternion& rotation);
 
+    // XNA's spline and blend statics, per component (MathHelper's formulas).
+    static constexpr Vector3 SmoothStep(Vector3 value1, Vector3 value2, float amount) {
+        return Vector3(MathHelper::SmoothStep(value1.X, value2.X, amount), MathHelper::SmoothStep(value1.Y, value2.Y, amount), MathHelper::SmoothStep(value1.Z, value2.Z, amount));
+    }
+    static constexpr Vector3 CatmullRom(Vector3 value1, Vector3 value2, Vector3 value3, Vector3 value4, float amount) {
+        return Vector3(MathHelper::CatmullRom(value1.X, value2.X, value3.X, value4.X, amount), MathHelper::CatmullRom(value1.Y, value2.Y, value3.Y, value4.Y, amount), MathHelper::CatmullRom(value1.Z, value2.Z, value3.Z, value4.Z, amount));
+    }
+    static constexpr Vector3 Hermite(Vector3 value1, Vector3 tangent1, Vector3 value2, Vector3 tangent2, float amount) {
+        return Vector3(MathHelper::Hermite(value1.X, tangent1.X, value2.X, tangent2.X, amount), MathHelper::Hermite(value1.Y, tangent1.Y, value2.Y, tangent2.Y, amount), MathHelper::Hermite(value1.Z, tangent1.Z, value2.Z, tangent2.Z, amount));
+    }
+    static constexpr Vector3 Barycentric(Vector3 value1, Vector3 value2, Vector3 value3, float amount1, float amount2) {
+        return Vector3(MathHelper::Barycentric(value1.X, value2.X, value3.X, amount1, amount2), MathHelper::Barycentric(value1.Y, value2.Y, value3.Y, amount1, amount2), MathHelper::Barycentric(value1.Z, value2.Z, value3.Z, amount1, amount2));
+    }
+    // XNA's arithmetic statics (the operators do the same).
+    static constexpr Vector3 Add(Vector3 a, Vector3 b) { return Vector3(a.X + b.X, a.Y + b.Y, a.Z + b.Z); }
+    static constexpr Vector3 Subtract(Vector3 a, Vector3 b) { return Vector3(a.X - b.X, a.Y - b.Y, a.Z - b.Z); }
+    static constexpr Vector3 Multiply(Vector3 a, Vector3 b) { return Vector3(a.X * b.X, a.Y * b.Y, a.Z * b.Z); }
+    static constexpr Vector3 Multiply(Vector3 a, float s) { return Vector3(a.X * s, a.Y * s, a.Z * s); }
+    static constexpr Vector3 Divide(Vector3 a, Vector3 b) { return Vector3(a.X / b.X, a.Y / b.Y, a.Z / b.Z); }
+    static constexpr Vector3 Divide(Vector3 a, float d) { return Multiply(a, 1.0f / d); }
+    static constexpr Vector3 Negate(Vector3 a) { return Vector3(-a.X, -a.Y, -a.Z); }
+
     constexpr Vector3& operator+=(Vector3 v) { X += v.X; Y += v.Y; Z += v.Z; return *this; }
     constexpr Vector3& operator-=(Vector3 v) { X -= v.X; Y -= v.Y; Z -= v.Z; return *this; }
     constexpr Vector3& operator*=(Vector3 v) { X *= v.X; Y *= v.Y; Z *= v.Z; return *this; }

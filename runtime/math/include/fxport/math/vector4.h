@@ -11,6 +11,7 @@
 namespace fxport {
 
 struct Matrix;
+struct Quaternion;
 
 struct Vector4 {
     float X = 0.0f;
@@ -76,6 +77,32 @@ struct Vector4 {
     static Vector4 Transform(Vector4 vector, const Matrix& matrix);
     static Vector4 Transform(Vector3 position, const Matrix& matrix);
     static Vector4 Transform(Vector2 position, const Matrix& matrix);
+    // Rotated by a (unit) quaternion: X, Y, Z rotated, W kept (Vector3: W = 1, Vector2: Z = 0, W = 1).
+    static Vector4 Transform(Vector4 value, const Quaternion& rotation);
+    static Vector4 Transform(Vector3 value, const Quaternion& rotation);
+    static Vector4 Transform(Vector2 value, const Quaternion& rotation);
+
+    // XNA's spline and blend statics, per component (MathHelper's formulas).
+    static constexpr Vector4 SmoothStep(Vector4 value1, Vector4 value2, float amount) {
+        return Vector4(MathHelper::SmoothStep(value1.X, value2.X, amount), MathHelper::SmoothStep(value1.Y, value2.Y, amount), MathHelper::SmoothStep(value1.Z, value2.Z, amount), MathHelper::SmoothStep(value1.W, value2.W, amount));
+    }
+    static constexpr Vector4 CatmullRom(Vector4 value1, Vector4 value2, Vector4 value3, Vector4 value4, float amount) {
+        return Vector4(MathHelper::CatmullRom(value1.X, value2.X, value3.X, value4.X, amount), MathHelper::CatmullRom(value1.Y, value2.Y, value3.Y, value4.Y, amount), MathHelper::CatmullRom(value1.Z, value2.Z, value3.Z, value4.Z, amount), MathHelper::CatmullRom(value1.W, value2.W, value3.W, value4.W, amount));
+    }
+    static constexpr Vector4 Hermite(Vector4 value1, Vector4 tangent1, Vector4 value2, Vector4 tangent2, float amount) {
+        return Vector4(MathHelper::Hermite(value1.X, tangent1.X, value2.X, tangent2.X, amount), MathHelper::Hermite(value1.Y, tangent1.Y, value2.Y, tangent2.Y, amount), MathHelper::Hermite(value1.Z, tangent1.Z, value2.Z, tangent2.Z, amount), MathHelper::Hermite(value1.W, tangent1.W, value2.W, tangent2.W, amount));
+    }
+    static constexpr Vector4 Barycentric(Vector4 value1, Vector4 value2, Vector4 value3, float amount1, float amount2) {
+        return Vector4(MathHelper::Barycentric(value1.X, value2.X, value3.X, amount1, amount2), MathHelper::Barycentric(value1.Y, value2.Y, value3.Y, amount1, amount2), MathHelper::Barycentric(value1.Z, value2.Z, value3.Z, amount1, amount2), MathHelper::Barycentric(value1.W, value2.W, value3.W, amount1, amount2));
+    }
+    // XNA's arithmetic statics (the operators do the same).
+    static constexpr Vector4 Add(Vector4 a, Vector4 b) { return Vector4(a.X + b.X, a.Y + b.Y, a.Z + b.Z, a.W + b.W); }
+    static constexpr Vector4 Subtract(Vector4 a, Vector4 b) { return Vector4(a.X - b.X, a.Y - b.Y, a.Z - b.Z, a.W - b.W); }
+    static constexpr Vector4 Multiply(Vector4 a, Vector4 b) { return Vector4(a.X * b.X, a.Y * b.Y, a.Z * b.Z, a.W * b.W); }
+    static constexpr Vector4 Multiply(Vector4 a, float s) { return Vector4(a.X * s, a.Y * s, a.Z * s, a.W * s); }
+    static constexpr Vector4 Divide(Vector4 a, Vector4 b) { return Vector4(a.X / b.X, a.Y / b.Y, a.Z / b.Z, a.W / b.W); }
+    static constexpr Vector4 Divide(Vector4 a, float d) { return Multiply(a, 1.0f / d); }
+    static constexpr Vector4 Negate(Vector4 a) { return Vector4(-a.X, -a.Y, -a.Z, -a.W); }
 
     constexpr Vector4& operator+=(Vector4 v) { X += v.X; Y += v.Y; Z += v.Z; W += v.W; return *this; }
     constexpr Vector4& operator-=(Vector4 v) { X -= v.X; Y -= v.Y; Z -= v.Z; W -= v.W; return *this; }

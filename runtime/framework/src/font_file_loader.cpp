@@ -1,5 +1,5 @@
-// importSpriteFont: ContentManager's font loader, chosen by the file's extension.
-#include "sprite_font_import.h"
+// importSpriteFont: ContentManager's font loader, choosing the importer by the file's extension.
+#include "font_file_loader.h"
 
 #include <filesystem>
 
