@@ -121,7 +121,7 @@ GBufferImages makeSyntheticGBuffer(const Mesh& scene, const TestCamera& camera, 
     std::vector<V4> albedo, normals, depth;
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
-            Ray ray = ndcRay(v, pixelNdc(x, y, width, height));
+            reference::Ray ray = ndcRay(v, pixelNdc(x, y, width, height));
             double len = length(ray.direction);
             int tri = -1;
             double d = nearestDistance(world, ray.origin, ray.direction / len, v.eye, Cull::CounterClockwiseFace, &tri);
@@ -158,7 +158,7 @@ CpuTexture makeSpotShadowMap(const Mesh& scene, const SpotLightSetup& light) {
     WorldMesh world = toWorld(scene, M4::identity());
     View3D v = makeView(toM4(light.View), toM4(light.Projection), n, n);
     return quantize(n, n, SurfaceFormat::Single, [&](int x, int y) {
-        Ray ray = ndcRay(v, {2 * (x + 0.5) / n - 1, 1 - 2 * (y + 0.5) / n});
+        reference::Ray ray = ndcRay(v, {2 * (x + 0.5) / n - 1, 1 - 2 * (y + 0.5) / n});
         V3 dir = normalize(ray.direction);
         double d = nearestDistance(world, v.eye, dir, v.eye, Cull::CounterClockwiseFace);
         double e = d < 0 ? 0 : std::exp(0.5 * d);
