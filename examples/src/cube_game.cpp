@@ -5,19 +5,19 @@ using namespace fxport;
 
 namespace example {
 
-CubeGame::CubeGame(int width, int height, std::string contentRoot) : contentRoot_(std::move(contentRoot)) {
-    PresentationParameters parameters;
-    parameters.BackBufferWidth = width;
-    parameters.BackBufferHeight = height;
-    device_ = std::make_unique<fxport::GraphicsDevice>(parameters);  // OSMesa unless FXPORT_PLATFORM says otherwise
+CubeGame::CubeGame(int width, int height, const std::string& contentRoot) {
+    graphics.PreferredBackBufferWidth = width;  // headless (OSMesa) unless FXPORT_PLATFORM says egl or glfw
+    graphics.PreferredBackBufferHeight = height;
+    Content.RootDirectory = contentRoot;
 }
 
 void CubeGame::LoadContent() {
-    fxport::GraphicsDevice& device = *device_;
-    // Compiled at build time by fxport_add_effects: loading them runs no HLSL compiler.
-    sceneEffect_ = Effect::FromCompiledFile(device, contentRoot_ + "/Scene.fxeffect");
-    postProcess_ = Effect::FromCompiledFile(device, contentRoot_ + "/PostProcess.fxeffect");
-    cube_ = Model::Load(device, contentRoot_ + "/Cube.gltf");
+    fxport::GraphicsDevice& device = *GraphicsDevice;
+    // Scene.fxeffect and PostProcess.fxeffect, compiled at build time by fxport_add_effects
+    // (Effect::FromCompiledFile underneath: no HLSL compiler runs here).
+    sceneEffect_ = Content.Load<Effect>("Scene");
+    postProcess_ = Content.Load<Effect>("PostProcess");
+    cube_ = Content.Load<Model>("Cube");
     const PresentationParameters& pp = device.PresentationParameters();
     sceneTarget_ = std::make_unique<RenderTarget2D>(device, pp.BackBufferWidth, pp.BackBufferHeight, false,
                                                     SurfaceFormat::Color, DepthFormat::Depth24);
@@ -29,12 +29,14 @@ void CubeGame::LoadContent() {
                                                        SceneSettings::NearPlane, SceneSettings::FarPlane);
 }
 
-void CubeGame::Update(double totalSeconds) {
-    world_ = Matrix::CreateRotationY(SceneSettings::AngleAt(totalSeconds)) * Matrix::CreateRotationX(SceneSettings::Tilt);
+void CubeGame::Update(const GameTime& gameTime) {
+    sceneSeconds_ = gameTime.TotalGameTime.TotalSeconds();
+    world_ = Matrix::CreateRotationY(SceneSettings::AngleAt(sceneSeconds_)) * Matrix::CreateRotationX(SceneSettings::Tilt);
 }
 
-void CubeGame::Draw() {
-    fxport::GraphicsDevice& device = *device_;
+void CubeGame::Draw(const GameTime& gameTime) {
+    (void)gameTime;
+    fxport::GraphicsDevice& device = *GraphicsDevice;
 
     // 1. The model into the scene target.
     device.SetRenderTarget(*sceneTarget_);

@@ -1,11 +1,13 @@
 // CubeGame: the example game, written as an XNA 4 Game1 is: LoadContent loads a model and two
-// effects compiled at build time (fxport_add_effects), Draw renders the model into a render target
-// and post-processes it onto the back buffer through SpriteBatch with a custom effect.
+// effects compiled at build time (fxport_add_effects; Content.Load<Effect> finds Name.fxeffect),
+// Update turns the model, Draw renders it into a render target and post-processes that onto the
+// back buffer through SpriteBatch with a custom effect.
 #pragma once
 
 #include <memory>
 #include <string>
 
+#include "fxport/framework.h"
 #include "fxport/graphics.h"
 
 namespace example {
@@ -22,28 +24,29 @@ struct SceneSettings {
     static float AngleAt(double totalSeconds) { return StartAngle + RadiansPerSecond * float(totalSeconds); }
 };
 
-class CubeGame {
+class CubeGame : public fxport::Game {
 public:
-    // `contentRoot`: where the compiled effects and the model are (XNA's Content.RootDirectory).
-    CubeGame(int width, int height, std::string contentRoot);
+    // `contentRoot`: the folder with the compiled effects and the model (XNA's Content.RootDirectory).
+    CubeGame(int width, int height, const std::string& contentRoot);
 
-    void LoadContent();
-    void Update(double totalSeconds);
-    void Draw();
+    // The game time the last Update placed the cube at (for the CPU check).
+    double SceneSeconds() const { return sceneSeconds_; }
 
-    fxport::GraphicsDevice& GraphicsDevice() { return *device_; }
+protected:
+    void LoadContent() override;
+    void Update(const fxport::GameTime& gameTime) override;
+    void Draw(const fxport::GameTime& gameTime) override;
 
 private:
-    std::unique_ptr<fxport::GraphicsDevice> device_;
-    std::string contentRoot_;
-    std::unique_ptr<fxport::Model> cube_;
-    std::unique_ptr<fxport::Effect> sceneEffect_;
-    std::unique_ptr<fxport::Effect> postProcess_;
+    fxport::Model* cube_ = nullptr;
+    fxport::Effect* sceneEffect_ = nullptr;
+    fxport::Effect* postProcess_ = nullptr;
     std::unique_ptr<fxport::RenderTarget2D> sceneTarget_;
     std::unique_ptr<fxport::SpriteBatch> spriteBatch_;
     fxport::Matrix world_ = fxport::Matrix::Identity;
     fxport::Matrix view_ = fxport::Matrix::Identity;
     fxport::Matrix projection_ = fxport::Matrix::Identity;
+    double sceneSeconds_ = 0;
 };
 
 }  // namespace example
