@@ -190,10 +190,13 @@ void DeferredRenderer::MakeGBuffer(GraphicsDevice& GraphicsDevice, const std::ve
                 GBuffer->Parameters["Texture"].SetValue(part.Effect->Parameters["Texture"].GetValueTexture2D());
 
                 //Set Normal Texture
-                GBuffer->Parameters["NormalMap"].SetValue(part.Effect->Parameters["NormalMap"].GetValueTexture2D());
+                // fxport: the part's default effect is XNA's BasicEffect, which has no normal or
+                // specular map (the tutorial's content processor stored them in the effect); the
+                // glTF material's maps are kept in part.Textures.
+                GBuffer->Parameters["NormalMap"].SetValue(part.Textures.NormalMap);
 
                 //Set Specular Texture
-                GBuffer->Parameters["SpecularMap"].SetValue(part.Effect->Parameters["SpecularMap"].GetValueTexture2D());
+                GBuffer->Parameters["SpecularMap"].SetValue(part.Textures.SpecularMap);
 
                 //Apply Effect
                 GBuffer->CurrentTechnique->Passes[0].Apply();

@@ -1,7 +1,7 @@
 # fxport_embed_effect(TARGET FX_FILE HEADER_NAME SYMBOL): makes <build>/generated/fxport_generated/
 # HEADER_NAME declaring `inline constexpr const char* SYMBOL = R"fxport_fx(<FX_FILE's text>)fxport_fx";`
 # in namespace fxport::detail, and adds it to TARGET. The built-in effects (SpriteBatch's,
-# Model's material effect) go through xlate at run time like any user effect; embedding them keeps
+# the stock effects) go through xlate at run time like any user effect; embedding them keeps
 # the library free of install paths. Editing the .fx re-runs the configure step; file(CONFIGURE)
 # rewrites the header only when the text changed.
 function(fxport_embed_effect target fx_file header_name symbol)

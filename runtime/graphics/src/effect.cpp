@@ -153,6 +153,22 @@ Effect::Effect(fxport::GraphicsDevice& device, const std::string& fxPath, const 
     if (options.precompile) linkWhole(std::make_shared<const xlate::CompiledEffect>(e.outline));
 }
 
+Effect::Effect(fxport::GraphicsDevice& device, const EffectSource& source, const EffectOptions& options)
+    : GraphicsResource(device, "Effect"), impl_(std::make_unique<Impl>()) {
+    Impl& e = *impl_;
+    e.fromSource = true;
+    e.sourcePath = source.virtualPath;
+    e.options = options;
+    auto started = Clock::now();
+    e.source = source.text;
+    xlate::CompileOptions o = compileOptions(options, {});
+    o.skipShaders = !options.precompile;
+    e.outline = options.precompile ? compileSource(e, {}) : xlate::compileEffectSource(e.source, e.sourcePath, o);
+    e.loadMilliseconds = millisecondsSince(started);
+    build();
+    if (options.precompile) linkWhole(std::make_shared<const xlate::CompiledEffect>(e.outline));
+}
+
 Effect::Effect(fxport::GraphicsDevice& device, const xlate::CompiledEffect& compiled)
     : GraphicsResource(device, "Effect"), impl_(std::make_unique<Impl>()) {
     Impl& e = *impl_;

@@ -287,6 +287,12 @@ void Effect::Impl::uploadRead(const std::vector<BlockReads>& reads) {
 
 void EffectPass::Apply() {
     if (effect_->IsDisposed()) throw InvalidOperation("EffectPass '" + name_ + "'.Apply(): the effect was disposed");
+    // A derived effect (BasicEffect ...) may redirect to the pass of the permutation it needs.
+    effect_->OnApply(*this).applyThis();
+}
+
+void EffectPass::applyThis() {
+    if (effect_->IsDisposed()) throw InvalidOperation("EffectPass '" + name_ + "'.Apply(): the effect was disposed");
     Effect::Impl& e = effect_->impl();
     GraphicsDevice& device = effect_->device();
     GraphicsDevice::Impl& d = device.impl();

@@ -361,6 +361,10 @@ int GltfReader::materialFor(int gltfMaterial, const std::string& what) {
         "material " + std::to_string(gltfMaterial) + (material.name.empty() ? "" : " '" + material.name + "'");
     GltfMaterial out;
     out.name = material.name;
+    const std::vector<double>& base = material.pbrMetallicRoughness.baseColorFactor;
+    if (base.size() == 4) out.baseColorFactor = Vector4(float(base[0]), float(base[1]), float(base[2]), float(base[3]));
+    if (material.emissiveFactor.size() == 3)
+        out.emissiveFactor = Vector3(float(material.emissiveFactor[0]), float(material.emissiveFactor[1]), float(material.emissiveFactor[2]));
     if (material.pbrMetallicRoughness.baseColorTexture.index >= 0) {
         out.texture = imageForTexture(material.pbrMetallicRoughness.baseColorTexture.index, where + " baseColorTexture");
     }

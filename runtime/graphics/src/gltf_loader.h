@@ -18,12 +18,14 @@ struct GltfImage {
     std::vector<Color> texels;  // RGBA8, top row first
 };
 
-// Indices into GltfModel::images; -1 = use the default texture.
+// Texture fields: indices into GltfModel::images; -1 = use the default texture.
 struct GltfMaterial {
     std::string name;
     int texture = -1;
     int normalMap = -1;
     int specularMap = -1;
+    Vector4 baseColorFactor = Vector4(1, 1, 1, 1);  // pbrMetallicRoughness.baseColorFactor
+    Vector3 emissiveFactor = Vector3(0, 0, 0);
 };
 
 struct GltfPart {

@@ -7,9 +7,7 @@
 
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/graphics_device.h"
-#include "fxport/xlate/compiled_effect.h"
-#include "fxport/xlate/effect_compiler.h"
-#include "fxport_generated/model_material_source.h"  // runtime/graphics/shaders/ModelMaterial.fx (embed_effect.cmake)
+#include "fxport/graphics/effect_interfaces.h"
 #include "gltf_loader.h"
 
 namespace fxport {
@@ -73,7 +71,7 @@ struct Model::Resources {
     std::vector<std::unique_ptr<Texture2D>> textures;
     std::vector<std::unique_ptr<VertexBuffer>> vertexBuffers;
     std::vector<std::unique_ptr<IndexBuffer>> indexBuffers;
-    std::vector<std::unique_ptr<Effect>> effects;
+    std::vector<std::unique_ptr<BasicEffect>> effects;
     std::vector<std::unique_ptr<ModelBone>> bones;
     std::vector<std::unique_ptr<ModelMesh>> meshes;
 };
@@ -134,14 +132,6 @@ std::unique_ptr<Texture2D> makeTexture(GraphicsDevice& device, const detail::Glt
         }
     }
     return texture;
-}
-
-// ModelMaterial.fx, compiled on first use and shared by every Model of the process (xlate's result
-// holds no GL objects; each part's Effect makes its own).
-const xlate::CompiledEffect& compiledModelMaterial() {
-    static const xlate::CompiledEffect compiled =
-        xlate::compileEffectSource(detail::kModelMaterialSource, "<builtin>/ModelMaterial.fx", xlate::CompileOptions{});
-    return compiled;
 }
 
 std::unique_ptr<Texture2D> makeSolidTexture(GraphicsDevice& device, Color color, const char* name) {
@@ -231,17 +221,27 @@ std::unique_ptr<Model> Model::Load(GraphicsDevice& device, const std::string& pa
         }
         const detail::GltfMesh& sourceMesh = source.meshes[std::size_t(meshIndex)];
         auto mesh = std::make_unique<ModelMesh>();
+        mesh->device_ = &device;
         mesh->Name = !source.bones[b].name.empty() ? source.bones[b].name : sourceMesh.name;
         mesh->ParentBone = res.bones[b].get();
         mesh->BoundingSphere = sourceMesh.bounds;
         for (const detail::GltfPart& sourcePart : sourceMesh.parts) {
             const detail::GltfMaterial* mat =
                 sourcePart.material >= 0 ? &source.materials[std::size_t(sourcePart.material)] : nullptr;
-            auto effect = std::make_unique<Effect>(device, compiledModelMaterial());
-            effect->Name = "ModelMaterial '" + (mat ? mat->name : std::string()) + "' of " + path;
-            effect->Parameters["Texture"].SetValue(textureOr(mat ? mat->texture : -1, 0));
-            effect->Parameters["NormalMap"].SetValue(textureOr(mat ? mat->normalMap : -1, 1));
-            effect->Parameters["SpecularMap"].SetValue(textureOr(mat ? mat->specularMap : -1, 2));
+            ModelMaterialTextures textures;
+            textures.Texture = textureOr(mat ? mat->texture : -1, 0);
+            textures.NormalMap = textureOr(mat ? mat->normalMap : -1, 1);
+            textures.SpecularMap = textureOr(mat ? mat->specularMap : -1, 2);
+            // XNA's BasicMaterialContent -> BasicEffect.
+            auto effect = std::make_unique<BasicEffect>(device);
+            effect->Name = "BasicEffect of material '" + (mat ? mat->name : std::string()) + "' of " + path;
+            const Vector4 base = mat ? mat->baseColorFactor : Vector4(1, 1, 1, 1);
+            effect->DiffuseColor = Vector3(base.X, base.Y, base.Z);
+            effect->Alpha = base.W;
+            effect->EmissiveColor = mat ? mat->emissiveFactor : Vector3(0, 0, 0);
+            effect->TextureEnabled = mat && mat->texture >= 0;
+            effect->Texture = textures.Texture;
+            effect->Parameters["Texture"].SetValue(textures.Texture);
 
             ModelMeshPart part;
             part.VertexBuffer = buffers[std::size_t(meshIndex)].vertices;
@@ -252,6 +252,7 @@ std::unique_ptr<Model> Model::Load(GraphicsDevice& device, const std::string& pa
             part.PrimitiveCount = sourcePart.primitiveCount;
             part.Effect = effect.get();
             part.materialName = mat ? mat->name : std::string();
+            part.Textures = textures;
             mesh->MeshParts.push_back(std::move(part));
             res.effects.push_back(std::move(effect));
         }
@@ -259,6 +260,53 @@ std::unique_ptr<Model> Model::Load(GraphicsDevice& device, const std::string& pa
         res.meshes.push_back(std::move(mesh));
     }
     return model;
+}
+
+ModelEffectCollection ModelMesh::Effects() const {
+    ModelEffectCollection effects;
+    for (const ModelMeshPart& part : MeshParts) {
+        if (part.Effect && std::find(effects.items_.begin(), effects.items_.end(), part.Effect) == effects.items_.end()) {
+            effects.items_.push_back(part.Effect);
+        }
+    }
+    return effects;
+}
+
+void ModelMesh::Draw() {
+    for (std::size_t p = 0; p < MeshParts.size(); ++p) {
+        ModelMeshPart& part = MeshParts[p];
+        if (part.PrimitiveCount <= 0) {
+            continue;
+        }
+        if (!part.Effect) {
+            throw InvalidOperation("ModelMesh '" + Name + "'.Draw(): part " + std::to_string(p) + " has no Effect");
+        }
+        device_->SetVertexBuffer(part.VertexBuffer);
+        device_->Indices = part.IndexBuffer;
+        for (EffectPass& pass : part.Effect->CurrentTechnique->Passes) {
+            pass.Apply();
+            device_->DrawIndexedPrimitives(PrimitiveType::TriangleList, part.VertexOffset, 0, part.NumVertices,
+                                           part.StartIndex, part.PrimitiveCount);
+        }
+    }
+}
+
+void Model::Draw(const Matrix& world, const Matrix& view, const Matrix& projection) {
+    CopyAbsoluteBoneTransformsTo(drawTransforms_);
+    for (ModelMesh& mesh : Meshes) {
+        for (Effect* effect : mesh.Effects()) {
+            auto* matrices = dynamic_cast<IEffectMatrices*>(effect);
+            if (!matrices) {
+                throw InvalidOperation("Model '" + path_ + "'.Draw(): mesh '" + mesh.Name + "' has effect '" + effect->Name +
+                                       "', which has no World/View/Projection (IEffectMatrices); set them yourself "
+                                       "and call mesh.Draw()");
+            }
+            matrices->World = drawTransforms_[std::size_t(mesh.ParentBone->Index)] * world;
+            matrices->View = view;
+            matrices->Projection = projection;
+        }
+        mesh.Draw();
+    }
 }
 
 void Model::CopyAbsoluteBoneTransformsTo(Matrix* transforms) const {

@@ -1,9 +1,15 @@
 // Everything of the runtime a ported XNA program uses: `#include "fxport/graphics.h"`.
 #pragma once
 
+#include "fxport/graphics/alpha_test_effect.h"
+#include "fxport/graphics/basic_effect.h"
 #include "fxport/graphics/blend_state.h"
 #include "fxport/graphics/depth_stencil_state.h"
+#include "fxport/graphics/directional_light.h"
+#include "fxport/graphics/dual_texture_effect.h"
 #include "fxport/graphics/effect.h"
+#include "fxport/graphics/effect_interfaces.h"
+#include "fxport/graphics/environment_map_effect.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/finite_check.h"
 #include "fxport/graphics/fullscreen_quad.h"
@@ -14,6 +20,7 @@
 #include "fxport/graphics/rasterizer_state.h"
 #include "fxport/graphics/render_target.h"
 #include "fxport/graphics/sampler_state.h"
+#include "fxport/graphics/skinned_effect.h"
 #include "fxport/graphics/sprite_batch.h"
 #include "fxport/graphics/sprite_font.h"
 #include "fxport/graphics/surface_format.h"

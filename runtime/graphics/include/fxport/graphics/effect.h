@@ -140,6 +140,7 @@ public:
 
 private:
     friend class Effect;
+    void applyThis();
     EffectPass(Effect* effect, int technique, int pass, std::string name, std::vector<EffectAnnotation> annotations)
         : effect_(effect), technique_(technique), pass_(pass), name_(std::move(name)), annotations_(std::move(annotations)) {}
     Effect* effect_;
@@ -215,10 +216,19 @@ struct EffectStatistics {
     std::uint64_t constantUploads = 0;        // uniform-buffer updates (buffer sub-data calls)
 };
 
+// An effect's source text held in memory, compiled as if it were the file `virtualPath` (the stock
+// effects embed theirs in the library). fxport addition.
+struct EffectSource {
+    std::string text;
+    std::string virtualPath;
+};
+
 class Effect : public GraphicsResource {
 public:
     // Compiles `fxPath` through xlate (cached). Throws xlate::CompileError with file:line diagnostics.
     Effect(fxport::GraphicsDevice& device, const std::string& fxPath, const EffectOptions& options = {});
+    // The same from source text in memory (lazy like a file: techniques compile at first Apply).
+    Effect(fxport::GraphicsDevice& device, const EffectSource& source, const EffectOptions& options = {});
     // From an effect already compiled (e.g. read from a compiled-effect file).
     Effect(fxport::GraphicsDevice& device, const xlate::CompiledEffect& compiled);
     // Reads a compiled-effect file written by `fxport compile`.
@@ -242,8 +252,13 @@ public:
 
 protected:
     void releaseGpuObjects() override;
+    // XNA's Effect.OnApply: EffectPass::Apply calls it first. A derived effect (the stock effects)
+    // pushes its properties into Parameters here and returns the pass to apply instead of `pass`
+    // (its shader permutation's); the default applies `pass`.
+    virtual EffectPass& OnApply(EffectPass& pass) { return pass; }
 
 private:
+    friend class EffectPass;  // calls OnApply
     void build();
     void linkWhole(std::shared_ptr<const xlate::CompiledEffect> whole);
     std::unique_ptr<Impl> impl_;

@@ -50,17 +50,30 @@
 //    Binormal = cross(Normal, Tangent) * w points towards decreasing v, i.e. towards the top of the
 //    image, which is where glTF normal textures put +Y (green up, "OpenGL" normal maps).
 //    DirectX-style normal maps (green down) need their green channel inverted by the content tool.
-//  * Materials: each part gets its own Effect made from runtime/graphics/shaders/ModelMaterial.fx
-//    (compiled once per process). Its texture parameters hold the part's textures:
-//        "Texture"     <- pbrMetallicRoughness.baseColorTexture            (default: 1x1 white)
-//        "NormalMap"   <- normalTexture                                    (default: 1x1 (128, 128, 255))
-//        "SpecularMap" <- extensions.KHR_materials_specular.specularTexture, else the fxport convention
-//                         extras: { "fxportSpecularMap": <texture index> } (default: 1x1 (0, 0, 0, 0))
+//  * Materials: each part gets its own BasicEffect, set up from its glTF material as XNA's content
+//    pipeline sets up a model's BasicEffects: DiffuseColor/Alpha <- pbrMetallicRoughness.baseColorFactor,
+//    EmissiveColor <- emissiveFactor, Texture <- baseColorTexture with TextureEnabled = true (else
+//    the default white texture, TextureEnabled = false); everything else stays BasicEffect's
+//    default (lighting off: call EnableDefaultLighting, as XNA programs do). The effect's "Texture"
+//    parameter holds the texture from load on, so ported code can read it as the tutorials do.
+//    part.Textures (an fxport addition) keeps the material's maps whatever Effect the part has:
+//        Texture     <- pbrMetallicRoughness.baseColorTexture            (default: 1x1 white)
+//        NormalMap   <- normalTexture                                    (default: 1x1 (128, 128, 255))
+//        SpecularMap <- extensions.KHR_materials_specular.specularTexture, else the fxport convention
+//                       extras: { "fxportSpecularMap": <texture index> } (default: 1x1 (0, 0, 0, 0))
 //    e.g. "materials": [{ "pbrMetallicRoughness": { "baseColorTexture": { "index": 0 } },
 //                         "normalTexture": { "index": 1 }, "extras": { "fxportSpecularMap": 2 } }].
-//    Texture colours are loaded as SurfaceFormat::Color with a full mip chain (box-filtered); colour
-//    factors, samplers, texCoord sets other than 0 and KHR_texture_transform are ignored. The default
+//    Texture colours are loaded as SurfaceFormat::Color with a full mip chain (box-filtered);
+//    samplers, texCoord sets other than 0 and KHR_texture_transform are ignored. The default
 //    textures are shared by the parts of one Model.
+//  * Drawing as XNA: model->Draw(world, view, projection) sets World (the mesh's absolute bone
+//    transform times `world`), View and Projection on every effect of every mesh through
+//    IEffectMatrices (an effect without it makes Draw throw InvalidOperation, as in XNA), then
+//    draws each mesh with ModelMesh::Draw(): for each part, its buffers and every pass of its
+//    Effect's CurrentTechnique. Lights and fog are set by the host through mesh.Effects():
+//        for (ModelMesh& mesh : model->Meshes)
+//            for (Effect* effect : mesh.Effects())
+//                if (auto* lights = dynamic_cast<IEffectLights*>(effect)) lights->EnableDefaultLighting();
 //  * Not loaded: skins, morph targets, animations, cameras, lights, vertex colours, TEXCOORD_1+.
 //
 // A Model owns everything it made (buffers, textures, effects); parts point into it, so the Model
@@ -75,6 +88,7 @@
 #include <string>
 #include <vector>
 
+#include "fxport/graphics/basic_effect.h"
 #include "fxport/graphics/effect.h"
 #include "fxport/graphics/texture.h"
 #include "fxport/graphics/vertex_buffer.h"
@@ -150,6 +164,13 @@ public:
     ModelBoneCollection Children;
 };
 
+// fxport: a part's glTF material maps (see the file comment), kept whatever its Effect is.
+struct ModelMaterialTextures {
+    fxport::Texture2D* Texture = nullptr;
+    fxport::Texture2D* NormalMap = nullptr;
+    fxport::Texture2D* SpecularMap = nullptr;
+};
+
 struct ModelMeshPart {
     fxport::VertexBuffer* VertexBuffer = nullptr;
     fxport::IndexBuffer* IndexBuffer = nullptr;
@@ -157,10 +178,25 @@ struct ModelMeshPart {
     int NumVertices = 0;     // vertices of the part (indices run 0 .. NumVertices - 1)
     int StartIndex = 0;      // first index of the part in IndexBuffer
     int PrimitiveCount = 0;  // triangles
-    // The part's material (see the file comment). Owned by the Model; may be replaced by the user's.
+    // The part's effect: a BasicEffect set up from the glTF material (see the file comment), owned
+    // by the Model. May be replaced by the user's (which must outlive its use).
     fxport::Effect* Effect = nullptr;
-    // fxport: the glTF material's name ("" when the primitive has none).
+    // fxport: the glTF material's name ("" when the primitive has none) and maps.
     std::string materialName;
+    ModelMaterialTextures Textures;
+};
+
+// XNA's ModelEffectCollection: the distinct effects of a mesh's parts, in part order.
+class ModelEffectCollection {
+public:
+    int Count() const { return int(items_.size()); }
+    fxport::Effect* operator[](int index) const { return items_.at(std::size_t(index)); }
+    auto begin() const { return items_.begin(); }
+    auto end() const { return items_.end(); }
+
+private:
+    friend class ModelMesh;
+    std::vector<fxport::Effect*> items_;
 };
 
 class ModelMesh {
@@ -171,6 +207,18 @@ public:
     // farthest vertex).
     fxport::BoundingSphere BoundingSphere;
     std::vector<ModelMeshPart> MeshParts;
+
+    // The parts' effects as they are now (XNA's mesh.Effects; a method because part.Effect is a
+    // field the user may change at any time).
+    ModelEffectCollection Effects() const;
+    // Draws every part with every pass of its Effect's CurrentTechnique (vertex buffer, indices,
+    // Apply, DrawIndexedPrimitives with baseVertex = VertexOffset), as XNA's ModelMesh.Draw.
+    // Throws InvalidOperation naming the mesh when a part has no Effect.
+    void Draw();
+
+private:
+    friend class Model;
+    fxport::GraphicsDevice* device_ = nullptr;
 };
 
 class Model {
@@ -195,6 +243,11 @@ public:
     void CopyBoneTransformsTo(std::vector<Matrix>& transforms) const;
     void CopyBoneTransformsFrom(const std::vector<Matrix>& transforms);
 
+    // XNA's Model.Draw: World = absolute bone transform * world, View and Projection set on each
+    // mesh's effects through IEffectMatrices, then each mesh drawn (see the file comment). Throws
+    // InvalidOperation naming the mesh and effect when an effect lacks IEffectMatrices.
+    void Draw(const Matrix& world, const Matrix& view, const Matrix& projection);
+
     // fxport: the file it was loaded from.
     const std::string& sourcePath() const { return path_; }
 
@@ -203,6 +256,7 @@ private:
     Model();
     std::string path_;
     std::unique_ptr<Resources> resources_;
+    std::vector<Matrix> drawTransforms_;  // Draw's absolute bone transforms (kept to avoid reallocating)
 };
 
 // The collections' out-of-line members are defined, and instantiated for these two, in model.cpp.
