@@ -1,7 +1,9 @@
-// CubeGame: the example game, written as an XNA 4 Game1 is: LoadContent loads a model and two
-// effects compiled at build time (fxport_add_effects; Content.Load<Effect> finds Name.fxeffect),
-// Update turns the model, Draw renders it into a render target and post-processes that onto the
-// back buffer through SpriteBatch with a custom effect.
+// CubeGame: the example game, written as an XNA 4 Game1 is. LoadContent loads a glTF model (its
+// parts get BasicEffects from the material) and two post effects compiled at build time
+// (fxport_add_effects; Content.Load<Effect> finds Name.fxeffect) and lights the model; Update turns
+// it; Draw renders it with Model.Draw into a render target, grades that into a second target
+// through SpriteBatch with PostProcess.fx, and draws the result onto the back buffer with
+// Scanlines.fx.
 #pragma once
 
 #include <memory>
@@ -21,6 +23,9 @@ struct SceneSettings {
     static constexpr float Tilt = 0.45f;            // rotation about X, radians
     static constexpr float StartAngle = 0.6f;       // rotation about Y at time 0
     static constexpr float RadiansPerSecond = 0.8f;  // rotation about Y
+    static constexpr float Ambient = 0.25f;         // BasicEffect.AmbientLightColor (grey)
+    static constexpr float LightDiffuse = 0.75f;    // DirectionalLight0.DiffuseColor (grey)
+    static fxport::Vector3 LightDirection() { return fxport::Vector3::Normalize(fxport::Vector3(-0.5f, -0.7f, -0.5f)); }
     static float AngleAt(double totalSeconds) { return StartAngle + RadiansPerSecond * float(totalSeconds); }
 };
 
@@ -39,9 +44,10 @@ protected:
 
 private:
     fxport::Model* cube_ = nullptr;
-    fxport::Effect* sceneEffect_ = nullptr;
     fxport::Effect* postProcess_ = nullptr;
+    fxport::Effect* scanlines_ = nullptr;
     std::unique_ptr<fxport::RenderTarget2D> sceneTarget_;
+    std::unique_ptr<fxport::RenderTarget2D> gradedTarget_;
     std::unique_ptr<fxport::SpriteBatch> spriteBatch_;
     fxport::Matrix world_ = fxport::Matrix::Identity;
     fxport::Matrix view_ = fxport::Matrix::Identity;
