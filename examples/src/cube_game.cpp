@@ -71,7 +71,7 @@ void CubeGame::Draw(const GameTime& gameTime) {
     spriteBatch_->End();
 
     // 3. Scan lines onto the back buffer.
-    device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+    device.SetRenderTarget(nullptr);
     spriteBatch_->Begin(SpriteSortMode::Immediate, BlendState::Opaque, SamplerState::PointClamp, DepthStencilState::None,
                         RasterizerState::CullNone, *scanlines_);
     spriteBatch_->Draw(*gradedTarget_, Vector2(0, 0), Color::White);
