@@ -12,6 +12,13 @@
 # effect, any file it #includes (a depfile written by `fxport compile --depfile`), or the fxport CLI
 # changes. A broken effect fails the build with its own `file(line,col): error FXnnnn: ...` lines.
 # Works from find_package(fxport) and from add_subdirectory(fxport) alike.
+if(CMAKE_VERSION VERSION_LESS 3.20)
+  message(FATAL_ERROR "fxport_add_effects needs CMake 3.20 or newer (DEPFILE with Makefiles, cmake_path); this is ${CMAKE_VERSION}")
+endif()
+# Depfile paths are read relative to the calling directory's build folder, in the caller's project
+# whatever its cmake_minimum_required says (a function keeps the policies of its definition).
+cmake_policy(SET CMP0116 NEW)
+
 function(fxport_add_effects)
   cmake_parse_arguments(PARSE_ARGV 0 arg "" "TARGET;OUTPUT_DIR;OUTPUTS_VAR" "EFFECTS;INCLUDE_DIRS;DEFINES")
   if(arg_UNPARSED_ARGUMENTS)

@@ -5,23 +5,40 @@ using namespace fxport;
 
 namespace example {
 
-CubeGame::CubeGame(int width, int height, std::string contentRoot) : contentRoot_(std::move(contentRoot)) {
-    PresentationParameters parameters;
-    parameters.BackBufferWidth = width;
-    parameters.BackBufferHeight = height;
-    device_ = std::make_unique<fxport::GraphicsDevice>(parameters);  // OSMesa unless FXPORT_PLATFORM says otherwise
+CubeGame::CubeGame(int width, int height, const std::string& contentRoot) {
+    graphics.PreferredBackBufferWidth = width;  // headless (OSMesa) unless FXPORT_PLATFORM says egl or glfw
+    graphics.PreferredBackBufferHeight = height;
+    Content.RootDirectory = contentRoot;
 }
 
 void CubeGame::LoadContent() {
-    fxport::GraphicsDevice& device = *device_;
-    // Compiled at build time by fxport_add_effects: loading them runs no HLSL compiler.
-    sceneEffect_ = Effect::FromCompiledFile(device, contentRoot_ + "/Scene.fxeffect");
-    postProcess_ = Effect::FromCompiledFile(device, contentRoot_ + "/PostProcess.fxeffect");
-    cube_ = Model::Load(device, contentRoot_ + "/Cube.gltf");
+    fxport::GraphicsDevice& device = *GraphicsDevice;
+    // PostProcess.fxeffect and Scanlines.fxeffect, compiled at build time by fxport_add_effects
+    // (Effect::FromCompiledFile underneath: no HLSL compiler runs here).
+    postProcess_ = Content.Load<Effect>("PostProcess");
+    scanlines_ = Content.Load<Effect>("Scanlines");
+    cube_ = Content.Load<Model>("Cube");
+    // One grey key light and grey ambient on the material's colour; no highlights.
+    for (ModelMesh& mesh : cube_->Meshes)
+        for (Effect* effect : mesh.Effects())
+            if (auto* basic = dynamic_cast<BasicEffect*>(effect)) {
+                basic->LightingEnabled = true;
+                basic->AmbientLightColor = Vector3(SceneSettings::Ambient);
+                basic->SpecularColor = Vector3::Zero;
+                basic->DirectionalLight0.Enabled = true;
+                basic->DirectionalLight0.Direction = SceneSettings::LightDirection();
+                basic->DirectionalLight0.DiffuseColor = Vector3(SceneSettings::LightDiffuse);
+                basic->DirectionalLight1.Enabled = false;
+                basic->DirectionalLight2.Enabled = false;
+            }
+
     const PresentationParameters& pp = device.PresentationParameters();
     sceneTarget_ = std::make_unique<RenderTarget2D>(device, pp.BackBufferWidth, pp.BackBufferHeight, false,
                                                     SurfaceFormat::Color, DepthFormat::Depth24);
+    gradedTarget_ = std::make_unique<RenderTarget2D>(device, pp.BackBufferWidth, pp.BackBufferHeight, false,
+                                                     SurfaceFormat::Color, DepthFormat::None);
     spriteBatch_ = std::make_unique<SpriteBatch>(device);
+    scanlines_->Parameters["ScreenHeight"].SetValue(float(pp.BackBufferHeight));
 
     view_ = Matrix::CreateLookAt(Vector3(0, 0, SceneSettings::CameraDistance), Vector3::Zero, Vector3::Up);
     projection_ = Matrix::CreatePerspectiveFieldOfView(SceneSettings::FieldOfView,
@@ -29,40 +46,35 @@ void CubeGame::LoadContent() {
                                                        SceneSettings::NearPlane, SceneSettings::FarPlane);
 }
 
-void CubeGame::Update(double totalSeconds) {
-    world_ = Matrix::CreateRotationY(SceneSettings::AngleAt(totalSeconds)) * Matrix::CreateRotationX(SceneSettings::Tilt);
+void CubeGame::Update(const GameTime& gameTime) {
+    sceneSeconds_ = gameTime.TotalGameTime.TotalSeconds();
+    world_ = Matrix::CreateRotationY(SceneSettings::AngleAt(sceneSeconds_)) * Matrix::CreateRotationX(SceneSettings::Tilt);
 }
 
-void CubeGame::Draw() {
-    fxport::GraphicsDevice& device = *device_;
+void CubeGame::Draw(const GameTime& gameTime) {
+    (void)gameTime;
+    fxport::GraphicsDevice& device = *GraphicsDevice;
 
-    // 1. The model into the scene target.
+    // 1. The model into the scene target, with its BasicEffects.
     device.SetRenderTarget(*sceneTarget_);
     device.Clear(Color::CornflowerBlue);
     device.BlendState = BlendState::Opaque;
     device.DepthStencilState = DepthStencilState::Default;
     device.RasterizerState = RasterizerState::CullCounterClockwise;
-    std::vector<Matrix> transforms(std::size_t(cube_->Bones.Count()));
-    cube_->CopyAbsoluteBoneTransformsTo(transforms);
-    sceneEffect_->Parameters["View"].SetValue(view_);
-    sceneEffect_->Parameters["Projection"].SetValue(projection_);
-    for (ModelMesh& mesh : cube_->Meshes) {
-        sceneEffect_->Parameters["World"].SetValue(transforms[std::size_t(mesh.ParentBone->Index)] * world_);
-        for (ModelMeshPart& part : mesh.MeshParts) {
-            device.SetVertexBuffer(part.VertexBuffer, part.VertexOffset);
-            device.Indices = part.IndexBuffer;
-            sceneEffect_->CurrentTechnique->Passes[0].Apply();
-            device.DrawIndexedPrimitives(PrimitiveType::TriangleList, 0, 0, part.NumVertices, part.StartIndex,
-                                         part.PrimitiveCount);
-        }
-    }
+    cube_->Draw(world_, view_, projection_);
 
-    // 2. Post-process onto the back buffer: SpriteBatch with a custom pixel shader.
-    device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
-    device.Clear(Color::Black);
+    // 2. Colour grading into a second target: SpriteBatch with a custom pixel shader.
+    device.SetRenderTarget(*gradedTarget_);
     spriteBatch_->Begin(SpriteSortMode::Immediate, BlendState::Opaque, SamplerState::PointClamp, DepthStencilState::None,
                         RasterizerState::CullNone, *postProcess_);
     spriteBatch_->Draw(*sceneTarget_, Vector2(0, 0), Color::White);
+    spriteBatch_->End();
+
+    // 3. Scan lines onto the back buffer.
+    device.SetRenderTarget(nullptr);
+    spriteBatch_->Begin(SpriteSortMode::Immediate, BlendState::Opaque, SamplerState::PointClamp, DepthStencilState::None,
+                        RasterizerState::CullNone, *scanlines_);
+    spriteBatch_->Draw(*gradedTarget_, Vector2(0, 0), Color::White);
     spriteBatch_->End();
 }
 

@@ -17,7 +17,7 @@ namespace {
 using Vec3 = std::array<double, 3>;
 using Mat3 = std::array<Vec3, 3>;  // row-vector convention, as XNA: v' = v * M
 
-constexpr int kTolerance = 2;  // 8-bit steps: two quantisations (scene target, back buffer)
+constexpr int kTolerance = 2;  // 8-bit steps: three quantisations (scene, graded, back buffer)
 
 Vec3 times(const Vec3& v, const Mat3& m) {
     Vec3 r{};
@@ -97,12 +97,15 @@ FrameCheck checkFrame(const std::vector<fxport::Color>& pixels, int width, int h
     FrameCheck result;
     const double aspect = double(width) / double(height);
     const Mat3 modelToWorld = times(rotationY(double(SceneSettings::AngleAt(totalSeconds))), rotationX(double(SceneSettings::Tilt)));
-    // Lighting.fxh and Scene.fx's defaults.
+    // BasicEffect lit by CubeGame's light (XNA's equation: DiffuseColor * (ambient + sum of
+    // max(N.L, 0) * light diffuse), no emissive, no specular), the glTF material's base colour,
+    // Grading.fxh's and Scanlines.fx's defaults.
     const Vec3 light{-0.5, -0.7, -0.5};
     const double lightLength = std::sqrt(dot(light, light));
     const Vec3 toLight{-light[0] / lightLength, -light[1] / lightLength, -light[2] / lightLength};
     const Vec3 baseColor{0.9, 0.55, 0.2};
-    const double ambient = 0.25, desaturation = 0.3, vignette = 0.8;
+    const double ambient = SceneSettings::Ambient, lightDiffuse = SceneSettings::LightDiffuse;
+    const double desaturation = 0.3, vignette = 0.8, scanlineStrength = 0.15;
     const Vec3 cornflowerBlue{100, 149, 237};
 
     for (int py = 0; py < height; ++py)
@@ -124,20 +127,23 @@ FrameCheck checkFrame(const std::vector<fxport::Color>& pixels, int width, int h
                 ++result.backgroundPixels;
             } else {
                 Vec3 normal = times(hit.modelNormal, modelToWorld);
-                double lambert = ambient + (1 - ambient) * std::clamp(dot(normal, toLight), 0.0, 1.0);
+                double lambert = ambient + lightDiffuse * std::max(dot(normal, toLight), 0.0);
                 for (int c = 0; c < 3; ++c) scene[std::size_t(c)] = byte(baseColor[std::size_t(c)] * lambert);
                 ++result.cubePixels;
             }
-            // PostProcess.fx on the 8-bit scene; SpriteBatch gives pixel (px, py) the texel's centre.
+            // PostProcess.fx on the 8-bit scene into the 8-bit graded target, then Scanlines.fx;
+            // SpriteBatch gives pixel (px, py) the texel's centre.
             Vec3 s{scene[0] / 255, scene[1] / 255, scene[2] / 255};
             double grey = dot(s, Vec3{0.299, 0.587, 0.114});
             double u = (px + 0.5) / width - 0.5, v = (py + 0.5) / height - 0.5;
             double darken = std::clamp(1 - vignette * 2 * (u * u + v * v), 0.0, 1.0);
+            double scanline = 1 - scanlineStrength * (py % 2);
             const int got3[3] = {got.R, got.G, got.B};
             ++result.compared;
             bool mismatch = false;
             for (int c = 0; c < 3; ++c) {
-                double expected = byte((s[std::size_t(c)] + (grey - s[std::size_t(c)]) * desaturation) * darken);
+                double graded = byte((s[std::size_t(c)] + (grey - s[std::size_t(c)]) * desaturation) * darken);
+                double expected = byte(graded / 255 * scanline);
                 int difference = std::abs(got3[c] - int(expected));
                 result.maxDifference = std::max(result.maxDifference, difference);
                 mismatch = mismatch || difference > kTolerance;

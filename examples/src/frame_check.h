@@ -1,5 +1,6 @@
 // The example's pixel check: what its frame must look like, computed on the CPU in double precision
-// by ray-casting the cube (not by rasterising it), then the post-process applied to 8-bit values.
+// by ray-casting the cube (not by rasterising it), lit with XNA's BasicEffect equation, then the
+// two post effects applied to 8-bit values as the render targets hold them.
 #pragma once
 
 #include <string>

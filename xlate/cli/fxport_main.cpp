@@ -146,11 +146,6 @@ bool writeAtomically(const std::string& path, const std::string& text, std::stri
     return true;
 }
 
-// A usage error: one line naming the option (as typed) and the value.
-struct UsageError {
-    std::string message;
-};
-
 // fxc's switches (fxc /?) beside ours. An argument with an attached value (/Tps_3_0, /DNAME=1,
 // /Foout.fxo) is a switch only when it is not a path: its first component (/tmp, /home) is not a
 // folder at the root, so absolute paths keep working.
