@@ -38,6 +38,7 @@ void Configure(Game1& game, const RunOptions& options) {
     game.demo.pointShadowMapSize = options.pointShadowMapSize;
     game.demo.ssao = options.ssao;
     game.demo.ssaoHalfResolution = options.ssaoHalfResolution;
+    game.demo.reuseShadowMaps = options.reuseShadowMaps;
     // --explain: every effect compiled by xlate in this process, so that the load times compare.
     if (options.explain) game.Content.effectOptions.useCache = false;
     game.Content.effectOptions.defines = options.defines;
@@ -210,6 +211,8 @@ int RunDeferredProgram(int argc, char** argv) {
             options.ssao = false;
         } else if (arg == "--ssao-half") {
             options.ssaoHalfResolution = true;
+        } else if (arg == "--no-shadow-cache") {
+            options.reuseShadowMaps = false;
         } else if (arg == "--explain") {
             options.explain = true;
         } else if (arg == "--targets") {
@@ -246,7 +249,7 @@ FXDEMO_PROGRAM(deferred,
                "                       [--camera PX,PY,PZ,TX,TY,TZ] [--ssao RADIUS,SCALE] [--lights dsp]\n"
                "                       [--no-debug-views] [--targets] [--[no-]sync-passes] [--content DIR] [--hlsl DIR]\n"
                "                       [--gbuffer tutorial|color8|float32] [--spot-shadow N] [--point-shadow N]\n"
-               "                       [--no-ssao] [--ssao-half] [--explain]\n"
+               "                       [--no-ssao] [--ssao-half] [--no-shadow-cache] [--explain]\n"
                "  \"Deferred Rendering in XNA 4\" (seed 000), the last chapter: writes DIR/final.png and DIR/debug.png.\n"
                "  (final.png: the back buffer; debug.png: every intermediate target; prints each pass's GPU time.)\n"
                "  --size WxH      back buffer size (800x600)      --frames N   frames to run headless (3)\n"
@@ -261,5 +264,7 @@ FXDEMO_PROGRAM(deferred,
                "  --gbuffer F     the G-buffer's formats: tutorial (Rgba64, Rgba64, Vector2), color8, float32\n"
                "  --spot-shadow N (256..4096, 2048) / --point-shadow N (64..1024, 256): shadow map sizes\n"
                "  --no-ssao / --ssao-half  no SSAO / SSAO and its blur at half size\n"
+               "  --no-shadow-cache  redraw every shadow map every frame (default: a map whose light and\n"
+               "                  casters did not move is kept; the same image)\n"
                "  --explain       print the effects, targets (bytes) and passes built and left out",
                TheCansinDeferredRenderer::RunDeferredProgram);

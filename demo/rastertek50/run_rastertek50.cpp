@@ -82,6 +82,7 @@ fxport::demo::BuildReport ReportBuild(ApplicationClass& application, const fxpor
     report.addEffect("rastertek/light.fx", *application.GetLightShader()->GetEffect());
     for (int i = 0; i < BUFFER_COUNT; ++i) report.addTarget(*application.GetDeferredBuffers()->GetShaderResourceView(i));
     report.addPasses(timer);
+    report.addClears(*application.GetD3D()->GetDevice());
     return report;
 }
 
