@@ -145,15 +145,36 @@ void LightRenderer::PrepareResources() {
 // is pixDist - Bias < min(Radius, dist)); each blur tap reaches at most 6 * max(|minBlur|, |maxBlur|)
 // pixels along its axis, plus one for the bilinear footprint, and a kernel over black gives black;
 // the additive accumulation of black (alpha 1 on a light map whose alpha is 1) changes nothing. Two
-// pixels more absorb the pixel-centre and float rounding of the shaders' distances.
+// pixels more absorb the pixel-centre and float rounding of the shaders' distances. A spot light
+// lights only pixels whose angle (SpotLight.fx: 0 = +y, growing towards +x) is within HalfOuterArc
+// of CenterAngle, so its reach is the bounding box of that sector, not of the whole disc.
 Rectangle LightRenderer::LightReach(const Light& light) const {
     const float blurReach = 6.f * std::max(std::fabs(minBlur), std::fabs(maxBlur)) + 1.f;
-    const float reach = light.radius + std::max(lightBias, 0.f) + blurReach + 2.f;
+    const double r = double(light.radius) + std::max(double(lightBias), 0.0);
+    // Offsets from the light of the lit region's bounding box (before the blur's reach).
+    double lx = -r, ly = -r, hx = r, hy = r;
+    const auto* spot = dynamic_cast<const SpotLight*>(&light);
+    const double half = spot ? double(spot->outerAngle) / 2.0 : M_PI;
+    if (spot && half < M_PI) {
+        const double center = spot->GetBiasedAngle();
+        lx = ly = hx = hy = 0;  // the apex
+        auto include = [&](double angle) {
+            const double x = r * std::sin(angle), y = r * std::cos(angle);
+            lx = std::min(lx, x), hx = std::max(hx, x), ly = std::min(ly, y), hy = std::max(hy, y);
+        };
+        include(center - half);
+        include(center + half);
+        for (double axis : {0.0, M_PI / 2, M_PI, 3 * M_PI / 2}) {  // the circle's extremes inside the arc
+            double d = std::fmod(std::fabs(axis - center), 2 * M_PI);
+            if (std::min(d, 2 * M_PI - d) < half) include(axis);
+        }
+    }
+    const double pad = double(blurReach) + 2.0;
     const int W = fullScreen.Width, H = fullScreen.Height;
-    const int x0 = std::clamp(int(std::floor(light.Position.X - reach)), 0, W);
-    const int y0 = std::clamp(int(std::floor(light.Position.Y - reach)), 0, H);
-    const int x1 = std::clamp(int(std::ceil(light.Position.X + reach)) + 1, 0, W);
-    const int y1 = std::clamp(int(std::ceil(light.Position.Y + reach)) + 1, 0, H);
+    const int x0 = std::clamp(int(std::floor(light.Position.X + lx - pad)), 0, W);
+    const int y0 = std::clamp(int(std::floor(light.Position.Y + ly - pad)), 0, H);
+    const int x1 = std::clamp(int(std::ceil(light.Position.X + hx + pad)) + 1, 0, W);
+    const int y1 = std::clamp(int(std::ceil(light.Position.Y + hy + pad)) + 1, 0, H);
     return Rectangle(x0, y0, x1 - x0, y1 - y0);
 }
 
