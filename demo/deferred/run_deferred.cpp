@@ -88,6 +88,8 @@ int RunDeferred(const RunOptions& options) {
     game.demo.gpuTimer = timer.get();
     const bool sync = options.syncPasses.value_or(options.platform == "osmesa");
     PassTimer::syncDevice = sync ? game.GraphicsDevice : nullptr;
+    fxport::demo::PassBound::device = game.GraphicsDevice;
+    fxport::demo::PassBound::fillRateGBps = options.fillRateGBps;
     fxport::demo::FiniteCheckScope finite(game.GraphicsDevice, options.checkFinite);
 
     std::printf("fxdemo deferred: %dx%d on %s (%s)\n", options.width, options.height, options.platform.c_str(),
@@ -107,10 +109,12 @@ int RunDeferred(const RunOptions& options) {
     });
 
     PassTimer::syncDevice = nullptr;
+    fxport::demo::PassBound::device = nullptr;
     std::printf("%d frames; median GPU time per pass%s:\n", game.FrameCount(),
                 sync ? " (each pass finished before and after: --sync-passes)" : "");
     for (const GpuTimer::Section& section : timer->Sections())
-        std::printf("  %-12s %9.3f ms\n", section.name.c_str(), section.medianMs());
+        std::printf("  %-12s %9.3f ms%s\n", section.name.c_str(), section.medianMs(),
+                    fxport::demo::PassBound::columns(section.name, section.medianMs()).c_str());
 
     if (options.platform != "glfw" || options.outDirGiven) {
         std::filesystem::create_directories(options.outDir);
@@ -238,6 +242,7 @@ int RunDeferredProgram(int argc, char** argv) {
     options.outDirGiven = common.outDirGiven;
     options.platform = common.platform;
     options.checkFinite = common.checkFinite;
+    options.fillRateGBps = common.fillRateGBps;
     options.defines = common.defines;
     return RunDeferred(options);
 }

@@ -308,6 +308,8 @@ int runLighting2d(int argc, char** argv) {
     if (check) game.checkCapture = &checkCapture;
     const bool sync = platformName == "osmesa";
     PassTimer::syncDevice = sync ? game.GraphicsDevice : nullptr;
+    fxport::demo::PassBound::device = game.GraphicsDevice;
+    fxport::demo::PassBound::fillRateGBps = common.fillRateGBps;
     fxport::demo::FiniteCheckScope finite(game.GraphicsDevice, common.checkFinite);
     std::printf("fxdemo lighting2d: %dx%d on %s (%s); %zu spot lights, %zu point lights\n", width, height,
                 platformName.c_str(), game.GraphicsDevice->rendererName().c_str(),
@@ -324,10 +326,12 @@ int runLighting2d(int argc, char** argv) {
                      return true;
                  });
     PassTimer::syncDevice = nullptr;
+    fxport::demo::PassBound::device = nullptr;
     std::printf("%d frames; median GPU time per pass (per light for the per-light steps; frame = the whole frame)%s:\n", game.FrameCount(),
                 sync ? " (each pass finished before and after)" : "");
     for (const GpuTimer::Section& section : timer->Sections())
-        std::printf("  %-14s %9.3f ms\n", section.name.c_str(), section.medianMs());
+        std::printf("  %-14s %9.3f ms%s\n", section.name.c_str(), section.medianMs(),
+                    fxport::demo::PassBound::columns(section.name, section.medianMs()).c_str());
 
     // Before the images: the check reads the back buffer.
     int status = 0;
