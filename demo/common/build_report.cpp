@@ -123,6 +123,21 @@ void BuildReport::addPasses(const GpuTimer& timer) {
         if (section.name != "frame") passes.push_back(section.name);
 }
 
+void BuildReport::addClears(const GraphicsDevice& device) {
+    hasClears = true;
+    clears = device.clearStatistics();
+}
+
+namespace {
+
+void printClears(std::FILE* out, const char* label, const BuildReport& r) {
+    if (!r.hasClears) return;
+    std::fprintf(out, "  %-12s requested %6ld  executed %6ld  replaced %6ld  dropped %6ld\n", label, r.clears.requested,
+                 r.clears.executed, r.clears.replaced, r.clears.dropped);
+}
+
+}  // namespace
+
 void PrintExplain(std::FILE* out, const BuildReport& built, const BuildReport& all, const char* allFeaturesText) {
     std::fprintf(out, "explain: what this scene built, against the all-features scene built by the same code in this run\n"
                       "  all-features: %s\n",
@@ -174,6 +189,14 @@ void PrintExplain(std::FILE* out, const BuildReport& built, const BuildReport& a
         ++leftOut;
     }
     std::fprintf(out, "%s\n", leftOut ? "" : " none");
+
+    if (built.hasClears || all.hasClears) {
+        // Channel clears (colour, depth, stencil each count; SetRenderTargets' too) over every frame
+        // the device drew; executed + replaced + dropped = requested once nothing is pending.
+        std::fprintf(out, "clears (channel clears over the run's frames; PresentationParameters::DeferClears):\n");
+        printClears(out, "this scene", built);
+        if (&all != &built) printClears(out, "all-features", all);
+    }
 }
 
 }  // namespace fxport::demo

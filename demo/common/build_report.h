@@ -34,6 +34,9 @@ struct BuildReport {
     std::vector<EffectEntry> effects;
     std::vector<TargetEntry> targets;
     std::vector<std::string> passes;  // GpuTimer sections that ran, in order ("frame" left out)
+    // GraphicsDevice::clearStatistics() since the device was made (issue 16), once addClears ran.
+    bool hasClears = false;
+    ClearStatistics clears;
 
     std::int64_t targetBytes() const;
     double effectLoadMs() const;
@@ -50,6 +53,7 @@ struct BuildReport {
     void addTarget(const RenderTarget2D& target);
     void addTarget(const RenderTargetCube& target);
     void addPasses(const GpuTimer& timer);
+    void addClears(const GraphicsDevice& device);
 };
 
 // Bytes a render target holds: width x height x faces x the format's texel size, plus its depth

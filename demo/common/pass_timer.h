@@ -15,6 +15,7 @@
 #include <exception>
 
 #include "common/finite_check.h"
+#include "common/pass_bound.h"
 #include "fxport/graphics/gpu_timer.h"
 #include "fxport/graphics/graphics_device.h"
 
@@ -24,6 +25,7 @@ class PassTimer {
 public:
     PassTimer(GpuTimer* timer, const char* name) : timer_(timer), name_(name) {
         if (finiteCheck) finiteCheck->beginPass(name_);
+        PassBound::begin();  // both mark the bound targets at the same point
         if (!timer_) return;
         if (syncDevice) syncDevice->finish();
         timer_->Begin(name);
@@ -34,6 +36,7 @@ public:
             if (syncDevice) syncDevice->finish();
             timer_->End();
         }
+        PassBound::end(name_);
         if (finiteCheck && std::uncaught_exceptions() == 0) throwIfNonFinite(finiteCheck->endPass());
     }
     PassTimer(const PassTimer&) = delete;

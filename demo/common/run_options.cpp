@@ -84,6 +84,15 @@ OptionResult parseCommonOption(int argc, char** argv, int& i, CommonOptions& o, 
         o.platform = "glfw";
     } else if (arg == "--check-finite") {
         o.checkFinite = true;
+    } else if (arg == "--fill-rate") {
+        const char* v = value();
+        char* end = nullptr;
+        const double rate = v ? std::strtod(v, &end) : 0;
+        if (!v || *end || !(rate > 0 && rate < 1e6)) {
+            error = wants("--fill-rate", "GB/s of fragment output, a number above 0", v);
+            return OptionResult::Error;
+        }
+        o.fillRateGBps = rate;
     } else if (arg == "--define") {
         const char* v = value();
         std::pair<std::string, std::string> define;

@@ -1,6 +1,7 @@
 // The options every fxdemo program shares: --size WxH, --frames N, --out DIR, --gpu, --window,
 // --check-finite (scan every pass's targets for NaN/Inf: common/finite_check.h), --define NAME=VALUE
-// (a #define every effect of the program is compiled with; repeatable).
+// (a #define every effect of the program is compiled with; repeatable), --fill-rate GB/s (the timing
+// table's bound per pass: common/pass_bound.h).
 // A program's argument loop hands each argument to parseCommonOption first and handles its own
 // options only when it answers NotMine; after the loop, checkCommonOptions asks the driver what only
 // it knows. Every usage error is one line in one wording (usageError), exit status 2; --help is
@@ -22,6 +23,7 @@ struct CommonOptions {
     bool outDirGiven = false;
     std::string platform = "osmesa"; // --gpu: egl, --window: glfw
     bool checkFinite = false;        // --check-finite
+    double fillRateGBps = 0;         // --fill-rate GB/s: the timing table's bound column (PassBound)
     // --define NAME=VALUE: passed to every effect (EffectOptions::defines), e.g. the stability
     // suite's opt-in fixes: --define 'pow(x, y)=pow(max(x, 1e-30), y)'. Split at the first '='.
     std::vector<std::pair<std::string, std::string>> defines;

@@ -2,4 +2,5 @@
 list(APPEND FXDEMO_SOURCES
   common/build_report.cpp
   common/finite_check.cpp
+  common/pass_bound.cpp
   common/tile_sheet.cpp)

@@ -16,7 +16,11 @@ BuildReport ReportBuild(Game1& game, const GpuTimer* timer) {
     for (auto& light : game.getLightManager().getPointLights())
         if (light->getShadowMap()) report.addTarget(*light->getShadowMap());
     if (timer) report.addPasses(*timer);
+    report.addClears(*game.GraphicsDevice);
     report.lights = game.getDeferredRenderer().getFrameStats();
+    report.shadowMapsDrawn = game.getLightManager().shadowMapsDrawn;
+    report.shadowMapsReused = game.getLightManager().shadowMapsReused;
+    report.reuseShadowMaps = game.getLightManager().reuseShadowMaps;
     return report;
 }
 
@@ -27,6 +31,8 @@ void PrintExplain(std::FILE* out, const BuildReport& built, const BuildReport& a
     const auto& l = built.lights;
     std::fprintf(out, "lights in the last frame: %d directional drawn; spot %d drawn, %d culled; point %d drawn, %d culled\n",
                  l.directionalLightsDrawn, l.spotLightsDrawn, l.spotLightsCulled, l.pointLightsDrawn, l.pointLightsCulled);
+    std::fprintf(out, "shadow maps over the run's frames: %d drawn, %d reused (light and casters unchanged; cache %s)\n",
+                 built.shadowMapsDrawn, built.shadowMapsReused, built.reuseShadowMaps ? "on" : "off, --no-shadow-cache");
 }
 
 }  // namespace TheCansinDeferredRenderer

@@ -13,6 +13,8 @@ namespace TheCansinDeferredRenderer {
 
 struct BuildReport : fxport::demo::BuildReport {
     DeferredRenderer::FrameStats lights;
+    int shadowMapsDrawn = 0, shadowMapsReused = 0;  // LightManager's counts over the run's frames
+    bool reuseShadowMaps = true;
 };
 
 // `timer`: the game's GpuTimer (Finish()ed), for the passes; nullptr leaves passes empty.

@@ -91,6 +91,7 @@ void Game1::LoadContent() {
 
     //Create Light Manager
     lightManager = std::make_unique<Lights::LightManager>(Content);
+    lightManager->reuseShadowMaps = demo.reuseShadowMaps;
 
     //Load SpotLight Cookies
     Texture2D* spotCookie = Content.Load<Texture2D>("SpotCookie");

@@ -66,6 +66,7 @@ public:
         int pointShadowMapSize = 256;   // cube face size, 64..1024 (the seed's point light: 256)
         bool ssao = true;               // false: no SSAO targets/effects at all (the image is the light composition)
         bool ssaoHalfResolution = false;  // SSAO and its blur at half the render size
+        bool reuseShadowMaps = true;      // issue 16: LightManager::reuseShadowMaps (the same image)
     };
     DemoSettings demo;
     DeferredRenderer& getDeferredRenderer() { return *deferredRenderer; }

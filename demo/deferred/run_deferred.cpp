@@ -38,6 +38,7 @@ void Configure(Game1& game, const RunOptions& options) {
     game.demo.pointShadowMapSize = options.pointShadowMapSize;
     game.demo.ssao = options.ssao;
     game.demo.ssaoHalfResolution = options.ssaoHalfResolution;
+    game.demo.reuseShadowMaps = options.reuseShadowMaps;
     // --explain: every effect compiled by xlate in this process, so that the load times compare.
     if (options.explain) game.Content.effectOptions.useCache = false;
     game.Content.effectOptions.defines = options.defines;
@@ -87,6 +88,8 @@ int RunDeferred(const RunOptions& options) {
     game.demo.gpuTimer = timer.get();
     const bool sync = options.syncPasses.value_or(options.platform == "osmesa");
     PassTimer::syncDevice = sync ? game.GraphicsDevice : nullptr;
+    fxport::demo::PassBound::device = game.GraphicsDevice;
+    fxport::demo::PassBound::fillRateGBps = options.fillRateGBps;
     fxport::demo::FiniteCheckScope finite(game.GraphicsDevice, options.checkFinite);
 
     std::printf("fxdemo deferred: %dx%d on %s (%s)\n", options.width, options.height, options.platform.c_str(),
@@ -106,10 +109,12 @@ int RunDeferred(const RunOptions& options) {
     });
 
     PassTimer::syncDevice = nullptr;
+    fxport::demo::PassBound::device = nullptr;
     std::printf("%d frames; median GPU time per pass%s:\n", game.FrameCount(),
                 sync ? " (each pass finished before and after: --sync-passes)" : "");
     for (const GpuTimer::Section& section : timer->Sections())
-        std::printf("  %-12s %9.3f ms\n", section.name.c_str(), section.medianMs());
+        std::printf("  %-12s %9.3f ms%s\n", section.name.c_str(), section.medianMs(),
+                    fxport::demo::PassBound::columns(section.name, section.medianMs()).c_str());
 
     if (options.platform != "glfw" || options.outDirGiven) {
         std::filesystem::create_directories(options.outDir);
@@ -210,6 +215,8 @@ int RunDeferredProgram(int argc, char** argv) {
             options.ssao = false;
         } else if (arg == "--ssao-half") {
             options.ssaoHalfResolution = true;
+        } else if (arg == "--no-shadow-cache") {
+            options.reuseShadowMaps = false;
         } else if (arg == "--explain") {
             options.explain = true;
         } else if (arg == "--targets") {
@@ -235,6 +242,7 @@ int RunDeferredProgram(int argc, char** argv) {
     options.outDirGiven = common.outDirGiven;
     options.platform = common.platform;
     options.checkFinite = common.checkFinite;
+    options.fillRateGBps = common.fillRateGBps;
     options.defines = common.defines;
     return RunDeferred(options);
 }
@@ -246,7 +254,7 @@ FXDEMO_PROGRAM(deferred,
                "                       [--camera PX,PY,PZ,TX,TY,TZ] [--ssao RADIUS,SCALE] [--lights dsp]\n"
                "                       [--no-debug-views] [--targets] [--[no-]sync-passes] [--content DIR] [--hlsl DIR]\n"
                "                       [--gbuffer tutorial|color8|float32] [--spot-shadow N] [--point-shadow N]\n"
-               "                       [--no-ssao] [--ssao-half] [--explain]\n"
+               "                       [--no-ssao] [--ssao-half] [--no-shadow-cache] [--explain]\n"
                "  \"Deferred Rendering in XNA 4\" (seed 000), the last chapter: writes DIR/final.png and DIR/debug.png.\n"
                "  (final.png: the back buffer; debug.png: every intermediate target; prints each pass's GPU time.)\n"
                "  --size WxH      back buffer size (800x600)      --frames N   frames to run headless (3)\n"
@@ -261,5 +269,7 @@ FXDEMO_PROGRAM(deferred,
                "  --gbuffer F     the G-buffer's formats: tutorial (Rgba64, Rgba64, Vector2), color8, float32\n"
                "  --spot-shadow N (256..4096, 2048) / --point-shadow N (64..1024, 256): shadow map sizes\n"
                "  --no-ssao / --ssao-half  no SSAO / SSAO and its blur at half size\n"
+               "  --no-shadow-cache  redraw every shadow map every frame (default: a map whose light and\n"
+               "                  casters did not move is kept; the same image)\n"
                "  --explain       print the effects, targets (bytes) and passes built and left out",
                TheCansinDeferredRenderer::RunDeferredProgram);

@@ -5,6 +5,7 @@ list(APPEND FXDEMO_SOURCES
   deferred/Lights/directional_light.cpp
   deferred/Lights/light_manager.cpp
   deferred/Lights/point_light.cpp
+  deferred/Lights/shadow_map_key.cpp
   deferred/Lights/spot_light.cpp
   deferred/build_report.cpp
   deferred/debug_sheet.cpp

@@ -10,6 +10,7 @@ BuildReport ReportBuild(const ContentManager& content, const LightRenderer& rend
                                &renderer.horizontalBlurTarget, &renderer.verticalBlurTarget})
         if (*target) report.addTarget(**target);
     if (timer) report.addPasses(*timer);
+    report.addClears(renderer.GraphicsDevice);
     report.spotLights = int(renderer.spotLights.size());
     report.pointLights = int(renderer.pointLights.size());
     return report;

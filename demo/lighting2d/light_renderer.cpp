@@ -1,5 +1,7 @@
 #include "lighting2d/light_renderer.h"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace _2DLightingSystem {
@@ -35,6 +37,9 @@ void LightRenderer::Initialize() {
     collapseBlendState.ColorDestinationBlend = Blend::One;
     collapseBlendState.AlphaSourceBlend = Blend::One;
     collapseBlendState.AlphaDestinationBlend = Blend::One;
+
+    scissorState = RasterizerState::CullCounterClockwise;
+    scissorState.ScissorTestEnable = true;
 
     postProcessTarget = std::make_unique<RenderTarget2D>(GraphicsDevice, W, H);
     horizontalBlurTarget = std::make_unique<RenderTarget2D>(GraphicsDevice, W, H);
@@ -135,6 +140,50 @@ void LightRenderer::PrepareResources() {
     GraphicsDevice.Clear(Color::Black);
 }
 
+// The pixels a light's screen-space steps can change. PointLight.fx / SpotLight.fx write black
+// (0,0,0,1), the light map's clear colour, wherever pixDist - Bias >= Radius (their light condition
+// is pixDist - Bias < min(Radius, dist)); each blur tap reaches at most 6 * max(|minBlur|, |maxBlur|)
+// pixels along its axis, plus one for the bilinear footprint, and a kernel over black gives black;
+// the additive accumulation of black (alpha 1 on a light map whose alpha is 1) changes nothing. Two
+// pixels more absorb the pixel-centre and float rounding of the shaders' distances. A spot light
+// lights only pixels whose angle (SpotLight.fx: 0 = +y, growing towards +x) is within HalfOuterArc
+// of CenterAngle, so its reach is the bounding box of that sector, not of the whole disc.
+Rectangle LightRenderer::LightReach(const Light& light) const {
+    const float blurReach = 6.f * std::max(std::fabs(minBlur), std::fabs(maxBlur)) + 1.f;
+    const double r = double(light.radius) + std::max(double(lightBias), 0.0);
+    // Offsets from the light of the lit region's bounding box (before the blur's reach).
+    double lx = -r, ly = -r, hx = r, hy = r;
+    const auto* spot = dynamic_cast<const SpotLight*>(&light);
+    const double half = spot ? double(spot->outerAngle) / 2.0 : M_PI;
+    if (spot && half < M_PI) {
+        const double center = spot->GetBiasedAngle();
+        lx = ly = hx = hy = 0;  // the apex
+        auto include = [&](double angle) {
+            const double x = r * std::sin(angle), y = r * std::cos(angle);
+            lx = std::min(lx, x), hx = std::max(hx, x), ly = std::min(ly, y), hy = std::max(hy, y);
+        };
+        include(center - half);
+        include(center + half);
+        for (double axis : {0.0, M_PI / 2, M_PI, 3 * M_PI / 2}) {  // the circle's extremes inside the arc
+            double d = std::fmod(std::fabs(axis - center), 2 * M_PI);
+            if (std::min(d, 2 * M_PI - d) < half) include(axis);
+        }
+    }
+    const double pad = double(blurReach) + 2.0;
+    const int W = fullScreen.Width, H = fullScreen.Height;
+    const int x0 = std::clamp(int(std::floor(light.Position.X + lx - pad)), 0, W);
+    const int y0 = std::clamp(int(std::floor(light.Position.Y + ly - pad)), 0, H);
+    const int x1 = std::clamp(int(std::ceil(light.Position.X + hx + pad)) + 1, 0, W);
+    const int y1 = std::clamp(int(std::ceil(light.Position.Y + hy + pad)) + 1, 0, H);
+    return Rectangle(x0, y0, x1 - x0, y1 - y0);
+}
+
+const RasterizerState* LightRenderer::ScissorTo(const Rectangle& reach) {
+    if (!scissorLights) return nullptr;
+    GraphicsDevice.ScissorRectangle = reach;
+    return &scissorState;
+}
+
 void LightRenderer::UnwrapShadowCasters(const SpotLight& sLight, float lightDirAngle) {
     unwrapSpotlight->Parameters["LightPos"].SetValue(sLight.Position);
     unwrapSpotlight->Parameters["MinAngle"].SetValue(lightDirAngle - sLight.outerAngle / 2.f);
@@ -183,8 +232,8 @@ void LightRenderer::CreateLightMap(const SpotLight& sLight, float lightDirAngle)
 
     GraphicsDevice.SetRenderTarget(postProcessTarget.get());
     GraphicsDevice.Clear(Color::Black);
-    spriteBatch->Begin(SpriteSortMode::Deferred, BlendState::Opaque, SamplerState::PointClamp, nullptr, nullptr,
-                       spotLight);
+    spriteBatch->Begin(SpriteSortMode::Deferred, BlendState::Opaque, SamplerState::PointClamp, nullptr,
+                       ScissorTo(LightReach(sLight)), spotLight);
     spriteBatch->Draw(*occlusionMap, fullScreen, Color::White);
     spriteBatch->End();
 }
@@ -196,8 +245,8 @@ void LightRenderer::CreateLightMap(const PointLight& pLight) {
 
     GraphicsDevice.SetRenderTarget(postProcessTarget.get());
     GraphicsDevice.Clear(Color::Black);
-    spriteBatch->Begin(SpriteSortMode::Deferred, BlendState::Opaque, SamplerState::PointClamp, nullptr, nullptr,
-                       pointLight);
+    spriteBatch->Begin(SpriteSortMode::Deferred, BlendState::Opaque, SamplerState::PointClamp, nullptr,
+                       ScissorTo(LightReach(pLight)), pointLight);
     spriteBatch->Draw(*occlusionMap, fullScreen, Color::White);
     spriteBatch->End();
 }
@@ -205,22 +254,26 @@ void LightRenderer::CreateLightMap(const PointLight& pLight) {
 void LightRenderer::BlurLightMaps(const Light& light) {
     horizontalBlur->Parameters["LightPos"].SetValue(light.Position);
     horizontalBlur->Parameters["Radius"].SetValue(light.radius);
+    const Rectangle reach = LightReach(light);
     GraphicsDevice.SetRenderTarget(horizontalBlurTarget.get());
-    spriteBatch->Begin(SpriteSortMode::Deferred, BlendState::Opaque, nullptr, nullptr, nullptr, horizontalBlur);
+    // fxport: scissored, the pixels outside the reach keep this clear: the black the blur writes there.
+    if (scissorLights) GraphicsDevice.Clear(Color::Black);
+    spriteBatch->Begin(SpriteSortMode::Deferred, BlendState::Opaque, nullptr, nullptr, ScissorTo(reach), horizontalBlur);
     spriteBatch->Draw(*postProcessTarget, fullScreen, Color::White);
     spriteBatch->End();
 
     verticalBlur->Parameters["LightPos"].SetValue(light.Position);
     verticalBlur->Parameters["Radius"].SetValue(light.radius);
     GraphicsDevice.SetRenderTarget(verticalBlurTarget.get());
-    spriteBatch->Begin(SpriteSortMode::Deferred, BlendState::Opaque, nullptr, nullptr, nullptr, verticalBlur);
+    if (scissorLights) GraphicsDevice.Clear(Color::Black);
+    spriteBatch->Begin(SpriteSortMode::Deferred, BlendState::Opaque, nullptr, nullptr, ScissorTo(reach), verticalBlur);
     spriteBatch->Draw(*horizontalBlurTarget, fullScreen, Color::White);
     spriteBatch->End();
 }
 
 void LightRenderer::AccumulateLightMaps(const Light& light) {
     GraphicsDevice.SetRenderTarget(lightMap.get());  // PreserveContents: the lights so far stay
-    spriteBatch->Begin(SpriteSortMode::Deferred, BlendState::Additive, nullptr, nullptr, nullptr);
+    spriteBatch->Begin(SpriteSortMode::Deferred, BlendState::Additive, nullptr, nullptr, ScissorTo(LightReach(light)));
     spriteBatch->Draw(*verticalBlurTarget, fullScreen, light.color);
     spriteBatch->End();
 }

@@ -73,6 +73,11 @@ public:
     // (0: the screen width, as the seed), and the format of those two targets (the seed's
     // HdrBlendable; Color stores the distances in 8 bits, which the seed estimates at ~6 px at 720p).
     int rayCount = 0;
+    // fxport (issue 16): the per-light screen-space steps (light map, both blurs, accumulation)
+    // draw only inside the light's reach (a scissor rectangle, LightReach); outside it they would
+    // write the clear colour, which the targets are cleared to. Same image; false draws them over
+    // the whole screen as the seed does (fxdemo lighting2d --no-light-scissor).
+    bool scissorLights = true;
     SurfaceFormat occlusionFormat = SurfaceFormat::HdrBlendable;
     int RayCount() const { return unwrapTarget ? unwrapTarget->Width() : 0; }
 
@@ -93,6 +98,11 @@ private:
     void BlurLightMaps(const Light& light);
     void AccumulateLightMaps(const Light& light);
     void RenderFinalScene();
+    Rectangle LightReach(const Light& light) const;
+    // The rasterizer state of a per-light screen-space step: nullptr (SpriteBatch's default) or
+    // the default with the scissor test on, ScissorRectangle set to `reach`.
+    const RasterizerState* ScissorTo(const Rectangle& reach);
+    RasterizerState scissorState;
 
     Rectangle fullScreen;
     Vector2 screenDims;

@@ -256,6 +256,7 @@ int runLighting2d(int argc, char** argv) {
     common.outDir = "out/lighting2d";
     bool check = false;
     bool explain = false;
+    bool lightScissor = true;
     std::string lights = "sp";
     for (int i = 1; i < argc; ++i) {
         std::string error;
@@ -265,6 +266,10 @@ int runLighting2d(int argc, char** argv) {
         }
         if (std::string(argv[i]) == "--explain") {
             explain = true;
+            continue;
+        }
+        if (std::string(argv[i]) == "--no-light-scissor") {
+            lightScissor = false;
             continue;
         }
         if (std::string(argv[i]) == "--lights") {
@@ -295,6 +300,7 @@ int runLighting2d(int argc, char** argv) {
     if (explain) game.Content.effectOptions.useCache = false;
     game.Content.effectOptions.defines = common.defines;
     game.Start();
+    game.lightRenderer->scissorLights = lightScissor;
     auto timer = std::make_unique<GpuTimer>(*game.GraphicsDevice);
     game.gpuTimer = timer.get();
     game.lightRenderer->gpuTimer = timer.get();
@@ -302,6 +308,8 @@ int runLighting2d(int argc, char** argv) {
     if (check) game.checkCapture = &checkCapture;
     const bool sync = platformName == "osmesa";
     PassTimer::syncDevice = sync ? game.GraphicsDevice : nullptr;
+    fxport::demo::PassBound::device = game.GraphicsDevice;
+    fxport::demo::PassBound::fillRateGBps = common.fillRateGBps;
     fxport::demo::FiniteCheckScope finite(game.GraphicsDevice, common.checkFinite);
     std::printf("fxdemo lighting2d: %dx%d on %s (%s); %zu spot lights, %zu point lights\n", width, height,
                 platformName.c_str(), game.GraphicsDevice->rendererName().c_str(),
@@ -318,10 +326,12 @@ int runLighting2d(int argc, char** argv) {
                      return true;
                  });
     PassTimer::syncDevice = nullptr;
+    fxport::demo::PassBound::device = nullptr;
     std::printf("%d frames; median GPU time per pass (per light for the per-light steps; frame = the whole frame)%s:\n", game.FrameCount(),
                 sync ? " (each pass finished before and after)" : "");
     for (const GpuTimer::Section& section : timer->Sections())
-        std::printf("  %-14s %9.3f ms\n", section.name.c_str(), section.medianMs());
+        std::printf("  %-14s %9.3f ms%s\n", section.name.c_str(), section.medianMs(),
+                    fxport::demo::PassBound::columns(section.name, section.medianMs()).c_str());
 
     // Before the images: the check reads the back buffer.
     int status = 0;
@@ -341,11 +351,13 @@ int runLighting2d(int argc, char** argv) {
 
 FXDEMO_PROGRAM(lighting2d,
                "fxdemo lighting2d [--size WxH] [--frames N] [--out DIR] [--gpu] [--window] [--check] [--lights sp]\n"
-               "                         [--explain]\n"
+               "                         [--explain] [--no-light-scissor]\n"
                "  Rabid Lion Games' 2D lighting system (seed 002): writes DIR/final.png and DIR/debug.png.\n"
                "  --size WxH     back buffer size (800x480)      --frames N   frames to run headless\n"
                "  --out DIR      where the images go (out/lighting2d)\n"
                "  --check        compare every light's steps, the light map and the frame with CPU references\n"
                "  --lights sp    keep only the spot (s) and/or point (p) lights\n"
-               "  --explain      print the effects, targets and passes built and left out",
+               "  --explain      print the effects, targets and passes built and left out\n"
+               "  --no-light-scissor  draw each light's light map, blurs and accumulation over the whole\n"
+               "                 screen (default: scissored to the light's reach; the same image)",
                _2DLightingSystem::runLighting2d);

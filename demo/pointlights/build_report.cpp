@@ -11,6 +11,7 @@ BuildReport ReportBuild(Game1& game, const GpuTimer* timer) {
     report.addTarget(renderer.getDepthRT());
     report.addTarget(renderer.getLightRT());
     if (timer) report.addPasses(*timer);
+    report.addClears(*game.GraphicsDevice);
     report.pointLightsDrawn = renderer.insideLights + renderer.outsideLights;
     report.pointLightsCulled = renderer.culledLights;
     return report;

@@ -136,6 +136,8 @@ int runPointLights(int argc, char** argv) {
     game.getRenderer().setGpuTimer(timer.get());
     const bool sync = common.platform == "osmesa";
     PassTimer::syncDevice = sync ? game.GraphicsDevice : nullptr;
+    fxport::demo::PassBound::device = game.GraphicsDevice;
+    fxport::demo::PassBound::fillRateGBps = common.fillRateGBps;
     fxport::demo::FiniteCheckScope finite(game.GraphicsDevice, common.checkFinite);
 
     const Camera& camera = game.getCamera();
@@ -154,6 +156,7 @@ int runPointLights(int argc, char** argv) {
         return true;
     });
     PassTimer::syncDevice = nullptr;
+    fxport::demo::PassBound::device = nullptr;
 
     std::printf("last frame: %d point lights drawn with CullClockwise (camera inside: inner faces), %d with "
                 "CullCounterClockwise, %d outside the view frustum not drawn\n",
@@ -164,7 +167,8 @@ int runPointLights(int argc, char** argv) {
     std::printf("%d frames; median GPU time per pass%s:\n", game.FrameCount(),
                 sync ? " (each pass finished before and after)" : "");
     for (const GpuTimer::Section& section : timer->Sections())
-        std::printf("  %-16s %9.3f ms\n", section.name.c_str(), section.medianMs());
+        std::printf("  %-16s %9.3f ms%s\n", section.name.c_str(), section.medianMs(),
+                    fxport::demo::PassBound::columns(section.name, section.medianMs()).c_str());
 
     int status = 0;
     if (check && !CheckPasses(game, spot, game.demo.time.value_or(0.0))) status = 1;

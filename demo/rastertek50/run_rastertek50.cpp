@@ -82,6 +82,7 @@ fxport::demo::BuildReport ReportBuild(ApplicationClass& application, const fxpor
     report.addEffect("rastertek/light.fx", *application.GetLightShader()->GetEffect());
     for (int i = 0; i < BUFFER_COUNT; ++i) report.addTarget(*application.GetDeferredBuffers()->GetShaderResourceView(i));
     report.addPasses(timer);
+    report.addClears(*application.GetD3D()->GetDevice());
     return report;
 }
 
@@ -125,6 +126,8 @@ int runRastertek50(int argc, char** argv) {
         application.SetGpuTimer(timer.get());
         const bool sync = common.platform == "osmesa";
         fxport::demo::PassTimer::syncDevice = sync ? &device : nullptr;
+        fxport::demo::PassBound::device = &device;
+        fxport::demo::PassBound::fillRateGBps = common.fillRateGBps;
         fxport::demo::FiniteCheckScope finite(&device, common.checkFinite);
         std::printf("fxdemo rastertek50: %dx%d on %s (%s)\n", common.width, common.height, common.platform.c_str(),
                     device.rendererName().c_str());
@@ -132,11 +135,13 @@ int runRastertek50(int argc, char** argv) {
         const int frameCount = fxport::demo::runFrameLoop(device, *timer, common.platform == "glfw", common.frames, 25,
                                                           [&](int, bool) { return application.Frame(); });
         fxport::demo::PassTimer::syncDevice = nullptr;
+        fxport::demo::PassBound::device = nullptr;
 
         std::printf("%d frames, cube rotation %.4f rad; median GPU time per pass%s:\n", frameCount,
                     double(application.GetRotation()), sync ? " (each pass finished before and after)" : "");
         for (const fxport::GpuTimer::Section& section : timer->Sections())
-            std::printf("  %-12s %9.3f ms\n", section.name.c_str(), section.medianMs());
+            std::printf("  %-12s %9.3f ms%s\n", section.name.c_str(), section.medianMs(),
+                        fxport::demo::PassBound::columns(section.name, section.medianMs()).c_str());
 
         if (common.platform != "glfw" || common.outDirGiven) {
             std::filesystem::create_directories(common.outDir);

@@ -48,10 +48,27 @@ void LightManager::AddLight(std::unique_ptr<PointLight> Light) { pointLights.pus
 void LightManager::RemoveLight(DirectionalLight* Light) { removeFrom(directionalLights, Light); }
 
 //Remove a Spot Light
-void LightManager::RemoveLight(SpotLight* Light) { removeFrom(spotLights, Light); }
+void LightManager::RemoveLight(SpotLight* Light) {
+    shadowMapKeys.erase(Light);  // fxport: a later light at the same address starts without a map
+    removeFrom(spotLights, Light);
+}
 
 //Remove a Point Light
-void LightManager::RemoveLight(PointLight* Light) { removeFrom(pointLights, Light); }
+void LightManager::RemoveLight(PointLight* Light) {
+    shadowMapKeys.erase(Light);
+    removeFrom(pointLights, Light);
+}
+
+bool LightManager::ShadowMapOutdated(const void* Light, const ShadowMapKey& key) {
+    auto found = shadowMapKeys.find(Light);
+    if (reuseShadowMaps && found != shadowMapKeys.end() && found->second == key) {
+        ++shadowMapsReused;
+        return false;
+    }
+    shadowMapKeys[Light] = key;
+    ++shadowMapsDrawn;
+    return true;
+}
 
 //Draw Shadow Maps
 void LightManager::DrawShadowMaps(GraphicsDevice& GraphicsDevice, const std::vector<Model*>& Models,
@@ -78,7 +95,17 @@ void LightManager::DrawShadowMaps(GraphicsDevice& GraphicsDevice, const std::vec
         //Draw it's Shadow Map
         if (Light->getIsWithShadows() && (!spotVisible || spotVisible(*Light))) {
             needDepthWriter();
-            DrawShadowMap(GraphicsDevice, *Light, Models);
+            // fxport (issue 16): what DrawShadowMap(SpotLight) draws from.
+            ShadowMapKey key;
+            key.add(&Light->MakeShadowMap());
+            key.add(Light->getShadowMapResoloution());
+            key.add(depthWriter);
+            key.add(Light->getView());
+            key.add(Light->getProjection());
+            key.add(Light->getPosition());
+            key.add(Light->getFarPlane());
+            key.addCasters(Models);
+            if (ShadowMapOutdated(Light.get(), key)) DrawShadowMap(GraphicsDevice, *Light, Models);
         }
     }
 
@@ -87,7 +114,16 @@ void LightManager::DrawShadowMaps(GraphicsDevice& GraphicsDevice, const std::vec
         //Draw it's Shadow Map
         if (Light->getIsWithShadows() && (!pointVisible || pointVisible(*Light))) {
             needDepthWriter();
-            DrawShadowMap(GraphicsDevice, *Light, Models);
+            // fxport (issue 16): what DrawShadowMap(PointLight) draws from (its views and
+            // projection follow from the position and radius).
+            ShadowMapKey key;
+            key.add(&Light->MakeShadowMap());
+            key.add(Light->getShadowMapResoloution());
+            key.add(depthWriter);
+            key.add(Light->getPosition());
+            key.add(Light->getRadius());
+            key.addCasters(Models);
+            if (ShadowMapOutdated(Light.get(), key)) DrawShadowMap(GraphicsDevice, *Light, Models);
         }
     }
 }

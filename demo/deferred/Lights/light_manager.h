@@ -7,11 +7,13 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <vector>
 
 #include "deferred/Lights/directional_light.h"
 #include "deferred/Lights/point_light.h"
+#include "deferred/Lights/shadow_map_key.h"
 #include "deferred/Lights/spot_light.h"
 #include "deferred/xna.h"
 
@@ -29,6 +31,8 @@ class LightManager {
     // lights never compiles it.
     Effect* depthWriter = nullptr;
     ContentManager& content;
+    // fxport (issue 16): the key each light's shadow map was last drawn with.
+    std::map<const void*, ShadowMapKey> shadowMapKeys;
 
 public:
     // #region Get Functions
@@ -66,6 +70,14 @@ public:
     // fxport: whether any light casts shadows (else Game1 runs no shadow-map pass at all).
     bool HasShadowedLights() const;
 
+    // fxport (issue 16): a shadow map whose key (ShadowMapKey: the light's matrices and values, the
+    // map, the casters' transforms and draws) is the one it was last drawn with is kept as it is
+    // instead of redrawn (the seed redraws every map every frame); the same image. False redraws
+    // every frame (fxdemo deferred --no-shadow-cache). The counts add up over the frames.
+    bool reuseShadowMaps = true;
+    int shadowMapsDrawn = 0;
+    int shadowMapsReused = 0;
+
 private:
     //Draw a Shadow Map for a Spot Light
     void DrawShadowMap(GraphicsDevice& GraphicsDevice, SpotLight& Light, const std::vector<Model*>& Models);
@@ -73,6 +85,8 @@ private:
     void DrawShadowMap(GraphicsDevice& GraphicsDevice, PointLight& Light, const std::vector<Model*>& Models);
     //Draw Models
     void DrawModels(GraphicsDevice& GraphicsDevice, const std::vector<Model*>& Models);
+    // fxport: whether `Light`'s map must be drawn (its key changed, or the cache is off); counts.
+    bool ShadowMapOutdated(const void* Light, const ShadowMapKey& key);
 };
 
 }  // namespace TheCansinDeferredRenderer::Lights
