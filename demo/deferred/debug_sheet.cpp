@@ -182,7 +182,7 @@ void WriteDebugSheet(Game1& game, const std::string& path, const std::string& fu
     // Row 0: G-buffer targets 0 and 1.
     add(0, "GBuffer0.rgb albedo", "gbuffer0_albedo.png", fromGBuffer(gbuffer0, false), tileW, tileH);
     add(0, "GBuffer0.a spec intensity", "gbuffer0_alpha.png", fromGBuffer(gbuffer0, true), tileW, tileH);
-    add(0, "GBuffer1.rgb view normals", "gbuffer1_normals.png", fromGBuffer(gbuffer1, false), tileW, tileH);
+    add(0, "GBuffer1 normals: xyz as rgb", "gbuffer1_normals.png", fromGBuffer(gbuffer1, false), tileW, tileH);
     add(0, "GBuffer1.a spec power/255", "gbuffer1_alpha.png", fromGBuffer(gbuffer1, true), tileW, tileH);
 
     // Row 1: G-buffer depth (z/w and view z) and the light map.

@@ -69,7 +69,7 @@ void WriteDebugSheet(Game1& game, const std::string& path) {
     std::vector<Color> light = renderer.getLightRT().GetData<Color>();
     add(0, "colorRT.rgb diffuse", rgbOf(color));
     add(0, "colorRT.a spec intensity", alphaOf(color));
-    add(0, "normalRT.rgb world normal", rgbOf(normal));
+    add(0, "normalRT world normal xyz as rgb", rgbOf(normal));
     add(0, "normalRT.a spec power/255", alphaOf(normal));
     {
         // depthRT (z/w) stretched over the values written: near = white; cleared (1.0) dark blue.
