@@ -95,6 +95,11 @@ std::vector<TextEdit> lowerMatrixSwizzles(const std::vector<Token>& tokens) {
             edits.push_back({tokens[i].offset, tokens[i + 1].end, r});
             continue;
         }
+        // Written (`m._m00_m11 = v`): a vector constructor is no l-value; glslang handles writes.
+        const Token& next = tokens[i + 2 < tokens.size() ? i + 2 : i + 1];
+        if (next.kind == Token::Kind::Punct && !next.text.empty() && next.text.back() == '=' && next.text != "==" &&
+            next.text != "<=" && next.text != ">=" && next.text != "!=")
+            continue;
         auto start = postfixStart(tokens, i - 1);
         if (!start) continue;  // left to glslang, which reports it
         // The base's text as written (it may span lines: keep it on one line inside the constructor).

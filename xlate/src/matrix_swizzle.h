@@ -14,8 +14,9 @@ namespace fxport::xlate {
 // Edits for every `.`-swizzle of two or more matrix elements (`_mRC` zero-based or `_RC` one-based):
 //  - all elements in one row r:  `._m30_m31_m32` -> `[3].xyz` (a postfix like the original, so the
 //    base expression is untouched, and it stays an l-value);
-//  - otherwise: `B._11_22_33` -> `float3(B._11, B._22, B._33)`, with B the postfix expression before
-//    the dot (identifier, member, index and call chain), repeated per element.
+//  - otherwise, when read: `B._11_22_33` -> `float3(B._11, B._22, B._33)`, with B the postfix
+//    expression before the dot (identifier, member, index and call chain), repeated per element;
+//    a write (`m._m00_m11 = v`) is left to glslang, which handles it.
 std::vector<TextEdit> lowerMatrixSwizzles(const std::vector<Token>& tokens);
 
 }  // namespace fxport::xlate
