@@ -11,6 +11,8 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <mutex>
+#include <tuple>
 
 #include "constant_eval.h"
 #include "effect_cache.h"
@@ -670,9 +672,33 @@ const char* signalName(int sig) {
 // compileUncached() in a worker process (front_end_worker.h). A shader that takes the worker down
 // becomes an error at its entry point, and the effect is compiled again without it, so the rest
 // still compiles (and keepValidPasses keeps the passes that do not use it).
+// glslang builds its built-in symbol tables per stage on first use, in the process that compiles:
+// built once here, before the first fork, every worker inherits them instead of rebuilding them
+// (most of a small effect's compile time). The shaders are fixed and known to compile.
+void warmFrontEnd() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        const std::string vs = "float4 main(float4 p : POSITION) : SV_Position { return p; }\n";
+        const std::string ps = "sampler2D s; float4 main(float2 t : TEXCOORD0) : SV_Target { return tex2D(s, t); }\n";
+        const std::string gs = "struct V { float4 p : SV_Position; };\n"
+                               "[maxvertexcount(1)] void main(point V v[1], inout PointStream<V> o) { o.Append(v[0]); }\n";
+        for (auto [text, stage, dx9] : {std::tuple{&vs, ShaderStage::Vertex, false}, std::tuple{&ps, ShaderStage::Pixel, true},
+                                        std::tuple{&ps, ShaderStage::Pixel, false}, std::tuple{&gs, ShaderStage::Geometry, false}}) {
+            HlslToSpirvRequest request;
+            request.source = text;
+            request.stage = stage;
+            request.entryPoint = "main";
+            request.dx9Compatible = dx9;
+            (void)hlslToSpirv(request);
+        }
+        (void)preprocessEffect(vs, "warm-up.fx", "warm-up.fx", CompileOptions{});  // its own tables (OpenGL client)
+    });
+}
+
 CompiledEffect compileInWorker(const std::string& source, const std::string& displayPath, const std::string& absolutePath,
                                const CompileOptions& options, const std::string& key) {
     const WorkerLimits limits = WorkerLimits::fromEnvironment();
+    warmFrontEnd();
     FailedShaders failed;
     for (int attempt = 0;; ++attempt) {
         WorkerOutcome outcome = runInWorker(
@@ -744,7 +770,10 @@ CompiledEffect compile(const std::string& source, const std::string& displayPath
         if (auto cached = loadCachedEffect(options.cacheDir, key)) return std::move(*cached);
     }
     // The rewritten HLSL is not part of a compiled-effect file, so a compile that keeps it stays here.
-    if (options.inProcess || options.keepRewrittenHlsl) return compileUncached(source, displayPath, absolutePath, options, key, {});
+    // FXPORT_IN_PROCESS=1 does the same for every compile (debugging, measuring the worker's cost).
+    const char* inProcess = std::getenv("FXPORT_IN_PROCESS");
+    if (options.inProcess || options.keepRewrittenHlsl || (inProcess && *inProcess == '1'))
+        return compileUncached(source, displayPath, absolutePath, options, key, {});
     return compileInWorker(source, displayPath, absolutePath, options, key);
 }
 
