@@ -21,7 +21,11 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
+#include "effect_validation.h"
 #include "front_end_worker.h"
+#include "text_util.h"
 #include "fxport/xlate/diagnostics.h"
 #include "fxport/xlate/effect_compiler.h"
 #include "fxport/xlate/effect_file.h"
@@ -63,6 +67,8 @@ std::vector<LimitCase> fixtureCases() {
         {"GsPointInputNotArray", kDir + "gs_point_not_array.fx", diag::kHlsl, 5},
         {"MismatchedBracket", kDir + "mismatched_bracket.fx", diag::kHlsl, 3},
         {"NestedFunction", kDir + "nested_function.fx", diag::kHlsl, 5},
+        // A crash the checks above do not know: contained in the worker, reported at the entry point.
+        {"ContainedGlslangCrash", kDir + "contained_glslang_crash.fx", diag::kFrontEndCrashed, 10},
     };
 }
 
@@ -331,6 +337,78 @@ TEST(RobustnessCli, OutputIsReplacedWholeOrNotAtAll) {
     int files = 0;
     for (const auto& entry : fs::directory_iterator(s.dir)) files += entry.path().filename().string().rfind("out.fxeffect", 0) == 0;
     EXPECT_EQ(files, 1);
+}
+
+// Compiled-effect files are untrusted: a changed byte fails the checksum, a consistent-looking
+// file with impossible values fails validation, GLSL that does not match its hash is refused.
+class UntrustedEffectFile : public ::testing::Test {
+protected:
+    std::string file = serializeEffect(compileEffectFile(kDir + "blend_full_sample_mask.fx", noCache()));
+    static std::string loadError(const std::string& text) {
+        try {
+            deserializeEffect(text, "tampered.fxeffect");
+        } catch (const CompileError& e) {
+            EXPECT_EQ(e.diagnostics().front().id, diag::kEffectFile);
+            EXPECT_EQ(e.diagnostics().front().location.file, "tampered.fxeffect");
+            return e.diagnostics().front().message;
+        }
+        ADD_FAILURE() << "a tampered compiled effect loaded";
+        return {};
+    }
+};
+
+TEST_F(UntrustedEffectFile, IntactFileLoads) { EXPECT_EQ(deserializeEffect(file, "ok.fxeffect").techniques.size(), 1u); }
+
+TEST_F(UntrustedEffectFile, ChangedByteFailsTheChecksum) {
+    auto j = nlohmann::json::parse(file);
+    j["uniformBlocks"][0]["size"] = 4096;
+    EXPECT_NE(loadError(j.dump()).find("checksum"), std::string::npos);
+}
+
+TEST_F(UntrustedEffectFile, ImpossibleValuesFailValidationEvenWhenResealed) {
+    auto j = nlohmann::json::parse(file);
+    j["uniformBlocks"][0]["size"] = -64;  // what Bones[2147483647] produced
+    EXPECT_NE(loadError(resealEffectFile(j.dump())).find("inconsistent"), std::string::npos);
+    j = nlohmann::json::parse(file);
+    j["parameters"][0]["offset"] = 1 << 20;  // outside its block
+    EXPECT_NE(loadError(resealEffectFile(j.dump())).find("outside its constant buffer"), std::string::npos);
+    j = nlohmann::json::parse(file);
+    j["techniques"][0]["passes"][0]["vertexShader"]["shaders"][0] = 7;  // no shader #7
+    EXPECT_NE(loadError(resealEffectFile(j.dump())).find("does not exist"), std::string::npos);
+    j = nlohmann::json::parse(file);
+    j["techniques"][0]["passes"][0]["states"][0]["state"] = "NoSuchState";
+    EXPECT_NE(loadError(resealEffectFile(j.dump())).find("NoSuchState"), std::string::npos);
+}
+
+TEST_F(UntrustedEffectFile, GlslMustMatchItsHash) {
+    auto j = nlohmann::json::parse(file);
+    j["shaders"][0]["glsl"] = j["shaders"][0]["glsl"].get<std::string>() + "\n// injected\n";
+    j.erase("checksum");
+    j["checksum"] = contentHash(j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));  // checksum right, hash stale
+    EXPECT_NE(loadError(j.dump()).find("does not match its hash"), std::string::npos);
+}
+
+// A cache entry with well-formed but wrong values is not used: the effect is compiled again and
+// the entry replaced.
+TEST(UntrustedCache, DamagedEntryIsRecompiled) {
+    Scratch s;
+    CompileOptions options;
+    options.cacheDir = (s.dir / "cache").string();
+    CompiledEffect first = compileEffectFile(kDir + "blend_full_sample_mask.fx", options);
+    std::vector<fs::path> entries;
+    for (const auto& e : fs::directory_iterator(options.cacheDir)) entries.push_back(e.path());
+    ASSERT_EQ(entries.size(), 1u);
+    std::string entry = readText(entries[0].string());
+    size_t json = entry.find("\n=\n");
+    ASSERT_NE(json, std::string::npos);
+    auto j = nlohmann::json::parse(entry.substr(json + 3));
+    j["uniformBlocks"][0]["size"] = -64;
+    j["shaders"][0]["glsl"] = "void main() { /* injected */ }";
+    std::ofstream(entries[0], std::ios::binary) << entry.substr(0, json + 3) << resealEffectFile(j.dump());
+    CompiledEffect second = compileEffectFile(kDir + "blend_full_sample_mask.fx", options);
+    EXPECT_EQ(second.uniformBufferSize, first.uniformBufferSize);
+    EXPECT_EQ(second.shaders[0].glsl, first.shaders[0].glsl);
+    EXPECT_EQ(readText(entries[0].string()).find("injected"), std::string::npos);  // replaced
 }
 
 }  // namespace
