@@ -13,12 +13,18 @@
 #include <string>
 
 #include "effect_cache.h"
+#include "effect_validation.h"
 #include "fxport/xlate/effect_file.h"
 
 using namespace fxport;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    std::string_view text(reinterpret_cast<const char*>(data), size);
+    // An odd first byte re-seals the rest (checksums recomputed), so mutations reach the checks
+    // behind the checksum; an even one loads the bytes as they are.
+    if (size < 1) return 0;
+    std::string resealed;
+    std::string_view text(reinterpret_cast<const char*>(data) + 1, size - 1);
+    if (data[0] & 1) text = resealed = xlate::resealEffectFile(text);
     try {
         xlate::CompiledEffect e = xlate::deserializeEffect(text, "fuzz.fxeffect");
         // What was accepted must be consistent: serialising and loading it again gives the same.
@@ -43,7 +49,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         std::filesystem::create_directories(d);
         return d.string();
     }();
-    std::ofstream(cacheDir + "/entry.fxeffect", std::ios::binary).write(text.data(), static_cast<std::streamsize>(size));
+    std::ofstream(cacheDir + "/entry.fxeffect", std::ios::binary).write(text.data(), static_cast<std::streamsize>(text.size()));
     try {
         (void)xlate::loadCachedEffect(cacheDir, "entry");
     } catch (const std::exception& e) {

@@ -3,19 +3,27 @@
 // arguments) is compiled once per effect, however many passes use it.
 #include "fxport/xlate/effect_compiler.h"
 
+#include <nlohmann/json.hpp>
+
+#include <csignal>
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
+#include <mutex>
+#include <tuple>
 
 #include "asm_pass_bindings.h"
 #include "constant_eval.h"
 #include "d3d9_asm.h"
 #include "effect_cache.h"
+#include "fxport/xlate/effect_file.h"
 #include "entry_wrapper.h"
 #include "fx_rewrite.h"
+#include "front_end_hazards.h"
+#include "front_end_worker.h"
 #include "fx_syntax.h"
 #include "hlsl_to_spirv.h"
 #include "implicit_conversions.h"
@@ -75,13 +83,22 @@ struct ShaderKey {
         return std::tie(stage, profile, entry, arguments, nextToGeometryShader) <
                std::tie(o.stage, o.profile, o.entry, o.arguments, o.nextToGeometryShader);
     }
+    // One line naming the shader, for the worker's progress records.
+    std::string text() const {
+        return std::to_string(static_cast<int>(stage)) + "|" + profile + "|" + entry + "|" + arguments + "|" + (nextToGeometryShader ? "g" : "");
+    }
 };
+
+// Shaders whose compile took the front-end worker down (ShaderKey::text() -> the diagnostic that
+// says so): a later attempt skips them and compiles the rest of the effect.
+using FailedShaders = std::map<std::string, Diagnostic>;
 
 class EffectBuilder {
 public:
     EffectBuilder(const PreprocessedEffect& pre, const EffectSyntax& syntax, RewrittenEffect& rewritten,
-                  const CompileOptions& options, CompiledEffect& effect, VaryingLocations* sharedVaryings)
-        : pre_(pre), syntax_(syntax), rewritten_(rewritten), options_(options), effect_(effect),
+                  const CompileOptions& options, CompiledEffect& effect, VaryingLocations* sharedVaryings,
+                  const FailedShaders& failedShaders)
+        : pre_(pre), syntax_(syntax), rewritten_(rewritten), options_(options), effect_(effect), failedShaders_(failedShaders),
           varyings_(sharedVaryings ? *sharedVaryings : ownVaryings_) {
         baseLines_ = static_cast<int>(std::count(rewritten.hlsl.begin(), rewritten.hlsl.end(), '\n')) + 1;
     }
@@ -96,6 +113,7 @@ private:
     RewrittenEffect& rewritten_;  // asm shaders add their texture stages' samplers
     const CompileOptions& options_;
     CompiledEffect& effect_;
+    const FailedShaders& failedShaders_;
     int baseLines_ = 0;
     std::map<ShaderKey, int> compiled_;  // -> index in effect_.shaders, -1 = failed
     std::map<int, GlslShader> reflections_;
@@ -395,6 +413,17 @@ int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile
         compiled_[key] = index;
         return index;
     }
+    if (auto failed = failedShaders_.find(key.text()); failed != failedShaders_.end()) {
+        effect_.diagnostics.push_back(failed->second);
+        return -1;
+    }
+    // Where a crash inside glslang would be reported: the entry point, as fxc names the shader (an
+    // asm block: where it is written).
+    const FxFunction* entryFunction = syntax_.findFunction(expr.entry);
+    const Token& entryToken = syntax_.tokens[entryFunction ? entryFunction->token : std::min(expr.token, syntax_.tokens.size() - 1)];
+    SourceLocation entryAt = pre_.map.locate(entryToken.line, entryToken.column, entryFunction ? entryFunction->name : displayEntry);
+    reportWorkerProgress("shader\t" + key.text() + "\t" + displayEntry + "\t" + profile.name + "\t" + entryAt.file + "\t" +
+                         std::to_string(entryAt.line) + "\t" + std::to_string(entryAt.column));
     std::string current = source;  // replaced when overloads are added below
     HlslToSpirvRequest request;
     request.source = &current;
@@ -729,19 +758,13 @@ bool isLooseShaderPath(const std::string& path) {
     return ext == ".hlsl" || ext == ".vs" || ext == ".ps" || ext == ".gs" || ext == ".vsh" || ext == ".psh" || ext == ".shader";
 }
 
-}  // namespace
-
-CompiledEffect compileEffectText(const std::string& source, const std::string& displayPath, const std::string& absolutePath,
-                                 const CompileOptions& optionsIn, VaryingLocations* sharedVaryings) {
-    CompileOptions options = optionsIn;
-    if (const char* dump = std::getenv("FXPORT_DUMP"); dump && *dump) options.keepRewrittenHlsl = true;
-    if (options.keepRewrittenHlsl) options.useCache = false;  // the cache does not keep the rewritten HLSL
-    std::string key;
-    if (options.useCache) {
-        key = cacheKey(source, displayPath, absolutePath, options);
-        if (auto cached = loadCachedEffect(options.cacheDir, key)) return std::move(*cached);
-    }
+// The compile proper, after the cache missed (stores its result there when `key` is not empty).
+CompiledEffect compileUncached(const std::string& source, const std::string& displayPath, const std::string& absolutePath,
+                               const CompileOptions& options, const std::string& key, const FailedShaders& failedShaders,
+                               VaryingLocations* sharedVaryings) {
+    reportWorkerProgress("preprocess");
     PreprocessedEffect pre = preprocessEffect(source, displayPath, absolutePath, options);
+    reportWorkerProgress("parse");
 
     EffectSyntax syntax = parseEffect(pre.text, pre.map);
     CompiledEffect effect;
@@ -763,9 +786,12 @@ CompiledEffect compileEffectText(const std::string& source, const std::string& d
         d.location = {displayPath, 1, 1};  // a whole-file problem: its first line
         throw CompileError({d});
     }
+    // Code that would crash glslang instead of getting a diagnostic: reported here, before any
+    // shader of the effect is handed over.
+    if (auto hazards = findFrontEndHazards(syntax, pre.map); !hazards.empty()) throw CompileError(std::move(hazards));
     RewrittenEffect rewritten = rewriteEffect(pre.text, syntax, pre.map, effect.diagnostics);
     for (auto& w : findImplicitTruncations(syntax, pre.map)) effect.diagnostics.push_back(std::move(w));
-    EffectBuilder builder(pre, syntax, rewritten, options, effect, sharedVaryings);
+    EffectBuilder builder(pre, syntax, rewritten, options, effect, sharedVaryings, failedShaders);
     builder.buildParameters();
     builder.buildTechniques();
     builder.finishReflection();
@@ -783,8 +809,153 @@ CompiledEffect compileEffectText(const std::string& source, const std::string& d
             if (d.severity == Severity::Error) errors.push_back(d);
         throw CompileError(std::move(errors));
     }
-    if (options.useCache) storeCachedEffect(options.cacheDir, key, pre.dependencies, effect);
+    if (!key.empty()) storeCachedEffect(options.cacheDir, key, pre.dependencies, effect);
     return effect;
+}
+
+nlohmann::json diagnosticsJson(const std::vector<Diagnostic>& diagnostics) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto& d : diagnostics)
+        list.push_back({{"error", d.severity == Severity::Error}, {"id", d.id}, {"message", d.message}, {"file", d.location.file},
+                        {"line", d.location.line}, {"column", d.location.column}, {"sourceLine", d.sourceLine}});
+    return list;
+}
+
+std::vector<Diagnostic> diagnosticsFrom(const nlohmann::json& list) {
+    std::vector<Diagnostic> out;
+    for (const auto& j : list) {
+        Diagnostic d;
+        d.severity = j.at("error").get<bool>() ? Severity::Error : Severity::Warning;
+        d.id = j.at("id");
+        d.message = j.at("message");
+        d.location = {j.at("file"), j.at("line"), j.at("column")};
+        d.sourceLine = j.at("sourceLine");
+        out.push_back(std::move(d));
+    }
+    return out;
+}
+
+const char* signalName(int sig) {
+    switch (sig) {
+    case SIGSEGV: return "SIGSEGV";
+    case SIGABRT: return "SIGABRT";
+    case SIGBUS: return "SIGBUS";
+    case SIGFPE: return "SIGFPE";
+    case SIGILL: return "SIGILL";
+    default: return "a signal";
+    }
+}
+
+// compileUncached() in a worker process (front_end_worker.h). A shader that takes the worker down
+// becomes an error at its entry point, and the effect is compiled again without it, so the rest
+// still compiles (and keepValidPasses keeps the passes that do not use it).
+// glslang builds its built-in symbol tables per stage on first use, in the process that compiles:
+// built once here, before the first fork, every worker inherits them instead of rebuilding them
+// (most of a small effect's compile time). The shaders are fixed and known to compile.
+void warmFrontEnd() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        const std::string vs = "float4 main(float4 p : POSITION) : SV_Position { return p; }\n";
+        const std::string ps = "sampler2D s; float4 main(float2 t : TEXCOORD0) : SV_Target { return tex2D(s, t); }\n";
+        const std::string gs = "struct V { float4 p : SV_Position; };\n"
+                               "[maxvertexcount(1)] void main(point V v[1], inout PointStream<V> o) { o.Append(v[0]); }\n";
+        for (auto [text, stage, dx9] : {std::tuple{&vs, ShaderStage::Vertex, false}, std::tuple{&ps, ShaderStage::Pixel, true},
+                                        std::tuple{&ps, ShaderStage::Pixel, false}, std::tuple{&gs, ShaderStage::Geometry, false}}) {
+            HlslToSpirvRequest request;
+            request.source = text;
+            request.stage = stage;
+            request.entryPoint = "main";
+            request.dx9Compatible = dx9;
+            (void)hlslToSpirv(request);
+        }
+        (void)preprocessEffect(vs, "warm-up.fx", "warm-up.fx", CompileOptions{});  // its own tables (OpenGL client)
+    });
+}
+
+CompiledEffect compileInWorker(const std::string& source, const std::string& displayPath, const std::string& absolutePath,
+                               const CompileOptions& options, const std::string& key) {
+    const WorkerLimits limits = WorkerLimits::fromEnvironment();
+    warmFrontEnd();
+    FailedShaders failed;
+    for (int attempt = 0;; ++attempt) {
+        WorkerOutcome outcome = runInWorker(
+            [&] {
+                nlohmann::json result;
+                try {
+                    result["effect"] = serializeEffect(compileUncached(source, displayPath, absolutePath, options, key, failed, nullptr), true);
+                } catch (const CompileError& e) {
+                    result["errors"] = diagnosticsJson(e.diagnostics());
+                } catch (const std::bad_alloc&) {
+                    throw;
+                } catch (const std::exception& e) {
+                    result["exception"] = e.what();
+                }
+                return result.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+            },
+            limits);
+        if (outcome.kind == WorkerOutcome::Kind::Done) {
+            nlohmann::json result = nlohmann::json::parse(outcome.payload);
+            if (result.contains("errors")) throw CompileError(diagnosticsFrom(result["errors"]));
+            if (result.contains("exception")) throw std::runtime_error(result["exception"].get<std::string>());
+            return deserializeEffect(result.at("effect").get<std::string>(), displayPath);
+        }
+        const std::string what = outcome.kind == WorkerOutcome::Kind::TimedOut
+                                     ? "ran past its limit of " + std::to_string(limits.cpuSeconds) + " s of CPU time"
+                                 : outcome.kind == WorkerOutcome::Kind::OutOfMemory
+                                     ? "ran past its limit of " + std::to_string(limits.memoryBytes >> 20) + " MiB of memory"
+                                     : std::string("crashed (") + signalName(outcome.signal) + ")";
+        const char* id = outcome.kind == WorkerOutcome::Kind::TimedOut      ? diag::kFrontEndTimeout
+                         : outcome.kind == WorkerOutcome::Kind::OutOfMemory ? diag::kFrontEndMemory
+                                                                            : diag::kFrontEndCrashed;
+        // progress: "shader\t<key>\t<entry>\t<profile>\t<file>\t<line>\t<column>", "preprocess" or "parse".
+        std::vector<std::string> f;
+        for (size_t at = 0;;) {
+            size_t tab = outcome.progress.find('\t', at);
+            f.push_back(outcome.progress.substr(at, tab == std::string::npos ? std::string::npos : tab - at));
+            if (tab == std::string::npos) break;
+            at = tab + 1;
+        }
+        Diagnostic d;
+        if (f.size() == 7 && f[0] == "shader" && !failed.count(f[1]) && attempt < 8) {
+            d.id = id;
+            d.message = "the HLSL front end failed on this shader (" + f[2] + ", " + f[3] + "): glslang/SPIRV-Cross " + what;
+            d.location = {f[4], std::atoi(f[5].c_str()), std::atoi(f[6].c_str())};
+            failed[f[1]] = d;
+            continue;  // again, without that shader
+        }
+        if (f[0] == "preprocess" && outcome.kind != WorkerOutcome::Kind::Crashed) {
+            d.id = diag::kMacroLimit;  // the preprocessor's only unbounded work is macro expansion
+            d.message = "preprocessing the effect " + what + ": a macro expands without bound";
+        } else {
+            d.id = id;
+            d.message = std::string("the HLSL front end failed on this effect while ") +
+                        (f[0] == "preprocess" ? "preprocessing it" : f[0] == "parse" ? "reading it" : "compiling a shader") + ": it " + what;
+        }
+        d.location = {displayPath, 0, 0};
+        throw CompileError({d});
+    }
+}
+
+}  // namespace
+
+CompiledEffect compileEffectText(const std::string& source, const std::string& displayPath, const std::string& absolutePath,
+                                 const CompileOptions& optionsIn, VaryingLocations* sharedVaryings) {
+    CompileOptions options = optionsIn;
+    if (const char* dump = std::getenv("FXPORT_DUMP"); dump && *dump) options.keepRewrittenHlsl = true;
+    if (options.keepRewrittenHlsl) options.useCache = false;  // the cache does not keep the rewritten HLSL
+    std::string key;
+    if (options.useCache) {
+        key = cacheKey(source, displayPath, absolutePath, options);
+        if (auto cached = loadCachedEffect(options.cacheDir, key)) return std::move(*cached);
+    }
+    // The rewritten HLSL is not part of a compiled-effect file, so a compile that keeps it stays here;
+    // so do loose shader files compiled together (their shared varying locations live in this
+    // process). FXPORT_IN_PROCESS=1 does the same for every compile (debugging, measuring the
+    // worker's cost).
+    const char* inProcess = std::getenv("FXPORT_IN_PROCESS");
+    if (options.inProcess || options.keepRewrittenHlsl || sharedVaryings || (inProcess && *inProcess == '1'))
+        return compileUncached(source, displayPath, absolutePath, options, key, {}, sharedVaryings);
+    return compileInWorker(source, displayPath, absolutePath, options, key);
 }
 
 namespace {

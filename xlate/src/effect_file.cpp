@@ -6,6 +6,7 @@
 #include <fstream>
 #include <variant>
 
+#include "effect_validation.h"
 #include "shader_profile.h"
 #include "text_util.h"
 
@@ -214,7 +215,10 @@ json toJson(const CompiledShader& s, const CompiledEffect& effect, bool withGlsl
         j["writesDepth"] = s.writesDepth;
     }
     j["d3d9PixelOffset"] = s.needsD3D9PixelOffset;
-    if (withGlsl) j["glsl"] = s.glsl;
+    if (withGlsl) {
+        j["glsl"] = s.glsl;
+        j["glslHash"] = contentHash(s.glsl);
+    }
     return j;
 }
 
@@ -300,7 +304,23 @@ json effectJson(const CompiledEffect& effect, bool full) {
     return j;
 }
 
+// The file's checksum: a hash of its canonical (compact, key-sorted) JSON without the checksum.
+std::string checksumOf(json j) {
+    j.erase("checksum");
+    return contentHash(j.dump(-1, ' ', false, json::error_handler_t::replace));
+}
+
 }  // namespace
+
+std::string resealEffectFile(std::string_view text) {
+    json j = json::parse(text.begin(), text.end(), nullptr, false);
+    if (!j.is_object()) return std::string(text);
+    if (j.contains("shaders") && j["shaders"].is_array())
+        for (auto& sh : j["shaders"])
+            if (sh.is_object() && sh.contains("glsl") && sh["glsl"].is_string()) sh["glslHash"] = contentHash(sh["glsl"].get<std::string>());
+    j["checksum"] = checksumOf(j);
+    return j.dump(-1, ' ', false, json::error_handler_t::replace);
+}
 
 std::string describeStateAssignment(const StateAssignment& s, const CompiledEffect& effect) {
     std::string out = kState.of(s.state);
@@ -315,7 +335,9 @@ std::string describeStateAssignment(const StateAssignment& s, const CompiledEffe
 // Text that is not UTF-8 (a diagnostic quoting a Latin-1 comment, say) is written with U+FFFD in
 // its place rather than failing the whole file.
 std::string serializeEffect(const CompiledEffect& effect, bool compact) {
-    return effectJson(effect, true).dump(compact ? -1 : 1, ' ', false, json::error_handler_t::replace);
+    json j = effectJson(effect, true);
+    j["checksum"] = checksumOf(j);
+    return j.dump(compact ? -1 : 1, ' ', false, json::error_handler_t::replace);
 }
 
 std::string reflectionJson(const CompiledEffect& effect) {
@@ -340,6 +362,8 @@ CompiledEffect deserializeEffect(std::string_view text, const std::string& nameF
     if (j.value("version", 0) != kEffectFileVersion)
         return fail("compiled effect file version " + std::to_string(j.value("version", 0)) + " is not the supported version " +
                     std::to_string(kEffectFileVersion) + "; recompile it with fxport compile");
+    if (!j.contains("checksum") || !j["checksum"].is_string() || j["checksum"].get<std::string>() != checksumOf(j))
+        return fail("the compiled effect's checksum does not match its content: the file was changed or damaged; recompile it with fxport compile");
     try {
         CompiledEffect e;
         e.sourcePath = j.value("sourcePath", std::string());
@@ -357,6 +381,8 @@ CompiledEffect deserializeEffect(std::string_view text, const std::string& nameF
             cs.entryPoint = s.at("entryPoint");
             cs.arguments = s.value("arguments", std::string());
             cs.glsl = s.at("glsl");
+            if (s.at("glslHash").get<std::string>() != contentHash(cs.glsl))
+                return fail("the GLSL of shader '" + cs.entryPoint + "' does not match its hash: the file was changed or damaged");
             if (s.contains("inputs"))
                 for (const auto& i : s["inputs"]) cs.inputs.push_back({i.at("semantic"), i.at("location"), i.at("components"), i.at("integer")});
             for (const auto& b : s.at("samplers")) {
@@ -414,6 +440,7 @@ CompiledEffect deserializeEffect(std::string_view text, const std::string& nameF
                 diag.sourceLine = d.value("sourceLine", std::string());
                 e.diagnostics.push_back(diag);
             }
+        if (auto problem = findEffectInconsistency(e)) return fail("the compiled effect is inconsistent: " + *problem);
         return e;
     } catch (const CompileError&) {
         throw;

@@ -10,13 +10,16 @@
 namespace fxport::xlate {
 
 // Format version of the file; bump when the layout changes.
-inline constexpr int kEffectFileVersion = 3;  // 2: uniformBlocks, Parameter::block, ranges per block
-                                             // 3: typed pass-state values, parameters by index
+// 2: uniformBlocks, Parameter::block, ranges per block; 3: typed pass-state values, parameters by
+// index; 4: "checksum" over the whole file and "glslHash" per shader, and every size, offset and
+// index validated on load (effect_validation.h).
+inline constexpr int kEffectFileVersion = 4;
 
 // `compact` leaves out the indentation (what the compile cache stores); both forms load alike.
 std::string serializeEffect(const CompiledEffect& effect, bool compact = false);
 // Throws CompileError (id FX3101) naming `nameForErrors` if the text is not a compiled effect of
-// this version.
+// this version, its checksum or a shader's GLSL hash does not match, or its content is inconsistent
+// (sizes, offsets, indices, enums out of range): such files are untrusted input.
 CompiledEffect deserializeEffect(std::string_view text, const std::string& nameForErrors);
 
 void saveEffectFile(const CompiledEffect& effect, const std::string& path);

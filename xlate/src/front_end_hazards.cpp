@@ -1,0 +1,206 @@
+// Token-level checks for the glslang crash shapes listed in front_end_hazards.h.
+#include "front_end_hazards.h"
+
+#include <algorithm>
+#include <map>
+#include <optional>
+#include <set>
+
+#include "hlsl_types.h"
+
+namespace fxport::xlate {
+
+namespace {
+
+class HazardFinder {
+public:
+    HazardFinder(const EffectSyntax& syntax, const SourceMap& map) : syntax_(syntax), map_(map) {}
+
+    std::vector<Diagnostic> run() {
+        redefinedGlobals();
+        unnamedParameters();
+        mismatchedBrackets();
+        nestedFunctions();
+        float1InMul();
+        std::stable_sort(found_.begin(), found_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        std::vector<Diagnostic> out;
+        for (auto& [token, d] : found_) out.push_back(std::move(d));
+        return out;
+    }
+
+private:
+    const EffectSyntax& syntax_;
+    const SourceMap& map_;
+    std::vector<std::pair<size_t, Diagnostic>> found_;  // (token, diagnostic)
+
+    const Token& tok(size_t i) const { return syntax_.tokens[std::min(i, syntax_.tokens.size() - 1)]; }
+    void report(const char* id, const std::string& message, size_t token) {
+        const Token& t = tok(token);
+        found_.push_back({token, map_.make(Severity::Error, id, message, t.line, t.column, t.kind == Token::Kind::End ? std::string() : t.text)});
+    }
+
+    void redefinedGlobals() {
+        std::map<std::string, const FxGlobal*> seen;
+        for (const auto& g : syntax_.globals) {
+            if (g.isStringParameter) continue;  // removed from the HLSL
+            auto [it, inserted] = seen.emplace(g.name, &g);
+            if (!inserted)
+                report(diag::kHlsl, "redefinition of '" + g.name + "' (declared before as '" + it->second->type + " " + g.name + "')", g.token);
+        }
+    }
+
+    void unnamedParameters() {
+        for (const auto& f : syntax_.functions) {
+            if (f.body.empty() && f.declaration.empty()) continue;
+            static const std::set<std::string> kPrimitives = {"point", "line", "triangle", "lineadj", "triangleadj"};
+            for (size_t i = 0; i < f.parameters.size(); ++i) {
+                const FxParameter& p = f.parameters[i];
+                if (p.name.empty()) {
+                    report(diag::kHlsl, "parameter " + std::to_string(i + 1) + " of '" + f.name + "' (of type '" + p.type + "') has no name",
+                           p.typeToken);
+                    continue;
+                }
+                // A geometry shader's input primitive is an array of vertices (`point V v[1]`).
+                for (const auto& m : p.modifiers)
+                    if (kPrimitives.count(m) && p.arrayDims.empty())
+                        report(diag::kHlsl, "geometry shader input '" + p.name + "' of '" + f.name + "' must be an array of vertices ('" + m + " " +
+                                                p.type + " " + p.name + "[" + (m == "point" ? "1" : m == "line" ? "2" : m == "triangle" ? "3" : m == "lineadj" ? "4" : "6") + "]')",
+                               p.typeToken);
+            }
+        }
+    }
+
+    void mismatchedBrackets() {
+        std::vector<size_t> open;
+        for (size_t i = 0; i < syntax_.tokens.size(); ++i) {
+            const Token& t = syntax_.tokens[i];
+            if (t.kind != Token::Kind::Punct) continue;
+            if (t.is("(") || t.is("[") || t.is("{")) {
+                open.push_back(i);
+            } else if (t.is(")") || t.is("]") || t.is("}")) {
+                const char* want = t.is(")") ? "(" : t.is("]") ? "[" : "{";
+                if (open.empty() || !tok(open.back()).is(want)) {
+                    report(diag::kHlsl, "syntax error: unexpected token '" + t.text + "'" +
+                                            (open.empty() ? std::string() : " (the open bracket is '" + tok(open.back()).text + "')"),
+                           i);
+                    return;  // one is enough: everything after it is out of step
+                }
+                open.pop_back();
+            }
+        }
+    }
+
+    // Matching '(' of the ')' at `close`, searching backwards within [begin, close).
+    std::optional<size_t> openParen(size_t begin, size_t close) const {
+        int depth = 0;
+        for (size_t i = close + 1; i-- > begin;) {
+            if (tok(i).is(")")) ++depth;
+            else if (tok(i).is("(") && --depth == 0) return i;
+        }
+        return std::nullopt;
+    }
+
+    void nestedFunctions() {
+        static const std::set<std::string> kStatements = {"if", "for", "while", "switch"};
+        for (const auto& f : syntax_.functions) {
+            for (size_t i = f.body.begin + 1; i < f.body.end; ++i) {
+                if (!tok(i).is("{") || !tok(i - 1).is(")")) continue;
+                auto open = openParen(f.body.begin, i - 1);
+                if (!open || *open == f.body.begin) continue;
+                const Token& before = tok(*open - 1);
+                if (!before.isIdent() || kStatements.count(before.text)) continue;
+                report(diag::kHlsl, "'" + before.text + "' looks like a function defined inside function '" + f.name +
+                                        "', which HLSL does not allow (is a ';' missing before it?)",
+                       *open - 1);
+                break;
+            }
+        }
+    }
+
+    static bool isOneComponent(const std::string& typeIn) {
+        std::string type;
+        for (char c : typeIn)
+            if (c != ' ') type += c;
+        BasicType b = describeBasicType(type);
+        if (!b.ok || b.rows != 1 || b.columns != 1) return false;
+        // float1x1, float1, vector<float,1>; not float or min16float (scalars).
+        return b.isMatrix || type.back() == '1' || (type.size() > 3 && type.compare(type.size() - 3, 3, ",1>") == 0);
+    }
+
+    // Names declared with a one-component vector or matrix type (float1, half1, float1x1, vector<float, 1>)
+    // in the function's parameters and body, and the globals.
+    std::set<std::string> oneComponentNames(const FxFunction& f) const {
+        std::set<std::string> names;
+        for (const auto& g : syntax_.globals)
+            if (isOneComponent(syntax_.resolveType(g.type))) names.insert(g.name);
+        for (const auto& p : f.parameters)
+            if (isOneComponent(syntax_.resolveType(p.type))) names.insert(p.name);
+        for (size_t i = f.body.begin; i + 1 < f.body.end; ++i)
+            if (tok(i).isIdent() && tok(i + 1).isIdent() && isOneComponent(syntax_.resolveType(tok(i).text))) names.insert(tok(i + 1).text);
+        return names;
+    }
+
+    // An argument whose value is one-component: one-component names (not swizzled or indexed),
+    // one-component constructors and literals, joined by operators; at least one not a literal.
+    bool argumentIsOneComponent(size_t begin, size_t end, const std::set<std::string>& names) const {
+        bool any = false;
+        for (size_t i = begin; i < end; ++i) {
+            const Token& t = tok(i);
+            if (t.kind == Token::Kind::Number) continue;
+            if (t.kind == Token::Kind::Punct) {
+                if (t.is(".") || t.is("[")) return false;
+                continue;
+            }
+            if (!t.isIdent()) return false;
+            if (tok(i + 1).is("(") && isOneComponent(syntax_.resolveType(t.text))) {
+                any = true;  // float1(...): its own arguments do not matter
+                int depth = 0;
+                for (++i; i < end; ++i) {
+                    if (tok(i).is("(")) ++depth;
+                    else if (tok(i).is(")") && --depth == 0) break;
+                }
+                continue;
+            }
+            if (!names.count(t.text) || tok(i + 1).is(".") || tok(i + 1).is("[")) return false;
+            any = true;
+        }
+        return any;
+    }
+
+    void float1InMul() {
+        for (const auto& f : syntax_.functions) {
+            std::set<std::string> names;
+            bool namesKnown = false;
+            for (size_t i = f.body.begin; i + 1 < f.body.end; ++i) {
+                if (!tok(i).is("mul") || !tok(i + 1).is("(")) continue;
+                if (!namesKnown) names = oneComponentNames(f), namesKnown = true;
+                // Split the arguments at top-level commas.
+                size_t argStart = i + 2;
+                int depth = 0;
+                for (size_t k = i + 2; k < f.body.end; ++k) {
+                    const Token& t = tok(k);
+                    if (t.is("(") || t.is("[") || t.is("{")) ++depth;
+                    bool closes = (t.is(")") || t.is("]") || t.is("}")) && depth-- == 0;
+                    if ((t.is(",") && depth == 0) || closes) {
+                        if (argumentIsOneComponent(argStart, k, names)) {
+                            report(diag::kUnsupported, "'mul' with a one-component argument ('" + syntax_.text({argStart, k}) +
+                                                           "') crashes fxport's HLSL front end (glslang); make it a float or a full vector",
+                                   argStart);
+                            return;
+                        }
+                        argStart = k + 1;
+                    }
+                    if (closes) break;
+                }
+            }
+        }
+    }
+};
+
+}  // namespace
+
+std::vector<Diagnostic> findFrontEndHazards(const EffectSyntax& syntax, const SourceMap& map) {
+    return HazardFinder(syntax, map).run();
+}
+
+}  // namespace fxport::xlate

@@ -1,0 +1,40 @@
+// Runs the HLSL front end (glslang's preprocessor and compiler, spirv-opt, SPIRV-Cross) in a forked
+// worker process with CPU-time and memory limits, so that no effect can crash or exhaust the
+// process that asked for the compile (`fxport check`, a game's `Effect(...)`). glslang 12 crashes
+// on some malformed HLSL (front_end_hazards.h catches the shapes known so far) and has no bounds on
+// macro expansion; in the worker, either is a diagnostic. A cache hit never starts a worker.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <string_view>
+
+namespace fxport::xlate {
+
+struct WorkerLimits {
+    int cpuSeconds = 60;                           // RLIMIT_CPU of the worker ($FXPORT_WORKER_SECONDS)
+    size_t memoryBytes = size_t{3} << 30;          // address space it may add ($FXPORT_WORKER_MEMORY_MB)
+    static WorkerLimits fromEnvironment();
+};
+
+struct WorkerOutcome {
+    enum class Kind {
+        Done,         // the work returned: `payload` is what it returned
+        Crashed,      // died of a signal (`signal`)
+        TimedOut,     // ran past the CPU or wall-clock limit
+        OutOfMemory,  // an allocation failed past the memory limit
+    } kind = Kind::Done;
+    std::string payload;
+    std::string progress;  // the last reportWorkerProgress() text: where the worker was
+    int signal = 0;
+};
+
+// Runs `work` in a child process (fork) and returns what it returned, or how it failed.
+// Falls back to running `work` here when fork fails.
+WorkerOutcome runInWorker(const std::function<std::string()>& work, const WorkerLimits& limits);
+
+// Inside a worker: records what it is about to do (the last record before a crash says where).
+// Outside a worker: does nothing.
+void reportWorkerProgress(std::string_view where);
+
+}  // namespace fxport::xlate
