@@ -2,6 +2,7 @@
 #include "effect_validation.h"
 
 #include <cmath>
+#include <variant>
 
 #include "input_limits.h"
 
@@ -81,8 +82,14 @@ std::optional<std::string> findEffectInconsistency(const CompiledEffect& e) {
                 if (auto problem = checkChoice(*c, e, where)) return problem;
             for (const auto& st : p.states) {
                 if (!within(st.index, 0, 7)) return where + " sets a state of render target " + std::to_string(st.index);
-                for (double v : st.value)
-                    if (!std::isfinite(v)) return where + " sets a state to a value that is not a number";
+                if (!within(st.parameter, -1, static_cast<long long>(e.parameters.size()) - 1))
+                    return where + " sets a state from parameter #" + std::to_string(st.parameter);
+                // Enum values were read by name; numbers must be numbers.
+                bool finite = true;
+                if (const float* f = std::get_if<float>(&st.value)) finite = std::isfinite(*f);
+                if (const auto* v = std::get_if<std::array<float, 4>>(&st.value))
+                    for (float x : *v) finite = finite && std::isfinite(x);
+                if (!finite) return where + " sets a state to a value that is not a number";
             }
         }
     return std::nullopt;
