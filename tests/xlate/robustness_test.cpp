@@ -313,7 +313,7 @@ TEST(RobustnessCli, DefineWithoutNameIsAUsageError) {
     RunResult r = runCli("check " + shellQuoted(kDir + "empty.fx") + " -D =");
     ASSERT_TRUE(r.exited);
     EXPECT_EQ(r.status, 2) << r.output;
-    EXPECT_NE(r.output.find("option -D: '='"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("option '-D' has a bad value '='"), std::string::npos) << r.output;
     EXPECT_EQ(r.output.find("(1,1)"), std::string::npos) << r.output;
 }
 
