@@ -456,3 +456,13 @@ TEST(LooseShaderFiles, CommandLineTakesEntryAndProfile) {
     EXPECT_NE(r.output.find("needs a --profile"), std::string::npos) << r.output;
     fs::remove_all(out.parent_path());
 }
+
+// `#include <..\Shared\Lighting.fxh>`: backslashes are folder separators, as on Windows.
+TEST(IncludeRoot, BackslashSeparatorsAreFolders) {
+    const std::string root = "tests/fixtures/include_root";
+    CompileOptions options = noCache();
+    options.includeRoot = root;
+    CompiledEffect e = compileEffectFile(root + "/Effects/Windows/BackslashPaths.fx", options);
+    EXPECT_EQ(param(e, "LightDirection").declaredAt.file, root + "/Effects/Shared/Lighting.fxh");
+    expectAllPassesLink(e);
+}

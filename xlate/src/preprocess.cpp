@@ -3,6 +3,7 @@
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -230,12 +231,15 @@ private:
         bool foundOutside = false;
         std::string outsidePath;  // the first candidate that exists but lies outside every root
         std::vector<std::string> looked;  // exact paths searched before the hit (they did not exist)
+        // Windows paths (`#include <..\Helpers\Gamma.fxh>`, as fxc and Visual Studio take them).
+        std::string lookup = header;
+        std::replace(lookup.begin(), lookup.end(), '\\', '/');
         for (const auto& [dir, displayDir] : searchDirs) {
-            if (fs::path(header).is_absolute()) {
-                if (fs::is_regular_file(header, ec)) found = fs::path(header);
+            if (fs::path(lookup).is_absolute()) {
+                if (fs::is_regular_file(lookup, ec)) found = fs::path(lookup);
             } else {
-                found = findCaseInsensitive(dir, header);
-                if (!found) looked.push_back((dir / header).lexically_normal().string());
+                found = findCaseInsensitive(dir, lookup);
+                if (!found) looked.push_back((dir / lookup).lexically_normal().string());
             }
             if (!found) continue;
             // Canonical: a symbolic link inside a root that points outside it is outside.
@@ -250,7 +254,7 @@ private:
                 continue;
             }
             fs::path rel = fs::relative(*found, dir, ec);
-            display = (fs::path(displayDir) / (ec ? fs::path(header) : rel)).lexically_normal().string();
+            display = (fs::path(displayDir) / (ec ? fs::path(lookup) : rel)).lexically_normal().string();
             break;
         }
         if (!found && foundOutside) {
