@@ -130,6 +130,9 @@ WorkerOutcome runInWorker(const std::function<std::string()>& work, const Worker
     }
     if (pid == 0) {
         ::close(fds[0]);
+        // A crash must end the worker with its signal, whatever handlers the host (or a sanitizer,
+        // which would report and exit with a status instead) installed in the parent.
+        for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) ::signal(sig, SIG_DFL);
         workerMain(fds[1], work, limits);
     }
     ::close(fds[1]);
