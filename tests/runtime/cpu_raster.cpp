@@ -5,31 +5,17 @@
 #include <limits>
 #include <utility>
 
+#include "reference/ref_math.h"
+
 namespace fxport::stock_test {
 
+// reference/ref_math.h's Gauss-Jordan inverse (the same row-major double layout).
 DMat inverse(const DMat& a) {
-    double t[4][8];
-    for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j) {
-            t[i][j] = a.m[i][j];
-            t[i][j + 4] = i == j ? 1 : 0;
-        }
-    for (int c = 0; c < 4; ++c) {
-        int p = c;
-        for (int r = c + 1; r < 4; ++r)
-            if (std::fabs(t[r][c]) > std::fabs(t[p][c])) p = r;
-        for (int j = 0; j < 8; ++j) std::swap(t[c][j], t[p][j]);
-        const double d = t[c][c];
-        for (int j = 0; j < 8; ++j) t[c][j] /= d;
-        for (int r = 0; r < 4; ++r)
-            if (r != c) {
-                const double f = t[r][c];
-                for (int j = 0; j < 8; ++j) t[r][j] -= f * t[c][j];
-            }
-    }
+    reference::M4 m;
+    std::copy(&a.m[0][0], &a.m[0][0] + 16, &m.m[0][0]);
+    const reference::M4 inv = reference::inverse(m);
     DMat r;
-    for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j) r.m[i][j] = t[i][j + 4];
+    std::copy(&inv.m[0][0], &inv.m[0][0] + 16, &r.m[0][0]);
     return r;
 }
 

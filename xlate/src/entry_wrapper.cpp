@@ -147,24 +147,6 @@ bool has(const std::vector<std::string>& v, const char* s) {
 
 }  // namespace
 
-namespace {
-// bool, int, uint, float, half, double, min16float ... and their vectors/matrices (float3, bool2,
-// float4x4): types a literal can be converted to with a constructor.
-bool isNumericValueType(const std::string& type) {
-    static const char* kScalars[] = {"bool", "int", "uint", "dword", "float", "half", "double", "min16float", "min10float",
-                                     "min16int", "min12int", "min16uint"};
-    for (const char* scalar : kScalars) {
-        std::string t(scalar);
-        if (type.compare(0, t.size(), t) != 0) continue;
-        std::string rest = type.substr(t.size());
-        if (rest.empty()) return true;
-        if (rest.size() == 1 && rest[0] >= '1' && rest[0] <= '4') return true;
-        if (rest.size() == 3 && rest[0] >= '1' && rest[0] <= '4' && rest[1] == 'x' && rest[2] >= '1' && rest[2] <= '4') return true;
-    }
-    return false;
-}
-}  // namespace
-
 EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& entry, const ShaderProfile& profile,
                                const std::string& arguments, bool nextToGeometryShader) {
     EntryWrapper w;
@@ -183,7 +165,7 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
             // A literal goes through the parameter's own type: glslang 12 makes `VS(0)` for a `uniform
             // bool` an int condition (invalid GLSL, or a crash in spirv-opt), where fxc converts.
             if (nextLiteral < literalArgs.size())
-                callArgs.push_back(isNumericValueType(p.type) && p.arrayDims.empty()
+                callArgs.push_back(describeBasicType(p.type).ok && p.arrayDims.empty()
                                        ? p.type + "(" + literalArgs[nextLiteral++] + ")"
                                        : literalArgs[nextLiteral++]);
             else if (!p.defaultValue.empty()) callArgs.push_back(syntax.text(p.defaultValue));
