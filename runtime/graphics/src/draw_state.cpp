@@ -39,6 +39,18 @@ AttributeFormat attributeFormat(VertexElementFormat f) {
     return {4, GL_FLOAT, GL_FALSE};
 }
 
+// D3D leaves a bound render target alone when the pixel shader writes nothing to it (a depth-only
+// pass whose shader only clip()s); GL writes undefined values there (llvmpipe: whatever its output
+// registers held, which ASan builds showed as garbage). So targets at and past the shader's outputs
+// get their colour writes masked off.
+fxport::BlendState blendForPixelShader(const fxport::BlendState& wanted, int outputTargets) {
+    fxport::BlendState effective = wanted;
+    fxport::ColorWriteChannels* channels[4] = {&effective.ColorWriteChannels, &effective.ColorWriteChannels1,
+                                               &effective.ColorWriteChannels2, &effective.ColorWriteChannels3};
+    for (int i = std::max(outputTargets, 0); i < 4; ++i) *channels[i] = fxport::ColorWriteChannels::None;
+    return effective;
+}
+
 std::string textureName(const Texture* t) { return t->Name.empty() ? std::string("(unnamed)") : "'" + t->Name + "'"; }
 
 }  // namespace
@@ -49,7 +61,7 @@ void GraphicsDevice::Impl::flush(const char* what) {
                                ": no effect pass is applied (call effect.CurrentTechnique->Passes[i].Apply() first)");
     if (boundFramebuffer == 0) bindTargets();
     resolvePendingClearBeforeDraw(device.DepthStencilState);
-    applyBlend(device.BlendState);
+    applyBlend(blendForPixelShader(device.BlendState, shaders[1]->shader->outputTargets));
     applyDepthStencil(device.DepthStencilState);
     applyRasterizer(device.RasterizerState);
     applyViewport(device.Viewport);
