@@ -294,6 +294,7 @@ TEST(Platform, EglGivesOpenGL45CoreOrSaysWhy) {
         EXPECT_TRUE(contains(e.what(), "egl:")) << e.what();  // no device here: the error must say so
         return;
     }
+    keepGraphicsDriversMapped();
     const GLVersion v = currentVersion();
     EXPECT_GE(v.major * 10 + v.minor, 45);
     EXPECT_NE(v.profileMask & GL_CONTEXT_CORE_PROFILE_BIT, 0);
@@ -317,6 +318,7 @@ TEST(Platform, SwitchingBetweenOSMesaAndEglReachesTheRightContext) {
         EXPECT_TRUE(contains(e.what(), "egl:")) << e.what();  // no device here: the error must say so
         return;
     }
+    keepGraphicsDriversMapped();
     auto red = [](GraphicsContext& context) {
         context.makeCurrent();
         unsigned char pixel[4] = {};

@@ -1,5 +1,8 @@
 #include "gl_link_check.h"
 
+#include <dlfcn.h>
+#include <link.h>
+
 #include <cctype>
 #include <cstdio>
 #include <memory>
@@ -166,6 +169,22 @@ std::string compileAndLinkSeparable(const std::vector<GlslStageSource>& stages) 
     }
     return report;
 }
+
+#ifdef FXPORT_LSAN_SUPPRESSIONS
+void keepGraphicsDriversMapped() {
+    dl_iterate_phdr(
+        [](dl_phdr_info* info, size_t, void*) {
+            const std::string path = info->dlpi_name ? info->dlpi_name : "";
+            // RTLD_NOLOAD: only a driver already loaded; RTLD_NODELETE: never unmapped after this.
+            if (path.find("/dri/") != std::string::npos && path.ends_with("_dri.so"))
+                dlopen(path.c_str(), RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
+            return 0;
+        },
+        nullptr);
+}
+#else
+void keepGraphicsDriversMapped() {}
+#endif
 
 #ifdef FXPORT_LSAN_SUPPRESSIONS
 // LeakSanitizer's built-in defaults for every binary linking this library (FXPORT_SANITIZE builds):

@@ -32,4 +32,12 @@ std::string compileAndLinkSeparable(const std::vector<GlslStageSource>& stages);
 // call, so tests that made another context current get this one back.
 platform::GraphicsContext& sharedTestContext();
 
+// Sanitizer builds (FXPORT_SANITIZE): keeps the Mesa DRI drivers loaded now (EGL's llvmpipe,
+// swrast_dri.so) mapped until the process exits. Mesa's EGL dlclose()s the driver at eglTerminate,
+// and LeakSanitizer, which runs at exit, then no longer sees the driver's globals: what they hold
+// is reported as leaked from an "<unknown module>" that no suppression can name. Kept mapped, the
+// driver's globals are scanned like any others and nothing needs suppressing. Call it while an EGL
+// context is alive. Does nothing in other builds.
+void keepGraphicsDriversMapped();
+
 }  // namespace fxport::test
