@@ -245,6 +245,25 @@ TEST_F(Conventions, MultipleRenderTargets) {
     }
 }
 
+// D3D9 (oC# not written: "the corresponding render target must not be updated at all"), and D3D10+
+// alike: a target the pixel shader has no output for keeps its contents. GL leaves it undefined, so
+// draws mask it (ColorPS writes COLOR0 only; target 1 keeps its clear colour, not a zero).
+TEST_F(Conventions, TargetsThePixelShaderDoesNotWriteKeepTheirContents) {
+    RenderTarget2D t0(device, 4, 2, false, SurfaceFormat::Vector4), t1(device, 4, 2, false, SurfaceFormat::Vector4);
+    device.SetRenderTargets({t0, t1});
+    device.Clear(Color(64, 128, 192, 255));
+    effect().Parameters["Color"].SetValue(Vector4(1, 0.5f, 0.25f, 1));
+    use("SolidColor");
+    drawQuad(device);
+    device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+    std::vector<float> p0 = readFloats(t0), p1 = readFloats(t1);
+    const float written[4] = {1, 0.5f, 0.25f, 1}, cleared[4] = {64 / 255.0f, 128 / 255.0f, 192 / 255.0f, 1};
+    for (std::size_t i = 0; i < p0.size(); ++i) {
+        EXPECT_EQ(p0[i], written[i % 4]) << "target 0 value " << i;
+        EXPECT_FLOAT_EQ(p1[i], cleared[i % 4]) << "target 1 value " << i;
+    }
+}
+
 // Row "cube faces in XNA CubeMapFace order": each face cleared to its own colour, sampled back by
 // direction; and a quad in a face's top-left quarter is found in the D3D direction for it.
 TEST_F(Conventions, CubeFacesByDirection) {
