@@ -72,6 +72,7 @@ struct Expected {
     int region = 0;
     Vec3 rgb{};  // 0..255, rounded as an 8-bit target stores it
     bool lit = false;
+    bool gate = false;  // on the gate (AlphaTestEffect) rather than the fence (Fence.fx)
     enum class What { Sky, Crate, Board, Knot, HoleSky, HoleCrate, Knothole } what = What::Sky;
 };
 
@@ -95,27 +96,41 @@ public:
         const Vec3 direction{ndcX / xScale_, ndcY / yScale_, -1};
 
         Expected e;
-        int texel = -1;
+        // The fence (Fence.fx, tinted) and the gate (AlphaTestEffect, white): quads at z = FenceZ,
+        // point-sampled, kept where the texel's alpha is above AlphaRef.
+        struct Panel {
+            double left, right, bottom, top;
+            Vec3 tint;
+        };
+        const Panel panels[2] = {
+            {FenceScene::FenceLeft, FenceScene::FenceRight, FenceScene::FenceBottom, FenceScene::FenceTop, tint_},
+            {FenceScene::GateLeft, FenceScene::GateRight, FenceScene::GateBottom, FenceScene::GateTop, {1, 1, 1}},
+        };
+        int texel = -1, panel = -1;
         const double t = double(FenceScene::CameraDistance) - double(FenceScene::FenceZ);
-        const double fx = direction[0] * t, fy = direction[1] * t;
-        if (fx >= FenceScene::FenceLeft && fx <= FenceScene::FenceRight && fy >= FenceScene::FenceBottom && fy <= FenceScene::FenceTop) {
-            const double u = (fx - FenceScene::FenceLeft) / (double(FenceScene::FenceRight) - FenceScene::FenceLeft);
-            const double v = (double(FenceScene::FenceTop) - fy) / (double(FenceScene::FenceTop) - FenceScene::FenceBottom);
-            const int tx = std::clamp(int(std::floor(u * f_.fenceWidth)), 0, f_.fenceWidth - 1);  // point sampling
+        const double px = direction[0] * t, py = direction[1] * t;
+        for (int i = 0; i < 2 && texel < 0; ++i) {
+            const Panel& p = panels[i];
+            if (px < p.left || px > p.right || py < p.bottom || py > p.top) continue;
+            const double u = (px - p.left) / (p.right - p.left), v = (p.top - py) / (p.top - p.bottom);
+            const int tx = std::clamp(int(std::floor(u * f_.fenceWidth)), 0, f_.fenceWidth - 1);
             const int ty = std::clamp(int(std::floor(v * f_.fenceHeight)), 0, f_.fenceHeight - 1);
             texel = ty * f_.fenceWidth + tx;
+            panel = i;
             const fxport::Color& c = (*f_.fenceTexels)[std::size_t(texel)];
             if (c.A > kAlphaRef) {
-                e.region = 1000 + texel;
+                e.region = 1000 * (i + 1) + texel;
                 e.what = c.A == 255 ? Expected::What::Board : Expected::What::Knot;
-                e.rgb = {byte(c.R / 255.0 * tint_[0]), byte(c.G / 255.0 * tint_[1]), byte(c.B / 255.0 * tint_[2])};
+                e.gate = i == 1;
+                e.rgb = {byte(c.R / 255.0 * p.tint[0]), byte(c.G / 255.0 * p.tint[1]), byte(c.B / 255.0 * p.tint[2])};
                 return e;
             }
         }
         const int face = crateFace(eye, direction, e.rgb);
         e.lit = face >= 0;
+        e.gate = panel == 1;
         if (face < 0) e.rgb = kSky;
-        e.region = (texel + 1) * 8 + face + 1;
+        e.region = ((panel + 1) * 100 + texel + 1) * 8 + face + 1;
         if (texel < 0) e.what = face < 0 ? Expected::What::Sky : Expected::What::Crate;
         else if ((*f_.fenceTexels)[std::size_t(texel)].A > 0) e.what = Expected::What::Knothole;
         else e.what = face < 0 ? Expected::What::HoleSky : Expected::What::HoleCrate;
@@ -177,7 +192,8 @@ std::string FenceFrameCheck::summary() const {
     std::ostringstream s;
     s << compared << " of " << total << " pixels compared: crate " << crate << ", sky " << sky << "; fence boards " << boards
       << ", knots " << knots << " (kept), holes " << holesShowingSky << " to the sky and " << holesShowingCrate
-      << " to the crate, knotholes " << knotholes << " (discarded); max difference lit " << maxLitDifference << "/255 (tolerance "
+      << " to the crate, knotholes " << knotholes << " (discarded); of these on the gate " << gateKept << " kept, "
+      << gateDiscarded << " discarded; max difference lit " << maxLitDifference << "/255 (tolerance "
       << kLitTolerance << "), flat " << maxFlatDifference << "/255 (tolerance " << kFlatTolerance << "), " << mismatches
       << " mismatches; text box " << textBoxPixels << " pixels, " << inkPixels << " ink, " << inkOffBlendLine
       << " off the blend line, ink x " << inkLeft << ".." << inkRight << " y " << inkTop << ".." << inkBottom << ": "
@@ -233,6 +249,10 @@ FenceFrameCheck checkFenceFrame(const FenceFrame& f) {
             if (e.lit) r.maxLitDifference = std::max(r.maxLitDifference, difference);
             else r.maxFlatDifference = std::max(r.maxFlatDifference, difference);
             r.mismatches += difference > (e.lit ? kLitTolerance : kFlatTolerance);
+            if (e.gate) {
+                const bool kept = e.what == Expected::What::Board || e.what == Expected::What::Knot;
+                ++(kept ? r.gateKept : r.gateDiscarded);
+            }
             switch (e.what) {
             case Expected::What::Sky: ++r.sky; break;
             case Expected::What::Crate: ++r.crate; break;
@@ -266,6 +286,7 @@ FenceFrameCheck checkFenceFrame(const FenceFrame& f) {
     require(r.boards > 0 && r.knots > 0, "no fence texel with alpha 255 or with alpha in 129..254 was seen kept");
     require(r.holesShowingSky > 0 && r.holesShowingCrate > 0, "no hole of the fence (alpha 0) was seen over the sky and over the crate");
     require(r.knotholes > 0, "no knothole (alpha in 1..128, below AlphaRef) was seen discarded");
+    require(r.gateKept > 0 && r.gateDiscarded > 0, "the gate (AlphaTestEffect) showed no kept or no discarded texel");
     require(r.inkOffBlendLine == 0, std::to_string(r.inkOffBlendLine) + " text-box pixels are not white blended over the scene");
     require(r.inkPixels * 20 >= r.textBoxPixels && r.inkPixels * 2 <= r.textBoxPixels,
             "the text box is not 5..50 % ink (" + std::to_string(r.inkPixels) + " of " + std::to_string(r.textBoxPixels) + ")");

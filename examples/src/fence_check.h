@@ -1,6 +1,6 @@
 // The fence game's pixel check: what its frame must look like, computed on the CPU in double
-// precision. Each pixel's ray is cast against the fence plane (texel by point sampling; kept when its
-// alpha is above AlphaRef 128) and the crate's six planes (lit per pixel with XNA's default
+// precision. Each pixel's ray is cast against the fence and gate quads (texel by point sampling;
+// kept when its alpha is above AlphaRef 128) and the crate's six planes (lit per pixel with XNA's default
 // lighting rig), and the HUD text is checked against SpriteFont::MeasureString: ink inside the
 // measured box, in each character's advance, on the line from the sky colour to white (premultiplied
 // alpha blending); no ink outside.
@@ -39,6 +39,7 @@ struct FenceFrameCheck {
     int crate = 0, sky = 0;      // seen directly
     int boards = 0, knots = 0;   // fence texels kept: alpha 255, alpha above 128 but below 255
     int holesShowingSky = 0, holesShowingCrate = 0, knotholes = 0;  // discarded: alpha 0; alpha 1..128
+    int gateKept = 0, gateDiscarded = 0;  // of those, on the gate (AlphaTestEffect)
     // The HUD text.
     int textBoxPixels = 0, inkPixels = 0, inkOffBlendLine = 0;
     int inkLeft = 1 << 30, inkRight = -1, inkTop = 1 << 30, inkBottom = -1;

@@ -19,6 +19,10 @@ void FenceGame::Initialize() {
     fenceVertices[1] = VertexPositionTexture(Vector3(FenceScene::FenceRight, FenceScene::FenceTop, FenceScene::FenceZ), Vector2(1, 0));
     fenceVertices[2] = VertexPositionTexture(Vector3(FenceScene::FenceLeft, FenceScene::FenceBottom, FenceScene::FenceZ), Vector2(0, 1));
     fenceVertices[3] = VertexPositionTexture(Vector3(FenceScene::FenceRight, FenceScene::FenceBottom, FenceScene::FenceZ), Vector2(1, 1));
+    gateVertices[0] = VertexPositionTexture(Vector3(FenceScene::GateLeft, FenceScene::GateTop, FenceScene::FenceZ), Vector2(0, 0));
+    gateVertices[1] = VertexPositionTexture(Vector3(FenceScene::GateRight, FenceScene::GateTop, FenceScene::FenceZ), Vector2(1, 0));
+    gateVertices[2] = VertexPositionTexture(Vector3(FenceScene::GateLeft, FenceScene::GateBottom, FenceScene::FenceZ), Vector2(0, 1));
+    gateVertices[3] = VertexPositionTexture(Vector3(FenceScene::GateRight, FenceScene::GateBottom, FenceScene::FenceZ), Vector2(1, 1));
     Game::Initialize();  // calls LoadContent, as XNA's base.Initialize() does
 }
 
@@ -43,6 +47,12 @@ void FenceGame::LoadContent() {
 
     fenceEffect->Parameters["FenceTexture"].SetValue(fenceTexture);
     fenceEffect->Parameters["Tint"].SetValue(FenceScene::FenceTint());
+
+    // The gate: XNA's stock AlphaTestEffect, keeping texels whose alpha is above 128 as Fence.fx does.
+    gateEffect = std::make_unique<AlphaTestEffect>(*GraphicsDevice);
+    gateEffect->Texture = fenceTexture;
+    gateEffect->AlphaFunction = CompareFunction::Greater;
+    gateEffect->ReferenceAlpha = 128;
 
     const Viewport& viewport = GraphicsDevice->Viewport;
     view = Matrix::CreateLookAt(Vector3(0, 0, FenceScene::CameraDistance), Vector3::Zero, Vector3::Up);
@@ -77,6 +87,16 @@ void FenceGame::Draw(const GameTime& gameTime) {
     for (EffectPass& pass : fenceEffect->CurrentTechnique->Passes) {
         pass.Apply();
         GraphicsDevice->DrawUserPrimitives(PrimitiveType::TriangleStrip, fenceVertices, 0, 2);
+    }
+
+    // The gate: AlphaTestEffect samples through register 0, filtered as SamplerStates[0] says.
+    GraphicsDevice->SamplerStates[0] = SamplerState::PointClamp;
+    gateEffect->World = Matrix::Identity;
+    gateEffect->View = view;
+    gateEffect->Projection = projection;
+    for (EffectPass& pass : gateEffect->CurrentTechnique->Passes) {
+        pass.Apply();
+        GraphicsDevice->DrawUserPrimitives(PrimitiveType::TriangleStrip, gateVertices, 0, 2);
     }
 
     // The HUD on top.

@@ -2,7 +2,8 @@
 // part gets a BasicEffect from the glTF material, lit here with EnableDefaultLighting, per pixel)
 // turns in a yard behind a wooden lattice fence, drawn with the game's own effect Fence.fx, whose
 // pass cuts the holes with the D3D9 alpha test (AlphaTestEnable / AlphaFunc / AlphaRef) on the
-// texture Fence.png; a HUD line shows the score in a SpriteFont (Hud.spritefont: DejaVu Sans, 14 pt).
+// texture Fence.png; beside it a gate of the same lattice is drawn with XNA's stock AlphaTestEffect;
+// a HUD line shows the score in a SpriteFont (Hud.spritefont: DejaVu Sans, 14 pt).
 // Everything comes through the ContentManager: Load<Model>, Load<Effect> (Fence.fxeffect, compiled
 // while the game builds by fxport_add_effects), Load<Texture2D>, Load<SpriteFont>.
 #pragma once
@@ -27,6 +28,8 @@ struct FenceScene {
     static constexpr float FenceZ = 1.2f;
     static constexpr float FenceLeft = -0.15f, FenceRight = 0.75f, FenceBottom = -0.7f, FenceTop = 0.2f;
     static fxport::Vector3 FenceTint() { return fxport::Vector3(1.0f, 0.92f, 0.85f); }  // weathered wood
+    // The gate: the same texture, at the same depth, left of the fence (AlphaTestEffect, untinted).
+    static constexpr float GateLeft = -0.95f, GateRight = -0.35f, GateBottom = -0.6f, GateTop = 0.0f;
     static constexpr int PointsPerUpdate = 10;
     static fxport::Vector2 HudPosition() { return fxport::Vector2(10, 8); }
     static float CrateAngleAt(double totalSeconds) { return CrateStartAngle + CrateRadiansPerSecond * float(totalSeconds); }
@@ -55,7 +58,9 @@ private:
     fxport::Effect* fenceEffect = nullptr;
     fxport::Texture2D* fenceTexture = nullptr;
     fxport::SpriteFont* hudFont = nullptr;
+    std::unique_ptr<fxport::AlphaTestEffect> gateEffect;
     fxport::VertexPositionTexture fenceVertices[4];
+    fxport::VertexPositionTexture gateVertices[4];
     fxport::Matrix world = fxport::Matrix::Identity;
     fxport::Matrix view = fxport::Matrix::Identity;
     fxport::Matrix projection = fxport::Matrix::Identity;
