@@ -2,6 +2,7 @@
 #include "front_end_hazards.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <map>
 #include <optional>
 #include <set>
@@ -23,6 +24,7 @@ public:
         nestedFunctions();
         float1InMul();
         undeclaredInTernary();
+        templateDimensions();
         std::stable_sort(found_.begin(), found_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
         std::vector<Diagnostic> out;
         for (auto& [token, d] : found_) out.push_back(std::move(d));
@@ -241,6 +243,28 @@ private:
                         describeBasicType(syntax_.resolveType(t.text)).ok)
                         continue;
                     report(diag::kHlsl, "undeclared identifier '" + t.text + "'", i);
+                    return;
+                }
+            }
+        }
+    }
+
+    // `matrix<float, 8, 4>` or `vector<half, 0>` (fuzzer, device run 2026-11-25): glslang makes a type it
+    // cannot lay out (unbounded recursion in getBaseAlignment) or multiply (addGenMulArgumentConversion).
+    // fxc: X3053, dimensions must be between 1 and 4.
+    void templateDimensions() {
+        for (size_t i = 0; i + 1 < syntax_.tokens.size(); ++i) {
+            const Token& t = tok(i);
+            if (!t.isIdent() || !(t.is("vector") || t.is("matrix")) || !tok(i + 1).is("<")) continue;
+            std::vector<size_t> numbers;
+            size_t k = i + 2;
+            for (; k < syntax_.tokens.size() && !tok(k).is(">") && !tok(k).is(";") && k < i + 12; ++k)
+                if (tok(k).kind == Token::Kind::Number) numbers.push_back(k);
+            if (!tok(k).is(">")) continue;
+            for (size_t n : numbers) {
+                long v = std::strtol(tok(n).text.c_str(), nullptr, 0);
+                if (v < 1 || v > 4) {
+                    report(diag::kHlsl, std::string(t.is("matrix") ? "matrix" : "vector") + " dimensions must be between 1 and 4 (not " + tok(n).text + ")", n);
                     return;
                 }
             }

@@ -20,6 +20,7 @@ namespace fxport::xlate {
 //  - `mul` with a float1/float1x1 argument and a matrix (glslang's argument conversion), also a
 //    float1 member of a struct (`mul(input.Normal, World)`)
 //  - an undeclared name in a branch of a ternary (`return v ? 1 : stor;`)
+//  - `vector<T, N>` / `matrix<T, R, C>` with a dimension outside 1..4 (`matrix<half, 8, 4>`)
 std::vector<Diagnostic> findFrontEndHazards(const EffectSyntax& syntax, const SourceMap& map);
 
 }  // namespace fxport::xlate
