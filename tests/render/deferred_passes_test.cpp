@@ -14,6 +14,7 @@
 // matrices (deferred_scene.h), not the renderer's, wherever the pass's geometry depends on them.
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <memory>
 
 #include "deferred/Lights/light_manager.h"
@@ -100,6 +101,26 @@ protected:
             << pass << ": a one-pixel shift of the GPU image passes the bounds";
     }
 
+    // The shipped renderer's MakeLightMap of `lights` on the inputs' G-buffer (uploaded into its
+    // targets) seen by the inputs' camera; returns its light map.
+    CpuTexture makeLightMap(TheCansinDeferredRenderer::Lights::LightManager& lights) {
+        FixedCamera camera(in().camera);
+        shipped().renderer->MakeLightMap(device, lights, camera);
+        device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+        return readBack(shipped().renderer->getLightMap());
+    }
+    // The reference light map of one light volume: `pixel` is the light's reference for a pixel
+    // given how many of the volume's fragments cover it.
+    RefImage lightVolumeReference(const WorldMesh& volume, Cull cull,
+                                  const std::function<Range4(Eval&, const std::vector<int>&, PixelPos)>& pixel) {
+        View3D view = in().cameraView();
+        std::vector<std::vector<int>> coverage =
+            perPixel(kWidth, kHeight, [&](int x, int y) { return coverageCandidates(volume, view, cull, x, y); });
+        return referenceImage(kWidth, kHeight, SurfaceFormat::Color, true, [&](Eval& ev, PixelPos p) {
+            return pixel(ev, coverage[std::size_t(p.y * kWidth + p.x)], p);
+        });
+    }
+
     // The shipped renderer's MakeLightMap with one spot light of the demo's Lights::SpotLight, its
     // shadow map and cookie the inputs' (the volume: the content's SpotLightGeometry).
     void spotTest(const std::string& pass, bool shadows) {
@@ -113,11 +134,8 @@ protected:
         const Lights::SpotLight& shipped = *owned;
         upload(owned->MakeShadowMap(), s.spotShadow);
         lights.AddLight(std::move(owned));
-        FixedCamera camera(s.camera);
-        r.renderer->MakeLightMap(device, lights, camera);
-        device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+        CpuTexture gpu = makeLightMap(lights);
         ASSERT_EQ(r.renderer->getFrameStats().spotLightsDrawn, 1);
-        CpuTexture gpu = readBack(r.renderer->getLightMap());
 
         // The reference's light: the shipped light's own matrices and values.
         SpotLightSetup light = s.spot;
@@ -127,15 +145,11 @@ protected:
         light.World = shipped.getWorld();
         light.Direction = shipped.getDirection();
         WorldMesh cone = toWorld(r.lightVolume("SpotLightGeometry"), toM4(light.World));
-        View3D view = s.cameraView();
-        Cull cull = spotCull(s.camera, light);
         SpotLightParams q = spotParams(s.camera, light);
         GBufferTextures gb = s.gbufferTextures();
-        std::vector<std::vector<int>> coverage = perPixel(kWidth, kHeight, [&](int x, int y) { return coverageCandidates(cone, view, cull, x, y); });
-        RefImage ref = referenceImage(kWidth, kHeight, SurfaceFormat::Color, true, [&](Eval& ev, PixelPos p) {
-            return spotLightPixel(ev, gb, s.cookie, s.spotShadow, q, coverage[std::size_t(p.y * kWidth + p.x)], p);
-        });
-        check(pass, gpu, ref);
+        check(pass, gpu, lightVolumeReference(cone, spotCull(s.camera, light), [&](Eval& ev, const std::vector<int>& coverage, PixelPos p) {
+                  return spotLightPixel(ev, gb, s.cookie, s.spotShadow, q, coverage, p);
+              }));
     }
 
     // The same with one Lights::PointLight (the volume: the content's PointLightGeometry).
@@ -151,25 +165,18 @@ protected:
         RenderTargetCube& shadowMap = owned->MakeShadowMap();
         for (int f = 0; f < 6; ++f) upload(shadowMap, CubeMapFace(f), s.pointShadow.faces[std::size_t(f)]);
         lights.AddLight(std::move(owned));
-        FixedCamera camera(s.camera);
-        r.renderer->MakeLightMap(device, lights, camera);
-        device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+        CpuTexture gpu = makeLightMap(lights);
         ASSERT_EQ(r.renderer->getFrameStats().pointLightsDrawn, 1);
-        CpuTexture gpu = readBack(r.renderer->getLightMap());
 
         PointLightSetup light = s.point;
         light.Shadows = shadows;
         WorldMesh sphere = toWorld(r.lightVolume("PointLightGeometry"), toM4(shipped.World()));
-        View3D view = s.cameraView();
-        Cull cull = pointCull(s.camera, light);
         PointLightParams q = pointParams(s.camera, light);
         q.depthBias = shipped.getDepthBias();
         GBufferTextures gb = s.gbufferTextures();
-        std::vector<std::vector<int>> coverage = perPixel(kWidth, kHeight, [&](int x, int y) { return coverageCandidates(sphere, view, cull, x, y); });
-        RefImage ref = referenceImage(kWidth, kHeight, SurfaceFormat::Color, true, [&](Eval& ev, PixelPos p) {
-            return pointLightPixel(ev, gb, s.pointShadow, q, coverage[std::size_t(p.y * kWidth + p.x)], p);
-        });
-        check(pass, gpu, ref);
+        check(pass, gpu, lightVolumeReference(sphere, pointCull(s.camera, light), [&](Eval& ev, const std::vector<int>& coverage, PixelPos p) {
+                  return pointLightPixel(ev, gb, s.pointShadow, q, coverage, p);
+              }));
     }
 
     GraphicsDevice& device = test::testDevice();
@@ -293,16 +300,14 @@ TEST_F(DeferredPasses, DirectionalLight) {
     TheCansinDeferredRenderer::Lights::LightManager lights(r.content);
     lights.AddLight(std::make_unique<TheCansinDeferredRenderer::Lights::DirectionalLight>(
         s.directional.Direction, s.directional.Color, s.directional.Intensity));
-    FixedCamera camera(s.camera);
-    r.renderer->MakeLightMap(device, lights, camera);
-    device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+    CpuTexture gpu = makeLightMap(lights);
     ASSERT_EQ(r.renderer->getFrameStats().directionalLightsDrawn, 1);
 
     DirectionalLightParams q = directionalParams(s.camera, s.directional);
     GBufferTextures gb = s.gbufferTextures();
     RefImage ref = referenceImage(kWidth, kHeight, SurfaceFormat::Color, false,
                                   [&](Eval& ev, PixelPos p) { return directionalLightPixel(ev, gb, q, p); });
-    check("DirectionalLight", readBack(r.renderer->getLightMap()), ref);
+    check("DirectionalLight", gpu, ref);
 }
 
 TEST_F(DeferredPasses, SpotLightWithoutShadows) { spotTest("SpotLight.NoShadows", false); }
