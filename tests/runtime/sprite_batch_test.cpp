@@ -19,7 +19,7 @@
 #include "fxport/graphics/sprite_font.h"
 
 #ifdef FXPORT_LSAN_SUPPRESSIONS
-// Sanitizer builds: suppress what Mesa keeps until exit (lsan.supp lists Mesa and LLVM only).
+// Sanitizer builds: suppress what Mesa keeps until exit (lsan.supp lists Mesa and fontconfig only).
 // LSAN_OPTIONS in the environment still takes precedence.
 extern "C" const char* __lsan_default_options() {
     return "suppressions=" FXPORT_LSAN_SUPPRESSIONS ":print_suppressions=0";

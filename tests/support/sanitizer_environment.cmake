@@ -1,7 +1,7 @@
 # Read by ctest (TEST_INCLUDE_FILES of the top directory, FXPORT_SANITIZE builds only) before it
 # starts any test: the sanitizer settings every test process inherits, so that a plain `ctest` in a
 # sanitizer build runs as scripts/sanitize-tests does. A setting already in the environment wins.
-#  - LeakSanitizer reads tests/support/lsan.supp (leaks inside Mesa's own libraries, each explained
+#  - LeakSanitizer reads tests/support/lsan.supp (leaks inside Mesa and fontconfig, each explained
 #    there); print_suppressions=0 keeps its "Suppressions used" table off stderr, which CLI tests match.
 #  - UBSan prints the stack and stops at the first report (the build has -fno-sanitize-recover too).
 # Test binaries linking fxport_test_gl read lsan.supp also when run by hand (__lsan_default_options).
