@@ -77,6 +77,8 @@ struct GraphicsDevice::Impl {
     // What targetsBoundSinceMark() returns (after the first mark, the bindings of every SetRenderTargets).
     std::vector<RenderTargetBinding> boundSinceMark;
     bool trackingBoundTargets = false;  // set by the first markBoundTargets(): hosts that never check pay nothing
+    int widestColorBytesSinceMark = 0;  // colorBytesPerFragmentSinceMark()
+    bool blendedSinceMark = false;      // set by flush() while tracking
     void noteBoundTargets();
     void generateMipsOfUnboundTargets(const std::vector<RenderTargetBinding>& previous);
 

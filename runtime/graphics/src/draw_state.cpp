@@ -50,6 +50,7 @@ void GraphicsDevice::Impl::flush(const char* what) {
     if (boundFramebuffer == 0) bindTargets();
     resolvePendingClearBeforeDraw(device.DepthStencilState);
     applyBlend(device.BlendState);
+    if (trackingBoundTargets && device.BlendState.blendingEnabled()) blendedSinceMark = true;
     applyDepthStencil(device.DepthStencilState);
     applyRasterizer(device.RasterizerState);
     applyViewport(device.Viewport);

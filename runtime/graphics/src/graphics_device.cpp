@@ -251,13 +251,23 @@ void GraphicsDevice::Impl::noteBoundTargets() {
     };
     if (targets.empty()) note(RenderTargetBinding(backBuffer.get()));
     for (const RenderTargetBinding& b : targets) note(b);
+    int bytes = 0;
+    if (targets.empty()) bytes = bytesPerPixel(backBuffer->Format());
+    for (const RenderTargetBinding& b : targets)
+        if (b.RenderTarget) bytes += bytesPerPixel(b.RenderTarget->Format());
+    widestColorBytesSinceMark = std::max(widestColorBytesSinceMark, bytes);
 }
 
 void GraphicsDevice::markBoundTargets() {
     impl_->trackingBoundTargets = true;
     impl_->boundSinceMark.clear();
+    impl_->widestColorBytesSinceMark = 0;
+    impl_->blendedSinceMark = false;
     impl_->noteBoundTargets();
 }
+
+int GraphicsDevice::colorBytesPerFragmentSinceMark() const { return impl_->widestColorBytesSinceMark; }
+bool GraphicsDevice::blendedSinceMark() const { return impl_->blendedSinceMark; }
 
 std::vector<RenderTargetBinding> GraphicsDevice::targetsBoundSinceMark() const { return impl_->boundSinceMark; }
 

@@ -153,6 +153,11 @@ public:
     // appears as backBufferTarget(). A disposed target drops out of the list.
     void markBoundTargets();
     std::vector<RenderTargetBinding> targetsBoundSinceMark() const;
+    // Also since the mark (issue 16's per-pass bounds): the most colour bytes one fragment writes
+    // (the sum over the targets one SetRenderTargets bound together, the widest such set), and
+    // whether a draw blended.
+    int colorBytesPerFragmentSinceMark() const;
+    bool blendedSinceMark() const;
     RenderTarget2D& backBufferTarget();  // to read (GetDataAsVector4); SetRenderTarget(nullptr) binds it
 
     // Clears every bound target (colour, depth, stencil) inside the viewport, ignoring blend and
