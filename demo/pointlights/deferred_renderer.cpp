@@ -99,6 +99,10 @@ void DeferredRenderer::ResolveGBuffer() {
 
 void DeferredRenderer::ClearGBuffer() {
     GraphicsDevice.DepthStencilState = DepthStencilState::None;
+    // fxport (issue 16): the quad writes every pixel of the three targets with blending off, so the
+    // colour SetRenderTargets cleared them to is never seen: the device drops that clear (D3D11.1's
+    // DiscardView; FXPORT_HONOUR_DISCARDS=0 keeps it). The same image.
+    GraphicsDevice.DiscardContents(ClearOptions::Target);
     clearBufferEffect->Techniques[0]->Passes[0].Apply();
     quadRenderer->Render(Vector2::One * -1, Vector2::One);
     GraphicsDevice.DepthStencilState = DepthStencilState::Default;

@@ -14,11 +14,12 @@ using test::readFloats;
 using test::runtimeFixture;
 
 struct Device {
-    explicit Device(bool defer) {
+    explicit Device(bool defer, bool honourDiscards = true) {
         PresentationParameters p;
         p.BackBufferWidth = 8;
         p.BackBufferHeight = 4;
         p.DeferClears = defer;
+        p.HonourDiscards = honourDiscards;
         device = std::make_unique<GraphicsDevice>(p);
         effect = std::make_unique<Effect>(*device, runtimeFixture("Conventions.fx"));
         effect->CurrentTechnique = effect->Techniques["SolidColor"];
@@ -136,6 +137,28 @@ TEST(DeferredClears, BackBufferReadSeesPendingClear) {
     std::vector<Color> pixels = d.device->GetBackBufferData();
     ASSERT_EQ(pixels.size(), 32u);
     for (const Color& c : pixels) EXPECT_TRUE(c.R == 10 && c.G == 20 && c.B == 30 && c.A == 255);
+}
+
+// DiscardContents before a full-target quad: the bind clear's colour never reaches GL (counted as
+// discarded), the depth clear still does for the depth-tested draw, and the pixels are the quad's
+// -- the same as with discards not honoured (every clear sent).
+TEST(DeferredClears, DiscardContentsDropsThePendingColourClear) {
+    for (bool honour : {true, false}) {
+        SCOPED_TRACE(honour ? "honoured" : "not honoured");
+        Device d(true, honour);
+        RenderTarget2D target(*d.device, 8, 4, false, SurfaceFormat::Vector4, DepthFormat::Depth24Stencil8);
+        d.device->SetRenderTarget(target);
+        ClearStatistics before = d.device->clearStatistics();
+        d.device->DiscardContents(ClearOptions::Target);
+        d.draw(Vector4(0.25f, 0.5f, 0.75f, 1), DepthStencilState::DepthRead);  // tests depth: needs its clear
+        d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+        std::vector<float> texels = readFloats(target);
+        for (int i = 0; i < 32; ++i) EXPECT_EQ(pixel(texels, i), (std::vector<float>{0.25f, 0.5f, 0.75f, 1})) << "texel " << i;
+        ClearStatistics after = d.device->clearStatistics();
+        EXPECT_EQ(after.discarded - before.discarded, honour ? 1 : 0);
+        // Sent: depth+stencil (one call, two channels) before the draw, and colour too unless discarded.
+        EXPECT_EQ(after.executed - before.executed, honour ? 2 : 3);
+    }
 }
 
 }  // namespace

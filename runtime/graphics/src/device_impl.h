@@ -164,6 +164,8 @@ struct GraphicsDevice::Impl {
         int stencil = 0;
     } pendingClear;
     bool deferClears = true;  // PresentationParameters::DeferClears and $FXPORT_DEFER_CLEARS
+    bool honourDiscards = true;  // PresentationParameters::HonourDiscards and $FXPORT_HONOUR_DISCARDS
+    void discardContents(unsigned options);               // GraphicsDevice::DiscardContents
     ClearStatistics clearStats;
     void executeClear(const Rectangle& rect, unsigned options, const Vector4& color, float depth, int stencil);
     void recordClear(unsigned options, const Vector4& color, float depth, int stencil);

@@ -6,6 +6,7 @@
 // pixels are the same as executing every clear at once (PresentationParameters::DeferClears=false
 // does that; tests compare the two).
 #include <algorithm>
+#include <vector>
 
 #include "device_impl.h"
 #include "fxport/graphics/render_target.h"
@@ -91,6 +92,25 @@ void GraphicsDevice::Impl::resolvePendingClearBeforeRead(const Texture* texture)
                                  : std::any_of(targets.begin(), targets.end(),
                                                [&](const RenderTargetBinding& b) { return b.RenderTarget == texture; });
     if (bound) resolvePendingClear(kColor);
+}
+
+void GraphicsDevice::DiscardContents(ClearOptions options) { impl_->discardContents(unsigned(options)); }
+
+void GraphicsDevice::Impl::discardContents(unsigned options) {
+    if (!honourDiscards) return;
+    const unsigned dropped = pendingClear.options & options;
+    clearStats.discarded += channels(dropped);
+    pendingClear.options &= ~dropped;
+    if (boundFramebuffer == 0) bindTargets();
+    std::vector<GLenum> attachments;
+    if (options & kColor)
+        for (std::size_t i = 0; i < std::max<std::size_t>(1, targets.size()); ++i)
+            attachments.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
+    if ((options & kDepth) && (options & kStencil)) attachments.push_back(GL_DEPTH_STENCIL_ATTACHMENT);
+    else if (options & kDepth) attachments.push_back(GL_DEPTH_ATTACHMENT);
+    else if (options & kStencil) attachments.push_back(GL_STENCIL_ATTACHMENT);
+    if (!attachments.empty())
+        glInvalidateFramebuffer(GL_FRAMEBUFFER, GLsizei(attachments.size()), attachments.data());  // boundFramebuffer
 }
 
 void GraphicsDevice::Impl::leaveBoundTargets() {
