@@ -431,6 +431,7 @@ void DeferredRenderer::MakeFinal(GraphicsDevice& GraphicsDevice, RenderTarget2D*
 
     //Clear
     GraphicsDevice.Clear(Color::Transparent);
+    GraphicsDevice.DiscardContents(ClearOptions::Target);  // fxport: the quad below covers it (see ClearGBuffer)
 
     //Set Textures
     GraphicsDevice.Textures[0] = GBufferTargets[0].RenderTarget;

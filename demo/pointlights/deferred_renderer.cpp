@@ -337,6 +337,9 @@ void DeferredRenderer::DrawLights(const GameTime& gameTime) {
     GraphicsDevice.SetRenderTarget(nullptr);
 
     PassTimer timed(gpuTimer, "FinalCombine");
+    // fxport (issue 16): the quad below covers the back buffer, opaque, so the colour binding it
+    // cleared is never seen: the device drops that clear (see ClearGBuffer).
+    GraphicsDevice.DiscardContents(ClearOptions::Target);
     //set the effect parameters
     finalCombineEffect->Parameters["colorMap"].SetValue(colorRT.get());
     finalCombineEffect->Parameters["lightMap"].SetValue(lightRT.get());
