@@ -31,6 +31,8 @@ void PassBound::setUp(GraphicsDevice& runDevice, double fillRate, bool bounds, G
     std::printf("\n  clear %.1f GB/s, bilinear fetch %.1f Gtexel/s\n", limits->clearGBps, limits->fetchGTexelsPerSecond);
 }
 
+void PassBound::forgetRuns() { runs_.clear(); }
+
 void PassBound::begin() {
     if (device) device->markBoundTargets();
 }

@@ -32,6 +32,7 @@ public:
     // loads) the limits, prints them on stdout and has `timer` count fragments.
     static void setUp(GraphicsDevice& runDevice, double fillRate, bool bounds, GpuTimer* timer);
 
+    static void forgetRuns();             // a new measurement (fxdemo report: per setting)
     static void begin();                  // at a pass's start (PassTimer)
     static void end(const std::string& pass);  // at its end: adds the bound targets' bytes
     // Bytes per run of `pass` (the median over its runs, as the times are); 0 when it never ran

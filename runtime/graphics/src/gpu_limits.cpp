@@ -78,6 +78,7 @@ GLuint link(const char* pixelSource) {
 // Seconds the GPU took for `work`, after one untimed run of it.
 double gpuSeconds(const std::function<void()>& work) {
     work();
+    glFinish();  // a deferring rasteriser (llvmpipe) would otherwise compile and run it inside the timed query
     GLuint query = 0;
     glGenQueries(1, &query);
     glBeginQuery(GL_TIME_ELAPSED, query);
