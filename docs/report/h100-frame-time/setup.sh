@@ -1,3 +1,4 @@
+# Device machine only (it points /work/wt/perf at the unpacked bundle): never run it on a workstation.
 # sourced on the device: unpack the bundle where the binary's compiled-in paths point
 set -e
 mkdir -p /tmp/b && tar xJf .devbundle-perf/b.tar.xz -C /tmp/b
