@@ -191,10 +191,8 @@ void LightRenderer::UnwrapShadowCasters(const SpotLight& sLight, float lightDirA
 
     GraphicsDevice.SetRenderTarget(unwrapTarget.get());
     GraphicsDevice.Clear(Color::Transparent);
-    // fxport (issue 16): the sprite below covers the whole target, opaque, and the unwrap effects
-    // never discard, so the clear is never seen: the device drops it (D3D11.1's DiscardView;
-    // FXPORT_HONOUR_DISCARDS=0 keeps it). The same image.
-    GraphicsDevice.DiscardContents(ClearOptions::Target);
+    // (issue 16: the sprite below covers the whole target, opaque, through an effect that never
+    // discards, so the device drops this clear itself: ClearStatistics::covered.)
     spriteBatch->Begin(SpriteSortMode::Deferred, BlendState::Opaque, SamplerState::PointClamp, nullptr, nullptr,
                        unwrapSpotlight);
     // fxport: the unwrap target's size (the seed: fullScreen.Width square; see rayCount).
@@ -207,7 +205,6 @@ void LightRenderer::UnwrapShadowCasters(const PointLight& pLight) {
 
     GraphicsDevice.SetRenderTarget(unwrapTarget.get());
     GraphicsDevice.Clear(Color::Transparent);
-    GraphicsDevice.DiscardContents(ClearOptions::Target);  // fxport: as in the spot light's unwrap
     spriteBatch->Begin(SpriteSortMode::Deferred, BlendState::Opaque, SamplerState::PointClamp, nullptr, nullptr, unwrap);
     spriteBatch->Draw(*midGroundTarget, Rectangle(0, 0, RayCount(), RayCount()), Color::White);
     spriteBatch->End();

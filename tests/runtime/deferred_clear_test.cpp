@@ -161,5 +161,58 @@ TEST(DeferredClears, DiscardContentsDropsThePendingColourClear) {
     }
 }
 
+// A SpriteBatch sprite that covers the whole target, opaque, through SpriteBatch's own shaders:
+// the pending colour clear is dropped (ClearStatistics::covered) and the pixels are the sprite's,
+// as with every clear executed. One texel short, alpha-blended, or a viewport smaller than the
+// target: the clear runs, and the uncovered texels keep its colour (XNA's DiscardColor).
+TEST(DeferredClears, SpriteCoveringTheTargetDropsThePendingColourClear) {
+    struct Case {
+        const char* name;
+        Rectangle destination;
+        const BlendState* blend;
+        bool smallViewport;
+        bool dropped;
+    };
+    const Case cases[] = {
+        {"covers", Rectangle(0, 0, 8, 4), &BlendState::Opaque, false, true},
+        {"beyond the edges", Rectangle(-2, -1, 12, 6), &BlendState::Opaque, false, true},
+        {"one column short", Rectangle(0, 0, 7, 4), &BlendState::Opaque, false, false},
+        {"alpha-blended", Rectangle(0, 0, 8, 4), &BlendState::AlphaBlend, false, false},
+        {"viewport smaller than the target", Rectangle(0, 0, 8, 4), &BlendState::Opaque, true, false},
+    };
+    const Color sprite(10, 200, 30, 255);
+    for (const Case& c : cases) {
+        std::vector<Color> images[2];
+        for (bool defer : {true, false}) {
+            SCOPED_TRACE(std::string(c.name) + (defer ? ", deferred" : ", immediate"));
+            Device d(defer);
+            RenderTarget2D target(*d.device, 8, 4, false, SurfaceFormat::Color, DepthFormat::None);
+            Texture2D white(*d.device, 1, 1);
+            white.SetData(std::vector<Color>{Color::White});
+            SpriteBatch batch(*d.device);
+            d.device->SetRenderTarget(target);
+            if (c.smallViewport) d.device->Viewport = Viewport(0, 0, 6, 4);
+            ClearStatistics before = d.device->clearStatistics();
+            batch.Begin(SpriteSortMode::Deferred, *c.blend);
+            batch.Draw(white, c.destination, sprite);
+            batch.End();
+            d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+            images[defer ? 0 : 1].resize(32);
+            target.GetData(images[defer ? 0 : 1].data(), 32);
+            ClearStatistics after = d.device->clearStatistics();
+            EXPECT_EQ(after.covered - before.covered, defer && c.dropped ? 1 : 0);
+            const std::vector<Color>& texels = images[defer ? 0 : 1];
+            for (int i = 0; i < 32; ++i) {
+                const bool inside = (i % 8) < (c.smallViewport ? 6 : c.destination.X + c.destination.Width);
+                const Color expected = inside ? sprite : d.device->DiscardColor;
+                if (c.blend == &BlendState::Opaque) {
+                    EXPECT_TRUE(texels[std::size_t(i)] == expected) << "texel " << i;
+                }
+            }
+        }
+        EXPECT_TRUE(images[0] == images[1]) << c.name << ": deferred and immediate clears differ";
+    }
+}
+
 }  // namespace
 }  // namespace fxport

@@ -166,6 +166,9 @@ struct GraphicsDevice::Impl {
     bool deferClears = true;  // PresentationParameters::DeferClears and $FXPORT_DEFER_CLEARS
     bool honourDiscards = true;  // PresentationParameters::HonourDiscards and $FXPORT_HONOUR_DISCARDS
     void discardContents(unsigned options);               // GraphicsDevice::DiscardContents
+    // SpriteBatch, before drawing a batch with a sprite whose rectangle covers the whole viewport:
+    // drops the pending colour clear if the draw must write every pixel (pending_clear.cpp).
+    void dropColorClearUnderCoveringSprite(const ShaderProgram* spriteVertexShader);
     ClearStatistics clearStats;
     void executeClear(const Rectangle& rect, unsigned options, const Vector4& color, float depth, int stencil);
     void recordClear(unsigned options, const Vector4& color, float depth, int stencil);

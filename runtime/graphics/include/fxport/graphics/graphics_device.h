@@ -112,6 +112,7 @@ struct ClearStatistics {
     long replaced = 0;   // pending channel clears overwritten by a later clear before any use
     long dropped = 0;    // depth/stencil clears of a DiscardContents target left before any draw tested them
     long discarded = 0;  // pending channel clears dropped by DiscardContents
+    long covered = 0;    // pending colour clears dropped under a SpriteBatch sprite that writes every pixel
 };
 
 class GraphicsDevice {
