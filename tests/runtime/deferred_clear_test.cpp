@@ -14,12 +14,13 @@ using test::readFloats;
 using test::runtimeFixture;
 
 struct Device {
-    explicit Device(bool defer, bool honourDiscards = true) {
+    explicit Device(bool defer, bool honourDiscards = true, bool dropCovered = true) {
         PresentationParameters p;
         p.BackBufferWidth = 8;
         p.BackBufferHeight = 4;
         p.DeferClears = defer;
         p.HonourDiscards = honourDiscards;
+        p.DropCoveredClears = dropCovered;
         device = std::make_unique<GraphicsDevice>(p);
         effect = std::make_unique<Effect>(*device, runtimeFixture("Conventions.fx"));
         effect->CurrentTechnique = effect->Techniques["SolidColor"];
@@ -163,7 +164,7 @@ TEST(DeferredClears, DiscardContentsDropsThePendingColourClear) {
 
 // A SpriteBatch sprite that covers the whole target, opaque, through SpriteBatch's own shaders:
 // the pending colour clear is dropped (ClearStatistics::covered) and the pixels are the sprite's,
-// as with every clear executed. One texel short, alpha-blended, or a viewport smaller than the
+// as with every clear executed or with DropCoveredClears off. One texel short, alpha-blended, or a viewport smaller than the
 // target: the clear runs, and the uncovered texels keep its colour (XNA's DiscardColor).
 TEST(DeferredClears, SpriteCoveringTheTargetDropsThePendingColourClear) {
     struct Case {
@@ -182,10 +183,11 @@ TEST(DeferredClears, SpriteCoveringTheTargetDropsThePendingColourClear) {
     };
     const Color sprite(10, 200, 30, 255);
     for (const Case& c : cases) {
-        std::vector<Color> images[2];
-        for (bool defer : {true, false}) {
-            SCOPED_TRACE(std::string(c.name) + (defer ? ", deferred" : ", immediate"));
-            Device d(defer);
+        std::vector<Color> images[3];
+        for (int mode = 0; mode < 3; ++mode) {
+            const bool defer = mode < 2, drop = mode == 0;
+            SCOPED_TRACE(std::string(c.name) + (mode == 0 ? ", dropping" : mode == 1 ? ", not dropping" : ", immediate"));
+            Device d(defer, true, drop);
             RenderTarget2D target(*d.device, 8, 4, false, SurfaceFormat::Color, DepthFormat::None);
             Texture2D white(*d.device, 1, 1);
             white.SetData(std::vector<Color>{Color::White});
@@ -197,11 +199,11 @@ TEST(DeferredClears, SpriteCoveringTheTargetDropsThePendingColourClear) {
             batch.Draw(white, c.destination, sprite);
             batch.End();
             d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
-            images[defer ? 0 : 1].resize(32);
-            target.GetData(images[defer ? 0 : 1].data(), 32);
+            images[mode].resize(32);
+            target.GetData(images[mode].data(), 32);
             ClearStatistics after = d.device->clearStatistics();
-            EXPECT_EQ(after.covered - before.covered, defer && c.dropped ? 1 : 0);
-            const std::vector<Color>& texels = images[defer ? 0 : 1];
+            EXPECT_EQ(after.covered - before.covered, drop && c.dropped ? 1 : 0);
+            const std::vector<Color>& texels = images[mode];
             for (int i = 0; i < 32; ++i) {
                 const bool inside = (i % 8) < (c.smallViewport ? 6 : c.destination.X + c.destination.Width);
                 const Color expected = inside ? sprite : d.device->DiscardColor;
@@ -210,7 +212,7 @@ TEST(DeferredClears, SpriteCoveringTheTargetDropsThePendingColourClear) {
                 }
             }
         }
-        EXPECT_TRUE(images[0] == images[1]) << c.name << ": deferred and immediate clears differ";
+        EXPECT_TRUE(images[0] == images[1] && images[0] == images[2]) << c.name << ": the three ways differ";
     }
 }
 

@@ -9,21 +9,22 @@ run() { # label env... -- fxdemo args
   env "${envs[@]}" $F "$@" --bounds --out /tmp/o/$label >>$L 2>&1; echo "rc=$?" >>$L
 }
 R="--gpu --size 1920x1080"
-OFF="FXPORT_DEFER_CLEARS=0 FXPORT_HONOUR_DISCARDS=0"
+OFF="FXPORT_DEFER_CLEARS=0 FXPORT_HONOUR_DISCARDS=0 FXPORT_DROP_COVERED_CLEARS=0"
+MAIN="FXPORT_HONOUR_DISCARDS=0 FXPORT_DROP_COVERED_CLEARS=0"
 for i in 1 2; do
  run deferred-off-$i $OFF -- deferred $R --frames 200 --no-shadow-cache
- run deferred-main-$i FXPORT_HONOUR_DISCARDS=0 -- deferred $R --frames 200
+ run deferred-main-$i $MAIN -- deferred $R --frames 200
  run deferred-on-$i X=1 -- deferred $R --frames 200
  run lighting2d-off-$i $OFF -- lighting2d $R --frames 200 --no-light-scissor
- run lighting2d-main-$i FXPORT_HONOUR_DISCARDS=0 -- lighting2d $R --frames 200
+ run lighting2d-main-$i $MAIN -- lighting2d $R --frames 200
  run lighting2d-on-$i X=1 -- lighting2d $R --frames 200
  run pointlights-off-$i $OFF -- pointlights $R --frames 200
- run pointlights-main-$i FXPORT_HONOUR_DISCARDS=0 -- pointlights $R --frames 200
+ run pointlights-main-$i $MAIN -- pointlights $R --frames 200
  run pointlights-on-$i X=1 -- pointlights $R --frames 200
  run rastertek50-off-$i $OFF -- rastertek50 $R --frames 200
  run rastertek50-on-$i X=1 -- rastertek50 $R --frames 200
 done
-run pl10k-main FXPORT_HONOUR_DISCARDS=0 -- pointlights $R --frames 10 --light-count 10000
+run pl10k-main $MAIN -- pointlights $R --frames 10 --light-count 10000
 run pl10k-on X=1 -- pointlights $R --frames 10 --light-count 10000
 cp /tmp/fxcache/gpu-limits-* $OUT/limits.txt
 (cd /tmp/o && md5sum */final.png */debug.png) > $OUT/md5.txt

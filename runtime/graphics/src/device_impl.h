@@ -165,6 +165,7 @@ struct GraphicsDevice::Impl {
     } pendingClear;
     bool deferClears = true;  // PresentationParameters::DeferClears and $FXPORT_DEFER_CLEARS
     bool honourDiscards = true;  // PresentationParameters::HonourDiscards and $FXPORT_HONOUR_DISCARDS
+    bool dropCoveredClears = true;  // PresentationParameters::DropCoveredClears and $FXPORT_DROP_COVERED_CLEARS
     void discardContents(unsigned options);               // GraphicsDevice::DiscardContents
     // SpriteBatch, before drawing a batch with a sprite whose rectangle covers the whole viewport:
     // drops the pending colour clear if the draw must write every pixel (pending_clear.cpp).

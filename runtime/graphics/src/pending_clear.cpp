@@ -123,7 +123,7 @@ void GraphicsDevice::Impl::discardContents(unsigned options) {
 // several targets (a sprite effect writes one), or a pixel shader that can discard. Otherwise the
 // clear's colour is never seen and is not sent.
 void GraphicsDevice::Impl::dropColorClearUnderCoveringSprite(const ShaderProgram* spriteVertexShader) {
-    if (!(pendingClear.options & kColor)) return;
+    if (!dropCoveredClears || !(pendingClear.options & kColor)) return;
     if (boundFramebuffer == 0) bindTargets();  // targetWidth/Height are the bound targets'
     const fxport::BlendState& blend = device.BlendState;
     const fxport::DepthStencilState& depth = device.DepthStencilState;

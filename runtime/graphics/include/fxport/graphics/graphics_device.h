@@ -56,6 +56,9 @@ struct PresentationParameters {
     // fxport: GraphicsDevice::DiscardContents drops what it names (false, or
     // $FXPORT_HONOUR_DISCARDS=0: it does nothing, so every clear runs as written).
     bool HonourDiscards = true;
+    // fxport: a pending colour clear is dropped under a SpriteBatch sprite that provably writes every
+    // pixel of the target (ClearStatistics::covered); false (or $FXPORT_DROP_COVERED_CLEARS=0) keeps it.
+    bool DropCoveredClears = true;
     std::string windowTitle;     // GLFW only
 };
 
