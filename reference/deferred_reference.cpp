@@ -205,6 +205,25 @@ GBufferSample readGBuffer(Eval& ev, const GBufferTextures& gb, const M4& inverse
     return s;
 }
 
+// The exponential shadow factor both shadowed lights compute, lZ * exp(-(DepthPrecision / 2) *
+// (len - DepthBias)) with len the light's distance over DepthPrecision, as [lo, hi] over the
+// sampled depth's range; 1 without shadows.
+struct ShadowFactor {
+    double lo = 1, hi = 1;
+};
+
+template <class Params>
+ShadowFactor exponentialShadow(const Range4& lZ, const Params& q, V3 position) {
+    ShadowFactor f;
+    if (q.shadows) {
+        double len = std::max(0.01, length(q.lightPosition - position)) / q.depthPrecision;
+        double e = std::exp(-(q.depthPrecision * 0.5) * (len - q.depthBias));
+        f.lo = lZ.lo.x * e;
+        f.hi = lZ.hi.x * e;
+    }
+    return f;
+}
+
 }  // namespace
 
 Range4 spotLightPixel(Eval& ev, const GBufferTextures& gb, const CpuTexture& cookie, const CpuTexture& shadowMap,
@@ -217,13 +236,7 @@ Range4 spotLightPixel(Eval& ev, const GBufferTextures& gb, const CpuTexture& coo
     V2 LUV = V2{lightScreenPos.x + 1, -lightScreenPos.y + 1} * 0.5;
     Range4 lZ = manualSample(ev, shadowMap, kPointClamp, LUV, {q.shadowMapSize, q.shadowMapSize}, kX);
     double attenuation = tex2D(ev, cookie, kLinearClamp, LUV, kX).x;
-    double shadow0 = 1, shadow1 = 1;
-    if (q.shadows) {
-        double len = std::max(0.01, length(q.lightPosition - g.position)) / q.depthPrecision;
-        double e = std::exp(-(q.depthPrecision * 0.5) * (len - q.depthBias));
-        shadow0 = lZ.lo.x * e;
-        shadow1 = lZ.hi.x * e;
-    }
+    const ShadowFactor shadow = exponentialShadow(lZ, q, g.position);
     // Phong(Position, N, radialAttenuation = cookie, SpecularIntensity, SpecularPower)
     V3 L = q.lightPosition - g.position;
     double heightAttenuation = 1 - saturate(length(L) - q.lightHeight / 2);
@@ -239,7 +252,7 @@ Range4 spotLightPixel(Eval& ev, const GBufferTextures& gb, const CpuTexture& coo
         double specular = g.specularIntensity * hlslPow(saturate(dot(R, E)), g.specularPower);
         shading = withW(diffuse, specular) * (A * q.lightIntensity);
     }
-    return scaleByRange(shading * double(fragments), shadow0, shadow1);
+    return scaleByRange(shading * double(fragments), shadow.lo, shadow.hi);
 }
 
 Range4 pointLightPixel(Eval& ev, const GBufferTextures& gb, const CpuCube& shadowMap, const PointLightParams& q,
@@ -256,15 +269,9 @@ Range4 pointLightPixel(Eval& ev, const GBufferTextures& gb, const CpuCube& shado
     V3 diffuse = q.lightColor.xyz() * NL;
     double specular = g.specularIntensity * hlslPow(saturate(dot(R, E)), g.specularPower);
     Range4 lZ = manualSampleCube(ev, shadowMap, {-L.x, -L.y, L.z}, q.shadowMapSize);
-    double shadow0 = 1, shadow1 = 1;
-    if (q.shadows) {
-        double len = std::max(0.01, length(q.lightPosition - g.position)) / q.depthPrecision;
-        double e = std::exp(-(q.depthPrecision * 0.5) * (len - q.depthBias));
-        shadow0 = lZ.lo.x * e;
-        shadow1 = lZ.hi.x * e;
-    }
+    const ShadowFactor shadow = exponentialShadow(lZ, q, g.position);
     V4 shading = withW(diffuse, specular) * (attenuation * q.lightIntensity * double(fragments));
-    return scaleByRange(shading, shadow0, shadow1);
+    return scaleByRange(shading, shadow.lo, shadow.hi);
 }
 
 Range4 compositionPixel(Eval& ev, const CpuTexture& albedo, const CpuTexture& lightMap, V2 gbufferTextureSize, PixelPos p) {

@@ -74,6 +74,11 @@ public:
     RenderTarget2D& getSSAOTarget() const { return *SSAOTarget; }
     RenderTarget2D& getBlurTarget() const { return *BlurTarget; }
     void setGpuTimer(GpuTimer* timer) { gpuTimer = timer; }
+    // fxport: the random-normal texture RenderSSAO samples (the content's RandomNormals), settable so
+    // that the render tests' end-to-end frame runs the shipped RenderSSAO on their own texture
+    // (tests/render/deferred_pipeline_test.cpp says why).
+    Texture2D& getRandomNormals() const { return *randomNormals; }
+    void setRandomNormals(Texture2D& texture) { randomNormals = &texture; }
 
     // fxport: SSAO's passes, public (private in the seed) for the render tests, as DeferredRenderer's.
     //Render SSAO

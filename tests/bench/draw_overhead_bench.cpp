@@ -85,6 +85,45 @@ void BM_FxportSetValueApplyDraw(benchmark::State& state) {
 }
 BENCHMARK(BM_FxportSetValueApplyDraw);
 
+// The same with a pass that sets render states (MinBlend: AlphaBlendEnable, BlendOp, SrcBlend,
+// DestBlend), the part of Apply that typed pass states changed (decoded once instead of looked up
+// and converted per Apply). Its own device: the pass's blend state stays set on it. The target
+// starts white, so Min(0.5, white) leaves the 0.5 that checkDrew looks for.
+Scene& statesScene() {
+    static Scene s;
+    return s;
+}
+
+void BM_FxportSetValueApplyDrawWithPassStates(benchmark::State& state) {
+    Scene& s = statesScene();
+    s.device.makeCurrent();
+    s.effect.CurrentTechnique = s.effect.Techniques["MinBlend"];
+    EffectParameter& transform = s.effect.Parameters["Transform"];
+    EffectParameter& rowMajor = s.effect.Parameters["TransformRowMajor"];
+    EffectParameter& vector = s.effect.Parameters["Vector"];
+    EffectParameter& color = s.effect.Parameters["Color"];
+    EffectParameter& direction = s.effect.Parameters["Direction"];
+    EffectPass& pass = s.effect.CurrentTechnique->Passes[0];
+    s.device.SetVertexBuffer(s.quad);
+    s.device.Clear(Color::White);
+    Matrix m = Matrix::CreateTranslation(1, 2, 3);
+    int i = 0;
+    for (auto _ : state) {
+        m.M41 = float(i & 7);
+        transform.SetValue(m);
+        rowMajor.SetValue(m);
+        vector.SetValue(Vector4(float(i), 0, 0, 1));
+        color.SetValue(Vector4(0.5f, 0.5f, float(i & 1), 1));
+        direction.SetValue(Vector4(1, 0, 0, 0));
+        pass.Apply();
+        s.device.DrawPrimitives(PrimitiveType::TriangleList, 0, 1);
+        if ((++i & 255) == 0) glFinish();
+    }
+    glFinish();
+    checkDrew(state);
+}
+BENCHMARK(BM_FxportSetValueApplyDrawWithPassStates);
+
 void BM_RawGLSameWork(benchmark::State& state) {
     Scene& s = rawScene();  // its own context: the raw GL below never disturbs the fxport device
     s.device.makeCurrent();

@@ -5,21 +5,22 @@
 // Bounds: render_harness.h; the per-pixel slack: reference_eval.h. Each test prints its max / RMS
 // error ("[render] ..." lines) and records them as test properties.
 //
-// The passes run in the shipped code itself wherever it can: the demo's DeferredRenderer
-// (ClearGBuffer; MakeLightMap with one directional, spot or point light of the demo's Lights
-// classes, their shadow maps and the cookie uploaded, the volumes the content's models; MakeFinal)
-// and SSAO (RenderSSAO with the content's random normals, BlurSSAO, Compose), one pass at a time on
-// inputs uploaded into their targets. The passes that draw the tests' own meshes (GBuffer, the
-// DepthWriter shadow maps: the shipped code draws only glTF Models) still go through gpu_passes.h,
-// a copy of the demo's code for those meshes.
+// Every pass runs in the shipped code itself (shipped_renderer.h), one pass at a time on inputs
+// uploaded into its targets: the demo's DeferredRenderer (ClearGBuffer; MakeGBuffer of the tests'
+// scene as a Model; MakeLightMap with one directional, spot or point light of the demo's Lights
+// classes, their shadow maps and the cookie uploaded, the volumes the content's models; MakeFinal),
+// its LightManager (DrawShadowMaps of the scene Model into the lights' own maps) and SSAO (RenderSSAO
+// with the content's random normals, BlurSSAO, Compose). The references take the tests' own
+// matrices (deferred_scene.h), not the renderer's, wherever the pass's geometry depends on them.
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <memory>
 
 #include "deferred/Lights/light_manager.h"
 #include "reference/deferred_reference.h"
 #include "deferred_scene.h"
-#include "gpu_passes.h"
+#include "light_params.h"
 #include "render_harness.h"
 #include "runtime_test_support.h"
 #include "shipped_renderer.h"
@@ -41,9 +42,9 @@ struct PassInputs {
     TestCamera camera;
     Vector2 size{float(kWidth), float(kHeight)};
     Mesh scene = testSceneMesh();
-    GpuMesh sceneGpu = toGpu(scene);
     Materials materials = makeMaterials();
     Texture2D albedoMap, normalMap, specularMap;
+    std::unique_ptr<Model> sceneModel;  // `scene` with the material maps, as the shipped passes draw it
     GBufferImages gbuffer;
     DirectionalLightSetup directional{Vector3(0.3f, -1.0f, -0.4f), Vector4(1.0f, 0.85f, 0.7f, 1.0f), 0.9f};
     SpotLightSetup spot = makeSpotLight(Vector3(0, 6, 0.5f), Vector3(0.15f, -1, 0.45f), Vector4(1, 0.95f, 0.8f, 1), 0.9f, true, 64);
@@ -66,7 +67,9 @@ struct PassInputs {
         upload(normalMap, materials.normal);
         upload(specularMap, materials.specular);
         upload(cookieGpu, cookie);
+        sceneModel = toModel(d, scene, {&albedoMap, &normalMap, &specularMap});
     }
+    std::vector<Model*> models() const { return {sceneModel.get()}; }
 
     GBufferTextures gbufferTextures() const { return {&gbuffer.albedo, &gbuffer.normals, &gbuffer.depth}; }
     View3D cameraView() const { return makeView(toM4(camera.View), toM4(camera.Projection), kWidth, kHeight); }
@@ -98,51 +101,24 @@ protected:
             << pass << ": a one-pixel shift of the GPU image passes the bounds";
     }
 
-    // The demo's cull decisions for the light volumes, and what they keep.
-    static Cull spotCull(const TestCamera& camera, const SpotLightSetup& light) {
-        float SL = std::fabs(Vector3::Dot(camera.Position - light.Position, light.Direction));
-        return SL < light.LightAngleCos() ? Cull::CounterClockwiseFace : Cull::ClockwiseFace;
+    // The shipped renderer's MakeLightMap of `lights` on the inputs' G-buffer (uploaded into its
+    // targets) seen by the inputs' camera; returns its light map.
+    CpuTexture makeLightMap(TheCansinDeferredRenderer::Lights::LightManager& lights) {
+        FixedCamera camera(in().camera);
+        shipped().renderer->MakeLightMap(device, lights, camera);
+        device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+        return readBack(shipped().renderer->getLightMap());
     }
-    static Cull pointCull(const TestCamera& camera, const PointLightSetup& light) {
-        Vector3 diff = camera.Position - light.Position;
-        float cameraToLight = float(std::sqrt(float(Vector3::Dot(diff, diff)))) / 100.0f;
-        return cameraToLight <= light.Radius ? Cull::ClockwiseFace : Cull::CounterClockwiseFace;
-    }
-
-    static SpotLightParams spotParams(const TestCamera& camera, const SpotLightSetup& light) {
-        SpotLightParams q;
-        q.inverseView = toM4(Matrix::Invert(camera.View));
-        q.inverseViewProjection = toM4(Matrix::Invert(camera.View * camera.Projection));
-        q.lightViewProjection = toM4(light.View * light.Projection);
-        q.cameraPosition = toV3(camera.Position);
-        q.lightPosition = toV3(light.Position);
-        q.S = toV3(light.Direction);
-        q.lightColor = toV4(light.Color);
-        q.lightIntensity = light.Intensity;
-        q.lightAngleCos = light.LightAngleCos();
-        q.lightHeight = light.FarPlane;
-        q.gbufferTextureSize = {kWidth, kHeight};
-        q.shadows = light.Shadows;
-        q.shadowMapSize = light.ShadowMapResolution;
-        q.depthPrecision = light.FarPlane;
-        q.depthBias = light.DepthBias;
-        return q;
-    }
-    static PointLightParams pointParams(const TestCamera& camera, const PointLightSetup& light) {
-        PointLightParams q;
-        q.inverseView = toM4(Matrix::Invert(camera.View));
-        q.inverseViewProjection = toM4(Matrix::Invert(camera.View * camera.Projection));
-        q.cameraPosition = toV3(camera.Position);
-        q.lightPosition = toV3(light.Position);
-        q.lightRadius = light.Radius;
-        q.lightColor = toV4(light.Color);
-        q.lightIntensity = light.Intensity;
-        q.gbufferTextureSize = {kWidth, kHeight};
-        q.shadows = light.Shadows;
-        q.depthPrecision = light.Radius;
-        q.depthBias = light.DepthBias();
-        q.shadowMapSize = light.ShadowMapResolution;
-        return q;
+    // The reference light map of one light volume: `pixel` is the light's reference for a pixel
+    // given how many of the volume's fragments cover it.
+    RefImage lightVolumeReference(const WorldMesh& volume, Cull cull,
+                                  const std::function<Range4(Eval&, const std::vector<int>&, PixelPos)>& pixel) {
+        View3D view = in().cameraView();
+        std::vector<std::vector<int>> coverage =
+            perPixel(kWidth, kHeight, [&](int x, int y) { return coverageCandidates(volume, view, cull, x, y); });
+        return referenceImage(kWidth, kHeight, SurfaceFormat::Color, true, [&](Eval& ev, PixelPos p) {
+            return pixel(ev, coverage[std::size_t(p.y * kWidth + p.x)], p);
+        });
     }
 
     // The shipped renderer's MakeLightMap with one spot light of the demo's Lights::SpotLight, its
@@ -158,11 +134,8 @@ protected:
         const Lights::SpotLight& shipped = *owned;
         upload(owned->MakeShadowMap(), s.spotShadow);
         lights.AddLight(std::move(owned));
-        FixedCamera camera(s.camera);
-        r.renderer->MakeLightMap(device, lights, camera);
-        device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+        CpuTexture gpu = makeLightMap(lights);
         ASSERT_EQ(r.renderer->getFrameStats().spotLightsDrawn, 1);
-        CpuTexture gpu = readBack(r.renderer->getLightMap());
 
         // The reference's light: the shipped light's own matrices and values.
         SpotLightSetup light = s.spot;
@@ -172,15 +145,11 @@ protected:
         light.World = shipped.getWorld();
         light.Direction = shipped.getDirection();
         WorldMesh cone = toWorld(r.lightVolume("SpotLightGeometry"), toM4(light.World));
-        View3D view = s.cameraView();
-        Cull cull = spotCull(s.camera, light);
         SpotLightParams q = spotParams(s.camera, light);
         GBufferTextures gb = s.gbufferTextures();
-        std::vector<std::vector<int>> coverage = perPixel(kWidth, kHeight, [&](int x, int y) { return coverageCandidates(cone, view, cull, x, y); });
-        RefImage ref = referenceImage(kWidth, kHeight, SurfaceFormat::Color, true, [&](Eval& ev, PixelPos p) {
-            return spotLightPixel(ev, gb, s.cookie, s.spotShadow, q, coverage[std::size_t(p.y * kWidth + p.x)], p);
-        });
-        check(pass, gpu, ref);
+        check(pass, gpu, lightVolumeReference(cone, spotCull(s.camera, light), [&](Eval& ev, const std::vector<int>& coverage, PixelPos p) {
+                  return spotLightPixel(ev, gb, s.cookie, s.spotShadow, q, coverage, p);
+              }));
     }
 
     // The same with one Lights::PointLight (the volume: the content's PointLightGeometry).
@@ -196,25 +165,18 @@ protected:
         RenderTargetCube& shadowMap = owned->MakeShadowMap();
         for (int f = 0; f < 6; ++f) upload(shadowMap, CubeMapFace(f), s.pointShadow.faces[std::size_t(f)]);
         lights.AddLight(std::move(owned));
-        FixedCamera camera(s.camera);
-        r.renderer->MakeLightMap(device, lights, camera);
-        device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+        CpuTexture gpu = makeLightMap(lights);
         ASSERT_EQ(r.renderer->getFrameStats().pointLightsDrawn, 1);
-        CpuTexture gpu = readBack(r.renderer->getLightMap());
 
         PointLightSetup light = s.point;
         light.Shadows = shadows;
         WorldMesh sphere = toWorld(r.lightVolume("PointLightGeometry"), toM4(shipped.World()));
-        View3D view = s.cameraView();
-        Cull cull = pointCull(s.camera, light);
         PointLightParams q = pointParams(s.camera, light);
         q.depthBias = shipped.getDepthBias();
         GBufferTextures gb = s.gbufferTextures();
-        std::vector<std::vector<int>> coverage = perPixel(kWidth, kHeight, [&](int x, int y) { return coverageCandidates(sphere, view, cull, x, y); });
-        RefImage ref = referenceImage(kWidth, kHeight, SurfaceFormat::Color, true, [&](Eval& ev, PixelPos p) {
-            return pointLightPixel(ev, gb, s.pointShadow, q, coverage[std::size_t(p.y * kWidth + p.x)], p);
-        });
-        check(pass, gpu, ref);
+        check(pass, gpu, lightVolumeReference(sphere, pointCull(s.camera, light), [&](Eval& ev, const std::vector<int>& coverage, PixelPos p) {
+                  return pointLightPixel(ev, gb, s.pointShadow, q, coverage, p);
+              }));
     }
 
     GraphicsDevice& device = test::testDevice();
@@ -239,11 +201,11 @@ TEST_F(DeferredPasses, Clear) {
 TEST_F(DeferredPasses, GBuffer) {
     PassInputs& s = in();
     ShippedRenderer& r = shipped();
-    Matrix world = Matrix::Identity;
-    // The renderer's ClearGBuffer binds and clears its G-buffer; the tests' mesh is drawn into it as
-    // MakeGBuffer draws a Model part (gpu_passes.h).
+    Matrix world = Matrix::Identity;  // the scene Model's one bone
+    // The renderer's ClearGBuffer binds and clears its G-buffer; its MakeGBuffer draws the scene into it.
     r.renderer->ClearGBuffer(device);
-    makeGBuffer(device, s.sceneGpu, world, s.camera, s.albedoMap, s.normalMap, s.specularMap);
+    FixedCamera camera(s.camera);
+    r.renderer->MakeGBuffer(device, s.models(), camera);
     device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
 
     GBufferPass pass;
@@ -274,9 +236,15 @@ TEST_F(DeferredPasses, DepthWriterSpotShadowMap) {
     PassInputs& s = in();
     const SpotLightSetup& light = s.spot;
     int n = light.ShadowMapResolution;
-    RenderTarget2D shadowMap(device, n, n, false, SurfaceFormat::Single, DepthFormat::Depth24Stencil8);
-    drawSpotShadowMap(device, shadowMap, s.sceneGpu, light);
+    // The shipped LightManager draws the map of a demo SpotLight with shadows.
+    TheCansinDeferredRenderer::Lights::LightManager lights(shipped().content);
+    auto owned = std::make_unique<TheCansinDeferredRenderer::Lights::SpotLight>(
+        device, light.Position, light.Direction, light.Color, light.Intensity, true, n, &s.cookieGpu);
+    RenderTarget2D& shadowMap = owned->MakeShadowMap();
+    lights.AddLight(std::move(owned));
+    lights.DrawShadowMaps(device, s.models());
     device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+    ASSERT_EQ(lights.shadowMapsDrawn, 1);
 
     DepthWriterPass pass;
     pass.mesh = &s.scene;
@@ -297,9 +265,15 @@ TEST_F(DeferredPasses, DepthWriterPointCubeShadowMap) {
     PassInputs& s = in();
     const PointLightSetup& light = s.point;
     int n = light.ShadowMapResolution;
-    RenderTargetCube shadowMap(device, n, false, SurfaceFormat::Single, DepthFormat::Depth24Stencil8);
-    drawPointShadowMap(device, shadowMap, s.sceneGpu, light);
+    // The shipped LightManager draws the six faces of a demo PointLight with shadows.
+    TheCansinDeferredRenderer::Lights::LightManager lights(shipped().content);
+    auto owned = std::make_unique<TheCansinDeferredRenderer::Lights::PointLight>(device, light.Position, light.Radius, light.Color,
+                                                                                 light.Intensity, true, n);
+    RenderTargetCube& shadowMap = owned->MakeShadowMap();
+    lights.AddLight(std::move(owned));
+    lights.DrawShadowMaps(device, s.models());
     device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+    ASSERT_EQ(lights.shadowMapsDrawn, 1);
 
     const char* faceNames[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
     for (int f = 0; f < 6; ++f) {
@@ -326,23 +300,14 @@ TEST_F(DeferredPasses, DirectionalLight) {
     TheCansinDeferredRenderer::Lights::LightManager lights(r.content);
     lights.AddLight(std::make_unique<TheCansinDeferredRenderer::Lights::DirectionalLight>(
         s.directional.Direction, s.directional.Color, s.directional.Intensity));
-    FixedCamera camera(s.camera);
-    r.renderer->MakeLightMap(device, lights, camera);
-    device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+    CpuTexture gpu = makeLightMap(lights);
     ASSERT_EQ(r.renderer->getFrameStats().directionalLightsDrawn, 1);
 
-    DirectionalLightParams q;
-    q.inverseViewProjection = toM4(Matrix::Invert(s.camera.View * s.camera.Projection));
-    q.inverseView = toM4(Matrix::Invert(s.camera.View));
-    q.cameraPosition = toV3(s.camera.Position);
-    q.L = toV3(Vector3::Normalize(s.directional.Direction));
-    q.lightColor = toV4(s.directional.Color);
-    q.lightIntensity = s.directional.Intensity;
-    q.gbufferTextureSize = {kWidth, kHeight};
+    DirectionalLightParams q = directionalParams(s.camera, s.directional);
     GBufferTextures gb = s.gbufferTextures();
     RefImage ref = referenceImage(kWidth, kHeight, SurfaceFormat::Color, false,
                                   [&](Eval& ev, PixelPos p) { return directionalLightPixel(ev, gb, q, p); });
-    check("DirectionalLight", readBack(r.renderer->getLightMap()), ref);
+    check("DirectionalLight", gpu, ref);
 }
 
 TEST_F(DeferredPasses, SpotLightWithoutShadows) { spotTest("SpotLight.NoShadows", false); }

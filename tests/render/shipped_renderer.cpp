@@ -59,6 +59,25 @@ CpuTexture ShippedRenderer::randomNormals() {
     return readBack(texture);
 }
 
+std::unique_ptr<Model> toModel(GraphicsDevice& device, const Mesh& mesh, const ModelMaterialTextures& textures) {
+    auto v3 = [](V3 v) { return Vector3(float(v.x), float(v.y), float(v.z)); };
+    std::vector<ModelVertex> vertices;
+    for (const MeshVertex& v : mesh.vertices)
+        vertices.push_back({v3(v.position), v3(v.normal), Vector2(float(v.uv.x), float(v.uv.y)), v3(v.tangent), v3(v.binormal)});
+    std::vector<std::uint32_t> indices;
+    for (const auto& t : mesh.triangles)
+        for (int i : t) indices.push_back(std::uint32_t(i));
+    return Model::FromVertices(device, "render test scene", vertices, indices, textures);
+}
+
+void resetDevice(GraphicsDevice& device) {
+    device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+    for (int i = 0; i < kMaxTextureSlots; ++i) device.Textures[i] = nullptr;
+    device.BlendState = BlendState::Opaque;
+    device.DepthStencilState = DepthStencilState::Default;
+    device.RasterizerState = RasterizerState::CullCounterClockwise;
+}
+
 ShippedRenderer& shippedRenderer(GraphicsDevice& device) {
     static std::unique_ptr<ShippedRenderer> shipped = std::make_unique<ShippedRenderer>(device);
     return *shipped;

@@ -1,8 +1,10 @@
 // The deferred demo's own renderer, as the render tests drive it: demo/deferred's DeferredRenderer
 // and SSAO at the tests' size (effects from hlsl/xna-deferred, the content from the build's content/),
-// made once per process, and a BaseCamera with a test camera's matrices. A test uploads its inputs
-// into the renderer's targets, runs one pass (the pass methods are public for this) and reads the
-// target back.
+// made once per process, a BaseCamera with a test camera's matrices, and the tests' scene mesh as a
+// Model (Model::FromVertices), which the shipped MakeGBuffer and LightManager.DrawShadowMaps draw as
+// they draw the demo's glTF scene. A test uploads its inputs into the renderer's targets, runs one
+// pass (the pass methods are public for this) and reads the target back: every pass image the
+// render tests check is drawn by the shipped code.
 #pragma once
 
 #include <memory>
@@ -37,5 +39,12 @@ struct ShippedRenderer {
 
 // The one instance (on the tests' device).
 ShippedRenderer& shippedRenderer(GraphicsDevice& device);
+
+// `mesh` (its positions, normals, UVs and tangent frames, rounded to float) as a Model of one part
+// with the given material maps, for the shipped passes that draw Models.
+std::unique_ptr<Model> toModel(GraphicsDevice& device, const Mesh& mesh, const ModelMaterialTextures& textures);
+
+// Unbinds every target and texture slot and restores the default states (between tests).
+void resetDevice(GraphicsDevice& device);
 
 }  // namespace fxport::render_test

@@ -583,6 +583,79 @@ TEST_F(ModelTest, MaterialTexturesAndDefaults) {
     EXPECT_EQ(quadEffect->Alpha, 1.0f);
 }
 
+// Model::FromVertices: one bone, one mesh, one part over the caller's vertices and indices (as
+// given: no winding change), the given maps in place of the defaults, bounds as Load computes them.
+TEST_F(ModelTest, FromVerticesMakesOnePartOverTheGivenData) {
+    std::vector<ModelVertex> vertices(4);
+    const Vector3 corners[4] = {Vector3(0, 0, 0), Vector3(2, 0, 0), Vector3(2, 2, 0), Vector3(0, 2, 0)};
+    for (int i = 0; i < 4; ++i) {
+        vertices[std::size_t(i)].Position = corners[i];
+        vertices[std::size_t(i)].Normal = Vector3(0, 0, 1);
+        vertices[std::size_t(i)].TextureCoordinate = Vector2(float(i), 0.5f);
+    }
+    const std::vector<std::uint32_t> indices = {0, 1, 2, 0, 2, 3};
+    Texture2D albedo(device(), 1, 1, false, SurfaceFormat::Color), normals(device(), 1, 1, false, SurfaceFormat::Color);
+    const auto model = Model::FromVertices(device(), "quad", vertices, indices, {&albedo, &normals, nullptr});
+
+    ASSERT_EQ(model->Bones.Count(), 1);
+    EXPECT_EQ(model->Root, &model->Bones[0]);
+    EXPECT_EQ(model->Bones[0].Name, "quad");
+    expectNear(model->Bones[0].Transform, Matrix::Identity);
+    ASSERT_EQ(model->Meshes.Count(), 1);
+    const ModelMesh& mesh = model->Meshes["quad"];
+    EXPECT_EQ(mesh.ParentBone, &model->Bones[0]);
+    expectNear(mesh.BoundingSphere.Center, Vector3(1, 1, 0));
+    EXPECT_NEAR(mesh.BoundingSphere.Radius, std::sqrt(2.0f), 1e-6f);
+    ASSERT_EQ(mesh.MeshParts.size(), 1u);
+    const ModelMeshPart& part = mesh.MeshParts[0];
+    EXPECT_EQ(part.VertexOffset, 0);
+    EXPECT_EQ(part.NumVertices, 4);
+    EXPECT_EQ(part.StartIndex, 0);
+    EXPECT_EQ(part.PrimitiveCount, 2);
+    EXPECT_EQ(part.VertexBuffer->VertexDeclaration(), ModelVertex::VertexDeclaration);
+    const auto stored = readVertices(*part.VertexBuffer);
+    ASSERT_EQ(stored.size(), 4u);
+    for (std::size_t i = 0; i < 4; ++i) {
+        EXPECT_EQ(stored[i].Position, vertices[i].Position) << i;
+        EXPECT_EQ(stored[i].TextureCoordinate, vertices[i].TextureCoordinate) << i;
+    }
+    EXPECT_EQ(part.IndexBuffer->GetIndices(), indices);
+
+    // The given maps replace the defaults; the one not given stays the default.
+    EXPECT_EQ(part.Textures.Texture, &albedo);
+    EXPECT_EQ(part.Textures.NormalMap, &normals);
+    EXPECT_EQ(texels(part, "SpecularMap"), std::vector<Color>{Color(0, 0, 0, 0)});
+    auto* effect = dynamic_cast<BasicEffect*>(part.Effect);
+    ASSERT_NE(effect, nullptr);
+    EXPECT_TRUE(effect->TextureEnabled);
+    EXPECT_EQ(part.Effect->Parameters["Texture"].GetValueTexture2D(), &albedo);
+
+    // Without maps: Load's defaults, untextured.
+    const auto plain = Model::FromVertices(device(), "plain", vertices, indices);
+    const ModelMeshPart& plainPart = plain->Meshes[0].MeshParts[0];
+    EXPECT_EQ(texels(plainPart, "Texture"), std::vector<Color>{Color(255, 255, 255, 255)});
+    EXPECT_EQ(texels(plainPart, "NormalMap"), std::vector<Color>{Color(128, 128, 255, 255)});
+    auto* plainEffect = dynamic_cast<BasicEffect*>(plainPart.Effect);
+    ASSERT_NE(plainEffect, nullptr);
+    EXPECT_FALSE(plainEffect->TextureEnabled);
+}
+
+TEST_F(ModelTest, FromVerticesRefusesBrokenData) {
+    std::vector<ModelVertex> vertices(3);
+    auto error = [&](const std::vector<ModelVertex>& v, const std::vector<std::uint32_t>& i) -> std::string {
+        try {
+            Model::FromVertices(device(), "broken", v, i);
+        } catch (const ArgumentError& e) {
+            return e.what();
+        }
+        ADD_FAILURE() << "FromVertices did not throw ArgumentError";
+        return "";
+    };
+    EXPECT_NE(error({}, {0, 1, 2}).find("Model::FromVertices('broken'): 0 vertices"), std::string::npos);
+    EXPECT_NE(error(vertices, {0, 1}).find("whole triangles"), std::string::npos);
+    EXPECT_NE(error(vertices, {0, 1, 3}).find("index 2 is 3, past the 3 vertices"), std::string::npos);
+}
+
 TEST_F(ModelTest, BinaryGltfLoadsTheSame) {
     sceneBuilder().writeGlb(file("scene.glb"));
     const auto model = Model::Load(device(), file("scene.glb").string());

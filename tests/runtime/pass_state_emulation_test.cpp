@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "runtime_test_support.h"
@@ -128,6 +129,48 @@ TEST_F(PassStateEmulation, SrgbWriteEncodesIntoAnSrgbTargetOnly) {
         }
         device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
     }
+}
+
+// D3D9 encodes an SRGBWriteEnable pass's colours into any 8-bit target, GL only into sRGB-encoded
+// ones: a draw into a SurfaceFormat::Color target (or such a back buffer) is reported once per
+// effect, FX1304 at the state's file:line; ColorSRgb and float targets (D3D9 does not encode into
+// those either) are not.
+TEST_F(PassStateEmulation, SrgbWriteIntoAnUnencodedTargetIsReportedOncePerEffect) {
+    std::vector<std::string> warnings;
+    EffectWarningHandler previous = SetEffectWarningHandler([&](const std::string& w) {
+        if (w.find("SRGBWriteEnable") != std::string::npos) warnings.push_back(w);
+    });
+    auto said = [&] {
+        std::string all;
+        for (const std::string& w : warnings) all += w + "\n";
+        return all;
+    };
+    for (SurfaceFormat format : {SurfaceFormat::ColorSRgb, SurfaceFormat::Vector4}) {
+        RenderTarget2D target(device, 2, 2, false, format);
+        device.SetRenderTarget(target);
+        draw("SrgbWrite");
+    }
+    EXPECT_EQ(warnings.size(), 0u) << said();
+    RenderTarget2D color(device, 2, 2, false, SurfaceFormat::Color);
+    device.SetRenderTarget(color);
+    draw("LinearWrite");
+    EXPECT_EQ(warnings.size(), 0u) << said();
+    draw("SrgbWrite");
+    draw("SrgbWrite");
+    device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+    draw("SrgbWrite");  // the back buffer (SurfaceFormat::Color): the same effect, already said
+    ASSERT_EQ(warnings.size(), 1u) << said();
+    EXPECT_NE(warnings[0].find("PassStateEmulation.fx(61,"), std::string::npos) << warnings[0];
+    EXPECT_NE(warnings[0].find("warning FX1304"), std::string::npos) << warnings[0];
+    EXPECT_NE(warnings[0].find("'SRGBWriteEnable'"), std::string::npos) << warnings[0];
+
+    // Another effect with the same pass says it again.
+    Effect second{device, test::runtimeFixture("PassStateEmulation.fx")};
+    second.CurrentTechnique = second.Techniques["SrgbWrite"];
+    second.CurrentTechnique->Passes[0].Apply();
+    drawQuad(device);
+    EXPECT_EQ(warnings.size(), 2u) << said();
+    SetEffectWarningHandler(previous);
 }
 
 // --- comparison samplers

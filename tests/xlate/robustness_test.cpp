@@ -70,6 +70,9 @@ std::vector<LimitCase> fixtureCases() {
         {"GsPointInputNotArray", kDir + "gs_point_not_array.fx", diag::kHlsl, 5},
         {"MismatchedBracket", kDir + "mismatched_bracket.fx", diag::kHlsl, 3},
         {"NestedFunction", kDir + "nested_function.fx", diag::kHlsl, 5},
+        {"Float1MemberInMul", kDir + "float1_member_mul.fx", diag::kUnsupported, 6},
+        {"UndeclaredNameInTernary", kDir + "ternary_undeclared.fx", diag::kHlsl, 5},
+        {"MatrixDimensionOverFour", kDir + "matrix_dimension.fx", diag::kHlsl, 3},
         // A crash the checks above do not know: contained in the worker, reported at the entry point.
         {"ContainedGlslangCrash", kDir + "contained_glslang_crash.fx", diag::kFrontEndCrashed, 10},
     };

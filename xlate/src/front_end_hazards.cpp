@@ -2,6 +2,7 @@
 #include "front_end_hazards.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <map>
 #include <optional>
 #include <set>
@@ -22,6 +23,8 @@ public:
         mismatchedBrackets();
         nestedFunctions();
         float1InMul();
+        undeclaredInTernary();
+        templateDimensions();
         std::stable_sort(found_.begin(), found_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
         std::vector<Diagnostic> out;
         for (auto& [token, d] : found_) out.push_back(std::move(d));
@@ -137,6 +140,17 @@ private:
             if (isOneComponent(syntax_.resolveType(p.type))) names.insert(p.name);
         for (size_t i = f.body.begin; i + 1 < f.body.end; ++i)
             if (tok(i).isIdent() && tok(i + 1).isIdent() && isOneComponent(syntax_.resolveType(tok(i).text))) names.insert(tok(i + 1).text);
+        // Members of a struct-typed variable: `input.Normal` where the struct declares `float1 Normal`
+        // (fuzzer, device run 2026-11-25), kept as "input.Normal".
+        auto addMembers = [&](const std::string& type, const std::string& name) {
+            if (const FxStruct* s = syntax_.findStruct(syntax_.resolveType(type)))
+                for (const auto& m : s->members)
+                    if (m.arrayDims.empty() && isOneComponent(syntax_.resolveType(m.type))) names.insert(name + "." + m.name);
+        };
+        for (const auto& g : syntax_.globals) addMembers(g.type, g.name);
+        for (const auto& p : f.parameters) addMembers(p.type, p.name);
+        for (size_t i = f.body.begin; i + 1 < f.body.end; ++i)
+            if (tok(i).isIdent() && tok(i + 1).isIdent()) addMembers(tok(i).text, tok(i + 1).text);
         return names;
     }
 
@@ -159,6 +173,12 @@ private:
                     if (tok(i).is("(")) ++depth;
                     else if (tok(i).is(")") && --depth == 0) break;
                 }
+                continue;
+            }
+            if (tok(i + 1).is(".") && tok(i + 2).isIdent() && names.count(t.text + "." + tok(i + 2).text) && i + 3 <= end &&
+                !tok(i + 3).is(".") && !tok(i + 3).is("[")) {
+                any = true;  // a one-component struct member
+                i += 2;
                 continue;
             }
             if (!names.count(t.text) || tok(i + 1).is(".") || tok(i + 1).is("[")) return false;
@@ -191,6 +211,61 @@ private:
                         argStart = k + 1;
                     }
                     if (closes) break;
+                }
+            }
+        }
+    }
+
+    // An undeclared name in a branch of `c ? a : b` (`return v ? 1 : stor;`, `F(v ? x : B)`): glslang
+    // reports it, then dereferences the missing branch (handleReturnValue, handleFunctionArgument).
+    // A name is taken as undeclared only when it occurs once in the whole effect (a declared name
+    // occurs at least twice: its declaration and this use), is not called, not a member, not a type
+    // or keyword, so a valid effect is never refused here. fxc: X3004 undeclared identifier.
+    void undeclaredInTernary() {
+        std::map<std::string, int> occurrences;
+        for (const auto& t : syntax_.tokens)
+            if (t.isIdent()) ++occurrences[t.text];
+        static const std::set<std::string> kWords = {"true", "false", "return", "sizeof", "NULL"};
+        for (const auto& f : syntax_.functions) {
+            for (size_t q = f.body.begin; q < f.body.end; ++q) {
+                if (!tok(q).is("?")) continue;
+                // The ternary's operands run to the first ';' ',' or closing bracket at their own depth.
+                int depth = 0;
+                for (size_t i = q + 1; i < f.body.end; ++i) {
+                    const Token& t = tok(i);
+                    if (t.is("(") || t.is("[") || t.is("{")) ++depth;
+                    else if (t.is(")") || t.is("]") || t.is("}")) {
+                        if (depth-- == 0) break;
+                    } else if (depth == 0 && (t.is(";") || t.is(","))) {
+                        break;
+                    }
+                    if (!t.isIdent() || occurrences[t.text] != 1 || tok(i + 1).is("(") || tok(i - 1).is(".") || kWords.count(t.text) ||
+                        describeBasicType(syntax_.resolveType(t.text)).ok)
+                        continue;
+                    report(diag::kHlsl, "undeclared identifier '" + t.text + "'", i);
+                    return;
+                }
+            }
+        }
+    }
+
+    // `matrix<float, 8, 4>` or `vector<half, 0>` (fuzzer, device run 2026-11-25): glslang makes a type it
+    // cannot lay out (unbounded recursion in getBaseAlignment) or multiply (addGenMulArgumentConversion).
+    // fxc: X3053, dimensions must be between 1 and 4.
+    void templateDimensions() {
+        for (size_t i = 0; i + 1 < syntax_.tokens.size(); ++i) {
+            const Token& t = tok(i);
+            if (!t.isIdent() || !(t.is("vector") || t.is("matrix")) || !tok(i + 1).is("<")) continue;
+            std::vector<size_t> numbers;
+            size_t k = i + 2;
+            for (; k < syntax_.tokens.size() && !tok(k).is(">") && !tok(k).is(";") && k < i + 12; ++k)
+                if (tok(k).kind == Token::Kind::Number) numbers.push_back(k);
+            if (!tok(k).is(">")) continue;
+            for (size_t n : numbers) {
+                long v = std::strtol(tok(n).text.c_str(), nullptr, 0);
+                if (v < 1 || v > 4) {
+                    report(diag::kHlsl, std::string(t.is("matrix") ? "matrix" : "vector") + " dimensions must be between 1 and 4 (not " + tok(n).text + ")", n);
+                    return;
                 }
             }
         }

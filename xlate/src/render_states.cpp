@@ -94,8 +94,9 @@ const EnumTable& fillTable() {
     return t;
 }
 
-// Fixed-function D3D9 states: accepted (they are common in old effects) but meaningless with shaders.
-bool isFixedFunctionState(const std::string& lower) {
+}  // namespace
+
+const std::set<std::string>& fixedFunctionStateNames() {
     static const std::set<std::string> k = {
         "lighting", "fogenable", "fogcolor", "fogtablemode", "fogvertexmode", "fogstart", "fogend", "fogdensity",
         "rangefogenable", "shademode", "specularenable", "normalizenormals", "localviewer", "colorvertex", "ambient",
@@ -119,8 +120,12 @@ bool isFixedFunctionState(const std::string& lower) {
         "debugmonitortoken", "positiondegree", "normaldegree", "minimumtessellationlevel",
         "maximumtessellationlevel", "adaptivetess_x", "adaptivetess_y", "adaptivetess_z", "adaptivetess_w",
         "enableadaptivetessellation", "dmapoffset", "elementindex", "alphatocoverageenable"};
-    return k.count(lower) > 0;
+    return k;
 }
+
+namespace {
+
+bool isFixedFunctionState(const std::string& lower) { return fixedFunctionStateNames().count(lower) > 0; }
 
 struct ValueReader {
     StateContext& ctx;
@@ -490,7 +495,9 @@ bool expandDx10Object(const FxStateObject* object, const std::string& type, Stat
             fields.erase(fill);
         }
         push(out, RenderState::FillMode, fillValue, where);
-        push(out, RenderState::DepthBias, get("depthbias", ValueKind::Float, 0), where);
+        // D3D10's DepthBias counts steps of a 24-bit depth buffer (r = 2^-24); the row holds
+        // D3D9's (and XNA's) depth-range units, which the runtime turns back into steps.
+        push(out, RenderState::DepthBias, get("depthbias", ValueKind::Float, 0) / 16777216.0, where);
         push(out, RenderState::SlopeScaleDepthBias, get("slopescaleddepthbias", ValueKind::Float, 0), where);
         const FxAssignment* depthClip = fields.count("depthclipenable") ? fields["depthclipenable"] : nullptr;
         double clip = get("depthclipenable", ValueKind::Bool, 1);
@@ -688,6 +695,8 @@ bool translateSamplerAssignment(const FxAssignment& a, StateContext& ctx, Sample
             r.bad("a filter (None, Point, Linear, Anisotropic)");
             return false;
         }
+        if (norm == "pyramidalquad" || norm == "gaussianquad" || norm == "convolutionmono")
+            warnUnhonoured(ctx, a, "= " + *single + " is not honoured: filtered as Linear");
         (key == "minfilter" ? state.minFilter : key == "magfilter" ? state.magFilter : state.mipFilter) = *f;
         return true;
     }
@@ -727,6 +736,8 @@ bool translateSamplerAssignment(const FxAssignment& a, StateContext& ctx, Sample
             r.bad("an address mode (Wrap, Mirror, Clamp, Border, MirrorOnce)");
             return false;
         }
+        if (*ad == TextureAddress::MirrorOnce)
+            warnUnhonoured(ctx, a, "= MirrorOnce is not honoured: sampled as Mirror (XNA's TextureAddressMode has no MirrorOnce)");
         (key == "addressu" ? state.addressU : key == "addressv" ? state.addressV : state.addressW) = *ad;
         return true;
     }

@@ -4,6 +4,7 @@
 // runtime has one mapping onto its cached state objects.
 #pragma once
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -36,5 +37,9 @@ StateResult translatePassAssignment(const FxAssignment& assignment, StateContext
 // adding an error.
 bool translateSamplerAssignment(const FxAssignment& assignment, StateContext& context, SamplerStateDesc& state,
                                 std::string& textureParameter);
+
+// The D3D9 fixed-function states (lower case) a pass or sampler may set: accepted, ignored, and
+// warned about (FX1303). Tests set each one.
+const std::set<std::string>& fixedFunctionStateNames();
 
 }  // namespace fxport::xlate

@@ -17,6 +17,7 @@
 
 namespace fxport::xlate {
 struct CompiledShader;
+struct SourceLocation;
 }
 
 namespace fxport {
@@ -52,6 +53,8 @@ struct PassEmulation {
     int alphaFunction = 8;      // D3DCMPFUNC code (8 = ALWAYS)
     float alphaReference = 0;   // (AlphaRef & 0xFF) / 255
     bool srgbWrite = false;     // GL_FRAMEBUFFER_SRGB
+    const xlate::SourceLocation* srgbWriteAt = nullptr;  // where the pass set it (for the warning)
+    bool* srgbWriteReported = nullptr;  // the applied effect's "said once" flag
     bool operator==(const PassEmulation&) const = default;
 };
 
@@ -87,6 +90,9 @@ struct GraphicsDevice::Impl {
     bool passApplied = false;
     PassEmulation emulation;         // wanted (set by Apply)
     bool appliedSrgbWrite = false;   // what GL has
+    // SRGBWriteEnable drawing into an 8-bit target that is not sRGB-encoded: GL writes unconverted
+    // where D3D9 encoded. Reported once per effect, through the effect warning handler.
+    void reportUnencodedSrgbWrite();
     // Picks the pixel program: the shader's own, or its alpha-test variant (made on first use).
     GLuint pixelProgramFor(const ShaderProgram& program);
     std::map<std::tuple<GLuint, GLuint, GLuint>, GLuint> pipelines;

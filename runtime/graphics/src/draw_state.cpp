@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "device_impl.h"
+#include "effect_impl.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/texture.h"
 #include "fxport/xlate/alpha_test.h"
@@ -64,7 +65,28 @@ void GraphicsDevice::Impl::flush(const char* what) {
         else glDisable(GL_FRAMEBUFFER_SRGB);
         appliedSrgbWrite = emulation.srgbWrite;
     }
+    if (emulation.srgbWrite) reportUnencodedSrgbWrite();
     forceAll = false;
+}
+
+void GraphicsDevice::Impl::reportUnencodedSrgbWrite() {
+    // D3D9 encodes into 8-bit colour targets only: float and packed formats are written as they
+    // are there too, and an sRGB-encoded target (SurfaceFormat::ColorSRgb) is converted by GL.
+    const Texture* target = targets.empty() ? nullptr : targets[0].RenderTarget;
+    const SurfaceFormat format = target ? target->Format() : device.PresentationParameters().BackBufferFormat;
+    if (format != SurfaceFormat::Color || !emulation.srgbWriteAt || !emulation.srgbWriteReported || *emulation.srgbWriteReported) return;
+    *emulation.srgbWriteReported = true;
+    const xlate::SourceLocation& at = *emulation.srgbWriteAt;
+    xlate::Diagnostic d;
+    d.severity = xlate::Severity::Warning;
+    d.id = xlate::diag::kUnhonouredState;
+    d.location = at;
+    d.message = "state 'SRGBWriteEnable' is not honoured drawing into " +
+                (!target ? std::string("the back buffer")
+                         : target->Name.empty() ? std::string("a render target") : "render target '" + target->Name + "'") +
+                " (SurfaceFormat::Color): GL encodes sRGB only into SurfaceFormat::ColorSRgb targets, so the colours are "
+                "written unconverted";
+    reportEffectWarning(d.format());
 }
 
 GLuint GraphicsDevice::Impl::pixelProgramFor(const ShaderProgram& program) {

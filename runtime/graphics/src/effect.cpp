@@ -130,6 +130,10 @@ EffectWarningHandler& warningHandler() {
 
 }  // namespace
 
+void reportEffectWarning(const std::string& warning) {
+    if (const EffectWarningHandler& report = warningHandler()) report(warning);
+}
+
 EffectWarningHandler SetEffectWarningHandler(EffectWarningHandler handler) {
     EffectWarningHandler old = std::move(warningHandler());
     warningHandler() = std::move(handler);
@@ -469,6 +473,8 @@ void Effect::build() {
 void Effect::releaseGpuObjects() {
     GraphicsDevice::Impl& d = device().impl();
     impl_->releasePrograms(d);
+    // The device's pass emulation may point into this effect (its SRGBWriteEnable location).
+    if (d.emulation.srgbWriteReported == &impl_->reportedUnencodedSrgbWrite) d.emulation = PassEmulation{};
     for (Impl::Block& b : impl_->blocks) d.deleteBuffer(b.buffer);
     d.effects.erase(std::remove(d.effects.begin(), d.effects.end(), this), d.effects.end());
 }

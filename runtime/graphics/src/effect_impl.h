@@ -29,11 +29,18 @@
 
 namespace fxport {
 
+// Hands `warning` to the handler SetEffectWarningHandler installed (stderr by default): for what is
+// found only while drawing (an SRGBWriteEnable pass drawing into a target GL does not encode).
+void reportEffectWarning(const std::string& warning);
+
 struct Effect::Impl {
     // The outline: techniques, passes and parameters; parameter offsets are the block layouts known
     // so far (provisional for a block no compiled shader declared yet).
     xlate::CompiledEffect outline;
     std::string displayName;  // file name for messages: "GBuffer.fx"
+    // Whether a draw with one of its SRGBWriteEnable passes into a target GL does not encode was
+    // reported (once per effect; set while drawing, hence mutable).
+    mutable bool reportedUnencodedSrgbWrite = false;
 
     // Where technique compiles come from: the effect's source (kept from load, so a technique
     // compiled later matches the outline even if the file changes), or nothing when the effect

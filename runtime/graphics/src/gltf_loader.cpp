@@ -67,6 +67,23 @@ Matrix gltfNodeMatrix(const std::vector<double>& matrix, const std::vector<doubl
     return result;
 }
 
+BoundingSphere vertexBounds(const std::vector<ModelVertex>& vertices) {
+    if (vertices.empty()) {
+        return BoundingSphere();
+    }
+    Vector3 lo = vertices[0].Position, hi = lo;
+    for (const ModelVertex& v : vertices) {
+        lo = Vector3::Min(lo, v.Position);
+        hi = Vector3::Max(hi, v.Position);
+    }
+    const Vector3 center = (lo + hi) * 0.5f;
+    float radius = 0.0f;
+    for (const ModelVertex& v : vertices) {
+        radius = std::max(radius, Vector3::Distance(center, v.Position));
+    }
+    return BoundingSphere(center, radius);
+}
+
 namespace {
 
 // Attributes are read into doubles: exact for every glTF component type, 32-bit indices included.
@@ -587,19 +604,7 @@ int GltfReader::meshFor(int gltfMesh) {
     for (std::size_t i = 0; i < source.primitives.size(); ++i) {
         addPrimitive(mesh, gltfMesh, int(i));
     }
-    if (!mesh.vertices.empty()) {
-        Vector3 lo = mesh.vertices[0].Position, hi = lo;
-        for (const ModelVertex& v : mesh.vertices) {
-            lo = Vector3::Min(lo, v.Position);
-            hi = Vector3::Max(hi, v.Position);
-        }
-        const Vector3 center = (lo + hi) * 0.5f;
-        float radius = 0.0f;
-        for (const ModelVertex& v : mesh.vertices) {
-            radius = std::max(radius, Vector3::Distance(center, v.Position));
-        }
-        mesh.bounds = BoundingSphere(center, radius);
-    }
+    mesh.bounds = vertexBounds(mesh.vertices);
     for (const GltfPart& part : mesh.parts) {
         mesh.sixteenBitIndices = mesh.sixteenBitIndices && part.numVertices < 65536;
     }

@@ -61,6 +61,10 @@ struct GltfModel {
     std::vector<GltfImage> images;  // only the images some material uses
 };
 
+// The bounds ModelMesh::BoundingSphere holds: the centre of the vertices' bounding box, the radius to
+// the farthest vertex (an empty sphere for no vertices).
+BoundingSphere vertexBounds(const std::vector<ModelVertex>& vertices);
+
 // Reads a .gltf or .glb file. Throws ArgumentError whose message starts with `path`.
 GltfModel loadGltf(const std::string& path);
 

@@ -3,6 +3,7 @@
 #include "fxport/graphics/model.h"
 
 #include <algorithm>
+#include <string>
 #include <utility>
 
 #include "fxport/graphics/errors.h"
@@ -144,8 +145,52 @@ std::unique_ptr<Texture2D> makeSolidTexture(GraphicsDevice& device, Color color,
 }  // namespace
 
 std::unique_ptr<Model> Model::Load(GraphicsDevice& device, const std::string& path) {
-    const detail::GltfModel source = detail::loadGltf(path);
+    return build(device, detail::loadGltf(path), path);
+}
 
+std::unique_ptr<Model> Model::FromVertices(GraphicsDevice& device, const std::string& name,
+                                           const std::vector<ModelVertex>& vertices,
+                                           const std::vector<std::uint32_t>& indices,
+                                           const ModelMaterialTextures& textures) {
+    const std::string what = "Model::FromVertices('" + name + "')";
+    if (vertices.empty() || indices.empty() || indices.size() % 3 != 0) {
+        throw ArgumentError(what + ": " + std::to_string(vertices.size()) + " vertices and " + std::to_string(indices.size()) +
+                            " indices; it needs vertices and whole triangles (a multiple of 3 indices)");
+    }
+    for (std::size_t i = 0; i < indices.size(); ++i) {
+        if (indices[i] >= vertices.size()) {
+            throw ArgumentError(what + ": index " + std::to_string(i) + " is " + std::to_string(indices[i]) + ", past the " +
+                                std::to_string(vertices.size()) + " vertices");
+        }
+    }
+    // The model a one-node glTF file with one untextured primitive would give.
+    detail::GltfModel source;
+    source.bones.push_back({name, -1, Matrix::Identity, 0});
+    detail::GltfMesh mesh;
+    mesh.name = name;
+    mesh.vertices = vertices;
+    mesh.indices = indices;
+    mesh.parts.push_back({0, int(vertices.size()), 0, int(indices.size() / 3), -1});
+    mesh.bounds = detail::vertexBounds(vertices);
+    mesh.sixteenBitIndices = vertices.size() < 65536;
+    source.meshes.push_back(std::move(mesh));
+    std::unique_ptr<Model> model = build(device, source, name);
+
+    // The caller's maps replace the defaults (the BasicEffect textured as Load's would be).
+    ModelMeshPart& part = model->Meshes[0].MeshParts[0];
+    if (textures.Texture) {
+        part.Textures.Texture = textures.Texture;
+        auto& effect = static_cast<BasicEffect&>(*part.Effect);
+        effect.TextureEnabled = true;
+        effect.Texture = textures.Texture;
+        effect.Parameters["Texture"].SetValue(textures.Texture);
+    }
+    if (textures.NormalMap) part.Textures.NormalMap = textures.NormalMap;
+    if (textures.SpecularMap) part.Textures.SpecularMap = textures.SpecularMap;
+    return model;
+}
+
+std::unique_ptr<Model> Model::build(GraphicsDevice& device, const detail::GltfModel& source, const std::string& path) {
     std::unique_ptr<Model> model(new Model());
     model->path_ = path;
     Resources& res = *model->resources_;

@@ -123,6 +123,7 @@ PassStates decodePassStates(const xlate::Pass& pass) {
         row.state = s.state;
         row.index = s.index;
         row.parameter = s.parameter;
+        row.where = &s.where;
         if (s.parameter >= 0) out.hasParameterRows = true;
         else setRowValue(row, s.value);
         out.rows.push_back(row);
@@ -222,7 +223,11 @@ void applyPassStates(const PassStates& states, const Effect::Impl& e, GraphicsDe
         case RenderState::AlphaTestEnable: emulation.alphaTest = s.flag; break;
         case RenderState::AlphaFunc: emulation.alphaFunction = d3d9CompareCode(s.compare); break;
         case RenderState::AlphaRef: emulation.alphaReference = float(s.integer & 0xFF) / 255.0f; break;
-        case RenderState::SrgbWriteEnable: emulation.srgbWrite = s.flag; break;
+        case RenderState::SrgbWriteEnable:
+            emulation.srgbWrite = s.flag;
+            emulation.srgbWriteAt = s.where;
+            emulation.srgbWriteReported = &e.reportedUnencodedSrgbWrite;
+            break;
         case RenderState::DepthClipEnable:
             // Not honoured (XNA's RasterizerState has no depth clamp); xlate warns where it is
             // set to false.

@@ -23,6 +23,7 @@ struct PassStateRow {
     xlate::RenderState state = xlate::RenderState::AlphaBlendEnable;
     int index = 0;       // render target of ColorWriteEnable[n]
     int parameter = -1;  // >= 0: the value is this parameter's, read at Apply()
+    const xlate::SourceLocation* where = nullptr;  // the assignment in the compiled effect (for warnings)
     bool flag = false;
     int integer = 0;
     float number = 0;

@@ -233,6 +233,8 @@ struct EffectSource {
 // DepthClipEnable = FALSE ...; xlate's FX1303/FX1304 warnings) are reported once per effect when it
 // loads, one call per state: "file(line,col): warning FX1304: ...". The default handler writes them
 // to stderr; a host may set its own, or an empty function to silence them. Returns the old handler.
+// The handler also gets, once per effect, the first draw of an SRGBWriteEnable pass into a
+// SurfaceFormat::Color target (GL encodes sRGB only into SurfaceFormat::ColorSRgb ones).
 using EffectWarningHandler = std::function<void(const std::string& warning)>;
 EffectWarningHandler SetEffectWarningHandler(EffectWarningHandler handler);
 

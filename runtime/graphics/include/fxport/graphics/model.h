@@ -83,6 +83,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <iterator>
 #include <memory>
 #include <string>
@@ -101,6 +102,9 @@ class GraphicsDevice;
 class Model;
 class ModelBone;
 class ModelMesh;
+namespace detail {
+struct GltfModel;
+}
 
 // The vertex of every Model (56 bytes), laid out as its VertexDeclaration says.
 struct ModelVertex {
@@ -225,6 +229,18 @@ class Model {
 public:
     // Loads a .gltf or .glb file (see the file comment). Throws ArgumentError naming the file.
     static std::unique_ptr<Model> Load(fxport::GraphicsDevice& device, const std::string& path);
+    // fxport: a Model of one mesh with one part under one bone (identity transform), all named
+    // `name`, made from vertices and triangle-list indices in memory, for geometry a program makes
+    // itself (XNA makes Models only in its content pipeline). The indices are drawn as given, so
+    // front faces are clockwise, as XNA's. The part has a BasicEffect and Textures as Load gives an
+    // untextured glTF primitive; each map given in `textures` replaces its default (Texture also
+    // becomes the BasicEffect's texture, TextureEnabled). The given textures are not owned: they
+    // must outlive the Model. Throws ArgumentError naming `name` for no vertices, indices that are
+    // not whole triangles, or an index past the vertices.
+    static std::unique_ptr<Model> FromVertices(fxport::GraphicsDevice& device, const std::string& name,
+                                               const std::vector<ModelVertex>& vertices,
+                                               const std::vector<std::uint32_t>& indices,
+                                               const ModelMaterialTextures& textures = {});
     ~Model();
     Model(const Model&) = delete;
     Model& operator=(const Model&) = delete;
@@ -254,6 +270,9 @@ public:
 private:
     struct Resources;
     Model();
+    // Makes the GPU side of a parsed model (Load's and FromVertices' common part); `path` names it.
+    static std::unique_ptr<Model> build(fxport::GraphicsDevice& device, const detail::GltfModel& source,
+                                        const std::string& path);
     std::string path_;
     std::unique_ptr<Resources> resources_;
     std::vector<Matrix> drawTransforms_;  // Draw's absolute bone transforms (kept to avoid reallocating)
