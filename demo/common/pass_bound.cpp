@@ -1,4 +1,5 @@
-// PassBound: the bytes of the targets each pass bound, from GraphicsDevice::targetsBoundSinceMark.
+// PassBound: the bytes of the targets each pass bound, from GraphicsDevice::targetsBoundSinceMark,
+// against the fill rate of GpuLimits (or --fill-rate).
 #include "common/pass_bound.h"
 
 #include <algorithm>
@@ -8,42 +9,98 @@
 
 namespace fxport::demo {
 
+namespace {
+template <class T>
+T median(std::vector<T> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+}
+}  // namespace
+
+void PassBound::setUp(GraphicsDevice& runDevice, double fillRate, bool bounds, GpuTimer* timer) {
+    device = &runDevice;
+    fillRateGBps = fillRate;
+    limits.reset();
+    if (!bounds) return;
+    limits = GpuLimits::ForDevice(runDevice);
+    if (timer) timer->CountFragments(true);
+    std::printf("GPU limits of %s (measured once, cached):\n  fill GB/s (opaque / additive):", limits->renderer.c_str());
+    for (const GpuLimits::Fill& f : limits->fill)
+        std::printf(" %s %.1f/%.1f", surfaceFormatName(f.format), f.opaqueGBps, f.blendedGBps);
+    std::printf("\n  clear %.1f GB/s, bilinear fetch %.1f Gtexel/s\n", limits->clearGBps, limits->fetchGTexelsPerSecond);
+}
+
+void PassBound::forgetRuns() { runs_.clear(); }
+
 void PassBound::begin() {
     if (device) device->markBoundTargets();
 }
 
 void PassBound::end(const std::string& pass) {
     if (!device) return;
-    double bytes = 0;
+    Run run;
+    run.blended = device->blendedSinceMark();
+    run.fragmentBytes = device->colorBytesPerFragmentSinceMark();
+    auto rate = [&](SurfaceFormat format) {
+        return limits ? limits->fillGBps(format, run.blended) : fillRateGBps;
+    };
     for (const RenderTargetBinding& binding : device->targetsBoundSinceMark()) {
-        if (const auto* target = dynamic_cast<const RenderTarget2D*>(binding.RenderTarget))
-            bytes += double(RenderTargetBytes(target->Width(), target->Height(), 1, target->Format(), target->DepthStencilFormat()));
-        else if (const auto* cube = dynamic_cast<const RenderTargetCube*>(binding.RenderTarget))
-            bytes += double(RenderTargetBytes(cube->Size(), cube->Size(), 1, cube->Format(), cube->DepthStencilFormat()));
+        double bytes = 0, pixels = 0;
+        SurfaceFormat format = SurfaceFormat::Color;
+        if (const auto* target = dynamic_cast<const RenderTarget2D*>(binding.RenderTarget)) {
+            bytes = double(RenderTargetBytes(target->Width(), target->Height(), 1, target->Format(), target->DepthStencilFormat()));
+            pixels = double(target->Width()) * target->Height();
+            format = target->Format();
+        } else if (const auto* cube = dynamic_cast<const RenderTargetCube*>(binding.RenderTarget)) {
+            bytes = double(RenderTargetBytes(cube->Size(), cube->Size(), 1, cube->Format(), cube->DepthStencilFormat()));
+            pixels = double(cube->Size()) * cube->Size();
+            format = cube->Format();
+        }
+        if (run.rateGBps == 0) run.rateGBps = rate(format);
+        run.bytes += bytes;
+        run.pixels = std::max(run.pixels, pixels);
+        if (rate(format) > 0) run.writeOnceMs += bytes / (rate(format) * 1e9) * 1e3;
     }
-    writes_[pass].push_back(bytes);
+    runs_[pass].push_back(run);
 }
 
 double PassBound::bytesPerRun(const std::string& pass) {
-    auto found = writes_.find(pass);
-    if (found == writes_.end() || found->second.empty()) return 0.0;
-    std::vector<double> runs = found->second;
-    std::sort(runs.begin(), runs.end());
-    const std::size_t n = runs.size();
-    return n % 2 ? runs[n / 2] : (runs[n / 2 - 1] + runs[n / 2]) / 2;
+    auto found = runs_.find(pass);
+    if (found == runs_.end() || found->second.empty()) return 0.0;
+    std::vector<double> bytes;
+    for (const Run& r : found->second) bytes.push_back(r.bytes);
+    return median(bytes);
 }
 
-std::string PassBound::columns(const std::string& pass, double medianMs) {
-    if (writes_.find(pass) == writes_.end()) return {};
-    const double bytes = bytesPerRun(pass);
-    char text[128];
-    if (fillRateGBps > 0) {
-        const double boundMs = bytes / (fillRateGBps * 1e9) * 1e3;
-        std::snprintf(text, sizeof text, "  %9.2f MB  bound %8.3f ms  x%.1f", bytes / 1e6, boundMs,
-                      boundMs > 0 ? medianMs / boundMs : 0.0);
-    } else {
-        std::snprintf(text, sizeof text, "  %9.2f MB", bytes / 1e6);
+double PassBound::boundMs(const std::string& pass, double fragments) {
+    auto found = runs_.find(pass);
+    if (found == runs_.end() || found->second.empty()) return 0.0;
+    std::vector<double> bounds;
+    for (const Run& r : found->second) {
+        const double fragmentMs = r.rateGBps > 0 ? fragments * r.fragmentBytes / (r.rateGBps * 1e9) * 1e3 : 0;
+        bounds.push_back(std::max(r.writeOnceMs, fragmentMs));
     }
+    return median(bounds);
+}
+
+std::string PassBound::columns(const GpuTimer::Section& section) {
+    return columns(section.name, section.medianMs(), section.medianFragments());
+}
+
+std::string PassBound::columns(const std::string& pass, double medianMs, double fragments) {
+    auto found = runs_.find(pass);
+    if (found == runs_.end()) return {};
+    const double bytes = bytesPerRun(pass);
+    const double bound = boundMs(pass, fragments);
+    char text[192];
+    int n = std::snprintf(text, sizeof text, "  %9.2f MB", bytes / 1e6);
+    if (bound > 0)
+        n += std::snprintf(text + n, sizeof text - std::size_t(n), "  bound %8.3f ms  x%.1f", bound, medianMs / bound);
+    std::vector<double> pixels;
+    for (const Run& r : found->second) pixels.push_back(r.pixels);
+    if (fragments > 0 && median(pixels) > 0)
+        std::snprintf(text + n, sizeof text - std::size_t(n), "  %.2f fragments/px", fragments / median(pixels));
     return text;
 }
 

@@ -82,6 +82,8 @@ OptionResult parseCommonOption(int argc, char** argv, int& i, CommonOptions& o, 
         o.platform = "egl";
     } else if (arg == "--window") {
         o.platform = "glfw";
+    } else if (arg == "--bounds") {
+        o.bounds = true;
     } else if (arg == "--check-finite") {
         o.checkFinite = true;
     } else if (arg == "--fill-rate") {

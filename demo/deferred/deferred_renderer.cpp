@@ -146,6 +146,11 @@ void DeferredRenderer::ClearGBuffer(GraphicsDevice& GraphicsDevice) {
     // (The G-buffer's depth is cleared by SetRenderTargets: the targets are DiscardContents, which
     // XNA 4 -- and fxport -- clears when set.)
 
+    // fxport (issue 16): Clear.fx's quad writes every pixel of the three targets with blending
+    // off, so the colour SetRenderTargets cleared them to is never seen: the device drops that
+    // clear (D3D11.1's DiscardView; FXPORT_HONOUR_DISCARDS=0 keeps it). The same image.
+    GraphicsDevice.DiscardContents(ClearOptions::Target);
+
     //Set Clear Effect
     Clear->CurrentTechnique->Passes[0].Apply();
 
@@ -426,6 +431,7 @@ void DeferredRenderer::MakeFinal(GraphicsDevice& GraphicsDevice, RenderTarget2D*
 
     //Clear
     GraphicsDevice.Clear(Color::Transparent);
+    GraphicsDevice.DiscardContents(ClearOptions::Target);  // fxport: the quad below covers it (see ClearGBuffer)
 
     //Set Textures
     GraphicsDevice.Textures[0] = GBufferTargets[0].RenderTarget;

@@ -88,8 +88,7 @@ int RunDeferred(const RunOptions& options) {
     game.demo.gpuTimer = timer.get();
     const bool sync = options.syncPasses.value_or(options.platform == "osmesa");
     PassTimer::syncDevice = sync ? game.GraphicsDevice : nullptr;
-    fxport::demo::PassBound::device = game.GraphicsDevice;
-    fxport::demo::PassBound::fillRateGBps = options.fillRateGBps;
+    fxport::demo::PassBound::setUp(*game.GraphicsDevice, options.fillRateGBps, options.bounds, timer.get());
     fxport::demo::FiniteCheckScope finite(game.GraphicsDevice, options.checkFinite);
 
     std::printf("fxdemo deferred: %dx%d on %s (%s)\n", options.width, options.height, options.platform.c_str(),
@@ -114,7 +113,7 @@ int RunDeferred(const RunOptions& options) {
                 sync ? " (each pass finished before and after: --sync-passes)" : "");
     for (const GpuTimer::Section& section : timer->Sections())
         std::printf("  %-12s %9.3f ms%s\n", section.name.c_str(), section.medianMs(),
-                    fxport::demo::PassBound::columns(section.name, section.medianMs()).c_str());
+                    fxport::demo::PassBound::columns(section).c_str());
 
     if (options.platform != "glfw" || options.outDirGiven) {
         std::filesystem::create_directories(options.outDir);
@@ -243,6 +242,7 @@ int RunDeferredProgram(int argc, char** argv) {
     options.platform = common.platform;
     options.checkFinite = common.checkFinite;
     options.fillRateGBps = common.fillRateGBps;
+    options.bounds = common.bounds;
     options.defines = common.defines;
     return RunDeferred(options);
 }

@@ -37,6 +37,7 @@ struct RunOptions {
     bool ssaoHalfResolution = false;
     bool reuseShadowMaps = true;  // --no-shadow-cache: false
     double fillRateGBps = 0;      // --fill-rate (common/pass_bound.h)
+    bool bounds = false;          // --bounds (common/pass_bound.h)
     bool explain = false;           // --explain: print what was built and left out (deferred/build_report.h)
     bool checkFinite = false;       // --check-finite: scan every pass's targets for NaN/Inf
     std::vector<std::pair<std::string, std::string>> defines;  // --define NAME=VALUE: every effect's #defines

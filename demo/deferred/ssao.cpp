@@ -90,6 +90,10 @@ void SSAO::RenderSSAO(GraphicsDevice& GraphicsDevice, const std::vector<RenderTa
 
     //Clear
     GraphicsDevice.Clear(Color::White);
+    // fxport (issue 16): the full-screen quad below writes every pixel, opaque, and SSAO.fx never
+    // discards, so the clear is never seen: the device drops it (D3D11.1's DiscardView;
+    // FXPORT_HONOUR_DISCARDS=0 keeps it). The same image. Likewise in BlurSSAO and Compose.
+    GraphicsDevice.DiscardContents(ClearOptions::Target);
 
     //Set Samplers
     GraphicsDevice.Textures[1] = GBuffer[1].RenderTarget;
@@ -126,6 +130,7 @@ void SSAO::BlurSSAO(GraphicsDevice& GraphicsDevice) {
 
     //Clear
     GraphicsDevice.Clear(Color::White);
+    GraphicsDevice.DiscardContents(ClearOptions::Target);  // fxport: see RenderSSAO
 
     //Set Samplers, GBuffer was set before so no need to reset...
     GraphicsDevice.Textures[3] = SSAOTarget;
@@ -153,6 +158,7 @@ void SSAO::Compose(GraphicsDevice& GraphicsDevice, RenderTarget2D* Scene, Render
 
     //Clear
     GraphicsDevice.Clear(Color::White);
+    GraphicsDevice.DiscardContents(ClearOptions::Target);  // fxport: see RenderSSAO
 
     //Set Samplers
     GraphicsDevice.Textures[0] = Scene;

@@ -191,6 +191,8 @@ void LightRenderer::UnwrapShadowCasters(const SpotLight& sLight, float lightDirA
 
     GraphicsDevice.SetRenderTarget(unwrapTarget.get());
     GraphicsDevice.Clear(Color::Transparent);
+    // (issue 16: the sprite below covers the whole target, opaque, through an effect that never
+    // discards, so the device drops this clear itself: ClearStatistics::covered.)
     spriteBatch->Begin(SpriteSortMode::Deferred, BlendState::Opaque, SamplerState::PointClamp, nullptr, nullptr,
                        unwrapSpotlight);
     // fxport: the unwrap target's size (the seed: fullScreen.Width square; see rayCount).

@@ -308,8 +308,7 @@ int runLighting2d(int argc, char** argv) {
     if (check) game.checkCapture = &checkCapture;
     const bool sync = platformName == "osmesa";
     PassTimer::syncDevice = sync ? game.GraphicsDevice : nullptr;
-    fxport::demo::PassBound::device = game.GraphicsDevice;
-    fxport::demo::PassBound::fillRateGBps = common.fillRateGBps;
+    fxport::demo::PassBound::setUp(*game.GraphicsDevice, common.fillRateGBps, common.bounds, timer.get());
     fxport::demo::FiniteCheckScope finite(game.GraphicsDevice, common.checkFinite);
     std::printf("fxdemo lighting2d: %dx%d on %s (%s); %zu spot lights, %zu point lights\n", width, height,
                 platformName.c_str(), game.GraphicsDevice->rendererName().c_str(),
@@ -331,7 +330,7 @@ int runLighting2d(int argc, char** argv) {
                 sync ? " (each pass finished before and after)" : "");
     for (const GpuTimer::Section& section : timer->Sections())
         std::printf("  %-14s %9.3f ms%s\n", section.name.c_str(), section.medianMs(),
-                    fxport::demo::PassBound::columns(section.name, section.medianMs()).c_str());
+                    fxport::demo::PassBound::columns(section).c_str());
 
     // Before the images: the check reads the back buffer.
     int status = 0;

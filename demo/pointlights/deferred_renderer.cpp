@@ -99,6 +99,10 @@ void DeferredRenderer::ResolveGBuffer() {
 
 void DeferredRenderer::ClearGBuffer() {
     GraphicsDevice.DepthStencilState = DepthStencilState::None;
+    // fxport (issue 16): the quad writes every pixel of the three targets with blending off, so the
+    // colour SetRenderTargets cleared them to is never seen: the device drops that clear (D3D11.1's
+    // DiscardView; FXPORT_HONOUR_DISCARDS=0 keeps it). The same image.
+    GraphicsDevice.DiscardContents(ClearOptions::Target);
     clearBufferEffect->Techniques[0]->Passes[0].Apply();
     quadRenderer->Render(Vector2::One * -1, Vector2::One);
     GraphicsDevice.DepthStencilState = DepthStencilState::Default;
@@ -333,6 +337,9 @@ void DeferredRenderer::DrawLights(const GameTime& gameTime) {
     GraphicsDevice.SetRenderTarget(nullptr);
 
     PassTimer timed(gpuTimer, "FinalCombine");
+    // fxport (issue 16): the quad below covers the back buffer, opaque, so the colour binding it
+    // cleared is never seen: the device drops that clear (see ClearGBuffer).
+    GraphicsDevice.DiscardContents(ClearOptions::Target);
     //set the effect parameters
     finalCombineEffect->Parameters["colorMap"].SetValue(colorRT.get());
     finalCombineEffect->Parameters["lightMap"].SetValue(lightRT.get());

@@ -10,6 +10,7 @@
 //   --camera ARC,ROTATION,DISTANCE  the orbit camera's start (degrees, degrees, units; -25,0,20)
 //   --gbuffer tutorial|half16|float32  the G-buffer's and lightRT's formats (the series' Color/Color/
 //              Single with a Color light map; HalfVector4 x2/HalfSingle; Vector4 x2/Single)
+//   --light-count N  N point lights in the chapter's two rings (the report's knob; issue 16's 10 000)
 //   --no-cull  draw every point light, also those outside the view frustum (as the chapter)
 //   --explain  print the effects (compile time), targets (bytes) and passes built and left out,
 //              and the point lights drawn and frustum-culled, against the all-features scene
@@ -40,7 +41,7 @@ namespace {
 
 const char* kUsage = "fxdemo pointlights [--size WxH] [--frames N] [--out DIR] [--time T] [--gpu] [--window]\n"
                      "                          [--spot] [--check] [--camera A,R,D] [--no-cull]\n"
-                     "                          [--gbuffer tutorial|half16|float32] [--explain]\n"
+                     "                          [--gbuffer tutorial|half16|float32] [--light-count N] [--explain]\n"
                      "  Catalin Zima's deferred point lights (seed 001): writes DIR/final.png and DIR/debug.png.\n"
                      "  --size WxH     back buffer size (800x600)      --frames N   frames to run headless\n"
                      "  --out DIR      where the images go (fxdemo-out/pointlights)\n"
@@ -50,6 +51,7 @@ const char* kUsage = "fxdemo pointlights [--size WxH] [--frames N] [--out DIR] [
                      "  --camera A,R,D the camera's arc, rotation (degrees) and distance\n"
                      "  --no-cull      draw every light, also those outside the view frustum\n"
                      "  --gbuffer F    the G-buffer's formats: tutorial (Color, Color, Single), half16, float32\n"
+                     "  --light-count N  N point lights (1..100000) in the chapter's two rings instead of its 22\n"
                      "  --explain      print the effects, targets and passes built and left out";
 
 int usage(const std::string& message) { return fxport::demo::usageError("pointlights", message); }
@@ -65,6 +67,7 @@ int runPointLights(int argc, char** argv) {
     bool explain = false;
     bool cull = true;
     bool cameraGiven = false;
+    int lightCount = 0;
     GBufferFormats formats = GBufferFormats::Tutorial;
     float cameraArc = 0, cameraRotation = 0, cameraDistance = 0;
     for (int i = 1; i < argc; ++i) {
@@ -94,6 +97,12 @@ int runPointLights(int argc, char** argv) {
             else if (name == "half16") formats = GBufferFormats::Half16;
             else if (name == "float32") formats = GBufferFormats::Float32;
             else return usage(fxport::demo::wants("--gbuffer", "tutorial, half16 or float32", v));
+        } else if (arg == "--light-count") {
+            const char* v = value();
+            char* end = nullptr;
+            const long n = v ? std::strtol(v, &end, 10) : 0;
+            if (!v || *end || n < 1 || n > 100000) return usage(fxport::demo::wants("--light-count", "a number of lights from 1 to 100000", v));
+            lightCount = int(n);
         } else if (arg == "--no-cull") {
             cull = false;
         } else if (arg == "--camera") {
@@ -120,6 +129,7 @@ int runPointLights(int argc, char** argv) {
     // Headless without --time: a fixed time, so that the default run is reproducible too.
     game.demo.time = time ? time : (common.platform == "glfw" ? std::nullopt : std::optional<double>(1.0));
     game.demo.quality.gbufferFormats = formats;
+    game.demo.quality.lightCount = lightCount;
     if (cameraGiven) {
         game.demo.cameraArc = cameraArc;
         game.demo.cameraRotation = cameraRotation;
@@ -136,16 +146,15 @@ int runPointLights(int argc, char** argv) {
     game.getRenderer().setGpuTimer(timer.get());
     const bool sync = common.platform == "osmesa";
     PassTimer::syncDevice = sync ? game.GraphicsDevice : nullptr;
-    fxport::demo::PassBound::device = game.GraphicsDevice;
-    fxport::demo::PassBound::fillRateGBps = common.fillRateGBps;
+    fxport::demo::PassBound::setUp(*game.GraphicsDevice, common.fillRateGBps, common.bounds, timer.get());
     fxport::demo::FiniteCheckScope finite(game.GraphicsDevice, common.checkFinite);
 
     const Camera& camera = game.getCamera();
     std::printf("fxdemo pointlights: %dx%d on %s (%s)\n", common.width, common.height, common.platform.c_str(),
                 game.GraphicsDevice->rendererName().c_str());
-    std::printf("1 directional + 22 point lights; camera (%.2f, %.2f, %.2f); light rig scale %.2f centre (%.1f, %.1f, %.1f); "
+    std::printf("1 directional + %d point lights; camera (%.2f, %.2f, %.2f); light rig scale %.2f centre (%.1f, %.1f, %.1f); "
                 "time %s\n",
-                double(camera.Position.X), double(camera.Position.Y), double(camera.Position.Z),
+                lightCount ? lightCount : 22, double(camera.Position.X), double(camera.Position.Y), double(camera.Position.Z),
                 double(game.getRenderer().lightRig.scale), double(game.getRenderer().lightRig.center.X),
                 double(game.getRenderer().lightRig.center.Y), double(game.getRenderer().lightRig.center.Z),
                 game.demo.time ? std::to_string(*game.demo.time).c_str() : "game clock");
@@ -168,7 +177,7 @@ int runPointLights(int argc, char** argv) {
                 sync ? " (each pass finished before and after)" : "");
     for (const GpuTimer::Section& section : timer->Sections())
         std::printf("  %-16s %9.3f ms%s\n", section.name.c_str(), section.medianMs(),
-                    fxport::demo::PassBound::columns(section.name, section.medianMs()).c_str());
+                    fxport::demo::PassBound::columns(section).c_str());
 
     int status = 0;
     if (check && !CheckPasses(game, spot, game.demo.time.value_or(0.0))) status = 1;

@@ -126,8 +126,7 @@ int runRastertek50(int argc, char** argv) {
         application.SetGpuTimer(timer.get());
         const bool sync = common.platform == "osmesa";
         fxport::demo::PassTimer::syncDevice = sync ? &device : nullptr;
-        fxport::demo::PassBound::device = &device;
-        fxport::demo::PassBound::fillRateGBps = common.fillRateGBps;
+        fxport::demo::PassBound::setUp(device, common.fillRateGBps, common.bounds, timer.get());
         fxport::demo::FiniteCheckScope finite(&device, common.checkFinite);
         std::printf("fxdemo rastertek50: %dx%d on %s (%s)\n", common.width, common.height, common.platform.c_str(),
                     device.rendererName().c_str());
@@ -141,7 +140,7 @@ int runRastertek50(int argc, char** argv) {
                     double(application.GetRotation()), sync ? " (each pass finished before and after)" : "");
         for (const fxport::GpuTimer::Section& section : timer->Sections())
             std::printf("  %-12s %9.3f ms%s\n", section.name.c_str(), section.medianMs(),
-                        fxport::demo::PassBound::columns(section.name, section.medianMs()).c_str());
+                        fxport::demo::PassBound::columns(section).c_str());
 
         if (common.platform != "glfw" || common.outDirGiven) {
             std::filesystem::create_directories(common.outDir);

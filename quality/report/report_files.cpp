@@ -21,7 +21,13 @@ std::string fixed(double v, const char* format) {
 
 std::string passes(const Measurement& m, const char* separator) {
     std::string s;
-    for (const auto& [name, ms] : m.passMs) s += (s.empty() ? "" : separator) + name + " " + fixed(ms, "%.3f");
+    for (std::size_t i = 0; i < m.passMs.size(); ++i) {
+        const auto& [name, ms] = m.passMs[i];
+        s += (s.empty() ? "" : separator) + name + " " + fixed(ms, "%.3f");
+        // --bounds: "(bound 0.147 x1.3)", the pass's bound and ms / bound
+        if (i < m.passBoundMs.size() && m.passBoundMs[i] > 0)
+            s += " (bound " + fixed(m.passBoundMs[i], "%.3f") + " x" + fixed(ms / m.passBoundMs[i], "%.1f") + ")";
+    }
     return s;
 }
 

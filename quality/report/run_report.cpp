@@ -4,7 +4,7 @@
 // each *_sweep.cpp for which). Writes DIR/report.md, DIR/report.csv, DIR/report.png and each
 // setting's image under DIR/images/.
 //
-//   fxdemo report [--out DIR] [--gpu] [--frames N] [--size WxH] [--quick] [--check] [--demos a,b,...]
+//   fxdemo report [--out DIR] [--gpu] [--frames N] [--size WxH] [--quick] [--check] [--demos a,b,...] [--bounds]
 #include <cctype>
 #include <chrono>
 #include <cmath>
@@ -130,6 +130,7 @@ int runReport(int argc, char** argv) {
     if (sizeGiven) options.width = common.width, options.height = common.height;
     else if (quick) options.width = 96, options.height = 64;
     options.outDir = common.outDir;
+    options.bounds = common.bounds;
     options.progress = [](const Measurement& m) {
         std::printf("  %-12s %-20s %-40s %9.3f ms  RMS %.5f  max %.4f  PSNR %6.2f dB", m.demo.c_str(), m.knob.c_str(),
                     m.setting.c_str(), m.frameMs, m.error.rms, m.error.max, m.error.psnr);
@@ -137,6 +138,10 @@ int runReport(int argc, char** argv) {
             std::printf("  light map: RMS %.5f  max %.4f  PSNR %6.2f dB (off terminator: RMS %.5f; vs ideal ESM: RMS %.5f  max %.4f)",
                         m.lightMapError.rms, m.lightMapError.max, m.lightMapError.psnr, m.lightMapErrorOffTerminator.rms,
                         m.lightMapErrorVsIdealEsm.rms, m.lightMapErrorVsIdealEsm.max);
+        for (std::size_t i = 0; i < m.passBoundMs.size() && i < m.passMs.size(); ++i)  // --bounds
+            if (m.passBoundMs[i] > 0)
+                std::printf("%s%s %.3f (bound %.3f x%.1f)", i ? ", " : "\n    passes: ", m.passMs[i].first.c_str(),
+                            m.passMs[i].second, m.passBoundMs[i], m.passMs[i].second / m.passBoundMs[i]);
         std::printf("\n");
         std::fflush(stdout);
     };
@@ -188,7 +193,7 @@ int runReport(int argc, char** argv) {
 }  // namespace fxport::report
 
 FXDEMO_PROGRAM(report,
-               "fxdemo report [--out DIR] [--gpu] [--frames N] [--size WxH] [--quick] [--check] [--demos a,b,...]\n"
+               "fxdemo report [--out DIR] [--gpu] [--frames N] [--size WxH] [--quick] [--check] [--demos a,b,...] [--bounds]\n"
                "  Error against GPU time for each demo's quality knobs: DIR/report.md, report.csv, report.png.\n"
                "  --out DIR      where the report goes (fxdemo-out/report)\n"
                "  --gpu          headless on the GPU (EGL) instead of OSMesa\n"
@@ -196,5 +201,6 @@ FXDEMO_PROGRAM(report,
                "  --size WxH     the demos' size (each demo's own; --quick 96x64)\n"
                "  --quick        tiny sizes, one timed frame: a smoke run\n"
                "  --check        assert what must hold on any machine (exit 1 if not)\n"
-               "  --demos LIST   which sweeps: rastertek50,lighting2d,pointlights,deferred (all)",
+               "  --demos LIST   which sweeps: rastertek50,lighting2d,pointlights,deferred (all)\n"
+               "  --bounds       each pass's bound and ms / bound beside its time (GpuLimits x its fragments)",
                fxport::report::runReport);

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "common/frame_loop.h"
+#include "common/pass_bound.h"
 #include "common/pass_timer.h"
 
 namespace fxport::report {
@@ -15,6 +16,13 @@ void runTimedFrames(GraphicsDevice& device, GpuTimer& timer, const SweepOptions&
                     const std::function<void()>& frame, Measurement& m) {
     const bool sync = options.platform == "osmesa";
     demo::PassTimer::syncDevice = sync ? &device : nullptr;
+    if (options.bounds) {
+        // The limits are measured (or read from the cache) once per process: every setting shares them.
+        if (!demo::PassBound::limits) demo::PassBound::limits = GpuLimits::ForDevice(device);
+        demo::PassBound::device = &device;
+        demo::PassBound::forgetRuns();
+        timer.CountFragments(true);
+    }
     // Warm-up frames first (shader programs linked, targets first touched, GPU clocks up after the
     // CPU-only work of the previous setting): timed like the others, then dropped.
     int warmup = 0;
@@ -31,15 +39,21 @@ void runTimedFrames(GraphicsDevice& device, GpuTimer& timer, const SweepOptions&
         return true;
     });
     demo::PassTimer::syncDevice = nullptr;
+    demo::PassBound::device = nullptr;
     auto median = [&](std::vector<double> v) {
         if (v.size() > std::size_t(warmup)) v.erase(v.begin(), v.begin() + warmup);
         std::sort(v.begin(), v.end());
         return v.empty() ? 0.0 : (v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]));
     };
     m.passMs.clear();
+    m.passBoundMs.clear();
     for (const GpuTimer::Section& section : timer.Sections()) {
-        if (section.name == "frame") m.frameMs = median(section.milliseconds);
-        else m.passMs.emplace_back(section.name, median(section.milliseconds));
+        if (section.name == "frame") {
+            m.frameMs = median(section.milliseconds);
+        } else {
+            m.passMs.emplace_back(section.name, median(section.milliseconds));
+            if (options.bounds) m.passBoundMs.push_back(demo::PassBound::boundMs(section.name, median(section.fragments)));
+        }
     }
     m.size = std::to_string(device.PresentationParameters().BackBufferWidth) + "x" +
              std::to_string(device.PresentationParameters().BackBufferHeight);

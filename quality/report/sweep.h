@@ -19,6 +19,7 @@ struct SweepOptions {
     bool quick = false;               // few settings at a tiny size (ctest)
     int width = 0, height = 0;        // 0: each demo's own default size
     std::string outDir;               // where the per-setting images go (empty: none)
+    bool bounds = false;              // --bounds: each pass's bound beside its time (PassBound)
     std::function<void(const Measurement&)> progress;  // called after each setting
 };
 

@@ -14,11 +14,13 @@ using test::readFloats;
 using test::runtimeFixture;
 
 struct Device {
-    explicit Device(bool defer) {
+    explicit Device(bool defer, bool honourDiscards = true, bool dropCovered = true) {
         PresentationParameters p;
         p.BackBufferWidth = 8;
         p.BackBufferHeight = 4;
         p.DeferClears = defer;
+        p.HonourDiscards = honourDiscards;
+        p.DropCoveredClears = dropCovered;
         device = std::make_unique<GraphicsDevice>(p);
         effect = std::make_unique<Effect>(*device, runtimeFixture("Conventions.fx"));
         effect->CurrentTechnique = effect->Techniques["SolidColor"];
@@ -136,6 +138,82 @@ TEST(DeferredClears, BackBufferReadSeesPendingClear) {
     std::vector<Color> pixels = d.device->GetBackBufferData();
     ASSERT_EQ(pixels.size(), 32u);
     for (const Color& c : pixels) EXPECT_TRUE(c.R == 10 && c.G == 20 && c.B == 30 && c.A == 255);
+}
+
+// DiscardContents before a full-target quad: the bind clear's colour never reaches GL (counted as
+// discarded), the depth clear still does for the depth-tested draw, and the pixels are the quad's
+// -- the same as with discards not honoured (every clear sent).
+TEST(DeferredClears, DiscardContentsDropsThePendingColourClear) {
+    for (bool honour : {true, false}) {
+        SCOPED_TRACE(honour ? "honoured" : "not honoured");
+        Device d(true, honour);
+        RenderTarget2D target(*d.device, 8, 4, false, SurfaceFormat::Vector4, DepthFormat::Depth24Stencil8);
+        d.device->SetRenderTarget(target);
+        ClearStatistics before = d.device->clearStatistics();
+        d.device->DiscardContents(ClearOptions::Target);
+        d.draw(Vector4(0.25f, 0.5f, 0.75f, 1), DepthStencilState::DepthRead);  // tests depth: needs its clear
+        d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+        std::vector<float> texels = readFloats(target);
+        for (int i = 0; i < 32; ++i) EXPECT_EQ(pixel(texels, i), (std::vector<float>{0.25f, 0.5f, 0.75f, 1})) << "texel " << i;
+        ClearStatistics after = d.device->clearStatistics();
+        EXPECT_EQ(after.discarded - before.discarded, honour ? 1 : 0);
+        // Sent: depth+stencil (one call, two channels) before the draw, and colour too unless discarded.
+        EXPECT_EQ(after.executed - before.executed, honour ? 2 : 3);
+    }
+}
+
+// A SpriteBatch sprite that covers the whole target, opaque, through SpriteBatch's own shaders:
+// the pending colour clear is dropped (ClearStatistics::covered) and the pixels are the sprite's,
+// as with every clear executed or with DropCoveredClears off. One texel short, alpha-blended, or a viewport smaller than the
+// target: the clear runs, and the uncovered texels keep its colour (XNA's DiscardColor).
+TEST(DeferredClears, SpriteCoveringTheTargetDropsThePendingColourClear) {
+    struct Case {
+        const char* name;
+        Rectangle destination;
+        const BlendState* blend;
+        bool smallViewport;
+        bool dropped;
+    };
+    const Case cases[] = {
+        {"covers", Rectangle(0, 0, 8, 4), &BlendState::Opaque, false, true},
+        {"beyond the edges", Rectangle(-2, -1, 12, 6), &BlendState::Opaque, false, true},
+        {"one column short", Rectangle(0, 0, 7, 4), &BlendState::Opaque, false, false},
+        {"alpha-blended", Rectangle(0, 0, 8, 4), &BlendState::AlphaBlend, false, false},
+        {"viewport smaller than the target", Rectangle(0, 0, 8, 4), &BlendState::Opaque, true, false},
+    };
+    const Color sprite(10, 200, 30, 255);
+    for (const Case& c : cases) {
+        std::vector<Color> images[3];
+        for (int mode = 0; mode < 3; ++mode) {
+            const bool defer = mode < 2, drop = mode == 0;
+            SCOPED_TRACE(std::string(c.name) + (mode == 0 ? ", dropping" : mode == 1 ? ", not dropping" : ", immediate"));
+            Device d(defer, true, drop);
+            RenderTarget2D target(*d.device, 8, 4, false, SurfaceFormat::Color, DepthFormat::None);
+            Texture2D white(*d.device, 1, 1);
+            white.SetData(std::vector<Color>{Color::White});
+            SpriteBatch batch(*d.device);
+            d.device->SetRenderTarget(target);
+            if (c.smallViewport) d.device->Viewport = Viewport(0, 0, 6, 4);
+            ClearStatistics before = d.device->clearStatistics();
+            batch.Begin(SpriteSortMode::Deferred, *c.blend);
+            batch.Draw(white, c.destination, sprite);
+            batch.End();
+            d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+            images[mode].resize(32);
+            target.GetData(images[mode].data(), 32);
+            ClearStatistics after = d.device->clearStatistics();
+            EXPECT_EQ(after.covered - before.covered, drop && c.dropped ? 1 : 0);
+            const std::vector<Color>& texels = images[mode];
+            for (int i = 0; i < 32; ++i) {
+                const bool inside = (i % 8) < (c.smallViewport ? 6 : c.destination.X + c.destination.Width);
+                const Color expected = inside ? sprite : d.device->DiscardColor;
+                if (c.blend == &BlendState::Opaque) {
+                    EXPECT_TRUE(texels[std::size_t(i)] == expected) << "texel " << i;
+                }
+            }
+        }
+        EXPECT_TRUE(images[0] == images[1] && images[0] == images[2]) << c.name << ": the three ways differ";
+    }
 }
 
 }  // namespace

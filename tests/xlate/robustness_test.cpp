@@ -73,6 +73,7 @@ std::vector<LimitCase> fixtureCases() {
         {"Float1MemberInMul", kDir + "float1_member_mul.fx", diag::kUnsupported, 6},
         {"UndeclaredNameInTernary", kDir + "ternary_undeclared.fx", diag::kHlsl, 5},
         {"MatrixDimensionOverFour", kDir + "matrix_dimension.fx", diag::kHlsl, 3},
+        {"Float1CallInMul", kDir + "float1_call_mul.fx", diag::kUnsupported, 7},
         // A crash the checks above do not know: contained in the worker, reported at the entry point.
         {"ContainedGlslangCrash", kDir + "contained_glslang_crash.fx", diag::kFrontEndCrashed, 10},
     };

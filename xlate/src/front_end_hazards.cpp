@@ -166,8 +166,11 @@ private:
                 continue;
             }
             if (!t.isIdent()) return false;
-            if (tok(i + 1).is("(") && isOneComponent(syntax_.resolveType(t.text))) {
-                any = true;  // float1(...): its own arguments do not matter
+            const FxFunction* called = tok(i + 1).is("(") ? syntax_.findFunction(t.text) : nullptr;
+            if (tok(i + 1).is("(") && (isOneComponent(syntax_.resolveType(t.text)) || (called && isOneComponent(syntax_.resolveType(called->returnType))))) {
+                // float1(...), or a call of a function returning float1 (`float1 decode(...)`; fuzzer,
+                // device run 2026-11-25): its own arguments do not matter.
+                any = true;
                 int depth = 0;
                 for (++i; i < end; ++i) {
                     if (tok(i).is("(")) ++depth;

@@ -18,7 +18,7 @@ namespace fxport::xlate {
 //  - a closing bracket that does not match the open one (`const float2 W[)];`)
 //  - a function defined inside another (`float4 o F() { ... }` in a body, a missing ';')
 //  - `mul` with a float1/float1x1 argument and a matrix (glslang's argument conversion), also a
-//    float1 member of a struct (`mul(input.Normal, World)`)
+//    float1 member of a struct (`mul(input.Normal, World)`) or a call returning float1
 //  - an undeclared name in a branch of a ternary (`return v ? 1 : stor;`)
 //  - `vector<T, N>` / `matrix<T, R, C>` with a dimension outside 1..4 (`matrix<half, 8, 4>`)
 std::vector<Diagnostic> findFrontEndHazards(const EffectSyntax& syntax, const SourceMap& map);

@@ -80,6 +80,8 @@ struct GraphicsDevice::Impl {
     // What targetsBoundSinceMark() returns (after the first mark, the bindings of every SetRenderTargets).
     std::vector<RenderTargetBinding> boundSinceMark;
     bool trackingBoundTargets = false;  // set by the first markBoundTargets(): hosts that never check pay nothing
+    int widestColorBytesSinceMark = 0;  // colorBytesPerFragmentSinceMark()
+    bool blendedSinceMark = false;      // set by flush() while tracking
     void noteBoundTargets();
     void generateMipsOfUnboundTargets(const std::vector<RenderTargetBinding>& previous);
 
@@ -168,6 +170,12 @@ struct GraphicsDevice::Impl {
         int stencil = 0;
     } pendingClear;
     bool deferClears = true;  // PresentationParameters::DeferClears and $FXPORT_DEFER_CLEARS
+    bool honourDiscards = true;  // PresentationParameters::HonourDiscards and $FXPORT_HONOUR_DISCARDS
+    bool dropCoveredClears = true;  // PresentationParameters::DropCoveredClears and $FXPORT_DROP_COVERED_CLEARS
+    void discardContents(unsigned options);               // GraphicsDevice::DiscardContents
+    // SpriteBatch, before drawing a batch with a sprite whose rectangle covers the whole viewport:
+    // drops the pending colour clear if the draw must write every pixel (pending_clear.cpp).
+    void dropColorClearUnderCoveringSprite(const ShaderProgram* spriteVertexShader);
     ClearStatistics clearStats;
     void executeClear(const Rectangle& rect, unsigned options, const Vector4& color, float depth, int stencil);
     void recordClear(unsigned options, const Vector4& color, float depth, int stencil);

@@ -63,6 +63,7 @@ void GraphicsDevice::Impl::flush(const char* what) {
     if (boundFramebuffer == 0) bindTargets();
     resolvePendingClearBeforeDraw(device.DepthStencilState);
     applyBlend(blendForPixelShader(device.BlendState, shaders[1]->shader->outputTargets));
+    if (trackingBoundTargets && device.BlendState.blendingEnabled()) blendedSinceMark = true;
     applyDepthStencil(device.DepthStencilState);
     applyRasterizer(device.RasterizerState);
     applyViewport(device.Viewport);

@@ -11,20 +11,30 @@ struct GpuTimer::Pending {
     int section = 0;
     GLuint begin = 0;
     GLuint end = 0;
+    GLuint samples = 0;  // GL_SAMPLES_PASSED, 0 when not counted
 };
 
-double GpuTimer::Section::medianMs() const {
-    if (milliseconds.empty()) return 0;
-    std::vector<double> v = milliseconds;
+namespace {
+double median(std::vector<double> v) {
+    if (v.empty()) return 0;
     std::sort(v.begin(), v.end());
     std::size_t n = v.size();
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
+}  // namespace
+
+double GpuTimer::Section::medianMs() const { return median(milliseconds); }
+
+double GpuTimer::Section::medianFragments() const { return median(fragments); }
 
 GpuTimer::GpuTimer(GraphicsDevice& device) : device_(device) {}
 
 GpuTimer::~GpuTimer() {
     for (GLuint& q : allQueries_) device_.impl().deleteQuery(q);
+    for (auto& p : pending_)
+        if (p->samples) device_.impl().deleteQuery(p->samples);
+    for (auto& p : open_)
+        if (p->samples) device_.impl().deleteQuery(p->samples);
 }
 
 std::uint32_t GpuTimer::newQuery() {
@@ -41,7 +51,7 @@ std::uint32_t GpuTimer::newQuery() {
 int GpuTimer::sectionIndex(const std::string& name) {
     for (std::size_t i = 0; i < sections_.size(); ++i)
         if (sections_[i].name == name) return int(i);
-    sections_.push_back(Section{name, {}});
+    sections_.push_back(Section{name, {}, {}});
     return int(sections_.size() - 1);
 }
 
@@ -52,6 +62,10 @@ void GpuTimer::Begin(const std::string& name) {
     }
     auto p = std::make_unique<Pending>();
     p->section = sectionIndex(name);
+    if (countFragments_ && open_.empty()) {
+        p->samples = device_.impl().createQuery(GL_SAMPLES_PASSED);
+        glBeginQuery(GL_SAMPLES_PASSED, p->samples);
+    }
     p->begin = newQuery();
     glQueryCounter(p->begin, GL_TIMESTAMP);
     open_.push_back(std::move(p));
@@ -63,6 +77,7 @@ void GpuTimer::End() {
     open_.pop_back();
     p->end = newQuery();
     glQueryCounter(p->end, GL_TIMESTAMP);
+    if (p->samples) glEndQuery(GL_SAMPLES_PASSED);
     pending_.push_back(std::move(p));
 }
 
@@ -96,6 +111,12 @@ void GpuTimer::collect(bool wait) {
         glGetQueryObjectui64v(p.begin, GL_QUERY_RESULT, &t0);
         glGetQueryObjectui64v(p.end, GL_QUERY_RESULT, &t1);
         sections_[std::size_t(p.section)].milliseconds.push_back(double(t1 - t0) * 1e-6);
+        if (p.samples) {
+            GLuint64 fragments = 0;
+            glGetQueryObjectui64v(p.samples, GL_QUERY_RESULT, &fragments);
+            sections_[std::size_t(p.section)].fragments.push_back(double(fragments));
+            device_.impl().deleteQuery(p.samples);
+        }
         freeQueries_.push_back(p.begin);
         freeQueries_.push_back(p.end);
     }

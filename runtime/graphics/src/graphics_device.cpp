@@ -108,6 +108,10 @@ GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters)
     liveDevices().push_back(this);
     const char* defer = std::getenv("FXPORT_DEFER_CLEARS");
     impl_->deferClears = parameters_.DeferClears && !(defer && std::string(defer) == "0");
+    const char* discard = std::getenv("FXPORT_HONOUR_DISCARDS");
+    impl_->honourDiscards = parameters_.HonourDiscards && !(discard && std::string(discard) == "0");
+    const char* covered = std::getenv("FXPORT_DROP_COVERED_CLEARS");
+    impl_->dropCoveredClears = parameters_.DropCoveredClears && !(covered && std::string(covered) == "0");
 
     // The D3D conventions (docs/DESIGN.md): NDC z in [0,1], and window y from the top row so
     // render targets come out top-row-first.
@@ -251,13 +255,23 @@ void GraphicsDevice::Impl::noteBoundTargets() {
     };
     if (targets.empty()) note(RenderTargetBinding(backBuffer.get()));
     for (const RenderTargetBinding& b : targets) note(b);
+    int bytes = 0;
+    if (targets.empty()) bytes = bytesPerPixel(backBuffer->Format());
+    for (const RenderTargetBinding& b : targets)
+        if (b.RenderTarget) bytes += bytesPerPixel(b.RenderTarget->Format());
+    widestColorBytesSinceMark = std::max(widestColorBytesSinceMark, bytes);
 }
 
 void GraphicsDevice::markBoundTargets() {
     impl_->trackingBoundTargets = true;
     impl_->boundSinceMark.clear();
+    impl_->widestColorBytesSinceMark = 0;
+    impl_->blendedSinceMark = false;
     impl_->noteBoundTargets();
 }
+
+int GraphicsDevice::colorBytesPerFragmentSinceMark() const { return impl_->widestColorBytesSinceMark; }
+bool GraphicsDevice::blendedSinceMark() const { return impl_->blendedSinceMark; }
 
 std::vector<RenderTargetBinding> GraphicsDevice::targetsBoundSinceMark() const { return impl_->boundSinceMark; }
 

@@ -6,8 +6,10 @@
 // pixels are the same as executing every clear at once (PresentationParameters::DeferClears=false
 // does that; tests compare the two).
 #include <algorithm>
+#include <vector>
 
 #include "device_impl.h"
+#include "fxport/xlate/compiled_effect.h"
 #include "fxport/graphics/render_target.h"
 
 namespace fxport {
@@ -91,6 +93,57 @@ void GraphicsDevice::Impl::resolvePendingClearBeforeRead(const Texture* texture)
                                  : std::any_of(targets.begin(), targets.end(),
                                                [&](const RenderTargetBinding& b) { return b.RenderTarget == texture; });
     if (bound) resolvePendingClear(kColor);
+}
+
+void GraphicsDevice::DiscardContents(ClearOptions options) { impl_->discardContents(unsigned(options)); }
+
+void GraphicsDevice::Impl::discardContents(unsigned options) {
+    if (!honourDiscards) return;
+    const unsigned dropped = pendingClear.options & options;
+    clearStats.discarded += channels(dropped);
+    pendingClear.options &= ~dropped;
+    if (boundFramebuffer == 0) bindTargets();
+    std::vector<GLenum> attachments;
+    if (options & kColor)
+        for (std::size_t i = 0; i < std::max<std::size_t>(1, targets.size()); ++i)
+            attachments.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
+    if ((options & kDepth) && (options & kStencil)) attachments.push_back(GL_DEPTH_STENCIL_ATTACHMENT);
+    else if (options & kDepth) attachments.push_back(GL_DEPTH_ATTACHMENT);
+    else if (options & kStencil) attachments.push_back(GL_STENCIL_ATTACHMENT);
+    if (!attachments.empty())
+        glInvalidateFramebuffer(GL_FRAMEBUFFER, GLsizei(attachments.size()), attachments.data());  // boundFramebuffer
+}
+
+// The sprite's rectangle covers the viewport (SpriteBatch checked: an unrotated, unflipped sprite
+// through SpriteBatch's own vertex shader and XNA's matrix, no transform, corners at or beyond the
+// viewport's; the -0.5 of the matrix and the +0.5 - 1/256 of the D3D9 pixel-centre emulation leave
+// its edges 1/256 pixel up-left of the viewport's, so every pixel centre is strictly inside).
+// Every pixel is then written unless something here stops it: blending, a write mask, a depth or
+// stencil test, the scissor, culling of a clockwise sprite, a viewport smaller than the target,
+// several targets (a sprite effect writes one), or a pixel shader that can discard. Otherwise the
+// clear's colour is never seen and is not sent.
+void GraphicsDevice::Impl::dropColorClearUnderCoveringSprite(const ShaderProgram* spriteVertexShader) {
+    if (!dropCoveredClears || !(pendingClear.options & kColor)) return;
+    if (boundFramebuffer == 0) bindTargets();  // targetWidth/Height are the bound targets'
+    const fxport::BlendState& blend = device.BlendState;
+    const fxport::DepthStencilState& depth = device.DepthStencilState;
+    const fxport::RasterizerState& raster = device.RasterizerState;
+    const fxport::Viewport& viewport = device.Viewport;
+    const ShaderProgram* vertex = shaders[0];
+    const ShaderProgram* pixel = shaders[1];
+    const bool writesAll = blend.ColorWriteChannels == fxport::ColorWriteChannels::All;
+    const bool ownVertexShader = vertex && vertex == spriteVertexShader && vertex->shader &&
+                                 vertex->shader->needsD3D9PixelOffset;
+    const bool pixelMayDiscard = !pixel || !pixel->shader || emulation.alphaTest ||
+                                 pixel->shader->glsl.find("discard") != std::string::npos;
+    if (blend.blendingEnabled() || !writesAll || depth.DepthBufferEnable || depth.StencilEnable ||
+        raster.ScissorTestEnable || raster.CullMode == fxport::CullMode::CullClockwiseFace ||
+        raster.FillMode != fxport::FillMode::Solid || blend.MultiSampleMask != -1 || targets.size() > 1 ||
+        !ownVertexShader || pixelMayDiscard || viewport.X != 0 || viewport.Y != 0 ||
+        viewport.Width != targetWidth || viewport.Height != targetHeight)
+        return;
+    pendingClear.options &= ~kColor;
+    ++clearStats.covered;
 }
 
 void GraphicsDevice::Impl::leaveBoundTargets() {

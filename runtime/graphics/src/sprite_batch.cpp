@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "device_impl.h"
 #include "fxport/graphics/effect.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/graphics_device.h"
@@ -134,6 +135,29 @@ void SpriteBatch::setRenderState() {
                             -1.0f - invWidth, 1.0f - invHeight, 0.0f, 1.0f);
     matrixTransform_->SetValue(transformMatrix_ * projection);
     spriteEffect_->CurrentTechnique->Passes[0].Apply();
+    ownVertexShader_ = device_.impl().shaders[0];
+}
+
+// Issue 16: whether one of these sprites is an unrotated, unflipped rectangle at or beyond every
+// edge of the viewport, at a depth that is not clipped, drawn with XNA's matrix alone -- so that,
+// through SpriteBatch's vertex shader, it covers every pixel of the viewport (the device checks
+// the rest: GraphicsDevice::Impl::dropColorClearUnderCoveringSprite).
+bool SpriteBatch::coversViewport(const VertexPositionColorTexture* vertices, int sprites) const {
+    // Immediate mode set the matrix at Begin, from the viewport of that moment: not proven here.
+    if (!(transformMatrix_ == Matrix::Identity) || sortMode_ == SpriteSortMode::Immediate) return false;
+    const float width = float(device_.Viewport.Width), height = float(device_.Viewport.Height);
+    for (int s = 0; s < sprites; ++s) {
+        const VertexPositionColorTexture* v = vertices + std::size_t(s) * 4;
+        // Corners as queue() lays them out (kCornerX/Y): 0 top-left, 1 top-right, 2 bottom-left,
+        // 3 bottom-right; left < right and top < bottom keep the clockwise winding XNA's culling keeps.
+        const float left = v[0].Position.X, right = v[1].Position.X, top = v[0].Position.Y, bottom = v[2].Position.Y;
+        const bool rectangle = v[2].Position.X == left && v[3].Position.X == right && v[1].Position.Y == top &&
+                               v[3].Position.Y == bottom && left < right && top < bottom;
+        bool depthKept = true;
+        for (int c = 0; c < 4; ++c) depthKept &= v[c].Position.Z >= 0.0f && v[c].Position.Z <= 1.0f;
+        if (rectangle && depthKept && left <= 0.0f && top <= 0.0f && right >= width && bottom >= height) return true;
+    }
+    return false;
 }
 
 void SpriteBatch::Draw(Texture2D& texture, Rectangle destinationRectangle, Color color) {
@@ -292,10 +316,14 @@ void SpriteBatch::drawBatch(Texture2D& texture, const VertexPositionColorTexture
                                (customEffect_->Name.empty() ? customEffect_->sourcePath() : customEffect_->Name) +
                                " has no CurrentTechnique");
     }
+    // A custom effect of several passes draws the sprites once per pass: not proven here.
+    const bool onePass = customEffect_ == nullptr || customEffect_->CurrentTechnique->Passes.Count() == 1;
     while (count > 0) {
         const int sprites = std::min(count, kMaxBatchSize);
+        const bool covers = onePass && coversViewport(vertices, sprites);
         auto draw = [&] {
             device_.Textures[0] = texture;
+            if (covers) device_.impl().dropColorClearUnderCoveringSprite(static_cast<const ShaderProgram*>(ownVertexShader_));
             device_.DrawUserIndexedPrimitives(PrimitiveType::TriangleList, vertices, 0, sprites * 4, indices_.data(), 0,
                                               sprites * 2);
             ++drawCalls_;

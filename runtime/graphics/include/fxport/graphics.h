@@ -18,6 +18,7 @@
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/finite_check.h"
 #include "fxport/graphics/fullscreen_quad.h"
+#include "fxport/graphics/gpu_limits.h"
 #include "fxport/graphics/gpu_timer.h"
 #include "fxport/graphics/graphics_device.h"
 #include "fxport/graphics/input.h"

@@ -4,6 +4,10 @@
 //   GpuTimer timer(device);
 //   for each frame: timer.Begin("GBuffer"); ...draws...; timer.End(); ...; timer.EndFrame();
 //   timer.Finish();  for (auto& s : timer.Sections()) print(s.name, s.medianMs());
+//
+// With CountFragments(true) each outermost section also counts the fragments its draws wrote
+// (a GL_SAMPLES_PASSED query: fragments that passed the depth/stencil test and were not
+// discarded) -- the overdraw a pass's fill-rate bound is made of (issue 16).
 #pragma once
 
 #include <cstdint>
@@ -20,7 +24,9 @@ public:
     struct Section {
         std::string name;
         std::vector<double> milliseconds;  // one entry per frame in which the section ran
+        std::vector<double> fragments;     // per run, with CountFragments (outermost sections only)
         double medianMs() const;
+        double medianFragments() const;  // 0 when not counted
     };
 
     explicit GpuTimer(GraphicsDevice& device);
@@ -35,6 +41,10 @@ public:
     void EndFrame();
     // Waits for every outstanding query and collects it (call before reading Sections()).
     void Finish();
+
+    // Count each outermost section's fragments from the next Begin on (GL has one such query
+    // active at a time, so nested sections are not counted).
+    void CountFragments(bool on) { countFragments_ = on; }
 
     // In order of first appearance; the frame total is the section "frame".
     const std::vector<Section>& Sections() const { return sections_; }
@@ -52,6 +62,7 @@ private:
     std::vector<std::uint32_t> freeQueries_;
     std::vector<std::uint32_t> allQueries_;
     std::uint32_t frameStart_ = 0;
+    bool countFragments_ = false;
 };
 
 }  // namespace fxport

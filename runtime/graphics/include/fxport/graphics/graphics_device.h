@@ -53,6 +53,12 @@ struct PresentationParameters {
     // that no draw tested, never runs. The pixels are the same either way; false (or
     // $FXPORT_DEFER_CLEARS=0) executes every clear at once, as written.
     bool DeferClears = true;
+    // fxport: GraphicsDevice::DiscardContents drops what it names (false, or
+    // $FXPORT_HONOUR_DISCARDS=0: it does nothing, so every clear runs as written).
+    bool HonourDiscards = true;
+    // fxport: a pending colour clear is dropped under a SpriteBatch sprite that provably writes every
+    // pixel of the target (ClearStatistics::covered); false (or $FXPORT_DROP_COVERED_CLEARS=0) keeps it.
+    bool DropCoveredClears = true;
     std::string windowTitle;     // GLFW only
 };
 
@@ -108,6 +114,8 @@ struct ClearStatistics {
     long executed = 0;   // channel clears sent to GL
     long replaced = 0;   // pending channel clears overwritten by a later clear before any use
     long dropped = 0;    // depth/stencil clears of a DiscardContents target left before any draw tested them
+    long discarded = 0;  // pending channel clears dropped by DiscardContents
+    long covered = 0;    // pending colour clears dropped under a SpriteBatch sprite that writes every pixel
 };
 
 class GraphicsDevice {
@@ -153,6 +161,11 @@ public:
     // appears as backBufferTarget(). A disposed target drops out of the list.
     void markBoundTargets();
     std::vector<RenderTargetBinding> targetsBoundSinceMark() const;
+    // Also since the mark (issue 16's per-pass bounds): the most colour bytes one fragment writes
+    // (the sum over the targets one SetRenderTargets bound together, the widest such set), and
+    // whether a draw blended.
+    int colorBytesPerFragmentSinceMark() const;
+    bool blendedSinceMark() const;
     RenderTarget2D& backBufferTarget();  // to read (GetDataAsVector4); SetRenderTarget(nullptr) binds it
 
     // Clears every bound target (colour, depth, stencil) inside the viewport, ignoring blend and
@@ -160,6 +173,12 @@ public:
     void Clear(Color color);
     void Clear(ClearOptions options, Color color, float depth, int stencil);
     void Clear(ClearOptions options, Vector4 color, float depth, int stencil);
+    // fxport addition (D3D11.1's DiscardView, GL's glInvalidateFramebuffer): the bound targets'
+    // channels in `options` will be overwritten before anything reads them (a full-target quad with
+    // blending off, say), so their contents are undefined from here: a clear of them still pending
+    // (SetRenderTargets' clear of a DiscardContents target) is dropped and GL is told. Pixels the
+    // next draws do not cover are undefined, as in D3D. PresentationParameters::HonourDiscards.
+    void DiscardContents(ClearOptions options);
 
     // XNA 4 signatures. baseVertex is added to every index; minVertexIndex/numVertices are hints.
     void DrawIndexedPrimitives(PrimitiveType primitiveType, int baseVertex, int minVertexIndex, int numVertices,

@@ -169,6 +169,8 @@ private:
     std::vector<std::uint16_t> indices_;                       // 6 per sprite, kMaxBatchSize sprites
     int drawCalls_ = 0;
     int drawCallsLastEnd_ = 0;
+    const void* ownVertexShader_ = nullptr;  // the built-in pass's vertex program (issue 16: covering sprites)
+    bool coversViewport(const VertexPositionColorTexture* vertices, int sprites) const;
 };
 
 }  // namespace fxport

@@ -1,0 +1,156 @@
+// The GPU-limits probe and the fragment counts a pass's bound is made of (issue 16): the probe
+// measures positive, finite rates, leaves the device drawing as before, and its cache holds what it
+// wrote; GpuTimer's fragment counts are the exact number of pixels a draw covered.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "fxport/graphics/gpu_limits.h"
+#include "fxport/graphics/gpu_timer.h"
+#include "runtime_test_support.h"
+
+namespace fxport {
+namespace {
+
+using test::drawQuad;
+using test::readFloats;
+using test::runtimeFixture;
+
+struct Device {
+    Device() {
+        PresentationParameters p;
+        p.BackBufferWidth = 8;
+        p.BackBufferHeight = 4;
+        device = std::make_unique<GraphicsDevice>(p);
+        effect = std::make_unique<Effect>(*device, runtimeFixture("Conventions.fx"));
+        effect->CurrentTechnique = effect->Techniques["SolidColor"];
+        device->RasterizerState = RasterizerState::CullNone;
+        device->DepthStencilState = DepthStencilState::None;
+    }
+    void draw(Vector4 color) {
+        effect->Parameters["Color"].SetValue(color);
+        effect->CurrentTechnique->Passes[0].Apply();
+        drawQuad(*device);
+    }
+    std::unique_ptr<GraphicsDevice> device;
+    std::unique_ptr<Effect> effect;
+};
+
+bool positive(double v) { return std::isfinite(v) && v > 0; }
+
+TEST(GpuLimits, MeasuresEveryRateAndLeavesTheDeviceDrawingAsBefore) {
+    Device d;
+    RenderTarget2D target(*d.device, 8, 4, false, SurfaceFormat::Vector4, DepthFormat::None);
+    d.device->SetRenderTarget(target);
+    d.device->Clear(Color(0, 0, 0, 0));
+    d.device->BlendState = BlendState::Additive;
+    d.draw(Vector4(0.25f, 0, 0, 1));  // the device's GL state is set up before the probe
+    GpuLimits limits = GpuLimits::Measure(*d.device, 64, 1);
+    EXPECT_EQ(limits.renderer, d.device->rendererName());
+    ASSERT_EQ(limits.fill.size(), 6u);
+    for (const GpuLimits::Fill& f : limits.fill) {
+        EXPECT_TRUE(positive(f.opaqueGBps)) << surfaceFormatName(f.format);
+        EXPECT_TRUE(positive(f.blendedGBps)) << surfaceFormatName(f.format);
+    }
+    EXPECT_TRUE(positive(limits.clearGBps));
+    EXPECT_TRUE(positive(limits.fetchGTexelsPerSecond));
+    // Still additive, into the same target: 0.25 + 0.5 (the probe's blending and targets are gone).
+    d.draw(Vector4(0.5f, 0, 0, 1));
+    d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+    std::vector<float> texels = readFloats(target);
+    for (int i = 0; i < 32; ++i) EXPECT_FLOAT_EQ(texels[std::size_t(i) * 4], 0.75f) << "texel " << i;
+}
+
+TEST(GpuLimits, TextRoundTripsAndUnknownFormatsTakeTheirTexelSizesRate) {
+    GpuLimits limits;
+    limits.renderer = "Some GPU / 4.5";
+    const SurfaceFormat formats[] = {SurfaceFormat::Color,  SurfaceFormat::Rgba64, SurfaceFormat::HalfVector4,
+                                     SurfaceFormat::Vector4, SurfaceFormat::Single, SurfaceFormat::Vector2};
+    double rate = 10;
+    for (SurfaceFormat f : formats) limits.fill.push_back({f, rate, rate / 2}), rate += 10;
+    limits.clearGBps = 50;
+    limits.fetchGTexelsPerSecond = 30;
+    GpuLimits back;
+    ASSERT_TRUE(GpuLimits::fromText(limits.toText(), back));
+    EXPECT_EQ(back.renderer, limits.renderer);
+    EXPECT_EQ(back.toText(), limits.toText());
+    EXPECT_DOUBLE_EQ(back.fillGBps(SurfaceFormat::Vector4, false), 40);
+    EXPECT_DOUBLE_EQ(back.fillGBps(SurfaceFormat::Vector4, true), 20);
+    // HdrBlendable (8 bytes) is not measured: Rgba64's, the first measured 8-byte format.
+    EXPECT_DOUBLE_EQ(back.fillGBps(SurfaceFormat::HdrBlendable, false), 20);
+    // Bgr565 (2 bytes) has no measured size: the slowest.
+    EXPECT_DOUBLE_EQ(back.fillGBps(SurfaceFormat::Bgr565, false), 10);
+    GpuLimits untouched;
+    EXPECT_FALSE(GpuLimits::fromText("renderer x\nfill Color 1 1\n", untouched));         // formats missing
+    EXPECT_FALSE(GpuLimits::fromText(limits.toText() + "speed 3\n", untouched));         // unknown key
+    EXPECT_FALSE(GpuLimits::fromText("fill Color -1 1\n" + limits.toText(), untouched));  // not a rate
+    EXPECT_TRUE(untouched.fill.empty());
+}
+
+TEST(GpuLimits, ForDeviceMeasuresOnceThenReadsTheCache) {
+    Device d;
+    const std::filesystem::path dir = std::filesystem::path(testing::TempDir()) / "fxport-gpu-limits-test";
+    std::filesystem::remove_all(dir);
+    GpuLimits first = GpuLimits::ForDevice(*d.device, dir.string());
+    ASSERT_EQ(first.fill.size(), 6u);
+    std::filesystem::path file;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) file = entry.path();
+    ASSERT_FALSE(file.empty());
+    // A cache entry with other numbers for this renderer is what the next call returns.
+    GpuLimits edited = first;
+    edited.clearGBps = 12345;
+    std::ofstream(file) << edited.toText();
+    EXPECT_DOUBLE_EQ(GpuLimits::ForDevice(*d.device, dir.string()).clearGBps, 12345);
+    // One for another renderer is measured again.
+    edited.renderer = "another GPU";
+    std::ofstream(file) << edited.toText();
+    EXPECT_NE(GpuLimits::ForDevice(*d.device, dir.string()).clearGBps, 12345);
+    std::filesystem::remove_all(dir);
+}
+
+// The fragments of each outermost section: the whole 8x4 target, then a 3x2 scissor; a nested
+// section is not counted (one GL_SAMPLES_PASSED query at a time).
+TEST(GpuTimer, CountsTheFragmentsEachOutermostSectionWrote) {
+    Device d;
+    RenderTarget2D target(*d.device, 8, 4, false, SurfaceFormat::Vector4, DepthFormat::None);
+    GpuTimer timer(*d.device);
+    timer.CountFragments(true);
+    for (int frame = 0; frame < 2; ++frame) {
+        d.device->SetRenderTarget(target);
+        timer.Begin("whole");
+        d.draw(Vector4(1, 0, 0, 1));
+        timer.End();
+        timer.Begin("scissored");
+        RasterizerState scissored = RasterizerState::CullNone;
+        scissored.ScissorTestEnable = true;
+        d.device->RasterizerState = scissored;
+        d.device->ScissorRectangle = Rectangle(2, 1, 3, 2);
+        d.draw(Vector4(0, 1, 0, 1));
+        d.device->RasterizerState = RasterizerState::CullNone;
+        timer.Begin("nested");
+        d.draw(Vector4(0, 0, 1, 1));
+        timer.End();
+        timer.End();
+        timer.EndFrame();
+    }
+    timer.Finish();
+    double whole = -1, scissored = -1;
+    std::size_t nestedCounts = 99;
+    for (const GpuTimer::Section& s : timer.Sections()) {
+        if (s.name == "whole") whole = s.medianFragments();
+        if (s.name == "scissored") {
+            scissored = s.medianFragments();
+            EXPECT_EQ(s.fragments.size(), 2u);
+        }
+        if (s.name == "nested") nestedCounts = s.fragments.size();
+    }
+    EXPECT_EQ(whole, 32);
+    EXPECT_EQ(scissored, 6 + 32);  // the scissored draw and the nested whole-target one
+    EXPECT_EQ(nestedCounts, 0u);
+    d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+}
+
+}  // namespace
+}  // namespace fxport
