@@ -74,6 +74,7 @@ std::vector<LimitCase> fixtureCases() {
         {"UndeclaredNameInTernary", kDir + "ternary_undeclared.fx", diag::kHlsl, 5},
         {"MatrixDimensionOverFour", kDir + "matrix_dimension.fx", diag::kHlsl, 3},
         {"Float1CallInMul", kDir + "float1_call_mul.fx", diag::kUnsupported, 7},
+        {"AdjacentNamesInTernary", kDir + "ternary_adjacent_names.fx", diag::kHlsl, 6},
         // A crash the checks above do not know: contained in the worker, reported at the entry point.
         {"ContainedGlslangCrash", kDir + "contained_glslang_crash.fx", diag::kFrontEndCrashed, 10},
     };

@@ -242,6 +242,14 @@ private:
                     } else if (depth == 0 && (t.is(";") || t.is(","))) {
                         break;
                     }
+                    // Two names, or a name and a number, side by side: a syntax error in any expression
+                    // (`which == 2 ? t2 : m4x4 oPos, r0` — a name declared elsewhere, so the count below
+                    // misses it; glslang crashed in isConversionAllowed, fuzzer, local run 2026-11-25).
+                    if (t.isIdent() && !kWords.count(t.text) && (tok(i + 1).isIdent() || tok(i + 1).kind == Token::Kind::Number) &&
+                        i + 1 < f.body.end) {
+                        report(diag::kHlsl, "syntax error: unexpected token '" + tok(i + 1).text + "' after '" + t.text + "'", i + 1);
+                        return;
+                    }
                     if (!t.isIdent() || occurrences[t.text] != 1 || tok(i + 1).is("(") || tok(i - 1).is(".") || kWords.count(t.text) ||
                         describeBasicType(syntax_.resolveType(t.text)).ok)
                         continue;
