@@ -75,6 +75,7 @@ std::vector<LimitCase> fixtureCases() {
         {"MatrixDimensionOverFour", kDir + "matrix_dimension.fx", diag::kHlsl, 3},
         {"Float1CallInMul", kDir + "float1_call_mul.fx", diag::kUnsupported, 7},
         {"AdjacentNamesInTernary", kDir + "ternary_adjacent_names.fx", diag::kHlsl, 6},
+        {"UndeclaredSwizzleNameInTernary", kDir + "ternary_undeclared_swizzle_name.fx", diag::kHlsl, 5},
         // A crash the checks above do not know: contained in the worker, reported at the entry point.
         {"ContainedGlslangCrash", kDir + "contained_glslang_crash.fx", diag::kFrontEndCrashed, 10},
     };

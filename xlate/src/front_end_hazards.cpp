@@ -225,9 +225,11 @@ private:
     // occurs at least twice: its declaration and this use), is not called, not a member, not a type
     // or keyword, so a valid effect is never refused here. fxc: X3004 undeclared identifier.
     void undeclaredInTernary() {
+        // Members and swizzles (`.w`) declare nothing: `? t2 : w;` with only `p.w` elsewhere is still
+        // undeclared (fuzzer, local run 2026-11-25).
         std::map<std::string, int> occurrences;
-        for (const auto& t : syntax_.tokens)
-            if (t.isIdent()) ++occurrences[t.text];
+        for (size_t i = 0; i < syntax_.tokens.size(); ++i)
+            if (syntax_.tokens[i].isIdent() && !(i > 0 && syntax_.tokens[i - 1].is("."))) ++occurrences[syntax_.tokens[i].text];
         static const std::set<std::string> kWords = {"true", "false", "return", "sizeof", "NULL"};
         for (const auto& f : syntax_.functions) {
             for (size_t q = f.body.begin; q < f.body.end; ++q) {
