@@ -391,6 +391,17 @@ TEST_F(UntrustedEffectFile, ImpossibleValuesFailValidationEvenWhenResealed) {
     EXPECT_NE(loadError(resealEffectFile(j.dump())).find("NoSuchState"), std::string::npos);
 }
 
+// A float where an int belongs reached nlohmann's get<int>: UBSan, out-of-range double-to-int (CI's
+// fuzz smoke, 2026-11-25). It is refused before any field is read.
+TEST_F(UntrustedEffectFile, FloatWhereAnIntBelongsIsRefused) {
+    auto j = nlohmann::json::parse(file);
+    j["uniformBlocks"][0]["size"] = 1e40;
+    EXPECT_NE(loadError(resealEffectFile(j.dump())).find("'size' is 1e+40, not an integer"), std::string::npos);
+    j = nlohmann::json::parse(file);
+    j["version"] = -1e300;
+    EXPECT_NE(loadError(resealEffectFile(j.dump())).find("'version'"), std::string::npos);
+}
+
 TEST_F(UntrustedEffectFile, GlslMustMatchItsHash) {
     auto j = nlohmann::json::parse(file);
     j["shaders"][0]["glsl"] = j["shaders"][0]["glsl"].get<std::string>() + "\n// injected\n";
