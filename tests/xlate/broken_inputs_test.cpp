@@ -20,11 +20,15 @@
 
 #include "fxport/xlate/diagnostics.h"
 #include "fxport/xlate/effect_compiler.h"
+#include "run_cli.h"
 
 namespace fs = std::filesystem;
 using namespace fxport::xlate;
 
 namespace {
+
+using fxport::test::RunResult;
+using fxport::test::runCli;
 
 const std::string kDir = "tests/fixtures/broken/";
 
@@ -129,30 +133,6 @@ std::string quoted(const std::string& s) {
     std::string out = "'";
     for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
     return out + "'";
-}
-
-struct RunResult {
-    bool exited = false;  // false: killed by a signal (a crash)
-    int status = -1;      // exit status when exited
-    std::string output;   // stdout and stderr
-};
-
-// Runs the fxport command line with `args` (already quoted), capturing stdout and stderr.
-RunResult runCli(const std::string& args) {
-    RunResult r;
-    std::string command = quoted(FXPORT_CLI_PATH) + " " + args + " 2>&1";
-    FILE* pipe = ::popen(command.c_str(), "r");
-    if (!pipe) return r;
-    std::array<char, 4096> buf{};
-    size_t n;
-    while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) r.output.append(buf.data(), n);
-    int wstatus = ::pclose(pipe);
-    // popen runs `sh -c`; a child killed by a signal shows as the shell's status 128+signal.
-    if (wstatus != -1 && WIFEXITED(wstatus) && WEXITSTATUS(wstatus) < 128) {
-        r.exited = true;
-        r.status = WEXITSTATUS(wstatus);
-    }
-    return r;
 }
 
 // Where the diagnostic must point, as printed: `name(line,` (fxc prints file(line,col)).

@@ -12,28 +12,14 @@
 #include <sstream>
 #include <string>
 
+#include "run_cli.h"
+
 namespace fs = std::filesystem;
 
 namespace {
 
-struct RunResult {
-    int status = -1;     // exit status; -1 when killed by a signal (a crash)
-    std::string output;  // stdout and stderr
-};
-
-// Runs `fxport ARGS` through sh (ARGS quoted by the caller), from the repository root.
-RunResult runCli(const std::string& args) {
-    RunResult r;
-    std::string command = std::string("'") + FXPORT_CLI_PATH + "' " + args + " 2>&1";
-    FILE* pipe = ::popen(command.c_str(), "r");
-    if (!pipe) return r;
-    std::array<char, 4096> buf{};
-    size_t n;
-    while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) r.output.append(buf.data(), n);
-    int wstatus = ::pclose(pipe);
-    if (wstatus != -1 && WIFEXITED(wstatus) && WEXITSTATUS(wstatus) < 128) r.status = WEXITSTATUS(wstatus);
-    return r;
-}
+using fxport::test::RunResult;
+using fxport::test::runCli;
 
 int lineCount(const std::string& s) {
     int lines = 0;

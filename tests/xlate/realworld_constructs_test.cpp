@@ -14,11 +14,15 @@
 #include "fxport/xlate/effect_compiler.h"
 #include "fxport/xlate/effect_file.h"
 #include "gl_link_check.h"
+#include "run_cli.h"
 
 namespace fs = std::filesystem;
 using namespace fxport::xlate;
 
 namespace {
+
+using fxport::test::RunResult;
+using fxport::test::runCli;
 
 const std::string kWild = "tests/fixtures/realworld/wild/";
 
@@ -61,24 +65,6 @@ Diagnostic firstError(const std::string& source, const std::string& virtualPath,
     }
     ADD_FAILURE() << virtualPath << " compiled";
     return {};
-}
-
-struct RunResult {
-    int status = -1;
-    std::string output;
-};
-
-RunResult runCli(const std::string& args) {
-    RunResult r;
-    std::string command = std::string("'") + FXPORT_CLI_PATH + "' " + args + " 2>&1";
-    FILE* pipe = ::popen(command.c_str(), "r");
-    if (!pipe) return r;
-    std::array<char, 4096> buf{};
-    size_t n;
-    while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) r.output.append(buf.data(), n);
-    int wstatus = ::pclose(pipe);
-    if (wstatus != -1 && WIFEXITED(wstatus)) r.status = WEXITSTATUS(wstatus);
-    return r;
 }
 
 fs::path freshTempDir(const std::string& name) {

@@ -32,11 +32,15 @@
 #include "fxport/xlate/diagnostics.h"
 #include "fxport/xlate/effect_compiler.h"
 #include "fxport/xlate/effect_file.h"
+#include "run_cli.h"
 
 namespace fs = std::filesystem;
 using namespace fxport::xlate;
 
 namespace {
+
+using fxport::test::RunResult;
+using fxport::test::runCli;
 
 const std::string kDir = "tests/fixtures/broken/";
 const std::string kTail =
@@ -85,27 +89,6 @@ std::string shellQuoted(const std::string& s) {
     std::string out = "'";
     for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
     return out + "'";
-}
-
-struct RunResult {
-    bool exited = false;  // false: killed by a signal
-    int status = -1;
-    std::string output;
-};
-
-RunResult runCli(const std::string& args, const std::string& env = {}) {
-    RunResult r;
-    FILE* pipe = ::popen((env + " " + shellQuoted(FXPORT_CLI_PATH) + " " + args + " 2>&1").c_str(), "r");
-    if (!pipe) return r;
-    std::array<char, 4096> buf{};
-    size_t n;
-    while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) r.output.append(buf.data(), n);
-    int wstatus = ::pclose(pipe);
-    if (wstatus != -1 && WIFEXITED(wstatus) && WEXITSTATUS(wstatus) < 128) {
-        r.exited = true;
-        r.status = WEXITSTATUS(wstatus);
-    }
-    return r;
 }
 
 std::string readText(const std::string& path) {

@@ -24,11 +24,15 @@
 #include "fxport/xlate/diagnostics.h"
 #include "fxport/xlate/effect_compiler.h"
 #include "render_states.h"
+#include "run_cli.h"
 
 namespace fs = std::filesystem;
 using namespace fxport::xlate;
 
 namespace {
+
+using fxport::test::RunResult;
+using fxport::test::runCli;
 
 const std::string kFixture = "tests/fixtures/states/EveryUnhonouredState.fx";
 
@@ -49,28 +53,7 @@ std::vector<Mark> readMarks(const std::string& path) {
     return marks;
 }
 
-struct RunResult {
-    bool exited = false;
-    int status = -1;
-    std::string output;
-};
-
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
-
-RunResult runCli(const std::string& args) {
-    RunResult r;
-    FILE* pipe = ::popen((quoted(FXPORT_CLI_PATH) + " " + args + " 2>&1").c_str(), "r");
-    if (!pipe) return r;
-    std::array<char, 4096> buf{};
-    size_t n;
-    while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) r.output.append(buf.data(), n);
-    int wstatus = ::pclose(pipe);
-    if (wstatus != -1 && WIFEXITED(wstatus)) {
-        r.exited = true;
-        r.status = WEXITSTATUS(wstatus);
-    }
-    return r;
-}
 
 // The printed line `file(line,col): warning FX130n: ... 'State' ...` for that line, or "".
 std::string printedWarningAt(const std::string& output, const std::string& file, int line) {
