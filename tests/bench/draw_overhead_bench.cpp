@@ -57,9 +57,8 @@ Scene& rawScene() {
     return s;
 }
 
-void BM_FxportSetValueApplyDraw(benchmark::State& state) {
-    Scene& s = scene();
-    s.device.makeCurrent();
+// Sets five parameters, applies the effect's current pass and draws, as a game's inner loop does.
+void setValueApplyDraw(benchmark::State& state, Scene& s) {
     EffectParameter& transform = s.effect.Parameters["Transform"];
     EffectParameter& rowMajor = s.effect.Parameters["TransformRowMajor"];
     EffectParameter& vector = s.effect.Parameters["Vector"];
@@ -82,6 +81,12 @@ void BM_FxportSetValueApplyDraw(benchmark::State& state) {
     }
     glFinish();
     checkDrew(state);
+}
+
+void BM_FxportSetValueApplyDraw(benchmark::State& state) {
+    Scene& s = scene();
+    s.device.makeCurrent();
+    setValueApplyDraw(state, s);
 }
 BENCHMARK(BM_FxportSetValueApplyDraw);
 
@@ -98,29 +103,8 @@ void BM_FxportSetValueApplyDrawWithPassStates(benchmark::State& state) {
     Scene& s = statesScene();
     s.device.makeCurrent();
     s.effect.CurrentTechnique = s.effect.Techniques["MinBlend"];
-    EffectParameter& transform = s.effect.Parameters["Transform"];
-    EffectParameter& rowMajor = s.effect.Parameters["TransformRowMajor"];
-    EffectParameter& vector = s.effect.Parameters["Vector"];
-    EffectParameter& color = s.effect.Parameters["Color"];
-    EffectParameter& direction = s.effect.Parameters["Direction"];
-    EffectPass& pass = s.effect.CurrentTechnique->Passes[0];
-    s.device.SetVertexBuffer(s.quad);
     s.device.Clear(Color::White);
-    Matrix m = Matrix::CreateTranslation(1, 2, 3);
-    int i = 0;
-    for (auto _ : state) {
-        m.M41 = float(i & 7);
-        transform.SetValue(m);
-        rowMajor.SetValue(m);
-        vector.SetValue(Vector4(float(i), 0, 0, 1));
-        color.SetValue(Vector4(0.5f, 0.5f, float(i & 1), 1));
-        direction.SetValue(Vector4(1, 0, 0, 0));
-        pass.Apply();
-        s.device.DrawPrimitives(PrimitiveType::TriangleList, 0, 1);
-        if ((++i & 255) == 0) glFinish();
-    }
-    glFinish();
-    checkDrew(state);
+    setValueApplyDraw(state, s);
 }
 BENCHMARK(BM_FxportSetValueApplyDrawWithPassStates);
 
