@@ -9,14 +9,13 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "check_math.h"
+
 #include "fence_game.h"
 
 namespace example {
 
 namespace {
-
-using Vec3 = std::array<double, 3>;
-using Mat3 = std::array<Vec3, 3>;  // row-vector convention, as XNA: v' = v * M
 
 // 8-bit steps. Lit pixels: per-pixel lighting with a power-16 highlight in float on the GPU.
 // Flat ones: one quantisation of a texel times the tint, or the clear colour.
@@ -24,30 +23,9 @@ constexpr int kLitTolerance = 3;
 constexpr int kFlatTolerance = 1;
 constexpr int kInkTolerance = 2;  // a text pixel's distance from the sky-to-white line
 
-Vec3 times(const Vec3& v, const Mat3& m) {
-    Vec3 r{};
-    for (int c = 0; c < 3; ++c) r[c] = v[0] * m[0][c] + v[1] * m[1][c] + v[2] * m[2][c];
-    return r;
-}
-Mat3 times(const Mat3& a, const Mat3& b) {
-    Mat3 r{};
-    for (int i = 0; i < 3; ++i) r[i] = times(a[i], b);
-    return r;
-}
-Mat3 transposed(const Mat3& m) {
-    Mat3 t{};
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) t[r][c] = m[c][r];
-    return t;
-}
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 Vec3 add(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
 Vec3 scaled(const Vec3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
 Vec3 normalized(const Vec3& a) { return scaled(a, 1.0 / std::sqrt(dot(a, a))); }
-
-// XNA's Matrix.CreateRotationY / CreateRotationX (upper 3x3).
-Mat3 rotationY(double a) { return {{{std::cos(a), 0, -std::sin(a)}, {0, 1, 0}, {std::sin(a), 0, std::cos(a)}}}; }
-Mat3 rotationX(double a) { return {{{1, 0, 0}, {0, std::cos(a), std::sin(a)}, {0, -std::sin(a), std::cos(a)}}}; }
 
 double byte(double v) { return std::round(std::clamp(v, 0.0, 1.0) * 255.0); }
 
