@@ -39,6 +39,7 @@ struct ShaderProgram {
     int stage = 0;                              // 0 vertex, 1 pixel, 2 geometry
     const xlate::CompiledShader* shader = nullptr;  // owned by the effect
     std::string label;                          // "GBuffer.fx: VertexShaderFunction (vs_2_0)"
+    bool mayDiscard = false;                    // the GLSL has a `discard` (clip, texkill): read once
     // Pixel shaders: the D3D9 alpha-test variant (xlate::alphaTestVariant), made at the first draw
     // that needs it; a cache on a record the device otherwise only reads, hence mutable.
     mutable GLuint alphaTestProgram = 0;

@@ -344,6 +344,7 @@ Effect::Impl::Code& Effect::Impl::addCode(std::shared_ptr<const xlate::CompiledE
             p.stage = stageIndex(shader.profile.stage);
             p.shader = &shader;
             p.label = displayName + ": " + shader.entryPoint + " (" + shader.profile.name + ")";
+            p.mayDiscard = shader.glsl.find("discard") != std::string::npos;
             p.program = device.createProgram(glStage(shader.profile.stage), shader.glsl, p.label);
             code->programs.push_back(p);
             code->reads.push_back(blockReadsOf(shader, blocks.size()));
