@@ -80,6 +80,13 @@ std::vector<LimitCase> fixtureCases() {
         {"Float1CallInMul", kDir + "float1_call_mul.fx", diag::kUnsupported, 7},
         {"AdjacentNamesInTernary", kDir + "ternary_adjacent_names.fx", diag::kHlsl, 6},
         {"UndeclaredSwizzleNameInTernary", kDir + "ternary_undeclared_swizzle_name.fx", diag::kHlsl, 5},
+        {"UndeclaredNameInTernaryNamedInAsm", kDir + "ternary_undeclared_asm_name.fx", diag::kHlsl, 14},
+        {"PostfixOnLiteral", kDir + "postfix_on_literal.fx", diag::kHlsl, 5},
+        {"PostfixOnUndeclaredName", kDir + "postfix_on_undeclared.fx", diag::kHlsl, 5},
+        {"PostfixOnCall", kDir + "postfix_on_call.fx", diag::kHlsl, 5},
+        // fxport's own: wrong compiled effects that failed their own validation on load.
+        {"PackoffsetOverlap", kDir + "packoffset_overlap.fx", diag::kHlsl, 7},
+        {"InitializerTooLong", kDir + "initializer_too_long.fx", diag::kHlsl, 3},
         // A crash the checks above do not know: contained in the worker, reported at the entry point.
         {"ContainedGlslangCrash", kDir + "contained_glslang_crash.fx", diag::kFrontEndCrashed, 10},
     };
@@ -222,6 +229,19 @@ TEST(Robustness, SampleMaskBeyondIntCompiles) {
             EXPECT_NE(describeStateAssignment(st, e).find("MultiSampleMask"), std::string::npos);
         }
     EXPECT_TRUE(found);
+}
+
+TEST(Robustness, OutOfOrderPackoffsetCompilesAndLoadsBack) {
+    CompiledEffect e = compileEffectFile(kDir + "packoffset_out_of_order.fx", noCache());
+    ASSERT_EQ(e.shaders.size(), 2u);
+    for (const auto& shader : e.shaders)
+        for (const auto& r : shader.uniformRangesRead) {
+            EXPECT_GT(r.size, 0) << shader.entryPoint;
+            EXPECT_GE(r.offset, 0) << shader.entryPoint;
+        }
+    // The file a cache or `fxport compile` writes passes the loader's validation.
+    CompiledEffect back = deserializeEffect(serializeEffect(e), "packoffset_out_of_order.fxeffect");
+    EXPECT_EQ(back.shaders.size(), 2u);
 }
 
 // A macro that doubles 40 times: the worker's CPU limit stops it, FX1106 names the effect, and

@@ -104,6 +104,12 @@ public:
     }
 
     void buildParameters();
+    struct PackedMember {
+        int begin = 0, end = 0;  // floats from the cbuffer's start, [begin, end)
+        std::string name;
+        size_t token = 0;
+    };
+    void checkPackOffsets(std::vector<PackedMember> packed);
     void buildTechniques();
     void finishReflection();
 
@@ -147,12 +153,46 @@ private:
     }
 };
 
+namespace {
+
+// The floats a constant occupies from its first register's first component under D3D's cbuffer
+// packing: each array element and each matrix row (row_major) or column (column_major) starts a
+// register. A struct gives 0: not checked.
+int floatsSpanned(const Parameter& p) {
+    if (p.parameterClass == ParameterClass::Struct || p.parameterClass == ParameterClass::Object) return 0;
+    int registers = 1, last = p.columns;
+    if (p.parameterClass == ParameterClass::Matrix) {
+        registers = p.rowMajor ? p.rows : p.columns;
+        last = p.rowMajor ? p.columns : p.rows;
+    }
+    int element = (registers - 1) * 4 + last;
+    return p.elements > 1 ? (p.elements - 1) * 4 * registers + element : element;
+}
+
+std::string registerName(int floats) { return "c" + std::to_string(floats / 4) + "." + "xyzw"[floats % 4]; }
+
+}  // namespace
+
+// fxc's X4019: two cbuffer members placed over the same components. glslang takes the offsets as
+// given and the reflected ranges come out negative; report it where the later one is declared.
+void EffectBuilder::checkPackOffsets(std::vector<PackedMember> packed) {
+    std::sort(packed.begin(), packed.end(), [](const PackedMember& a, const PackedMember& b) { return a.begin < b.begin; });
+    for (size_t i = 1; i < packed.size(); ++i) {
+        const PackedMember& prev = packed[i - 1];
+        if (packed[i].begin < prev.end)
+            error(diag::kHlsl, "packoffset(" + registerName(packed[i].begin) + ") of '" + packed[i].name + "' overlaps '" + prev.name +
+                                   "', which fills " + registerName(prev.begin) + " to " + registerName(prev.end - 1),
+                  packed[i].token);
+    }
+}
+
 void EffectBuilder::buildParameters() {
     struct Item {
         size_t token;
         Parameter p;
     };
     std::vector<Item> items;
+    std::map<std::string, std::vector<PackedMember>> packed;  // per cbuffer, members placed with packoffset
     std::map<std::string, std::vector<double>> constants;  // earlier globals, for initializers like `= A * 2`
     for (const auto& g : syntax_.globals) {
         bool isStatic = std::find(g.modifiers.begin(), g.modifiers.end(), "static") != g.modifiers.end();
@@ -213,6 +253,14 @@ void EffectBuilder::buildParameters() {
                 if (v) {
                     size_t want = static_cast<size_t>(b.rows * b.columns * std::max(1, p.elements));
                     if (v->size() == 1 && want > 1) v->assign(want, (*v)[0]);  // `float4 c = 0;`
+                    bool dimsKnown = std::all_of(g.arrayDims.begin(), g.arrayDims.end(), [](int d) { return d > 0; });
+                    size_t holds = static_cast<size_t>(b.rows * b.columns) * static_cast<size_t>(arrayElementCount(g.arrayDims));
+                    if (dimsKnown && v->size() > holds) {  // fxc rejects `float2 t = {1, 2, 3, 4};` (glslang may not)
+                        error(diag::kHlsl, "the initializer of '" + g.name + "' gives " + std::to_string(v->size()) + " values; its type '" +
+                                               g.type + "' holds " + std::to_string(holds),
+                              g.token);
+                        continue;
+                    }
                     p.defaultValue = *v;
                     constants[g.name] = *v;
                 }
@@ -223,8 +271,10 @@ void EffectBuilder::buildParameters() {
             auto it = std::find(syntax_.cbuffers.begin(), syntax_.cbuffers.end(), g.cbuffer);
             p.block = 1 + static_cast<int>(it - syntax_.cbuffers.begin());
         }
+        if (g.packOffset >= 0 && !g.cbuffer.empty()) packed[g.cbuffer].push_back({g.packOffset, g.packOffset + floatsSpanned(p), g.name, g.token});
         items.push_back({g.token, std::move(p)});
     }
+    for (auto& [cbuffer, members] : packed) checkPackOffsets(std::move(members));
     for (const auto& t : syntax_.textures) {
         Parameter p;
         p.name = t.name;

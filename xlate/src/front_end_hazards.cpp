@@ -24,6 +24,7 @@ public:
         nestedFunctions();
         float1InMul();
         undeclaredInTernary();
+        postfixOnNonLValues();
         templateDimensions();
         std::stable_sort(found_.begin(), found_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
         std::vector<Diagnostic> out;
@@ -40,6 +41,37 @@ private:
     void report(const char* id, const std::string& message, size_t token) {
         const Token& t = tok(token);
         found_.push_back({token, map_.make(Severity::Error, id, message, t.line, t.column, t.kind == Token::Kind::End ? std::string() : t.text)});
+    }
+
+    // How often each name occurs in the text glslang compiles: not after '.', not in what the
+    // parser removes (techniques, asm blocks, annotations), where `c[a0]` of an asm block made an
+    // undeclared `c` in a ternary look declared (fuzzer, device run 3 of 2026-11-25).
+    const std::map<std::string, int>& namesGlslangSees() {
+        if (occurrences_) return *occurrences_;
+        std::vector<std::pair<size_t, size_t>> removed;
+        for (const auto& e : syntax_.edits) removed.push_back({e.begin, e.end});
+        std::sort(removed.begin(), removed.end());
+        std::vector<std::pair<size_t, size_t>> merged;  // edits nest (an annotation in a technique)
+        for (const auto& r : removed) {
+            if (!merged.empty() && r.first <= merged.back().second) merged.back().second = std::max(merged.back().second, r.second);
+            else merged.push_back(r);
+        }
+        removed = std::move(merged);
+        auto isRemoved = [&](size_t offset) {
+            auto it = std::upper_bound(removed.begin(), removed.end(), std::make_pair(offset, size_t(-1)));
+            return it != removed.begin() && offset < std::prev(it)->second;
+        };
+        std::map<std::string, int> counts;
+        for (size_t i = 0; i < syntax_.tokens.size(); ++i)
+            if (syntax_.tokens[i].isIdent() && !(i > 0 && syntax_.tokens[i - 1].is(".")) && !isRemoved(syntax_.tokens[i].offset))
+                ++counts[syntax_.tokens[i].text];
+        occurrences_ = std::move(counts);
+        return *occurrences_;
+    }
+    std::optional<std::map<std::string, int>> occurrences_;
+    static int timesSeen(const std::map<std::string, int>& counts, const std::string& name) {
+        auto it = counts.find(name);
+        return it == counts.end() ? 0 : it->second;
     }
 
     void redefinedGlobals() {
@@ -227,9 +259,7 @@ private:
     void undeclaredInTernary() {
         // Members and swizzles (`.w`) declare nothing: `? t2 : w;` with only `p.w` elsewhere is still
         // undeclared (fuzzer, local run 2026-11-25).
-        std::map<std::string, int> occurrences;
-        for (size_t i = 0; i < syntax_.tokens.size(); ++i)
-            if (syntax_.tokens[i].isIdent() && !(i > 0 && syntax_.tokens[i - 1].is("."))) ++occurrences[syntax_.tokens[i].text];
+        const std::map<std::string, int>& occurrences = namesGlslangSees();
         static const std::set<std::string> kWords = {"true", "false", "return", "sizeof", "NULL"};
         for (const auto& f : syntax_.functions) {
             for (size_t q = f.body.begin; q < f.body.end; ++q) {
@@ -252,10 +282,48 @@ private:
                         report(diag::kHlsl, "syntax error: unexpected token '" + tok(i + 1).text + "' after '" + t.text + "'", i + 1);
                         return;
                     }
-                    if (!t.isIdent() || occurrences[t.text] != 1 || tok(i + 1).is("(") || tok(i - 1).is(".") || kWords.count(t.text) ||
+                    if (!t.isIdent() || timesSeen(occurrences, t.text) != 1 || tok(i + 1).is("(") || tok(i - 1).is(".") || kWords.count(t.text) ||
                         describeBasicType(syntax_.resolveType(t.text)).ok)
                         continue;
                     report(diag::kHlsl, "undeclared identifier '" + t.text + "'", i);
+                    return;
+                }
+            }
+        }
+    }
+
+    // `x++` / `x--` where x is not an l-value: a literal (`uv.y * 2-- 1`), a call or a parenthesised
+    // expression (`F(p)--`, `(a + 1)--`), or an undeclared name (`F(p--)`). glslang reports it and
+    // returns no node, then dereferences it as a function argument or an operand (handleFunctionArgument,
+    // addBinaryMath; fuzzer, device run 3 of 2026-11-25). fxc: X3025 (l-value specifies const
+    // object) and X3004 (undeclared identifier). An undeclared name is one that occurs once, as in
+    // undeclaredInTernary, so a valid effect is never refused.
+    void postfixOnNonLValues() {
+        const std::map<std::string, int>& occurrences = namesGlslangSees();
+        for (const auto& f : syntax_.functions) {
+            for (size_t i = f.body.begin + 1; i < f.body.end; ++i) {
+                if (!tok(i).is("++") && !tok(i).is("--")) continue;
+                const Token& operand = tok(i - 1);
+                if (operand.kind == Token::Kind::Number || operand.is("true") || operand.is("false")) {
+                    report(diag::kHlsl, "'" + tok(i).text + "' needs an l-value; '" + operand.text + "' is a constant", i);
+                    return;
+                }
+                if (operand.isIdent() && !tok(i - 2).is(".") && timesSeen(occurrences, operand.text) == 1) {
+                    report(diag::kHlsl, "undeclared identifier '" + operand.text + "'", i - 1);
+                    return;
+                }
+                if (!operand.is(")")) continue;
+                auto open = openParen(f.body.begin, i - 1);
+                if (!open) continue;
+                bool lvalue = !tok(*open - 1).isIdent();  // F(x)-- and float2(a, b)-- are values
+                int index = 0;  // inside [...]: `(a[i + 1])--` is still an l-value
+                for (size_t k = *open + 1; lvalue && k + 1 < i; ++k) {
+                    if (tok(k).is("[")) ++index;
+                    else if (tok(k).is("]")) --index;
+                    else if (index == 0 && tok(k).kind == Token::Kind::Punct && !tok(k).is(".")) lvalue = false;
+                }
+                if (!lvalue) {
+                    report(diag::kHlsl, "'" + tok(i).text + "' needs an l-value; '(...)' before it is a value", i);
                     return;
                 }
             }

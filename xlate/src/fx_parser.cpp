@@ -3,8 +3,10 @@
 // variables, annotations, string parameters), and marks those byte ranges for removal. Everything it
 // does not recognise as effect syntax is left for glslang, which is the authority on plain HLSL.
 #include <algorithm>
+#include <cctype>
 #include <climits>
 #include <cstdlib>
+#include <cstring>
 #include <map>
 #include <set>
 
@@ -615,9 +617,31 @@ private:
         std::vector<int> dims;
         std::string semantic;
         int registerIndex = -1;
+        int packOffset = -1;  // packoffset(cN.y) in floats (checked for overlaps; glslang places it)
         std::vector<Annotation> annotations;
         size_t annotationBegin = 0, annotationEnd = 0;
     };
+    // The tokens of `packoffset(c4.w)` between the parentheses, as 4 * 4 + 3 floats; -1 where they
+    // are not a c-register (glslang reports those).
+    int packOffsetIn(size_t begin, size_t end) const {
+        std::string text;
+        for (size_t i = begin; i < end && text.size() < 16; ++i) text += tok(i).text;
+        if (text.size() < 2 || (text[0] != 'c' && text[0] != 'C')) return -1;
+        size_t i = 1;
+        long long reg = 0;
+        while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i])) && reg < 100000) reg = reg * 10 + (text[i++] - '0');
+        if (i == 1 || reg >= 100000) return -1;
+        int component = 0;
+        if (i < text.size()) {
+            if (text[i] != '.' || i + 2 != text.size()) return -1;
+            const char* comps = "xyzw";
+            const char* c = std::strchr(comps, std::tolower(static_cast<unsigned char>(text[i + 1])));
+            if (!c || !*c) return -1;
+            component = int(c - comps);
+        }
+        return int(reg) * 4 + component;
+    }
+
     Tail parseDeclaratorTail() {
         Tail tail;
         tail.dims = parseArrayDims();
@@ -632,6 +656,8 @@ private:
                     // stage's register file; the VS and PS files overlap, one GL uniform buffer cannot.
                     // Only SetVertexShaderConstantF-style code cares, which XNA's Effect never is.
                     if (reg[0] == 'c' || reg[0] == 'C' || (after > pos_ + 3)) blank(pos_ - 2, after);
+                } else if (iequals(word, "packoffset")) {
+                    tail.packOffset = packOffsetIn(pos_ + 1, after - 1);
                 }
                 pos_ = after;
             } else {
@@ -778,6 +804,7 @@ private:
             Tail tail = parseDeclaratorTail();
             g.arrayDims = tail.dims;
             g.semantic = tail.semantic;
+            g.packOffset = tail.packOffset;
             g.annotations = tail.annotations;
             if (tail.annotationEnd > tail.annotationBegin) blank(tail.annotationBegin, tail.annotationEnd);
             if (accept("=")) g.initializer = skipInitializer(name);

@@ -104,6 +104,7 @@ struct FxGlobal {
     std::vector<Annotation> annotations;
     TokenSpan initializer;
     std::string cbuffer;                 // enclosing cbuffer, empty for $Global
+    int packOffset = -1;                 // packoffset(cN.y): 4 * N + component, in floats; -1 none
     size_t token = 0;
     bool isStringParameter = false;      // `string Name = "...";` (removed from HLSL)
 };

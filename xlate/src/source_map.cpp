@@ -1,6 +1,7 @@
 #include "source_map.h"
 
 #include <algorithm>
+#include <cctype>
 #include <climits>
 #include <cstdlib>
 #include <sstream>
@@ -87,6 +88,31 @@ std::string SourceMap::originalLine(const std::string& file, int line) const {
     return it->second[static_cast<size_t>(line - 1)];
 }
 
+namespace {
+
+bool isWordChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// Where `token` is on the original line: the preprocessed column is right unless a macro or a
+// removed comment moved the text, so the occurrence nearest to it wins, a whole word before a
+// part of one (an undeclared `c` is not the `c` in `which` before it).
+size_t findToken(const std::string& text, const std::string& token, int column) {
+    if (token.empty()) return std::string::npos;
+    size_t best = std::string::npos;
+    long bestScore = 0;
+    for (size_t at = text.find(token); at != std::string::npos; at = text.find(token, at + 1)) {
+        bool word = (at == 0 || !isWordChar(text[at - 1]) || !isWordChar(token.front())) &&
+                    (at + token.size() >= text.size() || !isWordChar(text[at + token.size()]) || !isWordChar(token.back()));
+        long score = (word ? 0 : 1L << 30) + std::labs(static_cast<long>(at) + 1 - std::max(column, 1));
+        if (best == std::string::npos || score < bestScore) {
+            best = at;
+            bestScore = score;
+        }
+    }
+    return best;
+}
+
+}  // namespace
+
 SourceLocation SourceMap::locate(int line, int column, const std::string& token) const {
     SourceLocation loc;
     if (lines_.empty()) {
@@ -113,7 +139,7 @@ SourceLocation SourceMap::locate(int line, int column, const std::string& token)
     auto it = fileLines_.find(loc.file);
     if (it != fileLines_.end() && o.line >= 1 && o.line <= static_cast<int>(it->second.size())) {
         const std::string& text = it->second[static_cast<size_t>(o.line - 1)];
-        size_t at = token.empty() ? std::string::npos : text.find(token);
+        size_t at = findToken(text, token, column);
         if (at != std::string::npos) {
             loc.column = static_cast<int>(at) + 1;
         } else if (column > 0) {

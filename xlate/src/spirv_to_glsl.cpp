@@ -59,6 +59,14 @@ uint32_t roundUp(uint32_t v, uint32_t to) { return (v + to - 1) / to * to; }
 // register), which GLSL cannot always declare; std140 is what glslang uses for $Global. Array and
 // matrix strides are already 16-byte multiples in HLSL, so only offsets (and the strides of
 // arrays of re-laid-out structs) change.
+// GLSL requires each member's offset to be at least the previous one's; packoffset may place
+// members in any order (`float3 L : packoffset(c5); float A : packoffset(c4.w);`).
+bool offsetsIncrease(GlslCompiler& c, const spirv_cross::SPIRType& type) {
+    for (uint32_t i = 1; i < type.member_types.size(); ++i)
+        if (c.type_struct_member_offset(type, i) < c.type_struct_member_offset(type, i - 1)) return false;
+    return true;
+}
+
 uint32_t relayoutStd140(GlslCompiler& c, uint32_t structId) {
     const spirv_cross::SPIRType& type = c.get_type(structId);
     uint32_t offset = 0;
@@ -142,7 +150,7 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
             }
             compiler.set_decoration(ubo.id, spv::DecorationBinding, block.index == 0 ? 0u : static_cast<uint32_t>(1 + block.index));
             const spirv_cross::SPIRType& type = compiler.get_type(ubo.base_type_id);
-            if (!compiler.glslCanDeclare(type)) relayoutStd140(compiler, ubo.base_type_id);
+            if (!compiler.glslCanDeclare(type) || !offsetsIncrease(compiler, type)) relayoutStd140(compiler, ubo.base_type_id);
             // std140 pads a block to a 16-byte multiple (GL_BUFFER_DATA_SIZE counts the padding,
             // and a bound buffer must be at least that big); D3D sizes cbuffers the same way.
             block.size = static_cast<int>(roundUp(static_cast<uint32_t>(compiler.get_declared_struct_size(type)), 16));
@@ -162,7 +170,10 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
             }
             for (const auto& range : compiler.get_active_buffer_ranges(ubo.id)) {
                 out.membersRead.push_back(compiler.get_member_name(ubo.base_type_id, range.index));
-                out.rangesRead.push_back({static_cast<int>(range.offset), static_cast<int>(range.range), block.index});
+                // SPIRV-Cross's range runs to the next member's offset (padding included); offsets
+                // increase here (relaid out above otherwise), so it is positive.
+                int size = static_cast<int>(range.range);
+                out.rangesRead.push_back({static_cast<int>(range.offset), size, block.index});
             }
             out.blocks.push_back(std::move(block));
         }
