@@ -45,7 +45,7 @@ private:
 
     // How often each name occurs in the text glslang compiles: not after '.', not in what the
     // parser removes (techniques, asm blocks, annotations), where `c[a0]` of an asm block made an
-    // undeclared `c` in a ternary look declared (fuzzer, device run 3 of 2026-11-25).
+    // undeclared `c` in a ternary look declared (fuzzer, device run 6).
     const std::map<std::string, int>& namesGlslangSees() {
         if (occurrences_) return *occurrences_;
         std::vector<std::pair<size_t, size_t>> removed;
@@ -295,7 +295,7 @@ private:
     // `x++` / `x--` where x is not an l-value: a literal (`uv.y * 2-- 1`), a call or a parenthesised
     // expression (`F(p)--`, `(a + 1)--`), or an undeclared name (`F(p--)`). glslang reports it and
     // returns no node, then dereferences it as a function argument or an operand (handleFunctionArgument,
-    // addBinaryMath; fuzzer, device run 3 of 2026-11-25). fxc: X3025 (l-value specifies const
+    // addBinaryMath; fuzzer, device run 6). fxc: X3025 (l-value specifies const
     // object) and X3004 (undeclared identifier). An undeclared name is one that occurs once, as in
     // undeclaredInTernary, so a valid effect is never refused.
     void postfixOnNonLValues() {
