@@ -215,6 +215,52 @@ TEST(ComputePasses, MinBlend) {
              kColorTolerance * 0.6, 1);
 }
 
+// One/One on a 32-bit float target is the blender's fp32 addition (narrower targets fall back).
+TEST(ComputePasses, AdditiveBlendOnAFloatTarget) {
+    bothWays("One/One on Vector4", SurfaceFormat::Vector4, kW, kH,
+             [](Device& d) {
+                 BlendState add = BlendState::Opaque;
+                 add.ColorDestinationBlend = add.AlphaDestinationBlend = Blend::One;
+                 d.device->BlendState = add;
+                 d.apply("Pattern");
+                 drawQuad(*d.device);
+             },
+             [](int x, int y) {
+                 double u, v;
+                 uvAt(x, y, Viewport(0, 0, kW, kH), false, u, v);
+                 Pixel p = pattern(u, v);
+                 const double c[4] = {kClear.X, kClear.Y, kClear.Z, kClear.W};
+                 for (int i = 0; i < 4; ++i) p.v[i] += c[i];
+                 return p;
+             },
+             kFloatTolerance, 1);
+}
+
+// Culling follows the winding as seen: the quad drawn counter-clockwise is culled by XNA's default
+// and drawn with CullMode::None (and with CullClockwiseFace), both ways.
+TEST(ComputePasses, CullingFollowsTheWindingAsSeen) {
+    for (CullMode mode : {CullMode::CullCounterClockwiseFace, CullMode::None, CullMode::CullClockwiseFace}) {
+        SCOPED_TRACE(int(mode));
+        bothWays("counter-clockwise quad", SurfaceFormat::Color, kW, kH,
+                 [&](Device& d) {
+                     RasterizerState r = RasterizerState::CullNone;
+                     r.CullMode = mode;
+                     d.device->RasterizerState = r;
+                     d.apply("Pattern");
+                     std::vector<VertexPositionTexture> v = test::fullscreenQuad();
+                     std::swap(v[1], v[2]);  // each triangle counter-clockwise
+                     std::swap(v[4], v[5]);
+                     d.device->DrawUserPrimitives(PrimitiveType::TriangleList, v.data(), 0, 2);
+                 },
+                 [&](int x, int y) {
+                     double u, v;
+                     uvAt(x, y, Viewport(0, 0, kW, kH), false, u, v);
+                     return clearOr(mode != CullMode::CullCounterClockwiseFace, pattern(u, v));
+                 },
+                 kColorTolerance * 0.6, 1);
+    }
+}
+
 TEST(ComputePasses, DiscardKeepsThePixel) {
     bothWays("discard", SurfaceFormat::Color, kW, kH, [](Device& d) { d.apply("Discard"); drawQuad(*d.device); },
              [](int x, int y) {

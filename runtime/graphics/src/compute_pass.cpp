@@ -201,7 +201,7 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const std::f
                 const bool fullFloat = isFullFloat(format);
                 if (!blendOpOf(blend.ColorBlendFunction, blend.ColorSourceBlend, blend.ColorDestinationBlend, fullFloat, t.color) ||
                     !blendOpOf(blend.AlphaBlendFunction, blend.AlphaSourceBlend, blend.AlphaDestinationBlend, fullFloat, t.alpha))
-                    return fallBack("blend state");
+                    return fallBack(std::string("blend state on a ") + surfaceFormatName(format) + " target");
             }
         }
         key += t.imageFormat + ":" + std::to_string(int(t.color)) + std::to_string(int(t.alpha)) + std::to_string(t.writeMask) +
