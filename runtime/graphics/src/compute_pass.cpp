@@ -127,6 +127,27 @@ ComputePasses::~ComputePasses() {
     if (captureBuffer) glDeleteBuffers(1, &captureBuffer);
 }
 
+void ComputePasses::forget(const ComputeAnalysis& analysis) {
+    const std::string serial = std::to_string(analysis.serial);
+    if (auto it = captureProgramsBySerial.find(analysis.serial); it != captureProgramsBySerial.end()) {
+        if (it->second) glDeleteProgram(it->second);
+        captureProgramsBySerial.erase(it);
+    }
+    failures.erase("capture/" + serial);
+    // Keys are "vertex serial/pixel serial/targets".
+    for (auto it = computePrograms.begin(); it != computePrograms.end();) {
+        const std::string& key = it->first;
+        const std::size_t slash = key.find('/'), second = key.find('/', slash + 1);
+        if (key.compare(0, slash, serial) == 0 || key.compare(slash + 1, second - slash - 1, serial) == 0) {
+            if (it->second.program) glDeleteProgram(it->second.program);
+            failures.erase(key);
+            it = computePrograms.erase(it);
+        } else {
+            ++it;
+        }
+    }
+}
+
 bool ComputePasses::fallBack(const std::string& reason) {
     ++statistics.fellBack[reason];
     return false;

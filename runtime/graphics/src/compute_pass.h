@@ -34,6 +34,9 @@ struct ComputePasses {
     // `issueDraw` repeats the draw's GL call under transform feedback. False: draw it as usual.
     bool tryDraw(PrimitiveType type, int primitiveCount, const std::function<void()>& issueDraw);
 
+    // Deletes the programs made for a shader whose effect releases its programs.
+    void forget(const ComputeAnalysis& analysis);
+
     ComputePassStatistics statistics;
 
 private:
