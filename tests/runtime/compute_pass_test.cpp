@@ -374,6 +374,19 @@ TEST(ComputePasses, DepthTestFallsBack) {
               kColorTolerance * 0.6);
 }
 
+// A target without a depth buffer passes every depth test and takes no depth writes (GL), so the
+// depth state does not stop a dispatch there.
+TEST(ComputePasses, DepthStateOfATargetWithoutDepthBuffer) {
+    bothWays("depth state, no depth buffer", SurfaceFormat::Color, kW, kH,
+             [](Device& d) {
+                 d.device->DepthStencilState = DepthStencilState::Default;
+                 d.apply("Pattern");
+                 drawQuad(*d.device, 0.5f);
+             },
+             [](int x, int y) { double u, v; uvAt(x, y, Viewport(0, 0, kW, kH), false, u, v); return pattern(u, v); },
+             kColorTolerance * 0.6, 1);
+}
+
 TEST(ComputePasses, ThreeTrianglesAreNotACandidate) {
     Device d(true);
     RenderTarget2D target(*d.device, kW, kH, false, SurfaceFormat::Color, DepthFormat::None);

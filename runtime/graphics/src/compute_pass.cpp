@@ -41,6 +41,11 @@ const char* imageFormatOf(SurfaceFormat format) {
     }
 }
 
+DepthFormat targetDepthFormat(const Texture* target) {
+    if (target->kind() == Texture::Kind::TextureCube) return static_cast<const RenderTargetCube*>(target)->DepthStencilFormat();
+    return static_cast<const RenderTarget2D*>(target)->DepthStencilFormat();
+}
+
 bool isFullFloat(SurfaceFormat format) {
     return format == SurfaceFormat::Vector4 || format == SurfaceFormat::Single || format == SurfaceFormat::Vector2;
 }
@@ -149,6 +154,7 @@ void ComputePasses::forget(const ComputeAnalysis& analysis) {
 }
 
 bool ComputePasses::fallBack(const std::string& reason) {
+    if (std::getenv("FXPORT_COMPUTE_PASSES_DEBUG")) std::fprintf(stderr, "compute pass: %s falls back: %s\n", device.shaders[1]->label.c_str(), reason.c_str());
     ++statistics.fellBack[reason];
     return false;
 }
@@ -190,10 +196,16 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const std::f
     const ShaderProgram* vertex = d.shaders[0];
     const ShaderProgram* pixel = d.shaders[1];
     if (d.shaders[2]) return fallBack("geometry shader");
+    // Without a depth buffer GL passes every depth and stencil test and writes nothing (the first
+    // target's format says whether it has one, however its storage is made).
+    const DepthFormat depthFormat = d.targets.empty() ? dev.PresentationParameters().DepthStencilFormat
+                                                      : targetDepthFormat(d.targets[0].RenderTarget);
     const DepthStencilState& depth = dev.DepthStencilState;
-    if (depth.DepthBufferEnable && (depth.DepthBufferWriteEnable || depth.DepthBufferFunction != CompareFunction::Always))
-        return fallBack("depth test or write");
-    if (depth.StencilEnable) return fallBack("stencil test");
+    if (depthFormat != DepthFormat::None) {
+        if (depth.DepthBufferEnable && (depth.DepthBufferWriteEnable || depth.DepthBufferFunction != CompareFunction::Always))
+            return fallBack("depth test or write");
+        if (depth.StencilEnable) return fallBack("stencil test");
+    }
     if (d.emulation.alphaTest) return fallBack("alpha test");
     if (d.emulation.srgbWrite) return fallBack("sRGB write");
     const RasterizerState& raster = dev.RasterizerState;
@@ -285,6 +297,7 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const std::f
         x1 = std::min(x1, s.X + s.Width), y1 = std::min(y1, s.Y + s.Height);
     }
     ++statistics.dispatched;
+    if (std::getenv("FXPORT_COMPUTE_PASSES_DEBUG")) std::fprintf(stderr, "compute pass: %s dispatched\n", pixel->label.c_str());
     if (x1 <= x0 || y1 <= y0) return true;
 
     // Vertex stage: the draw's own vertex shader, its outputs captured, nothing rasterised.
