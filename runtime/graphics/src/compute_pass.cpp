@@ -124,6 +124,9 @@ GLuint linkProgram(GLenum stage, const std::string& source, const std::vector<st
 
 }  // namespace
 
+ComputePasses::ComputePasses(GraphicsDevice::Impl& owner)
+    : device(owner), printOutcomes(std::getenv("FXPORT_COMPUTE_PASSES_DEBUG") != nullptr) {}
+
 ComputePasses::~ComputePasses() {
     for (auto& [serial, program] : captureProgramsBySerial)
         if (program) glDeleteProgram(program);
@@ -154,7 +157,7 @@ void ComputePasses::forget(const ComputeAnalysis& analysis) {
 }
 
 bool ComputePasses::fallBack(const std::string& reason) {
-    if (std::getenv("FXPORT_COMPUTE_PASSES_DEBUG")) std::fprintf(stderr, "compute pass: %s falls back: %s\n", device.shaders[1]->label.c_str(), reason.c_str());
+    if (printOutcomes) std::fprintf(stderr, "compute pass: %s falls back: %s\n", device.shaders[1]->label.c_str(), reason.c_str());
     ++statistics.fellBack[reason];
     return false;
 }
@@ -297,7 +300,7 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const std::f
         x1 = std::min(x1, s.X + s.Width), y1 = std::min(y1, s.Y + s.Height);
     }
     ++statistics.dispatched;
-    if (std::getenv("FXPORT_COMPUTE_PASSES_DEBUG")) std::fprintf(stderr, "compute pass: %s dispatched\n", pixel->label.c_str());
+    if (printOutcomes) std::fprintf(stderr, "compute pass: %s dispatched\n", pixel->label.c_str());
     if (x1 <= x0 || y1 <= y0) return true;
 
     // Vertex stage: the draw's own vertex shader, its outputs captured, nothing rasterised.

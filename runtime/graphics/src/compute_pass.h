@@ -26,7 +26,7 @@ struct ComputeAnalysis {
 };
 
 struct ComputePasses {
-    explicit ComputePasses(GraphicsDevice::Impl& owner) : device(owner) {}
+    explicit ComputePasses(GraphicsDevice::Impl& owner);
     ~ComputePasses();
     GraphicsDevice::Impl& device;
 
@@ -44,6 +44,7 @@ private:
     const ComputeAnalysis& analysisOf(const struct ShaderProgram& program);
     GLuint captureProgram(const struct ShaderProgram& vertex, const ComputeAnalysis& analysis, std::string& refusal);
 
+    bool printOutcomes = false;  // $FXPORT_COMPUTE_PASSES_DEBUG: each candidate's outcome and failed compiles on stderr
     int nextSerial = 1;
     std::map<int, GLuint> captureProgramsBySerial;  // 0: the capture program did not link
     struct Dispatcher {
