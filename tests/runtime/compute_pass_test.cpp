@@ -140,6 +140,22 @@ TEST(ComputePasses, FullscreenQuadWithD3D9HalfPixelOffset) {
              kColorTolerance, 1);
 }
 
+// A flat varying takes GL's provoking vertex (the last): the quad's first triangle (top-left,
+// top-right, bottom-left) shows bottom-left's UV (0,1), the second (bottom-left, top-right,
+// bottom-right) bottom-right's (1,1). On a square target pixel centres lie on the shared edge; D3D's
+// top-left rule gives them to the second triangle, whose left edge it is.
+TEST(ComputePasses, FlatVaryingAndTheFillRuleOnTheDiagonal) {
+    for (auto [w, h] : {std::pair{16, 16}, std::pair{kW, kH}}) {
+        bothWays("flat varying, fill rule", SurfaceFormat::Color, w, h, [](Device& d) { d.apply("Flat"); drawQuad(*d.device); },
+                 [&](int x, int y) {
+                     // Centre (x+0.5, y+0.5) against the edge x/w + y/h = 1, in integers.
+                     const long side = long(2 * x + 1) * h + long(2 * y + 1) * w - 2L * w * h;
+                     return side < 0 ? Pixel{{0, 1, 0, 1}} : Pixel{{1, 1, 0, 1}};
+                 },
+                 0.0, 1);
+    }
+}
+
 TEST(ComputePasses, WriteMaskKeepsMaskedChannels) {
     bothWays("write mask", SurfaceFormat::Color, kW, kH,
              [](Device& d) {
