@@ -126,6 +126,7 @@ void BuildReport::addPasses(const GpuTimer& timer) {
 void BuildReport::addClears(const GraphicsDevice& device) {
     hasClears = true;
     clears = device.clearStatistics();
+    computePasses = device.computePassStatistics();
 }
 
 namespace {
@@ -197,6 +198,13 @@ void PrintExplain(std::FILE* out, const BuildReport& built, const BuildReport& a
         std::fprintf(out, "clears (channel clears over the run's frames; PresentationParameters::DeferClears):\n");
         printClears(out, "this scene", built);
         if (&all != &built) printClears(out, "all-features", all);
+    }
+    const ComputePassStatistics& compute = built.computePasses;
+    if (compute.dispatched > 0 || !compute.fellBack.empty()) {
+        // Candidates: draws of at most two triangles (FXPORT_COMPUTE_PASSES=1).
+        std::fprintf(out, "compute passes (draws of <= 2 triangles over the run's frames; PresentationParameters::ComputePasses):\n");
+        std::fprintf(out, "  run as compute %6ld\n", compute.dispatched);
+        for (const auto& [reason, count] : compute.fellBack) std::fprintf(out, "  fell back %6ld  %s\n", count, reason.c_str());
     }
 }
 

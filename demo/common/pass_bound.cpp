@@ -28,13 +28,16 @@ void PassBound::setUp(GraphicsDevice& runDevice, double fillRate, bool bounds, G
     std::printf("GPU limits of %s (measured once, cached):\n  fill GB/s (opaque / additive):", limits->renderer.c_str());
     for (const GpuLimits::Fill& f : limits->fill)
         std::printf(" %s %.1f/%.1f", surfaceFormatName(f.format), f.opaqueGBps, f.blendedGBps);
-    std::printf("\n  clear %.1f GB/s, bilinear fetch %.1f Gtexel/s\n", limits->clearGBps, limits->fetchGTexelsPerSecond);
+    std::printf("\n  clear %.1f GB/s, bilinear fetch %.1f Gtexel/s, compute image write %.1f GB/s\n", limits->clearGBps,
+                limits->fetchGTexelsPerSecond, limits->computeWriteGBps);
 }
 
 void PassBound::forgetRuns() { runs_.clear(); }
 
 void PassBound::begin() {
-    if (device) device->markBoundTargets();
+    if (!device) return;
+    device->markBoundTargets();
+    dispatchedAtBegin_ = device->computePassStatistics().dispatched;
 }
 
 void PassBound::end(const std::string& pass) {
@@ -42,7 +45,9 @@ void PassBound::end(const std::string& pass) {
     Run run;
     run.blended = device->blendedSinceMark();
     run.fragmentBytes = device->colorBytesPerFragmentSinceMark();
+    run.dispatches = device->computePassStatistics().dispatched - dispatchedAtBegin_;
     auto rate = [&](SurfaceFormat format) {
+        if (run.dispatches > 0 && limits && limits->computeWriteGBps > 0) return limits->computeWriteGBps;
         return limits ? limits->fillGBps(format, run.blended) : fillRateGBps;
     };
     for (const RenderTargetBinding& binding : device->targetsBoundSinceMark()) {
@@ -98,8 +103,11 @@ std::string PassBound::columns(const std::string& pass, double medianMs, double 
     if (bound > 0)
         n += std::snprintf(text + n, sizeof text - std::size_t(n), "  bound %8.3f ms  x%.1f", bound, medianMs / bound);
     std::vector<double> pixels;
-    for (const Run& r : found->second) pixels.push_back(r.pixels);
-    if (fragments > 0 && median(pixels) > 0)
+    long dispatches = 0;
+    for (const Run& r : found->second) pixels.push_back(r.pixels), dispatches = std::max(dispatches, r.dispatches);
+    if (dispatches > 0)
+        std::snprintf(text + n, sizeof text - std::size_t(n), "  compute (%ld dispatches)", dispatches);
+    else if (fragments > 0 && median(pixels) > 0)
         std::snprintf(text + n, sizeof text - std::size_t(n), "  %.2f fragments/px", fragments / median(pixels));
     return text;
 }

@@ -8,7 +8,10 @@
 // runtime's GpuLimits probe, measured once per device and cached) or from `fillRateGBps`
 // (--fill-rate GB/s, one rate for every format). The timing tables print MB, bound ms and
 // ms / bound. Texture fetches are not in the bound: a pass far above it that samples a lot is
-// fetch-bound (the probe prints the fetch rate to compare with).
+// fetch-bound (the probe prints the fetch rate to compare with). A pass whose draws ran as compute
+// dispatches (PresentationParameters::ComputePasses) writes nothing GL_SAMPLES_PASSED counts: its
+// target bytes are bounded at the probe's compute write rate and the table says "compute" instead
+// of fragments per pixel.
 #pragma once
 
 #include <map>
@@ -54,8 +57,10 @@ private:
         bool blended = false;
         double rateGBps = 0;     // the fill rate of the widest set's first format
         double pixels = 0;       // the largest bound target's pixels (fragments/px)
+        long dispatches = 0;     // draws that ran as compute dispatches
     };
     static inline std::map<std::string, std::vector<Run>> runs_;
+    static inline long dispatchedAtBegin_ = 0;
 };
 
 }  // namespace fxport::demo

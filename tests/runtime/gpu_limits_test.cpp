@@ -56,6 +56,7 @@ TEST(GpuLimits, MeasuresEveryRateAndLeavesTheDeviceDrawingAsBefore) {
     }
     EXPECT_TRUE(positive(limits.clearGBps));
     EXPECT_TRUE(positive(limits.fetchGTexelsPerSecond));
+    EXPECT_TRUE(positive(limits.computeWriteGBps));
     // Still additive, into the same target: 0.25 + 0.5 (the probe's blending and targets are gone).
     d.draw(Vector4(0.5f, 0, 0, 1));
     d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
@@ -72,6 +73,7 @@ TEST(GpuLimits, TextRoundTripsAndUnknownFormatsTakeTheirTexelSizesRate) {
     for (SurfaceFormat f : formats) limits.fill.push_back({f, rate, rate / 2}), rate += 10;
     limits.clearGBps = 50;
     limits.fetchGTexelsPerSecond = 30;
+    limits.computeWriteGBps = 70;
     GpuLimits back;
     ASSERT_TRUE(GpuLimits::fromText(limits.toText(), back));
     EXPECT_EQ(back.renderer, limits.renderer);
@@ -86,6 +88,10 @@ TEST(GpuLimits, TextRoundTripsAndUnknownFormatsTakeTheirTexelSizesRate) {
     EXPECT_FALSE(GpuLimits::fromText("renderer x\nfill Color 1 1\n", untouched));         // formats missing
     EXPECT_FALSE(GpuLimits::fromText(limits.toText() + "speed 3\n", untouched));         // unknown key
     EXPECT_FALSE(GpuLimits::fromText("fill Color -1 1\n" + limits.toText(), untouched));  // not a rate
+    // A cache from before the compute write rate was probed is measured again.
+    std::string withoutCompute = limits.toText();
+    withoutCompute.erase(withoutCompute.find("compute "));
+    EXPECT_FALSE(GpuLimits::fromText(withoutCompute, untouched));
     EXPECT_TRUE(untouched.fill.empty());
 }
 

@@ -23,6 +23,8 @@ struct SourceLocation;
 namespace fxport {
 
 class GraphicsResource;
+struct ComputeAnalysis;
+struct ComputePasses;
 
 // Uniform-buffer binding points per stage: D3D has separate constant slots per stage, so the same
 // HLSL binding (b0 = $Global, b1 = fxport's internal block, b2.. user cbuffers) gets a range per
@@ -45,6 +47,8 @@ struct ShaderProgram {
     mutable GLuint alphaTestProgram = 0;
     mutable GLint alphaFuncLocation = -1, alphaRefLocation = -1;
     mutable bool alphaTestUnavailable = false;  // the shader writes no colour to test
+    // What compute passes may do with this shader (compute_pass.h), read at its first candidate draw.
+    mutable std::shared_ptr<const ComputeAnalysis> computeAnalysis;
 };
 
 // D3D9 render states GL core lacks, as the last EffectPass::Apply() set them (off unless its pass
@@ -178,6 +182,8 @@ struct GraphicsDevice::Impl {
     // drops the pending colour clear if the draw must write every pixel (pending_clear.cpp).
     void dropColorClearUnderCoveringSprite(const ShaderProgram* spriteVertexShader);
     ClearStatistics clearStats;
+    // PresentationParameters::ComputePasses and $FXPORT_COMPUTE_PASSES: null when off (compute_pass.h).
+    std::shared_ptr<ComputePasses> computePasses;
     void executeClear(const Rectangle& rect, unsigned options, const Vector4& color, float depth, int stencil);
     void recordClear(unsigned options, const Vector4& color, float depth, int stencil);
     void resolvePendingClear(unsigned options);           // executes the pending part within `options`

@@ -10,6 +10,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "compute_pass.h"
 #include "effect_impl.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/graphics_device.h"
@@ -412,6 +413,7 @@ void Effect::Impl::releasePrograms(GraphicsDevice::Impl& device) {
                 if (bound == &p) bound = nullptr;
             device.deleteProgram(p.program);
             if (p.alphaTestProgram) device.deleteProgram(p.alphaTestProgram);
+            if (p.computeAnalysis && device.computePasses) device.computePasses->forget(*p.computeAnalysis);
         }
 }
 

@@ -42,6 +42,14 @@ void main() {
     color = sum * 0.0625;
 })";
 constexpr int kFetchesPerPixel = 16;
+// What a compute pass (compute_pass.cpp) does at the least: one imageStore per pixel.
+const char* kComputeWriteShader = R"(#version 450
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(binding = 0, rgba8) writeonly uniform image2D target;
+void main() {
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    imageStore(target, p, fract(vec4(p.xyxy) * vec4(0.013, 0.017, 0.019, 0.023)));
+})";
 
 GLuint compile(GLenum stage, const char* source) {
     GLuint shader = glCreateShader(stage);
@@ -56,6 +64,21 @@ GLuint compile(GLenum stage, const char* source) {
         throw InvalidOperation(std::string("GpuLimits: probe shader does not compile: ") + log);
     }
     return shader;
+}
+
+GLuint linkCompute(const char* source) {
+    GLuint cs = compile(GL_COMPUTE_SHADER, source);
+    GLuint program = glCreateProgram();
+    glAttachShader(program, cs);
+    glLinkProgram(program);
+    glDeleteShader(cs);
+    GLint ok = 0;
+    glGetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        glDeleteProgram(program);
+        throw InvalidOperation("GpuLimits: compute probe program does not link");
+    }
+    return program;
 }
 
 GLuint link(const char* pixelSource) {
@@ -187,6 +210,21 @@ GpuLimits GpuLimits::Measure(GraphicsDevice& device, int size, int repeats) {
         glDeleteSamplers(1, &sampler);
     }
 
+    {
+        Target target(SurfaceFormat::Color, size);
+        GLuint computeProgram = linkCompute(kComputeWriteShader);
+        glUseProgram(computeProgram);
+        glBindImageTexture(0, target.texture, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+        const GLuint groups = GLuint((size + 7) / 8);
+        limits.computeWriteGBps = pixels * 4 / gpuSeconds([&] {
+            for (int i = 0; i < repeats; ++i) {
+                glDispatchCompute(groups, groups, 1);
+                glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);  // as a compute pass ends
+            }
+        }) * 1e-9;
+        glDeleteProgram(computeProgram);
+    }
+
     // Hand GL back as the device's shadow says it is; what the shadow cannot say, it re-applies.
     glUseProgram(0);
     glDeleteProgram(fillProgram);
@@ -207,6 +245,7 @@ std::string GpuLimits::toText() const {
         out << "fill " << surfaceFormatName(f.format) << " " << f.opaqueGBps << " " << f.blendedGBps << "\n";
     out << "clear " << clearGBps << "\n";
     out << "fetch " << fetchGTexelsPerSecond << "\n";
+    out << "compute " << computeWriteGBps << "\n";
     return out.str();
 }
 
@@ -233,11 +272,15 @@ bool GpuLimits::fromText(const std::string& text, GpuLimits& out) {
             if (!(fields >> limits.clearGBps)) return false;
         } else if (key == "fetch") {
             if (!(fields >> limits.fetchGTexelsPerSecond)) return false;
+        } else if (key == "compute") {
+            if (!(fields >> limits.computeWriteGBps)) return false;
         } else if (!key.empty()) {
             return false;
         }
     }
-    if (limits.fill.size() != std::size(kFormats) || !(limits.clearGBps > 0) || !(limits.fetchGTexelsPerSecond > 0))
+    // A cache written before the compute rate was measured has none: measured again.
+    if (limits.fill.size() != std::size(kFormats) || !(limits.clearGBps > 0) || !(limits.fetchGTexelsPerSecond > 0) ||
+        !(limits.computeWriteGBps > 0))
         return false;
     out = limits;
     return true;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "compute_pass.h"
 #include "device_impl.h"
 #include "effect_impl.h"
 #include "fxport/graphics/effect.h"
@@ -112,6 +113,12 @@ GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters)
     impl_->honourDiscards = parameters_.HonourDiscards && !(discard && std::string(discard) == "0");
     const char* covered = std::getenv("FXPORT_DROP_COVERED_CLEARS");
     impl_->dropCoveredClears = parameters_.DropCoveredClears && !(covered && std::string(covered) == "0");
+    // Off by default, so the environment can turn it on as well as off.
+    const char* compute = std::getenv("FXPORT_COMPUTE_PASSES");
+    const bool computePasses = compute && std::string(compute) == "1"   ? true
+                               : compute && std::string(compute) == "0" ? false
+                                                                        : parameters_.ComputePasses;
+    if (computePasses) impl_->computePasses = std::make_shared<ComputePasses>(*impl_);
 
     // The D3D conventions (docs/DESIGN.md): NDC z in [0,1], and window y from the top row so
     // render targets come out top-row-first.
@@ -188,6 +195,10 @@ int GraphicsDevice::maxTextureSize() const {
 GpuObjectCounts GraphicsDevice::liveGpuObjects() const { return impl_->live; }
 
 ClearStatistics GraphicsDevice::clearStatistics() const { return impl_->clearStats; }
+
+ComputePassStatistics GraphicsDevice::computePassStatistics() const {
+    return impl_->computePasses ? impl_->computePasses->statistics : ComputePassStatistics{};
+}
 
 void GraphicsDevice::finish() { glFinish(); }
 
@@ -407,8 +418,12 @@ void GraphicsDevice::DrawIndexedPrimitives(PrimitiveType primitiveType, int base
         glVertexArrayElementBuffer(va.vao, va.elements);
     }
     bool wide = Indices->IndexElementSize() == IndexElementSize::ThirtyTwoBits;
-    glDrawElementsBaseVertex(glPrimitive(primitiveType), count, wide ? GL_UNSIGNED_INT : GL_UNSIGNED_SHORT,
-                             reinterpret_cast<const void*>(std::uintptr_t(startIndex) * (wide ? 4u : 2u)), baseVertex);
+    auto draw = [&] {
+        glDrawElementsBaseVertex(glPrimitive(primitiveType), count, wide ? GL_UNSIGNED_INT : GL_UNSIGNED_SHORT,
+                                 reinterpret_cast<const void*>(std::uintptr_t(startIndex) * (wide ? 4u : 2u)), baseVertex);
+    };
+    if (d.computePasses && d.computePasses->tryDraw(primitiveType, primitiveCount, draw)) return;
+    draw();
 }
 
 void GraphicsDevice::DrawPrimitives(PrimitiveType primitiveType, int vertexStart, int primitiveCount) {
@@ -421,7 +436,9 @@ void GraphicsDevice::DrawPrimitives(PrimitiveType primitiveType, int vertexStart
                             std::to_string(d.vertexBuffer->VertexCount()) + " vertices");
     d.flush("DrawPrimitives");
     d.bindVertexBuffer();
-    glDrawArrays(glPrimitive(primitiveType), vertexStart, count);
+    auto draw = [&] { glDrawArrays(glPrimitive(primitiveType), vertexStart, count); };
+    if (d.computePasses && d.computePasses->tryDraw(primitiveType, primitiveCount, draw)) return;
+    draw();
 }
 
 GraphicsDevice::Impl::VertexArray& GraphicsDevice::Impl::bindVertexBuffer() {
@@ -460,7 +477,9 @@ void GraphicsDevice::drawUser(PrimitiveType type, const void* vertices, std::siz
     va.offset = 0;
     va.stride = GLsizei(stride);
     glVertexArrayVertexBuffer(va.vao, 0, va.buffer, 0, va.stride);
-    glDrawArrays(glPrimitive(type), 0, count);
+    auto draw = [&] { glDrawArrays(glPrimitive(type), 0, count); };
+    if (d.computePasses && d.computePasses->tryDraw(type, primitiveCount, draw)) return;
+    draw();
 }
 
 void GraphicsDevice::drawUserIndexed(PrimitiveType type, const void* vertices, std::size_t stride, int vertexCount,
@@ -484,7 +503,9 @@ void GraphicsDevice::drawUserIndexed(PrimitiveType type, const void* vertices, s
     glVertexArrayVertexBuffer(va.vao, 0, va.buffer, 0, va.stride);
     va.elements = d.userIndices;
     glVertexArrayElementBuffer(va.vao, va.elements);
-    glDrawElements(glPrimitive(type), count, indexSize == 4 ? GL_UNSIGNED_INT : GL_UNSIGNED_SHORT, nullptr);
+    auto draw = [&] { glDrawElements(glPrimitive(type), count, indexSize == 4 ? GL_UNSIGNED_INT : GL_UNSIGNED_SHORT, nullptr); };
+    if (d.computePasses && d.computePasses->tryDraw(type, primitiveCount, draw)) return;
+    draw();
 }
 
 // --- presentation and read-back
@@ -670,6 +691,7 @@ void GraphicsDevice::Impl::forget(GraphicsResource* resource) {
 }
 
 void GraphicsDevice::Impl::releaseAll() {
+    computePasses.reset();  // its programs and buffer, while the context is current
     glBindProgramPipeline(0);
     glBindVertexArray(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -1,6 +1,6 @@
 // GpuLimits: what this GPU can do at most, measured once per device and cached (issue 16): the
 // fragment output rate of each render-target format with blending off and additive, the clear
-// rate, and the bilinear texture fetch rate. A pass's bound -- the time the GPU needs just to
+// rate, the bilinear texture fetch rate, and the rate a compute shader writes an image. A pass's bound -- the time the GPU needs just to
 // write the fragments the pass wrote, at this rate -- says how far the pass is from the GPU's limit
 // (fxdemo's timing tables, --explain and `fxdemo report` print pass, ms, bound ms, ratio).
 //
@@ -27,6 +27,8 @@ struct GpuLimits {
     std::vector<Fill> fill;          // Color, Rgba64, HalfVector4, Vector4, Single, Vector2
     double clearGBps = 0;            // glClear of a Color target
     double fetchGTexelsPerSecond = 0;  // bilinear fetches of a Color texture in a pixel shader
+    double computeWriteGBps = 0;     // imageStore of a Color (rgba8) image from a compute shader, 8x8
+                                     // work groups, one dispatch per pass (PresentationParameters::ComputePasses)
 
     // The rate of `format` (a format not measured: the measured one of the same texel size, else
     // the slowest measured); 0 when nothing was measured.

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -59,6 +60,12 @@ struct PresentationParameters {
     // fxport: a pending colour clear is dropped under a SpriteBatch sprite that provably writes every
     // pixel of the target (ClearStatistics::covered); false (or $FXPORT_DROP_COVERED_CLEARS=0) keeps it.
     bool DropCoveredClears = true;
+    // fxport: a draw of at most two triangles (a FullscreenQuad, a one-sprite SpriteBatch batch)
+    // whose state a compute dispatch honours exactly -- no depth or stencil test, no blending but
+    // Min/Max (and One/One on 32-bit float targets), targets with an image format, a pixel shader
+    // without derivatives -- runs as a compute shader generated from its pixel shader
+    // (ComputePassStatistics). Off by default; $FXPORT_COMPUTE_PASSES=1 or 0 overrides this.
+    bool ComputePasses = false;
     std::string windowTitle;     // GLFW only
 };
 
@@ -116,6 +123,13 @@ struct ClearStatistics {
     long dropped = 0;    // depth/stencil clears of a DiscardContents target left before any draw tested them
     long discarded = 0;  // pending channel clears dropped by DiscardContents
     long covered = 0;    // pending colour clears dropped under a SpriteBatch sprite that writes every pixel
+};
+
+// What PresentationParameters::ComputePasses did: draws run as compute dispatches, and, for draws
+// that were candidates (at most two triangles) but were drawn as usual, how many per reason.
+struct ComputePassStatistics {
+    long dispatched = 0;
+    std::map<std::string, long> fellBack;
 };
 
 class GraphicsDevice {
@@ -227,6 +241,7 @@ public:
     int maxTextureSize() const;
     GpuObjectCounts liveGpuObjects() const;
     ClearStatistics clearStatistics() const;
+    ComputePassStatistics computePassStatistics() const;
     // Waits until the GPU has finished everything submitted (for timing and tests).
     void finish();
     // fxport drives GL from one thread, and the device created last is the current one. With

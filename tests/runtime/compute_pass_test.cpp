@@ -1,0 +1,429 @@
+// Compute passes (PresentationParameters::ComputePasses, runtime/graphics/src/compute_pass.cpp):
+// each pixel shader of tests/fixtures/runtime/ComputePasses.fx is drawn as a full-target quad on a
+// device that draws it with the fragment stage and on one that runs it as a compute dispatch; both
+// images are compared with the same math computed on the CPU in double precision, and the largest
+// difference between the two is printed. Draws a dispatch cannot reproduce must be drawn as usual
+// (and still be right).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+
+#include "runtime_test_support.h"
+
+namespace fxport {
+namespace {
+
+using test::drawQuad;
+using test::runtimeFixture;
+
+constexpr int kW = 24, kH = 12;
+constexpr double kColorTolerance = 1.0 / 255;  // an 8-bit channel: the rounding, plus D3D9's 1/256-pixel bias
+constexpr double kFloatTolerance = 1e-5;
+
+const Vector4 kClear(0.2f, 0.4f, 0.6f, 0.8f);
+
+struct Pixel {
+    double v[4];
+};
+
+// The effect's Pattern(uv), with frac and sin in double.
+Pixel pattern(double u, double v) {
+    double f = u * 3.7 + v * 1.3;
+    return {{u, v, f - std::floor(f), 0.5 + 0.5 * std::sin(u * 10.0)}};
+}
+
+// UV of pixel (x, y) of a full-viewport quad: SM4 samples at pixel centres, D3D9 at integer
+// coordinates (the port's half-pixel offset, less its 1/256-pixel bias).
+void uvAt(int x, int y, const Viewport& vp, bool d3d9, double& u, double& v) {
+    const double shift = d3d9 ? 1.0 / 256 : 0.5;
+    u = (x - vp.X + shift) / vp.Width;
+    v = (y - vp.Y + shift) / vp.Height;
+}
+
+struct Device {
+    explicit Device(bool compute, int w = kW, int h = kH) {
+        PresentationParameters p;
+        p.BackBufferWidth = w;
+        p.BackBufferHeight = h;
+        p.ComputePasses = compute;
+        device = std::make_unique<GraphicsDevice>(p);
+        effect = std::make_unique<Effect>(*device, runtimeFixture("ComputePasses.fx"));
+        device->BlendState = BlendState::Opaque;
+        device->DepthStencilState = DepthStencilState::None;
+        device->RasterizerState = RasterizerState::CullCounterClockwise;
+    }
+    void apply(const std::string& technique) {
+        effect->CurrentTechnique = effect->Techniques[technique];
+        effect->CurrentTechnique->Passes[0].Apply();
+    }
+    long dispatched() const { return device->computePassStatistics().dispatched; }
+    std::unique_ptr<GraphicsDevice> device;
+    std::unique_ptr<Effect> effect;
+};
+
+std::vector<float> readTarget(RenderTarget2D& target) {
+    const std::size_t n = std::size_t(target.Width()) * std::size_t(target.Height());
+    if (target.Format() == SurfaceFormat::Single) {
+        std::vector<float> single(n), out(n * 4, 0.0f);
+        target.GetData(single.data(), n);
+        for (std::size_t i = 0; i < n; ++i) out[i * 4] = single[i], out[i * 4 + 3] = 1;
+        return out;
+    }
+    return test::readFloats(target);
+}
+
+// The largest difference of `image` from `expected(x, y)` over the channels `channels` (1..4).
+double maxError(const std::vector<float>& image, int w, int h, const std::function<Pixel(int, int)>& expected,
+                int channels = 4) {
+    double worst = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            Pixel e = expected(x, y);
+            for (int c = 0; c < channels; ++c)
+                worst = std::max(worst, std::abs(double(image[std::size_t((y * w + x) * 4 + c)]) - e.v[c]));
+        }
+    return worst;
+}
+
+double maxDifference(const std::vector<float>& a, const std::vector<float>& b) {
+    double worst = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) worst = std::max(worst, std::abs(double(a[i]) - double(b[i])));
+    return worst;
+}
+
+// Renders `draw` into a fresh `format` target (cleared to kClear) both ways; checks each against
+// `expected` within `tolerance`, that the compute device dispatched `dispatches` times, and prints
+// the compute-vs-fragment difference.
+void bothWays(const char* name, SurfaceFormat format, int w, int h, const std::function<void(Device&)>& draw,
+              const std::function<Pixel(int, int)>& expected, double tolerance, long dispatches) {
+    std::vector<float> images[2];
+    for (bool compute : {false, true}) {
+        SCOPED_TRACE(compute ? "compute" : "fragment");
+        Device d(compute, w, h);
+        RenderTarget2D target(*d.device, w, h, false, format, DepthFormat::None);
+        d.device->SetRenderTarget(target);
+        d.device->Clear(ClearOptions::Target, kClear, 1.0f, 0);
+        draw(d);
+        d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+        images[compute] = readTarget(target);
+        EXPECT_LE(maxError(images[compute], w, h, expected), tolerance);
+        EXPECT_EQ(d.dispatched(), compute ? dispatches : 0);
+    }
+    std::printf("[ compute ] %-28s compute vs fragment: max difference %.3g\n", name, maxDifference(images[0], images[1]));
+}
+
+Pixel clearOr(bool inside, const Pixel& p) { return inside ? p : Pixel{{kClear.X, kClear.Y, kClear.Z, kClear.W}}; }
+
+TEST(ComputePasses, OpaqueWrite) {
+    for (auto [w, h] : {std::pair{kW, kH}, std::pair{16, 16}}) {  // a square target: pixel centres on the diagonal
+        bothWays("opaque write", SurfaceFormat::Color, w, h, [](Device& d) { d.apply("Pattern"); drawQuad(*d.device); },
+                 [&](int x, int y) { double u, v; uvAt(x, y, Viewport(0, 0, w, h), false, u, v); return pattern(u, v); },
+                 kColorTolerance * 0.6, 1);
+        bothWays("opaque write, Vector4", SurfaceFormat::Vector4, w, h,
+                 [](Device& d) { d.apply("Pattern"); drawQuad(*d.device); },
+                 [&](int x, int y) { double u, v; uvAt(x, y, Viewport(0, 0, w, h), false, u, v); return pattern(u, v); },
+                 kFloatTolerance, 1);
+    }
+}
+
+TEST(ComputePasses, FullscreenQuadWithD3D9HalfPixelOffset) {
+    bothWays("D3D9 FullscreenQuad", SurfaceFormat::Color, kW, kH,
+             [](Device& d) {
+                 d.apply("PatternD3D9");
+                 FullscreenQuad quad(*d.device);
+                 quad.Draw(*d.device);
+             },
+             [](int x, int y) { double u, v; uvAt(x, y, Viewport(0, 0, kW, kH), true, u, v); return pattern(u, v); },
+             kColorTolerance, 1);
+}
+
+// A flat varying takes GL's provoking vertex (the last): the quad's first triangle (top-left,
+// top-right, bottom-left) shows bottom-left's UV (0,1), the second (bottom-left, top-right,
+// bottom-right) bottom-right's (1,1). On a square target pixel centres lie on the shared edge; D3D's
+// top-left rule gives them to the second triangle, whose left edge it is.
+TEST(ComputePasses, FlatVaryingAndTheFillRuleOnTheDiagonal) {
+    for (auto [w, h] : {std::pair{16, 16}, std::pair{kW, kH}}) {
+        bothWays("flat varying, fill rule", SurfaceFormat::Color, w, h, [](Device& d) { d.apply("Flat"); drawQuad(*d.device); },
+                 [&](int x, int y) {
+                     // Centre (x+0.5, y+0.5) against the edge x/w + y/h = 1, in integers.
+                     const long side = long(2 * x + 1) * h + long(2 * y + 1) * w - 2L * w * h;
+                     return side < 0 ? Pixel{{0, 1, 0, 1}} : Pixel{{1, 1, 0, 1}};
+                 },
+                 0.0, 1);
+    }
+}
+
+TEST(ComputePasses, WriteMaskKeepsMaskedChannels) {
+    bothWays("write mask", SurfaceFormat::Color, kW, kH,
+             [](Device& d) {
+                 BlendState masked = BlendState::Opaque;
+                 masked.ColorWriteChannels = ColorWriteChannels::Red | ColorWriteChannels::Alpha;
+                 d.device->BlendState = masked;
+                 d.apply("Pattern");
+                 drawQuad(*d.device);
+             },
+             [](int x, int y) {
+                 double u, v;
+                 uvAt(x, y, Viewport(0, 0, kW, kH), false, u, v);
+                 Pixel p = pattern(u, v);
+                 return Pixel{{p.v[0], kClear.Y, kClear.Z, p.v[3]}};
+             },
+             kColorTolerance * 0.6, 1);
+}
+
+TEST(ComputePasses, ScissorClipsTheDispatch) {
+    const Rectangle scissor(5, 3, 9, 6);
+    bothWays("scissor", SurfaceFormat::Color, kW, kH,
+             [&](Device& d) {
+                 RasterizerState r = RasterizerState::CullCounterClockwise;
+                 r.ScissorTestEnable = true;
+                 d.device->RasterizerState = r;
+                 d.device->ScissorRectangle = scissor;
+                 d.apply("Pattern");
+                 drawQuad(*d.device);
+             },
+             [&](int x, int y) {
+                 double u, v;
+                 uvAt(x, y, Viewport(0, 0, kW, kH), false, u, v);
+                 return clearOr(scissor.Contains(x, y), pattern(u, v));
+             },
+             kColorTolerance * 0.6, 1);
+}
+
+TEST(ComputePasses, SmallerViewport) {
+    const Viewport vp(4, 2, 11, 7);
+    bothWays("smaller viewport", SurfaceFormat::Color, kW, kH,
+             [&](Device& d) {
+                 d.device->Viewport = vp;
+                 d.apply("Pattern");
+                 drawQuad(*d.device);
+             },
+             [&](int x, int y) {
+                 double u, v;
+                 uvAt(x, y, vp, false, u, v);
+                 return clearOr(x >= vp.X && x < vp.X + vp.Width && y >= vp.Y && y < vp.Y + vp.Height, pattern(u, v));
+             },
+             kColorTolerance * 0.6, 1);
+}
+
+TEST(ComputePasses, MinBlend) {
+    bothWays("Min blend", SurfaceFormat::Color, kW, kH,
+             [](Device& d) {
+                 BlendState min = BlendState::Opaque;
+                 min.ColorBlendFunction = min.AlphaBlendFunction = BlendFunction::Min;
+                 min.ColorSourceBlend = min.AlphaSourceBlend = Blend::One;
+                 min.ColorDestinationBlend = min.AlphaDestinationBlend = Blend::One;
+                 d.device->BlendState = min;
+                 d.apply("Pattern");
+                 drawQuad(*d.device);
+             },
+             [](int x, int y) {
+                 double u, v;
+                 uvAt(x, y, Viewport(0, 0, kW, kH), false, u, v);
+                 Pixel p = pattern(u, v);
+                 const double c[4] = {kClear.X, kClear.Y, kClear.Z, kClear.W};
+                 for (int i = 0; i < 4; ++i) p.v[i] = std::min(p.v[i], c[i]);
+                 return p;
+             },
+             kColorTolerance * 0.6, 1);
+}
+
+// One/One on a 32-bit float target is the blender's fp32 addition (narrower targets fall back).
+TEST(ComputePasses, AdditiveBlendOnAFloatTarget) {
+    bothWays("One/One on Vector4", SurfaceFormat::Vector4, kW, kH,
+             [](Device& d) {
+                 BlendState add = BlendState::Opaque;
+                 add.ColorDestinationBlend = add.AlphaDestinationBlend = Blend::One;
+                 d.device->BlendState = add;
+                 d.apply("Pattern");
+                 drawQuad(*d.device);
+             },
+             [](int x, int y) {
+                 double u, v;
+                 uvAt(x, y, Viewport(0, 0, kW, kH), false, u, v);
+                 Pixel p = pattern(u, v);
+                 const double c[4] = {kClear.X, kClear.Y, kClear.Z, kClear.W};
+                 for (int i = 0; i < 4; ++i) p.v[i] += c[i];
+                 return p;
+             },
+             kFloatTolerance, 1);
+}
+
+// Culling follows the winding as seen: the quad drawn counter-clockwise is culled by XNA's default
+// and drawn with CullMode::None (and with CullClockwiseFace), both ways.
+TEST(ComputePasses, CullingFollowsTheWindingAsSeen) {
+    for (CullMode mode : {CullMode::CullCounterClockwiseFace, CullMode::None, CullMode::CullClockwiseFace}) {
+        SCOPED_TRACE(int(mode));
+        bothWays("counter-clockwise quad", SurfaceFormat::Color, kW, kH,
+                 [&](Device& d) {
+                     RasterizerState r = RasterizerState::CullNone;
+                     r.CullMode = mode;
+                     d.device->RasterizerState = r;
+                     d.apply("Pattern");
+                     std::vector<VertexPositionTexture> v = test::fullscreenQuad();
+                     std::swap(v[1], v[2]);  // each triangle counter-clockwise
+                     std::swap(v[4], v[5]);
+                     d.device->DrawUserPrimitives(PrimitiveType::TriangleList, v.data(), 0, 2);
+                 },
+                 [&](int x, int y) {
+                     double u, v;
+                     uvAt(x, y, Viewport(0, 0, kW, kH), false, u, v);
+                     return clearOr(mode != CullMode::CullCounterClockwiseFace, pattern(u, v));
+                 },
+                 kColorTolerance * 0.6, 1);
+    }
+}
+
+TEST(ComputePasses, DiscardKeepsThePixel) {
+    bothWays("discard", SurfaceFormat::Color, kW, kH, [](Device& d) { d.apply("Discard"); drawQuad(*d.device); },
+             [](int x, int y) {
+                 double u, v;
+                 uvAt(x, y, Viewport(0, 0, kW, kH), false, u, v);
+                 return clearOr(u >= 0.5, pattern(u, v));
+             },
+             kColorTolerance * 0.6, 1);
+}
+
+// Three targets of different formats from one pixel shader.
+TEST(ComputePasses, MultipleRenderTargets) {
+    std::vector<float> images[2][3];
+    for (bool compute : {false, true}) {
+        SCOPED_TRACE(compute ? "compute" : "fragment");
+        Device d(compute);
+        RenderTarget2D color(*d.device, kW, kH, false, SurfaceFormat::Color, DepthFormat::None);
+        RenderTarget2D vector4(*d.device, kW, kH, false, SurfaceFormat::Vector4, DepthFormat::None);
+        RenderTarget2D single(*d.device, kW, kH, false, SurfaceFormat::Single, DepthFormat::None);
+        d.device->SetRenderTargets({RenderTargetBinding(&color), RenderTargetBinding(&vector4), RenderTargetBinding(&single)});
+        d.device->Clear(ClearOptions::Target, kClear, 1.0f, 0);
+        d.apply("MRT");
+        drawQuad(*d.device);
+        d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+        images[compute][0] = readTarget(color);
+        images[compute][1] = readTarget(vector4);
+        images[compute][2] = readTarget(single);
+        auto uv = [](int x, int y, double& u, double& v) { uvAt(x, y, Viewport(0, 0, kW, kH), false, u, v); };
+        EXPECT_LE(maxError(images[compute][0], kW, kH, [&](int x, int y) { double u, v; uv(x, y, u, v); return pattern(u, v); }),
+                  kColorTolerance * 0.6);
+        EXPECT_LE(maxError(images[compute][1], kW, kH,
+                           [&](int x, int y) {
+                               double u, v;
+                               uv(x, y, u, v);
+                               return Pixel{{u * 4 - 1, v * 4 - 1, u * v * 100, -2}};
+                           }),
+                  1e-4);
+        EXPECT_LE(maxError(images[compute][2], kW, kH,
+                           [&](int x, int y) {
+                               double u, v;
+                               uv(x, y, u, v);
+                               return Pixel{{v * 3 + u, 0, 0, 1}};
+                           },
+                           1),
+                  kFloatTolerance);
+        EXPECT_EQ(d.dispatched(), compute ? 1 : 0);
+    }
+    for (int t = 0; t < 3; ++t)
+        std::printf("[ compute ] MRT target %d                 compute vs fragment: max difference %.3g\n", t,
+                    maxDifference(images[0][t], images[1][t]));
+}
+
+// A SpriteBatch sprite over the whole target with a custom pixel-shader-only effect.
+TEST(ComputePasses, FullTargetSpriteWithCustomEffect) {
+    const int tw = 6, th = 3;
+    std::vector<Color> texels;
+    for (int i = 0; i < tw * th; ++i) texels.push_back(Color(std::uint8_t(i * 13), std::uint8_t(255 - i * 11), std::uint8_t(i * 7), 255));
+    bothWays("SpriteBatch full-target sprite", SurfaceFormat::Color, kW, kH,
+             [&](Device& d) {
+                 Texture2D texture(*d.device, tw, th);
+                 texture.SetData(texels.data(), texels.size());
+                 SpriteBatch batch(*d.device);
+                 d.effect->CurrentTechnique = d.effect->Techniques["Sprite"];
+                 batch.Begin(SpriteSortMode::Immediate, BlendState::Opaque, SamplerState::PointClamp, nullptr, nullptr,
+                             *d.effect);
+                 batch.Draw(texture, Rectangle(0, 0, kW, kH), Color::White);
+                 batch.End();
+             },
+             [&](int x, int y) {
+                 // XNA's sprite matrix has the -0.5 that cancels D3D9's pixel centres: the texture
+                 // coordinate of pixel x is (x + 0.5 + 1/256) / width (pending_clear.cpp).
+                 double u, v;
+                 uvAt(x, y, Viewport(0, 0, kW, kH), false, u, v);
+                 const Color& c = texels[std::size_t(int(v * th) * tw + int(u * tw))];
+                 Pixel p = pattern(u, v);
+                 const double t[4] = {c.R / 255.0, c.G / 255.0, c.B / 255.0, c.A / 255.0};
+                 for (int i = 0; i < 4; ++i) p.v[i] = t[i] * 0.5 + p.v[i] * 0.5;
+                 return p;
+             },
+             kColorTolerance, 1);
+}
+
+// Draws a dispatch cannot reproduce are drawn as usual: counted as fallen back, not dispatched,
+// and their pixels are still right.
+TEST(ComputePasses, DerivativesFallBack) {
+    Device d(true);
+    RenderTarget2D target(*d.device, kW, kH, false, SurfaceFormat::Vector4, DepthFormat::None);
+    d.device->SetRenderTarget(target);
+    d.apply("Derivative");
+    drawQuad(*d.device);
+    d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+    EXPECT_EQ(d.dispatched(), 0);
+    EXPECT_EQ(d.device->computePassStatistics().fellBack["pixel shader: uses dFdx"], 1);
+    // ddx(uv.x) * 8 = 8 / width across the quad, ddy(uv.y) * 8 = 8 / height.
+    EXPECT_LE(maxError(readTarget(target), kW, kH, [](int, int) { return Pixel{{8.0 / kW, 8.0 / kH, 0, 1}}; }), 1e-5);
+}
+
+TEST(ComputePasses, DepthTestFallsBack) {
+    Device d(true);
+    RenderTarget2D target(*d.device, kW, kH, false, SurfaceFormat::Color, DepthFormat::Depth24Stencil8);
+    d.device->SetRenderTarget(target);
+    d.device->Clear(ClearOptions::Target | ClearOptions::DepthBuffer, kClear, 1.0f, 0);
+    d.device->DepthStencilState = DepthStencilState::Default;
+    d.apply("Pattern");
+    drawQuad(*d.device, 0.5f);
+    d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+    EXPECT_EQ(d.dispatched(), 0);
+    EXPECT_EQ(d.device->computePassStatistics().fellBack["depth test or write"], 1);
+    EXPECT_LE(maxError(readTarget(target), kW, kH,
+                       [](int x, int y) { double u, v; uvAt(x, y, Viewport(0, 0, kW, kH), false, u, v); return pattern(u, v); }),
+              kColorTolerance * 0.6);
+}
+
+// A target without a depth buffer passes every depth test and takes no depth writes (GL), so the
+// depth state does not stop a dispatch there.
+TEST(ComputePasses, DepthStateOfATargetWithoutDepthBuffer) {
+    bothWays("depth state, no depth buffer", SurfaceFormat::Color, kW, kH,
+             [](Device& d) {
+                 d.device->DepthStencilState = DepthStencilState::Default;
+                 d.apply("Pattern");
+                 drawQuad(*d.device, 0.5f);
+             },
+             [](int x, int y) { double u, v; uvAt(x, y, Viewport(0, 0, kW, kH), false, u, v); return pattern(u, v); },
+             kColorTolerance * 0.6, 1);
+}
+
+TEST(ComputePasses, ThreeTrianglesAreNotACandidate) {
+    Device d(true);
+    RenderTarget2D target(*d.device, kW, kH, false, SurfaceFormat::Color, DepthFormat::None);
+    d.device->SetRenderTarget(target);
+    d.apply("Pattern");
+    std::vector<VertexPositionTexture> vertices = test::fullscreenQuad();
+    vertices.insert(vertices.end(), vertices.begin(), vertices.begin() + 3);  // the first triangle again
+    d.device->DrawUserPrimitives(PrimitiveType::TriangleList, vertices.data(), 0, 3);
+    d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+    EXPECT_EQ(d.dispatched(), 0);
+    EXPECT_TRUE(d.device->computePassStatistics().fellBack.empty());
+    EXPECT_LE(maxError(readTarget(target), kW, kH,
+                       [](int x, int y) { double u, v; uvAt(x, y, Viewport(0, 0, kW, kH), false, u, v); return pattern(u, v); }),
+              kColorTolerance * 0.6);
+}
+
+}  // namespace
+}  // namespace fxport
+
+int main(int argc, char** argv) {
+    ::testing::InitGoogleTest(&argc, argv);
+    unsetenv("FXPORT_COMPUTE_PASSES");  // each device here says itself whether it uses compute passes
+    return RUN_ALL_TESTS();
+}
