@@ -37,6 +37,7 @@ struct BuildReport {
     // GraphicsDevice::clearStatistics() since the device was made (issue 16), once addClears ran.
     bool hasClears = false;
     ClearStatistics clears;
+    DepthStorageStatistics depthStorage;  // GraphicsDevice::depthStorageStatistics(), by addClears too
 
     std::int64_t targetBytes() const;
     double effectLoadMs() const;

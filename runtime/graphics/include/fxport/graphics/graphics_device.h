@@ -59,6 +59,13 @@ struct PresentationParameters {
     // fxport: a pending colour clear is dropped under a SpriteBatch sprite that provably writes every
     // pixel of the target (ClearStatistics::covered); false (or $FXPORT_DROP_COVERED_CLEARS=0) keeps it.
     bool DropCoveredClears = true;
+    // fxport: a render target's depth/stencil buffer (the back buffer's too) is made at the first draw
+    // into it that tests depth or stencil, so a target never drawn with depth takes no memory
+    // (DepthStorageStatistics); leaving a DiscardContents target tells GL its depth/stencil is no
+    // longer needed (glInvalidateFramebuffer: XNA clears them at its next binding). DepthStencilFormat
+    // reports the format asked for either way, and the pixels are the same; false (or
+    // $FXPORT_LAZY_DEPTH=0) makes every buffer with its target.
+    bool LazyDepthStorage = true;
     std::string windowTitle;     // GLFW only
 };
 
@@ -116,6 +123,17 @@ struct ClearStatistics {
     long dropped = 0;    // depth/stencil clears of a DiscardContents target left before any draw tested them
     long discarded = 0;  // pending channel clears dropped by DiscardContents
     long covered = 0;    // pending colour clears dropped under a SpriteBatch sprite that writes every pixel
+};
+
+// Depth/stencil buffers over the device's life (PresentationParameters::LazyDepthStorage): bytes
+// as drivers store them (Depth16 2 per pixel, Depth24 and Depth24Stencil8 4).
+struct DepthStorageStatistics {
+    long requested = 0;                // render targets and back buffers made with a DepthFormat
+    long allocated = 0;                // their buffers made in GL (at a draw that needed one, or at once)
+    std::int64_t requestedBytes = 0, allocatedBytes = 0;
+    long invalidated = 0;              // depth/stencil contents given up on leaving a DiscardContents target
+    long unallocated() const { return requested - allocated; }  // targets never drawn with depth or stencil
+    std::int64_t savedBytes() const { return requestedBytes - allocatedBytes; }
 };
 
 class GraphicsDevice {
@@ -227,6 +245,7 @@ public:
     int maxTextureSize() const;
     GpuObjectCounts liveGpuObjects() const;
     ClearStatistics clearStatistics() const;
+    DepthStorageStatistics depthStorageStatistics() const;
     // Waits until the GPU has finished everything submitted (for timing and tests).
     void finish();
     // fxport drives GL from one thread, and the device created last is the current one. With
