@@ -237,6 +237,30 @@ TEST(LazyDepthStorage, StencilTestMakesTheBufferWithItsClear) {
     }
 }
 
+// A cube target's one buffer (shared by its faces) is made at the first depth-tested draw on a face.
+TEST(LazyDepthStorage, CubeTargetBufferMadeAtTheFirstDepthTestedDraw) {
+    for (Mode mode : kModes) {
+        SCOPED_TRACE(mode.name());
+        Device d(mode);
+        RenderTargetCube cube(*d.device, kHeight, false, SurfaceFormat::Vector4, DepthFormat::Depth24Stencil8);
+        d.device->SetRenderTarget(cube, CubeMapFace::PositiveX);
+        d.draw(Vector4(1, 0, 0, 1), DepthStencilState::None, 0.5f);
+        EXPECT_EQ(cube.depthRenderbuffer() != 0, !mode.lazy);
+        d.device->SetRenderTarget(cube, CubeMapFace::NegativeY);
+        d.device->Clear(ClearOptions::Target | ClearOptions::DepthBuffer, Vector4(0, 0, 0, 1), 0.5f, 0);
+        d.draw(Vector4(0, 1, 0, 1), DepthStencilState::Default, 0.75f);  // behind 0.5: rejected
+        d.draw(Vector4(0, 0, 1, 1), DepthStencilState::Default, 0.25f);
+        EXPECT_NE(cube.depthRenderbuffer(), 0u);
+        d.unbind();
+        const std::vector<Vector4> positiveX = cube.GetDataAsVector4(CubeMapFace::PositiveX);
+        const std::vector<Vector4> negativeY = cube.GetDataAsVector4(CubeMapFace::NegativeY);
+        for (std::size_t i = 0; i < positiveX.size(); ++i) {
+            EXPECT_TRUE(positiveX[i] == Vector4(1, 0, 0, 1)) << "+X texel " << i;
+            EXPECT_TRUE(negativeY[i] == Vector4(0, 0, 1, 1)) << "-Y texel " << i;
+        }
+    }
+}
+
 // The back buffer's depth buffer is lazy too: a 2D frame leaves it unmade, a depth-tested draw
 // makes it.
 TEST(LazyDepthStorage, BackBufferBufferMadeWhenFirstNeeded) {
