@@ -124,9 +124,9 @@ void BuildReport::addPasses(const GpuTimer& timer) {
 }
 
 void BuildReport::addClears(const GraphicsDevice& device) {
+    depthStorage = device.depthStorageStatistics();
     hasClears = true;
     clears = device.clearStatistics();
-    depthStorage = device.depthStorageStatistics();
 }
 
 namespace {
@@ -202,17 +202,19 @@ void PrintExplain(std::FILE* out, const BuildReport& built, const BuildReport& a
     std::fprintf(out, "%s\n", leftOut ? "" : " none");
 
     if (built.hasClears || all.hasClears) {
-        // Channel clears (colour, depth, stencil each count; SetRenderTargets' too) over every frame
-        // the device drew; executed + replaced + dropped = requested once nothing is pending.
-        std::fprintf(out, "clears (channel clears over the run's frames; PresentationParameters::DeferClears):\n");
-        printClears(out, "this scene", built);
-        if (&all != &built) printClears(out, "all-features", all);
         // Targets' and back buffers' depth/stencil buffers over the run: made at the first draw that
         // tested depth or stencil, never made for a target no draw tested them on.
         std::fprintf(out, "depth/stencil buffers (made when a draw first tests depth or stencil; "
                           "PresentationParameters::LazyDepthStorage):\n");
         printDepthStorage(out, "this scene", built);
         if (&all != &built) printDepthStorage(out, "all-features", all);
+    }
+    if (built.hasClears || all.hasClears) {
+        // Channel clears (colour, depth, stencil each count; SetRenderTargets' too) over every frame
+        // the device drew; executed + replaced + dropped = requested once nothing is pending.
+        std::fprintf(out, "clears (channel clears over the run's frames; PresentationParameters::DeferClears):\n");
+        printClears(out, "this scene", built);
+        if (&all != &built) printClears(out, "all-features", all);
     }
 }
 

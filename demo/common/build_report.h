@@ -34,10 +34,10 @@ struct BuildReport {
     std::vector<EffectEntry> effects;
     std::vector<TargetEntry> targets;
     std::vector<std::string> passes;  // GpuTimer sections that ran, in order ("frame" left out)
+    DepthStorageStatistics depthStorage;  // GraphicsDevice::depthStorageStatistics(), by addClears too
     // GraphicsDevice::clearStatistics() since the device was made (issue 16), once addClears ran.
     bool hasClears = false;
     ClearStatistics clears;
-    DepthStorageStatistics depthStorage;  // GraphicsDevice::depthStorageStatistics(), by addClears too
 
     std::int64_t targetBytes() const;
     double effectLoadMs() const;

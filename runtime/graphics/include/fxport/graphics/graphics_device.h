@@ -56,9 +56,6 @@ struct PresentationParameters {
     // fxport: GraphicsDevice::DiscardContents drops what it names (false, or
     // $FXPORT_HONOUR_DISCARDS=0: it does nothing, so every clear runs as written).
     bool HonourDiscards = true;
-    // fxport: a pending colour clear is dropped under a SpriteBatch sprite that provably writes every
-    // pixel of the target (ClearStatistics::covered); false (or $FXPORT_DROP_COVERED_CLEARS=0) keeps it.
-    bool DropCoveredClears = true;
     // fxport: a render target's depth/stencil buffer (the back buffer's too) is made at the first draw
     // into it that tests depth or stencil, so a target never drawn with depth takes no memory
     // (DepthStorageStatistics); leaving a DiscardContents target tells GL its depth/stencil is no
@@ -66,6 +63,9 @@ struct PresentationParameters {
     // reports the format asked for either way, and the pixels are the same; false (or
     // $FXPORT_LAZY_DEPTH=0) makes every buffer with its target.
     bool LazyDepthStorage = true;
+    // fxport: a pending colour clear is dropped under a SpriteBatch sprite that provably writes every
+    // pixel of the target (ClearStatistics::covered); false (or $FXPORT_DROP_COVERED_CLEARS=0) keeps it.
+    bool DropCoveredClears = true;
     std::string windowTitle;     // GLFW only
 };
 
@@ -115,16 +115,6 @@ struct GpuObjectCounts {
     int total() const { return textures + renderbuffers + buffers + programs + pipelines + framebuffers + vertexArrays + queries; }
 };
 
-// What the device did with the clears it was asked for (PresentationParameters::DeferClears).
-struct ClearStatistics {
-    long requested = 0;  // channel clears asked for (colour, depth, stencil each count; SetRenderTargets' too)
-    long executed = 0;   // channel clears sent to GL
-    long replaced = 0;   // pending channel clears overwritten by a later clear before any use
-    long dropped = 0;    // depth/stencil clears of a DiscardContents target left before any draw tested them
-    long discarded = 0;  // pending channel clears dropped by DiscardContents
-    long covered = 0;    // pending colour clears dropped under a SpriteBatch sprite that writes every pixel
-};
-
 // Depth/stencil buffers over the device's life (PresentationParameters::LazyDepthStorage): bytes
 // as drivers store them (Depth16 2 per pixel, Depth24 and Depth24Stencil8 4).
 struct DepthStorageStatistics {
@@ -134,6 +124,16 @@ struct DepthStorageStatistics {
     long invalidated = 0;              // depth/stencil contents given up on leaving a DiscardContents target
     long unallocated() const { return requested - allocated; }  // targets never drawn with depth or stencil
     std::int64_t savedBytes() const { return requestedBytes - allocatedBytes; }
+};
+
+// What the device did with the clears it was asked for (PresentationParameters::DeferClears).
+struct ClearStatistics {
+    long requested = 0;  // channel clears asked for (colour, depth, stencil each count; SetRenderTargets' too)
+    long executed = 0;   // channel clears sent to GL
+    long replaced = 0;   // pending channel clears overwritten by a later clear before any use
+    long dropped = 0;    // depth/stencil clears of a DiscardContents target left before any draw tested them
+    long discarded = 0;  // pending channel clears dropped by DiscardContents
+    long covered = 0;    // pending colour clears dropped under a SpriteBatch sprite that writes every pixel
 };
 
 class GraphicsDevice {
@@ -243,9 +243,9 @@ public:
     platform::GraphicsContext& context() { return *context_; }
     std::string rendererName() const;
     int maxTextureSize() const;
+    DepthStorageStatistics depthStorageStatistics() const;
     GpuObjectCounts liveGpuObjects() const;
     ClearStatistics clearStatistics() const;
-    DepthStorageStatistics depthStorageStatistics() const;
     // Waits until the GPU has finished everything submitted (for timing and tests).
     void finish();
     // fxport drives GL from one thread, and the device created last is the current one. With
