@@ -124,6 +124,7 @@ void BuildReport::addPasses(const GpuTimer& timer) {
 }
 
 void BuildReport::addClears(const GraphicsDevice& device) {
+    depthStorage = device.depthStorageStatistics();
     hasClears = true;
     clears = device.clearStatistics();
     computePasses = device.computePassStatistics();
@@ -136,6 +137,15 @@ void printClears(std::FILE* out, const char* label, const BuildReport& r) {
     std::fprintf(out, "  %-12s requested %6ld  executed %6ld  replaced %6ld  dropped %6ld  discarded %6ld  covered %6ld\n",
                  label, r.clears.requested, r.clears.executed, r.clears.replaced, r.clears.dropped, r.clears.discarded,
                  r.clears.covered);
+}
+
+void printDepthStorage(std::FILE* out, const char* label, const BuildReport& r) {
+    if (!r.hasClears) return;
+    const DepthStorageStatistics& d = r.depthStorage;
+    std::fprintf(out, "  %-12s asked for %3ld (%lld B)  allocated %3ld (%lld B)  never allocated %3ld (%lld B saved)  invalidated %ld\n",
+                 label, d.requested, static_cast<long long>(d.requestedBytes), d.allocated,
+                 static_cast<long long>(d.allocatedBytes), d.unallocated(), static_cast<long long>(d.savedBytes()),
+                 d.invalidated);
 }
 
 }  // namespace
@@ -192,6 +202,14 @@ void PrintExplain(std::FILE* out, const BuildReport& built, const BuildReport& a
     }
     std::fprintf(out, "%s\n", leftOut ? "" : " none");
 
+    if (built.hasClears || all.hasClears) {
+        // Targets' and back buffers' depth/stencil buffers over the run: made at the first draw that
+        // tested depth or stencil, never made for a target no draw tested them on.
+        std::fprintf(out, "depth/stencil buffers (made when a draw first tests depth or stencil; "
+                          "PresentationParameters::LazyDepthStorage):\n");
+        printDepthStorage(out, "this scene", built);
+        if (&all != &built) printDepthStorage(out, "all-features", all);
+    }
     if (built.hasClears || all.hasClears) {
         // Channel clears (colour, depth, stencil each count; SetRenderTargets' too) over every frame
         // the device drew; executed + replaced + dropped = requested once nothing is pending.

@@ -1,6 +1,6 @@
 # Issue 16: every demo renders the same PNGs with deferred clears and honoured DiscardContents (the
 # defaults) and with every clear executed at once (FXPORT_DEFER_CLEARS=0 FXPORT_HONOUR_DISCARDS=0
-# FXPORT_DROP_COVERED_CLEARS=0).
+# FXPORT_DROP_COVERED_CLEARS=0), every depth/stencil buffer made with its target (FXPORT_LAZY_DEPTH=0).
 # Run by ctest: cmake -DFXDEMO=... -DOUT=... -P this file.
 foreach(demo deferred pointlights lighting2d rastertek50)
   foreach(mode on off)
@@ -9,7 +9,7 @@ foreach(demo deferred pointlights lighting2d rastertek50)
       set(defer 0)
     endif()
     execute_process(COMMAND ${CMAKE_COMMAND} -E env FXPORT_DEFER_CLEARS=${defer} FXPORT_HONOUR_DISCARDS=${defer}
-                            FXPORT_DROP_COVERED_CLEARS=${defer}
+                            FXPORT_DROP_COVERED_CLEARS=${defer} FXPORT_LAZY_DEPTH=${defer}
                             ${FXDEMO} ${demo} --size 160x100 --frames 2 --out ${OUT}/${mode}/${demo}
                     RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
     if(NOT rc EQUAL 0)

@@ -192,6 +192,22 @@ struct GraphicsDevice::Impl {
     void leaveBoundTargets();                               // before SetRenderTargets changes them
     fxport::RenderTargetUsage boundUsage() const;           // of the bound targets (the first one's, or the back buffer's)
 
+    // --- depth/stencil storage made when a draw first needs it (depth_storage.cpp)
+    bool lazyDepthStorage = true;  // PresentationParameters::LazyDepthStorage and $FXPORT_LAZY_DEPTH
+    DepthStorageStatistics depthStats;
+    void adoptDepthStorage(DepthStorage& storage);    // a target made with it: counted; made now unless lazy
+    void releaseDepthStorage(DepthStorage& storage);  // the target is released
+    DepthStorage* boundDepthStorage();                // the first bound target's (XNA: MRT use its buffer)
+    // Before a draw: makes the bound depth/stencil buffer if the draw tests depth or stencil.
+    void makeDepthStorageFor(const fxport::DepthStencilState& state);
+    void makeDepthStorage(DepthStorage& storage);     // makes it, rebinds, runs its waiting clear
+    bool depthTestPassesAll(const fxport::DepthStencilState& state, const DepthStorage& storage) const;
+    // executeClear's depth/stencil bits for a bound buffer not made yet: a whole-target clear waits
+    // on the target (returned without those bits), a partial one makes the buffer first.
+    unsigned holdDepthClear(const Rectangle& rect, unsigned options, float depth, int stencil);
+    void discardWaitingDepthClear(unsigned options, long& counter);  // DiscardContents / leaving
+    void leaveDiscardedDepth();  // leaving a DiscardContents target: its depth/stencil is not kept
+
     // GL object bookkeeping: every create/delete goes through these so liveGpuObjects() is exact.
     GLuint createTexture(GLenum target);
     void deleteTexture(GLuint& name);

@@ -61,6 +61,7 @@ void GraphicsDevice::Impl::flush(const char* what) {
         throw InvalidOperation(std::string(what) +
                                ": no effect pass is applied (call effect.CurrentTechnique->Passes[i].Apply() first)");
     if (boundFramebuffer == 0) bindTargets();
+    makeDepthStorageFor(device.DepthStencilState);  // a buffer nothing needed until now (depth_storage.cpp)
     resolvePendingClearBeforeDraw(device.DepthStencilState);
     applyBlend(blendForPixelShader(device.BlendState, shaders[1]->shader->outputTargets));
     if (trackingBoundTargets && device.BlendState.blendingEnabled()) blendedSinceMark = true;

@@ -111,6 +111,8 @@ GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters)
     impl_->deferClears = parameters_.DeferClears && !(defer && std::string(defer) == "0");
     const char* discard = std::getenv("FXPORT_HONOUR_DISCARDS");
     impl_->honourDiscards = parameters_.HonourDiscards && !(discard && std::string(discard) == "0");
+    const char* lazyDepth = std::getenv("FXPORT_LAZY_DEPTH");
+    impl_->lazyDepthStorage = parameters_.LazyDepthStorage && !(lazyDepth && std::string(lazyDepth) == "0");
     const char* covered = std::getenv("FXPORT_DROP_COVERED_CLEARS");
     impl_->dropCoveredClears = parameters_.DropCoveredClears && !(covered && std::string(covered) == "0");
     // Off by default, so the environment can turn it on as well as off.

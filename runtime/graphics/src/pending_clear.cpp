@@ -4,7 +4,8 @@
 // stencil) and sends it when a draw or a read-back needs that channel, so a clear replaced by the
 // next one, and a depth/stencil clear of a target nothing draws into with depth, cost nothing. The
 // pixels are the same as executing every clear at once (PresentationParameters::DeferClears=false
-// does that; tests compare the two).
+// does that; tests compare the two). A depth/stencil buffer that no draw has needed yet does not
+// exist (LazyDepthStorage): a clear of it waits on its target instead (depth_storage.cpp).
 #include <algorithm>
 #include <vector>
 
@@ -25,6 +26,8 @@ void GraphicsDevice::Impl::executeClear(const Rectangle& rect, unsigned options,
                                         int stencil) {
     if (options == 0) return;
     if (boundFramebuffer == 0) bindTargets();
+    options = holdDepthClear(rect, options, depth, stencil);  // a depth buffer not made yet (depth_storage.cpp)
+    if (options == 0) return;
     clearStats.executed += channels(options);
     glEnable(GL_SCISSOR_TEST);
     glScissor(rect.X, rect.Y, rect.Width, rect.Height);
@@ -102,6 +105,7 @@ void GraphicsDevice::Impl::discardContents(unsigned options) {
     const unsigned dropped = pendingClear.options & options;
     clearStats.discarded += channels(dropped);
     pendingClear.options &= ~dropped;
+    discardWaitingDepthClear(options, clearStats.discarded);
     if (boundFramebuffer == 0) bindTargets();
     std::vector<GLenum> attachments;
     if (options & kColor)
@@ -147,15 +151,15 @@ void GraphicsDevice::Impl::dropColorClearUnderCoveringSprite(const ShaderProgram
 
 void GraphicsDevice::Impl::leaveBoundTargets() {
     resolvePendingClear(kColor);  // a render target is read as a texture after it is unbound
-    if (pendingClear.options == 0) return;
-    if (boundUsage() == fxport::RenderTargetUsage::DiscardContents) {
-        // Nothing tested this depth/stencil buffer since the clear, nothing can read it, and binding
-        // the target again clears it again.
-        clearStats.dropped += channels(pendingClear.options);
-        pendingClear.options = 0;
+    if (boundUsage() != fxport::RenderTargetUsage::DiscardContents) {
+        resolvePendingClear(~0u);
         return;
     }
-    resolvePendingClear(~0u);
+    // Nothing tested this depth/stencil buffer since the clear, nothing can read it, and binding
+    // the target again clears it again.
+    clearStats.dropped += channels(pendingClear.options);
+    pendingClear.options = 0;
+    leaveDiscardedDepth();
 }
 
 }  // namespace fxport

@@ -16,11 +16,12 @@ void checkRenderable(const std::string& who, SurfaceFormat format) {
                             " cannot be rendered to on OpenGL 4.5 core");
 }
 
-GLuint makeDepth(GraphicsDevice& device, DepthFormat format, int width, int height) {
-    if (format == DepthFormat::None) return 0;
-    GLuint rb = device.impl().createRenderbuffer();
-    glNamedRenderbufferStorage(rb, detail::glDepthFormat(format), width, height);
-    return rb;
+// The depth/stencil buffer is made now, or at the first draw that needs it (depth_storage.cpp).
+void adoptDepth(GraphicsDevice& device, DepthStorage& storage, DepthFormat format, int width, int height) {
+    storage.format = format;
+    storage.width = width;
+    storage.height = height;
+    device.impl().adoptDepthStorage(storage);
 }
 
 // Unbinds the target from the device's current render targets (back to the back buffer) when it
@@ -41,16 +42,16 @@ RenderTarget2D::RenderTarget2D(fxport::GraphicsDevice& device, int width, int he
                                SurfaceFormat preferredFormat, DepthFormat preferredDepthFormat, int,
                                fxport::RenderTargetUsage usage)
     : Texture2D(device, "RenderTarget2D", width, height, mipMap, preferredFormat),
-      depthFormat_(preferredDepthFormat), usage_(usage) {
+      usage_(usage) {
     checkRenderable(describe(), preferredFormat);
-    depth_ = makeDepth(device, preferredDepthFormat, width, height);
+    adoptDepth(device, depth_, preferredDepthFormat, width, height);
 }
 
 RenderTarget2D::~RenderTarget2D() { disposeFromDestructor(); }
 
 void RenderTarget2D::releaseGpuObjects() {
     unbindIfTarget(device(), this);
-    device().impl().deleteRenderbuffer(depth_);
+    device().impl().releaseDepthStorage(depth_);
     Texture2D::releaseGpuObjects();
 }
 
@@ -67,16 +68,16 @@ RenderTargetCube::RenderTargetCube(fxport::GraphicsDevice& device, int size, boo
                                    SurfaceFormat preferredFormat, DepthFormat preferredDepthFormat, int,
                                    fxport::RenderTargetUsage usage)
     : TextureCube(device, "RenderTargetCube", size, mipMap, preferredFormat),
-      depthFormat_(preferredDepthFormat), usage_(usage) {
+      usage_(usage) {
     checkRenderable(describe(), preferredFormat);
-    depth_ = makeDepth(device, preferredDepthFormat, size, size);
+    adoptDepth(device, depth_, preferredDepthFormat, size, size);
 }
 
 RenderTargetCube::~RenderTargetCube() { disposeFromDestructor(); }
 
 void RenderTargetCube::releaseGpuObjects() {
     unbindIfTarget(device(), this);
-    device().impl().deleteRenderbuffer(depth_);
+    device().impl().releaseDepthStorage(depth_);
     TextureCube::releaseGpuObjects();
 }
 

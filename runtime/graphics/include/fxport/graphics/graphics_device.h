@@ -57,6 +57,13 @@ struct PresentationParameters {
     // fxport: GraphicsDevice::DiscardContents drops what it names (false, or
     // $FXPORT_HONOUR_DISCARDS=0: it does nothing, so every clear runs as written).
     bool HonourDiscards = true;
+    // fxport: a render target's depth/stencil buffer (the back buffer's too) is made at the first draw
+    // into it that tests depth or stencil, so a target never drawn with depth takes no memory
+    // (DepthStorageStatistics); leaving a DiscardContents target tells GL its depth/stencil is no
+    // longer needed (glInvalidateFramebuffer: XNA clears them at its next binding). DepthStencilFormat
+    // reports the format asked for either way, and the pixels are the same; false (or
+    // $FXPORT_LAZY_DEPTH=0) makes every buffer with its target.
+    bool LazyDepthStorage = true;
     // fxport: a pending colour clear is dropped under a SpriteBatch sprite that provably writes every
     // pixel of the target (ClearStatistics::covered); false (or $FXPORT_DROP_COVERED_CLEARS=0) keeps it.
     bool DropCoveredClears = true;
@@ -113,6 +120,17 @@ struct GpuObjectCounts {
     int textures = 0, renderbuffers = 0, buffers = 0, programs = 0, pipelines = 0, framebuffers = 0,
         vertexArrays = 0, queries = 0;
     int total() const { return textures + renderbuffers + buffers + programs + pipelines + framebuffers + vertexArrays + queries; }
+};
+
+// Depth/stencil buffers over the device's life (PresentationParameters::LazyDepthStorage): bytes
+// as drivers store them (Depth16 2 per pixel, Depth24 and Depth24Stencil8 4).
+struct DepthStorageStatistics {
+    long requested = 0;                // render targets and back buffers made with a DepthFormat
+    long allocated = 0;                // their buffers made in GL (at a draw that needed one, or at once)
+    std::int64_t requestedBytes = 0, allocatedBytes = 0;
+    long invalidated = 0;              // depth/stencil contents given up on leaving a DiscardContents target
+    long unallocated() const { return requested - allocated; }  // targets never drawn with depth or stencil
+    std::int64_t savedBytes() const { return requestedBytes - allocatedBytes; }
 };
 
 // What the device did with the clears it was asked for (PresentationParameters::DeferClears).
@@ -239,6 +257,7 @@ public:
     platform::GraphicsContext& context() { return *context_; }
     std::string rendererName() const;
     int maxTextureSize() const;
+    DepthStorageStatistics depthStorageStatistics() const;
     GpuObjectCounts liveGpuObjects() const;
     ClearStatistics clearStatistics() const;
     ComputePassStatistics computePassStatistics() const;

@@ -9,6 +9,19 @@
 
 namespace fxport {
 
+// fxport, for the device (runtime/graphics/src/depth_storage.cpp), not for games: a target's
+// depth/stencil buffer. With PresentationParameters::LazyDepthStorage it is made at the first draw
+// into the target that tests depth or stencil; until then the target's last whole-target clear of
+// each channel waits here, and runs on the buffer when it is made.
+struct DepthStorage {
+    DepthFormat format = DepthFormat::None;  // what the target was made with (reported as made)
+    int width = 0, height = 0;
+    std::uint32_t renderbuffer = 0;  // the GL buffer; 0 while not made (or format None)
+    unsigned waitingClear = 0;       // ClearOptions::DepthBuffer / Stencil bits to run when it is made
+    float clearDepth = 1;
+    int clearStencil = 0;
+};
+
 class RenderTarget2D : public Texture2D {
 public:
     RenderTarget2D(fxport::GraphicsDevice& device, int width, int height, bool mipMap = false,
@@ -17,11 +30,13 @@ public:
                    fxport::RenderTargetUsage usage = fxport::RenderTargetUsage::DiscardContents);
     ~RenderTarget2D() override;
 
-    DepthFormat DepthStencilFormat() const { return depthFormat_; }
+    DepthFormat DepthStencilFormat() const { return depth_.format; }
     fxport::RenderTargetUsage RenderTargetUsage() const { return usage_; }
     int MultiSampleCount() const { return 0; }  // multisampling is not implemented; 0 as XNA reports
     bool isRenderTarget() const override { return true; }
-    std::uint32_t depthRenderbuffer() const { return depth_; }
+    // The depth/stencil buffer's GL name: 0 until a draw needs it (LazyDepthStorage) or for None.
+    std::uint32_t depthRenderbuffer() const { return depth_.renderbuffer; }
+    DepthStorage& depthStorage() { return depth_; }
     // fxport: level 0 as RGBA floats, top row first, whatever the format (GL's conversion: unorm to
     // [0,1], half to float, absent channels as GL fills them: 0, 0, 1). For checks and references.
     std::vector<Vector4> GetDataAsVector4() const;
@@ -30,9 +45,8 @@ protected:
     void releaseGpuObjects() override;
 
 private:
-    DepthFormat depthFormat_;
     fxport::RenderTargetUsage usage_;
-    std::uint32_t depth_ = 0;
+    DepthStorage depth_;
 };
 
 class RenderTargetCube : public TextureCube {
@@ -43,10 +57,12 @@ public:
                      fxport::RenderTargetUsage usage = fxport::RenderTargetUsage::DiscardContents);
     ~RenderTargetCube() override;
 
-    DepthFormat DepthStencilFormat() const { return depthFormat_; }
+    DepthFormat DepthStencilFormat() const { return depth_.format; }
     fxport::RenderTargetUsage RenderTargetUsage() const { return usage_; }
     bool isRenderTarget() const override { return true; }
-    std::uint32_t depthRenderbuffer() const { return depth_; }
+    // The depth/stencil buffer's GL name: 0 until a draw needs it (LazyDepthStorage) or for None.
+    std::uint32_t depthRenderbuffer() const { return depth_.renderbuffer; }
+    DepthStorage& depthStorage() { return depth_; }
     // fxport: level 0 of one face as RGBA floats (as RenderTarget2D::GetDataAsVector4).
     std::vector<Vector4> GetDataAsVector4(CubeMapFace face) const;
 
@@ -54,9 +70,8 @@ protected:
     void releaseGpuObjects() override;
 
 private:
-    DepthFormat depthFormat_;
     fxport::RenderTargetUsage usage_;
-    std::uint32_t depth_ = 0;
+    DepthStorage depth_;
 };
 
 // One entry of SetRenderTargets: a 2D target, or one face of a cube target.
