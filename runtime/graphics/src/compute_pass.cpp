@@ -79,10 +79,19 @@ GLuint linkProgram(GLenum stage, const std::string& source, const std::vector<st
     glCompileShader(shader);
     GLint ok = 0;
     glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    // The line that says what is wrong: NVIDIA's log opens with "Compute info", a rule and warnings.
     auto firstLine = [](std::string log) {
         log.resize(std::strlen(log.c_str()));
-        std::size_t nl = log.find('\n');
-        return nl == std::string::npos ? log : log.substr(0, nl);
+        std::string first;
+        for (std::size_t begin = 0; begin < log.size();) {
+            std::size_t end = log.find('\n', begin);
+            if (end == std::string::npos) end = log.size();
+            std::string line = log.substr(begin, end - begin);
+            if (line.find("error") != std::string::npos) return line;
+            if (first.empty() && line.find_first_not_of(" -\t") != std::string::npos) first = line;
+            begin = end + 1;
+        }
+        return first;
     };
     if (!ok) {
         std::string log(4096, '\0');
@@ -108,6 +117,8 @@ GLuint linkProgram(GLenum stage, const std::string& source, const std::vector<st
         glGetProgramInfoLog(program, GLsizei(log.size()), nullptr, log.data());
         glDeleteProgram(program);
         error = "does not link: " + firstLine(log);
+        if (std::getenv("FXPORT_COMPUTE_PASSES_DEBUG")) std::fprintf(stderr, "%s\n%s\n", log.c_str(), source.c_str());
+        if (std::getenv("FXPORT_COMPUTE_PASSES_DEBUG")) std::fprintf(stderr, "%s\n%s\n", log.c_str(), source.c_str());
         return 0;
     }
     // The uniform blocks keep the binding points the device gives this stage (device_impl.h).

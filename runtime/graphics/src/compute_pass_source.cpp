@@ -244,8 +244,11 @@ std::string computeShaderSource(const PixelFunction& pixel, const std::vector<Gl
         s << "    vec4 fxport_dst" << t << (load ? " = imageLoad(fxport_target" + std::to_string(t) + ", pixel)" : " = vec4(0.0)")
           << ";\n";
     }
+    // Per-vertex values are arrays indexed by k, never vector components: NVIDIA's 580 driver
+    // fails to link a write of a dvec3 component at a dynamic index (C9999, "can't find
+    // __setVectorIndex function in stdlib"; H100 run of 2026-11-25).
     s << "    for (int t = 0; t < fxport_triangles; ++t) {\n"
-         "        vec4 c[3]; vec3 ndc[3]; dvec2 s[3]; vec3 zw;\n"
+         "        vec4 c[3]; vec3 ndc[3]; dvec2 s[3]; float zw[3];\n"
          "        bool behind = false, zInside = true;\n"
          "        for (int k = 0; k < 3; ++k) {\n"
          "            c[k] = fxport_read(t * 3 + k, 0);\n"
@@ -263,7 +266,7 @@ std::string computeShaderSource(const PixelFunction& pixel, const std::vector<Gl
          // area > 0: clockwise as seen (y down), XNA's front face.
          "        if (area == 0.0LF || (fxport_cull == 1 && area < 0.0LF) || (fxport_cull == 2 && area > 0.0LF)) continue;\n"
          "        double orient = area > 0.0LF ? 1.0LF : -1.0LF;\n"
-         "        dvec3 e; bool inside = true;\n"
+         "        double e[3]; bool inside = true;\n"
          "        for (int k = 0; k < 3; ++k) {\n"
          "            dvec2 a = s[(k + 1) % 3], b = s[(k + 2) % 3];\n"
          "            e[k] = ((b.x - a.x) * (centre.y - a.y) - (b.y - a.y) * (centre.x - a.x)) * orient;\n"
@@ -273,13 +276,13 @@ std::string computeShaderSource(const PixelFunction& pixel, const std::vector<Gl
          "            inside = inside && (e[k] > 0.0LF || (e[k] == 0.0LF && topLeft));\n"
          "        }\n"
          "        if (!inside) continue;\n"
-         "        vec3 l = vec3(e * orient / area);\n"
+         "        vec3 l = vec3(dvec3(e[0], e[1], e[2]) * orient / area);\n"
          "        float ndcZ = dot(l, vec3(ndc[0].z, ndc[1].z, ndc[2].z));\n"
          "        if (!zInside && (ndcZ < 0.0 || ndcZ > 1.0)) continue;\n"
          "        vec3 pw = l / vec3(c[0].w, c[1].w, c[2].w);\n"
          "        float invW = pw.x + pw.y + pw.z;\n"
          "        vec3 p = pw / invW;\n"
-         "        fxport_FragCoord = vec4(vec2(pixel) + 0.5, dot(l, zw), invW);\n";
+         "        fxport_FragCoord = vec4(vec2(pixel) + 0.5, dot(l, vec3(zw[0], zw[1], zw[2])), invW);\n";
     for (const GlslVarying& in : pixel.inputs) {
         int offset = 4;
         const GlslVarying* source = nullptr;
