@@ -193,6 +193,25 @@ TEST(ComputePasses, ScissorClipsTheDispatch) {
              kColorTolerance * 0.6, 1);
 }
 
+// A quad over part of the target (a sprite): the bounds step dispatches only over its rectangle;
+// the pixels around it keep the clear. Window x 6..15, y 3..9 of 24x12: no centre on an edge.
+TEST(ComputePasses, PartialQuadLeavesTheRestOfTheTarget) {
+    auto corner = [](float x, float y) { return VertexPositionTexture(Vector3(x, y, 0), Vector2((x + 1) / 2, (1 - y) / 2)); };
+    const VertexPositionTexture tl = corner(-0.5f, 0.5f), tr = corner(0.25f, 0.5f), bl = corner(-0.5f, -0.5f), br = corner(0.25f, -0.5f);
+    const VertexPositionTexture quad[6] = {tl, tr, bl, bl, tr, br};
+    bothWays("partial quad", SurfaceFormat::Color, kW, kH,
+             [&](Device& d) {
+                 d.apply("Pattern");
+                 d.device->DrawUserPrimitives(PrimitiveType::TriangleList, quad, 0, 2);
+             },
+             [&](int x, int y) {
+                 double u, v;
+                 uvAt(x, y, Viewport(0, 0, kW, kH), false, u, v);
+                 return clearOr(x >= 6 && x < 15 && y >= 3 && y < 9, pattern(u, v));
+             },
+             kColorTolerance * 0.6, 1);
+}
+
 TEST(ComputePasses, SmallerViewport) {
     const Viewport vp(4, 2, 11, 7);
     bothWays("smaller viewport", SurfaceFormat::Color, kW, kH,

@@ -144,6 +144,8 @@ ComputePasses::~ComputePasses() {
     for (auto& [key, dispatcher] : computePrograms)
         if (dispatcher.program) glDeleteProgram(dispatcher.program);
     if (captureBuffer) glDeleteBuffers(1, &captureBuffer);
+    if (bounds.program) glDeleteProgram(bounds.program);
+    if (bounds.buffer) glDeleteBuffers(1, &bounds.buffer);
 }
 
 void ComputePasses::forget(const ComputeAnalysis& analysis) {
@@ -310,6 +312,22 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const std::f
         x0 = std::max(x0, s.X), y0 = std::max(y0, s.Y);
         x1 = std::min(x1, s.X + s.Width), y1 = std::min(y1, s.Y + s.Height);
     }
+    if (!bounds.program && !bounds.failed) {
+        std::string error;
+        bounds.program = linkProgram(GL_COMPUTE_SHADER, detail::boundsShaderSource(), {}, error);
+        bounds.failed = bounds.program == 0;
+        if (bounds.failed) {
+            failures["bounds"] = "bounds shader " + error;
+        } else {
+            bounds.rect = glGetUniformLocation(bounds.program, "fxport_rect");
+            bounds.viewport = glGetUniformLocation(bounds.program, "fxport_viewport");
+            bounds.vertices = glGetUniformLocation(bounds.program, "fxport_vertices");
+            bounds.stride = glGetUniformLocation(bounds.program, "fxport_stride");
+            glCreateBuffers(1, &bounds.buffer);
+            glNamedBufferStorage(bounds.buffer, 32, nullptr, 0);
+        }
+    }
+    if (bounds.failed) return fallBack(failures["bounds"]);
     ++statistics.dispatched;
     if (printOutcomes) std::fprintf(stderr, "compute pass: %s dispatched\n", pixel->label.c_str());
     if (x1 <= x0 || y1 <= y0) return true;
@@ -332,9 +350,22 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const std::f
     glEndTransformFeedback();
     glDisable(GL_RASTERIZER_DISCARD);
 
+    const GLint rect[4] = {x0, y0, x1, y1};
+    const GLfloat view[4] = {float(viewport.X), float(viewport.Y), float(viewport.Width), float(viewport.Height)};
+
+    // Bounds: the groups of a dispatch over the captured triangles' rectangle, on the GPU (no read-back).
+    glUseProgram(bounds.program);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, detail::kCaptureBinding, captureBuffer);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, detail::kDispatchBinding, bounds.buffer);
+    glProgramUniform4iv(bounds.program, bounds.rect, 1, rect);
+    glProgramUniform4fv(bounds.program, bounds.viewport, 1, view);
+    glProgramUniform1i(bounds.program, bounds.vertices, primitiveCount * 3);
+    glProgramUniform1i(bounds.program, bounds.stride, floatsPerVertex);
+    glDispatchCompute(1, 1, 1);
+    glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+
     // Pixel stage.
     glUseProgram(program);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, detail::kCaptureBinding, captureBuffer);
     for (std::size_t i = 0; i < bindings.size(); ++i) {
         if (targets[i].writeMask == 0) continue;
         const Texture* t = bindings[i].RenderTarget;
@@ -342,8 +373,6 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const std::f
         glBindImageTexture(GLuint(i), t->glName(), 0, GL_FALSE, cube ? GLint(bindings[i].CubeMapFace) : 0, GL_READ_WRITE,
                            detail::glFormat(t->Format()).internalFormat);
     }
-    const GLint rect[4] = {x0, y0, x1, y1};
-    const GLfloat view[4] = {float(viewport.X), float(viewport.Y), float(viewport.Width), float(viewport.Height)};
     const GLfloat range[2] = {viewport.MinDepth, viewport.MaxDepth};
     glProgramUniform4iv(program, dispatcher.rect, 1, rect);
     glProgramUniform4fv(program, dispatcher.viewport, 1, view);
@@ -351,7 +380,9 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const std::f
     glProgramUniform1i(program, dispatcher.triangles, primitiveCount);
     const int cull = raster.CullMode == CullMode::None ? 0 : raster.CullMode == CullMode::CullCounterClockwiseFace ? 1 : 2;
     glProgramUniform1i(program, dispatcher.cull, cull);
-    glDispatchCompute(GLuint((x1 - x0 + 7) / 8), GLuint((y1 - y0 + 7) / 8), 1);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, bounds.buffer);
+    glDispatchComputeIndirect(0);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
     // Later draws, texture fetches, read-backs and dispatches see the stores.
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                     GL_TEXTURE_UPDATE_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT);

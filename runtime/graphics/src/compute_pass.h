@@ -55,6 +55,12 @@ private:
     std::map<std::string, std::string> failures;        // why a capture or compute program could not be made
     GLuint captureBuffer = 0;
     GLsizeiptr captureBytes = 0;
+    // The bounds step (detail::boundsShaderSource) and the buffer it writes: made at the first dispatch.
+    struct Bounds {
+        GLuint program = 0, buffer = 0;
+        GLint rect = -1, viewport = -1, vertices = -1, stride = -1;
+        bool failed = false;
+    } bounds;
 };
 
 }  // namespace fxport

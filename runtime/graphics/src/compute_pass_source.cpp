@@ -202,6 +202,46 @@ PixelFunction pixelFunctionFromShader(const std::string& glsl) {
     return result;
 }
 
+std::string boundsShaderSource() {
+    std::ostringstream s;
+    s << "#version 450\n"
+         "layout(local_size_x = 1) in;\n"
+      << "layout(std430, binding = " << kCaptureBinding << ") readonly buffer fxport_Capture { float fxport_captured[]; };\n"
+      << "layout(std430, binding = " << kDispatchBinding << ") writeonly buffer fxport_Dispatch { uint fxport_groups[3]; int fxport_origin[2]; };\n"
+         "uniform ivec4 fxport_rect;\n"
+         "uniform vec4 fxport_viewport;\n"
+         "uniform int fxport_vertices;\n"
+         "uniform int fxport_stride;\n"
+         "void main() {\n"
+         "    vec2 lo = vec2(fxport_rect.zw), hi = vec2(fxport_rect.xy);\n"
+         "    bool bounded = true;\n"
+         "    for (int v = 0; v < fxport_vertices; ++v) {\n"
+         "        int b = v * fxport_stride;\n"
+         "        vec4 c = vec4(fxport_captured[b], fxport_captured[b + 1], fxport_captured[b + 2], fxport_captured[b + 3]);\n"
+         // Behind the eye or not finite: no rectangle from the projection; the whole one is safe.
+         "        vec2 ndc = c.xy / c.w;\n"
+         "        vec2 window = vec2(fxport_viewport.x + fxport_viewport.z * 0.5 * (ndc.x + 1.0),\n"
+         "                           fxport_viewport.y + fxport_viewport.w * 0.5 * (1.0 - ndc.y));\n"
+         "        if (!(c.w > 0.0) || any(isnan(window)) || any(isinf(window))) bounded = false;\n"
+         "        lo = min(lo, window);\n"
+         "        hi = max(hi, window);\n"
+         "    }\n"
+         "    ivec2 a = fxport_rect.xy, z = fxport_rect.zw;\n"
+         // A pixel is drawn only if its centre is inside: one pixel of margin each way is plenty.
+         "    if (bounded) {\n"
+         "        a = ivec2(clamp(floor(lo) - 1.0, vec2(fxport_rect.xy), vec2(fxport_rect.zw)));\n"
+         "        z = ivec2(clamp(ceil(hi) + 1.0, vec2(fxport_rect.xy), vec2(fxport_rect.zw)));\n"
+         "    }\n"
+         "    ivec2 size = max(z - a, ivec2(0));\n"
+         "    fxport_groups[0] = uint((size.x + 7) / 8);\n"
+         "    fxport_groups[1] = uint((size.y + 7) / 8);\n"
+         "    fxport_groups[2] = 1u;\n"
+         "    fxport_origin[0] = a.x;\n"
+         "    fxport_origin[1] = a.y;\n"
+         "}\n";
+    return s.str();
+}
+
 int capturedFloatsPerVertex(const std::vector<GlslVarying>& captured) {
     int floats = 4;
     for (const GlslVarying& v : captured) floats += v.components;
@@ -217,7 +257,8 @@ std::string computeShaderSource(const PixelFunction& pixel, const std::vector<Gl
          "vec4 fxport_FragCoord;\n"
          "bool fxport_discarded;\n"
       << pixel.text << "\n"
-      << "layout(std430, binding = " << kCaptureBinding << ") readonly buffer fxport_Capture { float fxport_captured[]; };\n";
+      << "layout(std430, binding = " << kCaptureBinding << ") readonly buffer fxport_Capture { float fxport_captured[]; };\n"
+      << "layout(std430, binding = " << kDispatchBinding << ") readonly buffer fxport_Dispatch { uint fxport_groups[3]; int fxport_origin[2]; };\n";
     for (std::size_t t = 0; t < targets.size(); ++t)
         if (targets[t].writeMask != 0)
             s << "layout(binding = " << t << ", " << targets[t].imageFormat << ") uniform image2D fxport_target" << t << ";\n";
@@ -232,7 +273,7 @@ std::string computeShaderSource(const PixelFunction& pixel, const std::vector<Gl
          "}\n"
          "float fxport_component(int vertex, int offset) { return fxport_captured[vertex * " << stride << " + offset]; }\n"
          "void main() {\n"
-         "    ivec2 pixel = fxport_rect.xy + ivec2(gl_GlobalInvocationID.xy);\n"
+         "    ivec2 pixel = ivec2(fxport_origin[0], fxport_origin[1]) + ivec2(gl_GlobalInvocationID.xy);\n"
          "    if (pixel.x >= fxport_rect.z || pixel.y >= fxport_rect.w) return;\n"
          // The rasteriser's grid: window coordinates in 1/256 pixel, exact in double.
          "    dvec2 centre = dvec2(pixel) * 256.0LF + 128.0LF;\n"

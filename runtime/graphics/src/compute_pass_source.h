@@ -56,6 +56,14 @@ struct ComputeTarget {
 
 // Image unit of target i, and the shader-storage binding of the captured vertices.
 inline constexpr int kCaptureBinding = 7;
+// Shader-storage binding of the dispatch's size and origin: the bounds step writes it, the
+// indirect dispatch reads its first three words, the pixel step its origin.
+inline constexpr int kDispatchBinding = 6;
+
+// The bounds step: one invocation that reads the captured triangles' clip positions and writes
+// the groups of a dispatch over their window rectangle, clipped to fxport_rect (a small sprite costs
+// its own pixels, not the whole target's).
+std::string boundsShaderSource();
 
 // Floats per captured vertex: gl_Position, then each of `captured` tightly packed.
 int capturedFloatsPerVertex(const std::vector<GlslVarying>& captured);
