@@ -72,7 +72,8 @@ bool blendOpOf(BlendFunction function, Blend source, Blend destination, bool ful
 }
 
 // Compiles and links one stage; 0 and the log's first line on failure.
-GLuint linkProgram(GLenum stage, const std::string& source, const std::vector<std::string>& captured, std::string& error) {
+GLuint linkProgram(GLenum stage, const std::string& source, const std::vector<std::string>& captured, bool printLog,
+                   std::string& error) {
     GLuint shader = glCreateShader(stage);
     const char* text = source.c_str();
     glShaderSource(shader, 1, &text, nullptr);
@@ -98,7 +99,7 @@ GLuint linkProgram(GLenum stage, const std::string& source, const std::vector<st
         glGetShaderInfoLog(shader, GLsizei(log.size()), nullptr, log.data());
         glDeleteShader(shader);
         error = "does not compile: " + firstLine(log);
-        if (std::getenv("FXPORT_COMPUTE_PASSES_DEBUG")) std::fprintf(stderr, "%s\n%s\n", log.c_str(), source.c_str());
+        if (printLog) std::fprintf(stderr, "%s\n%s\n", log.c_str(), source.c_str());
         return 0;
     }
     GLuint program = glCreateProgram();
@@ -117,19 +118,12 @@ GLuint linkProgram(GLenum stage, const std::string& source, const std::vector<st
         glGetProgramInfoLog(program, GLsizei(log.size()), nullptr, log.data());
         glDeleteProgram(program);
         error = "does not link: " + firstLine(log);
-        if (std::getenv("FXPORT_COMPUTE_PASSES_DEBUG")) std::fprintf(stderr, "%s\n%s\n", log.c_str(), source.c_str());
-        if (std::getenv("FXPORT_COMPUTE_PASSES_DEBUG")) std::fprintf(stderr, "%s\n%s\n", log.c_str(), source.c_str());
+        if (printLog) std::fprintf(stderr, "%s\n%s\n", log.c_str(), source.c_str());
         return 0;
     }
-    // The uniform blocks keep the binding points the device gives this stage (device_impl.h).
-    const int stageIndex = stage == GL_VERTEX_SHADER ? 0 : 1;
-    GLint blockCount = 0;
-    glGetProgramiv(program, GL_ACTIVE_UNIFORM_BLOCKS, &blockCount);
-    for (GLint i = 0; i < blockCount; ++i) {
-        GLint binding = 0;
-        glGetActiveUniformBlockiv(program, GLuint(i), GL_UNIFORM_BLOCK_BINDING, &binding);
-        glUniformBlockBinding(program, GLuint(i), GLuint(uniformBindingFor(stageIndex, binding)));
-    }
+    // The uniform blocks keep the binding points the device gives this stage (the compute program
+    // stands in for the pixel stage).
+    moveUniformBlocksToStage(program, stage == GL_VERTEX_SHADER ? 0 : 1);
     return program;
 }
 
@@ -197,7 +191,7 @@ GLuint ComputePasses::captureProgram(const ShaderProgram& vertex, const ComputeA
         std::vector<std::string> captured{"gl_Position"};
         for (const detail::GlslVarying& v : analysis.vertex.varyings) captured.push_back(v.name);
         std::string error;
-        GLuint program = linkProgram(GL_VERTEX_SHADER, vertex.shader->glsl, captured, error);
+        GLuint program = linkProgram(GL_VERTEX_SHADER, vertex.shader->glsl, captured, printOutcomes, error);
         it = captureProgramsBySerial.emplace(analysis.serial, program).first;
         if (!program) failures["capture/" + std::to_string(analysis.serial)] = "vertex capture " + error;
     }
@@ -285,7 +279,7 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const std::f
         std::string source = detail::computeShaderSource(pixelAnalysis.pixel, vertexAnalysis.vertex.varyings, targets, refusal);
         Dispatcher made;
         if (!source.empty()) {
-            made.program = linkProgram(GL_COMPUTE_SHADER, source, {}, refusal);
+            made.program = linkProgram(GL_COMPUTE_SHADER, source, {}, printOutcomes, refusal);
             if (!made.program) refusal = "compute shader " + refusal;
         }
         if (made.program) {
@@ -314,7 +308,7 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const std::f
     }
     if (!bounds.program && !bounds.failed) {
         std::string error;
-        bounds.program = linkProgram(GL_COMPUTE_SHADER, detail::boundsShaderSource(), {}, error);
+        bounds.program = linkProgram(GL_COMPUTE_SHADER, detail::boundsShaderSource(), {}, printOutcomes, error);
         bounds.failed = bounds.program == 0;
         if (bounds.failed) {
             failures["bounds"] = "bounds shader " + error;

@@ -33,6 +33,9 @@ struct ComputePasses;
 inline constexpr int kUniformBindingsPerStage = 8;
 inline constexpr int kStageCount = 3;  // vertex, pixel, geometry
 inline int uniformBindingFor(int stage, int hlslBinding) { return stage * kUniformBindingsPerStage + hlslBinding; }
+// Moves each uniform block of a linked program from its HLSL binding b to `stage`'s range; once,
+// when the program is made (graphics_device.cpp; compute passes' programs use it too).
+void moveUniformBlocksToStage(GLuint program, int stage);
 inline constexpr int kInternalBlockBinding = 1;
 
 // A compiled shader made into a separable GL program, as the device needs it at draw time.

@@ -606,20 +606,22 @@ GLuint GraphicsDevice::Impl::createProgram(GLenum stage, const std::string& sour
         glDeleteProgram(program);
         throw InvalidOperation(label + ": the GL driver rejected the translated shader:\n" + log);
     }
-    // D3D has constant slots per stage: move each block from its HLSL binding b to this stage's
-    // range (device_impl.h), once, when the program is made.
-    const int stageIndex = stage == GL_VERTEX_SHADER ? 0 : stage == GL_FRAGMENT_SHADER ? 1 : 2;
+    // D3D has constant slots per stage: each block moves to this stage's range (device_impl.h).
+    moveUniformBlocksToStage(program, stage == GL_VERTEX_SHADER ? 0 : stage == GL_FRAGMENT_SHADER ? 1 : 2);
+    ++live.programs;
+    programCache.emplace(std::make_pair(stage, source), CachedProgram{program, 1});
+    return program;
+}
+void moveUniformBlocksToStage(GLuint program, int stage) {
     GLint blockCount = 0;
     glGetProgramiv(program, GL_ACTIVE_UNIFORM_BLOCKS, &blockCount);
     for (GLint i = 0; i < blockCount; ++i) {
         GLint binding = 0;
         glGetActiveUniformBlockiv(program, GLuint(i), GL_UNIFORM_BLOCK_BINDING, &binding);
-        glUniformBlockBinding(program, GLuint(i), GLuint(uniformBindingFor(stageIndex, binding)));
+        glUniformBlockBinding(program, GLuint(i), GLuint(uniformBindingFor(stage, binding)));
     }
-    ++live.programs;
-    programCache.emplace(std::make_pair(stage, source), CachedProgram{program, 1});
-    return program;
 }
+
 void GraphicsDevice::Impl::deleteProgram(GLuint& name) {
     if (!name) return;
     for (auto it = programCache.begin(); it != programCache.end(); ++it) {
