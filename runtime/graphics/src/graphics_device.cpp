@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "compute_pass.h"
+#include "draw_call.h"
 #include "device_impl.h"
 #include "effect_impl.h"
 #include "fxport/graphics/effect.h"
@@ -199,7 +200,7 @@ GpuObjectCounts GraphicsDevice::liveGpuObjects() const { return impl_->live; }
 ClearStatistics GraphicsDevice::clearStatistics() const { return impl_->clearStats; }
 
 ComputePassStatistics GraphicsDevice::computePassStatistics() const {
-    return impl_->computePasses ? impl_->computePasses->statistics : ComputePassStatistics{};
+    return impl_->computePasses ? impl_->computePasses->currentStatistics() : ComputePassStatistics{};
 }
 
 void GraphicsDevice::finish() { glFinish(); }
@@ -419,13 +420,10 @@ void GraphicsDevice::DrawIndexedPrimitives(PrimitiveType primitiveType, int base
         va.elements = Indices->glName();
         glVertexArrayElementBuffer(va.vao, va.elements);
     }
-    bool wide = Indices->IndexElementSize() == IndexElementSize::ThirtyTwoBits;
-    auto draw = [&] {
-        glDrawElementsBaseVertex(glPrimitive(primitiveType), count, wide ? GL_UNSIGNED_INT : GL_UNSIGNED_SHORT,
-                                 reinterpret_cast<const void*>(std::uintptr_t(startIndex) * (wide ? 4u : 2u)), baseVertex);
-    };
+    const bool wide = Indices->IndexElementSize() == IndexElementSize::ThirtyTwoBits;
+    const DrawCall draw{glPrimitive(primitiveType), count, startIndex, true, baseVertex, wide ? 4 : 2};
     if (d.computePasses && d.computePasses->tryDraw(primitiveType, primitiveCount, draw)) return;
-    draw();
+    draw.issue();
 }
 
 void GraphicsDevice::DrawPrimitives(PrimitiveType primitiveType, int vertexStart, int primitiveCount) {
@@ -438,9 +436,9 @@ void GraphicsDevice::DrawPrimitives(PrimitiveType primitiveType, int vertexStart
                             std::to_string(d.vertexBuffer->VertexCount()) + " vertices");
     d.flush("DrawPrimitives");
     d.bindVertexBuffer();
-    auto draw = [&] { glDrawArrays(glPrimitive(primitiveType), vertexStart, count); };
+    const DrawCall draw{glPrimitive(primitiveType), count, vertexStart};
     if (d.computePasses && d.computePasses->tryDraw(primitiveType, primitiveCount, draw)) return;
-    draw();
+    draw.issue();
 }
 
 GraphicsDevice::Impl::VertexArray& GraphicsDevice::Impl::bindVertexBuffer() {
@@ -479,9 +477,9 @@ void GraphicsDevice::drawUser(PrimitiveType type, const void* vertices, std::siz
     va.offset = 0;
     va.stride = GLsizei(stride);
     glVertexArrayVertexBuffer(va.vao, 0, va.buffer, 0, va.stride);
-    auto draw = [&] { glDrawArrays(glPrimitive(type), 0, count); };
+    const DrawCall draw{glPrimitive(type), count, 0};
     if (d.computePasses && d.computePasses->tryDraw(type, primitiveCount, draw)) return;
-    draw();
+    draw.issue();
 }
 
 void GraphicsDevice::drawUserIndexed(PrimitiveType type, const void* vertices, std::size_t stride, int vertexCount,
@@ -505,9 +503,9 @@ void GraphicsDevice::drawUserIndexed(PrimitiveType type, const void* vertices, s
     glVertexArrayVertexBuffer(va.vao, 0, va.buffer, 0, va.stride);
     va.elements = d.userIndices;
     glVertexArrayElementBuffer(va.vao, va.elements);
-    auto draw = [&] { glDrawElements(glPrimitive(type), count, indexSize == 4 ? GL_UNSIGNED_INT : GL_UNSIGNED_SHORT, nullptr); };
+    const DrawCall draw{glPrimitive(type), count, 0, true, 0, indexSize};
     if (d.computePasses && d.computePasses->tryDraw(type, primitiveCount, draw)) return;
-    draw();
+    draw.issue();
 }
 
 // --- presentation and read-back
