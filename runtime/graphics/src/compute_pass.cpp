@@ -129,6 +129,10 @@ GLuint linkProgram(GLenum stage, const std::string& source, const std::vector<st
     return program;
 }
 
+// Draws in a row whose user vertices differ from the previous draw's under one replay key before
+// the next such draw is drawn as usual (until one comes with the previous one's bytes again).
+constexpr int kChangesBeforeFragments = 3;
+
 }  // namespace
 
 ComputePasses::ComputePasses(GraphicsDevice::Impl& owner)
@@ -455,6 +459,12 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
     ReplayEntry* entry = entryFor(entryKey, d.targetWidth, d.targetHeight, detail::replayLayers(pixelAnalysis.pixel),
                                   vertexCount * floatsPerVertex, refusal);
     if (!entry) return fallBack(refusal);
+    if (call.userDataHash != 0) {
+        if (entry->lastUserDataHash == call.userDataHash) entry->changedInARow = 0;
+        else if (entry->lastUserDataHash != 0) ++entry->changedInARow;
+        entry->lastUserDataHash = call.userDataHash;
+        if (entry->changedInARow >= kChangesBeforeFragments) return fallBack("user vertices change from draw to draw");
+    }
 
     // The pixels the draw may touch: the viewport (GL clips to it), the targets, the scissor.
     int x0 = std::max(viewport.X, 0), y0 = std::max(viewport.Y, 0);

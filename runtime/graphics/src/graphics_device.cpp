@@ -477,7 +477,8 @@ void GraphicsDevice::drawUser(PrimitiveType type, const void* vertices, std::siz
     va.offset = 0;
     va.stride = GLsizei(stride);
     glVertexArrayVertexBuffer(va.vao, 0, va.buffer, 0, va.stride);
-    const DrawCall draw{glPrimitive(type), count, 0};
+    DrawCall draw{glPrimitive(type), count, 0};
+    if (d.computePasses && primitiveCount <= 2) draw.userDataHash = hashBytes(vertices, std::size_t(count) * stride);
     if (d.computePasses && d.computePasses->tryDraw(type, primitiveCount, draw)) return;
     draw.issue();
 }
@@ -503,7 +504,10 @@ void GraphicsDevice::drawUserIndexed(PrimitiveType type, const void* vertices, s
     glVertexArrayVertexBuffer(va.vao, 0, va.buffer, 0, va.stride);
     va.elements = d.userIndices;
     glVertexArrayElementBuffer(va.vao, va.elements);
-    const DrawCall draw{glPrimitive(type), count, 0, true, 0, indexSize};
+    DrawCall draw{glPrimitive(type), count, 0, true, 0, indexSize};
+    if (d.computePasses && primitiveCount <= 2)
+        draw.userDataHash = hashBytes(indices, std::size_t(count) * std::size_t(indexSize),
+                                      hashBytes(vertices, std::size_t(vertexCount) * stride));
     if (d.computePasses && d.computePasses->tryDraw(type, primitiveCount, draw)) return;
     draw.issue();
 }
