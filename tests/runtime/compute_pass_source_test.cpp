@@ -128,8 +128,13 @@ TEST(ComputePassSource, GeneratedMainReadsEachInputFromTheReplayStore) {
     PixelFunction f = pixelFunctionFromShader(kPixel);
     ASSERT_EQ(f.refusal, "");
     EXPECT_TRUE(f.readsFragCoord);
-    // Stamp, i0 (4), i2 (2), i3 (2), gl_FragCoord's z and w.
-    EXPECT_EQ(replayLayers(f), 1 + 4 + 2 + 2 + 2);
+    // Read components only: i0.x and i0.xy, i2 whole, i3.x.
+    ASSERT_EQ(f.inputs.size(), 3u);
+    EXPECT_EQ(f.inputs[0].readMask, 3u);
+    EXPECT_EQ(f.inputs[1].readMask, 3u);
+    EXPECT_EQ(f.inputs[2].readMask, 1u);
+    // Stamp, i0.xy, i2.xy, i3.x, gl_FragCoord's z and w.
+    EXPECT_EQ(replayLayers(f), 1 + 2 + 2 + 1 + 2);
     EXPECT_TRUE(hasPerspectiveInput(f));
     std::vector<ComputeTarget> targets(2);
     targets[0].imageFormat = "rgba8";
@@ -140,16 +145,16 @@ TEST(ComputePassSource, GeneratedMainReadsEachInputFromTheReplayStore) {
     std::string refusal;
     std::string source = computeShaderSource(f, targets, refusal);
     ASSERT_EQ(refusal, "");
-    // Coverage is the fill's stamp; each component one layer, bits as the fill stored them.
+    // Coverage is the fill's stamp; each read component one layer, bits as the fill stored them,
+    // components never read 0.
     EXPECT_NE(source.find("if (fxport_stored(pixel, 0) != fxport_currentStamp) return;"), std::string::npos) << source;
-    EXPECT_NE(source.find("i0 = vec4(uintBitsToFloat(fxport_stored(pixel, 1)), uintBitsToFloat(fxport_stored(pixel, 2)), "
-                          "uintBitsToFloat(fxport_stored(pixel, 3)), uintBitsToFloat(fxport_stored(pixel, 4)));"),
+    EXPECT_NE(source.find("i0 = vec4(uintBitsToFloat(fxport_stored(pixel, 1)), uintBitsToFloat(fxport_stored(pixel, 2)), 0.0, 0.0);"),
               std::string::npos);
-    EXPECT_NE(source.find("i2 = vec2(uintBitsToFloat(fxport_stored(pixel, 5)), uintBitsToFloat(fxport_stored(pixel, 6)));"),
+    EXPECT_NE(source.find("i2 = vec2(uintBitsToFloat(fxport_stored(pixel, 3)), uintBitsToFloat(fxport_stored(pixel, 4)));"),
               std::string::npos);
-    EXPECT_NE(source.find("i3 = ivec2(int(fxport_stored(pixel, 7)), int(fxport_stored(pixel, 8)));"), std::string::npos);
-    EXPECT_NE(source.find("fxport_FragCoord = vec4(vec2(pixel) + 0.5, uintBitsToFloat(fxport_stored(pixel, 9)), "
-                          "uintBitsToFloat(fxport_stored(pixel, 10)));"),
+    EXPECT_NE(source.find("i3 = ivec2(int(fxport_stored(pixel, 5)), 0);"), std::string::npos);
+    EXPECT_NE(source.find("fxport_FragCoord = vec4(vec2(pixel) + 0.5, uintBitsToFloat(fxport_stored(pixel, 6)), "
+                          "uintBitsToFloat(fxport_stored(pixel, 7)));"),
               std::string::npos);
     // Min on a unorm target clamps the source first; the masked float target keeps g and b.
     EXPECT_NE(source.find("vec4 src = clamp(_entryPointOutput_o0, 0.0, 1.0);"), std::string::npos);
@@ -168,11 +173,12 @@ TEST(ComputePassSource, FillShaderRepeatsTheInputDeclarations) {
     EXPECT_NE(fill.find("layout(location = 2) noperspective in vec2 i2;"), std::string::npos);
     EXPECT_NE(fill.find("layout(location = 3) flat in ivec2 i3;"), std::string::npos);
     EXPECT_NE(fill.find("imageStore(fxport_store, ivec3(pixel, 1), uvec4(floatBitsToUint(i0.x)));"), std::string::npos);
-    EXPECT_NE(fill.find("imageStore(fxport_store, ivec3(pixel, 8), uvec4(uint(i3.y)));"), std::string::npos);
-    EXPECT_NE(fill.find("imageStore(fxport_store, ivec3(pixel, 10), uvec4(floatBitsToUint(gl_FragCoord.w)));"), std::string::npos);
+    EXPECT_NE(fill.find("imageStore(fxport_store, ivec3(pixel, 5), uvec4(uint(i3.x)));"), std::string::npos);
+    EXPECT_EQ(fill.find("i3.y"), std::string::npos);  // never read, not stored
+    EXPECT_NE(fill.find("imageStore(fxport_store, ivec3(pixel, 7), uvec4(floatBitsToUint(gl_FragCoord.w)));"), std::string::npos);
     EXPECT_NE(fill.find("imageStore(fxport_store, ivec3(pixel, 0), uvec4(fxport_stamp));"), std::string::npos);
     EXPECT_EQ(fill.find("out "), std::string::npos);  // no colour output
-    EXPECT_NE(inputSignature(f).find("2noperspective vec2"), std::string::npos);
+    EXPECT_NE(inputSignature(f).find("2noperspective vec2:3"), std::string::npos);
 }
 
 TEST(ComputePassSource, AnInputWithoutAVertexOutputIsRefused) {

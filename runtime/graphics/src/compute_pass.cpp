@@ -213,6 +213,7 @@ void ComputePasses::forget(const ComputeAnalysis& analysis) {
         if (field(it->first, 0) == serial) dropEntry(it);
         it = next;
     }
+    std::erase_if(userDataHistory, [&](const auto& item) { return field(item.first, 0) == serial; });
 }
 
 bool ComputePasses::fallBack(const std::string& reason) {
@@ -308,6 +309,9 @@ ComputePasses::ReplayEntry* ComputePasses::entryFor(const std::string& key, int 
     entry.bytes = bytes;
     entryBytes += bytes;
     entry.recency = recency.insert(recency.end(), key);
+    if (printOutcomes)
+        std::fprintf(stderr, "compute pass: new replay entry %s: %dx%d, %d layers, %.1f MiB\n", key.c_str(), width, height, layers,
+                     double(bytes) / (1 << 20));
     return &entries.emplace(key, entry).first->second;
 }
 
@@ -456,15 +460,16 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
         std::to_string(int(raster.CullMode)) + "," + std::to_string(raster.DepthBias) + "," +
         std::to_string(raster.SlopeScaleDepthBias) + "/" + std::to_string(int(type)) + "x" + std::to_string(primitiveCount) + "/" +
         std::to_string(d.targetWidth) + "x" + std::to_string(d.targetHeight);
+    if (call.userDataHash != 0) {
+        UserDataHistory& history = userDataHistory[entryKey];
+        if (history.lastHash == call.userDataHash) history.changedInARow = 0;
+        else if (history.lastHash != 0) ++history.changedInARow;
+        history.lastHash = call.userDataHash;
+        if (history.changedInARow >= kChangesBeforeFragments) return fallBack("user vertices change from draw to draw");
+    }
     ReplayEntry* entry = entryFor(entryKey, d.targetWidth, d.targetHeight, detail::replayLayers(pixelAnalysis.pixel),
                                   vertexCount * floatsPerVertex, refusal);
     if (!entry) return fallBack(refusal);
-    if (call.userDataHash != 0) {
-        if (entry->lastUserDataHash == call.userDataHash) entry->changedInARow = 0;
-        else if (entry->lastUserDataHash != 0) ++entry->changedInARow;
-        entry->lastUserDataHash = call.userDataHash;
-        if (entry->changedInARow >= kChangesBeforeFragments) return fallBack("user vertices change from draw to draw");
-    }
 
     // The pixels the draw may touch: the viewport (GL clips to it), the targets, the scissor.
     int x0 = std::max(viewport.X, 0), y0 = std::max(viewport.Y, 0);

@@ -91,12 +91,16 @@ private:
         GLuint vertices = 0;  // the stamp of its fill and the captured vertices it was filled from (detail::kEntry*)
         std::int64_t bytes = 0;
         std::list<std::string>::iterator recency;
-        // User-vertex draws: the last one's DrawCall::userDataHash, and how many draws in a row
-        // came with other bytes than the one before (a sprite that moves every draw would refill
-        // every time, which costs more than drawing it: such draws are drawn as usual).
-        std::uint64_t lastUserDataHash = 0;
+    };
+    // User-vertex draws per replay key: the last one's DrawCall::userDataHash, and how many draws
+    // in a row came with other bytes than the one before (a sprite that moves every draw would
+    // refill every time, which costs more than drawing it: such draws are drawn as usual). Kept
+    // apart from the entries so that a key drawn as usual holds no store.
+    struct UserDataHistory {
+        std::uint64_t lastHash = 0;
         int changedInARow = 0;
     };
+    std::map<std::string, UserDataHistory> userDataHistory;
     std::map<std::string, ReplayEntry> entries;
     std::list<std::string> recency;
     std::int64_t entryBytes = 0, byteBudget = 256ll << 20;

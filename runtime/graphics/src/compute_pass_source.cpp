@@ -198,6 +198,35 @@ PixelFunction pixelFunctionFromShader(const std::string& glsl) {
             return result;
         }
     result.readsFragCoord = !findWord(text, "gl_FragCoord").empty();
+    // Which components each input is read at: `name.xy` marks x and y; any other use (whole,
+    // indexed, passed on) marks all of them. SPIRV-Cross declares a ps_2_0 TEXCOORD0 as vec4 and
+    // reads .xy: half the replay store.
+    for (GlslVarying& in : result.inputs) {
+        in.readMask = 0;
+        const std::string declared = in.type + " ";
+        for (std::size_t p : findWord(text, in.name)) {
+            const bool declaration = p >= declared.size() && text.compare(p - declared.size(), declared.size(), declared) == 0 &&
+                                     (p == declared.size() || text[p - declared.size() - 1] == '\n');
+            if (declaration) continue;  // its global "vec4 name;" (above)
+            std::size_t q = p + in.name.size();
+            unsigned mask = 0;
+            if (q < text.size() && text[q] == '.') {
+                for (++q; q < text.size() && isWordChar(text[q]); ++q) {
+                    const std::size_t c = std::string("xyzw").find(text[q]) != std::string::npos ? std::string("xyzw").find(text[q])
+                                                                                                  : std::string("rgba").find(text[q]);
+                    if (c == std::string::npos) {
+                        mask = 15;
+                        break;
+                    }
+                    mask |= 1u << c;
+                }
+            } else {
+                mask = 15;
+            }
+            in.readMask |= mask;
+        }
+        in.readMask &= (1u << in.components) - 1u;
+    }
     text = replaceWord(text, "gl_FragCoord", "fxport_FragCoord");
     text = replaceWord(text, "discard", "{ fxport_discarded = true; return; }");
     result.text = text;
@@ -329,13 +358,15 @@ int capturedFloatsPerVertex(const std::vector<GlslVarying>& captured) {
 
 int replayLayers(const PixelFunction& pixel) {
     int layers = 1;
-    for (const GlslVarying& in : pixel.inputs) layers += in.components;
+    for (const GlslVarying& in : pixel.inputs)
+        for (int c = 0; c < in.components; ++c) layers += (in.readMask >> c) & 1u;
     return layers + (pixel.readsFragCoord ? 2 : 0);
 }
 
 std::string inputSignature(const PixelFunction& pixel) {
     std::string signature;
-    for (const GlslVarying& in : pixel.inputs) signature += std::to_string(in.location) + in.qualifiers + in.type + ",";
+    for (const GlslVarying& in : pixel.inputs)
+        signature += std::to_string(in.location) + in.qualifiers + in.type + ":" + std::to_string(in.readMask) + ",";
     return signature + (pixel.readsFragCoord ? "fragcoord" : "");
 }
 
@@ -372,6 +403,7 @@ std::string fillShaderSource(const PixelFunction& pixel) {
     };
     for (const GlslVarying& in : pixel.inputs)
         for (int c = 0; c < in.components; ++c) {
+            if (!((in.readMask >> c) & 1u)) continue;
             const std::string component = in.name + (in.components > 1 ? kComponent[c] : "");
             store(in.scalar == 'f' ? "floatBitsToUint(" + component + ")" : "uint(" + component + ")");
         }
@@ -409,9 +441,14 @@ std::string computeShaderSource(const PixelFunction& pixel, const std::vector<Co
         // One layer per component, read as arrays of scalars (never a vector component at a
         // dynamic index: NVIDIA's 580 driver fails to link some of those).
         std::string parts;
+        // A component the shader never reads is not stored: 0.
         for (int c = 0; c < in.components; ++c) {
-            const std::string bits = "fxport_stored(pixel, " + std::to_string(layer++) + ")";
-            parts += (c ? ", " : "") + (in.scalar == 'f' ? "uintBitsToFloat(" + bits + ")" : in.scalar == 'i' ? "int(" + bits + ")" : bits);
+            std::string value = in.scalar == 'f' ? "0.0" : in.scalar == 'i' ? "0" : "0u";
+            if ((in.readMask >> c) & 1u) {
+                const std::string bits = "fxport_stored(pixel, " + std::to_string(layer++) + ")";
+                value = in.scalar == 'f' ? "uintBitsToFloat(" + bits + ")" : in.scalar == 'i' ? "int(" + bits + ")" : bits;
+            }
+            parts += (c ? ", " : "") + value;
         }
         s << "    " << in.name << " = " << in.type << "(" << parts << ");\n";
     }

@@ -23,6 +23,7 @@ struct GlslVarying {
     char scalar = 'f';  // 'f' float, 'i' int, 'u' uint
     Interpolation interpolation = Interpolation::Smooth;
     std::string qualifiers;  // as declared ("noperspective ", "flat ", "centroid "...): the fill shader repeats them
+    unsigned readMask = 15;  // pixel inputs: the components the shader reads (bit 0 = x); only those are replayed
 };
 
 // A vertex shader's located outputs, in declaration order (what a transform-feedback capture
@@ -93,7 +94,7 @@ std::string compareShaderSource();
 // Floats per captured vertex: gl_Position, then each of `captured` tightly packed.
 int capturedFloatsPerVertex(const std::vector<GlslVarying>& captured);
 
-// Layers of a replay store for `pixel`: the stamp, each input component, gl_FragCoord's z and w if read.
+// Layers of a replay store for `pixel`: the stamp, each input component it reads, gl_FragCoord's z and w if read.
 int replayLayers(const PixelFunction& pixel);
 // The replay key's part that depends on the pixel shader: its inputs' locations, types and qualifiers.
 std::string inputSignature(const PixelFunction& pixel);
