@@ -548,6 +548,49 @@ TEST(ComputePasses, SmallerViewportAndScissor) {
              kColorTolerance * 0.6, 1);
 }
 
+// Replay entries stay within $FXPORT_COMPUTE_PASS_CACHE_MB: at 256x256 an entry of PatternPS (the
+// stamp and uv.xy) is 768 KiB, so 1 MiB holds one; two viewports in turn evict each other (and each
+// draw refills), the pixels still the fragment stage's. With 0 nothing fits: drawn as usual.
+TEST(ComputePasses, ReplayEntriesStayWithinTheByteBound) {
+    constexpr int w = 256, h = 256;
+    const Viewport viewports[2] = {Viewport(0, 0, w, h), Viewport(16, 8, 200, 100)};
+    std::vector<float> images[2][4];
+    for (bool compute : {false, true}) {
+        SCOPED_TRACE(compute ? "compute" : "fragment");
+        setenv("FXPORT_COMPUTE_PASS_CACHE_MB", "1", 1);
+        Device d(compute, w, h);
+        unsetenv("FXPORT_COMPUTE_PASS_CACHE_MB");
+        RenderTarget2D target(*d.device, w, h, false, SurfaceFormat::Color, DepthFormat::None);
+        for (int i = 0; i < 4; ++i) {
+            d.device->SetRenderTarget(target);
+            d.device->Clear(ClearOptions::Target, kClear, 1.0f, 0);
+            d.device->Viewport = viewports[i % 2];
+            d.apply("Pattern");
+            drawQuad(*d.device);
+            d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+            images[compute][i] = readTarget(target);
+        }
+        const ComputePassStatistics stats = d.device->computePassStatistics();
+        EXPECT_EQ(stats.dispatched, compute ? 4 : 0);
+        EXPECT_EQ(stats.replayed, 0);
+        EXPECT_EQ(stats.entries, compute ? 1 : 0);
+        // The store (3 layers of 4 bytes) and the captured vertices, within the bound.
+        EXPECT_GE(stats.entryBytes, compute ? std::int64_t(w) * h * 3 * 4 : 0);
+        EXPECT_LE(stats.entryBytes, compute ? std::int64_t(1) << 20 : 0);
+        EXPECT_EQ(stats.evicted, compute ? 3 : 0);
+    }
+    for (int i = 0; i < 4; ++i) EXPECT_TRUE(sameBytes(images[0][i], images[1][i])) << "draw " << i;
+
+    setenv("FXPORT_COMPUTE_PASS_CACHE_MB", "0", 1);
+    Device none(true, w, h);
+    unsetenv("FXPORT_COMPUTE_PASS_CACHE_MB");
+    none.apply("Pattern");
+    drawQuad(*none.device);
+    const ComputePassStatistics stats = none.device->computePassStatistics();
+    EXPECT_EQ(stats.dispatched, 0);
+    EXPECT_EQ(stats.fellBack.at("replay store of 1 MiB over FXPORT_COMPUTE_PASS_CACHE_MB=0"), 1);
+}
+
 // Draws a dispatch cannot reproduce are drawn as usual: counted as fallen back, not dispatched,
 // and their pixels are still right.
 TEST(ComputePasses, DerivativesFallBack) {

@@ -162,6 +162,10 @@ ComputePasses::~ComputePasses() {
     if (captureBuffer) glDeleteBuffers(1, &captureBuffer);
     if (compare.program) glDeleteProgram(compare.program);
     if (compare.commands) glDeleteBuffers(1, &compare.commands);
+    if (compare.counters) {
+        glUnmapNamedBuffer(compare.counters);
+        glDeleteBuffers(1, &compare.counters);
+    }
 }
 
 void ComputePasses::dropEntry(std::map<std::string, ReplayEntry>::iterator it) {
@@ -316,9 +320,8 @@ ComputePasses::ReplayEntry* ComputePasses::entryFor(const std::string& key, int 
 }
 
 void ComputePasses::readCounters() {
-    if (!countersUnread || !compare.commands) return;
-    glGetNamedBufferSubData(compare.commands, detail::kCommandsCounters * 4, sizeof counters, counters);
-    countersUnread = false;
+    if (!compare.mapped) return;
+    for (int i = 0; i < 4; ++i) counters[i] = compare.mapped[i];
 }
 
 ComputePassStatistics ComputePasses::currentStatistics() {
@@ -444,6 +447,11 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
             const std::vector<std::uint32_t> zeros(detail::kCommandsWords, 0u);
             glCreateBuffers(1, &compare.commands);
             glNamedBufferStorage(compare.commands, GLsizeiptr(zeros.size() * 4), zeros.data(), 0);
+            // Statistics read the counters here without a read-back (no stall when a host asks per pass).
+            const GLbitfield mapping = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
+            glCreateBuffers(1, &compare.counters);
+            glNamedBufferStorage(compare.counters, 16, zeros.data(), mapping);
+            compare.mapped = static_cast<const volatile std::uint32_t*>(glMapNamedBufferRange(compare.counters, 0, 16, mapping));
         }
     }
     if (compare.failed) return fallBack(failures["compare"]);
@@ -505,7 +513,7 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
 
     // 2. Compare step: the commands for what follows, decided on the GPU (no read-back).
     std::uint32_t before[4] = {};
-    if (printOutcomes) readCounters(), std::copy(std::begin(counters), std::end(counters), before);
+    if (printOutcomes) glFinish(), readCounters(), std::copy(std::begin(counters), std::end(counters), before);
     const std::uint32_t stamp = nextStamp++;
     if (nextStamp == 0) nextStamp = 1;  // 0 means "never filled"
     const GLint rect[4] = {x0, y0, x1, y1};
@@ -515,6 +523,7 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, detail::kCaptureBinding, captureBuffer);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, detail::kCommandsBinding, compare.commands);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, detail::kEntryBinding, entry->vertices);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, detail::kCountersBinding, compare.counters);
     glProgramUniform4iv(compare.program, compare.rect, 1, rect);
     glProgramUniform4fv(compare.program, compare.viewport, 1, view);
     glProgramUniform1i(compare.program, compare.vertices, vertexCount);
@@ -523,8 +532,7 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
     glProgramUniform1ui(compare.program, compare.stamp, stamp);
     glProgramUniform4iv(compare.program, compare.draw, 1, drawCommand);
     glDispatchCompute(1, 1, 1);
-    glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-    countersUnread = true;
+    glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
 
     // 3. Fill (instance count 0 when the capture matched): the draw itself, scissor off, into no
     // attachments, storing the interpolated inputs where it covers.
@@ -572,6 +580,7 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
 
     if (printOutcomes) {
+        glFinish();  // debugging only: this draw's outcome
         readCounters();
         const char* outcome = counters[0] != before[0]   ? "dispatched, refilled the replay store"
                               : counters[1] != before[1] ? "dispatched from the replay store"

@@ -48,7 +48,8 @@ struct ComputePasses {
     // Deletes the programs and replay entries made for a shader whose effect releases its programs.
     void forget(const ComputeAnalysis& analysis);
 
-    // The statistics, with the GPU's counters read back (a stall: only when asked).
+    // The statistics, with the GPU's counters as far as it has got (read without waiting: draws it
+    // has not run yet are not counted; a read-back of a target waits for them).
     ComputePassStatistics currentStatistics();
 
 private:
@@ -103,16 +104,17 @@ private:
     std::map<std::string, UserDataHistory> userDataHistory;
     std::map<std::string, ReplayEntry> entries;
     std::list<std::string> recency;
-    std::int64_t entryBytes = 0, byteBudget = 256ll << 20;
+    std::int64_t entryBytes = 0, byteBudget = 512ll << 20;  // lighting2d at 1920x1080 holds 388 MiB
     void dropEntry(std::map<std::string, ReplayEntry>::iterator it);
 
     // The compare step (detail::compareShaderSource) and the commands buffer it writes: made at the first dispatch.
     struct Compare {
         GLuint program = 0, commands = 0;
+        GLuint counters = 0;                            // persistently mapped (detail::kCountersBinding)
+        const volatile std::uint32_t* mapped = nullptr;
         GLint rect = -1, viewport = -1, vertices = -1, stride = -1, unitW = -1, stamp = -1, draw = -1;
         bool failed = false;
     } compare;
-    bool countersUnread = false;
     std::uint32_t counters[4] = {};  // the GPU's, as last read
 };
 

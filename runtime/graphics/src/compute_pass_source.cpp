@@ -243,7 +243,6 @@ std::string commandsBlock(const char* access) {
          "    uint fxport_groups[3]; int fxport_origin[2]; uint fxport_currentStamp; uint fxport_pad0[2];\n"
          "    uint fxport_fill[5]; uint fxport_pad1[3];\n"
          "    uint fxport_fallBack[5]; uint fxport_pad2[3];\n"
-         "    uint fxport_counters[4];\n"
          "};\n";
     return s.str();
 }
@@ -258,6 +257,7 @@ std::string compareShaderSource() {
          "layout(local_size_x = 1) in;\n"
       << "layout(std430, binding = " << kCaptureBinding << ") readonly buffer fxport_Capture { float fxport_captured[]; };\n"
       << commandsBlock("")
+      << "layout(std430, binding = " << kCountersBinding << ") buffer fxport_Counters { uint fxport_counters[4]; };\n"
       << "layout(std430, binding = " << kEntryBinding
       << ") buffer fxport_Entry { uint fxport_entryStamp; uint fxport_pad3[3]; uint fxport_stored[]; };\n"
          "uniform ivec4 fxport_rect;\n"

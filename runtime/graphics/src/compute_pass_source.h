@@ -64,17 +64,18 @@ struct ComputeTarget {
 inline constexpr int kCaptureBinding = 7;
 inline constexpr int kCommandsBinding = 6;
 inline constexpr int kEntryBinding = 5;
+// The compare step's counters, 4 words: refilled, replayed, fell back (w != 1), fell back (not one
+// layer). The device reads them from a persistently mapped buffer, without waiting.
+inline constexpr int kCountersBinding = 4;
 inline constexpr int kStoreUnit = 7;
 
 // The commands buffer, in 32-bit words: what the compare step writes and the dispatch, the fill
-// draw and the fall-back draw read (indirect commands at these word offsets), and counters that
-// the device reads back only when statistics are asked for.
+// draw and the fall-back draw read (indirect commands at these word offsets).
 inline constexpr int kCommandsGroups = 0;      // 3: indirect dispatch groups
                                                // 3, 4: the dispatch's origin; 5: the stamp of the store's current fill
 inline constexpr int kCommandsFill = 8;        // 5: indirect draw of the fill (instance count 0 or 1)
 inline constexpr int kCommandsFallBack = 16;   // 5: indirect draw of the fragment fall-back (instance count 0 or 1)
-inline constexpr int kCommandsCounters = 24;   // 4: refilled, replayed, fell back (w != 1), fell back (not one layer)
-inline constexpr int kCommandsWords = 28;
+inline constexpr int kCommandsWords = 24;
 // A replay entry's buffer: word 0 the stamp of its fill (0: never filled), words 4.. the captured
 // vertices that fill was drawn from.
 inline constexpr int kEntryHeaderWords = 4;

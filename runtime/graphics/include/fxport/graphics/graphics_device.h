@@ -147,14 +147,14 @@ struct ClearStatistics {
 
 // What PresentationParameters::ComputePasses did: draws run as compute dispatches, and, for draws
 // that were candidates (at most two triangles) but were drawn as usual, how many per reason. The
-// GPU decides part of it (whether the vertices changed, w = 1, overlap): asking reads its counters
-// back, so ask between frames, not per draw.
+// GPU decides part of it (whether the vertices changed, w = 1, overlap); its counters are read
+// without waiting, so draws it has not run yet are not counted (a read-back of a target waits).
 struct ComputePassStatistics {
     long dispatched = 0;  // draws run as compute dispatches
     long replayed = 0;    // of those, from interpolants stored by an earlier draw (no fill)
     std::map<std::string, long> fellBack;
     long entries = 0;              // replay entries held now
-    std::int64_t entryBytes = 0;   // their GPU memory (bounded by $FXPORT_COMPUTE_PASS_CACHE_MB, 256 by default)
+    std::int64_t entryBytes = 0;   // their GPU memory (bounded by $FXPORT_COMPUTE_PASS_CACHE_MB, 512 by default)
     long evicted = 0;              // entries dropped to stay within the bound
 };
 
