@@ -372,7 +372,7 @@ std::string inputSignature(const PixelFunction& pixel) {
 
 bool hasPerspectiveInput(const PixelFunction& pixel) {
     for (const GlslVarying& in : pixel.inputs)
-        if (in.scalar == 'f' && in.interpolation == Interpolation::Smooth) return true;
+        if (in.scalar == 'f' && in.interpolation == Interpolation::Smooth && in.readMask != 0) return true;
     return false;
 }
 

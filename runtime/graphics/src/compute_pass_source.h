@@ -99,7 +99,7 @@ int capturedFloatsPerVertex(const std::vector<GlslVarying>& captured);
 int replayLayers(const PixelFunction& pixel);
 // The replay key's part that depends on the pixel shader: its inputs' locations, types and qualifiers.
 std::string inputSignature(const PixelFunction& pixel);
-// Whether a pixel input is interpolated with perspective (float, neither flat nor noperspective):
+// Whether a pixel input it reads is interpolated with perspective (float, neither flat nor noperspective):
 // then only w = 1 replays exactly (the driver may fuse the correction into the shader's arithmetic).
 bool hasPerspectiveInput(const PixelFunction& pixel);
 // Why `pixel`'s inputs cannot be fed by `captured` (an input without a vertex output at its location,
