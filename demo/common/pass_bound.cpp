@@ -37,7 +37,7 @@ void PassBound::forgetRuns() { runs_.clear(); }
 void PassBound::begin() {
     if (!device) return;
     device->markBoundTargets();
-    dispatchedAtBegin_ = device->computePassStatistics().dispatched;
+    dispatchedAtBegin_ = device->computePassStatistics().issued;  // counted at once (dispatched waits for the GPU)
 }
 
 void PassBound::end(const std::string& pass) {
@@ -45,7 +45,7 @@ void PassBound::end(const std::string& pass) {
     Run run;
     run.blended = device->blendedSinceMark();
     run.fragmentBytes = device->colorBytesPerFragmentSinceMark();
-    run.dispatches = device->computePassStatistics().dispatched - dispatchedAtBegin_;
+    run.dispatches = device->computePassStatistics().issued - dispatchedAtBegin_;
     auto rate = [&](SurfaceFormat format) {
         if (run.dispatches > 0 && limits && limits->computeWriteGBps > 0) return limits->computeWriteGBps;
         return limits ? limits->fillGBps(format, run.blended) : fillRateGBps;

@@ -125,6 +125,7 @@ ComputePassStatistics bothWays(const char* name, SurfaceFormat format, int w, in
         const ComputePassStatistics stats = d.device->computePassStatistics();
         EXPECT_EQ(stats.dispatched, compute ? 2 * dispatches : 0);
         EXPECT_EQ(stats.replayed, compute ? dispatches : 0);
+        EXPECT_GE(stats.issued, stats.dispatched);
         if (compute) computed = stats;
     }
     EXPECT_TRUE(sameBytes(images[0][0], images[1][0])) << "first draw: compute differs from fragment";
@@ -443,6 +444,7 @@ TEST(ComputePasses, PerspectiveInputWithWNotOneFallsBackOnTheGpu) {
         },
         kFloatTolerance, 0, 1);
     EXPECT_EQ(stats.fellBack.at("w != 1 with a perspective-interpolated input"), 2);
+    EXPECT_EQ(stats.issued, 2);  // sent as compute passes, drawn as usual by the GPU
 }
 
 // The same quad with a noperspective input replays: screen-linear uv.

@@ -487,6 +487,7 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
         x0 = std::max(x0, s.X), y0 = std::max(y0, s.Y);
         x1 = std::min(x1, s.X + s.Width), y1 = std::min(y1, s.Y + s.Height);
     }
+    ++statistics.issued;
     if (x1 <= x0 || y1 <= y0) {  // the fragment stage would draw nothing either
         ++statistics.dispatched;
         if (printOutcomes) std::fprintf(stderr, "compute pass: %s covers no pixel\n", pixel->label.c_str());
@@ -508,8 +509,7 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
     glBeginTransformFeedback(GL_TRIANGLES);
     call.issue();
     glEndTransformFeedback();
-    glDisable(GL_RASTERIZER_DISCARD);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glDisable(GL_RASTERIZER_DISCARD);  // transform feedback's writes need no barrier before later commands read them
 
     // 2. Compare step: the commands for what follows, decided on the GPU (no read-back).
     std::uint32_t before[4] = {};

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <iostream>
 
 #include "compute_pass.h"
 #include "draw_call.h"
@@ -121,6 +122,9 @@ GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters)
     const bool computePasses = compute && std::string(compute) == "1"   ? true
                                : compute && std::string(compute) == "0" ? false
                                                                         : parameters_.ComputePasses;
+    if (compute && std::string(compute) != "1" && std::string(compute) != "0")
+        std::cerr << "fxport: FXPORT_COMPUTE_PASSES='" << compute << "' is not 1 or 0; compute passes are "
+                  << (computePasses ? "on" : "off") << " (PresentationParameters::ComputePasses)\n";
     if (computePasses) impl_->computePasses = std::make_shared<ComputePasses>(*impl_);
 
     // The D3D conventions (docs/DESIGN.md): NDC z in [0,1], and window y from the top row so

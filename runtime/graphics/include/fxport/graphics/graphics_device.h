@@ -150,6 +150,8 @@ struct ClearStatistics {
 // GPU decides part of it (whether the vertices changed, w = 1, overlap); its counters are read
 // without waiting, so draws it has not run yet are not counted (a read-back of a target waits).
 struct ComputePassStatistics {
+    long issued = 0;      // draws sent to the GPU as compute passes, counted at once (the GPU may still
+                          // draw some as usual: fellBack's GPU reasons)
     long dispatched = 0;  // draws run as compute dispatches
     long replayed = 0;    // of those, from interpolants stored by an earlier draw (no fill)
     std::map<std::string, long> fellBack;
