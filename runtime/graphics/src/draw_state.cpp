@@ -65,6 +65,11 @@ void GraphicsDevice::Impl::flush(const char* what) {
     resolvePendingClearBeforeDraw(device.DepthStencilState);
     applyBlend(blendForPixelShader(device.BlendState, shaders[1]->shader->outputTargets));
     if (trackingBoundTargets && device.BlendState.blendingEnabled()) blendedSinceMark = true;
+    if (trackingBoundTargets) {
+        const DepthStorage* depth = boundDepthStorage();
+        const bool tests = device.DepthStencilState.DepthBufferEnable || device.DepthStencilState.StencilEnable;
+        noteWrittenTargets(true, depth && depth->renderbuffer != 0 && tests);
+    }
     applyDepthStencil(device.DepthStencilState);
     applyRasterizer(device.RasterizerState);
     applyViewport(device.Viewport);
@@ -79,6 +84,7 @@ void GraphicsDevice::Impl::flush(const char* what) {
         appliedSrgbWrite = emulation.srgbWrite;
     }
     if (emulation.srgbWrite) reportUnencodedSrgbWrite();
+    tallyDraw();
     forceAll = false;
 }
 

@@ -152,6 +152,8 @@ void GraphicsDevice::Reset(const fxport::PresentationParameters& parameters) {
     parameters_.RenderTargetUsage = parameters.RenderTargetUsage;
     std::erase_if(impl_->boundSinceMark,
                   [&](const RenderTargetBinding& b) { return b.RenderTarget == impl_->backBuffer.get(); });
+    std::erase_if(impl_->writtenSinceMark,
+                  [&](const WrittenTarget& w) { return w.binding.RenderTarget == impl_->backBuffer.get(); });
     impl_->backBuffer.reset();  // its framebuffers go with it
     impl_->backBuffer = std::make_unique<RenderTarget2D>(*this, parameters_.BackBufferWidth, parameters_.BackBufferHeight,
                                                           false, parameters_.BackBufferFormat,
@@ -278,6 +280,7 @@ void GraphicsDevice::Impl::noteBoundTargets() {
 void GraphicsDevice::markBoundTargets() {
     impl_->trackingBoundTargets = true;
     impl_->boundSinceMark.clear();
+    impl_->writtenSinceMark.clear();
     impl_->widestColorBytesSinceMark = 0;
     impl_->blendedSinceMark = false;
     impl_->noteBoundTargets();
@@ -287,6 +290,27 @@ int GraphicsDevice::colorBytesPerFragmentSinceMark() const { return impl_->wides
 bool GraphicsDevice::blendedSinceMark() const { return impl_->blendedSinceMark; }
 
 std::vector<RenderTargetBinding> GraphicsDevice::targetsBoundSinceMark() const { return impl_->boundSinceMark; }
+
+void GraphicsDevice::Impl::noteWrittenTargets(bool color, bool depthStencil) {
+    if (!trackingBoundTargets) return;
+    auto note = [&](const RenderTargetBinding& b, bool depth) {
+        if (!color && !depth) return;
+        for (WrittenTarget& w : writtenSinceMark)
+            if (w.binding == b) {
+                w.color = w.color || color;
+                w.depthStencil = w.depthStencil || depth;
+                return;
+            }
+        writtenSinceMark.push_back({b, color, depth});
+    };
+    // The first target's depth/stencil buffer serves them all (XNA: MRT use the first's).
+    if (targets.empty()) note(RenderTargetBinding(backBuffer.get()), depthStencil);
+    for (std::size_t i = 0; i < targets.size(); ++i) note(targets[i], depthStencil && i == 0);
+}
+
+std::vector<GraphicsDevice::WrittenTarget> GraphicsDevice::targetsWrittenSinceMark() const {
+    return impl_->writtenSinceMark;
+}
 
 RenderTarget2D& GraphicsDevice::backBufferTarget() { return *impl_->backBuffer; }
 
