@@ -27,6 +27,7 @@ void PassBound::setUp(GraphicsDevice& runDevice, double fillRate, bool bounds) {
     device = &runDevice;
     fillRateGBps = fillRate;
     limits.reset();
+    tallyDevice_ = nullptr;
     if (!bounds) return;
     limits = GpuLimits::ForDevice(runDevice);
     tallyOn(runDevice);

@@ -720,6 +720,7 @@ void GraphicsDevice::Impl::forget(GraphicsResource* resource) {
 
 void GraphicsDevice::Impl::releaseAll() {
     computePasses.reset();  // its programs and buffer, while the context is current
+    fragmentTally.reset();  // its queries, likewise
     glBindProgramPipeline(0);
     glBindVertexArray(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
