@@ -77,9 +77,11 @@ void PassBound::end(const std::string& pass) {
             width = height = cube->Size();
             format = cube->Format(), depth = cube->DepthStencilFormat();
         }
+        // The part of the target the pass's widest draw or clear covered (a viewport, a scissor).
+        const double covered = width > 0 && height > 0 ? written.pixels / (double(width) * height) : 0.0;
         double bytes = 0;
-        if (written.color) bytes += double(RenderTargetBytes(width, height, 1, format, DepthFormat::None));
-        if (written.depthStencil) bytes += depthBytes(width, height, format, depth);
+        if (written.color) bytes += double(RenderTargetBytes(width, height, 1, format, DepthFormat::None)) * covered;
+        if (written.depthStencil) bytes += depthBytes(width, height, format, depth) * covered;
         // The pass's fragments are written at the rate of the first target it wrote.
         if (work.fragmentRateGBps == 0) work.fragmentRateGBps = rate(format);
         work.targets.push_back({bytes, rate(format)});

@@ -1,8 +1,9 @@
 // fxport addition (issue 16): each timed pass next to what this GPU can do. While `device` is set,
 // every PassTimer records what the pass wrote and fetched, and the timing tables print
 //   MB          the targets the pass wrote (draws or clears; a target only bound is not counted),
-//               each once: width x height x the format's bytes, + its depth/stencil buffer where a
-//               draw tested it or a clear wrote it (a buffer lazy depth storage never made has none)
+//               each once: the pixels its widest draw (viewport, scissor) or clear covered x the
+//               format's bytes, + its depth/stencil buffer's where a draw tested it or a clear wrote
+//               it (a buffer lazy depth storage never made has none)
 //   fill ms     max(those bytes, fragments x the widest colour bytes one fragment wrote) at this
 //               GPU's fill rate for the format (opaque, or additive when a draw blended)
 //   fetch ms    the texture fetches the draws made at the probe's bilinear fetch rate (--bounds)

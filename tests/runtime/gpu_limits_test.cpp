@@ -196,7 +196,7 @@ TEST(FragmentTally, CountsFragmentsPerRunOfDrawsWithTheSameFetches) {
 }
 
 // Only what draws wrote: a target bound at the mark but never drawn into is not listed; a depth
-// buffer counts once a draw tested it (and lazy storage made it).
+// buffer counts once a draw tested it (and lazy storage made it); the area is the draw's.
 TEST(FragmentTally, TargetsWrittenAreThoseDrawnNotThoseOnlyBound) {
     Device d;
     RenderTarget2D withDepth(*d.device, 8, 4, false, SurfaceFormat::Color, DepthFormat::Depth24Stencil8, 0,
@@ -212,6 +212,7 @@ TEST(FragmentTally, TargetsWrittenAreThoseDrawnNotThoseOnlyBound) {
     EXPECT_EQ(written[0].binding.RenderTarget, &plain);
     EXPECT_TRUE(written[0].color);
     EXPECT_FALSE(written[0].depthStencil);
+    EXPECT_EQ(written[0].pixels, 32);
 
     d.device->SetRenderTarget(withDepth);
     d.draw(Vector4(0, 1, 0, 1));  // DepthStencilState::None: its depth buffer is not made
@@ -224,6 +225,19 @@ TEST(FragmentTally, TargetsWrittenAreThoseDrawnNotThoseOnlyBound) {
     written = d.device->targetsWrittenSinceMark();
     ASSERT_EQ(written.size(), 2u);
     EXPECT_TRUE(written[1].depthStencil);
+
+    // The area: a draw scissored to 3x2 covers 6 pixels of the target.
+    d.device->SetRenderTarget(plain);
+    d.device->markBoundTargets();
+    RasterizerState scissored = RasterizerState::CullNone;
+    scissored.ScissorTestEnable = true;
+    d.device->RasterizerState = scissored;
+    d.device->ScissorRectangle = Rectangle(2, 1, 3, 2);
+    d.draw(Vector4(1, 0, 1, 1));
+    d.device->RasterizerState = RasterizerState::CullNone;
+    written = d.device->targetsWrittenSinceMark();
+    ASSERT_EQ(written.size(), 1u);
+    EXPECT_EQ(written[0].pixels, 6);
 
     d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
 }

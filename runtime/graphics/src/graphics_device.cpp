@@ -291,17 +291,22 @@ bool GraphicsDevice::blendedSinceMark() const { return impl_->blendedSinceMark; 
 
 std::vector<RenderTargetBinding> GraphicsDevice::targetsBoundSinceMark() const { return impl_->boundSinceMark; }
 
-void GraphicsDevice::Impl::noteWrittenTargets(bool color, bool depthStencil) {
+void GraphicsDevice::Impl::noteWrittenTargets(bool color, bool depthStencil, const Rectangle& area) {
     if (!trackingBoundTargets) return;
+    // Within the target: a viewport may reach past it.
+    const int x0 = std::max(area.X, 0), y0 = std::max(area.Y, 0);
+    const int x1 = std::min(area.X + area.Width, targetWidth), y1 = std::min(area.Y + area.Height, targetHeight);
+    const double pixels = x1 > x0 && y1 > y0 ? double(x1 - x0) * double(y1 - y0) : 0.0;
     auto note = [&](const RenderTargetBinding& b, bool depth) {
         if (!color && !depth) return;
         for (WrittenTarget& w : writtenSinceMark)
             if (w.binding == b) {
                 w.color = w.color || color;
                 w.depthStencil = w.depthStencil || depth;
+                w.pixels = std::max(w.pixels, pixels);
                 return;
             }
-        writtenSinceMark.push_back({b, color, depth});
+        writtenSinceMark.push_back({b, color, depth, pixels});
     };
     // The first target's depth/stencil buffer serves them all (XNA: MRT use the first's).
     if (targets.empty()) note(RenderTargetBinding(backBuffer.get()), depthStencil);

@@ -201,11 +201,13 @@ public:
     // The targets that draws and executed clears wrote since the mark (each binding once, in the
     // order first written); a target only bound is not among them. color: a draw or a colour clear
     // wrote it; depthStencil: a draw tested or a clear wrote its depth/stencil buffer, which then
-    // exists (lazy storage makes it on demand; MRT use the first target's).
+    // exists (lazy storage makes it on demand; MRT use the first target's). pixels: the largest
+    // area one draw (viewport, within the scissor when on) or clear covered.
     struct WrittenTarget {
         RenderTargetBinding binding;
         bool color = false;
         bool depthStencil = false;
+        double pixels = 0;
     };
     std::vector<WrittenTarget> targetsWrittenSinceMark() const;
 
