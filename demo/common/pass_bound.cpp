@@ -77,23 +77,21 @@ void PassBound::end(const std::string& pass) {
             width = height = cube->Size();
             format = cube->Format(), depth = cube->DepthStencilFormat();
         }
-        // The part of the target the pass's widest draw or clear covered (a viewport, a scissor).
-        const double covered = width > 0 && height > 0 ? written.pixels / (double(width) * height) : 0.0;
-        double bytes = 0;
-        if (written.color) bytes += double(RenderTargetBytes(width, height, 1, format, DepthFormat::None)) * covered;
-        if (written.depthStencil) bytes += depthBytes(width, height, format, depth) * covered;
+        const double pixels = double(width) * height;
+        double bytes = 0;  // the whole target's
+        if (written.color) bytes += double(RenderTargetBytes(width, height, 1, format, DepthFormat::None));
+        if (written.depthStencil) bytes += depthBytes(width, height, format, depth);
         // The pass's fragments are written at the rate of the first target it wrote.
         if (work.fragmentRateGBps == 0) work.fragmentRateGBps = rate(format);
-        work.targets.push_back({bytes, rate(format)});
-        run.pixels = std::max(run.pixels, double(width) * height);
+        run.written.push_back({written.drawnPixels, written.clearedPixels, pixels > 0 ? bytes / pixels : 0, rate(format)});
+        run.pixels = std::max(run.pixels, pixels);
     }
     if (limits) work.fetchRateGTexelsPerSecond = limits->fetchGTexelsPerSecond;
     if (tallyDevice_ == device && !openTallyMarks_.empty()) {
         run.tallyFrom = openTallyMarks_.back();
         openTallyMarks_.pop_back();
         run.tallyTo = device->fragmentTallyMark();
-    } else {
-        run.tallied = true;  // nothing to read: no fragments, no fetches
+        run.counted = true;
     }
     runs_[pass].push_back(run);
 }
@@ -101,10 +99,16 @@ void PassBound::end(const std::string& pass) {
 void PassBound::readTally(Run& run) {
     if (run.tallied) return;
     run.tallied = true;
-    if (!tallyDevice_) return;
-    for (const GraphicsDevice::FragmentTally& t : tallyDevice_->fragmentTallies(run.tallyFrom, run.tallyTo)) {
-        run.work.fragments += t.fragments;
-        run.work.fetchRuns.push_back({t.fragments, t.fetchesLeast, t.fetchesMost, t.fetchesUnbounded});
+    if (run.counted && tallyDevice_)
+        for (const GraphicsDevice::FragmentTally& t : tallyDevice_->fragmentTallies(run.tallyFrom, run.tallyTo)) {
+            run.work.fragments += t.fragments;
+            run.work.fetchRuns.push_back({t.fragments, t.fetchesLeast, t.fetchesMost, t.fetchesUnbounded});
+        }
+    // Each target once: what its widest clear covered, or its widest draw's viewport -- which a
+    // draw's fragments bound when they were counted (a pixel written needs a fragment that passed).
+    for (const Written& w : run.written) {
+        const double drawn = run.counted ? std::min(w.drawnPixels, run.work.fragments) : w.drawnPixels;
+        run.work.targets.push_back({std::max(drawn, w.clearedPixels) * w.bytesPerPixel, w.rateGBps});
     }
 }
 
@@ -131,7 +135,10 @@ double PassBound::bytesPerRun(const std::string& pass) {
     auto found = runs_.find(pass);
     if (found == runs_.end() || found->second.empty()) return 0.0;
     std::vector<double> bytes;
-    for (const Run& r : found->second) bytes.push_back(estimate(r.work).bytes);
+    for (Run& r : found->second) {
+        readTally(r);
+        bytes.push_back(estimate(r.work).bytes);
+    }
     return median(bytes);
 }
 

@@ -1,9 +1,11 @@
 // fxport addition (issue 16): each timed pass next to what this GPU can do. While `device` is set,
 // every PassTimer records what the pass wrote and fetched, and the timing tables print
 //   MB          the targets the pass wrote (draws or clears; a target only bound is not counted),
-//               each once: the pixels its widest draw (viewport, scissor) or clear covered x the
-//               format's bytes, + its depth/stencil buffer's where a draw tested it or a clear wrote
-//               it (a buffer lazy depth storage never made has none)
+//               each once: the pixels its widest clear or draw covered x the format's bytes, + its
+//               depth/stencil buffer's where a draw tested it or a clear wrote it (a buffer lazy
+//               depth storage never made has none). A draw covers at most its viewport (within the
+//               scissor) and, with fragments counted, at most the pass's fragments: a sprite in a
+//               corner of the back buffer does not count the whole of it
 //   fill ms     max(those bytes, fragments x the widest colour bytes one fragment wrote) at this
 //               GPU's fill rate for the format (opaque, or additive when a draw blended)
 //   fetch ms    the texture fetches the draws made at the probe's bilinear fetch rate (--bounds)
@@ -62,8 +64,15 @@ public:
     static std::string columns(const std::string& pass, double medianMs);
 
 private:
+    struct Written {                   // a target the pass wrote (GraphicsDevice::WrittenTarget)
+        double drawnPixels = 0, clearedPixels = 0;
+        double bytesPerPixel = 0;      // colour and depth/stencil as written
+        double rateGBps = 0;
+    };
     struct Run {
-        PassWork work;                 // fragments and fetches filled in from the tally when read
+        PassWork work;                 // targets, fragments and fetches filled in when the tally is read
+        std::vector<Written> written;
+        bool counted = false;          // fragments were counted (the tally was on)
         std::size_t tallyFrom = 0, tallyTo = 0;
         bool tallied = false;          // the tally's runs were read into `work`
         double pixels = 0;

@@ -212,7 +212,7 @@ TEST(FragmentTally, TargetsWrittenAreThoseDrawnNotThoseOnlyBound) {
     EXPECT_EQ(written[0].binding.RenderTarget, &plain);
     EXPECT_TRUE(written[0].color);
     EXPECT_FALSE(written[0].depthStencil);
-    EXPECT_EQ(written[0].pixels, 32);
+    EXPECT_EQ(written[0].drawnPixels, 32);
 
     d.device->SetRenderTarget(withDepth);
     d.draw(Vector4(0, 1, 0, 1));  // DepthStencilState::None: its depth buffer is not made
@@ -237,7 +237,7 @@ TEST(FragmentTally, TargetsWrittenAreThoseDrawnNotThoseOnlyBound) {
     d.device->RasterizerState = RasterizerState::CullNone;
     written = d.device->targetsWrittenSinceMark();
     ASSERT_EQ(written.size(), 1u);
-    EXPECT_EQ(written[0].pixels, 6);
+    EXPECT_EQ(written[0].drawnPixels, 6);
 
     d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
 }

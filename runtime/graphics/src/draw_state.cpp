@@ -76,7 +76,7 @@ void GraphicsDevice::Impl::flush(const char* what) {
             const int x1 = std::min(area.X + area.Width, s.X + s.Width), y1 = std::min(area.Y + area.Height, s.Y + s.Height);
             area = Rectangle(x0, y0, std::max(x1 - x0, 0), std::max(y1 - y0, 0));
         }
-        noteWrittenTargets(true, depth && depth->renderbuffer != 0 && tests, area);
+        noteWrittenTargets(true, depth && depth->renderbuffer != 0 && tests, area, false);
     }
     applyDepthStencil(device.DepthStencilState);
     applyRasterizer(device.RasterizerState);

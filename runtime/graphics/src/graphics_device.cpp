@@ -291,7 +291,7 @@ bool GraphicsDevice::blendedSinceMark() const { return impl_->blendedSinceMark; 
 
 std::vector<RenderTargetBinding> GraphicsDevice::targetsBoundSinceMark() const { return impl_->boundSinceMark; }
 
-void GraphicsDevice::Impl::noteWrittenTargets(bool color, bool depthStencil, const Rectangle& area) {
+void GraphicsDevice::Impl::noteWrittenTargets(bool color, bool depthStencil, const Rectangle& area, bool cleared) {
     if (!trackingBoundTargets) return;
     // Within the target: a viewport may reach past it.
     const int x0 = std::max(area.X, 0), y0 = std::max(area.Y, 0);
@@ -303,10 +303,11 @@ void GraphicsDevice::Impl::noteWrittenTargets(bool color, bool depthStencil, con
             if (w.binding == b) {
                 w.color = w.color || color;
                 w.depthStencil = w.depthStencil || depth;
-                w.pixels = std::max(w.pixels, pixels);
+                double& most = cleared ? w.clearedPixels : w.drawnPixels;
+                most = std::max(most, pixels);
                 return;
             }
-        writtenSinceMark.push_back({b, color, depth, pixels});
+        writtenSinceMark.push_back({b, color, depth, cleared ? 0.0 : pixels, cleared ? pixels : 0.0});
     };
     // The first target's depth/stencil buffer serves them all (XNA: MRT use the first's).
     if (targets.empty()) note(RenderTargetBinding(backBuffer.get()), depthStencil);

@@ -201,13 +201,15 @@ public:
     // The targets that draws and executed clears wrote since the mark (each binding once, in the
     // order first written); a target only bound is not among them. color: a draw or a colour clear
     // wrote it; depthStencil: a draw tested or a clear wrote its depth/stencil buffer, which then
-    // exists (lazy storage makes it on demand; MRT use the first target's). pixels: the largest
-    // area one draw (viewport, within the scissor when on) or clear covered.
+    // exists (lazy storage makes it on demand; MRT use the first target's). drawnPixels: the
+    // largest area one draw could cover (its viewport, within the scissor when on); clearedPixels:
+    // the largest area one clear covered.
     struct WrittenTarget {
         RenderTargetBinding binding;
         bool color = false;
         bool depthStencil = false;
-        double pixels = 0;
+        double drawnPixels = 0;
+        double clearedPixels = 0;
     };
     std::vector<WrittenTarget> targetsWrittenSinceMark() const;
 
