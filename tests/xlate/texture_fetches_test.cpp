@@ -64,6 +64,17 @@ TEST(TextureFetches, DeferredPointLightSamples14Times) {
     expectExact(pixelShaderFetches("hlsl/xna-deferred/PointLight.fx"), 14);
 }
 
+// lighting2d's light shaders return early; SPIRV-Cross writes that as do { ... break; } while (false).
+// PointLight.fx samples the occlusion map once before its test; SpotLight.fx samples it on the
+// right of an && (only inside the spot's arc): 0..1.
+TEST(TextureFetches, Lighting2dLightsEarlyOutBlocks) {
+    expectExact(pixelShaderFetches("hlsl/lighting2d/PointLight.fx"), 1);
+    const TextureFetches spot = pixelShaderFetches("hlsl/lighting2d/SpotLight.fx");
+    EXPECT_FALSE(spot.unbounded);
+    EXPECT_EQ(spot.least, 0);
+    EXPECT_EQ(spot.most, 1);
+}
+
 TEST(TextureFetches, ConstantLoopsMultiplyAndNest) {
     const char* glsl = R"(#version 450
 layout(binding = 0) uniform sampler2D s;
@@ -143,6 +154,25 @@ void main() {
     f = countTextureFetches(counterMoved);
     EXPECT_TRUE(f.unbounded);
     EXPECT_EQ(f.least, 0);
+
+    // After a conditional break in a run-once block the rest may not run.
+    const char* earlyOut = R"(#version 450
+layout(binding = 0) uniform sampler2D s;
+layout(location = 0) out vec4 o;
+void main() {
+    vec4 c;
+    do {
+        c = texture(s, vec2(0.0));
+        if (c.x > 0.5) { break; }
+        c += texture(s, vec2(1.0)) + texture(s, vec2(2.0));
+        break;
+    } while (false);
+    o = c;
+})";
+    f = countTextureFetches(earlyOut);
+    EXPECT_FALSE(f.unbounded);
+    EXPECT_EQ(f.least, 1);
+    EXPECT_EQ(f.most, 3);
 }
 
 TEST(TextureFetches, CalledFunctionsAndConditionalReturns) {

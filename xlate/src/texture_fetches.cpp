@@ -195,8 +195,8 @@ private:
         Range r;
         while (i < end) {
             Range s = statement(i, end);
-            // After a statement that may return, the rest may not run.
-            r += r.returns ? s.maybe() : s;
+            // After a statement that may return, break or continue, the rest may not run.
+            r += r.returns || r.breaks ? s.maybe() : s;
         }
         return r;
     }
@@ -245,12 +245,18 @@ private:
             ++i;
             Range body = i < end ? statement(i, end) : Range{};
             Range condition;
+            bool once = false;  // do { ... } while (false): SPIRV-Cross's block to break out of
             if (i + 1 < end && t_[i] == "while" && t_[i + 1] == "(") {
                 const std::size_t close = matching(i + 1);
                 condition = expression(i + 2, close);
+                once = close == i + 3 && t_[i + 2] == "false";
                 i = close + 1;
             }
             if (i < end && t_[i] == ";") ++i;
+            if (once) {
+                body.breaks = false;
+                return body;
+            }
             return unknownLoop(condition, body, true);
         }
         if (tok == "switch" && i + 1 < end && t_[i + 1] == "(") {
