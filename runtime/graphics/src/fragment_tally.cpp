@@ -48,10 +48,9 @@ void FragmentRuns::read(Run& run, bool wait) {
 std::size_t FragmentRuns::mark() {
     end();
     // Results arrive in order: read those that are ready, so the queries do not pile up.
-    for (Run& run : runs_) {
-        if (!run.query) continue;
-        read(run, false);
-        if (run.query) break;
+    for (; firstUnread_ < runs_.size(); ++firstUnread_) {
+        read(runs_[firstUnread_], false);
+        if (runs_[firstUnread_].query) break;
     }
     return runs_.size();
 }

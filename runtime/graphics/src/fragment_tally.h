@@ -34,6 +34,7 @@ private:
 
     GraphicsDevice::Impl& device_;
     std::vector<Run> runs_;
+    std::size_t firstUnread_ = 0;  // runs before it have their results
     bool open_ = false;
 };
 
