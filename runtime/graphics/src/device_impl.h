@@ -97,6 +97,7 @@ struct GraphicsDevice::Impl {
     bool blendedSinceMark = false;      // set by flush() while tracking
     std::vector<WrittenTarget> writtenSinceMark;  // targetsWrittenSinceMark(), noted by flush() and executeClear()
     void noteWrittenTargets(bool color, bool depthStencil, const Rectangle& area, bool cleared);  // area: what the draw or clear covers
+    void noteDrawnTargets();  // flush(): what the draw may write (its viewport within the scissor; depth if tested)
     std::shared_ptr<FragmentRuns> fragmentTally;  // tallyFragments(true); null when off
     void tallyDraw();  // before a draw: its pixel shader's fetches to the tally (fragment_tally.cpp)
     void noteBoundTargets();

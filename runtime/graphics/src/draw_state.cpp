@@ -65,19 +65,7 @@ void GraphicsDevice::Impl::flush(const char* what) {
     resolvePendingClearBeforeDraw(device.DepthStencilState);
     applyBlend(blendForPixelShader(device.BlendState, shaders[1]->shader->outputTargets));
     if (trackingBoundTargets && device.BlendState.blendingEnabled()) blendedSinceMark = true;
-    if (trackingBoundTargets) {
-        const DepthStorage* depth = boundDepthStorage();
-        const bool tests = device.DepthStencilState.DepthBufferEnable || device.DepthStencilState.StencilEnable;
-        const fxport::Viewport& v = device.Viewport;
-        Rectangle area(v.X, v.Y, v.Width, v.Height);
-        if (device.RasterizerState.ScissorTestEnable) {
-            const Rectangle& s = device.ScissorRectangle;
-            const int x0 = std::max(area.X, s.X), y0 = std::max(area.Y, s.Y);
-            const int x1 = std::min(area.X + area.Width, s.X + s.Width), y1 = std::min(area.Y + area.Height, s.Y + s.Height);
-            area = Rectangle(x0, y0, std::max(x1 - x0, 0), std::max(y1 - y0, 0));
-        }
-        noteWrittenTargets(true, depth && depth->renderbuffer != 0 && tests, area, false);
-    }
+    noteDrawnTargets();
     applyDepthStencil(device.DepthStencilState);
     applyRasterizer(device.RasterizerState);
     applyViewport(device.Viewport);

@@ -314,6 +314,21 @@ void GraphicsDevice::Impl::noteWrittenTargets(bool color, bool depthStencil, con
     for (std::size_t i = 0; i < targets.size(); ++i) note(targets[i], depthStencil && i == 0);
 }
 
+void GraphicsDevice::Impl::noteDrawnTargets() {
+    if (!trackingBoundTargets) return;
+    const DepthStorage* depth = boundDepthStorage();  // made by now if the draw needs it
+    const bool tests = device.DepthStencilState.DepthBufferEnable || device.DepthStencilState.StencilEnable;
+    const fxport::Viewport& v = device.Viewport;
+    Rectangle area(v.X, v.Y, v.Width, v.Height);
+    if (device.RasterizerState.ScissorTestEnable) {
+        const Rectangle& s = device.ScissorRectangle;
+        const int x0 = std::max(area.X, s.X), y0 = std::max(area.Y, s.Y);
+        const int x1 = std::min(area.X + area.Width, s.X + s.Width), y1 = std::min(area.Y + area.Height, s.Y + s.Height);
+        area = Rectangle(x0, y0, std::max(x1 - x0, 0), std::max(y1 - y0, 0));
+    }
+    noteWrittenTargets(true, depth && depth->renderbuffer != 0 && tests, area, false);
+}
+
 std::vector<GraphicsDevice::WrittenTarget> GraphicsDevice::targetsWrittenSinceMark() const {
     return impl_->writtenSinceMark;
 }
