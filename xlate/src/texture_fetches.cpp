@@ -183,8 +183,9 @@ private:
             if (tok == "?" || tok == "&&" || tok == "||") conditional = true;
             if (!isIdentifier(tok) || i + 1 >= end || t_[i + 1] != "(") continue;
             Range call;
-            if (isSamplingCall(tok)) call.least = call.most = 1;
-            else if (functions_.count(tok)) call = function(tok);
+            // The shader's own functions first: HLSL code may name one textureSomething.
+            if (functions_.count(tok)) call = function(tok);
+            else if (isSamplingCall(tok)) call.least = call.most = 1;
             r += conditional ? call.maybe() : call;
         }
         return r;
