@@ -11,6 +11,7 @@
 
 #include "fxport/graphics/gpu_limits.h"
 #include "fxport/graphics/gpu_timer.h"
+#include "fxport/platform/gl.h"
 #include "runtime_test_support.h"
 
 namespace fxport {
@@ -192,6 +193,30 @@ TEST(FragmentTally, CountsFragmentsPerRunOfDrawsWithTheSameFetches) {
     EXPECT_FALSE(runs[1].fetchesUnbounded);
     d.device->tallyFragments(false);
     EXPECT_TRUE(d.device->fragmentTallies(from, to).empty());
+    d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+}
+
+// GL counts one GL_SAMPLES_PASSED query at a time: with the tally on, a GpuTimer asked to count
+// fragments leaves them to the tally (no GL error, no fragments in its sections).
+TEST(FragmentTally, GpuTimerLeavesFragmentsToTheTally) {
+    Device d;
+    RenderTarget2D target(*d.device, 8, 4, false, SurfaceFormat::Vector4, DepthFormat::None);
+    d.device->SetRenderTarget(target);
+    d.device->tallyFragments(true);
+    GpuTimer timer(*d.device);
+    timer.CountFragments(true);
+    const std::size_t from = d.device->fragmentTallyMark();
+    timer.Begin("pass");
+    d.draw(Vector4(1, 0, 0, 1));
+    timer.End();
+    timer.EndFrame();
+    timer.Finish();
+    const std::size_t to = d.device->fragmentTallyMark();
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    for (const GpuTimer::Section& section : timer.Sections()) EXPECT_TRUE(section.fragments.empty()) << section.name;
+    const std::vector<GraphicsDevice::FragmentTally> runs = d.device->fragmentTallies(from, to);
+    ASSERT_EQ(runs.size(), 1u);
+    EXPECT_EQ(runs[0].fragments, 32);
     d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
 }
 
