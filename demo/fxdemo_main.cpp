@@ -23,8 +23,9 @@ const char* kCommonOptions =
     "  --frames N        frames to run headless          --out DIR   where the images go\n"
     "  --gpu             headless on the GPU (EGL)       --window    a GLFW window instead of headless OSMesa\n"
     "  --check-finite    (the four demos) after each pass, stop at the first NaN/Inf in a target\n"
-    "  --bounds          (the four demos) each pass's bound and ms / bound in the timing table: this GPU's\n"
-    "                    fill rates (GpuLimits, measured once and cached) x the fragments the pass wrote\n"
+    "  --bounds          (the four demos) each pass's bound and ms / bound in the timing table: the bytes\n"
+    "                    and fragments it wrote at this GPU's fill rates, its texture fetches at the fetch\n"
+    "                    rate (GpuLimits, measured once and cached), the larger of the two\n"
     "  --define N=V      (the four demos, repeatable) a #define every effect is compiled with,\n"
     "                    e.g. --define 'pow(x, y)=pow(max(x, 1e-30), y)' (see fxdemo stability)\n";
 

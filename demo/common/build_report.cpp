@@ -1,5 +1,7 @@
 #include "common/build_report.h"
 
+#include "common/pass_bound.h"
+
 #include <algorithm>
 #include <set>
 
@@ -120,7 +122,7 @@ void BuildReport::addTarget(const RenderTargetCube& target) {
 
 void BuildReport::addPasses(const GpuTimer& timer) {
     for (const GpuTimer::Section& section : timer.Sections())
-        if (section.name != "frame") passes.push_back(section.name);
+        if (section.name != "frame") passes.push_back(section.name), passMs.push_back(section.medianMs());
 }
 
 void BuildReport::addClears(const GraphicsDevice& device) {
@@ -201,6 +203,15 @@ void PrintExplain(std::FILE* out, const BuildReport& built, const BuildReport& a
         ++leftOut;
     }
     std::fprintf(out, "%s\n", leftOut ? "" : " none");
+    // --bounds: each pass of this run against its bound (common/pass_bound.h), as the timing table.
+    bool boundsHeader = false;
+    for (std::size_t i = 0; i < built.passes.size() && i < built.passMs.size(); ++i) {
+        if (PassBound::boundMs(built.passes[i]) <= 0) continue;
+        if (!boundsHeader) std::fprintf(out, "pass bounds (ms; bytes written; fill, fetch and bound ms; ms / bound):\n");
+        boundsHeader = true;
+        std::fprintf(out, "  %-16s %9.3f ms%s\n", built.passes[i].c_str(), built.passMs[i],
+                     PassBound::columns(built.passes[i], built.passMs[i]).c_str());
+    }
 
     if (built.hasClears || all.hasClears) {
         // Targets' and back buffers' depth/stencil buffers over the run: made at the first draw that

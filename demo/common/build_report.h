@@ -34,6 +34,7 @@ struct BuildReport {
     std::vector<EffectEntry> effects;
     std::vector<TargetEntry> targets;
     std::vector<std::string> passes;  // GpuTimer sections that ran, in order ("frame" left out)
+    std::vector<double> passMs;       // their median ms (for the bounds of --bounds)
     DepthStorageStatistics depthStorage;  // GraphicsDevice::depthStorageStatistics(), by addClears too
     // GraphicsDevice::clearStatistics() since the device was made (issue 16), once addClears ran.
     bool hasClears = false;

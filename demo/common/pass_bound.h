@@ -1,17 +1,24 @@
 // fxport addition (issue 16): each timed pass next to what this GPU can do. While `device` is set,
-// every PassTimer records the bytes of the targets the pass bound (each binding once: width x
-// height x the format's bytes, + its depth buffer; the back buffer included) -- the bytes the pass
-// writes if its draws cover each target's viewport once -- and the widest colour bytes one fragment
-// wrote and whether it blended. The bound of a pass is the time the GPU needs just to write its
-// output: max(those bytes, the fragments the pass wrote (GpuTimer::CountFragments) x bytes per
-// fragment) at this GPU's fill rate for the format. The rate comes from `limits` (--bounds: the
-// runtime's GpuLimits probe, measured once per device and cached) or from `fillRateGBps`
-// (--fill-rate GB/s, one rate for every format). The timing tables print MB, bound ms and
-// ms / bound. Texture fetches are not in the bound: a pass far above it that samples a lot is
-// fetch-bound (the probe prints the fetch rate to compare with). A pass whose draws ran as compute
-// dispatches (PresentationParameters::ComputePasses) writes nothing GL_SAMPLES_PASSED counts: its
-// target bytes are bounded at the probe's compute write rate and the table says "compute" instead
-// of fragments per pixel.
+// every PassTimer records what the pass wrote and fetched, and the timing tables print
+//   MB          the targets the pass wrote (draws or clears; a target only bound is not counted),
+//               each once: the pixels its widest clear or draw covered x the format's bytes, + its
+//               depth/stencil buffer's where a draw tested it or a clear wrote it (a buffer lazy
+//               depth storage never made has none). A draw covers at most its viewport (within the
+//               scissor) and, with fragments counted, at most the pass's fragments: a sprite in a
+//               corner of the back buffer does not count the whole of it
+//   fill ms     max(those bytes, fragments x the widest colour bytes one fragment wrote) at this
+//               GPU's fill rate for the format (opaque, or additive when a draw blended)
+//   fetch ms    the texture fetches the draws made at the probe's bilinear fetch rate (--bounds)
+//   bound ms    the larger of the two; then x(ms / bound), fragments per pixel and fetches per
+//               fragment (common/pass_estimate.h has the arithmetic)
+// Fragments and fetches come from the device's fragment tally (GraphicsDevice::tallyFragments:
+// GL_SAMPLES_PASSED per run of draws whose pixel shaders make the same fetches per fragment, the
+// fetches counted in the shader's GLSL by xlate::countTextureFetches). The rates come from `limits`
+// (--bounds: the runtime's GpuLimits probe, measured once per device and cached) or from
+// `fillRateGBps` (--fill-rate GB/s, one rate for every format; no fragments or fetches then).
+// A pass whose draws ran as compute dispatches (PresentationParameters::ComputePasses) writes no
+// fragments GL_SAMPLES_PASSED counts: its target bytes are bounded at the probe's compute write rate
+// and the table says "compute" instead of fragments per pixel.
 #pragma once
 
 #include <map>
@@ -19,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "common/pass_estimate.h"
 #include "fxport/graphics/gpu_limits.h"
 #include "fxport/graphics/gpu_timer.h"
 #include "fxport/graphics/graphics_device.h"
@@ -32,35 +40,49 @@ public:
     static inline std::optional<GpuLimits> limits;   // --bounds: the measured rates
 
     // Sets the above from the run's device and options; with `bounds` (--bounds), measures (or
-    // loads) the limits, prints them on stdout and has `timer` count fragments.
-    static void setUp(GraphicsDevice& runDevice, double fillRate, bool bounds, GpuTimer* timer);
+    // loads) the limits, prints them on stdout and has the device tally fragments and fetches.
+    static void setUp(GraphicsDevice& runDevice, double fillRate, bool bounds);
+    // Has the device tally fragments by fetches from now on (what setUp does with --bounds).
+    static void tallyOn(GraphicsDevice& runDevice);
 
     static void forgetRuns();             // a new measurement (fxdemo report: per setting)
     static void begin();                  // at a pass's start (PassTimer)
-    static void end(const std::string& pass);  // at its end: adds the bound targets' bytes
-    // Bytes per run of `pass` (the median over its runs, as the times are); 0 when it never ran
-    // while recording.
+    static void end(const std::string& pass);  // at its end: what the pass wrote
+    // The pass's estimate (the median run's, by bound), its fragments and pixels; nullopt when it
+    // never ran while recording. Reading the fragment tally waits for the GPU.
+    struct Summary {
+        PassEstimate estimate;
+        double fragments = 0;  // per run
+        double pixels = 0;     // the largest written target's
+        long dispatches = 0;   // draws that ran as compute dispatches
+    };
+    static std::optional<Summary> summary(const std::string& pass);
     static double bytesPerRun(const std::string& pass);
-    // The bound in ms of `pass` having written `fragments` fragments per run; 0 without a rate.
-    static double boundMs(const std::string& pass, double fragments);
-    // The timing table's extra columns for a section: "  12.3 MB" and, with a rate,
-    // "  bound 0.216 ms  x5.7" (and the fragments per pixel of the targets, when counted);
-    // "" when nothing was recorded.
+    static double boundMs(const std::string& pass);  // 0 without a rate
+    // The timing table's extra columns for a section (see the top); "" when nothing was recorded.
     static std::string columns(const GpuTimer::Section& section);
-    static std::string columns(const std::string& pass, double medianMs, double fragments = 0);
+    static std::string columns(const std::string& pass, double medianMs);
 
 private:
-    struct Run {
-        double bytes = 0;        // the bound targets' bytes, each once
-        double writeOnceMs = 0;  // those bytes at the formats' rates (0 without limits)
-        int fragmentBytes = 0;   // the widest colour bytes of one fragment
-        bool blended = false;
-        double rateGBps = 0;     // the fill rate of the widest set's first format
-        double pixels = 0;       // the largest bound target's pixels (fragments/px)
-        long dispatches = 0;     // draws that ran as compute dispatches
+    struct Written {                   // a target the pass wrote (GraphicsDevice::WrittenTarget)
+        double drawnPixels = 0, clearedPixels = 0;
+        double bytesPerPixel = 0;      // colour and depth/stencil as written
+        double rateGBps = 0;
     };
+    struct Run {
+        PassWork work;                 // targets, fragments and fetches filled in when the tally is read
+        std::vector<Written> written;
+        bool counted = false;          // fragments were counted (the tally was on)
+        std::size_t tallyFrom = 0, tallyTo = 0;
+        bool tallied = false;          // the tally's runs were read into `work`
+        double pixels = 0;
+        long dispatches = 0;
+    };
+    static void readTally(Run& run);
     static inline std::map<std::string, std::vector<Run>> runs_;
     static inline long dispatchedAtBegin_ = 0;
+    static inline GraphicsDevice* tallyDevice_ = nullptr;  // the device whose tally the runs index
+    static inline std::vector<std::size_t> openTallyMarks_;  // per open pass (passes nest)
 };
 
 }  // namespace fxport::demo

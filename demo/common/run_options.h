@@ -24,7 +24,7 @@ struct CommonOptions {
     std::string platform = "osmesa"; // --gpu: egl, --window: glfw
     bool checkFinite = false;        // --check-finite
     double fillRateGBps = 0;         // --fill-rate GB/s: the timing table's bound column (PassBound)
-    bool bounds = false;             // --bounds: GpuLimits' rates and counted fragments (PassBound)
+    bool bounds = false;             // --bounds: GpuLimits' rates, counted fragments and fetches (PassBound)
     // --define NAME=VALUE: passed to every effect (EffectOptions::defines), e.g. the stability
     // suite's opt-in fixes: --define 'pow(x, y)=pow(max(x, 1e-30), y)'. Split at the first '='.
     std::vector<std::pair<std::string, std::string>> defines;

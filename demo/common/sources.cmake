@@ -3,4 +3,5 @@ list(APPEND FXDEMO_SOURCES
   common/build_report.cpp
   common/finite_check.cpp
   common/pass_bound.cpp
+  common/pass_estimate.cpp
   common/tile_sheet.cpp)

@@ -88,7 +88,7 @@ int RunDeferred(const RunOptions& options) {
     game.demo.gpuTimer = timer.get();
     const bool sync = options.syncPasses.value_or(options.platform == "osmesa");
     PassTimer::syncDevice = sync ? game.GraphicsDevice : nullptr;
-    fxport::demo::PassBound::setUp(*game.GraphicsDevice, options.fillRateGBps, options.bounds, timer.get());
+    fxport::demo::PassBound::setUp(*game.GraphicsDevice, options.fillRateGBps, options.bounds);
     fxport::demo::FiniteCheckScope finite(game.GraphicsDevice, options.checkFinite);
 
     std::printf("fxdemo deferred: %dx%d on %s (%s)\n", options.width, options.height, options.platform.c_str(),

@@ -308,7 +308,7 @@ int runLighting2d(int argc, char** argv) {
     if (check) game.checkCapture = &checkCapture;
     const bool sync = platformName == "osmesa";
     PassTimer::syncDevice = sync ? game.GraphicsDevice : nullptr;
-    fxport::demo::PassBound::setUp(*game.GraphicsDevice, common.fillRateGBps, common.bounds, timer.get());
+    fxport::demo::PassBound::setUp(*game.GraphicsDevice, common.fillRateGBps, common.bounds);
     fxport::demo::FiniteCheckScope finite(game.GraphicsDevice, common.checkFinite);
     std::printf("fxdemo lighting2d: %dx%d on %s (%s); %zu spot lights, %zu point lights\n", width, height,
                 platformName.c_str(), game.GraphicsDevice->rendererName().c_str(),

@@ -146,7 +146,7 @@ int runPointLights(int argc, char** argv) {
     game.getRenderer().setGpuTimer(timer.get());
     const bool sync = common.platform == "osmesa";
     PassTimer::syncDevice = sync ? game.GraphicsDevice : nullptr;
-    fxport::demo::PassBound::setUp(*game.GraphicsDevice, common.fillRateGBps, common.bounds, timer.get());
+    fxport::demo::PassBound::setUp(*game.GraphicsDevice, common.fillRateGBps, common.bounds);
     fxport::demo::FiniteCheckScope finite(game.GraphicsDevice, common.checkFinite);
 
     const Camera& camera = game.getCamera();

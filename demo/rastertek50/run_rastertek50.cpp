@@ -126,7 +126,7 @@ int runRastertek50(int argc, char** argv) {
         application.SetGpuTimer(timer.get());
         const bool sync = common.platform == "osmesa";
         fxport::demo::PassTimer::syncDevice = sync ? &device : nullptr;
-        fxport::demo::PassBound::setUp(device, common.fillRateGBps, common.bounds, timer.get());
+        fxport::demo::PassBound::setUp(device, common.fillRateGBps, common.bounds);
         fxport::demo::FiniteCheckScope finite(&device, common.checkFinite);
         std::printf("fxdemo rastertek50: %dx%d on %s (%s)\n", common.width, common.height, common.platform.c_str(),
                     device.rendererName().c_str());

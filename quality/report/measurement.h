@@ -39,6 +39,8 @@ struct Measurement {
     double frameMs = 0;     // median GPU time of the whole frame
     std::vector<std::pair<std::string, double>> passMs;  // median GPU time per pass
     std::vector<double> passBoundMs;  // --bounds: each pass's bound (common/pass_bound.h), as passMs
+    std::vector<double> passFillMs;   // --bounds: its two terms (common/pass_estimate.h): fill
+    std::vector<double> passFetchMs;  // and texture fetches
     ImageError error;
     std::string reference;  // which reference the error is against
     // A second error where a demo has one: the deferred demo's LightMap target (RGBA, A = specular)

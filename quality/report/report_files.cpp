@@ -24,9 +24,13 @@ std::string passes(const Measurement& m, const char* separator) {
     for (std::size_t i = 0; i < m.passMs.size(); ++i) {
         const auto& [name, ms] = m.passMs[i];
         s += (s.empty() ? "" : separator) + name + " " + fixed(ms, "%.3f");
-        // --bounds: "(bound 0.147 x1.3)", the pass's bound and ms / bound
-        if (i < m.passBoundMs.size() && m.passBoundMs[i] > 0)
-            s += " (bound " + fixed(m.passBoundMs[i], "%.3f") + " x" + fixed(ms / m.passBoundMs[i], "%.1f") + ")";
+        // --bounds: "(fill 0.147 fetch 0.021 bound 0.147 x1.3)", the bound's terms, the bound and ms / bound
+        if (i < m.passBoundMs.size() && m.passBoundMs[i] > 0) {
+            s += " (";
+            if (i < m.passFillMs.size() && i < m.passFetchMs.size())
+                s += "fill " + fixed(m.passFillMs[i], "%.3f") + " fetch " + fixed(m.passFetchMs[i], "%.3f") + " ";
+            s += "bound " + fixed(m.passBoundMs[i], "%.3f") + " x" + fixed(ms / m.passBoundMs[i], "%.1f") + ")";
+        }
     }
     return s;
 }

@@ -140,8 +140,10 @@ int runReport(int argc, char** argv) {
                         m.lightMapErrorVsIdealEsm.rms, m.lightMapErrorVsIdealEsm.max);
         for (std::size_t i = 0; i < m.passBoundMs.size() && i < m.passMs.size(); ++i)  // --bounds
             if (m.passBoundMs[i] > 0)
-                std::printf("%s%s %.3f (bound %.3f x%.1f)", i ? ", " : "\n    passes: ", m.passMs[i].first.c_str(),
-                            m.passMs[i].second, m.passBoundMs[i], m.passMs[i].second / m.passBoundMs[i]);
+                std::printf("%s%s %.3f (fill %.3f fetch %.3f bound %.3f x%.1f)", i ? ", " : "\n    passes: ",
+                            m.passMs[i].first.c_str(), m.passMs[i].second, i < m.passFillMs.size() ? m.passFillMs[i] : 0.0,
+                            i < m.passFetchMs.size() ? m.passFetchMs[i] : 0.0, m.passBoundMs[i],
+                            m.passMs[i].second / m.passBoundMs[i]);
         std::printf("\n");
         std::fflush(stdout);
     };
@@ -202,5 +204,5 @@ FXDEMO_PROGRAM(report,
                "  --quick        tiny sizes, one timed frame: a smoke run\n"
                "  --check        assert what must hold on any machine (exit 1 if not)\n"
                "  --demos LIST   which sweeps: rastertek50,lighting2d,pointlights,deferred (all)\n"
-               "  --bounds       each pass's bound and ms / bound beside its time (GpuLimits x its fragments)",
+               "  --bounds       each pass's bound (fill, texture fetches) and ms / bound beside its time (common/pass_bound.h)",
                fxport::report::runReport);

@@ -21,7 +21,7 @@ void runTimedFrames(GraphicsDevice& device, GpuTimer& timer, const SweepOptions&
         if (!demo::PassBound::limits) demo::PassBound::limits = GpuLimits::ForDevice(device);
         demo::PassBound::device = &device;
         demo::PassBound::forgetRuns();
-        timer.CountFragments(true);
+        demo::PassBound::tallyOn(device);
     }
     // Warm-up frames first (shader programs linked, targets first touched, GPU clocks up after the
     // CPU-only work of the previous setting): timed like the others, then dropped.
@@ -47,12 +47,19 @@ void runTimedFrames(GraphicsDevice& device, GpuTimer& timer, const SweepOptions&
     };
     m.passMs.clear();
     m.passBoundMs.clear();
+    m.passFillMs.clear();
+    m.passFetchMs.clear();
     for (const GpuTimer::Section& section : timer.Sections()) {
         if (section.name == "frame") {
             m.frameMs = median(section.milliseconds);
         } else {
             m.passMs.emplace_back(section.name, median(section.milliseconds));
-            if (options.bounds) m.passBoundMs.push_back(demo::PassBound::boundMs(section.name, median(section.fragments)));
+            if (options.bounds) {
+                const std::optional<demo::PassBound::Summary> bound = demo::PassBound::summary(section.name);
+                m.passBoundMs.push_back(bound ? bound->estimate.boundMs() : 0.0);
+                m.passFillMs.push_back(bound ? bound->estimate.fillMs : 0.0);
+                m.passFetchMs.push_back(bound ? bound->estimate.fetchMs : 0.0);
+            }
         }
     }
     m.size = std::to_string(device.PresentationParameters().BackBufferWidth) + "x" +

@@ -1,6 +1,8 @@
 // The GPU-limits probe and the fragment counts a pass's bound is made of (issue 16): the probe
 // measures positive, finite rates, leaves the device drawing as before, and its cache holds what it
-// wrote; GpuTimer's fragment counts are the exact number of pixels a draw covered.
+// wrote; GpuTimer's fragment counts are the exact number of pixels a draw covered; the device's
+// fragment tally splits them by the pixel shader's texture fetches, and targetsWrittenSinceMark lists
+// only what draws and clears wrote (issue 16 item 2's per-pass bounds).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,6 +11,7 @@
 
 #include "fxport/graphics/gpu_limits.h"
 #include "fxport/graphics/gpu_timer.h"
+#include "fxport/platform/gl.h"
 #include "runtime_test_support.h"
 
 namespace fxport {
@@ -155,6 +158,112 @@ TEST(GpuTimer, CountsTheFragmentsEachOutermostSectionWrote) {
     EXPECT_EQ(whole, 32);
     EXPECT_EQ(scissored, 6 + 32);  // the scissored draw and the nested whole-target one
     EXPECT_EQ(nestedCounts, 0u);
+    d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+}
+
+// Runs of draws whose pixel shaders fetch alike: SolidColor (0 fetches) over the whole 8x4 target,
+// then Sample (1 tex2D) scissored to 3x2 and over the whole target: one run of 6 + 32 fragments.
+TEST(FragmentTally, CountsFragmentsPerRunOfDrawsWithTheSameFetches) {
+    Device d;
+    RenderTarget2D target(*d.device, 8, 4, false, SurfaceFormat::Vector4, DepthFormat::None);
+    Texture2D texture(*d.device, 2, 2);
+    d.effect->Parameters["Tex"].SetValue(&texture);
+    d.device->SetRenderTarget(target);
+    d.device->tallyFragments(true);
+    const std::size_t from = d.device->fragmentTallyMark();
+    d.draw(Vector4(1, 0, 0, 1));
+    d.effect->CurrentTechnique = d.effect->Techniques["Sample"];
+    RasterizerState scissored = RasterizerState::CullNone;
+    scissored.ScissorTestEnable = true;
+    d.device->RasterizerState = scissored;
+    d.device->ScissorRectangle = Rectangle(2, 1, 3, 2);
+    d.effect->CurrentTechnique->Passes[0].Apply();
+    drawQuad(*d.device);
+    d.device->RasterizerState = RasterizerState::CullNone;
+    d.effect->CurrentTechnique->Passes[0].Apply();
+    drawQuad(*d.device);
+    const std::size_t to = d.device->fragmentTallyMark();
+    const std::vector<GraphicsDevice::FragmentTally> runs = d.device->fragmentTallies(from, to);
+    ASSERT_EQ(runs.size(), 2u);
+    EXPECT_EQ(runs[0].fragments, 32);
+    EXPECT_EQ(runs[0].fetchesLeast, 0);
+    EXPECT_EQ(runs[1].fragments, 6 + 32);
+    EXPECT_EQ(runs[1].fetchesLeast, 1);
+    EXPECT_EQ(runs[1].fetchesMost, 1);
+    EXPECT_FALSE(runs[1].fetchesUnbounded);
+    d.device->tallyFragments(false);
+    EXPECT_TRUE(d.device->fragmentTallies(from, to).empty());
+    d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+}
+
+// GL counts one GL_SAMPLES_PASSED query at a time: with the tally on, a GpuTimer asked to count
+// fragments leaves them to the tally (no GL error, no fragments in its sections).
+TEST(FragmentTally, GpuTimerLeavesFragmentsToTheTally) {
+    Device d;
+    RenderTarget2D target(*d.device, 8, 4, false, SurfaceFormat::Vector4, DepthFormat::None);
+    d.device->SetRenderTarget(target);
+    d.device->tallyFragments(true);
+    GpuTimer timer(*d.device);
+    timer.CountFragments(true);
+    const std::size_t from = d.device->fragmentTallyMark();
+    timer.Begin("pass");
+    d.draw(Vector4(1, 0, 0, 1));
+    timer.End();
+    timer.EndFrame();
+    timer.Finish();
+    const std::size_t to = d.device->fragmentTallyMark();
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    for (const GpuTimer::Section& section : timer.Sections()) EXPECT_TRUE(section.fragments.empty()) << section.name;
+    const std::vector<GraphicsDevice::FragmentTally> runs = d.device->fragmentTallies(from, to);
+    ASSERT_EQ(runs.size(), 1u);
+    EXPECT_EQ(runs[0].fragments, 32);
+    d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+}
+
+// Only what draws wrote: a target bound at the mark but never drawn into is not listed; a depth
+// buffer counts once a draw tested it (and lazy storage made it); the area is the draw's.
+TEST(FragmentTally, TargetsWrittenAreThoseDrawnNotThoseOnlyBound) {
+    Device d;
+    RenderTarget2D withDepth(*d.device, 8, 4, false, SurfaceFormat::Color, DepthFormat::Depth24Stencil8, 0,
+                             RenderTargetUsage::PreserveContents);
+    RenderTarget2D plain(*d.device, 8, 4, false, SurfaceFormat::Vector4, DepthFormat::None, 0,
+                         RenderTargetUsage::PreserveContents);
+    d.device->SetRenderTarget(withDepth);
+    d.device->markBoundTargets();
+    d.device->SetRenderTarget(plain);
+    d.draw(Vector4(1, 0, 0, 1));
+    std::vector<GraphicsDevice::WrittenTarget> written = d.device->targetsWrittenSinceMark();
+    ASSERT_EQ(written.size(), 1u);
+    EXPECT_EQ(written[0].binding.RenderTarget, &plain);
+    EXPECT_TRUE(written[0].color);
+    EXPECT_FALSE(written[0].depthStencil);
+    EXPECT_EQ(written[0].drawnPixels, 32);
+
+    d.device->SetRenderTarget(withDepth);
+    d.draw(Vector4(0, 1, 0, 1));  // DepthStencilState::None: its depth buffer is not made
+    written = d.device->targetsWrittenSinceMark();
+    ASSERT_EQ(written.size(), 2u);
+    EXPECT_EQ(written[1].binding.RenderTarget, &withDepth);
+    EXPECT_FALSE(written[1].depthStencil);
+    d.device->DepthStencilState = DepthStencilState::Default;
+    d.draw(Vector4(0, 0, 1, 1));
+    written = d.device->targetsWrittenSinceMark();
+    ASSERT_EQ(written.size(), 2u);
+    EXPECT_TRUE(written[1].depthStencil);
+
+    // The area: a draw scissored to 3x2 covers 6 pixels of the target.
+    d.device->SetRenderTarget(plain);
+    d.device->markBoundTargets();
+    RasterizerState scissored = RasterizerState::CullNone;
+    scissored.ScissorTestEnable = true;
+    d.device->RasterizerState = scissored;
+    d.device->ScissorRectangle = Rectangle(2, 1, 3, 2);
+    d.draw(Vector4(1, 0, 1, 1));
+    d.device->RasterizerState = RasterizerState::CullNone;
+    written = d.device->targetsWrittenSinceMark();
+    ASSERT_EQ(written.size(), 1u);
+    EXPECT_EQ(written[0].drawnPixels, 6);
+
     d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
 }
 

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <unordered_map>
@@ -14,6 +15,7 @@
 
 #include "fxport/graphics/graphics_device.h"
 #include "fxport/platform/gl.h"
+#include "fxport/xlate/texture_fetches.h"
 
 namespace fxport::xlate {
 struct CompiledShader;
@@ -25,6 +27,7 @@ namespace fxport {
 class GraphicsResource;
 struct ComputeAnalysis;
 struct ComputePasses;
+class FragmentRuns;  // fragment_tally.h
 
 // Uniform-buffer binding points per stage: D3D has separate constant slots per stage, so the same
 // HLSL binding (b0 = $Global, b1 = fxport's internal block, b2.. user cbuffers) gets a range per
@@ -52,6 +55,8 @@ struct ShaderProgram {
     mutable bool alphaTestUnavailable = false;  // the shader writes no colour to test
     // What compute passes may do with this shader (compute_pass.h), read at its first candidate draw.
     mutable std::shared_ptr<const ComputeAnalysis> computeAnalysis;
+    // Pixel shaders: texture fetches per fragment, counted at the first draw the tally sees.
+    mutable std::optional<xlate::TextureFetches> textureFetches;
 };
 
 // D3D9 render states GL core lacks, as the last EffectPass::Apply() set them (off unless its pass
@@ -90,6 +95,11 @@ struct GraphicsDevice::Impl {
     bool trackingBoundTargets = false;  // set by the first markBoundTargets(): hosts that never check pay nothing
     int widestColorBytesSinceMark = 0;  // colorBytesPerFragmentSinceMark()
     bool blendedSinceMark = false;      // set by flush() while tracking
+    std::vector<WrittenTarget> writtenSinceMark;  // targetsWrittenSinceMark(), noted by flush() and executeClear()
+    void noteWrittenTargets(bool color, bool depthStencil, const Rectangle& area, bool cleared);  // area: what the draw or clear covers
+    void noteDrawnTargets();  // flush(): what the draw may write (its viewport within the scissor; depth if tested)
+    std::shared_ptr<FragmentRuns> fragmentTally;  // tallyFragments(true); null when off
+    void tallyDraw();  // before a draw: its pixel shader's fetches to the tally (fragment_tally.cpp)
     void noteBoundTargets();
     void generateMipsOfUnboundTargets(const std::vector<RenderTargetBinding>& previous);
 

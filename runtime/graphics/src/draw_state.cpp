@@ -65,6 +65,7 @@ void GraphicsDevice::Impl::flush(const char* what) {
     resolvePendingClearBeforeDraw(device.DepthStencilState);
     applyBlend(blendForPixelShader(device.BlendState, shaders[1]->shader->outputTargets));
     if (trackingBoundTargets && device.BlendState.blendingEnabled()) blendedSinceMark = true;
+    noteDrawnTargets();
     applyDepthStencil(device.DepthStencilState);
     applyRasterizer(device.RasterizerState);
     applyViewport(device.Viewport);
@@ -79,6 +80,7 @@ void GraphicsDevice::Impl::flush(const char* what) {
         appliedSrgbWrite = emulation.srgbWrite;
     }
     if (emulation.srgbWrite) reportUnencodedSrgbWrite();
+    tallyDraw();
     forceAll = false;
 }
 

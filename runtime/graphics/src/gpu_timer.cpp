@@ -62,7 +62,7 @@ void GpuTimer::Begin(const std::string& name) {
     }
     auto p = std::make_unique<Pending>();
     p->section = sectionIndex(name);
-    if (countFragments_ && open_.empty()) {
+    if (countFragments_ && open_.empty() && !device_.impl().fragmentTally) {
         p->samples = device_.impl().createQuery(GL_SAMPLES_PASSED);
         glBeginQuery(GL_SAMPLES_PASSED, p->samples);
     }

@@ -157,6 +157,8 @@ void GraphicsDevice::Reset(const fxport::PresentationParameters& parameters) {
     parameters_.RenderTargetUsage = parameters.RenderTargetUsage;
     std::erase_if(impl_->boundSinceMark,
                   [&](const RenderTargetBinding& b) { return b.RenderTarget == impl_->backBuffer.get(); });
+    std::erase_if(impl_->writtenSinceMark,
+                  [&](const WrittenTarget& w) { return w.binding.RenderTarget == impl_->backBuffer.get(); });
     impl_->backBuffer.reset();  // its framebuffers go with it
     impl_->backBuffer = std::make_unique<RenderTarget2D>(*this, parameters_.BackBufferWidth, parameters_.BackBufferHeight,
                                                           false, parameters_.BackBufferFormat,
@@ -283,6 +285,7 @@ void GraphicsDevice::Impl::noteBoundTargets() {
 void GraphicsDevice::markBoundTargets() {
     impl_->trackingBoundTargets = true;
     impl_->boundSinceMark.clear();
+    impl_->writtenSinceMark.clear();
     impl_->widestColorBytesSinceMark = 0;
     impl_->blendedSinceMark = false;
     impl_->noteBoundTargets();
@@ -292,6 +295,48 @@ int GraphicsDevice::colorBytesPerFragmentSinceMark() const { return impl_->wides
 bool GraphicsDevice::blendedSinceMark() const { return impl_->blendedSinceMark; }
 
 std::vector<RenderTargetBinding> GraphicsDevice::targetsBoundSinceMark() const { return impl_->boundSinceMark; }
+
+void GraphicsDevice::Impl::noteWrittenTargets(bool color, bool depthStencil, const Rectangle& area, bool cleared) {
+    if (!trackingBoundTargets) return;
+    // Within the target: a viewport may reach past it.
+    const int x0 = std::max(area.X, 0), y0 = std::max(area.Y, 0);
+    const int x1 = std::min(area.X + area.Width, targetWidth), y1 = std::min(area.Y + area.Height, targetHeight);
+    const double pixels = x1 > x0 && y1 > y0 ? double(x1 - x0) * double(y1 - y0) : 0.0;
+    auto note = [&](const RenderTargetBinding& b, bool depth) {
+        if (!color && !depth) return;
+        for (WrittenTarget& w : writtenSinceMark)
+            if (w.binding == b) {
+                w.color = w.color || color;
+                w.depthStencil = w.depthStencil || depth;
+                double& most = cleared ? w.clearedPixels : w.drawnPixels;
+                most = std::max(most, pixels);
+                return;
+            }
+        writtenSinceMark.push_back({b, color, depth, cleared ? 0.0 : pixels, cleared ? pixels : 0.0});
+    };
+    // The first target's depth/stencil buffer serves them all (XNA: MRT use the first's).
+    if (targets.empty()) note(RenderTargetBinding(backBuffer.get()), depthStencil);
+    for (std::size_t i = 0; i < targets.size(); ++i) note(targets[i], depthStencil && i == 0);
+}
+
+void GraphicsDevice::Impl::noteDrawnTargets() {
+    if (!trackingBoundTargets) return;
+    const DepthStorage* depth = boundDepthStorage();  // made by now if the draw needs it
+    const bool tests = device.DepthStencilState.DepthBufferEnable || device.DepthStencilState.StencilEnable;
+    const fxport::Viewport& v = device.Viewport;
+    Rectangle area(v.X, v.Y, v.Width, v.Height);
+    if (device.RasterizerState.ScissorTestEnable) {
+        const Rectangle& s = device.ScissorRectangle;
+        const int x0 = std::max(area.X, s.X), y0 = std::max(area.Y, s.Y);
+        const int x1 = std::min(area.X + area.Width, s.X + s.Width), y1 = std::min(area.Y + area.Height, s.Y + s.Height);
+        area = Rectangle(x0, y0, std::max(x1 - x0, 0), std::max(y1 - y0, 0));
+    }
+    noteWrittenTargets(true, depth && depth->renderbuffer != 0 && tests, area, false);
+}
+
+std::vector<GraphicsDevice::WrittenTarget> GraphicsDevice::targetsWrittenSinceMark() const {
+    return impl_->writtenSinceMark;
+}
 
 RenderTarget2D& GraphicsDevice::backBufferTarget() { return *impl_->backBuffer; }
 
@@ -702,6 +747,7 @@ void GraphicsDevice::Impl::forget(GraphicsResource* resource) {
 
 void GraphicsDevice::Impl::releaseAll() {
     computePasses.reset();  // its programs and buffer, while the context is current
+    fragmentTally.reset();  // its queries, likewise
     glBindProgramPipeline(0);
     glBindVertexArray(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -28,6 +28,7 @@ void GraphicsDevice::Impl::executeClear(const Rectangle& rect, unsigned options,
     if (boundFramebuffer == 0) bindTargets();
     options = holdDepthClear(rect, options, depth, stencil);  // a depth buffer not made yet (depth_storage.cpp)
     if (options == 0) return;
+    noteWrittenTargets((options & kColor) != 0, (options & (kDepth | kStencil)) != 0, rect, true);
     clearStats.executed += channels(options);
     glEnable(GL_SCISSOR_TEST);
     glScissor(rect.X, rect.Y, rect.Width, rect.Height);

@@ -30,6 +30,8 @@ void unbindIfTarget(GraphicsDevice& device, const Texture* target) {
     auto& noted = device.impl().boundSinceMark;
     noted.erase(std::remove_if(noted.begin(), noted.end(), [&](const RenderTargetBinding& b) { return b.RenderTarget == target; }),
                 noted.end());
+    std::erase_if(device.impl().writtenSinceMark,
+                  [&](const GraphicsDevice::WrittenTarget& w) { return w.binding.RenderTarget == target; });
     auto& targets = device.impl().targets;
     bool bound = std::any_of(targets.begin(), targets.end(),
                              [&](const RenderTargetBinding& b) { return b.RenderTarget == target; });

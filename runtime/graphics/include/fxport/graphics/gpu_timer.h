@@ -7,7 +7,9 @@
 //
 // With CountFragments(true) each outermost section also counts the fragments its draws wrote
 // (a GL_SAMPLES_PASSED query: fragments that passed the depth/stencil test and were not
-// discarded) -- the overdraw a pass's fill-rate bound is made of (issue 16).
+// discarded) -- the overdraw a pass's fill-rate bound is made of (issue 16). Not while the device
+// tallies fragments (GraphicsDevice::tallyFragments, which counts them per run of draws instead):
+// GL has one GL_SAMPLES_PASSED query at a time, so the sections then count none.
 #pragma once
 
 #include <cstdint>

@@ -208,6 +208,35 @@ public:
     // whether a draw blended.
     int colorBytesPerFragmentSinceMark() const;
     bool blendedSinceMark() const;
+    // The targets that draws and executed clears wrote since the mark (each binding once, in the
+    // order first written); a target only bound is not among them. color: a draw or a colour clear
+    // wrote it; depthStencil: a draw tested or a clear wrote its depth/stencil buffer, which then
+    // exists (lazy storage makes it on demand; MRT use the first target's). drawnPixels: the
+    // largest area one draw could cover (its viewport, within the scissor when on); clearedPixels:
+    // the largest area one clear covered.
+    struct WrittenTarget {
+        RenderTargetBinding binding;
+        bool color = false;
+        bool depthStencil = false;
+        double drawnPixels = 0;
+        double clearedPixels = 0;
+    };
+    std::vector<WrittenTarget> targetsWrittenSinceMark() const;
+
+    // fxport, for the fetches in per-pass bounds (fxdemo --bounds): with tallyFragments(true) the
+    // device counts fragments (GL_SAMPLES_PASSED) per run of consecutive draws whose pixel shaders
+    // make the same texture fetches per fragment (xlate::countTextureFetches of their GLSL).
+    // fragmentTallyMark() ends the current run and returns how many runs there are; between two
+    // marks, fragmentTallies(from, to) gives those runs, waiting for the GPU's counts. Not with
+    // GpuTimer::CountFragments at the same time: GL counts one GL_SAMPLES_PASSED query at a time.
+    struct FragmentTally {
+        double fragments = 0;
+        int fetchesLeast = 0, fetchesMost = 0;  // per fragment (xlate::TextureFetches)
+        bool fetchesUnbounded = false;
+    };
+    void tallyFragments(bool on);
+    std::size_t fragmentTallyMark();
+    std::vector<FragmentTally> fragmentTallies(std::size_t from, std::size_t to);
     RenderTarget2D& backBufferTarget();  // to read (GetDataAsVector4); SetRenderTarget(nullptr) binds it
 
     // Clears every bound target (colour, depth, stencil) inside the viewport, ignoring blend and
