@@ -232,7 +232,10 @@ void PrintExplain(std::FILE* out, const BuildReport& built, const BuildReport& a
     if (compute.dispatched > 0 || !compute.fellBack.empty()) {
         // Candidates: draws of at most two triangles (FXPORT_COMPUTE_PASSES=1).
         std::fprintf(out, "compute passes (draws of <= 2 triangles over the run's frames; PresentationParameters::ComputePasses):\n");
-        std::fprintf(out, "  run as compute %6ld\n", compute.dispatched);
+        std::fprintf(out, "  run as compute %6ld  (%ld from the replay store without a fill)\n", compute.dispatched,
+                     compute.replayed);
+        std::fprintf(out, "  replay entries %6ld  %.1f MiB held, %ld evicted\n", compute.entries,
+                     double(compute.entryBytes) / (1 << 20), compute.evicted);
         for (const auto& [reason, count] : compute.fellBack) std::fprintf(out, "  fell back %6ld  %s\n", count, reason.c_str());
     }
 }

@@ -51,7 +51,7 @@ void PassBound::forgetRuns() {
 void PassBound::begin() {
     if (!device) return;
     device->markBoundTargets();
-    dispatchedAtBegin_ = device->computePassStatistics().dispatched;
+    dispatchedAtBegin_ = device->computePassStatistics().issued;  // counted at once (dispatched waits for the GPU)
     if (tallyDevice_ == device) openTallyMarks_.push_back(device->fragmentTallyMark());
 }
 
@@ -61,7 +61,7 @@ void PassBound::end(const std::string& pass) {
     PassWork& work = run.work;
     const bool blended = device->blendedSinceMark();
     work.bytesPerFragment = device->colorBytesPerFragmentSinceMark();
-    run.dispatches = device->computePassStatistics().dispatched - dispatchedAtBegin_;
+    run.dispatches = device->computePassStatistics().issued - dispatchedAtBegin_;
     auto rate = [&](SurfaceFormat format) {
         if (run.dispatches > 0 && limits && limits->computeWriteGBps > 0) return limits->computeWriteGBps;
         return limits ? limits->fillGBps(format, blended) : fillRateGBps;

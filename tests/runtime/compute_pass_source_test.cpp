@@ -1,7 +1,7 @@
 // The text transform behind compute passes (runtime/graphics/src/compute_pass_source.cpp): a pixel
 // shader's inputs and outputs become globals, gl_FragCoord and discard are rewritten, what a
-// compute shader cannot do is refused, and the generated main reads the captured vertices at the
-// right offsets. No GL: compute_pass_test.cpp draws with the result.
+// compute shader cannot do is refused, and the generated main and fill shader agree on the layers
+// of the replay store. No GL: compute_pass_test.cpp draws with the result.
 #include <gtest/gtest.h>
 
 #include "compute_pass_source.h"
@@ -124,9 +124,18 @@ TEST(ComputePassSource, VertexOutputsInCaptureOrder) {
     EXPECT_EQ(capturedFloatsPerVertex(v.varyings), 4 + 4 + 2 + 2);
 }
 
-TEST(ComputePassSource, GeneratedMainReadsEachInputAtItsCapturedOffset) {
+TEST(ComputePassSource, GeneratedMainReadsEachInputFromTheReplayStore) {
     PixelFunction f = pixelFunctionFromShader(kPixel);
-    VertexOutputs v = parseVertexOutputs(kVertex);
+    ASSERT_EQ(f.refusal, "");
+    EXPECT_TRUE(f.readsFragCoord);
+    // Read components only: i0.x and i0.xy, i2 whole, i3.x.
+    ASSERT_EQ(f.inputs.size(), 3u);
+    EXPECT_EQ(f.inputs[0].readMask, 3u);
+    EXPECT_EQ(f.inputs[1].readMask, 3u);
+    EXPECT_EQ(f.inputs[2].readMask, 1u);
+    // Stamp, i0.xy, i2.xy, i3.x, gl_FragCoord's z and w.
+    EXPECT_EQ(replayLayers(f), 1 + 2 + 2 + 1 + 2);
+    EXPECT_TRUE(hasPerspectiveInput(f));
     std::vector<ComputeTarget> targets(2);
     targets[0].imageFormat = "rgba8";
     targets[0].normalized = true;
@@ -134,33 +143,50 @@ TEST(ComputePassSource, GeneratedMainReadsEachInputAtItsCapturedOffset) {
     targets[1].imageFormat = "rgba32f";
     targets[1].writeMask = 1 | 8;
     std::string refusal;
-    std::string source = computeShaderSource(f, v.varyings, targets, refusal);
+    std::string source = computeShaderSource(f, targets, refusal);
     ASSERT_EQ(refusal, "");
-    // i0 after gl_Position (offset 4), perspective-correct; i2 at 8, screen-linear; i3 flat at 10
-    // from the last (provoking) vertex.
-    EXPECT_NE(source.find("i0 = vec4((p.x * fxport_read(t * 3 + 0, 4) + p.y * fxport_read(t * 3 + 1, 4) + p.z * fxport_read(t * 3 + 2, 4)))"),
-              std::string::npos)
-        << source;
-    EXPECT_NE(source.find("i2 = vec2((l.x * fxport_read(t * 3 + 0, 8)"), std::string::npos);
-    EXPECT_NE(source.find("i3 = ivec2((floatBitsToInt(fxport_read(t * 3 + 2, 10))).xy)"), std::string::npos);
-    EXPECT_NE(source.find("int b = vertex * 12 + offset;"), std::string::npos);
+    // Coverage is the fill's stamp; each read component one layer, bits as the fill stored them,
+    // components never read 0.
+    EXPECT_NE(source.find("if (fxport_stored(pixel, 0) != fxport_currentStamp) return;"), std::string::npos) << source;
+    EXPECT_NE(source.find("i0 = vec4(uintBitsToFloat(fxport_stored(pixel, 1)), uintBitsToFloat(fxport_stored(pixel, 2)), 0.0, 0.0);"),
+              std::string::npos);
+    EXPECT_NE(source.find("i2 = vec2(uintBitsToFloat(fxport_stored(pixel, 3)), uintBitsToFloat(fxport_stored(pixel, 4)));"),
+              std::string::npos);
+    EXPECT_NE(source.find("i3 = ivec2(int(fxport_stored(pixel, 5)), 0);"), std::string::npos);
+    EXPECT_NE(source.find("fxport_FragCoord = vec4(vec2(pixel) + 0.5, uintBitsToFloat(fxport_stored(pixel, 6)), "
+                          "uintBitsToFloat(fxport_stored(pixel, 7)));"),
+              std::string::npos);
     // Min on a unorm target clamps the source first; the masked float target keeps g and b.
     EXPECT_NE(source.find("vec4 src = clamp(_entryPointOutput_o0, 0.0, 1.0);"), std::string::npos);
-    EXPECT_NE(source.find("min(src.rgb, fxport_dst0.rgb), min(src.a, fxport_dst0.a)"), std::string::npos);
-    EXPECT_NE(source.find("mix(fxport_dst1, blended, bvec4(true, false, false, true))"), std::string::npos);
+    EXPECT_NE(source.find("min(src.rgb, dst.rgb), min(src.a, dst.a)"), std::string::npos);
+    EXPECT_NE(source.find("blended = mix(dst, blended, bvec4(true, false, false, true))"), std::string::npos);
     EXPECT_NE(source.find("layout(binding = 1, rgba32f) uniform image2D fxport_target1;"), std::string::npos);
     EXPECT_NE(source.find("layout(local_size_x = 8, local_size_y = 8) in;"), std::string::npos);
+}
+
+// The fill shader declares the pixel shader's inputs as it does (location and qualifiers) and
+// stores the same layers the compute shader reads.
+TEST(ComputePassSource, FillShaderRepeatsTheInputDeclarations) {
+    PixelFunction f = pixelFunctionFromShader(kPixel);
+    const std::string fill = fillShaderSource(f);
+    EXPECT_NE(fill.find("layout(location = 0) in vec4 i0;"), std::string::npos) << fill;
+    EXPECT_NE(fill.find("layout(location = 2) noperspective in vec2 i2;"), std::string::npos);
+    EXPECT_NE(fill.find("layout(location = 3) flat in ivec2 i3;"), std::string::npos);
+    EXPECT_NE(fill.find("imageStore(fxport_store, ivec3(pixel, 1), uvec4(floatBitsToUint(i0.x)));"), std::string::npos);
+    EXPECT_NE(fill.find("imageStore(fxport_store, ivec3(pixel, 5), uvec4(uint(i3.x)));"), std::string::npos);
+    EXPECT_EQ(fill.find("i3.y"), std::string::npos);  // never read, not stored
+    EXPECT_NE(fill.find("imageStore(fxport_store, ivec3(pixel, 7), uvec4(floatBitsToUint(gl_FragCoord.w)));"), std::string::npos);
+    EXPECT_NE(fill.find("imageStore(fxport_store, ivec3(pixel, 0), uvec4(fxport_stamp));"), std::string::npos);
+    EXPECT_EQ(fill.find("out "), std::string::npos);  // no colour output
+    EXPECT_NE(inputSignature(f).find("2noperspective vec2:3"), std::string::npos);
 }
 
 TEST(ComputePassSource, AnInputWithoutAVertexOutputIsRefused) {
     PixelFunction f = pixelFunctionFromShader(kPixel);
     VertexOutputs v = parseVertexOutputs(kVertex);
+    EXPECT_EQ(inputsRefusal(f, v.varyings), "");
     v.varyings.pop_back();  // no output at location 3
-    std::vector<ComputeTarget> targets(1);
-    targets[0].imageFormat = "rgba8";
-    std::string refusal;
-    EXPECT_EQ(computeShaderSource(f, v.varyings, targets, refusal), "");
-    EXPECT_EQ(refusal, "pixel input 'i3' (location 3) has no vertex output");
+    EXPECT_EQ(inputsRefusal(f, v.varyings), "pixel input 'i3' (location 3) has no vertex output");
 }
 
 }  // namespace

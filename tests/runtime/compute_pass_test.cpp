@@ -1,14 +1,15 @@
 // Compute passes (PresentationParameters::ComputePasses, runtime/graphics/src/compute_pass.cpp):
 // each pixel shader of tests/fixtures/runtime/ComputePasses.fx is drawn as a full-target quad on a
 // device that draws it with the fragment stage and on one that runs it as a compute dispatch; both
-// images are compared with the same math computed on the CPU in double precision, and the largest
-// difference between the two is printed. Draws a dispatch cannot reproduce must be drawn as usual
-// (and still be right).
+// images are compared with the same math computed on the CPU in double precision and must be
+// byte-identical to each other, drawn once (the compute device fills its replay store) and again
+// (it replays). Draws a dispatch cannot reproduce must be drawn as usual (and still be right).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <functional>
 
 #include "runtime_test_support.h"
@@ -62,6 +63,7 @@ struct Device {
     long dispatched() const { return device->computePassStatistics().dispatched; }
     std::unique_ptr<GraphicsDevice> device;
     std::unique_ptr<Effect> effect;
+    std::shared_ptr<SpriteBatch> spriteBatch;  // made by the first draw that needs one, kept as a game keeps it
 };
 
 std::vector<float> readTarget(RenderTarget2D& target) {
@@ -94,25 +96,45 @@ double maxDifference(const std::vector<float>& a, const std::vector<float>& b) {
     return worst;
 }
 
-// Renders `draw` into a fresh `format` target (cleared to kClear) both ways; checks each against
-// `expected` within `tolerance`, that the compute device dispatched `dispatches` times, and prints
-// the compute-vs-fragment difference.
-void bothWays(const char* name, SurfaceFormat format, int w, int h, const std::function<void(Device&)>& draw,
-              const std::function<Pixel(int, int)>& expected, double tolerance, long dispatches) {
-    std::vector<float> images[2];
+bool sameBytes(const std::vector<float>& a, const std::vector<float>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+}
+
+// Renders `draw` into a fresh `format` target (cleared to kClear) both ways, twice each (clearing
+// between); checks each image against `expected` within `tolerance`, that the compute device's
+// images are byte-identical to the fragment stage's, that it dispatched `dispatches` times per
+// round and that the second round replayed the interpolants the first one stored.
+// Returns the compute device's statistics. `channels`: how many channels `expected` gives.
+ComputePassStatistics bothWays(const char* name, SurfaceFormat format, int w, int h, const std::function<void(Device&)>& draw,
+                               const std::function<Pixel(int, int)>& expected, double tolerance, long dispatches,
+                               int channels = 4, std::vector<float>* image = nullptr) {
+    ComputePassStatistics computed;
+    std::vector<float> images[2][2];
     for (bool compute : {false, true}) {
         SCOPED_TRACE(compute ? "compute" : "fragment");
         Device d(compute, w, h);
         RenderTarget2D target(*d.device, w, h, false, format, DepthFormat::None);
-        d.device->SetRenderTarget(target);
-        d.device->Clear(ClearOptions::Target, kClear, 1.0f, 0);
-        draw(d);
-        d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
-        images[compute] = readTarget(target);
-        EXPECT_LE(maxError(images[compute], w, h, expected), tolerance);
-        EXPECT_EQ(d.dispatched(), compute ? dispatches : 0);
+        for (int round = 0; round < 2; ++round) {
+            d.device->SetRenderTarget(target);
+            d.device->Clear(ClearOptions::Target, kClear, 1.0f, 0);
+            draw(d);
+            d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+            images[compute][round] = readTarget(target);
+            EXPECT_LE(maxError(images[compute][round], w, h, expected, channels), tolerance);
+        }
+        const ComputePassStatistics stats = d.device->computePassStatistics();
+        EXPECT_EQ(stats.dispatched, compute ? 2 * dispatches : 0);
+        EXPECT_EQ(stats.replayed, compute ? dispatches : 0);
+        EXPECT_GE(stats.issued, stats.dispatched);
+        if (compute) computed = stats;
     }
-    std::printf("[ compute ] %-28s compute vs fragment: max difference %.3g\n", name, maxDifference(images[0], images[1]));
+    EXPECT_TRUE(sameBytes(images[0][0], images[1][0])) << "first draw: compute differs from fragment";
+    EXPECT_TRUE(sameBytes(images[0][1], images[1][1])) << "replayed draw: compute differs from fragment";
+    EXPECT_TRUE(sameBytes(images[0][0], images[0][1]));
+    std::printf("[ compute ] %-28s compute vs fragment: max difference %.3g (first), %.3g (replayed)\n", name,
+                maxDifference(images[0][0], images[1][0]), maxDifference(images[0][1], images[1][1]));
+    if (image) *image = images[1][1];
+    return computed;
 }
 
 Pixel clearOr(bool inside, const Pixel& p) { return inside ? p : Pixel{{kClear.X, kClear.Y, kClear.Z, kClear.W}}; }
@@ -308,44 +330,51 @@ TEST(ComputePasses, DiscardKeepsThePixel) {
 
 // Three targets of different formats from one pixel shader.
 TEST(ComputePasses, MultipleRenderTargets) {
-    std::vector<float> images[2][3];
+    std::vector<float> images[2][2][3];  // [compute][round][target]
     for (bool compute : {false, true}) {
         SCOPED_TRACE(compute ? "compute" : "fragment");
         Device d(compute);
         RenderTarget2D color(*d.device, kW, kH, false, SurfaceFormat::Color, DepthFormat::None);
         RenderTarget2D vector4(*d.device, kW, kH, false, SurfaceFormat::Vector4, DepthFormat::None);
         RenderTarget2D single(*d.device, kW, kH, false, SurfaceFormat::Single, DepthFormat::None);
-        d.device->SetRenderTargets({RenderTargetBinding(&color), RenderTargetBinding(&vector4), RenderTargetBinding(&single)});
-        d.device->Clear(ClearOptions::Target, kClear, 1.0f, 0);
-        d.apply("MRT");
-        drawQuad(*d.device);
-        d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
-        images[compute][0] = readTarget(color);
-        images[compute][1] = readTarget(vector4);
-        images[compute][2] = readTarget(single);
-        auto uv = [](int x, int y, double& u, double& v) { uvAt(x, y, Viewport(0, 0, kW, kH), false, u, v); };
-        EXPECT_LE(maxError(images[compute][0], kW, kH, [&](int x, int y) { double u, v; uv(x, y, u, v); return pattern(u, v); }),
-                  kColorTolerance * 0.6);
-        EXPECT_LE(maxError(images[compute][1], kW, kH,
-                           [&](int x, int y) {
-                               double u, v;
-                               uv(x, y, u, v);
-                               return Pixel{{u * 4 - 1, v * 4 - 1, u * v * 100, -2}};
-                           }),
-                  1e-4);
-        EXPECT_LE(maxError(images[compute][2], kW, kH,
-                           [&](int x, int y) {
-                               double u, v;
-                               uv(x, y, u, v);
-                               return Pixel{{v * 3 + u, 0, 0, 1}};
-                           },
-                           1),
-                  kFloatTolerance);
-        EXPECT_EQ(d.dispatched(), compute ? 1 : 0);
+        for (int round = 0; round < 2; ++round) {
+            d.device->SetRenderTargets({RenderTargetBinding(&color), RenderTargetBinding(&vector4), RenderTargetBinding(&single)});
+            d.device->Clear(ClearOptions::Target, kClear, 1.0f, 0);
+            d.apply("MRT");
+            drawQuad(*d.device);
+            d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+            std::vector<float>* image = images[compute][round];
+            image[0] = readTarget(color);
+            image[1] = readTarget(vector4);
+            image[2] = readTarget(single);
+            auto uv = [](int x, int y, double& u, double& v) { uvAt(x, y, Viewport(0, 0, kW, kH), false, u, v); };
+            EXPECT_LE(maxError(image[0], kW, kH, [&](int x, int y) { double u, v; uv(x, y, u, v); return pattern(u, v); }),
+                      kColorTolerance * 0.6);
+            EXPECT_LE(maxError(image[1], kW, kH,
+                               [&](int x, int y) {
+                                   double u, v;
+                                   uv(x, y, u, v);
+                                   return Pixel{{u * 4 - 1, v * 4 - 1, u * v * 100, -2}};
+                               }),
+                      1e-4);
+            EXPECT_LE(maxError(image[2], kW, kH,
+                               [&](int x, int y) {
+                                   double u, v;
+                                   uv(x, y, u, v);
+                                   return Pixel{{v * 3 + u, 0, 0, 1}};
+                               },
+                               1),
+                      kFloatTolerance);
+        }
+        EXPECT_EQ(d.dispatched(), compute ? 2 : 0);
+        EXPECT_EQ(d.device->computePassStatistics().replayed, compute ? 1 : 0);
     }
-    for (int t = 0; t < 3; ++t)
-        std::printf("[ compute ] MRT target %d                 compute vs fragment: max difference %.3g\n", t,
-                    maxDifference(images[0][t], images[1][t]));
+    for (int round = 0; round < 2; ++round)
+        for (int t = 0; t < 3; ++t) {
+            EXPECT_TRUE(sameBytes(images[0][round][t], images[1][round][t])) << "round " << round << ", target " << t;
+            std::printf("[ compute ] MRT target %d, round %d        compute vs fragment: max difference %.3g\n", t, round,
+                        maxDifference(images[0][round][t], images[1][round][t]));
+        }
 }
 
 // A SpriteBatch sprite over the whole target with a custom pixel-shader-only effect.
@@ -357,7 +386,8 @@ TEST(ComputePasses, FullTargetSpriteWithCustomEffect) {
              [&](Device& d) {
                  Texture2D texture(*d.device, tw, th);
                  texture.SetData(texels.data(), texels.size());
-                 SpriteBatch batch(*d.device);
+                 if (!d.spriteBatch) d.spriteBatch = std::make_shared<SpriteBatch>(*d.device);
+                 SpriteBatch& batch = *d.spriteBatch;
                  d.effect->CurrentTechnique = d.effect->Techniques["Sprite"];
                  batch.Begin(SpriteSortMode::Immediate, BlendState::Opaque, SamplerState::PointClamp, nullptr, nullptr,
                              *d.effect);
@@ -376,6 +406,191 @@ TEST(ComputePasses, FullTargetSpriteWithCustomEffect) {
                  return p;
              },
              kColorTolerance, 1);
+}
+
+// A value on a threshold (ComputePasses.fx, ThresholdPS): at each pixel centre uv * 23 is x + 0.5
+// (or y + 0.5) up to the interpolant's last bit, so frac() < 0.5 goes either way and only the
+// rasteriser's own interpolants give the fragment stage's pixels. Odd-sized target; uv (channels
+// 0, 1) is checked against the CPU, the thresholds only against the fragment stage (byte-identical).
+TEST(ComputePasses, ThresholdOnAnInterpolantIsExact) {
+    constexpr int w = 23, h = 23;
+    std::vector<float> image;
+    bothWays("threshold on uv * 23", SurfaceFormat::Vector4, w, h, [](Device& d) { d.apply("Threshold"); drawQuad(*d.device); },
+             [&](int x, int y) { double u, v; uvAt(x, y, Viewport(0, 0, w, h), false, u, v); return Pixel{{u, v, 0, 0}}; },
+             kFloatTolerance, 1, 2, &image);
+    // Only 0 and 1, and both: the pixels sit on the threshold (else this would test nothing).
+    long ones = 0;
+    for (int i = 0; i < w * h; ++i)
+        for (int c : {2, 3}) {
+            const float value = image[std::size_t(i * 4 + c)];
+            EXPECT_TRUE(value == 0.0f || value == 1.0f);
+            ones += value == 1.0f;
+        }
+    EXPECT_GT(ones, 0);
+    EXPECT_LT(ones, 2 * w * h);
+    std::printf("[ compute ] threshold: %ld of %d values on the 1 side\n", ones, 2 * w * h);
+}
+
+// Perspective: w = 1 + u per vertex. A perspective-correct input may not replay (the GPU draws it
+// with the fragment stage); u = s / (2 - s) at screen position s in both triangles of the quad.
+TEST(ComputePasses, PerspectiveInputWithWNotOneFallsBackOnTheGpu) {
+    const ComputePassStatistics stats = bothWays(
+        "perspective quad, w = 1 + u", SurfaceFormat::Vector4, kW, kH,
+        [](Device& d) { d.apply("Perspective"); drawQuad(*d.device); },
+        [](int x, int y) {
+            double s, t;
+            uvAt(x, y, Viewport(0, 0, kW, kH), false, s, t);
+            return Pixel{{s / (2 - s), 0, 0, 0}};
+        },
+        kFloatTolerance, 0, 1);
+    EXPECT_EQ(stats.fellBack.at("w != 1 with a perspective-interpolated input"), 2);
+    EXPECT_EQ(stats.issued, 2);  // sent as compute passes, drawn as usual by the GPU
+}
+
+// The same quad with a noperspective input replays: screen-linear uv.
+TEST(ComputePasses, NoperspectiveInputReplaysWhateverW) {
+    bothWays("noperspective, w = 1 + u", SurfaceFormat::Vector4, kW, kH,
+             [](Device& d) { d.apply("ScreenLinear"); drawQuad(*d.device); },
+             [](int x, int y) {
+                 double s, t;
+                 uvAt(x, y, Viewport(0, 0, kW, kH), false, s, t);
+                 return Pixel{{s, t, 0, 1}};
+             },
+             kFloatTolerance, 1);
+}
+
+// Two triangles that cover the same pixels (the first triangle twice) add twice under One/One: one
+// stored value per pixel cannot do that, so the GPU draws them with the fragment stage.
+TEST(ComputePasses, OverlappingTrianglesFallBackOnTheGpu) {
+    std::vector<VertexPositionTexture> twice = test::fullscreenQuad();
+    twice.resize(3);
+    twice.insert(twice.end(), twice.begin(), twice.end());
+    const ComputePassStatistics stats = bothWays(
+        "one triangle twice, One/One", SurfaceFormat::Vector4, kW, kH,
+        [&](Device& d) {
+            BlendState add = BlendState::Opaque;
+            add.ColorDestinationBlend = add.AlphaDestinationBlend = Blend::One;
+            d.device->BlendState = add;
+            d.apply("Pattern");
+            d.device->DrawUserPrimitives(PrimitiveType::TriangleList, twice.data(), 0, 2);
+        },
+        [](int x, int y) {
+            double u, v;
+            uvAt(x, y, Viewport(0, 0, kW, kH), false, u, v);
+            Pixel p = pattern(u, v);
+            const double c[4] = {kClear.X, kClear.Y, kClear.Z, kClear.W};
+            const bool inside = u + v < 1;  // the top-left triangle; no pixel centre on its diagonal at 24x12
+            for (int i = 0; i < 4; ++i) p.v[i] = c[i] + (inside ? 2 * p.v[i] : 0);
+            return p;
+        },
+        2 * kFloatTolerance, 0);
+    EXPECT_EQ(stats.fellBack.at("triangles that may cover a pixel twice"), 2);
+}
+
+// One replay entry, two sprites at different places: the compare step sees the capture change
+// and refills (the pixels are the fragment stage's each time); the same sprite again replays.
+TEST(ComputePasses, ChangedVerticesRefillTheReplayStore) {
+    auto quadAt = [](float x0, float x1) {
+        auto corner = [](float x, float y) { return VertexPositionTexture(Vector3(x, y, 0), Vector2((x + 1) / 2, (1 - y) / 2)); };
+        const VertexPositionTexture tl = corner(x0, 0.5f), tr = corner(x1, 0.5f), bl = corner(x0, -0.5f), br = corner(x1, -0.5f);
+        return std::vector<VertexPositionTexture>{tl, tr, bl, bl, tr, br};
+    };
+    // Window x 6..15 and 9..18, y 3..9 of 24x12: no pixel centre on an edge.
+    const std::vector<VertexPositionTexture> quads[3] = {quadAt(-0.5f, 0.25f), quadAt(-0.25f, 0.5f), quadAt(-0.25f, 0.5f)};
+    const int left[3] = {6, 9, 9};
+    std::vector<float> images[2][3];
+    for (bool compute : {false, true}) {
+        SCOPED_TRACE(compute ? "compute" : "fragment");
+        Device d(compute);
+        RenderTarget2D target(*d.device, kW, kH, false, SurfaceFormat::Color, DepthFormat::None);
+        for (int i = 0; i < 3; ++i) {
+            d.device->SetRenderTarget(target);
+            d.device->Clear(ClearOptions::Target, kClear, 1.0f, 0);
+            d.apply("Pattern");
+            d.device->DrawUserPrimitives(PrimitiveType::TriangleList, quads[i].data(), 0, 2);
+            d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+            images[compute][i] = readTarget(target);
+            EXPECT_LE(maxError(images[compute][i], kW, kH,
+                               [&](int x, int y) {
+                                   double u, v;
+                                   uvAt(x, y, Viewport(0, 0, kW, kH), false, u, v);
+                                   return clearOr(x >= left[i] && x < left[i] + 9 && y >= 3 && y < 9, pattern(u, v));
+                               }),
+                      kColorTolerance * 0.6);
+        }
+        const ComputePassStatistics stats = d.device->computePassStatistics();
+        EXPECT_EQ(stats.dispatched, compute ? 3 : 0);
+        EXPECT_EQ(stats.replayed, compute ? 1 : 0);  // the third draw
+        EXPECT_EQ(stats.entries, compute ? 1 : 0);
+    }
+    for (int i = 0; i < 3; ++i) EXPECT_TRUE(sameBytes(images[0][i], images[1][i])) << "draw " << i;
+}
+
+// A viewport smaller than the target and a scissor cutting it: the fill draws the viewport without
+// the scissor, the dispatch keeps to both.
+TEST(ComputePasses, SmallerViewportAndScissor) {
+    const Viewport vp(4, 2, 11, 7);
+    const Rectangle scissor(6, 1, 20, 5);
+    bothWays("viewport and scissor", SurfaceFormat::Color, kW, kH,
+             [&](Device& d) {
+                 RasterizerState r = RasterizerState::CullCounterClockwise;
+                 r.ScissorTestEnable = true;
+                 d.device->RasterizerState = r;
+                 d.device->ScissorRectangle = scissor;
+                 d.device->Viewport = vp;
+                 d.apply("Pattern");
+                 drawQuad(*d.device);
+             },
+             [&](int x, int y) {
+                 double u, v;
+                 uvAt(x, y, vp, false, u, v);
+                 const bool inViewport = x >= vp.X && x < vp.X + vp.Width && y >= vp.Y && y < vp.Y + vp.Height;
+                 return clearOr(inViewport && scissor.Contains(x, y), pattern(u, v));
+             },
+             kColorTolerance * 0.6, 1);
+}
+
+// Replay entries stay within $FXPORT_COMPUTE_PASS_CACHE_MB: at 256x256 an entry of PatternPS (the
+// stamp and uv.xy) is 768 KiB, so 1 MiB holds one; two viewports in turn evict each other (and each
+// draw refills), the pixels still the fragment stage's. With 0 nothing fits: drawn as usual.
+TEST(ComputePasses, ReplayEntriesStayWithinTheByteBound) {
+    constexpr int w = 256, h = 256;
+    const Viewport viewports[2] = {Viewport(0, 0, w, h), Viewport(16, 8, 200, 100)};
+    std::vector<float> images[2][4];
+    for (bool compute : {false, true}) {
+        SCOPED_TRACE(compute ? "compute" : "fragment");
+        setenv("FXPORT_COMPUTE_PASS_CACHE_MB", "1", 1);
+        Device d(compute, w, h);
+        unsetenv("FXPORT_COMPUTE_PASS_CACHE_MB");
+        RenderTarget2D target(*d.device, w, h, false, SurfaceFormat::Color, DepthFormat::None);
+        for (int i = 0; i < 4; ++i) {
+            d.device->SetRenderTarget(target);
+            d.device->Clear(ClearOptions::Target, kClear, 1.0f, 0);
+            d.device->Viewport = viewports[i % 2];
+            d.apply("Pattern");
+            drawQuad(*d.device);
+            d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+            images[compute][i] = readTarget(target);
+        }
+        const ComputePassStatistics stats = d.device->computePassStatistics();
+        EXPECT_EQ(stats.dispatched, compute ? 4 : 0);
+        EXPECT_EQ(stats.replayed, 0);
+        EXPECT_EQ(stats.entries, compute ? 1 : 0);
+        // The store (3 layers of 4 bytes) and the captured vertices, within the bound.
+        EXPECT_GE(stats.entryBytes, compute ? std::int64_t(w) * h * 3 * 4 : 0);
+        EXPECT_LE(stats.entryBytes, compute ? std::int64_t(1) << 20 : 0);
+        EXPECT_EQ(stats.evicted, compute ? 3 : 0);
+    }
+    for (int i = 0; i < 4; ++i) EXPECT_TRUE(sameBytes(images[0][i], images[1][i])) << "draw " << i;
+
+    setenv("FXPORT_COMPUTE_PASS_CACHE_MB", "0", 1);
+    Device none(true, w, h);
+    unsetenv("FXPORT_COMPUTE_PASS_CACHE_MB");
+    none.apply("Pattern");
+    drawQuad(*none.device);
+    const ComputePassStatistics stats = none.device->computePassStatistics();
+    EXPECT_EQ(stats.dispatched, 0);
+    EXPECT_EQ(stats.fellBack.at("replay store of 1 MiB over FXPORT_COMPUTE_PASS_CACHE_MB=0"), 1);
 }
 
 // Draws a dispatch cannot reproduce are drawn as usual: counted as fallen back, not dispatched,

@@ -1,8 +1,9 @@
 // Compute passes (compute_pass.h): the per-draw checks that a dispatch gives the fragment
-// stage's pixels, the transform-feedback capture of the draw's vertices, and the dispatch.
-// Programs are cached per (vertex shader, pixel shader, target formats, blend, masks); like the
-// device's sampler objects they are an internal cache, released with the device and not counted
-// in liveGpuObjects().
+// stage's pixels, the transform-feedback capture of the draw's vertices, the compare step, the
+// fill of the replay store, the dispatch and the fragment fall-back. Programs are cached per
+// shader (and target formats, blend, masks), replay entries per draw key in a byte-bounded LRU;
+// like the device's sampler objects they are internal caches, released with the device and not
+// counted in liveGpuObjects() (ComputePassStatistics reports the entries and their bytes).
 #include "compute_pass.h"
 
 #include <algorithm>
@@ -73,7 +74,7 @@ bool blendOpOf(BlendFunction function, Blend source, Blend destination, bool ful
 
 // Compiles and links one stage; 0 and the log's first line on failure.
 GLuint linkProgram(GLenum stage, const std::string& source, const std::vector<std::string>& captured, bool printLog,
-                   std::string& error) {
+                   std::string& error, bool separable = false) {
     GLuint shader = glCreateShader(stage);
     const char* text = source.c_str();
     glShaderSource(shader, 1, &text, nullptr);
@@ -103,6 +104,7 @@ GLuint linkProgram(GLenum stage, const std::string& source, const std::vector<st
         return 0;
     }
     GLuint program = glCreateProgram();
+    if (separable) glProgramParameteri(program, GL_PROGRAM_SEPARABLE, GL_TRUE);
     glAttachShader(program, shader);
     if (!captured.empty()) {
         std::vector<const char*> names;
@@ -127,19 +129,51 @@ GLuint linkProgram(GLenum stage, const std::string& source, const std::vector<st
     return program;
 }
 
+// Draws in a row whose user vertices differ from the previous draw's under one replay key before
+// the next such draw is drawn as usual (until one comes with the previous one's bytes again).
+constexpr int kChangesBeforeFragments = 3;
+
 }  // namespace
 
 ComputePasses::ComputePasses(GraphicsDevice::Impl& owner)
-    : device(owner), printOutcomes(std::getenv("FXPORT_COMPUTE_PASSES_DEBUG") != nullptr) {}
+    : device(owner), printOutcomes(std::getenv("FXPORT_COMPUTE_PASSES_DEBUG") != nullptr) {
+    if (const char* mb = std::getenv("FXPORT_COMPUTE_PASS_CACHE_MB")) {
+        char* end = nullptr;
+        const long value = std::strtol(mb, &end, 10);
+        if (end != mb && *end == '\0' && value >= 0 && value <= (1l << 20))
+            byteBudget = std::int64_t(value) << 20;
+        else
+            std::fprintf(stderr, "fxport: FXPORT_COMPUTE_PASS_CACHE_MB='%s' is not a number of MiB (0..1048576); using %lld\n", mb,
+                         static_cast<long long>(byteBudget >> 20));
+    }
+}
 
 ComputePasses::~ComputePasses() {
     for (auto& [serial, program] : captureProgramsBySerial)
         if (program) glDeleteProgram(program);
     for (auto& [key, dispatcher] : computePrograms)
         if (dispatcher.program) glDeleteProgram(dispatcher.program);
+    for (auto& [serial, fill] : fillPrograms)
+        if (fill.program) glDeleteProgram(fill.program);
+    for (auto& [key, pipeline] : fillPipelines)
+        if (pipeline) glDeleteProgramPipelines(1, &pipeline);
+    while (!entries.empty()) dropEntry(entries.begin());
+    if (fillFramebuffer) glDeleteFramebuffers(1, &fillFramebuffer);
     if (captureBuffer) glDeleteBuffers(1, &captureBuffer);
-    if (bounds.program) glDeleteProgram(bounds.program);
-    if (bounds.buffer) glDeleteBuffers(1, &bounds.buffer);
+    if (compare.program) glDeleteProgram(compare.program);
+    if (compare.commands) glDeleteBuffers(1, &compare.commands);
+    if (compare.counters) {
+        glUnmapNamedBuffer(compare.counters);
+        glDeleteBuffers(1, &compare.counters);
+    }
+}
+
+void ComputePasses::dropEntry(std::map<std::string, ReplayEntry>::iterator it) {
+    glDeleteTextures(1, &it->second.store);
+    glDeleteBuffers(1, &it->second.vertices);
+    entryBytes -= it->second.bytes;
+    recency.erase(it->second.recency);
+    entries.erase(it);
 }
 
 void ComputePasses::forget(const ComputeAnalysis& analysis) {
@@ -148,19 +182,42 @@ void ComputePasses::forget(const ComputeAnalysis& analysis) {
         if (it->second) glDeleteProgram(it->second);
         captureProgramsBySerial.erase(it);
     }
+    if (auto it = fillPrograms.find(analysis.serial); it != fillPrograms.end()) {
+        if (it->second.program) glDeleteProgram(it->second.program);
+        fillPrograms.erase(it);
+    }
     failures.erase("capture/" + serial);
-    // Keys are "vertex serial/pixel serial/targets".
+    failures.erase("fill/" + serial);
+    // Keys of compute programs are "pixel serial/targets", of pipelines "vertex serial/pixel
+    // serial", of entries "vertex serial/...".
+    auto field = [](const std::string& key, int index) {
+        std::size_t begin = 0;
+        for (int i = 0; i < index; ++i) begin = key.find('/', begin) + 1;
+        return key.substr(begin, key.find('/', begin) - begin);
+    };
     for (auto it = computePrograms.begin(); it != computePrograms.end();) {
-        const std::string& key = it->first;
-        const std::size_t slash = key.find('/'), second = key.find('/', slash + 1);
-        if (key.compare(0, slash, serial) == 0 || key.compare(slash + 1, second - slash - 1, serial) == 0) {
+        if (field(it->first, 0) == serial) {
             if (it->second.program) glDeleteProgram(it->second.program);
-            failures.erase(key);
+            failures.erase(it->first);
             it = computePrograms.erase(it);
         } else {
             ++it;
         }
     }
+    for (auto it = fillPipelines.begin(); it != fillPipelines.end();) {
+        if (field(it->first, 0) == serial || field(it->first, 1) == serial) {
+            if (it->second) glDeleteProgramPipelines(1, &it->second);
+            it = fillPipelines.erase(it);
+        } else {
+            ++it;
+        }
+    }
+    for (auto it = entries.begin(); it != entries.end();) {
+        auto next = std::next(it);
+        if (field(it->first, 0) == serial) dropEntry(it);
+        it = next;
+    }
+    std::erase_if(userDataHistory, [&](const auto& item) { return field(item.first, 0) == serial; });
 }
 
 bool ComputePasses::fallBack(const std::string& reason) {
@@ -199,7 +256,87 @@ GLuint ComputePasses::captureProgram(const ShaderProgram& vertex, const ComputeA
     return it->second;
 }
 
-bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const std::function<void()>& issueDraw) {
+GLuint ComputePasses::fillPipeline(const ShaderProgram& vertex, int vertexSerial, const ComputeAnalysis& pixel, std::string& refusal) {
+    auto fill = fillPrograms.find(pixel.serial);
+    if (fill == fillPrograms.end()) {
+        std::string error;
+        Fill made;
+        made.program = linkProgram(GL_FRAGMENT_SHADER, detail::fillShaderSource(pixel.pixel), {}, printOutcomes, error, true);
+        if (made.program) made.stamp = glGetUniformLocation(made.program, "fxport_stamp");
+        else failures["fill/" + std::to_string(pixel.serial)] = "fill shader " + error;
+        fill = fillPrograms.emplace(pixel.serial, made).first;
+    }
+    if (!fill->second.program) {
+        refusal = failures["fill/" + std::to_string(pixel.serial)];
+        return 0;
+    }
+    const std::string key = std::to_string(vertexSerial) + "/" + std::to_string(pixel.serial);
+    auto it = fillPipelines.find(key);
+    if (it == fillPipelines.end()) {
+        // The draw's own separable vertex program: the rasteriser interpolates exactly what it
+        // feeds the pixel shader in the device's pipeline.
+        GLuint pipeline = 0;
+        glCreateProgramPipelines(1, &pipeline);
+        glUseProgramStages(pipeline, GL_VERTEX_SHADER_BIT, vertex.program);
+        glUseProgramStages(pipeline, GL_FRAGMENT_SHADER_BIT, fill->second.program);
+        it = fillPipelines.emplace(key, pipeline).first;
+    }
+    return it->second;
+}
+
+ComputePasses::ReplayEntry* ComputePasses::entryFor(const std::string& key, int width, int height, int layers, int capturedFloats,
+                                                    std::string& refusal) {
+    auto it = entries.find(key);
+    if (it != entries.end()) {
+        recency.splice(recency.end(), recency, it->second.recency);
+        return &it->second;
+    }
+    const GLsizeiptr vertexBytes = GLsizeiptr((detail::kEntryHeaderWords + capturedFloats) * 4);
+    const std::int64_t bytes = std::int64_t(width) * height * layers * 4 + vertexBytes;
+    if (bytes > byteBudget) {
+        refusal = "replay store of " + std::to_string((bytes + (1 << 20) - 1) >> 20) +
+                  " MiB over FXPORT_COMPUTE_PASS_CACHE_MB=" + std::to_string(byteBudget >> 20);
+        return nullptr;
+    }
+    while (entryBytes + bytes > byteBudget && !recency.empty()) {
+        dropEntry(entries.find(recency.front()));
+        ++statistics.evicted;
+    }
+    ReplayEntry entry;
+    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &entry.store);
+    glTextureStorage3D(entry.store, 1, GL_R32UI, width, height, layers);
+    const GLuint zero = 0;  // stamp 0: no fill covered the pixel (stamps start at 1)
+    glClearTexImage(entry.store, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    const std::vector<std::uint32_t> words(std::size_t(vertexBytes / 4), 0u);  // stamp 0: never filled
+    glCreateBuffers(1, &entry.vertices);
+    glNamedBufferStorage(entry.vertices, vertexBytes, words.data(), 0);
+    entry.bytes = bytes;
+    entryBytes += bytes;
+    entry.recency = recency.insert(recency.end(), key);
+    if (printOutcomes)
+        std::fprintf(stderr, "compute pass: new replay entry %s: %dx%d, %d layers, %.1f MiB\n", key.c_str(), width, height, layers,
+                     double(bytes) / (1 << 20));
+    return &entries.emplace(key, entry).first->second;
+}
+
+void ComputePasses::readCounters() {
+    if (!compare.mapped) return;
+    for (int i = 0; i < 4; ++i) counters[i] = compare.mapped[i];
+}
+
+ComputePassStatistics ComputePasses::currentStatistics() {
+    readCounters();
+    ComputePassStatistics s = statistics;
+    s.dispatched += long(counters[0]) + long(counters[1]);
+    s.replayed += long(counters[1]);
+    if (counters[2]) s.fellBack["w != 1 with a perspective-interpolated input"] += long(counters[2]);
+    if (counters[3]) s.fellBack["triangles that may cover a pixel twice"] += long(counters[3]);
+    s.entries = long(entries.size());
+    s.entryBytes = entryBytes;
+    return s;
+}
+
+bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCall& call) {
     if ((type != PrimitiveType::TriangleList && type != PrimitiveType::TriangleStrip) || primitiveCount > 2) return false;
     GraphicsDevice::Impl& d = device;
     const GraphicsDevice& dev = d.device;
@@ -269,36 +406,80 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const std::f
     if (!vertexAnalysis.refusal.empty()) return fallBack("vertex shader: " + vertexAnalysis.refusal);
     const ComputeAnalysis& pixelAnalysis = analysisOf(*pixel);
     if (!pixelAnalysis.refusal.empty()) return fallBack("pixel shader: " + pixelAnalysis.refusal);
+    std::string refusal = detail::inputsRefusal(pixelAnalysis.pixel, vertexAnalysis.vertex.varyings);
+    if (!refusal.empty()) return fallBack(refusal);
 
-    std::string refusal;
     GLuint capture = captureProgram(*vertex, vertexAnalysis, refusal);
     if (!capture) return fallBack(refusal);
-    key = std::to_string(vertexAnalysis.serial) + "/" + std::to_string(pixelAnalysis.serial) + "/" + key;
+    const GLuint fill = fillPipeline(*vertex, vertexAnalysis.serial, pixelAnalysis, refusal);
+    if (!fill) return fallBack(refusal);
+    key = std::to_string(pixelAnalysis.serial) + "/" + key;
     auto found = computePrograms.find(key);
     if (found == computePrograms.end()) {
-        std::string source = detail::computeShaderSource(pixelAnalysis.pixel, vertexAnalysis.vertex.varyings, targets, refusal);
+        std::string source = detail::computeShaderSource(pixelAnalysis.pixel, targets, refusal);
         Dispatcher made;
         if (!source.empty()) {
             made.program = linkProgram(GL_COMPUTE_SHADER, source, {}, printOutcomes, refusal);
             if (!made.program) refusal = "compute shader " + refusal;
         }
-        if (made.program) {
-            made.rect = glGetUniformLocation(made.program, "fxport_rect");
-            made.viewport = glGetUniformLocation(made.program, "fxport_viewport");
-            made.depthRange = glGetUniformLocation(made.program, "fxport_depthRange");
-            made.triangles = glGetUniformLocation(made.program, "fxport_triangles");
-            made.cull = glGetUniformLocation(made.program, "fxport_cull");
-        } else {
-            failures[key] = refusal;
-        }
+        if (made.program) made.rect = glGetUniformLocation(made.program, "fxport_rect");
+        else failures[key] = refusal;
         found = computePrograms.emplace(key, made).first;
     }
     const Dispatcher& dispatcher = found->second;
     if (!dispatcher.program) return fallBack(failures[key]);
     const GLuint program = dispatcher.program;
 
-    // The pixels the draw may touch: the viewport (GL clips to it), the targets, the scissor.
+    if (!compare.program && !compare.failed) {
+        std::string error;
+        compare.program = linkProgram(GL_COMPUTE_SHADER, detail::compareShaderSource(), {}, printOutcomes, error);
+        compare.failed = compare.program == 0;
+        if (compare.failed) {
+            failures["compare"] = "compare shader " + error;
+        } else {
+            compare.rect = glGetUniformLocation(compare.program, "fxport_rect");
+            compare.viewport = glGetUniformLocation(compare.program, "fxport_viewport");
+            compare.vertices = glGetUniformLocation(compare.program, "fxport_vertices");
+            compare.stride = glGetUniformLocation(compare.program, "fxport_stride");
+            compare.unitW = glGetUniformLocation(compare.program, "fxport_unitW");
+            compare.stamp = glGetUniformLocation(compare.program, "fxport_stamp");
+            compare.draw = glGetUniformLocation(compare.program, "fxport_draw");
+            const std::vector<std::uint32_t> zeros(detail::kCommandsWords, 0u);
+            glCreateBuffers(1, &compare.commands);
+            glNamedBufferStorage(compare.commands, GLsizeiptr(zeros.size() * 4), zeros.data(), 0);
+            // Statistics read the counters here without a read-back (no stall when a host asks per pass).
+            const GLbitfield mapping = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
+            glCreateBuffers(1, &compare.counters);
+            glNamedBufferStorage(compare.counters, 16, zeros.data(), mapping);
+            compare.mapped = static_cast<const volatile std::uint32_t*>(glMapNamedBufferRange(compare.counters, 0, 16, mapping));
+        }
+    }
+    if (compare.failed) return fallBack(failures["compare"]);
+
+    // The replay entry: everything besides the vertices that decides what the rasteriser
+    // produces for the pixel shader's inputs (scissor is not part: the fill draws without it).
     const Viewport& viewport = dev.Viewport;
+    const int floatsPerVertex = detail::capturedFloatsPerVertex(vertexAnalysis.vertex.varyings);
+    const int vertexCount = primitiveCount * 3;
+    const std::string entryKey =
+        std::to_string(vertexAnalysis.serial) + "/" + detail::inputSignature(pixelAnalysis.pixel) + "/" +
+        std::to_string(viewport.X) + "," + std::to_string(viewport.Y) + "," + std::to_string(viewport.Width) + "," +
+        std::to_string(viewport.Height) + "," + std::to_string(viewport.MinDepth) + "," + std::to_string(viewport.MaxDepth) + "/" +
+        std::to_string(int(raster.CullMode)) + "," + std::to_string(raster.DepthBias) + "," +
+        std::to_string(raster.SlopeScaleDepthBias) + "/" + std::to_string(int(type)) + "x" + std::to_string(primitiveCount) + "/" +
+        std::to_string(d.targetWidth) + "x" + std::to_string(d.targetHeight);
+    if (call.userDataHash != 0) {
+        UserDataHistory& history = userDataHistory[entryKey];
+        if (history.lastHash == call.userDataHash) history.changedInARow = 0;
+        else if (history.lastHash != 0) ++history.changedInARow;
+        history.lastHash = call.userDataHash;
+        if (history.changedInARow >= kChangesBeforeFragments) return fallBack("user vertices change from draw to draw");
+    }
+    ReplayEntry* entry = entryFor(entryKey, d.targetWidth, d.targetHeight, detail::replayLayers(pixelAnalysis.pixel),
+                                  vertexCount * floatsPerVertex, refusal);
+    if (!entry) return fallBack(refusal);
+
+    // The pixels the draw may touch: the viewport (GL clips to it), the targets, the scissor.
     int x0 = std::max(viewport.X, 0), y0 = std::max(viewport.Y, 0);
     int x1 = std::min(viewport.X + viewport.Width, d.targetWidth), y1 = std::min(viewport.Y + viewport.Height, d.targetHeight);
     if (raster.ScissorTestEnable) {
@@ -306,30 +487,16 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const std::f
         x0 = std::max(x0, s.X), y0 = std::max(y0, s.Y);
         x1 = std::min(x1, s.X + s.Width), y1 = std::min(y1, s.Y + s.Height);
     }
-    if (!bounds.program && !bounds.failed) {
-        std::string error;
-        bounds.program = linkProgram(GL_COMPUTE_SHADER, detail::boundsShaderSource(), {}, printOutcomes, error);
-        bounds.failed = bounds.program == 0;
-        if (bounds.failed) {
-            failures["bounds"] = "bounds shader " + error;
-        } else {
-            bounds.rect = glGetUniformLocation(bounds.program, "fxport_rect");
-            bounds.viewport = glGetUniformLocation(bounds.program, "fxport_viewport");
-            bounds.vertices = glGetUniformLocation(bounds.program, "fxport_vertices");
-            bounds.stride = glGetUniformLocation(bounds.program, "fxport_stride");
-            glCreateBuffers(1, &bounds.buffer);
-            glNamedBufferStorage(bounds.buffer, 32, nullptr, 0);
-        }
+    ++statistics.issued;
+    if (x1 <= x0 || y1 <= y0) {  // the fragment stage would draw nothing either
+        ++statistics.dispatched;
+        if (printOutcomes) std::fprintf(stderr, "compute pass: %s covers no pixel\n", pixel->label.c_str());
+        return true;
     }
-    if (bounds.failed) return fallBack(failures["bounds"]);
-    ++statistics.dispatched;
-    if (printOutcomes) std::fprintf(stderr, "compute pass: %s dispatched\n", pixel->label.c_str());
-    if (x1 <= x0 || y1 <= y0) return true;
 
-    // Vertex stage: the draw's own vertex shader, its outputs captured, nothing rasterised.
-    const int floatsPerVertex = detail::capturedFloatsPerVertex(vertexAnalysis.vertex.varyings);
-    // fxport_read fetches four floats from a varying's offset: room for the last vertex's tail.
-    const GLsizeiptr bytes = GLsizeiptr((primitiveCount * 3 * floatsPerVertex + 4) * sizeof(float));
+    // 1. Vertex stage: the draw's own vertex shader, its outputs captured, nothing rasterised.
+    // The compare step reads whole vertices; 4 floats of slack keep reads past a short last vertex in range.
+    const GLsizeiptr bytes = GLsizeiptr((vertexCount * floatsPerVertex + 4) * sizeof(float));
     if (bytes > captureBytes) {
         if (captureBuffer) glDeleteBuffers(1, &captureBuffer);
         captureBytes = std::max<GLsizeiptr>(bytes, 4096);
@@ -340,25 +507,56 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const std::f
     glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, captureBuffer, 0, captureBytes);
     glEnable(GL_RASTERIZER_DISCARD);
     glBeginTransformFeedback(GL_TRIANGLES);
-    issueDraw();
+    call.issue();
     glEndTransformFeedback();
-    glDisable(GL_RASTERIZER_DISCARD);
+    glDisable(GL_RASTERIZER_DISCARD);  // transform feedback's writes need no barrier before later commands read them
 
+    // 2. Compare step: the commands for what follows, decided on the GPU (no read-back).
+    std::uint32_t before[4] = {};
+    if (printOutcomes) glFinish(), readCounters(), std::copy(std::begin(counters), std::end(counters), before);
+    const std::uint32_t stamp = nextStamp++;
+    if (nextStamp == 0) nextStamp = 1;  // 0 means "never filled"
     const GLint rect[4] = {x0, y0, x1, y1};
     const GLfloat view[4] = {float(viewport.X), float(viewport.Y), float(viewport.Width), float(viewport.Height)};
-
-    // Bounds: the groups of a dispatch over the captured triangles' rectangle, on the GPU (no read-back).
-    glUseProgram(bounds.program);
+    const GLint drawCommand[4] = {call.count, call.first, call.baseVertex, call.indexed ? 1 : 0};
+    glUseProgram(compare.program);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, detail::kCaptureBinding, captureBuffer);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, detail::kDispatchBinding, bounds.buffer);
-    glProgramUniform4iv(bounds.program, bounds.rect, 1, rect);
-    glProgramUniform4fv(bounds.program, bounds.viewport, 1, view);
-    glProgramUniform1i(bounds.program, bounds.vertices, primitiveCount * 3);
-    glProgramUniform1i(bounds.program, bounds.stride, floatsPerVertex);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, detail::kCommandsBinding, compare.commands);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, detail::kEntryBinding, entry->vertices);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, detail::kCountersBinding, compare.counters);
+    glProgramUniform4iv(compare.program, compare.rect, 1, rect);
+    glProgramUniform4fv(compare.program, compare.viewport, 1, view);
+    glProgramUniform1i(compare.program, compare.vertices, vertexCount);
+    glProgramUniform1i(compare.program, compare.stride, floatsPerVertex);
+    glProgramUniform1i(compare.program, compare.unitW, detail::hasPerspectiveInput(pixelAnalysis.pixel) ? 1 : 0);
+    glProgramUniform1ui(compare.program, compare.stamp, stamp);
+    glProgramUniform4iv(compare.program, compare.draw, 1, drawCommand);
     glDispatchCompute(1, 1, 1);
-    glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
 
-    // Pixel stage.
+    // 3. Fill (instance count 0 when the capture matched): the draw itself, scissor off, into no
+    // attachments, storing the interpolated inputs where it covers.
+    glUseProgram(0);
+    glBindProgramPipeline(fill);
+    if (!fillFramebuffer) glCreateFramebuffers(1, &fillFramebuffer);
+    if (fillWidth != d.targetWidth || fillHeight != d.targetHeight) {
+        glNamedFramebufferParameteri(fillFramebuffer, GL_FRAMEBUFFER_DEFAULT_WIDTH, d.targetWidth);
+        glNamedFramebufferParameteri(fillFramebuffer, GL_FRAMEBUFFER_DEFAULT_HEIGHT, d.targetHeight);
+        fillWidth = d.targetWidth, fillHeight = d.targetHeight;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, fillFramebuffer);
+    if (raster.ScissorTestEnable) glDisable(GL_SCISSOR_TEST);
+    const Fill& fillProgram = fillPrograms[pixelAnalysis.serial];
+    glProgramUniform1ui(fillProgram.program, fillProgram.stamp, stamp);
+    glBindImageTexture(detail::kStoreUnit, entry->store, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32UI);
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, compare.commands);
+    call.issueIndirect(detail::kCommandsFill * 4);
+    glBindFramebuffer(GL_FRAMEBUFFER, d.boundFramebuffer);
+    if (raster.ScissorTestEnable) glEnable(GL_SCISSOR_TEST);
+    glBindProgramPipeline(d.boundPipeline);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+
+    // 4. Pixel stage, over the compare step's rectangle (no groups when the draw may not replay).
     glUseProgram(program);
     for (std::size_t i = 0; i < bindings.size(); ++i) {
         if (targets[i].writeMask == 0) continue;
@@ -367,20 +565,29 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const std::f
         glBindImageTexture(GLuint(i), t->glName(), 0, GL_FALSE, cube ? GLint(bindings[i].CubeMapFace) : 0, GL_READ_WRITE,
                            detail::glFormat(t->Format()).internalFormat);
     }
-    const GLfloat range[2] = {viewport.MinDepth, viewport.MaxDepth};
+    glBindImageTexture(detail::kStoreUnit, entry->store, 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
     glProgramUniform4iv(program, dispatcher.rect, 1, rect);
-    glProgramUniform4fv(program, dispatcher.viewport, 1, view);
-    glProgramUniform2fv(program, dispatcher.depthRange, 1, range);
-    glProgramUniform1i(program, dispatcher.triangles, primitiveCount);
-    const int cull = raster.CullMode == CullMode::None ? 0 : raster.CullMode == CullMode::CullCounterClockwiseFace ? 1 : 2;
-    glProgramUniform1i(program, dispatcher.cull, cull);
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, bounds.buffer);
-    glDispatchComputeIndirect(0);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, compare.commands);
+    glDispatchComputeIndirect(detail::kCommandsGroups * 4);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
     // Later draws, texture fetches, read-backs and dispatches see the stores.
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                     GL_TEXTURE_UPDATE_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT);
     glUseProgram(0);  // the device's program pipeline is in use again
+
+    // 5. Fragment fall-back (instance count 0 when the dispatch ran): the draw as usual.
+    call.issueIndirect(detail::kCommandsFallBack * 4);
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+
+    if (printOutcomes) {
+        glFinish();  // debugging only: this draw's outcome
+        readCounters();
+        const char* outcome = counters[0] != before[0]   ? "dispatched, refilled the replay store"
+                              : counters[1] != before[1] ? "dispatched from the replay store"
+                              : counters[2] != before[2] ? "falls back on the GPU: w != 1 with a perspective-interpolated input"
+                                                         : "falls back on the GPU: triangles that may cover a pixel twice";
+        std::fprintf(stderr, "compute pass: %s %s\n", pixel->label.c_str(), outcome);
+    }
     return true;
 }
 

@@ -1,17 +1,28 @@
 // INTERNAL: compute passes (PresentationParameters::ComputePasses, issue 16 item 4). A draw of at
-// most two triangles whose state a compute dispatch can honour exactly runs as one: its own vertex
-// shader through transform feedback (rasteriser discarded) into a small buffer, then a compute
-// shader generated from its pixel shader (compute_pass_source.h) that rasterises those triangles
-// per pixel and imageStores the targets. Everything else draws as before; why a candidate fell
-// back is counted per reason (GraphicsDevice::computePassStatistics, fxdemo --explain).
+// most two triangles whose state a compute dispatch can honour exactly runs as one, fed the
+// values the rasteriser itself interpolated, so its pixels are the fragment stage's bit for bit:
+//  1. its own vertex shader under transform feedback (rasteriser discarded) into a small buffer;
+//  2. a one-invocation compare step (detail::compareShaderSource) that compares that capture,
+//     bit for bit, with the one its replay entry was filled from, and writes indirect commands;
+//  3. when they differ, a "fill" draw -- the draw itself, its own vertex program and raster state,
+//     with a fragment shader that stores the pixel shader's inputs per covered pixel -- refills the
+//     entry's store (an r32ui 2D array texture);
+//  4. a compute shader generated from the pixel shader reads the inputs back and imageStores the
+//     targets, only where the fill covered;
+//  5. when the draw may not replay exactly (a perspective input with w != 1, triangles that could
+//     cover a pixel twice) the GPU draws it with the fragment stage instead (an indirect draw).
+// Everything else draws as before; why a candidate fell back is counted per reason
+// (GraphicsDevice::computePassStatistics, fxdemo --explain).
 #pragma once
 
-#include <functional>
+#include <cstdint>
+#include <list>
 #include <map>
 #include <memory>
 #include <string>
 
 #include "compute_pass_source.h"
+#include "draw_call.h"
 #include "fxport/graphics/graphics_device.h"
 #include "fxport/platform/gl.h"
 
@@ -30,37 +41,81 @@ struct ComputePasses {
     ~ComputePasses();
     GraphicsDevice::Impl& device;
 
-    // Runs the current draw (flushed, vertex array bound) as a compute dispatch when it may:
-    // `issueDraw` repeats the draw's GL call under transform feedback. False: draw it as usual.
-    bool tryDraw(PrimitiveType type, int primitiveCount, const std::function<void()>& issueDraw);
+    // Runs the current draw (flushed, vertex array bound) as a compute dispatch when it may.
+    // False: draw it as usual.
+    bool tryDraw(PrimitiveType type, int primitiveCount, const DrawCall& draw);
 
-    // Deletes the programs made for a shader whose effect releases its programs.
+    // Deletes the programs and replay entries made for a shader whose effect releases its programs.
     void forget(const ComputeAnalysis& analysis);
 
-    ComputePassStatistics statistics;
+    // The statistics, with the GPU's counters as far as it has got (read without waiting: draws it
+    // has not run yet are not counted; a read-back of a target waits for them).
+    ComputePassStatistics currentStatistics();
 
 private:
     bool fallBack(const std::string& reason);
     const ComputeAnalysis& analysisOf(const struct ShaderProgram& program);
     GLuint captureProgram(const struct ShaderProgram& vertex, const ComputeAnalysis& analysis, std::string& refusal);
+    GLuint fillPipeline(const struct ShaderProgram& vertex, int vertexSerial, const ComputeAnalysis& pixel, std::string& refusal);
+    struct ReplayEntry;
+    ReplayEntry* entryFor(const std::string& key, int width, int height, int layers, int capturedFloats, std::string& refusal);
+    void readCounters();
 
+    ComputePassStatistics statistics;  // what the CPU decided; the GPU's counters are added on reading
     bool printOutcomes = false;  // $FXPORT_COMPUTE_PASSES_DEBUG: each candidate's outcome and failed compiles on stderr
     int nextSerial = 1;
     std::map<int, GLuint> captureProgramsBySerial;  // 0: the capture program did not link
     struct Dispatcher {
         GLuint program = 0;  // 0: it could not be made (failures says why)
-        GLint rect = -1, viewport = -1, depthRange = -1, triangles = -1, cull = -1;
+        GLint rect = -1;
     };
-    std::map<std::string, Dispatcher> computePrograms;  // "vertex serial/pixel serial/targets" -> program
-    std::map<std::string, std::string> failures;        // why a capture or compute program could not be made
+    std::map<std::string, Dispatcher> computePrograms;  // "pixel serial/targets" -> program
+    std::map<std::string, std::string> failures;        // why a capture, fill or compute program could not be made
     GLuint captureBuffer = 0;
     GLsizeiptr captureBytes = 0;
-    // The bounds step (detail::boundsShaderSource) and the buffer it writes: made at the first dispatch.
-    struct Bounds {
-        GLuint program = 0, buffer = 0;
-        GLint rect = -1, viewport = -1, vertices = -1, stride = -1;
+
+    // Fill fragment programs per pixel shader serial, and their pipelines with a vertex program
+    // ("vertex serial/pixel serial").
+    struct Fill {
+        GLuint program = 0;
+        GLint stamp = -1;
+    };
+    std::map<int, Fill> fillPrograms;
+    std::map<std::string, GLuint> fillPipelines;
+    GLuint fillFramebuffer = 0;  // no attachments, as large as the target (GL_FRAMEBUFFER_DEFAULT_*)
+    int fillWidth = 0, fillHeight = 0;
+    std::uint32_t nextStamp = 1;
+
+    // Replay entries, least recently used first in `recency`, bounded by `byteBudget`.
+    struct ReplayEntry {
+        GLuint store = 0;     // r32ui 2D array: layer 0 the stamp of the fill that covered the pixel, then the inputs' bits
+        GLuint vertices = 0;  // the stamp of its fill and the captured vertices it was filled from (detail::kEntry*)
+        std::int64_t bytes = 0;
+        std::list<std::string>::iterator recency;
+    };
+    // User-vertex draws per replay key: the last one's DrawCall::userDataHash, and how many draws
+    // in a row came with other bytes than the one before (a sprite that moves every draw would
+    // refill every time, which costs more than drawing it: such draws are drawn as usual). Kept
+    // apart from the entries so that a key drawn as usual holds no store.
+    struct UserDataHistory {
+        std::uint64_t lastHash = 0;
+        int changedInARow = 0;
+    };
+    std::map<std::string, UserDataHistory> userDataHistory;
+    std::map<std::string, ReplayEntry> entries;
+    std::list<std::string> recency;
+    std::int64_t entryBytes = 0, byteBudget = 512ll << 20;  // lighting2d at 1920x1080 holds 388 MiB
+    void dropEntry(std::map<std::string, ReplayEntry>::iterator it);
+
+    // The compare step (detail::compareShaderSource) and the commands buffer it writes: made at the first dispatch.
+    struct Compare {
+        GLuint program = 0, commands = 0;
+        GLuint counters = 0;                            // persistently mapped (detail::kCountersBinding)
+        const volatile std::uint32_t* mapped = nullptr;
+        GLint rect = -1, viewport = -1, vertices = -1, stride = -1, unitW = -1, stamp = -1, draw = -1;
         bool failed = false;
-    } bounds;
+    } compare;
+    std::uint32_t counters[4] = {};  // the GPU's, as last read
 };
 
 }  // namespace fxport

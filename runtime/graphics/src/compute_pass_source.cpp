@@ -1,7 +1,7 @@
 // A pixel shader's GLSL as a compute shader (compute_pass_source.h): declarations are rewritten
-// line by line (SPIRV-Cross writes one per line), identifiers are replaced as whole words, and
-// the generated main rasterises the captured triangles per pixel the way GL does under
-// glClipControl(GL_UPPER_LEFT, GL_ZERO_TO_ONE).
+// line by line (SPIRV-Cross writes one per line), identifiers are replaced as whole words, and the
+// generated main reads the inputs the rasteriser interpolated from the replay store. The fill and
+// compare steps that keep the store right are generated here too.
 #include "compute_pass_source.h"
 
 #include <regex>
@@ -150,6 +150,7 @@ PixelFunction pixelFunctionFromShader(const std::string& glsl) {
             v.type = m[4];
             v.name = m[5];
             const std::string qualifiers = m[2];
+            v.qualifiers = qualifiers;
             if (qualifiers.find("flat") != std::string::npos) v.interpolation = Interpolation::Flat;
             else if (qualifiers.find("noperspective") != std::string::npos) v.interpolation = Interpolation::NoPerspective;
             if (!scalarShape(v.type, v.components, v.scalar)) {
@@ -196,48 +197,155 @@ PixelFunction pixelFunctionFromShader(const std::string& glsl) {
             result.refusal = "discards outside main()";
             return result;
         }
+    result.readsFragCoord = !findWord(text, "gl_FragCoord").empty();
+    // Which components each input is read at: `name.xy` marks x and y; any other use (whole,
+    // indexed, passed on) marks all of them. SPIRV-Cross declares a ps_2_0 TEXCOORD0 as vec4 and
+    // reads .xy: half the replay store.
+    for (GlslVarying& in : result.inputs) {
+        in.readMask = 0;
+        const std::string declared = in.type + " ";
+        for (std::size_t p : findWord(text, in.name)) {
+            const bool declaration = p >= declared.size() && text.compare(p - declared.size(), declared.size(), declared) == 0 &&
+                                     (p == declared.size() || text[p - declared.size() - 1] == '\n');
+            if (declaration) continue;  // its global "vec4 name;" (above)
+            std::size_t q = p + in.name.size();
+            unsigned mask = 0;
+            if (q < text.size() && text[q] == '.') {
+                for (++q; q < text.size() && isWordChar(text[q]); ++q) {
+                    const std::size_t c = std::string("xyzw").find(text[q]) != std::string::npos ? std::string("xyzw").find(text[q])
+                                                                                                  : std::string("rgba").find(text[q]);
+                    if (c == std::string::npos) {
+                        mask = 15;
+                        break;
+                    }
+                    mask |= 1u << c;
+                }
+            } else {
+                mask = 15;
+            }
+            in.readMask |= mask;
+        }
+        in.readMask &= (1u << in.components) - 1u;
+    }
     text = replaceWord(text, "gl_FragCoord", "fxport_FragCoord");
     text = replaceWord(text, "discard", "{ fxport_discarded = true; return; }");
     result.text = text;
     return result;
 }
 
-std::string boundsShaderSource() {
+namespace {
+
+// The commands block as every generated program declares it (compute_pass_source.h's word offsets).
+std::string commandsBlock(const char* access) {
+    std::ostringstream s;
+    s << "layout(std430, binding = " << kCommandsBinding << ") " << access
+      << " buffer fxport_Commands {\n"
+         "    uint fxport_groups[3]; int fxport_origin[2]; uint fxport_currentStamp; uint fxport_pad0[2];\n"
+         "    uint fxport_fill[5]; uint fxport_pad1[3];\n"
+         "    uint fxport_fallBack[5]; uint fxport_pad2[3];\n"
+         "};\n";
+    return s.str();
+}
+
+const char* const kComponent[] = {".x", ".y", ".z", ".w"};
+
+}  // namespace
+
+std::string compareShaderSource() {
     std::ostringstream s;
     s << "#version 450\n"
          "layout(local_size_x = 1) in;\n"
       << "layout(std430, binding = " << kCaptureBinding << ") readonly buffer fxport_Capture { float fxport_captured[]; };\n"
-      << "layout(std430, binding = " << kDispatchBinding << ") writeonly buffer fxport_Dispatch { uint fxport_groups[3]; int fxport_origin[2]; };\n"
+      << commandsBlock("")
+      << "layout(std430, binding = " << kCountersBinding << ") buffer fxport_Counters { uint fxport_counters[4]; };\n"
+      << "layout(std430, binding = " << kEntryBinding
+      << ") buffer fxport_Entry { uint fxport_entryStamp; uint fxport_pad3[3]; uint fxport_stored[]; };\n"
          "uniform ivec4 fxport_rect;\n"
          "uniform vec4 fxport_viewport;\n"
          "uniform int fxport_vertices;\n"
          "uniform int fxport_stride;\n"
+         "uniform int fxport_unitW;\n"
+         "uniform uint fxport_stamp;\n"
+         "uniform ivec4 fxport_draw;\n"
+         "vec4 fxport_clip(int v) {\n"
+         "    int b = v * fxport_stride;\n"
+         "    return vec4(fxport_captured[b], fxport_captured[b + 1], fxport_captured[b + 2], fxport_captured[b + 3]);\n"
+         "}\n"
+         "vec2 fxport_window(vec4 c) {\n"
+         "    vec2 ndc = c.xy / c.w;\n"
+         // GL's viewport transform under GL_UPPER_LEFT: window y grows as NDC y falls.
+         "    return vec2(fxport_viewport.x + fxport_viewport.z * 0.5 * (ndc.x + 1.0),\n"
+         "                fxport_viewport.y + fxport_viewport.w * 0.5 * (1.0 - ndc.y));\n"
+         "}\n"
          "void main() {\n"
          "    vec2 lo = vec2(fxport_rect.zw), hi = vec2(fxport_rect.xy);\n"
-         "    bool bounded = true;\n"
+         "    bool bounded = true, unitW = true, inside = true;\n"
          "    for (int v = 0; v < fxport_vertices; ++v) {\n"
-         "        int b = v * fxport_stride;\n"
-         "        vec4 c = vec4(fxport_captured[b], fxport_captured[b + 1], fxport_captured[b + 2], fxport_captured[b + 3]);\n"
+         "        vec4 c = fxport_clip(v);\n"
+         "        vec2 window = fxport_window(c);\n"
          // Behind the eye or not finite: no rectangle from the projection; the whole one is safe.
-         "        vec2 ndc = c.xy / c.w;\n"
-         "        vec2 window = vec2(fxport_viewport.x + fxport_viewport.z * 0.5 * (ndc.x + 1.0),\n"
-         "                           fxport_viewport.y + fxport_viewport.w * 0.5 * (1.0 - ndc.y));\n"
          "        if (!(c.w > 0.0) || any(isnan(window)) || any(isinf(window))) bounded = false;\n"
+         "        if (c.w != 1.0) unitW = false;\n"
+         // Inside the clip volume (with room in x and y for a guard band): the rasteriser does not
+         // clip, so two triangles' shared edge is the same edge in both.
+         "        if (!(c.w > 0.0 && c.z >= 0.0 && c.z <= c.w && abs(c.x) <= 16.0 * c.w && abs(c.y) <= 16.0 * c.w)) inside = false;\n"
          "        lo = min(lo, window);\n"
          "        hi = max(hi, window);\n"
          "    }\n"
-         "    ivec2 a = fxport_rect.xy, z = fxport_rect.zw;\n"
+         // Two triangles must not cover a pixel twice: a quad, its two triangles on opposite sides
+         // of their shared edge (bit-identical clip positions), each third vertex over a pixel away.
+         "    bool oneLayer = fxport_vertices == 3;\n"
+         "    if (fxport_vertices == 6 && inside) {\n"
+         "        int matches = 0; int a[2]; int b[2];\n"
+         "        for (int i = 0; i < 3; ++i)\n"
+         "            for (int j = 3; j < 6; ++j)\n"
+         "                if (all(equal(floatBitsToUint(fxport_clip(i)), floatBitsToUint(fxport_clip(j))))) {\n"
+         "                    if (matches < 2) { a[matches] = i; b[matches] = j; }\n"
+         "                    ++matches;\n"
+         "                }\n"
+         "        if (matches == 2 && a[0] != a[1] && b[0] != b[1]) {\n"
+         "            dvec2 p = dvec2(fxport_window(fxport_clip(a[0]))), q = dvec2(fxport_window(fxport_clip(a[1])));\n"
+         "            dvec2 u = dvec2(fxport_window(fxport_clip(3 - a[0] - a[1])));\n"
+         "            dvec2 w = dvec2(fxport_window(fxport_clip(12 - b[0] - b[1])));\n"
+         "            dvec2 edge = q - p;\n"
+         "            double eu = edge.x * (u.y - p.y) - edge.y * (u.x - p.x);\n"
+         "            double ew = edge.x * (w.y - p.y) - edge.y * (w.x - p.x);\n"
+         "            double reach = length(vec2(edge));\n"
+         "            oneLayer = reach > 0.0LF && eu * ew < 0.0LF && abs(eu) > reach && abs(ew) > reach;\n"
+         "        }\n"
+         "    }\n"
+         "    bool replays = (unitW || fxport_unitW == 0) && oneLayer;\n"
+         "    bool same = fxport_entryStamp != 0u;\n"
+         "    int floats = fxport_vertices * fxport_stride;\n"
+         "    for (int i = 0; i < floats && same; ++i) same = floatBitsToUint(fxport_captured[i]) == fxport_stored[i];\n"
+         "    bool refill = replays && !same;\n"
+         "    if (refill) {\n"
+         "        for (int i = 0; i < floats; ++i) fxport_stored[i] = floatBitsToUint(fxport_captured[i]);\n"
+         "        fxport_entryStamp = fxport_stamp;\n"
+         "    }\n"
+         "    if (refill) fxport_counters[0] += 1u;\n"
+         "    else if (replays) fxport_counters[1] += 1u;\n"
+         "    else if (!oneLayer) fxport_counters[3] += 1u;\n"
+         "    else fxport_counters[2] += 1u;\n"
+         "    ivec2 from = fxport_rect.xy, to = fxport_rect.zw;\n"
          // A pixel is drawn only if its centre is inside: one pixel of margin each way is plenty.
          "    if (bounded) {\n"
-         "        a = ivec2(clamp(floor(lo) - 1.0, vec2(fxport_rect.xy), vec2(fxport_rect.zw)));\n"
-         "        z = ivec2(clamp(ceil(hi) + 1.0, vec2(fxport_rect.xy), vec2(fxport_rect.zw)));\n"
+         "        from = ivec2(clamp(floor(lo) - 1.0, vec2(fxport_rect.xy), vec2(fxport_rect.zw)));\n"
+         "        to = ivec2(clamp(ceil(hi) + 1.0, vec2(fxport_rect.xy), vec2(fxport_rect.zw)));\n"
          "    }\n"
-         "    ivec2 size = max(z - a, ivec2(0));\n"
+         "    ivec2 size = replays ? max(to - from, ivec2(0)) : ivec2(0);\n"
          "    fxport_groups[0] = uint((size.x + 7) / 8);\n"
          "    fxport_groups[1] = uint((size.y + 7) / 8);\n"
          "    fxport_groups[2] = 1u;\n"
-         "    fxport_origin[0] = a.x;\n"
-         "    fxport_origin[1] = a.y;\n"
+         "    fxport_origin[0] = from.x;\n"
+         "    fxport_origin[1] = from.y;\n"
+         "    fxport_currentStamp = fxport_entryStamp;\n"
+         // DrawArraysIndirectCommand {count, instances, first, base instance} or
+         // DrawElementsIndirectCommand {count, instances, first index, base vertex, base instance}.
+         "    uint command[5] = uint[5](uint(fxport_draw.x), 0u, uint(fxport_draw.y), uint(fxport_draw.w != 0 ? fxport_draw.z : 0), 0u);\n"
+         "    for (int i = 0; i < 5; ++i) { fxport_fill[i] = command[i]; fxport_fallBack[i] = command[i]; }\n"
+         "    fxport_fill[1] = refill ? 1u : 0u;\n"
+         "    fxport_fallBack[1] = replays ? 0u : 1u;\n"
          "}\n";
     return s.str();
 }
@@ -248,121 +356,110 @@ int capturedFloatsPerVertex(const std::vector<GlslVarying>& captured) {
     return floats;
 }
 
-std::string computeShaderSource(const PixelFunction& pixel, const std::vector<GlslVarying>& captured,
-                                const std::vector<ComputeTarget>& targets, std::string& refusal) {
-    const int stride = capturedFloatsPerVertex(captured);
+int replayLayers(const PixelFunction& pixel) {
+    int layers = 1;
+    for (const GlslVarying& in : pixel.inputs)
+        for (int c = 0; c < in.components; ++c) layers += (in.readMask >> c) & 1u;
+    return layers + (pixel.readsFragCoord ? 2 : 0);
+}
+
+std::string inputSignature(const PixelFunction& pixel) {
+    std::string signature;
+    for (const GlslVarying& in : pixel.inputs)
+        signature += std::to_string(in.location) + in.qualifiers + in.type + ":" + std::to_string(in.readMask) + ",";
+    return signature + (pixel.readsFragCoord ? "fragcoord" : "");
+}
+
+bool hasPerspectiveInput(const PixelFunction& pixel) {
+    for (const GlslVarying& in : pixel.inputs)
+        if (in.scalar == 'f' && in.interpolation == Interpolation::Smooth && in.readMask != 0) return true;
+    return false;
+}
+
+std::string inputsRefusal(const PixelFunction& pixel, const std::vector<GlslVarying>& captured) {
+    for (const GlslVarying& in : pixel.inputs) {
+        const GlslVarying* source = nullptr;
+        for (const GlslVarying& v : captured)
+            if (v.location == in.location) source = &v;
+        if (!source) return "pixel input '" + in.name + "' (location " + std::to_string(in.location) + ") has no vertex output";
+        if (source->components < in.components || (source->scalar == 'f') != (in.scalar == 'f'))
+            return "pixel input '" + in.name + "' is " + in.type + ", the vertex output is " + source->type;
+    }
+    return {};
+}
+
+std::string fillShaderSource(const PixelFunction& pixel) {
+    std::ostringstream s;
+    s << "#version 450\n";
+    for (const GlslVarying& in : pixel.inputs)
+        s << "layout(location = " << in.location << ") " << in.qualifiers << "in " << in.type << " " << in.name << ";\n";
+    s << "layout(binding = " << kStoreUnit << ", r32ui) writeonly uniform uimage2DArray fxport_store;\n"
+         "uniform uint fxport_stamp;\n"
+         "void main() {\n"
+         "    ivec2 pixel = ivec2(gl_FragCoord.xy);\n";
+    int layer = 1;
+    auto store = [&](const std::string& value) {
+        s << "    imageStore(fxport_store, ivec3(pixel, " << layer++ << "), uvec4(" << value << "));\n";
+    };
+    for (const GlslVarying& in : pixel.inputs)
+        for (int c = 0; c < in.components; ++c) {
+            if (!((in.readMask >> c) & 1u)) continue;
+            const std::string component = in.name + (in.components > 1 ? kComponent[c] : "");
+            store(in.scalar == 'f' ? "floatBitsToUint(" + component + ")" : "uint(" + component + ")");
+        }
+    if (pixel.readsFragCoord) {
+        store("floatBitsToUint(gl_FragCoord.z)");
+        store("floatBitsToUint(gl_FragCoord.w)");
+    }
+    // The stamp last: the compute pass reads a pixel whose stamp is the current fill's.
+    s << "    imageStore(fxport_store, ivec3(pixel, 0), uvec4(fxport_stamp));\n"
+         "}\n";
+    return s.str();
+}
+
+std::string computeShaderSource(const PixelFunction& pixel, const std::vector<ComputeTarget>& targets, std::string& refusal) {
     std::ostringstream s;
     s << "#version 450\n"
          "layout(local_size_x = 8, local_size_y = 8) in;\n"
          "vec4 fxport_FragCoord;\n"
          "bool fxport_discarded;\n"
       << pixel.text << "\n"
-      << "layout(std430, binding = " << kCaptureBinding << ") readonly buffer fxport_Capture { float fxport_captured[]; };\n"
-      << "layout(std430, binding = " << kDispatchBinding << ") readonly buffer fxport_Dispatch { uint fxport_groups[3]; int fxport_origin[2]; };\n";
+      << commandsBlock("readonly")
+      << "layout(binding = " << kStoreUnit << ", r32ui) readonly uniform uimage2DArray fxport_store;\n";
     for (std::size_t t = 0; t < targets.size(); ++t)
         if (targets[t].writeMask != 0)
             s << "layout(binding = " << t << ", " << targets[t].imageFormat << ") uniform image2D fxport_target" << t << ";\n";
     s << "uniform ivec4 fxport_rect;\n"
-         "uniform vec4 fxport_viewport;\n"
-         "uniform vec2 fxport_depthRange;\n"
-         "uniform int fxport_triangles;\n"
-         "uniform int fxport_cull;\n"
-         "vec4 fxport_read(int vertex, int offset) {\n"
-         "    int b = vertex * " << stride << " + offset;\n"
-         "    return vec4(fxport_captured[b], fxport_captured[b + 1], fxport_captured[b + 2], fxport_captured[b + 3]);\n"
-         "}\n"
-         "float fxport_component(int vertex, int offset) { return fxport_captured[vertex * " << stride << " + offset]; }\n"
+         "uint fxport_stored(ivec2 pixel, int layer) { return imageLoad(fxport_store, ivec3(pixel, layer)).x; }\n"
          "void main() {\n"
          "    ivec2 pixel = ivec2(fxport_origin[0], fxport_origin[1]) + ivec2(gl_GlobalInvocationID.xy);\n"
          "    if (pixel.x >= fxport_rect.z || pixel.y >= fxport_rect.w) return;\n"
-         // The rasteriser's grid: window coordinates in 1/256 pixel, exact in double.
-         "    dvec2 centre = dvec2(pixel) * 256.0LF + 128.0LF;\n"
-         "    bool written = false;\n";
-    const char* swizzle[] = {"", ".x", ".xy", ".xyz", ""};
-    for (std::size_t t = 0; t < targets.size(); ++t) {
-        if (targets[t].writeMask == 0) continue;
-        bool load = targets[t].writeMask != 15 || targets[t].color != BlendOp::Write || targets[t].alpha != BlendOp::Write;
-        s << "    vec4 fxport_dst" << t << (load ? " = imageLoad(fxport_target" + std::to_string(t) + ", pixel)" : " = vec4(0.0)")
-          << ";\n";
-    }
-    // Per-vertex values are arrays indexed by k, never vector components: NVIDIA's 580 driver
-    // fails to link a write of a dvec3 component at a dynamic index (C9999, "can't find
-    // __setVectorIndex function in stdlib"; H100 run of 2026-11-25).
-    s << "    for (int t = 0; t < fxport_triangles; ++t) {\n"
-         "        vec4 c[3]; vec3 ndc[3]; dvec2 s[3]; float zw[3];\n"
-         "        bool behind = false, zInside = true;\n"
-         "        for (int k = 0; k < 3; ++k) {\n"
-         "            c[k] = fxport_read(t * 3 + k, 0);\n"
-         "            behind = behind || !(c[k].w > 0.0);\n"
-         "            zInside = zInside && c[k].z >= 0.0 && c[k].z <= c[k].w;\n"
-         "            ndc[k] = c[k].xyz / c[k].w;\n"
-         // GL's viewport transform with GL_UPPER_LEFT: window y grows as NDC y falls.
-         "            vec2 window = vec2(fxport_viewport.x + fxport_viewport.z * 0.5 * (ndc[k].x + 1.0),\n"
-         "                               fxport_viewport.y + fxport_viewport.w * 0.5 * (1.0 - ndc[k].y));\n"
-         "            zw[k] = fxport_depthRange.x + (fxport_depthRange.y - fxport_depthRange.x) * ndc[k].z;\n"
-         "            s[k] = round(dvec2(window) * 256.0LF);\n"
-         "        }\n"
-         "        if (behind) continue;\n"
-         "        double area = (s[1].x - s[0].x) * (s[2].y - s[0].y) - (s[1].y - s[0].y) * (s[2].x - s[0].x);\n"
-         // area > 0: clockwise as seen (y down), XNA's front face.
-         "        if (area == 0.0LF || (fxport_cull == 1 && area < 0.0LF) || (fxport_cull == 2 && area > 0.0LF)) continue;\n"
-         "        double orient = area > 0.0LF ? 1.0LF : -1.0LF;\n"
-         "        double e[3]; bool inside = true;\n"
-         "        for (int k = 0; k < 3; ++k) {\n"
-         "            dvec2 a = s[(k + 1) % 3], b = s[(k + 2) % 3];\n"
-         "            e[k] = ((b.x - a.x) * (centre.y - a.y) - (b.y - a.y) * (centre.x - a.x)) * orient;\n"
-         "            dvec2 d = (b - a) * orient;\n"
-         // D3D's top-left rule: a pixel centre on an edge belongs to the triangle whose top or left edge it is.
-         "            bool topLeft = (d.y == 0.0LF && d.x > 0.0LF) || d.y < 0.0LF;\n"
-         "            inside = inside && (e[k] > 0.0LF || (e[k] == 0.0LF && topLeft));\n"
-         "        }\n"
-         "        if (!inside) continue;\n"
-         "        vec3 l = vec3(dvec3(e[0], e[1], e[2]) * orient / area);\n"
-         "        float ndcZ = dot(l, vec3(ndc[0].z, ndc[1].z, ndc[2].z));\n"
-         "        if (!zInside && (ndcZ < 0.0 || ndcZ > 1.0)) continue;\n"
-         "        vec3 pw = l / vec3(c[0].w, c[1].w, c[2].w);\n"
-         "        float invW = pw.x + pw.y + pw.z;\n"
-         "        vec3 p = pw / invW;\n"
-         "        fxport_FragCoord = vec4(vec2(pixel) + 0.5, dot(l, vec3(zw[0], zw[1], zw[2])), invW);\n";
+         // Coverage is the rasteriser's: the fill wrote this fill's stamp where it covered.
+         "    if (fxport_stored(pixel, 0) != fxport_currentStamp) return;\n";
+    int layer = 1;
     for (const GlslVarying& in : pixel.inputs) {
-        int offset = 4;
-        const GlslVarying* source = nullptr;
-        for (const GlslVarying& v : captured) {
-            if (v.location == in.location) {
-                source = &v;
-                break;
+        // One layer per component, read as arrays of scalars (never a vector component at a
+        // dynamic index: NVIDIA's 580 driver fails to link some of those).
+        std::string parts;
+        // A component the shader never reads is not stored: 0.
+        for (int c = 0; c < in.components; ++c) {
+            std::string value = in.scalar == 'f' ? "0.0" : in.scalar == 'i' ? "0" : "0u";
+            if ((in.readMask >> c) & 1u) {
+                const std::string bits = "fxport_stored(pixel, " + std::to_string(layer++) + ")";
+                value = in.scalar == 'f' ? "uintBitsToFloat(" + bits + ")" : in.scalar == 'i' ? "int(" + bits + ")" : bits;
             }
-            offset += v.components;
+            parts += (c ? ", " : "") + value;
         }
-        if (!source) {
-            refusal = "pixel input '" + in.name + "' (location " + std::to_string(in.location) + ") has no vertex output";
-            return {};
-        }
-        if (source->components < in.components || (source->scalar == 'f') != (in.scalar == 'f')) {
-            refusal = "pixel input '" + in.name + "' is " + in.type + ", the vertex output is " + source->type;
-            return {};
-        }
-        std::ostringstream value;
-        if (in.scalar != 'f') {
-            // Integers are flat; the provoking vertex is GL's default, the last.
-            value << in.type << "((" << (in.scalar == 'i' ? "floatBitsToInt" : "floatBitsToUint")
-                  << "(fxport_read(t * 3 + 2, " << offset << ")))" << swizzle[in.components] << ")";
-        } else {
-            auto at = [&](int k) { return "fxport_read(t * 3 + " + std::to_string(k) + ", " + std::to_string(offset) + ")"; };
-            std::string weights = in.interpolation == Interpolation::NoPerspective ? "l" : "p";
-            if (in.interpolation == Interpolation::Flat)
-                value << in.type << "(" << at(2) << swizzle[in.components] << ")";
-            else
-                value << in.type << "((" << weights << ".x * " << at(0) << " + " << weights << ".y * " << at(1) << " + "
-                      << weights << ".z * " << at(2) << ")" << swizzle[in.components] << ")";
-        }
-        // fxport_read reads 4 floats; the buffer holds at least a whole vertex past any offset
-        // but the last vertex's tail, which the capture buffer pads (compute_pass.cpp).
-        s << "        " << in.name << " = " << value.str() << ";\n";
+        s << "    " << in.name << " = " << in.type << "(" << parts << ");\n";
     }
-    s << "        fxport_discarded = false;\n"
-         "        fxport_pixelMain();\n"
-         "        if (fxport_discarded) continue;\n";
+    if (pixel.readsFragCoord) {
+        s << "    fxport_FragCoord = vec4(vec2(pixel) + 0.5, uintBitsToFloat(fxport_stored(pixel, " << layer
+          << ")), uintBitsToFloat(fxport_stored(pixel, " << layer + 1 << ")));\n";
+        layer += 2;
+    }
+    s << "    fxport_discarded = false;\n"
+         "    fxport_pixelMain();\n"
+         "    if (fxport_discarded) return;\n";
     auto op = [](BlendOp o, const std::string& src, const std::string& dst) {
         switch (o) {
         case BlendOp::Write: return src;
@@ -382,30 +479,26 @@ std::string computeShaderSource(const PixelFunction& pixel, const std::vector<Gl
             refusal = "render target " + std::to_string(t) + " has no pixel shader output";
             return {};
         }
-        const std::string dst = "fxport_dst" + std::to_string(t);
+        const std::string image = "fxport_target" + std::to_string(t);
         std::string src = out->name;
-        bool minMax = target.color == BlendOp::Min || target.color == BlendOp::Max || target.alpha == BlendOp::Min ||
-                      target.alpha == BlendOp::Max;
+        const bool load = target.writeMask != 15 || target.color != BlendOp::Write || target.alpha != BlendOp::Write;
+        const bool minMax = target.color == BlendOp::Min || target.color == BlendOp::Max || target.alpha == BlendOp::Min ||
+                            target.alpha == BlendOp::Max;
         // GL clamps the source to the target's range before blending a fixed-point target.
         if (target.normalized && minMax) src = "clamp(" + src + ", 0.0, 1.0)";
-        s << "        {\n            vec4 src = " << src << ";\n"
-          << "            vec4 blended = vec4(" << op(target.color, "src.rgb", dst + ".rgb") << ", "
-          << op(target.alpha, "src.a", dst + ".a") << ");\n";
-        if (target.writeMask == 15) {
-            s << "            " << dst << " = blended;\n";
-        } else {
-            unsigned m = target.writeMask;
-            s << "            " << dst << " = mix(" << dst << ", blended, bvec4(" << ((m & 1) ? "true" : "false") << ", "
-              << ((m & 2) ? "true" : "false") << ", " << ((m & 4) ? "true" : "false") << ", " << ((m & 8) ? "true" : "false")
-              << "));\n";
+        s << "    {\n        vec4 src = " << src << ";\n";
+        if (!load) {
+            s << "        imageStore(" << image << ", pixel, src);\n    }\n";
+            continue;
         }
-        s << "        }\n";
+        s << "        vec4 dst = imageLoad(" << image << ", pixel);\n"
+          << "        vec4 blended = vec4(" << op(target.color, "src.rgb", "dst.rgb") << ", " << op(target.alpha, "src.a", "dst.a")
+          << ");\n";
+        const unsigned m = target.writeMask;
+        auto on = [&](unsigned bit) { return (m & bit) ? "true" : "false"; };
+        if (m != 15) s << "        blended = mix(dst, blended, bvec4(" << on(1) << ", " << on(2) << ", " << on(4) << ", " << on(8) << "));\n";
+        s << "        imageStore(" << image << ", pixel, blended);\n    }\n";
     }
-    s << "        written = true;\n"
-         "    }\n"
-         "    if (!written) return;\n";
-    for (std::size_t t = 0; t < targets.size(); ++t)
-        if (targets[t].writeMask != 0) s << "    imageStore(fxport_target" << t << ", pixel, fxport_dst" << t << ");\n";
     s << "}\n";
     return s.str();
 }

@@ -1,8 +1,9 @@
 // INTERNAL: the text transform behind compute passes (PresentationParameters::ComputePasses): a
-// translated pixel shader's GLSL made into a compute shader that does, for each pixel of a small
-// draw, what the rasteriser and the fragment stage would have done (coverage with D3D's top-left
-// rule, perspective-correct interpolation of the vertex shader's outputs as transform feedback
-// captured them, the pixel function, blending and write masks, imageStore). Pure text: no GL.
+// translated pixel shader's GLSL made into a compute shader that does, for each pixel a small draw
+// covers, what the fragment stage would have done (the pixel function, blending and write masks,
+// imageStore), reading the inputs the rasteriser itself interpolated from a replay store that a
+// "fill" fragment shader wrote; plus the one-invocation compare step that decides, on the GPU,
+// whether the store still holds this draw's interpolants. Pure text: no GL.
 #pragma once
 
 #include <string>
@@ -21,6 +22,8 @@ struct GlslVarying {
     int components = 0;
     char scalar = 'f';  // 'f' float, 'i' int, 'u' uint
     Interpolation interpolation = Interpolation::Smooth;
+    std::string qualifiers;  // as declared ("noperspective ", "flat ", "centroid "...): the fill shader repeats them
+    unsigned readMask = 15;  // pixel inputs: the components the shader reads (bit 0 = x); only those are replayed
 };
 
 // A vertex shader's located outputs, in declaration order (what a transform-feedback capture
@@ -41,6 +44,7 @@ struct PixelFunction {
     std::string text;  // without #version
     std::vector<GlslVarying> inputs;
     std::vector<GlslVarying> outputs;  // location = colour target
+    bool readsFragCoord = false;       // gl_FragCoord: its z and w are replayed too
     std::string refusal;
 };
 PixelFunction pixelFunctionFromShader(const std::string& pixelGlsl);
@@ -54,27 +58,63 @@ struct ComputeTarget {
     unsigned writeMask = 15;  // bit 0 red .. bit 3 alpha; 0: the target is left alone
 };
 
-// Image unit of target i, and the shader-storage binding of the captured vertices.
+// Bindings shared by the generated programs: shader-storage blocks of the captured vertices, the
+// compare step's commands and the replay entry; the image unit of the replay store (targets take
+// units 0..3).
 inline constexpr int kCaptureBinding = 7;
-// Shader-storage binding of the dispatch's size and origin: the bounds step writes it, the
-// indirect dispatch reads its first three words, the pixel step its origin.
-inline constexpr int kDispatchBinding = 6;
+inline constexpr int kCommandsBinding = 6;
+inline constexpr int kEntryBinding = 5;
+// The compare step's counters, 4 words: refilled, replayed, fell back (w != 1), fell back (not one
+// layer). The device reads them from a persistently mapped buffer, without waiting.
+inline constexpr int kCountersBinding = 4;
+inline constexpr int kStoreUnit = 7;
 
-// The bounds step: one invocation that reads the captured triangles' clip positions and writes
-// the groups of a dispatch over their window rectangle, clipped to fxport_rect (a small sprite costs
-// its own pixels, not the whole target's).
-std::string boundsShaderSource();
+// The commands buffer, in 32-bit words: what the compare step writes and the dispatch, the fill
+// draw and the fall-back draw read (indirect commands at these word offsets).
+inline constexpr int kCommandsGroups = 0;      // 3: indirect dispatch groups
+                                               // 3, 4: the dispatch's origin; 5: the stamp of the store's current fill
+inline constexpr int kCommandsFill = 8;        // 5: indirect draw of the fill (instance count 0 or 1)
+inline constexpr int kCommandsFallBack = 16;   // 5: indirect draw of the fragment fall-back (instance count 0 or 1)
+inline constexpr int kCommandsWords = 24;
+// A replay entry's buffer: word 0 the stamp of its fill (0: never filled), words 4.. the captured
+// vertices that fill was drawn from.
+inline constexpr int kEntryHeaderWords = 4;
+
+// The compare step: one invocation that reads the captured vertices and the entry's, and writes
+// the commands (above): a dispatch over the captured triangles' window rectangle clipped to
+// fxport_rect when the draw may replay, a fill when the capture differs from the entry's in any
+// bit (copying it and the new stamp into the entry), the fall-back draw when it may not replay.
+// A draw may replay when every captured w is exactly 1 or fxport_unitW is 0 (no perspective float
+// input), and its triangles cannot cover a pixel twice: one triangle, or two that share an edge
+// (bit-identical clip positions) with their third vertices more than a pixel apart on opposite
+// sides of it, inside the clip volume. Uniforms: ivec4 fxport_rect, vec4 fxport_viewport, int
+// fxport_vertices, int fxport_stride (floats per vertex), int fxport_unitW, uint fxport_stamp,
+// ivec4 fxport_draw (count, first vertex or index, base vertex, indexed).
+std::string compareShaderSource();
 
 // Floats per captured vertex: gl_Position, then each of `captured` tightly packed.
 int capturedFloatsPerVertex(const std::vector<GlslVarying>& captured);
 
-// The compute shader (8x8 work groups) of `pixel` drawing the triangles whose vertices (3 each,
-// `captured` layout) are in the capture buffer into `targets`. Uniforms it declares, set per
-// dispatch: ivec4 fxport_rect (x0, y0, x1, y1 exclusive, window pixels), vec4 fxport_viewport
-// (X, Y, Width, Height), vec2 fxport_depthRange, int fxport_triangles, int fxport_cull (0 none,
-// 1 cull counter-clockwise as seen, 2 cull clockwise). Empty with `refusal` set when a pixel
-// input has no captured output at its location or needs more components than it has.
-std::string computeShaderSource(const PixelFunction& pixel, const std::vector<GlslVarying>& captured,
-                                const std::vector<ComputeTarget>& targets, std::string& refusal);
+// Layers of a replay store for `pixel`: the stamp, each input component it reads, gl_FragCoord's z and w if read.
+int replayLayers(const PixelFunction& pixel);
+// The replay key's part that depends on the pixel shader: its inputs' locations, types and qualifiers.
+std::string inputSignature(const PixelFunction& pixel);
+// Whether a pixel input it reads is interpolated with perspective (float, neither flat nor noperspective):
+// then only w = 1 replays exactly (the driver may fuse the correction into the shader's arithmetic).
+bool hasPerspectiveInput(const PixelFunction& pixel);
+// Why `pixel`'s inputs cannot be fed by `captured` (an input without a vertex output at its location,
+// or one with fewer components or another scalar kind); empty when they can.
+std::string inputsRefusal(const PixelFunction& pixel, const std::vector<GlslVarying>& captured);
+
+// The fill fragment shader (a separable program beside the draw's own vertex program): declares
+// `pixel`'s inputs with their locations and qualifiers and imageStores their bits, then the
+// uniform uint fxport_stamp, at its pixel of the store (no colour output).
+std::string fillShaderSource(const PixelFunction& pixel);
+
+// The compute shader (8x8 work groups) of `pixel` drawing into `targets`: each pixel of the
+// dispatch whose store stamp is the current fill's runs the pixel function on the stored inputs.
+// Uniform: ivec4 fxport_rect (x0, y0, x1, y1 exclusive, window pixels). Empty with `refusal` set
+// when a target has no pixel shader output.
+std::string computeShaderSource(const PixelFunction& pixel, const std::vector<ComputeTarget>& targets, std::string& refusal);
 
 }  // namespace fxport::detail

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cstring>
+#include <iostream>
 
 #include "compute_pass.h"
+#include "draw_call.h"
 #include "device_impl.h"
 #include "effect_impl.h"
 #include "fxport/graphics/effect.h"
@@ -120,6 +122,9 @@ GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters)
     const bool computePasses = compute && std::string(compute) == "1"   ? true
                                : compute && std::string(compute) == "0" ? false
                                                                         : parameters_.ComputePasses;
+    if (compute && std::string(compute) != "1" && std::string(compute) != "0")
+        std::cerr << "fxport: FXPORT_COMPUTE_PASSES='" << compute << "' is not 1 or 0; compute passes are "
+                  << (computePasses ? "on" : "off") << " (PresentationParameters::ComputePasses)\n";
     if (computePasses) impl_->computePasses = std::make_shared<ComputePasses>(*impl_);
 
     // The D3D conventions (docs/DESIGN.md): NDC z in [0,1], and window y from the top row so
@@ -201,7 +206,7 @@ GpuObjectCounts GraphicsDevice::liveGpuObjects() const { return impl_->live; }
 ClearStatistics GraphicsDevice::clearStatistics() const { return impl_->clearStats; }
 
 ComputePassStatistics GraphicsDevice::computePassStatistics() const {
-    return impl_->computePasses ? impl_->computePasses->statistics : ComputePassStatistics{};
+    return impl_->computePasses ? impl_->computePasses->currentStatistics() : ComputePassStatistics{};
 }
 
 void GraphicsDevice::finish() { glFinish(); }
@@ -464,13 +469,10 @@ void GraphicsDevice::DrawIndexedPrimitives(PrimitiveType primitiveType, int base
         va.elements = Indices->glName();
         glVertexArrayElementBuffer(va.vao, va.elements);
     }
-    bool wide = Indices->IndexElementSize() == IndexElementSize::ThirtyTwoBits;
-    auto draw = [&] {
-        glDrawElementsBaseVertex(glPrimitive(primitiveType), count, wide ? GL_UNSIGNED_INT : GL_UNSIGNED_SHORT,
-                                 reinterpret_cast<const void*>(std::uintptr_t(startIndex) * (wide ? 4u : 2u)), baseVertex);
-    };
+    const bool wide = Indices->IndexElementSize() == IndexElementSize::ThirtyTwoBits;
+    const DrawCall draw{glPrimitive(primitiveType), count, startIndex, true, baseVertex, wide ? 4 : 2};
     if (d.computePasses && d.computePasses->tryDraw(primitiveType, primitiveCount, draw)) return;
-    draw();
+    draw.issue();
 }
 
 void GraphicsDevice::DrawPrimitives(PrimitiveType primitiveType, int vertexStart, int primitiveCount) {
@@ -483,9 +485,9 @@ void GraphicsDevice::DrawPrimitives(PrimitiveType primitiveType, int vertexStart
                             std::to_string(d.vertexBuffer->VertexCount()) + " vertices");
     d.flush("DrawPrimitives");
     d.bindVertexBuffer();
-    auto draw = [&] { glDrawArrays(glPrimitive(primitiveType), vertexStart, count); };
+    const DrawCall draw{glPrimitive(primitiveType), count, vertexStart};
     if (d.computePasses && d.computePasses->tryDraw(primitiveType, primitiveCount, draw)) return;
-    draw();
+    draw.issue();
 }
 
 GraphicsDevice::Impl::VertexArray& GraphicsDevice::Impl::bindVertexBuffer() {
@@ -524,9 +526,10 @@ void GraphicsDevice::drawUser(PrimitiveType type, const void* vertices, std::siz
     va.offset = 0;
     va.stride = GLsizei(stride);
     glVertexArrayVertexBuffer(va.vao, 0, va.buffer, 0, va.stride);
-    auto draw = [&] { glDrawArrays(glPrimitive(type), 0, count); };
+    DrawCall draw{glPrimitive(type), count, 0};
+    if (d.computePasses && primitiveCount <= 2) draw.userDataHash = hashBytes(vertices, std::size_t(count) * stride);
     if (d.computePasses && d.computePasses->tryDraw(type, primitiveCount, draw)) return;
-    draw();
+    draw.issue();
 }
 
 void GraphicsDevice::drawUserIndexed(PrimitiveType type, const void* vertices, std::size_t stride, int vertexCount,
@@ -550,9 +553,12 @@ void GraphicsDevice::drawUserIndexed(PrimitiveType type, const void* vertices, s
     glVertexArrayVertexBuffer(va.vao, 0, va.buffer, 0, va.stride);
     va.elements = d.userIndices;
     glVertexArrayElementBuffer(va.vao, va.elements);
-    auto draw = [&] { glDrawElements(glPrimitive(type), count, indexSize == 4 ? GL_UNSIGNED_INT : GL_UNSIGNED_SHORT, nullptr); };
+    DrawCall draw{glPrimitive(type), count, 0, true, 0, indexSize};
+    if (d.computePasses && primitiveCount <= 2)
+        draw.userDataHash = hashBytes(indices, std::size_t(count) * std::size_t(indexSize),
+                                      hashBytes(vertices, std::size_t(vertexCount) * stride));
     if (d.computePasses && d.computePasses->tryDraw(type, primitiveCount, draw)) return;
-    draw();
+    draw.issue();
 }
 
 // --- presentation and read-back

@@ -70,8 +70,10 @@ struct PresentationParameters {
     // fxport: a draw of at most two triangles (a FullscreenQuad, a one-sprite SpriteBatch batch)
     // whose state a compute dispatch honours exactly -- no depth or stencil test, no blending but
     // Min/Max (and One/One on 32-bit float targets), targets with an image format, a pixel shader
-    // without derivatives -- runs as a compute shader generated from its pixel shader
-    // (ComputePassStatistics). Off by default; $FXPORT_COMPUTE_PASSES=1 or 0 overrides this.
+    // without derivatives -- runs as a compute shader generated from its pixel shader, fed the
+    // values the rasteriser itself interpolated for an earlier draw with bit-identical vertices, so
+    // the pixels are the fragment stage's (ComputePassStatistics). Off by default;
+    // $FXPORT_COMPUTE_PASSES=1 or 0 overrides this.
     bool ComputePasses = false;
     std::string windowTitle;     // GLFW only
 };
@@ -144,10 +146,18 @@ struct ClearStatistics {
 };
 
 // What PresentationParameters::ComputePasses did: draws run as compute dispatches, and, for draws
-// that were candidates (at most two triangles) but were drawn as usual, how many per reason.
+// that were candidates (at most two triangles) but were drawn as usual, how many per reason. The
+// GPU decides part of it (whether the vertices changed, w = 1, overlap); its counters are read
+// without waiting, so draws it has not run yet are not counted (a read-back of a target waits).
 struct ComputePassStatistics {
-    long dispatched = 0;
+    long issued = 0;      // draws sent to the GPU as compute passes, counted at once (the GPU may still
+                          // draw some as usual: fellBack's GPU reasons)
+    long dispatched = 0;  // draws run as compute dispatches
+    long replayed = 0;    // of those, from interpolants stored by an earlier draw (no fill)
     std::map<std::string, long> fellBack;
+    long entries = 0;              // replay entries held now
+    std::int64_t entryBytes = 0;   // their GPU memory (bounded by $FXPORT_COMPUTE_PASS_CACHE_MB, 512 by default)
+    long evicted = 0;              // entries dropped to stay within the bound
 };
 
 class GraphicsDevice {
