@@ -637,6 +637,41 @@ TEST(ComputePasses, DepthStateOfATargetWithoutDepthBuffer) {
              kColorTolerance * 0.6, 1);
 }
 
+// A depth test that writes nothing and cannot fail against the buffer's clear (DepthRead against
+// the far clear: the deferred G-buffer's clear quad) dispatches; the buffer still holds the clear
+// afterwards (a quad at depth 0.5 under LessEqual then draws everywhere). After a draw wrote depth,
+// the same state falls back (the contents are no longer one known value).
+TEST(ComputePasses, DepthReadAgainstTheFarClearDispatches) {
+    std::vector<float> images[2];
+    long dispatched[2] = {0, 0}, fellBack[2] = {0, 0};
+    for (bool compute : {false, true}) {
+        Device d(compute);
+        RenderTarget2D target(*d.device, kW, kH, false, SurfaceFormat::Color, DepthFormat::Depth24Stencil8);
+        for (int round = 0; round < 2; ++round) {
+            d.device->SetRenderTarget(target);
+            d.device->Clear(ClearOptions::Target | ClearOptions::DepthBuffer, kClear, 1.0f, 0);
+            d.device->DepthStencilState = DepthStencilState::DepthRead;
+            d.apply("Pattern");
+            drawQuad(*d.device, 0.25f);
+        }
+        const long afterClearQuads = d.device->computePassStatistics().dispatched;
+        d.device->DepthStencilState = DepthStencilState::Default;  // writes 0.5 everywhere
+        d.apply("Threshold");
+        drawQuad(*d.device, 0.5f);
+        d.device->DepthStencilState = DepthStencilState::DepthRead;  // 0.75 > 0.5: fails everywhere
+        d.apply("Pattern");
+        drawQuad(*d.device, 0.75f);
+        d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+        images[compute] = readTarget(target);
+        dispatched[compute] = afterClearQuads;
+        fellBack[compute] = d.device->computePassStatistics().fellBack["depth test or write"];
+    }
+    EXPECT_EQ(dispatched[0], 0);
+    EXPECT_EQ(dispatched[1], 2);
+    EXPECT_EQ(fellBack[1], 2);  // the depth-writing quad and the DepthRead quad after it
+    EXPECT_TRUE(sameBytes(images[0], images[1]));
+}
+
 TEST(ComputePasses, ThreeTrianglesAreNotACandidate) {
     Device d(true);
     RenderTarget2D target(*d.device, kW, kH, false, SurfaceFormat::Color, DepthFormat::None);

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
@@ -96,6 +97,65 @@ TEST(GpuLimits, TextRoundTripsAndUnknownFormatsTakeTheirTexelSizesRate) {
     withoutCompute.erase(withoutCompute.find("compute "));
     EXPECT_FALSE(GpuLimits::fromText(withoutCompute, untouched));
     EXPECT_TRUE(untouched.fill.empty());
+}
+
+// PresentationParameters::ComputePasses' default: on only where compute image writes are at least
+// kComputePassesWhereFaster times the fragment stage's Color output (the H100: 393.8 against 56.3).
+TEST(GpuLimits, ComputePassesAreTheDefaultOnlyWhereComputeWritesAreFaster) {
+    GpuLimits limits;
+    limits.fill.push_back({SurfaceFormat::Color, 56.3, 63.3});
+    limits.computeWriteGBps = 393.8;
+    EXPECT_TRUE(limits.computePassesFaster());
+    limits.computeWriteGBps = 56.3 * kComputePassesWhereFaster * 0.99;
+    EXPECT_FALSE(limits.computePassesFaster());
+    limits.computeWriteGBps = 56.3 * kComputePassesWhereFaster;
+    EXPECT_TRUE(limits.computePassesFaster());
+    GpuLimits unmeasured;
+    unmeasured.computeWriteGBps = 100;
+    EXPECT_FALSE(unmeasured.computePassesFaster());
+}
+
+// Left unset, compute passes are on where this GPU's limits say they are faster; on a software
+// rasteriser (OSMesa's llvmpipe) they stay off and nothing is measured. Set, the parameter decides,
+// and $FXPORT_COMPUTE_PASSES=1/0 over both.
+TEST(GpuLimits, UnsetComputePassesFollowTheGpusLimits) {
+    const char* env = std::getenv("FXPORT_COMPUTE_PASSES");
+    const std::string forced = env && (std::string(env) == "1" || std::string(env) == "0") ? env : "";
+    const char* oldCache = std::getenv("FXPORT_CACHE_DIR");
+    const std::string keptCache = oldCache ? oldCache : "";
+    const std::filesystem::path cache = std::filesystem::temp_directory_path() / "fxport-compute-default-test";
+    std::filesystem::remove_all(cache);
+    ::setenv("FXPORT_CACHE_DIR", cache.string().c_str(), 1);
+    bool software = false;
+    for (int set : {-1, 0, 1}) {
+        PresentationParameters p;
+        p.BackBufferWidth = 8;
+        p.BackBufferHeight = 4;
+        if (set >= 0) p.ComputePasses = set == 1;
+        GraphicsDevice device(p);
+        software = device.rendererName().find("llvmpipe") != std::string::npos ||
+                   device.rendererName().find("softpipe") != std::string::npos;
+        const bool expected = !forced.empty() ? forced == "1"
+                              : set >= 0      ? set == 1
+                                              : !software && GpuLimits::ForDevice(device).computePassesFaster();
+        Effect effect(device, runtimeFixture("Conventions.fx"));
+        effect.CurrentTechnique = effect.Techniques["SolidColor"];
+        device.DepthStencilState = DepthStencilState::None;
+        effect.Parameters["Color"].SetValue(Vector4(1, 0, 0, 1));
+        effect.CurrentTechnique->Passes[0].Apply();
+        drawQuad(device);
+        EXPECT_EQ(device.computePassStatistics().issued, expected ? 1 : 0) << "ComputePasses " << set;
+    }
+    if (software && forced.empty()) {
+        // The effect cache shares the folder; the probe writes gpu-limits-<hash>.txt.
+        std::error_code ec;  // no folder: nothing was written at all
+        for (const auto& entry : std::filesystem::directory_iterator(cache, ec)) {
+            EXPECT_NE(entry.path().filename().string().rfind("gpu-limits-", 0), 0u) << "the probe ran: " << entry.path();
+        }
+    }
+    if (oldCache) ::setenv("FXPORT_CACHE_DIR", keptCache.c_str(), 1);
+    else ::unsetenv("FXPORT_CACHE_DIR");
+    std::filesystem::remove_all(cache);
 }
 
 TEST(GpuLimits, ForDeviceMeasuresOnceThenReadsTheCache) {

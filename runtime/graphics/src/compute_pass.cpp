@@ -349,7 +349,14 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
                                                       : targetDepthFormat(d.targets[0].RenderTarget);
     const DepthStencilState& depth = dev.DepthStencilState;
     if (depthFormat != DepthFormat::None) {
-        if (depth.DepthBufferEnable && (depth.DepthBufferWriteEnable || depth.DepthBufferFunction != CompareFunction::Always))
+        // A test that writes nothing and cannot fail against the buffer's known clear value (lazy
+        // depth storage's rule: the G-buffer clear quad under DepthRead against the far clear) draws
+        // what no test draws; the pending clear stays pending for the draws that need it.
+        const DepthStorage* storage = d.boundDepthStorage();
+        const bool passesAll = !depth.DepthBufferWriteEnable && !depth.StencilEnable && storage &&
+                               d.depthTestPassesAll(depth, *storage);
+        if (depth.DepthBufferEnable && !passesAll &&
+            (depth.DepthBufferWriteEnable || depth.DepthBufferFunction != CompareFunction::Always))
             return fallBack("depth test or write");
         if (depth.StencilEnable) return fallBack("stencil test");
     }

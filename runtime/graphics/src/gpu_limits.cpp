@@ -2,6 +2,8 @@
 // offscreen targets, GL_TIME_ELAPSED queries) and caches them per renderer string.
 #include "fxport/graphics/gpu_limits.h"
 
+#include "fxport/graphics/graphics_device.h"
+
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -284,6 +286,11 @@ bool GpuLimits::fromText(const std::string& text, GpuLimits& out) {
         return false;
     out = limits;
     return true;
+}
+
+bool GpuLimits::computePassesFaster() const {
+    const double fragment = fillGBps(SurfaceFormat::Color, false);
+    return fragment > 0 && computeWriteGBps >= kComputePassesWhereFaster * fragment;
 }
 
 GpuLimits GpuLimits::ForDevice(GraphicsDevice& device, const std::string& cacheDir) {

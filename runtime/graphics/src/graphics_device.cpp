@@ -10,6 +10,7 @@
 #include "effect_impl.h"
 #include "fxport/graphics/effect.h"
 #include "fxport/graphics/errors.h"
+#include "fxport/graphics/gpu_limits.h"
 #include "fxport/platform/graphics_context.h"
 #include "fxport/xlate/compiled_effect.h"
 #include "gl_formats.h"
@@ -96,6 +97,20 @@ const SamplerState& SamplerStateCollection::operator[](int slot) const {
 
 // --- construction
 
+namespace {
+
+// PresentationParameters::ComputePasses left unset: compute passes are exact everywhere, faster only
+// where fragment output is this GPU's limit. A software rasteriser is never asked (its probe would
+// cost every device a measurement; llvmpipe runs them several times slower).
+bool computePassesAreFaster(GraphicsDevice& device) {
+    const std::string renderer = device.rendererName();
+    for (const char* software : {"llvmpipe", "softpipe", "SwiftShader", "swrast"})
+        if (renderer.find(software) != std::string::npos) return false;
+    return GpuLimits::ForDevice(device).computePassesFaster();
+}
+
+}  // namespace
+
 GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters) : parameters_(parameters) {
     if (parameters_.BackBufferWidth <= 0 || parameters_.BackBufferHeight <= 0)
         throw ArgumentError("GraphicsDevice: back buffer size " + std::to_string(parameters_.BackBufferWidth) + "x" +
@@ -117,15 +132,6 @@ GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters)
     impl_->lazyDepthStorage = parameters_.LazyDepthStorage && !(lazyDepth && std::string(lazyDepth) == "0");
     const char* covered = std::getenv("FXPORT_DROP_COVERED_CLEARS");
     impl_->dropCoveredClears = parameters_.DropCoveredClears && !(covered && std::string(covered) == "0");
-    // Off by default, so the environment can turn it on as well as off.
-    const char* compute = std::getenv("FXPORT_COMPUTE_PASSES");
-    const bool computePasses = compute && std::string(compute) == "1"   ? true
-                               : compute && std::string(compute) == "0" ? false
-                                                                        : parameters_.ComputePasses;
-    if (compute && std::string(compute) != "1" && std::string(compute) != "0")
-        std::cerr << "fxport: FXPORT_COMPUTE_PASSES='" << compute << "' is not 1 or 0; compute passes are "
-                  << (computePasses ? "on" : "off") << " (PresentationParameters::ComputePasses)\n";
-    if (computePasses) impl_->computePasses = std::make_shared<ComputePasses>(*impl_);
 
     // The D3D conventions (docs/DESIGN.md): NDC z in [0,1], and window y from the top row so
     // render targets come out top-row-first.
@@ -143,6 +149,17 @@ GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters)
     impl_->backBuffer->Name = "BackBuffer";
     SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
     ScissorRectangle = Rectangle(0, 0, parameters_.BackBufferWidth, parameters_.BackBufferHeight);
+
+    // Compute passes: the environment, else the parameter, else where this GPU runs them faster.
+    const char* compute = std::getenv("FXPORT_COMPUTE_PASSES");
+    const bool forced = compute && (std::string(compute) == "1" || std::string(compute) == "0");
+    if (compute && !forced)
+        std::cerr << "fxport: FXPORT_COMPUTE_PASSES='" << compute
+                  << "' is not 1 or 0; PresentationParameters::ComputePasses decides\n";
+    const bool computePasses = forced ? std::string(compute) == "1"
+                               : parameters_.ComputePasses ? *parameters_.ComputePasses
+                                                           : computePassesAreFaster(*this);
+    if (computePasses) impl_->computePasses = std::make_shared<ComputePasses>(*impl_);
 }
 
 void GraphicsDevice::Reset(const fxport::PresentationParameters& parameters) {

@@ -42,6 +42,10 @@ struct GpuLimits {
     // written there the first time.
     static GpuLimits ForDevice(GraphicsDevice& device, const std::string& cacheDir = {});
 
+    // Whether compute images are written at least kComputePassesWhereFaster times as fast as the
+    // fragment stage writes a Color target: PresentationParameters::ComputePasses' default.
+    bool computePassesFaster() const;
+
     std::string toText() const;  // one "key value" line each (the cache file)
     static bool fromText(const std::string& text, GpuLimits& out);
 };

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -72,11 +73,18 @@ struct PresentationParameters {
     // Min/Max (and One/One on 32-bit float targets), targets with an image format, a pixel shader
     // without derivatives -- runs as a compute shader generated from its pixel shader, fed the
     // values the rasteriser itself interpolated for an earlier draw with bit-identical vertices, so
-    // the pixels are the fragment stage's (ComputePassStatistics). Off by default;
-    // $FXPORT_COMPUTE_PASSES=1 or 0 overrides this.
-    bool ComputePasses = false;
+    // the pixels are the fragment stage's (ComputePassStatistics). Unset (the default): on where
+    // this GPU's compute shaders write images at least kComputePassesWhereFaster times as fast as
+    // its fragment stage writes a Color target (GpuLimits, measured once per GPU and cached), never
+    // on a software rasteriser; true/false force it. $FXPORT_COMPUTE_PASSES=1 or 0 overrides both.
+    std::optional<bool> ComputePasses;
     std::string windowTitle;     // GLFW only
 };
+
+// PresentationParameters::ComputePasses left unset turns compute passes on where the GPU's compute
+// image writes are at least this many times its fragment output (the H100 measured 393 against 56
+// GB/s: x7; llvmpipe runs compute passes several times slower than its rasteriser).
+inline constexpr double kComputePassesWhereFaster = 2.0;
 
 // Number of sampler/texture slots (D3D9 has 16 pixel samplers).
 inline constexpr int kMaxTextureSlots = 16;
