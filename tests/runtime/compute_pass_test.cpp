@@ -654,22 +654,46 @@ TEST(ComputePasses, DepthReadAgainstTheFarClearDispatches) {
             d.apply("Pattern");
             drawQuad(*d.device, 0.25f);
         }
-        const long afterClearQuads = d.device->computePassStatistics().dispatched;
         d.device->DepthStencilState = DepthStencilState::Default;  // writes 0.5 everywhere
         d.apply("Threshold");
         drawQuad(*d.device, 0.5f);
         d.device->DepthStencilState = DepthStencilState::DepthRead;  // 0.75 > 0.5: fails everywhere
         d.apply("Pattern");
         drawQuad(*d.device, 0.75f);
+        // The buffer exists now: the same clear quad against a pending far clear dispatches too and
+        // leaves the clear pending; a depth-writing quad over the left half then draws there (the
+        // clear ran before it), the right half keeps the compute pass's pattern.
+        d.device->Clear(ClearOptions::Target | ClearOptions::DepthBuffer, kClear, 1.0f, 0);
+        d.device->DepthStencilState = DepthStencilState::DepthRead;
+        d.apply("Pattern");
+        drawQuad(*d.device, 0.25f);
+        RasterizerState left = RasterizerState::CullCounterClockwise;
+        left.ScissorTestEnable = true;
+        d.device->RasterizerState = left;
+        d.device->ScissorRectangle = Rectangle(0, 0, kW / 2, kH);
+        d.device->DepthStencilState = DepthStencilState::Default;
+        d.apply("Threshold");
+        drawQuad(*d.device, 0.5f);
         d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
-        images[compute] = readTarget(target);
-        dispatched[compute] = afterClearQuads;
+        images[compute] = readTarget(target);  // waits for the GPU, so its counters are read in full
+        dispatched[compute] = d.device->computePassStatistics().dispatched;
         fellBack[compute] = d.device->computePassStatistics().fellBack["depth test or write"];
     }
     EXPECT_EQ(dispatched[0], 0);
-    EXPECT_EQ(dispatched[1], 2);
-    EXPECT_EQ(fellBack[1], 2);  // the depth-writing quad and the DepthRead quad after it
+    EXPECT_EQ(dispatched[1], 3);
+    EXPECT_EQ(fellBack[1], 3);  // the depth-writing quads and the DepthRead quad after the first
     EXPECT_TRUE(sameBytes(images[0], images[1]));
+    // The right half is the pattern (the last DepthRead quad, drawn by the compute pass).
+    double worst = 0;
+    for (int y = 0; y < kH; ++y)
+        for (int x = kW / 2; x < kW; ++x) {
+            double u, v;
+            uvAt(x, y, Viewport(0, 0, kW, kH), false, u, v);
+            const Pixel e = pattern(u, v);
+            for (int c = 0; c < 4; ++c)
+                worst = std::max(worst, std::abs(double(images[1][std::size_t((y * kW + x) * 4 + c)]) - e.v[c]));
+        }
+    EXPECT_LE(worst, kColorTolerance * 0.6);
 }
 
 TEST(ComputePasses, ThreeTrianglesAreNotACandidate) {

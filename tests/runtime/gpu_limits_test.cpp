@@ -27,6 +27,9 @@ struct Device {
         PresentationParameters p;
         p.BackBufferWidth = 8;
         p.BackBufferHeight = 4;
+        // These tests count the fragments the rasteriser produced: no draw may run as a compute pass
+        // (on by default on a GPU like the H100).
+        p.ComputePasses = false;
         device = std::make_unique<GraphicsDevice>(p);
         effect = std::make_unique<Effect>(*device, runtimeFixture("Conventions.fx"));
         effect->CurrentTechnique = effect->Techniques["SolidColor"];
