@@ -349,13 +349,9 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
                                                       : targetDepthFormat(d.targets[0].RenderTarget);
     const DepthStencilState& depth = dev.DepthStencilState;
     if (depthFormat != DepthFormat::None) {
-        // A test that writes nothing and cannot fail against the buffer's known clear value (lazy
-        // depth storage's rule: the G-buffer clear quad under DepthRead against the far clear) draws
-        // what no test draws; the pending clear stays pending for the draws that need it.
-        const DepthStorage* storage = d.boundDepthStorage();
-        const bool passesAll = !depth.DepthBufferWriteEnable && !depth.StencilEnable && storage &&
-                               d.depthTestPassesAll(depth, *storage);
-        if (depth.DepthBufferEnable && !passesAll &&
+        // A moot test (flush's drawDepthTestMoot: it cannot fail against the buffer's known clear
+        // and nothing is written; the G-buffer clear quad under DepthRead) draws what no test draws.
+        if (depth.DepthBufferEnable && !d.drawDepthTestMoot &&
             (depth.DepthBufferWriteEnable || depth.DepthBufferFunction != CompareFunction::Always))
             return fallBack("depth test or write");
         if (depth.StencilEnable) return fallBack("stencil test");

@@ -64,8 +64,14 @@ void GraphicsDevice::Impl::makeDepthStorageFor(const fxport::DepthStencilState& 
     if (!state.DepthBufferEnable && !state.StencilEnable) return;
     DepthStorage* storage = boundDepthStorage();
     if (!storage || storage->renderbuffer != 0) return;
-    if (!state.StencilEnable && !state.DepthBufferWriteEnable && depthTestPassesAll(state, *storage)) return;
+    if (depthTestIsMoot(state)) return;
     makeDepthStorage(*storage);
+}
+
+bool GraphicsDevice::Impl::depthTestIsMoot(const fxport::DepthStencilState& state) {
+    if (state.StencilEnable || state.DepthBufferWriteEnable) return false;
+    const DepthStorage* storage = boundDepthStorage();
+    return storage && depthTestPassesAll(state, *storage);
 }
 
 // A buffer not made yet holds one value, that of the last clear of its depth (still pending on the

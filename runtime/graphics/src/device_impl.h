@@ -215,6 +215,10 @@ struct GraphicsDevice::Impl {
     void makeDepthStorageFor(const fxport::DepthStencilState& state);
     void makeDepthStorage(DepthStorage& storage);     // makes it, rebinds, runs its waiting clear
     bool depthTestPassesAll(const fxport::DepthStencilState& state, const DepthStorage& storage) const;
+    // Writes neither depth nor stencil and its depth test cannot fail against the bound buffer's
+    // known clear (depthTestPassesAll): such a draw draws what no test draws.
+    bool depthTestIsMoot(const fxport::DepthStencilState& state);
+    bool drawDepthTestMoot = false;  // flush's depthTestIsMoot for the draw it prepared (compute_pass.cpp reads it)
     // executeClear's depth/stencil bits for a bound buffer not made yet: a whole-target clear waits
     // on the target (returned without those bits), a partial one makes the buffer first.
     unsigned holdDepthClear(const Rectangle& rect, unsigned options, float depth, int stencil);

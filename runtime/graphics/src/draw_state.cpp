@@ -62,20 +62,19 @@ void GraphicsDevice::Impl::flush(const char* what) {
                                ": no effect pass is applied (call effect.CurrentTechnique->Passes[i].Apply() first)");
     if (boundFramebuffer == 0) bindTargets();
     makeDepthStorageFor(device.DepthStencilState);  // a buffer nothing needed until now (depth_storage.cpp)
-    // A depth test that cannot fail against the pending clear and writes nothing (DepthRead against
+    // A depth test that cannot fail against the known clear and writes nothing (DepthRead against
     // the far clear: the deferred G-buffer's clear quad) needs neither the clear nor the test: it
     // draws as with the test off and the clear waits for a draw that reads or writes depth (so a
-    // compute pass can take such a draw; compute_pass.cpp).
+    // compute pass can take such a draw; compute_pass.cpp). A buffer not made yet is not attached
+    // (GL passes the test) and its clear already waits on the target (depth_storage.cpp).
     const fxport::DepthStencilState& wanted = device.DepthStencilState;
-    const DepthStorage* depth = boundDepthStorage();
-    const bool passesPendingClear = wanted.DepthBufferEnable && !wanted.DepthBufferWriteEnable && !wanted.StencilEnable &&
-                                    depth && depth->renderbuffer != 0 && (pendingClear.options & unsigned(ClearOptions::DepthBuffer)) &&
-                                    depthTestPassesAll(wanted, *depth);
-    resolvePendingClearBeforeDraw(passesPendingClear ? fxport::DepthStencilState::None : wanted);
+    drawDepthTestMoot = wanted.DepthBufferEnable && depthTestIsMoot(wanted);
+    const bool testOff = drawDepthTestMoot && boundDepthStorage()->renderbuffer != 0;
+    resolvePendingClearBeforeDraw(testOff ? fxport::DepthStencilState::None : wanted);
     applyBlend(blendForPixelShader(device.BlendState, shaders[1]->shader->outputTargets));
     if (trackingBoundTargets && device.BlendState.blendingEnabled()) blendedSinceMark = true;
     noteDrawnTargets();
-    applyDepthStencil(passesPendingClear ? fxport::DepthStencilState::None : wanted);
+    applyDepthStencil(testOff ? fxport::DepthStencilState::None : wanted);
     applyRasterizer(device.RasterizerState);
     applyViewport(device.Viewport);
     applyScissor(device.ScissorRectangle);
