@@ -116,6 +116,8 @@ TEST(GpuLimits, ComputePassesAreTheDefaultOnlyWhereComputeWritesAreFaster) {
     GpuLimits unmeasured;
     unmeasured.computeWriteGBps = 100;
     EXPECT_FALSE(unmeasured.computePassesFaster());
+    EXPECT_TRUE(GpuLimits::softwareRenderer("llvmpipe (LLVM 15.0.6, 256 bits)"));
+    EXPECT_FALSE(GpuLimits::softwareRenderer("NVIDIA H100 80GB HBM3/PCIe/SSE2"));
 }
 
 // Left unset, compute passes are on where this GPU's limits say they are faster; on a software
@@ -136,8 +138,7 @@ TEST(GpuLimits, UnsetComputePassesFollowTheGpusLimits) {
         p.BackBufferHeight = 4;
         if (set >= 0) p.ComputePasses = set == 1;
         GraphicsDevice device(p);
-        software = device.rendererName().find("llvmpipe") != std::string::npos ||
-                   device.rendererName().find("softpipe") != std::string::npos;
+        software = GpuLimits::softwareRenderer(device.rendererName());
         const bool expected = !forced.empty() ? forced == "1"
                               : set >= 0      ? set == 1
                                               : !software && GpuLimits::ForDevice(device).computePassesFaster();

@@ -288,6 +288,12 @@ bool GpuLimits::fromText(const std::string& text, GpuLimits& out) {
     return true;
 }
 
+bool GpuLimits::softwareRenderer(const std::string& renderer) {
+    for (const char* software : {"llvmpipe", "softpipe", "SwiftShader", "swrast"})
+        if (renderer.find(software) != std::string::npos) return true;
+    return false;
+}
+
 bool GpuLimits::computePassesFaster() const {
     const double fragment = fillGBps(SurfaceFormat::Color, false);
     return fragment > 0 && computeWriteGBps >= kComputePassesWhereFaster * fragment;
@@ -305,8 +311,7 @@ GpuLimits GpuLimits::ForDevice(GraphicsDevice& device, const std::string& cacheD
         if (fromText(text.str(), cached) && cached.renderer == renderer) return cached;
     }
     // A software rasteriser (OSMesa's llvmpipe) draws a 2048-square target in tens of ms: a small probe.
-    const bool software = renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos;
-    GpuLimits limits = software ? Measure(device, 256, 2) : Measure(device);
+    GpuLimits limits = softwareRenderer(renderer) ? Measure(device, 256, 2) : Measure(device);
     std::error_code ec;
     std::filesystem::create_directories(file.parent_path(), ec);
     std::ofstream(file) << limits.toText();  // a cache: a folder we cannot write only costs a re-measure

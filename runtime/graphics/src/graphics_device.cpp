@@ -103,10 +103,7 @@ namespace {
 // where fragment output is this GPU's limit. A software rasteriser is never asked (its probe would
 // cost every device a measurement; llvmpipe runs them several times slower).
 bool computePassesAreFaster(GraphicsDevice& device) {
-    const std::string renderer = device.rendererName();
-    for (const char* software : {"llvmpipe", "softpipe", "SwiftShader", "swrast"})
-        if (renderer.find(software) != std::string::npos) return false;
-    return GpuLimits::ForDevice(device).computePassesFaster();
+    return !GpuLimits::softwareRenderer(device.rendererName()) && GpuLimits::ForDevice(device).computePassesFaster();
 }
 
 }  // namespace

@@ -42,6 +42,10 @@ struct GpuLimits {
     // written there the first time.
     static GpuLimits ForDevice(GraphicsDevice& device, const std::string& cacheDir = {});
 
+    // Whether `renderer` (a GL renderer string) is a software rasteriser: llvmpipe, softpipe,
+    // SwiftShader, swrast.
+    static bool softwareRenderer(const std::string& renderer);
+
     // Whether compute images are written at least kComputePassesWhereFaster times as fast as the
     // fragment stage writes a Color target: PresentationParameters::ComputePasses' default.
     bool computePassesFaster() const;
