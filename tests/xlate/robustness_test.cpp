@@ -403,6 +403,21 @@ TEST_F(UntrustedEffectFile, FloatWhereAnIntBelongsIsRefused) {
     j = nlohmann::json::parse(file);
     j["version"] = -1e300;
     EXPECT_NE(loadError(resealEffectFile(j.dump())).find("'version'"), std::string::npos);
+    // The second crash (CI fuzz smoke, 2026-11-25): a shader index read through get<std::vector<int>>.
+    j = nlohmann::json::parse(file);
+    j["techniques"][0]["passes"][0]["vertexShader"]["shaders"][0] = 3.33333e98;
+    EXPECT_NE(loadError(resealEffectFile(j.dump())).find("'shaders' is 3.33333e+98, not an integer"), std::string::npos);
+    j = nlohmann::json::parse(file);
+    j["techniques"][0]["passes"][0]["vertexShader"]["selector"] = nlohmann::json::array({nlohmann::json::array({"const", 2.5e30})});
+    EXPECT_NE(loadError(resealEffectFile(j.dump())).find("'selector'"), std::string::npos);
+    j = nlohmann::json::parse(file);
+    j["futureField"] = 1.5;  // a field the reader does not know is an int field by default
+    EXPECT_NE(loadError(resealEffectFile(j.dump())).find("'futureField'"), std::string::npos);
+    // Float fields stay floats: a parameter's default value loads.
+    j = nlohmann::json::parse(file);
+    ASSERT_EQ(j["parameters"][0]["name"], "World");
+    j["parameters"][0]["default"] = std::vector<double>(16, 0.5);
+    EXPECT_EQ(deserializeEffect(resealEffectFile(j.dump()), "floats.fxeffect").parameters[0].defaultValue, std::vector<double>(16, 0.5));
 }
 
 TEST_F(UntrustedEffectFile, GlslMustMatchItsHash) {

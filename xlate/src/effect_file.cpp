@@ -317,21 +317,20 @@ std::string checksumOf(json j) {
     return contentHash(j.dump(-1, ' ', false, json::error_handler_t::replace));
 }
 
-// A number where the file has an int is written as a JSON integer; a float there (a damaged file, or
-// a fuzzer's `1e+40`) would reach nlohmann's get<int>, whose double-to-int cast is undefined out of
-// range (UBSan, CI fuzz smoke 2026-11-25). Found once here, before any field is read.
-std::optional<std::string> floatWhereAnIntBelongs(const json& j, const std::string& key) {
-    static const std::set<std::string> kIntFields = {
-        "version", "line", "column", "rows", "columns", "elements", "block", "offset", "size", "matrixStride",
-        "arrayStride", "maxAnisotropy", "maxMipLevel", "uniformBufferSize", "binding", "location", "components",
-        "unit", "uniformRangesRead", "outputTargets", "index"};
+// Only the fields below hold floats; every other number in the file is read as an int. A float
+// anywhere else (a damaged file, or a fuzzer's `1e+40`) would reach nlohmann's get<int>, whose
+// double-to-int cast is undefined out of range (UBSan, CI fuzz smoke 2026-11-25, twice: first
+// `size`, then a shader index under `shaders`). The list is of float fields, not of int fields, so a
+// field added later is safe by default. Found once here, before any field is read.
+std::optional<std::string> floatOutsideAFloatField(const json& j, const std::string& key) {
+    static const std::set<std::string> kFloatFields = {"default", "borderColor", "mipLodBias", "minLod", "maxLod", "value"};
     if (j.is_object()) {
         for (const auto& [k, v] : j.items())
-            if (auto bad = floatWhereAnIntBelongs(v, k)) return bad;
+            if (auto bad = floatOutsideAFloatField(v, k)) return bad;
     } else if (j.is_array()) {
         for (const auto& v : j)
-            if (auto bad = floatWhereAnIntBelongs(v, key)) return bad;
-    } else if (j.is_number_float() && kIntFields.count(key)) {
+            if (auto bad = floatOutsideAFloatField(v, key)) return bad;
+    } else if (j.is_number_float() && !kFloatFields.count(key)) {
         return "'" + key + "' is " + j.dump() + ", not an integer";
     }
     return std::nullopt;
@@ -386,7 +385,7 @@ CompiledEffect deserializeEffect(std::string_view text, const std::string& nameF
         return fail(std::string("not a compiled effect file (") + e.what() + ")");
     }
     if (!j.is_object() || j.value("format", std::string()) != "fxport-effect") return fail("not a compiled effect file");
-    if (auto bad = floatWhereAnIntBelongs(j, std::string())) return fail("damaged compiled effect file (" + *bad + ")");
+    if (auto bad = floatOutsideAFloatField(j, std::string())) return fail("damaged compiled effect file (" + *bad + ")");
     if (j.value("version", 0) != kEffectFileVersion)
         return fail("compiled effect file version " + std::to_string(j.value("version", 0)) + " is not the supported version " +
                     std::to_string(kEffectFileVersion) + "; recompile it with fxport compile");
