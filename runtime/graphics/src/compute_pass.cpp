@@ -22,26 +22,6 @@ namespace fxport {
 
 namespace {
 
-// The image format a compute shader stores `format` with; null when GL has none for it (packed
-// 16-bit formats, sRGB).
-const char* imageFormatOf(SurfaceFormat format) {
-    switch (format) {
-    case SurfaceFormat::Color: return "rgba8";
-    case SurfaceFormat::Rgba64: return "rgba16";
-    case SurfaceFormat::HalfVector4:
-    case SurfaceFormat::HdrBlendable: return "rgba16f";
-    case SurfaceFormat::Vector4: return "rgba32f";
-    case SurfaceFormat::Single: return "r32f";
-    case SurfaceFormat::Vector2: return "rg32f";
-    case SurfaceFormat::HalfSingle: return "r16f";
-    case SurfaceFormat::HalfVector2: return "rg16f";
-    case SurfaceFormat::Rg32: return "rg16";
-    case SurfaceFormat::Alpha8: return "r8";
-    case SurfaceFormat::Rgba1010102: return "rgb10_a2";
-    default: return nullptr;
-    }
-}
-
 DepthFormat targetDepthFormat(const Texture* target) {
     if (target->kind() == Texture::Kind::TextureCube) return static_cast<const RenderTargetCube*>(target)->DepthStencilFormat();
     return static_cast<const RenderTarget2D*>(target)->DepthStencilFormat();
@@ -72,9 +52,37 @@ bool blendOpOf(BlendFunction function, Blend source, Blend destination, bool ful
     }
 }
 
+// Draws in a row whose user vertices differ from the previous draw's under one replay key before
+// the next such draw is drawn as usual (until one comes with the previous one's bytes again).
+constexpr int kChangesBeforeFragments = 3;
+
+}  // namespace
+
+namespace detail {
+
+// The image format a compute shader stores `format` with; null when GL has none for it (packed
+// 16-bit formats, sRGB).
+const char* imageFormatOf(SurfaceFormat format) {
+    switch (format) {
+    case SurfaceFormat::Color: return "rgba8";
+    case SurfaceFormat::Rgba64: return "rgba16";
+    case SurfaceFormat::HalfVector4:
+    case SurfaceFormat::HdrBlendable: return "rgba16f";
+    case SurfaceFormat::Vector4: return "rgba32f";
+    case SurfaceFormat::Single: return "r32f";
+    case SurfaceFormat::Vector2: return "rg32f";
+    case SurfaceFormat::HalfSingle: return "r16f";
+    case SurfaceFormat::HalfVector2: return "rg16f";
+    case SurfaceFormat::Rg32: return "rg16";
+    case SurfaceFormat::Alpha8: return "r8";
+    case SurfaceFormat::Rgba1010102: return "rgb10_a2";
+    default: return nullptr;
+    }
+}
+
 // Compiles and links one stage; 0 and the log's first line on failure.
 GLuint linkProgram(GLenum stage, const std::string& source, const std::vector<std::string>& captured, bool printLog,
-                   std::string& error, bool separable = false) {
+                   std::string& error, bool separable) {
     GLuint shader = glCreateShader(stage);
     const char* text = source.c_str();
     glShaderSource(shader, 1, &text, nullptr);
@@ -129,11 +137,10 @@ GLuint linkProgram(GLenum stage, const std::string& source, const std::vector<st
     return program;
 }
 
-// Draws in a row whose user vertices differ from the previous draw's under one replay key before
-// the next such draw is drawn as usual (until one comes with the previous one's bytes again).
-constexpr int kChangesBeforeFragments = 3;
+}  // namespace detail
 
-}  // namespace
+using detail::imageFormatOf;
+using detail::linkProgram;
 
 ComputePasses::ComputePasses(GraphicsDevice::Impl& owner)
     : device(owner), printOutcomes(std::getenv("FXPORT_COMPUTE_PASSES_DEBUG") != nullptr) {
@@ -160,6 +167,9 @@ ComputePasses::~ComputePasses() {
     while (!entries.empty()) dropEntry(entries.begin());
     if (fillFramebuffer) glDeleteFramebuffers(1, &fillFramebuffer);
     if (captureBuffer) glDeleteBuffers(1, &captureBuffer);
+    for (auto& [key, reduction] : reductionPrograms)
+        if (reduction.program) glDeleteProgram(reduction.program);
+    if (copiesBuffer) glDeleteBuffers(1, &copiesBuffer);
     if (compare.program) glDeleteProgram(compare.program);
     if (compare.commands) glDeleteBuffers(1, &compare.commands);
     if (compare.counters) {

@@ -20,6 +20,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "compute_pass_source.h"
 #include "draw_call.h"
@@ -27,6 +28,26 @@
 #include "fxport/platform/gl.h"
 
 namespace fxport {
+
+class Texture2D;
+
+namespace detail {
+// The image format a compute shader stores `format` with; null when GL has none for it (packed
+// 16-bit formats, sRGB).
+const char* imageFormatOf(SurfaceFormat format);
+// Compiles and links one stage; 0 and the log's first line in `error` on failure. `captured`:
+// transform feedback varyings.
+GLuint linkProgram(GLenum stage, const std::string& source, const std::vector<std::string>& captured, bool printLog,
+                   std::string& error, bool separable = false);
+// One sprite that copies texels 1:1 (texel_copies.cpp): the pixels [x0, x1) x [y0, y1) of the
+// viewport, and the texel that lands on pixel (x0, y0).
+struct TexelCopy {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    int sourceX = 0, sourceY = 0;
+};
+// GLSL of the reduction over texel copies (texel_copies.cpp): `op` min or max per part.
+std::string texelCopyShaderSource(const std::string& imageFormat, BlendOp color, BlendOp alpha, unsigned writeMask);
+}  // namespace detail
 
 // What a shader's GLSL allows, read once per ShaderProgram (ShaderProgram::computeAnalysis).
 struct ComputeAnalysis {
@@ -44,6 +65,13 @@ struct ComputePasses {
     // Runs the current draw (flushed, vertex array bound) as a compute dispatch when it may.
     // False: draw it as usual.
     bool tryDraw(PrimitiveType type, int primitiveCount, const DrawCall& draw);
+
+    // SpriteBatch (sprite_batch.cpp), for a batch of sprites drawn with its own effect whose every
+    // sprite copies texels 1:1 (white, unrotated, unflipped, whole pixels, Point sampling): under a
+    // Min or Max blend the batch's pixels are the min (max) over the sprites covering them and the
+    // target, in any order, so one dispatch computes them (texel_copies.cpp). Flushes and
+    // dispatches, or returns false (nothing done: draw it as usual).
+    bool tryTexelCopies(const Texture2D& texture, const std::vector<detail::TexelCopy>& copies);
 
     // Deletes the programs and replay entries made for a shader whose effect releases its programs.
     void forget(const ComputeAnalysis& analysis);
@@ -116,6 +144,14 @@ private:
         bool failed = false;
     } compare;
     std::uint32_t counters[4] = {};  // the GPU's, as last read
+
+    // Texel-copy reductions (texel_copies.cpp): programs per "format/ops/mask", the copies' buffer.
+    struct Reduction {
+        GLuint program = 0;  // 0: it could not be made (failures says why)
+        GLint box = -1, count = -1;
+    };
+    std::map<std::string, Reduction> reductionPrograms;
+    GLuint copiesBuffer = 0;
 };
 
 }  // namespace fxport

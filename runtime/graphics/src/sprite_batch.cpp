@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "compute_pass.h"
 #include "device_impl.h"
 #include "fxport/graphics/effect.h"
 #include "fxport/graphics/errors.h"
@@ -36,6 +37,51 @@ constexpr float kCornerY[4] = {0.0f, 0.0f, 1.0f, 1.0f};
 
 std::string textureLabel(const Texture2D& texture) {
     return texture.Name.empty() ? std::string("Texture2D") : "Texture2D '" + texture.Name + "'";
+}
+
+// Issue 16 (texel copies, texel_copies.cpp): whether each sprite copies texels 1:1 -- an
+// unrotated, unflipped white rectangle with whole-pixel edges, at a depth that is not clipped,
+// whose texture rectangle lies in the texture and has its size in texels -- and if so, the copies.
+// Point sampling then lands every pixel centre half a texel from the texel's edges, on the texel
+// `source + (pixel - corner)`, and SpriteEffect's tex2D * colour returns it unchanged.
+bool texelCopiesOf(const Texture2D& texture, const VertexPositionColorTexture* vertices, int sprites,
+                   std::vector<detail::TexelCopy>& out) {
+    out.clear();
+    const float textureW = float(texture.Width()), textureH = float(texture.Height());
+    auto whole = [](float f, int& i) {
+        if (!(std::fabs(f) < 16777216.0f) || std::floor(f) != f) return false;
+        i = int(f);
+        return true;
+    };
+    // Texture coordinates are texels times 1/size in float: within a thousandth of a whole texel.
+    auto nearWhole = [](float f, int& i) {
+        const float r = std::round(f);
+        if (!(std::fabs(f) < 16777216.0f) || std::fabs(f - r) > 1e-3f) return false;
+        i = int(r);
+        return true;
+    };
+    for (int s = 0; s < sprites; ++s) {
+        const VertexPositionColorTexture* v = vertices + std::size_t(s) * 4;
+        // Corners as queue() lays them out: 0 top-left, 1 top-right, 2 bottom-left, 3 bottom-right.
+        const Vector3 p0 = v[0].Position, p1 = v[1].Position, p2 = v[2].Position, p3 = v[3].Position;
+        const Vector2 t0 = v[0].TextureCoordinate, t1 = v[1].TextureCoordinate, t2 = v[2].TextureCoordinate,
+                      t3 = v[3].TextureCoordinate;
+        if (!(p2.X == p0.X && p3.X == p1.X && p1.Y == p0.Y && p3.Y == p2.Y && p0.X < p1.X && p0.Y < p2.Y)) return false;
+        if (!(t2.X == t0.X && t3.X == t1.X && t1.Y == t0.Y && t3.Y == t2.Y && t0.X < t1.X && t0.Y < t2.Y)) return false;
+        for (int c = 0; c < 4; ++c)
+            if (!(v[c].Color == Color::White) || !(v[c].Position.Z >= 0.0f && v[c].Position.Z <= 1.0f)) return false;
+        detail::TexelCopy copy;
+        int sourceX1 = 0, sourceY1 = 0;
+        if (!whole(p0.X, copy.x0) || !whole(p0.Y, copy.y0) || !whole(p1.X, copy.x1) || !whole(p2.Y, copy.y1) ||
+            !nearWhole(t0.X * textureW, copy.sourceX) || !nearWhole(t0.Y * textureH, copy.sourceY) ||
+            !nearWhole(t1.X * textureW, sourceX1) || !nearWhole(t2.Y * textureH, sourceY1))
+            return false;
+        if (sourceX1 - copy.sourceX != copy.x1 - copy.x0 || sourceY1 - copy.sourceY != copy.y1 - copy.y0 || copy.sourceX < 0 ||
+            copy.sourceY < 0 || sourceX1 > texture.Width() || sourceY1 > texture.Height())
+            return false;
+        out.push_back(copy);
+    }
+    return true;
 }
 
 }  // namespace
@@ -318,8 +364,23 @@ void SpriteBatch::drawBatch(Texture2D& texture, const VertexPositionColorTexture
     }
     // A custom effect of several passes draws the sprites once per pass: not proven here.
     const bool onePass = customEffect_ == nullptr || customEffect_->CurrentTechnique->Passes.Count() == 1;
+    // Texel copies under a Min or Max blend reduce in one dispatch (texel_copies.cpp). Immediate
+    // mode set the matrix at Begin, from the viewport of that moment: not proven here.
+    const bool reduction = customEffect_ == nullptr && device_.impl().computePasses && transformMatrix_ == Matrix::Identity &&
+                           sortMode_ != SpriteSortMode::Immediate &&
+                           (blendState_.ColorBlendFunction == BlendFunction::Min || blendState_.ColorBlendFunction == BlendFunction::Max);
+    std::vector<detail::TexelCopy> copies;
     while (count > 0) {
         const int sprites = std::min(count, kMaxBatchSize);
+        if (reduction && texelCopiesOf(texture, vertices, sprites, copies)) {
+            device_.Textures[0] = texture;
+            if (device_.impl().computePasses->tryTexelCopies(texture, copies)) {
+                ++drawCalls_;
+                vertices += std::size_t(sprites) * 4;
+                count -= sprites;
+                continue;
+            }
+        }
         const bool covers = onePass && coversViewport(vertices, sprites);
         auto draw = [&] {
             device_.Textures[0] = texture;
