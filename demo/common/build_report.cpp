@@ -136,9 +136,9 @@ namespace {
 
 void printClears(std::FILE* out, const char* label, const BuildReport& r) {
     if (!r.hasClears) return;
-    std::fprintf(out, "  %-12s requested %6ld  executed %6ld  replaced %6ld  dropped %6ld  discarded %6ld  covered %6ld\n",
+    std::fprintf(out, "  %-12s requested %6ld  executed %6ld  replaced %6ld  dropped %6ld  discarded %6ld  covered %6ld  blends as writes %6ld\n",
                  label, r.clears.requested, r.clears.executed, r.clears.replaced, r.clears.dropped, r.clears.discarded,
-                 r.clears.covered);
+                 r.clears.covered, r.clears.blendsAsWrites);
 }
 
 void printDepthStorage(std::FILE* out, const char* label, const BuildReport& r) {

@@ -217,5 +217,71 @@ TEST(DeferredClears, SpriteCoveringTheTargetDropsThePendingColourClear) {
     }
 }
 
+
+// A blend onto the zero clear executed for the draw, on an 8-bit target, with source factor One
+// and Add, Subtract or Max is a write: the same bytes as blending (ClearStatistics::blendsAsWrites;
+// with compute passes on the draw may then run as a dispatch). A second draw blends onto the
+// first draw's pixels as usual. Other blends, a non-zero clear or a float target are not touched.
+// Each case runs with DropCoveredClears on (the fold) and off (every blend drawn as written).
+TEST(DeferredClears, BlendOntoTheZeroClearIsAWrite) {
+    auto blend = [](Blend source, Blend destination, BlendFunction function) {
+        BlendState b;
+        b.ColorSourceBlend = b.AlphaSourceBlend = source;
+        b.ColorDestinationBlend = b.AlphaDestinationBlend = destination;
+        b.ColorBlendFunction = b.AlphaBlendFunction = function;
+        return b;
+    };
+    struct Case {
+        const char* name;
+        BlendState blend;
+        Vector4 clear;
+        SurfaceFormat format;
+        bool folds;
+    };
+    const Case cases[] = {
+        {"One/One Add", blend(Blend::One, Blend::One, BlendFunction::Add), Vector4(0, 0, 0, 0), SurfaceFormat::Color, true},
+        {"premultiplied AlphaBlend", BlendState::AlphaBlend, Vector4(0, 0, 0, 0), SurfaceFormat::Color, true},
+        {"Max", blend(Blend::One, Blend::One, BlendFunction::Max), Vector4(0, 0, 0, 0), SurfaceFormat::Color, true},
+        {"Subtract", blend(Blend::One, Blend::InverseSourceColor, BlendFunction::Subtract), Vector4(0, 0, 0, 0), SurfaceFormat::Color, true},
+        {"Rgba64", blend(Blend::One, Blend::One, BlendFunction::Add), Vector4(0, 0, 0, 0), SurfaceFormat::Rgba64, true},
+        {"Additive (source alpha)", BlendState::Additive, Vector4(0, 0, 0, 0), SurfaceFormat::Color, false},
+        {"Min", blend(Blend::One, Blend::One, BlendFunction::Min), Vector4(0, 0, 0, 0), SurfaceFormat::Color, false},
+        {"ReverseSubtract", blend(Blend::One, Blend::One, BlendFunction::ReverseSubtract), Vector4(0, 0, 0, 0), SurfaceFormat::Color, false},
+        {"a clear that is not zero", blend(Blend::One, Blend::One, BlendFunction::Add), Vector4(0, 0, 0, 1.0f / 255), SurfaceFormat::Color, false},
+        {"a float target", blend(Blend::One, Blend::One, BlendFunction::Add), Vector4(0, 0, 0, 0), SurfaceFormat::Vector4, false},
+    };
+    const Vector4 first(0.25f, 0.5f, 0.75f, 0.5f), second(0.5f, 0.25f, 0.5f, 0.25f);
+    for (const Case& c : cases) {
+        std::vector<std::uint8_t> images[2];
+        std::vector<float> colors;  // the folded Color image, as floats
+        for (bool fold : {true, false}) {
+            SCOPED_TRACE(std::string(c.name) + (fold ? ", folded" : ", blended"));
+            Device d(true, true, fold);
+            RenderTarget2D target(*d.device, 8, 4, false, c.format, DepthFormat::None);
+            d.device->SetRenderTarget(target);
+            d.device->Clear(ClearOptions::Target, c.clear, 1.0f, 0);
+            d.device->BlendState = c.blend;
+            const ClearStatistics before = d.device->clearStatistics();
+            d.draw(first, DepthStencilState::None);
+            const ClearStatistics between = d.device->clearStatistics();
+            d.draw(second, DepthStencilState::None);
+            const ClearStatistics after = d.device->clearStatistics();
+            d.device->SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+            EXPECT_EQ(between.blendsAsWrites - before.blendsAsWrites, fold && c.folds ? 1 : 0);
+            EXPECT_EQ(after.blendsAsWrites - between.blendsAsWrites, 0);  // the second draw blends onto the first
+            std::vector<std::uint8_t>& bytes = images[fold ? 0 : 1];
+            const std::size_t texelBytes = c.format == SurfaceFormat::Color ? 4 : c.format == SurfaceFormat::Rgba64 ? 8 : 16;
+            bytes.resize(32 * texelBytes);
+            target.getData(0, bytes.data(), bytes.size());
+            if (fold && c.format == SurfaceFormat::Color) colors = readFloats(target);
+        }
+        EXPECT_EQ(images[0], images[1]) << c.name << ": the fold changed the pixels";
+        if (c.name == std::string("One/One Add")) {  // the second draw added onto the first
+            const std::vector<float> expected = {192 / 255.0f, 192 / 255.0f, 1.0f, 192 / 255.0f};  // 64 + 128, 128 + 64, 191 + 128 saturated, 128 + 64
+            for (int i = 0; i < 32; ++i) EXPECT_EQ(pixel(colors, i), expected) << "texel " << i;
+        }
+    }
+}
+
 }  // namespace
 }  // namespace fxport

@@ -370,7 +370,7 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
     if (d.emulation.srgbWrite) return fallBack("sRGB write");
     const RasterizerState& raster = dev.RasterizerState;
     if (raster.FillMode != FillMode::Solid) return fallBack("wireframe");
-    const BlendState& blend = dev.BlendState;
+    const BlendState& blend = d.drawBlend();  // flush's: a blend onto a zero clear may be a write
     if (blend.MultiSampleMask != -1) return fallBack("multisample mask");
 
     // Targets: formats, blend and masks.

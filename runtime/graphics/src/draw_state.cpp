@@ -70,9 +70,18 @@ void GraphicsDevice::Impl::flush(const char* what) {
     const fxport::DepthStencilState& wanted = device.DepthStencilState;
     drawDepthTestMoot = wanted.DepthBufferEnable && depthTestIsMoot(wanted);
     const bool testOff = drawDepthTestMoot && boundDepthStorage()->renderbuffer != 0;
+    // Decided before the clear is executed (it is pending until then), applied after.
+    drawBlendIsWrite = blendOverZeroClearIsWrite();
+    if (drawBlendIsWrite) {
+        drawWriteBlend = device.BlendState;
+        drawWriteBlend.ColorSourceBlend = drawWriteBlend.AlphaSourceBlend = fxport::Blend::One;
+        drawWriteBlend.ColorDestinationBlend = drawWriteBlend.AlphaDestinationBlend = fxport::Blend::Zero;
+        drawWriteBlend.ColorBlendFunction = drawWriteBlend.AlphaBlendFunction = fxport::BlendFunction::Add;
+        ++clearStats.blendsAsWrites;
+    }
     resolvePendingClearBeforeDraw(testOff ? fxport::DepthStencilState::None : wanted);
-    applyBlend(blendForPixelShader(device.BlendState, shaders[1]->shader->outputTargets));
-    if (trackingBoundTargets && device.BlendState.blendingEnabled()) blendedSinceMark = true;
+    applyBlend(blendForPixelShader(drawBlend(), shaders[1]->shader->outputTargets));
+    if (trackingBoundTargets && drawBlend().blendingEnabled()) blendedSinceMark = true;
     noteDrawnTargets();
     applyDepthStencil(testOff ? fxport::DepthStencilState::None : wanted);
     applyRasterizer(device.RasterizerState);

@@ -150,6 +150,32 @@ void GraphicsDevice::Impl::dropColorClearUnderCoveringSprite(const ShaderProgram
     ++clearStats.covered;
 }
 
+// The pending colour clear is zero in every channel and is executed for this draw, so every
+// pixel the draw blends onto holds 0. On an unsigned-normalized target the source is clamped to
+// [0, 1] and every factor is finite, so with source factor One: Add gives src + 0 * f = src,
+// Subtract src - 0 * f = src, Max max(src, 0) = src -- the same bits a write gives, whether the
+// blender works in fixed point or in float. (Min and ReverseSubtract give 0; float targets could
+// meet 0 * Inf.) A write draws no blend and may run as a compute pass.
+bool GraphicsDevice::Impl::blendOverZeroClearIsWrite() const {
+    if (!dropCoveredClears || !(pendingClear.options & kColor) || !(pendingClear.color == Vector4(0, 0, 0, 0))) return false;
+    const fxport::BlendState& blend = device.BlendState;
+    if (!blend.blendingEnabled()) return false;
+    auto writes = [](fxport::Blend source, fxport::BlendFunction function) {
+        return source == fxport::Blend::One && (function == fxport::BlendFunction::Add ||
+                                                function == fxport::BlendFunction::Subtract || function == fxport::BlendFunction::Max);
+    };
+    if (!writes(blend.ColorSourceBlend, blend.ColorBlendFunction) || !writes(blend.AlphaSourceBlend, blend.AlphaBlendFunction))
+        return false;
+    auto unsignedNormalized = [](SurfaceFormat f) {
+        return f == SurfaceFormat::Color || f == SurfaceFormat::Bgr565 || f == SurfaceFormat::Bgra5551 ||
+               f == SurfaceFormat::Bgra4444 || f == SurfaceFormat::Rgba1010102 || f == SurfaceFormat::Rg32 ||
+               f == SurfaceFormat::Rgba64;
+    };
+    if (targets.empty()) return unsignedNormalized(backBuffer->Format());
+    return std::all_of(targets.begin(), targets.end(),
+                       [&](const RenderTargetBinding& b) { return unsignedNormalized(b.RenderTarget->Format()); });
+}
+
 void GraphicsDevice::Impl::leaveBoundTargets() {
     resolvePendingClear(kColor);  // a render target is read as a texture after it is unbound
     if (boundUsage() != fxport::RenderTargetUsage::DiscardContents) {

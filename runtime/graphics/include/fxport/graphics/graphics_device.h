@@ -151,6 +151,7 @@ struct ClearStatistics {
     long dropped = 0;    // depth/stencil clears of a DiscardContents target left before any draw tested them
     long discarded = 0;  // pending channel clears dropped by DiscardContents
     long covered = 0;    // pending colour clears dropped under a SpriteBatch sprite that writes every pixel
+    long blendsAsWrites = 0;  // draws blending onto the zero clear executed for them, drawn as writes (same bits)
 };
 
 // What PresentationParameters::ComputePasses did: draws run as compute dispatches, and, for draws
