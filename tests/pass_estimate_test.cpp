@@ -34,6 +34,23 @@ TEST(PassEstimate, FillIsTheLargerOfWriteOnceAndFragmentsAndTheBoundTheLargerOfF
     EXPECT_NEAR(f.boundMs(), 0.0576, 1e-12);
 }
 
+// The clears a pass executed add to its fragments' time (they write the same memory first):
+// 8 MB of fragments at 64 GB/s and an 8 MB clear at 50 GB/s are 0.125 + 0.16 ms; alone, the
+// fragments' term would have been below writing the target once (8 MB at 40 GB/s, 0.2 ms).
+TEST(PassEstimate, ExecutedClearsAddToTheFragmentsTime) {
+    PassWork work;
+    work.targets = {{8e6, 40}};
+    work.fragments = 2e6;
+    work.bytesPerFragment = 4;
+    work.fragmentRateGBps = 64;
+    EXPECT_NEAR(estimate(work).fillMs, 0.2, 1e-12);
+    work.clearedBytes = 8e6;
+    work.clearRateGBps = 50;
+    EXPECT_NEAR(estimate(work).fillMs, 0.125 + 0.16, 1e-12);
+    work.clearRateGBps = 0;  // rate unknown: no clear term
+    EXPECT_NEAR(estimate(work).fillMs, 0.2, 1e-12);
+}
+
 // Per-format rates add up target by target: 1 MB at 1 GB/s + 4 MB at 4 GB/s = 1 ms + 1 ms.
 TEST(PassEstimate, EachTargetAtItsOwnRate) {
     PassWork work;

@@ -86,7 +86,7 @@ void PassBound::end(const std::string& pass) {
         run.written.push_back({written.drawnPixels, written.clearedPixels, pixels > 0 ? bytes / pixels : 0, rate(format)});
         run.pixels = std::max(run.pixels, pixels);
     }
-    if (limits) work.fetchRateGTexelsPerSecond = limits->fetchGTexelsPerSecond;
+    if (limits) work.fetchRateGTexelsPerSecond = limits->fetchGTexelsPerSecond, work.clearRateGBps = limits->clearGBps;
     if (tallyDevice_ == device && !openTallyMarks_.empty()) {
         run.tallyFrom = openTallyMarks_.back();
         openTallyMarks_.pop_back();
@@ -109,6 +109,7 @@ void PassBound::readTally(Run& run) {
     for (const Written& w : run.written) {
         const double drawn = run.counted ? std::min(w.drawnPixels, run.work.fragments) : w.drawnPixels;
         run.work.targets.push_back({std::max(drawn, w.clearedPixels) * w.bytesPerPixel, w.rateGBps});
+        run.work.clearedBytes += w.clearedPixels * w.bytesPerPixel;
     }
 }
 

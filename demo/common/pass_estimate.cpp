@@ -17,7 +17,9 @@ PassEstimate estimate(const PassWork& work) {
         e.bytes += t.bytes;
         writeOnceMs += msAt(t.bytes, t.rateGBps * 1e9);
     }
-    const double fragmentMs = msAt(work.fragments * work.bytesPerFragment, work.fragmentRateGBps * 1e9);
+    // Clears and draws write the same memory one after the other: their times add.
+    const double fragmentMs = msAt(work.fragments * work.bytesPerFragment, work.fragmentRateGBps * 1e9) +
+                              msAt(work.clearedBytes, work.clearRateGBps * 1e9);
     e.fillMs = std::max(writeOnceMs, fragmentMs);
     for (const PassWork::FetchRun& run : work.fetchRuns) {
         e.fetches += run.fragments * run.least;

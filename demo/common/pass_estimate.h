@@ -2,7 +2,9 @@
 // time the GPU needs for what the pass wrote and fetched, at rates measured once per device
 // (fxport::GpuLimits). Two terms, and the bound is the larger:
 //   fill  = max(every target the pass wrote, each written once at its format's rate,
-//               fragments x the bytes one fragment writes, at the pass's fill rate)
+//               fragments x the bytes one fragment writes, at the pass's fill rate, plus the
+//               clears the pass executed at the clear rate -- a clear the blend of a later draw
+//               reads, XNA's DiscardColor under an alpha-blended frame, is work the pass does)
 //   fetch = the texture fetches of its draws (fragments x the pixel shader's fetches per fragment,
 //           summed over runs of draws) at the probe's bilinear fetch rate.
 // A fetch count the shader text cannot settle (a branch, a loop of unknown length) enters with its
@@ -29,6 +31,8 @@ struct PassWork {
     double fragments = 0;         // fragments the draws wrote
     int bytesPerFragment = 0;     // the widest colour bytes one fragment wrote
     double fragmentRateGBps = 0;  // what those are written at (0: no fragment term)
+    double clearedBytes = 0;      // what the clears the pass executed wrote (each target's widest clear)
+    double clearRateGBps = 0;     // the clear rate (0: no clear term)
     std::vector<FetchRun> fetchRuns;
     double fetchRateGTexelsPerSecond = 0;  // 0: no fetch term
 };
