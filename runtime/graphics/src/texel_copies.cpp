@@ -22,8 +22,8 @@ namespace fxport {
 namespace detail {
 
 namespace {
-constexpr int kTileWidth = 32;  // pixels of a row per workgroup
-constexpr int kSlices = 8;      // invocations per pixel, each over every kSlices-th sprite
+constexpr int kTileWidth = 8;  // pixels of a row per workgroup
+constexpr int kSlices = 32;    // invocations per pixel, each over every kSlices-th sprite (a 1920-pixel row: 240 workgroups)
 constexpr int kCopiesBinding = 0;
 }  // namespace
 
