@@ -49,6 +49,11 @@ TEST(PassEstimate, ExecutedClearsAddToTheFragmentsTime) {
     EXPECT_NEAR(estimate(work).fillMs, 0.125 + 0.16, 1e-12);
     work.clearRateGBps = 0;  // rate unknown: no clear term
     EXPECT_NEAR(estimate(work).fillMs, 0.2, 1e-12);
+    // A compute pass (no fragments) after a clear: its writes once at its rate, then the clear.
+    work.fragments = 0;
+    work.targets = {{8e6, 400, 8e6}};
+    work.clearRateGBps = 50;
+    EXPECT_NEAR(estimate(work).fillMs, 0.02 + 0.16, 1e-12);
 }
 
 // Per-format rates add up target by target: 1 MB at 1 GB/s + 4 MB at 4 GB/s = 1 ms + 1 ms.

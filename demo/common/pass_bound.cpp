@@ -108,7 +108,7 @@ void PassBound::readTally(Run& run) {
     // draw's fragments bound when they were counted (a pixel written needs a fragment that passed).
     for (const Written& w : run.written) {
         const double drawn = run.counted ? std::min(w.drawnPixels, run.work.fragments) : w.drawnPixels;
-        run.work.targets.push_back({std::max(drawn, w.clearedPixels) * w.bytesPerPixel, w.rateGBps});
+        run.work.targets.push_back({std::max(drawn, w.clearedPixels) * w.bytesPerPixel, w.rateGBps, drawn * w.bytesPerPixel});
         run.work.clearedBytes += w.clearedPixels * w.bytesPerPixel;
     }
 }

@@ -12,15 +12,15 @@ double msAt(double amount, double ratePerSecond) { return ratePerSecond > 0 ? am
 
 PassEstimate estimate(const PassWork& work) {
     PassEstimate e;
-    double writeOnceMs = 0;
+    double writeOnceMs = 0, drawnOnceMs = 0;
     for (const PassWork::Target& t : work.targets) {
         e.bytes += t.bytes;
         writeOnceMs += msAt(t.bytes, t.rateGBps * 1e9);
+        drawnOnceMs += msAt(t.drawnBytes, t.rateGBps * 1e9);
     }
     // Clears and draws write the same memory one after the other: their times add.
-    const double fragmentMs = msAt(work.fragments * work.bytesPerFragment, work.fragmentRateGBps * 1e9) +
-                              msAt(work.clearedBytes, work.clearRateGBps * 1e9);
-    e.fillMs = std::max(writeOnceMs, fragmentMs);
+    const double drawMs = std::max(drawnOnceMs, msAt(work.fragments * work.bytesPerFragment, work.fragmentRateGBps * 1e9));
+    e.fillMs = std::max(writeOnceMs, msAt(work.clearedBytes, work.clearRateGBps * 1e9) + drawMs);
     for (const PassWork::FetchRun& run : work.fetchRuns) {
         e.fetches += run.fragments * run.least;
         e.fetchesMost += run.fragments * run.most;

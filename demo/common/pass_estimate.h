@@ -2,9 +2,11 @@
 // time the GPU needs for what the pass wrote and fetched, at rates measured once per device
 // (fxport::GpuLimits). Two terms, and the bound is the larger:
 //   fill  = max(every target the pass wrote, each written once at its format's rate,
-//               fragments x the bytes one fragment writes, at the pass's fill rate, plus the
-//               clears the pass executed at the clear rate -- a clear the blend of a later draw
-//               reads, XNA's DiscardColor under an alpha-blended frame, is work the pass does)
+//               the clears the pass executed at the clear rate, plus the larger of what its draws
+//               wrote once (each target's drawn pixels at its rate) and fragments x the bytes one
+//               fragment writes at the pass's fill rate) -- a clear the blend of a later draw
+//               reads, XNA's DiscardColor under an alpha-blended frame, is work the pass does, before
+//               its draws
 //   fetch = the texture fetches of its draws (fragments x the pixel shader's fetches per fragment,
 //           summed over runs of draws) at the probe's bilinear fetch rate.
 // A fetch count the shader text cannot settle (a branch, a loop of unknown length) enters with its
@@ -21,6 +23,7 @@ struct PassWork {
     struct Target {
         double bytes = 0;     // written once (colour + the depth/stencil buffer if used)
         double rateGBps = 0;  // its format's fill rate (0: unknown, left out)
+        double drawnBytes = 0;  // of those, what draws wrote (the rest only clears)
     };
     struct FetchRun {         // draws whose pixel shaders fetch alike (GraphicsDevice::FragmentTally)
         double fragments = 0;
