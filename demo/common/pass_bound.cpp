@@ -83,7 +83,9 @@ void PassBound::end(const std::string& pass) {
         if (written.depthStencil) bytes += depthBytes(width, height, format, depth);
         // The pass's fragments are written at the rate of the first target it wrote.
         if (work.fragmentRateGBps == 0) work.fragmentRateGBps = rate(format);
-        run.written.push_back({written.drawnPixels, written.clearedPixels, pixels > 0 ? bytes / pixels : 0, rate(format)});
+        const double colorBytes = double(RenderTargetBytes(width, height, 1, format, DepthFormat::None));
+        run.written.push_back({written.drawnPixels, written.clearedPixels, written.colorClearedPixels, pixels > 0 ? bytes / pixels : 0,
+                               pixels > 0 ? colorBytes / pixels : 0, rate(format)});
         run.pixels = std::max(run.pixels, pixels);
     }
     if (limits) work.fetchRateGTexelsPerSecond = limits->fetchGTexelsPerSecond, work.clearRateGBps = limits->clearGBps;
@@ -106,10 +108,13 @@ void PassBound::readTally(Run& run) {
         }
     // Each target once: what its widest clear covered, or its widest draw's viewport -- which a
     // draw's fragments bound when they were counted (a pixel written needs a fragment that passed).
+    // Compute dispatches write pixels without fragments. Only colour clears enter the clear term:
+    // depth/stencil clears are fast clears (the deferred composition's depth clear is no 4 B/px
+    // of traffic), and the term must stay a bound.
     for (const Written& w : run.written) {
-        const double drawn = run.counted ? std::min(w.drawnPixels, run.work.fragments) : w.drawnPixels;
+        const double drawn = run.counted && run.dispatches == 0 ? std::min(w.drawnPixels, run.work.fragments) : w.drawnPixels;
         run.work.targets.push_back({std::max(drawn, w.clearedPixels) * w.bytesPerPixel, w.rateGBps, drawn * w.bytesPerPixel});
-        run.work.clearedBytes += w.clearedPixels * w.bytesPerPixel;
+        run.work.clearedBytes += w.colorClearedPixels * w.colorBytesPerPixel;
     }
 }
 

@@ -65,8 +65,9 @@ public:
 
 private:
     struct Written {                   // a target the pass wrote (GraphicsDevice::WrittenTarget)
-        double drawnPixels = 0, clearedPixels = 0;
+        double drawnPixels = 0, clearedPixels = 0, colorClearedPixels = 0;
         double bytesPerPixel = 0;      // colour and depth/stencil as written
+        double colorBytesPerPixel = 0; // colour alone (what a colour clear writes)
         double rateGBps = 0;
     };
     struct Run {

@@ -324,9 +324,10 @@ void GraphicsDevice::Impl::noteWrittenTargets(bool color, bool depthStencil, con
                 w.depthStencil = w.depthStencil || depth;
                 double& most = cleared ? w.clearedPixels : w.drawnPixels;
                 most = std::max(most, pixels);
+                if (cleared && color) w.colorClearedPixels = std::max(w.colorClearedPixels, pixels);
                 return;
             }
-        writtenSinceMark.push_back({b, color, depth, cleared ? 0.0 : pixels, cleared ? pixels : 0.0});
+        writtenSinceMark.push_back({b, color, depth, cleared ? 0.0 : pixels, cleared ? pixels : 0.0, cleared && color ? pixels : 0.0});
     };
     // The first target's depth/stencil buffer serves them all (XNA: MRT use the first's).
     if (targets.empty()) note(RenderTargetBinding(backBuffer.get()), depthStencil);

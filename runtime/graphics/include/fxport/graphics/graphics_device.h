@@ -229,6 +229,7 @@ public:
         bool depthStencil = false;
         double drawnPixels = 0;
         double clearedPixels = 0;
+        double colorClearedPixels = 0;  // of those, by clears of colour (depth clears are fast clears on GPUs)
     };
     std::vector<WrittenTarget> targetsWrittenSinceMark() const;
 
