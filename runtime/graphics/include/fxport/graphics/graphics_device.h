@@ -66,7 +66,10 @@ struct PresentationParameters {
     // $FXPORT_LAZY_DEPTH=0) makes every buffer with its target.
     bool LazyDepthStorage = true;
     // fxport: a pending colour clear is dropped under a SpriteBatch sprite that provably writes every
-    // pixel of the target (ClearStatistics::covered); false (or $FXPORT_DROP_COVERED_CLEARS=0) keeps it.
+    // pixel of the target (ClearStatistics::covered), and a draw that blends onto a zero colour clear
+    // executed for it, on an unsigned-normalized target with source factor One and Add, Subtract or
+    // Max, draws as the write it amounts to (ClearStatistics::blendsAsWrites; same bytes); false (or
+    // $FXPORT_DROP_COVERED_CLEARS=0) does neither.
     bool DropCoveredClears = true;
     // fxport: a draw of at most two triangles (a FullscreenQuad, a one-sprite SpriteBatch batch)
     // whose state a compute dispatch honours exactly -- no depth or stencil test, no blending but
