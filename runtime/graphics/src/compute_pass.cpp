@@ -137,6 +137,18 @@ GLuint linkProgram(GLenum stage, const std::string& source, const std::vector<st
     return program;
 }
 
+PixelBox drawablePixels(const GraphicsDevice& device, int targetWidth, int targetHeight) {
+    const Viewport& viewport = device.Viewport;
+    PixelBox b{std::max(viewport.X, 0), std::max(viewport.Y, 0), std::min(viewport.X + viewport.Width, targetWidth),
+               std::min(viewport.Y + viewport.Height, targetHeight)};
+    if (device.RasterizerState.ScissorTestEnable) {
+        const Rectangle& s = device.ScissorRectangle;
+        b.x0 = std::max(b.x0, s.X), b.y0 = std::max(b.y0, s.Y);
+        b.x1 = std::min(b.x1, s.X + s.Width), b.y1 = std::min(b.y1, s.Y + s.Height);
+    }
+    return b;
+}
+
 }  // namespace detail
 
 using detail::imageFormatOf;
@@ -493,13 +505,7 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
     if (!entry) return fallBack(refusal);
 
     // The pixels the draw may touch: the viewport (GL clips to it), the targets, the scissor.
-    int x0 = std::max(viewport.X, 0), y0 = std::max(viewport.Y, 0);
-    int x1 = std::min(viewport.X + viewport.Width, d.targetWidth), y1 = std::min(viewport.Y + viewport.Height, d.targetHeight);
-    if (raster.ScissorTestEnable) {
-        const Rectangle& s = dev.ScissorRectangle;
-        x0 = std::max(x0, s.X), y0 = std::max(y0, s.Y);
-        x1 = std::min(x1, s.X + s.Width), y1 = std::min(y1, s.Y + s.Height);
-    }
+    const auto [x0, y0, x1, y1] = detail::drawablePixels(dev, d.targetWidth, d.targetHeight);
     ++statistics.issued;
     if (x1 <= x0 || y1 <= y0) {  // the fragment stage would draw nothing either
         ++statistics.dispatched;

@@ -39,6 +39,12 @@ const char* imageFormatOf(SurfaceFormat format);
 // transform feedback varyings.
 GLuint linkProgram(GLenum stage, const std::string& source, const std::vector<std::string>& captured, bool printLog,
                    std::string& error, bool separable = false);
+// The pixels a draw may touch, [x0, x1) x [y0, y1): the viewport (GL clips to it) within a
+// targetWidth x targetHeight target and, when the rasterizer state enables it, the scissor.
+struct PixelBox {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+PixelBox drawablePixels(const GraphicsDevice& device, int targetWidth, int targetHeight);
 // One sprite that copies texels 1:1 (texel_copies.cpp): the pixels [x0, x1) x [y0, y1) of the
 // viewport, and the texel that lands on pixel (x0, y0).
 struct TexelCopy {

@@ -122,13 +122,7 @@ bool ComputePasses::tryTexelCopies(const Texture2D& texture, const std::vector<d
     // The pixels each sprite writes: its rectangle in the viewport, within the viewport (GL clips
     // to it), the target and the scissor. The offset takes a pixel to its texel.
     const Viewport& viewport = dev.Viewport;
-    int cx0 = std::max(viewport.X, 0), cy0 = std::max(viewport.Y, 0);
-    int cx1 = std::min(viewport.X + viewport.Width, target2D.Width()), cy1 = std::min(viewport.Y + viewport.Height, target2D.Height());
-    if (raster.ScissorTestEnable) {
-        const Rectangle& s = dev.ScissorRectangle;
-        cx0 = std::max(cx0, s.X), cy0 = std::max(cy0, s.Y);
-        cx1 = std::min(cx1, s.X + s.Width), cy1 = std::min(cy1, s.Y + s.Height);
-    }
+    const auto [cx0, cy0, cx1, cy1] = detail::drawablePixels(dev, target2D.Width(), target2D.Height());
     std::vector<GLint> words;
     words.reserve(copies.size() * 8);
     int bx0 = cx1, by0 = cy1, bx1 = cx0, by1 = cy0;
