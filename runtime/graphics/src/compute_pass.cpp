@@ -7,6 +7,7 @@
 #include "compute_pass.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -168,8 +169,8 @@ ComputePasses::ComputePasses(GraphicsDevice::Impl& owner)
 }
 
 ComputePasses::~ComputePasses() {
-    for (auto& [serial, program] : captureProgramsBySerial)
-        if (program) glDeleteProgram(program);
+    for (auto& [serial, capture] : capturePrograms)
+        if (capture.program) glDeleteProgram(capture.program);
     for (auto& [key, dispatcher] : computePrograms)
         if (dispatcher.program) glDeleteProgram(dispatcher.program);
     for (auto& [serial, fill] : fillPrograms)
@@ -190,7 +191,7 @@ ComputePasses::~ComputePasses() {
     }
 }
 
-void ComputePasses::dropEntry(std::map<std::string, ReplayEntry>::iterator it) {
+void ComputePasses::dropEntry(std::map<EntryKey, ReplayEntry>::iterator it) {
     glDeleteTextures(1, &it->second.store);
     glDeleteBuffers(1, &it->second.vertices);
     entryBytes -= it->second.bytes;
@@ -199,47 +200,31 @@ void ComputePasses::dropEntry(std::map<std::string, ReplayEntry>::iterator it) {
 }
 
 void ComputePasses::forget(const ComputeAnalysis& analysis) {
-    const std::string serial = std::to_string(analysis.serial);
-    if (auto it = captureProgramsBySerial.find(analysis.serial); it != captureProgramsBySerial.end()) {
-        if (it->second) glDeleteProgram(it->second);
-        captureProgramsBySerial.erase(it);
+    const int serial = analysis.serial;
+    if (auto it = capturePrograms.find(serial); it != capturePrograms.end()) {
+        if (it->second.program) glDeleteProgram(it->second.program);
+        capturePrograms.erase(it);
     }
-    if (auto it = fillPrograms.find(analysis.serial); it != fillPrograms.end()) {
+    if (auto it = fillPrograms.find(serial); it != fillPrograms.end()) {
         if (it->second.program) glDeleteProgram(it->second.program);
         fillPrograms.erase(it);
     }
-    failures.erase("capture/" + serial);
-    failures.erase("fill/" + serial);
-    // Keys of compute programs are "pixel serial/targets", of pipelines "vertex serial/pixel
-    // serial", of entries "vertex serial/...".
-    auto field = [](const std::string& key, int index) {
-        std::size_t begin = 0;
-        for (int i = 0; i < index; ++i) begin = key.find('/', begin) + 1;
-        return key.substr(begin, key.find('/', begin) - begin);
-    };
-    for (auto it = computePrograms.begin(); it != computePrograms.end();) {
-        if (field(it->first, 0) == serial) {
-            if (it->second.program) glDeleteProgram(it->second.program);
-            failures.erase(it->first);
-            it = computePrograms.erase(it);
-        } else {
-            ++it;
-        }
-    }
-    for (auto it = fillPipelines.begin(); it != fillPipelines.end();) {
-        if (field(it->first, 0) == serial || field(it->first, 1) == serial) {
-            if (it->second) glDeleteProgramPipelines(1, &it->second);
-            it = fillPipelines.erase(it);
-        } else {
-            ++it;
-        }
-    }
+    std::erase_if(computePrograms, [&](const auto& item) {
+        if (item.first.first != serial) return false;
+        if (item.second.program) glDeleteProgram(item.second.program);
+        return true;
+    });
+    std::erase_if(fillPipelines, [&](const auto& item) {
+        if (item.first.first != serial && item.first.second != serial) return false;
+        if (item.second) glDeleteProgramPipelines(1, &item.second);
+        return true;
+    });
     for (auto it = entries.begin(); it != entries.end();) {
         auto next = std::next(it);
-        if (field(it->first, 0) == serial) dropEntry(it);
+        if (it->first.vertexSerial == serial) dropEntry(it);
         it = next;
     }
-    std::erase_if(userDataHistory, [&](const auto& item) { return field(item.first, 0) == serial; });
+    std::erase_if(userDataHistory, [&](const auto& item) { return item.first.vertexSerial == serial; });
 }
 
 bool ComputePasses::fallBack(const std::string& reason) {
@@ -258,6 +243,8 @@ const ComputeAnalysis& ComputePasses::analysisOf(const ShaderProgram& program) {
         } else {
             analysis->pixel = detail::pixelFunctionFromShader(program.shader->glsl);
             analysis->refusal = analysis->pixel.refusal;
+            analysis->inputsId =
+                inputSignatures.emplace(detail::inputSignature(analysis->pixel), int(inputSignatures.size()) + 1).first->second;
         }
         program.computeAnalysis = analysis;
     }
@@ -265,34 +252,33 @@ const ComputeAnalysis& ComputePasses::analysisOf(const ShaderProgram& program) {
 }
 
 GLuint ComputePasses::captureProgram(const ShaderProgram& vertex, const ComputeAnalysis& analysis, std::string& refusal) {
-    auto it = captureProgramsBySerial.find(analysis.serial);
-    if (it == captureProgramsBySerial.end()) {
+    auto it = capturePrograms.find(analysis.serial);
+    if (it == capturePrograms.end()) {
         std::vector<std::string> captured{"gl_Position"};
         for (const detail::GlslVarying& v : analysis.vertex.varyings) captured.push_back(v.name);
-        std::string error;
-        GLuint program = linkProgram(GL_VERTEX_SHADER, vertex.shader->glsl, captured, printOutcomes, error);
-        it = captureProgramsBySerial.emplace(analysis.serial, program).first;
-        if (!program) failures["capture/" + std::to_string(analysis.serial)] = "vertex capture " + error;
+        Capture made;
+        made.program = linkProgram(GL_VERTEX_SHADER, vertex.shader->glsl, captured, printOutcomes, made.failure);
+        if (!made.program) made.failure = "vertex capture " + made.failure;
+        it = capturePrograms.emplace(analysis.serial, made).first;
     }
-    if (!it->second) refusal = failures["capture/" + std::to_string(analysis.serial)];
-    return it->second;
+    if (!it->second.program) refusal = it->second.failure;
+    return it->second.program;
 }
 
 GLuint ComputePasses::fillPipeline(const ShaderProgram& vertex, int vertexSerial, const ComputeAnalysis& pixel, std::string& refusal) {
     auto fill = fillPrograms.find(pixel.serial);
     if (fill == fillPrograms.end()) {
-        std::string error;
         Fill made;
-        made.program = linkProgram(GL_FRAGMENT_SHADER, detail::fillShaderSource(pixel.pixel), {}, printOutcomes, error, true);
+        made.program = linkProgram(GL_FRAGMENT_SHADER, detail::fillShaderSource(pixel.pixel), {}, printOutcomes, made.failure, true);
         if (made.program) made.stamp = glGetUniformLocation(made.program, "fxport_stamp");
-        else failures["fill/" + std::to_string(pixel.serial)] = "fill shader " + error;
+        else made.failure = "fill shader " + made.failure;
         fill = fillPrograms.emplace(pixel.serial, made).first;
     }
     if (!fill->second.program) {
-        refusal = failures["fill/" + std::to_string(pixel.serial)];
+        refusal = fill->second.failure;
         return 0;
     }
-    const std::string key = std::to_string(vertexSerial) + "/" + std::to_string(pixel.serial);
+    const std::pair<int, int> key(vertexSerial, pixel.serial);
     auto it = fillPipelines.find(key);
     if (it == fillPipelines.end()) {
         // The draw's own separable vertex program: the rasteriser interpolates exactly what it
@@ -306,7 +292,7 @@ GLuint ComputePasses::fillPipeline(const ShaderProgram& vertex, int vertexSerial
     return it->second;
 }
 
-ComputePasses::ReplayEntry* ComputePasses::entryFor(const std::string& key, int width, int height, int layers, int capturedFloats,
+ComputePasses::ReplayEntry* ComputePasses::entryFor(const EntryKey& key, int width, int height, int layers, int capturedFloats,
                                                     std::string& refusal) {
     auto it = entries.find(key);
     if (it != entries.end()) {
@@ -336,8 +322,8 @@ ComputePasses::ReplayEntry* ComputePasses::entryFor(const std::string& key, int 
     entryBytes += bytes;
     entry.recency = recency.insert(recency.end(), key);
     if (printOutcomes)
-        std::fprintf(stderr, "compute pass: new replay entry %s: %dx%d, %d layers, %.1f MiB\n", key.c_str(), width, height, layers,
-                     double(bytes) / (1 << 20));
+        std::fprintf(stderr, "compute pass: new replay entry for vertex shader %d, inputs %d: %dx%d, %d layers, %.1f MiB\n",
+                     key.vertexSerial, key.inputsId, width, height, layers, double(bytes) / (1 << 20));
     return &entries.emplace(key, entry).first->second;
 }
 
@@ -386,13 +372,14 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
     if (blend.MultiSampleMask != -1) return fallBack("multisample mask");
 
     // Targets: formats, blend and masks.
-    std::vector<RenderTargetBinding> bindings = d.targets;
-    if (bindings.empty()) bindings.push_back(RenderTargetBinding(d.backBuffer.get()));
+    const RenderTargetBinding backBuffer(d.backBuffer.get());
+    const RenderTargetBinding* bindings = d.targets.empty() ? &backBuffer : d.targets.data();
+    const std::size_t boundCount = std::max<std::size_t>(d.targets.size(), 1);
     const ColorWriteChannels masks[4] = {blend.ColorWriteChannels, blend.ColorWriteChannels1, blend.ColorWriteChannels2,
                                          blend.ColorWriteChannels3};
-    std::vector<detail::ComputeTarget> targets;
-    std::string key;
-    for (std::size_t i = 0; i < bindings.size(); ++i) {
+    std::array<detail::ComputeTarget, kMaxRenderTargets> targets{};
+    TargetKeys targetKeys{};
+    for (std::size_t i = 0; i < boundCount; ++i) {
         const SurfaceFormat format = bindings[i].RenderTarget->Format();
         detail::ComputeTarget t;
         // Targets past the pixel shader's outputs are left alone (draw_state.cpp, blendForPixelShader).
@@ -409,9 +396,9 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
                     return fallBack(std::string("blend state on a ") + surfaceFormatName(format) + " target");
             }
         }
-        key += t.imageFormat + ":" + std::to_string(int(t.color)) + std::to_string(int(t.alpha)) + std::to_string(t.writeMask) +
-               (t.normalized ? "n" : "") + ";";
-        targets.push_back(t);
+        // The image format and normalization follow from the format.
+        targetKeys[i] = 1u + (unsigned(format) << 12 | unsigned(t.color) << 8 | unsigned(t.alpha) << 4 | t.writeMask);
+        targets[i] = t;
     }
 
     // Textures the pixel shader samples: in a compute shader implicit LOD is the base level with
@@ -438,21 +425,22 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
     if (!capture) return fallBack(refusal);
     const GLuint fill = fillPipeline(*vertex, vertexAnalysis.serial, pixelAnalysis, refusal);
     if (!fill) return fallBack(refusal);
-    key = std::to_string(pixelAnalysis.serial) + "/" + key;
-    auto found = computePrograms.find(key);
+    const std::pair<int, TargetKeys> programKey(pixelAnalysis.serial, targetKeys);
+    auto found = computePrograms.find(programKey);
     if (found == computePrograms.end()) {
-        std::string source = detail::computeShaderSource(pixelAnalysis.pixel, targets, refusal);
         Dispatcher made;
+        const std::string source = detail::computeShaderSource(
+            pixelAnalysis.pixel, std::vector<detail::ComputeTarget>(targets.begin(), targets.begin() + std::ptrdiff_t(boundCount)),
+            made.failure);
         if (!source.empty()) {
-            made.program = linkProgram(GL_COMPUTE_SHADER, source, {}, printOutcomes, refusal);
-            if (!made.program) refusal = "compute shader " + refusal;
+            made.program = linkProgram(GL_COMPUTE_SHADER, source, {}, printOutcomes, made.failure);
+            if (!made.program) made.failure = "compute shader " + made.failure;
         }
         if (made.program) made.rect = glGetUniformLocation(made.program, "fxport_rect");
-        else failures[key] = refusal;
-        found = computePrograms.emplace(key, made).first;
+        found = computePrograms.emplace(programKey, made).first;
     }
     const Dispatcher& dispatcher = found->second;
-    if (!dispatcher.program) return fallBack(failures[key]);
+    if (!dispatcher.program) return fallBack(dispatcher.failure);
     const GLuint program = dispatcher.program;
 
     if (!compare.program && !compare.failed) {
@@ -460,7 +448,7 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
         compare.program = linkProgram(GL_COMPUTE_SHADER, detail::compareShaderSource(), {}, printOutcomes, error);
         compare.failed = compare.program == 0;
         if (compare.failed) {
-            failures["compare"] = "compare shader " + error;
+            compare.failure = "compare shader " + error;
         } else {
             compare.rect = glGetUniformLocation(compare.program, "fxport_rect");
             compare.viewport = glGetUniformLocation(compare.program, "fxport_viewport");
@@ -479,20 +467,28 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
             compare.mapped = static_cast<const volatile std::uint32_t*>(glMapNamedBufferRange(compare.counters, 0, 16, mapping));
         }
     }
-    if (compare.failed) return fallBack(failures["compare"]);
+    if (compare.failed) return fallBack(compare.failure);
 
     // The replay entry: everything besides the vertices that decides what the rasteriser
     // produces for the pixel shader's inputs (scissor is not part: the fill draws without it).
     const Viewport& viewport = dev.Viewport;
     const int floatsPerVertex = detail::capturedFloatsPerVertex(vertexAnalysis.vertex.varyings);
     const int vertexCount = primitiveCount * 3;
-    const std::string entryKey =
-        std::to_string(vertexAnalysis.serial) + "/" + detail::inputSignature(pixelAnalysis.pixel) + "/" +
-        std::to_string(viewport.X) + "," + std::to_string(viewport.Y) + "," + std::to_string(viewport.Width) + "," +
-        std::to_string(viewport.Height) + "," + std::to_string(viewport.MinDepth) + "," + std::to_string(viewport.MaxDepth) + "/" +
-        std::to_string(int(raster.CullMode)) + "," + std::to_string(raster.DepthBias) + "," +
-        std::to_string(raster.SlopeScaleDepthBias) + "/" + std::to_string(int(type)) + "x" + std::to_string(primitiveCount) + "/" +
-        std::to_string(d.targetWidth) + "x" + std::to_string(d.targetHeight);
+    const EntryKey entryKey{vertexAnalysis.serial,
+                            pixelAnalysis.inputsId,
+                            viewport.X,
+                            viewport.Y,
+                            viewport.Width,
+                            viewport.Height,
+                            std::bit_cast<std::uint32_t>(viewport.MinDepth),
+                            std::bit_cast<std::uint32_t>(viewport.MaxDepth),
+                            int(raster.CullMode),
+                            std::bit_cast<std::uint32_t>(raster.DepthBias),
+                            std::bit_cast<std::uint32_t>(raster.SlopeScaleDepthBias),
+                            int(type),
+                            primitiveCount,
+                            d.targetWidth,
+                            d.targetHeight};
     if (call.userDataHash != 0) {
         UserDataHistory& history = userDataHistory[entryKey];
         if (history.lastHash == call.userDataHash) history.changedInARow = 0;
@@ -577,7 +573,7 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
 
     // 4. Pixel stage, over the compare step's rectangle (no groups when the draw may not replay).
     glUseProgram(program);
-    for (std::size_t i = 0; i < bindings.size(); ++i) {
+    for (std::size_t i = 0; i < boundCount; ++i) {
         if (targets[i].writeMask == 0) continue;
         const Texture* t = bindings[i].RenderTarget;
         const bool cube = t->kind() == Texture::Kind::TextureCube;

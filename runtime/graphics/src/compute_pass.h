@@ -15,6 +15,7 @@
 // (GraphicsDevice::computePassStatistics, fxdemo --explain).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <list>
 #include <map>
@@ -61,6 +62,7 @@ struct ComputeAnalysis {
     std::string refusal;     // why this shader cannot take part; empty when it can
     detail::VertexOutputs vertex;  // vertex shaders
     detail::PixelFunction pixel;   // pixel shaders
+    int inputsId = 0;  // pixel shaders: names detail::inputSignature (pixel shaders that read the same inputs share replay entries)
 };
 
 struct ComputePasses {
@@ -92,40 +94,62 @@ private:
     GLuint captureProgram(const struct ShaderProgram& vertex, const ComputeAnalysis& analysis, std::string& refusal);
     GLuint fillPipeline(const struct ShaderProgram& vertex, int vertexSerial, const ComputeAnalysis& pixel, std::string& refusal);
     struct ReplayEntry;
-    ReplayEntry* entryFor(const std::string& key, int width, int height, int layers, int capturedFloats, std::string& refusal);
+    struct EntryKey;
+    ReplayEntry* entryFor(const EntryKey& key, int width, int height, int layers, int capturedFloats, std::string& refusal);
     void readCounters();
 
     ComputePassStatistics statistics;  // what the CPU decided; the GPU's counters are added on reading
     bool printOutcomes = false;  // $FXPORT_COMPUTE_PASSES_DEBUG: each candidate's outcome and failed compiles on stderr
     int nextSerial = 1;
-    std::map<int, GLuint> captureProgramsBySerial;  // 0: the capture program did not link
-    struct Dispatcher {
-        GLuint program = 0;  // 0: it could not be made (failures says why)
-        GLint rect = -1;
+    std::map<std::string, int> inputSignatures;  // detail::inputSignature -> ComputeAnalysis::inputsId
+    // The caches are keyed by numbers made once per shader (a draw builds no string): the programs
+    // per shader serial, the compute programs also per target (detail::ComputeTarget, packed), and
+    // each keeps why it could not be made beside its program 0.
+    struct Capture {
+        GLuint program = 0;
+        std::string failure;
     };
-    std::map<std::string, Dispatcher> computePrograms;  // "pixel serial/targets" -> program
-    std::map<std::string, std::string> failures;        // why a capture, fill or compute program could not be made
+    std::map<int, Capture> capturePrograms;  // per vertex shader serial
+    struct Dispatcher {
+        GLuint program = 0;
+        GLint rect = -1;
+        std::string failure;
+    };
+    using TargetKeys = std::array<std::uint32_t, kMaxRenderTargets>;  // 0: no target
+    std::map<std::pair<int, TargetKeys>, Dispatcher> computePrograms;  // (pixel serial, targets)
     GLuint captureBuffer = 0;
     GLsizeiptr captureBytes = 0;
 
     // Fill fragment programs per pixel shader serial, and their pipelines with a vertex program
-    // ("vertex serial/pixel serial").
+    // (vertex serial, pixel serial).
     struct Fill {
         GLuint program = 0;
         GLint stamp = -1;
+        std::string failure;
     };
     std::map<int, Fill> fillPrograms;
-    std::map<std::string, GLuint> fillPipelines;
+    std::map<std::pair<int, int>, GLuint> fillPipelines;
     GLuint fillFramebuffer = 0;  // no attachments, as large as the target (GL_FRAMEBUFFER_DEFAULT_*)
     int fillWidth = 0, fillHeight = 0;
     std::uint32_t nextStamp = 1;
 
-    // Replay entries, least recently used first in `recency`, bounded by `byteBudget`.
+    // Replay entries, least recently used first in `recency`, bounded by `byteBudget`. The key is
+    // everything besides the vertices that decides what the rasteriser gives the pixel shader
+    // (floats by their bits: 0.5 and 0.5000001 are other depth ranges).
+    struct EntryKey {
+        int vertexSerial = 0, inputsId = 0;
+        int viewportX = 0, viewportY = 0, viewportWidth = 0, viewportHeight = 0;
+        std::uint32_t minDepthBits = 0, maxDepthBits = 0;
+        int cullMode = 0;
+        std::uint32_t depthBiasBits = 0, slopeScaleDepthBiasBits = 0;
+        int primitiveType = 0, primitiveCount = 0, targetWidth = 0, targetHeight = 0;
+        auto operator<=>(const EntryKey&) const = default;
+    };
     struct ReplayEntry {
         GLuint store = 0;     // r32ui 2D array: layer 0 the stamp of the fill that covered the pixel, then the inputs' bits
         GLuint vertices = 0;  // the stamp of its fill and the captured vertices it was filled from (detail::kEntry*)
         std::int64_t bytes = 0;
-        std::list<std::string>::iterator recency;
+        std::list<EntryKey>::iterator recency;
     };
     // User-vertex draws per replay key: the last one's DrawCall::userDataHash, and how many draws
     // in a row came with other bytes than the one before (a sprite that moves every draw would
@@ -135,11 +159,11 @@ private:
         std::uint64_t lastHash = 0;
         int changedInARow = 0;
     };
-    std::map<std::string, UserDataHistory> userDataHistory;
-    std::map<std::string, ReplayEntry> entries;
-    std::list<std::string> recency;
+    std::map<EntryKey, UserDataHistory> userDataHistory;
+    std::map<EntryKey, ReplayEntry> entries;
+    std::list<EntryKey> recency;
     std::int64_t entryBytes = 0, byteBudget = 512ll << 20;  // lighting2d at 1920x1080 holds 388 MiB
-    void dropEntry(std::map<std::string, ReplayEntry>::iterator it);
+    void dropEntry(std::map<EntryKey, ReplayEntry>::iterator it);
 
     // The compare step (detail::compareShaderSource) and the commands buffer it writes: made at the first dispatch.
     struct Compare {
@@ -148,15 +172,18 @@ private:
         const volatile std::uint32_t* mapped = nullptr;
         GLint rect = -1, viewport = -1, vertices = -1, stride = -1, unitW = -1, stamp = -1, draw = -1;
         bool failed = false;
+        std::string failure;
     } compare;
     std::uint32_t counters[4] = {};  // the GPU's, as last read
 
-    // Texel-copy reductions (texel_copies.cpp): programs per "format/ops/mask", the copies' buffer.
+    // Texel-copy reductions (texel_copies.cpp): programs per (format, colour op, alpha op, write
+    // mask), the copies' buffer.
     struct Reduction {
-        GLuint program = 0;  // 0: it could not be made (failures says why)
+        GLuint program = 0;
         GLint box = -1, count = -1;
+        std::string failure;
     };
-    std::map<std::string, Reduction> reductionPrograms;
+    std::map<std::array<int, 4>, Reduction> reductionPrograms;
     GLuint copiesBuffer = 0;
 };
 

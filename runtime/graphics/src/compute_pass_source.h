@@ -52,7 +52,7 @@ PixelFunction pixelFunctionFromShader(const std::string& pixelGlsl);
 // What a dispatch does with a pixel function's output to one colour target.
 enum class BlendOp { Write, Add, Min, Max };  // Add: One/One
 struct ComputeTarget {
-    std::string imageFormat;  // "rgba8", "rgba16f" ...
+    const char* imageFormat = "";  // "rgba8", "rgba16f" ... (imageFormatOf's)
     bool normalized = false;  // unorm: the source is clamped to [0,1] before Min/Max, as GL does
     BlendOp color = BlendOp::Write, alpha = BlendOp::Write;
     unsigned writeMask = 15;  // bit 0 red .. bit 3 alpha; 0: the target is left alone

@@ -39,6 +39,17 @@ std::string textureLabel(const Texture2D& texture) {
     return texture.Name.empty() ? std::string("Texture2D") : "Texture2D '" + texture.Name + "'";
 }
 
+// Whether a queued sprite is an unrotated rectangle at depths that are not clipped: its corners
+// as queue() lays them out (kCornerX/Y: 0 top-left, 1 top-right, 2 bottom-left, 3 bottom-right),
+// with left < right and top < bottom (the clockwise winding XNA's culling keeps), z in [0, 1].
+bool uprightRectangle(const VertexPositionColorTexture* v) {
+    const float left = v[0].Position.X, right = v[1].Position.X, top = v[0].Position.Y, bottom = v[2].Position.Y;
+    bool kept = v[2].Position.X == left && v[3].Position.X == right && v[1].Position.Y == top && v[3].Position.Y == bottom &&
+                left < right && top < bottom;
+    for (int c = 0; c < 4; ++c) kept &= v[c].Position.Z >= 0.0f && v[c].Position.Z <= 1.0f;
+    return kept;
+}
+
 // Issue 16 (texel copies, texel_copies.cpp): whether each sprite copies texels 1:1 -- an
 // unrotated, unflipped white rectangle with whole-pixel edges, at a depth that is not clipped,
 // whose texture rectangle lies in the texture and has its size in texels -- and if so, the copies.
@@ -62,14 +73,14 @@ bool texelCopiesOf(const Texture2D& texture, const VertexPositionColorTexture* v
     };
     for (int s = 0; s < sprites; ++s) {
         const VertexPositionColorTexture* v = vertices + std::size_t(s) * 4;
-        // Corners as queue() lays them out: 0 top-left, 1 top-right, 2 bottom-left, 3 bottom-right.
-        const Vector3 p0 = v[0].Position, p1 = v[1].Position, p2 = v[2].Position, p3 = v[3].Position;
+        if (!uprightRectangle(v)) return false;
+        const Vector3 p0 = v[0].Position, p1 = v[1].Position, p2 = v[2].Position;
         const Vector2 t0 = v[0].TextureCoordinate, t1 = v[1].TextureCoordinate, t2 = v[2].TextureCoordinate,
                       t3 = v[3].TextureCoordinate;
-        if (!(p2.X == p0.X && p3.X == p1.X && p1.Y == p0.Y && p3.Y == p2.Y && p0.X < p1.X && p0.Y < p2.Y)) return false;
+        // Unflipped: the texture rectangle runs the way the sprite does.
         if (!(t2.X == t0.X && t3.X == t1.X && t1.Y == t0.Y && t3.Y == t2.Y && t0.X < t1.X && t0.Y < t2.Y)) return false;
         for (int c = 0; c < 4; ++c)
-            if (!(v[c].Color == Color::White) || !(v[c].Position.Z >= 0.0f && v[c].Position.Z <= 1.0f)) return false;
+            if (!(v[c].Color == Color::White)) return false;
         detail::TexelCopy copy;
         int sourceX1 = 0, sourceY1 = 0;
         if (!whole(p0.X, copy.x0) || !whole(p0.Y, copy.y0) || !whole(p1.X, copy.x1) || !whole(p2.Y, copy.y1) ||
@@ -194,14 +205,9 @@ bool SpriteBatch::coversViewport(const VertexPositionColorTexture* vertices, int
     const float width = float(device_.Viewport.Width), height = float(device_.Viewport.Height);
     for (int s = 0; s < sprites; ++s) {
         const VertexPositionColorTexture* v = vertices + std::size_t(s) * 4;
-        // Corners as queue() lays them out (kCornerX/Y): 0 top-left, 1 top-right, 2 bottom-left,
-        // 3 bottom-right; left < right and top < bottom keep the clockwise winding XNA's culling keeps.
-        const float left = v[0].Position.X, right = v[1].Position.X, top = v[0].Position.Y, bottom = v[2].Position.Y;
-        const bool rectangle = v[2].Position.X == left && v[3].Position.X == right && v[1].Position.Y == top &&
-                               v[3].Position.Y == bottom && left < right && top < bottom;
-        bool depthKept = true;
-        for (int c = 0; c < 4; ++c) depthKept &= v[c].Position.Z >= 0.0f && v[c].Position.Z <= 1.0f;
-        if (rectangle && depthKept && left <= 0.0f && top <= 0.0f && right >= width && bottom >= height) return true;
+        if (uprightRectangle(v) && v[0].Position.X <= 0.0f && v[0].Position.Y <= 0.0f && v[1].Position.X >= width &&
+            v[2].Position.Y >= height)
+            return true;
     }
     return false;
 }

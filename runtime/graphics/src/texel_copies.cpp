@@ -141,22 +141,21 @@ bool ComputePasses::tryTexelCopies(const Texture2D& texture, const std::vector<d
     // for sprites scattered over the target.
     if (covered * 4 < count * std::int64_t(bx1 - bx0) * (by1 - by0)) return fallBack("texel copies: sprites overlap too little");
 
-    const std::string key = std::string(image) + "/" + std::to_string(int(color)) + std::to_string(int(alpha)) + "/" + std::to_string(mask);
+    const std::array<int, 4> key{int(format), int(color), int(alpha), int(mask)};
     auto found = reductionPrograms.find(key);
     if (found == reductionPrograms.end()) {
         Reduction made;
-        std::string error;
         made.program = detail::linkProgram(GL_COMPUTE_SHADER, detail::texelCopyShaderSource(image, color, alpha, mask), {},
-                                           printOutcomes, error);
+                                           printOutcomes, made.failure);
         if (made.program) {
             made.box = glGetUniformLocation(made.program, "fxport_box");
             made.count = glGetUniformLocation(made.program, "fxport_count");
         } else {
-            failures["texel copies/" + key] = "texel copies: compute shader " + error;
+            made.failure = "texel copies: compute shader " + made.failure;
         }
         found = reductionPrograms.emplace(key, made).first;
     }
-    if (!found->second.program) return fallBack(failures["texel copies/" + key]);
+    if (!found->second.program) return fallBack(found->second.failure);
     const Reduction& program = found->second;
 
     // What a draw does first: the pending clear the blend reads, the state shadow, the
