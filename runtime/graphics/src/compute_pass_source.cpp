@@ -211,14 +211,14 @@ PixelFunction pixelFunctionFromShader(const std::string& glsl) {
             std::size_t q = p + in.name.size();
             unsigned mask = 0;
             if (q < text.size() && text[q] == '.') {
+                static const std::string kSwizzle = "xyzwrgba";
                 for (++q; q < text.size() && isWordChar(text[q]); ++q) {
-                    const std::size_t c = std::string("xyzw").find(text[q]) != std::string::npos ? std::string("xyzw").find(text[q])
-                                                                                                  : std::string("rgba").find(text[q]);
+                    const std::size_t c = kSwizzle.find(text[q]);
                     if (c == std::string::npos) {
                         mask = 15;
                         break;
                     }
-                    mask |= 1u << c;
+                    mask |= 1u << (c % 4);
                 }
             } else {
                 mask = 15;
