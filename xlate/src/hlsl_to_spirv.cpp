@@ -7,6 +7,7 @@
 #include <regex>
 
 #include "glslang_process.h"
+#include "spirv_fixups.h"
 
 namespace fxport::xlate {
 
@@ -85,16 +86,23 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
         return out;
     }
     glslang::SpvOptions options;
-    // Never disabled: for HLSL this run (spirv-opt's passes inside glslang) is also the legalisation
-    // that makes sampler function parameters valid SPIR-V.
-    options.disableOptimizer = false;
+    // glslang's own spirv-opt run stays off: our fix-ups (spirv_fixups.h) must see the module before
+    // folding bakes glslang's meaning of an operation into constants; legalizeSpirv then runs the
+    // same passes. Legalisation is needed, not optional: it makes sampler function parameters valid.
+    options.disableOptimizer = true;
     options.optimizeSize = false;
     options.validate = false;
     spv::SpvBuildLogger logger;
     glslang::GlslangToSpv(*program.getIntermediate(lang), out.words, &logger, &options);
     std::string msgs = logger.getAllMessages();
-    if (msgs.find("error") != std::string::npos) out.errors.push_back({0, {}, msgs});
-    else out.warnings = msgs;
+    if (msgs.find("error") != std::string::npos) {
+        out.errors.push_back({0, {}, msgs});
+        return out;
+    }
+    out.warnings = msgs;
+    applySpirvFixups(out.words);
+    std::string legalizeError;
+    if (!legalizeSpirv(out.words, &legalizeError)) out.errors.push_back({0, {}, legalizeError});
     return out;
 }
 

@@ -1,0 +1,72 @@
+// HLSL operations compute what fxc and D3D compute: each shader here is drawn into a 1x1 float
+// target at SM2..SM5, and its result compared with the same operation written in C++ with fxc's
+// meaning (the independent reference). Values come in as uniforms, so the GPU computes them, and
+// as literals, so glslang's and spirv-opt's constant folding is checked too.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "runtime_test_support.h"
+
+namespace fxport::test {
+namespace {
+
+class HlslSemantics : public ::testing::TestWithParam<const char*> {
+protected:
+    void SetUp() override {
+        device.BlendState = BlendState::Opaque;
+        device.DepthStencilState = DepthStencilState::None;
+        device.RasterizerState = RasterizerState::CullNone;
+    }
+    void TearDown() override { device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr)); }
+
+    // An effect whose pixel shader is `body` (HLSL statements returning a float4) after `globals`,
+    // compiled for the test's shader model.
+    std::unique_ptr<Effect> effect(const std::string& globals, const std::string& body) {
+        const std::string model = GetParam();
+        std::string text = globals + "\n"
+                           "float4 VS(float4 p : POSITION0) : POSITION0 { return p; }\n"
+                           "float4 PS() : COLOR0 {\n" + body + "\n}\n"
+                           "technique T { pass P { VertexShader = compile vs_" + model + " VS(); PixelShader = compile ps_" + model + " PS(); } }\n";
+        EffectOptions options;
+        options.useCache = false;
+        return std::make_unique<Effect>(device, EffectSource{text, "hlsl_semantics_" + model + ".fx"}, options);
+    }
+
+    std::vector<float> draw(Effect& e) {
+        RenderTarget2D target(device, 1, 1, false, SurfaceFormat::Vector4);
+        device.SetRenderTarget(target);
+        device.Clear(Color::Black);
+        e.CurrentTechnique->Passes[0].Apply();
+        drawQuad(device);
+        std::vector<float> px = readFloats(target);
+        device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+        return px;
+    }
+
+    GraphicsDevice& device = testDevice();
+};
+
+// `%` truncates like C's fmod, whatever the signs (GLSL's mod() floors: 42 % -5 would be -3).
+TEST_P(HlslSemantics, FloatRemainderTruncatesTowardZero) {
+    const float a[4] = {42, -42, 0.42f, -4.21f}, b[4] = {-5, 5, 0.05f, -0.5f};
+    auto fromUniforms = effect("float4 A; float4 B;", "return A % B;");
+    fromUniforms->Parameters["A"].SetValue(Vector4(a[0], a[1], a[2], a[3]));
+    fromUniforms->Parameters["B"].SetValue(Vector4(b[0], b[1], b[2], b[3]));
+    auto fromLiterals = effect("", "float4 x = float4(42, -42, 0.42, -4.21); float4 y = float4(-5, 5, 0.05, -0.5); return x % y;");
+    auto viaFmod = effect("float4 A; float4 B;", "return fmod(A, B);");
+    viaFmod->Parameters["A"].SetValue(Vector4(a[0], a[1], a[2], a[3]));
+    viaFmod->Parameters["B"].SetValue(Vector4(b[0], b[1], b[2], b[3]));
+    for (Effect* e : {fromUniforms.get(), fromLiterals.get(), viaFmod.get()}) {
+        std::vector<float> px = draw(*e);
+        for (int k = 0; k < 4; ++k) EXPECT_NEAR(px[size_t(k)], std::fmod(a[k], b[k]), 2e-6) << "channel " << k;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslSemantics, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
+                         [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
+
+}  // namespace
+}  // namespace fxport::test
