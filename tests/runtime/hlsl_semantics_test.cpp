@@ -65,6 +65,20 @@ TEST_P(HlslSemantics, FloatRemainderTruncatesTowardZero) {
     }
 }
 
+// Integer `/` and `%` truncate toward zero at every shader model (SM2/3 emulate ints with floats;
+// fxc still truncates the quotient).
+TEST_P(HlslSemantics, IntegerDivisionAndRemainderTruncateTowardZero) {
+    const int a[4] = {42, -42, 42, -45}, b[4] = {5, 5, -5, -5};
+    auto fromUniforms = effect("int4 A; int4 B;", "return float4(A / B) + float4(A % B) / 100.0;");
+    fromUniforms->Parameters["A"].SetValue(std::vector<int>(a, a + 4));
+    fromUniforms->Parameters["B"].SetValue(std::vector<int>(b, b + 4));
+    auto fromLiterals = effect("", "int4 x = int4(42, -42, 42, -45); int4 y = int4(5, 5, -5, -5); return float4(x / y) + float4(x % y) / 100.0;");
+    for (Effect* e : {fromUniforms.get(), fromLiterals.get()}) {
+        std::vector<float> px = draw(*e);
+        for (int k = 0; k < 4; ++k) EXPECT_NEAR(px[size_t(k)], float(a[k] / b[k]) + float(a[k] % b[k]) / 100.0f, 1e-5) << "channel " << k;
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslSemantics, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 
