@@ -79,6 +79,29 @@ TEST_P(HlslSemantics, IntegerDivisionAndRemainderTruncateTowardZero) {
     }
 }
 
+// Brace initializers written flat fill the declared type's components in order: array elements,
+// struct members, matrix rows (fxc); glslang wants them nested (xlate/src/initializer_lists.cpp).
+TEST_P(HlslSemantics, FlatBraceInitializersFillComponentsInOrder) {
+    struct Case {
+        const char* globals;
+        const char* body;
+        float expected[4];
+    };
+    const Case cases[] = {
+        {"static const float2 o[2] = {1, 2, 3, -4.5};", "return float4(o[0], o[1]);", {1, 2, 3, -4.5f}},
+        {"", "float2x2 m = {1, 2, 3, 4}; return float4(m[0], m[1]);", {1, 2, 3, 4}},
+        {"", "float4 v[2] = {1, 2, 3, 4, 5, 6, 7, 8}; return v[1];", {5, 6, 7, 8}},
+        {"struct S { float a; float2 b; float c; };", "S s = {1, float2(2, 3), 4}; return float4(s.a, s.b, s.c);", {1, 2, 3, 4}},
+        {"static const float2 q[] = {1, 2, 3, 4, 5, 6};", "return float4(q[2], q[1]);", {5, 6, 3, 4}},
+        {"struct P { float2 xy; }; static const P ps[2] = {0.25, 0.5, 0.75, 1};", "return float4(ps[1].xy, ps[0].xy);", {0.75f, 1, 0.25f, 0.5f}},
+    };
+    for (const Case& c : cases) {
+        auto e = effect(c.globals, c.body);
+        std::vector<float> px = draw(*e);
+        for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], c.expected[k]) << c.globals << " " << c.body << " channel " << k;
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslSemantics, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 

@@ -1,6 +1,8 @@
 #include "fx_rewrite.h"
 
+#include "initializer_lists.h"
 #include "matrix_swizzle.h"
+#include "one_component_types.h"
 
 #include <algorithm>
 #include <numeric>
@@ -323,6 +325,8 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
             edits.push_back({t.offset, t.end, "float"});
     }
     for (auto& e : lowerMatrixSwizzles(tokens)) edits.push_back(std::move(e));
+    for (auto& e : regroupFlatInitializers(syntax)) edits.push_back(std::move(e));
+    for (auto& e : respellOneComponentVectors(tokens)) edits.push_back(std::move(e));
     out.sourceText = &text;
     out.syntax = &syntax;
     out.edits = std::move(edits);
