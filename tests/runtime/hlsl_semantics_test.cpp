@@ -102,6 +102,18 @@ TEST_P(HlslSemantics, FlatBraceInitializersFillComponentsInOrder) {
     }
 }
 
+// Casts through bool: nonzero is true, true is 1 (fxc); any() of a scalar and a vector.
+TEST_P(HlslSemantics, BoolCastsAndAny) {
+    auto e = effect("float4 X; int4 Y; float S;",
+                    "return (float4)(bool4)X + 10.0 * (float4)(int4)(bool4)Y + 100.0 * float4(any(S), any(X), any(Y.xz), (float)(bool)S);");
+    e->Parameters["X"].SetValue(Vector4(0, 0, 2, -4));
+    e->Parameters["Y"].SetValue(std::vector<int>{0, 1, 0, -10});
+    e->Parameters["S"].SetValue(0.5f);
+    std::vector<float> px = draw(*e);
+    const float expected[4] = {0 + 0 + 100, 0 + 10 + 100, 1 + 0 + 0, 1 + 10 + 100};
+    for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], expected[k]) << "channel " << k;
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslSemantics, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 

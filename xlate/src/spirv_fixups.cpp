@@ -1,6 +1,10 @@
 #include "spirv_fixups.h"
 
+#include <spirv-tools/libspirv.h>
 #include <spirv-tools/optimizer.hpp>
+
+#include <map>
+#include <set>
 
 #include <string>
 
@@ -9,6 +13,10 @@ namespace fxport::xlate {
 namespace {
 
 constexpr std::uint32_t kHeaderWords = 5;
+constexpr std::uint32_t kOpTypeBool = 20;
+constexpr std::uint32_t kOpCopyObject = 83;
+constexpr std::uint32_t kOpAny = 154;
+constexpr std::uint32_t kOpAll = 155;
 constexpr std::uint32_t kOpSRem = 138;
 constexpr std::uint32_t kOpSMod = 139;
 constexpr std::uint32_t kOpFRem = 140;
@@ -30,11 +38,52 @@ void remainderTruncates(std::vector<std::uint32_t>& words) {
     }
 }
 
+// The result type of every value and the instructions by offset, from SPIRV-Tools' parser (which
+// knows which opcodes have a result type), for fix-ups that depend on an operand's type.
+struct ModuleTypes {
+    std::map<std::uint32_t, std::uint32_t> typeOf;  // result id -> type id
+    std::set<std::uint32_t> boolTypes;              // ids of OpTypeBool
+    std::vector<size_t> anyAll;                     // offsets of OpAny / OpAll
+};
+
+bool readTypes(const std::vector<std::uint32_t>& words, ModuleTypes& out) {
+    spv_context context = spvContextCreate(SPV_ENV_VULKAN_1_0);
+    struct Ctx {
+        ModuleTypes* types;
+        const std::uint32_t* base;
+    } ctx{&out, words.data()};
+    auto onInstruction = [](void* user, const spv_parsed_instruction_t* inst) -> spv_result_t {
+        auto* c = static_cast<Ctx*>(user);
+        if (inst->result_id && inst->type_id) c->types->typeOf[inst->result_id] = inst->type_id;
+        if (inst->opcode == kOpTypeBool) c->types->boolTypes.insert(inst->result_id);
+        if (inst->opcode == kOpAny || inst->opcode == kOpAll) c->types->anyAll.push_back(size_t(inst->words - c->base));
+        return SPV_SUCCESS;
+    };
+    spv_result_t r = spvBinaryParse(context, &ctx, words.data(), words.size(), nullptr, onInstruction, nullptr);
+    spvContextDestroy(context);
+    return r == SPV_SUCCESS;
+}
+
+// HLSL's any()/all() take scalars too (any(x) is x != 0); glslang emits OpAny/OpAll on the scalar
+// bool, which SPIR-V allows only on vectors, and SPIRV-Cross writes `any(bool)`, which the GL
+// driver refuses at the first Apply(). Of a scalar, both are the scalar itself.
+// Test: runtime HlslSemantics.BoolCastsAndAny.
+void anyAllOfScalarIsTheScalar(std::vector<std::uint32_t>& words, const ModuleTypes& types) {
+    for (size_t at : types.anyAll) {
+        if (at + 3 >= words.size() || (words[at] >> 16) != 4) continue;
+        auto operandType = types.typeOf.find(words[at + 3]);
+        if (operandType != types.typeOf.end() && types.boolTypes.count(operandType->second))
+            words[at] = (4u << 16) | kOpCopyObject;
+    }
+}
+
 }  // namespace
 
 void applySpirvFixups(std::vector<std::uint32_t>& words) {
     if (words.size() < kHeaderWords) return;
     remainderTruncates(words);
+    ModuleTypes types;
+    if (readTypes(words, types)) anyAllOfScalarIsTheScalar(words, types);
 }
 
 bool legalizeSpirv(std::vector<std::uint32_t>& words, std::string* error) {
