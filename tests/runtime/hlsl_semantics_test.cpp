@@ -4,6 +4,7 @@
 // as literals, so glslang's and spirv-opt's constant folding is checked too.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -112,6 +113,65 @@ TEST_P(HlslSemantics, BoolCastsAndAny) {
     std::vector<float> px = draw(*e);
     const float expected[4] = {0 + 0 + 100, 0 + 10 + 100, 1 + 0 + 0, 1 + 10 + 100};
     for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], expected[k]) << "channel " << k;
+}
+
+// fxc expands asin/acos/atan/atan2 into fixed polynomials (D3D bytecode has no such instruction);
+// the reference is that expansion written in C++ (float, in fxc's order), e.g. asin(0) = 6.75e-5.
+namespace fxc {
+float acosPoly(float a) { return ((-0.0187292993f * a + 0.0742610022f) * a - 0.212114394f) * a + 1.57072878f; }
+float acos(float x) {
+    float a = std::fabs(x), r = acosPoly(a) * std::sqrt(1.0f - a);
+    return x < 0 ? r + (r * -2.0f + 3.14159274f) : r;
+}
+float asin(float x) {
+    float a = std::fabs(x), r = 1.57079637f - acosPoly(a) * std::sqrt(1.0f - a);
+    return x < 0 ? -r : r;
+}
+float atanPoly(float t) {
+    float t2 = t * t;
+    return t * ((((0.0208350997f * t2 - 0.0851330012f) * t2 + 0.180141002f) * t2 - 0.330299497f) * t2 + 0.999866009f);
+}
+float atan(float x) {
+    float a = std::fabs(x), r = atanPoly(std::min(a, 1.0f) * (1.0f / std::max(a, 1.0f)));
+    if (a > 1) r = r + (r * -2.0f + 1.57079637f);
+    return x < 0 ? -r : r;
+}
+float atan2(float y, float x) {
+    float ax = std::fabs(x), ay = std::fabs(y), r = atanPoly(std::min(ax, ay) * (1.0f / std::max(ax, ay)));
+    if (ax < ay) r = r + (r * -2.0f + 1.57079637f);
+    if (x < 0) r -= 3.14159274f;
+    return std::min(y, x) < 0 && std::max(y, x) >= 0 ? -r : r;
+}
+}  // namespace fxc
+
+TEST_P(HlslSemantics, InverseTrigonometryIsFxcsExpansion) {
+    // The C++ expansion against values D3D produced (vkd3d's inverse-trig tests, SM < 6).
+    EXPECT_EQ(std::round(fxc::asin(0) * 20000), 1);
+    EXPECT_EQ(std::round(fxc::asin(-0.5f) * 20000), -10473);
+    EXPECT_NEAR(fxc::acos(0), 1.57072878f, 1e-7);
+    EXPECT_NEAR(fxc::acos(-0.5f), 2.094441441f, 3e-7);
+    EXPECT_NEAR(fxc::atan(1), 0.785409629f, 1e-7);
+    EXPECT_NEAR(fxc::atan2(5, -5), 2.356194f, 3e-5);
+    const float xs[] = {-1, -0.5f, 0, 0.25f, 0.5f, 1};
+    const float ys[][2] = {{1, 1}, {5, -5}, {-3, -3}, {1, 0}, {-1, 0}, {0, -1}, {1e-5f, -2e-5f}, {0.3f, 4}};
+    auto e = effect("float2 A;", "return float4(asin(A.x), acos(A.x), atan(A.x * 3.0), atan2(A.x, A.y));");
+    for (float x : xs) {
+        e->Parameters["A"].SetValue(Vector2(x, 0.75f));
+        std::vector<float> px = draw(*e);
+        EXPECT_NEAR(px[0], fxc::asin(x), 2e-6) << "asin(" << x << ")";
+        EXPECT_NEAR(px[1], fxc::acos(x), 2e-6) << "acos(" << x << ")";
+        EXPECT_NEAR(px[2], fxc::atan(x * 3), 2e-6) << "atan(" << x * 3 << ")";
+        EXPECT_NEAR(px[3], fxc::atan2(x, 0.75f), 2e-6) << "atan2(" << x << ", 0.75)";
+    }
+    for (const auto& yx : ys) {
+        e->Parameters["A"].SetValue(Vector2(yx[0], yx[1]));
+        EXPECT_NEAR(draw(*e)[3], fxc::atan2(yx[0], yx[1]), 2e-6) << "atan2(" << yx[0] << ", " << yx[1] << ")";
+    }
+    auto vec = effect("float4 V;", "return asin(V) + acos(V.wzyx) * 10.0;");
+    vec->Parameters["V"].SetValue(Vector4(-1, -0.5f, 0, 0.5f));
+    std::vector<float> px = draw(*vec);
+    const float v[4] = {-1, -0.5f, 0, 0.5f};
+    for (int k = 0; k < 4; ++k) EXPECT_NEAR(px[size_t(k)], fxc::asin(v[k]) + fxc::acos(v[3 - k]) * 10.0f, 2e-5) << "channel " << k;
 }
 
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslSemantics, ::testing::Values("2_0", "3_0", "4_0", "5_0"),

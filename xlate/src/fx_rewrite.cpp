@@ -1,6 +1,7 @@
 #include "fx_rewrite.h"
 
 #include "initializer_lists.h"
+#include "inverse_trig.h"
 #include "matrix_swizzle.h"
 #include "one_component_types.h"
 
@@ -102,9 +103,12 @@ private:
 namespace {
 
 std::string applyEdits(const std::string& text, std::vector<TextEdit> edits) {
-    // Outer edits first where two start together (`shared` blanked inside a blanked declaration).
+    // Outer edits first where two start together (`shared` blanked inside a blanked declaration);
+    // an insertion (an empty range) before any edit that starts where it is inserted.
     std::sort(edits.begin(), edits.end(), [](const TextEdit& a, const TextEdit& b) {
-        return a.begin != b.begin ? a.begin < b.begin : a.end > b.end;
+        if (a.begin != b.begin) return a.begin < b.begin;
+        if ((a.begin == a.end) != (b.begin == b.end)) return a.begin == a.end;
+        return a.end > b.end;
     });
     std::string hlsl;
     hlsl.reserve(text.size());
@@ -327,6 +331,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : lowerMatrixSwizzles(tokens)) edits.push_back(std::move(e));
     for (auto& e : regroupFlatInitializers(syntax)) edits.push_back(std::move(e));
     for (auto& e : respellOneComponentVectors(tokens)) edits.push_back(std::move(e));
+    for (auto& e : inverseTrigAsFxc(syntax)) edits.push_back(std::move(e));
     out.sourceText = &text;
     out.syntax = &syntax;
     out.edits = std::move(edits);
