@@ -1,0 +1,219 @@
+// D3D offsets of an effect's numeric parameters (see uniform_layout.h).
+#include "uniform_layout.h"
+
+#include <algorithm>
+#include <regex>
+
+#include "fxport/xlate/compiled_effect.h"
+
+namespace conformance {
+
+namespace {
+
+using fxport::xlate::CompiledEffect;
+using fxport::xlate::Parameter;
+using fxport::xlate::ParameterClass;
+
+bool isNumeric(const Parameter& p) {
+    return p.parameterClass == ParameterClass::Scalar || p.parameterClass == ParameterClass::Vector ||
+           p.parameterClass == ParameterClass::Matrix;
+}
+
+// Registers one element takes and the components used in each (a column_major matrix stores a
+// column per register).
+struct ElementShape {
+    int registers = 1;
+    int componentsPerRegister = 1;
+};
+
+ElementShape shapeOf(const Parameter& p) {
+    if (p.parameterClass != ParameterClass::Matrix) return {1, p.columns};
+    return p.rowMajor ? ElementShape{p.rows, p.columns} : ElementShape{p.columns, p.rows};
+}
+
+// Component offset of scalar (element e, row r, column c) relative to the parameter's start.
+int scalarOffset(const Parameter& p, int e, int r, int c) {
+    ElementShape s = shapeOf(p);
+    int base = e * s.registers * 4;
+    if (p.parameterClass != ParameterClass::Matrix) return base + c;
+    return base + (p.rowMajor ? r * 4 + c : c * 4 + r);
+}
+
+std::vector<int> scalarOffsets(const Parameter& p, int start) {
+    std::vector<int> out;
+    for (int e = 0; e < std::max(1, p.elements); ++e)
+        for (int r = 0; r < p.rows; ++r)
+            for (int c = 0; c < p.columns; ++c) out.push_back(start + scalarOffset(p, e, r, c));
+    return out;
+}
+
+// Components the parameter spans (the last register only as far as it is used).
+int footprint(const Parameter& p) {
+    ElementShape s = shapeOf(p);
+    return (std::max(1, p.elements) * s.registers - 1) * 4 + s.componentsPerRegister;
+}
+
+bool startsOnRegister(const Parameter& p) {
+    return p.elements > 0 || p.parameterClass == ParameterClass::Matrix || p.parameterClass == ParameterClass::Struct;
+}
+
+// Struct size under cbuffer packing (members packed from the struct's start).
+int structFootprint(const Parameter& p);
+
+int memberFootprint(const Parameter& m) {
+    if (m.parameterClass != ParameterClass::Struct) return footprint(m);
+    int one = structFootprint(m);
+    int regs = (one + 3) / 4;
+    return (std::max(1, m.elements) - 1) * regs * 4 + one;
+}
+
+int packNext(int offset, const Parameter& p, int size) {
+    bool crosses = (offset % 4) + size > 4;
+    if (startsOnRegister(p) || crosses) offset = (offset + 3) / 4 * 4;
+    return offset;
+}
+
+int structFootprint(const Parameter& p) {
+    int offset = 0;
+    for (const Parameter& m : p.members) {
+        int size = memberFootprint(m);
+        offset = packNext(offset, m, size) + size;
+    }
+    return offset;
+}
+
+// `NAME : register(cN)` or `NAME : packoffset(cN.y)` in the source, as a component offset; -1 if none.
+int explicitOffset(const std::string& source, const std::string& name, int model) {
+    std::smatch m;
+    std::regex reg("\\b" + name + "\\s*(\\[[^\\]]*\\])?\\s*:\\s*register\\s*\\(\\s*c(\\d+)\\s*\\)");
+    if (model < 40 && std::regex_search(source, m, reg)) return std::stoi(m[2]) * 4;
+    std::regex pack("\\b" + name + "\\s*(\\[[^\\]]*\\])?\\s*:\\s*packoffset\\s*\\(\\s*c(\\d+)(\\.([xyzw]))?\\s*\\)");
+    if (model >= 40 && std::regex_search(source, m, pack)) {
+        int component = m[4].matched ? int(std::string("xyzw").find(m[4].str()[0])) : 0;
+        return std::stoi(m[2]) * 4 + component;
+    }
+    return -1;
+}
+
+ParameterPlacement placeAt(const CompiledEffect& effect, int index, int start) {
+    const Parameter& p = effect.parameters[std::size_t(index)];
+    ParameterPlacement out;
+    out.parameter = index;
+    if (p.parameterClass == ParameterClass::Struct) {
+        out.settable = false;
+        out.why = "struct uniform '" + p.name + "' (EffectParameter sets no struct members)";
+        return out;
+    }
+    out.scalarOffsets = scalarOffsets(p, start);
+    return out;
+}
+
+// Which block vkd3d's uniforms feed at SM4+: the cbuffer at register b0 -- $Globals when it has
+// numeric members, else the first user cbuffer (explicit register(bN) is not in the reflection).
+int slotZeroBlock(const CompiledEffect& effect) {
+    int first = -1;
+    for (const Parameter& p : effect.parameters) {
+        if (p.isStatic || !(isNumeric(p) || p.parameterClass == ParameterClass::Struct)) continue;
+        if (p.block == 0) return 0;
+        if (first < 0 || p.block < first) first = p.block;
+    }
+    return first < 0 ? 0 : first;
+}
+
+UniformLayout cbufferLayout(const CompiledEffect& effect, const std::string& source, int model) {
+    UniformLayout layout;
+    int block = slotZeroBlock(effect);
+    int offset = 0;
+    for (std::size_t i = 0; i < effect.parameters.size(); ++i) {
+        const Parameter& p = effect.parameters[i];
+        if (p.isStatic || p.block != block || !(isNumeric(p) || p.parameterClass == ParameterClass::Struct)) continue;
+        int size = p.parameterClass == ParameterClass::Struct ? memberFootprint(p) : footprint(p);
+        int start = explicitOffset(source, p.name, model);
+        if (start < 0) start = packNext(offset, p, size);
+        offset = std::max(offset, start + size);
+        layout.placements.push_back(placeAt(effect, int(i), start));
+    }
+    return layout;
+}
+
+bool rangeRead(const CompiledEffect& effect, int block, int offset, int size) {
+    for (const auto& shader : effect.shaders)
+        for (const auto& r : shader.uniformRangesRead)
+            if (r.block == block && r.offset < offset + size && offset < r.offset + r.size) return true;
+    return false;
+}
+
+// D3D9 reserves a parameter's registers only up to the last one the shader reads (sm1-const-
+// allocation). Register k of the parameter is found in fxport's own layout (the reflection's
+// offset, array and matrix strides), where each D3D9 register is one 16-byte slot too.
+int usedRegisters(const CompiledEffect& effect, const Parameter& p) {
+    if (p.offset < 0) return 0;
+    ElementShape s = shapeOf(p);
+    int used = 0;
+    for (int k = 0; k < std::max(1, p.elements) * s.registers; ++k) {
+        int e = k / s.registers, j = k % s.registers;
+        int start = p.offset + e * p.arrayStride + (p.parameterClass == ParameterClass::Matrix ? j * p.matrixStride : 0);
+        if (rangeRead(effect, p.block, start, 16)) used = k + 1;
+    }
+    return used;
+}
+
+// D3D9: parameters with explicit register(cN) keep them; the others the shaders read take whole
+// float registers, in decreasing order of registers used, ties in declaration order (as fxc does;
+// sm1-const-allocation.shader_test documents it).
+UniformLayout registerLayout(const CompiledEffect& effect, const std::string& source, int model) {
+    UniformLayout layout;
+    std::vector<bool> taken;
+    auto reserve = [&](int reg, int count) {
+        if (int(taken.size()) < reg + count) taken.resize(std::size_t(reg + count), false);
+        for (int r = reg; r < reg + count; ++r) taken[std::size_t(r)] = true;
+    };
+    auto isFree = [&](int reg, int count) {
+        for (int r = reg; r < reg + count; ++r)
+            if (r < int(taken.size()) && taken[std::size_t(r)]) return false;
+        return true;
+    };
+    std::vector<std::pair<int, int>> pending;  // (registers used, parameter)
+    for (std::size_t i = 0; i < effect.parameters.size(); ++i) {
+        const Parameter& p = effect.parameters[i];
+        if (p.isStatic || !(isNumeric(p) || p.parameterClass == ParameterClass::Struct)) continue;
+        int start = explicitOffset(source, p.name, model);
+        int used = p.parameterClass == ParameterClass::Struct ? 1 : usedRegisters(effect, p);
+        if (start >= 0) {
+            reserve(start / 4, std::max(1, used));
+            layout.placements.push_back(placeAt(effect, int(i), start));
+        } else if (used > 0) {
+            pending.push_back({used, int(i)});
+        }
+    }
+    std::stable_sort(pending.begin(), pending.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    for (const auto& [used, i] : pending) {
+        int reg = 0;
+        while (!isFree(reg, used)) ++reg;
+        reserve(reg, used);
+        layout.placements.push_back(placeAt(effect, i, reg * 4));
+    }
+    return layout;
+}
+
+}  // namespace
+
+std::string uncoveredUniformRead(const CompiledEffect& effect) {
+    for (const auto& shader : effect.shaders) {
+        for (const auto& r : shader.uniformRangesRead) {
+            for (int byte = r.offset; byte < r.offset + r.size; byte += 4) {
+                bool covered = false;
+                for (const Parameter& p : effect.parameters)
+                    covered = covered || (p.offset >= 0 && p.block == r.block && byte >= p.offset && byte < p.offset + p.size);
+                if (!covered) return "a global the reflection does not list (a struct or unnamed one): no parameter to set";
+            }
+        }
+    }
+    return "";
+}
+
+UniformLayout computeUniformLayout(const CompiledEffect& effect, const std::string& source, int model) {
+    return model >= 40 ? cbufferLayout(effect, source, model) : registerLayout(effect, source, model);
+}
+
+}  // namespace conformance
