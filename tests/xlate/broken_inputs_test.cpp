@@ -117,6 +117,13 @@ std::vector<BrokenCase> cases() {
         // HLSL (glslang).
         {"HlslTypeErrorInInclude", kDir + "hlsl_error_in_include.fx", diag::kHlsl, "type_error.fxh", 8},
         {"HlslUndeclaredIdentifier", kDir + "undeclared_identifier.fx", diag::kHlsl, "undeclared_identifier.fx", 7},
+        // What fxc rejects and glslang would accept (xlate/src/fxc_rejections.cpp).
+        {"FxcSwitchFallThrough", kDir + "fxc_switch_fallthrough.fx", diag::kHlsl, "fxc_switch_fallthrough.fx", 9},
+        {"FxcConflictingAttributes", kDir + "fxc_conflicting_attributes.fx", diag::kHlsl, "fxc_conflicting_attributes.fx", 7},
+        {"FxcSwizzleTwice", kDir + "fxc_swizzle_twice.fx", diag::kHlsl, "fxc_swizzle_twice.fx", 5},
+        {"FxcModifierTwice", kDir + "fxc_modifier_twice.fx", diag::kHlsl, "fxc_modifier_twice.fx", 2},
+        {"FxcConstWithoutValue", kDir + "fxc_const_without_value.fx", diag::kHlsl, "fxc_const_without_value.fx", 4},
+        {"FxcPackoffsetCrossesRegister", kDir + "fxc_packoffset_crossing.fx", diag::kHlsl, "fxc_packoffset_crossing.fx", 5},
         // Not an effect at all. An empty file has only line 1 to point at.
         {"EmptyFile", kDir + "empty.fx", diag::kEmptyEffect, "empty.fx", 1},
         {"LibraryWithoutTechnique", kDir + "library_header.fx", diag::kEmptyEffect, "library_header.fx", 1},

@@ -330,7 +330,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     }
     for (auto& e : lowerMatrixSwizzles(tokens)) edits.push_back(std::move(e));
     for (auto& e : regroupFlatInitializers(syntax)) edits.push_back(std::move(e));
-    for (auto& e : respellOneComponentVectors(tokens)) edits.push_back(std::move(e));
+    for (auto& e : respellOneComponentVectors(syntax)) edits.push_back(std::move(e));
     for (auto& e : inverseTrigAsFxc(syntax)) edits.push_back(std::move(e));
     out.sourceText = &text;
     out.syntax = &syntax;

@@ -113,9 +113,10 @@ public:
         if (!basic.ok || type.find('<') != std::string::npos) return false;
         size_t size = size_t(basic.rows * basic.columns);
         if (next_ + size > leaves_.size()) return false;
-        if (size > 1) out += type + "(";
+        const bool constructor = size > 1 || basic.isMatrix;
+        if (constructor) out += type + "(";
         for (size_t k = 0; k < size; ++k) out += (k ? ", " : "") + leaves_[next_++];
-        if (size > 1) out += ")";
+        if (constructor) out += ")";
         return true;
     }
     bool usedAll() const { return next_ == leaves_.size(); }
