@@ -174,6 +174,18 @@ TEST_P(HlslSemantics, InverseTrigonometryIsFxcsExpansion) {
     for (int k = 0; k < 4; ++k) EXPECT_NEAR(px[size_t(k)], fxc::asin(v[k]) + fxc::acos(v[3 - k]) * 10.0f, 2e-5) << "channel " << k;
 }
 
+// lit(n.l, n.h, m) = (1, max(n.l, 0), n.l < 0 || n.h < 0 ? 0 : pow(n.h, m), 1) (D3D's definition).
+TEST_P(HlslSemantics, LitRaisesTheHalfVectorTermToThePower) {
+    auto e = effect("float3 L;", "return lit(L.x, L.y, L.z);");
+    const float cases[][3] = {{1.2f, 2.0f, 3.0f}, {-0.1f, 10.0f, 0.0f}, {1.2f, -0.1f, 0.0f}, {0.5f, 0.8f, 16.0f}};
+    for (const auto& c : cases) {
+        e->Parameters["L"].SetValue(Vector3(c[0], c[1], c[2]));
+        std::vector<float> px = draw(*e);
+        const float expected[4] = {1, std::max(c[0], 0.0f), c[0] < 0 || c[1] < 0 ? 0.0f : std::pow(c[1], c[2]), 1};
+        for (int k = 0; k < 4; ++k) EXPECT_NEAR(px[size_t(k)], expected[k], 1e-5 * std::max(1.0f, expected[k])) << "lit(" << c[0] << ", " << c[1] << ", " << c[2] << ") channel " << k;
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslSemantics, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 

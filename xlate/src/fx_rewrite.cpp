@@ -1,7 +1,7 @@
 #include "fx_rewrite.h"
 
 #include "initializer_lists.h"
-#include "inverse_trig.h"
+#include "fxc_intrinsics.h"
 #include "matrix_swizzle.h"
 #include "one_component_types.h"
 
@@ -331,7 +331,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : lowerMatrixSwizzles(tokens)) edits.push_back(std::move(e));
     for (auto& e : regroupFlatInitializers(syntax)) edits.push_back(std::move(e));
     for (auto& e : respellOneComponentVectors(syntax)) edits.push_back(std::move(e));
-    for (auto& e : inverseTrigAsFxc(syntax)) edits.push_back(std::move(e));
+    for (auto& e : intrinsicsAsFxc(syntax)) edits.push_back(std::move(e));
     out.sourceText = &text;
     out.syntax = &syntax;
     out.edits = std::move(edits);

@@ -71,6 +71,9 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
     // to give varyings their fixed locations.
     shader.setEnvTargetHlslFunctionality1();
     shader.setHlslIoMapping(true);
+    // SV_Position.w in a pixel shader is the clip-space w on D3D; GL's gl_FragCoord.w is 1/w.
+    // glslang inverts it on reading (a no-op for shaders that read only .xy).
+    if (lang == EShLangFragment) shader.setDxPositionW(true);
     auto messages = static_cast<EShMessages>(EShMsgReadHlsl | EShMsgSpvRules | EShMsgVulkanRules |
                                              (request.dx9Compatible ? int(EShMsgHlslDX9Compatible) : 0));
     if (!shader.parse(GetDefaultResources(), 100, false, messages)) {

@@ -1,6 +1,6 @@
-// See inverse_trig.h. The coefficients and the order of operations are those of fxc's expansions
+// See fxc_intrinsics.h. The coefficients and the order of operations are those of fxc's expansions
 // (as its SM4 output shows them: mad chains, a reciprocal for the ratio, masks for the quadrants).
-#include "inverse_trig.h"
+#include "fxc_intrinsics.h"
 
 #include <algorithm>
 #include <string>
@@ -9,7 +9,7 @@ namespace fxport::xlate {
 
 namespace {
 
-const char* const kIntrinsics[] = {"asin", "acos", "atan", "atan2"};
+const char* const kIntrinsics[] = {"asin", "acos", "atan", "atan2", "lit"};
 
 // The helpers for one vector width T (float, float2, float3, float4); comparisons are cast to T,
 // the masks fxc's code uses.
@@ -43,7 +43,7 @@ bool isIntrinsicCall(const std::vector<Token>& t, size_t i) {
 
 }  // namespace
 
-std::vector<TextEdit> inverseTrigAsFxc(const EffectSyntax& syntax) {
+std::vector<TextEdit> intrinsicsAsFxc(const EffectSyntax& syntax) {
     std::vector<TextEdit> edits;
     if (syntax.functions.empty()) return edits;
     for (const char* name : kIntrinsics)
@@ -56,6 +56,8 @@ std::vector<TextEdit> inverseTrigAsFxc(const EffectSyntax& syntax) {
     if (edits.empty()) return edits;
     std::string helpers;
     for (const char* T : {"float", "float2", "float3", "float4"}) helpers += helpersFor(T);
+    helpers += "float4 fxport_lit(float l, float h, float m) { float s = (l < 0.0 || h < 0.0) ? 0.0 : pow(h, m); "
+               "return float4(1.0, max(l, 0.0), s, 1.0); } ";
     edits.push_back({t[first].offset, t[first].offset, helpers});
     return edits;
 }
