@@ -900,3 +900,22 @@ TEST(Encodings, BinaryAndNonUtf8CodeAreStillRejected) {
     // A string ends at its line: a stray quote cannot hide the next line's bytes.
     EXPECT_EQ(firstId("float x = 1; // \"\nfloat y\xe9 = 2;\ntechnique T { pass P { } }\n"s), diag::kNotText);
 }
+
+// `#pragma pack_matrix` applies to the matrices declared after it, up to the next pragma; an
+// explicit row_major/column_major wins (glslang 12 kept the first pragma's majority for the rest).
+TEST(Translation, PackMatrixPragmasApplyUntilTheNextOne) {
+    const char* source = R"(#pragma pack_matrix(row_major)
+float2x2 R;
+struct S { float3x3 M; };
+#pragma pack_matrix(column_major)
+float2x2 C;
+row_major float2x2 Explicit;
+S s;
+float4 PS() : COLOR0 { return float4(R[0] + C[1] + Explicit[0], s.M[0].xy); }
+technique T { pass P { PixelShader = compile ps_3_0 PS(); } }
+)";
+    CompiledEffect e = compileEffectSource(source, "virtual/PackMatrix.fx", noCache());
+    EXPECT_TRUE(param(e, "R").rowMajor);
+    EXPECT_FALSE(param(e, "C").rowMajor);
+    EXPECT_TRUE(param(e, "Explicit").rowMajor);
+}

@@ -2,6 +2,7 @@
 
 #include "initializer_lists.h"
 #include "fxc_intrinsics.h"
+#include "matrix_majority.h"
 #include "matrix_swizzle.h"
 #include "one_component_types.h"
 
@@ -332,6 +333,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : regroupFlatInitializers(syntax)) edits.push_back(std::move(e));
     for (auto& e : respellOneComponentVectors(syntax)) edits.push_back(std::move(e));
     for (auto& e : intrinsicsAsFxc(syntax)) edits.push_back(std::move(e));
+    for (auto& e : spellOutPackMatrixPragmas(syntax)) edits.push_back(std::move(e));
     out.sourceText = &text;
     out.syntax = &syntax;
     out.edits = std::move(edits);

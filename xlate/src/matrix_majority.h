@@ -1,0 +1,17 @@
+// `#pragma pack_matrix(row_major)` / `(column_major)` as fxc applies it: every matrix declared
+// after the pragma (globals, cbuffer and struct members, parameters) without a majority of its
+// own takes the one the latest pragma named. glslang 12 keeps the first pragma's majority for the
+// rest of the file, so a matrix after `#pragma pack_matrix(column_major)` came out row-major
+// (transposed on upload). The pragmas are blanked and each such declaration gets the modifier
+// written out. Function bodies are left alone: a local matrix's majority is not observable.
+#pragma once
+
+#include <vector>
+
+#include "fx_syntax.h"
+
+namespace fxport::xlate {
+
+std::vector<TextEdit> spellOutPackMatrixPragmas(const EffectSyntax& syntax);
+
+}  // namespace fxport::xlate
