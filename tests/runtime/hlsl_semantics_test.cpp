@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "fxport/xlate/diagnostics.h"
 #include "runtime_test_support.h"
 
 namespace fxport::test {
@@ -36,15 +37,18 @@ protected:
         return std::make_unique<Effect>(device, EffectSource{text, "hlsl_semantics_" + model + ".fx"}, options);
     }
 
+    // Draws one pixel with `e`; Apply() compiles the pass first (and throws what the compile does).
     std::vector<float> draw(Effect& e) {
         RenderTarget2D target(device, 1, 1, false, SurfaceFormat::Vector4);
+        struct Unbind {
+            GraphicsDevice& d;
+            ~Unbind() { d.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr)); }
+        } unbind{device};
         device.SetRenderTarget(target);
         device.Clear(Color::Black);
         e.CurrentTechnique->Passes[0].Apply();
         drawQuad(device);
-        std::vector<float> px = readFloats(target);
-        device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
-        return px;
+        return readFloats(target);
     }
 
     GraphicsDevice& device = testDevice();
@@ -184,6 +188,23 @@ TEST_P(HlslSemantics, LitRaisesTheHalfVectorTermToThePower) {
         const float expected[4] = {1, std::max(c[0], 0.0f), c[0] < 0 || c[1] < 0 ? 0.0f : std::pow(c[1], c[2]), 1};
         for (int k = 0; k < 4; ++k) EXPECT_NEAR(px[size_t(k)], expected[k], 1e-5 * std::max(1.0f, expected[k])) << "lit(" << c[0] << ", " << c[1] << ", " << c[2] << ") channel " << k;
     }
+}
+
+// fxc folds constants and refuses a divisor that folds to zero: integers at every model, floats
+// at SM2-3 (SM4+ computes inf). The error names the entry point.
+TEST_P(HlslSemantics, DivisionByAConstantZeroIsRefusedAsFxcRefusesIt) {
+    const bool sm2or3 = GetParam()[0] < '4';
+    EXPECT_THROW(draw(*effect("", "int x = 7; int y = 0; return float4(x / y, 0, 0, 0);")), xlate::CompileError);
+    EXPECT_THROW(draw(*effect("", "uint x = 7; uint y = 0; return float4(x % y, 0, 0, 0);")), xlate::CompileError);
+    if (sm2or3) {
+        EXPECT_THROW(draw(*effect("", "float x = 1; float y = 0; return x / y;")), xlate::CompileError);
+    } else {
+        auto e = effect("", "float x = 1; float y = 0; return x / y;");
+        EXPECT_TRUE(std::isinf(draw(*e)[0]));
+    }
+    auto fine = effect("int D;", "int x = 7; return float4(x / D, 0, 0, 0);");  // not a constant
+    fine->Parameters["D"].SetValue(2);
+    EXPECT_FLOAT_EQ(draw(*fine)[0], 3.0f);
 }
 
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslSemantics, ::testing::Values("2_0", "3_0", "4_0", "5_0"),

@@ -481,6 +481,7 @@ int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile
     request.stage = expected;
     request.entryPoint = entryName;
     request.dx9Compatible = dx9Compatible;
+    request.shaderModel = profile.major;
     SpirvModule spirv = hlslToSpirv(request);
     // A vector passed to a scalar parameter of the effect's own function: fxc uses .x (warning
     // X3206), glslang finds no overload. Compile again with overloads that take vectors there
@@ -523,7 +524,10 @@ int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile
     }
     if (!spirv.errors.empty()) {
         for (const auto& e : spirv.errors) {
-            if (e.line > 0 && e.line <= baseLines_) {
+            if (e.aboutTheEntryPoint && entryFunction) {
+                effect_.diagnostics.push_back(pre_.map.make(Severity::Error, diag::kHlsl, "'" + entryFunction->name + "' (" + expr.profile + "): " + e.message,
+                                                            entryToken.line, entryToken.column, entryFunction->name));
+            } else if (e.line > 0 && e.line <= baseLines_) {
                 effect_.diagnostics.push_back(pre_.map.make(Severity::Error, diag::kHlsl, e.message, e.line, 0, e.token));
             } else {
                 error(diag::kHlsl, "in the generated entry point for '" + expr.entry + "' (" + expr.profile + "): " + e.message, expr.token);

@@ -103,6 +103,10 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
         return out;
     }
     out.warnings = msgs;
+    if (dividesByConstantZero(out.words, request.shaderModel < 4)) {
+        out.errors.push_back({0, {}, "division by zero: a divisor of this shader folds to the constant 0, which fxc refuses", true});
+        return out;
+    }
     applySpirvFixups(out.words);
     std::string legalizeError;
     if (!legalizeSpirv(out.words, &legalizeError)) out.errors.push_back({0, {}, legalizeError});

@@ -14,6 +14,7 @@ struct HlslError {
     int line = 0;          // line in `source` (1-based), 0 if unknown
     std::string token;     // offending token, when the front end names one
     std::string message;
+    bool aboutTheEntryPoint = false;  // the whole shader's (our checks on SPIR-V): said at the entry function
 };
 
 struct SpirvModule {
@@ -27,6 +28,7 @@ struct HlslToSpirvRequest {
     ShaderStage stage = ShaderStage::Vertex;
     std::string entryPoint;
     bool dx9Compatible = false;  // tex2D/sampler2D (DX9 samplers) vs Texture2D.Sample (DX10)
+    int shaderModel = 4;         // the profile's major version: fxc's constant-folding errors differ
 };
 
 SpirvModule hlslToSpirv(const HlslToSpirvRequest& request);

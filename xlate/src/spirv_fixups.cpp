@@ -86,6 +86,55 @@ void applySpirvFixups(std::vector<std::uint32_t>& words) {
     if (readTypes(words, types)) anyAllOfScalarIsTheScalar(words, types);
 }
 
+namespace {
+
+constexpr std::uint32_t kOpConstant = 43;
+constexpr std::uint32_t kOpConstantComposite = 44;
+constexpr std::uint32_t kOpConstantNull = 46;
+
+bool forwardLocals(std::vector<std::uint32_t>& words) {
+    spvtools::Optimizer optimizer(SPV_ENV_VULKAN_1_0);
+    optimizer.SetMessageConsumer([](spv_message_level_t, const char*, const spv_position_t&, const char*) {});
+    optimizer.RegisterPass(spvtools::CreateMergeReturnPass())
+        .RegisterPass(spvtools::CreateInlineExhaustivePass())
+        .RegisterPass(spvtools::CreateScalarReplacementPass())
+        .RegisterPass(spvtools::CreateLocalAccessChainConvertPass())
+        .RegisterPass(spvtools::CreateLocalSingleBlockLoadStoreElimPass())
+        .RegisterPass(spvtools::CreateLocalSingleStoreElimPass());
+    spvtools::OptimizerOptions options;
+    options.set_run_validator(false);
+    std::vector<std::uint32_t> out;
+    if (!optimizer.Run(words.data(), words.size(), &out, options)) return false;
+    words = std::move(out);
+    return true;
+}
+
+}  // namespace
+
+bool dividesByConstantZero(const std::vector<std::uint32_t>& original, bool floatsToo) {
+    std::vector<std::uint32_t> words = original;
+    if (words.size() < kHeaderWords || !forwardLocals(words)) return false;
+    // Constants that are zero (a scalar of value 0 or -0.0, a null, a composite with a zero part).
+    std::set<std::uint32_t> zero;
+    std::vector<std::pair<std::uint32_t, size_t>> divisions;  // (divisor id, offset)
+    for (size_t at = kHeaderWords; at < words.size();) {
+        std::uint32_t count = words[at] >> 16, op = words[at] & 0xFFFFu;
+        if (count == 0 || at + count > words.size()) return false;
+        if (op == kOpConstant && count == 4 && (words[at + 3] & 0x7FFFFFFFu) == 0) zero.insert(words[at + 2]);
+        if (op == kOpConstantNull && count == 3) zero.insert(words[at + 2]);
+        if (op == kOpConstantComposite)
+            for (std::uint32_t k = 3; k < count; ++k)
+                if (zero.count(words[at + k])) zero.insert(words[at + 2]);
+        const bool integer = op == 134 /*UDiv*/ || op == 135 /*SDiv*/ || op == 137 /*UMod*/ || op == kOpSRem || op == kOpSMod;
+        const bool real = op == 136 /*FDiv*/ || op == kOpFRem || op == kOpFMod;
+        if ((integer || (real && floatsToo)) && count == 5) divisions.push_back({words[at + 4], at});
+        at += count;
+    }
+    for (const auto& [divisor, at] : divisions)
+        if (zero.count(divisor)) return true;
+    return false;
+}
+
 bool legalizeSpirv(std::vector<std::uint32_t>& words, std::string* error) {
     spvtools::Optimizer optimizer(SPV_ENV_VULKAN_1_0);
     std::string messages;

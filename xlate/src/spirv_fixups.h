@@ -13,6 +13,12 @@ namespace fxport::xlate {
 // Applies every fix-up to `words` (an unoptimised glslang module) in place.
 void applySpirvFixups(std::vector<std::uint32_t>& words);
 
+// fxc folds constants and refuses a division whose divisor folds to zero: integer `/` and `%` at
+// every shader model, float `/` and `%` at SM2-3 (SM4+ computes inf/NaN). Locals are forwarded
+// first (inlining and store-to-load forwarding, no arithmetic folding, which would erase the
+// division); returns true when such a division remains. Run on the unoptimised module.
+bool dividesByConstantZero(const std::vector<std::uint32_t>& words, bool floatsToo);
+
 // spirv-opt's legalisation passes for HLSL (what glslang runs when its optimizer is on): inlining,
 // scalar replacement and forwarding of opaque values (samplers passed to functions), dead code.
 // Returns false (and leaves `words` as they were) when spirv-opt refuses the module.
