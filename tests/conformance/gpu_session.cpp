@@ -2,10 +2,10 @@
 #include "gpu_session.h"
 
 #include <cstring>
-#include <regex>
 
 #include "fxport/graphics.h"
 #include "fxport/xlate/compiled_effect.h"
+#include "register_binding.h"
 
 namespace conformance {
 
@@ -70,13 +70,6 @@ fxport::SamplerState defaultSampler(int model) {
         out.AddressU = out.AddressV = out.AddressW = fxport::TextureAddressMode::Wrap;
     }
     return out;
-}
-
-// `NAME : register(tN)` (letter t, s ...) in the source; -1 when absent.
-int explicitRegister(const std::string& source, const std::string& name, char letter) {
-    std::regex re("\\b" + name + "\\s*(\\[[^\\]]*\\])?\\s*:\\s*register\\s*\\(\\s*" + letter + "(\\d+)");
-    std::smatch m;
-    return std::regex_search(source, m, re) ? std::stoi(m[2]) : -1;
 }
 
 bool isTexture(const fxport::xlate::Parameter& p) {
@@ -302,13 +295,13 @@ Texel GpuSession::readTexel(int slot, int x, int y) {
         throw Unsupported(bad != unsupportedTargets_.end() ? bad->second : "probe of an undeclared render target");
     }
     auto& cached = readback_[slot];
-    if (cached.empty()) {
-        for (const fxport::Vector4& v : it->second->GetDataAsVector4()) cached.push_back({v.X, v.Y, v.Z, v.W});
-    }
+    if (cached.empty()) cached = it->second->GetDataAsVector4();  // once per target after each draw
     int w = it->second->Width(), h = it->second->Height();
     if (x < 0 || y < 0 || x >= w || y >= h) throw std::runtime_error("probe outside the render target");
     Texel t;
-    std::memcpy(t.bits.data(), cached[std::size_t(y * w + x)].data(), 16);
+    const fxport::Vector4& v = cached[std::size_t(y * w + x)];
+    const float f[4] = {v.X, v.Y, v.Z, v.W};
+    std::memcpy(t.bits.data(), f, 16);
     return t;
 }
 

@@ -91,7 +91,11 @@ std::vector<std::string> outOfScope(const RunReport& report) {
 // A diagnostic with the particulars folded, so that one cause groups together; "" for failures
 // that only repeat another (a probe after a draw that failed is listed under the draw).
 std::string groupKey(const Failure& f) {
-    if (f.category == "probe") return f.detail.rfind("draw failed: ", 0) == 0 ? "" : "probe: wrong value in " + f.file;
+    if (f.category == "probe") {
+        if (f.detail.rfind("draw failed: ", 0) == 0) return "";
+        bool guessed = f.detail.find("[uniforms placed by a guess") != std::string::npos;
+        return std::string("probe: wrong value") + (guessed ? " (D3D9 uniform registers guessed)" : "") + " in " + f.file;
+    }
     std::string d = f.detail;
     d = std::regex_replace(d, std::regex("'[^']*'"), "'_'");
     d = std::regex_replace(d, std::regex("\"[^\"]*\""), "\"_\"");
