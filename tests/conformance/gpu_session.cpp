@@ -99,7 +99,7 @@ std::map<std::string, int> registerSlots(const fxport::xlate::CompiledEffect& co
 
 fxport::VertexElementUsage usageOf(const std::string& semantic) {
     static const struct { const char* name; fxport::VertexElementUsage usage; } kUsages[] = {
-        {"POSITION", fxport::VertexElementUsage::Position}, {"SV_POSITION", fxport::VertexElementUsage::Position},
+        {"POSITION", fxport::VertexElementUsage::Position},
         {"TEXCOORD", fxport::VertexElementUsage::TextureCoordinate}, {"COLOR", fxport::VertexElementUsage::Color},
         {"NORMAL", fxport::VertexElementUsage::Normal}, {"BINORMAL", fxport::VertexElementUsage::Binormal},
         {"TANGENT", fxport::VertexElementUsage::Tangent}, {"BLENDINDICES", fxport::VertexElementUsage::BlendIndices},
@@ -110,6 +110,10 @@ fxport::VertexElementUsage usageOf(const std::string& semantic) {
     for (char c : semantic) upper += char(std::toupper(static_cast<unsigned char>(c)));
     for (const auto& u : kUsages)
         if (upper == u.name) return u.usage;
+    // D3D10 input layouts may name system values; XNA's usages cannot, and the runtime does not
+    // feed an SV_POSITION input from a POSITION element.
+    if (upper.rfind("SV_", 0) == 0)
+        throw Unsupported("vertex input semantic '" + semantic + "' (XNA's VertexElementUsage has no SV_ names)");
     throw Unsupported("vertex input semantic '" + semantic + "' (no XNA VertexElementUsage)");
 }
 
