@@ -2,10 +2,10 @@
 #include "gpu_session.h"
 
 #include <cstring>
-#include <regex>
 
 #include "fxport/graphics.h"
 #include "fxport/xlate/compiled_effect.h"
+#include "register_binding.h"
 
 namespace conformance {
 
@@ -72,13 +72,6 @@ fxport::SamplerState defaultSampler(int model) {
     return out;
 }
 
-// `NAME : register(tN)` (letter t, s ...) in the source; -1 when absent.
-int explicitRegister(const std::string& source, const std::string& name, char letter) {
-    std::regex re("\\b" + name + "\\s*(\\[[^\\]]*\\])?\\s*:\\s*register\\s*\\(\\s*" + letter + "(\\d+)");
-    std::smatch m;
-    return std::regex_search(source, m, re) ? std::stoi(m[2]) : -1;
-}
-
 bool isTexture(const fxport::xlate::Parameter& p) {
     using T = fxport::xlate::ParameterType;
     return p.type == T::Texture || p.type == T::Texture1D || p.type == T::Texture2D || p.type == T::Texture3D ||
@@ -106,7 +99,7 @@ std::map<std::string, int> registerSlots(const fxport::xlate::CompiledEffect& co
 
 fxport::VertexElementUsage usageOf(const std::string& semantic) {
     static const struct { const char* name; fxport::VertexElementUsage usage; } kUsages[] = {
-        {"POSITION", fxport::VertexElementUsage::Position}, {"SV_POSITION", fxport::VertexElementUsage::Position},
+        {"POSITION", fxport::VertexElementUsage::Position},
         {"TEXCOORD", fxport::VertexElementUsage::TextureCoordinate}, {"COLOR", fxport::VertexElementUsage::Color},
         {"NORMAL", fxport::VertexElementUsage::Normal}, {"BINORMAL", fxport::VertexElementUsage::Binormal},
         {"TANGENT", fxport::VertexElementUsage::Tangent}, {"BLENDINDICES", fxport::VertexElementUsage::BlendIndices},
@@ -117,6 +110,10 @@ fxport::VertexElementUsage usageOf(const std::string& semantic) {
     for (char c : semantic) upper += char(std::toupper(static_cast<unsigned char>(c)));
     for (const auto& u : kUsages)
         if (upper == u.name) return u.usage;
+    // D3D10 input layouts may name system values; XNA's usages cannot, and the runtime does not
+    // feed an SV_POSITION input from a POSITION element.
+    if (upper.rfind("SV_", 0) == 0)
+        throw Unsupported("vertex input semantic '" + semantic + "' (XNA's VertexElementUsage has no SV_ names)");
     throw Unsupported("vertex input semantic '" + semantic + "' (no XNA VertexElementUsage)");
 }
 
@@ -302,13 +299,13 @@ Texel GpuSession::readTexel(int slot, int x, int y) {
         throw Unsupported(bad != unsupportedTargets_.end() ? bad->second : "probe of an undeclared render target");
     }
     auto& cached = readback_[slot];
-    if (cached.empty()) {
-        for (const fxport::Vector4& v : it->second->GetDataAsVector4()) cached.push_back({v.X, v.Y, v.Z, v.W});
-    }
+    if (cached.empty()) cached = it->second->GetDataAsVector4();  // once per target after each draw
     int w = it->second->Width(), h = it->second->Height();
     if (x < 0 || y < 0 || x >= w || y >= h) throw std::runtime_error("probe outside the render target");
     Texel t;
-    std::memcpy(t.bits.data(), cached[std::size_t(y * w + x)].data(), 16);
+    const fxport::Vector4& v = cached[std::size_t(y * w + x)];
+    const float f[4] = {v.X, v.Y, v.Z, v.W};
+    std::memcpy(t.bits.data(), f, 16);
     return t;
 }
 

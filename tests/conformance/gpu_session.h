@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "fxport/math.h"
 #include "probe.h"
 #include "resource_desc.h"
 
@@ -69,7 +70,7 @@ private:
     std::map<int, SamplerDesc> samplers_;
     std::map<int, ResourceDesc> vertexBuffers_;
     std::vector<InputElement> inputLayout_;
-    std::map<int, std::vector<std::array<float, 4>>> readback_;
+    std::map<int, std::vector<fxport::Vector4>> readback_;  // per target, since the last draw or clear
 };
 
 }  // namespace conformance

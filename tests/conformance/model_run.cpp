@@ -131,7 +131,7 @@ void ModelRun::onShader(const Block& block) {
         ++result_.crashed;
         SectionCounts& c = result_.sections[std::size_t(kind)];
         ++(expect.expectsReject() ? c.shouldFail : c.shouldCompile);
-        failures_.push_back({file_.name, model_, block.line, "crash", "the compile crashed the process"});
+        // The failure (with the signal) is recorded by file_pool.cpp, which saw the process die.
         log("L" + std::to_string(block.line) + " [" + block.header + "]: the compile CRASHED the process");
         shaders_[block.stage].diagnostic = "the compile crashed the process";
         return;

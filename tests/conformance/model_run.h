@@ -67,7 +67,7 @@ private:
     void skipProbe(const std::string& reason);
     void failProbe(int line, const std::string& detail);
     fxport::Effect& effectFor(const std::string& vs, const std::string& ps);
-    void applyUniforms(fxport::Effect& effect, const std::string& source);
+    std::string applyUniforms(fxport::Effect& effect, const std::string& source);  // returns UniformLayout::guess
     GpuSession& gpu();
     void log(const std::string& text);
     void mark(int line) const;
@@ -94,6 +94,7 @@ private:
     std::map<std::string, std::string> stickyStates_;                 // test states the runner cannot set
     DrawState drawState_ = DrawState::None;
     std::string drawNote_;  // why the last draw failed or was skipped
+    std::string layoutGuess_;  // the last draw's uniform placement was a guess (UniformLayout::guess)
 };
 
 }  // namespace conformance

@@ -77,7 +77,7 @@ fxport::Effect& ModelRun::effectFor(const std::string& vs, const std::string& ps
     return *(effects_[key] = std::move(effect));
 }
 
-void ModelRun::applyUniforms(fxport::Effect& effect, const std::string& source) {
+std::string ModelRun::applyUniforms(fxport::Effect& effect, const std::string& source) {
     const fxport::xlate::CompiledEffect& compiled = effect.compiled();
     std::string uncovered = uncoveredUniformRead(compiled);
     if (!uncovered.empty()) throw Unsupported(uncovered);
@@ -100,11 +100,13 @@ void ModelRun::applyUniforms(fxport::Effect& effect, const std::string& source) 
         if (p.type == fxport::xlate::ParameterType::Float) parameter.SetValue(std::span<const float>(floats));
         else parameter.SetValue(std::span<const int>(ints));
     }
+    return layout.guess;
 }
 
 void ModelRun::doDraw(const std::string& args, int line) {
     drawState_ = DrawState::Skipped;
     drawNote_.clear();
+    layoutGuess_.clear();
     try {
         DrawCall call = parseDrawCall(args);
         if (!stickyStates_.empty())
@@ -123,7 +125,7 @@ void ModelRun::doDraw(const std::string& args, int line) {
                                          " crashed the process");
         mark(line);
         fxport::Effect& effect = effectFor(vs, ps);
-        applyUniforms(effect, vs + ps);
+        layoutGuess_ = applyUniforms(effect, vs + ps);
         gpu().draw(effect, vs + ps, model_, call);
         drawState_ = DrawState::Drawn;
     } catch (const Unsupported& e) {
@@ -168,7 +170,8 @@ void ModelRun::doProbe(const std::string& args, int line) {
                 Texel texel = gpu().readTexel(probe.slot, x, y);
                 if (texelMatches(probe, texel)) continue;
                 return failProbe(line, "expected " + describeExpected(probe) + ", got " + describeTexel(probe, texel) +
-                                           " at (" + std::to_string(x) + ", " + std::to_string(y) + ")");
+                                           " at (" + std::to_string(x) + ", " + std::to_string(y) + ")" +
+                                           (layoutGuess_.empty() ? "" : " [uniforms placed by a guess: " + layoutGuess_ + "]"));
             }
         }
     } catch (const Unsupported& e) {

@@ -91,7 +91,11 @@ std::vector<std::string> outOfScope(const RunReport& report) {
 // A diagnostic with the particulars folded, so that one cause groups together; "" for failures
 // that only repeat another (a probe after a draw that failed is listed under the draw).
 std::string groupKey(const Failure& f) {
-    if (f.category == "probe") return f.detail.rfind("draw failed: ", 0) == 0 ? "" : "probe: wrong value in " + f.file;
+    if (f.category == "probe") {
+        if (f.detail.rfind("draw failed: ", 0) == 0) return "";
+        bool guessed = f.detail.find("[uniforms placed by a guess") != std::string::npos;
+        return std::string("probe: wrong value") + (guessed ? " (D3D9 uniform registers guessed)" : "");
+    }
     std::string d = f.detail;
     d = std::regex_replace(d, std::regex("'[^']*'"), "'_'");
     d = std::regex_replace(d, std::regex("\"[^\"]*\""), "\"_\"");
@@ -143,7 +147,7 @@ void printSummary(const RunReport& report, std::ostream& out) {
 }
 
 void printFailureKinds(const RunReport& report, std::ostream& out, int limit) {
-    struct Group { int count = 0; std::set<std::string> files; };
+    struct Group { int count = 0; std::map<std::string, int> files; };
     std::map<std::string, Group> groups;
     for (const FileOutcome& f : report.files) {
         for (const Failure& x : f.failures) {
@@ -151,21 +155,20 @@ void printFailureKinds(const RunReport& report, std::ostream& out, int limit) {
             if (key.empty()) continue;
             Group& g = groups[key];
             ++g.count;
-            g.files.insert(x.file);
+            ++g.files[x.file];
         }
     }
     std::vector<std::pair<int, std::string>> sorted;
     for (const auto& [key, g] : groups) sorted.push_back({g.count, key});
     std::sort(sorted.rbegin(), sorted.rend());
-    out << "\nMost frequent failure kinds (count, files, examples):\n";
+    out << "\nMost frequent failure kinds (count, files, the files with most):\n";
     for (int i = 0; i < std::min(limit, int(sorted.size())); ++i) {
         const Group& g = groups[sorted[std::size_t(i)].second];
         out << "  " << g.count << " in " << g.files.size() << " files  " << sorted[std::size_t(i)].second << "\n     e.g.";
-        int shown = 0;
-        for (const std::string& f : g.files) {
-            if (shown++ == 4) break;
-            out << " " << f;
-        }
+        std::vector<std::pair<int, std::string>> files;
+        for (const auto& [file, n] : g.files) files.push_back({n, file});
+        std::sort(files.begin(), files.end(), [](const auto& a, const auto& b) { return a.first != b.first ? a.first > b.first : a.second < b.second; });
+        for (std::size_t k = 0; k < std::min<std::size_t>(8, files.size()); ++k) out << " " << files[k].second << "(" << files[k].first << ")";
         out << "\n";
     }
 }

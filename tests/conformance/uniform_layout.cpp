@@ -2,9 +2,9 @@
 #include "uniform_layout.h"
 
 #include <algorithm>
-#include <regex>
 
 #include "fxport/xlate/compiled_effect.h"
+#include "register_binding.h"
 
 namespace conformance {
 
@@ -82,17 +82,14 @@ int structFootprint(const Parameter& p) {
     return offset;
 }
 
-// `NAME : register(cN)` or `NAME : packoffset(cN.y)` in the source, as a component offset; -1 if none.
-int explicitOffset(const std::string& source, const std::string& name, int model) {
-    std::smatch m;
-    std::regex reg("\\b" + name + "\\s*(\\[[^\\]]*\\])?\\s*:\\s*register\\s*\\(\\s*c(\\d+)\\s*\\)");
-    if (model < 40 && std::regex_search(source, m, reg)) return std::stoi(m[2]) * 4;
-    std::regex pack("\\b" + name + "\\s*(\\[[^\\]]*\\])?\\s*:\\s*packoffset\\s*\\(\\s*c(\\d+)(\\.([xyzw]))?\\s*\\)");
-    if (model >= 40 && std::regex_search(source, m, pack)) {
-        int component = m[4].matched ? int(std::string("xyzw").find(m[4].str()[0])) : 0;
-        return std::stoi(m[2]) * 4 + component;
+// An explicit placement in the source as a component offset; -1 if none. D3D9 honours
+// register(cN); SM4 honours it only in $Globals (block 0) and packoffset(cN.y) in cbuffers.
+int explicitOffset(const std::string& source, const Parameter& p, int model) {
+    if (model < 40 || p.block == 0) {
+        int reg = explicitRegister(source, p.name, 'c');
+        if (reg >= 0) return reg * 4;
     }
-    return -1;
+    return model >= 40 && p.block != 0 ? explicitPackOffset(source, p.name) : -1;
 }
 
 ParameterPlacement placeAt(const CompiledEffect& effect, int index, int start) {
@@ -120,17 +117,40 @@ int slotZeroBlock(const CompiledEffect& effect) {
     return first < 0 ? 0 : first;
 }
 
+// Whether components [start, start + size) meet an explicitly placed parameter's.
+bool overlapsReserved(const std::vector<std::pair<int, int>>& reserved, int start, int size) {
+    for (const auto& [from, length] : reserved)
+        if (start < from + length && from < start + size) return true;
+    return false;
+}
+
+// SM4+: D3D10 cbuffer packing of the block at slot 0. Explicit placements first; fxc packs the
+// other parameters in declaration order from the end of the last explicit one (register-
+// reservations-numeric: `float a : register(c2); float b;` puts b at c2.y, not c0).
 UniformLayout cbufferLayout(const CompiledEffect& effect, const std::string& source, int model) {
     UniformLayout layout;
     int block = slotZeroBlock(effect);
+    auto inBlock = [&](const Parameter& p) {
+        return !p.isStatic && p.block == block && (isNumeric(p) || p.parameterClass == ParameterClass::Struct);
+    };
+    auto sizeOf = [](const Parameter& p) { return p.parameterClass == ParameterClass::Struct ? memberFootprint(p) : footprint(p); };
+    std::vector<std::pair<int, int>> reserved;
+    for (const Parameter& p : effect.parameters) {
+        int start = inBlock(p) ? explicitOffset(source, p, model) : -1;
+        if (start >= 0) reserved.push_back({start, sizeOf(p)});
+    }
     int offset = 0;
+    for (const auto& [from, length] : reserved) offset = std::max(offset, from + length);
     for (std::size_t i = 0; i < effect.parameters.size(); ++i) {
         const Parameter& p = effect.parameters[i];
-        if (p.isStatic || p.block != block || !(isNumeric(p) || p.parameterClass == ParameterClass::Struct)) continue;
-        int size = p.parameterClass == ParameterClass::Struct ? memberFootprint(p) : footprint(p);
-        int start = explicitOffset(source, p.name, model);
-        if (start < 0) start = packNext(offset, p, size);
-        offset = std::max(offset, start + size);
+        if (!inBlock(p)) continue;
+        int size = sizeOf(p);
+        int start = explicitOffset(source, p, model);
+        if (start < 0) {
+            start = packNext(offset, p, size);
+            while (overlapsReserved(reserved, start, size)) start = packNext((start / 4 + 1) * 4, p, size);
+            offset = start + size;
+        }
         layout.placements.push_back(placeAt(effect, int(i), start));
     }
     return layout;
@@ -177,7 +197,7 @@ UniformLayout registerLayout(const CompiledEffect& effect, const std::string& so
     for (std::size_t i = 0; i < effect.parameters.size(); ++i) {
         const Parameter& p = effect.parameters[i];
         if (p.isStatic || !(isNumeric(p) || p.parameterClass == ParameterClass::Struct)) continue;
-        int start = explicitOffset(source, p.name, model);
+        int start = explicitOffset(source, p, model);
         int used = p.parameterClass == ParameterClass::Struct ? 1 : usedRegisters(effect, p);
         if (start >= 0) {
             reserve(start / 4, std::max(1, used));
@@ -187,6 +207,12 @@ UniformLayout registerLayout(const CompiledEffect& effect, const std::string& so
         }
     }
     std::stable_sort(pending.begin(), pending.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    // fxc sizes each by the registers its optimised code reads; fxport's reflection only says which
+    // ranges fxport's code reads, which can be more. Where that can move a parameter, say so.
+    int multi = 0;
+    for (const auto& [used, i] : pending) multi += used > 1 ? 1 : 0;
+    if (multi > 0 && pending.size() > 1)
+        layout.guess = "D3D9 registers of matrices/arrays allocated from fxport's read ranges, fxc sizes them by its own dead-code analysis";
     for (const auto& [used, i] : pending) {
         int reg = 0;
         while (!isFree(reg, used)) ++reg;

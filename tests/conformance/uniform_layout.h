@@ -24,6 +24,7 @@ struct ParameterPlacement {
 
 struct UniformLayout {
     std::vector<ParameterPlacement> placements;
+    std::string guess;  // non-empty when fxc's placement could not be known for sure (why)
 };
 
 // `source` is the HLSL of the shaders (for explicit register(cN)/packoffset, which the reflection

@@ -1,0 +1,130 @@
+// The runner's own rules, pinned without a GPU: vkd3d's qualifiers, its ULP comparison, probe
+// parsing, explicit register bindings and the D3D placement of `uniform N` (uniform_layout.cpp).
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "fxport/xlate/compiled_effect.h"
+#include "probe.h"
+#include "qualifiers.h"
+#include "register_binding.h"
+#include "uniform_layout.h"
+
+namespace conformance {
+namespace {
+
+TEST(Qualifiers, SectionFailHoldsOnlyAtTheModelsItNames) {
+    EXPECT_TRUE(sectionExpectation("fail(sm>=2&sm<4)", 30).fail);
+    EXPECT_FALSE(sectionExpectation("fail(sm>=2&sm<4)", 40).fail);
+    EXPECT_TRUE(sectionExpectation("fail", 50).expectsReject());
+    EXPECT_TRUE(sectionExpectation("notimpl(sm<6)", 50).expectsReject());
+    // Backend tags do not narrow a section's models (vkd3d's model mask ignores them).
+    EXPECT_TRUE(sectionExpectation("todo(glsl) fail(sm<4 | d3d12)", 20).fail);
+    EXPECT_TRUE(sectionExpectation("todo(glsl)", 20).todo);
+}
+
+TEST(Qualifiers, TestLinePrefixesAtAModel) {
+    EXPECT_TRUE(parseTestLinePrefix("if(sm<4) probe (0, 0) rgba (1, 1, 1, 1)", 30).runs);
+    EXPECT_FALSE(parseTestLinePrefix("if(sm<4) probe (0, 0) rgba (1, 1, 1, 1)", 40).runs);
+    EXPECT_EQ(parseTestLinePrefix("todo(sm<6 | msl) draw quad", 40).rest, "draw quad");
+    // No vkd3d backend tag describes native D3D: `!d3d12` holds, `glsl` does not.
+    EXPECT_TRUE(parseTestLinePrefix("if(!d3d12) draw quad", 50).runs);
+    EXPECT_FALSE(parseTestLinePrefix("if(glsl) draw quad", 50).runs);
+    EXPECT_EQ(parseShaderModel("4"), 40);
+    EXPECT_EQ(parseShaderModel("4.1"), 41);
+}
+
+TEST(Probes, UlpsAsVkd3dCountsThem) {
+    float one = 1.0f, next;
+    std::uint32_t bits;
+    std::memcpy(&bits, &one, 4);
+    ++bits;
+    std::memcpy(&next, &bits, 4);
+    EXPECT_TRUE(floatsMatch(next, one, 1));
+    EXPECT_FALSE(floatsMatch(next, one, 0));
+    EXPECT_TRUE(floatsMatch(-0.0f, 0.0f, 0));
+    EXPECT_FALSE(floatsMatch(-1.0f, 1.0f, 1000));
+}
+
+TEST(Probes, RectangleKindValuesAndUlps) {
+    Probe p = parseProbe(" rtv 1 (2, 3, 10, 20) rgba (0.5, -1, 2e3, 4) 7");
+    EXPECT_EQ(p.target, Probe::Target::Rtv);
+    EXPECT_EQ(p.slot, 1);
+    EXPECT_EQ(p.right, 10);
+    EXPECT_EQ(p.bottom, 20);
+    EXPECT_EQ(p.kind, "rgba");
+    EXPECT_DOUBLE_EQ(p.expected[2], 2000.0);
+    EXPECT_EQ(p.ulps, 7u);
+    Probe u = parseProbe(" uav 2 (5) u32(0xffffffff, 3)");
+    EXPECT_EQ(u.target, Probe::Target::Uav);
+    EXPECT_EQ(u.components, 2);
+    EXPECT_EQ(u.expectedBits[0], 0xffffffffu);
+}
+
+TEST(RegisterBinding, IndexExpressionsAndAnnotationChains) {
+    EXPECT_EQ(explicitRegister("float a : register (c0[0.6 + 0.6]);", "a", 'c'), 1);
+    EXPECT_EQ(explicitRegister("float a : register (c[1 + 1 * 2 * 0]);", "a", 'c'), 1);
+    EXPECT_EQ(explicitRegister("Texture2D t : register(space0, t1);", "t", 't'), 1);
+    EXPECT_EQ(explicitRegister("float b : packoffset(c2) : register(c1);", "b", 'c'), 1);
+    EXPECT_EQ(explicitPackOffset("float b : packoffset(c2) : register(c1);", "b"), 8);
+    EXPECT_EQ(explicitPackOffset("float b : packoffset(c1.y);", "b"), 5);
+    EXPECT_EQ(explicitRegister("float b;", "b", 'c'), -1);
+}
+
+fxport::xlate::Parameter numeric(const char* name, fxport::xlate::ParameterClass cls, int rows, int columns) {
+    fxport::xlate::Parameter p;
+    p.name = name;
+    p.parameterClass = cls;
+    p.rows = rows;
+    p.columns = columns;
+    return p;
+}
+
+TEST(UniformLayout, Sm4PacksLikeD3D10CBuffers) {
+    using C = fxport::xlate::ParameterClass;
+    fxport::xlate::CompiledEffect e;
+    e.parameters = {numeric("a", C::Scalar, 1, 1), numeric("b", C::Vector, 1, 2), numeric("c", C::Vector, 1, 2),
+                    numeric("m", C::Matrix, 4, 4)};
+    UniformLayout l = computeUniformLayout(e, "", 40);
+    ASSERT_EQ(l.placements.size(), 4u);
+    EXPECT_EQ(l.placements[0].scalarOffsets[0], 0);  // a: c0.x
+    EXPECT_EQ(l.placements[1].scalarOffsets[0], 1);  // b: c0.yz (fits after a)
+    EXPECT_EQ(l.placements[2].scalarOffsets[0], 4);  // c: would cross into c1: c1.xy
+    // m column_major from c2: m[0][1] (scalar 1) is column 1, row 0 = c3.x.
+    EXPECT_EQ(l.placements[3].scalarOffsets[0], 8);
+    EXPECT_EQ(l.placements[3].scalarOffsets[1], 12);
+}
+
+TEST(UniformLayout, Sm4ImplicitGlobalsFollowTheExplicitOnes) {
+    using C = fxport::xlate::ParameterClass;
+    fxport::xlate::CompiledEffect e;
+    e.parameters = {numeric("a", C::Vector, 1, 4), numeric("b", C::Vector, 1, 4)};
+    UniformLayout l = computeUniformLayout(e, "float4 a;\nfloat4 b : register(c0);\n", 40);
+    EXPECT_EQ(l.placements[0].scalarOffsets[0], 4);  // a after b's c0
+    EXPECT_EQ(l.placements[1].scalarOffsets[0], 0);
+}
+
+TEST(UniformLayout, Sm2AllocatesReadParametersByRegistersUsed) {
+    using C = fxport::xlate::ParameterClass;
+    fxport::xlate::CompiledEffect e;
+    fxport::xlate::Parameter f = numeric("f", C::Vector, 1, 4);
+    f.offset = 0;
+    f.size = 16;
+    fxport::xlate::Parameter m = numeric("m", C::Matrix, 4, 2);  // column_major: 2 registers
+    m.offset = 16;
+    m.size = 32;
+    m.matrixStride = 16;
+    e.parameters = {f, m};
+    fxport::xlate::CompiledShader shader;
+    shader.uniformRangesRead = {{0, 16, 0}, {16, 32, 0}};
+    e.shaders = {shader};
+    UniformLayout l = computeUniformLayout(e, "", 20);
+    ASSERT_EQ(l.placements.size(), 2u);
+    // Larger first: m takes c0-c1, f c2.
+    EXPECT_EQ(l.placements[0].parameter, 1);
+    EXPECT_EQ(l.placements[0].scalarOffsets[0], 0);
+    EXPECT_EQ(l.placements[1].scalarOffsets[0], 8);
+}
+
+}  // namespace
+}  // namespace conformance
