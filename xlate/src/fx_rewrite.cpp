@@ -322,6 +322,10 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
             (t.text == "half" || t.text == "min16float" || t.text == "min10float"))
             edits.push_back({t.offset, t.end, "float"});
     }
+    // `const static int N = 4;` is a constant to fxc as `static const` is; glslang keeps the last
+    // storage word only, so N would be a plain static and `float w[N + 1]` no constant size.
+    for (size_t i = 0; i + 1 < tokens.size(); ++i)
+        if (tokens[i].text == "const" && tokens[i + 1].text == "static") edits.push_back({tokens[i].offset, tokens[i + 1].end, "static const"});
     for (auto& e : lowerMatrixSwizzles(tokens)) edits.push_back(std::move(e));
     out.sourceText = &text;
     out.syntax = &syntax;

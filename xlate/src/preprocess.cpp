@@ -11,6 +11,7 @@
 #include <set>
 
 #include "d3d9_asm.h"
+#include "glslang_predefines.h"
 #include "glslang_process.h"
 #include "text_encoding.h"
 #include "input_limits.h"
@@ -336,7 +337,7 @@ PreprocessedEffect preprocessEffect(const std::string& rawSource, const std::str
     if (!options.includeRoot.empty()) includeRoot = RestrictedIncluder::Root{fs::weakly_canonical(fs::absolute(options.includeRoot, ec), ec), options.includeRoot};
     RestrictedIncluder includer(roots, includeRoot, displayPath, rootAbs);
     includer.totalBytes = source.size();
-    std::string preamble = "#define FXPORT 1\n";
+    std::string preamble = undefineGlslangPredefines() + "#define FXPORT 1\n";
     for (const auto& [name, value] : options.defines) preamble += "#define " + name + " " + value + "\n";
 
     glslang::TShader shader(EShLangFragment);
