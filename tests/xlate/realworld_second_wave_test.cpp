@@ -128,3 +128,36 @@ TEST(Gather, ChannelsThroughAStructAndNoGlslPredefines) {
     EXPECT_NE(glsl.find(", 1)"), std::string::npos) << glsl;  // green
     EXPECT_NE(glsl.find(", 3)"), std::string::npos) << glsl;  // alpha
 }
+
+// ---- 2. MonoGame's dialect ------------------------------------------------------------------------
+
+TEST(MonoGameDialect, RedefinedShaderModelUndeclaredTextureAndUniformsWithoutValues) {
+    CompiledEffect e = compileFixture("monogame/PlatformTemplate.fx");
+    // The header's later `#define VS_SHADERMODEL` wins, with fxc's warning at the redefinition.
+    const CompiledShader& vs = e.shaders[size_t(e.techniques[0].passes[0].vertexShader.shaders[0])];
+    EXPECT_EQ(vs.profile.name, "vs_4_0_level_9_3");
+    bool warned = false;
+    for (const auto& d : e.diagnostics)
+        warned |= d.severity == Severity::Warning && d.id == std::string(diag::kPreprocessor) &&
+                  d.location.file.find("ShaderModels.fxh") != std::string::npos && d.location.line == 10 &&
+                  d.message.find("VS_SHADERMODEL") != std::string::npos;
+    EXPECT_TRUE(warned);
+    // `Texture = <SpriteTexture>` with no declaration: the parameter MonoGame makes.
+    EXPECT_EQ(param(e, "SpriteTexture").type, ParameterType::Texture);
+    EXPECT_EQ(samplerOf(pixelShader(e), "SpriteSampler").textureParameter, "SpriteTexture");
+    // `PS()` is the overload without uniforms; `PS(true, 2)` fills both; `PS(true)` leaves Gain to the
+    // application, as a parameter of the constant buffer read by that shader only.
+    EXPECT_EQ(e.findParameter("Invert"), nullptr);
+    const Parameter& gain = param(e, "Gain");
+    EXPECT_EQ(gain.type, ParameterType::Float);
+    EXPECT_GE(gain.offset, 0);
+    auto reads = [&](const CompiledShader& s, const std::string& name) {
+        for (int i : s.parametersRead)
+            if (e.parameters[size_t(i)].name == name) return true;
+        return false;
+    };
+    EXPECT_FALSE(reads(pixelShader(e, 0), "Gain"));
+    EXPECT_FALSE(reads(pixelShader(e, 1), "Gain"));
+    EXPECT_TRUE(reads(pixelShader(e, 2), "Gain"));
+    EXPECT_EQ(pixelShader(e, 1).arguments, "true , 2");
+}

@@ -169,11 +169,7 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
                                        ? p.type + "(" + literalArgs[nextLiteral++] + ")"
                                        : literalArgs[nextLiteral++]);
             else if (!p.defaultValue.empty()) callArgs.push_back(syntax.text(p.defaultValue));
-            else {
-                w.error = "uniform parameter '" + p.name + "' of '" + entry.name + "' gets no value: give it in the compile statement, e.g. compile " +
-                          profile.name + " " + entry.name + "(value)";
-                return w;
-            }
+            else callArgs.push_back(p.name);  // an effect parameter of that name (fx_parser declares it), as fxc does
             continue;
         }
         std::string local = "a" + std::to_string(i);

@@ -23,6 +23,35 @@ const FxFunction* EffectSyntax::findFunction(const std::string& name) const {
         if (f.name == name) return &f;
     return nullptr;
 }
+static size_t countArguments(const std::string& arguments) {
+    if (arguments.find_first_not_of(" \t") == std::string::npos) return 0;
+    size_t n = 1;
+    int depth = 0;
+    for (char c : arguments) {
+        if (c == '(' || c == '[' || c == '{') ++depth;
+        if (c == ')' || c == ']' || c == '}') --depth;
+        if (c == ',' && depth == 0) ++n;
+    }
+    return n;
+}
+const FxFunction* EffectSyntax::findEntry(const std::string& name, const std::string& literalArguments) const {
+    const size_t given = countArguments(literalArguments);
+    const FxFunction* first = nullptr;
+    const FxFunction* takesFewer = nullptr;  // some uniforms left over: made parameters of the effect
+    for (const auto& f : functions) {
+        if (f.name != name) continue;
+        if (!first) first = &f;
+        size_t uniforms = 0, required = 0;
+        for (const auto& p : f.parameters)
+            if (std::find(p.modifiers.begin(), p.modifiers.end(), "uniform") != p.modifiers.end()) {
+                ++uniforms;
+                if (p.defaultValue.empty()) ++required;
+            }
+        if (given <= uniforms && given >= required) return &f;
+        if (given < uniforms && !takesFewer) takesFewer = &f;
+    }
+    return takesFewer ? takesFewer : first;
+}
 const FxStruct* EffectSyntax::findStruct(const std::string& name) const {
     for (const auto& s : structs)
         if (s.name == name) return &s;
@@ -145,6 +174,8 @@ public:
                 retypedStatements.insert(t.declaration.begin);
             }
         rewriteTextureStatements(retypedStatements);
+        declareTexturesNamedOnlyBySamplers();
+        declareUniformEntryParameters();
         return std::move(syntax_);
     }
 
@@ -169,6 +200,71 @@ private:
     static int textureKindOfName(const std::string& type) {
         std::string t = toLower(type);
         return t.find("cube") != std::string::npos ? 6 : t.find("3d") != std::string::npos ? 3 : t.find("1d") != std::string::npos ? 1 : 2;
+    }
+    // MonoGame's effect processor makes the texture parameter of `sampler_state { Texture = <Name>; }`
+    // when the effect never declares `Name` (its templates leave the declaration out): so does fxport,
+    // as a DX9 `texture` declared where the sampler names it. A name declared as something else
+    // stays an error (effect_compiler).
+    void declareTexturesNamedOnlyBySamplers() {
+        std::set<std::string> declared;
+        for (const auto& t : syntax_.textures) declared.insert(t.name);
+        for (const auto& g : syntax_.globals) declared.insert(g.name);
+        for (const auto& s : syntax_.samplers) declared.insert(s.name);
+        for (const auto& s : syntax_.samplers) {
+            if (s.dx10) continue;
+            for (const auto& a : s.states) {
+                if (!iequals(a.name, "texture")) continue;
+                size_t i = a.value.begin;
+                while (i < a.value.end && (tok(i).is("<") || tok(i).is("("))) ++i;
+                if (i >= a.value.end || !tok(i).isIdent() || declared.count(tok(i).text)) continue;
+                FxTexture t;
+                t.name = tok(i).text;
+                t.type = "texture";
+                t.dx9Object = true;
+                t.token = i;
+                syntax_.textures.push_back(std::move(t));
+                declared.insert(tok(i).text);
+            }
+        }
+    }
+    // `uniform bool hasShadow` of an entry compiled as `PS()`: fxc puts it in the shader's constant
+    // table under its own name, a parameter the application sets. So does fxport: a global of that
+    // name and type is declared at the end of the effect, and the entry wrapper passes it.
+    void declareUniformEntryParameters() {
+        std::vector<FxShaderExpr> compiles;
+        for (const auto& t : syntax_.techniques)
+            for (const auto& p : t.passes)
+                for (const auto& a : p.assignments)
+                    if (isShaderStateName(a.name)) compiles.push_back(parseShaderExpr(syntax_, a.value));
+        for (const auto& v : syntax_.shaderVariables) compiles.insert(compiles.end(), v.elements.begin(), v.elements.end());
+        std::set<std::string> declared;
+        for (const auto& g : syntax_.globals) declared.insert(g.name);
+        for (const auto& e : compiles) {
+            if (e.kind != FxShaderExpr::Kind::Compile) continue;
+            const FxFunction* f = syntax_.findEntry(e.entry, e.arguments);
+            if (!f) continue;
+            size_t literals = countArguments(e.arguments), k = 0;
+            for (const auto& p : f->parameters) {
+                if (std::find(p.modifiers.begin(), p.modifiers.end(), "uniform") == p.modifiers.end()) continue;
+                if (k++ < literals || !p.defaultValue.empty() || p.name.empty() || !declared.insert(p.name).second) continue;
+                FxGlobal g;
+                g.name = p.name;
+                g.type = p.type;
+                g.modifiers = {"uniform"};
+                g.arrayDims = p.arrayDims;
+                g.token = p.typeToken;
+                syntax_.globals.push_back(g);
+                std::string dims;
+                for (int d : p.arrayDims) dims += "[" + std::to_string(d) + "]";
+                syntax_.edits.push_back({text_.size(), text_.size(), " " + p.type + " " + p.name + dims + ";"});
+            }
+        }
+    }
+    static bool isShaderStateName(const std::string& name) {
+        static const char* const k[] = {"VertexShader", "PixelShader", "GeometryShader", "SetVertexShader", "SetPixelShader", "SetGeometryShader"};
+        for (const char* n : k)
+            if (iequals(name, n)) return true;
+        return false;
     }
     // One texture statement (`texture A, B;`) holds DX9 textures (removed) and DX10 objects (kept).
     // A statement of DX9 ones only is blanked; one with a texture retyped or removed beside kept

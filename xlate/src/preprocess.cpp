@@ -315,6 +315,31 @@ private:
     size_t includesFollowed_ = 0;
 };
 
+// glslang's "'#define' : Macro redefined; different substitutions: NAME" (and its two siblings).
+bool isMacroRedefinition(const Diagnostic& d) { return d.message.find("Macro redefined") != std::string::npos; }
+bool onlyMacroRedefinitions(const std::vector<Diagnostic>& diags) {
+    return std::all_of(diags.begin(), diags.end(), isMacroRedefinition);
+}
+
+std::string lastWordOf(const std::string& message) {
+    std::string_view t = trim(message);
+    size_t space = t.find_last_of(" :");
+    return std::string(space == std::string_view::npos ? t : t.substr(space + 1));
+}
+
+// One run of glslang's preprocessor over the prepared root text (see preprocessEffect).
+struct PreprocessRun {
+    const std::string& source;
+    const std::string& displayPath;
+    const fs::path& rootAbs;
+    const std::vector<RestrictedIncluder::Root>& roots;
+    const std::optional<RestrictedIncluder::Root>& includeRoot;
+    const CompileOptions& options;
+    const std::vector<Diagnostic>& lineWarnings;
+    // nullopt: the only errors were macro redefinitions and `cascading` was off (run again with it).
+    std::optional<PreprocessedEffect> operator()(bool cascading) const;
+};
+
 }  // namespace
 
 PreprocessedEffect preprocessEffect(const std::string& rawSource, const std::string& displayPath,
@@ -335,6 +360,14 @@ PreprocessedEffect preprocessEffect(const std::string& rawSource, const std::str
 
     std::optional<RestrictedIncluder::Root> includeRoot;
     if (!options.includeRoot.empty()) includeRoot = RestrictedIncluder::Root{fs::weakly_canonical(fs::absolute(options.includeRoot, ec), ec), options.includeRoot};
+    // glslang stops at its first error; a macro redefinition (a warning to fxc) is seen again with
+    // cascading errors on, so that everything after it is preprocessed.
+    PreprocessRun run{source, displayPath, rootAbs, roots, includeRoot, options, lineWarnings};
+    if (auto result = run(false)) return std::move(*result);
+    return std::move(*run(true));
+}
+
+std::optional<PreprocessedEffect> PreprocessRun::operator()(bool cascading) const {
     RestrictedIncluder includer(roots, includeRoot, displayPath, rootAbs);
     includer.totalBytes = source.size();
     std::string preamble = undefineGlslangPredefines() + "#define FXPORT 1\n";
@@ -349,14 +382,14 @@ PreprocessedEffect preprocessEffect(const std::string& rawSource, const std::str
     shader.setEnvInput(glslang::EShSourceHlsl, EShLangFragment, glslang::EShClientOpenGL, 100);
     shader.setPreamble(preamble.c_str());
     std::string output;
-    auto messages = static_cast<EShMessages>(EShMsgReadHlsl | EShMsgOnlyPreprocessor);
+    auto messages = static_cast<EShMessages>(EShMsgReadHlsl | EShMsgOnlyPreprocessor | (cascading ? int(EShMsgCascadingErrors) : 0));
     bool ok = shader.preprocess(GetDefaultResources(), 100, ENoProfile, false, false, messages, &output, includer);
 
     PreprocessedEffect result;
     result.map.addFileText(displayPath, source);
     for (const auto& [file, content] : includer.loaded) result.map.addFileText(file, content);
     result.dependencies = std::move(includer.dependencies);
-    result.warnings = std::move(lineWarnings);
+    result.warnings = lineWarnings;
     result.warnings.insert(result.warnings.end(), includer.warnings.begin(), includer.warnings.end());
     if (!ok && includer.limitProblem) throw CompileError({*includer.limitProblem});
     if (!ok) {
@@ -405,7 +438,16 @@ PreprocessedEffect preprocessEffect(const std::string& rawSource, const std::str
             d.location = {displayPath, 1, 1};  // glslang named no line: the file as a whole
             diags.push_back(d);
         }
-        throw CompileError(std::move(diags));
+        // Without cascading errors glslang gave up at the first one (then "missing #endif" follows).
+        if (!cascading && isMacroRedefinition(diags.front())) return std::nullopt;
+        if (!onlyMacroRedefinitions(diags)) throw CompileError(std::move(diags));
+        // fxc warns (X1519) and uses the later definition, which glslang has already made current
+        // (MonoGame's `#define VS_SHADERMODEL vs_4_0_level_9_1` after a header's own): warnings.
+        for (auto& d : diags) {
+            d.severity = Severity::Warning;
+            d.message = "macro '" + lastWordOf(d.message) + "' redefined; the later definition is used, as fxc does (X1519)";
+            result.warnings.push_back(std::move(d));
+        }
     }
     if (output.size() > limits::kMaxPreprocessedBytes) {
         Diagnostic d;
