@@ -117,6 +117,16 @@ TEST(Declarations, LowercaseDx9TexturesUsedAsObjectsBecomeObjects) {
     }
 }
 
+TEST(Declarations, AssignedUniformsGetTheShadersOwnCopy) {
+    CompiledEffect e = compileFixture("declarations/AssignedUniforms.fx");
+    EXPECT_EQ(param(e, "Scale").defaultValue, std::vector<double>{2});
+    EXPECT_EQ(param(e, "Counter").type, ParameterType::Float);
+    EXPECT_EQ(e.findParameter("fxport_copy_Scale"), nullptr);
+    const std::string& glsl = pixelShader(e).glsl;
+    for (const char* name : {"Scale", "Tint", "Counter"})
+        EXPECT_NE(glsl.find(std::string("fxport_copy_") + name + " = "), std::string::npos) << name << "\n" << glsl;
+}
+
 // ---- 5. FXAA 3.11's needs: gather on a texture in a struct, no GLSL macros ------------------------
 
 TEST(Gather, ChannelsThroughAStructAndNoGlslPredefines) {

@@ -133,6 +133,87 @@ std::string applyEdits(const std::string& text, std::vector<TextEdit> edits) {
 
 }  // namespace
 
+namespace {
+
+bool isAssignmentOperator(const Token& t) {
+    static const std::set<std::string> k = {"=", "+=", "-=", "*=", "/=", "%=", "&=", "|=", "^="};
+    return t.kind == Token::Kind::Punct && k.count(t.text) > 0;
+}
+
+// Where `name` at token i is the target of an assignment or of ++/--: `Scale *= 2`, `Tint.a = 1`,
+// `W[i] += x`, `++Count`. (<<= and >>= arrive as single characters, so they are not seen.)
+bool isWrittenAt(const std::vector<Token>& t, size_t i, size_t end) {
+    if (i > 0 && (t[i - 1].is("++") || t[i - 1].is("--"))) return true;
+    size_t j = i + 1;
+    while (j < end) {
+        if (t[j].is(".") && j + 1 < end && t[j + 1].isIdent()) {
+            j += 2;
+        } else if (t[j].is("[")) {
+            int depth = 0;
+            for (; j < end; ++j) {
+                if (t[j].is("[")) ++depth;
+                if (t[j].is("]") && --depth == 0) break;
+            }
+            ++j;
+        } else {
+            break;
+        }
+    }
+    return j < end && (isAssignmentOperator(t[j]) || t[j].is("++") || t[j].is("--"));
+}
+
+// A parameter or local of that name hides the global in this function.
+bool hidesGlobal(const FxFunction& f, const std::vector<Token>& t, const std::string& name) {
+    for (const auto& p : f.parameters)
+        if (p.name == name) return true;
+    static const std::set<std::string> statementWords = {"return", "else", "do", "case", "goto"};
+    for (size_t i = f.body.begin + 1; i + 1 < f.body.end; ++i)
+        if (t[i].isIdent() && t[i].text == name && t[i - 1].isIdent() && !statementWords.count(t[i - 1].text) &&
+            (t[i + 1].is("=") || t[i + 1].is(";") || t[i + 1].is(",") || t[i + 1].is("[") || t[i + 1].is(":")))
+            return true;
+    return false;
+}
+
+// fxc lets a shader assign to a global uniform (`Scale *= 2;`): the shader then works on its own
+// copy, made from the uniform when it starts. glslang refuses ("l-value required"). Each such
+// global gets `static T fxport_copy_NAME = NAME;` after its declaration, and every function that
+// does not hide it uses the copy; the uniform itself stays the effect's parameter.
+void copyAssignedUniforms(const EffectSyntax& syntax, std::vector<TextEdit>& edits) {
+    const auto& t = syntax.tokens;
+    for (const auto& g : syntax.globals) {
+        bool constant = std::find_if(g.modifiers.begin(), g.modifiers.end(), [](const std::string& m) { return m == "static" || m == "const"; }) !=
+                        g.modifiers.end();
+        if (constant || g.isStringParameter) continue;
+        bool written = false;
+        for (const auto& f : syntax.functions)
+            for (size_t i = f.body.begin; i < f.body.end && !written; ++i)
+                written = t[i].isIdent() && t[i].text == g.name && !(i > 0 && t[i - 1].is(".")) && isWrittenAt(t, i, f.body.end) &&
+                          !hidesGlobal(f, t, g.name);
+        if (!written) continue;
+        size_t end = g.token;
+        for (int depth = 0; end < t.size() && t[end].kind != Token::Kind::End; ++end) {
+            if (t[end].is("(") || t[end].is("{") || t[end].is("[")) ++depth;
+            if (t[end].is(")") || t[end].is("}") || t[end].is("]")) --depth;
+            if (depth == 0 && t[end].is(";")) break;
+        }
+        if (t[end].kind == Token::Kind::End) continue;
+        const std::string copy = "fxport_copy_" + g.name;
+        std::string dims;
+        for (int d : g.arrayDims) dims += "[" + (d > 0 ? std::to_string(d) : std::string()) + "]";
+        std::string type = g.type;
+        for (const auto& m : g.modifiers)
+            if (m == "row_major" || m == "column_major") type = m + " " + type;
+        edits.push_back({t[end].end, t[end].end, " static " + type + " " + copy + dims + " = " + g.name + ";"});
+        for (const auto& f : syntax.functions) {
+            if (hidesGlobal(f, t, g.name)) continue;
+            for (size_t i = f.body.begin; i < f.body.end; ++i)
+                if (t[i].isIdent() && t[i].text == g.name && !(i > 0 && t[i - 1].is("."))) edits.push_back({t[i].offset, t[i].end, copy});
+        }
+    }
+}
+
+}  // namespace
+
 std::string RewrittenEffect::hlslForGeometryShader(const std::string& entry, const std::vector<TextEdit>& extra) const {
     // Stream functions the entry calls (directly or through others: a helper that Appends for it)
     // stay; the others go.
@@ -326,6 +407,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     // storage word only, so N would be a plain static and `float w[N + 1]` no constant size.
     for (size_t i = 0; i + 1 < tokens.size(); ++i)
         if (tokens[i].text == "const" && tokens[i + 1].text == "static") edits.push_back({tokens[i].offset, tokens[i + 1].end, "static const"});
+    copyAssignedUniforms(syntax, edits);
     for (auto& e : lowerMatrixSwizzles(tokens)) edits.push_back(std::move(e));
     out.sourceText = &text;
     out.syntax = &syntax;
