@@ -171,3 +171,57 @@ TEST(MonoGameDialect, RedefinedShaderModelUndeclaredTextureAndUniformsWithoutVal
     EXPECT_TRUE(reads(pixelShader(e, 2), "Gain"));
     EXPECT_EQ(pixelShader(e, 1).arguments, "true , 2");
 }
+
+// ---- 3. includes as games write them --------------------------------------------------------------
+
+const std::string kGame = kDir + "includes/Game";
+const std::string kWater = kGame + "/Content/Shaders/Effects/Water/Water.fx";
+
+TEST(GameIncludes, FromTheGameFolderWithWindowsPathsGuardsAndATechniqueInAHeader) {
+    CompileOptions options = noCache();
+    options.includeRoot = kGame;
+    CompiledEffect e = compileFixture("includes/Game/Content/Shaders/Effects/Water/Water.fx", options);
+    ASSERT_EQ(e.techniques.size(), 1u);
+    EXPECT_EQ(e.techniques[0].name, "Main");  // defined in Common/Techniques.fx
+    for (const char* name : {"FogDensity", "LightDir", "ShadowStrength"}) EXPECT_NE(e.findParameter(name), nullptr) << name;
+    // Every header is a dependency of the compile (the cache rebuilds when one changes).
+    std::vector<std::string> deps = effectDependencies(kWater, options);
+    for (const char* file : {"Fog.inc", "Lighting.hpp", "Shadows.h", "Techniques.fx"})
+        EXPECT_TRUE(std::any_of(deps.begin(), deps.end(), [&](const std::string& d) { return d.find(file) != std::string::npos; })) << file;
+}
+
+TEST(GameIncludes, WithoutTheRootTheGameFolderIsNotSearched) {
+    try {
+        compileEffectFile(kWater, noCache());
+        ADD_FAILURE() << "compiled without the include root";
+    } catch (const CompileError& e) {
+        const Diagnostic& d = e.diagnostics().front();
+        EXPECT_EQ(d.id, std::string(diag::kIncludeNotFound));
+        EXPECT_EQ(d.location.line, 4);
+    }
+}
+
+TEST(GameIncludes, NamesMatchingSeveralFilesByCaseAreRefusedNamingThem) {
+    fs::path dir = fs::temp_directory_path() / ("fxport_rw2_case_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    std::ofstream(dir / "Shared.fxh") << "float A;\n";
+    std::ofstream(dir / "SHARED.fxh") << "float B;\n";
+    std::ofstream(dir / "Uses.fx") << "// x\n#include \"shared.fxh\"\nfloat4 PS() : COLOR0 { return 1; }\n"
+                                      "technique T { pass P { PixelShader = compile ps_2_0 PS(); } }\n";
+    try {
+        compileEffectFile((dir / "Uses.fx").string(), noCache());
+        ADD_FAILURE() << "an ambiguous include compiled";
+    } catch (const CompileError& e) {
+        const Diagnostic& d = e.diagnostics().front();
+        EXPECT_EQ(d.id, std::string(diag::kIncludeNotFound));
+        EXPECT_EQ(d.location.line, 2);
+        EXPECT_NE(d.message.find("Shared.fxh"), std::string::npos) << d.message;
+        EXPECT_NE(d.message.find("SHARED.fxh"), std::string::npos) << d.message;
+    }
+    // Named exactly, either one is taken.
+    std::ofstream(dir / "Uses.fx") << "#include \"SHARED.fxh\"\nfloat4 PS() : COLOR0 { return B; }\n"
+                                      "technique T { pass P { PixelShader = compile ps_2_0 PS(); } }\n";
+    EXPECT_NE(compileEffectFile((dir / "Uses.fx").string(), noCache()).findParameter("B"), nullptr);
+    fs::remove_all(dir);
+}
