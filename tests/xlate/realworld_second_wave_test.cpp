@@ -225,3 +225,50 @@ TEST(GameIncludes, NamesMatchingSeveralFilesByCaseAreRefusedNamingThem) {
     EXPECT_NE(compileEffectFile((dir / "Uses.fx").string(), noCache()).findParameter("B"), nullptr);
     fs::remove_all(dir);
 }
+
+// ---- 4. legacy encodings ---------------------------------------------------------------------------
+
+bool isUtf8(const std::string& s) {
+    for (size_t i = 0; i < s.size();) {
+        auto c = static_cast<unsigned char>(s[i]);
+        size_t n = c < 0x80 ? 1 : (c & 0xE0) == 0xC0 ? 2 : (c & 0xF0) == 0xE0 ? 3 : (c & 0xF8) == 0xF0 ? 4 : 0;
+        if (n == 0 || i + n > s.size()) return false;
+        for (size_t k = 1; k < n; ++k)
+            if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return false;
+        i += n;
+    }
+    return true;
+}
+
+class LegacyEncoding : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(LegacyEncoding, CommentsAndStringsNeverStopACompile) {
+    CompiledEffect e = compileFixture(std::string("encodings/") + GetParam() + ".fx");
+    const Parameter& p = param(e, "Intensity");
+    EXPECT_EQ(p.defaultValue, std::vector<double>{0.5});
+    ASSERT_EQ(p.annotations.size(), 1u);
+    EXPECT_TRUE(isUtf8(p.annotations[0].value));
+    EXPECT_TRUE(isUtf8(param(e, "Description").defaultString));
+    EXPECT_TRUE(isUtf8(reflectionJson(e)));
+    fxport::test::RunResult r = fxport::test::runCli("dump --no-cache --reflection " + kDir + "encodings/" + GetParam() + ".fx");
+    EXPECT_TRUE(r.exited && r.status == 0) << r.output;
+}
+
+INSTANTIATE_TEST_SUITE_P(Wild, LegacyEncoding, ::testing::Values("Latin1", "Cp949", "ShiftJis"));
+
+TEST(LegacyEncodings, ShiftJisCommentEndingInABackslashByteContinuesNoLine) {
+    const std::string file = kDir + "encodings/ShiftJisError.fx";
+    try {
+        compileEffectFile(file, noCache());
+        ADD_FAILURE() << "compiled";
+    } catch (const CompileError& e) {
+        const Diagnostic& d = e.diagnostics().front();
+        EXPECT_EQ(d.location.line, 4);
+        EXPECT_NE(d.message.find("Missing"), std::string::npos) << d.message;
+        EXPECT_NE(d.sourceLine.find("return Missing;"), std::string::npos) << d.sourceLine;
+    }
+    fxport::test::RunResult r = fxport::test::runCli("check --no-cache " + file);
+    EXPECT_TRUE(r.exited && r.status == 1) << r.output;
+    EXPECT_NE(r.output.find("ShiftJisError.fx(4,"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("return Missing;"), std::string::npos) << r.output;
+}
