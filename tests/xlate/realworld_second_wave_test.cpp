@@ -127,6 +127,11 @@ TEST(Declarations, AssignedUniformsGetTheShadersOwnCopy) {
         EXPECT_NE(glsl.find(std::string("fxport_copy_") + name + " = "), std::string::npos) << name << "\n" << glsl;
 }
 
+TEST(Declarations, LoopVariablesUsedAfterTheirLoopCompile) {
+    CompiledEffect e = compileFixture("declarations/LoopVariableScope.fx");
+    EXPECT_FALSE(pixelShader(e).glsl.empty());  // values: runtime.RealWorld2Render.LoopVariablesLiveInTheEnclosingScope
+}
+
 // ---- 5. FXAA 3.11's needs: gather on a texture in a struct, no GLSL macros ------------------------
 
 TEST(Gather, ChannelsThroughAStructAndNoGlslPredefines) {

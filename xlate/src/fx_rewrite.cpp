@@ -212,6 +212,68 @@ void copyAssignedUniforms(const EffectSyntax& syntax, std::vector<TextEdit>& edi
     }
 }
 
+// Index one past the statement that starts at token i: a `{...}` block, or tokens to the `;` at
+// depth 0 (an `if`/`for` header's parentheses are passed over).
+size_t statementEnd(const std::vector<Token>& t, size_t i, size_t end) {
+    int depth = 0;
+    for (; i < end; ++i) {
+        if (t[i].is("(") || t[i].is("[") || t[i].is("{")) ++depth;
+        else if (t[i].is(")") || t[i].is("]") || t[i].is("}")) {
+            if (--depth == 0 && t[i].is("}")) return i + 1;
+        } else if (depth == 0 && t[i].is(";")) {
+            return i + 1;
+        }
+    }
+    return end;
+}
+
+// fxc (as C++ compilers of its time) puts a variable declared in a `for` header in the enclosing
+// scope: `for (int i = 0; ...) ...; for (i = 1; ...)` uses the same `i`. Where a header's variable is
+// used after its loop, the declaration moves in front of the loop (`int i; for (i = 0; ...)`); a
+// later header declaring the same name again at the same brace depth (fxc's warning X3078) then
+// assigns it instead.
+void hoistLoopVariablesUsedAfterTheLoop(const EffectSyntax& syntax, std::vector<TextEdit>& edits) {
+    const auto& t = syntax.tokens;
+    for (const auto& f : syntax.functions) {
+        std::map<std::string, int> hoisted;  // name -> brace depth of its hoisted declaration
+        int depth = 0;
+        for (size_t i = f.body.begin; i < f.body.end; ++i) {
+            if (t[i].is("{")) ++depth;
+            if (t[i].is("}")) --depth;
+            if (!(t[i].is("for") && i + 3 < f.body.end && t[i + 1].is("(") && t[i + 2].isIdent() && t[i + 3].isIdent())) continue;
+            // Names declared in the header: after the type, and after each ',' at depth 1.
+            size_t typeToken = i + 2, initEnd = i + 2;
+            std::vector<std::string> names;
+            for (int d = 0; initEnd < f.body.end; ++initEnd) {
+                if (t[initEnd].is("(") || t[initEnd].is("[") || t[initEnd].is("{")) ++d;
+                if (t[initEnd].is(")") || t[initEnd].is("]") || t[initEnd].is("}")) --d;
+                if (d == 0 && t[initEnd].is(";")) break;
+                if (d == 0 && (initEnd == typeToken + 1 || t[initEnd - 1].is(",")) && t[initEnd].isIdent()) names.push_back(t[initEnd].text);
+            }
+            size_t headerClose = initEnd;
+            for (int d = 1; headerClose < f.body.end && d > 0; ++headerClose) {
+                if (t[headerClose].is("(")) ++d;
+                if (t[headerClose].is(")")) --d;
+            }
+            size_t loopEnd = statementEnd(t, headerClose, f.body.end);
+            bool usedAfter = false;
+            for (size_t k = loopEnd; k < f.body.end && !usedAfter; ++k)
+                for (const auto& n : names) usedAfter |= t[k].isIdent() && t[k].text == n && !(k > 0 && t[k - 1].is("."));
+            auto earlier = names.empty() ? hoisted.end() : hoisted.find(names.front());
+            bool reuse = earlier != hoisted.end() && earlier->second == depth;
+            if (!usedAfter && !reuse) continue;
+            std::string declaration;
+            if (!reuse) {
+                for (const auto& n : names) declaration += (declaration.empty() ? t[typeToken].text + " " : ", ") + n;
+                declaration += "; ";
+                for (const auto& n : names) hoisted[n] = depth;
+            }
+            edits.push_back({t[i].offset, t[i].offset, declaration});
+            edits.push_back({t[typeToken].offset, t[typeToken].end, std::string(t[typeToken].text.size(), ' ')});
+        }
+    }
+}
+
 }  // namespace
 
 std::string RewrittenEffect::hlslForGeometryShader(const std::string& entry, const std::vector<TextEdit>& extra) const {
@@ -408,6 +470,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (size_t i = 0; i + 1 < tokens.size(); ++i)
         if (tokens[i].text == "const" && tokens[i + 1].text == "static") edits.push_back({tokens[i].offset, tokens[i + 1].end, "static const"});
     copyAssignedUniforms(syntax, edits);
+    hoistLoopVariablesUsedAfterTheLoop(syntax, edits);
     for (auto& e : lowerMatrixSwizzles(tokens)) edits.push_back(std::move(e));
     out.sourceText = &text;
     out.syntax = &syntax;
