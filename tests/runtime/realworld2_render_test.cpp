@@ -76,6 +76,18 @@ TEST_F(RealWorld2Render, LoopVariablesLiveInTheEnclosingScope) {
     expectEvery(draw(effect, 2, 2), {5, 2, 3, 0}, "loop variables");
 }
 
+// `float4(a, b, c) = v` assigns a = v.xy, b = v.z, c = v.w.
+TEST_F(RealWorld2Render, ConstructorTargetsAssignTheirParts) {
+    Effect effect(device, fixture("declarations/ConstructorAssignment.fx"), noCache());
+    effect.Parameters["Packed"].SetValue(Vector4(10, 20, 30, 40));
+    effect.Parameters["Input"].SetValue(Vector4(0.1f, 0.2f, 0.3f, 0.4f));
+    // v = Input.wzyx * 2 = (0.8, 0.6, 0.4, 0.2); else branch: r = (a.x, a.y, c, 0).
+    expectEvery(draw(effect, 2, 2), {0.8 + 0.8, 0.6 + 0.6, 0.4 + 0.2, 0.2}, "else branch");
+    effect.Parameters["Input"].SetValue(Vector4(3, 0.2f, 0.3f, 0.4f));
+    // v = (0.8, 0.6, 0.4, 6); r = Packed.
+    expectEvery(draw(effect, 2, 2), {0.8 + 10, 0.6 + 20, 0.4 + 30, 6 + 40}, "if branch");
+}
+
 // MonoGame's template: overloads picked by their uniforms, a uniform left to the application.
 TEST_F(RealWorld2Render, UniformEntryParametersWithoutValuesAreParameters) {
     Effect effect(device, fixture("monogame/PlatformTemplate.fx"), noCache());

@@ -132,6 +132,11 @@ TEST(Declarations, LoopVariablesUsedAfterTheirLoopCompile) {
     EXPECT_FALSE(pixelShader(e).glsl.empty());  // values: runtime.RealWorld2Render.LoopVariablesLiveInTheEnclosingScope
 }
 
+TEST(Declarations, ConstructorAsAssignmentTargetCompiles) {
+    CompiledEffect e = compileFixture("declarations/ConstructorAssignment.fx");
+    EXPECT_FALSE(pixelShader(e).glsl.empty());  // values: runtime.RealWorld2Render.ConstructorTargetsAssignTheirParts
+}
+
 // ---- 5. FXAA 3.11's needs: gather on a texture in a struct, no GLSL macros ------------------------
 
 TEST(Gather, ChannelsThroughAStructAndNoGlslPredefines) {

@@ -274,6 +274,83 @@ void hoistLoopVariablesUsedAfterTheLoop(const EffectSyntax& syntax, std::vector<
     }
 }
 
+// Components of a vector type name: float3 -> 3, half -> 1; 0 for anything else.
+int vectorWidth(const std::string& type) {
+    static const std::set<std::string> scalars = {"float", "half", "int", "uint", "bool", "double", "min16float", "min10float", "min16int"};
+    if (scalars.count(type)) return 1;
+    if (type.size() < 2 || !scalars.count(type.substr(0, type.size() - 1))) return 0;
+    char n = type.back();
+    return n >= '1' && n <= '4' ? n - '0' : 0;
+}
+
+// Components an l-value argument of `float4(a.xy, b) = v` stands for: a swizzle's length, or the
+// width of a variable declared before it (parameter, local or global); 0 when unknown.
+int lvalueWidth(const EffectSyntax& syntax, const FxFunction& f, size_t begin, size_t end) {
+    const auto& t = syntax.tokens;
+    if (end >= begin + 3 && t[end - 2].is(".") && t[end - 1].isIdent()) {
+        const std::string& sw = t[end - 1].text;
+        bool swizzle = sw.size() <= 4 && (sw.find_first_not_of("xyzw") == std::string::npos || sw.find_first_not_of("rgba") == std::string::npos);
+        return swizzle ? int(sw.size()) : 0;
+    }
+    if (end != begin + 1 || !t[begin].isIdent()) return 0;
+    const std::string& name = t[begin].text;
+    for (size_t i = begin; i-- > f.body.begin;)
+        if (t[i].isIdent() && t[i].text == name && i > f.body.begin && t[i - 1].isIdent()) return vectorWidth(syntax.resolveType(t[i - 1].text));
+    for (const auto& p : f.parameters)
+        if (p.name == name) return vectorWidth(syntax.resolveType(p.type));
+    for (const auto& g : syntax.globals)
+        if (g.name == name && g.arrayDims.empty()) return vectorWidth(syntax.resolveType(g.type));
+    return 0;
+}
+
+// `float4(a.xy, b.zw) = ddx(p);` (a constructor as the target, which fxc takes) assigns the parts:
+// `{ float4 fxport_parts0 = ddx(p); a.xy = fxport_parts0.xy; b.zw = fxport_parts0.zw; }`.
+void splitConstructorAssignments(const std::string& text, const EffectSyntax& syntax, std::vector<TextEdit>& edits) {
+    const auto& t = syntax.tokens;
+    int serial = 0;
+    for (const auto& f : syntax.functions)
+        for (size_t i = f.body.begin; i + 3 < f.body.end; ++i) {
+            const Token& prev = t[i - 1];
+            int width = t[i].isIdent() ? vectorWidth(syntax.resolveType(t[i].text)) : 0;
+            if (width < 2 || !t[i + 1].is("(") || !(prev.is(";") || prev.is("{") || prev.is("}") || prev.is(")") || prev.is("else"))) continue;
+            size_t close = i + 1;
+            for (int d = 0; close < f.body.end; ++close) {
+                if (t[close].is("(")) ++d;
+                if (t[close].is(")") && --d == 0) break;
+            }
+            if (close + 1 >= f.body.end || !t[close + 1].is("=")) continue;
+            size_t semicolon = close + 1;
+            for (int d = 0; semicolon < f.body.end && !(d == 0 && t[semicolon].is(";")); ++semicolon) {
+                if (t[semicolon].is("(") || t[semicolon].is("[") || t[semicolon].is("{")) ++d;
+                if (t[semicolon].is(")") || t[semicolon].is("]") || t[semicolon].is("}")) --d;
+            }
+            if (semicolon >= f.body.end) continue;
+            const std::string parts = "fxport_parts" + std::to_string(serial);
+            std::string assigns;
+            int used = 0;
+            for (size_t a = i + 2; a <= close && used >= 0;) {
+                size_t b = a;
+                for (int d = 0; b < close && !(d == 0 && t[b].is(",")); ++b) {
+                    if (t[b].is("(") || t[b].is("[")) ++d;
+                    if (t[b].is(")") || t[b].is("]")) --d;
+                }
+                int w = b > a ? lvalueWidth(syntax, f, a, b) : 0;
+                if (w == 0 || used + w > width) {
+                    used = -1;
+                    break;
+                }
+                assigns += " " + text.substr(t[a].offset, t[b - 1].end - t[a].offset) + " = " + parts + "." + std::string("xyzw").substr(size_t(used), size_t(w)) + ";";
+                used += w;
+                a = b + 1;
+            }
+            if (used != width) continue;
+            ++serial;
+            edits.push_back({t[i].offset, t[close + 1].end, "{ " + t[i].text + " " + parts + " ="});
+            edits.push_back({t[semicolon].end, t[semicolon].end, assigns + " }"});
+            i = semicolon;
+        }
+}
+
 }  // namespace
 
 std::string RewrittenEffect::hlslForGeometryShader(const std::string& entry, const std::vector<TextEdit>& extra) const {
@@ -471,6 +548,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
         if (tokens[i].text == "const" && tokens[i + 1].text == "static") edits.push_back({tokens[i].offset, tokens[i + 1].end, "static const"});
     copyAssignedUniforms(syntax, edits);
     hoistLoopVariablesUsedAfterTheLoop(syntax, edits);
+    splitConstructorAssignments(text, syntax, edits);
     for (auto& e : lowerMatrixSwizzles(tokens)) edits.push_back(std::move(e));
     out.sourceText = &text;
     out.syntax = &syntax;
