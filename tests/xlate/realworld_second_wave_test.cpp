@@ -165,6 +165,7 @@ TEST(MonoGameDialect, RedefinedShaderModelUndeclaredTextureAndUniformsWithoutVal
     // `Texture = <SpriteTexture>` with no declaration: the parameter MonoGame makes.
     EXPECT_EQ(param(e, "SpriteTexture").type, ParameterType::Texture);
     EXPECT_EQ(samplerOf(pixelShader(e), "SpriteSampler").textureParameter, "SpriteTexture");
+    EXPECT_NE(e.findParameter("DepthMap"), nullptr);  // named by a SamplerState block, as MonoGame reads it
     // `PS()` is the overload without uniforms; `PS(true, 2)` fills both; `PS(true)` leaves Gain to the
     // application, as a parameter of the constant buffer read by that shader only.
     EXPECT_EQ(e.findParameter("Invert"), nullptr);

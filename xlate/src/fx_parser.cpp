@@ -211,8 +211,7 @@ private:
         for (const auto& g : syntax_.globals) declared.insert(g.name);
         for (const auto& s : syntax_.samplers) declared.insert(s.name);
         for (const auto& s : syntax_.samplers) {
-            if (s.dx10) continue;
-            for (const auto& a : s.states) {
+            for (const auto& a : s.states) {  // MonoGame reads `Texture =` in SamplerState blocks too
                 if (!iequals(a.name, "texture")) continue;
                 size_t i = a.value.begin;
                 while (i < a.value.end && (tok(i).is("<") || tok(i).is("("))) ++i;
