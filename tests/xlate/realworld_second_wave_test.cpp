@@ -283,3 +283,19 @@ TEST(LegacyEncodings, ShiftJisCommentEndingInABackslashByteContinuesNoLine) {
     EXPECT_NE(r.output.find("ShiftJisError.fx(4,"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("return Missing;"), std::string::npos) << r.output;
 }
+
+// ---- 8. what stays out, said clearly ----------------------------------------------------------------
+
+TEST(Unsupported, InterfacesAndClassesAreNamedNotMisparsed) {
+    try {
+        compileEffectFile(kDir + "declarations/DynamicLinkage.fx", noCache());
+        ADD_FAILURE() << "compiled";
+    } catch (const CompileError& e) {
+        ASSERT_EQ(e.diagnostics().size(), 1u);
+        const Diagnostic& d = e.diagnostics().front();
+        EXPECT_EQ(d.id, std::string(diag::kUnsupported));
+        EXPECT_EQ(d.location.line, 3);
+        EXPECT_NE(d.message.find("interfaces"), std::string::npos) << d.message;
+        EXPECT_NE(d.message.find("not supported"), std::string::npos) << d.message;
+    }
+}

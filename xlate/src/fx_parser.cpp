@@ -503,6 +503,11 @@ private:
                  pos_);
         if (t.isIdent() && isTechniqueKeyword(t.text)) return parseTechnique();
         if (t.isIdent() && t.text == "fxgroup") return parseGroup();
+        if ((t.is("interface") || t.is("class")) && peek().isIdent())
+            fail(diag::kUnsupported, std::string("HLSL ") + (t.is("class") ? "classes" : "interfaces") + " (dynamic shader linkage: '" + t.text + " " + peek().text +
+                                         "') are not supported: fxport compiles each shader with its calls resolved; write the "
+                                         "implementation the shader uses as plain functions",
+                 pos_);
         if (t.is("struct")) return parseStruct();
         if (t.is("cbuffer") || t.is("tbuffer")) return parseCbuffer();
         if (t.is("shared") && (peek().is("cbuffer") || peek().is("tbuffer"))) {  // D3D10 effect pools: meaningless here
