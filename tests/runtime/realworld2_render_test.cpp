@@ -72,8 +72,9 @@ TEST_F(RealWorld2Render, AssignedUniformsAreTheShadersOwnCopy) {
 TEST_F(RealWorld2Render, LoopVariablesLiveInTheEnclosingScope) {
     Effect effect(device, fixture("declarations/LoopVariableScope.fx"), noCache());
     // s = (0,1,2,3); best = 3; then s[0] += s[3], s[1] += s[2] leaves k = 2, j = 1; the last loop
-    // declares i again (the same i) and adds 1 twice: best = 5, i = 2.
-    expectEvery(draw(effect, 2, 2), {5, 2, 3, 0}, "loop variables");
+    // declares i again (the same i) and adds 1 twice: best = 5, i = 2. Sum(s = (3, 3, 2, 3), true):
+    // 2 * 11, plus n = 4 after its loop.
+    expectEvery(draw(effect, 2, 2), {5, 2, 3, 26}, "loop variables");
 }
 
 // `float4(a, b, c) = v` assigns a = v.xy, b = v.z, c = v.w.

@@ -234,12 +234,13 @@ size_t statementEnd(const std::vector<Token>& t, size_t i, size_t end) {
 // assigns it instead.
 void hoistLoopVariablesUsedAfterTheLoop(const EffectSyntax& syntax, std::vector<TextEdit>& edits) {
     const auto& t = syntax.tokens;
+    static const std::set<std::string> statementWords = {"return", "else", "do", "case", "goto"};
     for (const auto& f : syntax.functions) {
-        std::map<std::string, int> hoisted;  // name -> brace depth of its hoisted declaration
-        int depth = 0;
+        std::map<std::string, size_t> hoisted;  // name -> the '{' of the block its declaration moved into
+        std::vector<size_t> blocks = {f.body.begin};  // open blocks, innermost last (the body: its first token)
         for (size_t i = f.body.begin; i < f.body.end; ++i) {
-            if (t[i].is("{")) ++depth;
-            if (t[i].is("}")) --depth;
+            if (t[i].is("{")) blocks.push_back(i);
+            if (t[i].is("}") && blocks.size() > 1) blocks.pop_back();
             if (!(t[i].is("for") && i + 3 < f.body.end && t[i + 1].is("(") && t[i + 2].isIdent() && t[i + 3].isIdent())) continue;
             // Names declared in the header: after the type, and after each ',' at depth 1.
             size_t typeToken = i + 2, initEnd = i + 2;
@@ -256,17 +257,22 @@ void hoistLoopVariablesUsedAfterTheLoop(const EffectSyntax& syntax, std::vector<
                 if (t[headerClose].is(")")) --d;
             }
             size_t loopEnd = statementEnd(t, headerClose, f.body.end);
+            // Used (not declared again) after the loop, before the enclosing block closes.
             bool usedAfter = false;
-            for (size_t k = loopEnd; k < f.body.end && !usedAfter; ++k)
-                for (const auto& n : names) usedAfter |= t[k].isIdent() && t[k].text == n && !(k > 0 && t[k - 1].is("."));
+            for (size_t k = loopEnd, d = 0; k < f.body.end && !usedAfter; ++k) {
+                if (t[k].is("{")) ++d;
+                if (t[k].is("}") && d-- == 0) break;
+                bool declared = t[k - 1].isIdent() && !statementWords.count(t[k - 1].text);
+                for (const auto& n : names) usedAfter |= t[k].isIdent() && t[k].text == n && !t[k - 1].is(".") && !declared;
+            }
             auto earlier = names.empty() ? hoisted.end() : hoisted.find(names.front());
-            bool reuse = earlier != hoisted.end() && earlier->second == depth;
+            bool reuse = earlier != hoisted.end() && earlier->second == blocks.back();
             if (!usedAfter && !reuse) continue;
             std::string declaration;
             if (!reuse) {
                 for (const auto& n : names) declaration += (declaration.empty() ? t[typeToken].text + " " : ", ") + n;
                 declaration += "; ";
-                for (const auto& n : names) hoisted[n] = depth;
+                for (const auto& n : names) hoisted[n] = blocks.back();
             }
             edits.push_back({t[i].offset, t[i].offset, declaration});
             edits.push_back({t[typeToken].offset, t[typeToken].end, std::string(t[typeToken].text.size(), ' ')});
