@@ -300,8 +300,15 @@ int lvalueWidth(const EffectSyntax& syntax, const FxFunction& f, size_t begin, s
     }
     if (end != begin + 1 || !t[begin].isIdent()) return 0;
     const std::string& name = t[begin].text;
-    for (size_t i = begin; i-- > f.body.begin;)
-        if (t[i].isIdent() && t[i].text == name && i > f.body.begin && t[i - 1].isIdent()) return vectorWidth(syntax.resolveType(t[i - 1].text));
+    // A local declared before: `float2 a;` or a later declarator of `float2 a, b;` (the type is
+    // the statement's first word past storage modifiers).
+    for (size_t i = begin; i-- > f.body.begin + 1;) {
+        if (!t[i].isIdent() || t[i].text != name || !(t[i - 1].isIdent() || t[i - 1].is(","))) continue;
+        size_t s = i;
+        while (s > f.body.begin && !t[s - 1].is(";") && !t[s - 1].is("{") && !t[s - 1].is("}")) --s;
+        while (s < i && (t[s].is("const") || t[s].is("static") || t[s].is("uniform"))) ++s;
+        if (s < i && t[s].isIdent()) return vectorWidth(syntax.resolveType(t[s].text));
+    }
     for (const auto& p : f.parameters)
         if (p.name == name) return vectorWidth(syntax.resolveType(p.type));
     for (const auto& g : syntax.globals)
