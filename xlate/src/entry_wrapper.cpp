@@ -139,6 +139,12 @@ std::string interpolationPrefix(const Leaf& leaf) {
     return out;
 }
 
+bool hasGlobal(const EffectSyntax& syntax, const std::string& name) {
+    for (const auto& g : syntax.globals)
+        if (g.name == name) return true;
+    return false;
+}
+
 bool has(const std::vector<std::string>& v, const char* s) {
     for (const auto& x : v)
         if (x == s) return true;
@@ -169,7 +175,12 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
                                        ? p.type + "(" + literalArgs[nextLiteral++] + ")"
                                        : literalArgs[nextLiteral++]);
             else if (!p.defaultValue.empty()) callArgs.push_back(syntax.text(p.defaultValue));
-            else callArgs.push_back(p.name);  // an effect parameter of that name (fx_parser declares it), as fxc does
+            else if (hasGlobal(syntax, p.name)) callArgs.push_back(p.name);  // the effect parameter fx_parser declared, as fxc makes one
+            else {
+                w.error = "uniform parameter '" + p.name + "' of '" + entry.name + "' gets no value: give it in the compile statement, e.g. compile " +
+                          profile.name + " " + entry.name + "(value)";
+                return w;
+            }
             continue;
         }
         std::string local = "a" + std::to_string(i);

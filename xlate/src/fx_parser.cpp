@@ -246,6 +246,7 @@ private:
             for (const auto& p : f->parameters) {
                 if (std::find(p.modifiers.begin(), p.modifiers.end(), "uniform") == p.modifiers.end()) continue;
                 if (k++ < literals || !p.defaultValue.empty() || p.name.empty() || !declared.insert(p.name).second) continue;
+                if (isDx9SamplerType(p.type) || isDx10SamplerType(p.type) || isDx9TextureType(p.type) || isDx10TextureType(p.type)) continue;
                 FxGlobal g;
                 g.name = p.name;
                 g.type = p.type;
