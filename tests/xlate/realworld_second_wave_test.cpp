@@ -299,3 +299,19 @@ TEST(Unsupported, InterfacesAndClassesAreNamedNotMisparsed) {
         EXPECT_NE(d.message.find("not supported"), std::string::npos) << d.message;
     }
 }
+
+TEST(Unsupported, AnEntryParameterOfAnUndeclaredTypeIsSaidToBeUndeclared) {
+    // Effect fragments meant to follow a header their engine prepends.
+    const std::string src = "float Progress;\n"
+                            "float4 PS_Fade(VertexShaderOutput input) : COLOR { return Progress; }\n"
+                            "technique Fade { pass P { PixelShader = compile ps_2_0 PS_Fade(); } }\n";
+    try {
+        compileEffectSource(src, "virtual/Fragment.fx", noCache());
+        ADD_FAILURE() << "compiled";
+    } catch (const CompileError& e) {
+        const Diagnostic& d = e.diagnostics().front();
+        EXPECT_EQ(d.location.line, 2);
+        EXPECT_NE(d.message.find("'VertexShaderOutput' is not declared"), std::string::npos) << d.message;
+        EXPECT_EQ(d.message.find("a0"), std::string::npos) << d.message;  // no names of the generated wrapper
+    }
+}

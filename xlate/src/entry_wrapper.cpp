@@ -60,7 +60,15 @@ public:
         }
         BasicType b = describeBasicType(syntax_.resolveType(type));
         if (!b.ok) {
-            error = "type '" + type + "' of '" + access + "' cannot be a shader input or output";
+            // A name no declaration gives (a fragment meant to follow a header the engine prepends):
+            // said so, rather than naming the wrapper's own variables.
+            static const char* const objectPrefixes[] = {"sampler", "Sampler", "texture", "Texture", "Buffer", "RW", "Structured",
+                                                         "ByteAddress", "InputPatch", "OutputPatch", "PointStream", "LineStream",
+                                                         "TriangleStream", "string"};
+            bool object = false;
+            for (const char* prefix : objectPrefixes) object |= type.rfind(prefix, 0) == 0;
+            error = object || syntax_.typedefs.count(type) ? "type '" + type + "' of '" + access + "' cannot be a shader input or output"
+                                                            : "type '" + type + "' is not declared: no struct or typedef of that name";
             return false;
         }
         if (semantic.empty()) {
