@@ -89,6 +89,26 @@ TEST_F(RealWorld2Render, ConstructorTargetsAssignTheirParts) {
     expectEvery(draw(effect, 2, 2), {0.8 + 10, 0.6 + 20, 0.4 + 30, 6 + 40}, "if branch");
 }
 
+// One sampler, a cube texture for one technique and a 2D texture for the other.
+TEST_F(RealWorld2Render, ASamplerTakesTheDimensionEachShaderGivesIt) {
+    Effect effect(device, fixture("declarations/SamplerTwoDimensions.fx"), noCache());
+    TextureCube cube(device, 1, false, SurfaceFormat::Color);
+    const std::array<Color, 6> faces = {Color(255, 0, 0, 255), Color(0, 255, 0, 255), Color(0, 0, 255, 255),
+                                        Color(255, 255, 0, 255), Color(0, 255, 255, 255), Color(255, 0, 255, 255)};
+    for (int f = 0; f < 6; ++f) cube.SetData(static_cast<CubeMapFace>(f), &faces[size_t(f)], 1);
+    effect.Parameters["LightTexture"].SetValue(cube);
+    effect.Parameters["Direction"].SetValue(Vector3(0, 1, 0));  // +Y: face 2
+    effect.CurrentTechnique = effect.Techniques["Cube"];
+    expectEvery(draw(effect, 2, 2), {0, 0, 1, 1}, "cube");
+    Texture2D flat(device, 2, 2, false, SurfaceFormat::Color);
+    std::vector<Color> texels = {Color(10, 20, 30, 40), Color(50, 60, 70, 80), Color(90, 100, 110, 120), Color(130, 140, 150, 160)};
+    flat.SetData(texels);
+    effect.Parameters["LightTexture"].SetValue(flat);
+    effect.CurrentTechnique = effect.Techniques["Flat"];
+    // (0.25, 0.75): texel (0, 1), point filtered.
+    expectEvery(draw(effect, 2, 2), {90 / 255.0, 100 / 255.0, 110 / 255.0, 120 / 255.0}, "2D");
+}
+
 // MonoGame's template: overloads picked by their uniforms, a uniform left to the application.
 TEST_F(RealWorld2Render, UniformEntryParametersWithoutValuesAreParameters) {
     Effect effect(device, fixture("monogame/PlatformTemplate.fx"), noCache());

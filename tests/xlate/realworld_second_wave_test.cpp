@@ -137,6 +137,22 @@ TEST(Declarations, ConstructorAsAssignmentTargetCompiles) {
     EXPECT_FALSE(pixelShader(e).glsl.empty());  // values: runtime.RealWorld2Render.ConstructorTargetsAssignTheirParts
 }
 
+TEST(Declarations, ASamplerSampledWithTwoDimensionsByDifferentShaders) {
+    CompiledEffect e = compileFixture("declarations/SamplerTwoDimensions.fx");
+    EXPECT_EQ(param(e, "LightTexture").type, ParameterType::Texture);
+    const CompiledShader& cube = pixelShader(e, 0);
+    const CompiledShader& flat = pixelShader(e, 1);
+    ASSERT_EQ(cube.samplers.size(), 1u);
+    ASSERT_EQ(flat.samplers.size(), 1u);
+    EXPECT_EQ(cube.samplers[0].kind, TextureKind::TextureCube);
+    EXPECT_EQ(flat.samplers[0].kind, TextureKind::Texture2D);
+    EXPECT_EQ(cube.samplers[0].unit, flat.samplers[0].unit);
+    for (const auto* s : {&cube.samplers[0], &flat.samplers[0]}) {
+        EXPECT_EQ(s->textureParameter, "LightTexture");
+        EXPECT_EQ(s->state.minFilter, TextureFilter::Point);
+    }
+}
+
 // ---- 5. FXAA 3.11's needs: gather on a texture in a struct, no GLSL macros ------------------------
 
 TEST(Gather, ChannelsThroughAStructAndNoGlslPredefines) {
