@@ -100,6 +100,23 @@ TEST(Declarations, ConstStaticIsAConstantForArraySizes) {
     EXPECT_EQ(e.findParameter("Radius"), nullptr);
 }
 
+TEST(Declarations, ArraySizesBelowOneAreRefusedAtTheirLine) {
+    // glslang takes them and lays the array out with a negative size; fxc says X3059.
+    const std::string src = "static const int N = -4;\n"
+                            "float Weights[N + 2];\n"
+                            "float4 PS() : COLOR0 { return Weights[0]; }\n"
+                            "technique T { pass P { PixelShader = compile ps_2_0 PS(); } }\n";
+    try {
+        compileEffectSource(src, "virtual/NegativeSize.fx", noCache());
+        ADD_FAILURE() << "compiled";
+    } catch (const CompileError& e) {
+        const Diagnostic& d = e.diagnostics().front();
+        EXPECT_EQ(d.id, std::string(diag::kArrayTooLarge));
+        EXPECT_EQ(d.location.line, 2);
+        EXPECT_NE(d.message.find("X3059"), std::string::npos) << d.message;
+    }
+}
+
 TEST(Declarations, LowercaseDx9TexturesUsedAsObjectsBecomeObjects) {
     CompiledEffect e = compileFixture("declarations/LowercaseTextureObjects.fx");
     EXPECT_EQ(param(e, "Albedo").type, ParameterType::Texture2D);

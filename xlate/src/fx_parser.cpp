@@ -616,6 +616,11 @@ private:
         while (cur().is("[")) {
             size_t after = skipGroup(pos_, "array size");
             dims.push_back(after == pos_ + 2 ? 0 : evaluateIntExpression({pos_ + 1, after - 1}));
+            // glslang takes a constant size below 1 and lays the array out with a negative size.
+            if (dims.back() < 0)
+                fail(diag::kArrayTooLarge, "array size '" + syntax_.text({pos_ + 1, after - 1}) +
+                                               "' is not a positive number; an array needs 1 to 65536 elements (fxc X3059)",
+                     pos_);
             pos_ = after;
         }
         return dims;
@@ -650,7 +655,8 @@ private:
     // expression of constants declared before. 0 (unknown) where it is not one.
     int evaluateWithConstants(TokenSpan span) const {
         auto v = evaluateConstant(syntax_, span, constants_);
-        if (!v || v->size() != 1 || !std::isfinite((*v)[0])) return 0;
+        if (!v || v->size() != 1) return 0;
+        if (!std::isfinite((*v)[0])) return -1;  // 1 / 0: no size
         return static_cast<int>(std::clamp<double>((*v)[0], INT_MIN, INT_MAX));
     }
     // Remembers a scalar `static const` / `const` global's value for the array sizes after it.

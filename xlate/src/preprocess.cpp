@@ -488,7 +488,11 @@ std::optional<PreprocessedEffect> PreprocessRun::operator()(bool cascading) cons
         }
         // Without cascading errors glslang gave up at the first one (then "missing #endif" follows).
         if (!cascading && isMacroRedefinition(diags.front())) return std::nullopt;
-        if (!onlyMacroRedefinitions(diags)) throw CompileError(std::move(diags));
+        if (!onlyMacroRedefinitions(diags)) {
+            // The real errors, without the redefinitions that are only warnings.
+            diags.erase(std::remove_if(diags.begin(), diags.end(), isMacroRedefinition), diags.end());
+            throw CompileError(std::move(diags));
+        }
         // fxc warns (X1519) and uses the later definition, which glslang has already made current
         // (MonoGame's `#define VS_SHADERMODEL vs_4_0_level_9_1` after a header's own): warnings.
         for (auto& d : diags) {
