@@ -98,7 +98,7 @@ std::vector<BrokenCase> cases() {
         {"ProfileStageMismatch", kDir + "profile_stage_mismatch.fx", diag::kBadProfile, "profile_stage_mismatch.fx", 9},
         {"AsmUntranslatedInstruction", kDir + "asm_pass.fx", diag::kUnsupported, "asm_pass.fx", 10},
         {"UnknownShaderVariable", kDir + "unknown_shader_variable.fx", diag::kUnknownShader, "unknown_shader_variable.fx", 10},
-        {"UniformParameterWithoutValue", kDir + "uniform_without_value.fx", diag::kBadEntrySignature, "uniform_without_value.fx", 4},
+        {"UniformSamplerWithoutValue", kDir + "uniform_sampler_without_value.fx", diag::kBadEntrySignature, "uniform_sampler_without_value.fx", 5},
         {"PixelShaderWithoutColor", kDir + "ps_without_color.fx", diag::kBadEntrySignature, "ps_without_color.fx", 4},
         // Preprocessor and includes.
         {"ErrorDirective", kDir + "error_directive.fx", diag::kPreprocessor, "error_directive.fx", 6},

@@ -365,7 +365,7 @@ int EffectBuilder::compileShader(const FxShaderExpr& expr, ShaderStage expected,
     if (auto it = compiled_.find(key); it != compiled_.end()) return it->second;
     compiled_[key] = -1;
 
-    const FxFunction* entry = syntax_.findFunction(expr.entry);
+    const FxFunction* entry = syntax_.findEntry(expr.entry, expr.arguments);
     if (!entry) {
         error(diag::kMissingEntry, "entry point '" + expr.entry + "' is not a function of this effect", expr.token);
         return -1;
@@ -470,7 +470,7 @@ int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile
     }
     // Where a crash inside glslang would be reported: the entry point, as fxc names the shader (an
     // asm block: where it is written).
-    const FxFunction* entryFunction = syntax_.findFunction(expr.entry);
+    const FxFunction* entryFunction = syntax_.findEntry(expr.entry, expr.arguments);
     const Token& entryToken = syntax_.tokens[entryFunction ? entryFunction->token : std::min(expr.token, syntax_.tokens.size() - 1)];
     SourceLocation entryAt = pre_.map.locate(entryToken.line, entryToken.column, entryFunction ? entryFunction->name : displayEntry);
     reportWorkerProgress("shader\t" + key.text() + "\t" + displayEntry + "\t" + profile.name + "\t" + entryAt.file + "\t" +

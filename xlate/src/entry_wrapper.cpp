@@ -60,7 +60,15 @@ public:
         }
         BasicType b = describeBasicType(syntax_.resolveType(type));
         if (!b.ok) {
-            error = "type '" + type + "' of '" + access + "' cannot be a shader input or output";
+            // A name no declaration gives (a fragment meant to follow a header the engine prepends):
+            // said so, rather than naming the wrapper's own variables.
+            static const char* const objectPrefixes[] = {"sampler", "Sampler", "texture", "Texture", "Buffer", "RW", "Structured",
+                                                         "ByteAddress", "InputPatch", "OutputPatch", "PointStream", "LineStream",
+                                                         "TriangleStream", "string"};
+            bool object = false;
+            for (const char* prefix : objectPrefixes) object |= type.rfind(prefix, 0) == 0;
+            error = object || syntax_.typedefs.count(type) ? "type '" + type + "' of '" + access + "' cannot be a shader input or output"
+                                                            : "type '" + type + "' is not declared: no struct or typedef of that name";
             return false;
         }
         if (semantic.empty()) {
@@ -139,6 +147,12 @@ std::string interpolationPrefix(const Leaf& leaf) {
     return out;
 }
 
+bool hasGlobal(const EffectSyntax& syntax, const std::string& name) {
+    for (const auto& g : syntax.globals)
+        if (g.name == name) return true;
+    return false;
+}
+
 bool has(const std::vector<std::string>& v, const char* s) {
     for (const auto& x : v)
         if (x == s) return true;
@@ -169,6 +183,7 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
                                        ? p.type + "(" + literalArgs[nextLiteral++] + ")"
                                        : literalArgs[nextLiteral++]);
             else if (!p.defaultValue.empty()) callArgs.push_back(syntax.text(p.defaultValue));
+            else if (hasGlobal(syntax, p.name)) callArgs.push_back(p.name);  // the effect parameter fx_parser declared, as fxc makes one
             else {
                 w.error = "uniform parameter '" + p.name + "' of '" + entry.name + "' gets no value: give it in the compile statement, e.g. compile " +
                           profile.name + " " + entry.name + "(value)";

@@ -5,11 +5,13 @@
 #include <algorithm>
 #include <cctype>
 #include <climits>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <map>
 #include <set>
 
+#include "constant_eval.h"
 #include "fx_syntax.h"
 #include "source_map.h"
 #include "text_util.h"
@@ -20,6 +22,35 @@ const FxFunction* EffectSyntax::findFunction(const std::string& name) const {
     for (const auto& f : functions)
         if (f.name == name) return &f;
     return nullptr;
+}
+static size_t countArguments(const std::string& arguments) {
+    if (arguments.find_first_not_of(" \t") == std::string::npos) return 0;
+    size_t n = 1;
+    int depth = 0;
+    for (char c : arguments) {
+        if (c == '(' || c == '[' || c == '{') ++depth;
+        if (c == ')' || c == ']' || c == '}') --depth;
+        if (c == ',' && depth == 0) ++n;
+    }
+    return n;
+}
+const FxFunction* EffectSyntax::findEntry(const std::string& name, const std::string& literalArguments) const {
+    const size_t given = countArguments(literalArguments);
+    const FxFunction* first = nullptr;
+    const FxFunction* takesFewer = nullptr;  // some uniforms left over: made parameters of the effect
+    for (const auto& f : functions) {
+        if (f.name != name) continue;
+        if (!first) first = &f;
+        size_t uniforms = 0, required = 0;
+        for (const auto& p : f.parameters)
+            if (std::find(p.modifiers.begin(), p.modifiers.end(), "uniform") != p.modifiers.end()) {
+                ++uniforms;
+                if (p.defaultValue.empty()) ++required;
+            }
+        if (given <= uniforms && given >= required) return &f;
+        if (given < uniforms && !takesFewer) takesFewer = &f;
+    }
+    return takesFewer ? takesFewer : first;
 }
 const FxStruct* EffectSyntax::findStruct(const std::string& name) const {
     for (const auto& s : structs)
@@ -131,15 +162,130 @@ public:
             bool usedInCode = false;
             for (const auto& f : syntax_.functions)
                 for (size_t i = f.body.begin; i < f.body.end && !usedInCode; ++i) usedInCode = tok(i).isIdent() && tok(i).text == t.name;
-            if (namedBySamplerState && !usedInCode) {
-                t.dx9Object = true;
-                blank(t.declaration.begin, t.declaration.end);
-            }
+            if (namedBySamplerState && !usedInCode) t.dx9Object = true;
         }
+        // fxc takes the DX9 spellings (texture, texture2D, textureCUBE ...) as DX10 objects too
+        // where SM4 code calls their methods: `texture2D T; ... T.Sample(s, uv)`.
+        std::set<size_t> retypedStatements;
+        for (auto& t : syntax_.textures)
+            if (t.dx9Object && usedAsObject(t.name)) {
+                t.dx9Object = false;
+                t.type = dx10TextureType(t.type);
+                retypedStatements.insert(t.declaration.begin);
+            }
+        rewriteTextureStatements(retypedStatements);
+        declareTexturesNamedOnlyBySamplers();
+        declareUniformEntryParameters();
         return std::move(syntax_);
     }
 
 private:
+    // `T.Method(` or `T` passed as an argument, inside some function body.
+    bool usedAsObject(const std::string& name) const {
+        for (const auto& f : syntax_.functions)
+            for (size_t i = f.body.begin; i < f.body.end; ++i)
+                if (tok(i).isIdent() && tok(i).text == name &&
+                    (tok(i + 1).is(".") || ((tok(i - 1).is("(") || tok(i - 1).is(",")) && (tok(i + 1).is(")") || tok(i + 1).is(",")))))
+                    return true;
+        return false;
+    }
+    static std::string dx10TextureType(const std::string& dx9) {
+        switch (textureKindOfName(dx9)) {
+        case 1: return "Texture1D";
+        case 3: return "Texture3D";
+        case 6: return "TextureCube";
+        default: return "Texture2D";
+        }
+    }
+    static int textureKindOfName(const std::string& type) {
+        std::string t = toLower(type);
+        return t.find("cube") != std::string::npos ? 6 : t.find("3d") != std::string::npos ? 3 : t.find("1d") != std::string::npos ? 1 : 2;
+    }
+    // MonoGame's effect processor makes the texture parameter of `sampler_state { Texture = <Name>; }`
+    // when the effect never declares `Name` (its templates leave the declaration out): so does fxport,
+    // as a DX9 `texture` declared where the sampler names it. A name declared as something else
+    // stays an error (effect_compiler).
+    void declareTexturesNamedOnlyBySamplers() {
+        std::set<std::string> declared;
+        for (const auto& t : syntax_.textures) declared.insert(t.name);
+        for (const auto& g : syntax_.globals) declared.insert(g.name);
+        for (const auto& s : syntax_.samplers) declared.insert(s.name);
+        for (const auto& s : syntax_.samplers) {
+            for (const auto& a : s.states) {  // MonoGame reads `Texture =` in SamplerState blocks too
+                if (!iequals(a.name, "texture")) continue;
+                size_t i = a.value.begin;
+                while (i < a.value.end && (tok(i).is("<") || tok(i).is("("))) ++i;
+                if (i >= a.value.end || !tok(i).isIdent() || declared.count(tok(i).text)) continue;
+                FxTexture t;
+                t.name = tok(i).text;
+                t.type = "texture";
+                t.dx9Object = true;
+                t.token = i;
+                syntax_.textures.push_back(std::move(t));
+                declared.insert(tok(i).text);
+            }
+        }
+    }
+    // `uniform bool hasShadow` of an entry compiled as `PS()`: fxc puts it in the shader's constant
+    // table under its own name, a parameter the application sets. So does fxport: a global of that
+    // name and type is declared at the end of the effect, and the entry wrapper passes it.
+    void declareUniformEntryParameters() {
+        std::vector<FxShaderExpr> compiles;
+        for (const auto& t : syntax_.techniques)
+            for (const auto& p : t.passes)
+                for (const auto& a : p.assignments)
+                    if (isShaderStateName(a.name)) compiles.push_back(parseShaderExpr(syntax_, a.value));
+        for (const auto& v : syntax_.shaderVariables) compiles.insert(compiles.end(), v.elements.begin(), v.elements.end());
+        std::set<std::string> declared;
+        for (const auto& g : syntax_.globals) declared.insert(g.name);
+        for (const auto& e : compiles) {
+            if (e.kind != FxShaderExpr::Kind::Compile) continue;
+            const FxFunction* f = syntax_.findEntry(e.entry, e.arguments);
+            if (!f) continue;
+            size_t literals = countArguments(e.arguments), k = 0;
+            for (const auto& p : f->parameters) {
+                if (std::find(p.modifiers.begin(), p.modifiers.end(), "uniform") == p.modifiers.end()) continue;
+                if (k++ < literals || !p.defaultValue.empty() || p.name.empty() || !declared.insert(p.name).second) continue;
+                if (isDx9SamplerType(p.type) || isDx10SamplerType(p.type) || isDx9TextureType(p.type) || isDx10TextureType(p.type)) continue;
+                FxGlobal g;
+                g.name = p.name;
+                g.type = p.type;
+                g.modifiers = {"uniform"};
+                g.arrayDims = p.arrayDims;
+                g.token = p.typeToken;
+                syntax_.globals.push_back(g);
+                std::string dims;
+                for (int d : p.arrayDims) dims += "[" + std::to_string(d) + "]";
+                syntax_.edits.push_back({text_.size(), text_.size(), " " + p.type + " " + p.name + dims + ";"});
+            }
+        }
+    }
+    static bool isShaderStateName(const std::string& name) {
+        static const char* const k[] = {"VertexShader", "PixelShader", "GeometryShader", "SetVertexShader", "SetPixelShader", "SetGeometryShader"};
+        for (const char* n : k)
+            if (iequals(name, n)) return true;
+        return false;
+    }
+    // One texture statement (`texture A, B;`) holds DX9 textures (removed) and DX10 objects (kept).
+    // A statement of DX9 ones only is blanked; one with a texture retyped or removed beside kept
+    // ones is written anew, one declaration per kept texture (units come from FxTexture).
+    void rewriteTextureStatements(const std::set<size_t>& retyped) {
+        std::map<size_t, std::vector<const FxTexture*>> statements;
+        for (const auto& t : syntax_.textures) statements[t.declaration.begin].push_back(&t);
+        for (const auto& [begin, list] : statements) {
+            TokenSpan decl = list.front()->declaration;
+            std::string kept;
+            bool removed = false;
+            for (const FxTexture* t : list) {
+                if (t->dx9Object) removed = true;
+                else kept += t->type + " " + t->name + "; ";
+            }
+            if (kept.empty()) blank(decl.begin, decl.end);
+            else if (removed || retyped.count(begin))
+                syntax_.edits.push_back({tok(decl.begin).offset, tok(decl.end - 1).end, kept});
+        }
+    }
+
     const std::string& text_;
     const SourceMap& map_;
     EffectSyntax syntax_;
@@ -358,6 +504,11 @@ private:
                  pos_);
         if (t.isIdent() && isTechniqueKeyword(t.text)) return parseTechnique();
         if (t.isIdent() && t.text == "fxgroup") return parseGroup();
+        if ((t.is("interface") || t.is("class")) && peek().isIdent())
+            fail(diag::kUnsupported, std::string("HLSL ") + (t.is("class") ? "classes" : "interfaces") + " (dynamic shader linkage: '" + t.text + " " + peek().text +
+                                         "') are not supported: fxport compiles each shader with its calls resolved; write the "
+                                         "implementation the shader uses as plain functions",
+                 pos_);
         if (t.is("struct")) return parseStruct();
         if (t.is("cbuffer") || t.is("tbuffer")) return parseCbuffer();
         if (t.is("shared") && (peek().is("cbuffer") || peek().is("tbuffer"))) {  // D3D10 effect pools: meaningless here
@@ -465,6 +616,11 @@ private:
         while (cur().is("[")) {
             size_t after = skipGroup(pos_, "array size");
             dims.push_back(after == pos_ + 2 ? 0 : evaluateIntExpression({pos_ + 1, after - 1}));
+            // glslang takes a constant size below 1 and lays the array out with a negative size.
+            if (dims.back() < 0)
+                fail(diag::kArrayTooLarge, "array size '" + syntax_.text({pos_ + 1, after - 1}) +
+                                               "' is not a positive number; an array needs 1 to 65536 elements (fxc X3059)",
+                     pos_);
             pos_ = after;
         }
         return dims;
@@ -489,11 +645,27 @@ private:
             } else if (t.text.size() == 1 && std::string("+-*/").find(t.text[0]) != std::string::npos) {
                 op = t.text[0];
             } else {
-                return 0;
+                return evaluateWithConstants(span);
             }
         }
         return static_cast<int>(value);
     }
+
+    // `float w[N + 1]` with `static const int N = 4;` earlier: fxc sizes arrays by any constant
+    // expression of constants declared before. 0 (unknown) where it is not one.
+    int evaluateWithConstants(TokenSpan span) const {
+        auto v = evaluateConstant(syntax_, span, constants_);
+        if (!v || v->size() != 1) return 0;
+        if (!std::isfinite((*v)[0])) return -1;  // 1 / 0: no size
+        return static_cast<int>(std::clamp<double>((*v)[0], INT_MIN, INT_MAX));
+    }
+    // Remembers a scalar `static const` / `const` global's value for the array sizes after it.
+    void rememberConstant(const FxGlobal& g) {
+        bool isConst = std::find(g.modifiers.begin(), g.modifiers.end(), "const") != g.modifiers.end();
+        if (!isConst || g.initializer.empty() || !g.arrayDims.empty()) return;
+        if (auto v = evaluateConstant(syntax_, g.initializer, constants_); v && v->size() == 1) constants_[g.name] = *v;
+    }
+    std::map<std::string, std::vector<double>> constants_;
 
     // A type name: identifier, optionally templated (`vector<float, 4>`, `Texture2D<float4>`).
     std::string parseTypeName() {
@@ -689,45 +861,61 @@ private:
         return {b, pos_};
     }
 
-    void parseTexture(const std::string& type, const std::string& name, size_t nameToken, size_t start, bool dx9) {
-        FxTexture tex;
-        tex.name = name;
-        tex.type = type;
-        tex.dx9Object = dx9;
-        tex.token = nameToken;
-        Tail tail = parseDeclaratorTail();
-        tex.semantic = tail.semantic;
-        tex.explicitUnit = tail.registerIndex;
-        tex.annotations = tail.annotations;
-        if (accept("=")) skipInitializer(name);
+    // `texture T0, T1;` declares several, as fxc takes it. Each records the whole statement: a
+    // statement of DX9 textures only is blanked, others are rewritten in Parser::run.
+    void parseTexture(const std::string& type, std::string name, size_t nameToken, size_t start, bool dx9) {
+        size_t first = syntax_.textures.size();
+        while (true) {
+            FxTexture tex;
+            tex.name = name;
+            tex.type = type;
+            tex.dx9Object = dx9;
+            tex.token = nameToken;
+            Tail tail = parseDeclaratorTail();
+            tex.semantic = tail.semantic;
+            tex.explicitUnit = tail.registerIndex;
+            tex.annotations = tail.annotations;
+            if (accept("=")) skipInitializer(name);
+            if (!dx9 && tail.annotationEnd > tail.annotationBegin) blank(tail.annotationBegin, tail.annotationEnd);
+            syntax_.textures.push_back(std::move(tex));
+            if (!accept(",")) break;
+            nameToken = pos_;
+            name = expectIdentifier("a texture name");
+        }
         expect(";", ("after texture '" + name + "'").c_str());
-        tex.declaration = {start, pos_};
-        if (dx9) blank(start, pos_);
-        else if (tail.annotationEnd > tail.annotationBegin) blank(tail.annotationBegin, tail.annotationEnd);
-        syntax_.textures.push_back(std::move(tex));
+        for (size_t i = first; i < syntax_.textures.size(); ++i) syntax_.textures[i].declaration = {start, pos_};
     }
 
-    void parseSampler(const std::string& type, const std::string& name, size_t nameToken, size_t start) {
-        FxSampler s;
-        s.name = name;
-        s.type = type;
-        s.dx10 = isDx10SamplerType(type);
-        s.token = nameToken;
-        Tail tail = parseDeclaratorTail();
-        if (!tail.dims.empty())
-            fail(diag::kUnsupported, "sampler arrays ('" + name + "[]') are not supported", nameToken);
-        s.explicitUnit = tail.registerIndex;
-        if (accept("=")) {
-            if (!iequals(cur().text, "sampler_state"))
-                fail(diag::kSyntax, "expected 'sampler_state' after '" + name + " =', found '" + cur().text + "'", pos_);
-            ++pos_;
-            s.states = parseStateBlock("sampler_state");
-        } else if (cur().is("{")) {
-            s.states = parseStateBlock("sampler state block");
+    // `sampler S0, S1 = sampler_state {...};`: each sampler's declaration runs from its first token
+    // (the type for the first one) to the ',' or ';' after it, so each is rewritten on its own.
+    void parseSampler(const std::string& type, std::string name, size_t nameToken, size_t start) {
+        while (true) {
+            FxSampler s;
+            s.name = name;
+            s.type = type;
+            s.dx10 = isDx10SamplerType(type);
+            s.token = nameToken;
+            Tail tail = parseDeclaratorTail();
+            if (!tail.dims.empty())
+                fail(diag::kUnsupported, "sampler arrays ('" + name + "[]') are not supported", nameToken);
+            s.explicitUnit = tail.registerIndex;
+            if (accept("=")) {
+                if (!iequals(cur().text, "sampler_state"))
+                    fail(diag::kSyntax, "expected 'sampler_state' after '" + name + " =', found '" + cur().text + "'", pos_);
+                ++pos_;
+                s.states = parseStateBlock("sampler_state");
+            } else if (cur().is("{")) {
+                s.states = parseStateBlock("sampler state block");
+            }
+            bool more = cur().is(",");
+            if (!more) expect(";", ("after sampler '" + name + "'").c_str());
+            else ++pos_;
+            s.declaration = {start, pos_};
+            syntax_.samplers.push_back(std::move(s));
+            if (!more) return;
+            start = nameToken = pos_;
+            name = expectIdentifier("a sampler name");
         }
-        expect(";", ("after sampler '" + name + "'").c_str());
-        s.declaration = {start, pos_};
-        syntax_.samplers.push_back(std::move(s));
     }
 
     void parseStateObject(const std::string& type, const std::string& name, size_t nameToken, size_t start) {
@@ -808,6 +996,7 @@ private:
             g.annotations = tail.annotations;
             if (tail.annotationEnd > tail.annotationBegin) blank(tail.annotationBegin, tail.annotationEnd);
             if (accept("=")) g.initializer = skipInitializer(name);
+            rememberConstant(g);
             syntax_.globals.push_back(std::move(g));
             if (accept(",")) {
                 nameToken = pos_;

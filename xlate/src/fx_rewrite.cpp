@@ -11,6 +11,7 @@
 #include <optional>
 #include <set>
 
+#include "fxc_statements.h"
 #include "matrix_swizzle.h"
 #include "render_states.h"
 #include "source_map.h"
@@ -179,6 +180,12 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
 
     // ---- 1. sampler dimensions ---------------------------------------------------------------
     SamplerSlots slots;
+    struct SamplerAlias {
+        std::string sampler, alias;
+        TextureKind kind;
+    };
+    std::vector<SamplerAlias> aliases;  // a global sampler sampled with a second dimension
+    std::vector<TextEdit> aliasEdits;
     for (const auto& s : syntax.samplers) {
         if (s.dx10) continue;
         out.dx9Samplers = true;
@@ -238,10 +245,19 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
             if (auto k = intrinsicKind(callee)) {
                 for (const auto& [index, name] : bareArgs)
                     if (index == 0)
-                        if (auto s = slotOfName(f, name); s && !slots.setKind(*s, *k, i))
-                            fail("sampler '" + name + "' is used as a " + std::string(dx9SamplerType(*slots.kind(*s))) +
-                                     " elsewhere but with " + callee + " here; a sampler has one dimension",
-                                 i);
+                        if (auto s = slotOfName(f, name); s && !slots.setKind(*s, *k, i)) {
+                            // fxc types a sampler per shader: a global one that functions for different
+                            // shaders sample as 2D and as a cube gets a second declaration on its unit.
+                            bool parameter = std::any_of(f.parameters.begin(), f.parameters.end(), [&](const FxParameter& p) { return p.name == name; });
+                            if (parameter || !syntax.findSampler(name))
+                                fail("sampler '" + name + "' is used as a " + std::string(dx9SamplerType(*slots.kind(*s))) +
+                                         " elsewhere but with " + callee + " here; a sampler has one dimension",
+                                     i);
+                            std::string alias = name + "_fxport_" + dx9SamplerType(*k);
+                            if (std::none_of(aliases.begin(), aliases.end(), [&](const SamplerAlias& a) { return a.alias == alias; }))
+                                aliases.push_back({name, alias, *k});
+                            aliasEdits.push_back({tokens[i + 2].offset, tokens[i + 2].end, alias});
+                        }
                 continue;
             }
             for (const auto& g : syntax.functions) {
@@ -283,6 +299,15 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
         if (iequals(s.type, "SamplerComparisonState") && !es.state.comparison) es.state.comparison = CompareFunction::Never;
         out.samplers.push_back(std::move(es));
     }
+    for (const auto& a : aliases)
+        for (size_t i = 0; i < syntax.samplers.size(); ++i)
+            if (syntax.samplers[i].name == a.sampler) {
+                EffectSampler es = out.samplers[i];  // same unit, texture and states
+                es.name = a.alias;
+                es.kind = a.kind;
+                out.samplers.push_back(std::move(es));
+                break;
+            }
     std::set<int> usedTextureUnits;
     for (const auto& t : syntax.textures)
         if (!t.dx9Object && t.explicitUnit >= 0) {
@@ -311,6 +336,8 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
         auto [b, e] = spanBytes(s.declaration);
         std::string decl = s.dx10 ? s.type + " " + s.name + ";"
                                   : std::string(dx9SamplerType(es.kind)) + " " + s.name + " : register(s" + std::to_string(es.unit) + ");";
+        for (const auto& a : aliases)
+            if (a.sampler == s.name) decl += std::string(" ") + dx9SamplerType(a.kind) + " " + a.alias + " : register(s" + std::to_string(es.unit) + ");";
         edits.push_back({b, e, decl});
     }
     for (const auto& f : syntax.functions)
@@ -329,6 +356,14 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
             (t.text == "half" || t.text == "min16float" || t.text == "min10float"))
             edits.push_back({t.offset, t.end, "float"});
     }
+    // `const static int N = 4;` is a constant to fxc as `static const` is; glslang keeps the last
+    // storage word only, so N would be a plain static and `float w[N + 1]` no constant size.
+    for (size_t i = 0; i + 1 < tokens.size(); ++i)
+        if (tokens[i].text == "const" && tokens[i + 1].text == "static") edits.push_back({tokens[i].offset, tokens[i + 1].end, "static const"});
+    edits.insert(edits.end(), aliasEdits.begin(), aliasEdits.end());
+    copyAssignedUniforms(syntax, edits);
+    hoistLoopVariablesUsedAfterTheLoop(syntax, edits);
+    splitConstructorAssignments(text, syntax, edits);
     for (auto& e : lowerMatrixSwizzles(tokens)) edits.push_back(std::move(e));
     for (auto& e : regroupFlatInitializers(syntax)) edits.push_back(std::move(e));
     for (auto& e : respellOneComponentVectors(syntax)) edits.push_back(std::move(e));

@@ -167,6 +167,10 @@ struct EffectSyntax {
     std::map<std::string, std::string> typedefs;  // `typedef vector<half, 3> vec3;`: vec3 -> vector<half,3>
 
     const FxFunction* findFunction(const std::string& name) const;
+    // The overload of `name` that `compile ps_2_0 name(literalArguments)` means: the one whose
+    // `uniform` parameters take that many literals (fewer where the rest have defaults or get none);
+    // else the first of that name.
+    const FxFunction* findEntry(const std::string& name, const std::string& literalArguments) const;
     const FxStruct* findStruct(const std::string& name) const;
     const FxSampler* findSampler(const std::string& name) const;
     const FxTexture* findTexture(const std::string& name) const;

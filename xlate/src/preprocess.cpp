@@ -11,6 +11,7 @@
 #include <set>
 
 #include "d3d9_asm.h"
+#include "glslang_predefines.h"
 #include "glslang_process.h"
 #include "text_encoding.h"
 #include "input_limits.h"
@@ -120,8 +121,10 @@ void prepareSourceText(std::string& text, const std::string& displayPath, std::v
 
 namespace {
 
-// Finds `relative` under `dir`, exactly or else component by component ignoring case.
-std::optional<fs::path> findCaseInsensitive(const fs::path& dir, const fs::path& relative) {
+// Finds `relative` under `dir`, exactly or else component by component ignoring case. Where a
+// component matches several entries that differ only in case (and none exactly), which one Windows
+// would open is unknown: they are listed in `ambiguous` and nothing is found.
+std::optional<fs::path> findCaseInsensitive(const fs::path& dir, const fs::path& relative, std::vector<fs::path>& ambiguous) {
     fs::path exact = dir / relative;
     std::error_code ec;
     if (fs::is_regular_file(exact, ec)) return exact;
@@ -134,20 +137,37 @@ std::optional<fs::path> findCaseInsensitive(const fs::path& dir, const fs::path&
         }
         fs::path next = cur / part;
         if (!fs::exists(next, ec)) {
-            bool found = false;
-            for (const auto& entry : fs::directory_iterator(cur, ec)) {
-                if (iequals(entry.path().filename().string(), part.string())) {
-                    next = entry.path();
-                    found = true;
-                    break;
-                }
+            std::vector<fs::path> matches;
+            for (const auto& entry : fs::directory_iterator(cur, ec))
+                if (iequals(entry.path().filename().string(), part.string())) matches.push_back(entry.path());
+            if (matches.empty()) return std::nullopt;
+            if (matches.size() > 1) {
+                std::sort(matches.begin(), matches.end());
+                ambiguous = std::move(matches);
+                return std::nullopt;
             }
-            if (!found) return std::nullopt;
+            next = matches.front();
         }
         cur = next;
     }
     if (fs::is_regular_file(cur, ec)) return cur;
     return std::nullopt;
+}
+
+// The first directive of a header, past comments and blank lines: `#pragma once`, or `#ifndef G`
+// followed by `#define G` (`#if !defined(G)` too). Including such a file again while it is open
+// yields nothing, so a guarded pair of headers that include each other is no cycle.
+bool hasIncludeGuard(const std::string& text) {
+    static const std::regex guard(R"(^(?:\s|//[^\n]*\n|/\*[\s\S]*?\*/)*#[ \t]*(?:pragma[ \t]+once\b|(?:ifndef[ \t]+(\w+)|if[ \t]+!\s*defined\s*\(?\s*(\w+)\s*\)?)[^\n]*\n(?:\s|//[^\n]*\n|/\*[\s\S]*?\*/)*#[ \t]*define[ \t]+(\w+)))");
+    std::smatch m;
+    if (!std::regex_search(text, m, guard)) return false;
+    if (!m[3].matched) return true;  // #pragma once
+    return m[3].str() == (m[1].matched ? m[1].str() : m[2].str());
+}
+
+bool hasPragmaOnce(const std::string& text) {
+    static const std::regex once(R"((^|\n)[ \t]*#[ \t]*pragma[ \t]+once\b)");
+    return std::regex_search(text, once);
 }
 
 bool isUnder(const fs::path& file, const fs::path& root) {
@@ -193,6 +213,7 @@ public:
     std::vector<std::pair<std::string, std::string>> loaded;  // (display, text)
     std::vector<IncludeDependency> dependencies;
     std::vector<Diagnostic> warnings;
+    void markIncludedOnce(const fs::path& canonical) { onceIncluded_.insert(canonical); }  // the root's #pragma once
 
 private:
     IncludeResult* resolve(const char* headerC, const char* includerC, size_t depth) {
@@ -224,6 +245,13 @@ private:
         for (size_t d = chain_.size(); d-- > 0;)
             if (!chain_[d].first.empty()) addDir(chain_[d].first.parent_path(), fs::path(chain_[d].second).parent_path().string());
         for (const auto& r : roots_) addDir(r.absolute, r.display);
+        // Games name includes from their working folder (`"Content/Shaders/Common/Fog.fxh"`), which
+        // fxc resolves against the current directory: the folders from the effect's up to the
+        // include root stand in for it, nearest first.
+        if (extraAllowed_ && !roots_.empty())
+            for (fs::path dir = roots_.front().absolute.parent_path(), display = fs::path(roots_.front().display).parent_path();
+                 isUnder(dir, extraAllowed_->absolute) && dir.has_relative_path(); dir = dir.parent_path(), display = display.parent_path())
+                addDir(dir, display.string());
 
         std::optional<fs::path> found;
         fs::path canonical;
@@ -231,6 +259,7 @@ private:
         bool foundOutside = false;
         std::string outsidePath;  // the first candidate that exists but lies outside every root
         std::vector<std::string> looked;  // exact paths searched before the hit (they did not exist)
+        std::vector<fs::path> ambiguous;  // files differing only in case, all matching the name
         // Windows paths (`#include <..\Helpers\Gamma.fxh>`, as fxc and Visual Studio take them).
         std::string lookup = header;
         std::replace(lookup.begin(), lookup.end(), '\\', '/');
@@ -238,7 +267,8 @@ private:
             if (fs::path(lookup).is_absolute()) {
                 if (fs::is_regular_file(lookup, ec)) found = fs::path(lookup);
             } else {
-                found = findCaseInsensitive(dir, lookup);
+                found = findCaseInsensitive(dir, lookup, ambiguous);
+                if (!ambiguous.empty()) break;
                 if (!found) looked.push_back((dir / lookup).lexically_normal().string());
             }
             if (!found) continue;
@@ -257,6 +287,13 @@ private:
             display = (fs::path(displayDir) / (ec ? fs::path(lookup) : rel)).lexically_normal().string();
             break;
         }
+        if (!ambiguous.empty()) {
+            std::string list;
+            for (const auto& a : ambiguous) list += (list.empty() ? "'" : ", '") + a.lexically_normal().string() + "'";
+            failures[header] = {diag::kIncludeNotFound, "include file '" + header + "' matches several files that differ only in case: " + list +
+                                                            "; Windows would open one of them, fxport cannot tell which: name it exactly"};
+            return nullptr;
+        }
         if (!found && foundOutside) {
             std::string root = extraAllowed_ ? "the include root '" + extraAllowed_->display + "'" : std::string("the effect's folder");
             failures[header] = {diag::kIncludeOutside, "include file '" + header + "' resolves to '" + outsidePath + "', outside " + root +
@@ -271,8 +308,11 @@ private:
         }
         // The chain's paths are canonical already (displayToAbsolute_ holds only canonical ones):
         // comparing them costs no file-system call, so a long include chain stays linear.
+        // `#pragma once` seen before, or a guarded header that is open right now: nothing to add.
+        if (onceIncluded_.count(canonical)) return emptyInclude(display, canonical);
         for (const auto& p : chain_)
             if (!p.first.empty() && p.first == canonical) {
+                if (auto open = readFile(canonical.string()); open && hasIncludeGuard(sourceTextAsUtf8(*open))) return emptyInclude(display, canonical);
                 failures[header] = {diag::kIncludeCycle, "include cycle: '" + header + "' includes itself (directly or through other files)"};
                 return nullptr;
             }
@@ -301,17 +341,50 @@ private:
         for (auto& path : looked) dependencies.push_back({std::move(path), {}});
         dependencies.push_back({canonical.string(), contentHash(*text)});  // the raw bytes, as the cache re-reads them
         *text = sourceTextAsUtf8(*text);
+        if (hasPragmaOnce(*text)) onceIncluded_.insert(canonical);
         prepareSourceText(*text, display, warnings);
         loaded.push_back({display, *text});
         auto* owned = new std::string(blankAsmLineComments(*text));
         return new IncludeResult(display, owned->data(), owned->size(), owned);
     }
 
+    IncludeResult* emptyInclude(const std::string& display, const fs::path& canonical) {
+        displayToAbsolute_[display] = canonical;
+        auto* owned = new std::string();
+        return new IncludeResult(display, owned->data(), 0, owned);
+    }
+
     std::vector<Root> roots_;
     std::optional<Root> extraAllowed_;
+    std::set<fs::path> onceIncluded_;  // files with `#pragma once` already read
     std::map<std::string, fs::path> displayToAbsolute_;
     std::vector<std::pair<fs::path, std::string>> chain_;  // open files: (absolute, display)
     size_t includesFollowed_ = 0;
+};
+
+// glslang's "'#define' : Macro redefined; different substitutions: NAME" (and its two siblings).
+bool isMacroRedefinition(const Diagnostic& d) { return d.message.find("Macro redefined") != std::string::npos; }
+bool onlyMacroRedefinitions(const std::vector<Diagnostic>& diags) {
+    return std::all_of(diags.begin(), diags.end(), isMacroRedefinition);
+}
+
+std::string lastWordOf(const std::string& message) {
+    std::string_view t = trim(message);
+    size_t space = t.find_last_of(" :");
+    return std::string(space == std::string_view::npos ? t : t.substr(space + 1));
+}
+
+// One run of glslang's preprocessor over the prepared root text (see preprocessEffect).
+struct PreprocessRun {
+    const std::string& source;
+    const std::string& displayPath;
+    const fs::path& rootAbs;
+    const std::vector<RestrictedIncluder::Root>& roots;
+    const std::optional<RestrictedIncluder::Root>& includeRoot;
+    const CompileOptions& options;
+    const std::vector<Diagnostic>& lineWarnings;
+    // nullopt: the only errors were macro redefinitions and `cascading` was off (run again with it).
+    std::optional<PreprocessedEffect> operator()(bool cascading) const;
 };
 
 }  // namespace
@@ -334,9 +407,18 @@ PreprocessedEffect preprocessEffect(const std::string& rawSource, const std::str
 
     std::optional<RestrictedIncluder::Root> includeRoot;
     if (!options.includeRoot.empty()) includeRoot = RestrictedIncluder::Root{fs::weakly_canonical(fs::absolute(options.includeRoot, ec), ec), options.includeRoot};
+    // glslang stops at its first error; a macro redefinition (a warning to fxc) is seen again with
+    // cascading errors on, so that everything after it is preprocessed.
+    PreprocessRun run{source, displayPath, rootAbs, roots, includeRoot, options, lineWarnings};
+    if (auto result = run(false)) return std::move(*result);
+    return std::move(*run(true));
+}
+
+std::optional<PreprocessedEffect> PreprocessRun::operator()(bool cascading) const {
     RestrictedIncluder includer(roots, includeRoot, displayPath, rootAbs);
     includer.totalBytes = source.size();
-    std::string preamble = "#define FXPORT 1\n";
+    if (hasPragmaOnce(source)) includer.markIncludedOnce(rootAbs);
+    std::string preamble = undefineGlslangPredefines() + "#define FXPORT 1\n";
     for (const auto& [name, value] : options.defines) preamble += "#define " + name + " " + value + "\n";
 
     glslang::TShader shader(EShLangFragment);
@@ -348,14 +430,14 @@ PreprocessedEffect preprocessEffect(const std::string& rawSource, const std::str
     shader.setEnvInput(glslang::EShSourceHlsl, EShLangFragment, glslang::EShClientOpenGL, 100);
     shader.setPreamble(preamble.c_str());
     std::string output;
-    auto messages = static_cast<EShMessages>(EShMsgReadHlsl | EShMsgOnlyPreprocessor);
+    auto messages = static_cast<EShMessages>(EShMsgReadHlsl | EShMsgOnlyPreprocessor | (cascading ? int(EShMsgCascadingErrors) : 0));
     bool ok = shader.preprocess(GetDefaultResources(), 100, ENoProfile, false, false, messages, &output, includer);
 
     PreprocessedEffect result;
     result.map.addFileText(displayPath, source);
     for (const auto& [file, content] : includer.loaded) result.map.addFileText(file, content);
     result.dependencies = std::move(includer.dependencies);
-    result.warnings = std::move(lineWarnings);
+    result.warnings = lineWarnings;
     result.warnings.insert(result.warnings.end(), includer.warnings.begin(), includer.warnings.end());
     if (!ok && includer.limitProblem) throw CompileError({*includer.limitProblem});
     if (!ok) {
@@ -404,7 +486,20 @@ PreprocessedEffect preprocessEffect(const std::string& rawSource, const std::str
             d.location = {displayPath, 1, 1};  // glslang named no line: the file as a whole
             diags.push_back(d);
         }
-        throw CompileError(std::move(diags));
+        // Without cascading errors glslang gave up at the first one (then "missing #endif" follows).
+        if (!cascading && isMacroRedefinition(diags.front())) return std::nullopt;
+        if (!onlyMacroRedefinitions(diags)) {
+            // The real errors, without the redefinitions that are only warnings.
+            diags.erase(std::remove_if(diags.begin(), diags.end(), isMacroRedefinition), diags.end());
+            throw CompileError(std::move(diags));
+        }
+        // fxc warns (X1519) and uses the later definition, which glslang has already made current
+        // (MonoGame's `#define VS_SHADERMODEL vs_4_0_level_9_1` after a header's own): warnings.
+        for (auto& d : diags) {
+            d.severity = Severity::Warning;
+            d.message = "macro '" + lastWordOf(d.message) + "' redefined; the later definition is used, as fxc does (X1519)";
+            result.warnings.push_back(std::move(d));
+        }
     }
     if (output.size() > limits::kMaxPreprocessedBytes) {
         Diagnostic d;

@@ -50,6 +50,37 @@ std::string utf16ToUtf8(std::string_view bytes, bool bigEndian) {
     return out;
 }
 
+// Whether text[end - 1] ends a well-formed UTF-8 sequence.
+bool endsUtf8Sequence(const std::string& text, size_t end) {
+    for (size_t len = 1; len <= 4 && len <= end; ++len) {
+        auto lead = static_cast<unsigned char>(text[end - len]);
+        if ((lead & 0xC0) == 0x80) continue;  // a continuation byte: look further back
+        size_t want = lead < 0x80 ? 1 : (lead & 0xE0) == 0xC0 ? 2 : (lead & 0xF0) == 0xE0 ? 3 : (lead & 0xF8) == 0xF0 ? 4 : 0;
+        return want == len;
+    }
+    return false;
+}
+
+// Shift-JIS writes the second byte of many characters as 0x5C, the backslash: a `//` comment ending
+// in 表 or ソ would continue onto the next line and swallow it. Written by people who meant no
+// continuation, in comments the compiler drops: that backslash becomes a space. (A backslash after
+// text that is UTF-8, or after a byte that cannot lead a Shift-JIS pair, is left alone.)
+void keepShiftJisCommentsOnTheirLine(std::string& text) {
+    for (size_t start = 0; start < text.size();) {
+        size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        size_t last = end;
+        while (last > start && text[last - 1] == '\r') --last;
+        if (last >= start + 2 && text[last - 1] == '\\') {
+            auto lead = static_cast<unsigned char>(text[last - 2]);
+            bool shiftJisLead = (lead >= 0x81 && lead <= 0x9F) || (lead >= 0xE0 && lead <= 0xFC);
+            size_t comment = text.find("//", start);
+            if (shiftJisLead && comment < last - 2 && !endsUtf8Sequence(text, last - 1)) text[last - 1] = ' ';
+        }
+        start = end + 1;
+    }
+}
+
 }  // namespace
 
 std::string sourceTextAsUtf8(std::string_view raw) {
@@ -62,6 +93,7 @@ std::string sourceTextAsUtf8(std::string_view raw) {
     while (!text.empty() && text.back() == '\x1A') text.pop_back();
     for (size_t i = 0; i < text.size(); ++i)
         if (text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n')) text[i] = '\n';
+    keepShiftJisCommentsOnTheirLine(text);
     return text;
 }
 

@@ -10,7 +10,8 @@ namespace fxport::xlate {
 // The text as UTF-8: a UTF-8 BOM is dropped, UTF-16 with a BOM is converted (an unpaired
 // surrogate or a lone last byte becomes U+FFFD). Anything else is returned unchanged; checkIsText
 // judges it later. Dropping the BOM keeps line and column numbers those of the file as shown.
-// Trailing Ctrl-Z bytes (DOS end of file) are dropped and a lone CR (classic Mac) ends a line.
+// Trailing Ctrl-Z bytes (DOS end of file) are dropped and a lone CR (classic Mac) ends a line; a
+// Shift-JIS character ending a `//` comment in 0x5C continues no line.
 std::string sourceTextAsUtf8(std::string_view raw);
 
 }  // namespace fxport::xlate
