@@ -92,6 +92,7 @@ public:
         return true;
     }
     std::optional<TextureKind> kind(int s) { return kind_[static_cast<size_t>(find(s))]; }
+    size_t whereKindWasSet(int s) { return where_[static_cast<size_t>(find(s))]; }
 
 private:
     std::map<std::string, int> ids_;
@@ -248,8 +249,13 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
                         if (auto s = slotOfName(f, name); s && !slots.setKind(*s, *k, i)) {
                             // fxc types a sampler per shader: a global one that functions for different
                             // shaders sample as 2D and as a cube gets a second declaration on its unit.
+                            // A sampler declared with its dimension (sampler2D), or sampled both ways in
+                            // one function, is an error in fxc too.
                             bool parameter = std::any_of(f.parameters.begin(), f.parameters.end(), [&](const FxParameter& p) { return p.name == name; });
-                            if (parameter || !syntax.findSampler(name))
+                            const FxSampler* declared = syntax.findSampler(name);
+                            size_t first = slots.whereKindWasSet(*s);
+                            bool sameFunction = first >= f.body.begin && first < f.body.end;
+                            if (parameter || !declared || !iequals(declared->type, "sampler") || sameFunction)
                                 fail("sampler '" + name + "' is used as a " + std::string(dx9SamplerType(*slots.kind(*s))) +
                                          " elsewhere but with " + callee + " here; a sampler has one dimension",
                                      i);

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "hlsl_types.h"
+#include "shader_profile.h"
 
 namespace fxport::xlate {
 
@@ -43,6 +44,9 @@ public:
         }
         for (const auto& f : syntax_.functions) constWithoutValue(f);
         packOffsetOnAllOrNone();
+        constantBufferCount();
+        for (const auto& v : syntax_.shaderVariables)
+            for (const auto& e : v.elements) compiledShaderVariable(e);
         std::stable_sort(found_.begin(), found_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
         std::vector<Diagnostic> out;
         size_t last = size_t(-1);
@@ -261,6 +265,60 @@ private:
             report("'" + g.name + "' (" + g.type + ") placed at component " + std::to_string(component) +
                        " by packoffset crosses a register boundary (fxc X3594)",
                    g.token);
+    }
+
+    // --- `PixelShader ps = CompileShader(ps_4_0, main(a));` outside a pass ---------------------
+    // fxc compiles a shader variable where it is declared: its profile must be one, and its
+    // arguments values it knows (inside a pass, undefined names are allowed; not here).
+    void compiledShaderVariable(const FxShaderExpr& e) {
+        if (e.kind != FxShaderExpr::Kind::Compile) return;
+        if (!parseShaderProfile(e.profile)) {
+            report("'" + e.profile + "' is not a shader profile fxc compiles (vs_1_1..vs_5_0, ps_2_0..ps_5_0, gs_4_0..)", e.token);
+            return;
+        }
+        std::string argument;
+        auto check = [&](std::string a) {
+            while (!a.empty() && a.front() == ' ') a.erase(a.begin());
+            while (!a.empty() && a.back() == ' ') a.pop_back();
+            if (a.empty() || !(std::isalpha(static_cast<unsigned char>(a[0])) || a[0] == '_')) return;
+            if (a.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") != std::string::npos) return;
+            if (a == "true" || a == "false") return;
+            for (const auto& g : syntax_.globals)
+                if (g.name == a) return;
+            report("undeclared identifier '" + a + "' in the arguments of a compiled shader variable (fxc X3004)", e.token);
+        };
+        int depth = 0;
+        for (char c : e.arguments) {
+            depth += c == '(' ? 1 : c == ')' ? -1 : 0;
+            if (c == ',' && depth == 0) {
+                check(argument);
+                argument.clear();
+            } else {
+                argument += c;
+            }
+        }
+        check(argument);
+    }
+
+    // --- at most 14 constant buffers (D3D10/11's slots) ----------------------------------------
+    // The effect's cbuffers (used or not: each reserves its slot), $Globals when a number lives
+    // outside them, $Params when an entry function takes uniform parameters.
+    void constantBufferCount() {
+        size_t count = syntax_.cbuffers.size();
+        bool globals = false;
+        for (const auto& g : syntax_.globals) {
+            bool constant = std::find(g.modifiers.begin(), g.modifiers.end(), "static") != g.modifiers.end();
+            globals |= g.cbuffer.empty() && !constant && !g.isStringParameter && describeBasicType(syntax_.resolveType(g.type)).ok;
+        }
+        bool params = false;
+        for (const auto& f : syntax_.functions)
+            for (const auto& p : f.parameters)
+                params |= std::find(p.modifiers.begin(), p.modifiers.end(), "uniform") != p.modifiers.end();
+        count += globals + params;
+        if (count > 14 && !syntax_.functions.empty())
+            report("the effect needs " + std::to_string(count) + " constant buffers (its cbuffers" + (globals ? ", $Globals" : "") +
+                       (params ? ", $Params" : "") + "); D3D has 14 slots (fxc X4567)",
+                   syntax_.functions.back().token);
     }
 
     // --- `float4 float;` ---------------------------------------------------------------------

@@ -11,7 +11,8 @@
 //  - a local `const` without an initial value (X3012);
 //  - packoffset: outside a cbuffer member, not `cN` or `cN.x`, a vector crossing a register,
 //    a matrix, array or struct not at `.x`, on some members of a cbuffer but not all (X3591 ...);
-//  - a variable named like a built-in type (`float4 float;`, X3000).
+//  - a variable named like a built-in type (`float4 float;`, X3000);
+//  - more than 14 constant buffers with $Globals and $Params (D3D's slots).
 // Where fxc's rule is wider than a token pattern can judge, the pattern only flags what is
 // certainly invalid; what it cannot judge is left to glslang.
 #pragma once

@@ -1,6 +1,8 @@
 // Statement rewrites for what fxc takes in function bodies (see fxc_statements.h).
 #include "fxc_statements.h"
 
+#include "hlsl_types.h"
+
 #include <algorithm>
 #include <map>
 #include <set>
@@ -111,6 +113,9 @@ void copyAssignedUniforms(const EffectSyntax& syntax, std::vector<TextEdit>& edi
         bool constant = std::find_if(g.modifiers.begin(), g.modifiers.end(), [](const std::string& m) { return m == "static" || m == "const"; }) !=
                         g.modifiers.end();
         if (constant || g.isStringParameter) continue;
+        // Numbers only: a RWTexture or RWStructuredBuffer is written through, not copied.
+        const std::string& resolved = syntax.resolveType(g.type);
+        if (!describeBasicType(resolved).ok && !syntax.findStruct(resolved)) continue;
         bool written = false;
         for (const auto& f : syntax.functions)
             for (size_t i = f.body.begin; i < f.body.end && !written; ++i)
