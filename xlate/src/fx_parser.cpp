@@ -686,6 +686,10 @@ private:
             if (cur().text == "shared") sharedTokens.push_back(pos_);
             modifiers.push_back(syntax_.tokens[pos_++].text);
         }
+        if (cur().is("struct") && peek().isIdent()) {  // `uniform struct apple a;` (C's spelling): the type is apple
+            blank(pos_, pos_ + 1);
+            ++pos_;
+        }
         size_t typeToken = pos_;
         std::string type = parseTypeName();
         if (!cur().isIdent()) {
