@@ -134,6 +134,8 @@ GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters)
     // render targets come out top-row-first.
     glClipControl(GL_UPPER_LEFT, GL_ZERO_TO_ONE);
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // D3D10+ filter across cube faces; D3D9 hardware did too
+    // nointerpolation (flat) values come from a primitive's first vertex on D3D, its last on GL.
+    glProvokingVertex(GL_FIRST_VERTEX_CONVENTION);
 
     impl_->internalBuffer = impl_->createBuffer();
     glNamedBufferStorage(impl_->internalBuffer, sizeof(float) * 4, nullptr, GL_DYNAMIC_STORAGE_BIT);
