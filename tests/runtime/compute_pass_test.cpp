@@ -162,9 +162,9 @@ TEST(ComputePasses, FullscreenQuadWithD3D9HalfPixelOffset) {
              kColorTolerance, 1);
 }
 
-// A flat varying takes GL's provoking vertex (the last): the quad's first triangle (top-left,
-// top-right, bottom-left) shows bottom-left's UV (0,1), the second (bottom-left, top-right,
-// bottom-right) bottom-right's (1,1). On a square target pixel centres lie on the shared edge; D3D's
+// A flat (nointerpolation) varying takes D3D's provoking vertex, the first (the device sets GL's
+// first-vertex convention): the quad's first triangle (top-left, top-right, bottom-left) shows
+// top-left's UV (0,0), the second (bottom-left, top-right, bottom-right) bottom-left's (0,1). On a square target pixel centres lie on the shared edge; D3D's
 // top-left rule gives them to the second triangle, whose left edge it is.
 TEST(ComputePasses, FlatVaryingAndTheFillRuleOnTheDiagonal) {
     for (auto [w, h] : {std::pair{16, 16}, std::pair{kW, kH}}) {
@@ -172,7 +172,7 @@ TEST(ComputePasses, FlatVaryingAndTheFillRuleOnTheDiagonal) {
                  [&](int x, int y) {
                      // Centre (x+0.5, y+0.5) against the edge x/w + y/h = 1, in integers.
                      const long side = long(2 * x + 1) * h + long(2 * y + 1) * w - 2L * w * h;
-                     return side < 0 ? Pixel{{0, 1, 0, 1}} : Pixel{{1, 1, 0, 1}};
+                     return side < 0 ? Pixel{{0, 0, 0, 1}} : Pixel{{0, 1, 0, 1}};
                  },
                  0.0, 1);
     }

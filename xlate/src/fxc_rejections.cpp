@@ -43,6 +43,7 @@ public:
             if (t_[i].isIdent()) typeNameAsVariable(i);
         }
         for (const auto& f : syntax_.functions) constWithoutValue(f);
+        for (const auto& f : syntax_.functions) outArgumentsAreLValues(f);
         packOffsetOnAllOrNone();
         constantBufferCount();
         for (const auto& v : syntax_.shaderVariables)
@@ -203,6 +204,62 @@ private:
             if (k + 2 < f.body.end && t_[k].isIdent() && t_[k + 1].isIdent() && t_[k + 2].is(";"))
                 report("const variable '" + t_[k + 1].text + "' has no initial value (fxc X3012)", k + 1);
         }
+    }
+
+    // --- out/inout arguments are l-values (X3025); glslang crashes on some that are not ---------
+    void outArgumentsAreLValues(const FxFunction& caller) {
+        for (size_t i = caller.body.begin; i + 1 < caller.body.end; ++i) {
+            if (!t_[i].isIdent() || !t_[i + 1].is("(") || (i > 0 && t_[i - 1].is("."))) continue;
+            std::vector<std::pair<size_t, size_t>> args;  // token ranges
+            size_t close = closing(i + 1), start = i + 2;
+            for (size_t k = i + 2; k <= close; ++k) {
+                if (k < close && opens(t_[k])) {
+                    k = closing(k);
+                    continue;
+                }
+                if (k == close || t_[k].is(",")) {
+                    if (k > start) args.push_back({start, k});
+                    start = k + 1;
+                }
+            }
+            const FxFunction* callee = onlyOverloadTaking(t_[i].text, args.size());
+            if (!callee) continue;
+            for (size_t a = 0; a < args.size(); ++a) {
+                const auto& mods = callee->parameters[a].modifiers;
+                bool out = std::find(mods.begin(), mods.end(), "out") != mods.end() || std::find(mods.begin(), mods.end(), "inout") != mods.end();
+                if (out && !isWritable(caller, args[a].first, args[a].second))
+                    report("argument " + std::to_string(a + 1) + " of '" + callee->name + "' is an out parameter: it must be a variable fxc can write (X3025)",
+                           args[a].first);
+            }
+        }
+    }
+    const FxFunction* onlyOverloadTaking(const std::string& name, size_t count) const {
+        const FxFunction* found = nullptr;
+        for (const auto& f : syntax_.functions)
+            if (f.name == name && f.parameters.size() == count) {
+                if (found) return nullptr;  // overloads of one count: glslang resolves them
+                found = &f;
+            }
+        return found;
+    }
+    // `x`, `x.member`, `x[i]`, `x.yz` (no repeated component), not a const, a literal or an expression.
+    bool isWritable(const FxFunction& caller, size_t begin, size_t end) const {
+        if (!t_[begin].isIdent() || isOneOf(t_[begin].text, {"true", "false"})) return false;
+        for (size_t k = begin + 1; k < end; ++k) {
+            if (t_[k].is("[")) {
+                k = closing(k);
+                continue;
+            }
+            if (!t_[k].is(".") || k + 1 >= end || !t_[k + 1].isIdent()) return false;
+            const std::string& m = t_[++k].text;
+            if (k + 1 == end && m.size() > 1 && m.find_first_not_of("xyzwrgba") == std::string::npos)
+                for (size_t c = 0; c < m.size(); ++c)
+                    if (m.find(m[c], c + 1) != std::string::npos) return false;
+        }
+        const std::string& name = t_[begin].text;
+        for (size_t k = caller.body.begin; k + 2 < begin; ++k)  // `const float x = ...;` earlier in the caller
+            if (t_[k].is("const") && t_[k + 1].isIdent() && t_[k + 2].is(name)) return false;
+        return true;
     }
 
     // --- packoffset -----------------------------------------------------------------------------
