@@ -763,6 +763,10 @@ private:
             p.modifiers.push_back(tok(i++).text);
         if (i >= span.end || !tok(i).isIdent())
             fail(diag::kSyntax, "malformed parameter in function '" + function + "'", i < span.end ? i : span.begin);
+        if (tok(i).is("struct") && i + 2 < span.end && tok(i + 1).isIdent() && tok(i + 2).isIdent()) {
+            blank(i, i + 1);  // `in struct input i` (C's spelling): the type is `input`
+            ++i;
+        }
         p.typeToken = i;
         p.type = tok(i++).text;
         if (i < span.end && tok(i).is("<")) {
