@@ -12,6 +12,7 @@
 #include <fstream>
 #include <map>
 #include <set>
+#include <functional>
 #include <mutex>
 #include <tuple>
 
@@ -922,6 +923,77 @@ void warmFrontEnd() {
     });
 }
 
+// What a worker sends back: the effect (with each shader's rewritten HLSL when it was kept, which
+// a compiled-effect file does not hold) or the errors that stopped the compile.
+std::string workerPayload(const std::function<CompiledEffect()>& compile) {
+    nlohmann::json result;
+    try {
+        CompiledEffect effect = compile();
+        result["effect"] = serializeEffect(effect, true);
+        nlohmann::json rewritten = nlohmann::json::array();
+        for (const auto& s : effect.shaders) rewritten.push_back(s.hlslAfterRewrite);
+        result["rewritten"] = std::move(rewritten);
+    } catch (const CompileError& e) {
+        result["errors"] = diagnosticsJson(e.diagnostics());
+    } catch (const std::bad_alloc&) {
+        throw;
+    } catch (const std::exception& e) {
+        result["exception"] = e.what();
+    }
+    return result.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+CompiledEffect effectFromPayload(const std::string& payload, const std::string& displayPath) {
+    nlohmann::json result = nlohmann::json::parse(payload);
+    if (result.contains("errors")) throw CompileError(diagnosticsFrom(result["errors"]));
+    if (result.contains("exception")) throw std::runtime_error(result["exception"].get<std::string>());
+    CompiledEffect effect = deserializeEffect(result.at("effect").get<std::string>(), displayPath);
+    const auto& rewritten = result.at("rewritten");
+    for (size_t i = 0; i < effect.shaders.size() && i < rewritten.size(); ++i) effect.shaders[i].hlslAfterRewrite = rewritten[i].get<std::string>();
+    return effect;
+}
+
+// The diagnostic for a worker that did not return. `shaderKey` gets the ShaderKey::text() of the
+// shader it was compiling, if any (the diagnostic then points at that shader's entry point).
+Diagnostic describeWorkerFailure(const WorkerOutcome& outcome, const WorkerLimits& limits, const std::string& displayPath,
+                                 const FailedShaders& failed, bool locateShader, std::string& shaderKey) {
+    const std::string what = outcome.kind == WorkerOutcome::Kind::TimedOut
+                                 ? "ran past its limit of " + std::to_string(limits.cpuSeconds) + " s of CPU time"
+                             : outcome.kind == WorkerOutcome::Kind::OutOfMemory
+                                 ? "ran past its limit of " + std::to_string(limits.memoryBytes >> 20) + " MiB of memory"
+                             : outcome.signal == SIGKILL ? std::string("was killed from outside (SIGKILL: the OOM killer or a user)")
+                                                         : std::string("crashed (") + signalName(outcome.signal) + ")";
+    const char* id = outcome.kind == WorkerOutcome::Kind::TimedOut      ? diag::kFrontEndTimeout
+                     : outcome.kind == WorkerOutcome::Kind::OutOfMemory ? diag::kFrontEndMemory
+                                                                        : diag::kFrontEndCrashed;
+    // progress: "shader\t<key>\t<entry>\t<profile>\t<file>\t<line>\t<column>", "preprocess" or "parse".
+    std::vector<std::string> f;
+    for (size_t at = 0;;) {
+        size_t tab = outcome.progress.find('\t', at);
+        f.push_back(outcome.progress.substr(at, tab == std::string::npos ? std::string::npos : tab - at));
+        if (tab == std::string::npos) break;
+        at = tab + 1;
+    }
+    Diagnostic d;
+    if (f.size() == 7 && f[0] == "shader" && !failed.count(f[1]) && locateShader) {
+        d.id = id;
+        d.message = "the HLSL front end failed on this shader (" + f[2] + ", " + f[3] + "): glslang/SPIRV-Cross " + what;
+        d.location = {f[4], std::atoi(f[5].c_str()), std::atoi(f[6].c_str())};
+        shaderKey = f[1];
+        return d;
+    }
+    if (f[0] == "preprocess" && outcome.kind != WorkerOutcome::Kind::Crashed) {
+        d.id = diag::kMacroLimit;  // the preprocessor's only unbounded work is macro expansion
+        d.message = "preprocessing the effect " + what + ": a macro expands without bound";
+    } else {
+        d.id = id;
+        d.message = std::string("the HLSL front end failed on this effect while ") +
+                    (f[0] == "preprocess" ? "preprocessing it" : f[0] == "parse" ? "reading it" : "compiling a shader") + ": it " + what;
+    }
+    d.location = {displayPath, 0, 0};
+    return d;
+}
+
 CompiledEffect compileInWorker(const std::string& source, const std::string& displayPath, const std::string& absolutePath,
                                const CompileOptions& options, const std::string& key) {
     const WorkerLimits limits = WorkerLimits::fromEnvironment();
@@ -929,64 +1001,38 @@ CompiledEffect compileInWorker(const std::string& source, const std::string& dis
     FailedShaders failed;
     for (int attempt = 0;; ++attempt) {
         WorkerOutcome outcome = runInWorker(
-            [&] {
-                nlohmann::json result;
-                try {
-                    result["effect"] = serializeEffect(compileUncached(source, displayPath, absolutePath, options, key, failed, nullptr), true);
-                } catch (const CompileError& e) {
-                    result["errors"] = diagnosticsJson(e.diagnostics());
-                } catch (const std::bad_alloc&) {
-                    throw;
-                } catch (const std::exception& e) {
-                    result["exception"] = e.what();
-                }
-                return result.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-            },
+            [&] { return workerPayload([&] { return compileUncached(source, displayPath, absolutePath, options, key, failed, nullptr); }); },
             limits);
-        if (outcome.kind == WorkerOutcome::Kind::Done) {
-            nlohmann::json result = nlohmann::json::parse(outcome.payload);
-            if (result.contains("errors")) throw CompileError(diagnosticsFrom(result["errors"]));
-            if (result.contains("exception")) throw std::runtime_error(result["exception"].get<std::string>());
-            return deserializeEffect(result.at("effect").get<std::string>(), displayPath);
-        }
-        const std::string what = outcome.kind == WorkerOutcome::Kind::TimedOut
-                                     ? "ran past its limit of " + std::to_string(limits.cpuSeconds) + " s of CPU time"
-                                 : outcome.kind == WorkerOutcome::Kind::OutOfMemory
-                                     ? "ran past its limit of " + std::to_string(limits.memoryBytes >> 20) + " MiB of memory"
-                                     : std::string("crashed (") + signalName(outcome.signal) + ")";
-        const char* id = outcome.kind == WorkerOutcome::Kind::TimedOut      ? diag::kFrontEndTimeout
-                         : outcome.kind == WorkerOutcome::Kind::OutOfMemory ? diag::kFrontEndMemory
-                                                                            : diag::kFrontEndCrashed;
-        // progress: "shader\t<key>\t<entry>\t<profile>\t<file>\t<line>\t<column>", "preprocess" or "parse".
-        std::vector<std::string> f;
-        for (size_t at = 0;;) {
-            size_t tab = outcome.progress.find('\t', at);
-            f.push_back(outcome.progress.substr(at, tab == std::string::npos ? std::string::npos : tab - at));
-            if (tab == std::string::npos) break;
-            at = tab + 1;
-        }
-        Diagnostic d;
-        if (f.size() == 7 && f[0] == "shader" && !failed.count(f[1]) && attempt < 8) {
-            d.id = id;
-            d.message = "the HLSL front end failed on this shader (" + f[2] + ", " + f[3] + "): glslang/SPIRV-Cross " + what;
-            d.location = {f[4], std::atoi(f[5].c_str()), std::atoi(f[6].c_str())};
-            failed[f[1]] = d;
-            continue;  // again, without that shader
-        }
-        if (f[0] == "preprocess" && outcome.kind != WorkerOutcome::Kind::Crashed) {
-            d.id = diag::kMacroLimit;  // the preprocessor's only unbounded work is macro expansion
-            d.message = "preprocessing the effect " + what + ": a macro expands without bound";
-        } else {
-            d.id = id;
-            d.message = std::string("the HLSL front end failed on this effect while ") +
-                        (f[0] == "preprocess" ? "preprocessing it" : f[0] == "parse" ? "reading it" : "compiling a shader") + ": it " + what;
-        }
-        d.location = {displayPath, 0, 0};
-        throw CompileError({d});
+        if (outcome.kind == WorkerOutcome::Kind::Done) return effectFromPayload(outcome.payload, displayPath);
+        std::string shaderKey;
+        Diagnostic d = describeWorkerFailure(outcome, limits, displayPath, failed, attempt < 8, shaderKey);
+        if (shaderKey.empty()) throw CompileError({d});
+        failed[shaderKey] = d;  // again, without that shader
     }
 }
 
 }  // namespace
+
+bool compilesInThisProcess(const CompileOptions& options) {
+    const char* inProcess = std::getenv("FXPORT_IN_PROCESS");
+    return options.inProcess || insideWorker() || (inProcess && *inProcess == '1');
+}
+
+CompiledEffect compileContained(const std::function<CompiledEffect()>& compile, const std::string& displayPath) {
+    const WorkerLimits limits = WorkerLimits::fromEnvironment();
+    warmFrontEnd();
+    WorkerOutcome outcome = runInWorker([&] { return workerPayload(compile); }, limits);
+    if (outcome.kind == WorkerOutcome::Kind::Done) return effectFromPayload(outcome.payload, displayPath);
+    std::string shaderKey;
+    throw CompileError({describeWorkerFailure(outcome, limits, displayPath, {}, true, shaderKey)});
+}
+
+std::optional<CompiledEffect> cachedEffectText(const std::string& source, const std::string& displayPath,
+                                               const std::string& absolutePath, const CompileOptions& options) {
+    const char* dump = std::getenv("FXPORT_DUMP");
+    if (!options.useCache || options.keepRewrittenHlsl || (dump && *dump)) return std::nullopt;
+    return loadCachedEffect(options.cacheDir, cacheKey(source, displayPath, absolutePath, options));
+}
 
 CompiledEffect compileEffectText(const std::string& source, const std::string& displayPath, const std::string& absolutePath,
                                  const CompileOptions& optionsIn, VaryingLocations* sharedVaryings) {
@@ -998,12 +1044,10 @@ CompiledEffect compileEffectText(const std::string& source, const std::string& d
         key = cacheKey(source, displayPath, absolutePath, options);
         if (auto cached = loadCachedEffect(options.cacheDir, key)) return std::move(*cached);
     }
-    // The rewritten HLSL is not part of a compiled-effect file, so a compile that keeps it stays here;
-    // so do loose shader files compiled together (their shared varying locations live in this
-    // process). FXPORT_IN_PROCESS=1 does the same for every compile (debugging, measuring the
-    // worker's cost).
-    const char* inProcess = std::getenv("FXPORT_IN_PROCESS");
-    if (options.inProcess || options.keepRewrittenHlsl || sharedVaryings || (inProcess && *inProcess == '1'))
+    // Loose shader files compiled together share varying locations: compileShaderFiles() runs all
+    // of them in one worker, and they compile here, inside it. FXPORT_IN_PROCESS=1 compiles every
+    // effect here (debugging, measuring the worker's cost).
+    if (sharedVaryings || compilesInThisProcess(options))
         return compileUncached(source, displayPath, absolutePath, options, key, {}, sharedVaryings);
     return compileInWorker(source, displayPath, absolutePath, options, key);
 }

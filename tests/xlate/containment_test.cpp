@@ -1,0 +1,196 @@
+// Containment (issue 26): nothing a compile is handed takes the caller down. Loose shader files
+// (compileShaderFiles, `fxport compile X.hlsl --entry --profile`) and compiles that keep the
+// rewritten HLSL (FXPORT_DUMP, keepRewrittenHlsl) run in the front-end worker as effect files do;
+// each case runs the library in a child process (a gtest death-test fork) or the real `fxport`
+// binary and requires a normal exit with a diagnostic.
+//
+// Paths are relative to the repository root (the tests run there, see CMakeLists.txt).
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <string>
+
+#include "fxport/xlate/diagnostics.h"
+#include "fxport/xlate/effect_compiler.h"
+#include "run_cli.h"
+
+namespace fs = std::filesystem;
+using namespace fxport::xlate;
+using fxport::test::RunResult;
+using fxport::test::runCli;
+
+namespace {
+
+// A folder of its own per test, removed afterwards.
+class Containment : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("fxport-containment-" + std::to_string(::getpid()) + "-" +
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    std::string write(const std::string& name, const std::string& text) {
+        std::string path = (dir_ / name).string();
+        std::ofstream(path, std::ios::binary) << text;
+        return path;
+    }
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+    fs::path dir_;
+};
+
+std::string sh(const std::string& s) { return "'" + s + "'"; }
+
+// glslang folds INT_MIN / -1 with the host's division: SIGFPE on x86 (fxc folds it to INT_MIN).
+const std::string kIntMinDivision =
+    "float4 main() : SV_Target { int x = -2147483648; int y = -1; return float4(x / y, 0, 0, 1); }\n";
+
+// A mutation that crashes glslang 12 (tests/fixtures/broken/contained_glslang_crash.fx).
+const std::string kCrashingEffect = "tests/fixtures/broken/contained_glslang_crash.fx";
+
+// Compiles in a child: prints the first diagnostic's id (or "compiled") and exits 0; a signal
+// there fails the death-test expectation.
+void compileLooseAndExit(const std::vector<ShaderEntry>& entries, const CompileOptions& options) {
+    try {
+        CompiledEffect e = compileShaderFiles(entries, options);
+        std::cerr << "compiled " << e.shaders.size() << " shaders\n";
+    } catch (const CompileError& error) {
+        std::cerr << error.diagnostics().front().format() << "\n";
+    }
+    std::exit(0);
+}
+
+CompileOptions uncached() {
+    CompileOptions o;
+    o.useCache = false;
+    return o;
+}
+
+TEST_F(Containment, LooseIntMinDivisionDoesNotKillTheCaller) {
+    std::string ps = write("div.hlsl", kIntMinDivision);
+    EXPECT_EXIT(compileLooseAndExit({{ps, "main", "ps_5_0"}}, uncached()), ::testing::ExitedWithCode(0), "compiled|div.hlsl");
+}
+
+TEST_F(Containment, LooseGlslangCrashIsALocatedFrontEndError) {
+    EXPECT_EXIT(compileLooseAndExit({{kCrashingEffect, "VS", "vs_4_0"}, {kCrashingEffect, "PS", "ps_4_0"}}, uncached()),
+                ::testing::ExitedWithCode(0), "contained_glslang_crash.fx\\([0-9]+,[0-9]+\\): error FX9001");
+}
+
+TEST_F(Containment, LooseFilesApartShareOneWorker) {
+    // Two files (not cacheable, varyings shared): the crash in the second is still contained.
+    std::string vs = write("vs.hlsl", "float4 main(float4 p : POSITION) : SV_Position { return p; }\n");
+    EXPECT_EXIT(compileLooseAndExit({{vs, "main", "vs_4_0"}, {kCrashingEffect, "PS", "ps_4_0"}}, uncached()),
+                ::testing::ExitedWithCode(0), "error FX9001");
+}
+
+TEST_F(Containment, LooseCompileStillWorksAndCaches) {
+    std::string vs = write("vs.hlsl", "struct O { float4 p : SV_Position; float4 c : CUSTOM; };\n"
+                                      "O main(float4 p : POSITION) { O o; o.p = p; o.c = p; return o; }\n");
+    std::string ps = write("ps.hlsl", "float4 main(float4 p : SV_Position, float4 c : CUSTOM) : SV_Target { return c; }\n");
+    CompiledEffect e = compileShaderFiles({{vs, "main", "vs_4_0"}, {ps, "main", "ps_4_0"}}, uncached());
+    ASSERT_EQ(e.shaders.size(), 2u);
+    // The shared custom varying has one location in both stages, although they compiled apart.
+    EXPECT_NE(e.shaders[0].glsl.find("location"), std::string::npos);
+    CompileOptions cached;
+    cached.cacheDir = path("cache");
+    CompiledEffect first = compileShaderFiles({{vs, "main", "vs_4_0"}}, cached);
+    CompiledEffect second = compileShaderFiles({{vs, "main", "vs_4_0"}}, cached);  // from the cache
+    EXPECT_EQ(first.shaders.at(0).glsl, second.shaders.at(0).glsl);
+    EXPECT_FALSE(fs::is_empty(path("cache")));
+}
+
+TEST_F(Containment, KeptRewrittenHlslComesBackFromTheWorker) {
+    std::string vs = write("vs.hlsl", "float4 main(float4 p : POSITION) : SV_Position { return p; }\n");
+    CompileOptions o = uncached();
+    o.keepRewrittenHlsl = true;
+    CompiledEffect e = compileShaderFiles({{vs, "main", "vs_4_0"}}, o);
+    ASSERT_EQ(e.shaders.size(), 1u);
+    EXPECT_NE(e.shaders[0].hlslAfterRewrite.find("main"), std::string::npos);
+    CompiledEffect f = compileEffectFile("tests/fixtures/broken/blend_full_sample_mask.fx", o);
+    ASSERT_FALSE(f.shaders.empty());
+    EXPECT_FALSE(f.shaders[0].hlslAfterRewrite.empty());
+}
+
+TEST_F(Containment, KeepRewrittenHlslDoesNotTurnAContainedCrashIntoASignal) {
+    CompileOptions o = uncached();
+    o.keepRewrittenHlsl = true;
+    EXPECT_EXIT(
+        {
+            try {
+                compileEffectFile(kCrashingEffect, o);
+            } catch (const CompileError& error) {
+                std::cerr << error.diagnostics().front().format() << "\n";
+            }
+            std::exit(0);
+        },
+        ::testing::ExitedWithCode(0), "error FX9001");
+}
+
+// The real binary.
+TEST_F(Containment, CliLooseShaderIntMinDivisionExitsNormally) {
+    std::string ps = write("div.hlsl", kIntMinDivision);
+    RunResult r = runCli("compile " + sh(ps) + " --entry main --profile ps_5_0 --no-cache -o " + sh(path("out.fxeffect")));
+    ASSERT_TRUE(r.exited) << r.output;
+    if (r.status != 0) {
+        EXPECT_NE(r.output.find("div.hlsl("), std::string::npos) << r.output;
+    }
+}
+
+TEST_F(Containment, CliLooseShaderCrashIsFx9001) {
+    RunResult r = runCli("compile " + sh(kCrashingEffect) + " --entry VS --profile vs_4_0 --no-cache -o " + sh(path("out.fxeffect")));
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("error FX9001"), std::string::npos) << r.output;
+}
+
+TEST_F(Containment, CliLooseShaderGeometryUnnamedParameterExitsNormally) {
+    std::string gs = write("gs.hlsl", "struct V { float4 p : SV_Position; };\n"
+                                      "[maxvertexcount(3)] void main(point V[1], inout TriangleStream<V> s) { }\n");
+    RunResult r = runCli("compile " + sh(gs) + " --entry main --profile gs_4_0 --no-cache -o " + sh(path("out.fxeffect")));
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("gs.hlsl("), std::string::npos) << r.output;
+}
+
+TEST_F(Containment, CliLooseShaderExponentialMacroIsStopped) {
+    std::string text;
+    text += "#define D0 x\n";
+    for (int i = 1; i <= 40; ++i) text += "#define D" + std::to_string(i) + " D" + std::to_string(i - 1) + " D" + std::to_string(i - 1) + "\n";
+    text += "float Scale = D40;\nfloat4 main() : SV_Target { return Scale; }\n";
+    std::string ps = write("macro.hlsl", text);
+    auto start = std::chrono::steady_clock::now();
+    RunResult r = runCli("compile " + sh(ps) + " --entry main --profile ps_4_0 --no-cache -o " + sh(path("out.fxeffect")),
+                         "FXPORT_WORKER_SECONDS=2 FXPORT_WORKER_MEMORY_MB=512");
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("macro.hlsl"), std::string::npos) << r.output;
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 30.0);
+}
+
+TEST_F(Containment, CliDumpOfACrashingEffectIsFx9001NotASignal) {
+    RunResult r = runCli("compile " + sh(kCrashingEffect) + " --no-cache -o " + sh(path("out.fxeffect")),
+                         "FXPORT_DUMP=" + sh(path("dump")));
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("error FX9001"), std::string::npos) << r.output;
+}
+
+TEST_F(Containment, CliDumpWritesTheRewrittenHlslFromTheWorker) {
+    RunResult r = runCli("compile tests/fixtures/broken/blend_full_sample_mask.fx --no-cache -o " + sh(path("out.fxeffect")),
+                         "FXPORT_DUMP=" + sh(path("dump")));
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 0) << r.output;
+    bool hlsl = false;
+    for (const auto& entry : fs::directory_iterator(path("dump"))) hlsl |= entry.path().extension() == ".hlsl";
+    EXPECT_TRUE(hlsl);
+}
+
+}  // namespace
