@@ -7,6 +7,7 @@
 // Paths are relative to the repository root (the tests run there, see CMakeLists.txt).
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -15,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <string>
 
 #include "fxport/xlate/diagnostics.h"
@@ -46,6 +48,13 @@ protected:
     std::string path(const std::string& name) const { return (dir_ / name).string(); }
     fs::path dir_;
 };
+
+std::string readAll(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
 
 std::string sh(const std::string& s) { return "'" + s + "'"; }
 
@@ -191,6 +200,102 @@ TEST_F(Containment, CliDumpWritesTheRewrittenHlslFromTheWorker) {
     bool hlsl = false;
     for (const auto& entry : fs::directory_iterator(path("dump"))) hlsl |= entry.path().extension() == ".hlsl";
     EXPECT_TRUE(hlsl);
+}
+
+// Outputs (issue 26 items 6, 7, 10): never replaced when not a regular file, never an input,
+// never each other; every write checked, with the OS's reason.
+const std::string kEffect = "tests/fixtures/broken/blend_full_sample_mask.fx";
+
+TEST_F(Containment, OutputOnADeviceIsWrittenThroughNotReplaced) {
+    RunResult r = runCli("compile " + kEffect + " --no-cache -o /dev/null");
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_TRUE(fs::is_character_file("/dev/null"));  // still the device
+}
+
+TEST_F(Containment, OutputOnAFullDeviceFailsWithTheReason) {
+    RunResult r = runCli("compile " + kEffect + " --no-cache -o /dev/full");
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("cannot write '/dev/full' (No space left on device)"), std::string::npos) << r.output;
+    EXPECT_TRUE(fs::is_character_file("/dev/full"));
+}
+
+TEST_F(Containment, OutputOnAFifoWithoutReaderIsRefusedAtOnce) {
+    std::string fifo = path("fifo");
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    RunResult r = runCli("compile " + kEffect + " --no-cache -o " + sh(fifo), "timeout 20");
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("a FIFO that nothing reads"), std::string::npos) << r.output;
+    EXPECT_TRUE(fs::is_fifo(fifo));
+}
+
+TEST_F(Containment, OutputFolderIsRefusedWithAReason) {
+    RunResult r = runCli("compile " + kEffect + " --no-cache -o " + sh(dir_.string()));
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("it is a folder"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("(Success)"), std::string::npos) << r.output;
+}
+
+TEST_F(Containment, ReadOnlyOutputIsRefused) {
+    std::string out = write("out.fxeffect", "keep me");
+    fs::permissions(out, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+    RunResult r = runCli("compile " + kEffect + " --no-cache -o " + sh(out));
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("read-only"), std::string::npos) << r.output;
+    EXPECT_EQ(readAll(out), "keep me");
+}
+
+TEST_F(Containment, DepfileNamingTheInputIsRefused) {
+    std::string fx = path("a.fx");
+    fs::copy_file(kEffect, fx);
+    std::string before = std::to_string(fs::file_size(fx));
+    RunResult r = runCli("compile " + sh(fx) + " --no-cache -o " + sh(path("a.fxeffect")) + " --depfile " + sh(fx));
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("--depfile '" + fx + "' is also the input '" + fx + "'"), std::string::npos) << r.output;
+    EXPECT_EQ(std::to_string(fs::file_size(fx)), before);
+}
+
+TEST_F(Containment, DepfileEqualToOutputIsRefused) {
+    std::string out = path("a.fxeffect");
+    RunResult r = runCli("compile " + kEffect + " --no-cache -o " + sh(out) + " --depfile " + sh(out));
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("-o '" + out + "' is also --depfile"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(Containment, OutputNamingAnIncludedFileIsRefused) {
+    std::string header = write("common.fxh", "float4 Tint;\n");
+    std::string fx = write("a.fx", "#include \"common.fxh\"\n"
+                                   "float4 VS(float4 p : POSITION0) : POSITION0 { return p; }\n"
+                                   "float4 PS() : COLOR0 { return Tint; }\n"
+                                   "technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n");
+    RunResult r = runCli("compile " + sh(fx) + " --no-cache -o " + sh(header));
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("the included file"), std::string::npos) << r.output;
+    EXPECT_EQ(readAll(header), "float4 Tint;\n");
+}
+
+TEST_F(Containment, DepfileInAMissingFolderIsAnErrorWithTheReason) {
+    std::string out = path("a.fxeffect");
+    RunResult r = runCli("compile " + kEffect + " --no-cache -o " + sh(out) + " --depfile " + sh(path("missing/a.d")));
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("No such file or directory"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("internal error"), std::string::npos) << r.output;
+}
+
+TEST_F(Containment, DepfileOnAFullDeviceFails) {
+    RunResult r = runCli("compile " + kEffect + " --no-cache -o " + sh(path("a.fxeffect")) + " --depfile /dev/full");
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("No space left on device"), std::string::npos) << r.output;
 }
 
 }  // namespace
