@@ -10,6 +10,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -18,9 +19,14 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <vector>
 
+#include <nlohmann/json.hpp>
+
+#include "effect_validation.h"
 #include "fxport/xlate/diagnostics.h"
 #include "fxport/xlate/effect_compiler.h"
+#include "fxport/xlate/effect_file.h"
 #include "run_cli.h"
 
 namespace fs = std::filesystem;
@@ -296,6 +302,105 @@ TEST_F(Containment, DepfileOnAFullDeviceFails) {
     ASSERT_TRUE(r.exited) << r.output;
     EXPECT_EQ(r.status, 1) << r.output;
     EXPECT_NE(r.output.find("No space left on device"), std::string::npos) << r.output;
+}
+
+// Compiled effects and cache entries (issue 26 items 5, 8): nesting checked before parsing, every
+// index's lower bound validated, entries that record their key and body checksum, sizes capped
+// before reading, and a refused entry replaced by the next compile.
+std::string effectWithTechnique(const std::string& technique) {
+    return "float4 VS(float4 p : POSITION0) : POSITION0 { return p; }\n"
+           "float4 PS() : COLOR0 { return float4(1, 1, 1, 1); }\n"
+           "technique " + technique + " { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n";
+}
+
+std::vector<fs::path> cacheEntries(const std::string& dir) {
+    std::vector<fs::path> out;
+    for (const auto& e : fs::directory_iterator(dir))
+        if (e.path().extension() == ".fxeffect") out.push_back(e.path());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+TEST_F(Containment, DeeplyNestedCompiledEffectIsRefusedBeforeParsing) {
+    EXPECT_EXIT(
+        {
+            try {
+                deserializeEffect(std::string(200000, '[') + std::string(200000, ']'), "deep.fxeffect");
+                std::cerr << "accepted\n";
+            } catch (const CompileError& error) {
+                std::cerr << error.diagnostics().front().format() << "\n";
+            }
+            std::exit(0);
+        },
+        ::testing::ExitedWithCode(0), "deep.fxeffect: error FX3101: .*nests more than 64 levels");
+}
+
+TEST_F(Containment, PassNamingShaderMinusOneIsRefused) {
+    std::string text = serializeEffect(compileEffectFile(kEffect, uncached()));
+    nlohmann::json j = nlohmann::json::parse(text);
+    j["techniques"][0]["passes"][0]["pixelShader"]["shaders"] = nlohmann::json::array({-1});
+    try {
+        deserializeEffect(resealEffectFile(j.dump()), "minus.fxeffect");
+        ADD_FAILURE() << "a valid pass with shader #-1 was accepted";
+    } catch (const CompileError& error) {
+        EXPECT_NE(error.diagnostics().front().message.find("shader #-1"), std::string::npos) << error.diagnostics().front().format();
+    }
+}
+
+TEST_F(Containment, CacheEntryUnderAnotherKeyIsRefusedAndReplaced) {
+    CompileOptions o;
+    o.cacheDir = path("cache");
+    std::string a = write("a.fx", effectWithTechnique("FromA"));
+    compileEffectFile(a, o);
+    std::vector<fs::path> first = cacheEntries(o.cacheDir);
+    ASSERT_EQ(first.size(), 1u);
+    std::string b = write("b.fx", effectWithTechnique("FromB"));
+    compileEffectFile(b, o);
+    std::vector<fs::path> both = cacheEntries(o.cacheDir);
+    ASSERT_EQ(both.size(), 2u);
+    fs::path entryOfB = both[0] == first[0] ? both[1] : both[0];
+    fs::copy_file(first[0], entryOfB, fs::copy_options::overwrite_existing);  // A's entry under B's key
+    CompiledEffect e = compileEffectFile(b, o);
+    ASSERT_EQ(e.techniques.size(), 1u);
+    EXPECT_EQ(e.techniques[0].name, "FromB");
+    EXPECT_NE(readAll(entryOfB.string()), readAll(first[0].string()));  // replaced
+}
+
+TEST_F(Containment, PaddedCacheEntryIsRefusedAndReplaced) {
+    CompileOptions o;
+    o.cacheDir = path("cache");
+    std::string a = write("a.fx", effectWithTechnique("T"));
+    compileEffectFile(a, o);
+    fs::path entry = cacheEntries(o.cacheDir).at(0);
+    auto size = fs::file_size(entry);
+    std::ofstream(entry, std::ios::binary | std::ios::app) << std::string(size_t{1} << 20, '\0');
+    compileEffectFile(a, o);
+    EXPECT_EQ(fs::file_size(entry), size);
+}
+
+TEST_F(Containment, HugeCacheEntryIsNotReadAndIsReplaced) {
+    CompileOptions o;
+    o.cacheDir = path("cache");
+    std::string a = write("a.fx", effectWithTechnique("T"));
+    compileEffectFile(a, o);
+    fs::path entry = cacheEntries(o.cacheDir).at(0);
+    auto size = fs::file_size(entry);
+    fs::resize_file(entry, uintmax_t{4} << 30);  // sparse: 4 GiB of NULs after the entry
+    auto start = std::chrono::steady_clock::now();
+    compileEffectFile(a, o);
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 2.0);
+    EXPECT_EQ(fs::file_size(entry), size);
+}
+
+TEST_F(Containment, OversizedCompiledEffectFileIsRefusedBeforeReading) {
+    std::string big = write("big.fxeffect", "{}");
+    fs::resize_file(big, uintmax_t{1} << 30);
+    try {
+        loadEffectFile(big);
+        ADD_FAILURE() << "a 1 GiB compiled effect was read";
+    } catch (const CompileError& error) {
+        EXPECT_NE(error.diagnostics().front().message.find("MiB fxport reads"), std::string::npos) << error.diagnostics().front().format();
+    }
 }
 
 }  // namespace
