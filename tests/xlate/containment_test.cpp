@@ -403,4 +403,55 @@ TEST_F(Containment, OversizedCompiledEffectFileIsRefusedBeforeReading) {
     }
 }
 
+// Sizes (issue 26 item 4): computed in 64 bits from the compiled shader, through typedefs, nested
+// struct arrays and locals; refused with FX1204 at the declaration.
+struct SizeCase {
+    const char* name;
+    std::string effect;
+    int line;
+};
+
+void expectTooLarge(const SizeCase& c) {
+    try {
+        compileEffectSource(c.effect, std::string(c.name) + ".fx", uncached());
+        ADD_FAILURE() << c.name << " compiled";
+    } catch (const CompileError& error) {
+        const Diagnostic& d = error.diagnostics().front();
+        EXPECT_EQ(d.id, diag::kArrayTooLarge) << d.format();
+        EXPECT_EQ(d.location.line, c.line) << d.format();
+        EXPECT_EQ(d.location.file, std::string(c.name) + ".fx") << d.format();
+    }
+}
+
+const std::string kSizeTail = "float4 PS() : COLOR0 { return float4(1, 1, 1, 1); }\n"
+                              "technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }\n";
+
+TEST_F(Containment, ArrayBehindATypedefIsMeasured) {
+    expectTooLarge({"typedef_array",
+                    "typedef float4 Row[100000];\nRow Big;\nfloat4 VS(float4 p : POSITION0) : POSITION0 { return p + Big[3]; }\n" + kSizeTail, 2});
+}
+
+TEST_F(Containment, NestedStructArraysAreMultipliedIn64Bits) {
+    expectTooLarge({"nested_arrays",
+                    "struct Inner { float4 m[60000]; };\nstruct Outer { Inner i[60000]; };\nOuter Nested;\n"
+                    "float4 VS(float4 p : POSITION0) : POSITION0 { return p + Nested.i[1].m[2]; }\n" + kSizeTail,
+                    3});
+}
+
+TEST_F(Containment, HugeLocalArrayIsRefusedWhereDeclared) {
+    expectTooLarge({"local_array",
+                    "float4 VS(float4 p : POSITION0) : POSITION0 {\n    float4 a[10000000];\n    a[int(p.x)] = p;\n    return a[int(p.y)];\n}\n" + kSizeTail,
+                    2});
+}
+
+TEST_F(Containment, BonesAtTheElementLimitGetALocatedError) {
+    expectTooLarge({"bones", "float4x4 Bones[65536];\nfloat4 VS(float4 p : POSITION0, int i : BLENDINDICES0) : POSITION0 { return mul(p, Bones[i]); }\n" + kSizeTail, 1});
+}
+
+TEST_F(Containment, LargeButReasonableArraysStillCompile) {
+    CompiledEffect e = compileEffectSource(
+        "float4 Table[4096];\nfloat4 VS(float4 p : POSITION0, int i : BLENDINDICES0) : POSITION0 { return p + Table[i]; }\n" + kSizeTail, "ok.fx", uncached());
+    EXPECT_EQ(e.shaders.size(), 2u);
+}
+
 }  // namespace

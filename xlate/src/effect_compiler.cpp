@@ -33,6 +33,7 @@
 #include "preprocess.h"
 #include "render_states.h"
 #include "shader_profile.h"
+#include "spirv_sizes.h"
 #include "spirv_to_glsl.h"
 #include "text_util.h"
 
@@ -146,6 +147,7 @@ private:
                    const std::string& arguments, const std::string& source, const std::string& entryName,
                    const EntryWrapper& wrapper, bool dx9Compatible);
     bool resolveShader(const FxShaderExpr& expr, ShaderStage stage, ShaderChoice& choice, size_t blameToken);
+    void reportOversized(const OversizedVariable& over, size_t blameToken);
     bool buildSelector(TokenSpan span, std::vector<SelectorOp>& ops, size_t blameToken);
     int parameterIndex(const std::string& name) const {
         for (size_t i = 0; i < effect_.parameters.size(); ++i)
@@ -531,6 +533,10 @@ int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile
         }
         return -1;
     }
+    if (auto over = findOversizedVariable(spirv.words)) {
+        reportOversized(*over, expr.token);
+        return -1;
+    }
     GlslShader glsl = spirvToGlsl(std::move(spirv.words), expected, rewritten_, varyings_);
     if (!glsl.error.empty()) {
         error(diag::kSpirv, "SPIRV-Cross could not translate '" + expr.entry + "': " + glsl.error, expr.token);
@@ -566,6 +572,33 @@ int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile
     reflections_[index] = std::move(glsl);
     compiled_[key] = index;
     return index;
+}
+
+// FX1204 at the declaration of the variable SPIR-V names: a global, else the first `Type name[`
+// in the source (a local or a static), else the shader's assignment.
+void EffectBuilder::reportOversized(const OversizedVariable& over, size_t blameToken) {
+    size_t token = blameToken;
+    bool found = false;
+    for (const auto& g : syntax_.globals)
+        if (!found && g.name == over.name) token = g.token, found = true;
+    // `Type name[`: by the name, or (a local SPIR-V left unnamed) by the array's length.
+    for (size_t i = 1; !found && i + 2 < syntax_.tokens.size(); ++i) {
+        const Token& t = syntax_.tokens[i];
+        if (!t.isIdent() || !syntax_.tokens[i + 1].is("[") || !syntax_.tokens[i - 1].isIdent()) continue;
+        if (over.name.empty() ? over.length > 0 && syntax_.tokens[i + 2].text == std::to_string(over.length) : t.text == over.name)
+            token = i, found = true;
+    }
+    auto count = [](std::uint64_t n) { return n >= (std::uint64_t{1} << 62) ? std::string("more than 2^62") : std::to_string(n); };
+    const std::string limit = "fxport accepts at most " + std::to_string(limits::kMaxVariableBytes >> 20) + " MiB and " +
+                              std::to_string(limits::kMaxArrayElements) + " array elements in one variable";
+    if (!over.block.empty())
+        error(diag::kArrayTooLarge, "constant buffer '" + over.block + "' takes " + count(over.bytes) + " bytes (its largest member is '" + over.name +
+                                        "'); fxport accepts at most " + std::to_string(limits::kMaxVariableBytes >> 20) + " MiB in one constant buffer",
+              token);
+    else
+        error(diag::kArrayTooLarge, (!over.name.empty() ? "'" + over.name + "'" : found ? "'" + syntax_.tokens[token].text + "'" : std::string("a local array")) + " takes " + count(over.bytes) + " bytes (" +
+                                        count(over.elements) + " array elements in all, nested arrays multiplied); " + limit,
+              token);
 }
 
 bool EffectBuilder::resolveShader(const FxShaderExpr& expr, ShaderStage stage, ShaderChoice& choice, size_t blameToken) {
