@@ -454,4 +454,17 @@ TEST_F(Containment, LargeButReasonableArraysStillCompile) {
     EXPECT_EQ(e.shaders.size(), 2u);
 }
 
+// Messages (issue 26 item 10).
+TEST_F(Containment, ErrorOnAHugeLineQuotesOnlyAroundTheColumn) {
+    std::string line = "float4 VS(float4 p : POSITION0) : POSITION0 { return p; } " + std::string(3 << 20, ' ') + " float x = ;";
+    try {
+        compileEffectSource(line + "\n" + kSizeTail, "long_line.fx", uncached());
+        ADD_FAILURE() << "compiled";
+    } catch (const CompileError& error) {
+        std::string text = error.diagnostics().front().format();
+        EXPECT_LT(text.size(), 600u) << text.substr(0, 600);
+        EXPECT_NE(text.find("..."), std::string::npos) << text.substr(0, 600);
+    }
+}
+
 }  // namespace

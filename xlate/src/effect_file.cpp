@@ -3,6 +3,8 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <optional>
 #include <filesystem>
@@ -504,12 +506,14 @@ CompiledEffect deserializeEffect(std::string_view text, const std::string& nameF
 }
 
 void saveEffectFile(const CompiledEffect& effect, const std::string& path) {
+    errno = 0;
     std::ofstream out(path, std::ios::binary);
     if (out) out << serializeEffect(effect);
+    if (out) out.close();  // a full disk may only say so here
     if (!out) {
         Diagnostic d;
         d.id = diag::kEffectFile;
-        d.message = "cannot write '" + path + "'";
+        d.message = "cannot write '" + path + "'" + (errno ? std::string(" (") + std::strerror(errno) + ")" : std::string());
         d.location = {path, 0, 0};
         throw CompileError({d});
     }
