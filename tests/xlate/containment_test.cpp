@@ -467,4 +467,16 @@ TEST_F(Containment, ErrorOnAHugeLineQuotesOnlyAroundTheColumn) {
     }
 }
 
+TEST_F(Containment, HundredThousandParametersAreOneLocatedError) {
+    std::string text;
+    for (int i = 0; i < 100000; ++i) text += "float P" + std::to_string(i) + ";\n";
+    text += "float4 VS(float4 p : POSITION0) : POSITION0 { return p * (P0 + P99999); }\n" + kSizeTail;
+    std::string fx = write("many.fx", text);
+    RunResult r = runCli("compile " + sh(fx) + " --no-cache -o " + sh(path("many.fxeffect")));
+    ASSERT_TRUE(r.exited) << r.output.substr(0, 2000);
+    EXPECT_EQ(r.status, 1) << r.output.substr(0, 2000);
+    EXPECT_NE(r.output.find("many.fx(16385,7): error FX1205:"), std::string::npos) << r.output.substr(0, 2000);
+    EXPECT_EQ(r.output.find("input:0:0"), std::string::npos) << r.output.substr(0, 2000);
+}
+
 }  // namespace

@@ -106,6 +106,7 @@ public:
     }
 
     void buildParameters();
+    void checkMemberCounts() const;
     struct PackedMember {
         int begin = 0, end = 0;  // floats from the cbuffer's start, [begin, end)
         std::string name;
@@ -189,7 +190,26 @@ void EffectBuilder::checkPackOffsets(std::vector<PackedMember> packed) {
     }
 }
 
+// A SPIR-V instruction has at most 65535 words, so a struct (a cbuffer is one) of more members than
+// that comes out of glslang as an invalid module (raw validator lines on stderr, then FX2101 for
+// every shader, after seconds). D3D's 4096-register cbuffers hold at most 16384 scalars: refused
+// here, at the member past the limit, before any shader compiles.
+void EffectBuilder::checkMemberCounts() const {
+    auto refuse = [&](const std::string& what, size_t token) {
+        throw CompileError({at(Severity::Error, diag::kTooManyMembers,
+                               what + " has more than " + std::to_string(limits::kMaxMembers) + " members, the most fxport accepts in one", token)});
+    };
+    std::map<std::string, size_t> perBuffer;
+    for (const auto& g : syntax_.globals) {
+        if (std::find(g.modifiers.begin(), g.modifiers.end(), "static") != g.modifiers.end()) continue;
+        if (++perBuffer[g.cbuffer] > limits::kMaxMembers) refuse(g.cbuffer.empty() ? std::string("the global constant buffer ($Global)") : "cbuffer '" + g.cbuffer + "'", g.token);
+    }
+    for (const auto& s : syntax_.structs)
+        if (s.members.size() > limits::kMaxMembers) refuse("struct '" + s.name + "'", s.token);
+}
+
 void EffectBuilder::buildParameters() {
+    checkMemberCounts();
     struct Item {
         size_t token;
         Parameter p;
