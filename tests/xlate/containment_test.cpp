@@ -7,6 +7,7 @@
 // Paths are relative to the repository root (the tests run there, see CMakeLists.txt).
 #include <gtest/gtest.h>
 
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -24,6 +25,7 @@
 #include <nlohmann/json.hpp>
 
 #include "effect_validation.h"
+#include "front_end_worker.h"
 #include "fxport/xlate/diagnostics.h"
 #include "fxport/xlate/effect_compiler.h"
 #include "fxport/xlate/effect_file.h"
@@ -477,6 +479,18 @@ TEST_F(Containment, HundredThousandParametersAreOneLocatedError) {
     EXPECT_EQ(r.status, 1) << r.output.substr(0, 2000);
     EXPECT_NE(r.output.find("many.fx(16385,7): error FX1205:"), std::string::npos) << r.output.substr(0, 2000);
     EXPECT_EQ(r.output.find("input:0:0"), std::string::npos) << r.output.substr(0, 2000);
+}
+
+// A worker killed from outside (the OOM killer, a user's kill -9) is not "ran past its limit".
+TEST_F(Containment, WorkerKilledFromOutsideIsNotATimeLimit) {
+    WorkerOutcome o = runInWorker(
+        [] {
+            ::raise(SIGKILL);
+            return std::string("unreachable");
+        },
+        WorkerLimits{});
+    EXPECT_EQ(o.kind, WorkerOutcome::Kind::Crashed);
+    EXPECT_EQ(o.signal, SIGKILL);
 }
 
 }  // namespace
