@@ -23,9 +23,11 @@
 
 #include "fxport/xlate/effect_compiler.h"
 #include "fxport/xlate/effect_file.h"
+#include "output_file.h"
 
 namespace fs = std::filesystem;
 using namespace fxport::xlate;
+namespace cli = fxport::cli;
 
 namespace {
 
@@ -122,33 +124,6 @@ bool validDefine(const std::string& name, const std::string& body) {
     while (i < name.size() && (std::isalnum(static_cast<unsigned char>(name[i])) || name[i] == '_')) ++i;
     bool paramsOk = i == name.size() || (name[i] == '(' && name.back() == ')' && name.find_first_of("()", i + 1) == name.size() - 1);
     return paramsOk && name.find_first_of("\r\n") == std::string::npos && body.find_first_of("\r\n") == std::string::npos;
-}
-
-// Writes `text` to `path` through a temporary file in the same folder, renamed over `path` only
-// once complete: a compile killed mid-write leaves the previous output, never half a file.
-bool writeAtomically(const std::string& path, const std::string& text, std::string& error) {
-    fs::path target(path);
-    fs::path tmp = target;
-    tmp += ".tmp" + std::to_string(::getpid());
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (out) out.write(text.data(), static_cast<std::streamsize>(text.size()));
-        out.flush();
-        if (!out) {
-            std::error_code ec;
-            fs::remove(tmp, ec);
-            error = "cannot write '" + path + "'";
-            return false;
-        }
-    }
-    std::error_code ec;
-    fs::rename(tmp, target, ec);
-    if (ec) {
-        fs::remove(tmp, ec);
-        error = "cannot write '" + path + "' (" + ec.message() + ")";
-        return false;
-    }
-    return true;
 }
 
 // fxc's switches (fxc /?) beside ours. An argument with an attached value (/Tps_3_0, /DNAME=1,
@@ -309,12 +284,10 @@ std::string makeEscaped(const std::string& path) {
     return out;
 }
 
-void writeDepfile(const std::string& depfile, const std::string& output, const std::vector<std::string>& files) {
-    std::ofstream out(depfile);
-    out << makeEscaped(output) << ":";
-    for (const auto& f : files) out << " \\\n  " << makeEscaped(f);
-    out << "\n";
-    if (!out) throw std::runtime_error("cannot write the depfile '" + depfile + "'");
+std::string depfileText(const std::string& output, const std::vector<std::string>& files) {
+    std::string text = makeEscaped(output) + ":";
+    for (const auto& f : files) text += " \\\n  " + makeEscaped(f);
+    return text + "\n";
 }
 
 void printDiagnostics(const std::vector<Diagnostic>& diags, bool warnings) {
@@ -455,19 +428,32 @@ int main(int argc, char** argv) {
                 std::cerr << "fxport: compile needs one input and -o OUT (see 'fxport compile --help')\n";
                 return 2;
             }
-            std::error_code ec;
-            if (fs::exists(a.output, ec) && fs::equivalent(a.inputs[0], a.output, ec)) {
-                std::cerr << "fxport: option '-o' has a bad value '" << a.output << "': it is the input effect; name another file\n";
+            std::vector<cli::NamedFile> outputs = {{"-o", a.output}};
+            if (!a.depfile.empty()) outputs.push_back({"--depfile", a.depfile});
+            std::vector<cli::NamedFile> inputs = {{"the input", a.inputs[0]}};
+            if (std::string same = cli::findSameFile(outputs, inputs); !same.empty()) {
+                std::cerr << "fxport: " << same << "; name another file\n";
                 return 2;
             }
             CompiledEffect e = compileInput(a.inputs[0], a, a.options);
             printDiagnostics(e.diagnostics, true);
+            // The included files are known once the compile has read them (and checked its limits).
+            std::vector<std::string> dependencies = effectDependencies(a.inputs[0], a.options);
+            for (const auto& d : dependencies) inputs.push_back({"the included file", d});
+            if (std::string same = cli::findSameFile(outputs, inputs); !same.empty()) {
+                std::cerr << "fxport: " << same << "; name another file\n";
+                return 2;
+            }
             std::string writeError;
-            if (!writeAtomically(a.output, serializeEffect(e), writeError)) {
-                std::cerr << "fxport: " << writeError << "\n";
+            // The depfile first: an output without its depfile would be taken as up to date.
+            if (!a.depfile.empty() && !cli::writeOutputFile(a.depfile, depfileText(a.output, dependencies), writeError)) {
+                std::cerr << "fxport: --depfile: " << writeError << "\n";
                 return 1;
             }
-            if (!a.depfile.empty()) writeDepfile(a.depfile, a.output, effectDependencies(a.inputs[0], a.options));
+            if (!cli::writeOutputFile(a.output, serializeEffect(e), writeError)) {
+                std::cerr << "fxport: -o: " << writeError << "\n";
+                return 1;
+            }
             return 0;
         }
         if (a.command == "dump") {

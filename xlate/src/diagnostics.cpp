@@ -1,6 +1,23 @@
 #include "fxport/xlate/diagnostics.h"
 
+#include <algorithm>
+
 namespace fxport::xlate {
+
+namespace {
+
+// The source line from its first non-blank character; a line longer than kMaxQuoted (a minified
+// or generated file: one line of megabytes) is quoted only around the column, marked with "...".
+std::string quotedPart(const std::string& line, size_t first, int column) {
+    constexpr size_t kMaxQuoted = 160;
+    if (line.size() - first <= kMaxQuoted) return line.substr(first);
+    size_t at = column > 0 ? static_cast<size_t>(column - 1) : first;
+    size_t begin = std::max(first, at > kMaxQuoted / 2 ? at - kMaxQuoted / 2 : first);
+    begin = std::min(begin, line.size() - kMaxQuoted);
+    return (begin > first ? "..." : "") + line.substr(begin, kMaxQuoted) + (begin + kMaxQuoted < line.size() ? "..." : "");
+}
+
+}  // namespace
 
 std::string Diagnostic::format() const {
     std::string out = location.file.empty() ? std::string("<effect>") : location.file;
@@ -13,7 +30,7 @@ std::string Diagnostic::format() const {
     out += id + ": " + message;
     if (!sourceLine.empty()) {
         size_t first = sourceLine.find_first_not_of(" \t");
-        if (first != std::string::npos) out += "\n    " + sourceLine.substr(first);
+        if (first != std::string::npos) out += "\n    " + quotedPart(sourceLine, first, location.column);
     }
     return out;
 }

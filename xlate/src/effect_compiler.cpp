@@ -12,6 +12,7 @@
 #include <fstream>
 #include <map>
 #include <set>
+#include <functional>
 #include <mutex>
 #include <tuple>
 
@@ -33,6 +34,7 @@
 #include "preprocess.h"
 #include "render_states.h"
 #include "shader_profile.h"
+#include "spirv_sizes.h"
 #include "spirv_to_glsl.h"
 #include "text_util.h"
 
@@ -105,6 +107,7 @@ public:
     }
 
     void buildParameters();
+    void checkMemberCounts() const;
     struct PackedMember {
         int begin = 0, end = 0;  // floats from the cbuffer's start, [begin, end)
         std::string name;
@@ -146,6 +149,7 @@ private:
                    const std::string& arguments, const std::string& source, const std::string& entryName,
                    const EntryWrapper& wrapper, bool dx9Compatible);
     bool resolveShader(const FxShaderExpr& expr, ShaderStage stage, ShaderChoice& choice, size_t blameToken);
+    void reportOversized(const OversizedVariable& over, size_t blameToken);
     bool buildSelector(TokenSpan span, std::vector<SelectorOp>& ops, size_t blameToken);
     int parameterIndex(const std::string& name) const {
         for (size_t i = 0; i < effect_.parameters.size(); ++i)
@@ -187,7 +191,26 @@ void EffectBuilder::checkPackOffsets(std::vector<PackedMember> packed) {
     }
 }
 
+// A SPIR-V instruction has at most 65535 words, so a struct (a cbuffer is one) of more members than
+// that comes out of glslang as an invalid module (raw validator lines on stderr, then FX2101 for
+// every shader, after seconds). D3D's 4096-register cbuffers hold at most 16384 scalars: refused
+// here, at the member past the limit, before any shader compiles.
+void EffectBuilder::checkMemberCounts() const {
+    auto refuse = [&](const std::string& what, size_t token) {
+        throw CompileError({at(Severity::Error, diag::kTooManyMembers,
+                               what + " has more than " + std::to_string(limits::kMaxMembers) + " members, the most fxport accepts in one", token)});
+    };
+    std::map<std::string, size_t> perBuffer;
+    for (const auto& g : syntax_.globals) {
+        if (std::find(g.modifiers.begin(), g.modifiers.end(), "static") != g.modifiers.end()) continue;
+        if (++perBuffer[g.cbuffer] > limits::kMaxMembers) refuse(g.cbuffer.empty() ? std::string("the global constant buffer ($Global)") : "cbuffer '" + g.cbuffer + "'", g.token);
+    }
+    for (const auto& s : syntax_.structs)
+        if (s.members.size() > limits::kMaxMembers) refuse("struct '" + s.name + "'", s.token);
+}
+
 void EffectBuilder::buildParameters() {
+    checkMemberCounts();
     struct Item {
         size_t token;
         Parameter p;
@@ -535,6 +558,10 @@ int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile
         }
         return -1;
     }
+    if (auto over = findOversizedVariable(spirv.words)) {
+        reportOversized(*over, expr.token);
+        return -1;
+    }
     GlslShader glsl = spirvToGlsl(std::move(spirv.words), expected, rewritten_, varyings_);
     if (!glsl.error.empty()) {
         error(diag::kSpirv, "SPIRV-Cross could not translate '" + expr.entry + "': " + glsl.error, expr.token);
@@ -570,6 +597,33 @@ int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile
     reflections_[index] = std::move(glsl);
     compiled_[key] = index;
     return index;
+}
+
+// FX1204 at the declaration of the variable SPIR-V names: a global, else the first `Type name[`
+// in the source (a local or a static), else the shader's assignment.
+void EffectBuilder::reportOversized(const OversizedVariable& over, size_t blameToken) {
+    size_t token = blameToken;
+    bool found = false;
+    for (const auto& g : syntax_.globals)
+        if (!found && g.name == over.name) token = g.token, found = true;
+    // `Type name[`: by the name, or (a local SPIR-V left unnamed) by the array's length.
+    for (size_t i = 1; !found && i + 2 < syntax_.tokens.size(); ++i) {
+        const Token& t = syntax_.tokens[i];
+        if (!t.isIdent() || !syntax_.tokens[i + 1].is("[") || !syntax_.tokens[i - 1].isIdent()) continue;
+        if (over.name.empty() ? over.length > 0 && syntax_.tokens[i + 2].text == std::to_string(over.length) : t.text == over.name)
+            token = i, found = true;
+    }
+    auto count = [](std::uint64_t n) { return n >= (std::uint64_t{1} << 62) ? std::string("more than 2^62") : std::to_string(n); };
+    const std::string limit = "fxport accepts at most " + std::to_string(limits::kMaxVariableBytes >> 20) + " MiB and " +
+                              std::to_string(limits::kMaxArrayElements) + " array elements in one variable";
+    if (!over.block.empty())
+        error(diag::kArrayTooLarge, "constant buffer '" + over.block + "' takes " + count(over.bytes) + " bytes (its largest member is '" + over.name +
+                                        "'); fxport accepts at most " + std::to_string(limits::kMaxVariableBytes >> 20) + " MiB in one constant buffer",
+              token);
+    else
+        error(diag::kArrayTooLarge, (!over.name.empty() ? "'" + over.name + "'" : found ? "'" + syntax_.tokens[token].text + "'" : std::string("a local array")) + " takes " + count(over.bytes) + " bytes (" +
+                                        count(over.elements) + " array elements in all, nested arrays multiplied); " + limit,
+              token);
 }
 
 bool EffectBuilder::resolveShader(const FxShaderExpr& expr, ShaderStage stage, ShaderChoice& choice, size_t blameToken) {
@@ -929,6 +983,77 @@ void warmFrontEnd() {
     });
 }
 
+// What a worker sends back: the effect (with each shader's rewritten HLSL when it was kept, which
+// a compiled-effect file does not hold) or the errors that stopped the compile.
+std::string workerPayload(const std::function<CompiledEffect()>& compile) {
+    nlohmann::json result;
+    try {
+        CompiledEffect effect = compile();
+        result["effect"] = serializeEffect(effect, true);
+        nlohmann::json rewritten = nlohmann::json::array();
+        for (const auto& s : effect.shaders) rewritten.push_back(s.hlslAfterRewrite);
+        result["rewritten"] = std::move(rewritten);
+    } catch (const CompileError& e) {
+        result["errors"] = diagnosticsJson(e.diagnostics());
+    } catch (const std::bad_alloc&) {
+        throw;
+    } catch (const std::exception& e) {
+        result["exception"] = e.what();
+    }
+    return result.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+CompiledEffect effectFromPayload(const std::string& payload, const std::string& displayPath) {
+    nlohmann::json result = nlohmann::json::parse(payload);
+    if (result.contains("errors")) throw CompileError(diagnosticsFrom(result["errors"]));
+    if (result.contains("exception")) throw std::runtime_error(result["exception"].get<std::string>());
+    CompiledEffect effect = deserializeEffect(result.at("effect").get<std::string>(), displayPath);
+    const auto& rewritten = result.at("rewritten");
+    for (size_t i = 0; i < effect.shaders.size() && i < rewritten.size(); ++i) effect.shaders[i].hlslAfterRewrite = rewritten[i].get<std::string>();
+    return effect;
+}
+
+// The diagnostic for a worker that did not return. `shaderKey` gets the ShaderKey::text() of the
+// shader it was compiling, if any (the diagnostic then points at that shader's entry point).
+Diagnostic describeWorkerFailure(const WorkerOutcome& outcome, const WorkerLimits& limits, const std::string& displayPath,
+                                 const FailedShaders& failed, bool locateShader, std::string& shaderKey) {
+    const std::string what = outcome.kind == WorkerOutcome::Kind::TimedOut
+                                 ? "ran past its limit of " + std::to_string(limits.cpuSeconds) + " s of CPU time"
+                             : outcome.kind == WorkerOutcome::Kind::OutOfMemory
+                                 ? "ran past its limit of " + std::to_string(limits.memoryBytes >> 20) + " MiB of memory"
+                             : outcome.signal == SIGKILL ? std::string("was killed from outside (SIGKILL: the OOM killer or a user)")
+                                                         : std::string("crashed (") + signalName(outcome.signal) + ")";
+    const char* id = outcome.kind == WorkerOutcome::Kind::TimedOut      ? diag::kFrontEndTimeout
+                     : outcome.kind == WorkerOutcome::Kind::OutOfMemory ? diag::kFrontEndMemory
+                                                                        : diag::kFrontEndCrashed;
+    // progress: "shader\t<key>\t<entry>\t<profile>\t<file>\t<line>\t<column>", "preprocess" or "parse".
+    std::vector<std::string> f;
+    for (size_t at = 0;;) {
+        size_t tab = outcome.progress.find('\t', at);
+        f.push_back(outcome.progress.substr(at, tab == std::string::npos ? std::string::npos : tab - at));
+        if (tab == std::string::npos) break;
+        at = tab + 1;
+    }
+    Diagnostic d;
+    if (f.size() == 7 && f[0] == "shader" && !failed.count(f[1]) && locateShader) {
+        d.id = id;
+        d.message = "the HLSL front end failed on this shader (" + f[2] + ", " + f[3] + "): glslang/SPIRV-Cross " + what;
+        d.location = {f[4], std::atoi(f[5].c_str()), std::atoi(f[6].c_str())};
+        shaderKey = f[1];
+        return d;
+    }
+    if (f[0] == "preprocess" && outcome.kind != WorkerOutcome::Kind::Crashed) {
+        d.id = diag::kMacroLimit;  // the preprocessor's only unbounded work is macro expansion
+        d.message = "preprocessing the effect " + what + ": a macro expands without bound";
+    } else {
+        d.id = id;
+        d.message = std::string("the HLSL front end failed on this effect while ") +
+                    (f[0] == "preprocess" ? "preprocessing it" : f[0] == "parse" ? "reading it" : "compiling a shader") + ": it " + what;
+    }
+    d.location = {displayPath, 0, 0};
+    return d;
+}
+
 CompiledEffect compileInWorker(const std::string& source, const std::string& displayPath, const std::string& absolutePath,
                                const CompileOptions& options, const std::string& key) {
     const WorkerLimits limits = WorkerLimits::fromEnvironment();
@@ -936,64 +1061,38 @@ CompiledEffect compileInWorker(const std::string& source, const std::string& dis
     FailedShaders failed;
     for (int attempt = 0;; ++attempt) {
         WorkerOutcome outcome = runInWorker(
-            [&] {
-                nlohmann::json result;
-                try {
-                    result["effect"] = serializeEffect(compileUncached(source, displayPath, absolutePath, options, key, failed, nullptr), true);
-                } catch (const CompileError& e) {
-                    result["errors"] = diagnosticsJson(e.diagnostics());
-                } catch (const std::bad_alloc&) {
-                    throw;
-                } catch (const std::exception& e) {
-                    result["exception"] = e.what();
-                }
-                return result.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-            },
+            [&] { return workerPayload([&] { return compileUncached(source, displayPath, absolutePath, options, key, failed, nullptr); }); },
             limits);
-        if (outcome.kind == WorkerOutcome::Kind::Done) {
-            nlohmann::json result = nlohmann::json::parse(outcome.payload);
-            if (result.contains("errors")) throw CompileError(diagnosticsFrom(result["errors"]));
-            if (result.contains("exception")) throw std::runtime_error(result["exception"].get<std::string>());
-            return deserializeEffect(result.at("effect").get<std::string>(), displayPath);
-        }
-        const std::string what = outcome.kind == WorkerOutcome::Kind::TimedOut
-                                     ? "ran past its limit of " + std::to_string(limits.cpuSeconds) + " s of CPU time"
-                                 : outcome.kind == WorkerOutcome::Kind::OutOfMemory
-                                     ? "ran past its limit of " + std::to_string(limits.memoryBytes >> 20) + " MiB of memory"
-                                     : std::string("crashed (") + signalName(outcome.signal) + ")";
-        const char* id = outcome.kind == WorkerOutcome::Kind::TimedOut      ? diag::kFrontEndTimeout
-                         : outcome.kind == WorkerOutcome::Kind::OutOfMemory ? diag::kFrontEndMemory
-                                                                            : diag::kFrontEndCrashed;
-        // progress: "shader\t<key>\t<entry>\t<profile>\t<file>\t<line>\t<column>", "preprocess" or "parse".
-        std::vector<std::string> f;
-        for (size_t at = 0;;) {
-            size_t tab = outcome.progress.find('\t', at);
-            f.push_back(outcome.progress.substr(at, tab == std::string::npos ? std::string::npos : tab - at));
-            if (tab == std::string::npos) break;
-            at = tab + 1;
-        }
-        Diagnostic d;
-        if (f.size() == 7 && f[0] == "shader" && !failed.count(f[1]) && attempt < 8) {
-            d.id = id;
-            d.message = "the HLSL front end failed on this shader (" + f[2] + ", " + f[3] + "): glslang/SPIRV-Cross " + what;
-            d.location = {f[4], std::atoi(f[5].c_str()), std::atoi(f[6].c_str())};
-            failed[f[1]] = d;
-            continue;  // again, without that shader
-        }
-        if (f[0] == "preprocess" && outcome.kind != WorkerOutcome::Kind::Crashed) {
-            d.id = diag::kMacroLimit;  // the preprocessor's only unbounded work is macro expansion
-            d.message = "preprocessing the effect " + what + ": a macro expands without bound";
-        } else {
-            d.id = id;
-            d.message = std::string("the HLSL front end failed on this effect while ") +
-                        (f[0] == "preprocess" ? "preprocessing it" : f[0] == "parse" ? "reading it" : "compiling a shader") + ": it " + what;
-        }
-        d.location = {displayPath, 0, 0};
-        throw CompileError({d});
+        if (outcome.kind == WorkerOutcome::Kind::Done) return effectFromPayload(outcome.payload, displayPath);
+        std::string shaderKey;
+        Diagnostic d = describeWorkerFailure(outcome, limits, displayPath, failed, attempt < 8, shaderKey);
+        if (shaderKey.empty()) throw CompileError({d});
+        failed[shaderKey] = d;  // again, without that shader
     }
 }
 
 }  // namespace
+
+bool compilesInThisProcess(const CompileOptions& options) {
+    const char* inProcess = std::getenv("FXPORT_IN_PROCESS");
+    return options.inProcess || insideWorker() || (inProcess && *inProcess == '1');
+}
+
+CompiledEffect compileContained(const std::function<CompiledEffect()>& compile, const std::string& displayPath) {
+    const WorkerLimits limits = WorkerLimits::fromEnvironment();
+    warmFrontEnd();
+    WorkerOutcome outcome = runInWorker([&] { return workerPayload(compile); }, limits);
+    if (outcome.kind == WorkerOutcome::Kind::Done) return effectFromPayload(outcome.payload, displayPath);
+    std::string shaderKey;
+    throw CompileError({describeWorkerFailure(outcome, limits, displayPath, {}, true, shaderKey)});
+}
+
+std::optional<CompiledEffect> cachedEffectText(const std::string& source, const std::string& displayPath,
+                                               const std::string& absolutePath, const CompileOptions& options) {
+    const char* dump = std::getenv("FXPORT_DUMP");
+    if (!options.useCache || options.keepRewrittenHlsl || (dump && *dump)) return std::nullopt;
+    return loadCachedEffect(options.cacheDir, cacheKey(source, displayPath, absolutePath, options));
+}
 
 CompiledEffect compileEffectText(const std::string& source, const std::string& displayPath, const std::string& absolutePath,
                                  const CompileOptions& optionsIn, VaryingLocations* sharedVaryings) {
@@ -1005,12 +1104,10 @@ CompiledEffect compileEffectText(const std::string& source, const std::string& d
         key = cacheKey(source, displayPath, absolutePath, options);
         if (auto cached = loadCachedEffect(options.cacheDir, key)) return std::move(*cached);
     }
-    // The rewritten HLSL is not part of a compiled-effect file, so a compile that keeps it stays here;
-    // so do loose shader files compiled together (their shared varying locations live in this
-    // process). FXPORT_IN_PROCESS=1 does the same for every compile (debugging, measuring the
-    // worker's cost).
-    const char* inProcess = std::getenv("FXPORT_IN_PROCESS");
-    if (options.inProcess || options.keepRewrittenHlsl || sharedVaryings || (inProcess && *inProcess == '1'))
+    // Loose shader files compiled together share varying locations: compileShaderFiles() runs all
+    // of them in one worker, and they compile here, inside it. FXPORT_IN_PROCESS=1 compiles every
+    // effect here (debugging, measuring the worker's cost).
+    if (sharedVaryings || compilesInThisProcess(options))
         return compileUncached(source, displayPath, absolutePath, options, key, {}, sharedVaryings);
     return compileInWorker(source, displayPath, absolutePath, options, key);
 }

@@ -3,8 +3,11 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <optional>
+#include <filesystem>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -12,6 +15,7 @@
 
 #include "effect_validation.h"
 #include "shader_profile.h"
+#include "input_limits.h"
 #include "text_util.h"
 
 using nlohmann::json;
@@ -336,6 +340,28 @@ std::optional<std::string> floatOutsideAFloatField(const json& j, const std::str
     return std::nullopt;
 }
 
+// True when `text` opens more than limits::kMaxEffectFileNesting arrays and objects at once
+// (outside strings). Checked before parsing: nlohmann's parser recurses once per level, so a file
+// of 200 000 `[` overflows the stack before any checksum could be compared.
+bool nestsTooDeep(std::string_view text) {
+    int depth = 0;
+    bool inString = false;
+    for (size_t i = 0; i < text.size(); ++i) {
+        char c = text[i];
+        if (inString) {
+            if (c == '\\') ++i;
+            else if (c == '"') inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > limits::kMaxEffectFileNesting) return true;
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+    return false;
+}
+
 }  // namespace
 
 std::string resealEffectFile(std::string_view text) {
@@ -378,6 +404,9 @@ CompiledEffect deserializeEffect(std::string_view text, const std::string& nameF
         d.location = {nameForErrors, 0, 0};
         throw CompileError({d});
     };
+    if (nestsTooDeep(text))
+        return fail("not a compiled effect file: its JSON nests more than " + std::to_string(limits::kMaxEffectFileNesting) +
+                    " levels deep (a compiled effect needs far fewer)");
     json j;
     try {
         j = json::parse(text.begin(), text.end());
@@ -477,23 +506,31 @@ CompiledEffect deserializeEffect(std::string_view text, const std::string& nameF
 }
 
 void saveEffectFile(const CompiledEffect& effect, const std::string& path) {
+    errno = 0;
     std::ofstream out(path, std::ios::binary);
     if (out) out << serializeEffect(effect);
+    if (out) out.close();  // a full disk may only say so here
     if (!out) {
         Diagnostic d;
         d.id = diag::kEffectFile;
-        d.message = "cannot write '" + path + "'";
+        d.message = "cannot write '" + path + "'" + (errno ? std::string(" (") + std::strerror(errno) + ")" : std::string());
         d.location = {path, 0, 0};
         throw CompileError({d});
     }
 }
 
 CompiledEffect loadEffectFile(const std::string& path) {
-    auto text = readFile(path);
+    std::error_code ec;
+    auto size = std::filesystem::file_size(path, ec);
+    auto text = readFile(path, limits::kMaxEffectFileBytes);
     if (!text) {
         Diagnostic d;
         d.id = diag::kEffectFile;
-        d.message = "cannot open compiled effect '" + path + "'";
+        d.message = !ec && size > limits::kMaxEffectFileBytes
+                        ? "compiled effect '" + path + "' has " + std::to_string(size) + " bytes, more than the " +
+                              std::to_string(limits::kMaxEffectFileBytes >> 20) + " MiB fxport reads"
+                        : "cannot open compiled effect '" + path + "'" +
+                              (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec) ? ": not a regular file" : "");
         d.location = {path, 0, 0};
         throw CompileError({d});
     }

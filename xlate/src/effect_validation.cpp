@@ -17,9 +17,14 @@ constexpr int kMaxLocation = 32;
 
 bool within(long long v, long long lo, long long hi) { return v >= lo && v <= hi; }
 
-std::optional<std::string> checkChoice(const ShaderChoice& c, const CompiledEffect& e, const std::string& where) {
+std::optional<std::string> checkChoice(const ShaderChoice& c, const CompiledEffect& e, const std::string& where, bool passValid) {
     for (int s : c.shaders)
         if (!within(s, -1, static_cast<long long>(e.shaders.size()) - 1)) return where + " names shader #" + std::to_string(s) + ", which does not exist";
+    // -1 is a NULL element of a shader array (chosen at Apply by index) or a shader that failed
+    // in a pass marked invalid; a valid pass's one shader must exist.
+    if (passValid && c.selector.empty())
+        for (int s : c.shaders)
+            if (s < 0) return where + " names shader #" + std::to_string(s) + " and no shader array to choose from";
     for (const auto& op : c.selector)
         if (op.kind != SelectorOp::Kind::PushConstant && !within(op.value, 0, static_cast<long long>(e.parameters.size()) - 1))
             return where + " selects by parameter #" + std::to_string(op.value) + ", which does not exist";
@@ -79,7 +84,7 @@ std::optional<std::string> findEffectInconsistency(const CompiledEffect& e) {
         for (const auto& p : t.passes) {
             const std::string where = "pass '" + t.name + "/" + p.name + "'";
             for (const ShaderChoice* c : {&p.vertexShader, &p.pixelShader, &p.geometryShader})
-                if (auto problem = checkChoice(*c, e, where)) return problem;
+                if (auto problem = checkChoice(*c, e, where, p.valid)) return problem;
             for (const auto& st : p.states) {
                 if (!within(st.index, 0, 7)) return where + " sets a state of render target " + std::to_string(st.index);
                 if (!within(st.parameter, -1, static_cast<long long>(e.parameters.size()) - 1))

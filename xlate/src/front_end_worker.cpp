@@ -113,6 +113,8 @@ WorkerLimits WorkerLimits::fromEnvironment() {
 
 void reportWorkerProgress(std::string_view where) { writeRecord('P', where); }
 
+bool insideWorker() { return g_workerFd >= 0; }
+
 WorkerOutcome runInWorker(const std::function<std::string()>& work, const WorkerLimits& limits) {
     WorkerOutcome out;
     int fds[2];
@@ -176,7 +178,8 @@ WorkerOutcome runInWorker(const std::function<std::string()>& work, const Worker
     }
     if (gotResult && !timedOut && WIFEXITED(status) && WEXITSTATUS(status) == 0) return out;
     if (outOfMemory) out.kind = WorkerOutcome::Kind::OutOfMemory;
-    else if (timedOut || (WIFSIGNALED(status) && (WTERMSIG(status) == SIGXCPU || WTERMSIG(status) == SIGKILL)))
+    // SIGKILL is ours only when the wall-clock limit sent it; otherwise the OOM killer or a user.
+    else if (timedOut || (WIFSIGNALED(status) && WTERMSIG(status) == SIGXCPU))
         out.kind = WorkerOutcome::Kind::TimedOut;
     else out.kind = WorkerOutcome::Kind::Crashed;
     out.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;

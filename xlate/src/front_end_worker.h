@@ -33,6 +33,9 @@ struct WorkerOutcome {
 // Falls back to running `work` here when fork fails.
 WorkerOutcome runInWorker(const std::function<std::string()>& work, const WorkerLimits& limits);
 
+// True in a worker process (a compile there runs in it, never in a worker of its own).
+bool insideWorker();
+
 // Inside a worker: records what it is about to do (the last record before a crash says where).
 // Outside a worker: does nothing.
 void reportWorkerProgress(std::string_view where);

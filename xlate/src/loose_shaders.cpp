@@ -3,8 +3,10 @@
 #include "loose_shaders.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <map>
 
+#include "input_limits.h"
 #include "shader_profile.h"
 #include "spirv_to_glsl.h"
 #include "text_util.h"
@@ -25,8 +27,15 @@ constexpr const char* kTechnique = "fxport_loose_shaders";
 
 // One file with the technique that names its entry points appended (after its last line, so its
 // own lines keep their numbers).
+// Thrown by compileOneFile when only the cache was to be asked and it had no entry.
+struct NotCached {};
+
 CompiledEffect compileOneFile(const std::string& path, const std::vector<const ShaderEntry*>& entries, CompileOptions options,
-                              VaryingLocations* shared) {
+                              VaryingLocations* shared, bool cacheOnly) {
+    std::error_code ec;
+    if (auto size = std::filesystem::file_size(path, ec); !ec && size > limits::kMaxFileBytes)
+        fail(diag::kInputTooLarge, path, "the file has " + std::to_string(size) + " bytes; fxport compiles source files of at most " +
+                                             std::to_string(limits::kMaxFileBytes >> 20) + " MiB");
     auto raw = readFile(path);
     if (!raw) fail(diag::kFileUnreadable, path, "cannot open '" + path + "'");
     std::string pass;
@@ -51,6 +60,10 @@ CompiledEffect compileOneFile(const std::string& path, const std::vector<const S
         source += technique;
     }
     options.techniques = {kTechnique};
+    if (cacheOnly) {
+        if (auto cached = cachedEffectText(source, path, path, options)) return std::move(*cached);
+        throw NotCached{};
+    }
     try {
         return compileEffectText(source, path, path, options, shared);
     } catch (const CompileError& error) {
@@ -136,9 +149,9 @@ std::vector<int> mergeInto(CompiledEffect& merged, const CompiledEffect& part, c
     return shaderMap;
 }
 
-}  // namespace
-
-CompiledEffect compileShaderFiles(const std::vector<ShaderEntry>& entries, const CompileOptions& optionsIn) {
+// The files compiled one by one and merged; with `cacheOnly`, from the cache alone (NotCached
+// when an entry is missing).
+CompiledEffect compileAndMerge(const std::vector<ShaderEntry>& entries, const CompileOptions& optionsIn, bool cacheOnly) {
     if (entries.empty()) fail(diag::kMissingEntry, "", "no entry point given (--entry NAME --profile vs_5_0, fxc /E /T)");
     std::vector<std::string> files;  // in the order first named
     std::map<std::string, std::vector<const ShaderEntry*>> byFile;
@@ -160,7 +173,7 @@ CompiledEffect compileShaderFiles(const std::vector<ShaderEntry>& entries, const
     Pass pass;
     pass.name = "P0";
     for (const auto& file : files) {
-        CompiledEffect part = compileOneFile(file, byFile[file], options, &varyings);
+        CompiledEffect part = compileOneFile(file, byFile[file], options, &varyings, cacheOnly);
         const Pass& partPass = part.techniques.at(0).passes.at(0);
         pass.valid = pass.valid && partPass.valid;
         if (&file == &files.front()) {
@@ -202,6 +215,24 @@ CompiledEffect compileShaderFiles(const std::vector<ShaderEntry>& entries, const
     merged.techniques = {std::move(technique)};
     merged.uniformBufferSize = merged.uniformBlocks.empty() ? 0 : merged.uniformBlocks[0].size;
     return merged;
+}
+
+}  // namespace
+
+// All files and the merge in one front-end worker, as an effect file compiles: glslang, SPIRV-Tools
+// and SPIRV-Cross crash on some shaders and have no bound on some work, and the files share
+// custom varying locations, which must live in the process that compiles them all. A cache hit
+// (one file; several are never cached) starts no worker.
+CompiledEffect compileShaderFiles(const std::vector<ShaderEntry>& entries, const CompileOptions& options) {
+    if (compilesInThisProcess(options)) return compileAndMerge(entries, options, false);
+    if (options.useCache) {
+        try {
+            return compileAndMerge(entries, options, true);
+        } catch (const NotCached&) {
+        }
+    }
+    const std::string displayPath = entries.empty() ? std::string() : entries.front().path;
+    return compileContained([&] { return compileAndMerge(entries, options, false); }, displayPath);
 }
 
 }  // namespace fxport::xlate

@@ -5,6 +5,8 @@
 // custom varying locations, and the results are merged into one effect.
 #pragma once
 
+#include <functional>
+#include <optional>
 #include <string>
 
 #include "fxport/xlate/effect_compiler.h"
@@ -17,5 +19,19 @@ class VaryingLocations;
 // `sharedVaryings` is given.
 CompiledEffect compileEffectText(const std::string& source, const std::string& displayPath, const std::string& absolutePath,
                                  const CompileOptions& options, VaryingLocations* sharedVaryings);
+
+// effect_compiler.cpp: whether compiles run in this process (CompileOptions::inProcess,
+// FXPORT_IN_PROCESS=1, or already inside a front-end worker) rather than in a worker.
+bool compilesInThisProcess(const CompileOptions& options);
+
+// effect_compiler.cpp: runs `compile` in one front-end worker (front_end_worker.h) and returns its
+// effect, the rewritten HLSL of each shader included; a worker that crashes or runs past a limit
+// is a CompileError at the shader it was compiling (FX9001..FX9003).
+CompiledEffect compileContained(const std::function<CompiledEffect()>& compile, const std::string& displayPath);
+
+// effect_compiler.cpp: the effect the cache holds for this text and options; nullopt without
+// compiling anything when it holds none.
+std::optional<CompiledEffect> cachedEffectText(const std::string& source, const std::string& displayPath,
+                                               const std::string& absolutePath, const CompileOptions& options);
 
 }  // namespace fxport::xlate

@@ -74,6 +74,22 @@ std::optional<std::string> readFile(const std::string& path) {
     return ss.str();
 }
 
+std::optional<std::string> readFile(const std::string& path, size_t maxBytes) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) return std::nullopt;
+    if (auto size = std::filesystem::file_size(path, ec); ec || size > maxBytes) return std::nullopt;
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return std::nullopt;
+    std::string text(maxBytes + 1 > (size_t{1} << 16) ? size_t{1} << 16 : maxBytes + 1, '\0');
+    std::string out;
+    while (in.read(text.data(), static_cast<std::streamsize>(text.size())) || in.gcount() > 0) {
+        out.append(text.data(), static_cast<size_t>(in.gcount()));
+        if (out.size() > maxBytes) return std::nullopt;  // grew since the size was read
+    }
+    if (in.bad()) return std::nullopt;
+    return out;
+}
+
 namespace {
 std::uint64_t fnv1a(std::string_view data, std::uint64_t h) {
     for (unsigned char c : data) {

@@ -18,6 +18,8 @@ bool startsWithI(std::string_view s, std::string_view prefix);
 std::string toValidUtf8(std::string_view s);
 // Reads a whole file; nullopt if it cannot be opened.
 std::optional<std::string> readFile(const std::string& path);
+// The same, refusing (nullopt) a file of more than `maxBytes`, checked before reading it whole.
+std::optional<std::string> readFile(const std::string& path, size_t maxBytes);
 // 64-bit FNV-1a, as hex: stable across runs and machines (cache keys).
 std::string hashHex(std::string_view data);
 // 128 bits as 32 hex digits (two independent 64-bit hashes): names cache entries and fingerprints

@@ -2,6 +2,7 @@
 // key=value pairs) and their page images, mapped onto XNA's SpriteFont (sprite_font_import.h).
 #include <stb_image.h>
 
+#include <climits>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +14,7 @@
 #include "fxport/framework/sprite_font_import.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/sprite_font.h"
+#include "fxport/platform/file_reading.h"
 #include "glyph_atlas.h"
 
 namespace fxport {
@@ -74,10 +76,12 @@ private:
 }  // namespace
 
 std::unique_ptr<SpriteFont> LoadBMFont(GraphicsDevice& device, const std::string& fntFile) {
-    std::ifstream in(fntFile, std::ios::binary);
-    if (!in) throw ArgumentError("BMFont: cannot open '" + fntFile + "'");
+    platform::FileBytes fnt = platform::readUntrustedFile(fntFile);
+    if (!fnt.ok()) throw ArgumentError("BMFont: " + fnt.error);
+    std::istringstream in(std::string(fnt.bytes.begin(), fnt.bytes.end()));
     std::string firstBytes(3, '\0');
     in.read(firstBytes.data(), 3);
+    in.clear();
     if (firstBytes == "BMF")
         throw ArgumentError(fntFile + ": binary BMFont files are not read; export the text format (.fnt 'text')");
     if (firstBytes[0] == '<')
@@ -119,10 +123,13 @@ std::unique_ptr<SpriteFont> LoadBMFont(GraphicsDevice& device, const std::string
     // Page images, premultiplied (BMFont pages are straight alpha).
     struct Page { int width = 0, height = 0; std::vector<Color> texels; };
     std::map<int, Page> pages;
-    for (const auto& [id, file] : pageFiles) {
-        const std::string path = (std::filesystem::path(fntFile).parent_path() / file).string();
+    for (const auto& [id, pageFile] : pageFiles) {
+        const std::string path = (std::filesystem::path(fntFile).parent_path() / pageFile).string();
         int w = 0, h = 0, channels = 0;
-        stbi_uc* data = stbi_load(path.c_str(), &w, &h, &channels, 4);
+        platform::FileBytes image = platform::readUntrustedFile(path);
+        if (!image.ok()) throw ArgumentError(fntFile + ": page " + std::to_string(id) + ": " + image.error);
+        if (image.bytes.size() > std::size_t(INT_MAX)) throw ArgumentError(fntFile + ": page '" + path + "' is too large");
+        stbi_uc* data = stbi_load_from_memory(image.bytes.data(), int(image.bytes.size()), &w, &h, &channels, 4);
         if (!data) throw ArgumentError(fntFile + ": page " + std::to_string(id) + " '" + path + "': " + stbi_failure_reason());
         Page page;
         page.width = w;

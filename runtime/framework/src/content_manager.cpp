@@ -86,6 +86,14 @@ std::vector<std::string> ContentManager::candidates(const std::string& folder, c
 std::string ContentManager::locate(const std::string& assetName, const char* type,
                                    const std::vector<std::string>& paths) const {
     if (assetName.empty()) throw ArgumentError(std::string("ContentManager.Load<") + type + ">: empty asset name");
+    // Asset names stay inside RootDirectory, as #include stays inside the include root: a name
+    // that is absolute or climbs out with `..` would load any file the process can read.
+    const fs::path name(assetName);
+    const fs::path normal = name.lexically_normal();
+    if (name.has_root_path() || (!normal.empty() && *normal.begin() == ".."))
+        throw ContentLoadException(std::string("ContentManager.Load<") + type + ">(" + quoted(assetName) +
+                                   "): the asset name leaves the RootDirectory '" + RootDirectory +
+                                   "'; name assets relative to it, without '..' above it");
     for (const std::string& path : paths) {
         std::error_code error;
         if (fs::is_regular_file(path, error)) return path;

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "fxport/platform/file_reading.h"
 #include "fxport/framework/sprite_font_import.h"
 #include "fxport/graphics/errors.h"
 
@@ -158,11 +159,9 @@ float number(const DescriptionReader& reader, const std::string& text, std::size
 }  // namespace
 
 FontDescription ReadFontDescription(const std::string& spritefontFile) {
-    std::ifstream in(spritefontFile, std::ios::binary);
-    if (!in) throw ArgumentError("SpriteFont: cannot open '" + spritefontFile + "'");
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    const DescriptionReader reader(spritefontFile, buffer.str());
+    platform::FileBytes file = platform::readUntrustedFile(spritefontFile);
+    if (!file.ok()) throw ArgumentError("SpriteFont: " + file.error);
+    const DescriptionReader reader(spritefontFile, std::string(file.bytes.begin(), file.bytes.end()));
     FontDescription d;
     auto name = reader.element("FontName");
     if (!name || trim(name->first).empty()) reader.fail(0, "no <FontName>");

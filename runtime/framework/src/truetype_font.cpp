@@ -14,6 +14,7 @@
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/sprite_font.h"
 #include "fxport/graphics/texture.h"
+#include "fxport/platform/file_reading.h"
 #include "glyph_atlas.h"
 
 namespace fxport {
@@ -21,9 +22,28 @@ namespace fxport {
 namespace {
 
 std::vector<unsigned char> readFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw ArgumentError("SpriteFont: cannot open the font file '" + path + "'");
-    return std::vector<unsigned char>(std::istreambuf_iterator<char>(in), {});
+    platform::FileBytes file = platform::readUntrustedFile(path);
+    if (!file.ok()) throw ArgumentError("SpriteFont: cannot read the font file: " + file.error);
+    return std::move(file.bytes);
+}
+
+std::uint32_t bigEndian32(const std::vector<unsigned char>& b, std::size_t at) {
+    return std::uint32_t(b[at]) << 24 | std::uint32_t(b[at + 1]) << 16 | std::uint32_t(b[at + 2]) << 8 | b[at + 3];
+}
+
+// stb_truetype trusts the file: the table directory's offsets and lengths are read unchecked, so
+// a truncated or damaged font makes it read past the buffer. Every table the directory lists
+// must lie inside the file (and the directory itself), before stbtt_InitFont sees it.
+bool tablesInsideFile(const std::vector<unsigned char>& bytes, std::size_t offset) {
+    if (offset + 12 > bytes.size()) return false;
+    const std::size_t tables = std::size_t(bytes[offset + 4]) << 8 | bytes[offset + 5];
+    if (offset + 12 + tables * 16 > bytes.size()) return false;
+    for (std::size_t t = 0; t < tables; ++t) {
+        const std::size_t record = offset + 12 + t * 16;
+        const std::uint64_t start = bigEndian32(bytes, record + 8), length = bigEndian32(bytes, record + 12);
+        if (start + length > bytes.size()) return false;
+    }
+    return true;
 }
 
 std::string describe(char32_t c) {
@@ -39,7 +59,7 @@ std::unique_ptr<SpriteFont> BuildSpriteFont(GraphicsDevice& device, const std::s
     const std::vector<unsigned char> bytes = readFile(fontFile);
     const int offset = bytes.size() >= 12 ? stbtt_GetFontOffsetForIndex(bytes.data(), 0) : -1;
     stbtt_fontinfo font;
-    if (offset < 0 || !stbtt_InitFont(&font, bytes.data(), offset))
+    if (offset < 0 || !tablesInsideFile(bytes, std::size_t(offset)) || !stbtt_InitFont(&font, bytes.data(), offset))
         throw ArgumentError("SpriteFont: '" + fontFile + "' is not a TrueType/OpenType font stb_truetype can read");
     if (!(description.Size > 0) || description.Size > 1000)
         throw ArgumentError("SpriteFont: Size " + std::to_string(description.Size) + " for '" + fontFile +

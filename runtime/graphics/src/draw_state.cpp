@@ -175,6 +175,9 @@ void GraphicsDevice::Impl::applyTextures() {
             Texture* texture = device.Textures[unit].get();
             GLuint name = texture ? texture->glName() : 0;
             if (texture) {
+                if (&texture->device() != &device)  // its GL name means nothing in this device's context
+                    throw InvalidOperation("Draw: texture " + textureName(texture) + " in Textures[" + std::to_string(unit) +
+                                           "] was made by another GraphicsDevice; make it with this one");
                 for (const RenderTargetBinding& b : targets)
                     if (b.RenderTarget == texture)
                         throw InvalidOperation("Draw: texture " + textureName(texture) + " in Textures[" +

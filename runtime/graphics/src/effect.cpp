@@ -14,6 +14,7 @@
 #include "effect_impl.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/graphics_device.h"
+#include "fxport/platform/file_reading.h"
 #include "fxport/xlate/effect_compiler.h"
 #include "fxport/xlate/effect_file.h"
 
@@ -64,18 +65,16 @@ xlate::CompileOptions compileOptions(const EffectOptions& options, std::vector<s
 // The effect's bytes, read once at load: techniques compiled later compile the same text as the
 // outline (include files are read when compiling, as the cache key assumes).
 std::string readEffectSource(const std::string& path) {
-    std::error_code ec;
-    std::ifstream in(path, std::ios::binary);
-    if (std::filesystem::is_directory(path, ec) || !in) {
+    // xlate compiles at most 4 MiB per source file; anything larger is refused before reading.
+    platform::FileBytes file = platform::readUntrustedFile(path, std::size_t{4} << 20);
+    if (!file.ok()) {
         xlate::Diagnostic d;
-        d.id = xlate::diag::kFileUnreadable;
-        d.message = std::filesystem::is_directory(path, ec) ? "'" + path + "' is a folder, not an effect file" : "cannot open '" + path + "'";
+        d.id = file.tooLarge ? xlate::diag::kInputTooLarge : xlate::diag::kFileUnreadable;
+        d.message = file.error;
         d.location = {path, 0, 0};
         throw xlate::CompileError({d});
     }
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
+    return std::string(file.bytes.begin(), file.bytes.end());
 }
 
 // Compiles the effect's kept source: `techniques` only, or every technique when empty.

@@ -89,7 +89,11 @@ void EffectPass::applyThis() {
             if (stage == 2 && !pass.vertexShader.shaders.empty()) d.shaders[2] = nullptr;
             continue;
         }
-        std::size_t shader = std::size_t(chooseShader(e, choice, technique.name, pass.name));
+        int chosen = chooseShader(e, choice, technique.name, pass.name);
+        if (chosen < 0 || std::size_t(chosen) >= code.code->programs.size())  // a NULL element of a shader array
+            throw InvalidOperation(e.displayName + " technique '" + technique.name + "' pass '" + pass.name + "': the shader chosen for stage " +
+                                   std::to_string(stage) + " is NULL (#" + std::to_string(chosen) + "); fxport has no fixed-function pipeline to draw with");
+        std::size_t shader = std::size_t(chosen);
         const ShaderProgram& program = code.code->programs[shader];
         d.shaders[std::size_t(stage)] = &program;
         // Only the blocks this shader reads, and of those only the bytes it reads; changes to

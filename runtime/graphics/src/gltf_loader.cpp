@@ -15,6 +15,7 @@
 #include <map>
 
 #include "fxport/graphics/errors.h"
+#include "fxport/platform/file_reading.h"
 #include "tangent_generation.h"
 
 namespace fxport::detail {
@@ -691,6 +692,33 @@ GltfModel GltfReader::read() {
     return std::move(model_);
 }
 
+// tinygltf's own file access would open a buffer or image URI naming a FIFO (and block forever),
+// read any size, and expand the URI with wordexp(); these read through the checked reader and take
+// the path as written.
+tinygltf::FsCallbacks checkedFileAccess() {
+    tinygltf::FsCallbacks callbacks{};
+    // Exists at all (without opening it): a FIFO is then refused by ReadWholeFile, saying why.
+    callbacks.FileExists = [](const std::string& file, void*) {
+        std::error_code error;
+        return std::filesystem::exists(file, error);
+    };
+    callbacks.ExpandFilePath = [](const std::string& file, void*) { return file; };
+    callbacks.ReadWholeFile = [](std::vector<unsigned char>* out, std::string* err, const std::string& file, void*) {
+        platform::FileBytes read = platform::readUntrustedFile(file);
+        if (!read.ok()) {
+            if (err) *err += read.error + "\n";
+            return false;
+        }
+        *out = std::move(read.bytes);
+        return true;
+    };
+    callbacks.WriteWholeFile = [](std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+        if (err) *err += "fxport does not write glTF files\n";
+        return false;
+    };
+    return callbacks;
+}
+
 }  // namespace
 
 GltfModel loadGltf(const std::string& path) {
@@ -698,11 +726,11 @@ GltfModel loadGltf(const std::string& path) {
     if (!std::filesystem::is_regular_file(path, error)) {
         throw ArgumentError(path + ": no such file");
     }
-    std::ifstream file(path, std::ios::binary);
-    std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-    if (!file.good() && !file.eof()) {
-        throw ArgumentError(path + ": cannot read the file");
+    platform::FileBytes file = platform::readUntrustedFile(path);
+    if (!file.ok()) {
+        throw ArgumentError(path + ": " + file.error);
     }
+    std::vector<unsigned char> bytes = std::move(file.bytes);
     if (bytes.size() > std::numeric_limits<unsigned int>::max()) {
         throw ArgumentError(path + ": file too large for tinygltf");
     }
@@ -716,6 +744,7 @@ GltfModel loadGltf(const std::string& path) {
     bool ok = false;
     try {
         tinygltf::TinyGLTF loader;
+        loader.SetFsCallbacks(checkedFileAccess());
         // Binary glTF by its magic, whatever the extension.
         if (bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0) {
             ok = loader.LoadBinaryFromMemory(&gltf, &err, &warn, bytes.data(), unsigned(bytes.size()), baseDir);

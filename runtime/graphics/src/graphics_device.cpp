@@ -35,6 +35,13 @@ GLenum glPrimitive(PrimitiveType type) {
     return GL_TRIANGLES;
 }
 
+// An enum value made by a cast (PrimitiveType(77)) would draw GL_TRIANGLES from a count of 0.
+void checkPrimitiveType(PrimitiveType type, const char* call) {
+    if (static_cast<int>(type) > static_cast<int>(PrimitiveType::PointList))
+        throw ArgumentError(std::string(call) + ": PrimitiveType(" + std::to_string(static_cast<int>(type)) +
+                            ") is not a primitive type (TriangleList .. PointList)");
+}
+
 int vertexCountFor(PrimitiveType type, int primitives) {
     switch (type) {
     case PrimitiveType::TriangleList: return primitives * 3;
@@ -106,12 +113,23 @@ bool computePassesAreFaster(GraphicsDevice& device) {
     return !GpuLimits::softwareRenderer(device.rendererName()) && GpuLimits::ForDevice(device).computePassesFaster();
 }
 
+// The back buffer's largest side: GL 4.5's (and D3D11's) guaranteed texture size. Checked before
+// the context exists (OSMesa would allocate 100000x100000 pixels and throw std::bad_alloc).
+constexpr int kMaxBackBufferSide = 16384;
+
+void checkBackBufferSize(const char* call, int width, int height) {
+    if (width <= 0 || height <= 0)
+        throw ArgumentError(std::string(call) + ": back buffer size " + std::to_string(width) + "x" + std::to_string(height) + " must be positive");
+    if (width > kMaxBackBufferSide || height > kMaxBackBufferSide)
+        throw ArgumentError(std::string(call) + ": back buffer size " + std::to_string(width) + "x" + std::to_string(height) +
+                            " is larger than " + std::to_string(kMaxBackBufferSide) + "x" + std::to_string(kMaxBackBufferSide) +
+                            ", the largest fxport makes");
+}
+
 }  // namespace
 
 GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters) : parameters_(parameters) {
-    if (parameters_.BackBufferWidth <= 0 || parameters_.BackBufferHeight <= 0)
-        throw ArgumentError("GraphicsDevice: back buffer size " + std::to_string(parameters_.BackBufferWidth) + "x" +
-                            std::to_string(parameters_.BackBufferHeight) + " must be positive");
+    checkBackBufferSize("GraphicsDevice", parameters_.BackBufferWidth, parameters_.BackBufferHeight);
     platform::ContextDesc desc;
     desc.platform = choosePlatform(parameters_.platform);
     desc.width = parameters_.BackBufferWidth;
@@ -162,9 +180,7 @@ GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters)
 }
 
 void GraphicsDevice::Reset(const fxport::PresentationParameters& parameters) {
-    if (parameters.BackBufferWidth <= 0 || parameters.BackBufferHeight <= 0)
-        throw ArgumentError("GraphicsDevice.Reset: back buffer size " + std::to_string(parameters.BackBufferWidth) + "x" +
-                            std::to_string(parameters.BackBufferHeight) + " must be positive");
+    checkBackBufferSize("GraphicsDevice.Reset", parameters.BackBufferWidth, parameters.BackBufferHeight);
     makeCurrent();
     parameters_.BackBufferWidth = parameters.BackBufferWidth;
     parameters_.BackBufferHeight = parameters.BackBufferHeight;
@@ -251,6 +267,10 @@ void GraphicsDevice::SetRenderTargets(const std::vector<RenderTargetBinding>& bi
         if (!t->isRenderTarget())
             throw ArgumentError(where + " ('" + t->Name + "') is a texture, not a render target");
         if (t->IsDisposed()) throw InvalidOperation(where + " ('" + t->Name + "') was disposed");
+        if (&t->device() != this) throw InvalidOperation(where + " ('" + t->Name + "') was made by another GraphicsDevice");
+        for (std::size_t j = 0; j < i; ++j)
+            if (bindings[j].RenderTarget == t)
+                throw ArgumentError(where + " ('" + t->Name + "') is binding " + std::to_string(j) + " too; bind each target once");
         int w = targetInfo(t).width, h = targetInfo(t).height;
         if (i == 0) {
             width = w;
@@ -465,6 +485,9 @@ void GraphicsDevice::Clear(ClearOptions options, Vector4 color, float depth, int
 
 void GraphicsDevice::SetVertexBuffer(VertexBuffer* buffer, int vertexOffset) {
     if (buffer && buffer->IsDisposed()) throw InvalidOperation("GraphicsDevice.SetVertexBuffer: the buffer was disposed");
+    if (buffer && &buffer->device() != this)
+        throw InvalidOperation("GraphicsDevice.SetVertexBuffer: " + buffer->describe() + " was made by another GraphicsDevice");
+    if (vertexOffset < 0) throw ArgumentError("GraphicsDevice.SetVertexBuffer: vertex offset " + std::to_string(vertexOffset) + " is negative");
     impl_->vertexBuffer = buffer;
     impl_->vertexOffset = vertexOffset;
 }
@@ -475,6 +498,8 @@ void GraphicsDevice::DrawIndexedPrimitives(PrimitiveType primitiveType, int base
     if (!d.vertexBuffer) throw InvalidOperation("DrawIndexedPrimitives: no vertex buffer set (SetVertexBuffer)");
     if (!Indices) throw InvalidOperation("DrawIndexedPrimitives: no index buffer set (GraphicsDevice.Indices)");
     if (Indices->IsDisposed()) throw InvalidOperation("DrawIndexedPrimitives: the index buffer was disposed");
+    if (&Indices->device() != this) throw InvalidOperation("DrawIndexedPrimitives: the index buffer was made by another GraphicsDevice");
+    checkPrimitiveType(primitiveType, "DrawIndexedPrimitives");
     int count = vertexCountFor(primitiveType, primitiveCount);
     if (primitiveCount <= 0 || startIndex < 0 || startIndex + count > Indices->IndexCount())
         throw ArgumentError("DrawIndexedPrimitives: " + std::to_string(primitiveCount) + " primitives from index " +
@@ -495,6 +520,7 @@ void GraphicsDevice::DrawIndexedPrimitives(PrimitiveType primitiveType, int base
 void GraphicsDevice::DrawPrimitives(PrimitiveType primitiveType, int vertexStart, int primitiveCount) {
     Impl& d = *impl_;
     if (!d.vertexBuffer) throw InvalidOperation("DrawPrimitives: no vertex buffer set (SetVertexBuffer)");
+    checkPrimitiveType(primitiveType, "DrawPrimitives");
     int count = vertexCountFor(primitiveType, primitiveCount);
     if (primitiveCount <= 0 || vertexStart < 0 || d.vertexOffset + vertexStart + count > d.vertexBuffer->VertexCount())
         throw ArgumentError("DrawPrimitives: " + std::to_string(primitiveCount) + " primitives from vertex " +
@@ -532,6 +558,7 @@ void GraphicsDevice::drawUser(PrimitiveType type, const void* vertices, std::siz
                               const VertexDeclaration& declaration, int primitiveCount) {
     Impl& d = *impl_;
     if (primitiveCount <= 0) throw ArgumentError("DrawUserPrimitives: primitive count " + std::to_string(primitiveCount));
+    checkPrimitiveType(type, "DrawUserPrimitives");
     if (stride != std::size_t(declaration.VertexStride()))
         throw ArgumentError("DrawUserPrimitives: the vertex type has " + std::to_string(stride) +
                             " bytes, its declaration's stride is " + std::to_string(declaration.VertexStride()));
@@ -559,8 +586,16 @@ void GraphicsDevice::drawUserIndexed(PrimitiveType type, const void* vertices, s
     if (stride != std::size_t(declaration.VertexStride()))
         throw ArgumentError("DrawUserIndexedPrimitives: the vertex type has " + std::to_string(stride) +
                             " bytes, its declaration's stride is " + std::to_string(declaration.VertexStride()));
-    d.flush("DrawUserIndexedPrimitives");
+    checkPrimitiveType(type, "DrawUserIndexedPrimitives");
     int count = vertexCountFor(type, primitiveCount);
+    // An index past the vertices given would read past the caller's array in the driver.
+    for (int i = 0; i < count; ++i) {
+        std::uint32_t index = indexSize == 2 ? static_cast<const std::uint16_t*>(indices)[i] : static_cast<const std::uint32_t*>(indices)[i];
+        if (index >= std::uint32_t(vertexCount))
+            throw ArgumentError("DrawUserIndexedPrimitives: index " + std::to_string(i) + " is " + std::to_string(index) + ", beyond the " +
+                                std::to_string(vertexCount) + " vertices given");
+    }
+    d.flush("DrawUserIndexedPrimitives");
     d.streamUserData(d.userVertices, d.userVerticesSize, vertices, GLsizeiptr(vertexCount) * GLsizeiptr(stride));
     d.streamUserData(d.userIndices, d.userIndicesSize, indices, GLsizeiptr(count) * indexSize);
     Impl::VertexArray& va = d.vertexArrayFor(declaration);

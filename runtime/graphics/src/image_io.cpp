@@ -1,5 +1,6 @@
 #include "image_io.h"
 
+#include <climits>
 #include <cstring>
 #include <stdexcept>
 
@@ -7,12 +8,16 @@
 #include <stb/stb_image_write.h>
 
 #include "fxport/graphics/errors.h"
+#include "fxport/platform/file_reading.h"
 
 namespace fxport::detail {
 
 Image loadImage(const std::string& path) {
     int w = 0, h = 0, channels = 0;
-    stbi_uc* data = stbi_load(path.c_str(), &w, &h, &channels, 4);
+    platform::FileBytes file = platform::readUntrustedFile(path);
+    if (!file.ok()) throw ArgumentError("Texture2D::FromFile: " + file.error);
+    if (file.bytes.size() > std::size_t(INT_MAX)) throw ArgumentError("Texture2D::FromFile: '" + path + "' is too large");
+    stbi_uc* data = stbi_load_from_memory(file.bytes.data(), int(file.bytes.size()), &w, &h, &channels, 4);
     if (!data)
         throw ArgumentError("Texture2D::FromFile: cannot read '" + path + "': " +
                             (stbi_failure_reason() ? stbi_failure_reason() : "unknown error"));

@@ -10,14 +10,29 @@ namespace fxport {
 namespace {
 
 // Checks a SetData/GetData range and returns its byte size.
-std::size_t checkedRange(const std::string& who, const char* call, std::size_t offset, std::size_t elementSize,
+std::size_t checkedRange(const std::string& who, const char* call, long long offset, std::size_t elementSize,
                          std::size_t count, std::size_t capacity) {
+    if (offset < 0) throw ArgumentError(who + ": " + call + " at byte offset " + std::to_string(offset) + ", which is negative");
+    // In this order nothing wraps: a count of 2^62 elements is not "0 bytes".
+    if (elementSize != 0 && count > capacity / elementSize)
+        throw ArgumentError(who + ": " + call + " of " + std::to_string(count) + " elements of " + std::to_string(elementSize) +
+                            " bytes overruns the buffer's " + std::to_string(capacity) + " bytes");
     std::size_t bytes = elementSize * count;
-    if (offset + bytes > capacity)
+    if (std::size_t(offset) > capacity - bytes)
         throw ArgumentError(who + ": " + call + " of " + std::to_string(count) + " elements of " +
                             std::to_string(elementSize) + " bytes at byte " + std::to_string(offset) +
                             " overruns the buffer's " + std::to_string(capacity) + " bytes");
     return bytes;
+}
+
+// A buffer's size, refused above kMaxBufferBytes: GL would fail the allocation silently
+// (GL_OUT_OF_MEMORY) and every later SetData and draw would use a buffer that is not there.
+constexpr long long kMaxBufferBytes = 1LL << 30;
+void checkBufferSize(const std::string& who, long long count, long long elementBytes) {
+    if (count * elementBytes > kMaxBufferBytes)
+        throw ArgumentError(who + ": " + std::to_string(count) + " elements of " + std::to_string(elementBytes) + " bytes are " +
+                            std::to_string(count * elementBytes) + " bytes; fxport makes buffers of at most " +
+                            std::to_string(kMaxBufferBytes >> 20) + " MiB");
 }
 
 }  // namespace
@@ -28,6 +43,7 @@ VertexBuffer::VertexBuffer(fxport::GraphicsDevice& device, const fxport::VertexD
     if (vertexCount <= 0 || declaration.VertexStride() <= 0)
         throw ArgumentError(describe() + ": vertex count " + std::to_string(vertexCount) + " and stride " +
                             std::to_string(declaration.VertexStride()) + " must both be positive");
+    checkBufferSize(describe(), vertexCount, declaration.VertexStride());
     name_ = device.impl().createBuffer();
     glNamedBufferStorage(name_, GLsizeiptr(vertexCount) * declaration.VertexStride(), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
@@ -43,7 +59,7 @@ void VertexBuffer::releaseGpuObjects() {
 void VertexBuffer::setData(int offsetInBytes, const void* data, std::size_t elementSize, std::size_t count) {
     throwIfDisposed("SetData");
     std::size_t capacity = std::size_t(count_) * std::size_t(declaration_.VertexStride());
-    std::size_t bytes = checkedRange(describe(), "SetData", std::size_t(offsetInBytes), elementSize, count, capacity);
+    std::size_t bytes = checkedRange(describe(), "SetData", offsetInBytes, elementSize, count, capacity);
     glNamedBufferSubData(name_, offsetInBytes, GLsizeiptr(bytes), data);
 }
 
@@ -58,6 +74,7 @@ IndexBuffer::IndexBuffer(fxport::GraphicsDevice& device, fxport::IndexElementSiz
                          fxport::BufferUsage usage)
     : GraphicsResource(device, "IndexBuffer"), elementSize_(elementSize), count_(indexCount), usage_(usage) {
     if (indexCount <= 0) throw ArgumentError(describe() + ": index count " + std::to_string(indexCount) + " must be positive");
+    checkBufferSize(describe(), indexCount, elementBytes());
     name_ = device.impl().createBuffer();
     glNamedBufferStorage(name_, GLsizeiptr(indexCount) * elementBytes(), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
@@ -75,7 +92,7 @@ void IndexBuffer::setData(int offsetInBytes, const void* data, std::size_t eleme
     if (elementSize != std::size_t(elementBytes()))
         throw ArgumentError(describe() + ": SetData with " + std::to_string(elementSize * 8) + "-bit indices into a " +
                             std::to_string(elementBytes() * 8) + "-bit index buffer");
-    std::size_t bytes = checkedRange(describe(), "SetData", std::size_t(offsetInBytes), elementSize, count,
+    std::size_t bytes = checkedRange(describe(), "SetData", offsetInBytes, elementSize, count,
                                      std::size_t(count_) * std::size_t(elementBytes()));
     glNamedBufferSubData(name_, offsetInBytes, GLsizeiptr(bytes), data);
 }

@@ -1,0 +1,496 @@
+// Containment (issue 26): nothing a compile is handed takes the caller down. Loose shader files
+// (compileShaderFiles, `fxport compile X.hlsl --entry --profile`) and compiles that keep the
+// rewritten HLSL (FXPORT_DUMP, keepRewrittenHlsl) run in the front-end worker as effect files do;
+// each case runs the library in a child process (a gtest death-test fork) or the real `fxport`
+// binary and requires a normal exit with a diagnostic.
+//
+// Paths are relative to the repository root (the tests run there, see CMakeLists.txt).
+#include <gtest/gtest.h>
+
+#include <signal.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "effect_validation.h"
+#include "front_end_worker.h"
+#include "fxport/xlate/diagnostics.h"
+#include "fxport/xlate/effect_compiler.h"
+#include "fxport/xlate/effect_file.h"
+#include "run_cli.h"
+
+namespace fs = std::filesystem;
+using namespace fxport::xlate;
+using fxport::test::RunResult;
+using fxport::test::runCli;
+
+namespace {
+
+// A folder of its own per test, removed afterwards.
+class Containment : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("fxport-containment-" + std::to_string(::getpid()) + "-" +
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    std::string write(const std::string& name, const std::string& text) {
+        std::string path = (dir_ / name).string();
+        std::ofstream(path, std::ios::binary) << text;
+        return path;
+    }
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+    fs::path dir_;
+};
+
+std::string readAll(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+std::string sh(const std::string& s) { return "'" + s + "'"; }
+
+// glslang folds INT_MIN / -1 with the host's division: SIGFPE on x86 (fxc folds it to INT_MIN).
+const std::string kIntMinDivision =
+    "float4 main() : SV_Target { int x = -2147483648; int y = -1; return float4(x / y, 0, 0, 1); }\n";
+
+// A mutation that crashes glslang 12 (tests/fixtures/broken/contained_glslang_crash.fx).
+const std::string kCrashingEffect = "tests/fixtures/broken/contained_glslang_crash.fx";
+
+// Compiles in a child: prints the first diagnostic's id (or "compiled") and exits 0; a signal
+// there fails the death-test expectation.
+void compileLooseAndExit(const std::vector<ShaderEntry>& entries, const CompileOptions& options) {
+    try {
+        CompiledEffect e = compileShaderFiles(entries, options);
+        std::cerr << "compiled " << e.shaders.size() << " shaders\n";
+    } catch (const CompileError& error) {
+        std::cerr << error.diagnostics().front().format() << "\n";
+    }
+    std::exit(0);
+}
+
+CompileOptions uncached() {
+    CompileOptions o;
+    o.useCache = false;
+    return o;
+}
+
+TEST_F(Containment, LooseIntMinDivisionDoesNotKillTheCaller) {
+    std::string ps = write("div.hlsl", kIntMinDivision);
+    EXPECT_EXIT(compileLooseAndExit({{ps, "main", "ps_5_0"}}, uncached()), ::testing::ExitedWithCode(0), "compiled|div.hlsl");
+}
+
+TEST_F(Containment, LooseGlslangCrashIsALocatedFrontEndError) {
+    EXPECT_EXIT(compileLooseAndExit({{kCrashingEffect, "VS", "vs_4_0"}, {kCrashingEffect, "PS", "ps_4_0"}}, uncached()),
+                ::testing::ExitedWithCode(0), "contained_glslang_crash.fx\\([0-9]+,[0-9]+\\): error FX9001");
+}
+
+TEST_F(Containment, LooseFilesApartShareOneWorker) {
+    // Two files (not cacheable, varyings shared): the crash in the second is still contained.
+    std::string vs = write("vs.hlsl", "float4 main(float4 p : POSITION) : SV_Position { return p; }\n");
+    EXPECT_EXIT(compileLooseAndExit({{vs, "main", "vs_4_0"}, {kCrashingEffect, "PS", "ps_4_0"}}, uncached()),
+                ::testing::ExitedWithCode(0), "error FX9001");
+}
+
+TEST_F(Containment, LooseCompileStillWorksAndCaches) {
+    std::string vs = write("vs.hlsl", "struct O { float4 p : SV_Position; float4 c : CUSTOM; };\n"
+                                      "O main(float4 p : POSITION) { O o; o.p = p; o.c = p; return o; }\n");
+    std::string ps = write("ps.hlsl", "float4 main(float4 p : SV_Position, float4 c : CUSTOM) : SV_Target { return c; }\n");
+    CompiledEffect e = compileShaderFiles({{vs, "main", "vs_4_0"}, {ps, "main", "ps_4_0"}}, uncached());
+    ASSERT_EQ(e.shaders.size(), 2u);
+    // The shared custom varying has one location in both stages, although they compiled apart.
+    EXPECT_NE(e.shaders[0].glsl.find("location"), std::string::npos);
+    CompileOptions cached;
+    cached.cacheDir = path("cache");
+    CompiledEffect first = compileShaderFiles({{vs, "main", "vs_4_0"}}, cached);
+    CompiledEffect second = compileShaderFiles({{vs, "main", "vs_4_0"}}, cached);  // from the cache
+    EXPECT_EQ(first.shaders.at(0).glsl, second.shaders.at(0).glsl);
+    EXPECT_FALSE(fs::is_empty(path("cache")));
+}
+
+TEST_F(Containment, KeptRewrittenHlslComesBackFromTheWorker) {
+    std::string vs = write("vs.hlsl", "float4 main(float4 p : POSITION) : SV_Position { return p; }\n");
+    CompileOptions o = uncached();
+    o.keepRewrittenHlsl = true;
+    CompiledEffect e = compileShaderFiles({{vs, "main", "vs_4_0"}}, o);
+    ASSERT_EQ(e.shaders.size(), 1u);
+    EXPECT_NE(e.shaders[0].hlslAfterRewrite.find("main"), std::string::npos);
+    CompiledEffect f = compileEffectFile("tests/fixtures/broken/blend_full_sample_mask.fx", o);
+    ASSERT_FALSE(f.shaders.empty());
+    EXPECT_FALSE(f.shaders[0].hlslAfterRewrite.empty());
+}
+
+TEST_F(Containment, KeepRewrittenHlslDoesNotTurnAContainedCrashIntoASignal) {
+    CompileOptions o = uncached();
+    o.keepRewrittenHlsl = true;
+    EXPECT_EXIT(
+        {
+            try {
+                compileEffectFile(kCrashingEffect, o);
+            } catch (const CompileError& error) {
+                std::cerr << error.diagnostics().front().format() << "\n";
+            }
+            std::exit(0);
+        },
+        ::testing::ExitedWithCode(0), "error FX9001");
+}
+
+// The real binary.
+TEST_F(Containment, CliLooseShaderIntMinDivisionExitsNormally) {
+    std::string ps = write("div.hlsl", kIntMinDivision);
+    RunResult r = runCli("compile " + sh(ps) + " --entry main --profile ps_5_0 --no-cache -o " + sh(path("out.fxeffect")));
+    ASSERT_TRUE(r.exited) << r.output;
+    if (r.status != 0) {
+        EXPECT_NE(r.output.find("div.hlsl("), std::string::npos) << r.output;
+    }
+}
+
+TEST_F(Containment, CliLooseShaderCrashIsFx9001) {
+    RunResult r = runCli("compile " + sh(kCrashingEffect) + " --entry VS --profile vs_4_0 --no-cache -o " + sh(path("out.fxeffect")));
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("error FX9001"), std::string::npos) << r.output;
+}
+
+TEST_F(Containment, CliLooseShaderGeometryUnnamedParameterExitsNormally) {
+    std::string gs = write("gs.hlsl", "struct V { float4 p : SV_Position; };\n"
+                                      "[maxvertexcount(3)] void main(point V[1], inout TriangleStream<V> s) { }\n");
+    RunResult r = runCli("compile " + sh(gs) + " --entry main --profile gs_4_0 --no-cache -o " + sh(path("out.fxeffect")));
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("gs.hlsl("), std::string::npos) << r.output;
+}
+
+TEST_F(Containment, CliLooseShaderExponentialMacroIsStopped) {
+    std::string text;
+    text += "#define D0 x\n";
+    for (int i = 1; i <= 40; ++i) text += "#define D" + std::to_string(i) + " D" + std::to_string(i - 1) + " D" + std::to_string(i - 1) + "\n";
+    text += "float Scale = D40;\nfloat4 main() : SV_Target { return Scale; }\n";
+    std::string ps = write("macro.hlsl", text);
+    auto start = std::chrono::steady_clock::now();
+    RunResult r = runCli("compile " + sh(ps) + " --entry main --profile ps_4_0 --no-cache -o " + sh(path("out.fxeffect")),
+                         "FXPORT_WORKER_SECONDS=2 FXPORT_WORKER_MEMORY_MB=512");
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("macro.hlsl"), std::string::npos) << r.output;
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 30.0);
+}
+
+TEST_F(Containment, CliDumpOfACrashingEffectIsFx9001NotASignal) {
+    RunResult r = runCli("compile " + sh(kCrashingEffect) + " --no-cache -o " + sh(path("out.fxeffect")),
+                         "FXPORT_DUMP=" + sh(path("dump")));
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("error FX9001"), std::string::npos) << r.output;
+}
+
+TEST_F(Containment, CliDumpWritesTheRewrittenHlslFromTheWorker) {
+    RunResult r = runCli("compile tests/fixtures/broken/blend_full_sample_mask.fx --no-cache -o " + sh(path("out.fxeffect")),
+                         "FXPORT_DUMP=" + sh(path("dump")));
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 0) << r.output;
+    bool hlsl = false;
+    for (const auto& entry : fs::directory_iterator(path("dump"))) hlsl |= entry.path().extension() == ".hlsl";
+    EXPECT_TRUE(hlsl);
+}
+
+// Outputs (issue 26 items 6, 7, 10): never replaced when not a regular file, never an input,
+// never each other; every write checked, with the OS's reason.
+const std::string kEffect = "tests/fixtures/broken/blend_full_sample_mask.fx";
+
+TEST_F(Containment, OutputOnADeviceIsWrittenThroughNotReplaced) {
+    RunResult r = runCli("compile " + kEffect + " --no-cache -o /dev/null");
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_TRUE(fs::is_character_file("/dev/null"));  // still the device
+}
+
+TEST_F(Containment, OutputOnAFullDeviceFailsWithTheReason) {
+    RunResult r = runCli("compile " + kEffect + " --no-cache -o /dev/full");
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("cannot write '/dev/full' (No space left on device)"), std::string::npos) << r.output;
+    EXPECT_TRUE(fs::is_character_file("/dev/full"));
+}
+
+TEST_F(Containment, OutputOnAFifoWithoutReaderIsRefusedAtOnce) {
+    std::string fifo = path("fifo");
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    RunResult r = runCli("compile " + kEffect + " --no-cache -o " + sh(fifo), "timeout 20");
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("a FIFO that nothing reads"), std::string::npos) << r.output;
+    EXPECT_TRUE(fs::is_fifo(fifo));
+}
+
+TEST_F(Containment, OutputFolderIsRefusedWithAReason) {
+    RunResult r = runCli("compile " + kEffect + " --no-cache -o " + sh(dir_.string()));
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("it is a folder"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("(Success)"), std::string::npos) << r.output;
+}
+
+TEST_F(Containment, ReadOnlyOutputIsRefused) {
+    std::string out = write("out.fxeffect", "keep me");
+    fs::permissions(out, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+    RunResult r = runCli("compile " + kEffect + " --no-cache -o " + sh(out));
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("read-only"), std::string::npos) << r.output;
+    EXPECT_EQ(readAll(out), "keep me");
+}
+
+TEST_F(Containment, DepfileNamingTheInputIsRefused) {
+    std::string fx = path("a.fx");
+    fs::copy_file(kEffect, fx);
+    std::string before = std::to_string(fs::file_size(fx));
+    RunResult r = runCli("compile " + sh(fx) + " --no-cache -o " + sh(path("a.fxeffect")) + " --depfile " + sh(fx));
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("--depfile '" + fx + "' is also the input '" + fx + "'"), std::string::npos) << r.output;
+    EXPECT_EQ(std::to_string(fs::file_size(fx)), before);
+}
+
+TEST_F(Containment, DepfileEqualToOutputIsRefused) {
+    std::string out = path("a.fxeffect");
+    RunResult r = runCli("compile " + kEffect + " --no-cache -o " + sh(out) + " --depfile " + sh(out));
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("-o '" + out + "' is also --depfile"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(Containment, OutputNamingAnIncludedFileIsRefused) {
+    std::string header = write("common.fxh", "float4 Tint;\n");
+    std::string fx = write("a.fx", "#include \"common.fxh\"\n"
+                                   "float4 VS(float4 p : POSITION0) : POSITION0 { return p; }\n"
+                                   "float4 PS() : COLOR0 { return Tint; }\n"
+                                   "technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n");
+    RunResult r = runCli("compile " + sh(fx) + " --no-cache -o " + sh(header));
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("the included file"), std::string::npos) << r.output;
+    EXPECT_EQ(readAll(header), "float4 Tint;\n");
+}
+
+TEST_F(Containment, DepfileInAMissingFolderIsAnErrorWithTheReason) {
+    std::string out = path("a.fxeffect");
+    RunResult r = runCli("compile " + kEffect + " --no-cache -o " + sh(out) + " --depfile " + sh(path("missing/a.d")));
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("No such file or directory"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("internal error"), std::string::npos) << r.output;
+}
+
+TEST_F(Containment, DepfileOnAFullDeviceFails) {
+    RunResult r = runCli("compile " + kEffect + " --no-cache -o " + sh(path("a.fxeffect")) + " --depfile /dev/full");
+    ASSERT_TRUE(r.exited) << r.output;
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("No space left on device"), std::string::npos) << r.output;
+}
+
+// Compiled effects and cache entries (issue 26 items 5, 8): nesting checked before parsing, every
+// index's lower bound validated, entries that record their key and body checksum, sizes capped
+// before reading, and a refused entry replaced by the next compile.
+std::string effectWithTechnique(const std::string& technique) {
+    return "float4 VS(float4 p : POSITION0) : POSITION0 { return p; }\n"
+           "float4 PS() : COLOR0 { return float4(1, 1, 1, 1); }\n"
+           "technique " + technique + " { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n";
+}
+
+std::vector<fs::path> cacheEntries(const std::string& dir) {
+    std::vector<fs::path> out;
+    for (const auto& e : fs::directory_iterator(dir))
+        if (e.path().extension() == ".fxeffect") out.push_back(e.path());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+TEST_F(Containment, DeeplyNestedCompiledEffectIsRefusedBeforeParsing) {
+    EXPECT_EXIT(
+        {
+            try {
+                deserializeEffect(std::string(200000, '[') + std::string(200000, ']'), "deep.fxeffect");
+                std::cerr << "accepted\n";
+            } catch (const CompileError& error) {
+                std::cerr << error.diagnostics().front().format() << "\n";
+            }
+            std::exit(0);
+        },
+        ::testing::ExitedWithCode(0), "deep.fxeffect: error FX3101: .*nests more than 64 levels");
+}
+
+TEST_F(Containment, PassNamingShaderMinusOneIsRefused) {
+    std::string text = serializeEffect(compileEffectFile(kEffect, uncached()));
+    nlohmann::json j = nlohmann::json::parse(text);
+    j["techniques"][0]["passes"][0]["pixelShader"]["shaders"] = nlohmann::json::array({-1});
+    try {
+        deserializeEffect(resealEffectFile(j.dump()), "minus.fxeffect");
+        ADD_FAILURE() << "a valid pass with shader #-1 was accepted";
+    } catch (const CompileError& error) {
+        EXPECT_NE(error.diagnostics().front().message.find("shader #-1"), std::string::npos) << error.diagnostics().front().format();
+    }
+}
+
+TEST_F(Containment, CacheEntryUnderAnotherKeyIsRefusedAndReplaced) {
+    CompileOptions o;
+    o.cacheDir = path("cache");
+    std::string a = write("a.fx", effectWithTechnique("FromA"));
+    compileEffectFile(a, o);
+    std::vector<fs::path> first = cacheEntries(o.cacheDir);
+    ASSERT_EQ(first.size(), 1u);
+    std::string b = write("b.fx", effectWithTechnique("FromB"));
+    compileEffectFile(b, o);
+    std::vector<fs::path> both = cacheEntries(o.cacheDir);
+    ASSERT_EQ(both.size(), 2u);
+    fs::path entryOfB = both[0] == first[0] ? both[1] : both[0];
+    fs::copy_file(first[0], entryOfB, fs::copy_options::overwrite_existing);  // A's entry under B's key
+    CompiledEffect e = compileEffectFile(b, o);
+    ASSERT_EQ(e.techniques.size(), 1u);
+    EXPECT_EQ(e.techniques[0].name, "FromB");
+    EXPECT_NE(readAll(entryOfB.string()), readAll(first[0].string()));  // replaced
+}
+
+TEST_F(Containment, PaddedCacheEntryIsRefusedAndReplaced) {
+    CompileOptions o;
+    o.cacheDir = path("cache");
+    std::string a = write("a.fx", effectWithTechnique("T"));
+    compileEffectFile(a, o);
+    fs::path entry = cacheEntries(o.cacheDir).at(0);
+    auto size = fs::file_size(entry);
+    std::ofstream(entry, std::ios::binary | std::ios::app) << std::string(size_t{1} << 20, '\0');
+    compileEffectFile(a, o);
+    EXPECT_EQ(fs::file_size(entry), size);
+}
+
+TEST_F(Containment, HugeCacheEntryIsNotReadAndIsReplaced) {
+    CompileOptions o;
+    o.cacheDir = path("cache");
+    std::string a = write("a.fx", effectWithTechnique("T"));
+    compileEffectFile(a, o);
+    fs::path entry = cacheEntries(o.cacheDir).at(0);
+    auto size = fs::file_size(entry);
+    fs::resize_file(entry, uintmax_t{4} << 30);  // sparse: 4 GiB of NULs after the entry
+    auto start = std::chrono::steady_clock::now();
+    compileEffectFile(a, o);
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 2.0);
+    EXPECT_EQ(fs::file_size(entry), size);
+}
+
+TEST_F(Containment, OversizedCompiledEffectFileIsRefusedBeforeReading) {
+    std::string big = write("big.fxeffect", "{}");
+    fs::resize_file(big, uintmax_t{1} << 30);
+    try {
+        loadEffectFile(big);
+        ADD_FAILURE() << "a 1 GiB compiled effect was read";
+    } catch (const CompileError& error) {
+        EXPECT_NE(error.diagnostics().front().message.find("MiB fxport reads"), std::string::npos) << error.diagnostics().front().format();
+    }
+}
+
+// Sizes (issue 26 item 4): computed in 64 bits from the compiled shader, through typedefs, nested
+// struct arrays and locals; refused with FX1204 at the declaration.
+struct SizeCase {
+    const char* name;
+    std::string effect;
+    int line;
+};
+
+void expectTooLarge(const SizeCase& c) {
+    try {
+        compileEffectSource(c.effect, std::string(c.name) + ".fx", uncached());
+        ADD_FAILURE() << c.name << " compiled";
+    } catch (const CompileError& error) {
+        const Diagnostic& d = error.diagnostics().front();
+        EXPECT_EQ(d.id, diag::kArrayTooLarge) << d.format();
+        EXPECT_EQ(d.location.line, c.line) << d.format();
+        EXPECT_EQ(d.location.file, std::string(c.name) + ".fx") << d.format();
+    }
+}
+
+const std::string kSizeTail = "float4 PS() : COLOR0 { return float4(1, 1, 1, 1); }\n"
+                              "technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }\n";
+
+TEST_F(Containment, ArrayBehindATypedefIsMeasured) {
+    expectTooLarge({"typedef_array",
+                    "typedef float4 Row[100000];\nRow Big;\nfloat4 VS(float4 p : POSITION0) : POSITION0 { return p + Big[3]; }\n" + kSizeTail, 2});
+}
+
+TEST_F(Containment, NestedStructArraysAreMultipliedIn64Bits) {
+    expectTooLarge({"nested_arrays",
+                    "struct Inner { float4 m[60000]; };\nstruct Outer { Inner i[60000]; };\nOuter Nested;\n"
+                    "float4 VS(float4 p : POSITION0) : POSITION0 { return p + Nested.i[1].m[2]; }\n" + kSizeTail,
+                    3});
+}
+
+TEST_F(Containment, HugeLocalArrayIsRefusedWhereDeclared) {
+    expectTooLarge({"local_array",
+                    "float4 VS(float4 p : POSITION0) : POSITION0 {\n    float4 a[10000000];\n    a[int(p.x)] = p;\n    return a[int(p.y)];\n}\n" + kSizeTail,
+                    2});
+}
+
+TEST_F(Containment, BonesAtTheElementLimitGetALocatedError) {
+    expectTooLarge({"bones", "float4x4 Bones[65536];\nfloat4 VS(float4 p : POSITION0, int i : BLENDINDICES0) : POSITION0 { return mul(p, Bones[i]); }\n" + kSizeTail, 1});
+}
+
+TEST_F(Containment, LargeButReasonableArraysStillCompile) {
+    CompiledEffect e = compileEffectSource(
+        "float4 Table[4096];\nfloat4 VS(float4 p : POSITION0, int i : BLENDINDICES0) : POSITION0 { return p + Table[i]; }\n" + kSizeTail, "ok.fx", uncached());
+    EXPECT_EQ(e.shaders.size(), 2u);
+}
+
+// Messages (issue 26 item 10).
+TEST_F(Containment, ErrorOnAHugeLineQuotesOnlyAroundTheColumn) {
+    std::string line = "float4 VS(float4 p : POSITION0) : POSITION0 { return p; } " + std::string(3 << 20, ' ') + " float x = ;";
+    try {
+        compileEffectSource(line + "\n" + kSizeTail, "long_line.fx", uncached());
+        ADD_FAILURE() << "compiled";
+    } catch (const CompileError& error) {
+        std::string text = error.diagnostics().front().format();
+        EXPECT_LT(text.size(), 600u) << text.substr(0, 600);
+        EXPECT_NE(text.find("..."), std::string::npos) << text.substr(0, 600);
+    }
+}
+
+TEST_F(Containment, HundredThousandParametersAreOneLocatedError) {
+    std::string text;
+    for (int i = 0; i < 100000; ++i) text += "float P" + std::to_string(i) + ";\n";
+    text += "float4 VS(float4 p : POSITION0) : POSITION0 { return p * (P0 + P99999); }\n" + kSizeTail;
+    std::string fx = write("many.fx", text);
+    RunResult r = runCli("compile " + sh(fx) + " --no-cache -o " + sh(path("many.fxeffect")));
+    ASSERT_TRUE(r.exited) << r.output.substr(0, 2000);
+    EXPECT_EQ(r.status, 1) << r.output.substr(0, 2000);
+    EXPECT_NE(r.output.find("many.fx(16385,7): error FX1205:"), std::string::npos) << r.output.substr(0, 2000);
+    EXPECT_EQ(r.output.find("input:0:0"), std::string::npos) << r.output.substr(0, 2000);
+}
+
+// A worker killed from outside (the OOM killer, a user's kill -9) is not "ran past its limit".
+TEST_F(Containment, WorkerKilledFromOutsideIsNotATimeLimit) {
+    WorkerOutcome o = runInWorker(
+        [] {
+            ::raise(SIGKILL);
+            return std::string("unreachable");
+        },
+        WorkerLimits{});
+    EXPECT_EQ(o.kind, WorkerOutcome::Kind::Crashed);
+    EXPECT_EQ(o.signal, SIGKILL);
+}
+
+}  // namespace
