@@ -687,6 +687,8 @@ private:
             modifiers.push_back(syntax_.tokens[pos_++].text);
         }
         if (cur().is("struct") && peek().isIdent()) {  // `uniform struct apple a;` (C's spelling): the type is apple
+            if (!syntax_.findStruct(peek().text))  // fxc: not a typedef or a built-in type either
+                fail(diag::kSyntax, "'struct " + peek().text + "' names no struct declared before it", pos_ + 1);
             blank(pos_, pos_ + 1);
             ++pos_;
         }
@@ -763,7 +765,7 @@ private:
             p.modifiers.push_back(tok(i++).text);
         if (i >= span.end || !tok(i).isIdent())
             fail(diag::kSyntax, "malformed parameter in function '" + function + "'", i < span.end ? i : span.begin);
-        if (tok(i).is("struct") && i + 2 < span.end && tok(i + 1).isIdent() && tok(i + 2).isIdent()) {
+        if (tok(i).is("struct") && i + 2 < span.end && tok(i + 1).isIdent() && tok(i + 2).isIdent() && syntax_.findStruct(tok(i + 1).text)) {
             blank(i, i + 1);  // `in struct input i` (C's spelling): the type is `input`
             ++i;
         }

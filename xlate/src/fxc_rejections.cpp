@@ -242,8 +242,9 @@ private:
             }
         return found;
     }
-    // `x`, `x.member`, `x[i]`, `x.yz` (no repeated component), not a const, a literal or an expression.
+    // `x`, `x.member`, `x[i]`, `x.yz` (no repeated component), `(T)x`; not a const, a literal or an expression.
     bool isWritable(const FxFunction& caller, size_t begin, size_t end) const {
+        if (begin + 3 < end && t_[begin].is("(") && t_[begin + 1].isIdent() && t_[begin + 2].is(")")) begin += 3;  // `(float4)x`: fxc converts back
         if (!t_[begin].isIdent() || isOneOf(t_[begin].text, {"true", "false"})) return false;
         for (size_t k = begin + 1; k < end; ++k) {
             if (t_[k].is("[")) {
