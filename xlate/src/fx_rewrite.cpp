@@ -251,7 +251,9 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
                             // shaders sample as 2D and as a cube gets a second declaration on its unit.
                             // A sampler declared with its dimension (sampler2D), or sampled both ways in
                             // one function, is an error in fxc too.
-                            bool parameter = std::any_of(f.parameters.begin(), f.parameters.end(), [&](const FxParameter& p) { return p.name == name; });
+                            const std::string samplerName = name;  // clang 14 captures no structured binding
+                            bool parameter = std::any_of(f.parameters.begin(), f.parameters.end(),
+                                                         [&](const FxParameter& p) { return p.name == samplerName; });
                             const FxSampler* declared = syntax.findSampler(name);
                             size_t first = slots.whereKindWasSet(*s);
                             bool sameFunction = first >= f.body.begin && first < f.body.end;
