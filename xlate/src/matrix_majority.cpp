@@ -1,6 +1,7 @@
 // See matrix_majority.h.
 #include "matrix_majority.h"
 
+#include <map>
 #include <string>
 
 #include "hlsl_types.h"
@@ -24,12 +25,13 @@ std::vector<TextEdit> spellOutPackMatrixPragmas(const EffectSyntax& syntax) {
     const std::vector<Token>& t = syntax.tokens;
     std::vector<TextEdit> edits;
     std::string current;  // empty until a pragma: glslang's default (column_major) stays
-    std::vector<std::pair<size_t, size_t>> bodies;
-    for (const auto& f : syntax.functions) bodies.push_back({f.body.begin, f.body.end});
+    std::map<size_t, size_t> bodies;  // begin -> end of each function body, skipped whole
+    for (const auto& f : syntax.functions) bodies[f.body.begin] = f.body.end;
     for (size_t i = 0; i + 5 < t.size(); ++i) {
-        bool inBody = false;
-        for (const auto& [b, e] : bodies) inBody |= i >= b && i < e;
-        if (inBody) continue;
+        if (auto body = bodies.find(i); body != bodies.end() && body->second > i) {
+            i = body->second - 1;  // the loop's ++i lands on the body's end
+            continue;
+        }
         if (t[i].is("#") && t[i + 1].is("pragma") && t[i + 2].is("pack_matrix") && t[i + 3].is("(") && isMajority(t[i + 4]) &&
             t[i + 5].is(")") && t[i + 1].line == t[i].line) {
             current = t[i + 4].text;

@@ -17,6 +17,10 @@ constexpr std::uint32_t kOpTypeBool = 20;
 constexpr std::uint32_t kOpCopyObject = 83;
 constexpr std::uint32_t kOpAny = 154;
 constexpr std::uint32_t kOpAll = 155;
+constexpr std::uint32_t kOpUDiv = 134;
+constexpr std::uint32_t kOpSDiv = 135;
+constexpr std::uint32_t kOpFDiv = 136;
+constexpr std::uint32_t kOpUMod = 137;
 constexpr std::uint32_t kOpSRem = 138;
 constexpr std::uint32_t kOpSMod = 139;
 constexpr std::uint32_t kOpFRem = 140;
@@ -79,11 +83,28 @@ void anyAllOfScalarIsTheScalar(std::vector<std::uint32_t>& words, const ModuleTy
 
 }  // namespace
 
+namespace {
+
+// Whether an instruction with one of `opcodes` occurs: a linear scan, so that the fix-ups and
+// checks that parse or optimise the module cost nothing on shaders that cannot need them.
+bool hasOpcode(const std::vector<std::uint32_t>& words, std::initializer_list<std::uint32_t> opcodes) {
+    for (size_t at = kHeaderWords; at < words.size();) {
+        std::uint32_t count = words[at] >> 16;
+        if (count == 0) return false;
+        for (std::uint32_t op : opcodes)
+            if ((words[at] & 0xFFFFu) == op) return true;
+        at += count;
+    }
+    return false;
+}
+
+}  // namespace
+
 void applySpirvFixups(std::vector<std::uint32_t>& words) {
     if (words.size() < kHeaderWords) return;
     remainderTruncates(words);
     ModuleTypes types;
-    if (readTypes(words, types)) anyAllOfScalarIsTheScalar(words, types);
+    if (hasOpcode(words, {kOpAny, kOpAll}) && readTypes(words, types)) anyAllOfScalarIsTheScalar(words, types);
 }
 
 namespace {
@@ -112,8 +133,11 @@ bool forwardLocals(std::vector<std::uint32_t>& words) {
 }  // namespace
 
 bool dividesByConstantZero(const std::vector<std::uint32_t>& original, bool floatsToo) {
+    if (original.size() < kHeaderWords ||
+        !hasOpcode(original, {kOpUDiv, kOpSDiv, kOpFDiv, kOpUMod, kOpSRem, kOpSMod, kOpFRem, kOpFMod}))  // no division at all
+        return false;
     std::vector<std::uint32_t> words = original;
-    if (words.size() < kHeaderWords || !forwardLocals(words)) return false;
+    if (!forwardLocals(words)) return false;
     // Constants that are zero (a scalar of value 0 or -0.0, a null, a composite with a zero part).
     std::set<std::uint32_t> zero;
     std::vector<std::pair<std::uint32_t, size_t>> divisions;  // (divisor id, offset)
@@ -125,8 +149,8 @@ bool dividesByConstantZero(const std::vector<std::uint32_t>& original, bool floa
         if (op == kOpConstantComposite)
             for (std::uint32_t k = 3; k < count; ++k)
                 if (zero.count(words[at + k])) zero.insert(words[at + 2]);
-        const bool integer = op == 134 /*UDiv*/ || op == 135 /*SDiv*/ || op == 137 /*UMod*/ || op == kOpSRem || op == kOpSMod;
-        const bool real = op == 136 /*FDiv*/ || op == kOpFRem || op == kOpFMod;
+        const bool integer = op == kOpUDiv || op == kOpSDiv || op == kOpUMod || op == kOpSRem || op == kOpSMod;
+        const bool real = op == kOpFDiv || op == kOpFRem || op == kOpFMod;
         if ((integer || (real && floatsToo)) && count == 5) divisions.push_back({words[at + 4], at});
         at += count;
     }
