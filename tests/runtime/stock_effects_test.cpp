@@ -190,6 +190,11 @@ std::unique_ptr<Texture2D> upload(GraphicsDevice& device, const CpuTexture& t) {
     return texture;
 }
 
+// XNA's stock vertex shaders are vs_2_0: Direct3D 9 clamps their COLOR0/COLOR1 outputs (diffuse,
+// and specular with the fog factor) to [0, 1] before interpolation.
+D4 colorOutput(D4 c) { return {saturate(c.x), saturate(c.y), saturate(c.z), saturate(c.w)}; }
+D3 colorOutput(D3 c) { return {saturate(c.x), saturate(c.y), saturate(c.z)}; }
+
 D4 colourOf(const TestVertex& v) { return {v.Colour.R / 255.0, v.Colour.G / 255.0, v.Colour.B / 255.0, v.Colour.A / 255.0}; }
 
 // ---------------------------------------------------------------------------------------------
@@ -363,15 +368,16 @@ struct BasicCase {
     Lighting lighting = Lighting::Off;
     bool texture = false, vertexColor = false, fog = false, defaultRig = false;
     std::string permutation;
+    bool bright = false;  // a material whose per-vertex colours leave [0, 1] (XNA clamps them)
 };
 
-Material basicMaterial(bool lit) {
+Material basicMaterial(bool lit, bool bright) {
     Material m;
-    m.diffuse = {0.8, 0.7, 0.9};
-    m.emissive = {0.05, 0.1, 0.0};
+    m.diffuse = bright ? D3{1.0, 0.95, 1.0} : D3{0.8, 0.7, 0.9};
+    m.emissive = bright ? D3{0.45, 0.1, 0.3} : D3{0.05, 0.1, 0.0};
     m.specular = {0.6, 0.5, 0.4};
     m.specularPower = 12;
-    m.alpha = 0.75;
+    m.alpha = bright ? 1.0 : 0.75;
     m.ambient = lit ? D3{0.15, 0.1, 0.2} : D3{0, 0, 0};
     return m;
 }
@@ -391,17 +397,17 @@ CaseResult runBasic(const BasicCase& c, Effect** keep = nullptr) {
     const CpuTexture cpuTexture = makeCpuTexture(1);
     auto texture = upload(device, cpuTexture);
     const bool lit = c.lighting != Lighting::Off;
-    Material m = basicMaterial(lit);
+    Material m = basicMaterial(lit, c.bright);
     Lights lights;
     Fog fog;
     fog.enabled = c.fog;
 
     setMatrices(effect, scene);
-    effect.DiffuseColor = Vector3(0.8f, 0.7f, 0.9f);
-    effect.EmissiveColor = Vector3(0.05f, 0.1f, 0.0f);
+    effect.DiffuseColor = Vector3(float(m.diffuse.x), float(m.diffuse.y), float(m.diffuse.z));
+    effect.EmissiveColor = Vector3(float(m.emissive.x), float(m.emissive.y), float(m.emissive.z));
     effect.SpecularColor = Vector3(0.6f, 0.5f, 0.4f);
     effect.SpecularPower = 12;
-    effect.Alpha = 0.75f;
+    effect.Alpha = float(m.alpha);
     effect.AmbientLightColor = Vector3(0.15f, 0.1f, 0.2f);
     effect.LightingEnabled = lit;
     applyLights(effect, lights);
@@ -434,8 +440,8 @@ CaseResult runBasic(const BasicCase& c, Effect** keep = nullptr) {
             specular = r.specular;
         }
         if (c.vertexColor) diffuse = diffuse * colourOf(v);
-        push(out.varyings, diffuse);
-        push(out.varyings, specular);
+        push(out.varyings, colorOutput(diffuse));
+        push(out.varyings, colorOutput(specular));
         out.varyings.push_back(c.fog ? fogFactor(fog, t.worldView, position) : 0);
         push(out.varyings, v.TexCoord);
         push(out.varyings, worldPosition);
@@ -474,6 +480,13 @@ TEST(StockEffects, BasicEffectPermutationsMatchTheCpuReference) {
         {"basic_pixellit", Lighting::PerPixel, false, false, false, false, "BasicEffect_L2_T0_V0_F0"},
         {"basic_pixellit_texture_vertexcolor_fog", Lighting::PerPixel, true, true, true, false, "BasicEffect_L2_T1_V1_F1"},
         {"basic_pixellit_default_lighting", Lighting::PerPixel, true, false, false, true, "BasicEffect_L2_T1_V0_F0"},
+        // Per-vertex colours past 1, which XNA's vs_2_0 clamps: white diffuse under the default rig,
+        // and unlit (Diffuse + Emissive) * Alpha > 1 with texture, vertex colour and fog.
+        {"basic_vertexlit_default_lighting_bright", Lighting::PerVertex, false, false, false, true, "BasicEffect_L1_T0_V0_F0", true},
+        {"basic_vertexlit_vertexcolor_fog_bright", Lighting::PerVertex, false, true, true, true, "BasicEffect_L1_T0_V1_F1", true},
+        {"basic_unlit_texture_fog_bright", Lighting::Off, true, false, true, false, "BasicEffect_L0_T1_V0_F1", true},
+        {"basic_unlit_vertexcolor_bright", Lighting::Off, false, true, false, false, "BasicEffect_L0_T0_V1_F0", true},
+        {"basic_pixellit_vertexcolor_bright", Lighting::PerPixel, false, true, false, true, "BasicEffect_L2_T0_V1_F0", true},
     };
     Effect* effect = nullptr;
     for (const BasicCase& c : cases) {
@@ -483,7 +496,10 @@ TEST(StockEffects, BasicEffectPermutationsMatchTheCpuReference) {
     // Only the permutations drawn were compiled.
     const EffectStatistics stats = effect->statistics();
     EXPECT_EQ(stats.techniqueCount, 24);
-    EXPECT_EQ(stats.compiledTechniques.size(), cases.size());
+    std::vector<std::string> permutations;
+    for (const BasicCase& c : cases)
+        if (std::find(permutations.begin(), permutations.end(), c.permutation) == permutations.end()) permutations.push_back(c.permutation);
+    EXPECT_EQ(stats.compiledTechniques.size(), permutations.size());
 }
 
 TEST(StockEffects, EnableDefaultLightingSetsXnasRig) {
@@ -525,6 +541,7 @@ TEST(StockEffects, AlphaTestEffectMatchesTheCpuReference) {
         CompareFunction function;
         int reference;
         bool vertexColor, fog;
+        bool bright = false;  // DiffuseColor past 1: the per-vertex colour is clamped (XNA's vs_2_0)
     };
     const std::vector<Case> cases = {
         {"alphatest_greater_190", CompareFunction::Greater, 190, false, false},
@@ -532,6 +549,7 @@ TEST(StockEffects, AlphaTestEffectMatchesTheCpuReference) {
         {"alphatest_equal_225", CompareFunction::Equal, 225, false, false},
         {"alphatest_notequal_225_fog", CompareFunction::NotEqual, 225, false, true},
         {"alphatest_always", CompareFunction::Always, 0, true, false},
+        {"alphatest_always_vertexcolor_fog_bright", CompareFunction::Always, 0, true, true, true},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
@@ -539,7 +557,8 @@ TEST(StockEffects, AlphaTestEffectMatchesTheCpuReference) {
         fog.enabled = c.fog;
         setMatrices(effect, scene);
         setFog(effect, fog);
-        effect.DiffuseColor = Vector3(0.9f, 0.8f, 0.7f);
+        const D3 diffuseColor = c.bright ? D3{1.6, 1.3, 0.7} : D3{0.9, 0.8, 0.7};
+        effect.DiffuseColor = Vector3(float(diffuseColor.x), float(diffuseColor.y), float(diffuseColor.z));
         effect.Alpha = 1.0f;  // so that texel alphas (multiples of 1/255 when no vertex colour) hit Equal exactly
         effect.AlphaFunction = c.function;
         effect.ReferenceAlpha = c.reference;
@@ -550,9 +569,9 @@ TEST(StockEffects, AlphaTestEffectMatchesTheCpuReference) {
             RasterVertex out;
             const D4 position{v.Position.X, v.Position.Y, v.Position.Z, 1};
             out.clip = mul(position, t.worldViewProj);
-            D4 diffuse{0.9, 0.8, 0.7, 1.0};
+            D4 diffuse{diffuseColor.x, diffuseColor.y, diffuseColor.z, 1.0};
             if (c.vertexColor) diffuse = diffuse * colourOf(v);
-            push(out.varyings, diffuse);
+            push(out.varyings, colorOutput(diffuse));
             push(out.varyings, v.TexCoord);
             out.varyings.push_back(c.fog ? fogFactor(fog, t.worldView, position) : 0);
             return out;
@@ -610,15 +629,18 @@ TEST(StockEffects, DualTextureEffectMatchesTheCpuReference) {
     const CpuTexture cpu1 = makeCpuTexture(3), cpu2 = makeCpuTexture(0);
     auto texture1 = upload(device, cpu1), texture2 = upload(device, cpu2);
     const Transform t(scene);
-    for (int variant = 0; variant < 4; ++variant) {
-        const bool vertexColor = variant & 1, fogOn = variant & 2;
-        const std::string name = std::string("dualtexture") + (vertexColor ? "_vertexcolor" : "") + (fogOn ? "_fog" : "");
+    // Variants 4 and 5: DiffuseColor past 1, which XNA's vs_2_0 clamps per vertex.
+    for (int variant = 0; variant < 6; ++variant) {
+        const bool vertexColor = variant & 1, fogOn = variant & 2, bright = variant >= 4;
+        const std::string name = std::string("dualtexture") + (vertexColor ? "_vertexcolor" : "") + (fogOn ? "_fog" : "") +
+                                 (bright ? "_bright" : "");
+        const D3 diffuseColor = bright ? D3{1.5, 0.9, 1.3} : D3{0.7, 0.9, 0.8};
         SCOPED_TRACE(name);
         Fog fog;
         fog.enabled = fogOn;
         setMatrices(effect, scene);
         setFog(effect, fog);
-        effect.DiffuseColor = Vector3(0.7f, 0.9f, 0.8f);
+        effect.DiffuseColor = Vector3(float(diffuseColor.x), float(diffuseColor.y), float(diffuseColor.z));
         effect.Alpha = 0.8f;
         effect.Texture = texture1.get();
         effect.Texture2 = texture2.get();
@@ -627,23 +649,24 @@ TEST(StockEffects, DualTextureEffectMatchesTheCpuReference) {
             RasterVertex out;
             const D4 position{v.Position.X, v.Position.Y, v.Position.Z, 1};
             out.clip = mul(position, t.worldViewProj);
-            D4 diffuse{0.7 * 0.8, 0.9 * 0.8, 0.8 * 0.8, 0.8};
+            D4 diffuse{diffuseColor.x * 0.8, diffuseColor.y * 0.8, diffuseColor.z * 0.8, 0.8};
             if (vertexColor) diffuse = diffuse * colourOf(v);
-            push(out.varyings, diffuse);
+            push(out.varyings, colorOutput(diffuse));
             push(out.varyings, v.TexCoord);
             push(out.varyings, v.TexCoord2);
             out.varyings.push_back(fogOn ? fogFactor(fog, t.worldView, position) : 0);
             return out;
         };
         PixelStage ps = [&](const std::vector<double>& in) {
-            D4 color = d4At(in, 0) * cpu1.sample(in[4], in[5]);
+            // XNA: color.rgb *= 2; color *= overlay * diffuse -- on all four channels.
             const D4 overlay = cpu2.sample(in[6], in[7]);
-            color = {color.x * 2 * overlay.x, color.y * 2 * overlay.y, color.z * 2 * overlay.z, color.w};
+            D4 color = cpu1.sample(in[4], in[5]) * D4{2, 2, 2, 1} * overlay * d4At(in, 0);
             if (fogOn) color = applyFog(color, fog, in[8]);
             return colour(color);
         };
         EXPECT_EQ(effect.PermutationName(), "DualTextureEffect_V" + std::to_string(int(vertexColor)) + "_F" + std::to_string(int(fogOn)));
-        expectMatches(runCase(name, effect, mesh, vs, ps), kTextureTolerance);
+        // The product of two filtered samples at up to twice their value: twice one sample's error.
+        expectMatches(runCase(name, effect, mesh, vs, ps), 2 * kTextureTolerance);
     }
 }
 
@@ -690,6 +713,8 @@ TEST(StockEffects, EnvironmentMapEffectMatchesTheCpuReference) {
         {"envmap_fresnel", 0.9f, 1.5f, Vector3(0, 0, 0), false, false, "EnvironmentMapEffect_R1_S0_F0"},
         {"envmap_fresnel_specular_fog", 0.8f, 2.0f, Vector3(0.3f, 0.2f, 0.1f), true, false, "EnvironmentMapEffect_R1_S1_F1"},
         {"envmap_specular_default_lighting", 0.5f, 0, Vector3(0.2f, 0.2f, 0.3f), false, true, "EnvironmentMapEffect_R0_S1_F0"},
+        // An amount past 1 and a lit diffuse past 1 under the default rig: both clamped per vertex.
+        {"envmap_amount_past_one_default_lighting_fog", 1.4f, 0, Vector3(0, 0, 0), true, true, "EnvironmentMapEffect_R0_S0_F1"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
@@ -729,8 +754,8 @@ TEST(StockEffects, EnvironmentMapEffectMatchesTheCpuReference) {
             const LightResult r = light(lights, m, toEye, normal);  // diffuse only
             double amount = c.amount;
             if (c.fresnel != 0) amount *= std::pow(std::max(1 - std::fabs(dot(toEye, normal)), 0.0), double(c.fresnel));
-            push(out.varyings, D4{r.diffuse.x, r.diffuse.y, r.diffuse.z, m.alpha});
-            out.varyings.push_back(amount);
+            push(out.varyings, colorOutput(D4{r.diffuse.x, r.diffuse.y, r.diffuse.z, m.alpha}));
+            out.varyings.push_back(saturate(amount));
             out.varyings.push_back(c.fog ? fogFactor(fog, t.worldView, position) : 0);
             push(out.varyings, v.TexCoord);
             push(out.varyings, reflect(-toEye, normal));
@@ -776,11 +801,13 @@ TEST(StockEffects, SkinnedEffectMatchesTheCpuReference) {
     struct Case {
         int weights;
         bool perPixel, fog;
+        bool bright = false;  // per-vertex lit colours past 1 (clamped, as XNA's vs_2_0 does)
     };
-    const std::vector<Case> cases = {{1, false, false}, {2, true, false}, {4, false, true}, {4, true, true}, {2, false, true}};
+    const std::vector<Case> cases = {{1, false, false}, {2, true, false}, {4, false, true}, {4, true, true}, {2, false, true},
+                                     {4, false, false, true}, {2, true, true, true}};
     for (const Case& c : cases) {
         const std::string name = "skinned_w" + std::to_string(c.weights) + (c.perPixel ? "_pixellit" : "_vertexlit") +
-                                 (c.fog ? "_fog" : "");
+                                 (c.fog ? "_fog" : "") + (c.bright ? "_bright" : "");
         SCOPED_TRACE(name);
         Mesh mesh = sphere(c.weights);
         for (TestVertex& v : mesh.vertices)
@@ -789,15 +816,15 @@ TEST(StockEffects, SkinnedEffectMatchesTheCpuReference) {
         Fog fog;
         fog.enabled = c.fog;
         Lights lights;
-        Material m = basicMaterial(true);
+        Material m = basicMaterial(true, c.bright);
         setMatrices(effect, scene);
         setFog(effect, fog);
         applyLights(effect, lights);
-        effect.DiffuseColor = Vector3(0.8f, 0.7f, 0.9f);
-        effect.EmissiveColor = Vector3(0.05f, 0.1f, 0.0f);
+        effect.DiffuseColor = Vector3(float(m.diffuse.x), float(m.diffuse.y), float(m.diffuse.z));
+        effect.EmissiveColor = Vector3(float(m.emissive.x), float(m.emissive.y), float(m.emissive.z));
         effect.SpecularColor = Vector3(0.6f, 0.5f, 0.4f);
         effect.SpecularPower = 12;
-        effect.Alpha = 0.75f;
+        effect.Alpha = float(m.alpha);
         effect.AmbientLightColor = Vector3(0.15f, 0.1f, 0.2f);
         effect.PreferPerPixelLighting = c.perPixel;
         effect.WeightsPerVertex = c.weights;
@@ -827,8 +854,8 @@ TEST(StockEffects, SkinnedEffectMatchesTheCpuReference) {
                 diffuse = {r.diffuse.x, r.diffuse.y, r.diffuse.z, m.alpha};
                 specular = r.specular;
             }
-            push(out.varyings, diffuse);
-            push(out.varyings, specular);
+            push(out.varyings, colorOutput(diffuse));
+            push(out.varyings, colorOutput(specular));
             out.varyings.push_back(c.fog ? fogFactor(fog, t.worldView, position) : 0);
             push(out.varyings, v.TexCoord);
             push(out.varyings, worldPosition);

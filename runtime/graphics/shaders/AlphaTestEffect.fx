@@ -35,6 +35,7 @@ VSOutput VSAlphaTest(VSInput vin, uniform bool vertexColor, uniform bool fog)
     vout.Diffuse = DiffuseColor;
     if (vertexColor)
         vout.Diffuse *= vin.Color;
+    vout.Diffuse = ColorOutput(vout.Diffuse);
     vout.TexCoord = vin.TexCoord;
     vout.Fog = 0;
     if (fog)

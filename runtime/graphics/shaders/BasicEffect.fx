@@ -53,6 +53,8 @@ VSOutput VSBasic(VSInput vin, uniform int lighting, uniform bool textured, unifo
     }
     if (vertexColor)
         vout.Diffuse *= vin.Color;
+    vout.Diffuse = ColorOutput(vout.Diffuse);
+    vout.Specular = ColorOutput(vout.Specular);
     return vout;
 }
 

@@ -1,6 +1,7 @@
 // DualTextureEffect.fx: XNA 4's DualTextureEffect (fxport/graphics/dual_texture_effect.h): two
 // textures with two texture-coordinate sets, the second a "2x modulate" detail or light map:
-// colour = Texture * diffuse, then rgb *= 2 * Texture2.rgb (alpha from the first texture only).
+// colour = Texture * (2, 2, 2, 1) * Texture2 * diffuse, on all four channels: the second texture's
+// alpha multiplies too, as in XNA's own shader.
 // Techniques DualTextureEffect_V<vertex colour>_F<fog>.
 
 texture Texture;
@@ -39,6 +40,7 @@ VSOutput VSDualTexture(VSInput vin, uniform bool vertexColor, uniform bool fog)
     vout.Diffuse = DiffuseColor;
     if (vertexColor)
         vout.Diffuse *= vin.Color;
+    vout.Diffuse = ColorOutput(vout.Diffuse);
     vout.TexCoord = vin.TexCoord;
     vout.TexCoord2 = vin.TexCoord2;
     vout.Fog = 0;
@@ -49,9 +51,10 @@ VSOutput VSDualTexture(VSInput vin, uniform bool vertexColor, uniform bool fog)
 
 float4 PSDualTexture(VSOutput pin, uniform bool fog) : COLOR0
 {
-    float4 color = tex2D(TextureSampler, pin.TexCoord) * pin.Diffuse;
-    float3 overlay = tex2D(Texture2Sampler, pin.TexCoord2).rgb;
-    color.rgb *= 2 * overlay;
+    float4 color = tex2D(TextureSampler, pin.TexCoord);
+    float4 overlay = tex2D(Texture2Sampler, pin.TexCoord2);
+    color.rgb *= 2;
+    color *= overlay * pin.Diffuse;
     if (fog)
         color = ApplyFog(color, pin.Fog);
     return color;

@@ -55,6 +55,8 @@ VSOutput VSEnvironmentMap(VSInput vin, uniform bool fresnel, uniform bool fog)
     vout.Amount = float4(amount, amount, amount, 0);
     if (fog)
         vout.Amount.a = ComputeFogFactor(vin.Position);
+    vout.Diffuse = ColorOutput(vout.Diffuse);
+    vout.Amount = ColorOutput(vout.Amount);
     vout.TexCoord = vin.TexCoord;
     vout.EnvCoord = reflect(-toEye, normal);
     return vout;

@@ -62,6 +62,8 @@ VSOutput VSSkinned(VSInput vin, uniform int weights, uniform bool perPixel, unif
         vout.Specular.rgb = lights.Specular;
         vout.NormalWS = 0;
     }
+    vout.Diffuse = ColorOutput(vout.Diffuse);
+    vout.Specular = ColorOutput(vout.Specular);
     return vout;
 }
 

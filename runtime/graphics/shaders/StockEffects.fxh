@@ -81,6 +81,14 @@ float4 ApplyFog(float4 color, float fogFactor)
     return color;
 }
 
+// XNA's stock shaders are vs_2_0, and Direct3D 9 saturates a vs_2_0 shader's COLOR0/COLOR1 outputs
+// (the diffuse colour and the specular-plus-fog colour) before they are interpolated. Ours are
+// vs_3_0 with TEXCOORD outputs, which nothing clamps, so each vertex shader clamps those two here.
+float4 ColorOutput(float4 color)
+{
+    return saturate(color);
+}
+
 float3 WorldNormal(float3 objectNormal)
 {
     return normalize(mul(objectNormal, (float3x3)WorldInverseTranspose));

@@ -19,6 +19,8 @@
 //           specular = sum_i pow(max(N.H_i, 0), SpecularPower) * light_i.Specular * SpecularColor
 //           (H = normalize(toEye - light direction); no highlight where N.L < 0). Per vertex
 //           (Gouraud) unless PreferPerPixelLighting.
+//   The per-vertex colours (the diffuse colour with vertex colour, and per vertex the highlight) are
+//   clamped to [0, 1] before interpolation, as Direct3D 9 clamps XNA's vs_2_0 colour outputs.
 //   fog:    rgb = lerp(rgb, FogColor * colour.a, saturate((depth - FogStart) / (FogEnd - FogStart))),
 //           the factor computed per vertex from the view-space depth.
 // Colours are premultiplied by Alpha (draw with BlendState::AlphaBlend, as in XNA). The texture is

@@ -4,8 +4,9 @@
 // Public fields read at each Apply (see effect_interfaces.h); 4 permutations in
 // runtime/graphics/shaders/DualTextureEffect.fx.
 //
-//   colour = Texture(uv0) * (DiffuseColor * Alpha, Alpha) [* vertex colour]
-//   colour.rgb *= 2 * Texture2(uv1).rgb; then fog
+//   diffuse = saturate((DiffuseColor * Alpha, Alpha) [* vertex colour])   (per vertex)
+//   colour  = Texture(uv0) * (2, 2, 2, 1) * Texture2(uv1) * diffuse; then fog
+// All four channels of Texture2 multiply, its alpha too, as in XNA's shader.
 // Texture is sampled through register s0, Texture2 through s1 (GraphicsDevice::SamplerStates[0/1]).
 #pragma once
 
