@@ -231,6 +231,10 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
         if (vertex) {
             if (leaf.semanticBase == "SV_VERTEXID" || leaf.semanticBase == "SV_INSTANCEID") {
                 addParam("uint " + name + " : " + leaf.semanticBase);
+            } else if (leaf.semanticBase == "SV_POSITION" && profile.isD3D9()) {
+                // fxc reads an SV_Position vertex input as POSITION at SM2/3 (XNA's own stock
+                // shaders declare one); the vertex declaration's Position element feeds it.
+                addParam(vectorType(leaf.scalar, leaf.components) + " " + name + " : POSITION" + std::to_string(leaf.semanticIndex));
             } else {
                 addParam(vectorType(leaf.scalar, leaf.components) + " " + name + " : " + sem);
             }

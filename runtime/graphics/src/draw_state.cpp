@@ -52,6 +52,22 @@ fxport::BlendState blendForPixelShader(const fxport::BlendState& wanted, int out
     return effective;
 }
 
+// The element feeding a vertex-shader input: matched by semantic, as D3D does. An `SV_Position`
+// input of an SM4+ shader takes the Position element (MonoGame's rule for XNA's usages; fxc already
+// reads it as POSITION at SM2/3). An input the shader reads and the declaration lacks is an error,
+// as in XNA ("...Normal0 is missing"), never a silent (0, 0, 0, 1).
+const VertexElement& elementFor(const VertexDeclaration& declaration, const xlate::VertexInput& input, const std::string& shaderName) {
+    std::string semantic = input.semantic;
+    if (semantic.rfind("SV_POSITION", 0) == 0) semantic = semantic.substr(3);
+    const VertexElement* element = nullptr;
+    for (const VertexElement& e : declaration.GetVertexElements())
+        if (vertexElementSemantic(e) == semantic) element = &e;
+    if (!element)
+        throw InvalidOperation("the current vertex declaration does not include all the elements required by the current vertex shader " +
+                               shaderName + ": " + input.semantic + " is missing (a VertexElement of that usage and usage index)");
+    return *element;
+}
+
 std::string textureName(const Texture* t) { return t->Name.empty() ? std::string("(unnamed)") : "'" + t->Name + "'"; }
 
 }  // namespace
@@ -226,16 +242,15 @@ GraphicsDevice::Impl::VertexArray& GraphicsDevice::Impl::vertexArrayFor(const Ve
     key += "|" + std::to_string(vs);
     auto it = vertexArrays.find(key);
     if (it == vertexArrays.end()) {
+        std::vector<const VertexElement*> elements;
+        for (const xlate::VertexInput& input : shaders[0]->shader->inputs)
+            elements.push_back(&elementFor(declaration, input, "'" + shaders[0]->shader->entryPoint + "'"));
         VertexArray va;
         glCreateVertexArrays(1, &va.vao);
         ++live.vertexArrays;
-        for (const xlate::VertexInput& input : shaders[0]->shader->inputs) {
-            const VertexElement* element = nullptr;
-            for (const VertexElement& e : declaration.GetVertexElements())
-                if (vertexElementSemantic(e) == input.semantic) element = &e;
-            // An input the declaration lacks reads the attribute's current value, (0,0,0,1),
-            // as D3D supplies for missing vertex components.
-            if (!element) continue;
+        for (std::size_t i = 0; i < elements.size(); ++i) {
+            const xlate::VertexInput& input = shaders[0]->shader->inputs[i];
+            const VertexElement* element = elements[i];
             GLuint location = GLuint(input.location);
             AttributeFormat f = attributeFormat(element->VertexElementFormat);
             glEnableVertexArrayAttrib(va.vao, location);
