@@ -34,6 +34,9 @@ function(fxport_add_effects)
     set(arg_OUTPUT_DIR ${CMAKE_CURRENT_BINARY_DIR}/effects)
   endif()
   cmake_path(ABSOLUTE_PATH arg_OUTPUT_DIR BASE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR} NORMALIZE)
+  # The folder is made now and again before each compile: Unix Makefiles, unlike Ninja, does not
+  # create an output's folder, and a clean may have removed it.
+  file(MAKE_DIRECTORY ${arg_OUTPUT_DIR})
 
   set(options "")
   foreach(dir IN LISTS arg_INCLUDE_DIRS)
@@ -55,6 +58,7 @@ function(fxport_add_effects)
     endif()
     add_custom_command(
       OUTPUT ${output}
+      COMMAND ${CMAKE_COMMAND} -E make_directory ${arg_OUTPUT_DIR}
       COMMAND fxport::fxport compile ${effect} -o ${output} --depfile ${output}.d ${options}
       DEPENDS ${effect} fxport::fxport
       DEPFILE ${output}.d
