@@ -192,8 +192,12 @@ TEST(ApiMisuse, ClearErrorsNamingTheThing) {
     gone.Dispose();
     Color c;
     EXPECT_THROW(gone.GetData(&c, 1), InvalidOperation);
-    // Wrong SetData size.
+    // Wrong SetData size, said in the caller's units (elements), not bytes.
     EXPECT_THROW(tex.SetData(std::vector<Color>(2)), ArgumentError);
+    Texture2D square(device, 16, 16);
+    std::string count = errorOf([&] { square.SetData(std::vector<Color>(100)); });
+    EXPECT_NE(count.find("got 100 elements of 4 bytes"), std::string::npos) << count;
+    EXPECT_NE(count.find("needs 256 elements of 4 bytes"), std::string::npos) << count;
 }
 
 TEST(ApiMisuse, DrawingWithNoPassAppliedThrows) {

@@ -60,13 +60,18 @@ void Texture::releaseGpuObjects() {
 
 int Texture::levelWidth(int base, int level) const { return std::max(1, base >> level); }
 
-void Texture::writeTexels(int face, int level, int x, int y, int w, int h, const void* data, std::size_t bytes) {
+void Texture::writeTexels(int face, int level, int x, int y, int w, int h, const void* data, std::size_t bytes, std::size_t elementSize) {
     const detail::GlTextureFormat& f = detail::glFormat(format_);
     std::size_t expected = std::size_t(w) * std::size_t(h) * std::size_t(f.bytesPerPixel);
-    if (bytes != expected)
-        throw ArgumentError(describe() + ": SetData got " + std::to_string(bytes) + " bytes, the region " +
-                            std::to_string(w) + "x" + std::to_string(h) + " of " + surfaceFormatName(format_) +
-                            " needs " + std::to_string(expected));
+    if (bytes != expected) {
+        // In the caller's units: SetData(data, count) counts elements, not bytes.
+        const std::string unit = elementSize > 1 ? " elements of " + std::to_string(elementSize) + " bytes" : " bytes";
+        const std::string needs = elementSize > 1 && expected % elementSize == 0 ? std::to_string(expected / elementSize) + unit
+                                                                                  : std::to_string(expected) + " bytes";
+        throw ArgumentError(describe() + ": SetData got " + std::to_string(bytes / std::max<std::size_t>(elementSize, 1)) + unit +
+                            ", the region " + std::to_string(w) + "x" + std::to_string(h) + " of " + surfaceFormatName(format_) +
+                            " needs " + needs);
+    }
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     if (face < 0)
         glTextureSubImage2D(name_, level, x, y, w, h, f.format, f.type, data);
@@ -108,7 +113,7 @@ void Texture2D::create(bool) {
 
 Texture2D::~Texture2D() { disposeFromDestructor(); }
 
-void Texture2D::setData(int level, const Rectangle* rect, const void* data, std::size_t bytes) {
+void Texture2D::setData(int level, const Rectangle* rect, const void* data, std::size_t bytes, std::size_t elementSize) {
     throwIfDisposed("SetData");
     if (level < 0 || level >= levels_)
         throw ArgumentError(describe() + ": SetData level " + std::to_string(level) + " of " + std::to_string(levels_));
@@ -118,7 +123,7 @@ void Texture2D::setData(int level, const Rectangle* rect, const void* data, std:
         throw ArgumentError(describe() + ": SetData rectangle (" + std::to_string(r.X) + "," + std::to_string(r.Y) + "," +
                             std::to_string(r.Width) + "," + std::to_string(r.Height) + ") is outside the " +
                             std::to_string(w) + "x" + std::to_string(h) + " level");
-    writeTexels(-1, level, r.X, r.Y, r.Width, r.Height, data, bytes);
+    writeTexels(-1, level, r.X, r.Y, r.Width, r.Height, data, bytes, elementSize);
 }
 
 void Texture2D::getData(int level, void* data, std::size_t bytes) const {
@@ -185,9 +190,9 @@ void TextureCube::create(bool) {
 
 TextureCube::~TextureCube() { disposeFromDestructor(); }
 
-void TextureCube::setData(CubeMapFace face, const void* data, std::size_t bytes) {
+void TextureCube::setData(CubeMapFace face, const void* data, std::size_t bytes, std::size_t elementSize) {
     throwIfDisposed("SetData");
-    writeTexels(int(face), 0, 0, 0, size_, size_, data, bytes);
+    writeTexels(int(face), 0, 0, 0, size_, size_, data, bytes, elementSize);
 }
 
 void TextureCube::getData(CubeMapFace face, void* data, std::size_t bytes) const {

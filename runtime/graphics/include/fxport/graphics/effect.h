@@ -76,6 +76,8 @@ public:
     // float3x3 / float4x3 parameter takes the top-left part.
     void SetValue(const Matrix& value);
     void SetValueTranspose(const Matrix& value);
+    // Arrays: the values given are written from element 0; a shorter array than the parameter
+    // leaves the elements after it as they were (XNA does the same), a longer one throws.
     void SetValue(std::span<const float> values);
     void SetValue(std::span<const int> values);
     void SetValue(std::span<const Vector2> values);

@@ -32,8 +32,9 @@ public:
 protected:
     Texture(fxport::GraphicsDevice& device, const char* typeName, Kind kind, SurfaceFormat format, int levels);
     void releaseGpuObjects() override;
-    // Uploads/reads raw texels of one level (face = -1 for 2D). Checks the byte count.
-    void writeTexels(int face, int level, int x, int y, int w, int h, const void* data, std::size_t bytes);
+    // Uploads/reads raw texels of one level (face = -1 for 2D). Checks the byte count; its error
+    // counts in the caller's elements of `elementSize` bytes.
+    void writeTexels(int face, int level, int x, int y, int w, int h, const void* data, std::size_t bytes, std::size_t elementSize = 1);
     void readTexels(int face, int level, void* data, std::size_t bytes) const;
     int levelWidth(int base, int level) const;
 
@@ -56,10 +57,10 @@ public:
     // T must be the texel type of Format() (Color for Color, float for Single, Vector4 for Vector4,
     // uint16_t[4] packed types for Rgba64/HalfVector4 ...): sizeof(T) * count must equal the bytes of
     // the level (whole level) or of `rect`.
-    template <class T> void SetData(const T* data, std::size_t count) { setData(0, nullptr, data, sizeof(T) * count); }
+    template <class T> void SetData(const T* data, std::size_t count) { setData(0, nullptr, data, sizeof(T) * count, sizeof(T)); }
     template <class T> void SetData(const std::vector<T>& data) { SetData(data.data(), data.size()); }
     template <class T> void SetData(int level, const Rectangle* rect, const T* data, std::size_t count) {
-        setData(level, rect, data, sizeof(T) * count);
+        setData(level, rect, data, sizeof(T) * count, sizeof(T));
     }
     template <class T> void GetData(T* data, std::size_t count) const { getData(0, data, sizeof(T) * count); }
     template <class T> std::vector<T> GetData() const {
@@ -78,7 +79,7 @@ public:
     // a screen shows without its alpha (XNA's too).
     void savePng(const std::string& path, bool opaque) const;
 
-    void setData(int level, const Rectangle* rect, const void* data, std::size_t bytes);
+    void setData(int level, const Rectangle* rect, const void* data, std::size_t bytes, std::size_t elementSize = 1);
     void getData(int level, void* data, std::size_t bytes) const;
 
 protected:
@@ -99,12 +100,12 @@ public:
 
     int Size() const { return size_; }
     template <class T> void SetData(CubeMapFace face, const T* data, std::size_t count) {
-        setData(face, data, sizeof(T) * count);
+        setData(face, data, sizeof(T) * count, sizeof(T));
     }
     template <class T> void GetData(CubeMapFace face, T* data, std::size_t count) const {
         getData(face, data, sizeof(T) * count);
     }
-    void setData(CubeMapFace face, const void* data, std::size_t bytes);
+    void setData(CubeMapFace face, const void* data, std::size_t bytes, std::size_t elementSize = 1);
     void getData(CubeMapFace face, void* data, std::size_t bytes) const;
 
 protected:
