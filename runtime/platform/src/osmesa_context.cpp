@@ -1,8 +1,15 @@
 // OSMesa: a core-profile context rendering on the CPU (llvmpipe) into a buffer we own. fxport renders
 // into FBOs; this buffer is only the default framebuffer. llvmpipe's thread count (LP_NUM_THREADS)
 // is left to Mesa's defaults.
+//
+// Texture filtering: llvmpipe's fast path for 8-bit textures ("AoS sampling") rounds every bilinear
+// weight to 8 bits, so a shader that offsets its texture coordinates by a sampled value (refraction,
+// distortion) drifts by up to ~70/255 from what D3D9-class hardware draws. fxport sets
+// GALLIVM_PERF=no_aos_sampling (float weights) before the first context, unless the program or user
+// has set GALLIVM_PERF already (docs/testing.md).
 #include <GL/osmesa.h>
 
+#include <cstdlib>
 #include <cstdint>
 #include <stdexcept>
 #include <vector>
@@ -21,6 +28,7 @@ public:
     explicit OSMesaGraphicsContext(const ContextDesc& desc)
         : ContextBase(Platform::OSMesa, osmesaProcAddress, desc.width, desc.height),
           pixels_(static_cast<std::size_t>(desc.width) * static_cast<std::size_t>(desc.height)) {
+        setenv("GALLIVM_PERF", "no_aos_sampling", 0);  // read by llvmpipe when its first screen is made
         // OSMesa hands out a context of at least the version asked for, or none: ask for 4.5 and
         // step down to 4.1 (below that the GLSL 4.10+ that xlate emits cannot run).
         for (int minor = 5; minor >= 1 && context_ == nullptr; --minor) {
