@@ -15,6 +15,13 @@ KeyboardState Keyboard::GetState() {
     return state;
 }
 
+std::vector<Keys> KeyboardState::GetPressedKeys() const {
+    std::vector<Keys> keys;
+    for (std::size_t k = 1; k < down_.size(); ++k)
+        if (down_[k]) keys.push_back(Keys(k));
+    return keys;
+}
+
 MouseState Mouse::GetState() {
     GraphicsDevice* device = GraphicsDevice::current();
     if (!device) throw InvalidOperation("Mouse::GetState: no GraphicsDevice exists");

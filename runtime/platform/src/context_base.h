@@ -21,6 +21,7 @@ public:
     void pollEvents() override {}
     bool isKeyDown(int) const override { return false; }
     MouseInput mouse() const override { return {}; }
+    GamepadInput gamepad(int) const override { return {}; }
     void setMousePosition(int, int) override {}
     int width() const override { return width_; }
     int height() const override { return height_; }

@@ -1,5 +1,5 @@
 // GLFW: a window with a 4.5 core context, for interactive runs (--window). The GLFWwindow stays in
-// this file; keyboard and mouse input will be added here when the demos need them.
+// this file, with keyboard, mouse and gamepad input.
 #define GLFW_INCLUDE_NONE  // GLFW must not pull in <GL/gl.h>: GL comes from fxport/platform/gl.h only
 #include <GLFW/glfw3.h>
 
@@ -31,7 +31,35 @@ int glfwKeyFor(int vk) {
     if ((vk >= 'A' && vk <= 'Z') || (vk >= '0' && vk <= '9') || vk == ' ') return vk;
     if (vk >= 0x70 && vk <= 0x7B) return GLFW_KEY_F1 + (vk - 0x70);        // F1..F12
     if (vk >= 0x60 && vk <= 0x69) return GLFW_KEY_KP_0 + (vk - 0x60);      // NumPad0..9
+    if (vk >= 0x7C && vk <= 0x87) return GLFW_KEY_F13 + (vk - 0x7C);        // F13..F24
     switch (vk) {
+    case 0x14: return GLFW_KEY_CAPS_LOCK;
+    case 0x23: return GLFW_KEY_END;
+    case 0x24: return GLFW_KEY_HOME;
+    case 0x2C: return GLFW_KEY_PRINT_SCREEN;
+    case 0x2D: return GLFW_KEY_INSERT;
+    case 0x2E: return GLFW_KEY_DELETE;
+    case 0x5B: return GLFW_KEY_LEFT_SUPER;
+    case 0x5C: return GLFW_KEY_RIGHT_SUPER;
+    case 0x5D: return GLFW_KEY_MENU;
+    case 0x6A: return GLFW_KEY_KP_MULTIPLY;
+    case 0x6B: return GLFW_KEY_KP_ADD;
+    case 0x6D: return GLFW_KEY_KP_SUBTRACT;
+    case 0x6E: return GLFW_KEY_KP_DECIMAL;
+    case 0x6F: return GLFW_KEY_KP_DIVIDE;
+    case 0x90: return GLFW_KEY_NUM_LOCK;
+    case 0x91: return GLFW_KEY_SCROLL_LOCK;
+    case 0xBA: return GLFW_KEY_SEMICOLON;
+    case 0xBC: return GLFW_KEY_COMMA;
+    case 0xBE: return GLFW_KEY_PERIOD;
+    case 0xBF: return GLFW_KEY_SLASH;
+    case 0xC0: return GLFW_KEY_GRAVE_ACCENT;
+    case 0xDB: return GLFW_KEY_LEFT_BRACKET;
+    case 0xDC: return GLFW_KEY_BACKSLASH;
+    case 0xDD: return GLFW_KEY_RIGHT_BRACKET;
+    case 0xDE: return GLFW_KEY_APOSTROPHE;
+    case 0xE2: return GLFW_KEY_WORLD_1;
+    case 0x13: return GLFW_KEY_PAUSE;
     case 0x1B: return GLFW_KEY_ESCAPE;
     case 0x0D: return GLFW_KEY_ENTER;
     case 0x09: return GLFW_KEY_TAB;
@@ -94,6 +122,17 @@ public:
         return key != GLFW_KEY_UNKNOWN && glfwGetKey(window_, key) == GLFW_PRESS;
     }
     void setMousePosition(int x, int y) override { glfwSetCursorPos(window_, x, y); }
+    GamepadInput gamepad(int index) const override {
+        GamepadInput g;
+        GLFWgamepadstate state;
+        if (index < 0 || index > GLFW_JOYSTICK_LAST || !glfwJoystickIsGamepad(GLFW_JOYSTICK_1 + index) ||
+            !glfwGetGamepadState(GLFW_JOYSTICK_1 + index, &state))
+            return g;
+        g.connected = true;
+        for (int b = 0; b < 15; ++b) g.buttons[b] = state.buttons[b] == GLFW_PRESS;
+        for (int a = 0; a < 6; ++a) g.axes[a] = state.axes[a];
+        return g;
+    }
     MouseInput mouse() const override {
         MouseInput m;
         double x = 0, y = 0;

@@ -38,6 +38,15 @@ struct MouseInput {
     int scrollWheel = 0;  // accumulated, 120 per notch as in Windows/XNA
 };
 
+// One gamepad in GLFW's standard mapping (an Xbox layout): buttons A, B, X, Y, LeftShoulder,
+// RightShoulder, Back, Start, Guide, LeftThumb, RightThumb, DPadUp, DPadRight, DPadDown, DPadLeft;
+// axes LeftX, LeftY, RightX, RightY (y down), LeftTrigger, RightTrigger (-1 released .. 1).
+struct GamepadInput {
+    bool connected = false;
+    bool buttons[15] = {};
+    float axes[6] = {0, 0, 0, 0, -1, -1};
+};
+
 // One GL context and its default framebuffer. Creating one makes it current and loads the GL
 // functions. fxport drives GL from a single thread: contexts may be created, made current and
 // destroyed only on that thread.
@@ -67,6 +76,8 @@ public:
     // virtual-key codes, which are XNA's Keys values ('A' = 65, F1 = 112, Escape = 27 ...).
     virtual bool isKeyDown(int virtualKey) const = 0;
     virtual MouseInput mouse() const = 0;
+    // Gamepad `index` (0..3); not connected headless or when none is plugged in.
+    virtual GamepadInput gamepad(int index) const = 0;
     // Moves the pointer (window pixels); no-op headless.
     virtual void setMousePosition(int x, int y) = 0;
     // Size of the default framebuffer in pixels (a window's current size).
