@@ -61,6 +61,32 @@ TEST_F(ContentManagerTest, LoadsATextureByNameWithoutExtensionAndCachesIt) {
     EXPECT_EQ(content.loadLog().size(), 1u);  // loaded from the file again
 }
 
+// XNA content comes from Windows: backslash folders and names in any case resolve to the one file
+// that matches; several files matching ignoring case are an error listing them.
+TEST_F(ContentManagerTest, WindowsAssetNamesResolveIgnoringCaseWhenUnique) {
+    writeTexture(root / "Textures" / "Pair.png");
+    ContentManager content(device(), root.string());
+    Texture2D* texture = content.Load<Texture2D>("textures\\PAIR");
+    ASSERT_NE(texture, nullptr);
+    EXPECT_EQ(content.loadLog().back().path, (root / "Textures" / "Pair.png").string());
+    EXPECT_EQ(content.Load<Texture2D>("Textures\\Pair"), content.Load<Texture2D>("Textures/Pair"));
+
+    writeTexture(root / "Textures" / "Tree.png");
+    writeTexture(root / "Textures" / "TREE.png");
+    EXPECT_NE(content.Load<Texture2D>("Textures/Tree"), nullptr);  // the exact name wins
+    try {
+        content.Load<Texture2D>("Textures/tree");
+        ADD_FAILURE() << "two files matched ignoring case";
+    } catch (const ContentLoadException& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("several files match"), std::string::npos) << what;
+        EXPECT_NE(what.find("Tree.png"), std::string::npos) << what;
+        EXPECT_NE(what.find("TREE.png"), std::string::npos) << what;
+    }
+    // Still confined to the root: '..' in Windows spelling too.
+    EXPECT_THROW(content.Load<Texture2D>("..\\outside"), ContentLoadException);
+}
+
 TEST_F(ContentManagerTest, MissingAssetNamesTheAssetAndEveryPathTried) {
     ContentManager content(device(), root.string());
     auto expectMessage = [&](auto load, const std::string& type, const std::string& asset,

@@ -2,6 +2,8 @@
 // the load log.
 #include "fxport/framework/content_manager.h"
 
+#include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <filesystem>
 
@@ -29,6 +31,41 @@ private:
 };
 
 std::string quoted(const std::string& assetName) { return "\"" + assetName + "\""; }
+
+// XNA content names come from Windows: `Textures\\Wall` separates folders with a backslash. Names
+// are cached by this spelling, so `Textures\\Wall` and `Textures/Wall` are one asset (as MonoGame).
+std::string portableName(std::string name) {
+    for (char& c : name)
+        if (c == '\\') c = '/';
+    return name;
+}
+
+bool sameIgnoringCase(const std::string& a, const std::string& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (std::tolower(static_cast<unsigned char>(a[i])) != std::tolower(static_cast<unsigned char>(b[i]))) return false;
+    return true;
+}
+
+// The regular files whose path equals `path` ignoring case below its deepest existing folder (a
+// Windows game's content names its files in any case; Linux file names are case-sensitive).
+std::vector<fs::path> filesIgnoringCase(const fs::path& path) {
+    std::error_code error;
+    fs::path base = path.parent_path();
+    while (!base.empty() && !fs::is_directory(base, error)) base = base.parent_path();
+    std::vector<fs::path> found{base.empty() ? fs::path(".") : base};
+    for (const fs::path& part : path.lexically_relative(found[0])) {
+        std::vector<fs::path> next;
+        for (const fs::path& folder : found)
+            for (const auto& entry : fs::directory_iterator(folder, error))
+                if (sameIgnoringCase(entry.path().filename().native(), part.native())) next.push_back(entry.path());
+        found = std::move(next);
+    }
+    std::vector<fs::path> files;
+    for (const fs::path& f : found)
+        if (fs::is_regular_file(f, error)) files.push_back(f);
+    return files;
+}
 
 std::string lowerExtension(const std::string& path) {
     std::string extension = fs::path(path).extension().string();
@@ -64,7 +101,7 @@ void ContentManager::Unload() {
 }
 
 Effect* ContentManager::findLoadedEffect(const std::string& assetName) const {
-    auto it = effects_.find(assetName);
+    auto it = effects_.find(portableName(assetName));
     return it == effects_.end() ? nullptr : it->second.get();
 }
 
@@ -79,7 +116,7 @@ GraphicsDevice& ContentManager::device(const std::string& assetName, const char*
 std::vector<std::string> ContentManager::candidates(const std::string& folder, const std::string& name,
                                                     std::initializer_list<const char*> extensions) const {
     std::vector<std::string> paths;
-    for (const char* extension : extensions) paths.push_back((fs::path(folder) / (name + extension)).string());
+    for (const char* extension : extensions) paths.push_back((fs::path(folder) / (portableName(name) + extension)).string());
     return paths;
 }
 
@@ -88,7 +125,7 @@ std::string ContentManager::locate(const std::string& assetName, const char* typ
     if (assetName.empty()) throw ArgumentError(std::string("ContentManager.Load<") + type + ">: empty asset name");
     // Asset names stay inside RootDirectory, as #include stays inside the include root: a name
     // that is absolute or climbs out with `..` would load any file the process can read.
-    const fs::path name(assetName);
+    const fs::path name(portableName(assetName));
     const fs::path normal = name.lexically_normal();
     if (name.has_root_path() || (!normal.empty() && *normal.begin() == ".."))
         throw ContentLoadException(std::string("ContentManager.Load<") + type + ">(" + quoted(assetName) +
@@ -98,6 +135,18 @@ std::string ContentManager::locate(const std::string& assetName, const char* typ
         std::error_code error;
         if (fs::is_regular_file(path, error)) return path;
     }
+    // No exact name: the one file that matches ignoring case, as on Windows; several are an error.
+    std::vector<fs::path> matches;
+    for (const std::string& path : paths)
+        for (const fs::path& f : filesIgnoringCase(path))
+            if (std::find(matches.begin(), matches.end(), f) == matches.end()) matches.push_back(f);
+    if (matches.size() == 1) return matches[0].string();
+    if (matches.size() > 1) {
+        std::string list;
+        for (const fs::path& f : matches) list += "\n  " + f.string();
+        throw ContentLoadException(std::string("ContentManager.Load<") + type + ">(" + quoted(assetName) +
+                                   "): several files match the name when case is ignored (as Windows would); rename all but one:" + list);
+    }
     std::string tried;
     for (const std::string& path : paths) tried += "\n  " + path;
     throw ContentLoadException(std::string("ContentManager.Load<") + type + ">(" + quoted(assetName) +
@@ -105,10 +154,10 @@ std::string ContentManager::locate(const std::string& assetName, const char* typ
 }
 
 template <> Effect* ContentManager::Load<Effect>(const std::string& assetName) {
-    if (auto it = effects_.find(assetName); it != effects_.end()) return it->second.get();
+    if (auto it = effects_.find(portableName(assetName)); it != effects_.end()) return it->second.get();
     std::vector<std::string> paths;
     if (!EffectDirectory.empty())
-        paths = candidates(EffectDirectory, fs::path(assetName).filename().string(), {".fx", ".fxeffect"});
+        paths = candidates(EffectDirectory, fs::path(portableName(assetName)).filename().string(), {".fx", ".fxeffect"});
     for (const std::string& path : candidates(RootDirectory, assetName, {".fx", ".fxeffect"})) paths.push_back(path);
     const std::string file = locate(assetName, "Effect", paths);
     GraphicsDevice& graphicsDevice = device(assetName, "Effect");
@@ -119,11 +168,11 @@ template <> Effect* ContentManager::Load<Effect>(const std::string& assetName) {
     });
     effect->Name = fs::path(assetName).filename().string();
     loadLog_.push_back({assetName, "Effect", file, timer.milliseconds()});
-    return effects_.emplace(assetName, std::move(effect)).first->second.get();
+    return effects_.emplace(portableName(assetName), std::move(effect)).first->second.get();
 }
 
 template <> Texture2D* ContentManager::Load<Texture2D>(const std::string& assetName) {
-    if (auto it = textures_.find(assetName); it != textures_.end()) return it->second.get();
+    if (auto it = textures_.find(portableName(assetName)); it != textures_.end()) return it->second.get();
     const std::string file =
         locate(assetName, "Texture2D", candidates(RootDirectory, assetName, {".png", ".jpg", ".jpeg", ".bmp", ".tga"}));
     GraphicsDevice& graphicsDevice = device(assetName, "Texture2D");
@@ -131,28 +180,28 @@ template <> Texture2D* ContentManager::Load<Texture2D>(const std::string& assetN
     auto texture = loadNamed("Texture2D", assetName, [&] { return Texture2D::FromFile(graphicsDevice, file); });
     texture->Name = assetName;
     loadLog_.push_back({assetName, "Texture2D", file, timer.milliseconds()});
-    return textures_.emplace(assetName, std::move(texture)).first->second.get();
+    return textures_.emplace(portableName(assetName), std::move(texture)).first->second.get();
 }
 
 template <> Model* ContentManager::Load<Model>(const std::string& assetName) {
-    if (auto it = models_.find(assetName); it != models_.end()) return it->second.get();
+    if (auto it = models_.find(portableName(assetName)); it != models_.end()) return it->second.get();
     const std::string file = locate(assetName, "Model", candidates(RootDirectory, assetName, {".gltf", ".glb"}));
     GraphicsDevice& graphicsDevice = device(assetName, "Model");
     LoadTimer timer;
     auto model = loadNamed("Model", assetName, [&] { return Model::Load(graphicsDevice, file); });
     loadLog_.push_back({assetName, "Model", file, timer.milliseconds()});
-    return models_.emplace(assetName, std::move(model)).first->second.get();
+    return models_.emplace(portableName(assetName), std::move(model)).first->second.get();
 }
 
 template <> SpriteFont* ContentManager::Load<SpriteFont>(const std::string& assetName) {
-    if (auto it = fonts_.find(assetName); it != fonts_.end()) return it->second.get();
+    if (auto it = fonts_.find(portableName(assetName)); it != fonts_.end()) return it->second.get();
     const std::string file = locate(assetName, "SpriteFont",
                                     candidates(RootDirectory, assetName, {".spritefont", ".fnt", ".ttf", ".otf"}));
     GraphicsDevice& graphicsDevice = device(assetName, "SpriteFont");
     LoadTimer timer;
     auto font = loadNamed("SpriteFont", assetName, [&] { return importSpriteFont(graphicsDevice, file); });
     loadLog_.push_back({assetName, "SpriteFont", file, timer.milliseconds()});
-    return fonts_.emplace(assetName, std::move(font)).first->second.get();
+    return fonts_.emplace(portableName(assetName), std::move(font)).first->second.get();
 }
 
 }  // namespace fxport
