@@ -70,6 +70,17 @@ TEST_P(HlslSemantics, FloatRemainderTruncatesTowardZero) {
     }
 }
 
+// A global `const` without a value is a uniform the shader may not write (fxc puts it in the
+// constant buffer), not a constant 0.
+TEST_P(HlslSemantics, GlobalConstWithoutValueIsAUniform) {
+    auto e = effect("const float4 A; const uniform float4 B; const float4 C = float4(0.5, 0.5, 0.5, 0.5);", "return A + B + C;");
+    e->Parameters["A"].SetValue(Vector4(1, 2, 3, 4));
+    e->Parameters["B"].SetValue(Vector4(0.125f, 0.25f, 0.375f, 0.5f));
+    std::vector<float> px = draw(*e);
+    const float expected[4] = {1.625f, 2.75f, 3.875f, 5.0f};
+    for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], expected[k]) << "channel " << k;
+}
+
 // Integer `/` and `%` truncate toward zero at every shader model (SM2/3 emulate ints with floats;
 // fxc still truncates the quotient).
 TEST_P(HlslSemantics, IntegerDivisionAndRemainderTruncateTowardZero) {

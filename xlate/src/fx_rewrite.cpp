@@ -368,6 +368,15 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     // storage word only, so N would be a plain static and `float w[N + 1]` no constant size.
     for (size_t i = 0; i + 1 < tokens.size(); ++i)
         if (tokens[i].text == "const" && tokens[i + 1].text == "static") edits.push_back({tokens[i].offset, tokens[i + 1].end, "static const"});
+    // `const float4 f;` at global scope is a uniform the shader cannot write (fxc puts it in the
+    // constant buffer); glslang makes it a constant 0. Without an initializer, `const` goes.
+    std::set<std::size_t> constTokens;
+    for (const FxGlobal& g : syntax.globals) {
+        const bool isStatic = std::find(g.modifiers.begin(), g.modifiers.end(), "static") != g.modifiers.end();
+        if (isStatic || !g.initializer.empty()) continue;
+        for (std::size_t k = g.token; k-- > 0 && !tokens[k].is(";") && !tokens[k].is("{") && !tokens[k].is("}");)
+            if (tokens[k].text == "const" && constTokens.insert(k).second) edits.push_back({tokens[k].offset, tokens[k].end, ""});
+    }
     edits.insert(edits.end(), aliasEdits.begin(), aliasEdits.end());
     copyAssignedUniforms(syntax, edits);
     hoistLoopVariablesUsedAfterTheLoop(syntax, edits);
