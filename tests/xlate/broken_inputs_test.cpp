@@ -124,6 +124,13 @@ std::vector<BrokenCase> cases() {
         {"FxcModifierTwice", kDir + "fxc_modifier_twice.fx", diag::kHlsl, "fxc_modifier_twice.fx", 2},
         {"FxcConstWithoutValue", kDir + "fxc_const_without_value.fx", diag::kHlsl, "fxc_const_without_value.fx", 4},
         {"FxcPackoffsetCrossesRegister", kDir + "fxc_packoffset_crossing.fx", diag::kHlsl, "fxc_packoffset_crossing.fx", 5},
+        // The families of fxc_checks.h, one fixture each.
+        {"FxcRegisterProfile", kDir + "fxc_register_profile.fx", diag::kHlsl, "fxc_register_profile.fx", 2},
+        {"FxcRegisterOverlap", kDir + "fxc_register_overlap.fx", diag::kHlsl, "fxc_register_overlap.fx", 3},
+        {"FxcGeometryStreamNotInout", kDir + "fxc_gs_stream_not_inout.fx", diag::kHlsl, "fxc_gs_stream_not_inout.fx", 5},
+        {"FxcImplicitArrayCount", kDir + "fxc_implicit_array_count.fx", diag::kHlsl, "fxc_implicit_array_count.fx", 4},
+        {"FxcOutputSemanticTwice", kDir + "fxc_output_semantic_twice.fx", diag::kHlsl, "fxc_output_semantic_twice.fx", 2},
+        {"FxcMajorityOfTypedef", kDir + "fxc_majority_typedef.fx", diag::kHlsl, "fxc_majority_typedef.fx", 3},
         // Not an effect at all. An empty file has only line 1 to point at.
         {"EmptyFile", kDir + "empty.fx", diag::kEmptyEffect, "empty.fx", 1},
         {"LibraryWithoutTechnique", kDir + "library_header.fx", diag::kEmptyEffect, "library_header.fx", 1},
