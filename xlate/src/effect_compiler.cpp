@@ -875,10 +875,11 @@ CompiledEffect compileUncached(const std::string& source, const std::string& dis
     PreprocessedEffect pre = preprocessEffect(source, displayPath, absolutePath, options);
     reportWorkerProgress("parse");
 
-    EffectSyntax syntax = parseEffect(pre.text, pre.map);
+    EffectSyntax syntax = parseEffect(pre.text, pre.map, isLooseShaderCompile(options));
     CompiledEffect effect;
     effect.sourcePath = displayPath;
     effect.diagnostics = pre.warnings;
+    effect.diagnostics.insert(effect.diagnostics.end(), syntax.warnings.begin(), syntax.warnings.end());
     if (syntax.techniques.empty()) {
         Diagnostic d;
         d.id = diag::kEmptyEffect;

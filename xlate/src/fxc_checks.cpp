@@ -19,6 +19,7 @@ constexpr Family kFamilies[] = {
     findImplicitSizeArrayErrors,
     findEntrySemanticErrors,
     findMajorityModifierErrors,
+    findStateBlockErrors,
 };
 
 bool isShaderState(const std::string& name) {
@@ -53,12 +54,16 @@ const FxFunction* FxcCheck::functionAt(size_t at) const {
 bool FxcCheck::inFunction(size_t at) const { return functionAt(at) != nullptr; }
 
 std::vector<FxcCheck::CompiledEntry> FxcCheck::compiledEntries() const {
+    // A loose-shader compile (fxc /T ps_4_0 /E main) compiles its entry points only: the technique
+    // fxport appends, last; the file's own techniques and shader variables are not compiled.
     std::vector<FxShaderExpr> compiles;
-    for (const auto& t : syntax_.techniques)
-        for (const auto& p : t.passes)
+    size_t first = syntax_.looseShaders && !syntax_.techniques.empty() ? syntax_.techniques.size() - 1 : 0;
+    for (size_t k = first; k < syntax_.techniques.size(); ++k)
+        for (const auto& p : syntax_.techniques[k].passes)
             for (const auto& a : p.assignments)
                 if (isShaderState(a.name)) compiles.push_back(parseShaderExpr(syntax_, a.value));
-    for (const auto& v : syntax_.shaderVariables) compiles.insert(compiles.end(), v.elements.begin(), v.elements.end());
+    if (!syntax_.looseShaders)
+        for (const auto& v : syntax_.shaderVariables) compiles.insert(compiles.end(), v.elements.begin(), v.elements.end());
     std::vector<CompiledEntry> out;
     for (const auto& e : compiles) {
         if (e.kind != FxShaderExpr::Kind::Compile) continue;

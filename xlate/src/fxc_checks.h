@@ -55,5 +55,6 @@ std::vector<std::pair<size_t, Diagnostic>> findGeometryEntryErrors(const EffectS
 std::vector<std::pair<size_t, Diagnostic>> findImplicitSizeArrayErrors(const EffectSyntax& syntax, const SourceMap& map);
 std::vector<std::pair<size_t, Diagnostic>> findEntrySemanticErrors(const EffectSyntax& syntax, const SourceMap& map);
 std::vector<std::pair<size_t, Diagnostic>> findMajorityModifierErrors(const EffectSyntax& syntax, const SourceMap& map);
+std::vector<std::pair<size_t, Diagnostic>> findStateBlockErrors(const EffectSyntax& syntax, const SourceMap& map);
 
 }  // namespace fxport::xlate
