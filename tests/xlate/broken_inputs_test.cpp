@@ -131,6 +131,8 @@ std::vector<BrokenCase> cases() {
         {"FxcImplicitArrayCount", kDir + "fxc_implicit_array_count.fx", diag::kHlsl, "fxc_implicit_array_count.fx", 4},
         {"FxcOutputSemanticTwice", kDir + "fxc_output_semantic_twice.fx", diag::kHlsl, "fxc_output_semantic_twice.fx", 2},
         {"FxcMajorityOfTypedef", kDir + "fxc_majority_typedef.fx", diag::kHlsl, "fxc_majority_typedef.fx", 3},
+        {"FxcFunctionAttributeTwice", kDir + "fxc_function_attribute_twice.fx", diag::kHlsl, "fxc_function_attribute_twice.fx", 3},
+        {"FxcStaticSampler", kDir + "fxc_static_sampler.fx", diag::kHlsl, "fxc_static_sampler.fx", 3},
         // Not an effect at all. An empty file has only line 1 to point at.
         {"EmptyFile", kDir + "empty.fx", diag::kEmptyEffect, "empty.fx", 1},
         {"LibraryWithoutTechnique", kDir + "library_header.fx", diag::kEmptyEffect, "library_header.fx", 1},

@@ -20,6 +20,8 @@ constexpr Family kFamilies[] = {
     findEntrySemanticErrors,
     findMajorityModifierErrors,
     findStateBlockErrors,
+    findFunctionAttributeErrors,
+    findStaticSamplerErrors,
 };
 
 bool isShaderState(const std::string& name) {

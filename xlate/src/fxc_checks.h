@@ -56,5 +56,7 @@ std::vector<std::pair<size_t, Diagnostic>> findImplicitSizeArrayErrors(const Eff
 std::vector<std::pair<size_t, Diagnostic>> findEntrySemanticErrors(const EffectSyntax& syntax, const SourceMap& map);
 std::vector<std::pair<size_t, Diagnostic>> findMajorityModifierErrors(const EffectSyntax& syntax, const SourceMap& map);
 std::vector<std::pair<size_t, Diagnostic>> findStateBlockErrors(const EffectSyntax& syntax, const SourceMap& map);
+std::vector<std::pair<size_t, Diagnostic>> findFunctionAttributeErrors(const EffectSyntax& syntax, const SourceMap& map);
+std::vector<std::pair<size_t, Diagnostic>> findStaticSamplerErrors(const EffectSyntax& syntax, const SourceMap& map);
 
 }  // namespace fxport::xlate
