@@ -133,6 +133,9 @@ std::vector<BrokenCase> cases() {
         {"FxcMajorityOfTypedef", kDir + "fxc_majority_typedef.fx", diag::kHlsl, "fxc_majority_typedef.fx", 3},
         {"FxcFunctionAttributeTwice", kDir + "fxc_function_attribute_twice.fx", diag::kHlsl, "fxc_function_attribute_twice.fx", 3},
         {"FxcStaticSampler", kDir + "fxc_static_sampler.fx", diag::kHlsl, "fxc_static_sampler.fx", 3},
+        {"FxcOutParameterDefault", kDir + "fxc_out_parameter_default.fx", diag::kHlsl, "fxc_out_parameter_default.fx", 2},
+        {"FxcGroupBarrierInPixelShader", kDir + "fxc_group_barrier_in_pixel_shader.fx", diag::kHlsl, "fxc_group_barrier_in_pixel_shader.fx", 4},
+        {"FxcPackoffsetOutsideCbuffer", kDir + "fxc_packoffset_outside_cbuffer.fx", diag::kHlsl, "fxc_packoffset_outside_cbuffer.fx", 2},
         // Not an effect at all. An empty file has only line 1 to point at.
         {"EmptyFile", kDir + "empty.fx", diag::kEmptyEffect, "empty.fx", 1},
         {"LibraryWithoutTechnique", kDir + "library_header.fx", diag::kEmptyEffect, "library_header.fx", 1},

@@ -22,6 +22,8 @@ constexpr Family kFamilies[] = {
     findStateBlockErrors,
     findFunctionAttributeErrors,
     findStaticSamplerErrors,
+    findFunctionSignatureErrors,
+    findComputeOnlyIntrinsicErrors,
 };
 
 bool isShaderState(const std::string& name) {

@@ -58,5 +58,7 @@ std::vector<std::pair<size_t, Diagnostic>> findMajorityModifierErrors(const Effe
 std::vector<std::pair<size_t, Diagnostic>> findStateBlockErrors(const EffectSyntax& syntax, const SourceMap& map);
 std::vector<std::pair<size_t, Diagnostic>> findFunctionAttributeErrors(const EffectSyntax& syntax, const SourceMap& map);
 std::vector<std::pair<size_t, Diagnostic>> findStaticSamplerErrors(const EffectSyntax& syntax, const SourceMap& map);
+std::vector<std::pair<size_t, Diagnostic>> findFunctionSignatureErrors(const EffectSyntax& syntax, const SourceMap& map);
+std::vector<std::pair<size_t, Diagnostic>> findComputeOnlyIntrinsicErrors(const EffectSyntax& syntax, const SourceMap& map);
 
 }  // namespace fxport::xlate
