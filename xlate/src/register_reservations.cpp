@@ -41,11 +41,11 @@ public:
 
     void run() {
         entries_ = compiledEntries();
-        for (const auto& g : syntax_.globals) declaration(g.token, Kind::Number, &g);
-        for (const auto& s : syntax_.samplers) declaration(s.token, Kind::Sampler, nullptr);
-        for (const auto& x : syntax_.textures) declaration(x.token, Kind::Other, nullptr);
+        for (const auto& g : syntax_.globals) declaration(g.token, Kind::Number);
+        for (const auto& s : syntax_.samplers) declaration(s.token, Kind::Sampler);
+        for (const auto& x : syntax_.textures) declaration(x.token, Kind::Other);
         for (size_t i = 0; i + 1 < t_.size(); ++i)
-            if ((t_[i].is("cbuffer") || t_[i].is("tbuffer")) && t_[i + 1].isIdent()) declaration(i + 1, Kind::Buffer, nullptr);
+            if (t_[i].is("cbuffer") && t_[i + 1].isIdent()) declaration(i + 1, Kind::Buffer);  // a tbuffer takes a t register
         overlappingConstants();
     }
 
@@ -106,7 +106,7 @@ private:
         return name == target.name;
     }
 
-    void declaration(size_t nameToken, Kind kind, const FxGlobal* global) {
+    void declaration(size_t nameToken, Kind kind) {
         if (!seen_.insert(nameToken).second) return;
         std::vector<Reservation> list = reservations(nameToken);
         for (const auto& r : list) {
@@ -119,7 +119,6 @@ private:
         }
         for (size_t a = 0; a < list.size(); ++a)
             for (size_t b = 0; b < a; ++b) contradiction(list[b], list[a]);
-        (void)global;
     }
 
     void registerName(const Reservation& r, Kind kind) {
