@@ -135,6 +135,7 @@ std::vector<BrokenCase> cases() {
         {"FxcStaticSampler", kDir + "fxc_static_sampler.fx", diag::kHlsl, "fxc_static_sampler.fx", 3},
         {"FxcOutParameterDefault", kDir + "fxc_out_parameter_default.fx", diag::kHlsl, "fxc_out_parameter_default.fx", 2},
         {"FxcGroupBarrierInPixelShader", kDir + "fxc_group_barrier_in_pixel_shader.fx", diag::kHlsl, "fxc_group_barrier_in_pixel_shader.fx", 4},
+        {"FxcAnnotationTwice", kDir + "fxc_annotation_twice.fx", diag::kSyntax, "fxc_annotation_twice.fx", 2},
         {"FxcPackoffsetOutsideCbuffer", kDir + "fxc_packoffset_outside_cbuffer.fx", diag::kHlsl, "fxc_packoffset_outside_cbuffer.fx", 2},
         // Not an effect at all. An empty file has only line 1 to point at.
         {"EmptyFile", kDir + "empty.fx", diag::kEmptyEffect, "empty.fx", 1},

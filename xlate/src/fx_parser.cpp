@@ -366,8 +366,15 @@ private:
         while (!accept(">")) {
             if (isEnd()) fail(diag::kUnterminated, "annotation list is never closed with '>'", open);
             Annotation a;
+            size_t typeToken = pos_;
             a.type = expectIdentifier("an annotation type");
+            size_t nameToken = pos_;
             a.name = expectIdentifier("an annotation name");
+            // fxc: an annotation is a number or a string, named once per list.
+            if (a.type == "BlendState" || a.type == "DepthStencilState" || a.type == "RasterizerState")
+                fail(diag::kSyntax, "annotation '" + a.name + "' is a " + a.type + ": annotations are numbers or strings", typeToken);
+            for (const auto& earlier : list)
+                if (earlier.name == a.name) fail(diag::kSyntax, "annotation '" + a.name + "' is already declared in this list", nameToken);
             if (accept("[")) {  // array annotation
                 while (!accept("]")) {
                     if (isEnd()) fail(diag::kUnterminated, "annotation array size is never closed", open);
@@ -383,10 +390,17 @@ private:
                 if (depth == 0 && cur().is(">")) break;
                 ++pos_;
             }
+            // fxc: a value is constant; another annotation of the list is none.
+            for (size_t k = vb; k < pos_; ++k) {
+                bool named = tok(k).isIdent() && tok(k).text == a.name;  // `int a = 1, b = a;`
+                for (const auto& earlier : list) named |= tok(k).isIdent() && tok(k).text == earlier.name;
+                if (named)
+                    fail(diag::kSyntax, "annotation '" + a.name + "' takes its value from annotation '" + tok(k).text + "': annotation values are constants", k);
+            }
             // A lone string keeps its text without quotes; anything else is kept as written.
             if (pos_ == vb + 1 && tok(vb).kind == Token::Kind::String) a.value = tok(vb).text;
             else a.value = syntax_.text({vb, pos_});
-            accept(";");
+            if (!accept(";")) fail(diag::kSyntax, "expected ';' after annotation '" + a.name + "', found '" + cur().text + "'", pos_);
             list.push_back(std::move(a));
         }
         return list;
