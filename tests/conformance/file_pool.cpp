@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cstring>
 #include <deque>
@@ -47,8 +48,13 @@ void writeLine(int fd, const std::string& line) {
         ShaderTestFile file = parseShaderTestFile(job.path);
         // Its own folder for the section files: children running other models of the same file
         // write files of the same names.
-        run.tempDir += "/" + std::to_string(::getpid());
-        if (::mkdir(run.tempDir.c_str(), 0700) != 0) throw std::runtime_error("cannot make " + run.tempDir);
+        // A pid the system reused during a long run finds an earlier child's folder: a suffix then.
+        std::string base = run.tempDir + "/" + std::to_string(::getpid());
+        run.tempDir = base;
+        for (int k = 1; ::mkdir(run.tempDir.c_str(), 0700) != 0; ++k) {
+            if (errno != EEXIST || k > 100) throw std::runtime_error("cannot make " + run.tempDir);
+            run.tempDir = base + "-" + std::to_string(k);
+        }
         run.markerFd = fd;
         run.crashLines = job.crashLines;
         ModelRun modelRun(file, job.model, run);

@@ -391,6 +391,33 @@ TEST(LooseShaderFiles, SeparateFilesMergeIntoOnePassWithEveryCBufferMember) {
     expectAllPassesLink(e);
 }
 
+// fxc /T ps_4_0 parses a variable's state block and ignores it: fxport compiles such a file, with a
+// warning at each state it cannot honour there, and keeps the state it can (the sampler's filter).
+TEST(LooseShaderFiles, StateBlocksAreIgnoredWithALocatedWarning) {
+    CompiledEffect e = compileShaderFiles({{kWild + "loose/StateBlocks.ps", "ShadePixel", "ps_4_0"}}, noCache());
+    bool unknownState = false, ignoredBlock = false;
+    for (const auto& d : e.diagnostics) {
+        if (d.severity != Severity::Warning) continue;
+        unknownState |= d.message.find("unknown sampler state 'BorderTint'") != std::string::npos && d.location.line == 7;
+        ignoredBlock |= d.message.find("state block of 'Tint' is ignored") != std::string::npos && d.location.line == 10;
+    }
+    EXPECT_TRUE(unknownState) << "no warning at line 7 for BorderTint";
+    EXPECT_TRUE(ignoredBlock) << "no warning at line 10 for Tint's block";
+    expectAllPassesLink(e);
+}
+
+// What fxc still checks in an ignored state block stays an error, at its line.
+TEST(LooseShaderFiles, StateBlockValuesFxcRefusesAreErrors) {
+    try {
+        compileShaderFiles({{kWild + "loose/StateBlockCall.ps", "ShadePixel", "ps_4_0"}}, noCache());
+        FAIL() << "compiled a state block that calls Weights with one argument";
+    } catch (const CompileError& err) {
+        const Diagnostic& d = err.diagnostics().front();
+        EXPECT_EQ(d.location.line, 8) << d.message;
+        EXPECT_NE(d.message.find("no overload of 'Weights' takes 1 parameters"), std::string::npos) << d.message;
+    }
+}
+
 TEST(LooseShaderFiles, OptionErrorsNameTheOptionAndLooseFilesWithoutEntrySayIt) {
     const std::string ps = kWild + "loose/Textured.ps";
     auto firstOf = [](const std::vector<ShaderEntry>& entries) {

@@ -24,7 +24,7 @@
 #include "entry_wrapper.h"
 #include "fx_rewrite.h"
 #include "front_end_hazards.h"
-#include "fxc_rejections.h"
+#include "fxc_checks.h"
 #include "front_end_worker.h"
 #include "fx_syntax.h"
 #include "hlsl_to_spirv.h"
@@ -875,10 +875,11 @@ CompiledEffect compileUncached(const std::string& source, const std::string& dis
     PreprocessedEffect pre = preprocessEffect(source, displayPath, absolutePath, options);
     reportWorkerProgress("parse");
 
-    EffectSyntax syntax = parseEffect(pre.text, pre.map);
+    EffectSyntax syntax = parseEffect(pre.text, pre.map, isLooseShaderCompile(options));
     CompiledEffect effect;
     effect.sourcePath = displayPath;
     effect.diagnostics = pre.warnings;
+    effect.diagnostics.insert(effect.diagnostics.end(), syntax.warnings.begin(), syntax.warnings.end());
     if (syntax.techniques.empty()) {
         Diagnostic d;
         d.id = diag::kEmptyEffect;
@@ -898,8 +899,8 @@ CompiledEffect compileUncached(const std::string& source, const std::string& dis
     // Code that would crash glslang instead of getting a diagnostic: reported here, before any
     // shader of the effect is handed over.
     if (auto hazards = findFrontEndHazards(syntax, pre.map); !hazards.empty()) throw CompileError(std::move(hazards));
-    // What fxc rejects and glslang would accept (fxc_rejections.h).
-    if (auto rejected = findFxcRejections(syntax, pre.map); !rejected.empty()) throw CompileError(std::move(rejected));
+    // What fxc rejects and glslang would accept (fxc_checks.h: every family of checks).
+    if (auto rejected = runFxcChecks(syntax, pre.map); !rejected.empty()) throw CompileError(std::move(rejected));
     RewrittenEffect rewritten = rewriteEffect(pre.text, syntax, pre.map, effect.diagnostics);
     for (auto& w : findImplicitTruncations(syntax, pre.map)) effect.diagnostics.push_back(std::move(w));
     EffectBuilder builder(pre, syntax, rewritten, options, effect, sharedVaryings, failedShaders);

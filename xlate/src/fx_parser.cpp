@@ -129,8 +129,9 @@ bool isParameterModifier(const std::string& s) {
 
 class Parser {
 public:
-    Parser(const std::string& text, const SourceMap& map) : text_(text), map_(map) {
+    Parser(const std::string& text, const SourceMap& map, bool looseShaders) : text_(text), map_(map) {
         syntax_.tokens = tokenize(text);
+        syntax_.looseShaders = looseShaders;
     }
 
     EffectSyntax run() {
@@ -342,6 +343,20 @@ private:
         syntax_.edits.push_back({b, e, {}});
     }
 
+    // `float f { ... };` in a loose-shader compile: fxc parses a state block on any variable and
+    // ignores it. It is blanked with a warning that names what is ignored; in an effect it stays a
+    // syntax error.
+    void ignoreStateBlock(const std::string& name) {
+        if (!syntax_.looseShaders || !cur().is("{")) return;
+        size_t open = pos_, after = skipGroup(pos_, ("state block of '" + name + "'").c_str());
+        const Token& t = tok(open);
+        syntax_.warnings.push_back(map_.make(Severity::Warning, diag::kIgnoredState,
+                                             "the state block of '" + name + "' is ignored (fxc ignores state blocks outside an effect)",
+                                             t.line, t.column, t.text));
+        blank(open, after);
+        pos_ = after;
+    }
+
     // --- annotations ---------------------------------------------------------------------
     // `< type name = value; ... >`: returns the list; pos_ ends after '>'.
     std::vector<Annotation> parseAnnotations() {
@@ -351,8 +366,15 @@ private:
         while (!accept(">")) {
             if (isEnd()) fail(diag::kUnterminated, "annotation list is never closed with '>'", open);
             Annotation a;
+            size_t typeToken = pos_;
             a.type = expectIdentifier("an annotation type");
+            size_t nameToken = pos_;
             a.name = expectIdentifier("an annotation name");
+            // fxc: an annotation is a number or a string, named once per list.
+            if (a.type == "BlendState" || a.type == "DepthStencilState" || a.type == "RasterizerState")
+                fail(diag::kSyntax, "annotation '" + a.name + "' is a " + a.type + ": annotations are numbers or strings", typeToken);
+            for (const auto& earlier : list)
+                if (earlier.name == a.name) fail(diag::kSyntax, "annotation '" + a.name + "' is already declared in this list", nameToken);
             if (accept("[")) {  // array annotation
                 while (!accept("]")) {
                     if (isEnd()) fail(diag::kUnterminated, "annotation array size is never closed", open);
@@ -368,10 +390,17 @@ private:
                 if (depth == 0 && cur().is(">")) break;
                 ++pos_;
             }
+            // fxc: a value is constant; another annotation of the list is none.
+            for (size_t k = vb; k < pos_; ++k) {
+                bool named = tok(k).isIdent() && tok(k).text == a.name;  // `int a = 1, b = a;`
+                for (const auto& earlier : list) named |= tok(k).isIdent() && tok(k).text == earlier.name;
+                if (named)
+                    fail(diag::kSyntax, "annotation '" + a.name + "' takes its value from annotation '" + tok(k).text + "': annotation values are constants", k);
+            }
             // A lone string keeps its text without quotes; anything else is kept as written.
             if (pos_ == vb + 1 && tok(vb).kind == Token::Kind::String) a.value = tok(vb).text;
             else a.value = syntax_.text({vb, pos_});
-            accept(";");
+            if (!accept(";")) fail(diag::kSyntax, "expected ';' after annotation '" + a.name + "', found '" + cur().text + "'", pos_);
             list.push_back(std::move(a));
         }
         return list;
@@ -385,6 +414,11 @@ private:
         while (!accept("}")) {
             if (isEnd()) fail(diag::kUnterminated, std::string(context) + " is never closed with '}'", open);
             if (accept(";")) continue;
+            if (syntax_.looseShaders && cur().is("{")) {  // a list of blocks, `{ {...}, {...} }`: ignored there
+                ignoreStateBlock("a state block list");
+                accept(",");
+                continue;
+            }
             FxAssignment a;
             a.nameToken = pos_;
             a.name = expectIdentifier("a state name");
@@ -885,6 +919,7 @@ private:
             tex.semantic = tail.semantic;
             tex.explicitUnit = tail.registerIndex;
             tex.annotations = tail.annotations;
+            ignoreStateBlock(name);
             if (accept("=")) skipInitializer(name);
             if (!dx9 && tail.annotationEnd > tail.annotationBegin) blank(tail.annotationBegin, tail.annotationEnd);
             syntax_.textures.push_back(std::move(tex));
@@ -948,6 +983,7 @@ private:
         v.token = nameToken;
         Tail tail = parseDeclaratorTail();
         v.isArray = !tail.dims.empty();
+        ignoreStateBlock(name);
         if (accept("=")) {
             if (cur().is("{")) {
                 size_t after = skipGroup(pos_, ("initializer of '" + name + "'").c_str());
@@ -1005,6 +1041,7 @@ private:
             g.packOffset = tail.packOffset;
             g.annotations = tail.annotations;
             if (tail.annotationEnd > tail.annotationBegin) blank(tail.annotationBegin, tail.annotationEnd);
+            ignoreStateBlock(name);
             if (accept("=")) g.initializer = skipInitializer(name);
             rememberConstant(g);
             syntax_.globals.push_back(std::move(g));
@@ -1087,8 +1124,8 @@ FxShaderExpr parseShaderExpr(const EffectSyntax& syntax, TokenSpan span) {
     return e;
 }
 
-EffectSyntax parseEffect(const std::string& text, const SourceMap& map) {
-    return Parser(text, map).run();
+EffectSyntax parseEffect(const std::string& text, const SourceMap& map, bool looseShaders) {
+    return Parser(text, map, looseShaders).run();
 }
 
 }  // namespace fxport::xlate

@@ -165,6 +165,11 @@ struct EffectSyntax {
     std::vector<TextEdit> edits;  // framework syntax to remove before glslang sees the text
     std::vector<std::string> cbuffers;  // names of user cbuffers, in declaration order
     std::map<std::string, std::string> typedefs;  // `typedef vector<half, 3> vec3;`: vec3 -> vector<half,3>
+    // Compiled as fxc /T ps_4_0 compiles a file (loose shaders, no effect profile): fxc then parses
+    // a variable's state block and ignores what it holds, so what fxport cannot honour there is a
+    // warning, not an error.
+    bool looseShaders = false;
+    std::vector<Diagnostic> warnings;  // what the parser ignored, with its place
 
     const FxFunction* findFunction(const std::string& name) const;
     // The overload of `name` that `compile ps_2_0 name(literalArguments)` means: the one whose
@@ -181,7 +186,7 @@ struct EffectSyntax {
 class SourceMap;
 
 // Parses the preprocessed text. Throws CompileError (located through `map`) on syntax errors.
-EffectSyntax parseEffect(const std::string& text, const SourceMap& map);
+EffectSyntax parseEffect(const std::string& text, const SourceMap& map, bool looseShaders = false);
 
 // Parses `<profile> <entry>(<args>)`-style shader expressions (pass values and shader variables).
 FxShaderExpr parseShaderExpr(const EffectSyntax& syntax, TokenSpan span);

@@ -45,6 +45,7 @@ public:
         for (const auto& f : syntax_.functions) constWithoutValue(f);
         for (const auto& f : syntax_.functions) outArgumentsAreLValues(f);
         packOffsetOnAllOrNone();
+        packOffsetOutsideCbuffer();
         constantBufferCount();
         for (const auto& v : syntax_.shaderVariables)
             for (const auto& e : v.elements) compiledShaderVariable(e);
@@ -298,6 +299,19 @@ private:
                 report("cbuffer '" + name + "' places some members with packoffset but not '" + without->name +
                            "': fxc wants all or none (X3592)",
                        without->token);
+        }
+    }
+    // packoffset places a member of a cbuffer: not a $Globals variable, not a struct's member.
+    void packOffsetOutsideCbuffer() {
+        for (const auto& g : syntax_.globals)
+            if (g.cbuffer.empty() && g.packOffset >= 0)
+                report("packoffset on '" + g.name + "', which is in no cbuffer: it places cbuffer members only (fxc X3591)", g.token);
+        for (size_t i = 0; i + 2 < t_.size(); ++i) {
+            if (!t_[i].is("struct") || !(t_[i + 1].is("{") || t_[i + 2].is("{"))) continue;
+            size_t open = t_[i + 1].is("{") ? i + 1 : i + 2, close = closing(open);
+            for (size_t k = open; k < close; ++k)
+                if (t_[k].is("packoffset")) report("packoffset on a struct member: it places cbuffer members only (fxc X3591)", k);
+            i = close;
         }
     }
     // `register(t1)` on a member (not register(cN), which fxc ignores in a cbuffer) places it too.

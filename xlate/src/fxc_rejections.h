@@ -9,7 +9,7 @@
 //    (X3048 / X3049 / X3025);
 //  - an assignment to a swizzle that names a component twice (`v.xx = ...`, X3018);
 //  - a local `const` without an initial value (X3012);
-//  - packoffset: outside a cbuffer member, not `cN` or `cN.x`, a vector crossing a register,
+//  - packoffset: outside a cbuffer member (a function's parameter, a $Globals variable, a struct member), not `cN` or `cN.x`, a vector crossing a register,
 //    a matrix, array or struct not at `.x`, on some members of a cbuffer but not all (X3591 ...);
 //  - a variable named like a built-in type (`float4 float;`, X3000);
 //  - more than 14 constant buffers with $Globals and $Params (D3D's slots).

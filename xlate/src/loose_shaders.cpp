@@ -25,6 +25,12 @@ constexpr const char* kTechnique = "fxport_loose_shaders";
     throw CompileError({d});
 }
 
+}  // namespace
+
+bool isLooseShaderCompile(const CompileOptions& options) { return options.techniques.size() == 1 && options.techniques[0] == kTechnique; }
+
+namespace {
+
 // One file with the technique that names its entry points appended (after its last line, so its
 // own lines keep their numbers).
 // Thrown by compileOneFile when only the cache was to be asked and it had no entry.

@@ -15,6 +15,10 @@ namespace fxport::xlate {
 
 class VaryingLocations;
 
+// loose_shaders.cpp: whether `options` are those of a loose-shader compile (the one technique it
+// appends), which fxc makes with a shader profile, not an effect profile.
+bool isLooseShaderCompile(const CompileOptions& options);
+
 // effect_compiler.cpp: compiles text, with custom varying locations shared across calls when
 // `sharedVaryings` is given.
 CompiledEffect compileEffectText(const std::string& source, const std::string& displayPath, const std::string& absolutePath,

@@ -130,13 +130,18 @@ bool isFixedFunctionState(const std::string& lower) { return fixedFunctionStateN
 struct ValueReader {
     StateContext& ctx;
     const FxAssignment& a;
+    // A sampler's state block in a loose-shader compile: fxc ignores its content, so a value
+    // fxport cannot read is a warning that it is ignored (see EffectSyntax::looseShaders).
+    bool warnOnly = false;
 
     const Token& tok(size_t i) const { return ctx.syntax.tokens[i]; }
     std::string text() const { return ctx.syntax.text(a.value); }
 
     void error(const char* id, const std::string& message) const {
         const Token& t = tok(a.nameToken);
-        ctx.diagnostics.push_back(ctx.map.make(Severity::Error, id, message, t.line, t.column, t.text));
+        ctx.diagnostics.push_back(ctx.map.make(warnOnly ? Severity::Warning : Severity::Error, id,
+                                               warnOnly ? message + "; ignored, as fxc ignores a state block outside an effect" : message,
+                                               t.line, t.column, t.text));
     }
     void bad(const std::string& expected) const {
         error(diag::kBadStateValue, "value '" + text() + "' of state '" + a.name + "' is not " + expected);
@@ -656,7 +661,7 @@ StateResult translatePassAssignment(const FxAssignment& a, StateContext& ctx, st
 
 bool translateSamplerAssignment(const FxAssignment& a, StateContext& ctx, SamplerStateDesc& state,
                                 std::string& textureParameter) {
-    ValueReader r{ctx, a};
+    ValueReader r{ctx, a, ctx.syntax.looseShaders};
     std::string key = toLower(a.name);
     auto filterOf = [&](const std::string& n) -> std::optional<TextureFilter> {
         if (n == "none" || n == "0") return TextureFilter::None;
@@ -785,9 +790,7 @@ bool translateSamplerAssignment(const FxAssignment& a, StateContext& ctx, Sample
                                                t.column, t.text));
         return true;
     }
-    const Token& t = ctx.syntax.tokens[a.nameToken];
-    ctx.diagnostics.push_back(ctx.map.make(Severity::Error, diag::kUnknownState, "unknown sampler state '" + a.name + "'",
-                                           t.line, t.column, t.text));
+    r.error(diag::kUnknownState, "unknown sampler state '" + a.name + "'");
     return false;
 }
 
