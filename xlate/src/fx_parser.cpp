@@ -112,7 +112,8 @@ bool isStateObjectType(const std::string& s) {
     return iequals(s, "BlendState") || iequals(s, "DepthStencilState") || iequals(s, "RasterizerState");
 }
 bool isShaderObjectType(const std::string& s) {
-    return iequals(s, "VertexShader") || iequals(s, "PixelShader") || iequals(s, "GeometryShader");
+    return iequals(s, "VertexShader") || iequals(s, "PixelShader") || iequals(s, "GeometryShader") || iequals(s, "HullShader") ||
+           iequals(s, "DomainShader") || iequals(s, "ComputeShader");
 }
 bool isTypeModifier(const std::string& s) {
     static const std::set<std::string> k = {"static", "const", "uniform", "extern", "shared", "volatile", "precise",
@@ -261,7 +262,9 @@ private:
         }
     }
     static bool isShaderStateName(const std::string& name) {
-        static const char* const k[] = {"VertexShader", "PixelShader", "GeometryShader", "SetVertexShader", "SetPixelShader", "SetGeometryShader"};
+        static const char* const k[] = {"VertexShader", "PixelShader", "GeometryShader", "HullShader", "DomainShader", "ComputeShader",
+                                        "SetVertexShader", "SetPixelShader", "SetGeometryShader", "SetHullShader", "SetDomainShader",
+                                        "SetComputeShader"};
         for (const char* n : k)
             if (iequals(name, n)) return true;
         return false;
@@ -799,6 +802,7 @@ private:
         std::vector<int> dims;
         std::string semantic;
         int registerIndex = -1;
+        char registerClass = 0;  // its letter, lower case
         int packOffset = -1;  // packoffset(cN.y) in floats (checked for overlaps; glslang places it)
         std::vector<Annotation> annotations;
         size_t annotationBegin = 0, annotationEnd = 0;
@@ -834,6 +838,7 @@ private:
                 if (iequals(word, "register") && after >= pos_ + 3) {
                     std::string reg = tok(after - 2).text;  // s0, t3, c4 ... (last argument)
                     if (reg.size() > 1) tail.registerIndex = std::atoi(reg.c_str() + 1);
+                    if (reg.size() > 1) tail.registerClass = char(std::tolower(static_cast<unsigned char>(reg[0])));
                     // DX9 constant registers (register(c8), register(vs, c8)) place a constant in ONE
                     // stage's register file; the VS and PS files overlap, one GL uniform buffer cannot.
                     // Only SetVertexShaderConstantF-style code cares, which XNA's Effect never is.
@@ -1003,6 +1008,8 @@ private:
             g.arrayDims = tail.dims;
             g.semantic = tail.semantic;
             g.packOffset = tail.packOffset;
+            g.registerClass = tail.registerClass;
+            g.registerIndex = tail.registerIndex;
             g.annotations = tail.annotations;
             if (tail.annotationEnd > tail.annotationBegin) blank(tail.annotationBegin, tail.annotationEnd);
             if (accept("=")) g.initializer = skipInitializer(name);
