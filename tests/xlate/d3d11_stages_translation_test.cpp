@@ -234,3 +234,61 @@ TEST(D3D11Stages, FormsFxcRejectsAreLocatedErrors) {
     EXPECT_NE(firstError(std::string(kTessellation) + "technique11 T { pass P { SetHullShader(CompileShader(hs_4_0, HS())); } }\n").find("hs_4_0"),
               std::string::npos);
 }
+
+// The suite's (and fxc's usual) form: the patch-constant function writes through an out
+// parameter, and the control point holds SV_Position. glslang 12 refuses that form; fxport hands
+// it a function that returns the values (patch_constant_wrapper.h).
+TEST(D3D11Stages, PatchConstantFunctionWithAnOutParameter) {
+    const char* hull = R"(struct data { float4 position : SV_Position; float r : RED; };
+struct patch_constant_data { float edges[3] : SV_TessFactor; float inside : SV_InsideTessFactor; };
+void patch_constant(InputPatch<data, 3> input, out patch_constant_data output)
+{
+    output.edges[0] = output.edges[1] = output.edges[2] = 2.0f;
+    output.inside = 3.0f;
+}
+[domain("tri")] [outputcontrolpoints(3)] [partitioning("fractional_odd")] [outputtopology("triangle_ccw")]
+[patchconstantfunc("patch_constant")]
+data main(InputPatch<data, 3> input, uint i : SV_OutputControlPointID) { return input[i]; }
+)";
+    CompiledEffect e = compileLoose(hull, "hs_5_0");
+    ASSERT_EQ(e.shaders.size(), 1u);
+    const CompiledShader& hs = e.shaders[0];
+    EXPECT_EQ(hs.tessellation.patchConstantFunction, "patch_constant");
+    EXPECT_EQ(hs.tessellation.partitioning, "fractional_odd");
+    EXPECT_NE(hs.glsl.find("gl_TessLevelInner[0] = 3.0"), std::string::npos) << hs.glsl;
+    EXPECT_NE(hs.glsl.find("gl_TessLevelOuter[2] = 2.0"), std::string::npos) << hs.glsl;
+    // Several out parameters with their own semantics go the same way.
+    const char* split = R"(struct data { float4 position : SV_Position; };
+void pc(InputPatch<data, 4> input, out float edges[4] : SV_TessFactor, out float inside[2] : SV_InsideTessFactor)
+{
+    edges[0] = edges[1] = edges[2] = edges[3] = 5.0f;
+    inside[0] = inside[1] = 6.0f;
+}
+[domain("quad")] [outputcontrolpoints(4)] [partitioning("integer")] [outputtopology("triangle_cw")] [patchconstantfunc("pc")]
+data main(InputPatch<data, 4> input, uint i : SV_OutputControlPointID) { return input[i]; }
+)";
+    CompiledEffect s = compileLoose(split, "hs_5_0");
+    ASSERT_EQ(s.shaders.size(), 1u);
+    EXPECT_NE(s.shaders[0].glsl.find("gl_TessLevelInner[1] = 6.0"), std::string::npos) << s.shaders[0].glsl;
+}
+
+// The domain shader of a pass declares its hull shader's partitioning and topology (GL's TES
+// layout), from a hull shader in another loose file too.
+TEST(D3D11Stages, DomainShaderTakesTheHullShadersPartitioning) {
+    fs::path dir = fs::temp_directory_path() / ("fxport-d3d11-stages-pair-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::string source = kTessellation;
+    source.replace(source.find("\"integer\""), 9, "\"fractional_even\"");
+    source.replace(source.find("\"triangle_cw\""), 13, "\"point\"");
+    std::ofstream(dir / "hull.hlsl") << source;
+    std::ofstream(dir / "domain.hlsl") << kTessellation;
+    // Domain first on purpose: the hull's file is compiled first anyway.
+    CompiledEffect e = compileShaderFiles({{(dir / "domain.hlsl").string(), "DS", "ds_5_0"}, {(dir / "hull.hlsl").string(), "HS", "hs_5_0"},
+                                           {(dir / "domain.hlsl").string(), "VS", "vs_5_0"}, {(dir / "domain.hlsl").string(), "PS", "ps_5_0"}},
+                                          noCache());
+    const Pass& pass = e.techniques.at(0).passes.at(0);
+    ASSERT_EQ(pass.domainShader.shaders.size(), 1u);
+    const std::string& ds = e.shaders[size_t(pass.domainShader.shaders[0])].glsl;
+    EXPECT_NE(ds.find("fractional_even_spacing"), std::string::npos) << ds;
+    EXPECT_NE(ds.find("point_mode"), std::string::npos) << ds;
+}

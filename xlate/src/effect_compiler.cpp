@@ -36,6 +36,7 @@
 #include "shader_profile.h"
 #include "spirv_sizes.h"
 #include "spirv_to_glsl.h"
+#include "patch_constant_wrapper.h"
 #include "stage_attributes.h"
 #include "text_util.h"
 
@@ -438,6 +439,14 @@ int EffectBuilder::compileShader(const FxShaderExpr& expr, ShaderStage expected,
     if (!options_.skipShaders) {
         source = expected == ShaderStage::Geometry ? rewritten_.hlslForGeometryShader(expr.entry) : rewritten_.hlsl;
         if (wrapped) source += wrapper.code;
+        if (expected == ShaderStage::Hull) {
+            Tessellation t;
+            checkStageAttributes(syntax_, *entry, *profile, t);
+            const FxFunction* constants = syntax_.findFunction(t.patchConstantFunction);
+            if (auto pcf = constants ? patchConstantWrapper(*constants) : std::nullopt) {
+                source = redirectPatchConstantFunction(source, constants->name, pcf->name) + pcf->code;
+            }
+        }
     }
     return emitShader(key, *profile, expr, expr.entry, expr.arguments, source, entryName, wrapper, rewritten_.dx9Samplers);
 }
@@ -787,7 +796,7 @@ void EffectBuilder::buildTechniques() {
                                                                        : pass.geometryShader;
                 if (!resolveShader(e, stage, target, a.nameToken)) pass.valid = false;
             }
-            checkTessellationPass(pass, p.token);
+            if (t.name != kLooseTechnique) checkTessellationPass(pass, p.token);
             if (pass.valid && pass.vertexShader.shaders.empty() && pass.pixelShader.shaders.empty() && pass.computeShader.shaders.empty()) {
                 // A state-only pass (restoring states) is fine to Apply(); one that relies on the
                 // fixed-function pipeline (Lighting, TextureStage states ...) cannot draw anything.

@@ -16,7 +16,7 @@ namespace fxport::xlate {
 
 namespace {
 
-constexpr const char* kTechnique = "fxport_loose_shaders";
+constexpr const char* kTechnique = kLooseTechnique;
 
 [[noreturn]] void fail(const char* id, const std::string& file, const std::string& message) {
     Diagnostic d;

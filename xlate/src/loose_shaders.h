@@ -15,6 +15,10 @@ namespace fxport::xlate {
 
 class VaryingLocations;
 
+// The technique a loose file is compiled with (one pass naming its entry points). Such a pass may
+// hold one stage alone (a domain shader compiled by itself, as fxc /T ds_5_0 does).
+inline constexpr const char* kLooseTechnique = "fxport_loose_shaders";
+
 // effect_compiler.cpp: compiles text, with custom varying locations shared across calls when
 // `sharedVaryings` is given.
 CompiledEffect compileEffectText(const std::string& source, const std::string& displayPath, const std::string& absolutePath,
