@@ -292,3 +292,32 @@ TEST(D3D11Stages, DomainShaderTakesTheHullShadersPartitioning) {
     EXPECT_NE(ds.find("fractional_even_spacing"), std::string::npos) << ds;
     EXPECT_NE(ds.find("point_mode"), std::string::npos) << ds;
 }
+
+// fxc gives a pixel shader's unregistered UAVs the slots after its render targets (D3D11 binds
+// RTVs and UAVs in one output-merger array): one SV_Target -> the first UAV is u1.
+TEST(D3D11Stages, PixelShaderUavsStartAfterItsRenderTargets) {
+    CompiledEffect e = compileLoose("RWTexture2D<float> u;\nRWStructuredBuffer<float> b;\nfloat4 main() : sv_target\n"
+                                    "{ u[uint2(0, 0)] = 0.5; b[0] = 1; return 0; }\n", "ps_5_0");
+    ASSERT_EQ(e.shaders.size(), 1u);
+    EXPECT_EQ(storage(e.shaders[0], "u").slot, 1);
+    EXPECT_EQ(storage(e.shaders[0], "b").slot, 2);
+}
+
+// fxc gives a control-point function without outputs a pass-through phase (point i out = point i
+// in); without it GL's outputs would stay unwritten.
+TEST(D3D11Stages, HullShaderWithoutOutputsPassesControlPointsThrough) {
+    const char* hull = R"(struct data { float4 position : SV_Position; float r : RED; };
+struct patch_constant_data { float edges[3] : SV_TessFactor; float inside : SV_InsideTessFactor; };
+void patch_constant(InputPatch<data, 3> input, out patch_constant_data output)
+{
+    output.edges[0] = output.edges[1] = output.edges[2] = 1.0f;
+    output.inside = 1.0f;
+}
+[domain("tri")] [outputcontrolpoints(3)] [partitioning("integer")] [outputtopology("triangle_cw")] [patchconstantfunc("patch_constant")]
+void main(InputPatch<data, 3> input) { }
+)";
+    CompiledEffect e = compileLoose(hull, "hs_5_0");
+    ASSERT_EQ(e.shaders.size(), 1u);
+    const std::string& glsl = e.shaders[0].glsl;
+    EXPECT_NE(glsl.find("gl_out[gl_InvocationID].gl_Position"), std::string::npos) << glsl;
+}

@@ -236,6 +236,8 @@ void EffectBuilder::buildParameters() {
     std::map<std::string, std::vector<PackedMember>> packed;  // per cbuffer, members placed with packoffset
     std::map<std::string, std::vector<double>> constants;  // earlier globals, for initializers like `= A * 2`
     for (const auto& g : syntax_.globals) {
+        // groupshared: a compute shader's thread-group memory, no constant.
+        if (std::find(g.modifiers.begin(), g.modifiers.end(), "groupshared") != g.modifiers.end()) continue;
         bool isStatic = std::find(g.modifiers.begin(), g.modifiers.end(), "static") != g.modifiers.end();
         Parameter p;
         p.name = g.name;
@@ -442,7 +444,14 @@ int EffectBuilder::compileShader(const FxShaderExpr& expr, ShaderStage expected,
         if (expected == ShaderStage::Hull) {
             Tessellation t;
             checkStageAttributes(syntax_, *entry, *profile, t);
-            const FxFunction* constants = syntax_.findFunction(t.patchConstantFunction);
+            // fxc (SM 5) takes the last definition of an overloaded patch-constant function.
+            const FxFunction* constants = nullptr;
+            for (const auto& f : syntax_.functions)
+                if (f.name == t.patchConstantFunction) constants = &f;
+            if (auto passThrough = passThroughHullEntry(*entry, constants)) {
+                source += passThrough->code;
+                entryName = passThrough->name;
+            }
             if (auto pcf = constants ? patchConstantWrapper(*constants) : std::nullopt) {
                 source = redirectPatchConstantFunction(source, constants->name, pcf->name) + pcf->code;
             }

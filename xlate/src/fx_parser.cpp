@@ -747,10 +747,22 @@ private:
             if (cur().is("(")) pos_ = skipGroup(pos_, "semantic");
             else f.returnSemantic = sem;
         }
-        if (accept(";")) return;  // prototype
+        if (accept(";")) {  // prototype: its attributes are the function's (below)
+            if (!f.attributes.empty()) prototypeAttributes_.emplace(name, PrototypeAttributes{f.attributes, declarationStart, start});
+            return;
+        }
         if (!cur().is("{")) {
             if (isEnd()) fail(diag::kUnterminated, "function '" + name + "' has no body before the end of the file", nameToken);
             fail(diag::kSyntax, "expected '{' to open the body of function '" + name + "', found '" + cur().text + "'", pos_);
+        }
+        // fxc (SM 5) takes a function's attributes from its first declaration and drops the later
+        // ones ([numthreads(2, 1, 1)] void main(uint2 id); ... void main(...) { }); glslang wants
+        // them on the definition.
+        if (auto proto = prototypeAttributes_.find(name); proto != prototypeAttributes_.end() && start < syntax_.tokens.size()) {
+            blank(proto->second.begin, proto->second.end);
+            if (!f.attributes.empty()) blank(declarationStart, start);
+            syntax_.edits.push_back({tok(start).offset, tok(start).offset, proto->second.text + " "});
+            f.attributes = proto->second.text;
         }
         size_t after = skipGroup(pos_, ("body of function '" + name + "'").c_str());
         f.body = {pos_ + 1, after - 1};
@@ -1030,6 +1042,11 @@ private:
 
     std::string pendingAttributes_;
     size_t pendingAttributesStart_ = 0;
+    struct PrototypeAttributes {
+        std::string text;
+        size_t begin = 0, end = 0;  // its tokens
+    };
+    std::map<std::string, PrototypeAttributes> prototypeAttributes_;  // by function name, the first prototype with attributes
 };
 
 }  // namespace

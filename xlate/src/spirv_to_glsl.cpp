@@ -136,7 +136,8 @@ const char* imageFormatName(spv::ImageFormat f) {
 // in declaration order, as fxc assigns them) -> GL bindings. SSBOs and image units are their own
 // binding spaces in GL; UAV buffers and UAV images both sit at N (one uN names one of them), SRV
 // buffers at kSrvBufferBindingBase + N so they do not meet the UAVs.
-void bindStorage(GlslCompiler& compiler, const spirv_cross::ShaderResources& res, const EffectSyntax& syntax, std::vector<StorageBinding>& out) {
+void bindStorage(GlslCompiler& compiler, const spirv_cross::ShaderResources& res, const EffectSyntax& syntax, int firstFreeUav,
+                 std::vector<StorageBinding>& out) {
     // glslang gives every resource a Binding (0 where no register was written): the register, if
     // any, comes from the declaration.
     auto declaredRegister = [&](const std::string& name, char registerClass) {
@@ -177,12 +178,19 @@ void bindStorage(GlslCompiler& compiler, const spirv_cross::ShaderResources& res
         f.explicitSlot = f.b.slot >= 0;
         found.push_back(f);
     }
+    // fxc hands out the free registers in declaration order.
+    auto declaredAt = [&](const std::string& name) {
+        for (size_t i = 0; i < syntax.globals.size(); ++i)
+            if (syntax.globals[i].name == name) return i;
+        return syntax.globals.size();
+    };
+    std::stable_sort(found.begin(), found.end(), [&](const Found& a, const Found& b) { return declaredAt(a.b.name) < declaredAt(b.b.name); });
     std::set<std::pair<char, int>> taken;
     for (const Found& f : found)
         if (f.explicitSlot) taken.insert({f.b.registerClass, f.b.slot});
     for (Found& f : found) {
         if (!f.explicitSlot) {
-            int n = 0;
+            int n = f.b.registerClass == 'u' ? firstFreeUav : 0;
             while (taken.count({f.b.registerClass, n})) ++n;
             f.b.slot = n;
             taken.insert({f.b.registerClass, n});
@@ -274,7 +282,13 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
             out.blocks.push_back(std::move(block));
         }
 
-        bindStorage(compiler, res, *effect.syntax, out.storage);
+        // A pixel shader's UAVs share D3D11's output slots with its render targets: fxc gives
+        // unregistered ones the registers after the last SV_Target.
+        int firstFreeUav = 0;
+        if (stage == ShaderStage::Pixel)
+            for (const auto& r : res.stage_outputs)
+                firstFreeUav = std::max(firstFreeUav, static_cast<int>(compiler.get_decoration(r.id, spv::DecorationLocation)) + 1);
+        bindStorage(compiler, res, *effect.syntax, firstFreeUav, out.storage);
         if (stage == ShaderStage::Domain && hull) declareHullModes(compiler, *hull);
         if (stage == ShaderStage::Compute)
             for (uint32_t d = 0; d < 3; ++d)

@@ -25,7 +25,8 @@ std::string trimmed(std::string s) {
     return s;
 }
 
-// "[numthreads(8, 8, 1)] [domain("tri")]" -> {numthreads: [8, 8, 1], domain: [tri]} (names lower case).
+// "[numthreads(8, 8, 1)] [domain("tri")]" -> {numthreads: [8, 8, 1], domain: [tri]}. Names as
+// written: fxc's attribute names are case-sensitive ([NumThreads] is no numthreads).
 std::map<std::string, Attribute> parseAttributes(const std::string& text) {
     std::map<std::string, Attribute> out;
     size_t i = 0;
@@ -36,7 +37,7 @@ std::map<std::string, Attribute> parseAttributes(const std::string& text) {
         i = end + 1;
         size_t open = body.find('(');
         Attribute a;
-        std::string name = toLower(trimmed(body.substr(0, open)));
+        std::string name = trimmed(body.substr(0, open));
         if (open != std::string::npos) {
             a.hasArguments = true;
             size_t close = body.rfind(')');
