@@ -141,9 +141,13 @@ void GpuSession::setResource(const ResourceDesc& r) {
     switch (r.kind) {
     case BlockKind::Rtv: makeTarget(r); break;
     case BlockKind::Dsv: unsupportedTargets_[kDepthSlot] = "depth-stencil view [dsv] (no depth readback or depth test setup)"; break;
-    case BlockKind::Srv: makeTexture(r); break;
+    case BlockKind::Srv:
+        if (r.dimension == "buffer" || r.dimension == "raw_buffer") makeBufferSrv(r);
+        else makeTexture(r);
+        break;
     case BlockKind::VertexBuffer: vertexBuffers_[r.slot] = r; break;
-    default: throw Unsupported("UAV [uav N] (fxport has no UAVs yet)");
+    case BlockKind::Uav: makeUav(r); break;
+    default: throw Unsupported("resource kind of this block");
     }
 }
 
@@ -182,6 +186,111 @@ void GpuSession::makeTexture(const ResourceDesc& r) {
     } catch (const Unsupported& e) {
         unsupportedTextures_[r.slot] = e.what();
     }
+}
+
+namespace {
+
+// A structured ("stride N") or raw ("raw_buffer", 32-bit words) buffer from its description, its
+// data words in order; typed buffers (RWBuffer<float4>: a format and "buffer") have no
+// StructuredBuffer counterpart.
+std::unique_ptr<fxport::StructuredBuffer> makeStorageBuffer(fxport::GraphicsDevice& device, const ResourceDesc& r, const char* what) {
+    int stride = r.dimension == "raw_buffer" ? 4 : r.stride;
+    if (stride <= 0)
+        throw Unsupported(std::string("typed buffer ") + what + " (format " + r.format.name +
+                          "; RWBuffer<T>/Buffer<T> have no fxport counterpart, StructuredBuffer is structured or raw)");
+    if (r.width <= 0) throw Unsupported(std::string(what) + " of no elements");
+    auto buffer = std::make_unique<fxport::StructuredBuffer>(device, stride, r.width);
+    std::vector<std::uint32_t> words(buffer->SizeInBytes() / 4, 0);
+    for (std::size_t k = 0; k < words.size() && k < r.data.size(); ++k) words[k] = r.data[k];
+    buffer->SetData(words);
+    return buffer;
+}
+
+}  // namespace
+
+void GpuSession::makeUav(const ResourceDesc& r) {
+    uavs_.erase(r.slot);
+    unsupportedUavs_.erase(r.slot);
+    try {
+        Uav uav;
+        uav.desc = r;
+        if (r.dimension == "buffer" || r.dimension == "raw_buffer") {
+            uav.buffer = makeStorageBuffer(device(), r, "UAV");
+        } else if (r.dimension == "2d") {
+            SurfaceFormat format = floatSurfaceFormat(r.format, "UAV texture");
+            uav.texture = std::make_unique<fxport::RenderTarget2D>(device(), r.width, r.height, false, format, fxport::DepthFormat::None, 0,
+                                                                   fxport::RenderTargetUsage::PreserveContents);
+            std::vector<std::uint32_t> words(std::size_t(r.width * r.height * r.format.components), 0);
+            for (std::size_t k = 0; k < words.size() && k < r.data.size(); ++k) words[k] = r.data[k];
+            uav.texture->SetData(0, nullptr, reinterpret_cast<const float*>(words.data()), words.size());
+        } else {
+            throw Unsupported("UAV dimension " + r.dimension);
+        }
+        uavs_[r.slot] = std::move(uav);
+    } catch (const Unsupported& e) {
+        unsupportedUavs_[r.slot] = e.what();
+    }
+}
+
+void GpuSession::makeBufferSrv(const ResourceDesc& r) {
+    srvBuffers_.erase(r.slot);
+    unsupportedTextures_.erase(r.slot);
+    try {
+        srvBuffers_[r.slot] = makeStorageBuffer(device(), r, "shader resource");
+    } catch (const Unsupported& e) {
+        unsupportedTextures_[r.slot] = e.what();
+    }
+}
+
+void GpuSession::bindStorage() {
+    if (!unsupportedUavs_.empty()) throw Unsupported(unsupportedUavs_.begin()->second);
+    for (int slot = 0; slot < fxport::kMaxUnorderedAccessSlots; ++slot) {
+        auto it = uavs_.find(slot);
+        if (it != uavs_.end() && it->second.buffer) device().SetUnorderedAccess(slot, it->second.buffer.get());
+        else if (it != uavs_.end()) device().SetUnorderedAccess(slot, static_cast<fxport::Texture2D*>(it->second.texture.get()));
+        else device().SetUnorderedAccess(slot, static_cast<fxport::StructuredBuffer*>(nullptr));
+    }
+    for (int slot = 0; slot < fxport::kMaxShaderResourceBuffers; ++slot) {
+        auto it = srvBuffers_.find(slot);
+        device().SetShaderResource(slot, it != srvBuffers_.end() ? it->second.get() : nullptr);
+    }
+    for (const auto& [slot, uav] : uavs_)
+        if (slot >= fxport::kMaxUnorderedAccessSlots) throw Unsupported("UAV slot " + std::to_string(slot) + " (fxport has u0..u7)");
+}
+
+void GpuSession::dispatch(fxport::Effect& effect, const std::string& source, int model, int x, int y, int z) {
+    bindTextures(effect, source, model);
+    bindStorage();
+    effect.CurrentTechnique = effect.Techniques[0];
+    effect.CurrentTechnique->Passes[0].Apply();
+    device().DispatchCompute(x, y, z);
+    readback_.clear();
+}
+
+Texel GpuSession::readUav(int slot, int x, int y) {
+    auto it = uavs_.find(slot);
+    if (it == uavs_.end()) {
+        auto bad = unsupportedUavs_.find(slot);
+        throw Unsupported(bad != unsupportedUavs_.end() ? bad->second : "probe of an undeclared UAV");
+    }
+    Texel t;
+    if (it->second.buffer) {
+        const fxport::StructuredBuffer& b = *it->second.buffer;
+        std::size_t wordsPerElement = std::size_t(b.ElementStride() / 4);
+        if (x < 0 || x >= b.ElementCount()) throw std::runtime_error("probe outside the UAV buffer");
+        std::vector<std::uint32_t> words = b.GetData<std::uint32_t>();
+        for (std::size_t k = 0; k < 4 && std::size_t(x) * wordsPerElement + k < words.size(); ++k)
+            t.bits[k] = words[std::size_t(x) * wordsPerElement + k];
+        return t;
+    }
+    fxport::RenderTarget2D& texture = *it->second.texture;
+    int w = texture.Width(), h = texture.Height();
+    if (x < 0 || y < 0 || x >= w || y >= h) throw std::runtime_error("probe outside the UAV texture");
+    std::vector<fxport::Vector4> texels = texture.GetDataAsVector4();
+    const fxport::Vector4& v = texels[std::size_t(y * w + x)];
+    const float f[4] = {v.X, v.Y, v.Z, v.W};
+    std::memcpy(t.bits.data(), f, 16);
+    return t;
 }
 
 void GpuSession::ensureDefaultTarget() {
@@ -248,6 +357,7 @@ void GpuSession::bindTextures(fxport::Effect& effect, const std::string& source,
 void GpuSession::draw(fxport::Effect& effect, const std::string& source, int model, const DrawCall& call) {
     bindTargets();
     bindTextures(effect, source, model);
+    bindStorage();
     effect.CurrentTechnique = effect.Techniques[0];
     effect.CurrentTechnique->Passes[0].Apply();
     // D3D's defaults for a runner that sets no states: no culling, no blending, no depth test.
@@ -288,6 +398,7 @@ void GpuSession::drawVertices(const DrawCall& call) {
     if (call.topology == "triangle list") device().DrawPrimitives(fxport::PrimitiveType::TriangleList, 0, count / 3);
     else if (call.topology == "triangle strip") device().DrawPrimitives(fxport::PrimitiveType::TriangleStrip, 0, count - 2);
     else if (call.topology == "point list") device().DrawPrimitives(fxport::PrimitiveType::PointList, 0, count);
+    else if (call.topology == "patch list") device().DrawPatches(call.controlPoints, 0, count / call.controlPoints);
     else throw Unsupported("primitive topology " + call.topology);
     device().SetVertexBuffer(nullptr);
 }

@@ -20,6 +20,7 @@ namespace fxport {
 class Effect;
 class GraphicsDevice;
 class RenderTarget2D;
+class StructuredBuffer;
 class Texture2D;
 }
 
@@ -34,6 +35,7 @@ struct DrawCall {
     std::string topology = "triangle list";  // triangle list, triangle strip, point list
     int vertexCount = 3;
     bool quad = false;  // vkd3d's "draw quad": one big triangle from float2 positions
+    int controlPoints = 0;  // "draw N control point patch list M": patches of N (topology "patch list")
 };
 
 class GpuSession {
@@ -41,15 +43,20 @@ public:
     GpuSession();
     ~GpuSession();
 
-    void setResource(const ResourceDesc& resource);  // srv/rtv/dsv/vb (uav throws Unsupported)
+    void setResource(const ResourceDesc& resource);  // srv/rtv/dsv/vb/uav (what cannot be made throws Unsupported)
     void setSampler(const SamplerDesc& sampler) { samplers_[sampler.slot] = sampler; }
     void setInputLayout(std::vector<InputElement> layout) { inputLayout_ = std::move(layout); }
     void clearTarget(int slot, const float rgba[4]);
     // Binds textures and samplers for `effect` (texture and sampler parameters in declaration order
     // = registers t/s; explicit register(tN)/register(sN) in `source` win) and draws.
     void draw(fxport::Effect& effect, const std::string& source, int model, const DrawCall& call);
+    // Binds what `effect` needs and runs its compute shader over x*y*z groups.
+    void dispatch(fxport::Effect& effect, const std::string& source, int model, int x, int y, int z);
     // Reads one texel of render target `slot` as 32-bit words.
     Texel readTexel(int slot, int x, int y);
+    // One element of UAV `slot`: a texel of a texture (x, y) or element x of a buffer (its first
+    // four words), as 32-bit words.
+    Texel readUav(int slot, int x, int y);
     bool hasTarget(int slot) const;
 
     fxport::GraphicsDevice& device();
@@ -61,6 +68,9 @@ private:
     void bindTargets();
     void bindTextures(fxport::Effect& effect, const std::string& source, int model);
     void drawVertices(const DrawCall& call);
+    void makeUav(const ResourceDesc& r);
+    void makeBufferSrv(const ResourceDesc& r);
+    void bindStorage();  // [uav N] and buffer [srv N] into the device's slots (UAVs it could not make: Unsupported)
 
     std::unique_ptr<fxport::GraphicsDevice> device_;
     std::map<int, std::unique_ptr<fxport::RenderTarget2D>> targets_;
@@ -71,6 +81,14 @@ private:
     std::map<int, ResourceDesc> vertexBuffers_;
     std::vector<InputElement> inputLayout_;
     std::map<int, std::vector<fxport::Vector4>> readback_;  // per target, since the last draw or clear
+    struct Uav {
+        ResourceDesc desc;
+        std::unique_ptr<fxport::RenderTarget2D> texture;    // 2d float formats
+        std::unique_ptr<fxport::StructuredBuffer> buffer;   // structured and raw buffers
+    };
+    std::map<int, Uav> uavs_;
+    std::map<int, std::string> unsupportedUavs_;  // slot -> why it could not be made
+    std::map<int, std::unique_ptr<fxport::StructuredBuffer>> srvBuffers_;  // structured/raw [srv N]
 };
 
 }  // namespace conformance

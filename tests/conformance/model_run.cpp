@@ -28,8 +28,10 @@ bool stageRunsAt(Stage stage, int model) {
 
 // Capabilities of [require] this runner can honour; the rest skip the tests after them.
 bool capabilityHonoured(const std::string& capability) {
+    // Float formats only (XNA's SurfaceFormat has no integer ones); their typed UAV loads
+    // ("uav-load") are core GL image loads (r32f, rg32f, rgba32f).
+    if (capability == "tessellation-shader") return true;  // hull and domain shaders: DrawPatches
     if (!startsWith(capability, "format ")) return false;
-    if (capability.find("uav-load") != std::string::npos) return false;
     return capability.find("-float") != std::string::npos;
 }
 
@@ -112,20 +114,6 @@ void ModelRun::onShader(const Block& block) {
     testsSkipReason_.clear();
     if (block.hexBytecode) { testsSkipReason_ = "precompiled bytecode section (no HLSL to compile)"; return; }
     if (!stageRunsAt(block.stage, model_)) return;  // vkd3d compiles these stages only from SM4 (hull/domain SM5)
-    if (kind == SectionKind::ComputeHullDomain) {
-        SectionCounts& c = result_.sections[std::size_t(kind)];
-        if (expect.expectsReject()) {
-            ++c.shouldFail;
-            ++result_.notCompiledReasons["fail section of a compute/hull/domain shader: rejection not checked (no such stage in fxport)"];
-        } else {
-            ++c.shouldCompile;
-            ++result_.notCompiledReasons["compute/hull/domain shader: fxport has no such stage yet"];
-        }
-        testsSkipReason_ = std::string(stageName(block.stage)) + " shader (fxport has no such stage yet)";
-        log("L" + std::to_string(block.line) + " [" + block.header + "]: not compiled (fxport has no " +
-            stageName(block.stage) + " shaders)");
-        return;
-    }
     if (crashedBefore(block.line)) {
         // A crash is neither a compile nor a rejection (fxc answers with a diagnostic).
         ++result_.crashed;
@@ -177,7 +165,6 @@ void ModelRun::onResource(const Block& block) {
     try {
         if (block.kind == BlockKind::Sampler) { gpu().setSampler(parseSampler(block)); return; }
         if (block.kind == BlockKind::InputLayout) { gpu().setInputLayout(parseInputLayout(block)); return; }
-        if (block.kind == BlockKind::Uav) return;  // probes of UAVs are skipped with their reason
         gpu().setResource(parseResource(block));
     } catch (const Unsupported&) {
         // Recorded by the session; a draw or probe that needs the resource reports it.
@@ -206,10 +193,8 @@ void ModelRun::runTestLine(const Line& line, const std::string& d) {
         else if (startsWith(d, "draw")) doDraw(d.substr(4), line.number);
         else if (startsWith(d, "probe")) doProbe(d.substr(5), line.number);
         else if (startsWith(d, "clear rtv")) doClear(d.substr(9));
-        else if (startsWith(d, "dispatch")) {
-            drawState_ = DrawState::Skipped;
-            drawNote_ = "compute dispatch (fxport has no compute shaders yet)";
-        } else if (d.find("disable") != std::string::npos || d.find(" off") != std::string::npos) {
+        else if (startsWith(d, "dispatch")) doDispatch(d.substr(8), line.number);
+        else if (d.find("disable") != std::string::npos || d.find(" off") != std::string::npos) {
             stickyStates_.erase(firstWords(d, 1));
         } else {
             stickyStates_[firstWords(d, 1)] = firstWords(d, 2);

@@ -62,11 +62,15 @@ private:
     void runTestLine(const Line& line, const std::string& directive);
     void doUniform(const std::string& args);
     void doDraw(const std::string& args, int line);
+    void doDispatch(const std::string& args, int line);
+    void noteDrawOutcome(int line);  // records a failed or skipped draw/dispatch
     void doProbe(const std::string& args, int line);
     void doClear(const std::string& args);
     void skipProbe(const std::string& reason);
     void failProbe(int line, const std::string& detail);
     fxport::Effect& effectFor(const std::string& vs, const std::string& ps);
+    // An effect of loose shaders, one per stage (the sources as given), cached by stages and sources.
+    fxport::Effect& effectOf(const std::vector<std::pair<Stage, std::string>>& stages);
     std::string applyUniforms(fxport::Effect& effect, const std::string& source);  // returns UniformLayout::guess
     GpuSession& gpu();
     void log(const std::string& text);

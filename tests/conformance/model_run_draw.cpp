@@ -27,6 +27,17 @@ DrawCall parseDrawCall(const std::string& args) {
     std::string a = args;
     a.erase(0, a.find_first_not_of(' '));
     if (a.rfind("quad", 0) == 0) { call.quad = true; return call; }
+    // "3 control point patch list 3": patches of 3 control points, 3 vertices in all.
+    {
+        int points = 0, vertices = 0, used = 0;
+        if (std::sscanf(a.c_str(), "%d control point patch list %d%n", &points, &vertices, &used) == 2) {
+            call.topology = "patch list";
+            call.controlPoints = points;
+            call.vertexCount = vertices;
+            if (points <= 0 || vertices % points) throw std::runtime_error("patch list of " + std::to_string(vertices) + " vertices in patches of " + std::to_string(points));
+            return call;
+        }
+    }
     for (const char* topology : {"triangle list", "triangle strip", "point list"}) {
         if (a.rfind(topology, 0) != 0) continue;
         call.topology = topology;
@@ -60,19 +71,23 @@ double scalarValue(const fxport::xlate::Parameter& p, std::uint32_t word, int mo
 }  // namespace
 
 fxport::Effect& ModelRun::effectFor(const std::string& vs, const std::string& ps) {
-    std::string key = require_.matrixPacking + "\x01" + vs + "\x01" + ps;
+    return effectOf({{Stage::Vertex, vs}, {Stage::Pixel, ps}});
+}
+
+fxport::Effect& ModelRun::effectOf(const std::vector<std::pair<Stage, std::string>>& stages) {
+    std::string key = require_.matrixPacking;
+    for (const auto& [stage, source] : stages) key += "\x01" + std::to_string(int(stage)) + "\x01" + source;
     auto known = effects_.find(key);
     if (known != effects_.end()) return *known->second;
-    const Block* vsBlock = shaders_.count(Stage::Vertex) ? shaders_[Stage::Vertex].block : nullptr;
-    const Block* psBlock = shaders_[Stage::Pixel].block;
-    std::string vsPath = compiler_.writeSource(vs, vsBlock ? vsBlock->line : 0, require_, ".hlsl");
-    std::string psPath = compiler_.writeSource(ps, psBlock->line, require_, ".hlsl");
+    std::vector<fxport::Effect::ShaderFile> files;
+    for (const auto& [stage, source] : stages) {
+        const Block* block = shaders_.count(stage) ? shaders_[stage].block : nullptr;
+        files.push_back({compiler_.writeSource(source, block ? block->line : 0, require_, ".hlsl"), "main", shaderProfile(stage, model_)});
+    }
     fxport::EffectOptions options;
     options.cacheDir = options_.cacheDir;
     options.useCache = !options_.cacheDir.empty();
-    std::unique_ptr<fxport::Effect> effect = fxport::Effect::FromShaderFiles(
-        gpu().device(), {vsPath, "main", shaderProfile(Stage::Vertex, model_)},
-        {psPath, "main", shaderProfile(Stage::Pixel, model_)}, options);
+    std::unique_ptr<fxport::Effect> effect = fxport::Effect::FromShaderFiles(gpu().device(), files, options);
     effect->Precompile();
     return *(effects_[key] = std::move(effect));
 }
@@ -111,22 +126,36 @@ void ModelRun::doDraw(const std::string& args, int line) {
         DrawCall call = parseDrawCall(args);
         if (!stickyStates_.empty())
             throw Unsupported("test state '" + stickyStates_.begin()->second + "' (not settable through the runtime API)");
-        for (Stage s : {Stage::Geometry, Stage::Hull, Stage::Domain})
-            if (shaders_.count(s))
-                throw Unsupported(std::string(stageName(s)) + " shader in a draw (Effect::FromShaderFiles takes vertex and pixel shaders)");
+        const bool patches = call.topology == "patch list";
+        if (shaders_.count(Stage::Geometry))
+            throw Unsupported("geometry shader in a draw (the runner draws vertex, hull, domain and pixel shaders)");
+        if (patches && !(shaders_.count(Stage::Hull) && shaders_.count(Stage::Domain)))
+            throw Unsupported("patch list without hull and domain shaders (D3D11 draws patches only through them)");
+        if (!patches && (shaders_.count(Stage::Hull) || shaders_.count(Stage::Domain)))
+            throw Unsupported("hull/domain shaders in a draw of " + call.topology + " (they take patch lists)");
         if (!shaders_.count(Stage::Pixel)) throw Unsupported("draw without a pixel shader");
         std::string vs = shaders_.count(Stage::Vertex) ? shaders_[Stage::Vertex].block->source() : kQuadVertexShader;
         if (call.quad && !shaders_.count(Stage::Vertex)) vs = kQuadVertexShader;
-        std::string ps = shaders_[Stage::Pixel].block->source();
+        std::vector<std::pair<Stage, std::string>> stages = {{Stage::Vertex, vs}};
+        if (patches) {
+            stages.push_back({Stage::Hull, shaders_[Stage::Hull].block->source()});
+            stages.push_back({Stage::Domain, shaders_[Stage::Domain].block->source()});
+        }
+        stages.push_back({Stage::Pixel, shaders_[Stage::Pixel].block->source()});
         if (crashedBefore(line)) throw std::runtime_error("the draw crashed the process");
-        for (Stage s : {Stage::Vertex, Stage::Pixel})
-            if (shaders_.count(s) && crashedBefore(shaders_[s].block->line))
-                throw std::runtime_error("the compile of the section at line " + std::to_string(shaders_[s].block->line) +
+        std::string all;
+        for (const auto& [stage, source] : stages) {
+            if (shaders_.count(stage) && shaders_[stage].block->hexBytecode)
+                throw Unsupported("precompiled bytecode section (no HLSL to compile)");
+            if (shaders_.count(stage) && crashedBefore(shaders_[stage].block->line))
+                throw std::runtime_error("the compile of the section at line " + std::to_string(shaders_[stage].block->line) +
                                          " crashed the process");
+            all += source;
+        }
         mark(line);
-        fxport::Effect& effect = effectFor(vs, ps);
-        layoutGuess_ = applyUniforms(effect, vs + ps);
-        gpu().draw(effect, vs + ps, model_, call);
+        fxport::Effect& effect = effectOf(stages);
+        layoutGuess_ = applyUniforms(effect, all);
+        gpu().draw(effect, all, model_, call);
         drawState_ = DrawState::Drawn;
     } catch (const Unsupported& e) {
         drawNote_ = e.what();
@@ -137,6 +166,40 @@ void ModelRun::doDraw(const std::string& args, int line) {
         drawState_ = DrawState::Failed;
         drawNote_ = e.what();
     }
+    noteDrawOutcome(line);
+}
+
+void ModelRun::doDispatch(const std::string& args, int line) {
+    drawState_ = DrawState::Skipped;
+    drawNote_.clear();
+    layoutGuess_.clear();
+    try {
+        int x = 1, y = 1, z = 1;
+        std::istringstream(args) >> x >> y >> z;
+        if (!shaders_.count(Stage::Compute)) throw Unsupported("dispatch without a compute shader");
+        const Block& cs = *shaders_[Stage::Compute].block;
+        if (cs.hexBytecode) throw Unsupported("precompiled bytecode section (no HLSL to compile)");
+        if (crashedBefore(line)) throw std::runtime_error("the dispatch crashed the process");
+        if (crashedBefore(cs.line)) throw std::runtime_error("the compile of the section at line " + std::to_string(cs.line) + " crashed the process");
+        mark(line);
+        std::string source = cs.source();
+        fxport::Effect& effect = effectOf({{Stage::Compute, source}});
+        layoutGuess_ = applyUniforms(effect, source);
+        gpu().dispatch(effect, source, model_, x, y, z);
+        drawState_ = DrawState::Drawn;
+    } catch (const Unsupported& e) {
+        drawNote_ = e.what();
+    } catch (const fxport::xlate::CompileError& e) {
+        drawState_ = DrawState::Failed;
+        drawNote_ = firstError(e);
+    } catch (const std::exception& e) {
+        drawState_ = DrawState::Failed;
+        drawNote_ = e.what();
+    }
+    noteDrawOutcome(line);
+}
+
+void ModelRun::noteDrawOutcome(int line) {
     if (drawState_ == DrawState::Failed) {
         failures_.push_back({file_.name, model_, line, "draw", drawNote_});
         log("L" + std::to_string(line) + " draw FAILED: " + drawNote_);
@@ -160,14 +223,13 @@ void ModelRun::doClear(const std::string& args) {
 void ModelRun::doProbe(const std::string& args, int line) {
     Probe probe = parseProbe(args);
     if (probe.kind == "f64" || probe.kind == "u64" || probe.kind == "i64") return skipProbe("64-bit probe (double/int64 targets)");
-    if (probe.target == Probe::Target::Uav) return skipProbe("UAV probe (fxport has no UAVs yet)");
     if (probe.target == Probe::Target::Dsv) return skipProbe("depth-stencil probe (no depth readback)");
     if (drawState_ == DrawState::Skipped) return skipProbe(drawNote_);
     if (drawState_ == DrawState::Failed) return failProbe(line, "draw failed: " + drawNote_);
     try {
         for (int y = probe.top; y < probe.bottom; ++y) {
             for (int x = probe.left; x < probe.right; ++x) {
-                Texel texel = gpu().readTexel(probe.slot, x, y);
+                Texel texel = probe.target == Probe::Target::Uav ? gpu().readUav(probe.slot, x, y) : gpu().readTexel(probe.slot, x, y);
                 if (texelMatches(probe, texel)) continue;
                 return failProbe(line, "expected " + describeExpected(probe) + ", got " + describeTexel(probe, texel) +
                                            " at (" + std::to_string(x) + ", " + std::to_string(y) + ")" +

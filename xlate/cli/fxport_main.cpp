@@ -340,6 +340,9 @@ void dump(const CompiledEffect& e, std::ostream& out) {
         for (const auto& p : t.passes) {
             out << "    pass " << p.name << (p.valid ? "" : "  [INVALID]") << ": vs " << choice(p.vertexShader) << ", ps " << choice(p.pixelShader);
             if (!p.geometryShader.shaders.empty()) out << ", gs " << choice(p.geometryShader);
+            if (!p.hullShader.shaders.empty()) out << ", hs " << choice(p.hullShader);
+            if (!p.domainShader.shaders.empty()) out << ", ds " << choice(p.domainShader);
+            if (!p.computeShader.shaders.empty()) out << ", cs " << choice(p.computeShader);
             out << "\n";
             for (const auto& s : p.states) out << "      " << describeStateAssignment(s, e) << "\n";
         }
@@ -348,6 +351,17 @@ void dump(const CompiledEffect& e, std::ostream& out) {
     for (size_t i = 0; i < e.shaders.size(); ++i) {
         const auto& s = e.shaders[i];
         out << "  #" << i << " " << s.profile.name << " " << s.entryPoint << "(" << s.arguments << ")" << (s.needsD3D9PixelOffset ? "  [D3D9 half-pixel offset]" : "") << "\n";
+        if (s.profile.stage == ShaderStage::Compute)
+            out << "      numthreads(" << s.threadGroupSize[0] << ", " << s.threadGroupSize[1] << ", " << s.threadGroupSize[2] << ")\n";
+        if (!s.tessellation.domain.empty())
+            out << "      tessellation: domain " << s.tessellation.domain << (s.tessellation.partitioning.empty() ? "" : ", partitioning " + s.tessellation.partitioning)
+                << (s.tessellation.outputTopology.empty() ? "" : ", topology " + s.tessellation.outputTopology)
+                << (s.tessellation.patchConstantFunction.empty() ? "" : ", patch constants " + s.tessellation.patchConstantFunction)
+                << ", control points " << s.tessellation.inputControlPoints << " -> " << s.tessellation.outputControlPoints << "\n";
+        for (const auto& b : s.storage)
+            out << "      " << (b.kind == StorageKind::Image ? "image " : "buffer ") << b.name << " : register(" << b.registerClass << b.slot << ") -> "
+                << (b.kind == StorageKind::Image ? "image unit " : "SSBO binding ") << b.binding << (b.writes ? " (read/write)" : " (read)")
+                << (b.format.empty() ? "" : ", " + b.format) << (b.stride ? ", stride " + std::to_string(b.stride) : "") << "\n";
         for (const auto& in : s.inputs) out << "    input " << in.semantic << " -> location " << in.location << "\n";
         for (const auto& b : s.samplers)
             out << "    sampler unit " << b.unit << ": " << b.glslName << (b.textureParameter.empty() ? "" : " <- texture " + b.textureParameter) << "\n";

@@ -36,13 +36,15 @@
 #include "shader_profile.h"
 #include "spirv_sizes.h"
 #include "spirv_to_glsl.h"
+#include "patch_constant_wrapper.h"
+#include "stage_attributes.h"
 #include "text_util.h"
 
 namespace fs = std::filesystem;
 
 namespace fxport::xlate {
 
-const char* compilerVersion() { return "fxport-xlate-3"; }  // 3: asm { } blocks translate
+const char* compilerVersion() { return "fxport-xlate-4"; }  // 3: asm { } blocks translate; 4: compute, hull, domain
 
 namespace {
 
@@ -51,6 +53,9 @@ const char* stageName(ShaderStage s) {
     case ShaderStage::Vertex: return "vertex";
     case ShaderStage::Pixel: return "pixel";
     case ShaderStage::Geometry: return "geometry";
+    case ShaderStage::Hull: return "hull";
+    case ShaderStage::Domain: return "domain";
+    case ShaderStage::Compute: return "compute";
     }
     return "?";
 }
@@ -76,6 +81,15 @@ ParameterType objectType(const std::string& type) {
     if (t == "samplercube") return ParameterType::SamplerCube;
     if (t == "samplerstate" || t == "samplercomparisonstate") return ParameterType::SamplerState;
     return ParameterType::Void;
+}
+
+// RWStructuredBuffer<T>, StructuredBuffer<T>, (RW)ByteAddressBuffer, RWTexture2D<T> ...: bound by
+// register through GraphicsDevice::SetUnorderedAccess / SetShaderResource, not parameters.
+bool isStorageType(const std::string& type) {
+    std::string t = toLower(type.substr(0, type.find('<')));
+    while (!t.empty() && t.back() == ' ') t.pop_back();
+    return t.rfind("rw", 0) == 0 || t == "structuredbuffer" || t == "byteaddressbuffer" || t == "appendstructuredbuffer" ||
+           t == "consumestructuredbuffer" || t.rfind("rasterizerordered", 0) == 0;
 }
 
 struct ShaderKey {
@@ -116,6 +130,7 @@ public:
     void checkPackOffsets(std::vector<PackedMember> packed);
     void buildTechniques();
     void finishReflection();
+    void checkTessellationPass(Pass& pass, size_t token);
 
 private:
     const PreprocessedEffect& pre_;
@@ -130,6 +145,8 @@ private:
     VaryingLocations ownVaryings_;
     VaryingLocations& varyings_;  // custom semantics' locations: this effect's, or shared by loose files
     bool passHasGeometryShader_ = false;  // of the pass being built
+    Tessellation passHull_;               // of the pass being built: its hull shader's attributes (domain shaders take them)
+    void findPassHull(const FxPass& pass);
     AsmPassBindings passAsm_;             // of the pass being built: what its asm shaders' registers hold
     int asmFunctions_ = 0;
 
@@ -219,6 +236,8 @@ void EffectBuilder::buildParameters() {
     std::map<std::string, std::vector<PackedMember>> packed;  // per cbuffer, members placed with packoffset
     std::map<std::string, std::vector<double>> constants;  // earlier globals, for initializers like `= A * 2`
     for (const auto& g : syntax_.globals) {
+        // groupshared: a compute shader's thread-group memory, no constant.
+        if (std::find(g.modifiers.begin(), g.modifiers.end(), "groupshared") != g.modifiers.end()) continue;
         bool isStatic = std::find(g.modifiers.begin(), g.modifiers.end(), "static") != g.modifiers.end();
         Parameter p;
         p.name = g.name;
@@ -259,6 +278,7 @@ void EffectBuilder::buildParameters() {
             }
         } else {
             auto b = describeBasicType(syntax_.resolveType(g.type));
+            if (!b.ok && isStorageType(g.type)) continue;  // a UAV or buffer SRV: reflected per shader (CompiledShader::storage)
             if (!b.ok) {
                 effect_.diagnostics.push_back(at(Severity::Warning, diag::kSyntax,
                                                  "global '" + g.name + "' has type '" + g.type + "', which fxport does not expose as a parameter", g.token));
@@ -368,14 +388,16 @@ int EffectBuilder::compileShader(const FxShaderExpr& expr, ShaderStage expected,
         if (!profileLike) {
             // An identifier the preprocessor left alone: a macro nobody defined. Effect hosts
             // (Lightworks' PROFILE, BF2's LOWPSMODEL) define such profile macros themselves.
-            const char* example = expected == ShaderStage::Vertex ? "vs_3_0" : expected == ShaderStage::Pixel ? "ps_3_0" : "gs_4_0";
+            const char* example = expected == ShaderStage::Vertex ? "vs_3_0" : expected == ShaderStage::Pixel ? "ps_3_0"
+                                   : expected == ShaderStage::Hull ? "hs_5_0" : expected == ShaderStage::Domain ? "ds_5_0"
+                                   : expected == ShaderStage::Compute ? "cs_5_0" : "gs_4_0";
             error(diag::kBadProfile, "'" + expr.profile + "' is not a shader profile, and no macro '" + expr.profile +
                                          "' is defined; if the application that hosts this effect defines it, define it too (-D " +
                                          expr.profile + "=" + example + ")",
                   expr.token + 1);
             return -1;
         }
-        error(diag::kBadProfile, "'" + expr.profile + "' is not a shader profile fxport knows (vs_1_1..vs_5_0, ps_2_0..ps_5_0, gs_4_0..gs_5_0)", expr.token + 1);
+        error(diag::kBadProfile, "'" + expr.profile + "' is not a shader profile fxport knows (vs_1_1..vs_5_0, ps_2_0..ps_5_0, gs_4_0..gs_5_0, cs_4_0..cs_5_0, hs_5_0, ds_5_0)", expr.token + 1);
         return -1;
     }
     if (profile->stage != expected) {
@@ -385,6 +407,8 @@ int EffectBuilder::compileShader(const FxShaderExpr& expr, ShaderStage expected,
         return -1;
     }
     ShaderKey key{expected, toLower(expr.profile), expr.entry, expr.arguments, passHasGeometryShader_};
+    // A domain shader's GLSL carries its hull shader's partitioning and topology: one per pairing.
+    if (expected == ShaderStage::Domain) key.arguments += "\x01" + passHull_.partitioning + "," + passHull_.outputTopology;
     if (auto it = compiled_.find(key); it != compiled_.end()) return it->second;
     compiled_[key] = -1;
 
@@ -394,7 +418,16 @@ int EffectBuilder::compileShader(const FxShaderExpr& expr, ShaderStage expected,
         return -1;
     }
     std::string entryName = expr.entry;
-    bool wrapped = expected != ShaderStage::Geometry;
+    if (expected == ShaderStage::Hull || expected == ShaderStage::Domain || expected == ShaderStage::Compute) {
+        Tessellation unused;
+        if (std::string why = checkStageAttributes(syntax_, *entry, *profile, unused); !why.empty()) {
+            error(diag::kBadEntrySignature, why, entry->token);
+            return -1;
+        }
+    }
+    // Vertex and pixel shaders get a wrapper that maps D3D9 semantics; the D3D10+ stages are
+    // compiled as written.
+    bool wrapped = expected == ShaderStage::Vertex || expected == ShaderStage::Pixel;
     EntryWrapper wrapper;
     if (wrapped) {
         wrapper = buildEntryWrapper(syntax_, *entry, *profile, expr.arguments, passHasGeometryShader_);
@@ -408,6 +441,21 @@ int EffectBuilder::compileShader(const FxShaderExpr& expr, ShaderStage expected,
     if (!options_.skipShaders) {
         source = expected == ShaderStage::Geometry ? rewritten_.hlslForGeometryShader(expr.entry) : rewritten_.hlsl;
         if (wrapped) source += wrapper.code;
+        if (expected == ShaderStage::Hull) {
+            Tessellation t;
+            checkStageAttributes(syntax_, *entry, *profile, t);
+            // fxc (SM 5) takes the last definition of an overloaded patch-constant function.
+            const FxFunction* constants = nullptr;
+            for (const auto& f : syntax_.functions)
+                if (f.name == t.patchConstantFunction) constants = &f;
+            if (auto passThrough = passThroughHullEntry(*entry, constants)) {
+                source += passThrough->code;
+                entryName = passThrough->name;
+            }
+            if (auto pcf = constants ? patchConstantWrapper(*constants) : std::nullopt) {
+                source = redirectPatchConstantFunction(source, constants->name, pcf->name) + pcf->code;
+            }
+        }
     }
     return emitShader(key, *profile, expr, expr.entry, expr.arguments, source, entryName, wrapper, rewritten_.dx9Samplers);
 }
@@ -562,7 +610,8 @@ int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile
         reportOversized(*over, expr.token);
         return -1;
     }
-    GlslShader glsl = spirvToGlsl(std::move(spirv.words), expected, rewritten_, varyings_);
+    GlslShader glsl = spirvToGlsl(std::move(spirv.words), expected, rewritten_, varyings_,
+                                  expected == ShaderStage::Domain ? &passHull_ : nullptr);
     if (!glsl.error.empty()) {
         error(diag::kSpirv, "SPIRV-Cross could not translate '" + expr.entry + "': " + glsl.error, expr.token);
         return -1;
@@ -578,6 +627,17 @@ int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile
     shader.outputTargets = glsl.outputTargets;
     shader.writesDepth = glsl.writesDepth;
     shader.needsD3D9PixelOffset = wrapper.usesPixelOffset;
+    shader.storage = glsl.storage;
+    shader.threadGroupSize = glsl.threadGroupSize;
+    if (expected == ShaderStage::Compute) {
+        if (std::string why = checkThreadGroupSize(shader.threadGroupSize, profile); !why.empty()) {
+            effect_.diagnostics.push_back(pre_.map.make(Severity::Error, diag::kBadEntrySignature, "'" + displayEntry + "' (" + expr.profile + "): " + why,
+                                                        entryToken.line, entryToken.column, displayEntry));
+            return -1;
+        }
+    }
+    if ((expected == ShaderStage::Hull || expected == ShaderStage::Domain) && entryFunction)
+        checkStageAttributes(syntax_, *entryFunction, profile, shader.tessellation);
     if (options_.keepRewrittenHlsl) shader.hlslAfterRewrite = current;
     for (const auto& name : glsl.membersRead) {
         int p = parameterIndex(name);
@@ -694,10 +754,13 @@ void EffectBuilder::buildTechniques() {
             pass.annotations = p.annotations;
             pass.declaredAt = pre_.map.locate(syntax_.tokens[p.token].line, syntax_.tokens[p.token].column);
             bool fixedFunction = false;
-            passHasGeometryShader_ = false;
+            passHasGeometryShader_ = options_.besideGeometryOrDomainShader;
+            findPassHull(p);
             for (const auto& a : p.assignments) {
                 std::string n = toLower(a.name);
-                if ((n == "geometryshader" || n == "setgeometryshader") &&
+                // A domain shader, like a geometry shader, takes the vertex shader's outputs (through
+                // the hull shader) and feeds the pixel shader: both sides keep their declared types.
+                if ((n == "geometryshader" || n == "setgeometryshader" || n == "domainshader" || n == "setdomainshader") &&
                     parseShaderExpr(syntax_, a.value).kind != FxShaderExpr::Kind::Null)
                     passHasGeometryShader_ = true;
             }
@@ -720,16 +783,12 @@ void EffectBuilder::buildTechniques() {
                 if (r == StateResult::Ignored) fixedFunction = true;
                 if (r != StateResult::NotAState) continue;
                 std::string n = toLower(a.name);
-                ShaderStage stage = n.find("vertex") != std::string::npos ? ShaderStage::Vertex
-                                    : n.find("pixel") != std::string::npos ? ShaderStage::Pixel
-                                                                           : ShaderStage::Geometry;
-                if (n == "sethullshader" || n == "setdomainshader" || n == "setcomputeshader") {
-                    FxShaderExpr e = parseShaderExpr(syntax_, a.value);
-                    if (e.kind == FxShaderExpr::Kind::Null) continue;
-                    error(diag::kUnsupported, a.name + ": tessellation and compute shaders are not supported", a.nameToken);
-                    pass.valid = false;
-                    continue;
-                }
+                ShaderStage stage = n.find("vertex") != std::string::npos    ? ShaderStage::Vertex
+                                    : n.find("pixel") != std::string::npos   ? ShaderStage::Pixel
+                                    : n.find("hull") != std::string::npos    ? ShaderStage::Hull
+                                    : n.find("domain") != std::string::npos  ? ShaderStage::Domain
+                                    : n.find("compute") != std::string::npos ? ShaderStage::Compute
+                                                                             : ShaderStage::Geometry;
                 FxShaderExpr e = parseShaderExpr(syntax_, a.value);
                 if (e.kind == FxShaderExpr::Kind::Invalid && !a.value.empty() && iequals(syntax_.tokens[a.value.begin].text, "decl")) {
                     error(diag::kUnsupported, "DirectX 8 vertex declarations (VertexShader = decl { ... } asm { ... }) are not supported: "
@@ -738,12 +797,16 @@ void EffectBuilder::buildTechniques() {
                     continue;
                 }
                 if (e.kind == FxShaderExpr::Kind::Invalid) e.token = a.nameToken;
-                ShaderChoice& target = stage == ShaderStage::Vertex ? pass.vertexShader
-                                       : stage == ShaderStage::Pixel ? pass.pixelShader
-                                                                     : pass.geometryShader;
+                ShaderChoice& target = stage == ShaderStage::Vertex    ? pass.vertexShader
+                                       : stage == ShaderStage::Pixel   ? pass.pixelShader
+                                       : stage == ShaderStage::Hull    ? pass.hullShader
+                                       : stage == ShaderStage::Domain  ? pass.domainShader
+                                       : stage == ShaderStage::Compute ? pass.computeShader
+                                                                       : pass.geometryShader;
                 if (!resolveShader(e, stage, target, a.nameToken)) pass.valid = false;
             }
-            if (pass.valid && pass.vertexShader.shaders.empty() && pass.pixelShader.shaders.empty()) {
+            if (t.name != kLooseTechnique) checkTessellationPass(pass, p.token);
+            if (pass.valid && pass.vertexShader.shaders.empty() && pass.pixelShader.shaders.empty() && pass.computeShader.shaders.empty()) {
                 // A state-only pass (restoring states) is fine to Apply(); one that relies on the
                 // fixed-function pipeline (Lighting, TextureStage states ...) cannot draw anything.
                 if (fixedFunction) {
@@ -759,6 +822,34 @@ void EffectBuilder::buildTechniques() {
         }
         effect_.techniques.push_back(std::move(tech));
     }
+}
+
+// The attributes of the hull shader `pass` compiles (SetHullShader(CompileShader(hs_5_0, HS()))),
+// else those the options give for loose files; a hull shader chosen from a shader variable or
+// array gives none (GL's defaults: equal spacing, counter-clockwise).
+void EffectBuilder::findPassHull(const FxPass& pass) {
+    passHull_ = options_.hullOfDomainShader;
+    for (const auto& a : pass.assignments) {
+        std::string n = toLower(a.name);
+        if (n != "hullshader" && n != "sethullshader") continue;
+        FxShaderExpr e = parseShaderExpr(syntax_, a.value);
+        if (e.kind != FxShaderExpr::Kind::Compile) continue;
+        auto profile = parseShaderProfile(e.profile);
+        const FxFunction* entry = syntax_.findEntry(e.entry, e.arguments);
+        if (!profile || profile->stage != ShaderStage::Hull || !entry) continue;
+        Tessellation t;
+        if (checkStageAttributes(syntax_, *entry, *profile, t).empty()) passHull_ = t;
+    }
+}
+
+// D3D11 runs a hull shader only with a domain shader and the other way round; a pass with one of
+// them alone could never draw.
+void EffectBuilder::checkTessellationPass(Pass& pass, size_t token) {
+    bool hull = !pass.hullShader.shaders.empty(), domain = !pass.domainShader.shaders.empty();
+    if (!pass.valid || hull == domain) return;
+    error(diag::kBadEntrySignature, "pass '" + pass.name + "' sets a " + (hull ? "hull shader but no domain shader" : "domain shader but no hull shader") +
+                                        "; tessellation needs both", token);
+    pass.valid = false;
 }
 
 void EffectBuilder::finishReflection() {
@@ -829,6 +920,9 @@ std::string cacheKey(const std::string& source, const std::string& displayPath, 
     }
     for (const auto& t : options.techniques) field("T", t);
     field("K", options.keepValidPasses ? "1" : "0");
+    if (options.besideGeometryOrDomainShader) field("G", "1");
+    if (!options.hullOfDomainShader.partitioning.empty())
+        field("H", options.hullOfDomainShader.partitioning + "," + options.hullOfDomainShader.outputTopology);
     if (options.skipShaders) field("O", "outline");
     field("S", source);
     return contentHash(key);

@@ -36,7 +36,8 @@ struct Names {
     }
 };
 
-constexpr Names<ShaderStage, 3> kStage{{"vertex", "pixel", "geometry"}};
+constexpr Names<ShaderStage, 6> kStage{{"vertex", "pixel", "geometry", "hull", "domain", "compute"}};
+constexpr Names<StorageKind, 2> kStorage{{"buffer", "image"}};
 constexpr Names<ParameterClass, 5> kClass{{"scalar", "vector", "matrix", "object", "struct"}};
 constexpr Names<ParameterType, 17> kType{{"void", "bool", "int", "uint", "float", "string", "texture", "texture1D",
                                           "texture2D", "texture3D", "textureCube", "sampler", "sampler1D", "sampler2D",
@@ -226,6 +227,23 @@ json toJson(const CompiledShader& s, const CompiledEffect& effect, bool withGlsl
         j["writesDepth"] = s.writesDepth;
     }
     j["d3d9PixelOffset"] = s.needsD3D9PixelOffset;
+    // Compute, hull and domain shaders' reflection: written only where there is some, so effects
+    // without them read as before.
+    if (!s.storage.empty()) {
+        json storage = json::array();
+        for (const auto& b : s.storage)
+            storage.push_back({{"kind", kStorage.of(b.kind)}, {"name", b.name}, {"register", std::string(1, b.registerClass) + std::to_string(b.slot)},
+                               {"binding", b.binding}, {"stride", b.stride}, {"writes", b.writes}, {"dimension", kKind.of(b.dimension)},
+                               {"format", b.format}});
+        j["storage"] = storage;
+    }
+    if (s.profile.stage == ShaderStage::Compute) j["threadGroupSize"] = s.threadGroupSize;
+    if (s.profile.stage == ShaderStage::Hull || s.profile.stage == ShaderStage::Domain) {
+        const Tessellation& t = s.tessellation;
+        j["tessellation"] = {{"domain", t.domain}, {"partitioning", t.partitioning}, {"outputTopology", t.outputTopology},
+                             {"patchConstantFunction", t.patchConstantFunction}, {"inputControlPoints", t.inputControlPoints},
+                             {"outputControlPoints", t.outputControlPoints}};
+    }
     if (withGlsl) {
         j["glsl"] = s.glsl;
         j["glslHash"] = contentHash(s.glsl);
@@ -275,6 +293,9 @@ json techniquesJson(const CompiledEffect& effect, bool withLocation) {
             }
             json pj{{"name", p.name}, {"valid", p.valid}, {"vertexShader", toJson(p.vertexShader)},
                     {"pixelShader", toJson(p.pixelShader)}, {"geometryShader", toJson(p.geometryShader)}, {"states", states}};
+            if (!p.hullShader.shaders.empty()) pj["hullShader"] = toJson(p.hullShader);
+            if (!p.domainShader.shaders.empty()) pj["domainShader"] = toJson(p.domainShader);
+            if (!p.computeShader.shaders.empty()) pj["computeShader"] = toJson(p.computeShader);
             if (!p.annotations.empty()) pj["annotations"] = toJson(p.annotations);
             if (withLocation) pj["declaredAt"] = toJson(p.declaredAt);
             passes.push_back(pj);
@@ -457,6 +478,28 @@ CompiledEffect deserializeEffect(std::string_view text, const std::string& nameF
             cs.outputTargets = s.value("outputTargets", 0);
             cs.writesDepth = s.value("writesDepth", false);
             cs.needsD3D9PixelOffset = s.value("d3d9PixelOffset", false);
+            if (s.contains("storage"))
+                for (const auto& b : s["storage"]) {
+                    StorageBinding sb;
+                    sb.kind = kStorage.parse(b.at("kind"));
+                    sb.name = b.at("name");
+                    std::string reg = b.at("register");
+                    if (reg.size() < 2 || (reg[0] != 'u' && reg[0] != 't')) return fail("storage register '" + reg + "' is not uN or tN");
+                    sb.registerClass = reg[0];
+                    sb.slot = std::stoi(reg.substr(1));
+                    sb.binding = b.at("binding");
+                    sb.stride = b.at("stride");
+                    sb.writes = b.at("writes");
+                    sb.dimension = kKind.parse(b.at("dimension"));
+                    sb.format = b.at("format");
+                    cs.storage.push_back(sb);
+                }
+            if (s.contains("threadGroupSize")) cs.threadGroupSize = s["threadGroupSize"].get<std::array<int, 3>>();
+            if (s.contains("tessellation")) {
+                const json& t = s["tessellation"];
+                cs.tessellation = {t.at("domain"), t.at("partitioning"), t.at("outputTopology"), t.at("patchConstantFunction"),
+                                   t.at("inputControlPoints"), t.at("outputControlPoints")};
+            }
             e.shaders.push_back(std::move(cs));
         }
         for (const auto& t : j.at("techniques")) {
@@ -471,6 +514,9 @@ CompiledEffect deserializeEffect(std::string_view text, const std::string& nameF
                 pass.vertexShader = choiceFrom(p.at("vertexShader"));
                 pass.pixelShader = choiceFrom(p.at("pixelShader"));
                 pass.geometryShader = choiceFrom(p.at("geometryShader"));
+                if (p.contains("hullShader")) pass.hullShader = choiceFrom(p["hullShader"]);
+                if (p.contains("domainShader")) pass.domainShader = choiceFrom(p["domainShader"]);
+                if (p.contains("computeShader")) pass.computeShader = choiceFrom(p["computeShader"]);
                 if (p.contains("annotations")) pass.annotations = annotationsFrom(p["annotations"]);
                 if (p.contains("declaredAt")) pass.declaredAt = locationFrom(p["declaredAt"]);
                 for (const auto& s : p.at("states")) {

@@ -79,11 +79,17 @@ std::optional<std::string> findEffectInconsistency(const CompiledEffect& e) {
                 return what + " reads bytes " + std::to_string(r.offset) + "+" + std::to_string(r.size) + " outside its constant buffer";
         }
         if (!within(s.outputTargets, 0, 8)) return what + " writes " + std::to_string(s.outputTargets) + " render targets";
+        for (const auto& b : s.storage)
+            if (!within(b.slot, 0, 127) || !within(b.binding, 0, kSrvBufferBindingBase + 127) || !within(b.stride, 0, 2048))
+                return what + " binds '" + b.name + "' at register " + std::to_string(b.slot) + ", binding " + std::to_string(b.binding) +
+                       ", stride " + std::to_string(b.stride);
+        for (int n : s.threadGroupSize)
+            if (!within(n, 0, 1024)) return what + " has a thread-group size of " + std::to_string(n);
     }
     for (const auto& t : e.techniques)
         for (const auto& p : t.passes) {
             const std::string where = "pass '" + t.name + "/" + p.name + "'";
-            for (const ShaderChoice* c : {&p.vertexShader, &p.pixelShader, &p.geometryShader})
+            for (const ShaderChoice* c : {&p.vertexShader, &p.pixelShader, &p.geometryShader, &p.hullShader, &p.domainShader, &p.computeShader})
                 if (auto problem = checkChoice(*c, e, where, p.valid)) return problem;
             for (const auto& st : p.states) {
                 if (!within(st.index, 0, 7)) return where + " sets a state of render target " + std::to_string(st.index);

@@ -112,7 +112,8 @@ bool isStateObjectType(const std::string& s) {
     return iequals(s, "BlendState") || iequals(s, "DepthStencilState") || iequals(s, "RasterizerState");
 }
 bool isShaderObjectType(const std::string& s) {
-    return iequals(s, "VertexShader") || iequals(s, "PixelShader") || iequals(s, "GeometryShader");
+    return iequals(s, "VertexShader") || iequals(s, "PixelShader") || iequals(s, "GeometryShader") || iequals(s, "HullShader") ||
+           iequals(s, "DomainShader") || iequals(s, "ComputeShader");
 }
 bool isTypeModifier(const std::string& s) {
     static const std::set<std::string> k = {"static", "const", "uniform", "extern", "shared", "volatile", "precise",
@@ -262,7 +263,9 @@ private:
         }
     }
     static bool isShaderStateName(const std::string& name) {
-        static const char* const k[] = {"VertexShader", "PixelShader", "GeometryShader", "SetVertexShader", "SetPixelShader", "SetGeometryShader"};
+        static const char* const k[] = {"VertexShader", "PixelShader", "GeometryShader", "HullShader", "DomainShader", "ComputeShader",
+                                        "SetVertexShader", "SetPixelShader", "SetGeometryShader", "SetHullShader", "SetDomainShader",
+                                        "SetComputeShader"};
         for (const char* n : k)
             if (iequals(name, n)) return true;
         return false;
@@ -778,10 +781,22 @@ private:
             if (cur().is("(")) pos_ = skipGroup(pos_, "semantic");
             else f.returnSemantic = sem;
         }
-        if (accept(";")) return;  // prototype
+        if (accept(";")) {  // prototype: its attributes are the function's (below)
+            if (!f.attributes.empty()) prototypeAttributes_.emplace(name, PrototypeAttributes{f.attributes, declarationStart, start});
+            return;
+        }
         if (!cur().is("{")) {
             if (isEnd()) fail(diag::kUnterminated, "function '" + name + "' has no body before the end of the file", nameToken);
             fail(diag::kSyntax, "expected '{' to open the body of function '" + name + "', found '" + cur().text + "'", pos_);
+        }
+        // fxc (SM 5) takes a function's attributes from its first declaration and drops the later
+        // ones ([numthreads(2, 1, 1)] void main(uint2 id); ... void main(...) { }); glslang wants
+        // them on the definition.
+        if (auto proto = prototypeAttributes_.find(name); proto != prototypeAttributes_.end() && start < syntax_.tokens.size()) {
+            blank(proto->second.begin, proto->second.end);
+            if (!f.attributes.empty()) blank(declarationStart, start);
+            syntax_.edits.push_back({tok(start).offset, tok(start).offset, proto->second.text + " "});
+            f.attributes = proto->second.text;
         }
         size_t after = skipGroup(pos_, ("body of function '" + name + "'").c_str());
         f.body = {pos_ + 1, after - 1};
@@ -833,6 +848,7 @@ private:
         std::vector<int> dims;
         std::string semantic;
         int registerIndex = -1;
+        char registerClass = 0;  // its letter, lower case
         int packOffset = -1;  // packoffset(cN.y) in floats (checked for overlaps; glslang places it)
         std::vector<Annotation> annotations;
         size_t annotationBegin = 0, annotationEnd = 0;
@@ -868,6 +884,7 @@ private:
                 if (iequals(word, "register") && after >= pos_ + 3) {
                     std::string reg = tok(after - 2).text;  // s0, t3, c4 ... (last argument)
                     if (reg.size() > 1) tail.registerIndex = std::atoi(reg.c_str() + 1);
+                    if (reg.size() > 1) tail.registerClass = char(std::tolower(static_cast<unsigned char>(reg[0])));
                     // DX9 constant registers (register(c8), register(vs, c8)) place a constant in ONE
                     // stage's register file; the VS and PS files overlap, one GL uniform buffer cannot.
                     // Only SetVertexShaderConstantF-style code cares, which XNA's Effect never is.
@@ -1039,6 +1056,8 @@ private:
             g.arrayDims = tail.dims;
             g.semantic = tail.semantic;
             g.packOffset = tail.packOffset;
+            g.registerClass = tail.registerClass;
+            g.registerIndex = tail.registerIndex;
             g.annotations = tail.annotations;
             if (tail.annotationEnd > tail.annotationBegin) blank(tail.annotationBegin, tail.annotationEnd);
             ignoreStateBlock(name);
@@ -1060,6 +1079,11 @@ private:
 
     std::string pendingAttributes_;
     size_t pendingAttributesStart_ = 0;
+    struct PrototypeAttributes {
+        std::string text;
+        size_t begin = 0, end = 0;  // its tokens
+    };
+    std::map<std::string, PrototypeAttributes> prototypeAttributes_;  // by function name, the first prototype with attributes
 };
 
 }  // namespace

@@ -105,6 +105,8 @@ struct FxGlobal {
     TokenSpan initializer;
     std::string cbuffer;                 // enclosing cbuffer, empty for $Global
     int packOffset = -1;                 // packoffset(cN.y): 4 * N + component, in floats; -1 none
+    char registerClass = 0;              // register(u3) -> 'u', 3 (UAVs and buffer SRVs are bound by it); 0 none
+    int registerIndex = -1;
     size_t token = 0;
     bool isStringParameter = false;      // `string Name = "...";` (removed from HLSL)
 };

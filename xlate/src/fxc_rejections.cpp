@@ -345,7 +345,7 @@ private:
     void compiledShaderVariable(const FxShaderExpr& e) {
         if (e.kind != FxShaderExpr::Kind::Compile) return;
         if (!parseShaderProfile(e.profile)) {
-            report("'" + e.profile + "' is not a shader profile fxc compiles (vs_1_1..vs_5_0, ps_2_0..ps_5_0, gs_4_0..)", e.token);
+            report("'" + e.profile + "' is not a shader profile fxc compiles (vs_1_1..vs_5_0, ps_2_0..ps_5_0, gs_4_0.., cs_4_0.., hs_5_0, ds_5_0)", e.token);
             return;
         }
         std::string argument;

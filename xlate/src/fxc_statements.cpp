@@ -110,8 +110,10 @@ int lvalueWidth(const EffectSyntax& syntax, const FxFunction& f, size_t begin, s
 void copyAssignedUniforms(const EffectSyntax& syntax, std::vector<TextEdit>& edits) {
     const auto& t = syntax.tokens;
     for (const auto& g : syntax.globals) {
-        bool constant = std::find_if(g.modifiers.begin(), g.modifiers.end(), [](const std::string& m) { return m == "static" || m == "const"; }) !=
-                        g.modifiers.end();
+        // groupshared memory (compute shaders) is written by design: shared by the thread group, never a uniform.
+        bool constant = std::find_if(g.modifiers.begin(), g.modifiers.end(), [](const std::string& m) {
+                            return m == "static" || m == "const" || m == "groupshared";
+                        }) != g.modifiers.end();
         if (constant || g.isStringParameter) continue;
         // Numbers only: a RWTexture or RWStructuredBuffer is written through, not copied.
         const std::string& resolved = syntax.resolveType(g.type);

@@ -18,6 +18,9 @@ EShLanguage languageOf(ShaderStage s) {
     case ShaderStage::Vertex: return EShLangVertex;
     case ShaderStage::Pixel: return EShLangFragment;
     case ShaderStage::Geometry: return EShLangGeometry;
+    case ShaderStage::Hull: return EShLangTessControl;
+    case ShaderStage::Domain: return EShLangTessEvaluation;
+    case ShaderStage::Compute: return EShLangCompute;
     }
     return EShLangVertex;
 }

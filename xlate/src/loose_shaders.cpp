@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <map>
+#include <set>
 
 #include "input_limits.h"
 #include "shader_profile.h"
@@ -15,7 +16,7 @@ namespace fxport::xlate {
 
 namespace {
 
-constexpr const char* kTechnique = "fxport_loose_shaders";
+constexpr const char* kTechnique = kLooseTechnique;
 
 [[noreturn]] void fail(const char* id, const std::string& file, const std::string& message) {
     Diagnostic d;
@@ -48,8 +49,9 @@ CompiledEffect compileOneFile(const std::string& path, const std::vector<const S
     for (const ShaderEntry* e : entries) {
         auto profile = parseShaderProfile(e->profile);
         if (!profile)
-            fail(diag::kBadProfile, path, "profile '" + e->profile + "' (--profile, fxc /T) is not a shader profile fxport knows (vs_1_1..vs_5_0, ps_2_0..ps_5_0, gs_4_0..gs_5_0)");
-        const char* state = profile->stage == ShaderStage::Vertex ? "VertexShader" : profile->stage == ShaderStage::Pixel ? "PixelShader" : "GeometryShader";
+            fail(diag::kBadProfile, path, "profile '" + e->profile + "' (--profile, fxc /T) is not a shader profile fxport knows (vs_1_1..vs_5_0, ps_2_0..ps_5_0, gs_4_0..gs_5_0, cs_4_0..cs_5_0, hs_5_0, ds_5_0)");
+        static const char* const kStates[] = {"VertexShader", "PixelShader", "GeometryShader", "HullShader", "DomainShader", "ComputeShader"};
+        const char* state = kStates[static_cast<int>(profile->stage)];
         pass += std::string(" ") + state + " = compile " + e->profile + " " + e->entryPoint + "();";
     }
     // Raw bytes first (a BOM or UTF-16 stays what the compiler decodes); the technique is ASCII,
@@ -170,6 +172,16 @@ CompiledEffect compileAndMerge(const std::vector<ShaderEntry>& entries, const Co
     // Apart, files must agree on custom varying locations: they share them, which the cache (keyed
     // by one file) cannot know.
     if (files.size() > 1) options.useCache = false;
+    std::set<std::string> hullFiles;
+    for (const auto& e : entries) {
+        auto profile = parseShaderProfile(e.profile);
+        if (profile && (profile->stage == ShaderStage::Geometry || profile->stage == ShaderStage::Domain))
+            options.besideGeometryOrDomainShader = true;
+        if (profile && profile->stage == ShaderStage::Hull) hullFiles.insert(e.path);
+    }
+    // The hull shader's file first: its attributes go into the domain shader's GLSL (GL declares
+    // partitioning and topology there), which a later file then compiles with.
+    std::stable_partition(files.begin(), files.end(), [&](const std::string& f) { return hullFiles.count(f) > 0; });
     VaryingLocations varyings;
 
     CompiledEffect merged;
@@ -181,15 +193,14 @@ CompiledEffect compileAndMerge(const std::vector<ShaderEntry>& entries, const Co
     for (const auto& file : files) {
         CompiledEffect part = compileOneFile(file, byFile[file], options, &varyings, cacheOnly);
         const Pass& partPass = part.techniques.at(0).passes.at(0);
+        for (int s : partPass.hullShader.shaders)
+            if (s >= 0) options.hullOfDomainShader = part.shaders[size_t(s)].tessellation;
         pass.valid = pass.valid && partPass.valid;
         if (&file == &files.front()) {
             merged = part;
             merged.techniques.clear();
-            for (const auto* choice : {&partPass.vertexShader, &partPass.pixelShader, &partPass.geometryShader})
-                if (!choice->shaders.empty()) {
-                    auto& target = choice == &partPass.vertexShader ? pass.vertexShader : choice == &partPass.pixelShader ? pass.pixelShader : pass.geometryShader;
-                    target = *choice;
-                }
+            pass = partPass;
+            pass.name = "P0";
             continue;
         }
         std::vector<int> shaderMap = mergeInto(merged, part, file);
@@ -201,11 +212,14 @@ CompiledEffect compileAndMerge(const std::vector<ShaderEntry>& entries, const Co
         take(partPass.vertexShader, pass.vertexShader);
         take(partPass.pixelShader, pass.pixelShader);
         take(partPass.geometryShader, pass.geometryShader);
+        take(partPass.hullShader, pass.hullShader);
+        take(partPass.domainShader, pass.domainShader);
+        take(partPass.computeShader, pass.computeShader);
     }
     // D3D10/11 give each stage its own texture slots; fxport's units are shared. Two stages that
     // sample different textures on one unit would see one of them: say so instead.
     std::map<int, std::string> unitTexture;
-    for (const auto* choice : {&pass.vertexShader, &pass.geometryShader, &pass.pixelShader})
+    for (const auto* choice : {&pass.vertexShader, &pass.geometryShader, &pass.pixelShader, &pass.hullShader, &pass.domainShader, &pass.computeShader})
         for (int s : choice->shaders) {
             if (s < 0) continue;
             for (const auto& b : merged.shaders[size_t(s)].samplers) {

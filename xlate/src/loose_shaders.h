@@ -19,6 +19,10 @@ class VaryingLocations;
 // appends), which fxc makes with a shader profile, not an effect profile.
 bool isLooseShaderCompile(const CompileOptions& options);
 
+// The technique a loose file is compiled with (one pass naming its entry points). Such a pass may
+// hold one stage alone (a domain shader compiled by itself, as fxc /T ds_5_0 does).
+inline constexpr const char* kLooseTechnique = "fxport_loose_shaders";
+
 // effect_compiler.cpp: compiles text, with custom varying locations shared across calls when
 // `sharedVaryings` is given.
 CompiledEffect compileEffectText(const std::string& source, const std::string& displayPath, const std::string& absolutePath,

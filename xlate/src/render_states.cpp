@@ -598,6 +598,7 @@ StateResult translatePassAssignment(const FxAssignment& a, StateContext& ctx, st
     const Token& nameTok = ctx.syntax.tokens[a.nameToken];
     SourceLocation where = ctx.map.locate(nameTok.line, nameTok.column, nameTok.text);
     static const std::set<std::string> shaderStates = {"vertexshader", "pixelshader", "geometryshader",
+                                                       "hullshader", "domainshader", "computeshader",
                                                        "setvertexshader", "setpixelshader", "setgeometryshader",
                                                        "sethullshader", "setdomainshader", "setcomputeshader"};
     if (shaderStates.count(lower)) return StateResult::NotAState;

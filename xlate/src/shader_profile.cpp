@@ -14,6 +14,9 @@ std::optional<ShaderProfile> parseShaderProfile(const std::string& name) {
     if (n.rfind("vs_", 0) == 0) p.stage = ShaderStage::Vertex;
     else if (n.rfind("ps_", 0) == 0) p.stage = ShaderStage::Pixel;
     else if (n.rfind("gs_", 0) == 0) p.stage = ShaderStage::Geometry;
+    else if (n.rfind("hs_", 0) == 0) p.stage = ShaderStage::Hull;
+    else if (n.rfind("ds_", 0) == 0) p.stage = ShaderStage::Domain;
+    else if (n.rfind("cs_", 0) == 0) p.stage = ShaderStage::Compute;
     else return std::nullopt;
     std::string rest = n.substr(3);
     size_t level = rest.find("_level_9_");
@@ -26,6 +29,10 @@ std::optional<ShaderProfile> parseShaderProfile(const std::string& name) {
     if (it == versions.end()) return std::nullopt;
     std::tie(p.major, p.minor) = it->second;
     if (p.stage == ShaderStage::Geometry && p.major < 4) return std::nullopt;
+    // fxc: cs_4_0/cs_4_1 (DirectCompute on D3D10 hardware), hull and domain shaders from 5.0 only.
+    if (p.stage == ShaderStage::Compute && p.major < 4) return std::nullopt;
+    if ((p.stage == ShaderStage::Hull || p.stage == ShaderStage::Domain) && p.major < 5) return std::nullopt;
+    if (p.stage >= ShaderStage::Hull && level != std::string::npos) return std::nullopt;
     if (p.stage == ShaderStage::Vertex && p.major == 1 && p.minor != 1) return std::nullopt;
     return p;
 }

@@ -113,10 +113,114 @@ TextureKind kindOfImage(const spirv_cross::SPIRType& t) {
     }
 }
 
+const char* imageFormatName(spv::ImageFormat f) {
+    switch (f) {
+    case spv::ImageFormatRgba32f: return "rgba32f";
+    case spv::ImageFormatRgba16f: return "rgba16f";
+    case spv::ImageFormatR32f: return "r32f";
+    case spv::ImageFormatRgba8: return "rgba8";
+    case spv::ImageFormatRg32f: return "rg32f";
+    case spv::ImageFormatRg16f: return "rg16f";
+    case spv::ImageFormatR16f: return "r16f";
+    case spv::ImageFormatRgba32i: return "rgba32i";
+    case spv::ImageFormatRg32i: return "rg32i";
+    case spv::ImageFormatR32i: return "r32i";
+    case spv::ImageFormatRgba32ui: return "rgba32ui";
+    case spv::ImageFormatRg32ui: return "rg32ui";
+    case spv::ImageFormatR32ui: return "r32ui";
+    default: return "";
+    }
+}
+
+// UAVs and buffer SRVs: D3D11 registers (register(uN)/(tN), else the next free one of the class
+// in declaration order, as fxc assigns them) -> GL bindings. SSBOs and image units are their own
+// binding spaces in GL; UAV buffers and UAV images both sit at N (one uN names one of them), SRV
+// buffers at kSrvBufferBindingBase + N so they do not meet the UAVs.
+void bindStorage(GlslCompiler& compiler, const spirv_cross::ShaderResources& res, const EffectSyntax& syntax, int firstFreeUav,
+                 std::vector<StorageBinding>& out) {
+    // glslang gives every resource a Binding (0 where no register was written): the register, if
+    // any, comes from the declaration.
+    auto declaredRegister = [&](const std::string& name, char registerClass) {
+        for (const auto& g : syntax.globals)
+            if (g.name == name && g.registerClass == registerClass && g.registerIndex >= 0) return g.registerIndex;
+        return -1;
+    };
+    struct Found {
+        spirv_cross::ID id;
+        StorageBinding b;
+        bool explicitSlot = false;
+    };
+    std::vector<Found> found;
+    for (const auto& r : res.storage_buffers) {
+        Found f{r.id, {}, false};
+        f.b.kind = StorageKind::Buffer;
+        f.b.name = compiler.get_name(r.id);
+        if (f.b.name.empty()) f.b.name = compiler.get_name(r.base_type_id);
+        const spirv_cross::SPIRType& type = compiler.get_type(r.base_type_id);
+        bool readOnly = compiler.get_buffer_block_flags(r.id).get(spv::DecorationNonWritable);
+        f.b.registerClass = readOnly ? 't' : 'u';
+        f.b.writes = !readOnly;
+        if (!type.member_types.empty() && !compiler.get_type(type.member_types[0]).array.empty())
+            f.b.stride = static_cast<int>(compiler.type_struct_member_array_stride(type, 0));
+        f.b.slot = declaredRegister(f.b.name, f.b.registerClass);
+        f.explicitSlot = f.b.slot >= 0;
+        found.push_back(f);
+    }
+    for (const auto& r : res.storage_images) {
+        Found f{r.id, {}, false};
+        f.b.kind = StorageKind::Image;
+        f.b.name = compiler.get_name(r.id);
+        const spirv_cross::SPIRType& type = compiler.get_type(r.type_id);
+        f.b.dimension = kindOfImage(type);
+        f.b.format = imageFormatName(type.image.format);
+        f.b.writes = !compiler.has_decoration(r.id, spv::DecorationNonWritable);
+        f.b.slot = declaredRegister(f.b.name, 'u');
+        f.explicitSlot = f.b.slot >= 0;
+        found.push_back(f);
+    }
+    // fxc hands out the free registers in declaration order.
+    auto declaredAt = [&](const std::string& name) {
+        for (size_t i = 0; i < syntax.globals.size(); ++i)
+            if (syntax.globals[i].name == name) return i;
+        return syntax.globals.size();
+    };
+    std::stable_sort(found.begin(), found.end(), [&](const Found& a, const Found& b) { return declaredAt(a.b.name) < declaredAt(b.b.name); });
+    std::set<std::pair<char, int>> taken;
+    for (const Found& f : found)
+        if (f.explicitSlot) taken.insert({f.b.registerClass, f.b.slot});
+    for (Found& f : found) {
+        if (!f.explicitSlot) {
+            int n = f.b.registerClass == 'u' ? firstFreeUav : 0;
+            while (taken.count({f.b.registerClass, n})) ++n;
+            f.b.slot = n;
+            taken.insert({f.b.registerClass, n});
+        }
+        f.b.binding = f.b.registerClass == 't' ? kSrvBufferBindingBase + f.b.slot : f.b.slot;
+        compiler.unset_decoration(f.id, spv::DecorationDescriptorSet);
+        compiler.set_decoration(f.id, spv::DecorationBinding, static_cast<uint32_t>(f.b.binding));
+        out.push_back(f.b);
+    }
+}
+
+// The hull shader's partitioning and output topology as the domain shader's execution modes (GL's
+// tessellation evaluation layout). pow2 has no GL spacing: equal spacing, the same for factors
+// that are powers of two.
+void declareHullModes(GlslCompiler& compiler, const Tessellation& hull) {
+    for (spv::ExecutionMode m : {spv::ExecutionModeSpacingEqual, spv::ExecutionModeSpacingFractionalEven, spv::ExecutionModeSpacingFractionalOdd,
+                                 spv::ExecutionModeVertexOrderCw, spv::ExecutionModeVertexOrderCcw, spv::ExecutionModePointMode})
+        compiler.unset_execution_mode(m);
+    if (hull.partitioning == "fractional_even") compiler.set_execution_mode(spv::ExecutionModeSpacingFractionalEven);
+    else if (hull.partitioning == "fractional_odd") compiler.set_execution_mode(spv::ExecutionModeSpacingFractionalOdd);
+    else if (!hull.partitioning.empty()) compiler.set_execution_mode(spv::ExecutionModeSpacingEqual);
+    if (hull.outputTopology == "triangle_cw") compiler.set_execution_mode(spv::ExecutionModeVertexOrderCw);
+    else if (hull.outputTopology == "triangle_ccw") compiler.set_execution_mode(spv::ExecutionModeVertexOrderCcw);
+    else if (hull.outputTopology == "point") compiler.set_execution_mode(spv::ExecutionModePointMode);
+}
+
 }  // namespace
 
 GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, const RewrittenEffect& effect,
-                       VaryingLocations& varyings) {
+                       VaryingLocations& varyings, const Tessellation* hull) {
     GlslShader out;
     try {
         GlslCompiler compiler(std::move(spirv));
@@ -178,6 +282,18 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
             out.blocks.push_back(std::move(block));
         }
 
+        // A pixel shader's UAVs share D3D11's output slots with its render targets: fxc gives
+        // unregistered ones the registers after the last SV_Target.
+        int firstFreeUav = 0;
+        if (stage == ShaderStage::Pixel)
+            for (const auto& r : res.stage_outputs)
+                firstFreeUav = std::max(firstFreeUav, static_cast<int>(compiler.get_decoration(r.id, spv::DecorationLocation)) + 1);
+        bindStorage(compiler, res, *effect.syntax, firstFreeUav, out.storage);
+        if (stage == ShaderStage::Domain && hull) declareHullModes(compiler, *hull);
+        if (stage == ShaderStage::Compute)
+            for (uint32_t d = 0; d < 3; ++d)
+                out.threadGroupSize[d] = static_cast<int>(compiler.get_execution_mode_argument(spv::ExecutionModeLocalSize, d));
+
         // ---- samplers: DX9 combined samplers keep their names; DX10 pairs get one per pair
         std::set<int> usedUnits;
         for (const auto& s : effect.samplers)
@@ -230,7 +346,9 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
 
         // ---- interface locations
         auto semanticOf = [&](spirv_cross::ID id) { return toUpper(compiler.get_decoration_string(id, spv::DecorationUserSemantic)); };
-        if (stage == ShaderStage::Vertex) {
+        if (stage == ShaderStage::Compute) {
+            // no stage inputs or outputs: thread ids are built-ins
+        } else if (stage == ShaderStage::Vertex) {
             std::vector<const spirv_cross::Resource*> inputs;
             for (const auto& r : res.stage_inputs) inputs.push_back(&r);
             std::sort(inputs.begin(), inputs.end(), [&](auto* a, auto* b) {

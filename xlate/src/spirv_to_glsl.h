@@ -10,6 +10,7 @@
 //   - vertex inputs get locations in order, and the reflection names their semantics.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -55,9 +56,14 @@ struct GlslShader {
     std::vector<UniformRange> rangesRead;
     int outputTargets = 0;
     bool writesDepth = false;
+    std::vector<StorageBinding> storage;   // SSBOs and images (UAVs, buffer SRVs)
+    std::array<int, 3> threadGroupSize{};  // compute: the SPIR-V LocalSize
 };
 
+// `hull`: for a domain shader, the attributes of the pass's hull shader. D3D declares partitioning
+// and output topology on the hull shader, GL on the tessellation evaluation shader (its
+// spacing / vertex order / point_mode), so the domain shader's GLSL takes them from there.
 GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, const RewrittenEffect& effect,
-                       VaryingLocations& varyings);
+                       VaryingLocations& varyings, const Tessellation* hull = nullptr);
 
 }  // namespace fxport::xlate

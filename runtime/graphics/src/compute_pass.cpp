@@ -351,6 +351,8 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
     const ShaderProgram* vertex = d.shaders[0];
     const ShaderProgram* pixel = d.shaders[1];
     if (d.shaders[2]) return fallBack("geometry shader");
+    if (d.shaders[kHullStage] || d.shaders[kDomainStage]) return fallBack("tessellation");
+    if (d.storageDirty || !vertex->shader->storage.empty() || !pixel->shader->storage.empty()) return fallBack("UAVs");
     // Without a depth buffer GL passes every depth and stencil test and writes nothing (the first
     // target's format says whether it has one, however its storage is made).
     const DepthFormat depthFormat = d.targets.empty() ? dev.PresentationParameters().DepthStencilFormat

@@ -34,7 +34,10 @@ class FragmentRuns;  // fragment_tally.h
 // stage. A pixel shader's $Global (its own effect's) never collides with the vertex shader's
 // (SpriteBatch's, say).
 inline constexpr int kUniformBindingsPerStage = 8;
-inline constexpr int kStageCount = 3;  // vertex, pixel, geometry
+inline constexpr int kStageCount = 5;  // vertex, pixel, geometry, hull, domain (the draw pipeline)
+inline constexpr int kHullStage = 3, kDomainStage = 4;
+inline constexpr int kComputeStage = 5;  // dispatched alone; its own uniform-binding range
+inline constexpr int kUniformStages = kStageCount + 1;
 inline int uniformBindingFor(int stage, int hlslBinding) { return stage * kUniformBindingsPerStage + hlslBinding; }
 // Moves each uniform block of a linked program from its HLSL binding b to `stage`'s range; once,
 // when the program is made (graphics_device.cpp; compute passes' programs use it too).
@@ -44,7 +47,7 @@ inline constexpr int kInternalBlockBinding = 1;
 // A compiled shader made into a separable GL program, as the device needs it at draw time.
 struct ShaderProgram {
     GLuint program = 0;
-    int stage = 0;                              // 0 vertex, 1 pixel, 2 geometry
+    int stage = 0;                              // 0 vertex, 1 pixel, 2 geometry, 3 hull, 4 domain, 5 compute
     const xlate::CompiledShader* shader = nullptr;  // owned by the effect
     std::string label;                          // "GBuffer.fx: VertexShaderFunction (vs_2_0)"
     bool mayDiscard = false;                    // the GLSL has a `discard` (clip, texkill): read once
@@ -113,12 +116,39 @@ struct GraphicsDevice::Impl {
     void reportUnencodedSrgbWrite();
     // Picks the pixel program: the shader's own, or its alpha-test variant (made on first use).
     GLuint pixelProgramFor(const ShaderProgram& program);
-    std::map<std::tuple<GLuint, GLuint, GLuint>, GLuint> pipelines;
+    std::map<std::tuple<GLuint, GLuint, GLuint, GLuint, GLuint>, GLuint> pipelines;  // vs, ps, gs, hs, ds
     GLuint boundPipeline = 0;
 
     // --- uniform buffers: wanted (set by Apply) and bound
-    std::array<GLuint, kStageCount * kUniformBindingsPerStage> wantedUniformBuffers{};
-    std::array<GLuint, kStageCount * kUniformBindingsPerStage> boundUniformBuffers{};
+    std::array<GLuint, kUniformStages * kUniformBindingsPerStage> wantedUniformBuffers{};
+    std::array<GLuint, kUniformStages * kUniformBindingsPerStage> boundUniformBuffers{};
+
+    // --- D3D11 stages (storage_bindings.cpp, compute_dispatch.cpp, tessellated_draw.cpp)
+    const ShaderProgram* computeShader = nullptr;  // the last applied pass's SetComputeShader
+    // What SetUnorderedAccess / SetShaderResource put in a slot: a buffer or a texture's level 0.
+    struct StorageSlot {
+        const GraphicsResource* resource = nullptr;
+        GLuint name = 0;
+        bool image = false;
+        GLenum format = 0;  // images: the texture's internal format
+    };
+    std::array<StorageSlot, kMaxUnorderedAccessSlots> unorderedAccess{};
+    std::array<StorageSlot, kMaxShaderResourceBuffers> resourceBuffers{};
+    // Binds the storage `programs` declare (their StorageBinding lists) from the slots above; returns
+    // whether one of them may write (so a barrier must follow). `what` names the call for errors.
+    bool applyStorage(const ShaderProgram* const* programs, std::size_t count, const char* what);
+    // Work that may write through images or SSBOs sets storageDirty; storageBarrier(), called
+    // before every later draw, dispatch, buffer or texture transfer, places one barrier of all bits
+    // so that access sees the writes (D3D11 orders UAV writes before any later use; GL does not).
+    bool storageDirty = false;
+    void storageBarrier();
+    void forgetStorage(const GraphicsResource* resource);  // a disposed buffer or texture leaves its slots
+    // Draws with the pipeline flush() set up, checking the tessellation stages agree with `patches`.
+    void checkTessellation(bool patches, const char* what) const;
+    bool patchDraw = false;  // set by DrawPatches around its flush
+    std::map<GLuint, GLuint> computePipelines;  // compute program -> its pipeline
+    void dispatch(GLuint x, GLuint y, GLuint z);  // DispatchCompute after its checks
+    void dropComputePipelinesUsing(GLuint program);
     GLuint internalBuffer = 0;           // fxport_Internal { float4 fxport_PixelOffset; }
     std::array<float, 4> pixelOffset{};  // what internalBuffer holds
 
@@ -169,6 +199,7 @@ struct GraphicsDevice::Impl {
     void applyViewport(const fxport::Viewport& wanted);
     void applyScissor(const Rectangle& wanted);
     void applyTextures();
+    void applyTexturesOf(const ShaderProgram* const* programs, std::size_t count);  // for compute dispatches too
     void applyShaders();
 
     // Everything a draw needs, compared against the shadow. `what` names the draw call for errors.

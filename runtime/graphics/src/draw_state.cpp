@@ -76,6 +76,8 @@ void GraphicsDevice::Impl::flush(const char* what) {
     if (!passApplied || !shaders[0] || !shaders[1])
         throw InvalidOperation(std::string(what) +
                                ": no effect pass is applied (call effect.CurrentTechnique->Passes[i].Apply() first)");
+    checkTessellation(patchDraw, what);
+    storageBarrier();  // what an earlier dispatch or draw wrote through images or SSBOs, before this draw uses it
     if (boundFramebuffer == 0) bindTargets();
     makeDepthStorageFor(device.DepthStencilState);  // a buffer nothing needed until now (depth_storage.cpp)
     // A depth test that cannot fail against the known clear and writes nothing (DepthRead against
@@ -105,6 +107,7 @@ void GraphicsDevice::Impl::flush(const char* what) {
     applyScissor(device.ScissorRectangle);
     applyShaders();
     applyTextures();
+    if (applyStorage(shaders.data(), shaders.size(), what)) storageDirty = true;  // the draw writes: barrier before what follows
     if (forceAll || emulation.srgbWrite != appliedSrgbWrite) {
         // Converts only on sRGB-encoded attachments (SurfaceFormat::ColorSRgb); others are
         // written unconverted (docs/DESIGN.md, "Pass states GL core lacks").
@@ -158,7 +161,8 @@ GLuint GraphicsDevice::Impl::pixelProgramFor(const ShaderProgram& program) {
 
 void GraphicsDevice::Impl::applyShaders() {
     GLuint vs = shaders[0]->program, ps = pixelProgramFor(*shaders[1]), gs = shaders[2] ? shaders[2]->program : 0;
-    auto key = std::make_tuple(vs, ps, gs);
+    GLuint hs = shaders[kHullStage] ? shaders[kHullStage]->program : 0, ds = shaders[kDomainStage] ? shaders[kDomainStage]->program : 0;
+    auto key = std::make_tuple(vs, ps, gs, hs, ds);
     auto it = pipelines.find(key);
     GLuint pipeline = 0;
     if (it != pipelines.end()) {
@@ -169,6 +173,8 @@ void GraphicsDevice::Impl::applyShaders() {
         glUseProgramStages(pipeline, GL_VERTEX_SHADER_BIT, vs);
         glUseProgramStages(pipeline, GL_FRAGMENT_SHADER_BIT, ps);
         if (gs) glUseProgramStages(pipeline, GL_GEOMETRY_SHADER_BIT, gs);
+        if (hs) glUseProgramStages(pipeline, GL_TESS_CONTROL_SHADER_BIT, hs);
+        if (ds) glUseProgramStages(pipeline, GL_TESS_EVALUATION_SHADER_BIT, ds);
         pipelines.emplace(key, pipeline);
     }
     if (pipeline != boundPipeline) {
@@ -182,8 +188,11 @@ void GraphicsDevice::Impl::applyShaders() {
     }
 }
 
-void GraphicsDevice::Impl::applyTextures() {
-    for (const ShaderProgram* program : shaders) {
+void GraphicsDevice::Impl::applyTextures() { applyTexturesOf(shaders.data(), shaders.size()); }
+
+void GraphicsDevice::Impl::applyTexturesOf(const ShaderProgram* const* programs, std::size_t count) {
+    for (std::size_t p = 0; p < count; ++p) {
+        const ShaderProgram* program = programs[p];
         if (!program) continue;
         for (const xlate::SamplerBinding& sampler : program->shader->samplers) {
             int unit = sampler.unit;

@@ -33,6 +33,9 @@ GLenum glStage(xlate::ShaderStage stage) {
     case xlate::ShaderStage::Vertex: return GL_VERTEX_SHADER;
     case xlate::ShaderStage::Pixel: return GL_FRAGMENT_SHADER;
     case xlate::ShaderStage::Geometry: return GL_GEOMETRY_SHADER;
+    case xlate::ShaderStage::Hull: return GL_TESS_CONTROL_SHADER;
+    case xlate::ShaderStage::Domain: return GL_TESS_EVALUATION_SHADER;
+    case xlate::ShaderStage::Compute: return GL_COMPUTE_SHADER;
     }
     return GL_VERTEX_SHADER;
 }
@@ -42,6 +45,9 @@ int stageIndex(xlate::ShaderStage stage) {
     case xlate::ShaderStage::Vertex: return 0;
     case xlate::ShaderStage::Pixel: return 1;
     case xlate::ShaderStage::Geometry: return 2;
+    case xlate::ShaderStage::Hull: return kHullStage;
+    case xlate::ShaderStage::Domain: return kDomainStage;
+    case xlate::ShaderStage::Compute: return kComputeStage;
     }
     return 0;
 }
@@ -410,6 +416,7 @@ void Effect::Impl::releasePrograms(GraphicsDevice::Impl& device) {
             // itself can outlive them when another effect shares it).
             for (const ShaderProgram*& bound : device.shaders)
                 if (bound == &p) bound = nullptr;
+            if (device.computeShader == &p) device.computeShader = nullptr;
             device.deleteProgram(p.program);
             if (p.alphaTestProgram) device.deleteProgram(p.alphaTestProgram);
             if (p.computeAnalysis && device.computePasses) device.computePasses->forget(*p.computeAnalysis);

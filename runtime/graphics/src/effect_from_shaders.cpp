@@ -7,14 +7,19 @@ namespace fxport {
 
 std::unique_ptr<Effect> Effect::FromShaderFiles(fxport::GraphicsDevice& device, const ShaderFile& vertexShader,
                                                 const ShaderFile& pixelShader, const EffectOptions& options) {
+    return FromShaderFiles(device, std::vector<ShaderFile>{vertexShader, pixelShader}, options);
+}
+
+std::unique_ptr<Effect> Effect::FromShaderFiles(fxport::GraphicsDevice& device, const std::vector<ShaderFile>& shaders,
+                                                const EffectOptions& options) {
     xlate::CompileOptions o;
     o.includeDirs = options.includeDirs;
     o.includeRoot = options.includeRoot;
     o.defines = options.defines;
     o.useCache = options.useCache;
     o.cacheDir = options.cacheDir;
-    std::vector<xlate::ShaderEntry> entries = {{vertexShader.path, vertexShader.entryPoint, vertexShader.profile},
-                                               {pixelShader.path, pixelShader.entryPoint, pixelShader.profile}};
+    std::vector<xlate::ShaderEntry> entries;
+    for (const ShaderFile& s : shaders) entries.push_back({s.path, s.entryPoint, s.profile});
     return std::make_unique<Effect>(device, xlate::compileShaderFiles(entries, o));
 }
 

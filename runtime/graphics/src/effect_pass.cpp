@@ -80,13 +80,15 @@ void EffectPass::applyThis() {
         throw InvalidOperation(where + " cannot run: the compiler rejected it" + why);
     }
 
-    const xlate::ShaderChoice* choices[kStageCount] = {&pass.vertexShader, &pass.pixelShader, &pass.geometryShader};
-    for (int stage = 0; stage < kStageCount; ++stage) {
+    // The draw stages, then compute (dispatched alone: DispatchCompute).
+    const xlate::ShaderChoice* choices[kUniformStages] = {&pass.vertexShader, &pass.pixelShader, &pass.geometryShader,
+                                                          &pass.hullShader, &pass.domainShader, &pass.computeShader};
+    for (int stage = 0; stage < kUniformStages; ++stage) {
         const xlate::ShaderChoice& choice = *choices[stage];
         if (choice.shaders.empty()) {
-            // D3D: a stage the pass does not assign keeps its shader -- except the geometry stage,
-            // which a pass with a vertex shader and none of its own runs without.
-            if (stage == 2 && !pass.vertexShader.shaders.empty()) d.shaders[2] = nullptr;
+            // D3D: a stage the pass does not assign keeps its shader -- except the geometry, hull
+            // and domain stages, which a pass with a vertex shader and none of its own runs without.
+            if (stage >= 2 && stage < kStageCount && !pass.vertexShader.shaders.empty()) d.shaders[std::size_t(stage)] = nullptr;
             continue;
         }
         int chosen = chooseShader(e, choice, technique.name, pass.name);
@@ -95,7 +97,8 @@ void EffectPass::applyThis() {
                                    std::to_string(stage) + " is NULL (#" + std::to_string(chosen) + "); fxport has no fixed-function pipeline to draw with");
         std::size_t shader = std::size_t(chosen);
         const ShaderProgram& program = code.code->programs[shader];
-        d.shaders[std::size_t(stage)] = &program;
+        if (stage == kComputeStage) d.computeShader = &program;
+        else d.shaders[std::size_t(stage)] = &program;
         // Only the blocks this shader reads, and of those only the bytes it reads; changes to
         // other constants stay dirty until a shader that reads them is applied.
         const std::vector<Effect::Impl::BlockReads>& reads = code.code->reads[shader];
@@ -115,7 +118,7 @@ void EffectPass::applyThis() {
     // A stage the pass leaves alone keeps its shader (D3D9). When that is one of this effect's (an
     // earlier pass's vertex shader under a pixel-shader-only pass), it reads this effect's
     // constants too: send what changed of those.
-    for (int stage = 0; stage < kStageCount; ++stage)
+    for (int stage = 0; stage < kStageCount; ++stage)  // (a compute shader is another pass's own)
         if (choices[stage]->shaders.empty() && d.shaders[std::size_t(stage)])
             if (const auto* reads = e.readsOf(d.shaders[std::size_t(stage)])) e.uploadRead(*reads);
     applyPassStates(code.code->passStates[std::size_t(code.index)][std::size_t(pass_)], e, device);

@@ -157,7 +157,7 @@ GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters)
 
     impl_->internalBuffer = impl_->createBuffer();
     glNamedBufferStorage(impl_->internalBuffer, sizeof(float) * 4, nullptr, GL_DYNAMIC_STORAGE_BIT);
-    for (int stage = 0; stage < kStageCount; ++stage)
+    for (int stage = 0; stage < kUniformStages; ++stage)
         glBindBufferBase(GL_UNIFORM_BUFFER, GLuint(uniformBindingFor(stage, kInternalBlockBinding)), impl_->internalBuffer);
 
     impl_->backBuffer = std::make_unique<RenderTarget2D>(*this, parameters_.BackBufferWidth, parameters_.BackBufferHeight,
@@ -710,7 +710,9 @@ GLuint GraphicsDevice::Impl::createProgram(GLenum stage, const std::string& sour
         throw InvalidOperation(label + ": the GL driver rejected the translated shader:\n" + log);
     }
     // D3D has constant slots per stage: each block moves to this stage's range (device_impl.h).
-    moveUniformBlocksToStage(program, stage == GL_VERTEX_SHADER ? 0 : stage == GL_FRAGMENT_SHADER ? 1 : 2);
+    moveUniformBlocksToStage(program, stage == GL_VERTEX_SHADER ? 0 : stage == GL_FRAGMENT_SHADER ? 1 : stage == GL_GEOMETRY_SHADER ? 2
+                                      : stage == GL_TESS_CONTROL_SHADER ? kHullStage : stage == GL_TESS_EVALUATION_SHADER ? kDomainStage
+                                                                                                                           : kComputeStage);
     ++live.programs;
     programCache.emplace(std::make_pair(stage, source), CachedProgram{program, 1});
     return program;
@@ -737,6 +739,7 @@ void GraphicsDevice::Impl::deleteProgram(GLuint& name) {
         break;
     }
     dropPipelinesUsing(name);
+    dropComputePipelinesUsing(name);
     dropVertexArraysUsing(name);
     for (auto& s : shaders)
         if (s && s->program == name) s = nullptr;
@@ -759,8 +762,8 @@ void GraphicsDevice::Impl::deleteQuery(GLuint& name) {
 
 void GraphicsDevice::Impl::dropPipelinesUsing(GLuint program) {
     for (auto it = pipelines.begin(); it != pipelines.end();) {
-        auto [vs, ps, gs] = it->first;
-        if (vs == program || ps == program || gs == program) {
+        auto [vs, ps, gs, hs, ds] = it->first;
+        if (vs == program || ps == program || gs == program || hs == program || ds == program) {
             if (boundPipeline == it->second) {
                 glBindProgramPipeline(0);
                 boundPipeline = 0;
@@ -805,6 +808,8 @@ void GraphicsDevice::Impl::releaseAll() {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     for (auto& [key, pipeline] : pipelines) glDeleteProgramPipelines(1, &pipeline), --live.pipelines;
     pipelines.clear();
+    for (auto& [key, pipeline] : computePipelines) glDeleteProgramPipelines(1, &pipeline), --live.pipelines;
+    computePipelines.clear();
     for (auto& [key, va] : vertexArrays) glDeleteVertexArrays(1, &va.vao), --live.vertexArrays;
     vertexArrays.clear();
     for (auto& [key, fbo] : framebuffers) glDeleteFramebuffers(1, &fbo), --live.framebuffers;

@@ -92,6 +92,7 @@ void GraphicsDevice::Impl::resolvePendingClearBeforeDraw(const fxport::DepthSten
 }
 
 void GraphicsDevice::Impl::resolvePendingClearBeforeRead(const Texture* texture) {
+    storageBarrier();  // a read-back after a shader wrote the texture as an image (storage_bindings.cpp)
     if (!(pendingClear.options & kColor)) return;
     bool bound = targets.empty() ? texture == backBuffer.get()
                                  : std::any_of(targets.begin(), targets.end(),

@@ -54,6 +54,7 @@ void Texture::releaseGpuObjects() {
     for (int slot = 0; slot < kMaxTextureSlots; ++slot)
         if (device().Textures[slot].get() == this) device().Textures[slot] = nullptr;
     for (Effect* effect : d.effects) effect->impl().forgetTexture(this);
+    d.forgetStorage(this);
     d.dropFramebuffersUsing(name_);
     d.deleteTexture(name_);
 }
@@ -72,6 +73,7 @@ void Texture::writeTexels(int face, int level, int x, int y, int w, int h, const
                             ", the region " + std::to_string(w) + "x" + std::to_string(h) + " of " + surfaceFormatName(format_) +
                             " needs " + needs);
     }
+    device().impl().storageBarrier();  // after a shader's image writes, before this upload
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     if (face < 0)
         glTextureSubImage2D(name_, level, x, y, w, h, f.format, f.type, data);

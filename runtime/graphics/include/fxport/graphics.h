@@ -29,6 +29,7 @@
 #include "fxport/graphics/skinned_effect.h"
 #include "fxport/graphics/sprite_batch.h"
 #include "fxport/graphics/sprite_font.h"
+#include "fxport/graphics/structured_buffer.h"
 #include "fxport/graphics/surface_format.h"
 #include "fxport/graphics/texture.h"
 #include "fxport/graphics/vertex_buffer.h"

@@ -15,9 +15,9 @@
 
 namespace fxport::xlate {
 
-enum class ShaderStage : std::uint8_t { Vertex, Pixel, Geometry };
+enum class ShaderStage : std::uint8_t { Vertex, Pixel, Geometry, Hull, Domain, Compute };
 
-// "vs_3_0" -> {Vertex, 3, 0}; "ps_4_0_level_9_1" -> {Pixel, 4, 0}; "ps_2_a" -> {Pixel, 2, 1}.
+// "vs_3_0" -> {Vertex, 3, 0}; "cs_5_0" -> {Compute, 5, 0}; "hs_5_0" / "ds_5_0" -> Hull / Domain; "ps_4_0_level_9_1" -> {Pixel, 4, 0}; "ps_2_a" -> {Pixel, 2, 1}.
 struct ShaderProfile {
     ShaderStage stage = ShaderStage::Vertex;
     int major = 0;
@@ -134,6 +134,35 @@ struct UniformBlock {
     int size = 0;      // bytes; 0 when no shader of the effect reads the block
 };
 
+// A buffer or image a shader reads or writes outside the sampler path: D3D11 UAVs (RWStructuredBuffer,
+// RWByteAddressBuffer, RWTexture2D, register uN) and structured/raw buffer SRVs (StructuredBuffer,
+// ByteAddressBuffer, register tN). GL bindings: a buffer is an SSBO at `binding` (uN -> N,
+// tN -> kSrvBufferBindingBase + N); an image is an image unit `binding` (uN -> N).
+enum class StorageKind : std::uint8_t { Buffer, Image };
+inline constexpr int kSrvBufferBindingBase = 8;
+struct StorageBinding {
+    StorageKind kind = StorageKind::Buffer;
+    std::string name;          // the HLSL variable
+    char registerClass = 'u';  // 'u' (UAV) or 't' (read-only SRV)
+    int slot = 0;              // the register number (register(u2) -> 2; unassigned: declaration order)
+    int binding = 0;           // GL SSBO binding or image unit
+    int stride = 0;            // buffers: bytes per element (structured: the struct; raw: 4)
+    bool writes = false;       // the shader may write it
+    TextureKind dimension = TextureKind::Texture2D;  // images
+    std::string format;        // images: the GLSL format qualifier ("r32f", "rgba32f", "r32ui" ...); "" = none
+};
+
+// Hull/domain shader attributes ([domain], [partitioning], [outputtopology], [outputcontrolpoints],
+// [patchconstantfunc]) and their GL equivalents, as the runtime and readers need them.
+struct Tessellation {
+    std::string domain;                  // "tri", "quad", "isoline"
+    std::string partitioning;            // "integer", "fractional_even", "fractional_odd", "pow2"
+    std::string outputTopology;          // "triangle_cw", "triangle_ccw", "line", "point"
+    std::string patchConstantFunction;   // hull shaders
+    int inputControlPoints = 0;          // hull: InputPatch<T, N>; domain: OutputPatch<T, N>
+    int outputControlPoints = 0;         // hull: [outputcontrolpoints(N)]
+};
+
 struct CompiledShader {
     ShaderProfile profile;
     std::string entryPoint;
@@ -147,6 +176,9 @@ struct CompiledShader {
     std::vector<UniformRange> uniformRangesRead;
     int outputTargets = 0;                // pixel shaders: number of SV_Target outputs (MRT)
     bool writesDepth = false;
+    std::vector<StorageBinding> storage;  // UAVs and buffer SRVs
+    std::array<int, 3> threadGroupSize{};  // compute shaders: [numthreads(x, y, z)]
+    Tessellation tessellation;            // hull and domain shaders
     // Vertex shaders compiled for vs_1_1..vs_3_0 add fxport_PixelOffset.xy * w to the position so
     // that GL rasterises like D3D9; the runtime sets it from the viewport to (1/W, -1/H).
     bool needsD3D9PixelOffset = false;
@@ -221,6 +253,7 @@ struct Pass {
     std::string name;
     std::vector<Annotation> annotations;
     ShaderChoice vertexShader, pixelShader, geometryShader;
+    ShaderChoice hullShader, domainShader, computeShader;  // technique11: SetHullShader ...
     std::vector<StateAssignment> states;  // in source order; later assignments win
     bool valid = true;                    // false: a diagnostic says why (e.g. asm block)
     SourceLocation declaredAt;

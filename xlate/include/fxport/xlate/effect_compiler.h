@@ -53,6 +53,13 @@ struct CompileOptions {
     // so that a crash inside glslang on a malformed effect becomes a diagnostic (FX9001-FX9003)
     // instead of taking the caller down. The fuzzers set this to find such crashes.
     bool inProcess = false;
+    // Loose files (compileShaderFiles sets it): another file of the pass holds a geometry or domain
+    // shader, so this file's vertex outputs and pixel inputs keep their declared types (as they
+    // do in an effect whose pass has such a shader) instead of D3D9's float4 varyings.
+    bool besideGeometryOrDomainShader = false;
+    // Loose files (compileShaderFiles sets it): the attributes of the hull shader another file of
+    // the pass holds; GL declares its partitioning and topology in the domain shader.
+    Tessellation hullOfDomainShader;
 };
 
 // Compiles a file. Throws CompileError for fatal problems.

@@ -258,6 +258,10 @@ public:
     };
     static std::unique_ptr<Effect> FromShaderFiles(fxport::GraphicsDevice& device, const ShaderFile& vertexShader,
                                                    const ShaderFile& pixelShader, const EffectOptions& options = {});
+    // Any set of stages, one file each (a compute shader alone; vertex, hull, domain and pixel
+    // shaders of a tessellated draw ...): the stage of each comes from its profile.
+    static std::unique_ptr<Effect> FromShaderFiles(fxport::GraphicsDevice& device, const std::vector<ShaderFile>& shaders,
+                                                   const EffectOptions& options = {});
     // Reads a compiled-effect file written by `fxport compile`.
     static std::unique_ptr<Effect> FromCompiledFile(fxport::GraphicsDevice& device, const std::string& path);
     ~Effect() override;

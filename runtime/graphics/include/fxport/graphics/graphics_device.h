@@ -33,6 +33,7 @@ class GraphicsContext;
 namespace fxport {
 
 class Effect;
+class StructuredBuffer;
 
 enum class PrimitiveType : std::uint8_t { TriangleList, TriangleStrip, LineList, LineStrip, PointList };
 
@@ -92,6 +93,8 @@ inline constexpr double kComputePassesWhereFaster = 2.0;
 // Number of sampler/texture slots (D3D9 has 16 pixel samplers).
 inline constexpr int kMaxTextureSlots = 16;
 inline constexpr int kMaxRenderTargets = 4;
+inline constexpr int kMaxUnorderedAccessSlots = 8;   // D3D11's UAV slots u0..u7
+inline constexpr int kMaxShaderResourceBuffers = 16;  // buffer SRVs t0..t15
 
 // device.Textures[2] = texture; accepts Texture*, Texture&, unique_ptr and shared_ptr.
 class TextureSlot {
@@ -268,6 +271,28 @@ public:
     void DrawIndexedPrimitives(PrimitiveType primitiveType, int baseVertex, int minVertexIndex, int numVertices,
                                int startIndex, int primitiveCount);
     void DrawPrimitives(PrimitiveType primitiveType, int vertexStart, int primitiveCount);
+
+    // --- D3D11 stages (fxport additions; XNA has none of them)
+    // Tessellated draws: patches of `controlPoints` (1..32) vertices each, through the hull and
+    // domain shaders of the applied pass (D3D11's N_CONTROL_POINT_PATCHLIST topologies).
+    void DrawPatches(int controlPoints, int vertexStart, int patchCount);
+    void DrawIndexedPatches(int controlPoints, int baseVertex, int startIndex, int patchCount);
+    // Runs the compute shader of the last applied pass that has one (SetComputeShader) over
+    // groupsX * groupsY * groupsZ thread groups. Its constants, Textures[] and the buffers and
+    // textures below are bound as for a draw. What it writes is visible to every later draw,
+    // dispatch and GetData (the device places the memory barriers).
+    void DispatchCompute(int groupsX, int groupsY, int groupsZ);
+    // Unordered-access views (register uN, N < kMaxUnorderedAccessSlots) for RWStructuredBuffer /
+    // RWByteAddressBuffer (a StructuredBuffer) and RWTexture2D (level 0 of a Texture2D or
+    // RenderTarget2D whose format a shader can write: Single, Vector2, Vector4, HalfVector4, Color ...).
+    // nullptr clears the slot. Bound at every draw and dispatch whose shaders declare the register.
+    void SetUnorderedAccess(int slot, StructuredBuffer* buffer);
+    void SetUnorderedAccess(int slot, StructuredBuffer& buffer) { SetUnorderedAccess(slot, &buffer); }
+    void SetUnorderedAccess(int slot, Texture2D* texture);
+    void SetUnorderedAccess(int slot, Texture2D& texture) { SetUnorderedAccess(slot, &texture); }
+    // Shader-resource buffers (register tN) for StructuredBuffer<T> / ByteAddressBuffer.
+    void SetShaderResource(int slot, StructuredBuffer* buffer);
+    void SetShaderResource(int slot, StructuredBuffer& buffer) { SetShaderResource(slot, &buffer); }
     template <class T>
     void DrawUserPrimitives(PrimitiveType primitiveType, const T* vertexData, int vertexOffset, int primitiveCount) {
         drawUser(primitiveType, vertexData + vertexOffset, sizeof(T), T::VertexDeclaration, primitiveCount);

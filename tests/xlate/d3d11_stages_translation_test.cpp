@@ -1,0 +1,323 @@
+// Compute, hull and domain shaders (issue 23 item 4, issue 24 item 6): cs_4_0..cs_5_0, hs_5_0 and
+// ds_5_0 compile, as loose files and in technique11 passes (SetComputeShader / SetHullShader /
+// SetDomainShader); the reflection holds what the runtime binds (numthreads, UAV and buffer-SRV
+// registers with their GL bindings, tessellation attributes), survives a compiled-effect file, and
+// the forms fxc rejects are located errors.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
+
+#include "fxport/xlate/effect_compiler.h"
+#include "fxport/xlate/effect_file.h"
+
+namespace fs = std::filesystem;
+using namespace fxport::xlate;
+
+namespace {
+
+CompileOptions noCache() {
+    CompileOptions o;
+    o.useCache = false;
+    return o;
+}
+
+// A loose shader file with entry `main`, compiled for `profile`.
+CompiledEffect compileLoose(const std::string& source, const std::string& profile) {
+    fs::path dir = fs::temp_directory_path() / ("fxport-d3d11-stages-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    fs::path file = dir / "shader.hlsl";
+    std::ofstream(file) << source;
+    return compileShaderFiles({{file.string(), "main", profile}}, noCache());
+}
+
+const StorageBinding& storage(const CompiledShader& s, const std::string& name) {
+    for (const auto& b : s.storage)
+        if (b.name == name) return b;
+    throw std::runtime_error("no storage binding " + name);
+}
+
+// The first error of a compile that must fail, as "file:line: message".
+std::string firstError(const std::string& source, const std::string& virtualPath = "stages.fx") {
+    try {
+        CompiledEffect e = compileEffectSource(source, virtualPath, noCache());
+        for (const auto& d : e.diagnostics)
+            if (d.severity == Severity::Error) return d.location.file + ":" + std::to_string(d.location.line) + ": " + d.message;
+    } catch (const CompileError& e) {
+        for (const auto& d : e.diagnostics())
+            if (d.severity == Severity::Error) return d.location.file + ":" + std::to_string(d.location.line) + ": " + d.message;
+    }
+    return "compiled";
+}
+
+const char* const kCompute = R"(struct Particle { float4 position; };
+RWStructuredBuffer<Particle> Particles : register(u0);
+StructuredBuffer<float> Weights : register(t2);
+RWTexture2D<float4> Image;
+RWByteAddressBuffer Raw;
+[numthreads(8, 4, 2)]
+void main(uint3 id : SV_DispatchThreadID)
+{
+    Particles[id.x].position *= Weights[id.y];
+    Image[id.xy] = float4(1, 0, 0, 1);
+    Raw.Store(id.x * 4, id.x);
+}
+)";
+
+const char* const kTessellation = R"(struct ControlPoint { float3 pos : POSITION; };
+struct PatchConstants { float edges[4] : SV_TessFactor; float inside[2] : SV_InsideTessFactor; };
+struct DomainOut { float4 pos : SV_Position; float4 color : COLOR0; };
+float Factor;
+
+ControlPoint VS(float3 pos : POSITION) { ControlPoint o; o.pos = pos; return o; }
+
+PatchConstants Constants(InputPatch<ControlPoint, 4> patch)
+{
+    PatchConstants o;
+    o.edges[0] = o.edges[1] = o.edges[2] = o.edges[3] = Factor;
+    o.inside[0] = o.inside[1] = Factor;
+    return o;
+}
+
+[domain("quad")]
+[partitioning("integer")]
+[outputtopology("triangle_cw")]
+[outputcontrolpoints(4)]
+[patchconstantfunc("Constants")]
+ControlPoint HS(InputPatch<ControlPoint, 4> patch, uint i : SV_OutputControlPointID) { return patch[i]; }
+
+[domain("quad")]
+DomainOut DS(PatchConstants pc, float2 uv : SV_DomainLocation, const OutputPatch<ControlPoint, 4> patch)
+{
+    DomainOut o;
+    o.pos = float4(lerp(lerp(patch[0].pos, patch[1].pos, uv.x), lerp(patch[3].pos, patch[2].pos, uv.x), uv.y), 1);
+    o.color = float4(uv, uv.x * uv.y, 1);
+    return o;
+}
+
+float4 PS(DomainOut i) : SV_Target { return i.color; }
+)";
+
+}  // namespace
+
+TEST(D3D11Stages, ComputeShaderReflectsThreadGroupAndStorageRegisters) {
+    CompiledEffect e = compileLoose(kCompute, "cs_5_0");
+    const Pass& pass = e.techniques.at(0).passes.at(0);
+    ASSERT_EQ(pass.computeShader.shaders.size(), 1u);
+    const CompiledShader& cs = e.shaders[size_t(pass.computeShader.shaders[0])];
+    EXPECT_EQ(cs.profile.stage, ShaderStage::Compute);
+    EXPECT_EQ(cs.threadGroupSize, (std::array<int, 3>{8, 4, 2}));
+    EXPECT_NE(cs.glsl.find("local_size_x = 8, local_size_y = 4, local_size_z = 2"), std::string::npos) << cs.glsl;
+
+    const StorageBinding& particles = storage(cs, "Particles");
+    EXPECT_EQ(particles.kind, StorageKind::Buffer);
+    EXPECT_EQ(particles.registerClass, 'u');
+    EXPECT_EQ(particles.slot, 0);
+    EXPECT_EQ(particles.binding, 0);
+    EXPECT_EQ(particles.stride, 16);
+    EXPECT_TRUE(particles.writes);
+    const StorageBinding& weights = storage(cs, "Weights");
+    EXPECT_EQ(weights.registerClass, 't');
+    EXPECT_EQ(weights.slot, 2);
+    EXPECT_EQ(weights.binding, kSrvBufferBindingBase + 2);
+    EXPECT_EQ(weights.stride, 4);
+    EXPECT_FALSE(weights.writes);
+    // No register: the next free u registers in declaration order (u0 is taken).
+    const StorageBinding& image = storage(cs, "Image");
+    EXPECT_EQ(image.kind, StorageKind::Image);
+    EXPECT_EQ(image.format, "rgba32f");
+    const StorageBinding& raw = storage(cs, "Raw");
+    EXPECT_EQ(raw.registerClass, 'u');
+    EXPECT_NE(image.slot, 0);
+    EXPECT_NE(raw.slot, 0);
+    EXPECT_NE(image.slot, raw.slot);
+}
+
+TEST(D3D11Stages, ComputeProfilesOfD3D10HardwareCompile) {
+    const char* source = "RWStructuredBuffer<uint> Out : register(u0);\n[numthreads(64, 1, 1)]\nvoid main(uint3 id : SV_DispatchThreadID) { Out[id.x] = id.x * 2; }\n";
+    for (const char* profile : {"cs_4_0", "cs_4_1", "cs_5_0"}) {
+        CompiledEffect e = compileLoose(source, profile);
+        ASSERT_EQ(e.shaders.size(), 1u) << profile;
+        EXPECT_EQ(e.shaders[0].threadGroupSize, (std::array<int, 3>{64, 1, 1})) << profile;
+    }
+}
+
+TEST(D3D11Stages, ComputeThreadGroupLimitsFollowTheProfile) {
+    // 1024 threads are cs_5_0's limit; cs_4_0 has 768 and z == 1.
+    const char* source = "RWStructuredBuffer<uint> Out : register(u0);\n[numthreads(32, 32, 1)]\nvoid main(uint3 id : SV_DispatchThreadID) { Out[id.x] = 1; }\n";
+    EXPECT_NO_THROW(compileLoose(source, "cs_5_0"));
+    EXPECT_THROW(compileLoose(source, "cs_4_0"), CompileError);
+}
+
+TEST(D3D11Stages, HullAndDomainShadersInATechnique11Pass) {
+    std::string source = std::string(kTessellation) +
+                         "technique11 Tessellate { pass P0 {\n"
+                         "  SetVertexShader(CompileShader(vs_5_0, VS()));\n"
+                         "  SetHullShader(CompileShader(hs_5_0, HS()));\n"
+                         "  SetDomainShader(CompileShader(ds_5_0, DS()));\n"
+                         "  SetPixelShader(CompileShader(ps_5_0, PS()));\n"
+                         "} }\n";
+    CompiledEffect e = compileEffectSource(source, "tessellate.fx", noCache());
+    const Pass& pass = e.techniques.at(0).passes.at(0);
+    ASSERT_TRUE(pass.valid);
+    ASSERT_EQ(pass.hullShader.shaders.size(), 1u);
+    ASSERT_EQ(pass.domainShader.shaders.size(), 1u);
+    const CompiledShader& hs = e.shaders[size_t(pass.hullShader.shaders[0])];
+    const CompiledShader& ds = e.shaders[size_t(pass.domainShader.shaders[0])];
+    EXPECT_EQ(hs.profile.stage, ShaderStage::Hull);
+    EXPECT_EQ(ds.profile.stage, ShaderStage::Domain);
+    EXPECT_EQ(hs.tessellation.domain, "quad");
+    EXPECT_EQ(hs.tessellation.partitioning, "integer");
+    EXPECT_EQ(hs.tessellation.outputTopology, "triangle_cw");
+    EXPECT_EQ(hs.tessellation.patchConstantFunction, "Constants");
+    EXPECT_EQ(hs.tessellation.inputControlPoints, 4);
+    EXPECT_EQ(hs.tessellation.outputControlPoints, 4);
+    EXPECT_EQ(ds.tessellation.domain, "quad");
+    EXPECT_EQ(ds.tessellation.inputControlPoints, 4);
+    EXPECT_NE(hs.glsl.find("layout(vertices = 4)"), std::string::npos) << hs.glsl;
+    EXPECT_NE(ds.glsl.find("quads"), std::string::npos) << ds.glsl;
+    // Factor is read by the patch-constant function: a parameter of the hull shader.
+    ASSERT_NE(e.findParameter("Factor"), nullptr);
+    EXPECT_FALSE(hs.uniformRangesRead.empty());
+
+    // The compiled-effect file keeps the new stages and their reflection.
+    CompiledEffect back = deserializeEffect(serializeEffect(e), "tessellate.fxo");
+    const Pass& p2 = back.techniques.at(0).passes.at(0);
+    ASSERT_EQ(p2.hullShader.shaders, pass.hullShader.shaders);
+    ASSERT_EQ(p2.domainShader.shaders, pass.domainShader.shaders);
+    EXPECT_EQ(back.shaders[size_t(p2.hullShader.shaders[0])].tessellation.patchConstantFunction, "Constants");
+    EXPECT_EQ(back.shaders[size_t(p2.hullShader.shaders[0])].profile.stage, ShaderStage::Hull);
+}
+
+TEST(D3D11Stages, SetComputeShaderInATechnique11PassAndTheFileKeepsIt) {
+    std::string source = std::string(kCompute).replace(std::string(kCompute).find("void main"), 9, "void Main") +
+                         "technique11 Simulate { pass P0 { SetComputeShader(CompileShader(cs_5_0, Main())); } }\n";
+    CompiledEffect e = compileEffectSource(source, "simulate.fx", noCache());
+    const Pass& pass = e.techniques.at(0).passes.at(0);
+    ASSERT_TRUE(pass.valid);
+    ASSERT_EQ(pass.computeShader.shaders.size(), 1u);
+    EXPECT_TRUE(pass.vertexShader.shaders.empty());
+    for (const auto& d : e.diagnostics) EXPECT_NE(d.severity, Severity::Error) << d.format();
+    CompiledEffect back = deserializeEffect(serializeEffect(e), "simulate.fxo");
+    const CompiledShader& cs = back.shaders[size_t(back.techniques[0].passes[0].computeShader.shaders.at(0))];
+    EXPECT_EQ(cs.threadGroupSize, (std::array<int, 3>{8, 4, 2}));
+    EXPECT_EQ(storage(cs, "Weights").binding, kSrvBufferBindingBase + 2);
+    EXPECT_EQ(storage(cs, "Image").format, "rgba32f");
+}
+
+TEST(D3D11Stages, FormsFxcRejectsAreLocatedErrors) {
+    const std::string pass = "technique11 T { pass P { SetComputeShader(CompileShader(cs_5_0, CS())); } }\n";
+    // Line 2 holds the entry point in each of these.
+    EXPECT_EQ(firstError("RWStructuredBuffer<uint> Out;\nvoid CS(uint3 id : SV_DispatchThreadID) { Out[id.x] = 1; }\n" + pass).substr(0, 12), "stages.fx:2:");
+    EXPECT_NE(firstError("RWStructuredBuffer<uint> Out;\nvoid CS(uint3 id : SV_DispatchThreadID) { Out[id.x] = 1; }\n" + pass).find("numthreads"),
+              std::string::npos);
+    std::string zero = firstError("RWStructuredBuffer<uint> Out;\n[numthreads(0, 1, 1)] void CS(uint3 id : SV_DispatchThreadID) { Out[id.x] = 1; }\n" + pass);
+    EXPECT_EQ(zero.substr(0, 12), "stages.fx:2:") << zero;
+    EXPECT_NE(zero.find("at least 1"), std::string::npos) << zero;
+
+    std::string hull = kTessellation;
+    hull.replace(hull.find("[patchconstantfunc(\"Constants\")]"), 32, "[patchconstantfunc(\"Nope\")]     ");
+    std::string bad = firstError(hull + "technique11 T { pass P { SetVertexShader(CompileShader(vs_5_0, VS())); SetHullShader(CompileShader(hs_5_0, HS()));"
+                                        " SetDomainShader(CompileShader(ds_5_0, DS())); SetPixelShader(CompileShader(ps_5_0, PS())); } }\n");
+    EXPECT_EQ(bad.substr(0, 13), "stages.fx:21:") << bad;
+    EXPECT_NE(bad.find("Nope"), std::string::npos) << bad;
+
+    // A hull shader without a domain shader can never draw.
+    std::string alone = firstError(std::string(kTessellation) +
+                                   "technique11 T { pass P { SetVertexShader(CompileShader(vs_5_0, VS())); SetHullShader(CompileShader(hs_5_0, HS()));"
+                                   " SetPixelShader(CompileShader(ps_5_0, PS())); } }\n");
+    EXPECT_NE(alone.find("no domain shader"), std::string::npos) << alone;
+
+    // Hull and domain profiles start at 5.0.
+    EXPECT_NE(firstError(std::string(kTessellation) + "technique11 T { pass P { SetHullShader(CompileShader(hs_4_0, HS())); } }\n").find("hs_4_0"),
+              std::string::npos);
+}
+
+// The suite's (and fxc's usual) form: the patch-constant function writes through an out
+// parameter, and the control point holds SV_Position. glslang 12 refuses that form; fxport hands
+// it a function that returns the values (patch_constant_wrapper.h).
+TEST(D3D11Stages, PatchConstantFunctionWithAnOutParameter) {
+    const char* hull = R"(struct data { float4 position : SV_Position; float r : RED; };
+struct patch_constant_data { float edges[3] : SV_TessFactor; float inside : SV_InsideTessFactor; };
+void patch_constant(InputPatch<data, 3> input, out patch_constant_data output)
+{
+    output.edges[0] = output.edges[1] = output.edges[2] = 2.0f;
+    output.inside = 3.0f;
+}
+[domain("tri")] [outputcontrolpoints(3)] [partitioning("fractional_odd")] [outputtopology("triangle_ccw")]
+[patchconstantfunc("patch_constant")]
+data main(InputPatch<data, 3> input, uint i : SV_OutputControlPointID) { return input[i]; }
+)";
+    CompiledEffect e = compileLoose(hull, "hs_5_0");
+    ASSERT_EQ(e.shaders.size(), 1u);
+    const CompiledShader& hs = e.shaders[0];
+    EXPECT_EQ(hs.tessellation.patchConstantFunction, "patch_constant");
+    EXPECT_EQ(hs.tessellation.partitioning, "fractional_odd");
+    EXPECT_NE(hs.glsl.find("gl_TessLevelInner[0] = 3.0"), std::string::npos) << hs.glsl;
+    EXPECT_NE(hs.glsl.find("gl_TessLevelOuter[2] = 2.0"), std::string::npos) << hs.glsl;
+    // Several out parameters with their own semantics go the same way.
+    const char* split = R"(struct data { float4 position : SV_Position; };
+void pc(InputPatch<data, 4> input, out float edges[4] : SV_TessFactor, out float inside[2] : SV_InsideTessFactor)
+{
+    edges[0] = edges[1] = edges[2] = edges[3] = 5.0f;
+    inside[0] = inside[1] = 6.0f;
+}
+[domain("quad")] [outputcontrolpoints(4)] [partitioning("integer")] [outputtopology("triangle_cw")] [patchconstantfunc("pc")]
+data main(InputPatch<data, 4> input, uint i : SV_OutputControlPointID) { return input[i]; }
+)";
+    CompiledEffect s = compileLoose(split, "hs_5_0");
+    ASSERT_EQ(s.shaders.size(), 1u);
+    EXPECT_NE(s.shaders[0].glsl.find("gl_TessLevelInner[1] = 6.0"), std::string::npos) << s.shaders[0].glsl;
+}
+
+// The domain shader of a pass declares its hull shader's partitioning and topology (GL's TES
+// layout), from a hull shader in another loose file too.
+TEST(D3D11Stages, DomainShaderTakesTheHullShadersPartitioning) {
+    fs::path dir = fs::temp_directory_path() / ("fxport-d3d11-stages-pair-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::string source = kTessellation;
+    source.replace(source.find("\"integer\""), 9, "\"fractional_even\"");
+    source.replace(source.find("\"triangle_cw\""), 13, "\"point\"");
+    std::ofstream(dir / "hull.hlsl") << source;
+    std::ofstream(dir / "domain.hlsl") << kTessellation;
+    // Domain first on purpose: the hull's file is compiled first anyway.
+    CompiledEffect e = compileShaderFiles({{(dir / "domain.hlsl").string(), "DS", "ds_5_0"}, {(dir / "hull.hlsl").string(), "HS", "hs_5_0"},
+                                           {(dir / "domain.hlsl").string(), "VS", "vs_5_0"}, {(dir / "domain.hlsl").string(), "PS", "ps_5_0"}},
+                                          noCache());
+    const Pass& pass = e.techniques.at(0).passes.at(0);
+    ASSERT_EQ(pass.domainShader.shaders.size(), 1u);
+    const std::string& ds = e.shaders[size_t(pass.domainShader.shaders[0])].glsl;
+    EXPECT_NE(ds.find("fractional_even_spacing"), std::string::npos) << ds;
+    EXPECT_NE(ds.find("point_mode"), std::string::npos) << ds;
+}
+
+// fxc gives a pixel shader's unregistered UAVs the slots after its render targets (D3D11 binds
+// RTVs and UAVs in one output-merger array): one SV_Target -> the first UAV is u1.
+TEST(D3D11Stages, PixelShaderUavsStartAfterItsRenderTargets) {
+    CompiledEffect e = compileLoose("RWTexture2D<float> u;\nRWStructuredBuffer<float> b;\nfloat4 main() : sv_target\n"
+                                    "{ u[uint2(0, 0)] = 0.5; b[0] = 1; return 0; }\n", "ps_5_0");
+    ASSERT_EQ(e.shaders.size(), 1u);
+    EXPECT_EQ(storage(e.shaders[0], "u").slot, 1);
+    EXPECT_EQ(storage(e.shaders[0], "b").slot, 2);
+}
+
+// fxc gives a control-point function without outputs a pass-through phase (point i out = point i
+// in); without it GL's outputs would stay unwritten.
+TEST(D3D11Stages, HullShaderWithoutOutputsPassesControlPointsThrough) {
+    const char* hull = R"(struct data { float4 position : SV_Position; float r : RED; };
+struct patch_constant_data { float edges[3] : SV_TessFactor; float inside : SV_InsideTessFactor; };
+void patch_constant(InputPatch<data, 3> input, out patch_constant_data output)
+{
+    output.edges[0] = output.edges[1] = output.edges[2] = 1.0f;
+    output.inside = 1.0f;
+}
+[domain("tri")] [outputcontrolpoints(3)] [partitioning("integer")] [outputtopology("triangle_cw")] [patchconstantfunc("patch_constant")]
+void main(InputPatch<data, 3> input) { }
+)";
+    CompiledEffect e = compileLoose(hull, "hs_5_0");
+    ASSERT_EQ(e.shaders.size(), 1u);
+    const std::string& glsl = e.shaders[0].glsl;
+    EXPECT_NE(glsl.find("gl_out[gl_InvocationID].gl_Position"), std::string::npos) << glsl;
+}
