@@ -390,8 +390,8 @@ void GraphicsDevice::Impl::bindTargets() {
     if (bindings.empty()) bindings.push_back(RenderTargetBinding(backBuffer.get()));
     Texture* first = bindings[0].RenderTarget;
     TargetInfo info = targetInfo(first);
-    GLuint depth = info.depth;
-    DepthFormat depthFormat = info.depthFormat;
+    GLuint depth = depthOverride ? depthOverride->renderbuffer : info.depth;
+    DepthFormat depthFormat = depthOverride ? depthOverride->format : info.depthFormat;
     std::vector<std::uint64_t> key;
     for (const RenderTargetBinding& b : bindings)
         key.push_back((std::uint64_t(b.RenderTarget->glName()) << 8) |
