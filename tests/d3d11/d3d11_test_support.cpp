@@ -15,7 +15,7 @@ ComPtr<ID3DBlob> compile(const std::string& source, const char* entry, const cha
     HRESULT hr = D3DCompile(source.data(), source.size(), name, nullptr, nullptr, entry, target, 0, 0, code.GetAddressOf(),
                             errors.GetAddressOf());
     if (FAILED(hr))
-        ADD_FAILURE() << "D3DCompile(" << entry << ", " << target << "): "
+        ADD_FAILURE() << "D3DCompile(" << (entry ? entry : "(effect)") << ", " << target << "): "
                       << (errors ? std::string(static_cast<const char*>(errors->GetBufferPointer()), errors->GetBufferSize())
                                  : std::string(GetLastErrorMessage()));
     return code;

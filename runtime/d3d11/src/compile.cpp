@@ -15,6 +15,9 @@ namespace fxport::d3d11 {
 
 namespace {
 
+constexpr const char* kShaderHeader = "fxport shader\n";
+constexpr const char* kEffectHeader = "fxport effect\n";
+
 class Blob final : public ID3DBlob {
 public:
     explicit Blob(std::string bytes) : bytes_(std::move(bytes)) {}
@@ -32,7 +35,9 @@ private:
     std::atomic<ULONG> references_{1};
 };
 
-std::string narrow(const wchar_t* w) {
+}  // namespace
+
+std::string narrowPath(const wchar_t* w) {
     std::string out;
     for (; *w; ++w) {
         const std::uint32_t c = std::uint32_t(*w);
@@ -55,6 +60,8 @@ std::string narrow(const wchar_t* w) {
     return out;
 }
 
+namespace {
+
 // Compiles one entry point from a file (`source` null) or from text; fills the blobs.
 HRESULT compile(const char* call, const std::string& path, const std::string* source, const D3D_SHADER_MACRO* defines,
                 ID3DInclude* include, LPCSTR entry, LPCSTR target, UINT flags, ID3DBlob** code, ID3DBlob** errors) {
@@ -64,21 +71,25 @@ HRESULT compile(const char* call, const std::string& path, const std::string* so
         if (errors) *errors = new Blob(message + "\n");
         return fail(hr, std::string(call) + ": " + message);
     };
-    if (!entry || !target) return error(E_INVALIDARG, "pEntrypoint and pTarget are required");
+    if (!target) return error(E_INVALIDARG, "pTarget is required");
+    // fx_4_0 / fx_5_0: the whole effect (techniques, passes, every shader they name).
+    const bool effect = std::string(target).rfind("fx_", 0) == 0;
+    if (!effect && !entry) return error(E_INVALIDARG, "pEntrypoint is required for a shader target");
     if (include && include != D3D_COMPILE_STANDARD_FILE_INCLUDE)
         return error(E_NOTIMPL, "ID3DInclude handlers are not supported; pass null or D3D_COMPILE_STANDARD_FILE_INCLUDE");
     if (flags & (D3DCOMPILE_PACK_MATRIX_ROW_MAJOR | D3DCOMPILE_PACK_MATRIX_COLUMN_MAJOR))
         return error(E_NOTIMPL, "the D3DCOMPILE_PACK_MATRIX_* flags are not supported; write #pragma pack_matrix in the source");
     xlate::CompileOptions options;
     for (const D3D_SHADER_MACRO* d = defines; d && d->Name; ++d) options.defines.emplace_back(d->Name, d->Definition ? d->Definition : "1");
-    const std::vector<xlate::ShaderEntry> entries = {{path, entry, target}};
+    const std::vector<xlate::ShaderEntry> entries = {{path, entry ? entry : "", target}};
     try {
-        xlate::CompiledEffect effect = source ? xlate::compileShaderSource(*source, path, entries, options)
-                                              : xlate::compileShaderFiles(entries, options);
-        std::string text = xlate::serializeEffect(effect, /*compact=*/true);
+        xlate::CompiledEffect compiled =
+            effect ? (source ? xlate::compileEffectSource(*source, path, options) : xlate::compileEffectFile(path, options))
+                   : (source ? xlate::compileShaderSource(*source, path, entries, options) : xlate::compileShaderFiles(entries, options));
+        std::string text = std::string(effect ? kEffectHeader : kShaderHeader) + xlate::serializeEffect(compiled, /*compact=*/true);
         // Warnings go to the error blob, as fxc's do.
         std::string warnings;
-        for (const auto& d : effect.diagnostics) warnings += d.format() + "\n";
+        for (const auto& d : compiled.diagnostics) warnings += d.format() + "\n";
         if (errors && !warnings.empty()) *errors = new Blob(warnings);
         if (code) *code = new Blob(std::move(text));
         return succeed();
@@ -111,7 +122,7 @@ HRESULT D3DCompileFromFile(LPCSTR pFileName, const D3D_SHADER_MACRO* pDefines, I
 HRESULT D3DCompileFromFile(const wchar_t* pFileName, const D3D_SHADER_MACRO* pDefines, ID3DInclude* pInclude, LPCSTR pEntrypoint,
                            LPCSTR pTarget, UINT Flags1, UINT Flags2, ID3DBlob** ppCode, ID3DBlob** ppErrorMsgs) {
     if (!pFileName) return fail(E_INVALIDARG, "D3DCompileFromFile: pFileName is null");
-    return D3DCompileFromFile(narrow(pFileName).c_str(), pDefines, pInclude, pEntrypoint, pTarget, Flags1, Flags2, ppCode, ppErrorMsgs);
+    return D3DCompileFromFile(narrowPath(pFileName).c_str(), pDefines, pInclude, pEntrypoint, pTarget, Flags1, Flags2, ppCode, ppErrorMsgs);
 }
 
 HRESULT D3DX11CompileFromFile(LPCSTR pSrcFile, const D3D_SHADER_MACRO* pDefines, ID3DInclude* pInclude, LPCSTR pFunctionName,
@@ -129,11 +140,23 @@ HRESULT D3DCreateBlob(SIZE_T Size, ID3DBlob** ppBlob) {
     return succeed();
 }
 
-std::shared_ptr<const xlate::CompiledEffect> effectFromBytecode(const void* bytecode, SIZE_T length, std::string& error) {
+std::string shaderBlob(const xlate::CompiledEffect& shader) { return kShaderHeader + xlate::serializeEffect(shader, /*compact=*/true); }
+
+std::shared_ptr<const xlate::CompiledEffect> effectFromBytecode(const void* bytecode, SIZE_T length, std::string& error, BlobKind* kind) {
     if (!bytecode || length == 0) {
         error = "the shader bytecode is null or empty";
         return nullptr;
     }
+    std::string_view all(static_cast<const char*>(bytecode), length);
+    const bool shader = all.substr(0, std::strlen(kShaderHeader)) == kShaderHeader;
+    const bool wholeEffect = all.substr(0, std::strlen(kEffectHeader)) == kEffectHeader;
+    if (!shader && !wholeEffect) {
+        error = "not a shader D3DCompile made with fxport; fxport cannot run DXBC bytecode";
+        return nullptr;
+    }
+    if (kind) *kind = shader ? BlobKind::Shader : BlobKind::Effect;
+    bytecode = all.data() + std::strlen(shader ? kShaderHeader : kEffectHeader);
+    length = all.size() - std::strlen(shader ? kShaderHeader : kEffectHeader);
     // The same blob is often given to CreateVertexShader and CreateInputLayout: parse it once.
     static std::mutex mutex;
     static std::string lastText;

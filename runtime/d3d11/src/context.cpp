@@ -66,6 +66,8 @@ void Context::ClearState() {
     stencilRef_ = 0;
     for (auto& t : targets_) t = nullptr;
     depthView_ = nullptr;
+    effectPass_ = nullptr;
+    effectOwner_ = nullptr;
     decodeBlend(D3D11_BLEND_DESC{}, defaultBlend_);
     decodeRasterizer(D3D11_RASTERIZER_DESC{}, defaultRasterizer_);
     decodeDepthStencil(D3D11_DEPTH_STENCIL_DESC{}, defaultDepthStencil_);
@@ -100,8 +102,14 @@ void Context::IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY Topology) { topolo
 
 // --- shader stages
 
-void Context::VSSetShader(ID3D11VertexShader* p, ID3D11ClassInstance* const*, UINT) { vertexShader_ = own<VertexShader>(p, device_); }
-void Context::PSSetShader(ID3D11PixelShader* p, ID3D11ClassInstance* const*, UINT) { pixelShader_ = own<PixelShader>(p, device_); }
+void Context::VSSetShader(ID3D11VertexShader* p, ID3D11ClassInstance* const*, UINT) {
+    vertexShader_ = own<VertexShader>(p, device_);
+    effectPass_ = nullptr;  // the shader replaces an applied effect pass's
+}
+void Context::PSSetShader(ID3D11PixelShader* p, ID3D11ClassInstance* const*, UINT) {
+    pixelShader_ = own<PixelShader>(p, device_);
+    effectPass_ = nullptr;
+}
 void Context::GSSetShader(ID3D11GeometryShader* p, ID3D11ClassInstance* const*, UINT) {
     if (p) note("GSSetShader: geometry shaders are not implemented in the D3D11 front end yet");
 }
@@ -202,11 +210,12 @@ void Context::bindStage(int stage, const ShaderBindings& bindings, const Stage& 
 
 bool Context::prepare(const char* call) {
     const std::string at = std::string(call) + ": ";
-    if (!vertexShader_ || !pixelShader_) {
+    if (!effectPass_ && (!vertexShader_ || !pixelShader_)) {
         note(at + "no " + std::string(!vertexShader_ ? "vertex" : "pixel") + " shader set; nothing drawn (fxport needs both)");
         return false;
     }
-    const auto& inputs = vertexShader_->code->shader().inputs;
+    static const std::vector<xlate::VertexInput> none;
+    const auto& inputs = effectPass_ ? none : vertexShader_->code->shader().inputs;
     const bool readsVertices = std::any_of(inputs.begin(), inputs.end(), [](const auto& in) { return in.semantic.rfind("SV_", 0) != 0; });
     if (!layout_ && readsVertices) {
         note(at + "no input layout set and the vertex shader has inputs; nothing drawn");
@@ -244,9 +253,15 @@ bool Context::prepare(const char* call) {
     }
     core.ScissorRectangle = Rectangle(scissor_.left, scissor_.top, scissor_.right - scissor_.left, scissor_.bottom - scissor_.top);
 
-    core::setShaders(core, *vertexShader_->code, *pixelShader_->code);
-    bindStage(0, vertexShader_->bindings, vs_);
-    bindStage(1, pixelShader_->bindings, ps_);
+    if (effectPass_) {
+        // The pass binds its shaders, constants and textures and sets the states it names over
+        // the context's (Effects11's Apply does the same through the context's Set calls).
+        effectPass_->Apply();
+    } else {
+        core::setShaders(core, *vertexShader_->code, *pixelShader_->code);
+        bindStage(0, vertexShader_->bindings, vs_);
+        bindStage(1, pixelShader_->bindings, ps_);
+    }
 
     std::vector<VertexElement> elements = layout_ ? layout_->elements : std::vector<VertexElement>{};
     int stride = int(stride_);

@@ -5,6 +5,7 @@
 #include <array>
 
 #include "d3d11_impl.h"
+#include "fxport/graphics/effect.h"
 #include "fxport/graphics/vertex_declaration.h"
 
 namespace fxport::d3d11 {
@@ -63,6 +64,17 @@ public:
     void ClearState() override;
     void Flush() override;
 
+    // The effects framework (effect11.cpp): a pass applied on this context runs at the next draws,
+    // until VSSetShader/PSSetShader, ClearState or another Apply; `owner` is its ID3DX11Effect,
+    // which forgets itself here when released.
+    void applyEffectPass(EffectPass* pass, const void* owner) {
+        effectPass_ = pass;
+        effectOwner_ = owner;
+    }
+    void forgetEffect(const void* owner) {
+        if (effectOwner_ == owner) effectPass_ = nullptr, effectOwner_ = nullptr;
+    }
+
 private:
     struct Stage {
         std::array<ComPtr<Buffer>, D3D11_COMMONSHADER_CONSTANT_BUFFER_API_SLOT_COUNT> constantBuffers;
@@ -102,7 +114,9 @@ private:
     fxport::RasterizerState defaultRasterizer_;
     fxport::DepthStencilState defaultDepthStencil_;
     fxport::SamplerState defaultSampler_;
-    VertexDeclaration declaration_;  // the input layout with the slot-0 stride, made at each draw
+    VertexDeclaration declaration_;
+    EffectPass* effectPass_ = nullptr;  // fxport::EffectPass (applied at each draw instead of VS/PS)
+    const void* effectOwner_ = nullptr;  // the input layout with the slot-0 stride, made at each draw
 };
 
 }  // namespace fxport::d3d11

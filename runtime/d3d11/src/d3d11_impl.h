@@ -181,7 +181,13 @@ bool depthFormat(DXGI_FORMAT format, DepthFormat& out);
 bool vertexFormat(DXGI_FORMAT format, VertexElementFormat& out);
 
 // --- a compiled-shader blob's content (compile.cpp)
-std::shared_ptr<const xlate::CompiledEffect> effectFromBytecode(const void* bytecode, SIZE_T length, std::string& error);
+std::string narrowPath(const wchar_t* path);  // UTF-8
+// A blob starts with one line saying what D3DCompile made: a shader (vs_*, ps_* ... targets) or a
+// whole effect (fx_* targets); the compiled effect's text follows.
+enum class BlobKind { Shader, Effect };
+std::shared_ptr<const xlate::CompiledEffect> effectFromBytecode(const void* bytecode, SIZE_T length, std::string& error,
+                                                                BlobKind* kind = nullptr);
+std::string shaderBlob(const xlate::CompiledEffect& shader);  // the bytes of a shader blob
 
 class Context;
 

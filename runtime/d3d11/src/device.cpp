@@ -45,8 +45,11 @@ template <class Shader, class Interface>
 HRESULT createShader(Device* device, const void* bytecode, SIZE_T length, xlate::ShaderStage stage, const char* call, Interface** out) {
     if (!bytecode || length == 0) return fail(E_INVALIDARG, std::string(call) + ": pShaderBytecode is null or empty");
     std::string error;
-    std::shared_ptr<const xlate::CompiledEffect> effect = effectFromBytecode(bytecode, length, error);
+    BlobKind kind = BlobKind::Shader;
+    std::shared_ptr<const xlate::CompiledEffect> effect = effectFromBytecode(bytecode, length, error, &kind);
     if (!effect) return fail(E_INVALIDARG, std::string(call) + ": " + error);
+    if (kind != BlobKind::Shader)
+        return fail(E_INVALIDARG, std::string(call) + ": the bytecode is a whole effect (an fx_* target); make it with D3DX11CreateEffectFromMemory");
     const int index = shaderOfStage(*effect, stage);
     if (index < 0) {
         const std::string held = effect->shaders.empty() ? std::string("no shader") : "a " + effect->shaders[0].profile.name + " shader";
