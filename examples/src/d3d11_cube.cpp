@@ -273,6 +273,26 @@ std::vector<std::uint8_t> ReadFrame(UINT width, UINT height) {
     return rgba;
 }
 
+void CleanupDevice() {
+    if (g_pImmediateContext) g_pImmediateContext->ClearState();
+    g_pSamplerLinear.Reset();
+    g_pTextureRV.Reset();
+    g_pCBNeverChanges.Reset();
+    g_pCBChangeOnResize.Reset();
+    g_pCBChangesEveryFrame.Reset();
+    g_pVertexBuffer.Reset();
+    g_pIndexBuffer.Reset();
+    g_pVertexLayout.Reset();
+    g_pVertexShader.Reset();
+    g_pPixelShader.Reset();
+    g_pDepthStencil.Reset();
+    g_pDepthStencilView.Reset();
+    g_pRenderTargetView.Reset();
+    g_pRenderTarget.Reset();
+    g_pImmediateContext.Reset();
+    g_pd3dDevice.Reset();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -289,14 +309,19 @@ int main(int argc, char** argv) {
     }
     // The shader file is installed beside the program (CMakeLists.txt copies it).
     const std::string shaderPath = (std::filesystem::path(argv[0]).parent_path() / "d3d11_cube.hlsl").string();
-    if (FAILED(InitDevice(width, height, shaderPath))) return 1;
+    if (FAILED(InitDevice(width, height, shaderPath))) {
+        CleanupDevice();
+        return 1;
+    }
     const double t = 0.6;  // seconds into the tutorial's rotation
     Render(t);
     if (*GetLastErrorMessage()) {
         std::fprintf(stderr, "d3d11_cube: the draw was refused: %s\n", GetLastErrorMessage());
+        CleanupDevice();
         return 1;
     }
     const std::vector<std::uint8_t> frame = ReadFrame(width, height);
+    CleanupDevice();
     std::printf("d3d11_cube: %ux%u frame rendered\n", width, height);
     if (!check) return 0;
     const cube::Check result = cube::checkFrame(frame, int(width), int(height), t, g_vMeshColor);
