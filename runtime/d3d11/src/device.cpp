@@ -68,7 +68,9 @@ HRESULT createShader(Device* device, const void* bytecode, SIZE_T length, xlate:
 }
 
 // The XNA usage whose semantic is `name` + index ("TEXCOORD" 1 -> TextureCoordinate 1).
-bool usageOf(const std::string& name, UINT index, VertexElementUsage& out) {
+bool usageOf(const std::string& nameIn, UINT index, VertexElementUsage& out) {
+    // An SV_Position vertex input is fed by an "SV_POSITION" element; the core binds it as POSITION.
+    const std::string name = upper(nameIn) == "SV_POSITION" ? std::string("POSITION") : nameIn;
     for (int u = 0; u <= int(VertexElementUsage::TessellateFactor); ++u) {
         VertexElement e(0, VertexElementFormat::Single, VertexElementUsage(u), int(index));
         if (vertexElementSemantic(e) == upper(name) + std::to_string(index)) {
@@ -155,7 +157,7 @@ HRESULT Device::CreateInputLayout(const D3D11_INPUT_ELEMENT_DESC* descs, UINT co
                                        "TANGENT, BINORMAL, BLENDINDICES, BLENDWEIGHT, PSIZE, FOG ...)");
         if (d.AlignedByteOffset != D3D11_APPEND_ALIGNED_ELEMENT) offset = d.AlignedByteOffset;
         if (offset % 4 != 0) return fail(E_INVALIDARG, at + "AlignedByteOffset = " + std::to_string(offset) + " (must be a multiple of 4)");
-        const std::string semantic = upper(d.SemanticName) + std::to_string(d.SemanticIndex);
+        const std::string semantic = vertexElementSemantic(VertexElement(0, format, usage, int(d.SemanticIndex)));
         if (std::find(semantics.begin(), semantics.end(), semantic) != semantics.end())
             return fail(E_INVALIDARG, at + "SemanticName/SemanticIndex = " + semantic + " appears twice");
         semantics.push_back(semantic);
@@ -164,8 +166,11 @@ HRESULT Device::CreateInputLayout(const D3D11_INPUT_ELEMENT_DESC* descs, UINT co
     }
     // D3D's rule: every input of the shader's signature is in the layout (by name and index).
     for (const xlate::VertexInput& input : effect->shaders[std::size_t(vs)].inputs) {
-        if (input.semantic.rfind("SV_", 0) == 0) continue;
-        if (std::find(semantics.begin(), semantics.end(), input.semantic) == semantics.end())
+        const bool position = input.semantic.rfind("SV_POSITION", 0) == 0;
+        if (input.semantic.rfind("SV_", 0) == 0 && !position) continue;  // system values need no element
+        const std::string wanted = position ? input.semantic.substr(3) : input.semantic;
+        if (std::find(semantics.begin(), semantics.end(), wanted) == semantics.end() &&
+            std::find(semantics.begin(), semantics.end(), input.semantic) == semantics.end())
             return fail(E_INVALIDARG, "CreateInputLayout: the vertex shader's input " + input.semantic +
                                           " has no element in the layout (semantics match by name and index)");
     }
