@@ -176,6 +176,21 @@ TEST(D3D11Shaders, InputLayoutMatchesTheSignatureByNameAndIndex) {
     EXPECT_NE(lastError().find("AlignedByteOffset = 6"), std::string::npos) << lastError();
 }
 
+TEST(D3D11Shaders, AnSVPositionInputTakesAnSVPositionElement) {
+    Device d;
+    const char* source = "float4 VS(float4 p : SV_Position, float2 uv : TEXCOORD0) : SV_Position { return p + uv.x; }\n";
+    ComPtr<ID3DBlob> vs = compile(source, "VS", "vs_4_0", "svposition.hlsl");
+    ASSERT_TRUE(vs);
+    D3D11_INPUT_ELEMENT_DESC layout[] = {
+        {"SV_POSITION", 0, DXGI_FORMAT_R32G32B32A32_FLOAT, 0, 0, D3D11_INPUT_PER_VERTEX_DATA, 0},
+        {"TEXCOORD", 0, DXGI_FORMAT_R32G32_FLOAT, 0, D3D11_APPEND_ALIGNED_ELEMENT, D3D11_INPUT_PER_VERTEX_DATA, 0},
+    };
+    ComPtr<ID3D11InputLayout> il;
+    EXPECT_EQ(d.device->CreateInputLayout(layout, 2, vs->GetBufferPointer(), vs->GetBufferSize(), il.GetAddressOf()), S_OK) << lastError();
+    EXPECT_EQ(d.device->CreateInputLayout(layout + 1, 1, vs->GetBufferPointer(), vs->GetBufferSize(), il.GetAddressOf()), E_INVALIDARG);
+    EXPECT_NE(lastError().find("SV_POSITION"), std::string::npos) << lastError();
+}
+
 TEST(D3D11Shaders, UnimplementedStagesSayNotImplemented) {
     Device d;
     ComPtr<ID3D11ComputeShader> cs;
