@@ -30,10 +30,7 @@ class Device;
 HRESULT fail(HRESULT code, const std::string& message);  // records the message, returns code
 HRESULT succeed();                                         // clears the message, returns S_OK
 void note(const std::string& message);                     // a void call's problem
-// Runs `body`, turning an exception thrown below (the device core's ArgumentError and
-// InvalidOperation, std::bad_alloc) into E_INVALIDARG / E_FAIL / E_OUTOFMEMORY with its message.
-template <class F>
-HRESULT guarded(const char* call, F&& body);
+// guarded(call, body) (guarded.h) turns the device core's exceptions into HRESULTs.
 
 // --- reference counting: every object starts at 1 and deletes itself at 0.
 template <class Interface>

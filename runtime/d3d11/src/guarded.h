@@ -11,6 +11,8 @@
 
 namespace fxport::d3d11 {
 
+// Runs `body`, turning an exception thrown below (the device core's ArgumentError and
+// InvalidOperation, std::bad_alloc) into E_INVALIDARG / E_FAIL / E_OUTOFMEMORY with its message.
 template <class F>
 HRESULT guarded(const char* call, F&& body) {
     try {

@@ -7,15 +7,14 @@ namespace fxport::d3d11 {
 
 namespace {
 
-// The texture behind `resource`, or null with the reason in `why`.
+// The texture behind `resource`, or null with the failure (and its message) in `hr`.
 Texture* textureOf(Device* device, ID3D11Resource* resource, const char* call, HRESULT& hr) {
     hr = S_OK;
     if (!resource) {
         hr = fail(E_INVALIDARG, std::string(call) + ": pResource is null");
         return nullptr;
     }
-    if (auto* b = dynamic_cast<Buffer*>(resource)) {
-        (void)b;
+    if (dynamic_cast<Buffer*>(resource)) {
         hr = fail(E_NOTIMPL, std::string(call) + ": views of buffers are not supported yet");
         return nullptr;
     }
