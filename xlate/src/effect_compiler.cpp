@@ -44,7 +44,7 @@ namespace fs = std::filesystem;
 
 namespace fxport::xlate {
 
-const char* compilerVersion() { return "fxport-xlate-4"; }  // 3: asm { } blocks translate; 4: compute, hull, domain
+const char* compilerVersion() { return "fxport-xlate-5"; }  // 3: asm { } blocks translate; 4: compute, hull, domain; 5: D3D resource registers
 
 namespace {
 
@@ -861,6 +861,15 @@ void EffectBuilder::finishReflection() {
     effect_.uniformBlocks.push_back({"$Global", 0, 0});
     for (size_t k = 0; k < syntax_.cbuffers.size(); ++k)
         effect_.uniformBlocks.push_back({syntax_.cbuffers[k], static_cast<int>(2 + k), 0});
+    // D3D's registers as declared, for the D3D11 front end's b#/t#/s# slots.
+    effect_.resources.clear();
+    using RK = ResourceDeclaration::Kind;
+    for (size_t k = 0; k < syntax_.cbuffers.size(); ++k)
+        effect_.resources.push_back({RK::ConstantBuffer, syntax_.cbuffers[k], syntax_.cbufferRegisters[k]});
+    for (const auto& t : syntax_.textures)
+        if (!t.dx9Object) effect_.resources.push_back({RK::Texture, t.name, t.explicitUnit});
+    for (const auto& s : syntax_.samplers)
+        if (s.dx10) effect_.resources.push_back({RK::Sampler, s.name, s.explicitUnit});
     std::map<int, const UniformBlockLayout*> layouts;
     for (const auto& [index, g] : reflections_) {
         for (const auto& block : g.blocks) {

@@ -323,6 +323,11 @@ json effectJson(const CompiledEffect& effect, bool full) {
     json blocks = json::array();
     for (const auto& b : effect.uniformBlocks) blocks.push_back({{"name", b.name}, {"binding", b.binding}, {"size", b.size}});
     j["uniformBlocks"] = blocks;
+    if (full) {  // D3D registers as declared (not part of the golden reflection)
+        json resources = json::array();
+        for (const auto& r : effect.resources) resources.push_back({{"kind", int(r.kind)}, {"name", r.name}, {"register", r.explicitRegister}});
+        j["resources"] = resources;
+    }
     j["parameters"] = params;
     j["techniques"] = techniquesJson(effect, full);
     j["shaders"] = shaders;
@@ -446,6 +451,12 @@ CompiledEffect deserializeEffect(std::string_view text, const std::string& nameF
         e.sourcePath = j.value("sourcePath", std::string());
         e.uniformBufferSize = j.value("uniformBufferSize", 0);
         for (const auto& b : j.at("uniformBlocks")) e.uniformBlocks.push_back({b.at("name"), b.at("binding"), b.at("size")});
+        if (j.contains("resources"))
+            for (const auto& r : j.at("resources")) {
+                const int kind = r.at("kind");
+                if (kind < 0 || kind > 2) return fail("resource '" + r.at("name").get<std::string>() + "' has kind " + std::to_string(kind));
+                e.resources.push_back({ResourceDeclaration::Kind(kind), r.at("name"), r.at("register")});
+            }
         for (const auto& p : j.at("parameters")) e.parameters.push_back(parameterFrom(p));
         std::map<std::string, int> paramIndex;
         for (size_t i = 0; i < e.parameters.size(); ++i) paramIndex[e.parameters[i].name] = static_cast<int>(i);

@@ -634,10 +634,17 @@ private:
         ++pos_;
         std::string name = cur().isIdent() ? syntax_.tokens[pos_++].text : std::string();
         syntax_.cbuffers.push_back(name);
+        int reg = -1;
         while (accept(":")) {
             expectIdentifier("register");
-            if (cur().is("(")) pos_ = skipGroup(pos_, "register");
+            if (cur().is("(")) {
+                size_t after = skipGroup(pos_, "register");
+                const std::string& last = tok(after - 2).text;  // b3 (the last argument)
+                if (after >= pos_ + 3 && last.size() > 1 && (last[0] == 'b' || last[0] == 'B')) reg = std::atoi(last.c_str() + 1);
+                pos_ = after;
+            }
         }
+        syntax_.cbufferRegisters.push_back(reg);
         size_t open = pos_;
         expect("{", ("to open cbuffer " + name).c_str());
         while (!accept("}")) {

@@ -37,13 +37,15 @@ namespace {
 // Thrown by compileOneFile when only the cache was to be asked and it had no entry.
 struct NotCached {};
 
+// `given`: the file's text when held in memory (D3DCompile), else empty and the file is read.
 CompiledEffect compileOneFile(const std::string& path, const std::vector<const ShaderEntry*>& entries, CompileOptions options,
-                              VaryingLocations* shared, bool cacheOnly) {
+                              VaryingLocations* shared, bool cacheOnly, const std::string& given) {
     std::error_code ec;
-    if (auto size = std::filesystem::file_size(path, ec); !ec && size > limits::kMaxFileBytes)
+    const std::uintmax_t size = given.empty() ? std::filesystem::file_size(path, ec) : given.size();
+    if (!ec && size > limits::kMaxFileBytes)
         fail(diag::kInputTooLarge, path, "the file has " + std::to_string(size) + " bytes; fxport compiles source files of at most " +
                                              std::to_string(limits::kMaxFileBytes >> 20) + " MiB");
-    auto raw = readFile(path);
+    auto raw = given.empty() ? readFile(path) : std::optional<std::string>(given);
     if (!raw) fail(diag::kFileUnreadable, path, "cannot open '" + path + "'");
     std::string pass;
     for (const ShaderEntry* e : entries) {
@@ -159,7 +161,8 @@ std::vector<int> mergeInto(CompiledEffect& merged, const CompiledEffect& part, c
 
 // The files compiled one by one and merged; with `cacheOnly`, from the cache alone (NotCached
 // when an entry is missing).
-CompiledEffect compileAndMerge(const std::vector<ShaderEntry>& entries, const CompileOptions& optionsIn, bool cacheOnly) {
+CompiledEffect compileAndMerge(const std::vector<ShaderEntry>& entries, const CompileOptions& optionsIn, bool cacheOnly,
+                               const std::string& source = {}) {
     if (entries.empty()) fail(diag::kMissingEntry, "", "no entry point given (--entry NAME --profile vs_5_0, fxc /E /T)");
     std::vector<std::string> files;  // in the order first named
     std::map<std::string, std::vector<const ShaderEntry*>> byFile;
@@ -191,7 +194,7 @@ CompiledEffect compileAndMerge(const std::vector<ShaderEntry>& entries, const Co
     Pass pass;
     pass.name = "P0";
     for (const auto& file : files) {
-        CompiledEffect part = compileOneFile(file, byFile[file], options, &varyings, cacheOnly);
+        CompiledEffect part = compileOneFile(file, byFile[file], options, &varyings, cacheOnly, source);
         const Pass& partPass = part.techniques.at(0).passes.at(0);
         for (int s : partPass.hullShader.shaders)
             if (s >= 0) options.hullOfDomainShader = part.shaders[size_t(s)].tessellation;
@@ -253,6 +256,21 @@ CompiledEffect compileShaderFiles(const std::vector<ShaderEntry>& entries, const
     }
     const std::string displayPath = entries.empty() ? std::string() : entries.front().path;
     return compileContained([&] { return compileAndMerge(entries, options, false); }, displayPath);
+}
+
+CompiledEffect compileShaderSource(const std::string& source, const std::string& virtualPath,
+                                   const std::vector<ShaderEntry>& entriesIn, const CompileOptions& options) {
+    std::vector<ShaderEntry> entries = entriesIn;
+    for (auto& e : entries) e.path = virtualPath;  // one text: every entry is in it
+    if (source.empty()) fail(diag::kFileUnreadable, virtualPath, "the source text is empty");
+    if (compilesInThisProcess(options)) return compileAndMerge(entries, options, false, source);
+    if (options.useCache) {
+        try {
+            return compileAndMerge(entries, options, true, source);
+        } catch (const NotCached&) {
+        }
+    }
+    return compileContained([&] { return compileAndMerge(entries, options, false, source); }, virtualPath);
 }
 
 }  // namespace fxport::xlate

@@ -50,6 +50,7 @@ void GraphicsDevice::Impl::releaseDepthStorage(DepthStorage& storage) {
 }
 
 DepthStorage* GraphicsDevice::Impl::boundDepthStorage() {
+    if (depthOverride) return depthOverride->format == DepthFormat::None ? nullptr : depthOverride;
     Texture* first = firstBound(targets, backBuffer.get());
     if (!first) return nullptr;  // the back buffer while it is being made
     DepthStorage& storage = first->kind() == Texture::Kind::TextureCube

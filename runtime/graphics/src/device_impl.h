@@ -104,6 +104,9 @@ struct GraphicsDevice::Impl {
     std::shared_ptr<FragmentRuns> fragmentTally;  // tallyFragments(true); null when off
     void tallyDraw();  // before a draw: its pixel shader's fetches to the tally (fragment_tally.cpp)
     void noteBoundTargets();
+    // A depth/stencil buffer of its own that replaces the first target's (front_end_core.h: D3D11's
+    // depth-stencil views are apart from render targets). Null for XNA, whose targets own theirs.
+    DepthStorage* depthOverride = nullptr;
     void generateMipsOfUnboundTargets(const std::vector<RenderTargetBinding>& previous);
 
     // --- shaders set by EffectPass::Apply (a stage left null keeps what was there)

@@ -69,10 +69,12 @@ TargetInfo targetInfo(const Texture* t) {
     return {r->Width(), r->Height(), r->depthRenderbuffer(), r->DepthStencilFormat(), r->RenderTargetUsage()};
 }
 
-// Live devices, oldest first; the last one made current is what GL calls go to.
+// Live devices, oldest first; the last one made current is what GL calls go to. Never destroyed:
+// a device held by a global (D3D11 programs keep theirs in globals) is destroyed after the
+// function-local statics made after it, and its destructor still reads this list.
 std::vector<GraphicsDevice*>& liveDevices() {
-    static std::vector<GraphicsDevice*> devices;
-    return devices;
+    static auto* devices = new std::vector<GraphicsDevice*>();
+    return *devices;
 }
 
 platform::Platform choosePlatform(const std::string& name) {
@@ -390,8 +392,8 @@ void GraphicsDevice::Impl::bindTargets() {
     if (bindings.empty()) bindings.push_back(RenderTargetBinding(backBuffer.get()));
     Texture* first = bindings[0].RenderTarget;
     TargetInfo info = targetInfo(first);
-    GLuint depth = info.depth;
-    DepthFormat depthFormat = info.depthFormat;
+    GLuint depth = depthOverride ? depthOverride->renderbuffer : info.depth;
+    DepthFormat depthFormat = depthOverride ? depthOverride->format : info.depthFormat;
     std::vector<std::uint64_t> key;
     for (const RenderTargetBinding& b : bindings)
         key.push_back((std::uint64_t(b.RenderTarget->glName()) << 8) |

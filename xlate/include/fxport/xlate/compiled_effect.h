@@ -266,6 +266,18 @@ struct Technique {
     SourceLocation declaredAt;
 };
 
+// A D3D10/11 resource as the source declares it, for D3D's register rules (a D3D11 front end binds
+// by b#/t#/s#): an explicit register(b3)/register(t1)/register(s0) holds; the others take, as fxc
+// gives them, the lowest register of their kind that is free, in declaration order, among the
+// resources a shader uses. GL bindings and units above are fxport's own numbering.
+struct ResourceDeclaration {
+    enum class Kind : std::uint8_t { ConstantBuffer, Texture, Sampler };
+    Kind kind = Kind::ConstantBuffer;
+    std::string name;           // the cbuffer's name (UniformBlock::name), the texture or the sampler
+    int explicitRegister = -1;  // register(xN) as written, -1 when none
+    bool operator==(const ResourceDeclaration&) const = default;
+};
+
 struct CompiledEffect {
     std::string sourcePath;
     std::vector<Technique> techniques;
@@ -275,6 +287,8 @@ struct CompiledEffect {
     // block, which is not listed: see CompiledShader::needsD3D9PixelOffset).
     std::vector<UniformBlock> uniformBlocks;
     int uniformBufferSize = 0;  // bytes of $Global, the same as uniformBlocks[0].size
+    // User cbuffers, DX10 textures and DX10 samplers in declaration order (ResourceDeclaration).
+    std::vector<ResourceDeclaration> resources;
     // Errors confined to a pass (the pass has valid=false) and warnings.
     std::vector<Diagnostic> diagnostics;
 

@@ -88,6 +88,10 @@ struct ShaderEntry {
 // structs and cbuffers; a parameter both declare must agree (a shared header's cbuffer does).
 // Throws CompileError (a bad profile or a missing entry point names the option and the file).
 CompiledEffect compileShaderFiles(const std::vector<ShaderEntry>& entries, const CompileOptions& options = {});
+// The same for one source held in memory (D3DCompile): `source` is compiled as if it were the file
+// every entry's path names (`virtualPath`; its #includes resolve beside it).
+CompiledEffect compileShaderSource(const std::string& source, const std::string& virtualPath,
+                                   const std::vector<ShaderEntry>& entries, const CompileOptions& options = {});
 
 // A version string that changes whenever compiled output may change (part of every cache key).
 const char* compilerVersion();

@@ -1,0 +1,196 @@
+// Direct3D 11's interfaces with D3D's names and signatures: IUnknown reference counting, the device
+// (resources, views, shaders, state objects), the immediate context and D3D11CreateDevice. Objects
+// are made by the device with a reference count of 1 and freed by their last Release(); ComPtr
+// (com_ptr.h) does that for you. Calls fxport does not implement yet return E_NOTIMPL (and void
+// ones do nothing) with GetLastErrorMessage() saying so.
+#pragma once
+
+#include "fxport/d3d11/d3d11_types.h"
+
+namespace fxport::d3d11 {
+
+class ID3D11Device;
+class ID3D11ClassLinkage;
+class ID3D11ClassInstance;
+
+class IUnknown {
+public:
+    virtual ULONG AddRef() = 0;
+    virtual ULONG Release() = 0;
+
+protected:
+    virtual ~IUnknown() = default;
+};
+
+class ID3D11DeviceChild : public IUnknown {
+public:
+    // Adds a reference to the device, as D3D does.
+    virtual void GetDevice(ID3D11Device** ppDevice) = 0;
+};
+
+class ID3D11Resource : public ID3D11DeviceChild {
+public:
+    virtual void GetType(D3D11_RESOURCE_DIMENSION* pResourceDimension) = 0;
+};
+class ID3D11Buffer : public ID3D11Resource {
+public:
+    virtual void GetDesc(D3D11_BUFFER_DESC* pDesc) = 0;
+};
+class ID3D11Texture2D : public ID3D11Resource {
+public:
+    virtual void GetDesc(D3D11_TEXTURE2D_DESC* pDesc) = 0;
+};
+
+class ID3D11View : public ID3D11DeviceChild {
+public:
+    virtual void GetResource(ID3D11Resource** ppResource) = 0;
+};
+class ID3D11ShaderResourceView : public ID3D11View {
+public:
+    virtual void GetDesc(D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc) = 0;
+};
+class ID3D11RenderTargetView : public ID3D11View {
+public:
+    virtual void GetDesc(D3D11_RENDER_TARGET_VIEW_DESC* pDesc) = 0;
+};
+class ID3D11DepthStencilView : public ID3D11View {
+public:
+    virtual void GetDesc(D3D11_DEPTH_STENCIL_VIEW_DESC* pDesc) = 0;
+};
+class ID3D11UnorderedAccessView : public ID3D11View {};
+
+class ID3D11InputLayout : public ID3D11DeviceChild {};
+class ID3D11VertexShader : public ID3D11DeviceChild {};
+class ID3D11PixelShader : public ID3D11DeviceChild {};
+class ID3D11GeometryShader : public ID3D11DeviceChild {};
+class ID3D11HullShader : public ID3D11DeviceChild {};
+class ID3D11DomainShader : public ID3D11DeviceChild {};
+class ID3D11ComputeShader : public ID3D11DeviceChild {};
+
+class ID3D11SamplerState : public ID3D11DeviceChild {
+public:
+    virtual void GetDesc(D3D11_SAMPLER_DESC* pDesc) = 0;
+};
+class ID3D11BlendState : public ID3D11DeviceChild {
+public:
+    virtual void GetDesc(D3D11_BLEND_DESC* pDesc) = 0;
+};
+class ID3D11RasterizerState : public ID3D11DeviceChild {
+public:
+    virtual void GetDesc(D3D11_RASTERIZER_DESC* pDesc) = 0;
+};
+class ID3D11DepthStencilState : public ID3D11DeviceChild {
+public:
+    virtual void GetDesc(D3D11_DEPTH_STENCIL_DESC* pDesc) = 0;
+};
+
+class ID3D11DeviceContext : public ID3D11DeviceChild {
+public:
+    // --- input assembler
+    virtual void IASetInputLayout(ID3D11InputLayout* pInputLayout) = 0;
+    virtual void IASetVertexBuffers(UINT StartSlot, UINT NumBuffers, ID3D11Buffer* const* ppVertexBuffers,
+                                    const UINT* pStrides, const UINT* pOffsets) = 0;
+    virtual void IASetIndexBuffer(ID3D11Buffer* pIndexBuffer, DXGI_FORMAT Format, UINT Offset) = 0;
+    virtual void IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY Topology) = 0;
+    // --- shader stages
+    virtual void VSSetShader(ID3D11VertexShader* pVertexShader, ID3D11ClassInstance* const* ppClassInstances,
+                             UINT NumClassInstances) = 0;
+    virtual void PSSetShader(ID3D11PixelShader* pPixelShader, ID3D11ClassInstance* const* ppClassInstances,
+                             UINT NumClassInstances) = 0;
+    virtual void GSSetShader(ID3D11GeometryShader* pShader, ID3D11ClassInstance* const* ppClassInstances,
+                             UINT NumClassInstances) = 0;
+    virtual void HSSetShader(ID3D11HullShader* pShader, ID3D11ClassInstance* const* ppClassInstances,
+                             UINT NumClassInstances) = 0;
+    virtual void DSSetShader(ID3D11DomainShader* pShader, ID3D11ClassInstance* const* ppClassInstances,
+                             UINT NumClassInstances) = 0;
+    virtual void CSSetShader(ID3D11ComputeShader* pShader, ID3D11ClassInstance* const* ppClassInstances,
+                             UINT NumClassInstances) = 0;
+    virtual void VSSetConstantBuffers(UINT StartSlot, UINT NumBuffers, ID3D11Buffer* const* ppConstantBuffers) = 0;
+    virtual void PSSetConstantBuffers(UINT StartSlot, UINT NumBuffers, ID3D11Buffer* const* ppConstantBuffers) = 0;
+    virtual void VSSetShaderResources(UINT StartSlot, UINT NumViews, ID3D11ShaderResourceView* const* ppShaderResourceViews) = 0;
+    virtual void PSSetShaderResources(UINT StartSlot, UINT NumViews, ID3D11ShaderResourceView* const* ppShaderResourceViews) = 0;
+    virtual void VSSetSamplers(UINT StartSlot, UINT NumSamplers, ID3D11SamplerState* const* ppSamplers) = 0;
+    virtual void PSSetSamplers(UINT StartSlot, UINT NumSamplers, ID3D11SamplerState* const* ppSamplers) = 0;
+    virtual void CSSetUnorderedAccessViews(UINT StartSlot, UINT NumUAVs, ID3D11UnorderedAccessView* const* ppUnorderedAccessViews,
+                                           const UINT* pUAVInitialCounts) = 0;
+    // --- rasterizer and output merger
+    virtual void RSSetViewports(UINT NumViewports, const D3D11_VIEWPORT* pViewports) = 0;
+    virtual void RSSetScissorRects(UINT NumRects, const D3D11_RECT* pRects) = 0;
+    virtual void RSSetState(ID3D11RasterizerState* pRasterizerState) = 0;
+    virtual void OMSetRenderTargets(UINT NumViews, ID3D11RenderTargetView* const* ppRenderTargetViews,
+                                    ID3D11DepthStencilView* pDepthStencilView) = 0;
+    virtual void OMSetBlendState(ID3D11BlendState* pBlendState, const FLOAT BlendFactor[4], UINT SampleMask) = 0;
+    virtual void OMSetDepthStencilState(ID3D11DepthStencilState* pDepthStencilState, UINT StencilRef) = 0;
+    // --- draws
+    virtual void Draw(UINT VertexCount, UINT StartVertexLocation) = 0;
+    virtual void DrawIndexed(UINT IndexCount, UINT StartIndexLocation, INT BaseVertexLocation) = 0;
+    virtual void DrawInstanced(UINT VertexCountPerInstance, UINT InstanceCount, UINT StartVertexLocation,
+                               UINT StartInstanceLocation) = 0;
+    virtual void DrawIndexedInstanced(UINT IndexCountPerInstance, UINT InstanceCount, UINT StartIndexLocation,
+                                      INT BaseVertexLocation, UINT StartInstanceLocation) = 0;
+    virtual void Dispatch(UINT ThreadGroupCountX, UINT ThreadGroupCountY, UINT ThreadGroupCountZ) = 0;
+    // --- resources
+    virtual HRESULT Map(ID3D11Resource* pResource, UINT Subresource, D3D11_MAP MapType, UINT MapFlags,
+                        D3D11_MAPPED_SUBRESOURCE* pMappedResource) = 0;
+    virtual void Unmap(ID3D11Resource* pResource, UINT Subresource) = 0;
+    virtual void UpdateSubresource(ID3D11Resource* pDstResource, UINT DstSubresource, const D3D11_BOX* pDstBox,
+                                   const void* pSrcData, UINT SrcRowPitch, UINT SrcDepthPitch) = 0;
+    virtual void CopyResource(ID3D11Resource* pDstResource, ID3D11Resource* pSrcResource) = 0;
+    virtual void ClearRenderTargetView(ID3D11RenderTargetView* pRenderTargetView, const FLOAT ColorRGBA[4]) = 0;
+    virtual void ClearDepthStencilView(ID3D11DepthStencilView* pDepthStencilView, UINT ClearFlags, FLOAT Depth,
+                                       UINT8 Stencil) = 0;
+    virtual void GenerateMips(ID3D11ShaderResourceView* pShaderResourceView) = 0;
+    // Unbinds everything and returns every state to D3D's default.
+    virtual void ClearState() = 0;
+    virtual void Flush() = 0;
+};
+
+class ID3D11Device : public IUnknown {
+public:
+    virtual HRESULT CreateBuffer(const D3D11_BUFFER_DESC* pDesc, const D3D11_SUBRESOURCE_DATA* pInitialData,
+                                 ID3D11Buffer** ppBuffer) = 0;
+    virtual HRESULT CreateTexture2D(const D3D11_TEXTURE2D_DESC* pDesc, const D3D11_SUBRESOURCE_DATA* pInitialData,
+                                    ID3D11Texture2D** ppTexture2D) = 0;
+    virtual HRESULT CreateShaderResourceView(ID3D11Resource* pResource, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc,
+                                             ID3D11ShaderResourceView** ppSRView) = 0;
+    virtual HRESULT CreateRenderTargetView(ID3D11Resource* pResource, const D3D11_RENDER_TARGET_VIEW_DESC* pDesc,
+                                           ID3D11RenderTargetView** ppRTView) = 0;
+    virtual HRESULT CreateDepthStencilView(ID3D11Resource* pResource, const D3D11_DEPTH_STENCIL_VIEW_DESC* pDesc,
+                                           ID3D11DepthStencilView** ppDepthStencilView) = 0;
+    virtual HRESULT CreateUnorderedAccessView(ID3D11Resource* pResource, const void* pDesc,
+                                              ID3D11UnorderedAccessView** ppUAView) = 0;
+    virtual HRESULT CreateInputLayout(const D3D11_INPUT_ELEMENT_DESC* pInputElementDescs, UINT NumElements,
+                                      const void* pShaderBytecodeWithInputSignature, SIZE_T BytecodeLength,
+                                      ID3D11InputLayout** ppInputLayout) = 0;
+    virtual HRESULT CreateVertexShader(const void* pShaderBytecode, SIZE_T BytecodeLength, ID3D11ClassLinkage* pClassLinkage,
+                                       ID3D11VertexShader** ppVertexShader) = 0;
+    virtual HRESULT CreatePixelShader(const void* pShaderBytecode, SIZE_T BytecodeLength, ID3D11ClassLinkage* pClassLinkage,
+                                      ID3D11PixelShader** ppPixelShader) = 0;
+    virtual HRESULT CreateGeometryShader(const void* pShaderBytecode, SIZE_T BytecodeLength, ID3D11ClassLinkage* pClassLinkage,
+                                         ID3D11GeometryShader** ppGeometryShader) = 0;
+    virtual HRESULT CreateHullShader(const void* pShaderBytecode, SIZE_T BytecodeLength, ID3D11ClassLinkage* pClassLinkage,
+                                     ID3D11HullShader** ppHullShader) = 0;
+    virtual HRESULT CreateDomainShader(const void* pShaderBytecode, SIZE_T BytecodeLength, ID3D11ClassLinkage* pClassLinkage,
+                                       ID3D11DomainShader** ppDomainShader) = 0;
+    virtual HRESULT CreateComputeShader(const void* pShaderBytecode, SIZE_T BytecodeLength, ID3D11ClassLinkage* pClassLinkage,
+                                        ID3D11ComputeShader** ppComputeShader) = 0;
+    virtual HRESULT CreateSamplerState(const D3D11_SAMPLER_DESC* pSamplerDesc, ID3D11SamplerState** ppSamplerState) = 0;
+    virtual HRESULT CreateBlendState(const D3D11_BLEND_DESC* pBlendStateDesc, ID3D11BlendState** ppBlendState) = 0;
+    virtual HRESULT CreateRasterizerState(const D3D11_RASTERIZER_DESC* pRasterizerDesc,
+                                          ID3D11RasterizerState** ppRasterizerState) = 0;
+    virtual HRESULT CreateDepthStencilState(const D3D11_DEPTH_STENCIL_DESC* pDepthStencilDesc,
+                                            ID3D11DepthStencilState** ppDepthStencilState) = 0;
+    virtual void GetImmediateContext(ID3D11DeviceContext** ppImmediateContext) = 0;
+    virtual D3D_FEATURE_LEVEL GetFeatureLevel() = 0;
+};
+
+// Makes a device and its immediate context. Headless: the device draws into textures on the
+// platform $FXPORT_PLATFORM names (OSMesa by default, "egl" for a GPU). pAdapter and Software must
+// be null; DriverType HARDWARE, UNKNOWN, WARP or REFERENCE all mean the same GL driver. The
+// feature level is 11_0 (the first of pFeatureLevels it must be at most).
+HRESULT D3D11CreateDevice(void* pAdapter, D3D_DRIVER_TYPE DriverType, void* Software, UINT Flags,
+                          const D3D_FEATURE_LEVEL* pFeatureLevels, UINT FeatureLevels, UINT SDKVersion,
+                          ID3D11Device** ppDevice, D3D_FEATURE_LEVEL* pFeatureLevel,
+                          ID3D11DeviceContext** ppImmediateContext);
+
+}  // namespace fxport::d3d11

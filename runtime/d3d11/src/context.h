@@ -1,0 +1,122 @@
+// INTERNAL: the immediate context: D3D's pipeline bindings, held (with a reference each) until a
+// draw copies them into the device core (context.cpp).
+#pragma once
+
+#include <array>
+
+#include "d3d11_impl.h"
+#include "fxport/graphics/effect.h"
+#include "fxport/graphics/vertex_declaration.h"
+
+namespace fxport::d3d11 {
+
+class Context final : public ID3D11DeviceContext {
+public:
+    explicit Context(Device* device);
+    ULONG AddRef() override { return device_->AddRef(); }  // lives as long as its device
+    ULONG Release() override { return device_->Release(); }
+    void GetDevice(ID3D11Device** ppDevice) override {
+        if (!ppDevice) return;
+        device_->AddRef();
+        *ppDevice = device_;
+    }
+
+    void IASetInputLayout(ID3D11InputLayout* pInputLayout) override;
+    void IASetVertexBuffers(UINT StartSlot, UINT NumBuffers, ID3D11Buffer* const* ppVertexBuffers, const UINT* pStrides,
+                            const UINT* pOffsets) override;
+    void IASetIndexBuffer(ID3D11Buffer* pIndexBuffer, DXGI_FORMAT Format, UINT Offset) override;
+    void IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY Topology) override;
+    void VSSetShader(ID3D11VertexShader* pVertexShader, ID3D11ClassInstance* const*, UINT) override;
+    void PSSetShader(ID3D11PixelShader* pPixelShader, ID3D11ClassInstance* const*, UINT) override;
+    void GSSetShader(ID3D11GeometryShader* pShader, ID3D11ClassInstance* const*, UINT) override;
+    void HSSetShader(ID3D11HullShader* pShader, ID3D11ClassInstance* const*, UINT) override;
+    void DSSetShader(ID3D11DomainShader* pShader, ID3D11ClassInstance* const*, UINT) override;
+    void CSSetShader(ID3D11ComputeShader* pShader, ID3D11ClassInstance* const*, UINT) override;
+    void VSSetConstantBuffers(UINT StartSlot, UINT NumBuffers, ID3D11Buffer* const* ppConstantBuffers) override;
+    void PSSetConstantBuffers(UINT StartSlot, UINT NumBuffers, ID3D11Buffer* const* ppConstantBuffers) override;
+    void VSSetShaderResources(UINT StartSlot, UINT NumViews, ID3D11ShaderResourceView* const* ppViews) override;
+    void PSSetShaderResources(UINT StartSlot, UINT NumViews, ID3D11ShaderResourceView* const* ppViews) override;
+    void VSSetSamplers(UINT StartSlot, UINT NumSamplers, ID3D11SamplerState* const* ppSamplers) override;
+    void PSSetSamplers(UINT StartSlot, UINT NumSamplers, ID3D11SamplerState* const* ppSamplers) override;
+    void CSSetUnorderedAccessViews(UINT, UINT, ID3D11UnorderedAccessView* const*, const UINT*) override;
+    void RSSetViewports(UINT NumViewports, const D3D11_VIEWPORT* pViewports) override;
+    void RSSetScissorRects(UINT NumRects, const D3D11_RECT* pRects) override;
+    void RSSetState(ID3D11RasterizerState* pRasterizerState) override;
+    void OMSetRenderTargets(UINT NumViews, ID3D11RenderTargetView* const* ppRenderTargetViews,
+                            ID3D11DepthStencilView* pDepthStencilView) override;
+    void OMSetBlendState(ID3D11BlendState* pBlendState, const FLOAT BlendFactor[4], UINT SampleMask) override;
+    void OMSetDepthStencilState(ID3D11DepthStencilState* pDepthStencilState, UINT StencilRef) override;
+    void Draw(UINT VertexCount, UINT StartVertexLocation) override;
+    void DrawIndexed(UINT IndexCount, UINT StartIndexLocation, INT BaseVertexLocation) override;
+    void DrawInstanced(UINT VertexCountPerInstance, UINT InstanceCount, UINT StartVertexLocation, UINT StartInstanceLocation) override;
+    void DrawIndexedInstanced(UINT IndexCountPerInstance, UINT InstanceCount, UINT StartIndexLocation, INT BaseVertexLocation,
+                              UINT StartInstanceLocation) override;
+    void Dispatch(UINT, UINT, UINT) override;
+    HRESULT Map(ID3D11Resource* pResource, UINT Subresource, D3D11_MAP MapType, UINT MapFlags,
+                D3D11_MAPPED_SUBRESOURCE* pMappedResource) override;
+    void Unmap(ID3D11Resource* pResource, UINT Subresource) override;
+    void UpdateSubresource(ID3D11Resource* pDstResource, UINT DstSubresource, const D3D11_BOX* pDstBox, const void* pSrcData,
+                           UINT SrcRowPitch, UINT SrcDepthPitch) override;
+    void CopyResource(ID3D11Resource* pDstResource, ID3D11Resource* pSrcResource) override;
+    void ClearRenderTargetView(ID3D11RenderTargetView* pRenderTargetView, const FLOAT ColorRGBA[4]) override;
+    void ClearDepthStencilView(ID3D11DepthStencilView* pDepthStencilView, UINT ClearFlags, FLOAT Depth, UINT8 Stencil) override;
+    void GenerateMips(ID3D11ShaderResourceView* pShaderResourceView) override;
+    void ClearState() override;
+    void Flush() override;
+
+    // The effects framework (effect11.cpp): a pass applied on this context runs at the next draws,
+    // until VSSetShader/PSSetShader, ClearState or another Apply; `owner` is its ID3DX11Effect,
+    // which forgets itself here when released.
+    void applyEffectPass(EffectPass* pass, const void* owner) {
+        effectPass_ = pass;
+        effectOwner_ = owner;
+    }
+    void forgetEffect(const void* owner) {
+        if (effectOwner_ == owner) effectPass_ = nullptr, effectOwner_ = nullptr;
+    }
+
+private:
+    struct Stage {
+        std::array<ComPtr<Buffer>, D3D11_COMMONSHADER_CONSTANT_BUFFER_API_SLOT_COUNT> constantBuffers;
+        std::array<ComPtr<ShaderResourceView>, 32> views;  // t0..t31 (D3D has 128; fxport samples 16 units)
+        std::array<ComPtr<SamplerState>, D3D11_COMMONSHADER_SAMPLER_SLOT_COUNT> samplers;
+    };
+    // Copies the bindings into the device core; false (with the reason noted) when D3D would draw
+    // nothing or the draw cannot be made.
+    bool prepare(const char* call);
+    void bindStage(int stage, const ShaderBindings& bindings, const Stage& s);
+    void draw(const char* call, core::DrawArguments arguments, bool indexed);
+
+    Device* device_;
+    ComPtr<InputLayout> layout_;
+    ComPtr<Buffer> vertexBuffer_;
+    UINT stride_ = 0, vertexOffset_ = 0;
+    ComPtr<Buffer> indexBuffer_;
+    DXGI_FORMAT indexFormat_ = DXGI_FORMAT_UNKNOWN;
+    UINT indexOffset_ = 0;
+    D3D11_PRIMITIVE_TOPOLOGY topology_ = D3D11_PRIMITIVE_TOPOLOGY_UNDEFINED;
+    ComPtr<VertexShader> vertexShader_;
+    ComPtr<PixelShader> pixelShader_;
+    Stage vs_, ps_;
+    D3D11_VIEWPORT viewport_;
+    bool viewportSet_ = false;
+    D3D11_RECT scissor_;
+    ComPtr<RasterizerState> rasterizer_;
+    ComPtr<BlendState> blend_;
+    FLOAT blendFactor_[4] = {1, 1, 1, 1};
+    UINT sampleMask_ = 0xffffffffu;
+    ComPtr<DepthStencilState> depthStencil_;
+    UINT stencilRef_ = 0;
+    std::array<ComPtr<RenderTargetView>, D3D11_SIMULTANEOUS_RENDER_TARGET_COUNT> targets_;
+    ComPtr<DepthStencilView> depthView_;
+    // Device-core states for the D3D defaults (a null state object), decoded once.
+    fxport::BlendState defaultBlend_;
+    fxport::RasterizerState defaultRasterizer_;
+    fxport::DepthStencilState defaultDepthStencil_;
+    fxport::SamplerState defaultSampler_;
+    VertexDeclaration declaration_;
+    EffectPass* effectPass_ = nullptr;  // fxport::EffectPass (applied at each draw instead of VS/PS)
+    const void* effectOwner_ = nullptr;  // the input layout with the slot-0 stride, made at each draw
+};
+
+}  // namespace fxport::d3d11

@@ -1,0 +1,243 @@
+// INTERNAL: the D3D11 front end's objects. Each D3D object holds the device-core object it stands
+// for (a Texture2D or RenderTarget2D, a core::ByteBuffer, a core::ShaderCode ...) or a description
+// decoded once into the XNA device's state structs; the context copies its bindings into the
+// device core at each draw. No GL here (tests/layering checks it).
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "front_end_core.h"
+#include "fxport/d3d11.h"
+#include "fxport/graphics/blend_state.h"
+#include "fxport/graphics/depth_stencil_state.h"
+#include "fxport/graphics/graphics_device.h"
+#include "fxport/graphics/rasterizer_state.h"
+#include "fxport/graphics/render_target.h"
+#include "fxport/graphics/sampler_state.h"
+#include "fxport/graphics/texture.h"
+#include "fxport/xlate/compiled_effect.h"
+#include "shader_bindings.h"
+
+namespace fxport::d3d11 {
+
+class Device;
+
+// --- results (errors.cpp)
+HRESULT fail(HRESULT code, const std::string& message);  // records the message, returns code
+HRESULT succeed();                                         // clears the message, returns S_OK
+void note(const std::string& message);                     // a void call's problem
+// guarded(call, body) (guarded.h) turns the device core's exceptions into HRESULTs.
+
+// --- reference counting: every object starts at 1 and deletes itself at 0.
+template <class Interface>
+class Object : public Interface {
+public:
+    explicit Object(Device* device) : device_(device) {}
+    ULONG AddRef() override { return ++references_; }
+    ULONG Release() override {
+        const ULONG left = --references_;
+        if (left == 0) delete this;
+        return left;
+    }
+    void GetDevice(ID3D11Device** ppDevice) override;
+    Device& device() const { return *device_; }
+
+protected:
+    Device* device_;
+
+private:
+    std::atomic<ULONG> references_{1};
+};
+
+// --- resources
+class Buffer final : public Object<ID3D11Buffer> {
+public:
+    Buffer(Device* device, const D3D11_BUFFER_DESC& desc, const void* initial);
+    void GetType(D3D11_RESOURCE_DIMENSION* d) override { if (d) *d = D3D11_RESOURCE_DIMENSION_BUFFER; }
+    void GetDesc(D3D11_BUFFER_DESC* pDesc) override { if (pDesc) *pDesc = desc; }
+    D3D11_BUFFER_DESC desc;
+    std::unique_ptr<core::ByteBuffer> gpu;  // null for staging buffers
+    std::vector<std::uint8_t> cpu;          // staging buffers, and what Map hands out
+    bool mapped = false;
+};
+
+class Texture final : public Object<ID3D11Texture2D> {
+public:
+    Texture(Device* device, const D3D11_TEXTURE2D_DESC& desc);
+    void GetType(D3D11_RESOURCE_DIMENSION* d) override { if (d) *d = D3D11_RESOURCE_DIMENSION_TEXTURE2D; }
+    void GetDesc(D3D11_TEXTURE2D_DESC* pDesc) override { if (pDesc) *pDesc = desc; }
+    D3D11_TEXTURE2D_DESC desc;
+    SurfaceFormat format = SurfaceFormat::Color;
+    std::unique_ptr<fxport::Texture2D> colour;      // a RenderTarget2D when BIND_RENDER_TARGET
+    std::unique_ptr<core::DepthBuffer> depth;       // BIND_DEPTH_STENCIL
+    std::vector<std::vector<std::uint8_t>> staging;  // USAGE_STAGING: each level's texels, tightly packed
+    int levels = 1;
+    int mappedLevel = -1;
+    int levelWidth(int level) const { return std::max(1, int(desc.Width) >> level); }
+    int levelHeight(int level) const { return std::max(1, int(desc.Height) >> level); }
+    std::size_t levelBytes(int level) const;
+};
+
+class ShaderResourceView final : public Object<ID3D11ShaderResourceView> {
+public:
+    ShaderResourceView(Device* device, Texture* viewed, const D3D11_SHADER_RESOURCE_VIEW_DESC& d)
+        : Object(device), texture(viewed), desc(d) { texture->AddRef(); }
+    ~ShaderResourceView() override { texture->Release(); }
+    void GetResource(ID3D11Resource** r) override { texture->AddRef(); *r = texture; }
+    void GetDesc(D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc) override { if (pDesc) *pDesc = desc; }
+    Texture* texture;
+    D3D11_SHADER_RESOURCE_VIEW_DESC desc;
+};
+class RenderTargetView final : public Object<ID3D11RenderTargetView> {
+public:
+    RenderTargetView(Device* device, Texture* viewed, const D3D11_RENDER_TARGET_VIEW_DESC& d)
+        : Object(device), texture(viewed), desc(d) { texture->AddRef(); }
+    ~RenderTargetView() override { texture->Release(); }
+    void GetResource(ID3D11Resource** r) override { texture->AddRef(); *r = texture; }
+    void GetDesc(D3D11_RENDER_TARGET_VIEW_DESC* pDesc) override { if (pDesc) *pDesc = desc; }
+    RenderTarget2D& target() const { return static_cast<RenderTarget2D&>(*texture->colour); }
+    Texture* texture;
+    D3D11_RENDER_TARGET_VIEW_DESC desc;
+};
+class DepthStencilView final : public Object<ID3D11DepthStencilView> {
+public:
+    DepthStencilView(Device* device, Texture* viewed, const D3D11_DEPTH_STENCIL_VIEW_DESC& d)
+        : Object(device), texture(viewed), desc(d) { texture->AddRef(); }
+    ~DepthStencilView() override { texture->Release(); }
+    void GetResource(ID3D11Resource** r) override { texture->AddRef(); *r = texture; }
+    void GetDesc(D3D11_DEPTH_STENCIL_VIEW_DESC* pDesc) override { if (pDesc) *pDesc = desc; }
+    Texture* texture;
+    D3D11_DEPTH_STENCIL_VIEW_DESC desc;
+};
+
+// --- shaders
+class VertexShader final : public Object<ID3D11VertexShader> {
+public:
+    VertexShader(Device* device, std::unique_ptr<core::ShaderCode> shaderCode, ShaderBindings slots)
+        : Object(device), code(std::move(shaderCode)), bindings(std::move(slots)) {}
+    std::unique_ptr<core::ShaderCode> code;
+    ShaderBindings bindings;
+};
+class PixelShader final : public Object<ID3D11PixelShader> {
+public:
+    PixelShader(Device* device, std::unique_ptr<core::ShaderCode> shaderCode, ShaderBindings slots)
+        : Object(device), code(std::move(shaderCode)), bindings(std::move(slots)) {}
+    std::unique_ptr<core::ShaderCode> code;
+    ShaderBindings bindings;
+};
+class InputLayout final : public Object<ID3D11InputLayout> {
+public:
+    InputLayout(Device* device, std::vector<VertexElement> layoutElements) : Object(device), elements(std::move(layoutElements)) {}
+    std::vector<VertexElement> elements;  // offsets within slot 0's vertex
+};
+
+// --- state objects, decoded once into the device core's descriptions (states.cpp)
+class SamplerState final : public Object<ID3D11SamplerState> {
+public:
+    SamplerState(Device* device, const D3D11_SAMPLER_DESC& d, const fxport::SamplerState& s) : Object(device), desc(d), state(s) {}
+    void GetDesc(D3D11_SAMPLER_DESC* pDesc) override { if (pDesc) *pDesc = desc; }
+    D3D11_SAMPLER_DESC desc;
+    fxport::SamplerState state;
+};
+class BlendState final : public Object<ID3D11BlendState> {
+public:
+    BlendState(Device* device, const D3D11_BLEND_DESC& d, const fxport::BlendState& s) : Object(device), desc(d), state(s) {}
+    void GetDesc(D3D11_BLEND_DESC* pDesc) override { if (pDesc) *pDesc = desc; }
+    D3D11_BLEND_DESC desc;
+    fxport::BlendState state;
+};
+class RasterizerState final : public Object<ID3D11RasterizerState> {
+public:
+    RasterizerState(Device* device, const D3D11_RASTERIZER_DESC& d, const fxport::RasterizerState& s) : Object(device), desc(d), state(s) {}
+    void GetDesc(D3D11_RASTERIZER_DESC* pDesc) override { if (pDesc) *pDesc = desc; }
+    D3D11_RASTERIZER_DESC desc;
+    fxport::RasterizerState state;
+};
+class DepthStencilState final : public Object<ID3D11DepthStencilState> {
+public:
+    DepthStencilState(Device* device, const D3D11_DEPTH_STENCIL_DESC& d, const fxport::DepthStencilState& s) : Object(device), desc(d), state(s) {}
+    void GetDesc(D3D11_DEPTH_STENCIL_DESC* pDesc) override { if (pDesc) *pDesc = desc; }
+    D3D11_DEPTH_STENCIL_DESC desc;
+    fxport::DepthStencilState state;
+};
+// Descriptions -> device-core states; E_INVALIDARG naming the field and value (states.cpp).
+HRESULT decodeSampler(const D3D11_SAMPLER_DESC& d, fxport::SamplerState& out);
+HRESULT decodeBlend(const D3D11_BLEND_DESC& d, fxport::BlendState& out);
+HRESULT decodeRasterizer(const D3D11_RASTERIZER_DESC& d, fxport::RasterizerState& out);
+HRESULT decodeDepthStencil(const D3D11_DEPTH_STENCIL_DESC& d, fxport::DepthStencilState& out);
+D3D11_SAMPLER_DESC defaultSamplerDesc();
+
+// --- formats (formats.cpp)
+const char* formatName(DXGI_FORMAT format);
+bool textureFormat(DXGI_FORMAT format, SurfaceFormat& out);
+bool depthFormat(DXGI_FORMAT format, DepthFormat& out);
+bool vertexFormat(DXGI_FORMAT format, VertexElementFormat& out);
+
+// --- a compiled-shader blob's content (compile.cpp)
+std::string narrowPath(const wchar_t* path);  // UTF-8
+// A blob starts with one line saying what D3DCompile made: a shader (vs_*, ps_* ... targets) or a
+// whole effect (fx_* targets); the compiled effect's text follows.
+enum class BlobKind { Shader, Effect };
+std::shared_ptr<const xlate::CompiledEffect> effectFromBytecode(const void* bytecode, SIZE_T length, std::string& error,
+                                                                BlobKind* kind = nullptr);
+std::string shaderBlob(const xlate::CompiledEffect& shader);  // the bytes of a shader blob
+
+class Context;
+
+class Device final : public ID3D11Device {
+public:
+    Device();
+    ~Device() override;
+    ULONG AddRef() override { return ++references_; }
+    ULONG Release() override;
+
+    HRESULT CreateBuffer(const D3D11_BUFFER_DESC* pDesc, const D3D11_SUBRESOURCE_DATA* pInitialData, ID3D11Buffer** ppBuffer) override;
+    HRESULT CreateTexture2D(const D3D11_TEXTURE2D_DESC* pDesc, const D3D11_SUBRESOURCE_DATA* pInitialData,
+                            ID3D11Texture2D** ppTexture2D) override;
+    HRESULT CreateShaderResourceView(ID3D11Resource* pResource, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc,
+                                     ID3D11ShaderResourceView** ppSRView) override;
+    HRESULT CreateRenderTargetView(ID3D11Resource* pResource, const D3D11_RENDER_TARGET_VIEW_DESC* pDesc,
+                                   ID3D11RenderTargetView** ppRTView) override;
+    HRESULT CreateDepthStencilView(ID3D11Resource* pResource, const D3D11_DEPTH_STENCIL_VIEW_DESC* pDesc,
+                                   ID3D11DepthStencilView** ppDepthStencilView) override;
+    HRESULT CreateUnorderedAccessView(ID3D11Resource* pResource, const void* pDesc, ID3D11UnorderedAccessView** ppUAView) override;
+    HRESULT CreateInputLayout(const D3D11_INPUT_ELEMENT_DESC* pInputElementDescs, UINT NumElements,
+                              const void* pShaderBytecodeWithInputSignature, SIZE_T BytecodeLength,
+                              ID3D11InputLayout** ppInputLayout) override;
+    HRESULT CreateVertexShader(const void* pShaderBytecode, SIZE_T BytecodeLength, ID3D11ClassLinkage* pClassLinkage,
+                               ID3D11VertexShader** ppVertexShader) override;
+    HRESULT CreatePixelShader(const void* pShaderBytecode, SIZE_T BytecodeLength, ID3D11ClassLinkage* pClassLinkage,
+                              ID3D11PixelShader** ppPixelShader) override;
+    HRESULT CreateGeometryShader(const void*, SIZE_T, ID3D11ClassLinkage*, ID3D11GeometryShader** pp) override;
+    HRESULT CreateHullShader(const void*, SIZE_T, ID3D11ClassLinkage*, ID3D11HullShader** pp) override;
+    HRESULT CreateDomainShader(const void*, SIZE_T, ID3D11ClassLinkage*, ID3D11DomainShader** pp) override;
+    HRESULT CreateComputeShader(const void*, SIZE_T, ID3D11ClassLinkage*, ID3D11ComputeShader** pp) override;
+    HRESULT CreateSamplerState(const D3D11_SAMPLER_DESC* pSamplerDesc, ID3D11SamplerState** ppSamplerState) override;
+    HRESULT CreateBlendState(const D3D11_BLEND_DESC* pBlendStateDesc, ID3D11BlendState** ppBlendState) override;
+    HRESULT CreateRasterizerState(const D3D11_RASTERIZER_DESC* pRasterizerDesc, ID3D11RasterizerState** ppRasterizerState) override;
+    HRESULT CreateDepthStencilState(const D3D11_DEPTH_STENCIL_DESC* pDepthStencilDesc,
+                                    ID3D11DepthStencilState** ppDepthStencilState) override;
+    void GetImmediateContext(ID3D11DeviceContext** ppImmediateContext) override;
+    D3D_FEATURE_LEVEL GetFeatureLevel() override { return D3D_FEATURE_LEVEL_11_0; }
+
+    GraphicsDevice& core() { return *core_; }
+    Context& context() { return *context_; }
+
+private:
+    std::atomic<ULONG> references_{1};
+    std::unique_ptr<GraphicsDevice> core_;
+    std::unique_ptr<Context> context_;
+};
+
+template <class Interface>
+void Object<Interface>::GetDevice(ID3D11Device** ppDevice) {
+    if (!ppDevice) return;
+    device_->AddRef();
+    *ppDevice = device_;
+}
+
+}  // namespace fxport::d3d11

@@ -1,0 +1,226 @@
+// D3D11CreateDevice and the device's Create* calls for shaders, input layouts and state objects
+// (resources.cpp and views.cpp make resources and views). The device owns the device core (an
+// XNA GraphicsDevice made headless, with D3D's defaults where XNA's differ) and the immediate
+// context.
+#include <algorithm>
+#include <cctype>
+
+#include "context.h"
+#include "guarded.h"
+
+namespace fxport::d3d11 {
+
+namespace {
+
+PresentationParameters coreParameters() {
+    PresentationParameters p;
+    // The core's back buffer is never shown: D3D11 renders into textures (no swap chain yet).
+    p.BackBufferWidth = 1;
+    p.BackBufferHeight = 1;
+    p.DepthStencilFormat = DepthFormat::None;
+    // D3D keeps a target's contents when it is bound again (XNA's DiscardContents clears it).
+    p.RenderTargetUsage = RenderTargetUsage::PreserveContents;
+    // Each draw is exactly what was asked; the core's compute-pass rewrite stays off.
+    p.ComputePasses = false;
+    return p;
+}
+
+std::string upper(std::string s) {
+    for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
+    return s;
+}
+
+// The shader of `stage` in a compiled blob (D3DCompile makes one shader per blob).
+int shaderOfStage(const xlate::CompiledEffect& e, xlate::ShaderStage stage) {
+    for (std::size_t i = 0; i < e.shaders.size(); ++i)
+        if (e.shaders[i].profile.stage == stage) return int(i);
+    return -1;
+}
+
+const char* stageName(xlate::ShaderStage s) {
+    return s == xlate::ShaderStage::Vertex ? "vertex" : s == xlate::ShaderStage::Pixel ? "pixel" : "geometry";
+}
+
+template <class Shader, class Interface>
+HRESULT createShader(Device* device, const void* bytecode, SIZE_T length, xlate::ShaderStage stage, const char* call, Interface** out) {
+    if (!bytecode || length == 0) return fail(E_INVALIDARG, std::string(call) + ": pShaderBytecode is null or empty");
+    std::string error;
+    BlobKind kind = BlobKind::Shader;
+    std::shared_ptr<const xlate::CompiledEffect> effect = effectFromBytecode(bytecode, length, error, &kind);
+    if (!effect) return fail(E_INVALIDARG, std::string(call) + ": " + error);
+    if (kind != BlobKind::Shader)
+        return fail(E_INVALIDARG, std::string(call) + ": the bytecode is a whole effect (an fx_* target); make it with D3DX11CreateEffectFromMemory");
+    const int index = shaderOfStage(*effect, stage);
+    if (index < 0) {
+        const std::string held = effect->shaders.empty() ? std::string("no shader") : "a " + effect->shaders[0].profile.name + " shader";
+        return fail(E_INVALIDARG, std::string(call) + ": the bytecode holds " + held + ", not a " + stageName(stage) + " shader");
+    }
+    return guarded(call, [&] {
+        ShaderBindings bindings = bindingsOf(*effect, index);
+        if (std::string mismatch = layoutMismatch(*effect, bindings); !mismatch.empty())
+            return fail(E_FAIL, std::string(call) + ": " + mismatch);
+        const xlate::CompiledShader& s = effect->shaders[std::size_t(index)];
+        const std::string label = effect->sourcePath + ": " + s.entryPoint + " (" + s.profile.name + ")";
+        auto code = std::make_unique<core::ShaderCode>(device->core(), effect, index, label);
+        if (out) *out = new Shader(device, std::move(code), std::move(bindings));
+        return succeed();
+    });
+}
+
+// The XNA usage whose semantic is `name` + index ("TEXCOORD" 1 -> TextureCoordinate 1).
+bool usageOf(const std::string& nameIn, UINT index, VertexElementUsage& out) {
+    // An SV_Position vertex input is fed by an "SV_POSITION" element; the core binds it as POSITION.
+    const std::string name = upper(nameIn) == "SV_POSITION" ? std::string("POSITION") : nameIn;
+    for (int u = 0; u <= int(VertexElementUsage::TessellateFactor); ++u) {
+        VertexElement e(0, VertexElementFormat::Single, VertexElementUsage(u), int(index));
+        if (vertexElementSemantic(e) == upper(name) + std::to_string(index)) {
+            out = VertexElementUsage(u);
+            return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace
+
+Device::Device() : core_(std::make_unique<GraphicsDevice>(coreParameters())) { context_ = std::make_unique<Context>(this); }
+
+Device::~Device() {
+    context_.reset();  // releases what it binds while the core is alive
+    core_.reset();
+}
+
+ULONG Device::Release() {
+    const ULONG left = --references_;
+    if (left == 0) delete this;
+    return left;
+}
+
+void Device::GetImmediateContext(ID3D11DeviceContext** pp) {
+    if (!pp) return;
+    AddRef();
+    *pp = context_.get();
+}
+
+HRESULT Device::CreateVertexShader(const void* b, SIZE_T n, ID3D11ClassLinkage* linkage, ID3D11VertexShader** pp) {
+    if (linkage) return fail(E_NOTIMPL, "CreateVertexShader: class linkage (dynamic shader linking) is not supported");
+    return createShader<VertexShader>(this, b, n, xlate::ShaderStage::Vertex, "CreateVertexShader", pp);
+}
+HRESULT Device::CreatePixelShader(const void* b, SIZE_T n, ID3D11ClassLinkage* linkage, ID3D11PixelShader** pp) {
+    if (linkage) return fail(E_NOTIMPL, "CreatePixelShader: class linkage (dynamic shader linking) is not supported");
+    return createShader<PixelShader>(this, b, n, xlate::ShaderStage::Pixel, "CreatePixelShader", pp);
+}
+HRESULT Device::CreateGeometryShader(const void*, SIZE_T, ID3D11ClassLinkage*, ID3D11GeometryShader**) {
+    return fail(E_NOTIMPL, "CreateGeometryShader: geometry shaders are not implemented in the D3D11 front end yet (effects run them)");
+}
+HRESULT Device::CreateHullShader(const void*, SIZE_T, ID3D11ClassLinkage*, ID3D11HullShader**) {
+    return fail(E_NOTIMPL, "CreateHullShader: tessellation (hull shaders) is not implemented in the D3D11 front end");
+}
+HRESULT Device::CreateDomainShader(const void*, SIZE_T, ID3D11ClassLinkage*, ID3D11DomainShader**) {
+    return fail(E_NOTIMPL, "CreateDomainShader: tessellation (domain shaders) is not implemented in the D3D11 front end");
+}
+HRESULT Device::CreateComputeShader(const void*, SIZE_T, ID3D11ClassLinkage*, ID3D11ComputeShader**) {
+    return fail(E_NOTIMPL, "CreateComputeShader: compute shaders are not implemented in the D3D11 front end");
+}
+
+HRESULT Device::CreateInputLayout(const D3D11_INPUT_ELEMENT_DESC* descs, UINT count, const void* bytecode, SIZE_T length,
+                                  ID3D11InputLayout** pp) {
+    const char* call = "CreateInputLayout";
+    if (count > 0 && !descs) return fail(E_INVALIDARG, "CreateInputLayout: pInputElementDescs is null");
+    if (count > D3D11_IA_VERTEX_INPUT_RESOURCE_SLOT_COUNT)
+        return fail(E_INVALIDARG, "CreateInputLayout: NumElements = " + std::to_string(count) + " (at most 32)");
+    std::string error;
+    std::shared_ptr<const xlate::CompiledEffect> effect = effectFromBytecode(bytecode, length, error);
+    if (!effect) return fail(E_INVALIDARG, std::string(call) + ": " + error);
+    const int vs = shaderOfStage(*effect, xlate::ShaderStage::Vertex);
+    if (vs < 0) return fail(E_INVALIDARG, "CreateInputLayout: the bytecode is not a vertex shader's (it has no input signature)");
+    std::vector<VertexElement> elements;
+    std::vector<std::string> semantics;
+    UINT offset = 0;
+    for (UINT i = 0; i < count; ++i) {
+        const D3D11_INPUT_ELEMENT_DESC& d = descs[i];
+        const std::string at = "CreateInputLayout: pInputElementDescs[" + std::to_string(i) + "].";
+        if (!d.SemanticName) return fail(E_INVALIDARG, at + "SemanticName is null");
+        VertexElementFormat format;
+        if (!vertexFormat(d.Format, format))
+            return fail(d.Format == DXGI_FORMAT_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
+                        at + "Format = " + formatName(d.Format) + " (" + std::to_string(d.Format) + "): not a vertex format fxport supports");
+        if (d.InputSlot != 0)
+            return fail(E_NOTIMPL, at + "InputSlot = " + std::to_string(d.InputSlot) + ": fxport reads vertices from slot 0 only");
+        if (d.InputSlotClass != D3D11_INPUT_PER_VERTEX_DATA)
+            return fail(d.InputSlotClass == D3D11_INPUT_PER_INSTANCE_DATA ? E_NOTIMPL : E_INVALIDARG,
+                        at + "InputSlotClass = " + std::to_string(d.InputSlotClass) + " (per-instance data is not supported yet)");
+        VertexElementUsage usage;
+        if (!usageOf(d.SemanticName, d.SemanticIndex, usage))
+            return fail(E_NOTIMPL, at + "SemanticName = \"" + std::string(d.SemanticName) +
+                                       "\": fxport matches vertex elements by the standard semantics (POSITION, NORMAL, TEXCOORD, COLOR, "
+                                       "TANGENT, BINORMAL, BLENDINDICES, BLENDWEIGHT, PSIZE, FOG ...)");
+        if (d.AlignedByteOffset != D3D11_APPEND_ALIGNED_ELEMENT) offset = d.AlignedByteOffset;
+        if (offset % 4 != 0) return fail(E_INVALIDARG, at + "AlignedByteOffset = " + std::to_string(offset) + " (must be a multiple of 4)");
+        const std::string semantic = vertexElementSemantic(VertexElement(0, format, usage, int(d.SemanticIndex)));
+        if (std::find(semantics.begin(), semantics.end(), semantic) != semantics.end())
+            return fail(E_INVALIDARG, at + "SemanticName/SemanticIndex = " + semantic + " appears twice");
+        semantics.push_back(semantic);
+        elements.emplace_back(int(offset), format, usage, int(d.SemanticIndex));
+        offset += UINT(vertexElementSize(format));
+    }
+    // D3D's rule: every input of the shader's signature is in the layout (by name and index).
+    for (const xlate::VertexInput& input : effect->shaders[std::size_t(vs)].inputs) {
+        const bool position = input.semantic.rfind("SV_POSITION", 0) == 0;
+        if (input.semantic.rfind("SV_", 0) == 0 && !position) continue;  // system values need no element
+        const std::string wanted = position ? input.semantic.substr(3) : input.semantic;
+        if (std::find(semantics.begin(), semantics.end(), wanted) == semantics.end() &&
+            std::find(semantics.begin(), semantics.end(), input.semantic) == semantics.end())
+            return fail(E_INVALIDARG, "CreateInputLayout: the vertex shader's input " + input.semantic +
+                                          " has no element in the layout (semantics match by name and index)");
+    }
+    if (pp) *pp = new InputLayout(this, std::move(elements));
+    return succeed();
+}
+
+template <class State, class Interface, class Desc, class Core>
+HRESULT createState(Device* device, const Desc* desc, Interface** pp, HRESULT (*decode)(const Desc&, Core&), const char* call) {
+    if (!desc) return fail(E_INVALIDARG, std::string(call) + ": the description is null");
+    Core decoded;
+    if (HRESULT hr = decode(*desc, decoded); FAILED(hr)) return hr;
+    if (pp) *pp = new State(device, *desc, decoded);
+    return succeed();
+}
+
+HRESULT Device::CreateSamplerState(const D3D11_SAMPLER_DESC* d, ID3D11SamplerState** pp) {
+    return createState<SamplerState>(this, d, pp, &decodeSampler, "CreateSamplerState");
+}
+HRESULT Device::CreateBlendState(const D3D11_BLEND_DESC* d, ID3D11BlendState** pp) {
+    return createState<BlendState>(this, d, pp, &decodeBlend, "CreateBlendState");
+}
+HRESULT Device::CreateRasterizerState(const D3D11_RASTERIZER_DESC* d, ID3D11RasterizerState** pp) {
+    return createState<RasterizerState>(this, d, pp, &decodeRasterizer, "CreateRasterizerState");
+}
+HRESULT Device::CreateDepthStencilState(const D3D11_DEPTH_STENCIL_DESC* d, ID3D11DepthStencilState** pp) {
+    return createState<DepthStencilState>(this, d, pp, &decodeDepthStencil, "CreateDepthStencilState");
+}
+
+HRESULT D3D11CreateDevice(void* pAdapter, D3D_DRIVER_TYPE DriverType, void* Software, UINT, const D3D_FEATURE_LEVEL* pFeatureLevels,
+                          UINT FeatureLevels, UINT SDKVersion, ID3D11Device** ppDevice, D3D_FEATURE_LEVEL* pFeatureLevel,
+                          ID3D11DeviceContext** ppImmediateContext) {
+    if (pAdapter || Software) return fail(E_INVALIDARG, "D3D11CreateDevice: pAdapter and Software must be null (fxport has one GL driver)");
+    if (DriverType == D3D_DRIVER_TYPE_NULL || DriverType > D3D_DRIVER_TYPE_WARP)
+        return fail(E_INVALIDARG, "D3D11CreateDevice: DriverType = " + std::to_string(DriverType) + " (HARDWARE, WARP, REFERENCE or UNKNOWN)");
+    if (SDKVersion != D3D11_SDK_VERSION)
+        return fail(E_INVALIDARG, "D3D11CreateDevice: SDKVersion = " + std::to_string(SDKVersion) + " (D3D11_SDK_VERSION is 7)");
+    if (pFeatureLevels && FeatureLevels > 0) {
+        const bool any = std::any_of(pFeatureLevels, pFeatureLevels + FeatureLevels, [](D3D_FEATURE_LEVEL l) { return l <= D3D_FEATURE_LEVEL_11_0; });
+        if (!any) return fail(E_INVALIDARG, "D3D11CreateDevice: none of pFeatureLevels is 11_0 or below");
+    }
+    if (pFeatureLevel) *pFeatureLevel = D3D_FEATURE_LEVEL_11_0;
+    if (!ppDevice && !ppImmediateContext) return S_FALSE;  // D3D: the arguments are valid
+    return guarded("D3D11CreateDevice", [&] {
+        auto* device = new Device();
+        if (ppImmediateContext) device->GetImmediateContext(ppImmediateContext);
+        if (ppDevice) *ppDevice = device;
+        else device->Release();  // the context holds it
+        return succeed();
+    });
+}
+
+}  // namespace fxport::d3d11

@@ -1,0 +1,244 @@
+// D3DReflect: ID3D11ShaderReflection over a compiled blob: constant buffers with their variables at
+// D3D's packed offsets, bound resources with their b#/t#/s# registers (shader_bindings.h), the
+// vertex shader's input signature. Sub-objects live in the reflection object, as in D3D.
+#include <algorithm>
+#include <cctype>
+#include <deque>
+#include <memory>
+
+#include "d3d11_impl.h"
+
+namespace fxport::d3d11 {
+
+namespace {
+
+std::pair<std::string, UINT> splitSemantic(const std::string& s) {
+    std::size_t digits = s.size();
+    while (digits > 0 && std::isdigit(static_cast<unsigned char>(s[digits - 1]))) --digits;
+    return {s.substr(0, digits), digits < s.size() ? UINT(std::stoul(s.substr(digits))) : 0u};
+}
+
+class ReflectionType final : public ID3D11ShaderReflectionType {
+public:
+    D3D11_SHADER_TYPE_DESC desc;
+    bool valid = false;
+    std::string name;
+    HRESULT GetDesc(D3D11_SHADER_TYPE_DESC* p) override {
+        if (!valid || !p) return E_FAIL;
+        *p = desc;
+        p->Name = name.c_str();
+        return S_OK;
+    }
+};
+
+class ReflectionVariable final : public ID3D11ShaderReflectionVariable {
+public:
+    D3D11_SHADER_VARIABLE_DESC desc;
+    std::string name;
+    ReflectionType type;
+    bool valid = false;
+    HRESULT GetDesc(D3D11_SHADER_VARIABLE_DESC* p) override {
+        if (!valid || !p) return E_FAIL;
+        *p = desc;
+        p->Name = name.c_str();
+        return S_OK;
+    }
+    ID3D11ShaderReflectionType* GetType() override { return &type; }
+};
+
+class ReflectionBuffer final : public ID3D11ShaderReflectionConstantBuffer {
+public:
+    D3D11_SHADER_BUFFER_DESC desc;
+    std::string name;
+    std::deque<ReflectionVariable> variables;
+    ReflectionVariable* invalid = nullptr;
+    bool valid = false;
+    HRESULT GetDesc(D3D11_SHADER_BUFFER_DESC* p) override {
+        if (!valid || !p) return E_FAIL;
+        *p = desc;
+        p->Name = name.c_str();
+        return S_OK;
+    }
+    ID3D11ShaderReflectionVariable* GetVariableByIndex(UINT i) override {
+        return valid && i < variables.size() ? &variables[i] : invalid;
+    }
+    ID3D11ShaderReflectionVariable* GetVariableByName(LPCSTR n) override {
+        for (auto& v : variables)
+            if (n && v.name == n) return &v;
+        return invalid;
+    }
+};
+
+D3D_SHADER_VARIABLE_TYPE typeOf(xlate::ParameterType t) {
+    switch (t) {
+    case xlate::ParameterType::Bool: return D3D_SVT_BOOL;
+    case xlate::ParameterType::Int: return D3D_SVT_INT;
+    case xlate::ParameterType::UInt: return D3D_SVT_UINT;
+    case xlate::ParameterType::Float: return D3D_SVT_FLOAT;
+    default: return D3D_SVT_VOID;
+    }
+}
+
+D3D_SHADER_VARIABLE_CLASS classOf(const xlate::Parameter& p) {
+    switch (p.parameterClass) {
+    case xlate::ParameterClass::Scalar: return D3D_SVC_SCALAR;
+    case xlate::ParameterClass::Vector: return D3D_SVC_VECTOR;
+    case xlate::ParameterClass::Matrix: return p.rowMajor ? D3D_SVC_MATRIX_ROWS : D3D_SVC_MATRIX_COLUMNS;
+    case xlate::ParameterClass::Object: return D3D_SVC_OBJECT;
+    case xlate::ParameterClass::Struct: return D3D_SVC_STRUCT;
+    }
+    return D3D_SVC_SCALAR;
+}
+
+class Reflection final : public ID3D11ShaderReflection {
+public:
+    Reflection(std::shared_ptr<const xlate::CompiledEffect> effect, int shader) : effect_(std::move(effect)), shader_(shader) {
+        bindings_ = bindingsOf(*effect_, shader);
+        const xlate::CompiledShader& s = effect_->shaders[std::size_t(shader)];
+        creator_ = "fxport (" + s.profile.name + ")";
+        for (const CbufferBinding& c : bindings_.cbuffers) addBuffer(c);
+        for (const auto& t : bindings_.samplers) resources_.push_back({t.name, D3D_SIT_SAMPLER, UINT(t.slot), D3D_SRV_DIMENSION_UNKNOWN});
+        for (const auto& t : bindings_.textures)
+            resources_.push_back({t.name, D3D_SIT_TEXTURE, UINT(t.slot),
+                                  t.kind == xlate::TextureKind::TextureCube ? D3D_SRV_DIMENSION_TEXTURECUBE : D3D_SRV_DIMENSION_TEXTURE2D});
+        for (const CbufferBinding& c : bindings_.cbuffers) resources_.push_back({c.name, D3D_SIT_CBUFFER, UINT(c.slot), D3D_SRV_DIMENSION_UNKNOWN});
+        std::vector<const xlate::VertexInput*> inputs;
+        for (const auto& in : s.inputs) inputs.push_back(&in);
+        std::sort(inputs.begin(), inputs.end(), [](auto* a, auto* b) { return a->location < b->location; });
+        for (const auto* in : inputs) {
+            auto [name, index] = splitSemantic(in->semantic);
+            inputs_.push_back({name, index, UINT(in->location), in->isInteger ? D3D_REGISTER_COMPONENT_SINT32 : D3D_REGISTER_COMPONENT_FLOAT32,
+                               UINT8((1u << in->components) - 1u)});
+        }
+        invalidBuffer_.invalid = &invalidVariable_;
+    }
+    ULONG AddRef() override { return ++references_; }
+    ULONG Release() override {
+        const ULONG left = --references_;
+        if (left == 0) delete this;
+        return left;
+    }
+    HRESULT GetDesc(D3D11_SHADER_DESC* p) override {
+        if (!p) return E_INVALIDARG;
+        const xlate::ShaderProfile& profile = effect_->shaders[std::size_t(shader_)].profile;
+        const UINT type = profile.stage == xlate::ShaderStage::Pixel ? 0 : profile.stage == xlate::ShaderStage::Vertex ? 1 : 2;
+        *p = D3D11_SHADER_DESC{};
+        p->Version = type << 16 | UINT(profile.major) << 4 | UINT(profile.minor);
+        p->Creator = creator_.c_str();
+        p->ConstantBuffers = UINT(buffers_.size());
+        p->BoundResources = UINT(resources_.size());
+        p->InputParameters = UINT(inputs_.size());
+        return S_OK;
+    }
+    ID3D11ShaderReflectionConstantBuffer* GetConstantBufferByIndex(UINT i) override {
+        return i < buffers_.size() ? &buffers_[i] : &invalidBuffer_;
+    }
+    ID3D11ShaderReflectionConstantBuffer* GetConstantBufferByName(LPCSTR n) override {
+        for (auto& b : buffers_)
+            if (n && b.name == n) return &b;
+        return &invalidBuffer_;
+    }
+    ID3D11ShaderReflectionVariable* GetVariableByName(LPCSTR n) override {
+        for (auto& b : buffers_)
+            for (auto& v : b.variables)
+                if (n && v.name == n) return &v;
+        return &invalidVariable_;
+    }
+    HRESULT GetResourceBindingDesc(UINT i, D3D11_SHADER_INPUT_BIND_DESC* p) override {
+        if (!p || i >= resources_.size()) return fail(E_INVALIDARG, "GetResourceBindingDesc: index " + std::to_string(i) + " of " + std::to_string(resources_.size()));
+        const Resource& r = resources_[i];
+        *p = D3D11_SHADER_INPUT_BIND_DESC{};
+        p->Name = r.name.c_str();
+        p->Type = r.type;
+        p->BindPoint = r.slot;
+        p->Dimension = r.dimension;
+        return S_OK;
+    }
+    HRESULT GetResourceBindingDescByName(LPCSTR n, D3D11_SHADER_INPUT_BIND_DESC* p) override {
+        for (std::size_t i = 0; i < resources_.size(); ++i)
+            if (n && resources_[i].name == n) return GetResourceBindingDesc(UINT(i), p);
+        return fail(E_INVALIDARG, std::string("GetResourceBindingDescByName: the shader binds nothing named '") + (n ? n : "") + "'");
+    }
+    HRESULT GetInputParameterDesc(UINT i, D3D11_SIGNATURE_PARAMETER_DESC* p) override {
+        if (!p || i >= inputs_.size()) return fail(E_INVALIDARG, "GetInputParameterDesc: index " + std::to_string(i) + " of " + std::to_string(inputs_.size()));
+        const Input& in = inputs_[i];
+        *p = D3D11_SIGNATURE_PARAMETER_DESC{};
+        p->SemanticName = in.name.c_str();
+        p->SemanticIndex = in.index;
+        p->Register = in.registerIndex;
+        p->ComponentType = in.type;
+        p->Mask = in.mask;
+        p->ReadWriteMask = in.mask;
+        return S_OK;
+    }
+
+private:
+    struct Resource {
+        std::string name;
+        D3D_SHADER_INPUT_TYPE type;
+        UINT slot;
+        D3D_SRV_DIMENSION dimension;
+    };
+    struct Input {
+        std::string name;
+        UINT index;
+        UINT registerIndex;
+        D3D_REGISTER_COMPONENT_TYPE type;
+        UINT8 mask;
+    };
+
+    void addBuffer(const CbufferBinding& c) {
+        ReflectionBuffer& b = buffers_.emplace_back();
+        b.valid = true;
+        b.name = c.name;
+        b.desc.Size = UINT(c.size);
+        b.invalid = &invalidVariable_;
+        const xlate::CompiledShader& s = effect_->shaders[std::size_t(shader_)];
+        for (const PackedVariable& v : packCbuffer(*effect_, c.block)) {
+            const xlate::Parameter& p = effect_->parameters[std::size_t(v.parameter)];
+            ReflectionVariable& r = b.variables.emplace_back();
+            r.valid = true;
+            r.name = p.name;
+            r.desc.StartOffset = UINT(v.offset);
+            r.desc.Size = UINT(v.size);
+            r.desc.uFlags = std::find(s.parametersRead.begin(), s.parametersRead.end(), v.parameter) != s.parametersRead.end() ? D3D_SVF_USED : 0;
+            r.type.valid = true;
+            r.type.desc.Class = classOf(p);
+            r.type.desc.Type = typeOf(p.type);
+            r.type.desc.Rows = UINT(p.rows);
+            r.type.desc.Columns = UINT(p.columns);
+            r.type.desc.Elements = UINT(p.elements);
+            r.type.desc.Members = UINT(p.members.size());
+        }
+        b.desc.Variables = UINT(b.variables.size());
+    }
+
+    std::shared_ptr<const xlate::CompiledEffect> effect_;
+    int shader_;
+    ShaderBindings bindings_;
+    std::string creator_;
+    std::deque<ReflectionBuffer> buffers_;
+    std::vector<Resource> resources_;
+    std::vector<Input> inputs_;
+    ReflectionBuffer invalidBuffer_;
+    ReflectionVariable invalidVariable_;
+    std::atomic<ULONG> references_{1};
+};
+
+}  // namespace
+
+HRESULT D3DReflect(LPCVOID pSrcData, SIZE_T SrcDataSize, ID3D11ShaderReflection** ppReflector) {
+    if (!ppReflector) return fail(E_INVALIDARG, "D3DReflect: ppReflector is null");
+    std::string error;
+    auto effect = effectFromBytecode(pSrcData, SrcDataSize, error);
+    if (!effect) return fail(E_INVALIDARG, "D3DReflect: " + error);
+    if (effect->shaders.empty()) return fail(E_INVALIDARG, "D3DReflect: the blob holds no shader");
+    try {
+        *ppReflector = new Reflection(effect, 0);
+    } catch (const std::exception& e) {
+        return fail(E_FAIL, std::string("D3DReflect: ") + e.what());
+    }
+    return succeed();
+}
+
+}  // namespace fxport::d3d11

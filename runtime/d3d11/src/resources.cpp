@@ -1,0 +1,170 @@
+// Buffers and 2D textures: CreateBuffer, CreateTexture2D and their checks. A D3D buffer is one
+// device-core byte buffer whatever it is bound as; a texture is a Texture2D (a RenderTarget2D when
+// it may be rendered to), a depth buffer (BIND_DEPTH_STENCIL), or CPU memory (USAGE_STAGING, which
+// CopyResource and Map read and write, as D3D's staging resources are).
+#include <algorithm>
+#include <cstring>
+
+#include "d3d11_impl.h"
+#include "guarded.h"
+
+namespace fxport::d3d11 {
+
+namespace {
+
+int fullMipCount(UINT w, UINT h) {
+    int levels = 1;
+    for (UINT size = std::max(w, h); size > 1; size >>= 1) ++levels;
+    return levels;
+}
+
+HRESULT checkUsage(const char* call, const char* desc, D3D11_USAGE usage, UINT bind, UINT cpu, bool hasData) {
+    const std::string at = std::string(call) + ": " + desc;
+    switch (usage) {
+    case D3D11_USAGE_DEFAULT:
+        if (cpu) return fail(E_INVALIDARG, at + ".CPUAccessFlags = " + std::to_string(cpu) + " with USAGE_DEFAULT (CPU access needs DYNAMIC or STAGING)");
+        return S_OK;
+    case D3D11_USAGE_IMMUTABLE:
+        if (!hasData) return fail(E_INVALIDARG, at + ".Usage = D3D11_USAGE_IMMUTABLE without pInitialData");
+        if (cpu) return fail(E_INVALIDARG, at + ".CPUAccessFlags = " + std::to_string(cpu) + " with USAGE_IMMUTABLE");
+        return S_OK;
+    case D3D11_USAGE_DYNAMIC:
+        if (cpu != D3D11_CPU_ACCESS_WRITE)
+            return fail(E_INVALIDARG, at + ".CPUAccessFlags = " + std::to_string(cpu) + " with USAGE_DYNAMIC (must be D3D11_CPU_ACCESS_WRITE)");
+        return S_OK;
+    case D3D11_USAGE_STAGING:
+        if (bind) return fail(E_INVALIDARG, at + ".BindFlags = " + std::to_string(bind) + " with USAGE_STAGING (must be 0)");
+        if (!cpu) return fail(E_INVALIDARG, at + ".CPUAccessFlags = 0 with USAGE_STAGING (needs READ and/or WRITE)");
+        return S_OK;
+    }
+    return fail(E_INVALIDARG, at + ".Usage = " + std::to_string(usage) + " is not a D3D11_USAGE value (0-3)");
+}
+
+}  // namespace
+
+// --- Buffer
+
+Buffer::Buffer(Device* device, const D3D11_BUFFER_DESC& d, const void* initial) : Object(device), desc(d) {
+    if (d.Usage == D3D11_USAGE_STAGING) {
+        cpu.assign(d.ByteWidth, 0);
+        if (initial) std::memcpy(cpu.data(), initial, d.ByteWidth);
+    } else {
+        gpu = std::make_unique<core::ByteBuffer>(device->core(), d.ByteWidth, initial, d.Usage == D3D11_USAGE_DYNAMIC);
+    }
+}
+
+HRESULT Device::CreateBuffer(const D3D11_BUFFER_DESC* pDesc, const D3D11_SUBRESOURCE_DATA* pInitialData, ID3D11Buffer** ppBuffer) {
+    const char* call = "CreateBuffer";
+    if (!pDesc) return fail(E_INVALIDARG, "CreateBuffer: pDesc is null");
+    const D3D11_BUFFER_DESC& d = *pDesc;
+    if (d.ByteWidth == 0) return fail(E_INVALIDARG, "CreateBuffer: D3D11_BUFFER_DESC.ByteWidth = 0");
+    if (d.BindFlags & D3D11_BIND_CONSTANT_BUFFER) {
+        if (d.ByteWidth % 16 != 0)
+            return fail(E_INVALIDARG, "CreateBuffer: D3D11_BUFFER_DESC.ByteWidth = " + std::to_string(d.ByteWidth) +
+                                          " for a constant buffer (must be a multiple of 16)");
+        if (d.BindFlags != D3D11_BIND_CONSTANT_BUFFER)
+            return fail(E_INVALIDARG, "CreateBuffer: D3D11_BUFFER_DESC.BindFlags = " + std::to_string(d.BindFlags) +
+                                          " (D3D11_BIND_CONSTANT_BUFFER may not be combined with other flags)");
+        if (d.ByteWidth > 65536)
+            return fail(E_INVALIDARG, "CreateBuffer: D3D11_BUFFER_DESC.ByteWidth = " + std::to_string(d.ByteWidth) +
+                                          " for a constant buffer (at most 4096 registers, 65536 bytes)");
+    }
+    const UINT known = D3D11_BIND_VERTEX_BUFFER | D3D11_BIND_INDEX_BUFFER | D3D11_BIND_CONSTANT_BUFFER;
+    if (d.BindFlags & ~known)
+        return fail(E_NOTIMPL, "CreateBuffer: D3D11_BUFFER_DESC.BindFlags = " + std::to_string(d.BindFlags) +
+                                   ": fxport binds buffers as vertex, index and constant buffers only (no shader-resource, "
+                                   "stream-output or unordered-access buffers yet)");
+    if (HRESULT hr = checkUsage(call, "D3D11_BUFFER_DESC", d.Usage, d.BindFlags, d.CPUAccessFlags, pInitialData && pInitialData->pSysMem); FAILED(hr))
+        return hr;
+    if (pInitialData && !pInitialData->pSysMem) return fail(E_INVALIDARG, "CreateBuffer: pInitialData->pSysMem is null");
+    if (!ppBuffer) return succeed();  // D3D: validation only
+    return guarded(call, [&] {
+        *ppBuffer = new Buffer(this, d, pInitialData ? pInitialData->pSysMem : nullptr);
+        return succeed();
+    });
+}
+
+// --- Texture2D
+
+Texture::Texture(Device* device, const D3D11_TEXTURE2D_DESC& d) : Object(device), desc(d) {}
+
+std::size_t Texture::levelBytes(int level) const {
+    return std::size_t(levelWidth(level)) * std::size_t(levelHeight(level)) * std::size_t(bytesPerPixel(format));
+}
+
+HRESULT Device::CreateTexture2D(const D3D11_TEXTURE2D_DESC* pDesc, const D3D11_SUBRESOURCE_DATA* pInitialData,
+                                ID3D11Texture2D** ppTexture2D) {
+    const char* call = "CreateTexture2D";
+    if (!pDesc) return fail(E_INVALIDARG, "CreateTexture2D: pDesc is null");
+    const D3D11_TEXTURE2D_DESC& d = *pDesc;
+    const std::string at = "CreateTexture2D: D3D11_TEXTURE2D_DESC.";
+    if (d.Width == 0 || d.Height == 0 || d.Width > 16384 || d.Height > 16384)
+        return fail(E_INVALIDARG, at + "Width x Height = " + std::to_string(d.Width) + " x " + std::to_string(d.Height) + " (1 to 16384 each)");
+    if (d.ArraySize == 0) return fail(E_INVALIDARG, at + "ArraySize = 0");
+    if (d.ArraySize > 1) return fail(E_NOTIMPL, at + "ArraySize = " + std::to_string(d.ArraySize) + ": texture arrays are not supported yet");
+    if (d.SampleDesc.Count == 0) return fail(E_INVALIDARG, at + "SampleDesc.Count = 0");
+    if (d.SampleDesc.Count > 1) return fail(E_NOTIMPL, at + "SampleDesc.Count = " + std::to_string(d.SampleDesc.Count) + ": no multisampling");
+    if (d.MiscFlags & ~UINT(D3D11_RESOURCE_MISC_GENERATE_MIPS))
+        return fail(E_NOTIMPL, at + "MiscFlags = " + std::to_string(d.MiscFlags) + ": only D3D11_RESOURCE_MISC_GENERATE_MIPS is supported");
+    const int full = fullMipCount(d.Width, d.Height);
+    if (int(d.MipLevels) > full)
+        return fail(E_INVALIDARG, at + "MipLevels = " + std::to_string(d.MipLevels) + " (a " + std::to_string(d.Width) + "x" +
+                                      std::to_string(d.Height) + " texture has at most " + std::to_string(full) + ")");
+    if (d.MipLevels != 0 && d.MipLevels != 1 && int(d.MipLevels) != full)
+        return fail(E_NOTIMPL, at + "MipLevels = " + std::to_string(d.MipLevels) + ": fxport makes 1 level or the full chain (0 or " +
+                                   std::to_string(full) + ")");
+    const UINT known = D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_RENDER_TARGET | D3D11_BIND_DEPTH_STENCIL;
+    if (d.BindFlags & ~known)
+        return fail(E_NOTIMPL, at + "BindFlags = " + std::to_string(d.BindFlags) + ": only SHADER_RESOURCE, RENDER_TARGET and DEPTH_STENCIL");
+    const bool depthTarget = (d.BindFlags & D3D11_BIND_DEPTH_STENCIL) != 0;
+    if (depthTarget && (d.BindFlags & (D3D11_BIND_RENDER_TARGET | D3D11_BIND_SHADER_RESOURCE)))
+        return fail(E_NOTIMPL, at + "BindFlags = " + std::to_string(d.BindFlags) +
+                                   ": a depth-stencil texture cannot also be sampled or rendered to in fxport yet");
+    if (HRESULT hr = checkUsage(call, "D3D11_TEXTURE2D_DESC", d.Usage, d.BindFlags, d.CPUAccessFlags, pInitialData && pInitialData->pSysMem); FAILED(hr))
+        return hr;
+    SurfaceFormat surface = SurfaceFormat::Color;
+    DepthFormat depth = DepthFormat::None;
+    if (depthTarget ? !depthFormat(d.Format, depth) : !textureFormat(d.Format, surface))
+        return fail(d.Format == DXGI_FORMAT_UNKNOWN ? E_INVALIDARG : E_NOTIMPL, at + "Format = " + formatName(d.Format) + " (" + std::to_string(d.Format) +
+                                                             "): not a " + (depthTarget ? "depth" : "texture") +
+                                                             " format fxport supports (docs/API.md lists them)");
+    if (depthTarget && pInitialData) return fail(E_INVALIDARG, at + "BindFlags has DEPTH_STENCIL and pInitialData is given");
+    if (!ppTexture2D) return succeed();
+    return guarded(call, [&] {
+        auto texture = std::unique_ptr<Texture, void (*)(Texture*)>(new Texture(this, d), [](Texture* t) { t->Release(); });
+        Texture& t = *texture;
+        t.format = surface;
+        t.levels = d.MipLevels == 1 ? 1 : full;
+        t.desc.MipLevels = UINT(t.levels);
+        const bool mips = t.levels > 1;
+        if (depthTarget) {
+            t.depth = std::make_unique<core::DepthBuffer>(core(), int(d.Width), int(d.Height), depth);
+        } else if (d.Usage == D3D11_USAGE_STAGING) {
+            for (int level = 0; level < t.levels; ++level) t.staging.emplace_back(t.levelBytes(level), 0);
+        } else if (d.BindFlags & D3D11_BIND_RENDER_TARGET) {
+            t.colour = std::make_unique<RenderTarget2D>(core(), int(d.Width), int(d.Height), mips, surface, DepthFormat::None, 0,
+                                                        RenderTargetUsage::PreserveContents);
+        } else {
+            t.colour = std::make_unique<fxport::Texture2D>(core(), int(d.Width), int(d.Height), mips, surface);
+        }
+        if (pInitialData) {
+            for (int level = 0; level < t.levels; ++level) {
+                const D3D11_SUBRESOURCE_DATA& s = pInitialData[level];
+                if (!s.pSysMem) return fail(E_INVALIDARG, "CreateTexture2D: pInitialData[" + std::to_string(level) + "].pSysMem is null");
+                const std::size_t row = std::size_t(t.levelWidth(level)) * std::size_t(bytesPerPixel(surface));
+                if (s.SysMemPitch < row)
+                    return fail(E_INVALIDARG, "CreateTexture2D: pInitialData[" + std::to_string(level) + "].SysMemPitch = " +
+                                                  std::to_string(s.SysMemPitch) + ", less than a row (" + std::to_string(row) + " bytes)");
+                std::vector<std::uint8_t> packed(t.levelBytes(level));
+                for (int y = 0; y < t.levelHeight(level); ++y)
+                    std::memcpy(&packed[std::size_t(y) * row], static_cast<const std::uint8_t*>(s.pSysMem) + std::size_t(y) * s.SysMemPitch, row);
+                if (!t.staging.empty()) t.staging[std::size_t(level)] = std::move(packed);
+                else t.colour->setData(level, nullptr, packed.data(), packed.size());
+            }
+        }
+        *ppTexture2D = texture.release();
+        return succeed();
+    });
+}
+
+}  // namespace fxport::d3d11

@@ -1,0 +1,125 @@
+// INTERNAL, GL-free: what a front end other than XNA's (runtime/d3d11) needs of the device core
+// beyond the public XNA API. The XNA GraphicsDevice keeps doing state shadowing, validation, target
+// binding and draws; these functions only let a front end hand it objects XNA has no class for:
+// byte buffers bound by slot, a shader without an effect, a depth buffer apart from its colour
+// target, instanced and byte-offset draws. Nothing here changes what an XNA call does.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "fxport/graphics/graphics_device.h"
+#include "fxport/graphics/graphics_resource.h"
+#include "fxport/graphics/render_target.h"
+#include "fxport/graphics/vertex_declaration.h"
+
+namespace fxport::xlate {
+struct CompiledEffect;
+struct CompiledShader;
+}
+
+namespace fxport {
+struct ShaderProgram;
+}
+
+namespace fxport::core {
+
+// A GPU buffer of bytes: vertices, indices or constants, whichever slot it is bound to.
+class ByteBuffer : public GraphicsResource {
+public:
+    // `initial` may be null (zero-filled). `dynamic`: rewritten often (a streaming hint).
+    ByteBuffer(GraphicsDevice& device, std::size_t bytes, const void* initial, bool dynamic);
+    ~ByteBuffer() override;
+    std::size_t size() const { return size_; }
+    // Throws ArgumentError when [offset, offset + bytes) is outside the buffer.
+    void write(std::size_t offset, std::size_t bytes, const void* data);
+    void read(std::size_t offset, std::size_t bytes, void* out) const;
+    void copyFrom(const ByteBuffer& source);  // sizes must match
+    std::uint32_t glName() const { return name_; }
+
+protected:
+    void releaseGpuObjects() override;
+
+private:
+    std::size_t size_;
+    std::uint32_t name_ = 0;
+};
+
+// A depth/stencil buffer of its own (a D3D11 depth texture): made at the first draw that tests it
+// (the device's lazy depth storage), cleared through clearDepthBuffer.
+class DepthBuffer : public GraphicsResource {
+public:
+    DepthBuffer(GraphicsDevice& device, int width, int height, DepthFormat format);
+    ~DepthBuffer() override;
+    DepthStorage& storage() { return storage_; }
+    int width() const { return storage_.width; }
+    int height() const { return storage_.height; }
+
+protected:
+    void releaseGpuObjects() override;
+
+private:
+    DepthStorage storage_;
+};
+
+// One compiled shader made into a device program (what an effect pass binds, without the effect).
+class ShaderCode : public GraphicsResource {
+public:
+    // Throws InvalidOperation when the driver rejects the GLSL.
+    ShaderCode(GraphicsDevice& device, std::shared_ptr<const xlate::CompiledEffect> effect, int shaderIndex,
+               const std::string& label);
+    ~ShaderCode() override;
+    const xlate::CompiledEffect& effect() const { return *effect_; }
+    const xlate::CompiledShader& shader() const;
+    const ShaderProgram& program() const { return *program_; }
+
+protected:
+    void releaseGpuObjects() override;
+
+private:
+    std::shared_ptr<const xlate::CompiledEffect> effect_;
+    std::unique_ptr<ShaderProgram> program_;
+};
+
+// Binds the vertex and pixel shader the next draw runs (no geometry shader), as an effect pass's
+// Apply would, with no D3D9 pass emulation.
+void setShaders(GraphicsDevice& device, const ShaderCode& vertexShader, const ShaderCode& pixelShader);
+// Binds `buffer` (null: none) to uniform-block binding `glBinding` of `stage` (0 vertex, 1 pixel).
+void setUniformBuffer(GraphicsDevice& device, int stage, int glBinding, const ByteBuffer* buffer);
+// Binds colour targets and a depth buffer of their size (null: none); the targets' own depth
+// buffers are not used. Resets the device's Viewport to the whole target (as SetRenderTargets).
+void setTargets(GraphicsDevice& device, const std::vector<RenderTargetBinding>& colour, DepthBuffer* depth);
+
+struct VertexStream {
+    const ByteBuffer* buffer = nullptr;
+    std::size_t offset = 0;                       // bytes
+    const VertexDeclaration* declaration = nullptr;  // elements and stride
+};
+struct DrawArguments {
+    PrimitiveType type = PrimitiveType::TriangleList;
+    int count = 0;       // vertices or indices
+    int first = 0;       // first vertex, or first index when indexed
+    int baseVertex = 0;  // indexed only
+    int instances = 1;
+    int firstInstance = 0;
+    const ByteBuffer* indices = nullptr;  // indexed when set
+    int indexSize = 2;                    // 2 or 4 bytes
+};
+// Draws with the device's current state (BlendState, DepthStencilState, RasterizerState, Viewport,
+// ScissorRectangle, Textures, SamplerStates) and the shaders and buffers set above. Throws
+// InvalidOperation / ArgumentError as the XNA draws do.
+void draw(GraphicsDevice& device, const VertexStream& vertices, const DrawArguments& arguments);
+
+// Fills level 0 of a colour texture with `color` (whatever is bound, no viewport or scissor).
+void clearTexture(Texture& texture, const Vector4& color);
+// Clears the depth and/or stencil of `buffer` (whether bound or not).
+void clearDepthBuffer(GraphicsDevice& device, DepthBuffer& buffer, bool depth, bool stencil, float depthValue,
+                      int stencilValue);
+// Makes levels 1.. of `texture` from level 0 (D3D11's GenerateMips).
+void generateMips(Texture& texture);
+// Copies every level of `source` into `destination` (same size, format and level count).
+void copyTexture(Texture& destination, const Texture& source);
+
+}  // namespace fxport::core
