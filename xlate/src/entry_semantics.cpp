@@ -7,6 +7,7 @@
 //    count and width and the same kind of register (float and half alike, int, uint, bool alike).
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <map>
 
 #include "fxc_checks.h"
@@ -32,7 +33,8 @@ std::string upper(std::string s) {
 std::string withIndex(const std::string& semantic, int offset) {
     size_t digits = semantic.size();
     while (digits > 0 && std::isdigit(static_cast<unsigned char>(semantic[digits - 1]))) --digits;
-    int index = digits < semantic.size() ? std::atoi(semantic.c_str() + digits) : 0;
+    // 64-bit and capped: the digits come from the source.
+    const long long index = digits < semantic.size() ? std::min(std::strtoll(semantic.c_str() + digits, nullptr, 10), 1LL << 40) : 0;
     return upper(semantic.substr(0, digits)) + std::to_string(index + offset);
 }
 
@@ -85,8 +87,9 @@ private:
     bool flatten(const std::string& typeName, const std::string& semantic, const std::vector<int>& dims,
                  const std::vector<std::string>& modifiers, size_t token, std::vector<Element>& out, int depth) const {
         std::string type = syntax_.resolveType(typeName);
-        int count = 1;
-        for (int d : dims) count *= std::max(d, 1);
+        long long count = 1;  // capped: sizes come from the source
+        for (int d : dims) count = std::min(count * std::max(d, 1), 1LL << 20);
+        if (count > 1024) return false;  // far past any stage's registers: not judged here
         BasicType b = describeBasicType(type);
         if (b.ok) {
             if (semantic.empty()) return true;

@@ -138,9 +138,10 @@ private:
         const FxStruct* s = syntax_.findStruct(type);
         if (!s || depth > 8) return false;
         for (const auto& m : s->members) {
-            int count = 1;
-            for (int d : m.arrayDims) count *= std::max(d, 1);
-            for (int k = 0; k < count; ++k)
+            long long count = 1;  // capped: a stream element past 1024 components is not judged
+            for (int d : m.arrayDims) count = std::min(count * std::max(d, 1), 1LL << 20);
+            if (count > 1024) return false;
+            for (long long k = 0; k < count; ++k)
                 if (!flatten(m.type, widths, depth + 1)) return false;
         }
         return true;

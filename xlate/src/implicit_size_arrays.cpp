@@ -33,16 +33,18 @@ public:
             bool inStruct = false;
             for (auto [b, e] : structBodies) inStruct |= i > b && i < e;
             size_t start = statementStart(i - 1), after = i + 2;
-            int inner = 1;  // `float2 a[][3]`: the other dimensions' product
+            long long inner = 1;  // `float2 a[][3]`: the other dimensions' product (capped: source numbers)
             while (t_[after].is("[")) {
                 size_t close = closing(after);
-                inner *= close == after + 2 && t_[after + 1].kind == Token::Kind::Number ? std::max(std::atoi(t_[after + 1].text.c_str()), 1) : 0;
+                const long long n = close == after + 2 && t_[after + 1].kind == Token::Kind::Number
+                                        ? std::clamp(std::strtoll(t_[after + 1].text.c_str(), nullptr, 10), 1LL, 1LL << 20) : 0;
+                inner = std::min(inner * n, 1LL << 20);
                 after = close + 1;
             }
             if (inStruct) report("struct member '" + t_[i - 1].text + "' is an array without a size: fxc needs its size", i - 1);
             else if (t_[start].is("typedef")) report("typedef '" + t_[i - 1].text + "' is an array without a size: fxc needs its size", i - 1);
             else if (!t_[after].is("=")) report("array '" + t_[i - 1].text + "' has no size and no initializer to take it from", i - 1);
-            else if (inner > 0) components(i - 1, typeBefore(i - 1), inner, after + 1);
+            else if (inner > 0) components(i - 1, typeBefore(i - 1), int(inner), after + 1);
         }
     }
 

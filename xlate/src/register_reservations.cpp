@@ -12,6 +12,7 @@
 //    SM 2-3 when both are (SM 6 aliases them; fxport compiles up to SM 5).
 // "Used" is judged per compiled shader: the name appears in a function its entry reaches.
 #include <algorithm>
+#include <cstdlib>
 #include <cctype>
 #include <set>
 
@@ -158,18 +159,18 @@ private:
     // --- overlapping register(cN) in $Globals --------------------------------------------------
     struct Placed {
         const FxGlobal* global;
-        int first, count;
+        long long first, count;  // 64-bit: sizes and register numbers come from the source
     };
     void overlappingConstants() {
         std::vector<Placed> placed;
         for (const auto& g : syntax_.globals) {
             if (!g.cbuffer.empty() || std::find(g.modifiers.begin(), g.modifiers.end(), "static") != g.modifiers.end()) continue;
-            int size = registersOf(g);
+            long long size = registersOf(g);
             if (size <= 0) continue;
             for (const auto& r : reservations(g.token)) {
                 if (!r.profile.empty() || r.reg.size() < 2 || (r.reg[0] != 'c' && r.reg[0] != 'C')) continue;
                 if (r.reg.find_first_not_of("0123456789", 1) != std::string::npos || tok(r.regToken + 1).is("[")) continue;
-                placed.push_back({&g, std::atoi(r.reg.c_str() + 1), size});
+                placed.push_back({&g, std::min(std::strtoll(r.reg.c_str() + 1, nullptr, 10), kRegisterCap), size});
             }
         }
         for (size_t a = 0; a < placed.size(); ++a)
@@ -192,16 +193,17 @@ private:
     }
     // c registers a number takes (columns of a column-major matrix, rows of a row-major one); 0
     // when unknown (a struct): not judged.
-    int registersOf(const FxGlobal& g) const {
+    // Capped (an array of 2^31 - 1 matrices is refused elsewhere; here it must not overflow).
+    long long registersOf(const FxGlobal& g) const {
         BasicType b = describeBasicType(syntax_.resolveType(g.type));
         if (!b.ok) return 0;
         auto has = [&](const char* m) { return std::find(g.modifiers.begin(), g.modifiers.end(), m) != g.modifiers.end(); };
         // Without a modifier the majority may come from a pragma: the smaller count, so never too strict.
-        int each = !b.isMatrix ? 1 : has("row_major") ? b.rows : has("column_major") ? b.columns : std::min(b.rows, b.columns);
-        int count = 1;
-        for (int d : g.arrayDims) count *= std::max(d, 1);
-        return each * count;
+        long long count = !b.isMatrix ? 1 : has("row_major") ? b.rows : has("column_major") ? b.columns : std::min(b.rows, b.columns);
+        for (int d : g.arrayDims) count = std::min(count * std::max(d, 1), kRegisterCap);
+        return count;
     }
+    static constexpr long long kRegisterCap = 1LL << 30;
 };
 
 }  // namespace

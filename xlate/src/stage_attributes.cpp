@@ -152,7 +152,7 @@ std::string checkStageAttributes(const EffectSyntax& syntax, const FxFunction& e
 std::string checkThreadGroupSize(const std::array<int, 3>& size, const ShaderProfile& profile) {
     const bool sm5 = profile.major >= 5;
     const int maxXY = sm5 ? 1024 : 768, maxZ = sm5 ? 64 : 1, maxTotal = sm5 ? 1024 : 768;
-    long long total = 1;
+    double total = 1;  // in double: three source numbers up to 2^31 each
     for (int n : size) total *= n;
     auto text = [&] { return "[numthreads(" + std::to_string(size[0]) + ", " + std::to_string(size[1]) + ", " + std::to_string(size[2]) + ")]"; };
     if (size[0] < 1 || size[1] < 1 || size[2] < 1) return text() + ": each thread-group dimension must be at least 1";

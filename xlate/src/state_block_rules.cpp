@@ -11,7 +11,9 @@
 //    name and no swizzle past a name's components (an undeclared name is a scalar);
 //  - a call statement is one of D3D's pass functions, spelled exactly, with its parameter count;
 //    a pass function is no value.
+#include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <map>
 
 #include "fxc_checks.h"
@@ -121,7 +123,7 @@ private:
         for (size_t i = k + 2; i < open && !t_[i].is(":"); ++i)
             if (t_[i].is("[")) {
                 if (t_[i + 1].kind != Token::Kind::Number || !t_[i + 2].is("]")) return 0;
-                count *= std::atoi(t_[i + 1].text.c_str());
+                count = int(std::min<long long>(1LL * count * std::clamp(std::strtoll(t_[i + 1].text.c_str(), nullptr, 10), 0LL, 1LL << 20), 1LL << 20));
             }
         return count;
     }
