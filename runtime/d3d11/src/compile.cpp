@@ -6,6 +6,7 @@
 #include <mutex>
 #include <string_view>
 
+#include "fxport/platform/utf8.h"
 #include "d3d11_impl.h"
 #include "fxport/xlate/diagnostics.h"
 #include "fxport/xlate/effect_compiler.h"
@@ -39,24 +40,7 @@ private:
 
 std::string narrowPath(const wchar_t* w) {
     std::string out;
-    for (; *w; ++w) {
-        const std::uint32_t c = std::uint32_t(*w);
-        if (c < 0x80) {
-            out += char(c);
-        } else if (c < 0x800) {
-            out += char(0xC0 | (c >> 6));
-            out += char(0x80 | (c & 0x3F));
-        } else if (c < 0x10000) {
-            out += char(0xE0 | (c >> 12));
-            out += char(0x80 | ((c >> 6) & 0x3F));
-            out += char(0x80 | (c & 0x3F));
-        } else {
-            out += char(0xF0 | (c >> 18));
-            out += char(0x80 | ((c >> 12) & 0x3F));
-            out += char(0x80 | ((c >> 6) & 0x3F));
-            out += char(0x80 | (c & 0x3F));
-        }
-    }
+    for (; *w; ++w) platform::appendUtf8(out, char32_t(*w));
     return out;
 }
 

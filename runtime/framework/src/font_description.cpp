@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "fxport/platform/utf8.h"
 #include "fxport/platform/file_reading.h"
 #include "fxport/framework/sprite_font_import.h"
 #include "fxport/graphics/errors.h"
@@ -91,7 +92,7 @@ public:
             } else {
                 fail(at, "unknown entity &" + entity + ";");
             }
-            appendUtf8(out, c);
+            platform::appendUtf8(out, c);
             i = semicolon + 1;
         }
         return out;
@@ -103,23 +104,6 @@ private:
         if (open == std::string::npos) return false;
         const std::size_t close = text_.find("-->", open);
         return close == std::string::npos || close > at;
-    }
-    static void appendUtf8(std::string& out, char32_t c) {
-        if (c < 0x80) {
-            out += char(c);
-        } else if (c < 0x800) {
-            out += char(0xC0 | (c >> 6));
-            out += char(0x80 | (c & 0x3F));
-        } else if (c < 0x10000) {
-            out += char(0xE0 | (c >> 12));
-            out += char(0x80 | ((c >> 6) & 0x3F));
-            out += char(0x80 | (c & 0x3F));
-        } else {
-            out += char(0xF0 | (c >> 18));
-            out += char(0x80 | ((c >> 12) & 0x3F));
-            out += char(0x80 | ((c >> 6) & 0x3F));
-            out += char(0x80 | (c & 0x3F));
-        }
     }
 
     std::string path_;
