@@ -5,6 +5,7 @@
 // targets persist through the file.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <ostream>
@@ -63,6 +64,7 @@ private:
     void doUniform(const std::string& args);
     void doDraw(const std::string& args, int line);
     void doDispatch(const std::string& args, int line);
+    void gpuStep(int line, const std::function<void()>& step);
     void noteDrawOutcome(int line);  // records a failed or skipped draw/dispatch
     void doProbe(const std::string& args, int line);
     void doClear(const std::string& args);

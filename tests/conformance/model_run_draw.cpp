@@ -1,5 +1,6 @@
 // The [test] directives of a model run that touch the GPU: draws, uniforms, clears and probes
 // (see model_run.h).
+#include <functional>
 #include <cstdio>
 #include <cstring>
 #include <sstream>
@@ -118,11 +119,29 @@ std::string ModelRun::applyUniforms(fxport::Effect& effect, const std::string& s
     return layout.guess;
 }
 
-void ModelRun::doDraw(const std::string& args, int line) {
+// A draw or dispatch: Drawn when `step` returns; Skipped with the reason when it throws
+// Unsupported; Failed with the error otherwise. Then the outcome is noted for the line.
+void ModelRun::gpuStep(int line, const std::function<void()>& step) {
     drawState_ = DrawState::Skipped;
     drawNote_.clear();
     layoutGuess_.clear();
     try {
+        step();
+        drawState_ = DrawState::Drawn;
+    } catch (const Unsupported& e) {
+        drawNote_ = e.what();
+    } catch (const fxport::xlate::CompileError& e) {
+        drawState_ = DrawState::Failed;
+        drawNote_ = firstError(e);
+    } catch (const std::exception& e) {
+        drawState_ = DrawState::Failed;
+        drawNote_ = e.what();
+    }
+    noteDrawOutcome(line);
+}
+
+void ModelRun::doDraw(const std::string& args, int line) {
+    gpuStep(line, [&] {
         DrawCall call = parseDrawCall(args);
         if (!stickyStates_.empty())
             throw Unsupported("test state '" + stickyStates_.begin()->second + "' (not settable through the runtime API)");
@@ -156,24 +175,11 @@ void ModelRun::doDraw(const std::string& args, int line) {
         fxport::Effect& effect = effectOf(stages);
         layoutGuess_ = applyUniforms(effect, all);
         gpu().draw(effect, all, model_, call);
-        drawState_ = DrawState::Drawn;
-    } catch (const Unsupported& e) {
-        drawNote_ = e.what();
-    } catch (const fxport::xlate::CompileError& e) {
-        drawState_ = DrawState::Failed;
-        drawNote_ = firstError(e);
-    } catch (const std::exception& e) {
-        drawState_ = DrawState::Failed;
-        drawNote_ = e.what();
-    }
-    noteDrawOutcome(line);
+    });
 }
 
 void ModelRun::doDispatch(const std::string& args, int line) {
-    drawState_ = DrawState::Skipped;
-    drawNote_.clear();
-    layoutGuess_.clear();
-    try {
+    gpuStep(line, [&] {
         int x = 1, y = 1, z = 1;
         std::istringstream(args) >> x >> y >> z;
         if (!shaders_.count(Stage::Compute)) throw Unsupported("dispatch without a compute shader");
@@ -186,17 +192,7 @@ void ModelRun::doDispatch(const std::string& args, int line) {
         fxport::Effect& effect = effectOf({{Stage::Compute, source}});
         layoutGuess_ = applyUniforms(effect, source);
         gpu().dispatch(effect, source, model_, x, y, z);
-        drawState_ = DrawState::Drawn;
-    } catch (const Unsupported& e) {
-        drawNote_ = e.what();
-    } catch (const fxport::xlate::CompileError& e) {
-        drawState_ = DrawState::Failed;
-        drawNote_ = firstError(e);
-    } catch (const std::exception& e) {
-        drawState_ = DrawState::Failed;
-        drawNote_ = e.what();
-    }
-    noteDrawOutcome(line);
+    });
 }
 
 void ModelRun::noteDrawOutcome(int line) {
