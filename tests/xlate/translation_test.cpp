@@ -400,6 +400,42 @@ TEST(Translation, PassStatesAreTypedAndParametersResolvedToIndices) {
     EXPECT_EQ(describeStateAssignment(alphaRef, e), "AlphaRef = <AlphaReference>");
 }
 
+// `ZWriteEnable = <ZWrites[Mode]>`: the state reads an element of a parameter array, chosen by
+// another parameter at Apply(); the element program survives the compiled file.
+TEST(Translation, StatesFromParameterArrayElementsKeepTheirIndex) {
+    const std::string source = R"(
+bool ZWrites[2] = { true, false };
+int Culls[3] = { 1, 2, 3 };
+int Mode;
+float4 VS(float4 p : POSITION0) : POSITION0 { return p; }
+float4 PS() : COLOR0 { return 1; }
+technique T { pass P { ZWriteEnable = <ZWrites[Mode]>; CullMode = (Culls[2]); VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)";
+    CompiledEffect e = compileEffectSource(source, "virtual/States.fx", noCache());
+    ASSERT_TRUE(e.diagnostics.empty()) << e.diagnostics[0].format();
+    const auto& states = e.techniques[0].passes[0].states;
+    ASSERT_EQ(states.size(), 2u);
+    EXPECT_EQ(describeStateAssignment(states[0], e), "ZWriteEnable = <ZWrites[Mode]>");
+    EXPECT_EQ(describeStateAssignment(states[1], e), "CullMode = <Culls[2]>");
+    CompiledEffect back = deserializeEffect(serializeEffect(e), "memory");
+    for (std::size_t i = 0; i < states.size(); ++i) {
+        EXPECT_EQ(back.techniques[0].passes[0].states[i].parameter, states[i].parameter);
+        EXPECT_EQ(back.techniques[0].passes[0].states[i].element, states[i].element);
+    }
+
+    // An index naming no parameter is an error at the state, naming the index.
+    try {
+        compileEffectSource("bool ZWrites[2];\nfloat4 VS(float4 p : POSITION0) : POSITION0 { return p; }\n"
+                            "technique T { pass P { ZWriteEnable = <ZWrites[Nope]>; VertexShader = compile vs_3_0 VS(); } }\n",
+                            "virtual/Bad.fx", noCache());
+        FAIL() << "an index naming no parameter compiled";
+    } catch (const CompileError& err) {
+        std::string what = err.what();
+        EXPECT_NE(what.find("Bad.fx(3,24)"), std::string::npos) << what;
+        EXPECT_NE(what.find("'Nope' is not a parameter"), std::string::npos) << what;
+    }
+}
+
 TEST(Translation, ParameterDrivenStatesReadD3D9Codes) {
     // D3DBLEND_SRCALPHA is 5, D3DCMP_GREATER 5, D3DCULL_CW 2, D3DFILL_WIREFRAME 2.
     EXPECT_EQ(std::get<Blend>(stateValueFromD3D9(RenderState::SrcBlend, 5)), Blend::SourceAlpha);

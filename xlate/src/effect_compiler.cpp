@@ -23,6 +23,7 @@
 #include "fxport/xlate/effect_file.h"
 #include "entry_wrapper.h"
 #include "fx_rewrite.h"
+#include "parameter_selector.h"
 #include "front_end_hazards.h"
 #include "fxc_checks.h"
 #include "front_end_worker.h"
@@ -350,33 +351,9 @@ void EffectBuilder::buildParameters() {
 }
 
 bool EffectBuilder::buildSelector(TokenSpan span, std::vector<SelectorOp>& ops, size_t blameToken) {
-    // index := NUMBER | NAME | NAME '[' index ']'
-    const auto& t = syntax_.tokens;
-    if (span.empty()) return false;
-    if (span.end == span.begin + 1) {
-        if (t[span.begin].kind == Token::Kind::Number) {
-            ops.push_back({SelectorOp::Kind::PushConstant, std::atoi(t[span.begin].text.c_str())});
-            return true;
-        }
-        int p = parameterIndex(t[span.begin].text);
-        if (p < 0) {
-            error(diag::kUnknownShader, "shader index '" + t[span.begin].text + "' is not a parameter of this effect", blameToken);
-            return false;
-        }
-        ops.push_back({SelectorOp::Kind::PushParameter, p});
-        return true;
-    }
-    if (t[span.begin].isIdent() && t[span.begin + 1].is("[") && t[span.end - 1].is("]")) {
-        int p = parameterIndex(t[span.begin].text);
-        if (p < 0) {
-            error(diag::kUnknownShader, "shader index array '" + t[span.begin].text + "' is not a parameter of this effect", blameToken);
-            return false;
-        }
-        if (!buildSelector({span.begin + 2, span.end - 1}, ops, blameToken)) return false;
-        ops.push_back({SelectorOp::Kind::IndexParameter, p});
-        return true;
-    }
-    error(diag::kUnsupported, "shader index expression '" + syntax_.text(span) + "' is too complex (use a parameter, a literal or array[parameter])", blameToken);
+    auto problem = appendSelector(syntax_.tokens, span, [&](const std::string& name) { return parameterIndex(name); }, ops);
+    if (!problem) return true;
+    error(problem->unsupported ? diag::kUnsupported : diag::kUnknownShader, "shader index: " + problem->message, blameToken);
     return false;
 }
 

@@ -251,29 +251,35 @@ json toJson(const CompiledShader& s, const CompiledEffect& effect, bool withGlsl
     return j;
 }
 
+json selectorJson(const std::vector<SelectorOp>& selector) {
+    json ops = json::array();
+    for (const auto& op : selector) {
+        const char* kind = op.kind == SelectorOp::Kind::PushConstant ? "const" : op.kind == SelectorOp::Kind::PushParameter ? "param" : "index";
+        ops.push_back({kind, op.value});
+    }
+    return ops;
+}
+std::vector<SelectorOp> selectorFrom(const json& j) {
+    std::vector<SelectorOp> ops;
+    for (const auto& op : j) {
+        std::string k = op.at(0);
+        SelectorOp s;
+        s.kind = k == "const" ? SelectorOp::Kind::PushConstant : k == "param" ? SelectorOp::Kind::PushParameter : SelectorOp::Kind::IndexParameter;
+        s.value = op.at(1);
+        ops.push_back(s);
+    }
+    return ops;
+}
+
 json toJson(const ShaderChoice& c) {
     json j{{"shaders", c.shaders}};
-    if (!c.selector.empty()) {
-        json ops = json::array();
-        for (const auto& op : c.selector) {
-            const char* kind = op.kind == SelectorOp::Kind::PushConstant ? "const" : op.kind == SelectorOp::Kind::PushParameter ? "param" : "index";
-            ops.push_back({kind, op.value});
-        }
-        j["selector"] = ops;
-    }
+    if (!c.selector.empty()) j["selector"] = selectorJson(c.selector);
     return j;
 }
 ShaderChoice choiceFrom(const json& j) {
     ShaderChoice c;
     c.shaders = j.at("shaders").get<std::vector<int>>();
-    if (j.contains("selector"))
-        for (const auto& op : j["selector"]) {
-            std::string k = op.at(0);
-            SelectorOp s;
-            s.kind = k == "const" ? SelectorOp::Kind::PushConstant : k == "param" ? SelectorOp::Kind::PushParameter : SelectorOp::Kind::IndexParameter;
-            s.value = op.at(1);
-            c.selector.push_back(s);
-        }
+    if (j.contains("selector")) c.selector = selectorFrom(j["selector"]);
     return c;
 }
 
@@ -287,6 +293,7 @@ json techniquesJson(const CompiledEffect& effect, bool withLocation) {
                 json sj{{"state", kState.of(s.state)}};
                 if (s.parameter >= 0) sj["parameter"] = effect.parameters[static_cast<size_t>(s.parameter)].name;
                 else sj["value"] = valueJson(s.value);
+                if (!s.element.empty()) sj["element"] = selectorJson(s.element);
                 if (s.index) sj["index"] = s.index;
                 if (withLocation) sj["where"] = toJson(s.where);
                 states.push_back(sj);
@@ -404,8 +411,19 @@ std::string describeStateAssignment(const StateAssignment& s, const CompiledEffe
     std::string out = kState.of(s.state);
     if (s.index) out += "[" + std::to_string(s.index) + "]";
     out += " = ";
-    if (s.parameter >= 0 && static_cast<size_t>(s.parameter) < effect.parameters.size())
-        return out + "<" + effect.parameters[static_cast<size_t>(s.parameter)].name + ">";
+    if (s.parameter >= 0 && static_cast<size_t>(s.parameter) < effect.parameters.size()) {
+        auto name = [&](int p) {
+            return p >= 0 && static_cast<size_t>(p) < effect.parameters.size() ? effect.parameters[static_cast<size_t>(p)].name : "#" + std::to_string(p);
+        };
+        std::vector<std::string> stack;  // the element program, read back as text
+        for (const SelectorOp& op : s.element) {
+            if (op.kind == SelectorOp::Kind::PushConstant) stack.push_back(std::to_string(op.value));
+            else if (op.kind == SelectorOp::Kind::PushParameter) stack.push_back(name(op.value));
+            else if (!stack.empty()) stack.back() = name(op.value) + "[" + stack.back() + "]";
+        }
+        std::string element = stack.empty() ? "" : "[" + stack.back() + "]";
+        return out + "<" + name(s.parameter) + element + ">";
+    }
     json v = valueJson(s.value);
     return out + (v.is_string() ? v.get<std::string>() : v.dump());
 }
@@ -536,6 +554,7 @@ CompiledEffect deserializeEffect(std::string_view text, const std::string& nameF
                     a.index = s.value("index", 0);
                     if (s.contains("parameter")) a.parameter = paramIndex.at(s["parameter"].get<std::string>());
                     else a.value = valueFrom(a.state, s.at("value"));
+                    if (s.contains("element")) a.element = selectorFrom(s["element"]);
                     if (s.contains("where")) a.where = locationFrom(s["where"]);
                     pass.states.push_back(a);
                 }

@@ -95,6 +95,9 @@ std::optional<std::string> findEffectInconsistency(const CompiledEffect& e) {
                 if (!within(st.index, 0, 7)) return where + " sets a state of render target " + std::to_string(st.index);
                 if (!within(st.parameter, -1, static_cast<long long>(e.parameters.size()) - 1))
                     return where + " sets a state from parameter #" + std::to_string(st.parameter);
+                for (const auto& op : st.element)
+                    if (op.kind != SelectorOp::Kind::PushConstant && !within(op.value, 0, static_cast<long long>(e.parameters.size()) - 1))
+                        return where + " indexes a state's parameter by parameter #" + std::to_string(op.value) + ", which does not exist";
                 // Enum values were read by name; numbers must be numbers.
                 bool finite = true;
                 if (const float* f = std::get_if<float>(&st.value)) finite = std::isfinite(*f);

@@ -5,6 +5,7 @@
 #include <optional>
 #include <set>
 
+#include "parameter_selector.h"
 #include "source_map.h"
 #include "state_values.h"
 #include "text_util.h"
@@ -593,6 +594,38 @@ StateResult translateDx10Call(const FxAssignment& a, StateContext& ctx, std::vec
 
 }  // namespace
 
+// `AlphaRef = <AlphaReference>;` or `ZWriteEnable = <ZWrites[Mode]>;` (also in parentheses): the
+// effect framework reads the parameter (element) at Apply(). Nothing when the value names no
+// parameter; Failed (error added) when its index is wrong.
+static std::optional<StateResult> fromParameter(const FxAssignment& a, StateContext& ctx, StateAssignment& s) {
+    if (!ctx.parameters) return std::nullopt;
+    const std::vector<Token>& t = ctx.syntax.tokens;
+    TokenSpan v = a.value;
+    bool bracketed = v.end >= v.begin + 3 && ((t[v.begin].is("<") && t[v.end - 1].is(">")) ||
+                                              (t[v.begin].is("(") && t[v.end - 1].is(")")));
+    if (bracketed) v = {v.begin + 1, v.end - 1};
+    if (v.empty() || !t[v.begin].isIdent()) return std::nullopt;
+    auto parameterIndex = [&](const std::string& name) {
+        for (std::size_t p = 0; p < ctx.parameters->size(); ++p)
+            if ((*ctx.parameters)[p].name == name) return static_cast<int>(p);
+        return -1;
+    };
+    int p = parameterIndex(t[v.begin].text);
+    if (p < 0) return std::nullopt;
+    if (v.end == v.begin + 1) {
+        s.parameter = p;
+        return StateResult::Applied;
+    }
+    if (!t[v.begin + 1].is("[") || !t[v.end - 1].is("]")) return std::nullopt;
+    if (auto problem = appendSelector(t, {v.begin + 2, v.end - 1}, parameterIndex, s.element)) {
+        ctx.diagnostics.push_back(ctx.map.makeAt(Severity::Error, problem->unsupported ? diag::kUnsupported : diag::kBadStateValue,
+                                                 "state '" + a.name + "': " + problem->message, s.where));
+        return StateResult::Failed;
+    }
+    s.parameter = p;
+    return StateResult::Applied;
+}
+
 StateResult translatePassAssignment(const FxAssignment& a, StateContext& ctx, std::vector<StateAssignment>& out) {
     std::string lower = toLower(a.name);
     const Token& nameTok = ctx.syntax.tokens[a.nameToken];
@@ -635,13 +668,9 @@ StateResult translatePassAssignment(const FxAssignment& a, StateContext& ctx, st
     s.where = where;
     std::array<double, 4> raw{};
     if (!readValue(r, it->second.kind, raw)) {
-        if (auto obj = r.objectName(); obj && ctx.parameters) {
-            for (std::size_t p = 0; p < ctx.parameters->size(); ++p)
-                if ((*ctx.parameters)[p].name == *obj) {
-                    s.parameter = static_cast<int>(p);  // evaluated at Apply() from the parameter's value
-                    out.push_back(s);
-                    return StateResult::Applied;
-                }
+        if (auto result = fromParameter(a, ctx, s)) {
+            if (*result == StateResult::Applied) out.push_back(s);
+            return *result;
         }
         r.bad(describe(it->second.kind));
         return StateResult::Failed;

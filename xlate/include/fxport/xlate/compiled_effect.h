@@ -220,6 +220,14 @@ enum class FillMode : std::uint8_t { Point, WireFrame, Solid };
 using StateValue = std::variant<bool, int, float, Blend, BlendFunction, CompareFunction, StencilOperation, CullMode,
                                 FillMode, std::array<float, 4>>;
 
+// An index the effect framework evaluates at Apply() over the current parameter values: a stack
+// program (`VSIndices[ShaderIndex]` is PushParameter ShaderIndex, IndexParameter VSIndices).
+struct SelectorOp {
+    enum class Kind : std::uint8_t { PushConstant, PushParameter, IndexParameter } kind = Kind::PushConstant;
+    int value = 0;  // constant, or parameter index (IndexParameter pops an index, pushes param[index])
+    bool operator==(const SelectorOp&) const = default;
+};
+
 struct StateAssignment {
     RenderState state = RenderState::AlphaBlendEnable;
     int index = 0;                 // render-target index for ColorWriteEnable[n] / BlendEnable[n]
@@ -228,6 +236,9 @@ struct StateAssignment {
     // current value the runtime reads at Apply() (the effect framework's parameter-driven states;
     // converted with stateValueFromD3D9). -1 for literal values.
     int parameter = -1;
+    // `ZWriteEnable = <ZWrites[Mode]>;`: the element of `parameter` to read, evaluated at Apply()
+    // like a shader selector; empty = element 0.
+    std::vector<SelectorOp> element;
     SourceLocation where;
 };
 
@@ -240,10 +251,6 @@ StateValue stateValueFromD3D9(RenderState state, double number);
 
 // A pass's choice of shader: usually one; for `VertexShader = (VSArray[VSIndices[ShaderIndex]])`
 // several, picked at Apply() by evaluating `selector` over the current parameter values.
-struct SelectorOp {
-    enum class Kind : std::uint8_t { PushConstant, PushParameter, IndexParameter } kind = Kind::PushConstant;
-    int value = 0;  // constant, or parameter index (IndexParameter pops an index, pushes param[index])
-};
 struct ShaderChoice {
     std::vector<int> shaders;         // indices into CompiledEffect::shaders; empty = no shader (NULL)
     std::vector<SelectorOp> selector; // empty = shaders[0]
