@@ -290,6 +290,14 @@ void Effect::Impl::layOutProvisionally() {
         if (blocks[b].provisional) blocks[b].constants.bytes.assign(std::size_t(sizes[b]), 0);
 }
 
+void Effect::Impl::keepUnreadValue(int index) {
+    const xlate::Parameter& p = outline.parameters[std::size_t(index)];
+    std::vector<double>& kept = unread[std::size_t(index)];
+    kept.assign(std::size_t(p.rows * p.columns * std::max(1, p.elements)), 0.0);
+    const ConstantBlock& from = blocks[std::size_t(p.block)].constants;
+    from.forEachScalar(p, std::max(1, p.elements), [&](const ConstantBlock::Scalar& s) { kept[std::size_t(s.index)] = from.decode(p, s.offset); });
+}
+
 void Effect::Impl::adoptLayouts(const xlate::CompiledEffect& code, GraphicsDevice::Impl& device) {
     if (code.parameters.size() != outline.parameters.size() || code.uniformBlocks.size() != blocks.size())
         throw InvalidOperation("Effect '" + displayName + "': a technique compiled with " + std::to_string(code.parameters.size()) +
@@ -315,6 +323,7 @@ void Effect::Impl::adoptLayouts(const xlate::CompiledEffect& code, GraphicsDevic
                 throw InvalidOperation("Effect '" + displayName + "': parameter " + std::to_string(i) + " is '" + r.name +
                                        "' in a compiled technique but '" + p.name + "' in the effect (internal error)");
             if (r.block != int(b)) continue;
+            if (p.offset >= 0 && r.offset < 0) keepUnreadValue(int(i));  // no shader reads it: its value stays the effect's
             if (p.offset >= 0 && r.offset >= 0)
                 block.constants.forEachScalar(p, std::max(1, p.elements), [&](const ConstantBlock::Scalar& from) {
                     int to = ConstantBlock::offsetOf(r, from.element, from.row, from.column);
@@ -448,6 +457,7 @@ void Effect::build() {
     // Parameters and their defaults.
     Parameters.effect_ = this;
     e.textures.assign(c.parameters.size(), nullptr);
+    e.unread.assign(c.parameters.size(), {});
     for (std::size_t i = 0; i < c.parameters.size(); ++i) {
         Parameters.items_.push_back(EffectParameter(this, int(i)));
         e.parameterIndex.emplace(c.parameters[i].name, int(i));

@@ -58,6 +58,10 @@ struct Effect::Impl {
     };
     std::vector<Block> blocks;
     std::vector<Texture*> textures;  // per parameter (objects only)
+    // Per parameter that no shader reads (no block storage): its scalars as set, row by row,
+    // element by element; empty until set (the default applies). D3D's effect parameters keep a
+    // value all the same: pass states (`ZWriteEnable = <ZWrites[Mode]>`) and shader selectors read it.
+    std::vector<std::vector<double>> unread;
     std::unordered_map<std::string, int> parameterIndex;
 
     // Byte ranges [begin, end) of one block that a shader reads, sorted, merged.
@@ -91,13 +95,25 @@ struct Effect::Impl {
         for (Texture*& t : textures)
             if (t == texture) t = nullptr;
     }
-    // The first scalar of element `element` of parameter `index` (for parameter-driven states and
-    // shader selectors); the default value for a parameter without storage.
+    // Scalar `k` (row by row, element by element) of parameter `index`; for a parameter no shader
+    // reads, its value as set or else its default; 0 past the end.
+    double parameterScalar(int index, int k) const {
+        const xlate::Parameter& p = outline.parameters[std::size_t(index)];
+        if (p.offset >= 0) return blocks[std::size_t(p.block)].constants.load(p, k);
+        const std::vector<double>& set = unread[std::size_t(index)];
+        const std::vector<double>& values = set.empty() ? p.defaultValue : set;
+        return k >= 0 && std::size_t(k) < values.size() ? values[std::size_t(k)] : 0.0;
+    }
+    // The first scalar of element `element` of parameter `index` (parameter-driven states and
+    // shader selectors).
     double parameterNumber(int index, int element) const {
         const xlate::Parameter& p = outline.parameters[std::size_t(index)];
-        if (p.offset < 0) return p.defaultValue.empty() ? 0.0 : p.defaultValue[0];
-        return blocks[std::size_t(p.block)].constants.load(p, element * p.rows * p.columns);
+        return parameterScalar(index, element * p.rows * p.columns);
     }
+    // Runs a selector program (`VSIndices[ShaderIndex]`, `ZWrites[Mode]`) over the current
+    // parameter values: the number it leaves (0 for an empty program). An index outside its array
+    // is an InvalidOperation naming the parameter.
+    double evaluateSelector(const std::vector<xlate::SelectorOp>& ops) const;
     // Uploads the dirty bytes of each block that `reads` covers; what it does not cover stays dirty
     // (as one range: the hull of what is left, so some bytes may be sent twice, never too few).
     void uploadRead(const std::vector<BlockReads>& reads);
@@ -112,6 +128,9 @@ struct Effect::Impl {
     // Block layouts: start provisional, then take the real ones from a compiled effect.
     void layOutProvisionally();
     void adoptLayouts(const xlate::CompiledEffect& code, GraphicsDevice::Impl& device);
+    // Moves the value of parameter `index` from its provisional block place to `unread` (a compiled
+    // technique says no shader reads it).
+    void keepUnreadValue(int index);
 
     // Compiles (if needed) the technique `technique` of the outline and returns its code.
     const TechniqueCode& ensureCompiled(int technique, GraphicsDevice::Impl& device);

@@ -1,6 +1,7 @@
 // EffectParameter::SetValue / GetValue: type-checked writes into the effect's constant-buffer
 // shadow, laid out as the reflection says (HLSL packing, column_major or row_major).
 #include <algorithm>
+#include <cstdint>
 #include <span>
 
 #include "effect_impl.h"
@@ -17,6 +18,7 @@ using xlate::ParameterType;
 struct Access {
     Effect::Impl& e;
     const xlate::Parameter& p;
+    int index;
     // "Effect 'GBuffer.fx' parameter 'World' (float4x4): ..." -- built only when failing, so the
     // SetValue fast path allocates nothing.
     [[noreturn]] void fail(const std::string& what) const {
@@ -31,25 +33,48 @@ struct Access {
     int scalarsPerElement() const { return p.rows * p.columns; }
     int elementCount() const { return std::max(1, p.elements); }
 
-    void requireStorage(const char* call) const {
+    void requireSettable(const char* call) const {
         if (p.isStatic) fail(std::string(call) + ": the parameter is static/const, not settable (as in XNA)");
-        if (p.offset < 0)
-            fail(std::string(call) + ": no shader of the effect reads this parameter, so it has no storage");
     }
 
     ConstantBlock& block() const { return e.blocks[std::size_t(p.block)].constants; }
 
+    // A parameter no shader reads keeps its scalars in e.unread, as its type stores them.
+    std::vector<double>& unreadValues() const {
+        std::vector<double>& values = e.unread[std::size_t(index)];
+        if (values.empty()) {
+            values = p.defaultValue;
+            values.resize(std::size_t(scalarsPerElement() * elementCount()), 0.0);
+        }
+        return values;
+    }
+    double asStored(double v) const {
+        if (p.type == xlate::ParameterType::Float) return double(float(v));
+        if (p.type == xlate::ParameterType::Bool) return v != 0 ? 1.0 : 0.0;
+        if (p.type == xlate::ParameterType::Int) return double(std::int32_t(v));
+        return double(std::uint32_t(v));
+    }
+    // Writes value(scalar) into the scalars of the first `elements` elements whose index (row by
+    // row, element by element) is below `count`.
+    template <class Value>
+    void write(int elements, int count, Value&& value) const {
+        if (p.offset >= 0) {
+            block().store(p, elements, value, [&](const ConstantBlock::Scalar& s) { return s.index < count; });
+            return;
+        }
+        std::vector<double>& values = unreadValues();
+        int k = 0;
+        for (int el = 0; el < elements; ++el)
+            for (int r = 0; r < p.rows; ++r)
+                for (int c = 0; c < p.columns; ++c, ++k)
+                    if (k < count && std::size_t(k) < values.size()) values[std::size_t(k)] = asStored(value(ConstantBlock::Scalar{k, el, r, c, -1}));
+    }
     // Writes values[k] into scalar k (row by row, element by element) for the first n scalars.
     template <class T>
     void writeFirst(std::span<const T> values) const {
-        block().store(
-            p, elementCount(), [&](const ConstantBlock::Scalar& s) { return double(values[std::size_t(s.index)]); },
-            [&](const ConstantBlock::Scalar& s) { return std::size_t(s.index) < values.size(); });
+        write(elementCount(), int(values.size()), [&](const ConstantBlock::Scalar& s) { return double(values[std::size_t(s.index)]); });
     }
-    double read(int k) const {
-        if (p.offset < 0) return std::size_t(k) < p.defaultValue.size() ? p.defaultValue[std::size_t(k)] : 0.0;
-        return block().load(p, k);
-    }
+    double read(int k) const { return e.parameterScalar(index, k); }
 
     // SetValue of `count` elements each of `rows`x`cols` scalars given by get(element, r, c).
     template <class Get>
@@ -61,8 +86,8 @@ struct Access {
         if (isArray ? count > elementCount() : p.elements > 0)
             fail(std::string(call) + (isArray ? " with " + std::to_string(count) + " elements overruns the array"
                                               : " on an array: pass an array of values"));
-        requireStorage(call);
-        block().store(p, count, [&](const ConstantBlock::Scalar& s) { return double(get(s.element, s.row, s.column)); });
+        requireSettable(call);
+        write(count, count * scalarsPerElement(), [&](const ConstantBlock::Scalar& s) { return double(get(s.element, s.row, s.column)); });
     }
 
     void requireFloat(const char* call) const {
@@ -73,7 +98,7 @@ struct Access {
 Access access(Effect* effect, int index) {
     Effect::Impl& e = effect->impl();
     const xlate::Parameter& p = e.outline.parameters[std::size_t(index)];
-    return Access{e, p};
+    return Access{e, p, index};
 }
 
 float matrixAt(const Matrix& m, int r, int c) { return m.data()[r * 4 + c]; }
@@ -171,7 +196,7 @@ void EffectParameter::SetValue(std::span<const float> values) {
     int total = a.scalarsPerElement() * a.elementCount();
     if (int(values.size()) > total)
         a.fail("SetValue(float[]) with " + std::to_string(values.size()) + " values; the parameter holds " + std::to_string(total));
-    a.requireStorage("SetValue(float[])");
+    a.requireSettable("SetValue(float[])");
     a.writeFirst(values);
 }
 void EffectParameter::SetValue(std::span<const int> values) {
@@ -180,7 +205,7 @@ void EffectParameter::SetValue(std::span<const int> values) {
     int total = a.scalarsPerElement() * a.elementCount();
     if (int(values.size()) > total)
         a.fail("SetValue(int[]) with " + std::to_string(values.size()) + " values; the parameter holds " + std::to_string(total));
-    a.requireStorage("SetValue(int[])");
+    a.requireSettable("SetValue(int[])");
     a.writeFirst(values);
 }
 void EffectParameter::SetValue(std::span<const Vector2> values) {

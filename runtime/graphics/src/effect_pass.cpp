@@ -13,20 +13,7 @@ namespace {
 // Evaluates `VertexShader = (VSArray[VSIndices[ShaderIndex]])` style selectors.
 int chooseShader(const Effect::Impl& e, const xlate::ShaderChoice& choice, const std::string& technique, const std::string& pass) {
     if (choice.selector.empty()) return choice.shaders[0];
-    std::vector<int> stack;
-    for (const xlate::SelectorOp& op : choice.selector) {
-        switch (op.kind) {
-        case xlate::SelectorOp::Kind::PushConstant: stack.push_back(op.value); break;
-        case xlate::SelectorOp::Kind::PushParameter: stack.push_back(int(e.parameterNumber(op.value, 0))); break;
-        case xlate::SelectorOp::Kind::IndexParameter: {
-            int index = stack.empty() ? 0 : stack.back();
-            if (!stack.empty()) stack.pop_back();
-            stack.push_back(int(e.parameterNumber(op.value, index)));
-            break;
-        }
-        }
-    }
-    int pick = stack.empty() ? 0 : stack.back();
+    int pick = int(e.evaluateSelector(choice.selector));
     if (pick < 0 || pick >= int(choice.shaders.size()))
         throw InvalidOperation(e.displayName + " technique '" + technique + "' pass '" + pass + "': the shader-array index evaluates to " + std::to_string(pick) +
                                ", outside 0.." + std::to_string(choice.shaders.size() - 1));
@@ -34,6 +21,27 @@ int chooseShader(const Effect::Impl& e, const xlate::ShaderChoice& choice, const
 }
 
 }  // namespace
+
+double Effect::Impl::evaluateSelector(const std::vector<xlate::SelectorOp>& ops) const {
+    std::vector<double> stack;
+    for (const xlate::SelectorOp& op : ops) {
+        switch (op.kind) {
+        case xlate::SelectorOp::Kind::PushConstant: stack.push_back(op.value); break;
+        case xlate::SelectorOp::Kind::PushParameter: stack.push_back(parameterNumber(op.value, 0)); break;
+        case xlate::SelectorOp::Kind::IndexParameter: {
+            int index = stack.empty() ? 0 : int(stack.back());
+            if (!stack.empty()) stack.pop_back();
+            const xlate::Parameter& array = outline.parameters[std::size_t(op.value)];
+            if (index < 0 || index >= std::max(1, array.elements))
+                throw InvalidOperation("Effect '" + displayName + "': index " + std::to_string(index) + " of parameter '" + array.name +
+                                       "' is outside 0.." + std::to_string(std::max(1, array.elements) - 1));
+            stack.push_back(parameterNumber(op.value, index));
+            break;
+        }
+        }
+    }
+    return stack.empty() ? 0 : stack.back();
+}
 
 void Effect::Impl::uploadRead(const std::vector<BlockReads>& reads) {
     for (const BlockReads& r : reads) {

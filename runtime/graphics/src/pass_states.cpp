@@ -124,7 +124,11 @@ PassStates decodePassStates(const xlate::Pass& pass) {
         row.index = s.index;
         row.parameter = s.parameter;
         row.where = &s.where;
-        if (s.parameter >= 0) out.hasParameterRows = true;
+        if (s.parameter >= 0) {
+            out.hasParameterRows = true;
+            row.fromParameter = s.element;  // leaves the element index on the stack (none: 0)
+            row.fromParameter.push_back({xlate::SelectorOp::Kind::IndexParameter, s.parameter});
+        }
         else setRowValue(row, s.value);
         out.rows.push_back(row);
     }
@@ -172,7 +176,7 @@ void applyPassStates(const PassStates& states, const Effect::Impl& e, GraphicsDe
         if (literal.parameter >= 0) {
             // The effect framework's parameter-driven state: the parameter holds the D3D9 value.
             fromParameter = literal;
-            setRowValue(fromParameter, xlate::stateValueFromD3D9(literal.state, e.parameterNumber(literal.parameter, 0)));
+            setRowValue(fromParameter, xlate::stateValueFromD3D9(literal.state, e.evaluateSelector(literal.fromParameter)));
             row = &fromParameter;
         }
         const PassStateRow& s = *row;

@@ -23,6 +23,8 @@ struct PassStateRow {
     xlate::RenderState state = xlate::RenderState::AlphaBlendEnable;
     int index = 0;       // render target of ColorWriteEnable[n]
     int parameter = -1;  // >= 0: the value is this parameter's, read at Apply()
+    // The parameter's element as a selector program ending in parameter[index]; empty without one.
+    std::vector<xlate::SelectorOp> fromParameter;
     const xlate::SourceLocation* where = nullptr;  // the assignment in the compiled effect (for warnings)
     bool flag = false;
     int integer = 0;

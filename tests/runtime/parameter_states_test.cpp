@@ -1,0 +1,82 @@
+// Render states an effect reads from its parameters at Apply() (D3D9's effect framework):
+// `ZWriteEnable = <ZWrites[Mode]>` picks an element by another parameter's value, and a parameter
+// that no shader reads keeps the value the host sets (XNA lets any parameter be set). Fixture:
+// ParameterStates.fx. Expectations are the D3D9 codes the fixture's arrays hold.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "runtime_test_support.h"
+
+namespace fxport {
+namespace {
+
+using test::drawQuad;
+using test::testDevice;
+
+class ParameterStates : public ::testing::Test {
+protected:
+    void SetUp() override {
+        device.BlendState = BlendState::Opaque;
+        device.DepthStencilState = DepthStencilState::None;
+        device.RasterizerState = RasterizerState::CullNone;
+    }
+    void TearDown() override { device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr)); }
+    void apply() { effect.CurrentTechnique->Passes[0].Apply(); }
+    GraphicsDevice& device = testDevice();
+    Effect effect{device, test::runtimeFixture("ParameterStates.fx")};
+};
+
+TEST_F(ParameterStates, AnElementChosenByAnotherParameterIsReadAtEachApply) {
+    effect.Parameters["Mode"].SetValue(0);
+    apply();
+    EXPECT_TRUE(device.DepthStencilState.DepthBufferWriteEnable);  // ZWrites[0] = true
+    EXPECT_EQ(device.RasterizerState.CullMode, CullMode::None);    // Culls[0] = D3DCULL_NONE
+
+    effect.Parameters["Mode"].SetValue(1);
+    apply();
+    EXPECT_FALSE(device.DepthStencilState.DepthBufferWriteEnable);               // ZWrites[1] = false
+    EXPECT_EQ(device.RasterizerState.CullMode, CullMode::CullClockwiseFace);    // Culls[1] = D3DCULL_CW
+
+    const std::vector<int> writes = {0, 1};
+    effect.Parameters["ZWrites"].SetValue(writes);
+    apply();
+    EXPECT_TRUE(device.DepthStencilState.DepthBufferWriteEnable);  // the array's new element 1
+}
+
+TEST_F(ParameterStates, AnIndexOutsideTheArrayIsAnErrorNamingIt) {
+    effect.Parameters["Mode"].SetValue(2);  // Culls has 3 elements, ZWrites 2
+    try {
+        apply();
+        FAIL() << "Apply() with ZWrites[2] succeeded";
+    } catch (const InvalidOperation& e) {
+        std::string what = e.what();
+        EXPECT_NE(what.find("'ZWrites'"), std::string::npos) << what;
+        EXPECT_NE(what.find("0..1"), std::string::npos) << what;
+    }
+}
+
+// Tint's alpha is 0.5 (127.5 of 255): AlphaRef 77 keeps the pixel, 150 discards it. Reference is
+// read by no shader; its value is set before the first Apply (when the technique compiles and the
+// parameter's provisional storage goes away) and after.
+TEST_F(ParameterStates, AParameterNoShaderReadsKeepsItsValueForTheState) {
+    RenderTarget2D target(device, 4, 4, false, SurfaceFormat::Color);
+    device.SetRenderTarget(target);
+    effect.Parameters["Reference"].SetValue(77);
+    for (int reference : {77, 150, 20}) {
+        SCOPED_TRACE("AlphaRef " + std::to_string(reference));
+        if (reference != 77) effect.Parameters["Reference"].SetValue(reference);
+        EXPECT_EQ(effect.Parameters["Reference"].GetValueInt32(), reference);
+        device.Clear(Color(0, 0, 255, 255));
+        apply();
+        drawQuad(device);
+        std::vector<Color> pixels(16);
+        target.GetData(pixels.data(), pixels.size());
+        bool kept = 127.5 > reference;
+        for (const Color& c : pixels) EXPECT_EQ(c.R, kept ? 255 : 0);
+    }
+}
+
+}  // namespace
+}  // namespace fxport
