@@ -434,6 +434,18 @@ technique T { pass P { ZWriteEnable = <ZWrites[Mode]>; CullMode = (Culls[2]); Ve
         EXPECT_NE(what.find("Bad.fx(3,24)"), std::string::npos) << what;
         EXPECT_NE(what.find("'Nope' is not a parameter"), std::string::npos) << what;
     }
+    // Sampler states are decoded once: one set from a parameter is refused by name, not called malformed.
+    try {
+        compileEffectSource("int Modes[2];\ntexture Tex;\nsampler S = sampler_state { Texture = <Tex>; AddressU = <Modes[0]>; };\n"
+                            "float4 PS(float2 uv : TEXCOORD0) : COLOR0 { return tex2D(S, uv); }\n"
+                            "technique T { pass P { PixelShader = compile ps_2_0 PS(); } }\n",
+                            "virtual/Sampler.fx", noCache());
+        FAIL() << "a sampler state from a parameter compiled";
+    } catch (const CompileError& err) {
+        std::string what = err.what();
+        EXPECT_NE(what.find("Sampler.fx(3,46): error FX1404: sampler state 'AddressU"), std::string::npos) << what;
+        EXPECT_NE(what.find("reads a parameter at Apply()"), std::string::npos) << what;
+    }
 }
 
 TEST(Translation, ParameterDrivenStatesReadD3D9Codes) {

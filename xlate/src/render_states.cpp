@@ -715,6 +715,14 @@ bool translateSamplerAssignment(const FxAssignment& a, StateContext& ctx, Sample
     if (norm.rfind("d3dtaddress", 0) == 0) norm = norm.substr(11);
     if (norm.rfind("textureaddress", 0) == 0) norm = norm.substr(14);
 
+    const std::vector<Token>& tokens = ctx.syntax.tokens;
+    if (key != "texture" && a.value.end > a.value.begin + 2 && tokens[a.value.begin].is("<") && tokens[a.value.end - 1].is(">")) {
+        // D3D9's effect framework would read the parameter at Apply(); fxport's sampler states are
+        // decoded once, so say so rather than call the value malformed.
+        r.error(diag::kUnsupported, "sampler state '" + a.name + " = " + r.text() +
+                                        "' reads a parameter at Apply(); fxport supports sampler states given as values only");
+        return false;
+    }
     if (key == "texture") {
         auto name = r.objectName();
         if (!name) {
