@@ -87,6 +87,31 @@ TEST_F(ContentManagerTest, WindowsAssetNamesResolveIgnoringCaseWhenUnique) {
     EXPECT_THROW(content.Load<Texture2D>("..\\outside"), ContentLoadException);
 }
 
+// XNA's Content folder lives beside the game's executable (TitleContainer), wherever the game is
+// started from; a relative RootDirectory is still found from the working directory too.
+TEST_F(ContentManagerTest, ARelativeRootIsFoundBesideTheExecutableThenInTheWorkingDirectory) {
+    const fs::path executableFolder = fs::read_symlink("/proc/self/exe").parent_path();
+    const std::string relative = "fxport-content-beside-" + std::to_string(::getpid());
+    const fs::path beside = executableFolder / relative;
+    fs::create_directories(beside / "Textures");
+    writeTexture(beside / "Textures" / "Pair.png");
+    const fs::path startedFrom = fs::current_path();
+    fs::current_path(root);  // somewhere else: the working directory has no such folder
+    {
+        ContentManager content(device(), relative);
+        EXPECT_NE(content.Load<Texture2D>("Textures/Pair"), nullptr);
+        EXPECT_EQ(fs::path(content.loadLog().back().path), beside / "Textures" / "Pair.png");
+    }
+    fs::remove_all(beside);
+    writeTexture(root / "Textures" / "Pair.png");  // now only from the working directory
+    {
+        ContentManager content(device(), ".");
+        EXPECT_NE(content.Load<Texture2D>("Textures/Pair"), nullptr);
+        EXPECT_EQ(fs::path(content.loadLog().back().path), fs::path(".") / "Textures" / "Pair.png");
+    }
+    fs::current_path(startedFrom);
+}
+
 TEST_F(ContentManagerTest, MissingAssetNamesTheAssetAndEveryPathTried) {
     ContentManager content(device(), root.string());
     auto expectMessage = [&](auto load, const std::string& type, const std::string& asset,

@@ -116,8 +116,24 @@ GraphicsDevice& ContentManager::device(const std::string& assetName, const char*
 std::vector<std::string> ContentManager::candidates(const std::string& folder, const std::string& name,
                                                     std::initializer_list<const char*> extensions) const {
     std::vector<std::string> paths;
-    for (const char* extension : extensions) paths.push_back((fs::path(folder) / (portableName(name) + extension)).string());
+    for (const fs::path& base : searchFolders(folder))
+        for (const char* extension : extensions) paths.push_back((base / (portableName(name) + extension)).string());
     return paths;
+}
+
+std::vector<fs::path> ContentManager::searchFolders(const std::string& folder) {
+    // XNA's TitleContainer reads content beside the game's executable, wherever it is started
+    // from; a relative folder is also tried from the working directory (where fxport looked before).
+    const fs::path given(folder);
+    if (given.is_absolute()) return {given};
+    std::error_code error;
+    const fs::path executable = fs::read_symlink("/proc/self/exe", error);
+    std::vector<fs::path> folders;
+    if (!error) folders.push_back(executable.parent_path() / given);
+    const fs::path fromWorkingDirectory = fs::absolute(given, error);
+    bool same = !folders.empty() && fs::equivalent(folders[0], fromWorkingDirectory, error);
+    if (!same) folders.push_back(given);
+    return folders;
 }
 
 std::string ContentManager::locate(const std::string& assetName, const char* type,

@@ -11,7 +11,8 @@
 //               PNGs), <name>.ttf / <name>.otf (XNA's new-SpriteFont template: Size 14 points,
 //               characters 32..126, Spacing 0, no DefaultCharacter); metrics in sprite_font_import.h
 //
-// Search folders: RootDirectory (relative paths are taken from the working directory), and for
+// Search folders: RootDirectory (a relative one is looked for beside the executable first, as
+// XNA's TitleContainer does, then from the working directory), and for
 // effects first EffectDirectory when set, where the asset's last path component is used
 // ("Effects/Clear" -> <EffectDirectory>/Clear.fx), so .fx sources can stay where they are.
 // A missing asset throws ContentLoadException naming the asset, the type and every path tried.
@@ -20,6 +21,7 @@
 // type and name), and frees everything at Unload() or destruction.
 #pragma once
 
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -89,6 +91,9 @@ private:
     std::string locate(const std::string& assetName, const char* type, const std::vector<std::string>& candidates) const;
     std::vector<std::string> candidates(const std::string& folder, const std::string& name,
                                         std::initializer_list<const char*> extensions) const;
+    // `folder` as the places it names: itself when absolute; else beside the executable, then from
+    // the working directory (once when both are the same folder).
+    static std::vector<std::filesystem::path> searchFolders(const std::string& folder);
 
     GraphicsDevice* device_ = nullptr;
     std::map<std::string, std::unique_ptr<Effect>> effects_;
