@@ -129,7 +129,7 @@ TEST_F(ContentManagerTest, MissingAssetNamesTheAssetAndEveryPathTried) {
     };
     expectMessage([&] { content.Load<Texture2D>("Textures/Nope"); }, "Texture2D", "Textures/Nope",
                   {".png", ".jpg", ".jpeg", ".bmp", ".tga"});
-    expectMessage([&] { content.Load<Model>("Nope"); }, "Model", "Nope", {".gltf", ".glb"});
+    expectMessage([&] { content.Load<Model>("Nope"); }, "Model", "Nope", {".gltf", ".glb", ".fbx", ".x", ".obj", ".dae"});
     expectMessage([&] { content.Load<Effect>("Effects/Nope"); }, "Effect", "Effects/Nope", {".fx", ".fxeffect"});
     expectMessage([&] { content.Load<SpriteFont>("Nope"); }, "SpriteFont", "Nope",
                   {".spritefont", ".fnt", ".ttf", ".otf"});

@@ -201,7 +201,7 @@ template <> Texture2D* ContentManager::Load<Texture2D>(const std::string& assetN
 
 template <> Model* ContentManager::Load<Model>(const std::string& assetName) {
     if (auto it = models_.find(portableName(assetName)); it != models_.end()) return it->second.get();
-    const std::string file = locate(assetName, "Model", candidates(RootDirectory, assetName, {".gltf", ".glb"}));
+    const std::string file = locate(assetName, "Model", candidates(RootDirectory, assetName, {".gltf", ".glb", ".fbx", ".x", ".obj", ".dae"}));
     GraphicsDevice& graphicsDevice = device(assetName, "Model");
     LoadTimer timer;
     auto model = loadNamed("Model", assetName, [&] { return Model::Load(graphicsDevice, file); });

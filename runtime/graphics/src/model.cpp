@@ -3,12 +3,15 @@
 #include "fxport/graphics/model.h"
 
 #include <algorithm>
+#include <cctype>
+#include <filesystem>
 #include <string>
 #include <utility>
 
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/graphics_device.h"
 #include "fxport/graphics/effect_interfaces.h"
+#include "assimp_loader.h"
 #include "gltf_loader.h"
 
 namespace fxport {
@@ -145,7 +148,10 @@ std::unique_ptr<Texture2D> makeSolidTexture(GraphicsDevice& device, Color color,
 }  // namespace
 
 std::unique_ptr<Model> Model::Load(GraphicsDevice& device, const std::string& path) {
-    return build(device, detail::loadGltf(path), path);
+    std::string extension = std::filesystem::path(path).extension().string();
+    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (extension == ".gltf" || extension == ".glb") return build(device, detail::loadGltf(path), path);
+    return build(device, detail::loadWithAssimp(path), path);
 }
 
 std::unique_ptr<Model> Model::FromVertices(GraphicsDevice& device, const std::string& name,

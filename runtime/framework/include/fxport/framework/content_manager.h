@@ -4,7 +4,7 @@
 //
 //   Effect      <name>.fx (compiled by xlate, cached), <name>.fxeffect (precompiled: fxport compile)
 //   Texture2D   <name>.png, <name>.jpg, <name>.jpeg, <name>.bmp, <name>.tga
-//   Model       <name>.gltf, <name>.glb
+//   Model       <name>.gltf, <name>.glb, <name>.fbx, <name>.x, <name>.obj, <name>.dae (Assimp)
 //   SpriteFont  <name>.spritefont (XNA's XML font description: FontName, Size, Spacing, UseKerning,
 //               Style, DefaultCharacter, CharacterRegions; the font found by fontconfig, or a .ttf
 //               named like FontName beside it), <name>.fnt (BMFont, text format, with its page

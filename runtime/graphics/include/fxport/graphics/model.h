@@ -1,5 +1,6 @@
-// Model: XNA 4's Model, loaded from glTF 2.0 (.gltf with its .bin/images, or .glb), so that the
-// tutorials' drawing loops port line by line:
+// Model: XNA 4's Model, loaded from glTF 2.0 (.gltf with its .bin/images, or .glb) or, through
+// Assimp, the formats XNA games ship (.x, .fbx, .obj, .dae ...), so that the tutorials' drawing
+// loops port line by line:
 //
 //   std::unique_ptr<Model> model = Model::Load(device, "content/scene.glb");
 //   std::vector<Matrix> transforms(model->Bones.Count());
@@ -15,6 +16,15 @@
 //                                        part.StartIndex, part.PrimitiveCount);
 //       }
 //   }
+//
+// Other formats (assimp_loader.h) follow the same rules with Assimp's node tree in place of the
+// glTF scene: bones depth-first from the file's root node, one ModelMesh per node with meshes (one
+// part per Assimp mesh, named after the node), data right-handed and clockwise as XNA's importers
+// give it (.x files are converted from left-handed), v down, flat normals where the file has none,
+// generated tangent frames; material diffuse colour/opacity/emissive and diffuse, normal and
+// specular textures (files beside the model, Windows separators and any case accepted, or embedded).
+// Skin weights and animations are not imported: a skinned mesh loads in its bind pose, with a
+// warning on stderr.
 //
 // How glTF becomes an XNA model:
 //  * Bones: one per node of the default scene (else scene 0, else every node that is no node's
