@@ -128,7 +128,7 @@ TEST_F(ContentManagerTest, MissingAssetNamesTheAssetAndEveryPathTried) {
         }
     };
     expectMessage([&] { content.Load<Texture2D>("Textures/Nope"); }, "Texture2D", "Textures/Nope",
-                  {".png", ".jpg", ".jpeg", ".bmp", ".tga"});
+                  {".png", ".jpg", ".jpeg", ".bmp", ".tga", ".dds"});
     expectMessage([&] { content.Load<Model>("Nope"); }, "Model", "Nope", {".gltf", ".glb", ".fbx", ".x", ".obj", ".dae"});
     expectMessage([&] { content.Load<Effect>("Effects/Nope"); }, "Effect", "Effects/Nope", {".fx", ".fxeffect"});
     expectMessage([&] { content.Load<SpriteFont>("Nope"); }, "SpriteFont", "Nope",

@@ -190,7 +190,7 @@ template <> Effect* ContentManager::Load<Effect>(const std::string& assetName) {
 template <> Texture2D* ContentManager::Load<Texture2D>(const std::string& assetName) {
     if (auto it = textures_.find(portableName(assetName)); it != textures_.end()) return it->second.get();
     const std::string file =
-        locate(assetName, "Texture2D", candidates(RootDirectory, assetName, {".png", ".jpg", ".jpeg", ".bmp", ".tga"}));
+        locate(assetName, "Texture2D", candidates(RootDirectory, assetName, {".png", ".jpg", ".jpeg", ".bmp", ".tga", ".dds"}));
     GraphicsDevice& graphicsDevice = device(assetName, "Texture2D");
     LoadTimer timer;
     auto texture = loadNamed("Texture2D", assetName, [&] { return Texture2D::FromFile(graphicsDevice, file); });

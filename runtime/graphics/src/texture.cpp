@@ -1,8 +1,11 @@
 #include "fxport/graphics/texture.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 
+#include "dds_image.h"
 #include "device_impl.h"
 #include "effect_impl.h"
 #include "fxport/graphics/errors.h"
@@ -139,7 +142,31 @@ void Texture2D::getData(int level, void* data, std::size_t bytes) const {
     readTexels(-1, level, data, bytes);
 }
 
+namespace {
+
+// A DDS file's levels as stored (decoded to RGBA8); a partial mip chain is completed by averaging
+// 2x2 texels, as GenerateMips would.
+std::unique_ptr<Texture2D> textureFromDds(fxport::GraphicsDevice& device, const std::string& path) {
+    detail::DdsImage dds = detail::readDds(path);
+    if (dds.cube) throw ArgumentError("Texture2D::FromFile: '" + path + "' is a cube map (six faces); a Texture2D has one");
+    auto texture = std::make_unique<Texture2D>(device, dds.width, dds.height, dds.levelCount > 1, SurfaceFormat::Color);
+    texture->Name = path;
+    std::vector<Color> level;
+    for (int l = 0; l < texture->LevelCount(); ++l) {
+        const int w = std::max(1, dds.width >> l), h = std::max(1, dds.height >> l);
+        if (l < dds.levelCount) level = std::move(dds.levels[std::size_t(l)]);
+        else level = detail::halve(level, std::max(1, dds.width >> (l - 1)), std::max(1, dds.height >> (l - 1)));
+        texture->SetData(l, nullptr, level.data(), std::size_t(w) * std::size_t(h));
+    }
+    return texture;
+}
+
+}  // namespace
+
 std::unique_ptr<Texture2D> Texture2D::FromFile(fxport::GraphicsDevice& device, const std::string& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (extension == ".dds") return textureFromDds(device, path);
     detail::Image image = detail::loadImage(path);  // throws ArgumentError naming the file
     auto texture = std::make_unique<Texture2D>(device, image.width, image.height, false, SurfaceFormat::Color);
     texture->Name = path;

@@ -3,7 +3,8 @@
 // tries these files, in order, under each search folder:
 //
 //   Effect      <name>.fx (compiled by xlate, cached), <name>.fxeffect (precompiled: fxport compile)
-//   Texture2D   <name>.png, <name>.jpg, <name>.jpeg, <name>.bmp, <name>.tga
+//   Texture2D   <name>.png, <name>.jpg, <name>.jpeg, <name>.bmp, <name>.tga, <name>.dds (its mip
+//               levels; BC1-BC3 decoded to Color, see dds_image.h)
 //   Model       <name>.gltf, <name>.glb, <name>.fbx, <name>.x, <name>.obj, <name>.dae (Assimp)
 //   SpriteFont  <name>.spritefont (XNA's XML font description: FontName, Size, Spacing, UseKerning,
 //               Style, DefaultCharacter, CharacterRegions; the font found by fontconfig, or a .ttf

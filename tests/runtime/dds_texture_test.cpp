@@ -1,0 +1,176 @@
+// .dds textures (Texture2D::FromFile, Content.Load<Texture2D>): BC1/BC2/BC3 blocks decoded as D3D's
+// block-compression rules define them (expectations worked out here from those rules), mip levels
+// as stored, uncompressed files through their channel masks, and bad files refused by name.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "dds_image.h"
+#include "fxport/graphics.h"
+
+namespace fxport {
+namespace {
+
+namespace fs = std::filesystem;
+
+void put32(std::vector<std::uint8_t>& b, std::size_t at, std::uint32_t v) {
+    for (int k = 0; k < 4; ++k) b[at + std::size_t(k)] = std::uint8_t(v >> (8 * k));
+}
+
+// A DDS header (128 bytes) for width x height with `levels` mip levels; `fourCC` or masks.
+std::vector<std::uint8_t> header(int width, int height, int levels, const char* fourCC, std::uint32_t bits = 0,
+                                 std::uint32_t r = 0, std::uint32_t g = 0, std::uint32_t b = 0, std::uint32_t a = 0) {
+    std::vector<std::uint8_t> h(128, 0);
+    h[0] = 'D', h[1] = 'D', h[2] = 'S', h[3] = ' ';
+    put32(h, 4, 124);
+    put32(h, 8, 0x1007 | (levels > 1 ? 0x20000 : 0));
+    put32(h, 12, std::uint32_t(height));
+    put32(h, 16, std::uint32_t(width));
+    put32(h, 28, std::uint32_t(levels));
+    put32(h, 76, 32);
+    if (fourCC) {
+        put32(h, 80, 0x4);
+        for (int k = 0; k < 4; ++k) h[84 + std::size_t(k)] = std::uint8_t(fourCC[k]);
+    } else {
+        put32(h, 80, 0x40 | (a ? 0x1 : 0));
+        put32(h, 88, bits), put32(h, 92, r), put32(h, 96, g), put32(h, 100, b), put32(h, 104, a);
+    }
+    put32(h, 108, 0x1000);
+    return h;
+}
+
+// c0 = pure red (0xF800), c1 = pure blue (0x001F): c0 > c1, the four-colour mode; each row's
+// texels use indices 0, 1, 2, 3.
+const std::uint8_t kRedBlueBlock[8] = {0x00, 0xF8, 0x1F, 0x00, 0xE4, 0xE4, 0xE4, 0xE4};
+
+TEST(DdsBlocks, Bc1FourColourModeInterpolatesThirds) {
+    Color texels[16];
+    detail::decodeBc1Block(kRedBlueBlock, texels);
+    const Color expected[4] = {Color(255, 0, 0, 255), Color(0, 0, 255, 255), Color(170, 0, 85, 255), Color(85, 0, 170, 255)};
+    for (int i = 0; i < 16; ++i) EXPECT_EQ(texels[i], expected[i % 4]) << "texel " << i;
+}
+
+TEST(DdsBlocks, Bc1ThreeColourModeHasHalfwayAndTransparentBlack) {
+    const std::uint8_t block[8] = {0x1F, 0x00, 0x00, 0xF8, 0xE4, 0xE4, 0xE4, 0xE4};  // c0 = blue <= c1 = red
+    Color texels[16];
+    detail::decodeBc1Block(block, texels);
+    const Color expected[4] = {Color(0, 0, 255, 255), Color(255, 0, 0, 255), Color(128, 0, 128, 255), Color(0, 0, 0, 0)};
+    for (int i = 0; i < 16; ++i) EXPECT_EQ(texels[i], expected[i % 4]) << "texel " << i;
+}
+
+TEST(DdsBlocks, Bc2ExplicitAndBc3InterpolatedAlpha) {
+    std::uint8_t bc2[16] = {0x10, 0x32, 0x54, 0x76, 0x98, 0xBA, 0xDC, 0xFE};  // texel i: alpha nibble i
+    std::copy(kRedBlueBlock, kRedBlueBlock + 8, bc2 + 8);
+    Color texels[16];
+    detail::decodeBc2Block(bc2, texels);
+    for (int i = 0; i < 16; ++i) EXPECT_EQ(texels[i].A, i * 17) << "texel " << i;
+    EXPECT_EQ(texels[2], Color(170, 0, 85, 34));  // BC2's colours never use the three-colour mode
+
+    // a0 = 255 > a1 = 0: eight alphas, a2..a7 = ((7 - k) * a0 + k * a1) / 7. Texel i takes index i % 8.
+    std::uint8_t bc3[16] = {255, 0};
+    std::uint64_t bits = 0;
+    for (int i = 0; i < 16; ++i) bits |= std::uint64_t(i % 8) << (3 * i);
+    for (int k = 0; k < 6; ++k) bc3[2 + k] = std::uint8_t(bits >> (8 * k));
+    std::copy(kRedBlueBlock, kRedBlueBlock + 8, bc3 + 8);
+    detail::decodeBc3Block(bc3, texels);
+    const int alphas[8] = {255, 0, 219, 182, 146, 109, 73, 36};
+    for (int i = 0; i < 16; ++i) EXPECT_EQ(texels[i].A, alphas[i % 8]) << "texel " << i;
+    // a0 <= a1: six alphas plus 0 and 255.
+    bc3[0] = 0, bc3[1] = 255;
+    detail::decodeBc3Block(bc3, texels);
+    const int six[8] = {0, 255, 51, 102, 153, 204, 0, 255};
+    for (int i = 0; i < 16; ++i) EXPECT_EQ(texels[i].A, six[i % 8]) << "texel " << i;
+}
+
+class DdsTexture : public ::testing::Test {
+protected:
+    static GraphicsDevice& device() {
+        static GraphicsDevice d(PresentationParameters{});
+        return d;
+    }
+    void SetUp() override {
+        dir = fs::temp_directory_path() / ("fxport-dds-" + std::to_string(::getpid()) + "-" +
+                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+    }
+    void TearDown() override { fs::remove_all(dir); }
+    std::string write(const std::string& name, const std::vector<std::uint8_t>& bytes) {
+        std::ofstream(dir / name, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+        return (dir / name).string();
+    }
+    fs::path dir;
+};
+
+// 8x8 DXT1 with its four levels: level l is made of blocks of one solid colour (index 0 only).
+TEST_F(DdsTexture, Dxt1MipChainLoadsLevelByLevel) {
+    std::vector<std::uint8_t> file = header(8, 8, 4, "DXT1");
+    const std::uint16_t colours[4] = {0xF800, 0x07E0, 0x001F, 0xFFFF};  // red, green, blue, white
+    const Color expected[4] = {Color(255, 0, 0, 255), Color(0, 255, 0, 255), Color(0, 0, 255, 255), Color(255, 255, 255, 255)};
+    for (int level = 0; level < 4; ++level) {
+        const int blocks = std::max(1, (8 >> level) / 4) * std::max(1, (8 >> level) / 4);
+        for (int k = 0; k < blocks; ++k) {
+            // c0 = the colour, c1 = 0: four-colour mode (c0 > c1), every index 0.
+            const std::uint8_t block[8] = {std::uint8_t(colours[level]), std::uint8_t(colours[level] >> 8), 0, 0, 0, 0, 0, 0};
+            file.insert(file.end(), block, block + 8);
+        }
+    }
+    const auto texture = Texture2D::FromFile(device(), write("chain.dds", file));
+    EXPECT_EQ(texture->Width(), 8);
+    EXPECT_EQ(texture->Height(), 8);
+    ASSERT_EQ(texture->LevelCount(), 4);
+    for (int level = 0; level < 4; ++level) {
+        const int side = 8 >> level;
+        std::vector<Color> texels(std::size_t(side * side));
+        texture->getData(level, texels.data(), texels.size() * sizeof(Color));
+        for (const Color& c : texels) EXPECT_EQ(c, expected[level]) << "level " << level;
+    }
+}
+
+// A8R8G8B8 (bytes B, G, R, A in memory) and R5G6B5, read through their masks.
+TEST_F(DdsTexture, UncompressedFilesFollowTheirChannelMasks) {
+    std::vector<std::uint8_t> argb = header(2, 1, 1, nullptr, 32, 0xFF0000, 0xFF00, 0xFF, 0xFF000000u);
+    for (std::uint8_t byte : {10, 20, 30, 40, 50, 60, 70, 80}) argb.push_back(byte);
+    const auto a = Texture2D::FromFile(device(), write("argb.dds", argb));
+    std::vector<Color> texels(2);
+    a->GetData(texels.data(), 2);
+    EXPECT_EQ(texels[0], Color(30, 20, 10, 40));
+    EXPECT_EQ(texels[1], Color(70, 60, 50, 80));
+
+    std::vector<std::uint8_t> rgb565 = header(1, 1, 1, nullptr, 16, 0xF800, 0x07E0, 0x001F);
+    rgb565.push_back(0x10), rgb565.push_back(0x84);  // 0x8410: r 16, g 32, b 16
+    const auto b = Texture2D::FromFile(device(), write("565.dds", rgb565));
+    Color texel;
+    b->GetData(&texel, 1);
+    EXPECT_EQ(texel, Color(132, 130, 132, 255));  // 16 * 255 / 31, 32 * 255 / 63, rounded; opaque without an alpha mask
+}
+
+TEST_F(DdsTexture, BadFilesAreRefusedNamingTheFile) {
+    auto expectRefused = [&](const std::string& path, const std::string& words) {
+        try {
+            Texture2D::FromFile(device(), path);
+            ADD_FAILURE() << path << " loaded";
+        } catch (const ArgumentError& e) {
+            const std::string what = e.what();
+            EXPECT_NE(what.find(path), std::string::npos) << what;
+            EXPECT_NE(what.find(words), std::string::npos) << what;
+        }
+    };
+    std::vector<std::uint8_t> truncated = header(8, 8, 1, "DXT5");
+    truncated.resize(truncated.size() + 20);  // four blocks need 64 bytes
+    expectRefused(write("truncated.dds", truncated), "truncated");
+    expectRefused(write("png.dds", {0x89, 'P', 'N', 'G'}), "not a DDS file");
+    std::vector<std::uint8_t> huge = header(1 << 20, 1 << 20, 1, "DXT1");
+    expectRefused(write("huge.dds", huge), "is not a size fxport loads");
+    std::vector<std::uint8_t> volume = header(4, 4, 1, "DXT1");
+    put32(volume, 112, 0x200000);
+    expectRefused(write("volume.dds", volume), "volume texture");
+    expectRefused(write("atc.dds", header(4, 4, 1, "ATC ")), "compression 'ATC ' is not one fxport reads");
+}
+
+}  // namespace
+}  // namespace fxport
