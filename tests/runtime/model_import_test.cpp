@@ -5,6 +5,7 @@
 // with the file's name.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -150,6 +151,7 @@ Frame Root {
 }
 )";
     const auto model = Model::Load(device(), write("tri.x", x).string());
+    EXPECT_EQ(model->Meshes[0].MeshParts[0].Textures.Texture->Width(), 1);  // no material: the default texture
     const ModelBone* child = nullptr;
     for (int i = 0; i < model->Bones.Count(); ++i)
         if (model->Bones[i].Name == "Child") child = &model->Bones[i];
@@ -166,6 +168,24 @@ Frame Root {
     const std::vector<ModelVertex> v = verticesOf(part);
     ASSERT_EQ(v.size(), 3u);
     for (const ModelVertex& vertex : v) EXPECT_NEAR(vertex.Position.Z, -1, 1e-5);  // left- to right-handed
+}
+
+// Models made for Direct3D name .dds textures: read with the DDS loader (an uncompressed 1x1 here).
+TEST_F(ModelImport, ADdsTextureTheModelNamesIsRead) {
+    std::vector<std::uint8_t> dds(128, 0);
+    const std::uint32_t fields[][2] = {{4, 124}, {8, 0x1007}, {12, 1}, {16, 1}, {76, 32}, {80, 0x41}, {88, 32},
+                                       {92, 0xFF0000}, {96, 0xFF00}, {100, 0xFF}, {104, 0xFF000000u}, {108, 0x1000}};
+    dds[0] = 'D', dds[1] = 'D', dds[2] = 'S', dds[3] = ' ';
+    for (const auto& f : fields)
+        for (int k = 0; k < 4; ++k) dds[f[0] + std::uint32_t(k)] = std::uint8_t(f[1] >> (8 * k));
+    for (std::uint8_t byte : {30, 20, 10, 255}) dds.push_back(byte);  // B, G, R, A
+    std::ofstream(dir / "tex" / "Wall.dds", std::ios::binary).write(reinterpret_cast<const char*>(dds.data()), std::streamsize(dds.size()));
+    write("quad.mtl", "newmtl Painted\nmap_Kd tex/Wall.dds\n");
+    const auto model = Model::Load(device(), write("quad.obj", kQuadObj).string());
+    auto* effect = dynamic_cast<BasicEffect*>(model->Meshes[0].MeshParts[0].Effect);
+    ASSERT_NE(effect, nullptr);
+    ASSERT_NE(effect->Texture, nullptr);
+    EXPECT_EQ(effect->Texture->GetData<Color>(), std::vector<Color>{Color(10, 20, 30, 255)});
 }
 
 TEST_F(ModelImport, BadFilesAreRefusedNamingTheFile) {

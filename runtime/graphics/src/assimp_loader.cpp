@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <map>
 
+#include "dds_image.h"
 #include "fxport/graphics/errors.h"
 #include "image_io.h"
 #include "tangent_generation.h"
@@ -193,6 +194,10 @@ private:
         tries.push_back(folder_ / named.filename());
         for (const fs::path& candidate : tries) {
             if (fs::path found = existingIgnoringCase(candidate); !found.empty()) {
+                if (lower(found.extension().string()) == ".dds") {  // what .x models made for D3D usually name
+                    DdsImage dds = readDds(found.string());
+                    return GltfImage{key, dds.width, dds.height, std::move(dds.levels[0])};
+                }
                 Image loaded = loadImage(found.string());
                 return GltfImage{key, loaded.width, loaded.height, std::move(loaded.pixels)};
             }
