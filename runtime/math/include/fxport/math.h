@@ -17,6 +17,7 @@
 #include "fxport/math/color.h"
 #include "fxport/math/math_helper.h"
 #include "fxport/math/matrix.h"
+#include "fxport/math/packed_vector.h"
 #include "fxport/math/plane.h"
 #include "fxport/math/quaternion.h"
 #include "fxport/math/ray.h"
