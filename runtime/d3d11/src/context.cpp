@@ -24,6 +24,8 @@ T* own(I* object, Device* device) {
 
 PrimitiveType primitiveOf(D3D11_PRIMITIVE_TOPOLOGY t, bool& ok) {
     ok = true;
+    if (t >= D3D11_PRIMITIVE_TOPOLOGY_1_CONTROL_POINT_PATCHLIST && t <= D3D11_PRIMITIVE_TOPOLOGY_32_CONTROL_POINT_PATCHLIST)
+        return PrimitiveType::PointList;  // a patch list: DrawArguments::controlPoints says so
     switch (t) {
     case D3D11_PRIMITIVE_TOPOLOGY_POINTLIST: return PrimitiveType::PointList;
     case D3D11_PRIMITIVE_TOPOLOGY_LINELIST: return PrimitiveType::LineList;
@@ -45,16 +47,19 @@ Context::Context(Device* device) : device_(device) { ClearState(); }
 
 void Context::ClearState() {
     layout_ = nullptr;
-    vertexBuffer_ = nullptr;
-    stride_ = vertexOffset_ = 0;
+    for (VertexSlot& v : vertexSlots_) v = VertexSlot{};
     indexBuffer_ = nullptr;
     indexFormat_ = DXGI_FORMAT_UNKNOWN;
     indexOffset_ = 0;
     topology_ = D3D11_PRIMITIVE_TOPOLOGY_UNDEFINED;
     vertexShader_ = nullptr;
     pixelShader_ = nullptr;
-    vs_ = Stage{};
-    ps_ = Stage{};
+    geometryShader_ = nullptr;
+    hullShader_ = nullptr;
+    domainShader_ = nullptr;
+    computeShader_ = nullptr;
+    for (Stage* stage : {&vs_, &ps_, &gs_, &hs_, &ds_, &cs_}) *stage = Stage{};
+    for (auto& u : csUavs_) u = nullptr;
     viewport_ = D3D11_VIEWPORT{};
     viewportSet_ = false;
     scissor_ = D3D11_RECT{};
@@ -82,13 +87,12 @@ void Context::IASetInputLayout(ID3D11InputLayout* p) { layout_ = own<InputLayout
 void Context::IASetVertexBuffers(UINT StartSlot, UINT NumBuffers, ID3D11Buffer* const* pp, const UINT* pStrides, const UINT* pOffsets) {
     for (UINT i = 0; i < NumBuffers; ++i) {
         const UINT slot = StartSlot + i;
-        if (slot != 0) {
-            if (pp && pp[i]) note("IASetVertexBuffers: slot " + std::to_string(slot) + ": fxport draws from vertex-buffer slot 0 only");
-            continue;
-        }
-        vertexBuffer_ = pp ? own<Buffer>(pp[i], device_) : nullptr;
-        stride_ = pStrides ? pStrides[i] : 0;
-        vertexOffset_ = pOffsets ? pOffsets[i] : 0;
+        if (slot >= vertexSlots_.size())
+            return note("IASetVertexBuffers: slot " + std::to_string(slot) + " is beyond D3D11's " + std::to_string(vertexSlots_.size()));
+        VertexSlot& v = vertexSlots_[slot];
+        v.buffer = pp ? own<Buffer>(pp[i], device_) : nullptr;
+        v.stride = pStrides ? pStrides[i] : 0;
+        v.offset = pOffsets ? pOffsets[i] : 0;
     }
 }
 
@@ -111,21 +115,18 @@ void Context::PSSetShader(ID3D11PixelShader* p, ID3D11ClassInstance* const*, UIN
     effectPass_ = nullptr;
 }
 void Context::GSSetShader(ID3D11GeometryShader* p, ID3D11ClassInstance* const*, UINT) {
-    if (p) note("GSSetShader: geometry shaders are not implemented in the D3D11 front end yet");
+    geometryShader_ = own<GeometryShader>(p, device_);
+    effectPass_ = nullptr;
 }
 void Context::HSSetShader(ID3D11HullShader* p, ID3D11ClassInstance* const*, UINT) {
-    if (p) note("HSSetShader: hull shaders (tessellation) are not implemented in the D3D11 front end");
+    hullShader_ = own<HullShader>(p, device_);
+    effectPass_ = nullptr;
 }
 void Context::DSSetShader(ID3D11DomainShader* p, ID3D11ClassInstance* const*, UINT) {
-    if (p) note("DSSetShader: domain shaders (tessellation) are not implemented in the D3D11 front end");
+    domainShader_ = own<DomainShader>(p, device_);
+    effectPass_ = nullptr;
 }
-void Context::CSSetShader(ID3D11ComputeShader* p, ID3D11ClassInstance* const*, UINT) {
-    if (p) note("CSSetShader: compute shaders are not implemented in the D3D11 front end");
-}
-void Context::CSSetUnorderedAccessViews(UINT, UINT, ID3D11UnorderedAccessView* const*, const UINT*) {
-    note("CSSetUnorderedAccessViews: unordered-access views are not implemented in the D3D11 front end");
-}
-void Context::Dispatch(UINT, UINT, UINT) { note("Dispatch: compute is not implemented in the D3D11 front end"); }
+void Context::CSSetShader(ID3D11ComputeShader* p, ID3D11ClassInstance* const*, UINT) { computeShader_ = own<ComputeShader>(p, device_); }
 
 template <class Array, class I, class T>
 void setSlots(Array& slots, UINT start, UINT count, I* const* objects, Device* device, const char* call) {
@@ -138,23 +139,29 @@ void setSlots(Array& slots, UINT start, UINT count, I* const* objects, Device* d
     }
 }
 
-void Context::VSSetConstantBuffers(UINT s, UINT n, ID3D11Buffer* const* p) {
-    setSlots<decltype(vs_.constantBuffers), ID3D11Buffer, Buffer>(vs_.constantBuffers, s, n, p, device_, "VSSetConstantBuffers");
-}
-void Context::PSSetConstantBuffers(UINT s, UINT n, ID3D11Buffer* const* p) {
-    setSlots<decltype(ps_.constantBuffers), ID3D11Buffer, Buffer>(ps_.constantBuffers, s, n, p, device_, "PSSetConstantBuffers");
-}
-void Context::VSSetShaderResources(UINT s, UINT n, ID3D11ShaderResourceView* const* p) {
-    setSlots<decltype(vs_.views), ID3D11ShaderResourceView, ShaderResourceView>(vs_.views, s, n, p, device_, "VSSetShaderResources");
-}
-void Context::PSSetShaderResources(UINT s, UINT n, ID3D11ShaderResourceView* const* p) {
-    setSlots<decltype(ps_.views), ID3D11ShaderResourceView, ShaderResourceView>(ps_.views, s, n, p, device_, "PSSetShaderResources");
-}
-void Context::VSSetSamplers(UINT s, UINT n, ID3D11SamplerState* const* p) {
-    setSlots<decltype(vs_.samplers), ID3D11SamplerState, SamplerState>(vs_.samplers, s, n, p, device_, "VSSetSamplers");
-}
-void Context::PSSetSamplers(UINT s, UINT n, ID3D11SamplerState* const* p) {
-    setSlots<decltype(ps_.samplers), ID3D11SamplerState, SamplerState>(ps_.samplers, s, n, p, device_, "PSSetSamplers");
+// Each stage's Set{ConstantBuffers,ShaderResources,Samplers}: the same three calls per stage.
+#define FXPORT_STAGE_SLOTS(PREFIX, STAGE)                                                                                               \
+    void Context::PREFIX##SetConstantBuffers(UINT s, UINT n, ID3D11Buffer* const* p) {                                                   \
+        setSlots<decltype(STAGE.constantBuffers), ID3D11Buffer, Buffer>(STAGE.constantBuffers, s, n, p, device_,                        \
+                                                                        #PREFIX "SetConstantBuffers");                                   \
+    }                                                                                                                                    \
+    void Context::PREFIX##SetShaderResources(UINT s, UINT n, ID3D11ShaderResourceView* const* p) {                                       \
+        setSlots<decltype(STAGE.views), ID3D11ShaderResourceView, ShaderResourceView>(STAGE.views, s, n, p, device_,                    \
+                                                                                      #PREFIX "SetShaderResources");                     \
+    }                                                                                                                                    \
+    void Context::PREFIX##SetSamplers(UINT s, UINT n, ID3D11SamplerState* const* p) {                                                    \
+        setSlots<decltype(STAGE.samplers), ID3D11SamplerState, SamplerState>(STAGE.samplers, s, n, p, device_, #PREFIX "SetSamplers"); \
+    }
+FXPORT_STAGE_SLOTS(VS, vs_)
+FXPORT_STAGE_SLOTS(PS, ps_)
+FXPORT_STAGE_SLOTS(GS, gs_)
+FXPORT_STAGE_SLOTS(HS, hs_)
+FXPORT_STAGE_SLOTS(DS, ds_)
+FXPORT_STAGE_SLOTS(CS, cs_)
+#undef FXPORT_STAGE_SLOTS
+
+void Context::CSSetUnorderedAccessViews(UINT s, UINT n, ID3D11UnorderedAccessView* const* p, const UINT*) {
+    setSlots<UavSlots, ID3D11UnorderedAccessView, UnorderedAccessView>(csUavs_, s, n, p, device_, "CSSetUnorderedAccessViews");
 }
 
 // --- rasterizer and output merger
@@ -201,10 +208,36 @@ void Context::bindStage(int stage, const ShaderBindings& bindings, const Stage& 
         if (u.glUnit < 0 || u.glUnit >= kMaxTextureSlots) continue;
         const ShaderResourceView* v =
             u.textureSlot >= 0 && std::size_t(u.textureSlot) < s.views.size() ? s.views[std::size_t(u.textureSlot)].Get() : nullptr;
+        if (v && !v->texture)
+            throw InvalidOperation("t" + std::to_string(u.textureSlot) + " holds a view of a buffer where the shader samples a texture");
         core.Textures[u.glUnit] = v ? v->texture->colour.get() : nullptr;
         const SamplerState* st =
             u.samplerSlot >= 0 && std::size_t(u.samplerSlot) < s.samplers.size() ? s.samplers[std::size_t(u.samplerSlot)].Get() : nullptr;
         core.SamplerStates[u.glUnit] = st ? st->state : defaultSampler_;
+    }
+}
+
+void Context::bindStorage(const char* call, const core::ShaderCode& code, const Stage& s, const UavSlots* uavs) {
+    GraphicsDevice& core = device_->core();
+    for (const xlate::StorageBinding& b : code.shader().storage) {
+        const std::string reg = std::string(1, b.registerClass) + std::to_string(b.slot);
+        const std::string use = std::string(call) + ": " + code.shader().entryPoint + " uses '" + b.name + "' (" + reg + ")";
+        const bool image = b.kind == xlate::StorageKind::Image;
+        if (b.registerClass == 't') {
+            const ShaderResourceView* v = b.slot >= 0 && std::size_t(b.slot) < s.views.size() ? s.views[std::size_t(b.slot)].Get() : nullptr;
+            if (!v || !v->buffer)
+                throw InvalidOperation(use + ", but no shader-resource view of a structured or raw buffer is set there");
+            core::setStorageBuffer(core, false, b.slot, v->buffer->gpu.get());
+            continue;
+        }
+        const UnorderedAccessView* v = uavs && b.slot >= 0 && std::size_t(b.slot) < uavs->size() ? (*uavs)[std::size_t(b.slot)].Get() : nullptr;
+        if (!v)
+            throw InvalidOperation(use + ", but no unordered-access view is set there" +
+                                   (uavs ? std::string(" (CSSetUnorderedAccessViews)") : std::string(" (fxport binds UAVs for compute shaders only)")));
+        if (image != (v->texture != nullptr))
+            throw InvalidOperation(use + ", a " + (image ? "texture" : "buffer") + ", but the view there is of a " + (v->texture ? "texture" : "buffer"));
+        if (image) core.SetUnorderedAccess(b.slot, v->texture->colour.get());
+        else core::setStorageBuffer(core, true, b.slot, v->buffer->gpu.get());
     }
 }
 
@@ -258,15 +291,41 @@ bool Context::prepare(const char* call) {
         // the context's (Effects11's Apply does the same through the context's Set calls).
         effectPass_->Apply();
     } else {
-        core::setShaders(core, *vertexShader_->code, *pixelShader_->code);
-        bindStage(0, vertexShader_->bindings, vs_);
-        bindStage(1, pixelShader_->bindings, ps_);
+        auto codeOf = [](const auto& shader) { return shader ? shader->code.get() : nullptr; };
+        const core::ShaderCode* stages[5] = {vertexShader_->code.get(), pixelShader_->code.get(), codeOf(geometryShader_),
+                                             codeOf(hullShader_), codeOf(domainShader_)};
+        core::setShaderStages(core, stages);
+        const ShaderBindings* bindings[5] = {&vertexShader_->bindings, &pixelShader_->bindings,
+                                             geometryShader_ ? &geometryShader_->bindings : nullptr,
+                                             hullShader_ ? &hullShader_->bindings : nullptr, domainShader_ ? &domainShader_->bindings : nullptr};
+        const Stage* slots[5] = {&vs_, &ps_, &gs_, &hs_, &ds_};
+        for (int stage = 0; stage < 5; ++stage) {
+            if (!stages[stage]) continue;
+            bindStage(stage, *bindings[stage], *slots[stage]);
+            bindStorage(call, *stages[stage], *slots[stage], nullptr);
+        }
     }
+    return true;
+}
 
-    std::vector<VertexElement> elements = layout_ ? layout_->elements : std::vector<VertexElement>{};
-    int stride = int(stride_);
-    if (elements.empty()) stride = std::max(stride, 1);
-    declaration_ = VertexDeclaration(stride, elements);
+bool Context::streams(const char* call, std::vector<core::InstancedStream>& out) {
+    out.clear();
+    declarations_.clear();
+    if (!layout_) return true;
+    declarations_.reserve(layout_->slots.size());  // the streams point into it
+    for (std::size_t slot = 0; slot < layout_->slots.size(); ++slot) {
+        const InputLayout::Slot& elements = layout_->slots[slot];
+        const VertexSlot& v = vertexSlots_[slot];
+        if (!elements.elements.empty() && (!v.buffer || !v.buffer->gpu)) {
+            note(std::string(call) + ": the input layout reads slot " + std::to_string(slot) + " and no vertex buffer is set there; nothing drawn");
+            return false;
+        }
+        declarations_.emplace_back(std::max(int(v.stride), 1), elements.elements);
+        core::InstancedStream stream;
+        stream.vertices = core::VertexStream{elements.elements.empty() ? nullptr : v.buffer->gpu.get(), v.offset, &declarations_.back()};
+        stream.instanceStepRate = int(elements.instanceStepRate);
+        out.push_back(stream);
+    }
     return true;
 }
 
@@ -274,8 +333,13 @@ void Context::draw(const char* call, core::DrawArguments a, bool indexed) {
     bool ok = false;
     a.type = primitiveOf(topology_, ok);
     if (!ok) return note(std::string(call) + ": primitive topology " + std::to_string(topology_) + " is not one fxport draws; nothing drawn");
-    if (layout_ && !layout_->elements.empty() && (!vertexBuffer_ || !vertexBuffer_->gpu))
-        return note(std::string(call) + ": no vertex buffer in slot 0; nothing drawn");
+    const bool patches = topology_ >= D3D11_PRIMITIVE_TOPOLOGY_1_CONTROL_POINT_PATCHLIST;
+    if (patches) a.controlPoints = int(topology_) - int(D3D11_PRIMITIVE_TOPOLOGY_1_CONTROL_POINT_PATCHLIST) + 1;
+    if (!effectPass_ && bool(hullShader_) != bool(domainShader_))
+        return note(std::string(call) + ": a hull shader without a domain shader (or the reverse); nothing drawn");
+    if (!effectPass_ && patches != bool(hullShader_))
+        return note(std::string(call) + (patches ? ": a patch-list topology draws through a hull and a domain shader (HSSetShader, DSSetShader); nothing drawn"
+                                                 : ": hull and domain shaders draw patch lists only (D3D11_PRIMITIVE_TOPOLOGY_n_CONTROL_POINT_PATCHLIST); nothing drawn"));
     if (indexed) {
         if (!indexBuffer_ || !indexBuffer_->gpu) return note(std::string(call) + ": no index buffer set; nothing drawn");
         if (indexFormat_ != DXGI_FORMAT_R16_UINT && indexFormat_ != DXGI_FORMAT_R32_UINT)
@@ -290,10 +354,11 @@ void Context::draw(const char* call, core::DrawArguments a, bool indexed) {
                         std::to_string(indexBuffer_->desc.ByteWidth));
         a.indices = indexBuffer_->gpu.get();
     }
+    std::vector<core::InstancedStream> vertexStreams;
+    if (!streams(call, vertexStreams)) return;
     HRESULT hr = guarded(call, [&] {
         if (!prepare(call)) return S_FALSE;
-        core::VertexStream stream{vertexBuffer_ ? vertexBuffer_->gpu.get() : nullptr, vertexOffset_, &declaration_};
-        core::draw(device_->core(), stream, a);
+        core::drawStreams(device_->core(), vertexStreams, a);
         return S_OK;
     });
     if (hr == S_OK) succeed();
@@ -317,6 +382,23 @@ void Context::DrawIndexedInstanced(UINT IndexCountPerInstance, UINT InstanceCoun
          core::DrawArguments{PrimitiveType::TriangleList, int(IndexCountPerInstance), int(StartIndexLocation), BaseVertexLocation,
                              int(InstanceCount), int(StartInstanceLocation)},
          true);
+}
+
+void Context::Dispatch(UINT x, UINT y, UINT z) {
+    if (!computeShader_) return note("Dispatch: no compute shader set (CSSetShader); nothing run");
+    const UINT most = D3D11_CS_DISPATCH_MAX_THREAD_GROUPS_PER_DIMENSION;
+    if (x > most || y > most || z > most)
+        return note("Dispatch(" + std::to_string(x) + ", " + std::to_string(y) + ", " + std::to_string(z) + "): each count is at most " +
+                    std::to_string(most) + "; nothing run");
+    HRESULT hr = guarded("Dispatch", [&] {
+        GraphicsDevice& core = device_->core();
+        core::setComputeShader(core, computeShader_->code.get());
+        bindStage(5, computeShader_->bindings, cs_);
+        bindStorage("Dispatch", *computeShader_->code, cs_, &csUavs_);
+        core.DispatchCompute(int(x), int(y), int(z));
+        return S_OK;
+    });
+    if (hr == S_OK) succeed();
 }
 
 // --- resources
@@ -437,6 +519,79 @@ void Context::CopyResource(ID3D11Resource* pDst, ID3D11Resource* pSrc) {
             if (td->colour) td->colour->setData(level, nullptr, cpu.data(), cpu.size());
             else if (ts->colour) ts->colour->getData(level, cpu.data(), cpu.size());
             else td->staging = ts->staging;
+        }
+        return succeed();
+    });
+}
+
+namespace {
+
+// Rows of `width` texels between two tightly packed levels (staging textures' memory).
+void copyRows(const std::vector<std::uint8_t>& from, int fromWidth, int fx, int fy, std::vector<std::uint8_t>& to, int toWidth, int tx, int ty,
+              int width, int height, int texel) {
+    for (int row = 0; row < height; ++row)
+        std::memcpy(&to[(std::size_t(ty + row) * std::size_t(toWidth) + std::size_t(tx)) * std::size_t(texel)],
+                    &from[(std::size_t(fy + row) * std::size_t(fromWidth) + std::size_t(fx)) * std::size_t(texel)],
+                    std::size_t(width) * std::size_t(texel));
+}
+
+}  // namespace
+
+void Context::CopySubresourceRegion(ID3D11Resource* pDst, UINT DstSubresource, UINT DstX, UINT DstY, UINT DstZ, ID3D11Resource* pSrc,
+                                    UINT SrcSubresource, const D3D11_BOX* box) {
+    const char* call = "CopySubresourceRegion";
+    guarded(call, [&] {
+        const std::string at = std::string(call) + ": ";
+        if (box && (box->front != 0 || box->back != 1))
+            return fail(E_INVALIDARG, at + "pSrcBox front/back = " + std::to_string(box->front) + "/" + std::to_string(box->back) + " (2D: 0/1)");
+        if (DstZ != 0) return fail(E_INVALIDARG, at + "DstZ = " + std::to_string(DstZ) + " (2D resources: 0)");
+        auto *bd = own<Buffer>(pDst, device_), *bs = own<Buffer>(pSrc, device_);
+        if (bd && bs) {
+            if (DstSubresource != 0 || SrcSubresource != 0) return fail(E_INVALIDARG, at + "a buffer has one subresource (0)");
+            const UINT left = box ? box->left : 0, right = box ? box->right : bs->desc.ByteWidth;
+            if (right <= left || right > bs->desc.ByteWidth || DstX > bd->desc.ByteWidth || right - left > bd->desc.ByteWidth - DstX)
+                return fail(E_INVALIDARG, at + "bytes [" + std::to_string(left) + ", " + std::to_string(right) + ") of a " + std::to_string(bs->desc.ByteWidth) +
+                                              "-byte buffer to byte " + std::to_string(DstX) + " of a " + std::to_string(bd->desc.ByteWidth) + "-byte one");
+            const UINT bytes = right - left;
+            if (bd->gpu && bs->gpu) bd->gpu->copyFrom(*bs->gpu, left, DstX, bytes);
+            else if (bd->gpu) bd->gpu->write(DstX, bytes, bs->cpu.data() + left);
+            else if (bs->gpu) bs->gpu->read(left, bytes, bd->cpu.data() + DstX);
+            else std::memmove(bd->cpu.data() + DstX, bs->cpu.data() + left, bytes);
+            return succeed();
+        }
+        auto *td = own<Texture>(pDst, device_), *ts = own<Texture>(pSrc, device_);
+        if (!td || !ts) return fail(E_INVALIDARG, at + "the resources are not two buffers or two textures of this device");
+        if (td->desc.Format != ts->desc.Format)
+            return fail(E_INVALIDARG, at + "the textures' formats differ (" + std::string(formatName(td->desc.Format)) + ", " + formatName(ts->desc.Format) + ")");
+        if (td->depth || ts->depth) return fail(E_NOTIMPL, at + "depth-stencil textures cannot be copied in fxport yet");
+        if (DstSubresource >= UINT(td->levels) || SrcSubresource >= UINT(ts->levels))
+            return fail(E_INVALIDARG, at + "DstSubresource = " + std::to_string(DstSubresource) + ", SrcSubresource = " + std::to_string(SrcSubresource) +
+                                          " (the textures have " + std::to_string(td->levels) + " and " + std::to_string(ts->levels) + " levels)");
+        const int sl = int(SrcSubresource), dl = int(DstSubresource);
+        Rectangle area(0, 0, ts->levelWidth(sl), ts->levelHeight(sl));
+        if (box) area = Rectangle(int(box->left), int(box->top), int(box->right) - int(box->left), int(box->bottom) - int(box->top));
+        if (area.Width <= 0 || area.Height <= 0 || (box && (box->right > UINT(ts->levelWidth(sl)) || box->bottom > UINT(ts->levelHeight(sl)))))
+            return fail(E_INVALIDARG, at + "pSrcBox {" + std::to_string(area.X) + ", " + std::to_string(area.Y) + ", " + std::to_string(area.X + area.Width) +
+                                          ", " + std::to_string(area.Y + area.Height) + "} is empty or outside source level " + std::to_string(sl));
+        if (DstX + UINT(area.Width) > UINT(td->levelWidth(dl)) || DstY + UINT(area.Height) > UINT(td->levelHeight(dl)))
+            return fail(E_INVALIDARG, at + "the region at (" + std::to_string(DstX) + ", " + std::to_string(DstY) + ") overruns destination level " +
+                                          std::to_string(dl));
+        const int x = int(DstX), y = int(DstY);
+        if (td->colour && ts->colour) {
+            core::copyTextureRegion(*td->colour, dl, x, y, *ts->colour, sl, area);
+            return succeed();
+        }
+        // Staging on one side or both: through the CPU (a GPU texture's whole level is read).
+        const int texel = bytesPerPixel(ts->format);
+        std::vector<std::uint8_t> source = ts->colour ? std::vector<std::uint8_t>(ts->levelBytes(sl)) : ts->staging[std::size_t(sl)];
+        if (ts->colour) ts->colour->getData(sl, source.data(), source.size());
+        if (td->colour) {
+            std::vector<std::uint8_t> packed(std::size_t(area.Width) * std::size_t(area.Height) * std::size_t(texel));
+            copyRows(source, ts->levelWidth(sl), area.X, area.Y, packed, area.Width, 0, 0, area.Width, area.Height, texel);
+            const Rectangle target(x, y, area.Width, area.Height);
+            td->colour->setData(dl, &target, packed.data(), packed.size());
+        } else {
+            copyRows(source, ts->levelWidth(sl), area.X, area.Y, td->staging[std::size_t(dl)], td->levelWidth(dl), x, y, area.Width, area.Height, texel);
         }
         return succeed();
     });
