@@ -481,6 +481,19 @@ TEST(D3D11Stages, MisuseIsAnsweredWithTheFieldAndValue) {
     EXPECT_NE(lastError().find("'Particles' (u0), but no unordered-access view is set there"), std::string::npos) << lastError();
     d.context->Dispatch(70000, 1, 1);
     EXPECT_NE(lastError().find("at most 65535"), std::string::npos) << lastError();
+
+    // A view whose StructureByteStride is not the shader's element size (D3D's rule) is refused.
+    desc.BindFlags = D3D11_BIND_UNORDERED_ACCESS;
+    desc.StructureByteStride = 32;
+    ComPtr<ID3D11Buffer> wide;
+    ASSERT_EQ(d.device->CreateBuffer(&desc, nullptr, wide.GetAddressOf()), S_OK) << lastError();
+    ComPtr<ID3D11UnorderedAccessView> wideView;
+    ASSERT_EQ(d.device->CreateUnorderedAccessView(wide.Get(), nullptr, wideView.GetAddressOf()), S_OK) << lastError();
+    d.context->CSSetUnorderedAccessViews(0, 1, wideView.GetAddressOfConst(), nullptr);
+    d.context->Dispatch(1, 1, 1);
+    EXPECT_NE(lastError().find("'Particles' (u0): its elements are 16 bytes in fxport's GL layout, the buffer's StructureByteStride is 32"),
+              std::string::npos)
+        << lastError();
 }
 
 }  // namespace

@@ -217,6 +217,21 @@ void Context::bindStage(int stage, const ShaderBindings& bindings, const Stage& 
     }
 }
 
+namespace {
+
+// D3D's rule: a structured view's StructureByteStride is the size of the shader's element. The
+// shader's is the size of fxport's GL (std430) layout of it, which differs from HLSL's where a
+// float3 (or a float2 and a float) ends an element: such a buffer is refused, not misread.
+void checkStride(const std::string& use, const xlate::StorageBinding& b, const Buffer& buffer) {
+    if (!(buffer.desc.MiscFlags & D3D11_RESOURCE_MISC_BUFFER_STRUCTURED)) return;  // raw: 4-byte words
+    if (b.stride <= 0 || UINT(b.stride) == buffer.desc.StructureByteStride) return;
+    throw InvalidOperation(use + ": its elements are " + std::to_string(b.stride) + " bytes in fxport's GL layout, the buffer's StructureByteStride is " +
+                           std::to_string(buffer.desc.StructureByteStride) +
+                           " (GLSL's std430 pads a float3 ending an element to 16 bytes: end the struct on a float4 or add padding)");
+}
+
+}  // namespace
+
 void Context::bindStorage(const char* call, const core::ShaderCode& code, const Stage& s, const UavSlots* uavs) {
     GraphicsDevice& core = device_->core();
     for (const xlate::StorageBinding& b : code.shader().storage) {
@@ -227,6 +242,7 @@ void Context::bindStorage(const char* call, const core::ShaderCode& code, const 
             const ShaderResourceView* v = b.slot >= 0 && std::size_t(b.slot) < s.views.size() ? s.views[std::size_t(b.slot)].Get() : nullptr;
             if (!v || !v->buffer)
                 throw InvalidOperation(use + ", but no shader-resource view of a structured or raw buffer is set there");
+            checkStride(use, b, *v->buffer);
             core::setStorageBuffer(core, false, b.slot, v->buffer->gpu.get());
             continue;
         }
@@ -236,8 +252,12 @@ void Context::bindStorage(const char* call, const core::ShaderCode& code, const 
                                    (uavs ? std::string(" (CSSetUnorderedAccessViews)") : std::string(" (fxport binds UAVs for compute shaders only)")));
         if (image != (v->texture != nullptr))
             throw InvalidOperation(use + ", a " + (image ? "texture" : "buffer") + ", but the view there is of a " + (v->texture ? "texture" : "buffer"));
-        if (image) core.SetUnorderedAccess(b.slot, v->texture->colour.get());
-        else core::setStorageBuffer(core, true, b.slot, v->buffer->gpu.get());
+        if (image) {
+            core.SetUnorderedAccess(b.slot, v->texture->colour.get());
+        } else {
+            checkStride(use, b, *v->buffer);
+            core::setStorageBuffer(core, true, b.slot, v->buffer->gpu.get());
+        }
     }
 }
 
