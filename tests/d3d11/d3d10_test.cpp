@@ -6,6 +6,7 @@
 // then a D3D10_BLEND_DESC (one blend, per-target enable and write mask) adding the colour again.
 // The pixels are compared with a CPU computation of the effect's math. A broken .fx leaves the
 // compiler's file:line message in ppErrors.
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -343,6 +344,185 @@ TEST_F(D3D10Test, ABrokenEffectFileLeavesTheCompilersMessage) {
                                          nullptr, nullptr),
               E_INVALIDARG);
     EXPECT_NE(std::string(GetLastErrorMessage()).find("pProfile = vs_4_0"), std::string::npos) << GetLastErrorMessage();
+}
+
+}  // namespace
+}  // namespace d3d10test
+
+namespace d3d10test {
+namespace {
+
+// Seed 004's two passes with the tutorial's own effects (hlsl/rastertek, read in place): the
+// DeferredBuffersClass's targets made from its descriptions, deferred.fx drawing a quad turned 60
+// degrees about y into the colour and normal targets, then light.fx on a full-screen window
+// reading both through their SRVs into the swap chain's back buffer. Each back-buffer pixel is
+// compared with the CPU's colour * saturate(dot(normal, -lightDirection)).
+TEST_F(D3D10Test, TheTutorialsDeferredAndLightEffectsDrawWhatTheCpuComputes) {
+    // D3D10Test's swap chain is R32G32B32A32_FLOAT; the tutorial reads its result back the same way.
+    ComPtr<ID3D10Effect> deferred, light;
+    ComPtr<ID3D10Blob> errors;
+    ASSERT_EQ(D3DX10CreateEffectFromFile(L"hlsl/rastertek/deferred.fx", nullptr, nullptr, "fx_4_0", D3D10_SHADER_ENABLE_STRICTNESS, 0, device.Get(),
+                                         nullptr, nullptr, deferred.GetAddressOf(), errors.GetAddressOf(), nullptr),
+              S_OK)
+        << GetLastErrorMessage() << " (run from the source tree)";
+    ASSERT_EQ(D3DX10CreateEffectFromFile(L"hlsl/rastertek/light.fx", nullptr, nullptr, "fx_4_0", D3D10_SHADER_ENABLE_STRICTNESS, 0, device.Get(),
+                                         nullptr, nullptr, light.GetAddressOf(), errors.GetAddressOf(), nullptr),
+              S_OK)
+        << GetLastErrorMessage();
+
+    // DeferredBuffersClass::Initialize.
+    ComPtr<ID3D10RenderTargetView> colorView, normalView;
+    ComPtr<ID3D10ShaderResourceView> colorResource, normalResource;
+    ComPtr<ID3D10Texture2D> color = floatTarget(colorView, colorResource), normal = floatTarget(normalView, normalResource);
+    D3D10_TEXTURE2D_DESC depthBufferDesc;
+    depthBufferDesc.Width = depthBufferDesc.Height = kSize;
+    depthBufferDesc.MipLevels = 1;
+    depthBufferDesc.ArraySize = 1;
+    depthBufferDesc.Format = DXGI_FORMAT_D24_UNORM_S8_UINT;
+    depthBufferDesc.Usage = D3D10_USAGE_DEFAULT;
+    depthBufferDesc.BindFlags = D3D10_BIND_DEPTH_STENCIL;
+    ComPtr<ID3D10Texture2D> depthStencilBuffer;
+    ASSERT_EQ(device->CreateTexture2D(&depthBufferDesc, nullptr, depthStencilBuffer.GetAddressOf()), S_OK) << GetLastErrorMessage();
+    D3D10_DEPTH_STENCIL_VIEW_DESC depthStencilViewDesc;
+    depthStencilViewDesc.Format = DXGI_FORMAT_D24_UNORM_S8_UINT;
+    depthStencilViewDesc.ViewDimension = D3D10_DSV_DIMENSION_TEXTURE2D;
+    ComPtr<ID3D10DepthStencilView> depthStencilView;
+    ASSERT_EQ(device->CreateDepthStencilView(depthStencilBuffer.Get(), &depthStencilViewDesc, depthStencilView.GetAddressOf()), S_OK);
+
+    // ModelClass / TextureClass: a unit quad facing -z, and a one-texel texture.
+    struct VertexType {
+        float position[3], texture[2], normal[3];
+    };
+    const VertexType quad[4] = {{{-0.5f, 0.5f, 0}, {0, 0}, {0, 0, -1}}, {{0.5f, 0.5f, 0}, {1, 0}, {0, 0, -1}},
+                                {{0.5f, -0.5f, 0}, {1, 1}, {0, 0, -1}}, {{-0.5f, -0.5f, 0}, {0, 1}, {0, 0, -1}}};
+    const std::uint32_t indices[6] = {0, 1, 2, 0, 2, 3};
+    auto makeBuffer = [&](const void* data, UINT bytes, UINT bind) {
+        D3D10_BUFFER_DESC desc;
+        desc.Usage = D3D10_USAGE_DEFAULT;
+        desc.ByteWidth = bytes;
+        desc.BindFlags = bind;
+        D3D10_SUBRESOURCE_DATA init;
+        init.pSysMem = data;
+        ComPtr<ID3D10Buffer> b;
+        EXPECT_EQ(device->CreateBuffer(&desc, &init, b.GetAddressOf()), S_OK) << GetLastErrorMessage();
+        return b;
+    };
+    ComPtr<ID3D10Buffer> modelVertices = makeBuffer(quad, sizeof quad, D3D10_BIND_VERTEX_BUFFER);
+    ComPtr<ID3D10Buffer> modelIndices = makeBuffer(indices, sizeof indices, D3D10_BIND_INDEX_BUFFER);
+    const std::uint32_t texel = 0xff3264c8u;  // (200, 100, 50, 255)
+    D3D10_TEXTURE2D_DESC td;
+    td.Width = td.Height = 1;
+    td.MipLevels = 1;
+    td.ArraySize = 1;
+    td.Format = DXGI_FORMAT_R8G8B8A8_UNORM;
+    td.BindFlags = D3D10_BIND_SHADER_RESOURCE;
+    D3D10_SUBRESOURCE_DATA init;
+    init.pSysMem = &texel;
+    init.SysMemPitch = 4;
+    ComPtr<ID3D10Texture2D> texture;
+    ASSERT_EQ(device->CreateTexture2D(&td, &init, texture.GetAddressOf()), S_OK) << GetLastErrorMessage();
+    ComPtr<ID3D10ShaderResourceView> textureView;
+    ASSERT_EQ(device->CreateShaderResourceView(texture.Get(), nullptr, textureView.GetAddressOf()), S_OK);
+
+    // DeferredShaderClass: layout from the pass, matrices, texture; RenderShader.
+    auto layoutOf = [&](ID3D10EffectTechnique* technique, const D3D10_INPUT_ELEMENT_DESC* elements, UINT count) {
+        D3D10_PASS_DESC passDesc;
+        EXPECT_EQ(technique->GetPassByIndex(0)->GetDesc(&passDesc), S_OK) << GetLastErrorMessage();
+        ComPtr<ID3D10InputLayout> layout;
+        EXPECT_EQ(device->CreateInputLayout(elements, count, passDesc.pIAInputSignature, passDesc.IAInputSignatureSize, layout.GetAddressOf()), S_OK)
+            << GetLastErrorMessage();
+        return layout;
+    };
+    const D3D10_INPUT_ELEMENT_DESC polygonLayout[3] = {
+        {"POSITION", 0, DXGI_FORMAT_R32G32B32_FLOAT, 0, 0, D3D10_INPUT_PER_VERTEX_DATA, 0},
+        {"TEXCOORD", 0, DXGI_FORMAT_R32G32_FLOAT, 0, D3D10_APPEND_ALIGNED_ELEMENT, D3D10_INPUT_PER_VERTEX_DATA, 0},
+        {"NORMAL", 0, DXGI_FORMAT_R32G32B32_FLOAT, 0, D3D10_APPEND_ALIGNED_ELEMENT, D3D10_INPUT_PER_VERTEX_DATA, 0},
+    };
+    ID3D10EffectTechnique* deferredTechnique = deferred->GetTechniqueByName("DeferredTechnique");
+    ComPtr<ID3D10InputLayout> deferredLayout = layoutOf(deferredTechnique, polygonLayout, 3);
+    const float c = 0.5f, s = std::sqrt(3.0f) / 2;  // 60 degrees: D3DXMatrixRotationY's rows
+    const float world[16] = {c, 0, -s, 0, 0, 1, 0, 0, s, 0, c, 0, 0, 0, 0, 1};
+    const float view[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0.5f, 1};  // z + 0.5: inside [0, 1]
+    const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    deferred->GetVariableByName("worldMatrix")->AsMatrix()->SetMatrix(world);
+    deferred->GetVariableByName("viewMatrix")->AsMatrix()->SetMatrix(view);
+    deferred->GetVariableByName("projectionMatrix")->AsMatrix()->SetMatrix(identity);
+    ASSERT_EQ(deferred->GetVariableByName("shaderTexture")->AsShaderResource()->SetResource(textureView.Get()), S_OK) << GetLastErrorMessage();
+
+    // DeferredBuffersClass::SetRenderTargets / ClearRenderTargets, then the model.
+    ID3D10RenderTargetView* targets[2] = {colorView.Get(), normalView.Get()};
+    device->OMSetRenderTargets(2, targets, depthStencilView.Get());
+    D3D10_VIEWPORT viewport;
+    viewport.Width = kSize;
+    viewport.Height = kSize;
+    device->RSSetViewports(1, &viewport);
+    const float black[4] = {0, 0, 0, 0};
+    device->ClearRenderTargetView(colorView.Get(), black);
+    device->ClearRenderTargetView(normalView.Get(), black);
+    device->ClearDepthStencilView(depthStencilView.Get(), D3D10_CLEAR_DEPTH, 1.0f, 0);
+    const UINT stride = sizeof(VertexType), offset = 0;
+    device->IASetVertexBuffers(0, 1, modelVertices.GetAddressOfConst(), &stride, &offset);
+    device->IASetIndexBuffer(modelIndices.Get(), DXGI_FORMAT_R32_UINT, 0);
+    device->IASetPrimitiveTopology(D3D10_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+    device->IASetInputLayout(deferredLayout.Get());
+    ASSERT_EQ(deferredTechnique->GetPassByIndex(0)->Apply(0), S_OK) << GetLastErrorMessage();
+    device->DrawIndexed(6, 0, 0);
+    ASSERT_STREQ(GetLastErrorMessage(), "");
+
+    // D3DClass::SetBackBufferRenderTarget, then LightShaderClass over an OrthoWindowClass quad
+    // covering the screen (identity matrices: the window's corners are NDC's).
+    ComPtr<ID3D10Texture2D> backBuffer;
+    ASSERT_EQ(swapChain->GetBuffer(0, IID_ID3D10Texture2D, reinterpret_cast<void**>(backBuffer.GetAddressOf())), S_OK);
+    ComPtr<ID3D10RenderTargetView> backBufferView;
+    ASSERT_EQ(device->CreateRenderTargetView(backBuffer.Get(), nullptr, backBufferView.GetAddressOf()), S_OK);
+    device->OMSetRenderTargets(1, backBufferView.GetAddressOfConst(), nullptr);
+    device->ClearRenderTargetView(backBufferView.Get(), black);
+    struct WindowVertex {
+        float position[3], texture[2];
+    };
+    const WindowVertex window[6] = {{{-1, 1, 0}, {0, 0}}, {{1, -1, 0}, {1, 1}}, {{-1, -1, 0}, {0, 1}},
+                                    {{-1, 1, 0}, {0, 0}}, {{1, 1, 0}, {1, 0}},   {{1, -1, 0}, {1, 1}}};
+    const std::uint32_t windowIndices[6] = {0, 1, 2, 3, 4, 5};
+    ComPtr<ID3D10Buffer> windowVertices = makeBuffer(window, sizeof window, D3D10_BIND_VERTEX_BUFFER);
+    ComPtr<ID3D10Buffer> windowIndexBuffer = makeBuffer(windowIndices, sizeof windowIndices, D3D10_BIND_INDEX_BUFFER);
+    const D3D10_INPUT_ELEMENT_DESC windowLayout[2] = {
+        {"POSITION", 0, DXGI_FORMAT_R32G32B32_FLOAT, 0, 0, D3D10_INPUT_PER_VERTEX_DATA, 0},
+        {"TEXCOORD", 0, DXGI_FORMAT_R32G32_FLOAT, 0, D3D10_APPEND_ALIGNED_ELEMENT, D3D10_INPUT_PER_VERTEX_DATA, 0},
+    };
+    ID3D10EffectTechnique* lightTechnique = light->GetTechniqueByName("LightTechnique");
+    ComPtr<ID3D10InputLayout> lightLayout = layoutOf(lightTechnique, windowLayout, 2);
+    const float lightDirection[3] = {0.6f, 0.0f, 0.8f};
+    light->GetVariableByName("worldMatrix")->AsMatrix()->SetMatrix(identity);
+    light->GetVariableByName("viewMatrix")->AsMatrix()->SetMatrix(identity);
+    light->GetVariableByName("projectionMatrix")->AsMatrix()->SetMatrix(identity);
+    light->GetVariableByName("colorTexture")->AsShaderResource()->SetResource(colorResource.Get());
+    light->GetVariableByName("normalTexture")->AsShaderResource()->SetResource(normalResource.Get());
+    ASSERT_EQ(light->GetVariableByName("lightDirection")->AsVector()->SetFloatVector(lightDirection), S_OK) << GetLastErrorMessage();
+    const UINT windowStride = sizeof(WindowVertex);
+    device->IASetVertexBuffers(0, 1, windowVertices.GetAddressOfConst(), &windowStride, &offset);
+    device->IASetIndexBuffer(windowIndexBuffer.Get(), DXGI_FORMAT_R32_UINT, 0);
+    device->IASetInputLayout(lightLayout.Get());
+    ASSERT_EQ(lightTechnique->GetPassByIndex(0)->Apply(0), S_OK) << GetLastErrorMessage();
+    device->DrawIndexed(6, 0, 0);
+    ASSERT_STREQ(GetLastErrorMessage(), "");
+    EXPECT_EQ(swapChain->Present(0, 0), S_OK);
+
+    // The quad covers NDC x in [-0.25, 0.25] (cos 60 = 0.5), y in [-0.5, 0.5]: pixels 6..9 x 4..11.
+    const float n[3] = {-s, 0, -c};  // (0, 0, -1) turned by the world matrix
+    const float intensity = std::clamp(-(n[0] * lightDirection[0] + n[1] * lightDirection[1] + n[2] * lightDirection[2]), 0.0f, 1.0f);
+    const float albedo[4] = {200 / 255.0f, 100 / 255.0f, 50 / 255.0f, 1.0f};
+    const std::vector<float> pixels = readFloats(device.Get(), backBuffer.Get());
+    int lit = 0;
+    for (UINT y = 0; y < kSize; ++y)
+        for (UINT x = 0; x < kSize; ++x) {
+            const bool inside = x >= 6 && x < 10 && y >= 4 && y < 12;
+            lit += inside;
+            for (int ch = 0; ch < 4; ++ch) {
+                const float expected = inside ? std::clamp(albedo[ch] * intensity, 0.0f, 1.0f) : 0.0f;
+                ASSERT_NEAR(pixels[(std::size_t(y) * kSize + x) * 4 + std::size_t(ch)], expected, 1e-5) << x << "," << y << " channel " << ch;
+            }
+        }
+    EXPECT_EQ(lit, 32);
 }
 
 }  // namespace
