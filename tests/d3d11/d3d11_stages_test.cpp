@@ -186,6 +186,25 @@ TEST(D3D11Stages, ComputeShaderFillsAStructuredBufferLikeTheCpu) {
     d.context->Dispatch(1, 1, 1);
     ASSERT_EQ(lastError(), "");
 
+    // The reflection: the thread group, and the buffers at their registers with their element size.
+    ComPtr<ID3D11ShaderReflection> reflection;
+    ASSERT_EQ(D3DReflect(expandCode->GetBufferPointer(), expandCode->GetBufferSize(), reflection.GetAddressOf()), S_OK) << lastError();
+    UINT gx = 0, gy = 0, gz = 0;
+    EXPECT_EQ(reflection->GetThreadGroupSize(&gx, &gy, &gz), 64u);
+    EXPECT_EQ(gx, 64u);
+    EXPECT_EQ(gy, 1u);
+    D3D11_SHADER_DESC shaderDesc;
+    ASSERT_EQ(reflection->GetDesc(&shaderDesc), S_OK);
+    EXPECT_EQ(shaderDesc.Version >> 16, 5u);  // D3D11_SHVER_COMPUTE_SHADER
+    D3D11_SHADER_INPUT_BIND_DESC bind;
+    ASSERT_EQ(reflection->GetResourceBindingDescByName("Particles", &bind), S_OK) << lastError();
+    EXPECT_EQ(bind.Type, D3D_SIT_UAV_RWSTRUCTURED);
+    EXPECT_EQ(bind.BindPoint, 0u);
+    EXPECT_EQ(bind.NumSamples, 16u);
+    ASSERT_EQ(reflection->GetResourceBindingDescByName("Input", &bind), S_OK) << lastError();
+    EXPECT_EQ(bind.Type, D3D_SIT_STRUCTURED);
+    EXPECT_EQ(bind.Dimension, D3D_SRV_DIMENSION_BUFFER);
+
     std::vector<Particle> got = readBuffer<Particle>(d, particles.Get());
     ASSERT_EQ(got.size(), capacity);
     float cpuSum = 0;
