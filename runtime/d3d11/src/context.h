@@ -10,6 +10,13 @@
 
 namespace fxport::d3d11 {
 
+// `object` as this front end's T when `device` made it; null otherwise (D3D ignores foreign objects).
+template <class T, class I>
+T* own(I* object, Device* device) {
+    auto* t = dynamic_cast<T*>(object);
+    return t && &t->device() == device ? t : nullptr;
+}
+
 class Context final : public ID3D11DeviceContext {
 public:
     explicit Context(Device* device);
