@@ -197,13 +197,6 @@ void ShaderCode::releaseGpuObjects() {
 
 // --- binding
 
-void setShaders(GraphicsDevice& device, const ShaderCode& vertexShader, const ShaderCode& pixelShader) {
-    GraphicsDevice::Impl& d = device.impl();
-    d.shaders = {&vertexShader.program(), &pixelShader.program(), nullptr};
-    d.emulation = PassEmulation{};
-    d.passApplied = true;
-}
-
 void setShaderStages(GraphicsDevice& device, const ShaderCode* const (&stages)[5]) {
     if (!stages[0] || !stages[1]) throw InvalidOperation("a draw needs a vertex and a pixel shader");
     GraphicsDevice::Impl& d = device.impl();
@@ -358,24 +351,6 @@ GraphicsDevice::Impl::VertexArray& streamVertexArray(GraphicsDevice::Impl& d, co
 }
 
 }  // namespace
-
-void draw(GraphicsDevice& device, const VertexStream& vertices, const DrawArguments& a) {
-    GraphicsDevice::Impl& d = device.impl();
-    if (!vertices.declaration) throw InvalidOperation("Draw: no input layout");
-    if (a.count <= 0 || a.instances <= 0) return;  // D3D draws nothing
-    flushFor(d, a);
-    GraphicsDevice::Impl::VertexArray& va = d.vertexArrayFor(*vertices.declaration);
-    const GLuint buffer = vertices.buffer ? vertices.buffer->glName() : 0;
-    const GLintptr offset = GLintptr(vertices.offset);
-    const GLsizei stride = GLsizei(vertices.declaration->VertexStride());
-    if (va.buffer != buffer || va.offset != offset || va.stride != stride) {
-        va.buffer = buffer;
-        va.offset = offset;
-        va.stride = stride;
-        glVertexArrayVertexBuffer(va.vao, 0, buffer, offset, stride);
-    }
-    issue(va, a);
-}
 
 void drawStreams(GraphicsDevice& device, const std::vector<InstancedStream>& streams, const DrawArguments& a) {
     GraphicsDevice::Impl& d = device.impl();

@@ -85,11 +85,9 @@ private:
     std::unique_ptr<ShaderProgram> program_;
 };
 
-// Binds the vertex and pixel shader the next draw runs (no geometry shader), as an effect pass's
-// Apply would, with no D3D9 pass emulation.
-void setShaders(GraphicsDevice& device, const ShaderCode& vertexShader, const ShaderCode& pixelShader);
 // Binds the shaders of every draw stage (vertex, pixel, geometry, hull, domain; null: the stage
-// is off -- vertex and pixel are required), as an effect pass with those stages would.
+// is off -- vertex and pixel are required), as an effect pass with those stages would, with no D3D9
+// pass emulation.
 void setShaderStages(GraphicsDevice& device, const ShaderCode* const (&stages)[5]);
 // The compute shader GraphicsDevice::DispatchCompute runs (null: none).
 void setComputeShader(GraphicsDevice& device, const ShaderCode* computeShader);
@@ -120,17 +118,16 @@ struct DrawArguments {
     int indexSize = 2;                    // 2 or 4 bytes
     int controlPoints = 0;                // > 0: patches of this many control points (type is ignored)
 };
-// Draws with the device's current state (BlendState, DepthStencilState, RasterizerState, Viewport,
-// ScissorRectangle, Textures, SamplerStates) and the shaders and buffers set above. Throws
-// InvalidOperation / ArgumentError as the XNA draws do.
-void draw(GraphicsDevice& device, const VertexStream& vertices, const DrawArguments& arguments);
-// The same with vertices from several buffers: declaration(s) give each stream's elements and
-// stride; a stream with instanceStepRate > 0 advances once per that many instances (D3D11's
-// D3D11_INPUT_PER_INSTANCE_DATA). Streams without elements are skipped.
+// One vertex buffer of a draw: stream i feeds the shader inputs its declaration's elements match
+// (by semantic); with instanceStepRate > 0 it advances once per that many instances (D3D11's
+// D3D11_INPUT_PER_INSTANCE_DATA), otherwise once per vertex.
 struct InstancedStream {
     VertexStream vertices;
     int instanceStepRate = 0;
 };
+// Draws with the device's current state (BlendState, DepthStencilState, RasterizerState, Viewport,
+// ScissorRectangle, Textures, SamplerStates), the shaders and buffers set above and the vertices of
+// `streams`. Throws InvalidOperation / ArgumentError as the XNA draws do.
 void drawStreams(GraphicsDevice& device, const std::vector<InstancedStream>& streams, const DrawArguments& arguments);
 
 // Fills level 0 of a colour texture with `color` (whatever is bound, no viewport or scissor).
