@@ -228,3 +228,52 @@ TEST_F(ResourcesTest, ReferenceCountsFollowD3D) {
 
 }  // namespace
 }  // namespace d3d11test
+
+namespace d3d11test {
+namespace {
+
+// D3D11CreateDeviceAndSwapChain: a headless swap chain whose back buffer is a render target of the
+// description's size and format, drawn into (cleared) and read back; invalid descriptions name the field.
+TEST(D3D11SwapChain, BackBufferIsARenderTargetOfTheDescribedSize) {
+    DXGI_SWAP_CHAIN_DESC sd;
+    sd.BufferCount = 1;
+    sd.BufferDesc.Width = 8;
+    sd.BufferDesc.Height = 4;
+    sd.BufferDesc.Format = DXGI_FORMAT_R8G8B8A8_UNORM;
+    sd.BufferUsage = DXGI_USAGE_RENDER_TARGET_OUTPUT;
+    Device d;  // for readPixels' context
+    d.device.Reset();
+    d.context.Reset();
+    ComPtr<IDXGISwapChain> swapChain;
+    ASSERT_EQ(D3D11CreateDeviceAndSwapChain(nullptr, D3D_DRIVER_TYPE_HARDWARE, nullptr, 0, nullptr, 0, D3D11_SDK_VERSION, &sd,
+                                            swapChain.GetAddressOf(), d.device.GetAddressOf(), nullptr, d.context.GetAddressOf()),
+              S_OK)
+        << lastError();
+    ComPtr<ID3D11Texture2D> backBuffer;
+    ASSERT_EQ(swapChain->GetBuffer(0, IID_ID3D11Texture2D, reinterpret_cast<void**>(backBuffer.GetAddressOf())), S_OK) << lastError();
+    D3D11_TEXTURE2D_DESC desc;
+    backBuffer->GetDesc(&desc);
+    EXPECT_EQ(desc.Width, 8u);
+    EXPECT_EQ(desc.Height, 4u);
+    ComPtr<ID3D11RenderTargetView> rtv;
+    ASSERT_EQ(d.device->CreateRenderTargetView(backBuffer.Get(), nullptr, rtv.GetAddressOf()), S_OK) << lastError();
+    const FLOAT color[4] = {1, 0.2f, 0, 1};  // 0.2 * 255 = 51 exactly
+    d.context->ClearRenderTargetView(rtv.Get(), color);
+    EXPECT_EQ(swapChain->Present(1, 0), S_OK);
+    EXPECT_EQ(swapChain->PresentCount(), 1u);
+    for (const auto& p : readPixels(d, backBuffer.Get())) {
+        EXPECT_EQ(p[0], 255);
+        EXPECT_EQ(p[1], 51);
+        EXPECT_EQ(p[2], 0);
+    }
+    sd.BufferDesc.Width = 0;
+    ComPtr<IDXGISwapChain> none;
+    ComPtr<ID3D11Device> other;
+    EXPECT_EQ(D3D11CreateDeviceAndSwapChain(nullptr, D3D_DRIVER_TYPE_HARDWARE, nullptr, 0, nullptr, 0, D3D11_SDK_VERSION, &sd, none.GetAddressOf(),
+                                            other.GetAddressOf(), nullptr, nullptr),
+              E_INVALIDARG);
+    EXPECT_NE(lastError().find("BufferDesc.Width x Height = 0 x 4"), std::string::npos) << lastError();
+}
+
+}  // namespace
+}  // namespace d3d11test

@@ -191,19 +191,25 @@ TEST(D3D11Shaders, AnSVPositionInputTakesAnSVPositionElement) {
     EXPECT_NE(lastError().find("SV_POSITION"), std::string::npos) << lastError();
 }
 
-TEST(D3D11Shaders, UnimplementedStagesSayNotImplemented) {
+TEST(D3D11Shaders, StageShadersTakeOnlyTheirStagesBytecode) {
     Device d;
+    ComPtr<ID3DBlob> vs = compile("float4 VS(float4 p : POSITION) : SV_Position { return p; }\n", "VS", "vs_5_0", "stage.hlsl");
+    ASSERT_TRUE(vs);
     ComPtr<ID3D11ComputeShader> cs;
-    EXPECT_EQ(d.device->CreateComputeShader("x", 1, nullptr, cs.GetAddressOf()), E_NOTIMPL);
-    EXPECT_NE(lastError().find("compute"), std::string::npos);
+    EXPECT_EQ(d.device->CreateComputeShader(vs->GetBufferPointer(), vs->GetBufferSize(), nullptr, cs.GetAddressOf()), E_INVALIDARG);
+    EXPECT_NE(lastError().find("not a compute shader"), std::string::npos) << lastError();
     ComPtr<ID3D11HullShader> hs;
-    EXPECT_EQ(d.device->CreateHullShader("x", 1, nullptr, hs.GetAddressOf()), E_NOTIMPL);
+    EXPECT_EQ(d.device->CreateHullShader(vs->GetBufferPointer(), vs->GetBufferSize(), nullptr, hs.GetAddressOf()), E_INVALIDARG);
+    EXPECT_NE(lastError().find("not a hull shader"), std::string::npos) << lastError();
     ComPtr<ID3D11DomainShader> ds;
-    EXPECT_EQ(d.device->CreateDomainShader("x", 1, nullptr, ds.GetAddressOf()), E_NOTIMPL);
+    EXPECT_EQ(d.device->CreateDomainShader(nullptr, 0, nullptr, ds.GetAddressOf()), E_INVALIDARG);
+    ComPtr<ID3D11GeometryShader> gs;
+    EXPECT_EQ(d.device->CreateGeometryShader(vs->GetBufferPointer(), vs->GetBufferSize(), nullptr, gs.GetAddressOf()), E_INVALIDARG);
+    EXPECT_NE(lastError().find("not a geometry shader"), std::string::npos) << lastError();
     ComPtr<ID3D11UnorderedAccessView> uav;
-    EXPECT_EQ(d.device->CreateUnorderedAccessView(nullptr, nullptr, uav.GetAddressOf()), E_NOTIMPL);
+    EXPECT_EQ(d.device->CreateUnorderedAccessView(nullptr, nullptr, uav.GetAddressOf()), E_INVALIDARG);
     d.context->Dispatch(1, 1, 1);
-    EXPECT_NE(lastError().find("Dispatch"), std::string::npos);
+    EXPECT_NE(lastError().find("no compute shader set (CSSetShader)"), std::string::npos) << lastError();
 }
 
 }  // namespace

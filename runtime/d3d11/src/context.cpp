@@ -3,7 +3,8 @@
 // of the block it feeds, each t#/s# pair to the texture unit the translation samples it on, the
 // decoded state objects into the device's state -- and draws; the device core compares with what
 // GL has and calls GL only for what differs. D3D ignores invalid draws; so does this, noting why
-// (GetLastErrorMessage).
+// (GetLastErrorMessage). This file: the Set calls; context_draw.cpp: draws and dispatches;
+// context_resources.cpp: Map, updates, copies and clears.
 #include "context.h"
 
 #include <algorithm>
@@ -14,47 +15,23 @@
 
 namespace fxport::d3d11 {
 
-namespace {
-
-template <class T, class I>
-T* own(I* object, Device* device) {
-    auto* t = dynamic_cast<T*>(object);
-    return t && &t->device() == device ? t : nullptr;
-}
-
-PrimitiveType primitiveOf(D3D11_PRIMITIVE_TOPOLOGY t, bool& ok) {
-    ok = true;
-    switch (t) {
-    case D3D11_PRIMITIVE_TOPOLOGY_POINTLIST: return PrimitiveType::PointList;
-    case D3D11_PRIMITIVE_TOPOLOGY_LINELIST: return PrimitiveType::LineList;
-    case D3D11_PRIMITIVE_TOPOLOGY_LINESTRIP: return PrimitiveType::LineStrip;
-    case D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST: return PrimitiveType::TriangleList;
-    case D3D11_PRIMITIVE_TOPOLOGY_TRIANGLESTRIP: return PrimitiveType::TriangleStrip;
-    default: ok = false; return PrimitiveType::TriangleList;
-    }
-}
-
-Color colorOf(const FLOAT f[4]) {
-    auto byte = [](float v) { return std::uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
-    return Color(byte(f[0]), byte(f[1]), byte(f[2]), byte(f[3]));
-}
-
-}  // namespace
-
 Context::Context(Device* device) : device_(device) { ClearState(); }
 
 void Context::ClearState() {
     layout_ = nullptr;
-    vertexBuffer_ = nullptr;
-    stride_ = vertexOffset_ = 0;
+    for (VertexSlot& v : vertexSlots_) v = VertexSlot{};
     indexBuffer_ = nullptr;
     indexFormat_ = DXGI_FORMAT_UNKNOWN;
     indexOffset_ = 0;
     topology_ = D3D11_PRIMITIVE_TOPOLOGY_UNDEFINED;
     vertexShader_ = nullptr;
     pixelShader_ = nullptr;
-    vs_ = Stage{};
-    ps_ = Stage{};
+    geometryShader_ = nullptr;
+    hullShader_ = nullptr;
+    domainShader_ = nullptr;
+    computeShader_ = nullptr;
+    for (Stage* stage : {&vs_, &ps_, &gs_, &hs_, &ds_, &cs_}) *stage = Stage{};
+    for (auto& u : csUavs_) u = nullptr;
     viewport_ = D3D11_VIEWPORT{};
     viewportSet_ = false;
     scissor_ = D3D11_RECT{};
@@ -82,13 +59,12 @@ void Context::IASetInputLayout(ID3D11InputLayout* p) { layout_ = own<InputLayout
 void Context::IASetVertexBuffers(UINT StartSlot, UINT NumBuffers, ID3D11Buffer* const* pp, const UINT* pStrides, const UINT* pOffsets) {
     for (UINT i = 0; i < NumBuffers; ++i) {
         const UINT slot = StartSlot + i;
-        if (slot != 0) {
-            if (pp && pp[i]) note("IASetVertexBuffers: slot " + std::to_string(slot) + ": fxport draws from vertex-buffer slot 0 only");
-            continue;
-        }
-        vertexBuffer_ = pp ? own<Buffer>(pp[i], device_) : nullptr;
-        stride_ = pStrides ? pStrides[i] : 0;
-        vertexOffset_ = pOffsets ? pOffsets[i] : 0;
+        if (slot >= vertexSlots_.size())
+            return note("IASetVertexBuffers: slot " + std::to_string(slot) + " is beyond D3D11's " + std::to_string(vertexSlots_.size()));
+        VertexSlot& v = vertexSlots_[slot];
+        v.buffer = pp ? own<Buffer>(pp[i], device_) : nullptr;
+        v.stride = pStrides ? pStrides[i] : 0;
+        v.offset = pOffsets ? pOffsets[i] : 0;
     }
 }
 
@@ -111,21 +87,18 @@ void Context::PSSetShader(ID3D11PixelShader* p, ID3D11ClassInstance* const*, UIN
     effectPass_ = nullptr;
 }
 void Context::GSSetShader(ID3D11GeometryShader* p, ID3D11ClassInstance* const*, UINT) {
-    if (p) note("GSSetShader: geometry shaders are not implemented in the D3D11 front end yet");
+    geometryShader_ = own<GeometryShader>(p, device_);
+    effectPass_ = nullptr;
 }
 void Context::HSSetShader(ID3D11HullShader* p, ID3D11ClassInstance* const*, UINT) {
-    if (p) note("HSSetShader: hull shaders (tessellation) are not implemented in the D3D11 front end");
+    hullShader_ = own<HullShader>(p, device_);
+    effectPass_ = nullptr;
 }
 void Context::DSSetShader(ID3D11DomainShader* p, ID3D11ClassInstance* const*, UINT) {
-    if (p) note("DSSetShader: domain shaders (tessellation) are not implemented in the D3D11 front end");
+    domainShader_ = own<DomainShader>(p, device_);
+    effectPass_ = nullptr;
 }
-void Context::CSSetShader(ID3D11ComputeShader* p, ID3D11ClassInstance* const*, UINT) {
-    if (p) note("CSSetShader: compute shaders are not implemented in the D3D11 front end");
-}
-void Context::CSSetUnorderedAccessViews(UINT, UINT, ID3D11UnorderedAccessView* const*, const UINT*) {
-    note("CSSetUnorderedAccessViews: unordered-access views are not implemented in the D3D11 front end");
-}
-void Context::Dispatch(UINT, UINT, UINT) { note("Dispatch: compute is not implemented in the D3D11 front end"); }
+void Context::CSSetShader(ID3D11ComputeShader* p, ID3D11ClassInstance* const*, UINT) { computeShader_ = own<ComputeShader>(p, device_); }
 
 template <class Array, class I, class T>
 void setSlots(Array& slots, UINT start, UINT count, I* const* objects, Device* device, const char* call) {
@@ -138,23 +111,29 @@ void setSlots(Array& slots, UINT start, UINT count, I* const* objects, Device* d
     }
 }
 
-void Context::VSSetConstantBuffers(UINT s, UINT n, ID3D11Buffer* const* p) {
-    setSlots<decltype(vs_.constantBuffers), ID3D11Buffer, Buffer>(vs_.constantBuffers, s, n, p, device_, "VSSetConstantBuffers");
-}
-void Context::PSSetConstantBuffers(UINT s, UINT n, ID3D11Buffer* const* p) {
-    setSlots<decltype(ps_.constantBuffers), ID3D11Buffer, Buffer>(ps_.constantBuffers, s, n, p, device_, "PSSetConstantBuffers");
-}
-void Context::VSSetShaderResources(UINT s, UINT n, ID3D11ShaderResourceView* const* p) {
-    setSlots<decltype(vs_.views), ID3D11ShaderResourceView, ShaderResourceView>(vs_.views, s, n, p, device_, "VSSetShaderResources");
-}
-void Context::PSSetShaderResources(UINT s, UINT n, ID3D11ShaderResourceView* const* p) {
-    setSlots<decltype(ps_.views), ID3D11ShaderResourceView, ShaderResourceView>(ps_.views, s, n, p, device_, "PSSetShaderResources");
-}
-void Context::VSSetSamplers(UINT s, UINT n, ID3D11SamplerState* const* p) {
-    setSlots<decltype(vs_.samplers), ID3D11SamplerState, SamplerState>(vs_.samplers, s, n, p, device_, "VSSetSamplers");
-}
-void Context::PSSetSamplers(UINT s, UINT n, ID3D11SamplerState* const* p) {
-    setSlots<decltype(ps_.samplers), ID3D11SamplerState, SamplerState>(ps_.samplers, s, n, p, device_, "PSSetSamplers");
+// Each stage's Set{ConstantBuffers,ShaderResources,Samplers}: the same three calls per stage.
+#define FXPORT_STAGE_SLOTS(PREFIX, STAGE)                                                                                               \
+    void Context::PREFIX##SetConstantBuffers(UINT s, UINT n, ID3D11Buffer* const* p) {                                                   \
+        setSlots<decltype(STAGE.constantBuffers), ID3D11Buffer, Buffer>(STAGE.constantBuffers, s, n, p, device_,                        \
+                                                                        #PREFIX "SetConstantBuffers");                                   \
+    }                                                                                                                                    \
+    void Context::PREFIX##SetShaderResources(UINT s, UINT n, ID3D11ShaderResourceView* const* p) {                                       \
+        setSlots<decltype(STAGE.views), ID3D11ShaderResourceView, ShaderResourceView>(STAGE.views, s, n, p, device_,                    \
+                                                                                      #PREFIX "SetShaderResources");                     \
+    }                                                                                                                                    \
+    void Context::PREFIX##SetSamplers(UINT s, UINT n, ID3D11SamplerState* const* p) {                                                    \
+        setSlots<decltype(STAGE.samplers), ID3D11SamplerState, SamplerState>(STAGE.samplers, s, n, p, device_, #PREFIX "SetSamplers"); \
+    }
+FXPORT_STAGE_SLOTS(VS, vs_)
+FXPORT_STAGE_SLOTS(PS, ps_)
+FXPORT_STAGE_SLOTS(GS, gs_)
+FXPORT_STAGE_SLOTS(HS, hs_)
+FXPORT_STAGE_SLOTS(DS, ds_)
+FXPORT_STAGE_SLOTS(CS, cs_)
+#undef FXPORT_STAGE_SLOTS
+
+void Context::CSSetUnorderedAccessViews(UINT s, UINT n, ID3D11UnorderedAccessView* const* p, const UINT*) {
+    setSlots<UavSlots, ID3D11UnorderedAccessView, UnorderedAccessView>(csUavs_, s, n, p, device_, "CSSetUnorderedAccessViews");
 }
 
 // --- rasterizer and output merger
@@ -183,294 +162,5 @@ void Context::OMSetDepthStencilState(ID3D11DepthStencilState* p, UINT StencilRef
     depthStencil_ = own<DepthStencilState>(p, device_);
     stencilRef_ = StencilRef;
 }
-
-// --- draws
-
-void Context::bindStage(int stage, const ShaderBindings& bindings, const Stage& s) {
-    GraphicsDevice& core = device_->core();
-    for (const CbufferBinding& c : bindings.cbuffers) {
-        const Buffer* b = std::size_t(c.slot) < s.constantBuffers.size() ? s.constantBuffers[std::size_t(c.slot)].Get() : nullptr;
-        if (b && b->desc.ByteWidth < UINT(c.size))
-            throw InvalidOperation("cbuffer '" + c.name + "' (b" + std::to_string(c.slot) + ") needs " + std::to_string(c.size) +
-                                   " bytes; the buffer bound there has " + std::to_string(b->desc.ByteWidth));
-        if (b && !(b->desc.BindFlags & D3D11_BIND_CONSTANT_BUFFER))
-            throw InvalidOperation("the buffer at b" + std::to_string(c.slot) + " was not made with D3D11_BIND_CONSTANT_BUFFER");
-        core::setUniformBuffer(core, stage, c.glBinding, b ? b->gpu.get() : nullptr);
-    }
-    for (const SamplerUnit& u : bindings.units) {
-        if (u.glUnit < 0 || u.glUnit >= kMaxTextureSlots) continue;
-        const ShaderResourceView* v =
-            u.textureSlot >= 0 && std::size_t(u.textureSlot) < s.views.size() ? s.views[std::size_t(u.textureSlot)].Get() : nullptr;
-        core.Textures[u.glUnit] = v ? v->texture->colour.get() : nullptr;
-        const SamplerState* st =
-            u.samplerSlot >= 0 && std::size_t(u.samplerSlot) < s.samplers.size() ? s.samplers[std::size_t(u.samplerSlot)].Get() : nullptr;
-        core.SamplerStates[u.glUnit] = st ? st->state : defaultSampler_;
-    }
-}
-
-bool Context::prepare(const char* call) {
-    const std::string at = std::string(call) + ": ";
-    if (!effectPass_ && (!vertexShader_ || !pixelShader_)) {
-        note(at + "no " + std::string(!vertexShader_ ? "vertex" : "pixel") + " shader set; nothing drawn (fxport needs both)");
-        return false;
-    }
-    static const std::vector<xlate::VertexInput> none;
-    const auto& inputs = effectPass_ ? none : vertexShader_->code->shader().inputs;
-    const bool readsVertices = std::any_of(inputs.begin(), inputs.end(), [](const auto& in) { return in.semantic.rfind("SV_", 0) != 0; });
-    if (!layout_ && readsVertices) {
-        note(at + "no input layout set and the vertex shader has inputs; nothing drawn");
-        return false;
-    }
-    std::vector<RenderTargetBinding> colour;
-    for (const auto& t : targets_)
-        if (t) colour.emplace_back(&t->target());
-    if (colour.empty()) {
-        note(at + "no render target view bound; nothing drawn (fxport draws into at least one)");
-        return false;
-    }
-    GraphicsDevice& core = device_->core();
-    core::DepthBuffer* depth = depthView_ ? depthView_->texture->depth.get() : nullptr;
-    const RenderTarget2D& first = *static_cast<RenderTarget2D*>(colour[0].RenderTarget);
-    if (depth && (depth->width() != first.Width() || depth->height() != first.Height())) {
-        note(at + "the depth-stencil view is " + std::to_string(depth->width()) + "x" + std::to_string(depth->height()) +
-             ", the render target " + std::to_string(first.Width()) + "x" + std::to_string(first.Height()) + "; nothing drawn");
-        return false;
-    }
-    core::setTargets(core, colour, depth);
-
-    core.BlendState = blend_ ? blend_->state : defaultBlend_;
-    core.BlendState.BlendFactor = colorOf(blendFactor_);
-    core.BlendState.MultiSampleMask = int(sampleMask_);
-    core.DepthStencilState = depthStencil_ ? depthStencil_->state : defaultDepthStencil_;
-    core.DepthStencilState.ReferenceStencil = int(stencilRef_);
-    core.RasterizerState = rasterizer_ ? rasterizer_->state : defaultRasterizer_;
-    if (viewportSet_) {
-        Viewport v(int(std::lround(viewport_.TopLeftX)), int(std::lround(viewport_.TopLeftY)), int(std::lround(viewport_.Width)),
-                   int(std::lround(viewport_.Height)));
-        v.MinDepth = viewport_.MinDepth;
-        v.MaxDepth = viewport_.MaxDepth;
-        core.Viewport = v;
-    }
-    core.ScissorRectangle = Rectangle(scissor_.left, scissor_.top, scissor_.right - scissor_.left, scissor_.bottom - scissor_.top);
-
-    if (effectPass_) {
-        // The pass binds its shaders, constants and textures and sets the states it names over
-        // the context's (Effects11's Apply does the same through the context's Set calls).
-        effectPass_->Apply();
-    } else {
-        core::setShaders(core, *vertexShader_->code, *pixelShader_->code);
-        bindStage(0, vertexShader_->bindings, vs_);
-        bindStage(1, pixelShader_->bindings, ps_);
-    }
-
-    std::vector<VertexElement> elements = layout_ ? layout_->elements : std::vector<VertexElement>{};
-    int stride = int(stride_);
-    if (elements.empty()) stride = std::max(stride, 1);
-    declaration_ = VertexDeclaration(stride, elements);
-    return true;
-}
-
-void Context::draw(const char* call, core::DrawArguments a, bool indexed) {
-    bool ok = false;
-    a.type = primitiveOf(topology_, ok);
-    if (!ok) return note(std::string(call) + ": primitive topology " + std::to_string(topology_) + " is not one fxport draws; nothing drawn");
-    if (layout_ && !layout_->elements.empty() && (!vertexBuffer_ || !vertexBuffer_->gpu))
-        return note(std::string(call) + ": no vertex buffer in slot 0; nothing drawn");
-    if (indexed) {
-        if (!indexBuffer_ || !indexBuffer_->gpu) return note(std::string(call) + ": no index buffer set; nothing drawn");
-        if (indexFormat_ != DXGI_FORMAT_R16_UINT && indexFormat_ != DXGI_FORMAT_R32_UINT)
-            return note(std::string(call) + ": index format " + formatName(indexFormat_) + " (must be R16_UINT or R32_UINT)");
-        a.indexSize = indexFormat_ == DXGI_FORMAT_R32_UINT ? 4 : 2;
-        if (indexOffset_ % UINT(a.indexSize) != 0)
-            return note(std::string(call) + ": index buffer offset " + std::to_string(indexOffset_) + " is not a multiple of the index size");
-        a.first += int(indexOffset_ / UINT(a.indexSize));
-        const std::size_t end = (std::size_t(a.first) + std::size_t(a.count)) * std::size_t(a.indexSize);
-        if (end > indexBuffer_->desc.ByteWidth)
-            return note(std::string(call) + ": indices up to byte " + std::to_string(end) + " overrun the index buffer's " +
-                        std::to_string(indexBuffer_->desc.ByteWidth));
-        a.indices = indexBuffer_->gpu.get();
-    }
-    HRESULT hr = guarded(call, [&] {
-        if (!prepare(call)) return S_FALSE;
-        core::VertexStream stream{vertexBuffer_ ? vertexBuffer_->gpu.get() : nullptr, vertexOffset_, &declaration_};
-        core::draw(device_->core(), stream, a);
-        return S_OK;
-    });
-    if (hr == S_OK) succeed();
-}
-
-void Context::Draw(UINT VertexCount, UINT StartVertexLocation) {
-    draw("Draw", core::DrawArguments{PrimitiveType::TriangleList, int(VertexCount), int(StartVertexLocation)}, false);
-}
-void Context::DrawIndexed(UINT IndexCount, UINT StartIndexLocation, INT BaseVertexLocation) {
-    draw("DrawIndexed", core::DrawArguments{PrimitiveType::TriangleList, int(IndexCount), int(StartIndexLocation), BaseVertexLocation}, true);
-}
-void Context::DrawInstanced(UINT VertexCountPerInstance, UINT InstanceCount, UINT StartVertexLocation, UINT StartInstanceLocation) {
-    draw("DrawInstanced",
-         core::DrawArguments{PrimitiveType::TriangleList, int(VertexCountPerInstance), int(StartVertexLocation), 0, int(InstanceCount),
-                             int(StartInstanceLocation)},
-         false);
-}
-void Context::DrawIndexedInstanced(UINT IndexCountPerInstance, UINT InstanceCount, UINT StartIndexLocation, INT BaseVertexLocation,
-                                   UINT StartInstanceLocation) {
-    draw("DrawIndexedInstanced",
-         core::DrawArguments{PrimitiveType::TriangleList, int(IndexCountPerInstance), int(StartIndexLocation), BaseVertexLocation,
-                             int(InstanceCount), int(StartInstanceLocation)},
-         true);
-}
-
-// --- resources
-
-HRESULT Context::Map(ID3D11Resource* pResource, UINT Subresource, D3D11_MAP MapType, UINT, D3D11_MAPPED_SUBRESOURCE* out) {
-    if (!out) return fail(E_INVALIDARG, "Map: pMappedResource is null");
-    const bool reads = MapType == D3D11_MAP_READ || MapType == D3D11_MAP_READ_WRITE;
-    const bool writes = MapType != D3D11_MAP_READ;
-    if (MapType < D3D11_MAP_READ || MapType > D3D11_MAP_WRITE_NO_OVERWRITE)
-        return fail(E_INVALIDARG, "Map: MapType = " + std::to_string(MapType) + " is not a D3D11_MAP value (1-5)");
-    auto checkAccess = [&](D3D11_USAGE usage, UINT cpu) -> HRESULT {
-        if (usage == D3D11_USAGE_DYNAMIC && MapType != D3D11_MAP_WRITE_DISCARD && MapType != D3D11_MAP_WRITE_NO_OVERWRITE)
-            return fail(E_INVALIDARG, "Map: MapType = " + std::to_string(MapType) + " on a USAGE_DYNAMIC resource (WRITE_DISCARD or WRITE_NO_OVERWRITE)");
-        if (usage != D3D11_USAGE_DYNAMIC && usage != D3D11_USAGE_STAGING)
-            return fail(E_INVALIDARG, "Map: the resource's Usage = " + std::to_string(usage) + " (only DYNAMIC and STAGING resources map)");
-        if ((reads && !(cpu & D3D11_CPU_ACCESS_READ)) || (writes && !(cpu & D3D11_CPU_ACCESS_WRITE)))
-            return fail(E_INVALIDARG, "Map: MapType = " + std::to_string(MapType) + " needs CPU access the resource's CPUAccessFlags = " +
-                                          std::to_string(cpu) + " do not give");
-        return S_OK;
-    };
-    if (auto* b = own<Buffer>(pResource, device_)) {
-        if (Subresource != 0) return fail(E_INVALIDARG, "Map: Subresource = " + std::to_string(Subresource) + " of a buffer");
-        if (b->mapped) return fail(E_INVALIDARG, "Map: the buffer is already mapped");
-        if (HRESULT hr = checkAccess(b->desc.Usage, b->desc.CPUAccessFlags); FAILED(hr)) return hr;
-        if (b->cpu.empty()) b->cpu.assign(b->desc.ByteWidth, 0);  // a dynamic buffer's CPU copy, kept for NO_OVERWRITE
-        b->mapped = true;
-        *out = D3D11_MAPPED_SUBRESOURCE{b->cpu.data(), b->desc.ByteWidth, b->desc.ByteWidth};
-        return succeed();
-    }
-    if (auto* t = own<Texture>(pResource, device_)) {
-        if (Subresource >= UINT(t->levels)) return fail(E_INVALIDARG, "Map: Subresource = " + std::to_string(Subresource) + " of " + std::to_string(t->levels));
-        if (t->mappedLevel >= 0) return fail(E_INVALIDARG, "Map: the texture is already mapped");
-        if (HRESULT hr = checkAccess(t->desc.Usage, t->desc.CPUAccessFlags); FAILED(hr)) return hr;
-        if (t->staging.empty())
-            for (int level = 0; level < t->levels; ++level) t->staging.emplace_back(t->levelBytes(level), 0);
-        t->mappedLevel = int(Subresource);
-        const UINT row = UINT(t->levelWidth(int(Subresource)) * bytesPerPixel(t->format));
-        *out = D3D11_MAPPED_SUBRESOURCE{t->staging[Subresource].data(), row, UINT(t->levelBytes(int(Subresource)))};
-        return succeed();
-    }
-    return fail(E_INVALIDARG, "Map: pResource is not a buffer or texture of this device");
-}
-
-void Context::Unmap(ID3D11Resource* pResource, UINT Subresource) {
-    guarded("Unmap", [&] {
-        if (auto* b = own<Buffer>(pResource, device_)) {
-            if (!b->mapped) return fail(E_INVALIDARG, "Unmap: the buffer is not mapped");
-            b->mapped = false;
-            if (b->gpu) b->gpu->write(0, b->cpu.size(), b->cpu.data());
-            return succeed();
-        }
-        if (auto* t = own<Texture>(pResource, device_)) {
-            if (t->mappedLevel != int(Subresource)) return fail(E_INVALIDARG, "Unmap: subresource " + std::to_string(Subresource) + " is not mapped");
-            t->mappedLevel = -1;
-            if (t->colour) t->colour->setData(int(Subresource), nullptr, t->staging[Subresource].data(), t->staging[Subresource].size());
-            return succeed();
-        }
-        return fail(E_INVALIDARG, "Unmap: pResource is not a buffer or texture of this device");
-    });
-}
-
-void Context::UpdateSubresource(ID3D11Resource* pDst, UINT DstSubresource, const D3D11_BOX* box, const void* pSrcData, UINT SrcRowPitch, UINT) {
-    guarded("UpdateSubresource", [&] {
-        if (!pSrcData) return fail(E_INVALIDARG, "UpdateSubresource: pSrcData is null");
-        if (auto* b = own<Buffer>(pDst, device_)) {
-            if (b->desc.Usage != D3D11_USAGE_DEFAULT)
-                return fail(E_INVALIDARG, "UpdateSubresource: the buffer's Usage = " + std::to_string(b->desc.Usage) + " (only USAGE_DEFAULT)");
-            if (box && (b->desc.BindFlags & D3D11_BIND_CONSTANT_BUFFER))
-                return fail(E_INVALIDARG, "UpdateSubresource: a constant buffer is updated whole (pDstBox must be null)");
-            const UINT left = box ? box->left : 0, right = box ? box->right : b->desc.ByteWidth;
-            if (right <= left || right > b->desc.ByteWidth)
-                return fail(E_INVALIDARG, "UpdateSubresource: box [" + std::to_string(left) + ", " + std::to_string(right) + ") of a " +
-                                              std::to_string(b->desc.ByteWidth) + "-byte buffer");
-            b->gpu->write(left, right - left, pSrcData);
-            return succeed();
-        }
-        auto* t = own<Texture>(pDst, device_);
-        if (!t) return fail(E_INVALIDARG, "UpdateSubresource: pDstResource is not a buffer or texture of this device");
-        if (t->desc.Usage != D3D11_USAGE_DEFAULT || !t->colour)
-            return fail(E_INVALIDARG, "UpdateSubresource: the texture is not a USAGE_DEFAULT colour texture");
-        const int level = int(DstSubresource);
-        if (level >= t->levels) return fail(E_INVALIDARG, "UpdateSubresource: DstSubresource = " + std::to_string(DstSubresource));
-        Rectangle r(0, 0, t->levelWidth(level), t->levelHeight(level));
-        if (box) r = Rectangle(int(box->left), int(box->top), int(box->right) - int(box->left), int(box->bottom) - int(box->top));
-        const std::size_t row = std::size_t(r.Width) * std::size_t(bytesPerPixel(t->format));
-        if (SrcRowPitch < row) return fail(E_INVALIDARG, "UpdateSubresource: SrcRowPitch = " + std::to_string(SrcRowPitch) + " < " + std::to_string(row));
-        std::vector<std::uint8_t> packed(row * std::size_t(std::max(r.Height, 0)));
-        for (int y = 0; y < r.Height; ++y)
-            std::memcpy(&packed[std::size_t(y) * row], static_cast<const std::uint8_t*>(pSrcData) + std::size_t(y) * SrcRowPitch, row);
-        t->colour->setData(level, &r, packed.data(), packed.size());
-        return succeed();
-    });
-}
-
-void Context::CopyResource(ID3D11Resource* pDst, ID3D11Resource* pSrc) {
-    guarded("CopyResource", [&] {
-        auto *bd = own<Buffer>(pDst, device_), *bs = own<Buffer>(pSrc, device_);
-        if (bd && bs) {
-            if (bd->desc.ByteWidth != bs->desc.ByteWidth) return fail(E_INVALIDARG, "CopyResource: the buffers differ in ByteWidth");
-            if (bd->gpu && bs->gpu) bd->gpu->copyFrom(*bs->gpu);
-            else if (bd->gpu) bd->gpu->write(0, bs->cpu.size(), bs->cpu.data());
-            else if (bs->gpu) bs->gpu->read(0, bd->cpu.size(), bd->cpu.data());
-            else bd->cpu = bs->cpu;
-            return succeed();
-        }
-        auto *td = own<Texture>(pDst, device_), *ts = own<Texture>(pSrc, device_);
-        if (!td || !ts) return fail(E_INVALIDARG, "CopyResource: the resources are not two buffers or two textures of this device");
-        if (td->desc.Width != ts->desc.Width || td->desc.Height != ts->desc.Height || td->desc.Format != ts->desc.Format ||
-            td->levels != ts->levels)
-            return fail(E_INVALIDARG, "CopyResource: the textures differ in size, format or mip levels");
-        if (td->depth || ts->depth) return fail(E_NOTIMPL, "CopyResource: depth-stencil textures cannot be copied in fxport yet");
-        for (int level = 0; level < ts->levels; ++level) {
-            if (td->colour && ts->colour) {
-                core::copyTexture(*td->colour, *ts->colour);
-                break;
-            }
-            auto& cpu = td->colour ? ts->staging[std::size_t(level)] : td->staging[std::size_t(level)];
-            if (td->colour) td->colour->setData(level, nullptr, cpu.data(), cpu.size());
-            else if (ts->colour) ts->colour->getData(level, cpu.data(), cpu.size());
-            else td->staging = ts->staging;
-        }
-        return succeed();
-    });
-}
-
-void Context::ClearRenderTargetView(ID3D11RenderTargetView* p, const FLOAT c[4]) {
-    guarded("ClearRenderTargetView", [&] {
-        auto* v = own<RenderTargetView>(p, device_);
-        if (!v || !c) return fail(E_INVALIDARG, "ClearRenderTargetView: no view of this device, or no colour");
-        core::clearTexture(*v->texture->colour, Vector4(c[0], c[1], c[2], c[3]));
-        return succeed();
-    });
-}
-
-void Context::ClearDepthStencilView(ID3D11DepthStencilView* p, UINT flags, FLOAT depth, UINT8 stencil) {
-    guarded("ClearDepthStencilView", [&] {
-        auto* v = own<DepthStencilView>(p, device_);
-        if (!v) return fail(E_INVALIDARG, "ClearDepthStencilView: no view of this device");
-        core::clearDepthBuffer(device_->core(), *v->texture->depth, (flags & D3D11_CLEAR_DEPTH) != 0, (flags & D3D11_CLEAR_STENCIL) != 0,
-                               depth, int(stencil));
-        return succeed();
-    });
-}
-
-void Context::GenerateMips(ID3D11ShaderResourceView* p) {
-    auto* v = own<ShaderResourceView>(p, device_);
-    if (!v || !(v->texture->desc.MiscFlags & D3D11_RESOURCE_MISC_GENERATE_MIPS))
-        return note("GenerateMips: the view's texture was not made with D3D11_RESOURCE_MISC_GENERATE_MIPS");
-    guarded("GenerateMips", [&] {
-        core::generateMips(*v->texture->colour);
-        return succeed();
-    });
-}
-
-void Context::Flush() { device_->core().finish(); }
 
 }  // namespace fxport::d3d11

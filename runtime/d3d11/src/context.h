@@ -10,6 +10,13 @@
 
 namespace fxport::d3d11 {
 
+// `object` as this front end's T when `device` made it; null otherwise (D3D ignores foreign objects).
+template <class T, class I>
+T* own(I* object, Device* device) {
+    auto* t = dynamic_cast<T*>(object);
+    return t && &t->device() == device ? t : nullptr;
+}
+
 class Context final : public ID3D11DeviceContext {
 public:
     explicit Context(Device* device);
@@ -38,7 +45,20 @@ public:
     void PSSetShaderResources(UINT StartSlot, UINT NumViews, ID3D11ShaderResourceView* const* ppViews) override;
     void VSSetSamplers(UINT StartSlot, UINT NumSamplers, ID3D11SamplerState* const* ppSamplers) override;
     void PSSetSamplers(UINT StartSlot, UINT NumSamplers, ID3D11SamplerState* const* ppSamplers) override;
-    void CSSetUnorderedAccessViews(UINT, UINT, ID3D11UnorderedAccessView* const*, const UINT*) override;
+    void GSSetConstantBuffers(UINT StartSlot, UINT NumBuffers, ID3D11Buffer* const* ppConstantBuffers) override;
+    void GSSetShaderResources(UINT StartSlot, UINT NumViews, ID3D11ShaderResourceView* const* ppViews) override;
+    void GSSetSamplers(UINT StartSlot, UINT NumSamplers, ID3D11SamplerState* const* ppSamplers) override;
+    void HSSetConstantBuffers(UINT StartSlot, UINT NumBuffers, ID3D11Buffer* const* ppConstantBuffers) override;
+    void HSSetShaderResources(UINT StartSlot, UINT NumViews, ID3D11ShaderResourceView* const* ppViews) override;
+    void HSSetSamplers(UINT StartSlot, UINT NumSamplers, ID3D11SamplerState* const* ppSamplers) override;
+    void DSSetConstantBuffers(UINT StartSlot, UINT NumBuffers, ID3D11Buffer* const* ppConstantBuffers) override;
+    void DSSetShaderResources(UINT StartSlot, UINT NumViews, ID3D11ShaderResourceView* const* ppViews) override;
+    void DSSetSamplers(UINT StartSlot, UINT NumSamplers, ID3D11SamplerState* const* ppSamplers) override;
+    void CSSetConstantBuffers(UINT StartSlot, UINT NumBuffers, ID3D11Buffer* const* ppConstantBuffers) override;
+    void CSSetShaderResources(UINT StartSlot, UINT NumViews, ID3D11ShaderResourceView* const* ppViews) override;
+    void CSSetSamplers(UINT StartSlot, UINT NumSamplers, ID3D11SamplerState* const* ppSamplers) override;
+    void CSSetUnorderedAccessViews(UINT StartSlot, UINT NumUAVs, ID3D11UnorderedAccessView* const* ppUnorderedAccessViews,
+                                   const UINT* pUAVInitialCounts) override;
     void RSSetViewports(UINT NumViewports, const D3D11_VIEWPORT* pViewports) override;
     void RSSetScissorRects(UINT NumRects, const D3D11_RECT* pRects) override;
     void RSSetState(ID3D11RasterizerState* pRasterizerState) override;
@@ -51,13 +71,15 @@ public:
     void DrawInstanced(UINT VertexCountPerInstance, UINT InstanceCount, UINT StartVertexLocation, UINT StartInstanceLocation) override;
     void DrawIndexedInstanced(UINT IndexCountPerInstance, UINT InstanceCount, UINT StartIndexLocation, INT BaseVertexLocation,
                               UINT StartInstanceLocation) override;
-    void Dispatch(UINT, UINT, UINT) override;
+    void Dispatch(UINT ThreadGroupCountX, UINT ThreadGroupCountY, UINT ThreadGroupCountZ) override;
     HRESULT Map(ID3D11Resource* pResource, UINT Subresource, D3D11_MAP MapType, UINT MapFlags,
                 D3D11_MAPPED_SUBRESOURCE* pMappedResource) override;
     void Unmap(ID3D11Resource* pResource, UINT Subresource) override;
     void UpdateSubresource(ID3D11Resource* pDstResource, UINT DstSubresource, const D3D11_BOX* pDstBox, const void* pSrcData,
                            UINT SrcRowPitch, UINT SrcDepthPitch) override;
     void CopyResource(ID3D11Resource* pDstResource, ID3D11Resource* pSrcResource) override;
+    void CopySubresourceRegion(ID3D11Resource* pDstResource, UINT DstSubresource, UINT DstX, UINT DstY, UINT DstZ,
+                               ID3D11Resource* pSrcResource, UINT SrcSubresource, const D3D11_BOX* pSrcBox) override;
     void ClearRenderTargetView(ID3D11RenderTargetView* pRenderTargetView, const FLOAT ColorRGBA[4]) override;
     void ClearDepthStencilView(ID3D11DepthStencilView* pDepthStencilView, UINT ClearFlags, FLOAT Depth, UINT8 Stencil) override;
     void GenerateMips(ID3D11ShaderResourceView* pShaderResourceView) override;
@@ -76,28 +98,42 @@ public:
     }
 
 private:
+    // One shader stage's slots (each stage has its own, as in D3D).
     struct Stage {
         std::array<ComPtr<Buffer>, D3D11_COMMONSHADER_CONSTANT_BUFFER_API_SLOT_COUNT> constantBuffers;
         std::array<ComPtr<ShaderResourceView>, 32> views;  // t0..t31 (D3D has 128; fxport samples 16 units)
         std::array<ComPtr<SamplerState>, D3D11_COMMONSHADER_SAMPLER_SLOT_COUNT> samplers;
     };
+    using UavSlots = std::array<ComPtr<UnorderedAccessView>, D3D11_PS_CS_UAV_REGISTER_COUNT>;
     // Copies the bindings into the device core; false (with the reason noted) when D3D would draw
     // nothing or the draw cannot be made.
     bool prepare(const char* call);
     void bindStage(int stage, const ShaderBindings& bindings, const Stage& s);
+    // The buffers and textures `code` reads and writes through t# (buffer SRVs) and u# (UAVs):
+    // throws InvalidOperation naming the register when its slot holds no view of the right kind.
+    void bindStorage(const char* call, const core::ShaderCode& code, const Stage& s, const UavSlots* uavs);
     void draw(const char* call, core::DrawArguments arguments, bool indexed);
+    bool streams(const char* call, std::vector<core::InstancedStream>& out);
 
     Device* device_;
     ComPtr<InputLayout> layout_;
-    ComPtr<Buffer> vertexBuffer_;
-    UINT stride_ = 0, vertexOffset_ = 0;
+    struct VertexSlot {
+        ComPtr<Buffer> buffer;
+        UINT stride = 0, offset = 0;
+    };
+    std::array<VertexSlot, D3D11_IA_VERTEX_INPUT_RESOURCE_SLOT_COUNT> vertexSlots_;
     ComPtr<Buffer> indexBuffer_;
     DXGI_FORMAT indexFormat_ = DXGI_FORMAT_UNKNOWN;
     UINT indexOffset_ = 0;
     D3D11_PRIMITIVE_TOPOLOGY topology_ = D3D11_PRIMITIVE_TOPOLOGY_UNDEFINED;
     ComPtr<VertexShader> vertexShader_;
     ComPtr<PixelShader> pixelShader_;
-    Stage vs_, ps_;
+    ComPtr<GeometryShader> geometryShader_;
+    ComPtr<HullShader> hullShader_;
+    ComPtr<DomainShader> domainShader_;
+    ComPtr<ComputeShader> computeShader_;
+    Stage vs_, ps_, gs_, hs_, ds_, cs_;
+    UavSlots csUavs_;
     D3D11_VIEWPORT viewport_;
     bool viewportSet_ = false;
     D3D11_RECT scissor_;
@@ -114,9 +150,9 @@ private:
     fxport::RasterizerState defaultRasterizer_;
     fxport::DepthStencilState defaultDepthStencil_;
     fxport::SamplerState defaultSampler_;
-    VertexDeclaration declaration_;
+    std::vector<VertexDeclaration> declarations_;  // each input slot's elements and stride, made at each draw
     EffectPass* effectPass_ = nullptr;  // fxport::EffectPass (applied at each draw instead of VS/PS)
-    const void* effectOwner_ = nullptr;  // the input layout with the slot-0 stride, made at each draw
+    const void* effectOwner_ = nullptr;
 };
 
 }  // namespace fxport::d3d11

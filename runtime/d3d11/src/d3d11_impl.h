@@ -82,15 +82,33 @@ public:
     std::size_t levelBytes(int level) const;
 };
 
+// A view of a texture (texture set) or of a structured buffer (buffer set); it holds a reference.
 class ShaderResourceView final : public Object<ID3D11ShaderResourceView> {
 public:
     ShaderResourceView(Device* device, Texture* viewed, const D3D11_SHADER_RESOURCE_VIEW_DESC& d)
         : Object(device), texture(viewed), desc(d) { texture->AddRef(); }
-    ~ShaderResourceView() override { texture->Release(); }
-    void GetResource(ID3D11Resource** r) override { texture->AddRef(); *r = texture; }
+    ShaderResourceView(Device* device, Buffer* viewed, const D3D11_SHADER_RESOURCE_VIEW_DESC& d)
+        : Object(device), buffer(viewed), desc(d) { buffer->AddRef(); }
+    ~ShaderResourceView() override { resource()->Release(); }
+    void GetResource(ID3D11Resource** r) override { resource()->AddRef(); *r = resource(); }
     void GetDesc(D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc) override { if (pDesc) *pDesc = desc; }
-    Texture* texture;
+    ID3D11Resource* resource() const { return texture ? static_cast<ID3D11Resource*>(texture) : buffer; }
+    Texture* texture = nullptr;
+    Buffer* buffer = nullptr;
     D3D11_SHADER_RESOURCE_VIEW_DESC desc;
+};
+// An unordered-access view of a structured or raw buffer, or of level 0 of a 2D texture.
+class UnorderedAccessView final : public Object<ID3D11UnorderedAccessView> {
+public:
+    UnorderedAccessView(Device* device, ID3D11Resource* viewed, Buffer* b, Texture* t, const D3D11_UNORDERED_ACCESS_VIEW_DESC& d)
+        : Object(device), resource(viewed), buffer(b), texture(t), desc(d) { resource->AddRef(); }
+    ~UnorderedAccessView() override { resource->Release(); }
+    void GetResource(ID3D11Resource** r) override { resource->AddRef(); *r = resource; }
+    void GetDesc(D3D11_UNORDERED_ACCESS_VIEW_DESC* pDesc) override { if (pDesc) *pDesc = desc; }
+    ID3D11Resource* resource;
+    Buffer* buffer;
+    Texture* texture;
+    D3D11_UNORDERED_ACCESS_VIEW_DESC desc;
 };
 class RenderTargetView final : public Object<ID3D11RenderTargetView> {
 public:
@@ -129,10 +147,35 @@ public:
     std::unique_ptr<core::ShaderCode> code;
     ShaderBindings bindings;
 };
+// The geometry, hull, domain and compute shaders: a device program and D3D's slots for it.
+template <class Interface>
+class StageShader final : public Object<Interface> {
+public:
+    StageShader(Device* device, std::unique_ptr<core::ShaderCode> shaderCode, ShaderBindings slots)
+        : Object<Interface>(device), code(std::move(shaderCode)), bindings(std::move(slots)) {}
+    std::unique_ptr<core::ShaderCode> code;
+    ShaderBindings bindings;
+};
+using GeometryShader = StageShader<ID3D11GeometryShader>;
+using HullShader = StageShader<ID3D11HullShader>;
+using DomainShader = StageShader<ID3D11DomainShader>;
+using ComputeShader = StageShader<ID3D11ComputeShader>;
+
+// The elements of each input slot that the layout reads (offsets within that slot's vertex), and
+// whether the slot steps per instance.
 class InputLayout final : public Object<ID3D11InputLayout> {
 public:
-    InputLayout(Device* device, std::vector<VertexElement> layoutElements) : Object(device), elements(std::move(layoutElements)) {}
-    std::vector<VertexElement> elements;  // offsets within slot 0's vertex
+    struct Slot {
+        std::vector<VertexElement> elements;
+        UINT instanceStepRate = 0;  // 0: per vertex
+    };
+    InputLayout(Device* device, std::vector<Slot> layoutSlots) : Object(device), slots(std::move(layoutSlots)) {}
+    std::vector<Slot> slots;  // index = InputSlot, up to the highest one used
+    bool empty() const {
+        for (const Slot& s : slots)
+            if (!s.elements.empty()) return false;
+        return true;
+    }
 };
 
 // --- state objects, decoded once into the device core's descriptions (states.cpp)
@@ -204,7 +247,8 @@ public:
                                    ID3D11RenderTargetView** ppRTView) override;
     HRESULT CreateDepthStencilView(ID3D11Resource* pResource, const D3D11_DEPTH_STENCIL_VIEW_DESC* pDesc,
                                    ID3D11DepthStencilView** ppDepthStencilView) override;
-    HRESULT CreateUnorderedAccessView(ID3D11Resource* pResource, const void* pDesc, ID3D11UnorderedAccessView** ppUAView) override;
+    HRESULT CreateUnorderedAccessView(ID3D11Resource* pResource, const D3D11_UNORDERED_ACCESS_VIEW_DESC* pDesc,
+                                      ID3D11UnorderedAccessView** ppUAView) override;
     HRESULT CreateInputLayout(const D3D11_INPUT_ELEMENT_DESC* pInputElementDescs, UINT NumElements,
                               const void* pShaderBytecodeWithInputSignature, SIZE_T BytecodeLength,
                               ID3D11InputLayout** ppInputLayout) override;

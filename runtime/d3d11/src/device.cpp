@@ -38,7 +38,15 @@ int shaderOfStage(const xlate::CompiledEffect& e, xlate::ShaderStage stage) {
 }
 
 const char* stageName(xlate::ShaderStage s) {
-    return s == xlate::ShaderStage::Vertex ? "vertex" : s == xlate::ShaderStage::Pixel ? "pixel" : "geometry";
+    switch (s) {
+    case xlate::ShaderStage::Vertex: return "vertex";
+    case xlate::ShaderStage::Pixel: return "pixel";
+    case xlate::ShaderStage::Geometry: return "geometry";
+    case xlate::ShaderStage::Hull: return "hull";
+    case xlate::ShaderStage::Domain: return "domain";
+    case xlate::ShaderStage::Compute: return "compute";
+    }
+    return "?";
 }
 
 template <class Shader, class Interface>
@@ -110,17 +118,21 @@ HRESULT Device::CreatePixelShader(const void* b, SIZE_T n, ID3D11ClassLinkage* l
     if (linkage) return fail(E_NOTIMPL, "CreatePixelShader: class linkage (dynamic shader linking) is not supported");
     return createShader<PixelShader>(this, b, n, xlate::ShaderStage::Pixel, "CreatePixelShader", pp);
 }
-HRESULT Device::CreateGeometryShader(const void*, SIZE_T, ID3D11ClassLinkage*, ID3D11GeometryShader**) {
-    return fail(E_NOTIMPL, "CreateGeometryShader: geometry shaders are not implemented in the D3D11 front end yet (effects run them)");
+HRESULT Device::CreateGeometryShader(const void* b, SIZE_T n, ID3D11ClassLinkage* linkage, ID3D11GeometryShader** pp) {
+    if (linkage) return fail(E_NOTIMPL, "CreateGeometryShader: class linkage (dynamic shader linking) is not supported");
+    return createShader<GeometryShader>(this, b, n, xlate::ShaderStage::Geometry, "CreateGeometryShader", pp);
 }
-HRESULT Device::CreateHullShader(const void*, SIZE_T, ID3D11ClassLinkage*, ID3D11HullShader**) {
-    return fail(E_NOTIMPL, "CreateHullShader: tessellation (hull shaders) is not implemented in the D3D11 front end");
+HRESULT Device::CreateHullShader(const void* b, SIZE_T n, ID3D11ClassLinkage* linkage, ID3D11HullShader** pp) {
+    if (linkage) return fail(E_NOTIMPL, "CreateHullShader: class linkage (dynamic shader linking) is not supported");
+    return createShader<HullShader>(this, b, n, xlate::ShaderStage::Hull, "CreateHullShader", pp);
 }
-HRESULT Device::CreateDomainShader(const void*, SIZE_T, ID3D11ClassLinkage*, ID3D11DomainShader**) {
-    return fail(E_NOTIMPL, "CreateDomainShader: tessellation (domain shaders) is not implemented in the D3D11 front end");
+HRESULT Device::CreateDomainShader(const void* b, SIZE_T n, ID3D11ClassLinkage* linkage, ID3D11DomainShader** pp) {
+    if (linkage) return fail(E_NOTIMPL, "CreateDomainShader: class linkage (dynamic shader linking) is not supported");
+    return createShader<DomainShader>(this, b, n, xlate::ShaderStage::Domain, "CreateDomainShader", pp);
 }
-HRESULT Device::CreateComputeShader(const void*, SIZE_T, ID3D11ClassLinkage*, ID3D11ComputeShader**) {
-    return fail(E_NOTIMPL, "CreateComputeShader: compute shaders are not implemented in the D3D11 front end");
+HRESULT Device::CreateComputeShader(const void* b, SIZE_T n, ID3D11ClassLinkage* linkage, ID3D11ComputeShader** pp) {
+    if (linkage) return fail(E_NOTIMPL, "CreateComputeShader: class linkage (dynamic shader linking) is not supported");
+    return createShader<ComputeShader>(this, b, n, xlate::ShaderStage::Compute, "CreateComputeShader", pp);
 }
 
 HRESULT Device::CreateInputLayout(const D3D11_INPUT_ELEMENT_DESC* descs, UINT count, const void* bytecode, SIZE_T length,
@@ -134,9 +146,9 @@ HRESULT Device::CreateInputLayout(const D3D11_INPUT_ELEMENT_DESC* descs, UINT co
     if (!effect) return fail(E_INVALIDARG, std::string(call) + ": " + error);
     const int vs = shaderOfStage(*effect, xlate::ShaderStage::Vertex);
     if (vs < 0) return fail(E_INVALIDARG, "CreateInputLayout: the bytecode is not a vertex shader's (it has no input signature)");
-    std::vector<VertexElement> elements;
+    std::vector<InputLayout::Slot> slots;
     std::vector<std::string> semantics;
-    UINT offset = 0;
+    std::vector<UINT> offsets(D3D11_IA_VERTEX_INPUT_RESOURCE_SLOT_COUNT, 0);  // each slot's next aligned offset
     for (UINT i = 0; i < count; ++i) {
         const D3D11_INPUT_ELEMENT_DESC& d = descs[i];
         const std::string at = "CreateInputLayout: pInputElementDescs[" + std::to_string(i) + "].";
@@ -145,11 +157,23 @@ HRESULT Device::CreateInputLayout(const D3D11_INPUT_ELEMENT_DESC* descs, UINT co
         if (!vertexFormat(d.Format, format))
             return fail(d.Format == DXGI_FORMAT_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
                         at + "Format = " + formatName(d.Format) + " (" + std::to_string(d.Format) + "): not a vertex format fxport supports");
-        if (d.InputSlot != 0)
-            return fail(E_NOTIMPL, at + "InputSlot = " + std::to_string(d.InputSlot) + ": fxport reads vertices from slot 0 only");
-        if (d.InputSlotClass != D3D11_INPUT_PER_VERTEX_DATA)
-            return fail(d.InputSlotClass == D3D11_INPUT_PER_INSTANCE_DATA ? E_NOTIMPL : E_INVALIDARG,
-                        at + "InputSlotClass = " + std::to_string(d.InputSlotClass) + " (per-instance data is not supported yet)");
+        if (d.InputSlot >= D3D11_IA_VERTEX_INPUT_RESOURCE_SLOT_COUNT)
+            return fail(E_INVALIDARG, at + "InputSlot = " + std::to_string(d.InputSlot) + " (0..31)");
+        if (d.InputSlotClass != D3D11_INPUT_PER_VERTEX_DATA && d.InputSlotClass != D3D11_INPUT_PER_INSTANCE_DATA)
+            return fail(E_INVALIDARG, at + "InputSlotClass = " + std::to_string(d.InputSlotClass) + " (PER_VERTEX_DATA 0 or PER_INSTANCE_DATA 1)");
+        const bool perInstance = d.InputSlotClass == D3D11_INPUT_PER_INSTANCE_DATA;
+        if (!perInstance && d.InstanceDataStepRate != 0)
+            return fail(E_INVALIDARG, at + "InstanceDataStepRate = " + std::to_string(d.InstanceDataStepRate) + " with PER_VERTEX_DATA (must be 0)");
+        if (perInstance && d.InstanceDataStepRate == 0)
+            return fail(E_NOTIMPL, at + "InstanceDataStepRate = 0 with PER_INSTANCE_DATA: fxport steps instance data at least once per instance");
+        if (slots.size() <= d.InputSlot) slots.resize(d.InputSlot + 1);
+        InputLayout::Slot& slot = slots[d.InputSlot];
+        const UINT rate = perInstance ? d.InstanceDataStepRate : 0;
+        if (!slot.elements.empty() && slot.instanceStepRate != rate)
+            return fail(E_INVALIDARG, at + "InputSlotClass/InstanceDataStepRate differ from an earlier element of InputSlot " +
+                                          std::to_string(d.InputSlot) + " (a slot steps one way)");
+        slot.instanceStepRate = rate;
+        UINT& offset = offsets[d.InputSlot];
         VertexElementUsage usage;
         if (!usageOf(d.SemanticName, d.SemanticIndex, usage))
             return fail(E_NOTIMPL, at + "SemanticName = \"" + std::string(d.SemanticName) +
@@ -161,7 +185,7 @@ HRESULT Device::CreateInputLayout(const D3D11_INPUT_ELEMENT_DESC* descs, UINT co
         if (std::find(semantics.begin(), semantics.end(), semantic) != semantics.end())
             return fail(E_INVALIDARG, at + "SemanticName/SemanticIndex = " + semantic + " appears twice");
         semantics.push_back(semantic);
-        elements.emplace_back(int(offset), format, usage, int(d.SemanticIndex));
+        slot.elements.emplace_back(int(offset), format, usage, int(d.SemanticIndex));
         offset += UINT(vertexElementSize(format));
     }
     // D3D's rule: every input of the shader's signature is in the layout (by name and index).
@@ -174,7 +198,7 @@ HRESULT Device::CreateInputLayout(const D3D11_INPUT_ELEMENT_DESC* descs, UINT co
             return fail(E_INVALIDARG, "CreateInputLayout: the vertex shader's input " + input.semantic +
                                           " has no element in the layout (semantics match by name and index)");
     }
-    if (pp) *pp = new InputLayout(this, std::move(elements));
+    if (pp) *pp = new InputLayout(this, std::move(slots));
     return succeed();
 }
 

@@ -90,6 +90,19 @@ D3D_SHADER_VARIABLE_CLASS classOf(const xlate::Parameter& p) {
     return D3D_SVC_SCALAR;
 }
 
+// D3D11_SHVER_PIXEL_SHADER 0, VERTEX 1, GEOMETRY 2, HULL 3, DOMAIN 4, COMPUTE 5.
+UINT shaderVersionType(xlate::ShaderStage stage) {
+    switch (stage) {
+    case xlate::ShaderStage::Pixel: return 0;
+    case xlate::ShaderStage::Vertex: return 1;
+    case xlate::ShaderStage::Geometry: return 2;
+    case xlate::ShaderStage::Hull: return 3;
+    case xlate::ShaderStage::Domain: return 4;
+    case xlate::ShaderStage::Compute: return 5;
+    }
+    return 1;
+}
+
 class Reflection final : public ID3D11ShaderReflection {
 public:
     Reflection(std::shared_ptr<const xlate::CompiledEffect> effect, int shader) : effect_(std::move(effect)), shader_(shader) {
@@ -102,6 +115,14 @@ public:
             resources_.push_back({t.name, D3D_SIT_TEXTURE, UINT(t.slot),
                                   t.kind == xlate::TextureKind::TextureCube ? D3D_SRV_DIMENSION_TEXTURECUBE : D3D_SRV_DIMENSION_TEXTURE2D});
         for (const CbufferBinding& c : bindings_.cbuffers) resources_.push_back({c.name, D3D_SIT_CBUFFER, UINT(c.slot), D3D_SRV_DIMENSION_UNKNOWN});
+        // Buffers and RWTexture2Ds (xlate's storage list; a ByteAddressBuffer reads as a structured
+        // buffer of 4-byte elements: xlate does not tell them apart).
+        for (const xlate::StorageBinding& b : s.storage) {
+            const bool uav = b.registerClass == 'u', image = b.kind == xlate::StorageKind::Image;
+            const D3D_SHADER_INPUT_TYPE type = image ? D3D_SIT_UAV_RWTYPED : uav ? D3D_SIT_UAV_RWSTRUCTURED : D3D_SIT_STRUCTURED;
+            resources_.push_back({b.name, type, UINT(b.slot), image ? D3D_SRV_DIMENSION_TEXTURE2D : D3D_SRV_DIMENSION_BUFFER,
+                                  image ? 0u : UINT(b.stride)});
+        }
         std::vector<const xlate::VertexInput*> inputs;
         for (const auto& in : s.inputs) inputs.push_back(&in);
         std::sort(inputs.begin(), inputs.end(), [](auto* a, auto* b) { return a->location < b->location; });
@@ -121,7 +142,7 @@ public:
     HRESULT GetDesc(D3D11_SHADER_DESC* p) override {
         if (!p) return E_INVALIDARG;
         const xlate::ShaderProfile& profile = effect_->shaders[std::size_t(shader_)].profile;
-        const UINT type = profile.stage == xlate::ShaderStage::Pixel ? 0 : profile.stage == xlate::ShaderStage::Vertex ? 1 : 2;
+        const UINT type = shaderVersionType(profile.stage);
         *p = D3D11_SHADER_DESC{};
         p->Version = type << 16 | UINT(profile.major) << 4 | UINT(profile.minor);
         p->Creator = creator_.c_str();
@@ -152,12 +173,23 @@ public:
         p->Type = r.type;
         p->BindPoint = r.slot;
         p->Dimension = r.dimension;
+        p->NumSamples = r.stride;
         return S_OK;
     }
     HRESULT GetResourceBindingDescByName(LPCSTR n, D3D11_SHADER_INPUT_BIND_DESC* p) override {
         for (std::size_t i = 0; i < resources_.size(); ++i)
             if (n && resources_[i].name == n) return GetResourceBindingDesc(UINT(i), p);
         return fail(E_INVALIDARG, std::string("GetResourceBindingDescByName: the shader binds nothing named '") + (n ? n : "") + "'");
+    }
+    UINT GetThreadGroupSize(UINT* x, UINT* y, UINT* z) override {
+        const xlate::CompiledShader& s = effect_->shaders[std::size_t(shader_)];
+        const bool compute = s.profile.stage == xlate::ShaderStage::Compute;
+        const UINT size[3] = {compute ? UINT(s.threadGroupSize[0]) : 0u, compute ? UINT(s.threadGroupSize[1]) : 0u,
+                              compute ? UINT(s.threadGroupSize[2]) : 0u};
+        if (x) *x = size[0];
+        if (y) *y = size[1];
+        if (z) *z = size[2];
+        return size[0] * size[1] * size[2];
     }
     HRESULT GetInputParameterDesc(UINT i, D3D11_SIGNATURE_PARAMETER_DESC* p) override {
         if (!p || i >= inputs_.size()) return fail(E_INVALIDARG, "GetInputParameterDesc: index " + std::to_string(i) + " of " + std::to_string(inputs_.size()));
@@ -178,6 +210,7 @@ private:
         D3D_SHADER_INPUT_TYPE type;
         UINT slot;
         D3D_SRV_DIMENSION dimension;
+        UINT stride = 0;  // structured buffers
     };
     struct Input {
         std::string name;

@@ -40,6 +40,34 @@ HRESULT checkUsage(const char* call, const char* desc, D3D11_USAGE usage, UINT b
     return fail(E_INVALIDARG, at + ".Usage = " + std::to_string(usage) + " is not a D3D11_USAGE value (0-3)");
 }
 
+// D3D's rules for structured and raw buffers (MiscFlags, StructureByteStride) and for buffers a
+// shader writes (BIND_UNORDERED_ACCESS).
+HRESULT checkBufferMisc(const D3D11_BUFFER_DESC& d) {
+    const std::string at = "CreateBuffer: D3D11_BUFFER_DESC.";
+    const UINT misc = D3D11_RESOURCE_MISC_BUFFER_STRUCTURED | D3D11_RESOURCE_MISC_BUFFER_ALLOW_RAW_VIEWS;
+    if (d.MiscFlags & ~misc)
+        return fail(E_NOTIMPL, at + "MiscFlags = " + std::to_string(d.MiscFlags) + ": buffers take BUFFER_STRUCTURED and BUFFER_ALLOW_RAW_VIEWS only");
+    const bool structured = (d.MiscFlags & D3D11_RESOURCE_MISC_BUFFER_STRUCTURED) != 0;
+    const bool raw = (d.MiscFlags & D3D11_RESOURCE_MISC_BUFFER_ALLOW_RAW_VIEWS) != 0;
+    if (structured && raw) return fail(E_INVALIDARG, at + "MiscFlags = " + std::to_string(d.MiscFlags) + ": a buffer is structured or raw, not both");
+    if (structured) {
+        if (d.StructureByteStride == 0 || d.StructureByteStride % 4 != 0 || d.StructureByteStride > 2048)
+            return fail(E_INVALIDARG, at + "StructureByteStride = " + std::to_string(d.StructureByteStride) +
+                                          " for a structured buffer (a multiple of 4, 4 to 2048)");
+        if (d.ByteWidth % d.StructureByteStride != 0)
+            return fail(E_INVALIDARG, at + "ByteWidth = " + std::to_string(d.ByteWidth) + " is not a multiple of StructureByteStride = " +
+                                          std::to_string(d.StructureByteStride));
+        const UINT ia = D3D11_BIND_VERTEX_BUFFER | D3D11_BIND_INDEX_BUFFER | D3D11_BIND_CONSTANT_BUFFER;
+        if (d.BindFlags & ia)
+            return fail(E_INVALIDARG, at + "BindFlags = " + std::to_string(d.BindFlags) + ": a structured buffer cannot be a vertex, index or constant buffer");
+    }
+    if (raw && d.ByteWidth % 4 != 0)
+        return fail(E_INVALIDARG, at + "ByteWidth = " + std::to_string(d.ByteWidth) + " for a raw buffer (a multiple of 4)");
+    if ((d.BindFlags & D3D11_BIND_UNORDERED_ACCESS) && (d.Usage == D3D11_USAGE_DYNAMIC || d.Usage == D3D11_USAGE_IMMUTABLE))
+        return fail(E_INVALIDARG, at + "Usage = " + std::to_string(d.Usage) + " with BIND_UNORDERED_ACCESS (a buffer a shader writes is USAGE_DEFAULT)");
+    return S_OK;
+}
+
 }  // namespace
 
 // --- Buffer
@@ -69,11 +97,13 @@ HRESULT Device::CreateBuffer(const D3D11_BUFFER_DESC* pDesc, const D3D11_SUBRESO
             return fail(E_INVALIDARG, "CreateBuffer: D3D11_BUFFER_DESC.ByteWidth = " + std::to_string(d.ByteWidth) +
                                           " for a constant buffer (at most 4096 registers, 65536 bytes)");
     }
-    const UINT known = D3D11_BIND_VERTEX_BUFFER | D3D11_BIND_INDEX_BUFFER | D3D11_BIND_CONSTANT_BUFFER;
+    const UINT known = D3D11_BIND_VERTEX_BUFFER | D3D11_BIND_INDEX_BUFFER | D3D11_BIND_CONSTANT_BUFFER | D3D11_BIND_SHADER_RESOURCE |
+                       D3D11_BIND_UNORDERED_ACCESS;
     if (d.BindFlags & ~known)
         return fail(E_NOTIMPL, "CreateBuffer: D3D11_BUFFER_DESC.BindFlags = " + std::to_string(d.BindFlags) +
-                                   ": fxport binds buffers as vertex, index and constant buffers only (no shader-resource, "
-                                   "stream-output or unordered-access buffers yet)");
+                                   ": fxport binds buffers as vertex, index, constant, shader-resource and unordered-access buffers "
+                                   "(no stream output)");
+    if (HRESULT hr = checkBufferMisc(d); FAILED(hr)) return hr;
     if (HRESULT hr = checkUsage(call, "D3D11_BUFFER_DESC", d.Usage, d.BindFlags, d.CPUAccessFlags, pInitialData && pInitialData->pSysMem); FAILED(hr))
         return hr;
     if (pInitialData && !pInitialData->pSysMem) return fail(E_INVALIDARG, "CreateBuffer: pInitialData->pSysMem is null");
@@ -113,9 +143,11 @@ HRESULT Device::CreateTexture2D(const D3D11_TEXTURE2D_DESC* pDesc, const D3D11_S
     if (d.MipLevels != 0 && d.MipLevels != 1 && int(d.MipLevels) != full)
         return fail(E_NOTIMPL, at + "MipLevels = " + std::to_string(d.MipLevels) + ": fxport makes 1 level or the full chain (0 or " +
                                    std::to_string(full) + ")");
-    const UINT known = D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_RENDER_TARGET | D3D11_BIND_DEPTH_STENCIL;
+    const UINT known = D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_RENDER_TARGET | D3D11_BIND_DEPTH_STENCIL | D3D11_BIND_UNORDERED_ACCESS;
     if (d.BindFlags & ~known)
-        return fail(E_NOTIMPL, at + "BindFlags = " + std::to_string(d.BindFlags) + ": only SHADER_RESOURCE, RENDER_TARGET and DEPTH_STENCIL");
+        return fail(E_NOTIMPL, at + "BindFlags = " + std::to_string(d.BindFlags) + ": only SHADER_RESOURCE, RENDER_TARGET, DEPTH_STENCIL and UNORDERED_ACCESS");
+    if ((d.BindFlags & D3D11_BIND_UNORDERED_ACCESS) && d.Usage != D3D11_USAGE_DEFAULT)
+        return fail(E_INVALIDARG, at + "Usage = " + std::to_string(d.Usage) + " with BIND_UNORDERED_ACCESS (must be USAGE_DEFAULT)");
     const bool depthTarget = (d.BindFlags & D3D11_BIND_DEPTH_STENCIL) != 0;
     if (depthTarget && (d.BindFlags & (D3D11_BIND_RENDER_TARGET | D3D11_BIND_SHADER_RESOURCE)))
         return fail(E_NOTIMPL, at + "BindFlags = " + std::to_string(d.BindFlags) +

@@ -47,15 +47,14 @@ int declarationOrder(const xlate::CompiledEffect& e, RK kind, const std::string&
 }
 
 // Allocates slots for `names` (used by the shader) of one kind: explicit registers first, then
-// the lowest free ones in declaration order.
+// the lowest free ones in declaration order; `taken` holds slots other resources already use.
 std::map<std::string, int> allocate(const xlate::CompiledEffect& e, RK kind, std::vector<std::string> names,
-                                    const std::string& first = {}) {
+                                    const std::string& first = {}, std::set<int> taken = {}) {
     std::sort(names.begin(), names.end(), [&](const std::string& a, const std::string& b) {
         if (a == first || b == first) return a == first && b != first;
         return declarationOrder(e, kind, a) < declarationOrder(e, kind, b);
     });
     std::map<std::string, int> slots;
-    std::set<int> taken;
     for (const auto& n : names)
         if (int r = explicitRegister(e, kind, n); r >= 0) {
             slots[n] = r;
@@ -126,7 +125,11 @@ ShaderBindings bindingsOf(const xlate::CompiledEffect& effect, int shader) {
         if (!sb.samplerName.empty() && std::find(samplers.begin(), samplers.end(), sb.samplerName) == samplers.end())
             samplers.push_back(sb.samplerName);
     }
-    std::map<std::string, int> tSlots = allocate(effect, RK::Texture, textures);
+    // Structured and raw buffers (StructuredBuffer<T>, ByteAddressBuffer) share the t# registers.
+    std::set<int> bufferSlots;
+    for (const xlate::StorageBinding& sb : s.storage)
+        if (sb.registerClass == 't') bufferSlots.insert(sb.slot);
+    std::map<std::string, int> tSlots = allocate(effect, RK::Texture, textures, {}, bufferSlots);
     std::map<std::string, int> sSlots = allocate(effect, RK::Sampler, samplers);
     for (const auto& sb : s.samplers) {
         const std::string t = sb.textureParameter.empty() ? sb.samplerName : sb.textureParameter;

@@ -1,5 +1,7 @@
 // Shader-resource, render-target and depth-stencil views of 2D textures (the whole texture: one
-// format, all levels for SRVs, level 0 for RTVs and DSVs).
+// format, all levels for SRVs, level 0 for RTVs and DSVs); shader-resource and unordered-access
+// views of whole structured (StructuredBuffer<T>) and raw (ByteAddressBuffer) buffers, and
+// unordered-access views of level 0 of a 2D texture (RWTexture2D).
 #include "d3d11_impl.h"
 #include "guarded.h"
 
@@ -15,7 +17,7 @@ Texture* textureOf(Device* device, ID3D11Resource* resource, const char* call, H
         return nullptr;
     }
     if (dynamic_cast<Buffer*>(resource)) {
-        hr = fail(E_NOTIMPL, std::string(call) + ": views of buffers are not supported yet");
+        hr = fail(E_NOTIMPL, std::string(call) + ": views of buffers are shader-resource and unordered-access views only");
         return nullptr;
     }
     auto* t = dynamic_cast<Texture*>(resource);
@@ -32,11 +34,67 @@ HRESULT checkFormat(const char* call, const char* desc, DXGI_FORMAT viewFormat, 
                                formatName(t.desc.Format) + ": fxport views a texture in its own format");
 }
 
+// The buffer view's elements: the whole of a structured buffer (FirstElement 0, NumElements its
+// element count) or of a raw one (R32_TYPELESS with the RAW flag: 4-byte elements). `desc` names
+// the description for messages ("D3D11_SHADER_RESOURCE_VIEW_DESC.Buffer").
+HRESULT checkBufferView(const char* call, const std::string& desc, const Buffer& b, DXGI_FORMAT format, bool raw, UINT first, UINT count) {
+    const std::string at = std::string(call) + ": " + desc;
+    const bool structured = (b.desc.MiscFlags & D3D11_RESOURCE_MISC_BUFFER_STRUCTURED) != 0;
+    if (raw) {
+        if (!(b.desc.MiscFlags & D3D11_RESOURCE_MISC_BUFFER_ALLOW_RAW_VIEWS))
+            return fail(E_INVALIDARG, at + " asks for a raw view of a buffer made without D3D11_RESOURCE_MISC_BUFFER_ALLOW_RAW_VIEWS");
+        if (format != DXGI_FORMAT_R32_TYPELESS)
+            return fail(E_INVALIDARG, std::string(call) + ": Format = " + formatName(format) + " for a raw view (must be DXGI_FORMAT_R32_TYPELESS)");
+    } else if (!structured) {
+        return fail(E_NOTIMPL, std::string(call) + ": a typed view of a buffer (Buffer<T> / RWBuffer<T>) is not supported; fxport views "
+                                                   "structured buffers (D3D11_RESOURCE_MISC_BUFFER_STRUCTURED) and raw ones");
+    } else if (format != DXGI_FORMAT_UNKNOWN) {
+        return fail(E_INVALIDARG, std::string(call) + ": Format = " + formatName(format) + " for a structured buffer (must be DXGI_FORMAT_UNKNOWN)");
+    }
+    const UINT stride = raw ? 4u : b.desc.StructureByteStride;
+    const UINT elements = b.desc.ByteWidth / stride;
+    if (first >= elements || count > elements - first)
+        return fail(E_INVALIDARG, at + " = {FirstElement " + std::to_string(first) + ", NumElements " + std::to_string(count) + "}: the buffer has " +
+                                      std::to_string(elements) + " elements");
+    if (first != 0 || count != elements)
+        return fail(E_NOTIMPL, at + " = {FirstElement " + std::to_string(first) + ", NumElements " + std::to_string(count) +
+                                   "}: fxport views the whole buffer (0, " + std::to_string(elements) + ")");
+    return S_OK;
+}
+
+HRESULT bufferShaderResourceView(Device* device, Buffer* b, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc, ID3D11ShaderResourceView** pp) {
+    const char* call = "CreateShaderResourceView";
+    if (!(b->desc.BindFlags & D3D11_BIND_SHADER_RESOURCE))
+        return fail(E_INVALIDARG, std::string(call) + ": the buffer's BindFlags = " + std::to_string(b->desc.BindFlags) + " lack D3D11_BIND_SHADER_RESOURCE");
+    D3D11_SHADER_RESOURCE_VIEW_DESC d;
+    d.ViewDimension = D3D11_SRV_DIMENSION_BUFFER;
+    const bool structured = (b->desc.MiscFlags & D3D11_RESOURCE_MISC_BUFFER_STRUCTURED) != 0;
+    d.Buffer.NumElements = structured ? b->desc.ByteWidth / b->desc.StructureByteStride : 0;
+    if (!pDesc && !structured)
+        return fail(E_INVALIDARG, std::string(call) + ": pDesc is null for a buffer that is not structured (a raw view needs a description)");
+    if (pDesc) {
+        d = *pDesc;
+        HRESULT hr = S_OK;
+        if (d.ViewDimension == D3D11_SRV_DIMENSION_BUFFER)
+            hr = checkBufferView(call, "D3D11_SHADER_RESOURCE_VIEW_DESC.Buffer", *b, d.Format, false, d.Buffer.FirstElement, d.Buffer.NumElements);
+        else if (d.ViewDimension == D3D11_SRV_DIMENSION_BUFFEREX)
+            hr = checkBufferView(call, "D3D11_SHADER_RESOURCE_VIEW_DESC.BufferEx", *b, d.Format, (d.BufferEx.Flags & D3D11_BUFFEREX_SRV_FLAG_RAW) != 0,
+                                 d.BufferEx.FirstElement, d.BufferEx.NumElements);
+        else
+            return fail(E_INVALIDARG, std::string(call) + ": D3D11_SHADER_RESOURCE_VIEW_DESC.ViewDimension = " + std::to_string(d.ViewDimension) +
+                                          " for a buffer (D3D11_SRV_DIMENSION_BUFFER or BUFFEREX)");
+        if (FAILED(hr)) return hr;
+    }
+    if (pp) *pp = new ShaderResourceView(device, b, d);
+    return succeed();
+}
+
 }  // namespace
 
 HRESULT Device::CreateShaderResourceView(ID3D11Resource* pResource, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc,
                                          ID3D11ShaderResourceView** ppSRView) {
     const char* call = "CreateShaderResourceView";
+    if (auto* b = dynamic_cast<Buffer*>(pResource); b && &b->device() == this) return bufferShaderResourceView(this, b, pDesc, ppSRView);
     HRESULT hr;
     Texture* t = textureOf(this, pResource, call, hr);
     if (!t) return hr;
@@ -119,8 +177,53 @@ HRESULT Device::CreateDepthStencilView(ID3D11Resource* pResource, const D3D11_DE
     return succeed();
 }
 
-HRESULT Device::CreateUnorderedAccessView(ID3D11Resource*, const void*, ID3D11UnorderedAccessView**) {
-    return fail(E_NOTIMPL, "CreateUnorderedAccessView: unordered-access views (compute) are not implemented in the D3D11 front end yet");
+HRESULT Device::CreateUnorderedAccessView(ID3D11Resource* pResource, const D3D11_UNORDERED_ACCESS_VIEW_DESC* pDesc,
+                                          ID3D11UnorderedAccessView** ppUAView) {
+    const char* call = "CreateUnorderedAccessView";
+    if (!pResource) return fail(E_INVALIDARG, std::string(call) + ": pResource is null");
+    auto* b = dynamic_cast<Buffer*>(pResource);
+    auto* t = dynamic_cast<Texture*>(pResource);
+    if ((b && &b->device() != this) || (t && &t->device() != this) || (!b && !t))
+        return fail(E_INVALIDARG, std::string(call) + ": pResource was not made by this device");
+    const UINT bind = b ? b->desc.BindFlags : t->desc.BindFlags;
+    if (!(bind & D3D11_BIND_UNORDERED_ACCESS))
+        return fail(E_INVALIDARG, std::string(call) + ": the resource's BindFlags = " + std::to_string(bind) + " lack D3D11_BIND_UNORDERED_ACCESS");
+    D3D11_UNORDERED_ACCESS_VIEW_DESC d;
+    if (b) {
+        const bool structured = (b->desc.MiscFlags & D3D11_RESOURCE_MISC_BUFFER_STRUCTURED) != 0;
+        if (!pDesc && !structured)
+            return fail(E_INVALIDARG, std::string(call) + ": pDesc is null for a buffer that is not structured (a raw view needs a description)");
+        d.ViewDimension = D3D11_UAV_DIMENSION_BUFFER;
+        d.Buffer.NumElements = structured ? b->desc.ByteWidth / b->desc.StructureByteStride : 0;
+        if (pDesc) {
+            d = *pDesc;
+            if (d.ViewDimension != D3D11_UAV_DIMENSION_BUFFER)
+                return fail(E_INVALIDARG, std::string(call) + ": D3D11_UNORDERED_ACCESS_VIEW_DESC.ViewDimension = " + std::to_string(d.ViewDimension) +
+                                              " for a buffer (D3D11_UAV_DIMENSION_BUFFER)");
+            if (d.Buffer.Flags & (D3D11_BUFFER_UAV_FLAG_APPEND | D3D11_BUFFER_UAV_FLAG_COUNTER))
+                return fail(E_NOTIMPL, std::string(call) + ": D3D11_UNORDERED_ACCESS_VIEW_DESC.Buffer.Flags = " + std::to_string(d.Buffer.Flags) +
+                                           ": append and counter UAVs are not supported");
+            if (HRESULT hr = checkBufferView(call, "D3D11_UNORDERED_ACCESS_VIEW_DESC.Buffer", *b, d.Format, (d.Buffer.Flags & D3D11_BUFFER_UAV_FLAG_RAW) != 0,
+                                             d.Buffer.FirstElement, d.Buffer.NumElements);
+                FAILED(hr))
+                return hr;
+        }
+    } else {
+        d.Format = t->desc.Format;
+        d.ViewDimension = D3D11_UAV_DIMENSION_TEXTURE2D;
+        if (pDesc) {
+            if (pDesc->ViewDimension != D3D11_UAV_DIMENSION_TEXTURE2D)
+                return fail(pDesc->ViewDimension == D3D11_UAV_DIMENSION_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
+                            std::string(call) + ": D3D11_UNORDERED_ACCESS_VIEW_DESC.ViewDimension = " + std::to_string(pDesc->ViewDimension) +
+                                " for a 2D texture (D3D11_UAV_DIMENSION_TEXTURE2D)");
+            if (HRESULT f = checkFormat(call, "D3D11_UNORDERED_ACCESS_VIEW_DESC", pDesc->Format, *t); FAILED(f)) return f;
+            if (pDesc->Texture2D.MipSlice != 0)
+                return fail(E_NOTIMPL, std::string(call) + ": D3D11_UNORDERED_ACCESS_VIEW_DESC.Texture2D.MipSlice = " +
+                                           std::to_string(pDesc->Texture2D.MipSlice) + ": fxport writes level 0");
+        }
+    }
+    if (ppUAView) *ppUAView = new UnorderedAccessView(this, pResource, b, t, d);
+    return succeed();
 }
 
 }  // namespace fxport::d3d11

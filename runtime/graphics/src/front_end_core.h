@@ -37,6 +37,8 @@ public:
     void write(std::size_t offset, std::size_t bytes, const void* data);
     void read(std::size_t offset, std::size_t bytes, void* out) const;
     void copyFrom(const ByteBuffer& source);  // sizes must match
+    // Bytes [sourceOffset, sourceOffset + bytes) of `source` to `destinationOffset` (both ranges inside).
+    void copyFrom(const ByteBuffer& source, std::size_t sourceOffset, std::size_t destinationOffset, std::size_t bytes);
     std::uint32_t glName() const { return name_; }
 
 protected:
@@ -83,11 +85,19 @@ private:
     std::unique_ptr<ShaderProgram> program_;
 };
 
-// Binds the vertex and pixel shader the next draw runs (no geometry shader), as an effect pass's
-// Apply would, with no D3D9 pass emulation.
-void setShaders(GraphicsDevice& device, const ShaderCode& vertexShader, const ShaderCode& pixelShader);
-// Binds `buffer` (null: none) to uniform-block binding `glBinding` of `stage` (0 vertex, 1 pixel).
+// Binds the shaders of every draw stage (vertex, pixel, geometry, hull, domain; null: the stage
+// is off -- vertex and pixel are required), as an effect pass with those stages would, with no D3D9
+// pass emulation.
+void setShaderStages(GraphicsDevice& device, const ShaderCode* const (&stages)[5]);
+// The compute shader GraphicsDevice::DispatchCompute runs (null: none).
+void setComputeShader(GraphicsDevice& device, const ShaderCode* computeShader);
+// Binds `buffer` (null: none) to uniform-block binding `glBinding` of `stage` (0 vertex, 1 pixel,
+// 2 geometry, 3 hull, 4 domain, 5 compute).
 void setUniformBuffer(GraphicsDevice& device, int stage, int glBinding, const ByteBuffer* buffer);
+// Binds `buffer` (null: none) as the unordered-access view of register u`slot` (unorderedAccess)
+// or the shader-resource buffer of register t`slot` (StructuredBuffer<T>), as
+// GraphicsDevice::SetUnorderedAccess / SetShaderResource do for a StructuredBuffer.
+void setStorageBuffer(GraphicsDevice& device, bool unorderedAccess, int slot, const ByteBuffer* buffer);
 // Binds colour targets and a depth buffer of their size (null: none); the targets' own depth
 // buffers are not used. Resets the device's Viewport to the whole target (as SetRenderTargets).
 void setTargets(GraphicsDevice& device, const std::vector<RenderTargetBinding>& colour, DepthBuffer* depth);
@@ -106,11 +116,19 @@ struct DrawArguments {
     int firstInstance = 0;
     const ByteBuffer* indices = nullptr;  // indexed when set
     int indexSize = 2;                    // 2 or 4 bytes
+    int controlPoints = 0;                // > 0: patches of this many control points (type is ignored)
+};
+// One vertex buffer of a draw: stream i feeds the shader inputs its declaration's elements match
+// (by semantic); with instanceStepRate > 0 it advances once per that many instances (D3D11's
+// D3D11_INPUT_PER_INSTANCE_DATA), otherwise once per vertex.
+struct InstancedStream {
+    VertexStream vertices;
+    int instanceStepRate = 0;
 };
 // Draws with the device's current state (BlendState, DepthStencilState, RasterizerState, Viewport,
-// ScissorRectangle, Textures, SamplerStates) and the shaders and buffers set above. Throws
-// InvalidOperation / ArgumentError as the XNA draws do.
-void draw(GraphicsDevice& device, const VertexStream& vertices, const DrawArguments& arguments);
+// ScissorRectangle, Textures, SamplerStates), the shaders and buffers set above and the vertices of
+// `streams`. Throws InvalidOperation / ArgumentError as the XNA draws do.
+void drawStreams(GraphicsDevice& device, const std::vector<InstancedStream>& streams, const DrawArguments& arguments);
 
 // Fills level 0 of a colour texture with `color` (whatever is bound, no viewport or scissor).
 void clearTexture(Texture& texture, const Vector4& color);
@@ -121,5 +139,9 @@ void clearDepthBuffer(GraphicsDevice& device, DepthBuffer& buffer, bool depth, b
 void generateMips(Texture& texture);
 // Copies every level of `source` into `destination` (same size, format and level count).
 void copyTexture(Texture& destination, const Texture& source);
+// Copies `area` of level `sourceLevel` of `source` to (x, y) of level `destinationLevel` of
+// `destination` (same format; both rectangles inside their levels).
+void copyTextureRegion(Texture& destination, int destinationLevel, int x, int y, const Texture& source, int sourceLevel,
+                       const Rectangle& area);
 
 }  // namespace fxport::core

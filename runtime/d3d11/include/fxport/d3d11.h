@@ -13,3 +13,4 @@
 #include "fxport/d3d11/d3d11_types.h"
 #include "fxport/d3d11/d3dcompiler.h"
 #include "fxport/d3d11/d3dx11effect.h"
+#include "fxport/d3d11/dxgi.h"

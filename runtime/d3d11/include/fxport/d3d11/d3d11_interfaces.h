@@ -57,7 +57,10 @@ class ID3D11DepthStencilView : public ID3D11View {
 public:
     virtual void GetDesc(D3D11_DEPTH_STENCIL_VIEW_DESC* pDesc) = 0;
 };
-class ID3D11UnorderedAccessView : public ID3D11View {};
+class ID3D11UnorderedAccessView : public ID3D11View {
+public:
+    virtual void GetDesc(D3D11_UNORDERED_ACCESS_VIEW_DESC* pDesc) = 0;
+};
 
 class ID3D11InputLayout : public ID3D11DeviceChild {};
 class ID3D11VertexShader : public ID3D11DeviceChild {};
@@ -111,6 +114,20 @@ public:
     virtual void PSSetShaderResources(UINT StartSlot, UINT NumViews, ID3D11ShaderResourceView* const* ppShaderResourceViews) = 0;
     virtual void VSSetSamplers(UINT StartSlot, UINT NumSamplers, ID3D11SamplerState* const* ppSamplers) = 0;
     virtual void PSSetSamplers(UINT StartSlot, UINT NumSamplers, ID3D11SamplerState* const* ppSamplers) = 0;
+    // The geometry, hull, domain and compute stages have their own slots, as in D3D.
+    virtual void GSSetConstantBuffers(UINT StartSlot, UINT NumBuffers, ID3D11Buffer* const* ppConstantBuffers) = 0;
+    virtual void GSSetShaderResources(UINT StartSlot, UINT NumViews, ID3D11ShaderResourceView* const* ppShaderResourceViews) = 0;
+    virtual void GSSetSamplers(UINT StartSlot, UINT NumSamplers, ID3D11SamplerState* const* ppSamplers) = 0;
+    virtual void HSSetConstantBuffers(UINT StartSlot, UINT NumBuffers, ID3D11Buffer* const* ppConstantBuffers) = 0;
+    virtual void HSSetShaderResources(UINT StartSlot, UINT NumViews, ID3D11ShaderResourceView* const* ppShaderResourceViews) = 0;
+    virtual void HSSetSamplers(UINT StartSlot, UINT NumSamplers, ID3D11SamplerState* const* ppSamplers) = 0;
+    virtual void DSSetConstantBuffers(UINT StartSlot, UINT NumBuffers, ID3D11Buffer* const* ppConstantBuffers) = 0;
+    virtual void DSSetShaderResources(UINT StartSlot, UINT NumViews, ID3D11ShaderResourceView* const* ppShaderResourceViews) = 0;
+    virtual void DSSetSamplers(UINT StartSlot, UINT NumSamplers, ID3D11SamplerState* const* ppSamplers) = 0;
+    virtual void CSSetConstantBuffers(UINT StartSlot, UINT NumBuffers, ID3D11Buffer* const* ppConstantBuffers) = 0;
+    virtual void CSSetShaderResources(UINT StartSlot, UINT NumViews, ID3D11ShaderResourceView* const* ppShaderResourceViews) = 0;
+    virtual void CSSetSamplers(UINT StartSlot, UINT NumSamplers, ID3D11SamplerState* const* ppSamplers) = 0;
+    // pUAVInitialCounts (append/consume counters) is ignored: fxport has no UAV counters.
     virtual void CSSetUnorderedAccessViews(UINT StartSlot, UINT NumUAVs, ID3D11UnorderedAccessView* const* ppUnorderedAccessViews,
                                            const UINT* pUAVInitialCounts) = 0;
     // --- rasterizer and output merger
@@ -136,6 +153,10 @@ public:
     virtual void UpdateSubresource(ID3D11Resource* pDstResource, UINT DstSubresource, const D3D11_BOX* pDstBox,
                                    const void* pSrcData, UINT SrcRowPitch, UINT SrcDepthPitch) = 0;
     virtual void CopyResource(ID3D11Resource* pDstResource, ID3D11Resource* pSrcResource) = 0;
+    // A region of one subresource (a byte range of a buffer: pSrcBox left..right; a rectangle of a
+    // texture level) into another at (DstX, DstY, DstZ); pSrcBox null: the whole subresource.
+    virtual void CopySubresourceRegion(ID3D11Resource* pDstResource, UINT DstSubresource, UINT DstX, UINT DstY, UINT DstZ,
+                                       ID3D11Resource* pSrcResource, UINT SrcSubresource, const D3D11_BOX* pSrcBox) = 0;
     virtual void ClearRenderTargetView(ID3D11RenderTargetView* pRenderTargetView, const FLOAT ColorRGBA[4]) = 0;
     virtual void ClearDepthStencilView(ID3D11DepthStencilView* pDepthStencilView, UINT ClearFlags, FLOAT Depth,
                                        UINT8 Stencil) = 0;
@@ -157,7 +178,7 @@ public:
                                            ID3D11RenderTargetView** ppRTView) = 0;
     virtual HRESULT CreateDepthStencilView(ID3D11Resource* pResource, const D3D11_DEPTH_STENCIL_VIEW_DESC* pDesc,
                                            ID3D11DepthStencilView** ppDepthStencilView) = 0;
-    virtual HRESULT CreateUnorderedAccessView(ID3D11Resource* pResource, const void* pDesc,
+    virtual HRESULT CreateUnorderedAccessView(ID3D11Resource* pResource, const D3D11_UNORDERED_ACCESS_VIEW_DESC* pDesc,
                                               ID3D11UnorderedAccessView** ppUAView) = 0;
     virtual HRESULT CreateInputLayout(const D3D11_INPUT_ELEMENT_DESC* pInputElementDescs, UINT NumElements,
                                       const void* pShaderBytecodeWithInputSignature, SIZE_T BytecodeLength,

@@ -59,9 +59,12 @@ enum D3D_SHADER_VARIABLE_CLASS : UINT {
     D3D_SVC_STRUCT = 5,
 };
 enum D3D_SHADER_VARIABLE_TYPE : UINT { D3D_SVT_VOID = 0, D3D_SVT_BOOL = 1, D3D_SVT_INT = 2, D3D_SVT_FLOAT = 3, D3D_SVT_UINT = 19 };
-enum D3D_SHADER_INPUT_TYPE : UINT { D3D_SIT_CBUFFER = 0, D3D_SIT_TBUFFER = 1, D3D_SIT_TEXTURE = 2, D3D_SIT_SAMPLER = 3 };
-enum D3D_SRV_DIMENSION : UINT { D3D_SRV_DIMENSION_UNKNOWN = 0, D3D_SRV_DIMENSION_TEXTURE1D = 2, D3D_SRV_DIMENSION_TEXTURE2D = 4,
-                                D3D_SRV_DIMENSION_TEXTURE3D = 8, D3D_SRV_DIMENSION_TEXTURECUBE = 9 };
+enum D3D_SHADER_INPUT_TYPE : UINT {
+    D3D_SIT_CBUFFER = 0, D3D_SIT_TBUFFER = 1, D3D_SIT_TEXTURE = 2, D3D_SIT_SAMPLER = 3, D3D_SIT_UAV_RWTYPED = 4,
+    D3D_SIT_STRUCTURED = 5, D3D_SIT_UAV_RWSTRUCTURED = 6, D3D_SIT_BYTEADDRESS = 7, D3D_SIT_UAV_RWBYTEADDRESS = 8,
+};
+enum D3D_SRV_DIMENSION : UINT { D3D_SRV_DIMENSION_UNKNOWN = 0, D3D_SRV_DIMENSION_BUFFER = 1, D3D_SRV_DIMENSION_TEXTURE1D = 2,
+                                D3D_SRV_DIMENSION_TEXTURE2D = 4, D3D_SRV_DIMENSION_TEXTURE3D = 8, D3D_SRV_DIMENSION_TEXTURECUBE = 9 };
 enum D3D_CBUFFER_TYPE : UINT { D3D_CT_CBUFFER = 0, D3D_CT_TBUFFER = 1 };
 enum D3D_REGISTER_COMPONENT_TYPE : UINT {
     D3D_REGISTER_COMPONENT_UNKNOWN = 0, D3D_REGISTER_COMPONENT_UINT32 = 1, D3D_REGISTER_COMPONENT_SINT32 = 2,
@@ -115,7 +118,7 @@ struct D3D11_SHADER_INPUT_BIND_DESC {
     UINT uFlags = 0;
     UINT ReturnType = 0;
     D3D_SRV_DIMENSION Dimension = D3D_SRV_DIMENSION_UNKNOWN;
-    UINT NumSamples = 0;
+    UINT NumSamples = 0;  // structured buffers: the element's size in bytes (fxport's GL layout)
 };
 struct D3D11_SIGNATURE_PARAMETER_DESC {
     LPCSTR SemanticName = nullptr;
@@ -164,6 +167,8 @@ public:
     virtual HRESULT GetResourceBindingDesc(UINT ResourceIndex, D3D11_SHADER_INPUT_BIND_DESC* pDesc) = 0;
     virtual HRESULT GetResourceBindingDescByName(LPCSTR Name, D3D11_SHADER_INPUT_BIND_DESC* pDesc) = 0;
     virtual HRESULT GetInputParameterDesc(UINT ParameterIndex, D3D11_SIGNATURE_PARAMETER_DESC* pDesc) = 0;
+    // Compute shaders: [numthreads(x, y, z)] (each pointer may be null); the product, 0 for other stages.
+    virtual UINT GetThreadGroupSize(UINT* pSizeX, UINT* pSizeY, UINT* pSizeZ) = 0;
 };
 
 // D3D's D3DReflect(data, size, IID_ID3D11ShaderReflection, (void**)&r), typed.
