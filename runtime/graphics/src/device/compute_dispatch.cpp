@@ -4,7 +4,7 @@
 // (storage_bindings.cpp); afterwards the writes are marked for a barrier before the next use.
 #include <string>
 
-#include "device_impl.h"
+#include "device/device_impl.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/xlate/compiled_effect.h"
 

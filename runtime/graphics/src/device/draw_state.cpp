@@ -5,8 +5,8 @@
 #include <iostream>
 #include <optional>
 
-#include "device_impl.h"
-#include "effect_impl.h"
+#include "device/device_impl.h"
+#include "effect/effect_impl.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/texture.h"
 #include "fxport/xlate/alpha_test.h"

@@ -3,15 +3,15 @@
 // the vertex-array cache, target binding, lazy depth storage -- and adds only the GL calls XNA's
 // classes do not make (byte buffers by slot, instanced draws, clearing a texture or a depth buffer
 // that is not bound).
-#include "front_end_core.h"
+#include "device/front_end_core.h"
 
 #include <algorithm>
 #include <string>
 
-#include "device_impl.h"
+#include "device/device_impl.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/xlate/compiled_effect.h"
-#include "gl_formats.h"
+#include "gl/gl_formats.h"
 
 namespace fxport::core {
 

@@ -4,17 +4,17 @@
 #include <cstring>
 #include <iostream>
 
-#include "compute_pass.h"
-#include "draw_call.h"
-#include "device_impl.h"
-#include "effect_impl.h"
+#include "gl/passes/compute_pass.h"
+#include "gl/draw_call.h"
+#include "device/device_impl.h"
+#include "effect/effect_impl.h"
 #include "fxport/graphics/effect.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/gpu_limits.h"
 #include "fxport/platform/graphics_context.h"
 #include "fxport/xlate/compiled_effect.h"
-#include "gl_formats.h"
-#include "image_io.h"
+#include "gl/gl_formats.h"
+#include "device/image_io.h"
 
 namespace fxport {
 

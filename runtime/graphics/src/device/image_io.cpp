@@ -1,4 +1,4 @@
-#include "image_io.h"
+#include "device/image_io.h"
 
 #include <climits>
 #include <cstring>

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
-#include "device_impl.h"
+#include "device/device_impl.h"
 #include "fxport/graphics/errors.h"
-#include "gl_formats.h"
+#include "gl/gl_formats.h"
 
 namespace fxport {
 

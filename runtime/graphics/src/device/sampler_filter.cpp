@@ -1,5 +1,5 @@
 // TextureFilter <-> (min, mag, mip) linear/point parts.
-#include "sampler_filter.h"
+#include "device/sampler_filter.h"
 
 namespace fxport {
 

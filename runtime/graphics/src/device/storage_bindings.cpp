@@ -6,12 +6,12 @@
 // between a shader's writes and whatever reads them next.
 #include <string>
 
-#include "device_impl.h"
+#include "device/device_impl.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/structured_buffer.h"
 #include "fxport/graphics/texture.h"
 #include "fxport/xlate/compiled_effect.h"
-#include "gl_formats.h"
+#include "gl/gl_formats.h"
 
 namespace fxport {
 

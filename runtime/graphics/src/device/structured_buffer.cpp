@@ -1,7 +1,7 @@
 // StructuredBuffer: a GL buffer object that shaders see as an SSBO (see structured_buffer.h).
 #include "fxport/graphics/structured_buffer.h"
 
-#include "device_impl.h"
+#include "device/device_impl.h"
 #include "fxport/graphics/errors.h"
 
 namespace fxport {

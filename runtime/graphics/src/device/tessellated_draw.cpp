@@ -4,8 +4,8 @@
 // flush() puts in the pipeline like the other stages.
 #include <string>
 
-#include "device_impl.h"
-#include "draw_call.h"
+#include "device/device_impl.h"
+#include "gl/draw_call.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/vertex_buffer.h"
 

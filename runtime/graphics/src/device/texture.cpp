@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "device_impl.h"
-#include "effect_impl.h"
+#include "device/device_impl.h"
+#include "effect/effect_impl.h"
 #include "fxport/graphics/errors.h"
-#include "gl_formats.h"
-#include "image_io.h"
+#include "gl/gl_formats.h"
+#include "device/image_io.h"
 
 namespace fxport {
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "device_impl.h"
+#include "device/device_impl.h"
 #include "fxport/graphics/errors.h"
 
 namespace fxport {

@@ -4,7 +4,7 @@
 
 #include "fxport/graphics/graphics_device.h"
 #include "fxport/graphics/render_target.h"
-#include "gl_formats.h"
+#include "gl/gl_formats.h"
 
 namespace fxport {
 

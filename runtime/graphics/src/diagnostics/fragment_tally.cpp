@@ -1,7 +1,7 @@
 // FragmentRuns: GL_SAMPLES_PASSED per run of draws with the same texture fetches per fragment.
-#include "fragment_tally.h"
+#include "diagnostics/fragment_tally.h"
 
-#include "device_impl.h"
+#include "device/device_impl.h"
 #include "fxport/xlate/compiled_effect.h"
 
 namespace fxport {

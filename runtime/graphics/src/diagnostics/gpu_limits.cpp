@@ -11,9 +11,9 @@
 #include <functional>
 #include <sstream>
 
-#include "device_impl.h"
+#include "device/device_impl.h"
 #include "fxport/graphics/errors.h"
-#include "gl_formats.h"
+#include "gl/gl_formats.h"
 
 namespace fxport {
 

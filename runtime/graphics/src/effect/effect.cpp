@@ -10,8 +10,8 @@
 #include <iostream>
 #include <sstream>
 
-#include "compute_pass.h"
-#include "effect_impl.h"
+#include "gl/passes/compute_pass.h"
+#include "effect/effect_impl.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/graphics_device.h"
 #include "fxport/platform/file_reading.h"

@@ -21,11 +21,11 @@
 #include <unordered_map>
 #include <vector>
 
-#include "constant_block.h"
-#include "device_impl.h"
+#include "effect/constant_block.h"
+#include "device/device_impl.h"
 #include "fxport/graphics/effect.h"
 #include "fxport/xlate/compiled_effect.h"
-#include "pass_states.h"
+#include "effect/pass_states.h"
 
 namespace fxport {
 

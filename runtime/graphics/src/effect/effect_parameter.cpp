@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <span>
 
-#include "effect_impl.h"
+#include "effect/effect_impl.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/texture.h"
 

@@ -1,12 +1,12 @@
 // Pass and sampler states decoded once (at technique compile) and applied by EffectPass::Apply().
-#include "pass_states.h"
+#include "effect/pass_states.h"
 
 #include <variant>
 
-#include "device_impl.h"
-#include "effect_impl.h"
+#include "device/device_impl.h"
+#include "effect/effect_impl.h"
 #include "fxport/graphics/graphics_device.h"
-#include "sampler_filter.h"
+#include "device/sampler_filter.h"
 
 namespace fxport {
 

@@ -1,4 +1,4 @@
-#include "gl_formats.h"
+#include "gl/gl_formats.h"
 
 #include <array>
 

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstring>
 
-#include "device_impl.h"
-#include "sampler_filter.h"
+#include "device/device_impl.h"
+#include "device/sampler_filter.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/texture.h"
 

@@ -1,6 +1,6 @@
 // glTF 2.0 -> GltfModel: parsing with tinygltf (Debian's shared libtinygltf), then every accessor,
 // index and reference checked before use, so a broken file ends in an ArgumentError, never a crash.
-#include "gltf_loader.h"
+#include "helpers/gltf_loader.h"
 
 #include <tiny_gltf.h>
 
@@ -16,7 +16,7 @@
 
 #include "fxport/graphics/errors.h"
 #include "fxport/platform/file_reading.h"
-#include "tangent_generation.h"
+#include "helpers/tangent_generation.h"
 
 namespace fxport::detail {
 

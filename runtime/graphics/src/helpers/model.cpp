@@ -9,7 +9,7 @@
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/graphics_device.h"
 #include "fxport/graphics/effect_interfaces.h"
-#include "gltf_loader.h"
+#include "helpers/gltf_loader.h"
 
 namespace fxport {
 

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <string>
 
-#include "compute_pass.h"
-#include "device_impl.h"
+#include "gl/passes/compute_pass.h"
+#include "device/device_impl.h"
 #include "fxport/graphics/effect.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/graphics_device.h"

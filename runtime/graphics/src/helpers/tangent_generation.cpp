@@ -1,4 +1,4 @@
-#include "tangent_generation.h"
+#include "helpers/tangent_generation.h"
 
 #include <cmath>
 #include <cstddef>

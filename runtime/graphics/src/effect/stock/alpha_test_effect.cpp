@@ -5,7 +5,7 @@
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/texture.h"
 #include "fxport_generated/alpha_test_effect_source.h"  // runtime/graphics/shaders/AlphaTestEffect.fx
-#include "stock_effect_support.h"
+#include "effect/stock/stock_effect_support.h"
 
 namespace fxport {
 

@@ -3,7 +3,7 @@
 
 #include "fxport/graphics/texture.h"
 #include "fxport_generated/basic_effect_source.h"  // runtime/graphics/shaders/BasicEffect.fx
-#include "stock_effect_support.h"
+#include "effect/stock/stock_effect_support.h"
 
 namespace fxport {
 

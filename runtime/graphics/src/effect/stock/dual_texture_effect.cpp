@@ -3,7 +3,7 @@
 
 #include "fxport/graphics/texture.h"
 #include "fxport_generated/dual_texture_effect_source.h"  // runtime/graphics/shaders/DualTextureEffect.fx
-#include "stock_effect_support.h"
+#include "effect/stock/stock_effect_support.h"
 
 namespace fxport {
 

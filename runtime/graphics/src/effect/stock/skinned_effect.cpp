@@ -4,7 +4,7 @@
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/texture.h"
 #include "fxport_generated/skinned_effect_source.h"  // runtime/graphics/shaders/SkinnedEffect.fx
-#include "stock_effect_support.h"
+#include "effect/stock/stock_effect_support.h"
 
 namespace fxport {
 

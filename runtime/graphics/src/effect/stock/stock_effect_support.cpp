@@ -1,5 +1,5 @@
 // The stock effects' shared C++ side (see stock_effect_support.h).
-#include "stock_effect_support.h"
+#include "effect/stock/stock_effect_support.h"
 
 #include <string>
 

@@ -4,7 +4,7 @@
 // shader (and target formats, blend, masks), replay entries per draw key in a byte-bounded LRU;
 // like the device's sampler objects they are internal caches, released with the device and not
 // counted in liveGpuObjects() (ComputePassStatistics reports the entries and their bytes).
-#include "compute_pass.h"
+#include "gl/passes/compute_pass.h"
 
 #include <algorithm>
 #include <bit>
@@ -12,12 +12,12 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "device_impl.h"
+#include "device/device_impl.h"
 #include "fxport/graphics/render_target.h"
 #include "fxport/graphics/texture.h"
 #include "fxport/xlate/compiled_effect.h"
-#include "gl_formats.h"
-#include "sampler_filter.h"
+#include "gl/gl_formats.h"
+#include "device/sampler_filter.h"
 
 namespace fxport {
 

@@ -23,8 +23,8 @@
 #include <string>
 #include <vector>
 
-#include "compute_pass_source.h"
-#include "draw_call.h"
+#include "gl/passes/compute_pass_source.h"
+#include "gl/draw_call.h"
 #include "fxport/graphics/graphics_device.h"
 #include "fxport/platform/gl.h"
 

@@ -2,7 +2,7 @@
 // line by line (SPIRV-Cross writes one per line), identifiers are replaced as whole words, and the
 // generated main reads the inputs the rasteriser interpolated from the replay store. The fill and
 // compare steps that keep the store right are generated here too.
-#include "compute_pass_source.h"
+#include "gl/passes/compute_pass_source.h"
 
 #include <regex>
 #include <sstream>

@@ -9,9 +9,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "device_impl.h"
+#include "device/device_impl.h"
 #include "fxport/graphics/render_target.h"
-#include "gl_formats.h"
+#include "gl/gl_formats.h"
 
 namespace fxport {
 

@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "device_impl.h"
+#include "device/device_impl.h"
 #include "fxport/xlate/compiled_effect.h"
 #include "fxport/graphics/render_target.h"
 

@@ -10,12 +10,12 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "compute_pass.h"
-#include "device_impl.h"
+#include "gl/passes/compute_pass.h"
+#include "device/device_impl.h"
 #include "fxport/graphics/render_target.h"
 #include "fxport/graphics/texture.h"
-#include "gl_formats.h"
-#include "sampler_filter.h"
+#include "gl/gl_formats.h"
+#include "device/sampler_filter.h"
 
 namespace fxport {
 
