@@ -1,4 +1,4 @@
-#include "fxport/graphics/input.h"
+#include "fxport/framework/input.h"
 
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/graphics_device.h"

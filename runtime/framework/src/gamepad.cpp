@@ -7,7 +7,7 @@
 
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/graphics_device.h"
-#include "fxport/graphics/input.h"
+#include "fxport/framework/input.h"
 #include "fxport/platform/graphics_context.h"
 
 namespace fxport {
