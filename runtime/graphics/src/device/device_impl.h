@@ -1,5 +1,5 @@
-// INTERNAL: the device's private state: what GL currently has (the shadow), the caches of GL
-// objects made from immutable descriptions, and the registry of live resources. Effects, textures
+// INTERNAL: the device's private state: the backend and the shadow of what it has, the caches of
+// GL objects made from immutable descriptions, and the registry of live resources. Effects, textures
 // and buffers reach it through GraphicsDevice::impl().
 #pragma once
 
@@ -13,6 +13,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "device/backend.h"
+#include "device/state_shadow.h"
 #include "fxport/graphics/graphics_device.h"
 #include "fxport/platform/gl.h"
 #include "fxport/xlate/texture_fetches.h"
@@ -79,6 +81,9 @@ struct GraphicsDevice::Impl {
 
     GraphicsDevice& device;
     GpuObjectCounts live;
+    // The graphics API behind the seam (device/backend.h), and the fixed-function state it has.
+    std::unique_ptr<Backend> backend = createGlBackend();
+    StateShadow shadow{*backend};
 
     // --- resource registry (so destroying a resource unbinds it everywhere)
     std::vector<GraphicsResource*> resources;
@@ -113,7 +118,6 @@ struct GraphicsDevice::Impl {
     std::array<const ShaderProgram*, kStageCount> shaders{};
     bool passApplied = false;
     PassEmulation emulation;         // wanted (set by Apply)
-    bool appliedSrgbWrite = false;   // what GL has
     // SRGBWriteEnable drawing into an 8-bit target that is not sRGB-encoded: GL writes unconverted
     // where D3D9 encoded. Reported once per effect, through the effect warning handler.
     void reportUnencodedSrgbWrite();
@@ -183,24 +187,14 @@ struct GraphicsDevice::Impl {
     GLsizeiptr userVerticesSize = 0, userIndicesSize = 0;
     void streamUserData(GLuint& buffer, GLsizeiptr& capacity, const void* data, GLsizeiptr bytes);
 
-    // --- fixed-function state shadow (what GL has)
-    bool forceAll = true;  // the first flush sets everything
-    fxport::BlendState appliedBlend;
-    fxport::DepthStencilState appliedDepthStencil;
-    fxport::RasterizerState appliedRasterizer;
-    fxport::Viewport appliedViewport;
-    Rectangle appliedScissor;
+    // --- texture and sampler bindings (the fixed-function state is `shadow`'s)
     std::array<GLuint, kMaxTextureSlots> boundTextures{};
     std::array<GLuint, kMaxTextureSlots> boundSamplers{};
     std::array<SamplerState, kMaxTextureSlots> boundSamplerStates{};  // what boundSamplers were made from
     std::map<std::array<std::uint8_t, sizeof(SamplerState)>, GLuint> samplerObjects;  // SamplerState bytes -> GL sampler
     GLuint samplerFor(const SamplerState& state);
 
-    void applyBlend(const fxport::BlendState& wanted);
-    void applyDepthStencil(const fxport::DepthStencilState& wanted);
-    void applyRasterizer(const fxport::RasterizerState& wanted);
-    void applyViewport(const fxport::Viewport& wanted);
-    void applyScissor(const Rectangle& wanted);
+    void applyViewport(const fxport::Viewport& wanted);  // and the D3D9 pixel offset that depends on it
     void applyTextures();
     void applyTexturesOf(const ShaderProgram* const* programs, std::size_t count);  // for compute dispatches too
     void applyShaders();

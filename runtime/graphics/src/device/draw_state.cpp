@@ -2,10 +2,13 @@
 // textures, samplers, vertex layout and fixed-function state up to date, touching only what
 // changed since the last draw.
 #include <algorithm>
+#include <array>
+#include <cstring>
 #include <iostream>
 #include <optional>
 
 #include "device/device_impl.h"
+#include "device/vertex_input.h"
 #include "effect/effect_impl.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/texture.h"
@@ -52,22 +55,6 @@ fxport::BlendState blendForPixelShader(const fxport::BlendState& wanted, int out
     return effective;
 }
 
-// The element feeding a vertex-shader input: matched by semantic, as D3D does. An `SV_Position`
-// input of an SM4+ shader takes the Position element (MonoGame's rule for XNA's usages; fxc already
-// reads it as POSITION at SM2/3). An input the shader reads and the declaration lacks is an error,
-// as in XNA ("...Normal0 is missing"), never a silent (0, 0, 0, 1).
-const VertexElement& elementFor(const VertexDeclaration& declaration, const xlate::VertexInput& input, const std::string& shaderName) {
-    std::string semantic = input.semantic;
-    if (semantic.rfind("SV_POSITION", 0) == 0) semantic = semantic.substr(3);
-    const VertexElement* element = nullptr;
-    for (const VertexElement& e : declaration.GetVertexElements())
-        if (vertexElementSemantic(e) == semantic) element = &e;
-    if (!element)
-        throw InvalidOperation("the current vertex declaration does not include all the elements required by the current vertex shader " +
-                               shaderName + ": " + input.semantic + " is missing (a VertexElement of that usage and usage index)");
-    return *element;
-}
-
 std::string textureName(const Texture* t) { return t->Name.empty() ? std::string("(unnamed)") : "'" + t->Name + "'"; }
 
 }  // namespace
@@ -98,26 +85,20 @@ void GraphicsDevice::Impl::flush(const char* what) {
         ++clearStats.blendsAsWrites;
     }
     resolvePendingClearBeforeDraw(testOff ? fxport::DepthStencilState::None : wanted);
-    applyBlend(blendForPixelShader(drawBlend(), shaders[1]->shader->outputTargets));
+    shadow.setBlend(blendForPixelShader(drawBlend(), shaders[1]->shader->outputTargets));
     if (trackingBoundTargets && drawBlend().blendingEnabled()) blendedSinceMark = true;
     noteDrawnTargets();
-    applyDepthStencil(testOff ? fxport::DepthStencilState::None : wanted);
-    applyRasterizer(device.RasterizerState);
+    shadow.setDepthStencil(testOff ? fxport::DepthStencilState::None : wanted);
+    shadow.setRasterizer(device.RasterizerState);
     applyViewport(device.Viewport);
-    applyScissor(device.ScissorRectangle);
+    shadow.setScissor(device.ScissorRectangle);
     applyShaders();
     applyTextures();
     if (applyStorage(shaders.data(), shaders.size(), what)) storageDirty = true;  // the draw writes: barrier before what follows
-    if (forceAll || emulation.srgbWrite != appliedSrgbWrite) {
-        // Converts only on sRGB-encoded attachments (SurfaceFormat::ColorSRgb); others are
-        // written unconverted (docs/DESIGN.md, "Pass states GL core lacks").
-        if (emulation.srgbWrite) glEnable(GL_FRAMEBUFFER_SRGB);
-        else glDisable(GL_FRAMEBUFFER_SRGB);
-        appliedSrgbWrite = emulation.srgbWrite;
-    }
+    shadow.setSrgbWrite(emulation.srgbWrite);
     if (emulation.srgbWrite) reportUnencodedSrgbWrite();
     tallyDraw();
-    forceAll = false;
+    shadow.settle();
 }
 
 void GraphicsDevice::Impl::reportUnencodedSrgbWrite() {
@@ -215,22 +196,54 @@ void GraphicsDevice::Impl::applyTexturesOf(const ShaderProgram* const* programs,
                                            " but Textures[" + std::to_string(unit) + "] holds a " +
                                            (cube ? "cube" : "2D") + " texture " + textureName(texture));
             }
-            if (forceAll || boundTextures[std::size_t(unit)] != name) {
-                glBindTextureUnit(GLuint(unit), name);
+            if (shadow.unknown() || boundTextures[std::size_t(unit)] != name) {
+                backend->bindTexture(unit, name);
                 boundTextures[std::size_t(unit)] = name;
             }
             // The sampler-object lookup (a map keyed by the state's bytes) runs only when the
             // slot's state differs from what is bound, not on every draw.
             const SamplerState& wanted = device.SamplerStates[unit];
             std::size_t u = std::size_t(unit);
-            if (forceAll || boundSamplers[u] == 0 || !(boundSamplerStates[u] == wanted)) {
+            if (shadow.unknown() || boundSamplers[u] == 0 || !(boundSamplerStates[u] == wanted)) {
                 GLuint object = samplerFor(wanted);
-                if (forceAll || boundSamplers[u] != object) glBindSampler(GLuint(unit), object);
+                if (shadow.unknown() || boundSamplers[u] != object) backend->bindSampler(unit, object);
                 boundSamplers[u] = object;
                 boundSamplerStates[u] = wanted;
             }
         }
     }
+}
+
+void GraphicsDevice::Impl::applyViewport(const fxport::Viewport& w) {
+    if (!shadow.setViewport(w)) return;
+    // D3D9 pixel centres: SM1-3 vertex shaders add fxport_PixelOffset.xy * w to the position,
+    // moving the geometry right and down by (half a pixel - 1/256 pixel). Half a pixel puts D3D9's
+    // integer pixel centres on GL's; the 1/256 (one step of the rasteriser's sub-pixel grid) keeps
+    // an edge that falls exactly on a centre just above/left of it, so coverage follows D3D's
+    // top-left rule on every driver instead of the GL implementation's own tie-break (llvmpipe
+    // drops the top row of a full-screen quad under GL_UPPER_LEFT without it). The price is an
+    // attribute bias of 1/256 pixel (docs/DESIGN.md).
+    constexpr float kShift = 2.0f * (0.5f - 1.0f / 256.0f);  // in NDC units per pixel
+    std::array<float, 4> offset = {w.Width > 0 ? kShift / float(w.Width) : 0.0f,
+                                   w.Height > 0 ? -kShift / float(w.Height) : 0.0f, 0.0f, 0.0f};
+    if (offset != pixelOffset) {
+        pixelOffset = offset;
+        backend->writeBuffer(internalBuffer, 0, sizeof(float) * 4, pixelOffset.data());
+    }
+}
+
+GLuint GraphicsDevice::Impl::samplerFor(const SamplerState& s) {
+    std::array<std::uint8_t, sizeof(SamplerState)> key{};
+    // SamplerState is a plain aggregate of enums, ints, floats and a Vector4: compare by fields
+    // through a canonical byte image (padding zeroed by value-initialising a copy).
+    SamplerState canonical{};
+    canonical = s;
+    std::memcpy(key.data(), &canonical, sizeof canonical);
+    auto it = samplerObjects.find(key);
+    if (it != samplerObjects.end()) return it->second;
+    const BackendObject sampler = backend->createSampler(s);
+    samplerObjects.emplace(std::move(key), sampler);
+    return sampler;
 }
 
 GraphicsDevice::Impl::VertexArray& GraphicsDevice::Impl::vertexArrayFor(const VertexDeclaration& declaration) {
@@ -251,9 +264,8 @@ GraphicsDevice::Impl::VertexArray& GraphicsDevice::Impl::vertexArrayFor(const Ve
     key += "|" + std::to_string(vs);
     auto it = vertexArrays.find(key);
     if (it == vertexArrays.end()) {
-        std::vector<const VertexElement*> elements;
-        for (const xlate::VertexInput& input : shaders[0]->shader->inputs)
-            elements.push_back(&elementFor(declaration, input, "'" + shaders[0]->shader->entryPoint + "'"));
+        const std::vector<const VertexElement*> elements =
+            vertexElementsFor(declaration, shaders[0]->shader->inputs, "'" + shaders[0]->shader->entryPoint + "'");
         VertexArray va;
         glCreateVertexArrays(1, &va.vao);
         ++live.vertexArrays;

@@ -242,7 +242,7 @@ void clearDepthBuffer(GraphicsDevice& device, DepthBuffer& buffer, bool depth, b
     else if (depth) glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &clamped);
     else glClearNamedFramebufferiv(fbo, GL_STENCIL, 0, &stencilValue);
     glDeleteFramebuffers(1, &fbo);
-    d.forceAll = true;  // the next draw sets every state again (masks, scissor)
+    d.shadow.invalidate();  // the next draw sets every state again (masks, scissor)
 }
 
 void generateMips(Texture& texture) {

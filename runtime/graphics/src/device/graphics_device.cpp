@@ -816,7 +816,7 @@ void GraphicsDevice::Impl::releaseAll() {
     vertexArrays.clear();
     for (auto& [key, fbo] : framebuffers) glDeleteFramebuffers(1, &fbo), --live.framebuffers;
     framebuffers.clear();
-    for (auto& [key, sampler] : samplerObjects) glDeleteSamplers(1, &sampler);
+    for (auto& [key, sampler] : samplerObjects) backend->deleteSampler(sampler);
     samplerObjects.clear();
     deleteBuffer(internalBuffer);
     deleteBuffer(userVertices);

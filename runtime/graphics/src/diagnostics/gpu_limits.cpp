@@ -235,7 +235,7 @@ GpuLimits GpuLimits::Measure(GraphicsDevice& device, int size, int repeats) {
     glDeleteVertexArrays(1, &vertexArray);
     glBindProgramPipeline(impl.boundPipeline);
     impl.boundFramebuffer = 0;  // the next draw or clear binds its targets again
-    impl.forceAll = true;       // and sets every fixed-function state
+    impl.shadow.invalidate();   // and sets every fixed-function state
     return limits;
 }
 

@@ -116,7 +116,7 @@ struct Effect::Impl {
     double evaluateSelector(const std::vector<xlate::SelectorOp>& ops) const;
     // Uploads the dirty bytes of each block that `reads` covers; what it does not cover stays dirty
     // (as one range: the hull of what is left, so some bytes may be sent twice, never too few).
-    void uploadRead(const std::vector<BlockReads>& reads);
+    void uploadRead(const std::vector<BlockReads>& reads, Backend& backend);
     // What a program of this effect reads; nullptr for another effect's program.
     const std::vector<BlockReads>* readsOf(const ShaderProgram* program) const {
         for (const auto& code : codes)

@@ -43,7 +43,7 @@ double Effect::Impl::evaluateSelector(const std::vector<xlate::SelectorOp>& ops)
     return stack.empty() ? 0 : stack.back();
 }
 
-void Effect::Impl::uploadRead(const std::vector<BlockReads>& reads) {
+void Effect::Impl::uploadRead(const std::vector<BlockReads>& reads, Backend& backend) {
     for (const BlockReads& r : reads) {
         Block& block = blocks[std::size_t(r.block)];
         ConstantBlock& b = block.constants;
@@ -54,7 +54,7 @@ void Effect::Impl::uploadRead(const std::vector<BlockReads>& reads) {
             int lo = std::max(begin, cursor), hi = std::min(end, b.dirtyEnd);
             if (lo >= hi) continue;
             if (lo > cursor) leftBegin = std::min(leftBegin, cursor), leftEnd = lo;
-            glNamedBufferSubData(block.buffer, lo, hi - lo, b.bytes.data() + lo);
+            backend.writeBuffer(block.buffer, std::size_t(lo), std::size_t(hi - lo), b.bytes.data() + lo);
             constantBytesUploaded += std::uint64_t(hi - lo);
             ++constantUploads;
             cursor = hi;
@@ -110,7 +110,7 @@ void EffectPass::applyThis() {
         // Only the blocks this shader reads, and of those only the bytes it reads; changes to
         // other constants stay dirty until a shader that reads them is applied.
         const std::vector<Effect::Impl::BlockReads>& reads = code.code->reads[shader];
-        e.uploadRead(reads);
+        e.uploadRead(reads, *d.backend);
         for (const Effect::Impl::BlockReads& r : reads) {
             const Effect::Impl::Block& block = e.blocks[std::size_t(r.block)];
             if (block.buffer) d.wantedUniformBuffers[std::size_t(uniformBindingFor(stage, block.binding))] = block.buffer;
@@ -128,7 +128,7 @@ void EffectPass::applyThis() {
     // constants too: send what changed of those.
     for (int stage = 0; stage < kStageCount; ++stage)  // (a compute shader is another pass's own)
         if (choices[stage]->shaders.empty() && d.shaders[std::size_t(stage)])
-            if (const auto* reads = e.readsOf(d.shaders[std::size_t(stage)])) e.uploadRead(*reads);
+            if (const auto* reads = e.readsOf(d.shaders[std::size_t(stage)])) e.uploadRead(*reads, *d.backend);
     applyPassStates(code.code->passStates[std::size_t(code.index)][std::size_t(pass_)], e, device);
     d.passApplied = true;
 }

@@ -52,17 +52,7 @@ void GraphicsDevice::Impl::executeClear(const Rectangle& rect, unsigned options,
         glClearNamedFramebufferiv(boundFramebuffer, GL_STENCIL, 0, &stencil);
     }
     // Put back what the shadow says GL has.
-    bool force = forceAll;
-    forceAll = true;
-    fxport::BlendState blend = appliedBlend;
-    fxport::DepthStencilState depthStencil = appliedDepthStencil;
-    fxport::RasterizerState rasterizer = appliedRasterizer;
-    Rectangle scissor = appliedScissor;
-    applyBlend(blend);
-    applyDepthStencil(depthStencil);
-    applyRasterizer(rasterizer);
-    applyScissor(scissor);
-    forceAll = force;
+    shadow.reapply();
 }
 
 void GraphicsDevice::Impl::recordClear(unsigned options, const Vector4& color, float depth, int stencil) {

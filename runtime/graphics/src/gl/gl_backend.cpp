@@ -1,13 +1,12 @@
-// The device's GL state shadow: each apply* compares the wanted description with what GL has
-// and calls GL only for the fields that differ (sokol/FNA style). forceAll makes the first flush
-// set everything, since the shadow starts as a guess.
-#include <cmath>
-#include <cstring>
+// The OpenGL 4.5 backend (device/backend.h): XNA's state descriptions in GL's words. The device's
+// StateShadow decides whether a state is sent; here each set* compares with the state it was last
+// given (`had`, null: set every field) and calls GL only for the fields that differ.
+#include <algorithm>
+#include <array>
 
-#include "device/device_impl.h"
+#include "device/backend.h"
 #include "device/sampler_filter.h"
-#include "fxport/graphics/errors.h"
-#include "fxport/graphics/texture.h"
+#include "fxport/platform/gl.h"
 
 namespace fxport {
 
@@ -100,10 +99,30 @@ void applyCull(CullMode mode) {
     glCullFace(mode == CullMode::CullCounterClockwiseFace ? GL_BACK : GL_FRONT);
 }
 
+class GlBackend final : public Backend {
+public:
+    void setBlend(const BlendState& state, const BlendState* had) override;
+    void setDepthStencil(const DepthStencilState& state, const DepthStencilState* had) override;
+    void setRasterizer(const RasterizerState& state, const RasterizerState* had) override;
+    void setViewport(const Viewport& viewport) override;
+    void setScissor(const Rectangle& rectangle) override;
+    void setSrgbWrite(bool enabled) override;
+    BackendObject createSampler(const SamplerState& state) override;
+    void deleteSampler(BackendObject sampler) override { glDeleteSamplers(1, &sampler); }
+    void bindTexture(int unit, BackendObject texture) override { glBindTextureUnit(GLuint(unit), texture); }
+    void bindSampler(int unit, BackendObject sampler) override { glBindSampler(GLuint(unit), sampler); }
+    void writeBuffer(BackendObject buffer, std::size_t offset, std::size_t bytes, const void* data) override {
+        glNamedBufferSubData(buffer, GLintptr(offset), GLsizeiptr(bytes), data);
+    }
+};
+
 }  // namespace
 
-void GraphicsDevice::Impl::applyBlend(const fxport::BlendState& w) {
-    fxport::BlendState& a = appliedBlend;
+std::unique_ptr<Backend> createGlBackend() { return std::make_unique<GlBackend>(); }
+
+void GlBackend::setBlend(const BlendState& w, const BlendState* had) {
+    const bool forceAll = had == nullptr;
+    const BlendState& a = had ? *had : w;
     if (forceAll || w.blendingEnabled() != a.blendingEnabled()) {
         if (w.blendingEnabled()) glEnable(GL_BLEND);
         else glDisable(GL_BLEND);
@@ -120,19 +139,19 @@ void GraphicsDevice::Impl::applyBlend(const fxport::BlendState& w) {
     }
     const fxport::ColorWriteChannels wanted[4] = {w.ColorWriteChannels, w.ColorWriteChannels1, w.ColorWriteChannels2,
                                                   w.ColorWriteChannels3};
-    const fxport::ColorWriteChannels had[4] = {a.ColorWriteChannels, a.ColorWriteChannels1, a.ColorWriteChannels2,
-                                               a.ColorWriteChannels3};
+    const fxport::ColorWriteChannels hadMasks[4] = {a.ColorWriteChannels, a.ColorWriteChannels1, a.ColorWriteChannels2,
+                                                    a.ColorWriteChannels3};
     for (GLuint i = 0; i < 4; ++i) {
-        if (!forceAll && wanted[i] == had[i]) continue;
+        if (!forceAll && wanted[i] == hadMasks[i]) continue;
         unsigned m = unsigned(wanted[i]);
         glColorMaski(i, (m & 1) != 0, (m & 2) != 0, (m & 4) != 0, (m & 8) != 0);
     }
     if (forceAll || w.MultiSampleMask != a.MultiSampleMask) glSampleMaski(0, GLbitfield(w.MultiSampleMask));
-    a = w;
 }
 
-void GraphicsDevice::Impl::applyDepthStencil(const fxport::DepthStencilState& w) {
-    fxport::DepthStencilState& a = appliedDepthStencil;
+void GlBackend::setDepthStencil(const DepthStencilState& w, const DepthStencilState* had) {
+    const bool forceAll = had == nullptr;
+    const DepthStencilState& a = had ? *had : w;
     // GL skips depth writes when the test is off; D3D too (ZENABLE false disables both).
     if (forceAll || w.DepthBufferEnable != a.DepthBufferEnable) {
         if (w.DepthBufferEnable) glEnable(GL_DEPTH_TEST);
@@ -157,11 +176,11 @@ void GraphicsDevice::Impl::applyDepthStencil(const fxport::DepthStencilState& w)
         glStencilOpSeparate(GL_BACK, glStencilOp(backFail), glStencilOp(backZFail), glStencilOp(backPass));
         glStencilMask(GLuint(w.StencilWriteMask));
     }
-    a = w;
 }
 
-void GraphicsDevice::Impl::applyRasterizer(const fxport::RasterizerState& w) {
-    fxport::RasterizerState& a = appliedRasterizer;
+void GlBackend::setRasterizer(const RasterizerState& w, const RasterizerState* had) {
+    const bool forceAll = had == nullptr;
+    const RasterizerState& a = had ? *had : w;
     if (forceAll || w.CullMode != a.CullMode) applyCull(w.CullMode);
     if (forceAll || w.FillMode != a.FillMode) glPolygonMode(GL_FRONT_AND_BACK, w.FillMode == FillMode::Solid ? GL_FILL : GL_LINE);
     if (forceAll || w.DepthBias != a.DepthBias || w.SlopeScaleDepthBias != a.SlopeScaleDepthBias) {
@@ -184,47 +203,25 @@ void GraphicsDevice::Impl::applyRasterizer(const fxport::RasterizerState& w) {
         if (w.MultiSampleAntiAlias) glEnable(GL_MULTISAMPLE);
         else glDisable(GL_MULTISAMPLE);
     }
-    a = w;
 }
 
-void GraphicsDevice::Impl::applyViewport(const fxport::Viewport& w) {
-    if (!forceAll && w == appliedViewport) return;
+void GlBackend::setViewport(const Viewport& w) {
     // Under GL_UPPER_LEFT, window y runs from the top row of the (top-row-first) target, like D3D:
     // the viewport needs no flip.
     glViewport(w.X, w.Y, w.Width, w.Height);
     glDepthRangef(w.MinDepth, w.MaxDepth);
-    appliedViewport = w;
-    // D3D9 pixel centres: SM1-3 vertex shaders add fxport_PixelOffset.xy * w to the position,
-    // moving the geometry right and down by (half a pixel - 1/256 pixel). Half a pixel puts D3D9's
-    // integer pixel centres on GL's; the 1/256 (one step of the rasteriser's sub-pixel grid) keeps
-    // an edge that falls exactly on a centre just above/left of it, so coverage follows D3D's
-    // top-left rule on every driver instead of the GL implementation's own tie-break (llvmpipe
-    // drops the top row of a full-screen quad under GL_UPPER_LEFT without it). The price is an
-    // attribute bias of 1/256 pixel (docs/DESIGN.md).
-    constexpr float kShift = 2.0f * (0.5f - 1.0f / 256.0f);  // in NDC units per pixel
-    std::array<float, 4> offset = {w.Width > 0 ? kShift / float(w.Width) : 0.0f,
-                                   w.Height > 0 ? -kShift / float(w.Height) : 0.0f, 0.0f, 0.0f};
-    if (offset != pixelOffset) {
-        pixelOffset = offset;
-        glNamedBufferSubData(internalBuffer, 0, sizeof(float) * 4, pixelOffset.data());
-    }
 }
 
-void GraphicsDevice::Impl::applyScissor(const Rectangle& w) {
-    if (!forceAll && w == appliedScissor) return;
-    glScissor(w.X, w.Y, std::max(0, w.Width), std::max(0, w.Height));
-    appliedScissor = w;
+void GlBackend::setScissor(const Rectangle& w) { glScissor(w.X, w.Y, std::max(0, w.Width), std::max(0, w.Height)); }
+
+void GlBackend::setSrgbWrite(bool enabled) {
+    // Converts only on sRGB-encoded attachments (SurfaceFormat::ColorSRgb); others are written
+    // unconverted (docs/DESIGN.md, "Pass states GL core lacks").
+    if (enabled) glEnable(GL_FRAMEBUFFER_SRGB);
+    else glDisable(GL_FRAMEBUFFER_SRGB);
 }
 
-GLuint GraphicsDevice::Impl::samplerFor(const SamplerState& s) {
-    std::array<std::uint8_t, sizeof(SamplerState)> key{};
-    // SamplerState is a plain aggregate of enums, ints, floats and a Vector4: compare by fields
-    // through a canonical byte image (padding zeroed by value-initialising a copy).
-    SamplerState canonical{};
-    canonical = s;
-    std::memcpy(key.data(), &canonical, sizeof canonical);
-    auto it = samplerObjects.find(key);
-    if (it != samplerObjects.end()) return it->second;
+BackendObject GlBackend::createSampler(const SamplerState& s) {
     GLuint sampler = 0;
     glCreateSamplers(1, &sampler);
     auto [minLinear, magLinear, mipLinear, anisotropic] = splitFilter(s.Filter);
@@ -245,7 +242,6 @@ GLuint GraphicsDevice::Impl::samplerFor(const SamplerState& s) {
     glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_FUNC, GLint(glCompare(s.ComparisonFunction)));
     if (anisotropic)
         glSamplerParameterf(sampler, GL_TEXTURE_MAX_ANISOTROPY, float(std::max(1, s.MaxAnisotropy)));
-    samplerObjects.emplace(std::move(key), sampler);
     return sampler;
 }
 
