@@ -1,6 +1,6 @@
 // INTERNAL: the device's private state: the backend and the shadow of what it has, the caches of
 // GL objects made from immutable descriptions, and the registry of live resources. Effects, textures
-// and buffers reach it through GraphicsDevice::impl().
+// and buffers reach it through deviceImpl() (device/impl_access.h).
 #pragma once
 
 #include <array>
@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "device/backend.h"
+#include "device/impl_access.h"
 #include "device/state_shadow.h"
 #include "fxport/graphics/graphics_device.h"
 #include "fxport/platform/gl.h"

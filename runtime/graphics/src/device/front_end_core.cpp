@@ -56,7 +56,7 @@ ByteBuffer::ByteBuffer(GraphicsDevice& device, std::size_t bytes, const void* in
     : GraphicsResource(device, "Buffer"), size_(bytes) {
     if (bytes == 0 || bytes > (std::size_t(1) << 31))
         throw ArgumentError(describe() + ": " + std::to_string(bytes) + " bytes; a buffer holds 1 byte to 2 GiB");
-    name_ = device.impl().createBuffer();
+    name_ = deviceImpl(device).createBuffer();
     std::vector<std::uint8_t> zeros;
     if (!initial) zeros.assign(bytes, 0);
     glNamedBufferStorage(name_, GLsizeiptr(bytes), initial ? initial : zeros.data(),
@@ -65,7 +65,7 @@ ByteBuffer::ByteBuffer(GraphicsDevice& device, std::size_t bytes, const void* in
 
 ByteBuffer::~ByteBuffer() { disposeFromDestructor(); }
 
-void ByteBuffer::releaseGpuObjects() { device().impl().deleteBuffer(name_); }
+void ByteBuffer::releaseGpuObjects() { deviceImpl(device()).deleteBuffer(name_); }
 
 void ByteBuffer::write(std::size_t offset, std::size_t bytes, const void* data) {
     throwIfDisposed("write");
@@ -101,13 +101,13 @@ DepthBuffer::DepthBuffer(GraphicsDevice& device, int width, int height, DepthFor
     storage_.format = format;
     storage_.width = width;
     storage_.height = height;
-    device.impl().adoptDepthStorage(storage_);
+    deviceImpl(device).adoptDepthStorage(storage_);
 }
 
 DepthBuffer::~DepthBuffer() { disposeFromDestructor(); }
 
 void DepthBuffer::releaseGpuObjects() {
-    GraphicsDevice::Impl& d = device().impl();
+    GraphicsDevice::Impl& d = deviceImpl(device());
     if (d.depthOverride == &storage_) d.depthOverride = nullptr;  // the next draw binds the targets without it
     dropFramebuffersWithDepth(d, storage_.renderbuffer);
     d.releaseDepthStorage(storage_);
@@ -129,7 +129,7 @@ ShaderCode::ShaderCode(GraphicsDevice& device, std::shared_ptr<const xlate::Comp
     program_->shader = &s;
     program_->label = label;
     program_->mayDiscard = s.glsl.find("discard") != std::string::npos;
-    program_->program = device.impl().createProgram(stage, s.glsl, label);
+    program_->program = deviceImpl(device).createProgram(stage, s.glsl, label);
 }
 
 ShaderCode::~ShaderCode() { disposeFromDestructor(); }
@@ -137,7 +137,7 @@ ShaderCode::~ShaderCode() { disposeFromDestructor(); }
 const xlate::CompiledShader& ShaderCode::shader() const { return *program_->shader; }
 
 void ShaderCode::releaseGpuObjects() {
-    GraphicsDevice::Impl& d = device().impl();
+    GraphicsDevice::Impl& d = deviceImpl(device());
     for (const ShaderProgram*& s : d.shaders)
         if (s == program_.get()) s = nullptr;
     d.deleteProgram(program_->program);
@@ -146,7 +146,7 @@ void ShaderCode::releaseGpuObjects() {
 // --- binding
 
 void setShaders(GraphicsDevice& device, const ShaderCode& vertexShader, const ShaderCode& pixelShader) {
-    GraphicsDevice::Impl& d = device.impl();
+    GraphicsDevice::Impl& d = deviceImpl(device);
     d.shaders = {&vertexShader.program(), &pixelShader.program(), nullptr};
     d.emulation = PassEmulation{};
     d.passApplied = true;
@@ -156,11 +156,11 @@ void setUniformBuffer(GraphicsDevice& device, int stage, int glBinding, const By
     if (stage < 0 || stage >= kStageCount || glBinding < 0 || glBinding >= kUniformBindingsPerStage || glBinding == kInternalBlockBinding)
         throw ArgumentError("uniform binding " + std::to_string(glBinding) + " of stage " + std::to_string(stage) +
                             " is not one a front end may set");
-    device.impl().wantedUniformBuffers[std::size_t(uniformBindingFor(stage, glBinding))] = buffer ? buffer->glName() : 0;
+    deviceImpl(device).wantedUniformBuffers[std::size_t(uniformBindingFor(stage, glBinding))] = buffer ? buffer->glName() : 0;
 }
 
 void setTargets(GraphicsDevice& device, const std::vector<RenderTargetBinding>& colour, DepthBuffer* depth) {
-    GraphicsDevice::Impl& d = device.impl();
+    GraphicsDevice::Impl& d = deviceImpl(device);
     DepthStorage* wanted = depth ? &depth->storage() : nullptr;
     const bool depthChanged = d.depthOverride != wanted;
     d.depthOverride = wanted;
@@ -175,7 +175,7 @@ void setTargets(GraphicsDevice& device, const std::vector<RenderTargetBinding>& 
 // --- draws
 
 void draw(GraphicsDevice& device, const VertexStream& vertices, const DrawArguments& a) {
-    GraphicsDevice::Impl& d = device.impl();
+    GraphicsDevice::Impl& d = deviceImpl(device);
     if (!vertices.declaration) throw InvalidOperation("Draw: no input layout");
     if (a.count <= 0 || a.instances <= 0) return;  // D3D draws nothing
     d.flush("Draw");
@@ -207,7 +207,7 @@ void draw(GraphicsDevice& device, const VertexStream& vertices, const DrawArgume
 // --- clears and copies
 
 void clearTexture(Texture& texture, const Vector4& color) {
-    GraphicsDevice::Impl& d = texture.device().impl();
+    GraphicsDevice::Impl& d = deviceImpl(texture.device());
     // A clear of this target still pending in the device would land after ours.
     d.resolvePendingClearBeforeRead(&texture);
     const float rgba[4] = {color.X, color.Y, color.Z, color.W};
@@ -233,7 +233,7 @@ void clearDepthBuffer(GraphicsDevice& device, DepthBuffer& buffer, bool depth, b
                                    s.renderbuffer);
     glNamedFramebufferDrawBuffer(fbo, GL_NONE);
     // glClear* honour the write masks and the scissor: the shadowed state says what GL has now.
-    GraphicsDevice::Impl& d = device.impl();
+    GraphicsDevice::Impl& d = deviceImpl(device);
     glDepthMask(GL_TRUE);
     glStencilMask(0xFF);
     glDisable(GL_SCISSOR_TEST);
@@ -246,12 +246,12 @@ void clearDepthBuffer(GraphicsDevice& device, DepthBuffer& buffer, bool depth, b
 }
 
 void generateMips(Texture& texture) {
-    texture.device().impl().resolvePendingClearBeforeRead(&texture);
+    deviceImpl(texture.device()).resolvePendingClearBeforeRead(&texture);
     if (texture.LevelCount() > 1) glGenerateTextureMipmap(texture.glName());
 }
 
 void copyTexture(Texture& destination, const Texture& source) {
-    GraphicsDevice::Impl& d = destination.device().impl();
+    GraphicsDevice::Impl& d = deviceImpl(destination.device());
     if (destination.Format() != source.Format() || destination.LevelCount() != source.LevelCount() ||
         destination.kind() != source.kind())
         throw ArgumentError("CopyResource: the textures differ in format, kind or level count");

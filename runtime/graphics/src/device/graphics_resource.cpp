@@ -8,14 +8,14 @@
 namespace fxport {
 
 GraphicsResource::GraphicsResource(fxport::GraphicsDevice& device, const char* kind)
-    : device_(&device), kind_(kind), serial_(device.impl().nextSerial++) {
-    device.impl().resources.push_back(this);
+    : device_(&device), kind_(kind), serial_(deviceImpl(device).nextSerial++) {
+    deviceImpl(device).resources.push_back(this);
 }
 
 GraphicsResource::~GraphicsResource() {
     // Derived destructors have released GL objects already (disposeFromDestructor); here the
     // device only forgets the address.
-    if (device_) device_->impl().forget(this);
+    if (device_) deviceImpl(*device_).forget(this);
 }
 
 void GraphicsResource::Dispose() {

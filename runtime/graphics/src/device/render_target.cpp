@@ -21,18 +21,18 @@ void adoptDepth(GraphicsDevice& device, DepthStorage& storage, DepthFormat forma
     storage.format = format;
     storage.width = width;
     storage.height = height;
-    device.impl().adoptDepthStorage(storage);
+    deviceImpl(device).adoptDepthStorage(storage);
 }
 
 // Unbinds the target from the device's current render targets (back to the back buffer) when it
 // is destroyed while bound.
 void unbindIfTarget(GraphicsDevice& device, const Texture* target) {
-    auto& noted = device.impl().boundSinceMark;
+    auto& noted = deviceImpl(device).boundSinceMark;
     noted.erase(std::remove_if(noted.begin(), noted.end(), [&](const RenderTargetBinding& b) { return b.RenderTarget == target; }),
                 noted.end());
-    std::erase_if(device.impl().writtenSinceMark,
+    std::erase_if(deviceImpl(device).writtenSinceMark,
                   [&](const GraphicsDevice::WrittenTarget& w) { return w.binding.RenderTarget == target; });
-    auto& targets = device.impl().targets;
+    auto& targets = deviceImpl(device).targets;
     bool bound = std::any_of(targets.begin(), targets.end(),
                              [&](const RenderTargetBinding& b) { return b.RenderTarget == target; });
     if (bound) device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
@@ -53,7 +53,7 @@ RenderTarget2D::~RenderTarget2D() { disposeFromDestructor(); }
 
 void RenderTarget2D::releaseGpuObjects() {
     unbindIfTarget(device(), this);
-    device().impl().releaseDepthStorage(depth_);
+    deviceImpl(device()).releaseDepthStorage(depth_);
     Texture2D::releaseGpuObjects();
 }
 
@@ -61,7 +61,7 @@ std::vector<Vector4> RenderTarget2D::GetDataAsVector4() const {
     throwIfDisposed("GetDataAsVector4");
     std::vector<Vector4> texels(std::size_t(Width()) * std::size_t(Height()));
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    device().impl().resolvePendingClearBeforeRead(this);
+    deviceImpl(device()).resolvePendingClearBeforeRead(this);
     glGetTextureImage(name_, 0, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * sizeof(Vector4)), texels.data());
     return texels;
 }
@@ -79,7 +79,7 @@ RenderTargetCube::~RenderTargetCube() { disposeFromDestructor(); }
 
 void RenderTargetCube::releaseGpuObjects() {
     unbindIfTarget(device(), this);
-    device().impl().releaseDepthStorage(depth_);
+    deviceImpl(device()).releaseDepthStorage(depth_);
     TextureCube::releaseGpuObjects();
 }
 
@@ -87,7 +87,7 @@ std::vector<Vector4> RenderTargetCube::GetDataAsVector4(CubeMapFace face) const 
     throwIfDisposed("GetDataAsVector4");
     std::vector<Vector4> texels(std::size_t(Size()) * std::size_t(Size()));
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    device().impl().resolvePendingClearBeforeRead(this);
+    deviceImpl(device()).resolvePendingClearBeforeRead(this);
     glGetTextureSubImage(name_, 0, 0, 0, GLint(face), Size(), Size(), 1, GL_RGBA, GL_FLOAT,
                          GLsizei(texels.size() * sizeof(Vector4)), texels.data());
     return texels;

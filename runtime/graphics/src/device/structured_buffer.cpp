@@ -21,7 +21,7 @@ StructuredBuffer::StructuredBuffer(fxport::GraphicsDevice& device, int elementSt
     if (static_cast<long long>(elementStride) * elementCount > kMaxStructuredBufferBytes)
         throw ArgumentError(describe() + ": " + std::to_string(elementCount) + " elements of " + std::to_string(elementStride) +
                             " bytes exceed the " + std::to_string(kMaxStructuredBufferBytes >> 20) + " MiB fxport makes buffers of");
-    name_ = device.impl().createBuffer();
+    name_ = deviceImpl(device).createBuffer();
     // Zero-filled, as D3D11 leaves a buffer made without initial data (and shaders may read it first).
     std::vector<std::uint8_t> zeros(SizeInBytes(), 0);
     glNamedBufferStorage(name_, GLsizeiptr(SizeInBytes()), zeros.data(), GL_DYNAMIC_STORAGE_BIT);
@@ -30,7 +30,7 @@ StructuredBuffer::StructuredBuffer(fxport::GraphicsDevice& device, int elementSt
 StructuredBuffer::~StructuredBuffer() { disposeFromDestructor(); }
 
 void StructuredBuffer::releaseGpuObjects() {
-    GraphicsDevice::Impl& d = device().impl();
+    GraphicsDevice::Impl& d = deviceImpl(device());
     d.forgetStorage(this);
     d.deleteBuffer(name_);
 }
@@ -49,7 +49,7 @@ void StructuredBuffer::setBytes(std::size_t offset, const void* data, std::size_
     throwIfDisposed("SetData");
     checkRange(describe(), "SetData", offset, bytes, SizeInBytes());
     if (bytes == 0) return;
-    device().impl().storageBarrier();  // a shader's writes land before this upload replaces them
+    deviceImpl(device()).storageBarrier();  // a shader's writes land before this upload replaces them
     glNamedBufferSubData(name_, GLintptr(offset), GLsizeiptr(bytes), data);
 }
 
@@ -57,7 +57,7 @@ void StructuredBuffer::getBytes(std::size_t offset, void* data, std::size_t byte
     throwIfDisposed("GetData");
     checkRange(describe(), "GetData", offset, bytes, SizeInBytes());
     if (bytes == 0) return;
-    device().impl().storageBarrier();  // what a dispatch or draw wrote is what GetData returns
+    deviceImpl(device()).storageBarrier();  // what a dispatch or draw wrote is what GetData returns
     glGetNamedBufferSubData(name_, GLintptr(offset), GLsizeiptr(bytes), data);
 }
 

@@ -50,10 +50,10 @@ Texture::Texture(fxport::GraphicsDevice& device, const char* typeName, Kind kind
     : GraphicsResource(device, typeName), format_(format), levels_(levels), kind_(kind) {}
 
 void Texture::releaseGpuObjects() {
-    GraphicsDevice::Impl& d = device().impl();
+    GraphicsDevice::Impl& d = deviceImpl(device());
     for (int slot = 0; slot < kMaxTextureSlots; ++slot)
         if (device().Textures[slot].get() == this) device().Textures[slot] = nullptr;
-    for (Effect* effect : d.effects) effect->impl().forgetTexture(this);
+    for (Effect* effect : d.effects) effectImpl(*effect).forgetTexture(this);
     d.forgetStorage(this);
     d.dropFramebuffersUsing(name_);
     d.deleteTexture(name_);
@@ -73,7 +73,7 @@ void Texture::writeTexels(int face, int level, int x, int y, int w, int h, const
                             ", the region " + std::to_string(w) + "x" + std::to_string(h) + " of " + surfaceFormatName(format_) +
                             " needs " + needs);
     }
-    device().impl().storageBarrier();  // after a shader's image writes, before this upload
+    deviceImpl(device()).storageBarrier();  // after a shader's image writes, before this upload
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     if (face < 0)
         glTextureSubImage2D(name_, level, x, y, w, h, f.format, f.type, data);
@@ -83,7 +83,7 @@ void Texture::writeTexels(int face, int level, int x, int y, int w, int h, const
 
 void Texture::readTexels(int face, int level, void* data, std::size_t bytes) const {
     const detail::GlTextureFormat& f = detail::glFormat(format_);
-    device().impl().resolvePendingClearBeforeRead(this);
+    deviceImpl(device()).resolvePendingClearBeforeRead(this);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     if (face < 0) {
         glGetTextureImage(name_, level, f.format, f.type, GLsizei(bytes), data);
@@ -108,7 +108,7 @@ Texture2D::Texture2D(fxport::GraphicsDevice& device, const char* typeName, int w
 }
 
 void Texture2D::create(bool) {
-    name_ = device().impl().createTexture(GL_TEXTURE_2D);
+    name_ = deviceImpl(device()).createTexture(GL_TEXTURE_2D);
     glTextureStorage2D(name_, levels_, detail::glFormat(format_).internalFormat, width_, height_);
     applyD3D9Swizzle(name_, format_);
 }
@@ -155,7 +155,7 @@ void Texture2D::savePng(const std::string& path, bool opaque) const {
     // Read back as floats in GL's RGBA expansion, then quantise: one path for every format.
     std::vector<float> texels(std::size_t(width_) * std::size_t(height_) * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    device().impl().resolvePendingClearBeforeRead(this);
+    deviceImpl(device()).resolvePendingClearBeforeRead(this);
     glGetTextureImage(name_, 0, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * sizeof(float)), texels.data());
     std::vector<std::uint8_t> rgba(texels.size());
     for (std::size_t i = 0; i < texels.size(); i += 4) {
@@ -185,7 +185,7 @@ TextureCube::TextureCube(fxport::GraphicsDevice& device, const char* typeName, i
 }
 
 void TextureCube::create(bool) {
-    name_ = device().impl().createTexture(GL_TEXTURE_CUBE_MAP);
+    name_ = deviceImpl(device()).createTexture(GL_TEXTURE_CUBE_MAP);
     glTextureStorage2D(name_, levels_, detail::glFormat(format_).internalFormat, size_, size_);
     applyD3D9Swizzle(name_, format_);
 }

@@ -44,7 +44,7 @@ VertexBuffer::VertexBuffer(fxport::GraphicsDevice& device, const fxport::VertexD
         throw ArgumentError(describe() + ": vertex count " + std::to_string(vertexCount) + " and stride " +
                             std::to_string(declaration.VertexStride()) + " must both be positive");
     checkBufferSize(describe(), vertexCount, declaration.VertexStride());
-    name_ = device.impl().createBuffer();
+    name_ = deviceImpl(device).createBuffer();
     glNamedBufferStorage(name_, GLsizeiptr(vertexCount) * declaration.VertexStride(), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
 
@@ -52,8 +52,8 @@ VertexBuffer::~VertexBuffer() { disposeFromDestructor(); }
 
 void VertexBuffer::releaseGpuObjects() {
     fxport::GraphicsDevice& d = device();
-    if (d.impl().vertexBuffer == this) d.impl().vertexBuffer = nullptr;
-    d.impl().deleteBuffer(name_);
+    if (deviceImpl(d).vertexBuffer == this) deviceImpl(d).vertexBuffer = nullptr;
+    deviceImpl(d).deleteBuffer(name_);
 }
 
 void VertexBuffer::setData(int offsetInBytes, const void* data, std::size_t elementSize, std::size_t count) {
@@ -75,7 +75,7 @@ IndexBuffer::IndexBuffer(fxport::GraphicsDevice& device, fxport::IndexElementSiz
     : GraphicsResource(device, "IndexBuffer"), elementSize_(elementSize), count_(indexCount), usage_(usage) {
     if (indexCount <= 0) throw ArgumentError(describe() + ": index count " + std::to_string(indexCount) + " must be positive");
     checkBufferSize(describe(), indexCount, elementBytes());
-    name_ = device.impl().createBuffer();
+    name_ = deviceImpl(device).createBuffer();
     glNamedBufferStorage(name_, GLsizeiptr(indexCount) * elementBytes(), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
 
@@ -84,7 +84,7 @@ IndexBuffer::~IndexBuffer() { disposeFromDestructor(); }
 void IndexBuffer::releaseGpuObjects() {
     fxport::GraphicsDevice& d = device();
     if (d.Indices == this) d.Indices = nullptr;
-    d.impl().deleteBuffer(name_);
+    deviceImpl(d).deleteBuffer(name_);
 }
 
 void IndexBuffer::setData(int offsetInBytes, const void* data, std::size_t elementSize, std::size_t count) {

@@ -153,7 +153,7 @@ double GpuLimits::fillGBps(SurfaceFormat format, bool blended) const {
 }
 
 GpuLimits GpuLimits::Measure(GraphicsDevice& device, int size, int repeats) {
-    GraphicsDevice::Impl& impl = device.impl();
+    GraphicsDevice::Impl& impl = deviceImpl(device);
     GpuLimits limits;
     limits.renderer = device.rendererName();
     const double pixels = double(size) * double(size) * repeats;

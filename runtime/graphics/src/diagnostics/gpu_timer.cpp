@@ -30,11 +30,11 @@ double GpuTimer::Section::medianFragments() const { return median(fragments); }
 GpuTimer::GpuTimer(GraphicsDevice& device) : device_(device) {}
 
 GpuTimer::~GpuTimer() {
-    for (GLuint& q : allQueries_) device_.impl().deleteQuery(q);
+    for (GLuint& q : allQueries_) deviceImpl(device_).deleteQuery(q);
     for (auto& p : pending_)
-        if (p->samples) device_.impl().deleteQuery(p->samples);
+        if (p->samples) deviceImpl(device_).deleteQuery(p->samples);
     for (auto& p : open_)
-        if (p->samples) device_.impl().deleteQuery(p->samples);
+        if (p->samples) deviceImpl(device_).deleteQuery(p->samples);
 }
 
 std::uint32_t GpuTimer::newQuery() {
@@ -43,7 +43,7 @@ std::uint32_t GpuTimer::newQuery() {
         freeQueries_.pop_back();
         return q;
     }
-    GLuint q = device_.impl().createQuery(GL_TIMESTAMP);
+    GLuint q = deviceImpl(device_).createQuery(GL_TIMESTAMP);
     allQueries_.push_back(q);
     return q;
 }
@@ -62,8 +62,8 @@ void GpuTimer::Begin(const std::string& name) {
     }
     auto p = std::make_unique<Pending>();
     p->section = sectionIndex(name);
-    if (countFragments_ && open_.empty() && !device_.impl().fragmentTally) {
-        p->samples = device_.impl().createQuery(GL_SAMPLES_PASSED);
+    if (countFragments_ && open_.empty() && !deviceImpl(device_).fragmentTally) {
+        p->samples = deviceImpl(device_).createQuery(GL_SAMPLES_PASSED);
         glBeginQuery(GL_SAMPLES_PASSED, p->samples);
     }
     p->begin = newQuery();
@@ -115,7 +115,7 @@ void GpuTimer::collect(bool wait) {
             GLuint64 fragments = 0;
             glGetQueryObjectui64v(p.samples, GL_QUERY_RESULT, &fragments);
             sections_[std::size_t(p.section)].fragments.push_back(double(fragments));
-            device_.impl().deleteQuery(p.samples);
+            deviceImpl(device_).deleteQuery(p.samples);
         }
         freeQueries_.push_back(p.begin);
         freeQueries_.push_back(p.end);

@@ -222,7 +222,7 @@ Effect::Effect(fxport::GraphicsDevice& device, const xlate::CompiledEffect& comp
 void Effect::linkWhole(std::shared_ptr<const xlate::CompiledEffect> whole) {
     Impl& e = *impl_;
     try {
-        Impl::Code& code = e.addCode(std::move(whole), device().impl());
+        Impl::Code& code = e.addCode(std::move(whole), deviceImpl(device()));
         e.whole = &code;
         for (std::size_t t = 0; t < e.techniqueCode.size(); ++t) e.techniqueCode[t] = {&code, int(t)};
     } catch (...) {
@@ -244,7 +244,7 @@ const xlate::CompiledEffect& Effect::compiled() const {
 
 void Effect::Precompile() {
     if (IsDisposed()) throw InvalidOperation("Effect '" + impl_->displayName + "'.Precompile(): the effect was disposed");
-    impl_->compileAll(device().impl());
+    impl_->compileAll(deviceImpl(device()));
 }
 
 const std::string& Effect::sourcePath() const { return impl_->outline.sourcePath; }
@@ -264,7 +264,7 @@ EffectStatistics Effect::statistics() const {
 }
 
 bool EffectTechnique::IsCompiled() const {
-    return effect_ && effect_->impl().techniqueCode[std::size_t(index_)].code != nullptr;
+    return effect_ && effectImpl(*effect_).techniqueCode[std::size_t(index_)].code != nullptr;
 }
 
 // --- layouts
@@ -434,7 +434,7 @@ void Effect::Impl::releasePrograms(GraphicsDevice::Impl& device) {
 
 void Effect::build() {
     Impl& e = *impl_;
-    GraphicsDevice::Impl& d = device().impl();
+    GraphicsDevice::Impl& d = deviceImpl(device());
     const xlate::CompiledEffect& c = e.outline;
     e.displayName = std::filesystem::path(c.sourcePath).filename().string();
     if (e.displayName.empty()) e.displayName = "<effect>";
@@ -490,7 +490,7 @@ void Effect::build() {
 }
 
 void Effect::releaseGpuObjects() {
-    GraphicsDevice::Impl& d = device().impl();
+    GraphicsDevice::Impl& d = deviceImpl(device());
     impl_->releasePrograms(d);
     // The device's pass emulation may point into this effect (its SRGBWriteEnable location).
     if (d.emulation.srgbWriteReported == &impl_->reportedUnencodedSrgbWrite) d.emulation = PassEmulation{};
@@ -504,21 +504,21 @@ EffectParameter& EffectParameterCollection::operator[](const std::string& name) 
     if (EffectParameter* p = find(name)) return *p;
     std::string known;
     for (const EffectParameter& p : items_) known += (known.empty() ? "" : ", ") + p.Name();
-    throw ArgumentError("Effect '" + (effect_ ? effect_->impl().displayName : std::string("?")) +
+    throw ArgumentError("Effect '" + (effect_ ? effectImpl(*effect_).displayName : std::string("?")) +
                         "' has no parameter named '" + name + "' (its parameters: " +
                         (known.empty() ? "none" : known) + ")");
 }
 
 EffectParameter& EffectParameterCollection::operator[](int index) {
     if (index < 0 || index >= Count())
-        throw ArgumentError("Effect '" + (effect_ ? effect_->impl().displayName : std::string("?")) + "': parameter index " +
+        throw ArgumentError("Effect '" + (effect_ ? effectImpl(*effect_).displayName : std::string("?")) + "': parameter index " +
                             std::to_string(index) + " is outside 0.." + std::to_string(Count() - 1));
     return items_[std::size_t(index)];
 }
 
 EffectParameter* EffectParameterCollection::find(const std::string& name) {
     if (!effect_) return nullptr;
-    auto& index = effect_->impl().parameterIndex;
+    auto& index = effectImpl(*effect_).parameterIndex;
     auto it = index.find(name);
     return it == index.end() ? nullptr : &items_[std::size_t(it->second)];
 }

@@ -96,7 +96,7 @@ struct Access {
 };
 
 Access access(Effect* effect, int index) {
-    Effect::Impl& e = effect->impl();
+    Effect::Impl& e = effectImpl(*effect);
     const xlate::Parameter& p = e.outline.parameters[std::size_t(index)];
     return Access{e, p, index};
 }
@@ -110,15 +110,15 @@ bool isTextureType(ParameterType t) {
 
 }  // namespace
 
-const std::string& EffectParameter::Name() const { return effect_->impl().outline.parameters[std::size_t(index_)].name; }
+const std::string& EffectParameter::Name() const { return effectImpl(*effect_).outline.parameters[std::size_t(index_)].name; }
 const std::string& EffectParameter::Semantic() const {
-    return effect_->impl().outline.parameters[std::size_t(index_)].semantic;
+    return effectImpl(*effect_).outline.parameters[std::size_t(index_)].semantic;
 }
 EffectParameterClass EffectParameter::ParameterClass() const {
-    return EffectParameterClass(effect_->impl().outline.parameters[std::size_t(index_)].parameterClass);
+    return EffectParameterClass(effectImpl(*effect_).outline.parameters[std::size_t(index_)].parameterClass);
 }
 EffectParameterType EffectParameter::ParameterType() const {
-    switch (effect_->impl().outline.parameters[std::size_t(index_)].type) {
+    switch (effectImpl(*effect_).outline.parameters[std::size_t(index_)].type) {
     case xlate::ParameterType::Void: return EffectParameterType::Void;
     case xlate::ParameterType::Bool: return EffectParameterType::Bool;
     case xlate::ParameterType::Int: case xlate::ParameterType::UInt: return EffectParameterType::Int32;
@@ -132,14 +132,14 @@ EffectParameterType EffectParameter::ParameterType() const {
     default: return EffectParameterType::Sampler;
     }
 }
-int EffectParameter::RowCount() const { return effect_->impl().outline.parameters[std::size_t(index_)].rows; }
-int EffectParameter::ColumnCount() const { return effect_->impl().outline.parameters[std::size_t(index_)].columns; }
-int EffectParameter::ElementCount() const { return effect_->impl().outline.parameters[std::size_t(index_)].elements; }
+int EffectParameter::RowCount() const { return effectImpl(*effect_).outline.parameters[std::size_t(index_)].rows; }
+int EffectParameter::ColumnCount() const { return effectImpl(*effect_).outline.parameters[std::size_t(index_)].columns; }
+int EffectParameter::ElementCount() const { return effectImpl(*effect_).outline.parameters[std::size_t(index_)].elements; }
 const std::vector<EffectAnnotation>& EffectParameter::Annotations() const {
     // Built on first use; parameters rarely have annotations.
     static thread_local std::vector<EffectAnnotation> out;
     out.clear();
-    for (const xlate::Annotation& a : effect_->impl().outline.parameters[std::size_t(index_)].annotations)
+    for (const xlate::Annotation& a : effectImpl(*effect_).outline.parameters[std::size_t(index_)].annotations)
         out.push_back({a.name, a.type, a.value});
     return out;
 }
@@ -297,7 +297,7 @@ std::string EffectParameter::GetValueString() const {
     if (a.p.type != xlate::ParameterType::String) a.fail("GetValueString: the parameter is not a string");
     return a.p.defaultString;
 }
-Texture* EffectParameter::GetValueTexture() const { return effect_->impl().textures[std::size_t(index_)]; }
+Texture* EffectParameter::GetValueTexture() const { return effectImpl(*effect_).textures[std::size_t(index_)]; }
 Texture2D* EffectParameter::GetValueTexture2D() const {
     Texture* t = GetValueTexture();
     return t && t->kind() == Texture::Kind::Texture2D ? static_cast<Texture2D*>(t) : nullptr;

@@ -73,9 +73,9 @@ void EffectPass::Apply() {
 
 void EffectPass::applyThis() {
     if (effect_->IsDisposed()) throw InvalidOperation("EffectPass '" + name_ + "'.Apply(): the effect was disposed");
-    Effect::Impl& e = effect_->impl();
+    Effect::Impl& e = effectImpl(*effect_);
     GraphicsDevice& device = effect_->device();
-    GraphicsDevice::Impl& d = device.impl();
+    GraphicsDevice::Impl& d = deviceImpl(device);
     // The first Apply of a technique compiles it (xlate, cached) and links its programs.
     const Effect::Impl::TechniqueCode& code = e.ensureCompiled(technique_, d);
     const xlate::CompiledEffect& compiled = *code.code->effect;

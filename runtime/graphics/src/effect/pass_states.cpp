@@ -159,7 +159,7 @@ void applyPassStates(const PassStates& states, const Effect::Impl& e, GraphicsDe
     // has neither, so nothing else would ever turn them off).
     PassEmulation emulation;
     if (states.rows.empty()) {
-        device.impl().emulation = emulation;
+        deviceImpl(device).emulation = emulation;
         return;
     }
     BlendState blend = device.BlendState;
@@ -238,7 +238,7 @@ void applyPassStates(const PassStates& states, const Effect::Impl& e, GraphicsDe
             break;
         }
     }
-    device.impl().emulation = emulation;
+    deviceImpl(device).emulation = emulation;
     if (blendTouched) {
         if (!separateAlpha) {
             blend.AlphaSourceBlend = blend.ColorSourceBlend;

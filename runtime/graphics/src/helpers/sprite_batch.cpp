@@ -192,7 +192,7 @@ void SpriteBatch::setRenderState() {
                             -1.0f - invWidth, 1.0f - invHeight, 0.0f, 1.0f);
     matrixTransform_->SetValue(transformMatrix_ * projection);
     spriteEffect_->CurrentTechnique->Passes[0].Apply();
-    ownVertexShader_ = device_.impl().shaders[0];
+    ownVertexShader_ = deviceImpl(device_).shaders[0];
 }
 
 // Issue 16: whether one of these sprites is an unrotated, unflipped rectangle at or beyond every
@@ -372,7 +372,7 @@ void SpriteBatch::drawBatch(Texture2D& texture, const VertexPositionColorTexture
     const bool onePass = customEffect_ == nullptr || customEffect_->CurrentTechnique->Passes.Count() == 1;
     // Texel copies under a Min or Max blend reduce in one dispatch (texel_copies.cpp). Immediate
     // mode set the matrix at Begin, from the viewport of that moment: not proven here.
-    const bool reduction = customEffect_ == nullptr && device_.impl().computePasses && transformMatrix_ == Matrix::Identity &&
+    const bool reduction = customEffect_ == nullptr && deviceImpl(device_).computePasses && transformMatrix_ == Matrix::Identity &&
                            sortMode_ != SpriteSortMode::Immediate &&
                            (blendState_.ColorBlendFunction == BlendFunction::Min || blendState_.ColorBlendFunction == BlendFunction::Max);
     std::vector<detail::TexelCopy> copies;
@@ -380,7 +380,7 @@ void SpriteBatch::drawBatch(Texture2D& texture, const VertexPositionColorTexture
         const int sprites = std::min(count, kMaxBatchSize);
         if (reduction && texelCopiesOf(texture, vertices, sprites, copies)) {
             device_.Textures[0] = texture;
-            if (device_.impl().computePasses->tryTexelCopies(texture, copies)) {
+            if (deviceImpl(device_).computePasses->tryTexelCopies(texture, copies)) {
                 ++drawCalls_;
                 vertices += std::size_t(sprites) * 4;
                 count -= sprites;
@@ -390,7 +390,7 @@ void SpriteBatch::drawBatch(Texture2D& texture, const VertexPositionColorTexture
         const bool covers = onePass && coversViewport(vertices, sprites);
         auto draw = [&] {
             device_.Textures[0] = texture;
-            if (covers) device_.impl().dropColorClearUnderCoveringSprite(static_cast<const ShaderProgram*>(ownVertexShader_));
+            if (covers) deviceImpl(device_).dropColorClearUnderCoveringSprite(static_cast<const ShaderProgram*>(ownVertexShader_));
             device_.DrawUserIndexedPrimitives(PrimitiveType::TriangleList, vertices, 0, sprites * 4, indices_.data(), 0,
                                               sprites * 2);
             ++drawCalls_;
