@@ -21,6 +21,7 @@ public:
     Rectangle scissor;
     BlendState hadBlend;  // what the last "changed" setBlend said the backend had
     BackendObject nextSampler = 1;
+    BackendObject nextObject = 100;  // pipelines and vertex arrays
 
     void setBlend(const BlendState& state, const BlendState* had) override {
         note("setBlend", had);
@@ -57,6 +58,31 @@ public:
     }
     void writeBuffer(BackendObject buffer, std::size_t offset, std::size_t bytes, const void*) override {
         calls.push_back("writeBuffer " + std::to_string(buffer) + " " + std::to_string(offset) + " " + std::to_string(bytes));
+    }
+    void bindUniformBuffer(int binding, BackendObject buffer) override {
+        calls.push_back("bindUniformBuffer " + std::to_string(binding) + " " + std::to_string(buffer));
+    }
+    int uniformLocation(BackendObject, const char* name) override {
+        calls.push_back(std::string("uniformLocation ") + name);
+        return 0;
+    }
+    void setUniform(BackendObject, int location, int value) override {
+        calls.push_back("setUniform " + std::to_string(location) + " " + std::to_string(value));
+    }
+    void setUniform(BackendObject, int location, float value) override {
+        calls.push_back("setUniform " + std::to_string(location) + " " + std::to_string(value));
+    }
+    BackendObject createPipeline(const std::array<BackendObject, 5>&) override {
+        calls.push_back("createPipeline " + std::to_string(nextObject));
+        return nextObject++;
+    }
+    void bindPipeline(BackendObject pipeline) override { calls.push_back("bindPipeline " + std::to_string(pipeline)); }
+    BackendObject createVertexArray(const std::vector<VertexAttribute>& attributes) override {
+        calls.push_back("createVertexArray " + std::to_string(attributes.size()) + " attributes");
+        return nextObject++;
+    }
+    void bindVertexArray(BackendObject vertexArray) override {
+        calls.push_back("bindVertexArray " + std::to_string(vertexArray));
     }
 
     // The calls so far, and forgets them.

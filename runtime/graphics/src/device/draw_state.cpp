@@ -1,6 +1,6 @@
-// What every draw does before calling GL: validate, then bring shaders, uniform buffers,
+// What every draw does before the draw call: validate, then bring shaders, uniform buffers,
 // textures, samplers, vertex layout and fixed-function state up to date, touching only what
-// changed since the last draw.
+// changed since the last draw. No GL here: the backend (device/backend.h) says it in GL's words.
 #include <algorithm>
 #include <array>
 #include <cstring>
@@ -18,30 +18,6 @@
 namespace fxport {
 
 namespace {
-
-struct AttributeFormat {
-    GLint size;
-    GLenum type;
-    GLboolean normalized;
-};
-
-AttributeFormat attributeFormat(VertexElementFormat f) {
-    switch (f) {
-    case VertexElementFormat::Single: return {1, GL_FLOAT, GL_FALSE};
-    case VertexElementFormat::Vector2: return {2, GL_FLOAT, GL_FALSE};
-    case VertexElementFormat::Vector3: return {3, GL_FLOAT, GL_FALSE};
-    case VertexElementFormat::Vector4: return {4, GL_FLOAT, GL_FALSE};
-    case VertexElementFormat::Color: return {4, GL_UNSIGNED_BYTE, GL_TRUE};
-    case VertexElementFormat::Byte4: return {4, GL_UNSIGNED_BYTE, GL_FALSE};
-    case VertexElementFormat::Short2: return {2, GL_SHORT, GL_FALSE};
-    case VertexElementFormat::Short4: return {4, GL_SHORT, GL_FALSE};
-    case VertexElementFormat::NormalizedShort2: return {2, GL_SHORT, GL_TRUE};
-    case VertexElementFormat::NormalizedShort4: return {4, GL_SHORT, GL_TRUE};
-    case VertexElementFormat::HalfVector2: return {2, GL_HALF_FLOAT, GL_FALSE};
-    case VertexElementFormat::HalfVector4: return {4, GL_HALF_FLOAT, GL_FALSE};
-    }
-    return {4, GL_FLOAT, GL_FALSE};
-}
 
 // D3D leaves a bound render target alone when the pixel shader writes nothing to it (a depth-only
 // pass whose shader only clip()s); GL writes undefined values there (llvmpipe: whatever its output
@@ -132,11 +108,11 @@ GLuint GraphicsDevice::Impl::pixelProgramFor(const ShaderProgram& program) {
             return program.program;
         }
         program.alphaTestProgram = createProgram(GL_FRAGMENT_SHADER, *glsl, program.label + " [alpha test]");
-        program.alphaFuncLocation = glGetUniformLocation(program.alphaTestProgram, xlate::kAlphaFuncUniform);
-        program.alphaRefLocation = glGetUniformLocation(program.alphaTestProgram, xlate::kAlphaRefUniform);
+        program.alphaFuncLocation = backend->uniformLocation(program.alphaTestProgram, xlate::kAlphaFuncUniform);
+        program.alphaRefLocation = backend->uniformLocation(program.alphaTestProgram, xlate::kAlphaRefUniform);
     }
-    glProgramUniform1i(program.alphaTestProgram, program.alphaFuncLocation, emulation.alphaFunction);
-    glProgramUniform1f(program.alphaTestProgram, program.alphaRefLocation, emulation.alphaReference);
+    backend->setUniform(program.alphaTestProgram, program.alphaFuncLocation, emulation.alphaFunction);
+    backend->setUniform(program.alphaTestProgram, program.alphaRefLocation, emulation.alphaReference);
     return program.alphaTestProgram;
 }
 
@@ -149,22 +125,17 @@ void GraphicsDevice::Impl::applyShaders() {
     if (it != pipelines.end()) {
         pipeline = it->second;
     } else {
-        glCreateProgramPipelines(1, &pipeline);
+        pipeline = backend->createPipeline({vs, ps, gs, hs, ds});
         ++live.pipelines;
-        glUseProgramStages(pipeline, GL_VERTEX_SHADER_BIT, vs);
-        glUseProgramStages(pipeline, GL_FRAGMENT_SHADER_BIT, ps);
-        if (gs) glUseProgramStages(pipeline, GL_GEOMETRY_SHADER_BIT, gs);
-        if (hs) glUseProgramStages(pipeline, GL_TESS_CONTROL_SHADER_BIT, hs);
-        if (ds) glUseProgramStages(pipeline, GL_TESS_EVALUATION_SHADER_BIT, ds);
         pipelines.emplace(key, pipeline);
     }
     if (pipeline != boundPipeline) {
-        glBindProgramPipeline(pipeline);
+        backend->bindPipeline(pipeline);
         boundPipeline = pipeline;
     }
     for (std::size_t i = 0; i < wantedUniformBuffers.size(); ++i) {
         if (wantedUniformBuffers[i] == boundUniformBuffers[i] || i % kUniformBindingsPerStage == kInternalBlockBinding) continue;
-        glBindBufferBase(GL_UNIFORM_BUFFER, GLuint(i), wantedUniformBuffers[i]);
+        backend->bindUniformBuffer(int(i), wantedUniformBuffers[i]);
         boundUniformBuffers[i] = wantedUniformBuffers[i];
     }
 }
@@ -251,7 +222,7 @@ GraphicsDevice::Impl::VertexArray& GraphicsDevice::Impl::vertexArrayFor(const Ve
     LastVertexArray& last = lastVertexArray;
     if (last.array && last.program == vs && last.declaration == &declaration && last.copy == declaration) {
         if (boundVertexArray != last.array->vao) {
-            glBindVertexArray(last.array->vao);
+            backend->bindVertexArray(last.array->vao);
             boundVertexArray = last.array->vao;
         }
         return *last.array;
@@ -266,21 +237,14 @@ GraphicsDevice::Impl::VertexArray& GraphicsDevice::Impl::vertexArrayFor(const Ve
     if (it == vertexArrays.end()) {
         const std::vector<const VertexElement*> elements =
             vertexElementsFor(declaration, shaders[0]->shader->inputs, "'" + shaders[0]->shader->entryPoint + "'");
-        VertexArray va;
-        glCreateVertexArrays(1, &va.vao);
-        ++live.vertexArrays;
+        std::vector<VertexAttribute> attributes;
         for (std::size_t i = 0; i < elements.size(); ++i) {
             const xlate::VertexInput& input = shaders[0]->shader->inputs[i];
-            const VertexElement* element = elements[i];
-            GLuint location = GLuint(input.location);
-            AttributeFormat f = attributeFormat(element->VertexElementFormat);
-            glEnableVertexArrayAttrib(va.vao, location);
-            if (input.isInteger)
-                glVertexArrayAttribIFormat(va.vao, location, f.size, f.type, GLuint(element->Offset));
-            else
-                glVertexArrayAttribFormat(va.vao, location, f.size, f.type, f.normalized, GLuint(element->Offset));
-            glVertexArrayAttribBinding(va.vao, location, 0);
+            attributes.push_back({input.location, elements[i]->VertexElementFormat, elements[i]->Offset, input.isInteger});
         }
+        VertexArray va;
+        va.vao = backend->createVertexArray(attributes);
+        ++live.vertexArrays;
         it = vertexArrays.emplace(key, va).first;
     }
     last.array = &it->second;
@@ -288,7 +252,7 @@ GraphicsDevice::Impl::VertexArray& GraphicsDevice::Impl::vertexArrayFor(const Ve
     last.declaration = &declaration;
     last.copy = declaration;
     if (boundVertexArray != it->second.vao) {
-        glBindVertexArray(it->second.vao);
+        backend->bindVertexArray(it->second.vao);
         boundVertexArray = it->second.vao;
     }
     return it->second;

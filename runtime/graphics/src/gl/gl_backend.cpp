@@ -114,11 +114,70 @@ public:
     void writeBuffer(BackendObject buffer, std::size_t offset, std::size_t bytes, const void* data) override {
         glNamedBufferSubData(buffer, GLintptr(offset), GLsizeiptr(bytes), data);
     }
+    void bindUniformBuffer(int binding, BackendObject buffer) override {
+        glBindBufferBase(GL_UNIFORM_BUFFER, GLuint(binding), buffer);
+    }
+    int uniformLocation(BackendObject program, const char* name) override { return glGetUniformLocation(program, name); }
+    void setUniform(BackendObject program, int location, int value) override { glProgramUniform1i(program, location, value); }
+    void setUniform(BackendObject program, int location, float value) override { glProgramUniform1f(program, location, value); }
+    BackendObject createPipeline(const std::array<BackendObject, 5>& stagePrograms) override;
+    void bindPipeline(BackendObject pipeline) override { glBindProgramPipeline(pipeline); }
+    BackendObject createVertexArray(const std::vector<VertexAttribute>& attributes) override;
+    void bindVertexArray(BackendObject vertexArray) override { glBindVertexArray(vertexArray); }
 };
+
+struct AttributeFormat {
+    GLint size;
+    GLenum type;
+    GLboolean normalized;
+};
+
+AttributeFormat attributeFormat(VertexElementFormat f) {
+    switch (f) {
+    case VertexElementFormat::Single: return {1, GL_FLOAT, GL_FALSE};
+    case VertexElementFormat::Vector2: return {2, GL_FLOAT, GL_FALSE};
+    case VertexElementFormat::Vector3: return {3, GL_FLOAT, GL_FALSE};
+    case VertexElementFormat::Vector4: return {4, GL_FLOAT, GL_FALSE};
+    case VertexElementFormat::Color: return {4, GL_UNSIGNED_BYTE, GL_TRUE};
+    case VertexElementFormat::Byte4: return {4, GL_UNSIGNED_BYTE, GL_FALSE};
+    case VertexElementFormat::Short2: return {2, GL_SHORT, GL_FALSE};
+    case VertexElementFormat::Short4: return {4, GL_SHORT, GL_FALSE};
+    case VertexElementFormat::NormalizedShort2: return {2, GL_SHORT, GL_TRUE};
+    case VertexElementFormat::NormalizedShort4: return {4, GL_SHORT, GL_TRUE};
+    case VertexElementFormat::HalfVector2: return {2, GL_HALF_FLOAT, GL_FALSE};
+    case VertexElementFormat::HalfVector4: return {4, GL_HALF_FLOAT, GL_FALSE};
+    }
+    return {4, GL_FLOAT, GL_FALSE};
+}
 
 }  // namespace
 
 std::unique_ptr<Backend> createGlBackend() { return std::make_unique<GlBackend>(); }
+
+BackendObject GlBackend::createPipeline(const std::array<BackendObject, 5>& programs) {
+    GLuint pipeline = 0;
+    glCreateProgramPipelines(1, &pipeline);
+    glUseProgramStages(pipeline, GL_VERTEX_SHADER_BIT, programs[0]);
+    glUseProgramStages(pipeline, GL_FRAGMENT_SHADER_BIT, programs[1]);
+    if (programs[2]) glUseProgramStages(pipeline, GL_GEOMETRY_SHADER_BIT, programs[2]);
+    if (programs[3]) glUseProgramStages(pipeline, GL_TESS_CONTROL_SHADER_BIT, programs[3]);
+    if (programs[4]) glUseProgramStages(pipeline, GL_TESS_EVALUATION_SHADER_BIT, programs[4]);
+    return pipeline;
+}
+
+BackendObject GlBackend::createVertexArray(const std::vector<VertexAttribute>& attributes) {
+    GLuint vao = 0;
+    glCreateVertexArrays(1, &vao);
+    for (const VertexAttribute& a : attributes) {
+        const GLuint location = GLuint(a.location);
+        const AttributeFormat f = attributeFormat(a.format);
+        glEnableVertexArrayAttrib(vao, location);
+        if (a.integer) glVertexArrayAttribIFormat(vao, location, f.size, f.type, GLuint(a.offset));
+        else glVertexArrayAttribFormat(vao, location, f.size, f.type, f.normalized, GLuint(a.offset));
+        glVertexArrayAttribBinding(vao, location, 0);
+    }
+    return vao;
+}
 
 void GlBackend::setBlend(const BlendState& w, const BlendState* had) {
     const bool forceAll = had == nullptr;
