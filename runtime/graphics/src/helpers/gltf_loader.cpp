@@ -159,6 +159,67 @@ double decodeComponent(const unsigned char* p, int componentType, bool normalize
 // a tiny file asking for gigabytes.
 constexpr std::size_t kMaxZeroFilledElements = std::size_t(1) << 26;
 
+// One primitive's vertices as addPrimitive builds them (normals and tangents empty when the file
+// has none).
+struct PrimitiveVertices {
+    std::vector<Vector3> p, n;
+    std::vector<Vector2> uv;
+    std::vector<Vector4> t;
+    bool hasNormals = false;
+};
+
+// glTF: "When normals are not specified, client implementations MUST calculate flat normals."
+// Unshares the vertices so each triangle carries its own face normal; `triangles` becomes 0, 1, 2 ...
+void unshareWithFlatNormals(PrimitiveVertices& v, std::vector<std::uint32_t>& triangles) {
+    std::vector<Vector3> fp, fn;
+    std::vector<Vector2> fuv;
+    std::vector<Vector4> ft;
+    for (std::size_t i = 0; i < triangles.size(); i += 3) {
+        const Vector3 a = v.p[triangles[i]], b = v.p[triangles[i + 1]], c = v.p[triangles[i + 2]];
+        Vector3 face = Vector3::Cross(b - a, c - a);
+        const float length = face.Length();
+        face = length > 0.0f && std::isfinite(length) ? face / length : Vector3::UnitZ;
+        for (std::size_t k = 0; k < 3; ++k) {
+            const std::uint32_t vertex = triangles[i + k];
+            fp.push_back(v.p[vertex]);
+            fn.push_back(face);
+            fuv.push_back(v.uv[vertex]);
+            if (!v.t.empty()) {
+                ft.push_back(v.t[vertex]);
+            }
+        }
+    }
+    v.p = std::move(fp);
+    v.n = std::move(fn);
+    v.uv = std::move(fuv);
+    v.t = std::move(ft);
+    for (std::size_t i = 0; i < triangles.size(); ++i) {
+        triangles[i] = std::uint32_t(i);
+    }
+}
+
+// Appends the vertices (tangent frames from t, XNA's binormal) and the triangles, reversed from
+// glTF's counter-clockwise fronts to XNA's clockwise ones, as one part of `mesh`.
+void appendPart(GltfMesh& mesh, GltfPart part, const PrimitiveVertices& v, const std::vector<std::uint32_t>& triangles) {
+    part.vertexOffset = int(mesh.vertices.size());
+    part.numVertices = int(v.p.size());
+    part.startIndex = int(mesh.indices.size());
+    part.primitiveCount = int(triangles.size() / 3);
+    for (std::size_t i = 0; i < v.p.size(); ++i) {
+        ModelVertex vertex;
+        vertex.Position = v.p[i];
+        vertex.Normal = v.n[i];
+        vertex.TextureCoordinate = v.uv[i];
+        vertex.Tangent = Vector3(v.t[i].X, v.t[i].Y, v.t[i].Z);
+        vertex.Binormal = Vector3::Cross(v.n[i], vertex.Tangent) * v.t[i].W;
+        mesh.vertices.push_back(vertex);
+    }
+    for (std::size_t i = 0; i < triangles.size(); i += 3) {
+        mesh.indices.insert(mesh.indices.end(), {triangles[i], triangles[i + 2], triangles[i + 1]});
+    }
+    mesh.parts.push_back(part);
+}
+
 class GltfReader {
 public:
     GltfReader(const std::string& path, const tinygltf::Model& gltf, std::string warnings)
@@ -183,6 +244,11 @@ private:
     int materialFor(int gltfMaterial, const std::string& what);
     int imageForTexture(int textureIndex, const std::string& what);
     void addPrimitive(GltfMesh& mesh, int meshIndex, int primitiveIndex);
+    // addPrimitive's steps: the triangle list in glTF winding (indices or vertex order, strips and
+    // fans unrolled; empty: nothing to draw), and the vertex attributes it indexes.
+    std::vector<std::uint32_t> triangleList(const tinygltf::Primitive& primitive, int mode, std::size_t count,
+                                            const std::string& what);
+    PrimitiveVertices readVertices(const tinygltf::Primitive& primitive, const std::string& what);
 
     const std::string& path_;
     const tinygltf::Model& gltf_;
@@ -425,7 +491,34 @@ void GltfReader::addPrimitive(GltfMesh& mesh, int meshIndex, int primitiveIndex)
              (mode >= 0 && mode < 4 ? std::string(" (") + names[mode] + ")" : std::string()) +
              "; a Model holds triangles only");
     }
+    PrimitiveVertices v = readVertices(primitive, what);
+    std::vector<std::uint32_t> triangles = triangleList(primitive, mode, v.p.size(), what);
+    if (triangles.empty()) {
+        return;
+    }
+    if (!v.hasNormals) {
+        unshareWithFlatNormals(v, triangles);
+    } else {
+        for (Vector3& normal : v.n) {
+            const float length = normal.Length();
+            if (length > 0.0f && std::isfinite(length)) {
+                normal /= length;
+            }
+        }
+    }
+    if (v.t.empty()) {
+        v.t = generateTangents(v.p, v.n, v.uv, triangles);
+    }
+    if (v.p.size() > std::size_t(std::numeric_limits<int>::max()) - mesh.vertices.size() ||
+        triangles.size() > std::size_t(std::numeric_limits<int>::max()) - mesh.indices.size()) {
+        fail(describeMesh(meshIndex) + ": too many vertices or indices");
+    }
+    GltfPart part;
+    part.material = materialFor(primitive.material, what);
+    appendPart(mesh, part, v, triangles);
+}
 
+PrimitiveVertices GltfReader::readVertices(const tinygltf::Primitive& primitive, const std::string& what) {
     auto attribute = [&](const char* name) { return primitive.attributes.find(name); };
     const auto positionIt = attribute("POSITION");
     if (positionIt == primitive.attributes.end()) {
@@ -459,6 +552,37 @@ void GltfReader::addPrimitive(GltfMesh& mesh, int meshIndex, int primitiveIndex)
     const AccessorData uvs = optional("TEXCOORD_0", {2});
     const AccessorData tangents = optional("TANGENT", {3, 4});
 
+    auto vec3 = [](const AccessorData& data, std::size_t i) {
+        const double* values = &data.values[i * std::size_t(data.components)];
+        return Vector3(float(values[0]), float(values[1]), float(values[2]));
+    };
+    PrimitiveVertices v;
+    v.hasNormals = normals.count != 0;
+    v.p.resize(count);
+    v.n.resize(count);
+    v.uv.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        v.p[i] = vec3(positions, i);
+        if (normals.count) {
+            v.n[i] = vec3(normals, i);
+        }
+        if (uvs.count) {
+            v.uv[i] = Vector2(float(uvs.values[i * 2]), float(uvs.values[i * 2 + 1]));
+        }
+    }
+    if (tangents.count) {
+        v.t.resize(count);
+        for (std::size_t i = 0; i < count; ++i) {
+            const Vector3 xyz = vec3(tangents, i);
+            const float w = tangents.components == 4 && tangents.values[i * 4 + 3] < 0.0 ? -1.0f : 1.0f;
+            v.t[i] = Vector4(xyz, w);
+        }
+    }
+    return v;
+}
+
+std::vector<std::uint32_t> GltfReader::triangleList(const tinygltf::Primitive& primitive, int mode, std::size_t count,
+                                                    const std::string& what) {
     // Vertex order of the triangle list, before any unsharing.
     std::vector<std::uint32_t> order;
     if (primitive.indices >= 0) {
@@ -500,99 +624,7 @@ void GltfReader::addPrimitive(GltfMesh& mesh, int meshIndex, int primitiveIndex)
             }
         }
     }
-    if (triangles.empty()) {
-        return;
-    }
-
-    auto vec3 = [](const AccessorData& data, std::size_t i) {
-        const double* v = &data.values[i * std::size_t(data.components)];
-        return Vector3(float(v[0]), float(v[1]), float(v[2]));
-    };
-    std::vector<Vector3> p(count), n(count);
-    std::vector<Vector2> uv(count);
-    std::vector<Vector4> t;
-    for (std::size_t i = 0; i < count; ++i) {
-        p[i] = vec3(positions, i);
-        if (normals.count) {
-            n[i] = vec3(normals, i);
-        }
-        if (uvs.count) {
-            uv[i] = Vector2(float(uvs.values[i * 2]), float(uvs.values[i * 2 + 1]));
-        }
-    }
-    if (tangents.count) {
-        t.resize(count);
-        for (std::size_t i = 0; i < count; ++i) {
-            const Vector3 xyz = vec3(tangents, i);
-            const float w = tangents.components == 4 && tangents.values[i * 4 + 3] < 0.0 ? -1.0f : 1.0f;
-            t[i] = Vector4(xyz, w);
-        }
-    }
-
-    if (!normals.count) {
-        // glTF: "When normals are not specified, client implementations MUST calculate flat normals."
-        // Unshare the vertices so each triangle carries its own face normal.
-        std::vector<Vector3> fp, fn;
-        std::vector<Vector2> fuv;
-        std::vector<Vector4> ft;
-        for (std::size_t i = 0; i < triangles.size(); i += 3) {
-            const Vector3 a = p[triangles[i]], b = p[triangles[i + 1]], c = p[triangles[i + 2]];
-            Vector3 face = Vector3::Cross(b - a, c - a);
-            const float length = face.Length();
-            face = length > 0.0f && std::isfinite(length) ? face / length : Vector3::UnitZ;
-            for (std::size_t k = 0; k < 3; ++k) {
-                const std::uint32_t v = triangles[i + k];
-                fp.push_back(p[v]);
-                fn.push_back(face);
-                fuv.push_back(uv[v]);
-                if (!t.empty()) {
-                    ft.push_back(t[v]);
-                }
-            }
-        }
-        p = std::move(fp);
-        n = std::move(fn);
-        uv = std::move(fuv);
-        t = std::move(ft);
-        for (std::size_t i = 0; i < triangles.size(); ++i) {
-            triangles[i] = std::uint32_t(i);
-        }
-    } else {
-        for (Vector3& normal : n) {
-            const float length = normal.Length();
-            if (length > 0.0f && std::isfinite(length)) {
-                normal /= length;
-            }
-        }
-    }
-    if (t.empty()) {
-        t = generateTangents(p, n, uv, triangles);
-    }
-
-    if (p.size() > std::size_t(std::numeric_limits<int>::max()) - mesh.vertices.size() ||
-        triangles.size() > std::size_t(std::numeric_limits<int>::max()) - mesh.indices.size()) {
-        fail(describeMesh(meshIndex) + ": too many vertices or indices");
-    }
-    GltfPart part;
-    part.vertexOffset = int(mesh.vertices.size());
-    part.numVertices = int(p.size());
-    part.startIndex = int(mesh.indices.size());
-    part.primitiveCount = int(triangles.size() / 3);
-    part.material = materialFor(primitive.material, what);
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        ModelVertex vertex;
-        vertex.Position = p[i];
-        vertex.Normal = n[i];
-        vertex.TextureCoordinate = uv[i];
-        vertex.Tangent = Vector3(t[i].X, t[i].Y, t[i].Z);
-        vertex.Binormal = Vector3::Cross(n[i], vertex.Tangent) * t[i].W;
-        mesh.vertices.push_back(vertex);
-    }
-    // glTF fronts are counter-clockwise, XNA's clockwise: reverse each triangle.
-    for (std::size_t i = 0; i < triangles.size(); i += 3) {
-        mesh.indices.insert(mesh.indices.end(), {triangles[i], triangles[i + 2], triangles[i + 1]});
-    }
-    mesh.parts.push_back(part);
+    return triangles;
 }
 
 int GltfReader::meshFor(int gltfMesh) {

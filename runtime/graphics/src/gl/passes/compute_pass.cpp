@@ -344,6 +344,11 @@ ComputePassStatistics ComputePasses::currentStatistics() {
     return s;
 }
 
+// Over 120 lines, knowingly: the eligibility checks, the program and replay-entry lookups and the
+// five GPU steps (capture, compare, fill, dispatch, fall-back) share some twenty locals (targets,
+// keys, analyses, programs, the entry, the pixel rectangle), and the steps must stay in this order
+// with the device's GL state restored between them. Splitting it belongs with making compute
+// passes a registered pass with plan/try steps (issue 22 item 2), not with moving the file.
 bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCall& call) {
     if ((type != PrimitiveType::TriangleList && type != PrimitiveType::TriangleStrip) || primitiveCount > 2) return false;
     GraphicsDevice::Impl& d = device;
