@@ -23,7 +23,7 @@
 #include "fxport/framework.h"
 #include "common/program_registry.h"
 #include "common/run_options.h"
-#include "fxport/graphics/input.h"
+#include "fxport/framework/input.h"
 #include "fxport/platform/graphics_context.h"
 #include "lighting2d/build_report.h"
 #include "lighting2d/light_renderer.h"

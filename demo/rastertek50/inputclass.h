@@ -10,6 +10,7 @@
 // INCLUDES //
 //////////////
 #include "fxport/graphics.h"
+#include "fxport/framework/input.h"
 
 namespace Rastertek50 {
 

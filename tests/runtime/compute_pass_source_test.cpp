@@ -4,7 +4,7 @@
 // of the replay store. No GL: compute_pass_test.cpp draws with the result.
 #include <gtest/gtest.h>
 
-#include "compute_pass_source.h"
+#include "gl/passes/compute_pass_source.h"
 
 namespace fxport::detail {
 namespace {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "dds_image.h"
+#include "device/dds_image.h"
 #include "fxport/graphics.h"
 
 namespace fxport {

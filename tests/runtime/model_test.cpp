@@ -20,8 +20,8 @@
 #include "fxport/graphics.h"
 #include "fxport/graphics/model.h"
 #include "xna_lighting_reference.h"
-#include "gltf_loader.h"         // runtime/graphics/src: gltfNodeMatrix
-#include "tangent_generation.h"  // runtime/graphics/src: generateTangents
+#include "helpers/gltf_loader.h"         // runtime/graphics/src: gltfNodeMatrix
+#include "helpers/tangent_generation.h"  // runtime/graphics/src: generateTangents
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;

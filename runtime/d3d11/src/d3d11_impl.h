@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "front_end_core.h"
+#include "device/front_end_core.h"
 #include "fxport/d3d11.h"
 #include "fxport/graphics/blend_state.h"
 #include "fxport/graphics/depth_stencil_state.h"

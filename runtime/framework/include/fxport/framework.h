@@ -11,5 +11,6 @@
 #include "fxport/framework/game.h"
 #include "fxport/framework/game_time.h"
 #include "fxport/framework/graphics_device_manager.h"
+#include "fxport/framework/input.h"
 #include "fxport/framework/time_span.h"
 #include "fxport/graphics.h"

@@ -21,7 +21,6 @@
 #include "fxport/graphics/gpu_limits.h"
 #include "fxport/graphics/gpu_timer.h"
 #include "fxport/graphics/graphics_device.h"
-#include "fxport/graphics/input.h"
 #include "fxport/graphics/model.h"
 #include "fxport/graphics/rasterizer_state.h"
 #include "fxport/graphics/render_target.h"

@@ -278,8 +278,7 @@ public:
     // The source path (for messages).
     const std::string& sourcePath() const;
 
-    struct Impl;
-    Impl& impl() { return *impl_; }
+    struct Impl;  // the library's own state (not API)
 
 protected:
     void releaseGpuObjects() override;
@@ -289,7 +288,8 @@ protected:
     virtual EffectPass& OnApply(EffectPass& pass) { return pass; }
 
 private:
-    friend class EffectPass;  // calls OnApply
+    friend class EffectPass;   // calls OnApply
+    friend struct ImplAccess;  // the library reaches Impl through it (src/device/impl_access.h)
     void build();
     void linkWhole(std::shared_ptr<const xlate::CompiledEffect> whole);
     std::unique_ptr<Impl> impl_;

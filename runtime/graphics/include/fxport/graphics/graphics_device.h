@@ -347,11 +347,10 @@ public:
     // The device GL calls currently go to (the last created or made current); nullptr if none.
     static GraphicsDevice* current();
 
-    struct Impl;
-    Impl& impl() { return *impl_; }
-    const Impl& impl() const { return *impl_; }
+    struct Impl;  // the library's own state (not API)
 
 private:
+    friend struct ImplAccess;  // the library reaches Impl through it (src/device/impl_access.h)
     void drawUser(PrimitiveType type, const void* vertices, std::size_t stride, const VertexDeclaration& declaration,
                   int primitiveCount);
     void drawUserIndexed(PrimitiveType type, const void* vertices, std::size_t stride, int vertexCount,

@@ -1,0 +1,289 @@
+// INTERNAL: the device's private state: the backend and the shadow of what it has, the caches of
+// GL objects made from immutable descriptions, and the registry of live resources. Effects, textures
+// and buffers reach it through deviceImpl() (device/impl_access.h).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <unordered_map>
+#include <vector>
+
+#include "device/backend.h"
+#include "device/impl_access.h"
+#include "device/state_shadow.h"
+#include "fxport/graphics/graphics_device.h"
+#include "fxport/platform/gl.h"
+#include "fxport/xlate/texture_fetches.h"
+
+namespace fxport::xlate {
+struct CompiledShader;
+struct SourceLocation;
+}
+
+namespace fxport {
+
+class GraphicsResource;
+struct ComputeAnalysis;
+struct ComputePasses;
+class FragmentRuns;  // fragment_tally.h
+
+// Uniform-buffer binding points per stage: D3D has separate constant slots per stage, so the same
+// HLSL binding (b0 = $Global, b1 = fxport's internal block, b2.. user cbuffers) gets a range per
+// stage. A pixel shader's $Global (its own effect's) never collides with the vertex shader's
+// (SpriteBatch's, say).
+inline constexpr int kUniformBindingsPerStage = 8;
+inline constexpr int kStageCount = 5;  // vertex, pixel, geometry, hull, domain (the draw pipeline)
+inline constexpr int kHullStage = 3, kDomainStage = 4;
+inline constexpr int kComputeStage = 5;  // dispatched alone; its own uniform-binding range
+inline constexpr int kUniformStages = kStageCount + 1;
+inline int uniformBindingFor(int stage, int hlslBinding) { return stage * kUniformBindingsPerStage + hlslBinding; }
+// Moves each uniform block of a linked program from its HLSL binding b to `stage`'s range; once,
+// when the program is made (graphics_device.cpp; compute passes' programs use it too).
+void moveUniformBlocksToStage(GLuint program, int stage);
+inline constexpr int kInternalBlockBinding = 1;
+
+// A compiled shader made into a separable GL program, as the device needs it at draw time.
+struct ShaderProgram {
+    GLuint program = 0;
+    int stage = 0;                              // 0 vertex, 1 pixel, 2 geometry, 3 hull, 4 domain, 5 compute
+    const xlate::CompiledShader* shader = nullptr;  // owned by the effect
+    std::string label;                          // "GBuffer.fx: VertexShaderFunction (vs_2_0)"
+    bool mayDiscard = false;                    // the GLSL has a `discard` (clip, texkill): read once
+    // Pixel shaders: the D3D9 alpha-test variant (xlate::alphaTestVariant), made at the first draw
+    // that needs it; a cache on a record the device otherwise only reads, hence mutable.
+    mutable GLuint alphaTestProgram = 0;
+    mutable GLint alphaFuncLocation = -1, alphaRefLocation = -1;
+    mutable bool alphaTestUnavailable = false;  // the shader writes no colour to test
+    // What compute passes may do with this shader (compute_pass.h), read at its first candidate draw.
+    mutable std::shared_ptr<const ComputeAnalysis> computeAnalysis;
+    // Pixel shaders: texture fetches per fragment, counted at the first draw the tally sees.
+    mutable std::optional<xlate::TextureFetches> textureFetches;
+};
+
+// D3D9 render states GL core lacks, as the last EffectPass::Apply() set them (off unless its pass
+// says otherwise).
+struct PassEmulation {
+    bool alphaTest = false;
+    int alphaFunction = 8;      // D3DCMPFUNC code (8 = ALWAYS)
+    float alphaReference = 0;   // (AlphaRef & 0xFF) / 255
+    bool srgbWrite = false;     // GL_FRAMEBUFFER_SRGB
+    const xlate::SourceLocation* srgbWriteAt = nullptr;  // where the pass set it (for the warning)
+    bool* srgbWriteReported = nullptr;  // the applied effect's "said once" flag
+    bool operator==(const PassEmulation&) const = default;
+};
+
+struct GraphicsDevice::Impl {
+    explicit Impl(GraphicsDevice& owner) : device(owner) {}
+
+    GraphicsDevice& device;
+    GpuObjectCounts live;
+    // The graphics API behind the seam (device/backend.h), and the fixed-function state it has.
+    std::unique_ptr<Backend> backend = createGlBackend();
+    StateShadow shadow{*backend};
+
+    // --- resource registry (so destroying a resource unbinds it everywhere)
+    std::vector<GraphicsResource*> resources;
+    std::vector<Effect*> effects;
+    int nextSerial = 1;
+    void forget(GraphicsResource* resource);
+
+    // --- render targets
+    std::vector<RenderTargetBinding> targets;   // empty = back buffer
+    std::unique_ptr<RenderTarget2D> backBuffer;
+    std::map<std::vector<std::uint64_t>, GLuint> framebuffers;  // attachment key -> FBO
+    GLuint boundFramebuffer = 0;
+    int targetWidth = 0, targetHeight = 0;
+    void bindTargets();
+    // What targetsBoundSinceMark() returns (after the first mark, the bindings of every SetRenderTargets).
+    std::vector<RenderTargetBinding> boundSinceMark;
+    bool trackingBoundTargets = false;  // set by the first markBoundTargets(): hosts that never check pay nothing
+    int widestColorBytesSinceMark = 0;  // colorBytesPerFragmentSinceMark()
+    bool blendedSinceMark = false;      // set by flush() while tracking
+    std::vector<WrittenTarget> writtenSinceMark;  // targetsWrittenSinceMark(), noted by flush() and executeClear()
+    void noteWrittenTargets(bool color, bool depthStencil, const Rectangle& area, bool cleared);  // area: what the draw or clear covers
+    void noteDrawnTargets();  // flush(): what the draw may write (its viewport within the scissor; depth if tested)
+    std::shared_ptr<FragmentRuns> fragmentTally;  // tallyFragments(true); null when off
+    void tallyDraw();  // before a draw: its pixel shader's fetches to the tally (fragment_tally.cpp)
+    void noteBoundTargets();
+    // A depth/stencil buffer of its own that replaces the first target's (front_end_core.h: D3D11's
+    // depth-stencil views are apart from render targets). Null for XNA, whose targets own theirs.
+    DepthStorage* depthOverride = nullptr;
+    void generateMipsOfUnboundTargets(const std::vector<RenderTargetBinding>& previous);
+
+    // --- shaders set by EffectPass::Apply (a stage left null keeps what was there)
+    std::array<const ShaderProgram*, kStageCount> shaders{};
+    bool passApplied = false;
+    PassEmulation emulation;         // wanted (set by Apply)
+    // SRGBWriteEnable drawing into an 8-bit target that is not sRGB-encoded: GL writes unconverted
+    // where D3D9 encoded. Reported once per effect, through the effect warning handler.
+    void reportUnencodedSrgbWrite();
+    // Picks the pixel program: the shader's own, or its alpha-test variant (made on first use).
+    GLuint pixelProgramFor(const ShaderProgram& program);
+    std::map<std::tuple<GLuint, GLuint, GLuint, GLuint, GLuint>, GLuint> pipelines;  // vs, ps, gs, hs, ds
+    GLuint boundPipeline = 0;
+
+    // --- uniform buffers: wanted (set by Apply) and bound
+    std::array<GLuint, kUniformStages * kUniformBindingsPerStage> wantedUniformBuffers{};
+    std::array<GLuint, kUniformStages * kUniformBindingsPerStage> boundUniformBuffers{};
+
+    // --- D3D11 stages (storage_bindings.cpp, compute_dispatch.cpp, tessellated_draw.cpp)
+    const ShaderProgram* computeShader = nullptr;  // the last applied pass's SetComputeShader
+    // What SetUnorderedAccess / SetShaderResource put in a slot: a buffer or a texture's level 0.
+    struct StorageSlot {
+        const GraphicsResource* resource = nullptr;
+        GLuint name = 0;
+        bool image = false;
+        GLenum format = 0;  // images: the texture's internal format
+    };
+    std::array<StorageSlot, kMaxUnorderedAccessSlots> unorderedAccess{};
+    std::array<StorageSlot, kMaxShaderResourceBuffers> resourceBuffers{};
+    // Binds the storage `programs` declare (their StorageBinding lists) from the slots above; returns
+    // whether one of them may write (so a barrier must follow). `what` names the call for errors.
+    bool applyStorage(const ShaderProgram* const* programs, std::size_t count, const char* what);
+    // Work that may write through images or SSBOs sets storageDirty; storageBarrier(), called
+    // before every later draw, dispatch, buffer or texture transfer, places one barrier of all bits
+    // so that access sees the writes (D3D11 orders UAV writes before any later use; GL does not).
+    bool storageDirty = false;
+    void storageBarrier();
+    void forgetStorage(const GraphicsResource* resource);  // a disposed buffer or texture leaves its slots
+    // Draws with the pipeline flush() set up, checking the tessellation stages agree with `patches`.
+    void checkTessellation(bool patches, const char* what) const;
+    bool patchDraw = false;  // set by DrawPatches around its flush
+    std::map<GLuint, GLuint> computePipelines;  // compute program -> its pipeline
+    void dispatch(GLuint x, GLuint y, GLuint z);  // DispatchCompute after its checks
+    void dropComputePipelinesUsing(GLuint program);
+    GLuint internalBuffer = 0;           // fxport_Internal { float4 fxport_PixelOffset; }
+    std::array<float, 4> pixelOffset{};  // what internalBuffer holds
+
+    // --- vertex input
+    VertexBuffer* vertexBuffer = nullptr;
+    int vertexOffset = 0;
+    struct VertexArray {
+        GLuint vao = 0;
+        GLuint buffer = 0;
+        GLintptr offset = -1;
+        GLsizei stride = 0;
+        GLuint elements = 0;
+    };
+    std::unordered_map<std::string, VertexArray> vertexArrays;  // key: declaration + VS program
+    struct LastVertexArray {
+        const VertexDeclaration* declaration = nullptr;
+        VertexDeclaration copy;
+        GLuint program = 0;
+        VertexArray* array = nullptr;
+    } lastVertexArray;
+    GLuint boundVertexArray = 0;
+    VertexArray& vertexArrayFor(const VertexDeclaration& declaration);
+    // The VAO for the current vertex buffer and vertex shader, with the buffer attached at the
+    // SetVertexBuffer offset.
+    VertexArray& bindVertexBuffer();
+
+    // Streaming buffers for DrawUser(Indexed)Primitives: written with orphaning.
+    GLuint userVertices = 0, userIndices = 0;
+    GLsizeiptr userVerticesSize = 0, userIndicesSize = 0;
+    void streamUserData(GLuint& buffer, GLsizeiptr& capacity, const void* data, GLsizeiptr bytes);
+
+    // --- texture and sampler bindings (the fixed-function state is `shadow`'s)
+    std::array<GLuint, kMaxTextureSlots> boundTextures{};
+    std::array<GLuint, kMaxTextureSlots> boundSamplers{};
+    std::array<SamplerState, kMaxTextureSlots> boundSamplerStates{};  // what boundSamplers were made from
+    std::map<std::array<std::uint8_t, sizeof(SamplerState)>, GLuint> samplerObjects;  // SamplerState bytes -> GL sampler
+    GLuint samplerFor(const SamplerState& state);
+
+    void applyViewport(const fxport::Viewport& wanted);  // and the D3D9 pixel offset that depends on it
+    void applyTextures();
+    void applyTexturesOf(const ShaderProgram* const* programs, std::size_t count);  // for compute dispatches too
+    void applyShaders();
+
+    // Everything a draw needs, compared against the shadow. `what` names the draw call for errors.
+    void flush(const char* what);
+
+    // --- clears of the bound targets not yet sent to GL (pending_clear.cpp). A clear of the whole
+    // target (the one SetRenderTargets does for DiscardContents, and Clear over a full viewport) is
+    // recorded per channel, a later clear of the same channel replaces it, and it reaches GL when
+    // something needs that channel: colour before any draw or read-back of a bound target, depth and
+    // stencil before a draw that tests them. Leaving a DiscardContents target drops a depth/stencil
+    // clear nothing used (its next binding clears them again and nothing can read them); colour is
+    // always executed (the target may be sampled).
+    struct PendingClear {
+        unsigned options = 0;  // ClearOptions bits still to execute
+        Vector4 color;
+        float depth = 1;
+        int stencil = 0;
+    } pendingClear;
+    bool deferClears = true;  // PresentationParameters::DeferClears and $FXPORT_DEFER_CLEARS
+    bool honourDiscards = true;  // PresentationParameters::HonourDiscards and $FXPORT_HONOUR_DISCARDS
+    bool dropCoveredClears = true;  // PresentationParameters::DropCoveredClears and $FXPORT_DROP_COVERED_CLEARS
+    void discardContents(unsigned options);               // GraphicsDevice::DiscardContents
+    // SpriteBatch, before drawing a batch with a sprite whose rectangle covers the whole viewport:
+    // drops the pending colour clear if the draw must write every pixel (pending_clear.cpp).
+    void dropColorClearUnderCoveringSprite(const ShaderProgram* spriteVertexShader);
+    ClearStatistics clearStats;
+    // PresentationParameters::ComputePasses and $FXPORT_COMPUTE_PASSES: null when off (compute_pass.h).
+    std::shared_ptr<ComputePasses> computePasses;
+    void executeClear(const Rectangle& rect, unsigned options, const Vector4& color, float depth, int stencil);
+    void recordClear(unsigned options, const Vector4& color, float depth, int stencil);
+    void resolvePendingClear(unsigned options);           // executes the pending part within `options`
+    void resolvePendingClearBeforeDraw(const fxport::DepthStencilState& state);
+    void resolvePendingClearBeforeRead(const Texture* texture);
+    void leaveBoundTargets();                               // before SetRenderTargets changes them
+    fxport::RenderTargetUsage boundUsage() const;           // of the bound targets (the first one's, or the back buffer's)
+
+    // --- depth/stencil storage made when a draw first needs it (depth_storage.cpp)
+    bool lazyDepthStorage = true;  // PresentationParameters::LazyDepthStorage and $FXPORT_LAZY_DEPTH
+    DepthStorageStatistics depthStats;
+    void adoptDepthStorage(DepthStorage& storage);    // a target made with it: counted; made now unless lazy
+    void releaseDepthStorage(DepthStorage& storage);  // the target is released
+    DepthStorage* boundDepthStorage();                // the first bound target's (XNA: MRT use its buffer)
+    // Before a draw: makes the bound depth/stencil buffer if the draw tests depth or stencil.
+    void makeDepthStorageFor(const fxport::DepthStencilState& state);
+    void makeDepthStorage(DepthStorage& storage);     // makes it, rebinds, runs its waiting clear
+    bool depthTestPassesAll(const fxport::DepthStencilState& state, const DepthStorage& storage) const;
+    // Writes neither depth nor stencil and its depth test cannot fail against the bound buffer's
+    // known clear (depthTestPassesAll): such a draw draws what no test draws.
+    bool depthTestIsMoot(const fxport::DepthStencilState& state);
+    bool drawDepthTestMoot = false;  // flush's depthTestIsMoot for the draw it prepared (compute_pass.cpp reads it)
+    // A blend whose every destination is the zero clear executed for this draw, on unsigned-
+    // normalized targets, with source factor One and Add, Subtract or Max: src * 1 + 0 * factor is
+    // src (factors are finite there), so the draw writes (pending_clear.cpp, blendOverZeroClearIsWrite).
+    // flush decides it; compute_pass.cpp reads drawBlend, the blend the draw has.
+    bool blendOverZeroClearIsWrite() const;
+    bool drawBlendIsWrite = false;
+    fxport::BlendState drawWriteBlend;  // the device's blend with blending off, when drawBlendIsWrite
+    const fxport::BlendState& drawBlend() const { return drawBlendIsWrite ? drawWriteBlend : device.BlendState; }
+    // executeClear's depth/stencil bits for a bound buffer not made yet: a whole-target clear waits
+    // on the target (returned without those bits), a partial one makes the buffer first.
+    unsigned holdDepthClear(const Rectangle& rect, unsigned options, float depth, int stencil);
+    void discardWaitingDepthClear(unsigned options, long& counter);  // DiscardContents / leaving
+    void leaveDiscardedDepth();  // leaving a DiscardContents target: its depth/stencil is not kept
+
+    // GL object bookkeeping: every create/delete goes through these so liveGpuObjects() is exact.
+    GLuint createTexture(GLenum target);
+    void deleteTexture(GLuint& name);
+    GLuint createBuffer();
+    void deleteBuffer(GLuint& name);
+    GLuint createRenderbuffer();
+    void deleteRenderbuffer(GLuint& name);
+    // Programs are shared by (stage, GLSL text) and reference-counted.
+    GLuint createProgram(GLenum stage, const std::string& source, const std::string& label);
+    struct CachedProgram {
+        GLuint program = 0;
+        int references = 0;
+    };
+    std::map<std::pair<GLenum, std::string>, CachedProgram> programCache;
+    void deleteProgram(GLuint& name);
+    GLuint createQuery(GLenum target);
+    void deleteQuery(GLuint& name);
+    // Forgets FBOs, pipelines and VAOs that mention a deleted texture / program / buffer.
+    void dropFramebuffersUsing(GLuint texture);
+    void dropPipelinesUsing(GLuint program);
+    void dropVertexArraysUsing(GLuint program);
+    void releaseAll();
+};
+
+}  // namespace fxport

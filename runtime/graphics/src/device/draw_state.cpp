@@ -1,0 +1,261 @@
+// What every draw does before the draw call: validate, then bring shaders, uniform buffers,
+// textures, samplers, vertex layout and fixed-function state up to date, touching only what
+// changed since the last draw. No GL here: the backend (device/backend.h) says it in GL's words.
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <iostream>
+#include <optional>
+
+#include "device/device_impl.h"
+#include "device/vertex_input.h"
+#include "effect/effect_impl.h"
+#include "fxport/graphics/errors.h"
+#include "fxport/graphics/texture.h"
+#include "fxport/xlate/alpha_test.h"
+#include "fxport/xlate/compiled_effect.h"
+
+namespace fxport {
+
+namespace {
+
+// D3D leaves a bound render target alone when the pixel shader writes nothing to it (a depth-only
+// pass whose shader only clip()s); GL writes undefined values there (llvmpipe: whatever its output
+// registers held, which ASan builds showed as garbage). So targets at and past the shader's outputs
+// get their colour writes masked off.
+fxport::BlendState blendForPixelShader(const fxport::BlendState& wanted, int outputTargets) {
+    fxport::BlendState effective = wanted;
+    fxport::ColorWriteChannels* channels[4] = {&effective.ColorWriteChannels, &effective.ColorWriteChannels1,
+                                               &effective.ColorWriteChannels2, &effective.ColorWriteChannels3};
+    for (int i = std::max(outputTargets, 0); i < 4; ++i) *channels[i] = fxport::ColorWriteChannels::None;
+    return effective;
+}
+
+std::string textureName(const Texture* t) { return t->Name.empty() ? std::string("(unnamed)") : "'" + t->Name + "'"; }
+
+}  // namespace
+
+void GraphicsDevice::Impl::flush(const char* what) {
+    if (!passApplied || !shaders[0] || !shaders[1])
+        throw InvalidOperation(std::string(what) +
+                               ": no effect pass is applied (call effect.CurrentTechnique->Passes[i].Apply() first)");
+    checkTessellation(patchDraw, what);
+    storageBarrier();  // what an earlier dispatch or draw wrote through images or SSBOs, before this draw uses it
+    if (boundFramebuffer == 0) bindTargets();
+    makeDepthStorageFor(device.DepthStencilState);  // a buffer nothing needed until now (depth_storage.cpp)
+    // A depth test that cannot fail against the known clear and writes nothing (DepthRead against
+    // the far clear: the deferred G-buffer's clear quad) needs neither the clear nor the test: it
+    // draws as with the test off and the clear waits for a draw that reads or writes depth (so a
+    // compute pass can take such a draw; compute_pass.cpp). A buffer not made yet is not attached
+    // (GL passes the test) and its clear already waits on the target (depth_storage.cpp).
+    const fxport::DepthStencilState& wanted = device.DepthStencilState;
+    drawDepthTestMoot = wanted.DepthBufferEnable && depthTestIsMoot(wanted);
+    const bool testOff = drawDepthTestMoot && boundDepthStorage()->renderbuffer != 0;
+    // Decided before the clear is executed (it is pending until then), applied after.
+    drawBlendIsWrite = blendOverZeroClearIsWrite();
+    if (drawBlendIsWrite) {
+        drawWriteBlend = device.BlendState;
+        drawWriteBlend.ColorSourceBlend = drawWriteBlend.AlphaSourceBlend = fxport::Blend::One;
+        drawWriteBlend.ColorDestinationBlend = drawWriteBlend.AlphaDestinationBlend = fxport::Blend::Zero;
+        drawWriteBlend.ColorBlendFunction = drawWriteBlend.AlphaBlendFunction = fxport::BlendFunction::Add;
+        ++clearStats.blendsAsWrites;
+    }
+    resolvePendingClearBeforeDraw(testOff ? fxport::DepthStencilState::None : wanted);
+    shadow.setBlend(blendForPixelShader(drawBlend(), shaders[1]->shader->outputTargets));
+    if (trackingBoundTargets && drawBlend().blendingEnabled()) blendedSinceMark = true;
+    noteDrawnTargets();
+    shadow.setDepthStencil(testOff ? fxport::DepthStencilState::None : wanted);
+    shadow.setRasterizer(device.RasterizerState);
+    applyViewport(device.Viewport);
+    shadow.setScissor(device.ScissorRectangle);
+    applyShaders();
+    applyTextures();
+    if (applyStorage(shaders.data(), shaders.size(), what)) storageDirty = true;  // the draw writes: barrier before what follows
+    shadow.setSrgbWrite(emulation.srgbWrite);
+    if (emulation.srgbWrite) reportUnencodedSrgbWrite();
+    tallyDraw();
+    shadow.settle();
+}
+
+void GraphicsDevice::Impl::reportUnencodedSrgbWrite() {
+    // D3D9 encodes into 8-bit colour targets only: float and packed formats are written as they
+    // are there too, and an sRGB-encoded target (SurfaceFormat::ColorSRgb) is converted by GL.
+    const Texture* target = targets.empty() ? nullptr : targets[0].RenderTarget;
+    const SurfaceFormat format = target ? target->Format() : device.PresentationParameters().BackBufferFormat;
+    if (format != SurfaceFormat::Color || !emulation.srgbWriteAt || !emulation.srgbWriteReported || *emulation.srgbWriteReported) return;
+    *emulation.srgbWriteReported = true;
+    const xlate::SourceLocation& at = *emulation.srgbWriteAt;
+    xlate::Diagnostic d;
+    d.severity = xlate::Severity::Warning;
+    d.id = xlate::diag::kUnhonouredState;
+    d.location = at;
+    d.message = "state 'SRGBWriteEnable' is not honoured drawing into " +
+                (!target ? std::string("the back buffer")
+                         : target->Name.empty() ? std::string("a render target") : "render target '" + target->Name + "'") +
+                " (SurfaceFormat::Color): GL encodes sRGB only into SurfaceFormat::ColorSRgb targets, so the colours are "
+                "written unconverted";
+    reportEffectWarning(d.format());
+}
+
+GLuint GraphicsDevice::Impl::pixelProgramFor(const ShaderProgram& program) {
+    if (!emulation.alphaTest || program.alphaTestUnavailable) return program.program;
+    if (!program.alphaTestProgram) {
+        std::optional<std::string> glsl = xlate::alphaTestVariant(program.shader->glsl);
+        if (!glsl) {
+            program.alphaTestUnavailable = true;
+            std::cerr << "fxport: " << program.label << ": AlphaTestEnable is set but the shader writes no float4 colour to"
+                      << " render target 0; drawing without the alpha test\n";
+            return program.program;
+        }
+        program.alphaTestProgram = createProgram(GL_FRAGMENT_SHADER, *glsl, program.label + " [alpha test]");
+        program.alphaFuncLocation = backend->uniformLocation(program.alphaTestProgram, xlate::kAlphaFuncUniform);
+        program.alphaRefLocation = backend->uniformLocation(program.alphaTestProgram, xlate::kAlphaRefUniform);
+    }
+    backend->setUniform(program.alphaTestProgram, program.alphaFuncLocation, emulation.alphaFunction);
+    backend->setUniform(program.alphaTestProgram, program.alphaRefLocation, emulation.alphaReference);
+    return program.alphaTestProgram;
+}
+
+void GraphicsDevice::Impl::applyShaders() {
+    GLuint vs = shaders[0]->program, ps = pixelProgramFor(*shaders[1]), gs = shaders[2] ? shaders[2]->program : 0;
+    GLuint hs = shaders[kHullStage] ? shaders[kHullStage]->program : 0, ds = shaders[kDomainStage] ? shaders[kDomainStage]->program : 0;
+    auto key = std::make_tuple(vs, ps, gs, hs, ds);
+    auto it = pipelines.find(key);
+    GLuint pipeline = 0;
+    if (it != pipelines.end()) {
+        pipeline = it->second;
+    } else {
+        pipeline = backend->createPipeline({vs, ps, gs, hs, ds});
+        ++live.pipelines;
+        pipelines.emplace(key, pipeline);
+    }
+    if (pipeline != boundPipeline) {
+        backend->bindPipeline(pipeline);
+        boundPipeline = pipeline;
+    }
+    for (std::size_t i = 0; i < wantedUniformBuffers.size(); ++i) {
+        if (wantedUniformBuffers[i] == boundUniformBuffers[i] || i % kUniformBindingsPerStage == kInternalBlockBinding) continue;
+        backend->bindUniformBuffer(int(i), wantedUniformBuffers[i]);
+        boundUniformBuffers[i] = wantedUniformBuffers[i];
+    }
+}
+
+void GraphicsDevice::Impl::applyTextures() { applyTexturesOf(shaders.data(), shaders.size()); }
+
+void GraphicsDevice::Impl::applyTexturesOf(const ShaderProgram* const* programs, std::size_t count) {
+    for (std::size_t p = 0; p < count; ++p) {
+        const ShaderProgram* program = programs[p];
+        if (!program) continue;
+        for (const xlate::SamplerBinding& sampler : program->shader->samplers) {
+            int unit = sampler.unit;
+            if (unit < 0 || unit >= kMaxTextureSlots) continue;
+            Texture* texture = device.Textures[unit].get();
+            GLuint name = texture ? texture->glName() : 0;
+            if (texture) {
+                if (&texture->device() != &device)  // its GL name means nothing in this device's context
+                    throw InvalidOperation("Draw: texture " + textureName(texture) + " in Textures[" + std::to_string(unit) +
+                                           "] was made by another GraphicsDevice; make it with this one");
+                for (const RenderTargetBinding& b : targets)
+                    if (b.RenderTarget == texture)
+                        throw InvalidOperation("Draw: texture " + textureName(texture) + " in Textures[" +
+                                               std::to_string(unit) + "] is also the current render target; " +
+                                               "set another render target (or clear the slot) before sampling it");
+                bool cube = texture->kind() == Texture::Kind::TextureCube;
+                if (cube != (sampler.kind == xlate::TextureKind::TextureCube))
+                    throw InvalidOperation(std::string("Draw: ") + program->label + " samples a " +
+                                           (cube ? "2D" : "cube") + " texture at unit " + std::to_string(unit) +
+                                           " but Textures[" + std::to_string(unit) + "] holds a " +
+                                           (cube ? "cube" : "2D") + " texture " + textureName(texture));
+            }
+            if (shadow.unknown() || boundTextures[std::size_t(unit)] != name) {
+                backend->bindTexture(unit, name);
+                boundTextures[std::size_t(unit)] = name;
+            }
+            // The sampler-object lookup (a map keyed by the state's bytes) runs only when the
+            // slot's state differs from what is bound, not on every draw.
+            const SamplerState& wanted = device.SamplerStates[unit];
+            std::size_t u = std::size_t(unit);
+            if (shadow.unknown() || boundSamplers[u] == 0 || !(boundSamplerStates[u] == wanted)) {
+                GLuint object = samplerFor(wanted);
+                if (shadow.unknown() || boundSamplers[u] != object) backend->bindSampler(unit, object);
+                boundSamplers[u] = object;
+                boundSamplerStates[u] = wanted;
+            }
+        }
+    }
+}
+
+void GraphicsDevice::Impl::applyViewport(const fxport::Viewport& w) {
+    if (!shadow.setViewport(w)) return;
+    // D3D9 pixel centres: SM1-3 vertex shaders add fxport_PixelOffset.xy * w to the position,
+    // moving the geometry right and down by (half a pixel - 1/256 pixel). Half a pixel puts D3D9's
+    // integer pixel centres on GL's; the 1/256 (one step of the rasteriser's sub-pixel grid) keeps
+    // an edge that falls exactly on a centre just above/left of it, so coverage follows D3D's
+    // top-left rule on every driver instead of the GL implementation's own tie-break (llvmpipe
+    // drops the top row of a full-screen quad under GL_UPPER_LEFT without it). The price is an
+    // attribute bias of 1/256 pixel (docs/DESIGN.md).
+    constexpr float kShift = 2.0f * (0.5f - 1.0f / 256.0f);  // in NDC units per pixel
+    std::array<float, 4> offset = {w.Width > 0 ? kShift / float(w.Width) : 0.0f,
+                                   w.Height > 0 ? -kShift / float(w.Height) : 0.0f, 0.0f, 0.0f};
+    if (offset != pixelOffset) {
+        pixelOffset = offset;
+        backend->writeBuffer(internalBuffer, 0, sizeof(float) * 4, pixelOffset.data());
+    }
+}
+
+GLuint GraphicsDevice::Impl::samplerFor(const SamplerState& s) {
+    std::array<std::uint8_t, sizeof(SamplerState)> key{};
+    // SamplerState is a plain aggregate of enums, ints, floats and a Vector4: compare by fields
+    // through a canonical byte image (padding zeroed by value-initialising a copy).
+    SamplerState canonical{};
+    canonical = s;
+    std::memcpy(key.data(), &canonical, sizeof canonical);
+    auto it = samplerObjects.find(key);
+    if (it != samplerObjects.end()) return it->second;
+    const BackendObject sampler = backend->createSampler(s);
+    samplerObjects.emplace(std::move(key), sampler);
+    return sampler;
+}
+
+GraphicsDevice::Impl::VertexArray& GraphicsDevice::Impl::vertexArrayFor(const VertexDeclaration& declaration) {
+    GLuint vs = shaders[0]->program;
+    LastVertexArray& last = lastVertexArray;
+    if (last.array && last.program == vs && last.declaration == &declaration && last.copy == declaration) {
+        if (boundVertexArray != last.array->vao) {
+            backend->bindVertexArray(last.array->vao);
+            boundVertexArray = last.array->vao;
+        }
+        return *last.array;
+    }
+    std::string key;
+    key += std::to_string(declaration.VertexStride());
+    for (const VertexElement& e : declaration.GetVertexElements())
+        key += ";" + std::to_string(e.Offset) + "," + std::to_string(int(e.VertexElementFormat)) + "," +
+               std::to_string(int(e.VertexElementUsage)) + "," + std::to_string(e.UsageIndex);
+    key += "|" + std::to_string(vs);
+    auto it = vertexArrays.find(key);
+    if (it == vertexArrays.end()) {
+        const std::vector<const VertexElement*> elements =
+            vertexElementsFor(declaration, shaders[0]->shader->inputs, "'" + shaders[0]->shader->entryPoint + "'");
+        std::vector<VertexAttribute> attributes;
+        for (std::size_t i = 0; i < elements.size(); ++i) {
+            const xlate::VertexInput& input = shaders[0]->shader->inputs[i];
+            attributes.push_back({input.location, elements[i]->VertexElementFormat, elements[i]->Offset, input.isInteger});
+        }
+        VertexArray va;
+        va.vao = backend->createVertexArray(attributes);
+        ++live.vertexArrays;
+        it = vertexArrays.emplace(key, va).first;
+    }
+    last.array = &it->second;
+    last.program = vs;
+    last.declaration = &declaration;
+    last.copy = declaration;
+    if (boundVertexArray != it->second.vao) {
+        backend->bindVertexArray(it->second.vao);
+        boundVertexArray = it->second.vao;
+    }
+    return it->second;
+}
+
+}  // namespace fxport

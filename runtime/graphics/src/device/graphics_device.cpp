@@ -1,0 +1,826 @@
+#include "fxport/graphics/graphics_device.h"
+
+#include <algorithm>
+#include <cstring>
+#include <iostream>
+
+#include "gl/passes/compute_pass.h"
+#include "gl/draw_call.h"
+#include "device/device_impl.h"
+#include "effect/effect_impl.h"
+#include "fxport/graphics/effect.h"
+#include "fxport/graphics/errors.h"
+#include "fxport/graphics/gpu_limits.h"
+#include "fxport/platform/graphics_context.h"
+#include "fxport/xlate/compiled_effect.h"
+#include "gl/gl_formats.h"
+#include "device/image_io.h"
+
+namespace fxport {
+
+namespace {
+
+std::string slotError(int slot) {
+    return "slot " + std::to_string(slot) + " is outside 0.." + std::to_string(kMaxTextureSlots - 1);
+}
+
+GLenum glPrimitive(PrimitiveType type) {
+    switch (type) {
+    case PrimitiveType::TriangleList: return GL_TRIANGLES;
+    case PrimitiveType::TriangleStrip: return GL_TRIANGLE_STRIP;
+    case PrimitiveType::LineList: return GL_LINES;
+    case PrimitiveType::LineStrip: return GL_LINE_STRIP;
+    case PrimitiveType::PointList: return GL_POINTS;
+    }
+    return GL_TRIANGLES;
+}
+
+// An enum value made by a cast (PrimitiveType(77)) would draw GL_TRIANGLES from a count of 0.
+void checkPrimitiveType(PrimitiveType type, const char* call) {
+    if (static_cast<int>(type) > static_cast<int>(PrimitiveType::PointList))
+        throw ArgumentError(std::string(call) + ": PrimitiveType(" + std::to_string(static_cast<int>(type)) +
+                            ") is not a primitive type (TriangleList .. PointList)");
+}
+
+int vertexCountFor(PrimitiveType type, int primitives) {
+    switch (type) {
+    case PrimitiveType::TriangleList: return primitives * 3;
+    case PrimitiveType::TriangleStrip: return primitives + 2;
+    case PrimitiveType::LineList: return primitives * 2;
+    case PrimitiveType::LineStrip: return primitives + 1;
+    case PrimitiveType::PointList: return primitives;
+    }
+    return 0;
+}
+
+// What SetRenderTargets needs of a bound target, 2D or cube.
+struct TargetInfo {
+    int width, height;
+    GLuint depth;
+    DepthFormat depthFormat;
+    RenderTargetUsage usage;
+};
+TargetInfo targetInfo(const Texture* t) {
+    if (t->kind() == Texture::Kind::TextureCube) {
+        auto* c = static_cast<const RenderTargetCube*>(t);
+        return {c->Size(), c->Size(), c->depthRenderbuffer(), c->DepthStencilFormat(), c->RenderTargetUsage()};
+    }
+    auto* r = static_cast<const RenderTarget2D*>(t);
+    return {r->Width(), r->Height(), r->depthRenderbuffer(), r->DepthStencilFormat(), r->RenderTargetUsage()};
+}
+
+// Live devices, oldest first; the last one made current is what GL calls go to. Never destroyed:
+// a device held by a global (D3D11 programs keep theirs in globals) is destroyed after the
+// function-local statics made after it, and its destructor still reads this list.
+std::vector<GraphicsDevice*>& liveDevices() {
+    static auto* devices = new std::vector<GraphicsDevice*>();
+    return *devices;
+}
+
+platform::Platform choosePlatform(const std::string& name) {
+    return name.empty() ? platform::defaultPlatform() : platform::platformFromString(name);
+}
+
+}  // namespace
+
+// --- slot collections
+
+TextureSlot& TextureCollection::operator[](int slot) {
+    if (slot < 0 || slot >= kMaxTextureSlots) throw ArgumentError("GraphicsDevice.Textures: " + slotError(slot));
+    return slots_[std::size_t(slot)];
+}
+const TextureSlot& TextureCollection::operator[](int slot) const {
+    if (slot < 0 || slot >= kMaxTextureSlots) throw ArgumentError("GraphicsDevice.Textures: " + slotError(slot));
+    return slots_[std::size_t(slot)];
+}
+
+SamplerStateCollection::SamplerStateCollection() { slots_.fill(SamplerState::LinearWrap); }
+SamplerState& SamplerStateCollection::operator[](int slot) {
+    if (slot < 0 || slot >= kMaxTextureSlots) throw ArgumentError("GraphicsDevice.SamplerStates: " + slotError(slot));
+    return slots_[std::size_t(slot)];
+}
+const SamplerState& SamplerStateCollection::operator[](int slot) const {
+    if (slot < 0 || slot >= kMaxTextureSlots) throw ArgumentError("GraphicsDevice.SamplerStates: " + slotError(slot));
+    return slots_[std::size_t(slot)];
+}
+
+// --- construction
+
+namespace {
+
+// PresentationParameters::ComputePasses left unset: compute passes are exact everywhere, faster only
+// where fragment output is this GPU's limit. A software rasteriser is never asked (its probe would
+// cost every device a measurement; llvmpipe runs them several times slower).
+bool computePassesAreFaster(GraphicsDevice& device) {
+    return !GpuLimits::softwareRenderer(device.rendererName()) && GpuLimits::ForDevice(device).computePassesFaster();
+}
+
+// The back buffer's largest side: GL 4.5's (and D3D11's) guaranteed texture size. Checked before
+// the context exists (OSMesa would allocate 100000x100000 pixels and throw std::bad_alloc).
+constexpr int kMaxBackBufferSide = 16384;
+
+void checkBackBufferSize(const char* call, int width, int height) {
+    if (width <= 0 || height <= 0)
+        throw ArgumentError(std::string(call) + ": back buffer size " + std::to_string(width) + "x" + std::to_string(height) + " must be positive");
+    if (width > kMaxBackBufferSide || height > kMaxBackBufferSide)
+        throw ArgumentError(std::string(call) + ": back buffer size " + std::to_string(width) + "x" + std::to_string(height) +
+                            " is larger than " + std::to_string(kMaxBackBufferSide) + "x" + std::to_string(kMaxBackBufferSide) +
+                            ", the largest fxport makes");
+}
+
+}  // namespace
+
+GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters) : parameters_(parameters) {
+    checkBackBufferSize("GraphicsDevice", parameters_.BackBufferWidth, parameters_.BackBufferHeight);
+    platform::ContextDesc desc;
+    desc.platform = choosePlatform(parameters_.platform);
+    desc.width = parameters_.BackBufferWidth;
+    desc.height = parameters_.BackBufferHeight;
+    desc.debug = parameters_.debug;
+    desc.title = parameters_.windowTitle;
+    context_ = platform::GraphicsContext::create(desc);
+    impl_ = std::make_unique<Impl>(*this);
+    liveDevices().push_back(this);
+    const char* defer = std::getenv("FXPORT_DEFER_CLEARS");
+    impl_->deferClears = parameters_.DeferClears && !(defer && std::string(defer) == "0");
+    const char* discard = std::getenv("FXPORT_HONOUR_DISCARDS");
+    impl_->honourDiscards = parameters_.HonourDiscards && !(discard && std::string(discard) == "0");
+    const char* lazyDepth = std::getenv("FXPORT_LAZY_DEPTH");
+    impl_->lazyDepthStorage = parameters_.LazyDepthStorage && !(lazyDepth && std::string(lazyDepth) == "0");
+    const char* covered = std::getenv("FXPORT_DROP_COVERED_CLEARS");
+    impl_->dropCoveredClears = parameters_.DropCoveredClears && !(covered && std::string(covered) == "0");
+
+    // The D3D conventions (docs/DESIGN.md): NDC z in [0,1], and window y from the top row so
+    // render targets come out top-row-first.
+    glClipControl(GL_UPPER_LEFT, GL_ZERO_TO_ONE);
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // D3D10+ filter across cube faces; D3D9 hardware did too
+    // nointerpolation (flat) values come from a primitive's first vertex on D3D, its last on GL.
+    glProvokingVertex(GL_FIRST_VERTEX_CONVENTION);
+
+    impl_->internalBuffer = impl_->createBuffer();
+    glNamedBufferStorage(impl_->internalBuffer, sizeof(float) * 4, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    for (int stage = 0; stage < kUniformStages; ++stage)
+        glBindBufferBase(GL_UNIFORM_BUFFER, GLuint(uniformBindingFor(stage, kInternalBlockBinding)), impl_->internalBuffer);
+
+    impl_->backBuffer = std::make_unique<RenderTarget2D>(*this, parameters_.BackBufferWidth, parameters_.BackBufferHeight,
+                                                          false, parameters_.BackBufferFormat,
+                                                          parameters_.DepthStencilFormat);
+    impl_->backBuffer->Name = "BackBuffer";
+    SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+    ScissorRectangle = Rectangle(0, 0, parameters_.BackBufferWidth, parameters_.BackBufferHeight);
+
+    // Compute passes: the environment, else the parameter, else where this GPU runs them faster.
+    const char* compute = std::getenv("FXPORT_COMPUTE_PASSES");
+    const bool forced = compute && (std::string(compute) == "1" || std::string(compute) == "0");
+    if (compute && !forced)
+        std::cerr << "fxport: FXPORT_COMPUTE_PASSES='" << compute
+                  << "' is not 1 or 0; PresentationParameters::ComputePasses decides\n";
+    const bool computePasses = forced ? std::string(compute) == "1"
+                               : parameters_.ComputePasses ? *parameters_.ComputePasses
+                                                           : computePassesAreFaster(*this);
+    if (computePasses) impl_->computePasses = std::make_shared<ComputePasses>(*impl_);
+}
+
+void GraphicsDevice::Reset(const fxport::PresentationParameters& parameters) {
+    checkBackBufferSize("GraphicsDevice.Reset", parameters.BackBufferWidth, parameters.BackBufferHeight);
+    makeCurrent();
+    parameters_.BackBufferWidth = parameters.BackBufferWidth;
+    parameters_.BackBufferHeight = parameters.BackBufferHeight;
+    parameters_.BackBufferFormat = parameters.BackBufferFormat;
+    parameters_.DepthStencilFormat = parameters.DepthStencilFormat;
+    parameters_.RenderTargetUsage = parameters.RenderTargetUsage;
+    std::erase_if(impl_->boundSinceMark,
+                  [&](const RenderTargetBinding& b) { return b.RenderTarget == impl_->backBuffer.get(); });
+    std::erase_if(impl_->writtenSinceMark,
+                  [&](const WrittenTarget& w) { return w.binding.RenderTarget == impl_->backBuffer.get(); });
+    impl_->backBuffer.reset();  // its framebuffers go with it
+    impl_->backBuffer = std::make_unique<RenderTarget2D>(*this, parameters_.BackBufferWidth, parameters_.BackBufferHeight,
+                                                          false, parameters_.BackBufferFormat,
+                                                          parameters_.DepthStencilFormat);
+    impl_->backBuffer->Name = "BackBuffer";
+    SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+    ScissorRectangle = Rectangle(0, 0, parameters_.BackBufferWidth, parameters_.BackBufferHeight);
+}
+
+GraphicsDevice::~GraphicsDevice() {
+    // Resources the program still holds are disposed now (their GL objects die with the context)
+    // and cut loose, so their destructors later do not reach a dead device.
+    context_->makeCurrent();
+    impl_->backBuffer.reset();
+    std::vector<GraphicsResource*> remaining = impl_->resources;
+    for (GraphicsResource* r : remaining) r->Dispose();
+    for (GraphicsResource* r : remaining) r->device_ = nullptr;
+    impl_->releaseAll();
+    impl_.reset();
+    context_.reset();
+    auto& devices = liveDevices();
+    devices.erase(std::remove(devices.begin(), devices.end(), this), devices.end());
+    if (!devices.empty()) devices.back()->makeCurrent();
+}
+
+void GraphicsDevice::makeCurrent() {
+    context_->makeCurrent();
+    auto& devices = liveDevices();
+    devices.erase(std::remove(devices.begin(), devices.end(), this), devices.end());
+    devices.push_back(this);
+}
+
+GraphicsDevice* GraphicsDevice::current() { return liveDevices().empty() ? nullptr : liveDevices().back(); }
+
+std::string GraphicsDevice::rendererName() const { return context_->rendererName(); }
+
+int GraphicsDevice::maxTextureSize() const {
+    GLint size = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &size);
+    return size;
+}
+
+GpuObjectCounts GraphicsDevice::liveGpuObjects() const { return impl_->live; }
+
+ClearStatistics GraphicsDevice::clearStatistics() const { return impl_->clearStats; }
+
+ComputePassStatistics GraphicsDevice::computePassStatistics() const {
+    return impl_->computePasses ? impl_->computePasses->currentStatistics() : ComputePassStatistics{};
+}
+
+void GraphicsDevice::finish() { glFinish(); }
+
+// --- render targets
+
+void GraphicsDevice::SetRenderTarget(RenderTarget2D* target) {
+    if (target == nullptr) SetRenderTargets(std::vector<RenderTargetBinding>{});
+    else SetRenderTargets(std::vector<RenderTargetBinding>{RenderTargetBinding(target)});
+}
+
+void GraphicsDevice::SetRenderTarget(RenderTargetCube* target, CubeMapFace face) {
+    if (target == nullptr) throw ArgumentError("GraphicsDevice.SetRenderTarget: the cube target is null");
+    SetRenderTargets(std::vector<RenderTargetBinding>{RenderTargetBinding(target, face)});
+}
+
+void GraphicsDevice::SetRenderTargets(const std::vector<RenderTargetBinding>& bindings) {
+    if (bindings.size() > std::size_t(kMaxRenderTargets))
+        throw ArgumentError("GraphicsDevice.SetRenderTargets: " + std::to_string(bindings.size()) +
+                            " targets; at most " + std::to_string(kMaxRenderTargets));
+    int width = 0, height = 0;
+    for (std::size_t i = 0; i < bindings.size(); ++i) {
+        Texture* t = bindings[i].RenderTarget;
+        std::string where = "GraphicsDevice.SetRenderTargets: binding " + std::to_string(i);
+        if (t == nullptr) throw ArgumentError(where + " is null");
+        if (!t->isRenderTarget())
+            throw ArgumentError(where + " ('" + t->Name + "') is a texture, not a render target");
+        if (t->IsDisposed()) throw InvalidOperation(where + " ('" + t->Name + "') was disposed");
+        if (&t->device() != this) throw InvalidOperation(where + " ('" + t->Name + "') was made by another GraphicsDevice");
+        for (std::size_t j = 0; j < i; ++j)
+            if (bindings[j].RenderTarget == t)
+                throw ArgumentError(where + " ('" + t->Name + "') is binding " + std::to_string(j) + " too; bind each target once");
+        int w = targetInfo(t).width, h = targetInfo(t).height;
+        if (i == 0) {
+            width = w;
+            height = h;
+        } else if (w != width || h != height) {
+            throw ArgumentError(where + " is " + std::to_string(w) + "x" + std::to_string(h) + ", binding 0 is " +
+                                std::to_string(width) + "x" + std::to_string(height) +
+                                ": all render targets must have the same size");
+        }
+    }
+    impl_->leaveBoundTargets();
+    std::vector<RenderTargetBinding> previous = impl_->targets;
+    impl_->targets = bindings;
+    impl_->generateMipsOfUnboundTargets(previous);
+    impl_->bindTargets();
+    impl_->noteBoundTargets();
+    Viewport = fxport::Viewport(0, 0, impl_->targetWidth, impl_->targetHeight);
+    // XNA 4 on Windows clears a DiscardContents target (colour to purple, depth and stencil too)
+    // whenever it is set, to behave like the Xbox where the contents are lost; code written for it
+    // relies on the depth clear (the deferred tutorial never clears its G-buffer depth).
+    // PreserveContents keeps them. The back buffer follows PresentationParameters.
+    fxport::RenderTargetUsage usage =
+        bindings.empty() ? parameters_.RenderTargetUsage : targetInfo(bindings[0].RenderTarget).usage;
+    if (usage == fxport::RenderTargetUsage::DiscardContents)
+        Clear(ClearOptions::Target | ClearOptions::DepthBuffer | ClearOptions::Stencil, DiscardColor, 1.0f, 0);
+}
+
+fxport::RenderTargetUsage GraphicsDevice::Impl::boundUsage() const {
+    return targets.empty() ? device.parameters_.RenderTargetUsage : targetInfo(targets[0].RenderTarget).usage;
+}
+
+std::vector<RenderTargetBinding> GraphicsDevice::GetRenderTargets() const { return impl_->targets; }
+
+void GraphicsDevice::Impl::noteBoundTargets() {
+    if (!trackingBoundTargets) return;
+    auto note = [&](const RenderTargetBinding& b) {
+        if (std::find(boundSinceMark.begin(), boundSinceMark.end(), b) == boundSinceMark.end()) boundSinceMark.push_back(b);
+    };
+    if (targets.empty()) note(RenderTargetBinding(backBuffer.get()));
+    for (const RenderTargetBinding& b : targets) note(b);
+    int bytes = 0;
+    if (targets.empty()) bytes = bytesPerPixel(backBuffer->Format());
+    for (const RenderTargetBinding& b : targets)
+        if (b.RenderTarget) bytes += bytesPerPixel(b.RenderTarget->Format());
+    widestColorBytesSinceMark = std::max(widestColorBytesSinceMark, bytes);
+}
+
+void GraphicsDevice::markBoundTargets() {
+    impl_->trackingBoundTargets = true;
+    impl_->boundSinceMark.clear();
+    impl_->writtenSinceMark.clear();
+    impl_->widestColorBytesSinceMark = 0;
+    impl_->blendedSinceMark = false;
+    impl_->noteBoundTargets();
+}
+
+int GraphicsDevice::colorBytesPerFragmentSinceMark() const { return impl_->widestColorBytesSinceMark; }
+bool GraphicsDevice::blendedSinceMark() const { return impl_->blendedSinceMark; }
+
+std::vector<RenderTargetBinding> GraphicsDevice::targetsBoundSinceMark() const { return impl_->boundSinceMark; }
+
+void GraphicsDevice::Impl::noteWrittenTargets(bool color, bool depthStencil, const Rectangle& area, bool cleared) {
+    if (!trackingBoundTargets) return;
+    // Within the target: a viewport may reach past it.
+    const int x0 = std::max(area.X, 0), y0 = std::max(area.Y, 0);
+    const int x1 = std::min(area.X + area.Width, targetWidth), y1 = std::min(area.Y + area.Height, targetHeight);
+    const double pixels = x1 > x0 && y1 > y0 ? double(x1 - x0) * double(y1 - y0) : 0.0;
+    auto note = [&](const RenderTargetBinding& b, bool depth) {
+        if (!color && !depth) return;
+        for (WrittenTarget& w : writtenSinceMark)
+            if (w.binding == b) {
+                w.color = w.color || color;
+                w.depthStencil = w.depthStencil || depth;
+                double& most = cleared ? w.clearedPixels : w.drawnPixels;
+                most = std::max(most, pixels);
+                if (cleared && color) w.colorClearedPixels = std::max(w.colorClearedPixels, pixels);
+                return;
+            }
+        writtenSinceMark.push_back({b, color, depth, cleared ? 0.0 : pixels, cleared ? pixels : 0.0, cleared && color ? pixels : 0.0});
+    };
+    // The first target's depth/stencil buffer serves them all (XNA: MRT use the first's).
+    if (targets.empty()) note(RenderTargetBinding(backBuffer.get()), depthStencil);
+    for (std::size_t i = 0; i < targets.size(); ++i) note(targets[i], depthStencil && i == 0);
+}
+
+void GraphicsDevice::Impl::noteDrawnTargets() {
+    if (!trackingBoundTargets) return;
+    const DepthStorage* depth = boundDepthStorage();  // made by now if the draw needs it
+    const bool tests = device.DepthStencilState.DepthBufferEnable || device.DepthStencilState.StencilEnable;
+    const fxport::Viewport& v = device.Viewport;
+    Rectangle area(v.X, v.Y, v.Width, v.Height);
+    if (device.RasterizerState.ScissorTestEnable) {
+        const Rectangle& s = device.ScissorRectangle;
+        const int x0 = std::max(area.X, s.X), y0 = std::max(area.Y, s.Y);
+        const int x1 = std::min(area.X + area.Width, s.X + s.Width), y1 = std::min(area.Y + area.Height, s.Y + s.Height);
+        area = Rectangle(x0, y0, std::max(x1 - x0, 0), std::max(y1 - y0, 0));
+    }
+    noteWrittenTargets(true, depth && depth->renderbuffer != 0 && tests, area, false);
+}
+
+std::vector<GraphicsDevice::WrittenTarget> GraphicsDevice::targetsWrittenSinceMark() const {
+    return impl_->writtenSinceMark;
+}
+
+RenderTarget2D& GraphicsDevice::backBufferTarget() { return *impl_->backBuffer; }
+
+void GraphicsDevice::Impl::generateMipsOfUnboundTargets(const std::vector<RenderTargetBinding>& previous) {
+    // XNA regenerates a mipmapped render target's chain when it stops being a target.
+    for (const RenderTargetBinding& b : previous) {
+        if (!b.RenderTarget || b.RenderTarget->LevelCount() <= 1 || b.RenderTarget->IsDisposed()) continue;
+        if (std::find(targets.begin(), targets.end(), b) == targets.end()) glGenerateTextureMipmap(b.RenderTarget->glName());
+    }
+}
+
+void GraphicsDevice::Impl::bindTargets() {
+    std::vector<RenderTargetBinding> bindings = targets;
+    if (bindings.empty()) bindings.push_back(RenderTargetBinding(backBuffer.get()));
+    Texture* first = bindings[0].RenderTarget;
+    TargetInfo info = targetInfo(first);
+    GLuint depth = depthOverride ? depthOverride->renderbuffer : info.depth;
+    DepthFormat depthFormat = depthOverride ? depthOverride->format : info.depthFormat;
+    std::vector<std::uint64_t> key;
+    for (const RenderTargetBinding& b : bindings)
+        key.push_back((std::uint64_t(b.RenderTarget->glName()) << 8) |
+                      (b.RenderTarget->kind() == Texture::Kind::TextureCube ? 1 + std::uint64_t(b.CubeMapFace) : 0));
+    key.push_back(std::uint64_t(depth) << 8 | 0xff);
+    targetWidth = info.width;
+    targetHeight = info.height;
+    auto it = framebuffers.find(key);
+    GLuint fbo = 0;
+    if (it != framebuffers.end()) {
+        fbo = it->second;
+    } else {
+        glCreateFramebuffers(1, &fbo);
+        ++live.framebuffers;
+        std::vector<GLenum> drawBuffers;
+        for (std::size_t i = 0; i < bindings.size(); ++i) {
+            GLenum attachment = GLenum(GL_COLOR_ATTACHMENT0 + i);
+            const RenderTargetBinding& b = bindings[i];
+            if (b.RenderTarget->kind() == Texture::Kind::TextureCube)
+                glNamedFramebufferTextureLayer(fbo, attachment, b.RenderTarget->glName(), 0, GLint(b.CubeMapFace));
+            else
+                glNamedFramebufferTexture(fbo, attachment, b.RenderTarget->glName(), 0);
+            drawBuffers.push_back(attachment);
+        }
+        glNamedFramebufferDrawBuffers(fbo, GLsizei(drawBuffers.size()), drawBuffers.data());
+        if (depth != 0)
+            glNamedFramebufferRenderbuffer(fbo, depthFormat == DepthFormat::Depth24Stencil8 ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
+                                           GL_RENDERBUFFER, depth);
+        GLenum status = glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER);
+        if (status != GL_FRAMEBUFFER_COMPLETE) {
+            glDeleteFramebuffers(1, &fbo);
+            --live.framebuffers;
+            throw InvalidOperation("GraphicsDevice.SetRenderTargets: the driver rejects this combination of targets (" +
+                                   std::string(surfaceFormatName(first->Format())) + ", framebuffer status 0x" +
+                                   std::to_string(status) + ")");
+        }
+        framebuffers.emplace(key, fbo);
+    }
+    if (fbo != boundFramebuffer) {
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+        boundFramebuffer = fbo;
+    }
+}
+
+void GraphicsDevice::Impl::dropFramebuffersUsing(GLuint texture) {
+    for (auto it = framebuffers.begin(); it != framebuffers.end();) {
+        bool uses = std::any_of(it->first.begin(), it->first.end(), [&](std::uint64_t k) {
+            return (k & 0xff) != 0xff && GLuint(k >> 8) == texture;
+        });
+        if (uses) {
+            if (boundFramebuffer == it->second) {
+                glBindFramebuffer(GL_FRAMEBUFFER, 0);
+                boundFramebuffer = 0;
+            }
+            glDeleteFramebuffers(1, &it->second);
+            --live.framebuffers;
+            it = framebuffers.erase(it);
+        } else {
+            ++it;
+        }
+    }
+}
+
+// --- clear
+
+void GraphicsDevice::Clear(Color color) {
+    Clear(ClearOptions::Target | ClearOptions::DepthBuffer | ClearOptions::Stencil, color.ToVector4(), 1.0f, 0);
+}
+
+void GraphicsDevice::Clear(ClearOptions options, Color color, float depth, int stencil) {
+    Clear(options, color.ToVector4(), depth, stencil);
+}
+
+void GraphicsDevice::Clear(ClearOptions options, Vector4 color, float depth, int stencil) {
+    Impl& d = *impl_;
+    if (d.boundFramebuffer == 0) d.bindTargets();  // the back buffer's FBO was dropped
+    unsigned bits = unsigned(options) & unsigned(ClearOptions::Target | ClearOptions::DepthBuffer | ClearOptions::Stencil);
+    d.clearStats.requested += long((bits & 1u) != 0) + long((bits & 2u) != 0) + long((bits & 4u) != 0);
+    // D3D9 clears the viewport rectangle, whatever the scissor, write masks and blend say; a clear of
+    // the whole target may wait (pending_clear.cpp).
+    bool wholeTarget = Viewport.X == 0 && Viewport.Y == 0 && Viewport.Width == d.targetWidth && Viewport.Height == d.targetHeight;
+    if (d.deferClears && wholeTarget) {
+        d.recordClear(bits, color, depth, stencil);
+        return;
+    }
+    d.resolvePendingClear(~0u);
+    d.executeClear(Rectangle(Viewport.X, Viewport.Y, Viewport.Width, Viewport.Height), bits, color, depth, stencil);
+}
+
+// --- draws
+
+void GraphicsDevice::SetVertexBuffer(VertexBuffer* buffer, int vertexOffset) {
+    if (buffer && buffer->IsDisposed()) throw InvalidOperation("GraphicsDevice.SetVertexBuffer: the buffer was disposed");
+    if (buffer && &buffer->device() != this)
+        throw InvalidOperation("GraphicsDevice.SetVertexBuffer: " + buffer->describe() + " was made by another GraphicsDevice");
+    if (vertexOffset < 0) throw ArgumentError("GraphicsDevice.SetVertexBuffer: vertex offset " + std::to_string(vertexOffset) + " is negative");
+    impl_->vertexBuffer = buffer;
+    impl_->vertexOffset = vertexOffset;
+}
+
+void GraphicsDevice::DrawIndexedPrimitives(PrimitiveType primitiveType, int baseVertex, int, int, int startIndex,
+                                           int primitiveCount) {
+    Impl& d = *impl_;
+    if (!d.vertexBuffer) throw InvalidOperation("DrawIndexedPrimitives: no vertex buffer set (SetVertexBuffer)");
+    if (!Indices) throw InvalidOperation("DrawIndexedPrimitives: no index buffer set (GraphicsDevice.Indices)");
+    if (Indices->IsDisposed()) throw InvalidOperation("DrawIndexedPrimitives: the index buffer was disposed");
+    if (&Indices->device() != this) throw InvalidOperation("DrawIndexedPrimitives: the index buffer was made by another GraphicsDevice");
+    checkPrimitiveType(primitiveType, "DrawIndexedPrimitives");
+    int count = vertexCountFor(primitiveType, primitiveCount);
+    if (primitiveCount <= 0 || startIndex < 0 || startIndex + count > Indices->IndexCount())
+        throw ArgumentError("DrawIndexedPrimitives: " + std::to_string(primitiveCount) + " primitives from index " +
+                            std::to_string(startIndex) + " need " + std::to_string(count) + " indices; the index buffer has " +
+                            std::to_string(Indices->IndexCount()));
+    d.flush("DrawIndexedPrimitives");
+    Impl::VertexArray& va = d.bindVertexBuffer();
+    if (va.elements != Indices->glName()) {
+        va.elements = Indices->glName();
+        glVertexArrayElementBuffer(va.vao, va.elements);
+    }
+    const bool wide = Indices->IndexElementSize() == IndexElementSize::ThirtyTwoBits;
+    const DrawCall draw{glPrimitive(primitiveType), count, startIndex, true, baseVertex, wide ? 4 : 2};
+    if (d.computePasses && d.computePasses->tryDraw(primitiveType, primitiveCount, draw)) return;
+    draw.issue();
+}
+
+void GraphicsDevice::DrawPrimitives(PrimitiveType primitiveType, int vertexStart, int primitiveCount) {
+    Impl& d = *impl_;
+    if (!d.vertexBuffer) throw InvalidOperation("DrawPrimitives: no vertex buffer set (SetVertexBuffer)");
+    checkPrimitiveType(primitiveType, "DrawPrimitives");
+    int count = vertexCountFor(primitiveType, primitiveCount);
+    if (primitiveCount <= 0 || vertexStart < 0 || d.vertexOffset + vertexStart + count > d.vertexBuffer->VertexCount())
+        throw ArgumentError("DrawPrimitives: " + std::to_string(primitiveCount) + " primitives from vertex " +
+                            std::to_string(vertexStart) + " overrun the vertex buffer's " +
+                            std::to_string(d.vertexBuffer->VertexCount()) + " vertices");
+    d.flush("DrawPrimitives");
+    d.bindVertexBuffer();
+    const DrawCall draw{glPrimitive(primitiveType), count, vertexStart};
+    if (d.computePasses && d.computePasses->tryDraw(primitiveType, primitiveCount, draw)) return;
+    draw.issue();
+}
+
+GraphicsDevice::Impl::VertexArray& GraphicsDevice::Impl::bindVertexBuffer() {
+    const VertexDeclaration& declaration = vertexBuffer->VertexDeclaration();
+    VertexArray& va = vertexArrayFor(declaration);
+    GLintptr offset = GLintptr(vertexOffset) * declaration.VertexStride();
+    if (va.buffer != vertexBuffer->glName() || va.offset != offset || va.stride != declaration.VertexStride()) {
+        va.buffer = vertexBuffer->glName();
+        va.offset = offset;
+        va.stride = declaration.VertexStride();
+        glVertexArrayVertexBuffer(va.vao, 0, va.buffer, va.offset, va.stride);
+    }
+    return va;
+}
+
+void GraphicsDevice::Impl::streamUserData(GLuint& buffer, GLsizeiptr& capacity, const void* data, GLsizeiptr bytes) {
+    if (buffer == 0) buffer = createBuffer();
+    // Orphan: a fresh store each time, so the driver never waits for the previous draw.
+    if (bytes > capacity) capacity = std::max<GLsizeiptr>(bytes, 64 * 1024);
+    glNamedBufferData(buffer, capacity, nullptr, GL_STREAM_DRAW);
+    glNamedBufferSubData(buffer, 0, bytes, data);
+}
+
+void GraphicsDevice::drawUser(PrimitiveType type, const void* vertices, std::size_t stride,
+                              const VertexDeclaration& declaration, int primitiveCount) {
+    Impl& d = *impl_;
+    if (primitiveCount <= 0) throw ArgumentError("DrawUserPrimitives: primitive count " + std::to_string(primitiveCount));
+    checkPrimitiveType(type, "DrawUserPrimitives");
+    if (stride != std::size_t(declaration.VertexStride()))
+        throw ArgumentError("DrawUserPrimitives: the vertex type has " + std::to_string(stride) +
+                            " bytes, its declaration's stride is " + std::to_string(declaration.VertexStride()));
+    d.flush("DrawUserPrimitives");
+    int count = vertexCountFor(type, primitiveCount);
+    d.streamUserData(d.userVertices, d.userVerticesSize, vertices, GLsizeiptr(count) * GLsizeiptr(stride));
+    Impl::VertexArray& va = d.vertexArrayFor(declaration);
+    va.buffer = d.userVertices;
+    va.offset = 0;
+    va.stride = GLsizei(stride);
+    glVertexArrayVertexBuffer(va.vao, 0, va.buffer, 0, va.stride);
+    DrawCall draw{glPrimitive(type), count, 0};
+    if (d.computePasses && primitiveCount <= 2) draw.userDataHash = hashBytes(vertices, std::size_t(count) * stride);
+    if (d.computePasses && d.computePasses->tryDraw(type, primitiveCount, draw)) return;
+    draw.issue();
+}
+
+void GraphicsDevice::drawUserIndexed(PrimitiveType type, const void* vertices, std::size_t stride, int vertexCount,
+                                     const VertexDeclaration& declaration, const void* indices, int indexSize,
+                                     int primitiveCount) {
+    Impl& d = *impl_;
+    if (primitiveCount <= 0 || vertexCount <= 0)
+        throw ArgumentError("DrawUserIndexedPrimitives: primitive count " + std::to_string(primitiveCount) +
+                            ", vertex count " + std::to_string(vertexCount));
+    if (stride != std::size_t(declaration.VertexStride()))
+        throw ArgumentError("DrawUserIndexedPrimitives: the vertex type has " + std::to_string(stride) +
+                            " bytes, its declaration's stride is " + std::to_string(declaration.VertexStride()));
+    checkPrimitiveType(type, "DrawUserIndexedPrimitives");
+    int count = vertexCountFor(type, primitiveCount);
+    // An index past the vertices given would read past the caller's array in the driver.
+    for (int i = 0; i < count; ++i) {
+        std::uint32_t index = indexSize == 2 ? static_cast<const std::uint16_t*>(indices)[i] : static_cast<const std::uint32_t*>(indices)[i];
+        if (index >= std::uint32_t(vertexCount))
+            throw ArgumentError("DrawUserIndexedPrimitives: index " + std::to_string(i) + " is " + std::to_string(index) + ", beyond the " +
+                                std::to_string(vertexCount) + " vertices given");
+    }
+    d.flush("DrawUserIndexedPrimitives");
+    d.streamUserData(d.userVertices, d.userVerticesSize, vertices, GLsizeiptr(vertexCount) * GLsizeiptr(stride));
+    d.streamUserData(d.userIndices, d.userIndicesSize, indices, GLsizeiptr(count) * indexSize);
+    Impl::VertexArray& va = d.vertexArrayFor(declaration);
+    va.buffer = d.userVertices;
+    va.offset = 0;
+    va.stride = GLsizei(stride);
+    glVertexArrayVertexBuffer(va.vao, 0, va.buffer, 0, va.stride);
+    va.elements = d.userIndices;
+    glVertexArrayElementBuffer(va.vao, va.elements);
+    DrawCall draw{glPrimitive(type), count, 0, true, 0, indexSize};
+    if (d.computePasses && primitiveCount <= 2)
+        draw.userDataHash = hashBytes(indices, std::size_t(count) * std::size_t(indexSize),
+                                      hashBytes(vertices, std::size_t(vertexCount) * stride));
+    if (d.computePasses && d.computePasses->tryDraw(type, primitiveCount, draw)) return;
+    draw.issue();
+}
+
+// --- presentation and read-back
+
+void GraphicsDevice::Present() {
+    if (context_->platform() == platform::Platform::GLFW) {
+        // The back buffer is stored top row first; the window's row 0 is the bottom: flip once here.
+        impl_->resolvePendingClearBeforeRead(impl_->backBuffer.get());
+        std::vector<RenderTargetBinding> bound = impl_->targets;
+        impl_->targets.clear();
+        impl_->bindTargets();
+        int w = parameters_.BackBufferWidth, h = parameters_.BackBufferHeight;
+        glBlitNamedFramebuffer(impl_->boundFramebuffer, 0, 0, 0, w, h, 0, h, w, 0, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        impl_->targets = bound;
+        impl_->bindTargets();
+    }
+    context_->swapBuffers();
+    context_->pollEvents();
+}
+
+std::vector<Color> GraphicsDevice::GetBackBufferData() const {
+    std::vector<Color> pixels(std::size_t(parameters_.BackBufferWidth) * std::size_t(parameters_.BackBufferHeight));
+    impl_->backBuffer->GetData(pixels.data(), pixels.size());
+    return pixels;
+}
+
+// The frame as a window shows it: the back buffer's alpha does not reach the screen (XNA's neither),
+// so it is written as 255; an effect that leaves alpha 0 must not save see-through pixels.
+void GraphicsDevice::SaveBackBufferAsPng(const std::string& path) const { impl_->backBuffer->savePng(path, /*opaque=*/true); }
+
+// --- GL object bookkeeping
+
+GLuint GraphicsDevice::Impl::createTexture(GLenum target) {
+    GLuint name = 0;
+    glCreateTextures(target, 1, &name);
+    ++live.textures;
+    return name;
+}
+void GraphicsDevice::Impl::deleteTexture(GLuint& name) {
+    if (!name) return;
+    for (int unit = 0; unit < kMaxTextureSlots; ++unit)
+        if (boundTextures[std::size_t(unit)] == name) boundTextures[std::size_t(unit)] = 0;
+    glDeleteTextures(1, &name);
+    --live.textures;
+    name = 0;
+}
+GLuint GraphicsDevice::Impl::createBuffer() {
+    GLuint name = 0;
+    glCreateBuffers(1, &name);
+    ++live.buffers;
+    return name;
+}
+void GraphicsDevice::Impl::deleteBuffer(GLuint& name) {
+    if (!name) return;
+    for (GLuint& b : boundUniformBuffers)
+        if (b == name) b = 0;
+    for (GLuint& b : wantedUniformBuffers)
+        if (b == name) b = 0;
+    for (auto& [key, va] : vertexArrays) {
+        if (va.buffer == name) va.buffer = 0, va.offset = -1;
+        if (va.elements == name) va.elements = 0;
+    }
+    glDeleteBuffers(1, &name);
+    --live.buffers;
+    name = 0;
+}
+GLuint GraphicsDevice::Impl::createRenderbuffer() {
+    GLuint name = 0;
+    glCreateRenderbuffers(1, &name);
+    ++live.renderbuffers;
+    return name;
+}
+void GraphicsDevice::Impl::deleteRenderbuffer(GLuint& name) {
+    if (!name) return;
+    glDeleteRenderbuffers(1, &name);
+    --live.renderbuffers;
+    name = 0;
+}
+GLuint GraphicsDevice::Impl::createProgram(GLenum stage, const std::string& source, const std::string& label) {
+    // Identical GLSL for the same stage shares one program (a model's per-part material effects,
+    // the same effect loaded twice): effects hold references, the last release deletes it.
+    auto cached = programCache.find({stage, source});
+    if (cached != programCache.end()) {
+        ++cached->second.references;
+        return cached->second.program;
+    }
+    const char* text = source.c_str();
+    GLuint program = glCreateShaderProgramv(stage, 1, &text);
+    GLint ok = 0;
+    glGetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        GLint length = 0;
+        glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+        std::string log(std::size_t(std::max(length, 1)), '\0');
+        glGetProgramInfoLog(program, GLsizei(log.size()), nullptr, log.data());
+        glDeleteProgram(program);
+        throw InvalidOperation(label + ": the GL driver rejected the translated shader:\n" + log);
+    }
+    // D3D has constant slots per stage: each block moves to this stage's range (device_impl.h).
+    moveUniformBlocksToStage(program, stage == GL_VERTEX_SHADER ? 0 : stage == GL_FRAGMENT_SHADER ? 1 : stage == GL_GEOMETRY_SHADER ? 2
+                                      : stage == GL_TESS_CONTROL_SHADER ? kHullStage : stage == GL_TESS_EVALUATION_SHADER ? kDomainStage
+                                                                                                                           : kComputeStage);
+    ++live.programs;
+    programCache.emplace(std::make_pair(stage, source), CachedProgram{program, 1});
+    return program;
+}
+void moveUniformBlocksToStage(GLuint program, int stage) {
+    GLint blockCount = 0;
+    glGetProgramiv(program, GL_ACTIVE_UNIFORM_BLOCKS, &blockCount);
+    for (GLint i = 0; i < blockCount; ++i) {
+        GLint binding = 0;
+        glGetActiveUniformBlockiv(program, GLuint(i), GL_UNIFORM_BLOCK_BINDING, &binding);
+        glUniformBlockBinding(program, GLuint(i), GLuint(uniformBindingFor(stage, binding)));
+    }
+}
+
+void GraphicsDevice::Impl::deleteProgram(GLuint& name) {
+    if (!name) return;
+    for (auto it = programCache.begin(); it != programCache.end(); ++it) {
+        if (it->second.program != name) continue;
+        if (--it->second.references > 0) {
+            name = 0;
+            return;
+        }
+        programCache.erase(it);
+        break;
+    }
+    dropPipelinesUsing(name);
+    dropComputePipelinesUsing(name);
+    dropVertexArraysUsing(name);
+    for (auto& s : shaders)
+        if (s && s->program == name) s = nullptr;
+    glDeleteProgram(name);
+    --live.programs;
+    name = 0;
+}
+GLuint GraphicsDevice::Impl::createQuery(GLenum target) {
+    GLuint name = 0;
+    glCreateQueries(target, 1, &name);
+    ++live.queries;
+    return name;
+}
+void GraphicsDevice::Impl::deleteQuery(GLuint& name) {
+    if (!name) return;
+    glDeleteQueries(1, &name);
+    --live.queries;
+    name = 0;
+}
+
+void GraphicsDevice::Impl::dropPipelinesUsing(GLuint program) {
+    for (auto it = pipelines.begin(); it != pipelines.end();) {
+        auto [vs, ps, gs, hs, ds] = it->first;
+        if (vs == program || ps == program || gs == program || hs == program || ds == program) {
+            if (boundPipeline == it->second) {
+                glBindProgramPipeline(0);
+                boundPipeline = 0;
+            }
+            glDeleteProgramPipelines(1, &it->second);
+            --live.pipelines;
+            it = pipelines.erase(it);
+        } else {
+            ++it;
+        }
+    }
+}
+
+void GraphicsDevice::Impl::dropVertexArraysUsing(GLuint program) {
+    std::string suffix = "|" + std::to_string(program);
+    for (auto it = vertexArrays.begin(); it != vertexArrays.end();) {
+        const std::string& key = it->first;
+        if (key.size() >= suffix.size() && key.compare(key.size() - suffix.size(), suffix.size(), suffix) == 0) {
+            if (boundVertexArray == it->second.vao) {
+                glBindVertexArray(0);
+                boundVertexArray = 0;
+            }
+            if (lastVertexArray.array == &it->second) lastVertexArray = {};
+            glDeleteVertexArrays(1, &it->second.vao);
+            --live.vertexArrays;
+            it = vertexArrays.erase(it);
+        } else {
+            ++it;
+        }
+    }
+}
+
+void GraphicsDevice::Impl::forget(GraphicsResource* resource) {
+    resources.erase(std::remove(resources.begin(), resources.end(), resource), resources.end());
+}
+
+void GraphicsDevice::Impl::releaseAll() {
+    computePasses.reset();  // its programs and buffer, while the context is current
+    fragmentTally.reset();  // its queries, likewise
+    glBindProgramPipeline(0);
+    glBindVertexArray(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    for (auto& [key, pipeline] : pipelines) glDeleteProgramPipelines(1, &pipeline), --live.pipelines;
+    pipelines.clear();
+    for (auto& [key, pipeline] : computePipelines) glDeleteProgramPipelines(1, &pipeline), --live.pipelines;
+    computePipelines.clear();
+    for (auto& [key, va] : vertexArrays) glDeleteVertexArrays(1, &va.vao), --live.vertexArrays;
+    vertexArrays.clear();
+    for (auto& [key, fbo] : framebuffers) glDeleteFramebuffers(1, &fbo), --live.framebuffers;
+    framebuffers.clear();
+    for (auto& [key, sampler] : samplerObjects) backend->deleteSampler(sampler);
+    samplerObjects.clear();
+    deleteBuffer(internalBuffer);
+    deleteBuffer(userVertices);
+    deleteBuffer(userIndices);
+}
+
+}  // namespace fxport

@@ -1,0 +1,50 @@
+// The fixed-function state shadow (state_shadow.h): one comparison per state, then the backend.
+#include "device/state_shadow.h"
+
+namespace fxport {
+
+void StateShadow::setBlend(const BlendState& wanted) {
+    if (!unknown_ && wanted == blend_) return;
+    backend_.setBlend(wanted, unknown_ ? nullptr : &blend_);
+    blend_ = wanted;
+}
+
+void StateShadow::setDepthStencil(const DepthStencilState& wanted) {
+    if (!unknown_ && wanted == depthStencil_) return;
+    backend_.setDepthStencil(wanted, unknown_ ? nullptr : &depthStencil_);
+    depthStencil_ = wanted;
+}
+
+void StateShadow::setRasterizer(const RasterizerState& wanted) {
+    if (!unknown_ && wanted == rasterizer_) return;
+    backend_.setRasterizer(wanted, unknown_ ? nullptr : &rasterizer_);
+    rasterizer_ = wanted;
+}
+
+bool StateShadow::setViewport(const Viewport& wanted) {
+    if (!unknown_ && wanted == viewport_) return false;
+    backend_.setViewport(wanted);
+    viewport_ = wanted;
+    return true;
+}
+
+void StateShadow::setScissor(const Rectangle& wanted) {
+    if (!unknown_ && wanted == scissor_) return;
+    backend_.setScissor(wanted);
+    scissor_ = wanted;
+}
+
+void StateShadow::setSrgbWrite(bool wanted) {
+    if (!unknown_ && wanted == srgbWrite_) return;
+    backend_.setSrgbWrite(wanted);
+    srgbWrite_ = wanted;
+}
+
+void StateShadow::reapply() {
+    backend_.setBlend(blend_, nullptr);
+    backend_.setDepthStencil(depthStencil_, nullptr);
+    backend_.setRasterizer(rasterizer_, nullptr);
+    backend_.setScissor(scissor_);
+}
+
+}  // namespace fxport

@@ -1,0 +1,236 @@
+#include "fxport/graphics/texture.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+
+#include "device/dds_image.h"
+#include "device/device_impl.h"
+#include "effect/effect_impl.h"
+#include "fxport/graphics/errors.h"
+#include "gl/gl_formats.h"
+#include "device/image_io.h"
+
+namespace fxport {
+
+namespace {
+
+int mipLevelsFor(int size) {
+    int levels = 1;
+    while (size > 1) {
+        size /= 2;
+        ++levels;
+    }
+    return levels;
+}
+
+void checkSize(fxport::GraphicsDevice& device, const char* type, int width, int height) {
+    int limit = device.maxTextureSize();
+    if (width <= 0 || height <= 0 || width > limit || height > limit)
+        throw ArgumentError(std::string(type) + ": size " + std::to_string(width) + "x" + std::to_string(height) +
+                            " is outside 1.." + std::to_string(limit) + " (the driver's GL_MAX_TEXTURE_SIZE)");
+}
+
+// D3D9 returns 1 for the channels a format lacks (R32F reads (r,1,1,1)), GL returns 0 for green and
+// blue; Alpha8 reads (0,0,0,a) in D3D. Swizzles make GL read what the effects were written against.
+void applyD3D9Swizzle(GLuint name, SurfaceFormat format) {
+    int channels = detail::glFormat(format).channels;
+    if (format == SurfaceFormat::Alpha8) {
+        glTextureParameteri(name, GL_TEXTURE_SWIZZLE_R, GL_ZERO);
+        glTextureParameteri(name, GL_TEXTURE_SWIZZLE_G, GL_ZERO);
+        glTextureParameteri(name, GL_TEXTURE_SWIZZLE_B, GL_ZERO);
+        glTextureParameteri(name, GL_TEXTURE_SWIZZLE_A, GL_RED);
+        return;
+    }
+    if (channels <= 1) glTextureParameteri(name, GL_TEXTURE_SWIZZLE_G, GL_ONE);
+    if (channels <= 2) glTextureParameteri(name, GL_TEXTURE_SWIZZLE_B, GL_ONE);
+}
+
+}  // namespace
+
+Texture::Texture(fxport::GraphicsDevice& device, const char* typeName, Kind kind, SurfaceFormat format, int levels)
+    : GraphicsResource(device, typeName), format_(format), levels_(levels), kind_(kind) {}
+
+void Texture::releaseGpuObjects() {
+    GraphicsDevice::Impl& d = deviceImpl(device());
+    for (int slot = 0; slot < kMaxTextureSlots; ++slot)
+        if (device().Textures[slot].get() == this) device().Textures[slot] = nullptr;
+    for (Effect* effect : d.effects) effectImpl(*effect).forgetTexture(this);
+    d.forgetStorage(this);
+    d.dropFramebuffersUsing(name_);
+    d.deleteTexture(name_);
+}
+
+int Texture::levelWidth(int base, int level) const { return std::max(1, base >> level); }
+
+void Texture::writeTexels(int face, int level, int x, int y, int w, int h, const void* data, std::size_t bytes, std::size_t elementSize) {
+    const detail::GlTextureFormat& f = detail::glFormat(format_);
+    std::size_t expected = std::size_t(w) * std::size_t(h) * std::size_t(f.bytesPerPixel);
+    if (bytes != expected) {
+        // In the caller's units: SetData(data, count) counts elements, not bytes.
+        const std::string unit = elementSize > 1 ? " elements of " + std::to_string(elementSize) + " bytes" : " bytes";
+        const std::string needs = elementSize > 1 && expected % elementSize == 0 ? std::to_string(expected / elementSize) + unit
+                                                                                  : std::to_string(expected) + " bytes";
+        throw ArgumentError(describe() + ": SetData got " + std::to_string(bytes / std::max<std::size_t>(elementSize, 1)) + unit +
+                            ", the region " + std::to_string(w) + "x" + std::to_string(h) + " of " + surfaceFormatName(format_) +
+                            " needs " + needs);
+    }
+    deviceImpl(device()).storageBarrier();  // after a shader's image writes, before this upload
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    if (face < 0)
+        glTextureSubImage2D(name_, level, x, y, w, h, f.format, f.type, data);
+    else
+        glTextureSubImage3D(name_, level, x, y, face, w, h, 1, f.format, f.type, data);
+}
+
+void Texture::readTexels(int face, int level, void* data, std::size_t bytes) const {
+    const detail::GlTextureFormat& f = detail::glFormat(format_);
+    deviceImpl(device()).resolvePendingClearBeforeRead(this);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    if (face < 0) {
+        glGetTextureImage(name_, level, f.format, f.type, GLsizei(bytes), data);
+    } else {
+        GLint size = 0;
+        glGetTextureLevelParameteriv(name_, level, GL_TEXTURE_WIDTH, &size);
+        glGetTextureSubImage(name_, level, 0, 0, face, size, size, 1, f.format, f.type, GLsizei(bytes), data);
+    }
+}
+
+// --- Texture2D
+
+Texture2D::Texture2D(fxport::GraphicsDevice& device, int width, int height, bool mipMap, SurfaceFormat format)
+    : Texture2D(device, "Texture2D", width, height, mipMap, format) {}
+
+Texture2D::Texture2D(fxport::GraphicsDevice& device, const char* typeName, int width, int height, bool mipMap,
+                     SurfaceFormat format)
+    : Texture(device, typeName, Kind::Texture2D, format, mipMap ? mipLevelsFor(std::max(width, height)) : 1),
+      width_(width), height_(height) {
+    checkSize(device, typeName, width, height);
+    create(mipMap);
+}
+
+void Texture2D::create(bool) {
+    name_ = deviceImpl(device()).createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(name_, levels_, detail::glFormat(format_).internalFormat, width_, height_);
+    applyD3D9Swizzle(name_, format_);
+}
+
+Texture2D::~Texture2D() { disposeFromDestructor(); }
+
+void Texture2D::setData(int level, const Rectangle* rect, const void* data, std::size_t bytes, std::size_t elementSize) {
+    throwIfDisposed("SetData");
+    if (level < 0 || level >= levels_)
+        throw ArgumentError(describe() + ": SetData level " + std::to_string(level) + " of " + std::to_string(levels_));
+    int w = levelWidth(width_, level), h = levelWidth(height_, level);
+    Rectangle r = rect ? *rect : Rectangle(0, 0, w, h);
+    if (r.X < 0 || r.Y < 0 || r.Width <= 0 || r.Height <= 0 || r.X + r.Width > w || r.Y + r.Height > h)
+        throw ArgumentError(describe() + ": SetData rectangle (" + std::to_string(r.X) + "," + std::to_string(r.Y) + "," +
+                            std::to_string(r.Width) + "," + std::to_string(r.Height) + ") is outside the " +
+                            std::to_string(w) + "x" + std::to_string(h) + " level");
+    writeTexels(-1, level, r.X, r.Y, r.Width, r.Height, data, bytes, elementSize);
+}
+
+void Texture2D::getData(int level, void* data, std::size_t bytes) const {
+    throwIfDisposed("GetData");
+    int w = levelWidth(width_, level), h = levelWidth(height_, level);
+    std::size_t expected = std::size_t(w) * std::size_t(h) * std::size_t(bytesPerPixel(format_));
+    if (bytes != expected)
+        throw ArgumentError(describe() + ": GetData buffer has " + std::to_string(bytes) + " bytes, level " +
+                            std::to_string(level) + " (" + std::to_string(w) + "x" + std::to_string(h) + " " +
+                            surfaceFormatName(format_) + ") has " + std::to_string(expected));
+    readTexels(-1, level, data, bytes);
+}
+
+namespace {
+
+// A DDS file's levels as stored (decoded to RGBA8); a partial mip chain is completed by averaging
+// 2x2 texels, as GenerateMips would.
+std::unique_ptr<Texture2D> textureFromDds(fxport::GraphicsDevice& device, const std::string& path) {
+    detail::DdsImage dds = detail::readDds(path);
+    if (dds.cube) throw ArgumentError("Texture2D::FromFile: '" + path + "' is a cube map (six faces); a Texture2D has one");
+    auto texture = std::make_unique<Texture2D>(device, dds.width, dds.height, dds.levelCount > 1, SurfaceFormat::Color);
+    texture->Name = path;
+    std::vector<Color> level;
+    for (int l = 0; l < texture->LevelCount(); ++l) {
+        const int w = std::max(1, dds.width >> l), h = std::max(1, dds.height >> l);
+        if (l < dds.levelCount) level = std::move(dds.levels[std::size_t(l)]);
+        else level = detail::halve(level, std::max(1, dds.width >> (l - 1)), std::max(1, dds.height >> (l - 1)));
+        texture->SetData(l, nullptr, level.data(), std::size_t(w) * std::size_t(h));
+    }
+    return texture;
+}
+
+}  // namespace
+
+std::unique_ptr<Texture2D> Texture2D::FromFile(fxport::GraphicsDevice& device, const std::string& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (extension == ".dds") return textureFromDds(device, path);
+    detail::Image image = detail::loadImage(path);  // throws ArgumentError naming the file
+    auto texture = std::make_unique<Texture2D>(device, image.width, image.height, false, SurfaceFormat::Color);
+    texture->Name = path;
+    texture->SetData(image.pixels.data(), image.pixels.size());
+    return texture;
+}
+
+void Texture2D::SaveAsPng(const std::string& path) const { savePng(path, false); }
+
+void Texture2D::savePng(const std::string& path, bool opaque) const {
+    throwIfDisposed("SaveAsPng");
+    const detail::GlTextureFormat& f = detail::glFormat(format_);
+    // Read back as floats in GL's RGBA expansion, then quantise: one path for every format.
+    std::vector<float> texels(std::size_t(width_) * std::size_t(height_) * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    deviceImpl(device()).resolvePendingClearBeforeRead(this);
+    glGetTextureImage(name_, 0, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * sizeof(float)), texels.data());
+    std::vector<std::uint8_t> rgba(texels.size());
+    for (std::size_t i = 0; i < texels.size(); i += 4) {
+        float c[4] = {texels[i], texels[i + 1], texels[i + 2], texels[i + 3]};
+        if (f.channels == 1) c[1] = c[2] = c[0], c[3] = 1;  // grey
+        if (f.channels == 2) c[2] = 0, c[3] = 1;
+        if (format_ == SurfaceFormat::Alpha8) c[0] = c[1] = c[2] = c[3] = texels[i];
+        if (opaque) c[3] = 1;
+        for (int k = 0; k < 4; ++k) {
+            float v = std::isfinite(c[k]) ? std::clamp(c[k], 0.0f, 1.0f) : 0.0f;
+            rgba[i + std::size_t(k)] = std::uint8_t(std::lround(v * 255.0f));
+        }
+    }
+    detail::savePng(path, width_, height_, rgba.data());
+}
+
+// --- TextureCube
+
+TextureCube::TextureCube(fxport::GraphicsDevice& device, int size, bool mipMap, SurfaceFormat format)
+    : TextureCube(device, "TextureCube", size, mipMap, format) {}
+
+TextureCube::TextureCube(fxport::GraphicsDevice& device, const char* typeName, int size, bool mipMap,
+                         SurfaceFormat format)
+    : Texture(device, typeName, Kind::TextureCube, format, mipMap ? mipLevelsFor(size) : 1), size_(size) {
+    checkSize(device, typeName, size, size);
+    create(mipMap);
+}
+
+void TextureCube::create(bool) {
+    name_ = deviceImpl(device()).createTexture(GL_TEXTURE_CUBE_MAP);
+    glTextureStorage2D(name_, levels_, detail::glFormat(format_).internalFormat, size_, size_);
+    applyD3D9Swizzle(name_, format_);
+}
+
+TextureCube::~TextureCube() { disposeFromDestructor(); }
+
+void TextureCube::setData(CubeMapFace face, const void* data, std::size_t bytes, std::size_t elementSize) {
+    throwIfDisposed("SetData");
+    writeTexels(int(face), 0, 0, 0, size_, size_, data, bytes, elementSize);
+}
+
+void TextureCube::getData(CubeMapFace face, void* data, std::size_t bytes) const {
+    throwIfDisposed("GetData");
+    std::size_t expected = std::size_t(size_) * std::size_t(size_) * std::size_t(bytesPerPixel(format_));
+    if (bytes != expected)
+        throw ArgumentError(describe() + ": GetData buffer has " + std::to_string(bytes) + " bytes, a face has " +
+                            std::to_string(expected));
+    readTexels(int(face), 0, data, bytes);
+}
+
+}  // namespace fxport

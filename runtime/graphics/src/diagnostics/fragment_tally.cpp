@@ -1,0 +1,90 @@
+// FragmentRuns: GL_SAMPLES_PASSED per run of draws with the same texture fetches per fragment.
+#include "diagnostics/fragment_tally.h"
+
+#include "device/device_impl.h"
+#include "fxport/xlate/compiled_effect.h"
+
+namespace fxport {
+
+FragmentRuns::~FragmentRuns() {
+    end();
+    for (Run& run : runs_)
+        if (run.query) device_.deleteQuery(run.query);
+}
+
+void FragmentRuns::beforeDraw(const xlate::TextureFetches& fetches) {
+    if (open_) {
+        const xlate::TextureFetches& now = runs_.back().fetches;
+        if (now.least == fetches.least && now.most == fetches.most && now.unbounded == fetches.unbounded) return;
+        end();
+    }
+    Run run;
+    run.fetches = fetches;
+    run.query = device_.createQuery(GL_SAMPLES_PASSED);
+    glBeginQuery(GL_SAMPLES_PASSED, run.query);
+    runs_.push_back(run);
+    open_ = true;
+}
+
+void FragmentRuns::end() {
+    if (!open_) return;
+    glEndQuery(GL_SAMPLES_PASSED);
+    open_ = false;
+}
+
+void FragmentRuns::read(Run& run, bool wait) {
+    if (!run.query) return;
+    if (!wait) {
+        GLint ready = 0;
+        glGetQueryObjectiv(run.query, GL_QUERY_RESULT_AVAILABLE, &ready);
+        if (!ready) return;
+    }
+    GLuint64 fragments = 0;
+    glGetQueryObjectui64v(run.query, GL_QUERY_RESULT, &fragments);
+    run.fragments = double(fragments);
+    device_.deleteQuery(run.query);  // results are kept, queries are not: a long run holds few
+}
+
+std::size_t FragmentRuns::mark() {
+    end();
+    // Results arrive in order: read those that are ready, so the queries do not pile up.
+    for (; firstUnread_ < runs_.size(); ++firstUnread_) {
+        read(runs_[firstUnread_], false);
+        if (runs_[firstUnread_].query) break;
+    }
+    return runs_.size();
+}
+
+std::vector<GraphicsDevice::FragmentTally> FragmentRuns::between(std::size_t from, std::size_t to) {
+    std::vector<GraphicsDevice::FragmentTally> out;
+    for (std::size_t i = from; i < to && i < runs_.size(); ++i) {
+        if (open_ && i + 1 == runs_.size()) break;  // still counting
+        read(runs_[i], true);
+        out.push_back({runs_[i].fragments, runs_[i].fetches.least, runs_[i].fetches.most, runs_[i].fetches.unbounded});
+    }
+    return out;
+}
+
+}  // namespace fxport
+
+namespace fxport {
+
+void GraphicsDevice::tallyFragments(bool on) {
+    if (on && !impl_->fragmentTally) impl_->fragmentTally = std::make_shared<FragmentRuns>(*impl_);
+    if (!on) impl_->fragmentTally.reset();
+}
+
+std::size_t GraphicsDevice::fragmentTallyMark() { return impl_->fragmentTally ? impl_->fragmentTally->mark() : 0; }
+
+std::vector<GraphicsDevice::FragmentTally> GraphicsDevice::fragmentTallies(std::size_t from, std::size_t to) {
+    return impl_->fragmentTally ? impl_->fragmentTally->between(from, to) : std::vector<FragmentTally>{};
+}
+
+void GraphicsDevice::Impl::tallyDraw() {
+    if (!fragmentTally || !shaders[1]) return;
+    const ShaderProgram& pixel = *shaders[1];
+    if (!pixel.textureFetches) pixel.textureFetches = pixel.shader ? xlate::countTextureFetches(pixel.shader->glsl) : xlate::TextureFetches{};
+    fragmentTally->beforeDraw(*pixel.textureFetches);
+}
+
+}  // namespace fxport

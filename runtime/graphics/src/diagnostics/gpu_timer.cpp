@@ -1,0 +1,126 @@
+#include "fxport/graphics/gpu_timer.h"
+
+#include <algorithm>
+
+#include "device/device_impl.h"
+#include "fxport/graphics/errors.h"
+
+namespace fxport {
+
+struct GpuTimer::Pending {
+    int section = 0;
+    GLuint begin = 0;
+    GLuint end = 0;
+    GLuint samples = 0;  // GL_SAMPLES_PASSED, 0 when not counted
+};
+
+namespace {
+double median(std::vector<double> v) {
+    if (v.empty()) return 0;
+    std::sort(v.begin(), v.end());
+    std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+}  // namespace
+
+double GpuTimer::Section::medianMs() const { return median(milliseconds); }
+
+double GpuTimer::Section::medianFragments() const { return median(fragments); }
+
+GpuTimer::GpuTimer(GraphicsDevice& device) : device_(device) {}
+
+GpuTimer::~GpuTimer() {
+    for (GLuint& q : allQueries_) deviceImpl(device_).deleteQuery(q);
+    for (auto& p : pending_)
+        if (p->samples) deviceImpl(device_).deleteQuery(p->samples);
+    for (auto& p : open_)
+        if (p->samples) deviceImpl(device_).deleteQuery(p->samples);
+}
+
+std::uint32_t GpuTimer::newQuery() {
+    if (!freeQueries_.empty()) {
+        GLuint q = freeQueries_.back();
+        freeQueries_.pop_back();
+        return q;
+    }
+    GLuint q = deviceImpl(device_).createQuery(GL_TIMESTAMP);
+    allQueries_.push_back(q);
+    return q;
+}
+
+int GpuTimer::sectionIndex(const std::string& name) {
+    for (std::size_t i = 0; i < sections_.size(); ++i)
+        if (sections_[i].name == name) return int(i);
+    sections_.push_back(Section{name, {}, {}});
+    return int(sections_.size() - 1);
+}
+
+void GpuTimer::Begin(const std::string& name) {
+    if (open_.empty() && frameStart_ == 0) {
+        frameStart_ = newQuery();
+        glQueryCounter(frameStart_, GL_TIMESTAMP);
+    }
+    auto p = std::make_unique<Pending>();
+    p->section = sectionIndex(name);
+    if (countFragments_ && open_.empty() && !deviceImpl(device_).fragmentTally) {
+        p->samples = deviceImpl(device_).createQuery(GL_SAMPLES_PASSED);
+        glBeginQuery(GL_SAMPLES_PASSED, p->samples);
+    }
+    p->begin = newQuery();
+    glQueryCounter(p->begin, GL_TIMESTAMP);
+    open_.push_back(std::move(p));
+}
+
+void GpuTimer::End() {
+    if (open_.empty()) throw InvalidOperation("GpuTimer::End() without a matching Begin()");
+    std::unique_ptr<Pending> p = std::move(open_.back());
+    open_.pop_back();
+    p->end = newQuery();
+    glQueryCounter(p->end, GL_TIMESTAMP);
+    if (p->samples) glEndQuery(GL_SAMPLES_PASSED);
+    pending_.push_back(std::move(p));
+}
+
+void GpuTimer::EndFrame() {
+    if (!open_.empty()) throw InvalidOperation("GpuTimer::EndFrame() with section '" + sections_[std::size_t(open_.back()->section)].name + "' still open");
+    if (frameStart_ != 0) {
+        auto p = std::make_unique<Pending>();
+        p->section = sectionIndex("frame");
+        p->begin = frameStart_;
+        p->end = newQuery();
+        glQueryCounter(p->end, GL_TIMESTAMP);
+        pending_.push_back(std::move(p));
+        frameStart_ = 0;
+    }
+    collect(false);
+}
+
+void GpuTimer::Finish() { collect(true); }
+
+void GpuTimer::collect(bool wait) {
+    // Results arrive in submission order, so stop at the first one that is not ready.
+    std::size_t done = 0;
+    for (; done < pending_.size(); ++done) {
+        Pending& p = *pending_[done];
+        GLint ready = 0;
+        if (!wait) {
+            glGetQueryObjectiv(p.end, GL_QUERY_RESULT_AVAILABLE, &ready);
+            if (!ready) break;
+        }
+        GLuint64 t0 = 0, t1 = 0;
+        glGetQueryObjectui64v(p.begin, GL_QUERY_RESULT, &t0);
+        glGetQueryObjectui64v(p.end, GL_QUERY_RESULT, &t1);
+        sections_[std::size_t(p.section)].milliseconds.push_back(double(t1 - t0) * 1e-6);
+        if (p.samples) {
+            GLuint64 fragments = 0;
+            glGetQueryObjectui64v(p.samples, GL_QUERY_RESULT, &fragments);
+            sections_[std::size_t(p.section)].fragments.push_back(double(fragments));
+            deviceImpl(device_).deleteQuery(p.samples);
+        }
+        freeQueries_.push_back(p.begin);
+        freeQueries_.push_back(p.end);
+    }
+    pending_.erase(pending_.begin(), pending_.begin() + std::ptrdiff_t(done));
+}
+
+}  // namespace fxport

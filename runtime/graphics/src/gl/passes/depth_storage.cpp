@@ -1,0 +1,158 @@
+// Depth/stencil buffers made when a draw first needs them (issue 16). XNA games give render targets
+// a DepthFormat (and keep the back buffer's default Depth24Stencil8) that nothing draws into with a
+// depth or stencil test: light maps, post-processing targets, 2D games. With
+// PresentationParameters::LazyDepthStorage a target's buffer is made at the first draw into it that
+// tests depth or stencil (XNA: the first bound target's buffer serves all of an MRT binding). Until
+// then no draw has read or written it, so only the last whole-target clear of each channel can be
+// seen: it waits on the target and runs on the new buffer first. A clear of part of it makes the
+// buffer at once. The pixels are those of making every buffer with its target (tests render both).
+#include <cstdint>
+#include <vector>
+
+#include "device/device_impl.h"
+#include "fxport/graphics/render_target.h"
+#include "gl/gl_formats.h"
+
+namespace fxport {
+
+namespace {
+
+constexpr unsigned kDepth = unsigned(ClearOptions::DepthBuffer);
+constexpr unsigned kStencil = unsigned(ClearOptions::Stencil);
+constexpr unsigned kDepthStencil = kDepth | kStencil;
+
+long channels(unsigned bits) { return long((bits & kDepth) != 0) + long((bits & kStencil) != 0); }
+
+// As drivers store them: 24-bit depth takes 4 bytes with or without stencil.
+std::int64_t bytesOf(const DepthStorage& storage) {
+    const int perPixel = storage.format == DepthFormat::None ? 0 : storage.format == DepthFormat::Depth16 ? 2 : 4;
+    return std::int64_t(storage.width) * std::int64_t(storage.height) * perPixel;
+}
+
+Texture* firstBound(const std::vector<RenderTargetBinding>& targets, RenderTarget2D* backBuffer) {
+    return targets.empty() ? backBuffer : targets[0].RenderTarget;
+}
+
+}  // namespace
+
+DepthStorageStatistics GraphicsDevice::depthStorageStatistics() const { return impl_->depthStats; }
+
+void GraphicsDevice::Impl::adoptDepthStorage(DepthStorage& storage) {
+    if (storage.format == DepthFormat::None) return;
+    ++depthStats.requested;
+    depthStats.requestedBytes += bytesOf(storage);
+    if (!lazyDepthStorage) makeDepthStorage(storage);
+}
+
+void GraphicsDevice::Impl::releaseDepthStorage(DepthStorage& storage) {
+    deleteRenderbuffer(storage.renderbuffer);
+    storage.waitingClear = 0;
+}
+
+DepthStorage* GraphicsDevice::Impl::boundDepthStorage() {
+    if (depthOverride) return depthOverride->format == DepthFormat::None ? nullptr : depthOverride;
+    Texture* first = firstBound(targets, backBuffer.get());
+    if (!first) return nullptr;  // the back buffer while it is being made
+    DepthStorage& storage = first->kind() == Texture::Kind::TextureCube
+                                ? static_cast<RenderTargetCube*>(first)->depthStorage()
+                                : static_cast<RenderTarget2D*>(first)->depthStorage();
+    return storage.format == DepthFormat::None ? nullptr : &storage;
+}
+
+void GraphicsDevice::Impl::makeDepthStorageFor(const fxport::DepthStencilState& state) {
+    // D3D (and GL) write depth only where the depth test is on, so a draw without either test
+    // neither reads nor writes the buffer.
+    if (!state.DepthBufferEnable && !state.StencilEnable) return;
+    DepthStorage* storage = boundDepthStorage();
+    if (!storage || storage->renderbuffer != 0) return;
+    if (depthTestIsMoot(state)) return;
+    makeDepthStorage(*storage);
+}
+
+bool GraphicsDevice::Impl::depthTestIsMoot(const fxport::DepthStencilState& state) {
+    if (state.StencilEnable || state.DepthBufferWriteEnable) return false;
+    const DepthStorage* storage = boundDepthStorage();
+    return storage && depthTestPassesAll(state, *storage);
+}
+
+// A buffer not made yet holds one value, that of the last clear of its depth (still pending on the
+// binding, or waiting on the target). The buffers are fixed-point, so GL clamps every fragment's
+// depth (and a shader's SV_Depth) to [0, 1] before the test: against 1, LessEqual cannot fail (the
+// tutorials' DepthRead light passes), against 0, GreaterEqual cannot, Always never does. Such a
+// test that writes nothing draws what no test draws.
+bool GraphicsDevice::Impl::depthTestPassesAll(const fxport::DepthStencilState& state, const DepthStorage& storage) const {
+    float value = 0;
+    if (pendingClear.options & kDepth) value = pendingClear.depth;
+    else if (storage.waitingClear & kDepth) value = storage.clearDepth;
+    else return state.DepthBufferFunction == CompareFunction::Always;  // never cleared: contents unknown
+    switch (state.DepthBufferFunction) {
+    case CompareFunction::Always: return true;
+    case CompareFunction::LessEqual: return value >= 1;
+    case CompareFunction::GreaterEqual: return value <= 0;
+    default: return false;
+    }
+}
+
+void GraphicsDevice::Impl::makeDepthStorage(DepthStorage& storage) {
+    storage.renderbuffer = createRenderbuffer();
+    glNamedRenderbufferStorage(storage.renderbuffer, detail::glDepthFormat(storage.format), storage.width,
+                               storage.height);
+    ++depthStats.allocated;
+    depthStats.allocatedBytes += bytesOf(storage);
+    if (&storage != boundDepthStorage()) return;  // made with its target: nothing is bound or waits
+    // The target's framebuffers have no depth attachment: make them again.
+    dropFramebuffersUsing(firstBound(targets, backBuffer.get())->glName());
+    bindTargets();
+    // A clear of the channel still pending on the binding came after the waiting one and replaces it.
+    const unsigned replaced = storage.waitingClear & pendingClear.options;
+    clearStats.replaced += channels(replaced);
+    const unsigned waiting = storage.waitingClear & ~replaced;
+    storage.waitingClear = 0;
+    executeClear(Rectangle(0, 0, targetWidth, targetHeight), waiting, Vector4(), storage.clearDepth,
+                 storage.clearStencil);
+}
+
+unsigned GraphicsDevice::Impl::holdDepthClear(const Rectangle& rect, unsigned options, float depth, int stencil) {
+    const unsigned bits = options & kDepthStencil;
+    if (bits == 0) return options;
+    DepthStorage* storage = boundDepthStorage();
+    if (!storage || storage->renderbuffer != 0) return options;
+    const bool wholeTarget = rect.X <= 0 && rect.Y <= 0 && rect.X + rect.Width >= targetWidth &&
+                             rect.Y + rect.Height >= targetHeight;
+    if (!wholeTarget) {
+        // Pixels outside the rectangle keep what the waiting clear left: the buffer is needed now.
+        makeDepthStorage(*storage);
+        return options;
+    }
+    clearStats.replaced += channels(storage->waitingClear & bits);
+    storage->waitingClear |= bits;
+    if (bits & kDepth) storage->clearDepth = depth;
+    if (bits & kStencil) storage->clearStencil = stencil;
+    return options & ~bits;
+}
+
+void GraphicsDevice::Impl::discardWaitingDepthClear(unsigned options, long& counter) {
+    DepthStorage* storage = boundDepthStorage();
+    if (!storage) return;
+    const unsigned dropped = storage->waitingClear & options;
+    counter += channels(dropped);
+    storage->waitingClear &= ~dropped;
+}
+
+void GraphicsDevice::Impl::leaveDiscardedDepth() {
+    if (!lazyDepthStorage) return;
+    DepthStorage* storage = boundDepthStorage();
+    if (!storage) return;
+    // XNA clears a DiscardContents target's depth and stencil when it is bound again, and nothing
+    // can read them while it is not bound: a clear still waiting is never seen, and GL may drop
+    // the buffer's contents (a tiled GPU then does not write them back to memory).
+    discardWaitingDepthClear(kDepthStencil, clearStats.dropped);
+    if (storage->renderbuffer == 0) return;
+    if (boundFramebuffer == 0) bindTargets();
+    const GLenum attachment =
+        storage->format == DepthFormat::Depth24Stencil8 ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT;
+    glInvalidateFramebuffer(GL_FRAMEBUFFER, 1, &attachment);  // boundFramebuffer
+    ++depthStats.invalidated;
+}
+
+}  // namespace fxport

@@ -1,0 +1,183 @@
+// Clears that wait until something needs them (issue 16): XNA 4 clears a DiscardContents target
+// when it is bound, and ports clear it again right after; D3D drivers fold such clears, GL ones
+// execute both. The device records a clear of the whole target per channel (colour, depth,
+// stencil) and sends it when a draw or a read-back needs that channel, so a clear replaced by the
+// next one, and a depth/stencil clear of a target nothing draws into with depth, cost nothing. The
+// pixels are the same as executing every clear at once (PresentationParameters::DeferClears=false
+// does that; tests compare the two). A depth/stencil buffer that no draw has needed yet does not
+// exist (LazyDepthStorage): a clear of it waits on its target instead (depth_storage.cpp).
+#include <algorithm>
+#include <vector>
+
+#include "device/device_impl.h"
+#include "fxport/xlate/compiled_effect.h"
+#include "fxport/graphics/render_target.h"
+
+namespace fxport {
+
+namespace {
+constexpr unsigned kColor = unsigned(ClearOptions::Target);
+constexpr unsigned kDepth = unsigned(ClearOptions::DepthBuffer);
+constexpr unsigned kStencil = unsigned(ClearOptions::Stencil);
+long channels(unsigned bits) { return long((bits & kColor) != 0) + long((bits & kDepth) != 0) + long((bits & kStencil) != 0); }
+}  // namespace
+
+void GraphicsDevice::Impl::executeClear(const Rectangle& rect, unsigned options, const Vector4& color, float depth,
+                                        int stencil) {
+    if (options == 0) return;
+    if (boundFramebuffer == 0) bindTargets();
+    options = holdDepthClear(rect, options, depth, stencil);  // a depth buffer not made yet (depth_storage.cpp)
+    if (options == 0) return;
+    noteWrittenTargets((options & kColor) != 0, (options & (kDepth | kStencil)) != 0, rect, true);
+    clearStats.executed += channels(options);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(rect.X, rect.Y, rect.Width, rect.Height);
+    std::size_t colorTargets = std::max<std::size_t>(1, targets.size());
+    if (options & kColor) {
+        const float c[4] = {color.X, color.Y, color.Z, color.W};
+        for (std::size_t i = 0; i < colorTargets; ++i) {
+            glColorMaski(GLuint(i), GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+            glClearNamedFramebufferfv(boundFramebuffer, GL_COLOR, GLint(i), c);
+        }
+    }
+    bool clearDepth = options & kDepth;
+    bool clearStencil = options & kStencil;
+    if (clearDepth) glDepthMask(GL_TRUE);
+    if (clearStencil) glStencilMask(0xff);
+    if (clearDepth && clearStencil) {
+        glClearNamedFramebufferfi(boundFramebuffer, GL_DEPTH_STENCIL, 0, depth, stencil);
+    } else if (clearDepth) {
+        glClearNamedFramebufferfv(boundFramebuffer, GL_DEPTH, 0, &depth);
+    } else if (clearStencil) {
+        glClearNamedFramebufferiv(boundFramebuffer, GL_STENCIL, 0, &stencil);
+    }
+    // Put back what the shadow says GL has.
+    shadow.reapply();
+}
+
+void GraphicsDevice::Impl::recordClear(unsigned options, const Vector4& color, float depth, int stencil) {
+    clearStats.replaced += channels(pendingClear.options & options);
+    pendingClear.options |= options;
+    if (options & kColor) pendingClear.color = color;
+    if (options & kDepth) pendingClear.depth = depth;
+    if (options & kStencil) pendingClear.stencil = stencil;
+}
+
+void GraphicsDevice::Impl::resolvePendingClear(unsigned options) {
+    unsigned now = pendingClear.options & options;
+    if (now == 0) return;
+    pendingClear.options &= ~now;
+    executeClear(Rectangle(0, 0, targetWidth, targetHeight), now, pendingClear.color, pendingClear.depth,
+                 pendingClear.stencil);
+}
+
+void GraphicsDevice::Impl::resolvePendingClearBeforeDraw(const fxport::DepthStencilState& state) {
+    if (pendingClear.options == 0) return;
+    // A depth test reads the depth buffer, a stencil test the stencil buffer; writes need a test on
+    // (D3D writes depth only where the depth test is enabled). D24S8 clears both in one call, so a
+    // draw that needs either resolves both.
+    unsigned needed = kColor;
+    if (state.DepthBufferEnable || state.StencilEnable) needed |= kDepth | kStencil;
+    resolvePendingClear(needed);
+}
+
+void GraphicsDevice::Impl::resolvePendingClearBeforeRead(const Texture* texture) {
+    storageBarrier();  // a read-back after a shader wrote the texture as an image (storage_bindings.cpp)
+    if (!(pendingClear.options & kColor)) return;
+    bool bound = targets.empty() ? texture == backBuffer.get()
+                                 : std::any_of(targets.begin(), targets.end(),
+                                               [&](const RenderTargetBinding& b) { return b.RenderTarget == texture; });
+    if (bound) resolvePendingClear(kColor);
+}
+
+void GraphicsDevice::DiscardContents(ClearOptions options) { impl_->discardContents(unsigned(options)); }
+
+void GraphicsDevice::Impl::discardContents(unsigned options) {
+    if (!honourDiscards) return;
+    const unsigned dropped = pendingClear.options & options;
+    clearStats.discarded += channels(dropped);
+    pendingClear.options &= ~dropped;
+    discardWaitingDepthClear(options, clearStats.discarded);
+    if (boundFramebuffer == 0) bindTargets();
+    std::vector<GLenum> attachments;
+    if (options & kColor)
+        for (std::size_t i = 0; i < std::max<std::size_t>(1, targets.size()); ++i)
+            attachments.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
+    if ((options & kDepth) && (options & kStencil)) attachments.push_back(GL_DEPTH_STENCIL_ATTACHMENT);
+    else if (options & kDepth) attachments.push_back(GL_DEPTH_ATTACHMENT);
+    else if (options & kStencil) attachments.push_back(GL_STENCIL_ATTACHMENT);
+    if (!attachments.empty())
+        glInvalidateFramebuffer(GL_FRAMEBUFFER, GLsizei(attachments.size()), attachments.data());  // boundFramebuffer
+}
+
+// The sprite's rectangle covers the viewport (SpriteBatch checked: an unrotated, unflipped sprite
+// through SpriteBatch's own vertex shader and XNA's matrix, no transform, corners at or beyond the
+// viewport's; the -0.5 of the matrix and the +0.5 - 1/256 of the D3D9 pixel-centre emulation leave
+// its edges 1/256 pixel up-left of the viewport's, so every pixel centre is strictly inside).
+// Every pixel is then written unless something here stops it: blending, a write mask, a depth or
+// stencil test, the scissor, culling of a clockwise sprite, a viewport smaller than the target,
+// several targets (a sprite effect writes one), or a pixel shader that can discard. Otherwise the
+// clear's colour is never seen and is not sent.
+void GraphicsDevice::Impl::dropColorClearUnderCoveringSprite(const ShaderProgram* spriteVertexShader) {
+    if (!dropCoveredClears || !(pendingClear.options & kColor)) return;
+    if (boundFramebuffer == 0) bindTargets();  // targetWidth/Height are the bound targets'
+    const fxport::BlendState& blend = device.BlendState;
+    const fxport::DepthStencilState& depth = device.DepthStencilState;
+    const fxport::RasterizerState& raster = device.RasterizerState;
+    const fxport::Viewport& viewport = device.Viewport;
+    const ShaderProgram* vertex = shaders[0];
+    const ShaderProgram* pixel = shaders[1];
+    const bool writesAll = blend.ColorWriteChannels == fxport::ColorWriteChannels::All;
+    const bool ownVertexShader = vertex && vertex == spriteVertexShader && vertex->shader &&
+                                 vertex->shader->needsD3D9PixelOffset;
+    const bool pixelMayDiscard = !pixel || !pixel->shader || emulation.alphaTest || pixel->mayDiscard;
+    if (blend.blendingEnabled() || !writesAll || depth.DepthBufferEnable || depth.StencilEnable ||
+        raster.ScissorTestEnable || raster.CullMode == fxport::CullMode::CullClockwiseFace ||
+        raster.FillMode != fxport::FillMode::Solid || blend.MultiSampleMask != -1 || targets.size() > 1 ||
+        !ownVertexShader || pixelMayDiscard || viewport.X != 0 || viewport.Y != 0 ||
+        viewport.Width != targetWidth || viewport.Height != targetHeight)
+        return;
+    pendingClear.options &= ~kColor;
+    ++clearStats.covered;
+}
+
+// The pending colour clear is zero in every channel and is executed for this draw, so every
+// pixel the draw blends onto holds 0. On an unsigned-normalized target the source is clamped to
+// [0, 1] and every factor is finite, so with source factor One: Add gives src + 0 * f = src,
+// Subtract src - 0 * f = src, Max max(src, 0) = src -- the same bits a write gives, whether the
+// blender works in fixed point or in float. (Min and ReverseSubtract give 0; float targets could
+// meet 0 * Inf.) A write draws no blend and may run as a compute pass.
+bool GraphicsDevice::Impl::blendOverZeroClearIsWrite() const {
+    if (!dropCoveredClears || !(pendingClear.options & kColor) || !(pendingClear.color == Vector4(0, 0, 0, 0))) return false;
+    const fxport::BlendState& blend = device.BlendState;
+    if (!blend.blendingEnabled()) return false;
+    auto writes = [](fxport::Blend source, fxport::BlendFunction function) {
+        return source == fxport::Blend::One && (function == fxport::BlendFunction::Add ||
+                                                function == fxport::BlendFunction::Subtract || function == fxport::BlendFunction::Max);
+    };
+    if (!writes(blend.ColorSourceBlend, blend.ColorBlendFunction) || !writes(blend.AlphaSourceBlend, blend.AlphaBlendFunction))
+        return false;
+    auto unsignedNormalized = [](SurfaceFormat f) {
+        return f == SurfaceFormat::Color || f == SurfaceFormat::Bgr565 || f == SurfaceFormat::Bgra5551 ||
+               f == SurfaceFormat::Bgra4444 || f == SurfaceFormat::Rgba1010102 || f == SurfaceFormat::Rg32 ||
+               f == SurfaceFormat::Rgba64;
+    };
+    if (targets.empty()) return unsignedNormalized(backBuffer->Format());
+    return std::all_of(targets.begin(), targets.end(),
+                       [&](const RenderTargetBinding& b) { return unsignedNormalized(b.RenderTarget->Format()); });
+}
+
+void GraphicsDevice::Impl::leaveBoundTargets() {
+    resolvePendingClear(kColor);  // a render target is read as a texture after it is unbound
+    if (boundUsage() != fxport::RenderTargetUsage::DiscardContents) {
+        resolvePendingClear(~0u);
+        return;
+    }
+    // Nothing tested this depth/stencil buffer since the clear, nothing can read it, and binding
+    // the target again clears it again.
+    clearStats.dropped += channels(pendingClear.options);
+    pendingClear.options = 0;
+    leaveDiscardedDepth();
+}
+
+}  // namespace fxport

@@ -1,0 +1,111 @@
+# The graphics runtime's inner boundaries (issue 22; docs/DESIGN.md, "What a draw does"), checked on
+# the sources of runtime/graphics, runtime/d3d11 and runtime/framework:
+#   1. no GL call (gl[A-Z]...( ) outside runtime/graphics/src/gl/;
+#   2. the device core's and the effect runtime's private headers (device/device_impl.h,
+#      effect/effect_impl.h) and the GL backend's headers (gl/...) included only from their folder;
+#   3. public headers (runtime/*/include) free of GL: no GL headers, types or constants, and no
+#      internal header;
+#   4. the GL-free internal headers (the backend seam, the state shadow, vertex-input matching,
+#      the front-end core) stay GL-free.
+# Rules 1 and 2 do not hold everywhere yet: the files that still break them are listed below,
+# each list may only shrink. A listed file that no longer breaks the rule fails the test too
+# (take it off the list), so the lists say exactly what is left of issue 22 item 1.
+# Usage: cmake -DSOURCE_DIR=<repo> -P check_graphics_seam.cmake
+set(src runtime/graphics/src)
+set(glCallsLeft  # rule 1: files of the device core, effects and diagnostics that still call GL
+  ${src}/device/compute_dispatch.cpp ${src}/device/front_end_core.cpp
+  ${src}/device/graphics_device.cpp ${src}/device/render_target.cpp ${src}/device/storage_bindings.cpp
+  ${src}/device/structured_buffer.cpp ${src}/device/tessellated_draw.cpp ${src}/device/texture.cpp
+  ${src}/device/vertex_buffer.cpp ${src}/effect/effect.cpp
+  ${src}/diagnostics/finite_check.cpp ${src}/diagnostics/fragment_tally.cpp ${src}/diagnostics/gpu_limits.cpp
+  ${src}/diagnostics/gpu_timer.cpp)
+set(deviceImplLeft  # rule 2: files outside device/ that still reach into the device's private state
+  ${src}/diagnostics/fragment_tally.cpp ${src}/diagnostics/gpu_limits.cpp ${src}/diagnostics/gpu_timer.cpp
+  ${src}/effect/effect_impl.h ${src}/effect/pass_states.cpp ${src}/gl/passes/compute_pass.cpp
+  ${src}/gl/passes/depth_storage.cpp ${src}/gl/passes/pending_clear.cpp ${src}/gl/passes/texel_copies.cpp
+  ${src}/helpers/sprite_batch.cpp)
+set(effectImplLeft  # rule 2: files outside effect/ that still read an Effect's private state
+  ${src}/device/draw_state.cpp ${src}/device/graphics_device.cpp ${src}/device/texture.cpp)
+set(glHeadersLeft  # rule 2: files outside gl/ that still include a GL backend header
+  ${src}/device/front_end_core.cpp ${src}/device/graphics_device.cpp ${src}/device/render_target.cpp
+  ${src}/device/storage_bindings.cpp ${src}/device/tessellated_draw.cpp ${src}/device/texture.cpp
+  ${src}/diagnostics/finite_check.cpp ${src}/diagnostics/gpu_limits.cpp ${src}/effect/effect.cpp
+  ${src}/helpers/sprite_batch.cpp)
+set(glFreeInternal  # rule 4
+  ${src}/device/backend.h ${src}/device/state_shadow.h ${src}/device/vertex_input.h ${src}/device/front_end_core.h)
+
+set(problems "")
+set(stillListed "")
+# Checks `where` against one rule: `broken` says whether it breaks it, `exceptions` the list.
+macro(judge where broken exceptions what)
+  list(FIND ${exceptions} "${where}" listed)
+  if(${broken} AND listed EQUAL -1)
+    string(APPEND problems "${where}: ${what}\n")
+  elseif(NOT ${broken} AND NOT listed EQUAL -1)
+    string(APPEND problems "${where}: listed in ${exceptions} (check_graphics_seam.cmake) but no longer ${what}: take it off the list\n")
+  endif()
+endmacro()
+
+file(GLOB_RECURSE sources RELATIVE ${SOURCE_DIR}
+     ${SOURCE_DIR}/runtime/graphics/*.h ${SOURCE_DIR}/runtime/graphics/*.cpp ${SOURCE_DIR}/runtime/graphics/*.inc
+     ${SOURCE_DIR}/runtime/d3d11/*.h ${SOURCE_DIR}/runtime/d3d11/*.cpp
+     ${SOURCE_DIR}/runtime/framework/*.h ${SOURCE_DIR}/runtime/framework/*.cpp)
+foreach(where ${sources})
+  file(READ ${SOURCE_DIR}/${where} text)
+  string(REGEX REPLACE "//[^\n]*" "" code "${text}")     # comments may name GL calls
+  string(REPLACE "glName(" "name(" code "${code}")        # the resources' handle accessor, not a GL call
+  set(code " ${code}")
+  string(REGEX MATCHALL "\n[ \t]*#[ \t]*include[ \t]*[\"<][^\">]*[\">]" includes "${code}")
+  get_filename_component(folder ${where} DIRECTORY)
+
+  # 1. GL calls
+  if(NOT where MATCHES "^${src}/gl/")
+    set(broken FALSE)
+    if(code MATCHES "[^A-Za-z0-9_]gl[A-Z][A-Za-z0-9]*[ ]*\\(")
+      set(broken TRUE)
+    endif()
+    judge(${where} broken glCallsLeft "calls GL (every gl* call belongs under ${src}/gl/)")
+  endif()
+
+  # 2. private headers
+  foreach(rule "device/device_impl\\.h|^${src}/device/|deviceImplLeft"
+               "effect/effect_impl\\.h|^${src}/effect/|effectImplLeft"
+               "\"gl/|^${src}/gl/|glHeadersLeft")
+    string(REPLACE "|" ";" parts "${rule}")
+    list(GET parts 0 header)
+    list(GET parts 1 home)
+    list(GET parts 2 exceptions)
+    if(NOT where MATCHES "${home}")
+      set(broken FALSE)
+      if(includes MATCHES "${header}")
+        set(broken TRUE)
+      endif()
+      judge(${where} broken ${exceptions} "includes a private header of another folder (${header})")
+    endif()
+  endforeach()
+
+  # 3. public headers, 4. GL-free internal headers
+  list(FIND glFreeInternal "${where}" glFree)
+  if(where MATCHES "^runtime/[a-z0-9]+/include/" OR NOT glFree EQUAL -1)
+    if(includes MATCHES "(GL|EGL|GLFW|epoxy)/|platform/gl\\.h")
+      string(APPEND problems "${where}: a public or GL-free header includes GL\n")
+    endif()
+    # Internal headers: none in a public header; only GL-free ones in a GL-free header.
+    string(REGEX MATCHALL "\"(device|effect|gl|helpers|diagnostics)/[^\"]*\"" internal "${includes}")
+    foreach(header ${internal})
+      string(REPLACE "\"" "" header "${header}")
+      list(FIND glFreeInternal "${src}/${header}" ok)
+      if(where MATCHES "^runtime/[a-z0-9]+/include/" OR ok EQUAL -1)
+        string(APPEND problems "${where}: a public or GL-free header includes ${header}\n")
+      endif()
+    endforeach()
+    if(code MATCHES "[^A-Za-z0-9_](GL[a-z]+|GL_[A-Z0-9_]+)[^A-Za-z0-9_]")
+      string(APPEND problems "${where}: a public or GL-free header names a GL type or constant (${CMAKE_MATCH_1})\n")
+    endif()
+  endif()
+endforeach()
+
+if(problems)
+  message(FATAL_ERROR "the graphics runtime's boundaries (tests/layering/check_graphics_seam.cmake):\n${problems}")
+endif()
+message(STATUS "the graphics runtime keeps its boundaries")
