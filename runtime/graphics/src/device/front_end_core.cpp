@@ -450,7 +450,7 @@ void copyTextureRegion(Texture& destination, int destinationLevel, int x, int y,
     if (x < 0 || y < 0 || x + area.Width > dw || y + area.Height > dh)
         throw ArgumentError("CopySubresourceRegion: (" + std::to_string(x) + ", " + std::to_string(y) + ") + " + std::to_string(area.Width) + "x" +
                             std::to_string(area.Height) + " is outside the destination's " + std::to_string(dw) + "x" + std::to_string(dh) + " level");
-    GraphicsDevice::Impl& d = destination.deviceImpl(device());
+    GraphicsDevice::Impl& d = deviceImpl(destination.device());
     d.resolvePendingClearBeforeRead(&source);
     d.resolvePendingClearBeforeRead(&destination);
     d.storageBarrier();

@@ -603,9 +603,10 @@ std::vector<std::uint32_t> GltfReader::triangleList(const tinygltf::Primitive& p
             order.push_back(std::uint32_t(value));
         }
     } else {
-        order.resize(count);
+        // Pushed rather than resized: GCC 12 at -O3 calls resize() here a null dereference.
+        order.reserve(count);
         for (std::size_t i = 0; i < count; ++i) {
-            order[i] = std::uint32_t(i);
+            order.push_back(std::uint32_t(i));
         }
     }
 
