@@ -26,6 +26,8 @@
 
 #include "effect_validation.h"
 #include "front_end_worker.h"
+#include "keyed_hash.h"
+#include "text_util.h"
 #include "fxport/xlate/diagnostics.h"
 #include "fxport/xlate/effect_compiler.h"
 #include "fxport/xlate/effect_file.h"
@@ -479,6 +481,62 @@ TEST_F(Containment, HundredThousandParametersAreOneLocatedError) {
     EXPECT_EQ(r.status, 1) << r.output.substr(0, 2000);
     EXPECT_NE(r.output.find("many.fx(16385,7): error FX1205:"), std::string::npos) << r.output.substr(0, 2000);
     EXPECT_EQ(r.output.find("input:0:0"), std::string::npos) << r.output.substr(0, 2000);
+}
+
+// An entry whose checksum was recomputed by someone without the cache's secret (as anyone could
+// with the unkeyed FNV sum before): refused, and the real effect compiled and stored again.
+TEST_F(Containment, CacheEntryForgedWithoutTheSecretIsRefused) {
+    CompileOptions o;
+    o.cacheDir = path("cache");
+    std::string a = write("a.fx", effectWithTechnique("Real"));
+    compileEffectFile(a, o);
+    fs::path entry = cacheEntries(o.cacheDir).at(0);
+    CompileOptions other;
+    other.cacheDir = path("other-cache");
+    compileEffectFile(write("forged.fx", effectWithTechnique("Forged")), other);
+    std::string forgedEntry = readAll(cacheEntries(other.cacheDir).at(0).string());
+    std::string forgedBody = forgedEntry.substr(forgedEntry.find("\n=\n") + 3);
+    // A's header and dependencies, the forged body, and every 32-digit checksum line but the key's
+    // recomputed over the body, as the old unkeyed format was sealed.
+    std::string text = readAll(entry.string());
+    std::string header = text.substr(0, text.find("\n=\n") + 3);
+    std::string sealed;
+    std::istringstream lines(header);
+    for (std::string line; std::getline(lines, line);) {
+        if (line.size() == 36 && line.compare(0, 4, "key ") != 0 && line[3] == ' ') line = line.substr(0, 4) + fxport::xlate::contentHash(forgedBody);
+        sealed += line + "\n";
+    }
+    std::ofstream(entry, std::ios::binary | std::ios::trunc) << sealed << forgedBody;
+    CompiledEffect e = compileEffectFile(a, o);
+    ASSERT_EQ(e.techniques.size(), 1u);
+    EXPECT_EQ(e.techniques[0].name, "Real");
+    EXPECT_EQ(readAll(entry.string()), text);  // replaced by the real entry
+}
+
+// The secret must be the user's own: a secret file others may read is not used, and nothing is
+// cached with it (an entry sealed with a secret others know could be forged).
+TEST_F(Containment, CacheSecretOthersMayReadIsNotUsed) {
+    CompileOptions o;
+    o.cacheDir = path("cache");
+    compileEffectFile(write("a.fx", effectWithTechnique("A")), o);
+    fs::path secret = fs::path(o.cacheDir) / "secret";
+    ASSERT_TRUE(fs::is_regular_file(secret));
+    EXPECT_EQ(fs::status(secret).permissions() & fs::perms::all, fs::perms::owner_read | fs::perms::owner_write);
+    EXPECT_EQ(fs::file_size(secret), 32u);
+    fs::permissions(secret, fs::perms::group_read | fs::perms::others_read, fs::perm_options::add);
+    compileEffectFile(write("b.fx", effectWithTechnique("B")), o);
+    EXPECT_EQ(cacheEntries(o.cacheDir).size(), 1u);  // b.fx compiled, not cached
+}
+
+// SipHash-2-4 against the reference implementation's vectors (key 00..0f, message 00..len-1).
+TEST_F(Containment, KeyedHashIsTheReferenceSipHash) {
+    fxport::xlate::SipKey key;
+    for (int i = 0; i < 16; ++i) key[static_cast<size_t>(i)] = static_cast<uint8_t>(i);
+    char message[64];
+    for (int i = 0; i < 64; ++i) message[i] = static_cast<char>(i);
+    const std::pair<size_t, uint64_t> vectors[] = {{0, 0x726fdb47dd0e0e31ull}, {1, 0x74f839c593dc67fdull}, {7, 0xab0200f58b01d137ull},
+                                                   {8, 0x93f5f5799a932462ull}, {15, 0xa129ca6149be45e5ull}, {63, 0x958a324ceb064572ull}};
+    for (auto [len, want] : vectors) EXPECT_EQ(fxport::xlate::sipHash24(key, std::string_view(message, len)), want) << len;
 }
 
 // A worker killed from outside (the OOM killer, a user's kill -9) is not "ran past its limit".

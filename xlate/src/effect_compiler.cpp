@@ -879,7 +879,8 @@ void EffectBuilder::finishReflection() {
 
 // The cache key: everything a compile reads except the include files, which the entry lists with
 // their content hashes (see effect_cache.h). Fields are length-prefixed, so no two different
-// inputs concatenate to the same text.
+// inputs concatenate to the same text. The whole text: the cache names and seals the entry with a
+// keyed hash of it.
 std::string cacheKey(const std::string& source, const std::string& displayPath, const std::string& absolutePath,
                      const CompileOptions& options) {
     std::error_code ec;
@@ -911,7 +912,7 @@ std::string cacheKey(const std::string& source, const std::string& displayPath, 
         field("H", options.hullOfDomainShader.partitioning + "," + options.hullOfDomainShader.outputTopology);
     if (options.skipShaders) field("O", "outline");
     field("S", source);
-    return contentHash(key);
+    return key;
 }
 
 void dumpIfAsked(const CompiledEffect& effect) {
