@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -537,6 +538,57 @@ TEST_F(Containment, KeyedHashIsTheReferenceSipHash) {
     const std::pair<size_t, uint64_t> vectors[] = {{0, 0x726fdb47dd0e0e31ull}, {1, 0x74f839c593dc67fdull}, {7, 0xab0200f58b01d137ull},
                                                    {8, 0x93f5f5799a932462ull}, {15, 0xa129ca6149be45e5ull}, {63, 0x958a324ceb064572ull}};
     for (auto [len, want] : vectors) EXPECT_EQ(fxport::xlate::sipHash24(key, std::string_view(message, len)), want) << len;
+}
+
+// Workers of a pool run at the same time, each returns under its own id, and one that crashes
+// leaves the others alone.
+TEST_F(Containment, WorkerPoolRunsWorkersAtOnce) {
+    WorkerPool pool(WorkerLimits{}, 4);
+    auto start = std::chrono::steady_clock::now();
+    for (size_t i = 0; i < 4; ++i)
+        pool.submit(i, [i] {
+            if (i == 2) ::raise(SIGSEGV);
+            ::usleep(800000);
+            return "worker " + std::to_string(i);
+        });
+    std::map<size_t, WorkerOutcome> outcomes;
+    while (auto done = pool.next()) outcomes[done->first] = done->second;
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ASSERT_EQ(outcomes.size(), 4u);
+    for (size_t i : {0u, 1u, 3u}) {
+        EXPECT_EQ(outcomes[i].kind, WorkerOutcome::Kind::Done) << i;
+        EXPECT_EQ(outcomes[i].payload, "worker " + std::to_string(i));
+    }
+    EXPECT_EQ(outcomes[2].kind, WorkerOutcome::Kind::Crashed);
+    EXPECT_EQ(outcomes[2].signal, SIGSEGV);
+    EXPECT_LT(seconds, 2.0);  // one after another: 2.4 s
+}
+
+// compileEffectFiles gives, in the order of the files, what compileEffectFile gives for each
+// (the same compiled output byte for byte), a contained crash among them included.
+TEST_F(Containment, EffectsCompiledInParallelMatchOneByOne) {
+    std::vector<std::string> files = {"hlsl/zima-lights/RenderGBuffer.fx", kCrashingEffect, "hlsl/xna-deferred/GBuffer.fx",
+                                      "tests/fixtures/broken/limit_array_too_large.fx", "hlsl/rastertek/light.fx"};
+    for (const auto& f : files) ASSERT_TRUE(fs::exists(f)) << f;
+    std::vector<std::pair<std::string, CompileOptions>> jobs;
+    for (const auto& f : files) jobs.push_back({f, uncached()});
+    std::vector<std::string> parallel;
+    std::vector<size_t> order;
+    compileEffectFiles(jobs, [&](size_t i, EffectFileResult&& r) {
+        order.push_back(i);
+        parallel.push_back(r.effect ? serializeEffect(*r.effect) : r.errors.front().format());
+    });
+    ASSERT_EQ(order, (std::vector<size_t>{0, 1, 2, 3, 4}));
+    for (size_t i = 0; i < files.size(); ++i) {
+        std::string alone;
+        try {
+            alone = serializeEffect(compileEffectFile(files[i], uncached()));
+        } catch (const CompileError& e) {
+            alone = e.diagnostics().front().format();
+        }
+        EXPECT_EQ(parallel[i], alone) << files[i];
+    }
+    EXPECT_NE(parallel[1].find("FX9001"), std::string::npos) << parallel[1];
 }
 
 // A worker killed from outside (the OOM killer, a user's kill -9) is not "ran past its limit".
