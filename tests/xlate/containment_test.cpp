@@ -591,6 +591,46 @@ TEST_F(Containment, EffectsCompiledInParallelMatchOneByOne) {
     EXPECT_NE(parallel[1].find("FX9001"), std::string::npos) << parallel[1];
 }
 
+// One effect compiled alone: its shaders' front end in workers of the worker (FXPORT_JOBS=4) gives
+// the bytes one by one gives (FXPORT_JOBS=1), and a shader that crashes glslang there is reported
+// at the same shader, with the same retries, as when the build itself ran glslang on it.
+std::string compiledWithJobs(const std::string& path, const char* jobs, bool keepValidPasses) {
+    ::setenv("FXPORT_JOBS", jobs, 1);
+    CompileOptions o = uncached();
+    o.keepValidPasses = keepValidPasses;
+    std::string out;
+    try {
+        CompiledEffect e = compileEffectFile(path, o);
+        out = serializeEffect(e);
+        for (const auto& d : e.diagnostics) out += "\n" + d.format();
+    } catch (const CompileError& e) {
+        for (const auto& d : e.diagnostics()) out += d.format() + "\n";
+    }
+    ::unsetenv("FXPORT_JOBS");
+    return out;
+}
+
+TEST_F(Containment, ShadersCompiledInParallelMatchOneByOne) {
+    for (const char* f : {"tests/fixtures/realworld/annotations_states/MacroTechniques.fx",
+                          "tests/fixtures/realworld/asm_sm1/AsmPs11TextureAddressing.fx", "hlsl/xna-deferred/GBuffer.fx"}) {
+        ASSERT_TRUE(fs::exists(f)) << f;
+        std::string parallel = compiledWithJobs(f, "4", false);
+        EXPECT_EQ(parallel, compiledWithJobs(f, "1", false)) << f;
+        EXPECT_EQ(parallel.find("error"), std::string::npos) << parallel.substr(0, 500);
+    }
+    std::string crashing = write("crash.fx",
+        "float4 VS(float4 p : POSITION0) : POSITION0 { return p; }\n"
+        "float4 PS() : COLOR0 { return float4(1, 1, 1, 1); }\n"
+        "float4 PSBad() : COLOR0 { int x = -2147483648; int y = -1; return float4(x / y, 0, 0, 1); }\n"
+        "float4 PS3() : COLOR0 { return float4(0, 1, 0, 1); }\n"
+        "technique A { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }\n"
+        "technique B { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PSBad(); } }\n"
+        "technique C { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS3(); } }\n");
+    std::string parallel = compiledWithJobs(crashing, "4", true);
+    EXPECT_EQ(parallel, compiledWithJobs(crashing, "1", true));
+    EXPECT_NE(parallel.find("FX9001"), std::string::npos) << parallel.substr(0, 2000);
+}
+
 // A worker killed from outside (the OOM killer, a user's kill -9) is not "ran past its limit".
 TEST_F(Containment, WorkerKilledFromOutsideIsNotATimeLimit) {
     WorkerOutcome o = runInWorker(

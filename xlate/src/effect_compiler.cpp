@@ -1105,7 +1105,9 @@ CompiledEffect compileUncached(const std::string& source, const std::string& dis
             requests.clear();  // the build proper says what is wrong
         }
         reportWorkerProgress("prefetch");
-        if (requests.size() > 1) prefetched = prefetchFrontEnd(requests, g_shaderJobs);
+        // Two shaders gain less than the forks and the listing pass cost (a vertex and a pixel shader
+        // of a few milliseconds each); three or more gain.
+        if (requests.size() > 2) prefetched = prefetchFrontEnd(requests, g_shaderJobs);
     }
     EffectBuilder builder(pre, syntax, rewritten, options, effect, sharedVaryings, failedShaders);
     builder.usePrefetched(&prefetched);
