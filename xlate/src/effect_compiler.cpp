@@ -152,7 +152,7 @@ public:
     void buildTechniques();
     void finishReflection();
     void checkTessellationPass(Pass& pass, size_t token);
-    // Shaders compiled in parallel (shader_prefetch below): a pass that only lists the front-end
+    // Shaders compiled in parallel (prefetchFrontEnd below): a pass that only lists the front-end
     // requests the build would make, and the results of those requests computed ahead.
     void collectRequestsInto(std::map<std::string, OwnedRequest>* requests) { collecting_ = requests; }
     void usePrefetched(const Prefetched* results) { prefetched_ = results; }
@@ -1008,8 +1008,9 @@ bool isLooseShaderPath(const std::string& path) {
 // Shaders of one effect compiled in parallel: the front end (glslang and spirv-opt, most of a
 // shader's cost) of every request the build will make runs ahead in workers of this worker, one
 // per request, as many at once as there are CPUs; the build then takes their results in its own
-// order, so the output is the same as compiling one by one. A request whose worker failed is
-// computed again by the build itself, where a crash is reported at its shader as before.
+// order, so the output is the same as compiling one by one. A request whose worker failed makes
+// the build fail the same way when it reaches that shader (frontEnd), so a crash, timeout or
+// out-of-memory is reported at its shader as before, without running glslang on it again.
 std::string spirvPayload(const SpirvModule& m) {
     nlohmann::json errors = nlohmann::json::array();
     for (const auto& e : m.errors) errors.push_back({e.line, e.token, e.message, e.aboutTheEntryPoint});
