@@ -1,18 +1,14 @@
 // libFuzzer harness over compiled-effect loading: the bytes of a compiled-effect file (what
-// `fxport compile` writes and Effect::FromCompiledFile reads) or of a compile-cache entry. Either
-// loads into a CompiledEffect that passes validation, or fails with CompileError FX3101 (file) /
-// nullopt (cache); nothing else, and nothing the runtime could index out of bounds with.
-#include <unistd.h>
-
+// `fxport compile` writes and Effect::FromCompiledFile reads, and the body of a cache entry). It
+// loads into a CompiledEffect that passes validation, or fails with CompileError FX3101; nothing
+// else, and nothing the runtime could index out of bounds with. (Cache entries as a whole, with
+// their keyed MAC and dependencies: fuzz_cache_entry.cpp.)
 #include <cstdint>
 #include <cstdlib>
 #include <exception>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <string>
 
-#include "effect_cache.h"
 #include "effect_validation.h"
 #include "fxport/xlate/effect_file.h"
 
@@ -41,19 +37,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         }
     } catch (const std::exception& e) {
         std::cerr << "escaped exception (not a CompileError): " << e.what() << "\n";
-        std::abort();
-    }
-    // The same bytes as a cache entry: used or not, never a crash or an escaped exception.
-    static const std::string cacheDir = [] {
-        auto d = std::filesystem::temp_directory_path() / ("fxport-fuzz-cache-" + std::to_string(::getpid()));
-        std::filesystem::create_directories(d);
-        return d.string();
-    }();
-    std::ofstream(cacheDir + "/entry.fxeffect", std::ios::binary).write(text.data(), static_cast<std::streamsize>(text.size()));
-    try {
-        (void)xlate::loadCachedEffect(cacheDir, "entry");
-    } catch (const std::exception& e) {
-        std::cerr << "cache load threw: " << e.what() << "\n";
         std::abort();
     }
     return 0;

@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -26,6 +27,8 @@
 
 #include "effect_validation.h"
 #include "front_end_worker.h"
+#include "keyed_hash.h"
+#include "text_util.h"
 #include "fxport/xlate/diagnostics.h"
 #include "fxport/xlate/effect_compiler.h"
 #include "fxport/xlate/effect_file.h"
@@ -479,6 +482,153 @@ TEST_F(Containment, HundredThousandParametersAreOneLocatedError) {
     EXPECT_EQ(r.status, 1) << r.output.substr(0, 2000);
     EXPECT_NE(r.output.find("many.fx(16385,7): error FX1205:"), std::string::npos) << r.output.substr(0, 2000);
     EXPECT_EQ(r.output.find("input:0:0"), std::string::npos) << r.output.substr(0, 2000);
+}
+
+// An entry whose checksum was recomputed by someone without the cache's secret (as anyone could
+// with the unkeyed FNV sum before): refused, and the real effect compiled and stored again.
+TEST_F(Containment, CacheEntryForgedWithoutTheSecretIsRefused) {
+    CompileOptions o;
+    o.cacheDir = path("cache");
+    std::string a = write("a.fx", effectWithTechnique("Real"));
+    compileEffectFile(a, o);
+    fs::path entry = cacheEntries(o.cacheDir).at(0);
+    CompileOptions other;
+    other.cacheDir = path("other-cache");
+    compileEffectFile(write("forged.fx", effectWithTechnique("Forged")), other);
+    std::string forgedEntry = readAll(cacheEntries(other.cacheDir).at(0).string());
+    std::string forgedBody = forgedEntry.substr(forgedEntry.find("\n=\n") + 3);
+    // A's header and dependencies, the forged body, and every 32-digit checksum line but the key's
+    // recomputed over the body, as the old unkeyed format was sealed.
+    std::string text = readAll(entry.string());
+    std::string header = text.substr(0, text.find("\n=\n") + 3);
+    std::string sealed;
+    std::istringstream lines(header);
+    for (std::string line; std::getline(lines, line);) {
+        if (line.size() == 36 && line.compare(0, 4, "key ") != 0 && line[3] == ' ') line = line.substr(0, 4) + fxport::xlate::contentHash(forgedBody);
+        sealed += line + "\n";
+    }
+    std::ofstream(entry, std::ios::binary | std::ios::trunc) << sealed << forgedBody;
+    CompiledEffect e = compileEffectFile(a, o);
+    ASSERT_EQ(e.techniques.size(), 1u);
+    EXPECT_EQ(e.techniques[0].name, "Real");
+    EXPECT_EQ(readAll(entry.string()), text);  // replaced by the real entry
+}
+
+// The secret must be the user's own: a secret file others may read is not used, and nothing is
+// cached with it (an entry sealed with a secret others know could be forged).
+TEST_F(Containment, CacheSecretOthersMayReadIsNotUsed) {
+    CompileOptions o;
+    o.cacheDir = path("cache");
+    compileEffectFile(write("a.fx", effectWithTechnique("A")), o);
+    fs::path secret = fs::path(o.cacheDir) / "secret";
+    ASSERT_TRUE(fs::is_regular_file(secret));
+    EXPECT_EQ(fs::status(secret).permissions() & fs::perms::all, fs::perms::owner_read | fs::perms::owner_write);
+    EXPECT_EQ(fs::file_size(secret), 32u);
+    fs::permissions(secret, fs::perms::group_read | fs::perms::others_read, fs::perm_options::add);
+    compileEffectFile(write("b.fx", effectWithTechnique("B")), o);
+    EXPECT_EQ(cacheEntries(o.cacheDir).size(), 1u);  // b.fx compiled, not cached
+}
+
+// SipHash-2-4 against the reference implementation's vectors (key 00..0f, message 00..len-1).
+TEST_F(Containment, KeyedHashIsTheReferenceSipHash) {
+    fxport::xlate::SipKey key;
+    for (int i = 0; i < 16; ++i) key[static_cast<size_t>(i)] = static_cast<uint8_t>(i);
+    char message[64];
+    for (int i = 0; i < 64; ++i) message[i] = static_cast<char>(i);
+    const std::pair<size_t, uint64_t> vectors[] = {{0, 0x726fdb47dd0e0e31ull}, {1, 0x74f839c593dc67fdull}, {7, 0xab0200f58b01d137ull},
+                                                   {8, 0x93f5f5799a932462ull}, {15, 0xa129ca6149be45e5ull}, {63, 0x958a324ceb064572ull}};
+    for (auto [len, want] : vectors) EXPECT_EQ(fxport::xlate::sipHash24(key, std::string_view(message, len)), want) << len;
+}
+
+// Workers of a pool run at the same time, each returns under its own id, and one that crashes
+// leaves the others alone.
+TEST_F(Containment, WorkerPoolRunsWorkersAtOnce) {
+    WorkerPool pool(WorkerLimits{}, 4);
+    auto start = std::chrono::steady_clock::now();
+    for (size_t i = 0; i < 4; ++i)
+        pool.submit(i, [i] {
+            if (i == 2) ::raise(SIGSEGV);
+            ::usleep(800000);
+            return "worker " + std::to_string(i);
+        });
+    std::map<size_t, WorkerOutcome> outcomes;
+    while (auto done = pool.next()) outcomes[done->first] = done->second;
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ASSERT_EQ(outcomes.size(), 4u);
+    for (size_t i : {0u, 1u, 3u}) {
+        EXPECT_EQ(outcomes[i].kind, WorkerOutcome::Kind::Done) << i;
+        EXPECT_EQ(outcomes[i].payload, "worker " + std::to_string(i));
+    }
+    EXPECT_EQ(outcomes[2].kind, WorkerOutcome::Kind::Crashed);
+    EXPECT_EQ(outcomes[2].signal, SIGSEGV);
+    EXPECT_LT(seconds, 2.0);  // one after another: 2.4 s
+}
+
+// compileEffectFiles gives, in the order of the files, what compileEffectFile gives for each
+// (the same compiled output byte for byte), a contained crash among them included.
+TEST_F(Containment, EffectsCompiledInParallelMatchOneByOne) {
+    std::vector<std::string> files = {"hlsl/zima-lights/RenderGBuffer.fx", kCrashingEffect, "hlsl/xna-deferred/GBuffer.fx",
+                                      "tests/fixtures/broken/limit_array_too_large.fx", "hlsl/rastertek/light.fx"};
+    for (const auto& f : files) ASSERT_TRUE(fs::exists(f)) << f;
+    std::vector<std::pair<std::string, CompileOptions>> jobs;
+    for (const auto& f : files) jobs.push_back({f, uncached()});
+    std::vector<std::string> parallel;
+    std::vector<size_t> order;
+    compileEffectFiles(jobs, [&](size_t i, EffectFileResult&& r) {
+        order.push_back(i);
+        parallel.push_back(r.effect ? serializeEffect(*r.effect) : r.errors.front().format());
+    });
+    ASSERT_EQ(order, (std::vector<size_t>{0, 1, 2, 3, 4}));
+    for (size_t i = 0; i < files.size(); ++i) {
+        std::string alone;
+        try {
+            alone = serializeEffect(compileEffectFile(files[i], uncached()));
+        } catch (const CompileError& e) {
+            alone = e.diagnostics().front().format();
+        }
+        EXPECT_EQ(parallel[i], alone) << files[i];
+    }
+    EXPECT_NE(parallel[1].find("FX9001"), std::string::npos) << parallel[1];
+}
+
+// One effect compiled alone: its shaders' front end in workers of the worker (FXPORT_JOBS=4) gives
+// the bytes one by one gives (FXPORT_JOBS=1), and a shader that crashes glslang there is reported
+// at the same shader, with the same retries, as when the build itself ran glslang on it.
+std::string compiledWithJobs(const std::string& path, const char* jobs, bool keepValidPasses) {
+    ::setenv("FXPORT_JOBS", jobs, 1);
+    CompileOptions o = uncached();
+    o.keepValidPasses = keepValidPasses;
+    std::string out;
+    try {
+        CompiledEffect e = compileEffectFile(path, o);
+        out = serializeEffect(e);
+        for (const auto& d : e.diagnostics) out += "\n" + d.format();
+    } catch (const CompileError& e) {
+        for (const auto& d : e.diagnostics()) out += d.format() + "\n";
+    }
+    ::unsetenv("FXPORT_JOBS");
+    return out;
+}
+
+TEST_F(Containment, ShadersCompiledInParallelMatchOneByOne) {
+    for (const char* f : {"tests/fixtures/realworld/annotations_states/MacroTechniques.fx",
+                          "tests/fixtures/realworld/asm_sm1/AsmPs11TextureAddressing.fx", "hlsl/xna-deferred/GBuffer.fx"}) {
+        ASSERT_TRUE(fs::exists(f)) << f;
+        std::string parallel = compiledWithJobs(f, "4", false);
+        EXPECT_EQ(parallel, compiledWithJobs(f, "1", false)) << f;
+        EXPECT_EQ(parallel.find("error"), std::string::npos) << parallel.substr(0, 500);
+    }
+    std::string crashing = write("crash.fx",
+        "float4 VS(float4 p : POSITION0) : POSITION0 { return p; }\n"
+        "float4 PS() : COLOR0 { return float4(1, 1, 1, 1); }\n"
+        "float4 PSBad() : COLOR0 { int x = -2147483648; int y = -1; return float4(x / y, 0, 0, 1); }\n"
+        "float4 PS3() : COLOR0 { return float4(0, 1, 0, 1); }\n"
+        "technique A { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }\n"
+        "technique B { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PSBad(); } }\n"
+        "technique C { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS3(); } }\n");
+    std::string parallel = compiledWithJobs(crashing, "4", true);
+    EXPECT_EQ(parallel, compiledWithJobs(crashing, "1", true));
+    EXPECT_NE(parallel.find("FX9001"), std::string::npos) << parallel.substr(0, 2000);
 }
 
 // A worker killed from outside (the OOM killer, a user's kill -9) is not "ran past its limit".

@@ -493,26 +493,57 @@ int main(int argc, char** argv) {
                 std::cout << m << ": error FX1001: no such file or folder\n";
                 ++failed;
             }
+            // One line per file, in order; the effects compile in parallel (compileEffectFiles).
+            auto report = [&](const std::string& f, EffectFileResult&& r) {
+                if (!r.effect) {
+                    std::cout << r.errors.front().format() << "\n";
+                    ++failed;
+                    return;
+                }
+                const CompiledEffect& e = *r.effect;
+                std::cout << f << ": ok (" << e.techniques.size() << " techniques, " << e.shaders.size() << " shaders)" << std::endl;
+                // States the effect sets that fxport ignores are listed always; other warnings on --warnings.
+                for (const auto& d : e.diagnostics)
+                    if (d.severity == Severity::Warning && (a.showWarnings || d.dropsState())) std::cerr << d.format() << "\n";
+                ++passed;
+            };
+            std::vector<std::pair<std::string, CompileOptions>> jobs;
             for (const auto& [f, scannedRoot] : files) {
                 CompileOptions options = a.options;
                 if (options.includeRoot.empty()) options.includeRoot = scannedRoot;
-                if (isHeaderFile(f)) {
-                    std::cout << f << ": skipped: a header is compiled through the effects that #include it\n";
-                    continue;
-                }
-                try {
-                    CompiledEffect e = compileInput(f, a, options);
-                    std::cout << f << ": ok (" << e.techniques.size() << " techniques, " << e.shaders.size() << " shaders)\n";
-                    // States the effect sets that fxport ignores are listed always; other warnings on --warnings.
-                    for (const auto& d : e.diagnostics)
-                        if (d.severity == Severity::Warning && (a.showWarnings || d.dropsState())) std::cerr << d.format() << "\n";
-                    ++passed;
-                } catch (const CompileError& ce) {
-                    const auto& d = ce.diagnostics().front();
-                    std::cout << d.format() << "\n";
-                    ++failed;
+                jobs.push_back({f, options});
+            }
+            // Headers are skipped where they stand in the list; loose shaders (--entry) compile one by one.
+            std::vector<std::pair<std::string, CompileOptions>> effects;
+            std::vector<size_t> after;  // effects[k] is reported after the skipped files before jobs index after[k]
+            size_t shown = 0;
+            auto showSkippedUpTo = [&](size_t end) {
+                for (; shown < end; ++shown)
+                    if (isHeaderFile(jobs[shown].first))
+                        std::cout << jobs[shown].first << ": skipped: a header is compiled through the effects that #include it\n";
+            };
+            for (size_t i = 0; i < jobs.size(); ++i)
+                if (!isHeaderFile(jobs[i].first)) effects.push_back(jobs[i]), after.push_back(i);
+            if (a.entries.empty()) {
+                compileEffectFiles(effects, [&](size_t k, EffectFileResult&& r) {
+                    showSkippedUpTo(after[k]);
+                    shown = after[k] + 1;
+                    report(effects[k].first, std::move(r));
+                });
+            } else {
+                for (size_t k = 0; k < effects.size(); ++k) {
+                    showSkippedUpTo(after[k]);
+                    shown = after[k] + 1;
+                    EffectFileResult r;
+                    try {
+                        r.effect = compileInput(effects[k].first, a, effects[k].second);
+                    } catch (const CompileError& ce) {
+                        r.errors = ce.diagnostics();
+                    }
+                    report(effects[k].first, std::move(r));
                 }
             }
+            showSkippedUpTo(jobs.size());
             std::cout << passed << " passed, " << failed << " failed\n";
             return failed ? 1 : 0;
         }

@@ -11,9 +11,12 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
+#include <optional>
 #include <set>
 #include <functional>
 #include <mutex>
+#include <new>
 #include <tuple>
 
 #include "asm_pass_bindings.h"
@@ -111,6 +114,23 @@ struct ShaderKey {
 // says so): a later attempt skips them and compiles the rest of the effect.
 using FailedShaders = std::map<std::string, Diagnostic>;
 
+// A front-end request that owns its source (HlslToSpirvRequest points at the builder's), and
+// the text that tells requests apart.
+struct OwnedRequest {
+    std::string source;
+    HlslToSpirvRequest request;
+    static std::string keyOf(const HlslToSpirvRequest& r) {
+        return std::to_string(static_cast<int>(r.stage)) + "|" + r.entryPoint + "|" + (r.dx9Compatible ? "9" : "") + "|" +
+               std::to_string(r.shaderModel) + "|" + *r.source;
+    }
+};
+
+// What the prefetch found for each request: the module, or how its worker failed.
+struct Prefetched {
+    std::map<std::string, SpirvModule> modules;
+    std::map<std::string, WorkerOutcome> failures;
+};
+
 class EffectBuilder {
 public:
     EffectBuilder(const PreprocessedEffect& pre, const EffectSyntax& syntax, RewrittenEffect& rewritten,
@@ -132,6 +152,10 @@ public:
     void buildTechniques();
     void finishReflection();
     void checkTessellationPass(Pass& pass, size_t token);
+    // Shaders compiled in parallel (prefetchFrontEnd below): a pass that only lists the front-end
+    // requests the build would make, and the results of those requests computed ahead.
+    void collectRequestsInto(std::map<std::string, OwnedRequest>* requests) { collecting_ = requests; }
+    void usePrefetched(const Prefetched* results) { prefetched_ = results; }
 
 private:
     const PreprocessedEffect& pre_;
@@ -150,6 +174,9 @@ private:
     void findPassHull(const FxPass& pass);
     AsmPassBindings passAsm_;             // of the pass being built: what its asm shaders' registers hold
     int asmFunctions_ = 0;
+    std::map<std::string, OwnedRequest>* collecting_ = nullptr;
+    const Prefetched* prefetched_ = nullptr;
+    SpirvModule frontEnd(const HlslToSpirvRequest& request);
 
     Diagnostic at(Severity s, const char* id, const std::string& message, size_t token) const {
         const Token& t = syntax_.tokens[std::min(token, syntax_.tokens.size() - 1)];
@@ -497,6 +524,36 @@ int EffectBuilder::compileAsmShader(const FxShaderExpr& expr, ShaderStage expect
                       rewritten_.dx9Samplers || !translated.samplers.empty());
 }
 
+// hlslToSpirv(), or what the prefetch computed for the same request, or (collecting) nothing: the
+// request is recorded and the shader fails, which the collecting pass throws away.
+SpirvModule EffectBuilder::frontEnd(const HlslToSpirvRequest& request) {
+    if (collecting_) {
+        std::string key = OwnedRequest::keyOf(request);
+        if (!collecting_->count(key)) {
+            OwnedRequest& owned = (*collecting_)[key];
+            owned.source = *request.source;
+            owned.request = request;
+            owned.request.source = &owned.source;
+        }
+        SpirvModule none;
+        none.errors.push_back({0, "", "(collected)", false});
+        return none;
+    }
+    if (prefetched_) {
+        std::string key = OwnedRequest::keyOf(request);
+        if (auto it = prefetched_->modules.find(key); it != prefetched_->modules.end()) return it->second;
+        // Its worker failed: this worker fails the same way here, where the progress record names
+        // the shader (emitShader), without running glslang on it again.
+        if (auto it = prefetched_->failures.find(key); it != prefetched_->failures.end()) {
+            if (it->second.kind == WorkerOutcome::Kind::OutOfMemory) throw std::bad_alloc();
+            int sig = it->second.kind == WorkerOutcome::Kind::TimedOut ? SIGXCPU : it->second.signal ? it->second.signal : SIGABRT;
+            ::signal(sig, SIG_DFL);
+            ::raise(sig);
+        }
+    }
+    return hlslToSpirv(request);
+}
+
 int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile, const FxShaderExpr& expr, const std::string& displayEntry,
                               const std::string& arguments, const std::string& source, const std::string& entryName,
                               const EntryWrapper& wrapper, bool dx9Compatible) {
@@ -530,7 +587,7 @@ int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile
     request.entryPoint = entryName;
     request.dx9Compatible = dx9Compatible;
     request.shaderModel = profile.major;
-    SpirvModule spirv = hlslToSpirv(request);
+    SpirvModule spirv = frontEnd(request);
     // A vector passed to a scalar parameter of the effect's own function: fxc uses .x (warning
     // X3206), glslang finds no overload. Compile again with overloads that take vectors there
     // (glslang stops at the first such call, so as often as new functions turn up).
@@ -553,7 +610,7 @@ int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile
         std::string retried = rewritten_.hlslForGeometryShader(expected == ShaderStage::Geometry ? expr.entry : std::string(), overloads);
         retried += source.substr(base.size());
         request.source = &retried;
-        SpirvModule next = hlslToSpirv(request);
+        SpirvModule next = frontEnd(request);
         if (!next.errors.empty() && next.errors.front().message.find("no matching overloaded function") == std::string::npos) break;
         spirv = std::move(next);
         current = std::move(retried);
@@ -879,7 +936,8 @@ void EffectBuilder::finishReflection() {
 
 // The cache key: everything a compile reads except the include files, which the entry lists with
 // their content hashes (see effect_cache.h). Fields are length-prefixed, so no two different
-// inputs concatenate to the same text.
+// inputs concatenate to the same text. The whole text: the cache names and seals the entry with a
+// keyed hash of it.
 std::string cacheKey(const std::string& source, const std::string& displayPath, const std::string& absolutePath,
                      const CompileOptions& options) {
     std::error_code ec;
@@ -911,7 +969,7 @@ std::string cacheKey(const std::string& source, const std::string& displayPath, 
         field("H", options.hullOfDomainShader.partitioning + "," + options.hullOfDomainShader.outputTopology);
     if (options.skipShaders) field("O", "outline");
     field("S", source);
-    return contentHash(key);
+    return key;
 }
 
 void dumpIfAsked(const CompiledEffect& effect) {
@@ -946,6 +1004,56 @@ bool isLooseShaderPath(const std::string& path) {
     std::string ext = toLower(fs::path(path).extension().string());
     return ext == ".hlsl" || ext == ".vs" || ext == ".ps" || ext == ".gs" || ext == ".vsh" || ext == ".psh" || ext == ".shader";
 }
+
+// Shaders of one effect compiled in parallel: the front end (glslang and spirv-opt, most of a
+// shader's cost) of every request the build will make runs ahead in workers of this worker, one
+// per request, as many at once as there are CPUs; the build then takes their results in its own
+// order, so the output is the same as compiling one by one. A request whose worker failed makes
+// the build fail the same way when it reaches that shader (frontEnd), so a crash, timeout or
+// out-of-memory is reported at its shader as before, without running glslang on it again.
+std::string spirvPayload(const SpirvModule& m) {
+    nlohmann::json errors = nlohmann::json::array();
+    for (const auto& e : m.errors) errors.push_back({e.line, e.token, e.message, e.aboutTheEntryPoint});
+    return nlohmann::json{{"words", m.words}, {"errors", errors}, {"warnings", m.warnings}}.dump(-1, ' ', false,
+                                                                                               nlohmann::json::error_handler_t::replace);
+}
+
+SpirvModule spirvFromPayload(const std::string& payload) {
+    nlohmann::json j = nlohmann::json::parse(payload);
+    SpirvModule m;
+    m.words = j.at("words").get<std::vector<std::uint32_t>>();
+    for (const auto& e : j.at("errors")) m.errors.push_back({e.at(0).get<int>(), e.at(1).get<std::string>(), e.at(2).get<std::string>(), e.at(3).get<bool>()});
+    m.warnings = j.at("warnings").get<std::string>();
+    return m;
+}
+
+Prefetched prefetchFrontEnd(const std::map<std::string, OwnedRequest>& requests, int jobs) {
+    Prefetched results;
+    std::vector<const std::pair<const std::string, OwnedRequest>*> order;
+    for (const auto& r : requests) order.push_back(&r);
+    // The longest sources first: the last to finish is then a short one.
+    std::stable_sort(order.begin(), order.end(), [](auto* a, auto* b) { return a->second.source.size() > b->second.source.size(); });
+    const WorkerLimits limits = WorkerLimits::fromEnvironment();
+    WorkerPool pool(limits, jobs);
+    for (size_t i = 0; i < order.size(); ++i)
+        pool.submit(i, [r = order[i]] { return spirvPayload(hlslToSpirv(r->second.request)); });
+    while (auto done = pool.next()) {
+        const std::string& key = order[done->first]->first;
+        if (done->second.kind != WorkerOutcome::Kind::Done) {
+            results.failures[key] = std::move(done->second);  // the build fails the same way at this shader
+            continue;
+        }
+        try {
+            results.modules[key] = spirvFromPayload(done->second.payload);
+        } catch (const std::exception&) {
+        }
+    }
+    return results;
+}
+
+// How many shaders a worker compiles at once (set in the worker, before it compiles): 1 where
+// other effects' workers already share the CPUs (compileEffectFiles).
+int g_shaderJobs = 1;
 
 // The compile proper, after the cache missed (stores its result there when `key` is not empty).
 CompiledEffect compileUncached(const std::string& source, const std::string& displayPath, const std::string& absolutePath,
@@ -983,7 +1091,27 @@ CompiledEffect compileUncached(const std::string& source, const std::string& dis
     if (auto rejected = runFxcChecks(syntax, pre.map); !rejected.empty()) throw CompileError(std::move(rejected));
     RewrittenEffect rewritten = rewriteEffect(pre.text, syntax, pre.map, effect.diagnostics);
     for (auto& w : findImplicitTruncations(syntax, pre.map)) effect.diagnostics.push_back(std::move(w));
+    Prefetched prefetched;
+    if (insideWorker() && g_shaderJobs > 1 && !options.skipShaders) {
+        std::map<std::string, OwnedRequest> requests;
+        try {  // the same build on copies, only listing what it would hand to the front end
+            RewrittenEffect rewrittenCopy = rewritten;
+            CompiledEffect scratch;
+            VaryingLocations varyings;
+            EffectBuilder collector(pre, syntax, rewrittenCopy, options, scratch, sharedVaryings ? &varyings : nullptr, failedShaders);
+            collector.collectRequestsInto(&requests);
+            collector.buildParameters();
+            collector.buildTechniques();
+        } catch (const std::exception&) {
+            requests.clear();  // the build proper says what is wrong
+        }
+        reportWorkerProgress("prefetch");
+        // Two shaders gain less than the forks and the listing pass cost (a vertex and a pixel shader
+        // of a few milliseconds each); three or more gain.
+        if (requests.size() > 2) prefetched = prefetchFrontEnd(requests, g_shaderJobs);
+    }
     EffectBuilder builder(pre, syntax, rewritten, options, effect, sharedVaryings, failedShaders);
+    builder.usePrefetched(&prefetched);
     builder.buildParameters();
     builder.buildTechniques();
     builder.finishReflection();
@@ -1135,21 +1263,43 @@ Diagnostic describeWorkerFailure(const WorkerOutcome& outcome, const WorkerLimit
     return d;
 }
 
-CompiledEffect compileInWorker(const std::string& source, const std::string& displayPath, const std::string& absolutePath,
-                               const CompileOptions& options, const std::string& key) {
-    const WorkerLimits limits = WorkerLimits::fromEnvironment();
-    warmFrontEnd();
+// One effect compiled in workers, attempt after attempt: a shader that took a worker down is left
+// out of the next attempt (at most 8 times), so the rest of the effect still compiles.
+struct WorkerCompile {
+    std::string source, displayPath, absolutePath;
+    CompileOptions options;
+    std::string key;
     FailedShaders failed;
-    for (int attempt = 0;; ++attempt) {
-        WorkerOutcome outcome = runInWorker(
-            [&] { return workerPayload([&] { return compileUncached(source, displayPath, absolutePath, options, key, failed, nullptr); }); },
-            limits);
+    int attempt = 0;
+    int shaderJobs = 1;  // shaders compiled at once in the worker
+
+    // What the worker runs. Holds `this`: a WorkerCompile stays where it is while it compiles.
+    std::function<std::string()> work() const {
+        return [this] {
+            g_shaderJobs = shaderJobs;
+            return workerPayload([this] { return compileUncached(source, displayPath, absolutePath, options, key, failed, nullptr); });
+        };
+    }
+    // The effect; nullopt when it must be compiled again without the shader that failed. Throws
+    // CompileError when the worker failed outside a shader (or past the last attempt).
+    std::optional<CompiledEffect> take(const WorkerOutcome& outcome, const WorkerLimits& limits) {
         if (outcome.kind == WorkerOutcome::Kind::Done) return effectFromPayload(outcome.payload, displayPath);
         std::string shaderKey;
         Diagnostic d = describeWorkerFailure(outcome, limits, displayPath, failed, attempt < 8, shaderKey);
         if (shaderKey.empty()) throw CompileError({d});
         failed[shaderKey] = d;  // again, without that shader
+        ++attempt;
+        return std::nullopt;
     }
+};
+
+CompiledEffect compileInWorker(const std::string& source, const std::string& displayPath, const std::string& absolutePath,
+                               const CompileOptions& options, const std::string& key) {
+    const WorkerLimits limits = WorkerLimits::fromEnvironment();
+    warmFrontEnd();
+    WorkerCompile compile{source, displayPath, absolutePath, options, key, {}, 0, workerJobs()};
+    for (;;)
+        if (auto effect = compile.take(runInWorker(compile.work(), limits), limits)) return std::move(*effect);
 }
 
 }  // namespace
@@ -1162,7 +1312,12 @@ bool compilesInThisProcess(const CompileOptions& options) {
 CompiledEffect compileContained(const std::function<CompiledEffect()>& compile, const std::string& displayPath) {
     const WorkerLimits limits = WorkerLimits::fromEnvironment();
     warmFrontEnd();
-    WorkerOutcome outcome = runInWorker([&] { return workerPayload(compile); }, limits);
+    WorkerOutcome outcome = runInWorker(
+        [&] {
+            g_shaderJobs = workerJobs();
+            return workerPayload(compile);
+        },
+        limits);
     if (outcome.kind == WorkerOutcome::Kind::Done) return effectFromPayload(outcome.payload, displayPath);
     std::string shaderKey;
     throw CompileError({describeWorkerFailure(outcome, limits, displayPath, {}, true, shaderKey)});
@@ -1202,7 +1357,10 @@ CompiledEffect compile(const std::string& source, const std::string& displayPath
 
 }  // namespace
 
-CompiledEffect compileEffectFile(const std::string& path, const CompileOptions& options) {
+namespace {
+
+// The text of an effect file, after the checks made before reading it. Throws CompileError.
+std::string readEffectSource(const std::string& path) {
     std::error_code ec;
     if (fs::is_directory(path, ec)) {
         Diagnostic d;
@@ -1227,7 +1385,106 @@ CompiledEffect compileEffectFile(const std::string& path, const CompileOptions& 
         d.location = {path, 0, 0};
         throw CompileError({d});
     }
-    return compile(*text, path, path, options);
+    return std::move(*text);
+}
+
+// Reports results in the order of the files, each as soon as those before it are reported.
+class OrderedResults {
+public:
+    OrderedResults(size_t n, const std::function<void(size_t, EffectFileResult&&)>& done) : results_(n), done_(done) {}
+    void set(size_t i, EffectFileResult r) {
+        results_[i] = std::move(r);
+        for (; next_ < results_.size() && results_[next_]; ++next_) done_(next_, std::move(*results_[next_]));
+    }
+
+private:
+    std::vector<std::optional<EffectFileResult>> results_;
+    const std::function<void(size_t, EffectFileResult&&)>& done_;
+    size_t next_ = 0;
+};
+
+EffectFileResult resultOf(const std::function<CompiledEffect()>& compile) {
+    EffectFileResult r;
+    try {
+        r.effect = compile();
+    } catch (const CompileError& e) {
+        r.errors = e.diagnostics();
+    }
+    return r;
+}
+
+}  // namespace
+
+CompiledEffect compileEffectFile(const std::string& path, const CompileOptions& options) {
+    return compile(readEffectSource(path), path, path, options);
+}
+
+// As compileEffectText() per file, with the misses of the cache compiled in a pool of workers.
+void compileEffectFiles(const std::vector<std::pair<std::string, CompileOptions>>& files,
+                        const std::function<void(size_t, EffectFileResult&&)>& done) {
+    OrderedResults results(files.size(), done);
+    const WorkerLimits limits = WorkerLimits::fromEnvironment();
+    std::vector<std::unique_ptr<WorkerCompile>> compiles(files.size());
+    std::unique_ptr<WorkerPool> pool;
+    for (size_t i = 0; i < files.size(); ++i) {
+        const std::string& path = files[i].first;
+        CompileOptions options = files[i].second;
+        if (const char* dump = std::getenv("FXPORT_DUMP"); dump && *dump) options.keepRewrittenHlsl = true;
+        if (options.keepRewrittenHlsl) options.useCache = false;  // the cache does not keep the rewritten HLSL
+        std::string source, key;
+        try {
+            source = readEffectSource(path);
+            if (options.useCache) key = cacheKey(source, path, path, options);
+        } catch (const CompileError& e) {
+            results.set(i, {std::nullopt, e.diagnostics()});
+            continue;
+        }
+        if (!key.empty())
+            if (auto cached = loadCachedEffect(options.cacheDir, key)) {
+                results.set(i, {std::move(*cached), {}});
+                continue;
+            }
+        if (compilesInThisProcess(options)) {
+            results.set(i, resultOf([&] { return compileUncached(source, path, path, options, key, {}, nullptr); }));
+            continue;
+        }
+        compiles[i] = std::make_unique<WorkerCompile>(WorkerCompile{std::move(source), path, path, options, key, {}, 0, 1});
+    }
+    std::vector<size_t> misses;
+    for (size_t i = 0; i < files.size(); ++i)
+        if (compiles[i]) misses.push_back(i);
+    if (!misses.empty()) {
+        warmFrontEnd();  // before the first fork: every worker inherits glslang's tables
+        const int jobs = workerJobs();
+        pool = std::make_unique<WorkerPool>(limits, jobs);
+        // Fewer effects than CPUs: the rest compile shaders of each effect in parallel.
+        const int shaderJobs = std::max(1, jobs / static_cast<int>(misses.size()));
+        // The largest first, so that the last to finish is a small one.
+        std::stable_sort(misses.begin(), misses.end(), [&](size_t a, size_t b) { return compiles[a]->source.size() > compiles[b]->source.size(); });
+        for (size_t i : misses) {
+            compiles[i]->shaderJobs = shaderJobs;
+            pool->submit(i, compiles[i]->work());
+        }
+    }
+    while (pool)
+        if (auto finished = pool->next()) {
+            auto& [i, outcome] = *finished;
+            WorkerCompile& c = *compiles[i];
+            EffectFileResult r;
+            try {
+                if (auto effect = c.take(outcome, limits)) r.effect = std::move(*effect);
+                else {
+                    pool->submit(i, c.work());  // again, without the shader that failed
+                    continue;
+                }
+            } catch (const CompileError& e) {
+                r.errors = e.diagnostics();
+            }
+            compiles[i].reset();
+            results.set(i, std::move(r));
+        } else {
+            pool.reset();
+        }
 }
 
 CompiledEffect compileEffectSource(const std::string& source, const std::string& virtualPath, const CompileOptions& options) {

@@ -1,13 +1,16 @@
 // fork + pipe + setrlimit: the worker writes framed records ('P' progress, 'R' result, 'M' out of
-// memory) to a pipe; the parent reads them until the pipe closes and then reaps the child.
+// memory) to a pipe; the parent reads them until the pipe closes and then reaps the child. A pool
+// polls the pipes of several workers at once.
 #include "front_end_worker.h"
 
 #include <poll.h>
+#include <sched.h>
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdint>
@@ -76,6 +79,9 @@ constexpr bool kAddressSanitizer = false;
 #endif
 
 [[noreturn]] void workerMain(int fd, const std::function<std::string()>& work, const WorkerLimits& limits) {
+    // A worker's own worker (shaders compiled in parallel) lets go of its parent's pipe, so that
+    // the parent's end closes when the parent exits.
+    if (g_workerFd >= 0) ::close(g_workerFd);
     g_workerFd = fd;
     rlimit cpu{static_cast<rlim_t>(limits.cpuSeconds), static_cast<rlim_t>(limits.cpuSeconds) + 1};
     ::setrlimit(RLIMIT_CPU, &cpu);
@@ -115,20 +121,28 @@ void reportWorkerProgress(std::string_view where) { writeRecord('P', where); }
 
 bool insideWorker() { return g_workerFd >= 0; }
 
-WorkerOutcome runInWorker(const std::function<std::string()>& work, const WorkerLimits& limits) {
-    WorkerOutcome out;
+// One forked worker: its pipe, what it has sent so far and its wall-clock deadline.
+struct WorkerPool::Running {
+    size_t id = 0;
+    pid_t pid = -1;
+    int fd = -1;
+    std::string bytes;
+    std::chrono::steady_clock::time_point deadline;
+    bool timedOut = false;
+};
+
+namespace {
+
+// Forks a worker for `work`; nullptr when pipe or fork failed.
+std::unique_ptr<WorkerPool::Running> startWorker(const std::function<std::string()>& work, const WorkerLimits& limits) {
     int fds[2];
-    if (::pipe(fds) != 0) {
-        out.payload = work();
-        return out;
-    }
+    if (::pipe(fds) != 0) return nullptr;
     std::fflush(nullptr);  // nothing buffered is written twice
     pid_t pid = ::fork();
     if (pid < 0) {
         ::close(fds[0]);
         ::close(fds[1]);
-        out.payload = work();
-        return out;
+        return nullptr;
     }
     if (pid == 0) {
         ::close(fds[0]);
@@ -138,33 +152,24 @@ WorkerOutcome runInWorker(const std::function<std::string()>& work, const Worker
         workerMain(fds[1], work, limits);
     }
     ::close(fds[1]);
-    // Read records until the child closes the pipe (it exits), with a wall-clock limit as well:
-    // CPU time does not pass while a worker waits (a lock held by a thread that fork left behind).
-    std::string bytes;
-    auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(limits.cpuSeconds * 4 + 10);
-    bool timedOut = false;
-    char buf[65536];
-    for (;;) {
-        auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()).count();
-        if (left <= 0) {
-            timedOut = true;
-            ::kill(pid, SIGKILL);
-            break;
-        }
-        pollfd p{fds[0], POLLIN, 0};
-        int r = ::poll(&p, 1, static_cast<int>(std::min<long long>(left, 1000)));
-        if (r < 0 && errno == EINTR) continue;
-        if (r <= 0) continue;
-        ssize_t n = ::read(fds[0], buf, sizeof buf);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) break;
-        bytes.append(buf, static_cast<size_t>(n));
-    }
-    ::close(fds[0]);
+    auto w = std::make_unique<WorkerPool::Running>();
+    w->pid = pid;
+    w->fd = fds[0];
+    // CPU time does not pass while a worker waits (a lock held by a thread that fork left behind):
+    // a wall-clock limit as well.
+    w->deadline = std::chrono::steady_clock::now() + std::chrono::seconds(limits.cpuSeconds * 4 + 10);
+    return w;
+}
+
+// Reaps a worker whose pipe closed (or that was killed) and decodes its records.
+WorkerOutcome finishWorker(WorkerPool::Running& w) {
+    ::close(w.fd);
     int status = 0;
-    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    while (::waitpid(w.pid, &status, 0) < 0 && errno == EINTR) {
     }
+    WorkerOutcome out;
     bool gotResult = false, outOfMemory = false;
+    const std::string& bytes = w.bytes;
     for (size_t at = 0; at + 9 <= bytes.size();) {
         char kind = bytes[at];
         uint64_t n = 0;
@@ -176,14 +181,97 @@ WorkerOutcome runInWorker(const std::function<std::string()>& work, const Worker
         else if (kind == 'M') outOfMemory = true;
         else if (kind == 'R') out.payload = std::move(text), gotResult = true;
     }
-    if (gotResult && !timedOut && WIFEXITED(status) && WEXITSTATUS(status) == 0) return out;
+    if (gotResult && !w.timedOut && WIFEXITED(status) && WEXITSTATUS(status) == 0) return out;
     if (outOfMemory) out.kind = WorkerOutcome::Kind::OutOfMemory;
     // SIGKILL is ours only when the wall-clock limit sent it; otherwise the OOM killer or a user.
-    else if (timedOut || (WIFSIGNALED(status) && WTERMSIG(status) == SIGXCPU))
+    else if (w.timedOut || (WIFSIGNALED(status) && WTERMSIG(status) == SIGXCPU))
         out.kind = WorkerOutcome::Kind::TimedOut;
     else out.kind = WorkerOutcome::Kind::Crashed;
     out.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
     return out;
+}
+
+}  // namespace
+
+WorkerOutcome runInWorker(const std::function<std::string()>& work, const WorkerLimits& limits) {
+    WorkerPool pool(limits, 1);
+    pool.submit(0, work);
+    return pool.next()->second;
+}
+
+int workerJobs() {
+    if (const char* j = std::getenv("FXPORT_JOBS"); j && std::atoi(j) > 0) return std::min(std::atoi(j), 256);
+    cpu_set_t set;
+    if (::sched_getaffinity(0, sizeof set, &set) == 0 && CPU_COUNT(&set) > 0) return CPU_COUNT(&set);
+    long n = ::sysconf(_SC_NPROCESSORS_ONLN);
+    return n > 0 ? static_cast<int>(n) : 1;
+}
+
+WorkerPool::WorkerPool(const WorkerLimits& limits, int jobs) : limits_(limits), jobs_(std::max(jobs, 1)) {}
+
+WorkerPool::~WorkerPool() {
+    for (auto& w : running_) {
+        ::kill(w->pid, SIGKILL);
+        (void)finishWorker(*w);
+    }
+}
+
+void WorkerPool::submit(size_t id, std::function<std::string()> work) {
+    queued_.emplace_back(id, std::move(work));
+    startQueued();
+}
+
+void WorkerPool::startQueued() {
+    while (!queued_.empty() && static_cast<int>(running_.size()) < jobs_) {
+        auto [id, work] = std::move(queued_.front());
+        queued_.pop_front();
+        if (auto w = startWorker(work, limits_)) {
+            w->id = id;
+            running_.push_back(std::move(w));
+        } else {
+            WorkerOutcome here;  // no process to spare: run it here, as before the worker existed
+            here.payload = work();
+            finished_.emplace_back(id, std::move(here));
+        }
+    }
+}
+
+std::optional<std::pair<size_t, WorkerOutcome>> WorkerPool::next() {
+    char buf[65536];
+    while (finished_.empty() && !running_.empty()) {
+        auto now = std::chrono::steady_clock::now();
+        long long wait = 1000;
+        std::vector<pollfd> fds;
+        for (auto& w : running_) {
+            long long left = std::chrono::duration_cast<std::chrono::milliseconds>(w->deadline - now).count();
+            if (left <= 0 && !w->timedOut) {
+                w->timedOut = true;
+                ::kill(w->pid, SIGKILL);  // its pipe closes: read below
+            }
+            if (!w->timedOut) wait = std::max(0LL, std::min(wait, left));
+            fds.push_back({w->fd, POLLIN, 0});
+        }
+        int r = ::poll(fds.data(), fds.size(), static_cast<int>(wait));
+        if (r <= 0) continue;  // EINTR or a deadline to check
+        for (size_t i = 0; i < fds.size(); ++i) {
+            if (!(fds[i].revents & (POLLIN | POLLHUP | POLLERR))) continue;
+            Running& w = *running_[i];
+            ssize_t n = ::read(w.fd, buf, sizeof buf);
+            if (n < 0 && errno == EINTR) continue;
+            if (n > 0) {
+                w.bytes.append(buf, static_cast<size_t>(n));
+                continue;
+            }
+            finished_.emplace_back(w.id, finishWorker(w));  // the pipe closed: the worker exited
+            running_[i].reset();
+        }
+        running_.erase(std::remove(running_.begin(), running_.end(), nullptr), running_.end());
+        startQueued();
+    }
+    if (finished_.empty()) return std::nullopt;
+    auto done = std::move(finished_.front());
+    finished_.pop_front();
+    return done;
 }
 
 }  // namespace fxport::xlate

@@ -5,9 +5,15 @@
 // macro expansion; in the worker, either is a diagnostic. A cache hit never starts a worker.
 #pragma once
 
+#include <cstddef>
+#include <deque>
 #include <functional>
+#include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace fxport::xlate {
 
@@ -32,6 +38,38 @@ struct WorkerOutcome {
 // Runs `work` in a child process (fork) and returns what it returned, or how it failed.
 // Falls back to running `work` here when fork fails.
 WorkerOutcome runInWorker(const std::function<std::string()>& work, const WorkerLimits& limits);
+
+// How many workers run at once: $FXPORT_JOBS, else the CPUs this process may run on.
+int workerJobs();
+
+// Several workers at once, each with its own limits (a worker's limits are its own: a slow one
+// does not shorten another's time). All are forked from the thread that uses the pool, which
+// waits for them with poll(); nothing runs on other threads.
+//   WorkerPool pool(limits, workerJobs());
+//   pool.submit(0, work0); pool.submit(1, work1);
+//   while (auto done = pool.next()) use(done->first, done->second);
+class WorkerPool {
+public:
+    WorkerPool(const WorkerLimits& limits, int jobs);
+    ~WorkerPool();  // kills and reaps the workers still running (an exception left the caller)
+    WorkerPool(const WorkerPool&) = delete;
+    WorkerPool& operator=(const WorkerPool&) = delete;
+
+    // Starts `work` now if fewer than `jobs` run, else when one finishes. `id` comes back with it.
+    void submit(size_t id, std::function<std::string()> work);
+    // Waits for the next worker to finish: its id and outcome. nullopt when none runs or waits.
+    std::optional<std::pair<size_t, WorkerOutcome>> next();
+
+    struct Running;
+
+private:
+    void startQueued();
+    WorkerLimits limits_;
+    int jobs_;
+    std::deque<std::pair<size_t, std::function<std::string()>>> queued_;
+    std::vector<std::unique_ptr<Running>> running_;
+    std::deque<std::pair<size_t, WorkerOutcome>> finished_;  // ran here: fork failed
+};
 
 // True in a worker process (a compile there runs in it, never in a worker of its own).
 bool insideWorker();

@@ -49,6 +49,9 @@ void walkCode(std::string_view text, OnCode onCode, OnLineStart onLineStart) {
     }
 }
 
+
+}  // namespace
+
 std::string lineOf(std::string_view text, int line) {
     size_t pos = 0;
     for (int l = 1; l < line && pos != std::string_view::npos; ++l) {
@@ -62,8 +65,6 @@ std::string lineOf(std::string_view text, int line) {
     while (!s.empty() && s.back() == '\r') s.pop_back();
     return s;
 }
-
-}  // namespace
 
 std::optional<TextPosition> findNestingPastLimit(std::string_view text) {
     int depth = 0;

@@ -40,6 +40,9 @@ struct TextPosition {
 // The first bracket of `text` that opens nesting level kMaxNesting + 1, outside comments and strings.
 std::optional<TextPosition> findNestingPastLimit(std::string_view text);
 
+// Line `line` (1-based) of `text`, cut to 200 characters: what a diagnostic quotes.
+std::string lineOf(std::string_view text, int line);
+
 // `n` elements in total for the dimensions `dims` (0 = unsized), saturated at LLONG_MAX.
 long long arrayElementCount(const std::vector<int>& dims);
 

@@ -13,6 +13,7 @@
 #include "d3d9_asm.h"
 #include "glslang_predefines.h"
 #include "glslang_process.h"
+#include "macro_bounds.h"
 #include "text_encoding.h"
 #include "input_limits.h"
 #include "text_util.h"
@@ -214,6 +215,7 @@ public:
     std::vector<IncludeDependency> dependencies;
     std::vector<Diagnostic> warnings;
     void markIncludedOnce(const fs::path& canonical) { onceIncluded_.insert(canonical); }  // the root's #pragma once
+    MacroBounds* macros = nullptr;  // the effect's macros so far: each include's join them
 
 private:
     IncludeResult* resolve(const char* headerC, const char* includerC, size_t depth) {
@@ -343,6 +345,11 @@ private:
         *text = sourceTextAsUtf8(*text);
         if (hasPragmaOnce(*text)) onceIncluded_.insert(canonical);
         prepareSourceText(*text, display, warnings);
+        if (auto problem = macros ? macros->addFile(*text, display) : std::nullopt) {
+            if (!limitProblem) limitProblem = std::move(problem);  // thrown as is when glslang gives up
+            failures[header] = {diag::kMacroLimit, "include file '" + header + "' is beyond fxport's limits"};
+            return nullptr;
+        }
         loaded.push_back({display, *text});
         auto* owned = new std::string(blankAsmLineComments(*text));
         return new IncludeResult(display, owned->data(), owned->size(), owned);
@@ -420,6 +427,12 @@ std::optional<PreprocessedEffect> PreprocessRun::operator()(bool cascading) cons
     if (hasPragmaOnce(source)) includer.markIncludedOnce(rootAbs);
     std::string preamble = undefineGlslangPredefines() + "#define FXPORT 1\n";
     for (const auto& [name, value] : options.defines) preamble += "#define " + name + " " + value + "\n";
+
+    // Macro expansion bounded before glslang expands anything (macro_bounds.h).
+    MacroBounds macros;
+    if (auto problem = macros.addFile(preamble, displayPath)) throw CompileError({*problem});
+    if (auto problem = macros.addFile(source, displayPath)) throw CompileError({*problem});
+    includer.macros = &macros;
 
     glslang::TShader shader(EShLangFragment);
     const std::string cleaned = blankAsmLineComments(source);

@@ -9,6 +9,8 @@
 // CompiledEffect::diagnostics.
 #pragma once
 
+#include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -64,6 +66,20 @@ struct CompileOptions {
 
 // Compiles a file. Throws CompileError for fatal problems.
 CompiledEffect compileEffectFile(const std::string& path, const CompileOptions& options = {});
+
+// The outcome of one file of compileEffectFiles(): the effect, or the errors that stopped it (what
+// compileEffectFile() would have thrown).
+struct EffectFileResult {
+    std::optional<CompiledEffect> effect;
+    std::vector<Diagnostic> errors;
+};
+
+// Compiles several effect files, each as compileEffectFile() would, the cache's misses in parallel:
+// up to $FXPORT_JOBS workers at once (else one per CPU), each with its own limits. `done(i, result)`
+// is called for files[i], in the order of `files`, as soon as it and every file before it are done.
+// Results and output are the same as compiling the files one by one.
+void compileEffectFiles(const std::vector<std::pair<std::string, CompileOptions>>& files,
+                        const std::function<void(size_t, EffectFileResult&&)>& done);
 
 // Compiles source text as if it were the file `virtualPath` (includes resolve beside it).
 CompiledEffect compileEffectSource(const std::string& source, const std::string& virtualPath,
