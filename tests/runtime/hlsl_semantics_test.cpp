@@ -218,6 +218,49 @@ TEST_P(HlslSemantics, DivisionByAConstantZeroIsRefusedAsFxcRefusesIt) {
     EXPECT_FLOAT_EQ(draw(*fine)[0], 3.0f);
 }
 
+// Matrices of one row or one column are vectors of as many components to fxc wherever they meet
+// one: constructors, brace lists, returns, arguments; `m[0]` of a 1xN is its row, `m[i][0]` of an
+// Nx1 its component i; a 1x1 is a scalar.
+TEST_P(HlslSemantics, OneRowAndOneColumnMatricesActAsVectors) {
+    const float a[4] = {0.5f, -1.25f, 3.0f, 8.0f};
+    struct Case {
+        const char* globals;
+        const char* body;
+        float expected[4];
+    };
+    const Case cases[] = {
+        {"float4 A;", "float1x4 m = float1x4(A.x, A.y, A.z, A.w); return m[0] * 2;", {2 * a[0], 2 * a[1], 2 * a[2], 2 * a[3]}},
+        {"float4 A;", "float4x1 c = {A.w, A.z, A.y, A.x}; return float4(c[0][0], c[1], c[2][0], c[3]);", {a[3], a[2], a[1], a[0]}},
+        {"float4 A; float3 F(float1x3 m) { return m; }", "return float4(F(A.xyz), 1);", {a[0], a[1], a[2], 1}},
+        {"float4 A; float4x1 G() { return A.wzyx; }", "return G();", {a[3], a[2], a[1], a[0]}},
+        {"float4 A; float3 H() { return float4x1(A.x, A.y, A.z, A.w); }", "return float4(H(), 0);", {a[0], a[1], a[2], 0}},
+        {"float4 A;", "float1x1 s = A.y; matrix<float, 1, 2> p = {A.z, s[0][0]}; return float4(p[0], s * 2, s);", {a[2], a[1], 2 * a[1], a[1]}},
+        {"float4 A; static float1x4 K = {1, 2, 3, 4};", "return (float4)K + A;", {1 + a[0], 2 + a[1], 3 + a[2], 4 + a[3]}},
+    };
+    for (const Case& c : cases) {
+        auto e = effect(c.globals, c.body);
+        e->Parameters["A"].SetValue(Vector4(a[0], a[1], a[2], a[3]));
+        std::vector<float> px = draw(*e);
+        for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], c.expected[k]) << c.globals << " " << c.body << " channel " << k;
+    }
+}
+
+// What fxc refuses of those conversions (X3017, X3013): a matrix to one of other rows or columns,
+// a vector into a column of another size, a matrix where an intrinsic takes vectors.
+TEST_P(HlslSemantics, OneRowAndOneColumnMatrixMismatchesAreRefused) {
+    const char* const refused[][2] = {
+        {"float3x1 F() { return float1x3(1, 2, 3); }", "return float4(F(), 0);"},
+        {"", "float4 v = float4(1, 2, 3, 4); float3x1 m = (float3x1)v; return m[0][0];"},
+        {"", "float2x2 m = {1, 2, 3, 4}; return float4((float3)m, 0);"},
+        {"", "float4x1 v = 0; return dot(v, v);"},
+    };
+    for (const auto& r : refused) EXPECT_THROW(draw(*effect(r[0], r[1])), xlate::CompileError) << r[0] << " " << r[1];
+    // A vector into a row takes its first components, as fxc does.
+    auto fine = effect("float1x3 F() { return float4(1, 2, 3, 4); }", "return float4(F(), 0);");
+    std::vector<float> px = draw(*fine);
+    for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], k < 3 ? float(k + 1) : 0.0f) << "channel " << k;
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslSemantics, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 

@@ -24,6 +24,7 @@ constexpr Family kFamilies[] = {
     findStaticSamplerErrors,
     findFunctionSignatureErrors,
     findComputeOnlyIntrinsicErrors,
+    findMatrixShapeConversionErrors,
 };
 
 bool isShaderState(const std::string& name) {
