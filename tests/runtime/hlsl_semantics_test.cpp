@@ -261,6 +261,64 @@ TEST_P(HlslSemantics, OneRowAndOneColumnMatrixMismatchesAreRefused) {
     for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], k < 3 ? float(k + 1) : 0.0f) << "channel " << k;
 }
 
+// A cast on the left of '=' assigns the target's first components, the value converted by the
+// outermost cast (fxc); changing the component type there is refused from SM4 on (X3025).
+TEST_P(HlslSemantics, CastOnTheLeftAssignsTheFirstComponents) {
+    const float a[4] = {0.5f, -1.25f, 3.0f, 8.0f};
+    struct Case {
+        const char* body;
+        float expected[4];
+    };
+    const Case cases[] = {
+        {"float4 p = {-1, -2, -3, -4}; (float2) p = A.yz; return p;", {a[1], a[2], -3, -4}},
+        {"float4 p = 0; (float4) p = A; return p;", {a[0], a[1], a[2], a[3]}},
+        {"float4 p = {-1, -2, -3, -4}; (float2) p.yz = A.yz; return p;", {-1, a[1], a[2], -4}},
+        {"float4 p = 0; (float) p = A.w; return p;", {a[3], 0, 0, 0}},
+    };
+    for (const Case& c : cases) {
+        auto e = effect("float4 A;", c.body);
+        e->Parameters["A"].SetValue(Vector4(a[0], a[1], a[2], a[3]));
+        std::vector<float> px = draw(*e);
+        for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], c.expected[k]) << c.body << " channel " << k;
+    }
+    const char* changesType = "float4 p = 0; (int4)(half4) p = A * 3; return p;";
+    if (GetParam()[0] >= '4') {
+        EXPECT_THROW(draw(*effect("float4 A;", changesType)), xlate::CompileError);
+    } else {
+        auto e = effect("float4 A;", changesType);
+        e->Parameters["A"].SetValue(Vector4(a[0], a[1], a[2], a[3]));
+        std::vector<float> px = draw(*e);
+        for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], std::trunc(3 * a[k])) << "channel " << k;
+    }
+}
+
+// Casts between arrays, structs and vectors take the source's components in order: array
+// elements, struct members, vector components; arrays and structs whose components have the
+// same types assign to each other.
+TEST_P(HlslSemantics, ComponentwiseCastsTakeComponentsInOrder) {
+    const float a[4] = {0.5f, -1.25f, 3.0f, 8.0f};
+    struct Case {
+        const char* globals;
+        const char* body;
+        float expected[4];
+    };
+    const char* s = "float4 A; struct S { float3 aa; int bb; }; struct P { float2 a; float b; float c; };";
+    const Case cases[] = {
+        {s, "float f[5] = {A.x, A.y, A.z, A.w, 9}; return (float4) f + 1;", {a[0] + 1, a[1] + 1, a[2] + 1, a[3] + 1}},
+        {s, "float f[4] = {A.x, A.y, A.z, A.w}; S t; t = (S) f; return float4(t.aa, t.bb);", {a[0], a[1], a[2], std::trunc(a[3])}},
+        {s, "S t = {1, 2, 3, 7}; float f[4]; f = (float[4]) t; return float4(f) + A;", {1 + a[0], 2 + a[1], 3 + a[2], 7 + a[3]}},
+        {s, "float f[4] = {A.w, A.z, A.y, A.x}; P p; p = f; return float4(p.a, p.b, p.c);", {a[3], a[2], a[1], a[0]}},
+    };
+    for (const Case& c : cases) {
+        auto e = effect(c.globals, c.body);
+        e->Parameters["A"].SetValue(Vector4(a[0], a[1], a[2], a[3]));
+        std::vector<float> px = draw(*e);
+        for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], c.expected[k]) << c.body << " channel " << k;
+    }
+    // A matrix takes exactly its count (X3017).
+    EXPECT_THROW(draw(*effect("", "float f[5] = {1, 2, 3, 4, 5}; float2x2 m = (float2x2) f; return float4(m[0], m[1]);")), xlate::CompileError);
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslSemantics, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 

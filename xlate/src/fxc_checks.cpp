@@ -25,6 +25,7 @@ constexpr Family kFamilies[] = {
     findFunctionSignatureErrors,
     findComputeOnlyIntrinsicErrors,
     findMatrixShapeConversionErrors,
+    findLvalueCastErrors,
 };
 
 bool isShaderState(const std::string& name) {

@@ -13,6 +13,7 @@
 
 #include "fxc_checks.h"
 #include "hlsl_types.h"
+#include "variable_declarations.h"
 
 namespace fxport::xlate {
 
@@ -53,17 +54,10 @@ private:
         return b;
     }
 
-    // The declared type of variable `name` used at token `at` of `f`: the nearest earlier
-    // `T name` in the body, a parameter, a global; not arrays.
     std::optional<BasicType> variableType(const FxFunction& f, const std::string& name, size_t at) const {
-        for (size_t i = at; i-- > f.body.begin + 1;)
-            if (t_[i].isIdent() && t_[i].text == name && t_[i - 1].isIdent() && !t_[i + 1].is("[") && !t_[i + 1].is("("))
-                if (auto b = numeric(t_[i - 1].text)) return b;
-        for (const auto& p : f.parameters)
-            if (p.name == name) return p.arrayDims.empty() ? numeric(p.type) : std::nullopt;
-        for (const auto& g : syntax_.globals)
-            if (g.name == name) return g.arrayDims.empty() ? numeric(g.type) : std::nullopt;
-        return std::nullopt;
+        auto d = declaredVariable(syntax_, f, name, at);
+        if (!d || !d->dims.empty()) return std::nullopt;
+        return numeric(d->type);
     }
 
     // The type of tokens [b, e) when evident: `T(...)`, `(T) x`, or a variable.
