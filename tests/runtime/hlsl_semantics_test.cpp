@@ -319,6 +319,30 @@ TEST_P(HlslSemantics, ComponentwiseCastsTakeComponentsInOrder) {
     EXPECT_THROW(draw(*effect("", "float f[5] = {1, 2, 3, 4, 5}; float2x2 m = (float2x2) f; return float4(m[0], m[1]);")), xlate::CompileError);
 }
 
+// normalize, determinant, transpose, reflect and refract of scalars, as fxc computes them:
+// x / |x|, x, x, i - 2n(in), and refract's formula on one component (0 past the critical angle).
+TEST_P(HlslSemantics, VectorIntrinsicsOfScalars) {
+    const float a[4] = {0.5f, -1.25f, 0.6f, 0.2f};
+    auto e = effect("float4 A;",
+                    "float x = A.y; float i = A.x; float1 n = A.z; float eta = A.w;"
+                    "return float4(normalize(x), determinant(x) + transpose(3), reflect(i, n), refract(i, n, eta));");
+    e->Parameters["A"].SetValue(Vector4(a[0], a[1], a[2], a[3]));
+    std::vector<float> px = draw(*e);
+    const float i = a[0], n = a[2], eta = a[3], c = i * n, k = 1 - eta * eta * (1 - c * c);
+    const float expected[4] = {-1.0f, a[1] + 3, i - 2 * n * (i * n), eta * i - (eta * c + std::sqrt(k)) * n};
+    for (int ch = 0; ch < 4; ++ch) EXPECT_NEAR(px[size_t(ch)], expected[ch], 1e-5f) << "channel " << ch;
+}
+
+// A struct member may name its struct type with the `struct` keyword, as a variable may.
+TEST_P(HlslSemantics, StructKeywordInAMemberType) {
+    auto e = effect("float4 A; struct In { float2 v; }; struct Out { struct In a; float c; };",
+                    "Out o; o.a.v = A.xy; o.c = A.z; return float4(o.a.v, o.c, 1);");
+    e->Parameters["A"].SetValue(Vector4(0.5f, -1.25f, 3.0f, 8.0f));
+    std::vector<float> px = draw(*e);
+    const float expected[4] = {0.5f, -1.25f, 3.0f, 1.0f};
+    for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], expected[k]) << "channel " << k;
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslSemantics, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 
