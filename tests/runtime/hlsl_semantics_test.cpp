@@ -236,6 +236,8 @@ TEST_P(HlslSemantics, OneRowAndOneColumnMatricesActAsVectors) {
         {"float4 A; float3 H() { return float4x1(A.x, A.y, A.z, A.w); }", "return float4(H(), 0);", {a[0], a[1], a[2], 0}},
         {"float4 A;", "float1x1 s = A.y; matrix<float, 1, 2> p = {A.z, s[0][0]}; return float4(p[0], s * 2, s);", {a[2], a[1], 2 * a[1], a[1]}},
         {"float4 A; static float1x4 K = {1, 2, 3, 4};", "return (float4)K + A;", {1 + a[0], 2 + a[1], 3 + a[2], 4 + a[3]}},
+        {"float4 A; static float1x4 K = {1, 2, 3, 4};", "float1x4 q = A; return (A.x > 0 ? K : q)[0];", {1, 2, 3, 4}},
+        {"float4 A; static float1x4 C = {1, 0, 0, 1};", "return (C ? A : -A)[0];", {a[0], a[0], a[0], a[0]}},
     };
     for (const Case& c : cases) {
         auto e = effect(c.globals, c.body);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 
 #include "hlsl_types.h"
@@ -84,7 +85,10 @@ bool mayRespell(const EffectSyntax& syntax, size_t i, const FxFunction*& inFunct
         if (i >= f.body.begin && i < f.body.end) return true;
         for (const auto& p : f.parameters)
             if (p.typeToken == i) return p.semantic.empty();
-        return i < f.token;  // the return type
+        if (i >= f.token) return false;
+        for (size_t k = f.declaration.begin; k < i; ++k)  // a row_major Nx1 return takes N registers
+            if (syntax.tokens[k].is("row_major")) return false;
+        return true;  // the return type
     }
     for (const auto& g : syntax.globals) {
         if (i >= g.initializer.begin && i < g.initializer.end) return true;
@@ -95,7 +99,10 @@ bool mayRespell(const EffectSyntax& syntax, size_t i, const FxFunction*& inFunct
 
 }  // namespace
 
-std::string oneColumnAsVector(const std::string& type) {
+std::string entryReturnType(const EffectSyntax& syntax, const FxFunction& entry) {
+    const std::string& type = entry.returnType;
+    for (size_t k = entry.declaration.begin; k < entry.token && k < syntax.tokens.size(); ++k)
+        if (syntax.tokens[k].is("row_major")) return type;
     BasicType b = describeBasicType(type);
     if (!b.ok || !b.isMatrix || b.columns != 1) return type;
     return b.rows == 1 ? b.scalar : b.scalar + std::to_string(b.rows);
@@ -103,24 +110,86 @@ std::string oneColumnAsVector(const std::string& type) {
 
 std::vector<TextEdit> degenerateMatricesAsVectors(const EffectSyntax& syntax) {
     const std::vector<Token>& t = syntax.tokens;
-    std::vector<TextEdit> edits;
-    std::map<std::string, Shape> statics;
-    std::map<const FxFunction*, std::map<std::string, Shape>> locals;
+    struct Respelled {
+        size_t begin, end;  // the type's tokens
+        std::string vector;
+        const FxFunction* function;  // null: a static global
+        std::map<std::string, Shape> names;  // the variables it declares
+    };
+    std::vector<Respelled> found;
     for (size_t i = 0; i + 1 < t.size(); ++i) {
         auto d = degenerateAt(t, i);
         if (!d) continue;
         const FxFunction* f = nullptr;
         if (!mayRespell(syntax, i, f)) continue;
-        edits.push_back({t[i].offset, t[d->end - 1].end, d->vector});
+        Respelled r{i, d->end, d->vector, f, {}};
         if (!f) {
-            declaredNames(t, d->end, t.size(), d->shape, statics);
+            declaredNames(t, d->end, t.size(), d->shape, r.names);
         } else if (i >= f->body.begin && i < f->body.end) {
-            declaredNames(t, d->end, f->body.end, d->shape, locals[f]);
+            declaredNames(t, d->end, f->body.end, d->shape, r.names);
         } else {
             for (const auto& p : f->parameters)
-                if (p.typeToken == i && p.arrayDims.empty()) locals[f][p.name] = d->shape;
+                if (p.typeToken == i && p.arrayDims.empty()) r.names[p.name] = d->shape;
         }
+        found.push_back(std::move(r));
         i = d->end - 1;
+    }
+    // An indexed group `(c ? a : b)[0]` indexes as its values do (a ternary's condition is not
+    // one); values of different shapes there, a 1xN second or an Nx1 first argument of mul (an
+    // outer product to fxc) keep those variables matrices, and glslang refuses them as before.
+    std::map<std::string, Shape> all;
+    for (const auto& r : found) all.insert(r.names.begin(), r.names.end());
+    std::set<std::string> unsafe;
+    struct Group {
+        size_t close;  // the ')' before '['
+        Shape shape;
+        std::vector<std::string> names;
+    };
+    std::vector<Group> groups;
+    for (size_t i = 1; i + 1 < t.size(); ++i) {
+        if (t[i].is(")") && t[i + 1].is("[")) {
+            Group g{i, Shape::Row, {}};
+            bool mixed = false;
+            int depth = 0;
+            for (size_t k = i; k > 0; --k) {
+                if (t[k].is(")")) ++depth;
+                else if (t[k].is("(") && --depth == 0) break;
+                auto n = all.find(t[k].text);
+                if (n == all.end() || t[k + 1].is("?") || t[k - 1].is(".")) continue;
+                mixed |= !g.names.empty() && n->second != g.shape;
+                g.shape = n->second;
+                g.names.push_back(n->first);
+            }
+            if (mixed) unsafe.insert(g.names.begin(), g.names.end());
+            else if (!g.names.empty()) groups.push_back(g);
+        }
+        if (t[i].is("mul") && t[i + 1].is("(") && !t[i - 1].is(".")) {
+            const size_t a = i + 2;
+            if (a + 1 < t.size() && t[a + 1].is(",") && all.count(t[a].text) && all[t[a].text] == Shape::Column) unsafe.insert(t[a].text);
+            if (a + 3 < t.size() && t[a + 1].is(",") && t[a + 3].is(")") && all.count(t[a + 2].text) && all[t[a + 2].text] == Shape::Row)
+                unsafe.insert(t[a + 2].text);
+        }
+    }
+    std::vector<TextEdit> edits;
+    std::map<std::string, Shape> statics;
+    std::map<const FxFunction*, std::map<std::string, Shape>> locals;
+    for (const auto& r : found) {
+        bool keep = false;
+        for (const auto& [name, shape] : r.names) keep |= unsafe.count(name) > 0;
+        if (keep) continue;
+        edits.push_back({t[r.begin].offset, t[r.end - 1].end, r.vector});
+        auto& into = r.function ? locals[r.function] : statics;
+        into.insert(r.names.begin(), r.names.end());
+    }
+    auto blank = [&](size_t b, size_t e) { edits.push_back({t[b].offset, t[e - 1].end, {}}); };
+    for (const auto& g : groups) {
+        bool safe = true;
+        for (const auto& n : g.names) safe = safe && !unsafe.count(n);
+        if (!safe) continue;
+        size_t first = pastBracket(t, g.close + 1, t.size());
+        size_t second = first < t.size() && t[first].is("[") ? pastBracket(t, first, t.size()) : first;
+        if (g.shape != Shape::Column) blank(g.close + 1, first);
+        if (g.shape != Shape::Row && second > first) blank(first, second);
     }
     // `m[0]` of a 1xN is the vector itself; `m[i][0]` of an Nx1 is `m[i]`; a 1x1's indices go.
     for (const auto& f : syntax.functions) {
@@ -134,7 +203,6 @@ std::vector<TextEdit> degenerateMatricesAsVectors(const EffectSyntax& syntax) {
             if (n == names.end() || !t[i].isIdent() || (i > 0 && t[i - 1].is(".")) || !t[i + 1].is("[")) continue;
             size_t first = pastBracket(t, i + 1, f.body.end);
             size_t second = first < f.body.end && t[first].is("[") ? pastBracket(t, first, f.body.end) : first;
-            auto blank = [&](size_t b, size_t e) { edits.push_back({t[b].offset, t[e - 1].end, {}}); };
             if (n->second != Shape::Column) blank(i + 1, first);
             if (n->second != Shape::Row && second > first) blank(first, second);
             i = second - 1;

@@ -7,7 +7,9 @@
 // vector), `m[i][0]` of an Nx1 is component i (`m[i]`).
 // Left as they are: uniforms and struct members (their register layout is a matrix's),
 // entry parameters with a semantic (a matrix input takes one semantic index per row or column),
-// and whatever uses them as matrices (mul of two of them is an outer product to fxc).
+// a row_major Nx1 return (N registers), and variables used where a vector means something else:
+// an indexed group `(c ? a : b)[0]`, a 1xN second or Nx1 first argument of mul (fxc's outer
+// product).
 #pragma once
 
 #include <string>
@@ -19,7 +21,9 @@ namespace fxport::xlate {
 
 std::vector<TextEdit> degenerateMatricesAsVectors(const EffectSyntax& syntax);
 
-// `float4x1` -> `float4`, `float1x1` -> `float`; any other type as it is (an entry's return type).
-std::string oneColumnAsVector(const std::string& type);
+// The return type of `entry` as the rewritten source has it: `float4x1` -> `float4`, `float1x1` ->
+// `float` (one register in the default column-major packing), unless declared row_major; any
+// other type as written.
+std::string entryReturnType(const EffectSyntax& syntax, const FxFunction& entry);
 
 }  // namespace fxport::xlate

@@ -216,7 +216,7 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
     bool returns = entry.returnType != "void";
     // A one-column matrix returned is a vector to glslang (degenerate_matrices.h) and one
     // register to D3D (a column, in the default column-major packing).
-    const std::string returnType = oneColumnAsVector(entry.returnType);
+    const std::string returnType = entryReturnType(syntax, entry);
     if (returns && !flat.flatten(returnType, "r", entry.returnSemantic, {}, {}, outputs)) {
         w.error = flat.error + " (the return value of '" + entry.name + "')";
         return w;
