@@ -218,6 +218,133 @@ TEST_P(HlslSemantics, DivisionByAConstantZeroIsRefusedAsFxcRefusesIt) {
     EXPECT_FLOAT_EQ(draw(*fine)[0], 3.0f);
 }
 
+// Matrices of one row or one column are vectors of as many components to fxc wherever they meet
+// one: constructors, brace lists, returns, arguments; `m[0]` of a 1xN is its row, `m[i][0]` of an
+// Nx1 its component i; a 1x1 is a scalar.
+TEST_P(HlslSemantics, OneRowAndOneColumnMatricesActAsVectors) {
+    const float a[4] = {0.5f, -1.25f, 3.0f, 8.0f};
+    struct Case {
+        const char* globals;
+        const char* body;
+        float expected[4];
+    };
+    const Case cases[] = {
+        {"float4 A;", "float1x4 m = float1x4(A.x, A.y, A.z, A.w); return m[0] * 2;", {2 * a[0], 2 * a[1], 2 * a[2], 2 * a[3]}},
+        {"float4 A;", "float4x1 c = {A.w, A.z, A.y, A.x}; return float4(c[0][0], c[1], c[2][0], c[3]);", {a[3], a[2], a[1], a[0]}},
+        {"float4 A; float3 F(float1x3 m) { return m; }", "return float4(F(A.xyz), 1);", {a[0], a[1], a[2], 1}},
+        {"float4 A; float4x1 G() { return A.wzyx; }", "return G();", {a[3], a[2], a[1], a[0]}},
+        {"float4 A; float3 H() { return float4x1(A.x, A.y, A.z, A.w); }", "return float4(H(), 0);", {a[0], a[1], a[2], 0}},
+        {"float4 A;", "float1x1 s = A.y; matrix<float, 1, 2> p = {A.z, s[0][0]}; return float4(p[0], s * 2, s);", {a[2], a[1], 2 * a[1], a[1]}},
+        {"float4 A; static float1x4 K = {1, 2, 3, 4};", "return (float4)K + A;", {1 + a[0], 2 + a[1], 3 + a[2], 4 + a[3]}},
+        {"float4 A; static float1x4 K = {1, 2, 3, 4};", "float1x4 q = A; return (A.x > 0 ? K : q)[0];", {1, 2, 3, 4}},
+        {"float4 A; static float1x4 C = {1, 0, 0, 1};", "return (C ? A : -A)[0];", {a[0], a[0], a[0], a[0]}},
+    };
+    for (const Case& c : cases) {
+        auto e = effect(c.globals, c.body);
+        e->Parameters["A"].SetValue(Vector4(a[0], a[1], a[2], a[3]));
+        std::vector<float> px = draw(*e);
+        for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], c.expected[k]) << c.globals << " " << c.body << " channel " << k;
+    }
+}
+
+// What fxc refuses of those conversions (X3017, X3013): a matrix to one of other rows or columns,
+// a vector into a column of another size, a matrix where an intrinsic takes vectors.
+TEST_P(HlslSemantics, OneRowAndOneColumnMatrixMismatchesAreRefused) {
+    const char* const refused[][2] = {
+        {"float3x1 F() { return float1x3(1, 2, 3); }", "return float4(F(), 0);"},
+        {"", "float4 v = float4(1, 2, 3, 4); float3x1 m = (float3x1)v; return m[0][0];"},
+        {"", "float2x2 m = {1, 2, 3, 4}; return float4((float3)m, 0);"},
+        {"", "float4x1 v = 0; return dot(v, v);"},
+    };
+    for (const auto& r : refused) EXPECT_THROW(draw(*effect(r[0], r[1])), xlate::CompileError) << r[0] << " " << r[1];
+    // A vector into a row takes its first components, as fxc does.
+    auto fine = effect("float1x3 F() { return float4(1, 2, 3, 4); }", "return float4(F(), 0);");
+    std::vector<float> px = draw(*fine);
+    for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], k < 3 ? float(k + 1) : 0.0f) << "channel " << k;
+}
+
+// A cast on the left of '=' assigns the target's first components, the value converted by the
+// outermost cast (fxc); changing the component type there is refused from SM4 on (X3025).
+TEST_P(HlslSemantics, CastOnTheLeftAssignsTheFirstComponents) {
+    const float a[4] = {0.5f, -1.25f, 3.0f, 8.0f};
+    struct Case {
+        const char* body;
+        float expected[4];
+    };
+    const Case cases[] = {
+        {"float4 p = {-1, -2, -3, -4}; (float2) p = A.yz; return p;", {a[1], a[2], -3, -4}},
+        {"float4 p = 0; (float4) p = A; return p;", {a[0], a[1], a[2], a[3]}},
+        {"float4 p = {-1, -2, -3, -4}; (float2) p.yz = A.yz; return p;", {-1, a[1], a[2], -4}},
+        {"float4 p = 0; (float) p = A.w; return p;", {a[3], 0, 0, 0}},
+    };
+    for (const Case& c : cases) {
+        auto e = effect("float4 A;", c.body);
+        e->Parameters["A"].SetValue(Vector4(a[0], a[1], a[2], a[3]));
+        std::vector<float> px = draw(*e);
+        for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], c.expected[k]) << c.body << " channel " << k;
+    }
+    const char* changesType = "float4 p = 0; (int4)(half4) p = A * 3; return p;";
+    if (GetParam()[0] >= '4') {
+        EXPECT_THROW(draw(*effect("float4 A;", changesType)), xlate::CompileError);
+    } else {
+        auto e = effect("float4 A;", changesType);
+        e->Parameters["A"].SetValue(Vector4(a[0], a[1], a[2], a[3]));
+        std::vector<float> px = draw(*e);
+        for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], std::trunc(3 * a[k])) << "channel " << k;
+    }
+}
+
+// Casts between arrays, structs and vectors take the source's components in order: array
+// elements, struct members, vector components; arrays and structs whose components have the
+// same types assign to each other.
+TEST_P(HlslSemantics, ComponentwiseCastsTakeComponentsInOrder) {
+    const float a[4] = {0.5f, -1.25f, 3.0f, 8.0f};
+    struct Case {
+        const char* globals;
+        const char* body;
+        float expected[4];
+    };
+    const char* s = "float4 A; struct S { float3 aa; int bb; }; struct P { float2 a; float b; float c; };";
+    const Case cases[] = {
+        {s, "float f[5] = {A.x, A.y, A.z, A.w, 9}; return (float4) f + 1;", {a[0] + 1, a[1] + 1, a[2] + 1, a[3] + 1}},
+        {s, "float f[4] = {A.x, A.y, A.z, A.w}; S t; t = (S) f; return float4(t.aa, t.bb);", {a[0], a[1], a[2], std::trunc(a[3])}},
+        {s, "S t = {1, 2, 3, 7}; float f[4]; f = (float[4]) t; return float4(f) + A;", {1 + a[0], 2 + a[1], 3 + a[2], 7 + a[3]}},
+        {s, "float f[4] = {A.w, A.z, A.y, A.x}; P p; p = f; return float4(p.a, p.b, p.c);", {a[3], a[2], a[1], a[0]}},
+    };
+    for (const Case& c : cases) {
+        auto e = effect(c.globals, c.body);
+        e->Parameters["A"].SetValue(Vector4(a[0], a[1], a[2], a[3]));
+        std::vector<float> px = draw(*e);
+        for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], c.expected[k]) << c.body << " channel " << k;
+    }
+    // A matrix takes exactly its count (X3017).
+    EXPECT_THROW(draw(*effect("", "float f[5] = {1, 2, 3, 4, 5}; float2x2 m = (float2x2) f; return float4(m[0], m[1]);")), xlate::CompileError);
+}
+
+// normalize, determinant, transpose, reflect and refract of scalars, as fxc computes them:
+// x / |x|, x, x, i - 2n(in), and refract's formula on one component (0 past the critical angle).
+TEST_P(HlslSemantics, VectorIntrinsicsOfScalars) {
+    const float a[4] = {0.5f, -1.25f, 0.6f, 0.2f};
+    auto e = effect("float4 A;",
+                    "float x = A.y; float i = A.x; float1 n = A.z; float eta = A.w;"
+                    "return float4(normalize(x), determinant(x) + transpose(3), reflect(i, n), refract(i, n, eta));");
+    e->Parameters["A"].SetValue(Vector4(a[0], a[1], a[2], a[3]));
+    std::vector<float> px = draw(*e);
+    const float i = a[0], n = a[2], eta = a[3], c = i * n, k = 1 - eta * eta * (1 - c * c);
+    const float expected[4] = {-1.0f, a[1] + 3, i - 2 * n * (i * n), eta * i - (eta * c + std::sqrt(k)) * n};
+    for (int ch = 0; ch < 4; ++ch) EXPECT_NEAR(px[size_t(ch)], expected[ch], 1e-5f) << "channel " << ch;
+}
+
+// A struct member may name its struct type with the `struct` keyword, as a variable may.
+TEST_P(HlslSemantics, StructKeywordInAMemberType) {
+    auto e = effect("float4 A; struct In { float2 v; }; struct Out { struct In a; float c; };",
+                    "Out o; o.a.v = A.xy; o.c = A.z; return float4(o.a.v, o.c, 1);");
+    e->Parameters["A"].SetValue(Vector4(0.5f, -1.25f, 3.0f, 8.0f));
+    std::vector<float> px = draw(*e);
+    const float expected[4] = {0.5f, -1.25f, 3.0f, 1.0f};
+    for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], expected[k]) << "channel " << k;
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslSemantics, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 

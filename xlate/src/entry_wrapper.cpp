@@ -1,5 +1,7 @@
 #include "entry_wrapper.h"
 
+#include "degenerate_matrices.h"
+
 #include <cctype>
 #include <set>
 #include <sstream>
@@ -212,7 +214,10 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
         return w;
     }
     bool returns = entry.returnType != "void";
-    if (returns && !flat.flatten(entry.returnType, "r", entry.returnSemantic, {}, {}, outputs)) {
+    // A one-column matrix returned is a vector to glslang (degenerate_matrices.h) and one
+    // register to D3D (a column, in the default column-major packing).
+    const std::string returnType = entryReturnType(syntax, entry);
+    if (returns && !flat.flatten(returnType, "r", entry.returnSemantic, {}, {}, outputs)) {
         w.error = flat.error + " (the return value of '" + entry.name + "')";
         return w;
     }
@@ -351,7 +356,7 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
     std::string call = entry.name + "(";
     for (size_t i = 0; i < callArgs.size(); ++i) call += (i ? ", " : "") + callArgs[i];
     call += ")";
-    if (returns) code << "    " << entry.returnType << " r = " << call << ";\n";
+    if (returns) code << "    " << returnType << " r = " << call << ";\n";
     else code << "    " << call << ";\n";
     if (noOutputs) {
         code << "}\n";

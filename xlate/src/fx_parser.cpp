@@ -604,6 +604,7 @@ private:
             while (cur().isIdent() && isParameterModifier(cur().text) && !peek().is(";") && !peek().is(":") &&
                    !peek().is("["))
                 m.modifiers.push_back(syntax_.tokens[pos_++].text);
+            if (cur().is("struct") && peek().isIdent()) ++pos_;  // `struct apple aa;`: the type is apple
             m.type = parseTypeName();
             m.name = expectIdentifier("a struct member name");
             m.arrayDims = parseArrayDims();

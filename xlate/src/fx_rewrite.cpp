@@ -5,6 +5,10 @@
 #include "matrix_majority.h"
 #include "matrix_swizzle.h"
 #include "one_component_types.h"
+#include "degenerate_matrices.h"
+#include "lvalue_casts.h"
+#include "componentwise_casts.h"
+#include "scalar_intrinsics.h"
 
 #include <algorithm>
 #include <numeric>
@@ -384,7 +388,11 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : lowerMatrixSwizzles(tokens)) edits.push_back(std::move(e));
     for (auto& e : regroupFlatInitializers(syntax)) edits.push_back(std::move(e));
     for (auto& e : respellOneComponentVectors(syntax)) edits.push_back(std::move(e));
+    for (auto& e : degenerateMatricesAsVectors(syntax)) edits.push_back(std::move(e));
+    for (auto& e : lvalueCastsAsAssignments(syntax)) edits.push_back(std::move(e));
+    for (auto& e : componentwiseCasts(syntax)) edits.push_back(std::move(e));
     for (auto& e : intrinsicsAsFxc(syntax)) edits.push_back(std::move(e));
+    for (auto& e : scalarIntrinsicCalls(syntax)) edits.push_back(std::move(e));
     for (auto& e : spellOutPackMatrixPragmas(syntax)) edits.push_back(std::move(e));
     out.sourceText = &text;
     out.syntax = &syntax;

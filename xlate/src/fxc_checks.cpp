@@ -24,6 +24,8 @@ constexpr Family kFamilies[] = {
     findStaticSamplerErrors,
     findFunctionSignatureErrors,
     findComputeOnlyIntrinsicErrors,
+    findMatrixShapeConversionErrors,
+    findLvalueCastErrors,
 };
 
 bool isShaderState(const std::string& name) {

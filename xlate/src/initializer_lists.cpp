@@ -113,8 +113,10 @@ public:
         if (!basic.ok || type.find('<') != std::string::npos) return false;
         size_t size = size_t(basic.rows * basic.columns);
         if (next_ + size > leaves_.size()) return false;
-        const bool constructor = size > 1 || basic.isMatrix;
-        if (constructor) out += type + "(";
+        // A one-row or one-column matrix is a vector to glslang (see degenerate_matrices.h).
+        const bool degenerate = basic.isMatrix && (basic.rows == 1 || basic.columns == 1);
+        const bool constructor = size > 1 || (basic.isMatrix && !degenerate);
+        if (constructor) out += (degenerate ? basic.scalar + std::to_string(size) : type) + "(";
         for (size_t k = 0; k < size; ++k) out += (k ? ", " : "") + leaves_[next_++];
         if (constructor) out += ")";
         return true;

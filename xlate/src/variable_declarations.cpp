@@ -1,0 +1,31 @@
+// See variable_declarations.h.
+#include "variable_declarations.h"
+
+#include <algorithm>
+#include <cstdlib>
+
+#include "hlsl_types.h"
+
+namespace fxport::xlate {
+
+std::optional<DeclaredVariable> declaredVariable(const EffectSyntax& syntax, const FxFunction& f, const std::string& name, size_t at) {
+    const auto& t = syntax.tokens;
+    for (size_t i = std::min(at, f.body.end); i-- > f.body.begin + 1;) {
+        if (!t[i].isIdent() || t[i].text != name || !t[i - 1].isIdent() || t[i + 1].is("(")) continue;
+        const std::string& type = t[i - 1].text;
+        if (!describeBasicType(syntax.resolveType(type)).ok && !syntax.findStruct(syntax.resolveType(type))) continue;
+        DeclaredVariable d{type, {}};
+        for (size_t j = i + 1; j + 2 < f.body.end && t[j].is("["); j += 3) {
+            if (t[j + 1].kind != Token::Kind::Number || !t[j + 2].is("]")) return std::nullopt;
+            d.dims.push_back(std::atoi(t[j + 1].text.c_str()));
+        }
+        return d;
+    }
+    for (const auto& p : f.parameters)
+        if (p.name == name) return DeclaredVariable{p.type, p.arrayDims};
+    for (const auto& g : syntax.globals)
+        if (g.name == name) return DeclaredVariable{g.type, g.arrayDims};
+    return std::nullopt;
+}
+
+}  // namespace fxport::xlate
