@@ -163,23 +163,6 @@ void decodeBc3Block(const std::uint8_t* block, Color out[16]) {
     for (int i = 0; i < 16; ++i) out[i].A = std::uint8_t(a[(bits >> (3 * i)) & 7]);
 }
 
-std::vector<Color> halve(const std::vector<Color>& level, int width, int height) {
-    const int w = std::max(1, width / 2), h = std::max(1, height / 2);
-    std::vector<Color> out(std::size_t(w) * std::size_t(h));
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            int sum[4] = {0, 0, 0, 0}, n = 0;
-            for (int dy = 0; dy < 2; ++dy)
-                for (int dx = 0; dx < 2; ++dx) {
-                    const int sx = std::min(2 * x + dx, width - 1), sy = std::min(2 * y + dy, height - 1);
-                    const Color& c = level[std::size_t(sy) * std::size_t(width) + std::size_t(sx)];
-                    sum[0] += c.R, sum[1] += c.G, sum[2] += c.B, sum[3] += c.A, ++n;
-                }
-            out[std::size_t(y) * std::size_t(w) + std::size_t(x)] = Color((sum[0] + n / 2) / n, (sum[1] + n / 2) / n, (sum[2] + n / 2) / n, (sum[3] + n / 2) / n);
-        }
-    return out;
-}
-
 DdsImage decodeDds(std::span<const std::uint8_t> b, const std::string& name) {
     if (b.size() < 128 || std::memcmp(b.data(), "DDS ", 4) != 0 || u32(b, 4) != 124)
         throw ArgumentError(name + ": not a DDS file (no 'DDS ' magic and 124-byte header)");

@@ -28,10 +28,6 @@ DdsImage readDds(const std::string& path);
 // The same from bytes already read; `name` is for messages.
 DdsImage decodeDds(std::span<const std::uint8_t> bytes, const std::string& name);
 
-// The next mip level of a width x height level: each texel the rounded average of its 2x2 (a side
-// of 1 stays 1).
-std::vector<Color> halve(const std::vector<Color>& level, int width, int height);
-
 // One BC1/BC2/BC3 block of 16 texels (row by row) from its 8 or 16 bytes.
 void decodeBc1Block(const std::uint8_t* block, Color out[16]);
 void decodeBc2Block(const std::uint8_t* block, Color out[16]);

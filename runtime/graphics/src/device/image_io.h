@@ -15,6 +15,10 @@ struct Image {
     std::vector<Color> pixels;
 };
 
+// The next mip level of a width x height level: each texel the rounded average of the 2x2 texels
+// above it, an odd edge repeating its last row/column (a side of 1 stays 1).
+std::vector<Color> halve(const std::vector<Color>& level, int width, int height);
+
 // Throws ArgumentError naming the file and stb's reason.
 Image loadImage(const std::string& path);
 // Throws std::runtime_error naming the file when it cannot be written.

@@ -11,6 +11,7 @@
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/graphics_device.h"
 #include "fxport/graphics/effect_interfaces.h"
+#include "device/image_io.h"
 #include "helpers/assimp_loader.h"
 #include "helpers/gltf_loader.h"
 
@@ -94,32 +95,6 @@ int fullMipCount(int width, int height) {
     return levels;
 }
 
-// The next mip level: each texel the average of (up to) the 2x2 block above it; odd edges repeat
-// their last row/column.
-std::vector<Color> downsample(const std::vector<Color>& src, int width, int height, int& outWidth, int& outHeight) {
-    outWidth = std::max(1, width / 2);
-    outHeight = std::max(1, height / 2);
-    std::vector<Color> dst(std::size_t(outWidth) * std::size_t(outHeight));
-    for (int y = 0; y < outHeight; ++y) {
-        for (int x = 0; x < outWidth; ++x) {
-            int sum[4] = {0, 0, 0, 0};
-            for (int dy = 0; dy < 2; ++dy) {
-                for (int dx = 0; dx < 2; ++dx) {
-                    const int sx = std::min(2 * x + dx, width - 1), sy = std::min(2 * y + dy, height - 1);
-                    const Color& c = src[std::size_t(sy) * std::size_t(width) + std::size_t(sx)];
-                    sum[0] += c.R;
-                    sum[1] += c.G;
-                    sum[2] += c.B;
-                    sum[3] += c.A;
-                }
-            }
-            dst[std::size_t(y) * std::size_t(outWidth) + std::size_t(x)] =
-                Color((sum[0] + 2) / 4, (sum[1] + 2) / 4, (sum[2] + 2) / 4, (sum[3] + 2) / 4);
-        }
-    }
-    return dst;
-}
-
 std::unique_ptr<Texture2D> makeTexture(GraphicsDevice& device, const detail::GltfImage& image) {
     auto texture = std::make_unique<Texture2D>(device, image.width, image.height, true, SurfaceFormat::Color);
     texture->Name = image.name;
@@ -129,10 +104,9 @@ std::unique_ptr<Texture2D> makeTexture(GraphicsDevice& device, const detail::Glt
     for (int i = 0; i < levels; ++i) {
         texture->SetData(i, nullptr, level.data(), level.size());
         if (i + 1 < levels) {
-            int nextWidth = 0, nextHeight = 0;
-            level = downsample(level, width, height, nextWidth, nextHeight);
-            width = nextWidth;
-            height = nextHeight;
+            level = detail::halve(level, width, height);
+            width = std::max(1, width / 2);
+            height = std::max(1, height / 2);
         }
     }
     return texture;
