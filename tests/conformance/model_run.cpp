@@ -31,6 +31,7 @@ bool capabilityHonoured(const std::string& capability) {
     // Float formats only (XNA's SurfaceFormat has no integer ones); their typed UAV loads
     // ("uav-load") are core GL image loads (r32f, rg32f, rgba32f).
     if (capability == "tessellation-shader") return true;  // hull and domain shaders: DrawPatches
+    if (capability == "geometry-shader") return true;      // the effect's pass takes the geometry shader
     if (!startsWith(capability, "format ")) return false;
     return capability.find("-float") != std::string::npos;
 }

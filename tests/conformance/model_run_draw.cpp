@@ -146,8 +146,6 @@ void ModelRun::doDraw(const std::string& args, int line) {
         if (!stickyStates_.empty())
             throw Unsupported("test state '" + stickyStates_.begin()->second + "' (not settable through the runtime API)");
         const bool patches = call.topology == "patch list";
-        if (shaders_.count(Stage::Geometry))
-            throw Unsupported("geometry shader in a draw (the runner draws vertex, hull, domain and pixel shaders)");
         if (patches && !(shaders_.count(Stage::Hull) && shaders_.count(Stage::Domain)))
             throw Unsupported("patch list without hull and domain shaders (D3D11 draws patches only through them)");
         if (!patches && (shaders_.count(Stage::Hull) || shaders_.count(Stage::Domain)))
@@ -160,6 +158,7 @@ void ModelRun::doDraw(const std::string& args, int line) {
             stages.push_back({Stage::Hull, shaders_[Stage::Hull].block->source()});
             stages.push_back({Stage::Domain, shaders_[Stage::Domain].block->source()});
         }
+        if (shaders_.count(Stage::Geometry)) stages.push_back({Stage::Geometry, shaders_[Stage::Geometry].block->source()});
         stages.push_back({Stage::Pixel, shaders_[Stage::Pixel].block->source()});
         if (crashedBefore(line)) throw std::runtime_error("the draw crashed the process");
         std::string all;
