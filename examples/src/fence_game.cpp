@@ -31,8 +31,8 @@ void FenceGame::LoadContent() {
 
     crate = Content.Load<Model>("Cube");
     fenceEffect = Content.Load<Effect>("Fence");  // Fence.fxeffect, built from effects/Fence.fx
-    // fxport: loaded from the PNG as it is; XNA's content pipeline would have premultiplied its
-    // alpha. The fence is drawn without blending, so only the alpha test reads the alpha.
+    // Premultiplied by alpha at load, as XNA's content pipeline did (ContentManager::textureProcessor).
+    // The fence is drawn without blending, so only the alpha test reads the alpha.
     fenceTexture = Content.Load<Texture2D>("Fence");
     hudFont = Content.Load<SpriteFont>("Hud");
 

@@ -193,10 +193,19 @@ template <> Texture2D* ContentManager::Load<Texture2D>(const std::string& assetN
         locate(assetName, "Texture2D", candidates(RootDirectory, assetName, {".png", ".jpg", ".jpeg", ".bmp", ".tga", ".dds"}));
     GraphicsDevice& graphicsDevice = device(assetName, "Texture2D");
     LoadTimer timer;
-    auto texture = loadNamed("Texture2D", assetName, [&] { return Texture2D::FromFile(graphicsDevice, file); });
+    auto processor = textureProcessors_.find(portableName(assetName));
+    const TextureProcessor& processing = processor != textureProcessors_.end() ? processor->second : textureProcessor;
+    auto texture = loadNamed("Texture2D", assetName, [&] { return processing.Load(graphicsDevice, file); });
     texture->Name = assetName;
     loadLog_.push_back({assetName, "Texture2D", file, timer.milliseconds()});
     return textures_.emplace(portableName(assetName), std::move(texture)).first->second.get();
+}
+
+void ContentManager::SetTextureProcessor(const std::string& assetName, const TextureProcessor& processor) {
+    if (textures_.count(portableName(assetName)))
+        throw InvalidOperation("ContentManager::SetTextureProcessor(" + quoted(assetName) +
+                               "): the texture is already loaded; set its processing before the first Load");
+    textureProcessors_[portableName(assetName)] = processor;
 }
 
 template <> Model* ContentManager::Load<Model>(const std::string& assetName) {

@@ -3,8 +3,10 @@
 // tries these files, in order, under each search folder:
 //
 //   Effect      <name>.fx (compiled by xlate, cached), <name>.fxeffect (precompiled: fxport compile)
-//   Texture2D   <name>.png, <name>.jpg, <name>.jpeg, <name>.bmp, <name>.tga, <name>.dds (its mip
-//               levels; BC1-BC3 decoded to Color, see dds_image.h)
+//   Texture2D   <name>.png, <name>.jpg, <name>.jpeg, <name>.bmp, <name>.tga (processed as XNA's
+//               content pipeline did: magenta keyed out, alpha premultiplied — textureProcessor,
+//               texture_processor.h), <name>.dds (as authored: its mip levels; BC1-BC3 decoded to
+//               Color, see dds_image.h)
 //   Model       <name>.gltf, <name>.glb, <name>.fbx, <name>.x, <name>.obj, <name>.dae (Assimp)
 //   SpriteFont  <name>.spritefont (XNA's XML font description: FontName, Size, Spacing, UseKerning,
 //               Style, DefaultCharacter, CharacterRegions; the font found by fontconfig, or a .ttf
@@ -34,6 +36,7 @@
 #include "fxport/graphics/model.h"
 #include "fxport/graphics/sprite_font.h"
 #include "fxport/graphics/texture.h"
+#include "fxport/graphics/texture_processor.h"
 
 namespace fxport {
 
@@ -60,6 +63,13 @@ public:
     std::string EffectDirectory;
     // fxport: the options every effect is compiled with (include folders, defines, cache).
     EffectOptions effectOptions;
+    // fxport: the processing every image texture gets, XNA's TextureProcessor defaults unless changed
+    // (a game whose .contentproj changed them says so here, or per asset below;
+    // TextureProcessor::None() loads images as the files have them).
+    TextureProcessor textureProcessor;
+    // fxport: the processing of one asset (its name as Load is given it), instead of textureProcessor;
+    // XNA's per-asset ProcessorParameters. Throws InvalidOperation when the asset is already loaded.
+    void SetTextureProcessor(const std::string& assetName, const TextureProcessor& processor);
 
     // fxport: a Game sets its device here when it makes it; a standalone manager takes it in the
     // constructor.
@@ -100,6 +110,7 @@ private:
     std::map<std::string, std::unique_ptr<Effect>> effects_;
     std::map<std::string, std::unique_ptr<Model>> models_;
     std::map<std::string, std::unique_ptr<Texture2D>> textures_;
+    std::map<std::string, TextureProcessor> textureProcessors_;  // by portable asset name
     std::map<std::string, std::unique_ptr<SpriteFont>> fonts_;
     std::vector<LoadRecord> loadLog_;
 };
