@@ -13,6 +13,7 @@
 
 #include "constant_eval.h"
 #include "fx_syntax.h"
+#include "variable_declarations.h"
 #include "source_map.h"
 #include "text_util.h"
 
@@ -809,6 +810,7 @@ private:
         size_t after = skipGroup(pos_, ("body of function '" + name + "'").c_str());
         f.body = {pos_ + 1, after - 1};
         f.declaration = {declarationStart, after};
+        f.declarationSites = declarationSites(syntax_.tokens, f.body);
         for (const auto& p : f.parameters) f.hasStreamParameter |= p.type.find("Stream<") != std::string::npos;
         pos_ = after;
         syntax_.functions.push_back(std::move(f));

@@ -6,6 +6,7 @@
 
 #include <map>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "fxport/xlate/compiled_effect.h"
@@ -145,6 +146,10 @@ struct FxFunction {
     bool hasStreamParameter = false;  // a geometry shader (inout TriangleStream<T> ...)
     size_t token = 0;
     std::string attributes;  // e.g. "[maxvertexcount(3)]"
+    // Where the body may declare each name: the token positions of `T name` (an identifier after an
+    // identifier, not a call), ascending. declaredVariable looks up here instead of scanning the
+    // body backwards, which made a body of n statements cost n^2.
+    std::unordered_map<std::string, std::vector<size_t>> declarationSites;
 };
 
 // A byte range of the preprocessed text to replace. Replacements keep the line count.

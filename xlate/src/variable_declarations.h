@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "fx_syntax.h"
@@ -16,6 +17,9 @@ struct DeclaredVariable {
     std::string type;       // as written (typedefs not resolved)
     std::vector<int> dims;  // array sizes; a size not written as a literal gives nothing at all
 };
+
+// FxFunction::declarationSites of a body.
+std::unordered_map<std::string, std::vector<size_t>> declarationSites(const std::vector<Token>& tokens, TokenSpan body);
 
 std::optional<DeclaredVariable> declaredVariable(const EffectSyntax& syntax, const FxFunction& f, const std::string& name, size_t at);
 
