@@ -23,6 +23,7 @@ inline constexpr size_t kMaxIncludeFiles = 1024;                  // #include di
 inline constexpr int kMaxNesting = 256;                           // ( [ { open at once; constant expressions (FX1203)
 inline constexpr long long kMaxArrayElements = 65536;             // elements of one declared array (FX1204)
 inline constexpr size_t kMaxMembers = 16384;                      // globals of one cbuffer ($Global too), members of one struct (FX1205)
+inline constexpr size_t kMaxStatements = 65536;                   // `;` in all function bodies of one effect (FX1206)
 inline constexpr size_t kMaxVariableBytes = size_t{1} << 20;      // one global, cbuffer member or local, in bytes (FX1204)
 inline constexpr size_t kMaxEffectFileBytes = size_t{256} << 20;  // a compiled effect or cache entry, before reading (FX3101)
 inline constexpr int kMaxEffectFileNesting = 64;                  // [ { nested in a compiled effect's JSON, before parsing (FX3101)

@@ -50,6 +50,7 @@ inline constexpr const char* kMacroLimit = "FX1106";          // macro expansion
 inline constexpr const char* kNestingTooDeep = "FX1203";      // ( [ { nested deeper than the limit
 inline constexpr const char* kArrayTooLarge = "FX1204";       // an array with more elements than the limit
 inline constexpr const char* kTooManyMembers = "FX1205";      // a constant buffer or struct with more members than the limit
+inline constexpr const char* kTooManyStatements = "FX1206";   // more statements in the functions of one effect than the limit
 // The HLSL front end (glslang + SPIRV-Cross) runs in a worker process; what it could not survive:
 inline constexpr const char* kFrontEndCrashed = "FX9001";     // the worker died (a crash inside glslang/SPIRV-Cross)
 inline constexpr const char* kFrontEndTimeout = "FX9002";     // the worker ran past its time limit
