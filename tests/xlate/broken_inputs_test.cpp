@@ -240,6 +240,10 @@ TEST(BrokenInputs, MessagesNameWhatIsMissing) {
     // A header compiled on its own says so; an empty file says it is empty.
     Diagnostic library = firstError(kDir + "library_header.fx");
     EXPECT_NE(library.message.find("looks like a header"), std::string::npos) << library.message;
+    // Loose shaders kept in a .fx (fxc /E /T compiles them): the entry points and how to name one.
+    Diagnostic loose = firstError(kDir + "loose_shaders_in_fx.fx");
+    EXPECT_NE(loose.message.find("entry points here: VSMain, PSMain"), std::string::npos) << loose.message;
+    EXPECT_NE(loose.message.find("--entry NAME --profile"), std::string::npos) << loose.message;
     Diagnostic empty = firstError(kDir + "empty.fx");
     EXPECT_NE(empty.message.find("no code"), std::string::npos) << empty.message;
 }

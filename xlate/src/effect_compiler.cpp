@@ -1004,12 +1004,16 @@ void dumpIfAsked(const CompiledEffect& effect) {
 }
 
 // Candidate entry points of a file without techniques: functions with a semantic on their result
-// or on a parameter (what fxc's /E would name).
+// or on a parameter, directly or on a member of their struct (what fxc's /E would name).
 std::string entryPointCandidates(const EffectSyntax& syntax) {
+    auto structHasSemantics = [&](const std::string& type) {
+        const FxStruct* s = syntax.findStruct(syntax.resolveType(type));
+        return s && std::any_of(s->members.begin(), s->members.end(), [](const FxStructMember& m) { return !m.semantic.empty(); });
+    };
     std::string names;
     for (const auto& f : syntax.functions) {
-        bool semantic = !f.returnSemantic.empty();
-        for (const auto& p : f.parameters) semantic |= !p.semantic.empty();
+        bool semantic = !f.returnSemantic.empty() || structHasSemantics(f.returnType);
+        for (const auto& p : f.parameters) semantic |= !p.semantic.empty() || structHasSemantics(p.type);
         if (semantic && names.find(" " + f.name + ",") == std::string::npos) names += " " + f.name + ",";
     }
     if (!names.empty()) names.pop_back();
@@ -1093,6 +1097,11 @@ CompiledEffect compileUncached(const std::string& source, const std::string& dis
         d.message = isLooseShaderPath(displayPath) || (!candidates.empty() && toLower(fs::path(displayPath).extension().string()) != ".fx")
                         ? "'" + displayPath + "' is a loose shader file (no technique): name the entry point and profile, as fxc /E /T does: "
                           "--entry NAME --profile ps_5_0 (fxport compile, check, dump; compileShaderFiles(), Effect::FromShaderFiles())" + (candidates.empty() ? std::string() : " (entry points here:" + candidates + ")")
+                    : !candidates.empty()
+                        ? "the file has no technique: if it holds loose shaders (entry points here:" + candidates +
+                              "), name one and its profile as fxc /E /T does: --entry NAME --profile vs_4_0 (fxport compile, check; "
+                              "compileShaderFiles(), Effect::FromShaderFiles()); if it is a header that effects #include, compile the "
+                              "effect that includes it, since XNA needs at least one technique with a pass to draw with"
                     : syntax.tokens.size() > 1
                         ? "the file has no technique: it looks like a header that other effects #include (shared declarations or "
                           "functions); compile the effect that includes it, since XNA needs at least one technique with a pass to draw with"
