@@ -130,6 +130,21 @@ TEST_F(ModelImport, ObjQuadKeepsPositionsFlipsVAndWindsClockwise) {
     EXPECT_EQ(effect->Texture->GetData<Color>(), std::vector<Color>(texels, texels + 2));
 }
 
+// XNA's ModelProcessor runs material textures through the TextureProcessor with its defaults:
+// magenta becomes transparent black, colours are premultiplied by alpha (round(v * a / 255)).
+TEST_F(ModelImport, MaterialTexturesAreKeyedAndPremultipliedAsXnasModelProcessorDoes) {
+    Texture2D texture(device(), 2, 1, false, SurfaceFormat::Color);
+    const Color texels[2] = {Color(255, 0, 255, 255), Color(200, 100, 51, 128)};
+    texture.SetData(texels, 2);
+    texture.SaveAsPng((dir / "tex" / "keyed.png").string());
+    write("quad.mtl", "newmtl Painted\nmap_Kd tex/keyed.png\n");
+    const auto model = Model::Load(device(), write("quad.obj", kQuadObj).string());
+    auto* effect = dynamic_cast<BasicEffect*>(model->Meshes[0].MeshParts[0].Effect);
+    ASSERT_NE(effect, nullptr);
+    ASSERT_NE(effect->Texture, nullptr);
+    EXPECT_EQ(effect->Texture->GetData<Color>(), (std::vector<Color>{Color(0, 0, 0, 0), Color(100, 50, 26, 128)}));
+}
+
 // DirectX's own text format, as XNA's samples ship models: a frame hierarchy with a transform
 // (translation 5 along x) and a one-triangle mesh. .x is left-handed; XNA's importers hand the
 // processor right-handed, clockwise data (its "Tips for Developing Custom Importers"): z negated.

@@ -14,6 +14,7 @@
 
 #include "device/dds_image.h"
 #include "fxport/graphics/errors.h"
+#include "fxport/graphics/texture_processor.h"
 #include "device/image_io.h"
 #include "helpers/tangent_generation.h"
 
@@ -152,9 +153,22 @@ private:
         if (material.GetTextureCount(type) == 0 || material.GetTexture(type, 0, &name) != AI_SUCCESS) return -1;
         const std::string key = name.C_Str();
         if (auto it = images_.find(key); it != images_.end()) return it->second;
-        GltfImage image = key.size() > 1 && key[0] == '*' ? embeddedImage(key) : fileImage(material, key);
+        const bool embedded = key.size() > 1 && key[0] == '*';
+        GltfImage image = embedded ? embeddedImage(key) : fileImage(material, key);
+        if (embedded || !isDds(key)) image = asModelProcessorMakesIt(std::move(image));
         model_.images.push_back(std::move(image));
         return images_[key] = int(model_.images.size()) - 1;
+    }
+
+    static bool isDds(const std::string& key) { return lower(fs::path(key).extension().string()) == ".dds"; }
+
+    // XNA's ModelProcessor runs each material texture through the TextureProcessor with its own
+    // defaults: magenta keyed out and alpha premultiplied (PremultiplyTextureAlpha); its mips are
+    // made when the texture is (model.cpp). .dds files stay as authored, as for Content.Load.
+    static GltfImage asModelProcessorMakesIt(GltfImage image) {
+        TextureProcessor::Output out = TextureProcessor{}.Process(std::move(image.texels), image.width, image.height);
+        image.texels = std::move(out.levels[0]);
+        return image;
     }
 
     GltfImage embeddedImage(const std::string& key) {
