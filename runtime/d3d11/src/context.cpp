@@ -32,6 +32,7 @@ void Context::ClearState() {
     computeShader_ = nullptr;
     for (Stage* stage : {&vs_, &ps_, &gs_, &hs_, &ds_, &cs_}) *stage = Stage{};
     for (auto& u : csUavs_) u = nullptr;
+    for (auto& u : psUavs_) u = nullptr;
     viewport_ = D3D11_VIEWPORT{};
     viewportSet_ = false;
     scissor_ = D3D11_RECT{};
@@ -152,6 +153,22 @@ void Context::OMSetRenderTargets(UINT n, ID3D11RenderTargetView* const* pp, ID3D
     for (auto& t : targets_) t = nullptr;
     for (UINT i = 0; i < n && i < targets_.size(); ++i) targets_[i] = pp ? own<RenderTargetView>(pp[i], device_) : nullptr;
     depthView_ = own<DepthStencilView>(dsv, device_);
+}
+void Context::OMSetRenderTargetsAndUnorderedAccessViews(UINT numRtvs, ID3D11RenderTargetView* const* rtvs, ID3D11DepthStencilView* dsv,
+                                                        UINT uavStart, UINT numUavs, ID3D11UnorderedAccessView* const* uavs, const UINT*) {
+    const char* call = "OMSetRenderTargetsAndUnorderedAccessViews";
+    const bool keepTargets = numRtvs == D3D11_KEEP_RENDER_TARGETS_AND_DEPTH_STENCIL;
+    if (numUavs != D3D11_KEEP_UNORDERED_ACCESS_VIEWS && numUavs > 0) {
+        const UINT lastTarget = keepTargets ? 0 : numRtvs;
+        if (uavStart < lastTarget || uavStart >= psUavs_.size() || numUavs > psUavs_.size() - uavStart)
+            return note(std::string(call) + ": UAVStartSlot " + std::to_string(uavStart) + ", NumUAVs " + std::to_string(numUavs) +
+                        ": the UAVs must follow the " + std::to_string(lastTarget) + " render targets within u0..u" +
+                        std::to_string(psUavs_.size() - 1) + "; nothing set");
+    }
+    if (!keepTargets) OMSetRenderTargets(numRtvs, rtvs, dsv);
+    if (numUavs == D3D11_KEEP_UNORDERED_ACCESS_VIEWS) return;
+    for (auto& u : psUavs_) u = nullptr;
+    if (numUavs > 0) setSlots<UavSlots, ID3D11UnorderedAccessView, UnorderedAccessView>(psUavs_, uavStart, numUavs, uavs, device_, call);
 }
 void Context::OMSetBlendState(ID3D11BlendState* p, const FLOAT BlendFactor[4], UINT SampleMask) {
     blend_ = own<BlendState>(p, device_);

@@ -62,6 +62,10 @@ public:
     void RSSetViewports(UINT NumViewports, const D3D11_VIEWPORT* pViewports) override;
     void RSSetScissorRects(UINT NumRects, const D3D11_RECT* pRects) override;
     void RSSetState(ID3D11RasterizerState* pRasterizerState) override;
+    void OMSetRenderTargetsAndUnorderedAccessViews(UINT NumRTVs, ID3D11RenderTargetView* const* ppRenderTargetViews,
+                                                   ID3D11DepthStencilView* pDepthStencilView, UINT UAVStartSlot, UINT NumUAVs,
+                                                   ID3D11UnorderedAccessView* const* ppUnorderedAccessViews,
+                                                   const UINT* pUAVInitialCounts) override;
     void OMSetRenderTargets(UINT NumViews, ID3D11RenderTargetView* const* ppRenderTargetViews,
                             ID3D11DepthStencilView* pDepthStencilView) override;
     void OMSetBlendState(ID3D11BlendState* pBlendState, const FLOAT BlendFactor[4], UINT SampleMask) override;
@@ -134,6 +138,7 @@ private:
     ComPtr<ComputeShader> computeShader_;
     Stage vs_, ps_, gs_, hs_, ds_, cs_;
     UavSlots csUavs_;
+    UavSlots psUavs_;  // OMSetRenderTargetsAndUnorderedAccessViews: the pixel shader's u#
     D3D11_VIEWPORT viewport_;
     bool viewportSet_ = false;
     D3D11_RECT scissor_;

@@ -90,7 +90,8 @@ void Context::bindStorage(const char* call, const core::ShaderCode& code, const 
         const UnorderedAccessView* v = uavs && b.slot >= 0 && std::size_t(b.slot) < uavs->size() ? (*uavs)[std::size_t(b.slot)].Get() : nullptr;
         if (!v)
             throw InvalidOperation(use + ", but no unordered-access view is set there" +
-                                   (uavs ? std::string(" (CSSetUnorderedAccessViews)") : std::string(" (fxport binds UAVs for compute shaders only)")));
+                                   (uavs ? std::string(" (CSSetUnorderedAccessViews, or OMSetRenderTargetsAndUnorderedAccessViews for a pixel shader)")
+                                        : std::string(" (fxport binds UAVs for pixel and compute shaders only)")));
         if (image != (v->texture != nullptr))
             throw InvalidOperation(use + ", a " + (image ? "texture" : "buffer") + ", but the view there is of a " + (v->texture ? "texture" : "buffer"));
         if (image) {
@@ -163,7 +164,7 @@ bool Context::prepare(const char* call) {
         for (int stage = 0; stage < 5; ++stage) {
             if (!stages[stage]) continue;
             bindStage(stage, *bindings[stage], *slots[stage]);
-            bindStorage(call, *stages[stage], *slots[stage], nullptr);
+            bindStorage(call, *stages[stage], *slots[stage], stage == 1 ? &psUavs_ : nullptr);  // stage 1: the pixel shader
         }
     }
     return true;

@@ -136,6 +136,14 @@ public:
     virtual void RSSetState(ID3D11RasterizerState* pRasterizerState) = 0;
     virtual void OMSetRenderTargets(UINT NumViews, ID3D11RenderTargetView* const* ppRenderTargetViews,
                                     ID3D11DepthStencilView* pDepthStencilView) = 0;
+    // Render targets and the pixel shader's UAVs, which share its output slots: the UAVs take
+    // u[UAVStartSlot .. UAVStartSlot + NumUAVs), at or after the last RTV. NumRTVs =
+    // D3D11_KEEP_RENDER_TARGETS_AND_DEPTH_STENCIL keeps the targets, NumUAVs =
+    // D3D11_KEEP_UNORDERED_ACCESS_VIEWS the UAVs. pUAVInitialCounts is ignored (no counters).
+    virtual void OMSetRenderTargetsAndUnorderedAccessViews(UINT NumRTVs, ID3D11RenderTargetView* const* ppRenderTargetViews,
+                                                           ID3D11DepthStencilView* pDepthStencilView, UINT UAVStartSlot, UINT NumUAVs,
+                                                           ID3D11UnorderedAccessView* const* ppUnorderedAccessViews,
+                                                           const UINT* pUAVInitialCounts) = 0;
     virtual void OMSetBlendState(ID3D11BlendState* pBlendState, const FLOAT BlendFactor[4], UINT SampleMask) = 0;
     virtual void OMSetDepthStencilState(ID3D11DepthStencilState* pDepthStencilState, UINT StencilRef) = 0;
     // --- draws
