@@ -1,6 +1,8 @@
 // Child processes per (file, shader model), rerun past crashes (see file_pool.h).
 #include "file_pool.h"
 
+#include "session_choice.h"
+
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
@@ -57,10 +59,9 @@ void writeLine(int fd, const std::string& line) {
         }
         run.markerFd = fd;
         run.crashLines = job.crashLines;
-        ModelRun modelRun(file, job.model, run);
-        ModelResult result = modelRun.run();
-        for (const Failure& f : modelRun.failures()) writeLine(fd, "F\t" + f.encode());
-        writeLine(fd, "R\t" + result.encode());
+        ModelOutcome outcome = runModel(file, job.model, run);
+        for (const Failure& f : outcome.failures) writeLine(fd, "F\t" + f.encode());
+        writeLine(fd, "R\t" + outcome.result.encode());
     } catch (const std::exception& e) {
         writeLine(fd, std::string("E\t") + e.what());
         status = 1;

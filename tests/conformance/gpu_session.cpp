@@ -369,6 +369,7 @@ void GpuSession::draw(fxport::Effect& effect, const std::string& source, int mod
 }
 
 void GpuSession::drawVertices(const DrawCall& call) {
+    if (call.instances != 1) throw Unsupported("instanced draw (XNA's DrawPrimitives has no instance count)");
     std::vector<fxport::VertexElement> elements;
     std::vector<std::uint32_t> words;
     int count = call.vertexCount;

@@ -1,4 +1,4 @@
-// The GPU side of one (file, shader model) run, through fxport's public runtime API only: a
+// The XNA session's device objects (xna_session.h draws with them), through fxport's public XNA API only: a
 // headless GraphicsDevice (OSMesa), render targets for [rtv N] (or vkd3d's default 640x480
 // r32g32b32a32-float one), textures for [srv N], sampler states for [sampler N], vertex buffers and
 // draws. What the API cannot express throws Unsupported with the reason, which the run reports as
@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "fxport/math.h"
+#include "gpu_backend.h"
 #include "probe.h"
 #include "resource_desc.h"
 
@@ -25,18 +26,6 @@ class Texture2D;
 }
 
 namespace conformance {
-
-// Something the runtime cannot do (yet): a skip with this reason, never a pass or a failure.
-struct Unsupported : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
-struct DrawCall {
-    std::string topology = "triangle list";  // triangle list, triangle strip, point list
-    int vertexCount = 3;
-    bool quad = false;  // vkd3d's "draw quad": one big triangle from float2 positions
-    int controlPoints = 0;  // "draw N control point patch list M": patches of N (topology "patch list")
-};
 
 class GpuSession {
 public:

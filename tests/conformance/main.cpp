@@ -41,7 +41,7 @@ struct Args {
                  "  --file NAME   one file (name or path), verbose: each section's outcome and diagnostic, each failing probe\n"
                  "  --tsv OUT     one row per (file, shader model); --failures OUT: every failed check with its line\n"
                  "  --baseline F  exit 1 when a file's compiled/rejected/probes-passed count drops below F\n"
-                 "  --cache DIR   xlate's compile cache (default: none)\n";
+                 "  --cache DIR   xlate's compile cache (default: none for effects; D3DCompile's default one)\n";
     std::exit(problem.empty() ? 0 : 2);
 }
 
@@ -146,6 +146,8 @@ int main(int argc, char** argv) {
     RunOptions run;
     run.tempDir = makeTempDir();
     run.cacheDir = a.cache;
+    // D3DCompile (the D3D11 session's compiles) has no cache option: it takes $FXPORT_CACHE_DIR.
+    if (!a.cache.empty()) ::setenv("FXPORT_CACHE_DIR", a.cache.c_str(), 1);
     if (a.verbose) run.verbose = &std::cout;
     PoolOptions pool;
     pool.jobs = a.file.empty() ? a.jobs : 1;  // one file: its models in order

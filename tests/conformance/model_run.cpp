@@ -57,16 +57,14 @@ bool fileAllowsModel(const ShaderTestFile& file, int model) {
     return !sawRequire || (!file.blocks.empty() && file.blocks.front().kind != BlockKind::Require);
 }
 
-ModelRun::ModelRun(const ShaderTestFile& file, int model, const RunOptions& options)
-    : file_(file), model_(model), options_(options), compiler_(options.tempDir, options.cacheDir, file.name) {
+ModelRun::ModelRun(const ShaderTestFile& file, int model, const RunOptions& options, SessionKind session)
+    : file_(file), model_(model), options_(options), sessionKind_(session), compiler_(options.tempDir, options.cacheDir, file.name) {
     result_.file = file.name;
     result_.model = model;
+    result_.session = session == SessionKind::D3d11 ? "d3d11" : "xna";
 }
 
-ModelRun::~ModelRun() {
-    effects_.clear();
-    gpu_.reset();
-}
+ModelRun::~ModelRun() = default;
 
 std::string ModelRun::where(int line) const { return file_.name + ".shader_test:" + std::to_string(line); }
 
@@ -156,9 +154,8 @@ void ModelRun::countCompile(const Block& block, SectionKind kind, bool expectRej
     }
 }
 
-GpuSession& ModelRun::gpu() {
-    if (gpu_) return *gpu_;
-    gpu_ = std::make_unique<GpuSession>();
+GpuBackend& ModelRun::gpu() {
+    if (!gpu_) gpu_ = makeBackend(sessionKind_, model_, compiler_, options_.cacheDir);
     return *gpu_;
 }
 

@@ -13,14 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "gpu_session.h"
+#include "gpu_backend.h"
 #include "results.h"
 #include "section_compiler.h"
 #include "shader_test_file.h"
-
-namespace fxport {
-class Effect;
-}
 
 namespace conformance {
 
@@ -42,7 +38,7 @@ bool fileAllowsModel(const ShaderTestFile& file, int model);
 
 class ModelRun {
 public:
-    ModelRun(const ShaderTestFile& file, int model, const RunOptions& options);
+    ModelRun(const ShaderTestFile& file, int model, const RunOptions& options, SessionKind session);
     ~ModelRun();
     ModelResult run();
     const std::vector<Failure>& failures() const { return failures_; }
@@ -70,11 +66,9 @@ private:
     void doClear(const std::string& args);
     void skipProbe(const std::string& reason);
     void failProbe(int line, const std::string& detail);
-    fxport::Effect& effectFor(const std::string& vs, const std::string& ps);
-    // An effect of loose shaders, one per stage (the sources as given), cached by stages and sources.
-    fxport::Effect& effectOf(const std::vector<std::pair<Stage, std::string>>& stages);
-    std::string applyUniforms(fxport::Effect& effect, const std::string& source);  // returns UniformLayout::guess
-    GpuSession& gpu();
+    ShaderSet drawStages(const DrawCall& call);  // the stages a draw runs (Unsupported when it cannot)
+    StageSource stageSource(Stage stage) const;
+    GpuBackend& gpu();  // the session of this model (gpu_backend.h), made on first use
     void log(const std::string& text);
     void mark(int line) const;
     bool crashedBefore(int line) const { return options_.crashLines.count(line) > 0; }
@@ -83,6 +77,7 @@ private:
     const ShaderTestFile& file_;
     int model_;
     RunOptions options_;
+    SessionKind sessionKind_;
     ModelResult result_;
     std::vector<Failure> failures_;
     SectionCompiler compiler_;
@@ -95,8 +90,7 @@ private:
     std::string testsSkipReason_;    // set when tests run but cannot execute (reason of the skip)
 
     std::vector<std::uint32_t> uniforms_;
-    std::unique_ptr<GpuSession> gpu_;
-    std::map<std::string, std::unique_ptr<fxport::Effect>> effects_;  // by vs+ps source
+    std::unique_ptr<GpuBackend> gpu_;
     std::map<std::string, std::string> stickyStates_;                 // test states the runner cannot set
     DrawState drawState_ = DrawState::None;
     std::string drawNote_;  // why the last draw failed or was skipped

@@ -5,13 +5,11 @@
 #include <cstring>
 #include <sstream>
 
-#include "fxport/graphics.h"
 #include "fxport/xlate/compiled_effect.h"
 #include "fxport/xlate/diagnostics.h"
 #include "model_run.h"
 #include "probe.h"
 #include "qualifiers.h"
-#include "uniform_layout.h"
 
 namespace conformance {
 
@@ -45,7 +43,7 @@ DrawCall parseDrawCall(const std::string& args) {
         std::istringstream in(a.substr(std::strlen(topology)));
         int instances = 1;
         in >> call.vertexCount;
-        if (in >> instances && instances != 1) throw Unsupported("instanced draw");
+        if (in >> instances) call.instances = instances;
         return call;
     }
     throw Unsupported("primitive topology '" + a + "'");
@@ -57,67 +55,7 @@ std::string firstError(const fxport::xlate::CompileError& e) {
     return e.what();
 }
 
-// The value of one parameter scalar from vkd3d's uniform words. SM4+ constant buffers hold ints as
-// ints; D3D9's float registers hold every numeric constant as a float.
-double scalarValue(const fxport::xlate::Parameter& p, std::uint32_t word, int model) {
-    float f;
-    std::memcpy(&f, &word, 4);
-    if (p.type == fxport::xlate::ParameterType::Float) return double(f);
-    if (model < 40) return p.type == fxport::xlate::ParameterType::Bool ? (f != 0.0f ? 1.0 : 0.0) : double(int(f));
-    if (p.type == fxport::xlate::ParameterType::Bool) return word != 0 ? 1.0 : 0.0;
-    if (p.type == fxport::xlate::ParameterType::UInt) return double(word);
-    return double(std::int32_t(word));
-}
-
 }  // namespace
-
-fxport::Effect& ModelRun::effectFor(const std::string& vs, const std::string& ps) {
-    return effectOf({{Stage::Vertex, vs}, {Stage::Pixel, ps}});
-}
-
-fxport::Effect& ModelRun::effectOf(const std::vector<std::pair<Stage, std::string>>& stages) {
-    std::string key = require_.matrixPacking;
-    for (const auto& [stage, source] : stages) key += "\x01" + std::to_string(int(stage)) + "\x01" + source;
-    auto known = effects_.find(key);
-    if (known != effects_.end()) return *known->second;
-    std::vector<fxport::Effect::ShaderFile> files;
-    for (const auto& [stage, source] : stages) {
-        const Block* block = shaders_.count(stage) ? shaders_[stage].block : nullptr;
-        files.push_back({compiler_.writeSource(source, block ? block->line : 0, require_, ".hlsl"), "main", shaderProfile(stage, model_)});
-    }
-    fxport::EffectOptions options;
-    options.cacheDir = options_.cacheDir;
-    options.useCache = !options_.cacheDir.empty();
-    std::unique_ptr<fxport::Effect> effect = fxport::Effect::FromShaderFiles(gpu().device(), files, options);
-    effect->Precompile();
-    return *(effects_[key] = std::move(effect));
-}
-
-std::string ModelRun::applyUniforms(fxport::Effect& effect, const std::string& source) {
-    const fxport::xlate::CompiledEffect& compiled = effect.compiled();
-    std::string uncovered = uncoveredUniformRead(compiled);
-    if (!uncovered.empty()) throw Unsupported(uncovered);
-    UniformLayout layout = computeUniformLayout(compiled, source, model_);
-    for (const ParameterPlacement& placement : layout.placements) {
-        const fxport::xlate::Parameter& p = compiled.parameters[std::size_t(placement.parameter)];
-        if (!placement.settable) throw Unsupported(placement.why);
-        if (p.offset < 0) continue;  // no shader reads it
-        // D3D reads 0 past the end of the constant data bound (and ignores HLSL initializers of
-        // loose shaders' globals), so every parameter is written, unset ones as 0.
-        std::vector<float> floats;
-        std::vector<int> ints;
-        for (int off : placement.scalarOffsets) {
-            std::uint32_t word = std::size_t(off) < uniforms_.size() ? uniforms_[std::size_t(off)] : 0u;
-            double v = scalarValue(p, word, model_);
-            if (p.type == fxport::xlate::ParameterType::Float) floats.push_back(float(v));
-            else ints.push_back(int(std::int64_t(v)));
-        }
-        fxport::EffectParameter& parameter = effect.Parameters[p.name];
-        if (p.type == fxport::xlate::ParameterType::Float) parameter.SetValue(std::span<const float>(floats));
-        else parameter.SetValue(std::span<const int>(ints));
-    }
-    return layout.guess;
-}
 
 // A draw or dispatch: Drawn when `step` returns; Skipped with the reason when it throws
 // Unsupported; Failed with the error otherwise. Then the outcome is noted for the line.
@@ -140,40 +78,43 @@ void ModelRun::gpuStep(int line, const std::function<void()>& step) {
     noteDrawOutcome(line);
 }
 
+StageSource ModelRun::stageSource(Stage stage) const {
+    const Block& block = *shaders_.at(stage).block;
+    if (block.hexBytecode) throw Unsupported("precompiled bytecode section (no HLSL to compile)");
+    if (crashedBefore(block.line))
+        throw std::runtime_error("the compile of the section at line " + std::to_string(block.line) + " crashed the process");
+    return StageSource{stage, block.source(), block.line};
+}
+
+ShaderSet ModelRun::drawStages(const DrawCall& call) {
+    const bool patches = call.topology == "patch list";
+    if (patches && !(shaders_.count(Stage::Hull) && shaders_.count(Stage::Domain)))
+        throw Unsupported("patch list without hull and domain shaders (D3D11 draws patches only through them)");
+    if (!patches && (shaders_.count(Stage::Hull) || shaders_.count(Stage::Domain)))
+        throw Unsupported("hull/domain shaders in a draw of " + call.topology + " (they take patch lists)");
+    if (!shaders_.count(Stage::Pixel)) throw Unsupported("draw without a pixel shader");
+    ShaderSet set;
+    set.require = require_;
+    // Files without a vertex shader take vkd3d's pass-through one.
+    set.stages.push_back(shaders_.count(Stage::Vertex) ? stageSource(Stage::Vertex) : StageSource{Stage::Vertex, kQuadVertexShader, 0});
+    if (patches) {
+        set.stages.push_back(stageSource(Stage::Hull));
+        set.stages.push_back(stageSource(Stage::Domain));
+    }
+    if (shaders_.count(Stage::Geometry)) set.stages.push_back(stageSource(Stage::Geometry));
+    set.stages.push_back(stageSource(Stage::Pixel));
+    return set;
+}
+
 void ModelRun::doDraw(const std::string& args, int line) {
     gpuStep(line, [&] {
         DrawCall call = parseDrawCall(args);
         if (!stickyStates_.empty())
             throw Unsupported("test state '" + stickyStates_.begin()->second + "' (not settable through the runtime API)");
-        const bool patches = call.topology == "patch list";
-        if (patches && !(shaders_.count(Stage::Hull) && shaders_.count(Stage::Domain)))
-            throw Unsupported("patch list without hull and domain shaders (D3D11 draws patches only through them)");
-        if (!patches && (shaders_.count(Stage::Hull) || shaders_.count(Stage::Domain)))
-            throw Unsupported("hull/domain shaders in a draw of " + call.topology + " (they take patch lists)");
-        if (!shaders_.count(Stage::Pixel)) throw Unsupported("draw without a pixel shader");
-        std::string vs = shaders_.count(Stage::Vertex) ? shaders_[Stage::Vertex].block->source() : kQuadVertexShader;
-        if (call.quad && !shaders_.count(Stage::Vertex)) vs = kQuadVertexShader;
-        std::vector<std::pair<Stage, std::string>> stages = {{Stage::Vertex, vs}};
-        if (patches) {
-            stages.push_back({Stage::Hull, shaders_[Stage::Hull].block->source()});
-            stages.push_back({Stage::Domain, shaders_[Stage::Domain].block->source()});
-        }
-        if (shaders_.count(Stage::Geometry)) stages.push_back({Stage::Geometry, shaders_[Stage::Geometry].block->source()});
-        stages.push_back({Stage::Pixel, shaders_[Stage::Pixel].block->source()});
+        ShaderSet stages = drawStages(call);
         if (crashedBefore(line)) throw std::runtime_error("the draw crashed the process");
-        std::string all;
-        for (const auto& [stage, source] : stages) {
-            if (shaders_.count(stage) && shaders_[stage].block->hexBytecode)
-                throw Unsupported("precompiled bytecode section (no HLSL to compile)");
-            if (shaders_.count(stage) && crashedBefore(shaders_[stage].block->line))
-                throw std::runtime_error("the compile of the section at line " + std::to_string(shaders_[stage].block->line) +
-                                         " crashed the process");
-            all += source;
-        }
         mark(line);
-        fxport::Effect& effect = effectOf(stages);
-        layoutGuess_ = applyUniforms(effect, all);
-        gpu().draw(effect, all, model_, call);
+        layoutGuess_ = gpu().draw(stages, uniforms_, call);
     });
 }
 
@@ -182,15 +123,12 @@ void ModelRun::doDispatch(const std::string& args, int line) {
         int x = 1, y = 1, z = 1;
         std::istringstream(args) >> x >> y >> z;
         if (!shaders_.count(Stage::Compute)) throw Unsupported("dispatch without a compute shader");
-        const Block& cs = *shaders_[Stage::Compute].block;
-        if (cs.hexBytecode) throw Unsupported("precompiled bytecode section (no HLSL to compile)");
+        ShaderSet set;
+        set.require = require_;
+        set.stages.push_back(stageSource(Stage::Compute));
         if (crashedBefore(line)) throw std::runtime_error("the dispatch crashed the process");
-        if (crashedBefore(cs.line)) throw std::runtime_error("the compile of the section at line " + std::to_string(cs.line) + " crashed the process");
         mark(line);
-        std::string source = cs.source();
-        fxport::Effect& effect = effectOf({{Stage::Compute, source}});
-        layoutGuess_ = applyUniforms(effect, source);
-        gpu().dispatch(effect, source, model_, x, y, z);
+        layoutGuess_ = gpu().dispatch(set, uniforms_, x, y, z);
     });
 }
 

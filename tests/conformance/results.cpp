@@ -81,13 +81,13 @@ std::string ModelResult::encode() const {
     out << file << '\t' << model << '\t' << crashed << '\t' << probesRun << '\t' << probesPassed << '\t' << probesSkipped;
     for (const SectionCounts& s : sections)
         out << '\t' << s.shouldCompile << '\t' << s.compiled << '\t' << s.shouldFail << '\t' << s.rejected;
-    out << '\t' << encodeReasons(skipReasons) << '\t' << encodeReasons(notCompiledReasons);
+    out << '\t' << encodeReasons(skipReasons) << '\t' << encodeReasons(notCompiledReasons) << '\t' << clean(session);
     return out.str();
 }
 
 ModelResult ModelResult::decode(const std::string& line) {
     std::vector<std::string> f = splitTabs(line);
-    if (f.size() != std::size_t(8 + 4 * kSectionKinds)) throw std::runtime_error("bad result line: " + line);
+    if (f.size() != std::size_t(9 + 4 * kSectionKinds)) throw std::runtime_error("bad result line: " + line);
     ModelResult r;
     r.file = f[0];
     r.model = std::stoi(f[1]);
@@ -104,6 +104,7 @@ ModelResult ModelResult::decode(const std::string& line) {
     }
     r.skipReasons = decodeReasons(f[std::size_t(6 + 4 * kSectionKinds)]);
     r.notCompiledReasons = decodeReasons(f[std::size_t(7 + 4 * kSectionKinds)]);
+    r.session = f[std::size_t(8 + 4 * kSectionKinds)];
     return r;
 }
 

@@ -34,6 +34,9 @@ struct ModelResult {
     int crashed = 0;  // compiles or draws that took the process down (each rerun past)
     std::map<std::string, int> skipReasons;         // probes skipped, by reason
     std::map<std::string, int> notCompiledReasons;  // sections that should compile and were not even tried
+    // The public API whose session ran it (gpu_backend.h): "xna", "d3d11", or "xna-kept" where the
+    // D3D11 session passed fewer probes (session_choice.h).
+    std::string session = "xna";
 
     SectionCounts total() const;
     std::string encode() const;  // one tab-separated line

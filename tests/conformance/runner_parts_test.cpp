@@ -1,13 +1,17 @@
 // The runner's own rules, pinned without a GPU: vkd3d's qualifiers, its ULP comparison, probe
-// parsing, explicit register bindings and the D3D placement of `uniform N` (uniform_layout.cpp).
+// parsing, explicit register bindings, the D3D placement of `uniform N` (uniform_layout.cpp) and the
+// D3D11 session's descriptions of the suite's blocks (d3d11_descs.cpp), and which session's run
+// of a model counts (session_choice.cpp).
 #include <gtest/gtest.h>
 
 #include <cstring>
 
+#include "d3d11_descs.h"
 #include "fxport/xlate/compiled_effect.h"
 #include "probe.h"
 #include "qualifiers.h"
 #include "register_binding.h"
+#include "session_choice.h"
 #include "uniform_layout.h"
 
 namespace conformance {
@@ -124,6 +128,96 @@ TEST(UniformLayout, Sm2AllocatesReadParametersByRegistersUsed) {
     EXPECT_EQ(l.placements[0].parameter, 1);
     EXPECT_EQ(l.placements[0].scalarOffsets[0], 0);
     EXPECT_EQ(l.placements[1].scalarOffsets[0], 8);
+}
+
+TEST(D3d11Descs, FormatsNamedByTheSuite) {
+    using namespace fxport::d3d11;
+    EXPECT_EQ(dxgiFormat(parseFormat("r32g32b32a32-uint")), DXGI_FORMAT_R32G32B32A32_UINT);
+    EXPECT_EQ(dxgiFormat(parseFormat("r32g32-float")), DXGI_FORMAT_R32G32_FLOAT);
+    EXPECT_EQ(dxgiFormat(parseFormat("r32-uint")), DXGI_FORMAT_R32_UINT);
+    // A format fxport's DXGI_FORMAT lacks is a skip with its name, never a wrong format.
+    try {
+        dxgiFormat(parseFormat("r32g32b32a32-sint"));
+        ADD_FAILURE() << "r32g32b32a32-sint has no DXGI_FORMAT value in fxport's header";
+    } catch (const Unsupported& e) {
+        EXPECT_NE(std::string(e.what()).find("r32g32b32a32-sint"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(dxgiFormat(parseFormat("r32-float-shadow")), Unsupported);
+}
+
+TEST(D3d11Descs, SamplerFilterBitsAndComparison) {
+    using namespace fxport::d3d11;
+    SamplerDesc s;
+    s.min = Filter::Linear;
+    s.mip = Filter::Linear;
+    s.u = Address::Wrap;
+    s.comparison = true;
+    s.comparisonFunc = "greater equal";
+    D3D11_SAMPLER_DESC d = samplerDescOf(s);
+    EXPECT_EQ(UINT(d.Filter), 0x91u);  // comparison | min linear | mip linear, mag point
+    EXPECT_EQ(d.ComparisonFunc, D3D11_COMPARISON_GREATER_EQUAL);
+    EXPECT_EQ(d.AddressU, D3D11_TEXTURE_ADDRESS_WRAP);
+    EXPECT_EQ(d.AddressV, D3D11_TEXTURE_ADDRESS_CLAMP);
+    s.comparisonFunc = "less";
+    EXPECT_EQ(samplerDescOf(s).ComparisonFunc, D3D11_COMPARISON_LESS);  // not "less equal"
+    s.comparisonFunc = "sometimes";
+    EXPECT_THROW(samplerDescOf(s), Unsupported);
+}
+
+TEST(D3d11Descs, InputElementsPackEachSlotInOrder) {
+    std::vector<InputElement> layout = {{0, parseFormat("r32g32-float"), "position", 0},
+                                        {1, parseFormat("r32-float"), "texcoord", 1},
+                                        {0, parseFormat("r32g32b32a32-float"), "color", 0},
+                                        {1, parseFormat("r32-uint"), "texcoord", 2}};
+    InputElements e = inputElementsOf(layout);
+    ASSERT_EQ(e.elements.size(), 4u);
+    EXPECT_EQ(e.elements[2].InputSlot, 0u);
+    EXPECT_EQ(e.elements[2].AlignedByteOffset, 8u);  // after slot 0's float2, not after slot 1's float
+    EXPECT_EQ(e.elements[3].AlignedByteOffset, 4u);
+    EXPECT_STREQ(e.elements[1].SemanticName, "texcoord");
+    EXPECT_EQ(e.elements[1].SemanticIndex, 1u);
+    EXPECT_EQ(e.strides.at(0), 24u);
+    EXPECT_EQ(e.strides.at(1), 8u);
+    layout[0].slot = 32;
+    EXPECT_THROW(inputElementsOf(layout), std::runtime_error);
+}
+
+TEST(D3d11Descs, Topologies) {
+    using namespace fxport::d3d11;
+    DrawCall call;
+    call.topology = "patch list";
+    call.controlPoints = 3;
+    EXPECT_EQ(topologyOf(call), D3D11_PRIMITIVE_TOPOLOGY_3_CONTROL_POINT_PATCHLIST);
+    call.topology = "triangle strip";
+    EXPECT_EQ(topologyOf(call), D3D11_PRIMITIVE_TOPOLOGY_TRIANGLESTRIP);
+    call.topology = "line list";
+    EXPECT_THROW(topologyOf(call), Unsupported);
+}
+
+ModelOutcome outcome(int passed, int compiled, const char* failureCategory = nullptr) {
+    ModelOutcome o;
+    o.result.probesPassed = passed;
+    o.result.sections[0].shouldCompile = 5;
+    o.result.sections[0].compiled = compiled;
+    o.result.session = "d3d11";
+    if (failureCategory) o.failures.push_back({"f", 40, 12, failureCategory, "detail"});
+    return o;
+}
+
+TEST(SessionChoice, XnaRunCountsOnlyWhenItPassesMoreWithTheSameCompileChecks) {
+    // Only a failed draw or probe is worth a second run; a refused section is not (both runs compile alike).
+    EXPECT_FALSE(worthXnaRerun(outcome(3, 5)));
+    EXPECT_FALSE(worthXnaRerun(outcome(3, 4, "refused")));
+    EXPECT_TRUE(worthXnaRerun(outcome(3, 5, "probe")));
+    EXPECT_TRUE(worthXnaRerun(outcome(3, 5, "draw")));
+    ModelOutcome kept = chooseSession(outcome(3, 5, "probe"), outcome(4, 5));
+    EXPECT_EQ(kept.result.probesPassed, 4);
+    EXPECT_EQ(kept.result.session, "xna-kept");
+    EXPECT_TRUE(kept.failures.empty());  // the failures of the run that counts
+    EXPECT_EQ(chooseSession(outcome(4, 5, "probe"), outcome(4, 5)).result.session, "d3d11");  // a tie keeps D3D11
+    EXPECT_EQ(chooseSession(outcome(3, 5, "probe"), outcome(4, 4)).result.session, "d3d11");  // other compile counts
+    // The session travels from the child process with the counts.
+    EXPECT_EQ(ModelResult::decode(kept.result.encode()).session, "xna-kept");
 }
 
 }  // namespace
