@@ -56,6 +56,8 @@ private:
     void makeUav(const ResourceDesc& r);
     ComPtr<fxport::d3d11::ID3D11Buffer> makeBuffer(const ResourceDesc& r, fxport::d3d11::UINT bind);
     void ensureDefaultTarget();
+    ComPtr<fxport::d3d11::ID3D11Resource> stagingFor(fxport::d3d11::ID3D11Resource* resource, const ResourceDesc& desc,
+                                                     std::size_t& rowBytes, std::size_t& rows);
     std::vector<std::uint32_t> readBack(fxport::d3d11::ID3D11Resource* resource, const ResourceDesc& desc);
     void forgetReadbacks();
 

@@ -200,21 +200,22 @@ void D3d11Session::makeUav(const ResourceDesc& r) {
     }
 }
 
-// Level 0 of a texture or the whole of a buffer as 32-bit words, rows packed (a staging copy, Map).
-std::vector<std::uint32_t> D3d11Session::readBack(ID3D11Resource* resource, const ResourceDesc& r) {
+// A CPU-readable (USAGE_STAGING) resource like `resource` (level 0 of a texture): its row bytes and rows.
+D3d11Session::ComPtr<ID3D11Resource> D3d11Session::stagingFor(ID3D11Resource* resource, const ResourceDesc& r, std::size_t& rowBytes,
+                                                              std::size_t& rows) {
+    HRESULT hr = S_OK;
     ComPtr<ID3D11Resource> staging;
-    std::size_t rowBytes = 0, rows = 1;
     if (isBuffer(r)) {
         D3D11_BUFFER_DESC d;
         static_cast<ID3D11Buffer*>(resource)->GetDesc(&d);
         rowBytes = d.ByteWidth;
-        d.Usage = D3D11_USAGE_STAGING;
-        d.BindFlags = 0;
-        d.MiscFlags = 0;
-        d.StructureByteStride = 0;
-        d.CPUAccessFlags = D3D11_CPU_ACCESS_READ;
+        rows = 1;
+        D3D11_BUFFER_DESC s;
+        s.ByteWidth = d.ByteWidth;
+        s.Usage = D3D11_USAGE_STAGING;
+        s.CPUAccessFlags = D3D11_CPU_ACCESS_READ;
         ComPtr<ID3D11Buffer> b;
-        if (FAILED(device_->CreateBuffer(&d, nullptr, b.GetAddressOf()))) throw std::runtime_error(GetLastErrorMessage());
+        hr = device_->CreateBuffer(&s, nullptr, b.GetAddressOf());
         staging = ComPtr<ID3D11Resource>(b.Get());
     } else {
         D3D11_TEXTURE2D_DESC d;
@@ -226,11 +227,18 @@ std::vector<std::uint32_t> D3d11Session::readBack(ID3D11Resource* resource, cons
         d.BindFlags = 0;
         d.CPUAccessFlags = D3D11_CPU_ACCESS_READ;
         ComPtr<ID3D11Texture2D> t;
-        if (FAILED(device_->CreateTexture2D(&d, nullptr, t.GetAddressOf()))) throw std::runtime_error(GetLastErrorMessage());
+        hr = device_->CreateTexture2D(&d, nullptr, t.GetAddressOf());
         staging = ComPtr<ID3D11Resource>(t.Get());
     }
-    if (isBuffer(r)) context_->CopyResource(staging.Get(), resource);
-    else context_->CopySubresourceRegion(staging.Get(), 0, 0, 0, 0, resource, 0, nullptr);
+    if (FAILED(hr)) throw std::runtime_error(std::string("staging copy for a probe: ") + GetLastErrorMessage());
+    return staging;
+}
+
+// Level 0 of a texture or the whole of a buffer as 32-bit words, rows packed (a staging copy, Map).
+std::vector<std::uint32_t> D3d11Session::readBack(ID3D11Resource* resource, const ResourceDesc& r) {
+    std::size_t rowBytes = 0, rows = 0;
+    ComPtr<ID3D11Resource> staging = stagingFor(resource, r, rowBytes, rows);
+    context_->CopySubresourceRegion(staging.Get(), 0, 0, 0, 0, resource, 0, nullptr);
     D3D11_MAPPED_SUBRESOURCE m;
     if (FAILED(context_->Map(staging.Get(), 0, D3D11_MAP_READ, 0, &m))) throw std::runtime_error(GetLastErrorMessage());
     std::vector<std::uint32_t> words(rowBytes / 4 * rows);
