@@ -1,0 +1,44 @@
+// The HLSL type of an expression in a function body, found from the tokens alone (before glslang
+// runs), with fxc's rules: literals (`1` int, `1.0` float, `1u` uint), variables as declared
+// (variable_declarations.h), struct members, swizzles, indexing, casts, constructors, the
+// effect's own functions, the common intrinsics, and the operators' common type (a scalar or a
+// one-component value takes the other's shape; two vectors the smaller; two matrices the smaller
+// rows and columns; the component type float > uint > int, bool arithmetic as int).
+// Nothing where anything is not evident, so a rewrite built on it changes only what it understands.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fx_syntax.h"
+#include "hlsl_types.h"
+
+namespace fxport::xlate {
+
+struct ExpressionType {
+    BasicType basic;           // numeric when basic.ok (scalar, vector or matrix)
+    std::string structName;    // a struct's name (typedefs resolved) when not numeric
+    std::vector<int> dims;     // array sizes, outermost first
+    bool isNumeric() const { return basic.ok && structName.empty() && dims.empty(); }
+};
+
+// A binary operation met on the way: its operands' token spans and types (both numeric).
+struct BinaryOperation {
+    size_t leftBegin = 0, leftEnd = 0, rightBegin = 0, rightEnd = 0;
+    BasicType left, right;
+};
+
+// The type of tokens [begin, end) of `f`'s body; `operations`, when given, receives the binary
+// operations inside (only when the whole expression has a type).
+std::optional<ExpressionType> expressionType(const EffectSyntax& syntax, const FxFunction& f, size_t begin, size_t end,
+                                             std::vector<BinaryOperation>* operations = nullptr);
+
+// fxc's spelling of a numeric type: float, float3, float2x3.
+std::string spellType(const BasicType& b);
+
+// The component type of an operation between `a` and `b` (float beats uint beats int; bool,
+// half and the min-precision types count as int and float).
+std::string commonScalar(const std::string& a, const std::string& b);
+
+}  // namespace fxport::xlate
