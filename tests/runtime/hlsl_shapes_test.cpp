@@ -113,6 +113,21 @@ TEST_P(HlslShapes, BinaryOperatorOfMatricesTakesTheSmallerShape) {
     expectPixel(draw(*e), expected);
 }
 
+// mul with a one-component vector or a one-row/one-column matrix: a vector is a row on the left and
+// a column on the right, the inner dimension the smaller one. mul(float1 s, float4x4 m) is s times
+// m's first row; mul(float4x4 m, float1x4 r) the outer product of m's first column and r.
+TEST_P(HlslShapes, MulWithOneComponentAndOneRowArguments) {
+    auto e = effect("float4 A;",
+                    "float1 s = A.x; float1x4 r = {A.x, A.y, A.z, A.w};"
+                    "float4x4 m = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};"
+                    "float4 scaled = mul(s, m); float4 outer = mul(m, r)[2];"
+                    "return float4(scaled.y, scaled.w, outer.x, outer.z);");
+    const float a[4] = {0.5f, -1.25f, 2.0f, 8.0f};
+    e->Parameters["A"].SetValue(Vector4(a[0], a[1], a[2], a[3]));
+    const float expected[4] = {a[0] * 2, a[0] * 4, 9 * a[0], 9 * a[2]};
+    expectPixel(draw(*e), expected);
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslShapes, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 

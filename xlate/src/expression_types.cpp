@@ -106,7 +106,14 @@ private:
         if (!b || !a->isNumeric() || !b->isNumeric()) return std::nullopt;
         auto shape = commonShape(a->basic, b->basic);
         if (!shape) return std::nullopt;
-        return numeric(*shape);
+        return withVector1(numeric(*shape), *a, *b);
+    }
+
+    // A one-component operand takes the other's class (vkd3d's expr_common_shape).
+    static ExpressionType withVector1(ExpressionType result, const ExpressionType& a, const ExpressionType& b) {
+        if (isScalarLike(a.basic)) result.vector1 = b.vector1;
+        else if (isScalarLike(b.basic)) result.vector1 = a.vector1;
+        return result;
     }
 
     Type binary(int minPrecedence) {
@@ -128,7 +135,7 @@ private:
             const bool logical = precedence <= 2 || precedence == 6 || precedence == 7;
             if (logical) shape->scalar = "bool";
             else if (shape->scalar == "bool") shape->scalar = "int";
-            left = numeric(*shape);
+            left = withVector1(numeric(*shape), *left, *right);
         }
     }
 
@@ -151,7 +158,14 @@ private:
     Type typeNamed(const std::string& name) const {
         const std::string& resolved = syntax_.resolveType(name);
         BasicType b = describeBasicType(resolved);
-        if (b.ok) return numeric(b);
+        if (b.ok) {
+            ExpressionType type = numeric(b);
+            std::string compact;
+            for (char c : resolved)
+                if (c != ' ') compact += c;
+            type.vector1 = !b.isMatrix && b.columns == 1 && (compact.back() == '1' || (compact.size() > 3 && compact.compare(compact.size() - 3, 3, ",1>") == 0));
+            return type;
+        }
         if (syntax_.findStruct(resolved)) return ExpressionType{{}, resolved, {}};
         return std::nullopt;
     }
@@ -333,7 +347,7 @@ private:
             b.scalar = name.substr(2);
             return numeric(b);
         }
-        if (name == "mul" && args.size() == 2) return product(first, args[1].basic);
+        if (name == "mul" && args.size() == 2) return productType(args[0], args[1]);
         if (kElementwise.count(name) || kElementwiseFloat.count(name)) {
             BasicType common = first;
             for (const auto& a : args) {
@@ -346,17 +360,6 @@ private:
         }
         return std::nullopt;
     }
-
-    // mul(a, b): a scalar scales; a vector is a row on the left and a column on the right.
-    static Type product(const BasicType& a, const BasicType& b) {
-        const std::string scalar = commonScalar(a.scalar, b.scalar);
-        if (isScalarLike(a)) return numeric(basic(scalar, b.rows, b.columns, b.isMatrix));
-        if (isScalarLike(b)) return numeric(basic(scalar, a.rows, a.columns, a.isMatrix));
-        if (!a.isMatrix && !b.isMatrix) return numeric(basic(scalar, 1, 1, false));
-        if (!a.isMatrix) return numeric(basic(scalar, 1, b.columns, false));
-        if (!b.isMatrix) return numeric(basic(scalar, 1, a.rows, false));
-        return numeric(basic(scalar, a.rows, b.columns, true));
-    }
 };
 
 }  // namespace
@@ -368,6 +371,26 @@ std::optional<ExpressionType> expressionType(const EffectSyntax& syntax, const F
     Type type = reader.whole(begin);
     if (type && operations) *operations = std::move(reader.operations);
     return type;
+}
+
+ExpressionType productType(const ExpressionType& a, const ExpressionType& b) {
+    const std::string scalar = commonScalar(a.basic.scalar, b.basic.scalar);
+    const bool aScalar = !a.basic.isMatrix && !a.vector1 && a.basic.columns == 1, bScalar = !b.basic.isMatrix && !b.vector1 && b.basic.columns == 1;
+    if (aScalar || bScalar) {
+        const ExpressionType& other = aScalar ? b : a;
+        ExpressionType out = numeric(basic(scalar, other.basic.rows, other.basic.columns, other.basic.isMatrix));
+        out.vector1 = other.vector1;
+        return out;
+    }
+    const int rows = a.basic.isMatrix ? a.basic.rows : 1, columns = b.basic.isMatrix ? b.basic.columns : 1;
+    const int vectors = int(!a.basic.isMatrix) + int(!b.basic.isMatrix);
+    if (vectors == 2) return numeric(basic(scalar, 1, 1, false));
+    if (vectors == 1) {
+        ExpressionType out = numeric(basic(scalar, 1, rows * columns, false));
+        out.vector1 = rows * columns == 1;
+        return out;
+    }
+    return numeric(basic(scalar, rows, columns, true));
 }
 
 std::string spellType(const BasicType& b) {

@@ -20,8 +20,14 @@ struct ExpressionType {
     BasicType basic;           // numeric when basic.ok (scalar, vector or matrix)
     std::string structName;    // a struct's name (typedefs resolved) when not numeric
     std::vector<int> dims;     // array sizes, outermost first
+    bool vector1 = false;      // a one-component vector (float1, vector<float, 1>), not a scalar
     bool isNumeric() const { return basic.ok && structName.empty() && dims.empty(); }
 };
+
+// fxc's result of mul(a, b) (both numeric): a scalar scales; a vector is a row on the left and a
+// column on the right; the inner dimension is the smaller of the two (mul(float1, float4x4) is
+// the first row times the one component).
+ExpressionType productType(const ExpressionType& a, const ExpressionType& b);
 
 // A binary operation met on the way: its operands' token spans and types (both numeric).
 struct BinaryOperation {

@@ -35,11 +35,43 @@ std::string glslangSpelling(BasicType b) {
 }
 
 // Component (r, c) of `v`, a value of fxc type `from` as glslang holds it.
-std::string component(const BasicType& from, int r, int c) {
+std::string component(const BasicType& from, int r, int c, const std::string& v = "v") {
     const int n = from.rows * from.columns;
-    if (n == 1) return "v";
-    if (!from.isMatrix || from.rows == 1 || from.columns == 1) return "v[" + std::to_string(r * from.columns + c) + "]";
-    return "v[" + std::to_string(r) + "][" + std::to_string(c) + "]";
+    if (n == 1) return v;
+    if (!from.isMatrix || from.rows == 1 || from.columns == 1) return v + "[" + std::to_string(r * from.columns + c) + "]";
+    return v + "[" + std::to_string(r) + "][" + std::to_string(c) + "]";
+}
+
+std::string shapeName(const ExpressionType& e) { return spellType(e.basic) + (e.vector1 ? "1" : ""); }
+
+// Whether mul(a, b) needs fxc's meaning spelled out: a one-component vector or matrix, or a
+// one-row or one-column matrix, takes part (glslang crashes on the first, and holds the others as
+// vectors, which mul would take as rows or columns where fxc does not); plain scalars, vectors
+// and full matrices glslang multiplies as fxc does.
+bool mulNeedsHelper(const ExpressionType& a, const ExpressionType& b) {
+    auto scalar = [](const ExpressionType& e) { return !e.basic.isMatrix && !e.vector1 && e.basic.columns == 1; };
+    if (scalar(a) || scalar(b)) return false;
+    auto odd = [](const ExpressionType& e) { return e.vector1 || (e.basic.isMatrix && (e.basic.rows == 1 || e.basic.columns == 1)); };
+    return odd(a) || odd(b);
+}
+
+// `R name(A a, B b) { return R(sums); }`: fxc's mul, a vector a row on the left and a column on
+// the right, over the smaller inner dimension.
+std::string mulCode(const std::string& name, const ExpressionType& a, const ExpressionType& b) {
+    BasicType result = productType(a, b).basic;
+    const int rows = a.basic.isMatrix ? a.basic.rows : 1, columns = b.basic.isMatrix ? b.basic.columns : 1;
+    const int inner = std::min(a.basic.columns, b.basic.isMatrix ? b.basic.rows : b.basic.columns);
+    auto of = [](const ExpressionType& e, const char* v, int r, int c, int k) {
+        return e.basic.isMatrix ? component(e.basic, r, c, v) : component(e.basic, 0, k, v);
+    };
+    std::string text = glslangSpelling(result) + " " + name + "(" + glslangSpelling(a.basic) + " a, " + glslangSpelling(b.basic) + " b) { return " +
+                       glslangSpelling(result) + "(";
+    for (int j = 0; j < rows; ++j)
+        for (int i = 0; i < columns; ++i) {
+            text += j || i ? ", " : "";
+            for (int k = 0; k < inner; ++k) text += std::string(k ? " + " : "") + of(a, "a", j, k, k) + " * " + of(b, "b", k, i, k);
+        }
+    return text + "); } ";
 }
 
 std::string helperName(const BasicType& from, const BasicType& to) {
@@ -115,6 +147,17 @@ std::optional<BasicType> commonMatrixType(const std::vector<BasicType>& args, bo
     return common;
 }
 
+// The arguments' types of `mul(a, b)` at token i when its product needs a helper.
+std::optional<std::pair<ExpressionType, ExpressionType>> mulArguments(const EffectSyntax& syntax, const FxFunction& f, size_t i) {
+    const auto& t = syntax.tokens;
+    if (!t[i].is("mul") || !t[i + 1].is("(") || (i > 0 && t[i - 1].is(".")) || syntax.findFunction("mul")) return std::nullopt;
+    auto spans = argumentSpans(t, i + 1, f.body.end);
+    if (spans.size() != 2) return std::nullopt;
+    auto a = expressionType(syntax, f, spans[0].first, spans[0].second), b = expressionType(syntax, f, spans[1].first, spans[1].second);
+    if (!a || !b || !a->isNumeric() || !b->isNumeric() || !mulNeedsHelper(*a, *b)) return std::nullopt;
+    return std::make_pair(*a, *b);
+}
+
 class MixedShapes {
 public:
     explicit MixedShapes(const EffectSyntax& syntax) : syntax_(syntax), t_(syntax.tokens) {}
@@ -123,6 +166,7 @@ public:
         for (const auto& f : syntax_.functions) {
             for (size_t i = f.body.begin; i + 1 < f.body.end; ++i) {
                 call(f, i);
+                mul(f, i);
                 if (size_t e = expressionAfter(f, i)) operators(f, i + 1, e);
             }
         }
@@ -163,6 +207,15 @@ private:
             edits_.push_back({t_[token].offset, t_[token].offset, text});
         }
         for (const auto& [token, count] : closed_) edits_.push_back({t_[token].end, t_[token].end, std::string(size_t(count), ')')});
+    }
+
+    // mul(a, b) at i, where glslang would not compute fxc's product.
+    void mul(const FxFunction& f, size_t i) {
+        auto types = mulArguments(syntax_, f, i);
+        if (!types) return;
+        const std::string name = "fxport_mul_" + shapeName(types->first) + "_" + shapeName(types->second);
+        helpers_.emplace(name, mulCode(name, types->first, types->second));
+        edits_.push_back({t_[i].offset, t_[i].end, name});
     }
 
     // An element-wise intrinsic's call at i.
@@ -229,5 +282,13 @@ private:
 }  // namespace
 
 std::vector<TextEdit> mixedShapeConversions(const EffectSyntax& syntax) { return MixedShapes(syntax).run(); }
+
+std::set<size_t> mulCallsSpelledOut(const EffectSyntax& syntax) {
+    std::set<size_t> out;
+    for (const auto& f : syntax.functions)
+        for (size_t i = f.body.begin; i + 1 < f.body.end; ++i)
+            if (mulArguments(syntax, f, i)) out.insert(i);
+    return out;
+}
 
 }  // namespace fxport::xlate

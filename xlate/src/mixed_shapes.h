@@ -8,7 +8,11 @@
 //    smoothstep and step pin it). A call on full matrices becomes one call per row (glslang
 //    crashes on lerp(float2x2 ...), and SPIRV-Cross writes clamp(mat2, ...) that no driver takes);
 //  - a binary operator between matrices of different shapes computes in the smaller rows and
-//    columns (`float1x4 + float4x4` adds the first row; vkd3d's shape pins it).
+//    columns (`float1x4 + float4x4` adds the first row; vkd3d's shape pins it);
+//  - mul with a one-component vector or matrix (glslang crashes), or with a one-row or one-column
+//    matrix (a vector to glslang, which mul would take as a row or a column where fxc does not):
+//    a helper with fxc's product, a vector a row on the left and a column on the right, over the
+//    smaller inner dimension (mul(float1, float4x4) is the first row scaled; vkd3d's mul pins it).
 // An operand whose type differs is passed through a generated helper that builds the common type
 // from its components (`fxport_shape_float3x2_to_float2x2(a)`, evaluated once, as before); the
 // helpers go before the first function. Only where every operand's type is evident
@@ -16,6 +20,7 @@
 // vectors in an intrinsic fxc refuses, so those stay as written.
 #pragma once
 
+#include <set>
 #include <vector>
 
 #include "fx_syntax.h"
@@ -23,5 +28,9 @@
 namespace fxport::xlate {
 
 std::vector<TextEdit> mixedShapeConversions(const EffectSyntax& syntax);
+
+// The tokens of the `mul` calls mixedShapeConversions spells out: checks and rewrites made for
+// glslang's mul (front_end_hazards, degenerate_matrices) leave them alone.
+std::set<size_t> mulCallsSpelledOut(const EffectSyntax& syntax);
 
 }  // namespace fxport::xlate
