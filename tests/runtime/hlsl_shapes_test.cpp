@@ -128,6 +128,20 @@ TEST_P(HlslShapes, MulWithOneComponentAndOneRowArguments) {
     expectPixel(draw(*e), expected);
 }
 
+// determinant of a matrix that is not square takes its top-left square; transpose of a one-row
+// matrix is the same components as a column.
+TEST_P(HlslShapes, DeterminantOfNonSquareAndTransposeOfOneRow) {
+    auto e = effect("float4 A;",
+                    "float3x4 m = {A.x, 2, 3, 100, 5, A.y, 7, 100, 9, 10, A.z, 100}; float2x3 n = {A.w, 2, 5, 3, 4, 5};"
+                    "float1x4 r = {A.x, A.y, A.z, A.w}; float4x1 c = transpose(r);"
+                    "return float4(determinant(m), determinant(n), c[1][0], c[3][0]);");
+    const float a[4] = {1.5f, -6.0f, 11.0f, 0.25f};
+    e->Parameters["A"].SetValue(Vector4(a[0], a[1], a[2], a[3]));
+    const float det3 = a[0] * (a[1] * a[2] - 7 * 10) - 2 * (5 * a[2] - 7 * 9) + 3 * (5 * 10 - a[1] * 9);
+    const float expected[4] = {det3, a[3] * 4 - 2 * 3, a[1], a[3]};
+    expectPixel(draw(*e), expected, 1e-3f);
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslShapes, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 

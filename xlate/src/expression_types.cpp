@@ -106,7 +106,9 @@ private:
         if (!b || !a->isNumeric() || !b->isNumeric()) return std::nullopt;
         auto shape = commonShape(a->basic, b->basic);
         if (!shape) return std::nullopt;
-        return withVector1(numeric(*shape), *a, *b);
+        ExpressionType out = withVector1(numeric(*shape), *a, *b);
+        out.keptMatrix = a->keptMatrix || b->keptMatrix;
+        return out;
     }
 
     // A one-component operand takes the other's class (vkd3d's expr_common_shape).
@@ -129,13 +131,15 @@ private:
             const size_t rightBegin = at_;
             Type right = binary(precedence + 1);
             if (!right || !left->isNumeric() || !right->isNumeric()) return std::nullopt;
-            operations.push_back({leftBegin, leftEnd, rightBegin, at_, left->basic, right->basic});
+            operations.push_back({leftBegin, leftEnd, rightBegin, at_, left->basic, right->basic, left->keptMatrix || right->keptMatrix});
             auto shape = commonShape(left->basic, right->basic);
             if (!shape) return std::nullopt;
             const bool logical = precedence <= 2 || precedence == 6 || precedence == 7;
             if (logical) shape->scalar = "bool";
             else if (shape->scalar == "bool") shape->scalar = "int";
+            const bool kept = left->keptMatrix || right->keptMatrix;
             left = withVector1(numeric(*shape), *left, *right);
+            left->keptMatrix = kept;
         }
     }
 
@@ -234,6 +238,7 @@ private:
                 if (m.name == name) {
                     Type t = typeNamed(m.type);
                     if (t) t->dims = m.arrayDims;
+                    if (t) t->keptMatrix = isDegenerate(t->basic);
                     return t;
                 }
             return std::nullopt;
@@ -303,11 +308,24 @@ private:
             return call(name, *args);
         }
         auto declared = declaredVariable(syntax_, f_, tk.text, at_);
-        ++at_;
+        const size_t use = at_++;
         if (!declared) return std::nullopt;
         Type type = typeNamed(declared->type);
         if (type) type->dims = declared->dims;
+        if (type && isDegenerate(type->basic)) type->keptMatrix = !declaredLocally(tk.text, use);
         return type;
+    }
+
+    // Whether `name` used at `use` is a local of the body or a parameter without a semantic (not
+    // a uniform or an entry input).
+    bool declaredLocally(const std::string& name, size_t use) const {
+        for (size_t i = std::min(use, f_.body.end); i-- > f_.body.begin + 1;)
+            if (t_[i].isIdent() && t_[i].text == name && t_[i - 1].isIdent() && !t_[i + 1].is("(") && typeNamed(t_[i - 1].text)) return true;
+        for (const auto& p : f_.parameters)
+            if (p.name == name) return p.semantic.empty();
+        for (const auto& g : syntax_.globals)
+            if (g.name == name) return std::find(g.modifiers.begin(), g.modifiers.end(), "static") != g.modifiers.end();
+        return false;
     }
 
     static std::string literalScalar(const std::string& text) {
@@ -318,6 +336,13 @@ private:
     }
 
     Type call(const std::string& name, const std::vector<ExpressionType>& args) const {
+        Type type = callType(name, args);
+        if (type && !syntax_.findFunction(name))
+            for (const auto& a : args) type->keptMatrix = type->keptMatrix || a.keptMatrix;
+        return type;
+    }
+
+    Type callType(const std::string& name, const std::vector<ExpressionType>& args) const {
         if (syntax_.findFunction(name)) {
             std::optional<std::string> returned;
             for (const auto& fn : syntax_.functions) {

@@ -21,6 +21,10 @@ struct ExpressionType {
     std::string structName;    // a struct's name (typedefs resolved) when not numeric
     std::vector<int> dims;     // array sizes, outermost first
     bool vector1 = false;      // a one-component vector (float1, vector<float, 1>), not a scalar
+    // A one-row or one-column matrix that stays a matrix to glslang (a uniform, a struct member, an
+    // entry input: degenerate_matrices.h), or a value computed from one: glslang's type is not
+    // the vector a rewrite would assume.
+    bool keptMatrix = false;
     bool isNumeric() const { return basic.ok && structName.empty() && dims.empty(); }
 };
 
@@ -33,6 +37,7 @@ ExpressionType productType(const ExpressionType& a, const ExpressionType& b);
 struct BinaryOperation {
     size_t leftBegin = 0, leftEnd = 0, rightBegin = 0, rightEnd = 0;
     BasicType left, right;
+    bool keptMatrix = false;  // either operand is (see ExpressionType)
 };
 
 // The type of tokens [begin, end) of `f`'s body; `operations`, when given, receives the binary

@@ -102,6 +102,8 @@ std::string rowwiseCode(const std::string& intrinsic, const std::string& name, c
     return text + "); } ";
 }
 
+bool isDegenerateMatrix(const BasicType& b) { return b.isMatrix && (b.rows == 1 || b.columns == 1); }
+
 bool sameType(const BasicType& a, const BasicType& b) {
     return glslangSpelling(a) == glslangSpelling(b) && a.isMatrix == b.isMatrix;
 }
@@ -154,7 +156,7 @@ std::optional<std::pair<ExpressionType, ExpressionType>> mulArguments(const Effe
     auto spans = argumentSpans(t, i + 1, f.body.end);
     if (spans.size() != 2) return std::nullopt;
     auto a = expressionType(syntax, f, spans[0].first, spans[0].second), b = expressionType(syntax, f, spans[1].first, spans[1].second);
-    if (!a || !b || !a->isNumeric() || !b->isNumeric() || !mulNeedsHelper(*a, *b)) return std::nullopt;
+    if (!a || !b || !a->isNumeric() || !b->isNumeric() || a->keptMatrix || b->keptMatrix || !mulNeedsHelper(*a, *b)) return std::nullopt;
     return std::make_pair(*a, *b);
 }
 
@@ -167,6 +169,7 @@ public:
             for (size_t i = f.body.begin; i + 1 < f.body.end; ++i) {
                 call(f, i);
                 mul(f, i);
+                matrixIntrinsic(f, i);
                 if (size_t e = expressionAfter(f, i)) operators(f, i + 1, e);
             }
         }
@@ -218,6 +221,37 @@ private:
         edits_.push_back({t_[i].offset, t_[i].end, name});
     }
 
+    // determinant of a matrix that is not square: fxc takes its top-left square (float3x4: the
+    // 3x3, float2x1: the one component); transpose of a one-row or one-column matrix: the same
+    // components, and the same vector to glslang. glslang has neither overload.
+    void matrixIntrinsic(const FxFunction& f, size_t i) {
+        const bool determinant = t_[i].is("determinant");
+        if ((!determinant && !t_[i].is("transpose")) || !t_[i + 1].is("(") || (i > 0 && t_[i - 1].is(".")) || syntax_.findFunction(t_[i].text)) return;
+        auto spans = argumentSpans(t_, i + 1, f.body.end);
+        if (spans.size() != 1) return;
+        auto type = expressionType(syntax_, f, spans[0].first, spans[0].second);
+        if (!type || !type->isNumeric() || type->keptMatrix || !type->basic.isMatrix) return;
+        const BasicType& m = type->basic;
+        if (!determinant) {
+            if (isDegenerateMatrix(m) && m.rows * m.columns > 1) edits_.push_back({t_[i].offset, t_[i].end, ""});
+            return;
+        }
+        if (m.rows == m.columns) return;
+        const int n = std::min(m.rows, m.columns);
+        const std::string name = "fxport_determinant_" + spellType(m);
+        std::string code = "float " + name + "(" + glslangSpelling(m) + " v) { return ";
+        if (n == 1) {
+            code += component(m, 0, 0);
+        } else {
+            code += "determinant(float" + std::to_string(n) + "x" + std::to_string(n) + "(";
+            for (int r = 0; r < n; ++r)
+                for (int c = 0; c < n; ++c) code += std::string(r || c ? ", " : "") + component(m, r, c);
+            code += "))";
+        }
+        helpers_.emplace(name, code + "; } ");
+        edits_.push_back({t_[i].offset, t_[i].end, name});
+    }
+
     // An element-wise intrinsic's call at i.
     void call(const FxFunction& f, size_t i) {
         if (!t_[i].isIdent() || !t_[i + 1].is("(") || (i > 0 && t_[i - 1].is("."))) return;
@@ -228,7 +262,7 @@ private:
         std::vector<BasicType> types;
         for (const auto& [b, e] : spans) {
             auto type = expressionType(syntax_, f, b, e);
-            if (!type || !type->isNumeric()) return;
+            if (!type || !type->isNumeric() || type->keptMatrix) return;
             types.push_back(type->basic);
         }
         auto common = commonMatrixType(types, floatOnly);
@@ -266,7 +300,7 @@ private:
         if (!expressionType(syntax_, f, b, e, &operations)) return;
         for (const auto& op : operations) {
             const BasicType &l = op.left, &r = op.right;
-            if (!l.isMatrix || !r.isMatrix || (l.rows == r.rows && l.columns == r.columns)) continue;
+            if (op.keptMatrix || !l.isMatrix || !r.isMatrix || (l.rows == r.rows && l.columns == r.columns)) continue;
             BasicType common = l;
             common.rows = std::min(l.rows, r.rows);
             common.columns = std::min(l.columns, r.columns);
