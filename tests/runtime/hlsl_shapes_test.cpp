@@ -142,6 +142,19 @@ TEST_P(HlslShapes, DeterminantOfNonSquareAndTransposeOfOneRow) {
     expectPixel(draw(*e), expected, 1e-3f);
 }
 
+// An array passed to a parameter that is an array of another shape with as many elements: the
+// elements in order (float a[2][3] from a float f[3][2] or a float g[6]).
+TEST_P(HlslShapes, ArrayArgumentOfAnotherShapeTakesElementsInOrder) {
+    auto e = effect("float4 A; float pick(float a[2][3], float s) { return s * (a[0][2] + 10 * a[1][0]); }",
+                    "float f[3][2] = {{A.x, A.y}, {A.z, A.w}, {5, 6}}; float g[6] = {A.w, A.z, A.y, A.x, 1, 2};"
+                    "return float4(pick(f, 1), pick(g, 2), 0, 1);");
+    const float a[4] = {1.5f, -6.0f, 11.0f, 0.25f};
+    e->Parameters["A"].SetValue(Vector4(a[0], a[1], a[2], a[3]));
+    // f's elements in order: x y z w 5 6 -> a[0][2] = z, a[1][0] = w; g's: w z y x 1 2 -> y, x.
+    const float expected[4] = {a[2] + 10 * a[3], 2 * (a[1] + 10 * a[0]), 0, 1};
+    expectPixel(draw(*e), expected);
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslShapes, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 

@@ -9,6 +9,7 @@
 #include "lvalue_casts.h"
 #include "componentwise_casts.h"
 #include "mixed_shapes.h"
+#include "array_arguments.h"
 #include "scalar_intrinsics.h"
 
 #include <algorithm>
@@ -395,6 +396,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : intrinsicsAsFxc(syntax)) edits.push_back(std::move(e));
     for (auto& e : scalarIntrinsicCalls(syntax)) edits.push_back(std::move(e));
     for (auto& e : mixedShapeConversions(syntax)) edits.push_back(std::move(e));
+    for (auto& e : arrayArgumentOverloads(syntax)) edits.push_back(std::move(e));
     for (auto& e : spellOutPackMatrixPragmas(syntax)) edits.push_back(std::move(e));
     out.sourceText = &text;
     out.syntax = &syntax;
