@@ -155,6 +155,18 @@ TEST_P(HlslShapes, ArrayArgumentOfAnotherShapeTakesElementsInOrder) {
     expectPixel(draw(*e), expected);
 }
 
+// A function of the effect named like an intrinsic is called wherever the arguments convert to
+// its parameters (scalars fill its float2s); the intrinsic only where they do not (a float2 cannot
+// become the float3 it takes).
+TEST_P(HlslShapes, EffectFunctionNamedLikeAnIntrinsicIsCalledWhereArgumentsConvert) {
+    auto e = effect("float4 A; float2 max(float2 a, float3 b) { return a + b.xy; }",
+                    "float2 user = max(A.x, A.y); float2 builtin = max(A.zw, A.wz); return float4(user, builtin);");
+    const float a[4] = {0.125f, 0.5f, -2.0f, 3.0f};
+    e->Parameters["A"].SetValue(Vector4(a[0], a[1], a[2], a[3]));
+    const float expected[4] = {a[0] + a[1], a[0] + a[1], std::max(a[2], a[3]), std::max(a[3], a[2])};
+    expectPixel(draw(*e), expected);
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslShapes, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 
