@@ -167,6 +167,15 @@ TEST_P(HlslShapes, EffectFunctionNamedLikeAnIntrinsicIsCalledWhereArgumentsConve
     expectPixel(draw(*e), expected);
 }
 
+// `c ? a : b` with a matrix condition selects component by component.
+TEST_P(HlslShapes, MatrixConditionSelectsComponentByComponent) {
+    auto e = effect("float4 A;", "float2x2 c = {A.x, 0, 0, A.y}; float2x2 a = {1, 2, 3, 4}; float2x2 b = {5, 6, 7, 8};"
+                                 "float2x2 r = c ? a : b; return float4(r[0], r[1]);");
+    e->Parameters["A"].SetValue(Vector4(1.0f, 0.0f, 0, 0));
+    const float expected[4] = {1, 6, 7, 8};
+    expectPixel(draw(*e), expected);
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslShapes, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 

@@ -52,6 +52,7 @@ public:
     Reader(const EffectSyntax& syntax, const FxFunction& f, size_t end) : syntax_(syntax), t_(syntax.tokens), f_(f), end_(end) {}
 
     std::vector<BinaryOperation> operations;
+    std::vector<Selection> selections;
 
     Type whole(size_t begin) {
         at_ = begin;
@@ -92,22 +93,24 @@ private:
 
     Type ternary() {
         if (++depth_ > 64) return std::nullopt;
+        const size_t begin = at_;
         Type condition = binary(1);
         if (!condition || !is("?")) {
             --depth_;
             return condition;
         }
-        ++at_;
+        const size_t question = at_++;
         Type a = ternary();
         if (!a || !is(":")) return std::nullopt;
-        ++at_;
+        const size_t colon = at_++;
         Type b = ternary();
         --depth_;
         if (!b || !a->isNumeric() || !b->isNumeric()) return std::nullopt;
         auto shape = commonShape(a->basic, b->basic);
         if (!shape) return std::nullopt;
         ExpressionType out = withVector1(numeric(*shape), *a, *b);
-        out.keptMatrix = a->keptMatrix || b->keptMatrix;
+        out.keptMatrix = a->keptMatrix || b->keptMatrix || condition->keptMatrix;
+        selections.push_back({begin, question, colon, at_, *condition, out});
         return out;
     }
 
@@ -390,11 +393,12 @@ private:
 }  // namespace
 
 std::optional<ExpressionType> expressionType(const EffectSyntax& syntax, const FxFunction& f, size_t begin, size_t end,
-                                             std::vector<BinaryOperation>* operations) {
+                                             std::vector<BinaryOperation>* operations, std::vector<Selection>* selections) {
     if (begin >= end || end > syntax.tokens.size()) return std::nullopt;
     Reader reader(syntax, f, end);
     Type type = reader.whole(begin);
     if (type && operations) *operations = std::move(reader.operations);
+    if (type && selections) *selections = std::move(reader.selections);
     return type;
 }
 

@@ -40,10 +40,18 @@ struct BinaryOperation {
     bool keptMatrix = false;  // either operand is (see ExpressionType)
 };
 
-// The type of tokens [begin, end) of `f`'s body; `operations`, when given, receives the binary
-// operations inside (only when the whole expression has a type).
+// A `c ? a : b` met on the way: the tokens of its condition's start, '?', ':' and its end.
+struct Selection {
+    size_t begin = 0, question = 0, colon = 0, end = 0;
+    ExpressionType condition, result;
+};
+
+// The type of tokens [begin, end) of `f`'s body; `operations` and `selections`, when given,
+// receive the binary operations and the selections inside (only when the whole expression has a
+// type).
 std::optional<ExpressionType> expressionType(const EffectSyntax& syntax, const FxFunction& f, size_t begin, size_t end,
-                                             std::vector<BinaryOperation>* operations = nullptr);
+                                             std::vector<BinaryOperation>* operations = nullptr,
+                                             std::vector<Selection>* selections = nullptr);
 
 // fxc's spelling of a numeric type: float, float3, float2x3.
 std::string spellType(const BasicType& b);

@@ -192,6 +192,7 @@ private:
     // Helper calls opened before a token (widest span first) and closed after one.
     std::map<size_t, std::multimap<size_t, std::string, std::greater<size_t>>> opened_;
     std::map<size_t, int> closed_;
+    std::set<size_t> selected_;  // first tokens of selections already spelled out
 
     // Tokens [b, e), of type `from`, passed through the helper that makes them `to`.
     void convert(size_t b, size_t e, const BasicType& from, const BasicType& to) {
@@ -292,12 +293,33 @@ private:
         return 0;
     }
 
+    // `c ? a : b` with a matrix condition of the result's shape: fxc selects component by
+    // component; glslang takes a scalar condition only. A helper selects each component.
+    void select(const Selection& s) {
+        const BasicType &c = s.condition.basic, &r = s.result.basic;
+        if (s.result.keptMatrix || !c.isMatrix || !r.isMatrix || c.rows != r.rows || c.columns != r.columns || c.rows * c.columns == 1) return;
+        if (!selected_.insert(s.begin).second) return;
+        const std::string name = "fxport_select_" + helperName(c, r).substr(13);
+        std::string code = glslangSpelling(r) + " " + name + "(" + glslangSpelling(c) + " c, " + glslangSpelling(r) + " a, " + glslangSpelling(r) +
+                           " b) { return " + glslangSpelling(r) + "(";
+        for (int i = 0; i < r.rows; ++i)
+            for (int k = 0; k < r.columns; ++k)
+                code += std::string(i || k ? ", " : "") + "(" + component(c, i, k, "c") + " != 0 ? " + component(r, i, k, "a") + " : " + component(r, i, k, "b") + ")";
+        helpers_.emplace(name, code + "); } ");
+        opened_[s.begin].emplace(s.end - s.begin, name + "(");
+        ++closed_[s.end - 1];
+        edits_.push_back({t_[s.question].offset, t_[s.question].end, ","});
+        edits_.push_back({t_[s.colon].offset, t_[s.colon].end, ","});
+    }
+
     // Binary operations between matrices of different shapes in tokens [b, e): fxc computes them
     // in the smaller rows and columns (float1x4 + float4x4 adds the first row); glslang refuses
     // them ("Could not perform requested binary operation").
     void operators(const FxFunction& f, size_t b, size_t e) {
         std::vector<BinaryOperation> operations;
-        if (!expressionType(syntax_, f, b, e, &operations)) return;
+        std::vector<Selection> selections;
+        if (!expressionType(syntax_, f, b, e, &operations, &selections)) return;
+        for (const auto& s : selections) select(s);
         for (const auto& op : operations) {
             const BasicType &l = op.left, &r = op.right;
             if (op.keptMatrix || !l.isMatrix || !r.isMatrix || (l.rows == r.rows && l.columns == r.columns)) continue;
