@@ -9,6 +9,7 @@
 #include <string>
 
 #include "hlsl_types.h"
+#include "mixed_shapes.h"
 
 namespace fxport::xlate {
 
@@ -140,6 +141,7 @@ std::vector<TextEdit> degenerateMatricesAsVectors(const EffectSyntax& syntax) {
     std::map<std::string, Shape> all;
     for (const auto& r : found) all.insert(r.names.begin(), r.names.end());
     std::set<std::string> unsafe;
+    const std::set<size_t> spelledOut = mulCallsSpelledOut(syntax);  // mul calls with fxc's product written out
     struct Group {
         size_t close;  // the ')' before '['
         Shape shape;
@@ -151,7 +153,8 @@ std::vector<TextEdit> degenerateMatricesAsVectors(const EffectSyntax& syntax) {
             Group g{i, Shape::Row, {}};
             bool mixed = false;
             int depth = 0;
-            for (size_t k = i; k > 0; --k) {
+            size_t k = i;
+            for (; k > 0; --k) {
                 if (t[k].is(")")) ++depth;
                 else if (t[k].is("(") && --depth == 0) break;
                 auto n = all.find(t[k].text);
@@ -160,10 +163,12 @@ std::vector<TextEdit> degenerateMatricesAsVectors(const EffectSyntax& syntax) {
                 g.shape = n->second;
                 g.names.push_back(n->first);
             }
+            const bool call = k > 0 && t[k - 1].isIdent() && !t[k - 1].is("return");  // `mul(x, y)[1]` indexes the result
+            if (call) continue;
             if (mixed) unsafe.insert(g.names.begin(), g.names.end());
             else if (!g.names.empty()) groups.push_back(g);
         }
-        if (t[i].is("mul") && t[i + 1].is("(") && !t[i - 1].is(".")) {
+        if (t[i].is("mul") && t[i + 1].is("(") && !t[i - 1].is(".") && !spelledOut.count(i)) {
             const size_t a = i + 2;
             if (a + 1 < t.size() && t[a + 1].is(",") && all.count(t[a].text) && all[t[a].text] == Shape::Column) unsafe.insert(t[a].text);
             if (a + 3 < t.size() && t[a + 1].is(",") && t[a + 3].is(")") && all.count(t[a + 2].text) && all[t[a + 2].text] == Shape::Row)

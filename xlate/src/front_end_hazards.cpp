@@ -8,6 +8,7 @@
 #include <set>
 
 #include "hlsl_types.h"
+#include "mixed_shapes.h"
 
 namespace fxport::xlate {
 
@@ -223,11 +224,12 @@ private:
     }
 
     void float1InMul() {
+        const std::set<size_t> spelledOut = mulCallsSpelledOut(syntax_);  // glslang never sees those
         for (const auto& f : syntax_.functions) {
             std::set<std::string> names;
             bool namesKnown = false;
             for (size_t i = f.body.begin; i + 1 < f.body.end; ++i) {
-                if (!tok(i).is("mul") || !tok(i + 1).is("(")) continue;
+                if (!tok(i).is("mul") || !tok(i + 1).is("(") || spelledOut.count(i)) continue;
                 if (!namesKnown) names = oneComponentNames(f), namesKnown = true;
                 // Split the arguments at top-level commas.
                 size_t argStart = i + 2;

@@ -8,6 +8,9 @@
 #include "degenerate_matrices.h"
 #include "lvalue_casts.h"
 #include "componentwise_casts.h"
+#include "mixed_shapes.h"
+#include "array_arguments.h"
+#include "intrinsic_overrides.h"
 #include "scalar_intrinsics.h"
 
 #include <algorithm>
@@ -393,6 +396,9 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : componentwiseCasts(syntax)) edits.push_back(std::move(e));
     for (auto& e : intrinsicsAsFxc(syntax)) edits.push_back(std::move(e));
     for (auto& e : scalarIntrinsicCalls(syntax)) edits.push_back(std::move(e));
+    for (auto& e : mixedShapeConversions(syntax)) edits.push_back(std::move(e));
+    for (auto& e : arrayArgumentOverloads(syntax)) edits.push_back(std::move(e));
+    for (auto& e : intrinsicOverrides(syntax)) edits.push_back(std::move(e));
     for (auto& e : spellOutPackMatrixPragmas(syntax)) edits.push_back(std::move(e));
     out.sourceText = &text;
     out.syntax = &syntax;

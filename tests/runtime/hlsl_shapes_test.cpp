@@ -1,0 +1,183 @@
+// Type and shape conversions as fxc performs them (issue 23): intrinsics called with values of
+// different shapes, drawn into a 1x1 float target at SM2..SM5 and compared with the same
+// arithmetic written in C++ with fxc's rules (the independent reference). Values come in as
+// uniforms, so the GPU computes them.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "runtime_test_support.h"
+
+namespace fxport::test {
+namespace {
+
+class HlslShapes : public ::testing::TestWithParam<const char*> {
+protected:
+    void SetUp() override {
+        device.BlendState = BlendState::Opaque;
+        device.DepthStencilState = DepthStencilState::None;
+        device.RasterizerState = RasterizerState::CullNone;
+    }
+    void TearDown() override { device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr)); }
+
+    // An effect whose pixel shader is `body` (HLSL statements returning a float4) after `globals`.
+    std::unique_ptr<Effect> effect(const std::string& globals, const std::string& body) {
+        const std::string model = GetParam();
+        std::string text = globals + "\n"
+                           "float4 VS(float4 p : POSITION0) : POSITION0 { return p; }\n"
+                           "float4 PS() : COLOR0 {\n" + body + "\n}\n"
+                           "technique T { pass P { VertexShader = compile vs_" + model + " VS(); PixelShader = compile ps_" + model + " PS(); } }\n";
+        EffectOptions options;
+        options.useCache = false;
+        return std::make_unique<Effect>(device, EffectSource{text, "hlsl_shapes_" + model + ".fx"}, options);
+    }
+
+    std::vector<float> draw(Effect& e) {
+        RenderTarget2D target(device, 1, 1, false, SurfaceFormat::Vector4);
+        struct Unbind {
+            GraphicsDevice& d;
+            ~Unbind() { d.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr)); }
+        } unbind{device};
+        device.SetRenderTarget(target);
+        device.Clear(Color::Black);
+        e.CurrentTechnique->Passes[0].Apply();
+        drawQuad(device);
+        return readFloats(target);
+    }
+
+    void expectPixel(const std::vector<float>& px, const float (&expected)[4], float tolerance = 1e-5f) {
+        ASSERT_EQ(px.size(), 4u);
+        for (int k = 0; k < 4; ++k) EXPECT_NEAR(px[size_t(k)], expected[k], tolerance) << "channel " << k;
+    }
+
+    GraphicsDevice& device = testDevice();
+};
+
+// lerp(float3x2, float2x3, float3x4) is a float2x2: each argument's top-left 2x2, fxc's common
+// type of an element-wise intrinsic (smallest rows, smallest columns).
+TEST_P(HlslShapes, ElementwiseIntrinsicOfMatricesTakesTheSmallestShape) {
+    const float a[3][2] = {{6, 5}, {4, 3}, {2, 1}}, b[2][3] = {{1, 2, 3}, {4.25f, 5.25f, 6.25f}}, s = 0.375f;
+    auto e = effect("float4 A;",
+                    "float3x2 a = {A.x, 5, 4, 3, 2, 1}; float2x3 b = {1, 2, 3, A.y, 5.25, 6.25}; float3x4 c = A.z;"
+                    "float2x2 r = lerp(a, b, c); return float4(r[0], r[1]);");
+    e->Parameters["A"].SetValue(Vector4(a[0][0], b[1][0], s, 0));
+    float expected[4];
+    for (int r = 0; r < 2; ++r)
+        for (int c = 0; c < 2; ++c) expected[r * 2 + c] = a[r][c] + s * (b[r][c] - a[r][c]);
+    expectPixel(draw(*e), expected);
+}
+
+// clamp of an int matrix between a float matrix and a literal: float (the highest component
+// type), the 2x2 both have; the int literal fills every component.
+TEST_P(HlslShapes, ElementwiseIntrinsicConvertsComponentTypesAndScalars) {
+    auto e = effect("float4 A;",
+                    "int3x3 x = {-4, 1, 9, 3, 7, 2, 0, 0, 0}; float2x4 lo = {A.x, A.x, A.x, A.x, A.y, A.y, A.y, A.y};"
+                    "float2x2 r = clamp(x, lo, 5); return float4(r[0], r[1]);");
+    const float lo0 = -1.5f, lo1 = 3.5f;
+    e->Parameters["A"].SetValue(Vector4(lo0, lo1, 0, 0));
+    const float expected[4] = {std::clamp(-4.0f, lo0, 5.0f), std::clamp(1.0f, lo0, 5.0f), std::clamp(3.0f, lo1, 5.0f), std::clamp(7.0f, lo1, 5.0f)};
+    expectPixel(draw(*e), expected);
+}
+
+// One-column matrices are vectors to glslang: smoothstep(float4x1, float, float3x1) is a float3x1.
+// (glslang truncated these vectors before; this pins the helpers' spelling of one-column matrices.)
+TEST_P(HlslShapes, ElementwiseIntrinsicOfOneColumnMatrices) {
+    auto e = effect("float4 A;", "float4x1 a = {0, 0, 0, 0}; float b = A.w; float3x1 x = {A.x, A.y, A.z};"
+                                 "float3x1 r = smoothstep(a, b, x); return float4(r, 1);");
+    const float x[3] = {0.25f, 0.5f, 1.5f}, b = 2.0f;
+    e->Parameters["A"].SetValue(Vector4(x[0], x[1], x[2], b));
+    float expected[4] = {0, 0, 0, 1};
+    for (int k = 0; k < 3; ++k) {
+        const float t = std::clamp(x[k] / b, 0.0f, 1.0f);
+        expected[k] = t * t * (3 - 2 * t);
+    }
+    expectPixel(draw(*e), expected);
+}
+
+// A binary operator between matrices of different shapes computes in the smaller rows and
+// columns: float1x4 + float4x4 adds the first row, float4x1 * float4x4 multiplies the first column,
+// float3x3 - float2x2 subtracts in the top-left 2x2.
+TEST_P(HlslShapes, BinaryOperatorOfMatricesTakesTheSmallerShape) {
+    auto e = effect("float4 A;",
+                    "float1x4 row = {A.x, A.y, A.z, A.w}; float4x1 column = {A.x, A.y, A.z, A.w};"
+                    "float4x4 m = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};"
+                    "float3x3 n = {A.x, A.y, 0, A.z, A.w, 0, 0, 0, 0}; float2x2 d = n - m;"
+                    "float4 sum = row + m; float4 product = column * m;"
+                    "return float4(sum.y, product.z, d[1][0], d[1][1]);");
+    const float a[4] = {0.5f, -1.25f, 2.0f, 8.0f};
+    e->Parameters["A"].SetValue(Vector4(a[0], a[1], a[2], a[3]));
+    const float expected[4] = {a[1] + 2, a[2] * 9, a[2] - 5, a[3] - 6};
+    expectPixel(draw(*e), expected);
+}
+
+// mul with a one-component vector or a one-row/one-column matrix: a vector is a row on the left and
+// a column on the right, the inner dimension the smaller one. mul(float1 s, float4x4 m) is s times
+// m's first row; mul(float4x4 m, float1x4 r) the outer product of m's first column and r.
+TEST_P(HlslShapes, MulWithOneComponentAndOneRowArguments) {
+    auto e = effect("float4 A;",
+                    "float1 s = A.x; float1x4 r = {A.x, A.y, A.z, A.w};"
+                    "float4x4 m = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};"
+                    "float4 scaled = mul(s, m); float4 outer = mul(m, r)[2];"
+                    "return float4(scaled.y, scaled.w, outer.x, outer.z);");
+    const float a[4] = {0.5f, -1.25f, 2.0f, 8.0f};
+    e->Parameters["A"].SetValue(Vector4(a[0], a[1], a[2], a[3]));
+    const float expected[4] = {a[0] * 2, a[0] * 4, 9 * a[0], 9 * a[2]};
+    expectPixel(draw(*e), expected);
+}
+
+// determinant of a matrix that is not square takes its top-left square; transpose of a one-row
+// matrix is the same components as a column.
+TEST_P(HlslShapes, DeterminantOfNonSquareAndTransposeOfOneRow) {
+    auto e = effect("float4 A;",
+                    "float3x4 m = {A.x, 2, 3, 100, 5, A.y, 7, 100, 9, 10, A.z, 100}; float2x3 n = {A.w, 2, 5, 3, 4, 5};"
+                    "float1x4 r = {A.x, A.y, A.z, A.w}; float4x1 c = transpose(r);"
+                    "return float4(determinant(m), determinant(n), c[1][0], c[3][0]);");
+    const float a[4] = {1.5f, -6.0f, 11.0f, 0.25f};
+    e->Parameters["A"].SetValue(Vector4(a[0], a[1], a[2], a[3]));
+    const float det3 = a[0] * (a[1] * a[2] - 7 * 10) - 2 * (5 * a[2] - 7 * 9) + 3 * (5 * 10 - a[1] * 9);
+    const float expected[4] = {det3, a[3] * 4 - 2 * 3, a[1], a[3]};
+    expectPixel(draw(*e), expected, 1e-3f);
+}
+
+// An array passed to a parameter that is an array of another shape with as many elements: the
+// elements in order (float a[2][3] from a float f[3][2] or a float g[6]).
+TEST_P(HlslShapes, ArrayArgumentOfAnotherShapeTakesElementsInOrder) {
+    auto e = effect("float4 A; float pick(float a[2][3], float s) { return s * (a[0][2] + 10 * a[1][0]); }",
+                    "float f[3][2] = {{A.x, A.y}, {A.z, A.w}, {5, 6}}; float g[6] = {A.w, A.z, A.y, A.x, 1, 2};"
+                    "return float4(pick(f, 1), pick(g, 2), 0, 1);");
+    const float a[4] = {1.5f, -6.0f, 11.0f, 0.25f};
+    e->Parameters["A"].SetValue(Vector4(a[0], a[1], a[2], a[3]));
+    // f's elements in order: x y z w 5 6 -> a[0][2] = z, a[1][0] = w; g's: w z y x 1 2 -> y, x.
+    const float expected[4] = {a[2] + 10 * a[3], 2 * (a[1] + 10 * a[0]), 0, 1};
+    expectPixel(draw(*e), expected);
+}
+
+// A function of the effect named like an intrinsic is called wherever the arguments convert to
+// its parameters (scalars fill its float2s); the intrinsic only where they do not (a float2 cannot
+// become the float3 it takes).
+TEST_P(HlslShapes, EffectFunctionNamedLikeAnIntrinsicIsCalledWhereArgumentsConvert) {
+    auto e = effect("float4 A; float2 max(float2 a, float3 b) { return a + b.xy; }",
+                    "float2 user = max(A.x, A.y); float2 builtin = max(A.zw, A.wz); return float4(user, builtin);");
+    const float a[4] = {0.125f, 0.5f, -2.0f, 3.0f};
+    e->Parameters["A"].SetValue(Vector4(a[0], a[1], a[2], a[3]));
+    const float expected[4] = {a[0] + a[1], a[0] + a[1], std::max(a[2], a[3]), std::max(a[3], a[2])};
+    expectPixel(draw(*e), expected);
+}
+
+// `c ? a : b` with a matrix condition selects component by component.
+TEST_P(HlslShapes, MatrixConditionSelectsComponentByComponent) {
+    auto e = effect("float4 A;", "float2x2 c = {A.x, 0, 0, A.y}; float2x2 a = {1, 2, 3, 4}; float2x2 b = {5, 6, 7, 8};"
+                                 "float2x2 r = c ? a : b; return float4(r[0], r[1]);");
+    e->Parameters["A"].SetValue(Vector4(1.0f, 0.0f, 0, 0));
+    const float expected[4] = {1, 6, 7, 8};
+    expectPixel(draw(*e), expected);
+}
+
+INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslShapes, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
+                         [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
+
+}  // namespace
+}  // namespace fxport::test
