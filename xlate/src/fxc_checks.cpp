@@ -16,6 +16,7 @@ using Family = std::vector<std::pair<size_t, Diagnostic>> (*)(const EffectSyntax
 constexpr Family kFamilies[] = {
     findRegisterReservationErrors,
     findGeometryEntryErrors,
+    findGeometryInputErrors,
     findImplicitSizeArrayErrors,
     findEntrySemanticErrors,
     findMajorityModifierErrors,
