@@ -594,6 +594,8 @@ private:
         s.token = pos_;
         ++pos_;
         if (cur().isIdent()) s.name = syntax_.tokens[pos_++].text;
+        std::vector<FxStructMember> inherited;
+        if (cur().is(":") && !s.name.empty()) inherited = parseStructBase(s.name);  // `struct b : a {`
         if (!cur().is("{")) {  // `struct X var;` use as a type
             pos_ = s.token;
             return parseDeclaration();
@@ -627,9 +629,45 @@ private:
             expect(";", ("after member '" + m.name + "' of struct '" + s.name + "'").c_str());
             s.members.push_back(std::move(m));
         }
+        if (!inherited.empty()) inheritMembers(s, std::move(inherited), open);
         while (!isEnd() && !cur().is(";")) ++pos_;  // optional declarators
         accept(";");
         syntax_.structs.push_back(std::move(s));
+    }
+
+    // `struct b : a {`: fxc's single inheritance. The base must be one struct declared before;
+    // its members come first. Returns them; blanks ` : a`.
+    std::vector<FxStructMember> parseStructBase(const std::string& name) {
+        size_t colon = pos_++;
+        const FxStruct* base = cur().isIdent() ? syntax_.findStruct(cur().text) : nullptr;
+        if (!base)
+            fail(diag::kSyntax, "the base of struct '" + name + "' must be a struct declared before it; '" + cur().text + "' is not", pos_);
+        std::vector<FxStructMember> members = base->members;
+        ++pos_;
+        if (cur().is(","))
+            fail(diag::kSyntax, "struct '" + name + "' names more than one base struct; fxc takes one", pos_);
+        if (!cur().is("{")) fail(diag::kSyntax, "expected '{' after the base of struct '" + name + "', found '" + cur().text + "'", pos_);
+        blank(colon, pos_);
+        return members;
+    }
+
+    // The base's members are written out at the top of the derived struct (glslang has no
+    // inheritance). A base member the derived struct shadows keeps its place in the layout under a
+    // name no source can spell.
+    void inheritMembers(FxStruct& s, std::vector<FxStructMember> inherited, size_t open) {
+        std::string text;
+        for (auto& m : inherited) {
+            for (const auto& own : s.members)
+                if (own.name == m.name) m.name += "_fxport_base";
+            for (const auto& mod : m.modifiers) text += mod + " ";
+            text += " " + m.type + " " + m.name;
+            for (int d : m.arrayDims) text += "[" + std::to_string(d) + "]";
+            if (!m.semantic.empty()) text += " : " + m.semantic;
+            text += ";";
+        }
+        syntax_.edits.push_back({tok(open).end, tok(open).end, " " + text});
+        inherited.insert(inherited.end(), s.members.begin(), s.members.end());
+        s.members = std::move(inherited);
     }
 
     void parseCbuffer() {

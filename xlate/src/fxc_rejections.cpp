@@ -189,6 +189,9 @@ private:
         bool isSwizzle = components.size() <= 4 &&
                          (components.find_first_not_of(xyzw) == std::string::npos || components.find_first_not_of(rgba) == std::string::npos);
         if (!isSwizzle) return;
+        for (const auto& st : syntax_.structs)  // a member spelled like a swizzle: `data.aa = ...`
+            for (const auto& m : st.members)
+                if (m.name == components) return;
         for (size_t k = 0; k < components.size(); ++k)
             if (components.find(components[k], k + 1) != std::string::npos) {
                 report("an assigned swizzle names component '" + std::string(1, components[k]) + "' twice (fxc X3018)", dot + 1);
