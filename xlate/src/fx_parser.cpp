@@ -119,7 +119,7 @@ bool isShaderObjectType(const std::string& s) {
 bool isTypeModifier(const std::string& s) {
     static const std::set<std::string> k = {"static", "const", "uniform", "extern", "shared", "volatile", "precise",
                                             "row_major", "column_major", "inline", "groupshared", "nointerpolation",
-                                            "linear", "centroid", "noperspective", "sample", "snorm", "unorm"};
+                                            "linear", "centroid", "noperspective", "sample", "snorm", "unorm", "export"};
     return k.count(toLower(s)) > 0 && s == toLower(s);
 }
 bool isParameterModifier(const std::string& s) {
@@ -768,6 +768,7 @@ private:
         std::vector<size_t> sharedTokens;
         while (cur().isIdent() && isTypeModifier(cur().text)) {
             if (cur().text == "shared") sharedTokens.push_back(pos_);
+            if (cur().text == "export") blank(pos_, pos_ + 1);  // a library function's linkage: nothing to a whole shader
             modifiers.push_back(syntax_.tokens[pos_++].text);
         }
         if (cur().is("struct") && peek().isIdent()) {  // `uniform struct apple a;` (C's spelling): the type is apple
@@ -807,8 +808,10 @@ private:
         f.attributes = std::move(pendingAttributes_);
         pendingAttributes_.clear();
         size_t close = skipGroup(pos_, ("parameter list of '" + name + "'").c_str());
+        // `float2 f(void)`: C's spelling of no parameters, which fxc takes; glslang does not.
+        if (close == pos_ + 3 && tok(pos_ + 1).is("void")) blank(pos_ + 1, pos_ + 2);
         // Parameters: split at depth-0 commas.
-        size_t i = pos_ + 1;
+        size_t i = close == pos_ + 3 && tok(pos_ + 1).is("void") ? close : pos_ + 1;
         while (i < close - 1) {
             size_t j = i;
             int depth = 0;
