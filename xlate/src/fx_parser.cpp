@@ -16,6 +16,7 @@
 #include "variable_declarations.h"
 #include "source_map.h"
 #include "text_util.h"
+#include "unsigned_types.h"
 
 namespace fxport::xlate {
 
@@ -134,6 +135,7 @@ public:
     Parser(const std::string& text, const SourceMap& map, bool looseShaders) : text_(text), map_(map) {
         syntax_.tokens = tokenize(text);
         syntax_.looseShaders = looseShaders;
+        if (auto refused = mergeUnsignedTypes(syntax_.tokens, syntax_.edits)) fail(diag::kSyntax, refused->second, refused->first);
     }
 
     EffectSyntax run() {
