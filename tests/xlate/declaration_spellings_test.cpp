@@ -61,3 +61,11 @@ TEST(DeclarationSpellings, UnsignedBeforeANonIntTypeIsRefused) {
     EXPECT_EQ(compileError("typedef int Ints[2];\nunsigned Ints v;\nfloat4 PS() : SV_Target { return 0; }\n"),
               "'unsigned' applies to int types; 'Ints' is not one");
 }
+
+TEST(DeclarationSpellings, LocalsFxcRefusesStayRefused) {
+    // Refused before only because `main(void)` was; fxc refuses the locals themselves (vkd3d's invalid file).
+    EXPECT_EQ(compileError("float4 PS(void) : SV_Target { uniform float f; return 0; }\n"),
+              "local variable in 'PS' declared uniform: uniforms are globals or entry parameters");
+    EXPECT_EQ(compileError("struct s { float4 f; };\nfloat4 PS(void) : SV_Target { const struct s a; return 0; }\n"),
+              "const variable 'a' has no initial value (fxc X3012)");
+}

@@ -17,6 +17,7 @@ constexpr Family kFamilies[] = {
     findRegisterReservationErrors,
     findGeometryEntryErrors,
     findGeometryInputErrors,
+    findLocalDeclarationErrors,
     findImplicitSizeArrayErrors,
     findEntrySemanticErrors,
     findMajorityModifierErrors,

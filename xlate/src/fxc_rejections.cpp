@@ -205,6 +205,7 @@ private:
             if (!t_[i].is("const") || (i > f.body.begin && !(t_[i - 1].is(";") || t_[i - 1].is("{") || t_[i - 1].is("}")))) continue;
             size_t k = i + 1;
             while (k < f.body.end && t_[k].isIdent() && isModifier(t_[k].text)) ++k;
+            if (t_[k].is("struct")) ++k;  // `const struct s a;`
             if (k + 2 < f.body.end && t_[k].isIdent() && t_[k + 1].isIdent() && t_[k + 2].is(";"))
                 report("const variable '" + t_[k + 1].text + "' has no initial value (fxc X3012)", k + 1);
         }
