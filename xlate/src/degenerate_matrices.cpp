@@ -84,12 +84,11 @@ bool mayRespell(const EffectSyntax& syntax, size_t i, const FxFunction*& inFunct
         if (i < f.declaration.begin || i >= f.declaration.end) continue;
         inFunction = &f;
         if (i >= f.body.begin && i < f.body.end) return true;
+        // Parameters and the return type, with a semantic or not: the entry wrapper maps the
+        // vector onto the matrix's semantic registers (signature_layout.h).
         for (const auto& p : f.parameters)
-            if (p.typeToken == i) return p.semantic.empty();
-        if (i >= f.token) return false;
-        for (size_t k = f.declaration.begin; k < i; ++k)  // a row_major Nx1 return takes N registers
-            if (syntax.tokens[k].is("row_major")) return false;
-        return true;  // the return type
+            if (p.typeToken == i) return true;
+        return i < f.token;  // the return type
     }
     for (const auto& g : syntax.globals) {
         if (i >= g.initializer.begin && i < g.initializer.end) return true;
@@ -100,14 +99,14 @@ bool mayRespell(const EffectSyntax& syntax, size_t i, const FxFunction*& inFunct
 
 }  // namespace
 
-std::string entryReturnType(const EffectSyntax& syntax, const FxFunction& entry) {
-    const std::string& type = entry.returnType;
-    for (size_t k = entry.declaration.begin; k < entry.token && k < syntax.tokens.size(); ++k)
-        if (syntax.tokens[k].is("row_major")) return type;
+std::string degenerateAsVector(const std::string& type) {
     BasicType b = describeBasicType(type);
-    if (!b.ok || !b.isMatrix || b.columns != 1) return type;
-    return b.rows == 1 ? b.scalar : b.scalar + std::to_string(b.rows);
+    if (!b.ok || !b.isMatrix || (b.rows != 1 && b.columns != 1)) return type;
+    const int n = b.rows * b.columns;
+    return n == 1 ? b.scalar : b.scalar + std::to_string(n);
 }
+
+std::string entryReturnType(const EffectSyntax&, const FxFunction& entry) { return degenerateAsVector(entry.returnType); }
 
 std::vector<TextEdit> degenerateMatricesAsVectors(const EffectSyntax& syntax) {
     const std::vector<Token>& t = syntax.tokens;

@@ -1,6 +1,7 @@
 // fxc's rules for the semantics of a vertex or pixel shader's entry that glslang does not check
 // (vkd3d's entry-point-semantics pins them). Semantic names compare without case, `TEXCOORD` is
-// `TEXCOORD0`, an array takes consecutive indices, struct members are flattened:
+// `TEXCOORD0`, an array takes consecutive indices, struct members are flattened, a semantic on a
+// struct cascades over its members (signature_layout.h):
 //  - an output semantic names one value: two outputs (parameters, members, the result) on one
 //    semantic and index are an error, so is an array of structs whose members carry semantics;
 //  - at SM 4-5 two inputs on one semantic and index must have one layout: the same register
@@ -12,6 +13,7 @@
 
 #include "fxc_checks.h"
 #include "hlsl_types.h"
+#include "signature_layout.h"
 
 namespace fxport::xlate {
 
@@ -60,7 +62,7 @@ private:
             if (has("out") || has("inout")) outputs.insert(outputs.end(), flat.begin(), flat.end());
             if (!has("out")) inputs.insert(inputs.end(), flat.begin(), flat.end());
         }
-        if (f.returnType != "void") flatten(f.returnType, f.returnSemantic, {}, {}, f.token, outputs, 0);
+        if (f.returnType != "void") flatten(f.returnType, f.returnSemantic, {}, entryReturnModifiers(syntax_, f), f.token, outputs, 0);
         std::map<std::string, const Element*> seen;
         for (const auto& o : outputs) {
             if (o.semantic.empty()) continue;
@@ -85,20 +87,25 @@ private:
     // Appends the signature values of a `type name[dims] : semantic`; false when the type is not
     // understood (nothing judged then).
     bool flatten(const std::string& typeName, const std::string& semantic, const std::vector<int>& dims,
-                 const std::vector<std::string>& modifiers, size_t token, std::vector<Element>& out, int depth) const {
+                 const std::vector<std::string>& modifiers, size_t token, std::vector<Element>& out, int depth,
+                 SemanticCascade* cascade = nullptr) const {
         std::string type = syntax_.resolveType(typeName);
         long long count = 1;  // capped: sizes come from the source
         for (int d : dims) count = std::min(count * std::max(d, 1), 1LL << 20);
         if (count > 1024) return false;  // far past any stage's registers: not judged here
         BasicType b = describeBasicType(type);
         if (b.ok) {
-            if (semantic.empty()) return true;
-            bool rowMajor = std::find(modifiers.begin(), modifiers.end(), "row_major") != modifiers.end();
-            int registers = b.isMatrix ? (rowMajor ? b.rows : b.columns) : 1;
-            int width = b.isMatrix ? (rowMajor ? b.columns : b.rows) : b.columns;
+            if (semantic.empty() && !cascade) return true;
+            int registers = signatureRegisters(b, modifiers);
+            int width = signatureWidth(b, modifiers);
             bool isFloat = b.scalar == "float" || b.scalar == "half" || b.scalar.rfind("min16float", 0) == 0 || b.scalar.rfind("min10float", 0) == 0;
             bool isInt = b.scalar == "int" || b.scalar == "uint" || b.scalar == "bool" || b.scalar == "dword" || b.scalar.rfind("min16", 0) == 0;
             std::string layout = isFloat || isInt ? std::string(isFloat ? "f:" : "i:") + std::to_string(registers) + "x" + std::to_string(width) : "";
+            if (cascade) {
+                auto [base, first] = cascade->take(registers * int(count));
+                for (int k = 0; k < registers * count; ++k) out.push_back({base + std::to_string(first + k), layout, token});
+                return true;
+            }
             for (int k = 0; k < count; ++k)
                 for (int r = 0; r < registers; ++r)
                     out.push_back({withIndex(semantic, k * registers + r), layout, token});
@@ -106,10 +113,13 @@ private:
         }
         const FxStruct* s = syntax_.findStruct(type);
         if (!s || depth > 8) return false;
-        // Each element of an array of structs repeats the members' semantics: as outputs, a clash.
+        // A semantic on the struct overrides its members' (signature_layout.h). Without one, each
+        // element of an array of structs repeats the members' semantics: as outputs, a clash.
+        SemanticCascade own = SemanticCascade::from(semantic);
+        SemanticCascade* c = cascade ? cascade : (own.active ? &own : nullptr);
         for (int k = 0; k < count; ++k)
             for (const auto& m : s->members)
-                if (!flatten(m.type, m.semantic, m.arrayDims, m.modifiers, token, out, depth + 1)) return false;
+                if (!flatten(m.type, m.semantic, m.arrayDims, m.modifiers, token, out, depth + 1, c)) return false;
         return true;
     }
 };

@@ -2,11 +2,14 @@
 
 #include "degenerate_matrices.h"
 
+#include <algorithm>
 #include <cctype>
+#include <map>
 #include <set>
 #include <sstream>
 
 #include "hlsl_types.h"
+#include "signature_layout.h"
 #include "text_util.h"
 
 namespace fxport::xlate {
@@ -31,63 +34,79 @@ std::string vectorType(const std::string& scalar, int n) {
 }
 
 struct Leaf {
-    std::string access;      // HLSL l-value/r-value, e.g. "a0.tbn[1]"
+    std::string access;      // HLSL l-value/r-value, e.g. "a0.tbn[1]"; a matrix column: the matrix
     std::string scalar;
     int components = 4;
     std::string semanticBase;
     int semanticIndex = 0;
     std::vector<std::string> interpolation;
+    int column = -1;         // >= 0: the leaf is this column of the matrix `access` (components rows)
 };
+
+bool isInterpolationModifier(const std::string& m) {
+    return m == "nointerpolation" || m == "linear" || m == "centroid" || m == "noperspective" || m == "sample";
+}
 
 class Flattener {
 public:
     explicit Flattener(const EffectSyntax& syntax) : syntax_(syntax) {}
     std::string error;
 
+    // Appends the leaves of `type access[dims] : semantic`; `modifiers` are the declaration's own
+    // (interpolation, row_major ...). Semantics follow signature_layout.h.
     bool flatten(const std::string& type, const std::string& access, const std::string& semantic,
-                 const std::vector<int>& dims, const std::vector<std::string>& interpolation, std::vector<Leaf>& out,
-                 int depth = 0) {
+                 const std::vector<int>& dims, const std::vector<std::string>& modifiers, std::vector<Leaf>& out,
+                 int depth = 0, SemanticCascade* cascade = nullptr) {
         if (depth > 8) {
             error = "structures nested too deeply at '" + access + "'";
             return false;
         }
+        std::vector<std::string> elements = arrayElementAccesses(access, dims);
+        if (elements.empty()) {
+            error = "array '" + access + "' is too large to be a shader input or output";
+            return false;
+        }
         if (const FxStruct* s = syntax_.findStruct(syntax_.resolveType(type))) {
-            if (!dims.empty()) {
-                error = "arrays of structures as shader inputs or outputs are not supported ('" + access + "')";
-                return false;
-            }
-            for (const auto& m : s->members)
-                if (!flatten(m.type, access + "." + m.name, m.semantic, m.arrayDims, m.modifiers, out, depth + 1)) return false;
+            SemanticCascade own = SemanticCascade::from(semantic);
+            SemanticCascade* c = cascade ? cascade : (own.active ? &own : nullptr);
+            for (const auto& e : elements)
+                for (const auto& m : s->members) {
+                    // A resource member is bound, not part of the signature; fxc refuses one with a semantic.
+                    if (isObjectMember(m) && m.semantic.empty()) continue;
+                    if (!flatten(m.type, e + "." + m.name, m.semantic, m.arrayDims, m.modifiers, out, depth + 1, c)) return false;
+                }
             return true;
         }
         BasicType b = describeBasicType(syntax_.resolveType(type));
         if (!b.ok) {
-            // A name no declaration gives (a fragment meant to follow a header the engine prepends):
-            // said so, rather than naming the wrapper's own variables.
-            static const char* const objectPrefixes[] = {"sampler", "Sampler", "texture", "Texture", "Buffer", "RW", "Structured",
-                                                         "ByteAddress", "InputPatch", "OutputPatch", "PointStream", "LineStream",
-                                                         "TriangleStream", "string"};
-            bool object = false;
-            for (const char* prefix : objectPrefixes) object |= type.rfind(prefix, 0) == 0;
-            error = object || syntax_.typedefs.count(type) ? "type '" + type + "' of '" + access + "' cannot be a shader input or output"
-                                                            : "type '" + type + "' is not declared: no struct or typedef of that name";
+            error = typeError(type, access);
             return false;
         }
-        if (semantic.empty()) {
+        if (semantic.empty() && !cascade) {
             error = "'" + access + "' has no semantic; every shader input and output needs one";
             return false;
         }
-        auto [base, index] = splitSemantic(semantic);
-        int count = dims.empty() ? 1 : dims[0];
-        int rows = b.isMatrix ? b.rows : 1;
-        for (int e = 0; e < count; ++e) {
-            for (int r = 0; r < rows; ++r) {
+        std::vector<std::string> interpolation;
+        for (const auto& m : modifiers)
+            if (isInterpolationModifier(m)) interpolation.push_back(m);
+        const int registers = signatureRegisters(b, modifiers);
+        const bool rowMajor = std::find(modifiers.begin(), modifiers.end(), "row_major") != modifiers.end();
+        // A one-row or one-column matrix parameter or result is a vector in the rewritten source
+        // (degenerate_matrices.h): its registers are its components, or the whole vector.
+        const bool asVector = depth == 0 && b.isMatrix && (b.rows == 1 || b.columns == 1);
+        const bool columns = b.isMatrix && !rowMajor && !asVector;
+        auto [base, index] = cascade ? cascade->take(registers * int(elements.size())) : splitSemantic(semantic);
+        for (size_t e = 0; e < elements.size(); ++e) {
+            for (int r = 0; r < registers; ++r) {
                 Leaf leaf;
-                leaf.access = access + (dims.empty() ? "" : "[" + std::to_string(e) + "]") + (b.isMatrix ? "[" + std::to_string(r) + "]" : "");
+                leaf.access = elements[e];
+                if (asVector && registers > 1) leaf.access += "[" + std::to_string(r) + "]";
+                else if (b.isMatrix && !asVector && !columns) leaf.access += "[" + std::to_string(r) + "]";
                 leaf.scalar = b.scalar;
-                leaf.components = b.columns;
+                leaf.components = signatureWidth(b, modifiers);
+                leaf.column = columns ? r : -1;
                 leaf.semanticBase = base;
-                leaf.semanticIndex = index + e * rows + r;
+                leaf.semanticIndex = index + int(e) * registers + r;
                 leaf.interpolation = interpolation;
                 out.push_back(leaf);
             }
@@ -97,7 +116,46 @@ public:
 
 private:
     const EffectSyntax& syntax_;
+
+    bool isObjectMember(const FxStructMember& m) const {
+        return !syntax_.findStruct(syntax_.resolveType(m.type)) && !describeBasicType(syntax_.resolveType(m.type)).ok && isObjectType(m.type);
+    }
+
+    static bool isObjectType(const std::string& type) {
+        static const char* const objectPrefixes[] = {"sampler", "Sampler", "texture", "Texture", "Buffer", "RW", "Structured",
+                                                     "ByteAddress", "InputPatch", "OutputPatch", "PointStream", "LineStream",
+                                                     "TriangleStream", "string"};
+        for (const char* prefix : objectPrefixes)
+            if (type.rfind(prefix, 0) == 0) return true;
+        return false;
+    }
+
+    std::string typeError(const std::string& type, const std::string& access) const {
+        // A name no declaration gives (a fragment meant to follow a header the engine prepends):
+        // said so, rather than naming the wrapper's own variables.
+        return isObjectType(type) || syntax_.typedefs.count(type) ? "type '" + type + "' of '" + access + "' cannot be a shader input or output"
+                                                                  : "type '" + type + "' is not declared: no struct or typedef of that name";
+    }
 };
+
+// The value of a leaf as an r-value: a matrix column is gathered from its rows.
+std::string leafValue(const Leaf& leaf) {
+    if (leaf.column < 0) return leaf.access;
+    std::string v = (leaf.scalar == "dword" ? std::string("uint") : leaf.scalar) + (leaf.components > 1 ? std::to_string(leaf.components) : "") + "(";
+    for (int r = 0; r < leaf.components; ++r)
+        v += (r ? ", " : "") + leaf.access + "[" + std::to_string(r) + "][" + std::to_string(leaf.column) + "]";
+    return v + ")";
+}
+
+// Statements storing `value` into a leaf: a matrix column is scattered to its rows.
+std::string assignLeaf(const Leaf& leaf, const std::string& value) {
+    if (leaf.column < 0) return "    " + leaf.access + " = " + value + ";\n";
+    static const char kSwizzle[] = "xyzw";
+    std::string out;
+    for (int r = 0; r < leaf.components && r < 4; ++r)
+        out += "    " + leaf.access + "[" + std::to_string(r) + "][" + std::to_string(leaf.column) + "] = (" + value + ")." + kSwizzle[r] + ";\n";
+    return out;
+}
 
 std::string widen(const std::string& expr, int n) {
     switch (n) {
@@ -194,15 +252,12 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
             continue;
         }
         std::string local = "a" + std::to_string(i);
-        locals.push_back(p.type + " " + local + dims + ";");
+        locals.push_back(degenerateAsVector(p.type) + " " + local + dims + ";");
         callArgs.push_back(local);
         bool isOut = has(p.modifiers, "out") || has(p.modifiers, "inout");
         bool isIn = !has(p.modifiers, "out");
-        std::vector<std::string> interp;
-        for (const auto& m : p.modifiers)
-            if (m == "nointerpolation" || m == "linear" || m == "centroid" || m == "noperspective" || m == "sample") interp.push_back(m);
-        if (isIn && !flat.flatten(p.type, local, p.semantic, p.arrayDims, interp, inputs)) break;
-        if (isOut && !flat.flatten(p.type, local, p.semantic, p.arrayDims, interp, outputs)) break;
+        if (isIn && !flat.flatten(p.type, local, p.semantic, p.arrayDims, p.modifiers, inputs)) break;
+        if (isOut && !flat.flatten(p.type, local, p.semantic, p.arrayDims, p.modifiers, outputs)) break;
     }
     if (!flat.error.empty()) {
         w.error = flat.error + " (in '" + entry.name + "')";
@@ -214,10 +269,10 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
         return w;
     }
     bool returns = entry.returnType != "void";
-    // A one-column matrix returned is a vector to glslang (degenerate_matrices.h) and one
-    // register to D3D (a column, in the default column-major packing).
+    // A one-row or one-column matrix returned is a vector to glslang (degenerate_matrices.h); its
+    // declared type and majority say which registers it takes.
     const std::string returnType = entryReturnType(syntax, entry);
-    if (returns && !flat.flatten(returnType, "r", entry.returnSemantic, {}, {}, outputs)) {
+    if (returns && !flat.flatten(entry.returnType, "r", entry.returnSemantic, {}, entryReturnModifiers(syntax, entry), outputs)) {
         w.error = flat.error + " (the return value of '" + entry.name + "')";
         return w;
     }
@@ -230,20 +285,27 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
     };
     bool fragCoordDeclared = false, frontFaceDeclared = false;
     int n = 0;
+    std::map<std::string, std::string> inputNames;  // semantic -> wrapper parameter
     for (const Leaf& leaf : inputs) {
         std::string sem = leaf.semanticBase + std::to_string(leaf.semanticIndex);
         std::string name = "i" + std::to_string(n++);
+        // Elements of an array of structs repeat their members' semantics (fxc reads one register
+        // for them all): the first input declared on a semantic feeds the others.
+        auto seen = inputNames.find(sem);
+        const bool repeat = seen != inputNames.end();
+        if (repeat) name = seen->second;
+        else inputNames[sem] = name;
         if (vertex) {
             if (leaf.semanticBase == "SV_VERTEXID" || leaf.semanticBase == "SV_INSTANCEID") {
-                addParam("uint " + name + " : " + leaf.semanticBase);
+                if (!repeat) addParam("uint " + name + " : " + leaf.semanticBase);
             } else if (leaf.semanticBase == "SV_POSITION" && profile.isD3D9()) {
                 // fxc reads an SV_Position vertex input as POSITION at SM2/3 (XNA's own stock
                 // shaders declare one); the vertex declaration's Position element feeds it.
-                addParam(vectorType(leaf.scalar, leaf.components) + " " + name + " : POSITION" + std::to_string(leaf.semanticIndex));
+                if (!repeat) addParam(vectorType(leaf.scalar, leaf.components) + " " + name + " : POSITION" + std::to_string(leaf.semanticIndex));
             } else {
-                addParam(vectorType(leaf.scalar, leaf.components) + " " + name + " : " + sem);
+                if (!repeat) addParam(vectorType(leaf.scalar, leaf.components) + " " + name + " : " + sem);
             }
-            fill << "    " << leaf.access << " = " << name << ";\n";
+            fill << assignLeaf(leaf, name);
             continue;
         }
         // Pixel shader inputs.
@@ -253,25 +315,25 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
             fragCoordDeclared = true;
             // D3D9 VPOS counts pixels from 0 at pixel centres; GL's gl_FragCoord has them at +0.5.
             std::string v = b == "VPOS" ? "(fxport_fragCoord - float4(0.5, 0.5, 0, 0))" : "fxport_fragCoord";
-            fill << "    " << leaf.access << " = " << narrow(v, leaf.components) << ";\n";
+            fill << assignLeaf(leaf, narrow(v, leaf.components));
         } else if (b == "VFACE" || b == "SV_ISFRONTFACE") {
             if (!frontFaceDeclared) addParam("bool fxport_frontFace : SV_IsFrontFace");
             frontFaceDeclared = true;
-            fill << "    " << leaf.access << " = " << (b == "VFACE" ? "(fxport_frontFace ? 1.0 : -1.0)" : "fxport_frontFace") << ";\n";
+            fill << assignLeaf(leaf, b == "VFACE" ? "(fxport_frontFace ? 1.0 : -1.0)" : "fxport_frontFace");
         } else if (b.rfind("SV_", 0) == 0) {
-            addParam(vectorType(leaf.scalar, leaf.components) + " " + name + " : " + b);
-            fill << "    " << leaf.access << " = " << name << ";\n";
+            if (!repeat) addParam(vectorType(leaf.scalar, leaf.components) + " " + name + " : " + b);
+            fill << assignLeaf(leaf, name);
         } else if (isIntegerScalar(leaf.scalar)) {
-            addParam("nointerpolation " + vectorType(leaf.scalar == "bool" ? "uint" : leaf.scalar, leaf.components) + " " + name + " : " + sem);
-            fill << "    " << leaf.access << " = " << name << ";\n";
+            if (!repeat) addParam("nointerpolation " + vectorType(leaf.scalar == "bool" ? "uint" : leaf.scalar, leaf.components) + " " + name + " : " + sem);
+            fill << assignLeaf(leaf, name);
         } else if (nextToGeometryShader) {
             const std::string interp = interpolationPrefix(leaf);
-            addParam(interp + vectorType(leaf.scalar, leaf.components) + " " + name + " : " + sem);
-            fill << "    " << leaf.access << " = " << name << ";\n";
+            if (!repeat) addParam(interp + vectorType(leaf.scalar, leaf.components) + " " + name + " : " + sem);
+            fill << assignLeaf(leaf, name);
         } else {
             const std::string interp = interpolationPrefix(leaf);
-            addParam(interp + "float4 " + name + " : " + sem);
-            fill << "    " << leaf.access << " = " << narrow(name, leaf.components) << ";\n";
+            if (!repeat) addParam(interp + "float4 " + name + " : " + sem);
+            fill << assignLeaf(leaf, narrow(name, leaf.components));
         }
     }
 
@@ -283,26 +345,26 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
         if (vertex) {
             if ((b == "POSITION" && leaf.semanticIndex == 0 && !nextToGeometryShader) || b == "SV_POSITION") {
                 outStruct << "    float4 " << name << " : SV_Position;\n";
-                copyOut << "    o." << name << " = " << widen(leaf.access, leaf.components) << ";\n";
+                copyOut << "    o." << name << " = " << widen(leafValue(leaf), leaf.components) << ";\n";
                 if (leaf.components < 4) copyOut << "    o." << name << ".w = 1;\n";
                 positionMember = name;
             } else if (b == "PSIZE" && !nextToGeometryShader) {
                 continue;  // point size: points are drawn with the device's size
             } else if (b.rfind("SV_", 0) == 0) {
                 outStruct << "    " << vectorType(leaf.scalar, leaf.components) << " " << name << " : " << b << leaf.semanticIndex << ";\n";
-                copyOut << "    o." << name << " = " << leaf.access << ";\n";
+                copyOut << "    o." << name << " = " << leafValue(leaf) << ";\n";
             } else if (nextToGeometryShader) {
                 const std::string interp = interpolationPrefix(leaf);
                 outStruct << "    " << interp << vectorType(leaf.scalar, leaf.components) << " " << name << " : " << b << leaf.semanticIndex << ";\n";
-                copyOut << "    o." << name << " = " << leaf.access << ";\n";
+                copyOut << "    o." << name << " = " << leafValue(leaf) << ";\n";
             } else if (isIntegerScalar(leaf.scalar)) {
                 outStruct << "    nointerpolation " << vectorType(leaf.scalar == "bool" ? "uint" : leaf.scalar, leaf.components) << " " << name
                           << " : " << b << leaf.semanticIndex << ";\n";
-                copyOut << "    o." << name << " = " << leaf.access << ";\n";
+                copyOut << "    o." << name << " = " << leafValue(leaf) << ";\n";
             } else {
                 const std::string interp = interpolationPrefix(leaf);
                 outStruct << "    " << interp << "float4 " << name << " : " << b << leaf.semanticIndex << ";\n";
-                std::string value = widen(leaf.access, leaf.components);
+                std::string value = widen(leafValue(leaf), leaf.components);
                 // vs_1_1..vs_2_x colour outputs are clamped to [0, 1] by D3D9 (oD0/oD1 registers).
                 if (b == "COLOR" && profile.major < 3) value = "saturate(" + value + ")";
                 copyOut << "    o." << name << " = " << value << ";\n";
@@ -312,17 +374,17 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
                 std::string target = "SV_Target" + std::to_string(leaf.semanticIndex);
                 if (isIntegerScalar(leaf.scalar)) {
                     outStruct << "    " << vectorType(leaf.scalar, leaf.components) << " " << name << " : " << target << ";\n";
-                    copyOut << "    o." << name << " = " << leaf.access << ";\n";
+                    copyOut << "    o." << name << " = " << leafValue(leaf) << ";\n";
                 } else {
                     outStruct << "    float4 " << name << " : " << target << ";\n";
-                    copyOut << "    o." << name << " = " << widenOutput(leaf.access, leaf.components) << ";\n";
+                    copyOut << "    o." << name << " = " << widenOutput(leafValue(leaf), leaf.components) << ";\n";
                 }
             } else if (b == "DEPTH" || b == "SV_DEPTH") {
                 outStruct << "    float " << name << " : SV_Depth;\n";
-                copyOut << "    o." << name << " = " << narrow("(float4)(" + leaf.access + ")", 1) << ";\n";
+                copyOut << "    o." << name << " = " << narrow("(float4)(" + leafValue(leaf) + ")", 1) << ";\n";
             } else if (b == "SV_COVERAGE") {
                 outStruct << "    uint " << name << " : SV_Coverage;\n";
-                copyOut << "    o." << name << " = " << leaf.access << ";\n";
+                copyOut << "    o." << name << " = " << leafValue(leaf) << ";\n";
             } else {
                 w.error = "pixel shader output '" + leaf.access + "' has semantic " + b + std::to_string(leaf.semanticIndex) +
                           ", which is not a render target (COLORn / SV_Targetn) or depth";

@@ -16,6 +16,7 @@
 #include "variable_declarations.h"
 #include "source_map.h"
 #include "text_util.h"
+#include "unsigned_types.h"
 
 namespace fxport::xlate {
 
@@ -119,7 +120,7 @@ bool isShaderObjectType(const std::string& s) {
 bool isTypeModifier(const std::string& s) {
     static const std::set<std::string> k = {"static", "const", "uniform", "extern", "shared", "volatile", "precise",
                                             "row_major", "column_major", "inline", "groupshared", "nointerpolation",
-                                            "linear", "centroid", "noperspective", "sample", "snorm", "unorm"};
+                                            "linear", "centroid", "noperspective", "sample", "snorm", "unorm", "export"};
     return k.count(toLower(s)) > 0 && s == toLower(s);
 }
 bool isParameterModifier(const std::string& s) {
@@ -134,6 +135,7 @@ public:
     Parser(const std::string& text, const SourceMap& map, bool looseShaders) : text_(text), map_(map) {
         syntax_.tokens = tokenize(text);
         syntax_.looseShaders = looseShaders;
+        if (auto refused = mergeUnsignedTypes(syntax_.tokens, syntax_.edits)) fail(diag::kSyntax, refused->second, refused->first);
     }
 
     EffectSyntax run() {
@@ -594,6 +596,8 @@ private:
         s.token = pos_;
         ++pos_;
         if (cur().isIdent()) s.name = syntax_.tokens[pos_++].text;
+        std::vector<FxStructMember> inherited;
+        if (cur().is(":") && !s.name.empty()) inherited = parseStructBase(s.name);  // `struct b : a {`
         if (!cur().is("{")) {  // `struct X var;` use as a type
             pos_ = s.token;
             return parseDeclaration();
@@ -627,9 +631,45 @@ private:
             expect(";", ("after member '" + m.name + "' of struct '" + s.name + "'").c_str());
             s.members.push_back(std::move(m));
         }
+        if (!inherited.empty()) inheritMembers(s, std::move(inherited), open);
         while (!isEnd() && !cur().is(";")) ++pos_;  // optional declarators
         accept(";");
         syntax_.structs.push_back(std::move(s));
+    }
+
+    // `struct b : a {`: fxc's single inheritance. The base must be one struct declared before;
+    // its members come first. Returns them; blanks ` : a`.
+    std::vector<FxStructMember> parseStructBase(const std::string& name) {
+        size_t colon = pos_++;
+        const FxStruct* base = cur().isIdent() ? syntax_.findStruct(cur().text) : nullptr;
+        if (!base)
+            fail(diag::kSyntax, "the base of struct '" + name + "' must be a struct declared before it; '" + cur().text + "' is not", pos_);
+        std::vector<FxStructMember> members = base->members;
+        ++pos_;
+        if (cur().is(","))
+            fail(diag::kSyntax, "struct '" + name + "' names more than one base struct; fxc takes one", pos_);
+        if (!cur().is("{")) fail(diag::kSyntax, "expected '{' after the base of struct '" + name + "', found '" + cur().text + "'", pos_);
+        blank(colon, pos_);
+        return members;
+    }
+
+    // The base's members are written out at the top of the derived struct (glslang has no
+    // inheritance). A base member the derived struct shadows keeps its place in the layout under a
+    // name no source can spell.
+    void inheritMembers(FxStruct& s, std::vector<FxStructMember> inherited, size_t open) {
+        std::string text;
+        for (auto& m : inherited) {
+            for (const auto& own : s.members)
+                if (own.name == m.name) m.name += "_fxport_base";
+            for (const auto& mod : m.modifiers) text += mod + " ";
+            text += " " + m.type + " " + m.name;
+            for (int d : m.arrayDims) text += "[" + std::to_string(d) + "]";
+            if (!m.semantic.empty()) text += " : " + m.semantic;
+            text += ";";
+        }
+        syntax_.edits.push_back({tok(open).end, tok(open).end, " " + text});
+        inherited.insert(inherited.end(), s.members.begin(), s.members.end());
+        s.members = std::move(inherited);
     }
 
     void parseCbuffer() {
@@ -730,6 +770,7 @@ private:
         std::vector<size_t> sharedTokens;
         while (cur().isIdent() && isTypeModifier(cur().text)) {
             if (cur().text == "shared") sharedTokens.push_back(pos_);
+            if (cur().text == "export") blank(pos_, pos_ + 1);  // a library function's linkage: nothing to a whole shader
             modifiers.push_back(syntax_.tokens[pos_++].text);
         }
         if (cur().is("struct") && peek().isIdent()) {  // `uniform struct apple a;` (C's spelling): the type is apple
@@ -769,8 +810,10 @@ private:
         f.attributes = std::move(pendingAttributes_);
         pendingAttributes_.clear();
         size_t close = skipGroup(pos_, ("parameter list of '" + name + "'").c_str());
+        // `float2 f(void)`: C's spelling of no parameters, which fxc takes; glslang does not.
+        if (close == pos_ + 3 && tok(pos_ + 1).is("void")) blank(pos_ + 1, pos_ + 2);
         // Parameters: split at depth-0 commas.
-        size_t i = pos_ + 1;
+        size_t i = close == pos_ + 3 && tok(pos_ + 1).is("void") ? close : pos_ + 1;
         while (i < close - 1) {
             size_t j = i;
             int depth = 0;

@@ -1,5 +1,7 @@
 #include "fx_rewrite.h"
 
+#include "geometry_output_stream.h"
+
 #include "initializer_lists.h"
 #include "fxc_intrinsics.h"
 #include "matrix_majority.h"
@@ -168,6 +170,7 @@ std::string RewrittenEffect::hlslForGeometryShader(const std::string& entry, con
     }
     std::vector<TextEdit> all = edits;
     all.insert(all.end(), extra.begin(), extra.end());
+    for (auto& e : geometryEntryOutputStreams(*syntax, entry)) all.push_back(std::move(e));
     for (const auto& f : syntax->functions) {
         if (!f.hasStreamParameter || keep.count(f.name) || f.declaration.empty()) continue;
         const Token& first = syntax->tokens[f.declaration.begin];

@@ -16,6 +16,8 @@ using Family = std::vector<std::pair<size_t, Diagnostic>> (*)(const EffectSyntax
 constexpr Family kFamilies[] = {
     findRegisterReservationErrors,
     findGeometryEntryErrors,
+    findGeometryInputErrors,
+    findLocalDeclarationErrors,
     findImplicitSizeArrayErrors,
     findEntrySemanticErrors,
     findMajorityModifierErrors,

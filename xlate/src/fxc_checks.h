@@ -52,6 +52,8 @@ private:
 // The families (one file each).
 std::vector<std::pair<size_t, Diagnostic>> findRegisterReservationErrors(const EffectSyntax& syntax, const SourceMap& map);
 std::vector<std::pair<size_t, Diagnostic>> findGeometryEntryErrors(const EffectSyntax& syntax, const SourceMap& map);
+std::vector<std::pair<size_t, Diagnostic>> findGeometryInputErrors(const EffectSyntax& syntax, const SourceMap& map);  // geometry_input_rules.cpp
+std::vector<std::pair<size_t, Diagnostic>> findLocalDeclarationErrors(const EffectSyntax& syntax, const SourceMap& map);  // local_declaration_rules.cpp
 std::vector<std::pair<size_t, Diagnostic>> findImplicitSizeArrayErrors(const EffectSyntax& syntax, const SourceMap& map);
 std::vector<std::pair<size_t, Diagnostic>> findEntrySemanticErrors(const EffectSyntax& syntax, const SourceMap& map);
 std::vector<std::pair<size_t, Diagnostic>> findMajorityModifierErrors(const EffectSyntax& syntax, const SourceMap& map);

@@ -189,6 +189,9 @@ private:
         bool isSwizzle = components.size() <= 4 &&
                          (components.find_first_not_of(xyzw) == std::string::npos || components.find_first_not_of(rgba) == std::string::npos);
         if (!isSwizzle) return;
+        for (const auto& st : syntax_.structs)  // a member spelled like a swizzle: `data.aa = ...`
+            for (const auto& m : st.members)
+                if (m.name == components) return;
         for (size_t k = 0; k < components.size(); ++k)
             if (components.find(components[k], k + 1) != std::string::npos) {
                 report("an assigned swizzle names component '" + std::string(1, components[k]) + "' twice (fxc X3018)", dot + 1);
@@ -202,6 +205,7 @@ private:
             if (!t_[i].is("const") || (i > f.body.begin && !(t_[i - 1].is(";") || t_[i - 1].is("{") || t_[i - 1].is("}")))) continue;
             size_t k = i + 1;
             while (k < f.body.end && t_[k].isIdent() && isModifier(t_[k].text)) ++k;
+            if (t_[k].is("struct")) ++k;  // `const struct s a;`
             if (k + 2 < f.body.end && t_[k].isIdent() && t_[k + 1].isIdent() && t_[k + 2].is(";"))
                 report("const variable '" + t_[k + 1].text + "' has no initial value (fxc X3012)", k + 1);
         }

@@ -1,0 +1,132 @@
+// Entry signatures as fxc lays them out (xlate/src/signature_layout.h): a semantic on a struct
+// cascades over its members with consecutive indices, arrays of structs take indices element after
+// element, a matrix takes one semantic per column unless row_major, one-row and one-column matrix
+// results map onto their registers, and an unused resource member of an input struct is no input.
+// vkd3d's semantic-cascading, entry-point-semantics and matrix-semantics files check the values
+// on the GPU; these tests pin the layout so a change to it fails here first.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "fxport/xlate/effect_compiler.h"
+
+using namespace fxport::xlate;
+
+namespace {
+
+CompiledEffect compile(const std::string& source) {
+    CompileOptions o;
+    o.useCache = false;
+    return compileEffectSource(source, "virtual/EntrySignature.fx", o);
+}
+
+const CompiledShader& vertexShader(const CompiledEffect& e) {
+    return e.shaders[size_t(e.techniques[0].passes[0].vertexShader.shaders[0])];
+}
+
+const CompiledShader& pixelShader(const CompiledEffect& e) {
+    return e.shaders[size_t(e.techniques[0].passes[0].pixelShader.shaders[0])];
+}
+
+std::vector<std::string> inputSemantics(const CompiledShader& vs) {
+    std::vector<std::string> out;
+    for (const auto& in : vs.inputs) out.push_back(in.semantic + "/" + std::to_string(in.components));
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+bool hasLine(const std::string& glsl, const std::string& pattern) { return std::regex_search(glsl, std::regex(pattern)); }
+
+const char* const kPassthroughPs = "float4 PS(float4 c : TEXCOORD0) : COLOR0 { return c; }\n";
+
+std::string technique(const char* vs, const char* ps) {
+    return std::string("technique T { pass P { VertexShader = compile vs_4_0 ") + vs + "(); PixelShader = compile ps_4_0 " + ps + "(); } }\n";
+}
+
+}  // namespace
+
+TEST(EntrySignature, StructSemanticCascadesOverMembers) {
+    CompiledEffect e = compile(std::string(R"(
+struct apple { float aa; float bb[2] : INPLACE; float2 cc; };
+struct banana { float dd; apple ap : IGNORED; };
+float4 VS(float4 p : POSITION, banana ba : TEXCOORD3, out float4 c : TEXCOORD0) : SV_Position {
+    c = float4(ba.dd, ba.ap.aa, ba.ap.bb[0] + ba.ap.bb[1], ba.ap.cc.y);
+    return p;
+}
+)") + kPassthroughPs + technique("VS", "PS"));
+    // dd TEXCOORD3, ap.aa 4, ap.bb[0..1] 5-6 (INPLACE and IGNORED overridden), ap.cc 7.
+    EXPECT_EQ(inputSemantics(vertexShader(e)), (std::vector<std::string>{"POSITION0/4", "TEXCOORD3/1", "TEXCOORD4/1", "TEXCOORD5/1",
+                                                                       "TEXCOORD6/1", "TEXCOORD7/2"}));
+}
+
+TEST(EntrySignature, ArrayOfStructsCascadesElementAfterElement) {
+    CompiledEffect e = compile(std::string(R"(
+struct apple { float aa; float2 bb; };
+float4 VS(float4 p : POSITION, apple ap[2] : TEXCOORD1, out float4 c : TEXCOORD0) : SV_Position {
+    c = float4(ap[0].aa + ap[0].bb.x, ap[1].bb, ap[1].aa);
+    return p;
+}
+)") + kPassthroughPs + technique("VS", "PS"));
+    EXPECT_EQ(inputSemantics(vertexShader(e)),
+              (std::vector<std::string>{"POSITION0/4", "TEXCOORD1/1", "TEXCOORD2/2", "TEXCOORD3/1", "TEXCOORD4/2"}));
+}
+
+TEST(EntrySignature, ArrayOfStructsWithoutCascadeSharesMemberSemantics) {
+    // fxc gives every element's member the member's own semantic: one input feeds them all.
+    CompiledEffect e = compile(std::string(R"(
+struct apple { float4 t0 : TEXCOORD0; float4 t1 : TEXCOORD1; };
+float4 VS(float4 p : POSITION, apple aps[2][2], out float4 c : TEXCOORD0) : SV_Position {
+    c = aps[0][0].t0 + aps[1][1].t1;
+    return p;
+}
+)") + kPassthroughPs + technique("VS", "PS"));
+    EXPECT_EQ(inputSemantics(vertexShader(e)), (std::vector<std::string>{"POSITION0/4", "TEXCOORD0/4", "TEXCOORD1/4"}));
+}
+
+TEST(EntrySignature, MatrixInputTakesOneSemanticPerColumnUnlessRowMajor) {
+    CompiledEffect e = compile(std::string(R"(
+float4 VS(float4 p : POSITION, float4x2 m : TEXCOORD0, row_major float3x2 r : TEXCOORD4, out float4 c : TEXCOORD0) : SV_Position {
+    c = float4(m[3], r[0] + r[1] + r[2]);
+    return p;
+}
+)") + kPassthroughPs + technique("VS", "PS"));
+    // Columns of the 4x2: two 4-wide registers; rows of the row_major 3x2: three 2-wide ones.
+    EXPECT_EQ(inputSemantics(vertexShader(e)), (std::vector<std::string>{"POSITION0/4", "TEXCOORD0/4", "TEXCOORD1/4", "TEXCOORD4/2",
+                                                                       "TEXCOORD5/2", "TEXCOORD6/2"}));
+}
+
+TEST(EntrySignature, OneColumnAndOneRowResultsTakeTheirRegisters) {
+    const char* vs = "float4 VS(float4 p : POSITION) : SV_Position { return p; }\n";
+    // Column-major float4x1: one column, one target. row_major float4x1 and column-major
+    // float1x4: four one-component registers, four targets.
+    CompiledEffect column = compile(std::string(vs) + "float4x1 PS() : SV_Target { return float4(1, 2, 3, 4); }\n" + technique("VS", "PS"));
+    EXPECT_EQ(pixelShader(column).outputTargets, 1);
+    CompiledEffect rows =
+        compile(std::string(vs) + "row_major float4x1 PS() : SV_Target { return float4(1, 2, 3, 4); }\n" + technique("VS", "PS"));
+    EXPECT_EQ(pixelShader(rows).outputTargets, 4);
+    CompiledEffect wide = compile(std::string(vs) + "float1x4 PS() : SV_Target { return float4(1, 2, 3, 4); }\n" + technique("VS", "PS"));
+    EXPECT_EQ(pixelShader(wide).outputTargets, 4);
+    CompiledEffect wideRow =
+        compile(std::string(vs) + "row_major float1x4 PS() : SV_Target { return float4(1, 2, 3, 4); }\n" + technique("VS", "PS"));
+    EXPECT_EQ(pixelShader(wideRow).outputTargets, 1);
+    EXPECT_TRUE(hasLine(pixelShader(wideRow).glsl, R"(layout\(location = 0\) out vec4)")) << pixelShader(wideRow).glsl;
+}
+
+TEST(EntrySignature, UnusedResourceMemberOfAnInputStructIsNoInput) {
+    CompiledEffect e = compile(std::string(R"(
+struct apple { Texture2D unused; float4 c : TEXCOORD2; };
+float4 VS(float4 p : POSITION, apple a, out float4 c : TEXCOORD0) : SV_Position { c = a.c; return p; }
+)") + kPassthroughPs + technique("VS", "PS"));
+    EXPECT_EQ(inputSemantics(vertexShader(e)), (std::vector<std::string>{"POSITION0/4", "TEXCOORD2/4"}));
+}
+
+TEST(EntrySignature, ResourceMemberWithASemanticIsRefused) {
+    EXPECT_THROW(compile(std::string(R"(
+struct apple { Texture2D t : TEXTURE; float4 c : TEXCOORD2; };
+float4 VS(float4 p : POSITION, apple a, out float4 c : TEXCOORD0) : SV_Position { c = a.c; return p; }
+)") + kPassthroughPs + technique("VS", "PS")),
+                 CompileError);
+}

@@ -1,0 +1,31 @@
+// fxc's rule for a variable declared in a function body that glslang does not check (vkd3d's
+// invalid file): a local is never `uniform` (a uniform is a global or an entry parameter).
+#include "fxc_checks.h"
+
+namespace fxport::xlate {
+
+namespace {
+
+class LocalDeclarationRules : public FxcCheck {
+public:
+    using FxcCheck::FxcCheck;
+
+    void run() {
+        for (const auto& f : syntax_.functions)
+            for (size_t i = f.body.begin; i + 2 < f.body.end; ++i) {
+                bool statementStart = i == f.body.begin || t_[i - 1].is(";") || t_[i - 1].is("{") || t_[i - 1].is("}");
+                if (statementStart && t_[i].is("uniform") && t_[i + 1].isIdent())
+                    report("local variable in '" + f.name + "' declared uniform: uniforms are globals or entry parameters", i);
+            }
+    }
+};
+
+}  // namespace
+
+std::vector<std::pair<size_t, Diagnostic>> findLocalDeclarationErrors(const EffectSyntax& syntax, const SourceMap& map) {
+    LocalDeclarationRules check(syntax, map);
+    check.run();
+    return check.takeFound();
+}
+
+}  // namespace fxport::xlate
