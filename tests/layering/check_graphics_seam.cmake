@@ -17,7 +17,7 @@ set(glCallsLeft  # rule 1: the GPU probe, which measures the GL implementation i
 set(deviceImplLeft  # rule 2: files outside device/ that still reach into the device's private state
   ${src}/diagnostics/fragment_tally.cpp ${src}/diagnostics/gpu_limits.cpp ${src}/diagnostics/gpu_timer.cpp
   ${src}/effect/effect_impl.h ${src}/effect/pass_states.cpp ${src}/gl/passes/compute_pass.cpp
-  ${src}/gl/passes/depth_storage.cpp ${src}/gl/passes/pending_clear.cpp ${src}/gl/passes/texel_copies.cpp)
+  ${src}/gl/passes/texel_copies.cpp)
 set(effectImplLeft  # rule 2: files outside effect/ that still read an Effect's private state
   ${src}/device/draw_state.cpp ${src}/device/graphics_device.cpp ${src}/device/texture.cpp)
 set(glHeadersLeft  # rule 2: files outside gl/ that still include a GL backend header (the compute passes'; GL formats)
