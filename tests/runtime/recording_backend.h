@@ -1,8 +1,13 @@
 // A Backend (runtime/graphics/src/device/backend.h) that does nothing but write down each call, one
-// line each ("setBlend whole", "bindTexture 3 7"), for tests of the device core's semantics with no
-// GL context (in the manner of bgfx's renderer_noop.cpp).
+// line each ("setBlend whole", "bindTexture 3 7", "createBuffer -> 104"), for tests of the device
+// core's semantics with no GL context (in the manner of bgfx's renderer_noop.cpp). It keeps the
+// objects it made, so a test can check that the core deletes each one exactly once.
 #pragma once
 
+#include <algorithm>
+#include <map>
+#include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -20,8 +25,7 @@ public:
     Viewport viewport;
     Rectangle scissor;
     BlendState hadBlend;  // what the last "changed" setBlend said the backend had
-    BackendObject nextSampler = 1;
-    BackendObject nextObject = 100;  // pipelines and vertex arrays
+    BackendObject nextObject = 100;  // every object made: samplers, buffers, textures, programs ...
 
     void setBlend(const BlendState& state, const BlendState* had) override {
         note("setBlend", had);
@@ -45,11 +49,8 @@ public:
         scissor = r;
     }
     void setSrgbWrite(bool enabled) override { calls.push_back(std::string("setSrgbWrite ") + (enabled ? "on" : "off")); }
-    BackendObject createSampler(const SamplerState&) override {
-        calls.push_back("createSampler " + std::to_string(nextSampler));
-        return nextSampler++;
-    }
-    void deleteSampler(BackendObject sampler) override { calls.push_back("deleteSampler " + std::to_string(sampler)); }
+    BackendObject createSampler(const SamplerState&) override { return make("createSampler"); }
+    void deleteSampler(BackendObject sampler) override { release("deleteSampler", sampler); }
     void bindTexture(int unit, BackendObject texture) override {
         calls.push_back("bindTexture " + std::to_string(unit) + " " + std::to_string(texture));
     }
@@ -72,17 +73,189 @@ public:
     void setUniform(BackendObject, int location, float value) override {
         calls.push_back("setUniform " + std::to_string(location) + " " + std::to_string(value));
     }
-    BackendObject createPipeline(const std::array<BackendObject, 5>&) override {
-        calls.push_back("createPipeline " + std::to_string(nextObject));
-        return nextObject++;
+    BackendObject createPipeline(const std::array<BackendObject, 5>& programs) override {
+        std::string line = "createPipeline";
+        for (BackendObject p : programs) line += " " + std::to_string(p);
+        return make(line);
     }
     void bindPipeline(BackendObject pipeline) override { calls.push_back("bindPipeline " + std::to_string(pipeline)); }
-    BackendObject createVertexArray(const std::vector<VertexAttribute>& attributes) override {
-        calls.push_back("createVertexArray " + std::to_string(attributes.size()) + " attributes");
-        return nextObject++;
+    BackendObject createVertexArray(const std::vector<VertexAttribute>& attributes, const std::vector<int>& divisors) override {
+        std::string line = "createVertexArray " + std::to_string(attributes.size()) + " attributes";
+        for (const VertexAttribute& a : attributes)
+            line += " " + std::to_string(a.location) + "@" + std::to_string(a.binding) + "+" + std::to_string(a.offset);
+        if (!divisors.empty()) {
+            line += " divisors";
+            for (int d : divisors) line += " " + std::to_string(d);
+        }
+        return make(line);
     }
+    void deleteVertexArray(BackendObject vertexArray) override { release("deleteVertexArray", vertexArray); }
     void bindVertexArray(BackendObject vertexArray) override {
         calls.push_back("bindVertexArray " + std::to_string(vertexArray));
+    }
+    void setVertexBuffer(BackendObject vertexArray, int binding, BackendObject buffer, std::size_t offset, int stride) override {
+        calls.push_back("setVertexBuffer " + std::to_string(vertexArray) + " " + std::to_string(binding) + " " +
+                        std::to_string(buffer) + " +" + std::to_string(offset) + " stride " + std::to_string(stride));
+    }
+    void setIndexBuffer(BackendObject vertexArray, BackendObject buffer) override {
+        calls.push_back("setIndexBuffer " + std::to_string(vertexArray) + " " + std::to_string(buffer));
+    }
+
+    void adoptD3DConventions() override { calls.push_back("adoptD3DConventions"); }
+    int maxTextureSize() override { return 16384; }
+    void finish() override { calls.push_back("finish"); }
+
+    BackendObject createBuffer() override { return make("createBuffer"); }
+    void deleteBuffer(BackendObject buffer) override { release("deleteBuffer", buffer); }
+    void allocateBuffer(BackendObject buffer, std::size_t bytes, const void* initial, bool streaming) override {
+        calls.push_back("allocateBuffer " + std::to_string(buffer) + " " + std::to_string(bytes) + (initial ? " filled" : "") +
+                        (streaming ? " streaming" : ""));
+    }
+    void orphanBuffer(BackendObject buffer, std::size_t bytes) override {
+        calls.push_back("orphanBuffer " + std::to_string(buffer) + " " + std::to_string(bytes));
+    }
+    void readBuffer(BackendObject buffer, std::size_t offset, std::size_t bytes, void*) override {
+        calls.push_back("readBuffer " + std::to_string(buffer) + " " + std::to_string(offset) + " " + std::to_string(bytes));
+    }
+    void copyBuffer(BackendObject source, BackendObject destination, std::size_t sourceOffset, std::size_t destinationOffset,
+                    std::size_t bytes) override {
+        calls.push_back("copyBuffer " + std::to_string(source) + "+" + std::to_string(sourceOffset) + " -> " +
+                        std::to_string(destination) + "+" + std::to_string(destinationOffset) + " " + std::to_string(bytes));
+    }
+
+    bool isColorRenderable(SurfaceFormat format) override { return format != SurfaceFormat::Depth32; }
+    const char* imageFormatName(SurfaceFormat format) override {
+        return format == SurfaceFormat::Color ? "rgba8" : format == SurfaceFormat::Single ? "r32f" : "";
+    }
+    BackendObject createTexture(bool cube, SurfaceFormat, int levels, int width, int height) override {
+        const BackendObject t = make(std::string("createTexture ") + (cube ? "cube " : "2d ") + std::to_string(width) + "x" +
+                                     std::to_string(height) + " levels " + std::to_string(levels));
+        textureSizes[t] = {width, height};
+        return t;
+    }
+    void deleteTexture(BackendObject texture) override { release("deleteTexture", texture); }
+    void writeTexture(BackendObject texture, SurfaceFormat, int face, int level, const Rectangle& a, const void*) override {
+        calls.push_back("writeTexture " + std::to_string(texture) + " face " + std::to_string(face) + " level " + std::to_string(level) +
+                        " " + std::to_string(a.Width) + "x" + std::to_string(a.Height));
+    }
+    void readTexture(BackendObject texture, SurfaceFormat, int face, int level, std::size_t bytes, void*) override {
+        calls.push_back("readTexture " + std::to_string(texture) + " face " + std::to_string(face) + " level " + std::to_string(level) +
+                        " " + std::to_string(bytes));
+    }
+    void readTextureFloats(BackendObject texture, int face, int level, std::size_t bytes, void*) override {
+        calls.push_back("readTextureFloats " + std::to_string(texture) + " face " + std::to_string(face) + " level " +
+                        std::to_string(level) + " " + std::to_string(bytes));
+    }
+    Rectangle textureLevelSize(BackendObject texture, int level) override {
+        const auto size = textureSizes.at(texture);
+        return Rectangle(0, 0, std::max(1, size.first >> level), std::max(1, size.second >> level));
+    }
+    void clearTexture(BackendObject texture, int level, const float (&rgba)[4]) override {
+        calls.push_back("clearTexture " + std::to_string(texture) + " level " + std::to_string(level) + " " + std::to_string(rgba[0]));
+    }
+    void generateMipmaps(BackendObject texture) override { calls.push_back("generateMipmaps " + std::to_string(texture)); }
+    void copyTexture(const TextureCopy& c) override {
+        calls.push_back("copyTexture " + std::to_string(c.source) + " level " + std::to_string(c.sourceLevel) + " (" +
+                        std::to_string(c.sourceX) + "," + std::to_string(c.sourceY) + ") -> " + std::to_string(c.destination) +
+                        " level " + std::to_string(c.destinationLevel) + " (" + std::to_string(c.destinationX) + "," +
+                        std::to_string(c.destinationY) + ") " + std::to_string(c.width) + "x" + std::to_string(c.height) +
+                        (c.cube ? " cube" : ""));
+    }
+
+    BackendObject createRenderbuffer() override { return make("createRenderbuffer"); }
+    void deleteRenderbuffer(BackendObject renderbuffer) override { release("deleteRenderbuffer", renderbuffer); }
+    void allocateRenderbuffer(BackendObject renderbuffer, DepthFormat, int width, int height) override {
+        calls.push_back("allocateRenderbuffer " + std::to_string(renderbuffer) + " " + std::to_string(width) + "x" + std::to_string(height));
+    }
+    BackendObject createFramebuffer(const std::vector<ColorAttachment>& colour, BackendObject depth, bool,
+                                    std::string& problem) override {
+        std::string line = "createFramebuffer";
+        for (const ColorAttachment& a : colour)
+            line += " " + std::to_string(a.texture) + (a.face >= 0 ? "/" + std::to_string(a.face) : "");
+        line += " depth " + std::to_string(depth);
+        if (rejectFramebuffers) {
+            calls.push_back(line + " rejected");
+            problem = "the recording backend rejects it";
+            return 0;
+        }
+        return make(line);
+    }
+    void deleteFramebuffer(BackendObject framebuffer) override { release("deleteFramebuffer", framebuffer); }
+    void bindFramebuffer(BackendObject framebuffer) override { calls.push_back("bindFramebuffer " + std::to_string(framebuffer)); }
+    void presentFlipped(BackendObject framebuffer, int, int) override { calls.push_back("presentFlipped " + std::to_string(framebuffer)); }
+    void clearDepthStencil(BackendObject renderbuffer, bool, bool depth, bool stencil, float depthValue, int stencilValue) override {
+        calls.push_back("clearDepthStencil " + std::to_string(renderbuffer) + (depth ? " depth " + std::to_string(depthValue) : "") +
+                        (stencil ? " stencil " + std::to_string(stencilValue) : ""));
+    }
+    void clearFramebuffer(BackendObject framebuffer, const Rectangle& area, int colourTargets, bool colour, const Vector4&,
+                          bool depth, bool stencil, float, int) override {
+        calls.push_back("clearFramebuffer " + std::to_string(framebuffer) + " " + std::to_string(area.Width) + "x" +
+                        std::to_string(area.Height) + (colour ? " colour " + std::to_string(colourTargets) : "") + (depth ? " depth" : "") +
+                        (stencil ? " stencil" : ""));
+    }
+    void invalidateFramebuffer(int colourTargets, bool depth, bool stencil) override {
+        calls.push_back("invalidateFramebuffer colour " + std::to_string(colourTargets) + (depth ? " depth" : "") + (stencil ? " stencil" : ""));
+    }
+
+    // A source holding `reject` fails to build (the log says so).
+    BackendObject createProgram(int stage, const std::string& source, std::string& log) override {
+        if (source.find("reject") != std::string::npos) {
+            calls.push_back("createProgram stage " + std::to_string(stage) + " rejected");
+            log = "0:1: the recording backend rejects this source";
+            return 0;
+        }
+        return make("createProgram stage " + std::to_string(stage));
+    }
+    void deleteProgram(BackendObject program) override { release("deleteProgram", program); }
+    BackendObject createComputePipeline(BackendObject program) override {
+        return make("createComputePipeline " + std::to_string(program));
+    }
+    void deletePipeline(BackendObject pipeline) override { release("deletePipeline", pipeline); }
+
+    void bindStorageBuffer(int binding, BackendObject buffer) override {
+        calls.push_back("bindStorageBuffer " + std::to_string(binding) + " " + std::to_string(buffer));
+    }
+    void bindStorageImage(int unit, BackendObject texture, SurfaceFormat, bool writes) override {
+        calls.push_back("bindStorageImage " + std::to_string(unit) + " " + std::to_string(texture) + (writes ? " writes" : " reads"));
+    }
+    void storageBarrier() override { calls.push_back("storageBarrier"); }
+
+    void draw(const DrawCall& c) override {
+        std::string line = "draw " + std::to_string(int(c.type)) + " count " + std::to_string(c.count) + " first " + std::to_string(c.first);
+        if (c.indexed) line += " indexed " + std::to_string(c.indexSize) + " base " + std::to_string(c.baseVertex);
+        if (c.instanced) line += " instances " + std::to_string(c.instances) + " from " + std::to_string(c.firstInstance);
+        if (c.controlPoints > 0) line += " patches of " + std::to_string(c.controlPoints);
+        calls.push_back(line);
+    }
+    void dispatch(int x, int y, int z) override {
+        calls.push_back("dispatch " + std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z));
+    }
+
+    BackendObject createQuery(QueryKind) override { return make("createQuery"); }
+    void deleteQuery(BackendObject query) override { release("deleteQuery", query); }
+    void beginSamplesPassed(BackendObject query) override { calls.push_back("beginSamplesPassed " + std::to_string(query)); }
+    void endSamplesPassed() override { calls.push_back("endSamplesPassed"); }
+    void writeTimestamp(BackendObject query) override { calls.push_back("writeTimestamp " + std::to_string(query)); }
+    bool queryReady(BackendObject) override { return true; }
+    std::uint64_t queryResult(BackendObject) override { return 0; }
+
+    // The objects made and not deleted; deletions of objects this backend never made (or deleted
+    // twice), which a correct core never sends. Shared, so a test can read them after the device
+    // (which owns its backend) is gone.
+    struct Objects {
+        std::set<BackendObject> live;
+        std::vector<std::string> badDeletes;
+    };
+    std::shared_ptr<Objects> objects = std::make_shared<Objects>();
+    bool rejectFramebuffers = false;
+    std::map<BackendObject, std::pair<int, int>> textureSizes;
+
+    // The calls starting with `prefix`, in order.
+    std::vector<std::string> matching(const std::string& prefix) const {
+        std::vector<std::string> found;
+        for (const std::string& c : calls)
+            if (c.rfind(prefix, 0) == 0) found.push_back(c);
+        return found;
     }
 
     // The calls so far, and forgets them.
@@ -93,6 +266,16 @@ public:
     }
 
 private:
+    BackendObject make(const std::string& line) {
+        const BackendObject object = nextObject++;
+        calls.push_back(line + " -> " + std::to_string(object));
+        objects->live.insert(object);
+        return object;
+    }
+    void release(const char* what, BackendObject object) {
+        calls.push_back(std::string(what) + " " + std::to_string(object));
+        if (objects->live.erase(object) == 0) objects->badDeletes.push_back(std::string(what) + " " + std::to_string(object));
+    }
     // "whole": every field to be set (the shadow did not know); "changed": only what differs from `had`.
     template <typename State>
     void note(const char* what, const State* had) {

@@ -4,38 +4,101 @@
 // backend is gl/gl_backend.cpp; tests use a recording one (tests/runtime/recording_backend.h) and
 // need no GL context.
 //
-// The seam is being widened one concern at a time (issue 22 item 1): today it carries what a draw
-// sets up (device/draw_state.cpp: fixed-function state, sampler objects, texture, sampler and
-// uniform-buffer bindings, program pipelines, vertex arrays) and the effects' constant writes; the
-// rest of the core still calls GL itself (tests/layering lists those files).
+// The seam carries what a draw sets up (fixed-function state, sampler objects, texture, sampler,
+// uniform- and storage-buffer bindings, program pipelines, vertex arrays), the objects the core
+// makes (buffers, textures, programs, framebuffers, queries), the draws and dispatches themselves,
+// and the transfers (buffer and texel reads, writes and copies, clears of a texture or a depth
+// buffer). The optimisation passes (gl/passes/) and the measurements (diagnostics/) that still call
+// GL themselves are listed by tests/layering/check_graphics_seam.cmake.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <array>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "fxport/graphics/blend_state.h"
 #include "fxport/graphics/depth_stencil_state.h"
+#include "fxport/graphics/graphics_device.h"  // PrimitiveType
 #include "fxport/graphics/rasterizer_state.h"
 #include "fxport/graphics/sampler_state.h"
+#include "fxport/graphics/surface_format.h"
 #include "fxport/graphics/vertex_declaration.h"
 #include "fxport/graphics/viewport.h"
 #include "fxport/math/rectangle.h"
+#include "fxport/math/vector4.h"
 
 namespace fxport {
 
 // A backend object (a GL name today): 0 is "none".
 using BackendObject = std::uint32_t;
 
-// One vertex-shader input fed from the bound vertex buffer (binding 0) at `offset` bytes.
+// Uniform-buffer binding points per stage: D3D has separate constant slots per stage, so the same
+// HLSL binding (b0 = $Global, b1 = fxport's internal block, b2.. user cbuffers) gets a range per
+// stage. A pixel shader's $Global (its own effect's) never collides with the vertex shader's
+// (SpriteBatch's, say). A backend's createProgram moves each block of a program there.
+inline constexpr int kUniformBindingsPerStage = 8;
+inline constexpr int kStageCount = 5;  // vertex, pixel, geometry, hull, domain (the draw pipeline)
+inline constexpr int kHullStage = 3, kDomainStage = 4;
+inline constexpr int kComputeStage = 5;  // dispatched alone; its own uniform-binding range
+inline constexpr int kUniformStages = kStageCount + 1;
+inline constexpr int kInternalBlockBinding = 1;
+inline int uniformBindingFor(int stage, int hlslBinding) { return stage * kUniformBindingsPerStage + hlslBinding; }
+
+// One vertex-shader input fed from vertex-buffer binding `binding` at `offset` bytes.
 struct VertexAttribute {
     int location = 0;
     VertexElementFormat format = VertexElementFormat::Vector4;
     int offset = 0;
     bool integer = false;  // the shader reads it as integers (no conversion to float)
+    int binding = 0;
 };
+
+// One draw's parameters, as the device's draw entry points make it. Compute passes
+// (gl/passes/compute_pass.h) issue the same draw again in other forms, so they get the parameters
+// rather than an opaque call.
+struct DrawCall {
+    PrimitiveType type = PrimitiveType::TriangleList;
+    int controlPoints = 0;   // > 0: patches of this many control points (type is ignored)
+    int count = 0;           // vertices or indices
+    int first = 0;           // first vertex, or first index when indexed
+    bool indexed = false;
+    int baseVertex = 0;      // indexed only
+    int indexSize = 2;       // bytes per index, 2 or 4
+    // A front end's instanced draw (front_end_core.h): `instances` from `firstInstance`.
+    bool instanced = false;
+    int instances = 1;
+    int firstInstance = 0;
+    // DrawUser(Indexed)Primitives of at most two triangles with compute passes on: a hash of the
+    // vertex and index bytes (a hint that the vertices changed; exactness never depends on it). 0: unknown.
+    std::uint64_t userDataHash = 0;
+};
+
+// FNV-1a over `bytes` bytes, continuing from `hash`.
+inline std::uint64_t hashBytes(const void* data, std::size_t bytes, std::uint64_t hash = 1469598103934665603ull) {
+    const unsigned char* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < bytes; ++i) hash = (hash ^ p[i]) * 1099511628211ull;
+    return hash;
+}
+
+// A colour attachment of a framebuffer: level 0 of a 2D texture, or one face of a cube (face >= 0).
+struct ColorAttachment {
+    BackendObject texture = 0;
+    int face = -1;
+};
+
+// A copy of `width` x `height` texels (of every face when `cube`) between two textures of one format.
+struct TextureCopy {
+    BackendObject source = 0, destination = 0;
+    bool cube = false;
+    int sourceLevel = 0, destinationLevel = 0;
+    int sourceX = 0, sourceY = 0, destinationX = 0, destinationY = 0;
+    int width = 0, height = 0;
+};
+
+enum class QueryKind { SamplesPassed, Timestamp };
 
 class Backend {
 public:
@@ -68,12 +131,108 @@ public:
     virtual BackendObject createPipeline(const std::array<BackendObject, 5>& stagePrograms) = 0;
     virtual void bindPipeline(BackendObject pipeline) = 0;
 
-    // Vertex input: a layout of attributes read from one vertex buffer.
-    virtual BackendObject createVertexArray(const std::vector<VertexAttribute>& attributes) = 0;
+    // Vertex input: a layout of attributes read from vertex-buffer bindings; `divisors[i]` > 0
+    // advances binding i once per that many instances (empty: every binding per vertex).
+    virtual BackendObject createVertexArray(const std::vector<VertexAttribute>& attributes, const std::vector<int>& divisors) = 0;
+    virtual void deleteVertexArray(BackendObject vertexArray) = 0;
     virtual void bindVertexArray(BackendObject vertexArray) = 0;
+    virtual void setVertexBuffer(BackendObject vertexArray, int binding, BackendObject buffer, std::size_t offset, int stride) = 0;
+    virtual void setIndexBuffer(BackendObject vertexArray, BackendObject buffer) = 0;
+
+    // The API's conventions made D3D's, once per device: NDC z in [0, 1], window y from the top row
+    // (targets come out top-row-first), seamless cube filtering, flat values from a primitive's
+    // first vertex.
+    virtual void adoptD3DConventions() = 0;
+    virtual int maxTextureSize() = 0;
+    virtual void finish() = 0;  // waits until the GPU has done everything submitted
+
+    // Buffers. allocateBuffer fixes the size once, from `initial` (null: undefined); `streaming`
+    // hints that it is rewritten often. orphanBuffer gives a buffer a fresh store of `bytes` (the
+    // draws still reading the old one need not finish first).
+    virtual BackendObject createBuffer() = 0;
+    virtual void deleteBuffer(BackendObject buffer) = 0;
+    virtual void allocateBuffer(BackendObject buffer, std::size_t bytes, const void* initial, bool streaming) = 0;
+    virtual void orphanBuffer(BackendObject buffer, std::size_t bytes) = 0;
+    virtual void readBuffer(BackendObject buffer, std::size_t offset, std::size_t bytes, void* out) = 0;
+    virtual void copyBuffer(BackendObject source, BackendObject destination, std::size_t sourceOffset,
+                            std::size_t destinationOffset, std::size_t bytes) = 0;
+
+    // Textures: 2D or cube, `levels` levels of `format` (D3D9's reads of missing channels applied).
+    // Texel transfers are in the format's own layout (bytesPerPixel), face -1 for a 2D texture;
+    // readTextureFloats reads RGBA floats.
+    virtual bool isColorRenderable(SurfaceFormat format) = 0;
+    // The image-unit format qualifier a shader declares for `format` ("rgba8"), "" when images cannot hold it.
+    virtual const char* imageFormatName(SurfaceFormat format) = 0;
+    virtual BackendObject createTexture(bool cube, SurfaceFormat format, int levels, int width, int height) = 0;
+    virtual void deleteTexture(BackendObject texture) = 0;
+    virtual void writeTexture(BackendObject texture, SurfaceFormat format, int face, int level, const Rectangle& area,
+                              const void* data) = 0;
+    virtual void readTexture(BackendObject texture, SurfaceFormat format, int face, int level, std::size_t bytes, void* out) = 0;
+    virtual void readTextureFloats(BackendObject texture, int face, int level, std::size_t bytes, void* out) = 0;
+    virtual Rectangle textureLevelSize(BackendObject texture, int level) = 0;  // Width x Height
+    virtual void clearTexture(BackendObject texture, int level, const float (&rgba)[4]) = 0;
+    virtual void generateMipmaps(BackendObject texture) = 0;
+    virtual void copyTexture(const TextureCopy& copy) = 0;
+
+    // Depth/stencil buffers (renderbuffers) and framebuffers. createFramebuffer returns 0 and says
+    // why in `problem` when the API cannot draw to that combination. clearDepthStencil clears a
+    // depth buffer whether bound or not; it changes the depth and stencil write masks and turns the
+    // scissor test off (the core's shadow must forget them).
+    virtual BackendObject createRenderbuffer() = 0;
+    virtual void deleteRenderbuffer(BackendObject renderbuffer) = 0;
+    virtual BackendObject createFramebuffer(const std::vector<ColorAttachment>& colour, BackendObject depth, bool depthHasStencil,
+                                            std::string& problem) = 0;
+    virtual void deleteFramebuffer(BackendObject framebuffer) = 0;
+    virtual void bindFramebuffer(BackendObject framebuffer) = 0;  // 0: the window's
+    virtual void presentFlipped(BackendObject framebuffer, int width, int height) = 0;  // to the window, rows reversed
+    virtual void clearDepthStencil(BackendObject renderbuffer, bool hasStencil, bool depth, bool stencil, float depthValue,
+                                   int stencilValue) = 0;
+    virtual void allocateRenderbuffer(BackendObject renderbuffer, DepthFormat format, int width, int height) = 0;
+    // Clears `area` of the bound framebuffer's first `colourTargets` colour attachments (when
+    // `colour`) and of its depth and/or stencil, whatever the write masks and scissor were: it
+    // leaves the scissor test on, the scissor at `area` and the cleared channels' masks open (the
+    // core's shadow puts its state back).
+    virtual void clearFramebuffer(BackendObject framebuffer, const Rectangle& area, int colourTargets, bool colour,
+                                  const Vector4& color, bool depth, bool stencil, float depthValue, int stencilValue) = 0;
+    // The bound framebuffer's contents that nothing will read: its first `colourTargets` colour
+    // attachments, and its depth and/or stencil.
+    virtual void invalidateFramebuffer(int colourTargets, bool depth, bool stencil) = 0;
+
+    // Programs: one shader of `stage` (0 vertex .. 5 compute) made from `source`, its uniform blocks
+    // moved to the stage's binding range; 0 with the API's log in `log` when rejected.
+    virtual BackendObject createProgram(int stage, const std::string& source, std::string& log) = 0;
+    virtual void deleteProgram(BackendObject program) = 0;
+    virtual BackendObject createComputePipeline(BackendObject program) = 0;
+    virtual void deletePipeline(BackendObject pipeline) = 0;
+
+    // Storage: a buffer on a shader-storage binding, level 0 of a texture on an image unit, and the
+    // barrier that makes shader writes visible to whatever comes next.
+    virtual void bindStorageBuffer(int binding, BackendObject buffer) = 0;
+    virtual void bindStorageImage(int unit, BackendObject texture, SurfaceFormat format, bool writes) = 0;
+    virtual void storageBarrier() = 0;
+
+    // Work: a draw with the bound pipeline, vertex array and state; a compute dispatch.
+    virtual void draw(const DrawCall& call) = 0;
+    virtual void dispatch(int groupsX, int groupsY, int groupsZ) = 0;
+
+    // Queries (the measurements of diagnostics/): the samples that pass between beginSamplesPassed
+    // and endSamplesPassed (one open at a time), a GPU timestamp taken when the commands before it
+    // have run. queryReady says whether a result can be read without waiting; queryResult waits.
+    virtual BackendObject createQuery(QueryKind kind) = 0;
+    virtual void deleteQuery(BackendObject query) = 0;
+    virtual void beginSamplesPassed(BackendObject query) = 0;
+    virtual void endSamplesPassed() = 0;
+    virtual void writeTimestamp(BackendObject query) = 0;
+    virtual bool queryReady(BackendObject query) = 0;
+    virtual std::uint64_t queryResult(BackendObject query) = 0;
 };
 
 // The backends there are (one registration each): OpenGL 4.5 core (gl/gl_backend.cpp).
 std::unique_ptr<Backend> createGlBackend();
+
+// A device whose every call reaches `backend`, with no GL context (GraphicsDevice's own constructor
+// makes a context and the GL backend): the device core's tests use it with a recording backend
+// (tests/runtime/recording_backend.h). The GL backend's own passes (compute passes) stay off.
+std::unique_ptr<GraphicsDevice> createDeviceOver(std::unique_ptr<Backend> backend, const PresentationParameters& parameters);
 
 }  // namespace fxport

@@ -26,47 +26,45 @@ void GraphicsDevice::DispatchCompute(int groupsX, int groupsY, int groupsZ) {
             throw ArgumentError("DispatchCompute(" + std::to_string(groupsX) + ", " + std::to_string(groupsY) + ", " + std::to_string(groupsZ) +
                                 "): each group count must be 0.." + std::to_string(kMaxGroupsPerDimension));
     if (groupsX == 0 || groupsY == 0 || groupsZ == 0) return;  // D3D11 runs nothing
-    d.dispatch(GLuint(groupsX), GLuint(groupsY), GLuint(groupsZ));
+    d.dispatch(groupsX, groupsY, groupsZ);
 }
 
-void GraphicsDevice::Impl::dispatch(GLuint x, GLuint y, GLuint z) {
+void GraphicsDevice::Impl::dispatch(int x, int y, int z) {
     const ShaderProgram& program = *computeShader;
     // A clear still waiting for its target must land before a shader writes or samples it.
     resolvePendingClear(pendingClear.options);
     storageBarrier();
     auto it = computePipelines.find(program.program);
     if (it == computePipelines.end()) {
-        GLuint pipeline = 0;
-        glCreateProgramPipelines(1, &pipeline);
+        const BackendObject pipeline = backend->createComputePipeline(program.program);
         ++live.pipelines;
-        glUseProgramStages(pipeline, GL_COMPUTE_SHADER_BIT, program.program);
         it = computePipelines.emplace(program.program, pipeline).first;
     }
     if (boundPipeline != it->second) {
-        glBindProgramPipeline(it->second);
+        backend->bindPipeline(it->second);
         boundPipeline = it->second;
     }
     for (int b = 0; b < kUniformBindingsPerStage; ++b) {
         std::size_t i = std::size_t(uniformBindingFor(kComputeStage, b));
         if (b == kInternalBlockBinding || wantedUniformBuffers[i] == boundUniformBuffers[i]) continue;
-        glBindBufferBase(GL_UNIFORM_BUFFER, GLuint(i), wantedUniformBuffers[i]);
+        backend->bindUniformBuffer(int(i), wantedUniformBuffers[i]);
         boundUniformBuffers[i] = wantedUniformBuffers[i];
     }
     const ShaderProgram* programs[] = {&program};
     applyTexturesOf(programs, 1);
     applyStorage(programs, 1, "DispatchCompute");
-    glDispatchCompute(x, y, z);
+    backend->dispatch(x, y, z);
     storageDirty = true;  // groupshared-only shaders are rare; one barrier too many costs little
 }
 
-void GraphicsDevice::Impl::dropComputePipelinesUsing(GLuint program) {
+void GraphicsDevice::Impl::dropComputePipelinesUsing(BackendObject program) {
     auto it = computePipelines.find(program);
     if (it == computePipelines.end()) return;
     if (boundPipeline == it->second) {
-        glBindProgramPipeline(0);
+        backend->bindPipeline(0);
         boundPipeline = 0;
     }
-    glDeleteProgramPipelines(1, &it->second);
+    backend->deletePipeline(it->second);
     --live.pipelines;
     computePipelines.erase(it);
 }

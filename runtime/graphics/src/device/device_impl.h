@@ -1,5 +1,5 @@
 // INTERNAL: the device's private state: the backend and the shadow of what it has, the caches of
-// GL objects made from immutable descriptions, and the registry of live resources. Effects, textures
+// backend objects made from immutable descriptions, and the registry of live resources. Effects, textures
 // and buffers reach it through deviceImpl() (device/impl_access.h).
 #pragma once
 
@@ -17,7 +17,6 @@
 #include "device/impl_access.h"
 #include "device/state_shadow.h"
 #include "fxport/graphics/graphics_device.h"
-#include "fxport/platform/gl.h"
 #include "fxport/xlate/texture_fetches.h"
 
 namespace fxport::xlate {
@@ -32,32 +31,18 @@ struct ComputeAnalysis;
 struct ComputePasses;
 class FragmentRuns;  // fragment_tally.h
 
-// Uniform-buffer binding points per stage: D3D has separate constant slots per stage, so the same
-// HLSL binding (b0 = $Global, b1 = fxport's internal block, b2.. user cbuffers) gets a range per
-// stage. A pixel shader's $Global (its own effect's) never collides with the vertex shader's
-// (SpriteBatch's, say).
-inline constexpr int kUniformBindingsPerStage = 8;
-inline constexpr int kStageCount = 5;  // vertex, pixel, geometry, hull, domain (the draw pipeline)
-inline constexpr int kHullStage = 3, kDomainStage = 4;
-inline constexpr int kComputeStage = 5;  // dispatched alone; its own uniform-binding range
-inline constexpr int kUniformStages = kStageCount + 1;
-inline int uniformBindingFor(int stage, int hlslBinding) { return stage * kUniformBindingsPerStage + hlslBinding; }
-// Moves each uniform block of a linked program from its HLSL binding b to `stage`'s range; once,
-// when the program is made (graphics_device.cpp; compute passes' programs use it too).
-void moveUniformBlocksToStage(GLuint program, int stage);
-inline constexpr int kInternalBlockBinding = 1;
 
-// A compiled shader made into a separable GL program, as the device needs it at draw time.
+// A compiled shader made into a separable program (a backend object), as the device needs it at draw time.
 struct ShaderProgram {
-    GLuint program = 0;
+    BackendObject program = 0;
     int stage = 0;                              // 0 vertex, 1 pixel, 2 geometry, 3 hull, 4 domain, 5 compute
     const xlate::CompiledShader* shader = nullptr;  // owned by the effect
     std::string label;                          // "GBuffer.fx: VertexShaderFunction (vs_2_0)"
     bool mayDiscard = false;                    // the GLSL has a `discard` (clip, texkill): read once
     // Pixel shaders: the D3D9 alpha-test variant (xlate::alphaTestVariant), made at the first draw
     // that needs it; a cache on a record the device otherwise only reads, hence mutable.
-    mutable GLuint alphaTestProgram = 0;
-    mutable GLint alphaFuncLocation = -1, alphaRefLocation = -1;
+    mutable BackendObject alphaTestProgram = 0;
+    mutable int alphaFuncLocation = -1, alphaRefLocation = -1;
     mutable bool alphaTestUnavailable = false;  // the shader writes no colour to test
     // What compute passes may do with this shader (compute_pass.h), read at its first candidate draw.
     mutable std::shared_ptr<const ComputeAnalysis> computeAnalysis;
@@ -71,19 +56,19 @@ struct PassEmulation {
     bool alphaTest = false;
     int alphaFunction = 8;      // D3DCMPFUNC code (8 = ALWAYS)
     float alphaReference = 0;   // (AlphaRef & 0xFF) / 255
-    bool srgbWrite = false;     // GL_FRAMEBUFFER_SRGB
+    bool srgbWrite = false;     // encode into sRGB targets (Backend::setSrgbWrite)
     const xlate::SourceLocation* srgbWriteAt = nullptr;  // where the pass set it (for the warning)
     bool* srgbWriteReported = nullptr;  // the applied effect's "said once" flag
     bool operator==(const PassEmulation&) const = default;
 };
 
 struct GraphicsDevice::Impl {
-    explicit Impl(GraphicsDevice& owner) : device(owner) {}
+    Impl(GraphicsDevice& owner, std::unique_ptr<Backend> api) : device(owner), backend(std::move(api)) {}
 
     GraphicsDevice& device;
     GpuObjectCounts live;
     // The graphics API behind the seam (device/backend.h), and the fixed-function state it has.
-    std::unique_ptr<Backend> backend = createGlBackend();
+    std::unique_ptr<Backend> backend;
     StateShadow shadow{*backend};
 
     // --- resource registry (so destroying a resource unbinds it everywhere)
@@ -95,8 +80,8 @@ struct GraphicsDevice::Impl {
     // --- render targets
     std::vector<RenderTargetBinding> targets;   // empty = back buffer
     std::unique_ptr<RenderTarget2D> backBuffer;
-    std::map<std::vector<std::uint64_t>, GLuint> framebuffers;  // attachment key -> FBO
-    GLuint boundFramebuffer = 0;
+    std::map<std::vector<std::uint64_t>, BackendObject> framebuffers;  // attachment key -> FBO
+    BackendObject boundFramebuffer = 0;
     int targetWidth = 0, targetHeight = 0;
     void bindTargets();
     // What targetsBoundSinceMark() returns (after the first mark, the bindings of every SetRenderTargets).
@@ -123,22 +108,22 @@ struct GraphicsDevice::Impl {
     // where D3D9 encoded. Reported once per effect, through the effect warning handler.
     void reportUnencodedSrgbWrite();
     // Picks the pixel program: the shader's own, or its alpha-test variant (made on first use).
-    GLuint pixelProgramFor(const ShaderProgram& program);
-    std::map<std::tuple<GLuint, GLuint, GLuint, GLuint, GLuint>, GLuint> pipelines;  // vs, ps, gs, hs, ds
-    GLuint boundPipeline = 0;
+    BackendObject pixelProgramFor(const ShaderProgram& program);
+    std::map<std::tuple<BackendObject, BackendObject, BackendObject, BackendObject, BackendObject>, BackendObject> pipelines;  // vs, ps, gs, hs, ds
+    BackendObject boundPipeline = 0;
 
     // --- uniform buffers: wanted (set by Apply) and bound
-    std::array<GLuint, kUniformStages * kUniformBindingsPerStage> wantedUniformBuffers{};
-    std::array<GLuint, kUniformStages * kUniformBindingsPerStage> boundUniformBuffers{};
+    std::array<BackendObject, kUniformStages * kUniformBindingsPerStage> wantedUniformBuffers{};
+    std::array<BackendObject, kUniformStages * kUniformBindingsPerStage> boundUniformBuffers{};
 
     // --- D3D11 stages (storage_bindings.cpp, compute_dispatch.cpp, tessellated_draw.cpp)
     const ShaderProgram* computeShader = nullptr;  // the last applied pass's SetComputeShader
     // What SetUnorderedAccess / SetShaderResource put in a slot: a buffer or a texture's level 0.
     struct StorageSlot {
         const GraphicsResource* resource = nullptr;
-        GLuint name = 0;
+        BackendObject name = 0;
         bool image = false;
-        GLenum format = 0;  // images: the texture's internal format
+        SurfaceFormat format = SurfaceFormat::Color;  // images: the texture's format
     };
     std::array<StorageSlot, kMaxUnorderedAccessSlots> unorderedAccess{};
     std::array<StorageSlot, kMaxShaderResourceBuffers> resourceBuffers{};
@@ -154,46 +139,46 @@ struct GraphicsDevice::Impl {
     // Draws with the pipeline flush() set up, checking the tessellation stages agree with `patches`.
     void checkTessellation(bool patches, const char* what) const;
     bool patchDraw = false;  // set by DrawPatches around its flush
-    std::map<GLuint, GLuint> computePipelines;  // compute program -> its pipeline
-    void dispatch(GLuint x, GLuint y, GLuint z);  // DispatchCompute after its checks
-    void dropComputePipelinesUsing(GLuint program);
-    GLuint internalBuffer = 0;           // fxport_Internal { float4 fxport_PixelOffset; }
+    std::map<BackendObject, BackendObject> computePipelines;  // compute program -> its pipeline
+    void dispatch(int x, int y, int z);  // DispatchCompute after its checks
+    void dropComputePipelinesUsing(BackendObject program);
+    BackendObject internalBuffer = 0;           // fxport_Internal { float4 fxport_PixelOffset; }
     std::array<float, 4> pixelOffset{};  // what internalBuffer holds
 
     // --- vertex input
     VertexBuffer* vertexBuffer = nullptr;
     int vertexOffset = 0;
     struct VertexArray {
-        GLuint vao = 0;
-        GLuint buffer = 0;
-        GLintptr offset = -1;
-        GLsizei stride = 0;
-        GLuint elements = 0;
+        BackendObject vao = 0;
+        BackendObject buffer = 0;
+        std::int64_t offset = -1;
+        int stride = 0;
+        BackendObject elements = 0;
     };
     std::unordered_map<std::string, VertexArray> vertexArrays;  // key: declaration + VS program
     struct LastVertexArray {
         const VertexDeclaration* declaration = nullptr;
         VertexDeclaration copy;
-        GLuint program = 0;
+        BackendObject program = 0;
         VertexArray* array = nullptr;
     } lastVertexArray;
-    GLuint boundVertexArray = 0;
+    BackendObject boundVertexArray = 0;
     VertexArray& vertexArrayFor(const VertexDeclaration& declaration);
     // The VAO for the current vertex buffer and vertex shader, with the buffer attached at the
     // SetVertexBuffer offset.
     VertexArray& bindVertexBuffer();
 
     // Streaming buffers for DrawUser(Indexed)Primitives: written with orphaning.
-    GLuint userVertices = 0, userIndices = 0;
-    GLsizeiptr userVerticesSize = 0, userIndicesSize = 0;
-    void streamUserData(GLuint& buffer, GLsizeiptr& capacity, const void* data, GLsizeiptr bytes);
+    BackendObject userVertices = 0, userIndices = 0;
+    std::size_t userVerticesSize = 0, userIndicesSize = 0;
+    void streamUserData(BackendObject& buffer, std::size_t& capacity, const void* data, std::size_t bytes);
 
     // --- texture and sampler bindings (the fixed-function state is `shadow`'s)
-    std::array<GLuint, kMaxTextureSlots> boundTextures{};
-    std::array<GLuint, kMaxTextureSlots> boundSamplers{};
+    std::array<BackendObject, kMaxTextureSlots> boundTextures{};
+    std::array<BackendObject, kMaxTextureSlots> boundSamplers{};
     std::array<SamplerState, kMaxTextureSlots> boundSamplerStates{};  // what boundSamplers were made from
-    std::map<std::array<std::uint8_t, sizeof(SamplerState)>, GLuint> samplerObjects;  // SamplerState bytes -> GL sampler
-    GLuint samplerFor(const SamplerState& state);
+    std::map<std::array<std::uint8_t, sizeof(SamplerState)>, BackendObject> samplerObjects;  // SamplerState bytes -> backend sampler
+    BackendObject samplerFor(const SamplerState& state);
 
     void applyViewport(const fxport::Viewport& wanted);  // and the D3D9 pixel offset that depends on it
     void applyTextures();
@@ -203,9 +188,9 @@ struct GraphicsDevice::Impl {
     // Everything a draw needs, compared against the shadow. `what` names the draw call for errors.
     void flush(const char* what);
 
-    // --- clears of the bound targets not yet sent to GL (pending_clear.cpp). A clear of the whole
+    // --- clears of the bound targets not yet sent to the backend (pending_clear.cpp). A clear of the whole
     // target (the one SetRenderTargets does for DiscardContents, and Clear over a full viewport) is
-    // recorded per channel, a later clear of the same channel replaces it, and it reaches GL when
+    // recorded per channel, a later clear of the same channel replaces it, and it reaches the backend when
     // something needs that channel: colour before any draw or read-back of a bound target, depth and
     // stencil before a draw that tests them. Leaving a DiscardContents target drops a depth/stencil
     // clear nothing used (its next binding clears them again and nothing can read them); colour is
@@ -262,27 +247,27 @@ struct GraphicsDevice::Impl {
     void discardWaitingDepthClear(unsigned options, long& counter);  // DiscardContents / leaving
     void leaveDiscardedDepth();  // leaving a DiscardContents target: its depth/stencil is not kept
 
-    // GL object bookkeeping: every create/delete goes through these so liveGpuObjects() is exact.
-    GLuint createTexture(GLenum target);
-    void deleteTexture(GLuint& name);
-    GLuint createBuffer();
-    void deleteBuffer(GLuint& name);
-    GLuint createRenderbuffer();
-    void deleteRenderbuffer(GLuint& name);
-    // Programs are shared by (stage, GLSL text) and reference-counted.
-    GLuint createProgram(GLenum stage, const std::string& source, const std::string& label);
+    // Backend object bookkeeping: every create/delete goes through these so liveGpuObjects() is exact.
+    BackendObject createTexture(bool cube, SurfaceFormat format, int levels, int width, int height);
+    void deleteTexture(BackendObject& name);
+    BackendObject createBuffer();
+    void deleteBuffer(BackendObject& name);
+    BackendObject createRenderbuffer();
+    void deleteRenderbuffer(BackendObject& name);
+    // Programs are shared by (stage, GLSL text) and reference-counted. `stage`: 0 vertex .. 5 compute.
+    BackendObject createProgram(int stage, const std::string& source, const std::string& label);
     struct CachedProgram {
-        GLuint program = 0;
+        BackendObject program = 0;
         int references = 0;
     };
-    std::map<std::pair<GLenum, std::string>, CachedProgram> programCache;
-    void deleteProgram(GLuint& name);
-    GLuint createQuery(GLenum target);
-    void deleteQuery(GLuint& name);
+    std::map<std::pair<int, std::string>, CachedProgram> programCache;
+    void deleteProgram(BackendObject& name);
+    BackendObject createQuery(QueryKind kind);
+    void deleteQuery(BackendObject& name);
     // Forgets FBOs, pipelines and VAOs that mention a deleted texture / program / buffer.
-    void dropFramebuffersUsing(GLuint texture);
-    void dropPipelinesUsing(GLuint program);
-    void dropVertexArraysUsing(GLuint program);
+    void dropFramebuffersUsing(BackendObject texture);
+    void dropPipelinesUsing(BackendObject program);
+    void dropVertexArraysUsing(BackendObject program);
     void releaseAll();
 };
 

@@ -97,7 +97,7 @@ void GraphicsDevice::Impl::reportUnencodedSrgbWrite() {
     reportEffectWarning(d.format());
 }
 
-GLuint GraphicsDevice::Impl::pixelProgramFor(const ShaderProgram& program) {
+BackendObject GraphicsDevice::Impl::pixelProgramFor(const ShaderProgram& program) {
     if (!emulation.alphaTest || program.alphaTestUnavailable) return program.program;
     if (!program.alphaTestProgram) {
         std::optional<std::string> glsl = xlate::alphaTestVariant(program.shader->glsl);
@@ -107,7 +107,7 @@ GLuint GraphicsDevice::Impl::pixelProgramFor(const ShaderProgram& program) {
                       << " render target 0; drawing without the alpha test\n";
             return program.program;
         }
-        program.alphaTestProgram = createProgram(GL_FRAGMENT_SHADER, *glsl, program.label + " [alpha test]");
+        program.alphaTestProgram = createProgram(1, *glsl, program.label + " [alpha test]");
         program.alphaFuncLocation = backend->uniformLocation(program.alphaTestProgram, xlate::kAlphaFuncUniform);
         program.alphaRefLocation = backend->uniformLocation(program.alphaTestProgram, xlate::kAlphaRefUniform);
     }
@@ -117,11 +117,11 @@ GLuint GraphicsDevice::Impl::pixelProgramFor(const ShaderProgram& program) {
 }
 
 void GraphicsDevice::Impl::applyShaders() {
-    GLuint vs = shaders[0]->program, ps = pixelProgramFor(*shaders[1]), gs = shaders[2] ? shaders[2]->program : 0;
-    GLuint hs = shaders[kHullStage] ? shaders[kHullStage]->program : 0, ds = shaders[kDomainStage] ? shaders[kDomainStage]->program : 0;
+    BackendObject vs = shaders[0]->program, ps = pixelProgramFor(*shaders[1]), gs = shaders[2] ? shaders[2]->program : 0;
+    BackendObject hs = shaders[kHullStage] ? shaders[kHullStage]->program : 0, ds = shaders[kDomainStage] ? shaders[kDomainStage]->program : 0;
     auto key = std::make_tuple(vs, ps, gs, hs, ds);
     auto it = pipelines.find(key);
-    GLuint pipeline = 0;
+    BackendObject pipeline = 0;
     if (it != pipelines.end()) {
         pipeline = it->second;
     } else {
@@ -150,7 +150,7 @@ void GraphicsDevice::Impl::applyTexturesOf(const ShaderProgram* const* programs,
             int unit = sampler.unit;
             if (unit < 0 || unit >= kMaxTextureSlots) continue;
             Texture* texture = device.Textures[unit].get();
-            GLuint name = texture ? texture->glName() : 0;
+            BackendObject name = texture ? texture->glName() : 0;
             if (texture) {
                 if (&texture->device() != &device)  // its GL name means nothing in this device's context
                     throw InvalidOperation("Draw: texture " + textureName(texture) + " in Textures[" + std::to_string(unit) +
@@ -176,7 +176,7 @@ void GraphicsDevice::Impl::applyTexturesOf(const ShaderProgram* const* programs,
             const SamplerState& wanted = device.SamplerStates[unit];
             std::size_t u = std::size_t(unit);
             if (shadow.unknown() || boundSamplers[u] == 0 || !(boundSamplerStates[u] == wanted)) {
-                GLuint object = samplerFor(wanted);
+                BackendObject object = samplerFor(wanted);
                 if (shadow.unknown() || boundSamplers[u] != object) backend->bindSampler(unit, object);
                 boundSamplers[u] = object;
                 boundSamplerStates[u] = wanted;
@@ -203,7 +203,7 @@ void GraphicsDevice::Impl::applyViewport(const fxport::Viewport& w) {
     }
 }
 
-GLuint GraphicsDevice::Impl::samplerFor(const SamplerState& s) {
+BackendObject GraphicsDevice::Impl::samplerFor(const SamplerState& s) {
     std::array<std::uint8_t, sizeof(SamplerState)> key{};
     // SamplerState is a plain aggregate of enums, ints, floats and a Vector4: compare by fields
     // through a canonical byte image (padding zeroed by value-initialising a copy).
@@ -218,7 +218,7 @@ GLuint GraphicsDevice::Impl::samplerFor(const SamplerState& s) {
 }
 
 GraphicsDevice::Impl::VertexArray& GraphicsDevice::Impl::vertexArrayFor(const VertexDeclaration& declaration) {
-    GLuint vs = shaders[0]->program;
+    BackendObject vs = shaders[0]->program;
     LastVertexArray& last = lastVertexArray;
     if (last.array && last.program == vs && last.declaration == &declaration && last.copy == declaration) {
         if (boundVertexArray != last.array->vao) {
@@ -243,7 +243,7 @@ GraphicsDevice::Impl::VertexArray& GraphicsDevice::Impl::vertexArrayFor(const Ve
             attributes.push_back({input.location, elements[i]->VertexElementFormat, elements[i]->Offset, input.isInteger});
         }
         VertexArray va;
-        va.vao = backend->createVertexArray(attributes);
+        va.vao = backend->createVertexArray(attributes, {});
         ++live.vertexArrays;
         it = vertexArrays.emplace(key, va).first;
     }

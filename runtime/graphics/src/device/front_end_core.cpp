@@ -1,8 +1,8 @@
 // The device core's entry points for front ends other than XNA's (front_end_core.h). Each one
-// reuses the device's own machinery -- the GL object bookkeeping, flush() with its state shadow,
-// the vertex-array cache, target binding, lazy depth storage -- and adds only the GL calls XNA's
-// classes do not make (byte buffers by slot, instanced draws, clearing a texture or a depth buffer
-// that is not bound).
+// reuses the device's own machinery -- the backend object bookkeeping, flush() with its state
+// shadow, the vertex-array cache, target binding, lazy depth storage -- and adds only the backend
+// calls XNA's classes do not make (byte buffers by slot, instanced draws, clearing a texture or a
+// depth buffer that is not bound).
 #include "device/front_end_core.h"
 
 #include <algorithm>
@@ -11,75 +11,26 @@
 #include "device/device_impl.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/xlate/compiled_effect.h"
-#include "gl/gl_formats.h"
 
 namespace fxport::core {
 
 namespace {
 
-GLenum glStageOf(xlate::ShaderStage stage) {
-    switch (stage) {
-    case xlate::ShaderStage::Vertex: return GL_VERTEX_SHADER;
-    case xlate::ShaderStage::Pixel: return GL_FRAGMENT_SHADER;
-    case xlate::ShaderStage::Geometry: return GL_GEOMETRY_SHADER;
-    case xlate::ShaderStage::Hull: return GL_TESS_CONTROL_SHADER;
-    case xlate::ShaderStage::Domain: return GL_TESS_EVALUATION_SHADER;
-    case xlate::ShaderStage::Compute: return GL_COMPUTE_SHADER;
-    }
-    return GL_VERTEX_SHADER;
-}
-
-// A vertex element's GL attribute format (the same table as draw_state.cpp's, which is private to
-// that file; kept apart while runtime/graphics is being reorganised).
-struct AttributeFormat {
-    GLint size;
-    GLenum type;
-    GLboolean normalized;
-};
-AttributeFormat attributeFormatOf(VertexElementFormat f) {
-    switch (f) {
-    case VertexElementFormat::Single: return {1, GL_FLOAT, GL_FALSE};
-    case VertexElementFormat::Vector2: return {2, GL_FLOAT, GL_FALSE};
-    case VertexElementFormat::Vector3: return {3, GL_FLOAT, GL_FALSE};
-    case VertexElementFormat::Vector4: return {4, GL_FLOAT, GL_FALSE};
-    case VertexElementFormat::Color: return {4, GL_UNSIGNED_BYTE, GL_TRUE};
-    case VertexElementFormat::Byte4: return {4, GL_UNSIGNED_BYTE, GL_FALSE};
-    case VertexElementFormat::Short2: return {2, GL_SHORT, GL_FALSE};
-    case VertexElementFormat::Short4: return {4, GL_SHORT, GL_FALSE};
-    case VertexElementFormat::NormalizedShort2: return {2, GL_SHORT, GL_TRUE};
-    case VertexElementFormat::NormalizedShort4: return {4, GL_SHORT, GL_TRUE};
-    case VertexElementFormat::HalfVector2: return {2, GL_HALF_FLOAT, GL_FALSE};
-    case VertexElementFormat::HalfVector4: return {4, GL_HALF_FLOAT, GL_FALSE};
-    }
-    return {4, GL_FLOAT, GL_FALSE};
-}
-
-GLenum glPrimitiveOf(PrimitiveType type) {
-    switch (type) {
-    case PrimitiveType::TriangleList: return GL_TRIANGLES;
-    case PrimitiveType::TriangleStrip: return GL_TRIANGLE_STRIP;
-    case PrimitiveType::LineList: return GL_LINES;
-    case PrimitiveType::LineStrip: return GL_LINE_STRIP;
-    case PrimitiveType::PointList: return GL_POINTS;
-    }
-    return GL_TRIANGLES;
-}
-
 // Framebuffers keyed with this renderbuffer as their depth attachment (graphics_device.cpp's key:
 // colour entries name << 8 | face, the depth entry name << 8 | 0xff).
-void dropFramebuffersWithDepth(GraphicsDevice::Impl& d, GLuint renderbuffer) {
+void dropFramebuffersWithDepth(GraphicsDevice::Impl& d, BackendObject renderbuffer) {
     if (renderbuffer == 0) return;
     for (auto it = d.framebuffers.begin(); it != d.framebuffers.end();) {
         const std::uint64_t depthKey = it->first.back();
-        if (GLuint(depthKey >> 8) != renderbuffer) {
+        if (BackendObject(depthKey >> 8) != renderbuffer) {
             ++it;
             continue;
         }
         if (d.boundFramebuffer == it->second) {
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            d.backend->bindFramebuffer(0);
             d.boundFramebuffer = 0;
         }
-        glDeleteFramebuffers(1, &it->second);
+        d.backend->deleteFramebuffer(it->second);
         --d.live.framebuffers;
         it = d.framebuffers.erase(it);
     }
@@ -93,11 +44,11 @@ ByteBuffer::ByteBuffer(GraphicsDevice& device, std::size_t bytes, const void* in
     : GraphicsResource(device, "Buffer"), size_(bytes) {
     if (bytes == 0 || bytes > (std::size_t(1) << 31))
         throw ArgumentError(describe() + ": " + std::to_string(bytes) + " bytes; a buffer holds 1 byte to 2 GiB");
-    name_ = deviceImpl(device).createBuffer();
+    GraphicsDevice::Impl& d = deviceImpl(device);
+    name_ = d.createBuffer();
     std::vector<std::uint8_t> zeros;
     if (!initial) zeros.assign(bytes, 0);
-    glNamedBufferStorage(name_, GLsizeiptr(bytes), initial ? initial : zeros.data(),
-                         GL_DYNAMIC_STORAGE_BIT | (dynamic ? GL_CLIENT_STORAGE_BIT : 0));
+    d.backend->allocateBuffer(name_, bytes, initial ? initial : zeros.data(), dynamic);
 }
 
 ByteBuffer::~ByteBuffer() { disposeFromDestructor(); }
@@ -112,8 +63,9 @@ void ByteBuffer::write(std::size_t offset, std::size_t bytes, const void* data) 
     if (offset > size_ || bytes > size_ - offset)
         throw ArgumentError(describe() + ": bytes [" + std::to_string(offset) + ", " + std::to_string(offset + bytes) +
                             ") are outside its " + std::to_string(size_));
-    deviceImpl(device()).storageBarrier();  // a shader's writes through a UAV land before this replaces them
-    if (bytes) glNamedBufferSubData(name_, GLintptr(offset), GLsizeiptr(bytes), data);
+    GraphicsDevice::Impl& d = deviceImpl(device());
+    d.storageBarrier();  // a shader's writes through a UAV land before this replaces them
+    if (bytes) d.backend->writeBuffer(name_, offset, bytes, data);
 }
 
 void ByteBuffer::read(std::size_t offset, std::size_t bytes, void* out) const {
@@ -121,8 +73,9 @@ void ByteBuffer::read(std::size_t offset, std::size_t bytes, void* out) const {
     if (offset > size_ || bytes > size_ - offset)
         throw ArgumentError(describe() + ": bytes [" + std::to_string(offset) + ", " + std::to_string(offset + bytes) +
                             ") are outside its " + std::to_string(size_));
-    deviceImpl(device()).storageBarrier();  // what a dispatch or draw wrote is what this reads
-    if (bytes) glGetNamedBufferSubData(name_, GLintptr(offset), GLsizeiptr(bytes), out);
+    GraphicsDevice::Impl& d = deviceImpl(device());
+    d.storageBarrier();  // what a dispatch or draw wrote is what this reads
+    if (bytes) d.backend->readBuffer(name_, offset, bytes, out);
 }
 
 void ByteBuffer::copyFrom(const ByteBuffer& source) {
@@ -130,8 +83,9 @@ void ByteBuffer::copyFrom(const ByteBuffer& source) {
     if (source.size_ != size_)
         throw ArgumentError(describe() + ": copy from a buffer of " + std::to_string(source.size_) + " bytes into " +
                             std::to_string(size_));
-    deviceImpl(device()).storageBarrier();
-    glCopyNamedBufferSubData(source.name_, name_, 0, 0, GLsizeiptr(size_));
+    GraphicsDevice::Impl& d = deviceImpl(device());
+    d.storageBarrier();
+    d.backend->copyBuffer(source.name_, name_, 0, 0, size_);
 }
 
 void ByteBuffer::copyFrom(const ByteBuffer& source, std::size_t sourceOffset, std::size_t destinationOffset, std::size_t bytes) {
@@ -140,8 +94,9 @@ void ByteBuffer::copyFrom(const ByteBuffer& source, std::size_t sourceOffset, st
         throw ArgumentError(describe() + ": copy of " + std::to_string(bytes) + " bytes from byte " + std::to_string(sourceOffset) + " of a " +
                             std::to_string(source.size_) + "-byte buffer to byte " + std::to_string(destinationOffset) + " of " +
                             std::to_string(size_));
-    deviceImpl(device()).storageBarrier();
-    if (bytes) glCopyNamedBufferSubData(source.name_, name_, GLintptr(sourceOffset), GLintptr(destinationOffset), GLsizeiptr(bytes));
+    GraphicsDevice::Impl& d = deviceImpl(device());
+    d.storageBarrier();
+    if (bytes) d.backend->copyBuffer(source.name_, name_, sourceOffset, destinationOffset, bytes);
 }
 
 // --- DepthBuffer
@@ -175,7 +130,7 @@ ShaderCode::ShaderCode(GraphicsDevice& device, std::shared_ptr<const xlate::Comp
         throw ArgumentError(describe() + ": shader " + std::to_string(shaderIndex) + " of " +
                             std::to_string(effect_->shaders.size()));
     const xlate::CompiledShader& s = effect_->shaders[std::size_t(shaderIndex)];
-    const GLenum stage = glStageOf(s.profile.stage);
+    const int stage = int(s.profile.stage);  // backend.h numbers stages as xlate does
     program_->stage = int(s.profile.stage);
     program_->shader = &s;
     program_->label = label;
@@ -217,7 +172,7 @@ void setStorageBuffer(GraphicsDevice& device, bool unorderedAccess, int slot, co
         throw ArgumentError(std::string(unorderedAccess ? "unordered-access" : "shader-resource buffer") + " slot " + std::to_string(slot) +
                             " is outside 0.." + std::to_string(slots - 1));
     GraphicsDevice::Impl::StorageSlot wanted;
-    if (buffer) wanted = GraphicsDevice::Impl::StorageSlot{buffer, buffer->glName(), false, 0};
+    if (buffer) wanted = GraphicsDevice::Impl::StorageSlot{buffer, buffer->glName(), false, SurfaceFormat::Color};
     if (unorderedAccess) d.unorderedAccess[std::size_t(slot)] = wanted;
     else d.resourceBuffers[std::size_t(slot)] = wanted;
 }
@@ -263,24 +218,25 @@ void flushFor(GraphicsDevice::Impl& d, const DrawArguments& a) {
 }
 
 // The draw call itself, with the vertex array (and its element buffer) bound.
-void issue(GraphicsDevice::Impl::VertexArray& va, const DrawArguments& a) {
-    GLenum mode = glPrimitiveOf(a.type);
-    if (a.controlPoints > 0) {
-        mode = GL_PATCHES;
-        glPatchParameteri(GL_PATCH_VERTICES, a.controlPoints);
-    }
+void issue(GraphicsDevice::Impl& d, GraphicsDevice::Impl::VertexArray& va, const DrawArguments& a) {
+    DrawCall call;
+    call.type = a.type;
+    call.controlPoints = a.controlPoints;
+    call.count = a.count;
+    call.first = a.first;
+    call.instanced = true;
+    call.instances = a.instances;
+    call.firstInstance = a.firstInstance;
     if (a.indices) {
         if (va.elements != a.indices->glName()) {
             va.elements = a.indices->glName();
-            glVertexArrayElementBuffer(va.vao, va.elements);
+            d.backend->setIndexBuffer(va.vao, va.elements);
         }
-        const GLenum type = a.indexSize == 4 ? GL_UNSIGNED_INT : GL_UNSIGNED_SHORT;
-        const void* first = reinterpret_cast<const void*>(std::uintptr_t(a.first) * std::uintptr_t(a.indexSize));
-        glDrawElementsInstancedBaseVertexBaseInstance(mode, a.count, type, first, a.instances, a.baseVertex,
-                                                      GLuint(a.firstInstance));
-    } else {
-        glDrawArraysInstancedBaseInstance(mode, a.first, a.count, a.instances, GLuint(a.firstInstance));
+        call.indexed = true;
+        call.indexSize = a.indexSize;
+        call.baseVertex = a.baseVertex;
     }
+    d.backend->draw(call);
 }
 
 // The element of `streams` feeding a vertex-shader input (by semantic; SV_Position takes POSITION).
@@ -300,7 +256,7 @@ bool findElement(const std::vector<InstancedStream>& streams, const xlate::Verte
     return false;
 }
 
-// The vertex array reading `streams` (stream i on GL binding i) for the bound vertex shader; made
+// The vertex array reading `streams` (stream i on vertex-buffer binding i) for the bound vertex shader; made
 // once per layout and shader, kept with the device's others (so a deleted program drops it).
 GraphicsDevice::Impl::VertexArray& streamVertexArray(GraphicsDevice::Impl& d, const std::vector<InstancedStream>& streams) {
     const ShaderProgram& vs = *d.shaders[0];
@@ -321,30 +277,26 @@ GraphicsDevice::Impl::VertexArray& streamVertexArray(GraphicsDevice::Impl& d, co
             std::size_t stream;
             const VertexElement* element;
         };
-        std::vector<Feed> feeds;  // checked before any GL object is made
+        std::vector<Feed> feeds;  // checked before the backend makes anything
         for (const xlate::VertexInput& input : vs.shader->inputs) {
             Feed f{&input, 0, nullptr};
             if (findElement(streams, input, f.stream, f.element)) feeds.push_back(f);
             else if (input.semantic.rfind("SV_", 0) != 0 || input.semantic.rfind("SV_POSITION", 0) == 0)
                 throw InvalidOperation("Draw: the input layout has no element for the vertex shader's input " + input.semantic);
         }
+        std::vector<VertexAttribute> attributes;
+        for (const Feed& f : feeds)
+            attributes.push_back(VertexAttribute{f.input->location, f.element->VertexElementFormat, f.element->Offset,
+                                                 f.input->isInteger, int(f.stream)});
+        std::vector<int> divisors;
+        for (const InstancedStream& s : streams) divisors.push_back(s.instanceStepRate);
         GraphicsDevice::Impl::VertexArray va;
-        glCreateVertexArrays(1, &va.vao);
+        va.vao = d.backend->createVertexArray(attributes, divisors);
         ++d.live.vertexArrays;
-        for (const Feed& f : feeds) {
-            const GLuint location = GLuint(f.input->location);
-            const AttributeFormat format = attributeFormatOf(f.element->VertexElementFormat);
-            glEnableVertexArrayAttrib(va.vao, location);
-            if (f.input->isInteger) glVertexArrayAttribIFormat(va.vao, location, format.size, format.type, GLuint(f.element->Offset));
-            else glVertexArrayAttribFormat(va.vao, location, format.size, format.type, format.normalized, GLuint(f.element->Offset));
-            glVertexArrayAttribBinding(va.vao, location, GLuint(f.stream));
-        }
-        for (std::size_t s = 0; s < streams.size(); ++s)
-            glVertexArrayBindingDivisor(va.vao, GLuint(s), GLuint(std::max(streams[s].instanceStepRate, 0)));
         it = d.vertexArrays.emplace(key, va).first;
     }
     if (d.boundVertexArray != it->second.vao) {
-        glBindVertexArray(it->second.vao);
+        d.backend->bindVertexArray(it->second.vao);
         d.boundVertexArray = it->second.vao;
     }
     return it->second;
@@ -359,10 +311,10 @@ void drawStreams(GraphicsDevice& device, const std::vector<InstancedStream>& str
     GraphicsDevice::Impl::VertexArray& va = streamVertexArray(d, streams);
     for (std::size_t s = 0; s < streams.size(); ++s) {
         const VertexStream& v = streams[s].vertices;
-        const GLsizei stride = v.declaration ? GLsizei(v.declaration->VertexStride()) : 0;
-        glVertexArrayVertexBuffer(va.vao, GLuint(s), v.buffer ? v.buffer->glName() : 0, GLintptr(v.offset), stride);
+        const int stride = v.declaration ? v.declaration->VertexStride() : 0;
+        d.backend->setVertexBuffer(va.vao, int(s), v.buffer ? v.buffer->glName() : 0, v.offset, stride);
     }
-    issue(va, a);
+    issue(d, va, a);
 }
 
 // --- clears and copies
@@ -372,7 +324,7 @@ void clearTexture(Texture& texture, const Vector4& color) {
     // A clear of this target still pending in the device would land after ours.
     d.resolvePendingClearBeforeRead(&texture);
     const float rgba[4] = {color.X, color.Y, color.Z, color.W};
-    glClearTexImage(texture.glName(), 0, GL_RGBA, GL_FLOAT, rgba);
+    d.backend->clearTexture(texture.glName(), 0, rgba);
 }
 
 void clearDepthBuffer(GraphicsDevice& device, DepthBuffer& buffer, bool depth, bool stencil, float depthValue,
@@ -387,28 +339,15 @@ void clearDepthBuffer(GraphicsDevice& device, DepthBuffer& buffer, bool depth, b
         if (stencil) s.clearStencil = stencilValue;
         return;
     }
-    // A framebuffer of its own, so that neither the bound targets nor the viewport matter.
-    GLuint fbo = 0;
-    glCreateFramebuffers(1, &fbo);
-    glNamedFramebufferRenderbuffer(fbo, hasStencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
-                                   s.renderbuffer);
-    glNamedFramebufferDrawBuffer(fbo, GL_NONE);
-    // glClear* honour the write masks and the scissor: the shadowed state says what GL has now.
     GraphicsDevice::Impl& d = deviceImpl(device);
-    glDepthMask(GL_TRUE);
-    glStencilMask(0xFF);
-    glDisable(GL_SCISSOR_TEST);
-    const GLfloat clamped = std::clamp(depthValue, 0.0f, 1.0f);
-    if (depth && stencil) glClearNamedFramebufferfi(fbo, GL_DEPTH_STENCIL, 0, clamped, stencilValue);
-    else if (depth) glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &clamped);
-    else glClearNamedFramebufferiv(fbo, GL_STENCIL, 0, &stencilValue);
-    glDeleteFramebuffers(1, &fbo);
+    d.backend->clearDepthStencil(s.renderbuffer, hasStencil, depth, stencil, depthValue, stencilValue);
     d.shadow.invalidate();  // the next draw sets every state again (masks, scissor)
 }
 
 void generateMips(Texture& texture) {
-    deviceImpl(texture.device()).resolvePendingClearBeforeRead(&texture);
-    if (texture.LevelCount() > 1) glGenerateTextureMipmap(texture.glName());
+    GraphicsDevice::Impl& d = deviceImpl(texture.device());
+    d.resolvePendingClearBeforeRead(&texture);
+    if (texture.LevelCount() > 1) d.backend->generateMipmaps(texture.glName());
 }
 
 void copyTexture(Texture& destination, const Texture& source) {
@@ -417,16 +356,20 @@ void copyTexture(Texture& destination, const Texture& source) {
         destination.kind() != source.kind())
         throw ArgumentError("CopyResource: the textures differ in format, kind or level count");
     d.resolvePendingClearBeforeRead(&source);
-    const GLenum target = source.kind() == Texture::Kind::TextureCube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
+    const bool cube = source.kind() == Texture::Kind::TextureCube;
     for (int level = 0; level < source.LevelCount(); ++level) {
-        GLint w = 0, h = 0, wd = 0, hd = 0;
-        glGetTextureLevelParameteriv(source.glName(), level, GL_TEXTURE_WIDTH, &w);
-        glGetTextureLevelParameteriv(source.glName(), level, GL_TEXTURE_HEIGHT, &h);
-        glGetTextureLevelParameteriv(destination.glName(), level, GL_TEXTURE_WIDTH, &wd);
-        glGetTextureLevelParameteriv(destination.glName(), level, GL_TEXTURE_HEIGHT, &hd);
-        if (w != wd || h != hd) throw ArgumentError("CopyResource: the textures differ in size");
-        glCopyImageSubData(source.glName(), target, level, 0, 0, 0, destination.glName(), target, level, 0, 0, 0, w, h,
-                           target == GL_TEXTURE_CUBE_MAP ? 6 : 1);
+        const Rectangle size = d.backend->textureLevelSize(source.glName(), level);
+        const Rectangle destinationSize = d.backend->textureLevelSize(destination.glName(), level);
+        if (size.Width != destinationSize.Width || size.Height != destinationSize.Height)
+            throw ArgumentError("CopyResource: the textures differ in size");
+        TextureCopy copy;
+        copy.source = source.glName();
+        copy.destination = destination.glName();
+        copy.cube = cube;
+        copy.sourceLevel = copy.destinationLevel = level;
+        copy.width = size.Width;
+        copy.height = size.Height;
+        d.backend->copyTexture(copy);
     }
 }
 
@@ -438,11 +381,10 @@ void copyTextureRegion(Texture& destination, int destinationLevel, int x, int y,
     if (sourceLevel < 0 || sourceLevel >= source.LevelCount() || destinationLevel < 0 || destinationLevel >= destination.LevelCount())
         throw ArgumentError("CopySubresourceRegion: level " + std::to_string(sourceLevel) + " -> " + std::to_string(destinationLevel) +
                             " is outside the textures' levels");
-    GLint sw = 0, sh = 0, dw = 0, dh = 0;
-    glGetTextureLevelParameteriv(source.glName(), sourceLevel, GL_TEXTURE_WIDTH, &sw);
-    glGetTextureLevelParameteriv(source.glName(), sourceLevel, GL_TEXTURE_HEIGHT, &sh);
-    glGetTextureLevelParameteriv(destination.glName(), destinationLevel, GL_TEXTURE_WIDTH, &dw);
-    glGetTextureLevelParameteriv(destination.glName(), destinationLevel, GL_TEXTURE_HEIGHT, &dh);
+    GraphicsDevice::Impl& d = deviceImpl(destination.device());
+    const Rectangle sourceSize = d.backend->textureLevelSize(source.glName(), sourceLevel);
+    const Rectangle destinationSize = d.backend->textureLevelSize(destination.glName(), destinationLevel);
+    const int sw = sourceSize.Width, sh = sourceSize.Height, dw = destinationSize.Width, dh = destinationSize.Height;
     if (area.X < 0 || area.Y < 0 || area.Width <= 0 || area.Height <= 0 || area.X + area.Width > sw || area.Y + area.Height > sh)
         throw ArgumentError("CopySubresourceRegion: the source box (" + std::to_string(area.X) + ", " + std::to_string(area.Y) + ") " +
                             std::to_string(area.Width) + "x" + std::to_string(area.Height) + " is outside its " + std::to_string(sw) + "x" +
@@ -450,12 +392,21 @@ void copyTextureRegion(Texture& destination, int destinationLevel, int x, int y,
     if (x < 0 || y < 0 || x + area.Width > dw || y + area.Height > dh)
         throw ArgumentError("CopySubresourceRegion: (" + std::to_string(x) + ", " + std::to_string(y) + ") + " + std::to_string(area.Width) + "x" +
                             std::to_string(area.Height) + " is outside the destination's " + std::to_string(dw) + "x" + std::to_string(dh) + " level");
-    GraphicsDevice::Impl& d = deviceImpl(destination.device());
     d.resolvePendingClearBeforeRead(&source);
     d.resolvePendingClearBeforeRead(&destination);
     d.storageBarrier();
-    glCopyImageSubData(source.glName(), GL_TEXTURE_2D, sourceLevel, area.X, area.Y, 0, destination.glName(), GL_TEXTURE_2D, destinationLevel, x, y,
-                       0, area.Width, area.Height, 1);
+    TextureCopy copy;
+    copy.source = source.glName();
+    copy.destination = destination.glName();
+    copy.sourceLevel = sourceLevel;
+    copy.destinationLevel = destinationLevel;
+    copy.sourceX = area.X;
+    copy.sourceY = area.Y;
+    copy.destinationX = x;
+    copy.destinationY = y;
+    copy.width = area.Width;
+    copy.height = area.Height;
+    d.backend->copyTexture(copy);
 }
 
 }  // namespace fxport::core

@@ -5,7 +5,6 @@
 #include <iostream>
 
 #include "gl/passes/compute_pass.h"
-#include "gl/draw_call.h"
 #include "device/device_impl.h"
 #include "effect/effect_impl.h"
 #include "fxport/graphics/effect.h"
@@ -13,7 +12,6 @@
 #include "fxport/graphics/gpu_limits.h"
 #include "fxport/platform/graphics_context.h"
 #include "fxport/xlate/compiled_effect.h"
-#include "gl/gl_formats.h"
 #include "device/image_io.h"
 
 namespace fxport {
@@ -22,17 +20,6 @@ namespace {
 
 std::string slotError(int slot) {
     return "slot " + std::to_string(slot) + " is outside 0.." + std::to_string(kMaxTextureSlots - 1);
-}
-
-GLenum glPrimitive(PrimitiveType type) {
-    switch (type) {
-    case PrimitiveType::TriangleList: return GL_TRIANGLES;
-    case PrimitiveType::TriangleStrip: return GL_TRIANGLE_STRIP;
-    case PrimitiveType::LineList: return GL_LINES;
-    case PrimitiveType::LineStrip: return GL_LINE_STRIP;
-    case PrimitiveType::PointList: return GL_POINTS;
-    }
-    return GL_TRIANGLES;
 }
 
 // An enum value made by a cast (PrimitiveType(77)) would draw GL_TRIANGLES from a count of 0.
@@ -56,7 +43,7 @@ int vertexCountFor(PrimitiveType type, int primitives) {
 // What SetRenderTargets needs of a bound target, 2D or cube.
 struct TargetInfo {
     int width, height;
-    GLuint depth;
+    BackendObject depth;
     DepthFormat depthFormat;
     RenderTargetUsage usage;
 };
@@ -130,16 +117,39 @@ void checkBackBufferSize(const char* call, int width, int height) {
 
 }  // namespace
 
+namespace {
+
+// The backend createDeviceOver hands the constructor it calls (the public constructor has no
+// parameter for it: a host never picks one).
+thread_local std::unique_ptr<Backend> backendForNextDevice;
+
+}  // namespace
+
+std::unique_ptr<GraphicsDevice> createDeviceOver(std::unique_ptr<Backend> backend, const PresentationParameters& parameters) {
+    if (!backend) throw ArgumentError("createDeviceOver: no backend");
+    backendForNextDevice = std::move(backend);
+    try {
+        return std::make_unique<GraphicsDevice>(parameters);
+    } catch (...) {
+        backendForNextDevice.reset();
+        throw;
+    }
+}
+
 GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters) : parameters_(parameters) {
+    std::unique_ptr<Backend> backend = std::move(backendForNextDevice);
     checkBackBufferSize("GraphicsDevice", parameters_.BackBufferWidth, parameters_.BackBufferHeight);
-    platform::ContextDesc desc;
-    desc.platform = choosePlatform(parameters_.platform);
-    desc.width = parameters_.BackBufferWidth;
-    desc.height = parameters_.BackBufferHeight;
-    desc.debug = parameters_.debug;
-    desc.title = parameters_.windowTitle;
-    context_ = platform::GraphicsContext::create(desc);
-    impl_ = std::make_unique<Impl>(*this);
+    if (!backend) {
+        platform::ContextDesc desc;
+        desc.platform = choosePlatform(parameters_.platform);
+        desc.width = parameters_.BackBufferWidth;
+        desc.height = parameters_.BackBufferHeight;
+        desc.debug = parameters_.debug;
+        desc.title = parameters_.windowTitle;
+        context_ = platform::GraphicsContext::create(desc);
+        backend = createGlBackend();
+    }
+    impl_ = std::make_unique<Impl>(*this, std::move(backend));
     liveDevices().push_back(this);
     const char* defer = std::getenv("FXPORT_DEFER_CLEARS");
     impl_->deferClears = parameters_.DeferClears && !(defer && std::string(defer) == "0");
@@ -152,15 +162,13 @@ GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters)
 
     // The D3D conventions (docs/DESIGN.md): NDC z in [0,1], and window y from the top row so
     // render targets come out top-row-first.
-    glClipControl(GL_UPPER_LEFT, GL_ZERO_TO_ONE);
-    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // D3D10+ filter across cube faces; D3D9 hardware did too
-    // nointerpolation (flat) values come from a primitive's first vertex on D3D, its last on GL.
-    glProvokingVertex(GL_FIRST_VERTEX_CONVENTION);
+    Backend& api = *impl_->backend;
+    api.adoptD3DConventions();
 
     impl_->internalBuffer = impl_->createBuffer();
-    glNamedBufferStorage(impl_->internalBuffer, sizeof(float) * 4, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    api.allocateBuffer(impl_->internalBuffer, sizeof(float) * 4, nullptr, false);
     for (int stage = 0; stage < kUniformStages; ++stage)
-        glBindBufferBase(GL_UNIFORM_BUFFER, GLuint(uniformBindingFor(stage, kInternalBlockBinding)), impl_->internalBuffer);
+        api.bindUniformBuffer(uniformBindingFor(stage, kInternalBlockBinding), impl_->internalBuffer);
 
     impl_->backBuffer = std::make_unique<RenderTarget2D>(*this, parameters_.BackBufferWidth, parameters_.BackBufferHeight,
                                                           false, parameters_.BackBufferFormat,
@@ -175,9 +183,10 @@ GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters)
     if (compute && !forced)
         std::cerr << "fxport: FXPORT_COMPUTE_PASSES='" << compute
                   << "' is not 1 or 0; PresentationParameters::ComputePasses decides\n";
-    const bool computePasses = forced ? std::string(compute) == "1"
-                               : parameters_.ComputePasses ? *parameters_.ComputePasses
-                                                           : computePassesAreFaster(*this);
+    // Compute passes are the GL backend's own (gl/passes/) and need its context.
+    const bool computePasses = context_ && (forced                          ? std::string(compute) == "1"
+                                            : parameters_.ComputePasses ? *parameters_.ComputePasses
+                                                                        : computePassesAreFaster(*this));
     if (computePasses) impl_->computePasses = std::make_shared<ComputePasses>(*impl_);
 }
 
@@ -205,7 +214,7 @@ void GraphicsDevice::Reset(const fxport::PresentationParameters& parameters) {
 GraphicsDevice::~GraphicsDevice() {
     // Resources the program still holds are disposed now (their GL objects die with the context)
     // and cut loose, so their destructors later do not reach a dead device.
-    context_->makeCurrent();
+    if (context_) context_->makeCurrent();
     impl_->backBuffer.reset();
     std::vector<GraphicsResource*> remaining = impl_->resources;
     for (GraphicsResource* r : remaining) r->Dispose();
@@ -219,7 +228,7 @@ GraphicsDevice::~GraphicsDevice() {
 }
 
 void GraphicsDevice::makeCurrent() {
-    context_->makeCurrent();
+    if (context_) context_->makeCurrent();
     auto& devices = liveDevices();
     devices.erase(std::remove(devices.begin(), devices.end(), this), devices.end());
     devices.push_back(this);
@@ -227,13 +236,9 @@ void GraphicsDevice::makeCurrent() {
 
 GraphicsDevice* GraphicsDevice::current() { return liveDevices().empty() ? nullptr : liveDevices().back(); }
 
-std::string GraphicsDevice::rendererName() const { return context_->rendererName(); }
+std::string GraphicsDevice::rendererName() const { return context_ ? context_->rendererName() : "no context (a device over a test backend)"; }
 
-int GraphicsDevice::maxTextureSize() const {
-    GLint size = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &size);
-    return size;
-}
+int GraphicsDevice::maxTextureSize() const { return impl_->backend->maxTextureSize(); }
 
 GpuObjectCounts GraphicsDevice::liveGpuObjects() const { return impl_->live; }
 
@@ -243,7 +248,7 @@ ComputePassStatistics GraphicsDevice::computePassStatistics() const {
     return impl_->computePasses ? impl_->computePasses->currentStatistics() : ComputePassStatistics{};
 }
 
-void GraphicsDevice::finish() { glFinish(); }
+void GraphicsDevice::finish() { impl_->backend->finish(); }
 
 // --- render targets
 
@@ -383,7 +388,7 @@ void GraphicsDevice::Impl::generateMipsOfUnboundTargets(const std::vector<Render
     // XNA regenerates a mipmapped render target's chain when it stops being a target.
     for (const RenderTargetBinding& b : previous) {
         if (!b.RenderTarget || b.RenderTarget->LevelCount() <= 1 || b.RenderTarget->IsDisposed()) continue;
-        if (std::find(targets.begin(), targets.end(), b) == targets.end()) glGenerateTextureMipmap(b.RenderTarget->glName());
+        if (std::find(targets.begin(), targets.end(), b) == targets.end()) backend->generateMipmaps(b.RenderTarget->glName());
     }
 }
 
@@ -392,7 +397,7 @@ void GraphicsDevice::Impl::bindTargets() {
     if (bindings.empty()) bindings.push_back(RenderTargetBinding(backBuffer.get()));
     Texture* first = bindings[0].RenderTarget;
     TargetInfo info = targetInfo(first);
-    GLuint depth = depthOverride ? depthOverride->renderbuffer : info.depth;
+    BackendObject depth = depthOverride ? depthOverride->renderbuffer : info.depth;
     DepthFormat depthFormat = depthOverride ? depthOverride->format : info.depthFormat;
     std::vector<std::uint64_t> key;
     for (const RenderTargetBinding& b : bindings)
@@ -402,53 +407,38 @@ void GraphicsDevice::Impl::bindTargets() {
     targetWidth = info.width;
     targetHeight = info.height;
     auto it = framebuffers.find(key);
-    GLuint fbo = 0;
+    BackendObject fbo = 0;
     if (it != framebuffers.end()) {
         fbo = it->second;
     } else {
-        glCreateFramebuffers(1, &fbo);
-        ++live.framebuffers;
-        std::vector<GLenum> drawBuffers;
-        for (std::size_t i = 0; i < bindings.size(); ++i) {
-            GLenum attachment = GLenum(GL_COLOR_ATTACHMENT0 + i);
-            const RenderTargetBinding& b = bindings[i];
-            if (b.RenderTarget->kind() == Texture::Kind::TextureCube)
-                glNamedFramebufferTextureLayer(fbo, attachment, b.RenderTarget->glName(), 0, GLint(b.CubeMapFace));
-            else
-                glNamedFramebufferTexture(fbo, attachment, b.RenderTarget->glName(), 0);
-            drawBuffers.push_back(attachment);
-        }
-        glNamedFramebufferDrawBuffers(fbo, GLsizei(drawBuffers.size()), drawBuffers.data());
-        if (depth != 0)
-            glNamedFramebufferRenderbuffer(fbo, depthFormat == DepthFormat::Depth24Stencil8 ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
-                                           GL_RENDERBUFFER, depth);
-        GLenum status = glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER);
-        if (status != GL_FRAMEBUFFER_COMPLETE) {
-            glDeleteFramebuffers(1, &fbo);
-            --live.framebuffers;
+        std::vector<ColorAttachment> colour;
+        for (const RenderTargetBinding& b : bindings)
+            colour.push_back({b.RenderTarget->glName(), b.RenderTarget->kind() == Texture::Kind::TextureCube ? int(b.CubeMapFace) : -1});
+        std::string problem;
+        fbo = backend->createFramebuffer(colour, depth, depthFormat == DepthFormat::Depth24Stencil8, problem);
+        if (fbo == 0)
             throw InvalidOperation("GraphicsDevice.SetRenderTargets: the driver rejects this combination of targets (" +
-                                   std::string(surfaceFormatName(first->Format())) + ", framebuffer status 0x" +
-                                   std::to_string(status) + ")");
-        }
+                                   std::string(surfaceFormatName(first->Format())) + ", " + problem + ")");
+        ++live.framebuffers;
         framebuffers.emplace(key, fbo);
     }
     if (fbo != boundFramebuffer) {
-        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+        backend->bindFramebuffer(fbo);
         boundFramebuffer = fbo;
     }
 }
 
-void GraphicsDevice::Impl::dropFramebuffersUsing(GLuint texture) {
+void GraphicsDevice::Impl::dropFramebuffersUsing(BackendObject texture) {
     for (auto it = framebuffers.begin(); it != framebuffers.end();) {
         bool uses = std::any_of(it->first.begin(), it->first.end(), [&](std::uint64_t k) {
-            return (k & 0xff) != 0xff && GLuint(k >> 8) == texture;
+            return (k & 0xff) != 0xff && BackendObject(k >> 8) == texture;
         });
         if (uses) {
             if (boundFramebuffer == it->second) {
-                glBindFramebuffer(GL_FRAMEBUFFER, 0);
+                backend->bindFramebuffer(0);
                 boundFramebuffer = 0;
             }
-            glDeleteFramebuffers(1, &it->second);
+            backend->deleteFramebuffer(it->second);
             --live.framebuffers;
             it = framebuffers.erase(it);
         } else {
@@ -511,12 +501,12 @@ void GraphicsDevice::DrawIndexedPrimitives(PrimitiveType primitiveType, int base
     Impl::VertexArray& va = d.bindVertexBuffer();
     if (va.elements != Indices->glName()) {
         va.elements = Indices->glName();
-        glVertexArrayElementBuffer(va.vao, va.elements);
+        d.backend->setIndexBuffer(va.vao, va.elements);
     }
     const bool wide = Indices->IndexElementSize() == IndexElementSize::ThirtyTwoBits;
-    const DrawCall draw{glPrimitive(primitiveType), count, startIndex, true, baseVertex, wide ? 4 : 2};
+    const DrawCall draw{primitiveType, 0, count, startIndex, true, baseVertex, wide ? 4 : 2};
     if (d.computePasses && d.computePasses->tryDraw(primitiveType, primitiveCount, draw)) return;
-    draw.issue();
+    d.backend->draw(draw);
 }
 
 void GraphicsDevice::DrawPrimitives(PrimitiveType primitiveType, int vertexStart, int primitiveCount) {
@@ -530,30 +520,30 @@ void GraphicsDevice::DrawPrimitives(PrimitiveType primitiveType, int vertexStart
                             std::to_string(d.vertexBuffer->VertexCount()) + " vertices");
     d.flush("DrawPrimitives");
     d.bindVertexBuffer();
-    const DrawCall draw{glPrimitive(primitiveType), count, vertexStart};
+    const DrawCall draw{primitiveType, 0, count, vertexStart};
     if (d.computePasses && d.computePasses->tryDraw(primitiveType, primitiveCount, draw)) return;
-    draw.issue();
+    d.backend->draw(draw);
 }
 
 GraphicsDevice::Impl::VertexArray& GraphicsDevice::Impl::bindVertexBuffer() {
     const VertexDeclaration& declaration = vertexBuffer->VertexDeclaration();
     VertexArray& va = vertexArrayFor(declaration);
-    GLintptr offset = GLintptr(vertexOffset) * declaration.VertexStride();
+    const std::int64_t offset = std::int64_t(vertexOffset) * declaration.VertexStride();
     if (va.buffer != vertexBuffer->glName() || va.offset != offset || va.stride != declaration.VertexStride()) {
         va.buffer = vertexBuffer->glName();
         va.offset = offset;
         va.stride = declaration.VertexStride();
-        glVertexArrayVertexBuffer(va.vao, 0, va.buffer, va.offset, va.stride);
+        backend->setVertexBuffer(va.vao, 0, va.buffer, std::size_t(va.offset), va.stride);
     }
     return va;
 }
 
-void GraphicsDevice::Impl::streamUserData(GLuint& buffer, GLsizeiptr& capacity, const void* data, GLsizeiptr bytes) {
+void GraphicsDevice::Impl::streamUserData(BackendObject& buffer, std::size_t& capacity, const void* data, std::size_t bytes) {
     if (buffer == 0) buffer = createBuffer();
     // Orphan: a fresh store each time, so the driver never waits for the previous draw.
-    if (bytes > capacity) capacity = std::max<GLsizeiptr>(bytes, 64 * 1024);
-    glNamedBufferData(buffer, capacity, nullptr, GL_STREAM_DRAW);
-    glNamedBufferSubData(buffer, 0, bytes, data);
+    if (bytes > capacity) capacity = std::max<std::size_t>(bytes, 64 * 1024);
+    backend->orphanBuffer(buffer, capacity);
+    backend->writeBuffer(buffer, 0, bytes, data);
 }
 
 void GraphicsDevice::drawUser(PrimitiveType type, const void* vertices, std::size_t stride,
@@ -566,16 +556,16 @@ void GraphicsDevice::drawUser(PrimitiveType type, const void* vertices, std::siz
                             " bytes, its declaration's stride is " + std::to_string(declaration.VertexStride()));
     d.flush("DrawUserPrimitives");
     int count = vertexCountFor(type, primitiveCount);
-    d.streamUserData(d.userVertices, d.userVerticesSize, vertices, GLsizeiptr(count) * GLsizeiptr(stride));
+    d.streamUserData(d.userVertices, d.userVerticesSize, vertices, std::size_t(count) * stride);
     Impl::VertexArray& va = d.vertexArrayFor(declaration);
     va.buffer = d.userVertices;
     va.offset = 0;
-    va.stride = GLsizei(stride);
-    glVertexArrayVertexBuffer(va.vao, 0, va.buffer, 0, va.stride);
-    DrawCall draw{glPrimitive(type), count, 0};
+    va.stride = int(stride);
+    d.backend->setVertexBuffer(va.vao, 0, va.buffer, 0, va.stride);
+    DrawCall draw{type, 0, count, 0};
     if (d.computePasses && primitiveCount <= 2) draw.userDataHash = hashBytes(vertices, std::size_t(count) * stride);
     if (d.computePasses && d.computePasses->tryDraw(type, primitiveCount, draw)) return;
-    draw.issue();
+    d.backend->draw(draw);
 }
 
 void GraphicsDevice::drawUserIndexed(PrimitiveType type, const void* vertices, std::size_t stride, int vertexCount,
@@ -598,26 +588,27 @@ void GraphicsDevice::drawUserIndexed(PrimitiveType type, const void* vertices, s
                                 std::to_string(vertexCount) + " vertices given");
     }
     d.flush("DrawUserIndexedPrimitives");
-    d.streamUserData(d.userVertices, d.userVerticesSize, vertices, GLsizeiptr(vertexCount) * GLsizeiptr(stride));
-    d.streamUserData(d.userIndices, d.userIndicesSize, indices, GLsizeiptr(count) * indexSize);
+    d.streamUserData(d.userVertices, d.userVerticesSize, vertices, std::size_t(vertexCount) * stride);
+    d.streamUserData(d.userIndices, d.userIndicesSize, indices, std::size_t(count) * std::size_t(indexSize));
     Impl::VertexArray& va = d.vertexArrayFor(declaration);
     va.buffer = d.userVertices;
     va.offset = 0;
-    va.stride = GLsizei(stride);
-    glVertexArrayVertexBuffer(va.vao, 0, va.buffer, 0, va.stride);
+    va.stride = int(stride);
+    d.backend->setVertexBuffer(va.vao, 0, va.buffer, 0, va.stride);
     va.elements = d.userIndices;
-    glVertexArrayElementBuffer(va.vao, va.elements);
-    DrawCall draw{glPrimitive(type), count, 0, true, 0, indexSize};
+    d.backend->setIndexBuffer(va.vao, va.elements);
+    DrawCall draw{type, 0, count, 0, true, 0, indexSize};
     if (d.computePasses && primitiveCount <= 2)
         draw.userDataHash = hashBytes(indices, std::size_t(count) * std::size_t(indexSize),
                                       hashBytes(vertices, std::size_t(vertexCount) * stride));
     if (d.computePasses && d.computePasses->tryDraw(type, primitiveCount, draw)) return;
-    draw.issue();
+    d.backend->draw(draw);
 }
 
 // --- presentation and read-back
 
 void GraphicsDevice::Present() {
+    if (!context_) return;
     if (context_->platform() == platform::Platform::GLFW) {
         // The back buffer is stored top row first; the window's row 0 is the bottom: flip once here.
         impl_->resolvePendingClearBeforeRead(impl_->backBuffer.get());
@@ -625,7 +616,7 @@ void GraphicsDevice::Present() {
         impl_->targets.clear();
         impl_->bindTargets();
         int w = parameters_.BackBufferWidth, h = parameters_.BackBufferHeight;
-        glBlitNamedFramebuffer(impl_->boundFramebuffer, 0, 0, 0, w, h, 0, h, w, 0, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        impl_->backend->presentFlipped(impl_->boundFramebuffer, w, h);
         impl_->targets = bound;
         impl_->bindTargets();
     }
@@ -645,53 +636,50 @@ void GraphicsDevice::SaveBackBufferAsPng(const std::string& path) const { impl_-
 
 // --- GL object bookkeeping
 
-GLuint GraphicsDevice::Impl::createTexture(GLenum target) {
-    GLuint name = 0;
-    glCreateTextures(target, 1, &name);
+BackendObject GraphicsDevice::Impl::createTexture(bool cube, SurfaceFormat format, int levels, int width, int height) {
+    const BackendObject name = backend->createTexture(cube, format, levels, width, height);
     ++live.textures;
     return name;
 }
-void GraphicsDevice::Impl::deleteTexture(GLuint& name) {
+void GraphicsDevice::Impl::deleteTexture(BackendObject& name) {
     if (!name) return;
     for (int unit = 0; unit < kMaxTextureSlots; ++unit)
         if (boundTextures[std::size_t(unit)] == name) boundTextures[std::size_t(unit)] = 0;
-    glDeleteTextures(1, &name);
+    backend->deleteTexture(name);
     --live.textures;
     name = 0;
 }
-GLuint GraphicsDevice::Impl::createBuffer() {
-    GLuint name = 0;
-    glCreateBuffers(1, &name);
+BackendObject GraphicsDevice::Impl::createBuffer() {
+    const BackendObject name = backend->createBuffer();
     ++live.buffers;
     return name;
 }
-void GraphicsDevice::Impl::deleteBuffer(GLuint& name) {
+void GraphicsDevice::Impl::deleteBuffer(BackendObject& name) {
     if (!name) return;
-    for (GLuint& b : boundUniformBuffers)
+    for (BackendObject& b : boundUniformBuffers)
         if (b == name) b = 0;
-    for (GLuint& b : wantedUniformBuffers)
+    for (BackendObject& b : wantedUniformBuffers)
         if (b == name) b = 0;
     for (auto& [key, va] : vertexArrays) {
         if (va.buffer == name) va.buffer = 0, va.offset = -1;
         if (va.elements == name) va.elements = 0;
     }
-    glDeleteBuffers(1, &name);
+    backend->deleteBuffer(name);
     --live.buffers;
     name = 0;
 }
-GLuint GraphicsDevice::Impl::createRenderbuffer() {
-    GLuint name = 0;
-    glCreateRenderbuffers(1, &name);
+BackendObject GraphicsDevice::Impl::createRenderbuffer() {
+    const BackendObject name = backend->createRenderbuffer();
     ++live.renderbuffers;
     return name;
 }
-void GraphicsDevice::Impl::deleteRenderbuffer(GLuint& name) {
+void GraphicsDevice::Impl::deleteRenderbuffer(BackendObject& name) {
     if (!name) return;
-    glDeleteRenderbuffers(1, &name);
+    backend->deleteRenderbuffer(name);
     --live.renderbuffers;
     name = 0;
 }
-GLuint GraphicsDevice::Impl::createProgram(GLenum stage, const std::string& source, const std::string& label) {
+BackendObject GraphicsDevice::Impl::createProgram(int stage, const std::string& source, const std::string& label) {
     // Identical GLSL for the same stage shares one program (a model's per-part material effects,
     // the same effect loaded twice): effects hold references, the last release deletes it.
     auto cached = programCache.find({stage, source});
@@ -699,37 +687,15 @@ GLuint GraphicsDevice::Impl::createProgram(GLenum stage, const std::string& sour
         ++cached->second.references;
         return cached->second.program;
     }
-    const char* text = source.c_str();
-    GLuint program = glCreateShaderProgramv(stage, 1, &text);
-    GLint ok = 0;
-    glGetProgramiv(program, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        GLint length = 0;
-        glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
-        std::string log(std::size_t(std::max(length, 1)), '\0');
-        glGetProgramInfoLog(program, GLsizei(log.size()), nullptr, log.data());
-        glDeleteProgram(program);
-        throw InvalidOperation(label + ": the GL driver rejected the translated shader:\n" + log);
-    }
-    // D3D has constant slots per stage: each block moves to this stage's range (device_impl.h).
-    moveUniformBlocksToStage(program, stage == GL_VERTEX_SHADER ? 0 : stage == GL_FRAGMENT_SHADER ? 1 : stage == GL_GEOMETRY_SHADER ? 2
-                                      : stage == GL_TESS_CONTROL_SHADER ? kHullStage : stage == GL_TESS_EVALUATION_SHADER ? kDomainStage
-                                                                                                                           : kComputeStage);
+    std::string log;
+    const BackendObject program = backend->createProgram(stage, source, log);
+    if (!program) throw InvalidOperation(label + ": the GL driver rejected the translated shader:\n" + log);
     ++live.programs;
     programCache.emplace(std::make_pair(stage, source), CachedProgram{program, 1});
     return program;
 }
-void moveUniformBlocksToStage(GLuint program, int stage) {
-    GLint blockCount = 0;
-    glGetProgramiv(program, GL_ACTIVE_UNIFORM_BLOCKS, &blockCount);
-    for (GLint i = 0; i < blockCount; ++i) {
-        GLint binding = 0;
-        glGetActiveUniformBlockiv(program, GLuint(i), GL_UNIFORM_BLOCK_BINDING, &binding);
-        glUniformBlockBinding(program, GLuint(i), GLuint(uniformBindingFor(stage, binding)));
-    }
-}
 
-void GraphicsDevice::Impl::deleteProgram(GLuint& name) {
+void GraphicsDevice::Impl::deleteProgram(BackendObject& name) {
     if (!name) return;
     for (auto it = programCache.begin(); it != programCache.end(); ++it) {
         if (it->second.program != name) continue;
@@ -745,32 +711,31 @@ void GraphicsDevice::Impl::deleteProgram(GLuint& name) {
     dropVertexArraysUsing(name);
     for (auto& s : shaders)
         if (s && s->program == name) s = nullptr;
-    glDeleteProgram(name);
+    backend->deleteProgram(name);
     --live.programs;
     name = 0;
 }
-GLuint GraphicsDevice::Impl::createQuery(GLenum target) {
-    GLuint name = 0;
-    glCreateQueries(target, 1, &name);
+BackendObject GraphicsDevice::Impl::createQuery(QueryKind kind) {
+    const BackendObject name = backend->createQuery(kind);
     ++live.queries;
     return name;
 }
-void GraphicsDevice::Impl::deleteQuery(GLuint& name) {
+void GraphicsDevice::Impl::deleteQuery(BackendObject& name) {
     if (!name) return;
-    glDeleteQueries(1, &name);
+    backend->deleteQuery(name);
     --live.queries;
     name = 0;
 }
 
-void GraphicsDevice::Impl::dropPipelinesUsing(GLuint program) {
+void GraphicsDevice::Impl::dropPipelinesUsing(BackendObject program) {
     for (auto it = pipelines.begin(); it != pipelines.end();) {
         auto [vs, ps, gs, hs, ds] = it->first;
         if (vs == program || ps == program || gs == program || hs == program || ds == program) {
             if (boundPipeline == it->second) {
-                glBindProgramPipeline(0);
+                backend->bindPipeline(0);
                 boundPipeline = 0;
             }
-            glDeleteProgramPipelines(1, &it->second);
+            backend->deletePipeline(it->second);
             --live.pipelines;
             it = pipelines.erase(it);
         } else {
@@ -779,17 +744,17 @@ void GraphicsDevice::Impl::dropPipelinesUsing(GLuint program) {
     }
 }
 
-void GraphicsDevice::Impl::dropVertexArraysUsing(GLuint program) {
+void GraphicsDevice::Impl::dropVertexArraysUsing(BackendObject program) {
     std::string suffix = "|" + std::to_string(program);
     for (auto it = vertexArrays.begin(); it != vertexArrays.end();) {
         const std::string& key = it->first;
         if (key.size() >= suffix.size() && key.compare(key.size() - suffix.size(), suffix.size(), suffix) == 0) {
             if (boundVertexArray == it->second.vao) {
-                glBindVertexArray(0);
+                backend->bindVertexArray(0);
                 boundVertexArray = 0;
             }
             if (lastVertexArray.array == &it->second) lastVertexArray = {};
-            glDeleteVertexArrays(1, &it->second.vao);
+            backend->deleteVertexArray(it->second.vao);
             --live.vertexArrays;
             it = vertexArrays.erase(it);
         } else {
@@ -805,16 +770,16 @@ void GraphicsDevice::Impl::forget(GraphicsResource* resource) {
 void GraphicsDevice::Impl::releaseAll() {
     computePasses.reset();  // its programs and buffer, while the context is current
     fragmentTally.reset();  // its queries, likewise
-    glBindProgramPipeline(0);
-    glBindVertexArray(0);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    for (auto& [key, pipeline] : pipelines) glDeleteProgramPipelines(1, &pipeline), --live.pipelines;
+    backend->bindPipeline(0);
+    backend->bindVertexArray(0);
+    backend->bindFramebuffer(0);
+    for (auto& [key, pipeline] : pipelines) backend->deletePipeline(pipeline), --live.pipelines;
     pipelines.clear();
-    for (auto& [key, pipeline] : computePipelines) glDeleteProgramPipelines(1, &pipeline), --live.pipelines;
+    for (auto& [key, pipeline] : computePipelines) backend->deletePipeline(pipeline), --live.pipelines;
     computePipelines.clear();
-    for (auto& [key, va] : vertexArrays) glDeleteVertexArrays(1, &va.vao), --live.vertexArrays;
+    for (auto& [key, va] : vertexArrays) backend->deleteVertexArray(va.vao), --live.vertexArrays;
     vertexArrays.clear();
-    for (auto& [key, fbo] : framebuffers) glDeleteFramebuffers(1, &fbo), --live.framebuffers;
+    for (auto& [key, fbo] : framebuffers) backend->deleteFramebuffer(fbo), --live.framebuffers;
     framebuffers.clear();
     for (auto& [key, sampler] : samplerObjects) backend->deleteSampler(sampler);
     samplerObjects.clear();

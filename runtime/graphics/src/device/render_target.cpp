@@ -4,14 +4,13 @@
 
 #include "device/device_impl.h"
 #include "fxport/graphics/errors.h"
-#include "gl/gl_formats.h"
 
 namespace fxport {
 
 namespace {
 
-void checkRenderable(const std::string& who, SurfaceFormat format) {
-    if (!detail::isColorRenderable(format))
+void checkRenderable(GraphicsDevice& device, const std::string& who, SurfaceFormat format) {
+    if (!deviceImpl(device).backend->isColorRenderable(format))
         throw ArgumentError(who + ": SurfaceFormat::" + surfaceFormatName(format) +
                             " cannot be rendered to on OpenGL 4.5 core");
 }
@@ -45,7 +44,7 @@ RenderTarget2D::RenderTarget2D(fxport::GraphicsDevice& device, int width, int he
                                fxport::RenderTargetUsage usage)
     : Texture2D(device, "RenderTarget2D", width, height, mipMap, preferredFormat),
       usage_(usage) {
-    checkRenderable(describe(), preferredFormat);
+    checkRenderable(device, describe(), preferredFormat);
     adoptDepth(device, depth_, preferredDepthFormat, width, height);
 }
 
@@ -60,9 +59,9 @@ void RenderTarget2D::releaseGpuObjects() {
 std::vector<Vector4> RenderTarget2D::GetDataAsVector4() const {
     throwIfDisposed("GetDataAsVector4");
     std::vector<Vector4> texels(std::size_t(Width()) * std::size_t(Height()));
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    deviceImpl(device()).resolvePendingClearBeforeRead(this);
-    glGetTextureImage(name_, 0, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * sizeof(Vector4)), texels.data());
+    GraphicsDevice::Impl& d = deviceImpl(device());
+    d.resolvePendingClearBeforeRead(this);
+    d.backend->readTextureFloats(name_, -1, 0, texels.size() * sizeof(Vector4), texels.data());
     return texels;
 }
 
@@ -71,7 +70,7 @@ RenderTargetCube::RenderTargetCube(fxport::GraphicsDevice& device, int size, boo
                                    fxport::RenderTargetUsage usage)
     : TextureCube(device, "RenderTargetCube", size, mipMap, preferredFormat),
       usage_(usage) {
-    checkRenderable(describe(), preferredFormat);
+    checkRenderable(device, describe(), preferredFormat);
     adoptDepth(device, depth_, preferredDepthFormat, size, size);
 }
 
@@ -86,10 +85,9 @@ void RenderTargetCube::releaseGpuObjects() {
 std::vector<Vector4> RenderTargetCube::GetDataAsVector4(CubeMapFace face) const {
     throwIfDisposed("GetDataAsVector4");
     std::vector<Vector4> texels(std::size_t(Size()) * std::size_t(Size()));
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    deviceImpl(device()).resolvePendingClearBeforeRead(this);
-    glGetTextureSubImage(name_, 0, 0, 0, GLint(face), Size(), Size(), 1, GL_RGBA, GL_FLOAT,
-                         GLsizei(texels.size() * sizeof(Vector4)), texels.data());
+    GraphicsDevice::Impl& d = deviceImpl(device());
+    d.resolvePendingClearBeforeRead(this);
+    d.backend->readTextureFloats(name_, int(face), 0, texels.size() * sizeof(Vector4), texels.data());
     return texels;
 }
 

@@ -24,7 +24,7 @@ StructuredBuffer::StructuredBuffer(fxport::GraphicsDevice& device, int elementSt
     name_ = deviceImpl(device).createBuffer();
     // Zero-filled, as D3D11 leaves a buffer made without initial data (and shaders may read it first).
     std::vector<std::uint8_t> zeros(SizeInBytes(), 0);
-    glNamedBufferStorage(name_, GLsizeiptr(SizeInBytes()), zeros.data(), GL_DYNAMIC_STORAGE_BIT);
+    deviceImpl(device).backend->allocateBuffer(name_, SizeInBytes(), zeros.data(), false);
 }
 
 StructuredBuffer::~StructuredBuffer() { disposeFromDestructor(); }
@@ -49,16 +49,18 @@ void StructuredBuffer::setBytes(std::size_t offset, const void* data, std::size_
     throwIfDisposed("SetData");
     checkRange(describe(), "SetData", offset, bytes, SizeInBytes());
     if (bytes == 0) return;
-    deviceImpl(device()).storageBarrier();  // a shader's writes land before this upload replaces them
-    glNamedBufferSubData(name_, GLintptr(offset), GLsizeiptr(bytes), data);
+    GraphicsDevice::Impl& d = deviceImpl(device());
+    d.storageBarrier();  // a shader's writes land before this upload replaces them
+    d.backend->writeBuffer(name_, offset, bytes, data);
 }
 
 void StructuredBuffer::getBytes(std::size_t offset, void* data, std::size_t bytes) const {
     throwIfDisposed("GetData");
     checkRange(describe(), "GetData", offset, bytes, SizeInBytes());
     if (bytes == 0) return;
-    deviceImpl(device()).storageBarrier();  // what a dispatch or draw wrote is what GetData returns
-    glGetNamedBufferSubData(name_, GLintptr(offset), GLsizeiptr(bytes), data);
+    GraphicsDevice::Impl& d = deviceImpl(device());
+    d.storageBarrier();  // what a dispatch or draw wrote is what GetData returns
+    d.backend->readBuffer(name_, offset, bytes, data);
 }
 
 }  // namespace fxport

@@ -5,7 +5,6 @@
 #include <string>
 
 #include "device/device_impl.h"
-#include "gl/draw_call.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/vertex_buffer.h"
 
@@ -54,8 +53,7 @@ void GraphicsDevice::DrawPatches(int controlPoints, int vertexStart, int patchCo
         d.flush("DrawPatches");
     }
     d.bindVertexBuffer();
-    glPatchParameteri(GL_PATCH_VERTICES, controlPoints);
-    DrawCall{GL_PATCHES, int(count), vertexStart}.issue();
+    d.backend->draw(DrawCall{PrimitiveType::TriangleList, controlPoints, int(count), vertexStart});
 }
 
 void GraphicsDevice::DrawIndexedPatches(int controlPoints, int baseVertex, int startIndex, int patchCount) {
@@ -76,11 +74,10 @@ void GraphicsDevice::DrawIndexedPatches(int controlPoints, int baseVertex, int s
     Impl::VertexArray& va = d.bindVertexBuffer();
     if (va.elements != Indices->glName()) {
         va.elements = Indices->glName();
-        glVertexArrayElementBuffer(va.vao, va.elements);
+        d.backend->setIndexBuffer(va.vao, va.elements);
     }
     const bool wide = Indices->IndexElementSize() == IndexElementSize::ThirtyTwoBits;
-    glPatchParameteri(GL_PATCH_VERTICES, controlPoints);
-    DrawCall{GL_PATCHES, int(count), startIndex, true, baseVertex, wide ? 4 : 2}.issue();
+    d.backend->draw(DrawCall{PrimitiveType::TriangleList, controlPoints, int(count), startIndex, true, baseVertex, wide ? 4 : 2});
 }
 
 }  // namespace fxport

@@ -9,8 +9,8 @@
 #include "device/device_impl.h"
 #include "effect/effect_impl.h"
 #include "fxport/graphics/errors.h"
-#include "gl/gl_formats.h"
 #include "device/image_io.h"
+#include "device/surface_formats.h"
 
 namespace fxport {
 
@@ -32,21 +32,6 @@ void checkSize(fxport::GraphicsDevice& device, const char* type, int width, int 
                             " is outside 1.." + std::to_string(limit) + " (the driver's GL_MAX_TEXTURE_SIZE)");
 }
 
-// D3D9 returns 1 for the channels a format lacks (R32F reads (r,1,1,1)), GL returns 0 for green and
-// blue; Alpha8 reads (0,0,0,a) in D3D. Swizzles make GL read what the effects were written against.
-void applyD3D9Swizzle(GLuint name, SurfaceFormat format) {
-    int channels = detail::glFormat(format).channels;
-    if (format == SurfaceFormat::Alpha8) {
-        glTextureParameteri(name, GL_TEXTURE_SWIZZLE_R, GL_ZERO);
-        glTextureParameteri(name, GL_TEXTURE_SWIZZLE_G, GL_ZERO);
-        glTextureParameteri(name, GL_TEXTURE_SWIZZLE_B, GL_ZERO);
-        glTextureParameteri(name, GL_TEXTURE_SWIZZLE_A, GL_RED);
-        return;
-    }
-    if (channels <= 1) glTextureParameteri(name, GL_TEXTURE_SWIZZLE_G, GL_ONE);
-    if (channels <= 2) glTextureParameteri(name, GL_TEXTURE_SWIZZLE_B, GL_ONE);
-}
-
 }  // namespace
 
 Texture::Texture(fxport::GraphicsDevice& device, const char* typeName, Kind kind, SurfaceFormat format, int levels)
@@ -65,8 +50,7 @@ void Texture::releaseGpuObjects() {
 int Texture::levelWidth(int base, int level) const { return std::max(1, base >> level); }
 
 void Texture::writeTexels(int face, int level, int x, int y, int w, int h, const void* data, std::size_t bytes, std::size_t elementSize) {
-    const detail::GlTextureFormat& f = detail::glFormat(format_);
-    std::size_t expected = std::size_t(w) * std::size_t(h) * std::size_t(f.bytesPerPixel);
+    std::size_t expected = std::size_t(w) * std::size_t(h) * std::size_t(bytesPerPixel(format_));
     if (bytes != expected) {
         // In the caller's units: SetData(data, count) counts elements, not bytes.
         const std::string unit = elementSize > 1 ? " elements of " + std::to_string(elementSize) + " bytes" : " bytes";
@@ -76,25 +60,15 @@ void Texture::writeTexels(int face, int level, int x, int y, int w, int h, const
                             ", the region " + std::to_string(w) + "x" + std::to_string(h) + " of " + surfaceFormatName(format_) +
                             " needs " + needs);
     }
-    deviceImpl(device()).storageBarrier();  // after a shader's image writes, before this upload
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    if (face < 0)
-        glTextureSubImage2D(name_, level, x, y, w, h, f.format, f.type, data);
-    else
-        glTextureSubImage3D(name_, level, x, y, face, w, h, 1, f.format, f.type, data);
+    GraphicsDevice::Impl& d = deviceImpl(device());
+    d.storageBarrier();  // after a shader's image writes, before this upload
+    d.backend->writeTexture(name_, format_, face, level, Rectangle(x, y, w, h), data);
 }
 
 void Texture::readTexels(int face, int level, void* data, std::size_t bytes) const {
-    const detail::GlTextureFormat& f = detail::glFormat(format_);
-    deviceImpl(device()).resolvePendingClearBeforeRead(this);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    if (face < 0) {
-        glGetTextureImage(name_, level, f.format, f.type, GLsizei(bytes), data);
-    } else {
-        GLint size = 0;
-        glGetTextureLevelParameteriv(name_, level, GL_TEXTURE_WIDTH, &size);
-        glGetTextureSubImage(name_, level, 0, 0, face, size, size, 1, f.format, f.type, GLsizei(bytes), data);
-    }
+    GraphicsDevice::Impl& d = deviceImpl(device());
+    d.resolvePendingClearBeforeRead(this);
+    d.backend->readTexture(name_, format_, face, level, bytes, data);
 }
 
 // --- Texture2D
@@ -111,9 +85,7 @@ Texture2D::Texture2D(fxport::GraphicsDevice& device, const char* typeName, int w
 }
 
 void Texture2D::create(bool) {
-    name_ = deviceImpl(device()).createTexture(GL_TEXTURE_2D);
-    glTextureStorage2D(name_, levels_, detail::glFormat(format_).internalFormat, width_, height_);
-    applyD3D9Swizzle(name_, format_);
+    name_ = deviceImpl(device()).createTexture(false, format_, levels_, width_, height_);
 }
 
 Texture2D::~Texture2D() { disposeFromDestructor(); }
@@ -178,17 +150,17 @@ void Texture2D::SaveAsPng(const std::string& path) const { savePng(path, false);
 
 void Texture2D::savePng(const std::string& path, bool opaque) const {
     throwIfDisposed("SaveAsPng");
-    const detail::GlTextureFormat& f = detail::glFormat(format_);
-    // Read back as floats in GL's RGBA expansion, then quantise: one path for every format.
+    const int channels = channelCount(format_);
+    // Read back as floats in the backend's RGBA expansion, then quantise: one path for every format.
     std::vector<float> texels(std::size_t(width_) * std::size_t(height_) * 4);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    deviceImpl(device()).resolvePendingClearBeforeRead(this);
-    glGetTextureImage(name_, 0, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * sizeof(float)), texels.data());
+    GraphicsDevice::Impl& d = deviceImpl(device());
+    d.resolvePendingClearBeforeRead(this);
+    d.backend->readTextureFloats(name_, -1, 0, texels.size() * sizeof(float), texels.data());
     std::vector<std::uint8_t> rgba(texels.size());
     for (std::size_t i = 0; i < texels.size(); i += 4) {
         float c[4] = {texels[i], texels[i + 1], texels[i + 2], texels[i + 3]};
-        if (f.channels == 1) c[1] = c[2] = c[0], c[3] = 1;  // grey
-        if (f.channels == 2) c[2] = 0, c[3] = 1;
+        if (channels == 1) c[1] = c[2] = c[0], c[3] = 1;  // grey
+        if (channels == 2) c[2] = 0, c[3] = 1;
         if (format_ == SurfaceFormat::Alpha8) c[0] = c[1] = c[2] = c[3] = texels[i];
         if (opaque) c[3] = 1;
         for (int k = 0; k < 4; ++k) {
@@ -212,9 +184,7 @@ TextureCube::TextureCube(fxport::GraphicsDevice& device, const char* typeName, i
 }
 
 void TextureCube::create(bool) {
-    name_ = deviceImpl(device()).createTexture(GL_TEXTURE_CUBE_MAP);
-    glTextureStorage2D(name_, levels_, detail::glFormat(format_).internalFormat, size_, size_);
-    applyD3D9Swizzle(name_, format_);
+    name_ = deviceImpl(device()).createTexture(true, format_, levels_, size_, size_);
 }
 
 TextureCube::~TextureCube() { disposeFromDestructor(); }

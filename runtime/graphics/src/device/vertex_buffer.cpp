@@ -45,7 +45,7 @@ VertexBuffer::VertexBuffer(fxport::GraphicsDevice& device, const fxport::VertexD
                             std::to_string(declaration.VertexStride()) + " must both be positive");
     checkBufferSize(describe(), vertexCount, declaration.VertexStride());
     name_ = deviceImpl(device).createBuffer();
-    glNamedBufferStorage(name_, GLsizeiptr(vertexCount) * declaration.VertexStride(), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    deviceImpl(device).backend->allocateBuffer(name_, std::size_t(vertexCount) * std::size_t(declaration.VertexStride()), nullptr, false);
 }
 
 VertexBuffer::~VertexBuffer() { disposeFromDestructor(); }
@@ -60,14 +60,14 @@ void VertexBuffer::setData(int offsetInBytes, const void* data, std::size_t elem
     throwIfDisposed("SetData");
     std::size_t capacity = std::size_t(count_) * std::size_t(declaration_.VertexStride());
     std::size_t bytes = checkedRange(describe(), "SetData", offsetInBytes, elementSize, count, capacity);
-    glNamedBufferSubData(name_, offsetInBytes, GLsizeiptr(bytes), data);
+    deviceImpl(device()).backend->writeBuffer(name_, std::size_t(offsetInBytes), bytes, data);
 }
 
 void VertexBuffer::getData(void* data, std::size_t elementSize, std::size_t count) const {
     throwIfDisposed("GetData");
     std::size_t capacity = std::size_t(count_) * std::size_t(declaration_.VertexStride());
     std::size_t bytes = checkedRange(describe(), "GetData", 0, elementSize, count, capacity);
-    glGetNamedBufferSubData(name_, 0, GLsizeiptr(bytes), data);
+    deviceImpl(device()).backend->readBuffer(name_, 0, bytes, data);
 }
 
 IndexBuffer::IndexBuffer(fxport::GraphicsDevice& device, fxport::IndexElementSize elementSize, int indexCount,
@@ -76,7 +76,7 @@ IndexBuffer::IndexBuffer(fxport::GraphicsDevice& device, fxport::IndexElementSiz
     if (indexCount <= 0) throw ArgumentError(describe() + ": index count " + std::to_string(indexCount) + " must be positive");
     checkBufferSize(describe(), indexCount, elementBytes());
     name_ = deviceImpl(device).createBuffer();
-    glNamedBufferStorage(name_, GLsizeiptr(indexCount) * elementBytes(), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    deviceImpl(device).backend->allocateBuffer(name_, std::size_t(indexCount) * std::size_t(elementBytes()), nullptr, false);
 }
 
 IndexBuffer::~IndexBuffer() { disposeFromDestructor(); }
@@ -94,7 +94,7 @@ void IndexBuffer::setData(int offsetInBytes, const void* data, std::size_t eleme
                             std::to_string(elementBytes() * 8) + "-bit index buffer");
     std::size_t bytes = checkedRange(describe(), "SetData", offsetInBytes, elementSize, count,
                                      std::size_t(count_) * std::size_t(elementBytes()));
-    glNamedBufferSubData(name_, offsetInBytes, GLsizeiptr(bytes), data);
+    deviceImpl(device()).backend->writeBuffer(name_, std::size_t(offsetInBytes), bytes, data);
 }
 
 void IndexBuffer::getData(void* data, std::size_t elementSize, std::size_t count) const {
@@ -104,7 +104,7 @@ void IndexBuffer::getData(void* data, std::size_t elementSize, std::size_t count
                             std::to_string(elementBytes() * 8) + "-bit index buffer");
     std::size_t bytes = checkedRange(describe(), "GetData", 0, elementSize, count,
                                      std::size_t(count_) * std::size_t(elementBytes()));
-    glGetNamedBufferSubData(name_, 0, GLsizeiptr(bytes), data);
+    deviceImpl(device()).backend->readBuffer(name_, 0, bytes, data);
 }
 
 std::vector<std::uint32_t> IndexBuffer::GetIndices() const {

@@ -4,7 +4,7 @@
 
 #include "fxport/graphics/graphics_device.h"
 #include "fxport/graphics/render_target.h"
-#include "gl/gl_formats.h"
+#include "device/surface_formats.h"
 
 namespace fxport {
 
@@ -64,8 +64,7 @@ std::vector<NonFiniteTarget> FiniteCheck::endPass() {
     for (const RenderTargetBinding& b : device_.targetsBoundSinceMark()) {
         const Texture& t = *b.RenderTarget;
         if (t.IsDisposed()) continue;
-        const detail::GlTextureFormat& format = detail::glFormat(t.Format());
-        if (!format.isFloat) {
+        if (!isFloatFormat(t.Format())) {
             ++skipped_;
             continue;
         }
@@ -84,7 +83,7 @@ std::vector<NonFiniteTarget> FiniteCheck::endPass() {
         }
         static_assert(sizeof(Vector4) == 4 * sizeof(float), "Vector4 is four packed floats");
         NonFiniteTarget result;
-        if (!findNonFinite(&texels[0].X, width, height, format.channels, result)) continue;
+        if (!findNonFinite(&texels[0].X, width, height, channelCount(t.Format()), result)) continue;
         result.pass = pass_;
         result.target = targetLabel(t);
         result.face = cube ? int(b.CubeMapFace) : -1;

@@ -20,28 +20,22 @@ void FragmentRuns::beforeDraw(const xlate::TextureFetches& fetches) {
     }
     Run run;
     run.fetches = fetches;
-    run.query = device_.createQuery(GL_SAMPLES_PASSED);
-    glBeginQuery(GL_SAMPLES_PASSED, run.query);
+    run.query = device_.createQuery(QueryKind::SamplesPassed);
+    device_.backend->beginSamplesPassed(run.query);
     runs_.push_back(run);
     open_ = true;
 }
 
 void FragmentRuns::end() {
     if (!open_) return;
-    glEndQuery(GL_SAMPLES_PASSED);
+    device_.backend->endSamplesPassed();
     open_ = false;
 }
 
 void FragmentRuns::read(Run& run, bool wait) {
     if (!run.query) return;
-    if (!wait) {
-        GLint ready = 0;
-        glGetQueryObjectiv(run.query, GL_QUERY_RESULT_AVAILABLE, &ready);
-        if (!ready) return;
-    }
-    GLuint64 fragments = 0;
-    glGetQueryObjectui64v(run.query, GL_QUERY_RESULT, &fragments);
-    run.fragments = double(fragments);
+    if (!wait && !device_.backend->queryReady(run.query)) return;
+    run.fragments = double(device_.backend->queryResult(run.query));
     device_.deleteQuery(run.query);  // results are kept, queries are not: a long run holds few
 }
 

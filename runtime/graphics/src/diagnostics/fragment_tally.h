@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "fxport/graphics/graphics_device.h"
-#include "fxport/platform/gl.h"
+#include "device/backend.h"
 #include "fxport/xlate/texture_fetches.h"
 
 namespace fxport {
@@ -26,7 +26,7 @@ public:
 private:
     struct Run {
         xlate::TextureFetches fetches;
-        GLuint query = 0;      // 0 once its result is read
+        BackendObject query = 0;      // 0 once its result is read
         double fragments = 0;  // the result, once read
     };
     void end();

@@ -9,9 +9,9 @@ namespace fxport {
 
 struct GpuTimer::Pending {
     int section = 0;
-    GLuint begin = 0;
-    GLuint end = 0;
-    GLuint samples = 0;  // GL_SAMPLES_PASSED, 0 when not counted
+    BackendObject begin = 0;
+    BackendObject end = 0;
+    BackendObject samples = 0;  // GL_SAMPLES_PASSED, 0 when not counted
 };
 
 namespace {
@@ -30,7 +30,7 @@ double GpuTimer::Section::medianFragments() const { return median(fragments); }
 GpuTimer::GpuTimer(GraphicsDevice& device) : device_(device) {}
 
 GpuTimer::~GpuTimer() {
-    for (GLuint& q : allQueries_) deviceImpl(device_).deleteQuery(q);
+    for (BackendObject& q : allQueries_) deviceImpl(device_).deleteQuery(q);
     for (auto& p : pending_)
         if (p->samples) deviceImpl(device_).deleteQuery(p->samples);
     for (auto& p : open_)
@@ -39,11 +39,11 @@ GpuTimer::~GpuTimer() {
 
 std::uint32_t GpuTimer::newQuery() {
     if (!freeQueries_.empty()) {
-        GLuint q = freeQueries_.back();
+        BackendObject q = freeQueries_.back();
         freeQueries_.pop_back();
         return q;
     }
-    GLuint q = deviceImpl(device_).createQuery(GL_TIMESTAMP);
+    BackendObject q = deviceImpl(device_).createQuery(QueryKind::Timestamp);
     allQueries_.push_back(q);
     return q;
 }
@@ -58,16 +58,16 @@ int GpuTimer::sectionIndex(const std::string& name) {
 void GpuTimer::Begin(const std::string& name) {
     if (open_.empty() && frameStart_ == 0) {
         frameStart_ = newQuery();
-        glQueryCounter(frameStart_, GL_TIMESTAMP);
+        deviceImpl(device_).backend->writeTimestamp(frameStart_);
     }
     auto p = std::make_unique<Pending>();
     p->section = sectionIndex(name);
     if (countFragments_ && open_.empty() && !deviceImpl(device_).fragmentTally) {
-        p->samples = deviceImpl(device_).createQuery(GL_SAMPLES_PASSED);
-        glBeginQuery(GL_SAMPLES_PASSED, p->samples);
+        p->samples = deviceImpl(device_).createQuery(QueryKind::SamplesPassed);
+        deviceImpl(device_).backend->beginSamplesPassed(p->samples);
     }
     p->begin = newQuery();
-    glQueryCounter(p->begin, GL_TIMESTAMP);
+    deviceImpl(device_).backend->writeTimestamp(p->begin);
     open_.push_back(std::move(p));
 }
 
@@ -76,8 +76,8 @@ void GpuTimer::End() {
     std::unique_ptr<Pending> p = std::move(open_.back());
     open_.pop_back();
     p->end = newQuery();
-    glQueryCounter(p->end, GL_TIMESTAMP);
-    if (p->samples) glEndQuery(GL_SAMPLES_PASSED);
+    deviceImpl(device_).backend->writeTimestamp(p->end);
+    if (p->samples) deviceImpl(device_).backend->endSamplesPassed();
     pending_.push_back(std::move(p));
 }
 
@@ -88,7 +88,7 @@ void GpuTimer::EndFrame() {
         p->section = sectionIndex("frame");
         p->begin = frameStart_;
         p->end = newQuery();
-        glQueryCounter(p->end, GL_TIMESTAMP);
+        deviceImpl(device_).backend->writeTimestamp(p->end);
         pending_.push_back(std::move(p));
         frameStart_ = 0;
     }
@@ -102,19 +102,12 @@ void GpuTimer::collect(bool wait) {
     std::size_t done = 0;
     for (; done < pending_.size(); ++done) {
         Pending& p = *pending_[done];
-        GLint ready = 0;
-        if (!wait) {
-            glGetQueryObjectiv(p.end, GL_QUERY_RESULT_AVAILABLE, &ready);
-            if (!ready) break;
-        }
-        GLuint64 t0 = 0, t1 = 0;
-        glGetQueryObjectui64v(p.begin, GL_QUERY_RESULT, &t0);
-        glGetQueryObjectui64v(p.end, GL_QUERY_RESULT, &t1);
+        Backend& backend = *deviceImpl(device_).backend;
+        if (!wait && !backend.queryReady(p.end)) break;
+        const std::uint64_t t0 = backend.queryResult(p.begin), t1 = backend.queryResult(p.end);
         sections_[std::size_t(p.section)].milliseconds.push_back(double(t1 - t0) * 1e-6);
         if (p.samples) {
-            GLuint64 fragments = 0;
-            glGetQueryObjectui64v(p.samples, GL_QUERY_RESULT, &fragments);
-            sections_[std::size_t(p.section)].fragments.push_back(double(fragments));
+            sections_[std::size_t(p.section)].fragments.push_back(double(backend.queryResult(p.samples)));
             deviceImpl(device_).deleteQuery(p.samples);
         }
         freeQueries_.push_back(p.begin);

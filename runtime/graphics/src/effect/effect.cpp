@@ -28,17 +28,6 @@ std::vector<EffectAnnotation> annotationsOf(const std::vector<xlate::Annotation>
     return out;
 }
 
-GLenum glStage(xlate::ShaderStage stage) {
-    switch (stage) {
-    case xlate::ShaderStage::Vertex: return GL_VERTEX_SHADER;
-    case xlate::ShaderStage::Pixel: return GL_FRAGMENT_SHADER;
-    case xlate::ShaderStage::Geometry: return GL_GEOMETRY_SHADER;
-    case xlate::ShaderStage::Hull: return GL_TESS_CONTROL_SHADER;
-    case xlate::ShaderStage::Domain: return GL_TESS_EVALUATION_SHADER;
-    case xlate::ShaderStage::Compute: return GL_COMPUTE_SHADER;
-    }
-    return GL_VERTEX_SHADER;
-}
 
 int stageIndex(xlate::ShaderStage stage) {
     switch (stage) {
@@ -339,7 +328,7 @@ void Effect::Impl::adoptLayouts(const xlate::CompiledEffect& code, GraphicsDevic
         block.constants = std::move(moved);
         block.provisional = false;
         block.buffer = device.createBuffer();
-        glNamedBufferStorage(block.buffer, real.size, nullptr, GL_DYNAMIC_STORAGE_BIT);
+        device.backend->allocateBuffer(block.buffer, std::size_t(real.size), nullptr, false);
         block.constants.markDirty(0, real.size);
     }
     for (std::size_t b = 0; b < blocks.size(); ++b)
@@ -360,7 +349,7 @@ Effect::Impl::Code& Effect::Impl::addCode(std::shared_ptr<const xlate::CompiledE
             p.shader = &shader;
             p.label = displayName + ": " + shader.entryPoint + " (" + shader.profile.name + ")";
             p.mayDiscard = shader.glsl.find("discard") != std::string::npos;
-            p.program = device.createProgram(glStage(shader.profile.stage), shader.glsl, p.label);
+            p.program = device.createProgram(int(shader.profile.stage), shader.glsl, p.label);
             code->programs.push_back(p);
             code->reads.push_back(blockReadsOf(shader, blocks.size()));
             code->samplers.push_back(samplerSlotsOf(shader, *this));

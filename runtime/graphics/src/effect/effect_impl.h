@@ -51,7 +51,7 @@ struct Effect::Impl {
     EffectOptions options;
 
     struct Block {
-        GLuint buffer = 0;  // 0 while the layout is provisional
+        BackendObject buffer = 0;  // 0 while the layout is provisional
         int binding = 0;
         bool provisional = true;
         ConstantBlock constants;  // the CPU shadow and its dirty range

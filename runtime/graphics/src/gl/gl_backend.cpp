@@ -1,12 +1,12 @@
-// The OpenGL 4.5 backend (device/backend.h): XNA's state descriptions in GL's words. The device's
-// StateShadow decides whether a state is sent; here each set* compares with the state it was last
-// given (`had`, null: set every field) and calls GL only for the fields that differ.
+// The OpenGL 4.5 backend's state setting (gl_backend.h): XNA's state descriptions in GL's words.
+// The device's StateShadow decides whether a state is sent; here each set* compares with the state
+// it was last given (`had`, null: set every field) and calls GL only for the fields that differ.
 #include <algorithm>
 #include <array>
 
-#include "device/backend.h"
+#include "gl/gl_backend.h"
+
 #include "device/sampler_filter.h"
-#include "fxport/platform/gl.h"
 
 namespace fxport {
 
@@ -99,32 +99,6 @@ void applyCull(CullMode mode) {
     glCullFace(mode == CullMode::CullCounterClockwiseFace ? GL_BACK : GL_FRONT);
 }
 
-class GlBackend final : public Backend {
-public:
-    void setBlend(const BlendState& state, const BlendState* had) override;
-    void setDepthStencil(const DepthStencilState& state, const DepthStencilState* had) override;
-    void setRasterizer(const RasterizerState& state, const RasterizerState* had) override;
-    void setViewport(const Viewport& viewport) override;
-    void setScissor(const Rectangle& rectangle) override;
-    void setSrgbWrite(bool enabled) override;
-    BackendObject createSampler(const SamplerState& state) override;
-    void deleteSampler(BackendObject sampler) override { glDeleteSamplers(1, &sampler); }
-    void bindTexture(int unit, BackendObject texture) override { glBindTextureUnit(GLuint(unit), texture); }
-    void bindSampler(int unit, BackendObject sampler) override { glBindSampler(GLuint(unit), sampler); }
-    void writeBuffer(BackendObject buffer, std::size_t offset, std::size_t bytes, const void* data) override {
-        glNamedBufferSubData(buffer, GLintptr(offset), GLsizeiptr(bytes), data);
-    }
-    void bindUniformBuffer(int binding, BackendObject buffer) override {
-        glBindBufferBase(GL_UNIFORM_BUFFER, GLuint(binding), buffer);
-    }
-    int uniformLocation(BackendObject program, const char* name) override { return glGetUniformLocation(program, name); }
-    void setUniform(BackendObject program, int location, int value) override { glProgramUniform1i(program, location, value); }
-    void setUniform(BackendObject program, int location, float value) override { glProgramUniform1f(program, location, value); }
-    BackendObject createPipeline(const std::array<BackendObject, 5>& stagePrograms) override;
-    void bindPipeline(BackendObject pipeline) override { glBindProgramPipeline(pipeline); }
-    BackendObject createVertexArray(const std::vector<VertexAttribute>& attributes) override;
-    void bindVertexArray(BackendObject vertexArray) override { glBindVertexArray(vertexArray); }
-};
 
 struct AttributeFormat {
     GLint size;
@@ -165,7 +139,7 @@ BackendObject GlBackend::createPipeline(const std::array<BackendObject, 5>& prog
     return pipeline;
 }
 
-BackendObject GlBackend::createVertexArray(const std::vector<VertexAttribute>& attributes) {
+BackendObject GlBackend::createVertexArray(const std::vector<VertexAttribute>& attributes, const std::vector<int>& divisors) {
     GLuint vao = 0;
     glCreateVertexArrays(1, &vao);
     for (const VertexAttribute& a : attributes) {
@@ -174,8 +148,10 @@ BackendObject GlBackend::createVertexArray(const std::vector<VertexAttribute>& a
         glEnableVertexArrayAttrib(vao, location);
         if (a.integer) glVertexArrayAttribIFormat(vao, location, f.size, f.type, GLuint(a.offset));
         else glVertexArrayAttribFormat(vao, location, f.size, f.type, f.normalized, GLuint(a.offset));
-        glVertexArrayAttribBinding(vao, location, 0);
+        glVertexArrayAttribBinding(vao, location, GLuint(a.binding));
     }
+    for (std::size_t binding = 0; binding < divisors.size(); ++binding)
+        glVertexArrayBindingDivisor(vao, GLuint(binding), GLuint(std::max(divisors[binding], 0)));
     return vao;
 }
 

@@ -2,6 +2,8 @@
 
 #include <array>
 
+#include "device/surface_formats.h"
+
 namespace fxport {
 
 namespace {
@@ -39,6 +41,8 @@ const char* const kFormatNames[] = {
 }  // namespace
 
 int bytesPerPixel(SurfaceFormat format) { return kFormats.at(std::size_t(format)).bytesPerPixel; }
+int channelCount(SurfaceFormat format) { return kFormats.at(std::size_t(format)).channels; }
+bool isFloatFormat(SurfaceFormat format) { return kFormats.at(std::size_t(format)).isFloat; }
 const char* surfaceFormatName(SurfaceFormat format) { return kFormatNames[std::size_t(format)]; }
 const char* depthFormatName(DepthFormat format) {
     switch (format) {

@@ -7,8 +7,7 @@
 #include <cmath>
 #include <string>
 
-#include "gl/passes/compute_pass.h"
-#include "device/device_impl.h"
+#include "device/draw_hints.h"
 #include "fxport/graphics/effect.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/graphics_device.h"
@@ -56,7 +55,7 @@ bool uprightRectangle(const VertexPositionColorTexture* v) {
 // Point sampling then lands every pixel centre half a texel from the texel's edges, on the texel
 // `source + (pixel - corner)`, and SpriteEffect's tex2D * colour returns it unchanged.
 bool texelCopiesOf(const Texture2D& texture, const VertexPositionColorTexture* vertices, int sprites,
-                   std::vector<detail::TexelCopy>& out) {
+                   std::vector<TexelCopy>& out) {
     out.clear();
     const float textureW = float(texture.Width()), textureH = float(texture.Height());
     auto whole = [](float f, int& i) {
@@ -81,7 +80,7 @@ bool texelCopiesOf(const Texture2D& texture, const VertexPositionColorTexture* v
         if (!(t2.X == t0.X && t3.X == t1.X && t1.Y == t0.Y && t3.Y == t2.Y && t0.X < t1.X && t0.Y < t2.Y)) return false;
         for (int c = 0; c < 4; ++c)
             if (!(v[c].Color == Color::White)) return false;
-        detail::TexelCopy copy;
+        TexelCopy copy;
         int sourceX1 = 0, sourceY1 = 0;
         if (!whole(p0.X, copy.x0) || !whole(p0.Y, copy.y0) || !whole(p1.X, copy.x1) || !whole(p2.Y, copy.y1) ||
             !nearWhole(t0.X * textureW, copy.sourceX) || !nearWhole(t0.Y * textureH, copy.sourceY) ||
@@ -192,13 +191,13 @@ void SpriteBatch::setRenderState() {
                             -1.0f - invWidth, 1.0f - invHeight, 0.0f, 1.0f);
     matrixTransform_->SetValue(transformMatrix_ * projection);
     spriteEffect_->CurrentTechnique->Passes[0].Apply();
-    ownVertexShader_ = deviceImpl(device_).shaders[0];
+    ownVertexShader_ = hints::boundVertexShader(device_);
 }
 
 // Issue 16: whether one of these sprites is an unrotated, unflipped rectangle at or beyond every
 // edge of the viewport, at a depth that is not clipped, drawn with XNA's matrix alone -- so that,
 // through SpriteBatch's vertex shader, it covers every pixel of the viewport (the device checks
-// the rest: GraphicsDevice::Impl::dropColorClearUnderCoveringSprite).
+// the rest: hints::nextDrawCoversViewport in device/draw_hints.h).
 bool SpriteBatch::coversViewport(const VertexPositionColorTexture* vertices, int sprites) const {
     // Immediate mode set the matrix at Begin, from the viewport of that moment: not proven here.
     if (!(transformMatrix_ == Matrix::Identity) || sortMode_ == SpriteSortMode::Immediate) return false;
@@ -372,15 +371,15 @@ void SpriteBatch::drawBatch(Texture2D& texture, const VertexPositionColorTexture
     const bool onePass = customEffect_ == nullptr || customEffect_->CurrentTechnique->Passes.Count() == 1;
     // Texel copies under a Min or Max blend reduce in one dispatch (texel_copies.cpp). Immediate
     // mode set the matrix at Begin, from the viewport of that moment: not proven here.
-    const bool reduction = customEffect_ == nullptr && deviceImpl(device_).computePasses && transformMatrix_ == Matrix::Identity &&
+    const bool reduction = customEffect_ == nullptr && hints::texelCopiesAvailable(device_) && transformMatrix_ == Matrix::Identity &&
                            sortMode_ != SpriteSortMode::Immediate &&
                            (blendState_.ColorBlendFunction == BlendFunction::Min || blendState_.ColorBlendFunction == BlendFunction::Max);
-    std::vector<detail::TexelCopy> copies;
+    std::vector<TexelCopy> copies;
     while (count > 0) {
         const int sprites = std::min(count, kMaxBatchSize);
         if (reduction && texelCopiesOf(texture, vertices, sprites, copies)) {
             device_.Textures[0] = texture;
-            if (deviceImpl(device_).computePasses->tryTexelCopies(texture, copies)) {
+            if (hints::tryTexelCopies(device_, texture, copies)) {
                 ++drawCalls_;
                 vertices += std::size_t(sprites) * 4;
                 count -= sprites;
@@ -390,7 +389,7 @@ void SpriteBatch::drawBatch(Texture2D& texture, const VertexPositionColorTexture
         const bool covers = onePass && coversViewport(vertices, sprites);
         auto draw = [&] {
             device_.Textures[0] = texture;
-            if (covers) deviceImpl(device_).dropColorClearUnderCoveringSprite(static_cast<const ShaderProgram*>(ownVertexShader_));
+            if (covers) hints::nextDrawCoversViewport(device_, ownVertexShader_);
             device_.DrawUserIndexedPrimitives(PrimitiveType::TriangleList, vertices, 0, sprites * 4, indices_.data(), 0,
                                               sprites * 2);
             ++drawCalls_;

@@ -529,7 +529,7 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
     glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, captureBuffer, 0, captureBytes);
     glEnable(GL_RASTERIZER_DISCARD);
     glBeginTransformFeedback(GL_TRIANGLES);
-    call.issue();
+    device.backend->draw(call);
     glEndTransformFeedback();
     glDisable(GL_RASTERIZER_DISCARD);  // transform feedback's writes need no barrier before later commands read them
 
@@ -572,7 +572,7 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
     glProgramUniform1ui(fillProgram.program, fillProgram.stamp, stamp);
     glBindImageTexture(detail::kStoreUnit, entry->store, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32UI);
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, compare.commands);
-    call.issueIndirect(detail::kCommandsFill * 4);
+    issueDrawIndirect(call, detail::kCommandsFill * 4);
     glBindFramebuffer(GL_FRAMEBUFFER, d.boundFramebuffer);
     if (raster.ScissorTestEnable) glEnable(GL_SCISSOR_TEST);
     glBindProgramPipeline(d.boundPipeline);
@@ -598,7 +598,7 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
     glUseProgram(0);  // the device's program pipeline is in use again
 
     // 5. Fragment fall-back (instance count 0 when the dispatch ran): the draw as usual.
-    call.issueIndirect(detail::kCommandsFallBack * 4);
+    issueDrawIndirect(call, detail::kCommandsFallBack * 4);
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
 
     if (printOutcomes) {

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "device/draw_hints.h"
 #include "gl/passes/compute_pass_source.h"
 #include "gl/draw_call.h"
 #include "fxport/graphics/graphics_device.h"
@@ -48,10 +49,7 @@ struct PixelBox {
 PixelBox drawablePixels(const GraphicsDevice& device, int targetWidth, int targetHeight);
 // One sprite that copies texels 1:1 (texel_copies.cpp): the pixels [x0, x1) x [y0, y1) of the
 // viewport, and the texel that lands on pixel (x0, y0).
-struct TexelCopy {
-    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-    int sourceX = 0, sourceY = 0;
-};
+using TexelCopy = fxport::TexelCopy;  // device/draw_hints.h
 // GLSL of the reduction over texel copies (texel_copies.cpp): `op` min or max per part.
 std::string texelCopyShaderSource(const std::string& imageFormat, BlendOp color, BlendOp alpha, unsigned writeMask);
 }  // namespace detail

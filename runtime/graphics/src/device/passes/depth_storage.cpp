@@ -11,7 +11,6 @@
 
 #include "device/device_impl.h"
 #include "fxport/graphics/render_target.h"
-#include "gl/gl_formats.h"
 
 namespace fxport {
 
@@ -95,8 +94,7 @@ bool GraphicsDevice::Impl::depthTestPassesAll(const fxport::DepthStencilState& s
 
 void GraphicsDevice::Impl::makeDepthStorage(DepthStorage& storage) {
     storage.renderbuffer = createRenderbuffer();
-    glNamedRenderbufferStorage(storage.renderbuffer, detail::glDepthFormat(storage.format), storage.width,
-                               storage.height);
+    backend->allocateRenderbuffer(storage.renderbuffer, storage.format, storage.width, storage.height);
     ++depthStats.allocated;
     depthStats.allocatedBytes += bytesOf(storage);
     if (&storage != boundDepthStorage()) return;  // made with its target: nothing is bound or waits
@@ -149,9 +147,7 @@ void GraphicsDevice::Impl::leaveDiscardedDepth() {
     discardWaitingDepthClear(kDepthStencil, clearStats.dropped);
     if (storage->renderbuffer == 0) return;
     if (boundFramebuffer == 0) bindTargets();
-    const GLenum attachment =
-        storage->format == DepthFormat::Depth24Stencil8 ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT;
-    glInvalidateFramebuffer(GL_FRAMEBUFFER, 1, &attachment);  // boundFramebuffer
+    backend->invalidateFramebuffer(0, true, storage->format == DepthFormat::Depth24Stencil8);  // boundFramebuffer
     ++depthStats.invalidated;
 }
 

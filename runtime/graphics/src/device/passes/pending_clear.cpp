@@ -30,28 +30,10 @@ void GraphicsDevice::Impl::executeClear(const Rectangle& rect, unsigned options,
     if (options == 0) return;
     noteWrittenTargets((options & kColor) != 0, (options & (kDepth | kStencil)) != 0, rect, true);
     clearStats.executed += channels(options);
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(rect.X, rect.Y, rect.Width, rect.Height);
-    std::size_t colorTargets = std::max<std::size_t>(1, targets.size());
-    if (options & kColor) {
-        const float c[4] = {color.X, color.Y, color.Z, color.W};
-        for (std::size_t i = 0; i < colorTargets; ++i) {
-            glColorMaski(GLuint(i), GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-            glClearNamedFramebufferfv(boundFramebuffer, GL_COLOR, GLint(i), c);
-        }
-    }
-    bool clearDepth = options & kDepth;
-    bool clearStencil = options & kStencil;
-    if (clearDepth) glDepthMask(GL_TRUE);
-    if (clearStencil) glStencilMask(0xff);
-    if (clearDepth && clearStencil) {
-        glClearNamedFramebufferfi(boundFramebuffer, GL_DEPTH_STENCIL, 0, depth, stencil);
-    } else if (clearDepth) {
-        glClearNamedFramebufferfv(boundFramebuffer, GL_DEPTH, 0, &depth);
-    } else if (clearStencil) {
-        glClearNamedFramebufferiv(boundFramebuffer, GL_STENCIL, 0, &stencil);
-    }
-    // Put back what the shadow says GL has.
+    const int colorTargets = int(std::max<std::size_t>(1, targets.size()));
+    backend->clearFramebuffer(boundFramebuffer, rect, colorTargets, (options & kColor) != 0, color, (options & kDepth) != 0,
+                              (options & kStencil) != 0, depth, stencil);
+    // Put back what the shadow says the backend has.
     shadow.reapply();
 }
 
@@ -99,15 +81,8 @@ void GraphicsDevice::Impl::discardContents(unsigned options) {
     pendingClear.options &= ~dropped;
     discardWaitingDepthClear(options, clearStats.discarded);
     if (boundFramebuffer == 0) bindTargets();
-    std::vector<GLenum> attachments;
-    if (options & kColor)
-        for (std::size_t i = 0; i < std::max<std::size_t>(1, targets.size()); ++i)
-            attachments.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
-    if ((options & kDepth) && (options & kStencil)) attachments.push_back(GL_DEPTH_STENCIL_ATTACHMENT);
-    else if (options & kDepth) attachments.push_back(GL_DEPTH_ATTACHMENT);
-    else if (options & kStencil) attachments.push_back(GL_STENCIL_ATTACHMENT);
-    if (!attachments.empty())
-        glInvalidateFramebuffer(GL_FRAMEBUFFER, GLsizei(attachments.size()), attachments.data());  // boundFramebuffer
+    const int colorTargets = (options & kColor) ? int(std::max<std::size_t>(1, targets.size())) : 0;
+    backend->invalidateFramebuffer(colorTargets, (options & kDepth) != 0, (options & kStencil) != 0);  // boundFramebuffer
 }
 
 // The sprite's rectangle covers the viewport (SpriteBatch checked: an unrotated, unflipped sprite

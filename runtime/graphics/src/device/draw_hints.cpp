@@ -1,0 +1,24 @@
+// The draw hints (draw_hints.h), passed on to the optimisations that use them: the texel-copy
+// reduction of compute passes (gl/passes/texel_copies.cpp) and the clear folding
+// (device/pending_clear.cpp).
+#include "device/draw_hints.h"
+
+#include "device/device_impl.h"
+#include "gl/passes/compute_pass.h"
+
+namespace fxport::hints {
+
+const void* boundVertexShader(GraphicsDevice& device) { return deviceImpl(device).shaders[0]; }
+
+bool texelCopiesAvailable(GraphicsDevice& device) { return deviceImpl(device).computePasses != nullptr; }
+
+bool tryTexelCopies(GraphicsDevice& device, const Texture2D& texture, const std::vector<TexelCopy>& copies) {
+    GraphicsDevice::Impl& d = deviceImpl(device);
+    return d.computePasses && d.computePasses->tryTexelCopies(texture, copies);
+}
+
+void nextDrawCoversViewport(GraphicsDevice& device, const void* vertexShader) {
+    deviceImpl(device).dropColorClearUnderCoveringSprite(static_cast<const ShaderProgram*>(vertexShader));
+}
+
+}  // namespace fxport::hints

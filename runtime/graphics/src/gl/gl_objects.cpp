@@ -1,0 +1,166 @@
+// The objects the OpenGL backend makes (gl_backend.h): buffers, textures, renderbuffers,
+// framebuffers, programs, compute pipelines and queries, and the device-wide conventions.
+#include <algorithm>
+
+#include "gl/gl_backend.h"
+#include "gl/gl_formats.h"
+
+namespace fxport {
+
+namespace {
+
+// D3D9 returns 1 for the channels a format lacks (R32F reads (r,1,1,1)), GL returns 0 for green and
+// blue; Alpha8 reads (0,0,0,a) in D3D. Swizzles make GL read what the effects were written against.
+void applyD3D9Swizzle(GLuint name, SurfaceFormat format) {
+    int channels = detail::glFormat(format).channels;
+    if (format == SurfaceFormat::Alpha8) {
+        glTextureParameteri(name, GL_TEXTURE_SWIZZLE_R, GL_ZERO);
+        glTextureParameteri(name, GL_TEXTURE_SWIZZLE_G, GL_ZERO);
+        glTextureParameteri(name, GL_TEXTURE_SWIZZLE_B, GL_ZERO);
+        glTextureParameteri(name, GL_TEXTURE_SWIZZLE_A, GL_RED);
+        return;
+    }
+    if (channels <= 1) glTextureParameteri(name, GL_TEXTURE_SWIZZLE_G, GL_ONE);
+    if (channels <= 2) glTextureParameteri(name, GL_TEXTURE_SWIZZLE_B, GL_ONE);
+}
+
+GLenum glStageOf(int stage) {
+    switch (stage) {
+    case 0: return GL_VERTEX_SHADER;
+    case 1: return GL_FRAGMENT_SHADER;
+    case 2: return GL_GEOMETRY_SHADER;
+    case kHullStage: return GL_TESS_CONTROL_SHADER;
+    case kDomainStage: return GL_TESS_EVALUATION_SHADER;
+    default: return GL_COMPUTE_SHADER;
+    }
+}
+
+}  // namespace
+
+void GlBackend::adoptD3DConventions() {
+    glClipControl(GL_UPPER_LEFT, GL_ZERO_TO_ONE);
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // D3D10+ filter across cube faces; D3D9 hardware did too
+    // nointerpolation (flat) values come from a primitive's first vertex on D3D, its last on GL.
+    glProvokingVertex(GL_FIRST_VERTEX_CONVENTION);
+}
+
+int GlBackend::maxTextureSize() {
+    GLint size = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &size);
+    return size;
+}
+
+BackendObject GlBackend::createBuffer() {
+    GLuint name = 0;
+    glCreateBuffers(1, &name);
+    return name;
+}
+
+void GlBackend::allocateBuffer(BackendObject buffer, std::size_t bytes, const void* initial, bool streaming) {
+    glNamedBufferStorage(buffer, GLsizeiptr(bytes), initial, GL_DYNAMIC_STORAGE_BIT | (streaming ? GL_CLIENT_STORAGE_BIT : 0));
+}
+
+bool GlBackend::isColorRenderable(SurfaceFormat format) { return detail::isColorRenderable(format); }
+
+const char* GlBackend::imageFormatName(SurfaceFormat format) {
+    switch (detail::glFormat(format).internalFormat) {
+    case GL_R32F: return "r32f";
+    case GL_RG32F: return "rg32f";
+    case GL_RGBA32F: return "rgba32f";
+    case GL_R16F: return "r16f";
+    case GL_RG16F: return "rg16f";
+    case GL_RGBA16F: return "rgba16f";
+    case GL_RGBA8: return "rgba8";
+    case GL_RGBA16: return "rgba16";
+    case GL_RG16: return "rg16";
+    case GL_R32UI: return "r32ui";
+    case GL_R32I: return "r32i";
+    case GL_RGBA32UI: return "rgba32ui";
+    case GL_RGBA32I: return "rgba32i";
+    default: return "";
+    }
+}
+
+BackendObject GlBackend::createTexture(bool cube, SurfaceFormat format, int levels, int width, int height) {
+    GLuint name = 0;
+    glCreateTextures(cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D, 1, &name);
+    glTextureStorage2D(name, levels, detail::glFormat(format).internalFormat, width, height);
+    applyD3D9Swizzle(name, format);
+    return name;
+}
+
+BackendObject GlBackend::createRenderbuffer() {
+    GLuint name = 0;
+    glCreateRenderbuffers(1, &name);
+    return name;
+}
+
+void GlBackend::allocateRenderbuffer(BackendObject renderbuffer, DepthFormat format, int width, int height) {
+    glNamedRenderbufferStorage(renderbuffer, detail::glDepthFormat(format), width, height);
+}
+
+BackendObject GlBackend::createFramebuffer(const std::vector<ColorAttachment>& colour, BackendObject depth, bool depthHasStencil,
+                                           std::string& problem) {
+    GLuint fbo = 0;
+    glCreateFramebuffers(1, &fbo);
+    std::vector<GLenum> drawBuffers;
+    for (std::size_t i = 0; i < colour.size(); ++i) {
+        GLenum attachment = GLenum(GL_COLOR_ATTACHMENT0 + i);
+        if (colour[i].face >= 0) glNamedFramebufferTextureLayer(fbo, attachment, colour[i].texture, 0, GLint(colour[i].face));
+        else glNamedFramebufferTexture(fbo, attachment, colour[i].texture, 0);
+        drawBuffers.push_back(attachment);
+    }
+    glNamedFramebufferDrawBuffers(fbo, GLsizei(drawBuffers.size()), drawBuffers.data());
+    if (depth != 0)
+        glNamedFramebufferRenderbuffer(fbo, depthHasStencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+    GLenum status = glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        glDeleteFramebuffers(1, &fbo);
+        problem = "framebuffer status 0x" + std::to_string(status);
+        return 0;
+    }
+    return fbo;
+}
+
+BackendObject GlBackend::createProgram(int stage, const std::string& source, std::string& log) {
+    const char* text = source.c_str();
+    GLuint program = glCreateShaderProgramv(glStageOf(stage), 1, &text);
+    GLint ok = 0;
+    glGetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        GLint length = 0;
+        glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+        log.assign(std::size_t(std::max(length, 1)), '\0');
+        glGetProgramInfoLog(program, GLsizei(log.size()), nullptr, log.data());
+        glDeleteProgram(program);
+        return 0;
+    }
+    // D3D has constant slots per stage: each block moves to this stage's range (backend.h).
+    moveUniformBlocksToStage(program, stage);
+    return program;
+}
+
+void moveUniformBlocksToStage(GLuint program, int stage) {
+    GLint blockCount = 0;
+    glGetProgramiv(program, GL_ACTIVE_UNIFORM_BLOCKS, &blockCount);
+    for (GLint i = 0; i < blockCount; ++i) {
+        GLint binding = 0;
+        glGetActiveUniformBlockiv(program, GLuint(i), GL_UNIFORM_BLOCK_BINDING, &binding);
+        glUniformBlockBinding(program, GLuint(i), GLuint(uniformBindingFor(stage, binding)));
+    }
+}
+
+BackendObject GlBackend::createComputePipeline(BackendObject program) {
+    GLuint pipeline = 0;
+    glCreateProgramPipelines(1, &pipeline);
+    glUseProgramStages(pipeline, GL_COMPUTE_SHADER_BIT, program);
+    return pipeline;
+}
+
+BackendObject GlBackend::createQuery(QueryKind kind) {
+    GLuint name = 0;
+    glCreateQueries(kind == QueryKind::Timestamp ? GL_TIMESTAMP : GL_SAMPLES_PASSED, 1, &name);
+    return name;
+}
+
+}  // namespace fxport

@@ -1,0 +1,141 @@
+// The work the OpenGL backend issues (gl_backend.h): draws, texel transfers and copies, clears of
+// a texture or a depth buffer, storage images, and the flipped blit a window shows.
+#include <algorithm>
+#include <cstdint>
+
+#include "gl/gl_backend.h"
+#include "gl/gl_formats.h"
+
+namespace fxport {
+
+GLenum glModeOf(const DrawCall& call) {
+    if (call.controlPoints > 0) return GL_PATCHES;
+    switch (call.type) {
+    case PrimitiveType::TriangleList: return GL_TRIANGLES;
+    case PrimitiveType::TriangleStrip: return GL_TRIANGLE_STRIP;
+    case PrimitiveType::LineList: return GL_LINES;
+    case PrimitiveType::LineStrip: return GL_LINE_STRIP;
+    case PrimitiveType::PointList: return GL_POINTS;
+    }
+    return GL_TRIANGLES;
+}
+
+void GlBackend::draw(const DrawCall& call) {
+    const GLenum mode = glModeOf(call);
+    if (call.controlPoints > 0) glPatchParameteri(GL_PATCH_VERTICES, call.controlPoints);
+    const void* firstIndex = reinterpret_cast<const void*>(std::uintptr_t(call.first) * std::uintptr_t(call.indexSize));
+    if (call.instanced) {
+        if (call.indexed)
+            glDrawElementsInstancedBaseVertexBaseInstance(mode, call.count, glIndexTypeOf(call), firstIndex, call.instances,
+                                                          call.baseVertex, GLuint(call.firstInstance));
+        else
+            glDrawArraysInstancedBaseInstance(mode, call.first, call.count, call.instances, GLuint(call.firstInstance));
+    } else if (call.indexed) {
+        glDrawElementsBaseVertex(mode, call.count, glIndexTypeOf(call), firstIndex, call.baseVertex);
+    } else {
+        glDrawArrays(mode, call.first, call.count);
+    }
+}
+
+void GlBackend::writeTexture(BackendObject texture, SurfaceFormat format, int face, int level, const Rectangle& area,
+                             const void* data) {
+    const detail::GlTextureFormat& f = detail::glFormat(format);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    if (face < 0)
+        glTextureSubImage2D(texture, level, area.X, area.Y, area.Width, area.Height, f.format, f.type, data);
+    else
+        glTextureSubImage3D(texture, level, area.X, area.Y, face, area.Width, area.Height, 1, f.format, f.type, data);
+}
+
+void GlBackend::readTexture(BackendObject texture, SurfaceFormat format, int face, int level, std::size_t bytes, void* out) {
+    const detail::GlTextureFormat& f = detail::glFormat(format);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    if (face < 0) {
+        glGetTextureImage(texture, level, f.format, f.type, GLsizei(bytes), out);
+    } else {
+        GLint size = 0;
+        glGetTextureLevelParameteriv(texture, level, GL_TEXTURE_WIDTH, &size);
+        glGetTextureSubImage(texture, level, 0, 0, face, size, size, 1, f.format, f.type, GLsizei(bytes), out);
+    }
+}
+
+void GlBackend::readTextureFloats(BackendObject texture, int face, int level, std::size_t bytes, void* out) {
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    if (face < 0) {
+        glGetTextureImage(texture, level, GL_RGBA, GL_FLOAT, GLsizei(bytes), out);
+    } else {
+        GLint size = 0;
+        glGetTextureLevelParameteriv(texture, level, GL_TEXTURE_WIDTH, &size);
+        glGetTextureSubImage(texture, level, 0, 0, face, size, size, 1, GL_RGBA, GL_FLOAT, GLsizei(bytes), out);
+    }
+}
+
+Rectangle GlBackend::textureLevelSize(BackendObject texture, int level) {
+    GLint w = 0, h = 0;
+    glGetTextureLevelParameteriv(texture, level, GL_TEXTURE_WIDTH, &w);
+    glGetTextureLevelParameteriv(texture, level, GL_TEXTURE_HEIGHT, &h);
+    return Rectangle(0, 0, w, h);
+}
+
+void GlBackend::copyTexture(const TextureCopy& c) {
+    const GLenum target = c.cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
+    glCopyImageSubData(c.source, target, c.sourceLevel, c.sourceX, c.sourceY, 0, c.destination, target, c.destinationLevel,
+                       c.destinationX, c.destinationY, 0, c.width, c.height, c.cube ? 6 : 1);
+}
+
+void GlBackend::presentFlipped(BackendObject framebuffer, int width, int height) {
+    glBlitNamedFramebuffer(framebuffer, 0, 0, 0, width, height, 0, height, width, 0, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+}
+
+void GlBackend::clearDepthStencil(BackendObject renderbuffer, bool hasStencil, bool depth, bool stencil, float depthValue,
+                                  int stencilValue) {
+    // A framebuffer of its own, so that neither the bound targets nor the viewport matter.
+    GLuint fbo = 0;
+    glCreateFramebuffers(1, &fbo);
+    glNamedFramebufferRenderbuffer(fbo, hasStencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                                   renderbuffer);
+    glNamedFramebufferDrawBuffer(fbo, GL_NONE);
+    // glClear* honour the write masks and the scissor.
+    glDepthMask(GL_TRUE);
+    glStencilMask(0xFF);
+    glDisable(GL_SCISSOR_TEST);
+    const GLfloat clamped = std::clamp(depthValue, 0.0f, 1.0f);
+    if (depth && stencil) glClearNamedFramebufferfi(fbo, GL_DEPTH_STENCIL, 0, clamped, stencilValue);
+    else if (depth) glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &clamped);
+    else glClearNamedFramebufferiv(fbo, GL_STENCIL, 0, &stencilValue);
+    glDeleteFramebuffers(1, &fbo);
+}
+
+void GlBackend::clearFramebuffer(BackendObject framebuffer, const Rectangle& area, int colourTargets, bool colour,
+                                 const Vector4& color, bool depth, bool stencil, float depthValue, int stencilValue) {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(area.X, area.Y, area.Width, area.Height);
+    if (colour) {
+        const float c[4] = {color.X, color.Y, color.Z, color.W};
+        for (int i = 0; i < colourTargets; ++i) {
+            glColorMaski(GLuint(i), GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+            glClearNamedFramebufferfv(framebuffer, GL_COLOR, GLint(i), c);
+        }
+    }
+    if (depth) glDepthMask(GL_TRUE);
+    if (stencil) glStencilMask(0xff);
+    if (depth && stencil) glClearNamedFramebufferfi(framebuffer, GL_DEPTH_STENCIL, 0, depthValue, stencilValue);
+    else if (depth) glClearNamedFramebufferfv(framebuffer, GL_DEPTH, 0, &depthValue);
+    else if (stencil) glClearNamedFramebufferiv(framebuffer, GL_STENCIL, 0, &stencilValue);
+}
+
+void GlBackend::invalidateFramebuffer(int colourTargets, bool depth, bool stencil) {
+    std::vector<GLenum> attachments;
+    for (int i = 0; i < colourTargets; ++i) attachments.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
+    if (depth && stencil) attachments.push_back(GL_DEPTH_STENCIL_ATTACHMENT);
+    else if (depth) attachments.push_back(GL_DEPTH_ATTACHMENT);
+    else if (stencil) attachments.push_back(GL_STENCIL_ATTACHMENT);
+    if (!attachments.empty()) glInvalidateFramebuffer(GL_FRAMEBUFFER, GLsizei(attachments.size()), attachments.data());
+}
+
+void GlBackend::bindStorageImage(int unit, BackendObject texture, SurfaceFormat format, bool writes) {
+    glBindImageTexture(GLuint(unit), texture, 0, GL_FALSE, 0, writes ? GL_READ_WRITE : GL_READ_ONLY,
+                       detail::glFormat(format).internalFormat);
+}
+
+}  // namespace fxport
