@@ -62,5 +62,7 @@ std::vector<std::pair<size_t, Diagnostic>> findFunctionSignatureErrors(const Eff
 std::vector<std::pair<size_t, Diagnostic>> findComputeOnlyIntrinsicErrors(const EffectSyntax& syntax, const SourceMap& map);
 std::vector<std::pair<size_t, Diagnostic>> findMatrixShapeConversionErrors(const EffectSyntax& syntax, const SourceMap& map);
 std::vector<std::pair<size_t, Diagnostic>> findLvalueCastErrors(const EffectSyntax& syntax, const SourceMap& map);  // lvalue_casts.cpp
+std::vector<std::pair<size_t, Diagnostic>> findEffectKeywordErrors(const EffectSyntax& syntax, const SourceMap& map);  // effect_keywords.cpp
+std::vector<std::pair<size_t, Diagnostic>> findPatchObjectErrors(const EffectSyntax& syntax, const SourceMap& map);  // patch_objects.cpp
 
 }  // namespace fxport::xlate
