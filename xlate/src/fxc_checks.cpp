@@ -28,6 +28,8 @@ constexpr Family kFamilies[] = {
     findLvalueCastErrors,
     findEffectKeywordErrors,
     findPatchObjectErrors,
+    findOverloadAmbiguityErrors,
+    findTernaryShapeErrors,
 };
 
 bool isShaderState(const std::string& name) {

@@ -64,5 +64,7 @@ std::vector<std::pair<size_t, Diagnostic>> findMatrixShapeConversionErrors(const
 std::vector<std::pair<size_t, Diagnostic>> findLvalueCastErrors(const EffectSyntax& syntax, const SourceMap& map);  // lvalue_casts.cpp
 std::vector<std::pair<size_t, Diagnostic>> findEffectKeywordErrors(const EffectSyntax& syntax, const SourceMap& map);  // effect_keywords.cpp
 std::vector<std::pair<size_t, Diagnostic>> findPatchObjectErrors(const EffectSyntax& syntax, const SourceMap& map);  // patch_objects.cpp
+std::vector<std::pair<size_t, Diagnostic>> findOverloadAmbiguityErrors(const EffectSyntax& syntax, const SourceMap& map);  // overload_ambiguity.cpp
+std::vector<std::pair<size_t, Diagnostic>> findTernaryShapeErrors(const EffectSyntax& syntax, const SourceMap& map);  // ternary_shapes.cpp
 
 }  // namespace fxport::xlate
