@@ -2,11 +2,14 @@
 // (vkd3d's effect-technique-fx_2, _fx_4 and _fx_5 pin them):
 //  - `technique` in any case, `technique10`, `technique11` and `fxgroup` exactly so, name nothing
 //    else: a variable or typedef of that name is a syntax error;
+//  - `String` is the string type (`sTring` is not: fxc's own quirk, vkd3d's strings): no typedef or
+//    variable takes that name;
 //  - `technique10` and `technique11` open a technique in lower case only: `tEchnique10 { }` is no
 //    technique (fxc stops with a syntax error), while `Technique` and `TECHNIQUE` are.
 // The parser takes the keywords case-insensitively, so both are judged here on its tokens.
 #include "fxc_checks.h"
 
+#include "hlsl_types.h"
 #include "text_util.h"
 
 namespace fxport::xlate {
@@ -36,6 +39,9 @@ public:
                 report("syntax error: unexpected token '" + t_[i].text + "': '" + t_[i].text +
                            "' is a keyword of the effect framework and names no variable or type (fxc X3000)",
                        i);
+        for (size_t i = 1; i < t_.size(); ++i)
+            if (t_[i].is("String") && (describeBasicType(syntax_.resolveType(t_[i - 1].text)).ok || syntax_.findStruct(t_[i - 1].text)))
+                report("syntax error: unexpected token 'String': 'String' is the string type and names no variable or type (fxc X3000)", i);
     }
 };
 

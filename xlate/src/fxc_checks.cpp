@@ -30,6 +30,8 @@ constexpr Family kFamilies[] = {
     findPatchObjectErrors,
     findOverloadAmbiguityErrors,
     findTernaryShapeErrors,
+    findUniformInitializerErrors,
+    findUavRuleErrors,
 };
 
 bool isShaderState(const std::string& name) {

@@ -66,5 +66,7 @@ std::vector<std::pair<size_t, Diagnostic>> findEffectKeywordErrors(const EffectS
 std::vector<std::pair<size_t, Diagnostic>> findPatchObjectErrors(const EffectSyntax& syntax, const SourceMap& map);  // patch_objects.cpp
 std::vector<std::pair<size_t, Diagnostic>> findOverloadAmbiguityErrors(const EffectSyntax& syntax, const SourceMap& map);  // overload_ambiguity.cpp
 std::vector<std::pair<size_t, Diagnostic>> findTernaryShapeErrors(const EffectSyntax& syntax, const SourceMap& map);  // ternary_shapes.cpp
+std::vector<std::pair<size_t, Diagnostic>> findUniformInitializerErrors(const EffectSyntax& syntax, const SourceMap& map);  // uniform_initializers.cpp
+std::vector<std::pair<size_t, Diagnostic>> findUavRuleErrors(const EffectSyntax& syntax, const SourceMap& map);  // uav_rules.cpp
 
 }  // namespace fxport::xlate
