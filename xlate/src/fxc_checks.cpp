@@ -32,6 +32,8 @@ constexpr Family kFamilies[] = {
     findTernaryShapeErrors,
     findUniformInitializerErrors,
     findUavRuleErrors,
+    findEffectObjectValueErrors,
+    findCbufferReservationErrors,
 };
 
 bool isShaderState(const std::string& name) {

@@ -68,5 +68,7 @@ std::vector<std::pair<size_t, Diagnostic>> findOverloadAmbiguityErrors(const Eff
 std::vector<std::pair<size_t, Diagnostic>> findTernaryShapeErrors(const EffectSyntax& syntax, const SourceMap& map);  // ternary_shapes.cpp
 std::vector<std::pair<size_t, Diagnostic>> findUniformInitializerErrors(const EffectSyntax& syntax, const SourceMap& map);  // uniform_initializers.cpp
 std::vector<std::pair<size_t, Diagnostic>> findUavRuleErrors(const EffectSyntax& syntax, const SourceMap& map);  // uav_rules.cpp
+std::vector<std::pair<size_t, Diagnostic>> findEffectObjectValueErrors(const EffectSyntax& syntax, const SourceMap& map);  // effect_object_values.cpp
+std::vector<std::pair<size_t, Diagnostic>> findCbufferReservationErrors(const EffectSyntax& syntax, const SourceMap& map);  // cbuffer_reservations.cpp
 
 }  // namespace fxport::xlate
