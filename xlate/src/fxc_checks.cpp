@@ -34,6 +34,7 @@ constexpr Family kFamilies[] = {
     findUavRuleErrors,
     findEffectObjectValueErrors,
     findCbufferReservationErrors,
+    findResourceArrayIndexingErrors,
 };
 
 bool isShaderState(const std::string& name) {

@@ -70,5 +70,6 @@ std::vector<std::pair<size_t, Diagnostic>> findUniformInitializerErrors(const Ef
 std::vector<std::pair<size_t, Diagnostic>> findUavRuleErrors(const EffectSyntax& syntax, const SourceMap& map);  // uav_rules.cpp
 std::vector<std::pair<size_t, Diagnostic>> findEffectObjectValueErrors(const EffectSyntax& syntax, const SourceMap& map);  // effect_object_values.cpp
 std::vector<std::pair<size_t, Diagnostic>> findCbufferReservationErrors(const EffectSyntax& syntax, const SourceMap& map);  // cbuffer_reservations.cpp
+std::vector<std::pair<size_t, Diagnostic>> findResourceArrayIndexingErrors(const EffectSyntax& syntax, const SourceMap& map);  // resource_array_indexing.cpp
 
 }  // namespace fxport::xlate
