@@ -95,6 +95,24 @@ std::vector<RejectCase> cases() {
         // uav-rwstructuredbuffer: structured elements hold no objects.
         {"StructuredBufferOfTextures", "ps_5_0", "struct s { Texture2D t; };\nRWStructuredBuffer<s> u;\nfloat4 main() : sv_target1 { return 0; }\n", 2,
          "objects", "struct s { float4 t; };\nRWStructuredBuffer<s> u;\nfloat4 main() : sv_target1 { return 0; }\n"},
+        // effect-compile: `compile` passes literals to uniform parameters only.
+        {"CompileArgumentsBeyondUniforms", nullptr,
+         "float4 fun(uniform float4 a, float4 b : TEXCOORD0, uniform float4 c) : COLOR\n{\n    return a + b + c;\n}\ntechnique\n{\n    pass\n    {\n"
+         "        PixelShader = compile ps_2_0 fun(1, 2, 3);\n    }\n}\n",
+         9, "uniform parameters",
+         "float4 fun(uniform float4 a, float4 b : TEXCOORD0, uniform float4 c) : COLOR\n{\n    return a + b + c;\n}\ntechnique\n{\n    pass\n    {\n"
+         "        PixelShader = compile ps_2_0 fun(1, 2);\n    }\n}\n"},
+        // constructgswithso: 2 or 6 arguments.
+        {"ConstructGSWithSOArgumentCount", "ps_4_0",
+         "float4 main() : sv_target { return 0; }\nGeometryShader gs2 = ConstructGSWithSO(1, 2, 3);\n", 2, "ConstructGSWithSO",
+         "float4 main() : sv_target { return 0; }\nGeometryShader gs2 = ConstructGSWithSO(\"foo\", \"bar\");\n"},
+        // cbuffer: once an object is placed by register(), the numbers want packoffset().
+        {"CbufferManualPackingWithObjects", "ps_4_0",
+         "cbuffer buffer\n{\n    float4 foo;\n    Texture2D tex : register(t1);\n}\nfloat4 main() : sv_target { return foo; }\n", 3, "packoffset",
+         "cbuffer buffer\n{\n    float4 foo : packoffset(c0);\n    Texture2D tex : register(t1);\n}\nfloat4 main() : sv_target { return foo; }\n"},
+        // object-references: a texture array indexed by a uniform needs SM 5.1.
+        {"TextureArrayIndexedByUniform", "ps_4_0", "Texture2D tex[3];\nuniform int n;\nfloat4 main() : sv_target\n{\n    return tex[n].Load(0);\n}\n", 5,
+         "uniform", "Texture2D tex[3];\nuniform int n;\nfloat4 main() : sv_target\n{\n    return tex[1].Load(0) * n;\n}\n"},
     };
 }
 
