@@ -113,6 +113,9 @@ std::vector<RejectCase> cases() {
         // object-references: a texture array indexed by a uniform needs SM 5.1.
         {"TextureArrayIndexedByUniform", "ps_4_0", "Texture2D tex[3];\nuniform int n;\nfloat4 main() : sv_target\n{\n    return tex[n].Load(0);\n}\n", 5,
          "uniform", "Texture2D tex[3];\nuniform int n;\nfloat4 main() : sv_target\n{\n    return tex[1].Load(0) * n;\n}\n"},
+        // vector-indexing: an index is a scalar, not an int1.
+        {"VectorIndexOfInt1", "ps_4_0", "float4 main() : SV_TARGET\n{\n    float4 vec = {0, 1, 2, 3};\n    int1 idx = {3};\n    return vec[idx];\n}\n", 5,
+         "scalar", "float4 main() : SV_TARGET\n{\n    float4 vec = {0, 1, 2, 3};\n    int2 idx = {1, 2};\n    return vec[idx.y];\n}\n"},
     };
 }
 

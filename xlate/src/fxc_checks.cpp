@@ -35,6 +35,7 @@ constexpr Family kFamilies[] = {
     findEffectObjectValueErrors,
     findCbufferReservationErrors,
     findResourceArrayIndexingErrors,
+    findIndexTypeErrors,
 };
 
 bool isShaderState(const std::string& name) {

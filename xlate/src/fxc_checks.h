@@ -71,5 +71,6 @@ std::vector<std::pair<size_t, Diagnostic>> findUavRuleErrors(const EffectSyntax&
 std::vector<std::pair<size_t, Diagnostic>> findEffectObjectValueErrors(const EffectSyntax& syntax, const SourceMap& map);  // effect_object_values.cpp
 std::vector<std::pair<size_t, Diagnostic>> findCbufferReservationErrors(const EffectSyntax& syntax, const SourceMap& map);  // cbuffer_reservations.cpp
 std::vector<std::pair<size_t, Diagnostic>> findResourceArrayIndexingErrors(const EffectSyntax& syntax, const SourceMap& map);  // resource_array_indexing.cpp
+std::vector<std::pair<size_t, Diagnostic>> findIndexTypeErrors(const EffectSyntax& syntax, const SourceMap& map);  // index_types.cpp
 
 }  // namespace fxport::xlate
