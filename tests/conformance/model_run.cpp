@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <sstream>
 
@@ -210,8 +211,14 @@ void ModelRun::doUniform(const std::string& args) {
     in >> offset >> type;
     std::vector<std::uint32_t> words;
     if (type == "float4" || type == "float") {
-        float f;
-        while (in >> f) { std::uint32_t w; std::memcpy(&w, &f, 4); words.push_back(w); }
+        // strtof as vkd3d's sscanf("%f"): 1.0e39 is +inf, where `in >> f` fails and drops the rest.
+        std::string t;
+        while (in >> t) {
+            float f = std::strtof(t.c_str(), nullptr);
+            std::uint32_t w;
+            std::memcpy(&w, &f, 4);
+            words.push_back(w);
+        }
     } else if (type == "int4" || type == "int" || type == "uint4" || type == "uint") {
         std::string t;
         while (in >> t) words.push_back(std::uint32_t(std::strtoll(t.c_str(), nullptr, 0)));

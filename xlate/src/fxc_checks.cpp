@@ -28,10 +28,21 @@ constexpr Family kFamilies[] = {
     findComputeOnlyIntrinsicErrors,
     findMatrixShapeConversionErrors,
     findLvalueCastErrors,
+    findEffectKeywordErrors,
+    findPatchObjectErrors,
+    findOverloadAmbiguityErrors,
+    findTernaryShapeErrors,
+    findUniformInitializerErrors,
+    findUavRuleErrors,
+    findEffectObjectValueErrors,
+    findCbufferReservationErrors,
+    findResourceArrayIndexingErrors,
+    findIndexTypeErrors,
 };
 
 bool isShaderState(const std::string& name) {
-    for (const char* n : {"VertexShader", "PixelShader", "GeometryShader", "SetVertexShader", "SetPixelShader", "SetGeometryShader"})
+    for (const char* n : {"VertexShader", "PixelShader", "GeometryShader", "HullShader", "DomainShader", "ComputeShader", "SetVertexShader",
+                          "SetPixelShader", "SetGeometryShader", "SetHullShader", "SetDomainShader", "SetComputeShader"})
         if (iequals(name, n)) return true;
     return false;
 }

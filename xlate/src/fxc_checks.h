@@ -64,5 +64,15 @@ std::vector<std::pair<size_t, Diagnostic>> findFunctionSignatureErrors(const Eff
 std::vector<std::pair<size_t, Diagnostic>> findComputeOnlyIntrinsicErrors(const EffectSyntax& syntax, const SourceMap& map);
 std::vector<std::pair<size_t, Diagnostic>> findMatrixShapeConversionErrors(const EffectSyntax& syntax, const SourceMap& map);
 std::vector<std::pair<size_t, Diagnostic>> findLvalueCastErrors(const EffectSyntax& syntax, const SourceMap& map);  // lvalue_casts.cpp
+std::vector<std::pair<size_t, Diagnostic>> findEffectKeywordErrors(const EffectSyntax& syntax, const SourceMap& map);  // effect_keywords.cpp
+std::vector<std::pair<size_t, Diagnostic>> findPatchObjectErrors(const EffectSyntax& syntax, const SourceMap& map);  // patch_objects.cpp
+std::vector<std::pair<size_t, Diagnostic>> findOverloadAmbiguityErrors(const EffectSyntax& syntax, const SourceMap& map);  // overload_ambiguity.cpp
+std::vector<std::pair<size_t, Diagnostic>> findTernaryShapeErrors(const EffectSyntax& syntax, const SourceMap& map);  // ternary_shapes.cpp
+std::vector<std::pair<size_t, Diagnostic>> findUniformInitializerErrors(const EffectSyntax& syntax, const SourceMap& map);  // uniform_initializers.cpp
+std::vector<std::pair<size_t, Diagnostic>> findUavRuleErrors(const EffectSyntax& syntax, const SourceMap& map);  // uav_rules.cpp
+std::vector<std::pair<size_t, Diagnostic>> findEffectObjectValueErrors(const EffectSyntax& syntax, const SourceMap& map);  // effect_object_values.cpp
+std::vector<std::pair<size_t, Diagnostic>> findCbufferReservationErrors(const EffectSyntax& syntax, const SourceMap& map);  // cbuffer_reservations.cpp
+std::vector<std::pair<size_t, Diagnostic>> findResourceArrayIndexingErrors(const EffectSyntax& syntax, const SourceMap& map);  // resource_array_indexing.cpp
+std::vector<std::pair<size_t, Diagnostic>> findIndexTypeErrors(const EffectSyntax& syntax, const SourceMap& map);  // index_types.cpp
 
 }  // namespace fxport::xlate

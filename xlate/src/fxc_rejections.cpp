@@ -116,9 +116,18 @@ private:
             if (last) report("the last case of a switch is empty: fxc wants a statement, at least 'break;' (X3533)", label);
             return;  // labels that share one clause
         }
+        continueInCase(begin, end);
         for (size_t i = begin; i < end; ++i)
             if (t_[i].is("break") || t_[i].is("return") || t_[i].is("continue")) return;
         report("non-empty case statements must have break or return: this case falls through to the next (fxc X3533)", label);
+    }
+    // fxc refuses `continue` in a case, even inside a loop around the switch (vkd3d's switch); a
+    // loop inside the case owns its continues. Cases with a loop are not judged.
+    void continueInCase(size_t begin, size_t end) {
+        for (size_t i = begin; i < end; ++i) {
+            if (t_[i].is("for") || t_[i].is("while") || t_[i].is("do") || t_[i].is("switch")) return;
+            if (t_[i].is("continue")) report("'continue' cannot be used in a switch case (fxc)", i);
+        }
     }
 
     // --- statement attributes ------------------------------------------------------------------

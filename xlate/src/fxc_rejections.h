@@ -2,6 +2,7 @@
 // with fxc's wording and error number, so that an effect fxport compiles is one fxc compiles. Each
 // rule is one function in fxc_rejections.cpp, with the vkd3d conformance file that pins it:
 //  - a case of a switch that falls through into the next label, or an empty last case (X3533);
+//  - `continue` in a case of a switch (switch);
 //  - the same attribute twice on a statement, or [branch] with [flatten], [loop] with [unroll],
 //    [fastopt] with [unroll] (X3524 / X3525);
 //  - a modifier given twice, or modifiers that exclude each other (static uniform, out uniform,
