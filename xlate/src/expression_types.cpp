@@ -173,8 +173,11 @@ private:
             type.vector1 = !b.isMatrix && b.columns == 1 && (compact.back() == '1' || (compact.size() > 3 && compact.compare(compact.size() - 3, 3, ",1>") == 0));
             return type;
         }
-        if (syntax_.findStruct(resolved)) return ExpressionType{{}, resolved, {}};
-        return std::nullopt;
+        if (!syntax_.findStruct(resolved)) return std::nullopt;
+        // Built member by member: GCC 12 at -O3 takes the aggregate's string for uninitialised.
+        ExpressionType type;
+        type.structName = resolved;
+        return type;
     }
 
     Type unary() {
