@@ -47,7 +47,6 @@ file(GLOB_RECURSE sources RELATIVE ${SOURCE_DIR}
 foreach(where ${sources})
   file(READ ${SOURCE_DIR}/${where} text)
   string(REGEX REPLACE "//[^\n]*" "" code "${text}")     # comments may name GL calls
-  string(REPLACE "glName(" "name(" code "${code}")        # the resources' handle accessor, not a GL call
   set(code " ${code}")
   string(REGEX MATCHALL "\n[ \t]*#[ \t]*include[ \t]*[\"<][^\">]*[\">]" includes "${code}")
   get_filename_component(folder ${where} DIRECTORY)

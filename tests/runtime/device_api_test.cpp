@@ -242,8 +242,8 @@ TEST(ResourceLifetime, NothingLeftAliveAfterDestruction) {
         timer.EndFrame();
         timer.Finish();
         EXPECT_EQ(timer.Sections().size(), 2u);
-        textureNames = {target.glName(), cube.glName(), texture.glName()};
-        bufferNames = {vb.glName(), ib.glName()};
+        textureNames = {target.backendObject(), cube.backendObject(), texture.backendObject()};
+        bufferNames = {vb.backendObject(), ib.backendObject()};
         EXPECT_GT(device.liveGpuObjects().total(), before.total());
         device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
     }

@@ -117,7 +117,7 @@ TEST(FrontEndCore, ByteBufferTransfersReachTheBackendAfterTheirRangeIsChecked) {
     Fixture f;
     ByteBuffer buffer(*f.device, 64, nullptr, true);
     ByteBuffer other(*f.device, 64, nullptr, false);
-    const std::string name = std::to_string(buffer.glName()), otherName = std::to_string(other.glName());
+    const std::string name = std::to_string(buffer.backendObject()), otherName = std::to_string(other.backendObject());
     EXPECT_EQ(f.backend->matching("allocateBuffer " + name), Calls{"allocateBuffer " + name + " 64 filled streaming"});
     f.backend->take();
     const char bytes[16] = {};
@@ -155,8 +155,8 @@ TEST(FrontEndCore, AnInstancedDrawFeedsEachStreamFromItsBindingWithItsStepRate) 
     EXPECT_EQ(arrays[0].substr(0, arrays[0].find(" ->")), "createVertexArray 2 attributes 0@0+0 1@1+0 divisors 0 1");
     const std::string vao = arrays[0].substr(arrays[0].find("-> ") + 3);
     EXPECT_EQ(f.backend->matching("setVertexBuffer"),
-              (Calls{"setVertexBuffer " + vao + " 0 " + std::to_string(vertices.glName()) + " +0 stride 12",
-                     "setVertexBuffer " + vao + " 1 " + std::to_string(instances.glName()) + " +16 stride 8"}));
+              (Calls{"setVertexBuffer " + vao + " 0 " + std::to_string(vertices.backendObject()) + " +0 stride 12",
+                     "setVertexBuffer " + vao + " 1 " + std::to_string(instances.backendObject()) + " +16 stride 8"}));
     EXPECT_EQ(f.backend->matching("draw"), Calls{"draw 0 count 3 first 0 instances 4 from 1"});
     EXPECT_EQ(f.backend->matching("createPipeline").size(), 1u);
     // The same layout again: the vertex array and pipeline are reused, only the buffers and the draw are sent.
@@ -277,7 +277,7 @@ TEST(FrontEndCore, UniformBuffersGoToTheirStagesRangeAndTheInternalBindingIsRefu
     core::drawStreams(*f.device, {{{&vertices, 0, &f.positions}, 0}, {{&texcoords, 0, &f.texcoords}, 0}},
                       DrawArguments{PrimitiveType::TriangleList, 3});
     EXPECT_EQ(f.backend->matching("bindUniformBuffer " + std::to_string(uniformBindingFor(1, 2))),
-              Calls{"bindUniformBuffer " + std::to_string(uniformBindingFor(1, 2)) + " " + std::to_string(constants.glName())});
+              Calls{"bindUniformBuffer " + std::to_string(uniformBindingFor(1, 2)) + " " + std::to_string(constants.backendObject())});
     EXPECT_THROW(core::setUniformBuffer(*f.device, 1, kInternalBlockBinding, &constants), ArgumentError);
     EXPECT_THROW(core::setUniformBuffer(*f.device, kUniformStages, 0, &constants), ArgumentError);
 }
@@ -315,7 +315,7 @@ TEST(FrontEndCore, ADepthBufferClearWaitsForTheBufferOrClearsItAndForgetsTheShad
 TEST(FrontEndCore, TextureCopiesCheckTheirBoxesAgainstTheLevelsBeforeCopying) {
     Fixture f;
     Texture2D source(*f.device, 16, 16, true, SurfaceFormat::Color), destination(*f.device, 16, 16, true, SurfaceFormat::Color);
-    const std::string s = std::to_string(source.glName()), d = std::to_string(destination.glName());
+    const std::string s = std::to_string(source.backendObject()), d = std::to_string(destination.backendObject());
     f.backend->take();
     core::copyTextureRegion(destination, 1, 2, 3, source, 0, Rectangle(1, 1, 4, 4));
     EXPECT_EQ(f.backend->matching("copyTexture"), Calls{"copyTexture " + s + " level 0 (1,1) -> " + d + " level 1 (2,3) 4x4"});
@@ -349,13 +349,13 @@ TEST(ComputeDispatch, ADispatchMakesItsPipelineOnceBindsItsStorageAndBarriersBef
     const std::string pipeline = pipelines[0].substr(pipelines[0].find("-> ") + 3);
     EXPECT_EQ(f.backend->matching("bindPipeline"), Calls{"bindPipeline " + pipeline});
     EXPECT_EQ(f.backend->matching("bindStorageBuffer"),
-              (Calls{"bindStorageBuffer 3 " + std::to_string(output.glName()), "bindStorageBuffer 3 " + std::to_string(output.glName())}));
+              (Calls{"bindStorageBuffer 3 " + std::to_string(output.backendObject()), "bindStorageBuffer 3 " + std::to_string(output.backendObject())}));
     EXPECT_EQ(f.backend->matching("dispatch"), (Calls{"dispatch 2 3 1", "dispatch 2 3 1"}));
     // The second dispatch waits for the first one's writes, and so does the read.
     f.backend->take();
     char out[4];
     output.read(0, 4, out);
-    EXPECT_EQ(f.backend->take(), (Calls{"storageBarrier", "readBuffer " + std::to_string(output.glName()) + " 0 4"}));
+    EXPECT_EQ(f.backend->take(), (Calls{"storageBarrier", "readBuffer " + std::to_string(output.backendObject()) + " 0 4"}));
     f.device->DispatchCompute(0, 4, 4);  // D3D11 runs nothing
     EXPECT_EQ(f.backend->take(), Calls{});
     EXPECT_THROW(f.device->DispatchCompute(65536, 1, 1), ArgumentError);

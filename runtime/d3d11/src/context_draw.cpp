@@ -43,7 +43,7 @@ void Context::bindStage(int stage, const ShaderBindings& bindings, const Stage& 
                                    " bytes; the buffer bound there has " + std::to_string(b->desc.ByteWidth));
         if (b && !(b->desc.BindFlags & D3D11_BIND_CONSTANT_BUFFER))
             throw InvalidOperation("the buffer at b" + std::to_string(c.slot) + " was not made with D3D11_BIND_CONSTANT_BUFFER");
-        core::setUniformBuffer(core, stage, c.glBinding, b ? b->gpu.get() : nullptr);
+        core::setUniformBuffer(core, stage, c.blockBinding, b ? b->gpu.get() : nullptr);
     }
     for (const SamplerUnit& u : bindings.units) {
         if (u.glUnit < 0 || u.glUnit >= kMaxTextureSlots) continue;

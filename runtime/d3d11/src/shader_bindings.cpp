@@ -106,7 +106,7 @@ ShaderBindings bindingsOf(const xlate::CompiledEffect& effect, int shader) {
         CbufferBinding c;
         c.name = u.name == "$Global" ? "$Globals" : u.name;
         c.block = block;
-        c.glBinding = u.binding;
+        c.blockBinding = u.binding;
         c.slot = slots[u.name];
         int end = 0;
         for (const PackedVariable& v : packCbuffer(effect, block)) end = std::max(end, v.offset + v.size);

@@ -27,7 +27,7 @@ int packedSize(const xlate::Parameter& p);  // D3D size in bytes of one variable
 struct CbufferBinding {
     std::string name;  // "$Globals" or the cbuffer's name
     int block = 0;     // CompiledEffect::uniformBlocks index
-    int glBinding = 0;
+    int blockBinding = 0;
     int slot = 0;      // b#
     int size = 0;      // D3D size, a multiple of 16
 };

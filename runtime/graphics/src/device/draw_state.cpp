@@ -150,7 +150,7 @@ void GraphicsDevice::Impl::applyTexturesOf(const ShaderProgram* const* programs,
             int unit = sampler.unit;
             if (unit < 0 || unit >= kMaxTextureSlots) continue;
             Texture* texture = device.Textures[unit].get();
-            BackendObject name = texture ? texture->glName() : 0;
+            BackendObject name = texture ? texture->backendObject() : 0;
             if (texture) {
                 if (&texture->device() != &device)  // its GL name means nothing in this device's context
                     throw InvalidOperation("Draw: texture " + textureName(texture) + " in Textures[" + std::to_string(unit) +

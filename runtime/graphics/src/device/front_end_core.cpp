@@ -172,16 +172,16 @@ void setStorageBuffer(GraphicsDevice& device, bool unorderedAccess, int slot, co
         throw ArgumentError(std::string(unorderedAccess ? "unordered-access" : "shader-resource buffer") + " slot " + std::to_string(slot) +
                             " is outside 0.." + std::to_string(slots - 1));
     GraphicsDevice::Impl::StorageSlot wanted;
-    if (buffer) wanted = GraphicsDevice::Impl::StorageSlot{buffer, buffer->glName(), false, SurfaceFormat::Color};
+    if (buffer) wanted = GraphicsDevice::Impl::StorageSlot{buffer, buffer->backendObject(), false, SurfaceFormat::Color};
     if (unorderedAccess) d.unorderedAccess[std::size_t(slot)] = wanted;
     else d.resourceBuffers[std::size_t(slot)] = wanted;
 }
 
-void setUniformBuffer(GraphicsDevice& device, int stage, int glBinding, const ByteBuffer* buffer) {
-    if (stage < 0 || stage >= kUniformStages || glBinding < 0 || glBinding >= kUniformBindingsPerStage || glBinding == kInternalBlockBinding)
-        throw ArgumentError("uniform binding " + std::to_string(glBinding) + " of stage " + std::to_string(stage) +
+void setUniformBuffer(GraphicsDevice& device, int stage, int blockBinding, const ByteBuffer* buffer) {
+    if (stage < 0 || stage >= kUniformStages || blockBinding < 0 || blockBinding >= kUniformBindingsPerStage || blockBinding == kInternalBlockBinding)
+        throw ArgumentError("uniform binding " + std::to_string(blockBinding) + " of stage " + std::to_string(stage) +
                             " is not one a front end may set");
-    deviceImpl(device).wantedUniformBuffers[std::size_t(uniformBindingFor(stage, glBinding))] = buffer ? buffer->glName() : 0;
+    deviceImpl(device).wantedUniformBuffers[std::size_t(uniformBindingFor(stage, blockBinding))] = buffer ? buffer->backendObject() : 0;
 }
 
 void setTargets(GraphicsDevice& device, const std::vector<RenderTargetBinding>& colour, DepthBuffer* depth) {
@@ -228,8 +228,8 @@ void issue(GraphicsDevice::Impl& d, GraphicsDevice::Impl::VertexArray& va, const
     call.instances = a.instances;
     call.firstInstance = a.firstInstance;
     if (a.indices) {
-        if (va.elements != a.indices->glName()) {
-            va.elements = a.indices->glName();
+        if (va.elements != a.indices->backendObject()) {
+            va.elements = a.indices->backendObject();
             d.backend->setIndexBuffer(va.vao, va.elements);
         }
         call.indexed = true;
@@ -312,7 +312,7 @@ void drawStreams(GraphicsDevice& device, const std::vector<InstancedStream>& str
     for (std::size_t s = 0; s < streams.size(); ++s) {
         const VertexStream& v = streams[s].vertices;
         const int stride = v.declaration ? v.declaration->VertexStride() : 0;
-        d.backend->setVertexBuffer(va.vao, int(s), v.buffer ? v.buffer->glName() : 0, v.offset, stride);
+        d.backend->setVertexBuffer(va.vao, int(s), v.buffer ? v.buffer->backendObject() : 0, v.offset, stride);
     }
     issue(d, va, a);
 }
@@ -324,7 +324,7 @@ void clearTexture(Texture& texture, const Vector4& color) {
     // A clear of this target still pending in the device would land after ours.
     d.resolvePendingClearBeforeRead(&texture);
     const float rgba[4] = {color.X, color.Y, color.Z, color.W};
-    d.backend->clearTexture(texture.glName(), 0, rgba);
+    d.backend->clearTexture(texture.backendObject(), 0, rgba);
 }
 
 void clearDepthBuffer(GraphicsDevice& device, DepthBuffer& buffer, bool depth, bool stencil, float depthValue,
@@ -347,7 +347,7 @@ void clearDepthBuffer(GraphicsDevice& device, DepthBuffer& buffer, bool depth, b
 void generateMips(Texture& texture) {
     GraphicsDevice::Impl& d = deviceImpl(texture.device());
     d.resolvePendingClearBeforeRead(&texture);
-    if (texture.LevelCount() > 1) d.backend->generateMipmaps(texture.glName());
+    if (texture.LevelCount() > 1) d.backend->generateMipmaps(texture.backendObject());
 }
 
 void copyTexture(Texture& destination, const Texture& source) {
@@ -358,13 +358,13 @@ void copyTexture(Texture& destination, const Texture& source) {
     d.resolvePendingClearBeforeRead(&source);
     const bool cube = source.kind() == Texture::Kind::TextureCube;
     for (int level = 0; level < source.LevelCount(); ++level) {
-        const Rectangle size = d.backend->textureLevelSize(source.glName(), level);
-        const Rectangle destinationSize = d.backend->textureLevelSize(destination.glName(), level);
+        const Rectangle size = d.backend->textureLevelSize(source.backendObject(), level);
+        const Rectangle destinationSize = d.backend->textureLevelSize(destination.backendObject(), level);
         if (size.Width != destinationSize.Width || size.Height != destinationSize.Height)
             throw ArgumentError("CopyResource: the textures differ in size");
         TextureCopy copy;
-        copy.source = source.glName();
-        copy.destination = destination.glName();
+        copy.source = source.backendObject();
+        copy.destination = destination.backendObject();
         copy.cube = cube;
         copy.sourceLevel = copy.destinationLevel = level;
         copy.width = size.Width;
@@ -382,8 +382,8 @@ void copyTextureRegion(Texture& destination, int destinationLevel, int x, int y,
         throw ArgumentError("CopySubresourceRegion: level " + std::to_string(sourceLevel) + " -> " + std::to_string(destinationLevel) +
                             " is outside the textures' levels");
     GraphicsDevice::Impl& d = deviceImpl(destination.device());
-    const Rectangle sourceSize = d.backend->textureLevelSize(source.glName(), sourceLevel);
-    const Rectangle destinationSize = d.backend->textureLevelSize(destination.glName(), destinationLevel);
+    const Rectangle sourceSize = d.backend->textureLevelSize(source.backendObject(), sourceLevel);
+    const Rectangle destinationSize = d.backend->textureLevelSize(destination.backendObject(), destinationLevel);
     const int sw = sourceSize.Width, sh = sourceSize.Height, dw = destinationSize.Width, dh = destinationSize.Height;
     if (area.X < 0 || area.Y < 0 || area.Width <= 0 || area.Height <= 0 || area.X + area.Width > sw || area.Y + area.Height > sh)
         throw ArgumentError("CopySubresourceRegion: the source box (" + std::to_string(area.X) + ", " + std::to_string(area.Y) + ") " +
@@ -396,8 +396,8 @@ void copyTextureRegion(Texture& destination, int destinationLevel, int x, int y,
     d.resolvePendingClearBeforeRead(&destination);
     d.storageBarrier();
     TextureCopy copy;
-    copy.source = source.glName();
-    copy.destination = destination.glName();
+    copy.source = source.backendObject();
+    copy.destination = destination.backendObject();
     copy.sourceLevel = sourceLevel;
     copy.destinationLevel = destinationLevel;
     copy.sourceX = area.X;

@@ -39,7 +39,7 @@ public:
     void copyFrom(const ByteBuffer& source);  // sizes must match
     // Bytes [sourceOffset, sourceOffset + bytes) of `source` to `destinationOffset` (both ranges inside).
     void copyFrom(const ByteBuffer& source, std::size_t sourceOffset, std::size_t destinationOffset, std::size_t bytes);
-    std::uint32_t glName() const { return name_; }
+    std::uint32_t backendObject() const { return name_; }
 
 protected:
     void releaseGpuObjects() override;
@@ -91,9 +91,9 @@ private:
 void setShaderStages(GraphicsDevice& device, const ShaderCode* const (&stages)[5]);
 // The compute shader GraphicsDevice::DispatchCompute runs (null: none).
 void setComputeShader(GraphicsDevice& device, const ShaderCode* computeShader);
-// Binds `buffer` (null: none) to uniform-block binding `glBinding` of `stage` (0 vertex, 1 pixel,
+// Binds `buffer` (null: none) to uniform-block binding `blockBinding` of `stage` (0 vertex, 1 pixel,
 // 2 geometry, 3 hull, 4 domain, 5 compute).
-void setUniformBuffer(GraphicsDevice& device, int stage, int glBinding, const ByteBuffer* buffer);
+void setUniformBuffer(GraphicsDevice& device, int stage, int blockBinding, const ByteBuffer* buffer);
 // Binds `buffer` (null: none) as the unordered-access view of register u`slot` (unorderedAccess)
 // or the shader-resource buffer of register t`slot` (StructuredBuffer<T>), as
 // GraphicsDevice::SetUnorderedAccess / SetShaderResource do for a StructuredBuffer.

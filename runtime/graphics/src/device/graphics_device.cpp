@@ -388,7 +388,7 @@ void GraphicsDevice::Impl::generateMipsOfUnboundTargets(const std::vector<Render
     // XNA regenerates a mipmapped render target's chain when it stops being a target.
     for (const RenderTargetBinding& b : previous) {
         if (!b.RenderTarget || b.RenderTarget->LevelCount() <= 1 || b.RenderTarget->IsDisposed()) continue;
-        if (std::find(targets.begin(), targets.end(), b) == targets.end()) backend->generateMipmaps(b.RenderTarget->glName());
+        if (std::find(targets.begin(), targets.end(), b) == targets.end()) backend->generateMipmaps(b.RenderTarget->backendObject());
     }
 }
 
@@ -401,7 +401,7 @@ void GraphicsDevice::Impl::bindTargets() {
     DepthFormat depthFormat = depthOverride ? depthOverride->format : info.depthFormat;
     std::vector<std::uint64_t> key;
     for (const RenderTargetBinding& b : bindings)
-        key.push_back((std::uint64_t(b.RenderTarget->glName()) << 8) |
+        key.push_back((std::uint64_t(b.RenderTarget->backendObject()) << 8) |
                       (b.RenderTarget->kind() == Texture::Kind::TextureCube ? 1 + std::uint64_t(b.CubeMapFace) : 0));
     key.push_back(std::uint64_t(depth) << 8 | 0xff);
     targetWidth = info.width;
@@ -413,7 +413,7 @@ void GraphicsDevice::Impl::bindTargets() {
     } else {
         std::vector<ColorAttachment> colour;
         for (const RenderTargetBinding& b : bindings)
-            colour.push_back({b.RenderTarget->glName(), b.RenderTarget->kind() == Texture::Kind::TextureCube ? int(b.CubeMapFace) : -1});
+            colour.push_back({b.RenderTarget->backendObject(), b.RenderTarget->kind() == Texture::Kind::TextureCube ? int(b.CubeMapFace) : -1});
         std::string problem;
         fbo = backend->createFramebuffer(colour, depth, depthFormat == DepthFormat::Depth24Stencil8, problem);
         if (fbo == 0)
@@ -499,8 +499,8 @@ void GraphicsDevice::DrawIndexedPrimitives(PrimitiveType primitiveType, int base
                             std::to_string(Indices->IndexCount()));
     d.flush("DrawIndexedPrimitives");
     Impl::VertexArray& va = d.bindVertexBuffer();
-    if (va.elements != Indices->glName()) {
-        va.elements = Indices->glName();
+    if (va.elements != Indices->backendObject()) {
+        va.elements = Indices->backendObject();
         d.backend->setIndexBuffer(va.vao, va.elements);
     }
     const bool wide = Indices->IndexElementSize() == IndexElementSize::ThirtyTwoBits;
@@ -529,8 +529,8 @@ GraphicsDevice::Impl::VertexArray& GraphicsDevice::Impl::bindVertexBuffer() {
     const VertexDeclaration& declaration = vertexBuffer->VertexDeclaration();
     VertexArray& va = vertexArrayFor(declaration);
     const std::int64_t offset = std::int64_t(vertexOffset) * declaration.VertexStride();
-    if (va.buffer != vertexBuffer->glName() || va.offset != offset || va.stride != declaration.VertexStride()) {
-        va.buffer = vertexBuffer->glName();
+    if (va.buffer != vertexBuffer->backendObject() || va.offset != offset || va.stride != declaration.VertexStride()) {
+        va.buffer = vertexBuffer->backendObject();
         va.offset = offset;
         va.stride = declaration.VertexStride();
         backend->setVertexBuffer(va.vao, 0, va.buffer, std::size_t(va.offset), va.stride);

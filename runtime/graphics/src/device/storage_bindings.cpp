@@ -28,7 +28,7 @@ void GraphicsDevice::SetUnorderedAccess(int slot, StructuredBuffer* buffer) {
     if (slot < 0 || slot >= kMaxUnorderedAccessSlots) throw ArgumentError(slotOutside("SetUnorderedAccess", slot, kMaxUnorderedAccessSlots));
     if (buffer && &buffer->device() != this) throw InvalidOperation("SetUnorderedAccess: the buffer was made by another GraphicsDevice");
     if (buffer && buffer->IsDisposed()) throw InvalidOperation("SetUnorderedAccess: the buffer was disposed");
-    impl_->unorderedAccess[std::size_t(slot)] = buffer ? Impl::StorageSlot{buffer, buffer->glName(), false, SurfaceFormat::Color} : Impl::StorageSlot{};
+    impl_->unorderedAccess[std::size_t(slot)] = buffer ? Impl::StorageSlot{buffer, buffer->backendObject(), false, SurfaceFormat::Color} : Impl::StorageSlot{};
 }
 
 void GraphicsDevice::SetUnorderedAccess(int slot, Texture2D* texture) {
@@ -44,14 +44,14 @@ void GraphicsDevice::SetUnorderedAccess(int slot, Texture2D* texture) {
                             " has format " + surfaceFormatName(texture->Format()) +
                             ", which shaders cannot write as a RWTexture2D on GL (use Single, Vector2, Vector4, HalfSingle, HalfVector2, "
                             "HalfVector4, Color or Rgba64)");
-    impl_->unorderedAccess[std::size_t(slot)] = Impl::StorageSlot{texture, texture->glName(), true, texture->Format()};
+    impl_->unorderedAccess[std::size_t(slot)] = Impl::StorageSlot{texture, texture->backendObject(), true, texture->Format()};
 }
 
 void GraphicsDevice::SetShaderResource(int slot, StructuredBuffer* buffer) {
     if (slot < 0 || slot >= kMaxShaderResourceBuffers) throw ArgumentError(slotOutside("SetShaderResource", slot, kMaxShaderResourceBuffers));
     if (buffer && &buffer->device() != this) throw InvalidOperation("SetShaderResource: the buffer was made by another GraphicsDevice");
     if (buffer && buffer->IsDisposed()) throw InvalidOperation("SetShaderResource: the buffer was disposed");
-    impl_->resourceBuffers[std::size_t(slot)] = buffer ? Impl::StorageSlot{buffer, buffer->glName(), false, SurfaceFormat::Color} : Impl::StorageSlot{};
+    impl_->resourceBuffers[std::size_t(slot)] = buffer ? Impl::StorageSlot{buffer, buffer->backendObject(), false, SurfaceFormat::Color} : Impl::StorageSlot{};
 }
 
 bool GraphicsDevice::Impl::applyStorage(const ShaderProgram* const* programs, std::size_t count, const char* what) {

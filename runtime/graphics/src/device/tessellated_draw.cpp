@@ -72,8 +72,8 @@ void GraphicsDevice::DrawIndexedPatches(int controlPoints, int baseVertex, int s
         d.flush("DrawIndexedPatches");
     }
     Impl::VertexArray& va = d.bindVertexBuffer();
-    if (va.elements != Indices->glName()) {
-        va.elements = Indices->glName();
+    if (va.elements != Indices->backendObject()) {
+        va.elements = Indices->backendObject();
         d.backend->setIndexBuffer(va.vao, va.elements);
     }
     const bool wide = Indices->IndexElementSize() == IndexElementSize::ThirtyTwoBits;

@@ -333,7 +333,7 @@ void SpriteBatch::flush() {
         // Textures are ordered by GL name: unique among live textures and roughly creation order.
         if (sortMode_ == SpriteSortMode::Texture) {
             std::stable_sort(sprites_.begin(), sprites_.end(), [](const QueuedSprite& a, const QueuedSprite& b) {
-                return a.texture->glName() < b.texture->glName();
+                return a.texture->backendObject() < b.texture->backendObject();
             });
         } else if (sortMode_ == SpriteSortMode::BackToFront) {
             std::stable_sort(sprites_.begin(), sprites_.end(),

@@ -48,7 +48,7 @@ public:
 
     void setBytes(std::size_t offset, const void* data, std::size_t bytes);
     void getBytes(std::size_t offset, void* data, std::size_t bytes) const;
-    std::uint32_t glName() const { return name_; }
+    std::uint32_t backendObject() const { return name_; }
 
 protected:
     void releaseGpuObjects() override;

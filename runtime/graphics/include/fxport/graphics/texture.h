@@ -24,8 +24,8 @@ public:
     SurfaceFormat Format() const { return format_; }
     int LevelCount() const { return levels_; }
     Kind kind() const { return kind_; }
-    // The GL texture name (an integer; for fxport internals and interop).
-    std::uint32_t glName() const { return name_; }
+    // The backend's object for this texture (an integer; for fxport internals and interop).
+    std::uint32_t backendObject() const { return name_; }
     // True for RenderTarget2D / RenderTargetCube.
     virtual bool isRenderTarget() const { return false; }
 

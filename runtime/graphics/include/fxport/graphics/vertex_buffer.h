@@ -34,7 +34,7 @@ public:
 
     void setData(int offsetInBytes, const void* data, std::size_t elementSize, std::size_t count);
     void getData(void* data, std::size_t elementSize, std::size_t count) const;
-    std::uint32_t glName() const { return name_; }
+    std::uint32_t backendObject() const { return name_; }
 
 protected:
     void releaseGpuObjects() override;
@@ -66,7 +66,7 @@ public:
 
     void setData(int offsetInBytes, const void* data, std::size_t elementSize, std::size_t count);
     void getData(void* data, std::size_t elementSize, std::size_t count) const;
-    std::uint32_t glName() const { return name_; }
+    std::uint32_t backendObject() const { return name_; }
 
 protected:
     void releaseGpuObjects() override;

@@ -99,7 +99,7 @@ void GraphicsDevice::Impl::makeDepthStorage(DepthStorage& storage) {
     depthStats.allocatedBytes += bytesOf(storage);
     if (&storage != boundDepthStorage()) return;  // made with its target: nothing is bound or waits
     // The target's framebuffers have no depth attachment: make them again.
-    dropFramebuffersUsing(firstBound(targets, backBuffer.get())->glName());
+    dropFramebuffersUsing(firstBound(targets, backBuffer.get())->backendObject());
     bindTargets();
     // A clear of the channel still pending on the binding came after the waiting one and replaces it.
     const unsigned replaced = storage.waitingClear & pendingClear.options;

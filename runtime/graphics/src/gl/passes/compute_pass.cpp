@@ -584,7 +584,7 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
         if (targets[i].writeMask == 0) continue;
         const Texture* t = bindings[i].RenderTarget;
         const bool cube = t->kind() == Texture::Kind::TextureCube;
-        glBindImageTexture(GLuint(i), t->glName(), 0, GL_FALSE, cube ? GLint(bindings[i].CubeMapFace) : 0, GL_READ_WRITE,
+        glBindImageTexture(GLuint(i), t->backendObject(), 0, GL_FALSE, cube ? GLint(bindings[i].CubeMapFace) : 0, GL_READ_WRITE,
                            detail::glFormat(t->Format()).internalFormat);
     }
     glBindImageTexture(detail::kStoreUnit, entry->store, 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);

@@ -167,8 +167,8 @@ bool ComputePasses::tryTexelCopies(const Texture2D& texture, const std::vector<d
     glNamedBufferData(copiesBuffer, GLsizeiptr(words.size() * sizeof(GLint)), words.data(), GL_STREAM_DRAW);
     glUseProgram(program.program);
     const GLenum internalFormat = detail::glFormat(format).internalFormat;
-    glBindImageTexture(0, target2D.glName(), 0, GL_FALSE, 0, GL_READ_WRITE, internalFormat);
-    glBindImageTexture(1, texture.glName(), 0, GL_FALSE, 0, GL_READ_ONLY, internalFormat);
+    glBindImageTexture(0, target2D.backendObject(), 0, GL_FALSE, 0, GL_READ_WRITE, internalFormat);
+    glBindImageTexture(1, texture.backendObject(), 0, GL_FALSE, 0, GL_READ_ONLY, internalFormat);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, detail::kCopiesBinding, copiesBuffer);
     const GLint box[4] = {bx0, by0, bx1, by1};
     glProgramUniform4iv(program.program, program.box, 1, box);
