@@ -8,6 +8,7 @@
 #include <set>
 #include <string>
 
+#include "call_arguments.h"
 #include "expression_types.h"
 
 namespace fxport::xlate {
@@ -108,26 +109,6 @@ bool sameType(const BasicType& a, const BasicType& b) {
     return glslangSpelling(a) == glslangSpelling(b) && a.isMatrix == b.isMatrix;
 }
 
-// The argument spans of the call whose '(' is at `open`; empty when unbalanced.
-std::vector<std::pair<size_t, size_t>> argumentSpans(const std::vector<Token>& t, size_t open, size_t end) {
-    std::vector<std::pair<size_t, size_t>> out;
-    int depth = 0;
-    size_t start = open + 1;
-    for (size_t j = open; j < end; ++j) {
-        if (t[j].is("(") || t[j].is("[") || t[j].is("{")) {
-            ++depth;
-        } else if (t[j].is(")") || t[j].is("]") || t[j].is("}")) {
-            if (--depth == 0) {
-                if (j > start) out.push_back({start, j});
-                return out;
-            }
-        } else if (depth == 1 && t[j].is(",")) {
-            out.push_back({start, j});
-            start = j + 1;
-        }
-    }
-    return {};
-}
 
 // fxc's common type of an element-wise call's arguments, when a matrix takes part and no vector.
 std::optional<BasicType> commonMatrixType(const std::vector<BasicType>& args, bool floatOnly) {
@@ -153,7 +134,7 @@ std::optional<BasicType> commonMatrixType(const std::vector<BasicType>& args, bo
 std::optional<std::pair<ExpressionType, ExpressionType>> mulArguments(const EffectSyntax& syntax, const FxFunction& f, size_t i) {
     const auto& t = syntax.tokens;
     if (!t[i].is("mul") || !t[i + 1].is("(") || (i > 0 && t[i - 1].is(".")) || syntax.findFunction("mul")) return std::nullopt;
-    auto spans = argumentSpans(t, i + 1, f.body.end);
+    auto spans = callArgumentSpans(t, i + 1, f.body.end);
     if (spans.size() != 2) return std::nullopt;
     auto a = expressionType(syntax, f, spans[0].first, spans[0].second), b = expressionType(syntax, f, spans[1].first, spans[1].second);
     if (!a || !b || !a->isNumeric() || !b->isNumeric() || a->keptMatrix || b->keptMatrix || !mulNeedsHelper(*a, *b)) return std::nullopt;
@@ -228,7 +209,7 @@ private:
     void matrixIntrinsic(const FxFunction& f, size_t i) {
         const bool determinant = t_[i].is("determinant");
         if ((!determinant && !t_[i].is("transpose")) || !t_[i + 1].is("(") || (i > 0 && t_[i - 1].is(".")) || syntax_.findFunction(t_[i].text)) return;
-        auto spans = argumentSpans(t_, i + 1, f.body.end);
+        auto spans = callArgumentSpans(t_, i + 1, f.body.end);
         if (spans.size() != 1) return;
         auto type = expressionType(syntax_, f, spans[0].first, spans[0].second);
         if (!type || !type->isNumeric() || type->keptMatrix || !type->basic.isMatrix) return;
@@ -258,7 +239,7 @@ private:
         if (!t_[i].isIdent() || !t_[i + 1].is("(") || (i > 0 && t_[i - 1].is("."))) return;
         const bool floatOnly = kElementwiseFloat.count(t_[i].text) > 0;
         if ((!floatOnly && !kElementwise.count(t_[i].text)) || syntax_.findFunction(t_[i].text)) return;
-        auto spans = argumentSpans(t_, i + 1, f.body.end);
+        auto spans = callArgumentSpans(t_, i + 1, f.body.end);
         if (spans.size() < 2) return;
         std::vector<BasicType> types;
         for (const auto& [b, e] : spans) {

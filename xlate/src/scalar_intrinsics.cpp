@@ -5,6 +5,7 @@
 #include <set>
 #include <string>
 
+#include "call_arguments.h"
 #include "hlsl_types.h"
 #include "variable_declarations.h"
 
@@ -42,26 +43,6 @@ bool isScalar(const EffectSyntax& syntax, const FxFunction& f, size_t b, size_t 
     return type.ok && type.rows * type.columns == 1 && (!matrixOnly || type.isMatrix || type.scalar == syntax.resolveType(d->type));
 }
 
-// The argument spans of the call whose '(' is at `open`.
-std::vector<std::pair<size_t, size_t>> arguments(const std::vector<Token>& t, size_t open, size_t end) {
-    std::vector<std::pair<size_t, size_t>> out;
-    int depth = 0;
-    size_t start = open + 1;
-    for (size_t j = open; j < end; ++j) {
-        if (t[j].is("(") || t[j].is("[") || t[j].is("{")) ++depth;
-        else if (t[j].is(")") || t[j].is("]") || t[j].is("}")) {
-            if (--depth == 0) {
-                if (j > start) out.push_back({start, j});
-                return out;
-            }
-        } else if (depth == 1 && t[j].is(",")) {
-            out.push_back({start, j});
-            start = j + 1;
-        }
-    }
-    return {};
-}
-
 }  // namespace
 
 std::vector<TextEdit> scalarIntrinsicCalls(const EffectSyntax& syntax) {
@@ -74,7 +55,7 @@ std::vector<TextEdit> scalarIntrinsicCalls(const EffectSyntax& syntax) {
             if (!t[i].isIdent() || !t[i + 1].is("(") || (i > 0 && t[i - 1].is("."))) continue;
             for (const Helper& h : kHelpers) {
                 if (t[i].text != h.name || syntax.findFunction(h.name)) continue;
-                auto args = arguments(t, i + 1, f.body.end);
+                auto args = callArgumentSpans(t, i + 1, f.body.end);
                 if (args.size() != h.arguments) continue;
                 bool scalars = true;
                 for (const auto& [b, e] : args) scalars = scalars && isScalar(syntax, f, b, e, h.matrixOnly);
