@@ -9,51 +9,18 @@
 #include <string>
 #include <vector>
 
+#include "one_pixel_effect.h"
 #include "runtime_test_support.h"
 
 namespace fxport::test {
 namespace {
 
-class HlslShapes : public ::testing::TestWithParam<const char*> {
+class HlslShapes : public OnePixelEffect {
 protected:
-    void SetUp() override {
-        device.BlendState = BlendState::Opaque;
-        device.DepthStencilState = DepthStencilState::None;
-        device.RasterizerState = RasterizerState::CullNone;
-    }
-    void TearDown() override { device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr)); }
-
-    // An effect whose pixel shader is `body` (HLSL statements returning a float4) after `globals`.
-    std::unique_ptr<Effect> effect(const std::string& globals, const std::string& body) {
-        const std::string model = GetParam();
-        std::string text = globals + "\n"
-                           "float4 VS(float4 p : POSITION0) : POSITION0 { return p; }\n"
-                           "float4 PS() : COLOR0 {\n" + body + "\n}\n"
-                           "technique T { pass P { VertexShader = compile vs_" + model + " VS(); PixelShader = compile ps_" + model + " PS(); } }\n";
-        EffectOptions options;
-        options.useCache = false;
-        return std::make_unique<Effect>(device, EffectSource{text, "hlsl_shapes_" + model + ".fx"}, options);
-    }
-
-    std::vector<float> draw(Effect& e) {
-        RenderTarget2D target(device, 1, 1, false, SurfaceFormat::Vector4);
-        struct Unbind {
-            GraphicsDevice& d;
-            ~Unbind() { d.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr)); }
-        } unbind{device};
-        device.SetRenderTarget(target);
-        device.Clear(Color::Black);
-        e.CurrentTechnique->Passes[0].Apply();
-        drawQuad(device);
-        return readFloats(target);
-    }
-
     void expectPixel(const std::vector<float>& px, const float (&expected)[4], float tolerance = 1e-5f) {
         ASSERT_EQ(px.size(), 4u);
         for (int k = 0; k < 4; ++k) EXPECT_NEAR(px[size_t(k)], expected[k], tolerance) << "channel " << k;
     }
-
-    GraphicsDevice& device = testDevice();
 };
 
 // lerp(float3x2, float2x3, float3x4) is a float2x2: each argument's top-left 2x2, fxc's common
