@@ -31,10 +31,8 @@ void FenceGame::LoadContent() {
 
     crate = Content.Load<Model>("Cube");
     fenceEffect = Content.Load<Effect>("Fence");  // Fence.fxeffect, built from effects/Fence.fx
-    // The fence texture as the file stores it (this asset's processing switched off, as a
-    // .contentproj's ProcessorParameters would): the CPU check reads Fence.png itself. The fence
-    // is drawn without blending, so only the alpha test reads the alpha.
-    Content.SetTextureProcessor("Fence", fxport::TextureProcessor::None());
+    // Premultiplied by alpha at load, as XNA's content pipeline did (ContentManager::textureProcessor).
+    // The fence is drawn without blending, so only the alpha test reads the alpha.
     fenceTexture = Content.Load<Texture2D>("Fence");
     hudFont = Content.Load<SpriteFont>("Hud");
 

@@ -2,6 +2,7 @@
 // GPU, glfw for a window) for a number of frames, saves the last as OUT/frame.png, and with --check
 // compares that PNG with a CPU computation of the same scene (exit 1 when it differs).
 //   fence_game [--frames N] [--size WxH] [--out DIR] [--check]
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -28,7 +29,14 @@ int main(int argc, char** argv) {
         fxport::GraphicsDevice& device = *game.GraphicsDevice;
         const std::vector<fxport::Color> pixels = fxport::Texture2D::FromFile(device, path)->GetData<fxport::Color>();
         auto fence = fxport::Texture2D::FromFile(device, contentRoot + "/Fence.png");
-        const std::vector<fxport::Color> fenceTexels = fence->GetData<fxport::Color>();
+        // XNA's content pipeline, written out here: magenta keyed to transparent black, then each
+        // colour premultiplied by alpha, rounded (what Content.Load gave the game).
+        std::vector<fxport::Color> fenceTexels = fence->GetData<fxport::Color>();
+        for (fxport::Color& c : fenceTexels) {
+            if (c == fxport::Color(255, 0, 255, 255)) c = fxport::Color(0, 0, 0, 0);
+            auto premultiplied = [&](int v) { return int(std::lround(v * c.A / 255.0)); };
+            c = fxport::Color(premultiplied(c.R), premultiplied(c.G), premultiplied(c.B), c.A);
+        }
         example::FenceFrame frame;
         frame.pixels = &pixels;
         frame.width = options.width;
