@@ -104,6 +104,11 @@ public:
     void adoptD3DConventions() override { calls.push_back("adoptD3DConventions"); }
     int maxTextureSize() override { return 16384; }
     void finish() override { calls.push_back("finish"); }
+    GpuLimits measureLimits(const std::vector<SurfaceFormat>& formats, int size, int repeats) override {
+        calls.push_back("measureLimits " + std::to_string(formats.size()) + " formats " + std::to_string(size) + " x" +
+                        std::to_string(repeats));
+        return {};
+    }
 
     BackendObject createBuffer() override { return make("createBuffer"); }
     void deleteBuffer(BackendObject buffer) override { release("deleteBuffer", buffer); }

@@ -21,6 +21,7 @@
 
 #include "fxport/graphics/blend_state.h"
 #include "fxport/graphics/depth_stencil_state.h"
+#include "fxport/graphics/gpu_limits.h"
 #include "fxport/graphics/graphics_device.h"  // PrimitiveType
 #include "fxport/graphics/rasterizer_state.h"
 #include "fxport/graphics/sampler_state.h"
@@ -225,6 +226,11 @@ public:
     virtual void writeTimestamp(BackendObject query) = 0;
     virtual bool queryReady(BackendObject query) = 0;
     virtual std::uint64_t queryResult(BackendObject query) = 0;
+
+    // The GPU's own rates (diagnostics/gpu_limits.cpp): each of `formats` filled, a clear, bilinear
+    // fetches and compute image writes into size x size targets, `repeats` times each. It works outside
+    // the state given above: afterwards the caller binds its objects again and sets every state.
+    virtual GpuLimits measureLimits(const std::vector<SurfaceFormat>& formats, int size, int repeats) = 0;
 };
 
 // The backends there are (one registration each): OpenGL 4.5 core (gl/gl_backend.cpp).

@@ -124,6 +124,8 @@ public:
         glGetQueryObjectui64v(query, GL_QUERY_RESULT, &result);
         return result;
     }
+
+    GpuLimits measureLimits(const std::vector<SurfaceFormat>& formats, int size, int repeats) override;  // gl_limits_probe.cpp
 };
 
 }  // namespace fxport
