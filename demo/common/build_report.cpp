@@ -217,21 +217,21 @@ void PrintExplain(std::FILE* out, const BuildReport& built, const BuildReport& a
         // Targets' and back buffers' depth/stencil buffers over the run: made at the first draw that
         // tested depth or stencil, never made for a target no draw tested them on.
         std::fprintf(out, "depth/stencil buffers (made when a draw first tests depth or stencil; "
-                          "PresentationParameters::LazyDepthStorage):\n");
+                          "DeviceOptimizations::LazyDepthStorage):\n");
         printDepthStorage(out, "this scene", built);
         if (&all != &built) printDepthStorage(out, "all-features", all);
     }
     if (built.hasClears || all.hasClears) {
         // Channel clears (colour, depth, stencil each count; SetRenderTargets' too) over every frame
         // the device drew; executed + replaced + dropped = requested once nothing is pending.
-        std::fprintf(out, "clears (channel clears over the run's frames; PresentationParameters::DeferClears):\n");
+        std::fprintf(out, "clears (channel clears over the run's frames; DeviceOptimizations::DeferClears):\n");
         printClears(out, "this scene", built);
         if (&all != &built) printClears(out, "all-features", all);
     }
     const ComputePassStatistics& compute = built.computePasses;
     if (compute.dispatched > 0 || !compute.fellBack.empty()) {
         // Candidates: draws of at most two triangles (FXPORT_COMPUTE_PASSES=1).
-        std::fprintf(out, "compute passes (draws of <= 2 triangles over the run's frames; PresentationParameters::ComputePasses):\n");
+        std::fprintf(out, "compute passes (draws of <= 2 triangles over the run's frames; DeviceOptimizations::ComputePasses):\n");
         std::fprintf(out, "  run as compute %6ld  (%ld from the replay store without a fill)\n", compute.dispatched,
                      compute.replayed);
         std::fprintf(out, "  replay entries %6ld  %.1f MiB held, %ld evicted\n", compute.entries,

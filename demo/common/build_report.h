@@ -39,7 +39,7 @@ struct BuildReport {
     // GraphicsDevice::clearStatistics() since the device was made (issue 16), once addClears ran.
     bool hasClears = false;
     ClearStatistics clears;
-    ComputePassStatistics computePasses;  // PresentationParameters::ComputePasses (taken with the clears)
+    ComputePassStatistics computePasses;  // DeviceOptimizations::ComputePasses (taken with the clears)
 
     std::int64_t targetBytes() const;
     double effectLoadMs() const;

@@ -16,7 +16,7 @@
 // fetches counted in the shader's GLSL by xlate::countTextureFetches). The rates come from `limits`
 // (--bounds: the runtime's GpuLimits probe, measured once per device and cached) or from
 // `fillRateGBps` (--fill-rate GB/s, one rate for every format; no fragments or fetches then).
-// A pass whose draws ran as compute dispatches (PresentationParameters::ComputePasses) writes no
+// A pass whose draws ran as compute dispatches (DeviceOptimizations::ComputePasses) writes no
 // fragments GL_SAMPLES_PASSED counts: its target bytes are bounded at the probe's compute write rate
 // and the table says "compute" instead of fragments per pixel.
 #pragma once

@@ -1,4 +1,4 @@
-// Compute passes (PresentationParameters::ComputePasses, runtime/graphics/src/compute_pass.cpp):
+// Compute passes (DeviceOptimizations::ComputePasses, runtime/graphics/src/compute_pass.cpp):
 // each pixel shader of tests/fixtures/runtime/ComputePasses.fx is drawn as a full-target quad on a
 // device that draws it with the fragment stage and on one that runs it as a compute dispatch; both
 // images are compared with the same math computed on the CPU in double precision and must be
@@ -49,7 +49,7 @@ struct Device {
         PresentationParameters p;
         p.BackBufferWidth = w;
         p.BackBufferHeight = h;
-        p.ComputePasses = compute;
+        p.Optimizations.ComputePasses = compute;
         device = std::make_unique<GraphicsDevice>(p);
         effect = std::make_unique<Effect>(*device, runtimeFixture("ComputePasses.fx"));
         device->BlendState = BlendState::Opaque;

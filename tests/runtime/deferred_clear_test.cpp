@@ -1,6 +1,6 @@
 // Clears that wait until needed (runtime/graphics/src/pending_clear.cpp): the pixels are those of
 // executing every clear at once, and the statistics show what was saved. Each case runs on a
-// device that defers and on one that does not (PresentationParameters::DeferClears), and the
+// device that defers and on one that does not (DeviceOptimizations::DeferClears), and the
 // pixels of the two are compared with the value the clears and draws must give.
 #include <gtest/gtest.h>
 
@@ -18,10 +18,10 @@ struct Device {
         PresentationParameters p;
         p.BackBufferWidth = 8;
         p.BackBufferHeight = 4;
-        p.DeferClears = defer;
-        p.HonourDiscards = honourDiscards;
-        p.DropCoveredClears = dropCovered;
-        p.LazyDepthStorage = defer;  // immediate: every clear as written, on buffers made with their targets
+        p.Optimizations.DeferClears = defer;
+        p.Optimizations.HonourDiscards = honourDiscards;
+        p.Optimizations.DropCoveredClears = dropCovered;
+        p.Optimizations.LazyDepthStorage = defer;  // immediate: every clear as written, on buffers made with their targets
         device = std::make_unique<GraphicsDevice>(p);
         effect = std::make_unique<Effect>(*device, runtimeFixture("Conventions.fx"));
         effect->CurrentTechnique = effect->Techniques["SolidColor"];

@@ -291,7 +291,7 @@ TEST(FrontEndCore, ADepthBufferClearWaitsForTheBufferOrClearsItAndForgetsTheShad
         EXPECT_EQ(f.backend->take(), Calls{});
     }
     PresentationParameters eager = Fixture::small();
-    eager.LazyDepthStorage = false;
+    eager.Optimizations.LazyDepthStorage = false;
     Fixture f(eager);
     core::DepthBuffer depth(*f.device, 64, 32, DepthFormat::Depth24Stencil8);
     auto vs = f.shader(0), ps = f.shader(1);

@@ -29,7 +29,7 @@ struct Device {
         p.BackBufferHeight = 4;
         // These tests count the fragments the rasteriser produced: no draw may run as a compute pass
         // (on by default on a GPU like the H100).
-        p.ComputePasses = false;
+        p.Optimizations.ComputePasses = false;
         device = std::make_unique<GraphicsDevice>(p);
         effect = std::make_unique<Effect>(*device, runtimeFixture("Conventions.fx"));
         effect->CurrentTechnique = effect->Techniques["SolidColor"];
@@ -102,7 +102,7 @@ TEST(GpuLimits, TextRoundTripsAndUnknownFormatsTakeTheirTexelSizesRate) {
     EXPECT_TRUE(untouched.fill.empty());
 }
 
-// PresentationParameters::ComputePasses' default: on only where compute image writes are at least
+// DeviceOptimizations::ComputePasses' default: on only where compute image writes are at least
 // kComputePassesWhereFaster times the fragment stage's Color output (the H100: 393.8 against 56.3).
 TEST(GpuLimits, ComputePassesAreTheDefaultOnlyWhereComputeWritesAreFaster) {
     GpuLimits limits;
@@ -136,7 +136,7 @@ TEST(GpuLimits, UnsetComputePassesFollowTheGpusLimits) {
         PresentationParameters p;
         p.BackBufferWidth = 8;
         p.BackBufferHeight = 4;
-        if (set >= 0) p.ComputePasses = set == 1;
+        if (set >= 0) p.Optimizations.ComputePasses = set == 1;
         GraphicsDevice device(p);
         software = GpuLimits::softwareRenderer(device.rendererName());
         const bool expected = !forced.empty() ? forced == "1"

@@ -29,8 +29,8 @@ struct Device {
         PresentationParameters p;
         p.BackBufferWidth = kWidth;
         p.BackBufferHeight = kHeight;
-        p.DeferClears = mode.defer;
-        p.LazyDepthStorage = mode.lazy;
+        p.Optimizations.DeferClears = mode.defer;
+        p.Optimizations.LazyDepthStorage = mode.lazy;
         device = std::make_unique<GraphicsDevice>(p);
         effect = std::make_unique<Effect>(*device, runtimeFixture("Conventions.fx"));
         device->BlendState = BlendState::Opaque;

@@ -30,7 +30,7 @@ struct Device {
         PresentationParameters p;
         p.BackBufferWidth = 64;
         p.BackBufferHeight = 32;
-        p.ComputePasses = compute;
+        p.Optimizations.ComputePasses = compute;
         device = std::make_unique<GraphicsDevice>(p);
         batch = std::make_unique<SpriteBatch>(*device);
     }

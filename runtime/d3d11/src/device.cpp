@@ -21,7 +21,7 @@ PresentationParameters coreParameters() {
     // D3D keeps a target's contents when it is bound again (XNA's DiscardContents clears it).
     p.RenderTargetUsage = RenderTargetUsage::PreserveContents;
     // Each draw is exactly what was asked; the core's compute-pass rewrite stays off.
-    p.ComputePasses = false;
+    p.Optimizations.ComputePasses = false;
     return p;
 }
 

@@ -201,15 +201,15 @@ struct GraphicsDevice::Impl {
         float depth = 1;
         int stencil = 0;
     } pendingClear;
-    bool deferClears = true;  // PresentationParameters::DeferClears and $FXPORT_DEFER_CLEARS
-    bool honourDiscards = true;  // PresentationParameters::HonourDiscards and $FXPORT_HONOUR_DISCARDS
-    bool dropCoveredClears = true;  // PresentationParameters::DropCoveredClears and $FXPORT_DROP_COVERED_CLEARS
+    bool deferClears = true;  // DeviceOptimizations::DeferClears and $FXPORT_DEFER_CLEARS
+    bool honourDiscards = true;  // DeviceOptimizations::HonourDiscards and $FXPORT_HONOUR_DISCARDS
+    bool dropCoveredClears = true;  // DeviceOptimizations::DropCoveredClears and $FXPORT_DROP_COVERED_CLEARS
     void discardContents(unsigned options);               // GraphicsDevice::DiscardContents
     // SpriteBatch, before drawing a batch with a sprite whose rectangle covers the whole viewport:
     // drops the pending colour clear if the draw must write every pixel (pending_clear.cpp).
     void dropColorClearUnderCoveringSprite(const ShaderProgram* spriteVertexShader);
     ClearStatistics clearStats;
-    // PresentationParameters::ComputePasses and $FXPORT_COMPUTE_PASSES: null when off (compute_pass.h).
+    // DeviceOptimizations::ComputePasses and $FXPORT_COMPUTE_PASSES: null when off (compute_pass.h).
     std::shared_ptr<ComputePasses> computePasses;
     void executeClear(const Rectangle& rect, unsigned options, const Vector4& color, float depth, int stencil);
     void recordClear(unsigned options, const Vector4& color, float depth, int stencil);
@@ -220,7 +220,7 @@ struct GraphicsDevice::Impl {
     fxport::RenderTargetUsage boundUsage() const;           // of the bound targets (the first one's, or the back buffer's)
 
     // --- depth/stencil storage made when a draw first needs it (depth_storage.cpp)
-    bool lazyDepthStorage = true;  // PresentationParameters::LazyDepthStorage and $FXPORT_LAZY_DEPTH
+    bool lazyDepthStorage = true;  // DeviceOptimizations::LazyDepthStorage and $FXPORT_LAZY_DEPTH
     DepthStorageStatistics depthStats;
     void adoptDepthStorage(DepthStorage& storage);    // a target made with it: counted; made now unless lazy
     void releaseDepthStorage(DepthStorage& storage);  // the target is released

@@ -95,7 +95,7 @@ const SamplerState& SamplerStateCollection::operator[](int slot) const {
 
 namespace {
 
-// PresentationParameters::ComputePasses left unset: compute passes are exact everywhere, faster only
+// DeviceOptimizations::ComputePasses left unset: compute passes are exact everywhere, faster only
 // where fragment output is this GPU's limit. A software rasteriser is never asked (its probe would
 // cost every device a measurement; llvmpipe runs them several times slower).
 bool computePassesAreFaster(GraphicsDevice& device) {
@@ -151,14 +151,11 @@ GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters)
     }
     impl_ = std::make_unique<Impl>(*this, std::move(backend));
     liveDevices().push_back(this);
-    const char* defer = std::getenv("FXPORT_DEFER_CLEARS");
-    impl_->deferClears = parameters_.DeferClears && !(defer && std::string(defer) == "0");
-    const char* discard = std::getenv("FXPORT_HONOUR_DISCARDS");
-    impl_->honourDiscards = parameters_.HonourDiscards && !(discard && std::string(discard) == "0");
-    const char* lazyDepth = std::getenv("FXPORT_LAZY_DEPTH");
-    impl_->lazyDepthStorage = parameters_.LazyDepthStorage && !(lazyDepth && std::string(lazyDepth) == "0");
-    const char* covered = std::getenv("FXPORT_DROP_COVERED_CLEARS");
-    impl_->dropCoveredClears = parameters_.DropCoveredClears && !(covered && std::string(covered) == "0");
+    const DeviceOptimizations optimizations = parameters_.Optimizations.withEnvironment();
+    impl_->deferClears = optimizations.DeferClears;
+    impl_->honourDiscards = optimizations.HonourDiscards;
+    impl_->lazyDepthStorage = optimizations.LazyDepthStorage;
+    impl_->dropCoveredClears = optimizations.DropCoveredClears;
 
     // The D3D conventions (docs/DESIGN.md): NDC z in [0,1], and window y from the top row so
     // render targets come out top-row-first.
@@ -177,16 +174,10 @@ GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters)
     SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
     ScissorRectangle = Rectangle(0, 0, parameters_.BackBufferWidth, parameters_.BackBufferHeight);
 
-    // Compute passes: the environment, else the parameter, else where this GPU runs them faster.
-    const char* compute = std::getenv("FXPORT_COMPUTE_PASSES");
-    const bool forced = compute && (std::string(compute) == "1" || std::string(compute) == "0");
-    if (compute && !forced)
-        std::cerr << "fxport: FXPORT_COMPUTE_PASSES='" << compute
-                  << "' is not 1 or 0; PresentationParameters::ComputePasses decides\n";
-    // Compute passes are the GL backend's own (gl/passes/) and need its context.
-    const bool computePasses = context_ && (forced                          ? std::string(compute) == "1"
-                                            : parameters_.ComputePasses ? *parameters_.ComputePasses
-                                                                        : computePassesAreFaster(*this));
+    // Compute passes are the GL backend's own (gl/passes/) and need its context; unset, they run
+    // where this GPU runs them faster.
+    const bool computePasses =
+        context_ && (optimizations.ComputePasses ? *optimizations.ComputePasses : computePassesAreFaster(*this));
     if (computePasses) impl_->computePasses = std::make_shared<ComputePasses>(*impl_);
 }
 

@@ -28,7 +28,7 @@ struct GpuLimits {
     double clearGBps = 0;            // glClear of a Color target
     double fetchGTexelsPerSecond = 0;  // bilinear fetches of a Color texture in a pixel shader
     double computeWriteGBps = 0;     // imageStore of a Color (rgba8) image from a compute shader, 8x8
-                                     // work groups, one dispatch per pass (PresentationParameters::ComputePasses)
+                                     // work groups, one dispatch per pass (DeviceOptimizations::ComputePasses)
 
     // The rate of `format` (a format not measured: the measured one of the same texel size, else
     // the slowest measured); 0 when nothing was measured.
@@ -47,7 +47,7 @@ struct GpuLimits {
     static bool softwareRenderer(const std::string& renderer);
 
     // Whether compute images are written at least kComputePassesWhereFaster times as fast as the
-    // fragment stage writes a Color target: PresentationParameters::ComputePasses' default.
+    // fragment stage writes a Color target: DeviceOptimizations::ComputePasses' default.
     bool computePassesFaster() const;
 
     std::string toText() const;  // one "key value" line each (the cache file)

@@ -18,6 +18,8 @@
 
 #include "fxport/graphics/blend_state.h"
 #include "fxport/graphics/depth_stencil_state.h"
+#include "fxport/graphics/device_optimizations.h"
+#include "fxport/graphics/device_statistics.h"
 #include "fxport/graphics/rasterizer_state.h"
 #include "fxport/graphics/render_target.h"
 #include "fxport/graphics/sampler_state.h"
@@ -51,44 +53,11 @@ struct PresentationParameters {
     // headless), "glfw" (a window). Empty = $FXPORT_PLATFORM, else osmesa.
     std::string platform;
     bool debug = false;          // GL debug context; driver messages go to stderr
-    // fxport: clears of a whole target are recorded and sent to GL only when a draw or read needs the
-    // channel; a clear replaced by a later one, or a depth/stencil clear of a DiscardContents target
-    // that no draw tested, never runs. The pixels are the same either way; false (or
-    // $FXPORT_DEFER_CLEARS=0) executes every clear at once, as written.
-    bool DeferClears = true;
-    // fxport: GraphicsDevice::DiscardContents drops what it names (false, or
-    // $FXPORT_HONOUR_DISCARDS=0: it does nothing, so every clear runs as written).
-    bool HonourDiscards = true;
-    // fxport: a render target's depth/stencil buffer (the back buffer's too) is made at the first draw
-    // into it that tests depth or stencil, so a target never drawn with depth takes no memory
-    // (DepthStorageStatistics); leaving a DiscardContents target tells GL its depth/stencil is no
-    // longer needed (glInvalidateFramebuffer: XNA clears them at its next binding). DepthStencilFormat
-    // reports the format asked for either way, and the pixels are the same; false (or
-    // $FXPORT_LAZY_DEPTH=0) makes every buffer with its target.
-    bool LazyDepthStorage = true;
-    // fxport: a pending colour clear is dropped under a SpriteBatch sprite that provably writes every
-    // pixel of the target (ClearStatistics::covered), and a draw that blends onto a zero colour clear
-    // executed for it, on an unsigned-normalized target with source factor One and Add, Subtract or
-    // Max, draws as the write it amounts to (ClearStatistics::blendsAsWrites; same bytes); false (or
-    // $FXPORT_DROP_COVERED_CLEARS=0) does neither.
-    bool DropCoveredClears = true;
-    // fxport: a draw of at most two triangles (a FullscreenQuad, a one-sprite SpriteBatch batch)
-    // whose state a compute dispatch honours exactly -- no depth or stencil test, no blending but
-    // Min/Max (and One/One on 32-bit float targets), targets with an image format, a pixel shader
-    // without derivatives -- runs as a compute shader generated from its pixel shader, fed the
-    // values the rasteriser itself interpolated for an earlier draw with bit-identical vertices, so
-    // the pixels are the fragment stage's (ComputePassStatistics). Unset (the default): on where
-    // this GPU's compute shaders write images at least kComputePassesWhereFaster times as fast as
-    // its fragment stage writes a Color target (GpuLimits, measured once per GPU and cached), never
-    // on a software rasteriser; true/false force it. $FXPORT_COMPUTE_PASSES=1 or 0 overrides both.
-    std::optional<bool> ComputePasses;
+    // fxport: the passes the device may run between these calls and the GPU, each leaving the pixels
+    // as XNA draws them (fxport/graphics/device_optimizations.h; DeviceOptimizations::None() for none).
+    DeviceOptimizations Optimizations;
     std::string windowTitle;     // GLFW only
 };
-
-// PresentationParameters::ComputePasses left unset turns compute passes on where the GPU's compute
-// image writes are at least this many times its fragment output (the H100 measured 393 against 56
-// GB/s: x7; llvmpipe runs compute passes several times slower than its rasteriser).
-inline constexpr double kComputePassesWhereFaster = 2.0;
 
 // Number of sampler/texture slots (D3D9 has 16 pixel samplers).
 inline constexpr int kMaxTextureSlots = 16;
@@ -128,51 +97,6 @@ public:
 
 private:
     std::array<fxport::SamplerState, kMaxTextureSlots> slots_;
-};
-
-// Live GL objects made by this device (textures, renderbuffers, buffers, programs, pipelines,
-// framebuffers, vertex arrays, queries): what the resource-lifetime test checks returns to zero.
-struct GpuObjectCounts {
-    int textures = 0, renderbuffers = 0, buffers = 0, programs = 0, pipelines = 0, framebuffers = 0,
-        vertexArrays = 0, queries = 0;
-    int total() const { return textures + renderbuffers + buffers + programs + pipelines + framebuffers + vertexArrays + queries; }
-};
-
-// Depth/stencil buffers over the device's life (PresentationParameters::LazyDepthStorage): bytes
-// as drivers store them (Depth16 2 per pixel, Depth24 and Depth24Stencil8 4).
-struct DepthStorageStatistics {
-    long requested = 0;                // render targets and back buffers made with a DepthFormat
-    long allocated = 0;                // their buffers made in GL (at a draw that needed one, or at once)
-    std::int64_t requestedBytes = 0, allocatedBytes = 0;
-    long invalidated = 0;              // depth/stencil contents given up on leaving a DiscardContents target
-    long unallocated() const { return requested - allocated; }  // targets never drawn with depth or stencil
-    std::int64_t savedBytes() const { return requestedBytes - allocatedBytes; }
-};
-
-// What the device did with the clears it was asked for (PresentationParameters::DeferClears).
-struct ClearStatistics {
-    long requested = 0;  // channel clears asked for (colour, depth, stencil each count; SetRenderTargets' too)
-    long executed = 0;   // channel clears sent to GL
-    long replaced = 0;   // pending channel clears overwritten by a later clear before any use
-    long dropped = 0;    // depth/stencil clears of a DiscardContents target left before any draw tested them
-    long discarded = 0;  // pending channel clears dropped by DiscardContents
-    long covered = 0;    // pending colour clears dropped under a SpriteBatch sprite that writes every pixel
-    long blendsAsWrites = 0;  // draws blending onto the zero clear executed for them, drawn as writes (same bits)
-};
-
-// What PresentationParameters::ComputePasses did: draws run as compute dispatches, and, for draws
-// that were candidates (at most two triangles) but were drawn as usual, how many per reason. The
-// GPU decides part of it (whether the vertices changed, w = 1, overlap); its counters are read
-// without waiting, so draws it has not run yet are not counted (a read-back of a target waits).
-struct ComputePassStatistics {
-    long issued = 0;      // draws sent to the GPU as compute passes, counted at once (the GPU may still
-                          // draw some as usual: fellBack's GPU reasons)
-    long dispatched = 0;  // draws run as compute dispatches
-    long replayed = 0;    // of those, from interpolants stored by an earlier draw (no fill)
-    std::map<std::string, long> fellBack;
-    long entries = 0;              // replay entries held now
-    std::int64_t entryBytes = 0;   // their GPU memory (bounded by $FXPORT_COMPUTE_PASS_CACHE_MB, 512 by default)
-    long evicted = 0;              // entries dropped to stay within the bound
 };
 
 class GraphicsDevice {
@@ -264,7 +188,7 @@ public:
     // channels in `options` will be overwritten before anything reads them (a full-target quad with
     // blending off, say), so their contents are undefined from here: a clear of them still pending
     // (SetRenderTargets' clear of a DiscardContents target) is dropped and GL is told. Pixels the
-    // next draws do not cover are undefined, as in D3D. PresentationParameters::HonourDiscards.
+    // next draws do not cover are undefined, as in D3D. DeviceOptimizations::HonourDiscards.
     void DiscardContents(ClearOptions options);
 
     // XNA 4 signatures. baseVertex is added to every index; minVertexIndex/numVertices are hints.

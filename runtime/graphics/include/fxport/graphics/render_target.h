@@ -10,7 +10,7 @@
 namespace fxport {
 
 // fxport, for the device (runtime/graphics/src/depth_storage.cpp), not for games: a target's
-// depth/stencil buffer. With PresentationParameters::LazyDepthStorage it is made at the first draw
+// depth/stencil buffer. With DeviceOptimizations::LazyDepthStorage it is made at the first draw
 // into the target that tests depth or stencil; until then the target's last whole-target clear of
 // each channel waits here, and runs on the buffer when it is made.
 struct DepthStorage {

@@ -1,7 +1,7 @@
 // Depth/stencil buffers made when a draw first needs them (issue 16). XNA games give render targets
 // a DepthFormat (and keep the back buffer's default Depth24Stencil8) that nothing draws into with a
 // depth or stencil test: light maps, post-processing targets, 2D games. With
-// PresentationParameters::LazyDepthStorage a target's buffer is made at the first draw into it that
+// DeviceOptimizations::LazyDepthStorage a target's buffer is made at the first draw into it that
 // tests depth or stencil (XNA: the first bound target's buffer serves all of an MRT binding). Until
 // then no draw has read or written it, so only the last whole-target clear of each channel can be
 // seen: it waits on the target and runs on the new buffer first. A clear of part of it makes the

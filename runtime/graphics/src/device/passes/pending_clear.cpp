@@ -3,7 +3,7 @@
 // execute both. The device records a clear of the whole target per channel (colour, depth,
 // stencil) and sends it when a draw or a read-back needs that channel, so a clear replaced by the
 // next one, and a depth/stencil clear of a target nothing draws into with depth, cost nothing. The
-// pixels are the same as executing every clear at once (PresentationParameters::DeferClears=false
+// pixels are the same as executing every clear at once (DeviceOptimizations::DeferClears=false
 // does that; tests compare the two). A depth/stencil buffer that no draw has needed yet does not
 // exist (LazyDepthStorage): a clear of it waits on its target instead (depth_storage.cpp).
 #include <algorithm>

@@ -1,4 +1,4 @@
-// INTERNAL: compute passes (PresentationParameters::ComputePasses, issue 16 item 4). A draw of at
+// INTERNAL: compute passes (DeviceOptimizations::ComputePasses, issue 16 item 4). A draw of at
 // most two triangles whose state a compute dispatch can honour exactly runs as one, fed the
 // values the rasteriser itself interpolated, so its pixels are the fragment stage's bit for bit:
 //  1. its own vertex shader under transform feedback (rasteriser discarded) into a small buffer;

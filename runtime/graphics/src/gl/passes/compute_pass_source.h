@@ -1,4 +1,4 @@
-// INTERNAL: the text transform behind compute passes (PresentationParameters::ComputePasses): a
+// INTERNAL: the text transform behind compute passes (DeviceOptimizations::ComputePasses): a
 // translated pixel shader's GLSL made into a compute shader that does, for each pixel a small draw
 // covers, what the fragment stage would have done (the pixel function, blending and write masks,
 // imageStore), reading the inputs the rasteriser itself interpolated from a replay store that a
