@@ -1,9 +1,10 @@
 // CrateGame: see crate_game.h.
 #include "crate_game.h"
 
-using namespace fxport;
-
 namespace example {
+
+// Inside the game's namespace, as docs/API.md ("Names") advises: the game's own names win over XNA's.
+using namespace fxport;
 
 CrateGame::CrateGame(int width, int height, const std::string& contentRoot) {
     graphics.PreferredBackBufferWidth = width;  // headless (OSMesa) unless FXPORT_PLATFORM says egl or glfw

@@ -1,9 +1,10 @@
 // CubeGame: see cube_game.h.
 #include "cube_game.h"
 
-using namespace fxport;
-
 namespace example {
+
+// Inside the game's namespace, as docs/API.md ("Names") advises: the game's own names win over XNA's.
+using namespace fxport;
 
 CubeGame::CubeGame(int width, int height, const std::string& contentRoot) {
     graphics.PreferredBackBufferWidth = width;  // headless (OSMesa) unless FXPORT_PLATFORM says egl or glfw

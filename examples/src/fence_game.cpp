@@ -1,9 +1,10 @@
 // FenceGame: see fence_game.h. The methods follow XNA's Game1 template, in XNA's order.
 #include "fence_game.h"
 
-using namespace fxport;
-
 namespace example {
+
+// Inside the game's namespace, as docs/API.md ("Names") advises: the game's own names win over XNA's.
+using namespace fxport;
 
 FenceGame::FenceGame(int width, int height, const std::string& contentRoot) {
     graphics.PreferredBackBufferWidth = width;  // headless (OSMesa) unless FXPORT_PLATFORM says egl or glfw
