@@ -1,8 +1,11 @@
 #include "spirv_fixups.h"
 
+#include "spirv_integer_fixups.h"
+
 #include <spirv-tools/libspirv.h>
 #include <spirv-tools/optimizer.hpp>
 
+#include <functional>
 #include <map>
 #include <set>
 
@@ -105,6 +108,8 @@ void applySpirvFixups(std::vector<std::uint32_t>& words) {
     remainderTruncates(words);
     ModuleTypes types;
     if (hasOpcode(words, {kOpAny, kOpAll}) && readTypes(words, types)) anyAllOfScalarIsTheScalar(words, types);
+    maskShiftCounts(words);
+    floatToUnsignedSaturates(words);
 }
 
 namespace {
@@ -159,39 +164,17 @@ bool dividesByConstantZero(const std::vector<std::uint32_t>& original, bool floa
     return false;
 }
 
-bool legalizeSpirv(std::vector<std::uint32_t>& words, std::string* error) {
+namespace {
+
+// Runs the passes `add` registers; false (with spirv-opt's errors) when it refuses the module.
+bool runPasses(std::vector<std::uint32_t>& words, std::string* error,
+               const std::function<void(spvtools::Optimizer&)>& add) {
     spvtools::Optimizer optimizer(SPV_ENV_VULKAN_1_0);
     std::string messages;
     optimizer.SetMessageConsumer([&](spv_message_level_t level, const char*, const spv_position_t&, const char* message) {
         if (level <= SPV_MSG_ERROR) messages += std::string(message) + "\n";
     });
-    // The order glslang uses for HLSL (its SpirvToolsTransform), so that the GLSL we emit is what it
-    // was when glslang ran these passes itself.
-    optimizer.RegisterPass(spvtools::CreateWrapOpKillPass())
-        .RegisterPass(spvtools::CreateDeadBranchElimPass())
-        .RegisterPass(spvtools::CreateMergeReturnPass())
-        .RegisterPass(spvtools::CreateInlineExhaustivePass())
-        .RegisterPass(spvtools::CreateEliminateDeadFunctionsPass())
-        .RegisterPass(spvtools::CreateScalarReplacementPass())
-        .RegisterPass(spvtools::CreateLocalAccessChainConvertPass())
-        .RegisterPass(spvtools::CreateLocalSingleBlockLoadStoreElimPass())
-        .RegisterPass(spvtools::CreateLocalSingleStoreElimPass())
-        .RegisterPass(spvtools::CreateSimplificationPass())
-        .RegisterPass(spvtools::CreateAggressiveDCEPass())
-        .RegisterPass(spvtools::CreateVectorDCEPass())
-        .RegisterPass(spvtools::CreateDeadInsertElimPass())
-        .RegisterPass(spvtools::CreateAggressiveDCEPass())
-        .RegisterPass(spvtools::CreateDeadBranchElimPass())
-        .RegisterPass(spvtools::CreateBlockMergePass())
-        .RegisterPass(spvtools::CreateLocalMultiStoreElimPass())
-        .RegisterPass(spvtools::CreateIfConversionPass())
-        .RegisterPass(spvtools::CreateSimplificationPass())
-        .RegisterPass(spvtools::CreateAggressiveDCEPass())
-        .RegisterPass(spvtools::CreateVectorDCEPass())
-        .RegisterPass(spvtools::CreateDeadInsertElimPass())
-        .RegisterPass(spvtools::CreateInterpolateFixupPass())
-        .RegisterPass(spvtools::CreateAggressiveDCEPass())
-        .RegisterPass(spvtools::CreateCFGCleanupPass());
+    add(optimizer);
     spvtools::OptimizerOptions options;
     options.set_run_validator(false);  // spirvToGlsl's SPIRV-Cross parse is the check downstream
     std::vector<std::uint32_t> out;
@@ -201,6 +184,50 @@ bool legalizeSpirv(std::vector<std::uint32_t>& words, std::string* error) {
     }
     words = std::move(out);
     return true;
+}
+
+}  // namespace
+
+bool legalizeSpirv(std::vector<std::uint32_t>& words, std::string* error) {
+    // The order glslang uses for HLSL (its SpirvToolsTransform), so that the GLSL we emit is what it
+    // was when glslang ran these passes itself. The two simplification passes fold constants; the
+    // division fold that traps in spirv-opt (spirv_integer_fixups.h) runs before each of them, once
+    // forwarding has made the operands constant.
+    bool ok = runPasses(words, error, [](spvtools::Optimizer& o) {
+        o.RegisterPass(spvtools::CreateWrapOpKillPass())
+            .RegisterPass(spvtools::CreateDeadBranchElimPass())
+            .RegisterPass(spvtools::CreateMergeReturnPass())
+            .RegisterPass(spvtools::CreateInlineExhaustivePass())
+            .RegisterPass(spvtools::CreateEliminateDeadFunctionsPass())
+            .RegisterPass(spvtools::CreateScalarReplacementPass())
+            .RegisterPass(spvtools::CreateLocalAccessChainConvertPass())
+            .RegisterPass(spvtools::CreateLocalSingleBlockLoadStoreElimPass())
+            .RegisterPass(spvtools::CreateLocalSingleStoreElimPass());
+    });
+    if (!ok) return false;
+    foldIntMinByMinusOne(words);
+    ok = runPasses(words, error, [](spvtools::Optimizer& o) {
+        o.RegisterPass(spvtools::CreateSimplificationPass())
+            .RegisterPass(spvtools::CreateAggressiveDCEPass())
+            .RegisterPass(spvtools::CreateVectorDCEPass())
+            .RegisterPass(spvtools::CreateDeadInsertElimPass())
+            .RegisterPass(spvtools::CreateAggressiveDCEPass())
+            .RegisterPass(spvtools::CreateDeadBranchElimPass())
+            .RegisterPass(spvtools::CreateBlockMergePass())
+            .RegisterPass(spvtools::CreateLocalMultiStoreElimPass())
+            .RegisterPass(spvtools::CreateIfConversionPass());
+    });
+    if (!ok) return false;
+    foldIntMinByMinusOne(words);
+    return runPasses(words, error, [](spvtools::Optimizer& o) {
+        o.RegisterPass(spvtools::CreateSimplificationPass())
+            .RegisterPass(spvtools::CreateAggressiveDCEPass())
+            .RegisterPass(spvtools::CreateVectorDCEPass())
+            .RegisterPass(spvtools::CreateDeadInsertElimPass())
+            .RegisterPass(spvtools::CreateInterpolateFixupPass())
+            .RegisterPass(spvtools::CreateAggressiveDCEPass())
+            .RegisterPass(spvtools::CreateCFGCleanupPass());
+    });
 }
 
 }  // namespace fxport::xlate

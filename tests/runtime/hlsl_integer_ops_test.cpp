@@ -1,0 +1,69 @@
+// D3D10+'s integer instructions where SPIR-V and GLSL leave the result undefined
+// (xlate/src/spirv_integer_fixups.cpp): each shader is drawn into one float pixel at SM4 and SM5
+// and compared with the operation written in C++ with D3D's meaning. Counts and operands come as
+// uniforms (the GPU computes) and as literals (glslang's and spirv-opt's folding computes).
+#include <gtest/gtest.h>
+
+#include <climits>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "one_pixel_effect.h"
+
+namespace fxport::test {
+namespace {
+
+class HlslIntegerOps : public OnePixelEffect {};
+
+// ishl / ishr / ushr take the count's low 5 bits: 1 << 33 is 2, x >> -1 is x >> 31.
+TEST_P(HlslIntegerOps, ShiftCountsUseTheirLowFiveBits) {
+    const int counts[4] = {33, -1, 32, 62};
+    auto d3dShl = [](std::int32_t x, int s) { return float(std::int32_t(std::uint32_t(x) << (s & 31))); };
+    auto d3dShr = [](std::int32_t x, int s) { return float(x >> (s & 31)); };
+    auto d3dUshr = [](std::uint32_t x, int s) { return float(x >> (s & 31)); };
+    const float expected[4] = {d3dShl(1, counts[0]), d3dShr(INT_MIN, counts[1]), d3dUshr(0xFFFFFFFFu, counts[2]),
+                               d3dShl(7, counts[3])};
+    auto fromUniforms = effect("int4 S; int X;", "uint u = 0xFFFFFFFF; int m = -2147483648;"
+                               "return float4(X << S.x, m >> S.y, u >> S.z, (X * 7) << S.w);");
+    fromUniforms->Parameters["S"].SetValue(std::vector<int>(counts, counts + 4));
+    fromUniforms->Parameters["X"].SetValue(1);
+    auto fromLiterals = effect("", "int x = 1; uint u = 0xFFFFFFFF; int m = -2147483648; int seven = 7;"
+                               "return float4(x << 33, m >> -1, u >> 32, seven << 62);");
+    for (Effect* e : {fromUniforms.get(), fromLiterals.get()}) {
+        std::vector<float> px = draw(*e);
+        for (int k = 0; k < 4; ++k) EXPECT_EQ(px[size_t(k)], expected[k]) << "channel " << k;
+    }
+}
+
+// ftou saturates: negative floats convert to 0 (GLSL's uint() of them is undefined; llvmpipe wraps).
+TEST_P(HlslIntegerOps, NegativeFloatToUintIsZero) {
+    const float in[4] = {-3.6f, -0.5f, 2.6f, -1e9f};
+    auto d3dFtou = [](float f) { return f <= 0 ? 0.0f : float(std::uint32_t(f)); };
+    auto e = effect("float4 F;", "return float4((uint)F.x, (uint)F.y, (uint)F.z, (uint)F.w);");
+    e->Parameters["F"].SetValue(Vector4(in[0], in[1], in[2], in[3]));
+    auto literal = effect("", "float h = -3.6; float g = 2.6; return float4((uint)h, (uint)(h * 0.1), (uint)g, (uint)(h * 1e9));");
+    const float fromLiterals[4] = {d3dFtou(-3.6f), d3dFtou(-0.36f), d3dFtou(2.6f), d3dFtou(-3.6e9f)};
+    std::vector<float> px = draw(*e), lit = draw(*literal);
+    for (int k = 0; k < 4; ++k) {
+        EXPECT_EQ(px[size_t(k)], d3dFtou(in[k])) << "channel " << k;
+        EXPECT_EQ(lit[size_t(k)], fromLiterals[k]) << "channel " << k;
+    }
+}
+
+// INT_MIN / -1 of constants compiles (spirv-opt's folder traps on it) and computes what D3D's
+// idiv does: the quotient wraps to INT_MIN, the remainder is 0. Beside it a uniform division.
+TEST_P(HlslIntegerOps, IntMinByMinusOneFolds) {
+    auto e = effect("int D;", "int x = -2147483648; int y = -1; int2 v = int2(x, 9); int2 w = int2(y, 2);"
+                    "return float4(x / y, x % y, (v / w).y, x / D);");
+    e->Parameters["D"].SetValue(-2);
+    std::vector<float> px = draw(*e);
+    const float expected[4] = {float(INT_MIN), 0.0f, float(9 / 2), float(INT_MIN / -2)};
+    for (int k = 0; k < 4; ++k) EXPECT_EQ(px[size_t(k)], expected[k]) << "channel " << k;
+}
+
+INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslIntegerOps, ::testing::Values("4_0", "5_0"),
+                         [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
+
+}  // namespace
+}  // namespace fxport::test

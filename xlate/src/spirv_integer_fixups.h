@@ -1,0 +1,24 @@
+// D3D10+'s integer instructions on the SPIR-V glslang emits, where SPIR-V (and GLSL after it)
+// leaves the result undefined and D3D defines it. Each runs on the unoptimised module from
+// applySpirvFixups, or between legalisation passes where spirv-opt's folding would meet it.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace fxport::xlate {
+
+// D3D's ishl/ishr/ushr use the low 5 bits of the shift count (`1 << 33` is 2, `x >> -1` is
+// x >> 31); SPIR-V's shifts are undefined from 32 on (llvmpipe gives 0). Masks every count with 31.
+void maskShiftCounts(std::vector<std::uint32_t>& words);
+
+// D3D's ftou saturates: a negative float (and NaN) converts to 0; SPIR-V's OpConvertFToU (GLSL's
+// uint()) is undefined there (llvmpipe wraps -3.6 to 4294967293). Clamps the operand at 0 first.
+void floatToUnsignedSaturates(std::vector<std::uint32_t>& words);
+
+// INT_MIN / -1 and INT_MIN % -1 of constant operands: spirv-opt's folder computes them in C++,
+// which traps (SIGFPE) on x86. Folds them first as D3D computes them (the quotient wraps to
+// INT_MIN, the remainder is 0), for legalizeSpirv to call before each folding pass.
+void foldIntMinByMinusOne(std::vector<std::uint32_t>& words);
+
+}  // namespace fxport::xlate
