@@ -74,6 +74,8 @@ TEST_P(HlslSemantics, FlatBraceInitializersFillComponentsInOrder) {
         {"struct S { float a; float2 b; float c; };", "S s = {1, float2(2, 3), 4}; return float4(s.a, s.b, s.c);", {1, 2, 3, 4}},
         {"static const float2 q[] = {1, 2, 3, 4, 5, 6};", "return float4(q[2], q[1]);", {5, 6, 3, 4}},
         {"struct P { float2 xy; }; static const P ps[2] = {0.25, 0.5, 0.75, 1};", "return float4(ps[1].xy, ps[0].xy);", {0.75f, 1, 0.25f, 0.5f}},
+        // A vector's list with nested braces fills it in order too (glslang alone gives 1, 4, 0, 0).
+        {"", "float4 v = {1, {{{2, {3}}, 4}}}; return v;", {1, 2, 3, 4}},
     };
     for (const Case& c : cases) {
         auto e = effect(c.globals, c.body);

@@ -147,14 +147,26 @@ std::optional<std::vector<int>> dimsBefore(const std::vector<Token>& t, size_t e
 }
 
 // The declared type's name with typedefs resolved, when it is an array, a struct or a matrix (the
-// forms glslang refuses flat); empty otherwise.
-std::string aggregateType(const EffectSyntax& syntax, const std::string& written, bool isArray) {
+// forms glslang refuses flat), or a vector whose list nests braces (`float4 v = {1, {{2, {3}}, 4}};`
+// which glslang takes, but fills 1, 4, 0, 0); empty otherwise.
+std::string aggregateType(const EffectSyntax& syntax, const std::string& written, bool isArray, bool nested) {
     std::string type = written;
     auto td = syntax.typedefs.find(type);
     if (td != syntax.typedefs.end()) type = td->second;
     if (isArray || syntax.findStruct(type)) return type;
     BasicType basic = describeBasicType(type);
-    return basic.ok && basic.isMatrix ? type : std::string();
+    return basic.ok && (basic.isMatrix || (nested && basic.columns > 1)) ? type : std::string();
+}
+
+// Whether the brace list opening at `open` holds another brace list.
+bool nestsBraces(const std::vector<Token>& t, size_t open) {
+    int depth = 0;
+    for (size_t k = open; k < t.size(); ++k) {
+        if (t[k].is("{") && ++depth > 1) return true;
+        if (t[k].is("}") && --depth == 0) return false;
+        if (t[k].is(";")) return false;
+    }
+    return false;
 }
 
 size_t leafCount(const EffectSyntax& syntax, const std::string& type, int depth = 0) {
@@ -182,7 +194,7 @@ std::vector<TextEdit> regroupFlatInitializers(const EffectSyntax& syntax) {
         size_t nameAt = 0;
         auto dims = dimsBefore(t, i, nameAt);
         if (!dims || nameAt == 0 || !t[nameAt - 1].isIdent()) continue;
-        std::string type = aggregateType(syntax, t[nameAt - 1].text, !dims->empty());
+        std::string type = aggregateType(syntax, t[nameAt - 1].text, !dims->empty(), nestsBraces(t, i + 1));
         if (type.empty()) continue;
         LeafReader reader(t, i + 1);
         auto leaves = reader.list();
