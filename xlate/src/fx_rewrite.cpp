@@ -3,6 +3,7 @@
 #include "geometry_output_stream.h"
 
 #include "initializer_lists.h"
+#include "out_argument_casts.h"
 #include "fxc_intrinsics.h"
 #include "matrix_majority.h"
 #include "matrix_swizzle.h"
@@ -396,6 +397,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : respellOneComponentVectors(syntax)) edits.push_back(std::move(e));
     for (auto& e : degenerateMatricesAsVectors(syntax)) edits.push_back(std::move(e));
     for (auto& e : lvalueCastsAsAssignments(syntax)) edits.push_back(std::move(e));
+    for (auto& e : outArgumentsThroughConversions(syntax)) edits.push_back(std::move(e));
     for (auto& e : componentwiseCasts(syntax)) edits.push_back(std::move(e));
     for (auto& e : intrinsicsAsFxc(syntax)) edits.push_back(std::move(e));
     for (auto& e : scalarIntrinsicCalls(syntax)) edits.push_back(std::move(e));
