@@ -1,10 +1,11 @@
-// D3D10+'s integer instructions where SPIR-V and GLSL leave the result undefined
-// (xlate/src/spirv_integer_fixups.cpp): each shader is drawn into one float pixel at SM4 and SM5
-// and compared with the operation written in C++ with D3D's meaning. Counts and operands come as
+// D3D10+'s integer instructions where SPIR-V and GLSL leave the result undefined, and SM2-3's
+// integers computed as floats (xlate/src/spirv_integer_fixups.cpp): each shader is drawn into one
+// float pixel and compared with the operation written in C++ with D3D's meaning. Counts and operands come as
 // uniforms (the GPU computes) and as literals (glslang's and spirv-opt's folding computes).
 #include <gtest/gtest.h>
 
 #include <climits>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -63,6 +64,28 @@ TEST_P(HlslIntegerOps, IntMinByMinusOneFolds) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslIntegerOps, ::testing::Values("4_0", "5_0"),
+                         [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
+
+// SM2-3 have no integers: fxc divides the operands as floats and truncates, so an int beyond 2^24
+// loses its low bits first (16777217 is 16777216 as a float: 16777217 % 10 is 6, not 7).
+class HlslSm3Integers : public OnePixelEffect {};
+
+TEST_P(HlslSm3Integers, DivisionRoundsOperandsToFloat) {
+    const int a = 16777217, b = 10, c = 16782201, d = 999;
+    auto asFxc = [](int x, int y, bool remainder) {
+        const float q = float(x) / float(y), r = std::fmod(float(x), float(y));
+        return float(int(remainder ? r : q));
+    };
+    auto e = effect("float B; float D;", "int a = 16777217; int b = B; int c = 16782201; int d = D;"
+                    "return float4(a % b, (-a) % b, c / d, (-c) / d);");
+    e->Parameters["B"].SetValue(float(b));
+    e->Parameters["D"].SetValue(float(d));
+    std::vector<float> px = draw(*e);
+    const float expected[4] = {asFxc(a, b, true), asFxc(-a, b, true), asFxc(c, d, false), asFxc(-c, d, false)};
+    for (int k = 0; k < 4; ++k) EXPECT_EQ(px[size_t(k)], expected[k]) << "channel " << k;
+}
+
+INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslSm3Integers, ::testing::Values("2_0", "3_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 
 }  // namespace

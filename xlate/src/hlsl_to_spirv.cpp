@@ -8,6 +8,7 @@
 
 #include "glslang_process.h"
 #include "spirv_fixups.h"
+#include "spirv_integer_fixups.h"
 
 namespace fxport::xlate {
 
@@ -111,6 +112,7 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
         return out;
     }
     applySpirvFixups(out.words);
+    if (request.shaderModel < 4) integerDivisionInFloats(out.words);  // SM2-3 integers are floats
     std::string legalizeError;
     if (!legalizeSpirv(out.words, &legalizeError)) out.errors.push_back({0, {}, legalizeError});
     return out;

@@ -129,4 +129,25 @@ void foldIntMinByMinusOne(std::vector<std::uint32_t>& words) {
     if (changed) words = m.assemble();
 }
 
+// Test: runtime HlslSm3Integers.DivisionRoundsOperandsToFloat, conformance arithmetic-int-uniform.
+void integerDivisionInFloats(std::vector<std::uint32_t>& words) {
+    if (!hasOpcode(words, {spv_op::SDiv, spv_op::UDiv, spv_op::SRem, spv_op::UMod})) return;
+    SpirvModuleEdit m;
+    if (!m.parse(words)) return;
+    m.rewrite([&](const SpirvInstruction& inst, std::vector<SpirvInstruction>& out) {
+        const std::uint32_t op = inst.opcode();
+        const bool isSigned = op == spv_op::SDiv || op == spv_op::SRem, isDivision = op == spv_op::SDiv || op == spv_op::UDiv;
+        if ((!isSigned && op != spv_op::UDiv && op != spv_op::UMod) || inst.words.size() != 5) return out.push_back(inst);
+        const std::uint32_t type = inst.words[1], floatType = m.floatTypeLike(type);
+        const std::uint32_t toFloat = isSigned ? spv_op::ConvertSToF : spv_op::ConvertUToF;
+        SpirvInstruction a = m.value(toFloat, floatType, {inst.words[3]});
+        SpirvInstruction b = m.value(toFloat, floatType, {inst.words[4]});
+        SpirvInstruction q = m.value(isDivision ? spv_op::FDiv : spv_op::FRem, floatType, {a.words[2], b.words[2]});
+        SpirvInstruction back = inst;  // keeps the result id
+        back.words = {(4u << 16) | (isSigned ? spv_op::ConvertFToS : spv_op::ConvertFToU), type, inst.words[2], q.words[2]};
+        out.insert(out.end(), {a, b, q, back});
+    });
+    words = m.assemble();
+}
+
 }  // namespace fxport::xlate

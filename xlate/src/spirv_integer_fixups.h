@@ -21,4 +21,10 @@ void floatToUnsignedSaturates(std::vector<std::uint32_t>& words);
 // INT_MIN, the remainder is 0), for legalizeSpirv to call before each folding pass.
 void foldIntMinByMinusOne(std::vector<std::uint32_t>& words);
 
+// SM2-3 have no integers: fxc computes int and uint values as floats, so `/` and `%` of
+// non-constant operands divide floats and truncate (16777217 % 10 is 6: 16777217 is 16777216 as a
+// float). Rewrites OpSDiv/OpUDiv/OpSRem/OpUMod into that: convert both operands to float, OpFDiv
+// or OpFRem (truncating), convert back. For SM2-3 modules only, after the remainder fix-up.
+void integerDivisionInFloats(std::vector<std::uint32_t>& words);
+
 }  // namespace fxport::xlate

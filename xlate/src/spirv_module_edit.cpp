@@ -87,6 +87,31 @@ std::uint32_t SpirvModuleEdit::addGlobal(std::vector<std::uint32_t> words) {
     return id;
 }
 
+std::uint32_t SpirvModuleEdit::addType(std::vector<std::uint32_t> words) {
+    words[1] = newId();
+    globals_.push_back({words});
+    types_.push_back({words});
+    return words[1];
+}
+
+std::uint32_t SpirvModuleEdit::floatTypeLike(std::uint32_t type) {
+    const std::uint32_t count = components(type).second;
+    auto find = [&](auto match) -> std::uint32_t {
+        for (const auto* list : {&instructions, &types_})
+            for (const auto& inst : *list)
+                if (match(inst)) return inst.words[1];
+        return 0;
+    };
+    std::uint32_t scalar = find([](const SpirvInstruction& i) { return i.opcode() == spv_op::TypeFloat && i.words.size() == 3 && i.words[2] == 32; });
+    if (!scalar) scalar = addType({firstWord(spv_op::TypeFloat, 3), 0, 32});
+    if (count == 1) return scalar;
+    std::uint32_t vector = find([&](const SpirvInstruction& i) {
+        return i.opcode() == spv_op::TypeVector && i.words.size() == 4 && i.words[2] == scalar && i.words[3] == count;
+    });
+    if (!vector) vector = addType({firstWord(spv_op::TypeVector, 4), 0, scalar, count});
+    return vector;
+}
+
 std::uint32_t SpirvModuleEdit::constant(std::uint32_t scalarType, std::uint32_t value) {
     auto key = std::make_tuple(scalarType, value);
     if (auto it = constants_.find(key); it != constants_.end()) return it->second;

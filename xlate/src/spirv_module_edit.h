@@ -19,7 +19,8 @@ struct SpirvInstruction {
 
 // The SPIR-V opcodes and GLSL.std.450 instructions the fix-ups read or write.
 namespace spv_op {
-constexpr std::uint32_t ExtInstImport = 11, ExtInst = 12, MemoryModel = 14, TypeInt = 21, TypeFloat = 22,
+constexpr std::uint32_t ExtInstImport = 11, ConvertFToS = 110, ConvertSToF = 111, ConvertUToF = 112, UDiv = 134,
+                        UMod = 137, FDiv = 136, FRem = 140, ExtInst = 12, MemoryModel = 14, TypeInt = 21, TypeFloat = 22,
                         TypeVector = 23, Constant = 43, ConstantComposite = 44, ConstantNull = 46, Function = 54,
                         CopyObject = 83, ConvertFToU = 109, SDiv = 135, SRem = 138, SMod = 139,
                         ShiftRightLogical = 194, ShiftRightArithmetic = 195, ShiftLeftLogical = 196, BitwiseAnd = 199;
@@ -47,6 +48,8 @@ public:
     // A 32-bit scalar constant (added once) and a composite constant of `parts`.
     std::uint32_t constant(std::uint32_t scalarType, std::uint32_t value);
     std::uint32_t composite(std::uint32_t type, const std::vector<std::uint32_t>& parts);
+    // The 32-bit float type of the same shape as `type` (a scalar or vector), found or added.
+    std::uint32_t floatTypeLike(std::uint32_t type);
     // The id of the GLSL.std.450 import, added when the module has none.
     std::uint32_t glslStd450();
 
@@ -60,7 +63,9 @@ public:
 
 private:
     std::uint32_t addGlobal(std::vector<std::uint32_t> words);  // words[2] is set to a new id
-    std::vector<SpirvInstruction> globals_;  // new constants, placed by assemble()
+    std::uint32_t addType(std::vector<std::uint32_t> words);    // words[1] is set to a new id
+    std::vector<SpirvInstruction> globals_;  // new types and constants, placed by assemble()
+    std::vector<SpirvInstruction> types_;    // the new types, for floatTypeLike's look-ups
     SpirvInstruction import_;                // a new GLSL.std.450 import, placed by assemble()
     std::vector<std::uint32_t> header_;
     std::map<std::uint32_t, std::uint32_t> typeOf_;
