@@ -968,3 +968,23 @@ technique T { pass P { PixelShader = compile ps_3_0 PS(); } }
     EXPECT_FALSE(param(e, "C").rowMajor);
     EXPECT_TRUE(param(e, "Explicit").rowMajor);
 }
+
+// A matrix typedef keeps the majority it was declared with, by a pragma before it or its own
+// modifier, wherever it is used (fxc; vkd3d's majority-pragma and majority-typedef pin it).
+TEST(Translation, MatrixTypedefKeepsTheMajorityOfItsDeclaration) {
+    const char* source = R"(#pragma pack_matrix(row_major)
+typedef float2x2 pragma_row_t;
+#pragma pack_matrix(column_major)
+typedef float2x2 plain_t;
+typedef row_major plain_t own_row_t;
+pragma_row_t A;
+own_row_t B;
+plain_t C;
+float4 PS() : COLOR0 { return float4(A[0] + B[1], C[0]); }
+technique T { pass P { PixelShader = compile ps_3_0 PS(); } }
+)";
+    CompiledEffect e = compileEffectSource(source, "virtual/MajorityTypedef.fx", noCache());
+    EXPECT_TRUE(param(e, "A").rowMajor);
+    EXPECT_TRUE(param(e, "B").rowMajor);
+    EXPECT_FALSE(param(e, "C").rowMajor);
+}

@@ -560,7 +560,8 @@ private:
             // `typedef vector<half, 3> vec3;`: remembered, so declarations typed `vec3` are known
             // numeric types (parameters, entry signatures). The typedef stays for glslang.
             size_t start = pos_++;
-            accept("const");
+            // `typedef row_major float2x2 m_t;` names float2x2 (matrix_majority.cpp keeps its majority).
+            while (accept("const") || accept("row_major") || accept("column_major")) continue;
             if (cur().isIdent() && !cur().is("struct")) {
                 std::string type = parseTypeName();
                 while (cur().isIdent()) {
