@@ -74,8 +74,8 @@ struct Fixture {
     test::RecordingBackend* backend;
     std::unique_ptr<GraphicsDevice> device;
     std::shared_ptr<const xlate::CompiledEffect> effect = shaders();
-    VertexDeclaration positions{{VertexElement(0, VertexElementFormat::Vector3, VertexElementUsage::Position, 0)}};
-    VertexDeclaration texcoords{{VertexElement(0, VertexElementFormat::Vector2, VertexElementUsage::TextureCoordinate, 0)}};
+    core::StreamLayout positions = core::streamLayoutOf(VertexDeclaration{{VertexElement(0, VertexElementFormat::Vector3, VertexElementUsage::Position, 0)}});
+    core::StreamLayout texcoords = core::streamLayoutOf(VertexDeclaration{{VertexElement(0, VertexElementFormat::Vector2, VertexElementUsage::TextureCoordinate, 0)}});
 
     explicit Fixture(PresentationParameters parameters = small()) {
         auto recording = std::make_unique<test::RecordingBackend>();

@@ -7,6 +7,7 @@
 #include <regex>
 
 #include "glslang_process.h"
+#include "clip_distance_packing.h"
 #include "spirv_fixups.h"
 
 namespace fxport::xlate {
@@ -113,6 +114,7 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
     applySpirvFixups(out.words);
     std::string legalizeError;
     if (!legalizeSpirv(out.words, &legalizeError)) out.errors.push_back({0, {}, legalizeError});
+    else packClipCullDistances(out.words);
     return out;
 }
 
