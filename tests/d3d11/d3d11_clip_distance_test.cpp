@@ -128,6 +128,21 @@ TEST_F(ClipTest, ClipDistancesCutWhereAnyIsNegativeAndReachThePixelShader) {
     EXPECT_EQ(drawn, 8 * 12);  // columns 6..13 (x in [-0.3, 0.7]), rows 4..15 (y <= 0.55)
 }
 
+TEST_F(ClipTest, ReflectionListsTheClipDistanceRegister) {
+    ComPtr<ID3DBlob> vs = compile(kClip, "VS", "vs_5_0", "clip.hlsl");
+    ASSERT_TRUE(vs);
+    ComPtr<ID3D11ShaderReflection> r;
+    ASSERT_EQ(D3DReflect(vs->GetBufferPointer(), vs->GetBufferSize(), r.GetAddressOf()), S_OK) << lastError();
+    D3D11_SHADER_DESC desc;
+    ASSERT_EQ(r->GetDesc(&desc), S_OK);
+    ASSERT_EQ(desc.OutputParameters, 2u);  // SV_Position, then the three distances in one register
+    D3D11_SIGNATURE_PARAMETER_DESC p;
+    ASSERT_EQ(r->GetOutputParameterDesc(1, &p), S_OK);
+    EXPECT_EQ(std::string(p.SemanticName), "SV_ClipDistance");
+    EXPECT_EQ(p.SystemValueType, D3D_NAME_CLIP_DISTANCE);
+    EXPECT_EQ(p.Mask, 0x7);
+}
+
 TEST_F(ClipTest, CullDistancesDropWholeTrianglesOnly) {
     draw(kCull, 6);
     const std::vector<std::array<float, 4>> got = texels();

@@ -4,6 +4,7 @@
 // exactly; an int input fed a FLOAT element reads its bits), checked value by value against the
 // CPU's numbers; bad layouts answered with the field and value; a vertex and pixel shader compiled
 // apart link by semantic whatever order and subset the pixel shader reads.
+#include <algorithm>
 #include <cstring>
 #include <iterator>
 
@@ -252,6 +253,34 @@ TEST(D3D11StageLinks, ShadersCompiledApartLinkBySemantic) {
         ASSERT_EQ(lastError(), "") << "reader " << r;
         for (const std::array<float, 4>& t : readFloats(d, target.Get())) ASSERT_EQ(t, kRead[r]) << "reader " << r;
     }
+}
+
+// The output signatures reflection reports: the vertex shader's position and user semantics, the
+// pixel shader's targets.
+TEST(D3D11StageLinks, ReflectionListsEachStageOutputs) {
+    auto outputsOf = [](ID3DBlob* code) {
+        std::vector<std::string> out;
+        ComPtr<ID3D11ShaderReflection> r;
+        EXPECT_EQ(D3DReflect(code->GetBufferPointer(), code->GetBufferSize(), r.GetAddressOf()), S_OK) << lastError();
+        if (!r) return out;
+        D3D11_SHADER_DESC desc;
+        EXPECT_EQ(r->GetDesc(&desc), S_OK);
+        for (UINT i = 0; i < desc.OutputParameters; ++i) {
+            D3D11_SIGNATURE_PARAMETER_DESC p;
+            EXPECT_EQ(r->GetOutputParameterDesc(i, &p), S_OK);
+            out.push_back(std::string(p.SemanticName) + std::to_string(p.SemanticIndex) + (p.SystemValueType != D3D_NAME_UNDEFINED ? " sv" : ""));
+        }
+        D3D11_SIGNATURE_PARAMETER_DESC p;
+        EXPECT_EQ(r->GetOutputParameterDesc(desc.OutputParameters, &p), E_INVALIDARG);
+        EXPECT_NE(lastError().find("GetOutputParameterDesc: index"), std::string::npos) << lastError();
+        return out;
+    };
+    ComPtr<ID3DBlob> vs = compile(kWriter, "VS", "vs_5_0", "writer.hlsl"), ps = compile(kAnyNames, "PS", "ps_5_0", "any_names.hlsl");
+    ASSERT_TRUE(vs && ps);
+    std::vector<std::string> written = outputsOf(vs.Get());
+    std::sort(written.begin() + 1, written.end());
+    EXPECT_EQ(written, (std::vector<std::string>{"SV_Position0 sv", "ALPHA0", "BETA0", "CELL0", "GAMMA0", "TEXCOORD2"}));
+    EXPECT_EQ(outputsOf(ps.Get()), (std::vector<std::string>{"SV_Target0 sv", "SV_Target1 sv"}));
 }
 
 }  // namespace
