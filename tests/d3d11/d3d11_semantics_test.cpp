@@ -184,6 +184,9 @@ TEST_F(SemanticsTest, BadLayoutsNameTheFieldAndValue) {
     std::vector<D3D11_INPUT_ELEMENT_DESC> otherIndex = all;
     otherIndex[1].SemanticIndex = 2;  // CELL2 feeds nothing, CELL3 is fed by nothing
     rejected(E_INVALIDARG, otherIndex, "the vertex shader's input CELL3 has no element in the layout");
+    std::vector<D3D11_INPUT_ELEMENT_DESC> unaligned = all;
+    unaligned[6].AlignedByteOffset = 41;  // R16_UNORM: 2-byte components
+    rejected(E_INVALIDARG, unaligned, "pInputElementDescs[6].AlignedByteOffset = 41 (must be a multiple of 2, the format's component size)");
     std::vector<D3D11_INPUT_ELEMENT_DESC> bgra = all;
     bgra[3].Format = DXGI_FORMAT_B8G8R8A8_UNORM;
     rejected(E_NOTIMPL, bgra, "pInputElementDescs[3].Format = DXGI_FORMAT_B8G8R8A8_UNORM (87)");

@@ -156,7 +156,11 @@ HRESULT Device::CreateInputLayout(const D3D11_INPUT_ELEMENT_DESC* descs, UINT co
         slot.instanceStepRate = rate;
         UINT& offset = offsets[d.InputSlot];
         if (d.AlignedByteOffset != D3D11_APPEND_ALIGNED_ELEMENT) offset = d.AlignedByteOffset;
-        if (offset % 4 != 0) return fail(E_INVALIDARG, at + "AlignedByteOffset = " + std::to_string(offset) + " (must be a multiple of 4)");
+        // D3D aligns an element to its component size (4 bytes for R32 and packed formats, 2 for R16, 1 for R8).
+        const UINT align = UINT(vertexFormatSize(format) / (format.component == VertexComponent::UInt1010102 ? 1 : format.count));
+        if (offset % align != 0)
+            return fail(E_INVALIDARG, at + "AlignedByteOffset = " + std::to_string(offset) + " (must be a multiple of " + std::to_string(align) +
+                                          ", the format's component size)");
         // D3D matches elements to the shader's inputs by name (any name, case-insensitive) and index.
         const std::string semantic = vertexSemantic(d.SemanticName, int(d.SemanticIndex));
         if (std::find(semantics.begin(), semantics.end(), semantic) != semantics.end())
