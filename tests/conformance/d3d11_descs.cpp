@@ -45,6 +45,18 @@ D3D11_COMPARISON_FUNC comparisonOf(const std::string& name) {
     throw Unsupported("sampler comparison function '" + name + "'");
 }
 
+// An input-layout element's format: the vertex formats beside dxgiFormat's texture ones.
+DXGI_FORMAT vertexDxgiFormat(const Format& f) {
+    static const struct { const char* name; DXGI_FORMAT format; } kVertex[] = {
+        {"r32g32b32a32-sint", DXGI_FORMAT_R32G32B32A32_SINT}, {"r32g32b32-float", DXGI_FORMAT_R32G32B32_FLOAT},
+        {"r32g32b32-uint", DXGI_FORMAT_R32G32B32_UINT}, {"r32g32b32-sint", DXGI_FORMAT_R32G32B32_SINT},
+        {"r32g32-uint", DXGI_FORMAT_R32G32_UINT}, {"r32g32-sint", DXGI_FORMAT_R32G32_SINT}, {"r32-sint", DXGI_FORMAT_R32_SINT},
+    };
+    for (const auto& k : kVertex)
+        if (f.name == k.name) return k.format;
+    return dxgiFormat(f);
+}
+
 }  // namespace
 
 D3D11_SAMPLER_DESC samplerDescOf(const SamplerDesc& s) {
@@ -70,7 +82,7 @@ InputElements inputElementsOf(const std::vector<InputElement>& layout) {
         D3D11_INPUT_ELEMENT_DESC d;
         d.SemanticName = e.semantic.c_str();
         d.SemanticIndex = UINT(e.index);
-        d.Format = dxgiFormat(e.format);
+        d.Format = vertexDxgiFormat(e.format);
         if (e.slot < 0 || UINT(e.slot) >= D3D11_IA_VERTEX_INPUT_RESOURCE_SLOT_COUNT)
             throw std::runtime_error("input layout slot " + std::to_string(e.slot) + " (D3D11 has 0..31)");
         d.InputSlot = UINT(e.slot);

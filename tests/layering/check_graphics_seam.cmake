@@ -22,7 +22,7 @@ set(effectImplLeft  # rule 2: files outside effect/ that still read an Effect's 
 set(glHeadersLeft  # rule 2: files outside gl/ that still include a GL backend header (the compute passes'; GL formats)
   ${src}/device/draw_hints.cpp ${src}/device/graphics_device.cpp ${src}/effect/effect.cpp)
 set(glFreeInternal  # rule 4
-  ${src}/device/backend.h ${src}/device/state_shadow.h ${src}/device/vertex_input.h ${src}/device/front_end_core.h
+  ${src}/device/backend.h ${src}/device/state_shadow.h ${src}/device/vertex_input.h ${src}/device/vertex_format.h ${src}/device/front_end_core.h
   ${src}/device/device_impl.h ${src}/device/impl_access.h ${src}/device/surface_formats.h ${src}/device/draw_hints.h
   ${src}/diagnostics/fragment_tally.h)
 

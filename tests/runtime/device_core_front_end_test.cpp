@@ -45,7 +45,8 @@ xlate::VertexInput input(const std::string& semantic, int location) {
 }
 
 // Shaders 0 vertex (POSITION0 at 0, TEXCOORD0 at 1), 1 pixel, 2 hull, 3 domain, 4 compute
-// (writing u0), 5 a vertex shader reading NORMAL0, 6 one the backend rejects.
+// (writing u0), 5 a vertex shader reading NORMAL0, 6 one the backend rejects, 7 a vertex shader
+// writing three clip distances.
 std::shared_ptr<const xlate::CompiledEffect> shaders() {
     auto effect = std::make_shared<xlate::CompiledEffect>();
     xlate::CompiledShader vs = shaderOf(xlate::ShaderStage::Vertex, "vertex");
@@ -59,13 +60,17 @@ std::shared_ptr<const xlate::CompiledEffect> shaders() {
     cs.storage = {uav};
     xlate::CompiledShader normals = shaderOf(xlate::ShaderStage::Vertex, "normals");
     normals.inputs = {input("POSITION0", 0), input("NORMAL0", 1)};
+    xlate::CompiledShader clipping = shaderOf(xlate::ShaderStage::Vertex, "clipping");
+    clipping.inputs = vs.inputs;
+    clipping.clipDistances = 3;
     effect->shaders = {vs,
                        shaderOf(xlate::ShaderStage::Pixel, "pixel"),
                        shaderOf(xlate::ShaderStage::Hull, "hull"),
                        shaderOf(xlate::ShaderStage::Domain, "domain"),
                        cs,
                        normals,
-                       shaderOf(xlate::ShaderStage::Pixel, "reject")};
+                       shaderOf(xlate::ShaderStage::Pixel, "reject"),
+                       clipping};
     return effect;
 }
 
@@ -74,8 +79,8 @@ struct Fixture {
     test::RecordingBackend* backend;
     std::unique_ptr<GraphicsDevice> device;
     std::shared_ptr<const xlate::CompiledEffect> effect = shaders();
-    VertexDeclaration positions{{VertexElement(0, VertexElementFormat::Vector3, VertexElementUsage::Position, 0)}};
-    VertexDeclaration texcoords{{VertexElement(0, VertexElementFormat::Vector2, VertexElementUsage::TextureCoordinate, 0)}};
+    core::StreamLayout positions = core::streamLayoutOf(VertexDeclaration{{VertexElement(0, VertexElementFormat::Vector3, VertexElementUsage::Position, 0)}});
+    core::StreamLayout texcoords = core::streamLayoutOf(VertexDeclaration{{VertexElement(0, VertexElementFormat::Vector2, VertexElementUsage::TextureCoordinate, 0)}});
 
     explicit Fixture(PresentationParameters parameters = small()) {
         auto recording = std::make_unique<test::RecordingBackend>();
@@ -165,6 +170,29 @@ TEST(FrontEndCore, AnInstancedDrawFeedsEachStreamFromItsBindingWithItsStepRate) 
     EXPECT_EQ(f.backend->matching("create"), Calls{});
     EXPECT_EQ(f.backend->matching("bindVertexArray"), Calls{});
     EXPECT_EQ(f.backend->matching("draw").size(), 1u);
+}
+
+// GL clips by a gl_ClipDistance only where its plane is enabled (llvmpipe clips regardless, so the
+// pixel test in tests/d3d11 cannot see this): the draw enables as many as the last stage before the
+// rasteriser writes, and the shadow sends a count once.
+TEST(FrontEndCore, TheLastStageBeforeTheRasteriserSetsTheClipPlanes) {
+    Fixture f;
+    auto clipping = f.shader(7), plain = f.shader(0), ps = f.shader(1);
+    ByteBuffer vertices(*f.device, 96, nullptr, false), texcoords(*f.device, 64, nullptr, false);
+    const std::vector<InstancedStream> streams = {{{&vertices, 0, &f.positions}, 0}, {{&texcoords, 0, &f.texcoords}, 0}};
+    auto drawWith = [&](const ShaderCode* vs) {
+        const ShaderCode* stages[5] = {vs, ps.get(), nullptr, nullptr, nullptr};
+        core::setShaderStages(*f.device, stages);
+        core::drawStreams(*f.device, streams, DrawArguments{PrimitiveType::TriangleList, 3});
+    };
+    drawWith(plain.get());
+    f.backend->take();
+    drawWith(clipping.get());
+    drawWith(clipping.get());
+    EXPECT_EQ(f.backend->matching("setClipPlanes"), Calls{"setClipPlanes 3"});
+    f.backend->take();
+    drawWith(plain.get());
+    EXPECT_EQ(f.backend->matching("setClipPlanes"), Calls{"setClipPlanes 0"});
 }
 
 TEST(FrontEndCore, AnIndexedDrawSetsItsIndexBufferOnceAndNamesIndexSizeAndBaseVertex) {

@@ -49,6 +49,7 @@ public:
         scissor = r;
     }
     void setSrgbWrite(bool enabled) override { calls.push_back(std::string("setSrgbWrite ") + (enabled ? "on" : "off")); }
+    void setClipPlanes(int count) override { calls.push_back("setClipPlanes " + std::to_string(count)); }
     BackendObject createSampler(const SamplerState&) override { return make("createSampler"); }
     void deleteSampler(BackendObject sampler) override { release("deleteSampler", sampler); }
     void bindTexture(int unit, BackendObject texture) override {

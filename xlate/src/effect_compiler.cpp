@@ -676,6 +676,9 @@ int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile
     shader.uniformRangesRead = glsl.rangesRead;
     shader.outputTargets = glsl.outputTargets;
     shader.writesDepth = glsl.writesDepth;
+    shader.clipDistances = glsl.clipDistances;
+    shader.varyingInputs = glsl.varyingInputs;
+    shader.varyingOutputs = glsl.varyingOutputs;
     shader.needsD3D9PixelOffset = wrapper.usesPixelOffset;
     shader.storage = glsl.storage;
     shader.threadGroupSize = glsl.threadGroupSize;

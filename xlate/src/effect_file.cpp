@@ -227,6 +227,15 @@ json toJson(const CompiledShader& s, const CompiledEffect& effect, bool withGlsl
         j["writesDepth"] = s.writesDepth;
     }
     j["d3d9PixelOffset"] = s.needsD3D9PixelOffset;
+    if (s.clipDistances > 0) j["clipDistances"] = s.clipDistances;  // written only where a shader clips
+    auto varyings = [](const std::vector<Varying>& list) {
+        json a = json::array();
+        for (const Varying& v : list) a.push_back(json{v.semantic, v.location});
+        return a;
+    };
+    // The locations are the GLSL's: written with it (the golden reflection has neither).
+    if (withGlsl && !s.varyingInputs.empty()) j["varyingInputs"] = varyings(s.varyingInputs);
+    if (withGlsl && !s.varyingOutputs.empty()) j["varyingOutputs"] = varyings(s.varyingOutputs);
     // Compute, hull and domain shaders' reflection: written only where there is some, so effects
     // without them read as before.
     if (!s.storage.empty()) {
@@ -507,6 +516,13 @@ CompiledEffect deserializeEffect(std::string_view text, const std::string& nameF
             cs.outputTargets = s.value("outputTargets", 0);
             cs.writesDepth = s.value("writesDepth", false);
             cs.needsD3D9PixelOffset = s.value("d3d9PixelOffset", false);
+            cs.clipDistances = s.value("clipDistances", 0);
+            auto readVaryings = [&](const char* key, std::vector<Varying>& out) {
+                if (s.contains(key))
+                    for (const auto& v : s[key]) out.push_back({v.at(0).get<std::string>(), v.at(1).get<int>()});
+            };
+            readVaryings("varyingInputs", cs.varyingInputs);
+            readVaryings("varyingOutputs", cs.varyingOutputs);
             if (s.contains("storage"))
                 for (const auto& b : s["storage"]) {
                     StorageBinding sb;

@@ -321,7 +321,9 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
             frontFaceDeclared = true;
             fill << assignLeaf(leaf, b == "VFACE" ? "(fxport_frontFace ? 1.0 : -1.0)" : "fxport_frontFace");
         } else if (b.rfind("SV_", 0) == 0) {
-            if (!repeat) addParam(vectorType(leaf.scalar, leaf.components) + " " + name + " : " + b);
+            // Clip and cull distances keep their index: SV_ClipDistance1 is another register.
+            const bool distance = b == "SV_CLIPDISTANCE" || b == "SV_CULLDISTANCE";
+            if (!repeat) addParam(vectorType(leaf.scalar, leaf.components) + " " + name + " : " + (distance ? sem : b));
             fill << assignLeaf(leaf, name);
         } else if (isIntegerScalar(leaf.scalar)) {
             if (!repeat) addParam("nointerpolation " + vectorType(leaf.scalar == "bool" ? "uint" : leaf.scalar, leaf.components) + " " + name + " : " + sem);

@@ -7,6 +7,7 @@
 #include <regex>
 
 #include "glslang_process.h"
+#include "clip_distance_packing.h"
 #include "spirv_fixups.h"
 #include "spirv_integer_fixups.h"
 
@@ -115,6 +116,7 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
     if (request.shaderModel < 4) integerDivisionInFloats(out.words);  // SM2-3 integers are floats
     std::string legalizeError;
     if (!legalizeSpirv(out.words, &legalizeError)) out.errors.push_back({0, {}, legalizeError});
+    else packClipCullDistances(out.words);
     return out;
 }
 

@@ -372,19 +372,33 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
         } else {
             for (const auto& r : res.stage_inputs) {
                 std::string sem = semanticOf(r.id);
-                if (!sem.empty()) compiler.set_decoration(r.id, spv::DecorationLocation, static_cast<uint32_t>(varyings.locationOf(sem)));
+                if (sem.empty()) continue;
+                const int location = varyings.locationOf(sem);
+                compiler.set_decoration(r.id, spv::DecorationLocation, static_cast<uint32_t>(location));
+                auto [base, index] = splitSemantic(sem);
+                out.varyingInputs.push_back({base + std::to_string(index), location});
             }
         }
         if (stage != ShaderStage::Pixel) {
             for (const auto& r : res.stage_outputs) {
                 std::string sem = semanticOf(r.id);
-                if (!sem.empty()) compiler.set_decoration(r.id, spv::DecorationLocation, static_cast<uint32_t>(varyings.locationOf(sem)));
+                if (sem.empty()) continue;
+                const int location = varyings.locationOf(sem);
+                compiler.set_decoration(r.id, spv::DecorationLocation, static_cast<uint32_t>(location));
+                auto [base, index] = splitSemantic(sem);
+                out.varyingOutputs.push_back({base + std::to_string(index), location});
             }
         } else {
             for (const auto& r : res.stage_outputs)
                 out.outputTargets = std::max(out.outputTargets, static_cast<int>(compiler.get_decoration(r.id, spv::DecorationLocation)) + 1);
         }
 
+        if (stage != ShaderStage::Pixel && stage != ShaderStage::Hull)
+            for (const auto& b : res.builtin_outputs)
+                if (b.builtin == spv::BuiltInClipDistance) {
+                    const auto& t = compiler.get_type(b.value_type_id);
+                    if (!t.array.empty()) out.clipDistances = static_cast<int>(t.array[0]);
+                }
         out.glsl = compiler.compile();
         out.writesDepth = out.glsl.find("gl_FragDepth") != std::string::npos;
     } catch (const std::exception& e) {

@@ -56,6 +56,8 @@ struct GlslShader {
     std::vector<UniformRange> rangesRead;
     int outputTargets = 0;
     bool writesDepth = false;
+    int clipDistances = 0;  // the size of the gl_ClipDistance output (non-pixel stages)
+    std::vector<Varying> varyingInputs, varyingOutputs;
     std::vector<StorageBinding> storage;   // SSBOs and images (UAVs, buffer SRVs)
     std::array<int, 3> threadGroupSize{};  // compute: the SPIR-V LocalSize
 };

@@ -155,7 +155,7 @@ private:
     fxport::RasterizerState defaultRasterizer_;
     fxport::DepthStencilState defaultDepthStencil_;
     fxport::SamplerState defaultSampler_;
-    std::vector<VertexDeclaration> declarations_;  // each input slot's elements and stride, made at each draw
+    std::vector<core::StreamLayout> declarations_;  // each input slot's elements and stride, made at each draw
     EffectPass* effectPass_ = nullptr;  // fxport::EffectPass (applied at each draw instead of VS/PS)
     const void* effectOwner_ = nullptr;
 };

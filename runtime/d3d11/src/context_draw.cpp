@@ -182,7 +182,7 @@ bool Context::streams(const char* call, std::vector<core::InstancedStream>& out)
             note(std::string(call) + ": the input layout reads slot " + std::to_string(slot) + " and no vertex buffer is set there; nothing drawn");
             return false;
         }
-        declarations_.emplace_back(std::max(int(v.stride), 1), elements.elements);
+        declarations_.push_back(core::StreamLayout{std::max(int(v.stride), 1), elements.elements});
         core::InstancedStream stream;
         stream.vertices = core::VertexStream{elements.elements.empty() ? nullptr : v.buffer->gpu.get(), v.offset, &declarations_.back()};
         stream.instanceStepRate = int(elements.instanceStepRate);

@@ -166,7 +166,7 @@ using ComputeShader = StageShader<ID3D11ComputeShader>;
 class InputLayout final : public Object<ID3D11InputLayout> {
 public:
     struct Slot {
-        std::vector<VertexElement> elements;
+        std::vector<core::StreamElement> elements;
         UINT instanceStepRate = 0;  // 0: per vertex
     };
     InputLayout(Device* device, std::vector<Slot> layoutSlots) : Object(device), slots(std::move(layoutSlots)) {}
@@ -218,7 +218,8 @@ D3D11_SAMPLER_DESC defaultSamplerDesc();
 const char* formatName(DXGI_FORMAT format);
 bool textureFormat(DXGI_FORMAT format, SurfaceFormat& out);
 bool depthFormat(DXGI_FORMAT format, DepthFormat& out);
-bool vertexFormat(DXGI_FORMAT format, VertexElementFormat& out);
+// --- vertex formats (vertex_formats.cpp)
+bool vertexFormat(DXGI_FORMAT format, VertexFormat& out);
 
 // --- a compiled-shader blob's content (compile.cpp)
 std::string narrowPath(const wchar_t* path);  // UTF-8

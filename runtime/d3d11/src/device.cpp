@@ -3,9 +3,9 @@
 // XNA GraphicsDevice made headless, with D3D's defaults where XNA's differ) and the immediate
 // context.
 #include <algorithm>
-#include <cctype>
 
 #include "context.h"
+#include "device/vertex_input.h"
 #include "guarded.h"
 
 namespace fxport::d3d11 {
@@ -23,11 +23,6 @@ PresentationParameters coreParameters() {
     // Each draw is exactly what was asked; the core's compute-pass rewrite stays off.
     p.Optimizations.ComputePasses = false;
     return p;
-}
-
-std::string upper(std::string s) {
-    for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
-    return s;
 }
 
 // The shader of `stage` in a compiled blob (D3DCompile makes one shader per blob).
@@ -73,20 +68,6 @@ HRESULT createShader(Device* device, const void* bytecode, SIZE_T length, xlate:
         if (out) *out = new Shader(device, std::move(code), std::move(bindings));
         return succeed();
     });
-}
-
-// The XNA usage whose semantic is `name` + index ("TEXCOORD" 1 -> TextureCoordinate 1).
-bool usageOf(const std::string& nameIn, UINT index, VertexElementUsage& out) {
-    // An SV_Position vertex input is fed by an "SV_POSITION" element; the core binds it as POSITION.
-    const std::string name = upper(nameIn) == "SV_POSITION" ? std::string("POSITION") : nameIn;
-    for (int u = 0; u <= int(VertexElementUsage::TessellateFactor); ++u) {
-        VertexElement e(0, VertexElementFormat::Single, VertexElementUsage(u), int(index));
-        if (vertexElementSemantic(e) == upper(name) + std::to_string(index)) {
-            out = VertexElementUsage(u);
-            return true;
-        }
-    }
-    return false;
 }
 
 }  // namespace
@@ -152,8 +133,8 @@ HRESULT Device::CreateInputLayout(const D3D11_INPUT_ELEMENT_DESC* descs, UINT co
     for (UINT i = 0; i < count; ++i) {
         const D3D11_INPUT_ELEMENT_DESC& d = descs[i];
         const std::string at = "CreateInputLayout: pInputElementDescs[" + std::to_string(i) + "].";
-        if (!d.SemanticName) return fail(E_INVALIDARG, at + "SemanticName is null");
-        VertexElementFormat format;
+        if (!d.SemanticName || !*d.SemanticName) return fail(E_INVALIDARG, at + "SemanticName is null or empty");
+        VertexFormat format;
         if (!vertexFormat(d.Format, format))
             return fail(d.Format == DXGI_FORMAT_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
                         at + "Format = " + formatName(d.Format) + " (" + std::to_string(d.Format) + "): not a vertex format fxport supports");
@@ -174,27 +155,27 @@ HRESULT Device::CreateInputLayout(const D3D11_INPUT_ELEMENT_DESC* descs, UINT co
                                           std::to_string(d.InputSlot) + " (a slot steps one way)");
         slot.instanceStepRate = rate;
         UINT& offset = offsets[d.InputSlot];
-        VertexElementUsage usage;
-        if (!usageOf(d.SemanticName, d.SemanticIndex, usage))
-            return fail(E_NOTIMPL, at + "SemanticName = \"" + std::string(d.SemanticName) +
-                                       "\": fxport matches vertex elements by the standard semantics (POSITION, NORMAL, TEXCOORD, COLOR, "
-                                       "TANGENT, BINORMAL, BLENDINDICES, BLENDWEIGHT, PSIZE, FOG ...)");
         if (d.AlignedByteOffset != D3D11_APPEND_ALIGNED_ELEMENT) offset = d.AlignedByteOffset;
-        if (offset % 4 != 0) return fail(E_INVALIDARG, at + "AlignedByteOffset = " + std::to_string(offset) + " (must be a multiple of 4)");
-        const std::string semantic = vertexElementSemantic(VertexElement(0, format, usage, int(d.SemanticIndex)));
+        // D3D aligns an element to its component size (4 bytes for R32 and packed formats, 2 for R16, 1 for R8).
+        const UINT align = UINT(vertexFormatSize(format) / (format.component == VertexComponent::UInt1010102 ? 1 : format.count));
+        if (offset % align != 0)
+            return fail(E_INVALIDARG, at + "AlignedByteOffset = " + std::to_string(offset) + " (must be a multiple of " + std::to_string(align) +
+                                          ", the format's component size)");
+        // D3D matches elements to the shader's inputs by name (any name, case-insensitive) and index.
+        const std::string semantic = vertexSemantic(d.SemanticName, int(d.SemanticIndex));
         if (std::find(semantics.begin(), semantics.end(), semantic) != semantics.end())
-            return fail(E_INVALIDARG, at + "SemanticName/SemanticIndex = " + semantic + " appears twice");
+            return fail(E_INVALIDARG, at + "SemanticName/SemanticIndex = \"" + std::string(d.SemanticName) + "\"/" +
+                                          std::to_string(d.SemanticIndex) + " appears twice");
         semantics.push_back(semantic);
-        slot.elements.emplace_back(int(offset), format, usage, int(d.SemanticIndex));
-        offset += UINT(vertexElementSize(format));
+        slot.elements.push_back(core::StreamElement{semantic, int(offset), format});
+        offset += UINT(vertexFormatSize(format));
     }
     // D3D's rule: every input of the shader's signature is in the layout (by name and index).
     for (const xlate::VertexInput& input : effect->shaders[std::size_t(vs)].inputs) {
         const bool position = input.semantic.rfind("SV_POSITION", 0) == 0;
         if (input.semantic.rfind("SV_", 0) == 0 && !position) continue;  // system values need no element
-        const std::string wanted = position ? input.semantic.substr(3) : input.semantic;
-        if (std::find(semantics.begin(), semantics.end(), wanted) == semantics.end() &&
-            std::find(semantics.begin(), semantics.end(), input.semantic) == semantics.end())
+        const bool fed = std::any_of(semantics.begin(), semantics.end(), [&](const std::string& e) { return feedsInput(e, input); });
+        if (!fed)
             return fail(E_INVALIDARG, "CreateInputLayout: the vertex shader's input " + input.semantic +
                                           " has no element in the layout (semantics match by name and index)");
     }

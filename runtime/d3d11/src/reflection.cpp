@@ -131,6 +131,7 @@ public:
             inputs_.push_back({name, index, UINT(in->location), in->isInteger ? D3D_REGISTER_COMPONENT_SINT32 : D3D_REGISTER_COMPONENT_FLOAT32,
                                UINT8((1u << in->components) - 1u)});
         }
+        addOutputs(s);
         invalidBuffer_.invalid = &invalidVariable_;
     }
     ULONG AddRef() override { return ++references_; }
@@ -149,6 +150,7 @@ public:
         p->ConstantBuffers = UINT(buffers_.size());
         p->BoundResources = UINT(resources_.size());
         p->InputParameters = UINT(inputs_.size());
+        p->OutputParameters = UINT(outputs_.size());
         return S_OK;
     }
     ID3D11ShaderReflectionConstantBuffer* GetConstantBufferByIndex(UINT i) override {
@@ -192,16 +194,10 @@ public:
         return size[0] * size[1] * size[2];
     }
     HRESULT GetInputParameterDesc(UINT i, D3D11_SIGNATURE_PARAMETER_DESC* p) override {
-        if (!p || i >= inputs_.size()) return fail(E_INVALIDARG, "GetInputParameterDesc: index " + std::to_string(i) + " of " + std::to_string(inputs_.size()));
-        const Input& in = inputs_[i];
-        *p = D3D11_SIGNATURE_PARAMETER_DESC{};
-        p->SemanticName = in.name.c_str();
-        p->SemanticIndex = in.index;
-        p->Register = in.registerIndex;
-        p->ComponentType = in.type;
-        p->Mask = in.mask;
-        p->ReadWriteMask = in.mask;
-        return S_OK;
+        return signatureDesc("GetInputParameterDesc", inputs_, i, p);
+    }
+    HRESULT GetOutputParameterDesc(UINT i, D3D11_SIGNATURE_PARAMETER_DESC* p) override {
+        return signatureDesc("GetOutputParameterDesc", outputs_, i, p);
     }
 
 private:
@@ -218,7 +214,49 @@ private:
         UINT registerIndex;
         D3D_REGISTER_COMPONENT_TYPE type;
         UINT8 mask;
+        D3D_NAME systemValue = D3D_NAME_UNDEFINED;
     };
+
+    static HRESULT signatureDesc(const char* call, const std::vector<Input>& list, UINT i, D3D11_SIGNATURE_PARAMETER_DESC* p) {
+        if (!p || i >= list.size()) return fail(E_INVALIDARG, std::string(call) + ": index " + std::to_string(i) + " of " + std::to_string(list.size()));
+        const Input& in = list[i];
+        *p = D3D11_SIGNATURE_PARAMETER_DESC{};
+        p->SemanticName = in.name.c_str();
+        p->SemanticIndex = in.index;
+        p->Register = in.registerIndex;
+        p->SystemValueType = in.systemValue;
+        p->ComponentType = in.type;
+        p->Mask = in.mask;
+        p->ReadWriteMask = in.mask;
+        return S_OK;
+    }
+
+    // What the stage writes, from xlate's reflection: render targets and depth of a pixel shader;
+    // the position, the user semantics (at their GL locations) and the clip distances (four to a
+    // register, as fxc packs them) of the others.
+    void addOutputs(const xlate::CompiledShader& s) {
+        using xlate::ShaderStage;
+        const ShaderStage stage = s.profile.stage;
+        if (stage == ShaderStage::Compute) return;
+        if (stage == ShaderStage::Pixel) {
+            for (int t = 0; t < s.outputTargets; ++t)
+                outputs_.push_back({"SV_Target", UINT(t), UINT(t), D3D_REGISTER_COMPONENT_FLOAT32, 0xF, D3D_NAME_TARGET});
+            if (s.writesDepth) outputs_.push_back({"SV_Depth", 0, 0xFFFFFFFFu, D3D_REGISTER_COMPONENT_FLOAT32, 0x1, D3D_NAME_DEPTH});
+            return;
+        }
+        if (stage != ShaderStage::Hull) outputs_.push_back({"SV_Position", 0, 0, D3D_REGISTER_COMPONENT_FLOAT32, 0xF, D3D_NAME_POSITION});
+        for (const xlate::Varying& v : s.varyingOutputs) {
+            auto [name, index] = splitSemantic(v.semantic);
+            outputs_.push_back({name, UINT(index), UINT(v.location), D3D_REGISTER_COMPONENT_UNKNOWN, 0});
+        }
+        UINT next = 0;  // the registers after the others
+        for (const Input& o : outputs_) next = std::max(next, o.registerIndex + 1);
+        for (int first = 0; first < s.clipDistances; first += 4) {
+            const int count = std::min(4, s.clipDistances - first);
+            outputs_.push_back({"SV_ClipDistance", UINT(first / 4), next++, D3D_REGISTER_COMPONENT_FLOAT32, UINT8((1u << count) - 1u),
+                                D3D_NAME_CLIP_DISTANCE});
+        }
+    }
 
     void addBuffer(const CbufferBinding& c) {
         ReflectionBuffer& b = buffers_.emplace_back();
@@ -253,6 +291,7 @@ private:
     std::deque<ReflectionBuffer> buffers_;
     std::vector<Resource> resources_;
     std::vector<Input> inputs_;
+    std::vector<Input> outputs_;
     ReflectionBuffer invalidBuffer_;
     ReflectionVariable invalidVariable_;
     std::atomic<ULONG> references_{1};

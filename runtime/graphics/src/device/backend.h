@@ -31,6 +31,8 @@
 #include "fxport/math/rectangle.h"
 #include "fxport/math/vector4.h"
 
+#include "device/vertex_format.h"
+
 namespace fxport {
 
 // A backend object (a GL name today): 0 is "none".
@@ -51,7 +53,7 @@ inline int uniformBindingFor(int stage, int hlslBinding) { return stage * kUnifo
 // One vertex-shader input fed from vertex-buffer binding `binding` at `offset` bytes.
 struct VertexAttribute {
     int location = 0;
-    VertexElementFormat format = VertexElementFormat::Vector4;
+    VertexFormat format;
     int offset = 0;
     bool integer = false;  // the shader reads it as integers (no conversion to float)
     int binding = 0;
@@ -113,6 +115,9 @@ public:
     virtual void setViewport(const Viewport& viewport) = 0;
     virtual void setScissor(const Rectangle& rectangle) = 0;  // the rectangle; RasterizerState switches the test
     virtual void setSrgbWrite(bool enabled) = 0;              // encode into sRGB-encoded targets (D3D9 SRGBWriteEnable)
+    // Clip planes 0..count-1 on, the others off: the SV_ClipDistance values the last stage before
+    // the rasteriser writes (D3D clips by every one a shader writes; GL only by those enabled).
+    virtual void setClipPlanes(int count) = 0;
 
     // Samplers and textures. A sampler object is made once per distinct SamplerState (the core caches it).
     virtual BackendObject createSampler(const SamplerState& state) = 0;

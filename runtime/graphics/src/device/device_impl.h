@@ -17,6 +17,7 @@
 #include "device/impl_access.h"
 #include "device/state_shadow.h"
 #include "fxport/graphics/graphics_device.h"
+#include "fxport/xlate/compiled_effect.h"
 #include "fxport/xlate/texture_fetches.h"
 
 namespace fxport::xlate {
@@ -107,9 +108,20 @@ struct GraphicsDevice::Impl {
     // SRGBWriteEnable drawing into an 8-bit target that is not sRGB-encoded: GL writes unconverted
     // where D3D9 encoded. Reported once per effect, through the effect warning handler.
     void reportUnencodedSrgbWrite();
+    int clipPlanesOfShaders() const;
     // Picks the pixel program: the shader's own, or its alpha-test variant (made on first use).
     BackendObject pixelProgramFor(const ShaderProgram& program);
     std::map<std::tuple<BackendObject, BackendObject, BackendObject, BackendObject, BackendObject>, BackendObject> pipelines;  // vs, ps, gs, hs, ds
+    // Stages compiled apart link by semantic (device/stage_links.cpp): a reader whose inputs sit at
+    // other locations than its writer's outputs of the same semantics draws through a variant with
+    // the writer's (xlate::inputsLinkedTo), made once per reader program and writer's outputs.
+    struct LinkedReader {
+        xlate::CompiledShader shader;  // the reader, its inputs moved
+        ShaderProgram program;         // over `shader`
+    };
+    std::map<std::pair<BackendObject, std::string>, std::unique_ptr<LinkedReader>> linkedReaders;
+    const ShaderProgram& linkedReader(const ShaderProgram& reader, const ShaderProgram& writer);
+    void dropLinkedReadersOf(BackendObject readerProgram);
     BackendObject boundPipeline = 0;
 
     // --- uniform buffers: wanted (set by Apply) and bound

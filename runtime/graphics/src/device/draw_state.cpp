@@ -72,9 +72,17 @@ void GraphicsDevice::Impl::flush(const char* what) {
     applyTextures();
     if (applyStorage(shaders.data(), shaders.size(), what)) storageDirty = true;  // the draw writes: barrier before what follows
     shadow.setSrgbWrite(emulation.srgbWrite);
+    shadow.setClipPlanes(clipPlanesOfShaders());
     if (emulation.srgbWrite) reportUnencodedSrgbWrite();
     tallyDraw();
     shadow.settle();
+}
+
+// The clip distances the last stage before the rasteriser writes (geometry, else domain, else vertex).
+int GraphicsDevice::Impl::clipPlanesOfShaders() const {
+    for (int stage : {2, kDomainStage, 0})
+        if (shaders[std::size_t(stage)]) return shaders[std::size_t(stage)]->shader->clipDistances;
+    return 0;
 }
 
 void GraphicsDevice::Impl::reportUnencodedSrgbWrite() {
@@ -117,8 +125,17 @@ BackendObject GraphicsDevice::Impl::pixelProgramFor(const ShaderProgram& program
 }
 
 void GraphicsDevice::Impl::applyShaders() {
-    BackendObject vs = shaders[0]->program, ps = pixelProgramFor(*shaders[1]), gs = shaders[2] ? shaders[2]->program : 0;
-    BackendObject hs = shaders[kHullStage] ? shaders[kHullStage]->program : 0, ds = shaders[kDomainStage] ? shaders[kDomainStage]->program : 0;
+    // Each stage reads what the stage before it in the pipeline (vertex, hull, domain, geometry,
+    // pixel) writes, linked by semantic.
+    std::array<const ShaderProgram*, kStageCount> linked = shaders;
+    const ShaderProgram* writer = shaders[0];
+    for (int stage : {kHullStage, kDomainStage, 2, 1}) {
+        if (!shaders[std::size_t(stage)]) continue;
+        linked[std::size_t(stage)] = &linkedReader(*shaders[std::size_t(stage)], *writer);
+        writer = shaders[std::size_t(stage)];
+    }
+    BackendObject vs = linked[0]->program, ps = pixelProgramFor(*linked[1]), gs = linked[2] ? linked[2]->program : 0;
+    BackendObject hs = linked[kHullStage] ? linked[kHullStage]->program : 0, ds = linked[kDomainStage] ? linked[kDomainStage]->program : 0;
     auto key = std::make_tuple(vs, ps, gs, hs, ds);
     auto it = pipelines.find(key);
     BackendObject pipeline = 0;
@@ -240,7 +257,7 @@ GraphicsDevice::Impl::VertexArray& GraphicsDevice::Impl::vertexArrayFor(const Ve
         std::vector<VertexAttribute> attributes;
         for (std::size_t i = 0; i < elements.size(); ++i) {
             const xlate::VertexInput& input = shaders[0]->shader->inputs[i];
-            attributes.push_back({input.location, elements[i]->VertexElementFormat, elements[i]->Offset, input.isInteger});
+            attributes.push_back({input.location, vertexFormatOf(elements[i]->VertexElementFormat), elements[i]->Offset, input.isInteger});
         }
         VertexArray va;
         va.vao = backend->createVertexArray(attributes, {});

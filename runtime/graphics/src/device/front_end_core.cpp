@@ -9,6 +9,7 @@
 #include <string>
 
 #include "device/device_impl.h"
+#include "device/vertex_input.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/xlate/compiled_effect.h"
 
@@ -239,15 +240,13 @@ void issue(GraphicsDevice::Impl& d, GraphicsDevice::Impl::VertexArray& va, const
     d.backend->draw(call);
 }
 
-// The element of `streams` feeding a vertex-shader input (by semantic; SV_Position takes POSITION).
+// The element of `streams` feeding a vertex-shader input (by semantic, any name; feedsInput).
 bool findElement(const std::vector<InstancedStream>& streams, const xlate::VertexInput& input, std::size_t& stream,
-                 const VertexElement*& element) {
-    std::string semantic = input.semantic;
-    if (semantic.rfind("SV_POSITION", 0) == 0) semantic = semantic.substr(3);
+                 const StreamElement*& element) {
     for (std::size_t s = 0; s < streams.size(); ++s) {
-        if (!streams[s].vertices.declaration) continue;
-        for (const VertexElement& e : streams[s].vertices.declaration->GetVertexElements())
-            if (vertexElementSemantic(e) == semantic) {
+        if (!streams[s].vertices.layout) continue;
+        for (const StreamElement& e : streams[s].vertices.layout->elements)
+            if (feedsInput(e.semantic, input)) {
                 stream = s;
                 element = &e;
                 return true;
@@ -263,11 +262,11 @@ GraphicsDevice::Impl::VertexArray& streamVertexArray(GraphicsDevice::Impl& d, co
     std::string key = "streams";
     for (const InstancedStream& s : streams) {
         key += ";" + std::to_string(s.instanceStepRate) + ":";
-        if (!s.vertices.declaration) continue;
-        key += std::to_string(s.vertices.declaration->VertexStride());
-        for (const VertexElement& e : s.vertices.declaration->GetVertexElements())
-            key += "," + std::to_string(e.Offset) + "/" + std::to_string(int(e.VertexElementFormat)) + "/" +
-                   std::to_string(int(e.VertexElementUsage)) + "/" + std::to_string(e.UsageIndex);
+        if (!s.vertices.layout) continue;
+        key += std::to_string(s.vertices.layout->stride);
+        for (const StreamElement& e : s.vertices.layout->elements)
+            key += "," + e.semantic + "/" + std::to_string(e.offset) + "/" + std::to_string(int(e.format.component)) + "/" +
+                   std::to_string(e.format.count) + (e.format.normalized ? "n" : "");
     }
     key += "|" + std::to_string(vs.program);
     auto it = d.vertexArrays.find(key);
@@ -275,7 +274,7 @@ GraphicsDevice::Impl::VertexArray& streamVertexArray(GraphicsDevice::Impl& d, co
         struct Feed {
             const xlate::VertexInput* input;
             std::size_t stream;
-            const VertexElement* element;
+            const StreamElement* element;
         };
         std::vector<Feed> feeds;  // checked before the backend makes anything
         for (const xlate::VertexInput& input : vs.shader->inputs) {
@@ -286,7 +285,7 @@ GraphicsDevice::Impl::VertexArray& streamVertexArray(GraphicsDevice::Impl& d, co
         }
         std::vector<VertexAttribute> attributes;
         for (const Feed& f : feeds)
-            attributes.push_back(VertexAttribute{f.input->location, f.element->VertexElementFormat, f.element->Offset,
+            attributes.push_back(VertexAttribute{f.input->location, f.element->format, f.element->offset,
                                                  f.input->isInteger, int(f.stream)});
         std::vector<int> divisors;
         for (const InstancedStream& s : streams) divisors.push_back(s.instanceStepRate);
@@ -304,6 +303,14 @@ GraphicsDevice::Impl::VertexArray& streamVertexArray(GraphicsDevice::Impl& d, co
 
 }  // namespace
 
+StreamLayout streamLayoutOf(const VertexDeclaration& declaration) {
+    StreamLayout layout;
+    layout.stride = declaration.VertexStride();
+    for (const VertexElement& e : declaration.GetVertexElements())
+        layout.elements.push_back({vertexElementSemantic(e), e.Offset, vertexFormatOf(e.VertexElementFormat)});
+    return layout;
+}
+
 void drawStreams(GraphicsDevice& device, const std::vector<InstancedStream>& streams, const DrawArguments& a) {
     GraphicsDevice::Impl& d = deviceImpl(device);
     if (a.count <= 0 || a.instances <= 0) return;  // D3D draws nothing
@@ -311,7 +318,7 @@ void drawStreams(GraphicsDevice& device, const std::vector<InstancedStream>& str
     GraphicsDevice::Impl::VertexArray& va = streamVertexArray(d, streams);
     for (std::size_t s = 0; s < streams.size(); ++s) {
         const VertexStream& v = streams[s].vertices;
-        const int stride = v.declaration ? v.declaration->VertexStride() : 0;
+        const int stride = v.layout ? v.layout->stride : 0;
         d.backend->setVertexBuffer(va.vao, int(s), v.buffer ? v.buffer->backendObject() : 0, v.offset, stride);
     }
     issue(d, va, a);

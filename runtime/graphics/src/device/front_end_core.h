@@ -8,12 +8,15 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "fxport/graphics/graphics_device.h"
 #include "fxport/graphics/graphics_resource.h"
 #include "fxport/graphics/render_target.h"
 #include "fxport/graphics/vertex_declaration.h"
+
+#include "device/vertex_format.h"
 
 namespace fxport::xlate {
 struct CompiledEffect;
@@ -102,10 +105,25 @@ void setStorageBuffer(GraphicsDevice& device, bool unorderedAccess, int slot, co
 // buffers are not used. Resets the device's Viewport to the whole target (as SetRenderTargets).
 void setTargets(GraphicsDevice& device, const std::vector<RenderTargetBinding>& colour, DepthBuffer* depth);
 
+// One attribute of a vertex stream: the vertex-shader input it feeds, matched by semantic whatever
+// the name (D3D11 input layouts name any: "CASCADE0", "CLIP_DISTANCE0"), and how its bytes read.
+struct StreamElement {
+    std::string semantic;  // upper case with index (vertexSemantic): "POSITION0", "CASCADE2"
+    int offset = 0;        // bytes from the vertex's start
+    VertexFormat format;
+};
+// The elements of one vertex buffer and the bytes from one vertex to the next.
+struct StreamLayout {
+    int stride = 0;
+    std::vector<StreamElement> elements;
+};
+// An XNA declaration as a stream layout (usage + index name the semantic).
+StreamLayout streamLayoutOf(const VertexDeclaration& declaration);
+
 struct VertexStream {
     const ByteBuffer* buffer = nullptr;
-    std::size_t offset = 0;                       // bytes
-    const VertexDeclaration* declaration = nullptr;  // elements and stride
+    std::size_t offset = 0;                 // bytes
+    const StreamLayout* layout = nullptr;  // elements and stride
 };
 struct DrawArguments {
     PrimitiveType type = PrimitiveType::TriangleList;

@@ -697,6 +697,7 @@ void GraphicsDevice::Impl::deleteProgram(BackendObject& name) {
         programCache.erase(it);
         break;
     }
+    dropLinkedReadersOf(name);
     dropPipelinesUsing(name);
     dropComputePipelinesUsing(name);
     dropVertexArraysUsing(name);

@@ -40,6 +40,12 @@ void StateShadow::setSrgbWrite(bool wanted) {
     srgbWrite_ = wanted;
 }
 
+void StateShadow::setClipPlanes(int wanted) {
+    if (!unknown_ && wanted == clipPlanes_) return;
+    backend_.setClipPlanes(wanted);
+    clipPlanes_ = wanted;
+}
+
 void StateShadow::reapply() {
     backend_.setBlend(blend_, nullptr);
     backend_.setDepthStencil(depthStencil_, nullptr);

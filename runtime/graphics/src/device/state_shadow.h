@@ -26,6 +26,7 @@ public:
     bool setViewport(const Viewport& wanted);
     void setScissor(const Rectangle& wanted);
     void setSrgbWrite(bool wanted);
+    void setClipPlanes(int wanted);
     // Sends blend, depth/stencil, rasterizer and scissor again, whole, as the shadow has them: after
     // a clear, which sets write masks and the scissor test for itself. Leaves unknown() as it is.
     void reapply();
@@ -45,6 +46,7 @@ private:
     Viewport viewport_;
     Rectangle scissor_;
     bool srgbWrite_ = false;
+    int clipPlanes_ = 0;
 };
 
 }  // namespace fxport

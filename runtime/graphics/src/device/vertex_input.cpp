@@ -1,20 +1,38 @@
 // Vertex inputs matched to declaration elements (vertex_input.h).
 #include "device/vertex_input.h"
 
+#include <cctype>
+
 #include "fxport/graphics/errors.h"
 
 namespace fxport {
+
+namespace {
+
+std::string withoutSvPrefix(const std::string& semantic) {
+    return semantic.rfind("SV_POSITION", 0) == 0 ? semantic.substr(3) : semantic;
+}
+
+}  // namespace
+
+std::string vertexSemantic(const std::string& name, int index) {
+    std::string s = name;
+    for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
+    return s + std::to_string(index);
+}
+
+bool feedsInput(const std::string& elementSemantic, const xlate::VertexInput& input) {
+    return elementSemantic == input.semantic || withoutSvPrefix(elementSemantic) == withoutSvPrefix(input.semantic);
+}
 
 // The element feeding a vertex-shader input: matched by semantic, as D3D does. An `SV_Position`
 // input of an SM4+ shader takes the Position element (MonoGame's rule for XNA's usages; fxc already
 // reads it as POSITION at SM2/3). An input the shader reads and the declaration lacks is an error,
 // as in XNA ("...Normal0 is missing"), never a silent (0, 0, 0, 1).
 const VertexElement& vertexElementFor(const VertexDeclaration& declaration, const xlate::VertexInput& input, const std::string& shaderName) {
-    std::string semantic = input.semantic;
-    if (semantic.rfind("SV_POSITION", 0) == 0) semantic = semantic.substr(3);
     const VertexElement* element = nullptr;
     for (const VertexElement& e : declaration.GetVertexElements())
-        if (vertexElementSemantic(e) == semantic) element = &e;
+        if (feedsInput(vertexElementSemantic(e), input)) element = &e;
     if (!element)
         throw InvalidOperation("the current vertex declaration does not include all the elements required by the current vertex shader " +
                                shaderName + ": " + input.semantic + " is missing (a VertexElement of that usage and usage index)");

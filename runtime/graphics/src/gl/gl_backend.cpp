@@ -106,22 +106,23 @@ struct AttributeFormat {
     GLboolean normalized;
 };
 
-AttributeFormat attributeFormat(VertexElementFormat f) {
-    switch (f) {
-    case VertexElementFormat::Single: return {1, GL_FLOAT, GL_FALSE};
-    case VertexElementFormat::Vector2: return {2, GL_FLOAT, GL_FALSE};
-    case VertexElementFormat::Vector3: return {3, GL_FLOAT, GL_FALSE};
-    case VertexElementFormat::Vector4: return {4, GL_FLOAT, GL_FALSE};
-    case VertexElementFormat::Color: return {4, GL_UNSIGNED_BYTE, GL_TRUE};
-    case VertexElementFormat::Byte4: return {4, GL_UNSIGNED_BYTE, GL_FALSE};
-    case VertexElementFormat::Short2: return {2, GL_SHORT, GL_FALSE};
-    case VertexElementFormat::Short4: return {4, GL_SHORT, GL_FALSE};
-    case VertexElementFormat::NormalizedShort2: return {2, GL_SHORT, GL_TRUE};
-    case VertexElementFormat::NormalizedShort4: return {4, GL_SHORT, GL_TRUE};
-    case VertexElementFormat::HalfVector2: return {2, GL_HALF_FLOAT, GL_FALSE};
-    case VertexElementFormat::HalfVector4: return {4, GL_HALF_FLOAT, GL_FALSE};
+GLenum componentType(VertexComponent c) {
+    switch (c) {
+    case VertexComponent::Float32: return GL_FLOAT;
+    case VertexComponent::Float16: return GL_HALF_FLOAT;
+    case VertexComponent::UInt8: return GL_UNSIGNED_BYTE;
+    case VertexComponent::SInt8: return GL_BYTE;
+    case VertexComponent::UInt16: return GL_UNSIGNED_SHORT;
+    case VertexComponent::SInt16: return GL_SHORT;
+    case VertexComponent::UInt32: return GL_UNSIGNED_INT;
+    case VertexComponent::SInt32: return GL_INT;
+    case VertexComponent::UInt1010102: return GL_UNSIGNED_INT_2_10_10_10_REV;
     }
-    return {4, GL_FLOAT, GL_FALSE};
+    return GL_FLOAT;
+}
+
+AttributeFormat attributeFormat(const VertexFormat& f) {
+    return {GLint(f.count), componentType(f.component), f.normalized ? GLboolean(GL_TRUE) : GLboolean(GL_FALSE)};
 }
 
 }  // namespace
@@ -146,7 +147,9 @@ BackendObject GlBackend::createVertexArray(const std::vector<VertexAttribute>& a
         const GLuint location = GLuint(a.location);
         const AttributeFormat f = attributeFormat(a.format);
         glEnableVertexArrayAttrib(vao, location);
-        if (a.integer) glVertexArrayAttribIFormat(vao, location, f.size, f.type, GLuint(a.offset));
+        // An integer input fed 32-bit floats gets their bits, as a D3D register holds them (GL has
+        // no float type for integer attributes).
+        if (a.integer) glVertexArrayAttribIFormat(vao, location, f.size, f.type == GL_FLOAT ? GLenum(GL_INT) : f.type, GLuint(a.offset));
         else glVertexArrayAttribFormat(vao, location, f.size, f.type, f.normalized, GLuint(a.offset));
         glVertexArrayAttribBinding(vao, location, GLuint(a.binding));
     }
@@ -254,6 +257,14 @@ void GlBackend::setSrgbWrite(bool enabled) {
     // unconverted (docs/DESIGN.md, "Pass states GL core lacks").
     if (enabled) glEnable(GL_FRAMEBUFFER_SRGB);
     else glDisable(GL_FRAMEBUFFER_SRGB);
+}
+
+void GlBackend::setClipPlanes(int count) {
+    // GL 4.5 guarantees 8 clip distances (GL_MAX_CLIP_DISTANCES), D3D11's count.
+    for (int i = 0; i < 8; ++i) {
+        if (i < count) glEnable(GLenum(GL_CLIP_DISTANCE0 + i));
+        else glDisable(GLenum(GL_CLIP_DISTANCE0 + i));
+    }
 }
 
 BackendObject GlBackend::createSampler(const SamplerState& s) {

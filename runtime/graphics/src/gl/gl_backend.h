@@ -23,6 +23,7 @@ public:
     void setViewport(const Viewport& viewport) override;
     void setScissor(const Rectangle& rectangle) override;
     void setSrgbWrite(bool enabled) override;
+    void setClipPlanes(int count) override;
     BackendObject createSampler(const SamplerState& state) override;
     void deleteSampler(BackendObject sampler) override { glDeleteSamplers(1, &sampler); }
     void bindTexture(int unit, BackendObject texture) override { glBindTextureUnit(GLuint(unit), texture); }

@@ -119,6 +119,12 @@ struct VertexInput {
     bool isInteger = false;
 };
 
+// A value passed between stages by a user semantic, at the GL location xlate gave it.
+struct Varying {
+    std::string semantic;  // upper case with index: "TEXCOORD2", "RESULT0"
+    int location = 0;
+};
+
 struct UniformRange {  // a byte range of a uniform block this shader actually reads
     int offset = 0;
     int size = 0;
@@ -176,6 +182,16 @@ struct CompiledShader {
     std::vector<UniformRange> uniformRangesRead;
     int outputTargets = 0;                // pixel shaders: number of SV_Target outputs (MRT)
     bool writesDepth = false;
+    // Vertex, geometry and domain shaders: how many SV_ClipDistance values they write (gl_ClipDistance
+    // 0..n-1, packed in semantic order); the runtime clips by that many planes when the shader is
+    // the last before the rasteriser.
+    int clipDistances = 0;
+    // Values between stages, by user semantic (system values are GL built-ins): what a stage reads
+    // (all but vertex shaders) and writes (all but pixel shaders). Locations of standard semantics
+    // are fixed; other names are numbered in the order a shader declares them, so a runtime links
+    // shaders compiled apart by semantic, moving a reader's locations to its writer's.
+    std::vector<Varying> varyingInputs;
+    std::vector<Varying> varyingOutputs;
     std::vector<StorageBinding> storage;  // UAVs and buffer SRVs
     std::array<int, 3> threadGroupSize{};  // compute shaders: [numthreads(x, y, z)]
     Tessellation tessellation;            // hull and domain shaders

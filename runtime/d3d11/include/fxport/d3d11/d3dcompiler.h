@@ -70,7 +70,10 @@ enum D3D_REGISTER_COMPONENT_TYPE : UINT {
     D3D_REGISTER_COMPONENT_UNKNOWN = 0, D3D_REGISTER_COMPONENT_UINT32 = 1, D3D_REGISTER_COMPONENT_SINT32 = 2,
     D3D_REGISTER_COMPONENT_FLOAT32 = 3,
 };
-enum D3D_NAME : UINT { D3D_NAME_UNDEFINED = 0, D3D_NAME_POSITION = 1, D3D_NAME_VERTEX_ID = 6, D3D_NAME_INSTANCE_ID = 8 };
+enum D3D_NAME : UINT {
+    D3D_NAME_UNDEFINED = 0, D3D_NAME_POSITION = 1, D3D_NAME_CLIP_DISTANCE = 2, D3D_NAME_CULL_DISTANCE = 3, D3D_NAME_VERTEX_ID = 6,
+    D3D_NAME_INSTANCE_ID = 8, D3D_NAME_TARGET = 64, D3D_NAME_DEPTH = 65,
+};
 constexpr UINT D3D_SVF_USED = 2;
 
 struct D3D11_SHADER_DESC {
@@ -167,6 +170,10 @@ public:
     virtual HRESULT GetResourceBindingDesc(UINT ResourceIndex, D3D11_SHADER_INPUT_BIND_DESC* pDesc) = 0;
     virtual HRESULT GetResourceBindingDescByName(LPCSTR Name, D3D11_SHADER_INPUT_BIND_DESC* pDesc) = 0;
     virtual HRESULT GetInputParameterDesc(UINT ParameterIndex, D3D11_SIGNATURE_PARAMETER_DESC* pDesc) = 0;
+    // The output signature: SV_Target0..n and SV_Depth of a pixel shader; SV_Position, each user
+    // semantic (Register = its GL location; ComponentType UNKNOWN and Mask 0: not recorded) and the
+    // SV_ClipDistance registers of the other stages.
+    virtual HRESULT GetOutputParameterDesc(UINT ParameterIndex, D3D11_SIGNATURE_PARAMETER_DESC* pDesc) = 0;
     // Compute shaders: [numthreads(x, y, z)] (each pointer may be null); the product, 0 for other stages.
     virtual UINT GetThreadGroupSize(UINT* pSizeX, UINT* pSizeY, UINT* pSizeZ) = 0;
 };

@@ -1,0 +1,58 @@
+// Stages compiled apart, linked by semantic at draw time (device_impl.h, xlate/varying_links.h):
+// an effect's own stages share one numbering and never need this; a D3D11 vertex shader and a
+// pixel shader from two D3DCompile calls (or SpriteBatch's vertex shader and a pixel-only
+// effect) may number the same user semantic differently, and GL links by number.
+#include "device/device_impl.h"
+#include "fxport/xlate/varying_links.h"
+
+namespace fxport {
+
+namespace {
+
+// Whether some semantic both share sits at two locations.
+bool locationsDiffer(const xlate::CompiledShader& reader, const xlate::CompiledShader& writer) {
+    for (const xlate::Varying& in : reader.varyingInputs)
+        for (const xlate::Varying& out : writer.varyingOutputs)
+            if (in.semantic == out.semantic && in.location != out.location) return true;
+    return false;
+}
+
+}  // namespace
+
+const ShaderProgram& GraphicsDevice::Impl::linkedReader(const ShaderProgram& reader, const ShaderProgram& writer) {
+    if (!locationsDiffer(*reader.shader, *writer.shader)) return reader;
+    std::string outputs;
+    for (const xlate::Varying& v : writer.shader->varyingOutputs) outputs += v.semantic + "=" + std::to_string(v.location) + ";";
+    auto key = std::make_pair(reader.program, outputs);
+    auto it = linkedReaders.find(key);
+    if (it != linkedReaders.end()) return it->second->program;
+    std::optional<xlate::CompiledShader> moved = xlate::inputsLinkedTo(*reader.shader, writer.shader->varyingOutputs);
+    if (!moved) return reader;
+    auto linked = std::make_unique<LinkedReader>();
+    linked->shader = std::move(*moved);
+    linked->program = ShaderProgram{};
+    linked->program.stage = reader.stage;
+    linked->program.shader = &linked->shader;
+    linked->program.label = reader.label + " [inputs linked to " + writer.label + "]";
+    linked->program.mayDiscard = reader.mayDiscard;
+    linked->program.program = createProgram(reader.stage, linked->shader.glsl, linked->program.label);
+    return linkedReaders.emplace(key, std::move(linked)).first->second->program;
+}
+
+void GraphicsDevice::Impl::dropLinkedReadersOf(BackendObject readerProgram) {
+    std::vector<std::unique_ptr<LinkedReader>> dropped;
+    for (auto it = linkedReaders.begin(); it != linkedReaders.end();) {
+        if (it->first.first != readerProgram) {
+            ++it;
+            continue;
+        }
+        dropped.push_back(std::move(it->second));
+        it = linkedReaders.erase(it);
+    }
+    for (auto& l : dropped) {
+        if (l->program.alphaTestProgram) deleteProgram(l->program.alphaTestProgram);
+        deleteProgram(l->program.program);
+    }
+}
+
+}  // namespace fxport
