@@ -36,6 +36,7 @@
 #include "input_limits.h"
 #include "loose_shaders.h"
 #include "preprocess.h"
+#include "struct_definitions.h"
 #include "render_states.h"
 #include "shader_profile.h"
 #include "spirv_sizes.h"
@@ -1085,6 +1086,7 @@ CompiledEffect compileUncached(const std::string& source, const std::string& dis
     reportWorkerProgress("preprocess");
     PreprocessedEffect pre = preprocessEffect(source, displayPath, absolutePath, options);
     reportWorkerProgress("parse");
+    pre.text = splitStructDefinitions(pre.text);  // `static struct { ... } x;` and definitions in definitions
 
     EffectSyntax syntax = parseEffect(pre.text, pre.map, isLooseShaderCompile(options));
     CompiledEffect effect;

@@ -1,0 +1,45 @@
+// Valid HLSL that fxc compiles and glslang's HLSL front end refuses as written, compiled at SM2..SM5
+// and drawn into a 1x1 float target: each result is compared with the value the HLSL means (worked
+// out in C++ beside it), so a rewrite that compiles but computes something else fails too.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "one_pixel_effect.h"
+#include "runtime_test_support.h"
+
+namespace fxport::test {
+namespace {
+
+class HlslAcceptedForms : public OnePixelEffect {
+protected:
+    void expectPixel(const std::string& globals, const std::string& body, const float (&expected)[4], const Vector4& a = {}) {
+        SCOPED_TRACE(globals + " | " + body);
+        auto e = effect("float4 A;\n" + globals, body);
+        e->Parameters["A"].SetValue(a);
+        std::vector<float> px = draw(*e);
+        for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], expected[k]) << "channel " << k;
+    }
+};
+
+// Struct definitions that also declare variables, anonymous ones, and ones inside another struct's
+// member list (xlate/src/struct_definitions.cpp).
+TEST_P(HlslAcceptedForms, StructDefinitionsWithDeclarators) {
+    // An anonymous struct typing a static constant, its members filled from a flat list.
+    expectPixel("static const struct { float a; float2 b; } s = {1, 2, 3};", "return float4(s.a, s.b, A.x);", {1, 2, 3, 0.5f}, {0.5f, 0, 0, 0});
+    // A named definition with a declarator, then used by name again.
+    expectPixel("static struct apple { float4 f; } g;", "apple h; h.f = A; g = h; return g.f * 2;", {1, -2, 3, 8}, {0.5f, -1, 1.5f, 4});
+    // An anonymous struct as a member of a struct (in a local variable), two levels deep.
+    expectPixel("struct Outer { struct { float2 u; struct { float w; } deep; } inner; float v; };",
+                "Outer o; o.inner.u = A.xy; o.inner.deep.w = A.z; o.v = A.w; return float4(o.v, o.inner.deep.w, o.inner.u);",
+                {4, 3, 1, 2}, {1, 2, 3, 4});
+    // An anonymous struct declared in a function body.
+    expectPixel("", "struct { float a; float b; } t; t.a = A.y; t.b = A.x; return float4(t.a, t.b, t.a + t.b, 1);", {2, 1, 3, 1}, {1, 2, 0, 0});
+}
+
+INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslAcceptedForms, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
+                         [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
+
+}  // namespace
+}  // namespace fxport::test
