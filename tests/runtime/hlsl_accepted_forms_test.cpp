@@ -38,6 +38,16 @@ TEST_P(HlslAcceptedForms, StructDefinitionsWithDeclarators) {
     expectPixel("", "struct { float a; float b; } t; t.a = A.y; t.b = A.x; return float4(t.a, t.b, t.a + t.b, 1);", {2, 1, 3, 1}, {1, 2, 0, 0});
 }
 
+// Array sizes written as constant expressions: arithmetic, a local constant, a float (truncated)
+// and a bool (xlate/src/array_sizes.cpp); flat initializers of such arrays fill them in order.
+TEST_P(HlslAcceptedForms, ArraySizesFromConstantExpressions) {
+    expectPixel("static const float2 g[(2 + 1) * 2] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12};", "return float4(g[5], g[1]);", {11, 12, 3, 4});
+    expectPixel("static const int n = 3;", "float2 a[n - 1][1 + 1] = {1, 2, 3, 4, 5, 6, 7, 8}; return float4(a[1][0], a[0][1]);", {5, 6, 3, 4});
+    expectPixel("", "const int dim = 4; float a[2 * 2] = {A.x, A.y, A.z, A.w}; float b[4.1] = a; float c[dim] = b; float d[true] = {c[3]};"
+                " return float4(d[0], c[0], b[1], a[2]);",
+                {4, 1, 2, 3}, {1, 2, 3, 4});
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslAcceptedForms, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 

@@ -2,6 +2,7 @@
 
 #include "geometry_output_stream.h"
 
+#include "array_sizes.h"
 #include "initializer_lists.h"
 #include "out_argument_casts.h"
 #include "fxc_intrinsics.h"
@@ -394,6 +395,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     splitConstructorAssignments(text, syntax, edits);
     for (auto& e : lowerMatrixSwizzles(tokens)) edits.push_back(std::move(e));
     for (auto& e : regroupFlatInitializers(syntax)) edits.push_back(std::move(e));
+    for (auto& e : arraySizesAsLiterals(syntax)) edits.push_back(std::move(e));
     for (auto& e : respellOneComponentVectors(syntax)) edits.push_back(std::move(e));
     for (auto& e : degenerateMatricesAsVectors(syntax)) edits.push_back(std::move(e));
     for (auto& e : lvalueCastsAsAssignments(syntax)) edits.push_back(std::move(e));

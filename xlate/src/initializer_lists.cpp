@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "array_sizes.h"
 #include "hlsl_types.h"
 
 namespace fxport::xlate {
@@ -129,16 +130,23 @@ private:
     size_t next_ = 0;
 };
 
-// Array dimensions written as literals, read backwards from the token before `=`; `[]` takes its
-// size from the leaves. Sets `nameAt` to the declared name's token. nullopt: not a declaration we know.
-std::optional<std::vector<int>> dimsBefore(const std::vector<Token>& t, size_t equals, size_t& nameAt) {
+// Array dimensions of constant sizes (array_sizes.h), read backwards from the token before `=`;
+// `[]` takes its size from the leaves. Sets `nameAt` to the declared name's token. nullopt: not a
+// declaration we know.
+std::optional<std::vector<int>> dimsBefore(const std::vector<Token>& t, const ConstantSizes& sizes, size_t equals, size_t& nameAt) {
     std::vector<int> dims;
     size_t at = equals;
     while (at >= 3 && t[at - 1].is("]")) {
-        if (t[at - 2].is("[")) dims.push_back(0);
-        else if (t[at - 2].kind == Token::Kind::Number && t[at - 3].is("[")) dims.push_back(std::atoi(t[at - 2].text.c_str()));
-        else return std::nullopt;
-        at -= t[at - 2].is("[") ? 2 : 3;
+        int depth = 0;
+        size_t open = at - 1;
+        for (; open > 0; --open) {
+            if (t[open].is("]")) ++depth;
+            if (t[open].is("[") && --depth == 0) break;
+        }
+        auto size = depth == 0 ? sizes.size(open, at - 1) : std::nullopt;
+        if (!size) return std::nullopt;
+        dims.push_back(*size);
+        at = open;
     }
     if (at < 2 || !t[at - 1].isIdent()) return std::nullopt;
     nameAt = at - 1;
@@ -189,10 +197,11 @@ size_t leafCount(const EffectSyntax& syntax, const std::string& type, int depth 
 std::vector<TextEdit> regroupFlatInitializers(const EffectSyntax& syntax) {
     std::vector<TextEdit> edits;
     const std::vector<Token>& t = syntax.tokens;
+    const ConstantSizes sizes(syntax);
     for (size_t i = 1; i + 1 < t.size(); ++i) {
         if (!t[i].is("=") || !t[i + 1].is("{")) continue;
         size_t nameAt = 0;
-        auto dims = dimsBefore(t, i, nameAt);
+        auto dims = dimsBefore(t, sizes, i, nameAt);
         if (!dims || nameAt == 0 || !t[nameAt - 1].isIdent()) continue;
         std::string type = aggregateType(syntax, t[nameAt - 1].text, !dims->empty(), nestsBraces(t, i + 1));
         if (type.empty()) continue;
