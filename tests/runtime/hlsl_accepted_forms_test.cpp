@@ -48,6 +48,14 @@ TEST_P(HlslAcceptedForms, ArraySizesFromConstantExpressions) {
                 {4, 1, 2, 3}, {1, 2, 3, 4});
 }
 
+// Brace initializers that name variables: each variable gives its components in fxc's order
+// (xlate/src/initializer_lists.cpp with aggregate_components.h).
+TEST_P(HlslAcceptedForms, BraceInitializersNamingVariables) {
+    expectPixel("", "int4 aa = int4(A); float4 foo[3] = {1, aa, aa, 2, 3, 4}; return foo[1];", {40, 10, 20, 30}, {10, 20, 30, 40});
+    expectPixel("struct stu { float aa; int bb; };", "stu foo = {A.x, 3}; float4 f = {1.0, foo, 4.0}; return f;", {1, 0.25f, 3, 4}, {0.25f, 0, 0, 0});
+    expectPixel("", "float s = A.y; int arr[3] = {2, 3, 4}; float4 f = {s, arr}; return f;", {-1.5f, 2, 3, 4}, {0, -1.5f, 0, 0});
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslAcceptedForms, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 

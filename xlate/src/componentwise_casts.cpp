@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "aggregate_components.h"
 #include "hlsl_types.h"
 #include "variable_declarations.h"
 
@@ -12,47 +13,7 @@ namespace fxport::xlate {
 
 namespace {
 
-struct Component {
-    std::string access;  // `f[2]`, `a.bb.y`
-    std::string scalar;  // float, int ...
-};
-
 using Declared = DeclaredVariable;
-
-constexpr int kMaxComponents = 64;
-
-// The components of `access` of type `type` with array sizes `dims`, in fxc's order; nothing when
-// any is not numeric (an object in a struct) or there are too many.
-bool components(const EffectSyntax& syntax, const std::string& type, const std::vector<int>& dims, const std::string& access,
-                bool inStruct, std::vector<Component>& out, int depth = 0) {
-    if (depth > 8 || out.size() > size_t(kMaxComponents)) return false;
-    if (!dims.empty()) {
-        if (dims[0] <= 0) return false;
-        std::vector<int> rest(dims.begin() + 1, dims.end());
-        for (int i = 0; i < dims[0]; ++i)
-            if (!components(syntax, type, rest, access + "[" + std::to_string(i) + "]", inStruct, out, depth + 1)) return false;
-        return true;
-    }
-    const std::string& resolved = syntax.resolveType(type);
-    if (const FxStruct* s = syntax.findStruct(resolved)) {
-        for (const auto& m : s->members)
-            if (!components(syntax, m.type, m.arrayDims, access + "." + m.name, true, out, depth + 1)) return false;
-        return true;
-    }
-    BasicType b = describeBasicType(resolved);
-    if (!b.ok) return false;
-    const bool degenerate = b.isMatrix && (b.rows == 1 || b.columns == 1);
-    if (degenerate && inStruct) return false;  // a matrix to glslang there, and one it cannot build
-    if (b.isMatrix && !degenerate) {
-        for (int r = 0; r < b.rows; ++r)
-            for (int c = 0; c < b.columns; ++c) out.push_back({access + "[" + std::to_string(r) + "][" + std::to_string(c) + "]", b.scalar});
-    } else if (b.rows * b.columns > 1) {  // a vector (a one-row or one-column matrix is one to glslang)
-        for (int i = 0; i < b.rows * b.columns; ++i) out.push_back({access + "[" + std::to_string(i) + "]", b.scalar});
-    } else {
-        out.push_back({access, b.scalar});
-    }
-    return true;
-}
 
 // `( [struct] T [N]... )` at token i: the type and sizes, and the index of ')'.
 std::optional<std::pair<Declared, size_t>> castAt(const EffectSyntax& syntax, size_t i, size_t end) {
@@ -85,8 +46,8 @@ void rewriteConstructor(const EffectSyntax& syntax, const FxFunction& f, size_t 
     BasicType to = describeBasicType(syntax.resolveType(t[i].text));
     auto from = declaredVariable(syntax, f, t[i + 2].text, i);
     if (!to.ok || !from || (from->dims.empty() && !syntax.findStruct(syntax.resolveType(from->type)))) return;
-    std::vector<Component> source;
-    if (!components(syntax, from->type, from->dims, t[i + 2].text, false, source) || source.size() != size_t(to.rows * to.columns)) return;
+    std::vector<AggregateComponent> source;
+    if (!aggregateComponents(syntax, from->type, from->dims, t[i + 2].text, false, source) || source.size() != size_t(to.rows * to.columns)) return;
     std::string text = " " + vectorSpelling(to) + "(";  // the preprocessed text may join it to `return`
     for (size_t k = 0; k < source.size(); ++k) text += (k ? ", " : "") + source[k].access;
     edits.push_back({t[i].offset, t[i + 3].end, text + ")"});
@@ -103,8 +64,8 @@ void rewriteEqualAssignment(const EffectSyntax& syntax, const FxFunction& f, siz
     auto aggregate = [&](const Declared& d) { return !d.dims.empty() || syntax.findStruct(syntax.resolveType(d.type)); };
     if (!y || !x || !aggregate(*y) || !aggregate(*x)) return;
     if (syntax.resolveType(y->type) == syntax.resolveType(x->type) && y->dims == x->dims) return;  // glslang's
-    std::vector<Component> lhs, rhs;
-    if (!components(syntax, y->type, y->dims, t[i].text, false, lhs) || !components(syntax, x->type, x->dims, t[i + 2].text, false, rhs) ||
+    std::vector<AggregateComponent> lhs, rhs;
+    if (!aggregateComponents(syntax, y->type, y->dims, t[i].text, false, lhs) || !aggregateComponents(syntax, x->type, x->dims, t[i + 2].text, false, rhs) ||
         lhs.size() != rhs.size())
         return;
     std::string text;
@@ -131,8 +92,8 @@ void rewriteIn(const EffectSyntax& syntax, const FxFunction& f, std::vector<Text
         const bool fromAggregate = !from->dims.empty() || syntax.findStruct(syntax.resolveType(from->type));
         const bool toAggregate = !to.dims.empty() || syntax.findStruct(syntax.resolveType(to.type));
         if (!fromAggregate && !toAggregate) continue;  // vectors and matrices: glslang's and the shape checks'
-        std::vector<Component> source, target;
-        if (!components(syntax, from->type, from->dims, t[x].text, false, source) || !components(syntax, to.type, to.dims, "", false, target) ||
+        std::vector<AggregateComponent> source, target;
+        if (!aggregateComponents(syntax, from->type, from->dims, t[x].text, false, source) || !aggregateComponents(syntax, to.type, to.dims, "", false, target) ||
             source.size() < target.size())
             continue;
         // A matrix of more than one row on either side takes exactly its count (fxc X3017).
@@ -152,8 +113,8 @@ void rewriteIn(const EffectSyntax& syntax, const FxFunction& f, std::vector<Text
         if (i >= 3 && !(t[i - 3].is(";") || t[i - 3].is("{") || t[i - 3].is("}"))) continue;
         auto y = declaredVariable(syntax, f, t[i - 2].text, i - 2);
         if (!y || syntax.resolveType(y->type) != syntax.resolveType(to.type) || y->dims != to.dims) continue;
-        std::vector<Component> lhs;
-        if (!components(syntax, y->type, y->dims, t[i - 2].text, false, lhs) || lhs.size() != target.size()) continue;
+        std::vector<AggregateComponent> lhs;
+        if (!aggregateComponents(syntax, y->type, y->dims, t[i - 2].text, false, lhs) || lhs.size() != target.size()) continue;
         std::string text;
         for (size_t k = 0; k < lhs.size(); ++k) text += lhs[k].access + " = (" + lhs[k].scalar + ")" + source[k].access + "; ";
         edits.push_back({t[i - 2].offset, t[x + 1].end, text});

@@ -3,11 +3,14 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <functional>
 #include <optional>
 #include <string>
 
+#include "aggregate_components.h"
 #include "array_sizes.h"
 #include "hlsl_types.h"
+#include "variable_declarations.h"
 
 namespace fxport::xlate {
 
@@ -22,9 +25,12 @@ bool isLiteral(const Token& t) { return t.kind == Token::Kind::Number || t.is("t
 
 // The literal texts of a brace list, flattened: `{1, -2, float2(3, 4), {5}}` -> 1 -2 3 4 5.
 // A constructor of one literal is broadcast to its size (`float3(0)`). nullopt for anything else.
+// A variable named alone in the list (`{1, v, 4}`) gives its components (aggregate_components.h)
+// through `variable`, when one is given and knows it.
 class LeafReader {
 public:
-    LeafReader(const std::vector<Token>& tokens, size_t at) : t_(tokens), at_(at) {}
+    using Variable = std::function<bool(const std::string& name, std::vector<std::string>& out)>;
+    LeafReader(const std::vector<Token>& tokens, size_t at, Variable variable = {}) : t_(tokens), at_(at), variable_(std::move(variable)) {}
 
     std::optional<std::vector<std::string>> list() {
         std::vector<std::string> out;
@@ -32,6 +38,7 @@ public:
         return out;
     }
     size_t end() const { return at_; }  // one past the closing brace
+    bool sawVariable() const { return sawVariable_; }
 
 private:
     bool braced(std::vector<std::string>& out, int depth) {
@@ -49,6 +56,12 @@ private:
         if (t_[at_].is("{")) return braced(out, depth + 1);
         if (auto s = scalar()) {
             out.push_back(*s);
+            return true;
+        }
+        if (t_[at_].isIdent() && (t_[at_ + 1].is(",") || t_[at_ + 1].is("}"))) {
+            if (!variable_ || !variable_(t_[at_].text, out)) return false;
+            ++at_;
+            sawVariable_ = true;
             return true;
         }
         if (!t_[at_].isIdent() || !t_[at_ + 1].is("(")) return false;
@@ -82,6 +95,8 @@ private:
 
     const std::vector<Token>& t_;
     size_t at_;
+    Variable variable_;
+    bool sawVariable_ = false;
 };
 
 // Writes the declared type's initializer from `leaves`, in fxc's order (array elements, struct
@@ -156,14 +171,15 @@ std::optional<std::vector<int>> dimsBefore(const std::vector<Token>& t, const Co
 
 // The declared type's name with typedefs resolved, when it is an array, a struct or a matrix (the
 // forms glslang refuses flat), or a vector whose list nests braces (`float4 v = {1, {{2, {3}}, 4}};`
-// which glslang takes, but fills 1, 4, 0, 0); empty otherwise.
-std::string aggregateType(const EffectSyntax& syntax, const std::string& written, bool isArray, bool nested) {
+// which glslang takes, but fills 1, 4, 0, 0) or names a variable (glslang takes a flat list of
+// scalars for a vector, not one that names a variable) when `orVector`; empty otherwise.
+std::string aggregateType(const EffectSyntax& syntax, const std::string& written, bool isArray, bool orVector) {
     std::string type = written;
     auto td = syntax.typedefs.find(type);
     if (td != syntax.typedefs.end()) type = td->second;
     if (isArray || syntax.findStruct(type)) return type;
     BasicType basic = describeBasicType(type);
-    return basic.ok && (basic.isMatrix || (nested && basic.columns > 1)) ? type : std::string();
+    return basic.ok && (basic.isMatrix || (orVector && basic.columns > 1)) ? type : std::string();
 }
 
 // Whether the brace list opening at `open` holds another brace list.
@@ -175,6 +191,13 @@ bool nestsBraces(const std::vector<Token>& t, size_t open) {
         if (t[k].is(";")) return false;
     }
     return false;
+}
+
+// The function whose body holds token i, or nullptr.
+const FxFunction* functionAt(const EffectSyntax& syntax, size_t i) {
+    for (const auto& f : syntax.functions)
+        if (i > f.body.begin && i < f.body.end) return &f;
+    return nullptr;
 }
 
 size_t leafCount(const EffectSyntax& syntax, const std::string& type, int depth = 0) {
@@ -203,11 +226,22 @@ std::vector<TextEdit> regroupFlatInitializers(const EffectSyntax& syntax) {
         size_t nameAt = 0;
         auto dims = dimsBefore(t, sizes, i, nameAt);
         if (!dims || nameAt == 0 || !t[nameAt - 1].isIdent()) continue;
-        std::string type = aggregateType(syntax, t[nameAt - 1].text, !dims->empty(), nestsBraces(t, i + 1));
-        if (type.empty()) continue;
-        LeafReader reader(t, i + 1);
+        const FxFunction* f = functionAt(syntax, i);
+        LeafReader::Variable variable;
+        if (f)
+            variable = [&syntax, f, i](const std::string& name, std::vector<std::string>& out) {
+                auto declared = declaredVariable(syntax, *f, name, i);
+                std::vector<AggregateComponent> parts;
+                if (!declared || !aggregateComponents(syntax, declared->type, declared->dims, name, false, parts)) return false;
+                for (auto& p : parts) out.push_back(std::move(p.access));
+                return true;
+            };
+        const bool nested = nestsBraces(t, i + 1);
+        LeafReader reader(t, i + 1, variable);
         auto leaves = reader.list();
         if (!leaves) continue;
+        std::string type = aggregateType(syntax, t[nameAt - 1].text, !dims->empty(), nested || reader.sawVariable());
+        if (type.empty()) continue;
         if (!dims->empty() && (*dims)[0] == 0) {  // `float2 o[] = {...}`: fxc sizes it from the list
             size_t each = leafCount(syntax, type);
             for (size_t d = 1; d < dims->size(); ++d) each *= size_t((*dims)[d]);
