@@ -56,6 +56,20 @@ TEST_P(HlslAcceptedForms, BraceInitializersNamingVariables) {
     expectPixel("", "float s = A.y; int arr[3] = {2, 3, 4}; float4 f = {s, arr}; return f;", {-1.5f, 2, 3, 4}, {0, -1.5f, 0, 0});
 }
 
+// Component-wise casts and constructors (xlate/src/componentwise_casts.cpp): structs holding a
+// texture (the texture is one component, taken only by a texture), a float4x1 cast to a shorter
+// array, an array spelled out among a constructor's arguments, an int matrix made a vector.
+TEST_P(HlslAcceptedForms, ComponentwiseCastsAndConstructors) {
+    const std::string fruit = "Texture2D tex; struct apple { int2 aa; Texture2D bb; float cc; }; struct banana { float aa[2]; Texture2D bb; int cc; };";
+    expectPixel(fruit, "float v = A.x; struct apple a = {1, 2, tex, v}; struct banana b; b = (struct banana) a; return float4(b.aa[0], b.aa[1], b.cc, 0);",
+                {1, 2, 7, 0}, {7.25f, 0, 0, 0});
+    expectPixel("struct apple { int2 aa; Texture2D bb; float cc; }; struct pear { int aa[2]; Texture2D bb; float cc; }; Texture2D tex;",
+                "float v = A.y; struct apple a = {3, 4, tex, v}; struct pear p; p = a; return float4(p.aa[0], p.aa[1], p.cc, 1);", {3, 4, 0.5f, 1},
+                {0, 0.5f, 0, 0});
+    expectPixel("", "float4x1 mat = {91, 92, 93, 94}; int arr[3]; arr = (int[3]) mat; return float4(arr, A.x);", {91, 92, 93, 2}, {2, 0, 0, 0});
+    expectPixel("", "float arr[4] = {61, 62, 63, 64}; int2x2 mat; mat = (int2x2) arr; return float4(mat) + A;", {62, 63, 64, 65}, {1, 1, 1, 1});
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslAcceptedForms, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 

@@ -13,13 +13,18 @@ namespace fxport::xlate {
 
 struct AggregateComponent {
     std::string access;  // `f[2]`, `a.bb[1]`
-    std::string scalar;  // float, int ...
+    std::string scalar;  // float, int ... (an object's type with `withObjects`)
+    bool object = false;
 };
 
 // Appends the components of `access`, of type `type` with array sizes `dims`; false when one is not
-// numeric (an object in a struct) or there are more than 64. `inStruct`: `access` is a struct
-// member (a one-row or one-column matrix there is one glslang cannot build, so false too).
+// numeric (an object in a struct, unless `withObjects`: then the object is one component) or there
+// are more than 64. `inStruct`: `access` is a struct member (a one-row or one-column matrix there
+// is one glslang cannot build, so false too).
 bool aggregateComponents(const EffectSyntax& syntax, const std::string& type, const std::vector<int>& dims, const std::string& access,
-                         bool inStruct, std::vector<AggregateComponent>& out, int depth = 0);
+                         bool inStruct, std::vector<AggregateComponent>& out, bool withObjects = false);
+
+// Texture, sampler and buffer types (`Texture2D`, `sampler`, `RWStructuredBuffer<float>` ...).
+bool isResourceType(const std::string& type);
 
 }  // namespace fxport::xlate

@@ -126,6 +126,10 @@ public:
             return true;
         }
         BasicType basic = describeBasicType(type);
+        if (!basic.ok && isResourceType(type) && next_ < leaves_.size()) {  // a texture member: one item, as written
+            out += leaves_[next_++];
+            return true;
+        }
         if (!basic.ok || type.find('<') != std::string::npos) return false;
         size_t size = size_t(basic.rows * basic.columns);
         if (next_ + size > leaves_.size()) return false;
@@ -231,8 +235,12 @@ std::vector<TextEdit> regroupFlatInitializers(const EffectSyntax& syntax) {
         if (f)
             variable = [&syntax, f, i](const std::string& name, std::vector<std::string>& out) {
                 auto declared = declaredVariable(syntax, *f, name, i);
+                if (!declared && (syntax.findTexture(name) || syntax.findSampler(name))) {  // an object: itself
+                    out.push_back(name);
+                    return true;
+                }
                 std::vector<AggregateComponent> parts;
-                if (!declared || !aggregateComponents(syntax, declared->type, declared->dims, name, false, parts)) return false;
+                if (!declared || !aggregateComponents(syntax, declared->type, declared->dims, name, false, parts, true)) return false;
                 for (auto& p : parts) out.push_back(std::move(p.access));
                 return true;
             };
