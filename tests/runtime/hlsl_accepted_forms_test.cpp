@@ -70,6 +70,20 @@ TEST_P(HlslAcceptedForms, ComponentwiseCastsAndConstructors) {
     expectPixel("", "float arr[4] = {61, 62, 63, 64}; int2x2 mat; mat = (int2x2) arr; return float4(mat) + A;", {62, 63, 64, 65}, {1, 1, 1, 1});
 }
 
+// Casts on the left of '=' that keep part of the target (xlate/src/lvalue_casts.cpp): a matrix
+// cast keeps its rows and columns (the top left), an array cast the first components in order.
+TEST_P(HlslAcceptedForms, PartialAssignmentsThroughCasts) {
+    expectPixel("", "float3x4 a = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}; float4x4 g = 0; (float2x3) g = a; return float4(g[0].xyz, g[1].z) + g[1].w + g[2].x;",
+                {1, 2, 3, 7});
+    expectPixel("", "float4x4 g = 0; (float2x2)(float2x3) g = float4x4(1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16); return g._11_12_21_22 + g._13_23_31_44;",
+                {1, 2, 5, 6});
+    expectPixel("", "float p[5] = {-1, -2, -3, -4, -5}; float r[2] = {A.x, A.y}; (float[2]) p = r; return float4(p[0], p[1], p[2], p[4]);",
+                {0.5f, 0.25f, -3, -5}, {0.5f, 0.25f, 0, 0});
+    expectPixel("", "float p[4][3] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}; float r[2][2] = {10, 20, 30, 40}; (float[2][2]) p = r;"
+                " return float4(p[0][0], p[1][1], p[1][0], p[2][2]);",
+                {10, 5, 40, 9});
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslAcceptedForms, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 

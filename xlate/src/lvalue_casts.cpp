@@ -1,9 +1,11 @@
 // See lvalue_casts.h: `(T) target = value;` as fxc means it, and its SM4+ rule.
 #include "lvalue_casts.h"
 
+#include <cstdlib>
 #include <optional>
 #include <string>
 
+#include "aggregate_components.h"
 #include "fxc_checks.h"
 #include "variable_declarations.h"
 
@@ -86,6 +88,66 @@ std::optional<LvalueCast> lvalueCastAt(const EffectSyntax& syntax, const FxFunct
     return c;
 }
 
+// `(float2x3) g = v;` of a float4x4 g: the rows and columns the cast keeps (its top left) take v,
+// converted by the outermost cast: `{ float2x3 fxport_lhs = (float2x3)(v); g[0].xyz = fxport_lhs[0]; ... }`.
+// Every cast of the chain must fit in the one inside it. The text before the value and after it.
+std::optional<std::pair<std::string, std::string>> partialMatrixAssignment(const LvalueCast& c, const std::string& lhs) {
+    BasicType inside = c.targetType;
+    if (!inside.isMatrix) return std::nullopt;
+    for (auto k = c.casts.rbegin(); k != c.casts.rend(); ++k) {
+        if (!k->isMatrix || k->rows > inside.rows || k->columns > inside.columns) return std::nullopt;
+        inside = *k;
+    }
+    const BasicType& outer = c.casts.front();
+    std::string before = " { " + spell(outer) + " fxport_lhs = (" + spell(outer) + ")(";
+    std::string after = "); ";
+    for (int r = 0; r < outer.rows; ++r)
+        after += lhs + "[" + std::to_string(r) + "]." + std::string("xyzw").substr(0, size_t(outer.columns)) + " = fxport_lhs[" + std::to_string(r) + "]; ";
+    return std::make_pair(before, after + "}");
+}
+
+// `(float[2]) p = r;` at a statement's start, p a declared array with at least as many components:
+// p's first components take the value's, in fxc's order (array elements, then each one's
+// components): `{ float fxport_lhs[2] = r; p[0] = fxport_lhs[0]; p[1] = fxport_lhs[1]; }`.
+std::vector<TextEdit> arrayLvalueCasts(const EffectSyntax& syntax) {
+    const auto& t = syntax.tokens;
+    std::vector<TextEdit> edits;
+    for (const auto& f : syntax.functions) {
+        for (size_t i = f.body.begin + 1; i + 6 < f.body.end; ++i) {
+            if (!t[i].is("(") || !(t[i - 1].is(";") || t[i - 1].is("{") || t[i - 1].is("}")) || !t[i + 1].isIdent() || !t[i + 2].is("[")) continue;
+            const std::string& type = t[i + 1].text;
+            BasicType element = describeBasicType(syntax.resolveType(type));
+            if (!element.ok) continue;
+            std::vector<int> dims;
+            size_t j = i + 2;
+            for (; j + 2 < f.body.end && t[j].is("[") && t[j + 1].kind == Token::Kind::Number && t[j + 2].is("]"); j += 3)
+                dims.push_back(std::atoi(t[j + 1].text.c_str()));
+            if (!t[j].is(")") || !t[j + 1].isIdent() || !t[j + 2].is("=")) continue;
+            const size_t name = j + 1, equals = j + 2;
+            auto target = declaredVariable(syntax, f, t[name].text, name);
+            if (!target || target->dims.empty()) continue;
+            size_t semicolon = equals + 1;
+            for (int depth = 0; semicolon < f.body.end; ++semicolon) {
+                if (t[semicolon].is("(") || t[semicolon].is("[") || t[semicolon].is("{")) ++depth;
+                if (t[semicolon].is(")") || t[semicolon].is("]") || t[semicolon].is("}")) --depth;
+                if (depth == 0 && t[semicolon].is(";")) break;
+            }
+            std::vector<AggregateComponent> whole, part;
+            if (semicolon >= f.body.end || !aggregateComponents(syntax, target->type, target->dims, t[name].text, false, whole) ||
+                !aggregateComponents(syntax, type, dims, "fxport_lhs", false, part) || part.size() > whole.size())
+                continue;
+            std::string declared = " { " + type + " fxport_lhs";
+            for (int d : dims) declared += "[" + std::to_string(d) + "]";
+            std::string assignments = "; ";
+            for (size_t k = 0; k < part.size(); ++k) assignments += whole[k].access + " = " + part[k].access + "; ";
+            edits.push_back({t[i].offset, t[equals].end, declared + " ="});
+            edits.push_back({t[semicolon].offset, t[semicolon].end, assignments + "}"});
+            i = semicolon;
+        }
+    }
+    return edits;
+}
+
 }  // namespace
 
 std::vector<LvalueCast> findLvalueCasts(const EffectSyntax& syntax) {
@@ -114,12 +176,17 @@ std::vector<TextEdit> lvalueCastsAsAssignments(const EffectSyntax& syntax) {
             value = "(" + spell(outer) + ")(";
         } else if (componentCount(outer) == componentCount(target)) {
             value = "(" + spell(target) + ")(" + spell(outer) + ")(";
+        } else if (auto m = partialMatrixAssignment(c, lhs)) {
+            edits.push_back({t[c.first].offset, t[c.equals].end, m->first});
+            edits.push_back({t[c.semicolon].offset, t[c.semicolon].end, m->second});
+            continue;
         } else {
-            continue;  // a partial matrix assignment: left to glslang
+            continue;
         }
         edits.push_back({t[c.first].offset, t[c.equals].end, " " + lhs + " = " + value});
         edits.push_back({t[c.semicolon].offset, t[c.semicolon].offset, ")"});
     }
+    for (auto& e : arrayLvalueCasts(syntax)) edits.push_back(std::move(e));
     return edits;
 }
 
