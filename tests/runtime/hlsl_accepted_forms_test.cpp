@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "fxport/xlate/diagnostics.h"
 #include "one_pixel_effect.h"
 #include "runtime_test_support.h"
 
@@ -82,6 +83,24 @@ TEST_P(HlslAcceptedForms, PartialAssignmentsThroughCasts) {
     expectPixel("", "float p[4][3] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}; float r[2][2] = {10, 20, 30, 40}; (float[2][2]) p = r;"
                 " return float4(p[0][0], p[1][1], p[1][0], p[2][2]);",
                 {10, 5, 40, 9});
+}
+
+// `.Length` of a texture is its size as a uint vector (SM4 and later; xlate/src/length_property.cpp):
+// a 5x3 texture gives uint2(5, 3), and the result picks a uint2 overload. SM2 and 3 refuse it.
+TEST_P(HlslAcceptedForms, TextureLengthProperty) {
+    const std::string globals = "Texture2D t; float4 pick(float2 x) { return 1; } float4 pick(uint2 x) { return 2; }";
+    const std::string body = "return float4(t.Length, pick(t.Length).x, A.x);";
+    if (std::string(GetParam())[0] < '4') {
+        EXPECT_THROW(draw(*effect(globals, body)), xlate::CompileError);
+        return;
+    }
+    Texture2D tex(device, 5, 3, false, SurfaceFormat::Vector4);
+    auto e = effect("float4 A; " + globals, body);
+    e->Parameters["t"].SetValue(&tex);
+    e->Parameters["A"].SetValue(Vector4(0.5f, 0, 0, 0));
+    std::vector<float> px = draw(*e);
+    const float expected[4] = {5, 3, 2, 0.5f};
+    for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], expected[k]) << "channel " << k;
 }
 
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslAcceptedForms, ::testing::Values("2_0", "3_0", "4_0", "5_0"),

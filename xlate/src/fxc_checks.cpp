@@ -38,6 +38,7 @@ constexpr Family kFamilies[] = {
     findCbufferReservationErrors,
     findResourceArrayIndexingErrors,
     findIndexTypeErrors,
+    findLengthPropertyErrors,
 };
 
 bool isShaderState(const std::string& name) {
