@@ -103,6 +103,13 @@ TEST_P(HlslAcceptedForms, TextureLengthProperty) {
     for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], expected[k]) << "channel " << k;
 }
 
+// UAVs of matrix or small struct elements that no function uses compile (and are dropped, as fxc
+// drops them: xlate/src/unused_uavs.cpp); SM5 pixel shaders only.
+TEST_P(HlslAcceptedForms, UnusedUavsOfMatrixOrStructElements) {
+    if (std::string(GetParam()) != "5_0") GTEST_SKIP() << "UAVs in pixel shaders are SM5";
+    expectPixel("struct s { float3 a; }; RWTexture1D<float2x2> u2; RWTexture2D<struct s> u3;", "return A * 2;", {1, 2, 3, 4}, {0.5f, 1, 1.5f, 2});
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslAcceptedForms, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 
