@@ -110,6 +110,14 @@ TEST_P(HlslAcceptedForms, UnusedUavsOfMatrixOrStructElements) {
     expectPixel("struct s { float3 a; }; RWTexture1D<float2x2> u2; RWTexture2D<struct s> u3;", "return A * 2;", {1, 2, 3, 4}, {0.5f, 1, 1.5f, 2});
 }
 
+// A sampler array nothing uses, with one state block per element, compiles (dropped as fxc drops
+// it: xlate/src/unused_sampler_arrays.cpp); a list of the wrong length is still refused.
+TEST_P(HlslAcceptedForms, UnusedSamplerArraysWithStateBlocks) {
+    expectPixel("sampler sams[2][2] { { Filter = ANISOTROPIC; }, { }, { }, { Filter = ANISOTROPIC; } }; sampler one[1] { Filter = ANISOTROPIC; };",
+                "return A + 1;", {1.5f, 2, 3, 4}, {0.5f, 1, 2, 3});
+    EXPECT_THROW(draw(*effect("sampler sams[2] { { } };", "return 1;")), xlate::CompileError);
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslAcceptedForms, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 

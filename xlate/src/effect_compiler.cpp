@@ -37,6 +37,7 @@
 #include "loose_shaders.h"
 #include "preprocess.h"
 #include "struct_definitions.h"
+#include "unused_sampler_arrays.h"
 #include "render_states.h"
 #include "shader_profile.h"
 #include "spirv_sizes.h"
@@ -1087,6 +1088,7 @@ CompiledEffect compileUncached(const std::string& source, const std::string& dis
     PreprocessedEffect pre = preprocessEffect(source, displayPath, absolutePath, options);
     reportWorkerProgress("parse");
     pre.text = splitStructDefinitions(pre.text);  // `static struct { ... } x;` and definitions in definitions
+    pre.text = dropUnusedSamplerArrays(pre.text);
 
     EffectSyntax syntax = parseEffect(pre.text, pre.map, isLooseShaderCompile(options));
     CompiledEffect effect;
