@@ -3,6 +3,7 @@
 // out in C++ beside it), so a rewrite that compiles but computes something else fails too.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -116,6 +117,20 @@ TEST_P(HlslAcceptedForms, UnusedSamplerArraysWithStateBlocks) {
     expectPixel("sampler sams[2][2] { { Filter = ANISOTROPIC; }, { }, { }, { Filter = ANISOTROPIC; } }; sampler one[1] { Filter = ANISOTROPIC; };",
                 "return A + 1;", {1.5f, 2, 3, 4}, {0.5f, 1, 2, 3});
     EXPECT_THROW(draw(*effect("sampler sams[2] { { } };", "return 1;")), xlate::CompileError);
+}
+
+// refract with a vector eta takes its first component (xlate/src/refract_eta.cpp).
+TEST_P(HlslAcceptedForms, RefractWithAVectorEta) {
+    const float in[4] = {0.5f, -0.1f, 0.2f, 0.3f}, n[4] = {0.6f, 0.4f, -0.3f, 1.0f}, eta = 0.2f;
+    float d = 0;
+    for (int k = 0; k < 4; ++k) d += in[k] * n[k];
+    const float root = std::sqrt(1 - eta * eta * (1 - d * d));
+    auto e = effect("float4 I; float4 N; float4 E;", "return refract(I, N, E);");
+    e->Parameters["I"].SetValue(Vector4(in[0], in[1], in[2], in[3]));
+    e->Parameters["N"].SetValue(Vector4(n[0], n[1], n[2], n[3]));
+    e->Parameters["E"].SetValue(Vector4(eta, 0.3f, 0.4f, 0.5f));
+    std::vector<float> px = draw(*e);
+    for (int k = 0; k < 4; ++k) EXPECT_NEAR(px[size_t(k)], eta * in[k] - (eta * d + root) * n[k], 1e-5) << "channel " << k;
 }
 
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslAcceptedForms, ::testing::Values("2_0", "3_0", "4_0", "5_0"),

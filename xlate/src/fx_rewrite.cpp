@@ -7,6 +7,7 @@
 #include "out_argument_casts.h"
 #include "length_property.h"
 #include "unused_uavs.h"
+#include "refract_eta.h"
 #include "fxc_intrinsics.h"
 #include "matrix_majority.h"
 #include "matrix_swizzle.h"
@@ -400,6 +401,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : arraySizesAsLiterals(syntax)) edits.push_back(std::move(e));
     for (auto& e : lengthPropertiesAsCalls(syntax)) edits.push_back(std::move(e));
     for (auto& e : unusedUavsDropped(syntax)) edits.push_back(std::move(e));
+    for (auto& e : refractVectorEta(syntax)) edits.push_back(std::move(e));
     for (auto& e : respellOneComponentVectors(syntax)) edits.push_back(std::move(e));
     for (auto& e : degenerateMatricesAsVectors(syntax)) edits.push_back(std::move(e));
     for (auto& e : lvalueCastsAsAssignments(syntax)) edits.push_back(std::move(e));
