@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -131,6 +132,22 @@ TEST_P(HlslAcceptedForms, RefractWithAVectorEta) {
     e->Parameters["E"].SetValue(Vector4(eta, 0.3f, 0.4f, 0.5f));
     std::vector<float> px = draw(*e);
     for (int k = 0; k < 4; ++k) EXPECT_NEAR(px[size_t(k)], eta * in[k] - (eta * d + root) * n[k], 1e-5) << "channel " << k;
+}
+
+// all, any and asint of a matrix work on every component (xlate/src/matrix_rows_intrinsics.cpp);
+// asint exists from SM4.
+TEST_P(HlslAcceptedForms, MatrixAllAnyAsint) {
+    const bool sm4 = std::string(GetParam())[0] >= '4';
+    auto e = effect("float2x2 M; float2x2 Z;", std::string("return float4(all(M), any(Z), all(Z), ") +
+                                                   (sm4 ? "(float)asint(M)[1][0] / 1073741824.0);" : "0);"));
+    e->Parameters["M"].SetValue(std::vector<float>{1, 2, 3, 4});  // rows (1, 2) and (3, 4)
+    e->Parameters["Z"].SetValue(std::vector<float>{0, 0, 0, 5});
+    std::vector<float> px = draw(*e);
+    const float three = 3.0f;
+    int bits = 0;
+    std::memcpy(&bits, &three, sizeof bits);
+    const float expected[4] = {1, 1, 0, sm4 ? float(bits) / 1073741824.0f : 0};
+    for (int k = 0; k < 4; ++k) EXPECT_NEAR(px[size_t(k)], expected[k], 1e-6) << "channel " << k;
 }
 
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslAcceptedForms, ::testing::Values("2_0", "3_0", "4_0", "5_0"),

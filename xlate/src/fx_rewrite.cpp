@@ -8,6 +8,7 @@
 #include "length_property.h"
 #include "unused_uavs.h"
 #include "refract_eta.h"
+#include "matrix_rows_intrinsics.h"
 #include "fxc_intrinsics.h"
 #include "matrix_majority.h"
 #include "matrix_swizzle.h"
@@ -402,6 +403,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : lengthPropertiesAsCalls(syntax)) edits.push_back(std::move(e));
     for (auto& e : unusedUavsDropped(syntax)) edits.push_back(std::move(e));
     for (auto& e : refractVectorEta(syntax)) edits.push_back(std::move(e));
+    for (auto& e : matrixIntrinsicsByRow(syntax)) edits.push_back(std::move(e));
     for (auto& e : respellOneComponentVectors(syntax)) edits.push_back(std::move(e));
     for (auto& e : degenerateMatricesAsVectors(syntax)) edits.push_back(std::move(e));
     for (auto& e : lvalueCastsAsAssignments(syntax)) edits.push_back(std::move(e));
