@@ -49,6 +49,8 @@ TEST_P(HlslAcceptedForms, ArraySizesFromConstantExpressions) {
     expectPixel("", "const int dim = 4; float a[2 * 2] = {A.x, A.y, A.z, A.w}; float b[4.1] = a; float c[dim] = b; float d[true] = {c[3]};"
                 " return float4(d[0], c[0], b[1], a[2]);",
                 {4, 1, 2, 3}, {1, 2, 3, 4});
+    if (std::string(GetParam())[0] >= '4')  // a multisample texture's sample count, SM4 and later
+        expectPixel("static const int size = 2; Texture2DMS<float4, size - 1> t;", "return A;", {1, 2, 3, 4}, {1, 2, 3, 4});
 }
 
 // Brace initializers that name variables: each variable gives its components in fxc's order

@@ -78,6 +78,14 @@ std::vector<TextEdit> arraySizesAsLiterals(const EffectSyntax& syntax) {
         if (auto n = sizes.size(i, close)) edits.push_back({t[i + 1].offset, t[close - 1].end, std::to_string(*n)});
         i = close;
     }
+    // `Texture2DMS<float4, size - 1>`: the sample count is such a constant too.
+    for (size_t i = 0; i + 4 < t.size(); ++i) {
+        if (!(t[i].is("Texture2DMS") || t[i].is("Texture2DMSArray")) || !t[i + 1].is("<") || !t[i + 2].isIdent() || !t[i + 3].is(",")) continue;
+        size_t close = i + 4;
+        while (close < t.size() && !t[close].is(">") && !t[close].is(";") && t[close].kind != Token::Kind::End) ++close;
+        if (!t[close].is(">") || close == i + 4 || (close == i + 5 && isIntegerLiteral(t[i + 4]))) continue;
+        if (auto n = sizes.size(i + 3, close)) edits.push_back({t[i + 4].offset, t[close - 1].end, std::to_string(*n)});
+    }
     return edits;
 }
 

@@ -3,7 +3,8 @@
 // (fxc truncates: 4). glslang wants a constant integer expression and refuses a float, a bool or a
 // local constant there ("array size must be a constant integer expression"); vkd3d's
 // array-size-expr and array-dimension pin these. In every declaration such a size becomes the
-// integer literal fxc computes; a size constant_eval cannot evaluate is left to glslang.
+// integer literal fxc computes, and so does the sample count of `Texture2DMS<float4, size - 1>`;
+// a size constant_eval cannot evaluate is left to glslang.
 #pragma once
 
 #include <map>
