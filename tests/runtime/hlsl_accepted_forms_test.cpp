@@ -152,6 +152,23 @@ TEST_P(HlslAcceptedForms, MatrixAllAnyAsint) {
     for (int k = 0; k < 4; ++k) EXPECT_NEAR(px[size_t(k)], expected[k], 1e-6) << "channel " << k;
 }
 
+// A static texture variable that only ever holds one global texture is that texture, assigned in
+// its initializer or in the function (xlate/src/static_object_aliases.cpp); SM4 and later.
+TEST_P(HlslAcceptedForms, StaticTextureVariablesAliasAGlobalTexture) {
+    if (std::string(GetParam())[0] < '4') GTEST_SKIP() << "Texture2D.Sample is SM4";
+    Texture2D tex(device, 1, 1, false, SurfaceFormat::Vector4);
+    const float texel[4] = {0.25f, 0.5f, 2, 4};
+    tex.SetData(texel, 4);
+    for (const char* form : {"static Texture2D tex = real_tex;|", "static Texture2D tex;|tex = real_tex;"}) {
+        const std::string f = form;
+        const size_t bar = f.find('|');
+        auto e = effect("Texture2D real_tex; SamplerState sam; " + f.substr(0, bar), f.substr(bar + 1) + " return tex.Sample(sam, float2(0.5, 0.5));");
+        e->Parameters["real_tex"].SetValue(tex);
+        std::vector<float> px = draw(*e);
+        for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], texel[k]) << form << " channel " << k;
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslAcceptedForms, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 
