@@ -169,6 +169,14 @@ TEST_P(HlslAcceptedForms, StaticTextureVariablesAliasAGlobalTexture) {
     }
 }
 
+// Integer literals with the `l` suffix are ints (uints with `u`): they pick the int or uint
+// overload and keep their value (xlate/src/literal_suffixes.cpp).
+TEST_P(HlslAcceptedForms, LongLiteralSuffixes) {
+    if (std::string(GetParam())[0] < '4') GTEST_SKIP() << "int and uint overloads differ from SM4";
+    expectPixel("float pick(int x) { return 1; } float pick(uint x) { return 2; }", "return float4(pick(3lu), pick(3l), 0x10L + 1l, A.x);", {2, 1, 17, 0.5f},
+                {0.5f, 0, 0, 0});
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslAcceptedForms, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 

@@ -38,6 +38,7 @@
 #include "preprocess.h"
 #include "struct_definitions.h"
 #include "unused_sampler_arrays.h"
+#include "literal_suffixes.h"
 #include "render_states.h"
 #include "shader_profile.h"
 #include "spirv_sizes.h"
@@ -1089,6 +1090,7 @@ CompiledEffect compileUncached(const std::string& source, const std::string& dis
     reportWorkerProgress("parse");
     pre.text = splitStructDefinitions(pre.text);  // `static struct { ... } x;` and definitions in definitions
     pre.text = dropUnusedSamplerArrays(pre.text);
+    pre.text = longLiteralSuffixesDropped(pre.text);  // 3lu -> 3u
 
     EffectSyntax syntax = parseEffect(pre.text, pre.map, isLooseShaderCompile(options));
     CompiledEffect effect;

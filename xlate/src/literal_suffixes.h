@@ -1,0 +1,14 @@
+// Integer literals with fxc's `l` suffix (`3l`, `3lu`, `0x10L`): a 32-bit int (or uint with `u`)
+// to fxc; glslang's HLSL scanner stops at the `l` ("')' : Expected"; vkd3d's function-overload
+// pins `func(3lu)`; glslang's preprocessor even hands `3lu` on as `3 u`). The `l` is dropped on
+// the preprocessed text (`3 u` joined again), before the parser, so every
+// later rewrite sees `3`, `3u`, `0x10` (the line stays: only characters of the literal go).
+#pragma once
+
+#include <string>
+
+namespace fxport::xlate {
+
+std::string longLiteralSuffixesDropped(const std::string& preprocessed);
+
+}  // namespace fxport::xlate
