@@ -177,6 +177,15 @@ TEST_P(HlslAcceptedForms, LongLiteralSuffixes) {
                 {0.5f, 0, 0, 0});
 }
 
+// A typedef named like a DX9 texture type in another case (`texturE`) is the typedef's type.
+TEST_P(HlslAcceptedForms, TypedefNamedLikeATextureType) {
+    auto e = effect("typedef float4 texturE; texturE var;", "return var * 2;");
+    e->Parameters["var"].SetValue(Vector4(0.5f, 1, 1.5f, 2));
+    std::vector<float> px = draw(*e);
+    const float expected[4] = {1, 2, 3, 4};
+    for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], expected[k]) << "channel " << k;
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslAcceptedForms, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 

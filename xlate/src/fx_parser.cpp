@@ -792,7 +792,9 @@ private:
 
         if (cur().is("(")) return parseFunction(type, name, nameToken, start);
 
-        if (isDx9TextureType(type) || (isDx10TextureType(type) && cbuffer.empty())) {
+        // A typedef of that name (`typedef float4 texturE;`) is no texture: fxc takes the typedef.
+        const bool typedefName = syntax_.typedefs.count(type) > 0;
+        if (!typedefName && (isDx9TextureType(type) || (isDx10TextureType(type) && cbuffer.empty()))) {
             return parseTexture(type, name, nameToken, start, isDx9TextureType(type));
         }
         if (isDx9SamplerType(type) || isDx10SamplerType(type)) return parseSampler(type, name, nameToken, start);
