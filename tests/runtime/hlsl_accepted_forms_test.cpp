@@ -186,6 +186,13 @@ TEST_P(HlslAcceptedForms, TypedefNamedLikeATextureType) {
     for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], expected[k]) << "channel " << k;
 }
 
+// A uniform whose default value holds a shader compiles without a default, as with fxc
+// (xlate/src/shader_valued_defaults.cpp): it reads 0 until set.
+TEST_P(HlslAcceptedForms, ShaderValuedDefaultsAreNotWritten) {
+    const std::string globals = "float4 fun() : COLOR { return 0; } float4 f = {1, 2, compile ps_2_0 fun(), 4}; float g = {CompileShader(ps_2_0, fun())};";
+    expectPixel(globals, "return f + g + A;", {0.5f, 1, 1.5f, 2}, {0.5f, 1, 1.5f, 2});
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslAcceptedForms, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 

@@ -10,6 +10,7 @@
 #include "refract_eta.h"
 #include "matrix_rows_intrinsics.h"
 #include "static_object_aliases.h"
+#include "shader_valued_defaults.h"
 #include "fxc_intrinsics.h"
 #include "matrix_majority.h"
 #include "matrix_swizzle.h"
@@ -406,6 +407,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : refractVectorEta(syntax)) edits.push_back(std::move(e));
     for (auto& e : matrixIntrinsicsByRow(syntax)) edits.push_back(std::move(e));
     for (auto& e : staticObjectAliases(syntax)) edits.push_back(std::move(e));
+    for (auto& e : shaderValuedDefaultsDropped(syntax)) edits.push_back(std::move(e));
     for (auto& e : respellOneComponentVectors(syntax)) edits.push_back(std::move(e));
     for (auto& e : degenerateMatricesAsVectors(syntax)) edits.push_back(std::move(e));
     for (auto& e : lvalueCastsAsAssignments(syntax)) edits.push_back(std::move(e));
