@@ -121,7 +121,11 @@ void D3d11Session::makeTexture(const ResourceDesc& r) {
         ComPtr<ID3D11Texture2D> texture;
         const std::string what = "texture [srv " + std::to_string(r.slot) + "] " + r.format.name;
         check(device_->CreateTexture2D(&d, data.data(), texture.GetAddressOf()), what);
-        check(device_->CreateShaderResourceView(texture.Get(), nullptr, srvs_[r.slot].GetAddressOf()), what);
+        D3D11_SHADER_RESOURCE_VIEW_DESC view;
+        view.Format = r.format.shadow ? DXGI_FORMAT_R32_FLOAT : d.Format;
+        view.ViewDimension = D3D11_SRV_DIMENSION_TEXTURE2D;
+        view.Texture2D.MipLevels = UINT(-1);
+        check(device_->CreateShaderResourceView(texture.Get(), &view, srvs_[r.slot].GetAddressOf()), what);
     } catch (const Unsupported& e) {
         srvs_.erase(r.slot);
         unmadeSrvs_[r.slot] = e.what();

@@ -73,7 +73,7 @@ public:
     D3D11_TEXTURE2D_DESC desc;
     SurfaceFormat format = SurfaceFormat::Color;
     std::unique_ptr<fxport::Texture2D> colour;      // a RenderTarget2D when BIND_RENDER_TARGET
-    std::unique_ptr<core::DepthBuffer> depth;       // BIND_DEPTH_STENCIL
+    std::unique_ptr<core::DepthBuffer> depth;       // BIND_DEPTH_STENCIL (over `colour` for a typeless depth texture: declared after it, released first)
     std::vector<std::vector<std::uint8_t>> staging;  // USAGE_STAGING: each level's texels, tightly packed
     int levels = 1;
     int mappedLevel = -1;
@@ -220,6 +220,18 @@ bool textureFormat(DXGI_FORMAT format, SurfaceFormat& out);
 bool depthFormat(DXGI_FORMAT format, DepthFormat& out);
 // --- vertex formats (vertex_formats.cpp)
 bool vertexFormat(DXGI_FORMAT format, VertexFormat& out);
+
+// --- typeless depth textures (typeless_formats.cpp): R32/R24G8/R16_TYPELESS, with their depth and
+// shader-resource view formats and what the device core makes of them.
+struct DepthFamily {
+    DXGI_FORMAT typeless, depthView, sampledView;
+    DepthFormat depth;      // a depth buffer's format (DSV only)
+    SurfaceFormat sampled;  // the depth texture's (SRV, or SRV and DSV)
+};
+const DepthFamily* depthFamilyOf(DXGI_FORMAT textureFormat);  // null: not one of them
+// A view's Format for texture `t`: its own (or UNKNOWN), or the typeless depth family's view of
+// that kind; E_NOTIMPL/E_INVALIDARG naming `desc`.Format otherwise.
+HRESULT checkViewFormat(const char* call, const char* desc, DXGI_FORMAT viewFormat, const Texture& t, bool depthView);
 
 // --- a compiled-shader blob's content (compile.cpp)
 std::string narrowPath(const wchar_t* path);  // UTF-8

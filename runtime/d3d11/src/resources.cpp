@@ -149,18 +149,32 @@ HRESULT Device::CreateTexture2D(const D3D11_TEXTURE2D_DESC* pDesc, const D3D11_S
     if ((d.BindFlags & D3D11_BIND_UNORDERED_ACCESS) && d.Usage != D3D11_USAGE_DEFAULT)
         return fail(E_INVALIDARG, at + "Usage = " + std::to_string(d.Usage) + " with BIND_UNORDERED_ACCESS (must be USAGE_DEFAULT)");
     const bool depthTarget = (d.BindFlags & D3D11_BIND_DEPTH_STENCIL) != 0;
-    if (depthTarget && (d.BindFlags & (D3D11_BIND_RENDER_TARGET | D3D11_BIND_SHADER_RESOURCE)))
-        return fail(E_NOTIMPL, at + "BindFlags = " + std::to_string(d.BindFlags) +
-                                   ": a depth-stencil texture cannot also be sampled or rendered to in fxport yet");
+    const DepthFamily* family = depthFamilyOf(d.Format);
+    if (depthTarget && (d.BindFlags & D3D11_BIND_RENDER_TARGET))
+        return fail(E_INVALIDARG, at + "BindFlags = " + std::to_string(d.BindFlags) + ": a texture is a depth-stencil or a render target, not both");
+    if (depthTarget && (d.BindFlags & D3D11_BIND_SHADER_RESOURCE) && !family)
+        return fail(E_INVALIDARG, at + "BindFlags = " + std::to_string(d.BindFlags) + " with Format = " + formatName(d.Format) +
+                                      ": a depth texture a shader samples is made typeless (R32_TYPELESS, R24G8_TYPELESS, R16_TYPELESS)");
+    if (family && (d.BindFlags & (D3D11_BIND_RENDER_TARGET | D3D11_BIND_UNORDERED_ACCESS)))
+        return fail(E_NOTIMPL, at + "BindFlags = " + std::to_string(d.BindFlags) + " with Format = " + formatName(d.Format) +
+                                   ": fxport keeps a typeless texture as a depth texture (DEPTH_STENCIL and SHADER_RESOURCE only)");
+    const bool sampledDepth = family && (d.BindFlags & D3D11_BIND_SHADER_RESOURCE);
+    if (sampledDepth && depthTarget && d.MipLevels != 1)
+        return fail(E_NOTIMPL, at + "MipLevels = " + std::to_string(d.MipLevels) + " for a depth texture: fxport makes 1 level");
+    if (family && family->typeless == DXGI_FORMAT_R24G8_TYPELESS && pInitialData)
+        return fail(E_NOTIMPL, at + "Format = DXGI_FORMAT_R24G8_TYPELESS with pInitialData: fxport does not upload packed depth-stencil texels");
     if (HRESULT hr = checkUsage(call, "D3D11_TEXTURE2D_DESC", d.Usage, d.BindFlags, d.CPUAccessFlags, pInitialData && pInitialData->pSysMem); FAILED(hr))
         return hr;
-    SurfaceFormat surface = SurfaceFormat::Color;
-    DepthFormat depth = DepthFormat::None;
-    if (depthTarget ? !depthFormat(d.Format, depth) : !textureFormat(d.Format, surface))
+    SurfaceFormat surface = family ? family->sampled : SurfaceFormat::Color;
+    DepthFormat depth = family ? family->depth : DepthFormat::None;
+    if (!family && (depthTarget ? !depthFormat(d.Format, depth) : !textureFormat(d.Format, surface)))
         return fail(d.Format == DXGI_FORMAT_UNKNOWN ? E_INVALIDARG : E_NOTIMPL, at + "Format = " + formatName(d.Format) + " (" + std::to_string(d.Format) +
                                                              "): not a " + (depthTarget ? "depth" : "texture") +
                                                              " format fxport supports (docs/API.md lists them)");
     if (depthTarget && pInitialData) return fail(E_INVALIDARG, at + "BindFlags has DEPTH_STENCIL and pInitialData is given");
+    if ((d.MiscFlags & D3D11_RESOURCE_MISC_GENERATE_MIPS) && !depthTarget && isIntegerFormat(surface))
+        return fail(E_INVALIDARG, at + "MiscFlags = " + std::to_string(d.MiscFlags) + " (D3D11_RESOURCE_MISC_GENERATE_MIPS) with Format = " +
+                                      formatName(d.Format) + ": integer texels cannot be filtered into smaller levels");
     if (!ppTexture2D) return succeed();
     return guarded(call, [&] {
         auto texture = std::unique_ptr<Texture, void (*)(Texture*)>(new Texture(this, d), [](Texture* t) { t->Release(); });
@@ -169,7 +183,10 @@ HRESULT Device::CreateTexture2D(const D3D11_TEXTURE2D_DESC* pDesc, const D3D11_S
         t.levels = d.MipLevels == 1 ? 1 : full;
         t.desc.MipLevels = UINT(t.levels);
         const bool mips = t.levels > 1;
-        if (depthTarget) {
+        if (depthTarget && sampledDepth) {  // a shadow map: one depth texture under its DSV and SRV
+            t.colour = std::make_unique<fxport::Texture2D>(core(), int(d.Width), int(d.Height), false, surface);
+            t.depth = std::make_unique<core::DepthBuffer>(core(), *t.colour);
+        } else if (depthTarget) {
             t.depth = std::make_unique<core::DepthBuffer>(core(), int(d.Width), int(d.Height), depth);
         } else if (d.Usage == D3D11_USAGE_STAGING) {
             for (int level = 0; level < t.levels; ++level) t.staging.emplace_back(t.levelBytes(level), 0);

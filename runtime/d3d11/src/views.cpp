@@ -28,10 +28,10 @@ Texture* textureOf(Device* device, ID3D11Resource* resource, const char* call, H
     return t;
 }
 
-HRESULT checkFormat(const char* call, const char* desc, DXGI_FORMAT viewFormat, const Texture& t) {
-    if (viewFormat == DXGI_FORMAT_UNKNOWN || viewFormat == t.desc.Format) return S_OK;
-    return fail(E_NOTIMPL, std::string(call) + ": " + desc + ".Format = " + formatName(viewFormat) + " differs from the texture's " +
-                               formatName(t.desc.Format) + ": fxport views a texture in its own format");
+// A typeless (depth) texture is viewed only through a description naming the view's format.
+HRESULT needsDescription(const char* call, const Texture& t, bool given) {
+    if (given || !depthFamilyOf(t.desc.Format)) return S_OK;
+    return fail(E_INVALIDARG, std::string(call) + ": pDesc is null for a " + formatName(t.desc.Format) + " texture (a typeless texture's view names its Format)");
 }
 
 // The buffer view's elements: the whole of a structured buffer (FirstElement 0, NumElements its
@@ -101,6 +101,7 @@ HRESULT Device::CreateShaderResourceView(ID3D11Resource* pResource, const D3D11_
     if (!(t->desc.BindFlags & D3D11_BIND_SHADER_RESOURCE))
         return fail(E_INVALIDARG, std::string(call) + ": the texture's BindFlags = " + std::to_string(t->desc.BindFlags) +
                                       " lack D3D11_BIND_SHADER_RESOURCE");
+    if (HRESULT f = needsDescription(call, *t, pDesc != nullptr); FAILED(f)) return f;
     D3D11_SHADER_RESOURCE_VIEW_DESC d;
     d.Format = t->desc.Format;
     d.ViewDimension = D3D11_SRV_DIMENSION_TEXTURE2D;
@@ -110,13 +111,14 @@ HRESULT Device::CreateShaderResourceView(ID3D11Resource* pResource, const D3D11_
             return fail(pDesc->ViewDimension == D3D11_SRV_DIMENSION_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
                         std::string(call) + ": D3D11_SHADER_RESOURCE_VIEW_DESC.ViewDimension = " + std::to_string(pDesc->ViewDimension) +
                             " (fxport views 2D textures as D3D11_SRV_DIMENSION_TEXTURE2D)");
-        if (HRESULT f = checkFormat(call, "D3D11_SHADER_RESOURCE_VIEW_DESC", pDesc->Format, *t); FAILED(f)) return f;
+        if (HRESULT f = checkViewFormat(call, "D3D11_SHADER_RESOURCE_VIEW_DESC", pDesc->Format, *t, false); FAILED(f)) return f;
         const UINT levels = pDesc->Texture2D.MipLevels;
         if (pDesc->Texture2D.MostDetailedMip != 0 || (levels != UINT(-1) && levels != t->desc.MipLevels))
             return fail(E_NOTIMPL, std::string(call) + ": D3D11_SHADER_RESOURCE_VIEW_DESC.Texture2D = {MostDetailedMip " +
                                        std::to_string(pDesc->Texture2D.MostDetailedMip) + ", MipLevels " + std::to_string(levels) +
                                        "}: fxport views every level (0, -1)");
     }
+    if (pDesc && pDesc->Format != DXGI_FORMAT_UNKNOWN) d.Format = pDesc->Format;
     if (!ppSRView) return succeed();
     *ppSRView = new ShaderResourceView(this, t, d);
     return succeed();
@@ -138,7 +140,7 @@ HRESULT Device::CreateRenderTargetView(ID3D11Resource* pResource, const D3D11_RE
         if (pDesc->ViewDimension != D3D11_RTV_DIMENSION_TEXTURE2D)
             return fail(pDesc->ViewDimension == D3D11_RTV_DIMENSION_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
                         std::string(call) + ": D3D11_RENDER_TARGET_VIEW_DESC.ViewDimension = " + std::to_string(pDesc->ViewDimension));
-        if (HRESULT f = checkFormat(call, "D3D11_RENDER_TARGET_VIEW_DESC", pDesc->Format, *t); FAILED(f)) return f;
+        if (HRESULT f = checkViewFormat(call, "D3D11_RENDER_TARGET_VIEW_DESC", pDesc->Format, *t, false); FAILED(f)) return f;
         if (pDesc->Texture2D.MipSlice != 0)
             return fail(E_NOTIMPL, std::string(call) + ": D3D11_RENDER_TARGET_VIEW_DESC.Texture2D.MipSlice = " +
                                        std::to_string(pDesc->Texture2D.MipSlice) + ": fxport renders into level 0");
@@ -157,6 +159,7 @@ HRESULT Device::CreateDepthStencilView(ID3D11Resource* pResource, const D3D11_DE
     if (!t->depth)
         return fail(E_INVALIDARG, std::string(call) + ": the texture's BindFlags = " + std::to_string(t->desc.BindFlags) +
                                       " lack D3D11_BIND_DEPTH_STENCIL");
+    if (HRESULT f = needsDescription(call, *t, pDesc != nullptr); FAILED(f)) return f;
     D3D11_DEPTH_STENCIL_VIEW_DESC d;
     d.Format = t->desc.Format;
     d.ViewDimension = D3D11_DSV_DIMENSION_TEXTURE2D;
@@ -164,7 +167,7 @@ HRESULT Device::CreateDepthStencilView(ID3D11Resource* pResource, const D3D11_DE
         if (pDesc->ViewDimension != D3D11_DSV_DIMENSION_TEXTURE2D)
             return fail(pDesc->ViewDimension == D3D11_DSV_DIMENSION_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
                         std::string(call) + ": D3D11_DEPTH_STENCIL_VIEW_DESC.ViewDimension = " + std::to_string(pDesc->ViewDimension));
-        if (HRESULT f = checkFormat(call, "D3D11_DEPTH_STENCIL_VIEW_DESC", pDesc->Format, *t); FAILED(f)) return f;
+        if (HRESULT f = checkViewFormat(call, "D3D11_DEPTH_STENCIL_VIEW_DESC", pDesc->Format, *t, true); FAILED(f)) return f;
         if (pDesc->Flags != 0)
             return fail(E_NOTIMPL, std::string(call) + ": D3D11_DEPTH_STENCIL_VIEW_DESC.Flags = " + std::to_string(pDesc->Flags) +
                                        ": read-only depth views are not supported yet");
@@ -172,6 +175,7 @@ HRESULT Device::CreateDepthStencilView(ID3D11Resource* pResource, const D3D11_DE
             return fail(E_INVALIDARG, std::string(call) + ": D3D11_DEPTH_STENCIL_VIEW_DESC.Texture2D.MipSlice = " +
                                           std::to_string(pDesc->Texture2D.MipSlice) + " (the texture has 1 level)");
     }
+    if (pDesc && pDesc->Format != DXGI_FORMAT_UNKNOWN) d.Format = pDesc->Format;
     if (!ppDepthStencilView) return succeed();
     *ppDepthStencilView = new DepthStencilView(this, t, d);
     return succeed();
@@ -216,7 +220,7 @@ HRESULT Device::CreateUnorderedAccessView(ID3D11Resource* pResource, const D3D11
                 return fail(pDesc->ViewDimension == D3D11_UAV_DIMENSION_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
                             std::string(call) + ": D3D11_UNORDERED_ACCESS_VIEW_DESC.ViewDimension = " + std::to_string(pDesc->ViewDimension) +
                                 " for a 2D texture (D3D11_UAV_DIMENSION_TEXTURE2D)");
-            if (HRESULT f = checkFormat(call, "D3D11_UNORDERED_ACCESS_VIEW_DESC", pDesc->Format, *t); FAILED(f)) return f;
+            if (HRESULT f = checkViewFormat(call, "D3D11_UNORDERED_ACCESS_VIEW_DESC", pDesc->Format, *t, false); FAILED(f)) return f;
             if (pDesc->Texture2D.MipSlice != 0)
                 return fail(E_NOTIMPL, std::string(call) + ": D3D11_UNORDERED_ACCESS_VIEW_DESC.Texture2D.MipSlice = " +
                                            std::to_string(pDesc->Texture2D.MipSlice) + ": fxport writes level 0");

@@ -113,6 +113,21 @@ DepthBuffer::DepthBuffer(GraphicsDevice& device, int width, int height, DepthFor
     deviceImpl(device).adoptDepthStorage(storage_);
 }
 
+DepthBuffer::DepthBuffer(GraphicsDevice& device, Texture2D& texture) : GraphicsResource(device, "DepthBuffer") {
+    switch (texture.Format()) {
+    case SurfaceFormat::Depth32: storage_.format = DepthFormat::Depth32F; break;
+    case SurfaceFormat::Depth24Stencil8: storage_.format = DepthFormat::Depth24Stencil8; break;
+    case SurfaceFormat::Depth16: storage_.format = DepthFormat::Depth16; break;
+    default:
+        throw ArgumentError(describe() + ": a texture of format " + surfaceFormatName(texture.Format()) +
+                            " is not a depth texture (Depth32, Depth24Stencil8 or Depth16)");
+    }
+    storage_.width = texture.Width();
+    storage_.height = texture.Height();
+    storage_.renderbuffer = texture.backendObject();
+    storage_.isTexture = true;
+}
+
 DepthBuffer::~DepthBuffer() { disposeFromDestructor(); }
 
 void DepthBuffer::releaseGpuObjects() {
@@ -347,7 +362,7 @@ void clearDepthBuffer(GraphicsDevice& device, DepthBuffer& buffer, bool depth, b
         return;
     }
     GraphicsDevice::Impl& d = deviceImpl(device);
-    d.backend->clearDepthStencil(s.renderbuffer, hasStencil, depth, stencil, depthValue, stencilValue);
+    d.backend->clearDepthStencil(s.renderbuffer, hasStencil, s.isTexture, depth, stencil, depthValue, stencilValue);
     d.shadow.invalidate();  // the next draw sets every state again (masks, scissor)
 }
 

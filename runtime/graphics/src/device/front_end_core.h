@@ -57,6 +57,10 @@ private:
 class DepthBuffer : public GraphicsResource {
 public:
     DepthBuffer(GraphicsDevice& device, int width, int height, DepthFormat format);
+    // The depth buffer that is level 0 of `texture` (SurfaceFormat Depth32, Depth24Stencil8 or
+    // Depth16): what draws write through it, shaders sample from the texture (a D3D11 shadow map's
+    // DSV and SRV). Made at once; `texture` must outlive it.
+    DepthBuffer(GraphicsDevice& device, Texture2D& texture);
     ~DepthBuffer() override;
     DepthStorage& storage() { return storage_; }
     int width() const { return storage_.width; }
