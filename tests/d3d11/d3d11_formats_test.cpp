@@ -4,7 +4,8 @@
 // float path would round); ClearRenderTargetView on SINT and UINT targets (D3D truncates the floats
 // toward zero and clamps them to the channel); InterlockedAdd on an R32_SINT RWTexture2D from many
 // threads; 8- and 16-bit integer textures; B8G8R8A8_UNORM read as (r, g, b, a); and descriptions
-// fxport refuses, answered with the field and value.
+// fxport refuses, answered with the field and value; a cube texture's six faces sampled by
+// direction.
 #include <climits>
 #include <cmath>
 #include <cstring>
@@ -220,6 +221,56 @@ float4 ps(float4 pos : SV_Position) : SV_Target {
         const int want[4] = {255 - in[0], int(std::lround(in[1] * 0.5)), in[2], in[3]};
         for (int c = 0; c < 4; ++c) EXPECT_NEAR(got[px * 4 + std::size_t(c)], want[c], 1) << "pixel " << px << " byte " << c;
     }
+}
+
+TEST(D3D11Formats, CubeFacesAreSampledByDirection) {
+    Device d;
+    // Six 1x1 faces in D3D's order (+X, -X, +Y, -Y, +Z, -Z), each its own colour.
+    const std::uint32_t faces[6] = {0xff0000ffu, 0xff00ff00u, 0xffff0000u, 0xff00ffffu, 0xffff00ffu, 0xffffff00u};
+    D3D11_TEXTURE2D_DESC desc;
+    desc.Width = desc.Height = 1;
+    desc.MipLevels = 1;
+    desc.ArraySize = 6;
+    desc.Format = DXGI_FORMAT_R8G8B8A8_UNORM;
+    desc.BindFlags = D3D11_BIND_SHADER_RESOURCE;
+    desc.MiscFlags = D3D11_RESOURCE_MISC_TEXTURECUBE;
+    D3D11_SUBRESOURCE_DATA data[6];
+    for (int f = 0; f < 6; ++f) {
+        data[f].pSysMem = &faces[f];
+        data[f].SysMemPitch = 4;
+    }
+    ComPtr<ID3D11Texture2D> cube;
+    ASSERT_EQ(d.device->CreateTexture2D(&desc, data, cube.GetAddressOf()), S_OK) << lastError();
+    ComPtr<ID3D11ShaderResourceView> view = viewOf(d, cube.Get());
+    D3D11_SHADER_RESOURCE_VIEW_DESC viewDesc;
+    view->GetDesc(&viewDesc);
+    EXPECT_EQ(viewDesc.ViewDimension, D3D11_SRV_DIMENSION_TEXTURECUBE);
+    ComPtr<ID3D11Texture2D> target = texture(d, 6, 1, DXGI_FORMAT_R8G8B8A8_UNORM, D3D11_BIND_RENDER_TARGET);
+    // Point sampling: a linear filter blends across the edges of 1x1 faces (D3D10+ filters cubes seamlessly).
+    D3D11_SAMPLER_DESC pointDesc;
+    pointDesc.Filter = D3D11_FILTER_MIN_MAG_MIP_POINT;
+    ComPtr<ID3D11SamplerState> point;
+    ASSERT_EQ(d.device->CreateSamplerState(&pointDesc, point.GetAddressOf()), S_OK) << lastError();
+    d.context->PSSetSamplers(0, 1, point.GetAddressOfConst());
+    drawInto(d, R"(
+TextureCube Sky : register(t0);
+SamplerState Point : register(s0);
+float4 ps(float4 pos : SV_Position) : SV_Target {
+    static const float3 directions[6] = {float3(1, 0.1, 0.2), float3(-1, 0.2, 0.1), float3(0.1, 1, 0.2),
+                                         float3(0.2, -1, 0.1), float3(0.1, 0.2, 1), float3(0.2, 0.1, -1)};
+    return Sky.Sample(Point, directions[uint(pos.x)]);
+})",
+             target.Get(), 6, 1, view.Get());
+    std::vector<std::uint32_t> got = readAs<std::uint32_t>(d, target.Get(), 4);
+    for (int f = 0; f < 6; ++f) EXPECT_EQ(got[std::size_t(f)], faces[f]) << "face " << f;
+    // A cube is six square faces, sampled only.
+    desc.Width = 2;
+    EXPECT_EQ(d.device->CreateTexture2D(&desc, nullptr, cube.GetAddressOf()), E_INVALIDARG);
+    EXPECT_NE(lastError().find("ArraySize = 6, Width x Height = 2 x 1 with D3D11_RESOURCE_MISC_TEXTURECUBE"), std::string::npos) << lastError();
+    desc.Width = 1;
+    desc.BindFlags = D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_RENDER_TARGET;
+    EXPECT_EQ(d.device->CreateTexture2D(&desc, nullptr, cube.GetAddressOf()), E_NOTIMPL);
+    EXPECT_NE(lastError().find("BindFlags = 40, Usage = 0 for a cube texture"), std::string::npos) << lastError();
 }
 
 TEST(D3D11Formats, RefusedDescriptionsNameTheField) {

@@ -133,6 +133,9 @@ public:
     const char* imageFormatName(SurfaceFormat format) override {
         return format == SurfaceFormat::Color ? "rgba8" : format == SurfaceFormat::Single ? "r32f" : "";
     }
+    BackendObject createBufferTexture(BackendObject buffer, SurfaceFormat, std::size_t bytes) override {
+        return make("createBufferTexture " + std::to_string(buffer) + " " + std::to_string(bytes));
+    }
     BackendObject createTexture(bool cube, SurfaceFormat, int levels, int width, int height) override {
         const BackendObject t = make(std::string("createTexture ") + (cube ? "cube " : "2d ") + std::to_string(width) + "x" +
                                      std::to_string(height) + " levels " + std::to_string(levels));

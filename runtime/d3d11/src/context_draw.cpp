@@ -51,7 +51,7 @@ void Context::bindStage(int stage, const ShaderBindings& bindings, const Stage& 
             u.textureSlot >= 0 && std::size_t(u.textureSlot) < s.views.size() ? s.views[std::size_t(u.textureSlot)].Get() : nullptr;
         if (v && !v->texture)
             throw InvalidOperation("t" + std::to_string(u.textureSlot) + " holds a view of a buffer where the shader samples a texture");
-        core.Textures[u.glUnit] = v ? v->texture->colour.get() : nullptr;
+        core.Textures[u.glUnit] = v ? v->texture->sampled() : nullptr;
         const SamplerState* st =
             u.samplerSlot >= 0 && std::size_t(u.samplerSlot) < s.samplers.size() ? s.samplers[std::size_t(u.samplerSlot)].Get() : nullptr;
         core.SamplerStates[u.glUnit] = st ? st->state : defaultSampler_;
@@ -79,10 +79,16 @@ void Context::bindStorage(const char* call, const core::ShaderCode& code, const 
         const std::string reg = std::string(1, b.registerClass) + std::to_string(b.slot);
         const std::string use = std::string(call) + ": " + code.shader().entryPoint + " uses '" + b.name + "' (" + reg + ")";
         const bool image = b.kind == xlate::StorageKind::Image;
+        const bool typed = b.kind == xlate::StorageKind::TexelBuffer || b.kind == xlate::StorageKind::ImageBuffer;  // Buffer<T>, RWBuffer<T>
         if (b.registerClass == 't') {
             const ShaderResourceView* v = b.slot >= 0 && std::size_t(b.slot) < s.views.size() ? s.views[std::size_t(b.slot)].Get() : nullptr;
-            if (!v || !v->buffer)
-                throw InvalidOperation(use + ", but no shader-resource view of a structured or raw buffer is set there");
+            if (!v || !v->buffer || typed != (v->typed != nullptr))
+                throw InvalidOperation(use + ", but no shader-resource view of a " + (typed ? "buffer with a Format (a typed view)" : "structured or raw buffer") +
+                                       " is set there");
+            if (typed) {
+                core::setTexelBuffer(core, false, b.slot, v->typed.get());
+                continue;
+            }
             checkStride(use, b, *v->buffer);
             core::setStorageBuffer(core, false, b.slot, v->buffer->gpu.get());
             continue;
@@ -94,7 +100,11 @@ void Context::bindStorage(const char* call, const core::ShaderCode& code, const 
                                         : std::string(" (fxport binds UAVs for pixel and compute shaders only)")));
         if (image != (v->texture != nullptr))
             throw InvalidOperation(use + ", a " + (image ? "texture" : "buffer") + ", but the view there is of a " + (v->texture ? "texture" : "buffer"));
-        if (image) {
+        if (typed != (v->typed != nullptr))
+            throw InvalidOperation(use + (typed ? ", a typed buffer (RWBuffer<T>), but the view there has no Format" : ", but the view there is a typed one (RWBuffer<T>)"));
+        if (typed) {
+            core::setTexelBuffer(core, true, b.slot, v->typed.get());
+        } else if (image) {
             core.SetUnorderedAccess(b.slot, v->texture->colour.get());
         } else {
             checkStride(use, b, *v->buffer);

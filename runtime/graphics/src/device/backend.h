@@ -170,6 +170,8 @@ public:
     // The image-unit format qualifier a shader declares for `format` ("rgba8"), "" when images cannot hold it.
     virtual const char* imageFormatName(SurfaceFormat format) = 0;
     virtual BackendObject createTexture(bool cube, SurfaceFormat format, int levels, int width, int height) = 0;
+    // A buffer texture over the first `bytes` of `buffer`, texels of `format` (deleted with deleteTexture).
+    virtual BackendObject createBufferTexture(BackendObject buffer, SurfaceFormat format, std::size_t bytes) = 0;
     virtual void deleteTexture(BackendObject texture) = 0;
     virtual void writeTexture(BackendObject texture, SurfaceFormat format, int face, int level, const Rectangle& area,
                               const void* data) = 0;

@@ -68,6 +68,7 @@ public:
     bool isColorRenderable(SurfaceFormat format) override;
     const char* imageFormatName(SurfaceFormat format) override;
     BackendObject createTexture(bool cube, SurfaceFormat format, int levels, int width, int height) override;
+    BackendObject createBufferTexture(BackendObject buffer, SurfaceFormat format, std::size_t bytes) override;
     void deleteTexture(BackendObject texture) override { glDeleteTextures(1, &texture); }
     void writeTexture(BackendObject texture, SurfaceFormat format, int face, int level, const Rectangle& area,
                       const void* data) override;

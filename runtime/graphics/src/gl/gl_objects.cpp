@@ -111,6 +111,13 @@ BackendObject GlBackend::createTexture(bool cube, SurfaceFormat format, int leve
     return name;
 }
 
+BackendObject GlBackend::createBufferTexture(BackendObject buffer, SurfaceFormat format, std::size_t bytes) {
+    GLuint name = 0;
+    glCreateTextures(GL_TEXTURE_BUFFER, 1, &name);
+    glTextureBufferRange(name, detail::glFormat(format).internalFormat, buffer, 0, GLsizeiptr(bytes));
+    return name;
+}
+
 BackendObject GlBackend::createRenderbuffer() {
     GLuint name = 0;
     glCreateRenderbuffers(1, &name);

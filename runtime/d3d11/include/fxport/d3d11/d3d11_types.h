@@ -179,6 +179,7 @@ struct D3D11_TEX2D_UAV { UINT MipSlice = 0; };
 enum D3D11_RTV_DIMENSION : UINT { D3D11_RTV_DIMENSION_UNKNOWN = 0, D3D11_RTV_DIMENSION_TEXTURE2D = 4 };
 enum D3D11_DSV_DIMENSION : UINT { D3D11_DSV_DIMENSION_UNKNOWN = 0, D3D11_DSV_DIMENSION_TEXTURE2D = 3 };
 struct D3D11_TEX2D_SRV { UINT MostDetailedMip = 0; UINT MipLevels = 0; };
+struct D3D11_TEXCUBE_SRV { UINT MostDetailedMip = 0; UINT MipLevels = 0; };
 struct D3D11_TEX2D_RTV { UINT MipSlice = 0; };
 struct D3D11_TEX2D_DSV { UINT MipSlice = 0; };
 // D3D's view descriptions hold one member per dimension in a union; here they are separate
@@ -187,6 +188,7 @@ struct D3D11_SHADER_RESOURCE_VIEW_DESC {
     DXGI_FORMAT Format = DXGI_FORMAT_UNKNOWN;
     D3D11_SRV_DIMENSION ViewDimension = D3D11_SRV_DIMENSION_UNKNOWN;
     D3D11_TEX2D_SRV Texture2D;
+    D3D11_TEXCUBE_SRV TextureCube;
     D3D11_BUFFER_SRV Buffer;
     D3D11_BUFFEREX_SRV BufferEx;
 };
