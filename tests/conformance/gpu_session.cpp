@@ -172,6 +172,7 @@ void GpuSession::makeTexture(const ResourceDesc& r) {
     textures_.erase(r.slot);
     unsupportedTextures_.erase(r.slot);
     try {
+        if (r.dimension == "cube") return makeCube(r);
         if (r.dimension != "2d") throw Unsupported("texture dimension " + r.dimension + " from [srv N]");
         SurfaceFormat format = floatSurfaceFormat(r.format, "texture");
         auto texture = std::make_unique<fxport::Texture2D>(device(), r.width, r.height, r.levels > 1, format);
@@ -186,6 +187,20 @@ void GpuSession::makeTexture(const ResourceDesc& r) {
     } catch (const Unsupported& e) {
         unsupportedTextures_[r.slot] = e.what();
     }
+}
+
+// A cube of one level: its faces' texels in D3D's face order (XNA's CubeMapFace order).
+void GpuSession::makeCube(const ResourceDesc& r) {
+    if (r.levels != 1) throw Unsupported("a cube texture of " + std::to_string(r.levels) + " levels");
+    SurfaceFormat format = floatSurfaceFormat(r.format, "texture");
+    auto cube = std::make_unique<fxport::TextureCube>(device(), r.width, false, format);
+    const std::size_t faceWords = std::size_t(r.width) * std::size_t(r.width) * std::size_t(r.format.components);
+    for (int face = 0; face < 6; ++face) {
+        std::vector<std::uint32_t> words(faceWords, 0);
+        for (std::size_t k = 0; k < faceWords && face * faceWords + k < r.data.size(); ++k) words[k] = r.data[face * faceWords + k];
+        cube->SetData(fxport::CubeMapFace(face), reinterpret_cast<const float*>(words.data()), words.size());
+    }
+    textures_[r.slot] = std::move(cube);
 }
 
 namespace {

@@ -2,7 +2,8 @@
 // BIND_DEPTH_STENCIL | BIND_SHADER_RESOURCE, written through its depth-stencil view (D32_FLOAT,
 // D16_UNORM) by a draw whose depth runs across the target, then read through its shader-resource
 // view (R32_FLOAT, R16_UNORM) by Load and by SampleCmpLevelZero with a comparison sampler; both
-// compared per pixel with the CPU's plane depth. D32_FLOAT depth buffers; the descriptions D3D
+// compared per pixel with the CPU's plane depth; the same through a depth-only pass (no render
+// target, no pixel shader). D32_FLOAT depth buffers; the descriptions D3D
 // refuses (a D24_UNORM_S8_UINT texture with SHADER_RESOURCE, a typeless texture's view without a
 // format, a view of the wrong format) answered with the field and value.
 #include <cmath>
@@ -68,7 +69,8 @@ ComPtr<ID3D11Texture2D> makeTarget(Device& d, DXGI_FORMAT format, UINT bind) {
 
 // Renders the plane into a `typeless` shadow map through a `depthView` DSV, reads it back through
 // an `sampledView` SRV: (depth read, comparison result) per pixel of the top row.
-std::vector<std::array<float, 2>> shadowRoundTrip(DXGI_FORMAT typeless, DXGI_FORMAT depthView, DXGI_FORMAT sampledView) {
+// `depthOnly`: the depth pass binds no render target and no pixel shader, as shadow-map passes do.
+std::vector<std::array<float, 2>> shadowRoundTrip(DXGI_FORMAT typeless, DXGI_FORMAT depthView, DXGI_FORMAT sampledView, bool depthOnly = false) {
     Device d;
     std::vector<std::array<float, 2>> out;
     ComPtr<ID3D11Texture2D> shadow = makeTarget(d, typeless, D3D11_BIND_DEPTH_STENCIL | D3D11_BIND_SHADER_RESOURCE);
@@ -102,8 +104,9 @@ std::vector<std::array<float, 2>> shadowRoundTrip(DXGI_FORMAT typeless, DXGI_FOR
     d.context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
     Shaders depthPass(d, kDepthPass), readPass(d, kReadPass);
     d.context->ClearDepthStencilView(dsv.Get(), D3D11_CLEAR_DEPTH, 1.0f, 0);
-    d.context->OMSetRenderTargets(1, colourView.GetAddressOfConst(), dsv.Get());
+    d.context->OMSetRenderTargets(depthOnly ? 0 : 1, depthOnly ? nullptr : colourView.GetAddressOfConst(), dsv.Get());
     depthPass.set(d);
+    if (depthOnly) d.context->PSSetShader(nullptr, nullptr, 0);
     d.context->Draw(3, 0);
     EXPECT_EQ(lastError(), "");
     d.context->OMSetRenderTargets(1, resultView.GetAddressOfConst(), nullptr);  // the shadow map is read now
@@ -145,6 +148,10 @@ void expectPlane(const std::vector<std::array<float, 2>>& got, float tolerance) 
 
 TEST(D3D11DepthTexture, R32TypelessShadowMapIsWrittenAndSampled) {
     expectPlane(shadowRoundTrip(DXGI_FORMAT_R32_TYPELESS, DXGI_FORMAT_D32_FLOAT, DXGI_FORMAT_R32_FLOAT), 1e-6f);
+}
+
+TEST(D3D11DepthTexture, DepthOnlyPassWithoutTargetOrPixelShader) {
+    expectPlane(shadowRoundTrip(DXGI_FORMAT_R32_TYPELESS, DXGI_FORMAT_D32_FLOAT, DXGI_FORMAT_R32_FLOAT, true), 1e-6f);
 }
 
 TEST(D3D11DepthTexture, R16TypelessShadowMapIsWrittenAndSampled) {

@@ -115,8 +115,8 @@ void Context::bindStorage(const char* call, const core::ShaderCode& code, const 
 
 bool Context::prepare(const char* call) {
     const std::string at = std::string(call) + ": ";
-    if (!effectPass_ && (!vertexShader_ || !pixelShader_)) {
-        note(at + "no " + std::string(!vertexShader_ ? "vertex" : "pixel") + " shader set; nothing drawn (fxport needs both)");
+    if (!effectPass_ && !vertexShader_) {
+        note(at + "no vertex shader set; nothing drawn");
         return false;
     }
     static const std::vector<xlate::VertexInput> none;
@@ -129,12 +129,14 @@ bool Context::prepare(const char* call) {
     std::vector<RenderTargetBinding> colour;
     for (const auto& t : targets_)
         if (t) colour.emplace_back(&t->target());
-    if (colour.empty()) {
-        note(at + "no render target view bound; nothing drawn (fxport draws into at least one)");
-        return false;
-    }
     GraphicsDevice& core = device_->core();
     core::DepthBuffer* depth = depthView_ ? depthView_->texture->depth.get() : nullptr;
+    const bool depthOnly = colour.empty();  // a shadow-map pass: depth-stencil view, no render target
+    if (depthOnly && !depth) {
+        note(at + "no render target or depth-stencil view bound; nothing drawn");
+        return false;
+    }
+    if (depthOnly) colour.emplace_back(&scratchTarget(depth->width(), depth->height()));
     const RenderTarget2D& first = *static_cast<RenderTarget2D*>(colour[0].RenderTarget);
     if (depth && (depth->width() != first.Width() || depth->height() != first.Height())) {
         note(at + "the depth-stencil view is " + std::to_string(depth->width()) + "x" + std::to_string(depth->height()) +
@@ -146,6 +148,10 @@ bool Context::prepare(const char* call) {
     core.BlendState = blend_ ? blend_->state : defaultBlend_;
     core.BlendState.BlendFactor = colorOf(blendFactor_);
     core.BlendState.MultiSampleMask = int(sampleMask_);
+    if (depthOnly || (!effectPass_ && !pixelShader_)) {  // no colour is written (D3D: no target, or no pixel shader)
+        core.BlendState.ColorWriteChannels = core.BlendState.ColorWriteChannels1 = ColorWriteChannels::None;
+        core.BlendState.ColorWriteChannels2 = core.BlendState.ColorWriteChannels3 = ColorWriteChannels::None;
+    }
     core.DepthStencilState = depthStencil_ ? depthStencil_->state : defaultDepthStencil_;
     core.DepthStencilState.ReferenceStencil = int(stencilRef_);
     core.RasterizerState = rasterizer_ ? rasterizer_->state : defaultRasterizer_;
@@ -164,10 +170,11 @@ bool Context::prepare(const char* call) {
         effectPass_->Apply();
     } else {
         auto codeOf = [](const auto& shader) { return shader ? shader->code.get() : nullptr; };
-        const core::ShaderCode* stages[5] = {vertexShader_->code.get(), pixelShader_->code.get(), codeOf(geometryShader_),
+        const PixelShader& pixel = pixelShader_ ? *pixelShader_.Get() : emptyPixelShader();  // D3D draws depth without one
+        const core::ShaderCode* stages[5] = {vertexShader_->code.get(), pixel.code.get(), codeOf(geometryShader_),
                                              codeOf(hullShader_), codeOf(domainShader_)};
         core::setShaderStages(core, stages);
-        const ShaderBindings* bindings[5] = {&vertexShader_->bindings, &pixelShader_->bindings,
+        const ShaderBindings* bindings[5] = {&vertexShader_->bindings, &pixel.bindings,
                                              geometryShader_ ? &geometryShader_->bindings : nullptr,
                                              hullShader_ ? &hullShader_->bindings : nullptr, domainShader_ ? &domainShader_->bindings : nullptr};
         const Stage* slots[5] = {&vs_, &ps_, &gs_, &hs_, &ds_};
