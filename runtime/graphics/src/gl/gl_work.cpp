@@ -147,7 +147,23 @@ void GlBackend::clearFramebuffer(BackendObject framebuffer, const Rectangle& are
         const float c[4] = {color.X, color.Y, color.Z, color.W};
         for (int i = 0; i < colourTargets; ++i) {
             glColorMaski(GLuint(i), GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-            glClearNamedFramebufferfv(framebuffer, GL_COLOR, GLint(i), c);
+            // An integer target (SurfaceFormat R32UInt ...) takes integers: a float clear of it is undefined in GL.
+            GLint type = GL_FLOAT, bits = 32;
+            if (framebuffer != 0) {
+                glGetNamedFramebufferAttachmentParameteriv(framebuffer, GLenum(GL_COLOR_ATTACHMENT0 + i), GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &type);
+                glGetNamedFramebufferAttachmentParameteriv(framebuffer, GLenum(GL_COLOR_ATTACHMENT0 + i), GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE, &bits);
+            }
+            if (type == GL_UNSIGNED_INT) {
+                GLuint u[4];
+                for (int k = 0; k < 4; ++k) u[k] = clearValueOf<GLuint>(c[k], bits, false);
+                glClearNamedFramebufferuiv(framebuffer, GL_COLOR, GLint(i), u);
+            } else if (type == GL_INT) {
+                GLint n[4];
+                for (int k = 0; k < 4; ++k) n[k] = clearValueOf<GLint>(c[k], bits, true);
+                glClearNamedFramebufferiv(framebuffer, GL_COLOR, GLint(i), n);
+            } else {
+                glClearNamedFramebufferfv(framebuffer, GL_COLOR, GLint(i), c);
+            }
         }
     }
     if (depth) glDepthMask(GL_TRUE);
