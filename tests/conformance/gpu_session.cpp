@@ -212,7 +212,7 @@ std::unique_ptr<fxport::StructuredBuffer> makeStorageBuffer(fxport::GraphicsDevi
     int stride = r.dimension == "raw_buffer" ? 4 : r.stride;
     if (stride <= 0)
         throw Unsupported(std::string("typed buffer ") + what + " (format " + r.format.name +
-                          "; RWBuffer<T>/Buffer<T> have no fxport counterpart, StructuredBuffer is structured or raw)");
+                          "; RWBuffer<T>/Buffer<T> are D3D11 typed views: the XNA API's StructuredBuffer is structured or raw)");
     if (r.width <= 0) throw Unsupported(std::string(what) + " of no elements");
     auto buffer = std::make_unique<fxport::StructuredBuffer>(device, stride, r.width);
     std::vector<std::uint32_t> words(buffer->SizeInBytes() / 4, 0);
