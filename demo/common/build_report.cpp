@@ -15,6 +15,7 @@ int depthBytes(DepthFormat depth) {
     case DepthFormat::Depth16: return 2;
     case DepthFormat::Depth24: return 4;
     case DepthFormat::Depth24Stencil8: return 4;
+    case DepthFormat::Depth32F: return 4;
     }
     return 0;
 }

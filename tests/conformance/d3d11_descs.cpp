@@ -6,12 +6,15 @@ namespace conformance {
 using namespace fxport::d3d11;
 
 DXGI_FORMAT dxgiFormat(const Format& f) {
-    if (f.shadow) throw Unsupported("format " + f.name + " (a depth texture sampled with comparison: fxport's D3D11 textures have no R32 depth SRV)");
+    // A depth texture sampled with comparison is made as D3D programs make shadow maps: R32_TYPELESS,
+    // read through an R32_FLOAT view (d3d11_session_resources.cpp).
+    if (f.shadow) return DXGI_FORMAT_R32_TYPELESS;
     struct Known { const char* name; DXGI_FORMAT format; };
     static const Known kKnown[] = {
         {"r32g32b32a32-float", DXGI_FORMAT_R32G32B32A32_FLOAT}, {"r32g32b32a32-uint", DXGI_FORMAT_R32G32B32A32_UINT},
         {"r32g32-float", DXGI_FORMAT_R32G32_FLOAT}, {"r32-float", DXGI_FORMAT_R32_FLOAT}, {"r32-uint", DXGI_FORMAT_R32_UINT},
-        {"r32-typeless", DXGI_FORMAT_R32_TYPELESS},
+        {"r32-typeless", DXGI_FORMAT_R32_TYPELESS}, {"r32g32b32a32-sint", DXGI_FORMAT_R32G32B32A32_SINT},
+        {"r32g32-uint", DXGI_FORMAT_R32G32_UINT}, {"r32g32-sint", DXGI_FORMAT_R32G32_SINT}, {"r32-sint", DXGI_FORMAT_R32_SINT},
     };
     for (const Known& k : kKnown)
         if (f.name == k.name) return k.format;

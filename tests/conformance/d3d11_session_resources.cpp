@@ -101,27 +101,35 @@ void D3d11Session::makeTexture(const ResourceDesc& r) {
     srvs_.erase(r.slot);
     unmadeSrvs_.erase(r.slot);
     try {
-        if (r.dimension != "2d") throw Unsupported("texture dimension " + r.dimension + " from [srv N]");
+        const bool cube = r.dimension == "cube";
+        if (r.dimension != "2d" && !cube) throw Unsupported("texture dimension " + r.dimension + " from [srv N]");
         D3D11_TEXTURE2D_DESC d;
         d.Width = UINT(r.width);
         d.Height = UINT(r.height);
         d.MipLevels = UINT(r.levels);
-        d.ArraySize = 1;
+        d.ArraySize = cube ? 6 : 1;
         d.Format = dxgiFormat(r.format);
         d.BindFlags = D3D11_BIND_SHADER_RESOURCE;
-        std::vector<std::vector<std::uint32_t>> levels(std::size_t(r.levels));
+        if (cube) d.MiscFlags = D3D11_RESOURCE_MISC_TEXTURECUBE;
+        // Subresources face by face (D3D's order, as vkd3d lists the data), each face's levels in turn.
+        std::vector<std::vector<std::uint32_t>> levels(std::size_t(r.levels) * d.ArraySize);
         std::vector<D3D11_SUBRESOURCE_DATA> data;
         std::size_t at = 0;
-        for (int level = 0; level < r.levels; ++level) {
+        for (std::size_t sub = 0; sub < levels.size(); ++sub) {
+            const int level = int(sub % std::size_t(r.levels));
             const int w = std::max(1, r.width >> level), h = std::max(1, r.height >> level);
-            levels[std::size_t(level)] = wordsOf(r, at, std::size_t(w * h * r.format.components));
-            at += levels[std::size_t(level)].size();
-            data.push_back({levels[std::size_t(level)].data(), UINT(w * texelBytes(r.format)), 0});
+            levels[sub] = wordsOf(r, at, std::size_t(w * h * r.format.components));
+            at += levels[sub].size();
+            data.push_back({levels[sub].data(), UINT(w * texelBytes(r.format)), 0});
         }
         ComPtr<ID3D11Texture2D> texture;
         const std::string what = "texture [srv " + std::to_string(r.slot) + "] " + r.format.name;
         check(device_->CreateTexture2D(&d, data.data(), texture.GetAddressOf()), what);
-        check(device_->CreateShaderResourceView(texture.Get(), nullptr, srvs_[r.slot].GetAddressOf()), what);
+        D3D11_SHADER_RESOURCE_VIEW_DESC view;
+        view.Format = r.format.shadow ? DXGI_FORMAT_R32_FLOAT : d.Format;
+        view.ViewDimension = cube ? D3D11_SRV_DIMENSION_TEXTURECUBE : D3D11_SRV_DIMENSION_TEXTURE2D;
+        view.Texture2D.MipLevels = view.TextureCube.MipLevels = UINT(-1);
+        check(device_->CreateShaderResourceView(texture.Get(), &view, srvs_[r.slot].GetAddressOf()), what);
     } catch (const Unsupported& e) {
         srvs_.erase(r.slot);
         unmadeSrvs_[r.slot] = e.what();

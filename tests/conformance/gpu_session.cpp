@@ -172,6 +172,7 @@ void GpuSession::makeTexture(const ResourceDesc& r) {
     textures_.erase(r.slot);
     unsupportedTextures_.erase(r.slot);
     try {
+        if (r.dimension == "cube") return makeCube(r);
         if (r.dimension != "2d") throw Unsupported("texture dimension " + r.dimension + " from [srv N]");
         SurfaceFormat format = floatSurfaceFormat(r.format, "texture");
         auto texture = std::make_unique<fxport::Texture2D>(device(), r.width, r.height, r.levels > 1, format);
@@ -188,6 +189,20 @@ void GpuSession::makeTexture(const ResourceDesc& r) {
     }
 }
 
+// A cube of one level: its faces' texels in D3D's face order (XNA's CubeMapFace order).
+void GpuSession::makeCube(const ResourceDesc& r) {
+    if (r.levels != 1) throw Unsupported("a cube texture of " + std::to_string(r.levels) + " levels");
+    SurfaceFormat format = floatSurfaceFormat(r.format, "texture");
+    auto cube = std::make_unique<fxport::TextureCube>(device(), r.width, false, format);
+    const std::size_t faceWords = std::size_t(r.width) * std::size_t(r.width) * std::size_t(r.format.components);
+    for (int face = 0; face < 6; ++face) {
+        std::vector<std::uint32_t> words(faceWords, 0);
+        for (std::size_t k = 0; k < faceWords && face * faceWords + k < r.data.size(); ++k) words[k] = r.data[face * faceWords + k];
+        cube->SetData(fxport::CubeMapFace(face), reinterpret_cast<const float*>(words.data()), words.size());
+    }
+    textures_[r.slot] = std::move(cube);
+}
+
 namespace {
 
 // A structured ("stride N") or raw ("raw_buffer", 32-bit words) buffer from its description, its
@@ -197,7 +212,7 @@ std::unique_ptr<fxport::StructuredBuffer> makeStorageBuffer(fxport::GraphicsDevi
     int stride = r.dimension == "raw_buffer" ? 4 : r.stride;
     if (stride <= 0)
         throw Unsupported(std::string("typed buffer ") + what + " (format " + r.format.name +
-                          "; RWBuffer<T>/Buffer<T> have no fxport counterpart, StructuredBuffer is structured or raw)");
+                          "; RWBuffer<T>/Buffer<T> are D3D11 typed views: the XNA API's StructuredBuffer is structured or raw)");
     if (r.width <= 0) throw Unsupported(std::string(what) + " of no elements");
     auto buffer = std::make_unique<fxport::StructuredBuffer>(device, stride, r.width);
     std::vector<std::uint32_t> words(buffer->SizeInBytes() / 4, 0);

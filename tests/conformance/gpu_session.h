@@ -22,6 +22,7 @@ class Effect;
 class GraphicsDevice;
 class RenderTarget2D;
 class StructuredBuffer;
+class Texture;
 class Texture2D;
 }
 
@@ -54,6 +55,7 @@ private:
     void ensureDefaultTarget();
     void makeTarget(const ResourceDesc& r);
     void makeTexture(const ResourceDesc& r);
+    void makeCube(const ResourceDesc& r);
     void bindTargets();
     void bindTextures(fxport::Effect& effect, const std::string& source, int model);
     void drawVertices(const DrawCall& call);
@@ -63,7 +65,7 @@ private:
 
     std::unique_ptr<fxport::GraphicsDevice> device_;
     std::map<int, std::unique_ptr<fxport::RenderTarget2D>> targets_;
-    std::map<int, std::unique_ptr<fxport::Texture2D>> textures_;
+    std::map<int, std::unique_ptr<fxport::Texture>> textures_;  // 2D and cube
     std::map<int, std::string> unsupportedTextures_;  // slot -> why it could not be made
     std::map<int, std::string> unsupportedTargets_;
     std::map<int, SamplerDesc> samplers_;

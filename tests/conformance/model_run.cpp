@@ -29,12 +29,15 @@ bool stageRunsAt(Stage stage, int model) {
 
 // Capabilities of [require] this runner can honour; the rest skip the tests after them.
 bool capabilityHonoured(const std::string& capability) {
-    // Float formats only (XNA's SurfaceFormat has no integer ones); their typed UAV loads
-    // ("uav-load") are core GL image loads (r32f, rg32f, rgba32f).
+    // Float and integer formats: their typed UAV loads ("uav-load") are core GL image loads
+    // (r32f ... rgba32f, r32ui ... rgba32i). The XNA session has no integer SurfaceFormat: it
+    // skips such resources itself (Unsupported), the D3D11 session makes them.
     if (capability == "tessellation-shader") return true;  // hull and domain shaders: DrawPatches
     if (capability == "geometry-shader") return true;      // the effect's pass takes the geometry shader
     if (!startsWith(capability, "format ")) return false;
-    return capability.find("-float") != std::string::npos;
+    for (const char* type : {"-float", "-uint", "-sint"})
+        if (capability.find(type) != std::string::npos) return true;
+    return false;
 }
 
 std::string firstWords(const std::string& s, int words) {

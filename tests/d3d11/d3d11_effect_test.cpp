@@ -140,7 +140,7 @@ TEST(D3D11Effect, VariablesAndPassApplyDrawWhatTheCpuComputes) {
         }
     EXPECT_EQ(inside, 64);
 
-    // A shader set afterwards replaces the pass; with no pixel shader the draw is refused.
+    // A shader set afterwards replaces the pass; with no vertex shader the draw is refused.
     d.context->VSSetShader(nullptr, nullptr, 0);
     d.context->Draw(4, 0);
     EXPECT_NE(lastError().find("no vertex shader"), std::string::npos) << lastError();

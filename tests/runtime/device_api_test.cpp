@@ -102,6 +102,20 @@ TEST(SurfaceFormats, SetDataGetDataRoundTripAndRenderPrecision) {
 }
 
 // D3D9 reads missing channels of one/two-channel formats as 1 (R32F samples as (r,1,1,1)).
+// An integer target cleared through Clear holds integers (D3D's rule: truncated toward zero,
+// clamped to the channel), not what GL makes of a float clear of an integer buffer (undefined).
+TEST(SurfaceFormats, IntegerTargetsClearWithIntegers) {
+    GraphicsDevice& device = testDevice();
+    RenderTarget2D target(device, 2, 2, false, SurfaceFormat::Rgba32SInt);
+    device.SetRenderTarget(&target);
+    device.Clear(ClearOptions::Target, Vector4(-3.75f, 7.9f, 1e10f, 0.0f), 1.0f, 0);
+    device.SetRenderTarget(nullptr);
+    std::vector<std::int32_t> got(16, 12345);
+    target.GetData(got.data(), got.size());
+    const std::int32_t want[4] = {-3, 7, 2147483647, 0};
+    for (std::size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i], want[i % 4]) << "word " << i;
+}
+
 TEST(SurfaceFormats, MissingChannelsSampleAsOneLikeD3D9) {
     GraphicsDevice& device = testDevice();
     Effect effect(device, runtimeFixture("Conventions.fx"));

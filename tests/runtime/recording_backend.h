@@ -133,6 +133,9 @@ public:
     const char* imageFormatName(SurfaceFormat format) override {
         return format == SurfaceFormat::Color ? "rgba8" : format == SurfaceFormat::Single ? "r32f" : "";
     }
+    BackendObject createBufferTexture(BackendObject buffer, SurfaceFormat, std::size_t bytes) override {
+        return make("createBufferTexture " + std::to_string(buffer) + " " + std::to_string(bytes));
+    }
     BackendObject createTexture(bool cube, SurfaceFormat, int levels, int width, int height) override {
         const BackendObject t = make(std::string("createTexture ") + (cube ? "cube " : "2d ") + std::to_string(width) + "x" +
                                      std::to_string(height) + " levels " + std::to_string(levels));
@@ -173,7 +176,7 @@ public:
     void allocateRenderbuffer(BackendObject renderbuffer, DepthFormat, int width, int height) override {
         calls.push_back("allocateRenderbuffer " + std::to_string(renderbuffer) + " " + std::to_string(width) + "x" + std::to_string(height));
     }
-    BackendObject createFramebuffer(const std::vector<ColorAttachment>& colour, BackendObject depth, bool,
+    BackendObject createFramebuffer(const std::vector<ColorAttachment>& colour, BackendObject depth, bool, bool,
                                     std::string& problem) override {
         std::string line = "createFramebuffer";
         for (const ColorAttachment& a : colour)
@@ -189,7 +192,7 @@ public:
     void deleteFramebuffer(BackendObject framebuffer) override { release("deleteFramebuffer", framebuffer); }
     void bindFramebuffer(BackendObject framebuffer) override { calls.push_back("bindFramebuffer " + std::to_string(framebuffer)); }
     void presentFlipped(BackendObject framebuffer, int, int) override { calls.push_back("presentFlipped " + std::to_string(framebuffer)); }
-    void clearDepthStencil(BackendObject renderbuffer, bool, bool depth, bool stencil, float depthValue, int stencilValue) override {
+    void clearDepthStencil(BackendObject renderbuffer, bool, bool, bool depth, bool stencil, float depthValue, int stencilValue) override {
         calls.push_back("clearDepthStencil " + std::to_string(renderbuffer) + (depth ? " depth " + std::to_string(depthValue) : "") +
                         (stencil ? " stencil " + std::to_string(stencilValue) : ""));
     }

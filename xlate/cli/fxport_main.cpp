@@ -358,9 +358,11 @@ void dump(const CompiledEffect& e, std::ostream& out) {
                 << (s.tessellation.outputTopology.empty() ? "" : ", topology " + s.tessellation.outputTopology)
                 << (s.tessellation.patchConstantFunction.empty() ? "" : ", patch constants " + s.tessellation.patchConstantFunction)
                 << ", control points " << s.tessellation.inputControlPoints << " -> " << s.tessellation.outputControlPoints << "\n";
+        static const char* const kKinds[] = {"buffer ", "image ", "texel buffer ", "image buffer "};
+        static const char* const kUnits[] = {"SSBO binding ", "image unit ", "texture unit ", "image unit "};
         for (const auto& b : s.storage)
-            out << "      " << (b.kind == StorageKind::Image ? "image " : "buffer ") << b.name << " : register(" << b.registerClass << b.slot << ") -> "
-                << (b.kind == StorageKind::Image ? "image unit " : "SSBO binding ") << b.binding << (b.writes ? " (read/write)" : " (read)")
+            out << "      " << kKinds[int(b.kind)] << b.name << " : register(" << b.registerClass << b.slot << ") -> "
+                << kUnits[int(b.kind)] << b.binding << (b.writes ? " (read/write)" : " (read)")
                 << (b.format.empty() ? "" : ", " + b.format) << (b.stride ? ", stride " + std::to_string(b.stride) : "") << "\n";
         for (const auto& in : s.inputs) out << "    input " << in.semantic << " -> location " << in.location << "\n";
         for (const auto& b : s.samplers)

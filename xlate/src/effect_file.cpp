@@ -37,7 +37,7 @@ struct Names {
 };
 
 constexpr Names<ShaderStage, 6> kStage{{"vertex", "pixel", "geometry", "hull", "domain", "compute"}};
-constexpr Names<StorageKind, 2> kStorage{{"buffer", "image"}};
+constexpr Names<StorageKind, 4> kStorage{{"buffer", "image", "texel-buffer", "image-buffer"}};
 constexpr Names<ParameterClass, 5> kClass{{"scalar", "vector", "matrix", "object", "struct"}};
 constexpr Names<ParameterType, 17> kType{{"void", "bool", "int", "uint", "float", "string", "texture", "texture1D",
                                           "texture2D", "texture3D", "textureCube", "sampler", "sampler1D", "sampler2D",

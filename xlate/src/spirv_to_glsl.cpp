@@ -3,6 +3,7 @@
 #include <spirv_cross/spirv_glsl.hpp>
 
 #include <algorithm>
+#include <map>
 #include <set>
 
 #include "entry_wrapper.h"
@@ -136,8 +137,8 @@ const char* imageFormatName(spv::ImageFormat f) {
 // in declaration order, as fxc assigns them) -> GL bindings. SSBOs and image units are their own
 // binding spaces in GL; UAV buffers and UAV images both sit at N (one uN names one of them), SRV
 // buffers at kSrvBufferBindingBase + N so they do not meet the UAVs.
-void bindStorage(GlslCompiler& compiler, const spirv_cross::ShaderResources& res, const EffectSyntax& syntax, int firstFreeUav,
-                 std::vector<StorageBinding>& out) {
+void bindStorage(GlslCompiler& compiler, const spirv_cross::ShaderResources& res, const EffectSyntax& syntax,
+                 const std::map<std::string, int>& textureUnits, int firstFreeUav, std::vector<StorageBinding>& out) {
     // glslang gives every resource a Binding (0 where no register was written): the register, if
     // any, comes from the declaration.
     auto declaredRegister = [&](const std::string& name, char registerClass) {
@@ -168,13 +169,27 @@ void bindStorage(GlslCompiler& compiler, const spirv_cross::ShaderResources& res
     }
     for (const auto& r : res.storage_images) {
         Found f{r.id, {}, false};
-        f.b.kind = StorageKind::Image;
         f.b.name = compiler.get_name(r.id);
         const spirv_cross::SPIRType& type = compiler.get_type(r.type_id);
+        f.b.kind = type.image.dim == spv::DimBuffer ? StorageKind::ImageBuffer : StorageKind::Image;  // RWBuffer<T> / RWTexture*
         f.b.dimension = kindOfImage(type);
         f.b.format = imageFormatName(type.image.format);
         f.b.writes = !compiler.has_decoration(r.id, spv::DecorationNonWritable);
         f.b.slot = declaredRegister(f.b.name, 'u');
+        f.explicitSlot = f.b.slot >= 0;
+        found.push_back(f);
+    }
+    // Buffer<T>: an image without a sampler, read by texelFetch (Load / operator[]).
+    for (const auto& r : res.separate_images) {
+        const spirv_cross::SPIRType& type = compiler.get_type(r.type_id);
+        if (type.image.dim != spv::DimBuffer) continue;
+        Found f{r.id, {}, false};
+        f.b.kind = StorageKind::TexelBuffer;
+        f.b.name = compiler.get_name(r.id);
+        f.b.registerClass = 't';
+        // A texture object to the effect parser: its t# is the one fxc gives it among the textures.
+        auto unit = textureUnits.find(f.b.name);
+        f.b.slot = unit != textureUnits.end() ? unit->second : -1;
         f.explicitSlot = f.b.slot >= 0;
         found.push_back(f);
     }
@@ -195,7 +210,9 @@ void bindStorage(GlslCompiler& compiler, const spirv_cross::ShaderResources& res
             f.b.slot = n;
             taken.insert({f.b.registerClass, n});
         }
-        f.b.binding = f.b.registerClass == 't' ? kSrvBufferBindingBase + f.b.slot : f.b.slot;
+        f.b.binding = f.b.kind == StorageKind::TexelBuffer ? kTexelBufferUnitBase + f.b.slot
+                      : f.b.registerClass == 't'         ? kSrvBufferBindingBase + f.b.slot
+                                                         : f.b.slot;
         compiler.unset_decoration(f.id, spv::DecorationDescriptorSet);
         compiler.set_decoration(f.id, spv::DecorationBinding, static_cast<uint32_t>(f.b.binding));
         out.push_back(f.b);
@@ -288,7 +305,7 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
         if (stage == ShaderStage::Pixel)
             for (const auto& r : res.stage_outputs)
                 firstFreeUav = std::max(firstFreeUav, static_cast<int>(compiler.get_decoration(r.id, spv::DecorationLocation)) + 1);
-        bindStorage(compiler, res, *effect.syntax, firstFreeUav, out.storage);
+        bindStorage(compiler, res, *effect.syntax, effect.textureUnits, firstFreeUav, out.storage);
         if (stage == ShaderStage::Domain && hull) declareHullModes(compiler, *hull);
         if (stage == ShaderStage::Compute)
             for (uint32_t d = 0; d < 3; ++d)

@@ -158,6 +158,13 @@ private:
     std::vector<core::StreamLayout> declarations_;  // each input slot's elements and stride, made at each draw
     EffectPass* effectPass_ = nullptr;  // fxport::EffectPass (applied at each draw instead of VS/PS)
     const void* effectOwner_ = nullptr;
+
+    // Depth-only draws (depth_only_draws.cpp): the device core draws into at least one colour
+    // target and runs a pixel shader, D3D needs neither.
+    RenderTarget2D& scratchTarget(int width, int height);
+    const PixelShader& emptyPixelShader();
+    std::unique_ptr<RenderTarget2D> scratch_;
+    ComPtr<PixelShader> emptyPixelShader_;
 };
 
 }  // namespace fxport::d3d11

@@ -51,7 +51,7 @@ void Context::bindStage(int stage, const ShaderBindings& bindings, const Stage& 
             u.textureSlot >= 0 && std::size_t(u.textureSlot) < s.views.size() ? s.views[std::size_t(u.textureSlot)].Get() : nullptr;
         if (v && !v->texture)
             throw InvalidOperation("t" + std::to_string(u.textureSlot) + " holds a view of a buffer where the shader samples a texture");
-        core.Textures[u.glUnit] = v ? v->texture->colour.get() : nullptr;
+        core.Textures[u.glUnit] = v ? v->texture->sampled() : nullptr;
         const SamplerState* st =
             u.samplerSlot >= 0 && std::size_t(u.samplerSlot) < s.samplers.size() ? s.samplers[std::size_t(u.samplerSlot)].Get() : nullptr;
         core.SamplerStates[u.glUnit] = st ? st->state : defaultSampler_;
@@ -79,10 +79,16 @@ void Context::bindStorage(const char* call, const core::ShaderCode& code, const 
         const std::string reg = std::string(1, b.registerClass) + std::to_string(b.slot);
         const std::string use = std::string(call) + ": " + code.shader().entryPoint + " uses '" + b.name + "' (" + reg + ")";
         const bool image = b.kind == xlate::StorageKind::Image;
+        const bool typed = b.kind == xlate::StorageKind::TexelBuffer || b.kind == xlate::StorageKind::ImageBuffer;  // Buffer<T>, RWBuffer<T>
         if (b.registerClass == 't') {
             const ShaderResourceView* v = b.slot >= 0 && std::size_t(b.slot) < s.views.size() ? s.views[std::size_t(b.slot)].Get() : nullptr;
-            if (!v || !v->buffer)
-                throw InvalidOperation(use + ", but no shader-resource view of a structured or raw buffer is set there");
+            if (!v || !v->buffer || typed != (v->typed != nullptr))
+                throw InvalidOperation(use + ", but no shader-resource view of a " + (typed ? "buffer with a Format (a typed view)" : "structured or raw buffer") +
+                                       " is set there");
+            if (typed) {
+                core::setTexelBuffer(core, false, b.slot, v->typed.get());
+                continue;
+            }
             checkStride(use, b, *v->buffer);
             core::setStorageBuffer(core, false, b.slot, v->buffer->gpu.get());
             continue;
@@ -94,7 +100,11 @@ void Context::bindStorage(const char* call, const core::ShaderCode& code, const 
                                         : std::string(" (fxport binds UAVs for pixel and compute shaders only)")));
         if (image != (v->texture != nullptr))
             throw InvalidOperation(use + ", a " + (image ? "texture" : "buffer") + ", but the view there is of a " + (v->texture ? "texture" : "buffer"));
-        if (image) {
+        if (typed != (v->typed != nullptr))
+            throw InvalidOperation(use + (typed ? ", a typed buffer (RWBuffer<T>), but the view there has no Format" : ", but the view there is a typed one (RWBuffer<T>)"));
+        if (typed) {
+            core::setTexelBuffer(core, true, b.slot, v->typed.get());
+        } else if (image) {
             core.SetUnorderedAccess(b.slot, v->texture->colour.get());
         } else {
             checkStride(use, b, *v->buffer);
@@ -105,8 +115,8 @@ void Context::bindStorage(const char* call, const core::ShaderCode& code, const 
 
 bool Context::prepare(const char* call) {
     const std::string at = std::string(call) + ": ";
-    if (!effectPass_ && (!vertexShader_ || !pixelShader_)) {
-        note(at + "no " + std::string(!vertexShader_ ? "vertex" : "pixel") + " shader set; nothing drawn (fxport needs both)");
+    if (!effectPass_ && !vertexShader_) {
+        note(at + "no vertex shader set; nothing drawn");
         return false;
     }
     static const std::vector<xlate::VertexInput> none;
@@ -119,12 +129,14 @@ bool Context::prepare(const char* call) {
     std::vector<RenderTargetBinding> colour;
     for (const auto& t : targets_)
         if (t) colour.emplace_back(&t->target());
-    if (colour.empty()) {
-        note(at + "no render target view bound; nothing drawn (fxport draws into at least one)");
-        return false;
-    }
     GraphicsDevice& core = device_->core();
     core::DepthBuffer* depth = depthView_ ? depthView_->texture->depth.get() : nullptr;
+    const bool depthOnly = colour.empty();  // a shadow-map pass: depth-stencil view, no render target
+    if (depthOnly && !depth) {
+        note(at + "no render target or depth-stencil view bound; nothing drawn");
+        return false;
+    }
+    if (depthOnly) colour.emplace_back(&scratchTarget(depth->width(), depth->height()));
     const RenderTarget2D& first = *static_cast<RenderTarget2D*>(colour[0].RenderTarget);
     if (depth && (depth->width() != first.Width() || depth->height() != first.Height())) {
         note(at + "the depth-stencil view is " + std::to_string(depth->width()) + "x" + std::to_string(depth->height()) +
@@ -136,6 +148,10 @@ bool Context::prepare(const char* call) {
     core.BlendState = blend_ ? blend_->state : defaultBlend_;
     core.BlendState.BlendFactor = colorOf(blendFactor_);
     core.BlendState.MultiSampleMask = int(sampleMask_);
+    if (depthOnly || (!effectPass_ && !pixelShader_)) {  // no colour is written (D3D: no target, or no pixel shader)
+        core.BlendState.ColorWriteChannels = core.BlendState.ColorWriteChannels1 = ColorWriteChannels::None;
+        core.BlendState.ColorWriteChannels2 = core.BlendState.ColorWriteChannels3 = ColorWriteChannels::None;
+    }
     core.DepthStencilState = depthStencil_ ? depthStencil_->state : defaultDepthStencil_;
     core.DepthStencilState.ReferenceStencil = int(stencilRef_);
     core.RasterizerState = rasterizer_ ? rasterizer_->state : defaultRasterizer_;
@@ -154,10 +170,11 @@ bool Context::prepare(const char* call) {
         effectPass_->Apply();
     } else {
         auto codeOf = [](const auto& shader) { return shader ? shader->code.get() : nullptr; };
-        const core::ShaderCode* stages[5] = {vertexShader_->code.get(), pixelShader_->code.get(), codeOf(geometryShader_),
+        const PixelShader& pixel = pixelShader_ ? *pixelShader_.Get() : emptyPixelShader();  // D3D draws depth without one
+        const core::ShaderCode* stages[5] = {vertexShader_->code.get(), pixel.code.get(), codeOf(geometryShader_),
                                              codeOf(hullShader_), codeOf(domainShader_)};
         core::setShaderStages(core, stages);
-        const ShaderBindings* bindings[5] = {&vertexShader_->bindings, &pixelShader_->bindings,
+        const ShaderBindings* bindings[5] = {&vertexShader_->bindings, &pixel.bindings,
                                              geometryShader_ ? &geometryShader_->bindings : nullptr,
                                              hullShader_ ? &hullShader_->bindings : nullptr, domainShader_ ? &domainShader_->bindings : nullptr};
         const Stage* slots[5] = {&vs_, &ps_, &gs_, &hs_, &ds_};

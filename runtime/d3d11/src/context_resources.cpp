@@ -115,6 +115,7 @@ void Context::CopyResource(ID3D11Resource* pDst, ID3D11Resource* pSrc) {
             td->levels != ts->levels)
             return fail(E_INVALIDARG, "CopyResource: the textures differ in size, format or mip levels");
         if (td->depth || ts->depth) return fail(E_NOTIMPL, "CopyResource: depth-stencil textures cannot be copied in fxport yet");
+        if (td->cube || ts->cube) return fail(E_NOTIMPL, "CopyResource: cube textures cannot be copied in fxport yet");
         for (int level = 0; level < ts->levels; ++level) {
             if (td->colour && ts->colour) {
                 core::copyTexture(*td->colour, *ts->colour);
@@ -169,6 +170,7 @@ void Context::CopySubresourceRegion(ID3D11Resource* pDst, UINT DstSubresource, U
         if (td->desc.Format != ts->desc.Format)
             return fail(E_INVALIDARG, at + "the textures' formats differ (" + std::string(formatName(td->desc.Format)) + ", " + formatName(ts->desc.Format) + ")");
         if (td->depth || ts->depth) return fail(E_NOTIMPL, at + "depth-stencil textures cannot be copied in fxport yet");
+        if (td->cube || ts->cube) return fail(E_NOTIMPL, at + "cube textures cannot be copied in fxport yet");
         if (DstSubresource >= UINT(td->levels) || SrcSubresource >= UINT(ts->levels))
             return fail(E_INVALIDARG, at + "DstSubresource = " + std::to_string(DstSubresource) + ", SrcSubresource = " + std::to_string(SrcSubresource) +
                                           " (the textures have " + std::to_string(td->levels) + " and " + std::to_string(ts->levels) + " levels)");

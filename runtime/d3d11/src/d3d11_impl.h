@@ -73,10 +73,12 @@ public:
     D3D11_TEXTURE2D_DESC desc;
     SurfaceFormat format = SurfaceFormat::Color;
     std::unique_ptr<fxport::Texture2D> colour;      // a RenderTarget2D when BIND_RENDER_TARGET
-    std::unique_ptr<core::DepthBuffer> depth;       // BIND_DEPTH_STENCIL
+    std::unique_ptr<fxport::TextureCube> cube;      // MISC_TEXTURECUBE (shader resource only)
+    std::unique_ptr<core::DepthBuffer> depth;       // BIND_DEPTH_STENCIL (over `colour` for a typeless depth texture: declared after it, released first)
     std::vector<std::vector<std::uint8_t>> staging;  // USAGE_STAGING: each level's texels, tightly packed
     int levels = 1;
     int mappedLevel = -1;
+    fxport::Texture* sampled() const { return colour ? static_cast<fxport::Texture*>(colour.get()) : cube.get(); }  // what an SRV reads
     int levelWidth(int level) const { return std::max(1, int(desc.Width) >> level); }
     int levelHeight(int level) const { return std::max(1, int(desc.Height) >> level); }
     std::size_t levelBytes(int level) const;
@@ -89,26 +91,34 @@ public:
         : Object(device), texture(viewed), desc(d) { texture->AddRef(); }
     ShaderResourceView(Device* device, Buffer* viewed, const D3D11_SHADER_RESOURCE_VIEW_DESC& d)
         : Object(device), buffer(viewed), desc(d) { buffer->AddRef(); }
-    ~ShaderResourceView() override { resource()->Release(); }
+    ~ShaderResourceView() override {
+        typed.reset();  // before the buffer it reads may go
+        resource()->Release();
+    }
     void GetResource(ID3D11Resource** r) override { resource()->AddRef(); *r = resource(); }
     void GetDesc(D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc) override { if (pDesc) *pDesc = desc; }
     ID3D11Resource* resource() const { return texture ? static_cast<ID3D11Resource*>(texture) : buffer; }
     Texture* texture = nullptr;
     Buffer* buffer = nullptr;
     D3D11_SHADER_RESOURCE_VIEW_DESC desc;
+    std::unique_ptr<core::TexelBuffer> typed;  // a typed buffer view (Buffer<T>)
 };
 // An unordered-access view of a structured or raw buffer, or of level 0 of a 2D texture.
 class UnorderedAccessView final : public Object<ID3D11UnorderedAccessView> {
 public:
     UnorderedAccessView(Device* device, ID3D11Resource* viewed, Buffer* b, Texture* t, const D3D11_UNORDERED_ACCESS_VIEW_DESC& d)
         : Object(device), resource(viewed), buffer(b), texture(t), desc(d) { resource->AddRef(); }
-    ~UnorderedAccessView() override { resource->Release(); }
+    ~UnorderedAccessView() override {
+        typed.reset();
+        resource->Release();
+    }
     void GetResource(ID3D11Resource** r) override { resource->AddRef(); *r = resource; }
     void GetDesc(D3D11_UNORDERED_ACCESS_VIEW_DESC* pDesc) override { if (pDesc) *pDesc = desc; }
     ID3D11Resource* resource;
     Buffer* buffer;
     Texture* texture;
     D3D11_UNORDERED_ACCESS_VIEW_DESC desc;
+    std::unique_ptr<core::TexelBuffer> typed;  // a typed buffer view (RWBuffer<T>)
 };
 class RenderTargetView final : public Object<ID3D11RenderTargetView> {
 public:
@@ -220,6 +230,18 @@ bool textureFormat(DXGI_FORMAT format, SurfaceFormat& out);
 bool depthFormat(DXGI_FORMAT format, DepthFormat& out);
 // --- vertex formats (vertex_formats.cpp)
 bool vertexFormat(DXGI_FORMAT format, VertexFormat& out);
+
+// --- typeless depth textures (typeless_formats.cpp): R32/R24G8/R16_TYPELESS, with their depth and
+// shader-resource view formats and what the device core makes of them.
+struct DepthFamily {
+    DXGI_FORMAT typeless, depthView, sampledView;
+    DepthFormat depth;      // a depth buffer's format (DSV only)
+    SurfaceFormat sampled;  // the depth texture's (SRV, or SRV and DSV)
+};
+const DepthFamily* depthFamilyOf(DXGI_FORMAT textureFormat);  // null: not one of them
+// A view's Format for texture `t`: its own (or UNKNOWN), or the typeless depth family's view of
+// that kind; E_NOTIMPL/E_INVALIDARG naming `desc`.Format otherwise.
+HRESULT checkViewFormat(const char* call, const char* desc, DXGI_FORMAT viewFormat, const Texture& t, bool depthView);
 
 // --- a compiled-shader blob's content (compile.cpp)
 std::string narrowPath(const wchar_t* path);  // UTF-8

@@ -287,7 +287,7 @@ HRESULT Variable::Resource::SetResource(ID3D11ShaderResourceView* view) {
         return fail(E_INVALIDARG, "SetResource: the view was not made by the effect's device");
     if (srv && !srv->texture) return fail(E_NOTIMPL, "SetResource: a view of a buffer; effect variables take texture views only in fxport");
     return v_.set("SetResource", v_.is(EffectParameterClass::Object), [&](EffectParameter& p) {
-        p.SetValue(srv ? static_cast<fxport::Texture*>(srv->texture->colour.get()) : nullptr);
+        p.SetValue(srv ? srv->texture->sampled() : nullptr);
     });
 }
 

@@ -119,9 +119,13 @@ public:
         // buffer of 4-byte elements: xlate does not tell them apart).
         for (const xlate::StorageBinding& b : s.storage) {
             const bool uav = b.registerClass == 'u', image = b.kind == xlate::StorageKind::Image;
-            const D3D_SHADER_INPUT_TYPE type = image ? D3D_SIT_UAV_RWTYPED : uav ? D3D_SIT_UAV_RWSTRUCTURED : D3D_SIT_STRUCTURED;
+            const bool typed = b.kind == xlate::StorageKind::TexelBuffer || b.kind == xlate::StorageKind::ImageBuffer;  // (RW)Buffer<T>
+            const D3D_SHADER_INPUT_TYPE type = image || (typed && uav) ? D3D_SIT_UAV_RWTYPED
+                                               : typed                 ? D3D_SIT_TEXTURE
+                                               : uav                   ? D3D_SIT_UAV_RWSTRUCTURED
+                                                                       : D3D_SIT_STRUCTURED;
             resources_.push_back({b.name, type, UINT(b.slot), image ? D3D_SRV_DIMENSION_TEXTURE2D : D3D_SRV_DIMENSION_BUFFER,
-                                  image ? 0u : UINT(b.stride)});
+                                  image || typed ? 0u : UINT(b.stride)});
         }
         std::vector<const xlate::VertexInput*> inputs;
         for (const auto& in : s.inputs) inputs.push_back(&in);

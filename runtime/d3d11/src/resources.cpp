@@ -68,6 +68,22 @@ HRESULT checkBufferMisc(const D3D11_BUFFER_DESC& d) {
     return S_OK;
 }
 
+// D3D's cube textures: MISC_TEXTURECUBE and six square faces (ArraySize 6, in D3D's face order,
+// which is XNA's CubeMapFace order). fxport samples them: BIND_SHADER_RESOURCE only, one level.
+HRESULT checkCube(const D3D11_TEXTURE2D_DESC& d, const std::string& at) {
+    if (d.ArraySize % 6 != 0 || d.Width != d.Height)
+        return fail(E_INVALIDARG, at + "ArraySize = " + std::to_string(d.ArraySize) + ", Width x Height = " + std::to_string(d.Width) + " x " +
+                                      std::to_string(d.Height) + " with D3D11_RESOURCE_MISC_TEXTURECUBE (a cube is six square faces)");
+    if (d.ArraySize != 6)
+        return fail(E_NOTIMPL, at + "ArraySize = " + std::to_string(d.ArraySize) + " with D3D11_RESOURCE_MISC_TEXTURECUBE: cube arrays are not supported yet");
+    if (d.BindFlags != D3D11_BIND_SHADER_RESOURCE || (d.Usage != D3D11_USAGE_DEFAULT && d.Usage != D3D11_USAGE_IMMUTABLE))
+        return fail(E_NOTIMPL, at + "BindFlags = " + std::to_string(d.BindFlags) + ", Usage = " + std::to_string(d.Usage) +
+                                   " for a cube texture: fxport's cube textures are DEFAULT or IMMUTABLE shader resources only");
+    if (d.MipLevels != 1)
+        return fail(E_NOTIMPL, at + "MipLevels = " + std::to_string(d.MipLevels) + " for a cube texture: fxport makes one level");
+    return S_OK;
+}
+
 }  // namespace
 
 // --- Buffer
@@ -131,11 +147,15 @@ HRESULT Device::CreateTexture2D(const D3D11_TEXTURE2D_DESC* pDesc, const D3D11_S
     if (d.Width == 0 || d.Height == 0 || d.Width > 16384 || d.Height > 16384)
         return fail(E_INVALIDARG, at + "Width x Height = " + std::to_string(d.Width) + " x " + std::to_string(d.Height) + " (1 to 16384 each)");
     if (d.ArraySize == 0) return fail(E_INVALIDARG, at + "ArraySize = 0");
-    if (d.ArraySize > 1) return fail(E_NOTIMPL, at + "ArraySize = " + std::to_string(d.ArraySize) + ": texture arrays are not supported yet");
+    const bool isCube = (d.MiscFlags & D3D11_RESOURCE_MISC_TEXTURECUBE) != 0;
+    if (d.ArraySize > 1 && !isCube)
+        return fail(E_NOTIMPL, at + "ArraySize = " + std::to_string(d.ArraySize) + ": texture arrays are not supported yet");
     if (d.SampleDesc.Count == 0) return fail(E_INVALIDARG, at + "SampleDesc.Count = 0");
     if (d.SampleDesc.Count > 1) return fail(E_NOTIMPL, at + "SampleDesc.Count = " + std::to_string(d.SampleDesc.Count) + ": no multisampling");
-    if (d.MiscFlags & ~UINT(D3D11_RESOURCE_MISC_GENERATE_MIPS))
-        return fail(E_NOTIMPL, at + "MiscFlags = " + std::to_string(d.MiscFlags) + ": only D3D11_RESOURCE_MISC_GENERATE_MIPS is supported");
+    if (d.MiscFlags & ~UINT(D3D11_RESOURCE_MISC_GENERATE_MIPS | D3D11_RESOURCE_MISC_TEXTURECUBE))
+        return fail(E_NOTIMPL, at + "MiscFlags = " + std::to_string(d.MiscFlags) + ": only D3D11_RESOURCE_MISC_GENERATE_MIPS and TEXTURECUBE are supported");
+    if (isCube)
+        if (HRESULT hr = checkCube(d, at); FAILED(hr)) return hr;
     const int full = fullMipCount(d.Width, d.Height);
     if (int(d.MipLevels) > full)
         return fail(E_INVALIDARG, at + "MipLevels = " + std::to_string(d.MipLevels) + " (a " + std::to_string(d.Width) + "x" +
@@ -149,18 +169,32 @@ HRESULT Device::CreateTexture2D(const D3D11_TEXTURE2D_DESC* pDesc, const D3D11_S
     if ((d.BindFlags & D3D11_BIND_UNORDERED_ACCESS) && d.Usage != D3D11_USAGE_DEFAULT)
         return fail(E_INVALIDARG, at + "Usage = " + std::to_string(d.Usage) + " with BIND_UNORDERED_ACCESS (must be USAGE_DEFAULT)");
     const bool depthTarget = (d.BindFlags & D3D11_BIND_DEPTH_STENCIL) != 0;
-    if (depthTarget && (d.BindFlags & (D3D11_BIND_RENDER_TARGET | D3D11_BIND_SHADER_RESOURCE)))
-        return fail(E_NOTIMPL, at + "BindFlags = " + std::to_string(d.BindFlags) +
-                                   ": a depth-stencil texture cannot also be sampled or rendered to in fxport yet");
+    const DepthFamily* family = depthFamilyOf(d.Format);
+    if (depthTarget && (d.BindFlags & D3D11_BIND_RENDER_TARGET))
+        return fail(E_INVALIDARG, at + "BindFlags = " + std::to_string(d.BindFlags) + ": a texture is a depth-stencil or a render target, not both");
+    if (depthTarget && (d.BindFlags & D3D11_BIND_SHADER_RESOURCE) && !family)
+        return fail(E_INVALIDARG, at + "BindFlags = " + std::to_string(d.BindFlags) + " with Format = " + formatName(d.Format) +
+                                      ": a depth texture a shader samples is made typeless (R32_TYPELESS, R24G8_TYPELESS, R16_TYPELESS)");
+    if (family && (d.BindFlags & (D3D11_BIND_RENDER_TARGET | D3D11_BIND_UNORDERED_ACCESS)))
+        return fail(E_NOTIMPL, at + "BindFlags = " + std::to_string(d.BindFlags) + " with Format = " + formatName(d.Format) +
+                                   ": fxport keeps a typeless texture as a depth texture (DEPTH_STENCIL and SHADER_RESOURCE only)");
+    const bool sampledDepth = family && (d.BindFlags & D3D11_BIND_SHADER_RESOURCE);
+    if (sampledDepth && depthTarget && d.MipLevels != 1)
+        return fail(E_NOTIMPL, at + "MipLevels = " + std::to_string(d.MipLevels) + " for a depth texture: fxport makes 1 level");
+    if (family && family->typeless == DXGI_FORMAT_R24G8_TYPELESS && pInitialData)
+        return fail(E_NOTIMPL, at + "Format = DXGI_FORMAT_R24G8_TYPELESS with pInitialData: fxport does not upload packed depth-stencil texels");
     if (HRESULT hr = checkUsage(call, "D3D11_TEXTURE2D_DESC", d.Usage, d.BindFlags, d.CPUAccessFlags, pInitialData && pInitialData->pSysMem); FAILED(hr))
         return hr;
-    SurfaceFormat surface = SurfaceFormat::Color;
-    DepthFormat depth = DepthFormat::None;
-    if (depthTarget ? !depthFormat(d.Format, depth) : !textureFormat(d.Format, surface))
+    SurfaceFormat surface = family ? family->sampled : SurfaceFormat::Color;
+    DepthFormat depth = family ? family->depth : DepthFormat::None;
+    if (!family && (depthTarget ? !depthFormat(d.Format, depth) : !textureFormat(d.Format, surface)))
         return fail(d.Format == DXGI_FORMAT_UNKNOWN ? E_INVALIDARG : E_NOTIMPL, at + "Format = " + formatName(d.Format) + " (" + std::to_string(d.Format) +
                                                              "): not a " + (depthTarget ? "depth" : "texture") +
                                                              " format fxport supports (docs/API.md lists them)");
     if (depthTarget && pInitialData) return fail(E_INVALIDARG, at + "BindFlags has DEPTH_STENCIL and pInitialData is given");
+    if ((d.MiscFlags & D3D11_RESOURCE_MISC_GENERATE_MIPS) && !depthTarget && isIntegerFormat(surface))
+        return fail(E_INVALIDARG, at + "MiscFlags = " + std::to_string(d.MiscFlags) + " (D3D11_RESOURCE_MISC_GENERATE_MIPS) with Format = " +
+                                      formatName(d.Format) + ": integer texels cannot be filtered into smaller levels");
     if (!ppTexture2D) return succeed();
     return guarded(call, [&] {
         auto texture = std::unique_ptr<Texture, void (*)(Texture*)>(new Texture(this, d), [](Texture* t) { t->Release(); });
@@ -169,8 +203,13 @@ HRESULT Device::CreateTexture2D(const D3D11_TEXTURE2D_DESC* pDesc, const D3D11_S
         t.levels = d.MipLevels == 1 ? 1 : full;
         t.desc.MipLevels = UINT(t.levels);
         const bool mips = t.levels > 1;
-        if (depthTarget) {
+        if (depthTarget && sampledDepth) {  // a shadow map: one depth texture under its DSV and SRV
+            t.colour = std::make_unique<fxport::Texture2D>(core(), int(d.Width), int(d.Height), false, surface);
+            t.depth = std::make_unique<core::DepthBuffer>(core(), *t.colour);
+        } else if (depthTarget) {
             t.depth = std::make_unique<core::DepthBuffer>(core(), int(d.Width), int(d.Height), depth);
+        } else if (isCube) {
+            t.cube = std::make_unique<fxport::TextureCube>(core(), int(d.Width), false, surface);
         } else if (d.Usage == D3D11_USAGE_STAGING) {
             for (int level = 0; level < t.levels; ++level) t.staging.emplace_back(t.levelBytes(level), 0);
         } else if (d.BindFlags & D3D11_BIND_RENDER_TARGET) {
@@ -180,17 +219,20 @@ HRESULT Device::CreateTexture2D(const D3D11_TEXTURE2D_DESC* pDesc, const D3D11_S
             t.colour = std::make_unique<fxport::Texture2D>(core(), int(d.Width), int(d.Height), mips, surface);
         }
         if (pInitialData) {
-            for (int level = 0; level < t.levels; ++level) {
-                const D3D11_SUBRESOURCE_DATA& s = pInitialData[level];
-                if (!s.pSysMem) return fail(E_INVALIDARG, "CreateTexture2D: pInitialData[" + std::to_string(level) + "].pSysMem is null");
+            // Subresource face * levels + level (a 2D texture has one face).
+            for (int sub = 0; sub < (isCube ? 6 : 1) * t.levels; ++sub) {
+                const int level = sub % t.levels, face = sub / t.levels;
+                const D3D11_SUBRESOURCE_DATA& s = pInitialData[sub];
+                if (!s.pSysMem) return fail(E_INVALIDARG, "CreateTexture2D: pInitialData[" + std::to_string(sub) + "].pSysMem is null");
                 const std::size_t row = std::size_t(t.levelWidth(level)) * std::size_t(bytesPerPixel(surface));
                 if (s.SysMemPitch < row)
-                    return fail(E_INVALIDARG, "CreateTexture2D: pInitialData[" + std::to_string(level) + "].SysMemPitch = " +
+                    return fail(E_INVALIDARG, "CreateTexture2D: pInitialData[" + std::to_string(sub) + "].SysMemPitch = " +
                                                   std::to_string(s.SysMemPitch) + ", less than a row (" + std::to_string(row) + " bytes)");
                 std::vector<std::uint8_t> packed(t.levelBytes(level));
                 for (int y = 0; y < t.levelHeight(level); ++y)
                     std::memcpy(&packed[std::size_t(y) * row], static_cast<const std::uint8_t*>(s.pSysMem) + std::size_t(y) * s.SysMemPitch, row);
                 if (!t.staging.empty()) t.staging[std::size_t(level)] = std::move(packed);
+                else if (t.cube) t.cube->setData(CubeMapFace(face), packed.data(), packed.size());
                 else t.colour->setData(level, nullptr, packed.data(), packed.size());
             }
         }

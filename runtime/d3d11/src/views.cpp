@@ -2,6 +2,8 @@
 // format, all levels for SRVs, level 0 for RTVs and DSVs); shader-resource and unordered-access
 // views of whole structured (StructuredBuffer<T>) and raw (ByteAddressBuffer) buffers, and
 // unordered-access views of level 0 of a 2D texture (RWTexture2D).
+#include <optional>
+
 #include "d3d11_impl.h"
 #include "guarded.h"
 
@@ -28,26 +30,40 @@ Texture* textureOf(Device* device, ID3D11Resource* resource, const char* call, H
     return t;
 }
 
-HRESULT checkFormat(const char* call, const char* desc, DXGI_FORMAT viewFormat, const Texture& t) {
-    if (viewFormat == DXGI_FORMAT_UNKNOWN || viewFormat == t.desc.Format) return S_OK;
-    return fail(E_NOTIMPL, std::string(call) + ": " + desc + ".Format = " + formatName(viewFormat) + " differs from the texture's " +
-                               formatName(t.desc.Format) + ": fxport views a texture in its own format");
+// A typeless (depth) texture is viewed only through a description naming the view's format.
+HRESULT needsDescription(const char* call, const Texture& t, bool given) {
+    if (given || !depthFamilyOf(t.desc.Format)) return S_OK;
+    return fail(E_INVALIDARG, std::string(call) + ": pDesc is null for a " + formatName(t.desc.Format) + " texture (a typeless texture's view names its Format)");
 }
 
 // The buffer view's elements: the whole of a structured buffer (FirstElement 0, NumElements its
 // element count) or of a raw one (R32_TYPELESS with the RAW flag: 4-byte elements). `desc` names
 // the description for messages ("D3D11_SHADER_RESOURCE_VIEW_DESC.Buffer").
-HRESULT checkBufferView(const char* call, const std::string& desc, const Buffer& b, DXGI_FORMAT format, bool raw, UINT first, UINT count) {
+// A typed view (Buffer<T> / RWBuffer<T>: neither structured nor raw) reads elements of `format`
+// from the buffer's start: its SurfaceFormat goes to `typed`.
+HRESULT checkBufferView(const char* call, const std::string& desc, const Buffer& b, DXGI_FORMAT format, bool raw, UINT first, UINT count,
+                        std::optional<SurfaceFormat>& typed) {
     const std::string at = std::string(call) + ": " + desc;
     const bool structured = (b.desc.MiscFlags & D3D11_RESOURCE_MISC_BUFFER_STRUCTURED) != 0;
+    if (!raw && !structured) {
+        SurfaceFormat f = SurfaceFormat::Color;
+        if (format == DXGI_FORMAT_UNKNOWN) return fail(E_INVALIDARG, std::string(call) + ": Format = DXGI_FORMAT_UNKNOWN for a typed buffer view (Buffer<T> needs the element format)");
+        if (!textureFormat(format, f) || !core::isTexelBufferFormat(f))
+            return fail(E_NOTIMPL, std::string(call) + ": Format = " + formatName(format) + " (" + std::to_string(format) + "): not a typed-buffer format fxport supports");
+        const UINT elements = b.desc.ByteWidth / UINT(bytesPerPixel(f));
+        if (first >= elements || count > elements - first)
+            return fail(E_INVALIDARG, at + " = {FirstElement " + std::to_string(first) + ", NumElements " + std::to_string(count) + "}: the buffer holds " +
+                                          std::to_string(elements) + " elements of " + formatName(format));
+        if (first != 0)
+            return fail(E_NOTIMPL, at + ".FirstElement = " + std::to_string(first) + ": fxport's typed buffer views start at element 0");
+        typed = f;
+        return S_OK;
+    }
     if (raw) {
         if (!(b.desc.MiscFlags & D3D11_RESOURCE_MISC_BUFFER_ALLOW_RAW_VIEWS))
             return fail(E_INVALIDARG, at + " asks for a raw view of a buffer made without D3D11_RESOURCE_MISC_BUFFER_ALLOW_RAW_VIEWS");
         if (format != DXGI_FORMAT_R32_TYPELESS)
             return fail(E_INVALIDARG, std::string(call) + ": Format = " + formatName(format) + " for a raw view (must be DXGI_FORMAT_R32_TYPELESS)");
-    } else if (!structured) {
-        return fail(E_NOTIMPL, std::string(call) + ": a typed view of a buffer (Buffer<T> / RWBuffer<T>) is not supported; fxport views "
-                                                   "structured buffers (D3D11_RESOURCE_MISC_BUFFER_STRUCTURED) and raw ones");
     } else if (format != DXGI_FORMAT_UNKNOWN) {
         return fail(E_INVALIDARG, std::string(call) + ": Format = " + formatName(format) + " for a structured buffer (must be DXGI_FORMAT_UNKNOWN)");
     }
@@ -72,21 +88,29 @@ HRESULT bufferShaderResourceView(Device* device, Buffer* b, const D3D11_SHADER_R
     d.Buffer.NumElements = structured ? b->desc.ByteWidth / b->desc.StructureByteStride : 0;
     if (!pDesc && !structured)
         return fail(E_INVALIDARG, std::string(call) + ": pDesc is null for a buffer that is not structured (a raw view needs a description)");
+    std::optional<SurfaceFormat> typed;
     if (pDesc) {
         d = *pDesc;
         HRESULT hr = S_OK;
         if (d.ViewDimension == D3D11_SRV_DIMENSION_BUFFER)
-            hr = checkBufferView(call, "D3D11_SHADER_RESOURCE_VIEW_DESC.Buffer", *b, d.Format, false, d.Buffer.FirstElement, d.Buffer.NumElements);
+            hr = checkBufferView(call, "D3D11_SHADER_RESOURCE_VIEW_DESC.Buffer", *b, d.Format, false, d.Buffer.FirstElement, d.Buffer.NumElements, typed);
         else if (d.ViewDimension == D3D11_SRV_DIMENSION_BUFFEREX)
             hr = checkBufferView(call, "D3D11_SHADER_RESOURCE_VIEW_DESC.BufferEx", *b, d.Format, (d.BufferEx.Flags & D3D11_BUFFEREX_SRV_FLAG_RAW) != 0,
-                                 d.BufferEx.FirstElement, d.BufferEx.NumElements);
+                                 d.BufferEx.FirstElement, d.BufferEx.NumElements, typed);
         else
             return fail(E_INVALIDARG, std::string(call) + ": D3D11_SHADER_RESOURCE_VIEW_DESC.ViewDimension = " + std::to_string(d.ViewDimension) +
                                           " for a buffer (D3D11_SRV_DIMENSION_BUFFER or BUFFEREX)");
         if (FAILED(hr)) return hr;
     }
-    if (pp) *pp = new ShaderResourceView(device, b, d);
-    return succeed();
+    if (!pp) return succeed();
+    return guarded(call, [&] {
+        auto view = std::unique_ptr<ShaderResourceView, void (*)(ShaderResourceView*)>(new ShaderResourceView(device, b, d),
+                                                                                       [](ShaderResourceView* v) { v->Release(); });
+        const UINT elements = d.ViewDimension == D3D11_SRV_DIMENSION_BUFFEREX ? d.BufferEx.NumElements : d.Buffer.NumElements;
+        if (typed) view->typed = std::make_unique<core::TexelBuffer>(device->core(), *b->gpu, *typed, std::size_t(elements));
+        *pp = view.release();
+        return succeed();
+    });
 }
 
 }  // namespace
@@ -101,22 +125,27 @@ HRESULT Device::CreateShaderResourceView(ID3D11Resource* pResource, const D3D11_
     if (!(t->desc.BindFlags & D3D11_BIND_SHADER_RESOURCE))
         return fail(E_INVALIDARG, std::string(call) + ": the texture's BindFlags = " + std::to_string(t->desc.BindFlags) +
                                       " lack D3D11_BIND_SHADER_RESOURCE");
+    if (HRESULT f = needsDescription(call, *t, pDesc != nullptr); FAILED(f)) return f;
+    // A cube texture is viewed as a cube (TEXTURECUBE), any other as a 2D texture.
+    const D3D11_SRV_DIMENSION dimension = t->cube ? D3D11_SRV_DIMENSION_TEXTURECUBE : D3D11_SRV_DIMENSION_TEXTURE2D;
+    const char* const member = t->cube ? "TextureCube" : "Texture2D";
     D3D11_SHADER_RESOURCE_VIEW_DESC d;
     d.Format = t->desc.Format;
-    d.ViewDimension = D3D11_SRV_DIMENSION_TEXTURE2D;
-    d.Texture2D.MipLevels = t->desc.MipLevels;
+    d.ViewDimension = dimension;
+    d.Texture2D.MipLevels = d.TextureCube.MipLevels = t->desc.MipLevels;
     if (pDesc) {
-        if (pDesc->ViewDimension != D3D11_SRV_DIMENSION_TEXTURE2D)
+        if (pDesc->ViewDimension != dimension)
             return fail(pDesc->ViewDimension == D3D11_SRV_DIMENSION_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
                         std::string(call) + ": D3D11_SHADER_RESOURCE_VIEW_DESC.ViewDimension = " + std::to_string(pDesc->ViewDimension) +
-                            " (fxport views 2D textures as D3D11_SRV_DIMENSION_TEXTURE2D)");
-        if (HRESULT f = checkFormat(call, "D3D11_SHADER_RESOURCE_VIEW_DESC", pDesc->Format, *t); FAILED(f)) return f;
-        const UINT levels = pDesc->Texture2D.MipLevels;
-        if (pDesc->Texture2D.MostDetailedMip != 0 || (levels != UINT(-1) && levels != t->desc.MipLevels))
-            return fail(E_NOTIMPL, std::string(call) + ": D3D11_SHADER_RESOURCE_VIEW_DESC.Texture2D = {MostDetailedMip " +
-                                       std::to_string(pDesc->Texture2D.MostDetailedMip) + ", MipLevels " + std::to_string(levels) +
-                                       "}: fxport views every level (0, -1)");
+                            " (fxport views this texture as D3D11_SRV_DIMENSION_" + (t->cube ? "TEXTURECUBE" : "TEXTURE2D") + ")");
+        if (HRESULT f = checkViewFormat(call, "D3D11_SHADER_RESOURCE_VIEW_DESC", pDesc->Format, *t, false); FAILED(f)) return f;
+        const UINT first = t->cube ? pDesc->TextureCube.MostDetailedMip : pDesc->Texture2D.MostDetailedMip;
+        const UINT levels = t->cube ? pDesc->TextureCube.MipLevels : pDesc->Texture2D.MipLevels;
+        if (first != 0 || (levels != UINT(-1) && levels != t->desc.MipLevels))
+            return fail(E_NOTIMPL, std::string(call) + ": D3D11_SHADER_RESOURCE_VIEW_DESC." + member + " = {MostDetailedMip " + std::to_string(first) +
+                                       ", MipLevels " + std::to_string(levels) + "}: fxport views every level (0, -1)");
     }
+    if (pDesc && pDesc->Format != DXGI_FORMAT_UNKNOWN) d.Format = pDesc->Format;
     if (!ppSRView) return succeed();
     *ppSRView = new ShaderResourceView(this, t, d);
     return succeed();
@@ -138,7 +167,7 @@ HRESULT Device::CreateRenderTargetView(ID3D11Resource* pResource, const D3D11_RE
         if (pDesc->ViewDimension != D3D11_RTV_DIMENSION_TEXTURE2D)
             return fail(pDesc->ViewDimension == D3D11_RTV_DIMENSION_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
                         std::string(call) + ": D3D11_RENDER_TARGET_VIEW_DESC.ViewDimension = " + std::to_string(pDesc->ViewDimension));
-        if (HRESULT f = checkFormat(call, "D3D11_RENDER_TARGET_VIEW_DESC", pDesc->Format, *t); FAILED(f)) return f;
+        if (HRESULT f = checkViewFormat(call, "D3D11_RENDER_TARGET_VIEW_DESC", pDesc->Format, *t, false); FAILED(f)) return f;
         if (pDesc->Texture2D.MipSlice != 0)
             return fail(E_NOTIMPL, std::string(call) + ": D3D11_RENDER_TARGET_VIEW_DESC.Texture2D.MipSlice = " +
                                        std::to_string(pDesc->Texture2D.MipSlice) + ": fxport renders into level 0");
@@ -157,6 +186,7 @@ HRESULT Device::CreateDepthStencilView(ID3D11Resource* pResource, const D3D11_DE
     if (!t->depth)
         return fail(E_INVALIDARG, std::string(call) + ": the texture's BindFlags = " + std::to_string(t->desc.BindFlags) +
                                       " lack D3D11_BIND_DEPTH_STENCIL");
+    if (HRESULT f = needsDescription(call, *t, pDesc != nullptr); FAILED(f)) return f;
     D3D11_DEPTH_STENCIL_VIEW_DESC d;
     d.Format = t->desc.Format;
     d.ViewDimension = D3D11_DSV_DIMENSION_TEXTURE2D;
@@ -164,7 +194,7 @@ HRESULT Device::CreateDepthStencilView(ID3D11Resource* pResource, const D3D11_DE
         if (pDesc->ViewDimension != D3D11_DSV_DIMENSION_TEXTURE2D)
             return fail(pDesc->ViewDimension == D3D11_DSV_DIMENSION_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
                         std::string(call) + ": D3D11_DEPTH_STENCIL_VIEW_DESC.ViewDimension = " + std::to_string(pDesc->ViewDimension));
-        if (HRESULT f = checkFormat(call, "D3D11_DEPTH_STENCIL_VIEW_DESC", pDesc->Format, *t); FAILED(f)) return f;
+        if (HRESULT f = checkViewFormat(call, "D3D11_DEPTH_STENCIL_VIEW_DESC", pDesc->Format, *t, true); FAILED(f)) return f;
         if (pDesc->Flags != 0)
             return fail(E_NOTIMPL, std::string(call) + ": D3D11_DEPTH_STENCIL_VIEW_DESC.Flags = " + std::to_string(pDesc->Flags) +
                                        ": read-only depth views are not supported yet");
@@ -172,6 +202,7 @@ HRESULT Device::CreateDepthStencilView(ID3D11Resource* pResource, const D3D11_DE
             return fail(E_INVALIDARG, std::string(call) + ": D3D11_DEPTH_STENCIL_VIEW_DESC.Texture2D.MipSlice = " +
                                           std::to_string(pDesc->Texture2D.MipSlice) + " (the texture has 1 level)");
     }
+    if (pDesc && pDesc->Format != DXGI_FORMAT_UNKNOWN) d.Format = pDesc->Format;
     if (!ppDepthStencilView) return succeed();
     *ppDepthStencilView = new DepthStencilView(this, t, d);
     return succeed();
@@ -189,6 +220,7 @@ HRESULT Device::CreateUnorderedAccessView(ID3D11Resource* pResource, const D3D11
     if (!(bind & D3D11_BIND_UNORDERED_ACCESS))
         return fail(E_INVALIDARG, std::string(call) + ": the resource's BindFlags = " + std::to_string(bind) + " lack D3D11_BIND_UNORDERED_ACCESS");
     D3D11_UNORDERED_ACCESS_VIEW_DESC d;
+    std::optional<SurfaceFormat> typed;
     if (b) {
         const bool structured = (b->desc.MiscFlags & D3D11_RESOURCE_MISC_BUFFER_STRUCTURED) != 0;
         if (!pDesc && !structured)
@@ -204,7 +236,7 @@ HRESULT Device::CreateUnorderedAccessView(ID3D11Resource* pResource, const D3D11
                 return fail(E_NOTIMPL, std::string(call) + ": D3D11_UNORDERED_ACCESS_VIEW_DESC.Buffer.Flags = " + std::to_string(d.Buffer.Flags) +
                                            ": append and counter UAVs are not supported");
             if (HRESULT hr = checkBufferView(call, "D3D11_UNORDERED_ACCESS_VIEW_DESC.Buffer", *b, d.Format, (d.Buffer.Flags & D3D11_BUFFER_UAV_FLAG_RAW) != 0,
-                                             d.Buffer.FirstElement, d.Buffer.NumElements);
+                                             d.Buffer.FirstElement, d.Buffer.NumElements, typed);
                 FAILED(hr))
                 return hr;
         }
@@ -216,14 +248,20 @@ HRESULT Device::CreateUnorderedAccessView(ID3D11Resource* pResource, const D3D11
                 return fail(pDesc->ViewDimension == D3D11_UAV_DIMENSION_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
                             std::string(call) + ": D3D11_UNORDERED_ACCESS_VIEW_DESC.ViewDimension = " + std::to_string(pDesc->ViewDimension) +
                                 " for a 2D texture (D3D11_UAV_DIMENSION_TEXTURE2D)");
-            if (HRESULT f = checkFormat(call, "D3D11_UNORDERED_ACCESS_VIEW_DESC", pDesc->Format, *t); FAILED(f)) return f;
+            if (HRESULT f = checkViewFormat(call, "D3D11_UNORDERED_ACCESS_VIEW_DESC", pDesc->Format, *t, false); FAILED(f)) return f;
             if (pDesc->Texture2D.MipSlice != 0)
                 return fail(E_NOTIMPL, std::string(call) + ": D3D11_UNORDERED_ACCESS_VIEW_DESC.Texture2D.MipSlice = " +
                                            std::to_string(pDesc->Texture2D.MipSlice) + ": fxport writes level 0");
         }
     }
-    if (ppUAView) *ppUAView = new UnorderedAccessView(this, pResource, b, t, d);
-    return succeed();
+    if (!ppUAView) return succeed();
+    return guarded(call, [&] {
+        auto view = std::unique_ptr<UnorderedAccessView, void (*)(UnorderedAccessView*)>(new UnorderedAccessView(this, pResource, b, t, d),
+                                                                                         [](UnorderedAccessView* v) { v->Release(); });
+        if (typed) view->typed = std::make_unique<core::TexelBuffer>(core(), *b->gpu, *typed, std::size_t(d.Buffer.NumElements));
+        *ppUAView = view.release();
+        return succeed();
+    });
 }
 
 }  // namespace fxport::d3d11

@@ -170,6 +170,8 @@ public:
     // The image-unit format qualifier a shader declares for `format` ("rgba8"), "" when images cannot hold it.
     virtual const char* imageFormatName(SurfaceFormat format) = 0;
     virtual BackendObject createTexture(bool cube, SurfaceFormat format, int levels, int width, int height) = 0;
+    // A buffer texture over the first `bytes` of `buffer`, texels of `format` (deleted with deleteTexture).
+    virtual BackendObject createBufferTexture(BackendObject buffer, SurfaceFormat format, std::size_t bytes) = 0;
     virtual void deleteTexture(BackendObject texture) = 0;
     virtual void writeTexture(BackendObject texture, SurfaceFormat format, int face, int level, const Rectangle& area,
                               const void* data) = 0;
@@ -186,12 +188,13 @@ public:
     // scissor test off (the core's shadow must forget them).
     virtual BackendObject createRenderbuffer() = 0;
     virtual void deleteRenderbuffer(BackendObject renderbuffer) = 0;
+    // `depthIsTexture`: `depth` names a depth texture (DepthStorage::isTexture), not a renderbuffer.
     virtual BackendObject createFramebuffer(const std::vector<ColorAttachment>& colour, BackendObject depth, bool depthHasStencil,
-                                            std::string& problem) = 0;
+                                            bool depthIsTexture, std::string& problem) = 0;
     virtual void deleteFramebuffer(BackendObject framebuffer) = 0;
     virtual void bindFramebuffer(BackendObject framebuffer) = 0;  // 0: the window's
     virtual void presentFlipped(BackendObject framebuffer, int width, int height) = 0;  // to the window, rows reversed
-    virtual void clearDepthStencil(BackendObject renderbuffer, bool hasStencil, bool depth, bool stencil, float depthValue,
+    virtual void clearDepthStencil(BackendObject renderbuffer, bool hasStencil, bool isTexture, bool depth, bool stencil, float depthValue,
                                    int stencilValue) = 0;
     virtual void allocateRenderbuffer(BackendObject renderbuffer, DepthFormat format, int width, int height) = 0;
     // Clears `area` of the bound framebuffer's first `colourTargets` colour attachments (when

@@ -136,6 +136,7 @@ struct GraphicsDevice::Impl {
         BackendObject name = 0;
         bool image = false;
         SurfaceFormat format = SurfaceFormat::Color;  // images: the texture's format
+        bool typedBuffer = false;  // a buffer texture (core::TexelBuffer): Buffer<T> at t#, RWBuffer<T> at u# (image set)
     };
     std::array<StorageSlot, kMaxUnorderedAccessSlots> unorderedAccess{};
     std::array<StorageSlot, kMaxShaderResourceBuffers> resourceBuffers{};

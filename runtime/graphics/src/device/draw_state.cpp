@@ -157,6 +157,18 @@ void GraphicsDevice::Impl::applyShaders() {
     }
 }
 
+namespace {
+
+// Integer texels are never filtered (D3D10 has no filtered reads of them; GL leaves an integer
+// texture with a linear filter incomplete, reading 0): the nearest texel of the nearest level.
+SamplerState unfiltered(const SamplerState& s) {
+    SamplerState out = s;
+    out.Filter = TextureFilter::Point;
+    return out;
+}
+
+}  // namespace
+
 void GraphicsDevice::Impl::applyTextures() { applyTexturesOf(shaders.data(), shaders.size()); }
 
 void GraphicsDevice::Impl::applyTexturesOf(const ShaderProgram* const* programs, std::size_t count) {
@@ -190,7 +202,8 @@ void GraphicsDevice::Impl::applyTexturesOf(const ShaderProgram* const* programs,
             }
             // The sampler-object lookup (a map keyed by the state's bytes) runs only when the
             // slot's state differs from what is bound, not on every draw.
-            const SamplerState& wanted = device.SamplerStates[unit];
+            const SamplerState& wanted = texture && isIntegerFormat(texture->Format()) ? unfiltered(device.SamplerStates[unit])
+                                                                                         : device.SamplerStates[unit];
             std::size_t u = std::size_t(unit);
             if (shadow.unknown() || boundSamplers[u] == 0 || !(boundSamplerStates[u] == wanted)) {
                 BackendObject object = samplerFor(wanted);

@@ -100,6 +100,53 @@ void ByteBuffer::copyFrom(const ByteBuffer& source, std::size_t sourceOffset, st
     if (bytes) d.backend->copyBuffer(source.name_, name_, sourceOffset, destinationOffset, bytes);
 }
 
+// --- TexelBuffer
+
+// What GL's buffer textures hold (the formats a typed buffer view may take).
+bool isTexelBufferFormat(SurfaceFormat f) {
+    if (isIntegerFormat(f)) return true;
+    switch (f) {
+    case SurfaceFormat::Single: case SurfaceFormat::Vector2: case SurfaceFormat::Vector4: case SurfaceFormat::HalfSingle:
+    case SurfaceFormat::HalfVector2: case SurfaceFormat::HalfVector4: case SurfaceFormat::HdrBlendable: case SurfaceFormat::Color:
+    case SurfaceFormat::Rgba64: case SurfaceFormat::Rg32: case SurfaceFormat::R16: case SurfaceFormat::Rg8: case SurfaceFormat::R8:
+        return true;
+    default: return false;
+    }
+}
+
+TexelBuffer::TexelBuffer(GraphicsDevice& device, const ByteBuffer& buffer, SurfaceFormat format, std::size_t count)
+    : GraphicsResource(device, "TexelBuffer"), format_(format) {
+    if (!isTexelBufferFormat(format))
+        throw ArgumentError(describe() + ": format " + surfaceFormatName(format) + " is not one a typed buffer holds");
+    const std::size_t bytes = count * std::size_t(bytesPerPixel(format));
+    if (count == 0 || bytes > buffer.size())
+        throw ArgumentError(describe() + ": " + std::to_string(count) + " texels of " + surfaceFormatName(format) + " need " + std::to_string(bytes) +
+                            " bytes; the buffer has " + std::to_string(buffer.size()));
+    GraphicsDevice::Impl& d = deviceImpl(device);
+    name_ = d.backend->createBufferTexture(buffer.backendObject(), format, bytes);
+    ++d.live.textures;
+}
+
+TexelBuffer::~TexelBuffer() { disposeFromDestructor(); }
+
+void TexelBuffer::releaseGpuObjects() {
+    GraphicsDevice::Impl& d = deviceImpl(device());
+    d.forgetStorage(this);
+    d.deleteTexture(name_);
+}
+
+void setTexelBuffer(GraphicsDevice& device, bool unorderedAccess, int slot, const TexelBuffer* buffer) {
+    GraphicsDevice::Impl& d = deviceImpl(device);
+    const int slots = unorderedAccess ? kMaxUnorderedAccessSlots : kMaxShaderResourceBuffers;
+    if (slot < 0 || slot >= slots)
+        throw ArgumentError(std::string(unorderedAccess ? "unordered-access" : "shader-resource buffer") + " slot " + std::to_string(slot) +
+                            " is outside 0.." + std::to_string(slots - 1));
+    GraphicsDevice::Impl::StorageSlot wanted;
+    if (buffer) wanted = GraphicsDevice::Impl::StorageSlot{buffer, buffer->backendObject(), unorderedAccess, buffer->format(), true};
+    if (unorderedAccess) d.unorderedAccess[std::size_t(slot)] = wanted;
+    else d.resourceBuffers[std::size_t(slot)] = wanted;
+}
+
 // --- DepthBuffer
 
 DepthBuffer::DepthBuffer(GraphicsDevice& device, int width, int height, DepthFormat format)
@@ -111,6 +158,21 @@ DepthBuffer::DepthBuffer(GraphicsDevice& device, int width, int height, DepthFor
     storage_.width = width;
     storage_.height = height;
     deviceImpl(device).adoptDepthStorage(storage_);
+}
+
+DepthBuffer::DepthBuffer(GraphicsDevice& device, Texture2D& texture) : GraphicsResource(device, "DepthBuffer") {
+    switch (texture.Format()) {
+    case SurfaceFormat::Depth32: storage_.format = DepthFormat::Depth32F; break;
+    case SurfaceFormat::Depth24Stencil8: storage_.format = DepthFormat::Depth24Stencil8; break;
+    case SurfaceFormat::Depth16: storage_.format = DepthFormat::Depth16; break;
+    default:
+        throw ArgumentError(describe() + ": a texture of format " + surfaceFormatName(texture.Format()) +
+                            " is not a depth texture (Depth32, Depth24Stencil8 or Depth16)");
+    }
+    storage_.width = texture.Width();
+    storage_.height = texture.Height();
+    storage_.renderbuffer = texture.backendObject();
+    storage_.isTexture = true;
 }
 
 DepthBuffer::~DepthBuffer() { disposeFromDestructor(); }
@@ -347,7 +409,7 @@ void clearDepthBuffer(GraphicsDevice& device, DepthBuffer& buffer, bool depth, b
         return;
     }
     GraphicsDevice::Impl& d = deviceImpl(device);
-    d.backend->clearDepthStencil(s.renderbuffer, hasStencil, depth, stencil, depthValue, stencilValue);
+    d.backend->clearDepthStencil(s.renderbuffer, hasStencil, s.isTexture, depth, stencil, depthValue, stencilValue);
     d.shadow.invalidate();  // the next draw sets every state again (masks, scissor)
 }
 

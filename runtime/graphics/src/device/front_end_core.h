@@ -52,11 +52,36 @@ private:
     std::uint32_t name_ = 0;
 };
 
+// The first `count` elements of a ByteBuffer read as texels of `format` (D3D11's typed buffer views:
+// Buffer<T> at t#, RWBuffer<T> at u#). Throws ArgumentError for a format a buffer texture cannot
+// hold (sRGB, packed, snorm, BGRA, depth) or a range past the buffer. `buffer` must outlive it.
+bool isTexelBufferFormat(SurfaceFormat format);
+class TexelBuffer : public GraphicsResource {
+public:
+    TexelBuffer(GraphicsDevice& device, const ByteBuffer& buffer, SurfaceFormat format, std::size_t count);
+    ~TexelBuffer() override;
+    SurfaceFormat format() const { return format_; }
+    std::uint32_t backendObject() const { return name_; }
+
+protected:
+    void releaseGpuObjects() override;
+
+private:
+    SurfaceFormat format_;
+    std::uint32_t name_ = 0;
+};
+// Binds `buffer` (null: none) at register u`slot` (unorderedAccess: RWBuffer<T>) or t`slot` (Buffer<T>).
+void setTexelBuffer(GraphicsDevice& device, bool unorderedAccess, int slot, const TexelBuffer* buffer);
+
 // A depth/stencil buffer of its own (a D3D11 depth texture): made at the first draw that tests it
 // (the device's lazy depth storage), cleared through clearDepthBuffer.
 class DepthBuffer : public GraphicsResource {
 public:
     DepthBuffer(GraphicsDevice& device, int width, int height, DepthFormat format);
+    // The depth buffer that is level 0 of `texture` (SurfaceFormat Depth32, Depth24Stencil8 or
+    // Depth16): what draws write through it, shaders sample from the texture (a D3D11 shadow map's
+    // DSV and SRV). Made at once; `texture` must outlive it.
+    DepthBuffer(GraphicsDevice& device, Texture2D& texture);
     ~DepthBuffer() override;
     DepthStorage& storage() { return storage_; }
     int width() const { return storage_.width; }

@@ -394,7 +394,8 @@ void GraphicsDevice::Impl::bindTargets() {
     for (const RenderTargetBinding& b : bindings)
         key.push_back((std::uint64_t(b.RenderTarget->backendObject()) << 8) |
                       (b.RenderTarget->kind() == Texture::Kind::TextureCube ? 1 + std::uint64_t(b.CubeMapFace) : 0));
-    key.push_back(std::uint64_t(depth) << 8 | 0xff);
+    const bool depthIsTexture = depthOverride && depthOverride->isTexture;
+    key.push_back(std::uint64_t(depth) << 8 | (depthIsTexture ? 0xfe : 0xff));
     targetWidth = info.width;
     targetHeight = info.height;
     auto it = framebuffers.find(key);
@@ -406,7 +407,7 @@ void GraphicsDevice::Impl::bindTargets() {
         for (const RenderTargetBinding& b : bindings)
             colour.push_back({b.RenderTarget->backendObject(), b.RenderTarget->kind() == Texture::Kind::TextureCube ? int(b.CubeMapFace) : -1});
         std::string problem;
-        fbo = backend->createFramebuffer(colour, depth, depthFormat == DepthFormat::Depth24Stencil8, problem);
+        fbo = backend->createFramebuffer(colour, depth, depthFormat == DepthFormat::Depth24Stencil8, depthIsTexture, problem);
         if (fbo == 0)
             throw InvalidOperation("GraphicsDevice.SetRenderTargets: the driver rejects this combination of targets (" +
                                    std::string(surfaceFormatName(first->Format())) + ", " + problem + ")");

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "device/device_impl.h"
+#include "device/surface_formats.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/structured_buffer.h"
 #include "fxport/graphics/texture.h"
@@ -21,6 +22,32 @@ std::string slotOutside(const char* call, int slot, int count) {
 }
 
 std::string registerName(const xlate::StorageBinding& b) { return std::string(1, b.registerClass) + std::to_string(b.slot); }
+
+// What a binding reads or writes, and what a slot holds, in the words of the messages.
+const char* kindName(xlate::StorageKind kind) {
+    switch (kind) {
+    case xlate::StorageKind::Image: return "texture";
+    case xlate::StorageKind::TexelBuffer:
+    case xlate::StorageKind::ImageBuffer: return "typed buffer";
+    case xlate::StorageKind::Buffer: break;
+    }
+    return "buffer";
+}
+// D3D reads an integer view through a shader's other integer type bit for bit (an R32_SINT UAV as
+// RWBuffer<uint>): the integer format of `format`'s size and channels that the shader declares
+// (`shaderFormat`, "r32ui"), or `format` itself when there is none.
+SurfaceFormat sameBitsAs(Backend& backend, SurfaceFormat format, const std::string& shaderFormat) {
+    if (!isIntegerFormat(format)) return format;
+    for (int f = 0; f <= int(SurfaceFormat::Depth16); ++f) {
+        const SurfaceFormat other = SurfaceFormat(f);
+        if (isIntegerFormat(other) && bytesPerPixel(other) == bytesPerPixel(format) && channelCount(other) == channelCount(format) &&
+            shaderFormat == backend.imageFormatName(other))
+            return other;
+    }
+    return format;
+}
+
+const char* heldName(const GraphicsDevice::Impl::StorageSlot& slot) { return slot.typedBuffer ? "typed buffer" : slot.image ? "texture" : "buffer"; }
 
 }  // namespace
 
@@ -67,19 +94,20 @@ bool GraphicsDevice::Impl::applyStorage(const ShaderProgram* const* programs, st
                 throw InvalidOperation(use + ", but fxport has " + (uav ? "UAV" : "buffer SRV") + " slots 0.." + std::to_string(slots - 1) + " only");
             const StorageSlot& slot = uav ? unorderedAccess[std::size_t(b.slot)] : resourceBuffers[std::size_t(b.slot)];
             const char* setter = uav ? "SetUnorderedAccess" : "SetShaderResource";
-            const bool image = b.kind == xlate::StorageKind::Image;
+            const std::string wanted = kindName(b.kind);
             if (!slot.name)
-                throw InvalidOperation(use + ", but nothing is set there (" + setter + "(" + std::to_string(b.slot) + ", " +
-                                       (image ? "texture" : "buffer") + "))");
-            if (slot.image != image)
-                throw InvalidOperation(use + ", a " + (image ? "texture" : "buffer") + ", but slot " + std::to_string(b.slot) + " holds a " +
-                                       (slot.image ? "texture" : "buffer"));
-            if (image) {
+                throw InvalidOperation(use + ", but nothing is set there (" + setter + "(" + std::to_string(b.slot) + ", " + wanted + "))");
+            if (wanted != heldName(slot))
+                throw InvalidOperation(use + ", a " + wanted + ", but slot " + std::to_string(b.slot) + " holds a " + heldName(slot));
+            if (b.kind == xlate::StorageKind::Image || b.kind == xlate::StorageKind::ImageBuffer) {
                 const char* has = backend->imageFormatName(slot.format);
-                if (!b.format.empty() && b.format != has)
-                    throw InvalidOperation(use + " as " + b.format + " texels, but the texture in slot " + std::to_string(b.slot) + " holds " + has +
-                                           " texels; declare the RWTexture2D with the element type of the texture's format");
-                backend->bindStorageImage(b.binding, slot.name, slot.format, b.writes);
+                const SurfaceFormat as = b.format.empty() || b.format == has ? slot.format : sameBitsAs(*backend, slot.format, b.format);
+                if (as == slot.format && !b.format.empty() && b.format != has)
+                    throw InvalidOperation(use + " as " + b.format + " texels, but the " + wanted + " in slot " + std::to_string(b.slot) + " holds " +
+                                           has + " texels; declare the RWTexture2D / RWBuffer with the element type of its format");
+                backend->bindStorageImage(b.binding, slot.name, as, b.writes);
+            } else if (b.kind == xlate::StorageKind::TexelBuffer) {
+                backend->bindTexture(b.binding, slot.name);
             } else {
                 backend->bindStorageBuffer(b.binding, slot.name);
             }

@@ -68,26 +68,25 @@ public:
     bool isColorRenderable(SurfaceFormat format) override;
     const char* imageFormatName(SurfaceFormat format) override;
     BackendObject createTexture(bool cube, SurfaceFormat format, int levels, int width, int height) override;
+    BackendObject createBufferTexture(BackendObject buffer, SurfaceFormat format, std::size_t bytes) override;
     void deleteTexture(BackendObject texture) override { glDeleteTextures(1, &texture); }
     void writeTexture(BackendObject texture, SurfaceFormat format, int face, int level, const Rectangle& area,
                       const void* data) override;
     void readTexture(BackendObject texture, SurfaceFormat format, int face, int level, std::size_t bytes, void* out) override;
     void readTextureFloats(BackendObject texture, int face, int level, std::size_t bytes, void* out) override;
     Rectangle textureLevelSize(BackendObject texture, int level) override;
-    void clearTexture(BackendObject texture, int level, const float (&rgba)[4]) override {
-        glClearTexImage(texture, level, GL_RGBA, GL_FLOAT, rgba);
-    }
+    void clearTexture(BackendObject texture, int level, const float (&rgba)[4]) override;
     void generateMipmaps(BackendObject texture) override { glGenerateTextureMipmap(texture); }
     void copyTexture(const TextureCopy& copy) override;
 
     BackendObject createRenderbuffer() override;
     void deleteRenderbuffer(BackendObject renderbuffer) override { glDeleteRenderbuffers(1, &renderbuffer); }
     BackendObject createFramebuffer(const std::vector<ColorAttachment>& colour, BackendObject depth, bool depthHasStencil,
-                                    std::string& problem) override;
+                                    bool depthIsTexture, std::string& problem) override;
     void deleteFramebuffer(BackendObject framebuffer) override { glDeleteFramebuffers(1, &framebuffer); }
     void bindFramebuffer(BackendObject framebuffer) override { glBindFramebuffer(GL_FRAMEBUFFER, framebuffer); }
     void presentFlipped(BackendObject framebuffer, int width, int height) override;
-    void clearDepthStencil(BackendObject renderbuffer, bool hasStencil, bool depth, bool stencil, float depthValue,
+    void clearDepthStencil(BackendObject renderbuffer, bool hasStencil, bool isTexture, bool depth, bool stencil, float depthValue,
                            int stencilValue) override;
     void allocateRenderbuffer(BackendObject renderbuffer, DepthFormat format, int width, int height) override;
     void clearFramebuffer(BackendObject framebuffer, const Rectangle& area, int colourTargets, bool colour, const Vector4& color,

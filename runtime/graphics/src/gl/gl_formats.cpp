@@ -1,6 +1,7 @@
 #include "gl/gl_formats.h"
 
 #include <array>
+#include <iterator>
 
 #include "device/surface_formats.h"
 
@@ -10,39 +11,71 @@ namespace {
 
 // Indexed by SurfaceFormat. Bgr565/Bgra5551/Bgra4444 use GL's packed types with BGRA order so the
 // bytes XNA hands us upload unchanged.
-const std::array<detail::GlTextureFormat, 19> kFormats = {{
-    {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, 4, 4, false},                     // Color
-    {GL_RGB565, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, 2, 3, false},              // Bgr565
-    {GL_RGB5_A1, GL_BGRA, GL_UNSIGNED_SHORT_1_5_5_5_REV, 2, 4, false},      // Bgra5551
-    {GL_RGBA4, GL_BGRA, GL_UNSIGNED_SHORT_4_4_4_4_REV, 2, 4, false},        // Bgra4444
-    {GL_R8, GL_RED, GL_UNSIGNED_BYTE, 1, 1, false},                         // Alpha8 (read as .r; see DESIGN)
-    {GL_RGB10_A2, GL_RGBA, GL_UNSIGNED_INT_2_10_10_10_REV, 4, 4, false},    // Rgba1010102
-    {GL_RG16, GL_RG, GL_UNSIGNED_SHORT, 4, 2, false},                       // Rg32
-    {GL_RGBA16, GL_RGBA, GL_UNSIGNED_SHORT, 8, 4, false},                   // Rgba64
-    {GL_RG8_SNORM, GL_RG, GL_BYTE, 2, 2, false},                            // NormalizedByte2
-    {GL_RGBA8_SNORM, GL_RGBA, GL_BYTE, 4, 4, false},                        // NormalizedByte4
-    {GL_R32F, GL_RED, GL_FLOAT, 4, 1, true},                                // Single
-    {GL_RG32F, GL_RG, GL_FLOAT, 8, 2, true},                                // Vector2
-    {GL_RGBA32F, GL_RGBA, GL_FLOAT, 16, 4, true},                           // Vector4
-    {GL_R16F, GL_RED, GL_HALF_FLOAT, 2, 1, true},                           // HalfSingle
-    {GL_RG16F, GL_RG, GL_HALF_FLOAT, 4, 2, true},                           // HalfVector2
-    {GL_RGBA16F, GL_RGBA, GL_HALF_FLOAT, 8, 4, true},                       // HalfVector4
-    {GL_RGBA16F, GL_RGBA, GL_HALF_FLOAT, 8, 4, true},                       // HdrBlendable
-    {GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, GL_FLOAT, 4, 1, true},      // Depth32
-    {GL_SRGB8_ALPHA8, GL_RGBA, GL_UNSIGNED_BYTE, 4, 4, false},              // ColorSRgb
+const std::array<detail::GlTextureFormat, 44> kFormats = {{
+    {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, 4, 4, false, false},                     // Color
+    {GL_RGB565, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, 2, 3, false, false},              // Bgr565
+    {GL_RGB5_A1, GL_BGRA, GL_UNSIGNED_SHORT_1_5_5_5_REV, 2, 4, false, false},      // Bgra5551
+    {GL_RGBA4, GL_BGRA, GL_UNSIGNED_SHORT_4_4_4_4_REV, 2, 4, false, false},        // Bgra4444
+    {GL_R8, GL_RED, GL_UNSIGNED_BYTE, 1, 1, false, false},                         // Alpha8 (read as .r; see DESIGN)
+    {GL_RGB10_A2, GL_RGBA, GL_UNSIGNED_INT_2_10_10_10_REV, 4, 4, false, false},    // Rgba1010102
+    {GL_RG16, GL_RG, GL_UNSIGNED_SHORT, 4, 2, false, false},                       // Rg32
+    {GL_RGBA16, GL_RGBA, GL_UNSIGNED_SHORT, 8, 4, false, false},                   // Rgba64
+    {GL_RG8_SNORM, GL_RG, GL_BYTE, 2, 2, false, false},                            // NormalizedByte2
+    {GL_RGBA8_SNORM, GL_RGBA, GL_BYTE, 4, 4, false, false},                        // NormalizedByte4
+    {GL_R32F, GL_RED, GL_FLOAT, 4, 1, true, false},                                // Single
+    {GL_RG32F, GL_RG, GL_FLOAT, 8, 2, true, false},                                // Vector2
+    {GL_RGBA32F, GL_RGBA, GL_FLOAT, 16, 4, true, false},                           // Vector4
+    {GL_R16F, GL_RED, GL_HALF_FLOAT, 2, 1, true, false},                           // HalfSingle
+    {GL_RG16F, GL_RG, GL_HALF_FLOAT, 4, 2, true, false},                           // HalfVector2
+    {GL_RGBA16F, GL_RGBA, GL_HALF_FLOAT, 8, 4, true, false},                       // HalfVector4
+    {GL_RGBA16F, GL_RGBA, GL_HALF_FLOAT, 8, 4, true, false},                       // HdrBlendable
+    {GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, GL_FLOAT, 4, 1, true, false},      // Depth32
+    {GL_SRGB8_ALPHA8, GL_RGBA, GL_UNSIGNED_BYTE, 4, 4, false, false},              // ColorSRgb
+    {GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, 4, 1, false, true},         // R32UInt
+    {GL_R32I, GL_RED_INTEGER, GL_INT, 4, 1, false, true},                   // R32SInt
+    {GL_RG32UI, GL_RG_INTEGER, GL_UNSIGNED_INT, 8, 2, false, true},         // Rg32UInt
+    {GL_RG32I, GL_RG_INTEGER, GL_INT, 8, 2, false, true},                   // Rg32SInt
+    {GL_RGBA32UI, GL_RGBA_INTEGER, GL_UNSIGNED_INT, 16, 4, false, true},    // Rgba32UInt
+    {GL_RGBA32I, GL_RGBA_INTEGER, GL_INT, 16, 4, false, true},              // Rgba32SInt
+    {GL_R16UI, GL_RED_INTEGER, GL_UNSIGNED_SHORT, 2, 1, false, true},       // R16UInt
+    {GL_R16I, GL_RED_INTEGER, GL_SHORT, 2, 1, false, true},                 // R16SInt
+    {GL_RG16UI, GL_RG_INTEGER, GL_UNSIGNED_SHORT, 4, 2, false, true},       // Rg16UInt
+    {GL_RG16I, GL_RG_INTEGER, GL_SHORT, 4, 2, false, true},                 // Rg16SInt
+    {GL_RGBA16UI, GL_RGBA_INTEGER, GL_UNSIGNED_SHORT, 8, 4, false, true},   // Rgba16UInt
+    {GL_RGBA16I, GL_RGBA_INTEGER, GL_SHORT, 8, 4, false, true},             // Rgba16SInt
+    {GL_R8UI, GL_RED_INTEGER, GL_UNSIGNED_BYTE, 1, 1, false, true},         // R8UInt
+    {GL_R8I, GL_RED_INTEGER, GL_BYTE, 1, 1, false, true},                   // R8SInt
+    {GL_RG8UI, GL_RG_INTEGER, GL_UNSIGNED_BYTE, 2, 2, false, true},         // Rg8UInt
+    {GL_RG8I, GL_RG_INTEGER, GL_BYTE, 2, 2, false, true},                   // Rg8SInt
+    {GL_RGBA8UI, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, 4, 4, false, true},     // Rgba8UInt
+    {GL_RGBA8I, GL_RGBA_INTEGER, GL_BYTE, 4, 4, false, true},               // Rgba8SInt
+    {GL_RGBA8, GL_BGRA, GL_UNSIGNED_BYTE, 4, 4, false, false},              // Bgra32 (bytes B, G, R, A)
+    {GL_SRGB8_ALPHA8, GL_BGRA, GL_UNSIGNED_BYTE, 4, 4, false, false},       // Bgra32SRgb
+    {GL_R16, GL_RED, GL_UNSIGNED_SHORT, 2, 1, false, false},                // R16
+    {GL_RG8, GL_RG, GL_UNSIGNED_BYTE, 2, 2, false, false},                  // Rg8
+    {GL_R8, GL_RED, GL_UNSIGNED_BYTE, 1, 1, false, false},                  // R8
+    {GL_DEPTH24_STENCIL8, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, 4, 1, false, false},  // Depth24Stencil8
+    {GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, 2, 1, false, false},  // Depth16
 }};
 
 const char* const kFormatNames[] = {
     "Color", "Bgr565", "Bgra5551", "Bgra4444", "Alpha8", "Rgba1010102", "Rg32", "Rgba64",
     "NormalizedByte2", "NormalizedByte4", "Single", "Vector2", "Vector4", "HalfSingle",
     "HalfVector2", "HalfVector4", "HdrBlendable", "Depth32", "ColorSRgb",
+    "R32UInt", "R32SInt", "Rg32UInt", "Rg32SInt", "Rgba32UInt", "Rgba32SInt",
+    "R16UInt", "R16SInt", "Rg16UInt", "Rg16SInt", "Rgba16UInt", "Rgba16SInt",
+    "R8UInt", "R8SInt", "Rg8UInt", "Rg8SInt", "Rgba8UInt", "Rgba8SInt",
+    "Bgra32", "Bgra32SRgb", "R16", "Rg8", "R8", "Depth24Stencil8", "Depth16",
 };
+static_assert(std::size(kFormatNames) == kFormats.size(), "one name per SurfaceFormat");
+static_assert(std::size_t(SurfaceFormat::Depth16) + 1 == kFormats.size(), "one row per SurfaceFormat");
 
 }  // namespace
 
 int bytesPerPixel(SurfaceFormat format) { return kFormats.at(std::size_t(format)).bytesPerPixel; }
 int channelCount(SurfaceFormat format) { return kFormats.at(std::size_t(format)).channels; }
 bool isFloatFormat(SurfaceFormat format) { return kFormats.at(std::size_t(format)).isFloat; }
+bool isIntegerFormat(SurfaceFormat format) { return kFormats.at(std::size_t(format)).isInteger; }
 const char* surfaceFormatName(SurfaceFormat format) { return kFormatNames[std::size_t(format)]; }
 const char* depthFormatName(DepthFormat format) {
     switch (format) {
@@ -50,6 +83,7 @@ const char* depthFormatName(DepthFormat format) {
     case DepthFormat::Depth16: return "Depth16";
     case DepthFormat::Depth24: return "Depth24";
     case DepthFormat::Depth24Stencil8: return "Depth24Stencil8";
+    case DepthFormat::Depth32F: return "Depth32F";
     }
     return "?";
 }
@@ -64,13 +98,15 @@ GLenum glDepthFormat(DepthFormat format) {
     case DepthFormat::Depth16: return GL_DEPTH_COMPONENT16;
     case DepthFormat::Depth24: return GL_DEPTH_COMPONENT24;
     case DepthFormat::Depth24Stencil8: return GL_DEPTH24_STENCIL8;
+    case DepthFormat::Depth32F: return GL_DEPTH_COMPONENT32F;
     }
     return GL_NONE;
 }
 
 bool isColorRenderable(SurfaceFormat format) {
     // Snorm formats are not required to be renderable in GL 4.5 core.
-    return format != SurfaceFormat::NormalizedByte2 && format != SurfaceFormat::NormalizedByte4 && format != SurfaceFormat::Depth32;
+    return format != SurfaceFormat::NormalizedByte2 && format != SurfaceFormat::NormalizedByte4 && format != SurfaceFormat::Depth32 &&
+           format != SurfaceFormat::Depth24Stencil8 && format != SurfaceFormat::Depth16;
 }
 
 }  // namespace detail

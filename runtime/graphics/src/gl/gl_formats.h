@@ -13,6 +13,7 @@ struct GlTextureFormat {
     int bytesPerPixel;
     int channels;           // 1..4 (for PNG export)
     bool isFloat;           // float or half texels (PNG export clamps)
+    bool isInteger;         // *_INTEGER client formats; sampled unfiltered
 };
 
 const GlTextureFormat& glFormat(SurfaceFormat format);

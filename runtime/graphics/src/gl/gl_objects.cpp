@@ -12,6 +12,9 @@ namespace {
 // D3D9 returns 1 for the channels a format lacks (R32F reads (r,1,1,1)), GL returns 0 for green and
 // blue; Alpha8 reads (0,0,0,a) in D3D. Swizzles make GL read what the effects were written against.
 void applyD3D9Swizzle(GLuint name, SurfaceFormat format) {
+    // The formats after ColorSRgb are D3D10+'s (none is an XNA format): they read missing channels
+    // as (0, 0, 1), which GL does too.
+    if (format > SurfaceFormat::ColorSRgb) return;
     int channels = detail::glFormat(format).channels;
     if (format == SurfaceFormat::Alpha8) {
         glTextureParameteri(name, GL_TEXTURE_SWIZZLE_R, GL_ZERO);
@@ -63,6 +66,8 @@ void GlBackend::allocateBuffer(BackendObject buffer, std::size_t bytes, const vo
 bool GlBackend::isColorRenderable(SurfaceFormat format) { return detail::isColorRenderable(format); }
 
 const char* GlBackend::imageFormatName(SurfaceFormat format) {
+    // Alpha8 is stored as red with a swizzle: an image load would not read what a sample does.
+    if (format == SurfaceFormat::Alpha8) return "";
     switch (detail::glFormat(format).internalFormat) {
     case GL_R32F: return "r32f";
     case GL_RG32F: return "rg32f";
@@ -77,6 +82,23 @@ const char* GlBackend::imageFormatName(SurfaceFormat format) {
     case GL_R32I: return "r32i";
     case GL_RGBA32UI: return "rgba32ui";
     case GL_RGBA32I: return "rgba32i";
+    case GL_RG32UI: return "rg32ui";
+    case GL_RG32I: return "rg32i";
+    case GL_R16UI: return "r16ui";
+    case GL_R16I: return "r16i";
+    case GL_RG16UI: return "rg16ui";
+    case GL_RG16I: return "rg16i";
+    case GL_RGBA16UI: return "rgba16ui";
+    case GL_RGBA16I: return "rgba16i";
+    case GL_R8UI: return "r8ui";
+    case GL_R8I: return "r8i";
+    case GL_RG8UI: return "rg8ui";
+    case GL_RG8I: return "rg8i";
+    case GL_RGBA8UI: return "rgba8ui";
+    case GL_RGBA8I: return "rgba8i";
+    case GL_R16: return "r16";
+    case GL_RG8: return "rg8";
+    case GL_R8: return "r8";
     default: return "";
     }
 }
@@ -86,6 +108,13 @@ BackendObject GlBackend::createTexture(bool cube, SurfaceFormat format, int leve
     glCreateTextures(cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D, 1, &name);
     glTextureStorage2D(name, levels, detail::glFormat(format).internalFormat, width, height);
     applyD3D9Swizzle(name, format);
+    return name;
+}
+
+BackendObject GlBackend::createBufferTexture(BackendObject buffer, SurfaceFormat format, std::size_t bytes) {
+    GLuint name = 0;
+    glCreateTextures(GL_TEXTURE_BUFFER, 1, &name);
+    glTextureBufferRange(name, detail::glFormat(format).internalFormat, buffer, 0, GLsizeiptr(bytes));
     return name;
 }
 
@@ -100,7 +129,7 @@ void GlBackend::allocateRenderbuffer(BackendObject renderbuffer, DepthFormat for
 }
 
 BackendObject GlBackend::createFramebuffer(const std::vector<ColorAttachment>& colour, BackendObject depth, bool depthHasStencil,
-                                           std::string& problem) {
+                                           bool depthIsTexture, std::string& problem) {
     GLuint fbo = 0;
     glCreateFramebuffers(1, &fbo);
     std::vector<GLenum> drawBuffers;
@@ -111,8 +140,11 @@ BackendObject GlBackend::createFramebuffer(const std::vector<ColorAttachment>& c
         drawBuffers.push_back(attachment);
     }
     glNamedFramebufferDrawBuffers(fbo, GLsizei(drawBuffers.size()), drawBuffers.data());
-    if (depth != 0)
-        glNamedFramebufferRenderbuffer(fbo, depthHasStencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+    const GLenum depthAttachment = depthHasStencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT;
+    if (depth != 0 && depthIsTexture) glNamedFramebufferTexture(fbo, depthAttachment, depth, 0);
+    else if (depth != 0) glNamedFramebufferRenderbuffer(fbo, depthAttachment, GL_RENDERBUFFER, depth);
+    // A depth-only pass (no colour targets) draws no colour.
+    if (colour.empty()) glNamedFramebufferDrawBuffer(fbo, GL_NONE);
     GLenum status = glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
         glDeleteFramebuffers(1, &fbo);

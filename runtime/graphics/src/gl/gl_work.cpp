@@ -1,6 +1,7 @@
 // The work the OpenGL backend issues (gl_backend.h): draws, texel transfers and copies, clears of
 // a texture or a depth buffer, storage images, and the flipped blit a window shows.
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 #include "gl/gl_backend.h"
@@ -87,13 +88,45 @@ void GlBackend::presentFlipped(BackendObject framebuffer, int width, int height)
     glBlitNamedFramebuffer(framebuffer, 0, 0, 0, width, height, 0, height, width, 0, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
-void GlBackend::clearDepthStencil(BackendObject renderbuffer, bool hasStencil, bool depth, bool stencil, float depthValue,
+namespace {
+
+// D3D11's rule for a float clear of an integer texture: each value is truncated toward zero and
+// clamped to the channel's range (NaN to 0).
+template <class Integer>
+Integer clearValueOf(float v, int bits, bool isSigned) {
+    if (!(v == v)) return 0;
+    const double top = isSigned ? std::ldexp(1.0, bits - 1) - 1.0 : std::ldexp(1.0, bits) - 1.0;
+    const double bottom = isSigned ? -std::ldexp(1.0, bits - 1) : 0.0;
+    return Integer(std::clamp(std::trunc(double(v)), bottom, top));
+}
+
+}  // namespace
+
+void GlBackend::clearTexture(BackendObject texture, int level, const float (&rgba)[4]) {
+    GLint type = GL_NONE, bits = 0;
+    glGetTextureLevelParameteriv(texture, level, GL_TEXTURE_RED_TYPE, &type);
+    glGetTextureLevelParameteriv(texture, level, GL_TEXTURE_RED_SIZE, &bits);
+    if (type == GL_UNSIGNED_INT) {
+        GLuint u[4];
+        for (int i = 0; i < 4; ++i) u[i] = clearValueOf<GLuint>(rgba[i], bits, false);
+        glClearTexImage(texture, level, GL_RGBA_INTEGER, GL_UNSIGNED_INT, u);
+    } else if (type == GL_INT) {
+        GLint n[4];
+        for (int i = 0; i < 4; ++i) n[i] = clearValueOf<GLint>(rgba[i], bits, true);
+        glClearTexImage(texture, level, GL_RGBA_INTEGER, GL_INT, n);
+    } else {
+        glClearTexImage(texture, level, GL_RGBA, GL_FLOAT, rgba);
+    }
+}
+
+void GlBackend::clearDepthStencil(BackendObject renderbuffer, bool hasStencil, bool isTexture, bool depth, bool stencil, float depthValue,
                                   int stencilValue) {
     // A framebuffer of its own, so that neither the bound targets nor the viewport matter.
     GLuint fbo = 0;
     glCreateFramebuffers(1, &fbo);
-    glNamedFramebufferRenderbuffer(fbo, hasStencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
-                                   renderbuffer);
+    const GLenum attachment = hasStencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT;
+    if (isTexture) glNamedFramebufferTexture(fbo, attachment, renderbuffer, 0);
+    else glNamedFramebufferRenderbuffer(fbo, attachment, GL_RENDERBUFFER, renderbuffer);
     glNamedFramebufferDrawBuffer(fbo, GL_NONE);
     // glClear* honour the write masks and the scissor.
     glDepthMask(GL_TRUE);
@@ -114,7 +147,23 @@ void GlBackend::clearFramebuffer(BackendObject framebuffer, const Rectangle& are
         const float c[4] = {color.X, color.Y, color.Z, color.W};
         for (int i = 0; i < colourTargets; ++i) {
             glColorMaski(GLuint(i), GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-            glClearNamedFramebufferfv(framebuffer, GL_COLOR, GLint(i), c);
+            // An integer target (SurfaceFormat R32UInt ...) takes integers: a float clear of it is undefined in GL.
+            GLint type = GL_FLOAT, bits = 32;
+            if (framebuffer != 0) {
+                glGetNamedFramebufferAttachmentParameteriv(framebuffer, GLenum(GL_COLOR_ATTACHMENT0 + i), GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &type);
+                glGetNamedFramebufferAttachmentParameteriv(framebuffer, GLenum(GL_COLOR_ATTACHMENT0 + i), GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE, &bits);
+            }
+            if (type == GL_UNSIGNED_INT) {
+                GLuint u[4];
+                for (int k = 0; k < 4; ++k) u[k] = clearValueOf<GLuint>(c[k], bits, false);
+                glClearNamedFramebufferuiv(framebuffer, GL_COLOR, GLint(i), u);
+            } else if (type == GL_INT) {
+                GLint n[4];
+                for (int k = 0; k < 4; ++k) n[k] = clearValueOf<GLint>(c[k], bits, true);
+                glClearNamedFramebufferiv(framebuffer, GL_COLOR, GLint(i), n);
+            } else {
+                glClearNamedFramebufferfv(framebuffer, GL_COLOR, GLint(i), c);
+            }
         }
     }
     if (depth) glDepthMask(GL_TRUE);

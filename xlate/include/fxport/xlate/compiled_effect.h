@@ -143,9 +143,12 @@ struct UniformBlock {
 // A buffer or image a shader reads or writes outside the sampler path: D3D11 UAVs (RWStructuredBuffer,
 // RWByteAddressBuffer, RWTexture2D, register uN) and structured/raw buffer SRVs (StructuredBuffer,
 // ByteAddressBuffer, register tN). GL bindings: a buffer is an SSBO at `binding` (uN -> N,
-// tN -> kSrvBufferBindingBase + N); an image is an image unit `binding` (uN -> N).
-enum class StorageKind : std::uint8_t { Buffer, Image };
+// tN -> kSrvBufferBindingBase + N); an image is an image unit `binding` (uN -> N). Typed buffers:
+// Buffer<T> (register tN) is a texel buffer read by texelFetch from texture unit
+// kTexelBufferUnitBase + N; RWBuffer<T> (uN) an image buffer at image unit N.
+enum class StorageKind : std::uint8_t { Buffer, Image, TexelBuffer, ImageBuffer };
 inline constexpr int kSrvBufferBindingBase = 8;
+inline constexpr int kTexelBufferUnitBase = 32;  // past the sampler units a draw uses (0-31)
 struct StorageBinding {
     StorageKind kind = StorageKind::Buffer;
     std::string name;          // the HLSL variable

@@ -29,9 +29,28 @@ enum class SurfaceFormat : std::uint8_t {
                    // SamplerComparisonState (SampleCmp) for PCF shadows; not a render-target format
     ColorSRgb,     // RGBA8 stored sRGB-encoded: a target D3D9's SRGBWriteEnable encodes into (and
                    // that sampling decodes to linear)
+    // Integer texels (D3D10+'s *_UINT / *_SINT formats: Texture2D<uint4>.Load, integer render
+    // targets, RWTexture2D<int>). Never filtered: a sampler on them reads the nearest texel of the
+    // nearest level. Missing channels read (0, 0, 1) as D3D10 reads them.
+    R32UInt, R32SInt, Rg32UInt, Rg32SInt, Rgba32UInt, Rgba32SInt,
+    R16UInt, R16SInt, Rg16UInt, Rg16SInt, Rgba16UInt, Rgba16SInt,
+    R8UInt, R8SInt, Rg8UInt, Rg8SInt, Rgba8UInt, Rgba8SInt,
+    Bgra32,      // BGRA8 unorm in memory (D3D's B8G8R8A8_UNORM): shaders read (r, g, b, a)
+    Bgra32SRgb,  // the same, sRGB-encoded
+    R16,         // R16 unorm
+    Rg8,         // RG8 unorm
+    R8,          // R8 unorm (read as (r, 0, 0, 1), not XNA Alpha8's (0, 0, 0, a))
+    // Depth textures a shader samples (D3D's R24G8_TYPELESS / R16_TYPELESS shadow maps, read as
+    // R24_UNORM_X8_TYPELESS / R16_UNORM): (depth, 0, 0, 1), or compared by SampleCmp. Like Depth32,
+    // not colour render targets.
+    Depth24Stencil8,  // 24-bit unorm depth and 8-bit stencil (SetData/GetData: one uint32, depth in the high 24 bits)
+    Depth16,          // 16-bit unorm depth (SetData/GetData: uint16)
 };
 
-enum class DepthFormat : std::uint8_t { None, Depth16, Depth24, Depth24Stencil8 };
+enum class DepthFormat : std::uint8_t {
+    None, Depth16, Depth24, Depth24Stencil8,
+    Depth32F,  // fxport addition (D3D10+'s D32_FLOAT): 32-bit float depth, no stencil
+};
 
 // What happens to a render target's contents when it is set as a target again, as XNA 4 on Windows:
 // SetRenderTarget(s) clears a DiscardContents target (colour to GraphicsDevice::DiscardColor, depth
@@ -41,6 +60,8 @@ enum class RenderTargetUsage : std::uint8_t { DiscardContents, PreserveContents,
 
 // Bytes of one texel (what SetData/GetData exchange per pixel).
 int bytesPerPixel(SurfaceFormat format);
+// Whether texels are integers (R32UInt ... Rgba8SInt): sampled unfiltered, cleared with integers.
+bool isIntegerFormat(SurfaceFormat format);
 // "Color", "HalfVector4" ... for messages.
 const char* surfaceFormatName(SurfaceFormat format);
 const char* depthFormatName(DepthFormat format);

@@ -44,7 +44,8 @@ void GraphicsDevice::Impl::adoptDepthStorage(DepthStorage& storage) {
 }
 
 void GraphicsDevice::Impl::releaseDepthStorage(DepthStorage& storage) {
-    deleteRenderbuffer(storage.renderbuffer);
+    if (!storage.isTexture) deleteRenderbuffer(storage.renderbuffer);  // a depth texture is its texture's
+    storage.renderbuffer = 0;
     storage.waitingClear = 0;
 }
 

@@ -1,0 +1,227 @@
+// Shadow maps as D3D11 programs make them: a typeless texture (R32_TYPELESS, R16_TYPELESS) with
+// BIND_DEPTH_STENCIL | BIND_SHADER_RESOURCE, written through its depth-stencil view (D32_FLOAT,
+// D16_UNORM) by a draw whose depth runs across the target, then read through its shader-resource
+// view (R32_FLOAT, R16_UNORM) by Load and by SampleCmpLevelZero with a comparison sampler; both
+// compared per pixel with the CPU's plane depth; the same through a depth-only pass (no render
+// target, no pixel shader). D32_FLOAT depth buffers; the descriptions D3D
+// refuses (a D24_UNORM_S8_UINT texture with SHADER_RESOURCE, a typeless texture's view without a
+// format, a view of the wrong format) answered with the field and value.
+#include <cmath>
+#include <cstring>
+
+#include "d3d11_test_support.h"
+
+namespace d3d11test {
+namespace {
+
+constexpr UINT kSize = 4;
+
+// Pass 1: one triangle over the target, depth = 0.25 * u (u the horizontal position in 0..1).
+const char* const kDepthPass = R"(
+float4 vs(uint id : SV_VertexID) : SV_Position {
+    float2 corner = float2((id << 1) & 2, id & 2);
+    return float4(corner * float2(2, -2) + float2(-1, 1), corner.x * 0.25, 1);
+}
+float4 ps() : SV_Target { return float4(1, 1, 1, 1); }
+)";
+
+// Pass 2: each pixel reads its own texel of the depth texture and compares 0.06 with it.
+const char* const kReadPass = R"(
+Texture2D<float> Depth : register(t0);
+SamplerComparisonState Less : register(s0);
+float4 vs(uint id : SV_VertexID) : SV_Position {
+    float2 corner = float2((id << 1) & 2, id & 2);
+    return float4(corner * float2(2, -2) + float2(-1, 1), 0, 1);
+}
+float4 ps(float4 pos : SV_Position) : SV_Target {
+    float2 uv = pos.xy / 4;
+    return float4(Depth.Load(int3(pos.xy, 0)), Depth.SampleCmpLevelZero(Less, uv, 0.06), 0, 1);
+}
+)";
+
+float planeDepth(UINT x) { return 0.25f * (float(x) + 0.5f) / float(kSize); }
+
+struct Shaders {
+    ComPtr<ID3D11VertexShader> vs;
+    ComPtr<ID3D11PixelShader> ps;
+    Shaders(Device& d, const char* source) {
+        ComPtr<ID3DBlob> v = compile(source, "vs", "vs_5_0"), p = compile(source, "ps", "ps_5_0");
+        if (!v || !p) return;
+        EXPECT_EQ(d.device->CreateVertexShader(v->GetBufferPointer(), v->GetBufferSize(), nullptr, vs.GetAddressOf()), S_OK) << lastError();
+        EXPECT_EQ(d.device->CreatePixelShader(p->GetBufferPointer(), p->GetBufferSize(), nullptr, ps.GetAddressOf()), S_OK) << lastError();
+    }
+    void set(Device& d) {
+        d.context->VSSetShader(vs.Get(), nullptr, 0);
+        d.context->PSSetShader(ps.Get(), nullptr, 0);
+    }
+};
+
+ComPtr<ID3D11Texture2D> makeTarget(Device& d, DXGI_FORMAT format, UINT bind) {
+    D3D11_TEXTURE2D_DESC desc;
+    desc.Width = desc.Height = kSize;
+    desc.MipLevels = desc.ArraySize = 1;
+    desc.Format = format;
+    desc.BindFlags = bind;
+    ComPtr<ID3D11Texture2D> t;
+    EXPECT_EQ(d.device->CreateTexture2D(&desc, nullptr, t.GetAddressOf()), S_OK) << lastError();
+    return t;
+}
+
+// Renders the plane into a `typeless` shadow map through a `depthView` DSV, reads it back through
+// an `sampledView` SRV: (depth read, comparison result) per pixel of the top row.
+// `depthOnly`: the depth pass binds no render target and no pixel shader, as shadow-map passes do.
+std::vector<std::array<float, 2>> shadowRoundTrip(DXGI_FORMAT typeless, DXGI_FORMAT depthView, DXGI_FORMAT sampledView, bool depthOnly = false) {
+    Device d;
+    std::vector<std::array<float, 2>> out;
+    ComPtr<ID3D11Texture2D> shadow = makeTarget(d, typeless, D3D11_BIND_DEPTH_STENCIL | D3D11_BIND_SHADER_RESOURCE);
+    ComPtr<ID3D11Texture2D> colour = makeTarget(d, DXGI_FORMAT_R8G8B8A8_UNORM, D3D11_BIND_RENDER_TARGET);
+    ComPtr<ID3D11Texture2D> result = makeTarget(d, DXGI_FORMAT_R32G32B32A32_FLOAT, D3D11_BIND_RENDER_TARGET);
+    if (!shadow || !colour || !result) return out;
+    D3D11_DEPTH_STENCIL_VIEW_DESC dsvDesc;
+    dsvDesc.Format = depthView;
+    dsvDesc.ViewDimension = D3D11_DSV_DIMENSION_TEXTURE2D;
+    ComPtr<ID3D11DepthStencilView> dsv;
+    EXPECT_EQ(d.device->CreateDepthStencilView(shadow.Get(), &dsvDesc, dsv.GetAddressOf()), S_OK) << lastError();
+    D3D11_SHADER_RESOURCE_VIEW_DESC srvDesc;
+    srvDesc.Format = sampledView;
+    srvDesc.ViewDimension = D3D11_SRV_DIMENSION_TEXTURE2D;
+    srvDesc.Texture2D.MipLevels = 1;
+    ComPtr<ID3D11ShaderResourceView> srv;
+    EXPECT_EQ(d.device->CreateShaderResourceView(shadow.Get(), &srvDesc, srv.GetAddressOf()), S_OK) << lastError();
+    ComPtr<ID3D11RenderTargetView> colourView, resultView;
+    EXPECT_EQ(d.device->CreateRenderTargetView(colour.Get(), nullptr, colourView.GetAddressOf()), S_OK) << lastError();
+    EXPECT_EQ(d.device->CreateRenderTargetView(result.Get(), nullptr, resultView.GetAddressOf()), S_OK) << lastError();
+    D3D11_SAMPLER_DESC samplerDesc;
+    samplerDesc.Filter = D3D11_FILTER_COMPARISON_MIN_MAG_MIP_POINT;
+    samplerDesc.ComparisonFunc = D3D11_COMPARISON_LESS;
+    ComPtr<ID3D11SamplerState> sampler;
+    EXPECT_EQ(d.device->CreateSamplerState(&samplerDesc, sampler.GetAddressOf()), S_OK) << lastError();
+    if (!dsv || !srv || !colourView || !resultView || !sampler) return out;
+
+    D3D11_VIEWPORT viewport;
+    viewport.Width = viewport.Height = float(kSize);
+    d.context->RSSetViewports(1, &viewport);
+    d.context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+    Shaders depthPass(d, kDepthPass), readPass(d, kReadPass);
+    d.context->ClearDepthStencilView(dsv.Get(), D3D11_CLEAR_DEPTH, 1.0f, 0);
+    d.context->OMSetRenderTargets(depthOnly ? 0 : 1, depthOnly ? nullptr : colourView.GetAddressOfConst(), dsv.Get());
+    depthPass.set(d);
+    if (depthOnly) d.context->PSSetShader(nullptr, nullptr, 0);
+    d.context->Draw(3, 0);
+    EXPECT_EQ(lastError(), "");
+    d.context->OMSetRenderTargets(1, resultView.GetAddressOfConst(), nullptr);  // the shadow map is read now
+    readPass.set(d);
+    d.context->PSSetShaderResources(0, 1, srv.GetAddressOfConst());
+    d.context->PSSetSamplers(0, 1, sampler.GetAddressOfConst());
+    d.context->Draw(3, 0);
+    EXPECT_EQ(lastError(), "");
+
+    D3D11_TEXTURE2D_DESC staging;
+    result->GetDesc(&staging);
+    staging.Usage = D3D11_USAGE_STAGING;
+    staging.BindFlags = 0;
+    staging.CPUAccessFlags = D3D11_CPU_ACCESS_READ;
+    ComPtr<ID3D11Texture2D> copy;
+    EXPECT_EQ(d.device->CreateTexture2D(&staging, nullptr, copy.GetAddressOf()), S_OK) << lastError();
+    if (!copy) return out;
+    d.context->CopyResource(copy.Get(), result.Get());
+    D3D11_MAPPED_SUBRESOURCE m;
+    EXPECT_EQ(d.context->Map(copy.Get(), 0, D3D11_MAP_READ, 0, &m), S_OK) << lastError();
+    if (!m.pData) return out;
+    for (UINT x = 0; x < kSize; ++x) {
+        float texel[4];
+        std::memcpy(texel, static_cast<const std::uint8_t*>(m.pData) + x * 16, 16);
+        out.push_back({texel[0], texel[1]});
+    }
+    d.context->Unmap(copy.Get(), 0);
+    return out;
+}
+
+void expectPlane(const std::vector<std::array<float, 2>>& got, float tolerance) {
+    ASSERT_EQ(got.size(), kSize);
+    for (UINT x = 0; x < kSize; ++x) {
+        EXPECT_NEAR(got[x][0], planeDepth(x), tolerance) << "depth of pixel " << x;
+        // D3D's comparison: reference LESS texel passes (1), else 0.
+        EXPECT_EQ(got[x][1], 0.06f < planeDepth(x) ? 1.0f : 0.0f) << "comparison at pixel " << x << " (depth " << planeDepth(x) << ")";
+    }
+}
+
+TEST(D3D11DepthTexture, R32TypelessShadowMapIsWrittenAndSampled) {
+    expectPlane(shadowRoundTrip(DXGI_FORMAT_R32_TYPELESS, DXGI_FORMAT_D32_FLOAT, DXGI_FORMAT_R32_FLOAT), 1e-6f);
+}
+
+TEST(D3D11DepthTexture, DepthOnlyPassWithoutTargetOrPixelShader) {
+    expectPlane(shadowRoundTrip(DXGI_FORMAT_R32_TYPELESS, DXGI_FORMAT_D32_FLOAT, DXGI_FORMAT_R32_FLOAT, true), 1e-6f);
+}
+
+TEST(D3D11DepthTexture, R16TypelessShadowMapIsWrittenAndSampled) {
+    expectPlane(shadowRoundTrip(DXGI_FORMAT_R16_TYPELESS, DXGI_FORMAT_D16_UNORM, DXGI_FORMAT_R16_UNORM), 1.0f / 65535.0f);
+}
+
+TEST(D3D11DepthTexture, R24G8TypelessShadowMapIsWrittenAndSampled) {
+    expectPlane(shadowRoundTrip(DXGI_FORMAT_R24G8_TYPELESS, DXGI_FORMAT_D24_UNORM_S8_UINT, DXGI_FORMAT_R24_UNORM_X8_TYPELESS), 1.0f / 16777215.0f);
+}
+
+TEST(D3D11DepthTexture, D32FloatDepthBufferTests) {
+    Device d;
+    D3D11_TEXTURE2D_DESC desc;
+    desc.Width = desc.Height = kSize;
+    desc.MipLevels = desc.ArraySize = 1;
+    desc.Format = DXGI_FORMAT_D32_FLOAT;
+    desc.BindFlags = D3D11_BIND_DEPTH_STENCIL;
+    ComPtr<ID3D11Texture2D> depth;
+    ASSERT_EQ(d.device->CreateTexture2D(&desc, nullptr, depth.GetAddressOf()), S_OK) << lastError();
+    ComPtr<ID3D11DepthStencilView> dsv;
+    ASSERT_EQ(d.device->CreateDepthStencilView(depth.Get(), nullptr, dsv.GetAddressOf()), S_OK) << lastError();
+    ComPtr<ID3D11Texture2D> colour = makeTexture(d, kSize, kSize, D3D11_BIND_RENDER_TARGET);
+    ComPtr<ID3D11RenderTargetView> rtv;
+    ASSERT_EQ(d.device->CreateRenderTargetView(colour.Get(), nullptr, rtv.GetAddressOf()), S_OK) << lastError();
+    const float black[4] = {0, 0, 0, 0};
+    d.context->ClearRenderTargetView(rtv.Get(), black);
+    // Depth cleared to 0.1: only pixels whose plane depth is below it pass LESS.
+    d.context->ClearDepthStencilView(dsv.Get(), D3D11_CLEAR_DEPTH, 0.1f, 0);
+    d.context->OMSetRenderTargets(1, rtv.GetAddressOfConst(), dsv.Get());
+    D3D11_VIEWPORT viewport;
+    viewport.Width = viewport.Height = float(kSize);
+    d.context->RSSetViewports(1, &viewport);
+    d.context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+    Shaders pass(d, kDepthPass);
+    pass.set(d);
+    d.context->Draw(3, 0);
+    ASSERT_EQ(lastError(), "");
+    std::vector<std::array<std::uint8_t, 4>> pixels = readPixels(d, colour.Get());
+    for (UINT x = 0; x < kSize; ++x)
+        EXPECT_EQ(pixels[x][0], planeDepth(x) < 0.1f ? 255 : 0) << "pixel " << x << " (depth " << planeDepth(x) << ")";
+}
+
+TEST(D3D11DepthTexture, RefusedDescriptionsNameTheField) {
+    Device d;
+    D3D11_TEXTURE2D_DESC desc;
+    desc.Width = desc.Height = kSize;
+    desc.MipLevels = desc.ArraySize = 1;
+    desc.Format = DXGI_FORMAT_D24_UNORM_S8_UINT;
+    desc.BindFlags = D3D11_BIND_DEPTH_STENCIL | D3D11_BIND_SHADER_RESOURCE;
+    ComPtr<ID3D11Texture2D> t;
+    EXPECT_EQ(d.device->CreateTexture2D(&desc, nullptr, t.GetAddressOf()), E_INVALIDARG);
+    EXPECT_NE(lastError().find("BindFlags = 72 with Format = DXGI_FORMAT_D24_UNORM_S8_UINT"), std::string::npos) << lastError();
+    desc.Format = DXGI_FORMAT_R32_TYPELESS;
+    ASSERT_EQ(d.device->CreateTexture2D(&desc, nullptr, t.GetAddressOf()), S_OK) << lastError();
+    ComPtr<ID3D11ShaderResourceView> srv;
+    EXPECT_EQ(d.device->CreateShaderResourceView(t.Get(), nullptr, srv.GetAddressOf()), E_INVALIDARG);
+    EXPECT_NE(lastError().find("pDesc is null for a DXGI_FORMAT_R32_TYPELESS texture"), std::string::npos) << lastError();
+    D3D11_DEPTH_STENCIL_VIEW_DESC dsvDesc;
+    dsvDesc.Format = DXGI_FORMAT_R32_FLOAT;
+    dsvDesc.ViewDimension = D3D11_DSV_DIMENSION_TEXTURE2D;
+    ComPtr<ID3D11DepthStencilView> dsv;
+    EXPECT_EQ(d.device->CreateDepthStencilView(t.Get(), &dsvDesc, dsv.GetAddressOf()), E_INVALIDARG);
+    EXPECT_NE(lastError().find("D3D11_DEPTH_STENCIL_VIEW_DESC.Format = DXGI_FORMAT_R32_FLOAT for a DXGI_FORMAT_R32_TYPELESS texture "
+                               "(its depth-stencil view is DXGI_FORMAT_D32_FLOAT)"),
+              std::string::npos)
+        << lastError();
+    desc.BindFlags = D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_RENDER_TARGET;
+    EXPECT_EQ(d.device->CreateTexture2D(&desc, nullptr, t.GetAddressOf()), E_NOTIMPL);
+    EXPECT_NE(lastError().find("Format = DXGI_FORMAT_R32_TYPELESS"), std::string::npos) << lastError();
+}
+
+}  // namespace
+}  // namespace d3d11test
