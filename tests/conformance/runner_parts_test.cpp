@@ -130,6 +130,43 @@ TEST(UniformLayout, Sm2AllocatesReadParametersByRegistersUsed) {
     EXPECT_EQ(l.placements[1].scalarOffsets[0], 8);
 }
 
+// A struct's members each get a placement and the path EffectParameter takes to them: SM4 packs
+// them like cbuffer members from the struct's register (cbuffer.shader_test: `float a; struct {
+// float b; float c; } p; float d;` reads b, c, d from c1.xyz); SM2-3 give each member a register
+// (register-reservations-numeric: `struct { float2 a; float b; } apple : register(c2)` reads b from c3).
+fxport::xlate::Parameter appleStruct(int elements) {
+    using C = fxport::xlate::ParameterClass;
+    fxport::xlate::Parameter s = numeric("apple", C::Struct, 1, 1);
+    s.elements = elements;
+    s.members = {numeric("a", C::Vector, 1, 2), numeric("b", C::Scalar, 1, 1)};
+    return s;
+}
+
+TEST(UniformLayout, Sm4PlacesStructMembersAndElements) {
+    using C = fxport::xlate::ParameterClass;
+    fxport::xlate::CompiledEffect e;
+    e.parameters = {numeric("x", C::Scalar, 1, 1), appleStruct(2), numeric("y", C::Scalar, 1, 1)};
+    UniformLayout l = computeUniformLayout(e, "", 40);
+    ASSERT_EQ(l.placements.size(), 6u);
+    EXPECT_EQ(l.placements[1].path, (std::vector<std::pair<bool, int>>{{false, 0}, {true, 0}}));
+    EXPECT_EQ(l.placements[1].scalarOffsets, (std::vector<int>{4, 5}));  // apple[0].a: c1.xy
+    EXPECT_EQ(l.placements[2].scalarOffsets, (std::vector<int>{6}));     // apple[0].b: c1.z
+    EXPECT_EQ(l.placements[3].scalarOffsets, (std::vector<int>{8, 9}));  // apple[1]: the next register
+    EXPECT_EQ(l.placements[4].path, (std::vector<std::pair<bool, int>>{{false, 1}, {true, 1}}));
+    EXPECT_EQ(l.placements[4].scalarOffsets, (std::vector<int>{10}));
+    EXPECT_EQ(l.placements[5].scalarOffsets, (std::vector<int>{11}));  // y in apple[1]'s last register
+}
+
+TEST(UniformLayout, Sm3GivesEachStructMemberARegister) {
+    fxport::xlate::CompiledEffect e;
+    e.parameters = {appleStruct(0)};
+    UniformLayout l = computeUniformLayout(e, "struct { float2 a; float b; } apple : register(c2);\n", 30);
+    ASSERT_EQ(l.placements.size(), 2u);
+    EXPECT_EQ(l.placements[0].path, (std::vector<std::pair<bool, int>>{{true, 0}}));
+    EXPECT_EQ(l.placements[0].scalarOffsets, (std::vector<int>{8, 9}));
+    EXPECT_EQ(l.placements[1].scalarOffsets, (std::vector<int>{12}));
+}
+
 TEST(D3d11Descs, FormatsNamedByTheSuite) {
     using namespace fxport::d3d11;
     EXPECT_EQ(dxgiFormat(parseFormat("r32g32b32a32-uint")), DXGI_FORMAT_R32G32B32A32_UINT);

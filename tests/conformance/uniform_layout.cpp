@@ -92,17 +92,54 @@ int explicitOffset(const std::string& source, const Parameter& p, int model) {
     return model >= 40 && p.block != 0 ? explicitPackOffset(source, p.name) : -1;
 }
 
-ParameterPlacement placeAt(const CompiledEffect& effect, int index, int start) {
+// D3D9 registers of one struct element: each member starts a register (register-reservations-
+// numeric: `struct { float2 a; float b; }` at c2 puts b at c3).
+int structRegisters(const Parameter& p) {
+    int n = 0;
+    for (const Parameter& m : p.members) n += shapeOf(m).registers * std::max(1, m.elements);
+    return n;
+}
+
+// Placements of the parameter at component `start`: itself, or for a struct each member of each
+// element (SM4 packing, or a register per member at SM2-3).
+std::vector<ParameterPlacement> placeAt(const CompiledEffect& effect, int index, int start, bool d3d9) {
     const Parameter& p = effect.parameters[std::size_t(index)];
     ParameterPlacement out;
     out.parameter = index;
-    if (p.parameterClass == ParameterClass::Struct) {
-        out.settable = false;
-        out.why = "struct uniform '" + p.name + "' (EffectParameter sets no struct members)";
-        return out;
+    out.leaf = &p;
+    if (p.parameterClass != ParameterClass::Struct) {
+        out.scalarOffsets = scalarOffsets(p, start);
+        return {out};
     }
-    out.scalarOffsets = scalarOffsets(p, start);
-    return out;
+    for (const Parameter& m : p.members)
+        if (m.parameterClass == ParameterClass::Struct) {
+            out.settable = false;
+            out.why = "struct uniform '" + p.name + "' with a struct member (the runner sets one level of members)";
+            return {out};
+        }
+    std::vector<ParameterPlacement> leaves;
+    const int elementComponents = d3d9 ? structRegisters(p) * 4 : (structFootprint(p) + 3) / 4 * 4;
+    for (int e = 0; e < std::max(1, p.elements); ++e) {
+        int offset = start + e * elementComponents;
+        for (std::size_t k = 0; k < p.members.size(); ++k) {
+            const Parameter& m = p.members[k];
+            ParameterPlacement leaf;
+            leaf.parameter = index;
+            leaf.leaf = &m;
+            if (p.elements > 0) leaf.path.push_back({false, e});
+            leaf.path.push_back({true, int(k)});
+            int size = d3d9 ? shapeOf(m).registers * std::max(1, m.elements) * 4 : memberFootprint(m);
+            if (!d3d9) offset = packNext(offset, m, size);
+            leaf.scalarOffsets = scalarOffsets(m, offset);
+            offset += size;
+            leaves.push_back(std::move(leaf));
+        }
+    }
+    return leaves;
+}
+
+void addPlacements(UniformLayout& layout, std::vector<ParameterPlacement> placements) {
+    for (ParameterPlacement& p : placements) layout.placements.push_back(std::move(p));
 }
 
 // Which block vkd3d's uniforms feed at SM4+: the cbuffer at register b0 -- $Globals when it has
@@ -151,7 +188,7 @@ UniformLayout cbufferLayout(const CompiledEffect& effect, const std::string& sou
             while (overlapsReserved(reserved, start, size)) start = packNext((start / 4 + 1) * 4, p, size);
             offset = start + size;
         }
-        layout.placements.push_back(placeAt(effect, int(i), start));
+        addPlacements(layout, placeAt(effect, int(i), start, false));
     }
     return layout;
 }
@@ -178,6 +215,23 @@ int usedRegisters(const CompiledEffect& effect, const Parameter& p) {
     return used;
 }
 
+// The same for a struct, whose D3D9 registers are its members' one after another; member k's
+// register j is found in fxport's layout from the member's reflected offset and strides.
+int usedStructRegisters(const CompiledEffect& effect, const Parameter& p) {
+    if (p.offset < 0) return 0;
+    int used = 0, k = 0;
+    for (int e = 0; e < std::max(1, p.elements); ++e)
+        for (const Parameter& m : p.members) {
+            ElementShape s = shapeOf(m);
+            for (int j = 0; j < std::max(1, m.elements); ++j)
+                for (int r = 0; r < s.registers; ++r, ++k) {
+                    int start = m.offset + e * p.arrayStride + j * m.arrayStride + (m.parameterClass == ParameterClass::Matrix ? r * m.matrixStride : 0);
+                    if (m.offset >= 0 && rangeRead(effect, p.block, start, s.componentsPerRegister * 4)) used = k + 1;
+                }
+        }
+    return used;
+}
+
 // D3D9: parameters with explicit register(cN) keep them; the others the shaders read take whole
 // float registers, in decreasing order of registers used, ties in declaration order (as fxc does;
 // sm1-const-allocation.shader_test documents it).
@@ -198,10 +252,13 @@ UniformLayout registerLayout(const CompiledEffect& effect, const std::string& so
         const Parameter& p = effect.parameters[i];
         if (p.isStatic || !(isNumeric(p) || p.parameterClass == ParameterClass::Struct)) continue;
         int start = explicitOffset(source, p, model);
-        int used = p.parameterClass == ParameterClass::Struct ? 1 : usedRegisters(effect, p);
+        int used = p.parameterClass == ParameterClass::Struct ? usedStructRegisters(effect, p) : usedRegisters(effect, p);
         if (start >= 0) {
-            reserve(start / 4, std::max(1, used));
-            layout.placements.push_back(placeAt(effect, int(i), start));
+            // A register reservation takes the whole variable, read or not (register-reservations-
+            // numeric: `float4 a[3]; float4 b[2] : register(c1);` puts a at c3).
+            int whole = std::max(1, p.elements) * (p.parameterClass == ParameterClass::Struct ? structRegisters(p) : shapeOf(p).registers);
+            reserve(start / 4, std::max(1, whole));
+            addPlacements(layout, placeAt(effect, int(i), start, true));
         } else if (used > 0) {
             pending.push_back({used, int(i)});
         }
@@ -217,7 +274,7 @@ UniformLayout registerLayout(const CompiledEffect& effect, const std::string& so
         int reg = 0;
         while (!isFree(reg, used)) ++reg;
         reserve(reg, used);
-        layout.placements.push_back(placeAt(effect, i, reg * 4));
+        addPlacements(layout, placeAt(effect, i, reg * 4, true));
     }
     return layout;
 }

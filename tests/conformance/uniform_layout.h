@@ -11,12 +11,18 @@
 
 namespace fxport::xlate {
 struct CompiledEffect;
+struct Parameter;
 }
 
 namespace conformance {
 
 struct ParameterPlacement {
     int parameter = -1;              // index into CompiledEffect::parameters
+    // A struct's member (of element i of an array of structs): the steps from the parameter,
+    // (a member?, index), as EffectParameter's StructureMembers()[k] / Elements()[i] take them,
+    // and the member's reflection. Empty / the parameter itself for a numeric parameter.
+    std::vector<std::pair<bool, int>> path;
+    const fxport::xlate::Parameter* leaf = nullptr;
     std::vector<int> scalarOffsets;  // D3D component offset of scalar k (row by row, element by element)
     bool settable = true;            // false: a struct or a type the runtime cannot set
     std::string why;                 // when not settable

@@ -60,9 +60,10 @@ std::string XnaSession::applyUniforms(fxport::Effect& effect, const std::string&
     if (!uncovered.empty()) throw Unsupported(uncovered);
     UniformLayout layout = computeUniformLayout(compiled, source, model_);
     for (const ParameterPlacement& placement : layout.placements) {
-        const fxport::xlate::Parameter& p = compiled.parameters[std::size_t(placement.parameter)];
+        const fxport::xlate::Parameter& top = compiled.parameters[std::size_t(placement.parameter)];
         if (!placement.settable) throw Unsupported(placement.why);
-        if (p.offset < 0) continue;  // no shader reads it
+        if (top.offset < 0) continue;  // no shader reads it
+        const fxport::xlate::Parameter& p = placement.leaf ? *placement.leaf : top;
         // D3D reads 0 past the end of the constant data bound (and ignores HLSL initializers of
         // loose shaders' globals), so every parameter is written, unset ones as 0.
         std::vector<float> floats;
@@ -73,9 +74,10 @@ std::string XnaSession::applyUniforms(fxport::Effect& effect, const std::string&
             if (p.type == fxport::xlate::ParameterType::Float) floats.push_back(float(v));
             else ints.push_back(int(std::int64_t(v)));
         }
-        fxport::EffectParameter& parameter = effect.Parameters[p.name];
-        if (p.type == fxport::xlate::ParameterType::Float) parameter.SetValue(std::span<const float>(floats));
-        else parameter.SetValue(std::span<const int>(ints));
+        fxport::EffectParameter* parameter = &effect.Parameters[top.name];
+        for (const auto& [isMember, k] : placement.path) parameter = isMember ? &parameter->StructureMembers()[k] : &parameter->Elements()[k];
+        if (p.type == fxport::xlate::ParameterType::Float) parameter->SetValue(std::span<const float>(floats));
+        else parameter->SetValue(std::span<const int>(ints));
     }
     return layout.guess;
 }

@@ -29,8 +29,9 @@ float4 VS(VSIn v) : SV_Position
 }
 )";
 
-// D3D packs `f` into the tail of the array's last register (164) and `g` into n's (268); GLSL's
-// std140 cannot, so fxport's GL block has them at 176 and 288.
+// D3D packs `f` into the tail of the array's last register (36), which GLSL's std140 cannot
+// declare: fxport's GL block is then an array of registers, read at D3D's offsets
+// (d3d11_cbuffer_packing_test.cpp draws with such blocks).
 const char* kTails = R"(
 cbuffer Tails
 {
@@ -103,7 +104,7 @@ TEST(D3D11Shaders, ReflectionGivesD3DPackedOffsetsRegistersAndSignature) {
     EXPECT_NE(lastError().find("vs_5_0 shader, not a pixel shader"), std::string::npos) << lastError();
 }
 
-TEST(D3D11Shaders, VariablesInARegisterTailAreReflectedButNoShaderIsMade) {
+TEST(D3D11Shaders, VariablesInARegisterTailAreReflectedAndTheShaderIsMade) {
     Device d;
     ComPtr<ID3DBlob> vs = compile(kTails, "VS", "vs_4_0", "tails.hlsl");
     ASSERT_TRUE(vs);
@@ -113,9 +114,8 @@ TEST(D3D11Shaders, VariablesInARegisterTailAreReflectedButNoShaderIsMade) {
     ASSERT_EQ(r->GetVariableByName("f")->GetDesc(&v), S_OK);
     EXPECT_EQ(v.StartOffset, 36u);
     ComPtr<ID3D11VertexShader> shader;
-    EXPECT_EQ(d.device->CreateVertexShader(vs->GetBufferPointer(), vs->GetBufferSize(), nullptr, shader.GetAddressOf()), E_FAIL);
-    EXPECT_NE(lastError().find("variable 'f': D3D packs it at byte 36, fxport's GL layout at 48"), std::string::npos) << lastError();
-    EXPECT_FALSE(shader);
+    EXPECT_EQ(d.device->CreateVertexShader(vs->GetBufferPointer(), vs->GetBufferSize(), nullptr, shader.GetAddressOf()), S_OK) << lastError();
+    EXPECT_TRUE(shader);
 }
 
 TEST(D3D11Shaders, CompileErrorsComeBackInTheErrorBlobWithFileAndLine) {

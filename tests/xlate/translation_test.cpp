@@ -576,21 +576,33 @@ std::string glslBlockName(const std::string& block) { return block == "$Global" 
 
 // Every parameter the reflection places in a block sits exactly where the GL driver, reading the
 // generated GLSL, puts it: same offset, strides, matrix order, block binding; the block is no
-// smaller than the driver's.
+// smaller than the driver's. A block GLSL cannot declare at D3D's offsets is an array of 16-byte
+// registers (cbuffer_packing.h): the driver sees `registers`, at offset 0 with stride 16.
 void expectReflectionMatchesGl(const CompiledEffect& e, int vs, int ps) {
     std::set<int> blocksDeclared;  // a shader declares every block it reads a range of
     for (int s : {vs, ps})
         for (const auto& r : e.shaders[size_t(s)].uniformRangesRead) blocksDeclared.insert(r.block);
     std::vector<std::string> names;
+    for (int b : blocksDeclared) names.push_back(glslBlockName(e.uniformBlocks.at(size_t(b)).name) + ".registers[0]");
     for (const auto& p : e.parameters)
         if (p.offset >= 0 && blocksDeclared.count(p.block))
             names.push_back(glslBlockName(e.uniformBlocks.at(size_t(p.block)).name) + "." + p.name + (p.elements ? "[0]" : ""));
     auto gl = glLayout(e.shaders[size_t(vs)].glsl, e.shaders[size_t(ps)].glsl, names);
-    size_t k = 0;
+    size_t k = blocksDeclared.size();
     for (const auto& p : e.parameters) {
         if (p.offset < 0 || !blocksDeclared.count(p.block)) continue;
-        const GlMember& m = gl[names[k++]];
         const UniformBlock& b = e.uniformBlocks.at(size_t(p.block));
+        EXPECT_TRUE(b.d3dPacking) << b.name;
+        const GlMember& registers = gl[glslBlockName(b.name) + ".registers[0]"];
+        if (registers.found) {
+            ++k;
+            EXPECT_EQ(registers.offset, 0) << b.name;
+            EXPECT_EQ(registers.arrayStride, 16) << b.name;
+            EXPECT_EQ(registers.blockBinding, b.binding) << b.name;
+            EXPECT_GE(b.size, registers.blockSize) << b.name;
+            continue;
+        }
+        const GlMember& m = gl[names[k++]];
         ASSERT_TRUE(m.found) << names[k - 1] << " is not a uniform of the linked program";
         EXPECT_EQ(m.offset, p.offset) << p.name;
         EXPECT_EQ(m.blockBinding, b.binding) << p.name;
@@ -644,7 +656,7 @@ TEST(UniformBlocks, GlobalsAndCBuffersPackTheHlslWay) {
     at("Palette", 2, 16, 64);
     at("UvScale", 2, 80, 8);
     at("UvOffset", 2, 88, 8);
-    at("UvRotation", 2, 96, 48);     // fxc counts 44 (the last column's w is padding); the GLSL mat3 is 48
+    at("UvRotation", 2, 96, 44);     // fxc's 44: the last column's w is padding
     at("DebugColor", 3, -1, 0);      // its block is read by no shader, but the parameter still names it
     EXPECT_EQ(param(e, "Albedo").offset, -1);
     EXPECT_FALSE(param(e, "View").rowMajor);
@@ -685,21 +697,21 @@ TEST(UniformBlocks, GlobalsAndCBuffersPackTheHlslWay) {
     EXPECT_EQ(serializeEffect(back), serializeEffect(e));
 }
 
-// glslang packs a cbuffer the HLSL way, which GLSL cannot always declare: a float3 right after a
-// float (HLSL: offset 4, inside the first register) and a scalar in the unused tail of an array's
-// last register. Such a block is re-laid out with std140 rules (what glslang does for $Global
-// anyway); reflection reports the layout the GLSL really has, so the runtime's uploads land right.
-TEST(UniformBlocks, CBufferPackingGlslCannotDeclareFallsBackToStd140) {
+// D3D's packing GLSL cannot declare: a float3 right after a float (offset 4, inside the first
+// register) and a scalar in the unused tail of an array's last register. Such a block is read as an
+// array of registers (cbuffer_packing.h), so reflection, the GLSL and a D3D host agree on fxc's
+// offsets; a block GLSL can declare keeps them with layout(offset = N).
+TEST(UniformBlocks, CBufferPackingGlslCannotDeclareIsReadAsRegisters) {
     const char* src = R"(
 float  GlobalTime;
-float3 GlobalTint;   // std140 in $Global: 16 (fxc: 4)
+float3 GlobalTint;   // fxc: 4
 cbuffer Awkward
 {
     float  Scale;    // 0
-    float3 Tint;     // fxc: 4; std140: 16
-    float  Weights[3];  // fxc: 32, stride 16, last element ends at 68; std140: 32, 48 bytes
-    float  After;    // fxc: 68 (tail of Weights[2]'s register); std140: 80
-    float4x4 M;      // fxc: 80; std140: 96
+    float3 Tint;     // fxc: 4
+    float  Weights[3];  // fxc: 16, stride 16, the last element ends at 52
+    float  After;    // fxc: 52 (tail of Weights[2]'s register)
+    float4x4 M;      // fxc: 64
 };
 cbuffer Fine { float3 Dir; float Len; };
 float4 VS(float4 p : POSITION) : SV_Position { return mul(p * Scale * Weights[2] + After, M) * Len + float4(Dir, 0); }
@@ -707,14 +719,15 @@ float4 PS(float4 p : SV_Position) : SV_Target { return float4(Tint * GlobalTint 
 technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelShader(CompileShader(ps_4_0, PS())); } }
 )";
     CompiledEffect e = compileEffectSource(src, "virtual/Awkward.fx", noCache());
-    EXPECT_EQ(param(e, "GlobalTint").offset, 16);
+    EXPECT_EQ(param(e, "GlobalTint").offset, 4);
     EXPECT_EQ(param(e, "Scale").offset, 0);
-    EXPECT_EQ(param(e, "Tint").offset, 16);
-    EXPECT_EQ(param(e, "Weights").offset, 32);
+    EXPECT_EQ(param(e, "Tint").offset, 4);
+    EXPECT_EQ(param(e, "Weights").offset, 16);
     EXPECT_EQ(param(e, "Weights").arrayStride, 16);
-    EXPECT_EQ(param(e, "After").offset, 80);
-    EXPECT_EQ(param(e, "M").offset, 96);
-    EXPECT_EQ(e.uniformBlocks.at(1).size, 160);
+    EXPECT_EQ(param(e, "After").offset, 52);
+    EXPECT_EQ(param(e, "M").offset, 64);
+    EXPECT_EQ(e.uniformBlocks.at(1).size, 128);
+    EXPECT_TRUE(e.uniformBlocks.at(1).d3dPacking);
     // A block GLSL can declare keeps the HLSL packing.
     EXPECT_EQ(param(e, "Dir").offset, 0);
     EXPECT_EQ(param(e, "Len").offset, 12);

@@ -908,6 +908,30 @@ void EffectBuilder::checkTessellationPass(Pass& pass, size_t token) {
     pass.valid = false;
 }
 
+namespace {
+
+// A struct parameter's members at their offsets in the block (those of element 0 of an array of
+// structs; element i is arrayStride further), so they can be set one by one.
+void placeStructMembers(Parameter& param, const UniformMember& layout) {
+    const bool byPosition = param.members.size() == layout.members.size();  // names may repeat (struct b : a shadowing)
+    for (size_t k = 0; k < param.members.size(); ++k)
+        for (size_t j = 0; j < layout.members.size(); ++j) {
+            Parameter& member = param.members[k];
+            const UniformMember& u = layout.members[j];
+            if (byPosition ? j != k : u.name != member.name) continue;
+            member.block = param.block;
+            member.offset = param.offset + u.offset;
+            member.size = u.size;
+            member.matrixStride = u.matrixStride;
+            member.arrayStride = u.arrayStride;
+            if (member.parameterClass == ParameterClass::Matrix) member.rowMajor = u.hlslRowMajor;
+            placeStructMembers(member, u);
+            break;
+        }
+}
+
+}  // namespace
+
 void EffectBuilder::finishReflection() {
     // Block list: $Global, then every user cbuffer in declaration order (bindings as spirv_to_glsl
     // assigns them). All shaders compile the same rewritten source, so each block has one layout;
@@ -934,13 +958,15 @@ void EffectBuilder::finishReflection() {
             const UniformBlockLayout& first = *it->second;
             bool same = block.size == first.size && block.members.size() == first.members.size();
             for (size_t i = 0; same && i < block.members.size(); ++i)
-                same = block.members[i].name == first.members[i].name && block.members[i].offset == first.members[i].offset;
+                same = block.members[i].name == first.members[i].name && block.members[i].offset == first.members[i].offset &&
+                       block.d3dPacking == first.d3dPacking;
             if (!same) error(diag::kSpirv, "shaders of this effect disagree on the layout of constant buffer '" + block.name + "' (internal error)", 0);
         }
     }
     for (const auto& [index, layout] : layouts) {
         if (index < 0 || static_cast<size_t>(index) >= effect_.uniformBlocks.size()) continue;
         effect_.uniformBlocks[static_cast<size_t>(index)].size = layout->size;
+        effect_.uniformBlocks[static_cast<size_t>(index)].d3dPacking = layout->d3dPacking;
         for (const auto& m : layout->members) {
             int p = parameterIndex(m.name);
             if (p < 0) continue;
@@ -951,6 +977,7 @@ void EffectBuilder::finishReflection() {
             param.matrixStride = m.matrixStride;
             param.arrayStride = m.arrayStride;
             if (param.parameterClass == ParameterClass::Matrix) param.rowMajor = m.hlslRowMajor;
+            placeStructMembers(param, m);
         }
     }
     effect_.uniformBufferSize = effect_.uniformBlocks[0].size;

@@ -337,7 +337,7 @@ json effectJson(const CompiledEffect& effect, bool full) {
     }
     j["uniformBufferSize"] = effect.uniformBufferSize;
     json blocks = json::array();
-    for (const auto& b : effect.uniformBlocks) blocks.push_back({{"name", b.name}, {"binding", b.binding}, {"size", b.size}});
+    for (const auto& b : effect.uniformBlocks) blocks.push_back({{"name", b.name}, {"binding", b.binding}, {"size", b.size}, {"d3dPacking", b.d3dPacking}});
     j["uniformBlocks"] = blocks;
     if (full) {  // D3D registers as declared (not part of the golden reflection)
         json resources = json::array();
@@ -477,7 +477,7 @@ CompiledEffect deserializeEffect(std::string_view text, const std::string& nameF
         CompiledEffect e;
         e.sourcePath = j.value("sourcePath", std::string());
         e.uniformBufferSize = j.value("uniformBufferSize", 0);
-        for (const auto& b : j.at("uniformBlocks")) e.uniformBlocks.push_back({b.at("name"), b.at("binding"), b.at("size")});
+        for (const auto& b : j.at("uniformBlocks")) e.uniformBlocks.push_back({b.at("name"), b.at("binding"), b.at("size"), b.value("d3dPacking", false)});
         if (j.contains("resources"))
             for (const auto& r : j.at("resources")) {
                 const int kind = r.at("kind");

@@ -905,7 +905,7 @@ private:
         std::string semantic;
         int registerIndex = -1;
         char registerClass = 0;  // its letter, lower case
-        int packOffset = -1;  // packoffset(cN.y) in floats (checked for overlaps; glslang places it)
+        int packOffset = -1;  // packoffset(cN.y) in floats (checked for overlaps; cbuffer_packing places it)
         std::vector<Annotation> annotations;
         size_t annotationBegin = 0, annotationEnd = 0;
     };
@@ -922,10 +922,10 @@ private:
         int component = 0;
         if (i < text.size()) {
             if (text[i] != '.' || i + 2 != text.size()) return -1;
-            const char* comps = "xyzw";
+            const char* comps = "xyzwrgba";  // c0.b is c0.z
             const char* c = std::strchr(comps, std::tolower(static_cast<unsigned char>(text[i + 1])));
             if (!c || !*c) return -1;
-            component = int(c - comps);
+            component = int(c - comps) % 4;
         }
         return int(reg) * 4 + component;
     }
@@ -946,7 +946,9 @@ private:
                     // Only SetVertexShaderConstantF-style code cares, which XNA's Effect never is.
                     if (reg[0] == 'c' || reg[0] == 'C' || (after > pos_ + 3)) blank(pos_ - 2, after);
                 } else if (iequals(word, "packoffset")) {
+                    // cbuffer_packing.cpp places the member; glslang would refuse c0.b and C2.
                     tail.packOffset = packOffsetIn(pos_ + 1, after - 1);
+                    if (tail.packOffset >= 0) blank(pos_ - 2, after);
                 }
                 pos_ = after;
             } else {

@@ -6,6 +6,7 @@
 #include <map>
 #include <set>
 
+#include "cbuffer_packing.h"
 #include "entry_wrapper.h"
 #include "text_util.h"
 
@@ -234,12 +235,29 @@ void declareHullModes(GlslCompiler& compiler, const Tessellation& hull) {
     else if (hull.outputTopology == "point") compiler.set_execution_mode(spv::ExecutionModePointMode);
 }
 
+// A cbuffer named like a GLSL keyword (`cbuffer buffer`, `cbuffer shared`) cannot name a GLSL
+// block, and SPIRV-Cross writes block names as they are: such a block is declared under another
+// name (bindings, not names, connect it).
+bool isGlslKeyword(const std::string& name) {
+    static const std::set<std::string> kKeywords = {
+        "active", "asm", "atomic_uint", "attribute", "buffer", "cast", "centroid", "class", "coherent", "common", "const",
+        "enum", "extern", "external", "filter", "fixed", "flat", "goto", "half", "highp", "image1D", "image2D", "image3D",
+        "input", "inline", "interface", "invariant", "layout", "long", "lowp", "mediump", "namespace", "noinline",
+        "noperspective", "output", "partition", "patch", "precise", "precision", "public", "readonly", "resource",
+        "restrict", "sample", "shared", "short", "sizeof", "smooth", "static", "subroutine", "superp", "template", "this",
+        "typedef", "union", "unsigned", "using", "varying", "volatile", "writeonly", "main"};
+    return kKeywords.count(name) > 0 || name.rfind("gl_", 0) == 0;
+}
+
 }  // namespace
 
 GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, const RewrittenEffect& effect,
                        VaryingLocations& varyings, const Tessellation* hull) {
     GlslShader out;
     try {
+        std::vector<PackedBlock> packed = packConstantBuffers(spirv, *effect.syntax);
+        for (PackedBlock& b : packed)
+            if (!b.glslDeclarable) flattenConstantBuffer(spirv, b);
         GlslCompiler compiler(std::move(spirv));
         compiler.build_dummy_sampler_for_combined_images();
         compiler.build_combined_image_samplers();
@@ -262,6 +280,7 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
             }
             UniformBlockLayout block;
             block.name = blockName;
+            if (isGlslKeyword(blockName)) compiler.set_name(ubo.base_type_id, "fxport_cbuffer_" + blockName);
             if (blockName != "$Global") {
                 // User cbuffers: binding 2 + their declaration order in the effect, the same in
                 // every stage whichever cbuffers a stage happens to use.
@@ -270,8 +289,22 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
                 block.index = 1 + static_cast<int>(it - names.begin());  // one past the end: unknown, still distinct
             }
             compiler.set_decoration(ubo.id, spv::DecorationBinding, block.index == 0 ? 0u : static_cast<uint32_t>(1 + block.index));
+            const PackedBlock* d3d = nullptr;
+            for (const PackedBlock& b : packed)
+                if (b.variable == ubo.id) d3d = &b;
+            if (d3d && d3d->flattened) {
+                block.size = d3d->size;
+                block.members = d3d->members;
+                block.d3dPacking = true;
+                for (const UniformRange& r : d3d->rangesRead) out.rangesRead.push_back({r.offset, r.size, block.index});
+                out.membersRead.insert(out.membersRead.end(), d3d->membersRead.begin(), d3d->membersRead.end());
+                out.blocks.push_back(std::move(block));
+                continue;
+            }
             const spirv_cross::SPIRType& type = compiler.get_type(ubo.base_type_id);
-            if (!compiler.glslCanDeclare(type) || !offsetsIncrease(compiler, type)) relayoutStd140(compiler, ubo.base_type_id);
+            bool relaid = !compiler.glslCanDeclare(type) || !offsetsIncrease(compiler, type);
+            if (relaid) relayoutStd140(compiler, ubo.base_type_id);
+            block.d3dPacking = d3d && !relaid;
             // std140 pads a block to a 16-byte multiple (GL_BUFFER_DATA_SIZE counts the padding,
             // and a bound buffer must be at least that big); D3D sizes cbuffers the same way.
             block.size = static_cast<int>(roundUp(static_cast<uint32_t>(compiler.get_declared_struct_size(type)), 16));
@@ -280,6 +313,10 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
                 m.name = compiler.get_member_name(ubo.base_type_id, i);
                 m.offset = static_cast<int>(compiler.type_struct_member_offset(type, i));
                 m.size = static_cast<int>(compiler.get_declared_struct_member_size(type, i));
+                if (d3d && !relaid && i < d3d->members.size()) {
+                    m.size = d3d->members[i].size;  // D3D's, without std140's tail
+                    m.members = d3d->members[i].members;
+                }
                 const auto& mt = compiler.get_type(type.member_types[i]);
                 if (mt.columns > 1) {
                     m.matrixStride = static_cast<int>(compiler.type_struct_member_matrix_stride(type, i));
@@ -294,6 +331,8 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
                 // SPIRV-Cross's range runs to the next member's offset (padding included); offsets
                 // increase here (relaid out above otherwise), so it is positive.
                 int size = static_cast<int>(range.range);
+                // At D3D's offsets the member's own bytes (a scalar may follow in its padding).
+                if (d3d && !relaid && range.index < d3d->members.size()) size = std::min(size, d3d->members[range.index].size);
                 out.rangesRead.push_back({static_cast<int>(range.offset), size, block.index});
             }
             out.blocks.push_back(std::move(block));

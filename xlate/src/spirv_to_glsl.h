@@ -1,9 +1,9 @@
 // Step 4b/5: SPIR-V -> GLSL 4.50 core with SPIRV-Cross, plus reflection of what the shader uses.
 // Here the D3D conventions that live in bindings and locations are fixed:
 //   - the effect's constant buffer ($Global) is UBO binding 0, fxport's internal block binding 1,
-//     user cbuffers 2 + their declaration order; a cbuffer whose HLSL packing GLSL cannot declare
-//     (a float3 right after a float, a scalar in the tail of an array's last register) is re-laid
-//     out with std140 rules, the rules glslang already uses for $Global;
+//     user cbuffers 2 + their declaration order; every block is laid out as D3D packs it
+//     (cbuffer_packing.h), as a register array where GLSL cannot declare D3D's offsets, and only
+//     where that rewrite cannot follow the shader, re-laid out with std140 rules (d3dPacking false);
 //   - a sampler's binding is its texture unit (DX9 register / DX10 texture register);
 //   - a varying's location is a fixed function of its semantic (TEXCOORDn -> n, COLORn -> 16+n ...),
 //     so any vertex and pixel shader with matching semantics link, whichever effect they come from;
@@ -36,6 +36,7 @@ struct UniformMember {
     int matrixStride = 0;
     int arrayStride = 0;
     bool hlslRowMajor = false;  // HLSL packing (SPIR-V decorates the transposed matrix)
+    std::vector<UniformMember> members;  // a struct's (or struct array's) members, offsets from its start
 };
 
 // A uniform block as one shader declares it ($Global or a user cbuffer; not fxport's internal one).
@@ -44,6 +45,7 @@ struct UniformBlockLayout {
     int index = 0;  // in CompiledEffect::uniformBlocks: $Global 0, cbuffer k (declaration order) 1 + k
     int size = 0;
     std::vector<UniformMember> members;
+    bool d3dPacking = false;  // members at D3D's offsets (false: re-laid out with std140)
 };
 
 struct GlslShader {

@@ -76,15 +76,19 @@ int packedSize(const xlate::Parameter& p) {
     return (count - 1) * registers * 16 + element;
 }
 
+// Where the translation laid the block out as D3D packs it (UniformBlock::d3dPacking: packoffset
+// and register(cN) honoured), the reflection's offsets are D3D's; else D3D's rules in declaration
+// order, which layoutMismatch compares with the GL layout.
 std::vector<PackedVariable> packCbuffer(const xlate::CompiledEffect& effect, int block) {
     std::vector<PackedVariable> out;
+    const bool d3dPacking = block >= 0 && std::size_t(block) < effect.uniformBlocks.size() && effect.uniformBlocks[std::size_t(block)].d3dPacking;
     int at = 0;
     for (std::size_t i = 0; i < effect.parameters.size(); ++i) {
         const xlate::Parameter& p = effect.parameters[i];
         if (p.block != block || p.isStatic || p.parameterClass == ParameterClass::Object) continue;
         const int size = packedSize(p);
         if (startsRegister(p) || (at % 16) + size > 16) at = (at + 15) / 16 * 16;
-        out.push_back({int(i), at, size});
+        out.push_back({int(i), d3dPacking && p.offset >= 0 ? p.offset : at, size});
         at += size;
     }
     return out;
@@ -150,11 +154,12 @@ ShaderBindings bindingsOf(const xlate::CompiledEffect& effect, int shader) {
 std::string layoutMismatch(const xlate::CompiledEffect& effect, const ShaderBindings& bindings) {
     for (const CbufferBinding& c : bindings.cbuffers)
         for (const PackedVariable& v : packCbuffer(effect, c.block)) {
+            if (effect.uniformBlocks.at(std::size_t(c.block)).d3dPacking) break;
             const xlate::Parameter& p = effect.parameters[std::size_t(v.parameter)];
             if (p.offset >= 0 && p.offset != v.offset)
                 return "cbuffer '" + c.name + "' variable '" + p.name + "': D3D packs it at byte " + std::to_string(v.offset) +
                        ", fxport's GL layout at " + std::to_string(p.offset) +
-                       " (GLSL cannot use the tail of an array's or a matrix's last register); the bytes a host writes there "
+                       " (fxport re-laid the block out with std140: its translation could not follow the shader's use of it); the bytes a host writes there "
                        "would be misread: start it on a 16-byte register (a float4, or packoffset)";
         }
     return {};

@@ -51,8 +51,8 @@ struct ShaderBindings {
 
 ShaderBindings bindingsOf(const xlate::CompiledEffect& effect, int shader);
 // Empty, or a sentence naming the first cbuffer variable that fxport's GL layout places elsewhere
-// than D3D packs it (GLSL's std140 cannot put a member in the tail of an array's or a non-float4
-// matrix's last register, as D3D does): a host's bytes would be misread, so no shader is made.
+// than D3D packs it (only a block the translation had to re-lay out with std140, see
+// UniformBlock::d3dPacking): a host's bytes would be misread, so no shader is made.
 std::string layoutMismatch(const xlate::CompiledEffect& effect, const ShaderBindings& bindings);
 
 }  // namespace fxport::d3d11

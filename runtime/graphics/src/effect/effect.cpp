@@ -261,18 +261,38 @@ bool EffectTechnique::IsCompiled() const {
 void Effect::Impl::layOutProvisionally() {
     // Each block's numeric parameters packed one after another, row-major, 4 bytes a scalar: a
     // place to keep values until a compiled shader says where they really go.
+    // A struct's members likewise, one element after another.
     std::vector<int> sizes(blocks.size(), 0);
-    for (xlate::Parameter& p : outline.parameters) {
-        bool numeric = p.parameterClass == xlate::ParameterClass::Scalar || p.parameterClass == xlate::ParameterClass::Vector ||
-                       p.parameterClass == xlate::ParameterClass::Matrix;
-        if (p.isStatic || !numeric || p.block < 0 || std::size_t(p.block) >= blocks.size()) continue;
-        if (!blocks[std::size_t(p.block)].provisional) continue;
-        int& at = sizes[std::size_t(p.block)];
+    auto numeric = [](const xlate::Parameter& p) {
+        return p.parameterClass == xlate::ParameterClass::Scalar || p.parameterClass == xlate::ParameterClass::Vector ||
+               p.parameterClass == xlate::ParameterClass::Matrix;
+    };
+    auto place = [](xlate::Parameter& p, int at) {
         p.rowMajor = true;
         p.matrixStride = p.columns * 4;
         p.arrayStride = p.rows * p.columns * 4;
         p.size = p.arrayStride * std::max(1, p.elements);
         p.offset = at;
+    };
+    for (xlate::Parameter& p : outline.parameters) {
+        bool isStruct = p.parameterClass == xlate::ParameterClass::Struct;
+        if (p.isStatic || !(numeric(p) || isStruct) || p.block < 0 || std::size_t(p.block) >= blocks.size()) continue;
+        if (!blocks[std::size_t(p.block)].provisional) continue;
+        int& at = sizes[std::size_t(p.block)];
+        if (isStruct) {
+            int element = 0;
+            for (xlate::Parameter& m : p.members) {
+                m.block = p.block;
+                if (!numeric(m)) continue;  // a struct inside: no place until compiled
+                place(m, at + element);
+                element += m.size;
+            }
+            p.offset = at;
+            p.arrayStride = element;
+            p.size = element * std::max(1, p.elements);
+        } else {
+            place(p, at);
+        }
         at += p.size;
     }
     for (std::size_t b = 0; b < blocks.size(); ++b)
@@ -286,6 +306,27 @@ void Effect::Impl::keepUnreadValue(int index) {
     const ConstantBlock& from = blocks[std::size_t(p.block)].constants;
     from.forEachScalar(p, std::max(1, p.elements), [&](const ConstantBlock::Scalar& s) { kept[std::size_t(s.index)] = from.decode(p, s.offset); });
 }
+
+namespace {
+
+// A struct parameter's member values from the provisional block to the compiled layout, element by
+// element (member offsets are those inside element 0).
+void moveStructValues(const xlate::Parameter& p, const xlate::Parameter& r, const ConstantBlock& from, ConstantBlock& to) {
+    if (p.offset < 0 || r.offset < 0 || p.members.size() != r.members.size()) return;
+    for (int e = 0; e < std::max(1, p.elements); ++e)
+        for (std::size_t k = 0; k < p.members.size(); ++k) {
+            xlate::Parameter pm = p.members[k], rm = r.members[k];
+            if (pm.offset < 0 || rm.offset < 0 || pm.parameterClass == xlate::ParameterClass::Struct) continue;
+            pm.offset += e * p.arrayStride;
+            rm.offset += e * r.arrayStride;
+            from.forEachScalar(pm, std::max(1, pm.elements), [&](const ConstantBlock::Scalar& s) {
+                int at = ConstantBlock::offsetOf(rm, s.element, s.row, s.column);
+                if (to.holds(at)) std::memcpy(&to.bytes[std::size_t(at)], &from.bytes[std::size_t(s.offset)], 4);
+            });
+        }
+}
+
+}  // namespace
 
 void Effect::Impl::adoptLayouts(const xlate::CompiledEffect& code, GraphicsDevice::Impl& device) {
     if (code.parameters.size() != outline.parameters.size() || code.uniformBlocks.size() != blocks.size())
@@ -312,6 +353,14 @@ void Effect::Impl::adoptLayouts(const xlate::CompiledEffect& code, GraphicsDevic
                 throw InvalidOperation("Effect '" + displayName + "': parameter " + std::to_string(i) + " is '" + r.name +
                                        "' in a compiled technique but '" + p.name + "' in the effect (internal error)");
             if (r.block != int(b)) continue;
+            if (p.parameterClass == xlate::ParameterClass::Struct) {
+                moveStructValues(p, r, block.constants, moved);
+                p.offset = r.offset;
+                p.size = r.size;
+                p.arrayStride = r.arrayStride;
+                p.members = r.members;
+                continue;
+            }
             if (p.offset >= 0 && r.offset < 0) keepUnreadValue(int(i));  // no shader reads it: its value stays the effect's
             if (p.offset >= 0 && r.offset >= 0)
                 block.constants.forEachScalar(p, std::max(1, p.elements), [&](const ConstantBlock::Scalar& from) {
@@ -507,6 +556,11 @@ EffectParameter& EffectParameterCollection::operator[](int index) {
 
 EffectParameter* EffectParameterCollection::find(const std::string& name) {
     if (!effect_) return nullptr;
+    if (nested_) {
+        for (EffectParameter& p : items_)
+            if (p.Name() == name) return &p;
+        return nullptr;
+    }
     auto& index = effectImpl(*effect_).parameterIndex;
     auto it = index.find(name);
     return it == index.end() ? nullptr : &items_[std::size_t(it->second)];

@@ -131,13 +131,17 @@ struct UniformRange {  // a byte range of a uniform block this shader actually r
     int block = 0;    // index into CompiledEffect::uniformBlocks
 };
 
-// One GL uniform block of the effect. The layout is what the generated GLSL declares (std140, with
-// explicit member offsets where glslang kept HLSL cbuffer packing that GLSL can express); parameter
-// offsets are relative to the block's start.
+// One GL uniform block of the effect. The layout is what the generated GLSL declares: D3D's cbuffer
+// packing (explicit member offsets, or an array of registers where GLSL cannot declare them);
+// parameter offsets are relative to the block's start.
 struct UniformBlock {
     std::string name;  // "$Global" or the cbuffer's name
     int binding = 0;   // GL uniform-buffer binding: $Global 0, user cbuffers 2 + declaration order
     int size = 0;      // bytes; 0 when no shader of the effect reads the block
+    // Every member at its D3D cbuffer offset (packoffset, register(cN) and D3D's packing rules
+    // honoured), so a host's D3D bytes can be bound as they are. False only where fxport had to
+    // re-lay the block out with std140 (set its parameters by name then).
+    bool d3dPacking = false;
 };
 
 // A buffer or image a shader reads or writes outside the sampler path: D3D11 UAVs (RWStructuredBuffer,

@@ -31,6 +31,7 @@
 
 namespace fxport::xlate {
 struct CompiledEffect;
+struct Parameter;
 }
 
 namespace fxport {
@@ -109,13 +110,26 @@ public:
     Texture2D* GetValueTexture2D() const;
     TextureCube* GetValueTextureCube() const;
 
-    int index() const { return index_; }
+    // XNA's StructureMembers (a struct's members; of an array of structs, take Elements[i] first)
+    // and Elements (an array's elements, empty when not an array): parameters of their own, at the
+    // place of that member or element in the constant buffer, set and read like any other. Built on
+    // first use; valid as long as the effect.
+    class EffectParameterCollection& StructureMembers();
+    class EffectParameterCollection& Elements();
+
+    int index() const { return index_; }  // of the effect's parameter this one is, or is inside
 
 private:
     friend class Effect;
+    friend struct ParameterAccess;  // effect_parameter.cpp
+    struct View;  // the path from the effect's parameter to a member or element (effect_parameter_views.cpp)
     EffectParameter(Effect* effect, int index) : effect_(effect), index_(index) {}
+    EffectParameter(Effect* effect, int index, std::shared_ptr<View> view);
+    const xlate::Parameter& desc() const;  // the reflection of this parameter (of a member or element: computed)
     Effect* effect_;
     int index_;
+    std::shared_ptr<View> view_;  // null: one of the effect's parameters
+    std::shared_ptr<class EffectParameterCollection> members_, elements_;
 };
 
 class EffectParameterCollection {
@@ -131,7 +145,9 @@ public:
 
 private:
     friend class Effect;
+    friend class EffectParameter;
     Effect* effect_ = nullptr;
+    bool nested_ = false;  // StructureMembers or Elements: found by name among items_
     std::vector<EffectParameter> items_;
 };
 

@@ -1,0 +1,105 @@
+// Constant buffers laid out as D3D packs them (xlate/src/cbuffer_packing.h): the reflection's
+// parameter offsets, array and matrix strides and struct member offsets are fxc's, written out
+// here by hand from its rules; the GLSL declares them (layout(offset = N)) or, where GLSL cannot,
+// reads an array of registers. The pixel checks are tests/d3d11/d3d11_cbuffer_packing_test.cpp
+// and tests/runtime/struct_parameters_test.cpp.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "fxport/xlate/effect_compiler.h"
+
+using namespace fxport::xlate;
+
+namespace {
+
+CompiledEffect compile(const std::string& declarations, const std::string& body, const std::string& profile = "ps_4_0") {
+    CompileOptions o;
+    o.useCache = false;
+    return compileEffectSource(declarations + "float4 PS() : SV_Target { " + body + " }\ntechnique10 T { pass P { SetPixelShader(CompileShader(" +
+                                   profile + ", PS())); } }\n",
+                               "virtual/CbufferPacking.fx", o);
+}
+
+const Parameter& param(const CompiledEffect& e, const std::string& name) {
+    for (const auto& p : e.parameters)
+        if (p.name == name) return p;
+    throw std::runtime_error("no parameter " + name);
+}
+
+const UniformBlock& blockOf(const CompiledEffect& e, const std::string& name) { return e.uniformBlocks.at(std::size_t(param(e, name).block)); }
+
+}  // namespace
+
+TEST(CbufferPacking, ScalarsUseTheTailOfArraysMatricesAndStructs) {
+    CompiledEffect e = compile("cbuffer C { float a; float b[2]; float c; float3x3 m; float s; row_major float2x3 r; float t; float3 u; float v; }\n",
+                               "return float4(a + b[1] + c + m[2][2] + s + r[1][2] + t, u + v);");
+    EXPECT_EQ(param(e, "a").offset, 0);
+    EXPECT_EQ(param(e, "b").offset, 16);
+    EXPECT_EQ(param(e, "b").arrayStride, 16);
+    EXPECT_EQ(param(e, "c").offset, 36);   // b's last register, c2.y
+    EXPECT_EQ(param(e, "m").offset, 48);   // matrices start a register
+    EXPECT_EQ(param(e, "m").matrixStride, 16);
+    EXPECT_EQ(param(e, "s").offset, 92);   // 48 + 2 * 16 + 12: m's last column, c5.w
+    EXPECT_EQ(param(e, "r").offset, 96);
+    EXPECT_EQ(param(e, "t").offset, 124);  // 96 + 16 + 12
+    EXPECT_EQ(param(e, "u").offset, 128);  // c8.xyz
+    EXPECT_EQ(param(e, "v").offset, 140);
+    EXPECT_TRUE(blockOf(e, "a").d3dPacking);
+    EXPECT_EQ(blockOf(e, "a").size, 144);
+    // GLSL cannot declare c at 36: the block is read as registers.
+    EXPECT_NE(e.shaders.at(0).glsl.find("uvec4 registers["), std::string::npos) << e.shaders.at(0).glsl;
+}
+
+TEST(CbufferPacking, PackoffsetPlacesMembersInAnyOrder) {
+    CompiledEffect e = compile("cbuffer C { float4 a : packoffset(c2); float b : packoffset(c0.y); float2 c : packoffset(c1.z); }\n",
+                               "return a + b + c.xyxy;");
+    EXPECT_EQ(param(e, "a").offset, 32);
+    EXPECT_EQ(param(e, "b").offset, 4);
+    EXPECT_EQ(param(e, "c").offset, 24);
+    EXPECT_TRUE(blockOf(e, "a").d3dPacking);
+}
+
+TEST(CbufferPacking, RegisterPlacesGlobalsAndTheOthersFollowTheLastPlacedOne) {
+    // fxc (register-reservations-numeric): an unplaced global packs after the last placed one.
+    CompiledEffect e = compile("float k : register(c1);\nfloat4 g : register(c3);\nfloat n;\n", "return g + k + n;");
+    EXPECT_EQ(param(e, "g").offset, 48);
+    EXPECT_EQ(param(e, "k").offset, 16);
+    EXPECT_EQ(param(e, "n").offset, 64);
+    EXPECT_EQ(blockOf(e, "g").name, "$Global");
+    EXPECT_TRUE(blockOf(e, "g").d3dPacking);
+    // Declarable offsets stay a GLSL block with explicit offsets, no register array.
+    EXPECT_EQ(e.shaders.at(0).glsl.find("uvec4 registers["), std::string::npos) << e.shaders.at(0).glsl;
+}
+
+TEST(CbufferPacking, StructMembersHaveTheirOffsetsInTheBlock) {
+    CompiledEffect e = compile("struct S { float b; float2 c; row_major float2x2 m; };\ncbuffer C { float a; S p; float d; S q[2]; float e; }\n",
+                               "return float4(a + p.b + p.c.y + d + q[1].c.x + q[1].m[1][0] + e, 0, 0, 0);");
+    const Parameter& p = param(e, "p");
+    EXPECT_EQ(p.offset, 16);
+    ASSERT_EQ(p.members.size(), 3u);
+    EXPECT_EQ(p.members[0].offset, 16);
+    EXPECT_EQ(p.members[1].offset, 20);
+    EXPECT_EQ(p.members[2].offset, 32);  // a matrix starts a register
+    EXPECT_TRUE(p.members[2].rowMajor);
+    EXPECT_EQ(p.members[2].matrixStride, 16);
+    EXPECT_EQ(param(e, "d").offset, 56);  // S is 16 + 24 = 40 bytes: d in its last register, c3.z
+    const Parameter& q = param(e, "q");
+    EXPECT_EQ(q.offset, 64);
+    EXPECT_EQ(q.arrayStride, 48);
+    ASSERT_EQ(q.members.size(), 3u);
+    EXPECT_EQ(q.members[1].offset, 68);  // element 0's; element i is arrayStride further
+    EXPECT_EQ(param(e, "e").offset, 64 + 48 + 40);
+}
+
+TEST(CbufferPacking, OverlappingPackoffsetsAreRefusedWhereDeclared) {
+    try {
+        compile("cbuffer C { float4 a[2] : packoffset(c1); float4 b : packoffset(c2); }\n", "return a[1] + b;");
+        FAIL() << "compiled";
+    } catch (const CompileError& err) {
+        const Diagnostic& d = err.diagnostics().front();
+        EXPECT_NE(d.message.find("packoffset(c2.x) of 'b' overlaps 'a'"), std::string::npos) << d.message;
+        EXPECT_EQ(d.location.line, 1);
+        EXPECT_NE(d.location.file.find("CbufferPacking.fx"), std::string::npos) << d.location.file;
+    }
+}
