@@ -51,7 +51,7 @@ namespace fs = std::filesystem;
 
 namespace fxport::xlate {
 
-const char* compilerVersion() { return "fxport-xlate-8"; }  // 3: asm { } blocks translate; 4: compute, hull, domain; 5: D3D resource registers; 6: one-row/one-column matrices as vectors, lhs and componentwise casts, scalar intrinsics; 7: mixed shapes, fxc signature layout, geometry entries, struct inheritance, more fxc rejections; 8: D3D integer fix-ups, out-argument wrappers, clip-distance packing, serialised varyings, typed buffers, constant-expression sizes, component-wise casts
+const char* compilerVersion() { return "fxport-xlate-9"; }  // 3: asm { } blocks translate; 4: compute, hull, domain; 5: D3D resource registers; 6: one-row/one-column matrices as vectors, lhs and componentwise casts, scalar intrinsics; 7: mixed shapes, fxc signature layout, geometry entries, struct inheritance, more fxc rejections; 8: D3D integer fix-ups, out-argument wrappers, clip-distance packing, serialised varyings, typed buffers, constant-expression sizes, component-wise casts; 9: cbuffers at D3D offsets (packoffset, register(cN), register arrays)
 
 namespace {
 
