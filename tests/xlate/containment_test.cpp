@@ -636,10 +636,16 @@ TEST_F(Containment, ShadersCompiledInParallelMatchOneByOne) {
     std::string crashing = write("crash.fx",
         "float4 VS(float4 p : POSITION0) : POSITION0 { return p; }\n"
         "float4 PS() : COLOR0 { return float4(1, 1, 1, 1); }\n"
-        "float4 PSBad() : COLOR0 { int x = -2147483648; int y = -1; return float4(x / y, 0, 0, 1); }\n"
+        // glslang 12 dies (SIGSEGV) on a geometry shader reading SV_ClipDistance inputs.
+        "struct V { float4 pos : SV_Position; float3 d : SV_ClipDistance0; };\n"
+        "V VS4(float4 p : POSITION0) { V v; v.pos = p; v.d = p.xyz; return v; }\n"
+        "[maxvertexcount(3)] void GSBad(triangle V i[3], inout TriangleStream<V> s) {\n"
+        "    for (int k = 0; k < 3; k++) s.Append(i[k]); }\n"
+        "float4 PS4(V v) : SV_Target { return float4(1, 1, 1, 1); }\n"
         "float4 PS3() : COLOR0 { return float4(0, 1, 0, 1); }\n"
         "technique A { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }\n"
-        "technique B { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PSBad(); } }\n"
+        "technique11 B { pass P { SetVertexShader(CompileShader(vs_4_0, VS4()));\n"
+        "    SetGeometryShader(CompileShader(gs_4_0, GSBad())); SetPixelShader(CompileShader(ps_4_0, PS4())); } }\n"
         "technique C { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS3(); } }\n");
     std::string parallel = compiledWithJobs(crashing, "4", true);
     EXPECT_EQ(parallel, compiledWithJobs(crashing, "1", true));
