@@ -26,6 +26,11 @@ protected:
     }
 };
 
+// The forms that exist only from SM4 (Texture2D.Sample, int/uint overloads) or SM5 (pixel-shader UAVs)
+// run at those models only.
+class HlslAcceptedFormsSm4 : public HlslAcceptedForms {};
+class HlslAcceptedFormsSm5 : public HlslAcceptedForms {};
+
 // Struct definitions that also declare variables, anonymous ones, and ones inside another struct's
 // member list (xlate/src/struct_definitions.cpp).
 TEST_P(HlslAcceptedForms, StructDefinitionsWithDeclarators) {
@@ -109,8 +114,7 @@ TEST_P(HlslAcceptedForms, TextureLengthProperty) {
 
 // UAVs of matrix or small struct elements that no function uses compile (and are dropped, as fxc
 // drops them: xlate/src/unused_uavs.cpp); SM5 pixel shaders only.
-TEST_P(HlslAcceptedForms, UnusedUavsOfMatrixOrStructElements) {
-    if (std::string(GetParam()) != "5_0") GTEST_SKIP() << "UAVs in pixel shaders are SM5";
+TEST_P(HlslAcceptedFormsSm5, UnusedUavsOfMatrixOrStructElements) {
     expectPixel("struct s { float3 a; }; RWTexture1D<float2x2> u2; RWTexture2D<struct s> u3;", "return A * 2;", {1, 2, 3, 4}, {0.5f, 1, 1.5f, 2});
 }
 
@@ -154,8 +158,7 @@ TEST_P(HlslAcceptedForms, MatrixAllAnyAsint) {
 
 // A static texture variable that only ever holds one global texture is that texture, assigned in
 // its initializer or in the function (xlate/src/static_object_aliases.cpp); SM4 and later.
-TEST_P(HlslAcceptedForms, StaticTextureVariablesAliasAGlobalTexture) {
-    if (std::string(GetParam())[0] < '4') GTEST_SKIP() << "Texture2D.Sample is SM4";
+TEST_P(HlslAcceptedFormsSm4, StaticTextureVariablesAliasAGlobalTexture) {
     Texture2D tex(device, 1, 1, false, SurfaceFormat::Vector4);
     const float texel[4] = {0.25f, 0.5f, 2, 4};
     tex.SetData(texel, 4);
@@ -170,9 +173,9 @@ TEST_P(HlslAcceptedForms, StaticTextureVariablesAliasAGlobalTexture) {
 }
 
 // Integer literals with the `l` suffix are ints (uints with `u`): they pick the int or uint
-// overload and keep their value (xlate/src/literal_suffixes.cpp).
-TEST_P(HlslAcceptedForms, LongLiteralSuffixes) {
-    if (std::string(GetParam())[0] < '4') GTEST_SKIP() << "int and uint overloads differ from SM4";
+// overload and keep their value (xlate/src/literal_suffixes.cpp); SM4 and later, where int and uint
+// overloads differ.
+TEST_P(HlslAcceptedFormsSm4, LongLiteralSuffixes) {
     expectPixel("float pick(int x) { return 1; } float pick(uint x) { return 2; }", "return float4(pick(3lu), pick(3l), 0x10L + 1l, A.x);", {2, 1, 17, 0.5f},
                 {0.5f, 0, 0, 0});
 }
@@ -193,8 +196,10 @@ TEST_P(HlslAcceptedForms, ShaderValuedDefaultsAreNotWritten) {
     expectPixel(globals, "return f + g + A;", {0.5f, 1, 1.5f, 2}, {0.5f, 1, 1.5f, 2});
 }
 
-INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslAcceptedForms, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
-                         [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
+std::string modelName(const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; }
+INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslAcceptedForms, ::testing::Values("2_0", "3_0", "4_0", "5_0"), modelName);
+INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslAcceptedFormsSm4, ::testing::Values("4_0", "5_0"), modelName);
+INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslAcceptedFormsSm5, ::testing::Values("5_0"), modelName);
 
 }  // namespace
 }  // namespace fxport::test
