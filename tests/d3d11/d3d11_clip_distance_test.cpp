@@ -84,24 +84,7 @@ struct ClipTest : ::testing::Test {
         d.context->Draw(vertices, 0);
         ASSERT_EQ(lastError(), "");
     }
-    std::vector<std::array<float, 4>> texels() {
-        D3D11_TEXTURE2D_DESC desc;
-        target->GetDesc(&desc);
-        desc.Usage = D3D11_USAGE_STAGING;
-        desc.BindFlags = 0;
-        desc.CPUAccessFlags = D3D11_CPU_ACCESS_READ;
-        ComPtr<ID3D11Texture2D> staging;
-        EXPECT_EQ(d.device->CreateTexture2D(&desc, nullptr, staging.GetAddressOf()), S_OK) << lastError();
-        std::vector<std::array<float, 4>> out(kSize * kSize);
-        if (!staging) return out;
-        d.context->CopyResource(staging.Get(), target.Get());
-        D3D11_MAPPED_SUBRESOURCE mapped;
-        EXPECT_EQ(d.context->Map(staging.Get(), 0, D3D11_MAP_READ, 0, &mapped), S_OK) << lastError();
-        for (UINT y = 0; y < kSize; ++y)
-            std::memcpy(&out[std::size_t(y) * kSize], static_cast<const std::uint8_t*>(mapped.pData) + std::size_t(y) * mapped.RowPitch, kSize * 16);
-        d.context->Unmap(staging.Get(), 0);
-        return out;
-    }
+    std::vector<std::array<float, 4>> texels() { return readTexels<std::array<float, 4>>(d, target.Get()); }
 };
 
 TEST_F(ClipTest, ClipDistancesCutWhereAnyIsNegativeAndReachThePixelShader) {

@@ -40,30 +40,10 @@ ComPtr<ID3D11Texture2D> texture(Device& d, UINT width, UINT height, DXGI_FORMAT 
     return t;
 }
 
-// Level 0 of `t` as bytes, rows packed (`texelBytes` each texel).
-std::vector<std::uint8_t> readBytes(Device& d, ID3D11Texture2D* t, std::size_t texelBytes) {
-    D3D11_TEXTURE2D_DESC desc;
-    t->GetDesc(&desc);
-    desc.Usage = D3D11_USAGE_STAGING;
-    desc.BindFlags = 0;
-    desc.CPUAccessFlags = D3D11_CPU_ACCESS_READ;
-    ComPtr<ID3D11Texture2D> staging;
-    EXPECT_EQ(d.device->CreateTexture2D(&desc, nullptr, staging.GetAddressOf()), S_OK) << lastError();
-    const std::size_t row = desc.Width * texelBytes;
-    std::vector<std::uint8_t> out(row * desc.Height, 0);
-    if (!staging) return out;
-    d.context->CopyResource(staging.Get(), t);
-    D3D11_MAPPED_SUBRESOURCE m;
-    EXPECT_EQ(d.context->Map(staging.Get(), 0, D3D11_MAP_READ, 0, &m), S_OK) << lastError();
-    if (!m.pData) return out;
-    for (UINT y = 0; y < desc.Height; ++y) std::memcpy(&out[y * row], static_cast<const std::uint8_t*>(m.pData) + y * m.RowPitch, row);
-    d.context->Unmap(staging.Get(), 0);
-    return out;
-}
 
 template <class T>
 std::vector<T> readAs(Device& d, ID3D11Texture2D* t, std::size_t texelBytes) {
-    std::vector<std::uint8_t> bytes = readBytes(d, t, texelBytes);
+    std::vector<std::uint8_t> bytes = readTexelBytes(d, t, texelBytes);
     std::vector<T> out(bytes.size() / sizeof(T));
     std::memcpy(out.data(), bytes.data(), out.size() * sizeof(T));
     return out;
@@ -140,7 +120,7 @@ TEST(D3D11Formats, IntegerClearsTruncateAndClamp) {
     std::vector<std::int32_t> got = readAs<std::int32_t>(d, sint.Get(), 16);
     for (std::size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i], wantSigned[i % 4]) << "word " << i;
     const std::uint8_t wantBytes[4] = {0, 255, 42, 0};
-    std::vector<std::uint8_t> bytes = readBytes(d, small.Get(), 4);
+    std::vector<std::uint8_t> bytes = readTexelBytes(d, small.Get(), 4);
     for (std::size_t i = 0; i < bytes.size(); ++i) EXPECT_EQ(bytes[i], wantBytes[i % 4]) << "byte " << i;
 }
 
@@ -214,7 +194,7 @@ float4 ps(float4 pos : SV_Position) : SV_Target {
     return float4(c.r, c.g * 0.5, 1 - c.b, c.a);  // red, half green, inverted blue
 })",
              target.Get(), 2, 1, viewOf(d, src.Get()).Get());
-    std::vector<std::uint8_t> got = readBytes(d, target.Get(), 4);
+    std::vector<std::uint8_t> got = readTexelBytes(d, target.Get(), 4);
     for (std::size_t px = 0; px < 2; ++px) {
         const std::uint8_t* in = &bgra[px * 4];
         // The target is BGRA in memory too: byte 0 blue, 1 green, 2 red, 3 alpha.

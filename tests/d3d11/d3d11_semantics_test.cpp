@@ -75,27 +75,6 @@ ComPtr<ID3D11Texture2D> floatTarget(Device& d) {
     return t;
 }
 
-// The texels of a R32G32B32A32_FLOAT texture, top row first.
-std::vector<std::array<float, 4>> readFloats(Device& d, ID3D11Texture2D* texture) {
-    D3D11_TEXTURE2D_DESC desc;
-    texture->GetDesc(&desc);
-    desc.Usage = D3D11_USAGE_STAGING;
-    desc.BindFlags = 0;
-    desc.CPUAccessFlags = D3D11_CPU_ACCESS_READ;
-    ComPtr<ID3D11Texture2D> staging;
-    EXPECT_EQ(d.device->CreateTexture2D(&desc, nullptr, staging.GetAddressOf()), S_OK) << lastError();
-    std::vector<std::array<float, 4>> out(std::size_t(desc.Width) * desc.Height);
-    if (!staging) return out;
-    d.context->CopyResource(staging.Get(), texture);
-    D3D11_MAPPED_SUBRESOURCE mapped;
-    EXPECT_EQ(d.context->Map(staging.Get(), 0, D3D11_MAP_READ, 0, &mapped), S_OK) << lastError();
-    for (UINT y = 0; y < desc.Height; ++y)
-        std::memcpy(&out[std::size_t(y) * desc.Width], static_cast<const std::uint8_t*>(mapped.pData) + std::size_t(y) * mapped.RowPitch,
-                    std::size_t(desc.Width) * 16);
-    d.context->Unmap(staging.Get(), 0);
-    return out;
-}
-
 struct SemanticsTest : ::testing::Test {
     Device d;
     ComPtr<ID3DBlob> vsCode;
@@ -159,7 +138,7 @@ TEST_F(SemanticsTest, AnySemanticNameAndIntegerFormatsFeedTheirInputs) {
 
     const std::array<float, 4> a = {16777215.0f, 7.0f, -123456.0f, 2000000.0f};
     const std::array<float, 4> b = {200.0f, 32768.0f / 65535.0f, 1.5f * 2.0f, -3.0f};
-    const std::vector<std::array<float, 4>> gotA = readFloats(d, targets[0].Get()), gotB = readFloats(d, targets[1].Get());
+    const std::vector<std::array<float, 4>> gotA = readTexels<std::array<float, 4>>(d, targets[0].Get()), gotB = readTexels<std::array<float, 4>>(d, targets[1].Get());
     for (std::size_t p = 0; p < gotA.size(); ++p) {
         EXPECT_EQ(gotA[p], a) << "pixel " << p;
         for (int c = 0; c < 4; ++c) EXPECT_NEAR(gotB[p][std::size_t(c)], b[std::size_t(c)], 1e-6) << "pixel " << p << " channel " << c;
@@ -254,7 +233,7 @@ TEST(D3D11StageLinks, ShadersCompiledApartLinkBySemantic) {
         d.context->PSSetShader(ps.Get(), nullptr, 0);
         d.context->Draw(3, 0);
         ASSERT_EQ(lastError(), "") << "reader " << r;
-        for (const std::array<float, 4>& t : readFloats(d, target.Get())) ASSERT_EQ(t, kRead[r]) << "reader " << r;
+        for (const std::array<float, 4>& t : readTexels<std::array<float, 4>>(d, target.Get())) ASSERT_EQ(t, kRead[r]) << "reader " << r;
     }
 }
 

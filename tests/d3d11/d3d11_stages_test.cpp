@@ -16,40 +16,7 @@
 namespace d3d11test {
 namespace {
 
-template <class T>
-ComPtr<ID3D11Buffer> makeBuffer(Device& d, const T* data, UINT bytes, UINT bind, UINT misc = 0, UINT stride = 0) {
-    D3D11_BUFFER_DESC desc;
-    desc.ByteWidth = bytes;
-    desc.BindFlags = bind;
-    desc.MiscFlags = misc;
-    desc.StructureByteStride = stride;
-    D3D11_SUBRESOURCE_DATA init;
-    init.pSysMem = data;
-    ComPtr<ID3D11Buffer> b;
-    EXPECT_EQ(d.device->CreateBuffer(&desc, data ? &init : nullptr, b.GetAddressOf()), S_OK) << lastError();
-    return b;
-}
 
-// The bytes of `buffer`, read as D3D code reads a GPU buffer: a staging copy, then Map READ.
-template <class T>
-std::vector<T> readBuffer(Device& d, ID3D11Buffer* buffer) {
-    D3D11_BUFFER_DESC desc;
-    buffer->GetDesc(&desc);
-    D3D11_BUFFER_DESC staging;
-    staging.ByteWidth = desc.ByteWidth;
-    staging.Usage = D3D11_USAGE_STAGING;
-    staging.CPUAccessFlags = D3D11_CPU_ACCESS_READ;
-    ComPtr<ID3D11Buffer> copy;
-    EXPECT_EQ(d.device->CreateBuffer(&staging, nullptr, copy.GetAddressOf()), S_OK) << lastError();
-    std::vector<T> out(desc.ByteWidth / sizeof(T));
-    if (!copy) return out;
-    d.context->CopyResource(copy.Get(), buffer);
-    D3D11_MAPPED_SUBRESOURCE mapped;
-    EXPECT_EQ(d.context->Map(copy.Get(), 0, D3D11_MAP_READ, 0, &mapped), S_OK) << lastError();
-    if (mapped.pData) std::memcpy(out.data(), mapped.pData, out.size() * sizeof(T));
-    d.context->Unmap(copy.Get(), 0);
-    return out;
-}
 
 // RGBA float texels of an R32G32B32A32_FLOAT texture, top row first.
 std::vector<float> readFloats(Device& d, ID3D11Texture2D* texture) {
@@ -149,7 +116,7 @@ TEST(D3D11Stages, ComputeShaderFillsAStructuredBufferLikeTheCpu) {
     ComPtr<ID3D11Buffer> particles = makeBuffer(d, sentinel.data(), capacity * UINT(sizeof(Particle)),
                                                 D3D11_BIND_UNORDERED_ACCESS | D3D11_BIND_SHADER_RESOURCE, D3D11_RESOURCE_MISC_BUFFER_STRUCTURED,
                                                 sizeof(Particle));
-    ComPtr<ID3D11Buffer> sum = makeBuffer<float>(d, nullptr, 4, D3D11_BIND_UNORDERED_ACCESS, D3D11_RESOURCE_MISC_BUFFER_STRUCTURED, 4);
+    ComPtr<ID3D11Buffer> sum = makeBuffer(d, nullptr, 4, D3D11_BIND_UNORDERED_ACCESS, D3D11_RESOURCE_MISC_BUFFER_STRUCTURED, 4);
     const struct {
         float scale;
         UINT count;

@@ -21,7 +21,7 @@ ComPtr<ID3DBlob> compile(const std::string& source, const char* entry, const cha
     return code;
 }
 
-std::vector<std::array<std::uint8_t, 4>> readPixels(Device& d, ID3D11Texture2D* texture) {
+std::vector<std::uint8_t> readTexelBytes(Device& d, ID3D11Texture2D* texture, std::size_t texelBytes) {
     D3D11_TEXTURE2D_DESC desc;
     texture->GetDesc(&desc);
     desc.Usage = D3D11_USAGE_STAGING;
@@ -30,15 +30,48 @@ std::vector<std::array<std::uint8_t, 4>> readPixels(Device& d, ID3D11Texture2D* 
     desc.MiscFlags = 0;
     ComPtr<ID3D11Texture2D> staging;
     EXPECT_EQ(d.device->CreateTexture2D(&desc, nullptr, staging.GetAddressOf()), S_OK) << GetLastErrorMessage();
-    std::vector<std::array<std::uint8_t, 4>> out(std::size_t(desc.Width) * desc.Height);
+    const std::size_t row = desc.Width * texelBytes;
+    std::vector<std::uint8_t> out(row * desc.Height, 0);
     if (!staging) return out;
     d.context->CopyResource(staging.Get(), texture);
     D3D11_MAPPED_SUBRESOURCE mapped;
     EXPECT_EQ(d.context->Map(staging.Get(), 0, D3D11_MAP_READ, 0, &mapped), S_OK) << GetLastErrorMessage();
+    if (!mapped.pData) return out;
     for (UINT y = 0; y < desc.Height; ++y)
-        std::memcpy(&out[std::size_t(y) * desc.Width], static_cast<const std::uint8_t*>(mapped.pData) + std::size_t(y) * mapped.RowPitch,
-                    std::size_t(desc.Width) * 4);
+        std::memcpy(&out[y * row], static_cast<const std::uint8_t*>(mapped.pData) + std::size_t(y) * mapped.RowPitch, row);
     d.context->Unmap(staging.Get(), 0);
+    return out;
+}
+
+ComPtr<ID3D11Buffer> makeBuffer(Device& d, const void* data, UINT bytes, UINT bind, UINT misc, UINT stride) {
+    D3D11_BUFFER_DESC desc;
+    desc.ByteWidth = bytes;
+    desc.BindFlags = bind;
+    desc.MiscFlags = misc;
+    desc.StructureByteStride = stride;
+    D3D11_SUBRESOURCE_DATA init;
+    init.pSysMem = data;
+    ComPtr<ID3D11Buffer> b;
+    EXPECT_EQ(d.device->CreateBuffer(&desc, data ? &init : nullptr, b.GetAddressOf()), S_OK) << GetLastErrorMessage();
+    return b;
+}
+
+std::vector<std::uint8_t> readBufferBytes(Device& d, ID3D11Buffer* buffer) {
+    D3D11_BUFFER_DESC desc;
+    buffer->GetDesc(&desc);
+    D3D11_BUFFER_DESC staging;
+    staging.ByteWidth = desc.ByteWidth;
+    staging.Usage = D3D11_USAGE_STAGING;
+    staging.CPUAccessFlags = D3D11_CPU_ACCESS_READ;
+    ComPtr<ID3D11Buffer> copy;
+    EXPECT_EQ(d.device->CreateBuffer(&staging, nullptr, copy.GetAddressOf()), S_OK) << GetLastErrorMessage();
+    std::vector<std::uint8_t> out(desc.ByteWidth, 0);
+    if (!copy) return out;
+    d.context->CopyResource(copy.Get(), buffer);
+    D3D11_MAPPED_SUBRESOURCE mapped;
+    EXPECT_EQ(d.context->Map(copy.Get(), 0, D3D11_MAP_READ, 0, &mapped), S_OK) << GetLastErrorMessage();
+    if (mapped.pData) std::memcpy(out.data(), mapped.pData, out.size());
+    d.context->Unmap(copy.Get(), 0);
     return out;
 }
 

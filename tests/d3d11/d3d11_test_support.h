@@ -3,7 +3,9 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -24,8 +26,33 @@ struct Device {
 // Compiles `source` (named `name`) for entry/target; fails the test with the error blob if it fails.
 ComPtr<ID3DBlob> compile(const std::string& source, const char* entry, const char* target, const char* name = "test.hlsl");
 
-// RGBA8 pixels of a R8G8B8A8_UNORM texture, top row first (CopyResource into a staging texture, Map READ).
-std::vector<std::array<std::uint8_t, 4>> readPixels(Device& d, ID3D11Texture2D* texture);
+// Level 0 of `texture` as bytes, top row first, rows packed at `texelBytes` per texel (CopyResource
+// into a staging texture, Map READ).
+std::vector<std::uint8_t> readTexelBytes(Device& d, ID3D11Texture2D* texture, std::size_t texelBytes);
+// The same, as texels of type T (sizeof(T) bytes each: std::array<float, 4> for R32G32B32A32_FLOAT).
+template <class T>
+std::vector<T> readTexels(Device& d, ID3D11Texture2D* texture) {
+    const std::vector<std::uint8_t> bytes = readTexelBytes(d, texture, sizeof(T));
+    std::vector<T> out(bytes.size() / sizeof(T));
+    std::memcpy(out.data(), bytes.data(), out.size() * sizeof(T));
+    return out;
+}
+// RGBA8 pixels of a R8G8B8A8_UNORM texture, top row first.
+inline std::vector<std::array<std::uint8_t, 4>> readPixels(Device& d, ID3D11Texture2D* texture) {
+    return readTexels<std::array<std::uint8_t, 4>>(d, texture);
+}
+
+// A DEFAULT buffer of `bytes` with `bind` flags (and structured `misc`/`stride`), filled from `data` if given.
+ComPtr<ID3D11Buffer> makeBuffer(Device& d, const void* data, UINT bytes, UINT bind, UINT misc = 0, UINT stride = 0);
+// The bytes of `buffer`, read as D3D code reads a GPU buffer: a staging copy, then Map READ.
+std::vector<std::uint8_t> readBufferBytes(Device& d, ID3D11Buffer* buffer);
+template <class T>
+std::vector<T> readBuffer(Device& d, ID3D11Buffer* buffer) {
+    const std::vector<std::uint8_t> bytes = readBufferBytes(d, buffer);
+    std::vector<T> out(bytes.size() / sizeof(T));
+    std::memcpy(out.data(), bytes.data(), out.size() * sizeof(T));
+    return out;
+}
 
 // A colour texture: RGBA8, `bind` flags, optional texels.
 ComPtr<ID3D11Texture2D> makeTexture(Device& d, UINT width, UINT height, UINT bind, const std::vector<std::uint32_t>* texels = nullptr);

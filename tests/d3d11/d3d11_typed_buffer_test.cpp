@@ -10,43 +10,15 @@
 namespace d3d11test {
 namespace {
 
-ComPtr<ID3D11Buffer> buffer(Device& d, UINT bytes, UINT bind, const void* data) {
-    D3D11_BUFFER_DESC desc;
-    desc.ByteWidth = bytes;
-    desc.BindFlags = bind;
-    D3D11_SUBRESOURCE_DATA init;
-    init.pSysMem = data;
-    ComPtr<ID3D11Buffer> b;
-    EXPECT_EQ(d.device->CreateBuffer(&desc, data ? &init : nullptr, b.GetAddressOf()), S_OK) << lastError();
-    return b;
-}
 
-template <class T>
-std::vector<T> readBuffer(Device& d, ID3D11Buffer* b, std::size_t count) {
-    D3D11_BUFFER_DESC desc;
-    b->GetDesc(&desc);
-    desc.Usage = D3D11_USAGE_STAGING;
-    desc.BindFlags = 0;
-    desc.CPUAccessFlags = D3D11_CPU_ACCESS_READ;
-    ComPtr<ID3D11Buffer> staging;
-    EXPECT_EQ(d.device->CreateBuffer(&desc, nullptr, staging.GetAddressOf()), S_OK) << lastError();
-    std::vector<T> out(count);
-    if (!staging) return out;
-    d.context->CopyResource(staging.Get(), b);
-    D3D11_MAPPED_SUBRESOURCE m;
-    EXPECT_EQ(d.context->Map(staging.Get(), 0, D3D11_MAP_READ, 0, &m), S_OK) << lastError();
-    if (m.pData) std::memcpy(out.data(), m.pData, count * sizeof(T));
-    d.context->Unmap(staging.Get(), 0);
-    return out;
-}
 
 TEST(D3D11TypedBuffer, ComputeReadsAndWritesTypedViews) {
     Device d;
     const float in[4 * 4] = {1, 2, 3, 4, -1, -2, -3, -4, 0.5f, 0.25f, 8, 16, 100, 200, 300, 400};
-    ComPtr<ID3D11Buffer> source = buffer(d, sizeof in, D3D11_BIND_SHADER_RESOURCE, in);
-    ComPtr<ID3D11Buffer> results = buffer(d, sizeof in, D3D11_BIND_UNORDERED_ACCESS, nullptr);
+    ComPtr<ID3D11Buffer> source = makeBuffer(d, in, sizeof in, D3D11_BIND_SHADER_RESOURCE);
+    ComPtr<ID3D11Buffer> results = makeBuffer(d, nullptr, sizeof in, D3D11_BIND_UNORDERED_ACCESS);
     const std::uint32_t zeros[16] = {};
-    ComPtr<ID3D11Buffer> counts = buffer(d, sizeof zeros, D3D11_BIND_UNORDERED_ACCESS, zeros);
+    ComPtr<ID3D11Buffer> counts = makeBuffer(d, zeros, sizeof zeros, D3D11_BIND_UNORDERED_ACCESS);
     ASSERT_TRUE(source && results && counts);
     D3D11_SHADER_RESOURCE_VIEW_DESC srvDesc;
     srvDesc.Format = DXGI_FORMAT_R32G32B32A32_FLOAT;
@@ -82,10 +54,10 @@ void cs(uint3 id : SV_DispatchThreadID) {
     d.context->CSSetUnorderedAccessViews(0, 2, uavs, nullptr);
     d.context->Dispatch(1, 1, 1);
     ASSERT_EQ(lastError(), "");
-    std::vector<float> out = readBuffer<float>(d, results.Get(), 16);
+    std::vector<float> out = readBuffer<float>(d, results.Get());
     for (int e = 0; e < 4; ++e)
         for (int c = 0; c < 4; ++c) EXPECT_EQ(out[std::size_t(e * 4 + c)], in[e * 4 + c] * 2 + in[(3 - e) * 4 + c]) << "element " << e << "." << c;
-    std::vector<std::uint32_t> got = readBuffer<std::uint32_t>(d, counts.Get(), 16);
+    std::vector<std::uint32_t> got = readBuffer<std::uint32_t>(d, counts.Get());
     for (std::uint32_t k = 0; k < 16; ++k) {
         std::uint32_t want = 0;
         for (std::uint32_t id = 0; id < 64 && k < 8; ++id)
@@ -97,7 +69,7 @@ void cs(uint3 id : SV_DispatchThreadID) {
 TEST(D3D11TypedBuffer, PixelShaderReadsSignedElements) {
     Device d;
     const std::int32_t values[4] = {-7, 3, 250, -100};
-    ComPtr<ID3D11Buffer> source = buffer(d, sizeof values, D3D11_BIND_SHADER_RESOURCE, values);
+    ComPtr<ID3D11Buffer> source = makeBuffer(d, values, sizeof values, D3D11_BIND_SHADER_RESOURCE);
     ASSERT_TRUE(source);
     D3D11_SHADER_RESOURCE_VIEW_DESC srvDesc;
     srvDesc.Format = DXGI_FORMAT_R32_SINT;
@@ -143,7 +115,7 @@ float4 ps(float4 pos : SV_Position) : SV_Target { return float4((Values[uint(pos
 TEST(D3D11TypedBuffer, RefusedViewsNameTheField) {
     Device d;
     const float data[8] = {};
-    ComPtr<ID3D11Buffer> b = buffer(d, sizeof data, D3D11_BIND_SHADER_RESOURCE, data);
+    ComPtr<ID3D11Buffer> b = makeBuffer(d, data, sizeof data, D3D11_BIND_SHADER_RESOURCE);
     ASSERT_TRUE(b);
     D3D11_SHADER_RESOURCE_VIEW_DESC desc;
     desc.ViewDimension = D3D11_SRV_DIMENSION_BUFFER;
