@@ -120,7 +120,10 @@ struct GraphicsDevice::Impl {
         ShaderProgram program;         // over `shader`
     };
     std::map<std::pair<BackendObject, std::string>, std::unique_ptr<LinkedReader>> linkedReaders;
+    // (reader, writer) programs -> the reader's linked variant, null: the reader as it is.
+    std::map<std::pair<BackendObject, BackendObject>, const ShaderProgram*> readerForWriter;
     const ShaderProgram& linkedReader(const ShaderProgram& reader, const ShaderProgram& writer);
+    const ShaderProgram* makeLinkedReader(const ShaderProgram& reader, const ShaderProgram& writer);
     void dropLinkedReadersOf(BackendObject readerProgram);
     BackendObject boundPipeline = 0;
 

@@ -19,15 +19,16 @@ bool locationsDiffer(const xlate::CompiledShader& reader, const xlate::CompiledS
 
 }  // namespace
 
-const ShaderProgram& GraphicsDevice::Impl::linkedReader(const ShaderProgram& reader, const ShaderProgram& writer) {
-    if (!locationsDiffer(*reader.shader, *writer.shader)) return reader;
+// The reader's variant with its inputs at `writer`'s locations; null when the reader needs none.
+const ShaderProgram* GraphicsDevice::Impl::makeLinkedReader(const ShaderProgram& reader, const ShaderProgram& writer) {
+    if (!locationsDiffer(*reader.shader, *writer.shader)) return nullptr;
     std::string outputs;
     for (const xlate::Varying& v : writer.shader->varyingOutputs) outputs += v.semantic + "=" + std::to_string(v.location) + ";";
     auto key = std::make_pair(reader.program, outputs);
     auto it = linkedReaders.find(key);
-    if (it != linkedReaders.end()) return it->second->program;
+    if (it != linkedReaders.end()) return &it->second->program;
     std::optional<xlate::CompiledShader> moved = xlate::inputsLinkedTo(*reader.shader, writer.shader->varyingOutputs);
-    if (!moved) return reader;
+    if (!moved) return nullptr;
     auto linked = std::make_unique<LinkedReader>();
     linked->shader = std::move(*moved);
     linked->program = ShaderProgram{};
@@ -36,10 +37,20 @@ const ShaderProgram& GraphicsDevice::Impl::linkedReader(const ShaderProgram& rea
     linked->program.label = reader.label + " [inputs linked to " + writer.label + "]";
     linked->program.mayDiscard = reader.mayDiscard;
     linked->program.program = createProgram(reader.stage, linked->shader.glsl, linked->program.label);
-    return linkedReaders.emplace(key, std::move(linked)).first->second->program;
+    return &linkedReaders.emplace(key, std::move(linked)).first->second->program;
+}
+
+// Decided once per pair of programs: a draw only looks the pair up.
+const ShaderProgram& GraphicsDevice::Impl::linkedReader(const ShaderProgram& reader, const ShaderProgram& writer) {
+    const auto pair = std::make_pair(reader.program, writer.program);
+    auto known = readerForWriter.find(pair);
+    if (known == readerForWriter.end()) known = readerForWriter.emplace(pair, makeLinkedReader(reader, writer)).first;
+    return known->second ? *known->second : reader;
 }
 
 void GraphicsDevice::Impl::dropLinkedReadersOf(BackendObject readerProgram) {
+    for (auto it = readerForWriter.begin(); it != readerForWriter.end();)  // its id may be made again
+        it = it->first.first == readerProgram || it->first.second == readerProgram ? readerForWriter.erase(it) : std::next(it);
     std::vector<std::unique_ptr<LinkedReader>> dropped;
     for (auto it = linkedReaders.begin(); it != linkedReaders.end();) {
         if (it->first.first != readerProgram) {
