@@ -10,6 +10,7 @@
 //     buffer and view descriptions (E_INVALIDARG / E_NOTIMPL naming the field and value).
 #include <cmath>
 #include <cstring>
+#include <set>
 
 #include "d3d11_test_support.h"
 
@@ -329,11 +330,15 @@ struct TessellationTest : ::testing::Test {
     ComPtr<ID3D11InputLayout> layout;
     ComPtr<ID3D11Buffer> corners, factor;
 
-    void SetUp() override {
-        ComPtr<ID3DBlob> vsCode = compile(kTessellation, "VS", "vs_5_0", "tessellate.hlsl");
-        ComPtr<ID3DBlob> hsCode = compile(kTessellation, "HS", "hs_5_0", "tessellate.hlsl");
-        ComPtr<ID3DBlob> dsCode = compile(kTessellation, "DS", "ds_5_0", "tessellate.hlsl");
-        ComPtr<ID3DBlob> psCode = compile(kTessellation, "PS", "ps_5_0", "tessellate.hlsl");
+    void SetUp() override { build(kTessellation, 8); }
+
+    // The four stages of `source` (its entry points VS, HS, DS and PS), the patch's corners and a
+    // tessellation factor of `tessFactor` in the hull stage's b0.
+    void build(const std::string& source, float tessFactor) {
+        ComPtr<ID3DBlob> vsCode = compile(source, "VS", "vs_5_0", "tessellate.hlsl");
+        ComPtr<ID3DBlob> hsCode = compile(source, "HS", "hs_5_0", "tessellate.hlsl");
+        ComPtr<ID3DBlob> dsCode = compile(source, "DS", "ds_5_0", "tessellate.hlsl");
+        ComPtr<ID3DBlob> psCode = compile(source, "PS", "ps_5_0", "tessellate.hlsl");
         ASSERT_TRUE(vsCode && hsCode && dsCode && psCode);
         ASSERT_EQ(d.device->CreateVertexShader(vsCode->GetBufferPointer(), vsCode->GetBufferSize(), nullptr, vs.GetAddressOf()), S_OK) << lastError();
         ASSERT_EQ(d.device->CreateHullShader(hsCode->GetBufferPointer(), hsCode->GetBufferSize(), nullptr, hs.GetAddressOf()), S_OK) << lastError();
@@ -345,7 +350,7 @@ struct TessellationTest : ::testing::Test {
         // Control points: top-left, top-right, bottom-right, bottom-left of NDC [-0.5, 0.5]^2.
         const float points[12] = {-0.5f, 0.5f, 0, 0.5f, 0.5f, 0, 0.5f, -0.5f, 0, -0.5f, -0.5f, 0};
         corners = makeBuffer(d, points, sizeof points, D3D11_BIND_VERTEX_BUFFER);
-        const float constants[4] = {8, 0, 0, 0};
+        const float constants[4] = {tessFactor, 0, 0, 0};
         factor = makeBuffer(d, constants, sizeof constants, D3D11_BIND_CONSTANT_BUFFER);
         d.context->IASetInputLayout(layout.Get());
         const UINT stride = 12, offset = 0;
@@ -391,6 +396,33 @@ TEST_F(TessellationTest, QuadPatchMatchesTheDomainShaderOnTheCpu) {
     // factor 8 (the hull stage's constant buffer); untessellated it would be off by up to 0.25.
     EXPECT_LT(worstProduct, 1.0 / (4 * 8 * 8) + 1e-4);
     EXPECT_GT(worstProduct, 1e-3) << "u*v exact everywhere: the triangles were not interpolating at all?";
+}
+
+// [partitioning("pow2")]: D3D rounds each factor up to a power of two (3 tessellates as 4), which
+// GL has no spacing for (pow2_partitioning.h). The domain shader passes its location flat, so every
+// pixel shows the (u, v) of a generated vertex: all multiples of 1/4, and 1/4 itself among them.
+TEST_F(TessellationTest, Pow2PartitioningRoundsTheFactorUpToAPowerOfTwo) {
+    std::string source = kTessellation;
+    const std::string integer = "[partitioning(\"integer\")]";
+    source.replace(source.find(integer), integer.size(), "[partitioning(\"pow2\")]");
+    const std::string color = "float4 color : COLOR0;";
+    source.replace(source.find(color), color.size(), "nointerpolation float4 color : COLOR0;");
+    build(source, 3);
+    const int size = 64;
+    Target target = bindTarget(d, size, DXGI_FORMAT_R32G32B32A32_FLOAT);
+    d.context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_4_CONTROL_POINT_PATCHLIST);
+    d.context->HSSetShader(hs.Get(), nullptr, 0);
+    d.context->HSSetConstantBuffers(0, 1, factor.GetAddressOfConst());
+    d.context->DSSetShader(ds.Get(), nullptr, 0);
+    d.context->Draw(4, 0);
+    ASSERT_EQ(lastError(), "");
+    std::vector<float> texels = readFloats(d, target.texture.Get());
+    std::set<float> us;
+    for (int i = 0; i < size * size; ++i)
+        if (texels[std::size_t(i) * 4 + 3] == 1.0f) us.insert(texels[std::size_t(i) * 4]);
+    ASSERT_FALSE(us.empty()) << "nothing was drawn";
+    for (float u : us) EXPECT_NEAR(u * 4, std::round(u * 4), 1e-4) << "u = " << u << " is no vertex of 4 segments";
+    EXPECT_EQ(us.count(0.25f), 1u) << "no vertex at u = 1/4: fewer than 4 segments";
 }
 
 TEST_F(TessellationTest, PatchListsAndHullShadersGoTogether) {

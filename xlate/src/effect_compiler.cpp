@@ -124,7 +124,7 @@ struct OwnedRequest {
     HlslToSpirvRequest request;
     static std::string keyOf(const HlslToSpirvRequest& r) {
         return std::to_string(static_cast<int>(r.stage)) + "|" + r.entryPoint + "|" + (r.dx9Compatible ? "9" : "") + "|" +
-               std::to_string(r.shaderModel) + "|" + *r.source;
+               std::to_string(r.shaderModel) + "|" + r.hullPartitioning + "|" + *r.source;
     }
 };
 
@@ -606,6 +606,11 @@ int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile
     request.entryPoint = entryName;
     request.dx9Compatible = dx9Compatible;
     request.shaderModel = profile.major;
+    if (expected == ShaderStage::Hull && entryFunction) {
+        Tessellation attributes;
+        checkStageAttributes(syntax_, *entryFunction, profile, attributes);
+        request.hullPartitioning = attributes.partitioning;
+    }
     SpirvModule spirv = frontEnd(request);
     // A vector passed to a scalar parameter of the effect's own function: fxc uses .x (warning
     // X3206), glslang finds no overload. Compile again with overloads that take vectors there

@@ -9,7 +9,9 @@
 #include "glslang_process.h"
 #include "clip_distance_packing.h"
 #include "spirv_fixups.h"
+#include "pow2_partitioning.h"
 #include "spirv_integer_fixups.h"
+#include "tess_factor_intrinsics.h"
 
 namespace fxport::xlate {
 
@@ -67,6 +69,9 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
     int length = static_cast<int>(request.source->size());
     const char* name = "effect";
     shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
+    // The partitioning the ProcessTessFactors helpers round for (tess_factor_intrinsics.h).
+    const std::string preamble = "#define FXPORT_PARTITIONING " + std::to_string(partitioningCode(request.hullPartitioning)) + "\n";
+    shader.setPreamble(preamble.c_str());
     shader.setEntryPoint(request.entryPoint.c_str());
     shader.setSourceEntryPoint(request.entryPoint.c_str());
     shader.setEnvInput(glslang::EShSourceHlsl, lang, glslang::EShClientVulkan, 100);
@@ -117,6 +122,7 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
     std::string legalizeError;
     if (!legalizeSpirv(out.words, &legalizeError)) out.errors.push_back({0, {}, legalizeError});
     else packClipCullDistances(out.words);
+    if (request.hullPartitioning == "pow2" && out.errors.empty()) roundTessFactorsToPowersOfTwo(out.words);
     return out;
 }
 

@@ -29,6 +29,8 @@ struct HlslToSpirvRequest {
     std::string entryPoint;
     bool dx9Compatible = false;  // tex2D/sampler2D (DX9 samplers) vs Texture2D.Sample (DX10)
     int shaderModel = 4;         // the profile's major version: fxc's constant-folding errors differ
+    // A hull shader's [partitioning] (pow2_partitioning.h, tess_factor_intrinsics.h); empty otherwise.
+    std::string hullPartitioning;
 };
 
 SpirvModule hlslToSpirv(const HlslToSpirvRequest& request);
