@@ -55,6 +55,19 @@ public:
 
 uint32_t roundUp(uint32_t v, uint32_t to) { return (v + to - 1) / to * to; }
 
+// The k of a name ending in "[k]" (glslang's name for element k of a split array); -1 otherwise.
+int splitArrayElement(const std::string& name) {
+    if (name.size() < 3 || name.back() != ']') return -1;
+    const size_t open = name.rfind('[');
+    if (open == std::string::npos || open + 2 > name.size() - 1) return -1;
+    int k = 0;
+    for (size_t i = open + 1; i + 1 < name.size(); ++i) {
+        if (name[i] < '0' || name[i] > '9' || k > 1000) return -1;
+        k = k * 10 + (name[i] - '0');
+    }
+    return k;
+}
+
 // Re-lays out struct `structId` (a uniform block or a struct inside one) with std140 rules and
 // returns its std140 size. glslang packs a user cbuffer the HLSL way (a vector may start anywhere
 // that keeps it inside one 16-byte register; a member may use the tail of an array's last
@@ -401,7 +414,16 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
         }
 
         // ---- interface locations
-        auto semanticOf = [&](spirv_cross::ID id) { return toUpper(compiler.get_decoration_string(id, spv::DecorationUserSemantic)); };
+        // glslang splits an array member of a stage's struct input or output into a variable per
+        // element ("@patchConstantOutput.uv[2]"), each with the member's semantic; D3D gives element
+        // k the semantic index plus k (uv[3] : TEXCOORD0 is TEXCOORD0..2).
+        auto semanticOf = [&](spirv_cross::ID id) {
+            std::string semantic = toUpper(compiler.get_decoration_string(id, spv::DecorationUserSemantic));
+            const int element = splitArrayElement(compiler.get_name(id));
+            if (element <= 0 || semantic.empty()) return semantic;
+            auto [base, index] = splitSemantic(semantic);
+            return base + std::to_string(index + element);
+        };
         if (stage == ShaderStage::Compute) {
             // no stage inputs or outputs: thread ids are built-ins
         } else if (stage == ShaderStage::Vertex) {
