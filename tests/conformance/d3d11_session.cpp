@@ -222,6 +222,8 @@ void D3d11Session::setInputs(const ShaderSet& shaders, const DrawCall& call) {
 }
 
 std::string D3d11Session::draw(const ShaderSet& shaders, const std::vector<std::uint32_t>& uniforms, const DrawCall& call) {
+    if (!fixedFunction_.empty())
+        throw Unsupported("test state '" + fixedFunction_ + "' (D3D11 has no D3D9 fixed-function states)");
     throwIfUnmade(unmadeSrvs_);
     throwIfUnmade(unmadeSamplers_);
     bindTargets();

@@ -25,12 +25,14 @@ public:
     void setSampler(const SamplerDesc& sampler) override;
     void setInputLayout(std::vector<InputElement> layout) override { layout_ = std::move(layout); }
     void clearTarget(int slot, const float rgba[4]) override;
+    void setFixedFunction(const FixedFunctionDesc& states) override { fixedFunction_ = states.firstSet(); }
     std::string draw(const ShaderSet& shaders, const std::vector<std::uint32_t>& uniforms, const DrawCall& call) override;
     std::string dispatch(const ShaderSet& shaders, const std::vector<std::uint32_t>& uniforms, int x, int y, int z) override;
     Texel readTexel(int slot, int x, int y) override;
     Texel readUav(int slot, int x, int y) override;
 
 private:
+    std::string fixedFunction_;  // a D3D9 fixed-function state the next draw needs ("" none)
     template <class T> using ComPtr = fxport::d3d11::ComPtr<T>;
     struct Texture {  // a render target, or a UAV's texture
         ResourceDesc desc;

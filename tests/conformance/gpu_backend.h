@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "fixed_function_states.h"
 #include "probe.h"
 #include "resource_desc.h"
 #include "shader_test_file.h"
@@ -52,6 +53,9 @@ public:
     virtual void setSampler(const SamplerDesc& sampler) = 0;
     virtual void setInputLayout(std::vector<InputElement> layout) = 0;
     virtual void clearTarget(int slot, const float rgba[4]) = 0;
+    // D3D9's fixed-function states for the draws that follow (the XNA session sets them; the
+    // D3D11 session skips a draw that needs any, D3D11 having none).
+    virtual void setFixedFunction(const FixedFunctionDesc& states) = 0;
     // Both return "" or why the uniforms' placement was a guess (UniformLayout::guess).
     virtual std::string draw(const ShaderSet& shaders, const std::vector<std::uint32_t>& uniforms, const DrawCall& call) = 0;
     virtual std::string dispatch(const ShaderSet& shaders, const std::vector<std::uint32_t>& uniforms, int x, int y, int z) = 0;

@@ -11,6 +11,39 @@ namespace conformance {
 
 namespace {
 
+fxport::CompareFunction alphaFunction(const std::string& name) {
+    using C = fxport::CompareFunction;
+    if (name == "never") return C::Never;
+    if (name == "less") return C::Less;
+    if (name == "equal") return C::Equal;
+    if (name == "less equal") return C::LessEqual;
+    if (name == "greater") return C::Greater;
+    if (name == "not equal") return C::NotEqual;
+    if (name == "greater equal") return C::GreaterEqual;
+    return C::Always;
+}
+
+// vkd3d's test states as fxport's D3D9 states. The alpha reference is D3D9's 8-bit value, as
+// vkd3d's d3d9 runner passes it (reference * 255).
+fxport::FixedFunctionState fixedFunctionState(const FixedFunctionDesc& d) {
+    fxport::FixedFunctionState s;
+    s.FogEnable = d.fog;
+    s.FogTableMode = fxport::FogMode(d.fogMode);
+    s.FogFromW = d.fogFromW;
+    s.FogStart = d.fogStart, s.FogEnd = d.fogEnd, s.FogDensity = d.fogDensity;
+    s.FogColor = fxport::Vector4(d.fogColour[0], d.fogColour[1], d.fogColour[2], d.fogColour[3]);
+    s.PointSize = d.pointSize, s.PointSizeMin = d.pointSizeMin, s.PointSizeMax = d.pointSizeMax;
+    s.PointSpriteEnable = d.pointSprite;
+    s.ClipPlaneEnable = d.clipPlaneMask & 0x3F;
+    for (std::size_t i = 0; i < s.ClipPlanes.size(); ++i)
+        s.ClipPlanes[i] = fxport::Vector4(d.clipPlanes[i][0], d.clipPlanes[i][1], d.clipPlanes[i][2], d.clipPlanes[i][3]);
+    s.AlphaTestEnable = d.alphaTest;
+    s.AlphaFunction = alphaFunction(d.alphaFunction);
+    s.ReferenceAlpha = int(d.alphaReference * 255.0f + 0.5f);
+    s.ShadeMode = d.flatShading ? fxport::ShadeMode::Flat : fxport::ShadeMode::Gouraud;
+    return s;
+}
+
 using fxport::SurfaceFormat;
 
 constexpr int kDefaultWidth = 640;   // vkd3d's RENDER_TARGET_WIDTH
@@ -379,6 +412,7 @@ void GpuSession::draw(fxport::Effect& effect, const std::string& source, int mod
     device().RasterizerState = fxport::RasterizerState::CullNone;
     device().BlendState = fxport::BlendState::Opaque;
     device().DepthStencilState = fxport::DepthStencilState::None;
+    device().FixedFunction = fixedFunctionState(fixedFunction_);
     drawVertices(call);
     readback_.clear();
 }

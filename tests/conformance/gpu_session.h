@@ -36,6 +36,7 @@ public:
     void setResource(const ResourceDesc& resource);  // srv/rtv/dsv/vb/uav (what cannot be made throws Unsupported)
     void setSampler(const SamplerDesc& sampler) { samplers_[sampler.slot] = sampler; }
     void setInputLayout(std::vector<InputElement> layout) { inputLayout_ = std::move(layout); }
+    void setFixedFunction(const FixedFunctionDesc& states) { fixedFunction_ = states; }
     void clearTarget(int slot, const float rgba[4]);
     // Binds textures and samplers for `effect` (texture and sampler parameters in declaration order
     // = registers t/s; explicit register(tN)/register(sN) in `source` win) and draws.
@@ -52,6 +53,7 @@ public:
     fxport::GraphicsDevice& device();
 
 private:
+    FixedFunctionDesc fixedFunction_;
     void ensureDefaultTarget();
     void makeTarget(const ResourceDesc& r);
     void makeTexture(const ResourceDesc& r);

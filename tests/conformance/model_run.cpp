@@ -28,7 +28,10 @@ bool stageRunsAt(Stage stage, int model) {
 }
 
 // Capabilities of [require] this runner can honour; the rest skip the tests after them.
-bool capabilityHonoured(const std::string& capability) {
+bool capabilityHonoured(const std::string& capability, SessionKind session) {
+    // D3D9's fixed-function fog, points and clip planes: GraphicsDevice::FixedFunction of the XNA
+    // session (as vkd3d's Vulkan runner emulates them at every model); D3D11 has none.
+    if (isFixedFunctionCapability(capability)) return session == SessionKind::Xna;
     // Float and integer formats: their typed UAV loads ("uav-load") are core GL image loads
     // (r32f ... rgba32f, r32ui ... rgba32i). The XNA session has no integer SurfaceFormat: it
     // skips such resources itself (Unsupported), the D3D11 session makes them.
@@ -106,7 +109,7 @@ void ModelRun::onRequire(const Block& block) {
     inRange_ = model_ >= require_.minModel && model_ <= require_.maxModel;
     missingCapability_.clear();
     for (const std::string& c : require_.capabilities)
-        if (!capabilityHonoured(c) && missingCapability_.empty()) missingCapability_ = c;
+        if (!capabilityHonoured(c, sessionKind_) && missingCapability_.empty()) missingCapability_ = c;
 }
 
 void ModelRun::onShader(const Block& block) {
@@ -196,6 +199,7 @@ void ModelRun::runTestLine(const Line& line, const std::string& d) {
         else if (startsWith(d, "probe")) doProbe(d.substr(5), line.number);
         else if (startsWith(d, "clear rtv")) doClear(d.substr(9));
         else if (startsWith(d, "dispatch")) doDispatch(d.substr(8), line.number);
+        else if (parseFixedFunctionState(d, fixedFunction_)) return;
         else if (d.find("disable") != std::string::npos || d.find(" off") != std::string::npos) {
             stickyStates_.erase(firstWords(d, 1));
         } else {

@@ -91,6 +91,7 @@ private:
 
     std::vector<std::uint32_t> uniforms_;
     std::unique_ptr<GpuBackend> gpu_;
+    FixedFunctionDesc fixedFunction_;  // fog, point size, clip planes, alpha test, shade mode
     std::map<std::string, std::string> stickyStates_;                 // test states the runner cannot set
     DrawState drawState_ = DrawState::None;
     std::string drawNote_;  // why the last draw failed or was skipped

@@ -114,6 +114,7 @@ void ModelRun::doDraw(const std::string& args, int line) {
         ShaderSet stages = drawStages(call);
         if (crashedBefore(line)) throw std::runtime_error("the draw crashed the process");
         mark(line);
+        gpu().setFixedFunction(fixedFunction_);
         layoutGuess_ = gpu().draw(stages, uniforms_, call);
     });
 }

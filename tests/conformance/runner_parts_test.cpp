@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "d3d11_descs.h"
+#include "fixed_function_states.h"
 #include "fxport/xlate/compiled_effect.h"
 #include "probe.h"
 #include "qualifiers.h"
@@ -258,6 +259,52 @@ TEST(SessionChoice, XnaRunCountsOnlyWhenItPassesMoreWithTheSameCompileChecks) {
     EXPECT_EQ(chooseSession(outcome(3, 5, "probe"), outcome(4, 4)).result.session, "d3d11");  // other compile counts
     // The session travels from the child process with the counts.
     EXPECT_EQ(ModelResult::decode(kept.result.encode()).session, "xna-kept");
+}
+
+TEST(SessionChoice, FixedFunctionSkipsOfTheD3d11SessionAreWorthAnXnaRun) {
+    ModelOutcome skipped = outcome(3, 5);
+    skipped.result.skipReasons["requires 'fog'"] = 4;
+    EXPECT_TRUE(worthXnaRerun(skipped));
+    ModelOutcome state = outcome(3, 5);
+    state.result.skipReasons["test state 'point-size' (D3D11 has no D3D9 fixed-function states)"] = 2;
+    EXPECT_TRUE(worthXnaRerun(state));
+}
+
+TEST(FixedFunctionStates, ParsedAsVkd3dWritesThem) {
+    FixedFunctionDesc f;
+    EXPECT_TRUE(parseFixedFunctionState("fog-colour 0.0 1.0 1.0 1.0", f));
+    EXPECT_EQ(f.fogColour[1], 1.0f);
+    EXPECT_TRUE(parseFixedFunctionState("fog none", f));
+    EXPECT_TRUE(f.fog);
+    EXPECT_EQ(f.fogMode, 0);
+    EXPECT_TRUE(parseFixedFunctionState("fog linear non-ortho 0.1 1.1", f));
+    EXPECT_EQ(f.fogMode, 3);
+    EXPECT_TRUE(f.fogFromW);
+    EXPECT_FLOAT_EQ(f.fogEnd, 1.1f);
+    EXPECT_TRUE(parseFixedFunctionState("fog exp2 ortho 2.0", f));
+    EXPECT_EQ(f.fogMode, 2);
+    EXPECT_FALSE(f.fogFromW);
+    EXPECT_FLOAT_EQ(f.fogDensity, 2.0f);
+    EXPECT_TRUE(parseFixedFunctionState("fog disable", f));
+    EXPECT_FALSE(f.fog);
+    EXPECT_TRUE(parseFixedFunctionState("point-size 40.0 1.0 20.0", f));
+    EXPECT_EQ(f.pointSizeMax, 20.0f);
+    EXPECT_TRUE(parseFixedFunctionState("point-sprite on", f));
+    EXPECT_TRUE(f.pointSprite);
+    EXPECT_TRUE(parseFixedFunctionState("clip-plane 3 -1.0 1.0 0.0 0.0", f));
+    EXPECT_EQ(f.clipPlaneMask, 8u);
+    EXPECT_EQ(f.clipPlanes[3][0], -1.0f);
+    EXPECT_TRUE(parseFixedFunctionState("alpha test greater equal 1.0", f));
+    EXPECT_EQ(f.alphaFunction, "greater equal");
+    EXPECT_EQ(f.alphaReference, 1.0f);
+    EXPECT_TRUE(parseFixedFunctionState("alpha test less 1.0", f));
+    EXPECT_EQ(f.alphaFunction, "less");
+    EXPECT_TRUE(parseFixedFunctionState("shade mode flat", f));
+    EXPECT_TRUE(f.flatShading);
+    EXPECT_FALSE(parseFixedFunctionState("sample mask 3", f));
+    EXPECT_THROW(parseFixedFunctionState("fog linear sideways 0 1", f), std::runtime_error);
+    EXPECT_EQ(FixedFunctionDesc{}.firstSet(), "");
+    EXPECT_EQ(f.firstSet(), "point-size");
 }
 
 }  // namespace

@@ -25,6 +25,11 @@ bool sameCompileChecks(const ModelResult& a, const ModelResult& b) {
 bool worthXnaRerun(const ModelOutcome& d3d11) {
     for (const Failure& f : d3d11.failures)
         if (f.category == "probe" || f.category == "draw") return true;
+    // D3D9's fixed-function states exist only on the XNA session (fixed_function_states.h).
+    for (const auto& [reason, count] : d3d11.result.skipReasons)
+        if (reason.find("D3D9 fixed-function") != std::string::npos || reason == "requires 'fog'" ||
+            reason == "requires 'point-size'" || reason == "requires 'clip-planes'")
+            return true;
     return false;
 }
 

@@ -25,6 +25,7 @@ public:
     void setSampler(const SamplerDesc& sampler) override { gpu_.setSampler(sampler); }
     void setInputLayout(std::vector<InputElement> layout) override { gpu_.setInputLayout(std::move(layout)); }
     void clearTarget(int slot, const float rgba[4]) override { gpu_.clearTarget(slot, rgba); }
+    void setFixedFunction(const FixedFunctionDesc& states) override { gpu_.setFixedFunction(states); }
     std::string draw(const ShaderSet& shaders, const std::vector<std::uint32_t>& uniforms, const DrawCall& call) override;
     std::string dispatch(const ShaderSet& shaders, const std::vector<std::uint32_t>& uniforms, int x, int y, int z) override;
     Texel readTexel(int slot, int x, int y) override { return gpu_.readTexel(slot, x, y); }

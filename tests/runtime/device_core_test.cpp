@@ -70,6 +70,18 @@ TEST(StateShadow, AChangedStateIsSentWithWhatTheBackendHad) {
     EXPECT_EQ(backend.blend.BlendFactor, Color(1, 2, 3, 4));
 }
 
+TEST(StateShadow, PointSizeIsSentWhenItOrItsSourceChanges) {
+    test::RecordingBackend backend;
+    StateShadow shadow(backend);
+    firstDraw(shadow);
+    backend.take();
+    shadow.setPointSize(1, false);  // what the settled shadow holds: not sent
+    shadow.setPointSize(1, false);
+    shadow.setPointSize(12.5f, false);
+    shadow.setPointSize(12.5f, true);  // the vertex shader's PSIZE from now on
+    EXPECT_EQ(backend.take(), (Calls{"setPointSize 12.500000", "setPointSize 12.500000 shader"}));
+}
+
 TEST(StateShadow, InvalidateSendsEverythingWholeAtTheNextDraw) {
     test::RecordingBackend backend;
     StateShadow shadow(backend);

@@ -50,6 +50,9 @@ public:
     }
     void setSrgbWrite(bool enabled) override { calls.push_back(std::string("setSrgbWrite ") + (enabled ? "on" : "off")); }
     void setClipPlanes(int count) override { calls.push_back("setClipPlanes " + std::to_string(count)); }
+    void setPointSize(float size, bool fromShader) override {
+        calls.push_back("setPointSize " + std::to_string(size) + (fromShader ? " shader" : ""));
+    }
     BackendObject createSampler(const SamplerState&) override { return make("createSampler"); }
     void deleteSampler(BackendObject sampler) override { release("deleteSampler", sampler); }
     void bindTexture(int unit, BackendObject texture) override {
@@ -73,6 +76,9 @@ public:
     }
     void setUniform(BackendObject, int location, float value) override {
         calls.push_back("setUniform " + std::to_string(location) + " " + std::to_string(value));
+    }
+    void setUniform(BackendObject, int location, const float*, int count) override {
+        calls.push_back("setUniform " + std::to_string(location) + " vec4[" + std::to_string(count) + "]");
     }
     BackendObject createPipeline(const std::array<BackendObject, 5>& programs) override {
         std::string line = "createPipeline";

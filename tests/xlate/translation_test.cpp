@@ -46,9 +46,9 @@ std::string readText(const std::string& path) {
     return ss.str();
 }
 
-// D3D9 point sprites feed TEXCOORD0 of the PS from the rasteriser (PointSpriteEnable); fxport does
-// not emulate that (GL's gl_PointCoord), so the PS reads a varying no VS writes: a whole-program link
-// rejects it. Listed so the test shows the gap instead of hiding it.
+// D3D9 point sprites feed TEXCOORD0 of the PS from the rasteriser (PointSpriteEnable); the runtime
+// draws points through a pixel-shader variant that reads gl_PointCoord instead (xlate/fixed_function.h),
+// but the translated GLSL alone reads a varying no VS writes: a whole-program link rejects it.
 const std::set<std::string> kKnownLinkFailures = {"tests/fixtures/realworld/dx9_specifics/PointSprites.fx"};
 
 void expectReflectionMatchesGl(const CompiledEffect& e, int vs, int ps);

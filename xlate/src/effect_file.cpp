@@ -45,14 +45,15 @@ constexpr Names<ParameterType, 17> kType{{"void", "bool", "int", "uint", "float"
 constexpr Names<TextureFilter, 4> kFilter{{"none", "point", "linear", "anisotropic"}};
 constexpr Names<TextureAddress, 5> kAddress{{"wrap", "mirror", "clamp", "border", "mirrorOnce"}};
 constexpr Names<TextureKind, 4> kKind{{"1D", "2D", "3D", "cube"}};
-constexpr Names<RenderState, 38> kState{
+constexpr Names<RenderState, 52> kState{
     {"AlphaBlendEnable", "SrcBlend", "DestBlend", "BlendOp", "SeparateAlphaBlendEnable", "SrcBlendAlpha",
      "DestBlendAlpha", "BlendOpAlpha", "BlendFactor", "ColorWriteEnable", "MultiSampleMask", "ZEnable",
      "ZWriteEnable", "ZFunc", "StencilEnable", "StencilFunc", "StencilPass", "StencilFail", "StencilZFail",
      "StencilRef", "StencilMask", "StencilWriteMask", "TwoSidedStencilMode", "CcwStencilFunc", "CcwStencilPass",
      "CcwStencilFail", "CcwStencilZFail", "CullMode", "FillMode", "ScissorTestEnable", "MultiSampleAntiAlias",
      "DepthBias", "SlopeScaleDepthBias", "DepthClipEnable", "AlphaTestEnable", "AlphaFunc", "AlphaRef",
-     "SrgbWriteEnable"}};
+     "SrgbWriteEnable", "FogEnable", "FogColor", "FogTableMode", "FogVertexMode", "FogStart", "FogEnd", "FogDensity",
+     "PointSize", "PointSizeMin", "PointSizeMax", "PointSpriteEnable", "ClipPlaneEnable", "ClipPlane", "ShadeMode"}};
 constexpr Names<Blend, 13> kBlend{{"Zero", "One", "SourceColor", "InverseSourceColor", "SourceAlpha",
                                    "InverseSourceAlpha", "DestinationAlpha", "InverseDestinationAlpha",
                                    "DestinationColor", "InverseDestinationColor", "SourceAlphaSaturation",

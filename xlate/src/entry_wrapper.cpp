@@ -350,8 +350,11 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
                 copyOut << "    o." << name << " = " << widen(leafValue(leaf), leaf.components) << ";\n";
                 if (leaf.components < 4) copyOut << "    o." << name << ".w = 1;\n";
                 positionMember = name;
-            } else if (b == "PSIZE" && !nextToGeometryShader) {
-                continue;  // point size: points are drawn with the device's size
+            } else if (profile.major < 4 && ((b == "PSIZE" && leaf.components > 1) || (b == "FOG" && profile.major < 3 && leaf.components > 1))) {
+                // D3D9's oPts and (before vs_3_0) oFog registers hold one float (fxc rejects more).
+                w.error = "vertex shader output '" + leaf.access + "' has semantic " + b + " in " + profile.name +
+                          ": it holds one float, not " + std::to_string(leaf.components) + " components";
+                return w;
             } else if (b.rfind("SV_", 0) == 0) {
                 outStruct << "    " << vectorType(leaf.scalar, leaf.components) << " " << name << " : " << b << leaf.semanticIndex << ";\n";
                 copyOut << "    o." << name << " = " << leafValue(leaf) << ";\n";

@@ -21,7 +21,7 @@ std::string normalizeEnumName(std::string_view raw) {
     static const char* const kPrefixes[] = {"d3d10_blend_op_", "d3d10_blend_", "d3d10_comparison_", "d3d10_cull_",
                                             "d3d10_fill_", "d3d10_stencil_op_", "d3d11_", "d3dblendop_", "d3dblend_",
                                             "d3dcmp_", "d3dcull_", "d3dfill_", "d3dstencilop_", "d3dtexf_",
-                                            "d3dtaddress_", "d3dzb_", "blend_op_", "comparison_", "stencil_op_"};
+                                            "d3dtaddress_", "d3dzb_", "d3dfog_", "d3dshade_", "blend_op_", "comparison_", "stencil_op_"};
     for (const char* p : kPrefixes) {
         std::string_view pv(p);
         if (s.rfind(pv, 0) == 0) {
@@ -88,6 +88,15 @@ const EnumTable& cullTable() {
                              {{1, 0}, {2, 1}, {3, 2}}};
     return t;
 }
+// D3DFOGMODE and D3DSHADEMODE: names and codes are D3D9's (kept as the int value).
+const EnumTable& fogModeTable() {
+    static const EnumTable t{{{"none", 0}, {"exp", 1}, {"exp2", 2}, {"linear", 3}}, {{0, 0}, {1, 1}, {2, 2}, {3, 3}}};
+    return t;
+}
+const EnumTable& shadeModeTable() {
+    static const EnumTable t{{{"flat", 1}, {"gouraud", 2}, {"phong", 3}}, {{1, 1}, {2, 2}, {3, 3}}};
+    return t;
+}
 const EnumTable& fillTable() {
     static const EnumTable t{{{"point", int(FillMode::Point)}, {"wireframe", int(FillMode::WireFrame)},
                               {"solid", int(FillMode::Solid)}},
@@ -99,11 +108,9 @@ const EnumTable& fillTable() {
 
 const std::set<std::string>& fixedFunctionStateNames() {
     static const std::set<std::string> k = {
-        "lighting", "fogenable", "fogcolor", "fogtablemode", "fogvertexmode", "fogstart", "fogend", "fogdensity",
-        "rangefogenable", "shademode", "specularenable", "normalizenormals", "localviewer", "colorvertex", "ambient",
+        "lighting", "rangefogenable", "specularenable", "normalizenormals", "localviewer", "colorvertex", "ambient",
         "ambientmaterialsource", "diffusematerialsource", "specularmaterialsource", "emissivematerialsource",
-        "texturefactor", "ditherenable", "lastpixel", "clipping", "clipplaneenable", "pointspriteenable",
-        "pointscaleenable", "pointsize", "pointsize_min", "pointsize_max", "pointscale_a", "pointscale_b",
+        "texturefactor", "ditherenable", "lastpixel", "clipping", "pointscaleenable", "pointscale_a", "pointscale_b",
         "pointscale_c", "vertexblend", "indexedvertexblendenable", "tweenfactor", "texture", "sampler", "colorop",
         "colorarg0", "colorarg1", "colorarg2", "alphaop", "alphaarg0", "alphaarg1", "alphaarg2", "resultarg",
         "texcoordindex", "texturetransformflags", "bumpenvmat00", "bumpenvmat01", "bumpenvmat10", "bumpenvmat11",
@@ -266,7 +273,7 @@ void push(std::vector<StateAssignment>& out, RenderState s, double v, const Sour
 }
 
 // DX9 state name -> (state, kind of value).
-enum class ValueKind { Bool, Int, Float, Blend, BlendOp, Compare, StencilOp, Cull, Fill, ColorMask, Vector4, ZEnable };
+enum class ValueKind { Bool, Int, Float, Blend, BlendOp, Compare, StencilOp, Cull, Fill, ColorMask, Vector4, ZEnable, FogMode, ShadeMode };
 struct Dx9State {
     RenderState state;
     ValueKind kind;
@@ -310,6 +317,20 @@ const std::map<std::string, Dx9State>& dx9States() {
         {"alphafunc", {RenderState::AlphaFunc, ValueKind::Compare}},
         {"alpharef", {RenderState::AlphaRef, ValueKind::Int}},
         {"srgbwriteenable", {RenderState::SrgbWriteEnable, ValueKind::Bool}},
+        {"fogenable", {RenderState::FogEnable, ValueKind::Bool}},
+        {"fogcolor", {RenderState::FogColor, ValueKind::Int}},
+        {"fogtablemode", {RenderState::FogTableMode, ValueKind::FogMode}},
+        {"fogvertexmode", {RenderState::FogVertexMode, ValueKind::FogMode}},
+        {"fogstart", {RenderState::FogStart, ValueKind::Float}},
+        {"fogend", {RenderState::FogEnd, ValueKind::Float}},
+        {"fogdensity", {RenderState::FogDensity, ValueKind::Float}},
+        {"pointsize", {RenderState::PointSize, ValueKind::Float}},
+        {"pointsize_min", {RenderState::PointSizeMin, ValueKind::Float}},
+        {"pointsize_max", {RenderState::PointSizeMax, ValueKind::Float}},
+        {"pointspriteenable", {RenderState::PointSpriteEnable, ValueKind::Bool}},
+        {"clipplaneenable", {RenderState::ClipPlaneEnable, ValueKind::Int}},
+        {"clipplane", {RenderState::ClipPlane, ValueKind::Vector4}},
+        {"shademode", {RenderState::ShadeMode, ValueKind::ShadeMode}},
     };
     return k;
 }
@@ -336,6 +357,12 @@ bool readValue(const ValueReader& r, ValueKind kind, std::array<double, 4>& valu
     case ValueKind::Cull: if (auto e = r.enumeration(cullTable())) v = *e; break;
     case ValueKind::Fill: if (auto e = r.enumeration(fillTable())) v = *e; break;
     case ValueKind::ColorMask: if (auto m = r.colorMask()) v = *m; break;
+    case ValueKind::FogMode:
+        if (auto e = r.enumeration(fogModeTable())) v = *e;
+        break;
+    case ValueKind::ShadeMode:
+        if (auto e = r.enumeration(shadeModeTable())) v = *e;
+        break;
     case ValueKind::Vector4:
         if (auto f = r.vector4()) {
             value = *f;
@@ -362,6 +389,8 @@ const char* describe(ValueKind kind) {
     case ValueKind::Fill: return "a fill mode (Point, Wireframe, Solid)";
     case ValueKind::ColorMask: return "a colour mask (RED | GREEN | BLUE | ALPHA, All, None, true, false or a number)";
     case ValueKind::Vector4: return "a float4";
+    case ValueKind::FogMode: return "a fog mode (None, Exp, Exp2, Linear)";
+    case ValueKind::ShadeMode: return "a shade mode (Flat, Gouraud, Phong)";
     }
     return "valid";
 }
@@ -669,6 +698,11 @@ StateResult translatePassAssignment(const FxAssignment& a, StateContext& ctx, st
     std::array<double, 4> raw{};
     if (!readValue(r, it->second.kind, raw)) {
         if (auto result = fromParameter(a, ctx, s)) {
+            if (*result == StateResult::Applied && s.state == RenderState::ClipPlane) {
+                // The effect framework hands a parameter-driven state one number at Apply().
+                warnUnhonoured(ctx, a, "from a parameter is not honoured: only a literal float4 plane is; the plane stays (0, 0, 0, 0)");
+                return StateResult::Ignored;
+            }
             if (*result == StateResult::Applied) out.push_back(s);
             return *result;
         }
@@ -683,6 +717,10 @@ StateResult translatePassAssignment(const FxAssignment& a, StateContext& ctx, st
         warnUnhonoured(ctx, a, "= Point is not honoured: drawn as WireFrame (XNA's FillMode has no point mode)");
     if (s.state == RenderState::ZEnable && r.single() && normalizeEnumName(*r.single()) == "usew")
         warnUnhonoured(ctx, a, "= USEW is not honoured: w-buffering is not available, the z-buffer is used");
+    if (s.state == RenderState::ClipPlane && s.index > 5)
+        warnUnhonoured(ctx, a, "is not honoured: D3D9 drivers have six clip planes (0..5)");
+    if (s.state == RenderState::ShadeMode && std::get<int>(s.value) == 3)
+        warnUnhonoured(ctx, a, "= Phong is not honoured: shaded as Gouraud (as D3D9 drivers do)");
     if (s.state == RenderState::ColorWriteEnable && s.index > 3)
         warnUnhonoured(ctx, a, "is not honoured: XNA has four render targets");
     out.push_back(s);

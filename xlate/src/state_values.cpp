@@ -28,8 +28,15 @@ StateValue defaultStateValue(RenderState state) {
     switch (state) {
     case RenderState::AlphaBlendEnable: case RenderState::SeparateAlphaBlendEnable: case RenderState::StencilEnable:
     case RenderState::TwoSidedStencilMode: case RenderState::ScissorTestEnable: case RenderState::AlphaTestEnable:
-    case RenderState::SrgbWriteEnable:
+    case RenderState::SrgbWriteEnable: case RenderState::FogEnable: case RenderState::PointSpriteEnable:
         return false;
+    case RenderState::FogColor: case RenderState::FogTableMode: case RenderState::FogVertexMode: case RenderState::ClipPlaneEnable:
+        return 0;
+    case RenderState::ShadeMode: return 2;  // D3DSHADE_GOURAUD
+    case RenderState::FogStart: return 0.0f;
+    case RenderState::FogEnd: case RenderState::FogDensity: case RenderState::PointSize: case RenderState::PointSizeMin: return 1.0f;
+    case RenderState::PointSizeMax: return 64.0f;
+    case RenderState::ClipPlane: return std::array<float, 4>{0, 0, 0, 0};
     case RenderState::ZEnable: case RenderState::ZWriteEnable: case RenderState::MultiSampleAntiAlias:
     case RenderState::DepthClipEnable:
         return true;
@@ -83,6 +90,7 @@ StateValue stateValueFromD3D9(RenderState state, double number) {
         if (code == 15) return Blend::InverseBlendFactor;
         return v;
     }
+    if (state == RenderState::ClipPlane) return stateValueFromCanonical(state, number);  // a float4 parameter's first value
     if (std::holds_alternative<std::array<float, 4>>(v)) {
         // A D3DCOLOR: 0xAARRGGBB.
         auto c = static_cast<std::uint32_t>(dwordOf(number));

@@ -118,6 +118,8 @@ public:
     // Clip planes 0..count-1 on, the others off: the SV_ClipDistance values the last stage before
     // the rasteriser writes (D3D clips by every one a shader writes; GL only by those enabled).
     virtual void setClipPlanes(int count) = 0;
+    // Points: `size` pixels wide, unless `fromShader` (the vertex shader writes the size).
+    virtual void setPointSize(float size, bool fromShader) = 0;
 
     // Samplers and textures. A sampler object is made once per distinct SamplerState (the core caches it).
     virtual BackendObject createSampler(const SamplerState& state) = 0;
@@ -134,6 +136,7 @@ public:
     virtual int uniformLocation(BackendObject program, const char* name) = 0;  // -1: none
     virtual void setUniform(BackendObject program, int location, int value) = 0;
     virtual void setUniform(BackendObject program, int location, float value) = 0;
+    virtual void setUniform(BackendObject program, int location, const float* vec4s, int count) = 0;  // vec4 (array)
     virtual BackendObject createPipeline(const std::array<BackendObject, 5>& stagePrograms) = 0;
     virtual void bindPipeline(BackendObject pipeline) = 0;
 

@@ -33,6 +33,13 @@ struct ComputePasses;
 class FragmentRuns;  // fragment_tally.h
 
 
+// A shader's variant with D3D9 fixed-function stages added; program 0: the shader cannot have them
+// (said once, when it was asked for).
+struct FixedFunctionVariant {
+    BackendObject program = 0;
+    std::array<int, 8> locations{-1, -1, -1, -1, -1, -1, -1, -1};  // by FixedFunctionUniform
+};
+
 // A compiled shader made into a separable program (a backend object), as the device needs it at draw time.
 struct ShaderProgram {
     BackendObject program = 0;
@@ -40,11 +47,10 @@ struct ShaderProgram {
     const xlate::CompiledShader* shader = nullptr;  // owned by the effect
     std::string label;                          // "GBuffer.fx: VertexShaderFunction (vs_2_0)"
     bool mayDiscard = false;                    // the GLSL has a `discard` (clip, texkill): read once
-    // Pixel shaders: the D3D9 alpha-test variant (xlate::alphaTestVariant), made at the first draw
-    // that needs it; a cache on a record the device otherwise only reads, hence mutable.
-    mutable BackendObject alphaTestProgram = 0;
-    mutable int alphaFuncLocation = -1, alphaRefLocation = -1;
-    mutable bool alphaTestUnavailable = false;  // the shader writes no colour to test
+    // Variants that emulate D3D9 fixed-function states (xlate/fixed_function.h, fixed_function_draw.cpp),
+    // by what they emulate, made at the first draw that needs one; a cache on a record the device
+    // otherwise only reads, hence mutable.
+    mutable std::map<int, FixedFunctionVariant> fixedFunctionVariants;
     // What compute passes may do with this shader (compute_pass.h), read at its first candidate draw.
     mutable std::shared_ptr<const ComputeAnalysis> computeAnalysis;
     // Pixel shaders: texture fetches per fragment, counted at the first draw the tally sees.
@@ -54,9 +60,10 @@ struct ShaderProgram {
 // D3D9 render states GL core lacks, as the last EffectPass::Apply() set them (off unless its pass
 // says otherwise).
 struct PassEmulation {
+    // Set by each draw from GraphicsDevice::FixedFunction (fixed_function_draw.cpp): whether the
+    // alpha test, or another emulated D3D9 fixed-function state, changes what the draw does.
     bool alphaTest = false;
-    int alphaFunction = 8;      // D3DCMPFUNC code (8 = ALWAYS)
-    float alphaReference = 0;   // (AlphaRef & 0xFF) / 255
+    bool fixedFunction = false;
     bool srgbWrite = false;     // encode into sRGB targets (Backend::setSrgbWrite)
     const xlate::SourceLocation* srgbWriteAt = nullptr;  // where the pass set it (for the warning)
     bool* srgbWriteReported = nullptr;  // the applied effect's "said once" flag
@@ -109,8 +116,16 @@ struct GraphicsDevice::Impl {
     // where D3D9 encoded. Reported once per effect, through the effect warning handler.
     void reportUnencodedSrgbWrite();
     int clipPlanesOfShaders() const;
-    // Picks the pixel program: the shader's own, or its alpha-test variant (made on first use).
-    BackendObject pixelProgramFor(const ShaderProgram& program);
+    // D3D9 fixed-function emulation (fixed_function_draw.cpp): each draw reads
+    // GraphicsDevice::FixedFunction, picks the shaders' own programs or their variants (made on
+    // first use) and sets their uniforms, the clip planes and the point size.
+    void syncFixedFunction();
+    bool drawingPoints = false;  // the draw being flushed is of points (set by the Draw* calls)
+    BackendObject pixelProgramFor(const ShaderProgram& program, const ShaderProgram& writer);
+    BackendObject vertexProgramFor(const ShaderProgram& program);
+    int userClipPlanes() const;  // enabled D3D9 clip planes the vertex shader's variant writes
+    void applyPointSize(const ShaderProgram& lastBeforeRasteriser);
+    void releaseFixedFunctionVariants(const ShaderProgram& program);
     std::map<std::tuple<BackendObject, BackendObject, BackendObject, BackendObject, BackendObject>, BackendObject> pipelines;  // vs, ps, gs, hs, ds
     // Stages compiled apart link by semantic (device/stage_links.cpp): a reader whose inputs sit at
     // other locations than its writer's outputs of the same semantics draws through a variant with

@@ -12,7 +12,6 @@
 #include "effect/effect_impl.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/texture.h"
-#include "fxport/xlate/alpha_test.h"
 #include "fxport/xlate/compiled_effect.h"
 
 namespace fxport {
@@ -40,6 +39,7 @@ void GraphicsDevice::Impl::flush(const char* what) {
         throw InvalidOperation(std::string(what) +
                                ": no effect pass is applied (call effect.CurrentTechnique->Passes[i].Apply() first)");
     checkTessellation(patchDraw, what);
+    syncFixedFunction();
     storageBarrier();  // what an earlier dispatch or draw wrote through images or SSBOs, before this draw uses it
     if (boundFramebuffer == 0) bindTargets();
     makeDepthStorageFor(device.DepthStencilState);  // a buffer nothing needed until now (depth_storage.cpp)
@@ -72,7 +72,9 @@ void GraphicsDevice::Impl::flush(const char* what) {
     applyTextures();
     if (applyStorage(shaders.data(), shaders.size(), what)) storageDirty = true;  // the draw writes: barrier before what follows
     shadow.setSrgbWrite(emulation.srgbWrite);
-    shadow.setClipPlanes(clipPlanesOfShaders());
+    const int shaderPlanes = clipPlanesOfShaders();  // a shader's own SV_ClipDistance, else D3D9's user planes
+    shadow.setClipPlanes(shaderPlanes > 0 ? shaderPlanes : userClipPlanes());
+    applyPointSize(*shaders[shaders[2] ? 2 : shaders[std::size_t(kDomainStage)] ? kDomainStage : 0]);
     if (emulation.srgbWrite) reportUnencodedSrgbWrite();
     tallyDraw();
     shadow.settle();
@@ -105,36 +107,20 @@ void GraphicsDevice::Impl::reportUnencodedSrgbWrite() {
     reportEffectWarning(d.format());
 }
 
-BackendObject GraphicsDevice::Impl::pixelProgramFor(const ShaderProgram& program) {
-    if (!emulation.alphaTest || program.alphaTestUnavailable) return program.program;
-    if (!program.alphaTestProgram) {
-        std::optional<std::string> glsl = xlate::alphaTestVariant(program.shader->glsl);
-        if (!glsl) {
-            program.alphaTestUnavailable = true;
-            std::cerr << "fxport: " << program.label << ": AlphaTestEnable is set but the shader writes no float4 colour to"
-                      << " render target 0; drawing without the alpha test\n";
-            return program.program;
-        }
-        program.alphaTestProgram = createProgram(1, *glsl, program.label + " [alpha test]");
-        program.alphaFuncLocation = backend->uniformLocation(program.alphaTestProgram, xlate::kAlphaFuncUniform);
-        program.alphaRefLocation = backend->uniformLocation(program.alphaTestProgram, xlate::kAlphaRefUniform);
-    }
-    backend->setUniform(program.alphaTestProgram, program.alphaFuncLocation, emulation.alphaFunction);
-    backend->setUniform(program.alphaTestProgram, program.alphaRefLocation, emulation.alphaReference);
-    return program.alphaTestProgram;
-}
-
 void GraphicsDevice::Impl::applyShaders() {
     // Each stage reads what the stage before it in the pipeline (vertex, hull, domain, geometry,
     // pixel) writes, linked by semantic.
     std::array<const ShaderProgram*, kStageCount> linked = shaders;
     const ShaderProgram* writer = shaders[0];
+    const ShaderProgram* pixelWriter = writer;
     for (int stage : {kHullStage, kDomainStage, 2, 1}) {
         if (!shaders[std::size_t(stage)]) continue;
         linked[std::size_t(stage)] = &linkedReader(*shaders[std::size_t(stage)], *writer);
+        if (stage == 1) pixelWriter = writer;
         writer = shaders[std::size_t(stage)];
     }
-    BackendObject vs = linked[0]->program, ps = pixelProgramFor(*linked[1]), gs = linked[2] ? linked[2]->program : 0;
+    BackendObject vs = vertexProgramFor(*linked[0]), ps = pixelProgramFor(*linked[1], *pixelWriter);
+    BackendObject gs = linked[2] ? linked[2]->program : 0;
     BackendObject hs = linked[kHullStage] ? linked[kHullStage]->program : 0, ds = linked[kDomainStage] ? linked[kDomainStage]->program : 0;
     auto key = std::make_tuple(vs, ps, gs, hs, ds);
     auto it = pipelines.find(key);

@@ -221,6 +221,7 @@ void setShaderStages(GraphicsDevice& device, const ShaderCode* const (&stages)[5
     for (int stage = 0; stage < kStageCount; ++stage)
         d.shaders[std::size_t(stage)] = stages[stage] ? &stages[stage]->program() : nullptr;
     d.emulation = PassEmulation{};
+    d.device.FixedFunction = FixedFunctionState{};  // D3D10+ has none of D3D9's fixed-function stages
     d.passApplied = true;
 }
 
@@ -271,6 +272,7 @@ void flushFor(GraphicsDevice::Impl& d, const DrawArguments& a) {
     if (a.controlPoints < 0 || a.controlPoints > kMaxControlPoints)
         throw ArgumentError("Draw: " + std::to_string(a.controlPoints) + " control points per patch (1.." + std::to_string(kMaxControlPoints) + ")");
     d.patchDraw = a.controlPoints > 0;
+    d.drawingPoints = false;  // D3D10+ points have no size or sprites; FixedFunction stays off (setShaderStages)
     try {
         d.flush("Draw");
     } catch (...) {

@@ -489,6 +489,7 @@ void GraphicsDevice::DrawIndexedPrimitives(PrimitiveType primitiveType, int base
         throw ArgumentError("DrawIndexedPrimitives: " + std::to_string(primitiveCount) + " primitives from index " +
                             std::to_string(startIndex) + " need " + std::to_string(count) + " indices; the index buffer has " +
                             std::to_string(Indices->IndexCount()));
+    d.drawingPoints = primitiveType == PrimitiveType::PointList;
     d.flush("DrawIndexedPrimitives");
     Impl::VertexArray& va = d.bindVertexBuffer();
     if (va.elements != Indices->backendObject()) {
@@ -510,6 +511,7 @@ void GraphicsDevice::DrawPrimitives(PrimitiveType primitiveType, int vertexStart
         throw ArgumentError("DrawPrimitives: " + std::to_string(primitiveCount) + " primitives from vertex " +
                             std::to_string(vertexStart) + " overrun the vertex buffer's " +
                             std::to_string(d.vertexBuffer->VertexCount()) + " vertices");
+    d.drawingPoints = primitiveType == PrimitiveType::PointList;
     d.flush("DrawPrimitives");
     d.bindVertexBuffer();
     const DrawCall draw{primitiveType, 0, count, vertexStart};
@@ -546,6 +548,7 @@ void GraphicsDevice::drawUser(PrimitiveType type, const void* vertices, std::siz
     if (stride != std::size_t(declaration.VertexStride()))
         throw ArgumentError("DrawUserPrimitives: the vertex type has " + std::to_string(stride) +
                             " bytes, its declaration's stride is " + std::to_string(declaration.VertexStride()));
+    d.drawingPoints = type == PrimitiveType::PointList;
     d.flush("DrawUserPrimitives");
     int count = vertexCountFor(type, primitiveCount);
     d.streamUserData(d.userVertices, d.userVerticesSize, vertices, std::size_t(count) * stride);
@@ -579,6 +582,7 @@ void GraphicsDevice::drawUserIndexed(PrimitiveType type, const void* vertices, s
             throw ArgumentError("DrawUserIndexedPrimitives: index " + std::to_string(i) + " is " + std::to_string(index) + ", beyond the " +
                                 std::to_string(vertexCount) + " vertices given");
     }
+    d.drawingPoints = type == PrimitiveType::PointList;
     d.flush("DrawUserIndexedPrimitives");
     d.streamUserData(d.userVertices, d.userVerticesSize, vertices, std::size_t(vertexCount) * stride);
     d.streamUserData(d.userIndices, d.userIndicesSize, indices, std::size_t(count) * std::size_t(indexSize));

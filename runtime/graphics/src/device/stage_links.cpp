@@ -61,7 +61,7 @@ void GraphicsDevice::Impl::dropLinkedReadersOf(BackendObject readerProgram) {
         it = linkedReaders.erase(it);
     }
     for (auto& l : dropped) {
-        if (l->program.alphaTestProgram) deleteProgram(l->program.alphaTestProgram);
+        releaseFixedFunctionVariants(l->program);
         deleteProgram(l->program.program);
     }
 }

@@ -46,6 +46,13 @@ void StateShadow::setClipPlanes(int wanted) {
     clipPlanes_ = wanted;
 }
 
+void StateShadow::setPointSize(float size, bool fromShader) {
+    if (!unknown_ && size == pointSize_ && fromShader == pointSizeFromShader_) return;
+    backend_.setPointSize(size, fromShader);
+    pointSize_ = size;
+    pointSizeFromShader_ = fromShader;
+}
+
 void StateShadow::reapply() {
     backend_.setBlend(blend_, nullptr);
     backend_.setDepthStencil(depthStencil_, nullptr);

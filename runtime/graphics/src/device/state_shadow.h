@@ -27,6 +27,7 @@ public:
     void setScissor(const Rectangle& wanted);
     void setSrgbWrite(bool wanted);
     void setClipPlanes(int wanted);
+    void setPointSize(float size, bool fromShader);
     // Sends blend, depth/stencil, rasterizer and scissor again, whole, as the shadow has them: after
     // a clear, which sets write masks and the scissor test for itself. Leaves unknown() as it is.
     void reapply();
@@ -47,6 +48,8 @@ private:
     Rectangle scissor_;
     bool srgbWrite_ = false;
     int clipPlanes_ = 0;
+    float pointSize_ = 1;
+    bool pointSizeFromShader_ = false;
 };
 
 }  // namespace fxport

@@ -50,6 +50,7 @@ void GraphicsDevice::DrawPatches(int controlPoints, int vertexStart, int patchCo
                             std::to_string(vertexStart) + " overrun the vertex buffer's " + std::to_string(d.vertexBuffer->VertexCount()) + " vertices");
     {
         PatchDrawScope scope(d.patchDraw);
+        d.drawingPoints = false;
         d.flush("DrawPatches");
     }
     d.bindVertexBuffer();
@@ -69,6 +70,7 @@ void GraphicsDevice::DrawIndexedPatches(int controlPoints, int baseVertex, int s
                             " indices; the index buffer has " + std::to_string(Indices->IndexCount()));
     {
         PatchDrawScope scope(d.patchDraw);
+        d.drawingPoints = false;
         d.flush("DrawIndexedPatches");
     }
     Impl::VertexArray& va = d.bindVertexBuffer();

@@ -465,7 +465,7 @@ void Effect::Impl::releasePrograms(GraphicsDevice::Impl& device) {
                 if (bound == &p) bound = nullptr;
             if (device.computeShader == &p) device.computeShader = nullptr;
             device.deleteProgram(p.program);
-            if (p.alphaTestProgram) device.deleteProgram(p.alphaTestProgram);
+            device.releaseFixedFunctionVariants(p);
             if (p.computeAnalysis && device.computePasses) device.computePasses->forget(*p.computeAnalysis);
         }
 }

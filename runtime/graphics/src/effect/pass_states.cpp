@@ -111,7 +111,10 @@ void setRowValue(PassStateRow& row, const xlate::StateValue& value) {
         void operator()(xlate::StencilOperation v) const { r.stencil = toStencil(v); }
         void operator()(xlate::CullMode v) const { r.cull = toCull(v); }
         void operator()(xlate::FillMode v) const { r.fill = toFill(v); }
-        void operator()(const std::array<float, 4>& v) const { r.factor = Color(Vector4(v[0], v[1], v[2], v[3])); }
+        void operator()(const std::array<float, 4>& v) const {
+            r.vector = Vector4(v[0], v[1], v[2], v[3]);
+            r.factor = Color(r.vector);
+        }
     };
     std::visit(Set{row}, value);
 }
@@ -137,31 +140,26 @@ PassStates decodePassStates(const xlate::Pass& pass) {
 
 namespace {
 
-// D3DCMPFUNC code of a comparison (what the alpha-test variant's uniform takes).
-int d3d9CompareCode(CompareFunction f) {
-    switch (f) {
-    case CompareFunction::Never: return 1;
-    case CompareFunction::Less: return 2;
-    case CompareFunction::Equal: return 3;
-    case CompareFunction::LessEqual: return 4;
-    case CompareFunction::Greater: return 5;
-    case CompareFunction::NotEqual: return 6;
-    case CompareFunction::GreaterEqual: return 7;
-    case CompareFunction::Always: return 8;
-    }
-    return 8;
+Vector4 d3dColor(int argb) {  // a D3DCOLOR, 0xAARRGGBB
+    const auto c = std::uint32_t(argb);
+    return Vector4(float((c >> 16) & 255) / 255.0f, float((c >> 8) & 255) / 255.0f, float(c & 255) / 255.0f, float(c >> 24) / 255.0f);
 }
+
+FogMode fogMode(int d3dFogMode) { return d3dFogMode >= 1 && d3dFogMode <= 3 ? FogMode(d3dFogMode) : FogMode::None; }
 
 }  // namespace
 
 void applyPassStates(const PassStates& states, const Effect::Impl& e, GraphicsDevice& device) {
-    // Alpha test and sRGB write belong to the pass: off unless it turns them on (XNA 4's device
-    // has neither, so nothing else would ever turn them off).
+    // sRGB write and the D3D9 fixed-function states (alpha test, fog, points, clip planes, shade
+    // mode) belong to the pass: off unless it turns them on (XNA 4's device has none of them, so
+    // nothing else would ever turn them off); a program sets device.FixedFunction after Apply().
     PassEmulation emulation;
+    device.FixedFunction = FixedFunctionState{};
     if (states.rows.empty()) {
         deviceImpl(device).emulation = emulation;
         return;
     }
+    FixedFunctionState& fixed = device.FixedFunction;
     BlendState blend = device.BlendState;
     DepthStencilState depth = device.DepthStencilState;
     RasterizerState raster = device.RasterizerState;
@@ -224,9 +222,25 @@ void applyPassStates(const PassStates& states, const Effect::Impl& e, GraphicsDe
         case RenderState::MultiSampleAntiAlias: raster.MultiSampleAntiAlias = s.flag; break;
         case RenderState::DepthBias: raster.DepthBias = s.number; break;
         case RenderState::SlopeScaleDepthBias: raster.SlopeScaleDepthBias = s.number; break;
-        case RenderState::AlphaTestEnable: emulation.alphaTest = s.flag; break;
-        case RenderState::AlphaFunc: emulation.alphaFunction = d3d9CompareCode(s.compare); break;
-        case RenderState::AlphaRef: emulation.alphaReference = float(s.integer & 0xFF) / 255.0f; break;
+        case RenderState::AlphaTestEnable: fixed.AlphaTestEnable = s.flag; break;
+        case RenderState::AlphaFunc: fixed.AlphaFunction = s.compare; break;
+        case RenderState::AlphaRef: fixed.ReferenceAlpha = s.integer; break;
+        case RenderState::FogEnable: fixed.FogEnable = s.flag; break;
+        case RenderState::FogColor: fixed.FogColor = d3dColor(s.integer); break;
+        case RenderState::FogTableMode: fixed.FogTableMode = fogMode(s.integer); break;
+        case RenderState::FogVertexMode: fixed.FogVertexMode = fogMode(s.integer); break;
+        case RenderState::FogStart: fixed.FogStart = s.number; break;
+        case RenderState::FogEnd: fixed.FogEnd = s.number; break;
+        case RenderState::FogDensity: fixed.FogDensity = s.number; break;
+        case RenderState::PointSize: fixed.PointSize = s.number; break;
+        case RenderState::PointSizeMin: fixed.PointSizeMin = s.number; break;
+        case RenderState::PointSizeMax: fixed.PointSizeMax = s.number; break;
+        case RenderState::PointSpriteEnable: fixed.PointSpriteEnable = s.flag; break;
+        case RenderState::ClipPlaneEnable: fixed.ClipPlaneEnable = std::uint32_t(s.integer) & 0x3Fu; break;
+        case RenderState::ClipPlane:
+            if (s.index >= 0 && s.index < int(fixed.ClipPlanes.size())) fixed.ClipPlanes[std::size_t(s.index)] = s.vector;
+            break;
+        case RenderState::ShadeMode: fixed.ShadeMode = s.integer == 1 ? ShadeMode::Flat : ShadeMode::Gouraud; break;
         case RenderState::SrgbWriteEnable:
             emulation.srgbWrite = s.flag;
             emulation.srgbWriteAt = s.where;

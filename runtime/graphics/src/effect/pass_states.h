@@ -36,6 +36,7 @@ struct PassStateRow {
     CullMode cull = CullMode::CullCounterClockwiseFace;
     FillMode fill = FillMode::Solid;
     Color factor;
+    Vector4 vector;  // the float4 of BlendFactor / ClipPlane[n], unquantised
 };
 
 // Fills the typed field of `row` from xlate's value for the row's state.

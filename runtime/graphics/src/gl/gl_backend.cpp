@@ -267,6 +267,14 @@ void GlBackend::setClipPlanes(int count) {
     }
 }
 
+void GlBackend::setPointSize(float size, bool fromShader) {
+    // Core GL has no point-size clamp (POINT_SIZE_MIN/MAX are compatibility-only): the device
+    // clamps `size`, and a vertex shader's gl_PointSize is clamped by the shader variant.
+    if (fromShader) glEnable(GL_PROGRAM_POINT_SIZE);
+    else glDisable(GL_PROGRAM_POINT_SIZE);
+    glPointSize(size);
+}
+
 BackendObject GlBackend::createSampler(const SamplerState& s) {
     GLuint sampler = 0;
     glCreateSamplers(1, &sampler);

@@ -24,6 +24,7 @@ public:
     void setScissor(const Rectangle& rectangle) override;
     void setSrgbWrite(bool enabled) override;
     void setClipPlanes(int count) override;
+    void setPointSize(float size, bool fromShader) override;
     BackendObject createSampler(const SamplerState& state) override;
     void deleteSampler(BackendObject sampler) override { glDeleteSamplers(1, &sampler); }
     void bindTexture(int unit, BackendObject texture) override { glBindTextureUnit(GLuint(unit), texture); }
@@ -37,6 +38,9 @@ public:
     int uniformLocation(BackendObject program, const char* name) override { return glGetUniformLocation(program, name); }
     void setUniform(BackendObject program, int location, int value) override { glProgramUniform1i(program, location, value); }
     void setUniform(BackendObject program, int location, float value) override { glProgramUniform1f(program, location, value); }
+    void setUniform(BackendObject program, int location, const float* vec4s, int count) override {
+        glProgramUniform4fv(program, location, count, vec4s);
+    }
     BackendObject createPipeline(const std::array<BackendObject, 5>& stagePrograms) override;
     void bindPipeline(BackendObject pipeline) override { glBindProgramPipeline(pipeline); }
     BackendObject createVertexArray(const std::vector<VertexAttribute>& attributes, const std::vector<int>& divisors) override;

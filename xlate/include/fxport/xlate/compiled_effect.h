@@ -223,6 +223,12 @@ enum class RenderState : std::uint8_t {
     CullMode, FillMode, ScissorTestEnable, MultiSampleAntiAlias,
     DepthBias, SlopeScaleDepthBias, DepthClipEnable,
     AlphaTestEnable, AlphaFunc, AlphaRef, SrgbWriteEnable,
+    // D3D9 fixed-function states the runtime emulates (runtime FixedFunctionState). The enumerated
+    // ones keep D3D9's codes as int: FogTableMode/FogVertexMode D3DFOGMODE (0 NONE, 1 EXP, 2 EXP2,
+    // 3 LINEAR), ShadeMode D3DSHADEMODE (1 FLAT, 2 GOURAUD, 3 PHONG); FogColor a D3DCOLOR;
+    // ClipPlane[n] a float4.
+    FogEnable, FogColor, FogTableMode, FogVertexMode, FogStart, FogEnd, FogDensity,
+    PointSize, PointSizeMin, PointSizeMax, PointSpriteEnable, ClipPlaneEnable, ClipPlane, ShadeMode,
 };
 
 // Values of enumerated states.

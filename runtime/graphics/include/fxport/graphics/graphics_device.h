@@ -20,6 +20,7 @@
 #include "fxport/graphics/depth_stencil_state.h"
 #include "fxport/graphics/device_optimizations.h"
 #include "fxport/graphics/device_statistics.h"
+#include "fxport/graphics/fixed_function_state.h"
 #include "fxport/graphics/rasterizer_state.h"
 #include "fxport/graphics/render_target.h"
 #include "fxport/graphics/sampler_state.h"
@@ -111,6 +112,9 @@ public:
     fxport::BlendState BlendState;
     fxport::DepthStencilState DepthStencilState;
     fxport::RasterizerState RasterizerState;
+    // D3D9 states XNA 4 has no API for (fog, points, clip planes, alpha test, shade mode): set by an
+    // effect pass's D3D9 states at Apply(), or assigned here after Apply() (fixed_function_state.h).
+    fxport::FixedFunctionState FixedFunction;
     TextureCollection Textures;
     SamplerStateCollection SamplerStates;
     IndexBuffer* Indices = nullptr;

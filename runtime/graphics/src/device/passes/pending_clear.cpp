@@ -105,7 +105,7 @@ void GraphicsDevice::Impl::dropColorClearUnderCoveringSprite(const ShaderProgram
     const bool writesAll = blend.ColorWriteChannels == fxport::ColorWriteChannels::All;
     const bool ownVertexShader = vertex && vertex == spriteVertexShader && vertex->shader &&
                                  vertex->shader->needsD3D9PixelOffset;
-    const bool pixelMayDiscard = !pixel || !pixel->shader || emulation.alphaTest || pixel->mayDiscard;
+    const bool pixelMayDiscard = !pixel || !pixel->shader || emulation.alphaTest || emulation.fixedFunction || pixel->mayDiscard;
     if (blend.blendingEnabled() || !writesAll || depth.DepthBufferEnable || depth.StencilEnable ||
         raster.ScissorTestEnable || raster.CullMode == fxport::CullMode::CullClockwiseFace ||
         raster.FillMode != fxport::FillMode::Solid || blend.MultiSampleMask != -1 || targets.size() > 1 ||

@@ -372,6 +372,7 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
         if (depth.StencilEnable) return fallBack("stencil test");
     }
     if (d.emulation.alphaTest) return fallBack("alpha test");
+    if (d.emulation.fixedFunction) return fallBack("D3D9 fixed-function emulation");
     if (d.emulation.srgbWrite) return fallBack("sRGB write");
     const RasterizerState& raster = dev.RasterizerState;
     if (raster.FillMode != FillMode::Solid) return fallBack("wireframe");

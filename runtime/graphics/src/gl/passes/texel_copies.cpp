@@ -109,7 +109,8 @@ bool ComputePasses::tryTexelCopies(const Texture2D& texture, const std::vector<d
                                                       : static_cast<const RenderTarget2D*>(target)->DepthStencilFormat();
     if (depthFormat != DepthFormat::None && (depth.DepthBufferEnable || depth.StencilEnable))
         return fallBack("texel copies: depth or stencil test");
-    if (d.emulation.alphaTest || d.emulation.srgbWrite) return fallBack("texel copies: alpha test or sRGB write");
+    if (d.emulation.alphaTest || d.emulation.fixedFunction || d.emulation.srgbWrite)
+        return fallBack("texel copies: alpha test, D3D9 fixed-function emulation or sRGB write");
     const RasterizerState& raster = dev.RasterizerState;
     // SpriteBatch's sprites are clockwise on screen: CullClockwiseFace culls them all.
     if (raster.FillMode != FillMode::Solid || raster.CullMode == CullMode::CullClockwiseFace)
