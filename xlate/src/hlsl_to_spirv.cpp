@@ -114,6 +114,7 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
         return out;
     }
     applySpirvFixups(out.words);
+    structuredBufferStridesAsD3D(out.words);
     if (request.shaderModel < 4) integerDivisionInFloats(out.words);  // SM2-3 integers are floats
     std::string legalizeError;
     if (!legalizeSpirv(out.words, &legalizeError)) out.errors.push_back({0, {}, legalizeError});

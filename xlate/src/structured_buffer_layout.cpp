@@ -31,7 +31,7 @@ struct Place {
 struct Buffer {
     std::uint32_t variable = 0, storage = 0, oldBlock = 0, element = 0;  // element: T of T[]
     bool elementRowMajor = false;
-    std::uint32_t strideWords = 0;
+    std::uint32_t strideWords = 0, oldStride = 0;  // D3D's stride in words, std430's in bytes
     std::uint32_t lengthConstant = 0, wordArray = 0, wordStruct = 0, runtimeArray = 0, block = 0, blockPointer = 0,
                   wordPointer = 0;
 };
@@ -74,6 +74,28 @@ public:
             rewriteUse(in, out);
         });
         return true;
+    }
+
+    // GetDimensions(count, stride): glslang stores its own (std430) stride, a constant, right after
+    // the OpArrayLength of the count; it becomes D3D's. True when the module changed.
+    bool strides() {
+        const auto buffers = candidates();
+        bool changed = false;
+        auto& code = m_.instructions;
+        for (std::size_t i = 0; i + 2 < code.size(); ++i) {
+            const auto& w = code[i].words;
+            if (code[i].opcode() != spv::OpArrayLength || w.size() < 5 || !buffers.count(w[3])) continue;
+            const Buffer& b = buffers.at(w[3]);
+            auto& count = code[i + 1].words;
+            auto& stride = code[i + 2].words;
+            if (code[i + 1].opcode() != spv::OpStore || count.size() < 3 || count[2] != w[2]) continue;
+            if (code[i + 2].opcode() != spv::OpStore || stride.size() < 3) continue;
+            auto constant = constants_.find(stride[2]);
+            if (constant == constants_.end() || constant->second != b.oldStride) continue;
+            stride[2] = m_.constant(m_.typeOf(stride[2]), 4 * b.strideWords);
+            changed = true;
+        }
+        return changed;
     }
 
 private:
@@ -196,7 +218,8 @@ private:
         }
     }
 
-    void findBuffers() {
+    // The structured buffers whose std430 layout is not D3D's, by variable.
+    std::map<std::uint32_t, Buffer> candidates() const {
         bool inFunctions = false;
         std::map<std::uint32_t, Buffer> candidates;
         for (const auto& in : m_.instructions) {
@@ -221,14 +244,18 @@ private:
             auto words = tightWords(b.element);
             if (!words || *words == 0) continue;
             b.strideWords = *words;
-            if (decoration(runtimeArray, spv::DecorationArrayStride) == 4 * *words &&
+            b.oldStride = decoration(runtimeArray, spv::DecorationArrayStride).value_or(0);
+            if (b.oldStride == 4 * *words &&
                 isTight(b.element, b.elementRowMajor, memberDecoration(block, 0, spv::DecorationMatrixStride)))
                 continue;  // std430 is D3D's layout here
             candidates[b.variable] = b;
         }
-        for (auto& [id, b] : candidates) {
+        return candidates;
+    }
+
+    void findBuffers() {
+        for (auto& [id, b] : candidates())
             if (usesAreKnown(b)) buffers_[id] = b;
-        }
     }
 
     // Follows `indices` from `p`; with `out`, emits the word arithmetic (without, plans only).
@@ -486,6 +513,13 @@ private:
 };
 
 }  // namespace
+
+void structuredBufferStridesAsD3D(std::vector<std::uint32_t>& words) {
+    SpirvModuleEdit m;
+    if (!m.parse(words)) return;
+    Repacker repacker(m);
+    if (repacker.strides()) words = m.assemble();
+}
 
 void packStructuredBuffersTightly(std::vector<std::uint32_t>& words) {
     SpirvModuleEdit m;

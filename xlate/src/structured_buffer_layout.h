@@ -15,6 +15,10 @@
 
 namespace fxport::xlate {
 
+// The stride GetDimensions reports for such a buffer: glslang stores its std430 stride as a
+// constant; D3D's replaces it. Run on the unoptimised module, before forwarding hides the store.
+void structuredBufferStridesAsD3D(std::vector<std::uint32_t>& words);
+
 // Repacks the structured buffers of `words` (a legalised module) in place.
 void packStructuredBuffersTightly(std::vector<std::uint32_t>& words);
 
