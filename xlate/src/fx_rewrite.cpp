@@ -8,6 +8,8 @@
 #include "length_property.h"
 #include "unused_uavs.h"
 #include "refract_eta.h"
+#include "compare_store.h"
+#include "mixed_dimension_outputs.h"
 #include "matrix_rows_intrinsics.h"
 #include "static_object_aliases.h"
 #include "shader_valued_defaults.h"
@@ -405,6 +407,8 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : lengthPropertiesAsCalls(syntax)) edits.push_back(std::move(e));
     for (auto& e : unusedUavsDropped(syntax)) edits.push_back(std::move(e));
     for (auto& e : refractVectorEta(syntax)) edits.push_back(std::move(e));
+    for (auto& e : compareStoreAsExchange(syntax)) edits.push_back(std::move(e));
+    for (auto& e : mixedDimensionOutputs(syntax)) edits.push_back(std::move(e));
     for (auto& e : matrixIntrinsicsByRow(syntax)) edits.push_back(std::move(e));
     for (auto& e : staticObjectAliases(syntax)) edits.push_back(std::move(e));
     for (auto& e : shaderValuedDefaultsDropped(syntax)) edits.push_back(std::move(e));
