@@ -35,6 +35,7 @@
 #include "render_states.h"
 #include "source_map.h"
 #include "text_util.h"
+#include "texture_registers.h"
 
 namespace fxport::xlate {
 
@@ -336,19 +337,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
                 out.samplers.push_back(std::move(es));
                 break;
             }
-    std::set<int> usedTextureUnits;
-    for (const auto& t : syntax.textures)
-        if (!t.dx9Object && t.explicitUnit >= 0) {
-            out.textureUnits[t.name] = t.explicitUnit;
-            usedTextureUnits.insert(t.explicitUnit);
-        }
-    for (const auto& t : syntax.textures) {
-        if (t.dx9Object || out.textureUnits.count(t.name)) continue;
-        int u = 0;
-        while (usedTextureUnits.count(u)) ++u;
-        out.textureUnits[t.name] = u;
-        usedTextureUnits.insert(u);
-    }
+    out.textureUnits = textureRegisters(syntax);
 
     // ---- 3. apply edits ------------------------------------------------------------------------
     std::vector<TextEdit> edits = syntax.edits;
