@@ -38,6 +38,8 @@
 #include "preprocess.h"
 #include "struct_definitions.h"
 #include "unused_sampler_arrays.h"
+#include "sampler_array_elements.h"
+#include "sampler_textures.h"
 #include "literal_suffixes.h"
 #include "render_states.h"
 #include "shader_profile.h"
@@ -1122,6 +1124,8 @@ CompiledEffect compileUncached(const std::string& source, const std::string& dis
     reportWorkerProgress("parse");
     pre.text = splitStructDefinitions(pre.text);  // `static struct { ... } x;` and definitions in definitions
     pre.text = dropUnusedSamplerArrays(pre.text);
+    pre.text = samplerArraysAsElements(pre.text);  // sam[1] -> sam_fxport_1
+    pre.text = samplerTexturesDeclared(pre.text);  // tex2D(sam, uv) beside tex.Sample(sam, uv)
     pre.text = longLiteralSuffixesDropped(pre.text);  // 3lu -> 3u
 
     EffectSyntax syntax = parseEffect(pre.text, pre.map, isLooseShaderCompile(options));

@@ -141,12 +141,14 @@ public:
     EffectSyntax run() {
         while (!isEnd()) parseTopLevel();
         // In SM4 code `sampler` is another name for SamplerState: a plain `sampler S` used as the
-        // sampler argument of Texture.Sample(S, ...) is a DX10 sampler, not a DX9 one.
+        // sampler argument of Texture.Sample(S, ...) (Gather, CalculateLevelOfDetail) is a DX10
+        // sampler, not a DX9 one.
         for (auto& smp : syntax_.samplers) {
             if (smp.dx10 || !iequals(smp.type, "sampler")) continue;
             for (size_t i = 0; i + 3 < syntax_.tokens.size(); ++i) {
                 const std::string& m = tok(i + 1).text;
-                if (tok(i).is(".") && (m.rfind("Sample", 0) == 0 || m.rfind("Gather", 0) == 0) && tok(i + 2).is("(") &&
+                if (tok(i).is(".") && (m.rfind("Sample", 0) == 0 || m.rfind("Gather", 0) == 0 || m.rfind("CalculateLevelOfDetail", 0) == 0) &&
+                    tok(i + 2).is("(") &&
                     tok(i + 3).text == smp.name) {
                     smp.dx10 = true;
                     smp.type = "SamplerState";

@@ -10,6 +10,8 @@
 #include "pow2_partitioning.h"
 #include "refract_eta.h"
 #include "tess_factor_intrinsics.h"
+#include "compare_store.h"
+#include "mixed_dimension_outputs.h"
 #include "matrix_rows_intrinsics.h"
 #include "static_object_aliases.h"
 #include "shader_valued_defaults.h"
@@ -35,6 +37,7 @@
 #include "render_states.h"
 #include "source_map.h"
 #include "text_util.h"
+#include "texture_registers.h"
 
 namespace fxport::xlate {
 
@@ -336,19 +339,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
                 out.samplers.push_back(std::move(es));
                 break;
             }
-    std::set<int> usedTextureUnits;
-    for (const auto& t : syntax.textures)
-        if (!t.dx9Object && t.explicitUnit >= 0) {
-            out.textureUnits[t.name] = t.explicitUnit;
-            usedTextureUnits.insert(t.explicitUnit);
-        }
-    for (const auto& t : syntax.textures) {
-        if (t.dx9Object || out.textureUnits.count(t.name)) continue;
-        int u = 0;
-        while (usedTextureUnits.count(u)) ++u;
-        out.textureUnits[t.name] = u;
-        usedTextureUnits.insert(u);
-    }
+    out.textureUnits = textureRegisters(syntax);
 
     // ---- 3. apply edits ------------------------------------------------------------------------
     std::vector<TextEdit> edits = syntax.edits;
@@ -409,6 +400,8 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : refractVectorEta(syntax)) edits.push_back(std::move(e));
     for (auto& e : pow2PartitioningAsInteger(syntax)) edits.push_back(std::move(e));
     for (auto& e : tessFactorIntrinsics(syntax)) edits.push_back(std::move(e));
+    for (auto& e : compareStoreAsExchange(syntax)) edits.push_back(std::move(e));
+    for (auto& e : mixedDimensionOutputs(syntax)) edits.push_back(std::move(e));
     for (auto& e : matrixIntrinsicsByRow(syntax)) edits.push_back(std::move(e));
     for (auto& e : staticObjectAliases(syntax)) edits.push_back(std::move(e));
     for (auto& e : shaderValuedDefaultsDropped(syntax)) edits.push_back(std::move(e));

@@ -8,6 +8,7 @@
 
 #include "glslang_process.h"
 #include "clip_distance_packing.h"
+#include "structured_buffer_layout.h"
 #include "spirv_fixups.h"
 #include "pow2_partitioning.h"
 #include "spirv_integer_fixups.h"
@@ -118,10 +119,14 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
         return out;
     }
     applySpirvFixups(out.words);
+    structuredBufferStridesAsD3D(out.words);
     if (request.shaderModel < 4) integerDivisionInFloats(out.words);  // SM2-3 integers are floats
     std::string legalizeError;
     if (!legalizeSpirv(out.words, &legalizeError)) out.errors.push_back({0, {}, legalizeError});
-    else packClipCullDistances(out.words);
+    else {
+        packClipCullDistances(out.words);
+        packStructuredBuffersTightly(out.words);
+    }
     if (request.hullPartitioning == "pow2" && out.errors.empty()) roundTessFactorsToPowersOfTwo(out.words);
     return out;
 }

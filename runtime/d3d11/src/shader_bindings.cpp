@@ -55,6 +55,9 @@ std::map<std::string, int> allocate(const xlate::CompiledEffect& e, RK kind, std
         return declarationOrder(e, kind, a) < declarationOrder(e, kind, b);
     });
     std::map<std::string, int> slots;
+    // fxc keeps a register(xN) reservation even for a resource the shader never uses.
+    for (const auto& r : e.resources)
+        if (r.kind == kind && r.explicitRegister >= 0) taken.insert(r.explicitRegister);
     for (const auto& n : names)
         if (int r = explicitRegister(e, kind, n); r >= 0) {
             slots[n] = r;
