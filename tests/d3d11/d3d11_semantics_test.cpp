@@ -166,9 +166,9 @@ TEST_F(SemanticsTest, BadLayoutsNameTheFieldAndValue) {
     std::vector<D3D11_INPUT_ELEMENT_DESC> unaligned = all;
     unaligned[6].AlignedByteOffset = 41;  // R16_UNORM: 2-byte components
     rejected(E_INVALIDARG, unaligned, "pInputElementDescs[6].AlignedByteOffset = 41 (must be a multiple of 2, the format's component size)");
-    std::vector<D3D11_INPUT_ELEMENT_DESC> bgra = all;
-    bgra[3].Format = DXGI_FORMAT_B8G8R8A8_UNORM;
-    rejected(E_NOTIMPL, bgra, "pInputElementDescs[3].Format = DXGI_FORMAT_B8G8R8A8_UNORM (87)");
+    std::vector<D3D11_INPUT_ELEMENT_DESC> packedUint = all;
+    packedUint[3].Format = DXGI_FORMAT_R10G10B10A2_UINT;  // GL has no integer attribute of packed components
+    rejected(E_NOTIMPL, packedUint, "pInputElementDescs[3].Format = DXGI_FORMAT_R10G10B10A2_UINT (25)");
 }
 
 // A vertex shader and pixel shaders compiled apart (each its own D3DCompile): the pixel shaders

@@ -1024,6 +1024,7 @@ std::string cacheKey(const std::string& source, const std::string& displayPath, 
     if (!options.hullOfDomainShader.partitioning.empty())
         field("H", options.hullOfDomainShader.partitioning + "," + options.hullOfDomainShader.outputTopology);
     if (options.skipShaders) field("O", "outline");
+    if (!options.defaultMatrixMajority.empty()) field("M", options.defaultMatrixMajority);
     field("S", source);
     return key;
 }
@@ -1159,7 +1160,7 @@ CompiledEffect compileUncached(const std::string& source, const std::string& dis
     if (auto hazards = findFrontEndHazards(syntax, pre.map); !hazards.empty()) throw CompileError(std::move(hazards));
     // What fxc rejects and glslang would accept (fxc_checks.h: every family of checks).
     if (auto rejected = runFxcChecks(syntax, pre.map); !rejected.empty()) throw CompileError(std::move(rejected));
-    RewrittenEffect rewritten = rewriteEffect(pre.text, syntax, pre.map, effect.diagnostics);
+    RewrittenEffect rewritten = rewriteEffect(pre.text, syntax, pre.map, effect.diagnostics, options.defaultMatrixMajority);
     for (auto& w : findImplicitTruncations(syntax, pre.map)) effect.diagnostics.push_back(std::move(w));
     Prefetched prefetched;
     if (insideWorker() && g_shaderJobs > 1 && !options.skipShaders) {

@@ -30,4 +30,8 @@ std::vector<std::string> effectDependencies(const std::string& path, const Compi
     return files;
 }
 
+void preprocessSource(const std::string& source, const std::string& virtualPath, const CompileOptions& options) {
+    (void)preprocessEffect(source, virtualPath, virtualPath, options);
+}
+
 }  // namespace fxport::xlate

@@ -194,7 +194,7 @@ std::string RewrittenEffect::hlslForGeometryShader(const std::string& entry, con
 }
 
 RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& syntax, const SourceMap& map,
-                              std::vector<Diagnostic>& diagnostics) {
+                              std::vector<Diagnostic>& diagnostics, const std::string& defaultMajority) {
     RewrittenEffect out;
     const auto& tokens = syntax.tokens;
     auto fail = [&](const std::string& message, size_t token) {
@@ -415,7 +415,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : mixedShapeConversions(syntax)) edits.push_back(std::move(e));
     for (auto& e : arrayArgumentOverloads(syntax)) edits.push_back(std::move(e));
     for (auto& e : intrinsicOverrides(syntax)) edits.push_back(std::move(e));
-    for (auto& e : spellOutPackMatrixPragmas(syntax)) edits.push_back(std::move(e));
+    for (auto& e : spellOutPackMatrixPragmas(syntax, defaultMajority)) edits.push_back(std::move(e));
     out.sourceText = &text;
     out.syntax = &syntax;
     out.edits = std::move(edits);

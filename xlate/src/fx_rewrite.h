@@ -43,8 +43,9 @@ struct RewrittenEffect {
 
 // Throws CompileError on contradictions (a sampler used as 2D and cube); sampler-state problems are
 // appended to `diagnostics`.
+// `defaultMajority`: CompileOptions::defaultMatrixMajority.
 RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& syntax, const SourceMap& map,
-                              std::vector<Diagnostic>& diagnostics);
+                              std::vector<Diagnostic>& diagnostics, const std::string& defaultMajority = {});
 
 TextureKind textureKindOfType(const std::string& type);  // texture2D, samplerCUBE, Texture3D ... (2D default)
 

@@ -28,10 +28,10 @@ bool inTypedef(const std::vector<Token>& t, size_t at) {
 
 }  // namespace
 
-std::vector<TextEdit> spellOutPackMatrixPragmas(const EffectSyntax& syntax) {
+std::vector<TextEdit> spellOutPackMatrixPragmas(const EffectSyntax& syntax, const std::string& defaultMajority) {
     const std::vector<Token>& t = syntax.tokens;
     std::vector<TextEdit> edits;
-    std::string current;  // empty until a pragma: glslang's default (column_major) stays
+    std::string current = defaultMajority;  // empty until a pragma: glslang's default (column_major) stays
     std::map<std::string, std::string> latent;  // matrix typedef -> the majority it was declared under
     std::map<size_t, size_t> bodies;  // begin -> end of each function body, skipped whole
     for (const auto& f : syntax.functions) bodies[f.body.begin] = f.body.end;

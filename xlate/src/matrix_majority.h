@@ -7,12 +7,14 @@
 // (fxc), so the uses get it. Function bodies are left alone: a local matrix's majority is not observable.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "fx_syntax.h"
 
 namespace fxport::xlate {
 
-std::vector<TextEdit> spellOutPackMatrixPragmas(const EffectSyntax& syntax);
+// `defaultMajority` (CompileOptions::defaultMatrixMajority) holds until the first pragma.
+std::vector<TextEdit> spellOutPackMatrixPragmas(const EffectSyntax& syntax, const std::string& defaultMajority = {});
 
 }  // namespace fxport::xlate

@@ -193,10 +193,10 @@ public:
     }
 
     IncludeResult* includeLocal(const char* header, const char* includer, size_t depth) override {
-        return resolve(header, includer, depth);
+        return readInclude ? fromCaller(header, includer, depth, false) : resolve(header, includer, depth);
     }
     IncludeResult* includeSystem(const char* header, const char* includer, size_t depth) override {
-        return resolve(header, includer, depth);
+        return readInclude ? fromCaller(header, includer, depth, true) : resolve(header, includer, depth);
     }
     void releaseInclude(IncludeResult* result) override {
         if (result) {
@@ -216,8 +216,75 @@ public:
     std::vector<Diagnostic> warnings;
     void markIncludedOnce(const fs::path& canonical) { onceIncluded_.insert(canonical); }  // the root's #pragma once
     MacroBounds* macros = nullptr;  // the effect's macros so far: each include's join them
+    decltype(CompileOptions::readInclude) readInclude;  // set: the caller's handler reads every include
 
 private:
+    // The limits on depth and count of includes: false (the failure noted) when one is broken.
+    bool withinIncludeLimits(const std::string& header, size_t depth) {
+        if (depth + 1 <= limits::kMaxIncludeDepth && ++includesFollowed_ <= limits::kMaxIncludeFiles) return true;
+        failures[header] = {diag::kIncludeLimit, depth + 1 > limits::kMaxIncludeDepth
+                                                     ? "#include nested more than " + std::to_string(limits::kMaxIncludeDepth) + " files deep, the most fxport follows"
+                                                     : "more than " + std::to_string(limits::kMaxIncludeFiles) + " #include directives, the most fxport follows for one effect"};
+        return false;
+    }
+
+    // CompileOptions::readInclude (D3DCompile's ID3DInclude) stands in for the file search: a file
+    // is named by its header as written; `#pragma once`, guards, cycles and limits as for files.
+    IncludeResult* fromCaller(const char* headerC, const char* includerC, size_t depth, bool system) {
+        const std::string header = headerC;
+        const std::string includer = includerC ? includerC : "";
+        const fs::path key = fs::path("<include handler>") / header;  // what the canonical path is to a file
+        chain_.resize(depth);
+        if (depth >= 1) chain_[depth - 1] = {displayToAbsolute_[includer], includer};
+        if (!withinIncludeLimits(header, depth)) return nullptr;
+        if (onceIncluded_.count(key)) return emptyInclude(header, key);
+        for (const auto& p : chain_)
+            if (p.first == key) {
+                if (hasIncludeGuard(callerTexts_[key])) return emptyInclude(header, key);
+                failures[header] = {diag::kIncludeCycle, "include cycle: '" + header + "' includes itself (directly or through other files)"};
+                return nullptr;
+            }
+        std::optional<std::string> text = readInclude(header, system, includer);
+        if (!text) {
+            failures[header] = {diag::kIncludeNotFound, "the include handler (ID3DInclude) found no file '" + header + "'"};
+            return nullptr;
+        }
+        if (text->size() > limits::kMaxFileBytes) {
+            failures[header] = {diag::kInputTooLarge, "include file '" + header + "' has " + std::to_string(text->size()) +
+                                                          " bytes; fxport compiles source files of at most " + std::to_string(limits::kMaxFileBytes >> 20) + " MiB"};
+            return nullptr;
+        }
+        callerTexts_[key] = sourceTextAsUtf8(*text);
+        return accept(std::move(*text), header, header, key);
+    }
+
+    // A file found and read: checked against the limits, prepared for glslang and handed over.
+    IncludeResult* accept(std::string text, const std::string& header, const std::string& display, const fs::path& canonical) {
+        totalBytes += text.size();
+        if (auto problem = checkSourceText(text, display)) {
+            if (!limitProblem) limitProblem = std::move(problem);  // thrown as is when glslang gives up
+            failures[header] = {diag::kPreprocessor, "include file '" + header + "' is beyond fxport's limits"};
+            return nullptr;
+        }
+        if (totalBytes > limits::kMaxTotalBytes) {
+            failures[header] = {diag::kInputTooLarge, "the effect and its includes have more than " + std::to_string(limits::kMaxTotalBytes >> 20) +
+                                                          " MiB of source, the most fxport compiles"};
+            return nullptr;
+        }
+        displayToAbsolute_[display] = canonical;
+        text = sourceTextAsUtf8(text);
+        if (hasPragmaOnce(text)) onceIncluded_.insert(canonical);
+        prepareSourceText(text, display, warnings);
+        if (auto problem = macros ? macros->addFile(text, display) : std::nullopt) {
+            if (!limitProblem) limitProblem = std::move(problem);  // thrown as is when glslang gives up
+            failures[header] = {diag::kMacroLimit, "include file '" + header + "' is beyond fxport's limits"};
+            return nullptr;
+        }
+        loaded.push_back({display, text});
+        auto* owned = new std::string(blankAsmLineComments(text));
+        return new IncludeResult(display, owned->data(), owned->size(), owned);
+    }
+
     IncludeResult* resolve(const char* headerC, const char* includerC, size_t depth) {
         std::string header = headerC;
         std::string includer = includerC ? includerC : "";
@@ -229,12 +296,7 @@ private:
         // depth); the includer is the innermost one.
         chain_.resize(depth);
         if (depth >= 1) chain_[depth - 1] = {includerAbs, includer};
-        if (depth + 1 > limits::kMaxIncludeDepth || ++includesFollowed_ > limits::kMaxIncludeFiles) {
-            failures[header] = {diag::kIncludeLimit, depth + 1 > limits::kMaxIncludeDepth
-                                                         ? "#include nested more than " + std::to_string(limits::kMaxIncludeDepth) + " files deep, the most fxport follows"
-                                                         : "more than " + std::to_string(limits::kMaxIncludeFiles) + " #include directives, the most fxport follows for one effect"};
-            return nullptr;
-        }
+        if (!withinIncludeLimits(header, depth)) return nullptr;
 
         // fxc's search order for #include "file": the including file's folder, then the folders of
         // the other files that are open, innermost first (ending with the effect's own folder),
@@ -328,31 +390,9 @@ private:
             failures[header] = {diag::kFileUnreadable, "cannot read include file '" + header + "'"};
             return nullptr;
         }
-        totalBytes += text->size();
-        if (auto problem = checkSourceText(*text, display)) {
-            if (!limitProblem) limitProblem = std::move(problem);  // thrown as is when glslang gives up
-            failures[header] = {diag::kPreprocessor, "include file '" + header + "' is beyond fxport's limits"};
-            return nullptr;
-        }
-        if (totalBytes > limits::kMaxTotalBytes) {
-            failures[header] = {diag::kInputTooLarge, "the effect and its includes have more than " + std::to_string(limits::kMaxTotalBytes >> 20) +
-                                                          " MiB of source, the most fxport compiles"};
-            return nullptr;
-        }
-        displayToAbsolute_[display] = canonical;
         for (auto& path : looked) dependencies.push_back({std::move(path), {}});
         dependencies.push_back({canonical.string(), contentHash(*text)});  // the raw bytes, as the cache re-reads them
-        *text = sourceTextAsUtf8(*text);
-        if (hasPragmaOnce(*text)) onceIncluded_.insert(canonical);
-        prepareSourceText(*text, display, warnings);
-        if (auto problem = macros ? macros->addFile(*text, display) : std::nullopt) {
-            if (!limitProblem) limitProblem = std::move(problem);  // thrown as is when glslang gives up
-            failures[header] = {diag::kMacroLimit, "include file '" + header + "' is beyond fxport's limits"};
-            return nullptr;
-        }
-        loaded.push_back({display, *text});
-        auto* owned = new std::string(blankAsmLineComments(*text));
-        return new IncludeResult(display, owned->data(), owned->size(), owned);
+        return accept(std::move(*text), header, display, canonical);
     }
 
     IncludeResult* emptyInclude(const std::string& display, const fs::path& canonical) {
@@ -367,6 +407,7 @@ private:
     std::map<std::string, fs::path> displayToAbsolute_;
     std::vector<std::pair<fs::path, std::string>> chain_;  // open files: (absolute, display)
     size_t includesFollowed_ = 0;
+    std::map<fs::path, std::string> callerTexts_;  // what readInclude returned, by its stand-in path
 };
 
 // glslang's "'#define' : Macro redefined; different substitutions: NAME" (and its two siblings).
@@ -424,6 +465,7 @@ PreprocessedEffect preprocessEffect(const std::string& rawSource, const std::str
 std::optional<PreprocessedEffect> PreprocessRun::operator()(bool cascading) const {
     RestrictedIncluder includer(roots, includeRoot, displayPath, rootAbs);
     includer.totalBytes = source.size();
+    includer.readInclude = options.readInclude;
     if (hasPragmaOnce(source)) includer.markIncludedOnce(rootAbs);
     std::string preamble = undefineGlslangPredefines() + "#define FXPORT 1\n";
     for (const auto& [name, value] : options.defines) preamble += "#define " + name + " " + value + "\n";

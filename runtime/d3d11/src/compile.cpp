@@ -3,11 +3,15 @@
 // as declared) out, or an error blob of fxc-style "file(line,col): error ..." lines. Compiles are
 // cached by content like every fxport compile ($FXPORT_CACHE_DIR).
 #include <cstring>
+#include <fstream>
+#include <optional>
+#include <sstream>
 #include <mutex>
 #include <string_view>
 
 #include "fxport/platform/utf8.h"
 #include "d3d11_impl.h"
+#include "include_handler.h"
 #include "fxport/xlate/diagnostics.h"
 #include "fxport/xlate/effect_compiler.h"
 #include "fxport/xlate/effect_file.h"
@@ -46,6 +50,14 @@ std::string narrowPath(const wchar_t* w) {
 
 namespace {
 
+std::optional<std::string> readTextFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return std::nullopt;
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
 // Compiles one entry point from a file (`source` null) or from text; fills the blobs.
 HRESULT compile(const char* call, const std::string& path, const std::string* source, const D3D_SHADER_MACRO* defines,
                 ID3DInclude* include, LPCSTR entry, LPCSTR target, UINT flags, ID3DBlob** code, ID3DBlob** errors) {
@@ -59,14 +71,26 @@ HRESULT compile(const char* call, const std::string& path, const std::string* so
     // fx_4_0 / fx_5_0: the whole effect (techniques, passes, every shader they name).
     const bool effect = std::string(target).rfind("fx_", 0) == 0;
     if (!effect && !entry) return error(E_INVALIDARG, "pEntrypoint is required for a shader target");
-    if (include && include != D3D_COMPILE_STANDARD_FILE_INCLUDE)
-        return error(E_NOTIMPL, "ID3DInclude handlers are not supported; pass null or D3D_COMPILE_STANDARD_FILE_INCLUDE");
-    if (flags & (D3DCOMPILE_PACK_MATRIX_ROW_MAJOR | D3DCOMPILE_PACK_MATRIX_COLUMN_MAJOR))
-        return error(E_NOTIMPL, "the D3DCOMPILE_PACK_MATRIX_* flags are not supported; write #pragma pack_matrix in the source");
+    const UINT packing = flags & (D3DCOMPILE_PACK_MATRIX_ROW_MAJOR | D3DCOMPILE_PACK_MATRIX_COLUMN_MAJOR);
+    if (packing == (D3DCOMPILE_PACK_MATRIX_ROW_MAJOR | D3DCOMPILE_PACK_MATRIX_COLUMN_MAJOR))
+        return error(E_INVALIDARG, "Flags1 = " + std::to_string(flags) + ": D3DCOMPILE_PACK_MATRIX_ROW_MAJOR and D3DCOMPILE_PACK_MATRIX_COLUMN_MAJOR exclude each other");
     xlate::CompileOptions options;
+    if (packing) options.defaultMatrixMajority = packing == D3DCOMPILE_PACK_MATRIX_ROW_MAJOR ? "row_major" : "column_major";
     for (const D3D_SHADER_MACRO* d = defines; d && d->Name; ++d) options.defines.emplace_back(d->Name, d->Definition ? d->Definition : "1");
     const std::vector<xlate::ShaderEntry> entries = {{path, entry ? entry : "", target}};
+    std::optional<IncludeRecorder> recorder;  // closes what the handler opened when the compile is done
     try {
+        if (include && include != D3D_COMPILE_STANDARD_FILE_INCLUDE) {
+            // The handler sees each #include as the preprocessor reaches it, in this process; the
+            // compile proper gets the same texts (and is not cached: the handler's files are unknown).
+            recorder.emplace(include, path);
+            options.readInclude = [&](const std::string& header, bool system, const std::string& includer) {
+                return recorder->open(header, system, includer);
+            };
+            if (const std::optional<std::string> text = source ? *source : readTextFile(path)) xlate::preprocessSource(*text, path, options);
+            options.readInclude = recorder->replay();
+            options.useCache = false;
+        }
         xlate::CompiledEffect compiled =
             effect ? (source ? xlate::compileEffectSource(*source, path, options) : xlate::compileEffectFile(path, options))
                    : (source ? xlate::compileShaderSource(*source, path, entries, options) : xlate::compileShaderFiles(entries, options));

@@ -89,6 +89,14 @@ public:
     void GenerateMips(ID3D11ShaderResourceView* pShaderResourceView) override;
     void ClearState() override;
     void Flush() override;
+    // Queries (queries.cpp).
+    void Begin(ID3D11Asynchronous* pAsync) override;
+    void End(ID3D11Asynchronous* pAsync) override;
+    HRESULT GetData(ID3D11Asynchronous* pAsync, void* pData, UINT DataSize, UINT GetDataFlags) override;
+    // Command lists (deferred_context.cpp).
+    D3D11_DEVICE_CONTEXT_TYPE GetType() override { return D3D11_DEVICE_CONTEXT_IMMEDIATE; }
+    void ExecuteCommandList(ID3D11CommandList* pCommandList, BOOL RestoreContextState) override;
+    HRESULT FinishCommandList(BOOL RestoreDeferredContextState, ID3D11CommandList** ppCommandList) override;
 
     // The effects framework (effect11.cpp): a pass applied on this context runs at the next draws,
     // until VSSetShader/PSSetShader, ClearState or another Apply; `owner` is its ID3DX11Effect,
@@ -102,6 +110,13 @@ public:
     }
 
 private:
+    // What ExecuteCommandList's RestoreContextState puts back: every binding (deferred_context.cpp).
+    struct Bindings;
+    Bindings bindings() const;
+    void rebind(const Bindings& saved);
+    // The occlusion query between Begin and End (GL counts one at a time); held, so that it counts
+    // until End even if its last other reference goes.
+    ComPtr<Query> counting_;
     // One shader stage's slots (each stage has its own, as in D3D).
     struct Stage {
         std::array<ComPtr<Buffer>, D3D11_COMMONSHADER_CONSTANT_BUFFER_API_SLOT_COUNT> constantBuffers;

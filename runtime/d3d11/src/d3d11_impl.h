@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "device/front_end_core.h"
+#include "device/gpu_query.h"
 #include "fxport/d3d11.h"
 #include "fxport/graphics/blend_state.h"
 #include "fxport/graphics/depth_stencil_state.h"
@@ -230,6 +231,11 @@ bool textureFormat(DXGI_FORMAT format, SurfaceFormat& out);
 bool depthFormat(DXGI_FORMAT format, DepthFormat& out);
 // --- vertex formats (vertex_formats.cpp)
 bool vertexFormat(DXGI_FORMAT format, VertexFormat& out);
+// D3D10+'s input assembler converts nothing between an element's integers and a float input: the
+// shader's register holds the integer's bits, where GL would convert the value. A 32-bit integer
+// element feeding a float input is therefore read as Float32; 8- and 16-bit ones are E_NOTIMPL
+// (message starting `at`).
+HRESULT readAsInputReads(VertexFormat& format, bool integerInput, DXGI_FORMAT dxgi, const std::string& at);
 
 // --- typeless depth textures (typeless_formats.cpp): R32/R24G8/R16_TYPELESS, with their depth and
 // shader-resource view formats and what the device core makes of them.
@@ -253,6 +259,18 @@ std::shared_ptr<const xlate::CompiledEffect> effectFromBytecode(const void* byte
 std::string shaderBlob(const xlate::CompiledEffect& shader);  // the bytes of a shader blob
 
 class Context;
+
+// An ID3D11Query (queries.cpp): the GPU query behind it (none for TIMESTAMP_DISJOINT).
+class Query final : public Object<ID3D11Query> {
+public:
+    Query(Device* device, const D3D11_QUERY_DESC& desc);
+    UINT GetDataSize() override;
+    void GetDesc(D3D11_QUERY_DESC* pDesc) override { if (pDesc) *pDesc = desc; }
+    D3D11_QUERY_DESC desc;
+    std::unique_ptr<core::GpuQuery> gpu;
+    bool begun = false;  // between Begin and End (occlusion and disjoint queries)
+    bool ended = false;  // End has been called since the last Begin
+};
 
 class Device final : public ID3D11Device {
 public:
@@ -288,6 +306,8 @@ public:
     HRESULT CreateRasterizerState(const D3D11_RASTERIZER_DESC* pRasterizerDesc, ID3D11RasterizerState** ppRasterizerState) override;
     HRESULT CreateDepthStencilState(const D3D11_DEPTH_STENCIL_DESC* pDepthStencilDesc,
                                     ID3D11DepthStencilState** ppDepthStencilState) override;
+    HRESULT CreateQuery(const D3D11_QUERY_DESC* pQueryDesc, ID3D11Query** ppQuery) override;
+    HRESULT CreateDeferredContext(UINT ContextFlags, ID3D11DeviceContext** ppDeferredContext) override;
     void GetImmediateContext(ID3D11DeviceContext** ppImmediateContext) override;
     D3D_FEATURE_LEVEL GetFeatureLevel() override { return D3D_FEATURE_LEVEL_11_0; }
 

@@ -157,7 +157,7 @@ HRESULT Device::CreateInputLayout(const D3D11_INPUT_ELEMENT_DESC* descs, UINT co
         UINT& offset = offsets[d.InputSlot];
         if (d.AlignedByteOffset != D3D11_APPEND_ALIGNED_ELEMENT) offset = d.AlignedByteOffset;
         // D3D aligns an element to its component size (4 bytes for R32 and packed formats, 2 for R16, 1 for R8).
-        const UINT align = UINT(vertexFormatSize(format) / (format.component == VertexComponent::UInt1010102 ? 1 : format.count));
+        const UINT align = UINT(vertexFormatSize(format) / (isPackedVertexComponent(format.component) ? 1 : format.count));
         if (offset % align != 0)
             return fail(E_INVALIDARG, at + "AlignedByteOffset = " + std::to_string(offset) + " (must be a multiple of " + std::to_string(align) +
                                           ", the format's component size)");
@@ -167,6 +167,9 @@ HRESULT Device::CreateInputLayout(const D3D11_INPUT_ELEMENT_DESC* descs, UINT co
             return fail(E_INVALIDARG, at + "SemanticName/SemanticIndex = \"" + std::string(d.SemanticName) + "\"/" +
                                           std::to_string(d.SemanticIndex) + " appears twice");
         semantics.push_back(semantic);
+        for (const xlate::VertexInput& input : effect->shaders[std::size_t(vs)].inputs)
+            if (feedsInput(semantic, input))
+                if (HRESULT hr = readAsInputReads(format, input.isInteger, d.Format, at); FAILED(hr)) return hr;
         slot.elements.push_back(core::StreamElement{semantic, int(offset), format});
         offset += UINT(vertexFormatSize(format));
     }

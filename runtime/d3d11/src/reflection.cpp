@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "d3d11_impl.h"
+#include "reflection_type.h"
 
 namespace fxport::d3d11 {
 
@@ -17,19 +18,6 @@ std::pair<std::string, UINT> splitSemantic(const std::string& s) {
     while (digits > 0 && std::isdigit(static_cast<unsigned char>(s[digits - 1]))) --digits;
     return {s.substr(0, digits), digits < s.size() ? UINT(std::stoul(s.substr(digits))) : 0u};
 }
-
-class ReflectionType final : public ID3D11ShaderReflectionType {
-public:
-    D3D11_SHADER_TYPE_DESC desc;
-    bool valid = false;
-    std::string name;
-    HRESULT GetDesc(D3D11_SHADER_TYPE_DESC* p) override {
-        if (!valid || !p) return E_FAIL;
-        *p = desc;
-        p->Name = name.c_str();
-        return S_OK;
-    }
-};
 
 class ReflectionVariable final : public ID3D11ShaderReflectionVariable {
 public:
@@ -68,27 +56,6 @@ public:
         return invalid;
     }
 };
-
-D3D_SHADER_VARIABLE_TYPE typeOf(xlate::ParameterType t) {
-    switch (t) {
-    case xlate::ParameterType::Bool: return D3D_SVT_BOOL;
-    case xlate::ParameterType::Int: return D3D_SVT_INT;
-    case xlate::ParameterType::UInt: return D3D_SVT_UINT;
-    case xlate::ParameterType::Float: return D3D_SVT_FLOAT;
-    default: return D3D_SVT_VOID;
-    }
-}
-
-D3D_SHADER_VARIABLE_CLASS classOf(const xlate::Parameter& p) {
-    switch (p.parameterClass) {
-    case xlate::ParameterClass::Scalar: return D3D_SVC_SCALAR;
-    case xlate::ParameterClass::Vector: return D3D_SVC_VECTOR;
-    case xlate::ParameterClass::Matrix: return p.rowMajor ? D3D_SVC_MATRIX_ROWS : D3D_SVC_MATRIX_COLUMNS;
-    case xlate::ParameterClass::Object: return D3D_SVC_OBJECT;
-    case xlate::ParameterClass::Struct: return D3D_SVC_STRUCT;
-    }
-    return D3D_SVC_SCALAR;
-}
 
 // D3D11_SHVER_PIXEL_SHADER 0, VERTEX 1, GEOMETRY 2, HULL 3, DOMAIN 4, COMPUTE 5.
 UINT shaderVersionType(xlate::ShaderStage stage) {
@@ -277,13 +244,7 @@ private:
             r.desc.StartOffset = UINT(v.offset);
             r.desc.Size = UINT(v.size);
             r.desc.uFlags = std::find(s.parametersRead.begin(), s.parametersRead.end(), v.parameter) != s.parametersRead.end() ? D3D_SVF_USED : 0;
-            r.type.valid = true;
-            r.type.desc.Class = classOf(p);
-            r.type.desc.Type = typeOf(p.type);
-            r.type.desc.Rows = UINT(p.rows);
-            r.type.desc.Columns = UINT(p.columns);
-            r.type.desc.Elements = UINT(p.elements);
-            r.type.desc.Members = UINT(p.members.size());
+            r.type = ReflectionType(p, 0);
         }
         b.desc.Variables = UINT(b.variables.size());
     }

@@ -13,10 +13,14 @@ int vertexFormatSize(const VertexFormat& f) {
     case VertexComponent::SInt16: return 2 * f.count;
     case VertexComponent::UInt8:
     case VertexComponent::SInt8: return f.count;
-    case VertexComponent::UInt1010102: return 4;
+    case VertexComponent::UInt1010102:
+    case VertexComponent::UInt8Bgra:
+    case VertexComponent::UFloat111110: return 4;
     }
     return 0;
 }
+
+bool isPackedVertexComponent(VertexComponent c) { return c == VertexComponent::UInt1010102 || c == VertexComponent::UFloat111110; }
 
 VertexFormat vertexFormatOf(VertexElementFormat f) {
     using C = VertexComponent;

@@ -88,14 +88,16 @@ std::array<float, 4> colorFloats(Color c) {
 // negates the window-space area to undo its own y flip), and our images show NDC +y at the top: a
 // triangle clockwise in the final image is clockwise to GL. XNA's front faces are clockwise, so
 // glFrontFace(GL_CW), and CullCounterClockwiseFace culls GL's back faces. (Pinned by
-// Conventions.CullModesFollowWindingAsSeen.)
+// Conventions.CullModesFollowWindingAsSeen.) The winding is set without culling too: it also
+// decides gl_FrontFacing (SV_IsFrontFace, VFACE) and which stencil ops a triangle uses, and GL's
+// default (GL_CCW) would invert both until a culled draw first set it.
 void applyCull(CullMode mode) {
+    glFrontFace(GL_CW);
     if (mode == CullMode::None) {
         glDisable(GL_CULL_FACE);
         return;
     }
     glEnable(GL_CULL_FACE);
-    glFrontFace(GL_CW);
     glCullFace(mode == CullMode::CullCounterClockwiseFace ? GL_BACK : GL_FRONT);
 }
 
@@ -117,12 +119,16 @@ GLenum componentType(VertexComponent c) {
     case VertexComponent::UInt32: return GL_UNSIGNED_INT;
     case VertexComponent::SInt32: return GL_INT;
     case VertexComponent::UInt1010102: return GL_UNSIGNED_INT_2_10_10_10_REV;
+    case VertexComponent::UInt8Bgra: return GL_UNSIGNED_BYTE;
+    case VertexComponent::UFloat111110: return GL_UNSIGNED_INT_10F_11F_11F_REV;
     }
     return GL_FLOAT;
 }
 
 AttributeFormat attributeFormat(const VertexFormat& f) {
-    return {GLint(f.count), componentType(f.component), f.normalized ? GLboolean(GL_TRUE) : GLboolean(GL_FALSE)};
+    // GL reads B, G, R, A bytes when the size is GL_BGRA (normalised bytes only).
+    const GLint size = f.component == VertexComponent::UInt8Bgra ? GLint(GL_BGRA) : GLint(f.count);
+    return {size, componentType(f.component), f.normalized ? GLboolean(GL_TRUE) : GLboolean(GL_FALSE)};
 }
 
 }  // namespace

@@ -62,6 +62,15 @@ struct CompileOptions {
     // Loose files (compileShaderFiles sets it): the attributes of the hull shader another file of
     // the pass holds; GL declares its partitioning and topology in the domain shader.
     Tessellation hullOfDomainShader;
+    // The majority of matrices that name none, before any `#pragma pack_matrix` (fxc's /Zpr and
+    // /Zpc, D3DCOMPILE_PACK_MATRIX_*): "row_major", "column_major", or empty (column-major).
+    std::string defaultMatrixMajority;
+    // `#include`s read through the caller instead of the file system (D3DCompile's ID3DInclude):
+    // called with the header as written, whether it was written <header>, and the including file's
+    // name (the root's path, or a header an earlier call returned); returns the text, or nullopt
+    // when there is none. Runs wherever the preprocessor runs (a worker process unless the compile
+    // is in this process), and is no part of the cache key: set it with useCache = false.
+    std::function<std::optional<std::string>(const std::string& header, bool system, const std::string& includer)> readInclude;
 };
 
 // Compiles a file. Throws CompileError for fatal problems.
@@ -89,6 +98,9 @@ CompiledEffect compileEffectSource(const std::string& source, const std::string&
 // paths, each once), for build systems (`fxport compile --depfile`). Runs only the preprocessor.
 // Throws CompileError (file:line) when the effect cannot be read or preprocessed.
 std::vector<std::string> effectDependencies(const std::string& path, const CompileOptions& options = {});
+// Runs only the preprocessor over `source` as if it were the file `virtualPath`, in this process
+// (options.readInclude sees each #include the preprocessor reaches). Throws CompileError.
+void preprocessSource(const std::string& source, const std::string& virtualPath, const CompileOptions& options);
 
 // One entry point of a loose shader file (D3D10/11 style: no technique), as fxc's /E and /T name it.
 struct ShaderEntry {

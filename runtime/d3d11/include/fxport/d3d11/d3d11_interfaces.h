@@ -28,6 +28,26 @@ public:
     virtual void GetDevice(ID3D11Device** ppDevice) = 0;
 };
 
+// Queries: Begin/End on the context bracket what an occlusion query counts (samples passing the
+// depth and stencil tests) or a disjoint query's interval; End alone marks an event or timestamp.
+// GetData returns S_FALSE until the GPU has the result, then S_OK with it in pData (DataSize must
+// be GetDataSize() or 0 to ask only whether it is ready).
+class ID3D11Asynchronous : public ID3D11DeviceChild {
+public:
+    virtual UINT GetDataSize() = 0;
+};
+class ID3D11Query : public ID3D11Asynchronous {
+public:
+    virtual void GetDesc(D3D11_QUERY_DESC* pDesc) = 0;
+};
+
+// A deferred context's recorded commands (FinishCommandList), run by the immediate context's
+// ExecuteCommandList.
+class ID3D11CommandList : public ID3D11DeviceChild {
+public:
+    virtual UINT GetContextFlags() = 0;
+};
+
 class ID3D11Resource : public ID3D11DeviceChild {
 public:
     virtual void GetType(D3D11_RESOURCE_DIMENSION* pResourceDimension) = 0;
@@ -169,9 +189,21 @@ public:
     virtual void ClearDepthStencilView(ID3D11DepthStencilView* pDepthStencilView, UINT ClearFlags, FLOAT Depth,
                                        UINT8 Stencil) = 0;
     virtual void GenerateMips(ID3D11ShaderResourceView* pShaderResourceView) = 0;
+    virtual void Begin(ID3D11Asynchronous* pAsync) = 0;
+    virtual void End(ID3D11Asynchronous* pAsync) = 0;
+    virtual HRESULT GetData(ID3D11Asynchronous* pAsync, void* pData, UINT DataSize, UINT GetDataFlags) = 0;
     // Unbinds everything and returns every state to D3D's default.
     virtual void ClearState() = 0;
     virtual void Flush() = 0;
+    // Deferred contexts (ID3D11Device::CreateDeferredContext) record every call but GetData and
+    // Flush; FinishCommandList hands the recording over (the context then starts again from D3D's
+    // default state, or with RestoreDeferredContextState from the state it had); the immediate
+    // context's ExecuteCommandList runs a list from the default state, then clears its state or,
+    // with RestoreContextState, puts back what it had. On a deferred context, Map takes
+    // WRITE_DISCARD of a DYNAMIC buffer only (the bytes are written when the list runs).
+    virtual D3D11_DEVICE_CONTEXT_TYPE GetType() = 0;
+    virtual void ExecuteCommandList(ID3D11CommandList* pCommandList, BOOL RestoreContextState) = 0;
+    virtual HRESULT FinishCommandList(BOOL RestoreDeferredContextState, ID3D11CommandList** ppCommandList) = 0;
 };
 
 class ID3D11Device : public IUnknown {
@@ -209,6 +241,8 @@ public:
                                           ID3D11RasterizerState** ppRasterizerState) = 0;
     virtual HRESULT CreateDepthStencilState(const D3D11_DEPTH_STENCIL_DESC* pDepthStencilDesc,
                                             ID3D11DepthStencilState** ppDepthStencilState) = 0;
+    virtual HRESULT CreateQuery(const D3D11_QUERY_DESC* pQueryDesc, ID3D11Query** ppQuery) = 0;
+    virtual HRESULT CreateDeferredContext(UINT ContextFlags, ID3D11DeviceContext** ppDeferredContext) = 0;
     virtual void GetImmediateContext(ID3D11DeviceContext** ppImmediateContext) = 0;
     virtual D3D_FEATURE_LEVEL GetFeatureLevel() = 0;
 };

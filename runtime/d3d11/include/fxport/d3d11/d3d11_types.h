@@ -11,6 +11,7 @@ namespace fxport::d3d11 {
 
 using HRESULT = std::int32_t;
 using UINT = std::uint32_t;
+using UINT64 = std::uint64_t;
 using INT = std::int32_t;
 using BOOL = std::int32_t;
 using FLOAT = float;
@@ -27,6 +28,7 @@ constexpr HRESULT E_POINTER = HRESULT(0x80004003u);
 constexpr HRESULT E_FAIL = HRESULT(0x80004005u);
 constexpr HRESULT E_OUTOFMEMORY = HRESULT(0x8007000Eu);
 constexpr HRESULT E_INVALIDARG = HRESULT(0x80070057u);
+constexpr HRESULT DXGI_ERROR_INVALID_CALL = HRESULT(0x887A0001u);
 constexpr bool SUCCEEDED(HRESULT hr) { return hr >= 0; }
 constexpr bool FAILED(HRESULT hr) { return hr < 0; }
 constexpr BOOL TRUE = 1;
@@ -58,6 +60,8 @@ enum DXGI_FORMAT : UINT {
     DXGI_FORMAT_R32G32_UINT = 17,
     DXGI_FORMAT_R32G32_SINT = 18,
     DXGI_FORMAT_R10G10B10A2_UNORM = 24,
+    DXGI_FORMAT_R10G10B10A2_UINT = 25,
+    DXGI_FORMAT_R11G11B10_FLOAT = 26,
     DXGI_FORMAT_R8G8B8A8_TYPELESS = 27,
     DXGI_FORMAT_R8G8B8A8_UNORM = 28,
     DXGI_FORMAT_R8G8B8A8_UNORM_SRGB = 29,
@@ -383,5 +387,25 @@ struct D3D11_MAPPED_SUBRESOURCE {
 };
 // D3D11CalcSubresource: mip level + array slice * mip levels.
 constexpr UINT D3D11CalcSubresource(UINT MipSlice, UINT ArraySlice, UINT MipLevels) { return MipSlice + ArraySlice * MipLevels; }
+
+// --- queries (ID3D11Query): event, occlusion (and its predicate), timestamp and timestamp-disjoint.
+// PIPELINE_STATISTICS and the stream-output queries are not there (CreateQuery: E_NOTIMPL).
+enum D3D11_QUERY : UINT {
+    D3D11_QUERY_EVENT = 0, D3D11_QUERY_OCCLUSION = 1, D3D11_QUERY_TIMESTAMP = 2, D3D11_QUERY_TIMESTAMP_DISJOINT = 3,
+    D3D11_QUERY_PIPELINE_STATISTICS = 4, D3D11_QUERY_OCCLUSION_PREDICATE = 5, D3D11_QUERY_SO_STATISTICS = 6,
+    D3D11_QUERY_SO_OVERFLOW_PREDICATE = 7,
+};
+constexpr UINT D3D11_QUERY_MISC_PREDICATEHINT = 0x1;
+constexpr UINT D3D11_ASYNC_GETDATA_DONOTFLUSH = 0x1;
+struct D3D11_QUERY_DESC {
+    D3D11_QUERY Query = D3D11_QUERY_EVENT;
+    UINT MiscFlags = 0;
+};
+struct D3D11_QUERY_DATA_TIMESTAMP_DISJOINT {
+    UINT64 Frequency = 0;  // ticks per second of TIMESTAMP's values (fxport: nanoseconds, 1e9)
+    BOOL Disjoint = FALSE;
+};
+
+enum D3D11_DEVICE_CONTEXT_TYPE : UINT { D3D11_DEVICE_CONTEXT_IMMEDIATE = 0, D3D11_DEVICE_CONTEXT_DEFERRED = 1 };
 
 }  // namespace fxport::d3d11

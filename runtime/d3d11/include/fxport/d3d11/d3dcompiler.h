@@ -20,13 +20,28 @@ struct D3D_SHADER_MACRO {
     LPCSTR Definition = nullptr;
 };
 
-// #include handlers are not supported: pass null or D3D_COMPILE_STANDARD_FILE_INCLUDE (includes
-// resolve beside the source file, as the standard handler does).
-class ID3DInclude;
+// An #include handler, as D3D's: Open is called for each #include the preprocessor reaches (not
+// for those in skipped #if branches), with the header as written, D3D_INCLUDE_LOCAL for "x" and
+// D3D_INCLUDE_SYSTEM for <x>, and the data Open returned for the including file (null for the
+// source itself); it returns the text in *ppData/*pBytes, or a failure (the compile then fails
+// naming the header). Close is called once for each successful Open, after preprocessing (D3D
+// closes a file when its end is reached; fxport keeps every file open until the last). Null or
+// D3D_COMPILE_STANDARD_FILE_INCLUDE: includes resolve beside the source file, as the standard
+// handler does.
+enum D3D_INCLUDE_TYPE : UINT { D3D_INCLUDE_LOCAL = 0, D3D_INCLUDE_SYSTEM = 1 };
+class ID3DInclude {
+public:
+    virtual HRESULT Open(D3D_INCLUDE_TYPE IncludeType, LPCSTR pFileName, LPCVOID pParentData, LPCVOID* ppData, UINT* pBytes) = 0;
+    virtual HRESULT Close(LPCVOID pData) = 0;
+
+protected:
+    ~ID3DInclude() = default;
+};
 inline ID3DInclude* const D3D_COMPILE_STANDARD_FILE_INCLUDE = reinterpret_cast<ID3DInclude*>(std::uintptr_t(1));
 
-// Flags are accepted and ignored (fxport's translation has no optimisation levels); the matrix
-// packing flags D3DCOMPILE_PACK_MATRIX_ROW_MAJOR/COLUMN_MAJOR are not supported yet (E_NOTIMPL).
+// Other flags are accepted and ignored (fxport's translation has no optimisation levels).
+// D3DCOMPILE_PACK_MATRIX_ROW_MAJOR / COLUMN_MAJOR set the majority of matrices that name none, until
+// a #pragma pack_matrix (fxc's /Zpr, /Zpc); both at once is E_INVALIDARG.
 constexpr UINT D3DCOMPILE_DEBUG = 1u << 0;
 constexpr UINT D3DCOMPILE_SKIP_OPTIMIZATION = 1u << 2;
 constexpr UINT D3DCOMPILE_PACK_MATRIX_ROW_MAJOR = 1u << 3;
@@ -137,9 +152,20 @@ struct D3D11_SIGNATURE_PARAMETER_DESC {
 // The sub-objects below live as long as the reflection that returned them (no reference counts,
 // as in D3D). Asking for an index or name that does not exist returns an object whose GetDesc
 // fails with E_FAIL, as D3D's "invalid" objects do.
+// A variable's type: Name is HLSL's spelling ("float4", "float3x4", "uint"; a struct's type name is
+// not recorded by fxport's compile, so a struct's is empty); Offset is a member's offset in bytes
+// from its struct's start, by D3D's packing rules. Members of structs by index or name; IsEqual
+// S_OK when both describe the same type (class, base type, shape, elements and members, by name),
+// else S_FALSE. A struct inside a struct is not described (fxport's compile records one level of
+// members: it reads as a scalar, and the offsets after it are not D3D's). Class linkage
+// (GetSubType, GetBaseClass, interfaces) is not there.
 class ID3D11ShaderReflectionType {
 public:
     virtual HRESULT GetDesc(D3D11_SHADER_TYPE_DESC* pDesc) = 0;
+    virtual ID3D11ShaderReflectionType* GetMemberTypeByIndex(UINT Index) = 0;
+    virtual ID3D11ShaderReflectionType* GetMemberTypeByName(LPCSTR Name) = 0;
+    virtual LPCSTR GetMemberTypeName(UINT Index) = 0;  // the member's name; null past the last
+    virtual HRESULT IsEqual(ID3D11ShaderReflectionType* pType) = 0;
 
 protected:
     ~ID3D11ShaderReflectionType() = default;
