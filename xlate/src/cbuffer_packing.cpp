@@ -201,6 +201,7 @@ public:
             std::uint32_t t = memberType(structId, k), offset = memberOffset(structId, k);
             bool rowMajor = memberRowMajor(structId, k);
             if (offset % std140Alignment(t) != 0 || (k > 0 && offset < end) || !std140Strides(t, rowMajor)) return false;
+            if (holdsIntegerMatrix(t)) return false;  // GLSL has no imat2 (integer_matrices.h)
             end = offset + std140Size(t, rowMajor);
         }
         return true;
@@ -216,6 +217,18 @@ public:
     }
 
 private:
+    bool holdsIntegerMatrix(std::uint32_t id) {
+        const Inst& t = m_.instOf(id);
+        if (t.op == kOpTypeArray) return holdsIntegerMatrix(m_.w(t, 2));
+        if (t.op == kOpTypeStruct) {
+            for (std::uint32_t k = 0; k < memberCount(id); ++k)
+                if (holdsIntegerMatrix(memberType(id, k))) return true;
+            return false;
+        }
+        if (t.op != kOpTypeMatrix) return false;
+        const Inst& column = m_.instOf(m_.w(t, 2));
+        return m_.instOf(m_.w(column, 2)).op != kOpTypeFloat;
+    }
     std::uint32_t std140Alignment(std::uint32_t id) const {
         const Inst& t = m_.instOf(id);
         if (t.op == kOpTypeVector) return m_.w(t, 3) == 2 ? 8 : 16;

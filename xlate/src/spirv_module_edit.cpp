@@ -41,8 +41,9 @@ void SpirvModuleEdit::index() {
     for (size_t i = 0; i < instructions.size(); ++i) {
         const auto& w = instructions[i].words;
         const std::uint32_t op = instructions[i].opcode();
-        if (w.size() > 2 && typeOf_.count(w[2]) && typeOf_.at(w[2]) == w[1]) definedAt_[w[2]] = i;
-        else if (op >= 19 && op <= 39 && w.size() > 1) definedAt_[w[1]] = i;
+        // Types first: OpTypeInt's width (32) may also be the id of a value of that very type.
+        if (op >= 19 && op <= 39 && w.size() > 1) definedAt_[w[1]] = i;
+        else if (w.size() > 2 && typeOf_.count(w[2]) && typeOf_.at(w[2]) == w[1]) definedAt_[w[2]] = i;
     }
 }
 

@@ -1,5 +1,7 @@
 #include "spirv_to_glsl.h"
 
+#include "integer_matrices.h"
+
 #include <spirv_cross/spirv_glsl.hpp>
 
 #include <algorithm>
@@ -271,6 +273,7 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
         std::vector<PackedBlock> packed = packConstantBuffers(spirv, *effect.syntax);
         for (PackedBlock& b : packed)
             if (!b.glslDeclarable) flattenConstantBuffer(spirv, b);
+        integerMatricesAsArrays(spirv);
         GlslCompiler compiler(std::move(spirv));
         compiler.build_dummy_sampler_for_combined_images();
         compiler.build_combined_image_samplers();
