@@ -58,6 +58,9 @@ CompileOutcome refused(const std::vector<fxport::xlate::Diagnostic>& diagnostics
     return out;
 }
 
+// The effect profile fxc would compile an [effect] section with at this shader model.
+std::string effectProfileFor(int model) { return model >= 50 ? "fx_5_0" : model >= 40 ? "fx_4_0" : "fx_2_0"; }
+
 }  // namespace
 
 CompileOutcome SectionCompiler::compileLoose(const std::string& path, const std::string& profile, int firstLine) {
@@ -73,11 +76,12 @@ CompileOutcome SectionCompiler::compileLoose(const std::string& path, const std:
     }
 }
 
-CompileOutcome SectionCompiler::compileEffect(const std::string& source, int firstLine, const RequireDesc& require) {
+CompileOutcome SectionCompiler::compileEffect(const std::string& source, int firstLine, int model, const RequireDesc& require) {
     std::string path = tempDir_ + "/" + testFileName_ + "-L" + std::to_string(firstLine) + ".fx";
     try {
-        fxport::xlate::CompiledEffect effect =
-            fxport::xlate::compileEffectSource(preparedSource(source, require), path, optionsFor(cacheDir_));
+        fxport::xlate::CompileOptions options = optionsFor(cacheDir_);
+        options.effectProfile = effectProfileFor(model);
+        fxport::xlate::CompiledEffect effect = fxport::xlate::compileEffectSource(preparedSource(source, require), path, options);
         if (effect.hasErrors()) return refused(effect.diagnostics, testFileName_, firstLine);
         return CompileOutcome{true, "", "", ""};
     } catch (const fxport::xlate::CompileError& e) {
@@ -90,7 +94,7 @@ CompileOutcome SectionCompiler::compileEffect(const std::string& source, int fir
 CompileOutcome SectionCompiler::compile(const Block& section, int model, const RequireDesc& require) {
     // Diagnostic line k of the compiled text is file line (header + k - prefix lines).
     int firstLine = section.line - preparedPrefixLines(require);
-    if (section.stage == Stage::Effect) return compileEffect(section.source(), firstLine, require);
+    if (section.stage == Stage::Effect) return compileEffect(section.source(), firstLine, model, require);
     std::string path = writeSource(section.source(), section.line, require, ".hlsl");
     return compileLoose(path, shaderProfile(section.stage, model), firstLine);
 }

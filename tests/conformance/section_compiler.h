@@ -33,7 +33,7 @@ public:
 
 private:
     CompileOutcome compileLoose(const std::string& path, const std::string& profile, int firstLine);
-    CompileOutcome compileEffect(const std::string& source, int firstLine, const RequireDesc& require);
+    CompileOutcome compileEffect(const std::string& source, int firstLine, int model, const RequireDesc& require);
 
     std::string tempDir_;
     std::string cacheDir_;

@@ -23,6 +23,7 @@
 #include "constant_eval.h"
 #include "d3d9_asm.h"
 #include "effect_cache.h"
+#include "effect_profile_rules.h"
 #include "fxport/xlate/effect_file.h"
 #include "entry_wrapper.h"
 #include "fx_rewrite.h"
@@ -155,6 +156,7 @@ public:
         size_t token = 0;
     };
     void checkPackOffsets(std::vector<PackedMember> packed);
+    bool cbufferRead(const std::string& cbuffer) const;
     void buildTechniques();
     void finishReflection();
     void checkTessellationPass(Pass& pass, size_t token);
@@ -228,6 +230,17 @@ int floatsSpanned(const Parameter& p) {
 std::string registerName(int floats) { return "c" + std::to_string(floats / 4) + "." + "xyzw"[floats % 4]; }
 
 }  // namespace
+
+// Whether a function names a member of the cbuffer (fxc checks packoffset overlaps only then).
+bool EffectBuilder::cbufferRead(const std::string& cbuffer) const {
+    std::set<std::string> members;
+    for (const auto& g : syntax_.globals)
+        if (g.cbuffer == cbuffer) members.insert(g.name);
+    for (const auto& f : syntax_.functions)
+        for (size_t i = f.body.begin; i < f.body.end; ++i)
+            if (syntax_.tokens[i].isIdent() && members.count(syntax_.tokens[i].text)) return true;
+    return false;
+}
 
 // fxc's X4019: two cbuffer members placed over the same components. glslang takes the offsets as
 // given and the reflected ranges come out negative; report it where the later one is declared.
@@ -367,7 +380,8 @@ void EffectBuilder::buildParameters() {
         if (g.packOffset >= 0 && !g.cbuffer.empty()) packed[g.cbuffer].push_back({g.packOffset, g.packOffset + floatsSpanned(p), g.name, g.token});
         items.push_back({g.token, std::move(p)});
     }
-    for (auto& [cbuffer, members] : packed) checkPackOffsets(std::move(members));
+    for (auto& [cbuffer, members] : packed)
+        if (cbufferRead(cbuffer)) checkPackOffsets(std::move(members));  // fxc lets an unread cbuffer's members overlap
     for (const auto& t : syntax_.textures) {
         Parameter p;
         p.name = t.name;
@@ -1021,6 +1035,7 @@ std::string cacheKey(const std::string& source, const std::string& displayPath, 
     for (const auto& t : options.techniques) field("T", t);
     field("K", options.keepValidPasses ? "1" : "0");
     if (options.besideGeometryOrDomainShader) field("G", "1");
+    if (!options.effectProfile.empty()) field("F", options.effectProfile);
     if (!options.hullOfDomainShader.partitioning.empty())
         field("H", options.hullOfDomainShader.partitioning + "," + options.hullOfDomainShader.outputTopology);
     if (options.skipShaders) field("O", "outline");
@@ -1134,7 +1149,8 @@ CompiledEffect compileUncached(const std::string& source, const std::string& dis
     effect.sourcePath = displayPath;
     effect.diagnostics = pre.warnings;
     effect.diagnostics.insert(effect.diagnostics.end(), syntax.warnings.begin(), syntax.warnings.end());
-    if (syntax.techniques.empty()) {
+    bool techniqueless = allowsTechniqueless(options.effectProfile, displayPath);
+    if (syntax.techniques.empty() && !techniqueless) {
         Diagnostic d;
         d.id = diag::kEmptyEffect;
         // A file with code but no technique is most likely a header (a .fx/.fxh of shared functions,
@@ -1160,6 +1176,7 @@ CompiledEffect compileUncached(const std::string& source, const std::string& dis
     if (auto hazards = findFrontEndHazards(syntax, pre.map); !hazards.empty()) throw CompileError(std::move(hazards));
     // What fxc rejects and glslang would accept (fxc_checks.h: every family of checks).
     if (auto rejected = runFxcChecks(syntax, pre.map); !rejected.empty()) throw CompileError(std::move(rejected));
+    if (auto rejected = checkEffectProfile(syntax, pre.map, options.effectProfile); !rejected.empty()) throw CompileError(std::move(rejected));
     RewrittenEffect rewritten = rewriteEffect(pre.text, syntax, pre.map, effect.diagnostics, options.defaultMatrixMajority);
     for (auto& w : findImplicitTruncations(syntax, pre.map)) effect.diagnostics.push_back(std::move(w));
     Prefetched prefetched;

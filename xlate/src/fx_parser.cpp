@@ -374,6 +374,7 @@ private:
         while (!accept(">")) {
             if (isEnd()) fail(diag::kUnterminated, "annotation list is never closed with '>'", open);
             Annotation a;
+            while (cur().is("row_major") || cur().is("column_major")) ++pos_;  // `row_major float3x2 m = {...}`
             size_t typeToken = pos_;
             a.type = expectIdentifier("an annotation type");
             size_t nameToken = pos_;
@@ -514,6 +515,8 @@ private:
             if (isEnd()) fail(diag::kUnterminated, "fxgroup '" + group + "' has no body", start);
             fail(diag::kSyntax, "expected '{' to open fxgroup '" + group + "', found '" + cur().text + "'", pos_);
         }
+        if (group.empty()) fail(diag::kSyntax, "an fxgroup needs a name (fxc: it belongs to the global scope)", start);
+        size_t techniquesBefore = syntax_.techniques.size();
         blank(start, ++pos_);
         while (!cur().is("}")) {
             if (isEnd()) fail(diag::kUnterminated, "fxgroup '" + group + "' is never closed with '}'", start);
@@ -525,6 +528,9 @@ private:
             for (size_t i = 0; i + 1 < syntax_.techniques.size(); ++i)
                 if (syntax_.techniques[i].name == tech.name) tech.name = group + "|" + tech.name;
         }
+        if (syntax_.techniques.size() == techniquesBefore) fail(diag::kSyntax, "fxgroup '" + group + "' holds no technique; fxc refuses an empty group", start);
+        for (const auto& g : syntax_.globals)
+            if (g.name == group) fail(diag::kSyntax, "fxgroup '" + group + "' has the name of a variable declared before it", start);
         size_t close = pos_++;
         if (cur().is(";")) ++pos_;
         blank(close, pos_);
@@ -553,7 +559,8 @@ private:
                  pos_);
         if (t.is("struct")) return parseStruct();
         if (t.is("cbuffer") || t.is("tbuffer")) return parseCbuffer();
-        if (t.is("shared") && (peek().is("cbuffer") || peek().is("tbuffer"))) {  // D3D10 effect pools: meaningless here
+        // D3D10 effect pools (`shared`) and fx_5_0's `single` (a cbuffer not shared): meaningless here.
+        if ((t.is("shared") || (t.is("single") && !syntax_.typedefs.count("single"))) && (peek().is("cbuffer") || peek().is("tbuffer"))) {
             blank(pos_, pos_ + 1);
             ++pos_;
             return parseCbuffer();
@@ -690,6 +697,11 @@ private:
             }
         }
         syntax_.cbufferRegisters.push_back(reg);
+        if (cur().is("<")) {  // `cbuffer cb : register(b1) < int i = 1; >`: annotations, nothing to keep
+            size_t a = pos_;
+            parseAnnotations();
+            blank(a, pos_);
+        }
         size_t open = pos_;
         expect("{", ("to open cbuffer " + name).c_str());
         while (!accept("}")) {

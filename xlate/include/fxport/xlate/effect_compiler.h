@@ -71,6 +71,10 @@ struct CompileOptions {
     // when there is none. Runs wherever the preprocessor runs (a worker process unless the compile
     // is in this process), and is no part of the cache key: set it with useCache = false.
     std::function<std::optional<std::string>(const std::string& header, bool system, const std::string& includer)> readInclude;
+    // The effect profile fxc's /T would name: "fx_2_0", "fx_4_0", "fx_4_1" or "fx_5_0". Empty:
+    // XNA's fx_2_0 rules. fxc accepts an effect without a technique from fx_4_0 on (variables
+    // only, for effect pools); fx_2_0 and the empty default refuse it (FX1003).
+    std::string effectProfile;
 };
 
 // Compiles a file. Throws CompileError for fatal problems.
