@@ -1,6 +1,7 @@
 // Compile checks through xlate's public API (see section_compiler.h).
 #include "section_compiler.h"
 
+#include <algorithm>
 #include <fstream>
 
 #include "fxport/xlate/effect_compiler.h"
@@ -58,8 +59,14 @@ CompileOutcome refused(const std::vector<fxport::xlate::Diagnostic>& diagnostics
     return out;
 }
 
-// The effect profile fxc would compile an [effect] section with at this shader model.
-std::string effectProfileFor(int model) { return model >= 50 ? "fx_5_0" : model >= 40 ? "fx_4_0" : "fx_2_0"; }
+// The effect profile of an [effect] section: fx_2_0 on the D3D9 models; from 4.0 on, the lowest
+// model the file's [require] allows (vkd3d's effect-variables-fx_4 expects fx_4_0's rules in its
+// 5.0 run too, effect-variables-fx_4_1 requires 4.1 for fx_4_1's).
+std::string effectProfileFor(int model, const RequireDesc& require) {
+    if (model < 40) return "fx_2_0";
+    int lowest = std::max(require.minModel, 40);
+    return lowest >= 50 ? "fx_5_0" : lowest >= 41 ? "fx_4_1" : "fx_4_0";
+}
 
 }  // namespace
 
@@ -80,7 +87,7 @@ CompileOutcome SectionCompiler::compileEffect(const std::string& source, int fir
     std::string path = tempDir_ + "/" + testFileName_ + "-L" + std::to_string(firstLine) + ".fx";
     try {
         fxport::xlate::CompileOptions options = optionsFor(cacheDir_);
-        options.effectProfile = effectProfileFor(model);
+        options.effectProfile = effectProfileFor(model, require);
         fxport::xlate::CompiledEffect effect = fxport::xlate::compileEffectSource(preparedSource(source, require), path, options);
         if (effect.hasErrors()) return refused(effect.diagnostics, testFileName_, firstLine);
         return CompileOutcome{true, "", "", ""};
