@@ -134,3 +134,18 @@ TEST(ConstantsFidelity, FxgroupNeedsANameAndATechnique) {
     EXPECT_NE(firstError("float4 group;\nfxgroup group\n{\n    technique11 {}\n}\n", uncached("fx_5_0")), "");
     EXPECT_EQ(firstError("fxgroup group\n{\n    technique11 {}\n}\n", uncached("fx_5_0")), "");
 }
+
+// fxc takes two cbuffers of one name; each keeps its own members (and block).
+TEST(ConstantsFidelity, TwoCbuffersOfOneName) {
+    CompiledEffect e = compileEffectSource("cbuffer cb : register(b1) { float4 m1; };\ncbuffer cb { float4 m2; };\n"
+                                           "float4 PS() : SV_Target { return m1 + m2; }\n" + std::string(kTechnique),
+                                           "virtual/TwoCbuffers.fx", uncached());
+    int m1 = -1, m2 = -1;
+    for (const auto& p : e.parameters) {
+        if (p.name == "m1") m1 = p.block;
+        if (p.name == "m2") m2 = p.block;
+    }
+    EXPECT_GT(m1, 0);
+    EXPECT_GT(m2, 0);
+    EXPECT_NE(m1, m2);
+}

@@ -685,6 +685,12 @@ private:
     void parseCbuffer() {
         ++pos_;
         std::string name = cur().isIdent() ? syntax_.tokens[pos_++].text : std::string();
+        // fxc takes two cbuffers of one name (cbuffer.shader_test); glslang would merge them into
+        // one block. The later one is renamed for glslang and the reflection.
+        if (!name.empty() && std::find(syntax_.cbuffers.begin(), syntax_.cbuffers.end(), name) != syntax_.cbuffers.end()) {
+            name += "_fxport" + std::to_string(syntax_.cbuffers.size());
+            syntax_.edits.push_back({tok(pos_ - 1).offset, tok(pos_ - 1).end, name});
+        }
         syntax_.cbuffers.push_back(name);
         int reg = -1;
         while (accept(":")) {
