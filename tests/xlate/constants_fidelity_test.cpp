@@ -149,3 +149,28 @@ TEST(ConstantsFidelity, TwoCbuffersOfOneName) {
     EXPECT_GT(m2, 0);
     EXPECT_NE(m1, m2);
 }
+
+// Annotations belong to globals: a local's are refused at their '<'.
+TEST(ConstantsFidelity, LocalVariableAnnotationsAreRefused) {
+    std::string error = firstError("float4 PS() : SV_Target\n{\n    float var < int a = 1; > = 0;\n    return var;\n}\n" + std::string(kTechnique));
+    EXPECT_NE(error.find("'var'"), std::string::npos) << error;
+    EXPECT_NE(error.find("(line 3)"), std::string::npos) << error;
+    EXPECT_EQ(firstError("float g < int a = 1; > = 0;\nfloat4 PS() : SV_Target\n{\n    float var = g < 1 ? 2 : 3;\n    return var;\n}\n" +
+                         std::string(kTechnique)),
+              "");
+}
+
+// Load()'s offset from a swizzle of a local vector fxc folds and glslang does not: the fetch reads
+// coordinate + offset, as GLSL takes no variable texelFetchOffset (fetch_offsets.h). The values
+// are the conformance runner's (swizzle-constant-prop.shader_test).
+TEST(ConstantsFidelity, VariableLoadOffsetMovesTheCoordinate) {
+    CompiledEffect e = compileEffectSource("Texture2D tex; Texture2DArray arr; int i;\n"
+                                           "float4 PS() : SV_Target { int4 a = {1, 2, i, i}; int3 c = a.wyx;\n"
+                                           "  return tex.Load(int3(0, 0, 0), a.xy) + arr.Load(int4(0, 0, 1, 0), c.yz); }\n" +
+                                               std::string(kTechnique),
+                                           "virtual/FetchOffsets.fx", uncached());
+    ASSERT_FALSE(e.shaders.empty());
+    const std::string& glsl = e.shaders.back().glsl;
+    EXPECT_EQ(glsl.find("texelFetchOffset"), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find("texelFetch("), std::string::npos) << glsl;
+}

@@ -1,5 +1,6 @@
 #include "spirv_to_glsl.h"
 
+#include "fetch_offsets.h"
 #include "integer_matrices.h"
 
 #include <spirv_cross/spirv_glsl.hpp>
@@ -274,6 +275,7 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
         for (PackedBlock& b : packed)
             if (!b.glslDeclarable) flattenConstantBuffer(spirv, b);
         integerMatricesAsArrays(spirv);
+        fetchOffsetsIntoCoordinates(spirv);
         GlslCompiler compiler(std::move(spirv));
         compiler.build_dummy_sampler_for_combined_images();
         compiler.build_combined_image_samplers();
