@@ -174,3 +174,9 @@ TEST(ConstantsFidelity, VariableLoadOffsetMovesTheCoordinate) {
     EXPECT_EQ(glsl.find("texelFetchOffset"), std::string::npos) << glsl;
     EXPECT_NE(glsl.find("texelFetch("), std::string::npos) << glsl;
 }
+
+// SM 4-5: fxc discards a `register(b...)` of a numeric global, whatever follows the b.
+TEST(ConstantsFidelity, BufferRegisterOfANumericGlobalIsDiscarded) {
+    EXPECT_EQ(firstError("float a : register(banana);\nfloat4 PS() : SV_Target { return a; }\n" + std::string(kTechnique)), "");
+    EXPECT_EQ(firstError("float a : register(b2);\nfloat4 PS() : SV_Target { return a; }\n" + std::string(kTechnique)), "");
+}

@@ -13,6 +13,7 @@
 
 #include "constant_eval.h"
 #include "fx_syntax.h"
+#include "hlsl_types.h"
 #include "variable_declarations.h"
 #include "source_map.h"
 #include "text_util.h"
@@ -928,6 +929,7 @@ private:
         int packOffset = -1;  // packoffset(cN.y) in floats (checked for overlaps; cbuffer_packing places it)
         std::vector<Annotation> annotations;
         size_t annotationBegin = 0, annotationEnd = 0;
+        size_t registerBegin = 0, registerEnd = 0;  // `: register(...)`, the last one
     };
     // The tokens of `packoffset(c4.w)` between the parentheses, as 4 * 4 + 3 floats; -1 where they
     // are not a c-register (glslang reports those).
@@ -958,6 +960,8 @@ private:
             if (cur().is("(")) {
                 size_t after = skipGroup(pos_, word.c_str());
                 if (iequals(word, "register") && after >= pos_ + 3) {
+                    tail.registerBegin = pos_ - 2;
+                    tail.registerEnd = after;
                     std::string reg = tok(after - 2).text;  // s0, t3, c4 ... (last argument)
                     if (reg.size() > 1) tail.registerIndex = std::atoi(reg.c_str() + 1);
                     if (reg.size() > 1) tail.registerClass = char(std::tolower(static_cast<unsigned char>(reg[0])));
@@ -1136,6 +1140,10 @@ private:
             g.packOffset = tail.packOffset;
             g.registerClass = tail.registerClass;
             g.registerIndex = tail.registerIndex;
+            // fxc discards any `register(b...)` of a numeric global (`register(banana)` too) at SM 4-5;
+            // at SM 2-3 register_reservations.cpp refuses what is no register.
+            if (g.registerClass == 'b' && cbuffer.empty() && describeBasicType(syntax_.resolveType(type)).ok && tail.registerEnd > tail.registerBegin)
+                blank(tail.registerBegin, tail.registerEnd);
             g.annotations = tail.annotations;
             if (tail.annotationEnd > tail.annotationBegin) blank(tail.annotationBegin, tail.annotationEnd);
             ignoreStateBlock(name);
