@@ -47,13 +47,16 @@ bool fetchOffsetsIntoCoordinates(std::vector<std::uint32_t>& words) {
             out.push_back(m.value(kCompositeConstruct, coordinateType, parts));
             offset = out.back().words[2];
         }
-        out.push_back(m.value(kIAdd, coordinateType, {coordinate, offset}));
-        std::vector<std::uint32_t> fetch(w.begin(), w.end());
-        fetch[4] = out.back().words[2];
-        fetch[5] &= ~kOffset;
-        fetch.erase(fetch.begin() + std::ptrdiff_t(at));
-        if (fetch[5] == 0) fetch.resize(5);  // no operand left: no mask either
+        SpirvInstruction sum = m.value(kIAdd, coordinateType, {coordinate, offset});
+        const std::uint32_t mask = w[5] & ~kOffset;
+        std::vector<std::uint32_t> fetch{0, w[1], w[2], w[3], sum.words[2]};
+        if (mask) {  // no operand left: no mask either
+            fetch.push_back(mask);
+            for (size_t k = 6; k < w.size(); ++k)
+                if (k != at) fetch.push_back(w[k]);
+        }
         fetch[0] = firstWord(kImageFetch, fetch.size());
+        out.push_back(std::move(sum));
         out.push_back({std::move(fetch)});
         changed = true;
     });
