@@ -39,6 +39,7 @@ constexpr Family kFamilies[] = {
     findResourceArrayIndexingErrors,
     findIndexTypeErrors,
     findLengthPropertyErrors,
+    findSwitchSelectorErrors,
 };
 
 bool isShaderState(const std::string& name) {

@@ -75,5 +75,6 @@ std::vector<std::pair<size_t, Diagnostic>> findCbufferReservationErrors(const Ef
 std::vector<std::pair<size_t, Diagnostic>> findResourceArrayIndexingErrors(const EffectSyntax& syntax, const SourceMap& map);  // resource_array_indexing.cpp
 std::vector<std::pair<size_t, Diagnostic>> findIndexTypeErrors(const EffectSyntax& syntax, const SourceMap& map);  // index_types.cpp
 std::vector<std::pair<size_t, Diagnostic>> findLengthPropertyErrors(const EffectSyntax& syntax, const SourceMap& map);  // length_property.cpp
+std::vector<std::pair<size_t, Diagnostic>> findSwitchSelectorErrors(const EffectSyntax& syntax, const SourceMap& map);  // switch_labels.cpp
 
 }  // namespace fxport::xlate

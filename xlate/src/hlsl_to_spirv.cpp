@@ -9,6 +9,7 @@
 #include "glslang_process.h"
 #include "clip_distance_packing.h"
 #include "structured_buffer_layout.h"
+#include "keyword_identifiers.h"
 #include "spirv_fixups.h"
 #include "pow2_partitioning.h"
 #include "spirv_integer_fixups.h"
@@ -114,6 +115,7 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
         return out;
     }
     out.warnings = msgs;
+    restoreKeywordIdentifiers(out.words);  // `precise` as a name (keyword_identifiers.h)
     if (dividesByConstantZero(out.words, request.shaderModel < 4)) {
         out.errors.push_back({0, {}, "division by zero: a divisor of this shader folds to the constant 0, which fxc refuses", true});
         return out;
