@@ -40,6 +40,10 @@ constexpr Family kFamilies[] = {
     findIndexTypeErrors,
     findLengthPropertyErrors,
     findSwitchSelectorErrors,
+    findOperandTypeErrors,
+    findDeclarationLimitErrors,
+    findOverloadTieErrors,
+    findDeclarationFormErrors,
 };
 
 bool isShaderState(const std::string& name) {
