@@ -245,6 +245,15 @@ TEST_P(HlslAcceptedForms, NegatedBoolLiterals) {
     expectPixel("", "return float4(max(-true, -2), min(-1, -2), -false, A.x - true);", {-1, -2, 0, -0.5f}, {0.5f, 0, 0, 0});
 }
 
+// `!(a <= b)` is fxc's `a > b`: false when a is NaN (xlate/src/spirv_negated_comparisons.cpp); a
+// plain comparison and `!(a == b)` keep their meaning. SM4 and later, where 0 / 0 is NaN.
+TEST_P(HlslAcceptedFormsSm4, NegatedComparisonsOfNaN) {
+    expectPixel("", "float n = A.x / A.w; return float4(!(n <= A.y) ? 1 : 0, !(n > A.y) ? 2 : 0, (n < A.y) ? 4 : 0, !(n == A.y) ? 8 : 0);",
+                {0, 0, 0, 8}, {0, 1, 0, 0});
+    expectPixel("", "float n = A.x / A.w; return float4(!(n <= A.y) ? 1 : 0, !(n > A.y) ? 2 : 0, (n < A.y) ? 4 : 0, !(n == A.y) ? 8 : 0);",
+                {1, 0, 0, 8}, {3, 1, 0, 1});
+}
+
 std::string modelName(const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; }
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslAcceptedForms, ::testing::Values("2_0", "3_0", "4_0", "5_0"), modelName);
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslAcceptedFormsSm4, ::testing::Values("4_0", "5_0"), modelName);

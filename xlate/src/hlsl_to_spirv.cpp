@@ -122,13 +122,15 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
     }
     applySpirvFixups(out.words);
     structuredBufferStridesAsD3D(out.words);
-    if (request.shaderModel < 4) integerDivisionInFloats(out.words);  // SM2-3 integers are floats
+    if (request.shaderModel < 4) integerNegationInFloats(out.words);  // SM2-3 integers are floats
     std::string legalizeError;
-    if (!legalizeSpirv(out.words, &legalizeError)) out.errors.push_back({0, {}, legalizeError});
-    else {
-        packClipCullDistances(out.words);
-        packStructuredBuffersTightly(out.words);
+    if (!legalizeSpirv(out.words, &legalizeError)) {
+        out.errors.push_back({0, {}, legalizeError});
+        return out;
     }
+    if (request.shaderModel < 4) integerDivisionInFloats(out.words);  // after folding: fxc folds constants exactly
+    packClipCullDistances(out.words);
+    packStructuredBuffersTightly(out.words);
     if (request.hullPartitioning == "pow2" && out.errors.empty()) roundTessFactorsToPowersOfTwo(out.words);
     return out;
 }
