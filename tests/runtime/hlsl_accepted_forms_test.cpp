@@ -196,6 +196,64 @@ TEST_P(HlslAcceptedForms, ShaderValuedDefaultsAreNotWritten) {
     expectPixel(globals, "return f + g + A;", {0.5f, 1, 1.5f, 2}, {0.5f, 1, 1.5f, 2});
 }
 
+// Case labels written as floats are the integers they truncate to (`case 2.1f:` is `case 2:`), and
+// from SM4 a float selector is converted to int (xlate/src/switch_labels.cpp; vkd3d's switch).
+TEST_P(HlslAcceptedForms, SwitchWithFloatLabels) {
+    const std::string body = "float4 c = 1; switch (SELECTOR) { case 2.1f: c += 0.5; break; case 0.9f: c += 0.25; break; case -1.5: c = -1; break; } return c;";
+    for (std::string selector : {"(int)A.x", "A.x"}) {
+        if (selector == "A.x" && std::string(GetParam())[0] < '4') continue;  // fxc refuses a float selector below SM4
+        const std::string b = body.substr(0, body.find("SELECTOR")) + selector + body.substr(body.find("SELECTOR") + 8);
+        expectPixel("", b, {1.5f, 1.5f, 1.5f, 1.5f}, {2, 0, 0, 0});
+        expectPixel("", b, {1.25f, 1.25f, 1.25f, 1.25f}, {0, 0, 0, 0});
+        expectPixel("", b, {-1, -1, -1, -1}, {-1, 0, 0, 0});
+        expectPixel("", b, {1, 1, 1, 1}, {1, 0, 0, 0});  // 1 matches no label: 0.9f is 0
+    }
+}
+
+// A matrix among a constructor's arguments gives its components row by row
+// (xlate/src/matrix_constructor_arguments.cpp; vkd3d's matrix-indexing).
+TEST_P(HlslAcceptedForms, MatrixArgumentsOfConstructors) {
+    expectPixel("", "float2x2 a = float2x2(A.x, A.y, A.z, A.w); float2x3 m = float2x3(a, 5, 6); return float4(m[0][2], m[1][0], m[1][1], m[1][2]);",
+                {3, 4, 5, 6}, {1, 2, 3, 4});
+    expectPixel("", "float2x2 a = float2x2(A.x, A.y, A.z, A.w); float4x4 m = float4x4(1, 2, 3, 4, float3(5, 6, 7), 8, 9, 10, a, 15, 16);"
+                " return float4(m[2][2], m[2][3], m[3][0], m[3][3]);",
+                {11, 12, 13, 16}, {11, 12, 13, 14});
+}
+
+// `precise` is a modifier only where a type follows; elsewhere it names a variable, and a
+// parameter of that name is set by that name (xlate/src/keyword_identifiers.cpp).
+TEST_P(HlslAcceptedForms, PreciseAsAName) {
+    auto e = effect("float4 precise; precise float4 scaled(float4 v) { precise float4 r = v * 2; return r; }", "return scaled(precise) + precise.x;");
+    e->Parameters["precise"].SetValue(Vector4(0.5f, 1, 1.5f, 2));
+    std::vector<float> px = draw(*e);
+    const float expected[4] = {1.5f, 2.5f, 3.5f, 4.5f};
+    for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], expected[k]) << "channel " << k;
+}
+
+// sign of a matrix works on every component (xlate/src/matrix_rows_intrinsics.cpp).
+TEST_P(HlslAcceptedForms, SignOfAMatrix) {
+    auto e = effect("float2x2 M;", "return float4(sign(M)[0], sign(M)[1]);");
+    e->Parameters["M"].SetValue(std::vector<float>{-3, 0, 2, -0.5f});  // rows (-3, 0) and (2, -0.5)
+    std::vector<float> px = draw(*e);
+    const float expected[4] = {-1, 0, 1, -1};
+    for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], expected[k]) << "channel " << k;
+    expectPixel("", "float2x2 m = float2x2(A.x, A.y, A.z, A.w); return float4(sign(m)[1], sign(m)[0]);", {1, -1, -1, 0}, {-3, 0, 2, -0.5f});
+}
+
+// A unary minus on a bool literal negates the int it converts to (xlate/src/negated_bool_literals.cpp).
+TEST_P(HlslAcceptedForms, NegatedBoolLiterals) {
+    expectPixel("", "return float4(max(-true, -2), min(-1, -2), -false, A.x - true);", {-1, -2, 0, -0.5f}, {0.5f, 0, 0, 0});
+}
+
+// `!(a <= b)` is fxc's `a > b`: false when a is NaN (xlate/src/spirv_negated_comparisons.cpp); a
+// plain comparison and `!(a == b)` keep their meaning. SM4 and later, where 0 / 0 is NaN.
+TEST_P(HlslAcceptedFormsSm4, NegatedComparisonsOfNaN) {
+    expectPixel("", "float n = A.x / A.w; return float4(!(n <= A.y) ? 1 : 0, !(n > A.y) ? 2 : 0, (n < A.y) ? 4 : 0, !(n == A.y) ? 8 : 0);",
+                {0, 0, 0, 8}, {0, 1, 0, 0});
+    expectPixel("", "float n = A.x / A.w; return float4(!(n <= A.y) ? 1 : 0, !(n > A.y) ? 2 : 0, (n < A.y) ? 4 : 0, !(n == A.y) ? 8 : 0);",
+                {1, 0, 0, 8}, {3, 1, 0, 1});
+}
+
 std::string modelName(const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; }
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslAcceptedForms, ::testing::Values("2_0", "3_0", "4_0", "5_0"), modelName);
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslAcceptedFormsSm4, ::testing::Values("4_0", "5_0"), modelName);

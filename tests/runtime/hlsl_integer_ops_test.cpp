@@ -85,6 +85,19 @@ TEST_P(HlslSm3Integers, DivisionRoundsOperandsToFloat) {
     for (int k = 0; k < 4; ++k) EXPECT_EQ(px[size_t(k)], expected[k]) << "channel " << k;
 }
 
+// fxc folds constant ints exactly (16777217 % 10 is 7), except negation, which it folds as a
+// float (-16777217 is -16777216, 16782201 comes back from two negations as 16782200; vkd3d's
+// arithmetic-int pins both).
+TEST_P(HlslSm3Integers, ConstantsFoldExactlyButNegateAsFloats) {
+    const int a = 16777217, b = 10, c = 16782201, d = 999;
+    auto negated = [](int x) { return int(-float(x)); };
+    auto e = effect("", "int a = 16777217; int b = 10; int c = 16782201; int d = 999;"
+                    "return float4(a % b, (-a) % b, (-c) / d, (-(-c)) + 1);");
+    std::vector<float> px = draw(*e);
+    const float expected[4] = {float(a % b), float(negated(a) % b), float(negated(c) / d), float(negated(negated(c)) + 1)};
+    for (int k = 0; k < 4; ++k) EXPECT_EQ(px[size_t(k)], expected[k]) << "channel " << k;
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslSm3Integers, ::testing::Values("2_0", "3_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 

@@ -1,7 +1,8 @@
 // HLSL that fxc rejects and glslang accepts: each rule of the fxc-check families added for
-// issue 23 (effect_keywords, patch_objects, overload_ambiguity, ternary_shapes, uniform_initializers,
-// uav_rules, switch `continue`) must stop the compile with an FX2001 error at the offending line,
-// and a valid twin of each case -- the same code one step away from the rule -- must still
+// issue 23 (effect_keywords, patch_objects, overload_ambiguity, overload_ties, ternary_shapes,
+// uniform_initializers, uav_rules, operand_type_rules, declaration_limits, majority_modifiers,
+// switch_labels, switch `continue`) must stop the compile with an FX2001 error at the offending
+// line, and a valid twin of each case -- the same code one step away from the rule -- must still
 // compile, so a rule that grew too wide fails here too. Sources follow vkd3d's conformance
 // sections that pin the rules (named per case).
 #include <gtest/gtest.h>
@@ -117,6 +118,49 @@ std::vector<RejectCase> cases() {
         // vector-indexing: an index is a scalar, not an int1.
         {"VectorIndexOfInt1", "ps_4_0", "float4 main() : SV_TARGET\n{\n    float4 vec = {0, 1, 2, 3};\n    int1 idx = {3};\n    return vec[idx];\n}\n", 5,
          "scalar", "float4 main() : SV_TARGET\n{\n    float4 vec = {0, 1, 2, 3};\n    int2 idx = {1, 2};\n    return vec[idx.y];\n}\n"},
+        // switch: below SM4 the selector of a switch is an integer.
+        {"FloatSwitchSelectorInSm3", "ps_3_0",
+         "float4 v;\nfloat4 main() : sv_target\n{\n    float4 c = 1;\n    switch (v.x)\n    {\n    case 2.1f:\n        c += 0.1f;\n        break;\n    }\n    return c;\n}\n", 5,
+         "float",
+         "uint4 v;\nfloat4 main() : sv_target\n{\n    float4 c = 1;\n    switch (v.x)\n    {\n    case 2.1f:\n        c += 0.1f;\n        break;\n    }\n    return c;\n}\n"},
+        // asint: a bool has no bits to reinterpret.
+        {"AsintOfBool", "ps_4_0", "float4 main() : sv_target\n{\n    bool b = true;\n    return asint(b);\n}\n", 4, "asint",
+         "float4 main() : sv_target\n{\n    float b = 1;\n    return asint(b);\n}\n"},
+        // asuint: nor a double (one argument).
+        {"AsuintOfDouble", "ps_5_0", "float4 main() : sv_target\n{\n    double d = 1.0;\n    return asuint(d);\n}\n", 4, "asuint",
+         "float4 main() : sv_target\n{\n    int d = 1;\n    return asuint(d);\n}\n"},
+        // distance: dst takes scalars or 4-component vectors.
+        {"DstOfFloat1", "ps_4_0", "float4 main() : SV_TARGET\n{\n    float1 bad_size = 0;\n    dst(bad_size, bad_size);\n    return 1;\n}\n", 4, "dst",
+         "float4 main() : SV_TARGET\n{\n    float4 good_size = 0;\n    dst(good_size, good_size);\n    return 1;\n}\n"},
+        // step: a matrix and a float1 do not convert to each other.
+        {"StepOfMatrixAndFloat1", "ps_4_0",
+         "float4 main() : sv_target\n{\n    float2x2 a = {1, 2, 3, 4};\n    float1 b = {3};\n    step(a, b);\n    return 0;\n}\n", 5, "float1",
+         "float4 main() : sv_target\n{\n    float2x2 a = {1, 2, 3, 4};\n    float b = 3;\n    step(a, b);\n    return 0;\n}\n"},
+        // bitwise: shifts take integers.
+        {"ShiftByFloat", "ps_4_0", "float4 main() : SV_TARGET\n{\n    uint u = 5;\n    float f = 15.0;\n\n    return float4(u >> f, 0, 0, 0);\n}\n", 6,
+         "int",
+         "float4 main() : SV_TARGET\n{\n    uint u = 5;\n    int f = 15;\n\n    return float4(u >> f, 0, 0, 0);\n}\n"},
+        // invalid: an array dimension is at most 65536.
+        {"ArrayDimensionTooLarge", "ps_4_0", "float4 main() : sv_target\n{\n    float a[65537];\n    return 0;\n}\n", 3, "65536",
+         "float4 main() : sv_target\n{\n    float a[65536];\n    return 0;\n}\n"},
+        // unroll: fxc gives up unrolling at 1024 iterations.
+        {"UnrollOf1024Iterations", "ps_4_0",
+         "float4 main() : sv_target\n{\n    int i;\n    [unroll]\n    for (i = 0; i < 1024; ++i);\n    return float4(i, 0, 0, 0);\n}\n", 4, "unroll",
+         "float4 main() : sv_target\n{\n    int i;\n    [unroll]\n    for (i = 0; i < 1023; ++i);\n    return float4(i, 0, 0, 0);\n}\n"},
+        // majority-pragma: a typedef keeps the pragma's majority; the other one contradicts it.
+        {"MajorityContradictsTypedefPragma", "ps_4_0",
+         "#pragma pack_matrix(row_major)\ntypedef float2x2 mat_t;\nuniform column_major mat_t m;\nfloat4 main() : sv_target { return m[0].xyxy; }\n", 3,
+         "row_major",
+         "#pragma pack_matrix(row_major)\ntypedef float2x2 mat_t;\n#pragma pack_matrix(column_major)\nuniform mat_t m;\nfloat4 main() : sv_target { return m[0].xyxy; }\n"},
+        // function-overload: a bool is no closer to int than to float.
+        {"OverloadTieOfBool", "ps_4_0",
+         "float f(int x) { return 1.0; }\nfloat f(float x) { return 2.0; }\nfloat4 main() : sv_target\n{\n    return f(true);\n}\n", 5, "ambiguous",
+         "float f(int x) { return 1.0; }\nfloat f(float x) { return 2.0; }\nfloat4 main() : sv_target\n{\n    return f(1.5);\n}\n"},
+        // function-overload: a float4 argument ties float4 and float2x2.
+        {"OverloadTieOfVectorAndMatrix", "ps_4_0",
+         "float4 func(float2x2 x) { return 2.0; }\nfloat4 func(float4 x) { return 1.0; }\nfloat4 main() : sv_target\n{\n    return func(float4(0, 0, 0, 0));\n}\n",
+         5, "ambiguous",
+         "float4 func(float3x3 x) { return 2.0; }\nfloat4 func(float4 x) { return 1.0; }\nfloat4 main() : sv_target\n{\n    return func(float4(0, 0, 0, 0));\n}\n"},
     };
 }
 

@@ -12,6 +12,10 @@
 #include "tess_factor_intrinsics.h"
 #include "compare_store.h"
 #include "mixed_dimension_outputs.h"
+#include "switch_labels.h"
+#include "negated_bool_literals.h"
+#include "keyword_identifiers.h"
+#include "matrix_constructor_arguments.h"
 #include "matrix_rows_intrinsics.h"
 #include "static_object_aliases.h"
 #include "shader_valued_defaults.h"
@@ -402,6 +406,10 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : tessFactorIntrinsics(syntax)) edits.push_back(std::move(e));
     for (auto& e : compareStoreAsExchange(syntax)) edits.push_back(std::move(e));
     for (auto& e : mixedDimensionOutputs(syntax)) edits.push_back(std::move(e));
+    for (auto& e : switchLabelsAsIntegers(syntax)) edits.push_back(std::move(e));
+    for (auto& e : matrixConstructorArgumentsAsRows(syntax)) edits.push_back(std::move(e));
+    for (auto& e : keywordIdentifiersRenamed(syntax)) edits.push_back(std::move(e));
+    for (auto& e : negatedBoolLiteralsAsInts(syntax)) edits.push_back(std::move(e));
     for (auto& e : matrixIntrinsicsByRow(syntax)) edits.push_back(std::move(e));
     for (auto& e : staticObjectAliases(syntax)) edits.push_back(std::move(e));
     for (auto& e : shaderValuedDefaultsDropped(syntax)) edits.push_back(std::move(e));

@@ -39,6 +39,11 @@ constexpr Family kFamilies[] = {
     findResourceArrayIndexingErrors,
     findIndexTypeErrors,
     findLengthPropertyErrors,
+    findSwitchSelectorErrors,
+    findOperandTypeErrors,
+    findDeclarationLimitErrors,
+    findOverloadTieErrors,
+    findDeclarationFormErrors,
 };
 
 bool isShaderState(const std::string& name) {

@@ -75,5 +75,10 @@ std::vector<std::pair<size_t, Diagnostic>> findCbufferReservationErrors(const Ef
 std::vector<std::pair<size_t, Diagnostic>> findResourceArrayIndexingErrors(const EffectSyntax& syntax, const SourceMap& map);  // resource_array_indexing.cpp
 std::vector<std::pair<size_t, Diagnostic>> findIndexTypeErrors(const EffectSyntax& syntax, const SourceMap& map);  // index_types.cpp
 std::vector<std::pair<size_t, Diagnostic>> findLengthPropertyErrors(const EffectSyntax& syntax, const SourceMap& map);  // length_property.cpp
+std::vector<std::pair<size_t, Diagnostic>> findSwitchSelectorErrors(const EffectSyntax& syntax, const SourceMap& map);  // switch_labels.cpp
+std::vector<std::pair<size_t, Diagnostic>> findOperandTypeErrors(const EffectSyntax& syntax, const SourceMap& map);  // operand_type_rules.cpp
+std::vector<std::pair<size_t, Diagnostic>> findDeclarationLimitErrors(const EffectSyntax& syntax, const SourceMap& map);  // declaration_limits.cpp
+std::vector<std::pair<size_t, Diagnostic>> findOverloadTieErrors(const EffectSyntax& syntax, const SourceMap& map);  // overload_ties.cpp
+std::vector<std::pair<size_t, Diagnostic>> findDeclarationFormErrors(const EffectSyntax& syntax, const SourceMap& map);  // declaration_forms.cpp
 
 }  // namespace fxport::xlate

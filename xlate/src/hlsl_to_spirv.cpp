@@ -9,6 +9,7 @@
 #include "glslang_process.h"
 #include "clip_distance_packing.h"
 #include "structured_buffer_layout.h"
+#include "keyword_identifiers.h"
 #include "spirv_fixups.h"
 #include "pow2_partitioning.h"
 #include "spirv_integer_fixups.h"
@@ -114,19 +115,22 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
         return out;
     }
     out.warnings = msgs;
+    restoreKeywordIdentifiers(out.words);  // `precise` as a name (keyword_identifiers.h)
     if (dividesByConstantZero(out.words, request.shaderModel < 4)) {
         out.errors.push_back({0, {}, "division by zero: a divisor of this shader folds to the constant 0, which fxc refuses", true});
         return out;
     }
     applySpirvFixups(out.words);
     structuredBufferStridesAsD3D(out.words);
-    if (request.shaderModel < 4) integerDivisionInFloats(out.words);  // SM2-3 integers are floats
+    if (request.shaderModel < 4) integerNegationInFloats(out.words);  // SM2-3 integers are floats
     std::string legalizeError;
-    if (!legalizeSpirv(out.words, &legalizeError)) out.errors.push_back({0, {}, legalizeError});
-    else {
-        packClipCullDistances(out.words);
-        packStructuredBuffersTightly(out.words);
+    if (!legalizeSpirv(out.words, &legalizeError)) {
+        out.errors.push_back({0, {}, legalizeError});
+        return out;
     }
+    if (request.shaderModel < 4) integerDivisionInFloats(out.words);  // after folding: fxc folds constants exactly
+    packClipCullDistances(out.words);
+    packStructuredBuffersTightly(out.words);
     if (request.hullPartitioning == "pow2" && out.errors.empty()) roundTessFactorsToPowersOfTwo(out.words);
     return out;
 }

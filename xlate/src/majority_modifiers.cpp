@@ -3,10 +3,13 @@
 // matrix type only, so it is an error
 //  - on a struct (`column_major struct apple a;`, `typedef column_major struct apple apple_t;`),
 //  - on a typedef of an array (`typedef float4x4 arr_t[2]; row_major arr_t a;`),
-//  - on a typedef that already has the other majority (`typedef row_major float4x4 m_t; column_major m_t x;`).
+//  - on a typedef that already has the other majority (`typedef row_major float4x4 m_t; column_major m_t x;`),
+//    its own or the one the latest `#pragma pack_matrix` named when it was declared (vkd3d's
+//    majority-pragma: the typedef keeps that latent majority).
 #include <map>
 
 #include "fxc_checks.h"
+#include "hlsl_types.h"
 
 namespace fxport::xlate {
 
@@ -34,7 +37,10 @@ private:
 
     // `typedef [modifiers] Type[<...>] Name[dims], ...;`
     void collectTypedefs() {
+        std::string latent;  // the latest `#pragma pack_matrix(...)`'s majority
         for (size_t i = 0; i + 2 < t_.size(); ++i) {
+            if (t_[i].is("#") && t_[i + 1].is("pragma") && tok(i + 2).is("pack_matrix") && tok(i + 3).is("(") && isMajority(tok(i + 4)))
+                latent = tok(i + 4).text;
             if (!t_[i].is("typedef")) continue;
             Typedef d;
             size_t k = i + 1;
@@ -47,6 +53,7 @@ private:
             }
             if (!t_[k].isIdent() && !t_[k].is("}")) continue;
             if (auto it = typedefs_.find(t_[k].text); it != typedefs_.end() && d.majority.empty()) d = it->second;  // a typedef of a typedef
+            else if (d.majority.empty() && !d.structure && describeBasicType(syntax_.resolveType(t_[k].text)).isMatrix) d.majority = latent;
             ++k;
             if (t_[k].is("<")) k = closing(k) + 1;
             while (t_[k].isIdent()) {

@@ -12,7 +12,9 @@ namespace fxport::xlate {
 
 namespace {
 
-bool isRowwise(const std::string& s) { return s == "all" || s == "any" || s == "asint" || s == "asuint" || s == "asfloat"; }
+bool isRowwise(const std::string& s) {
+    return s == "all" || s == "any" || s == "asint" || s == "asuint" || s == "asfloat" || s == "sign";
+}
 
 std::string helperCode(const std::string& intrinsic, const std::string& name, const BasicType& m) {
     const std::string from = spellType(m);
@@ -23,6 +25,7 @@ std::string helperCode(const std::string& intrinsic, const std::string& name, co
         return code + "; } ";
     }
     BasicType to = m;
+    // sign's int matrix is made a float one: glslang writes int matrices as SPIR-V no GLSL has (imat2).
     to.scalar = intrinsic == "asint" ? "int" : intrinsic == "asuint" ? "uint" : "float";
     code = spellType(to) + " " + name + "(" + from + " v) { return " + spellType(to) + "(";
     for (int r = 0; r < m.rows; ++r) code += std::string(r ? ", " : "") + intrinsic + "(v[" + std::to_string(r) + "])";

@@ -24,6 +24,7 @@ const Helper kHelpers[] = {
     {"normalize", 1, false, "float fxport_normalize_scalar(float x) { return x * rsqrt(x * x); } "},
     {"determinant", 1, true, "float fxport_determinant_scalar(float x) { return x; } "},
     {"transpose", 1, true, "float fxport_transpose_scalar(float x) { return x; } "},
+    {"noise", 1, false, "float fxport_noise_scalar(float x) { return noise(float2(x, 0.0)); } "},
     {"reflect", 2, false, "float fxport_reflect_scalar(float i, float n) { return i - 2.0 * n * (i * n); } "},
     {"refract", 3, false,
      "float fxport_refract_scalar(float i, float n, float eta) { float c = i * n; float k = 1.0 - eta * eta * (1.0 - c * c); "

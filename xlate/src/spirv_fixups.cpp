@@ -1,6 +1,7 @@
 #include "spirv_fixups.h"
 
 #include "spirv_integer_fixups.h"
+#include "spirv_negated_comparisons.h"
 
 #include <spirv-tools/libspirv.h>
 #include <spirv-tools/optimizer.hpp>
@@ -110,6 +111,7 @@ void applySpirvFixups(std::vector<std::uint32_t>& words) {
     if (hasOpcode(words, {kOpAny, kOpAll}) && readTypes(words, types)) anyAllOfScalarIsTheScalar(words, types);
     maskShiftCounts(words);
     floatToUnsignedSaturates(words);
+    if (hasOpcode(words, {168})) negatedComparisonsAsOpposites(words);  // OpLogicalNot
 }
 
 namespace {

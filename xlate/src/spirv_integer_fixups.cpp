@@ -150,4 +150,21 @@ void integerDivisionInFloats(std::vector<std::uint32_t>& words) {
     words = m.assemble();
 }
 
+void integerNegationInFloats(std::vector<std::uint32_t>& words) {
+    constexpr std::uint32_t kOpSNegate = 126, kOpFNegate = 127;
+    if (!hasOpcode(words, {kOpSNegate})) return;
+    SpirvModuleEdit m;
+    if (!m.parse(words)) return;
+    m.rewrite([&](const SpirvInstruction& inst, std::vector<SpirvInstruction>& out) {
+        if (inst.opcode() != kOpSNegate || inst.words.size() != 4) return out.push_back(inst);
+        const std::uint32_t type = inst.words[1], floatType = m.floatTypeLike(type);
+        SpirvInstruction a = m.value(spv_op::ConvertSToF, floatType, {inst.words[3]});
+        SpirvInstruction n = m.value(kOpFNegate, floatType, {a.words[2]});
+        SpirvInstruction back = inst;  // keeps the result id
+        back.words = {(4u << 16) | spv_op::ConvertFToS, type, inst.words[2], n.words[2]};
+        out.insert(out.end(), {a, n, back});
+    });
+    words = m.assemble();
+}
+
 }  // namespace fxport::xlate

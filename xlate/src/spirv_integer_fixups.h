@@ -24,7 +24,13 @@ void foldIntMinByMinusOne(std::vector<std::uint32_t>& words);
 // SM2-3 have no integers: fxc computes int and uint values as floats, so `/` and `%` of
 // non-constant operands divide floats and truncate (16777217 % 10 is 6: 16777217 is 16777216 as a
 // float). Rewrites OpSDiv/OpUDiv/OpSRem/OpUMod into that: convert both operands to float, OpFDiv
-// or OpFRem (truncating), convert back. For SM2-3 modules only, after the remainder fix-up.
+// or OpFRem (truncating), convert back. fxc folds constant operands exactly (16777217 % 10 is 7
+// there), so for SM2-3 modules this runs after legalisation has folded the constant ones.
 void integerDivisionInFloats(std::vector<std::uint32_t>& words);
+
+// SM2-3: fxc negates an int as a float, constants too (`-a` of 16782201 is -16782200; vkd3d's
+// arithmetic-int pins it): OpSNegate becomes convert to float, OpFNegate, convert back. Before
+// legalisation, so that folding sees the float negation.
+void integerNegationInFloats(std::vector<std::uint32_t>& words);
 
 }  // namespace fxport::xlate
