@@ -20,10 +20,15 @@ std::string literalString(const std::uint32_t* w, size_t count) {
     return s.substr(0, std::strlen(s.c_str()));
 }
 
+// SPIR-V's literal string: UTF-8 bytes, the first in a word's lowest byte, NUL-terminated and padded.
+// (Packed byte by byte: GCC 12 -O3 sees a bogus overflow in a memcpy of s.size() bytes.)
 void appendString(std::vector<std::uint32_t>& out, const std::string& s) {
-    std::vector<std::uint32_t> packed((s.size() + 4) / 4, 0);
-    std::memcpy(packed.data(), s.data(), s.size());
-    out.insert(out.end(), packed.begin(), packed.end());
+    for (size_t w = 0; w < s.size() / 4 + 1; ++w) {
+        std::uint32_t word = 0;
+        for (size_t b = 0; b < 4 && w * 4 + b < s.size(); ++b)
+            word |= std::uint32_t(static_cast<unsigned char>(s[w * 4 + b])) << (8 * b);
+        out.push_back(word);
+    }
 }
 
 }  // namespace
