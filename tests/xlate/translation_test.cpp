@@ -985,11 +985,15 @@ technique T { pass P { PixelShader = compile ps_3_0 PS(); } }
 // A matrix typedef keeps the majority it was declared with, by a pragma before it or its own
 // modifier, wherever it is used (fxc; vkd3d's majority-pragma and majority-typedef pin it).
 TEST(Translation, MatrixTypedefKeepsTheMajorityOfItsDeclaration) {
-    const char* source = R"(#pragma pack_matrix(row_major)
+    // A typedef declared before any pack_matrix has no majority of its own (a later typedef may
+    // give it one); after a pragma it keeps the pragma's (vkd3d's majority-pragma, which also pins
+    // that a modifier cannot change that latent majority: X3048).
+    const char* source = R"(typedef float2x2 free_t;
+typedef row_major free_t own_row_t;
+#pragma pack_matrix(row_major)
 typedef float2x2 pragma_row_t;
 #pragma pack_matrix(column_major)
 typedef float2x2 plain_t;
-typedef row_major plain_t own_row_t;
 pragma_row_t A;
 own_row_t B;
 plain_t C;

@@ -1,6 +1,7 @@
 // Limits fxc puts on what a declaration or a loop may ask for, where glslang takes anything:
 //  - an array dimension must be between 1 and 65536 (`float a[65537];`: fxc X3059; vkd3d's
-//    invalid pins it); judged where the dimension is a literal;
+//    invalid pins it); judged where the dimension is a literal, and reported as the element limit
+//    (FX1204, docs/limits.md) at the dimension, where fxc reports it (a typedef's, not the variable's);
 //  - `[unroll]` without a count on a loop that runs 1024 times or more: fxc gives up unrolling
 //    after 1024 iterations and refuses the loop (X3511 "loop does not appear to terminate in a
 //    timely manner (1024 iterations)"; vkd3d's unroll). Judged on `for (i = A; i < B; ++i)` with
@@ -33,7 +34,7 @@ public:
             // `Type name[N]`: a name after a type name, then the dimension.
             if (t_[i].is("[") && t_[i - 1].isIdent() && t_[i - 2].isIdent() && !t_[i - 2].is("return") && !t_[i - 2].is("else") && integerLiteral(t_[i + 1], n) &&
                 t_[i + 2].is("]") && n > kMaxArrayDimension)
-                report("array dimension " + t_[i + 1].text + " of '" + t_[i - 1].text + "' must be between 1 and 65536 (fxc X3059)", i + 1);
+                report(diag::kArrayTooLarge, "array dimension " + t_[i + 1].text + " of '" + t_[i - 1].text + "' must be between 1 and 65536 (fxc X3059)", i + 1);
             if (t_[i].is("unroll") && t_[i - 1].is("[") && t_[i + 1].is("]")) unroll(i);
         }
     }

@@ -55,9 +55,11 @@ bool isShaderState(const std::string& name) {
 
 }  // namespace
 
-void FxcCheck::report(const std::string& message, size_t token) {
+void FxcCheck::report(const std::string& message, size_t token) { report(diag::kHlsl, message, token); }
+
+void FxcCheck::report(const char* id, const std::string& message, size_t token) {
     const Token& t = tok(token);
-    found_.push_back({token, map_.make(Severity::Error, diag::kHlsl, message, t.line, t.column, t.text)});
+    found_.push_back({token, map_.make(Severity::Error, id, message, t.line, t.column, t.text)});
 }
 
 size_t FxcCheck::closing(size_t open) const {

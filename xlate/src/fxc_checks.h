@@ -35,7 +35,8 @@ protected:
     const SourceMap& map_;
 
     const Token& tok(size_t i) const { return t_[std::min(i, t_.size() - 1)]; }
-    void report(const std::string& message, size_t token);
+    void report(const std::string& message, size_t token);  // FX2001, as glslang's refusals
+    void report(const char* id, const std::string& message, size_t token);
     size_t closing(size_t open) const;  // the bracket closing the one at `open` (or the end token)
     bool inFunction(size_t at) const;
     const FxFunction* functionAt(size_t at) const;
