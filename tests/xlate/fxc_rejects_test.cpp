@@ -24,6 +24,7 @@ struct RejectCase {
     const char* word;     // a word the message must hold
     std::string valid;    // one step away: fxc compiles it
     const char* validProfile = nullptr;  // the twin's profile when the step is the profile itself
+    const char* id = diag::kHlsl;        // the error's id (FX1204 for the element limit, docs/limits.md)
 };
 
 void PrintTo(const RejectCase& c, std::ostream* os) { *os << c.name; }
@@ -142,7 +143,7 @@ std::vector<RejectCase> cases() {
          "float4 main() : SV_TARGET\n{\n    uint u = 5;\n    int f = 15;\n\n    return float4(u >> f, 0, 0, 0);\n}\n"},
         // invalid: an array dimension is at most 65536.
         {"ArrayDimensionTooLarge", "ps_4_0", "float4 main() : sv_target\n{\n    float a[65537];\n    return 0;\n}\n", 3, "65536",
-         "float4 main() : sv_target\n{\n    float a[65536];\n    return 0;\n}\n"},
+         "float4 main() : sv_target\n{\n    float a[65536];\n    return 0;\n}\n", nullptr, diag::kArrayTooLarge},
         // unroll: fxc gives up unrolling at 1024 iterations.
         {"UnrollOf1024Iterations", "ps_4_0",
          "float4 main() : sv_target\n{\n    int i;\n    [unroll]\n    for (i = 0; i < 1024; ++i);\n    return float4(i, 0, 0, 0);\n}\n", 4, "unroll",
@@ -176,7 +177,7 @@ TEST_P(FxcRejects, InvalidStopsAtItsLine) {
         for (const auto& d : e.diagnostics())
             if (d.severity == Severity::Error && !first) first = &d;
         ASSERT_NE(first, nullptr) << e.what();
-        EXPECT_EQ(first->id, std::string(diag::kHlsl)) << e.what();
+        EXPECT_EQ(first->id, std::string(c.id)) << e.what();
         EXPECT_EQ(first->location.line, c.line) << e.what();
         EXPECT_NE(first->message.find(c.word), std::string::npos) << e.what();
     }
