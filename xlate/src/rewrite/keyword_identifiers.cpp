@@ -1,0 +1,68 @@
+// See keyword_identifiers.h.
+#include "rewrite/keyword_identifiers.h"
+
+#include <cstring>
+#include <string>
+
+namespace fxport::xlate {
+
+namespace {
+
+const std::string kPrefix = "fxport_kw_";
+constexpr std::uint32_t kOpName = 5, kOpMemberName = 6;
+
+// A modifier where a type or another modifier follows (`precise float4 v;`, `precise out float x`);
+// a name anywhere else (`float4 precise;`, `precise.x`, `(precise)`).
+bool isNameUse(const std::vector<Token>& t, size_t i) { return !t[i + 1].isIdent(); }
+
+std::string literalString(const std::uint32_t* w, size_t count) {
+    std::string s(reinterpret_cast<const char*>(w), count * 4);
+    return s.substr(0, std::strlen(s.c_str()));
+}
+
+// SPIR-V's literal string: UTF-8 bytes, the first in a word's lowest byte, NUL-terminated and padded.
+// (Packed byte by byte: GCC 12 -O3 sees a bogus overflow in a memcpy of s.size() bytes.)
+void appendString(std::vector<std::uint32_t>& out, const std::string& s) {
+    for (size_t w = 0; w < s.size() / 4 + 1; ++w) {
+        std::uint32_t word = 0;
+        for (size_t b = 0; b < 4 && w * 4 + b < s.size(); ++b)
+            word |= std::uint32_t(static_cast<unsigned char>(s[w * 4 + b])) << (8 * b);
+        out.push_back(word);
+    }
+}
+
+}  // namespace
+
+std::vector<TextEdit> keywordIdentifiersRenamed(const EffectSyntax& syntax) {
+    const auto& t = syntax.tokens;
+    std::vector<TextEdit> edits;
+    for (size_t i = 0; i + 1 < t.size(); ++i)
+        if (t[i].isIdent() && t[i].is("precise") && isNameUse(t, i)) edits.push_back({t[i].offset, t[i].end, kPrefix + t[i].text});
+    return edits;
+}
+
+void restoreKeywordIdentifiers(std::vector<std::uint32_t>& words) {
+    if (words.size() < 5) return;
+    std::vector<std::uint32_t> out(words.begin(), words.begin() + 5);
+    out.reserve(words.size());
+    bool changed = false;
+    for (size_t at = 5; at < words.size();) {
+        const std::uint32_t count = words[at] >> 16, op = words[at] & 0xFFFFu;
+        if (count == 0 || at + count > words.size()) return;  // malformed: left to the validator
+        const size_t fixed = op == kOpName ? 2 : op == kOpMemberName ? 3 : 0;  // words before the string
+        std::string name = fixed && count > fixed ? literalString(&words[at + fixed], count - fixed) : std::string();
+        if (name.rfind(kPrefix, 0) == 0) {
+            std::vector<std::uint32_t> instruction(words.begin() + at, words.begin() + at + fixed);
+            appendString(instruction, name.substr(kPrefix.size()));
+            instruction[0] = std::uint32_t(instruction.size()) << 16 | op;
+            out.insert(out.end(), instruction.begin(), instruction.end());
+            changed = true;
+        } else {
+            out.insert(out.end(), words.begin() + at, words.begin() + at + count);
+        }
+        at += count;
+    }
+    if (changed) words = std::move(out);
+}
+
+}  // namespace fxport::xlate
