@@ -115,23 +115,24 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
         return out;
     }
     out.warnings = msgs;
-    restoreKeywordIdentifiers(out.words);  // `precise` as a name (keyword_identifiers.h)
-    if (dividesByConstantZero(out.words, request.shaderModel < 4)) {
+    // The SPIR-V passes (parsed_spirv.h), each a function over one parsed module; the spirv-opt
+    // runs (the division check, legalisation) work on the words between them.
+    const bool sm2or3 = request.shaderModel < 4;
+    runSpirvPasses(out.words, {restoreKeywordIdentifiers});  // `precise` as a name (keyword_identifiers.h)
+    if (dividesByConstantZero(out.words, sm2or3)) {
         out.errors.push_back({0, {}, "division by zero: a divisor of this shader folds to the constant 0, which fxc refuses", true});
         return out;
     }
-    applySpirvFixups(out.words);
-    structuredBufferStridesAsD3D(out.words);
-    if (request.shaderModel < 4) integerNegationInFloats(out.words);  // SM2-3 integers are floats
+    runSpirvPasses(out.words, {applySpirvFixups, structuredBufferStridesAsD3D,
+                               sm2or3 ? SpirvPass(integerNegationInFloats) : nullptr});  // SM2-3 integers are floats
     std::string legalizeError;
     if (!legalizeSpirv(out.words, &legalizeError)) {
         out.errors.push_back({0, {}, legalizeError});
         return out;
     }
-    if (request.shaderModel < 4) integerDivisionInFloats(out.words);  // after folding: fxc folds constants exactly
-    packClipCullDistances(out.words);
-    packStructuredBuffersTightly(out.words);
-    if (request.hullPartitioning == "pow2" && out.errors.empty()) roundTessFactorsToPowersOfTwo(out.words);
+    runSpirvPasses(out.words, {sm2or3 ? SpirvPass(integerDivisionInFloats) : nullptr,  // after folding: fxc folds constants exactly
+                               packClipCullDistances, packStructuredBuffersTightly,
+                               request.hullPartitioning == "pow2" ? SpirvPass(roundTessFactorsToPowersOfTwo) : nullptr});
     return out;
 }
 

@@ -271,11 +271,15 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
                        VaryingLocations& varyings, const Tessellation* hull) {
     GlslShader out;
     try {
-        std::vector<PackedBlock> packed = packConstantBuffers(spirv, *effect.syntax);
-        for (PackedBlock& b : packed)
-            if (!b.glslDeclarable) flattenConstantBuffer(spirv, b);
-        integerMatricesAsArrays(spirv);
-        fetchOffsetsIntoCoordinates(spirv);
+        // The SPIR-V passes before SPIRV-Cross, on one parsed module (parsed_spirv.h).
+        std::vector<PackedBlock> packed;
+        if (ParsedSpirv module; module.parse(spirv)) {
+            packed = packConstantBuffers(module, *effect.syntax);
+            for (PackedBlock& b : packed)
+                if (!b.glslDeclarable && module.reparse()) flattenConstantBuffer(module, b);
+            if (module.reparse()) runSpirvPasses(module, {integerMatricesAsArrays, fetchOffsetsIntoCoordinates});
+            spirv = module.assemble();
+        }
         GlslCompiler compiler(std::move(spirv));
         compiler.build_dummy_sampler_for_combined_images();
         compiler.build_combined_image_samplers();

@@ -9,7 +9,6 @@ namespace fxport::xlate {
 namespace {
 
 const std::string kPrefix = "fxport_kw_";
-constexpr std::uint32_t kOpName = 5, kOpMemberName = 6;
 
 // A modifier where a type or another modifier follows (`precise float4 v;`, `precise out float x`);
 // a name anywhere else (`float4 precise;`, `precise.x`, `(precise)`).
@@ -41,28 +40,21 @@ std::vector<TextEdit> keywordIdentifiersRenamed(const EffectSyntax& syntax) {
     return edits;
 }
 
-void restoreKeywordIdentifiers(std::vector<std::uint32_t>& words) {
-    if (words.size() < 5) return;
-    std::vector<std::uint32_t> out(words.begin(), words.begin() + 5);
-    out.reserve(words.size());
+bool restoreKeywordIdentifiers(ParsedSpirv& m) {
     bool changed = false;
-    for (size_t at = 5; at < words.size();) {
-        const std::uint32_t count = words[at] >> 16, op = words[at] & 0xFFFFu;
-        if (count == 0 || at + count > words.size()) return;  // malformed: left to the validator
-        const size_t fixed = op == kOpName ? 2 : op == kOpMemberName ? 3 : 0;  // words before the string
-        std::string name = fixed && count > fixed ? literalString(&words[at + fixed], count - fixed) : std::string();
-        if (name.rfind(kPrefix, 0) == 0) {
-            std::vector<std::uint32_t> instruction(words.begin() + at, words.begin() + at + fixed);
-            appendString(instruction, name.substr(kPrefix.size()));
-            instruction[0] = std::uint32_t(instruction.size()) << 16 | op;
-            out.insert(out.end(), instruction.begin(), instruction.end());
-            changed = true;
-        } else {
-            out.insert(out.end(), words.begin() + at, words.begin() + at + count);
-        }
-        at += count;
+    for (SpirvInstruction& inst : m.instructions) {
+        const std::uint32_t op = inst.opcode();
+        const size_t fixed = op == spv_op::Name ? 2 : op == spv_op::MemberName ? 3 : 0;  // words before the string
+        if (!fixed || inst.words.size() <= fixed) continue;
+        std::string name = literalString(&inst.words[fixed], inst.words.size() - fixed);
+        if (name.rfind(kPrefix, 0) != 0) continue;
+        std::vector<std::uint32_t> words(inst.words.begin(), inst.words.begin() + std::ptrdiff_t(fixed));
+        appendString(words, name.substr(kPrefix.size()));
+        words[0] = spirvFirstWord(op, words.size());
+        inst.words = std::move(words);
+        changed = true;
     }
-    if (changed) words = std::move(out);
+    return changed;
 }
 
 }  // namespace fxport::xlate

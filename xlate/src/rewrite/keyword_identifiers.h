@@ -10,12 +10,14 @@
 #include <vector>
 
 #include "fx/fx_syntax.h"
+#include "spirv/parsed_spirv.h"
 
 namespace fxport::xlate {
 
 std::vector<TextEdit> keywordIdentifiersRenamed(const EffectSyntax& syntax);
 
-// OpName / OpMemberName strings `fxport_kw_NAME` become `NAME` again.
-void restoreKeywordIdentifiers(std::vector<std::uint32_t>& words);
+// OpName / OpMemberName strings `fxport_kw_NAME` become `NAME` again (a pass of parsed_spirv.h:
+// true when it changed the module).
+bool restoreKeywordIdentifiers(ParsedSpirv& m);
 
 }  // namespace fxport::xlate

@@ -3,7 +3,7 @@
 
 #include <set>
 
-#include "spirv/spirv_module_edit.h"
+#include "spirv/parsed_spirv.h"
 
 namespace fxport::xlate {
 
@@ -26,7 +26,7 @@ constexpr std::uint32_t kOpFAdd = 129, kOpFSub = 131, kOpFMul = 133;
 constexpr std::uint32_t kGlslCeil = 9, kGlslExp2 = 29, kGlslLog2 = 30, kGlslFMin = 37, kGlslStep = 48;
 
 // The pointers that reach a tessellation-factor variable: the variables and their access chains.
-std::set<std::uint32_t> tessFactorPointers(const SpirvModuleEdit& m) {
+std::set<std::uint32_t> tessFactorPointers(const ParsedSpirv& m) {
     std::set<std::uint32_t> pointers;
     for (const auto& in : m.instructions)
         if (in.opcode() == kOpDecorate && in.words.size() >= 4 && in.words[2] == kDecorationBuiltIn &&
@@ -43,7 +43,7 @@ std::set<std::uint32_t> tessFactorPointers(const SpirvModuleEdit& m) {
 // r = exp2(ceil(log2(min(x, 64)))), then halved where r/2 >= x and doubled where r < x, so that a
 // log2 one ulp off on some GPU cannot make a factor of 4 an 8 (exp2 of an integer is exact). The
 // clamp first keeps an infinite factor D3D's 64 (inf - inf would be NaN, which culls).
-std::uint32_t roundedUp(SpirvModuleEdit& m, std::uint32_t floatType, std::uint32_t x, std::vector<SpirvInstruction>& out) {
+std::uint32_t roundedUp(ParsedSpirv& m, std::uint32_t floatType, std::uint32_t x, std::vector<SpirvInstruction>& out) {
     const std::uint32_t glsl = m.glslStd450();
     auto op = [&](std::uint32_t opcode, std::vector<std::uint32_t> operands) {
         out.push_back(m.value(opcode, floatType, std::move(operands)));
@@ -63,7 +63,7 @@ std::uint32_t roundedUp(SpirvModuleEdit& m, std::uint32_t floatType, std::uint32
 
 // The rounded value of a store's `value`: a float, or an array of floats element by element; 0 for
 // any other type (left as it is).
-std::uint32_t roundedValue(SpirvModuleEdit& m, std::uint32_t value, std::vector<SpirvInstruction>& out) {
+std::uint32_t roundedValue(ParsedSpirv& m, std::uint32_t value, std::vector<SpirvInstruction>& out) {
     const std::uint32_t type = m.typeOf(value);
     const SpirvInstruction* def = m.definition(type);
     if (!def) return 0;
@@ -86,11 +86,9 @@ std::uint32_t roundedValue(SpirvModuleEdit& m, std::uint32_t value, std::vector<
 }  // namespace
 
 // Test: runtime D3D11Tessellation pow2 (hull factors 3 and 5 tessellate as 4 and 8).
-void roundTessFactorsToPowersOfTwo(std::vector<std::uint32_t>& words) {
-    SpirvModuleEdit m;
-    if (!m.parse(words)) return;
-    const std::set<std::uint32_t> pointers = tessFactorPointers(m);
-    if (pointers.empty()) return;
+bool roundTessFactorsToPowersOfTwo(ParsedSpirv& m) {
+        const std::set<std::uint32_t> pointers = tessFactorPointers(m);
+    if (pointers.empty()) return false;
     m.rewrite([&](const SpirvInstruction& inst, std::vector<SpirvInstruction>& out) {
         if (inst.opcode() != kOpStore || inst.words.size() < 3 || !pointers.count(inst.words[1])) return out.push_back(inst);
         const std::uint32_t rounded = roundedValue(m, inst.words[2], out);
@@ -98,7 +96,7 @@ void roundTessFactorsToPowersOfTwo(std::vector<std::uint32_t>& words) {
         if (rounded) store.words[2] = rounded;
         out.push_back(store);
     });
-    words = m.assemble();
+    return true;
 }
 
 }  // namespace fxport::xlate

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "fx/fx_syntax.h"
+#include "spirv/parsed_spirv.h"
 
 namespace fxport::xlate {
 
@@ -19,7 +20,8 @@ namespace fxport::xlate {
 std::vector<TextEdit> pow2PartitioningAsInteger(const EffectSyntax& syntax);
 
 // Rounds each value stored to gl_TessLevelOuter / gl_TessLevelInner (a float element or a whole
-// array) up to a power of two, 64 at most. For the legalised module of a pow2 hull shader.
-void roundTessFactorsToPowersOfTwo(std::vector<std::uint32_t>& words);
+// array) up to a power of two, 64 at most. For the legalised module of a pow2 hull shader (a pass
+// of parsed_spirv.h: true when it changed the module).
+bool roundTessFactorsToPowersOfTwo(ParsedSpirv& m);
 
 }  // namespace fxport::xlate

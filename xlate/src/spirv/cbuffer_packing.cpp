@@ -2,14 +2,13 @@
 // declare at those offsets (cbuffer_packing.h).
 #include "spirv/cbuffer_packing.h"
 
-#include <spirv-tools/libspirv.h>
-
 #include <algorithm>
 #include <map>
 #include <set>
 
 #include "entry/entry_wrapper.h"
 #include "fx/fx_syntax.h"
+#include "spirv/parsed_spirv.h"
 
 namespace fxport::xlate {
 
@@ -25,11 +24,11 @@ enum : std::uint32_t {
 };
 enum : std::uint32_t { kDecBlock = 2, kDecRowMajor = 4, kDecArrayStride = 6, kDecMatrixStride = 7, kDecOffset = 35 };
 constexpr std::uint32_t kStorageUniform = 2;
-constexpr std::size_t kHeaderWords = 5;
 
 std::uint32_t roundUp16(std::uint32_t v) { return (v + 15) / 16 * 16; }
 
-// One instruction: where it starts, and the word indices (from its start) of the ids it uses.
+// One instruction as this file reads it: its index in the module, and the word indices (from
+// its start) of the ids it uses.
 struct Inst {
     std::size_t at = 0;
     std::uint32_t op = 0;
@@ -39,14 +38,32 @@ struct Inst {
     std::vector<std::uint16_t> uses;
 };
 
+// The shared module (parsed_spirv.h), freshly parsed, with the look-ups the packing makes.
 struct Module {
-    explicit Module(const std::vector<std::uint32_t>& w) : words(w) {}
-    const std::vector<std::uint32_t>& words;
+    explicit Module(ParsedSpirv& parsed) : spirv(parsed) {
+        for (std::size_t k = 0; k < spirv.instructions.size(); ++k) {
+            const SpirvInstructionIds& ids = spirv.ids(k);
+            Inst i;
+            i.at = k;
+            i.op = spirv.instructions[k].opcode();
+            i.count = std::uint32_t(spirv.instructions[k].words.size());
+            i.type = ids.type;
+            i.result = ids.result;
+            i.uses = ids.operands;
+            if (i.result) def[i.result] = insts.size();
+            if (i.result && i.type) typeOf[i.result] = i.type;
+            insts.push_back(std::move(i));
+        }
+    }
+    ParsedSpirv& spirv;
     std::vector<Inst> insts;
     std::map<std::uint32_t, std::size_t> def;  // result id -> instruction index
     std::map<std::uint32_t, std::uint32_t> typeOf;
 
-    std::uint32_t w(const Inst& i, std::uint32_t k) const { return k < i.count ? words[i.at + k] : 0; }
+    std::uint32_t w(const Inst& i, std::uint32_t k) const { return k < i.count ? spirv.instructions[i.at].words[k] : 0; }
+    const std::vector<std::uint32_t>& words(const Inst& i) const { return spirv.instructions[i.at].words; }
+    // A word to overwrite: word k of instruction `index`.
+    std::uint32_t& word(std::pair<std::size_t, std::uint32_t> at) { return spirv.instructions[at.first].words[at.second]; }
     const Inst* defOf(std::uint32_t id) const {
         auto it = def.find(id);
         return it == def.end() ? nullptr : &insts[it->second];
@@ -61,7 +78,7 @@ struct Module {
         std::string s;
         for (std::uint32_t j = k; j < i.count; ++j)
             for (int b = 0; b < 4; ++b) {
-                char c = char((words[i.at + j] >> (8 * b)) & 0xFF);
+                char c = char((w(i, j) >> (8 * b)) & 0xFF);
                 if (!c) return s;
                 s += c;
             }
@@ -69,40 +86,15 @@ struct Module {
     }
 };
 
-bool parseModule(const std::vector<std::uint32_t>& words, Module& m) {
-    spv_context context = spvContextCreate(SPV_ENV_VULKAN_1_0);
-    auto onInstruction = [](void* user, const spv_parsed_instruction_t* p) -> spv_result_t {
-        auto* mod = static_cast<Module*>(user);
-        Inst i;
-        i.at = std::size_t(p->words - mod->words.data());
-        i.op = p->opcode;
-        i.count = p->num_words;
-        i.type = p->type_id;
-        i.result = p->result_id;
-        for (std::uint16_t k = 0; k < p->num_operands; ++k) {
-            spv_operand_type_t t = p->operands[k].type;
-            if (t == SPV_OPERAND_TYPE_ID || t == SPV_OPERAND_TYPE_MEMORY_SEMANTICS_ID || t == SPV_OPERAND_TYPE_SCOPE_ID)
-                i.uses.push_back(p->operands[k].offset);
-        }
-        if (i.result) mod->def[i.result] = mod->insts.size();
-        if (i.result && i.type) mod->typeOf[i.result] = i.type;
-        mod->insts.push_back(std::move(i));
-        return SPV_SUCCESS;
-    };
-    spv_result_t r = spvBinaryParse(context, &m, words.data(), words.size(), nullptr, onInstruction, nullptr);
-    spvContextDestroy(context);
-    return r == SPV_SUCCESS;
-}
-
 // D3D packing of the types a block reaches: member offsets and sizes, array strides.
 class Packer {
 public:
     explicit Packer(Module& m) : m_(m) {
         for (const Inst& i : m_.insts) {
             if (i.op == kOpMemberDecorate && m_.w(i, 3) == kDecRowMajor) rowMajor_.insert({m_.w(i, 1), m_.w(i, 2)});
-            if (i.op == kOpMemberDecorate && m_.w(i, 3) == kDecOffset) offsetWord_[{m_.w(i, 1), m_.w(i, 2)}] = i.at + 4;
-            if (i.op == kOpMemberDecorate && m_.w(i, 3) == kDecMatrixStride) matrixStrideWord_[{m_.w(i, 1), m_.w(i, 2)}] = i.at + 4;
-            if (i.op == kOpDecorate && m_.w(i, 2) == kDecArrayStride) arrayStrideWord_[m_.w(i, 1)] = i.at + 3;
+            if (i.op == kOpMemberDecorate && m_.w(i, 3) == kDecOffset) offsetWord_[{m_.w(i, 1), m_.w(i, 2)}] = {i.at, 4};
+            if (i.op == kOpMemberDecorate && m_.w(i, 3) == kDecMatrixStride) matrixStrideWord_[{m_.w(i, 1), m_.w(i, 2)}] = {i.at, 4};
+            if (i.op == kOpDecorate && m_.w(i, 2) == kDecArrayStride) arrayStrideWord_[m_.w(i, 1)] = {i.at, 3};
         }
     }
 
@@ -208,11 +200,11 @@ public:
     }
 
     // Writes the computed offsets and strides into the decorations of every struct packed.
-    void decorate(std::vector<std::uint32_t>& words) {
+    void decorate() {
         for (const auto& [key, offset] : memberOffsets_) {
-            if (auto it = offsetWord_.find(key); it != offsetWord_.end()) words[it->second] = offset;
-            if (auto it = matrixStrideWord_.find(key); it != matrixStrideWord_.end()) words[it->second] = 16;
-            decorateArrays(words, memberType(key.first, key.second), memberRowMajor(key.first, key.second));
+            if (auto it = offsetWord_.find(key); it != offsetWord_.end()) m_.word(it->second) = offset;
+            if (auto it = matrixStrideWord_.find(key); it != matrixStrideWord_.end()) m_.word(it->second) = 16;
+            decorateArrays(memberType(key.first, key.second), memberRowMajor(key.first, key.second));
         }
     }
 
@@ -261,17 +253,18 @@ private:
         return std140Strides(element, rowMajor);
     }
 
-    void decorateArrays(std::vector<std::uint32_t>& words, std::uint32_t id, bool rowMajor) {
+    void decorateArrays(std::uint32_t id, bool rowMajor) {
         const Inst* t = type(id);
         if (!t || t->op != kOpTypeArray) return;
-        if (auto it = arrayStrideWord_.find(id); it != arrayStrideWord_.end()) words[it->second] = arrayStride(id, rowMajor);
-        decorateArrays(words, m_.w(*t, 2), rowMajor);
+        if (auto it = arrayStrideWord_.find(id); it != arrayStrideWord_.end()) m_.word(it->second) = arrayStride(id, rowMajor);
+        decorateArrays(m_.w(*t, 2), rowMajor);
     }
 
     Module& m_;
     std::set<std::pair<std::uint32_t, std::uint32_t>> rowMajor_;
-    std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> offsetWord_, matrixStrideWord_;
-    std::map<std::uint32_t, std::size_t> arrayStrideWord_;
+    using WordAt = std::pair<std::size_t, std::uint32_t>;  // (instruction index, word)
+    std::map<std::pair<std::uint32_t, std::uint32_t>, WordAt> offsetWord_, matrixStrideWord_;
+    std::map<std::uint32_t, WordAt> arrayStrideWord_;
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> memberOffsets_;
     std::map<std::uint32_t, std::uint32_t> structSize_;
 };
@@ -373,10 +366,9 @@ std::vector<UniformMember> describeMembers(const Module& m, Packer& packer, std:
 
 }  // namespace
 
-std::vector<PackedBlock> packConstantBuffers(std::vector<std::uint32_t>& words, const EffectSyntax& syntax) {
-    Module m(words);
+std::vector<PackedBlock> packConstantBuffers(ParsedSpirv& spirv, const EffectSyntax& syntax) {
+    Module m(spirv);
     std::vector<PackedBlock> out;
-    if (!parseModule(words, m)) return out;
     Packer packer(m);
     const auto names = memberNames(m);
     for (const auto& [variable, structId] : uniformBlocks(m)) {
@@ -392,7 +384,7 @@ std::vector<PackedBlock> packConstantBuffers(std::vector<std::uint32_t>& words, 
         b.glslDeclarable = packer.glslDeclarable(structId);
         out.push_back(std::move(b));
     }
-    packer.decorate(words);
+    packer.decorate();
     return out;
 }
 
@@ -417,7 +409,9 @@ class Flattener {
 public:
     Flattener(Module& m, Packer& packer, PackedBlock& block, std::uint32_t bound) : m_(m), packer_(packer), block_(block), next_(bound) {}
 
-    bool run(std::vector<std::uint32_t>& words);
+    // Rewrites the module; false (and the module untouched) when a use of the block cannot be
+    // rebuilt from registers.
+    bool run();
 
 private:
     std::uint32_t fresh() { return next_++; }
@@ -595,7 +589,7 @@ std::uint32_t Flattener::load(const Pointer& p, std::uint32_t type, std::vector<
     return parts[1];
 }
 
-bool Flattener::run(std::vector<std::uint32_t>& words) {
+bool Flattener::run() {
     // Types: uint and uvec4 (reused where the module has them), uvec4[N], the block struct.
     for (const Inst& i : m_.insts)
         if (i.op == kOpTypeInt && m_.w(i, 2) == 32 && m_.w(i, 3) == 0 && !uint_) uint_ = i.result;
@@ -619,9 +613,9 @@ bool Flattener::run(std::vector<std::uint32_t>& words) {
 
     // Function bodies: chains into the block are followed, loads through them rebuilt.
     std::vector<std::uint32_t> functions;
-    std::size_t firstFunction = words.size();
+    std::size_t firstFunction = m_.insts.size();
     for (const Inst& i : m_.insts) {
-        if (i.op == kOpFunction && firstFunction == words.size()) firstFunction = i.at;
+        if (i.op == kOpFunction && firstFunction == m_.insts.size()) firstFunction = i.at;
         if (i.at < firstFunction) continue;
         bool chain = (i.op == kOpAccessChain || i.op == kOpInBoundsAccessChain) &&
                      (m_.w(i, 3) == block_.variable || pointers_.count(m_.w(i, 3)));
@@ -653,11 +647,11 @@ bool Flattener::run(std::vector<std::uint32_t>& words) {
             std::uint32_t id = m_.w(i, u);
             if (id == block_.variable || pointers_.count(id)) return false;  // another use of the block
         }
-        functions.insert(functions.end(), words.begin() + std::ptrdiff_t(i.at), words.begin() + std::ptrdiff_t(i.at + i.count));
+        functions.insert(functions.end(), m_.words(i).begin(), m_.words(i).end());
     }
 
     // Reassemble: names and decorations of the new struct, the variable moved after the new types.
-    std::vector<std::uint32_t> out(words.begin(), words.begin() + kHeaderWords);
+    std::vector<std::uint32_t> out;
     std::vector<std::uint32_t> names, decorations;
     auto pushString = [](std::vector<std::uint32_t>& to, const std::string& s) {
         for (std::size_t k = 0; k <= s.size(); k += 4) {
@@ -698,14 +692,17 @@ bool Flattener::run(std::vector<std::uint32_t>& words) {
             emit(variable, kOpVariable, {blockPointer, block_.variable, kStorageUniform});
             continue;
         }
-        out.insert(out.end(), words.begin() + std::ptrdiff_t(i.at), words.begin() + std::ptrdiff_t(i.at + i.count));
+        out.insert(out.end(), m_.words(i).begin(), m_.words(i).end());
     }
     if (!namesDone || !decorationsDone || variable.empty()) return false;
     out.insert(out.end(), globals_.begin(), globals_.end());
     out.insert(out.end(), variable.begin(), variable.end());
     out.insert(out.end(), functions.begin(), functions.end());
-    out[3] = next_;  // the id bound
-    words = std::move(out);
+    std::vector<SpirvInstruction> instructions;
+    for (std::size_t at = 0; at < out.size(); at += out[at] >> 16)
+        instructions.push_back({std::vector<std::uint32_t>(out.begin() + std::ptrdiff_t(at), out.begin() + std::ptrdiff_t(at + (out[at] >> 16)))});
+    m_.spirv.instructions = std::move(instructions);
+    m_.spirv.setIdBound(next_);
 
     // What the shader reads: merged byte ranges, and the members they belong to.
     std::uint32_t from = 0, to = 0;
@@ -728,20 +725,16 @@ bool Flattener::run(std::vector<std::uint32_t>& words) {
 
 }  // namespace
 
-bool flattenConstantBuffer(std::vector<std::uint32_t>& words, PackedBlock& block) {
-    Module m(words);
-    if (words.size() < kHeaderWords || !parseModule(words, m)) return false;
+bool flattenConstantBuffer(ParsedSpirv& spirv, PackedBlock& block) {
+    Module m(spirv);
     Packer packer(m);
     // The struct's D3D offsets as packConstantBuffers decorated them (explicit placements included).
     std::vector<int> placed;
     for (const UniformMember& u : block.members) placed.push_back(u.offset);
     if (placed.size() != packer.memberCount(block.type)) return false;
     packer.packStruct(block.type, &placed);
-    Flattener f(m, packer, block, words[3]);
-    std::vector<std::uint32_t> copy = words;
-    if (!f.run(copy)) return false;
-    words = std::move(copy);
-    return true;
+    Flattener f(m, packer, block, spirv.idBound());
+    return f.run();
 }
 
 }  // namespace fxport::xlate

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "glsl/spirv_to_glsl.h"
+#include "spirv/parsed_spirv.h"
 
 namespace fxport::xlate {
 
@@ -42,11 +43,12 @@ struct PackedBlock {
 
 // Re-decorates the Offset of every uniform block member (and the ArrayStride of arrays of structs
 // in one) with D3D's packing; `syntax` gives packoffset and register(cN). The fxport-internal block
-// is left as it is.
-std::vector<PackedBlock> packConstantBuffers(std::vector<std::uint32_t>& words, const EffectSyntax& syntax);
+// is left as it is. `spirv` is freshly parsed (ParsedSpirv::ids() holds).
+std::vector<PackedBlock> packConstantBuffers(ParsedSpirv& spirv, const EffectSyntax& syntax);
 
-// Declares `block` as an array of uvec4 registers and rewrites its reads; false (and `words` as
-// they were) where the module uses the block otherwise than through access chains and loads.
-bool flattenConstantBuffer(std::vector<std::uint32_t>& words, PackedBlock& block);
+// Declares `block` as an array of uvec4 registers and rewrites its reads; false (and the module
+// as it was) where the module uses the block otherwise than through access chains and loads.
+// `spirv` is freshly parsed (reparse() after the decorations above or another flattening).
+bool flattenConstantBuffer(ParsedSpirv& spirv, PackedBlock& block);
 
 }  // namespace fxport::xlate

@@ -11,27 +11,9 @@ namespace fxport::xlate {
 
 namespace {
 
-constexpr std::size_t kHeaderWords = 5;
-
-struct Instruction {
-    std::size_t at;  // index of its first word
-    spv::Op op;
-    std::uint32_t count;
-};
-
-// Every instruction of the module, in order.
-std::vector<Instruction> instructionsOf(const std::vector<std::uint32_t>& words) {
-    std::vector<Instruction> out;
-    for (std::size_t i = kHeaderWords; i < words.size();) {
-        const std::uint32_t count = words[i] >> 16;
-        if (count == 0 || i + count > words.size()) return {};  // malformed: touch nothing
-        out.push_back({i, spv::Op(words[i] & 0xFFFFu), count});
-        i += count;
-    }
-    return out;
-}
-
 std::uint32_t opWord(spv::Op op, std::uint32_t count) { return (count << 16) | std::uint32_t(op); }
+
+spv::Op opOf(const SpirvInstruction& in) { return spv::Op(in.opcode()); }
 
 // One built-in array variable to pack, and what the module says about it.
 struct DistanceArray {
@@ -47,42 +29,44 @@ struct DistanceArray {
 
 class Packer {
 public:
-    explicit Packer(std::vector<std::uint32_t>& words) : words_(words), code_(instructionsOf(words)) {
-        for (const Instruction& in : code_) {
-            const std::uint32_t* w = &words_[in.at];
-            if (in.op == spv::OpTypePointer) pointers_[w[1]] = {w[2], w[3]};
-            if (in.op == spv::OpTypeArray) arrays_[w[1]] = {w[2], w[3]};
-            if (in.op == spv::OpConstant && in.count == 4) constants_[w[2]] = {w[1], w[3]};
+    explicit Packer(ParsedSpirv& m) : m_(m) {
+        for (const SpirvInstruction& in : m_.instructions) {
+            const auto& w = in.words;
+            if (opOf(in) == spv::OpTypePointer && w.size() >= 4) pointers_[w[1]] = {w[2], w[3]};
+            if (opOf(in) == spv::OpTypeArray && w.size() >= 4) arrays_[w[1]] = {w[2], w[3]};
+            if (opOf(in) == spv::OpConstant && w.size() == 4) constants_[w[2]] = {w[1], w[3]};
         }
     }
 
-    void run() {
+    bool run() {
         std::vector<std::uint32_t> variables;
-        for (const Instruction& in : code_) {
-            const std::uint32_t* w = &words_[in.at];
-            if (in.op == spv::OpDecorate && in.count >= 4 && w[2] == spv::DecorationBuiltIn &&
+        for (const SpirvInstruction& in : m_.instructions) {
+            const auto& w = in.words;
+            if (opOf(in) == spv::OpDecorate && w.size() >= 4 && w[2] == spv::DecorationBuiltIn &&
                 (w[3] == spv::BuiltInClipDistance || w[3] == spv::BuiltInCullDistance))
                 variables.push_back(w[1]);
         }
-        for (std::uint32_t v : variables) pack(v);
+        bool changed = false;
+        for (std::uint32_t v : variables) changed |= pack(v);
+        return changed;
     }
 
 private:
-    std::vector<std::uint32_t>& words_;
-    std::vector<Instruction> code_;
+    ParsedSpirv& m_;
     std::map<std::uint32_t, std::pair<std::uint32_t, std::uint32_t>> pointers_;   // id -> storage, pointee
     std::map<std::uint32_t, std::pair<std::uint32_t, std::uint32_t>> arrays_;     // id -> element, length id
     std::map<std::uint32_t, std::pair<std::uint32_t, std::uint32_t>> constants_;  // id -> type, value
 
-    const Instruction* variableInstruction(std::uint32_t id) const {
-        for (const Instruction& in : code_)
-            if (in.op == spv::OpVariable && words_[in.at + 2] == id) return &in;
-        return nullptr;
+    // The index of the OpVariable of `id`, or instructions.size().
+    std::size_t variableInstruction(std::uint32_t id) const {
+        for (std::size_t i = 0; i < m_.instructions.size(); ++i)
+            if (opOf(m_.instructions[i]) == spv::OpVariable && m_.instructions[i].word(2) == id) return i;
+        return m_.instructions.size();
     }
 
-    bool describe(const Instruction& var, DistanceArray& d) const {
-        d.variable = words_[var.at + 2];
-        d.pointerType = words_[var.at + 1];
+    bool describe(const SpirvInstruction& var, DistanceArray& d) const {
+        d.variable = var.word(2);
+        d.pointerType = var.word(1);
         auto pointer = pointers_.find(d.pointerType);
         if (pointer == pointers_.end()) return false;
         d.storage = spv::StorageClass(pointer->second.first);
@@ -101,19 +85,20 @@ private:
         return true;
     }
 
+    static bool isChain(const SpirvInstruction& in) {
+        return opOf(in) == spv::OpAccessChain || opOf(in) == spv::OpInBoundsAccessChain;
+    }
+
     // The constant distance index of every use, or false when a use is anything else.
     bool usedIndices(const DistanceArray& d, std::set<std::uint32_t>& used) const {
-        bool inFunctions = false;
-        for (const Instruction& in : code_) {
-            if (in.op == spv::OpFunction) inFunctions = true;
-            if (!inFunctions) continue;
-            const std::uint32_t* w = &words_[in.at];
-            const bool chain = in.op == spv::OpAccessChain || in.op == spv::OpInBoundsAccessChain;
-            for (std::uint32_t k = 1; k < in.count; ++k) {
+        for (std::size_t i = m_.firstFunction(); i < m_.instructions.size(); ++i) {
+            const SpirvInstruction& in = m_.instructions[i];
+            const auto& w = in.words;
+            for (std::size_t k = 1; k < w.size(); ++k) {
                 if (w[k] != d.variable) continue;
-                if (!chain || k != 3) return false;  // a load, store or copy of the whole array
-                const std::uint32_t indexAt = 4 + std::uint32_t(d.indexOperand);
-                if (indexAt >= in.count) return false;  // reaches one vertex's whole array
+                if (!isChain(in) || k != 3) return false;  // a load, store or copy of the whole array
+                const std::size_t indexAt = 4 + d.indexOperand;
+                if (indexAt >= w.size()) return false;  // reaches one vertex's whole array
                 auto index = constants_.find(w[indexAt]);
                 if (index == constants_.end()) return false;  // a dynamic index
                 used.insert(index->second.second);
@@ -122,78 +107,66 @@ private:
         return true;
     }
 
-    std::uint32_t newId() { return words_[3]++; }
-
-    void pack(std::uint32_t variable) {
-        const Instruction* var = variableInstruction(variable);
+    bool pack(std::uint32_t variable) {
+        const std::size_t varAt = variableInstruction(variable);
         DistanceArray d;
-        if (!var || !describe(*var, d)) return;
+        if (varAt == m_.instructions.size() || !describe(m_.instructions[varAt], d)) return false;
         std::set<std::uint32_t> used;
-        if (!usedIndices(d, used) || used.empty()) return;
+        if (!usedIndices(d, used) || used.empty()) return false;
         const std::uint32_t n = std::uint32_t(used.size());
-        if (*used.rbegin() == n - 1 && d.length == n) return;  // already 0..n-1 and n long
+        if (*used.rbegin() == n - 1 && d.length == n) return false;  // already 0..n-1 and n long
         // New types: the n-element array (inside the outer one when arrayed) and a pointer to it.
-        std::vector<std::uint32_t> added;
+        std::vector<SpirvInstruction> added;
         auto emit = [&](spv::Op op, std::initializer_list<std::uint32_t> operands) {
-            added.push_back(opWord(op, std::uint32_t(operands.size() + 1)));
-            added.insert(added.end(), operands);
+            std::vector<std::uint32_t> words{opWord(op, std::uint32_t(operands.size() + 1))};
+            words.insert(words.end(), operands);
+            added.push_back({std::move(words)});
         };
-        const std::uint32_t length = newId(), inner = newId();
+        const std::uint32_t length = m_.newId(), inner = m_.newId();
         emit(spv::OpConstant, {d.lengthType, length, n});
         emit(spv::OpTypeArray, {inner, d.elementType, length});
         std::uint32_t pointee = inner;
         if (d.outerLength) {
-            pointee = newId();
+            pointee = m_.newId();
             emit(spv::OpTypeArray, {pointee, inner, d.outerLength});
         }
-        const std::uint32_t pointer = newId();
+        const std::uint32_t pointer = m_.newId();
         emit(spv::OpTypePointer, {pointer, std::uint32_t(d.storage), pointee});
         // The new index constants, each of the type the old one had.
         std::map<std::uint32_t, std::uint32_t> renumbered;  // old index constant id -> new one
         std::uint32_t rank = 0;
         std::map<std::uint32_t, std::uint32_t> rankOf;
         for (std::uint32_t u : used) rankOf[u] = rank++;
-        bool inFunctions = false;
-        for (const Instruction& in : code_) {
-            if (in.op == spv::OpFunction) inFunctions = true;
-            const bool chain = in.op == spv::OpAccessChain || in.op == spv::OpInBoundsAccessChain;
-            if (!inFunctions || !chain || words_[in.at + 3] != variable) continue;
-            std::uint32_t& index = words_[in.at + 4 + d.indexOperand];
+        for (std::size_t i = m_.firstFunction(); i < m_.instructions.size(); ++i) {
+            SpirvInstruction& in = m_.instructions[i];
+            if (!isChain(in) || in.word(3) != variable) continue;
+            std::uint32_t& index = in.words[4 + d.indexOperand];
             if (!renumbered.count(index)) {
                 const auto& [type, value] = constants_.at(index);
-                const std::uint32_t id = newId();
+                const std::uint32_t id = m_.newId();
                 emit(spv::OpConstant, {type, id, rankOf.at(value)});
                 renumbered[index] = id;
             }
             index = renumbered.at(index);
         }
         // The variable moves after the new types (globals may come in any order).
-        std::vector<std::uint32_t> variableWords(words_.begin() + std::ptrdiff_t(var->at), words_.begin() + std::ptrdiff_t(var->at + var->count));
-        variableWords[1] = pointer;
-        added.insert(added.end(), variableWords.begin(), variableWords.end());
-        std::size_t firstFunction = words_.size();
-        for (const Instruction& in : code_)
-            if (in.op == spv::OpFunction) {
-                firstFunction = in.at;
-                break;
-            }
-        words_.insert(words_.begin() + std::ptrdiff_t(firstFunction), added.begin(), added.end());
-        words_.erase(words_.begin() + std::ptrdiff_t(var->at), words_.begin() + std::ptrdiff_t(var->at + var->count));
-        // Offsets moved: read the module again for the next variable.
-        code_ = instructionsOf(words_);
+        SpirvInstruction moved = m_.instructions[varAt];
+        moved.words[1] = pointer;
+        added.push_back(std::move(moved));
+        const auto firstFunction = std::ptrdiff_t(m_.firstFunction());
+        m_.instructions.insert(m_.instructions.begin() + firstFunction, added.begin(), added.end());
+        m_.instructions.erase(m_.instructions.begin() + std::ptrdiff_t(varAt));
         pointers_[pointer] = {std::uint32_t(d.storage), pointee};
         arrays_[inner] = {d.elementType, length};
         if (d.outerLength) arrays_[pointee] = {inner, d.outerLength};
         constants_[length] = {d.lengthType, n};
         for (const auto& [old, fresh] : renumbered) constants_[fresh] = {constants_.at(old).first, rankOf.at(constants_.at(old).second)};
+        return true;
     }
 };
 
 }  // namespace
 
-void packClipCullDistances(std::vector<std::uint32_t>& words) {
-    if (words.size() <= kHeaderWords) return;
-    Packer(words).run();
-}
+bool packClipCullDistances(ParsedSpirv& m) { return Packer(m).run(); }
 
 }  // namespace fxport::xlate

@@ -8,12 +8,12 @@
 // copies them whole keeps glslang's layout.
 #pragma once
 
-#include <cstdint>
-#include <vector>
+#include "spirv/parsed_spirv.h"
 
 namespace fxport::xlate {
 
-// Packs the ClipDistance and CullDistance built-ins of `words` (a legalised module) in place.
-void packClipCullDistances(std::vector<std::uint32_t>& words);
+// Packs the ClipDistance and CullDistance built-ins of `m` (a legalised module): a pass of
+// parsed_spirv.h, true when it changed the module.
+bool packClipCullDistances(ParsedSpirv& m);
 
 }  // namespace fxport::xlate

@@ -1,7 +1,7 @@
 // See fetch_offsets.h: a variable texel offset of OpImageFetch added to the coordinate.
 #include "spirv/fetch_offsets.h"
 
-#include "spirv/spirv_module_edit.h"
+#include "spirv/parsed_spirv.h"
 
 namespace fxport::xlate {
 
@@ -19,9 +19,7 @@ size_t operandsBeforeOffset(std::uint32_t mask) {
 
 }  // namespace
 
-bool fetchOffsetsIntoCoordinates(std::vector<std::uint32_t>& words) {
-    SpirvModuleEdit m;
-    if (!m.parse(words)) return false;
+bool fetchOffsetsIntoCoordinates(ParsedSpirv& m) {
     bool changed = false;
     m.rewrite([&](const SpirvInstruction& inst, std::vector<SpirvInstruction>& out) {
         // OpImageFetch type id image coordinate mask operands...
@@ -60,7 +58,6 @@ bool fetchOffsetsIntoCoordinates(std::vector<std::uint32_t>& words) {
         out.push_back({std::move(fetch)});
         changed = true;
     });
-    if (changed) words = m.assemble();
     return changed;
 }
 

@@ -5,12 +5,11 @@
 // instead (the array layer, when there is one, unmoved); out-of-range texels read 0 both ways.
 #pragma once
 
-#include <cstdint>
-#include <vector>
+#include "spirv/parsed_spirv.h"
 
 namespace fxport::xlate {
 
-// Rewrites the module; false (unchanged) when no fetch has a variable offset.
-bool fetchOffsetsIntoCoordinates(std::vector<std::uint32_t>& words);
+// A pass of parsed_spirv.h; false (unchanged) when no fetch has a variable offset.
+bool fetchOffsetsIntoCoordinates(ParsedSpirv& m);
 
 }  // namespace fxport::xlate

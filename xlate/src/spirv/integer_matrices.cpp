@@ -3,7 +3,7 @@
 
 #include <map>
 
-#include "spirv/spirv_module_edit.h"
+#include "spirv/parsed_spirv.h"
 
 namespace fxport::xlate {
 
@@ -29,7 +29,7 @@ struct Shape {
 
 class IntegerMatrices {
 public:
-    explicit IntegerMatrices(SpirvModuleEdit& m) : m_(m) {
+    explicit IntegerMatrices(ParsedSpirv& m) : m_(m) {
         for (const auto& inst : m_.instructions) {
             if (inst.opcode() != kTypeMatrix || inst.words.size() != 4) continue;
             Shape s{inst.words[2], inst.words[3]};
@@ -148,21 +148,18 @@ private:
         return changed_.count(type) > 0;
     }
 
-    SpirvModuleEdit& m_;
+    ParsedSpirv& m_;
     std::map<std::uint32_t, Shape> matrices_;  // every matrix type
     std::map<std::uint32_t, Shape> changed_;   // those of int or bool columns
 };
 
 }  // namespace
 
-bool integerMatricesAsArrays(std::vector<std::uint32_t>& words) {
-    SpirvModuleEdit m;
-    if (!m.parse(words)) return false;
+bool integerMatricesAsArrays(ParsedSpirv& m) {
     IntegerMatrices pass(m);
     if (!pass.any()) return false;
     pass.rewriteOperations();
     pass.rewriteTypes();
-    words = m.assemble();
     return true;
 }
 

@@ -9,12 +9,11 @@
 // no array stands in a GLSL uniform block where D3D's column_major layout would differ.
 #pragma once
 
-#include <cstdint>
-#include <vector>
+#include "spirv/parsed_spirv.h"
 
 namespace fxport::xlate {
 
-// Rewrites the module; false (module unchanged) when it has no such matrix or cannot be parsed.
-bool integerMatricesAsArrays(std::vector<std::uint32_t>& words);
+// A pass of parsed_spirv.h; false (module unchanged) when it has no such matrix.
+bool integerMatricesAsArrays(ParsedSpirv& m);
 
 }  // namespace fxport::xlate

@@ -1,15 +1,13 @@
 #include "spirv/spirv_fixups.h"
 
 #include "spirv/spirv_integer_fixups.h"
+#include "spirv/parsed_spirv.h"
 #include "spirv/spirv_negated_comparisons.h"
 
-#include <spirv-tools/libspirv.h>
 #include <spirv-tools/optimizer.hpp>
 
 #include <functional>
-#include <map>
 #include <set>
-
 #include <string>
 
 namespace fxport::xlate {
@@ -17,10 +15,6 @@ namespace fxport::xlate {
 namespace {
 
 constexpr std::uint32_t kHeaderWords = 5;
-constexpr std::uint32_t kOpTypeBool = 20;
-constexpr std::uint32_t kOpCopyObject = 83;
-constexpr std::uint32_t kOpAny = 154;
-constexpr std::uint32_t kOpAll = 155;
 constexpr std::uint32_t kOpUDiv = 134;
 constexpr std::uint32_t kOpSDiv = 135;
 constexpr std::uint32_t kOpFDiv = 136;
@@ -35,62 +29,36 @@ constexpr std::uint32_t kOpFMod = 141;
 // mod(): 42 % -5 == -3). OpFRem / OpSRem are the truncating ones, with the same operands. HLSL has
 // no floored remainder, so every OpFMod / OpSMod glslang emits is one of these.
 // Test: conformance arithmetic-float / arithmetic-int, xlate.SpirvFixups.RemainderTruncates.
-void remainderTruncates(std::vector<std::uint32_t>& words) {
-    for (size_t at = kHeaderWords; at < words.size();) {
-        std::uint32_t count = words[at] >> 16;
-        if (count == 0) return;  // malformed: leave it to the validator downstream
-        std::uint32_t op = words[at] & 0xFFFFu;
-        if (op == kOpFMod) words[at] = (count << 16) | kOpFRem;
-        if (op == kOpSMod) words[at] = (count << 16) | kOpSRem;
-        at += count;
+bool remainderTruncates(ParsedSpirv& m) {
+    bool changed = false;
+    for (SpirvInstruction& inst : m.instructions) {
+        const std::uint32_t count = std::uint32_t(inst.words.size());
+        if (inst.opcode() == spv_op::FMod) inst.words[0] = spirvFirstWord(spv_op::FRem, count);
+        else if (inst.opcode() == spv_op::SMod) inst.words[0] = spirvFirstWord(spv_op::SRem, count);
+        else continue;
+        changed = true;
     }
-}
-
-// The result type of every value and the instructions by offset, from SPIRV-Tools' parser (which
-// knows which opcodes have a result type), for fix-ups that depend on an operand's type.
-struct ModuleTypes {
-    std::map<std::uint32_t, std::uint32_t> typeOf;  // result id -> type id
-    std::set<std::uint32_t> boolTypes;              // ids of OpTypeBool
-    std::vector<size_t> anyAll;                     // offsets of OpAny / OpAll
-};
-
-bool readTypes(const std::vector<std::uint32_t>& words, ModuleTypes& out) {
-    spv_context context = spvContextCreate(SPV_ENV_VULKAN_1_0);
-    struct Ctx {
-        ModuleTypes* types;
-        const std::uint32_t* base;
-    } ctx{&out, words.data()};
-    auto onInstruction = [](void* user, const spv_parsed_instruction_t* inst) -> spv_result_t {
-        auto* c = static_cast<Ctx*>(user);
-        if (inst->result_id && inst->type_id) c->types->typeOf[inst->result_id] = inst->type_id;
-        if (inst->opcode == kOpTypeBool) c->types->boolTypes.insert(inst->result_id);
-        if (inst->opcode == kOpAny || inst->opcode == kOpAll) c->types->anyAll.push_back(size_t(inst->words - c->base));
-        return SPV_SUCCESS;
-    };
-    spv_result_t r = spvBinaryParse(context, &ctx, words.data(), words.size(), nullptr, onInstruction, nullptr);
-    spvContextDestroy(context);
-    return r == SPV_SUCCESS;
+    return changed;
 }
 
 // HLSL's any()/all() take scalars too (any(x) is x != 0); glslang emits OpAny/OpAll on the scalar
 // bool, which SPIR-V allows only on vectors, and SPIRV-Cross writes `any(bool)`, which the GL
 // driver refuses at the first Apply(). Of a scalar, both are the scalar itself.
 // Test: runtime HlslSemantics.BoolCastsAndAny.
-void anyAllOfScalarIsTheScalar(std::vector<std::uint32_t>& words, const ModuleTypes& types) {
-    for (size_t at : types.anyAll) {
-        if (at + 3 >= words.size() || (words[at] >> 16) != 4) continue;
-        auto operandType = types.typeOf.find(words[at + 3]);
-        if (operandType != types.typeOf.end() && types.boolTypes.count(operandType->second))
-            words[at] = (4u << 16) | kOpCopyObject;
+bool anyAllOfScalarIsTheScalar(ParsedSpirv& m) {
+    bool changed = false;
+    for (SpirvInstruction& inst : m.instructions) {
+        if ((inst.opcode() != spv_op::Any && inst.opcode() != spv_op::All) || inst.words.size() != 4) continue;
+        const SpirvInstruction* operandType = m.definition(m.typeOf(inst.words[3]));
+        if (!operandType || operandType->opcode() != spv_op::TypeBool) continue;
+        inst.words[0] = spirvFirstWord(spv_op::CopyObject, 4);
+        changed = true;
     }
+    return changed;
 }
 
-}  // namespace
-
-namespace {
-
-// Whether an instruction with one of `opcodes` occurs: a linear scan, so that the fix-ups and
-// checks that parse or optimise the module cost nothing on shaders that cannot need them.
+// Whether an instruction with one of `opcodes` occurs: a linear scan, so that the checks that
+// optimise the module cost nothing on shaders that cannot need them.
 bool hasOpcode(const std::vector<std::uint32_t>& words, std::initializer_list<std::uint32_t> opcodes) {
     for (size_t at = kHeaderWords; at < words.size();) {
         std::uint32_t count = words[at] >> 16;
@@ -104,14 +72,9 @@ bool hasOpcode(const std::vector<std::uint32_t>& words, std::initializer_list<st
 
 }  // namespace
 
-void applySpirvFixups(std::vector<std::uint32_t>& words) {
-    if (words.size() < kHeaderWords) return;
-    remainderTruncates(words);
-    ModuleTypes types;
-    if (hasOpcode(words, {kOpAny, kOpAll}) && readTypes(words, types)) anyAllOfScalarIsTheScalar(words, types);
-    maskShiftCounts(words);
-    floatToUnsignedSaturates(words);
-    if (hasOpcode(words, {168})) negatedComparisonsAsOpposites(words);  // OpLogicalNot
+bool applySpirvFixups(ParsedSpirv& m) {
+    return runSpirvPasses(m, {remainderTruncates, anyAllOfScalarIsTheScalar, maskShiftCounts, floatToUnsignedSaturates,
+                           negatedComparisonsAsOpposites});
 }
 
 namespace {
@@ -207,7 +170,7 @@ bool legalizeSpirv(std::vector<std::uint32_t>& words, std::string* error) {
             .RegisterPass(spvtools::CreateLocalSingleStoreElimPass());
     });
     if (!ok) return false;
-    foldIntMinByMinusOne(words);
+    runSpirvPasses(words, {foldIntMinByMinusOne});
     ok = runPasses(words, error, [](spvtools::Optimizer& o) {
         o.RegisterPass(spvtools::CreateSimplificationPass())
             .RegisterPass(spvtools::CreateAggressiveDCEPass())
@@ -220,7 +183,7 @@ bool legalizeSpirv(std::vector<std::uint32_t>& words, std::string* error) {
             .RegisterPass(spvtools::CreateIfConversionPass());
     });
     if (!ok) return false;
-    foldIntMinByMinusOne(words);
+    runSpirvPasses(words, {foldIntMinByMinusOne});
     return runPasses(words, error, [](spvtools::Optimizer& o) {
         o.RegisterPass(spvtools::CreateSimplificationPass())
             .RegisterPass(spvtools::CreateAggressiveDCEPass())

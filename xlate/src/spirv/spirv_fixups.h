@@ -8,10 +8,12 @@
 #include <string>
 #include <vector>
 
+#include "spirv/parsed_spirv.h"
+
 namespace fxport::xlate {
 
-// Applies every fix-up to `words` (an unoptimised glslang module) in place.
-void applySpirvFixups(std::vector<std::uint32_t>& words);
+// Applies every fix-up to `m` (an unoptimised glslang module); true when one changed it.
+bool applySpirvFixups(ParsedSpirv& m);
 
 // fxc folds constants and refuses a division whose divisor folds to zero: integer `/` and `%` at
 // every shader model, float `/` and `%` at SM2-3 (SM4+ computes inf/NaN). Locals are forwarded

@@ -4,26 +4,14 @@
 #include <climits>
 #include <optional>
 
-#include "spirv/spirv_module_edit.h"
 
 namespace fxport::xlate {
 
 namespace {
 
-bool hasOpcode(const std::vector<std::uint32_t>& words, std::initializer_list<std::uint32_t> opcodes) {
-    for (size_t at = 5; at < words.size();) {
-        std::uint32_t count = words[at] >> 16;
-        if (count == 0) return false;
-        for (std::uint32_t op : opcodes)
-            if ((words[at] & 0xFFFFu) == op) return true;
-        at += count;
-    }
-    return false;
-}
-
 // The 32-bit components of a constant scalar or vector (OpConstant, OpConstantComposite of them,
 // OpConstantNull); nothing when `id` is not such a constant.
-std::optional<std::vector<std::uint32_t>> constantComponents(const SpirvModuleEdit& m, std::uint32_t id) {
+std::optional<std::vector<std::uint32_t>> constantComponents(const ParsedSpirv& m, std::uint32_t id) {
     const SpirvInstruction* d = m.definition(id);
     if (!d) return std::nullopt;
     if (d->opcode() == spv_op::Constant && d->words.size() == 4) return std::vector<std::uint32_t>{d->words[3]};
@@ -45,10 +33,8 @@ bool isShift(std::uint32_t op) {
 }  // namespace
 
 // Test: runtime HlslIntegerOps.ShiftCountsUseTheirLowFiveBits, conformance bitwise.
-void maskShiftCounts(std::vector<std::uint32_t>& words) {
-    if (!hasOpcode(words, {spv_op::ShiftLeftLogical, spv_op::ShiftRightLogical, spv_op::ShiftRightArithmetic})) return;
-    SpirvModuleEdit m;
-    if (!m.parse(words)) return;
+bool maskShiftCounts(ParsedSpirv& m) {
+    if (!m.has({spv_op::ShiftLeftLogical, spv_op::ShiftRightLogical, spv_op::ShiftRightArithmetic})) return false;
     m.rewrite([&](const SpirvInstruction& inst, std::vector<SpirvInstruction>& out) {
         if (!isShift(inst.opcode()) || inst.words.size() != 5) return out.push_back(inst);
         const std::uint32_t count = inst.words[4];
@@ -65,14 +51,12 @@ void maskShiftCounts(std::vector<std::uint32_t>& words) {
         out.push_back(mask);
         out.push_back(shift);
     });
-    words = m.assemble();
+    return true;
 }
 
 // Test: runtime HlslIntegerOps.NegativeFloatToUintIsZero, conformance cast-to-uint.
-void floatToUnsignedSaturates(std::vector<std::uint32_t>& words) {
-    if (!hasOpcode(words, {spv_op::ConvertFToU})) return;
-    SpirvModuleEdit m;
-    if (!m.parse(words)) return;
+bool floatToUnsignedSaturates(ParsedSpirv& m) {
+    if (!m.has({spv_op::ConvertFToU})) return false;
     m.rewrite([&](const SpirvInstruction& inst, std::vector<SpirvInstruction>& out) {
         if (inst.opcode() != spv_op::ConvertFToU || inst.words.size() != 4) return out.push_back(inst);
         const std::uint32_t x = inst.words[3], type = m.typeOf(x);
@@ -83,14 +67,12 @@ void floatToUnsignedSaturates(std::vector<std::uint32_t>& words) {
         out.push_back(clamped);
         out.push_back(convert);
     });
-    words = m.assemble();
+    return true;
 }
 
 // Test: runtime HlslIntegerOps.IntMinByMinusOneFolds, conformance arithmetic-int.
-void foldIntMinByMinusOne(std::vector<std::uint32_t>& words) {
-    if (!hasOpcode(words, {spv_op::SDiv, spv_op::SRem})) return;
-    SpirvModuleEdit m;
-    if (!m.parse(words)) return;
+bool foldIntMinByMinusOne(ParsedSpirv& m) {
+    if (!m.has({spv_op::SDiv, spv_op::SRem})) return false;
     bool changed = false;
     m.rewrite([&](const SpirvInstruction& inst, std::vector<SpirvInstruction>& out) {
         const std::uint32_t op = inst.opcode();
@@ -126,14 +108,12 @@ void foldIntMinByMinusOne(std::vector<std::uint32_t>& words) {
         out.push_back(copy);
         changed = true;
     });
-    if (changed) words = m.assemble();
+    return changed;
 }
 
 // Test: runtime HlslSm3Integers.DivisionRoundsOperandsToFloat, conformance arithmetic-int-uniform.
-void integerDivisionInFloats(std::vector<std::uint32_t>& words) {
-    if (!hasOpcode(words, {spv_op::SDiv, spv_op::UDiv, spv_op::SRem, spv_op::UMod})) return;
-    SpirvModuleEdit m;
-    if (!m.parse(words)) return;
+bool integerDivisionInFloats(ParsedSpirv& m) {
+    if (!m.has({spv_op::SDiv, spv_op::UDiv, spv_op::SRem, spv_op::UMod})) return false;
     m.rewrite([&](const SpirvInstruction& inst, std::vector<SpirvInstruction>& out) {
         const std::uint32_t op = inst.opcode();
         const bool isSigned = op == spv_op::SDiv || op == spv_op::SRem, isDivision = op == spv_op::SDiv || op == spv_op::UDiv;
@@ -147,14 +127,12 @@ void integerDivisionInFloats(std::vector<std::uint32_t>& words) {
         back.words = {(4u << 16) | (isSigned ? spv_op::ConvertFToS : spv_op::ConvertFToU), type, inst.words[2], q.words[2]};
         out.insert(out.end(), {a, b, q, back});
     });
-    words = m.assemble();
+    return true;
 }
 
-void integerNegationInFloats(std::vector<std::uint32_t>& words) {
+bool integerNegationInFloats(ParsedSpirv& m) {
     constexpr std::uint32_t kOpSNegate = 126, kOpFNegate = 127;
-    if (!hasOpcode(words, {kOpSNegate})) return;
-    SpirvModuleEdit m;
-    if (!m.parse(words)) return;
+    if (!m.has({kOpSNegate})) return false;
     m.rewrite([&](const SpirvInstruction& inst, std::vector<SpirvInstruction>& out) {
         if (inst.opcode() != kOpSNegate || inst.words.size() != 4) return out.push_back(inst);
         const std::uint32_t type = inst.words[1], floatType = m.floatTypeLike(type);
@@ -164,7 +142,7 @@ void integerNegationInFloats(std::vector<std::uint32_t>& words) {
         back.words = {(4u << 16) | spv_op::ConvertFToS, type, inst.words[2], n.words[2]};
         out.insert(out.end(), {a, n, back});
     });
-    words = m.assemble();
+    return true;
 }
 
 }  // namespace fxport::xlate

@@ -6,11 +6,11 @@
 // Equality (`==`, `!=`) keeps its meaning either way and is left alone.
 #pragma once
 
-#include <cstdint>
-#include <vector>
+#include "spirv/parsed_spirv.h"
 
 namespace fxport::xlate {
 
-void negatedComparisonsAsOpposites(std::vector<std::uint32_t>& words);
+// A pass of parsed_spirv.h: true when it changed the module.
+bool negatedComparisonsAsOpposites(ParsedSpirv& m);
 
 }  // namespace fxport::xlate

@@ -1,7 +1,7 @@
 // Structured buffers repacked to D3D's tight layout (structured_buffer_layout.h).
 #include "spirv/structured_buffer_layout.h"
 
-#include "spirv/spirv_module_edit.h"
+#include "spirv/parsed_spirv.h"
 
 #include <map>
 #include <optional>
@@ -38,7 +38,7 @@ struct Buffer {
 
 class Repacker {
 public:
-    explicit Repacker(SpirvModuleEdit& m) : m_(m) { scan(); }
+    explicit Repacker(ParsedSpirv& m) : m_(m) { scan(); }
 
     bool run() {
         findBuffers();
@@ -99,7 +99,7 @@ public:
     }
 
 private:
-    SpirvModuleEdit& m_;
+    ParsedSpirv& m_;
     std::map<std::uint32_t, std::vector<std::uint32_t>> types_;
     std::map<std::uint32_t, std::uint32_t> constants_;
     std::map<std::uint32_t, std::vector<std::vector<std::uint32_t>>> decorations_;
@@ -514,18 +514,14 @@ private:
 
 }  // namespace
 
-void structuredBufferStridesAsD3D(std::vector<std::uint32_t>& words) {
-    SpirvModuleEdit m;
-    if (!m.parse(words)) return;
+bool structuredBufferStridesAsD3D(ParsedSpirv& m) {
     Repacker repacker(m);
-    if (repacker.strides()) words = m.assemble();
+    return repacker.strides();
 }
 
-void packStructuredBuffersTightly(std::vector<std::uint32_t>& words) {
-    SpirvModuleEdit m;
-    if (!m.parse(words)) return;
+bool packStructuredBuffersTightly(ParsedSpirv& m) {
     Repacker repacker(m);
-    if (repacker.run()) words = m.assemble();
+    return repacker.run();
 }
 
 }  // namespace fxport::xlate

@@ -10,16 +10,16 @@
 // buffer used in a way the pass does not know (an atomic on an int member, a pointer copied).
 #pragma once
 
-#include <cstdint>
-#include <vector>
+#include "spirv/parsed_spirv.h"
 
 namespace fxport::xlate {
 
 // The stride GetDimensions reports for such a buffer: glslang stores its std430 stride as a
 // constant; D3D's replaces it. Run on the unoptimised module, before forwarding hides the store.
-void structuredBufferStridesAsD3D(std::vector<std::uint32_t>& words);
+// Passes of parsed_spirv.h: true when they changed the module.
+bool structuredBufferStridesAsD3D(ParsedSpirv& m);
 
-// Repacks the structured buffers of `words` (a legalised module) in place.
-void packStructuredBuffersTightly(std::vector<std::uint32_t>& words);
+// Repacks the structured buffers of `m` (a legalised module).
+bool packStructuredBuffersTightly(ParsedSpirv& m);
 
 }  // namespace fxport::xlate
