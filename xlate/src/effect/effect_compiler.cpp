@@ -622,11 +622,12 @@ int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile
     request.entryPoint = entryName;
     request.dx9Compatible = dx9Compatible;
     request.shaderModel = profile.major;
-    if (expected == ShaderStage::Hull && entryFunction) {
-        Tessellation attributes;
-        checkStageAttributes(syntax_, *entryFunction, profile, attributes);
-        request.hullPartitioning = attributes.partitioning;
-    }
+    // A hull or domain shader's attributes, read once: the front end needs the partitioning, the
+    // compiled shader all of them (their errors were reported before the shader was reached).
+    Tessellation stageAttributes;
+    const bool tessellationStage = (expected == ShaderStage::Hull || expected == ShaderStage::Domain) && entryFunction;
+    if (tessellationStage) checkStageAttributes(syntax_, *entryFunction, profile, stageAttributes);
+    if (expected == ShaderStage::Hull) request.hullPartitioning = stageAttributes.partitioning;
     SpirvModule spirv = frontEnd(request);
     // A vector passed to a scalar parameter of the effect's own function: fxc uses .x (warning
     // X3206), glslang finds no overload. Compile again with overloads that take vectors there
@@ -713,8 +714,7 @@ int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile
             return -1;
         }
     }
-    if ((expected == ShaderStage::Hull || expected == ShaderStage::Domain) && entryFunction)
-        checkStageAttributes(syntax_, *entryFunction, profile, shader.tessellation);
+    if (tessellationStage) shader.tessellation = stageAttributes;
     if (options_.keepRewrittenHlsl) shader.hlslAfterRewrite = current;
     for (const auto& name : glsl.membersRead) {
         int p = parameterIndex(name);
