@@ -2,7 +2,9 @@
 // and the errors that name the asset and every path tried. Files are written to a temp folder.
 #include <filesystem>
 #include <fstream>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -59,6 +61,33 @@ TEST_F(ContentManagerTest, LoadsATextureByNameWithoutExtensionAndCachesIt) {
     Texture2D* again = content.Load<Texture2D>("Textures/Pair");
     ASSERT_NE(again, nullptr);
     EXPECT_EQ(content.loadLog().size(), 1u);  // loaded from the file again
+}
+
+// A cube map from a .dds (1x1 A8R8G8B8 faces, each its own colour): every face as stored, cached by name.
+TEST_F(ContentManagerTest, LoadsATextureCubeFromADds) {
+    std::vector<unsigned char> dds(128, 0);
+    auto put = [&](std::size_t at, std::uint32_t v) {
+        for (int k = 0; k < 4; ++k) dds[at + std::size_t(k)] = static_cast<unsigned char>(v >> (8 * k));
+    };
+    dds[0] = 'D', dds[1] = 'D', dds[2] = 'S', dds[3] = ' ';
+    put(4, 124), put(8, 0x1007), put(12, 1), put(16, 1), put(76, 32), put(80, 0x41), put(88, 32);
+    put(92, 0xFF0000), put(96, 0xFF00), put(100, 0xFF), put(104, 0xFF000000u), put(108, 0x1008), put(112, 0xFE00);
+    const Color faces[6] = {Color(10, 20, 30, 255), Color(40, 50, 60, 255), Color(70, 80, 90, 255),
+                            Color(100, 110, 120, 255), Color(130, 140, 150, 255), Color(160, 170, 180, 128)};
+    for (const Color& c : faces)
+        for (unsigned char byte : {c.B, c.G, c.R, c.A}) dds.push_back(byte);
+    std::ofstream(root / "Textures" / "Sky.dds", std::ios::binary).write(reinterpret_cast<const char*>(dds.data()), std::streamsize(dds.size()));
+    ContentManager content(device(), root.string());
+    TextureCube* cube = content.Load<TextureCube>("Textures/Sky");
+    ASSERT_NE(cube, nullptr);
+    EXPECT_EQ(cube->Size(), 1);
+    for (int face = 0; face < 6; ++face) {
+        Color texel;
+        cube->GetData(CubeMapFace(face), &texel, 1);
+        EXPECT_EQ(texel, faces[face]) << "face " << face;
+    }
+    EXPECT_EQ(content.Load<TextureCube>("Textures/Sky"), cube);
+    EXPECT_EQ(content.loadLog().back().type, "TextureCube");
 }
 
 // XNA content comes from Windows: backslash folders and names in any case resolve to the one file

@@ -3,6 +3,8 @@
 // as stored, uncompressed files through their channel masks, and bad files refused by name.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -170,6 +172,70 @@ TEST_F(DdsTexture, BadFilesAreRefusedNamingTheFile) {
     put32(volume, 112, 0x200000);
     expectRefused(write("volume.dds", volume), "volume texture");
     expectRefused(write("atc.dds", header(4, 4, 1, "ATC ")), "compression 'ATC ' is not one fxport reads");
+}
+
+
+// BC1 as D3D defines it, written again here (not dds_image.cpp's): 5:6:5 endpoints widened by bit
+// replication; c0 > c1 gives c2 = (2 c0 + c1) / 3, c3 = (c0 + 2 c1) / 3; otherwise c2 = (c0 + c1) / 2
+// and c3 transparent black. Texel i of the block (row-major) takes index bits 2i..2i+1.
+std::vector<Color> cpuBc1(const std::uint8_t* block) {
+    const unsigned c0 = unsigned(block[0] | block[1] << 8), c1 = unsigned(block[2] | block[3] << 8);
+    auto widen = [](unsigned c) {
+        const unsigned r = c >> 11, g = (c >> 5) & 63, b = c & 31;
+        return std::array<int, 3>{int(r << 3 | r >> 2), int(g << 2 | g >> 4), int(b << 3 | b >> 2)};
+    };
+    const auto a = widen(c0), b = widen(c1);
+    Color palette[4] = {Color(a[0], a[1], a[2], 255), Color(b[0], b[1], b[2], 255), {}, {}};
+    if (c0 > c1) {
+        palette[2] = Color((2 * a[0] + b[0] + 1) / 3, (2 * a[1] + b[1] + 1) / 3, (2 * a[2] + b[2] + 1) / 3, 255);
+        palette[3] = Color((a[0] + 2 * b[0] + 1) / 3, (a[1] + 2 * b[1] + 1) / 3, (a[2] + 2 * b[2] + 1) / 3, 255);
+    } else {
+        palette[2] = Color((a[0] + b[0] + 1) / 2, (a[1] + b[1] + 1) / 2, (a[2] + b[2] + 1) / 2, 255);
+        palette[3] = Color(0, 0, 0, 0);
+    }
+    const std::uint32_t bits = std::uint32_t(block[4] | block[5] << 8 | block[6] << 16) | std::uint32_t(block[7]) << 24;
+    std::vector<Color> out;
+    for (int i = 0; i < 16; ++i) out.push_back(palette[(bits >> (2 * i)) & 3]);
+    return out;
+}
+
+// A 4x4 DXT1 cube map with two levels per face (4x4, then 2x2 stored as one block): every face a
+// different block, faces 1, 3 and 5 in the three-colour mode (with transparent texels). Each face's
+// level 0 must be its block decoded; level 1 the block's top-left 2x2.
+TEST_F(DdsTexture, Dxt1CubeMapLoadsEveryFaceAndLevel) {
+    std::vector<std::uint8_t> file = header(4, 4, 2, "DXT1");
+    put32(file, 108, 0x401008);  // complex, mipmaps, texture
+    put32(file, 112, 0xFE00);    // cube map, all six faces
+    std::vector<std::array<std::uint8_t, 8>> blocks;
+    for (int face = 0; face < 6; ++face) {
+        for (int level = 0; level < 2; ++level) {
+            const std::uint16_t hi = std::uint16_t(0x1234 * (face + 1) + 0x0841 * level), lo = std::uint16_t(0x8421 >> face);
+            const std::uint16_t c0 = face % 2 ? std::min(hi, lo) : std::max(hi, lo), c1 = face % 2 ? std::max(hi, lo) : std::min(hi, lo);
+            const std::uint32_t bits = 0x1B1B6CE4u * std::uint32_t(face * 2 + level + 3);
+            blocks.push_back({std::uint8_t(c0), std::uint8_t(c0 >> 8), std::uint8_t(c1), std::uint8_t(c1 >> 8), std::uint8_t(bits),
+                              std::uint8_t(bits >> 8), std::uint8_t(bits >> 16), std::uint8_t(bits >> 24)});
+            file.insert(file.end(), blocks.back().begin(), blocks.back().end());
+        }
+    }
+    const auto cube = TextureCube::FromFile(device(), write("sky.dds", file));
+    EXPECT_EQ(cube->Size(), 4);
+    ASSERT_EQ(cube->LevelCount(), 3);  // the stored two, and 1x1 made from level 1
+    int transparent = 0;
+    for (int face = 0; face < 6; ++face) {
+        const std::vector<Color> level0 = cpuBc1(blocks[std::size_t(face * 2)].data());
+        const std::vector<Color> level1 = cpuBc1(blocks[std::size_t(face * 2 + 1)].data());
+        std::vector<Color> got(16);
+        cube->GetData(CubeMapFace(face), 0, got.data(), got.size());
+        EXPECT_EQ(got, level0) << "face " << face << " level 0";
+        for (const Color& c : level0) transparent += c.A == 0;
+        got.resize(4);
+        cube->GetData(CubeMapFace(face), 1, got.data(), got.size());
+        EXPECT_EQ(got, (std::vector<Color>{level1[0], level1[1], level1[4], level1[5]})) << "face " << face << " level 1";
+    }
+    EXPECT_GT(transparent, 0) << "no face used BC1's transparent black";
+    std::vector<std::uint8_t> flat = header(4, 4, 1, "DXT1");
+    flat.resize(flat.size() + 8, 0);
+    EXPECT_THROW(TextureCube::FromFile(device(), write("flat.dds", flat)), ArgumentError);
 }
 
 }  // namespace

@@ -96,6 +96,7 @@ void ContentManager::Unload() {
     models_.clear();
     fonts_.clear();
     textures_.clear();
+    cubes_.clear();
     effects_.clear();
     loadLog_.clear();
 }
@@ -199,6 +200,18 @@ template <> Texture2D* ContentManager::Load<Texture2D>(const std::string& assetN
     texture->Name = assetName;
     loadLog_.push_back({assetName, "Texture2D", file, timer.milliseconds()});
     return textures_.emplace(portableName(assetName), std::move(texture)).first->second.get();
+}
+
+// Cube maps come from .dds files as authored (XNA's TextureProcessor makes them only from .dds too).
+template <> TextureCube* ContentManager::Load<TextureCube>(const std::string& assetName) {
+    if (auto it = cubes_.find(portableName(assetName)); it != cubes_.end()) return it->second.get();
+    const std::string file = locate(assetName, "TextureCube", candidates(RootDirectory, assetName, {".dds"}));
+    GraphicsDevice& graphicsDevice = device(assetName, "TextureCube");
+    LoadTimer timer;
+    auto cube = loadNamed("TextureCube", assetName, [&] { return TextureCube::FromFile(graphicsDevice, file); });
+    cube->Name = assetName;
+    loadLog_.push_back({assetName, "TextureCube", file, timer.milliseconds()});
+    return cubes_.emplace(portableName(assetName), std::move(cube)).first->second.get();
 }
 
 void ContentManager::SetTextureProcessor(const std::string& assetName, const TextureProcessor& processor) {

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "fxport/graphics/alpha_test_effect.h"
+#include "fxport/graphics/animation_player.h"
 #include "fxport/graphics/basic_effect.h"
 #include "fxport/graphics/blend_state.h"
 #include "fxport/graphics/depth_stencil_state.h"
@@ -26,6 +27,7 @@
 #include "fxport/graphics/render_target.h"
 #include "fxport/graphics/sampler_state.h"
 #include "fxport/graphics/skinned_effect.h"
+#include "fxport/graphics/skinning_data.h"
 #include "fxport/graphics/sprite_batch.h"
 #include "fxport/graphics/sprite_font.h"
 #include "fxport/graphics/structured_buffer.h"

@@ -16,6 +16,7 @@
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/texture_processor.h"
 #include "device/image_io.h"
+#include "helpers/assimp_skin.h"
 #include "helpers/tangent_generation.h"
 
 namespace fxport::detail {
@@ -25,9 +26,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // Assimp's matrices are column-vector (translation in a4, b4, c4); XNA's row-vector (M41..M43).
-Matrix toXna(const aiMatrix4x4& m) {
-    return Matrix(m.a1, m.b1, m.c1, m.d1, m.a2, m.b2, m.c2, m.d2, m.a3, m.b3, m.c3, m.d3, m.a4, m.b4, m.c4, m.d4);
-}
+Matrix toXna(const aiMatrix4x4& m) { return assimpToXna(m); }
 
 std::string lower(std::string s) {
     for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
@@ -39,13 +38,12 @@ constexpr int kMaxBoneDepth = 1024;
 
 class AssimpReader {
 public:
-    AssimpReader(const std::string& path, const aiScene& scene) : path_(path), scene_(scene), folder_(fs::path(path).parent_path()) {}
+    AssimpReader(const std::string& path, const aiScene& scene)
+        : path_(path), scene_(scene), folder_(fs::path(path).parent_path()), skin_(path, scene) {}
 
     GltfModel read() {
         addBone(*scene_.mRootNode, -1);
-        if (skinnedMeshes_ > 0)
-            std::fprintf(stderr, "fxport: warning: model '%s': %d mesh(es) carry skin weights; fxport loads the bind pose only "
-                                 "(skinning and animations are not imported)\n", path_.c_str(), skinnedMeshes_);
+        if (!skin_.empty()) model_.skinning = skin_.finish();
         return std::move(model_);
     }
 
@@ -68,12 +66,13 @@ private:
     int addMesh(const aiNode& node) {
         GltfMesh mesh;
         mesh.name = node.mName.C_Str();
+        const bool skinned = skin_.skinnedNode(node);
         for (unsigned i = 0; i < node.mNumMeshes; ++i) {
             const aiMesh& source = *scene_.mMeshes[node.mMeshes[i]];
             if (!(source.mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;  // points and lines (SortByPType split them off)
             if (mesh.name.empty()) mesh.name = source.mName.C_Str();
-            if (source.mNumBones > 0) ++skinnedMeshes_;
             addPart(mesh, source);
+            if (skinned) skin_.addVertices(node, source, mesh);
         }
         if (mesh.parts.empty()) fail("node '" + std::string(node.mName.C_Str()) + "' has meshes but no triangles");
         mesh.bounds = vertexBounds(mesh.vertices);
@@ -235,7 +234,7 @@ private:
     GltfModel model_;
     std::map<unsigned, int> materials_;
     std::map<std::string, int> images_;
-    int skinnedMeshes_ = 0;
+    AssimpSkin skin_;
 };
 
 }  // namespace

@@ -2,11 +2,14 @@
 // into GPU buffers, textures and effects; the conventions are documented in fxport/graphics/model.h.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "fxport/graphics/model.h"
+#include "fxport/graphics/skinning_data.h"
 #include "fxport/math.h"
 
 namespace fxport::detail {
@@ -45,6 +48,10 @@ struct GltfMesh {
     std::vector<GltfPart> parts;
     BoundingSphere bounds;
     bool sixteenBitIndices = true;
+    // Skinned meshes only (else empty), one per vertex: four skeleton bone indices and their
+    // weights (summing to 1; unused slots weigh 0).
+    std::vector<std::array<std::uint8_t, 4>> blendIndices;
+    std::vector<Vector4> blendWeights;
 };
 
 struct GltfBone {
@@ -59,6 +66,7 @@ struct GltfModel {
     std::vector<GltfMesh> meshes;
     std::vector<GltfMaterial> materials;
     std::vector<GltfImage> images;  // only the images some material uses
+    std::optional<SkinningData> skinning;  // when the file has skin weights or animations
 };
 
 // The bounds ModelMesh::BoundingSphere holds: the centre of the vertices' bounding box, the radius to

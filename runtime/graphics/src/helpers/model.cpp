@@ -11,6 +11,7 @@
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/graphics_device.h"
 #include "fxport/graphics/effect_interfaces.h"
+#include "fxport/graphics/skinned_effect.h"
 #include "device/image_io.h"
 #include "helpers/assimp_loader.h"
 #include "helpers/gltf_loader.h"
@@ -27,6 +28,19 @@ const fxport::VertexDeclaration ModelVertex::VertexDeclaration(
         VertexElement(44, VertexElementFormat::Vector3, VertexElementUsage::Binormal, 0),
     });
 static_assert(sizeof(ModelVertex) == 56, "ModelVertex must be tightly packed: its declaration says 56 bytes");
+
+const fxport::VertexDeclaration SkinnedModelVertex::VertexDeclaration(
+    int(sizeof(SkinnedModelVertex)),
+    {
+        VertexElement(0, VertexElementFormat::Vector3, VertexElementUsage::Position, 0),
+        VertexElement(12, VertexElementFormat::Vector3, VertexElementUsage::Normal, 0),
+        VertexElement(24, VertexElementFormat::Vector2, VertexElementUsage::TextureCoordinate, 0),
+        VertexElement(32, VertexElementFormat::Vector3, VertexElementUsage::Tangent, 0),
+        VertexElement(44, VertexElementFormat::Vector3, VertexElementUsage::Binormal, 0),
+        VertexElement(56, VertexElementFormat::Byte4, VertexElementUsage::BlendIndices, 0),
+        VertexElement(60, VertexElementFormat::Vector4, VertexElementUsage::BlendWeight, 0),
+    });
+static_assert(sizeof(SkinnedModelVertex) == 76, "SkinnedModelVertex must be tightly packed: its declaration says 76 bytes");
 
 // ---------------------------------------------------------------------------------------------
 // Collections
@@ -76,7 +90,7 @@ struct Model::Resources {
     std::vector<std::unique_ptr<Texture2D>> textures;
     std::vector<std::unique_ptr<VertexBuffer>> vertexBuffers;
     std::vector<std::unique_ptr<IndexBuffer>> indexBuffers;
-    std::vector<std::unique_ptr<BasicEffect>> effects;
+    std::vector<std::unique_ptr<Effect>> effects;
     std::vector<std::unique_ptr<ModelBone>> bones;
     std::vector<std::unique_ptr<ModelMesh>> meshes;
 };
@@ -117,6 +131,53 @@ std::unique_ptr<Texture2D> makeSolidTexture(GraphicsDevice& device, Color color,
     texture->Name = name;
     texture->SetData(&color, 1);
     return texture;
+}
+
+std::unique_ptr<VertexBuffer> makeVertexBuffer(GraphicsDevice& device, const detail::GltfMesh& mesh) {
+    std::unique_ptr<VertexBuffer> vb;
+    if (mesh.blendIndices.empty()) {
+        vb = std::make_unique<VertexBuffer>(device, ModelVertex::VertexDeclaration, int(mesh.vertices.size()));
+        vb->SetData(mesh.vertices);
+    } else {
+        std::vector<SkinnedModelVertex> skinned(mesh.vertices.size());
+        for (std::size_t i = 0; i < skinned.size(); ++i) {
+            const ModelVertex& v = mesh.vertices[i];
+            skinned[i] = {v.Position, v.Normal, v.TextureCoordinate, v.Tangent, v.Binormal, mesh.blendIndices[i], mesh.blendWeights[i]};
+        }
+        vb = std::make_unique<VertexBuffer>(device, SkinnedModelVertex::VertexDeclaration, int(skinned.size()));
+        vb->SetData(skinned);
+    }
+    vb->Name = mesh.name;
+    return vb;
+}
+
+// XNA's BasicMaterialContent -> BasicEffect.
+std::unique_ptr<Effect> makeBasicEffect(GraphicsDevice& device, const detail::GltfMaterial* mat, Texture2D* texture,
+                                        const std::string& path) {
+    auto effect = std::make_unique<BasicEffect>(device);
+    effect->Name = "BasicEffect of material '" + (mat ? mat->name : std::string()) + "' of " + path;
+    const Vector4 base = mat ? mat->baseColorFactor : Vector4(1, 1, 1, 1);
+    effect->DiffuseColor = Vector3(base.X, base.Y, base.Z);
+    effect->Alpha = base.W;
+    effect->EmissiveColor = mat ? mat->emissiveFactor : Vector3(0, 0, 0);
+    effect->TextureEnabled = mat && mat->texture >= 0;
+    effect->Texture = texture;
+    effect->Parameters["Texture"].SetValue(texture);
+    return effect;
+}
+
+// XNA's SkinnedMaterialContent -> SkinnedEffect (always textured: the default texture is white).
+std::unique_ptr<Effect> makeSkinnedEffect(GraphicsDevice& device, const detail::GltfMaterial* mat, Texture2D* texture,
+                                          const std::string& path) {
+    auto effect = std::make_unique<SkinnedEffect>(device);
+    effect->Name = "SkinnedEffect of material '" + (mat ? mat->name : std::string()) + "' of " + path;
+    const Vector4 base = mat ? mat->baseColorFactor : Vector4(1, 1, 1, 1);
+    effect->DiffuseColor = Vector3(base.X, base.Y, base.Z);
+    effect->Alpha = base.W;
+    effect->EmissiveColor = mat ? mat->emissiveFactor : Vector3(0, 0, 0);
+    effect->Texture = texture;
+    effect->Parameters["Texture"].SetValue(texture);
+    return effect;
 }
 
 }  // namespace
@@ -195,6 +256,7 @@ std::unique_ptr<Model> Model::build(GraphicsDevice& device, const detail::GltfMo
         res.bones.push_back(std::move(bone));
     }
     model->Root = res.bones.empty() ? nullptr : res.bones[0].get();
+    if (source.skinning) model->Tag = *source.skinning;
 
     // Textures: the defaults, then the images the materials use.
     res.textures.push_back(makeSolidTexture(device, Color(255, 255, 255, 255), "ModelDefaultTexture"));
@@ -220,9 +282,7 @@ std::unique_ptr<Model> Model::build(GraphicsDevice& device, const detail::GltfMo
         if (mesh.vertices.empty()) {
             continue;
         }
-        auto vb = std::make_unique<VertexBuffer>(device, ModelVertex::VertexDeclaration, int(mesh.vertices.size()));
-        vb->Name = mesh.name;
-        vb->SetData(mesh.vertices);
+        auto vb = makeVertexBuffer(device, mesh);
         std::unique_ptr<IndexBuffer> ib;
         if (mesh.sixteenBitIndices) {
             std::vector<std::uint16_t> narrow(mesh.indices.begin(), mesh.indices.end());
@@ -257,16 +317,8 @@ std::unique_ptr<Model> Model::build(GraphicsDevice& device, const detail::GltfMo
             textures.Texture = textureOr(mat ? mat->texture : -1, 0);
             textures.NormalMap = textureOr(mat ? mat->normalMap : -1, 1);
             textures.SpecularMap = textureOr(mat ? mat->specularMap : -1, 2);
-            // XNA's BasicMaterialContent -> BasicEffect.
-            auto effect = std::make_unique<BasicEffect>(device);
-            effect->Name = "BasicEffect of material '" + (mat ? mat->name : std::string()) + "' of " + path;
-            const Vector4 base = mat ? mat->baseColorFactor : Vector4(1, 1, 1, 1);
-            effect->DiffuseColor = Vector3(base.X, base.Y, base.Z);
-            effect->Alpha = base.W;
-            effect->EmissiveColor = mat ? mat->emissiveFactor : Vector3(0, 0, 0);
-            effect->TextureEnabled = mat && mat->texture >= 0;
-            effect->Texture = textures.Texture;
-            effect->Parameters["Texture"].SetValue(textures.Texture);
+            std::unique_ptr<Effect> effect = sourceMesh.blendIndices.empty() ? makeBasicEffect(device, mat, textures.Texture, path)
+                                                                             : makeSkinnedEffect(device, mat, textures.Texture, path);
 
             ModelMeshPart part;
             part.VertexBuffer = buffers[std::size_t(meshIndex)].vertices;

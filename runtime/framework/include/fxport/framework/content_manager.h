@@ -7,6 +7,7 @@
 //               content pipeline did: magenta keyed out, alpha premultiplied — textureProcessor,
 //               texture_processor.h), <name>.dds (as authored: its mip levels; BC1-BC3 decoded to
 //               Color, see dds_image.h)
+//   TextureCube <name>.dds (a cube map, its six faces and mip levels as authored; TextureCube::FromFile)
 //   Model       <name>.gltf, <name>.glb, <name>.fbx, <name>.x, <name>.obj, <name>.dae (Assimp)
 //   SpriteFont  <name>.spritefont (XNA's XML font description: FontName, Size, Spacing, UseKerning,
 //               Style, DefaultCharacter, CharacterRegions; the font found by fontconfig, or a .ttf
@@ -75,7 +76,7 @@ public:
     // constructor.
     void setGraphicsDevice(GraphicsDevice* device) { device_ = device; }
 
-    // T is Effect, Texture2D, Model or SpriteFont (other types do not link). Throws
+    // T is Effect, Texture2D, TextureCube (a .dds cube map), Model or SpriteFont (other types do not link). Throws
     // ContentLoadException naming the asset and the paths tried when no file exists, and the
     // loader's error (ArgumentError, xlate::CompileError ...) prefixed with the asset name when the
     // file cannot be read.
@@ -88,7 +89,7 @@ public:
     // xlate's compile or cache lookup): what a program actually built (fxdemo --explain reads it).
     struct LoadRecord {
         std::string assetName;
-        std::string type;  // "Effect", "Texture2D", "Model", "SpriteFont"
+        std::string type;  // "Effect", "Texture2D", "TextureCube", "Model", "SpriteFont"
         std::string path;  // the file loaded
         double milliseconds = 0;
     };
@@ -110,6 +111,7 @@ private:
     std::map<std::string, std::unique_ptr<Effect>> effects_;
     std::map<std::string, std::unique_ptr<Model>> models_;
     std::map<std::string, std::unique_ptr<Texture2D>> textures_;
+    std::map<std::string, std::unique_ptr<TextureCube>> cubes_;
     std::map<std::string, TextureProcessor> textureProcessors_;  // by portable asset name
     std::map<std::string, std::unique_ptr<SpriteFont>> fonts_;
     std::vector<LoadRecord> loadLog_;
@@ -117,6 +119,7 @@ private:
 
 template <> Effect* ContentManager::Load<Effect>(const std::string& assetName);
 template <> Texture2D* ContentManager::Load<Texture2D>(const std::string& assetName);
+template <> TextureCube* ContentManager::Load<TextureCube>(const std::string& assetName);
 template <> Model* ContentManager::Load<Model>(const std::string& assetName);
 template <> SpriteFont* ContentManager::Load<SpriteFont>(const std::string& assetName);
 

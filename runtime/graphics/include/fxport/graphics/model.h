@@ -23,8 +23,25 @@
 // give it (.x files are converted from left-handed), v down, flat normals where the file has none,
 // generated tangent frames; material diffuse colour/opacity/emissive and diffuse, normal and
 // specular textures (files beside the model, Windows separators and any case accepted, or embedded).
-// Skin weights and animations are not imported: a skinned mesh loads in its bind pose, with a
-// warning on stderr.
+// Skinned models load as XNA's SkinnedModel sample's SkinnedModelProcessor makes them:
+//  * The skeleton is every node a mesh's bones or an animation's channels name, every node holding
+//    a skinned mesh, and their ancestors up to the file's root, in Bones order (skeleton bone 0 is
+//    the root); at most SkinnedEffect::MaxBones (72), else ArgumentError. Model::Tag holds its
+//    SkinningData (skinning_data.h): BindPose = each bone's Transform, InverseBindPose = the file's
+//    bone offset matrix (mesh space -> bone space; else the inverse of the node's absolute
+//    transform), SkeletonHierarchy, and one AnimationClip per animation.
+//  * Animations become keyframes per skeleton bone, one at each time any of the channel's
+//    position, rotation or scale keys has (the others interpolated there, linearly and by slerp):
+//    Transform = CreateScale(s) * CreateFromQuaternion(r) * CreateTranslation(p); Time and Duration
+//    in seconds (ticks / the file's ticks per second, 25 when it gives none). AnimationPlayer
+//    (animation_player.h) plays them as the sample does, holding each key until the next.
+//  * A node with a skinned mesh gets SkinnedModelVertex vertices (BLENDINDICES0: the four heaviest
+//    skeleton bones, BLENDWEIGHT0: their weights scaled to sum 1) and a SkinnedEffect per part
+//    (material colours and texture as for BasicEffect, WeightsPerVertex 4). Vertices without
+//    weights (and the node's meshes without bones) follow the node's own skeleton bone rigidly.
+//    Draw as the sample does: effect->SetBoneTransforms(player.GetSkinTransforms()), World left
+//    at the identity (the skin matrices already place the mesh; Model::Draw would apply the mesh's
+//    bone transform on top).
 //
 // How glTF becomes an XNA model:
 //  * Bones: one per node of the default scene (else scene 0, else every node that is no node's
@@ -84,7 +101,8 @@
 //        for (ModelMesh& mesh : model->Meshes)
 //            for (Effect* effect : mesh.Effects())
 //                if (auto* lights = dynamic_cast<IEffectLights*>(effect)) lights->EnableDefaultLighting();
-//  * Not loaded: skins, morph targets, animations, cameras, lights, vertex colours, TEXCOORD_1+.
+//  * Not loaded from glTF: skins, morph targets, animations, cameras, lights, vertex colours,
+//    TEXCOORD_1+ (Assimp's formats load skins and animations, above).
 //
 // A Model owns everything it made (buffers, textures, effects); parts point into it, so the Model
 // must outlive their use. Bad input (missing or unreadable file, bad JSON, broken accessors, a
@@ -92,6 +110,8 @@
 // whose message starts with the file's path and names the mesh/node/image at fault.
 #pragma once
 
+#include <any>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
@@ -123,6 +143,19 @@ struct ModelVertex {
     Vector2 TextureCoordinate;  // TEXCOORD0
     Vector3 Tangent;            // TANGENT0
     Vector3 Binormal;           // BINORMAL0
+    static const fxport::VertexDeclaration VertexDeclaration;
+};
+
+// The vertex of a skinned mesh (76 bytes): ModelVertex's then BLENDINDICES0 (Byte4: skeleton bone
+// indices) and BLENDWEIGHT0 (Vector4), what SkinnedEffect reads.
+struct SkinnedModelVertex {
+    Vector3 Position;
+    Vector3 Normal;
+    Vector2 TextureCoordinate;
+    Vector3 Tangent;
+    Vector3 Binormal;
+    std::array<std::uint8_t, 4> BlendIndices;
+    Vector4 BlendWeight;
     static const fxport::VertexDeclaration VertexDeclaration;
 };
 
@@ -258,6 +291,9 @@ public:
     ModelBoneCollection Bones;
     ModelMeshCollection Meshes;
     ModelBone* Root = nullptr;
+    // XNA's Model.Tag: a SkinningData when the file has skin weights or animations (see the file
+    // comment; std::any_cast<SkinningData>(&model->Tag)), else empty. Free for the program's use.
+    std::any Tag;
 
     // transforms[i] = the absolute transform of Bones[i] (Transform times every ancestor's, child
     // first). The vector is resized to Bones.Count() when it is smaller; the pointer overload writes

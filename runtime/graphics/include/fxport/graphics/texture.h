@@ -107,6 +107,22 @@ public:
     }
     void setData(CubeMapFace face, const void* data, std::size_t bytes, std::size_t elementSize = 1);
     void getData(CubeMapFace face, void* data, std::size_t bytes) const;
+    // One mip level of a face (Size() >> level texels square); ArgumentError for a level outside
+    // 0 .. LevelCount() - 1 or a size that does not match (texture_cube_file.cpp).
+    template <class T> void SetData(CubeMapFace face, int level, const T* data, std::size_t count) {
+        setData(face, level, data, sizeof(T) * count, sizeof(T));
+    }
+    template <class T> void GetData(CubeMapFace face, int level, T* data, std::size_t count) const {
+        getData(face, level, data, sizeof(T) * count);
+    }
+    void setData(CubeMapFace face, int level, const void* data, std::size_t bytes, std::size_t elementSize = 1);
+    void getData(CubeMapFace face, int level, void* data, std::size_t bytes) const;
+
+    // fxport: a .dds cube map (what XNA's content pipeline loads as TextureCube): its six faces and
+    // mip levels as stored (a partial chain completed by 2x2 averages), BC1-BC3 decoded to
+    // SurfaceFormat::Color as Texture2D::FromFile does (dds_image.h). Throws ArgumentError naming
+    // the file for a 2D texture, a cube whose faces are not square, or what readDds refuses.
+    static std::unique_ptr<TextureCube> FromFile(fxport::GraphicsDevice& device, const std::string& path);
 
 protected:
     TextureCube(fxport::GraphicsDevice& device, const char* typeName, int size, bool mipMap, SurfaceFormat format);
