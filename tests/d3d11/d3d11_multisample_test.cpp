@@ -1,7 +1,8 @@
 // Multisampled render targets through the D3D11 front end (SampleDesc.Count = 4): a pixel shader
 // run per sample (SV_SampleIndex) writes 2^sample into each sample; ResolveSubresource averages
 // them (3.75, the CPU mean of 1, 2, 4, 8); a second pass reads every sample back through
-// Texture2DMS.Load and GetDimensions' sample count from a TEXTURE2DMS view; and the descriptions
+// Texture2DMS.Load and GetDimensions' sample count from a TEXTURE2DMS view; a one-sample texture
+// read as Texture2DMS gives its texels as sample 0; and the descriptions
 // and copies D3D refuses for multisampled textures, answered with the field and value.
 #include <cstring>
 
@@ -105,6 +106,52 @@ float4 ps(float4 pos : SV_Position) : SV_Target {
         for (UINT i = 0; i < kSize * kSize; ++i)
             EXPECT_EQ(got[i], (Texel{float(1u << s), float(s), float(kSamples), float(kSize * 100 + kSize)})) << "sample " << s << ", pixel " << i;
     }
+}
+
+// D3D reads a one-sample texture bound where a shader declares Texture2DMS: Load(p, 0) is its texel
+// (vkd3d's suite relies on it). A Texture2D declaration reading a multisampled texture is refused.
+TEST(D3D11Multisample, SingleSampleTextureLoadsAsSampleZeroOfATexture2DMS) {
+    Device d;
+    std::vector<Texel> texels(kSize * kSize);
+    for (UINT i = 0; i < kSize * kSize; ++i) texels[i] = {float(i), float(i % kSize) * 0.5f, float(i / kSize) * 0.25f, 1.0f};
+    D3D11_TEXTURE2D_DESC sourceDesc = targetDesc(1);
+    sourceDesc.BindFlags = D3D11_BIND_SHADER_RESOURCE;
+    D3D11_SUBRESOURCE_DATA data = {texels.data(), kSize * sizeof(Texel), 0};
+    ComPtr<ID3D11Texture2D> source, target;
+    ASSERT_EQ(d.device->CreateTexture2D(&sourceDesc, &data, source.GetAddressOf()), S_OK) << lastError();
+    D3D11_TEXTURE2D_DESC targetDescription = targetDesc(1);
+    targetDescription.BindFlags = D3D11_BIND_RENDER_TARGET;
+    ASSERT_EQ(d.device->CreateTexture2D(&targetDescription, nullptr, target.GetAddressOf()), S_OK) << lastError();
+    ComPtr<ID3D11ShaderResourceView> view;
+    ASSERT_EQ(d.device->CreateShaderResourceView(source.Get(), nullptr, view.GetAddressOf()), S_OK) << lastError();
+    ComPtr<ID3D11RenderTargetView> rtv;
+    ASSERT_EQ(d.device->CreateRenderTargetView(target.Get(), nullptr, rtv.GetAddressOf()), S_OK) << lastError();
+    draw(d, R"(
+Texture2DMS<float4, 1> Source : register(t0);
+float4 ps(float4 pos : SV_Position) : SV_Target { return Source.Load(int2(pos.xy), 0); }
+)",
+         rtv.Get(), view.Get());
+    EXPECT_EQ(readTexels<Texel>(d, target.Get()), texels);
+
+    // The other way round: a multisampled texture where the shader declares a Texture2D.
+    D3D11_TEXTURE2D_DESC samplesDesc = targetDesc(kSamples);
+    ComPtr<ID3D11Texture2D> samples;
+    ASSERT_EQ(d.device->CreateTexture2D(&samplesDesc, nullptr, samples.GetAddressOf()), S_OK) << lastError();
+    ComPtr<ID3D11ShaderResourceView> samplesView;
+    ASSERT_EQ(d.device->CreateShaderResourceView(samples.Get(), nullptr, samplesView.GetAddressOf()), S_OK) << lastError();
+    const std::string text = std::string(kFullScreen) + "Texture2D Source : register(t0);\n"
+                             "float4 ps(float4 pos : SV_Position) : SV_Target { return Source.Load(int3(pos.xy, 0)); }\n";
+    ComPtr<ID3DBlob> vsCode = compile(text, "vs", "vs_5_0"), psCode = compile(text, "ps", "ps_5_0");
+    ASSERT_TRUE(vsCode && psCode);
+    ComPtr<ID3D11VertexShader> vs;
+    ComPtr<ID3D11PixelShader> ps;
+    ASSERT_EQ(d.device->CreateVertexShader(vsCode->GetBufferPointer(), vsCode->GetBufferSize(), nullptr, vs.GetAddressOf()), S_OK) << lastError();
+    ASSERT_EQ(d.device->CreatePixelShader(psCode->GetBufferPointer(), psCode->GetBufferSize(), nullptr, ps.GetAddressOf()), S_OK) << lastError();
+    d.context->VSSetShader(vs.Get(), nullptr, 0);
+    d.context->PSSetShader(ps.Get(), nullptr, 0);
+    d.context->PSSetShaderResources(0, 1, samplesView.GetAddressOfConst());
+    d.context->Draw(3, 0);
+    EXPECT_NE(lastError().find("holds the multisampled texture"), std::string::npos) << lastError();
 }
 
 TEST(D3D11Multisample, RefusedDescriptionsCopiesAndResolvesNameTheField) {
