@@ -237,6 +237,7 @@ std::string D3d11Session::draw(const ShaderSet& shaders, const std::vector<std::
     ComPtr<ID3D11RasterizerState> rasterizer;
     check(device_->CreateRasterizerState(&r, rasterizer.GetAddressOf()), "");
     context_->RSSetState(rasterizer.Get());
+    context_->OMSetBlendState(nullptr, nullptr, sampleMask_);
     if (call.instances != 1) context_->DrawInstanced(UINT(call.vertexCount), UINT(call.instances), 0, 0);
     else context_->Draw(UINT(call.vertexCount), 0);
     checkNoMessage("Draw");

@@ -26,6 +26,8 @@ public:
     void setInputLayout(std::vector<InputElement> layout) override { layout_ = std::move(layout); }
     void clearTarget(int slot, const float rgba[4]) override;
     void setFixedFunction(const FixedFunctionDesc& states) override { fixedFunction_ = states.firstSet(); }
+    void setSampleMask(unsigned mask) override { sampleMask_ = mask; }
+    void copyResource(const std::string& fromKind, int fromSlot, const std::string& toKind, int toSlot) override;
     std::string draw(const ShaderSet& shaders, const std::vector<std::uint32_t>& uniforms, const DrawCall& call) override;
     std::string dispatch(const ShaderSet& shaders, const std::vector<std::uint32_t>& uniforms, int x, int y, int z) override;
     Texel readTexel(int slot, int x, int y) override;
@@ -33,6 +35,7 @@ public:
 
 private:
     std::string fixedFunction_;  // a D3D9 fixed-function state the next draw needs ("" none)
+    unsigned sampleMask_ = 0xffffffffu;  // OMSetBlendState's SampleMask
     template <class T> using ComPtr = fxport::d3d11::ComPtr<T>;
     struct Texture {  // a render target, or a UAV's texture
         ResourceDesc desc;
@@ -58,6 +61,8 @@ private:
     void makeUav(const ResourceDesc& r);
     ComPtr<fxport::d3d11::ID3D11Buffer> makeBuffer(const ResourceDesc& r, fxport::d3d11::UINT bind);
     void ensureDefaultTarget();
+    ComPtr<fxport::d3d11::ID3D11Resource> resourceOf(const std::string& kind, int slot);
+    ComPtr<fxport::d3d11::ID3D11Resource> resolved(fxport::d3d11::ID3D11Texture2D* texture);
     ComPtr<fxport::d3d11::ID3D11Resource> stagingFor(fxport::d3d11::ID3D11Resource* resource, const ResourceDesc& desc,
                                                      std::size_t& rowBytes, std::size_t& rows);
     std::vector<std::uint32_t> readBack(fxport::d3d11::ID3D11Resource* resource, const ResourceDesc& desc);

@@ -34,6 +34,48 @@ UINT elementBytes(const ResourceDesc& r) {
     return r.stride > 0 ? UINT(r.stride) : UINT(texelBytes(r.format));
 }
 
+// A [srv N] of dimension 2dms: a multisampled render target a shader reads through a TEXTURE2DMS
+// view; D3D gives a multisampled texture no initial data, so one with data is skipped.
+void makeMultisampleView(ID3D11Device& device, const ResourceDesc& r, ComPtr<ID3D11ShaderResourceView>& view) {
+    if (!r.data.empty()) throw Unsupported("a multisampled [srv N] with data (D3D makes multisampled textures without initial data)");
+    D3D11_TEXTURE2D_DESC d;
+    d.Width = UINT(r.width);
+    d.Height = UINT(r.height);
+    d.MipLevels = d.ArraySize = 1;
+    d.Format = dxgiFormat(r.format);
+    d.SampleDesc.Count = UINT(r.samples);
+    d.BindFlags = D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_RENDER_TARGET;
+    ComPtr<ID3D11Texture2D> texture;
+    const std::string what = "multisampled texture [srv " + std::to_string(r.slot) + "] " + r.format.name;
+    check(device.CreateTexture2D(&d, nullptr, texture.GetAddressOf()), what);
+    check(device.CreateShaderResourceView(texture.Get(), nullptr, view.GetAddressOf()), what);
+}
+
+// A [srv N] of dimension 3d: one subresource per level, vkd3d's data slice by slice.
+void makeVolumeView(ID3D11Device& device, const ResourceDesc& r, ComPtr<ID3D11ShaderResourceView>& view) {
+    D3D11_TEXTURE3D_DESC d;
+    d.Width = UINT(r.width);
+    d.Height = UINT(r.height);
+    d.Depth = UINT(r.depth);
+    d.MipLevels = UINT(r.levels);
+    d.Format = dxgiFormat(r.format);
+    d.BindFlags = D3D11_BIND_SHADER_RESOURCE;
+    std::vector<std::vector<std::uint32_t>> levels(std::size_t(r.levels));
+    std::vector<D3D11_SUBRESOURCE_DATA> data;
+    std::size_t at = 0;
+    for (int level = 0; level < r.levels; ++level) {
+        const int w = std::max(1, r.width >> level), h = std::max(1, r.height >> level), z = std::max(1, r.depth >> level);
+        levels[std::size_t(level)] = wordsOf(r, at, std::size_t(w * h * z * r.format.components));
+        at += levels[std::size_t(level)].size();
+        const UINT row = UINT(w * texelBytes(r.format));
+        data.push_back({levels[std::size_t(level)].data(), row, row * UINT(h)});
+    }
+    ComPtr<ID3D11Texture3D> texture;
+    const std::string what = "3D texture [srv " + std::to_string(r.slot) + "] " + r.format.name;
+    check(device.CreateTexture3D(&d, data.data(), texture.GetAddressOf()), what);
+    check(device.CreateShaderResourceView(texture.Get(), nullptr, view.GetAddressOf()), what);
+}
+
 }  // namespace
 
 void D3d11Session::forgetReadbacks() {
@@ -68,11 +110,12 @@ void D3d11Session::makeTarget(const ResourceDesc& r) {
     targets_.erase(r.slot);
     unmadeTargets_.erase(r.slot);
     try {
-        if (r.dimension != "2d") throw Unsupported("render target dimension " + r.dimension);
+        if (r.dimension != "2d" && r.dimension != "2dms") throw Unsupported("render target dimension " + r.dimension);
         D3D11_TEXTURE2D_DESC d;
         d.Width = UINT(r.width);
         d.Height = UINT(r.height);
         d.MipLevels = d.ArraySize = 1;
+        if (r.dimension == "2dms") d.SampleDesc.Count = UINT(r.samples);
         d.Format = dxgiFormat(r.format);
         d.BindFlags = D3D11_BIND_RENDER_TARGET;
         Texture t;
@@ -101,6 +144,8 @@ void D3d11Session::makeTexture(const ResourceDesc& r) {
     srvs_.erase(r.slot);
     unmadeSrvs_.erase(r.slot);
     try {
+        if (r.dimension == "3d") return makeVolumeView(*device_.Get(), r, srvs_[r.slot]);
+        if (r.dimension == "2dms") return makeMultisampleView(*device_.Get(), r, srvs_[r.slot]);
         const bool cube = r.dimension == "cube";
         if (r.dimension != "2d" && !cube) throw Unsupported("texture dimension " + r.dimension + " from [srv N]");
         D3D11_TEXTURE2D_DESC d;
@@ -242,8 +287,47 @@ D3d11Session::ComPtr<ID3D11Resource> D3d11Session::stagingFor(ID3D11Resource* re
     return staging;
 }
 
-// Level 0 of a texture or the whole of a buffer as 32-bit words, rows packed (a staging copy, Map).
+// The texture behind render target or shader-resource view `slot`.
+D3d11Session::ComPtr<ID3D11Resource> D3d11Session::resourceOf(const std::string& kind, int slot) {
+    if (kind == "rtv" && targets_.count(slot)) return ComPtr<ID3D11Resource>(targets_[slot].texture.Get());
+    if (kind == "srv" && srvs_.count(slot)) {
+        ComPtr<ID3D11Resource> resource;
+        srvs_[slot]->GetResource(resource.GetAddressOf());
+        return resource;
+    }
+    throw Unsupported("copy of " + kind + " " + std::to_string(slot) + ", which the session has not made");
+}
+
+void D3d11Session::copyResource(const std::string& fromKind, int fromSlot, const std::string& toKind, int toSlot) {
+    ComPtr<ID3D11Resource> from = resourceOf(fromKind, fromSlot), to = resourceOf(toKind, toSlot);
+    context_->CopyResource(to.Get(), from.Get());
+    if (*GetLastErrorMessage()) throw std::runtime_error(std::string("CopyResource: ") + GetLastErrorMessage());
+}
+
+// A single-sample copy of multisampled `texture`, each pixel its samples' average: what vkd3d's d3d11
+// runner probes (ResolveSubresource into a USAGE_DEFAULT texture).
+D3d11Session::ComPtr<ID3D11Resource> D3d11Session::resolved(ID3D11Texture2D* texture) {
+    D3D11_TEXTURE2D_DESC d;
+    texture->GetDesc(&d);
+    d.SampleDesc.Count = 1;
+    d.SampleDesc.Quality = 0;
+    d.BindFlags = 0;
+    ComPtr<ID3D11Texture2D> single;
+    if (FAILED(device_->CreateTexture2D(&d, nullptr, single.GetAddressOf())))
+        throw std::runtime_error(std::string("resolved copy for a probe: ") + GetLastErrorMessage());
+    context_->ResolveSubresource(single.Get(), 0, texture, 0, d.Format);
+    if (*GetLastErrorMessage()) throw std::runtime_error(std::string("resolve for a probe: ") + GetLastErrorMessage());
+    return ComPtr<ID3D11Resource>(single.Get());
+}
+
+// Level 0 of a texture or the whole of a buffer as 32-bit words, rows packed (a staging copy, Map;
+// a multisampled texture resolved first).
 std::vector<std::uint32_t> D3d11Session::readBack(ID3D11Resource* resource, const ResourceDesc& r) {
+    ComPtr<ID3D11Resource> single;
+    if (r.dimension == "2dms") {
+        single = resolved(static_cast<ID3D11Texture2D*>(resource));
+        resource = single.Get();
+    }
     std::size_t rowBytes = 0, rows = 0;
     ComPtr<ID3D11Resource> staging = stagingFor(resource, r, rowBytes, rows);
     context_->CopySubresourceRegion(staging.Get(), 0, 0, 0, 0, resource, 0, nullptr);

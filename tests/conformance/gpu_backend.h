@@ -56,6 +56,10 @@ public:
     // D3D9's fixed-function states for the draws that follow (the XNA session sets them; the
     // D3D11 session skips a draw that needs any, D3D11 having none).
     virtual void setFixedFunction(const FixedFunctionDesc& states) = 0;
+    // vkd3d's `sample mask N`: the blend state's sample mask for the draws that follow.
+    virtual void setSampleMask(unsigned mask) = 0;
+    // vkd3d's `copy rtv 0 srv 0`: the whole of one resource into another ("rtv" or "srv", slot).
+    virtual void copyResource(const std::string& fromKind, int fromSlot, const std::string& toKind, int toSlot) = 0;
     // Both return "" or why the uniforms' placement was a guess (UniformLayout::guess).
     virtual std::string draw(const ShaderSet& shaders, const std::vector<std::uint32_t>& uniforms, const DrawCall& call) = 0;
     virtual std::string dispatch(const ShaderSet& shaders, const std::vector<std::uint32_t>& uniforms, int x, int y, int z) = 0;

@@ -206,6 +206,7 @@ void GpuSession::makeTexture(const ResourceDesc& r) {
     unsupportedTextures_.erase(r.slot);
     try {
         if (r.dimension == "cube") return makeCube(r);
+        if (r.dimension == "3d") return makeVolume(r);
         if (r.dimension != "2d") throw Unsupported("texture dimension " + r.dimension + " from [srv N]");
         SurfaceFormat format = floatSurfaceFormat(r.format, "texture");
         auto texture = std::make_unique<fxport::Texture2D>(device(), r.width, r.height, r.levels > 1, format);
@@ -234,6 +235,19 @@ void GpuSession::makeCube(const ResourceDesc& r) {
         cube->SetData(fxport::CubeMapFace(face), reinterpret_cast<const float*>(words.data()), words.size());
     }
     textures_[r.slot] = std::move(cube);
+}
+
+// A volume: each level's slices front to back, as vkd3d lists the data.
+void GpuSession::makeVolume(const ResourceDesc& r) {
+    SurfaceFormat format = floatSurfaceFormat(r.format, "texture");
+    auto volume = std::make_unique<fxport::Texture3D>(device(), r.width, r.height, r.depth, r.levels > 1, format);
+    std::size_t at = 0;
+    for (int level = 0; level < volume->LevelCount(); ++level) {
+        std::vector<std::uint32_t> words(volume->levelBytes(level) / 4, 0);
+        for (std::size_t k = 0; k < words.size() && at < r.data.size(); ++k) words[k] = r.data[at++];
+        volume->SetData(level, reinterpret_cast<const float*>(words.data()), words.size());
+    }
+    textures_[r.slot] = std::move(volume);
 }
 
 namespace {
@@ -411,6 +425,7 @@ void GpuSession::draw(fxport::Effect& effect, const std::string& source, int mod
     // D3D's defaults for a runner that sets no states: no culling, no blending, no depth test.
     device().RasterizerState = fxport::RasterizerState::CullNone;
     device().BlendState = fxport::BlendState::Opaque;
+    device().BlendState.MultiSampleMask = int(sampleMask_);
     device().DepthStencilState = fxport::DepthStencilState::None;
     device().FixedFunction = fixedFunctionState(fixedFunction_);
     drawVertices(call);

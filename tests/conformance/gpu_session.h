@@ -37,6 +37,7 @@ public:
     void setSampler(const SamplerDesc& sampler) { samplers_[sampler.slot] = sampler; }
     void setInputLayout(std::vector<InputElement> layout) { inputLayout_ = std::move(layout); }
     void setFixedFunction(const FixedFunctionDesc& states) { fixedFunction_ = states; }
+    void setSampleMask(unsigned mask) { sampleMask_ = mask; }
     void clearTarget(int slot, const float rgba[4]);
     // Binds textures and samplers for `effect` (texture and sampler parameters in declaration order
     // = registers t/s; explicit register(tN)/register(sN) in `source` win) and draws.
@@ -54,10 +55,12 @@ public:
 
 private:
     FixedFunctionDesc fixedFunction_;
+    unsigned sampleMask_ = 0xffffffffu;  // BlendState::MultiSampleMask for the draws
     void ensureDefaultTarget();
     void makeTarget(const ResourceDesc& r);
     void makeTexture(const ResourceDesc& r);
     void makeCube(const ResourceDesc& r);
+    void makeVolume(const ResourceDesc& r);
     void bindTargets();
     void bindTextures(fxport::Effect& effect, const std::string& source, int model);
     void drawVertices(const DrawCall& call);
@@ -67,7 +70,7 @@ private:
 
     std::unique_ptr<fxport::GraphicsDevice> device_;
     std::map<int, std::unique_ptr<fxport::RenderTarget2D>> targets_;
-    std::map<int, std::unique_ptr<fxport::Texture>> textures_;  // 2D and cube
+    std::map<int, std::unique_ptr<fxport::Texture>> textures_;  // 2D, cube and 3D
     std::map<int, std::string> unsupportedTextures_;  // slot -> why it could not be made
     std::map<int, std::string> unsupportedTargets_;
     std::map<int, SamplerDesc> samplers_;

@@ -200,6 +200,8 @@ void ModelRun::runTestLine(const Line& line, const std::string& d) {
         else if (startsWith(d, "clear rtv")) doClear(d.substr(9));
         else if (startsWith(d, "dispatch")) doDispatch(d.substr(8), line.number);
         else if (parseFixedFunctionState(d, fixedFunction_)) return;
+        else if (startsWith(d, "sample mask")) gpu().setSampleMask(unsigned(std::stoul(d.substr(11), nullptr, 0)));
+        else if (startsWith(d, "copy ")) doCopy(d.substr(5));
         else if (d.find("disable") != std::string::npos || d.find(" off") != std::string::npos) {
             stickyStates_.erase(firstWords(d, 1));
         } else {

@@ -64,6 +64,7 @@ private:
     void noteDrawOutcome(int line);  // records a failed or skipped draw/dispatch
     void doProbe(const std::string& args, int line);
     void doClear(const std::string& args);
+    void doCopy(const std::string& args);
     void skipProbe(const std::string& reason);
     void failProbe(int line, const std::string& detail);
     ShaderSet drawStages(const DrawCall& call);  // the stages a draw runs (Unsupported when it cannot)

@@ -154,6 +154,20 @@ void ModelRun::doClear(const std::string& args) {
     }
 }
 
+// `copy rtv 0 srv 0`: from the first resource into the second. A session that cannot copy leaves
+// the line as a state the following draws skip on, naming it.
+void ModelRun::doCopy(const std::string& args) {
+    std::istringstream in(args);
+    std::string fromKind, toKind;
+    int fromSlot = 0, toSlot = 0;
+    if (!(in >> fromKind >> fromSlot >> toKind >> toSlot)) throw std::runtime_error("malformed copy line 'copy " + args + "'");
+    try {
+        gpu().copyResource(fromKind, fromSlot, toKind, toSlot);
+    } catch (const Unsupported&) {
+        stickyStates_["copy"] = "copy " + fromKind;
+    }
+}
+
 void ModelRun::doProbe(const std::string& args, int line) {
     Probe probe = parseProbe(args);
     if (probe.kind == "f64" || probe.kind == "u64" || probe.kind == "i64") return skipProbe("64-bit probe (double/int64 targets)");

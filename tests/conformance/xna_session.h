@@ -26,6 +26,10 @@ public:
     void setInputLayout(std::vector<InputElement> layout) override { gpu_.setInputLayout(std::move(layout)); }
     void clearTarget(int slot, const float rgba[4]) override { gpu_.clearTarget(slot, rgba); }
     void setFixedFunction(const FixedFunctionDesc& states) override { gpu_.setFixedFunction(states); }
+    void setSampleMask(unsigned mask) override { gpu_.setSampleMask(mask); }
+    void copyResource(const std::string&, int, const std::string&, int) override {
+        throw Unsupported("copy between resources (the XNA session's targets and textures are not copied)");
+    }
     std::string draw(const ShaderSet& shaders, const std::vector<std::uint32_t>& uniforms, const DrawCall& call) override;
     std::string dispatch(const ShaderSet& shaders, const std::vector<std::uint32_t>& uniforms, int x, int y, int z) override;
     Texel readTexel(int slot, int x, int y) override { return gpu_.readTexel(slot, x, y); }

@@ -148,6 +148,27 @@ public:
         textureSizes[t] = {width, height};
         return t;
     }
+    BackendObject createVolumeTexture(SurfaceFormat, int levels, int width, int height, int depth) override {
+        const BackendObject t = make("createVolumeTexture " + std::to_string(width) + "x" + std::to_string(height) + "x" + std::to_string(depth) +
+                                     " levels " + std::to_string(levels));
+        textureSizes[t] = {width, height};
+        return t;
+    }
+    void writeVolume(BackendObject texture, SurfaceFormat, int level, int width, int height, int depth, const void*) override {
+        calls.push_back("writeVolume " + std::to_string(texture) + " level " + std::to_string(level) + " " + std::to_string(width) + "x" +
+                        std::to_string(height) + "x" + std::to_string(depth));
+    }
+    BackendObject createMultisampleTexture(SurfaceFormat, int samples, int width, int height, int& given) override {
+        given = samples;
+        const BackendObject t = make("createMultisampleTexture " + std::to_string(width) + "x" + std::to_string(height) + " samples " +
+                                     std::to_string(samples));
+        textureSizes[t] = {width, height};
+        return t;
+    }
+    unsigned multisampledUnits(BackendObject) override { return 0; }
+    void copySamples(BackendObject source, BackendObject destination, int, int) override {
+        calls.push_back("copySamples " + std::to_string(source) + " " + std::to_string(destination));
+    }
     void deleteTexture(BackendObject texture) override { release("deleteTexture", texture); }
     void writeTexture(BackendObject texture, SurfaceFormat, int face, int level, const Rectangle& a, const void*) override {
         calls.push_back("writeTexture " + std::to_string(texture) + " face " + std::to_string(face) + " level " + std::to_string(level) +

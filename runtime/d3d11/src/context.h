@@ -87,6 +87,8 @@ public:
     void ClearRenderTargetView(ID3D11RenderTargetView* pRenderTargetView, const FLOAT ColorRGBA[4]) override;
     void ClearDepthStencilView(ID3D11DepthStencilView* pDepthStencilView, UINT ClearFlags, FLOAT Depth, UINT8 Stencil) override;
     void GenerateMips(ID3D11ShaderResourceView* pShaderResourceView) override;
+    void ResolveSubresource(ID3D11Resource* pDstResource, UINT DstSubresource, ID3D11Resource* pSrcResource, UINT SrcSubresource,
+                            DXGI_FORMAT Format) override;  // resources_multisample.cpp
     void ClearState() override;
     void Flush() override;
     // Queries (queries.cpp).

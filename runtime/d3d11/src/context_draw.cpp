@@ -49,9 +49,9 @@ void Context::bindStage(int stage, const ShaderBindings& bindings, const Stage& 
         if (u.glUnit < 0 || u.glUnit >= kMaxTextureSlots) continue;
         const ShaderResourceView* v =
             u.textureSlot >= 0 && std::size_t(u.textureSlot) < s.views.size() ? s.views[std::size_t(u.textureSlot)].Get() : nullptr;
-        if (v && !v->texture)
+        if (v && !v->sampled())
             throw InvalidOperation("t" + std::to_string(u.textureSlot) + " holds a view of a buffer where the shader samples a texture");
-        core.Textures[u.glUnit] = v ? v->texture->sampled() : nullptr;
+        core.Textures[u.glUnit] = v ? v->sampled() : nullptr;
         const SamplerState* st =
             u.samplerSlot >= 0 && std::size_t(u.samplerSlot) < s.samplers.size() ? s.samplers[std::size_t(u.samplerSlot)].Get() : nullptr;
         core.SamplerStates[u.glUnit] = st ? st->state : defaultSampler_;

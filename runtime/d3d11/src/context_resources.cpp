@@ -114,6 +114,8 @@ void Context::CopyResource(ID3D11Resource* pDst, ID3D11Resource* pSrc) {
         if (td->desc.Width != ts->desc.Width || td->desc.Height != ts->desc.Height || td->desc.Format != ts->desc.Format ||
             td->levels != ts->levels)
             return fail(E_INVALIDARG, "CopyResource: the textures differ in size, format or mip levels");
+        if (td->desc.SampleDesc.Count != ts->desc.SampleDesc.Count)
+            return fail(E_INVALIDARG, "CopyResource: the textures differ in SampleDesc.Count (a multisampled texture is read through ResolveSubresource)");
         if (td->depth || ts->depth) return fail(E_NOTIMPL, "CopyResource: depth-stencil textures cannot be copied in fxport yet");
         if (td->cube || ts->cube) return fail(E_NOTIMPL, "CopyResource: cube textures cannot be copied in fxport yet");
         for (int level = 0; level < ts->levels; ++level) {
@@ -225,7 +227,7 @@ void Context::ClearDepthStencilView(ID3D11DepthStencilView* p, UINT flags, FLOAT
 
 void Context::GenerateMips(ID3D11ShaderResourceView* p) {
     auto* v = own<ShaderResourceView>(p, device_);
-    if (!v || !(v->texture->desc.MiscFlags & D3D11_RESOURCE_MISC_GENERATE_MIPS))
+    if (!v || !v->texture || !(v->texture->desc.MiscFlags & D3D11_RESOURCE_MISC_GENERATE_MIPS))
         return note("GenerateMips: the view's texture was not made with D3D11_RESOURCE_MISC_GENERATE_MIPS");
     guarded("GenerateMips", [&] {
         core::generateMips(*v->texture->colour);

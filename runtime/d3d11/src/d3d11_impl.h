@@ -20,6 +20,7 @@
 #include "fxport/graphics/render_target.h"
 #include "fxport/graphics/sampler_state.h"
 #include "fxport/graphics/texture.h"
+#include "fxport/graphics/texture_3d.h"
 #include "fxport/xlate/compiled_effect.h"
 #include "shader_bindings.h"
 
@@ -85,21 +86,39 @@ public:
     std::size_t levelBytes(int level) const;
 };
 
-// A view of a texture (texture set) or of a structured buffer (buffer set); it holds a reference.
+// A 3D texture (texture_3d.cpp): a volume shader resource, sampled through a TEXTURE3D view.
+class Volume final : public Object<ID3D11Texture3D> {
+public:
+    Volume(Device* device, const D3D11_TEXTURE3D_DESC& d) : Object(device), desc(d) {}
+    void GetType(D3D11_RESOURCE_DIMENSION* d) override { if (d) *d = D3D11_RESOURCE_DIMENSION_TEXTURE3D; }
+    void GetDesc(D3D11_TEXTURE3D_DESC* pDesc) override { if (pDesc) *pDesc = desc; }
+    D3D11_TEXTURE3D_DESC desc;
+    std::unique_ptr<fxport::Texture3D> texels;
+};
+
+// A view of a texture (texture set), of a 3D texture (volume set) or of a structured buffer
+// (buffer set); it holds a reference.
 class ShaderResourceView final : public Object<ID3D11ShaderResourceView> {
 public:
     ShaderResourceView(Device* device, Texture* viewed, const D3D11_SHADER_RESOURCE_VIEW_DESC& d)
         : Object(device), texture(viewed), desc(d) { texture->AddRef(); }
     ShaderResourceView(Device* device, Buffer* viewed, const D3D11_SHADER_RESOURCE_VIEW_DESC& d)
         : Object(device), buffer(viewed), desc(d) { buffer->AddRef(); }
+    ShaderResourceView(Device* device, Volume* viewed, const D3D11_SHADER_RESOURCE_VIEW_DESC& d)
+        : Object(device), volume(viewed), desc(d) { volume->AddRef(); }
     ~ShaderResourceView() override {
         typed.reset();  // before the buffer it reads may go
         resource()->Release();
     }
     void GetResource(ID3D11Resource** r) override { resource()->AddRef(); *r = resource(); }
     void GetDesc(D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc) override { if (pDesc) *pDesc = desc; }
-    ID3D11Resource* resource() const { return texture ? static_cast<ID3D11Resource*>(texture) : buffer; }
+    ID3D11Resource* resource() const {
+        return texture ? static_cast<ID3D11Resource*>(texture) : volume ? static_cast<ID3D11Resource*>(volume) : buffer;
+    }
+    // What a shader samples through the view; null for a view of a buffer.
+    fxport::Texture* sampled() const { return texture ? texture->sampled() : volume ? volume->texels.get() : nullptr; }
     Texture* texture = nullptr;
+    Volume* volume = nullptr;
     Buffer* buffer = nullptr;
     D3D11_SHADER_RESOURCE_VIEW_DESC desc;
     std::unique_ptr<core::TexelBuffer> typed;  // a typed buffer view (Buffer<T>)
@@ -248,6 +267,10 @@ const DepthFamily* depthFamilyOf(DXGI_FORMAT textureFormat);  // null: not one o
 // A view's Format for texture `t`: its own (or UNKNOWN), or the typeless depth family's view of
 // that kind; E_NOTIMPL/E_INVALIDARG naming `desc`.Format otherwise.
 HRESULT checkViewFormat(const char* call, const char* desc, DXGI_FORMAT viewFormat, const Texture& t, bool depthView);
+// CreateTexture2D's checks of a multisampled description (resources_multisample.cpp).
+HRESULT checkMultisampleDesc(const D3D11_TEXTURE2D_DESC& d, bool hasData);
+// CreateShaderResourceView of a 3D texture (resources_3d.cpp).
+HRESULT volumeShaderResourceView(Device* device, Volume* v, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc, ID3D11ShaderResourceView** pp);
 
 // --- a compiled-shader blob's content (compile.cpp)
 std::string narrowPath(const wchar_t* path);  // UTF-8
@@ -282,6 +305,8 @@ public:
     HRESULT CreateBuffer(const D3D11_BUFFER_DESC* pDesc, const D3D11_SUBRESOURCE_DATA* pInitialData, ID3D11Buffer** ppBuffer) override;
     HRESULT CreateTexture2D(const D3D11_TEXTURE2D_DESC* pDesc, const D3D11_SUBRESOURCE_DATA* pInitialData,
                             ID3D11Texture2D** ppTexture2D) override;
+    HRESULT CreateTexture3D(const D3D11_TEXTURE3D_DESC* pDesc, const D3D11_SUBRESOURCE_DATA* pInitialData,
+                            ID3D11Texture3D** ppTexture3D) override;
     HRESULT CreateShaderResourceView(ID3D11Resource* pResource, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc,
                                      ID3D11ShaderResourceView** ppSRView) override;
     HRESULT CreateRenderTargetView(ID3D11Resource* pResource, const D3D11_RENDER_TARGET_VIEW_DESC* pDesc,

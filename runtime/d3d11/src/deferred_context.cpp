@@ -147,6 +147,11 @@ public:
     void GenerateMips(ID3D11ShaderResourceView* v) override {
         act([held = ComPtr<ID3D11ShaderResourceView>(v)](auto& c) { c.GenerateMips(held.Get()); });
     }
+    void ResolveSubresource(ID3D11Resource* dst, UINT dstSub, ID3D11Resource* src, UINT srcSub, DXGI_FORMAT format) override {
+        act([to = ComPtr<ID3D11Resource>(dst), dstSub, from = ComPtr<ID3D11Resource>(src), srcSub, format](auto& c) {
+            c.ResolveSubresource(to.Get(), dstSub, from.Get(), srcSub, format);
+        });
+    }
     void Begin(ID3D11Asynchronous* q) override { act([held = ComPtr<ID3D11Asynchronous>(q)](auto& c) { c.Begin(held.Get()); }); }
     void End(ID3D11Asynchronous* q) override { act([held = ComPtr<ID3D11Asynchronous>(q)](auto& c) { c.End(held.Get()); }); }
     HRESULT GetData(ID3D11Asynchronous*, void*, UINT, UINT) override {

@@ -285,9 +285,9 @@ HRESULT Variable::Resource::SetResource(ID3D11ShaderResourceView* view) {
     auto* srv = dynamic_cast<ShaderResourceView*>(view);
     if (view && (!srv || &srv->device() != &v_.owner()->device()))
         return fail(E_INVALIDARG, "SetResource: the view was not made by the effect's device");
-    if (srv && !srv->texture) return fail(E_NOTIMPL, "SetResource: a view of a buffer; effect variables take texture views only in fxport");
+    if (srv && !srv->sampled()) return fail(E_NOTIMPL, "SetResource: a view of a buffer; effect variables take texture views only in fxport");
     return v_.set("SetResource", v_.is(EffectParameterClass::Object), [&](EffectParameter& p) {
-        p.SetValue(srv ? srv->texture->sampled() : nullptr);
+        p.SetValue(srv ? srv->sampled() : nullptr);
     });
 }
 

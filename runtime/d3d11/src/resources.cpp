@@ -1,4 +1,5 @@
-// Buffers and 2D textures: CreateBuffer, CreateTexture2D and their checks. A D3D buffer is one
+// Buffers and 2D textures: CreateBuffer, CreateTexture2D and their checks (multisampled ones'
+// in resources_multisample.cpp). A D3D buffer is one
 // device-core byte buffer whatever it is bound as; a texture is a Texture2D (a RenderTarget2D when
 // it may be rendered to), a depth buffer (BIND_DEPTH_STENCIL), or CPU memory (USAGE_STAGING, which
 // CopyResource and Map read and write, as D3D's staging resources are).
@@ -6,6 +7,7 @@
 #include <cstring>
 
 #include "d3d11_impl.h"
+#include "device/multisample_target.h"
 #include "guarded.h"
 
 namespace fxport::d3d11 {
@@ -151,7 +153,8 @@ HRESULT Device::CreateTexture2D(const D3D11_TEXTURE2D_DESC* pDesc, const D3D11_S
     if (d.ArraySize > 1 && !isCube)
         return fail(E_NOTIMPL, at + "ArraySize = " + std::to_string(d.ArraySize) + ": texture arrays are not supported yet");
     if (d.SampleDesc.Count == 0) return fail(E_INVALIDARG, at + "SampleDesc.Count = 0");
-    if (d.SampleDesc.Count > 1) return fail(E_NOTIMPL, at + "SampleDesc.Count = " + std::to_string(d.SampleDesc.Count) + ": no multisampling");
+    if (d.SampleDesc.Count > 1)
+        if (HRESULT hr = checkMultisampleDesc(d, pInitialData != nullptr); FAILED(hr)) return hr;
     if (d.MiscFlags & ~UINT(D3D11_RESOURCE_MISC_GENERATE_MIPS | D3D11_RESOURCE_MISC_TEXTURECUBE))
         return fail(E_NOTIMPL, at + "MiscFlags = " + std::to_string(d.MiscFlags) + ": only D3D11_RESOURCE_MISC_GENERATE_MIPS and TEXTURECUBE are supported");
     if (isCube)
@@ -208,6 +211,8 @@ HRESULT Device::CreateTexture2D(const D3D11_TEXTURE2D_DESC* pDesc, const D3D11_S
             t.depth = std::make_unique<core::DepthBuffer>(core(), *t.colour);
         } else if (depthTarget) {
             t.depth = std::make_unique<core::DepthBuffer>(core(), int(d.Width), int(d.Height), depth);
+        } else if (d.SampleDesc.Count > 1) {
+            t.colour = std::make_unique<core::MultisampleTarget>(core(), int(d.Width), int(d.Height), surface, int(d.SampleDesc.Count));
         } else if (isCube) {
             t.cube = std::make_unique<fxport::TextureCube>(core(), int(d.Width), false, surface);
         } else if (d.Usage == D3D11_USAGE_STAGING) {

@@ -235,7 +235,9 @@ HRESULT decodeRasterizer(const D3D11_RASTERIZER_DESC& d, fxport::RasterizerState
     out.DepthBias = float(d.DepthBias) / 16777216.0f;
     out.SlopeScaleDepthBias = d.SlopeScaledDepthBias;
     out.ScissorTestEnable = d.ScissorEnable != FALSE;
-    out.MultiSampleAntiAlias = d.MultisampleEnable != FALSE;
+    // D3D10.1+ rasterises triangles on a multisampled target per sample whatever MultisampleEnable
+    // says (it picks a line algorithm only); GL does so only with GL_MULTISAMPLE on.
+    out.MultiSampleAntiAlias = true;
     return S_OK;
 }
 

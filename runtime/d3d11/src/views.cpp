@@ -1,5 +1,5 @@
 // Shader-resource, render-target and depth-stencil views of 2D textures (the whole texture: one
-// format, all levels for SRVs, level 0 for RTVs and DSVs); shader-resource and unordered-access
+// format, all levels for SRVs, level 0 for RTVs and DSVs; TEXTURE2DMS views of multisampled ones); shader-resource and unordered-access
 // views of whole structured (StructuredBuffer<T>) and raw (ByteAddressBuffer) buffers, and
 // unordered-access views of level 0 of a 2D texture (RWTexture2D).
 #include <optional>
@@ -119,6 +119,7 @@ HRESULT Device::CreateShaderResourceView(ID3D11Resource* pResource, const D3D11_
                                          ID3D11ShaderResourceView** ppSRView) {
     const char* call = "CreateShaderResourceView";
     if (auto* b = dynamic_cast<Buffer*>(pResource); b && &b->device() == this) return bufferShaderResourceView(this, b, pDesc, ppSRView);
+    if (auto* v = dynamic_cast<Volume*>(pResource); v && &v->device() == this) return volumeShaderResourceView(this, v, pDesc, ppSRView);
     HRESULT hr;
     Texture* t = textureOf(this, pResource, call, hr);
     if (!t) return hr;
@@ -126,8 +127,12 @@ HRESULT Device::CreateShaderResourceView(ID3D11Resource* pResource, const D3D11_
         return fail(E_INVALIDARG, std::string(call) + ": the texture's BindFlags = " + std::to_string(t->desc.BindFlags) +
                                       " lack D3D11_BIND_SHADER_RESOURCE");
     if (HRESULT f = needsDescription(call, *t, pDesc != nullptr); FAILED(f)) return f;
-    // A cube texture is viewed as a cube (TEXTURECUBE), any other as a 2D texture.
-    const D3D11_SRV_DIMENSION dimension = t->cube ? D3D11_SRV_DIMENSION_TEXTURECUBE : D3D11_SRV_DIMENSION_TEXTURE2D;
+    // A cube texture is viewed as a cube (TEXTURECUBE), a multisampled one as TEXTURE2DMS, any other
+    // as a 2D texture.
+    const bool multisampled = t->desc.SampleDesc.Count > 1;
+    const D3D11_SRV_DIMENSION dimension = t->cube ? D3D11_SRV_DIMENSION_TEXTURECUBE
+                                          : multisampled ? D3D11_SRV_DIMENSION_TEXTURE2DMS
+                                                         : D3D11_SRV_DIMENSION_TEXTURE2D;
     const char* const member = t->cube ? "TextureCube" : "Texture2D";
     D3D11_SHADER_RESOURCE_VIEW_DESC d;
     d.Format = t->desc.Format;
@@ -135,13 +140,15 @@ HRESULT Device::CreateShaderResourceView(ID3D11Resource* pResource, const D3D11_
     d.Texture2D.MipLevels = d.TextureCube.MipLevels = t->desc.MipLevels;
     if (pDesc) {
         if (pDesc->ViewDimension != dimension)
-            return fail(pDesc->ViewDimension == D3D11_SRV_DIMENSION_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
+            return fail(pDesc->ViewDimension == D3D11_SRV_DIMENSION_UNKNOWN || multisampled || pDesc->ViewDimension == D3D11_SRV_DIMENSION_TEXTURE2DMS
+                            ? E_INVALIDARG
+                            : E_NOTIMPL,
                         std::string(call) + ": D3D11_SHADER_RESOURCE_VIEW_DESC.ViewDimension = " + std::to_string(pDesc->ViewDimension) +
-                            " (fxport views this texture as D3D11_SRV_DIMENSION_" + (t->cube ? "TEXTURECUBE" : "TEXTURE2D") + ")");
+                            " (fxport views this texture as D3D11_SRV_DIMENSION_" + (t->cube ? "TEXTURECUBE" : multisampled ? "TEXTURE2DMS" : "TEXTURE2D") + ")");
         if (HRESULT f = checkViewFormat(call, "D3D11_SHADER_RESOURCE_VIEW_DESC", pDesc->Format, *t, false); FAILED(f)) return f;
         const UINT first = t->cube ? pDesc->TextureCube.MostDetailedMip : pDesc->Texture2D.MostDetailedMip;
         const UINT levels = t->cube ? pDesc->TextureCube.MipLevels : pDesc->Texture2D.MipLevels;
-        if (first != 0 || (levels != UINT(-1) && levels != t->desc.MipLevels))
+        if (!multisampled && (first != 0 || (levels != UINT(-1) && levels != t->desc.MipLevels)))
             return fail(E_NOTIMPL, std::string(call) + ": D3D11_SHADER_RESOURCE_VIEW_DESC." + member + " = {MostDetailedMip " + std::to_string(first) +
                                        ", MipLevels " + std::to_string(levels) + "}: fxport views every level (0, -1)");
     }
@@ -162,11 +169,15 @@ HRESULT Device::CreateRenderTargetView(ID3D11Resource* pResource, const D3D11_RE
                                       " lack D3D11_BIND_RENDER_TARGET");
     D3D11_RENDER_TARGET_VIEW_DESC d;
     d.Format = t->desc.Format;
-    d.ViewDimension = D3D11_RTV_DIMENSION_TEXTURE2D;
+    const bool multisampled = t->desc.SampleDesc.Count > 1;
+    d.ViewDimension = multisampled ? D3D11_RTV_DIMENSION_TEXTURE2DMS : D3D11_RTV_DIMENSION_TEXTURE2D;
     if (pDesc) {
-        if (pDesc->ViewDimension != D3D11_RTV_DIMENSION_TEXTURE2D)
-            return fail(pDesc->ViewDimension == D3D11_RTV_DIMENSION_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
-                        std::string(call) + ": D3D11_RENDER_TARGET_VIEW_DESC.ViewDimension = " + std::to_string(pDesc->ViewDimension));
+        if (pDesc->ViewDimension != d.ViewDimension)
+            return fail(pDesc->ViewDimension == D3D11_RTV_DIMENSION_UNKNOWN || multisampled || pDesc->ViewDimension == D3D11_RTV_DIMENSION_TEXTURE2DMS
+                            ? E_INVALIDARG
+                            : E_NOTIMPL,
+                        std::string(call) + ": D3D11_RENDER_TARGET_VIEW_DESC.ViewDimension = " + std::to_string(pDesc->ViewDimension) +
+                            " (fxport views this texture as D3D11_RTV_DIMENSION_" + (multisampled ? "TEXTURE2DMS" : "TEXTURE2D") + ")");
         if (HRESULT f = checkViewFormat(call, "D3D11_RENDER_TARGET_VIEW_DESC", pDesc->Format, *t, false); FAILED(f)) return f;
         if (pDesc->Texture2D.MipSlice != 0)
             return fail(E_NOTIMPL, std::string(call) + ": D3D11_RENDER_TARGET_VIEW_DESC.Texture2D.MipSlice = " +

@@ -96,6 +96,7 @@ struct ColorAttachment {
 struct TextureCopy {
     BackendObject source = 0, destination = 0;
     bool cube = false;
+    bool multisampled = false;  // two multisampled textures of one sample count: every sample copied
     int sourceLevel = 0, destinationLevel = 0;
     int sourceX = 0, sourceY = 0, destinationX = 0, destinationY = 0;
     int width = 0, height = 0;
@@ -184,6 +185,19 @@ public:
     virtual void clearTexture(BackendObject texture, int level, const float (&rgba)[4]) = 0;
     virtual void generateMipmaps(BackendObject texture) = 0;
     virtual void copyTexture(const TextureCopy& copy) = 0;
+    // Volume (3D) textures: `levels` levels of width x height x depth texels. writeVolume uploads a
+    // whole level, slices front to back, rows top first; readTexture (face -1) reads one back so.
+    virtual BackendObject createVolumeTexture(SurfaceFormat format, int levels, int width, int height, int depth) = 0;
+    virtual void writeVolume(BackendObject texture, SurfaceFormat format, int level, int width, int height, int depth, const void* data) = 0;
+    // Multisampled 2D textures (D3D10+'s SampleDesc.Count > 1), fixed sample positions: render
+    // targets a shader reads sample by sample. `given` is the count the driver made (it may round
+    // up). copySamples copies level 0 between a multisampled and a single-sample texture of one
+    // size and format: a resolve (each pixel the average of its samples, for non-integer formats)
+    // or the other way (each sample the source's texel). multisampledUnits: the texture units a
+    // program's sampler2DMS uniforms read, one bit each.
+    virtual BackendObject createMultisampleTexture(SurfaceFormat format, int samples, int width, int height, int& given) = 0;
+    virtual void copySamples(BackendObject source, BackendObject destination, int width, int height) = 0;
+    virtual unsigned multisampledUnits(BackendObject program) = 0;
 
     // Depth/stencil buffers (renderbuffers) and framebuffers. createFramebuffer returns 0 and says
     // why in `problem` when the API cannot draw to that combination. clearDepthStencil clears a

@@ -55,6 +55,8 @@ struct ShaderProgram {
     mutable std::shared_ptr<const ComputeAnalysis> computeAnalysis;
     // Pixel shaders: texture fetches per fragment, counted at the first draw the tally sees.
     mutable std::optional<xlate::TextureFetches> textureFetches;
+    // The units its sampler2DMS uniforms read (a bit each), asked of the backend at its first draw.
+    mutable std::optional<unsigned> multisampledUnits;
 };
 
 // D3D9 render states GL core lacks, as the last EffectPass::Apply() set them (off unless its pass
@@ -167,6 +169,12 @@ struct GraphicsDevice::Impl {
     bool storageDirty = false;
     void storageBarrier();
     void forgetStorage(const GraphicsResource* resource);  // a disposed buffer or texture leaves its slots
+    // A single-sample 2D texture a shader reads as Texture2DMS (sample_copies.cpp): D3D reads its
+    // texels as sample 0, GL only through a multisampled texture, so a one-sample copy is made and
+    // refreshed at each draw that binds it so; released with the texture.
+    BackendObject sampleCopyOf(const Texture& texture);
+    void forgetSampleCopy(const Texture* texture);
+    std::map<const Texture*, BackendObject> sampleCopies;
     // Draws with the pipeline flush() set up, checking the tessellation stages agree with `patches`.
     void checkTessellation(bool patches, const char* what) const;
     bool patchDraw = false;  // set by DrawPatches around its flush
@@ -280,6 +288,8 @@ struct GraphicsDevice::Impl {
 
     // Backend object bookkeeping: every create/delete goes through these so liveGpuObjects() is exact.
     BackendObject createTexture(bool cube, SurfaceFormat format, int levels, int width, int height);
+    BackendObject createVolumeTexture(SurfaceFormat format, int levels, int width, int height, int depth);
+    BackendObject createMultisampleTexture(SurfaceFormat format, int samples, int width, int height, int& given);
     void deleteTexture(BackendObject& name);
     BackendObject createBuffer();
     void deleteBuffer(BackendObject& name);

@@ -153,6 +153,16 @@ SamplerState unfiltered(const SamplerState& s) {
     return out;
 }
 
+// How a shader's sampler names the texture it reads, for the mismatch message.
+const char* shapeName(xlate::TextureKind kind) {
+    switch (kind) {
+    case xlate::TextureKind::TextureCube: return "cube";
+    case xlate::TextureKind::Texture3D: return "3D";
+    case xlate::TextureKind::Texture1D: return "1D";
+    default: return "2D";
+    }
+}
+
 }  // namespace
 
 void GraphicsDevice::Impl::applyTextures() { applyTexturesOf(shaders.data(), shaders.size()); }
@@ -161,11 +171,13 @@ void GraphicsDevice::Impl::applyTexturesOf(const ShaderProgram* const* programs,
     for (std::size_t p = 0; p < count; ++p) {
         const ShaderProgram* program = programs[p];
         if (!program) continue;
+        if (!program->multisampledUnits) program->multisampledUnits = program->program ? backend->multisampledUnits(program->program) : 0u;
         for (const xlate::SamplerBinding& sampler : program->shader->samplers) {
             int unit = sampler.unit;
             if (unit < 0 || unit >= kMaxTextureSlots) continue;
             Texture* texture = device.Textures[unit].get();
             BackendObject name = texture ? texture->backendObject() : 0;
+            const bool readsSamples = ((*program->multisampledUnits >> unit) & 1u) != 0;
             if (texture) {
                 if (&texture->device() != &device)  // its GL name means nothing in this device's context
                     throw InvalidOperation("Draw: texture " + textureName(texture) + " in Textures[" + std::to_string(unit) +
@@ -175,12 +187,16 @@ void GraphicsDevice::Impl::applyTexturesOf(const ShaderProgram* const* programs,
                         throw InvalidOperation("Draw: texture " + textureName(texture) + " in Textures[" +
                                                std::to_string(unit) + "] is also the current render target; " +
                                                "set another render target (or clear the slot) before sampling it");
-                bool cube = texture->kind() == Texture::Kind::TextureCube;
-                if (cube != (sampler.kind == xlate::TextureKind::TextureCube))
-                    throw InvalidOperation(std::string("Draw: ") + program->label + " samples a " +
-                                           (cube ? "2D" : "cube") + " texture at unit " + std::to_string(unit) +
-                                           " but Textures[" + std::to_string(unit) + "] holds a " +
-                                           (cube ? "cube" : "2D") + " texture " + textureName(texture));
+                const bool cube = texture->kind() == Texture::Kind::TextureCube, volume = texture->kind() == Texture::Kind::Texture3D;
+                if (cube != (sampler.kind == xlate::TextureKind::TextureCube) || volume != (sampler.kind == xlate::TextureKind::Texture3D))
+                    throw InvalidOperation(std::string("Draw: ") + program->label + " samples a " + shapeName(sampler.kind) +
+                                           " texture at unit " + std::to_string(unit) + " but Textures[" + std::to_string(unit) +
+                                           "] holds a " + (cube ? "cube" : volume ? "3D" : "2D") + " texture " + textureName(texture));
+                if (texture->sampleCount() > 0 && !readsSamples)
+                    throw InvalidOperation(std::string("Draw: ") + program->label + " samples unit " + std::to_string(unit) + " as a Texture2D but Textures[" +
+                                           std::to_string(unit) + "] holds the multisampled texture " + textureName(texture) +
+                                           " (declare it Texture2DMS, or resolve it first)");
+                if (readsSamples && texture->sampleCount() == 0) name = sampleCopyOf(*texture);
             }
             if (shadow.unknown() || boundTextures[std::size_t(unit)] != name) {
                 backend->bindTexture(unit, name);

@@ -426,6 +426,8 @@ void copyTexture(Texture& destination, const Texture& source) {
     if (destination.Format() != source.Format() || destination.LevelCount() != source.LevelCount() ||
         destination.kind() != source.kind())
         throw ArgumentError("CopyResource: the textures differ in format, kind or level count");
+    if (destination.sampleCount() != source.sampleCount())
+        throw ArgumentError("CopyResource: the textures differ in sample count (a multisampled texture is read through ResolveSubresource)");
     d.resolvePendingClearBeforeRead(&source);
     const bool cube = source.kind() == Texture::Kind::TextureCube;
     for (int level = 0; level < source.LevelCount(); ++level) {
@@ -437,6 +439,7 @@ void copyTexture(Texture& destination, const Texture& source) {
         copy.source = source.backendObject();
         copy.destination = destination.backendObject();
         copy.cube = cube;
+        copy.multisampled = source.sampleCount() > 0;
         copy.sourceLevel = copy.destinationLevel = level;
         copy.width = size.Width;
         copy.height = size.Height;
@@ -449,6 +452,8 @@ void copyTextureRegion(Texture& destination, int destinationLevel, int x, int y,
     if (destination.Format() != source.Format()) throw ArgumentError("CopySubresourceRegion: the textures differ in format");
     if (destination.kind() != Texture::Kind::Texture2D || source.kind() != Texture::Kind::Texture2D)
         throw ArgumentError("CopySubresourceRegion: fxport copies regions of 2D textures only");
+    if (destination.sampleCount() > 0 || source.sampleCount() > 0)
+        throw ArgumentError("CopySubresourceRegion: fxport copies regions of single-sample textures only");
     if (sourceLevel < 0 || sourceLevel >= source.LevelCount() || destinationLevel < 0 || destinationLevel >= destination.LevelCount())
         throw ArgumentError("CopySubresourceRegion: level " + std::to_string(sourceLevel) + " -> " + std::to_string(destinationLevel) +
                             " is outside the textures' levels");

@@ -637,6 +637,16 @@ BackendObject GraphicsDevice::Impl::createTexture(bool cube, SurfaceFormat forma
     ++live.textures;
     return name;
 }
+BackendObject GraphicsDevice::Impl::createVolumeTexture(SurfaceFormat format, int levels, int width, int height, int depth) {
+    const BackendObject name = backend->createVolumeTexture(format, levels, width, height, depth);
+    ++live.textures;
+    return name;
+}
+BackendObject GraphicsDevice::Impl::createMultisampleTexture(SurfaceFormat format, int samples, int width, int height, int& given) {
+    const BackendObject name = backend->createMultisampleTexture(format, samples, width, height, given);
+    ++live.textures;
+    return name;
+}
 void GraphicsDevice::Impl::deleteTexture(BackendObject& name) {
     if (!name) return;
     for (int unit = 0; unit < kMaxTextureSlots; ++unit)

@@ -43,6 +43,7 @@ void Texture::releaseGpuObjects() {
         if (device().Textures[slot].get() == this) device().Textures[slot] = nullptr;
     for (Effect* effect : d.effects) effectImpl(*effect).forgetTexture(this);
     d.forgetStorage(this);
+    d.forgetSampleCopy(this);
     d.dropFramebuffersUsing(name_);
     d.deleteTexture(name_);
 }
@@ -50,6 +51,7 @@ void Texture::releaseGpuObjects() {
 int Texture::levelWidth(int base, int level) const { return std::max(1, base >> level); }
 
 void Texture::writeTexels(int face, int level, int x, int y, int w, int h, const void* data, std::size_t bytes, std::size_t elementSize) {
+    if (samples_ > 0) throw InvalidOperation(describe() + ": SetData on a multisampled texture (its samples are written by draws only)");
     std::size_t expected = std::size_t(w) * std::size_t(h) * std::size_t(bytesPerPixel(format_));
     if (bytes != expected) {
         // In the caller's units: SetData(data, count) counts elements, not bytes.
@@ -66,6 +68,7 @@ void Texture::writeTexels(int face, int level, int x, int y, int w, int h, const
 }
 
 void Texture::readTexels(int face, int level, void* data, std::size_t bytes) const {
+    if (samples_ > 0) throw InvalidOperation(describe() + ": GetData on a multisampled texture (resolve it into a single-sample one first)");
     GraphicsDevice::Impl& d = deviceImpl(device());
     d.resolvePendingClearBeforeRead(this);
     d.backend->readTexture(name_, format_, face, level, bytes, data);

@@ -190,7 +190,12 @@ void GlBackend::setBlend(const BlendState& w, const BlendState* had) {
         unsigned m = unsigned(wanted[i]);
         glColorMaski(i, (m & 1) != 0, (m & 2) != 0, (m & 4) != 0, (m & 8) != 0);
     }
-    if (forceAll || w.MultiSampleMask != a.MultiSampleMask) glSampleMaski(0, GLbitfield(w.MultiSampleMask));
+    if (forceAll || w.MultiSampleMask != a.MultiSampleMask) {
+        // GL applies the mask only with GL_SAMPLE_MASK on; all ones (-1) is D3D's default, no masking.
+        if (w.MultiSampleMask == -1) glDisable(GL_SAMPLE_MASK);
+        else glEnable(GL_SAMPLE_MASK);
+        glSampleMaski(0, GLbitfield(w.MultiSampleMask));
+    }
 }
 
 void GlBackend::setDepthStencil(const DepthStencilState& w, const DepthStencilState* had) {

@@ -82,6 +82,11 @@ public:
     void clearTexture(BackendObject texture, int level, const float (&rgba)[4]) override;
     void generateMipmaps(BackendObject texture) override { glGenerateTextureMipmap(texture); }
     void copyTexture(const TextureCopy& copy) override;
+    BackendObject createVolumeTexture(SurfaceFormat format, int levels, int width, int height, int depth) override;
+    void writeVolume(BackendObject texture, SurfaceFormat format, int level, int width, int height, int depth, const void* data) override;
+    BackendObject createMultisampleTexture(SurfaceFormat format, int samples, int width, int height, int& given) override;
+    void copySamples(BackendObject source, BackendObject destination, int width, int height) override;
+    unsigned multisampledUnits(BackendObject program) override;
 
     BackendObject createRenderbuffer() override;
     void deleteRenderbuffer(BackendObject renderbuffer) override { glDeleteRenderbuffers(1, &renderbuffer); }

@@ -111,6 +111,46 @@ BackendObject GlBackend::createTexture(bool cube, SurfaceFormat format, int leve
     return name;
 }
 
+BackendObject GlBackend::createVolumeTexture(SurfaceFormat format, int levels, int width, int height, int depth) {
+    GLuint name = 0;
+    glCreateTextures(GL_TEXTURE_3D, 1, &name);
+    glTextureStorage3D(name, levels, detail::glFormat(format).internalFormat, width, height, depth);
+    applyD3D9Swizzle(name, format);
+    return name;
+}
+
+BackendObject GlBackend::createMultisampleTexture(SurfaceFormat format, int samples, int width, int height, int& given) {
+    GLuint name = 0;
+    glCreateTextures(GL_TEXTURE_2D_MULTISAMPLE, 1, &name);
+    glTextureStorage2DMultisample(name, samples, detail::glFormat(format).internalFormat, width, height, GL_TRUE);
+    GLint made = 0;
+    glGetTextureLevelParameteriv(name, 0, GL_TEXTURE_SAMPLES, &made);
+    given = made;
+    applyD3D9Swizzle(name, format);
+    return name;
+}
+
+unsigned GlBackend::multisampledUnits(BackendObject program) {
+    GLint count = 0;
+    glGetProgramInterfaceiv(program, GL_UNIFORM, GL_ACTIVE_RESOURCES, &count);
+    unsigned units = 0;
+    for (GLint i = 0; i < count; ++i) {
+        const GLenum properties[3] = {GL_TYPE, GL_LOCATION, GL_ARRAY_SIZE};
+        GLint values[3] = {0, -1, 0};
+        glGetProgramResourceiv(program, GL_UNIFORM, GLuint(i), 3, properties, 3, nullptr, values);
+        const GLenum type = GLenum(values[0]);
+        if (values[1] < 0 || (type != GL_SAMPLER_2D_MULTISAMPLE && type != GL_INT_SAMPLER_2D_MULTISAMPLE &&
+                              type != GL_UNSIGNED_INT_SAMPLER_2D_MULTISAMPLE))
+            continue;
+        for (GLint element = 0; element < std::max(values[2], 1); ++element) {
+            GLint unit = -1;
+            glGetUniformiv(program, values[1] + element, &unit);
+            if (unit >= 0 && unit < 32) units |= 1u << unit;
+        }
+    }
+    return units;
+}
+
 BackendObject GlBackend::createBufferTexture(BackendObject buffer, SurfaceFormat format, std::size_t bytes) {
     GLuint name = 0;
     glCreateTextures(GL_TEXTURE_BUFFER, 1, &name);

@@ -48,6 +48,32 @@ void GlBackend::writeTexture(BackendObject texture, SurfaceFormat format, int fa
         glTextureSubImage3D(texture, level, area.X, area.Y, face, area.Width, area.Height, 1, f.format, f.type, data);
 }
 
+void GlBackend::writeVolume(BackendObject texture, SurfaceFormat format, int level, int width, int height, int depth, const void* data) {
+    const detail::GlTextureFormat& f = detail::glFormat(format);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTextureSubImage3D(texture, level, 0, 0, 0, width, height, depth, f.format, f.type, data);
+}
+
+void GlBackend::copySamples(BackendObject source, BackendObject destination, int width, int height) {
+    GLuint fbos[2] = {0, 0};
+    glCreateFramebuffers(2, fbos);
+    glNamedFramebufferTexture(fbos[0], GL_COLOR_ATTACHMENT0, source, 0);
+    glNamedFramebufferReadBuffer(fbos[0], GL_COLOR_ATTACHMENT0);
+    glNamedFramebufferTexture(fbos[1], GL_COLOR_ATTACHMENT0, destination, 0);
+    glNamedFramebufferDrawBuffer(fbos[1], GL_COLOR_ATTACHMENT0);
+    // A blit is clipped by the scissor test and writes through the colour mask, neither of which a
+    // resolve has: both are set aside for it and put back.
+    const GLboolean scissor = glIsEnabled(GL_SCISSOR_TEST);
+    GLboolean mask[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
+    glGetBooleanv(GL_COLOR_WRITEMASK, mask);  // draw buffer 0's
+    glDisable(GL_SCISSOR_TEST);
+    glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glBlitNamedFramebuffer(fbos[0], fbos[1], 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glColorMaski(0, mask[0], mask[1], mask[2], mask[3]);
+    if (scissor) glEnable(GL_SCISSOR_TEST);
+    glDeleteFramebuffers(2, fbos);
+}
+
 void GlBackend::readTexture(BackendObject texture, SurfaceFormat format, int face, int level, std::size_t bytes, void* out) {
     const detail::GlTextureFormat& f = detail::glFormat(format);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
@@ -79,7 +105,7 @@ Rectangle GlBackend::textureLevelSize(BackendObject texture, int level) {
 }
 
 void GlBackend::copyTexture(const TextureCopy& c) {
-    const GLenum target = c.cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
+    const GLenum target = c.cube ? GL_TEXTURE_CUBE_MAP : c.multisampled ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D;
     glCopyImageSubData(c.source, target, c.sourceLevel, c.sourceX, c.sourceY, 0, c.destination, target, c.destinationLevel,
                        c.destinationX, c.destinationY, 0, c.width, c.height, c.cube ? 6 : 1);
 }

@@ -60,6 +60,10 @@ class ID3D11Texture2D : public ID3D11Resource {
 public:
     virtual void GetDesc(D3D11_TEXTURE2D_DESC* pDesc) = 0;
 };
+class ID3D11Texture3D : public ID3D11Resource {
+public:
+    virtual void GetDesc(D3D11_TEXTURE3D_DESC* pDesc) = 0;
+};
 
 class ID3D11View : public ID3D11DeviceChild {
 public:
@@ -189,6 +193,9 @@ public:
     virtual void ClearDepthStencilView(ID3D11DepthStencilView* pDepthStencilView, UINT ClearFlags, FLOAT Depth,
                                        UINT8 Stencil) = 0;
     virtual void GenerateMips(ID3D11ShaderResourceView* pShaderResourceView) = 0;
+    // A multisampled texture's pixels (each the average of its samples) into a single-sample one.
+    virtual void ResolveSubresource(ID3D11Resource* pDstResource, UINT DstSubresource, ID3D11Resource* pSrcResource, UINT SrcSubresource,
+                                    DXGI_FORMAT Format) = 0;
     virtual void Begin(ID3D11Asynchronous* pAsync) = 0;
     virtual void End(ID3D11Asynchronous* pAsync) = 0;
     virtual HRESULT GetData(ID3D11Asynchronous* pAsync, void* pData, UINT DataSize, UINT GetDataFlags) = 0;
@@ -212,6 +219,8 @@ public:
                                  ID3D11Buffer** ppBuffer) = 0;
     virtual HRESULT CreateTexture2D(const D3D11_TEXTURE2D_DESC* pDesc, const D3D11_SUBRESOURCE_DATA* pInitialData,
                                     ID3D11Texture2D** ppTexture2D) = 0;
+    virtual HRESULT CreateTexture3D(const D3D11_TEXTURE3D_DESC* pDesc, const D3D11_SUBRESOURCE_DATA* pInitialData,
+                                    ID3D11Texture3D** ppTexture3D) = 0;
     virtual HRESULT CreateShaderResourceView(ID3D11Resource* pResource, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc,
                                              ID3D11ShaderResourceView** ppSRView) = 0;
     virtual HRESULT CreateRenderTargetView(ID3D11Resource* pResource, const D3D11_RENDER_TARGET_VIEW_DESC* pDesc,

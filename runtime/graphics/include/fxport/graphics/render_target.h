@@ -35,7 +35,9 @@ public:
 
     DepthFormat DepthStencilFormat() const { return depth_.format; }
     fxport::RenderTargetUsage RenderTargetUsage() const { return usage_; }
-    int MultiSampleCount() const { return 0; }  // multisampling is not implemented; 0 as XNA reports
+    // XNA's preferredMultiSampleCount is not honoured (0, as XNA reports no multisampling); the
+    // D3D11 front end's multisampled targets (device core's MultisampleTarget) report their count.
+    int MultiSampleCount() const { return samples_; }
     bool isRenderTarget() const override { return true; }
     // The depth/stencil buffer's GL name: 0 until a draw needs it (LazyDepthStorage) or for None.
     std::uint32_t depthRenderbuffer() const { return depth_.renderbuffer; }

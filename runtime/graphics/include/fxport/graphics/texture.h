@@ -19,7 +19,7 @@ enum class CubeMapFace : std::uint8_t { PositiveX, NegativeX, PositiveY, Negativ
 
 class Texture : public GraphicsResource {
 public:
-    enum class Kind : std::uint8_t { Texture2D, TextureCube };
+    enum class Kind : std::uint8_t { Texture2D, TextureCube, Texture3D };
 
     SurfaceFormat Format() const { return format_; }
     int LevelCount() const { return levels_; }
@@ -28,6 +28,9 @@ public:
     std::uint32_t backendObject() const { return name_; }
     // True for RenderTarget2D / RenderTargetCube.
     virtual bool isRenderTarget() const { return false; }
+    // fxport: samples per texel of a multisampled texture (D3D11's SampleDesc.Count > 1), 0 for
+    // any other. Its texels are not read or written directly: a resolve reads them.
+    int sampleCount() const { return samples_; }
 
 protected:
     Texture(fxport::GraphicsDevice& device, const char* typeName, Kind kind, SurfaceFormat format, int levels);
@@ -39,6 +42,7 @@ protected:
     int levelWidth(int base, int level) const;
 
     std::uint32_t name_ = 0;
+    int samples_ = 0;
     SurfaceFormat format_;
     int levels_;
     Kind kind_;

@@ -389,6 +389,7 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
     TargetKeys targetKeys{};
     for (std::size_t i = 0; i < boundCount; ++i) {
         const SurfaceFormat format = bindings[i].RenderTarget->Format();
+        if (bindings[i].RenderTarget->sampleCount() > 0) return fallBack("multisampled target");  // an image2D cannot hold its samples
         detail::ComputeTarget t;
         // Targets past the pixel shader's outputs are left alone (draw_state.cpp, blendForPixelShader).
         t.writeMask = int(i) < pixel->shader->outputTargets ? unsigned(masks[i]) & 15u : 0u;
