@@ -3,7 +3,8 @@
 // which 4 of the 16 a row is (row-major: floats 4r..4r+3; column-major: floats r, r+4, r+8, r+12).
 // The include test serves headers from memory and checks the calls D3D documents: Open for each
 // #include the preprocessor reaches (not those in skipped #if branches), LOCAL for "x" and SYSTEM
-// for <x>, the parent's data for a nested one, one Close per Open.
+// for <x>, the parent's data for a nested one, one Close per Open, each file closed when the
+// preprocessor is done with it (before the next #include of an outer file).
 #include <map>
 #include <set>
 
@@ -97,6 +98,7 @@ public:
     std::vector<Call> opens;
     std::multiset<LPCVOID> open;  // opened, not yet closed
     int closes = 0;
+    std::vector<std::string> sequence;  // "open NAME" / "close NAME", in call order
 
     HRESULT Open(D3D_INCLUDE_TYPE type, LPCSTR name, LPCVOID parent, LPCVOID* data, UINT* bytes) override {
         std::string parentName;
@@ -108,10 +110,13 @@ public:
         *data = it->second.data();
         *bytes = UINT(it->second.size());
         open.insert(*data);
+        sequence.push_back("open " + std::string(name));
         return S_OK;
     }
     HRESULT Close(LPCVOID data) override {
         ++closes;
+        for (const auto& [file, text] : files)
+            if (data == text.data()) sequence.push_back("close " + file);
         auto it = open.find(data);
         if (it == open.end()) return E_FAIL;
         open.erase(it);
@@ -142,6 +147,10 @@ TEST(D3D11CompileOptions, IncludeHandlerReadsEveryReachedInclude) {
     EXPECT_EQ(include.opens[2].parent, "outer.hlsli");
     EXPECT_EQ(include.closes, 3);
     EXPECT_TRUE(include.open.empty());
+    // D3DCompile closes each file when the preprocessor is done with it: a nested one before its
+    // includer, every one before the next #include of an outer file.
+    EXPECT_EQ(include.sequence, (std::vector<std::string>{"open system.hlsli", "close system.hlsli", "open outer.hlsli", "open inner.hlsli",
+                                                          "close inner.hlsli", "close outer.hlsli"}));
 
     // The included code is what runs: Outer() = 2 * (1, 2, 3, INNER_W = 4).
     Device d;

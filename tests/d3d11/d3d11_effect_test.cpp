@@ -4,6 +4,10 @@
 // computation of the effect's math (2/255). Invalid names and wrong-kind variables fail as in Effects11.
 #include <cmath>
 
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
 #include "d3d11_test_support.h"
 
 namespace d3d11test {
@@ -154,6 +158,33 @@ TEST(D3D11Effect, ASingleShaderBlobIsNotAnEffect) {
     EXPECT_EQ(D3DX11CreateEffectFromMemory(vs->GetBufferPointer(), vs->GetBufferSize(), 0, d.device.Get(), effect.GetAddressOf()),
               E_INVALIDARG);
     EXPECT_NE(lastError().find("fx_5_0"), std::string::npos) << lastError();
+}
+
+// fxc accepts an effect without a technique from fx_4_0 on (variables only, as for an effect
+// pool); fx_2_0 refuses it (FX1003). D3DX11CreateEffectFromFile compiles for fx_5_0, and D3DCompile
+// applies the fx_* target it is given.
+TEST(D3D11Effect, EffectsWithoutTechniquesFollowTheFxProfile) {
+    Device d;
+    const std::string source = "float4 tint;\nmatrix world;\n";
+    ComPtr<ID3DBlob> code, errors;
+    ASSERT_EQ(D3DCompile(source.data(), source.size(), "pool.fx", nullptr, nullptr, nullptr, "fx_5_0", 0, 0, code.GetAddressOf(), errors.GetAddressOf()),
+              S_OK)
+        << lastError();
+    ComPtr<ID3DX11Effect> effect;
+    ASSERT_EQ(D3DX11CreateEffectFromMemory(code->GetBufferPointer(), code->GetBufferSize(), 0, d.device.Get(), effect.GetAddressOf()), S_OK)
+        << lastError();
+    D3DX11_EFFECT_DESC desc;
+    ASSERT_EQ(effect->GetDesc(&desc), S_OK);
+    EXPECT_EQ(desc.Techniques, 0u);
+    EXPECT_EQ(D3DCompile(source.data(), source.size(), "pool.fx", nullptr, nullptr, nullptr, "fx_2_0", 0, 0, code.GetAddressOf(), errors.GetAddressOf()),
+              E_FAIL);
+    EXPECT_NE(lastError().find("FX1003"), std::string::npos) << lastError();
+
+    const std::string path = (std::filesystem::temp_directory_path() / "fxport_effect_pool.fx").string();
+    std::ofstream(path) << source;
+    ComPtr<ID3DX11Effect> fromFile;
+    EXPECT_EQ(D3DX11CreateEffectFromFile(path.c_str(), 0, d.device.Get(), fromFile.GetAddressOf()), S_OK) << lastError();
+    std::remove(path.c_str());
 }
 
 }  // namespace

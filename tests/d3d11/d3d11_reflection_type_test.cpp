@@ -79,5 +79,70 @@ TEST(D3D11ReflectionType, StructMembersHaveD3DOffsetsNamesAndTypes) {
     EXPECT_EQ(other->GetMemberTypeByIndex(0)->GetDesc(&m), E_FAIL);
 }
 
+// Structs three levels deep, and an array of structs inside a struct: every level's members at
+// D3D's offsets from their own struct's start (worked out by hand below), recursively through
+// GetMemberTypeByIndex / ByName, and the cbuffer variables after them packed into their trailing space.
+const char* kNested = R"(
+struct Inner { float a; float2 b; };                 // a 0, b 4: 12 bytes
+struct Middle { float3 c; Inner inner; float d; };   // c 0; inner starts a register: 16 (12 bytes); d 28: 32 bytes
+struct Outer { float e; Middle m; Inner arr[2]; };   // e 0; m 16; arr 48, elements 16 apart: 48 + 16 + 12 = 76 bytes
+cbuffer N { float head; Outer o; float tail; };      // head 0; o 16 (76 bytes, to 92); tail 92
+float4 VS(float4 p : POSITION) : SV_Position {
+    return p * (head + o.e + o.m.c.y + o.m.inner.a + o.m.inner.b.y + o.m.d + o.arr[1].a + o.arr[0].b.x + tail);
+}
+)";
+
+UINT offsetOf(ID3D11ShaderReflectionType* t) {
+    D3D11_SHADER_TYPE_DESC d;
+    return t->GetDesc(&d) == S_OK ? d.Offset : 0xffffffffu;
+}
+UINT membersOf(ID3D11ShaderReflectionType* t) {
+    D3D11_SHADER_TYPE_DESC d;
+    return t->GetDesc(&d) == S_OK ? d.Members : 0xffffffffu;
+}
+
+TEST(D3D11ReflectionType, NestedStructsHaveD3DOffsetsAtEveryLevel) {
+    ComPtr<ID3DBlob> vs = compile(kNested, "VS", "vs_5_0", "nested.hlsl");
+    ASSERT_TRUE(vs);
+    ComPtr<ID3D11ShaderReflection> r;
+    ASSERT_EQ(D3DReflect(vs->GetBufferPointer(), vs->GetBufferSize(), r.GetAddressOf()), S_OK) << lastError();
+    ID3D11ShaderReflectionConstantBuffer* cb = r->GetConstantBufferByName("N");
+    D3D11_SHADER_VARIABLE_DESC v;
+    ASSERT_EQ(cb->GetVariableByName("o")->GetDesc(&v), S_OK);
+    EXPECT_EQ(v.StartOffset, 16u);
+    EXPECT_EQ(v.Size, 76u);
+    ASSERT_EQ(cb->GetVariableByName("tail")->GetDesc(&v), S_OK);
+    EXPECT_EQ(v.StartOffset, 92u);
+
+    ID3D11ShaderReflectionType* outer = cb->GetVariableByName("o")->GetType();
+    ASSERT_EQ(membersOf(outer), 3u);
+    EXPECT_EQ(offsetOf(outer->GetMemberTypeByName("e")), 0u);
+    ID3D11ShaderReflectionType* middle = outer->GetMemberTypeByName("m");
+    EXPECT_EQ(offsetOf(middle), 16u);
+    ASSERT_EQ(membersOf(middle), 3u);
+    EXPECT_EQ(offsetOf(middle->GetMemberTypeByIndex(0)), 0u);   // c
+    ID3D11ShaderReflectionType* inner = middle->GetMemberTypeByIndex(1);
+    EXPECT_STREQ(middle->GetMemberTypeName(1), "inner");
+    EXPECT_EQ(offsetOf(inner), 16u);
+    EXPECT_EQ(offsetOf(middle->GetMemberTypeByName("d")), 28u);
+    ASSERT_EQ(membersOf(inner), 2u);  // the third level
+    EXPECT_EQ(offsetOf(inner->GetMemberTypeByName("a")), 0u);
+    EXPECT_EQ(offsetOf(inner->GetMemberTypeByName("b")), 4u);
+    D3D11_SHADER_TYPE_DESC b;
+    ASSERT_EQ(inner->GetMemberTypeByName("b")->GetDesc(&b), S_OK);
+    EXPECT_EQ(b.Class, D3D_SVC_VECTOR);
+    EXPECT_EQ(b.Columns, 2u);
+
+    ID3D11ShaderReflectionType* arr = outer->GetMemberTypeByName("arr");
+    D3D11_SHADER_TYPE_DESC a;
+    ASSERT_EQ(arr->GetDesc(&a), S_OK);
+    EXPECT_EQ(a.Class, D3D_SVC_STRUCT);
+    EXPECT_EQ(a.Elements, 2u);
+    EXPECT_EQ(a.Offset, 48u);
+    ASSERT_EQ(a.Members, 2u);
+    EXPECT_EQ(offsetOf(arr->GetMemberTypeByName("b")), 4u);  // within one element
+    EXPECT_EQ(arr->GetMemberTypeByName("a")->IsEqual(inner->GetMemberTypeByName("a")), S_OK);
+}
+
 }  // namespace
 }  // namespace d3d11test

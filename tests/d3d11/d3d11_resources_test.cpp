@@ -10,38 +10,13 @@ namespace {
 
 struct ResourcesTest : ::testing::Test {
     Device d;
-
-    ComPtr<ID3D11Buffer> buffer(UINT bytes, D3D11_USAGE usage, UINT bind, UINT cpu, const void* data = nullptr) {
-        D3D11_BUFFER_DESC desc;
-        desc.ByteWidth = bytes;
-        desc.Usage = usage;
-        desc.BindFlags = bind;
-        desc.CPUAccessFlags = cpu;
-        D3D11_SUBRESOURCE_DATA init;
-        init.pSysMem = data;
-        ComPtr<ID3D11Buffer> b;
-        EXPECT_EQ(d.device->CreateBuffer(&desc, data ? &init : nullptr, b.GetAddressOf()), S_OK) << lastError();
-        return b;
-    }
-    // The bytes of a GPU buffer, through a staging copy.
-    std::vector<std::uint8_t> readBuffer(ID3D11Buffer* b) {
-        D3D11_BUFFER_DESC desc;
-        b->GetDesc(&desc);
-        ComPtr<ID3D11Buffer> staging = buffer(desc.ByteWidth, D3D11_USAGE_STAGING, 0, D3D11_CPU_ACCESS_READ);
-        d.context->CopyResource(staging.Get(), b);
-        D3D11_MAPPED_SUBRESOURCE m;
-        EXPECT_EQ(d.context->Map(staging.Get(), 0, D3D11_MAP_READ, 0, &m), S_OK) << lastError();
-        std::vector<std::uint8_t> out(static_cast<std::uint8_t*>(m.pData), static_cast<std::uint8_t*>(m.pData) + desc.ByteWidth);
-        d.context->Unmap(staging.Get(), 0);
-        return out;
-    }
 };
 
 TEST_F(ResourcesTest, BufferInitialDataUpdateSubresourceAndCopyReadBack) {
     std::vector<std::uint8_t> bytes(64);
     for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = std::uint8_t(i * 3 + 1);
-    ComPtr<ID3D11Buffer> b = buffer(64, D3D11_USAGE_DEFAULT, D3D11_BIND_VERTEX_BUFFER, 0, bytes.data());
-    EXPECT_EQ(readBuffer(b.Get()), bytes);
+    ComPtr<ID3D11Buffer> b = makeBuffer(d, bytes.data(), 64, D3D11_BIND_VERTEX_BUFFER);
+    EXPECT_EQ(readBufferBytes(d, b.Get()), bytes);
     // A boxed update changes bytes [8, 12) only.
     const std::uint8_t patch[4] = {200, 201, 202, 203};
     D3D11_BOX box;
@@ -50,15 +25,21 @@ TEST_F(ResourcesTest, BufferInitialDataUpdateSubresourceAndCopyReadBack) {
     d.context->UpdateSubresource(b.Get(), 0, &box, patch, 0, 0);
     EXPECT_EQ(lastError(), "");
     std::memcpy(&bytes[8], patch, 4);
-    EXPECT_EQ(readBuffer(b.Get()), bytes);
+    EXPECT_EQ(readBufferBytes(d, b.Get()), bytes);
     // Buffer to buffer on the GPU.
-    ComPtr<ID3D11Buffer> copy = buffer(64, D3D11_USAGE_DEFAULT, D3D11_BIND_INDEX_BUFFER, 0);
+    ComPtr<ID3D11Buffer> copy = makeBuffer(d, nullptr, 64, D3D11_BIND_INDEX_BUFFER);
     d.context->CopyResource(copy.Get(), b.Get());
-    EXPECT_EQ(readBuffer(copy.Get()), bytes);
+    EXPECT_EQ(readBufferBytes(d, copy.Get()), bytes);
 }
 
 TEST_F(ResourcesTest, DynamicBufferWriteDiscardReachesTheGpu) {
-    ComPtr<ID3D11Buffer> cb = buffer(32, D3D11_USAGE_DYNAMIC, D3D11_BIND_CONSTANT_BUFFER, D3D11_CPU_ACCESS_WRITE);
+    D3D11_BUFFER_DESC dynamic;
+    dynamic.ByteWidth = 32;
+    dynamic.Usage = D3D11_USAGE_DYNAMIC;
+    dynamic.BindFlags = D3D11_BIND_CONSTANT_BUFFER;
+    dynamic.CPUAccessFlags = D3D11_CPU_ACCESS_WRITE;
+    ComPtr<ID3D11Buffer> cb;
+    ASSERT_EQ(d.device->CreateBuffer(&dynamic, nullptr, cb.GetAddressOf()), S_OK) << lastError();
     for (int round = 0; round < 2; ++round) {
         D3D11_MAPPED_SUBRESOURCE m;
         ASSERT_EQ(d.context->Map(cb.Get(), 0, D3D11_MAP_WRITE_DISCARD, 0, &m), S_OK) << lastError();
@@ -69,15 +50,15 @@ TEST_F(ResourcesTest, DynamicBufferWriteDiscardReachesTheGpu) {
         d.context->Unmap(cb.Get(), 0);
         // A constant buffer cannot be a copy source into staging on D3D either way: read it through
         // a DEFAULT copy.
-        ComPtr<ID3D11Buffer> copy = buffer(32, D3D11_USAGE_DEFAULT, D3D11_BIND_CONSTANT_BUFFER, 0);
+        ComPtr<ID3D11Buffer> copy = makeBuffer(d, nullptr, 32, D3D11_BIND_CONSTANT_BUFFER);
         d.context->CopyResource(copy.Get(), cb.Get());
-        std::vector<std::uint8_t> got = readBuffer(copy.Get());
+        std::vector<std::uint8_t> got = readBufferBytes(d, copy.Get());
         EXPECT_EQ(std::memcmp(got.data(), values, sizeof values), 0) << "round " << round;
     }
     // Map rules: READ on a dynamic buffer, Map of a DEFAULT buffer, a second Map.
     D3D11_MAPPED_SUBRESOURCE m;
     EXPECT_EQ(d.context->Map(cb.Get(), 0, D3D11_MAP_READ, 0, &m), E_INVALIDARG);
-    ComPtr<ID3D11Buffer> plain = buffer(16, D3D11_USAGE_DEFAULT, D3D11_BIND_VERTEX_BUFFER, 0);
+    ComPtr<ID3D11Buffer> plain = makeBuffer(d, nullptr, 16, D3D11_BIND_VERTEX_BUFFER);
     EXPECT_EQ(d.context->Map(plain.Get(), 0, D3D11_MAP_WRITE_DISCARD, 0, &m), E_INVALIDARG);
     EXPECT_NE(lastError().find("Usage = 0"), std::string::npos) << lastError();
     ASSERT_EQ(d.context->Map(cb.Get(), 0, D3D11_MAP_WRITE_DISCARD, 0, &m), S_OK);

@@ -19,27 +19,6 @@ namespace {
 
 
 
-// RGBA float texels of an R32G32B32A32_FLOAT texture, top row first.
-std::vector<float> readFloats(Device& d, ID3D11Texture2D* texture) {
-    D3D11_TEXTURE2D_DESC desc;
-    texture->GetDesc(&desc);
-    desc.Usage = D3D11_USAGE_STAGING;
-    desc.BindFlags = 0;
-    desc.CPUAccessFlags = D3D11_CPU_ACCESS_READ;
-    ComPtr<ID3D11Texture2D> staging;
-    EXPECT_EQ(d.device->CreateTexture2D(&desc, nullptr, staging.GetAddressOf()), S_OK) << lastError();
-    std::vector<float> out(std::size_t(desc.Width) * desc.Height * 4);
-    if (!staging) return out;
-    d.context->CopyResource(staging.Get(), texture);
-    D3D11_MAPPED_SUBRESOURCE mapped;
-    EXPECT_EQ(d.context->Map(staging.Get(), 0, D3D11_MAP_READ, 0, &mapped), S_OK) << lastError();
-    for (UINT y = 0; y < desc.Height && mapped.pData; ++y)
-        std::memcpy(&out[std::size_t(y) * desc.Width * 4], static_cast<const std::uint8_t*>(mapped.pData) + std::size_t(y) * mapped.RowPitch,
-                    std::size_t(desc.Width) * 16);
-    d.context->Unmap(staging.Get(), 0);
-    return out;
-}
-
 // A render target of `format` and its view, bound with a viewport over all of it.
 struct Target {
     ComPtr<ID3D11Texture2D> texture;
@@ -370,7 +349,7 @@ TEST_F(TessellationTest, QuadPatchMatchesTheDomainShaderOnTheCpu) {
     d.context->Draw(4, 0);
     ASSERT_EQ(lastError(), "");
 
-    std::vector<float> texels = readFloats(d, target.texture.Get());
+    const std::vector<float> texels = readTexels<float>(d, target.texture.Get(), 4);
     int inside = 0;
     double worstUV = 0, worstProduct = 0;
     for (int py = 0; py < size; ++py)
@@ -416,7 +395,7 @@ TEST_F(TessellationTest, Pow2PartitioningRoundsTheFactorUpToAPowerOfTwo) {
     d.context->DSSetShader(ds.Get(), nullptr, 0);
     d.context->Draw(4, 0);
     ASSERT_EQ(lastError(), "");
-    std::vector<float> texels = readFloats(d, target.texture.Get());
+    const std::vector<float> texels = readTexels<float>(d, target.texture.Get(), 4);
     std::set<float> us;
     for (int i = 0; i < size * size; ++i)
         if (texels[std::size_t(i) * 4 + 3] == 1.0f) us.insert(texels[std::size_t(i) * 4]);
@@ -470,10 +449,10 @@ TEST(D3D11Stages, MisuseIsAnsweredWithTheFieldAndValue) {
     D3D11_UNORDERED_ACCESS_VIEW_DESC uav;
     uav.ViewDimension = D3D11_UAV_DIMENSION_BUFFER;
     uav.Buffer.FirstElement = 1;
-    uav.Buffer.NumElements = 3;
+    uav.Buffer.NumElements = 4;
     ComPtr<ID3D11UnorderedAccessView> view;
-    EXPECT_EQ(d.device->CreateUnorderedAccessView(structured.Get(), &uav, view.GetAddressOf()), E_NOTIMPL);
-    EXPECT_NE(lastError().find("{FirstElement 1, NumElements 3}"), std::string::npos) << lastError();
+    EXPECT_EQ(d.device->CreateUnorderedAccessView(structured.Get(), &uav, view.GetAddressOf()), E_INVALIDARG);
+    EXPECT_NE(lastError().find("{FirstElement 1, NumElements 4}: the buffer has 4 elements"), std::string::npos) << lastError();
     uav.Buffer.FirstElement = 0;
     uav.Buffer.NumElements = 5;
     EXPECT_EQ(d.device->CreateUnorderedAccessView(structured.Get(), &uav, view.GetAddressOf()), E_INVALIDARG);
@@ -509,7 +488,7 @@ TEST(D3D11Stages, MisuseIsAnsweredWithTheFieldAndValue) {
     ASSERT_EQ(d.device->CreateUnorderedAccessView(wide.Get(), nullptr, wideView.GetAddressOf()), S_OK) << lastError();
     d.context->CSSetUnorderedAccessViews(0, 1, wideView.GetAddressOfConst(), nullptr);
     d.context->Dispatch(1, 1, 1);
-    EXPECT_NE(lastError().find("'Particles' (u0): its elements are 16 bytes in fxport's GL layout, the buffer's StructureByteStride is 32"),
+    EXPECT_NE(lastError().find("'Particles' (u0): its elements are 16 bytes, the buffer's StructureByteStride is 32 (D3D11 requires the shader's element size)"),
               std::string::npos)
         << lastError();
 }

@@ -29,10 +29,11 @@ ComPtr<ID3DBlob> compile(const std::string& source, const char* entry, const cha
 // Level 0 of `texture` as bytes, top row first, rows packed at `texelBytes` per texel (CopyResource
 // into a staging texture, Map READ).
 std::vector<std::uint8_t> readTexelBytes(Device& d, ID3D11Texture2D* texture, std::size_t texelBytes);
-// The same, as texels of type T (sizeof(T) bytes each: std::array<float, 4> for R32G32B32A32_FLOAT).
+// The same, as texels of type T (sizeof(T) bytes each: std::array<float, 4> for R32G32B32A32_FLOAT),
+// or as `perTexel` values of T each (float and 4 for R32G32B32A32_FLOAT: RGBA floats in a row).
 template <class T>
-std::vector<T> readTexels(Device& d, ID3D11Texture2D* texture) {
-    const std::vector<std::uint8_t> bytes = readTexelBytes(d, texture, sizeof(T));
+std::vector<T> readTexels(Device& d, ID3D11Texture2D* texture, std::size_t perTexel = 1) {
+    const std::vector<std::uint8_t> bytes = readTexelBytes(d, texture, sizeof(T) * perTexel);
     std::vector<T> out(bytes.size() / sizeof(T));
     std::memcpy(out.data(), bytes.data(), out.size() * sizeof(T));
     return out;

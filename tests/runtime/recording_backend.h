@@ -139,9 +139,11 @@ public:
     const char* imageFormatName(SurfaceFormat format) override {
         return format == SurfaceFormat::Color ? "rgba8" : format == SurfaceFormat::Single ? "r32f" : "";
     }
-    BackendObject createBufferTexture(BackendObject buffer, SurfaceFormat, std::size_t bytes) override {
-        return make("createBufferTexture " + std::to_string(buffer) + " " + std::to_string(bytes));
+    BackendObject createBufferTexture(BackendObject buffer, SurfaceFormat, std::size_t offset, std::size_t bytes) override {
+        return make("createBufferTexture " + std::to_string(buffer) + (offset ? "+" + std::to_string(offset) : std::string()) + " " +
+                    std::to_string(bytes));
     }
+    std::size_t bufferOffsetAlignment(bool) override { return 16; }
     BackendObject createTexture(bool cube, SurfaceFormat, int levels, int width, int height) override {
         const BackendObject t = make(std::string("createTexture ") + (cube ? "cube " : "2d ") + std::to_string(width) + "x" +
                                      std::to_string(height) + " levels " + std::to_string(levels));
@@ -248,8 +250,9 @@ public:
     }
     void deletePipeline(BackendObject pipeline) override { release("deletePipeline", pipeline); }
 
-    void bindStorageBuffer(int binding, BackendObject buffer) override {
-        calls.push_back("bindStorageBuffer " + std::to_string(binding) + " " + std::to_string(buffer));
+    void bindStorageBuffer(int binding, BackendObject buffer, std::size_t offset, std::size_t bytes) override {
+        calls.push_back("bindStorageBuffer " + std::to_string(binding) + " " + std::to_string(buffer) +
+                        (bytes ? " " + std::to_string(offset) + "+" + std::to_string(bytes) : std::string()));
     }
     void bindStorageImage(int unit, BackendObject texture, SurfaceFormat, bool writes) override {
         calls.push_back("bindStorageImage " + std::to_string(unit) + " " + std::to_string(texture) + (writes ? " writes" : " reads"));
@@ -272,6 +275,11 @@ public:
     void beginSamplesPassed(BackendObject query) override { calls.push_back("beginSamplesPassed " + std::to_string(query)); }
     void endSamplesPassed() override { calls.push_back("endSamplesPassed"); }
     void writeTimestamp(BackendObject query) override { calls.push_back("writeTimestamp " + std::to_string(query)); }
+    bool hasPipelineStatistics() override { return true; }
+    void beginStatistic(BackendObject query, QueryKind kind) override {
+        calls.push_back("beginStatistic " + std::to_string(query) + " " + std::to_string(int(kind)));
+    }
+    void endStatistic(QueryKind kind) override { calls.push_back("endStatistic " + std::to_string(int(kind))); }
     bool queryReady(BackendObject) override { return true; }
     std::uint64_t queryResult(BackendObject) override { return 0; }
 

@@ -75,6 +75,7 @@ HRESULT compile(const char* call, const std::string& path, const std::string* so
     if (packing == (D3DCOMPILE_PACK_MATRIX_ROW_MAJOR | D3DCOMPILE_PACK_MATRIX_COLUMN_MAJOR))
         return error(E_INVALIDARG, "Flags1 = " + std::to_string(flags) + ": D3DCOMPILE_PACK_MATRIX_ROW_MAJOR and D3DCOMPILE_PACK_MATRIX_COLUMN_MAJOR exclude each other");
     xlate::CompileOptions options;
+    if (effect) options.effectProfile = target;  // fxc's /T: fx_4_0 and fx_5_0 rules (an effect may have no technique)
     if (packing) options.defaultMatrixMajority = packing == D3DCOMPILE_PACK_MATRIX_ROW_MAJOR ? "row_major" : "column_major";
     for (const D3D_SHADER_MACRO* d = defines; d && d->Name; ++d) options.defines.emplace_back(d->Name, d->Definition ? d->Definition : "1");
     const std::vector<xlate::ShaderEntry> entries = {{path, entry ? entry : "", target}};

@@ -46,6 +46,8 @@ void Context::ClearState() {
     depthView_ = nullptr;
     effectPass_ = nullptr;
     effectOwner_ = nullptr;
+    predicate_ = nullptr;
+    predicateValue_ = FALSE;
     decodeBlend(D3D11_BLEND_DESC{}, defaultBlend_);
     decodeRasterizer(D3D11_RASTERIZER_DESC{}, defaultRasterizer_);
     decodeDepthStencil(D3D11_DEPTH_STENCIL_DESC{}, defaultDepthStencil_);

@@ -95,6 +95,10 @@ public:
     void Begin(ID3D11Asynchronous* pAsync) override;
     void End(ID3D11Asynchronous* pAsync) override;
     HRESULT GetData(ID3D11Asynchronous* pAsync, void* pData, UINT DataSize, UINT GetDataFlags) override;
+    void SetPredication(ID3D11Predicate* pPredicate, BOOL PredicateValue) override;
+    void GetPredication(ID3D11Predicate** ppPredicate, BOOL* pPredicateValue) override;
+    // Whether SetPredication's predicate skips a predicated call now (it waits for the result).
+    bool predicatedAway();
     // Command lists (deferred_context.cpp).
     D3D11_DEVICE_CONTEXT_TYPE GetType() override { return D3D11_DEVICE_CONTEXT_IMMEDIATE; }
     void ExecuteCommandList(ID3D11CommandList* pCommandList, BOOL RestoreContextState) override;
@@ -119,6 +123,9 @@ private:
     // The occlusion query between Begin and End (GL counts one at a time); held, so that it counts
     // until End even if its last other reference goes.
     ComPtr<Query> counting_;
+    ComPtr<Query> statistics_;  // the pipeline-statistics query between Begin and End (one at a time too)
+    ComPtr<Query> predicate_;   // SetPredication's
+    BOOL predicateValue_ = FALSE;
     // One shader stage's slots (each stage has its own, as in D3D).
     struct Stage {
         std::array<ComPtr<Buffer>, D3D11_COMMONSHADER_CONSTANT_BUFFER_API_SLOT_COUNT> constantBuffers;

@@ -60,15 +60,14 @@ void Context::bindStage(int stage, const ShaderBindings& bindings, const Stage& 
 
 namespace {
 
-// D3D's rule: a structured view's StructureByteStride is the size of the shader's element. The
-// shader's is the size of fxport's GL (std430) layout of it, which differs from HLSL's where a
-// float3 (or a float2 and a float) ends an element: such a buffer is refused, not misread.
+// D3D's rule: a structured view's StructureByteStride is the size of the shader's element (D3D's
+// own layout: structured buffers are tightly packed, and fxport's translation reads them so). A
+// buffer of another stride is refused, not misread (D3D's debug layer rejects the same draw).
 void checkStride(const std::string& use, const xlate::StorageBinding& b, const Buffer& buffer) {
     if (!(buffer.desc.MiscFlags & D3D11_RESOURCE_MISC_BUFFER_STRUCTURED)) return;  // raw: 4-byte words
     if (b.stride <= 0 || UINT(b.stride) == buffer.desc.StructureByteStride) return;
-    throw InvalidOperation(use + ": its elements are " + std::to_string(b.stride) + " bytes in fxport's GL layout, the buffer's StructureByteStride is " +
-                           std::to_string(buffer.desc.StructureByteStride) +
-                           " (GLSL's std430 pads a float3 ending an element to 16 bytes: end the struct on a float4 or add padding)");
+    throw InvalidOperation(use + ": its elements are " + std::to_string(b.stride) + " bytes, the buffer's StructureByteStride is " +
+                           std::to_string(buffer.desc.StructureByteStride) + " (D3D11 requires the shader's element size)");
 }
 
 }  // namespace
@@ -90,7 +89,7 @@ void Context::bindStorage(const char* call, const core::ShaderCode& code, const 
                 continue;
             }
             checkStride(use, b, *v->buffer);
-            core::setStorageBuffer(core, false, b.slot, v->buffer->gpu.get());
+            core::setStorageBuffer(core, false, b.slot, v->buffer->gpu.get(), v->range.offset, v->range.bytes);
             continue;
         }
         const UnorderedAccessView* v = uavs && b.slot >= 0 && std::size_t(b.slot) < uavs->size() ? (*uavs)[std::size_t(b.slot)].Get() : nullptr;
@@ -108,7 +107,7 @@ void Context::bindStorage(const char* call, const core::ShaderCode& code, const 
             core.SetUnorderedAccess(b.slot, v->texture->colour.get());
         } else {
             checkStride(use, b, *v->buffer);
-            core::setStorageBuffer(core, true, b.slot, v->buffer->gpu.get());
+            core::setStorageBuffer(core, true, b.slot, v->buffer->gpu.get(), v->range.offset, v->range.bytes);
         }
     }
 }
@@ -233,6 +232,7 @@ void Context::draw(const char* call, core::DrawArguments a, bool indexed) {
                         std::to_string(indexBuffer_->desc.ByteWidth));
         a.indices = indexBuffer_->gpu.get();
     }
+    if (predicatedAway()) return;  // SetPredication
     std::vector<core::InstancedStream> vertexStreams;
     if (!streams(call, vertexStreams)) return;
     HRESULT hr = guarded(call, [&] {
@@ -265,6 +265,7 @@ void Context::DrawIndexedInstanced(UINT IndexCountPerInstance, UINT InstanceCoun
 
 void Context::Dispatch(UINT x, UINT y, UINT z) {
     if (!computeShader_) return note("Dispatch: no compute shader set (CSSetShader); nothing run");
+    if (predicatedAway()) return;  // SetPredication
     const UINT most = D3D11_CS_DISPATCH_MAX_THREAD_GROUPS_PER_DIMENSION;
     if (x > most || y > most || z > most)
         return note("Dispatch(" + std::to_string(x) + ", " + std::to_string(y) + ", " + std::to_string(z) + "): each count is at most " +

@@ -66,6 +66,7 @@ void Context::Unmap(ID3D11Resource* pResource, UINT Subresource) {
 }
 
 void Context::UpdateSubresource(ID3D11Resource* pDst, UINT DstSubresource, const D3D11_BOX* box, const void* pSrcData, UINT SrcRowPitch, UINT) {
+    if (predicatedAway()) return;  // SetPredication
     guarded("UpdateSubresource", [&] {
         if (!pSrcData) return fail(E_INVALIDARG, "UpdateSubresource: pSrcData is null");
         if (auto* b = own<Buffer>(pDst, device_)) {
@@ -99,6 +100,7 @@ void Context::UpdateSubresource(ID3D11Resource* pDst, UINT DstSubresource, const
 }
 
 void Context::CopyResource(ID3D11Resource* pDst, ID3D11Resource* pSrc) {
+    if (predicatedAway()) return;  // SetPredication
     guarded("CopyResource", [&] {
         auto *bd = own<Buffer>(pDst, device_), *bs = own<Buffer>(pSrc, device_);
         if (bd && bs) {
@@ -116,8 +118,15 @@ void Context::CopyResource(ID3D11Resource* pDst, ID3D11Resource* pSrc) {
             return fail(E_INVALIDARG, "CopyResource: the textures differ in size, format or mip levels");
         if (td->desc.SampleDesc.Count != ts->desc.SampleDesc.Count)
             return fail(E_INVALIDARG, "CopyResource: the textures differ in SampleDesc.Count (a multisampled texture is read through ResolveSubresource)");
-        if (td->depth || ts->depth) return fail(E_NOTIMPL, "CopyResource: depth-stencil textures cannot be copied in fxport yet");
-        if (td->cube || ts->cube) return fail(E_NOTIMPL, "CopyResource: cube textures cannot be copied in fxport yet");
+        // A typeless depth texture (R32/R24G8/R16_TYPELESS with SHADER_RESOURCE) is a texture under its
+        // depth buffer: copied as one. A depth buffer alone (no SRV) has no texels fxport can copy yet.
+        if ((td->depth && !td->colour) || (ts->depth && !ts->colour))
+            return fail(E_NOTIMPL, "CopyResource: a depth-stencil texture without BIND_SHADER_RESOURCE (a typeless one with it copies)");
+        if (td->cube && ts->cube) {
+            core::copyTexture(*td->cube, *ts->cube);  // every face and level
+            return succeed();
+        }
+        if (td->cube || ts->cube) return fail(E_INVALIDARG, "CopyResource: a cube texture copies to a cube texture only");
         for (int level = 0; level < ts->levels; ++level) {
             if (td->colour && ts->colour) {
                 core::copyTexture(*td->colour, *ts->colour);
@@ -147,6 +156,7 @@ void copyRows(const std::vector<std::uint8_t>& from, int fromWidth, int fx, int 
 
 void Context::CopySubresourceRegion(ID3D11Resource* pDst, UINT DstSubresource, UINT DstX, UINT DstY, UINT DstZ, ID3D11Resource* pSrc,
                                     UINT SrcSubresource, const D3D11_BOX* box) {
+    if (predicatedAway()) return;  // SetPredication
     const char* call = "CopySubresourceRegion";
     guarded(call, [&] {
         const std::string at = std::string(call) + ": ";
@@ -207,6 +217,7 @@ void Context::CopySubresourceRegion(ID3D11Resource* pDst, UINT DstSubresource, U
 }
 
 void Context::ClearRenderTargetView(ID3D11RenderTargetView* p, const FLOAT c[4]) {
+    if (predicatedAway()) return;  // SetPredication
     guarded("ClearRenderTargetView", [&] {
         auto* v = own<RenderTargetView>(p, device_);
         if (!v || !c) return fail(E_INVALIDARG, "ClearRenderTargetView: no view of this device, or no colour");
@@ -216,6 +227,7 @@ void Context::ClearRenderTargetView(ID3D11RenderTargetView* p, const FLOAT c[4])
 }
 
 void Context::ClearDepthStencilView(ID3D11DepthStencilView* p, UINT flags, FLOAT depth, UINT8 stencil) {
+    if (predicatedAway()) return;  // SetPredication
     guarded("ClearDepthStencilView", [&] {
         auto* v = own<DepthStencilView>(p, device_);
         if (!v) return fail(E_INVALIDARG, "ClearDepthStencilView: no view of this device");
@@ -226,6 +238,7 @@ void Context::ClearDepthStencilView(ID3D11DepthStencilView* p, UINT flags, FLOAT
 }
 
 void Context::GenerateMips(ID3D11ShaderResourceView* p) {
+    if (predicatedAway()) return;  // SetPredication
     auto* v = own<ShaderResourceView>(p, device_);
     if (!v || !v->texture || !(v->texture->desc.MiscFlags & D3D11_RESOURCE_MISC_GENERATE_MIPS))
         return note("GenerateMips: the view's texture was not made with D3D11_RESOURCE_MISC_GENERATE_MIPS");

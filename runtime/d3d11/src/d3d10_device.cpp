@@ -3,6 +3,7 @@
 // (D3D10_VIEWPORT, D3D10_BLEND_DESC). Resources, views, shaders and states are the D3D11 objects.
 #include <atomic>
 
+#include "d3d10_queries.h"
 #include "d3d11_impl.h"
 #include "fxport/d3d10.h"
 
@@ -160,12 +161,39 @@ public:
         context_->CopySubresourceRegion(d, ds, x, y, z, s, ss, box);
     }
     void GenerateMips(ID3D10ShaderResourceView* v) override { context_->GenerateMips(v); }
-    void ClearState() override { context_->ClearState(); }
+    void ClearState() override {
+        context_->ClearState();
+        predicate_ = nullptr;
+        predicateValue_ = FALSE;
+    }
     void Flush() override { context_->Flush(); }
+    HRESULT CreateQuery(const D3D10_QUERY_DESC* d, ID3D10Query** pp) override {
+        ID3D10Predicate* made = nullptr;
+        const HRESULT hr = createQuery10(device_.Get(), context_.Get(), d, false, pp ? &made : nullptr);
+        if (pp) *pp = made;
+        return hr;
+    }
+    HRESULT CreatePredicate(const D3D10_QUERY_DESC* d, ID3D10Predicate** pp) override {
+        return createQuery10(device_.Get(), context_.Get(), d, true, pp);
+    }
+    void SetPredication(ID3D10Predicate* p, BOOL value) override {
+        context_->SetPredication(predicate11(p), value);
+        predicate_ = p;
+        predicateValue_ = value;
+    }
+    void GetPredication(ID3D10Predicate** pp, BOOL* value) override {
+        if (pp) {
+            *pp = predicate_.Get();
+            if (*pp) (*pp)->AddRef();
+        }
+        if (value) *value = predicateValue_;
+    }
 
 private:
     ComPtr<ID3D11Device> device_;
     ComPtr<ID3D11DeviceContext> context_;
+    ComPtr<ID3D10Predicate> predicate_;  // the D3D10 object SetPredication was given (GetPredication's answer)
+    BOOL predicateValue_ = FALSE;
     std::atomic<ULONG> references_{1};
 };
 

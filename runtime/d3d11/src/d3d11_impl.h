@@ -61,6 +61,8 @@ public:
     Buffer(Device* device, const D3D11_BUFFER_DESC& desc, const void* initial);
     void GetType(D3D11_RESOURCE_DIMENSION* d) override { if (d) *d = D3D11_RESOURCE_DIMENSION_BUFFER; }
     void GetDesc(D3D11_BUFFER_DESC* pDesc) override { if (pDesc) *pDesc = desc; }
+    HRESULT Map(D3D11_MAP MapType, UINT MapFlags, void** ppData) override;  // D3D10's (d3d10_buffer_map.cpp)
+    void Unmap() override;
     D3D11_BUFFER_DESC desc;
     std::unique_ptr<core::ByteBuffer> gpu;  // null for staging buffers
     std::vector<std::uint8_t> cpu;          // staging buffers, and what Map hands out
@@ -96,8 +98,15 @@ public:
     std::unique_ptr<fxport::Texture3D> texels;
 };
 
-// A view of a texture (texture set), of a 3D texture (volume set) or of a structured buffer
-// (buffer set); it holds a reference.
+// The elements of a buffer a view sees: [first, first + count), bound as bytes [offset, offset +
+// bytes) for a structured or raw view (bytes 0: the whole buffer).
+struct BufferRange {
+    UINT first = 0, count = 0;
+    std::size_t offset = 0, bytes = 0;
+};
+
+// A view of a texture (texture set), of a 3D texture (volume set) or of a buffer (buffer set); it
+// holds a reference.
 class ShaderResourceView final : public Object<ID3D11ShaderResourceView> {
 public:
     ShaderResourceView(Device* device, Texture* viewed, const D3D11_SHADER_RESOURCE_VIEW_DESC& d)
@@ -121,6 +130,7 @@ public:
     Volume* volume = nullptr;
     Buffer* buffer = nullptr;
     D3D11_SHADER_RESOURCE_VIEW_DESC desc;
+    BufferRange range;                         // buffer views
     std::unique_ptr<core::TexelBuffer> typed;  // a typed buffer view (Buffer<T>)
 };
 // An unordered-access view of a structured or raw buffer, or of level 0 of a 2D texture.
@@ -138,6 +148,7 @@ public:
     Buffer* buffer;
     Texture* texture;
     D3D11_UNORDERED_ACCESS_VIEW_DESC desc;
+    BufferRange range;                         // buffer views
     std::unique_ptr<core::TexelBuffer> typed;  // a typed buffer view (RWBuffer<T>)
 };
 class RenderTargetView final : public Object<ID3D11RenderTargetView> {
@@ -283,8 +294,8 @@ std::string shaderBlob(const xlate::CompiledEffect& shader);  // the bytes of a 
 
 class Context;
 
-// An ID3D11Query (queries.cpp): the GPU query behind it (none for TIMESTAMP_DISJOINT).
-class Query final : public Object<ID3D11Query> {
+// An ID3D11Query or ID3D11Predicate (queries.cpp): the GPU query behind it (none for TIMESTAMP_DISJOINT).
+class Query final : public Object<ID3D11Predicate> {
 public:
     Query(Device* device, const D3D11_QUERY_DESC& desc);
     UINT GetDataSize() override;
@@ -332,6 +343,7 @@ public:
     HRESULT CreateDepthStencilState(const D3D11_DEPTH_STENCIL_DESC* pDepthStencilDesc,
                                     ID3D11DepthStencilState** ppDepthStencilState) override;
     HRESULT CreateQuery(const D3D11_QUERY_DESC* pQueryDesc, ID3D11Query** ppQuery) override;
+    HRESULT CreatePredicate(const D3D11_QUERY_DESC* pPredicateDesc, ID3D11Predicate** ppPredicate) override;
     HRESULT CreateDeferredContext(UINT ContextFlags, ID3D11DeviceContext** ppDeferredContext) override;
     void GetImmediateContext(ID3D11DeviceContext** ppImmediateContext) override;
     D3D_FEATURE_LEVEL GetFeatureLevel() override { return D3D_FEATURE_LEVEL_11_0; }

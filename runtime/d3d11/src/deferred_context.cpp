@@ -116,6 +116,8 @@ public:
     }
     void ClearState() override {
         stateCommands_.clear();  // everything before is undone
+        predicate_ = nullptr;
+        predicateValue_ = FALSE;
         state([](auto& c) { c.ClearState(); });
     }
 
@@ -158,6 +160,18 @@ public:
         return fail(DXGI_ERROR_INVALID_CALL, "GetData: a deferred context has no results; ask the immediate context");
     }
     void Flush() override {}  // nothing runs until ExecuteCommandList
+    void SetPredication(ID3D11Predicate* p, BOOL value) override {
+        predicate_ = p;
+        predicateValue_ = value;
+        state([held = ComPtr<ID3D11Predicate>(p), value](auto& c) { c.SetPredication(held.Get(), value); });
+    }
+    void GetPredication(ID3D11Predicate** pp, BOOL* value) override {
+        if (pp) {
+            *pp = predicate_.Get();
+            if (*pp) (*pp)->AddRef();
+        }
+        if (value) *value = predicateValue_;
+    }
     HRESULT Map(ID3D11Resource* r, UINT sub, D3D11_MAP type, UINT flags, D3D11_MAPPED_SUBRESOURCE* mapped) override;
     void Unmap(ID3D11Resource* r, UINT sub) override;
 
@@ -171,11 +185,13 @@ public:
         *pp = new CommandList(device_, std::move(commands_));
         commands_.clear();
         if (restore) commands_ = stateCommands_;  // the next list starts from the state this one ended in
-        else stateCommands_.clear();
+        else stateCommands_.clear(), predicate_ = nullptr, predicateValue_ = FALSE;
         return succeed();
     }
 
 private:
+    ComPtr<ID3D11Predicate> predicate_;  // what GetPredication answers
+    BOOL predicateValue_ = FALSE;
     void state(Command c) {
         stateCommands_.push_back(c);
         commands_.push_back(std::move(c));
@@ -276,13 +292,15 @@ struct Context::Bindings {
     ComPtr<DepthStencilView> depthView;
     EffectPass* effectPass;
     const void* effectOwner;
+    ComPtr<Query> predicate;
+    BOOL predicateValue;
 };
 
 Context::Bindings Context::bindings() const {
     return Bindings{layout_, vertexSlots_, indexBuffer_, indexFormat_, indexOffset_, topology_, vertexShader_, pixelShader_,
                     geometryShader_, hullShader_, domainShader_, computeShader_, {vs_, ps_, gs_, hs_, ds_, cs_}, csUavs_, psUavs_,
                     viewport_, viewportSet_, scissor_, rasterizer_, blend_, {blendFactor_[0], blendFactor_[1], blendFactor_[2], blendFactor_[3]},
-                    sampleMask_, depthStencil_, stencilRef_, targets_, depthView_, effectPass_, effectOwner_};
+                    sampleMask_, depthStencil_, stencilRef_, targets_, depthView_, effectPass_, effectOwner_, predicate_, predicateValue_};
 }
 
 void Context::rebind(const Bindings& b) {
@@ -315,6 +333,8 @@ void Context::rebind(const Bindings& b) {
     depthView_ = b.depthView;
     effectPass_ = b.effectPass;
     effectOwner_ = b.effectOwner;
+    predicate_ = b.predicate;
+    predicateValue_ = b.predicateValue;
 }
 
 void Context::ExecuteCommandList(ID3D11CommandList* list, BOOL restore) {

@@ -357,10 +357,15 @@ HRESULT D3DX11CreateEffectFromMemory(const void* pData, SIZE_T DataLength, UINT,
                 [&](GraphicsDevice& core) { return std::make_unique<fxport::Effect>(core, *compiled); });
 }
 
+// The .fx file compiled as D3DCompileFromFile compiles it for fx_5_0 (FX11's rules: an effect may
+// have no technique), then made into the effect as from memory.
 HRESULT D3DX11CreateEffectFromFile(LPCSTR pFileName, UINT, ID3D11Device* pDevice, ID3DX11Effect** ppEffect) {
-    if (!pFileName) return fail(E_INVALIDARG, "D3DX11CreateEffectFromFile: pFileName is null");
-    const std::string path = pFileName;
-    return make("D3DX11CreateEffectFromFile", pDevice, ppEffect, [&](GraphicsDevice& core) { return std::make_unique<fxport::Effect>(core, path); });
+    const char* call = "D3DX11CreateEffectFromFile";
+    if (!pFileName) return fail(E_INVALIDARG, std::string(call) + ": pFileName is null");
+    ComPtr<ID3DBlob> code;
+    if (HRESULT hr = D3DCompileFromFile(pFileName, nullptr, nullptr, nullptr, "fx_5_0", 0, 0, code.GetAddressOf(), nullptr); FAILED(hr))
+        return fail(hr, std::string(call) + " (fx_5_0): " + GetLastErrorMessage());
+    return D3DX11CreateEffectFromMemory(code->GetBufferPointer(), code->GetBufferSize(), 0, pDevice, ppEffect, pFileName);
 }
 
 HRESULT D3DX11CreateEffectFromFile(const wchar_t* pFileName, UINT flags, ID3D11Device* pDevice, ID3DX11Effect** ppEffect) {

@@ -1,6 +1,9 @@
 // D3DCompile's ID3DInclude: the caller's handler reads the #includes. The preprocessor runs once in
 // the caller's process with the handler (Open for each #include it reaches, as D3D calls it); the
 // compile proper, which may run in a worker process, is then fed the same texts from memory.
+// Close comes in D3DCompile's order, each file closed once the preprocessor is done with it: an
+// Open whose includer is an outer file (or the source itself) shows that the files opened since
+// are finished, so they are closed first (innermost first); the rest close when preprocessing ends.
 #pragma once
 
 #include <map>
@@ -18,7 +21,7 @@ class IncludeRecorder {
 public:
     // `rootName` is the name the preprocessor gives the source itself (its parent data is null).
     IncludeRecorder(ID3DInclude* handler, std::string rootName);
-    ~IncludeRecorder();  // Close for every successful Open, the last opened first
+    ~IncludeRecorder() { closeAfter(""); }  // Close for every file still open, innermost first
     IncludeRecorder(const IncludeRecorder&) = delete;
     IncludeRecorder& operator=(const IncludeRecorder&) = delete;
 
@@ -28,9 +31,11 @@ public:
     decltype(xlate::CompileOptions::readInclude) replay() const;
 
 private:
+    // Closes the open files nested deeper than `includer` (all of them for ""), innermost first.
+    void closeAfter(const std::string& includer);
     ID3DInclude* handler_;
     std::map<std::string, LPCVOID> dataOf_;  // file name -> the data its Open returned (its children's parent data)
-    std::vector<LPCVOID> opened_;
+    std::vector<std::pair<std::string, LPCVOID>> chain_;  // the files open now, outermost first (name, data)
     std::map<std::pair<std::string, std::string>, std::optional<std::string>> texts_;  // (includer, header) -> text
 };
 

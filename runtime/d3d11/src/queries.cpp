@@ -1,8 +1,12 @@
 // ID3D11Query over the device core's GPU queries: an event or timestamp query is a timestamp the
 // GPU writes at End (ready once the GPU has passed it); an occlusion query (and its predicate)
 // counts the samples passing the depth and stencil tests between Begin and End; a disjoint query
-// answers GL's timestamps' frequency (nanoseconds) and never disjoint. GetData answers S_FALSE
-// until the result is there, as D3D does.
+// answers GL's timestamps' frequency (nanoseconds) and never disjoint; a pipeline-statistics query
+// reads GL_ARB_pipeline_statistics_query's eleven counters (the same ones as D3D's; E_NOTIMPL where
+// the driver lacks them). GetData answers S_FALSE until the result is there, as D3D does.
+// SetPredication skips the predicated calls while an occlusion predicate's result equals the value
+// given: the context waits for the result at each such call (GL's conditional rendering would
+// cover draws and clears only, not the copies and updates D3D predicates too).
 #include "context.h"
 #include "guarded.h"
 
@@ -11,14 +15,34 @@ namespace fxport::d3d11 {
 namespace {
 
 bool countsSamples(D3D11_QUERY q) { return q == D3D11_QUERY_OCCLUSION || q == D3D11_QUERY_OCCLUSION_PREDICATE; }
-bool bracketed(D3D11_QUERY q) { return countsSamples(q) || q == D3D11_QUERY_TIMESTAMP_DISJOINT; }
+bool bracketed(D3D11_QUERY q) { return countsSamples(q) || q == D3D11_QUERY_TIMESTAMP_DISJOINT || q == D3D11_QUERY_PIPELINE_STATISTICS; }
+
+core::GpuQuery::Kind kindOf(D3D11_QUERY q) {
+    if (countsSamples(q)) return core::GpuQuery::Kind::SamplesPassed;
+    if (q == D3D11_QUERY_PIPELINE_STATISTICS) return core::GpuQuery::Kind::PipelineStatistics;
+    return core::GpuQuery::Kind::Timestamp;
+}
+
+// The query desc's checks shared by CreateQuery and CreatePredicate (`call` names which).
+HRESULT checkQuery(Device& device, const char* call, const D3D11_QUERY_DESC* d) {
+    if (!d) return fail(E_INVALIDARG, std::string(call) + ": the D3D11_QUERY_DESC pointer is null");
+    const std::string at = std::string(call) + ": D3D11_QUERY_DESC.";
+    if (d->Query > D3D11_QUERY_SO_OVERFLOW_PREDICATE) return fail(E_INVALIDARG, at + "Query = " + std::to_string(d->Query) + " (not a D3D11_QUERY value)");
+    const bool predicate = d->Query == D3D11_QUERY_OCCLUSION_PREDICATE || d->Query == D3D11_QUERY_SO_OVERFLOW_PREDICATE;
+    if (d->MiscFlags & ~D3D11_QUERY_MISC_PREDICATEHINT || (d->MiscFlags && !predicate))
+        return fail(E_INVALIDARG, at + "MiscFlags = " + std::to_string(d->MiscFlags) + " (0, or D3D11_QUERY_MISC_PREDICATEHINT for a predicate)");
+    if (d->Query >= D3D11_QUERY_SO_STATISTICS)
+        return fail(E_NOTIMPL, at + "Query = " + std::to_string(d->Query) + ": fxport has no stream output, so no stream-output queries");
+    if (d->Query == D3D11_QUERY_PIPELINE_STATISTICS && !core::pipelineStatisticsAvailable(device.core()))
+        return fail(E_NOTIMPL, at + "Query = D3D11_QUERY_PIPELINE_STATISTICS: the GL driver lacks GL_ARB_pipeline_statistics_query, "
+                                    "which counts what D3D's statistics count");
+    return S_OK;
+}
 
 }  // namespace
 
 Query::Query(Device* device, const D3D11_QUERY_DESC& d) : Object(device), desc(d) {
-    if (desc.Query != D3D11_QUERY_TIMESTAMP_DISJOINT)
-        gpu = std::make_unique<core::GpuQuery>(device->core(), countsSamples(desc.Query) ? core::GpuQuery::Kind::SamplesPassed
-                                                                                         : core::GpuQuery::Kind::Timestamp);
+    if (desc.Query != D3D11_QUERY_TIMESTAMP_DISJOINT) gpu = std::make_unique<core::GpuQuery>(device->core(), kindOf(desc.Query));
 }
 
 UINT Query::GetDataSize() {
@@ -26,22 +50,27 @@ UINT Query::GetDataSize() {
     case D3D11_QUERY_EVENT:
     case D3D11_QUERY_OCCLUSION_PREDICATE: return sizeof(BOOL);
     case D3D11_QUERY_TIMESTAMP_DISJOINT: return sizeof(D3D11_QUERY_DATA_TIMESTAMP_DISJOINT);
+    case D3D11_QUERY_PIPELINE_STATISTICS: return sizeof(D3D11_QUERY_DATA_PIPELINE_STATISTICS);
     default: return sizeof(UINT64);
     }
 }
 
 HRESULT Device::CreateQuery(const D3D11_QUERY_DESC* d, ID3D11Query** pp) {
-    if (!d) return fail(E_INVALIDARG, "CreateQuery: pQueryDesc is null");
-    const std::string at = "CreateQuery: D3D11_QUERY_DESC.";
-    if (d->Query > D3D11_QUERY_SO_OVERFLOW_PREDICATE) return fail(E_INVALIDARG, at + "Query = " + std::to_string(d->Query) + " (not a D3D11_QUERY value)");
-    const bool predicate = d->Query == D3D11_QUERY_OCCLUSION_PREDICATE || d->Query == D3D11_QUERY_SO_OVERFLOW_PREDICATE;
-    if (d->MiscFlags & ~D3D11_QUERY_MISC_PREDICATEHINT || (d->MiscFlags && !predicate))
-        return fail(E_INVALIDARG, at + "MiscFlags = " + std::to_string(d->MiscFlags) + " (0, or D3D11_QUERY_MISC_PREDICATEHINT for a predicate)");
-    if (d->Query == D3D11_QUERY_PIPELINE_STATISTICS || d->Query >= D3D11_QUERY_SO_STATISTICS)
-        return fail(E_NOTIMPL, at + "Query = " + std::to_string(d->Query) +
-                                   ": fxport has event, occlusion, occlusion-predicate, timestamp and timestamp-disjoint queries");
+    if (HRESULT hr = checkQuery(*this, "CreateQuery", d); FAILED(hr)) return hr;
     if (!pp) return S_FALSE;  // D3D: the description is valid
     return guarded("CreateQuery", [&] {
+        *pp = new Query(this, *d);
+        return succeed();
+    });
+}
+
+HRESULT Device::CreatePredicate(const D3D11_QUERY_DESC* d, ID3D11Predicate** pp) {
+    if (HRESULT hr = checkQuery(*this, "CreatePredicate", d); FAILED(hr)) return hr;
+    if (d->Query != D3D11_QUERY_OCCLUSION_PREDICATE)
+        return fail(E_INVALIDARG, "CreatePredicate: D3D11_QUERY_DESC.Query = " + std::to_string(d->Query) +
+                                      " (a predicate is D3D11_QUERY_OCCLUSION_PREDICATE or SO_OVERFLOW_PREDICATE)");
+    if (!pp) return S_FALSE;
+    return guarded("CreatePredicate", [&] {
         *pp = new Query(this, *d);
         return succeed();
     });
@@ -51,15 +80,19 @@ void Context::Begin(ID3D11Asynchronous* async) {
     Query* q = own<Query>(async, device_);
     if (!q) return note("Begin: pAsync is null or not a query of this device");
     if (!bracketed(q->desc.Query)) return note("Begin: an event or timestamp query has no Begin (D3D ignores it); call End alone");
+    if (predicate_.Get() == q) return note("Begin: the query is the one SetPredication set (D3D: Begin and End are invalid on it meanwhile)");
     if (counting_ && counting_.Get() != q && countsSamples(q->desc.Query))
         return note("Begin: another occlusion query is counting; fxport counts one at a time (End it first)");
+    const bool statistics = q->desc.Query == D3D11_QUERY_PIPELINE_STATISTICS;
+    if (statistics_ && statistics_.Get() != q && statistics)
+        return note("Begin: another pipeline-statistics query is counting; fxport counts one at a time (End it first)");
     guarded("Begin", [&] {
         if (q->begun && q->gpu) q->gpu->end();  // a second Begin starts again
         q->begun = true;
         q->ended = false;
         if (q->gpu) {
             q->gpu->begin();
-            counting_ = q;
+            (statistics ? statistics_ : counting_) = q;
         }
         return succeed();
     });
@@ -68,10 +101,13 @@ void Context::Begin(ID3D11Asynchronous* async) {
 void Context::End(ID3D11Asynchronous* async) {
     Query* q = own<Query>(async, device_);
     if (!q) return note("End: pAsync is null or not a query of this device");
-    if (bracketed(q->desc.Query) && !q->begun) return note("End: the query was not begun (an occlusion or disjoint query needs Begin first)");
+    if (predicate_.Get() == q) return note("End: the query is the one SetPredication set (D3D: Begin and End are invalid on it meanwhile)");
+    if (bracketed(q->desc.Query) && !q->begun)
+        return note("End: the query was not begun (an occlusion, pipeline-statistics or disjoint query needs Begin first)");
     guarded("End", [&] {
         if (q->gpu) q->gpu->end();
         if (counting_.Get() == q) counting_ = nullptr;
+        if (statistics_.Get() == q) statistics_ = nullptr;
         q->begun = false;
         q->ended = true;
         return succeed();
@@ -95,10 +131,47 @@ HRESULT Context::GetData(ID3D11Asynchronous* async, void* data, UINT size, UINT 
         case D3D11_QUERY_EVENT: *static_cast<BOOL*>(data) = TRUE; break;
         case D3D11_QUERY_OCCLUSION_PREDICATE: *static_cast<BOOL*>(data) = value != 0; break;
         case D3D11_QUERY_TIMESTAMP_DISJOINT: *static_cast<D3D11_QUERY_DATA_TIMESTAMP_DISJOINT*>(data) = {1000000000u, FALSE}; break;
+        case D3D11_QUERY_PIPELINE_STATISTICS: {
+            const core::StatisticCounts s = q->gpu->statistics();
+            auto& out = *static_cast<D3D11_QUERY_DATA_PIPELINE_STATISTICS*>(data);
+            out = {s[0], s[1], s[2], s[3], s[4], s[5], s[6], s[7], s[8], s[9], s[10]};
+            break;
+        }
         default: *static_cast<UINT64*>(data) = value; break;
         }
         return succeed();
     });
+}
+
+void Context::SetPredication(ID3D11Predicate* pPredicate, BOOL PredicateValue) {
+    Query* q = own<Query>(pPredicate, device_);
+    if (pPredicate && !q) return note("SetPredication: pPredicate was not made by this device");
+    if (q && q->desc.Query != D3D11_QUERY_OCCLUSION_PREDICATE)
+        return note("SetPredication: the query is D3D11_QUERY " + std::to_string(q->desc.Query) + ", not an OCCLUSION_PREDICATE");
+    predicate_ = q;
+    predicateValue_ = PredicateValue;
+    succeed();
+}
+
+void Context::GetPredication(ID3D11Predicate** ppPredicate, BOOL* pPredicateValue) {
+    if (ppPredicate) {
+        *ppPredicate = predicate_.Get();
+        if (*ppPredicate) (*ppPredicate)->AddRef();
+    }
+    if (pPredicateValue) *pPredicateValue = predicateValue_;
+}
+
+// D3D skips a predicated call when the predicate's data (some sample passed) equals the value set.
+// A predicate not yet issued (no End since Begin) decides nothing: the call runs.
+bool Context::predicatedAway() {
+    if (!predicate_ || !predicate_->ended || !predicate_->gpu) return false;
+    bool skip = false;
+    guarded("SetPredication", [&] {
+        skip = (predicate_->gpu->result() != 0) == (predicateValue_ != FALSE);
+        return S_OK;
+    });
+    if (skip) succeed();  // a skipped call is no error
+    return skip;
 }
 
 }  // namespace fxport::d3d11

@@ -238,6 +238,7 @@ HRESULT decodeRasterizer(const D3D11_RASTERIZER_DESC& d, fxport::RasterizerState
     // D3D10.1+ rasterises triangles on a multisampled target per sample whatever MultisampleEnable
     // says (it picks a line algorithm only); GL does so only with GL_MULTISAMPLE on.
     out.MultiSampleAntiAlias = true;
+    out.FrontCounterClockwise = ccwFront;  // SV_IsFrontFace and the FrontFace stencil ops follow it
     return S_OK;
 }
 
@@ -272,7 +273,8 @@ HRESULT decodeDepthStencil(const D3D11_DEPTH_STENCIL_DESC& d, fxport::DepthStenc
             if (!stencilOp(ops[i].second, *into[i]))
                 return invalid(call, field("D3D11_DEPTH_STENCIL_DESC", at + ops[i].first, ops[i].second), "is not a D3D11_STENCIL_OP value (1-8)");
     }
-    // Back faces are counter-clockwise ones (the rasterizer's default winding).
+    // The main stencil ops are the front faces' (clockwise ones, or counter-clockwise ones under a
+    // rasterizer state with FrontCounterClockwise); the CounterClockwise set the back faces'.
     out.TwoSidedStencilMode = true;
     return S_OK;
 }

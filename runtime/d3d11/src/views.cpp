@@ -1,6 +1,7 @@
 // Shader-resource, render-target and depth-stencil views of 2D textures (the whole texture: one
 // format, all levels for SRVs, level 0 for RTVs and DSVs; TEXTURE2DMS views of multisampled ones); shader-resource and unordered-access
-// views of whole structured (StructuredBuffer<T>) and raw (ByteAddressBuffer) buffers, and
+// views of elements of typed (Buffer<T>), structured (StructuredBuffer<T>) and raw
+// (ByteAddressBuffer) buffers, and
 // unordered-access views of level 0 of a 2D texture (RWTexture2D).
 #include <optional>
 
@@ -36,13 +37,23 @@ HRESULT needsDescription(const char* call, const Texture& t, bool given) {
     return fail(E_INVALIDARG, std::string(call) + ": pDesc is null for a " + formatName(t.desc.Format) + " texture (a typeless texture's view names its Format)");
 }
 
-// The buffer view's elements: the whole of a structured buffer (FirstElement 0, NumElements its
-// element count) or of a raw one (R32_TYPELESS with the RAW flag: 4-byte elements). `desc` names
-// the description for messages ("D3D11_SHADER_RESOURCE_VIEW_DESC.Buffer").
-// A typed view (Buffer<T> / RWBuffer<T>: neither structured nor raw) reads elements of `format`
-// from the buffer's start: its SurfaceFormat goes to `typed`.
+// FirstElement's byte offset must be a multiple of the GL's alignment for a view of part of a
+// buffer (16 bytes on common drivers); D3D has no such rule, so any other is E_NOTIMPL.
+HRESULT checkAlignment(Device& device, const std::string& at, UINT first, std::size_t offset, bool storage) {
+    const std::size_t alignment = core::bufferOffsetAlignment(device.core(), storage);
+    if (offset % alignment == 0) return S_OK;
+    return fail(E_NOTIMPL, at + ".FirstElement = " + std::to_string(first) + ": the view starts at byte " + std::to_string(offset) +
+                               ", and fxport's GL starts " + (storage ? "a storage buffer range" : "a buffer texture") + " at multiples of " +
+                               std::to_string(alignment) + " bytes only");
+}
+
+// The buffer view's elements [first, first + count): of a structured buffer (StructureByteStride
+// bytes each) or a raw one (R32_TYPELESS with the RAW flag: 4-byte elements), bound as the byte
+// range `range`. `desc` names the description for messages ("D3D11_SHADER_RESOURCE_VIEW_DESC.Buffer").
+// A typed view (Buffer<T> / RWBuffer<T>: neither structured nor raw) reads elements of `format`:
+// its SurfaceFormat goes to `typed`.
 HRESULT checkBufferView(const char* call, const std::string& desc, const Buffer& b, DXGI_FORMAT format, bool raw, UINT first, UINT count,
-                        std::optional<SurfaceFormat>& typed) {
+                        std::optional<SurfaceFormat>& typed, BufferRange& range) {
     const std::string at = std::string(call) + ": " + desc;
     const bool structured = (b.desc.MiscFlags & D3D11_RESOURCE_MISC_BUFFER_STRUCTURED) != 0;
     if (!raw && !structured) {
@@ -51,12 +62,12 @@ HRESULT checkBufferView(const char* call, const std::string& desc, const Buffer&
         if (!textureFormat(format, f) || !core::isTexelBufferFormat(f))
             return fail(E_NOTIMPL, std::string(call) + ": Format = " + formatName(format) + " (" + std::to_string(format) + "): not a typed-buffer format fxport supports");
         const UINT elements = b.desc.ByteWidth / UINT(bytesPerPixel(f));
-        if (first >= elements || count > elements - first)
+        if (first >= elements || count == 0 || count > elements - first)
             return fail(E_INVALIDARG, at + " = {FirstElement " + std::to_string(first) + ", NumElements " + std::to_string(count) + "}: the buffer holds " +
                                           std::to_string(elements) + " elements of " + formatName(format));
-        if (first != 0)
-            return fail(E_NOTIMPL, at + ".FirstElement = " + std::to_string(first) + ": fxport's typed buffer views start at element 0");
+        if (HRESULT hr = checkAlignment(b.device(), at, first, std::size_t(first) * std::size_t(bytesPerPixel(f)), false); FAILED(hr)) return hr;
         typed = f;
+        range = BufferRange{first, count};
         return S_OK;
     }
     if (raw) {
@@ -69,12 +80,16 @@ HRESULT checkBufferView(const char* call, const std::string& desc, const Buffer&
     }
     const UINT stride = raw ? 4u : b.desc.StructureByteStride;
     const UINT elements = b.desc.ByteWidth / stride;
-    if (first >= elements || count > elements - first)
+    if (first >= elements || count == 0 || count > elements - first)
         return fail(E_INVALIDARG, at + " = {FirstElement " + std::to_string(first) + ", NumElements " + std::to_string(count) + "}: the buffer has " +
                                       std::to_string(elements) + " elements");
-    if (first != 0 || count != elements)
-        return fail(E_NOTIMPL, at + " = {FirstElement " + std::to_string(first) + ", NumElements " + std::to_string(count) +
-                                   "}: fxport views the whole buffer (0, " + std::to_string(elements) + ")");
+    if (HRESULT hr = checkAlignment(b.device(), at, first, std::size_t(first) * stride, true); FAILED(hr)) return hr;
+    range = BufferRange{first, count};
+    // The whole buffer binds as it is (bytes 0); part of it as its byte range.
+    if (first != 0 || count != elements) {
+        range.offset = std::size_t(first) * stride;
+        range.bytes = std::size_t(count) * stride;
+    }
     return S_OK;
 }
 
@@ -89,14 +104,15 @@ HRESULT bufferShaderResourceView(Device* device, Buffer* b, const D3D11_SHADER_R
     if (!pDesc && !structured)
         return fail(E_INVALIDARG, std::string(call) + ": pDesc is null for a buffer that is not structured (a raw view needs a description)");
     std::optional<SurfaceFormat> typed;
+    BufferRange range;
     if (pDesc) {
         d = *pDesc;
         HRESULT hr = S_OK;
         if (d.ViewDimension == D3D11_SRV_DIMENSION_BUFFER)
-            hr = checkBufferView(call, "D3D11_SHADER_RESOURCE_VIEW_DESC.Buffer", *b, d.Format, false, d.Buffer.FirstElement, d.Buffer.NumElements, typed);
+            hr = checkBufferView(call, "D3D11_SHADER_RESOURCE_VIEW_DESC.Buffer", *b, d.Format, false, d.Buffer.FirstElement, d.Buffer.NumElements, typed, range);
         else if (d.ViewDimension == D3D11_SRV_DIMENSION_BUFFEREX)
             hr = checkBufferView(call, "D3D11_SHADER_RESOURCE_VIEW_DESC.BufferEx", *b, d.Format, (d.BufferEx.Flags & D3D11_BUFFEREX_SRV_FLAG_RAW) != 0,
-                                 d.BufferEx.FirstElement, d.BufferEx.NumElements, typed);
+                                 d.BufferEx.FirstElement, d.BufferEx.NumElements, typed, range);
         else
             return fail(E_INVALIDARG, std::string(call) + ": D3D11_SHADER_RESOURCE_VIEW_DESC.ViewDimension = " + std::to_string(d.ViewDimension) +
                                           " for a buffer (D3D11_SRV_DIMENSION_BUFFER or BUFFEREX)");
@@ -106,8 +122,8 @@ HRESULT bufferShaderResourceView(Device* device, Buffer* b, const D3D11_SHADER_R
     return guarded(call, [&] {
         auto view = std::unique_ptr<ShaderResourceView, void (*)(ShaderResourceView*)>(new ShaderResourceView(device, b, d),
                                                                                        [](ShaderResourceView* v) { v->Release(); });
-        const UINT elements = d.ViewDimension == D3D11_SRV_DIMENSION_BUFFEREX ? d.BufferEx.NumElements : d.Buffer.NumElements;
-        if (typed) view->typed = std::make_unique<core::TexelBuffer>(device->core(), *b->gpu, *typed, std::size_t(elements));
+        view->range = range;
+        if (typed) view->typed = std::make_unique<core::TexelBuffer>(device->core(), *b->gpu, *typed, std::size_t(range.count), std::size_t(range.first));
         *pp = view.release();
         return succeed();
     });
@@ -232,6 +248,7 @@ HRESULT Device::CreateUnorderedAccessView(ID3D11Resource* pResource, const D3D11
         return fail(E_INVALIDARG, std::string(call) + ": the resource's BindFlags = " + std::to_string(bind) + " lack D3D11_BIND_UNORDERED_ACCESS");
     D3D11_UNORDERED_ACCESS_VIEW_DESC d;
     std::optional<SurfaceFormat> typed;
+    BufferRange range;
     if (b) {
         const bool structured = (b->desc.MiscFlags & D3D11_RESOURCE_MISC_BUFFER_STRUCTURED) != 0;
         if (!pDesc && !structured)
@@ -247,7 +264,7 @@ HRESULT Device::CreateUnorderedAccessView(ID3D11Resource* pResource, const D3D11
                 return fail(E_NOTIMPL, std::string(call) + ": D3D11_UNORDERED_ACCESS_VIEW_DESC.Buffer.Flags = " + std::to_string(d.Buffer.Flags) +
                                            ": append and counter UAVs are not supported");
             if (HRESULT hr = checkBufferView(call, "D3D11_UNORDERED_ACCESS_VIEW_DESC.Buffer", *b, d.Format, (d.Buffer.Flags & D3D11_BUFFER_UAV_FLAG_RAW) != 0,
-                                             d.Buffer.FirstElement, d.Buffer.NumElements, typed);
+                                             d.Buffer.FirstElement, d.Buffer.NumElements, typed, range);
                 FAILED(hr))
                 return hr;
         }
@@ -269,7 +286,8 @@ HRESULT Device::CreateUnorderedAccessView(ID3D11Resource* pResource, const D3D11
     return guarded(call, [&] {
         auto view = std::unique_ptr<UnorderedAccessView, void (*)(UnorderedAccessView*)>(new UnorderedAccessView(this, pResource, b, t, d),
                                                                                          [](UnorderedAccessView* v) { v->Release(); });
-        if (typed) view->typed = std::make_unique<core::TexelBuffer>(core(), *b->gpu, *typed, std::size_t(d.Buffer.NumElements));
+        view->range = range;
+        if (typed) view->typed = std::make_unique<core::TexelBuffer>(core(), *b->gpu, *typed, std::size_t(range.count), std::size_t(range.first));
         *ppUAView = view.release();
         return succeed();
     });

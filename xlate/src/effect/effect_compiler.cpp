@@ -148,6 +148,8 @@ public:
     }
 
     void buildParameters();
+    // `s`'s members into `p.members`, a member of struct type with its own members (any depth).
+    void describeStructMembers(const FxStruct& s, Parameter& p, size_t token, int depth);
     void checkMemberCounts() const;
     void checkStatementCount() const;
     struct PackedMember {
@@ -287,6 +289,31 @@ void EffectBuilder::checkStatementCount() const {
                                        i)});
 }
 
+void EffectBuilder::describeStructMembers(const FxStruct& s, Parameter& p, size_t token, int depth) {
+    p.parameterClass = ParameterClass::Struct;
+    p.type = ParameterType::Void;
+    if (depth > 32) return;  // HLSL structs cannot contain themselves; a broken source is refused elsewhere
+    for (const auto& m : s.members) {
+        Parameter mp;
+        mp.name = m.name;
+        mp.elements = m.arrayDims.empty() ? 0 : m.arrayDims[0];
+        if (long long n = arrayElementCount(m.arrayDims); n > limits::kMaxArrayElements)
+            error(diag::kArrayTooLarge, "member '" + m.name + "' of struct '" + s.name + "' has " + std::to_string(n) +
+                                            " elements; fxport accepts at most " + std::to_string(limits::kMaxArrayElements) + " in one array",
+                  token);
+        if (const FxStruct* inner = syntax_.findStruct(syntax_.resolveType(m.type))) {
+            describeStructMembers(*inner, mp, token, depth + 1);
+        } else {
+            auto b = describeBasicType(syntax_.resolveType(m.type));
+            mp.parameterClass = b.isMatrix ? ParameterClass::Matrix : b.columns > 1 ? ParameterClass::Vector : ParameterClass::Scalar;
+            mp.type = scalarType(b.scalar);
+            mp.rows = b.rows;
+            mp.columns = b.columns;
+        }
+        p.members.push_back(mp);
+    }
+}
+
 void EffectBuilder::buildParameters() {
     checkMemberCounts();
     checkStatementCount();
@@ -321,23 +348,7 @@ void EffectBuilder::buildParameters() {
             if (!g.initializer.empty() && syntax_.tokens[g.initializer.begin].kind == Token::Kind::String)
                 p.defaultString = syntax_.tokens[g.initializer.begin].text;
         } else if (const FxStruct* s = syntax_.findStruct(syntax_.resolveType(g.type))) {
-            p.parameterClass = ParameterClass::Struct;
-            p.type = ParameterType::Void;
-            for (const auto& m : s->members) {
-                Parameter mp;
-                mp.name = m.name;
-                auto b = describeBasicType(syntax_.resolveType(m.type));
-                mp.parameterClass = b.isMatrix ? ParameterClass::Matrix : b.columns > 1 ? ParameterClass::Vector : ParameterClass::Scalar;
-                mp.type = scalarType(b.scalar);
-                mp.rows = b.rows;
-                mp.columns = b.columns;
-                mp.elements = m.arrayDims.empty() ? 0 : m.arrayDims[0];
-                if (long long n = arrayElementCount(m.arrayDims); n > limits::kMaxArrayElements)
-                    error(diag::kArrayTooLarge, "member '" + m.name + "' of struct '" + s->name + "' has " + std::to_string(n) +
-                                                    " elements; fxport accepts at most " + std::to_string(limits::kMaxArrayElements) + " in one array",
-                          g.token);
-                p.members.push_back(mp);
-            }
+            describeStructMembers(*s, p, g.token, 0);
         } else {
             auto b = describeBasicType(syntax_.resolveType(g.type));
             if (!b.ok && isStorageType(g.type)) continue;  // a UAV or buffer SRV: reflected per shader (CompiledShader::storage)

@@ -11,4 +11,5 @@
 #include "fxport/d3d10/d3d10_interfaces.h"
 #include "fxport/d3d10/d3d10_types.h"
 #include "fxport/d3d10/d3dx10effect.h"
+#include "fxport/d3d10/d3dx10tex.h"
 #include "fxport/d3d11.h"

@@ -102,7 +102,17 @@ struct TextureCopy {
     int width = 0, height = 0;
 };
 
-enum class QueryKind { SamplesPassed, Timestamp };
+// What a query measures: the samples passing the depth and stencil tests, a GPU timestamp, or one
+// of the pipeline statistics (GL_ARB_pipeline_statistics_query's counters), those in the order of
+// D3D11_QUERY_DATA_PIPELINE_STATISTICS's members (IAVertices ... CSInvocations).
+enum class QueryKind {
+    SamplesPassed, Timestamp,
+    VerticesSubmitted, PrimitivesSubmitted, VertexShaderInvocations, GeometryShaderInvocations, GeometryShaderPrimitives,
+    ClippingInputPrimitives, ClippingOutputPrimitives, FragmentShaderInvocations, TessControlPatches, TessEvaluationInvocations,
+    ComputeShaderInvocations,
+};
+inline constexpr int kPipelineStatistics = 11;  // QueryKind::VerticesSubmitted + 0 .. 10
+inline QueryKind pipelineStatistic(int i) { return QueryKind(int(QueryKind::VerticesSubmitted) + i); }
 
 class Backend {
 public:
@@ -174,8 +184,12 @@ public:
     // The image-unit format qualifier a shader declares for `format` ("rgba8"), "" when images cannot hold it.
     virtual const char* imageFormatName(SurfaceFormat format) = 0;
     virtual BackendObject createTexture(bool cube, SurfaceFormat format, int levels, int width, int height) = 0;
-    // A buffer texture over the first `bytes` of `buffer`, texels of `format` (deleted with deleteTexture).
-    virtual BackendObject createBufferTexture(BackendObject buffer, SurfaceFormat format, std::size_t bytes) = 0;
+    // A buffer texture over `bytes` of `buffer` from byte `offset`, texels of `format` (deleted with
+    // deleteTexture). `offset` is a multiple of bufferOffsetAlignment(false).
+    virtual BackendObject createBufferTexture(BackendObject buffer, SurfaceFormat format, std::size_t offset, std::size_t bytes) = 0;
+    // The multiple a range of a buffer must start at to be a buffer texture (storage false) or a
+    // shader-storage binding (storage true).
+    virtual std::size_t bufferOffsetAlignment(bool storage) = 0;
     virtual void deleteTexture(BackendObject texture) = 0;
     virtual void writeTexture(BackendObject texture, SurfaceFormat format, int face, int level, const Rectangle& area,
                               const void* data) = 0;
@@ -233,7 +247,8 @@ public:
 
     // Storage: a buffer on a shader-storage binding, level 0 of a texture on an image unit, and the
     // barrier that makes shader writes visible to whatever comes next.
-    virtual void bindStorageBuffer(int binding, BackendObject buffer) = 0;
+    // `bytes` 0: the whole buffer; otherwise that many from `offset` (a multiple of bufferOffsetAlignment(true)).
+    virtual void bindStorageBuffer(int binding, BackendObject buffer, std::size_t offset, std::size_t bytes) = 0;
     virtual void bindStorageImage(int unit, BackendObject texture, SurfaceFormat format, bool writes) = 0;
     virtual void storageBarrier() = 0;
 
@@ -249,6 +264,11 @@ public:
     virtual void beginSamplesPassed(BackendObject query) = 0;
     virtual void endSamplesPassed() = 0;
     virtual void writeTimestamp(BackendObject query) = 0;
+    // The pipeline statistics: whether the API counts them, and the counting of one (each kind
+    // counts into one query at a time; they count alongside each other and a samples query).
+    virtual bool hasPipelineStatistics() = 0;
+    virtual void beginStatistic(BackendObject query, QueryKind kind) = 0;
+    virtual void endStatistic(QueryKind kind) = 0;
     virtual bool queryReady(BackendObject query) = 0;
     virtual std::uint64_t queryResult(BackendObject query) = 0;
 

@@ -157,6 +157,7 @@ struct GraphicsDevice::Impl {
         bool image = false;
         SurfaceFormat format = SurfaceFormat::Color;  // images: the texture's format
         bool typedBuffer = false;  // a buffer texture (core::TexelBuffer): Buffer<T> at t#, RWBuffer<T> at u# (image set)
+        std::size_t offset = 0, bytes = 0;  // a storage buffer's bound range (bytes 0: all of it)
     };
     std::array<StorageSlot, kMaxUnorderedAccessSlots> unorderedAccess{};
     std::array<StorageSlot, kMaxShaderResourceBuffers> resourceBuffers{};

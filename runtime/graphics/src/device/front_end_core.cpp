@@ -114,16 +114,23 @@ bool isTexelBufferFormat(SurfaceFormat f) {
     }
 }
 
-TexelBuffer::TexelBuffer(GraphicsDevice& device, const ByteBuffer& buffer, SurfaceFormat format, std::size_t count)
+std::size_t bufferOffsetAlignment(GraphicsDevice& device, bool storage) { return deviceImpl(device).backend->bufferOffsetAlignment(storage); }
+
+TexelBuffer::TexelBuffer(GraphicsDevice& device, const ByteBuffer& buffer, SurfaceFormat format, std::size_t count, std::size_t first)
     : GraphicsResource(device, "TexelBuffer"), format_(format) {
     if (!isTexelBufferFormat(format))
         throw ArgumentError(describe() + ": format " + surfaceFormatName(format) + " is not one a typed buffer holds");
-    const std::size_t bytes = count * std::size_t(bytesPerPixel(format));
-    if (count == 0 || bytes > buffer.size())
-        throw ArgumentError(describe() + ": " + std::to_string(count) + " texels of " + surfaceFormatName(format) + " need " + std::to_string(bytes) +
-                            " bytes; the buffer has " + std::to_string(buffer.size()));
+    const std::size_t texel = std::size_t(bytesPerPixel(format));
+    const std::size_t bytes = count * texel, offset = first * texel;
+    if (count == 0 || offset + bytes > buffer.size())
+        throw ArgumentError(describe() + ": " + std::to_string(count) + " texels of " + surfaceFormatName(format) + " from texel " + std::to_string(first) +
+                            " end at byte " + std::to_string(offset + bytes) + "; the buffer has " + std::to_string(buffer.size()));
     GraphicsDevice::Impl& d = deviceImpl(device);
-    name_ = d.backend->createBufferTexture(buffer.backendObject(), format, bytes);
+    const std::size_t alignment = d.backend->bufferOffsetAlignment(false);
+    if (offset % alignment != 0)
+        throw ArgumentError(describe() + ": texel " + std::to_string(first) + " starts at byte " + std::to_string(offset) +
+                            ", and buffer textures start at multiples of " + std::to_string(alignment) + " bytes on this GPU");
+    name_ = d.backend->createBufferTexture(buffer.backendObject(), format, offset, bytes);
     ++d.live.textures;
 }
 
@@ -229,14 +236,25 @@ void setComputeShader(GraphicsDevice& device, const ShaderCode* computeShader) {
     deviceImpl(device).computeShader = computeShader ? &computeShader->program() : nullptr;
 }
 
-void setStorageBuffer(GraphicsDevice& device, bool unorderedAccess, int slot, const ByteBuffer* buffer) {
+void setStorageBuffer(GraphicsDevice& device, bool unorderedAccess, int slot, const ByteBuffer* buffer, std::size_t offset, std::size_t bytes) {
     GraphicsDevice::Impl& d = deviceImpl(device);
     const int slots = unorderedAccess ? kMaxUnorderedAccessSlots : kMaxShaderResourceBuffers;
     if (slot < 0 || slot >= slots)
         throw ArgumentError(std::string(unorderedAccess ? "unordered-access" : "shader-resource buffer") + " slot " + std::to_string(slot) +
                             " is outside 0.." + std::to_string(slots - 1));
     GraphicsDevice::Impl::StorageSlot wanted;
-    if (buffer) wanted = GraphicsDevice::Impl::StorageSlot{buffer, buffer->backendObject(), false, SurfaceFormat::Color};
+    if (buffer && bytes != 0) {
+        const std::size_t alignment = d.backend->bufferOffsetAlignment(true);
+        if (offset + bytes > buffer->size() || offset % alignment != 0)
+            throw ArgumentError("bytes " + std::to_string(offset) + ".." + std::to_string(offset + bytes) + " of a " + std::to_string(buffer->size()) +
+                                "-byte buffer: a storage range lies inside the buffer and starts at a multiple of " + std::to_string(alignment) +
+                                " bytes");
+    }
+    if (buffer) {
+        wanted = GraphicsDevice::Impl::StorageSlot{buffer, buffer->backendObject(), false, SurfaceFormat::Color};
+        wanted.offset = offset;
+        wanted.bytes = bytes;
+    }
     if (unorderedAccess) d.unorderedAccess[std::size_t(slot)] = wanted;
     else d.resourceBuffers[std::size_t(slot)] = wanted;
 }

@@ -52,13 +52,17 @@ private:
     std::uint32_t name_ = 0;
 };
 
-// The first `count` elements of a ByteBuffer read as texels of `format` (D3D11's typed buffer views:
-// Buffer<T> at t#, RWBuffer<T> at u#). Throws ArgumentError for a format a buffer texture cannot
-// hold (sRGB, packed, snorm, BGRA, depth) or a range past the buffer. `buffer` must outlive it.
+// `count` elements of a ByteBuffer from element `first` read as texels of `format` (D3D11's typed
+// buffer views: Buffer<T> at t#, RWBuffer<T> at u#). Throws ArgumentError for a format a buffer
+// texture cannot hold (sRGB, packed, snorm, BGRA, depth), a range past the buffer, or a first
+// element whose byte offset is not a multiple of bufferOffsetAlignment. `buffer` must outlive it.
 bool isTexelBufferFormat(SurfaceFormat format);
+// The multiple of bytes a view of part of a buffer starts at: a typed one (TexelBuffer, storage
+// false) or a structured/raw one (setStorageBuffer's offset, storage true). The API's, not D3D's.
+std::size_t bufferOffsetAlignment(GraphicsDevice& device, bool storage);
 class TexelBuffer : public GraphicsResource {
 public:
-    TexelBuffer(GraphicsDevice& device, const ByteBuffer& buffer, SurfaceFormat format, std::size_t count);
+    TexelBuffer(GraphicsDevice& device, const ByteBuffer& buffer, SurfaceFormat format, std::size_t count, std::size_t first = 0);
     ~TexelBuffer() override;
     SurfaceFormat format() const { return format_; }
     std::uint32_t backendObject() const { return name_; }
@@ -124,8 +128,11 @@ void setComputeShader(GraphicsDevice& device, const ShaderCode* computeShader);
 void setUniformBuffer(GraphicsDevice& device, int stage, int blockBinding, const ByteBuffer* buffer);
 // Binds `buffer` (null: none) as the unordered-access view of register u`slot` (unorderedAccess)
 // or the shader-resource buffer of register t`slot` (StructuredBuffer<T>), as
-// GraphicsDevice::SetUnorderedAccess / SetShaderResource do for a StructuredBuffer.
-void setStorageBuffer(GraphicsDevice& device, bool unorderedAccess, int slot, const ByteBuffer* buffer);
+// GraphicsDevice::SetUnorderedAccess / SetShaderResource do for a StructuredBuffer. `bytes` > 0: only
+// that many from byte `offset` (a multiple of bufferOffsetAlignment(device, true)), what the shader's
+// runtime array then holds; throws ArgumentError for a range outside the buffer or misaligned.
+void setStorageBuffer(GraphicsDevice& device, bool unorderedAccess, int slot, const ByteBuffer* buffer, std::size_t offset = 0,
+                      std::size_t bytes = 0);
 // Binds colour targets and a depth buffer of their size (null: none); the targets' own depth
 // buffers are not used. Resets the device's Viewport to the whole target (as SetRenderTargets).
 void setTargets(GraphicsDevice& device, const std::vector<RenderTargetBinding>& colour, DepthBuffer* depth);

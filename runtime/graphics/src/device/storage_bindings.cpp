@@ -109,7 +109,7 @@ bool GraphicsDevice::Impl::applyStorage(const ShaderProgram* const* programs, st
             } else if (b.kind == xlate::StorageKind::TexelBuffer) {
                 backend->bindTexture(b.binding, slot.name);
             } else {
-                backend->bindStorageBuffer(b.binding, slot.name);
+                backend->bindStorageBuffer(b.binding, slot.name, slot.offset, slot.bytes);
             }
             writes |= b.writes;
         }

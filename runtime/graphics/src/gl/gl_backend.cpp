@@ -90,15 +90,18 @@ std::array<float, 4> colorFloats(Color c) {
 // glFrontFace(GL_CW), and CullCounterClockwiseFace culls GL's back faces. (Pinned by
 // Conventions.CullModesFollowWindingAsSeen.) The winding is set without culling too: it also
 // decides gl_FrontFacing (SV_IsFrontFace, VFACE) and which stencil ops a triangle uses, and GL's
-// default (GL_CCW) would invert both until a culled draw first set it.
-void applyCull(CullMode mode) {
-    glFrontFace(GL_CW);
-    if (mode == CullMode::None) {
+// default (GL_CCW) would invert both until a culled draw first set it. D3D10/11's
+// FrontCounterClockwise makes counter-clockwise triangles the front ones (glFrontFace(GL_CCW));
+// the cull mode still names the winding as seen, so the GL face it culls swaps with it.
+void applyCull(const RasterizerState& state) {
+    glFrontFace(state.FrontCounterClockwise ? GL_CCW : GL_CW);
+    if (state.CullMode == CullMode::None) {
         glDisable(GL_CULL_FACE);
         return;
     }
     glEnable(GL_CULL_FACE);
-    glCullFace(mode == CullMode::CullCounterClockwiseFace ? GL_BACK : GL_FRONT);
+    const bool cullsClockwise = state.CullMode == CullMode::CullClockwiseFace;
+    glCullFace(cullsClockwise != state.FrontCounterClockwise ? GL_FRONT : GL_BACK);
 }
 
 
@@ -230,7 +233,7 @@ void GlBackend::setDepthStencil(const DepthStencilState& w, const DepthStencilSt
 void GlBackend::setRasterizer(const RasterizerState& w, const RasterizerState* had) {
     const bool forceAll = had == nullptr;
     const RasterizerState& a = had ? *had : w;
-    if (forceAll || w.CullMode != a.CullMode) applyCull(w.CullMode);
+    if (forceAll || w.CullMode != a.CullMode || w.FrontCounterClockwise != a.FrontCounterClockwise) applyCull(w);
     if (forceAll || w.FillMode != a.FillMode) glPolygonMode(GL_FRONT_AND_BACK, w.FillMode == FillMode::Solid ? GL_FILL : GL_LINE);
     if (forceAll || w.DepthBias != a.DepthBias || w.SlopeScaleDepthBias != a.SlopeScaleDepthBias) {
         // D3D's DepthBias is in depth-range units; GL's units are the depth buffer's resolution

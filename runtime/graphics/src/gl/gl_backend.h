@@ -72,7 +72,8 @@ public:
     bool isColorRenderable(SurfaceFormat format) override;
     const char* imageFormatName(SurfaceFormat format) override;
     BackendObject createTexture(bool cube, SurfaceFormat format, int levels, int width, int height) override;
-    BackendObject createBufferTexture(BackendObject buffer, SurfaceFormat format, std::size_t bytes) override;
+    BackendObject createBufferTexture(BackendObject buffer, SurfaceFormat format, std::size_t offset, std::size_t bytes) override;
+    std::size_t bufferOffsetAlignment(bool storage) override;
     void deleteTexture(BackendObject texture) override { glDeleteTextures(1, &texture); }
     void writeTexture(BackendObject texture, SurfaceFormat format, int face, int level, const Rectangle& area,
                       const void* data) override;
@@ -107,8 +108,9 @@ public:
     BackendObject createComputePipeline(BackendObject program) override;
     void deletePipeline(BackendObject pipeline) override { glDeleteProgramPipelines(1, &pipeline); }
 
-    void bindStorageBuffer(int binding, BackendObject buffer) override {
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(binding), buffer);
+    void bindStorageBuffer(int binding, BackendObject buffer, std::size_t offset, std::size_t bytes) override {
+        if (bytes == 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(binding), buffer);
+        else glBindBufferRange(GL_SHADER_STORAGE_BUFFER, GLuint(binding), buffer, GLintptr(offset), GLsizeiptr(bytes));
     }
     void bindStorageImage(int unit, BackendObject texture, SurfaceFormat format, bool writes) override;
     void storageBarrier() override { glMemoryBarrier(GL_ALL_BARRIER_BITS); }
@@ -123,6 +125,9 @@ public:
     void beginSamplesPassed(BackendObject query) override { glBeginQuery(GL_SAMPLES_PASSED, query); }
     void endSamplesPassed() override { glEndQuery(GL_SAMPLES_PASSED); }
     void writeTimestamp(BackendObject query) override { glQueryCounter(query, GL_TIMESTAMP); }
+    bool hasPipelineStatistics() override;
+    void beginStatistic(BackendObject query, QueryKind kind) override;
+    void endStatistic(QueryKind kind) override;
     bool queryReady(BackendObject query) override {
         GLint ready = 0;
         glGetQueryObjectiv(query, GL_QUERY_RESULT_AVAILABLE, &ready);

@@ -1,6 +1,7 @@
 // The objects the OpenGL backend makes (gl_backend.h): buffers, textures, renderbuffers,
 // framebuffers, programs, compute pipelines and queries, and the device-wide conventions.
 #include <algorithm>
+#include <string_view>
 
 #include "gl/gl_backend.h"
 #include "gl/gl_formats.h"
@@ -151,11 +152,17 @@ unsigned GlBackend::multisampledUnits(BackendObject program) {
     return units;
 }
 
-BackendObject GlBackend::createBufferTexture(BackendObject buffer, SurfaceFormat format, std::size_t bytes) {
+BackendObject GlBackend::createBufferTexture(BackendObject buffer, SurfaceFormat format, std::size_t offset, std::size_t bytes) {
     GLuint name = 0;
     glCreateTextures(GL_TEXTURE_BUFFER, 1, &name);
-    glTextureBufferRange(name, detail::glFormat(format).internalFormat, buffer, 0, GLsizeiptr(bytes));
+    glTextureBufferRange(name, detail::glFormat(format).internalFormat, buffer, GLintptr(offset), GLsizeiptr(bytes));
     return name;
+}
+
+std::size_t GlBackend::bufferOffsetAlignment(bool storage) {
+    GLint alignment = 0;
+    glGetIntegerv(storage ? GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT : GL_TEXTURE_BUFFER_OFFSET_ALIGNMENT, &alignment);
+    return std::size_t(std::max(alignment, 1));
 }
 
 BackendObject GlBackend::createRenderbuffer() {
@@ -229,10 +236,50 @@ BackendObject GlBackend::createComputePipeline(BackendObject program) {
     return pipeline;
 }
 
+namespace {
+
+// GL_ARB_pipeline_statistics_query's targets (core in GL 4.6 only), in QueryKind's order.
+GLenum queryTarget(QueryKind kind) {
+    switch (kind) {
+    case QueryKind::SamplesPassed: return GL_SAMPLES_PASSED;
+    case QueryKind::Timestamp: return GL_TIMESTAMP;
+    case QueryKind::VerticesSubmitted: return GL_VERTICES_SUBMITTED_ARB;
+    case QueryKind::PrimitivesSubmitted: return GL_PRIMITIVES_SUBMITTED_ARB;
+    case QueryKind::VertexShaderInvocations: return GL_VERTEX_SHADER_INVOCATIONS_ARB;
+    case QueryKind::GeometryShaderInvocations: return GL_GEOMETRY_SHADER_INVOCATIONS;
+    case QueryKind::GeometryShaderPrimitives: return GL_GEOMETRY_SHADER_PRIMITIVES_EMITTED_ARB;
+    case QueryKind::ClippingInputPrimitives: return GL_CLIPPING_INPUT_PRIMITIVES_ARB;
+    case QueryKind::ClippingOutputPrimitives: return GL_CLIPPING_OUTPUT_PRIMITIVES_ARB;
+    case QueryKind::FragmentShaderInvocations: return GL_FRAGMENT_SHADER_INVOCATIONS_ARB;
+    case QueryKind::TessControlPatches: return GL_TESS_CONTROL_SHADER_PATCHES_ARB;
+    case QueryKind::TessEvaluationInvocations: return GL_TESS_EVALUATION_SHADER_INVOCATIONS_ARB;
+    case QueryKind::ComputeShaderInvocations: return GL_COMPUTE_SHADER_INVOCATIONS_ARB;
+    }
+    return GL_SAMPLES_PASSED;
+}
+
+}  // namespace
+
 BackendObject GlBackend::createQuery(QueryKind kind) {
     GLuint name = 0;
-    glCreateQueries(kind == QueryKind::Timestamp ? GL_TIMESTAMP : GL_SAMPLES_PASSED, 1, &name);
+    // Mesa's glCreateQueries refuses the pipeline-statistics targets it otherwise counts (GL_INVALID_ENUM
+    // with the extension advertised): a name from glGenQueries becomes the query at its first glBeginQuery.
+    if (kind == QueryKind::SamplesPassed || kind == QueryKind::Timestamp) glCreateQueries(queryTarget(kind), 1, &name);
+    else glGenQueries(1, &name);
     return name;
 }
+
+bool GlBackend::hasPipelineStatistics() {
+    GLint count = 0;
+    glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+    for (GLint i = 0; i < count; ++i) {
+        const auto* name = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, GLuint(i)));
+        if (name && std::string_view(name) == "GL_ARB_pipeline_statistics_query") return true;
+    }
+    return false;
+}
+
+void GlBackend::beginStatistic(BackendObject query, QueryKind kind) { glBeginQuery(queryTarget(kind), query); }
+void GlBackend::endStatistic(QueryKind kind) { glEndQuery(queryTarget(kind)); }
 
 }  // namespace fxport

@@ -3,8 +3,9 @@
 // context. fxport's ID3D10Device is a thin adapter over one D3D11 device and its immediate
 // context -- one implementation underneath -- and D3D10's resources, views, shaders and state
 // objects are D3D11's (ID3D10Texture2D is ID3D11Texture2D ...), so either API's calls take them.
-// Missing here: ID3D10Buffer::Map / ID3D10Texture2D::Map (D3D10 maps on the resource; use
-// fxport's D3D11 context: GetD3D11Context()), stream output, queries.
+// ID3D10Buffer::Map/Unmap map on the buffer (through the immediate context underneath); queries
+// and predicates are D3D10's own objects (Begin, End and GetData on the query) over D3D11's.
+// Missing here: ID3D10Texture2D::Map (use fxport's D3D11 context: GetD3D11Context()), stream output.
 #pragma once
 
 #include "fxport/d3d10/d3d10_types.h"
@@ -27,6 +28,21 @@ using ID3D10GeometryShader = ID3D11GeometryShader;
 using ID3D10SamplerState = ID3D11SamplerState;
 using ID3D10RasterizerState = ID3D11RasterizerState;
 using ID3D10DepthStencilState = ID3D11DepthStencilState;
+
+// D3D10's queries: Begin, End and GetData are the query's own calls (D3D11 moved them to the
+// context). GetData answers S_FALSE until the result is there, then S_OK with it in pData.
+class ID3D10Asynchronous : public ID3D10DeviceChild {
+public:
+    virtual void Begin() = 0;
+    virtual void End() = 0;
+    virtual HRESULT GetData(void* pData, UINT DataSize, UINT GetDataFlags) = 0;
+    virtual UINT GetDataSize() = 0;
+};
+class ID3D10Query : public ID3D10Asynchronous {
+public:
+    virtual void GetDesc(D3D10_QUERY_DESC* pDesc) = 0;
+};
+class ID3D10Predicate : public ID3D10Query {};
 
 // D3D10's blend state keeps its own description (D3D10_BLEND_DESC); it binds as the D3D11 one
 // made from it.
@@ -99,6 +115,10 @@ public:
     virtual void GenerateMips(ID3D10ShaderResourceView* pShaderResourceView) = 0;
     virtual void ClearState() = 0;
     virtual void Flush() = 0;
+    virtual HRESULT CreateQuery(const D3D10_QUERY_DESC* pQueryDesc, ID3D10Query** ppQuery) = 0;
+    virtual HRESULT CreatePredicate(const D3D10_QUERY_DESC* pPredicateDesc, ID3D10Predicate** ppPredicate) = 0;
+    virtual void SetPredication(ID3D10Predicate* pPredicate, BOOL PredicateValue) = 0;
+    virtual void GetPredication(ID3D10Predicate** ppPredicate, BOOL* pPredicateValue) = 0;
 
     // fxport: the D3D11 device and immediate context underneath (no reference added), for what
     // D3D10 does on resources (Map) and for mixing the two APIs.

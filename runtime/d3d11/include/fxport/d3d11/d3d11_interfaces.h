@@ -40,6 +40,8 @@ class ID3D11Query : public ID3D11Asynchronous {
 public:
     virtual void GetDesc(D3D11_QUERY_DESC* pDesc) = 0;
 };
+// An OCCLUSION_PREDICATE query made by CreatePredicate, for SetPredication.
+class ID3D11Predicate : public ID3D11Query {};
 
 // A deferred context's recorded commands (FinishCommandList), run by the immediate context's
 // ExecuteCommandList.
@@ -55,6 +57,12 @@ public:
 class ID3D11Buffer : public ID3D11Resource {
 public:
     virtual void GetDesc(D3D11_BUFFER_DESC* pDesc) = 0;
+    // D3D10's spelling (fxport/d3d10.h: ID3D10Buffer is this interface): Map and Unmap on the buffer
+    // itself, as ID3D10Buffer::Map(MapType, MapFlags, &data) -- the device's immediate context's
+    // Map/Unmap of subresource 0, with its rules (WRITE_DISCARD on a DYNAMIC buffer, READ on a
+    // STAGING one ...). D3D11 code maps through the context.
+    virtual HRESULT Map(D3D11_MAP MapType, UINT MapFlags, void** ppData) = 0;
+    virtual void Unmap() = 0;
 };
 class ID3D11Texture2D : public ID3D11Resource {
 public:
@@ -199,6 +207,11 @@ public:
     virtual void Begin(ID3D11Asynchronous* pAsync) = 0;
     virtual void End(ID3D11Asynchronous* pAsync) = 0;
     virtual HRESULT GetData(ID3D11Asynchronous* pAsync, void* pData, UINT DataSize, UINT GetDataFlags) = 0;
+    // Later draws, dispatches, clears, copies, UpdateSubresource and GenerateMips are skipped while
+    // the predicate's result (any sample passed) equals PredicateValue; null: none. fxport waits for
+    // the result at each such call (D3D may, too: its predicates can be hints).
+    virtual void SetPredication(ID3D11Predicate* pPredicate, BOOL PredicateValue) = 0;
+    virtual void GetPredication(ID3D11Predicate** ppPredicate, BOOL* pPredicateValue) = 0;
     // Unbinds everything and returns every state to D3D's default.
     virtual void ClearState() = 0;
     virtual void Flush() = 0;
@@ -251,6 +264,7 @@ public:
     virtual HRESULT CreateDepthStencilState(const D3D11_DEPTH_STENCIL_DESC* pDepthStencilDesc,
                                             ID3D11DepthStencilState** ppDepthStencilState) = 0;
     virtual HRESULT CreateQuery(const D3D11_QUERY_DESC* pQueryDesc, ID3D11Query** ppQuery) = 0;
+    virtual HRESULT CreatePredicate(const D3D11_QUERY_DESC* pPredicateDesc, ID3D11Predicate** ppPredicate) = 0;
     virtual HRESULT CreateDeferredContext(UINT ContextFlags, ID3D11DeviceContext** ppDeferredContext) = 0;
     virtual void GetImmediateContext(ID3D11DeviceContext** ppImmediateContext) = 0;
     virtual D3D_FEATURE_LEVEL GetFeatureLevel() = 0;

@@ -405,8 +405,9 @@ struct D3D11_MAPPED_SUBRESOURCE {
 // D3D11CalcSubresource: mip level + array slice * mip levels.
 constexpr UINT D3D11CalcSubresource(UINT MipSlice, UINT ArraySlice, UINT MipLevels) { return MipSlice + ArraySlice * MipLevels; }
 
-// --- queries (ID3D11Query): event, occlusion (and its predicate), timestamp and timestamp-disjoint.
-// PIPELINE_STATISTICS and the stream-output queries are not there (CreateQuery: E_NOTIMPL).
+// --- queries (ID3D11Query): event, occlusion (and its predicate, ID3D11Predicate for
+// SetPredication), timestamp, timestamp-disjoint, and pipeline statistics where the GL driver has
+// GL_ARB_pipeline_statistics_query. The stream-output queries are not there (CreateQuery: E_NOTIMPL).
 enum D3D11_QUERY : UINT {
     D3D11_QUERY_EVENT = 0, D3D11_QUERY_OCCLUSION = 1, D3D11_QUERY_TIMESTAMP = 2, D3D11_QUERY_TIMESTAMP_DISJOINT = 3,
     D3D11_QUERY_PIPELINE_STATISTICS = 4, D3D11_QUERY_OCCLUSION_PREDICATE = 5, D3D11_QUERY_SO_STATISTICS = 6,
@@ -417,6 +418,21 @@ constexpr UINT D3D11_ASYNC_GETDATA_DONOTFLUSH = 0x1;
 struct D3D11_QUERY_DESC {
     D3D11_QUERY Query = D3D11_QUERY_EVENT;
     UINT MiscFlags = 0;
+};
+// GetData of a PIPELINE_STATISTICS query: what the pipeline did between Begin and End, counted by
+// the GPU (GL_ARB_pipeline_statistics_query's counters, which mirror these one for one).
+struct D3D11_QUERY_DATA_PIPELINE_STATISTICS {
+    UINT64 IAVertices = 0;     // vertices read by the input assembler
+    UINT64 IAPrimitives = 0;   // primitives read by the input assembler
+    UINT64 VSInvocations = 0;  // vertex shader runs (a driver may reuse a vertex: at most IAVertices)
+    UINT64 GSInvocations = 0;
+    UINT64 GSPrimitives = 0;
+    UINT64 CInvocations = 0;   // primitives sent to the clipper
+    UINT64 CPrimitives = 0;    // primitives the clipper output
+    UINT64 PSInvocations = 0;  // pixel shader runs (fxport runs an empty one where none is set)
+    UINT64 HSInvocations = 0;  // patches the hull shader ran for
+    UINT64 DSInvocations = 0;
+    UINT64 CSInvocations = 0;  // compute shader threads
 };
 struct D3D11_QUERY_DATA_TIMESTAMP_DISJOINT {
     UINT64 Frequency = 0;  // ticks per second of TIMESTAMP's values (fxport: nanoseconds, 1e9)

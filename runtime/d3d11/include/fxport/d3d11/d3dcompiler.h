@@ -136,7 +136,7 @@ struct D3D11_SHADER_INPUT_BIND_DESC {
     UINT uFlags = 0;
     UINT ReturnType = 0;
     D3D_SRV_DIMENSION Dimension = D3D_SRV_DIMENSION_UNKNOWN;
-    UINT NumSamples = 0;  // structured buffers: the element's size in bytes (fxport's GL layout)
+    UINT NumSamples = 0;  // structured buffers: the element's size in bytes (D3D's tight layout)
 };
 struct D3D11_SIGNATURE_PARAMETER_DESC {
     LPCSTR SemanticName = nullptr;

@@ -20,6 +20,11 @@ struct RasterizerState {
     float SlopeScaleDepthBias = 0;
     bool MultiSampleAntiAlias = true;
     bool ScissorTestEnable = false;
+    // Not XNA's (XNA code leaves it false): D3D10/11's FrontCounterClockwise, set by the D3D11
+    // front end. Counter-clockwise triangles are then the front ones -- what SV_IsFrontFace reads
+    // and which stencil ops (the main or the CounterClockwise set) a triangle takes. CullMode still
+    // names the winding as seen that is culled.
+    bool FrontCounterClockwise = false;
 
     bool operator==(const RasterizerState&) const = default;
 
