@@ -122,6 +122,7 @@ TEST(UniformLayout, Sm2AllocatesReadParametersByRegistersUsed) {
     e.parameters = {f, m};
     fxport::xlate::CompiledShader shader;
     shader.uniformRangesRead = {{0, 16, 0}, {16, 32, 0}};
+    shader.uniformRangesLive = shader.uniformRangesRead;
     e.shaders = {shader};
     UniformLayout l = computeUniformLayout(e, "", 20);
     ASSERT_EQ(l.placements.size(), 2u);
@@ -129,6 +130,15 @@ TEST(UniformLayout, Sm2AllocatesReadParametersByRegistersUsed) {
     EXPECT_EQ(l.placements[0].parameter, 1);
     EXPECT_EQ(l.placements[0].scalarOffsets[0], 0);
     EXPECT_EQ(l.placements[1].scalarOffsets[0], 8);
+
+    // Only m's first column live (`m[0].x + m[1].x + ...`): one register each, declaration order
+    // breaks the tie (sm1-const-allocation's first case: a c0, b c1).
+    e.shaders[0].uniformRangesLive = {{0, 16, 0}, {16, 16, 0}};
+    l = computeUniformLayout(e, "", 20);
+    ASSERT_EQ(l.placements.size(), 2u);
+    EXPECT_EQ(l.placements[0].parameter, 0);
+    EXPECT_EQ(l.placements[0].scalarOffsets[0], 0);
+    EXPECT_EQ(l.placements[1].scalarOffsets[0], 4);  // m's column 0 (rows at 4..7): c1
 }
 
 // A struct's members each get a placement and the path EffectParameter takes to them: SM4 packs

@@ -193,16 +193,19 @@ UniformLayout cbufferLayout(const CompiledEffect& effect, const std::string& sou
     return layout;
 }
 
+// Whether a shader's result depends on bytes [offset, offset + size) of the block (xlate's
+// component-exact liveness, CompiledShader::uniformRangesLive).
 bool rangeRead(const CompiledEffect& effect, int block, int offset, int size) {
     for (const auto& shader : effect.shaders)
-        for (const auto& r : shader.uniformRangesRead)
+        for (const auto& r : shader.uniformRangesLive)
             if (r.block == block && r.offset < offset + size && offset < r.offset + r.size) return true;
     return false;
 }
 
-// D3D9 reserves a parameter's registers only up to the last one the shader reads (sm1-const-
-// allocation). Register k of the parameter is found in fxport's own layout (the reflection's
-// offset, array and matrix strides), where each D3D9 register is one 16-byte slot too.
+// D3D9 reserves a parameter's registers only up to the last one the optimised shader reads (sm1-
+// const-allocation: a float4x2 read only in column 0 takes one register). Register k of the
+// parameter is found in fxport's own layout (the reflection's offset, array and matrix strides),
+// where each D3D9 register is one 16-byte slot too.
 int usedRegisters(const CompiledEffect& effect, const Parameter& p) {
     if (p.offset < 0) return 0;
     ElementShape s = shapeOf(p);
@@ -264,12 +267,13 @@ UniformLayout registerLayout(const CompiledEffect& effect, const std::string& so
         }
     }
     std::stable_sort(pending.begin(), pending.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-    // fxc sizes each by the registers its optimised code reads; fxport's reflection only says which
-    // ranges fxport's code reads, which can be more. Where that can move a parameter, say so.
+    // fxc sizes each by the registers its optimised code reads; xlate's liveness follows values
+    // through the translated code, where fxc's optimiser can go further (a local array indexed at
+    // run time read as a relative-addressed constant). Where that can move a parameter, say so.
     int multi = 0;
     for (const auto& [used, i] : pending) multi += used > 1 ? 1 : 0;
     if (multi > 0 && pending.size() > 1)
-        layout.guess = "D3D9 registers of matrices/arrays allocated from fxport's read ranges, fxc sizes them by its own dead-code analysis";
+        layout.guess = "D3D9 registers of matrices/arrays sized by xlate's liveness analysis, fxc's optimiser may read fewer or more";
     for (const auto& [used, i] : pending) {
         int reg = 0;
         while (!isFree(reg, used)) ++reg;

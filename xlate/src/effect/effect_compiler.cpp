@@ -710,6 +710,7 @@ int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile
     shader.inputs = glsl.inputs;
     shader.samplers = glsl.samplers;
     shader.uniformRangesRead = glsl.rangesRead;
+    shader.uniformRangesLive = glsl.rangesLive;
     shader.outputTargets = glsl.outputTargets;
     shader.writesDepth = glsl.writesDepth;
     shader.clipDistances = glsl.clipDistances;

@@ -223,6 +223,9 @@ json toJson(const CompiledShader& s, const CompiledEffect& effect, bool withGlsl
     for (const auto& r : s.uniformRangesRead)  // [offset, size] in $Global, [offset, size, block] elsewhere
         ranges.push_back(r.block ? json{r.offset, r.size, r.block} : json{r.offset, r.size});
     j["uniformRangesRead"] = ranges;
+    json live = json::array();
+    for (const auto& r : s.uniformRangesLive) live.push_back(json{r.offset, r.size, r.block});
+    j["uniformRangesLive"] = live;
     if (s.profile.stage == ShaderStage::Pixel) {
         j["outputTargets"] = s.outputTargets;
         j["writesDepth"] = s.writesDepth;
@@ -514,6 +517,10 @@ CompiledEffect deserializeEffect(std::string_view text, const std::string& nameF
             for (const auto& name : s.at("parametersRead")) cs.parametersRead.push_back(paramIndex.at(name.get<std::string>()));
             for (const auto& r : s.at("uniformRangesRead"))
                 cs.uniformRangesRead.push_back({r.at(0), r.at(1), r.size() > 2 ? r.at(2).get<int>() : 0});
+            if (s.contains("uniformRangesLive"))
+                for (const auto& r : s.at("uniformRangesLive")) cs.uniformRangesLive.push_back({r.at(0), r.at(1), r.at(2)});
+            else
+                cs.uniformRangesLive = cs.uniformRangesRead;  // written before the analysis: all it reads
             cs.outputTargets = s.value("outputTargets", 0);
             cs.writesDepth = s.value("writesDepth", false);
             cs.needsD3D9PixelOffset = s.value("d3d9PixelOffset", false);

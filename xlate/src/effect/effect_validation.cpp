@@ -73,11 +73,12 @@ std::optional<std::string> findEffectInconsistency(const CompiledEffect& e) {
             if (!within(b.unit, 0, kMaxUnit - 1)) return what + " binds a sampler to unit " + std::to_string(b.unit);
         for (int p : s.parametersRead)
             if (!within(p, 0, static_cast<long long>(e.parameters.size()) - 1)) return what + " reads parameter #" + std::to_string(p);
-        for (const auto& r : s.uniformRangesRead) {
-            if (!within(r.block, 0, static_cast<long long>(e.uniformBlocks.size()) - 1)) return what + " reads constant buffer #" + std::to_string(r.block);
-            if (r.offset < 0 || r.size < 0 || static_cast<long long>(r.offset) + r.size > e.uniformBlocks[static_cast<size_t>(r.block)].size)
-                return what + " reads bytes " + std::to_string(r.offset) + "+" + std::to_string(r.size) + " outside its constant buffer";
-        }
+        for (const auto* ranges : {&s.uniformRangesRead, &s.uniformRangesLive})
+            for (const auto& r : *ranges) {
+                if (!within(r.block, 0, static_cast<long long>(e.uniformBlocks.size()) - 1)) return what + " reads constant buffer #" + std::to_string(r.block);
+                if (r.offset < 0 || r.size < 0 || static_cast<long long>(r.offset) + r.size > e.uniformBlocks[static_cast<size_t>(r.block)].size)
+                    return what + " reads bytes " + std::to_string(r.offset) + "+" + std::to_string(r.size) + " outside its constant buffer";
+            }
         if (!within(s.outputTargets, 0, 8)) return what + " writes " + std::to_string(s.outputTargets) + " render targets";
         for (const auto& b : s.storage)
             if (!within(b.slot, 0, 127) || !within(b.binding, 0, kSrvBufferBindingBase + 127) || !within(b.stride, 0, 2048))

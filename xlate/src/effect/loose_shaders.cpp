@@ -150,8 +150,9 @@ std::vector<int> mergeInto(CompiledEffect& merged, const CompiledEffect& part, c
         CompiledShader shader = s;
         for (int& p : shader.parametersRead) p = paramMap[size_t(p)];
         std::sort(shader.parametersRead.begin(), shader.parametersRead.end());
-        for (auto& r : shader.uniformRangesRead)
-            if (r.block >= 0 && size_t(r.block) < blockMap.size()) r.block = blockMap[size_t(r.block)];
+        for (auto* ranges : {&shader.uniformRangesRead, &shader.uniformRangesLive})
+            for (auto& r : *ranges)
+                if (r.block >= 0 && size_t(r.block) < blockMap.size()) r.block = blockMap[size_t(r.block)];
         shaderMap.push_back(int(merged.shaders.size()));
         merged.shaders.push_back(std::move(shader));
     }

@@ -2,6 +2,7 @@
 
 #include "spirv/fetch_offsets.h"
 #include "spirv/integer_matrices.h"
+#include "spirv/live_uniform_bytes.h"
 
 #include <spirv_cross/spirv_glsl.hpp>
 
@@ -265,6 +266,18 @@ bool isGlslKeyword(const std::string& name) {
     return kKeywords.count(name) > 0 || name.rfind("gl_", 0) == 0;
 }
 
+// The block's live bytes (live_uniform_bytes.h); all it reads where the analysis gave up.
+void addLiveRanges(const std::optional<std::map<std::uint32_t, std::vector<LiveRange>>>& live, std::uint32_t variable, int block,
+                   GlslShader& out) {
+    if (!live) {
+        for (const UniformRange& r : out.rangesRead)
+            if (r.block == block) out.rangesLive.push_back(r);
+        return;
+    }
+    if (auto it = live->find(variable); it != live->end())
+        for (const LiveRange& r : it->second) out.rangesLive.push_back({r.offset, r.size, block});
+}
+
 }  // namespace
 
 GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, const RewrittenEffect& effect,
@@ -280,6 +293,7 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
             if (module.reparse()) runSpirvPasses(module, {integerMatricesAsArrays, fetchOffsetsIntoCoordinates});
             spirv = module.assemble();
         }
+        const auto live = liveUniformBytes(spirv);
         GlslCompiler compiler(std::move(spirv));
         compiler.build_dummy_sampler_for_combined_images();
         compiler.build_combined_image_samplers();
@@ -319,6 +333,7 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
                 block.members = d3d->members;
                 block.d3dPacking = true;
                 for (const UniformRange& r : d3d->rangesRead) out.rangesRead.push_back({r.offset, r.size, block.index});
+                addLiveRanges(live, ubo.id, block.index, out);
                 out.membersRead.insert(out.membersRead.end(), d3d->membersRead.begin(), d3d->membersRead.end());
                 out.blocks.push_back(std::move(block));
                 continue;
@@ -357,6 +372,7 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
                 if (d3d && !relaid && range.index < d3d->members.size()) size = std::min(size, d3d->members[range.index].size);
                 out.rangesRead.push_back({static_cast<int>(range.offset), size, block.index});
             }
+            addLiveRanges(live, ubo.id, block.index, out);
             out.blocks.push_back(std::move(block));
         }
 

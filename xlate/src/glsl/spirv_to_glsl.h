@@ -56,6 +56,7 @@ struct GlslShader {
     std::vector<UniformBlockLayout> blocks;  // the blocks this shader reads, as it declares them
     std::vector<std::string> membersRead;    // block members with active ranges (any block)
     std::vector<UniformRange> rangesRead;
+    std::vector<UniformRange> rangesLive;  // the bytes whose values reach a result (live_uniform_bytes.h)
     int outputTargets = 0;
     bool writesDepth = false;
     int clipDistances = 0;  // the size of the gl_ClipDistance output (non-pixel stages)

@@ -187,6 +187,10 @@ struct CompiledShader {
     std::vector<SamplerBinding> samplers;
     std::vector<int> parametersRead;      // indices into CompiledEffect::parameters
     std::vector<UniformRange> uniformRangesRead;
+    // The bytes of those ranges whose values can reach the shader's results, component by component
+    // after dead-code analysis (glslang loads a whole matrix for `m[0].x`): what fxc sizes an SM 1-3
+    // parameter's constant registers by. A subset of uniformRangesRead.
+    std::vector<UniformRange> uniformRangesLive;
     int outputTargets = 0;                // pixel shaders: number of SV_Target outputs (MRT)
     bool writesDepth = false;
     // Vertex, geometry and domain shaders: how many SV_ClipDistance values they write (gl_ClipDistance
