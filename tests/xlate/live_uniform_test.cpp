@@ -103,3 +103,10 @@ TEST(LiveUniforms, RuntimeIndexKeepsTheWholeArray) {
     EXPECT_FALSE(live(e, a, a.members[1].offset, 4));
     EXPECT_TRUE(live(e, param(e, "idx"), param(e, "idx").offset, 4));
 }
+
+// modf's whole part is written through its out parameter: the call's own result unread, v is live.
+TEST(LiveUniforms, OutParameterOfAnIntrinsicKeepsItsInput) {
+    CompiledEffect e = compile("float4 v;\n", "float4 ip; modf(v, ip); return ip;");
+    ASSERT_FALSE(e.shaders.empty());
+    EXPECT_TRUE(live(e, param(e, "v"), param(e, "v").offset, 16));
+}

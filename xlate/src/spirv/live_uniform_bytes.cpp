@@ -207,7 +207,15 @@ void Analysis::visit(const Inst& i) {
     const std::vector<char> r = mask(i.result);  // a copy: marking may grow the map
     bool any = false;
     for (char c : r) any = any || c;
-    const bool effect = i.op == op::FunctionCall || (i.op >= 227 && i.op <= 242);  // calls and atomics act when unread
+    // Calls, atomics and what writes through a pointer (modf's and frexp's out parameter) act
+    // even when their result is unread.
+    bool effect = i.op == op::FunctionCall || (i.op >= 227 && i.op <= 242);
+    for (std::uint32_t id : i.ids) {
+        if (i.op == op::Load) break;
+        const Inst* d = def(id);
+        const Inst* t = d ? def(d->type) : nullptr;
+        effect = effect || (t && t->op == op::TypePointer);
+    }
     if (!any && !effect) return;
     const std::size_t n = r.size();
     auto sameShape = [&](std::uint32_t id) {
