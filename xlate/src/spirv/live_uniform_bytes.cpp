@@ -25,6 +25,7 @@ constexpr std::uint32_t ExtInst = 12, TypeBool = 20, TypeInt = 21, TypeFloat = 2
 constexpr std::uint32_t kDecRowMajor = 4, kDecArrayStride = 6, kDecMatrixStride = 7, kDecOffset = 35, kDecBlock = 2;
 constexpr std::uint32_t kStorageUniform = 2;
 constexpr std::size_t kMaxLeaves = 1u << 16;
+constexpr int kMaxDepth = 64;  // type nesting followed (glslang's types nest far less)
 
 struct Inst {
     std::uint32_t op = 0, type = 0, result = 0;
@@ -77,7 +78,7 @@ private:
     void visit(const Inst& i);
     bool uniformLoad(const Inst& load);
     bool leafBytes(std::uint32_t type, std::uint32_t base, std::uint32_t stride, bool rowMajor, std::uint32_t componentStride,
-                   std::vector<std::pair<std::uint32_t, std::uint32_t>>& out);
+                   std::vector<std::pair<std::uint32_t, std::uint32_t>>& out, int depth = 0);
 };
 
 bool Analysis::parse(const std::vector<std::uint32_t>& words) {
@@ -122,12 +123,13 @@ bool Analysis::parse(const std::vector<std::uint32_t>& words) {
 // Scalar components of a value of `type`; 0 for what has none (pointers, images, void).
 std::size_t Analysis::leaves(std::uint32_t type) {
     if (auto it = leafCache_.find(type); it != leafCache_.end()) return it->second;
+    leafCache_[type] = 0;  // a type that contains itself (a corrupt module) has no leaves
     const Inst* t = def(type);
     std::size_t n = 0;
     if (!t) n = 0;
     else if (t->op == op::TypeBool || t->op == op::TypeInt || t->op == op::TypeFloat) n = 1;
     else if ((t->op == op::TypeVector || t->op == op::TypeMatrix) && t->ids.size() == 1 && t->lits.size() == 1)
-        n = t->lits[0] * leaves(t->ids[0]);
+        n = std::min<std::size_t>(kMaxLeaves + 1, std::size_t(t->lits[0]) * leaves(t->ids[0]));
     else if (t->op == op::TypeArray && t->ids.size() == 2 && constants_.count(t->ids[1]))
         n = std::min<std::size_t>(kMaxLeaves + 1, std::size_t(constants_[t->ids[1]]) * leaves(t->ids[0]));
     else if (t->op == op::TypeStruct)
@@ -334,6 +336,8 @@ void Analysis::visit(const Inst& i) {
 }
 
 bool Analysis::run() {
+    for (std::size_t k = firstFunction_; k < insts_.size(); ++k)  // masks stay small
+        if (insts_[k].type && leaves(insts_[k].type) > kMaxLeaves) return false;
     // Backward over the function bodies until nothing changes (loops carry liveness round phis).
     for (int round = 0; round < 64; ++round) {
         changed_ = false;
@@ -362,9 +366,9 @@ bool Analysis::run() {
 // Byte offsets of each leaf of a value of `type` at `base` (a matrix's stride and majority come
 // from the struct member that holds it; a matrix column's components are componentStride apart).
 bool Analysis::leafBytes(std::uint32_t type, std::uint32_t base, std::uint32_t stride, bool rowMajor, std::uint32_t componentStride,
-                         std::vector<std::pair<std::uint32_t, std::uint32_t>>& out) {
+                         std::vector<std::pair<std::uint32_t, std::uint32_t>>& out, int depth) {
     const Inst* t = def(type);
-    if (!t || out.size() > kMaxLeaves) return false;
+    if (!t || out.size() > kMaxLeaves || depth > kMaxDepth) return false;
     switch (t->op) {
     case op::TypeBool:
     case op::TypeInt:
@@ -380,14 +384,14 @@ bool Analysis::leafBytes(std::uint32_t type, std::uint32_t base, std::uint32_t s
     }
     case op::TypeMatrix:
         for (std::uint32_t c = 0; c < t->lits[0]; ++c)
-            if (!leafBytes(t->ids[0], base + (rowMajor ? c * 4 : c * stride), 0, false, rowMajor ? stride : 0, out)) return false;
+            if (!leafBytes(t->ids[0], base + (rowMajor ? c * 4 : c * stride), 0, false, rowMajor ? stride : 0, out, depth + 1)) return false;
         return true;
     case op::TypeArray: {
         auto s = arrayStride_.find(type);
         auto length = constants_.find(t->ids[1]);
         if (s == arrayStride_.end() || length == constants_.end()) return false;
         for (std::uint32_t e = 0; e < length->second; ++e)
-            if (!leafBytes(t->ids[0], base + e * s->second, stride, rowMajor, 0, out)) return false;
+            if (!leafBytes(t->ids[0], base + e * s->second, stride, rowMajor, 0, out, depth + 1)) return false;
         return true;
     }
     case op::TypeStruct:
@@ -396,7 +400,7 @@ bool Analysis::leafBytes(std::uint32_t type, std::uint32_t base, std::uint32_t s
             auto offset = memberOffset_.find(key);
             if (offset == memberOffset_.end()) return false;
             std::uint32_t ms = matrixStride_.count(key) ? matrixStride_[key] : 16;
-            if (!leafBytes(t->ids[m], base + offset->second, ms, rowMajor_.count(key) > 0, 0, out)) return false;
+            if (!leafBytes(t->ids[m], base + offset->second, ms, rowMajor_.count(key) > 0, 0, out, depth + 1)) return false;
         }
         return true;
     default:
@@ -455,14 +459,18 @@ bool Analysis::uniformLoad(const Inst& load) {
             } else {
                 return false;
             }
+            if (constant != constants_.end()) {  // one element (past the end: none is read)
+                inner.base = s.base + constant->second * step;
+                if (constant->second < count) next.push_back(inner);
+                continue;
+            }
             for (std::uint32_t e = 0; e < count; ++e) {
-                if (constant != constants_.end() && constant->second != e) continue;
+                if (next.size() > kMaxLeaves) return false;
                 Step one = inner;
                 one.base = s.base + e * step;
                 next.push_back(one);
             }
         }
-        if (next.size() > kMaxLeaves) return false;
         at = std::move(next);
     }
     for (const Step& s : at) {
