@@ -10,6 +10,7 @@
 #include "clip_distance_packing.h"
 #include "structured_buffer_layout.h"
 #include "keyword_identifiers.h"
+#include "static_zero_init.h"
 #include "spirv_fixups.h"
 #include "pow2_partitioning.h"
 #include "spirv_integer_fixups.h"
@@ -116,6 +117,7 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
     }
     out.warnings = msgs;
     restoreKeywordIdentifiers(out.words);  // `precise` as a name (keyword_identifiers.h)
+    staticVariablesStartAtZero(out.words);  // before the division check: `static uint i; 1 / i` (static_zero_init.h)
     if (dividesByConstantZero(out.words, request.shaderModel < 4)) {
         out.errors.push_back({0, {}, "division by zero: a divisor of this shader folds to the constant 0, which fxc refuses", true});
         return out;
