@@ -779,7 +779,7 @@ private:
     bool preciseIsTheType() {
         if (!cur().is("precise") || !peek().isIdent() || pos_ + 2 >= syntax_.tokens.size()) return false;
         const Token& after = syntax_.tokens[pos_ + 2];
-        return after.is("(") || after.is(";") || after.is(",") || after.is("=") || after.is(":") || after.is("[");
+        return after.is("(") || after.is(";") || after.is(",") || after.is("=") || after.is(":") || after.is("[") || after.is(")");
     }
 
     // A type name: identifier, optionally templated (`vector<float, 4>`, `Texture2D<float4>`).

@@ -19,7 +19,7 @@ bool isNameUse(const std::vector<Token>& t, size_t i, bool typedefNamed) {
     if (!t[i + 1].isIdent()) return true;
     if (!typedefNamed || i + 2 >= t.size()) return false;
     const Token& after = t[i + 2];
-    return after.is("(") || after.is(";") || after.is(",") || after.is("=") || after.is(":") || after.is("[");
+    return after.is("(") || after.is(";") || after.is(",") || after.is("=") || after.is(":") || after.is("[") || after.is(")");
 }
 
 // `typedef ... precise;`: the effect names a type `precise`.
