@@ -15,7 +15,7 @@
 #include <iostream>
 #include <string>
 
-#include "effect_cache.h"
+#include "effect/effect_cache.h"
 #include "fxport/xlate/effect_file.h"
 
 using namespace fxport;

@@ -9,7 +9,7 @@
 #include <iostream>
 #include <string>
 
-#include "effect_validation.h"
+#include "effect/effect_validation.h"
 #include "fxport/xlate/effect_file.h"
 
 using namespace fxport;

@@ -32,7 +32,7 @@ class HlslAcceptedFormsSm4 : public HlslAcceptedForms {};
 class HlslAcceptedFormsSm5 : public HlslAcceptedForms {};
 
 // Struct definitions that also declare variables, anonymous ones, and ones inside another struct's
-// member list (xlate/src/struct_definitions.cpp).
+// member list (xlate/src/rewrite/struct_definitions.cpp).
 TEST_P(HlslAcceptedForms, StructDefinitionsWithDeclarators) {
     // An anonymous struct typing a static constant, its members filled from a flat list.
     expectPixel("static const struct { float a; float2 b; } s = {1, 2, 3};", "return float4(s.a, s.b, A.x);", {1, 2, 3, 0.5f}, {0.5f, 0, 0, 0});
@@ -47,7 +47,7 @@ TEST_P(HlslAcceptedForms, StructDefinitionsWithDeclarators) {
 }
 
 // Array sizes written as constant expressions: arithmetic, a local constant, a float (truncated)
-// and a bool (xlate/src/array_sizes.cpp); flat initializers of such arrays fill them in order.
+// and a bool (xlate/src/rewrite/array_sizes.cpp); flat initializers of such arrays fill them in order.
 TEST_P(HlslAcceptedForms, ArraySizesFromConstantExpressions) {
     expectPixel("static const float2 g[(2 + 1) * 2] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12};", "return float4(g[5], g[1]);", {11, 12, 3, 4});
     expectPixel("static const int n = 3;", "float2 a[n - 1][1 + 1] = {1, 2, 3, 4, 5, 6, 7, 8}; return float4(a[1][0], a[0][1]);", {5, 6, 3, 4});
@@ -59,14 +59,14 @@ TEST_P(HlslAcceptedForms, ArraySizesFromConstantExpressions) {
 }
 
 // Brace initializers that name variables: each variable gives its components in fxc's order
-// (xlate/src/initializer_lists.cpp with aggregate_components.h).
+// (xlate/src/rewrite/initializer_lists.cpp with aggregate_components.h).
 TEST_P(HlslAcceptedForms, BraceInitializersNamingVariables) {
     expectPixel("", "int4 aa = int4(A); float4 foo[3] = {1, aa, aa, 2, 3, 4}; return foo[1];", {40, 10, 20, 30}, {10, 20, 30, 40});
     expectPixel("struct stu { float aa; int bb; };", "stu foo = {A.x, 3}; float4 f = {1.0, foo, 4.0}; return f;", {1, 0.25f, 3, 4}, {0.25f, 0, 0, 0});
     expectPixel("", "float s = A.y; int arr[3] = {2, 3, 4}; float4 f = {s, arr}; return f;", {-1.5f, 2, 3, 4}, {0, -1.5f, 0, 0});
 }
 
-// Component-wise casts and constructors (xlate/src/componentwise_casts.cpp): structs holding a
+// Component-wise casts and constructors (xlate/src/rewrite/componentwise_casts.cpp): structs holding a
 // texture (the texture is one component, taken only by a texture), a float4x1 cast to a shorter
 // array, an array spelled out among a constructor's arguments, an int matrix made a vector.
 TEST_P(HlslAcceptedForms, ComponentwiseCastsAndConstructors) {
@@ -80,7 +80,7 @@ TEST_P(HlslAcceptedForms, ComponentwiseCastsAndConstructors) {
     expectPixel("", "float arr[4] = {61, 62, 63, 64}; int2x2 mat; mat = (int2x2) arr; return float4(mat) + A;", {62, 63, 64, 65}, {1, 1, 1, 1});
 }
 
-// Casts on the left of '=' that keep part of the target (xlate/src/lvalue_casts.cpp): a matrix
+// Casts on the left of '=' that keep part of the target (xlate/src/rewrite/lvalue_casts.cpp): a matrix
 // cast keeps its rows and columns (the top left), an array cast the first components in order.
 TEST_P(HlslAcceptedForms, PartialAssignmentsThroughCasts) {
     expectPixel("", "float3x4 a = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}; float4x4 g = 0; (float2x3) g = a; return float4(g[0].xyz, g[1].z) + g[1].w + g[2].x;",
@@ -94,7 +94,7 @@ TEST_P(HlslAcceptedForms, PartialAssignmentsThroughCasts) {
                 {10, 5, 40, 9});
 }
 
-// `.Length` of a texture is its size as a uint vector (SM4 and later; xlate/src/length_property.cpp):
+// `.Length` of a texture is its size as a uint vector (SM4 and later; xlate/src/rewrite/length_property.cpp):
 // a 5x3 texture gives uint2(5, 3), and the result picks a uint2 overload. SM2 and 3 refuse it.
 TEST_P(HlslAcceptedForms, TextureLengthProperty) {
     const std::string globals = "Texture2D t; float4 pick(float2 x) { return 1; } float4 pick(uint2 x) { return 2; }";
@@ -113,20 +113,20 @@ TEST_P(HlslAcceptedForms, TextureLengthProperty) {
 }
 
 // UAVs of matrix or small struct elements that no function uses compile (and are dropped, as fxc
-// drops them: xlate/src/unused_uavs.cpp); SM5 pixel shaders only.
+// drops them: xlate/src/rewrite/unused_uavs.cpp); SM5 pixel shaders only.
 TEST_P(HlslAcceptedFormsSm5, UnusedUavsOfMatrixOrStructElements) {
     expectPixel("struct s { float3 a; }; RWTexture1D<float2x2> u2; RWTexture2D<struct s> u3;", "return A * 2;", {1, 2, 3, 4}, {0.5f, 1, 1.5f, 2});
 }
 
 // A sampler array nothing uses, with one state block per element, compiles (dropped as fxc drops
-// it: xlate/src/unused_sampler_arrays.cpp); a list of the wrong length is still refused.
+// it: xlate/src/rewrite/unused_sampler_arrays.cpp); a list of the wrong length is still refused.
 TEST_P(HlslAcceptedForms, UnusedSamplerArraysWithStateBlocks) {
     expectPixel("sampler sams[2][2] { { Filter = ANISOTROPIC; }, { }, { }, { Filter = ANISOTROPIC; } }; sampler one[1] { Filter = ANISOTROPIC; };",
                 "return A + 1;", {1.5f, 2, 3, 4}, {0.5f, 1, 2, 3});
     EXPECT_THROW(draw(*effect("sampler sams[2] { { } };", "return 1;")), xlate::CompileError);
 }
 
-// refract with a vector eta takes its first component (xlate/src/refract_eta.cpp).
+// refract with a vector eta takes its first component (xlate/src/rewrite/refract_eta.cpp).
 TEST_P(HlslAcceptedForms, RefractWithAVectorEta) {
     const float in[4] = {0.5f, -0.1f, 0.2f, 0.3f}, n[4] = {0.6f, 0.4f, -0.3f, 1.0f}, eta = 0.2f;
     float d = 0;
@@ -140,7 +140,7 @@ TEST_P(HlslAcceptedForms, RefractWithAVectorEta) {
     for (int k = 0; k < 4; ++k) EXPECT_NEAR(px[size_t(k)], eta * in[k] - (eta * d + root) * n[k], 1e-5) << "channel " << k;
 }
 
-// all, any and asint of a matrix work on every component (xlate/src/matrix_rows_intrinsics.cpp);
+// all, any and asint of a matrix work on every component (xlate/src/rewrite/matrix_rows_intrinsics.cpp);
 // asint exists from SM4.
 TEST_P(HlslAcceptedForms, MatrixAllAnyAsint) {
     const bool sm4 = std::string(GetParam())[0] >= '4';
@@ -157,7 +157,7 @@ TEST_P(HlslAcceptedForms, MatrixAllAnyAsint) {
 }
 
 // A static texture variable that only ever holds one global texture is that texture, assigned in
-// its initializer or in the function (xlate/src/static_object_aliases.cpp); SM4 and later.
+// its initializer or in the function (xlate/src/rewrite/static_object_aliases.cpp); SM4 and later.
 TEST_P(HlslAcceptedFormsSm4, StaticTextureVariablesAliasAGlobalTexture) {
     Texture2D tex(device, 1, 1, false, SurfaceFormat::Vector4);
     const float texel[4] = {0.25f, 0.5f, 2, 4};
@@ -173,7 +173,7 @@ TEST_P(HlslAcceptedFormsSm4, StaticTextureVariablesAliasAGlobalTexture) {
 }
 
 // Integer literals with the `l` suffix are ints (uints with `u`): they pick the int or uint
-// overload and keep their value (xlate/src/literal_suffixes.cpp); SM4 and later, where int and uint
+// overload and keep their value (xlate/src/rewrite/literal_suffixes.cpp); SM4 and later, where int and uint
 // overloads differ.
 TEST_P(HlslAcceptedFormsSm4, LongLiteralSuffixes) {
     expectPixel("float pick(int x) { return 1; } float pick(uint x) { return 2; }", "return float4(pick(3lu), pick(3l), 0x10L + 1l, A.x);", {2, 1, 17, 0.5f},
@@ -190,14 +190,14 @@ TEST_P(HlslAcceptedForms, TypedefNamedLikeATextureType) {
 }
 
 // A uniform whose default value holds a shader compiles without a default, as with fxc
-// (xlate/src/shader_valued_defaults.cpp): it reads 0 until set.
+// (xlate/src/rewrite/shader_valued_defaults.cpp): it reads 0 until set.
 TEST_P(HlslAcceptedForms, ShaderValuedDefaultsAreNotWritten) {
     const std::string globals = "float4 fun() : COLOR { return 0; } float4 f = {1, 2, compile ps_2_0 fun(), 4}; float g = {CompileShader(ps_2_0, fun())};";
     expectPixel(globals, "return f + g + A;", {0.5f, 1, 1.5f, 2}, {0.5f, 1, 1.5f, 2});
 }
 
 // Case labels written as floats are the integers they truncate to (`case 2.1f:` is `case 2:`), and
-// from SM4 a float selector is converted to int (xlate/src/switch_labels.cpp; vkd3d's switch).
+// from SM4 a float selector is converted to int (xlate/src/rewrite/switch_labels.cpp; vkd3d's switch).
 TEST_P(HlslAcceptedForms, SwitchWithFloatLabels) {
     const std::string body = "float4 c = 1; switch (SELECTOR) { case 2.1f: c += 0.5; break; case 0.9f: c += 0.25; break; case -1.5: c = -1; break; } return c;";
     for (std::string selector : {"(int)A.x", "A.x"}) {
@@ -211,7 +211,7 @@ TEST_P(HlslAcceptedForms, SwitchWithFloatLabels) {
 }
 
 // A matrix among a constructor's arguments gives its components row by row
-// (xlate/src/matrix_constructor_arguments.cpp; vkd3d's matrix-indexing).
+// (xlate/src/rewrite/matrix_constructor_arguments.cpp; vkd3d's matrix-indexing).
 TEST_P(HlslAcceptedForms, MatrixArgumentsOfConstructors) {
     expectPixel("", "float2x2 a = float2x2(A.x, A.y, A.z, A.w); float2x3 m = float2x3(a, 5, 6); return float4(m[0][2], m[1][0], m[1][1], m[1][2]);",
                 {3, 4, 5, 6}, {1, 2, 3, 4});
@@ -221,7 +221,7 @@ TEST_P(HlslAcceptedForms, MatrixArgumentsOfConstructors) {
 }
 
 // `precise` is a modifier only where a type follows; elsewhere it names a variable, and a
-// parameter of that name is set by that name (xlate/src/keyword_identifiers.cpp).
+// parameter of that name is set by that name (xlate/src/rewrite/keyword_identifiers.cpp).
 TEST_P(HlslAcceptedForms, PreciseAsAName) {
     auto e = effect("float4 precise; precise float4 scaled(float4 v) { precise float4 r = v * 2; return r; }", "return scaled(precise) + precise.x;");
     e->Parameters["precise"].SetValue(Vector4(0.5f, 1, 1.5f, 2));
@@ -260,7 +260,7 @@ TEST_P(HlslAcceptedForms, IndexOfAOneComponentVector) {
                 {1, 1, 0, 0});
 }
 
-// sign of a matrix works on every component (xlate/src/matrix_rows_intrinsics.cpp).
+// sign of a matrix works on every component (xlate/src/rewrite/matrix_rows_intrinsics.cpp).
 TEST_P(HlslAcceptedForms, SignOfAMatrix) {
     auto e = effect("float2x2 M;", "return float4(sign(M)[0], sign(M)[1]);");
     e->Parameters["M"].SetValue(std::vector<float>{-3, 0, 2, -0.5f});  // rows (-3, 0) and (2, -0.5)
@@ -270,12 +270,12 @@ TEST_P(HlslAcceptedForms, SignOfAMatrix) {
     expectPixel("", "float2x2 m = float2x2(A.x, A.y, A.z, A.w); return float4(sign(m)[1], sign(m)[0]);", {1, -1, -1, 0}, {-3, 0, 2, -0.5f});
 }
 
-// A unary minus on a bool literal negates the int it converts to (xlate/src/negated_bool_literals.cpp).
+// A unary minus on a bool literal negates the int it converts to (xlate/src/rewrite/negated_bool_literals.cpp).
 TEST_P(HlslAcceptedForms, NegatedBoolLiterals) {
     expectPixel("", "return float4(max(-true, -2), min(-1, -2), -false, A.x - true);", {-1, -2, 0, -0.5f}, {0.5f, 0, 0, 0});
 }
 
-// `!(a <= b)` is fxc's `a > b`: false when a is NaN (xlate/src/spirv_negated_comparisons.cpp); a
+// `!(a <= b)` is fxc's `a > b`: false when a is NaN (xlate/src/spirv/spirv_negated_comparisons.cpp); a
 // plain comparison and `!(a == b)` keep their meaning. SM4 and later, where 0 / 0 is NaN.
 TEST_P(HlslAcceptedFormsSm4, NegatedComparisonsOfNaN) {
     expectPixel("", "float n = A.x / A.w; return float4(!(n <= A.y) ? 1 : 0, !(n > A.y) ? 2 : 0, (n < A.y) ? 4 : 0, !(n == A.y) ? 8 : 0);",

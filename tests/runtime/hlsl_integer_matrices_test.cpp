@@ -1,4 +1,4 @@
-// int, uint and bool matrices (xlate/src/integer_matrices.h): GLSL has none, so fxport holds them
+// int, uint and bool matrices (xlate/src/spirv/integer_matrices.h): GLSL has none, so fxport holds them
 // as arrays of columns. Each shader is drawn into one float pixel and compared with the element
 // HLSL's indexing names (m[row][column]), written out here from the initializers.
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // D3D10+'s integer instructions where SPIR-V and GLSL leave the result undefined, and SM2-3's
-// integers computed as floats (xlate/src/spirv_integer_fixups.cpp): each shader is drawn into one
+// integers computed as floats (xlate/src/spirv/spirv_integer_fixups.cpp): each shader is drawn into one
 // float pixel and compared with the operation written in C++ with D3D's meaning. Counts and operands come as
 // uniforms (the GPU computes) and as literals (glslang's and spirv-opt's folding computes).
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // Out and inout arguments through conversions write back as fxc does
-// (xlate/src/out_argument_casts.cpp): an inout of another type converts in and back, a cast on an
+// (xlate/src/rewrite/out_argument_casts.cpp): an inout of another type converts in and back, a cast on an
 // argument applies as if on the left of an assignment. Drawn into one float pixel at SM2..SM5 and
 // compared with the same steps written in C++.
 #include <gtest/gtest.h>

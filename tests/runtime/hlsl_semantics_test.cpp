@@ -60,7 +60,7 @@ TEST_P(HlslSemantics, IntegerDivisionAndRemainderTruncateTowardZero) {
 }
 
 // Brace initializers written flat fill the declared type's components in order: array elements,
-// struct members, matrix rows (fxc); glslang wants them nested (xlate/src/initializer_lists.cpp).
+// struct members, matrix rows (fxc); glslang wants them nested (xlate/src/rewrite/initializer_lists.cpp).
 TEST_P(HlslSemantics, FlatBraceInitializersFillComponentsInOrder) {
     struct Case {
         const char* globals;

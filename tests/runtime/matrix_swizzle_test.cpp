@@ -1,5 +1,5 @@
 // Matrix swizzles of several elements (`_m30_m31_m32`, `_41_42_43`, `_11_22_33_44`) in shaders:
-// xlate lowers them (xlate/src/matrix_swizzle.cpp) because glslang 12 crashes on them; each value is
+// xlate lowers them (xlate/src/rewrite/matrix_swizzle.cpp) because glslang 12 crashes on them; each value is
 // checked against the element HLSL names, taken from the XNA matrix on the CPU (HLSL M[r][c] is XNA
 // M(r+1)(c+1), docs/DESIGN.md).
 #include <gtest/gtest.h>

@@ -117,7 +117,7 @@ std::vector<BrokenCase> cases() {
         // HLSL (glslang).
         {"HlslTypeErrorInInclude", kDir + "hlsl_error_in_include.fx", diag::kHlsl, "type_error.fxh", 8},
         {"HlslUndeclaredIdentifier", kDir + "undeclared_identifier.fx", diag::kHlsl, "undeclared_identifier.fx", 7},
-        // What fxc rejects and glslang would accept (xlate/src/fxc_rejections.cpp).
+        // What fxc rejects and glslang would accept (xlate/src/checks/fxc_rejections.cpp).
         {"FxcSwitchFallThrough", kDir + "fxc_switch_fallthrough.fx", diag::kHlsl, "fxc_switch_fallthrough.fx", 9},
         {"FxcConflictingAttributes", kDir + "fxc_conflicting_attributes.fx", diag::kHlsl, "fxc_conflicting_attributes.fx", 7},
         {"FxcSwizzleTwice", kDir + "fxc_swizzle_twice.fx", diag::kHlsl, "fxc_swizzle_twice.fx", 5},

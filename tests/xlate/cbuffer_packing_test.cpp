@@ -1,4 +1,4 @@
-// Constant buffers laid out as D3D packs them (xlate/src/cbuffer_packing.h): the reflection's
+// Constant buffers laid out as D3D packs them (xlate/src/spirv/cbuffer_packing.h): the reflection's
 // parameter offsets, array and matrix strides and struct member offsets are fxc's, written out
 // here by hand from its rules; the GLSL declares them (layout(offset = N)) or, where GLSL cannot,
 // reads an array of registers. The pixel checks are tests/d3d11/d3d11_cbuffer_packing_test.cpp

@@ -25,10 +25,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "effect_validation.h"
-#include "front_end_worker.h"
-#include "keyed_hash.h"
-#include "text_util.h"
+#include "effect/effect_validation.h"
+#include "frontend/front_end_worker.h"
+#include "effect/keyed_hash.h"
+#include "fx/text_util.h"
 #include "fxport/xlate/diagnostics.h"
 #include "fxport/xlate/effect_compiler.h"
 #include "fxport/xlate/effect_file.h"

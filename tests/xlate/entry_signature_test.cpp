@@ -1,4 +1,4 @@
-// Entry signatures as fxc lays them out (xlate/src/signature_layout.h): a semantic on a struct
+// Entry signatures as fxc lays them out (xlate/src/entry/signature_layout.h): a semantic on a struct
 // cascades over its members with consecutive indices, arrays of structs take indices element after
 // element, a matrix takes one semantic per column unless row_major, one-row and one-column matrix
 // results map onto their registers, and an unused resource member of an input struct is no input.

@@ -1,4 +1,4 @@
-// Geometry shader entries as fxc takes them (xlate/src/geometry_output_stream.h,
+// Geometry shader entries as fxc takes them (xlate/src/rewrite/geometry_output_stream.h,
 // geometry_input_rules.cpp): an entry without an output stream compiles (it emits nothing), an
 // unused stream beside the one written is not validated, and fxc's input rules are enforced at
 // the entry's line: maxvertexcount in 1..1024, one kind of input primitive, primitive modifiers

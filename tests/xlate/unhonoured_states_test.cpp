@@ -23,7 +23,7 @@
 
 #include "fxport/xlate/diagnostics.h"
 #include "fxport/xlate/effect_compiler.h"
-#include "render_states.h"
+#include "fx/render_states.h"
 #include "run_cli.h"
 
 namespace fs = std::filesystem;

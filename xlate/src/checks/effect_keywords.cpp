@@ -1,0 +1,56 @@
+// The effect framework's keywords are reserved in every HLSL fxc compiles, loose shaders included
+// (vkd3d's effect-technique-fx_2, _fx_4 and _fx_5 pin them):
+//  - `technique` in any case, `technique10`, `technique11` and `fxgroup` exactly so, name nothing
+//    else: a variable or typedef of that name is a syntax error;
+//  - `String` is the string type (`sTring` is not: fxc's own quirk, vkd3d's strings): no typedef or
+//    variable takes that name;
+//  - `technique10` and `technique11` open a technique in lower case only: `tEchnique10 { }` is no
+//    technique (fxc stops with a syntax error), while `Technique` and `TECHNIQUE` are.
+// The parser takes the keywords case-insensitively, so both are judged here on its tokens.
+#include "checks/fxc_checks.h"
+
+#include "hlsl/hlsl_types.h"
+#include "fx/text_util.h"
+
+namespace fxport::xlate {
+
+namespace {
+
+bool isReserved(const std::string& s) {
+    return iequals(s, "technique") || s == "technique10" || s == "technique11" || s == "fxgroup";
+}
+
+class EffectKeywords : public FxcCheck {
+public:
+    using FxcCheck::FxcCheck;
+
+    void run() {
+        std::vector<bool> keyword(t_.size(), false);
+        for (const auto& tech : syntax_.techniques) {
+            keyword[tech.token] = true;
+            const std::string& k = tok(tech.token).text;
+            if (!iequals(k, "technique") && k != "technique10" && k != "technique11")
+                report("syntax error: unexpected token '" + k + "': the keywords technique10 and technique11 are lower case (fxc X3000)", tech.token);
+        }
+        for (size_t i = 0; i + 2 < t_.size(); ++i)
+            if (t_[i].is("fxgroup") && t_[i + 1].isIdent() && (t_[i + 2].is("{") || t_[i + 2].is("<"))) keyword[i] = true;
+        for (size_t i = 0; i < t_.size(); ++i)
+            if (t_[i].isIdent() && !keyword[i] && isReserved(t_[i].text))
+                report("syntax error: unexpected token '" + t_[i].text + "': '" + t_[i].text +
+                           "' is a keyword of the effect framework and names no variable or type (fxc X3000)",
+                       i);
+        for (size_t i = 1; i < t_.size(); ++i)
+            if (t_[i].is("String") && (describeBasicType(syntax_.resolveType(t_[i - 1].text)).ok || syntax_.findStruct(t_[i - 1].text)))
+                report("syntax error: unexpected token 'String': 'String' is the string type and names no variable or type (fxc X3000)", i);
+    }
+};
+
+}  // namespace
+
+std::vector<std::pair<size_t, Diagnostic>> findEffectKeywordErrors(const EffectSyntax& syntax, const SourceMap& map) {
+    EffectKeywords check(syntax, map);
+    check.run();
+    return check.takeFound();
+}
+
+}  // namespace fxport::xlate

@@ -1,0 +1,442 @@
+#include "entry/entry_wrapper.h"
+
+#include "rewrite/degenerate_matrices.h"
+
+#include <algorithm>
+#include <cctype>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "hlsl/hlsl_types.h"
+#include "entry/signature_layout.h"
+#include "fx/text_util.h"
+#include "rewrite/keyword_identifiers.h"
+
+namespace fxport::xlate {
+
+std::pair<std::string, int> splitSemantic(const std::string& semantic) {
+    std::string s = toUpper(semantic);
+    size_t digits = s.size();
+    while (digits > 0 && std::isdigit(static_cast<unsigned char>(s[digits - 1]))) --digits;
+    if (digits == s.size()) return {s, 0};
+    return {s.substr(0, digits), std::atoi(s.c_str() + digits)};
+}
+
+namespace {
+
+bool isIntegerScalar(const std::string& s) {
+    return s == "int" || s == "uint" || s == "dword" || s == "min16int" || s == "min12int" || s == "min16uint" || s == "bool";
+}
+
+std::string vectorType(const std::string& scalar, int n) {
+    std::string s = scalar == "dword" ? "uint" : scalar;
+    return n == 1 ? s : s + std::to_string(n);
+}
+
+struct Leaf {
+    std::string access;      // HLSL l-value/r-value, e.g. "a0.tbn[1]"; a matrix column: the matrix
+    std::string scalar;
+    int components = 4;
+    std::string semanticBase;
+    int semanticIndex = 0;
+    std::vector<std::string> interpolation;
+    int column = -1;         // >= 0: the leaf is this column of the matrix `access` (components rows)
+};
+
+bool isInterpolationModifier(const std::string& m) {
+    return m == "nointerpolation" || m == "linear" || m == "centroid" || m == "noperspective" || m == "sample";
+}
+
+class Flattener {
+public:
+    explicit Flattener(const EffectSyntax& syntax) : syntax_(syntax) {}
+    std::string error;
+
+    // Appends the leaves of `type access[dims] : semantic`; `modifiers` are the declaration's own
+    // (interpolation, row_major ...). Semantics follow signature_layout.h.
+    bool flatten(const std::string& type, const std::string& access, const std::string& semantic,
+                 const std::vector<int>& dims, const std::vector<std::string>& modifiers, std::vector<Leaf>& out,
+                 int depth = 0, SemanticCascade* cascade = nullptr) {
+        if (depth > 8) {
+            error = "structures nested too deeply at '" + access + "'";
+            return false;
+        }
+        std::vector<std::string> elements = arrayElementAccesses(access, dims);
+        if (elements.empty()) {
+            error = "array '" + access + "' is too large to be a shader input or output";
+            return false;
+        }
+        if (const FxStruct* s = syntax_.findStruct(syntax_.resolveType(type))) {
+            SemanticCascade own = SemanticCascade::from(semantic);
+            SemanticCascade* c = cascade ? cascade : (own.active ? &own : nullptr);
+            for (const auto& e : elements)
+                for (const auto& m : s->members) {
+                    // A resource member is bound, not part of the signature; fxc refuses one with a semantic.
+                    if (isObjectMember(m) && m.semantic.empty()) continue;
+                    if (!flatten(m.type, e + "." + m.name, m.semantic, m.arrayDims, m.modifiers, out, depth + 1, c)) return false;
+                }
+            return true;
+        }
+        BasicType b = describeBasicType(syntax_.resolveType(type));
+        if (!b.ok) {
+            error = typeError(type, access);
+            return false;
+        }
+        if (semantic.empty() && !cascade) {
+            error = "'" + access + "' has no semantic; every shader input and output needs one";
+            return false;
+        }
+        std::vector<std::string> interpolation;
+        for (const auto& m : modifiers)
+            if (isInterpolationModifier(m)) interpolation.push_back(m);
+        const int registers = signatureRegisters(b, modifiers);
+        const bool rowMajor = std::find(modifiers.begin(), modifiers.end(), "row_major") != modifiers.end();
+        // A one-row or one-column matrix parameter or result is a vector in the rewritten source
+        // (degenerate_matrices.h): its registers are its components, or the whole vector.
+        const bool asVector = depth == 0 && b.isMatrix && (b.rows == 1 || b.columns == 1);
+        const bool columns = b.isMatrix && !rowMajor && !asVector;
+        auto [base, index] = cascade ? cascade->take(registers * int(elements.size())) : splitSemantic(semantic);
+        for (size_t e = 0; e < elements.size(); ++e) {
+            for (int r = 0; r < registers; ++r) {
+                Leaf leaf;
+                leaf.access = elements[e];
+                if (asVector && registers > 1) leaf.access += "[" + std::to_string(r) + "]";
+                else if (b.isMatrix && !asVector && !columns) leaf.access += "[" + std::to_string(r) + "]";
+                leaf.scalar = b.scalar;
+                leaf.components = signatureWidth(b, modifiers);
+                leaf.column = columns ? r : -1;
+                leaf.semanticBase = base;
+                leaf.semanticIndex = index + int(e) * registers + r;
+                leaf.interpolation = interpolation;
+                out.push_back(leaf);
+            }
+        }
+        return true;
+    }
+
+private:
+    const EffectSyntax& syntax_;
+
+    bool isObjectMember(const FxStructMember& m) const {
+        return !syntax_.findStruct(syntax_.resolveType(m.type)) && !describeBasicType(syntax_.resolveType(m.type)).ok && isObjectType(m.type);
+    }
+
+    static bool isObjectType(const std::string& type) {
+        static const char* const objectPrefixes[] = {"sampler", "Sampler", "texture", "Texture", "Buffer", "RW", "Structured",
+                                                     "ByteAddress", "InputPatch", "OutputPatch", "PointStream", "LineStream",
+                                                     "TriangleStream", "string"};
+        for (const char* prefix : objectPrefixes)
+            if (type.rfind(prefix, 0) == 0) return true;
+        return false;
+    }
+
+    std::string typeError(const std::string& type, const std::string& access) const {
+        // A name no declaration gives (a fragment meant to follow a header the engine prepends):
+        // said so, rather than naming the wrapper's own variables.
+        return isObjectType(type) || syntax_.typedefs.count(type) ? "type '" + type + "' of '" + access + "' cannot be a shader input or output"
+                                                                  : "type '" + type + "' is not declared: no struct or typedef of that name";
+    }
+};
+
+// The value of a leaf as an r-value: a matrix column is gathered from its rows.
+std::string leafValue(const Leaf& leaf) {
+    if (leaf.column < 0) return leaf.access;
+    std::string v = (leaf.scalar == "dword" ? std::string("uint") : leaf.scalar) + (leaf.components > 1 ? std::to_string(leaf.components) : "") + "(";
+    for (int r = 0; r < leaf.components; ++r)
+        v += (r ? ", " : "") + leaf.access + "[" + std::to_string(r) + "][" + std::to_string(leaf.column) + "]";
+    return v + ")";
+}
+
+// Statements storing `value` into a leaf: a matrix column is scattered to its rows.
+std::string assignLeaf(const Leaf& leaf, const std::string& value) {
+    if (leaf.column < 0) return "    " + leaf.access + " = " + value + ";\n";
+    static const char kSwizzle[] = "xyzw";
+    std::string out;
+    for (int r = 0; r < leaf.components && r < 4; ++r)
+        out += "    " + leaf.access + "[" + std::to_string(r) + "][" + std::to_string(leaf.column) + "] = (" + value + ")." + kSwizzle[r] + ";\n";
+    return out;
+}
+
+std::string widen(const std::string& expr, int n) {
+    switch (n) {
+    case 1: return "float4(" + expr + ", 0, 0, 0)";
+    case 2: return "float4(" + expr + ", 0, 0)";
+    case 3: return "float4(" + expr + ", 0)";
+    default: return "float4(" + expr + ")";
+    }
+}
+// Pixel-shader outputs: a scalar is replicated like fxc does for `float PS() : COLOR0`.
+std::string widenOutput(const std::string& expr, int n) {
+    switch (n) {
+    case 1: return "((float4)(" + expr + "))";
+    case 2: return "float4(" + expr + ", 0, 1)";
+    case 3: return "float4(" + expr + ", 1)";
+    default: return "float4(" + expr + ")";
+    }
+}
+std::string narrow(const std::string& v, int n) {
+    switch (n) {
+    case 1: return v + ".x";
+    case 2: return v + ".xy";
+    case 3: return v + ".xyz";
+    default: return v;
+    }
+}
+
+std::vector<std::string> splitArguments(const std::string& args) {
+    std::vector<std::string> out;
+    int depth = 0;
+    std::string cur;
+    for (char c : args) {
+        if (c == '(' || c == '[' || c == '{') ++depth;
+        if (c == ')' || c == ']' || c == '}') --depth;
+        if (c == ',' && depth == 0) {
+            out.emplace_back(trim(cur));
+            cur.clear();
+        } else {
+            cur += c;
+        }
+    }
+    if (!trim(cur).empty()) out.emplace_back(trim(cur));
+    return out;
+}
+
+std::string interpolationPrefix(const Leaf& leaf) {
+    std::string out;
+    for (const auto& m : leaf.interpolation) out += m + " ";
+    return out;
+}
+
+bool hasGlobal(const EffectSyntax& syntax, const std::string& name) {
+    for (const auto& g : syntax.globals)
+        if (g.name == name) return true;
+    return false;
+}
+
+bool has(const std::vector<std::string>& v, const char* s) {
+    for (const auto& x : v)
+        if (x == s) return true;
+    return false;
+}
+
+}  // namespace
+
+EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& entry, const ShaderProfile& profile,
+                               const std::string& arguments, bool nextToGeometryShader) {
+    EntryWrapper w;
+    const bool vertex = profile.stage == ShaderStage::Vertex;
+    Flattener flat(syntax);
+    std::vector<Leaf> inputs, outputs;
+    std::vector<std::string> locals, callArgs;
+    std::vector<std::string> literalArgs = splitArguments(arguments);
+    size_t nextLiteral = 0;
+
+    for (size_t i = 0; i < entry.parameters.size(); ++i) {
+        const FxParameter& p = entry.parameters[i];
+        std::string dims;
+        for (int d : p.arrayDims) dims += "[" + std::to_string(d) + "]";
+        if (has(p.modifiers, "uniform")) {
+            // A literal goes through the parameter's own type: glslang 12 makes `VS(0)` for a `uniform
+            // bool` an int condition (invalid GLSL, or a crash in spirv-opt), where fxc converts.
+            if (nextLiteral < literalArgs.size())
+                callArgs.push_back(describeBasicType(p.type).ok && p.arrayDims.empty()
+                                       ? p.type + "(" + literalArgs[nextLiteral++] + ")"
+                                       : literalArgs[nextLiteral++]);
+            else if (!p.defaultValue.empty()) callArgs.push_back(syntax.text(p.defaultValue));
+            else if (hasGlobal(syntax, p.name)) callArgs.push_back(p.name);  // the effect parameter fx_parser declared, as fxc makes one
+            else {
+                w.error = "uniform parameter '" + p.name + "' of '" + entry.name + "' gets no value: give it in the compile statement, e.g. compile " +
+                          profile.name + " " + entry.name + "(value)";
+                return w;
+            }
+            continue;
+        }
+        std::string local = "a" + std::to_string(i);
+        locals.push_back(degenerateAsVector(p.type) + " " + local + dims + ";");
+        callArgs.push_back(local);
+        bool isOut = has(p.modifiers, "out") || has(p.modifiers, "inout");
+        bool isIn = !has(p.modifiers, "out");
+        if (isIn && !flat.flatten(p.type, local, p.semantic, p.arrayDims, p.modifiers, inputs)) break;
+        if (isOut && !flat.flatten(p.type, local, p.semantic, p.arrayDims, p.modifiers, outputs)) break;
+    }
+    if (!flat.error.empty()) {
+        w.error = flat.error + " (in '" + entry.name + "')";
+        return w;
+    }
+    if (nextLiteral < literalArgs.size()) {
+        w.error = "'" + entry.name + "' is compiled with " + std::to_string(literalArgs.size()) + " argument(s) but has only " +
+                  std::to_string(nextLiteral) + " uniform parameter(s)";
+        return w;
+    }
+    bool returns = entry.returnType != "void";
+    // A one-row or one-column matrix returned is a vector to glslang (degenerate_matrices.h); its
+    // declared type and majority say which registers it takes.
+    const std::string returnType = keywordIdentifierSpelled(entryReturnType(syntax, entry));
+    if (returns && !flat.flatten(entry.returnType, "r", entry.returnSemantic, {}, entryReturnModifiers(syntax, entry), outputs)) {
+        w.error = flat.error + " (the return value of '" + entry.name + "')";
+        return w;
+    }
+
+    std::ostringstream params, fill, outStruct, copyOut;
+    bool firstParam = true;
+    auto addParam = [&](const std::string& decl) {
+        params << (firstParam ? "" : ", ") << decl;
+        firstParam = false;
+    };
+    bool fragCoordDeclared = false, frontFaceDeclared = false;
+    int n = 0;
+    std::map<std::string, std::string> inputNames;  // semantic -> wrapper parameter
+    for (const Leaf& leaf : inputs) {
+        std::string sem = leaf.semanticBase + std::to_string(leaf.semanticIndex);
+        std::string name = "i" + std::to_string(n++);
+        // Elements of an array of structs repeat their members' semantics (fxc reads one register
+        // for them all): the first input declared on a semantic feeds the others.
+        auto seen = inputNames.find(sem);
+        const bool repeat = seen != inputNames.end();
+        if (repeat) name = seen->second;
+        else inputNames[sem] = name;
+        if (vertex) {
+            if (leaf.semanticBase == "SV_VERTEXID" || leaf.semanticBase == "SV_INSTANCEID") {
+                if (!repeat) addParam("uint " + name + " : " + leaf.semanticBase);
+            } else if (leaf.semanticBase == "SV_POSITION" && profile.isD3D9()) {
+                // fxc reads an SV_Position vertex input as POSITION at SM2/3 (XNA's own stock
+                // shaders declare one); the vertex declaration's Position element feeds it.
+                if (!repeat) addParam(vectorType(leaf.scalar, leaf.components) + " " + name + " : POSITION" + std::to_string(leaf.semanticIndex));
+            } else {
+                if (!repeat) addParam(vectorType(leaf.scalar, leaf.components) + " " + name + " : " + sem);
+            }
+            fill << assignLeaf(leaf, name);
+            continue;
+        }
+        // Pixel shader inputs.
+        const std::string& b = leaf.semanticBase;
+        if (b == "POSITION" || b == "SV_POSITION" || b == "VPOS") {
+            if (!fragCoordDeclared) addParam("float4 fxport_fragCoord : SV_Position");
+            fragCoordDeclared = true;
+            // D3D9 VPOS counts pixels from 0 at pixel centres; GL's gl_FragCoord has them at +0.5.
+            std::string v = b == "VPOS" ? "(fxport_fragCoord - float4(0.5, 0.5, 0, 0))" : "fxport_fragCoord";
+            fill << assignLeaf(leaf, narrow(v, leaf.components));
+        } else if (b == "VFACE" || b == "SV_ISFRONTFACE") {
+            if (!frontFaceDeclared) addParam("bool fxport_frontFace : SV_IsFrontFace");
+            frontFaceDeclared = true;
+            fill << assignLeaf(leaf, b == "VFACE" ? "(fxport_frontFace ? 1.0 : -1.0)" : "fxport_frontFace");
+        } else if (b.rfind("SV_", 0) == 0) {
+            // Clip and cull distances keep their index: SV_ClipDistance1 is another register.
+            const bool distance = b == "SV_CLIPDISTANCE" || b == "SV_CULLDISTANCE";
+            if (!repeat) addParam(vectorType(leaf.scalar, leaf.components) + " " + name + " : " + (distance ? sem : b));
+            fill << assignLeaf(leaf, name);
+        } else if (isIntegerScalar(leaf.scalar)) {
+            if (!repeat) addParam("nointerpolation " + vectorType(leaf.scalar == "bool" ? "uint" : leaf.scalar, leaf.components) + " " + name + " : " + sem);
+            fill << assignLeaf(leaf, name);
+        } else if (nextToGeometryShader) {
+            const std::string interp = interpolationPrefix(leaf);
+            if (!repeat) addParam(interp + vectorType(leaf.scalar, leaf.components) + " " + name + " : " + sem);
+            fill << assignLeaf(leaf, name);
+        } else {
+            const std::string interp = interpolationPrefix(leaf);
+            if (!repeat) addParam(interp + "float4 " + name + " : " + sem);
+            fill << assignLeaf(leaf, narrow(name, leaf.components));
+        }
+    }
+
+    std::string positionMember;
+    int m = 0;
+    for (const Leaf& leaf : outputs) {
+        const std::string& b = leaf.semanticBase;
+        std::string name = "o" + std::to_string(m++);
+        if (vertex) {
+            if ((b == "POSITION" && leaf.semanticIndex == 0 && !nextToGeometryShader) || b == "SV_POSITION") {
+                outStruct << "    float4 " << name << " : SV_Position;\n";
+                copyOut << "    o." << name << " = " << widen(leafValue(leaf), leaf.components) << ";\n";
+                if (leaf.components < 4) copyOut << "    o." << name << ".w = 1;\n";
+                positionMember = name;
+            } else if (profile.major < 4 && ((b == "PSIZE" && leaf.components > 1) || (b == "FOG" && profile.major < 3 && leaf.components > 1))) {
+                // D3D9's oPts and (before vs_3_0) oFog registers hold one float (fxc rejects more).
+                w.error = "vertex shader output '" + leaf.access + "' has semantic " + b + " in " + profile.name +
+                          ": it holds one float, not " + std::to_string(leaf.components) + " components";
+                return w;
+            } else if (b.rfind("SV_", 0) == 0) {
+                outStruct << "    " << vectorType(leaf.scalar, leaf.components) << " " << name << " : " << b << leaf.semanticIndex << ";\n";
+                copyOut << "    o." << name << " = " << leafValue(leaf) << ";\n";
+            } else if (nextToGeometryShader) {
+                const std::string interp = interpolationPrefix(leaf);
+                outStruct << "    " << interp << vectorType(leaf.scalar, leaf.components) << " " << name << " : " << b << leaf.semanticIndex << ";\n";
+                copyOut << "    o." << name << " = " << leafValue(leaf) << ";\n";
+            } else if (isIntegerScalar(leaf.scalar)) {
+                outStruct << "    nointerpolation " << vectorType(leaf.scalar == "bool" ? "uint" : leaf.scalar, leaf.components) << " " << name
+                          << " : " << b << leaf.semanticIndex << ";\n";
+                copyOut << "    o." << name << " = " << leafValue(leaf) << ";\n";
+            } else {
+                const std::string interp = interpolationPrefix(leaf);
+                outStruct << "    " << interp << "float4 " << name << " : " << b << leaf.semanticIndex << ";\n";
+                std::string value = widen(leafValue(leaf), leaf.components);
+                // vs_1_1..vs_2_x colour outputs are clamped to [0, 1] by D3D9 (oD0/oD1 registers).
+                if (b == "COLOR" && profile.major < 3) value = "saturate(" + value + ")";
+                copyOut << "    o." << name << " = " << value << ";\n";
+            }
+        } else {
+            if (b == "COLOR" || b == "SV_TARGET") {
+                std::string target = "SV_Target" + std::to_string(leaf.semanticIndex);
+                if (isIntegerScalar(leaf.scalar)) {
+                    outStruct << "    " << vectorType(leaf.scalar, leaf.components) << " " << name << " : " << target << ";\n";
+                    copyOut << "    o." << name << " = " << leafValue(leaf) << ";\n";
+                } else {
+                    outStruct << "    float4 " << name << " : " << target << ";\n";
+                    copyOut << "    o." << name << " = " << widenOutput(leafValue(leaf), leaf.components) << ";\n";
+                }
+            } else if (b == "DEPTH" || b == "SV_DEPTH") {
+                outStruct << "    float " << name << " : SV_Depth;\n";
+                copyOut << "    o." << name << " = " << narrow("(float4)(" + leafValue(leaf) + ")", 1) << ";\n";
+            } else if (b == "SV_COVERAGE") {
+                outStruct << "    uint " << name << " : SV_Coverage;\n";
+                copyOut << "    o." << name << " = " << leafValue(leaf) << ";\n";
+            } else {
+                w.error = "pixel shader output '" + leaf.access + "' has semantic " + b + std::to_string(leaf.semanticIndex) +
+                          ", which is not a render target (COLORn / SV_Targetn) or depth";
+                return w;
+            }
+        }
+    }
+    if (vertex && positionMember.empty() && !nextToGeometryShader) {
+        w.error = "vertex shader '" + entry.name + "' writes no position (POSITION or SV_Position)";
+        return w;
+    }
+    // A pixel shader without outputs (a depth-only pass, maybe with clip()) is fine from ps_3_0 on;
+    // fxc rejects it for ps_1_x/ps_2_x (X4530), so does fxport.
+    bool noOutputs = m == 0 && !vertex;
+    if (noOutputs && profile.major < 3) {
+        w.error = "pixel shader '" + entry.name + "' has no output: " + profile.name +
+                  " pixel shaders must minimally write all four components of COLOR0 (fxc X4530; ps_3_0 and later may write nothing)";
+        return w;
+    }
+
+    std::ostringstream code;
+    code << "\n// ---- generated by fxport: entry wrapper for " << entry.name << " (" << profile.name << ")\n";
+    if (vertex && profile.isD3D9()) {
+        code << "cbuffer " << kInternalBlock << " { float4 " << kPixelOffset << "; };\n";
+        w.usesPixelOffset = true;
+    }
+    if (!noOutputs) code << "struct fxport_Output {\n" << outStruct.str() << "};\n";
+    code << (noOutputs ? "void " : "fxport_Output ") << kWrapperEntry << "(" << params.str() << ") {\n";
+    for (const auto& l : locals) code << "    " << l << "\n";
+    code << fill.str();
+    std::string call = entry.name + "(";
+    for (size_t i = 0; i < callArgs.size(); ++i) call += (i ? ", " : "") + callArgs[i];
+    call += ")";
+    if (returns) code << "    " << returnType << " r = " << call << ";\n";
+    else code << "    " << call << ";\n";
+    if (noOutputs) {
+        code << "}\n";
+        w.code = code.str();
+        return w;
+    }
+    code << "    fxport_Output o;\n" << copyOut.str();
+    if (w.usesPixelOffset && !positionMember.empty())
+        code << "    o." << positionMember << ".xy += " << kPixelOffset << ".xy * o." << positionMember << ".w;\n";
+    code << "    return o;\n}\n";
+    w.code = code.str();
+    return w;
+}
+
+}  // namespace fxport::xlate

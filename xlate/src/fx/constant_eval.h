@@ -1,0 +1,22 @@
+// Parameter defaults: glslang drops global initializers, so we evaluate them ourselves.
+// Handles literals, true/false, unary minus, + - * /, parentheses, constructors (float3(1, 2, 3)),
+// brace lists ({1, 2, 3, 4}) and earlier globals by name. Anything else -> no default.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fx/fx_syntax.h"
+#include "hlsl/hlsl_types.h"
+
+namespace fxport::xlate {
+
+// `tooDeep`, when given, is set when the expression nests deeper than limits::kMaxNesting (the
+// result is then nullopt).
+std::optional<std::vector<double>> evaluateConstant(const EffectSyntax& syntax, TokenSpan span,
+                                                    const std::map<std::string, std::vector<double>>& known,
+                                                    bool* tooDeep = nullptr);
+
+}  // namespace fxport::xlate

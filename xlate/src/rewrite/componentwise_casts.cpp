@@ -1,0 +1,182 @@
+// See componentwise_casts.h.
+#include "rewrite/componentwise_casts.h"
+
+#include <cstdlib>
+#include <optional>
+#include <string>
+
+#include "hlsl/aggregate_components.h"
+#include "hlsl/hlsl_types.h"
+#include "hlsl/variable_declarations.h"
+
+namespace fxport::xlate {
+
+namespace {
+
+using Declared = DeclaredVariable;
+
+// `( [struct] T [N]... )` at token i: the type and sizes, and the index of ')'.
+std::optional<std::pair<Declared, size_t>> castAt(const EffectSyntax& syntax, size_t i, size_t end) {
+    const auto& t = syntax.tokens;
+    if (!t[i].is("(")) return std::nullopt;
+    size_t j = i + 1;
+    if (j < end && t[j].is("struct")) ++j;
+    if (j >= end || !t[j].isIdent()) return std::nullopt;
+    Declared d{t[j].text, {}};
+    const std::string& resolved = syntax.resolveType(d.type);
+    if (!describeBasicType(resolved).ok && !syntax.findStruct(resolved)) return std::nullopt;
+    for (++j; j + 2 < end && t[j].is("[") && t[j + 2].is("]"); j += 3) {
+        if (t[j + 1].kind != Token::Kind::Number) return std::nullopt;
+        d.dims.push_back(std::atoi(t[j + 1].text.c_str()));
+    }
+    if (j >= end || !t[j].is(")")) return std::nullopt;
+    return std::make_pair(d, j);
+}
+
+std::string vectorSpelling(const BasicType& b) {
+    const int n = b.rows * b.columns;
+    if (b.isMatrix && b.rows > 1 && b.columns > 1) return b.scalar + std::to_string(b.rows) + "x" + std::to_string(b.columns);
+    return n > 1 ? b.scalar + std::to_string(n) : b.scalar;
+}
+
+// `T(x)`, T numeric and x an array or struct variable of exactly T's count: T from x's components.
+void rewriteConstructor(const EffectSyntax& syntax, const FxFunction& f, size_t i, std::vector<TextEdit>& edits) {
+    const auto& t = syntax.tokens;
+    if (i + 3 >= f.body.end || !t[i].isIdent() || !t[i + 1].is("(") || !t[i + 2].isIdent() || !t[i + 3].is(")") || t[i - 1].is(".")) return;
+    BasicType to = describeBasicType(syntax.resolveType(t[i].text));
+    auto from = declaredVariable(syntax, f, t[i + 2].text, i);
+    if (!to.ok || !from || (from->dims.empty() && !syntax.findStruct(syntax.resolveType(from->type)))) return;
+    std::vector<AggregateComponent> source;
+    if (!aggregateComponents(syntax, from->type, from->dims, t[i + 2].text, false, source) || source.size() != size_t(to.rows * to.columns)) return;
+    std::string text = " " + vectorSpelling(to) + "(";  // the preprocessed text may join it to `return`
+    for (size_t k = 0; k < source.size(); ++k) text += (k ? ", " : "") + source[k].access;
+    edits.push_back({t[i].offset, t[i + 3].end, text + ")"});
+}
+
+// `T(a, x, b)`, T numeric with more than one argument, x an array or struct variable named alone:
+// x gives its components in its place (`float4(arr, 0)` of an `int arr[3]`); glslang checks the count.
+// An integer or bool matrix named alone is spelled out the same way, in rows.
+void expandConstructorArguments(const EffectSyntax& syntax, const FxFunction& f, size_t i, std::vector<TextEdit>& edits) {
+    const auto& t = syntax.tokens;
+    if (i + 1 >= f.body.end || !t[i].isIdent() || !t[i + 1].is("(") || t[i - 1].is(".") || !describeBasicType(syntax.resolveType(t[i].text)).ok)
+        return;
+    std::vector<size_t> loneNames;  // arguments that are one identifier
+    size_t arguments = 0;
+    int depth = 0;
+    for (size_t k = i + 1; k < f.body.end; ++k) {
+        if (t[k].is("(") || t[k].is("[") || t[k].is("{")) ++depth;
+        if (t[k].is(")") || t[k].is("]") || t[k].is("}")) --depth;
+        if (depth == 0) break;
+        if (depth == 1 && (t[k].is("(") || t[k].is(","))) {
+            ++arguments;
+            if (t[k + 1].isIdent() && (t[k + 2].is(",") || t[k + 2].is(")"))) loneNames.push_back(k + 1);
+        }
+    }
+    for (size_t n : loneNames) {
+        auto from = declaredVariable(syntax, f, t[n].text, i);
+        if (!from) continue;
+        // An int, uint or bool matrix too, one argument or more: glslang 12 crashes building a
+        // vector from one (float4(int2x2), SIGSEGV); a float matrix it takes.
+        BasicType b = describeBasicType(syntax.resolveType(from->type));
+        const bool nonFloatMatrix = from->dims.empty() && b.ok && b.isMatrix && b.rows > 1 && b.columns > 1 && b.scalar != "float" &&
+                                    b.scalar != "half";
+        const bool aggregate = !from->dims.empty() || syntax.findStruct(syntax.resolveType(from->type));
+        if (!nonFloatMatrix && (!aggregate || arguments < 2)) continue;  // one aggregate argument: rewriteConstructor's
+        std::vector<AggregateComponent> parts;
+        if (!aggregateComponents(syntax, from->type, from->dims, t[n].text, false, parts)) continue;
+        std::string text;
+        for (size_t k = 0; k < parts.size(); ++k) text += (k ? ", " : "") + parts[k].access;
+        edits.push_back({t[n].offset, t[n].end, text});
+    }
+}
+
+// `y = x;` at a statement's start, y and x arrays or structs of other types whose components
+// match one for one in type: one assignment per component.
+void rewriteEqualAssignment(const EffectSyntax& syntax, const FxFunction& f, size_t i, std::vector<TextEdit>& edits) {
+    const auto& t = syntax.tokens;
+    if (i + 3 >= f.body.end || !t[i].isIdent() || !t[i + 1].is("=") || !t[i + 2].isIdent() || !t[i + 3].is(";")) return;
+    if (!(t[i - 1].is(";") || t[i - 1].is("{") || t[i - 1].is("}"))) return;
+    auto y = declaredVariable(syntax, f, t[i].text, i);
+    auto x = declaredVariable(syntax, f, t[i + 2].text, i);
+    auto aggregate = [&](const Declared& d) { return !d.dims.empty() || syntax.findStruct(syntax.resolveType(d.type)); };
+    if (!y || !x || !aggregate(*y) || !aggregate(*x)) return;
+    if (syntax.resolveType(y->type) == syntax.resolveType(x->type) && y->dims == x->dims) return;  // glslang's
+    std::vector<AggregateComponent> lhs, rhs;
+    if (!aggregateComponents(syntax, y->type, y->dims, t[i].text, false, lhs, true) ||
+        !aggregateComponents(syntax, x->type, x->dims, t[i + 2].text, false, rhs, true) ||
+        lhs.size() != rhs.size())
+        return;
+    std::string text;
+    for (size_t k = 0; k < lhs.size(); ++k) {
+        if (lhs[k].scalar != rhs[k].scalar) return;  // fxc converts only between equal component types here
+        text += lhs[k].access + " = " + rhs[k].access + "; ";
+    }
+    edits.push_back({t[i].offset, t[i + 3].end, text});
+}
+
+void rewriteIn(const EffectSyntax& syntax, const FxFunction& f, std::vector<TextEdit>& edits) {
+    const auto& t = syntax.tokens;
+    for (size_t i = f.body.begin + 1; i + 2 < f.body.end; ++i) {
+        rewriteConstructor(syntax, f, i, edits);
+        expandConstructorArguments(syntax, f, i, edits);
+        rewriteEqualAssignment(syntax, f, i, edits);
+        auto cast = castAt(syntax, i, f.body.end);
+        if (!cast) continue;
+        const Declared& to = cast->first;
+        size_t x = cast->second + 1;  // the cast's operand: a variable, alone
+        if (x + 1 >= f.body.end || !t[x].isIdent() || t[x + 1].is(".") || t[x + 1].is("[") || t[x + 1].is("(")) continue;
+        if (t[i - 1].isIdent() && !t[i - 1].is("return")) continue;  // a call's parenthesis
+        auto from = declaredVariable(syntax, f, t[x].text, i);
+        if (!from) continue;
+        const bool fromAggregate = !from->dims.empty() || syntax.findStruct(syntax.resolveType(from->type));
+        const bool toAggregate = !to.dims.empty() || syntax.findStruct(syntax.resolveType(to.type));
+        if (!fromAggregate && !toAggregate) continue;  // vectors and matrices: glslang's and the shape checks'
+        // Objects (a texture member) count as one component each where the cast makes an aggregate.
+        std::vector<AggregateComponent> source, target;
+        if (!aggregateComponents(syntax, from->type, from->dims, t[x].text, false, source, toAggregate) ||
+            !aggregateComponents(syntax, to.type, to.dims, "", false, target, toAggregate) || source.size() < target.size())
+            continue;
+        // A matrix cast to takes exactly its count when it has more than one row; a matrix cast from,
+        // when it has more than one row and column (fxc X3017; float4x1 to int[3] is taken).
+        auto matrixOf = [&](const Declared& d, int minColumns) {
+            BasicType b = describeBasicType(syntax.resolveType(d.type));
+            return d.dims.empty() && b.ok && b.isMatrix && b.rows > 1 && b.columns >= minColumns;
+        };
+        if ((matrixOf(*from, 2) || matrixOf(to, 1)) && source.size() != target.size()) continue;
+        if (!toAggregate) {
+            std::string text = " " + vectorSpelling(describeBasicType(syntax.resolveType(to.type))) + "(";
+            for (size_t k = 0; k < target.size(); ++k) text += (k ? ", " : "") + source[k].access;
+            edits.push_back({t[i].offset, t[x].end, text + ")"});
+            continue;
+        }
+        // `y = (T) x;` at a statement's start, y declared as T.
+        if (i < 2 || !t[i - 1].is("=") || !t[i - 2].isIdent() || !t[x + 1].is(";")) continue;
+        if (i >= 3 && !(t[i - 3].is(";") || t[i - 3].is("{") || t[i - 3].is("}"))) continue;
+        auto y = declaredVariable(syntax, f, t[i - 2].text, i - 2);
+        if (!y || syntax.resolveType(y->type) != syntax.resolveType(to.type) || y->dims != to.dims) continue;
+        std::vector<AggregateComponent> lhs;
+        if (!aggregateComponents(syntax, y->type, y->dims, t[i - 2].text, false, lhs, true) || lhs.size() != target.size()) continue;
+        std::string text;
+        bool objectsMatch = true;
+        for (size_t k = 0; k < lhs.size(); ++k) {
+            if (lhs[k].object || source[k].object) {  // an object takes only an object of its type
+                objectsMatch = objectsMatch && lhs[k].object && source[k].object && lhs[k].scalar == source[k].scalar;
+                text += lhs[k].access + " = " + source[k].access + "; ";
+            } else {
+                text += lhs[k].access + " = (" + lhs[k].scalar + ")" + source[k].access + "; ";
+            }
+        }
+        if (objectsMatch) edits.push_back({t[i - 2].offset, t[x + 1].end, text});
+    }
+}
+
+}  // namespace
+
+std::vector<TextEdit> componentwiseCasts(const EffectSyntax& syntax) {
+    std::vector<TextEdit> edits;
+    for (const auto& f : syntax.functions)
+        if (!f.body.empty()) rewriteIn(syntax, f, edits);
+    return edits;
+}
+
+}  // namespace fxport::xlate

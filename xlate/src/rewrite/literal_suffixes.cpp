@@ -1,0 +1,47 @@
+// See literal_suffixes.h.
+#include "rewrite/literal_suffixes.h"
+
+#include <cctype>
+#include <string>
+#include <vector>
+
+#include "fx/lexer.h"
+
+namespace fxport::xlate {
+
+std::string longLiteralSuffixesDropped(const std::string& text) {
+    const std::vector<Token> tokens = tokenize(text);
+    std::string out;
+    size_t at = 0;
+    for (size_t i = 0; i < tokens.size(); ++i) {
+        const Token& t = tokens[i];
+        if (t.kind != Token::Kind::Number) continue;
+        // glslang's preprocessor hands `3lu` on as `3 u` (its own long literal, then the rest): a
+        // number followed by an identifier of suffix letters on its line is never anything else.
+        const bool split = i + 1 < tokens.size() && tokens[i + 1].isIdent() && tokens[i + 1].line == t.line &&
+                           tokens[i + 1].text.find_first_not_of("uUlL") == std::string::npos;
+        const std::string s = split ? t.text + tokens[i + 1].text : t.text;
+        const size_t end = split ? tokens[i + 1].end : t.end;
+        const bool hex = s.size() > 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X');
+        size_t digits = hex ? 2 : 0;
+        while (digits < s.size() && (hex ? std::isxdigit(static_cast<unsigned char>(s[digits])) : std::isdigit(static_cast<unsigned char>(s[digits]))))
+            ++digits;
+        if (digits == 0 || digits == s.size() || (hex && digits == 2)) continue;
+        std::string suffix = s.substr(digits), kept;
+        bool longSuffix = false, valid = true;
+        for (char c : suffix) {
+            if (c == 'l' || c == 'L') longSuffix = true;
+            else if (c == 'u' || c == 'U') kept += c;
+            else valid = false;
+        }
+        if (!valid || (!longSuffix && !split) || kept.size() > 1 || suffix.size() > 2) continue;
+        out.append(text, at, t.offset - at);
+        out += s.substr(0, digits) + kept;
+        at = end;
+    }
+    if (at == 0) return text;
+    out.append(text, at, std::string::npos);
+    return out;
+}
+
+}  // namespace fxport::xlate

@@ -1,0 +1,331 @@
+// See mixed_shapes.h.
+#include "rewrite/mixed_shapes.h"
+
+#include <algorithm>
+#include <functional>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+
+#include "hlsl/call_arguments.h"
+#include "hlsl/expression_types.h"
+
+namespace fxport::xlate {
+
+namespace {
+
+const std::set<std::string> kElementwise = {"clamp", "max", "min", "mad"};
+const std::set<std::string> kElementwiseFloat = {"lerp", "smoothstep", "pow", "step", "fmod", "ldexp"};
+
+// glslang's component type for fxc's: half and the min-precision types are float to it.
+std::string glslangScalar(const std::string& s) {
+    if (s == "half" || s.rfind("min16f", 0) == 0 || s.rfind("min10f", 0) == 0) return "float";
+    if (s == "dword" || s == "min16uint") return "uint";
+    if (s.rfind("min", 0) == 0) return "int";
+    return s;
+}
+
+// How glslang spells fxc's type: a one-row or one-column matrix is a vector to it
+// (degenerate_matrices.h), a one-component one a scalar.
+std::string glslangSpelling(BasicType b) {
+    b.scalar = glslangScalar(b.scalar);
+    const int n = b.rows * b.columns;
+    if (b.isMatrix && b.rows > 1 && b.columns > 1) return spellType(b);
+    return n > 1 ? b.scalar + std::to_string(n) : b.scalar;
+}
+
+// Component (r, c) of `v`, a value of fxc type `from` as glslang holds it.
+std::string component(const BasicType& from, int r, int c, const std::string& v = "v") {
+    const int n = from.rows * from.columns;
+    if (n == 1) return v;
+    if (!from.isMatrix || from.rows == 1 || from.columns == 1) return v + "[" + std::to_string(r * from.columns + c) + "]";
+    return v + "[" + std::to_string(r) + "][" + std::to_string(c) + "]";
+}
+
+std::string shapeName(const ExpressionType& e) { return spellType(e.basic) + (e.vector1 ? "1" : ""); }
+
+// Whether mul(a, b) needs fxc's meaning spelled out: a one-component vector or matrix, or a
+// one-row or one-column matrix, takes part (glslang crashes on the first, and holds the others as
+// vectors, which mul would take as rows or columns where fxc does not); plain scalars, vectors
+// and full matrices glslang multiplies as fxc does.
+bool mulNeedsHelper(const ExpressionType& a, const ExpressionType& b) {
+    auto scalar = [](const ExpressionType& e) { return !e.basic.isMatrix && !e.vector1 && e.basic.columns == 1; };
+    if (scalar(a) || scalar(b)) return false;
+    auto odd = [](const ExpressionType& e) { return e.vector1 || (e.basic.isMatrix && (e.basic.rows == 1 || e.basic.columns == 1)); };
+    return odd(a) || odd(b);
+}
+
+// `R name(A a, B b) { return R(sums); }`: fxc's mul, a vector a row on the left and a column on
+// the right, over the smaller inner dimension.
+std::string mulCode(const std::string& name, const ExpressionType& a, const ExpressionType& b) {
+    BasicType result = productType(a, b).basic;
+    const int rows = a.basic.isMatrix ? a.basic.rows : 1, columns = b.basic.isMatrix ? b.basic.columns : 1;
+    const int inner = std::min(a.basic.columns, b.basic.isMatrix ? b.basic.rows : b.basic.columns);
+    auto of = [](const ExpressionType& e, const char* v, int r, int c, int k) {
+        return e.basic.isMatrix ? component(e.basic, r, c, v) : component(e.basic, 0, k, v);
+    };
+    std::string text = glslangSpelling(result) + " " + name + "(" + glslangSpelling(a.basic) + " a, " + glslangSpelling(b.basic) + " b) { return " +
+                       glslangSpelling(result) + "(";
+    for (int j = 0; j < rows; ++j)
+        for (int i = 0; i < columns; ++i) {
+            text += j || i ? ", " : "";
+            for (int k = 0; k < inner; ++k) text += std::string(k ? " + " : "") + of(a, "a", j, k, k) + " * " + of(b, "b", k, i, k);
+        }
+    return text + "); } ";
+}
+
+std::string helperName(const BasicType& from, const BasicType& to) {
+    return "fxport_shape_" + glslangScalar(from.scalar) + spellType(from).substr(from.scalar.size()) + "_to_" + glslangScalar(to.scalar) +
+           spellType(to).substr(to.scalar.size());
+}
+
+// `to helper(from v) { return to(components); }`: a scalar fills every component; a matrix gives
+// its top-left rows and columns.
+std::string helperCode(const BasicType& from, const BasicType& to) {
+    std::string text = glslangSpelling(to) + " " + helperName(from, to) + "(" + glslangSpelling(from) + " v) { return " + glslangSpelling(to) + "(";
+    for (int r = 0; r < to.rows; ++r)
+        for (int c = 0; c < to.columns; ++c) text += std::string(r || c ? ", " : "") + component(from, r, c);
+    return text + "); } ";
+}
+
+// `T name(T a0, T a1 ...) { return T(intrinsic(a0[0], a1[0] ...), ...); }` for a matrix type T.
+std::string rowwiseCode(const std::string& intrinsic, const std::string& name, const BasicType& type, size_t arguments) {
+    const std::string spelled = spellType(type);
+    std::string text = spelled + " " + name + "(";
+    for (size_t a = 0; a < arguments; ++a) text += (a ? ", " : "") + spelled + " a" + std::to_string(a);
+    text += ") { return " + spelled + "(";
+    for (int r = 0; r < type.rows; ++r) {
+        text += (r ? ", " : "") + intrinsic + "(";
+        for (size_t a = 0; a < arguments; ++a) text += (a ? ", a" : "a") + std::to_string(a) + "[" + std::to_string(r) + "]";
+        text += ")";
+    }
+    return text + "); } ";
+}
+
+bool isDegenerateMatrix(const BasicType& b) { return b.isMatrix && (b.rows == 1 || b.columns == 1); }
+
+bool sameType(const BasicType& a, const BasicType& b) {
+    return glslangSpelling(a) == glslangSpelling(b) && a.isMatrix == b.isMatrix;
+}
+
+
+// fxc's common type of an element-wise call's arguments, when a matrix takes part and no vector.
+std::optional<BasicType> commonMatrixType(const std::vector<BasicType>& args, bool floatOnly) {
+    bool matrix = false;
+    BasicType common{args[0].scalar, 4, 4, true, true};
+    for (const BasicType& a : args) {
+        common.scalar = commonScalar(common.scalar, a.scalar);
+        if (a.isMatrix) {
+            matrix = true;
+            common.rows = std::min(common.rows, a.rows);
+            common.columns = std::min(common.columns, a.columns);
+        } else if (a.columns > 1) {
+            return std::nullopt;  // a vector with a matrix: fxc refuses it, glslang too
+        }
+    }
+    if (!matrix) return std::nullopt;
+    if (floatOnly || common.scalar == "half") common.scalar = "float";
+    if (common.scalar == "bool") common.scalar = "int";
+    return common;
+}
+
+// The arguments' types of `mul(a, b)` at token i when its product needs a helper.
+std::optional<std::pair<ExpressionType, ExpressionType>> mulArguments(const EffectSyntax& syntax, const FxFunction& f, size_t i) {
+    const auto& t = syntax.tokens;
+    if (!t[i].is("mul") || !t[i + 1].is("(") || (i > 0 && t[i - 1].is(".")) || syntax.findFunction("mul")) return std::nullopt;
+    auto spans = callArgumentSpans(t, i + 1, f.body.end);
+    if (spans.size() != 2) return std::nullopt;
+    auto a = expressionType(syntax, f, spans[0].first, spans[0].second), b = expressionType(syntax, f, spans[1].first, spans[1].second);
+    if (!a || !b || !a->isNumeric() || !b->isNumeric() || a->keptMatrix || b->keptMatrix || !mulNeedsHelper(*a, *b)) return std::nullopt;
+    return std::make_pair(*a, *b);
+}
+
+class MixedShapes {
+public:
+    explicit MixedShapes(const EffectSyntax& syntax) : syntax_(syntax), t_(syntax.tokens) {}
+
+    std::vector<TextEdit> run() {
+        for (const auto& f : syntax_.functions) {
+            for (size_t i = f.body.begin; i + 1 < f.body.end; ++i) {
+                call(f, i);
+                mul(f, i);
+                matrixIntrinsic(f, i);
+                if (size_t e = expressionAfter(f, i)) operators(f, i + 1, e);
+            }
+        }
+        insertConversions();
+        if (helpers_.empty()) return std::move(edits_);
+        size_t first = syntax_.functions.front().declaration.begin;
+        for (const auto& f : syntax_.functions) first = std::min(first, f.declaration.begin);
+        std::string code;
+        for (const auto& [name, text] : helpers_) code += text;
+        edits_.push_back({t_[first].offset, t_[first].offset, code});
+        return std::move(edits_);
+    }
+
+private:
+    const EffectSyntax& syntax_;
+    const std::vector<Token>& t_;
+    std::vector<TextEdit> edits_;
+    std::map<std::string, std::string> helpers_;  // name -> code
+    std::set<std::pair<size_t, size_t>> converted_;  // token spans already passed through a helper
+    // Helper calls opened before a token (widest span first) and closed after one.
+    std::map<size_t, std::multimap<size_t, std::string, std::greater<size_t>>> opened_;
+    std::map<size_t, int> closed_;
+    std::set<size_t> selected_;  // first tokens of selections already spelled out
+
+    // Tokens [b, e), of type `from`, passed through the helper that makes them `to`.
+    void convert(size_t b, size_t e, const BasicType& from, const BasicType& to) {
+        if (!converted_.insert({b, e}).second) return;
+        const std::string name = helperName(from, to);
+        helpers_.emplace(name, helperCode(from, to));
+        opened_[b].emplace(e - b, name + "(");
+        ++closed_[e - 1];
+    }
+
+    // One insertion per place, so nested helper calls open and close in order.
+    void insertConversions() {
+        for (const auto& [token, names] : opened_) {
+            std::string text;
+            for (const auto& [width, name] : names) text += name;
+            edits_.push_back({t_[token].offset, t_[token].offset, text});
+        }
+        for (const auto& [token, count] : closed_) edits_.push_back({t_[token].end, t_[token].end, std::string(size_t(count), ')')});
+    }
+
+    // mul(a, b) at i, where glslang would not compute fxc's product.
+    void mul(const FxFunction& f, size_t i) {
+        auto types = mulArguments(syntax_, f, i);
+        if (!types) return;
+        const std::string name = "fxport_mul_" + shapeName(types->first) + "_" + shapeName(types->second);
+        helpers_.emplace(name, mulCode(name, types->first, types->second));
+        edits_.push_back({t_[i].offset, t_[i].end, name});
+    }
+
+    // determinant of a matrix that is not square: fxc takes its top-left square (float3x4: the
+    // 3x3, float2x1: the one component); transpose of a one-row or one-column matrix: the same
+    // components, and the same vector to glslang. glslang has neither overload.
+    void matrixIntrinsic(const FxFunction& f, size_t i) {
+        const bool determinant = t_[i].is("determinant");
+        if ((!determinant && !t_[i].is("transpose")) || !t_[i + 1].is("(") || (i > 0 && t_[i - 1].is(".")) || syntax_.findFunction(t_[i].text)) return;
+        auto spans = callArgumentSpans(t_, i + 1, f.body.end);
+        if (spans.size() != 1) return;
+        auto type = expressionType(syntax_, f, spans[0].first, spans[0].second);
+        if (!type || !type->isNumeric() || type->keptMatrix || !type->basic.isMatrix) return;
+        const BasicType& m = type->basic;
+        if (!determinant) {
+            if (isDegenerateMatrix(m) && m.rows * m.columns > 1) edits_.push_back({t_[i].offset, t_[i].end, ""});
+            return;
+        }
+        if (m.rows == m.columns) return;
+        const int n = std::min(m.rows, m.columns);
+        const std::string name = "fxport_determinant_" + spellType(m);
+        std::string code = "float " + name + "(" + glslangSpelling(m) + " v) { return ";
+        if (n == 1) {
+            code += component(m, 0, 0);
+        } else {
+            code += "determinant(float" + std::to_string(n) + "x" + std::to_string(n) + "(";
+            for (int r = 0; r < n; ++r)
+                for (int c = 0; c < n; ++c) code += std::string(r || c ? ", " : "") + component(m, r, c);
+            code += "))";
+        }
+        helpers_.emplace(name, code + "; } ");
+        edits_.push_back({t_[i].offset, t_[i].end, name});
+    }
+
+    // An element-wise intrinsic's call at i.
+    void call(const FxFunction& f, size_t i) {
+        if (!t_[i].isIdent() || !t_[i + 1].is("(") || (i > 0 && t_[i - 1].is("."))) return;
+        const bool floatOnly = kElementwiseFloat.count(t_[i].text) > 0;
+        if ((!floatOnly && !kElementwise.count(t_[i].text)) || syntax_.findFunction(t_[i].text)) return;
+        auto spans = callArgumentSpans(t_, i + 1, f.body.end);
+        if (spans.size() < 2) return;
+        std::vector<BasicType> types;
+        for (const auto& [b, e] : spans) {
+            auto type = expressionType(syntax_, f, b, e);
+            if (!type || !type->isNumeric() || type->keptMatrix) return;
+            types.push_back(type->basic);
+        }
+        auto common = commonMatrixType(types, floatOnly);
+        if (!common) return;
+        if (common->rows > 1 && common->columns > 1) {
+            // glslang crashes on some intrinsics of matrices and SPIRV-Cross writes GLSL
+            // (clamp(mat2, ...)) no driver takes: one call per row instead.
+            const std::string name = "fxport_" + t_[i].text + "_" + spellType(*common);
+            helpers_.emplace(name, rowwiseCode(t_[i].text, name, *common, spans.size()));
+            edits_.push_back({t_[i].offset, t_[i].end, name});
+        }
+        for (size_t a = 0; a < spans.size(); ++a)
+            if (!sameType(types[a], *common)) convert(spans[a].first, spans[a].second, types[a], *common);
+    }
+
+    // The end of the expression that follows token i when i is `return` or an assignment's or
+    // initializer's `=`: the `;` or `,` that ends it; 0 when i starts none.
+    size_t expressionAfter(const FxFunction& f, size_t i) const {
+        if (!t_[i].is("return") && !t_[i].is("=")) return 0;
+        if (t_[i].is("=") && i > 0 && t_[i - 1].end == t_[i].offset && (t_[i - 1].is("<") || t_[i - 1].is(">"))) return 0;
+        int depth = 0;
+        for (size_t j = i + 1; j < f.body.end; ++j) {
+            if (t_[j].is("(") || t_[j].is("[") || t_[j].is("{")) ++depth;
+            else if ((t_[j].is(")") || t_[j].is("]") || t_[j].is("}")) && --depth < 0) return 0;
+            else if (depth == 0 && (t_[j].is(";") || t_[j].is(","))) return j > i + 1 ? j : 0;
+        }
+        return 0;
+    }
+
+    // `c ? a : b` with a matrix condition of the result's shape: fxc selects component by
+    // component; glslang takes a scalar condition only. A helper selects each component.
+    void select(const Selection& s) {
+        const BasicType &c = s.condition.basic, &r = s.result.basic;
+        if (s.result.keptMatrix || !c.isMatrix || !r.isMatrix || c.rows != r.rows || c.columns != r.columns || c.rows * c.columns == 1) return;
+        if (!selected_.insert(s.begin).second) return;
+        const std::string name = "fxport_select_" + helperName(c, r).substr(13);
+        std::string code = glslangSpelling(r) + " " + name + "(" + glslangSpelling(c) + " c, " + glslangSpelling(r) + " a, " + glslangSpelling(r) +
+                           " b) { return " + glslangSpelling(r) + "(";
+        for (int i = 0; i < r.rows; ++i)
+            for (int k = 0; k < r.columns; ++k)
+                code += std::string(i || k ? ", " : "") + "(" + component(c, i, k, "c") + " != 0 ? " + component(r, i, k, "a") + " : " + component(r, i, k, "b") + ")";
+        helpers_.emplace(name, code + "); } ");
+        opened_[s.begin].emplace(s.end - s.begin, name + "(");
+        ++closed_[s.end - 1];
+        edits_.push_back({t_[s.question].offset, t_[s.question].end, ","});
+        edits_.push_back({t_[s.colon].offset, t_[s.colon].end, ","});
+    }
+
+    // Binary operations between matrices of different shapes in tokens [b, e): fxc computes them
+    // in the smaller rows and columns (float1x4 + float4x4 adds the first row); glslang refuses
+    // them ("Could not perform requested binary operation").
+    void operators(const FxFunction& f, size_t b, size_t e) {
+        std::vector<BinaryOperation> operations;
+        std::vector<Selection> selections;
+        if (!expressionType(syntax_, f, b, e, &operations, &selections)) return;
+        for (const auto& s : selections) select(s);
+        for (const auto& op : operations) {
+            const BasicType &l = op.left, &r = op.right;
+            if (op.keptMatrix || !l.isMatrix || !r.isMatrix || (l.rows == r.rows && l.columns == r.columns)) continue;
+            BasicType common = l;
+            common.rows = std::min(l.rows, r.rows);
+            common.columns = std::min(l.columns, r.columns);
+            BasicType lTo = common, rTo = common;
+            lTo.scalar = l.scalar;
+            rTo.scalar = r.scalar;
+            if (!sameType(l, lTo)) convert(op.leftBegin, op.leftEnd, l, lTo);
+            if (!sameType(r, rTo)) convert(op.rightBegin, op.rightEnd, r, rTo);
+        }
+    }
+};
+
+}  // namespace
+
+std::vector<TextEdit> mixedShapeConversions(const EffectSyntax& syntax) { return MixedShapes(syntax).run(); }
+
+std::set<size_t> mulCallsSpelledOut(const EffectSyntax& syntax) {
+    std::set<size_t> out;
+    for (const auto& f : syntax.functions)
+        for (size_t i = f.body.begin; i + 1 < f.body.end; ++i)
+            if (mulArguments(syntax, f, i)) out.insert(i);
+    return out;
+}
+
+}  // namespace fxport::xlate

@@ -1,0 +1,24 @@
+// See shader_valued_defaults.h.
+#include "rewrite/shader_valued_defaults.h"
+
+#include <algorithm>
+
+#include "fx/text_util.h"
+
+namespace fxport::xlate {
+
+std::vector<TextEdit> shaderValuedDefaultsDropped(const EffectSyntax& syntax) {
+    const auto& t = syntax.tokens;
+    std::vector<TextEdit> edits;
+    for (const FxGlobal& g : syntax.globals) {
+        const bool isStatic = std::find(g.modifiers.begin(), g.modifiers.end(), "static") != g.modifiers.end();
+        if (isStatic || g.initializer.empty() || g.initializer.begin == 0 || !t[g.initializer.begin - 1].is("=")) continue;
+        bool shader = false;
+        for (size_t i = g.initializer.begin; i + 1 < g.initializer.end && !shader; ++i)
+            shader = (t[i].is("compile") && t[i + 1].isIdent()) || (iequals(t[i].text, "CompileShader") && t[i + 1].is("("));
+        if (shader) edits.push_back({t[g.initializer.begin - 1].offset, t[g.initializer.end - 1].end, {}});
+    }
+    return edits;
+}
+
+}  // namespace fxport::xlate

@@ -1,0 +1,148 @@
+// See spirv_integer_fixups.h: D3D's meaning of shifts, float-to-uint conversion and INT_MIN / -1.
+#include "spirv/spirv_integer_fixups.h"
+
+#include <climits>
+#include <optional>
+
+
+namespace fxport::xlate {
+
+namespace {
+
+// The 32-bit components of a constant scalar or vector (OpConstant, OpConstantComposite of them,
+// OpConstantNull); nothing when `id` is not such a constant.
+std::optional<std::vector<std::uint32_t>> constantComponents(const ParsedSpirv& m, std::uint32_t id) {
+    const SpirvInstruction* d = m.definition(id);
+    if (!d) return std::nullopt;
+    if (d->opcode() == spv_op::Constant && d->words.size() == 4) return std::vector<std::uint32_t>{d->words[3]};
+    if (d->opcode() == spv_op::ConstantNull) return std::vector<std::uint32_t>(m.components(d->words[1]).second, 0u);
+    if (d->opcode() != spv_op::ConstantComposite) return std::nullopt;
+    std::vector<std::uint32_t> out;
+    for (size_t k = 3; k < d->words.size(); ++k) {
+        auto part = constantComponents(m, d->words[k]);
+        if (!part || part->size() != 1) return std::nullopt;
+        out.push_back(part->front());
+    }
+    return out;
+}
+
+bool isShift(std::uint32_t op) {
+    return op == spv_op::ShiftLeftLogical || op == spv_op::ShiftRightLogical || op == spv_op::ShiftRightArithmetic;
+}
+
+}  // namespace
+
+// Test: runtime HlslIntegerOps.ShiftCountsUseTheirLowFiveBits, conformance bitwise.
+bool maskShiftCounts(ParsedSpirv& m) {
+    if (!m.has({spv_op::ShiftLeftLogical, spv_op::ShiftRightLogical, spv_op::ShiftRightArithmetic})) return false;
+    m.rewrite([&](const SpirvInstruction& inst, std::vector<SpirvInstruction>& out) {
+        if (!isShift(inst.opcode()) || inst.words.size() != 5) return out.push_back(inst);
+        const std::uint32_t count = inst.words[4];
+        bool small = false;  // a constant count below 32 (`x << 2`) stays as it is
+        if (auto c = constantComponents(m, count)) {
+            small = true;
+            for (std::uint32_t v : *c) small = small && v < 32;
+        }
+        if (small) return out.push_back(inst);
+        const std::uint32_t type = m.typeOf(count);
+        SpirvInstruction mask = m.value(spv_op::BitwiseAnd, type, {count, m.splatConstant(type, 31)});
+        SpirvInstruction shift = inst;
+        shift.words[4] = mask.words[2];
+        out.push_back(mask);
+        out.push_back(shift);
+    });
+    return true;
+}
+
+// Test: runtime HlslIntegerOps.NegativeFloatToUintIsZero, conformance cast-to-uint.
+bool floatToUnsignedSaturates(ParsedSpirv& m) {
+    if (!m.has({spv_op::ConvertFToU})) return false;
+    m.rewrite([&](const SpirvInstruction& inst, std::vector<SpirvInstruction>& out) {
+        if (inst.opcode() != spv_op::ConvertFToU || inst.words.size() != 4) return out.push_back(inst);
+        const std::uint32_t x = inst.words[3], type = m.typeOf(x);
+        SpirvInstruction clamped =
+            m.value(spv_op::ExtInst, type, {m.glslStd450(), kGlslStd450FMax, x, m.splatConstant(type, 0)});
+        SpirvInstruction convert = inst;
+        convert.words[3] = clamped.words[2];
+        out.push_back(clamped);
+        out.push_back(convert);
+    });
+    return true;
+}
+
+// Test: runtime HlslIntegerOps.IntMinByMinusOneFolds, conformance arithmetic-int.
+bool foldIntMinByMinusOne(ParsedSpirv& m) {
+    if (!m.has({spv_op::SDiv, spv_op::SRem})) return false;
+    bool changed = false;
+    m.rewrite([&](const SpirvInstruction& inst, std::vector<SpirvInstruction>& out) {
+        const std::uint32_t op = inst.opcode();
+        if ((op != spv_op::SDiv && op != spv_op::SRem) || inst.words.size() != 5)
+            return out.push_back(inst);
+        auto a = constantComponents(m, inst.words[3]), b = constantComponents(m, inst.words[4]);
+        if (!a || !b || a->size() != b->size()) return out.push_back(inst);
+        bool trap = false;
+        for (size_t k = 0; k < a->size(); ++k) {
+            if ((*b)[k] == 0) return out.push_back(inst);  // dividesByConstantZero's refusal, not ours
+            trap = trap || ((*a)[k] == 0x80000000u && (*b)[k] == 0xFFFFFFFFu);
+        }
+        if (!trap) return out.push_back(inst);
+        // Every component as D3D's idiv computes it (truncating; INT_MIN / -1 wraps to INT_MIN).
+        std::vector<std::uint32_t> result;
+        for (size_t k = 0; k < a->size(); ++k) {
+            const long long x = std::int32_t((*a)[k]), y = std::int32_t((*b)[k]);
+            const long long r = op == spv_op::SDiv ? x / y : x % y;
+            result.push_back(std::uint32_t(std::int32_t(r == 0x80000000LL ? INT_MIN : r)));
+        }
+        const std::uint32_t type = inst.words[1];
+        auto [component, count] = m.components(type);
+        std::uint32_t folded = 0;
+        if (count == 1) {
+            folded = m.constant(component, result[0]);
+        } else {
+            std::vector<std::uint32_t> parts;
+            for (std::uint32_t v : result) parts.push_back(m.constant(component, v));
+            folded = m.composite(type, parts);
+        }
+        SpirvInstruction copy = inst;
+        copy.words = {(4u << 16) | spv_op::CopyObject, type, inst.words[2], folded};
+        out.push_back(copy);
+        changed = true;
+    });
+    return changed;
+}
+
+// Test: runtime HlslSm3Integers.DivisionRoundsOperandsToFloat, conformance arithmetic-int-uniform.
+bool integerDivisionInFloats(ParsedSpirv& m) {
+    if (!m.has({spv_op::SDiv, spv_op::UDiv, spv_op::SRem, spv_op::UMod})) return false;
+    m.rewrite([&](const SpirvInstruction& inst, std::vector<SpirvInstruction>& out) {
+        const std::uint32_t op = inst.opcode();
+        const bool isSigned = op == spv_op::SDiv || op == spv_op::SRem, isDivision = op == spv_op::SDiv || op == spv_op::UDiv;
+        if ((!isSigned && op != spv_op::UDiv && op != spv_op::UMod) || inst.words.size() != 5) return out.push_back(inst);
+        const std::uint32_t type = inst.words[1], floatType = m.floatTypeLike(type);
+        const std::uint32_t toFloat = isSigned ? spv_op::ConvertSToF : spv_op::ConvertUToF;
+        SpirvInstruction a = m.value(toFloat, floatType, {inst.words[3]});
+        SpirvInstruction b = m.value(toFloat, floatType, {inst.words[4]});
+        SpirvInstruction q = m.value(isDivision ? spv_op::FDiv : spv_op::FRem, floatType, {a.words[2], b.words[2]});
+        SpirvInstruction back = inst;  // keeps the result id
+        back.words = {(4u << 16) | (isSigned ? spv_op::ConvertFToS : spv_op::ConvertFToU), type, inst.words[2], q.words[2]};
+        out.insert(out.end(), {a, b, q, back});
+    });
+    return true;
+}
+
+bool integerNegationInFloats(ParsedSpirv& m) {
+    constexpr std::uint32_t kOpSNegate = 126, kOpFNegate = 127;
+    if (!m.has({kOpSNegate})) return false;
+    m.rewrite([&](const SpirvInstruction& inst, std::vector<SpirvInstruction>& out) {
+        if (inst.opcode() != kOpSNegate || inst.words.size() != 4) return out.push_back(inst);
+        const std::uint32_t type = inst.words[1], floatType = m.floatTypeLike(type);
+        SpirvInstruction a = m.value(spv_op::ConvertSToF, floatType, {inst.words[3]});
+        SpirvInstruction n = m.value(kOpFNegate, floatType, {a.words[2]});
+        SpirvInstruction back = inst;  // keeps the result id
+        back.words = {(4u << 16) | spv_op::ConvertFToS, type, inst.words[2], n.words[2]};
+        out.insert(out.end(), {a, n, back});
+    });
+    return true;
+}
+
+}  // namespace fxport::xlate
