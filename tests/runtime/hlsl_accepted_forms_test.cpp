@@ -230,6 +230,36 @@ TEST_P(HlslAcceptedForms, PreciseAsAName) {
     for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], expected[k]) << "channel " << k;
 }
 
+// Once the effect names a type `precise`, `precise NAME(` and `precise NAME =` use that type; a
+// modifier is still a modifier where a type follows (xlate/src/keyword_identifiers.cpp).
+TEST_P(HlslAcceptedForms, PreciseAsATypedefName) {
+    expectPixel("typedef float4 precise; precise float4 k; precise twice(float4 v) { precise r = v * 2; return r; }", "return twice(A);", {2, 4, 6, 8},
+                {1, 2, 3, 4});
+}
+
+// A file-scope static without an initializer starts at zero, as fxc zero-fills it (GLSL leaves
+// it undefined; xlate/src/static_zero_init.cpp).
+TEST_P(HlslAcceptedForms, StaticsWithoutInitializerStartAtZero) {
+    expectPixel("static struct { float4 x; float3 y; } s; static float4 arr[2]; static int2 n; static bool b;",
+                "return s.x + arr[1] + float4(n, s.y.z, b) + A;", {1, 2, 3, 4}, {1, 2, 3, 4});
+}
+
+// State blocks on local variables are dropped, as fxc drops them (xlate/src/local_state_blocks.cpp),
+// and a struct defined in a function body is defined before the function for glslang
+// (xlate/src/struct_definitions.cpp).
+TEST_P(HlslAcceptedForms, StateBlocksOnLocalVariables) {
+    expectPixel("", "float a {}; float b { foo = bar; foo = (int)2; }; float c {}, d = A.y, e; struct { float v; } s { x = y; };"
+                    " struct named { float w; }; named n; n.w = A.w; a = A.x; s.v = A.z; return float4(a, d, s.v, n.w);",
+                {1, 2, 3, 4}, {1, 2, 3, 4});
+}
+
+// `v[0]` of a one-component vector, a variable or a parenthesised expression (vkd3d's ternary),
+// is the vector's one component (xlate/src/one_component_types.cpp).
+TEST_P(HlslAcceptedForms, IndexOfAOneComponentVector) {
+    expectPixel("static float1 k = {2};", "float1 u = A.x; return float4((A.y ? k : u)[0], k[0], (k + u)[0], (A.z ? k : u)[0]);", {2, 2, 3, 1},
+                {1, 1, 0, 0});
+}
+
 // sign of a matrix works on every component (xlate/src/rewrite/matrix_rows_intrinsics.cpp).
 TEST_P(HlslAcceptedForms, SignOfAMatrix) {
     auto e = effect("float2x2 M;", "return float4(sign(M)[0], sign(M)[1]);");

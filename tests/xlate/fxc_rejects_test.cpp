@@ -162,6 +162,14 @@ std::vector<RejectCase> cases() {
          "float4 func(float2x2 x) { return 2.0; }\nfloat4 func(float4 x) { return 1.0; }\nfloat4 main() : sv_target\n{\n    return func(float4(0, 0, 0, 0));\n}\n",
          5, "ambiguous",
          "float4 func(float3x3 x) { return 2.0; }\nfloat4 func(float4 x) { return 1.0; }\nfloat4 main() : sv_target\n{\n    return func(float4(0, 0, 0, 0));\n}\n"},
+        // swizzle-matrix: zero-based and one-based subscripts in one swizzle.
+        {"MixedMatrixSubscripts", "ps_4_0",
+         "float4 main() : sv_target\n{\n    float3x2 mat = {1, 2, 3, 4, 5, 6};\n    float2 p = mat._11_m00;\n    return p.xyxy;\n}\n", 4, "_11_m00",
+         "float4 main() : sv_target\n{\n    float3x2 mat = {1, 2, 3, 4, 5, 6};\n    float2 p = mat._m10_m00;\n    return p.xyxy;\n}\n"},
+        // function-cast: one value is not written back into a float4.
+        {"ScalarOutParameterOfAVector", "ps_4_0",
+         "void fun(out float f) { f = 1; }\nfloat4 main() : sv_target\n{\n    float4 p = {-1, -2, -3, -4};\n    fun(p);\n    return p;\n}\n", 5, "out parameter",
+         "void fun(out float f) { f = 1; }\nfloat4 main() : sv_target\n{\n    float4 p = {-1, -2, -3, -4};\n    fun(p.y);\n    return p;\n}\n"},
     };
 }
 

@@ -947,6 +947,24 @@ TEST(Encodings, LocalCodePageBytesInCommentsAndStringsAreAccepted) {
     EXPECT_NE(reflectionJson(e).find("SasUiLabel"), std::string::npos);
 }
 
+// Escape sequences in strings as fxc reads them (xlate/src/string_escapes.cpp): the C escapes,
+// octal and hex bytes, an escaped quote and backslash, and escapes fxc only warns about (`\s`),
+// which stand for the character. glslang's preprocessor decoded `\n` into a newline that ended
+// the literal, and refused `\s`.
+TEST(Encodings, StringEscapesAsFxcReadsThem) {
+    std::string src =
+        "texture Tex < string a = \"1\\n2\\t3\\\\4\\\"5\\s6\"; string b = \"\\52\\x2A\\1011\"; >;\n"
+        "string Note = \"C:\\\\dir\\\\\";\n"
+        "sampler S = sampler_state { Texture = <Tex>; };\n"
+        "float4 PS(float2 uv : TEXCOORD0) : COLOR0 { return tex2D(S, uv); }\n"
+        "technique T { pass P { PixelShader = compile ps_2_0 PS(); } }\n";
+    CompiledEffect e = compileEffectSource(src, "virtual/Escapes.fx", noCache());
+    ASSERT_EQ(param(e, "Tex").annotations.size(), 2u);
+    EXPECT_EQ(param(e, "Tex").annotations[0].value, "1\n2\t3\\4\"5s6");
+    EXPECT_EQ(param(e, "Tex").annotations[1].value, "**A1");  // \52 and \x2A are '*', \101 is 'A' (three digits at most)
+    EXPECT_EQ(param(e, "Note").defaultString, "C:\\dir\\");
+}
+
 TEST(Encodings, BinaryAndNonUtf8CodeAreStillRejected) {
     using namespace std::string_literals;
     auto firstId = [](const std::string& src) {

@@ -44,6 +44,8 @@ constexpr Family kFamilies[] = {
     findDeclarationLimitErrors,
     findOverloadTieErrors,
     findDeclarationFormErrors,
+    findMatrixSubscriptErrors,
+    findOutArgumentShapeErrors,
 };
 
 bool isShaderState(const std::string& name) {

@@ -78,6 +78,8 @@ std::vector<std::pair<size_t, Diagnostic>> findIndexTypeErrors(const EffectSynta
 std::vector<std::pair<size_t, Diagnostic>> findLengthPropertyErrors(const EffectSyntax& syntax, const SourceMap& map);  // length_property.cpp
 std::vector<std::pair<size_t, Diagnostic>> findSwitchSelectorErrors(const EffectSyntax& syntax, const SourceMap& map);  // switch_labels.cpp
 std::vector<std::pair<size_t, Diagnostic>> findOperandTypeErrors(const EffectSyntax& syntax, const SourceMap& map);  // operand_type_rules.cpp
+std::vector<std::pair<size_t, Diagnostic>> findMatrixSubscriptErrors(const EffectSyntax& syntax, const SourceMap& map);  // matrix_subscripts.cpp
+std::vector<std::pair<size_t, Diagnostic>> findOutArgumentShapeErrors(const EffectSyntax& syntax, const SourceMap& map);  // out_argument_shapes.cpp
 std::vector<std::pair<size_t, Diagnostic>> findDeclarationLimitErrors(const EffectSyntax& syntax, const SourceMap& map);  // declaration_limits.cpp
 std::vector<std::pair<size_t, Diagnostic>> findOverloadTieErrors(const EffectSyntax& syntax, const SourceMap& map);  // overload_ties.cpp
 std::vector<std::pair<size_t, Diagnostic>> findDeclarationFormErrors(const EffectSyntax& syntax, const SourceMap& map);  // declaration_forms.cpp

@@ -11,6 +11,7 @@
 #include "hlsl/hlsl_types.h"
 #include "entry/signature_layout.h"
 #include "fx/text_util.h"
+#include "rewrite/keyword_identifiers.h"
 
 namespace fxport::xlate {
 
@@ -271,7 +272,7 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
     bool returns = entry.returnType != "void";
     // A one-row or one-column matrix returned is a vector to glslang (degenerate_matrices.h); its
     // declared type and majority say which registers it takes.
-    const std::string returnType = entryReturnType(syntax, entry);
+    const std::string returnType = keywordIdentifierSpelled(entryReturnType(syntax, entry));
     if (returns && !flat.flatten(entry.returnType, "r", entry.returnSemantic, {}, entryReturnModifiers(syntax, entry), outputs)) {
         w.error = flat.error + " (the return value of '" + entry.name + "')";
         return w;

@@ -11,6 +11,7 @@
 #include "spirv/structured_buffer_layout.h"
 #include "rewrite/keyword_identifiers.h"
 #include "spirv/spirv_fixups.h"
+#include "spirv/static_zero_init.h"
 #include "rewrite/pow2_partitioning.h"
 #include "spirv/spirv_integer_fixups.h"
 #include "rewrite/tess_factor_intrinsics.h"
@@ -118,7 +119,7 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
     // The SPIR-V passes (parsed_spirv.h), each a function over one parsed module; the spirv-opt
     // runs (the division check, legalisation) work on the words between them.
     const bool sm2or3 = request.shaderModel < 4;
-    runSpirvPasses(out.words, {restoreKeywordIdentifiers});  // `precise` as a name (keyword_identifiers.h)
+    runSpirvPasses(out.words, {restoreKeywordIdentifiers, staticVariablesStartAtZero});  // `precise` as a name (keyword_identifiers.h); statics start at zero before the division check (static_zero_init.h)
     if (dividesByConstantZero(out.words, sm2or3)) {
         out.errors.push_back({0, {}, "division by zero: a divisor of this shader folds to the constant 0, which fxc refuses", true});
         return out;

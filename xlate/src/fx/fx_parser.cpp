@@ -775,6 +775,13 @@ private:
     }
     std::map<std::string, std::vector<double>> constants_;
 
+    // `precise NAME` then a declarator's end: a type named `precise` (fxc's modifier needs a type after it).
+    bool preciseIsTheType() {
+        if (!cur().is("precise") || !peek().isIdent() || pos_ + 2 >= syntax_.tokens.size()) return false;
+        const Token& after = syntax_.tokens[pos_ + 2];
+        return after.is("(") || after.is(";") || after.is(",") || after.is("=") || after.is(":") || after.is("[") || after.is(")");
+    }
+
     // A type name: identifier, optionally templated (`vector<float, 4>`, `Texture2D<float4>`).
     std::string parseTypeName() {
         std::string type = expectIdentifier("a type");
@@ -791,6 +798,7 @@ private:
         std::vector<std::string> modifiers;
         std::vector<size_t> sharedTokens;
         while (cur().isIdent() && isTypeModifier(cur().text)) {
+            if (preciseIsTheType()) break;  // `typedef float4 precise; precise main()` (keyword_identifiers.h)
             if (cur().text == "shared") sharedTokens.push_back(pos_);
             if (cur().text == "export") blank(pos_, pos_ + 1);  // a library function's linkage: nothing to a whole shader
             modifiers.push_back(syntax_.tokens[pos_++].text);

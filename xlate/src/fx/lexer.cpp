@@ -2,6 +2,7 @@
 
 #include <cctype>
 
+#include "fx/string_escapes.h"
 #include "fx/text_util.h"
 
 namespace fxport::xlate {
@@ -66,7 +67,7 @@ std::vector<Token> tokenize(const std::string& text) {
             t.kind = Token::Kind::String;
             // Strings are annotation and parameter metadata; old effects wrote them in a local
             // code page (checkIsText lets that through), but everything downstream is UTF-8.
-            t.text = toValidUtf8(std::string_view(text).substr(i + 1, (j < text.size() ? j : text.size()) - i - 1));
+            t.text = toValidUtf8(decodeStringEscapes(std::string_view(text).substr(i + 1, (j < text.size() ? j : text.size()) - i - 1)));
             i = j < text.size() && text[j] == '"' ? j + 1 : j;
         } else {
             static const char* const kMulti[] = {"<<=", ">>=", "::", "==", "!=", "<=", ">=", "&&", "||", "++", "--",

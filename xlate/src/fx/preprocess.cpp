@@ -14,6 +14,7 @@
 #include "fx/glslang_predefines.h"
 #include "frontend/glslang_process.h"
 #include "fx/macro_bounds.h"
+#include "fx/string_escapes.h"
 #include "fx/text_encoding.h"
 #include "fx/input_limits.h"
 #include "fx/text_util.h"
@@ -281,7 +282,7 @@ private:
             return nullptr;
         }
         loaded.push_back({display, text});
-        auto* owned = new std::string(blankAsmLineComments(text));
+        auto* owned = new std::string(protectStringEscapes(blankAsmLineComments(text)));  // string_escapes.h
         return new IncludeResult(display, owned->data(), owned->size(), owned);
     }
 
@@ -477,7 +478,7 @@ std::optional<PreprocessedEffect> PreprocessRun::operator()(bool cascading) cons
     includer.macros = &macros;
 
     glslang::TShader shader(EShLangFragment);
-    const std::string cleaned = blankAsmLineComments(source);
+    const std::string cleaned = protectStringEscapes(blankAsmLineComments(source));  // string_escapes.h
     const char* text = cleaned.c_str();
     const char* name = displayPath.c_str();
     int length = static_cast<int>(cleaned.size());
@@ -564,6 +565,7 @@ std::optional<PreprocessedEffect> PreprocessRun::operator()(bool cascading) cons
         d.location = {displayPath, 0, 0};
         throw CompileError({d});
     }
+    restoreStringEscapes(output);
     result.text = result.map.build(output, displayPath);
     // Macros can nest brackets that no file shows (`#define P(x) (x)` called through other macros).
     if (auto p = findNestingPastLimit(result.text))

@@ -13,6 +13,7 @@
 #include "rewrite/compare_store.h"
 #include "rewrite/mixed_dimension_outputs.h"
 #include "rewrite/switch_labels.h"
+#include "rewrite/local_state_blocks.h"
 #include "rewrite/negated_bool_literals.h"
 #include "rewrite/keyword_identifiers.h"
 #include "rewrite/matrix_constructor_arguments.h"
@@ -410,6 +411,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : matrixConstructorArgumentsAsRows(syntax)) edits.push_back(std::move(e));
     for (auto& e : keywordIdentifiersRenamed(syntax)) edits.push_back(std::move(e));
     for (auto& e : negatedBoolLiteralsAsInts(syntax)) edits.push_back(std::move(e));
+    for (auto& e : localStateBlocksDropped(syntax)) edits.push_back(std::move(e));
     for (auto& e : matrixIntrinsicsByRow(syntax)) edits.push_back(std::move(e));
     for (auto& e : staticObjectAliases(syntax)) edits.push_back(std::move(e));
     for (auto& e : shaderValuedDefaultsDropped(syntax)) edits.push_back(std::move(e));

@@ -11,8 +11,24 @@ namespace {
 const std::string kPrefix = "fxport_kw_";
 
 // A modifier where a type or another modifier follows (`precise float4 v;`, `precise out float x`);
-// a name anywhere else (`float4 precise;`, `precise.x`, `(precise)`).
-bool isNameUse(const std::vector<Token>& t, size_t i) { return !t[i + 1].isIdent(); }
+// a name anywhere else (`float4 precise;`, `precise.x`, `(precise)`). Once the effect declares
+// `typedef float4 precise;`, `precise main()` and `precise v;` use that type: one name, then the
+// end of a declarator, follows (a modifier is followed by a type and then a name).
+bool isNameUse(const std::vector<Token>& t, size_t i, bool typedefNamed) {
+    if (!t[i + 1].isIdent()) return true;
+    if (!typedefNamed || i + 2 >= t.size()) return false;
+    const Token& after = t[i + 2];
+    return after.is("(") || after.is(";") || after.is(",") || after.is("=") || after.is(":") || after.is("[") || after.is(")");
+}
+
+// `typedef ... precise;`: the effect names a type `precise`.
+bool typedefNamesPrecise(const std::vector<Token>& t) {
+    for (size_t i = 0; i + 1 < t.size(); ++i)
+        if (t[i].is("precise") && t[i + 1].is(";"))
+            for (size_t k = i; k-- > 0 && !t[k].is(";") && !t[k].is("}") && !t[k].is("{");)
+                if (t[k].is("typedef")) return true;
+    return false;
+}
 
 std::string literalString(const std::uint32_t* w, size_t count) {
     std::string s(reinterpret_cast<const char*>(w), count * 4);
@@ -35,10 +51,13 @@ void appendString(std::vector<std::uint32_t>& out, const std::string& s) {
 std::vector<TextEdit> keywordIdentifiersRenamed(const EffectSyntax& syntax) {
     const auto& t = syntax.tokens;
     std::vector<TextEdit> edits;
+    const bool typedefNamed = typedefNamesPrecise(t);
     for (size_t i = 0; i + 1 < t.size(); ++i)
-        if (t[i].isIdent() && t[i].is("precise") && isNameUse(t, i)) edits.push_back({t[i].offset, t[i].end, kPrefix + t[i].text});
+        if (t[i].isIdent() && t[i].is("precise") && isNameUse(t, i, typedefNamed)) edits.push_back({t[i].offset, t[i].end, kPrefix + t[i].text});
     return edits;
 }
+
+std::string keywordIdentifierSpelled(const std::string& type) { return type == "precise" ? kPrefix + type : type; }
 
 bool restoreKeywordIdentifiers(ParsedSpirv& m) {
     bool changed = false;

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "fx/fx_syntax.h"
@@ -15,6 +16,9 @@
 namespace fxport::xlate {
 
 std::vector<TextEdit> keywordIdentifiersRenamed(const EffectSyntax& syntax);
+
+// How generated code spells a type the effect wrote: `precise` can only be a typedef's name there.
+std::string keywordIdentifierSpelled(const std::string& type);
 
 // OpName / OpMemberName strings `fxport_kw_NAME` become `NAME` again (a pass of parsed_spirv.h:
 // true when it changed the module).

@@ -80,6 +80,7 @@ public:
                     continue;
                 }
                 if (!scopes.empty() && scopes.back() == Scope::Cbuffer) hoistOut(*def, i, declarationStart);
+                else if (!scopes.empty()) hoistOutOfFunction(*def, i, declarationStart);
                 else splitInPlace(*def, i);
                 i = def->close;
             }
@@ -162,7 +163,16 @@ private:
         edits_.push_back({t_[at].offset, t_[d.close].end, d.name});
     }
 
-    // A definition at file scope or in a function: member definitions before it, its declarators
+    // A definition in a function body (glslang takes struct definitions at file scope only): defined
+    // before the function, a declarator's type becomes its name; one with no declarator is blanked.
+    void hoistOutOfFunction(const Definition& d, size_t at, size_t declarationStart) {
+        if (ident(d.close + 1)) return hoistOut(d, at, declarationStart);
+        if (d.anonymous || !is(d.close + 1, ";")) return;  // `struct { ... };` declares nothing: fxc's error
+        edits_.push_back({t_[declarationStart].offset, t_[declarationStart].offset, d.hoisted + render(d, at) + " "});
+        edits_.push_back({t_[at].offset, t_[d.close + 1].end, ""});
+    }
+
+    // A definition at file scope: member definitions before it, its declarators
     // (and the modifiers before `struct`) after it, as a declaration of their own.
     void splitInPlace(const Definition& d, size_t at) {
         const bool declarators = !is(d.close + 1, ";");
