@@ -54,7 +54,7 @@ namespace fs = std::filesystem;
 
 namespace fxport::xlate {
 
-const char* compilerVersion() { return "fxport-xlate-10"; }  // 3: asm { } blocks translate; 4: compute, hull, domain; 5: D3D resource registers; 6: one-row/one-column matrices as vectors, lhs and componentwise casts, scalar intrinsics; 7: mixed shapes, fxc signature layout, geometry entries, struct inheritance, more fxc rejections; 8: D3D integer fix-ups, out-argument wrappers, clip-distance packing, serialised varyings, typed buffers, constant-expression sizes, component-wise casts; 9: cbuffers at D3D offsets (packoffset, register(cN), register arrays); 10: D3D9 fixed-function variants, tight structured buffers, sampler-array elements, integer matrices, fetch offsets, negated comparisons, pow2 partitioning and ProcessTessFactors, split-array semantics
+const char* compilerVersion() { return "fxport-xlate-11"; }  // 3: asm { } blocks translate; 4: compute, hull, domain; 5: D3D resource registers; 6: one-row/one-column matrices as vectors, lhs and componentwise casts, scalar intrinsics; 7: mixed shapes, fxc signature layout, geometry entries, struct inheritance, more fxc rejections; 8: D3D integer fix-ups, out-argument wrappers, clip-distance packing, serialised varyings, typed buffers, constant-expression sizes, component-wise casts; 9: cbuffers at D3D offsets (packoffset, register(cN), register arrays); 10: D3D9 fixed-function variants, tight structured buffers, sampler-array elements, integer matrices, fetch offsets, negated comparisons, pow2 partitioning and ProcessTessFactors, split-array semantics; 11: live SM1-3 constant ranges, zero-initialised statics, fxc string escapes, nested struct reflection
 
 namespace {
 
