@@ -63,6 +63,7 @@ std::vector<LimitCase> fixtureCases() {
         {"NestedShaderCode", kDir + "limit_nesting_code.fx", diag::kNestingTooDeep, 3},
         {"NestedIfExpression", kDir + "limit_nesting_if.fx", diag::kNestingTooDeep, 2},
         {"NestedMacroCalls", kDir + "limit_nested_macro_calls.fx", diag::kNestingTooDeep, 3},
+        {"MacroCallsNestedInArguments", kDir + "limit_macro_call_nesting.fx", diag::kMacroLimit, 5},
         {"NestingOnlyAfterExpansion", kDir + "limit_nesting_after_expansion.fx", diag::kNestingTooDeep, 303},
         {"ArrayTooLarge", kDir + "limit_array_too_large.fx", diag::kArrayTooLarge, 2},
         {"LineDirectiveOverflow", kDir + "limit_line_directive.fx", diag::kPreprocessor, 1},
@@ -81,6 +82,7 @@ std::vector<LimitCase> fixtureCases() {
         {"PostfixOnLiteral", kDir + "postfix_on_literal.fx", diag::kHlsl, 5},
         {"PostfixOnUndeclaredName", kDir + "postfix_on_undeclared.fx", diag::kHlsl, 5},
         {"PostfixOnCall", kDir + "postfix_on_call.fx", diag::kHlsl, 5},
+        {"UndeclaredNameInInitializedArraySize", kDir + "array_size_undeclared.fx", diag::kHlsl, 6},
         // fxport's own: wrong compiled effects that failed their own validation on load.
         {"PackoffsetOverlap", kDir + "packoffset_overlap.fx", diag::kHlsl, 7},
         {"InitializerTooLong", kDir + "initializer_too_long.fx", diag::kHlsl, 3},

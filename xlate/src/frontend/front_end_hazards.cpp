@@ -27,6 +27,7 @@ public:
         undeclaredInTernary();
         postfixOnNonLValues();
         templateDimensions();
+        undeclaredInInitializedArraySizes();
         std::stable_sort(found_.begin(), found_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
         std::vector<Diagnostic> out;
         for (auto& [token, d] : found_) out.push_back(std::move(d));
@@ -350,6 +351,27 @@ private:
                     report(diag::kHlsl, std::string(t.is("matrix") ? "matrix" : "vector") + " dimensions must be between 1 and 4 (not " + tok(n).text + ")", n);
                     return;
                 }
+            }
+        }
+    }
+
+    // `static const float W[Nope + 1] = { ... };` with `Nope` declared nowhere: glslang leaves the
+    // array unsized and dereferences the missing size in convertInitializerList (fuzzer, device run of
+    // session 17; a bare `W[Nope]` and locals get glslang's own diagnostic). fxc: X3004. At global
+    // scope a size can only name another global (a static const), a type or a function.
+    void undeclaredInInitializedArraySizes() {
+        std::set<std::string> globals;
+        for (const auto& g : syntax_.globals) globals.insert(g.name);
+        static const std::set<std::string> kWords = {"true", "false", "sizeof"};
+        for (const auto& g : syntax_.globals) {
+            if (g.initializer.empty() || !tok(g.token + 1).is("[")) continue;
+            for (size_t i = g.token + 1; i < g.initializer.begin && i < syntax_.tokens.size(); ++i) {
+                const Token& t = tok(i);
+                if (!t.isIdent() || globals.count(t.text) || kWords.count(t.text) || tok(i + 1).is("(") || tok(i - 1).is(".") ||
+                    describeBasicType(syntax_.resolveType(t.text)).ok)
+                    continue;
+                report(diag::kHlsl, "undeclared identifier '" + t.text + "' in the size of array '" + g.name + "'", i);
+                return;
             }
         }
     }
