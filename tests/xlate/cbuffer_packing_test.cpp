@@ -103,3 +103,37 @@ TEST(CbufferPacking, OverlappingPackoffsetsAreRefusedWhereDeclared) {
         EXPECT_NE(d.location.file.find("CbufferPacking.fx"), std::string::npos) << d.location.file;
     }
 }
+
+// Objects declared in a cbuffer are the resources they would be outside it and take no room in it
+// (vkd3d's cbuffer tests; rewrite/cbuffer_objects.h): the numbers pack as if the objects were not
+// there, a packoffset on a texture changes nothing, and the GLSL declares the texture and the
+// sampler outside the block (GLSL refuses opaque members).
+TEST(CbufferPacking, ObjectsInACbufferAreResourcesOutsideIt) {
+    CompiledEffect e = compile("cbuffer C { float4 a; Texture2D tex; SamplerState sam; float4 b; }\ncbuffer D { Texture2D other : packoffset(c5); }\n",
+                               "return a + b + tex.Sample(sam, float2(0, 0)) + other.Load(int3(0, 0, 0));");
+    EXPECT_EQ(param(e, "a").offset, 0);
+    EXPECT_EQ(param(e, "b").offset, 16);
+    EXPECT_EQ(blockOf(e, "a").size, 32);
+    int textures = 0, samplers = 0;
+    for (const auto& r : e.resources) {
+        textures += r.kind == ResourceDeclaration::Kind::Texture && (r.name == "tex" || r.name == "other");
+        samplers += r.kind == ResourceDeclaration::Kind::Sampler && r.name == "sam";
+    }
+    EXPECT_EQ(textures, 2);
+    EXPECT_EQ(samplers, 1);
+}
+
+// fxc's rules about objects in a cbuffer are judged where they were written: a sampler placed by
+// packoffset() alone that a shader uses is refused; with a register() too it compiles.
+TEST(CbufferPacking, ASamplerUsedWithOnlyAPackoffsetIsRefused) {
+    try {
+        compile("Texture2D tex;\ncbuffer C { sampler sam : packoffset(c1); }\n", "return tex.Sample(sam, float2(0, 0));");
+        FAIL() << "compiled";
+    } catch (const CompileError& err) {
+        const Diagnostic& d = err.diagnostics().front();
+        EXPECT_NE(d.message.find("sampler 'sam' is placed in its cbuffer by packoffset() only"), std::string::npos) << d.message;
+        EXPECT_EQ(d.location.line, 2);
+    }
+    CompiledEffect e = compile("Texture2D tex;\ncbuffer C { sampler sam : packoffset(c1) : register(s0); }\n", "return tex.Sample(sam, float2(0, 0));");
+    EXPECT_EQ(e.shaders.size(), 1u);
+}

@@ -16,6 +16,9 @@ namespace {
 struct Member {
     size_t name = 0;          // token of the declared name
     bool placed = false;      // packoffset, or register() of a class other than c
+    bool sampler = false;     // sampler, SamplerState, SamplerComparisonState ...
+    bool packed = false;      // packoffset()
+    bool registered = false;  // register() of a class other than c
 };
 
 class CbufferReservations : public FxcCheck {
@@ -29,7 +32,9 @@ public:
             while (open < t_.size() && !t_[open].is("{") && !t_[open].is(";")) ++open;
             if (open >= t_.size() || !t_[open].is("{")) continue;
             size_t close = closing(open);
-            judge(t_[i + 1].text, members(open + 1, close));
+            const std::vector<Member> found = members(open + 1, close);
+            judge(t_[i + 1].text, found);
+            samplersPackedOnly(found, close);
             i = close;
         }
     }
@@ -56,14 +61,45 @@ private:
         Member m;
         for (size_t j = begin; j < end; ++j) {
             if (t_[j].is(":") && !m.name && j > begin) m.name = lastName(begin, j);
-            if (t_[j].is("packoffset")) m.placed = true;
+            if (t_[j].is("packoffset")) m.placed = m.packed = true;
             if (t_[j].is("register") && tok(j + 1).is("(") && tok(j + 2).isIdent()) {
                 char c = char(std::tolower(static_cast<unsigned char>(tok(j + 2).text[0])));
-                if (c != 'c') m.placed = true;
+                if (c != 'c') m.placed = m.registered = true;
             }
         }
         if (!m.name) m.name = lastName(begin, end);
+        static const char* const kSamplers[] = {"sampler", "sampler1D", "sampler2D", "sampler3D", "samplerCUBE", "SamplerState",
+                                                "SamplerComparisonState"};
+        const size_t type = firstAfterModifiers(begin, end);
+        for (const char* k : kSamplers)
+            if (type < end && t_[type].is(k)) m.sampler = true;
         return m;
+    }
+
+    size_t firstAfterModifiers(size_t begin, size_t end) const {
+        static const char* const kModifiers[] = {"uniform", "const", "static", "extern", "shared", "volatile"};
+        size_t j = begin;
+        for (bool more = true; more && j < end;) {
+            more = false;
+            for (const char* k : kModifiers)
+                if (t_[j].is(k)) more = true;
+            if (more) ++j;
+        }
+        return j;
+    }
+
+    // A sampler placed by packoffset() alone, which a shader uses (vkd3d's cbuffer test: fxc refuses
+    // it; unused, or with a register() too, it is taken).
+    void samplersPackedOnly(const std::vector<Member>& members, size_t close) {
+        for (const auto& m : members) {
+            if (!m.sampler || !m.packed || m.registered) continue;
+            for (size_t j = close + 1; j < t_.size(); ++j)
+                if (t_[j].is(tok(m.name).text) && !tok(j - 1).is(".")) {
+                    report("sampler '" + tok(m.name).text + "' is placed in its cbuffer by packoffset() only; a sampler a shader uses needs a register() too",
+                           m.name);
+                    break;
+                }
+        }
     }
 
     size_t lastName(size_t begin, size_t end) const {

@@ -37,6 +37,7 @@
 #include "fx/input_limits.h"
 #include "effect/loose_shaders.h"
 #include "fx/preprocess.h"
+#include "rewrite/cbuffer_objects.h"
 #include "rewrite/struct_definitions.h"
 #include "rewrite/unused_sampler_arrays.h"
 #include "rewrite/sampler_array_elements.h"
@@ -1189,6 +1190,12 @@ CompiledEffect compileUncached(const std::string& source, const std::string& dis
     // What fxc rejects and glslang would accept (fxc_checks.h: every family of checks).
     if (auto rejected = runFxcChecks(syntax, pre.map); !rejected.empty()) throw CompileError(std::move(rejected));
     if (auto rejected = checkEffectProfile(syntax, pre.map, options.effectProfile); !rejected.empty()) throw CompileError(std::move(rejected));
+    // Objects declared in a cbuffer move out of it (cbuffer_objects.h), after fxc's rules on them
+    // were judged where they were written; the moved text is parsed again.
+    if (std::string moved = objectsMovedOutOfCbuffers(pre.text); moved != pre.text) {
+        pre.text = std::move(moved);
+        syntax = parseEffect(pre.text, pre.map, isLooseShaderCompile(options));
+    }
     RewrittenEffect rewritten = rewriteEffect(pre.text, syntax, pre.map, effect.diagnostics, options.defaultMatrixMajority);
     for (auto& w : findImplicitTruncations(syntax, pre.map)) effect.diagnostics.push_back(std::move(w));
     Prefetched prefetched;
