@@ -93,7 +93,7 @@ V4 withW(V3 v, double w) { return {v.x, v.y, v.z, w}; }
 
 }  // namespace
 
-V2 fullscreenUV(PixelPos p) { return {(p.x + kPixelBias) / p.width, (p.y + kPixelBias) / p.height}; }
+V2 fullscreenUV(PixelPos p) { return {(p.x + kPixelBiasX) / p.width, (p.y + kPixelBiasY) / p.height}; }
 V2 fullscreenNdc(PixelPos p) { return pixelNdc(p.x, p.y, p.width, p.height); }
 
 Range4 clearPixel(int target) {

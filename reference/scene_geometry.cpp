@@ -179,7 +179,7 @@ View3D makeView(const M4& view, const M4& projection, int width, int height) {
 }
 
 V2 pixelNdc(int x, int y, int width, int height, V2 shift) {
-    return {2 * (x + kPixelBias + shift.x) / width - 1, 1 - 2 * (y + kPixelBias + shift.y) / height};
+    return {2 * (x + kPixelBiasX + shift.x) / width - 1, 1 - 2 * (y + kPixelBiasY + shift.y) / height};
 }
 
 Ray ndcRay(const View3D& v, V2 ndc) {

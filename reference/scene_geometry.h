@@ -3,9 +3,10 @@
 // casting the ray through the pixel's D3D9 sample point.
 //
 // Pixel (i, j) of a W x H target samples D3D9 screen position (i, j) (pixel centres on integers,
-// NDC -1 at screen -0.5), which fxport moves by +1/256 pixel (docs/DESIGN.md, "D3D9 pixel
-// centres"; pinned by Conventions.HalfPixelAndOrientationUnderShaderModel3: UV = (i + [0,1/256])/W).
-// So the reference samples NDC (2(i + 1/256)/W - 1, 1 - 2(j + 1/256)/H).
+// NDC -1 at screen -0.5), which fxport moves by +1/256 pixel down the rows and not at all across
+// the columns (docs/DESIGN.md, "D3D9 pixel centres"; pinned by
+// Conventions.HalfPixelAndOrientationUnderShaderModel3: UV = (i + [0,1/256])/W).
+// So the reference samples NDC (2i/W - 1, 1 - 2(j + 1/256)/H).
 //
 // Culling follows XNA: a triangle is clockwise as seen when (c-a) x (b-a) points at the eye;
 // CullCounterClockwiseFace (the default) keeps those, CullClockwiseFace keeps the others.
@@ -18,7 +19,8 @@
 
 namespace fxport::reference {
 
-inline constexpr double kPixelBias = 1.0 / 256;
+inline constexpr double kPixelBiasX = 0;          // across the columns
+inline constexpr double kPixelBiasY = 1.0 / 256;  // down the rows
 
 struct MeshVertex {
     V3 position, normal;

@@ -13,10 +13,12 @@ namespace _2DLightingSystem {
 namespace {
 
 const double kPI = 3.14159265;         // the effects' #define PI
-// texCoord at pixel (x, y) of a w-wide destination is (x + kBias) / w: XNA 4's SpriteBatch matrix moves
+// texCoord at pixel (x, y) of a w-wide destination is (x + kBiasX) / w: XNA 4's SpriteBatch matrix moves
 // sprites by -0.5 pixel (so that on D3D9, whose pixel centres are at integer positions, texel centres
-// land on pixel centres: +0.5), and the runtime's D3D9 pixel-centre emulation adds +1/256 pixel.
-const double kBias = 0.5 + 1.0 / 256.0;
+// land on pixel centres: +0.5), and the runtime's D3D9 pixel-centre emulation adds +1/256 pixel down
+// the rows (kBiasY), nothing across.
+const double kBiasX = 0.5;
+const double kBiasY = 0.5 + 1.0 / 256.0;
 const double kEdge = 1e-3;             // a sample this close to a texel edge may go either way
 // RGBA16F: 10 mantissa bits. GL leaves the rounding of float -> half conversion on render target
 // writes to the implementation (llvmpipe rounds towards zero), so one ulp: |error| <= 2^-10 |v|.
@@ -95,7 +97,7 @@ struct Setup {
 
 // Unwrap.fx / UnwrapSpotlight.fx for texel (x, y) of the W x W unwrap target: r, g ranges.
 void unwrapRef(const Setup& s, const LightCapture& l, int x, int y, Range out[2]) {
-    const double u = (x + kBias) / s.W, v = (y + kBias) / s.W;
+    const double u = (x + kBiasX) / s.W, v = (y + kBiasY) / s.W;
     const double Lx = l.posX, Ly = l.posY, TW = s.TW, TH = s.TH;
     // 1 if the caster texel(s) at (px, py) are empty (alpha < 0.01), else `dist`; both if it may go
     // either way.
@@ -237,7 +239,7 @@ bool checkLight(LightRenderer& r, const Setup& s, const LightCapture& l, int ind
     RefImage lightRef(W, H, 4);
     for (int y = 0; y < H; ++y)
         for (int x = 0; x < W; ++x) {
-            const double sx_ = double(W) * ((x + kBias) / W), sy_ = double(H) * ((y + kBias) / H);
+            const double sx_ = double(W) * ((x + kBiasX) / W), sy_ = double(H) * ((y + kBiasY) / H);
             const double dx = sx_ - Lx, dy = sy_ - Ly;
             const double pixDist = std::sqrt(dx * dx + dy * dy);
             double lighting = (1 - pixDist / R) * Pow;
@@ -305,7 +307,7 @@ bool checkLight(LightRenderer& r, const Setup& s, const LightCapture& l, int ind
         RefImage blurRef(W, H, 4);
         for (int y = 0; y < H; ++y)
             for (int x = 0; x < W; ++x) {
-                const double u = (x + kBias) / W, v = (y + kBias) / H;
+                const double u = (x + kBiasX) / W, v = (y + kBiasY) / H;
                 const double spx = u * W, spy = v * H;
                 const double dist = std::sqrt((spx - Lx) * (spx - Lx) + (spy - Ly) * (spy - Ly));
                 const double blur = minB + std::clamp(dist / R, 0.0, 1.0) * (maxB - minB);

@@ -17,7 +17,7 @@
 //                 from the GPU's backBufferCache and lightMap, then the shadow casters drawn over it
 //                 with AlphaBlend: the back buffer.
 // Pixel centres are D3D9's as the runtime emulates them: pixel (x, y) of a destination rectangle of
-// w x h interpolates texCoord = ((x + 1/256) / w, (y + 1/256) / h) (docs/DESIGN.md "runtime").
+// w x h interpolates texCoord = (x / w, (y + 1/256) / h) (docs/DESIGN.md "runtime").
 // The light map, blur, accumulation and final references are per-pixel intervals; their checks also
 // move the GPU image by one pixel in x and in y and require it to fail on at least half of the
 // samples where it differs from the unshifted image by more than 1 LSB.

@@ -42,12 +42,15 @@ M4 toM4(const Matrix& a) {
     return r;
 }
 
-// The runtime's D3D9 pixel-centre emulation: pixel (x, y) samples D3D9 screen position (x, y) + kBias.
-const double kBias = 1.0 / 256.0;
+// The runtime's D3D9 pixel-centre emulation: pixel (x, y) samples D3D9 screen position
+// (x + kBiasXX, y + kBiasYY): exact across the columns, 1/256 pixel down the rows.
+const double kBiasX = 0;
+const double kBiasY = 1.0 / 256.0;
 // Sample points D3D9 leaves open around that: rasterisers snap vertices to 1/256 pixel (varyings
 // and edges move by up to 1/512), so the reference is the hull over these offsets (pixels).
 const double kEdgeSlack = 1.0 / 256.0;
-const double kOffsets[5][2] = {{0, 0}, {-kBias, 0}, {kBias, 0}, {0, -kBias}, {0, kBias}};
+const double kSnap = 1.0 / 256.0;
+const double kOffsets[5][2] = {{0, 0}, {-kSnap, 0}, {kSnap, 0}, {0, -kSnap}, {0, kSnap}};
 // An 8-bit target stores one of the two integers closest to v * 255 (roundRange); the GPU's float32
 // shader math may move v by this many LSB.
 const double kRoundSlack = 0.05;
@@ -282,7 +285,7 @@ bool checkGBuffer(Game1& game) {
         const int y1 = std::min(H - 1, int(std::ceil(std::max({t.sy[0], t.sy[1], t.sy[2]}))) + 1);
         for (int y = y0; y <= y1; ++y)
             for (int x = x0; x <= x1; ++x) {
-                const double px = x + kBias, py = y + kBias;
+                const double px = x + kBiasX, py = y + kBiasY;
                 double inside = 1e300;  // the smallest distance inside the three edges (pixels)
                 for (int e = 0; e < 3; ++e) {
                     const int a = (e + 1) % 3, b = (e + 2) % 3;
@@ -312,7 +315,7 @@ bool checkGBuffer(Game1& game) {
         void add(const ScreenTri* t, int x, int y) {
             ++candidates;
             for (const auto& o : kOffsets) {  // varyings within the snapping distance
-                const GSample g = shadeGBuffer(t, x + kBias + o[0], y + kBias + o[1], &colorLo, &colorHi);
+                const GSample g = shadeGBuffer(t, x + kBiasX + o[0], y + kBiasY + o[1], &colorLo, &colorHi);
                 for (int c = 0; c < 4; ++c) nLo[c] = std::min(nLo[c], g.normal[c]), nHi[c] = std::max(nHi[c], g.normal[c]);
                 aLo = std::min(aLo, g.color[3]), aHi = std::max(aHi, g.color[3]);
                 dLo = std::min(dLo, g.depth), dHi = std::max(dHi, g.depth);
@@ -472,7 +475,7 @@ bool checkLightMapAndCombine(Game1& game, bool spot, double time) {
             // Directional light: position from the quad's texCoord (exact: the quad's corners are on
             // the snapping grid).
             {
-                const double u = (x + kBias - 0.5) / W, v = (y + kBias - 0.5) / H;
+                const double u = (x + kBiasX - 0.5) / W, v = (y + kBiasY - 0.5) / H;
                 const D3 position = toWorld(u * 2 - 1, -(v * 2 - 1), in.depth);
                 const D3 lightVector = normalize(d3(r.drawnDirection)) * -1.0;
                 const double NdL = std::max(0.0, dot(in.normal, lightVector));
@@ -491,7 +494,7 @@ bool checkLightMapAndCombine(Game1& game, bool spot, double time) {
                 double lo[4] = {1e9, 1e9, 1e9, 1e9}, hi[4] = {-1e9, -1e9, -1e9, -1e9};
                 bool mayBeUncovered = false;
                 for (const auto& o : kOffsets) {
-                    const double px = x + kBias + o[0], py = y + kBias + o[1];
+                    const double px = x + kBiasX + o[0], py = y + kBiasY + o[1];
                     const D3 position = toWorld(2.0 * px / W - 1, 1 - 2.0 * py / H, in.depth);
                     D3 lightVector = lightPosition - position;
                     const double distance = length(lightVector);

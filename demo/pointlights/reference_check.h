@@ -7,9 +7,9 @@
 //   lightRT    DirectionalLight.fx + PointLight.fx for every light drawn (+ SpotLight.fx with --spot),
 //              from the GPU's G-buffer; also reported alone where only the directional light reaches;
 //   final      CombineFinal.fx from the GPU's colorRT and lightRT (the back buffer).
-// D3D9 pixel centres as the runtime emulates them: pixel (x, y) samples at (x + 1/256, y + 1/256) in
-// D3D9 screen space, so a full-screen quad's texCoord - halfPixel lands 1/256 texel past the centre
-// of texel (x-1, y-1). Each pixel's reference is an interval [lo, hi] per channel: the hull over what
+// D3D9 pixel centres as the runtime emulates them: pixel (x, y) samples at (x, y + 1/256) in D3D9
+// screen space, so a full-screen quad's texCoord - halfPixel lands on the centre of texel (x-1, y-1)
+// across and 1/256 texel below it. Each pixel's reference is an interval [lo, hi] per channel: the hull over what
 // D3D9 leaves open (sample points within 1/256 pixel: vertex snapping and edges; 8-bit rounding within
 // float error of a half; the 1/256 bilinear weight; mip level choice), so a pass's bound is exact
 // except for those. Each target's check also shifts the GPU image by one pixel in x and in y and

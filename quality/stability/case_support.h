@@ -32,10 +32,10 @@ struct Accumulator {
 void takeFindings(const std::vector<NonFiniteTarget>& found, CaseResult& r);
 
 // D3D9 pixel centres as the runtime emulates them: pixel (x, y) of a full-target quad is
-// interpolated at NDC (2 (x + 1/256) / W - 1, 1 - 2 (y + 1/256) / H).
-inline constexpr double kPixelBias = 1.0 / 256;
-inline double pixelNdcX(int x, int w) { return 2 * (x + kPixelBias) / w - 1; }
-inline double pixelNdcY(int y, int h) { return 1 - 2 * (y + kPixelBias) / h; }
+// interpolated at NDC (2 x / W - 1, 1 - 2 (y + 1/256) / H) (exact across, 1/256 pixel down).
+inline constexpr double kPixelBiasY = 1.0 / 256;
+inline double pixelNdcX(int x, int w) { return 2.0 * x / w - 1; }
+inline double pixelNdcY(int y, int h) { return 1 - 2 * (y + kPixelBiasY) / h; }
 
 // A G-buffer of size x size as the xna-deferred light passes read it, every texel given:
 // albedo.w = specular intensity, normals = encoded (n + 1) / 2 and .w = specular power / 255,

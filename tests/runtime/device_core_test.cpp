@@ -121,6 +121,20 @@ TEST(StateShadow, ViewportSaysWhetherItWasSent) {
     EXPECT_EQ(backend.viewport.MaxDepth, 0.5f);
 }
 
+// The D3D9 pixel-centre shift (an SM1-3 vertex shader's) is part of the viewport: a draw with another
+// kind of vertex shader over the same viewport sends it again, without the shift.
+TEST(StateShadow, ViewportShiftIsPartOfTheViewport) {
+    test::RecordingBackend backend;
+    StateShadow shadow(backend);
+    const ViewportShift d3d9{0.5f, 0.5f - 1.0f / 256.0f};
+    EXPECT_TRUE(shadow.setViewport(Viewport(0, 0, 8, 8), d3d9));
+    shadow.settle();
+    EXPECT_FALSE(shadow.setViewport(Viewport(0, 0, 8, 8), d3d9));
+    EXPECT_TRUE(shadow.setViewport(Viewport(0, 0, 8, 8)));
+    EXPECT_EQ(backend.take(), (Calls{"setViewport 8x8 shifted", "setViewport 8x8"}));
+    EXPECT_EQ(backend.viewportShift, ViewportShift{});
+}
+
 TEST(StateShadow, SrgbWriteIsSentOnChange) {
     test::RecordingBackend backend;
     StateShadow shadow(backend);

@@ -23,6 +23,7 @@ public:
     DepthStencilState depthStencil;
     RasterizerState rasterizer;
     Viewport viewport;
+    ViewportShift viewportShift;
     Rectangle scissor;
     BlendState hadBlend;  // what the last "changed" setBlend said the backend had
     BackendObject nextObject = 100;  // every object made: samplers, buffers, textures, programs ...
@@ -40,9 +41,11 @@ public:
         note("setRasterizer", had);
         rasterizer = state;
     }
-    void setViewport(const Viewport& v) override {
-        calls.push_back("setViewport " + std::to_string(v.Width) + "x" + std::to_string(v.Height));
+    void setViewport(const Viewport& v, ViewportShift shift) override {
+        calls.push_back("setViewport " + std::to_string(v.Width) + "x" + std::to_string(v.Height) +
+                        (shift == ViewportShift{} ? std::string() : " shifted"));
         viewport = v;
+        viewportShift = shift;
     }
     void setScissor(const Rectangle& r) override {
         calls.push_back("setScissor " + std::to_string(r.Width) + "x" + std::to_string(r.Height));

@@ -114,6 +114,15 @@ enum class QueryKind {
 inline constexpr int kPipelineStatistics = 11;  // QueryKind::VerticesSubmitted + 0 .. 10
 inline QueryKind pipelineStatistic(int i) { return QueryKind(int(QueryKind::VerticesSubmitted) + i); }
 
+// Where a viewport's origin sits, in pixels right and down of its integer corner. D3D9's pixel
+// centres lie on integer coordinates, half a pixel up and left of GL's (and D3D10's): SM1-3 shaders
+// draw with the origin moved by that half (GraphicsDevice::Impl::applyViewport says how much).
+struct ViewportShift {
+    float x = 0;
+    float y = 0;
+    bool operator==(const ViewportShift&) const = default;
+};
+
 class Backend {
 public:
     virtual ~Backend() = default;
@@ -123,7 +132,7 @@ public:
     virtual void setBlend(const BlendState& state, const BlendState* had) = 0;
     virtual void setDepthStencil(const DepthStencilState& state, const DepthStencilState* had) = 0;
     virtual void setRasterizer(const RasterizerState& state, const RasterizerState* had) = 0;
-    virtual void setViewport(const Viewport& viewport) = 0;
+    virtual void setViewport(const Viewport& viewport, ViewportShift shift) = 0;
     virtual void setScissor(const Rectangle& rectangle) = 0;  // the rectangle; RasterizerState switches the test
     virtual void setSrgbWrite(bool enabled) = 0;              // encode into sRGB-encoded targets (D3D9 SRGBWriteEnable)
     // Clip planes 0..count-1 on, the others off: the SV_ClipDistance values the last stage before

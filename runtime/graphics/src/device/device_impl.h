@@ -182,8 +182,7 @@ struct GraphicsDevice::Impl {
     std::map<BackendObject, BackendObject> computePipelines;  // compute program -> its pipeline
     void dispatch(int x, int y, int z);  // DispatchCompute after its checks
     void dropComputePipelinesUsing(BackendObject program);
-    BackendObject internalBuffer = 0;           // fxport_Internal { float4 fxport_PixelOffset; }
-    std::array<float, 4> pixelOffset{};  // what internalBuffer holds
+    BackendObject internalBuffer = 0;           // fxport_Internal { float4 fxport_PixelOffset; }: zero
 
     // --- vertex input
     VertexBuffer* vertexBuffer = nullptr;
@@ -220,7 +219,7 @@ struct GraphicsDevice::Impl {
     std::map<std::array<std::uint8_t, sizeof(SamplerState)>, BackendObject> samplerObjects;  // SamplerState bytes -> backend sampler
     BackendObject samplerFor(const SamplerState& state);
 
-    void applyViewport(const fxport::Viewport& wanted);  // and the D3D9 pixel offset that depends on it
+    void applyViewport(const fxport::Viewport& wanted);  // with the D3D9 pixel offset when the vertex shader is SM1-3
     void applyTextures();
     void applyTexturesOf(const ShaderProgram* const* programs, std::size_t count);  // for compute dispatches too
     void applyShaders();

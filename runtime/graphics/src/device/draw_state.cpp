@@ -218,21 +218,19 @@ void GraphicsDevice::Impl::applyTexturesOf(const ShaderProgram* const* programs,
 }
 
 void GraphicsDevice::Impl::applyViewport(const fxport::Viewport& w) {
-    if (!shadow.setViewport(w)) return;
-    // D3D9 pixel centres: SM1-3 vertex shaders add fxport_PixelOffset.xy * w to the position,
-    // moving the geometry right and down by (half a pixel - 1/256 pixel). Half a pixel puts D3D9's
-    // integer pixel centres on GL's; the 1/256 (one step of the rasteriser's sub-pixel grid) keeps
-    // an edge that falls exactly on a centre just above/left of it, so coverage follows D3D's
-    // top-left rule on every driver instead of the GL implementation's own tie-break (llvmpipe
-    // drops the top row of a full-screen quad under GL_UPPER_LEFT without it). The price is an
-    // attribute bias of 1/256 pixel (docs/DESIGN.md).
-    constexpr float kShift = 2.0f * (0.5f - 1.0f / 256.0f);  // in NDC units per pixel
-    std::array<float, 4> offset = {w.Width > 0 ? kShift / float(w.Width) : 0.0f,
-                                   w.Height > 0 ? -kShift / float(w.Height) : 0.0f, 0.0f, 0.0f};
-    if (offset != pixelOffset) {
-        pixelOffset = offset;
-        backend->writeBuffer(internalBuffer, 0, sizeof(float) * 4, pixelOffset.data());
-    }
+    // D3D9 pixel centres: an SM1-3 vertex shader's geometry moves right by half a pixel and down by
+    // (half a pixel - 1/256), through the viewport's origin, where both are exact. Half a pixel
+    // puts D3D9's integer pixel centres on GL's, so attributes interpolate at D3D9's positions (a
+    // shift in clip space rounded: 0.5 px became 0.49999237 at 640 wide, and llvmpipe's 1/256 grid
+    // made that 127/256). Columns need nothing more: GL's rasterisers include a left edge that
+    // falls on a centre, as D3D's top-left rule does. Rows do: under GL_UPPER_LEFT llvmpipe treats a
+    // top edge on a centre as a bottom one and drops the row, so the 1/256 (one step of the
+    // sub-pixel grid) keeps such an edge just above the centre. Its price is an attribute bias of
+    // 1/256 pixel down the rows (docs/DESIGN.md). The shaders' fxport_PixelOffset (entry_wrapper.h)
+    // stays zero.
+    const ShaderProgram* vertex = shaders[0];
+    const bool d3d9 = vertex && vertex->shader && vertex->shader->needsD3D9PixelOffset;
+    shadow.setViewport(w, d3d9 ? ViewportShift{0.5f, 0.5f - 1.0f / 256.0f} : ViewportShift{});
 }
 
 BackendObject GraphicsDevice::Impl::samplerFor(const SamplerState& s) {

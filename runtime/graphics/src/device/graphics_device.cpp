@@ -162,8 +162,11 @@ GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters)
     Backend& api = *impl_->backend;
     api.adoptD3DConventions();
 
+    // fxport_Internal { float4 fxport_PixelOffset; } of SM1-3 vertex shaders: zero, the D3D9 pixel
+    // offset is the viewport's (applyViewport).
     impl_->internalBuffer = impl_->createBuffer();
-    api.allocateBuffer(impl_->internalBuffer, sizeof(float) * 4, nullptr, false);
+    const float zero[4] = {0, 0, 0, 0};
+    api.allocateBuffer(impl_->internalBuffer, sizeof zero, zero, false);
     for (int stage = 0; stage < kUniformStages; ++stage)
         api.bindUniformBuffer(uniformBindingFor(stage, kInternalBlockBinding), impl_->internalBuffer);
 

@@ -21,10 +21,11 @@ void StateShadow::setRasterizer(const RasterizerState& wanted) {
     rasterizer_ = wanted;
 }
 
-bool StateShadow::setViewport(const Viewport& wanted) {
-    if (!unknown_ && wanted == viewport_) return false;
-    backend_.setViewport(wanted);
+bool StateShadow::setViewport(const Viewport& wanted, ViewportShift shift) {
+    if (!unknown_ && wanted == viewport_ && shift == viewportShift_) return false;
+    backend_.setViewport(wanted, shift);
     viewport_ = wanted;
+    viewportShift_ = shift;
     return true;
 }
 

@@ -23,7 +23,7 @@ public:
     void setDepthStencil(const DepthStencilState& wanted);
     void setRasterizer(const RasterizerState& wanted);
     // Returns whether the viewport was sent (it changed, or the shadow is unknown).
-    bool setViewport(const Viewport& wanted);
+    bool setViewport(const Viewport& wanted, ViewportShift shift = {});
     void setScissor(const Rectangle& wanted);
     void setSrgbWrite(bool wanted);
     void setClipPlanes(int wanted);
@@ -45,6 +45,7 @@ private:
     DepthStencilState depthStencil_;
     RasterizerState rasterizer_;
     Viewport viewport_;
+    ViewportShift viewportShift_;
     Rectangle scissor_;
     bool srgbWrite_ = false;
     int clipPlanes_ = 0;

@@ -257,10 +257,12 @@ void GlBackend::setRasterizer(const RasterizerState& w, const RasterizerState* h
     }
 }
 
-void GlBackend::setViewport(const Viewport& w) {
+void GlBackend::setViewport(const Viewport& w, ViewportShift shift) {
     // Under GL_UPPER_LEFT, window y runs from the top row of the (top-row-first) target, like D3D:
-    // the viewport needs no flip.
-    glViewport(w.X, w.Y, w.Width, w.Height);
+    // the viewport needs no flip. A shifted origin is exact in window coordinates (GL 4.1's float
+    // viewport), where a shift added in clip space rounds (1/640 of the NDC range is not a float).
+    if (shift == ViewportShift{}) glViewport(w.X, w.Y, w.Width, w.Height);
+    else glViewportIndexedf(0, float(w.X) + shift.x, float(w.Y) + shift.y, float(w.Width), float(w.Height));
     glDepthRangef(w.MinDepth, w.MaxDepth);
 }
 

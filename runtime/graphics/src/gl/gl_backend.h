@@ -20,7 +20,7 @@ public:
     void setBlend(const BlendState& state, const BlendState* had) override;
     void setDepthStencil(const DepthStencilState& state, const DepthStencilState* had) override;
     void setRasterizer(const RasterizerState& state, const RasterizerState* had) override;
-    void setViewport(const Viewport& viewport) override;
+    void setViewport(const Viewport& viewport, ViewportShift shift) override;
     void setScissor(const Rectangle& rectangle) override;
     void setSrgbWrite(bool enabled) override;
     void setClipPlanes(int count) override;
