@@ -23,7 +23,7 @@ struct PixelPos {
 };
 
 // A full-screen quad's varyings at the pixel (FullscreenQuad: UV (0,0) at NDC (-1,+1)):
-// UV = ((x + 1/256) / W, (y + 1/256) / H) and the unshifted NDC position.
+// UV = (x / W, (y + 1/256) / H) (scene_geometry.h: kPixelBiasX, kPixelBiasY) and the unshifted NDC position.
 V2 fullscreenUV(PixelPos p);
 V2 fullscreenNdc(PixelPos p);
 

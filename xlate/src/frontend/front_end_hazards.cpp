@@ -365,8 +365,13 @@ private:
         static const std::set<std::string> kWords = {"true", "false", "sizeof"};
         for (const auto& g : syntax_.globals) {
             if (g.initializer.empty() || !tok(g.token + 1).is("[")) continue;
+            // The sizes only (`W[N][M]`), not a semantic or annotation after them (`: Diffuse`).
+            int depth = 0;
             for (size_t i = g.token + 1; i < g.initializer.begin && i < syntax_.tokens.size(); ++i) {
                 const Token& t = tok(i);
+                if (t.is("[")) ++depth;
+                else if (t.is("]")) --depth;
+                if (depth == 0 && !t.is("]")) break;
                 if (!t.isIdent() || globals.count(t.text) || kWords.count(t.text) || tok(i + 1).is("(") || tok(i - 1).is(".") ||
                     describeBasicType(syntax_.resolveType(t.text)).ok)
                     continue;
