@@ -100,6 +100,20 @@ TEST(Declarations, ConstStaticIsAConstantForArraySizes) {
     EXPECT_EQ(e.findParameter("Radius"), nullptr);
 }
 
+// A size may read a constant array by a constant index (`static float b[w[i]]`), as fxc takes it
+// (vkd3d's array-size-expr): the size is the element, truncated. The shader must compile and read
+// the sized array's last element.
+TEST(Declarations, ArraySizeReadsAConstantArray) {
+    const std::string src = "static const float w[4] = { 0.5, 1.5, 3.7, 2.0 };\n"
+                            "static const int i = 2;\n"
+                            "static const float b[w[i]] = { 1, 2, 0.25 };\n"
+                            "float4 PS() : COLOR0 { return b[2]; }\n"
+                            "technique T { pass P { PixelShader = compile ps_2_0 PS(); } }\n";
+    CompiledEffect e = compileEffectSource(src, "virtual/ArrayIndexSize.fx", noCache());
+    ASSERT_EQ(e.shaders.size(), 1u);
+    EXPECT_NE(e.shaders[0].glsl.find("0.25"), std::string::npos) << e.shaders[0].glsl;
+}
+
 TEST(Declarations, ArraySizesBelowOneAreRefusedAtTheirLine) {
     // glslang takes them and lays the array out with a negative size; fxc says X3059.
     const std::string src = "static const int N = -4;\n"

@@ -13,8 +13,9 @@ namespace {
 
 class Evaluator {
 public:
-    Evaluator(const EffectSyntax& syntax, TokenSpan span, const std::map<std::string, std::vector<double>>& known)
-        : syntax_(syntax), pos_(span.begin), end_(span.end), known_(known) {}
+    Evaluator(const EffectSyntax& syntax, TokenSpan span, const std::map<std::string, std::vector<double>>& known,
+              const std::map<std::string, std::vector<double>>* arrays)
+        : syntax_(syntax), pos_(span.begin), end_(span.end), known_(known), arrays_(arrays) {}
 
     std::optional<std::vector<double>> run() {
         auto v = expression();
@@ -27,6 +28,7 @@ private:
     const EffectSyntax& syntax_;
     size_t pos_, end_;
     const std::map<std::string, std::vector<double>>& known_;
+    const std::map<std::string, std::vector<double>>* arrays_;
     // Every level of ( or { is one level of recursion here: bounded, so that 30 000
     // nested parentheses are a diagnostic and not a stack overflow.
     int depth_ = 0;
@@ -109,6 +111,17 @@ private:
         }
         return all;
     }
+    // `name[index]` of a constant array of scalars; the index truncates, as fxc's does.
+    std::optional<std::vector<double>> element(const std::string& name) {
+        auto array = arrays_->find(name);
+        if (array == arrays_->end()) return std::nullopt;
+        ++pos_;  // '['
+        auto index = expression();
+        if (!index || index->size() != 1 || !accept("]")) return std::nullopt;
+        const double i = (*index)[0];
+        if (!(i >= 0) || i >= double(array->second.size())) return std::nullopt;
+        return std::vector<double>{array->second[static_cast<size_t>(i)]};
+    }
     std::optional<std::vector<double>> primary() {
         const Token* t = cur();
         if (!t) return std::nullopt;
@@ -146,6 +159,7 @@ private:
             }
             auto it = known_.find(t->text);
             if (it != known_.end()) return it->second;
+            if (arrays_ && cur() && cur()->is("[")) return element(t->text);
         }
         return std::nullopt;
     }
@@ -154,8 +168,9 @@ private:
 }  // namespace
 
 std::optional<std::vector<double>> evaluateConstant(const EffectSyntax& syntax, TokenSpan span,
-                                                    const std::map<std::string, std::vector<double>>& known, bool* tooDeep) {
-    Evaluator evaluator(syntax, span, known);
+                                                    const std::map<std::string, std::vector<double>>& known, bool* tooDeep,
+                                                    const std::map<std::string, std::vector<double>>* arrays) {
+    Evaluator evaluator(syntax, span, known, arrays);
     auto value = evaluator.run();
     if (tooDeep) *tooDeep = evaluator.tooDeep();
     return value;

@@ -14,9 +14,11 @@
 namespace fxport::xlate {
 
 // `tooDeep`, when given, is set when the expression nests deeper than limits::kMaxNesting (the
-// result is then nullopt).
+// result is then nullopt). `arrays`, when given, holds constant arrays of scalars by name, read by
+// a constant index: `w[i]` (fxc sizes `float b[w[2]]` by it).
 std::optional<std::vector<double>> evaluateConstant(const EffectSyntax& syntax, TokenSpan span,
                                                     const std::map<std::string, std::vector<double>>& known,
-                                                    bool* tooDeep = nullptr);
+                                                    bool* tooDeep = nullptr,
+                                                    const std::map<std::string, std::vector<double>>* arrays = nullptr);
 
 }  // namespace fxport::xlate

@@ -42,22 +42,44 @@ ConstantSizes::ConstantSizes(const EffectSyntax& syntax) : syntax_(syntax) {
         if (!t[i].is("const")) continue;
         size_t j = i + 1;
         if (t[j].is("static")) ++j;
-        if (j + 3 >= t.size() || !t[j].isIdent() || !t[j + 1].isIdent() || !t[j + 2].is("=")) continue;
+        if (j + 3 >= t.size() || !t[j].isIdent() || !t[j + 1].isIdent()) continue;
         BasicType b = describeBasicType(syntax.resolveType(t[j].text));
         if (!b.ok || b.rows * b.columns != 1) continue;
+        if (t[j + 2].is("[")) {
+            rememberArray(j, b);
+            continue;
+        }
+        if (!t[j + 2].is("=")) continue;
         size_t end = j + 3;
         while (end < t.size() && !t[end].is(";") && t[end].kind != Token::Kind::End) ++end;
-        auto v = evaluateConstant(syntax, {j + 3, end}, known_);
+        auto v = evaluateConstant(syntax, {j + 3, end}, known_, nullptr, &arrays_);
         if (!v || v->size() != 1) continue;
         // The constant holds its type's value: an int truncates what it is given.
         known_[t[j + 1].text] = {b.scalar == "float" || b.scalar == "half" || b.scalar == "double" ? (*v)[0] : std::trunc((*v)[0])};
     }
 }
 
+// `[static] const T name[N] = { ... };` of a scalar type T, at the type token `type`: its N values
+// (in T: an int array truncates), for sizes that index it (`float b[w[2]]`, vkd3d's array-size-expr).
+void ConstantSizes::rememberArray(size_t type, const BasicType& b) {
+    const auto& t = syntax_.tokens;
+    size_t close = type + 3;
+    while (close < t.size() && !t[close].is("]") && !t[close].is(";") && t[close].kind != Token::Kind::End) ++close;
+    if (close + 1 >= t.size() || !t[close].is("]") || !t[close + 1].is("=")) return;
+    auto count = size(type + 2, close);
+    size_t end = close + 2;
+    while (end < t.size() && !t[end].is(";") && t[end].kind != Token::Kind::End) ++end;
+    auto v = evaluateConstant(syntax_, {close + 2, end}, known_, nullptr, &arrays_);
+    if (!count || !v || v->size() != size_t(*count)) return;
+    const bool real = b.scalar == "float" || b.scalar == "half" || b.scalar == "double";
+    for (double& x : *v) x = real ? x : std::trunc(x);
+    arrays_[t[type + 1].text] = std::move(*v);
+}
+
 std::optional<int> ConstantSizes::size(size_t open, size_t close) const {
     if (close == open + 1) return 0;
     if (close == open + 2 && isIntegerLiteral(syntax_.tokens[open + 1])) return std::atoi(syntax_.tokens[open + 1].text.c_str());
-    auto v = evaluateConstant(syntax_, {open + 1, close}, known_);
+    auto v = evaluateConstant(syntax_, {open + 1, close}, known_, nullptr, &arrays_);
     if (!v || v->size() != 1 || !std::isfinite((*v)[0]) || (*v)[0] < 1 || (*v)[0] > 65536.0) return std::nullopt;
     return static_cast<int>((*v)[0]);  // fxc truncates a float size
 }

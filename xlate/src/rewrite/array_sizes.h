@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "fx/fx_syntax.h"
+#include "hlsl/hlsl_types.h"
 
 namespace fxport::xlate {
 
@@ -26,8 +27,10 @@ public:
     std::optional<int> size(size_t open, size_t close) const;
 
 private:
+    void rememberArray(size_t type, const BasicType& b);
     const EffectSyntax& syntax_;
     std::map<std::string, std::vector<double>> known_;
+    std::map<std::string, std::vector<double>> arrays_;  // constant arrays of scalars, for `w[i]` in a size
 };
 
 std::vector<TextEdit> arraySizesAsLiterals(const EffectSyntax& syntax);
