@@ -82,6 +82,7 @@ std::vector<LimitCase> fixtureCases() {
         {"PostfixOnLiteral", kDir + "postfix_on_literal.fx", diag::kHlsl, 5},
         {"PostfixOnUndeclaredName", kDir + "postfix_on_undeclared.fx", diag::kHlsl, 5},
         {"PostfixOnCall", kDir + "postfix_on_call.fx", diag::kHlsl, 5},
+        {"PostfixOnUnknownMember", kDir + "postfix_on_unknown_member.fx", diag::kHlsl, 6},
         {"UndeclaredNameInInitializedArraySize", kDir + "array_size_undeclared.fx", diag::kHlsl, 7},
         // fxport's own: wrong compiled effects that failed their own validation on load.
         {"PackoffsetOverlap", kDir + "packoffset_overlap.fx", diag::kHlsl, 7},

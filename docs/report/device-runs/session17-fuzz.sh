@@ -1,9 +1,9 @@
 #!/bin/bash
 # Session 17: issue 26's million executions of the loose-shader harness in ONE run, on the two-GPU machine's
 # 32 cores (only the CPUs are used). Bundle: .devbundle-s17/fz.tar.xz = bin/fuzz_shader_files (scripts/fuzz's
-# build-fuzz/ of main 7f2e1a9: clang 14, -fsanitize=fuzzer,address,undefined, glslang/SPIRV-Cross linked
+# build-fuzz/ of main (7f2e1a9 for the first run, 13c5552 for the second): clang 14, -fsanitize=fuzzer,address,undefined, glslang/SPIRV-Cross linked
 # statically; strip -g) and corpus/shader_files (session 16's grown corpus: 3 265 inputs grown from tests/fuzz/make-corpus
-# seeds). fuzz_cache_entry already ran 1.85 M executions in one run (session16-fuzz.sh).
+# seeds; the second run adds the first run's two crash inputs). fuzz_cache_entry already ran 1.85 M executions in one run (session16-fuzz.sh).
 # Run (device tool, kind nvidia-h100-x2, carry .devbundle-s17): bash docs/report/device-runs/session17-fuzz.sh
 set -u
 T=${T:-450}

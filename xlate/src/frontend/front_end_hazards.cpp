@@ -315,6 +315,13 @@ private:
                     report(diag::kHlsl, "undeclared identifier '" + operand.text + "'", i - 1);
                     return;
                 }
+                // `input.Nope--`: no struct has that member and it is no swizzle; glslang's node for
+                // the member is null and addBinaryMath dereferences it (fuzzer, device run of session 17).
+                // fxc: X3018.
+                if (operand.isIdent() && tok(i - 2).is(".") && !isMemberOrSwizzle(operand.text)) {
+                    report(diag::kHlsl, "invalid subscript '" + operand.text + "': no struct has such a member and it is no swizzle", i - 1);
+                    return;
+                }
                 if (!operand.is(")")) continue;
                 auto open = openParen(f.body.begin, i - 1);
                 if (!open) continue;
@@ -331,6 +338,16 @@ private:
                 }
             }
         }
+    }
+
+    bool isMemberOrSwizzle(const std::string& name) const {
+        for (const auto& st : syntax_.structs)
+            for (const auto& m : st.members)
+                if (m.name == name) return true;
+        auto onlyOf = [&](const char* set) { return name.size() <= 4 && name.find_first_not_of(set) == std::string::npos; };
+        if (onlyOf("xyzw") || onlyOf("rgba")) return true;
+        // Matrix elements: _m00.._m33, _11.._44, repeated (`m._m00_m11`).
+        return name.size() >= 3 && name[0] == '_' && name.find_first_not_of("_m0123456789") == std::string::npos;
     }
 
     // `matrix<float, 8, 4>` or `vector<half, 0>` (fuzzer, device run 2026-11-25): glslang makes a type it
