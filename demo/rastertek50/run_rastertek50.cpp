@@ -2,17 +2,17 @@
 // The seed's SystemClass (window, message loop) is this function: it creates the ApplicationClass
 // and calls Frame() once per frame.
 //
-//   fxdemo rastertek50 [--size WxH] [--frames N] [--out DIR] [--gpu] [--window] [--hlsl DIR] [--check]
+//   fxdemo rastertek50 [--size WxH] [--frames N] [--out DIR] [--gpu] [--hlsl DIR] [--check]
 //                      [--explain]
 //
 // Headless (OSMesa; --gpu: EGL) it renders N frames (default 25: the cube turns pi/100 per frame,
 // so frame 25 shows it at 45 degrees; the rotation depends only on the frame number), prints the
 // median GPU time of each pass, and writes DIR/final.png (the back buffer) and DIR/debug.png (the
 // two G-buffer targets side by side: left the colour target, right the normal target shown as
-// n * 0.5 + 0.5, with the cleared background, normal (0,0,0), left black). --window: a GLFW window,
-// until it is closed, Escape is pressed or N frames have run; images only with --out. --check: the
-// last frame against a CPU reference (reference_check.h); exit code 1 when it is off. --explain: the
-// effects (compile time, xlate's cache off), render targets (bytes) and passes built; the seed's
+// n * 0.5 + 0.5, with the cleared background, normal (0,0,0), left black). The port draws through
+// fxport's D3D10 front end, whose swap chain is headless: --window is refused (D3DClass). --check:
+// the last frame against a CPU reference (reference_check.h); exit code 1 when it is off. --explain:
+// the effects (load and compile time), render targets (bytes) and passes built; the seed's
 // pipeline has no optional part, so this run is its all-features configuration and nothing is left
 // out.
 #include <cmath>
@@ -206,9 +206,10 @@ int runRastertek50(int argc, char** argv) {
 }  // namespace Rastertek50
 
 FXDEMO_PROGRAM(rastertek50,
-               "fxdemo rastertek50 [--size WxH] [--frames N] [--out DIR] [--gpu] [--window] [--hlsl DIR] [--check]\n"
+               "fxdemo rastertek50 [--size WxH] [--frames N] [--out DIR] [--gpu] [--hlsl DIR] [--check]\n"
                "                          [--explain]\n"
-               "  Rastertek DirectX 10 tutorial 50, deferred shading (seed 004): writes DIR/final.png and DIR/debug.png.\n"
+               "  Rastertek DirectX 10 tutorial 50, deferred shading (seed 004), on fxport's D3D10 front end (headless:\n"
+               "  no --window): writes DIR/final.png and DIR/debug.png.\n"
                "  --size WxH     back buffer size (800x600)      --frames N   frames to run headless\n"
                "  --out DIR      where the images go (fxdemo-out/rastertek50)\n"
                "  --hlsl DIR     the effects' folder (the source tree's hlsl/)\n"
