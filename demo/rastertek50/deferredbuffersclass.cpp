@@ -47,7 +47,6 @@ bool DeferredBuffersClass::Initialize(ID3D10Device* device, int textureWidth, in
 	(void)screenDepth;  // unused, as in the seed
 	(void)screenNear;
 
-
 	// Store the width and height of the render texture.
 	m_textureWidth = textureWidth;
 	m_textureHeight = textureHeight;
@@ -68,7 +67,7 @@ bool DeferredBuffersClass::Initialize(ID3D10Device* device, int textureWidth, in
 	textureDesc.CPUAccessFlags = 0;
 	textureDesc.MiscFlags = 0;
 
-
+	// We now create an array of render target textures for the deferred shader to write to.
 	// Create the render target textures.
 	for(i=0; i<BUFFER_COUNT; i++)
 	{
@@ -84,7 +83,7 @@ bool DeferredBuffersClass::Initialize(ID3D10Device* device, int textureWidth, in
 	renderTargetViewDesc.ViewDimension = D3D10_RTV_DIMENSION_TEXTURE2D;
 	renderTargetViewDesc.Texture2D.MipSlice = 0;
 
-
+	// We also create an array of render target views to access the render target textures through.
 	// Create the render target views.
 	for(i=0; i<BUFFER_COUNT; i++)
 	{
@@ -101,7 +100,8 @@ bool DeferredBuffersClass::Initialize(ID3D10Device* device, int textureWidth, in
 	shaderResourceViewDesc.Texture2D.MostDetailedMip = 0;
 	shaderResourceViewDesc.Texture2D.MipLevels = 1;
 
-
+	// We also create an array of shader resource views for the shaders to access the render target
+	// textures.
 	// Create the shader resource views.
 	for(i=0; i<BUFFER_COUNT; i++)
 	{
@@ -166,7 +166,6 @@ void DeferredBuffersClass::Shutdown()
 {
 	int i;
 
-
 	if(m_depthStencilView)
 	{
 		m_depthStencilView->Release();
@@ -204,6 +203,8 @@ void DeferredBuffersClass::Shutdown()
 }
 
 
+// This function now sets all of the render targets in the array as the location for the shaders to
+// write to (instead of writing to the back buffer or a single render texture target).
 void DeferredBuffersClass::SetRenderTargets(ID3D10Device* device)
 {
 	// Bind the render target view array and depth stencil buffer to the output render pipeline.
@@ -216,11 +217,11 @@ void DeferredBuffersClass::SetRenderTargets(ID3D10Device* device)
 }
 
 
+// The following function clears all of the render target buffers in the class object.
 void DeferredBuffersClass::ClearRenderTargets(ID3D10Device* device, float red, float green, float blue, float alpha)
 {
 	float color[4];
 	int i;
-
 
 	// Setup the color to clear the buffer to.
 	color[0] = red;
@@ -241,6 +242,8 @@ void DeferredBuffersClass::ClearRenderTargets(ID3D10Device* device, float red, f
 }
 
 
+// GetShaderResourceView provides calling functions a pointer to a specific shader resource out of
+// the array of render textures.
 ID3D10ShaderResourceView* DeferredBuffersClass::GetShaderResourceView(int view)
 {
 	return m_shaderResourceViewArray[view];

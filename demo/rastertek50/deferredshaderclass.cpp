@@ -1,4 +1,5 @@
 
+// Deferredshaderclass.cpp
 ////////////////////////////////////////////////////////////////////////////////
 // Filename: deferredshaderclass.cpp
 ////////////////////////////////////////////////////////////////////////////////
@@ -33,7 +34,6 @@ DeferredShaderClass::~DeferredShaderClass()
 bool DeferredShaderClass::Initialize(ID3D10Device* device, const std::string& hlslDir)
 {
 	bool result;
-
 
 	// Initialize the shader that will be used.
 	result = InitializeShader(device, hlslDir + "/rastertek/deferred.fx");
@@ -75,7 +75,6 @@ bool DeferredShaderClass::InitializeShader(ID3D10Device* device, const std::stri
 	D3D10_INPUT_ELEMENT_DESC polygonLayout[3];
 	unsigned int numElements;
 	D3D10_PASS_DESC passDesc;
-
 
 	// Initialize the error message.
 	errorMessage = 0;
@@ -193,7 +192,6 @@ void DeferredShaderClass::OutputShaderErrorMessage(ID3D10Blob* errorMessage, con
 	char* compileErrors;
 	unsigned long bufferSize, i;
 	std::ofstream fout;
-
 
 	// Get a pointer to the error message text buffer.
 	compileErrors = (char*)(errorMessage->GetBufferPointer());

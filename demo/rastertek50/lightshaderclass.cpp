@@ -1,4 +1,5 @@
 
+// Lightshaderclass.cpp
 ////////////////////////////////////////////////////////////////////////////////
 // Filename: lightshaderclass.cpp
 ////////////////////////////////////////////////////////////////////////////////
@@ -37,7 +38,6 @@ LightShaderClass::~LightShaderClass()
 bool LightShaderClass::Initialize(ID3D10Device* device, const std::string& hlslDir)
 {
 	bool result;
-
 
 	// Initialize the shader that will be used to render.
 	result = InitializeShader(device, hlslDir + "/rastertek/light.fx");
@@ -80,7 +80,6 @@ bool LightShaderClass::InitializeShader(ID3D10Device* device, const std::string&
 	unsigned int numElements;
 	D3D10_PASS_DESC passDesc;
 
-
 	// Initialize the error message.
 	errorMessage = 0;
 
@@ -111,7 +110,8 @@ bool LightShaderClass::InitializeShader(ID3D10Device* device, const std::string&
 		return false;
 	}
 
-
+	// The polygon layout now only requires position and texture coordinates since we are doing 2D
+	// post processing.
 	// Now setup the layout of the data that goes into the shader.
 	polygonLayout[0].SemanticName = "POSITION";
 	polygonLayout[0].SemanticIndex = 0;
@@ -147,7 +147,7 @@ bool LightShaderClass::InitializeShader(ID3D10Device* device, const std::string&
 	m_viewMatrixPtr = m_effect->GetVariableByName("viewMatrix")->AsMatrix();
 	m_projectionMatrixPtr = m_effect->GetVariableByName("projectionMatrix")->AsMatrix();
 
-
+	// The two new texture pointers are setup here.
 	// Get pointers to the texture resources inside the shader.
 	m_colorTexturePtr = m_effect->GetVariableByName("colorTexture")->AsShaderResource();
 	m_normalTexturePtr = m_effect->GetVariableByName("normalTexture")->AsShaderResource();
@@ -200,7 +200,6 @@ void LightShaderClass::OutputShaderErrorMessage(ID3D10Blob* errorMessage, const 
 	unsigned long bufferSize, i;
 	std::ofstream fout;
 
-
 	// Get a pointer to the error message text buffer.
 	compileErrors = (char*)(errorMessage->GetBufferPointer());
 
@@ -246,7 +245,7 @@ void LightShaderClass::SetShaderParameters(D3DXMATRIX worldMatrix, D3DXMATRIX vi
 	// Set the projection matrix variable inside the shader.
 	m_projectionMatrixPtr->SetMatrix((float*)&projectionMatrix);
 
-
+	// The two deferred textures are set in the shader here.
 	// Bind the textures.
 	m_colorTexturePtr->SetResource(colorTexture);
 	m_normalTexturePtr->SetResource(normalTexture);
