@@ -48,13 +48,16 @@ bool D3DClass::Initialize(int screenWidth, int screenHeight, bool vsync, const s
 	// Store the vsync setting.
 	m_vsync_enabled = vsync;
 
-	// fxport: the device core's platform, as FXPORT_PLATFORM names it (osmesa; egl for --gpu). The
-	// D3D10 front end's swap chain is headless, so there is no window to open.
+	// fxport: the device core's platform, as FXPORT_PLATFORM names it (osmesa; egl for --gpu), set
+	// while the device is made and then put back. The D3D10 front end's swap chain is headless, so
+	// there is no window to open.
 	if(platform != "osmesa" && platform != "egl")
 	{
 		std::fprintf(stderr, "fxdemo rastertek50: platform '%s': the D3D10 port renders headless only (osmesa, egl)\n", platform.c_str());
 		return false;
 	}
+	const char* previousPlatform = std::getenv("FXPORT_PLATFORM");
+	const std::string previous = previousPlatform ? previousPlatform : "";
 	setenv("FXPORT_PLATFORM", platform.c_str(), 1);
 
 	// Initialize the swap chain description (fxport: descriptions start at D3D's defaults; every
@@ -101,6 +104,8 @@ bool D3DClass::Initialize(int screenWidth, int screenHeight, bool vsync, const s
 	// Create the swap chain and the Direct3D device.
 	result = D3D10CreateDeviceAndSwapChain(NULL, D3D10_DRIVER_TYPE_HARDWARE, NULL, 0, D3D10_SDK_VERSION,
 					       &swapChainDesc, &m_swapChain, &m_device);
+	if(previousPlatform) setenv("FXPORT_PLATFORM", previous.c_str(), 1);
+	else unsetenv("FXPORT_PLATFORM");
 	if(FAILED(result))
 	{
 		std::fprintf(stderr, "fxdemo rastertek50: %s\n", GetLastErrorMessage());
