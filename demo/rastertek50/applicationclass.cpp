@@ -29,6 +29,21 @@ ApplicationClass::~ApplicationClass()
 }
 
 
+void ApplicationClass::SetDefines(const std::vector<std::pair<std::string, std::string>>& defines)
+{
+	m_defineText = defines;
+	m_defines.clear();
+	for(const auto& define : m_defineText)
+	{
+		D3D10_SHADER_MACRO macro;
+		macro.Name = define.first.c_str();
+		macro.Definition = define.second.c_str();
+		m_defines.push_back(macro);
+	}
+	if(!m_defines.empty()) m_defines.push_back(D3D10_SHADER_MACRO());  // the terminator
+}
+
+
 bool ApplicationClass::Initialize(const std::string& platform, const std::string& hlslDir, int screenWidth, int screenHeight)
 {
 	bool result;
@@ -106,7 +121,7 @@ bool ApplicationClass::Initialize(const std::string& platform, const std::string
 
 	// Create the deferred shader object.
 	m_DeferredShader = std::make_unique<DeferredShaderClass>();
-	m_DeferredShader->SetEffectOptions(m_effectOptions);  // fxport
+	m_DeferredShader->SetDefines(m_defines.empty() ? NULL : m_defines.data());  // fxport
 
 	// Initialize the deferred shader object.
 	result = m_DeferredShader->Initialize(m_D3D->GetDevice(), hlslDir);
@@ -118,7 +133,7 @@ bool ApplicationClass::Initialize(const std::string& platform, const std::string
 
 	// Create the light shader object.
 	m_LightShader = std::make_unique<LightShaderClass>();
-	m_LightShader->SetEffectOptions(m_effectOptions);  // fxport
+	m_LightShader->SetDefines(m_defines.empty() ? NULL : m_defines.data());  // fxport
 
 	// Initialize the light shader object.
 	result = m_LightShader->Initialize(m_D3D->GetDevice(), hlslDir);

@@ -10,6 +10,8 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "fxport/graphics.h"
 
@@ -60,12 +62,12 @@ public:
 	// fxport additions: the passes are timed when a GpuTimer is attached; access for fxdemo.
 	void SetGpuTimer(fxport::GpuTimer* timer) { m_gpuTimer = timer; }
 	// fxport addition (a knob of `fxdemo report`): the G-buffer targets' format, set before
-	// Initialize. The seed's is R32G32B32A32_FLOAT (Vector4); HalfVector4 and Color (8-bit unorm,
-	// which clamps the signed normals the seed writes) are the cheaper ones.
-	void SetGBufferFormat(fxport::SurfaceFormat format) { m_gbufferFormat = format; }
-	// fxport addition (issue 6, fxdemo --explain): the options both effects are compiled with, set
+	// Initialize. The seed's is R32G32B32A32_FLOAT; R16G16B16A16_FLOAT and R8G8B8A8_UNORM (which
+	// clamps the signed normals the seed writes) are the cheaper ones.
+	void SetGBufferFormat(DXGI_FORMAT format) { m_gbufferFormat = format; }
+	// fxport addition (fxdemo --define NAME=VALUE): macros both effects are compiled with, set
 	// before Initialize.
-	void SetEffectOptions(const fxport::EffectOptions& options) { m_effectOptions = options; }
+	void SetDefines(const std::vector<std::pair<std::string, std::string>>& defines);
 	D3DClass* GetD3D() { return m_D3D.get(); }
 	DeferredShaderClass* GetDeferredShader() { return m_DeferredShader.get(); }
 	LightShaderClass* GetLightShader() { return m_LightShader.get(); }
@@ -108,8 +110,9 @@ private:
 	float m_rotation;
 	std::optional<float> m_fixedRotation;  // fxport
 	fxport::GpuTimer* m_gpuTimer;
-	fxport::SurfaceFormat m_gbufferFormat = fxport::SurfaceFormat::Vector4;
-	fxport::EffectOptions m_effectOptions;
+	DXGI_FORMAT m_gbufferFormat = DXGI_FORMAT_R32G32B32A32_FLOAT;
+	std::vector<std::pair<std::string, std::string>> m_defineText;  // fxport: SetDefines
+	std::vector<D3D10_SHADER_MACRO> m_defines;                      // over m_defineText, NULL-terminated
 };
 
 }  // namespace Rastertek50

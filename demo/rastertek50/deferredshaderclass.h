@@ -10,13 +10,14 @@
 //////////////
 // INCLUDES //
 //////////////
-#include <memory>
 #include <string>
 
-#include "fxport/graphics.h"
+#include "fxport/d3d10.h"
 #include "rastertek50/d3dx_math.h"
 
 namespace Rastertek50 {
+
+using namespace fxport::d3d10;
 
 ////////////////////////////////////////////////////////////////////////////////
 // Class name: DeferredShaderClass
@@ -28,34 +29,35 @@ public:
 	DeferredShaderClass(const DeferredShaderClass&) = delete;
 	~DeferredShaderClass();
 
-	// fxport: `hlslDir` is the folder holding rastertek/deferred.fx (the seed's "../Engine/").
-	bool Initialize(fxport::GraphicsDevice*, const std::string& hlslDir);
-	// fxport additions (issue 6, fxdemo --explain): the options the effect is compiled with (set
-	// before Initialize; e.g. useCache = false so that compile times compare) and the effect itself.
-	void SetEffectOptions(const fxport::EffectOptions& options) { m_effectOptions = options; }
-	fxport::Effect* GetEffect() { return m_effect.get(); }
+	// fxport: `hlslDir` replaces the HWND (the effect is hlslDir/rastertek/deferred.fx).
+	bool Initialize(ID3D10Device*, const std::string& hlslDir);
 	void Shutdown();
-	void Render(fxport::GraphicsDevice*, int, D3DXMATRIX, D3DXMATRIX, D3DXMATRIX, fxport::Texture*);
+	void Render(ID3D10Device*, int, D3DXMATRIX, D3DXMATRIX, D3DXMATRIX, ID3D10ShaderResourceView*);
+
+	// fxport addition (fxdemo --define): the macros the effect is compiled with (the seed passes
+	// NULL), a NULL-terminated array that outlives Initialize; set before Initialize.
+	void SetDefines(const D3D10_SHADER_MACRO* defines) { m_defines = defines; }
+	// fxport addition (fxdemo --explain): the effect.
+	ID3D10Effect* GetEffect() { return m_effect; }
 
 private:
-	bool InitializeShader(fxport::GraphicsDevice*, const std::string&);
+	bool InitializeShader(ID3D10Device*, const std::string&);
 	void ShutdownShader();
-	void OutputShaderErrorMessage(const char*, const std::string&);
+	void OutputShaderErrorMessage(ID3D10Blob*, const std::string&);
 
-	void SetShaderParameters(D3DXMATRIX, D3DXMATRIX, D3DXMATRIX, fxport::Texture*);
-	void RenderShader(fxport::GraphicsDevice*, int);
+	void SetShaderParameters(D3DXMATRIX, D3DXMATRIX, D3DXMATRIX, ID3D10ShaderResourceView*);
+	void RenderShader(ID3D10Device*, int);
 
 private:
-	std::unique_ptr<fxport::Effect> m_effect;
-	fxport::EffectOptions m_effectOptions;
-	fxport::EffectTechnique* m_technique;
-	// fxport: the input layout is the vertex buffer's VertexDeclaration (ModelClass::VertexDeclaration),
-	// matched to the vertex shader's semantics at each draw.
+	ID3D10Effect* m_effect;
+	const D3D10_SHADER_MACRO* m_defines;  // fxport
+	ID3D10EffectTechnique* m_technique;
+	ID3D10InputLayout* m_layout;
 
-	fxport::EffectParameter* m_worldMatrixPtr;
-	fxport::EffectParameter* m_viewMatrixPtr;
-	fxport::EffectParameter* m_projectionMatrixPtr;
-	fxport::EffectParameter* m_texturePtr;
+	ID3D10EffectMatrixVariable* m_worldMatrixPtr;
+	ID3D10EffectMatrixVariable* m_viewMatrixPtr;
+	ID3D10EffectMatrixVariable* m_projectionMatrixPtr;
+	ID3D10EffectShaderResourceVariable* m_texturePtr;
 };
 
 }  // namespace Rastertek50

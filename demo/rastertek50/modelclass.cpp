@@ -3,26 +3,17 @@
 ////////////////////////////////////////////////////////////////////////////////
 #include "rastertek50/modelclass.h"
 
-#include <cstddef>
+#include <vector>
 
 namespace Rastertek50 {
 
-const fxport::VertexDeclaration ModelClass::VertexDeclaration(
-	int(sizeof(VertexType)),
-	{
-		fxport::VertexElement(int(offsetof(VertexType, position)), fxport::VertexElementFormat::Vector3,
-				      fxport::VertexElementUsage::Position, 0),
-		fxport::VertexElement(int(offsetof(VertexType, texture)), fxport::VertexElementFormat::Vector2,
-				      fxport::VertexElementUsage::TextureCoordinate, 0),
-		fxport::VertexElement(int(offsetof(VertexType, normal)), fxport::VertexElementFormat::Vector3,
-				      fxport::VertexElementUsage::Normal, 0),
-	});
-
-
 ModelClass::ModelClass()
 {
+	m_vertexBuffer = 0;
+	m_indexBuffer = 0;
 	m_vertexCount = 0;
 	m_indexCount = 0;
+	m_textureSize = 0;
 }
 
 
@@ -31,7 +22,7 @@ ModelClass::~ModelClass()
 }
 
 
-bool ModelClass::Initialize(fxport::GraphicsDevice* device, int textureSize)
+bool ModelClass::Initialize(ID3D10Device* device, int textureSize)
 {
 	bool result;
 
@@ -76,7 +67,7 @@ void ModelClass::Shutdown()
 }
 
 
-void ModelClass::Render(fxport::GraphicsDevice* device)
+void ModelClass::Render(ID3D10Device* device)
 {
 	// Put the vertex and index buffers on the graphics pipeline to prepare them for drawing.
 	RenderBuffers(device);
@@ -97,15 +88,19 @@ int ModelClass::GetVertexCount()
 }
 
 
-fxport::Texture2D* ModelClass::GetTexture()
+ID3D10ShaderResourceView* ModelClass::GetTexture()
 {
 	return m_Texture->GetTexture();
 }
 
 
-bool ModelClass::InitializeBuffers(fxport::GraphicsDevice* device)
+bool ModelClass::InitializeBuffers(ID3D10Device* device)
 {
 	std::vector<VertexType> vertices(static_cast<std::size_t>(m_vertexCount));
+	std::vector<unsigned int> indices(static_cast<std::size_t>(m_indexCount));
+	D3D10_BUFFER_DESC vertexBufferDesc, indexBufferDesc;
+	D3D10_SUBRESOURCE_DATA vertexData, indexData;
+	HRESULT result;
 	int i;
 
 
@@ -117,15 +112,46 @@ bool ModelClass::InitializeBuffers(fxport::GraphicsDevice* device)
 		vertices[i].normal = D3DXVECTOR3(m_model[i].nx, m_model[i].ny, m_model[i].nz);
 	}
 
+	// Load the index array with data (fxport: the generated cube's, see LoadModel).
+	for(i=0; i<m_indexCount; i++)
+	{
+		indices[i] = m_indices[i];
+	}
+
+	// Set up the description of the vertex buffer.
+	vertexBufferDesc.Usage = D3D10_USAGE_DEFAULT;
+	vertexBufferDesc.ByteWidth = sizeof(VertexType) * m_vertexCount;
+	vertexBufferDesc.BindFlags = D3D10_BIND_VERTEX_BUFFER;
+	vertexBufferDesc.CPUAccessFlags = 0;
+	vertexBufferDesc.MiscFlags = 0;
+
+	// Give the subresource structure a pointer to the vertex data.
+	vertexData.pSysMem = vertices.data();
+
 	// Now finally create the vertex buffer.
-	m_vertexBuffer = std::make_unique<fxport::VertexBuffer>(*device, VertexDeclaration, m_vertexCount,
-								 fxport::BufferUsage::WriteOnly);
-	m_vertexBuffer->SetData(vertices);
+	result = device->CreateBuffer(&vertexBufferDesc, &vertexData, &m_vertexBuffer);
+	if(FAILED(result))
+	{
+		return false;
+	}
+
+	// Set up the description of the index buffer (fxport: 32-bit `unsigned int` indices, the
+	// tutorial's `unsigned long` on Windows, DXGI_FORMAT_R32_UINT).
+	indexBufferDesc.Usage = D3D10_USAGE_DEFAULT;
+	indexBufferDesc.ByteWidth = sizeof(unsigned int) * m_indexCount;
+	indexBufferDesc.BindFlags = D3D10_BIND_INDEX_BUFFER;
+	indexBufferDesc.CPUAccessFlags = 0;
+	indexBufferDesc.MiscFlags = 0;
+
+	// Give the subresource structure a pointer to the index data.
+	indexData.pSysMem = indices.data();
 
 	// Create the index buffer.
-	m_indexBuffer = std::make_unique<fxport::IndexBuffer>(*device, fxport::IndexElementSize::SixteenBits, m_indexCount,
-							       fxport::BufferUsage::WriteOnly);
-	m_indexBuffer->SetData(m_indices);
+	result = device->CreateBuffer(&indexBufferDesc, &indexData, &m_indexBuffer);
+	if(FAILED(result))
+	{
+		return false;
+	}
 
 	return true;
 }
@@ -134,30 +160,47 @@ bool ModelClass::InitializeBuffers(fxport::GraphicsDevice* device)
 void ModelClass::ShutdownBuffers()
 {
 	// Release the index buffer.
-	m_indexBuffer.reset();
+	if(m_indexBuffer)
+	{
+		m_indexBuffer->Release();
+		m_indexBuffer = 0;
+	}
 
 	// Release the vertex buffer.
-	m_vertexBuffer.reset();
+	if(m_vertexBuffer)
+	{
+		m_vertexBuffer->Release();
+		m_vertexBuffer = 0;
+	}
 
 	return;
 }
 
 
-void ModelClass::RenderBuffers(fxport::GraphicsDevice* device)
+void ModelClass::RenderBuffers(ID3D10Device* device)
 {
+	unsigned int stride;
+	unsigned int offset;
+
+
+	// Set vertex buffer stride and offset.
+	stride = sizeof(VertexType); 
+	offset = 0;
+    
 	// Set the vertex buffer to active in the input assembler so it can be rendered.
-	device->SetVertexBuffer(m_vertexBuffer.get());
+	device->IASetVertexBuffers(0, 1, &m_vertexBuffer, &stride, &offset);
 
 	// Set the index buffer to active in the input assembler so it can be rendered.
-	device->Indices = m_indexBuffer.get();
+	device->IASetIndexBuffer(m_indexBuffer, DXGI_FORMAT_R32_UINT, 0);
 
-	// The primitive type (triangle list) is given to the draw call on fxport.
+	// Set the type of primitive that should be rendered from this vertex buffer, in this case triangles.
+	device->IASetPrimitiveTopology(D3D10_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
 
 	return;
 }
 
 
-bool ModelClass::LoadTexture(fxport::GraphicsDevice* device, int textureSize)
+bool ModelClass::LoadTexture(ID3D10Device* device, int textureSize)
 {
 	bool result;
 
@@ -166,6 +209,7 @@ bool ModelClass::LoadTexture(fxport::GraphicsDevice* device, int textureSize)
 	m_Texture = std::make_unique<TextureClass>();
 
 	// Initialize the texture object.
+	m_textureSize = textureSize;  // fxport
 	result = m_Texture->Initialize(device, textureSize);
 	if(!result)
 	{

@@ -3,23 +3,14 @@
 ////////////////////////////////////////////////////////////////////////////////
 #include "rastertek50/orthowindowclass.h"
 
-#include <cstddef>
 #include <vector>
 
 namespace Rastertek50 {
 
-const fxport::VertexDeclaration OrthoWindowClass::VertexDeclaration(
-	int(sizeof(VertexType)),
-	{
-		fxport::VertexElement(int(offsetof(VertexType, position)), fxport::VertexElementFormat::Vector3,
-				      fxport::VertexElementUsage::Position, 0),
-		fxport::VertexElement(int(offsetof(VertexType, texture)), fxport::VertexElementFormat::Vector2,
-				      fxport::VertexElementUsage::TextureCoordinate, 0),
-	});
-
-
 OrthoWindowClass::OrthoWindowClass()
 {
+	m_vertexBuffer = 0;
+	m_indexBuffer = 0;
 	m_vertexCount = 0;
 	m_indexCount = 0;
 }
@@ -30,7 +21,7 @@ OrthoWindowClass::~OrthoWindowClass()
 }
 
 
-bool OrthoWindowClass::Initialize(fxport::GraphicsDevice* device, int windowWidth, int windowHeight)
+bool OrthoWindowClass::Initialize(ID3D10Device* device, int windowWidth, int windowHeight)
 {
 	bool result;
 
@@ -55,7 +46,7 @@ void OrthoWindowClass::Shutdown()
 }
 
 
-void OrthoWindowClass::Render(fxport::GraphicsDevice* device)
+void OrthoWindowClass::Render(ID3D10Device* device)
 {
 	// Put the vertex and index buffers on the graphics pipeline to prepare them for drawing.
 	RenderBuffers(device);
@@ -76,9 +67,12 @@ int OrthoWindowClass::GetVertexCount()
 }
 
 
-bool OrthoWindowClass::InitializeBuffers(fxport::GraphicsDevice* device, int windowWidth, int windowHeight)
+bool OrthoWindowClass::InitializeBuffers(ID3D10Device* device, int windowWidth, int windowHeight)
 {
 	float left, right, top, bottom;
+	D3D10_BUFFER_DESC vertexBufferDesc, indexBufferDesc;
+	D3D10_SUBRESOURCE_DATA vertexData, indexData;
+	HRESULT result;
 	int i;
 
 
@@ -104,7 +98,7 @@ bool OrthoWindowClass::InitializeBuffers(fxport::GraphicsDevice* device, int win
 	std::vector<VertexType> vertices(static_cast<std::size_t>(m_vertexCount));
 
 	// Create the index array.
-	std::vector<unsigned short> indices(static_cast<std::size_t>(m_indexCount));
+	std::vector<unsigned int> indices(static_cast<std::size_t>(m_indexCount));
 
 	// Load the vertex array with data.
 	// First triangle.
@@ -130,18 +124,43 @@ bool OrthoWindowClass::InitializeBuffers(fxport::GraphicsDevice* device, int win
 	// Load the index array with data.
 	for(i=0; i<m_indexCount; i++)
 	{
-		indices[i] = (unsigned short)i;
+		indices[i] = i;
 	}
 
-	// Now create the vertex buffer.
-	m_vertexBuffer = std::make_unique<fxport::VertexBuffer>(*device, VertexDeclaration, m_vertexCount,
-								 fxport::BufferUsage::WriteOnly);
-	m_vertexBuffer->SetData(vertices);
+	// Set up the description of the vertex buffer.
+	vertexBufferDesc.Usage = D3D10_USAGE_DEFAULT;
+	vertexBufferDesc.ByteWidth = sizeof(VertexType) * m_vertexCount;
+	vertexBufferDesc.BindFlags = D3D10_BIND_VERTEX_BUFFER;
+	vertexBufferDesc.CPUAccessFlags = 0;
+	vertexBufferDesc.MiscFlags = 0;
+
+	// Give the subresource structure a pointer to the vertex data.
+	vertexData.pSysMem = vertices.data();
+
+	// Now finally create the vertex buffer.
+	result = device->CreateBuffer(&vertexBufferDesc, &vertexData, &m_vertexBuffer);
+	if(FAILED(result))
+	{
+		return false;
+	}
+
+	// Set up the description of the index buffer (fxport: 32-bit `unsigned int` indices, the
+	// tutorial's `unsigned long` on Windows, DXGI_FORMAT_R32_UINT).
+	indexBufferDesc.Usage = D3D10_USAGE_DEFAULT;
+	indexBufferDesc.ByteWidth = sizeof(unsigned int) * m_indexCount;
+	indexBufferDesc.BindFlags = D3D10_BIND_INDEX_BUFFER;
+	indexBufferDesc.CPUAccessFlags = 0;
+	indexBufferDesc.MiscFlags = 0;
+
+	// Give the subresource structure a pointer to the index data.
+	indexData.pSysMem = indices.data();
 
 	// Create the index buffer.
-	m_indexBuffer = std::make_unique<fxport::IndexBuffer>(*device, fxport::IndexElementSize::SixteenBits, m_indexCount,
-							       fxport::BufferUsage::WriteOnly);
-	m_indexBuffer->SetData(indices);
+	result = device->CreateBuffer(&indexBufferDesc, &indexData, &m_indexBuffer);
+	if(FAILED(result))
+	{
+		return false;
+	}
 
 	return true;
 }
@@ -150,24 +169,41 @@ bool OrthoWindowClass::InitializeBuffers(fxport::GraphicsDevice* device, int win
 void OrthoWindowClass::ShutdownBuffers()
 {
 	// Release the index buffer.
-	m_indexBuffer.reset();
+	if(m_indexBuffer)
+	{
+		m_indexBuffer->Release();
+		m_indexBuffer = 0;
+	}
 
 	// Release the vertex buffer.
-	m_vertexBuffer.reset();
+	if(m_vertexBuffer)
+	{
+		m_vertexBuffer->Release();
+		m_vertexBuffer = 0;
+	}
 
 	return;
 }
 
 
-void OrthoWindowClass::RenderBuffers(fxport::GraphicsDevice* device)
+void OrthoWindowClass::RenderBuffers(ID3D10Device* device)
 {
+	unsigned int stride;
+	unsigned int offset;
+
+
+	// Set vertex buffer stride and offset.
+	stride = sizeof(VertexType); 
+	offset = 0;
+    
 	// Set the vertex buffer to active in the input assembler so it can be rendered.
-	device->SetVertexBuffer(m_vertexBuffer.get());
+	device->IASetVertexBuffers(0, 1, &m_vertexBuffer, &stride, &offset);
 
 	// Set the index buffer to active in the input assembler so it can be rendered.
-	device->Indices = m_indexBuffer.get();
+	device->IASetIndexBuffer(m_indexBuffer, DXGI_FORMAT_R32_UINT, 0);
 
-	// The primitive type (triangle list) is given to the draw call on fxport.
+	// Set the type of primitive that should be rendered from this vertex buffer, in this case triangles.
+	device->IASetPrimitiveTopology(D3D10_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
 
 	return;
 }

@@ -9,12 +9,12 @@
 //////////////
 // INCLUDES //
 //////////////
-#include <memory>
-
-#include "fxport/graphics.h"
+#include "fxport/d3d10.h"
 #include "rastertek50/d3dx_math.h"
 
 namespace Rastertek50 {
+
+using namespace fxport::d3d10;
 
 ////////////////////////////////////////////////////////////////////////////////
 // Class name: OrthoWindowClass
@@ -33,24 +33,21 @@ public:
 	OrthoWindowClass(const OrthoWindowClass&) = delete;
 	~OrthoWindowClass();
 
-	bool Initialize(fxport::GraphicsDevice*, int, int);
+	bool Initialize(ID3D10Device*, int, int);
 	void Shutdown();
-	void Render(fxport::GraphicsDevice*);
+	void Render(ID3D10Device*);
 
 	int GetIndexCount();
 	int GetVertexCount();
 
-	// The input layout of the light shader (POSITION, TEXCOORD0).
-	static const fxport::VertexDeclaration VertexDeclaration;
 
 private:
-	bool InitializeBuffers(fxport::GraphicsDevice*, int, int);
+	bool InitializeBuffers(ID3D10Device*, int, int);
 	void ShutdownBuffers();
-	void RenderBuffers(fxport::GraphicsDevice*);
+	void RenderBuffers(ID3D10Device*);
 
 private:
-	std::unique_ptr<fxport::VertexBuffer> m_vertexBuffer;
-	std::unique_ptr<fxport::IndexBuffer> m_indexBuffer;
+	ID3D10Buffer *m_vertexBuffer, *m_indexBuffer;
 	int m_vertexCount, m_indexCount;
 };
 

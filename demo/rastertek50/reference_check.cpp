@@ -164,16 +164,19 @@ std::vector<int> coverage(const std::vector<Triangle>& triangles, int W, int H) 
 
 bool RunReferenceCheck(ApplicationClass& application) {
     DeferredBuffersClass& buffers = *application.GetDeferredBuffers();
-    fxport::RenderTarget2D* colorTarget = buffers.GetShaderResourceView(0);
-    fxport::RenderTarget2D* normalTarget = buffers.GetShaderResourceView(1);
-    const int W = colorTarget->Width(), H = colorTarget->Height();
-    const std::vector<fxport::Vector4> gColor = colorTarget->GetData<fxport::Vector4>();
-    const std::vector<fxport::Vector4> gNormal = normalTarget->GetData<fxport::Vector4>();
-    const std::vector<fxport::Color> back = application.GetD3D()->GetDevice()->GetBackBufferData();
+    const int W = buffers.GetTextureWidth(), H = buffers.GetTextureHeight();
+    const std::vector<fxport::Vector4> gColor = buffers.GetTargetData(application.GetD3D()->GetDevice(), 0);
+    const std::vector<fxport::Vector4> gNormal = buffers.GetTargetData(application.GetD3D()->GetDevice(), 1);
+    const std::vector<fxport::Color> back = application.GetD3D()->GetBackBufferData();
+    const std::size_t texels = std::size_t(W) * std::size_t(H);
+    if (gColor.size() != texels || gNormal.size() != texels || back.size() != texels) {
+        std::printf("check: the G-buffer or the back buffer could not be read back: FAIL\n");
+        return false;
+    }
 
     const std::vector<Triangle> triangles = screenTriangles(application, W, H);
     ModelClass& model = *application.GetModel();
-    const Mips mips{TextureClass::MipChain(model.GetTexture()->Width()), model.GetTexture()->Width()};
+    const Mips mips{TextureClass::MipChain(model.GetTextureSize()), model.GetTextureSize()};
     int coverageMismatch = 0, covered = 0;
     double normalMax = 0;
     std::vector<double> colorErrors;
@@ -266,12 +269,12 @@ bool RunReferenceCheck(ApplicationClass& application) {
 namespace Rastertek50 {
 
 std::vector<double> ReferenceImage(ApplicationClass& application) {
-    const fxport::RenderTarget2D& target = *application.GetDeferredBuffers()->GetShaderResourceView(0);
-    const int W = target.Width(), H = target.Height();
+    const DeferredBuffersClass& buffers = *application.GetDeferredBuffers();
+    const int W = buffers.GetTextureWidth(), H = buffers.GetTextureHeight();
     const std::vector<Triangle> triangles = screenTriangles(application, W, H);
     const std::vector<int> owner = coverage(triangles, W, H);
     ModelClass& model = *application.GetModel();
-    const Mips mips{TextureClass::MipChain(model.GetTexture()->Width()), model.GetTexture()->Width()};
+    const Mips mips{TextureClass::MipChain(model.GetTextureSize()), model.GetTextureSize()};
     std::vector<double> rgb(std::size_t(W) * std::size_t(H) * 3, 0.0);  // cleared G-buffer: black
     for (int y = 0; y < H; ++y)
         for (int x = 0; x < W; ++x) {

@@ -2,17 +2,17 @@
 // The seed's SystemClass (window, message loop) is this function: it creates the ApplicationClass
 // and calls Frame() once per frame.
 //
-//   fxdemo rastertek50 [--size WxH] [--frames N] [--out DIR] [--gpu] [--window] [--hlsl DIR] [--check]
+//   fxdemo rastertek50 [--size WxH] [--frames N] [--out DIR] [--gpu] [--hlsl DIR] [--check]
 //                      [--explain]
 //
 // Headless (OSMesa; --gpu: EGL) it renders N frames (default 25: the cube turns pi/100 per frame,
 // so frame 25 shows it at 45 degrees; the rotation depends only on the frame number), prints the
 // median GPU time of each pass, and writes DIR/final.png (the back buffer) and DIR/debug.png (the
 // two G-buffer targets side by side: left the colour target, right the normal target shown as
-// n * 0.5 + 0.5, with the cleared background, normal (0,0,0), left black). --window: a GLFW window,
-// until it is closed, Escape is pressed or N frames have run; images only with --out. --check: the
-// last frame against a CPU reference (reference_check.h); exit code 1 when it is off. --explain: the
-// effects (compile time, xlate's cache off), render targets (bytes) and passes built; the seed's
+// n * 0.5 + 0.5, with the cleared background, normal (0,0,0), left black). The port draws through
+// fxport's D3D10 front end, whose swap chain is headless: --window is refused (D3DClass). --check:
+// the last frame against a CPU reference (reference_check.h); exit code 1 when it is off. --explain:
+// the effects (load and compile time), render targets (bytes) and passes built; the seed's
 // pipeline has no optional part, so this run is its all-features configuration and nothing is left
 // out.
 #include <cmath>
@@ -21,6 +21,7 @@
 #include <exception>
 #include <filesystem>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,7 @@
 #include "common/pass_timer.h"
 #include "common/program_registry.h"
 #include "common/run_options.h"
+#include "fxport/d3d11/core_access.h"
 #include "fxport/graphics.h"
 #include "fxport/platform/graphics_context.h"
 #include "rastertek50/applicationclass.h"
@@ -46,14 +48,23 @@ std::uint8_t toByte(float v) {
     return std::uint8_t(std::lround(v * 255.0f));
 }
 
-// The two G-buffer targets side by side (see the top of this file).
+// The PNG of `texels` (w x h, top row first), encoded by a Texture2D of the device core.
+void SavePng(ApplicationClass& application, const std::vector<fxport::Color>& texels, int w, int h, const std::string& path) {
+    fxport::Texture2D image(application.GetD3D()->GetCoreDevice(), w, h, false, fxport::SurfaceFormat::Color);
+    image.SetData(texels);
+    image.SaveAsPng(path);
+}
+
+// The two G-buffer targets side by side (see the top of this file), read back from the D3D10
+// textures; the PNG is encoded by a Texture2D of the device core.
 void WriteDebugImage(ApplicationClass& application, const std::string& path) {
     DeferredBuffersClass& buffers = *application.GetDeferredBuffers();
-    fxport::RenderTarget2D* color = buffers.GetShaderResourceView(0);
-    fxport::RenderTarget2D* normal = buffers.GetShaderResourceView(1);
-    const int w = color->Width(), h = color->Height();
-    const std::vector<fxport::Vector4> colors = color->GetData<fxport::Vector4>();
-    const std::vector<fxport::Vector4> normals = normal->GetData<fxport::Vector4>();
+    ID3D10Device* device = application.GetD3D()->GetDevice();
+    const int w = buffers.GetTextureWidth(), h = buffers.GetTextureHeight();
+    const std::vector<fxport::Vector4> colors = buffers.GetTargetData(device, 0);
+    const std::vector<fxport::Vector4> normals = buffers.GetTargetData(device, 1);
+    if (colors.size() != std::size_t(w) * std::size_t(h) || normals.size() != colors.size())
+        throw std::runtime_error("the G-buffer targets could not be read back");
     std::vector<fxport::Color> sheet(std::size_t(2 * w) * std::size_t(h));
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
@@ -69,20 +80,39 @@ void WriteDebugImage(ApplicationClass& application, const std::string& path) {
                                           toByte(n.Z * 0.5f + 0.5f), std::uint8_t(255));
         }
     }
-    fxport::Texture2D image(*application.GetD3D()->GetDevice(), 2 * w, h, false, fxport::SurfaceFormat::Color);
-    image.SetData(sheet);
-    image.SaveAsPng(path);
+    SavePng(application, sheet, 2 * w, h, path);
 }
 
-// --explain: the two effects the shader classes created, the G-buffer's two targets (the first one
-// carries the depth buffer) and the passes the timer saw.
+// The XNA name of a G-buffer format, as --explain prints target formats.
+fxport::SurfaceFormat SurfaceFormatOf(DXGI_FORMAT format) {
+    switch (format) {
+    case DXGI_FORMAT_R32G32B32A32_FLOAT: return fxport::SurfaceFormat::Vector4;
+    case DXGI_FORMAT_R16G16B16A16_FLOAT: return fxport::SurfaceFormat::HalfVector4;
+    default: return fxport::SurfaceFormat::Color;
+    }
+}
+
+// --explain: the two effects the shader classes created (the fxport::Effect under each
+// ID3D10Effect), the G-buffer's two targets (the first listed with the depth buffer bound with the
+// set) and the passes the timer saw.
 fxport::demo::BuildReport ReportBuild(ApplicationClass& application, const fxport::GpuTimer& timer) {
     fxport::demo::BuildReport report;
-    report.addEffect("rastertek/deferred.fx", *application.GetDeferredShader()->GetEffect());
-    report.addEffect("rastertek/light.fx", *application.GetLightShader()->GetEffect());
-    for (int i = 0; i < BUFFER_COUNT; ++i) report.addTarget(*application.GetDeferredBuffers()->GetShaderResourceView(i));
+    report.addEffect("rastertek/deferred.fx", fxport::d3d11::CoreEffectOf(*application.GetDeferredShader()->GetEffect()->GetD3DX11Effect()));
+    report.addEffect("rastertek/light.fx", fxport::d3d11::CoreEffectOf(*application.GetLightShader()->GetEffect()->GetD3DX11Effect()));
+    const DeferredBuffersClass& buffers = *application.GetDeferredBuffers();
+    static const char* const names[BUFFER_COUNT] = {"colorTexture", "normalTexture"};  // light.fx's names
+    for (int i = 0; i < BUFFER_COUNT; ++i) {
+        fxport::demo::BuildReport::TargetEntry e;
+        e.name = names[i];
+        e.width = buffers.GetTextureWidth();
+        e.height = buffers.GetTextureHeight();
+        e.format = SurfaceFormatOf(buffers.GetFormat());
+        e.depth = i == 0 ? fxport::DepthFormat::Depth24Stencil8 : fxport::DepthFormat::None;
+        e.bytes = fxport::demo::RenderTargetBytes(e.width, e.height, 1, e.format, e.depth);
+        report.targets.push_back(e);
+    }
     report.addPasses(timer);
-    report.addClears(*application.GetD3D()->GetDevice());
+    report.addClears(application.GetD3D()->GetCoreDevice());
     return report;
 }
 
@@ -115,13 +145,9 @@ int runRastertek50(int argc, char** argv) {
 
     try {
         ApplicationClass application;
-        // --explain: both effects compiled by xlate in this process, so that the times compare.
-        fxport::EffectOptions effectOptions;
-        effectOptions.useCache = !explain;
-        effectOptions.defines = common.defines;
-        application.SetEffectOptions(effectOptions);
+        application.SetDefines(common.defines);
         if (!application.Initialize(common.platform, hlslDir, common.width, common.height)) return 1;
-        fxport::GraphicsDevice& device = *application.GetD3D()->GetDevice();
+        fxport::GraphicsDevice& device = application.GetD3D()->GetCoreDevice();
         auto timer = std::make_unique<fxport::GpuTimer>(device);
         application.SetGpuTimer(timer.get());
         const bool sync = common.platform == "osmesa";
@@ -146,7 +172,11 @@ int runRastertek50(int argc, char** argv) {
             std::filesystem::create_directories(common.outDir);
             const std::string finalPath = (std::filesystem::path(common.outDir) / "final.png").string();
             const std::string debugPath = (std::filesystem::path(common.outDir) / "debug.png").string();
-            device.SaveBackBufferAsPng(finalPath);
+            // What the window would show: DXGI presents the back buffer's RGB; its alpha is light.fx's
+            // output (0 where the G-buffer is empty), so final.png is written opaque.
+            std::vector<fxport::Color> shown = application.GetD3D()->GetBackBufferData();
+            for (fxport::Color& c : shown) c.A = 255;
+            SavePng(application, shown, common.width, common.height, finalPath);
             WriteDebugImage(application, debugPath);
             std::printf("wrote %s and %s\n", finalPath.c_str(), debugPath.c_str());
         }
@@ -176,9 +206,10 @@ int runRastertek50(int argc, char** argv) {
 }  // namespace Rastertek50
 
 FXDEMO_PROGRAM(rastertek50,
-               "fxdemo rastertek50 [--size WxH] [--frames N] [--out DIR] [--gpu] [--window] [--hlsl DIR] [--check]\n"
+               "fxdemo rastertek50 [--size WxH] [--frames N] [--out DIR] [--gpu] [--hlsl DIR] [--check]\n"
                "                          [--explain]\n"
-               "  Rastertek DirectX 10 tutorial 50, deferred shading (seed 004): writes DIR/final.png and DIR/debug.png.\n"
+               "  Rastertek DirectX 10 tutorial 50, deferred shading (seed 004), on fxport's D3D10 front end (headless:\n"
+               "  no --window): writes DIR/final.png and DIR/debug.png.\n"
                "  --size WxH     back buffer size (800x600)      --frames N   frames to run headless\n"
                "  --out DIR      where the images go (fxdemo-out/rastertek50)\n"
                "  --hlsl DIR     the effects' folder (the source tree's hlsl/)\n"

@@ -11,6 +11,7 @@ list(APPEND FXDEMO_SOURCES
   rastertek50/lightshaderclass.cpp
   rastertek50/modelclass.cpp
   rastertek50/orthowindowclass.cpp
+  rastertek50/readback.cpp
   rastertek50/reference_check.cpp
   rastertek50/run_rastertek50.cpp
   rastertek50/textureclass.cpp)

@@ -9,3 +9,9 @@ set_tests_properties(demo.rastertek50.explain PROPERTIES
   PASS_REGULAR_EXPRESSION "built +rastertek/deferred\\.fx +DeferredTechnique\\(1\\)\\+ .*built +rastertek/light\\.fx +LightTechnique\\(1\\)\\+ .*effects: 2 built.*built +colorTexture +64x48 Vector4\\+Depth24Stencil8 +61440 B.*built +normalTexture +64x48 Vector4 +49152 B.*targets: 2 built, 110592 B.*passes run: Deferred Light\npasses left out: none"
   FAIL_REGULAR_EXPRESSION "left out  ")
 list(APPEND FXDEMO_TESTS demo.rastertek50.explain)
+# The port draws through fxport's D3D10 front end, whose swap chain is headless: --window is
+# refused with the reason (D3DClass), not opened on a back buffer nothing draws to.
+add_test(NAME demo.rastertek50.window_refused COMMAND fxdemo rastertek50 --window --frames 1)
+set_tests_properties(demo.rastertek50.window_refused PROPERTIES
+  PASS_REGULAR_EXPRESSION "platform 'glfw': the D3D10 port renders headless only \\(osmesa, egl\\).*Could not initialize Direct3D")
+list(APPEND FXDEMO_TESTS demo.rastertek50.window_refused)

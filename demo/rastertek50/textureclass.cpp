@@ -5,12 +5,19 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
 #include <vector>
+
+#include <unistd.h>
 
 namespace Rastertek50 {
 
 TextureClass::TextureClass()
 {
+	m_texture = 0;
 }
 
 
@@ -75,14 +82,60 @@ std::vector<std::vector<fxport::Color>> TextureClass::MipChain(int size)
 }
 
 
-bool TextureClass::Initialize(fxport::GraphicsDevice* device, int size)
+namespace {
+
+// fxport: level 0 of the generated texture as a 32-bit BMP (BITMAPINFOHEADER, bottom-up rows,
+// BGRA bytes), for D3DX10CreateShaderResourceViewFromFile to load.
+bool WriteBmp(const std::string& path, int size)
 {
-	// Create the texture (fxport: from generated data, every mip level).
-	const std::vector<std::vector<fxport::Color>> chain = MipChain(size);
-	m_texture = std::make_unique<fxport::Texture2D>(*device, size, size, true, fxport::SurfaceFormat::Color);
-	for(std::size_t mip = 0; mip < chain.size(); mip++)
+	std::vector<unsigned char> file(54 + std::size_t(size) * std::size_t(size) * 4, 0);
+	auto put32 = [&](std::size_t at, std::uint32_t v) { for(int i = 0; i < 4; i++) file[at + std::size_t(i)] = (unsigned char)(v >> (8 * i)); };
+	file[0] = 'B';
+	file[1] = 'M';
+	put32(2, std::uint32_t(file.size()));
+	put32(10, 54);
+	put32(14, 40);
+	put32(18, std::uint32_t(size));
+	put32(22, std::uint32_t(size));
+	file[26] = 1;
+	file[28] = 32;
+	for(int y = 0; y < size; y++)
+		for(int x = 0; x < size; x++)
+		{
+			const fxport::Color c = TextureClass::Texel(x, size - 1 - y, size);  // file rows bottom-up
+			unsigned char* p = &file[54 + (std::size_t(y) * std::size_t(size) + std::size_t(x)) * 4];
+			p[0] = c.B; p[1] = c.G; p[2] = c.R; p[3] = c.A;
+		}
+	std::ofstream out(path, std::ios::binary);
+	out.write(reinterpret_cast<const char*>(file.data()), std::streamsize(file.size()));
+	return bool(out);
+}
+
+}  // namespace
+
+
+bool TextureClass::Initialize(ID3D10Device* device, int size)
+{
+	HRESULT result;
+
+
+	// fxport: the generated texture as a file (one per process, removed once loaded).
+	const std::string filename = (std::filesystem::temp_directory_path() /
+				      ("fxport-rastertek50-seafloor-" + std::to_string(getpid()) + ".bmp")).string();
+	if(!WriteBmp(filename, size))
 	{
-		m_texture->SetData(int(mip), nullptr, chain[mip].data(), chain[mip].size());
+		std::fprintf(stderr, "fxdemo rastertek50: cannot write %s\n", filename.c_str());
+		return false;
+	}
+
+	// Load the texture in.
+	result = D3DX10CreateShaderResourceViewFromFile(device, filename.c_str(), NULL, NULL, &m_texture, NULL);
+	std::error_code ignored;
+	std::filesystem::remove(filename, ignored);
+	if(FAILED(result))
+	{
+		std::fprintf(stderr, "fxdemo rastertek50: %s\n", GetLastErrorMessage());
+		return false;
 	}
 
 	return true;
@@ -92,14 +145,18 @@ bool TextureClass::Initialize(fxport::GraphicsDevice* device, int size)
 void TextureClass::Shutdown()
 {
 	// Release the texture resource.
-	m_texture.reset();
+	if(m_texture)
+	{
+		m_texture->Release();
+		m_texture = 0;
+	}
 	return;
 }
 
 
-fxport::Texture2D* TextureClass::GetTexture()
+ID3D10ShaderResourceView* TextureClass::GetTexture()
 {
-	return m_texture.get();
+	return m_texture;
 }
 
 }  // namespace Rastertek50

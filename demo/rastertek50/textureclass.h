@@ -2,20 +2,24 @@
 // Filename: textureclass.h
 ////////////////////////////////////////////////////////////////////////////////
 // Reconstructed (the seed's ModelClass loads seafloor.dds through TextureClass, which it does not
-// list). fxport: the texture is generated content, made in code with Texture2D::SetData (every mip
-// level, box-filtered), since the sampler is MIN_MAG_MIP_LINEAR.
+// list): the Rastertek DX10 TextureClass, D3DX10CreateShaderResourceViewFromFile. fxport: the
+// texture is generated content (Texel), written to a BMP file that the same call loads; D3DX10
+// gives it the full mip chain (each level the 2x2 box average of the one above, as MipChain makes
+// it), which the sampler's MIN_MAG_MIP_LINEAR uses.
 #pragma once
 
 
 //////////////
 // INCLUDES //
 //////////////
-#include <memory>
 #include <vector>
 
+#include "fxport/d3d10.h"
 #include "fxport/graphics.h"
 
 namespace Rastertek50 {
+
+using namespace fxport::d3d10;
 
 ////////////////////////////////////////////////////////////////////////////////
 // Class name: TextureClass
@@ -27,11 +31,11 @@ public:
 	TextureClass(const TextureClass&) = delete;
 	~TextureClass();
 
-	// fxport: generates the texture instead of D3DX10CreateShaderResourceViewFromFile(filename).
-	bool Initialize(fxport::GraphicsDevice*, int size);
+	// fxport: `size` (the generated texture's) replaces the file name (seafloor.dds).
+	bool Initialize(ID3D10Device*, int size);
 	void Shutdown();
 
-	fxport::Texture2D* GetTexture();
+	ID3D10ShaderResourceView* GetTexture();
 
 	// The generated texel at (x, y) of level 0, top row first (for tests).
 	static fxport::Color Texel(int x, int y, int size);
@@ -39,7 +43,7 @@ public:
 	static std::vector<std::vector<fxport::Color>> MipChain(int size);
 
 private:
-	std::unique_ptr<fxport::Texture2D> m_texture;
+	ID3D10ShaderResourceView* m_texture;
 };
 
 }  // namespace Rastertek50

@@ -11,12 +11,12 @@ namespace fxport::report {
 
 std::vector<Measurement> sweepRastertek50(const SweepOptions& options) {
     struct Setting {
-        SurfaceFormat format;
+        d3d11::DXGI_FORMAT format;
         const char* name;
     };
-    const std::vector<Setting> settings = {{SurfaceFormat::Vector4, "R32G32B32A32_FLOAT"},
-                                           {SurfaceFormat::HalfVector4, "R16G16B16A16_FLOAT"},
-                                           {SurfaceFormat::Color, "R8G8B8A8_UNORM"}};
+    const std::vector<Setting> settings = {{d3d11::DXGI_FORMAT_R32G32B32A32_FLOAT, "R32G32B32A32_FLOAT"},
+                                           {d3d11::DXGI_FORMAT_R16G16B16A16_FLOAT, "R16G16B16A16_FLOAT"},
+                                           {d3d11::DXGI_FORMAT_R8G8B8A8_UNORM, "R8G8B8A8_UNORM"}};
     // Even sizes: the seed's ortho window maps pixel (x, y) to G-buffer texel (x, y) only then.
     const int width = options.width ? options.width & ~1 : 800, height = options.height ? options.height & ~1 : 600;
     std::vector<Measurement> out;
@@ -28,20 +28,21 @@ std::vector<Measurement> sweepRastertek50(const SweepOptions& options) {
         application.SetFixedRotation(25 * float(3.14159265358979) * 0.01f);
         if (!application.Initialize(options.platform, FXPORT_HLSL_DIR, width, height))
             throw std::runtime_error("rastertek50: Initialize failed");
-        GraphicsDevice& device = *application.GetD3D()->GetDevice();
+        GraphicsDevice& device = application.GetD3D()->GetCoreDevice();
         auto timer = std::make_unique<GpuTimer>(device);
         application.SetGpuTimer(timer.get());
         Measurement m;
         m.demo = "rastertek50";
         m.knob = "target format";
         m.setting = s.name;
-        m.seedDefault = s.format == SurfaceFormat::Vector4;
+        m.seedDefault = s.format == d3d11::DXGI_FORMAT_R32G32B32A32_FLOAT;
         m.reference = "CPU raster + shading (exact)";
         runTimedFrames(device, *timer, options, [&] { application.Frame(); }, m);
         const std::vector<double> reference = Rastertek50::ReferenceImage(application);
-        m.error = compareImages(toRgb(device.GetBackBufferData()), reference, "rastertek50 " + m.setting);
+        const std::vector<Color> back = application.GetD3D()->GetBackBufferData();
+        m.error = compareImages(toRgb(back), reference, "rastertek50 " + m.setting);
         if (out.empty()) saveReference(device, options, m.demo, reference, width, height);
-        saveImage(device, options, m);
+        saveImage(device, options, m, back, width, height);
         application.SetGpuTimer(nullptr);
         timer.reset();
         application.Shutdown();

@@ -83,6 +83,16 @@ void saveImage(GraphicsDevice& device, const SweepOptions& options, const Measur
     device.SaveBackBufferAsPng((dir / (slug(m.knob) + "_" + slug(m.setting) + ".png")).string());
 }
 
+void saveImage(GraphicsDevice& device, const SweepOptions& options, const Measurement& m, const std::vector<Color>& pixels,
+               int width, int height) {
+    if (options.outDir.empty()) return;
+    Texture2D image(device, width, height);
+    image.SetData(pixels);
+    const auto dir = std::filesystem::path(options.outDir) / "images" / m.demo;
+    std::filesystem::create_directories(dir);
+    image.SaveAsPng((dir / (slug(m.knob) + "_" + slug(m.setting) + ".png")).string());
+}
+
 void saveReference(GraphicsDevice& device, const SweepOptions& options, const std::string& demo,
                    const std::vector<double>& rgb, int width, int height, const std::string& name) {
     if (options.outDir.empty()) return;

@@ -30,6 +30,10 @@ void runTimedFrames(GraphicsDevice& device, GpuTimer& timer, const SweepOptions&
 
 // Writes the back buffer to outDir/<demo>/<knob>-<setting>.png when outDir is set.
 void saveImage(GraphicsDevice& device, const SweepOptions& options, const Measurement& m);
+// The same for a port that renders through a D3D front end: its back buffer read back (`pixels`,
+// W x H, top row first), encoded by a Texture2D of `device`.
+void saveImage(GraphicsDevice& device, const SweepOptions& options, const Measurement& m, const std::vector<Color>& pixels,
+               int width, int height);
 
 // Writes `rgb` (W x H x 3 in [0, 1]) to outDir/images/<demo>/<name> when outDir is set.
 void saveReference(GraphicsDevice& device, const SweepOptions& options, const std::string& demo,

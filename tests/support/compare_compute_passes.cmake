@@ -1,9 +1,11 @@
 # Issue 16 item 4: every demo renders the same PNGs, byte for byte, with compute passes on
 # (FXPORT_COMPUTE_PASSES=1) and off. Two frames, so the second frame's dispatches replay the
 # interpolants the first one stored; --explain must show dispatches and replays.
-# Run by ctest: cmake -DFXDEMO=... -DOUT=... -P this file.
+# Run by ctest: cmake -DFXDEMO=... -DOUT=... -P this file. rastertek50 is not among them: it draws
+# through the D3D10 front end, whose device core keeps the compute-pass rewrite off (each D3D draw is
+# exactly what was asked: runtime/d3d11/src/device.cpp), so it has no dispatches to compare.
 set(line_regex "run as compute +([0-9]+) +\\(([0-9]+) from the replay store")
-foreach(demo deferred pointlights lighting2d rastertek50)
+foreach(demo deferred pointlights lighting2d)
   foreach(mode 0 1)
     file(REMOVE_RECURSE ${OUT}/${mode}/${demo})
     execute_process(COMMAND ${CMAKE_COMMAND} -E env FXPORT_COMPUTE_PASSES=${mode}

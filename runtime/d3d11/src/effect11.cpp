@@ -5,6 +5,7 @@
 #include <map>
 
 #include "context.h"
+#include "fxport/d3d11/core_access.h"
 #include "fxport/xlate/diagnostics.h"
 #include "fxport/xlate/effect_file.h"
 #include "guarded.h"
@@ -345,6 +346,9 @@ HRESULT make(const char* call, ID3D11Device* pDevice, ID3DX11Effect** ppEffect, 
 }
 
 }  // namespace
+
+// core_access.h: Effect11 is the only ID3DX11Effect there is.
+Effect& CoreEffectOf(ID3DX11Effect& effect) { return static_cast<Effect11&>(effect).effect(); }
 
 HRESULT D3DX11CreateEffectFromMemory(const void* pData, SIZE_T DataLength, UINT, ID3D11Device* pDevice, ID3DX11Effect** ppEffect, LPCSTR) {
     std::string error;
