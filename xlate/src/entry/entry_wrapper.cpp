@@ -321,6 +321,9 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
             if (!frontFaceDeclared) addParam("bool fxport_frontFace : SV_IsFrontFace");
             frontFaceDeclared = true;
             fill << assignLeaf(leaf, b == "VFACE" ? "(fxport_frontFace ? 1.0 : -1.0)" : "fxport_frontFace");
+        } else if (b == "SV_COVERAGE") {
+            if (!repeat) addParam("nointerpolation uint " + name + " : " + kSampleMaskInSemantic);
+            fill << assignLeaf(leaf, name);
         } else if (b.rfind("SV_", 0) == 0) {
             // Clip and cull distances keep their index: SV_ClipDistance1 is another register.
             const bool distance = b == "SV_CLIPDISTANCE" || b == "SV_CULLDISTANCE";
