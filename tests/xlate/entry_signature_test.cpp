@@ -130,3 +130,19 @@ float4 VS(float4 p : POSITION, apple a, out float4 c : TEXCOORD0) : SV_Position 
 )") + kPassthroughPs + technique("VS", "PS")),
                  CompileError);
 }
+
+// glslang drops an SV_Coverage pixel input (its reads became OpUndef); the wrapper's stand-in
+// varying must end as gl_SampleMaskIn[0], neither a varying the runtime links nor an undefined value.
+// vkd3d's coverage file checks the values on a 4-sample target.
+TEST(EntrySignature, CoverageInputReadsGlSampleMaskIn) {
+    CompiledEffect e = compile(std::string(R"(
+float4 VS(float4 p : POSITION) : SV_Position { return p; }
+float4 PS(float4 c : TEXCOORD0, uint coverage : SV_Coverage) : SV_Target { return c * float(coverage); }
+technique T { pass P { VertexShader = compile vs_5_0 VS(); PixelShader = compile ps_5_0 PS(); } }
+)"));
+    const CompiledShader& ps = pixelShader(e);
+    EXPECT_TRUE(hasLine(ps.glsl, R"(uint\(gl_SampleMaskIn\[0\]\))")) << ps.glsl;
+    EXPECT_FALSE(hasLine(ps.glsl, "SAMPLEMASKIN|in uint fxport_sampleMaskIn|uint _[0-9]+;")) << ps.glsl;
+    ASSERT_EQ(ps.varyingInputs.size(), 1u);
+    EXPECT_EQ(ps.varyingInputs[0].semantic, "TEXCOORD0");
+}
