@@ -146,3 +146,16 @@ technique T { pass P { VertexShader = compile vs_5_0 VS(); PixelShader = compile
     ASSERT_EQ(ps.varyingInputs.size(), 1u);
     EXPECT_EQ(ps.varyingInputs[0].semantic, "TEXCOORD0");
 }
+
+// An interpolation modifier on a struct-typed parameter applies to its members (vkd3d's
+// nointerpolation file checks the flat colour on the GPU).
+TEST(EntrySignature, InterpolationModifierOfAStructParameterReachesItsMembers) {
+    CompiledEffect e = compile(std::string(R"(
+struct ps_input { float4 t : TEXCOORD0; };
+float4 VS(float4 p : POSITION, out float4 t : TEXCOORD0) : SV_Position { t = p; return p; }
+float4 PS(nointerpolation ps_input input) : SV_Target { return input.t; }
+technique T { pass P { VertexShader = compile vs_4_0 VS(); PixelShader = compile ps_4_0 PS(); } }
+)"));
+    const CompiledShader& ps = pixelShader(e);
+    EXPECT_TRUE(hasLine(ps.glsl, R"(flat in vec4 \w+;)")) << ps.glsl;
+}
