@@ -130,3 +130,32 @@ float4 VS(float4 p : POSITION, apple a, out float4 c : TEXCOORD0) : SV_Position 
 )") + kPassthroughPs + technique("VS", "PS")),
                  CompileError);
 }
+
+// glslang drops an SV_Coverage pixel input (its reads became OpUndef); the wrapper's stand-in
+// varying must end as gl_SampleMaskIn[0], neither a varying the runtime links nor an undefined value.
+// vkd3d's coverage file checks the values on a 4-sample target.
+TEST(EntrySignature, CoverageInputReadsGlSampleMaskIn) {
+    CompiledEffect e = compile(std::string(R"(
+float4 VS(float4 p : POSITION) : SV_Position { return p; }
+float4 PS(float4 c : TEXCOORD0, uint coverage : SV_Coverage) : SV_Target { return c * float(coverage); }
+technique T { pass P { VertexShader = compile vs_5_0 VS(); PixelShader = compile ps_5_0 PS(); } }
+)"));
+    const CompiledShader& ps = pixelShader(e);
+    EXPECT_TRUE(hasLine(ps.glsl, R"(uint\(gl_SampleMaskIn\[0\]\))")) << ps.glsl;
+    EXPECT_FALSE(hasLine(ps.glsl, "SAMPLEMASKIN|in uint fxport_sampleMaskIn|uint _[0-9]+;")) << ps.glsl;
+    ASSERT_EQ(ps.varyingInputs.size(), 1u);
+    EXPECT_EQ(ps.varyingInputs[0].semantic, "TEXCOORD0");
+}
+
+// An interpolation modifier on a struct-typed parameter applies to its members (vkd3d's
+// nointerpolation file checks the flat colour on the GPU).
+TEST(EntrySignature, InterpolationModifierOfAStructParameterReachesItsMembers) {
+    CompiledEffect e = compile(std::string(R"(
+struct ps_input { float4 t : TEXCOORD0; };
+float4 VS(float4 p : POSITION, out float4 t : TEXCOORD0) : SV_Position { t = p; return p; }
+float4 PS(nointerpolation ps_input input) : SV_Target { return input.t; }
+technique T { pass P { VertexShader = compile vs_4_0 VS(); PixelShader = compile ps_4_0 PS(); } }
+)"));
+    const CompiledShader& ps = pixelShader(e);
+    EXPECT_TRUE(hasLine(ps.glsl, R"(flat in vec4 \w+;)")) << ps.glsl;
+}

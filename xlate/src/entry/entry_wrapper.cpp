@@ -48,6 +48,14 @@ bool isInterpolationModifier(const std::string& m) {
     return m == "nointerpolation" || m == "linear" || m == "centroid" || m == "noperspective" || m == "sample";
 }
 
+// A member's modifiers plus the interpolation modifiers of the struct-typed declaration holding it:
+// `nointerpolation ps_input input` makes every member of input flat, as fxc does.
+std::vector<std::string> withInterpolationOf(const std::vector<std::string>& holder, std::vector<std::string> member) {
+    for (const auto& m : holder)
+        if (isInterpolationModifier(m) && std::find(member.begin(), member.end(), m) == member.end()) member.push_back(m);
+    return member;
+}
+
 class Flattener {
 public:
     explicit Flattener(const EffectSyntax& syntax) : syntax_(syntax) {}
@@ -74,7 +82,9 @@ public:
                 for (const auto& m : s->members) {
                     // A resource member is bound, not part of the signature; fxc refuses one with a semantic.
                     if (isObjectMember(m) && m.semantic.empty()) continue;
-                    if (!flatten(m.type, e + "." + m.name, m.semantic, m.arrayDims, m.modifiers, out, depth + 1, c)) return false;
+                    if (!flatten(m.type, e + "." + m.name, m.semantic, m.arrayDims, withInterpolationOf(modifiers, m.modifiers), out,
+                                 depth + 1, c))
+                        return false;
                 }
             return true;
         }
@@ -321,6 +331,9 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
             if (!frontFaceDeclared) addParam("bool fxport_frontFace : SV_IsFrontFace");
             frontFaceDeclared = true;
             fill << assignLeaf(leaf, b == "VFACE" ? "(fxport_frontFace ? 1.0 : -1.0)" : "fxport_frontFace");
+        } else if (b == "SV_COVERAGE") {
+            if (!repeat) addParam("nointerpolation uint " + name + " : " + kSampleMaskInSemantic);
+            fill << assignLeaf(leaf, name);
         } else if (b.rfind("SV_", 0) == 0) {
             // Clip and cull distances keep their index: SV_ClipDistance1 is another register.
             const bool distance = b == "SV_CLIPDISTANCE" || b == "SV_CULLDISTANCE";

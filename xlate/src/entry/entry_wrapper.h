@@ -22,6 +22,10 @@ namespace fxport::xlate {
 inline constexpr const char* kWrapperEntry = "fxport_main";
 inline constexpr const char* kInternalBlock = "fxport_Internal";
 inline constexpr const char* kPixelOffset = "fxport_PixelOffset";
+// A pixel shader's SV_Coverage input: glslang drops that built-in input (its reads become OpUndef),
+// so the wrapper reads it as a flat uint varying on this semantic, and spirv_to_glsl turns the
+// varying into GL's gl_SampleMaskIn[0].
+inline constexpr const char* kSampleMaskInSemantic = "FXPORT_SAMPLEMASKIN";
 
 struct EntryWrapper {
     std::string code;        // HLSL to append after the effect

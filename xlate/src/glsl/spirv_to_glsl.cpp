@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <map>
+#include <regex>
 #include <set>
 
 #include "spirv/cbuffer_packing.h"
@@ -56,6 +57,15 @@ public:
                buffer_is_packing_standard(block, spirv_cross::BufferPackingStd140EnhancedLayout);
     }
 };
+
+constexpr const char* kSampleMaskInName = "fxport_sampleMaskIn";
+
+// The wrapper's stand-in for SV_Coverage (kSampleMaskInSemantic) becomes GL's gl_SampleMaskIn[0]:
+// SPIRV-Cross declares the input on one line, which turns into a macro of the same name.
+std::string sampleMaskInFromGl(std::string glsl) {
+    static const std::regex declaration(R"(layout\(location = \d+\) flat in uint fxport_sampleMaskIn;)");
+    return std::regex_replace(glsl, declaration, "#define fxport_sampleMaskIn uint(gl_SampleMaskIn[0])");
+}
 
 uint32_t roundUp(uint32_t v, uint32_t to) { return (v + to - 1) / to * to; }
 
@@ -476,6 +486,10 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
             for (const auto& r : res.stage_inputs) {
                 std::string sem = semanticOf(r.id);
                 if (sem.empty()) continue;
+                if (stage == ShaderStage::Pixel && splitSemantic(sem).first == kSampleMaskInSemantic) {
+                    compiler.set_name(r.id, kSampleMaskInName);  // no varying: see sampleMaskInFromGl
+                    continue;
+                }
                 const int location = varyings.locationOf(sem);
                 compiler.set_decoration(r.id, spv::DecorationLocation, static_cast<uint32_t>(location));
                 auto [base, index] = splitSemantic(sem);
@@ -502,7 +516,7 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
                     const auto& t = compiler.get_type(b.value_type_id);
                     if (!t.array.empty()) out.clipDistances = static_cast<int>(t.array[0]);
                 }
-        out.glsl = compiler.compile();
+        out.glsl = sampleMaskInFromGl(compiler.compile());
         out.writesDepth = out.glsl.find("gl_FragDepth") != std::string::npos;
     } catch (const std::exception& e) {
         out.error = e.what();
