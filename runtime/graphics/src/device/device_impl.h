@@ -235,12 +235,14 @@ struct GraphicsDevice::Impl {
     // known clear (depthTestPassesAll): such a draw draws what no test draws.
     bool depthTestIsMoot(const fxport::DepthStencilState& state);
     bool drawDepthTestMoot = false;  // flush's depthTestIsMoot for the draw it prepared (compute_pass.cpp reads it)
+    bool foldMootDepthTest(const fxport::DepthStencilState& wanted);  // flush: sets drawDepthTestMoot; true: draw with the test off
     // A blend whose every destination is the zero clear executed for this draw, on unsigned-
     // normalized targets, with source factor One and Add, Subtract or Max: src * 1 + 0 * factor is
     // src (factors are finite there), so the draw writes (pending_clear.cpp, blendOverZeroClearIsWrite).
     // flush decides it; compute_pass.cpp reads drawBlend, the blend the draw has.
     bool blendOverZeroClearIsWrite() const;
     bool drawBlendIsWrite = false;
+    void foldBlendOverZeroClear();  // flush: sets drawBlendIsWrite and drawWriteBlend
     fxport::BlendState drawWriteBlend;  // the device's blend with blending off, when drawBlendIsWrite
     const fxport::BlendState& drawBlend() const { return drawBlendIsWrite ? drawWriteBlend : device.BlendState; }
     // executeClear's depth/stencil bits for a bound buffer not made yet: a whole-target clear waits
