@@ -1,10 +1,12 @@
-// See spirv_sizes.h. Reads only the type, constant, name and variable instructions of the module.
+// See spirv_sizes.h. Reads only the type, constant, name and variable instructions of the module
+// (parsed by ParsedSpirv, parsed_spirv.h).
 #include "spirv/spirv_sizes.h"
 
 #include <algorithm>
 #include <map>
 
 #include "fx/input_limits.h"
+#include "spirv/parsed_spirv.h"
 
 namespace fxport::xlate {
 
@@ -48,13 +50,9 @@ std::string literalString(const std::uint32_t* words, std::uint32_t count) {
 
 class Module {
 public:
-    explicit Module(const std::vector<std::uint32_t>& words) {
-        for (size_t at = 5; at < words.size();) {
-            const std::uint32_t count = words[at] >> 16, op = words[at] & 0xFFFF;
-            if (count == 0 || at + count > words.size()) break;  // damaged: glslang's output never is
-            instructions_.push_back({op, std::vector<std::uint32_t>(words.begin() + long(at) + 1, words.begin() + long(at + count))});
-            at += count;
-        }
+    explicit Module(const ParsedSpirv& module) {
+        for (const SpirvInstruction& i : module.instructions)
+            instructions_.push_back({i.opcode(), std::vector<std::uint32_t>(i.words.begin() + 1, i.words.end())});
         for (const auto& [op, a] : instructions_) {
             if (op == kOpName && a.size() >= 2) names_[a[0]] = literalString(a.data() + 1, std::uint32_t(a.size() - 1));
             else if (op == kOpMemberName && a.size() >= 3) memberNames_[{a[0], a[1]}] = literalString(a.data() + 2, std::uint32_t(a.size() - 2));
@@ -160,8 +158,9 @@ private:
 }  // namespace
 
 std::optional<OversizedVariable> findOversizedVariable(const std::vector<std::uint32_t>& words) {
-    if (words.size() < 5) return std::nullopt;
-    return Module(words).findOversized();
+    ParsedSpirv module;
+    if (!module.parse(words)) return std::nullopt;  // damaged (glslang's output never is): the validator says so
+    return Module(module).findOversized();
 }
 
 }  // namespace fxport::xlate

@@ -15,6 +15,8 @@
 
 #include "device/backend.h"
 #include "device/impl_access.h"
+#include "device/pass_emulation.h"
+#include "device/shader_program.h"
 #include "device/state_shadow.h"
 #include "fxport/graphics/graphics_device.h"
 #include "fxport/xlate/compiled_effect.h"
@@ -32,45 +34,6 @@ struct ComputeAnalysis;
 struct ComputePasses;
 class FragmentRuns;  // fragment_tally.h
 
-
-// A shader's variant with D3D9 fixed-function stages added; program 0: the shader cannot have them
-// (said once, when it was asked for).
-struct FixedFunctionVariant {
-    BackendObject program = 0;
-    std::array<int, 8> locations{-1, -1, -1, -1, -1, -1, -1, -1};  // by FixedFunctionUniform
-};
-
-// A compiled shader made into a separable program (a backend object), as the device needs it at draw time.
-struct ShaderProgram {
-    BackendObject program = 0;
-    int stage = 0;                              // 0 vertex, 1 pixel, 2 geometry, 3 hull, 4 domain, 5 compute
-    const xlate::CompiledShader* shader = nullptr;  // owned by the effect
-    std::string label;                          // "GBuffer.fx: VertexShaderFunction (vs_2_0)"
-    bool mayDiscard = false;                    // the GLSL has a `discard` (clip, texkill): read once
-    // Variants that emulate D3D9 fixed-function states (xlate/fixed_function.h, fixed_function_draw.cpp),
-    // by what they emulate, made at the first draw that needs one; a cache on a record the device
-    // otherwise only reads, hence mutable.
-    mutable std::map<int, FixedFunctionVariant> fixedFunctionVariants;
-    // What compute passes may do with this shader (compute_pass.h), read at its first candidate draw.
-    mutable std::shared_ptr<const ComputeAnalysis> computeAnalysis;
-    // Pixel shaders: texture fetches per fragment, counted at the first draw the tally sees.
-    mutable std::optional<xlate::TextureFetches> textureFetches;
-    // The units its sampler2DMS uniforms read (a bit each), asked of the backend at its first draw.
-    mutable std::optional<unsigned> multisampledUnits;
-};
-
-// D3D9 render states GL core lacks, as the last EffectPass::Apply() set them (off unless its pass
-// says otherwise).
-struct PassEmulation {
-    // Set by each draw from GraphicsDevice::FixedFunction (fixed_function_draw.cpp): whether the
-    // alpha test, or another emulated D3D9 fixed-function state, changes what the draw does.
-    bool alphaTest = false;
-    bool fixedFunction = false;
-    bool srgbWrite = false;     // encode into sRGB targets (Backend::setSrgbWrite)
-    const xlate::SourceLocation* srgbWriteAt = nullptr;  // where the pass set it (for the warning)
-    bool* srgbWriteReported = nullptr;  // the applied effect's "said once" flag
-    bool operator==(const PassEmulation&) const = default;
-};
 
 struct GraphicsDevice::Impl {
     Impl(GraphicsDevice& owner, std::unique_ptr<Backend> api) : device(owner), backend(std::move(api)) {}
@@ -272,12 +235,14 @@ struct GraphicsDevice::Impl {
     // known clear (depthTestPassesAll): such a draw draws what no test draws.
     bool depthTestIsMoot(const fxport::DepthStencilState& state);
     bool drawDepthTestMoot = false;  // flush's depthTestIsMoot for the draw it prepared (compute_pass.cpp reads it)
+    bool foldMootDepthTest(const fxport::DepthStencilState& wanted);  // flush: sets drawDepthTestMoot; true: draw with the test off
     // A blend whose every destination is the zero clear executed for this draw, on unsigned-
     // normalized targets, with source factor One and Add, Subtract or Max: src * 1 + 0 * factor is
     // src (factors are finite there), so the draw writes (pending_clear.cpp, blendOverZeroClearIsWrite).
     // flush decides it; compute_pass.cpp reads drawBlend, the blend the draw has.
     bool blendOverZeroClearIsWrite() const;
     bool drawBlendIsWrite = false;
+    void foldBlendOverZeroClear();  // flush: sets drawBlendIsWrite and drawWriteBlend
     fxport::BlendState drawWriteBlend;  // the device's blend with blending off, when drawBlendIsWrite
     const fxport::BlendState& drawBlend() const { return drawBlendIsWrite ? drawWriteBlend : device.BlendState; }
     // executeClear's depth/stencil bits for a bound buffer not made yet: a whole-target clear waits

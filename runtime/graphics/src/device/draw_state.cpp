@@ -43,23 +43,9 @@ void GraphicsDevice::Impl::flush(const char* what) {
     storageBarrier();  // what an earlier dispatch or draw wrote through images or SSBOs, before this draw uses it
     if (boundFramebuffer == 0) bindTargets();
     makeDepthStorageFor(device.DepthStencilState);  // a buffer nothing needed until now (depth_storage.cpp)
-    // A depth test that cannot fail against the known clear and writes nothing (DepthRead against
-    // the far clear: the deferred G-buffer's clear quad) needs neither the clear nor the test: it
-    // draws as with the test off and the clear waits for a draw that reads or writes depth (so a
-    // compute pass can take such a draw; compute_pass.cpp). A buffer not made yet is not attached
-    // (GL passes the test) and its clear already waits on the target (depth_storage.cpp).
     const fxport::DepthStencilState& wanted = device.DepthStencilState;
-    drawDepthTestMoot = wanted.DepthBufferEnable && depthTestIsMoot(wanted);
-    const bool testOff = drawDepthTestMoot && boundDepthStorage()->renderbuffer != 0;
-    // Decided before the clear is executed (it is pending until then), applied after.
-    drawBlendIsWrite = blendOverZeroClearIsWrite();
-    if (drawBlendIsWrite) {
-        drawWriteBlend = device.BlendState;
-        drawWriteBlend.ColorSourceBlend = drawWriteBlend.AlphaSourceBlend = fxport::Blend::One;
-        drawWriteBlend.ColorDestinationBlend = drawWriteBlend.AlphaDestinationBlend = fxport::Blend::Zero;
-        drawWriteBlend.ColorBlendFunction = drawWriteBlend.AlphaBlendFunction = fxport::BlendFunction::Add;
-        ++clearStats.blendsAsWrites;
-    }
+    const bool testOff = foldMootDepthTest(wanted);
+    foldBlendOverZeroClear();  // decided before the clear is executed (it is pending until then), applied after
     resolvePendingClearBeforeDraw(testOff ? fxport::DepthStencilState::None : wanted);
     shadow.setBlend(blendForPixelShader(drawBlend(), shaders[1]->shader->outputTargets));
     if (trackingBoundTargets && drawBlend().blendingEnabled()) blendedSinceMark = true;
@@ -78,6 +64,28 @@ void GraphicsDevice::Impl::flush(const char* what) {
     if (emulation.srgbWrite) reportUnencodedSrgbWrite();
     tallyDraw();
     shadow.settle();
+}
+
+// A depth test that cannot fail against the known clear and writes nothing (DepthRead against
+// the far clear: the deferred G-buffer's clear quad) needs neither the clear nor the test: it
+// draws as with the test off and the clear waits for a draw that reads or writes depth (so a
+// compute pass can take such a draw; compute_pass.cpp). A buffer not made yet is not attached
+// (GL passes the test) and its clear already waits on the target (depth_storage.cpp). Returns
+// whether the draw turns the test off.
+bool GraphicsDevice::Impl::foldMootDepthTest(const fxport::DepthStencilState& wanted) {
+    drawDepthTestMoot = wanted.DepthBufferEnable && depthTestIsMoot(wanted);
+    return drawDepthTestMoot && boundDepthStorage()->renderbuffer != 0;
+}
+
+// A blend onto the zero clear it reads draws as a write (blendOverZeroClearIsWrite): drawBlend().
+void GraphicsDevice::Impl::foldBlendOverZeroClear() {
+    drawBlendIsWrite = blendOverZeroClearIsWrite();
+    if (!drawBlendIsWrite) return;
+    drawWriteBlend = device.BlendState;
+    drawWriteBlend.ColorSourceBlend = drawWriteBlend.AlphaSourceBlend = fxport::Blend::One;
+    drawWriteBlend.ColorDestinationBlend = drawWriteBlend.AlphaDestinationBlend = fxport::Blend::Zero;
+    drawWriteBlend.ColorBlendFunction = drawWriteBlend.AlphaBlendFunction = fxport::BlendFunction::Add;
+    ++clearStats.blendsAsWrites;
 }
 
 // The clip distances the last stage before the rasteriser writes (geometry, else domain, else vertex).

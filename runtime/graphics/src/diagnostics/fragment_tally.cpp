@@ -1,15 +1,13 @@
 // FragmentRuns: GL_SAMPLES_PASSED per run of draws with the same texture fetches per fragment.
 #include "diagnostics/fragment_tally.h"
 
-#include "device/device_impl.h"
-#include "fxport/xlate/compiled_effect.h"
 
 namespace fxport {
 
 FragmentRuns::~FragmentRuns() {
     end();
     for (Run& run : runs_)
-        if (run.query) device_.deleteQuery(run.query);
+        if (run.query) device_.remove(run.query);
 }
 
 void FragmentRuns::beforeDraw(const xlate::TextureFetches& fetches) {
@@ -20,23 +18,23 @@ void FragmentRuns::beforeDraw(const xlate::TextureFetches& fetches) {
     }
     Run run;
     run.fetches = fetches;
-    run.query = device_.createQuery(QueryKind::SamplesPassed);
-    device_.backend->beginSamplesPassed(run.query);
+    run.query = device_.create(QueryKind::SamplesPassed);
+    device_.beginSamplesPassed(run.query);
     runs_.push_back(run);
     open_ = true;
 }
 
 void FragmentRuns::end() {
     if (!open_) return;
-    device_.backend->endSamplesPassed();
+    device_.endSamplesPassed();
     open_ = false;
 }
 
 void FragmentRuns::read(Run& run, bool wait) {
     if (!run.query) return;
-    if (!wait && !device_.backend->queryReady(run.query)) return;
-    run.fragments = double(device_.backend->queryResult(run.query));
-    device_.deleteQuery(run.query);  // results are kept, queries are not: a long run holds few
+    if (!wait && !device_.ready(run.query)) return;
+    run.fragments = double(device_.result(run.query));
+    device_.remove(run.query);  // results are kept, queries are not: a long run holds few
 }
 
 std::size_t FragmentRuns::mark() {
@@ -57,28 +55,6 @@ std::vector<GraphicsDevice::FragmentTally> FragmentRuns::between(std::size_t fro
         out.push_back({runs_[i].fragments, runs_[i].fetches.least, runs_[i].fetches.most, runs_[i].fetches.unbounded});
     }
     return out;
-}
-
-}  // namespace fxport
-
-namespace fxport {
-
-void GraphicsDevice::tallyFragments(bool on) {
-    if (on && !impl_->fragmentTally) impl_->fragmentTally = std::make_shared<FragmentRuns>(*impl_);
-    if (!on) impl_->fragmentTally.reset();
-}
-
-std::size_t GraphicsDevice::fragmentTallyMark() { return impl_->fragmentTally ? impl_->fragmentTally->mark() : 0; }
-
-std::vector<GraphicsDevice::FragmentTally> GraphicsDevice::fragmentTallies(std::size_t from, std::size_t to) {
-    return impl_->fragmentTally ? impl_->fragmentTally->between(from, to) : std::vector<FragmentTally>{};
-}
-
-void GraphicsDevice::Impl::tallyDraw() {
-    if (!fragmentTally || !shaders[1]) return;
-    const ShaderProgram& pixel = *shaders[1];
-    if (!pixel.textureFetches) pixel.textureFetches = pixel.shader ? xlate::countTextureFetches(pixel.shader->glsl) : xlate::TextureFetches{};
-    fragmentTally->beforeDraw(*pixel.textureFetches);
 }
 
 }  // namespace fxport

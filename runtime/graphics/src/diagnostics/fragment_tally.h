@@ -8,6 +8,7 @@
 
 #include "fxport/graphics/graphics_device.h"
 #include "device/backend.h"
+#include "device/device_probes.h"
 #include "fxport/xlate/texture_fetches.h"
 
 namespace fxport {
@@ -32,7 +33,7 @@ private:
     void end();
     void read(Run& run, bool wait);
 
-    GraphicsDevice::Impl& device_;
+    DeviceQueries device_;
     std::vector<Run> runs_;
     std::size_t firstUnread_ = 0;  // runs before it have their results
     bool open_ = false;

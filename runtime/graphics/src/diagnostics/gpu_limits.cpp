@@ -11,7 +11,7 @@
 #include <functional>
 #include <sstream>
 
-#include "device/device_impl.h"
+#include "device/device_probes.h"
 #include "fxport/graphics/errors.h"
 
 namespace fxport {
@@ -44,17 +44,9 @@ double GpuLimits::fillGBps(SurfaceFormat format, bool blended) const {
 }
 
 GpuLimits GpuLimits::Measure(GraphicsDevice& device, int size, int repeats) {
-    GraphicsDevice::Impl& impl = deviceImpl(device);
     GpuLimits limits =
-        impl.backend->measureLimits(std::vector<SurfaceFormat>(std::begin(kFormats), std::end(kFormats)), size, repeats);
+        measureDeviceLimits(device, std::vector<SurfaceFormat>(std::begin(kFormats), std::end(kFormats)), size, repeats);
     limits.renderer = device.rendererName();
-    // Hand the backend back as the device's shadow says it is; what the shadow cannot say, it re-applies.
-    impl.backend->bindSampler(0, impl.boundSamplers[0]);
-    impl.backend->bindTexture(0, impl.boundTextures[0]);
-    impl.backend->bindVertexArray(impl.boundVertexArray);
-    impl.backend->bindPipeline(impl.boundPipeline);
-    impl.boundFramebuffer = 0;  // the next draw or clear binds its targets again
-    impl.shadow.invalidate();   // and sets every fixed-function state
     return limits;
 }
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "device/device_impl.h"
+#include "device/device_probes.h"
 #include "fxport/graphics/errors.h"
 
 namespace fxport {
@@ -30,11 +30,11 @@ double GpuTimer::Section::medianFragments() const { return median(fragments); }
 GpuTimer::GpuTimer(GraphicsDevice& device) : device_(device) {}
 
 GpuTimer::~GpuTimer() {
-    for (BackendObject& q : allQueries_) deviceImpl(device_).deleteQuery(q);
+    for (BackendObject& q : allQueries_) DeviceQueries(device_).remove(q);
     for (auto& p : pending_)
-        if (p->samples) deviceImpl(device_).deleteQuery(p->samples);
+        if (p->samples) DeviceQueries(device_).remove(p->samples);
     for (auto& p : open_)
-        if (p->samples) deviceImpl(device_).deleteQuery(p->samples);
+        if (p->samples) DeviceQueries(device_).remove(p->samples);
 }
 
 std::uint32_t GpuTimer::newQuery() {
@@ -43,7 +43,7 @@ std::uint32_t GpuTimer::newQuery() {
         freeQueries_.pop_back();
         return q;
     }
-    BackendObject q = deviceImpl(device_).createQuery(QueryKind::Timestamp);
+    BackendObject q = DeviceQueries(device_).create(QueryKind::Timestamp);
     allQueries_.push_back(q);
     return q;
 }
@@ -58,16 +58,16 @@ int GpuTimer::sectionIndex(const std::string& name) {
 void GpuTimer::Begin(const std::string& name) {
     if (open_.empty() && frameStart_ == 0) {
         frameStart_ = newQuery();
-        deviceImpl(device_).backend->writeTimestamp(frameStart_);
+        DeviceQueries(device_).writeTimestamp(frameStart_);
     }
     auto p = std::make_unique<Pending>();
     p->section = sectionIndex(name);
-    if (countFragments_ && open_.empty() && !deviceImpl(device_).fragmentTally) {
-        p->samples = deviceImpl(device_).createQuery(QueryKind::SamplesPassed);
-        deviceImpl(device_).backend->beginSamplesPassed(p->samples);
+    if (countFragments_ && open_.empty() && !DeviceQueries(device_).fragmentTallyOn()) {
+        p->samples = DeviceQueries(device_).create(QueryKind::SamplesPassed);
+        DeviceQueries(device_).beginSamplesPassed(p->samples);
     }
     p->begin = newQuery();
-    deviceImpl(device_).backend->writeTimestamp(p->begin);
+    DeviceQueries(device_).writeTimestamp(p->begin);
     open_.push_back(std::move(p));
 }
 
@@ -76,8 +76,8 @@ void GpuTimer::End() {
     std::unique_ptr<Pending> p = std::move(open_.back());
     open_.pop_back();
     p->end = newQuery();
-    deviceImpl(device_).backend->writeTimestamp(p->end);
-    if (p->samples) deviceImpl(device_).backend->endSamplesPassed();
+    DeviceQueries(device_).writeTimestamp(p->end);
+    if (p->samples) DeviceQueries(device_).endSamplesPassed();
     pending_.push_back(std::move(p));
 }
 
@@ -88,7 +88,7 @@ void GpuTimer::EndFrame() {
         p->section = sectionIndex("frame");
         p->begin = frameStart_;
         p->end = newQuery();
-        deviceImpl(device_).backend->writeTimestamp(p->end);
+        DeviceQueries(device_).writeTimestamp(p->end);
         pending_.push_back(std::move(p));
         frameStart_ = 0;
     }
@@ -102,13 +102,13 @@ void GpuTimer::collect(bool wait) {
     std::size_t done = 0;
     for (; done < pending_.size(); ++done) {
         Pending& p = *pending_[done];
-        Backend& backend = *deviceImpl(device_).backend;
-        if (!wait && !backend.queryReady(p.end)) break;
-        const std::uint64_t t0 = backend.queryResult(p.begin), t1 = backend.queryResult(p.end);
+        DeviceQueries queries(device_);
+        if (!wait && !queries.ready(p.end)) break;
+        const std::uint64_t t0 = queries.result(p.begin), t1 = queries.result(p.end);
         sections_[std::size_t(p.section)].milliseconds.push_back(double(t1 - t0) * 1e-6);
         if (p.samples) {
-            sections_[std::size_t(p.section)].fragments.push_back(double(backend.queryResult(p.samples)));
-            deviceImpl(device_).deleteQuery(p.samples);
+            sections_[std::size_t(p.section)].fragments.push_back(double(queries.result(p.samples)));
+            DeviceQueries(device_).remove(p.samples);
         }
         freeQueries_.push_back(p.begin);
         freeQueries_.push_back(p.end);

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "gl/passes/compute_pass.h"
+#include "device/device_impl.h"
 #include "effect/effect_impl.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/graphics_device.h"

@@ -22,7 +22,9 @@
 #include <vector>
 
 #include "effect/constant_block.h"
-#include "device/device_impl.h"
+#include "device/backend.h"
+#include "device/impl_access.h"
+#include "device/shader_program.h"
 #include "fxport/graphics/effect.h"
 #include "fxport/xlate/compiled_effect.h"
 #include "effect/pass_states.h"

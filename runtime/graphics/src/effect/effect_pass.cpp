@@ -1,6 +1,7 @@
 // EffectPass::Apply: what the D3D effect framework does at BeginPass/CommitChanges.
 #include <algorithm>
 
+#include "device/device_impl.h"
 #include "effect/effect_impl.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/graphics_device.h"

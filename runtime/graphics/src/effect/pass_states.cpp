@@ -3,7 +3,7 @@
 
 #include <variant>
 
-#include "device/device_impl.h"
+#include "device/pass_emulation.h"
 #include "effect/effect_impl.h"
 #include "fxport/graphics/graphics_device.h"
 #include "device/sampler_filter.h"
@@ -156,7 +156,7 @@ void applyPassStates(const PassStates& states, const Effect::Impl& e, GraphicsDe
     PassEmulation emulation;
     device.FixedFunction = FixedFunctionState{};
     if (states.rows.empty()) {
-        deviceImpl(device).emulation = emulation;
+        setPassEmulation(device, emulation);
         return;
     }
     FixedFunctionState& fixed = device.FixedFunction;
@@ -252,7 +252,7 @@ void applyPassStates(const PassStates& states, const Effect::Impl& e, GraphicsDe
             break;
         }
     }
-    deviceImpl(device).emulation = emulation;
+    setPassEmulation(device, emulation);
     if (blendTouched) {
         if (!separateAlpha) {
             blend.AlphaSourceBlend = blend.ColorSourceBlend;
