@@ -238,5 +238,90 @@ TEST_F(DdsTexture, Dxt1CubeMapLoadsEveryFaceAndLevel) {
     EXPECT_THROW(TextureCube::FromFile(device(), write("flat.dds", flat)), ArgumentError);
 }
 
+
+// A volume DDS (DDSCAPS2_VOLUME, DDSD_DEPTH): each level's slices follow each other, front to back.
+std::vector<std::uint8_t> volumeHeader(int width, int height, int depth, int levels, const char* fourCC, std::uint32_t bits = 0,
+                                       std::uint32_t r = 0, std::uint32_t g = 0, std::uint32_t b = 0, std::uint32_t a = 0) {
+    std::vector<std::uint8_t> h = header(width, height, levels, fourCC, bits, r, g, b, a);
+    put32(h, 8, 0x801007 | (levels > 1 ? 0x20000 : 0));
+    put32(h, 24, std::uint32_t(depth));
+    put32(h, 112, 0x200000);
+    return h;
+}
+
+// 4x2x3 A8R8G8B8 with two levels stored (24 texels, then 2x1x1): every texel distinct, read back
+// exactly; the third level (1x1x1) is the rounded mean of level 1's two texels.
+TEST_F(DdsTexture, VolumeLoadsAsTexture3DLevelByLevel) {
+    std::vector<std::uint8_t> file = volumeHeader(4, 2, 3, 2, nullptr, 32, 0xFF0000, 0xFF00, 0xFF, 0xFF000000u);
+    std::vector<Color> level0, level1;
+    for (int i = 0; i < 24; ++i) {
+        const Color c(std::uint8_t(10 * i), std::uint8_t(255 - 7 * i), std::uint8_t(i * i % 256), std::uint8_t(100 + i));
+        level0.push_back(c);
+        for (std::uint8_t byte : {c.B, c.G, c.R, c.A}) file.push_back(byte);  // slice z = i / 8, row (i / 4) % 2, column i % 4
+    }
+    level1 = {Color(1, 2, 3, 4), Color(200, 100, 50, 254)};
+    for (const Color& c : level1)
+        for (std::uint8_t byte : {c.B, c.G, c.R, c.A}) file.push_back(byte);
+    const auto volume = Texture3D::FromFile(device(), write("volume.dds", file));
+    EXPECT_EQ(volume->Width(), 4);
+    EXPECT_EQ(volume->Height(), 2);
+    EXPECT_EQ(volume->Depth(), 3);
+    ASSERT_EQ(volume->LevelCount(), 3);
+    std::vector<Color> got(24);
+    volume->getData(0, got.data(), got.size() * sizeof(Color));
+    EXPECT_EQ(got, level0);
+    got.resize(2);
+    volume->getData(1, got.data(), got.size() * sizeof(Color));
+    EXPECT_EQ(got, level1);
+    got.resize(1);
+    volume->getData(2, got.data(), got.size() * sizeof(Color));
+    EXPECT_EQ(got[0], Color(101, 51, 27, 129));  // (1 + 200 + 1) / 2, (2 + 100 + 1) / 2, (3 + 50 + 1) / 2, (4 + 254 + 1) / 2
+}
+
+// 4x4x2 DXT1: one block per slice, the second in the three-colour mode.
+TEST_F(DdsTexture, Dxt1VolumeDecodesEverySlice) {
+    std::vector<std::uint8_t> file = volumeHeader(4, 4, 2, 1, "DXT1");
+    const std::uint8_t slices[2][8] = {{0x00, 0xF8, 0x1F, 0x00, 0xE4, 0x1B, 0x4E, 0xB1}, {0x1F, 0x00, 0x00, 0xF8, 0x1B, 0xE4, 0xB1, 0x4E}};
+    std::vector<Color> expected;
+    for (const auto& block : slices) {
+        file.insert(file.end(), block, block + 8);
+        const std::vector<Color> decoded = cpuBc1(block);
+        expected.insert(expected.end(), decoded.begin(), decoded.end());
+    }
+    const auto volume = Texture3D::FromFile(device(), write("dxt1-volume.dds", file));
+    ASSERT_EQ(volume->Depth(), 2);
+    std::vector<Color> got(32);
+    volume->GetData(got.data(), got.size());
+    EXPECT_EQ(got, expected);
+}
+
+TEST_F(DdsTexture, VolumesAndFlatTexturesAreLoadedByTheirOwnClass) {
+    std::vector<std::uint8_t> volume = volumeHeader(4, 4, 2, 1, "DXT1");
+    volume.resize(volume.size() + 8, 0);  // slice 1's block is missing
+    const std::string truncated = write("truncated-volume.dds", volume);
+    try {
+        Texture3D::FromFile(device(), truncated);
+        ADD_FAILURE() << "loaded";
+    } catch (const ArgumentError& e) {
+        EXPECT_NE(std::string(e.what()).find("level 0 slice 1 needs 8 bytes"), std::string::npos) << e.what();
+    }
+    volume.resize(volume.size() + 8, 0);
+    const std::string whole = write("volume.dds", volume);
+    try {
+        Texture2D::FromFile(device(), whole);
+        ADD_FAILURE() << "loaded";
+    } catch (const ArgumentError& e) {
+        EXPECT_NE(std::string(e.what()).find("load it as Texture3D"), std::string::npos) << e.what();
+    }
+    std::vector<std::uint8_t> flat = header(4, 4, 1, "DXT1");
+    flat.resize(flat.size() + 8, 0);
+    try {
+        Texture3D::FromFile(device(), write("flat.dds", flat));
+        ADD_FAILURE() << "loaded";
+    } catch (const ArgumentError& e) {
+        EXPECT_NE(std::string(e.what()).find("not a volume texture (a 2D texture; load it as Texture2D)"), std::string::npos) << e.what();
+    }
+}
+
 }  // namespace
 }  // namespace fxport

@@ -637,9 +637,11 @@ TEST_F(Containment, ShadersCompiledInParallelMatchOneByOne) {
     std::string crashing = write("crash.fx",
         "float4 VS(float4 p : POSITION0) : POSITION0 { return p; }\n"
         "float4 PS() : COLOR0 { return float4(1, 1, 1, 1); }\n"
-        // glslang 12 dies (SIGSEGV) on a geometry shader reading SV_ClipDistance inputs.
-        "struct V { float4 pos : SV_Position; float3 d : SV_ClipDistance0; };\n"
-        "V VS4(float4 p : POSITION0) { V v; v.pos = p; v.d = p.xyz; return v; }\n"
+        // glslang 12 dies (SIGSEGV) on a geometry shader reading SV_ClipDistance inputs held in a
+        // struct nested in its input struct (rewrite/geometry_clip_inputs moves direct members only).
+        "struct C { float3 d : SV_ClipDistance0; };\n"
+        "struct V { float4 pos : SV_Position; C c; };\n"
+        "V VS4(float4 p : POSITION0) { V v; v.pos = p; v.c.d = p.xyz; return v; }\n"
         "[maxvertexcount(3)] void GSBad(triangle V i[3], inout TriangleStream<V> s) {\n"
         "    for (int k = 0; k < 3; k++) s.Append(i[k]); }\n"
         "float4 PS4(V v) : SV_Target { return float4(1, 1, 1, 1); }\n"

@@ -1,5 +1,7 @@
 #include "glsl/spirv_to_glsl.h"
 
+#include "glsl/arrayed_clip_inputs.h"
+
 #include "spirv/fetch_offsets.h"
 #include "spirv/integer_matrices.h"
 #include "spirv/live_uniform_bytes.h"
@@ -517,6 +519,16 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
                     if (!t.array.empty()) out.clipDistances = static_cast<int>(t.array[0]);
                 }
         out.glsl = sampleMaskInFromGl(compiler.compile());
+        if (stage == ShaderStage::Geometry) {
+            int clip = 0, cull = 0;  // per vertex: the inner of the input's two dimensions
+            for (const auto& b : res.builtin_inputs) {
+                const auto& t = compiler.get_type(b.value_type_id);
+                const int inner = t.array.size() >= 2 ? static_cast<int>(t.array.front()) : 0;
+                if (b.builtin == spv::BuiltInClipDistance) clip = inner;
+                if (b.builtin == spv::BuiltInCullDistance) cull = inner;
+            }
+            out.glsl = geometryClipInputsRespelled(out.glsl, clip, cull);
+        }
         out.writesDepth = out.glsl.find("gl_FragDepth") != std::string::npos;
     } catch (const std::exception& e) {
         out.error = e.what();

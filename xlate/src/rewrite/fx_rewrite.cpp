@@ -1,5 +1,6 @@
 #include "rewrite/fx_rewrite.h"
 
+#include "rewrite/geometry_clip_inputs.h"
 #include "rewrite/geometry_output_stream.h"
 
 #include "rewrite/array_sizes.h"
@@ -189,6 +190,7 @@ std::string RewrittenEffect::hlslForGeometryShader(const std::string& entry, con
     std::vector<TextEdit> all = edits;
     all.insert(all.end(), extra.begin(), extra.end());
     for (auto& e : geometryEntryOutputStreams(*syntax, entry)) all.push_back(std::move(e));
+    for (auto& e : geometryEntryClipInputs(*syntax, entry)) all.push_back(std::move(e));
     for (const auto& f : syntax->functions) {
         if (!f.hasStreamParameter || keep.count(f.name) || f.declaration.empty()) continue;
         const Token& first = syntax->tokens[f.declaration.begin];

@@ -13,6 +13,7 @@ namespace fxport::detail {
 namespace {
 
 constexpr int kMaxSide = 16384;  // D3D11's largest Texture2D
+constexpr int kMaxVolumeDepth = 2048;  // D3D11's largest Texture3D (Texture3D checks width and height)
 
 std::uint32_t u32(std::span<const std::uint8_t> b, std::size_t at) {
     return std::uint32_t(b[at]) | std::uint32_t(b[at + 1]) << 8 | std::uint32_t(b[at + 2]) << 16 | std::uint32_t(b[at + 3]) << 24;
@@ -173,7 +174,7 @@ DdsImage decodeDds(std::span<const std::uint8_t> b, const std::string& name) {
         throw ArgumentError(name + ": " + std::to_string(u32(b, 16)) + "x" + std::to_string(u32(b, 12)) + " is not a size fxport loads (1.." +
                             std::to_string(kMaxSide) + ")");
     const std::uint32_t caps2 = u32(b, 112);
-    if (caps2 & 0x200000) throw ArgumentError(name + ": a volume texture; fxport loads 2D textures and cube maps from DDS");
+    image.volume = (caps2 & 0x200000) != 0;  // DDSCAPS2_VOLUME
     image.cube = (caps2 & 0x200) != 0;
     std::size_t offset = 128;
     Format format;
@@ -181,24 +182,36 @@ DdsImage decodeDds(std::span<const std::uint8_t> b, const std::string& name) {
         if (b.size() < 148) throw ArgumentError(name + ": truncated DX10 header");
         format = formatOfDxgi(u32(b, 128), name);
         image.cube = image.cube || (u32(b, 136) & 0x4);
+        image.volume = image.volume || u32(b, 132) == 4;  // D3D10_RESOURCE_DIMENSION_TEXTURE3D
         if (u32(b, 140) > 1) throw ArgumentError(name + ": a texture array of " + std::to_string(u32(b, 140)) + "; fxport loads one texture");
         offset = 148;
     } else {
         format = formatOfPixelFormat(b, name);
     }
-    const int fullChain = int(std::bit_width(unsigned(std::max(image.width, image.height))));  // levels down to 1x1
+    if (image.volume) {
+        image.depth = int(std::min<std::uint32_t>(u32(b, 24), INT_MAX));
+        if (image.cube || image.depth < 1 || image.depth > kMaxVolumeDepth)
+            throw ArgumentError(name + ": a volume texture " + (image.cube ? std::string("that is also a cube map") : "of depth " + std::to_string(u32(b, 24))) +
+                                " is not one fxport loads (depth 1.." + std::to_string(kMaxVolumeDepth) + ")");
+    }
+    const int fullChain = int(std::bit_width(unsigned(std::max({image.width, image.height, image.depth}))));  // levels down to 1x1x1
     const std::uint32_t stored = (u32(b, 8) & 0x20000) ? u32(b, 28) : 1;  // DDSD_MIPMAPCOUNT
     image.levelCount = int(std::clamp<std::uint32_t>(stored, 1, std::uint32_t(fullChain)));
     for (int face = 0; face < (image.cube ? 6 : 1); ++face)
         for (int level = 0; level < image.levelCount; ++level) {
             const int w = std::max(1, image.width >> level), h = std::max(1, image.height >> level);
-            const std::size_t bytes = levelBytes(format, w, h);
-            if (offset > b.size() || b.size() - offset < bytes)
-                throw ArgumentError(name + ": truncated: level " + std::to_string(level) + (image.cube ? " of face " + std::to_string(face) : "") +
-                                    " needs " + std::to_string(bytes) + " bytes at offset " + std::to_string(offset) + ", the file has " +
-                                    std::to_string(b.size()));
-            image.levels.push_back(decodeLevel(format, b.data() + offset, w, h));
-            offset += bytes;
+            const std::size_t bytes = levelBytes(format, w, h);  // of one slice; a volume's slices follow each other
+            std::vector<Color> texels;
+            for (int slice = 0; slice < std::max(1, image.depth >> level); ++slice) {
+                if (offset > b.size() || b.size() - offset < bytes)
+                    throw ArgumentError(name + ": truncated: level " + std::to_string(level) + (image.cube ? " of face " + std::to_string(face) : "") +
+                                        (image.volume ? " slice " + std::to_string(slice) : "") + " needs " + std::to_string(bytes) +
+                                        " bytes at offset " + std::to_string(offset) + ", the file has " + std::to_string(b.size()));
+                std::vector<Color> one = decodeLevel(format, b.data() + offset, w, h);
+                texels.insert(texels.end(), one.begin(), one.end());
+                offset += bytes;
+            }
+            image.levels.push_back(std::move(texels));
         }
     return image;
 }

@@ -18,12 +18,14 @@ struct DdsImage {
     int width = 0;
     int height = 0;
     bool cube = false;                        // six faces (+X, -X, +Y, -Y, +Z, -Z), each with `levels`
+    bool volume = false;                      // a volume (DDSCAPS2_VOLUME / DX10 TEXTURE3D): `depth` slices
+    int depth = 1;                            // each level holds max(1, depth >> level) slices, front to back
     std::vector<std::vector<Color>> levels;   // face-major: face 0's levels, then face 1's ...
     int levelCount = 1;                       // mip levels per face, as stored
 };
 
 // Throws ArgumentError naming `path` and what is wrong (truncated data, a format not listed above,
-// volume textures, a header that does not add up).
+// a header that does not add up).
 DdsImage readDds(const std::string& path);
 // The same from bytes already read; `name` is for messages.
 DdsImage decodeDds(std::span<const std::uint8_t> bytes, const std::string& name);

@@ -124,6 +124,7 @@ namespace {
 std::unique_ptr<Texture2D> textureFromDds(fxport::GraphicsDevice& device, const std::string& path) {
     detail::DdsImage dds = detail::readDds(path);
     if (dds.cube) throw ArgumentError("Texture2D::FromFile: '" + path + "' is a cube map (six faces); a Texture2D has one");
+    if (dds.volume) throw ArgumentError("Texture2D::FromFile: '" + path + "' is a volume texture (depth " + std::to_string(dds.depth) + "); load it as Texture3D");
     auto texture = std::make_unique<Texture2D>(device, dds.width, dds.height, dds.levelCount > 1, SurfaceFormat::Color);
     texture->Name = path;
     std::vector<Color> level;

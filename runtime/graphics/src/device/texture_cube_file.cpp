@@ -34,7 +34,8 @@ void TextureCube::getData(CubeMapFace face, int level, void* data, std::size_t b
 
 std::unique_ptr<TextureCube> TextureCube::FromFile(fxport::GraphicsDevice& device, const std::string& path) {
     detail::DdsImage dds = detail::readDds(path);  // throws ArgumentError naming the file
-    if (!dds.cube) throw ArgumentError("TextureCube::FromFile: '" + path + "' is not a cube map (a 2D texture; load it as Texture2D)");
+    if (!dds.cube)
+        throw ArgumentError("TextureCube::FromFile: '" + path + "' is not a cube map (" + (dds.volume ? "a volume texture; load it as Texture3D" : "a 2D texture; load it as Texture2D") + ")");
     if (dds.width != dds.height)
         throw ArgumentError("TextureCube::FromFile: '" + path + "' has " + std::to_string(dds.width) + "x" + std::to_string(dds.height) +
                             " faces; a cube's are square");

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
+#include <string>
 #include <vector>
 
 #include "fxport/graphics/texture.h"
@@ -15,6 +17,11 @@ public:
     Texture3D(fxport::GraphicsDevice& device, int width, int height, int depth, bool mipMap = false,
               SurfaceFormat format = SurfaceFormat::Color);
     ~Texture3D() override;
+
+    // A volume .dds (DDSCAPS2_VOLUME or DX10 TEXTURE3D; the formats Texture2D::FromFile reads), decoded
+    // to SurfaceFormat::Color with its mip levels as stored; a partial chain is completed by averaging
+    // 2x2x2 texels. Throws ArgumentError naming the file (a 2D texture or cube map included).
+    static std::unique_ptr<Texture3D> FromFile(fxport::GraphicsDevice& device, const std::string& path);
 
     int Width() const { return width_; }
     int Height() const { return height_; }
