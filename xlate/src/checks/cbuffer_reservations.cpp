@@ -7,6 +7,7 @@
 #include <cctype>
 
 #include "checks/fxc_checks.h"
+#include "hlsl/aggregate_components.h"
 #include "hlsl/hlsl_types.h"
 
 namespace fxport::xlate {
@@ -68,11 +69,8 @@ private:
             }
         }
         if (!m.name) m.name = lastName(begin, end);
-        static const char* const kSamplers[] = {"sampler", "sampler1D", "sampler2D", "sampler3D", "samplerCUBE", "SamplerState",
-                                                "SamplerComparisonState"};
         const size_t type = firstAfterModifiers(begin, end);
-        for (const char* k : kSamplers)
-            if (type < end && t_[type].is(k)) m.sampler = true;
+        m.sampler = type < end && resourceRegisterClass(t_[type].text) == 's';
         return m;
     }
 

@@ -53,9 +53,17 @@ bool aggregateComponents(const EffectSyntax& syntax, const std::string& type, co
 
 bool isResourceType(const std::string& type) {
     for (const char* prefix : {"Texture", "texture", "sampler", "Sampler", "Buffer", "RWBuffer", "RWTexture", "StructuredBuffer",
-                               "RWStructuredBuffer", "ByteAddressBuffer", "RWByteAddressBuffer"})
+                               "RWStructuredBuffer", "ByteAddressBuffer", "RWByteAddressBuffer", "AppendStructuredBuffer",
+                               "ConsumeStructuredBuffer"})
         if (type.rfind(prefix, 0) == 0) return true;
     return false;
+}
+
+char resourceRegisterClass(const std::string& type) {
+    if (!isResourceType(type)) return 0;
+    if (type.rfind("sampler", 0) == 0 || type.rfind("Sampler", 0) == 0) return 's';
+    if (type.rfind("RW", 0) == 0 || type.rfind("Append", 0) == 0 || type.rfind("Consume", 0) == 0) return 'u';
+    return 't';
 }
 
 }  // namespace fxport::xlate

@@ -26,5 +26,8 @@ bool aggregateComponents(const EffectSyntax& syntax, const std::string& type, co
 
 // Texture, sampler and buffer types (`Texture2D`, `sampler`, `RWStructuredBuffer<float>` ...).
 bool isResourceType(const std::string& type);
+// The register class a resource type binds to: 's' a sampler, 'u' a read-write view (RW*,
+// Append/ConsumeStructuredBuffer), 't' the others; 0 for a type that is no resource.
+char resourceRegisterClass(const std::string& type);
 
 }  // namespace fxport::xlate

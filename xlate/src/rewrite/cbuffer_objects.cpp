@@ -6,25 +6,11 @@
 
 #include "fx/lexer.h"
 #include "fx/text_util.h"
+#include "hlsl/aggregate_components.h"
 
 namespace fxport::xlate {
 
 namespace {
-
-// The register class of an object type ('t', 's' or 'u'); 0 for a type that is no object.
-char registerClassOf(const std::string& type) {
-    static const char* const kTextures[] = {"Texture1D", "Texture2D", "Texture3D", "TextureCube", "Texture1DArray", "Texture2DArray",
-                                            "TextureCubeArray", "Texture2DMS", "Texture2DMSArray", "Buffer", "StructuredBuffer",
-                                            "ByteAddressBuffer", "texture", "texture1D", "texture2D", "texture3D", "textureCUBE"};
-    static const char* const kSamplers[] = {"sampler", "sampler1D", "sampler2D", "sampler3D", "samplerCUBE", "SamplerState",
-                                            "SamplerComparisonState"};
-    for (const char* t : kTextures)
-        if (type == t) return 't';
-    for (const char* s : kSamplers)
-        if (iequals(type, s)) return 's';
-    if (type.rfind("RW", 0) == 0 || type == "AppendStructuredBuffer" || type == "ConsumeStructuredBuffer") return 'u';
-    return 0;
-}
 
 bool isModifier(const std::string& s) {
     return s == "uniform" || s == "const" || s == "static" || s == "extern" || s == "shared" || s == "volatile" || s == "globallycoherent";
@@ -69,7 +55,7 @@ private:
             if (end(last)) return last;
             size_t type = first;
             while (type < last && t_[type].isIdent() && isModifier(t_[type].text)) ++type;
-            const char cls = type < last ? registerClassOf(t_[type].text) : 0;
+            const char cls = type < last ? resourceRegisterClass(t_[type].text) : 0;
             if (cls && t_[last].is(";")) {
                 moved += withoutForeignPlacement(first, last, cls) + " ";
                 removals.push_back({t_[first].offset, t_[last].end, ""});
