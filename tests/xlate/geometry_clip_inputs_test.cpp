@@ -62,3 +62,41 @@ TEST(GeometryClipInputs, ClipDistancesInTheInputStructCompileAndLink) {
 TEST(GeometryClipInputs, CullDistancesInTheInputStructCompileAndLink) {
     expectCompilesAndLinks("SV_CullDistance", "float3", "gl_CullDistance");
 }
+
+TEST(GeometryClipInputs, OneComponentCullDistanceCompilesAndLinks) {
+    expectCompilesAndLinks("SV_CullDistance", "float1", "gl_CullDistance");
+}
+
+// Clip and cull distances under several semantic indices in one struct: the GS reads each from
+// the place the VS's packed outputs put it (clip_distance_packing.h: in order of semantic index).
+TEST(GeometryClipInputs, SeveralClipAndCullSemanticsReadFromThePackedPlaces) {
+    const std::string text =
+        "struct V { float4 pos : SV_Position; float2 c0 : SV_ClipDistance0; float3 c1 : SV_ClipDistance1;\n"
+        "           float2 k1 : SV_CullDistance1; float1 k0 : SV_CullDistance0; };\n"
+        "V VS(float4 pos : POSITION) { V v; v.pos = pos; v.c0 = pos.xy; v.c1 = pos.xyz; v.k1 = pos.zw; v.k0 = pos.w; return v; }\n"
+        "[maxvertexcount(3)]\n"
+        "void GS(triangle V input[3], inout TriangleStream<V> stream) {\n"
+        "    for (int i = 0; i < 3; i++) { V o = input[i]; stream.Append(o); } }\n"
+        "float4 PS(V v) : SV_Target { return 1; }\n"
+        "technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS()));\n"
+        "    SetGeometryShader(CompileShader(gs_4_0, GS())); SetPixelShader(CompileShader(ps_4_0, PS())); } }\n";
+    CompileOptions o;
+    o.useCache = false;
+    CompiledEffect e = compileEffectSource(text, "virtual/GsClips.fx", o);
+    const Pass& p = e.techniques.at(0).passes.at(0);
+    ASSERT_TRUE(p.valid);
+    const std::string& vs = e.shaders.at(size_t(p.vertexShader.shaders.at(0))).glsl;
+    const std::string& gs = e.shaders.at(size_t(p.geometryShader.shaders.at(0))).glsl;
+    // Five clip and three cull distances per vertex on both sides of the link, no holes.
+    EXPECT_NE(vs.find("float gl_ClipDistance[5]"), std::string::npos) << vs;
+    EXPECT_NE(vs.find("float gl_CullDistance[3]"), std::string::npos) << vs;
+    EXPECT_NE(gs.find("gl_in[2].gl_ClipDistance[4]"), std::string::npos) << gs;
+    EXPECT_NE(gs.find("gl_in[2].gl_CullDistance[2]"), std::string::npos) << gs;
+    EXPECT_EQ(gs.find("gl_ClipDistance[6]"), std::string::npos) << gs;
+    fxport::test::sharedTestContext();
+    using S = fxport::test::GlslStageSource;
+    EXPECT_EQ(fxport::test::compileAndLinkSeparable({{S::Vertex, vs},
+                                                    {S::Geometry, gs},
+                                                    {S::Fragment, e.shaders.at(size_t(p.pixelShader.shaders.at(0))).glsl}}),
+              "");
+}

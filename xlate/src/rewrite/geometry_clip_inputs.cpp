@@ -2,16 +2,78 @@
 // (geometry_clip_inputs.h).
 #include "rewrite/geometry_clip_inputs.h"
 
+#include <algorithm>
 #include <cctype>
 
 namespace fxport::xlate {
 
 namespace {
 
-bool isClipOrCull(const std::string& semantic) {
+// The kind ('c' clip, 'k' cull, 0 neither) and semantic index of a semantic.
+std::pair<char, int> clipOrCull(const std::string& semantic) {
     std::string s;
     for (char c : semantic) s += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return s.rfind("SV_CLIPDISTANCE", 0) == 0 || s.rfind("SV_CULLDISTANCE", 0) == 0;
+    for (const auto& [prefix, kind] : {std::pair<std::string, char>{"SV_CLIPDISTANCE", 'c'}, {"SV_CULLDISTANCE", 'k'}}) {
+        if (s.rfind(prefix, 0) != 0) continue;
+        const std::string digits = s.substr(prefix.size());
+        if (digits.empty()) return {kind, 0};
+        if (digits.size() > 1 || !std::isdigit(static_cast<unsigned char>(digits[0]))) return {0, 0};
+        return {kind, digits[0] - '0'};
+    }
+    return {0, 0};
+}
+
+bool isClipOrCull(const std::string& semantic) { return clipOrCull(semantic).first != 0; }
+
+// Components of a clip/cull member's type (float, float1 .. float4), 0 for any other type.
+int floatComponents(const std::string& type) {
+    if (type == "float") return 1;
+    if (type.size() == 6 && type.rfind("float", 0) == 0 && type[5] >= '1' && type[5] <= '4') return type[5] - '0';
+    return 0;
+}
+
+// One register's worth of a clip/cull member: `to` (the struct member or array element to
+// assign, after "input[v].") takes `count` components, in D3D's order of semantic index.
+struct ClipPart {
+    int semanticIndex = 0;
+    std::string to;
+    int count = 0;
+    bool vector = false;
+};
+
+// The parts of member `m` (an array member takes one semantic index per element, as D3D does);
+// false when its type is not a float scalar or vector, or it is an array of more than one rank.
+bool clipParts(const FxStructMember& m, std::vector<ClipPart>& parts) {
+    const int n = floatComponents(m.type);
+    if (n == 0 || m.arrayDims.size() > 1) return false;
+    const int base = clipOrCull(m.semantic).second;
+    const bool vector = m.type != "float" && m.type != "float1";
+    if (m.arrayDims.empty()) {
+        parts.push_back({base, m.name, n, vector});
+        return true;
+    }
+    for (int j = 0; j < m.arrayDims[0]; ++j) parts.push_back({base + j, m.name + "[" + std::to_string(j) + "]", n, vector});
+    return true;
+}
+
+// `input[fxport_v].to = floatN(param[fxport_v][o], ...);` for each part, from offset 0 up.
+std::string assembleParts(std::vector<ClipPart> parts, const std::string& input, const std::string& param) {
+    std::stable_sort(parts.begin(), parts.end(), [](const ClipPart& a, const ClipPart& b) { return a.semanticIndex < b.semanticIndex; });
+    std::string code;
+    int offset = 0;
+    for (const ClipPart& part : parts) {
+        std::string value = part.vector ? "float" + std::to_string(part.count) + "(" : "";
+        for (int c = 0; c < part.count; ++c)
+            value += std::string(c ? ", " : "") + param + "[fxport_v][" + std::to_string(offset++) + "]";
+        code += " " + input + "[fxport_v]." + part.to + " = " + value + (part.vector ? ")" : "") + ";";
+    }
+    return code;
+}
+
+int totalComponents(const std::vector<ClipPart>& parts) {
+    int n = 0;
+    for (const ClipPart& p : parts) n += p.count;
+    return n;
 }
 
 std::string dims(const std::vector<int>& arrayDims) {
@@ -66,21 +128,29 @@ std::vector<TextEdit> geometryEntryClipInputs(const EffectSyntax& syntax, const 
         std::string params = prefix + rest + " " + rest + "_" + p.name + "[" + n + "]";
         structs += "struct " + rest + " {";
         assembly += " " + s->name + " " + p.name + "[" + n + "]; for (int fxport_v = 0; fxport_v < " + n + "; ++fxport_v) {";
+        std::vector<ClipPart> clips, culls;
+        bool known = true;
         for (const auto& m : s->members) {
-            std::string to = " " + p.name + "[fxport_v]." + m.name + " = ";
-            if (isClipOrCull(m.semantic)) {
-                std::string param = "fxport_gsclip_" + p.name + "_" + m.name;
-                // A scalar gets an inner [1]: as a plain float[n] SPIRV-Cross sizes gl_in's
-                // gl_ClipDistance n, not the 1 the previous stage writes, and GL refuses the link.
-                const bool scalar = m.type == "float" && m.arrayDims.empty();
-                params += ", " + prefix + m.type + " " + param + "[" + n + "]" + (scalar ? "[1]" : dims(m.arrayDims)) + " : " + m.semantic;
-                assembly += to + param + "[fxport_v]" + (scalar ? "[0];" : ";");
+            const char kind = clipOrCull(m.semantic).first;
+            if (kind) {
+                known &= clipParts(m, kind == 'c' ? clips : culls);
                 continue;
             }
             std::string mods;
             for (const auto& mod : m.modifiers) mods += mod + " ";
             structs += " " + mods + m.type + " " + m.name + dims(m.arrayDims) + (m.semantic.empty() ? "" : " : " + m.semantic) + ";";
-            assembly += to + rest + "_" + p.name + "[fxport_v]." + m.name + ";";
+            assembly += " " + p.name + "[fxport_v]." + m.name + " = " + rest + "_" + p.name + "[fxport_v]." + m.name + ";";
+        }
+        if (!known) return {};
+        // All clip distances as one arrayed input (and all cull distances as another), packed in
+        // order of semantic index as the previous stage's outputs are (clip_distance_packing.h):
+        // glslang mislays a second arrayed clip input, and it and SPIRV-Cross fail on an arrayed
+        // float1 one.
+        for (const auto& [parts, kind] : {std::pair{&clips, std::string("Clip")}, std::pair{&culls, std::string("Cull")}}) {
+            if (parts->empty()) continue;
+            const std::string param = "fxport_gs" + kind + "_" + p.name;
+            params += ", " + prefix + "float " + param + "[" + n + "][" + std::to_string(totalComponents(*parts)) + "] : SV_" + kind + "Distance0";
+            assembly += assembleParts(*parts, p.name, param);
         }
         structs += " }; ";
         assembly += " }";
