@@ -147,6 +147,50 @@ void cs(uint i : SV_DispatchThreadID) { Out.Store(i * 4, In.Load(i * 4) + 1000);
     for (std::uint32_t w = 0; w < 16; ++w) EXPECT_EQ(got[w], w >= 8 && w < 12 ? in[w - 4] + 1000 : 0u) << "word " << w;
 }
 
+// D3D's GetDimensions of a byte-address buffer is its view's size in bytes, not in words (glslang
+// answers the count of uints); through a function parameter too.
+TEST(D3D11BufferRange, RawViewsReportTheirSizeInBytes) {
+    Device d;
+    const std::vector<std::uint32_t> in = counting(16, 7), zeros(16, 0);
+    const UINT rawMisc = D3D11_RESOURCE_MISC_BUFFER_ALLOW_RAW_VIEWS;
+    ComPtr<ID3D11Buffer> source = makeBuffer(d, in.data(), 64, D3D11_BIND_SHADER_RESOURCE, rawMisc);
+    ComPtr<ID3D11Buffer> target = makeBuffer(d, zeros.data(), 64, D3D11_BIND_UNORDERED_ACCESS, rawMisc);
+    ASSERT_TRUE(source && target);
+    D3D11_SHADER_RESOURCE_VIEW_DESC sd;
+    sd.Format = DXGI_FORMAT_R32_TYPELESS;
+    sd.ViewDimension = D3D11_SRV_DIMENSION_BUFFEREX;
+    sd.BufferEx.FirstElement = 4;
+    sd.BufferEx.NumElements = 8;
+    sd.BufferEx.Flags = D3D11_BUFFEREX_SRV_FLAG_RAW;
+    ComPtr<ID3D11ShaderResourceView> srv;
+    ASSERT_EQ(d.device->CreateShaderResourceView(source.Get(), &sd, srv.GetAddressOf()), S_OK) << lastError();
+    D3D11_UNORDERED_ACCESS_VIEW_DESC ud;
+    ud.Format = DXGI_FORMAT_R32_TYPELESS;
+    ud.ViewDimension = D3D11_UAV_DIMENSION_BUFFER;
+    ud.Buffer.FirstElement = 0;
+    ud.Buffer.NumElements = 16;
+    ud.Buffer.Flags = D3D11_BUFFER_UAV_FLAG_RAW;
+    ComPtr<ID3D11UnorderedAccessView> uav;
+    ASSERT_EQ(d.device->CreateUnorderedAccessView(target.Get(), &ud, uav.GetAddressOf()), S_OK) << lastError();
+    dispatch(d, R"(
+ByteAddressBuffer In : register(t0);
+RWByteAddressBuffer Out : register(u0);
+uint sizeOf(ByteAddressBuffer b) { uint n; b.GetDimensions(n); return n; }
+[numthreads(1, 1, 1)]
+void cs() {
+    uint a, b;
+    In.GetDimensions(a);
+    Out.GetDimensions(b);
+    Out.Store3(0, uint3(a, b, sizeOf(In)));
+})",
+             srv.Get(), uav.Get());
+    const std::vector<std::uint32_t> got = readBuffer<std::uint32_t>(d, target.Get());
+    ASSERT_EQ(got.size(), 16u);
+    EXPECT_EQ(got[0], 32u) << "the SRV's 8 words";
+    EXPECT_EQ(got[1], 64u) << "the UAV's 16 words";
+    EXPECT_EQ(got[2], 32u) << "through a function parameter";
+}
+
 // A first element off GL's alignment: E_NOTIMPL naming the field, its byte offset and the rule.
 TEST(D3D11BufferRange, UnalignedFirstElementIsRefusedByName) {
     Device d;

@@ -7,6 +7,7 @@
 #include <regex>
 
 #include "frontend/glslang_process.h"
+#include "spirv/byte_address_lengths.h"
 #include "spirv/clip_distance_packing.h"
 #include "spirv/structured_buffer_layout.h"
 #include "rewrite/keyword_identifiers.h"
@@ -133,6 +134,7 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
     }
     runSpirvPasses(out.words, {sm2or3 ? SpirvPass(integerDivisionInFloats) : nullptr,  // after folding: fxc folds constants exactly
                                packClipCullDistances, packStructuredBuffersTightly,
+                               [&](ParsedSpirv& m) { return byteAddressLengthsInBytes(m, byteAddressBufferNames(*request.source)); },
                                request.hullPartitioning == "pow2" ? SpirvPass(roundTessFactorsToPowersOfTwo) : nullptr});
     return out;
 }
