@@ -218,6 +218,31 @@ std::string interpolationPrefix(const Leaf& leaf) {
     return out;
 }
 
+bool has(const std::vector<std::string>& v, const char* s);
+
+// Whether a pixel shader with these inputs runs once per sample: D3D's rule, an SV_SampleIndex
+// input or one declared `sample`.
+bool runsPerSample(const std::vector<Leaf>& inputs) {
+    for (const Leaf& leaf : inputs)
+        if (leaf.semanticBase == "SV_SAMPLEINDEX" || has(leaf.interpolation, "sample")) return true;
+    return false;
+}
+
+// A float input of a shader that runs per sample, read where D3D evaluates it. GL evaluates every
+// input (and gl_FragCoord) of such a shader at the sample's position; D3D only those declared
+// `sample`, the others at the pixel centre, or the centroid for `centroid` ones.
+std::string evaluatedAsD3D(const Leaf& leaf, const std::string& input) {
+    if (has(leaf.interpolation, "sample") || has(leaf.interpolation, "nointerpolation")) return input;
+    if (has(leaf.interpolation, "centroid")) return "EvaluateAttributeAtCentroid(" + input + ")";
+    return "EvaluateAttributeSnapped(" + input + ", int2(0, 0))";
+}
+
+bool callsEvaluateAttribute(const EffectSyntax& syntax) {
+    for (const Token& t : syntax.tokens)
+        if (t.isIdent() && t.text.rfind("EvaluateAttribute", 0) == 0) return true;
+    return false;
+}
+
 bool hasGlobal(const EffectSyntax& syntax, const std::string& name) {
     for (const auto& g : syntax.globals)
         if (g.name == name) return true;
@@ -295,6 +320,10 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
         firstParam = false;
     };
     bool fragCoordDeclared = false, frontFaceDeclared = false;
+    // The shader's own EvaluateAttribute* calls need the input itself (glslang follows the wrapper's
+    // copy back to it), so its inputs stay plain copies there.
+    const bool perSample = !vertex && runsPerSample(inputs);
+    const bool evaluatesItself = perSample && callsEvaluateAttribute(syntax);
     int n = 0;
     std::map<std::string, std::string> inputNames;  // semantic -> wrapper parameter
     for (const Leaf& leaf : inputs) {
@@ -326,6 +355,7 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
             fragCoordDeclared = true;
             // D3D9 VPOS counts pixels from 0 at pixel centres; GL's gl_FragCoord has them at +0.5.
             std::string v = b == "VPOS" ? "(fxport_fragCoord - float4(0.5, 0.5, 0, 0))" : "fxport_fragCoord";
+            if (perSample && !has(leaf.interpolation, "sample")) v = "float4(floor(fxport_fragCoord.xy) + 0.5, fxport_fragCoord.zw)";
             fill << assignLeaf(leaf, narrow(v, leaf.components));
         } else if (b == "VFACE" || b == "SV_ISFRONTFACE") {
             if (!frontFaceDeclared) addParam("bool fxport_frontFace : SV_IsFrontFace");
@@ -345,11 +375,11 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
         } else if (nextToGeometryShader) {
             const std::string interp = interpolationPrefix(leaf);
             if (!repeat) addParam(interp + vectorType(leaf.scalar, leaf.components) + " " + name + " : " + sem);
-            fill << assignLeaf(leaf, name);
+            fill << assignLeaf(leaf, perSample && !evaluatesItself ? evaluatedAsD3D(leaf, name) : name);
         } else {
             const std::string interp = interpolationPrefix(leaf);
             if (!repeat) addParam(interp + "float4 " + name + " : " + sem);
-            fill << assignLeaf(leaf, narrow(name, leaf.components));
+            fill << assignLeaf(leaf, narrow(perSample && !evaluatesItself ? evaluatedAsD3D(leaf, name) : name, leaf.components));
         }
     }
 

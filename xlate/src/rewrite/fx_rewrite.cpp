@@ -43,6 +43,7 @@
 #include "fx/render_states.h"
 #include "fx/source_map.h"
 #include "fx/text_util.h"
+#include "rewrite/intrinsic_spellings.h"
 #include "rewrite/texture_registers.h"
 
 namespace fxport::xlate {
@@ -405,6 +406,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : lengthPropertiesAsCalls(syntax)) edits.push_back(std::move(e));
     for (auto& e : unusedUavsDropped(syntax)) edits.push_back(std::move(e));
     for (auto& e : refractVectorEta(syntax)) edits.push_back(std::move(e));
+    for (auto& e : intrinsicsAsGlslangSpellsThem(syntax)) edits.push_back(std::move(e));
     for (auto& e : pow2PartitioningAsInteger(syntax)) edits.push_back(std::move(e));
     for (auto& e : tessFactorIntrinsics(syntax)) edits.push_back(std::move(e));
     for (auto& e : compareStoreAsExchange(syntax)) edits.push_back(std::move(e));

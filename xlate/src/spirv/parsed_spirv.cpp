@@ -145,6 +145,13 @@ std::uint32_t ParsedSpirv::floatTypeLike(std::uint32_t type) {
     return vector;
 }
 
+std::uint32_t ParsedSpirv::intType() {
+    for (const auto* list : {&instructions, &types_})
+        for (const auto& inst : *list)
+            if (inst.opcode() == spv_op::TypeInt && inst.words.size() == 4 && inst.words[2] == 32 && inst.words[3] == 1) return inst.words[1];
+    return addType({spirvFirstWord(spv_op::TypeInt, 4), 0, 32, 1});
+}
+
 std::uint32_t ParsedSpirv::constant(std::uint32_t scalarType, std::uint32_t value) {
     auto key = std::make_tuple(scalarType, value);
     if (auto it = constants_.find(key); it != constants_.end()) return it->second;

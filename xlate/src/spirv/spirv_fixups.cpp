@@ -57,6 +57,31 @@ bool anyAllOfScalarIsTheScalar(ParsedSpirv& m) {
     return changed;
 }
 
+// HLSL's EvaluateAttributeAtSample takes a uint sample index, and glslang passes it on as a uint
+// to GLSL.std.450 InterpolateAtSample; SPIRV-Cross then writes interpolateAtSample(x, uint), which
+// GLSL does not have (its index is an int) and the GL driver refuses. The index is bitcast to int.
+// Test: conformance eval-attrib, xlate PerSampleInputs.EvaluateAttributeIntrinsicsReachTheInput.
+bool interpolateAtSampleTakesInt(ParsedSpirv& m) {
+    constexpr std::uint32_t kInterpolateAtSample = 77, kOpBitcast = 124;
+    if (!m.has({spv_op::ExtInst})) return false;
+    const std::uint32_t std450 = m.glslStd450();
+    bool changed = false;
+    m.rewrite([&](const SpirvInstruction& in, std::vector<SpirvInstruction>& out) {
+        // %r = OpExtInst %type %std450 InterpolateAtSample %interpolant %sample
+        const auto& w = in.words;
+        if (in.opcode() != spv_op::ExtInst || w.size() != 7 || w[3] != std450 || w[4] != kInterpolateAtSample) return out.push_back(in);
+        const SpirvInstruction* type = m.definition(m.typeOf(w[6]));
+        if (!type || type->opcode() != spv_op::TypeInt || type->word(3) != 0) return out.push_back(in);
+        SpirvInstruction index = m.value(kOpBitcast, m.intType(), {w[6]});
+        SpirvInstruction call = in;
+        call.words[6] = index.words[2];
+        out.push_back(std::move(index));
+        out.push_back(std::move(call));
+        changed = true;
+    });
+    return changed;
+}
+
 // Whether an instruction with one of `opcodes` occurs: a linear scan, so that the checks that
 // optimise the module cost nothing on shaders that cannot need them.
 bool hasOpcode(const std::vector<std::uint32_t>& words, std::initializer_list<std::uint32_t> opcodes) {
@@ -74,7 +99,7 @@ bool hasOpcode(const std::vector<std::uint32_t>& words, std::initializer_list<st
 
 bool applySpirvFixups(ParsedSpirv& m) {
     return runSpirvPasses(m, {remainderTruncates, anyAllOfScalarIsTheScalar, maskShiftCounts, floatToUnsignedSaturates,
-                           negatedComparisonsAsOpposites});
+                           negatedComparisonsAsOpposites, interpolateAtSampleTakesInt});
 }
 
 namespace {
