@@ -981,6 +981,22 @@ TEST(Encodings, BinaryAndNonUtf8CodeAreStillRejected) {
     EXPECT_EQ(firstId("float x = 1; // \"\nfloat y\xe9 = 2;\ntechnique T { pass P { } }\n"s), diag::kNotText);
 }
 
+// A file that a clone without Git LFS left as its pointer is named as such, at its first line.
+TEST(Encodings, GitLfsPointersAreNamed) {
+    const std::string pointer = "version https://git-lfs.github.com/spec/v1\n"
+                                "oid sha256:4d7a214614ab2935c943f9e0ff69d22eadbb8f32b1258daaa5e2ca24d17e2393\n"
+                                "size 12345\n";
+    try {
+        compileEffectSource(pointer, "virtual/Water.fx", noCache());
+        FAIL() << "a Git LFS pointer compiled";
+    } catch (const CompileError& e) {
+        const Diagnostic& d = e.diagnostics().front();
+        EXPECT_EQ(d.id, diag::kNotText);
+        EXPECT_EQ(d.location.line, 1);
+        EXPECT_NE(d.message.find("Git LFS pointer"), std::string::npos) << d.message;
+    }
+}
+
 // `#pragma pack_matrix` applies to the matrices declared after it, up to the next pragma; an
 // explicit row_major/column_major wins (glslang 12 kept the first pragma's majority for the rest).
 TEST(Translation, PackMatrixPragmasApplyUntilTheNextOne) {

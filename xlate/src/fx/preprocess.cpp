@@ -38,6 +38,10 @@ void checkIsText(const std::string& source, const std::string& displayPath) {
         d.location = {displayPath, line, static_cast<int>(i - lineStart) + 1};
         throw CompileError({d});
     };
+    // A repository cloned without Git LFS leaves small text pointers where the files were; they
+    // would fail as HLSL on their first line, which says nothing of the cause.
+    if (source.rfind("version https://git-lfs.github.com/spec/", 0) == 0)
+        fail("it is a Git LFS pointer, not the file's content: fetch the content with `git lfs pull`");
     while (i < source.size()) {
         auto c = static_cast<unsigned char>(source[i]);
         if (c == 0) fail("it contains a NUL byte");
