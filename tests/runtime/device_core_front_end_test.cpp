@@ -306,7 +306,7 @@ TEST(FrontEndCore, UniformBuffersGoToTheirStagesRangeAndTheInternalBindingIsRefu
                       DrawArguments{PrimitiveType::TriangleList, 3});
     EXPECT_EQ(f.backend->matching("bindUniformBuffer " + std::to_string(uniformBindingFor(1, 2))),
               Calls{"bindUniformBuffer " + std::to_string(uniformBindingFor(1, 2)) + " " + std::to_string(constants.backendObject())});
-    EXPECT_THROW(core::setUniformBuffer(*f.device, 1, kInternalBlockBinding, &constants), ArgumentError);
+    EXPECT_THROW(core::setUniformBuffer(*f.device, 1, kUnusedUniformBinding, &constants), ArgumentError);
     EXPECT_THROW(core::setUniformBuffer(*f.device, kUniformStages, 0, &constants), ArgumentError);
 }
 

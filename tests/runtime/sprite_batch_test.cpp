@@ -517,8 +517,8 @@ TEST_F(SpriteBatchTest, DrawStringPlacesGlyphsInsideTheMeasuredBox) {
     EXPECT_GT(inside, 20);
     // First glyph of each line, pixel by pixel: right side up, not mirrored, newline LineSpacing
     // down. Exact with point sampling. With Begin()'s LinearClamp, within 3/255: fxport's D3D9
-    // pixel-centre emulation shifts geometry by half a pixel less 1/256 (graphics_device's
-    // fxport_PixelOffset), so texel centres are missed by 1/256 texel, which llvmpipe's 8-bit
+    // pixel-centre emulation shifts geometry by half a pixel less 1/256 down the rows (the
+    // viewport's origin, draw_state.cpp applyViewport), so texel centres are missed by 1/256 texel, which llvmpipe's 8-bit
     // filter weights turn into up to 2/255 at a 0/255 glyph edge.
     const Image pointSampled = render(40, 28, Color::Transparent, [&] {
         batch->Begin(SpriteSortMode::Deferred, BlendState::AlphaBlend, SamplerState::PointClamp, nullptr, nullptr);

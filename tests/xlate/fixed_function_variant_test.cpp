@@ -29,17 +29,12 @@ out gl_PerVertex
     vec4 gl_Position;
 };
 
-layout(binding = 1, std140) uniform fxport_Internal
-{
-    vec4 fxport_PixelOffset;
-} _62;
-
 layout(location = 0) in vec4 i0;
 layout(location = 29) out vec4 _entryPointOutput_o1;
 
 void main()
 {
-    gl_Position = i0 + vec4(_62.fxport_PixelOffset.xy * i0.w, 0.0, 0.0);
+    gl_Position = i0;
     _entryPointOutput_o1 = vec4(i0.z, 0.0, 0.0, 0.0);
 }
 )";
@@ -88,7 +83,7 @@ TEST(FixedFunctionVariant, FogAndAlphaTestNeedAColourOutput) {
     EXPECT_EQ(why, "the shader writes no float4 colour to render target 0");
 }
 
-TEST(FixedFunctionVariant, ClipPlanesUseThePositionBeforeThePixelOffset) {
+TEST(FixedFunctionVariant, ClipPlanesUseThePositionTheShaderWrote) {
     VertexFixedFunction w;
     w.clipPlanes = 2;
     w.pointSizeLocation = 29;
@@ -97,7 +92,7 @@ TEST(FixedFunctionVariant, ClipPlanesUseThePositionBeforeThePixelOffset) {
     ASSERT_TRUE(v) << why;
     EXPECT_TRUE(has(*v, "    vec4 gl_Position;\n    float gl_ClipDistance[2];\n    float gl_PointSize;") ||
                 has(*v, "{\n    float gl_ClipDistance[2];\n    float gl_PointSize;\n    vec4 gl_Position;"));
-    EXPECT_TRUE(has(*v, "vec4 fxport_clipPosition = (gl_Position - vec4(_62.fxport_PixelOffset.xy * gl_Position.w, 0.0, 0.0));"));
+    EXPECT_TRUE(has(*v, "vec4 fxport_clipPosition = gl_Position;"));
     EXPECT_TRUE(has(*v, "gl_ClipDistance[1] = dot(fxport_clipPosition, fxport_ClipPlanes[1]);"));
     EXPECT_FALSE(has(*v, "gl_ClipDistance[2] ="));
     EXPECT_TRUE(has(*v, "gl_PointSize = clamp(_entryPointOutput_o1.x, fxport_PointSize.y, fxport_PointSize.z);"));

@@ -9,8 +9,9 @@
 // whose flat parameters and outputs carry exactly the semantics we want: POSITION -> SV_Position,
 // COLORn -> SV_Targetn, VPOS/VFACE from the fragment built-ins, every varying widened to float4 so
 // any VS/PS pair with matching semantics links (DX9 lets a PS read float2 of a float4 output), the
-// literal arguments of `compile ps_2_0 PS(true, 3)` passed to `uniform` parameters, and for
-// vs_1_1..vs_3_0 the D3D9 half-pixel offset added to the position.
+// literal arguments of `compile ps_2_0 PS(true, 3)` passed to `uniform` parameters. A vs_1_1..vs_3_0
+// shader is marked as drawing with D3D9's pixel centres, which the device applies through the
+// viewport's origin (GraphicsDevice::Impl::applyViewport), not the shader.
 #pragma once
 
 #include <string>
@@ -20,8 +21,6 @@
 namespace fxport::xlate {
 
 inline constexpr const char* kWrapperEntry = "fxport_main";
-inline constexpr const char* kInternalBlock = "fxport_Internal";
-inline constexpr const char* kPixelOffset = "fxport_PixelOffset";
 // A pixel shader's SV_Coverage input: glslang drops that built-in input (its reads become OpUndef),
 // so the wrapper reads it as a flat uint varying on this semantic, and spirv_to_glsl turns the
 // varying into GL's gl_SampleMaskIn[0].
@@ -30,7 +29,7 @@ inline constexpr const char* kSampleMaskInSemantic = "FXPORT_SAMPLEMASKIN";
 struct EntryWrapper {
     std::string code;        // HLSL to append after the effect
     std::string error;       // non-empty: why the entry cannot be wrapped (FX1403)
-    bool usesPixelOffset = false;
+    bool usesPixelOffset = false;  // an SM1-3 vertex shader: D3D9 pixel centres (CompiledShader::needsD3D9PixelOffset)
 };
 
 // `nextToGeometryShader`: the VS feeds, or the PS is fed by, a geometry shader. D3D10 matches those

@@ -133,14 +133,9 @@ std::optional<std::string> vertexFixedFunctionVariant(const std::string& glsl, c
     if (wanted.clipPlanes > 0) {
         members += "\n    float gl_ClipDistance[" + std::to_string(wanted.clipPlanes) + "];";
         declarations += "uniform vec4 fxport_ClipPlanes[" + std::to_string(kMaxUserClipPlanes) + "];\n";
-        // D3D9 clips the position the shader wrote; fxport's half-pixel offset (entry_wrapper.h) is
-        // GL's rasterisation, not the shader's, so it is taken off again.
-        static const std::regex internal(R"(uniform fxport_Internal\s*\{[^}]*fxport_PixelOffset;[^}]*\}\s*(\w+);)");
-        std::smatch block;
-        std::string position = "gl_Position";
-        if (std::regex_search(glsl, block, internal))
-            position = "(gl_Position - vec4(" + block[1].str() + ".fxport_PixelOffset.xy * gl_Position.w, 0.0, 0.0))";
-        epilogue += "    vec4 fxport_clipPosition = " + position + ";\n";
+        // D3D9 clips the position the shader wrote: gl_Position (the D3D9 pixel centres are the
+        // viewport's, not the shader's).
+        epilogue += "    vec4 fxport_clipPosition = gl_Position;\n";
         for (int i = 0; i < wanted.clipPlanes; ++i)
             epilogue += "    gl_ClipDistance[" + std::to_string(i) + "] = dot(fxport_clipPosition, fxport_ClipPlanes[" + std::to_string(i) + "]);\n";
     }

@@ -322,10 +322,6 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
         for (const auto& ubo : res.uniform_buffers) {
             std::string blockName = compiler.get_name(ubo.base_type_id);
             compiler.unset_decoration(ubo.id, spv::DecorationDescriptorSet);
-            if (blockName == kInternalBlock) {
-                compiler.set_decoration(ubo.id, spv::DecorationBinding, 1);
-                continue;
-            }
             UniformBlockLayout block;
             block.name = blockName;
             if (isGlslKeyword(blockName)) compiler.set_name(ubo.base_type_id, "fxport_cbuffer_" + blockName);

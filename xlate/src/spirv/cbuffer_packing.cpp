@@ -6,7 +6,6 @@
 #include <map>
 #include <set>
 
-#include "entry/entry_wrapper.h"
 #include "fx/fx_syntax.h"
 #include "spirv/parsed_spirv.h"
 
@@ -306,7 +305,7 @@ bool only32BitScalars(const Module& m, std::uint32_t id) {
     }
 }
 
-// The uniform blocks of the module: (variable, struct type), the internal block left out.
+// The uniform blocks of the module: (variable, struct type).
 std::vector<std::pair<std::uint32_t, std::uint32_t>> uniformBlocks(const Module& m) {
     std::set<std::uint32_t> blockTypes;
     for (const Inst& i : m.insts)
@@ -317,7 +316,7 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> uniformBlocks(const Module&
         const Inst* ptr = m.defOf(i.type);
         if (!ptr || ptr->op != kOpTypePointer) continue;
         std::uint32_t pointee = m.w(*ptr, 3);
-        if (blockTypes.count(pointee) && nameOf(m, pointee) != kInternalBlock) out.push_back({i.result, pointee});
+        if (blockTypes.count(pointee)) out.push_back({i.result, pointee});
     }
     return out;
 }

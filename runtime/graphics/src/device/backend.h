@@ -47,7 +47,8 @@ inline constexpr int kStageCount = 5;  // vertex, pixel, geometry, hull, domain 
 inline constexpr int kHullStage = 3, kDomainStage = 4;
 inline constexpr int kComputeStage = 5;  // dispatched alone; its own uniform-binding range
 inline constexpr int kUniformStages = kStageCount + 1;
-inline constexpr int kInternalBlockBinding = 1;
+// Binding 1 of each stage is never a shader's: xlate numbers $Global 0 and user cbuffers from 2.
+inline constexpr int kUnusedUniformBinding = 1;
 inline int uniformBindingFor(int stage, int hlslBinding) { return stage * kUniformBindingsPerStage + hlslBinding; }
 
 // One vertex-shader input fed from vertex-buffer binding `binding` at `offset` bytes.

@@ -46,7 +46,7 @@ void GraphicsDevice::Impl::dispatch(int x, int y, int z) {
     }
     for (int b = 0; b < kUniformBindingsPerStage; ++b) {
         std::size_t i = std::size_t(uniformBindingFor(kComputeStage, b));
-        if (b == kInternalBlockBinding || wantedUniformBuffers[i] == boundUniformBuffers[i]) continue;
+        if (wantedUniformBuffers[i] == boundUniformBuffers[i]) continue;
         backend->bindUniformBuffer(int(i), wantedUniformBuffers[i]);
         boundUniformBuffers[i] = wantedUniformBuffers[i];
     }

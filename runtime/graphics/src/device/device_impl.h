@@ -145,7 +145,6 @@ struct GraphicsDevice::Impl {
     std::map<BackendObject, BackendObject> computePipelines;  // compute program -> its pipeline
     void dispatch(int x, int y, int z);  // DispatchCompute after its checks
     void dropComputePipelinesUsing(BackendObject program);
-    BackendObject internalBuffer = 0;           // fxport_Internal { float4 fxport_PixelOffset; }: zero
 
     // --- vertex input
     VertexBuffer* vertexBuffer = nullptr;

@@ -145,7 +145,7 @@ void GraphicsDevice::Impl::applyShaders() {
         boundPipeline = pipeline;
     }
     for (std::size_t i = 0; i < wantedUniformBuffers.size(); ++i) {
-        if (wantedUniformBuffers[i] == boundUniformBuffers[i] || i % kUniformBindingsPerStage == kInternalBlockBinding) continue;
+        if (wantedUniformBuffers[i] == boundUniformBuffers[i]) continue;
         backend->bindUniformBuffer(int(i), wantedUniformBuffers[i]);
         boundUniformBuffers[i] = wantedUniformBuffers[i];
     }
@@ -234,8 +234,7 @@ void GraphicsDevice::Impl::applyViewport(const fxport::Viewport& w) {
     // falls on a centre, as D3D's top-left rule does. Rows do: under GL_UPPER_LEFT llvmpipe treats a
     // top edge on a centre as a bottom one and drops the row, so the 1/256 (one step of the
     // sub-pixel grid) keeps such an edge just above the centre. Its price is an attribute bias of
-    // 1/256 pixel down the rows (docs/DESIGN.md). The shaders' fxport_PixelOffset (entry_wrapper.h)
-    // stays zero.
+    // 1/256 pixel down the rows (docs/DESIGN.md).
     const ShaderProgram* vertex = shaders[0];
     const bool d3d9 = vertex && vertex->shader && vertex->shader->needsD3D9PixelOffset;
     shadow.setViewport(w, d3d9 ? ViewportShift{0.5f, 0.5f - 1.0f / 256.0f} : ViewportShift{});

@@ -260,7 +260,7 @@ void setStorageBuffer(GraphicsDevice& device, bool unorderedAccess, int slot, co
 }
 
 void setUniformBuffer(GraphicsDevice& device, int stage, int blockBinding, const ByteBuffer* buffer) {
-    if (stage < 0 || stage >= kUniformStages || blockBinding < 0 || blockBinding >= kUniformBindingsPerStage || blockBinding == kInternalBlockBinding)
+    if (stage < 0 || stage >= kUniformStages || blockBinding < 0 || blockBinding >= kUniformBindingsPerStage || blockBinding == kUnusedUniformBinding)
         throw ArgumentError("uniform binding " + std::to_string(blockBinding) + " of stage " + std::to_string(stage) +
                             " is not one a front end may set");
     deviceImpl(device).wantedUniformBuffers[std::size_t(uniformBindingFor(stage, blockBinding))] = buffer ? buffer->backendObject() : 0;

@@ -162,14 +162,6 @@ GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters)
     Backend& api = *impl_->backend;
     api.adoptD3DConventions();
 
-    // fxport_Internal { float4 fxport_PixelOffset; } of SM1-3 vertex shaders: zero, the D3D9 pixel
-    // offset is the viewport's (applyViewport).
-    impl_->internalBuffer = impl_->createBuffer();
-    const float zero[4] = {0, 0, 0, 0};
-    api.allocateBuffer(impl_->internalBuffer, sizeof zero, zero, false);
-    for (int stage = 0; stage < kUniformStages; ++stage)
-        api.bindUniformBuffer(uniformBindingFor(stage, kInternalBlockBinding), impl_->internalBuffer);
-
     impl_->backBuffer = std::make_unique<RenderTarget2D>(*this, parameters_.BackBufferWidth, parameters_.BackBufferHeight,
                                                           false, parameters_.BackBufferFormat,
                                                           parameters_.DepthStencilFormat);
@@ -793,7 +785,6 @@ void GraphicsDevice::Impl::releaseAll() {
     framebuffers.clear();
     for (auto& [key, sampler] : samplerObjects) backend->deleteSampler(sampler);
     samplerObjects.clear();
-    deleteBuffer(internalBuffer);
     deleteBuffer(userVertices);
     deleteBuffer(userIndices);
 }

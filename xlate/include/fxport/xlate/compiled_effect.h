@@ -206,8 +206,8 @@ struct CompiledShader {
     std::vector<StorageBinding> storage;  // UAVs and buffer SRVs
     std::array<int, 3> threadGroupSize{};  // compute shaders: [numthreads(x, y, z)]
     Tessellation tessellation;            // hull and domain shaders
-    // Vertex shaders compiled for vs_1_1..vs_3_0 add fxport_PixelOffset.xy * w to the position so
-    // that GL rasterises like D3D9; the runtime sets it from the viewport to (1/W, -1/H).
+    // Vertex shaders compiled for vs_1_1..vs_3_0: they draw with D3D9's pixel centres, which the
+    // runtime applies by moving the viewport's origin while they draw (docs/DESIGN.md).
     bool needsD3D9PixelOffset = false;
     std::string hlslAfterRewrite;         // for debugging (FXPORT_DUMP); not serialised
 };
@@ -323,8 +323,8 @@ struct CompiledEffect {
     std::vector<Technique> techniques;
     std::vector<Parameter> parameters;
     std::vector<CompiledShader> shaders;
-    // [0] is $Global, then every user cbuffer in declaration order (binding 1 is fxport's internal
-    // block, which is not listed: see CompiledShader::needsD3D9PixelOffset).
+    // [0] is $Global (GL binding 0), then every user cbuffer in declaration order (bindings 2, 3 ...;
+    // binding 1 is left unused).
     std::vector<UniformBlock> uniformBlocks;
     int uniformBufferSize = 0;  // bytes of $Global, the same as uniformBlocks[0].size
     // User cbuffers, DX10 textures and DX10 samplers in declaration order (ResourceDeclaration).

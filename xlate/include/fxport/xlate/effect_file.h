@@ -12,8 +12,9 @@ namespace fxport::xlate {
 // Format version of the file; bump when the layout changes.
 // 2: uniformBlocks, Parameter::block, ranges per block; 3: typed pass-state values, parameters by
 // index; 4: "checksum" over the whole file and "glslHash" per shader, and every size, offset and
-// index validated on load (effect_validation.h).
-inline constexpr int kEffectFileVersion = 4;
+// index validated on load (effect_validation.h); 5: SM1-3 vertex shaders without the
+// fxport_Internal block (D3D9 pixel centres are the viewport's), which the runtime no longer binds.
+inline constexpr int kEffectFileVersion = 5;
 
 // `compact` leaves out the indentation (what the compile cache stores); both forms load alike.
 std::string serializeEffect(const CompiledEffect& effect, bool compact = false);
