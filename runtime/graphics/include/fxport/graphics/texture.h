@@ -19,7 +19,7 @@ enum class CubeMapFace : std::uint8_t { PositiveX, NegativeX, PositiveY, Negativ
 
 class Texture : public GraphicsResource {
 public:
-    enum class Kind : std::uint8_t { Texture2D, TextureCube, Texture3D };
+    enum class Kind : std::uint8_t { Texture2D, TextureCube, Texture3D, Texture2DArray };
 
     SurfaceFormat Format() const { return format_; }
     int LevelCount() const { return levels_; }
@@ -89,6 +89,8 @@ public:
 protected:
     Texture2D(fxport::GraphicsDevice& device, const char* typeName, int width, int height, bool mipMap,
               SurfaceFormat format);
+    // Over a backend texture made elsewhere (a view of another texture's texels), one level.
+    Texture2D(fxport::GraphicsDevice& device, const char* typeName, int width, int height, SurfaceFormat format, std::uint32_t adopted);
 
 private:
     void create(bool mipMap);
