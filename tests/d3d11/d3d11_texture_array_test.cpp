@@ -3,7 +3,8 @@
 // TEXTURE2DARRAY view (SampleLevel with a point sampler, Load, GetDimensions) and compared with the
 // colours written; a draw and a clear into one slice through a render-target view, every slice
 // read back (the other slices unchanged); a view of a sub-range of levels and slices; one
-// subresource updated, mips generated per slice; and the descriptions refused with the field.
+// subresource updated, mips generated per slice; a typeless depth array drawn slice by slice and
+// sampled whole (a cascaded shadow map); and the descriptions refused with the field.
 #include <cmath>
 #include <cstring>
 
@@ -295,6 +296,68 @@ TEST(D3D11TextureArray, AViewOfAnotherShapeBindsWithoutCrashing) {
     EXPECT_NE(lastError().find("samples a cube texture"), std::string::npos) << lastError();
 }
 
+// A cascaded shadow map: a typeless depth array, each slice cleared through its own
+// depth-stencil view, one slice drawn into (depth test and write, no colour target), then all
+// slices read through one TEXTURE2DARRAY view.
+TEST(D3D11TextureArray, ADepthArrayIsDrawnSliceBySliceAndSampledWhole) {
+    Device d;
+    D3D11_TEXTURE2D_DESC desc = arrayDesc(D3D11_BIND_DEPTH_STENCIL | D3D11_BIND_SHADER_RESOURCE, kSlices, 1);
+    desc.Format = DXGI_FORMAT_R32_TYPELESS;
+    ComPtr<ID3D11Texture2D> array;
+    ASSERT_EQ(d.device->CreateTexture2D(&desc, nullptr, array.GetAddressOf()), S_OK) << lastError();
+    std::vector<ComPtr<ID3D11DepthStencilView>> slices(kSlices);
+    for (int slice = 0; slice < kSlices; ++slice) {
+        D3D11_DEPTH_STENCIL_VIEW_DESC dsv;
+        dsv.Format = DXGI_FORMAT_D32_FLOAT;
+        dsv.ViewDimension = D3D11_DSV_DIMENSION_TEXTURE2DARRAY;
+        dsv.Texture2DArray = {0, UINT(slice), 1};
+        ASSERT_EQ(d.device->CreateDepthStencilView(array.Get(), &dsv, slices[std::size_t(slice)].GetAddressOf()), S_OK) << lastError();
+        d.context->ClearDepthStencilView(slices[std::size_t(slice)].Get(), D3D11_CLEAR_DEPTH, 0.25f * float(slice + 1), 0);
+    }
+    const std::string text = R"(
+float4 vs(uint id : SV_VertexID) : SV_Position {
+    float2 corner = float2((id << 1) & 2, id & 2);
+    return float4(corner * float2(2, -2) + float2(-1, 1), 0.125, 1);
+}
+float4 ps() : SV_Target { return 1; }
+)";
+    ComPtr<ID3DBlob> vsCode = compile(text, "vs", "vs_5_0"), psCode = compile(text, "ps", "ps_5_0");
+    ASSERT_TRUE(vsCode && psCode);
+    ComPtr<ID3D11VertexShader> vs;
+    ComPtr<ID3D11PixelShader> ps;
+    ASSERT_EQ(d.device->CreateVertexShader(vsCode->GetBufferPointer(), vsCode->GetBufferSize(), nullptr, vs.GetAddressOf()), S_OK) << lastError();
+    ASSERT_EQ(d.device->CreatePixelShader(psCode->GetBufferPointer(), psCode->GetBufferSize(), nullptr, ps.GetAddressOf()), S_OK) << lastError();
+    d.context->OMSetRenderTargets(0, nullptr, slices[1].Get());
+    D3D11_VIEWPORT viewport;
+    viewport.Width = viewport.Height = 2;
+    d.context->RSSetViewports(1, &viewport);
+    d.context->VSSetShader(vs.Get(), nullptr, 0);
+    d.context->PSSetShader(ps.Get(), nullptr, 0);
+    d.context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+    d.context->Draw(3, 0);
+    EXPECT_EQ(lastError(), "");
+    d.context->OMSetRenderTargets(0, nullptr, nullptr);
+
+    D3D11_SHADER_RESOURCE_VIEW_DESC srv;
+    srv.Format = DXGI_FORMAT_R32_FLOAT;
+    srv.ViewDimension = D3D11_SRV_DIMENSION_TEXTURE2DARRAY;
+    srv.Texture2DArray = {0, 1, 0, UINT(kSlices)};
+    ComPtr<ID3D11ShaderResourceView> view;
+    ASSERT_EQ(d.device->CreateShaderResourceView(array.Get(), &srv, view.GetAddressOf()), S_OK) << lastError();
+    const std::vector<Texel> pixels = drawAndRead(d, R"(
+Texture2DArray<float> Depth : register(t0);
+float4 ps(float4 pos : SV_Position) : SV_Target {
+    int2 p = int2(pos.xy);
+    return Depth.Load(int4(p.x % 2, p.y, p.x / 2, 0));
+})",
+                                                  2 * kSlices, 2, view.Get());
+    ASSERT_EQ(pixels.size(), std::size_t(4 * kSlices));
+    const float expected[kSlices] = {0.25f, 0.125f, 0.75f};  // slice 1 drawn at z 0.125 over its 0.5
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 2 * kSlices; ++x)
+            EXPECT_EQ(pixels[std::size_t(y * 2 * kSlices + x)][0], expected[x / 2]) << "pixel " << x << "," << y;
+}
+
 TEST(D3D11TextureArray, DescriptionsOutsideTheTextureAreRefusedNamingTheField) {
     Device d;
     D3D11_TEXTURE2D_DESC desc = arrayDesc(D3D11_BIND_SHADER_RESOURCE, 0);
@@ -332,6 +395,23 @@ TEST(D3D11TextureArray, DescriptionsOutsideTheTextureAreRefusedNamingTheField) {
     rtv.Texture2DArray = {0, 3, 1};
     EXPECT_EQ(d.device->CreateRenderTargetView(array.Get(), &rtv, target.GetAddressOf()), E_INVALIDARG);
     EXPECT_NE(lastError().find("FirstArraySlice + ArraySize = 3 + 1"), std::string::npos) << lastError();
+
+    D3D11_TEXTURE2D_DESC depthDesc = arrayDesc(D3D11_BIND_DEPTH_STENCIL, kSlices, 1);
+    depthDesc.Format = DXGI_FORMAT_D32_FLOAT;
+    ComPtr<ID3D11Texture2D> depth;
+    ASSERT_EQ(d.device->CreateTexture2D(&depthDesc, nullptr, depth.GetAddressOf()), S_OK) << lastError();
+    D3D11_DEPTH_STENCIL_VIEW_DESC dsv;
+    dsv.ViewDimension = D3D11_DSV_DIMENSION_TEXTURE2DARRAY;
+    dsv.Texture2DArray = {0, 1, 3};
+    ComPtr<ID3D11DepthStencilView> depthView;
+    EXPECT_EQ(d.device->CreateDepthStencilView(depth.Get(), &dsv, depthView.GetAddressOf()), E_INVALIDARG);
+    EXPECT_NE(lastError().find("D3D11_DEPTH_STENCIL_VIEW_DESC.Texture2DArray.FirstArraySlice + ArraySize = 1 + 3"), std::string::npos) << lastError();
+    dsv.Texture2DArray = {0, 0, 3};
+    EXPECT_EQ(d.device->CreateDepthStencilView(depth.Get(), &dsv, depthView.GetAddressOf()), E_NOTIMPL);
+    EXPECT_NE(lastError().find("Texture2DArray.ArraySize = 3"), std::string::npos) << lastError();
+    depthDesc.BindFlags = D3D11_BIND_DEPTH_STENCIL | D3D11_BIND_UNORDERED_ACCESS;
+    EXPECT_EQ(d.device->CreateTexture2D(&depthDesc, nullptr, depth.GetAddressOf()), E_NOTIMPL);
+    EXPECT_NE(lastError().find("no UAV arrays"), std::string::npos) << lastError();
 }
 
 }  // namespace

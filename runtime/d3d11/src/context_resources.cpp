@@ -238,7 +238,7 @@ void Context::ClearDepthStencilView(ID3D11DepthStencilView* p, UINT flags, FLOAT
     guarded("ClearDepthStencilView", [&] {
         auto* v = own<DepthStencilView>(p, device_);
         if (!v) return fail(E_INVALIDARG, "ClearDepthStencilView: no view of this device");
-        core::clearDepthBuffer(device_->core(), *v->texture->depth, (flags & D3D11_CLEAR_DEPTH) != 0, (flags & D3D11_CLEAR_STENCIL) != 0,
+        core::clearDepthBuffer(device_->core(), v->buffer(), (flags & D3D11_CLEAR_DEPTH) != 0, (flags & D3D11_CLEAR_STENCIL) != 0,
                                depth, int(stencil));
         return succeed();
     });

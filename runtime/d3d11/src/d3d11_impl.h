@@ -182,11 +182,18 @@ class DepthStencilView final : public Object<ID3D11DepthStencilView> {
 public:
     DepthStencilView(Device* device, Texture* viewed, const D3D11_DEPTH_STENCIL_VIEW_DESC& d)
         : Object(device), texture(viewed), desc(d) { texture->AddRef(); }
-    ~DepthStencilView() override { texture->Release(); }
+    ~DepthStencilView() override {
+        slice.reset();  // before the texture it is made over
+        sliceTexture.reset();
+        texture->Release();
+    }
     void GetResource(ID3D11Resource** r) override { texture->AddRef(); *r = texture; }
     void GetDesc(D3D11_DEPTH_STENCIL_VIEW_DESC* pDesc) override { if (pDesc) *pDesc = desc; }
     Texture* texture;
     D3D11_DEPTH_STENCIL_VIEW_DESC desc;
+    std::unique_ptr<fxport::Texture2D> sliceTexture;  // one slice of an array texture, as a 2D texture
+    std::unique_ptr<core::DepthBuffer> slice;          // the depth buffer over it
+    core::DepthBuffer& buffer() const { return slice ? *slice : *texture->depth; }
 };
 
 // --- shaders
@@ -291,6 +298,7 @@ struct DepthFamily {
     SurfaceFormat sampled;  // the depth texture's (SRV, or SRV and DSV)
 };
 const DepthFamily* depthFamilyOf(DXGI_FORMAT textureFormat);  // null: not one of them
+const DepthFamily* depthFamilyOfView(DXGI_FORMAT depthView);   // the family whose DSV format this is (D32_FLOAT ...)
 // A view's Format for texture `t`: its own (or UNKNOWN), or the typeless depth family's view of
 // that kind; E_NOTIMPL/E_INVALIDARG naming `desc`.Format otherwise.
 HRESULT checkViewFormat(const char* call, const char* desc, DXGI_FORMAT viewFormat, const Texture& t, bool depthView);
@@ -304,6 +312,7 @@ int fullMipCount(UINT width, UINT height);
 HRESULT createTextureArray(Device* device, const D3D11_TEXTURE2D_DESC& d, const D3D11_SUBRESOURCE_DATA* pInitialData, ID3D11Texture2D** pp);
 HRESULT arrayShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc, ID3D11ShaderResourceView** pp);
 HRESULT arrayRenderTargetView(Device* device, Texture* t, const D3D11_RENDER_TARGET_VIEW_DESC* pDesc, ID3D11RenderTargetView** pp);
+HRESULT arrayDepthStencilView(Device* device, Texture* t, const D3D11_DEPTH_STENCIL_VIEW_DESC* pDesc, ID3D11DepthStencilView** pp);
 // One subresource of a 2D texture or array (texture_subresources.cpp): which level and slice D3D's
 // index names, and its texels, tightly packed, from wherever the texture keeps them (GPU or staging).
 struct Subresource {

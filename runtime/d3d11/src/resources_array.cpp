@@ -1,9 +1,10 @@
 // Array textures: CreateTexture2D with ArraySize > 1 (no TEXTURECUBE), a device-core
 // Texture2DArray (or CPU memory for USAGE_STAGING), and their views. A shader-resource view sees
 // any range of levels and slices (a part through a texture view sharing the texels); a
-// render-target view is one slice of one level. D3D numbers subresources level + slice *
-// MipLevels, which pInitialData follows. Not here yet: depth-stencil and unordered-access arrays,
-// multisampled arrays (Texture2DMSArray), cube arrays, render-target views of several slices.
+// render-target or depth-stencil view is one slice of one level (a cascaded shadow map: a
+// typeless depth array drawn slice by slice, sampled as a whole). D3D numbers subresources level +
+// slice * MipLevels, which pInitialData follows. Not here yet: unordered-access arrays,
+// multisampled arrays (Texture2DMSArray), cube arrays, views of several slices to draw into.
 #include <cstring>
 
 #include "d3d11_impl.h"
@@ -20,14 +21,43 @@ HRESULT checkArrayScope(const D3D11_TEXTURE2D_DESC& d, const std::string& at) {
     if (d.SampleDesc.Count > 1)
         return fail(E_NOTIMPL, at + "SampleDesc.Count = " + std::to_string(d.SampleDesc.Count) + " with ArraySize = " + std::to_string(d.ArraySize) +
                                    ": multisampled arrays (Texture2DMSArray) are not supported yet");
-    if (d.BindFlags & (D3D11_BIND_DEPTH_STENCIL | D3D11_BIND_UNORDERED_ACCESS))
+    if (d.BindFlags & D3D11_BIND_UNORDERED_ACCESS)
         return fail(E_NOTIMPL, at + "BindFlags = " + std::to_string(d.BindFlags) + " with ArraySize = " + std::to_string(d.ArraySize) +
-                                   ": fxport's array textures are SHADER_RESOURCE and RENDER_TARGET only (no depth-stencil or UAV arrays yet)");
-    if (d.BindFlags & ~UINT(D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_RENDER_TARGET))
-        return fail(E_NOTIMPL, at + "BindFlags = " + std::to_string(d.BindFlags) + ": only SHADER_RESOURCE and RENDER_TARGET for an array texture");
+                                   ": fxport's array textures are SHADER_RESOURCE, RENDER_TARGET and DEPTH_STENCIL only (no UAV arrays yet)");
+    if (d.BindFlags & ~UINT(D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_RENDER_TARGET | D3D11_BIND_DEPTH_STENCIL))
+        return fail(E_NOTIMPL, at + "BindFlags = " + std::to_string(d.BindFlags) + ": only SHADER_RESOURCE, RENDER_TARGET and DEPTH_STENCIL for an array texture");
     if (d.MiscFlags & ~UINT(D3D11_RESOURCE_MISC_GENERATE_MIPS))
         return fail(E_NOTIMPL, at + "MiscFlags = " + std::to_string(d.MiscFlags) + ": an array texture takes D3D11_RESOURCE_MISC_GENERATE_MIPS only");
     return S_OK;
+}
+
+// The texels' format: a colour format, or a depth array's (a typeless depth family, sampled and
+// drawn into; or a depth format, drawn into only), whose slices a depth-stencil view draws into.
+HRESULT arrayFormat(const D3D11_TEXTURE2D_DESC& d, bool hasData, SurfaceFormat& format) {
+    const std::string at = "CreateTexture2D: D3D11_TEXTURE2D_DESC.";
+    const bool depthTarget = (d.BindFlags & D3D11_BIND_DEPTH_STENCIL) != 0;
+    const DepthFamily* family = depthFamilyOf(d.Format);
+    if (!family && depthTarget) family = depthFamilyOfView(d.Format);
+    if (depthTarget && (d.BindFlags & D3D11_BIND_RENDER_TARGET))
+        return fail(E_INVALIDARG, at + "BindFlags = " + std::to_string(d.BindFlags) + ": a texture is a depth-stencil or a render target, not both");
+    if (family && (d.BindFlags & D3D11_BIND_RENDER_TARGET))
+        return fail(E_NOTIMPL, at + "BindFlags = " + std::to_string(d.BindFlags) + " with Format = " + formatName(d.Format) +
+                                   ": fxport keeps a typeless texture as a depth texture (DEPTH_STENCIL and SHADER_RESOURCE only)");
+    if (depthTarget && (d.BindFlags & D3D11_BIND_SHADER_RESOURCE) && family && family->typeless != d.Format)
+        return fail(E_INVALIDARG, at + "BindFlags = " + std::to_string(d.BindFlags) + " with Format = " + formatName(d.Format) +
+                                      ": a depth texture a shader samples is made typeless (R32_TYPELESS, R24G8_TYPELESS, R16_TYPELESS)");
+    if (depthTarget && (d.MiscFlags & D3D11_RESOURCE_MISC_GENERATE_MIPS))
+        return fail(E_INVALIDARG, at + "MiscFlags = D3D11_RESOURCE_MISC_GENERATE_MIPS with BIND_DEPTH_STENCIL (mips are generated for render targets)");
+    if (family && family->typeless == DXGI_FORMAT_R24G8_TYPELESS && hasData)
+        return fail(E_NOTIMPL, at + "Format = DXGI_FORMAT_R24G8_TYPELESS with pInitialData: fxport does not upload packed depth-stencil texels");
+    if (depthTarget && hasData) return fail(E_INVALIDARG, at + "BindFlags has DEPTH_STENCIL and pInitialData is given");
+    if (family) {
+        format = family->sampled;
+        return S_OK;
+    }
+    if (textureFormat(d.Format, format)) return S_OK;
+    return fail(d.Format == DXGI_FORMAT_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
+                at + "Format = " + formatName(d.Format) + " (" + std::to_string(d.Format) + "): not an array texture format fxport supports (docs/API.md lists them)");
 }
 
 // D3D's own rules for an array description.
@@ -44,9 +74,7 @@ HRESULT checkArrayDesc(const D3D11_TEXTURE2D_DESC& d, bool hasData, SurfaceForma
     if (d.Usage == D3D11_USAGE_DYNAMIC)
         return fail(E_INVALIDARG, at + "Usage = D3D11_USAGE_DYNAMIC with ArraySize = " + std::to_string(d.ArraySize) + " (a dynamic texture has ArraySize 1)");
     if (HRESULT hr = checkUsage("CreateTexture2D", "D3D11_TEXTURE2D_DESC", d.Usage, d.BindFlags, d.CPUAccessFlags, hasData); FAILED(hr)) return hr;
-    if (!textureFormat(d.Format, format) || depthFamilyOf(d.Format))
-        return fail(d.Format == DXGI_FORMAT_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
-                    at + "Format = " + formatName(d.Format) + " (" + std::to_string(d.Format) + "): not an array texture format fxport supports (docs/API.md lists them)");
+    if (HRESULT hr = arrayFormat(d, hasData, format); FAILED(hr)) return hr;
     if ((d.MiscFlags & D3D11_RESOURCE_MISC_GENERATE_MIPS) && isIntegerFormat(format))
         return fail(E_INVALIDARG, at + "MiscFlags = D3D11_RESOURCE_MISC_GENERATE_MIPS with Format = " + formatName(d.Format) +
                                       ": integer texels cannot be filtered into smaller levels");
@@ -173,6 +201,41 @@ HRESULT arrayRenderTargetView(Device* device, Texture* t, const D3D11_RENDER_TAR
         auto view = std::unique_ptr<RenderTargetView, void (*)(RenderTargetView*)>(new RenderTargetView(device, t, d),
                                                                                    [](RenderTargetView* v) { v->Release(); });
         view->slice = std::make_unique<RenderTarget2D>(*t->array, int(a.FirstArraySlice), int(a.MipSlice));
+        *pp = view.release();
+        return succeed();
+    });
+}
+
+
+HRESULT arrayDepthStencilView(Device* device, Texture* t, const D3D11_DEPTH_STENCIL_VIEW_DESC* pDesc, ID3D11DepthStencilView** pp) {
+    const std::string call = "CreateDepthStencilView", at = call + ": D3D11_DEPTH_STENCIL_VIEW_DESC.";
+    D3D11_DEPTH_STENCIL_VIEW_DESC d;
+    d.Format = t->desc.Format;
+    d.ViewDimension = D3D11_DSV_DIMENSION_TEXTURE2DARRAY;
+    d.Texture2DArray = {0, 0, UINT(t->slices())};
+    if (pDesc) {
+        if (pDesc->ViewDimension != D3D11_DSV_DIMENSION_TEXTURE2DARRAY)
+            return fail(pDesc->ViewDimension == D3D11_DSV_DIMENSION_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
+                        at + "ViewDimension = " + std::to_string(pDesc->ViewDimension) + " (fxport views an array texture as D3D11_DSV_DIMENSION_TEXTURE2DARRAY)");
+        if (HRESULT f = checkViewFormat(call.c_str(), "D3D11_DEPTH_STENCIL_VIEW_DESC", pDesc->Format, *t, true); FAILED(f)) return f;
+        if (pDesc->Flags != 0)
+            return fail(E_NOTIMPL, at + "Flags = " + std::to_string(pDesc->Flags) + ": read-only depth views are not supported yet");
+        d = *pDesc;
+        if (d.Format == DXGI_FORMAT_UNKNOWN) d.Format = t->desc.Format;
+    }
+    const auto& a = d.Texture2DArray;
+    if (a.MipSlice >= UINT(t->levels))
+        return fail(E_INVALIDARG, at + "Texture2DArray.MipSlice = " + std::to_string(a.MipSlice) + " (the texture has " + std::to_string(t->levels) + " levels)");
+    if (HRESULT f = checkSlices(at + "Texture2DArray.", a.FirstArraySlice, a.ArraySize, t->slices()); FAILED(f)) return f;
+    if (a.ArraySize > 1)  // as for render-target views
+        return fail(E_NOTIMPL, at + "Texture2DArray.ArraySize = " + std::to_string(a.ArraySize) +
+                                   ": fxport draws into one slice per view (several need SV_RenderTargetArrayIndex, not supported yet)");
+    if (!pp) return succeed();
+    return guarded(call.c_str(), [&] {
+        auto view = std::unique_ptr<DepthStencilView, void (*)(DepthStencilView*)>(new DepthStencilView(device, t, d),
+                                                                                   [](DepthStencilView* v) { v->Release(); });
+        view->sliceTexture = std::make_unique<fxport::Texture2D>(*t->array, int(a.FirstArraySlice), int(a.MipSlice));
+        view->slice = std::make_unique<core::DepthBuffer>(device->core(), *view->sliceTexture);
         *pp = view.release();
         return succeed();
     });

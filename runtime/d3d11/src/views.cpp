@@ -143,8 +143,8 @@ HRESULT Device::CreateShaderResourceView(ID3D11Resource* pResource, const D3D11_
     if (!(t->desc.BindFlags & D3D11_BIND_SHADER_RESOURCE))
         return fail(E_INVALIDARG, std::string(call) + ": the texture's BindFlags = " + std::to_string(t->desc.BindFlags) +
                                       " lack D3D11_BIND_SHADER_RESOURCE");
-    if (t->slices() > 1) return arrayShaderResourceView(this, t, pDesc, ppSRView);
     if (HRESULT f = needsDescription(call, *t, pDesc != nullptr); FAILED(f)) return f;
+    if (t->slices() > 1) return arrayShaderResourceView(this, t, pDesc, ppSRView);
     // A cube texture is viewed as a cube (TEXTURECUBE), a multisampled one as TEXTURE2DMS, any other
     // as a 2D texture.
     const bool multisampled = t->desc.SampleDesc.Count > 1;
@@ -213,6 +213,10 @@ HRESULT Device::CreateDepthStencilView(ID3D11Resource* pResource, const D3D11_DE
     HRESULT hr;
     Texture* t = textureOf(this, pResource, call, hr);
     if (!t) return hr;
+    if (t->slices() > 1 && (t->desc.BindFlags & D3D11_BIND_DEPTH_STENCIL)) {
+        if (HRESULT f = needsDescription(call, *t, pDesc != nullptr); FAILED(f)) return f;
+        return arrayDepthStencilView(this, t, pDesc, ppDepthStencilView);
+    }
     if (!t->depth)
         return fail(E_INVALIDARG, std::string(call) + ": the texture's BindFlags = " + std::to_string(t->desc.BindFlags) +
                                       " lack D3D11_BIND_DEPTH_STENCIL");

@@ -50,8 +50,7 @@ RenderTarget2D::RenderTarget2D(fxport::GraphicsDevice& device, int width, int he
 
 RenderTarget2D::RenderTarget2D(Texture2DArray& array, int layer, int level)
     : Texture2D(array.device(), "RenderTarget2D", array.levelWidth(level), array.levelHeight(level), array.Format(),
-                deviceImpl(array.device()).createTextureView("RenderTarget2D over layer " + std::to_string(layer) + " of a Texture2DArray",
-                                                             array.backendObject(), array.Format(), false, level, 1, layer, 1)),
+                array.layerView("a RenderTarget2D over a layer", layer, level)),
       usage_(fxport::RenderTargetUsage::PreserveContents) {
     checkRenderable(device(), describe(), Format());
     adoptDepth(device(), depth_, DepthFormat::None, Width(), Height());

@@ -49,6 +49,15 @@ Texture2DArray::Texture2DArray(Texture2DArray& source, int firstLevel, int level
 
 Texture2DArray::~Texture2DArray() { disposeFromDestructor(); }
 
+std::uint32_t Texture2DArray::layerView(const char* who, int layer, int level) {
+    checkSubresource(who, level, layer);
+    return deviceImpl(device()).createTextureView(describe() + ": " + who, name_, format_, false, level, 1, layer, 1);
+}
+
+Texture2D::Texture2D(Texture2DArray& array, int layer, int level)
+    : Texture2D(array.device(), "Texture2D", array.levelWidth(level), array.levelHeight(level), array.Format(),
+                array.layerView("a Texture2D over a layer", layer, level)) {}
+
 std::size_t Texture2DArray::layerBytes(int level) const {
     return std::size_t(levelWidth(level)) * std::size_t(levelHeight(level)) * std::size_t(bytesPerPixel(format_));
 }

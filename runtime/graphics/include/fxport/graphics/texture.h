@@ -48,10 +48,15 @@ protected:
     Kind kind_;
 };
 
+class Texture2DArray;
+
 class Texture2D : public Texture {
 public:
     Texture2D(fxport::GraphicsDevice& device, int width, int height, bool mipMap = false,
               SurfaceFormat format = SurfaceFormat::Color);
+    // fxport: one layer of one level of `array` as a 2D texture sharing its texels (a D3D11
+    // depth-stencil view of an array slice is a depth buffer over it); `array` must outlive it.
+    Texture2D(Texture2DArray& array, int layer, int level);
     ~Texture2D() override;
 
     int Width() const { return width_; }

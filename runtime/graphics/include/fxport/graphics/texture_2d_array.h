@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 
 #include "fxport/graphics/texture.h"
 
@@ -32,6 +33,9 @@ public:
     std::size_t layerBytes(int level) const;
     int levelWidth(int level) const { return Texture::levelWidth(width_, level); }
     int levelHeight(int level) const { return Texture::levelWidth(height_, level); }
+    // fxport internals: a new 2D backend texture over one layer of one level (Texture2D's and
+    // RenderTarget2D's constructors over a layer take it); ArgumentError naming `who` outside the array.
+    std::uint32_t layerView(const char* who, int layer, int level);
 
 private:
     void checkSubresource(const char* call, int level, int layer) const;
