@@ -358,6 +358,82 @@ float4 ps(float4 pos : SV_Position) : SV_Target {
             EXPECT_EQ(pixels[std::size_t(y * 2 * kSlices + x)][0], expected[x / 2]) << "pixel " << x << "," << y;
 }
 
+// A view of slices 1 and 2 drawn into once: a geometry shader sends one triangle to each slice of
+// the view through SV_RenderTargetArrayIndex, and a second draw without it reaches the view's
+// first slice, as D3D's rule is; slice 0 (outside the view) keeps its texels.
+TEST(D3D11TextureArray, ALayeredViewDrawsEachPrimitiveIntoTheSliceItNames) {
+    Device d;
+    ComPtr<ID3D11Texture2D> array = makeArray(d, D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_RENDER_TARGET);
+    ASSERT_TRUE(array);
+    D3D11_RENDER_TARGET_VIEW_DESC desc;
+    desc.ViewDimension = D3D11_RTV_DIMENSION_TEXTURE2DARRAY;
+    desc.Texture2DArray = {0, 1, 2};
+    ComPtr<ID3D11RenderTargetView> rtv;
+    ASSERT_EQ(d.device->CreateRenderTargetView(array.Get(), &desc, rtv.GetAddressOf()), S_OK) << lastError();
+    const char* text = R"(
+struct V { float4 pos : SV_Position; };
+struct G { float4 pos : SV_Position; float4 colour : COLOR0; uint slice : SV_RenderTargetArrayIndex; };
+V vs(uint id : SV_VertexID) { V v; float2 c = float2((id << 1) & 2, id & 2); v.pos = float4(c * float2(2, -2) + float2(-1, 1), 0, 1); return v; }
+[maxvertexcount(6)]
+void gs(triangle V input[3], inout TriangleStream<G> stream) {
+    for (uint slice = 0; slice < 2; ++slice) {
+        for (int i = 0; i < 3; ++i) {
+            G g;
+            g.pos = input[i].pos;
+            g.colour = float4(slice == 0 ? 1 : 0, slice == 1 ? 1 : 0, 0, 1);
+            g.slice = slice;
+            stream.Append(g);
+        }
+        stream.RestartStrip();
+    }
+}
+float4 ps(G g) : SV_Target { return g.colour; }
+float4 psPlain(V v) : SV_Target { return float4(0, 0, 1, 1); }
+)";
+    ComPtr<ID3DBlob> vsCode = compile(text, "vs", "vs_5_0"), gsCode = compile(text, "gs", "gs_5_0"), psCode = compile(text, "ps", "ps_5_0");
+    ASSERT_TRUE(vsCode && gsCode && psCode);
+    ComPtr<ID3D11VertexShader> vs;
+    ComPtr<ID3D11GeometryShader> gs;
+    ComPtr<ID3D11PixelShader> ps;
+    ASSERT_EQ(d.device->CreateVertexShader(vsCode->GetBufferPointer(), vsCode->GetBufferSize(), nullptr, vs.GetAddressOf()), S_OK) << lastError();
+    ASSERT_EQ(d.device->CreateGeometryShader(gsCode->GetBufferPointer(), gsCode->GetBufferSize(), nullptr, gs.GetAddressOf()), S_OK) << lastError();
+    ASSERT_EQ(d.device->CreatePixelShader(psCode->GetBufferPointer(), psCode->GetBufferSize(), nullptr, ps.GetAddressOf()), S_OK) << lastError();
+    d.context->OMSetRenderTargets(1, rtv.GetAddressOfConst(), nullptr);
+    D3D11_VIEWPORT viewport;
+    viewport.Width = viewport.Height = 2;
+    d.context->RSSetViewports(1, &viewport);
+    D3D11_RASTERIZER_DESC rd;
+    rd.CullMode = D3D11_CULL_NONE;
+    ComPtr<ID3D11RasterizerState> noCull;
+    ASSERT_EQ(d.device->CreateRasterizerState(&rd, noCull.GetAddressOf()), S_OK);
+    d.context->RSSetState(noCull.Get());
+    d.context->VSSetShader(vs.Get(), nullptr, 0);
+    d.context->GSSetShader(gs.Get(), nullptr, 0);
+    d.context->PSSetShader(ps.Get(), nullptr, 0);
+    d.context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+    d.context->Draw(3, 0);
+    EXPECT_EQ(lastError(), "");
+    d.context->OMSetRenderTargets(0, nullptr, nullptr);
+    const std::vector<Rgba> red(4, Rgba{255, 0, 0, 255}), green(4, Rgba{0, 255, 0, 255});
+    EXPECT_EQ(readSubresource(d, array.Get(), 0 + 1 * kLevels, 2), red);    // the view's slice 0
+    EXPECT_EQ(readSubresource(d, array.Get(), 0 + 2 * kLevels, 2), green);  // the view's slice 1
+    EXPECT_EQ(readSubresource(d, array.Get(), 0, 2), levelTexels(0, 0));   // outside the view
+
+    // No SV_RenderTargetArrayIndex: the view's first slice.
+    ComPtr<ID3DBlob> plainCode = compile(text, "psPlain", "ps_5_0");
+    ASSERT_TRUE(plainCode);
+    ComPtr<ID3D11PixelShader> plain;
+    ASSERT_EQ(d.device->CreatePixelShader(plainCode->GetBufferPointer(), plainCode->GetBufferSize(), nullptr, plain.GetAddressOf()), S_OK) << lastError();
+    d.context->OMSetRenderTargets(1, rtv.GetAddressOfConst(), nullptr);
+    d.context->GSSetShader(nullptr, nullptr, 0);
+    d.context->PSSetShader(plain.Get(), nullptr, 0);
+    d.context->Draw(3, 0);
+    EXPECT_EQ(lastError(), "");
+    d.context->OMSetRenderTargets(0, nullptr, nullptr);
+    EXPECT_EQ(readSubresource(d, array.Get(), 0 + 1 * kLevels, 2), std::vector<Rgba>(4, Rgba{0, 0, 255, 255}));
+    EXPECT_EQ(readSubresource(d, array.Get(), 0 + 2 * kLevels, 2), green);
+}
+
 TEST(D3D11TextureArray, DescriptionsOutsideTheTextureAreRefusedNamingTheField) {
     Device d;
     D3D11_TEXTURE2D_DESC desc = arrayDesc(D3D11_BIND_SHADER_RESOURCE, 0);
@@ -388,10 +464,10 @@ TEST(D3D11TextureArray, DescriptionsOutsideTheTextureAreRefusedNamingTheField) {
 
     D3D11_RENDER_TARGET_VIEW_DESC rtv;
     rtv.ViewDimension = D3D11_RTV_DIMENSION_TEXTURE2DARRAY;
-    rtv.Texture2DArray = {0, 0, 2};
     ComPtr<ID3D11RenderTargetView> target;
-    EXPECT_EQ(d.device->CreateRenderTargetView(array.Get(), &rtv, target.GetAddressOf()), E_NOTIMPL);
-    EXPECT_NE(lastError().find("Texture2DArray.ArraySize = 2"), std::string::npos) << lastError();
+    rtv.Texture2DArray = {2, 0, 1};
+    EXPECT_EQ(d.device->CreateRenderTargetView(array.Get(), &rtv, target.GetAddressOf()), E_INVALIDARG);
+    EXPECT_NE(lastError().find("Texture2DArray.MipSlice = 2 (the texture has 2 levels)"), std::string::npos) << lastError();
     rtv.Texture2DArray = {0, 3, 1};
     EXPECT_EQ(d.device->CreateRenderTargetView(array.Get(), &rtv, target.GetAddressOf()), E_INVALIDARG);
     EXPECT_NE(lastError().find("FirstArraySlice + ArraySize = 3 + 1"), std::string::npos) << lastError();
@@ -406,9 +482,8 @@ TEST(D3D11TextureArray, DescriptionsOutsideTheTextureAreRefusedNamingTheField) {
     ComPtr<ID3D11DepthStencilView> depthView;
     EXPECT_EQ(d.device->CreateDepthStencilView(depth.Get(), &dsv, depthView.GetAddressOf()), E_INVALIDARG);
     EXPECT_NE(lastError().find("D3D11_DEPTH_STENCIL_VIEW_DESC.Texture2DArray.FirstArraySlice + ArraySize = 1 + 3"), std::string::npos) << lastError();
-    dsv.Texture2DArray = {0, 0, 3};
-    EXPECT_EQ(d.device->CreateDepthStencilView(depth.Get(), &dsv, depthView.GetAddressOf()), E_NOTIMPL);
-    EXPECT_NE(lastError().find("Texture2DArray.ArraySize = 3"), std::string::npos) << lastError();
+    dsv.Texture2DArray = {0, 0, 3};  // every slice: a layered depth buffer
+    EXPECT_EQ(d.device->CreateDepthStencilView(depth.Get(), &dsv, depthView.GetAddressOf()), S_OK) << lastError();
     depthDesc.BindFlags = D3D11_BIND_DEPTH_STENCIL | D3D11_BIND_UNORDERED_ACCESS;
     EXPECT_EQ(d.device->CreateTexture2D(&depthDesc, nullptr, depth.GetAddressOf()), E_NOTIMPL);
     EXPECT_NE(lastError().find("no UAV arrays"), std::string::npos) << lastError();

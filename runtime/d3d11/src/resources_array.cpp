@@ -2,9 +2,10 @@
 // Texture2DArray (or CPU memory for USAGE_STAGING), and their views. A shader-resource view sees
 // any range of levels and slices (a part through a texture view sharing the texels); a
 // render-target or depth-stencil view is one slice of one level (a cascaded shadow map: a
-// typeless depth array drawn slice by slice, sampled as a whole). D3D numbers subresources level +
-// slice * MipLevels, which pInitialData follows. Not here yet: unordered-access arrays,
-// multisampled arrays (Texture2DMSArray), cube arrays, views of several slices to draw into.
+// typeless depth array drawn slice by slice, sampled as a whole) or a layered view of several,
+// drawn into through SV_RenderTargetArrayIndex. D3D numbers subresources level + slice *
+// MipLevels, which pInitialData follows. Not here yet: unordered-access arrays, multisampled
+// arrays (Texture2DMSArray), cube arrays.
 #include <cstring>
 
 #include "d3d11_impl.h"
@@ -174,7 +175,6 @@ HRESULT arrayShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_R
 
 HRESULT arrayRenderTargetView(Device* device, Texture* t, const D3D11_RENDER_TARGET_VIEW_DESC* pDesc, ID3D11RenderTargetView** pp) {
     const std::string call = "CreateRenderTargetView", at = call + ": D3D11_RENDER_TARGET_VIEW_DESC.";
-    // Without a description D3D views every slice, which fxport cannot draw into (below).
     D3D11_RENDER_TARGET_VIEW_DESC d;
     d.Format = t->desc.Format;
     d.ViewDimension = D3D11_RTV_DIMENSION_TEXTURE2DARRAY;
@@ -191,16 +191,12 @@ HRESULT arrayRenderTargetView(Device* device, Texture* t, const D3D11_RENDER_TAR
     if (a.MipSlice >= UINT(t->levels))
         return fail(E_INVALIDARG, at + "Texture2DArray.MipSlice = " + std::to_string(a.MipSlice) + " (the texture has " + std::to_string(t->levels) + " levels)");
     if (HRESULT f = checkSlices(at + "Texture2DArray.", a.FirstArraySlice, a.ArraySize, t->slices()); FAILED(f)) return f;
-    // A view of several slices draws each primitive into the slice its geometry shader's
-    // SV_RenderTargetArrayIndex names; fxport does not route that output to layers yet.
-    if (a.ArraySize > 1)
-        return fail(E_NOTIMPL, at + "Texture2DArray.ArraySize = " + std::to_string(a.ArraySize) +
-                                   ": fxport renders into one slice per view (several need SV_RenderTargetArrayIndex, not supported yet)");
     if (!pp) return succeed();
     return guarded(call.c_str(), [&] {
         auto view = std::unique_ptr<RenderTargetView, void (*)(RenderTargetView*)>(new RenderTargetView(device, t, d),
                                                                                    [](RenderTargetView* v) { v->Release(); });
-        view->slice = std::make_unique<RenderTarget2D>(*t->array, int(a.FirstArraySlice), int(a.MipSlice));
+        // Several slices: a layered target, each primitive in the slice its SV_RenderTargetArrayIndex names.
+        view->slice = std::make_unique<RenderTarget2D>(*t->array, int(a.FirstArraySlice), int(a.MipSlice), int(a.ArraySize));
         *pp = view.release();
         return succeed();
     });
@@ -227,14 +223,11 @@ HRESULT arrayDepthStencilView(Device* device, Texture* t, const D3D11_DEPTH_STEN
     if (a.MipSlice >= UINT(t->levels))
         return fail(E_INVALIDARG, at + "Texture2DArray.MipSlice = " + std::to_string(a.MipSlice) + " (the texture has " + std::to_string(t->levels) + " levels)");
     if (HRESULT f = checkSlices(at + "Texture2DArray.", a.FirstArraySlice, a.ArraySize, t->slices()); FAILED(f)) return f;
-    if (a.ArraySize > 1)  // as for render-target views
-        return fail(E_NOTIMPL, at + "Texture2DArray.ArraySize = " + std::to_string(a.ArraySize) +
-                                   ": fxport draws into one slice per view (several need SV_RenderTargetArrayIndex, not supported yet)");
     if (!pp) return succeed();
     return guarded(call.c_str(), [&] {
         auto view = std::unique_ptr<DepthStencilView, void (*)(DepthStencilView*)>(new DepthStencilView(device, t, d),
                                                                                    [](DepthStencilView* v) { v->Release(); });
-        view->sliceTexture = std::make_unique<fxport::Texture2D>(*t->array, int(a.FirstArraySlice), int(a.MipSlice));
+        view->sliceTexture = std::make_unique<fxport::Texture2D>(*t->array, int(a.FirstArraySlice), int(a.MipSlice), int(a.ArraySize));
         view->slice = std::make_unique<core::DepthBuffer>(device->core(), *view->sliceTexture);
         *pp = view.release();
         return succeed();

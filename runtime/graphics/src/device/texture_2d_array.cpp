@@ -49,14 +49,16 @@ Texture2DArray::Texture2DArray(Texture2DArray& source, int firstLevel, int level
 
 Texture2DArray::~Texture2DArray() { disposeFromDestructor(); }
 
-std::uint32_t Texture2DArray::layerView(const char* who, int layer, int level) {
+std::uint32_t Texture2DArray::layerView(const char* who, int layer, int level, int layers) {
     checkSubresource(who, level, layer);
-    return deviceImpl(device()).createTextureView(describe() + ": " + who, name_, format_, false, level, 1, layer, 1);
+    if (layers < 1 || layers > layers_ - layer)
+        throw ArgumentError(describe() + ": " + who + ": layers " + range(layer, layers) + " of " + std::to_string(layers_));
+    return deviceImpl(device()).createTextureView(describe() + ": " + who, name_, format_, layers > 1, level, 1, layer, layers);
 }
 
-Texture2D::Texture2D(Texture2DArray& array, int layer, int level)
+Texture2D::Texture2D(Texture2DArray& array, int layer, int level, int layers)
     : Texture2D(array.device(), "Texture2D", array.levelWidth(level), array.levelHeight(level), array.Format(),
-                array.layerView("a Texture2D over a layer", layer, level)) {}
+                array.layerView("a Texture2D over layers", layer, level, layers)) {}
 
 std::size_t Texture2DArray::layerBytes(int level) const {
     return std::size_t(levelWidth(level)) * std::size_t(levelHeight(level)) * std::size_t(bytesPerPixel(format_));

@@ -56,7 +56,9 @@ public:
               SurfaceFormat format = SurfaceFormat::Color);
     // fxport: one layer of one level of `array` as a 2D texture sharing its texels (a D3D11
     // depth-stencil view of an array slice is a depth buffer over it); `array` must outlive it.
-    Texture2D(Texture2DArray& array, int layer, int level);
+    // `layers` > 1: that many layers from `layer`, a layered depth buffer's texture (draws reach
+    // the layer SV_RenderTargetArrayIndex names); read and write texels through `array` then.
+    Texture2D(Texture2DArray& array, int layer, int level, int layers = 1);
     ~Texture2D() override;
 
     int Width() const { return width_; }

@@ -33,9 +33,10 @@ public:
     std::size_t layerBytes(int level) const;
     int levelWidth(int level) const { return Texture::levelWidth(width_, level); }
     int levelHeight(int level) const { return Texture::levelWidth(height_, level); }
-    // fxport internals: a new 2D backend texture over one layer of one level (Texture2D's and
-    // RenderTarget2D's constructors over a layer take it); ArgumentError naming `who` outside the array.
-    std::uint32_t layerView(const char* who, int layer, int level);
+    // fxport internals: a new backend texture over `layers` layers from `layer` of one level, 2D
+    // for one layer, an array for more (Texture2D's and RenderTarget2D's constructors over layers
+    // take it); ArgumentError naming `who` outside the array.
+    std::uint32_t layerView(const char* who, int layer, int level, int layers = 1);
 
 private:
     void checkSubresource(const char* call, int level, int layer) const;
