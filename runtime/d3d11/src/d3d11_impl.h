@@ -176,7 +176,7 @@ public:
     RenderTarget2D& target() const { return slice ? *slice : static_cast<RenderTarget2D&>(*texture->colour); }
     Texture* texture;
     D3D11_RENDER_TARGET_VIEW_DESC desc;
-    std::unique_ptr<RenderTarget2D> slice;  // a view of one slice of an array texture
+    std::unique_ptr<RenderTarget2D> slice;  // a view of slices of an array texture (layered for several)
 };
 class DepthStencilView final : public Object<ID3D11DepthStencilView> {
 public:
@@ -191,7 +191,7 @@ public:
     void GetDesc(D3D11_DEPTH_STENCIL_VIEW_DESC* pDesc) override { if (pDesc) *pDesc = desc; }
     Texture* texture;
     D3D11_DEPTH_STENCIL_VIEW_DESC desc;
-    std::unique_ptr<fxport::Texture2D> sliceTexture;  // one slice of an array texture, as a 2D texture
+    std::unique_ptr<fxport::Texture2D> sliceTexture;  // slices of an array texture (one: a 2D texture)
     std::unique_ptr<core::DepthBuffer> slice;          // the depth buffer over it
     core::DepthBuffer& buffer() const { return slice ? *slice : *texture->depth; }
 };
