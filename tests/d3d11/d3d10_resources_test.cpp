@@ -236,5 +236,29 @@ TEST_F(D3D10Resources, D3DX10LoadsATextureFileWithAFullMipChain) {
     EXPECT_NE(std::string(GetLastErrorMessage()).find("no/such/file.png"), std::string::npos) << GetLastErrorMessage();
 }
 
+// D3D10's spellings of array textures and their views reach the D3D11 device's arrays.
+TEST_F(D3D10Resources, ArrayTexturesTakeD3D10sViewDimensions) {
+    D3D10_TEXTURE2D_DESC td;
+    td.Width = td.Height = 4;
+    td.MipLevels = 1;
+    td.ArraySize = 4;
+    td.Format = DXGI_FORMAT_R8G8B8A8_UNORM;
+    td.BindFlags = D3D10_BIND_SHADER_RESOURCE | D3D10_BIND_RENDER_TARGET;
+    ComPtr<ID3D10Texture2D> t;
+    ASSERT_EQ(device->CreateTexture2D(&td, nullptr, t.GetAddressOf()), S_OK) << GetLastErrorMessage();
+    D3D10_SHADER_RESOURCE_VIEW_DESC srv;
+    srv.ViewDimension = D3D10_SRV_DIMENSION_TEXTURE2DARRAY;
+    srv.Texture2DArray = D3D10_TEX2D_ARRAY_SRV{0, 1, 2, 2};
+    ComPtr<ID3D10ShaderResourceView> view;
+    EXPECT_EQ(device->CreateShaderResourceView(t.Get(), &srv, view.GetAddressOf()), S_OK) << GetLastErrorMessage();
+    D3D10_RENDER_TARGET_VIEW_DESC rtv;
+    rtv.ViewDimension = D3D10_RTV_DIMENSION_TEXTURE2DARRAY;
+    rtv.Texture2DArray = D3D10_TEX2D_ARRAY_RTV{0, 4, 1};
+    ComPtr<ID3D10RenderTargetView> target;
+    EXPECT_EQ(device->CreateRenderTargetView(t.Get(), &rtv, target.GetAddressOf()), E_INVALIDARG);
+    EXPECT_NE(std::string(GetLastErrorMessage()).find("FirstArraySlice + ArraySize = 4 + 1 (the texture has 4 slices)"), std::string::npos)
+        << GetLastErrorMessage();
+}
+
 }  // namespace
 }  // namespace d3d10test

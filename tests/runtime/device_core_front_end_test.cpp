@@ -14,6 +14,7 @@
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/render_target.h"
 #include "fxport/graphics/texture.h"
+#include "fxport/graphics/texture_2d_array.h"
 #include "fxport/xlate/compiled_effect.h"
 #include "recording_backend.h"
 
@@ -113,6 +114,40 @@ TEST(DeviceOverBackend, EveryObjectTheCoreMakesIsDeletedOnceWhenTheDeviceGoes) {
                           DrawArguments{PrimitiveType::TriangleList, 3});
         EXPECT_GE(objects->live.size(), 10u);  // buffers, textures, programs, pipeline, vertex array, framebuffer
         f.device.reset();  // before the resources: the device disposes what the program still holds
+    }
+    EXPECT_EQ(objects->live, std::set<BackendObject>{}) << "objects the core made and never deleted";
+    EXPECT_EQ(objects->badDeletes, Calls{}) << "deletions of objects not made, or deleted twice";
+}
+
+// Array textures (D3D11's ArraySize > 1): one backend array, a layer's texels travel as the
+// backend's `face`, views of a range and of one layer share the array's texels, a range outside
+// the array is refused before the backend makes anything, and every object goes once.
+TEST(FrontEndCore, ArrayTexturesAndTheirViewsReachTheBackendWithTheirRanges) {
+    std::shared_ptr<test::RecordingBackend::Objects> objects;
+    {
+        Fixture f;
+        objects = f.backend->objects;
+        f.backend->take();
+        Texture2DArray array(*f.device, 4, 2, 3, 2, SurfaceFormat::Color);
+        const std::string name = std::to_string(array.backendObject());
+        EXPECT_EQ(f.backend->take(), (Calls{"createArrayTexture 4x2 layers 3 levels 2 -> " + name}));
+        const std::uint32_t texels[2] = {1, 2};
+        array.setData(1, 2, nullptr, texels, sizeof texels);
+        EXPECT_EQ(f.backend->matching("writeTexture " + name + " face 2 level 1").size(), 1u);
+        EXPECT_THROW(array.setData(0, 3, nullptr, texels, sizeof texels), ArgumentError);
+        Texture2DArray part(array, 1, 1, 1, 2);
+        EXPECT_EQ(part.Width(), 2);
+        EXPECT_EQ(part.Layers(), 2);
+        EXPECT_EQ(f.backend->matching("createTextureView " + name + " array levels 1+1 layers 1+2").size(), 1u);
+        RenderTarget2D slice(array, 2, 0);
+        EXPECT_EQ(f.backend->matching("createTextureView " + name + " 2d levels 0+1 layers 2+1").size(), 1u);
+        f.backend->take();
+        EXPECT_THROW(Texture2DArray(array, 0, 1, 2, 2), ArgumentError);
+        EXPECT_THROW(RenderTarget2D(array, 3, 0), ArgumentError);
+        EXPECT_EQ(f.backend->take(), Calls{});
+        EXPECT_THROW(Texture2DArray(*f.device, 4, 2, 0, 1, SurfaceFormat::Color), ArgumentError);
+        EXPECT_THROW(Texture2DArray(*f.device, 4, 2, 1, 4, SurfaceFormat::Color), ArgumentError);  // a 4x2 chain has 3 levels
+        EXPECT_EQ(f.backend->take(), Calls{});
     }
     EXPECT_EQ(objects->live, std::set<BackendObject>{}) << "objects the core made and never deleted";
     EXPECT_EQ(objects->badDeletes, Calls{}) << "deletions of objects not made, or deleted twice";

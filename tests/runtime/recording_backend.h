@@ -163,6 +163,19 @@ public:
         calls.push_back("writeVolume " + std::to_string(texture) + " level " + std::to_string(level) + " " + std::to_string(width) + "x" +
                         std::to_string(height) + "x" + std::to_string(depth));
     }
+    BackendObject createArrayTexture(SurfaceFormat, int levels, int width, int height, int layers) override {
+        const BackendObject t = make("createArrayTexture " + std::to_string(width) + "x" + std::to_string(height) + " layers " +
+                                     std::to_string(layers) + " levels " + std::to_string(levels));
+        textureSizes[t] = {width, height};
+        return t;
+    }
+    BackendObject createTextureView(BackendObject source, SurfaceFormat, bool array, int firstLevel, int levels, int firstLayer, int layers) override {
+        const BackendObject t = make("createTextureView " + std::to_string(source) + (array ? " array" : " 2d") + " levels " +
+                                     std::to_string(firstLevel) + "+" + std::to_string(levels) + " layers " + std::to_string(firstLayer) + "+" +
+                                     std::to_string(layers));
+        textureSizes[t] = textureSizes[source];
+        return t;
+    }
     BackendObject createMultisampleTexture(SurfaceFormat, int samples, int width, int height, int& given) override {
         given = samples;
         const BackendObject t = make("createMultisampleTexture " + std::to_string(width) + "x" + std::to_string(height) + " samples " +

@@ -129,7 +129,7 @@ bool Context::prepare(const char* call) {
     for (const auto& t : targets_)
         if (t) colour.emplace_back(&t->target());
     GraphicsDevice& core = device_->core();
-    core::DepthBuffer* depth = depthView_ ? depthView_->texture->depth.get() : nullptr;
+    core::DepthBuffer* depth = depthView_ ? &depthView_->buffer() : nullptr;
     const bool depthOnly = colour.empty();  // a shadow-map pass: depth-stencil view, no render target
     if (depthOnly && !depth) {
         note(at + "no render target or depth-stencil view bound; nothing drawn");

@@ -34,14 +34,16 @@ HRESULT Context::Map(ID3D11Resource* pResource, UINT Subresource, D3D11_MAP MapT
         return succeed();
     }
     if (auto* t = own<Texture>(pResource, device_)) {
-        if (Subresource >= UINT(t->levels)) return fail(E_INVALIDARG, "Map: Subresource = " + std::to_string(Subresource) + " of " + std::to_string(t->levels));
+        d3d11::Subresource at;  // the parameter `Subresource` hides the type
+        if (!splitSubresource(*t, Subresource, at))
+            return fail(E_INVALIDARG, "Map: Subresource = " + std::to_string(Subresource) + " of " + std::to_string(t->subresources()));
         if (t->mappedLevel >= 0) return fail(E_INVALIDARG, "Map: the texture is already mapped");
         if (HRESULT hr = checkAccess(t->desc.Usage, t->desc.CPUAccessFlags); FAILED(hr)) return hr;
         if (t->staging.empty())
             for (int level = 0; level < t->levels; ++level) t->staging.emplace_back(t->levelBytes(level), 0);
         t->mappedLevel = int(Subresource);
-        const UINT row = UINT(t->levelWidth(int(Subresource)) * bytesPerPixel(t->format));
-        *out = D3D11_MAPPED_SUBRESOURCE{t->staging[Subresource].data(), row, UINT(t->levelBytes(int(Subresource)))};
+        const UINT row = UINT(t->levelWidth(at.level) * bytesPerPixel(t->format));
+        *out = D3D11_MAPPED_SUBRESOURCE{t->staging[Subresource].data(), row, UINT(t->levelBytes(at.level))};
         return succeed();
     }
     return fail(E_INVALIDARG, "Map: pResource is not a buffer or texture of this device");
@@ -83,10 +85,12 @@ void Context::UpdateSubresource(ID3D11Resource* pDst, UINT DstSubresource, const
         }
         auto* t = own<Texture>(pDst, device_);
         if (!t) return fail(E_INVALIDARG, "UpdateSubresource: pDstResource is not a buffer or texture of this device");
-        if (t->desc.Usage != D3D11_USAGE_DEFAULT || !t->colour)
+        if (t->desc.Usage != D3D11_USAGE_DEFAULT || !(t->colour || t->array))
             return fail(E_INVALIDARG, "UpdateSubresource: the texture is not a USAGE_DEFAULT colour texture");
-        const int level = int(DstSubresource);
-        if (level >= t->levels) return fail(E_INVALIDARG, "UpdateSubresource: DstSubresource = " + std::to_string(DstSubresource));
+        Subresource at;
+        if (!splitSubresource(*t, DstSubresource, at))
+            return fail(E_INVALIDARG, "UpdateSubresource: DstSubresource = " + std::to_string(DstSubresource) + " of " + std::to_string(t->subresources()));
+        const int level = at.level;
         Rectangle r(0, 0, t->levelWidth(level), t->levelHeight(level));
         if (box) r = Rectangle(int(box->left), int(box->top), int(box->right) - int(box->left), int(box->bottom) - int(box->top));
         const std::size_t row = std::size_t(r.Width) * std::size_t(bytesPerPixel(t->format));
@@ -94,7 +98,7 @@ void Context::UpdateSubresource(ID3D11Resource* pDst, UINT DstSubresource, const
         std::vector<std::uint8_t> packed(row * std::size_t(std::max(r.Height, 0)));
         for (int y = 0; y < r.Height; ++y)
             std::memcpy(&packed[std::size_t(y) * row], static_cast<const std::uint8_t*>(pSrcData) + std::size_t(y) * SrcRowPitch, row);
-        t->colour->setData(level, &r, packed.data(), packed.size());
+        writeSubresource(*t, at, &r, packed);
         return succeed();
     });
 }
@@ -122,6 +126,12 @@ void Context::CopyResource(ID3D11Resource* pDst, ID3D11Resource* pSrc) {
         // depth buffer: copied as one. A depth buffer alone (no SRV) has no texels fxport can copy yet.
         if ((td->depth && !td->colour) || (ts->depth && !ts->colour))
             return fail(E_NOTIMPL, "CopyResource: a depth-stencil texture without BIND_SHADER_RESOURCE (a typeless one with it copies)");
+        if (td->slices() != ts->slices()) return fail(E_INVALIDARG, "CopyResource: the textures differ in ArraySize");
+        if (td->slices() > 1) {  // arrays: subresource by subresource (through the CPU when one side is staging)
+            Subresource at;
+            for (UINT sub = 0; splitSubresource(*ts, sub, at); ++sub) writeSubresource(*td, at, nullptr, readSubresource(*ts, at));
+            return succeed();
+        }
         if (td->cube && ts->cube) {
             core::copyTexture(*td->cube, *ts->cube);  // every face and level
             return succeed();
@@ -183,10 +193,12 @@ void Context::CopySubresourceRegion(ID3D11Resource* pDst, UINT DstSubresource, U
             return fail(E_INVALIDARG, at + "the textures' formats differ (" + std::string(formatName(td->desc.Format)) + ", " + formatName(ts->desc.Format) + ")");
         if (td->depth || ts->depth) return fail(E_NOTIMPL, at + "depth-stencil textures cannot be copied in fxport yet");
         if (td->cube || ts->cube) return fail(E_NOTIMPL, at + "cube textures cannot be copied in fxport yet");
-        if (DstSubresource >= UINT(td->levels) || SrcSubresource >= UINT(ts->levels))
+        Subresource from, to;
+        if (!splitSubresource(*td, DstSubresource, to) || !splitSubresource(*ts, SrcSubresource, from))
             return fail(E_INVALIDARG, at + "DstSubresource = " + std::to_string(DstSubresource) + ", SrcSubresource = " + std::to_string(SrcSubresource) +
-                                          " (the textures have " + std::to_string(td->levels) + " and " + std::to_string(ts->levels) + " levels)");
-        const int sl = int(SrcSubresource), dl = int(DstSubresource);
+                                          " (the textures have " + std::to_string(td->subresources()) + " and " + std::to_string(ts->subresources()) +
+                                          " subresources)");
+        const int sl = from.level, dl = to.level;
         Rectangle area(0, 0, ts->levelWidth(sl), ts->levelHeight(sl));
         if (box) area = Rectangle(int(box->left), int(box->top), int(box->right) - int(box->left), int(box->bottom) - int(box->top));
         if (area.Width <= 0 || area.Height <= 0 || (box && (box->right > UINT(ts->levelWidth(sl)) || box->bottom > UINT(ts->levelHeight(sl)))))
@@ -200,18 +212,13 @@ void Context::CopySubresourceRegion(ID3D11Resource* pDst, UINT DstSubresource, U
             core::copyTextureRegion(*td->colour, dl, x, y, *ts->colour, sl, area);
             return succeed();
         }
-        // Staging on one side or both: through the CPU (a GPU texture's whole level is read).
+        // Staging or an array on one side or both: through the CPU (a GPU texture's whole subresource is read).
         const int texel = bytesPerPixel(ts->format);
-        std::vector<std::uint8_t> source = ts->colour ? std::vector<std::uint8_t>(ts->levelBytes(sl)) : ts->staging[std::size_t(sl)];
-        if (ts->colour) ts->colour->getData(sl, source.data(), source.size());
-        if (td->colour) {
-            std::vector<std::uint8_t> packed(std::size_t(area.Width) * std::size_t(area.Height) * std::size_t(texel));
-            copyRows(source, ts->levelWidth(sl), area.X, area.Y, packed, area.Width, 0, 0, area.Width, area.Height, texel);
-            const Rectangle target(x, y, area.Width, area.Height);
-            td->colour->setData(dl, &target, packed.data(), packed.size());
-        } else {
-            copyRows(source, ts->levelWidth(sl), area.X, area.Y, td->staging[std::size_t(dl)], td->levelWidth(dl), x, y, area.Width, area.Height, texel);
-        }
+        const std::vector<std::uint8_t> source = readSubresource(*ts, from);
+        std::vector<std::uint8_t> packed(std::size_t(area.Width) * std::size_t(area.Height) * std::size_t(texel));
+        copyRows(source, ts->levelWidth(sl), area.X, area.Y, packed, area.Width, 0, 0, area.Width, area.Height, texel);
+        const Rectangle target(x, y, area.Width, area.Height);
+        writeSubresource(*td, to, &target, packed);
         return succeed();
     });
 }
@@ -221,7 +228,7 @@ void Context::ClearRenderTargetView(ID3D11RenderTargetView* p, const FLOAT c[4])
     guarded("ClearRenderTargetView", [&] {
         auto* v = own<RenderTargetView>(p, device_);
         if (!v || !c) return fail(E_INVALIDARG, "ClearRenderTargetView: no view of this device, or no colour");
-        core::clearTexture(*v->texture->colour, Vector4(c[0], c[1], c[2], c[3]));
+        core::clearTexture(v->target(), Vector4(c[0], c[1], c[2], c[3]));
         return succeed();
     });
 }
@@ -231,7 +238,7 @@ void Context::ClearDepthStencilView(ID3D11DepthStencilView* p, UINT flags, FLOAT
     guarded("ClearDepthStencilView", [&] {
         auto* v = own<DepthStencilView>(p, device_);
         if (!v) return fail(E_INVALIDARG, "ClearDepthStencilView: no view of this device");
-        core::clearDepthBuffer(device_->core(), *v->texture->depth, (flags & D3D11_CLEAR_DEPTH) != 0, (flags & D3D11_CLEAR_STENCIL) != 0,
+        core::clearDepthBuffer(device_->core(), v->buffer(), (flags & D3D11_CLEAR_DEPTH) != 0, (flags & D3D11_CLEAR_STENCIL) != 0,
                                depth, int(stencil));
         return succeed();
     });
@@ -243,7 +250,7 @@ void Context::GenerateMips(ID3D11ShaderResourceView* p) {
     if (!v || !v->texture || !(v->texture->desc.MiscFlags & D3D11_RESOURCE_MISC_GENERATE_MIPS))
         return note("GenerateMips: the view's texture was not made with D3D11_RESOURCE_MISC_GENERATE_MIPS");
     guarded("GenerateMips", [&] {
-        core::generateMips(*v->texture->colour);
+        core::generateMips(*v->texture->sampled());  // every slice of an array
         return succeed();
     });
 }

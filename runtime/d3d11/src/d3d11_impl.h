@@ -20,6 +20,7 @@
 #include "fxport/graphics/render_target.h"
 #include "fxport/graphics/sampler_state.h"
 #include "fxport/graphics/texture.h"
+#include "fxport/graphics/texture_2d_array.h"
 #include "fxport/graphics/texture_3d.h"
 #include "fxport/xlate/compiled_effect.h"
 #include "shader_bindings.h"
@@ -78,11 +79,17 @@ public:
     SurfaceFormat format = SurfaceFormat::Color;
     std::unique_ptr<fxport::Texture2D> colour;      // a RenderTarget2D when BIND_RENDER_TARGET
     std::unique_ptr<fxport::TextureCube> cube;      // MISC_TEXTURECUBE (shader resource only)
+    std::unique_ptr<fxport::Texture2DArray> array;  // ArraySize > 1 without TEXTURECUBE (resources_array.cpp)
     std::unique_ptr<core::DepthBuffer> depth;       // BIND_DEPTH_STENCIL (over `colour` for a typeless depth texture: declared after it, released first)
-    std::vector<std::vector<std::uint8_t>> staging;  // USAGE_STAGING: each level's texels, tightly packed
+    std::vector<std::vector<std::uint8_t>> staging;  // USAGE_STAGING: each subresource's texels, tightly packed
     int levels = 1;
     int mappedLevel = -1;
-    fxport::Texture* sampled() const { return colour ? static_cast<fxport::Texture*>(colour.get()) : cube.get(); }  // what an SRV reads
+    fxport::Texture* sampled() const {  // what an SRV of the whole texture reads
+        return colour ? static_cast<fxport::Texture*>(colour.get()) : cube ? static_cast<fxport::Texture*>(cube.get()) : array.get();
+    }
+    // D3D's subresources: level + slice * levels, over the array's slices (a cube's faces aside).
+    int slices() const { return cube ? 1 : int(desc.ArraySize); }
+    int subresources() const { return levels * slices(); }
     int levelWidth(int level) const { return std::max(1, int(desc.Width) >> level); }
     int levelHeight(int level) const { return std::max(1, int(desc.Height) >> level); }
     std::size_t levelBytes(int level) const;
@@ -117,6 +124,7 @@ public:
         : Object(device), volume(viewed), desc(d) { volume->AddRef(); }
     ~ShaderResourceView() override {
         typed.reset();  // before the buffer it reads may go
+        arrayRange.reset();
         resource()->Release();
     }
     void GetResource(ID3D11Resource** r) override { resource()->AddRef(); *r = resource(); }
@@ -125,13 +133,17 @@ public:
         return texture ? static_cast<ID3D11Resource*>(texture) : volume ? static_cast<ID3D11Resource*>(volume) : buffer;
     }
     // What a shader samples through the view; null for a view of a buffer.
-    fxport::Texture* sampled() const { return texture ? texture->sampled() : volume ? volume->texels.get() : nullptr; }
+    fxport::Texture* sampled() const {
+        if (arrayRange) return arrayRange.get();
+        return texture ? texture->sampled() : volume ? volume->texels.get() : nullptr;
+    }
     Texture* texture = nullptr;
     Volume* volume = nullptr;
     Buffer* buffer = nullptr;
     D3D11_SHADER_RESOURCE_VIEW_DESC desc;
     BufferRange range;                         // buffer views
     std::unique_ptr<core::TexelBuffer> typed;  // a typed buffer view (Buffer<T>)
+    std::unique_ptr<fxport::Texture2DArray> arrayRange;  // a view of part of an array texture's levels or slices
 };
 // An unordered-access view of a structured or raw buffer, or of level 0 of a 2D texture.
 class UnorderedAccessView final : public Object<ID3D11UnorderedAccessView> {
@@ -155,22 +167,33 @@ class RenderTargetView final : public Object<ID3D11RenderTargetView> {
 public:
     RenderTargetView(Device* device, Texture* viewed, const D3D11_RENDER_TARGET_VIEW_DESC& d)
         : Object(device), texture(viewed), desc(d) { texture->AddRef(); }
-    ~RenderTargetView() override { texture->Release(); }
+    ~RenderTargetView() override {
+        slice.reset();  // before the array it draws into may go
+        texture->Release();
+    }
     void GetResource(ID3D11Resource** r) override { texture->AddRef(); *r = texture; }
     void GetDesc(D3D11_RENDER_TARGET_VIEW_DESC* pDesc) override { if (pDesc) *pDesc = desc; }
-    RenderTarget2D& target() const { return static_cast<RenderTarget2D&>(*texture->colour); }
+    RenderTarget2D& target() const { return slice ? *slice : static_cast<RenderTarget2D&>(*texture->colour); }
     Texture* texture;
     D3D11_RENDER_TARGET_VIEW_DESC desc;
+    std::unique_ptr<RenderTarget2D> slice;  // a view of slices of an array texture (layered for several)
 };
 class DepthStencilView final : public Object<ID3D11DepthStencilView> {
 public:
     DepthStencilView(Device* device, Texture* viewed, const D3D11_DEPTH_STENCIL_VIEW_DESC& d)
         : Object(device), texture(viewed), desc(d) { texture->AddRef(); }
-    ~DepthStencilView() override { texture->Release(); }
+    ~DepthStencilView() override {
+        slice.reset();  // before the texture it is made over
+        sliceTexture.reset();
+        texture->Release();
+    }
     void GetResource(ID3D11Resource** r) override { texture->AddRef(); *r = texture; }
     void GetDesc(D3D11_DEPTH_STENCIL_VIEW_DESC* pDesc) override { if (pDesc) *pDesc = desc; }
     Texture* texture;
     D3D11_DEPTH_STENCIL_VIEW_DESC desc;
+    std::unique_ptr<fxport::Texture2D> sliceTexture;  // slices of an array texture (one: a 2D texture)
+    std::unique_ptr<core::DepthBuffer> slice;          // the depth buffer over it
+    core::DepthBuffer& buffer() const { return slice ? *slice : *texture->depth; }
 };
 
 // --- shaders
@@ -275,11 +298,30 @@ struct DepthFamily {
     SurfaceFormat sampled;  // the depth texture's (SRV, or SRV and DSV)
 };
 const DepthFamily* depthFamilyOf(DXGI_FORMAT textureFormat);  // null: not one of them
+const DepthFamily* depthFamilyOfView(DXGI_FORMAT depthView);   // the family whose DSV format this is (D32_FLOAT ...)
 // A view's Format for texture `t`: its own (or UNKNOWN), or the typeless depth family's view of
 // that kind; E_NOTIMPL/E_INVALIDARG naming `desc`.Format otherwise.
 HRESULT checkViewFormat(const char* call, const char* desc, DXGI_FORMAT viewFormat, const Texture& t, bool depthView);
 // CreateTexture2D's checks of a multisampled description (resources_multisample.cpp).
 HRESULT checkMultisampleDesc(const D3D11_TEXTURE2D_DESC& d, bool hasData);
+// CreateTexture2D's usage rules (resources.cpp) and its full mip chain.
+HRESULT checkUsage(const char* call, const char* desc, D3D11_USAGE usage, UINT bind, UINT cpu, bool hasData);
+int fullMipCount(UINT width, UINT height);
+// Array textures (resources_array.cpp): CreateTexture2D with ArraySize > 1 (no TEXTURECUBE), and
+// the TEXTURE2DARRAY shader-resource and render-target views of them.
+HRESULT createTextureArray(Device* device, const D3D11_TEXTURE2D_DESC& d, const D3D11_SUBRESOURCE_DATA* pInitialData, ID3D11Texture2D** pp);
+HRESULT arrayShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc, ID3D11ShaderResourceView** pp);
+HRESULT arrayRenderTargetView(Device* device, Texture* t, const D3D11_RENDER_TARGET_VIEW_DESC* pDesc, ID3D11RenderTargetView** pp);
+HRESULT arrayDepthStencilView(Device* device, Texture* t, const D3D11_DEPTH_STENCIL_VIEW_DESC* pDesc, ID3D11DepthStencilView** pp);
+// One subresource of a 2D texture or array (texture_subresources.cpp): which level and slice D3D's
+// index names, and its texels, tightly packed, from wherever the texture keeps them (GPU or staging).
+struct Subresource {
+    int level = 0, slice = 0;
+};
+bool splitSubresource(const Texture& t, UINT index, Subresource& out);  // false: past the last
+std::vector<std::uint8_t> readSubresource(Texture& t, Subresource s);
+// `area` (null: the whole level) of subresource `s` from tightly packed texels.
+void writeSubresource(Texture& t, Subresource s, const Rectangle* area, const std::vector<std::uint8_t>& packed);
 // CreateShaderResourceView of a 3D texture (resources_3d.cpp).
 HRESULT volumeShaderResourceView(Device* device, Volume* v, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc, ID3D11ShaderResourceView** pp);
 

@@ -80,7 +80,9 @@ public:
         for (const auto& t : bindings_.samplers) resources_.push_back({t.name, D3D_SIT_SAMPLER, UINT(t.slot), D3D_SRV_DIMENSION_UNKNOWN});
         for (const auto& t : bindings_.textures)
             resources_.push_back({t.name, D3D_SIT_TEXTURE, UINT(t.slot),
-                                  t.kind == xlate::TextureKind::TextureCube ? D3D_SRV_DIMENSION_TEXTURECUBE : D3D_SRV_DIMENSION_TEXTURE2D});
+                                  t.kind == xlate::TextureKind::TextureCube ? D3D_SRV_DIMENSION_TEXTURECUBE
+                                  : t.kind == xlate::TextureKind::Texture3D ? D3D_SRV_DIMENSION_TEXTURE3D
+                                                                             : D3D_SRV_DIMENSION_TEXTURE2D});  // xlate does not mark arrays
         for (const CbufferBinding& c : bindings_.cbuffers) resources_.push_back({c.name, D3D_SIT_CBUFFER, UINT(c.slot), D3D_SRV_DIMENSION_UNKNOWN});
         // Buffers and RWTexture2Ds (xlate's storage list; a ByteAddressBuffer reads as a structured
         // buffer of 4-byte elements: xlate does not tell them apart).

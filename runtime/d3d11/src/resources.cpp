@@ -12,8 +12,6 @@
 
 namespace fxport::d3d11 {
 
-namespace {
-
 int fullMipCount(UINT w, UINT h) {
     int levels = 1;
     for (UINT size = std::max(w, h); size > 1; size >>= 1) ++levels;
@@ -41,6 +39,8 @@ HRESULT checkUsage(const char* call, const char* desc, D3D11_USAGE usage, UINT b
     }
     return fail(E_INVALIDARG, at + ".Usage = " + std::to_string(usage) + " is not a D3D11_USAGE value (0-3)");
 }
+
+namespace {
 
 // D3D's rules for structured and raw buffers (MiscFlags, StructureByteStride) and for buffers a
 // shader writes (BIND_UNORDERED_ACCESS).
@@ -150,8 +150,7 @@ HRESULT Device::CreateTexture2D(const D3D11_TEXTURE2D_DESC* pDesc, const D3D11_S
         return fail(E_INVALIDARG, at + "Width x Height = " + std::to_string(d.Width) + " x " + std::to_string(d.Height) + " (1 to 16384 each)");
     if (d.ArraySize == 0) return fail(E_INVALIDARG, at + "ArraySize = 0");
     const bool isCube = (d.MiscFlags & D3D11_RESOURCE_MISC_TEXTURECUBE) != 0;
-    if (d.ArraySize > 1 && !isCube)
-        return fail(E_NOTIMPL, at + "ArraySize = " + std::to_string(d.ArraySize) + ": texture arrays are not supported yet");
+    if (d.ArraySize > 1 && !isCube) return createTextureArray(this, d, pInitialData, ppTexture2D);
     if (d.SampleDesc.Count == 0) return fail(E_INVALIDARG, at + "SampleDesc.Count = 0");
     if (d.SampleDesc.Count > 1)
         if (HRESULT hr = checkMultisampleDesc(d, pInitialData != nullptr); FAILED(hr)) return hr;

@@ -24,6 +24,12 @@ const DepthFamily* depthFamilyOf(DXGI_FORMAT textureFormat) {
     return nullptr;
 }
 
+const DepthFamily* depthFamilyOfView(DXGI_FORMAT depthView) {
+    for (const DepthFamily& f : kFamilies)
+        if (f.depthView == depthView) return &f;
+    return nullptr;
+}
+
 HRESULT checkViewFormat(const char* call, const char* desc, DXGI_FORMAT viewFormat, const Texture& t, bool depthView) {
     const DepthFamily* family = depthFamilyOf(t.desc.Format);
     if (!family) {

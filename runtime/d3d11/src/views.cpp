@@ -1,5 +1,6 @@
 // Shader-resource, render-target and depth-stencil views of 2D textures (the whole texture: one
-// format, all levels for SRVs, level 0 for RTVs and DSVs; TEXTURE2DMS views of multisampled ones); shader-resource and unordered-access
+// format, all levels for SRVs, level 0 for RTVs and DSVs; TEXTURE2DMS views of multisampled ones;
+// array textures' views in resources_array.cpp); shader-resource and unordered-access
 // views of elements of typed (Buffer<T>), structured (StructuredBuffer<T>) and raw
 // (ByteAddressBuffer) buffers, and
 // unordered-access views of level 0 of a 2D texture (RWTexture2D).
@@ -143,6 +144,7 @@ HRESULT Device::CreateShaderResourceView(ID3D11Resource* pResource, const D3D11_
         return fail(E_INVALIDARG, std::string(call) + ": the texture's BindFlags = " + std::to_string(t->desc.BindFlags) +
                                       " lack D3D11_BIND_SHADER_RESOURCE");
     if (HRESULT f = needsDescription(call, *t, pDesc != nullptr); FAILED(f)) return f;
+    if (t->slices() > 1) return arrayShaderResourceView(this, t, pDesc, ppSRView);
     // A cube texture is viewed as a cube (TEXTURECUBE), a multisampled one as TEXTURE2DMS, any other
     // as a 2D texture.
     const bool multisampled = t->desc.SampleDesc.Count > 1;
@@ -183,6 +185,7 @@ HRESULT Device::CreateRenderTargetView(ID3D11Resource* pResource, const D3D11_RE
     if (!(t->desc.BindFlags & D3D11_BIND_RENDER_TARGET))
         return fail(E_INVALIDARG, std::string(call) + ": the texture's BindFlags = " + std::to_string(t->desc.BindFlags) +
                                       " lack D3D11_BIND_RENDER_TARGET");
+    if (t->slices() > 1) return arrayRenderTargetView(this, t, pDesc, ppRTView);
     D3D11_RENDER_TARGET_VIEW_DESC d;
     d.Format = t->desc.Format;
     const bool multisampled = t->desc.SampleDesc.Count > 1;
@@ -210,6 +213,10 @@ HRESULT Device::CreateDepthStencilView(ID3D11Resource* pResource, const D3D11_DE
     HRESULT hr;
     Texture* t = textureOf(this, pResource, call, hr);
     if (!t) return hr;
+    if (t->slices() > 1 && (t->desc.BindFlags & D3D11_BIND_DEPTH_STENCIL)) {
+        if (HRESULT f = needsDescription(call, *t, pDesc != nullptr); FAILED(f)) return f;
+        return arrayDepthStencilView(this, t, pDesc, ppDepthStencilView);
+    }
     if (!t->depth)
         return fail(E_INVALIDARG, std::string(call) + ": the texture's BindFlags = " + std::to_string(t->desc.BindFlags) +
                                       " lack D3D11_BIND_DEPTH_STENCIL");

@@ -87,7 +87,8 @@ inline std::uint64_t hashBytes(const void* data, std::size_t bytes, std::uint64_
     return hash;
 }
 
-// A colour attachment of a framebuffer: level 0 of a 2D texture, or one face of a cube (face >= 0).
+// A colour attachment of a framebuffer: level 0 of a 2D texture, or one face of a cube or one
+// layer of an array texture (face >= 0).
 struct ColorAttachment {
     BackendObject texture = 0;
     int face = -1;
@@ -101,6 +102,8 @@ struct TextureCopy {
     int sourceLevel = 0, destinationLevel = 0;
     int sourceX = 0, sourceY = 0, destinationX = 0, destinationY = 0;
     int width = 0, height = 0;
+    // >= 0: that layer of an array texture (one layer is copied; `cube` is false).
+    int sourceLayer = -1, destinationLayer = -1;
 };
 
 // What a query measures: the samples passing the depth and stencil tests, a GPU timestamp, or one
@@ -213,6 +216,16 @@ public:
     // whole level, slices front to back, rows top first; readTexture (face -1) reads one back so.
     virtual BackendObject createVolumeTexture(SurfaceFormat format, int levels, int width, int height, int depth) = 0;
     virtual void writeVolume(BackendObject texture, SurfaceFormat format, int level, int width, int height, int depth, const void* data) = 0;
+    // 2D array textures: `layers` layers of `levels` levels of width x height texels. One layer of
+    // one level is written (writeTexture) and read (readTexture, readTextureFloats) with the layer as
+    // `face`; a colour attachment's `face` names the layer too.
+    virtual BackendObject createArrayTexture(SurfaceFormat format, int levels, int width, int height, int layers) = 0;
+    // A second texture over the texels of `source` (an array texture): levels [firstLevel,
+    // firstLevel + levels) and layers [firstLayer, firstLayer + layers), seen as an array texture
+    // (`array`) or, for one layer, as a 2D texture. Writes through either are seen by both; it is
+    // deleted with deleteTexture (the source's texels stay). 0 when the API cannot make views.
+    virtual BackendObject createTextureView(BackendObject source, SurfaceFormat format, bool array, int firstLevel, int levels, int firstLayer,
+                                            int layers) = 0;
     // Multisampled 2D textures (D3D10+'s SampleDesc.Count > 1), fixed sample positions: render
     // targets a shader reads sample by sample. `given` is the count the driver made (it may round
     // up). copySamples copies level 0 between a multisampled and a single-sample texture of one

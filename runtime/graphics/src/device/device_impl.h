@@ -253,6 +253,10 @@ struct GraphicsDevice::Impl {
     // Backend object bookkeeping: every create/delete goes through these so liveGpuObjects() is exact.
     BackendObject createTexture(bool cube, SurfaceFormat format, int levels, int width, int height);
     BackendObject createVolumeTexture(SurfaceFormat format, int levels, int width, int height, int depth);
+    BackendObject createArrayTexture(SurfaceFormat format, int levels, int width, int height, int layers);
+    // A view of `source` (Backend::createTextureView); throws InvalidOperation naming `who` when the backend cannot make it.
+    BackendObject createTextureView(const std::string& who, BackendObject source, SurfaceFormat format, bool array, int firstLevel, int levels,
+                                    int firstLayer, int layers);
     BackendObject createMultisampleTexture(SurfaceFormat format, int samples, int width, int height, int& given);
     void deleteTexture(BackendObject& name);
     BackendObject createBuffer();

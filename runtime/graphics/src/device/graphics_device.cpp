@@ -637,6 +637,20 @@ BackendObject GraphicsDevice::Impl::createVolumeTexture(SurfaceFormat format, in
     ++live.textures;
     return name;
 }
+BackendObject GraphicsDevice::Impl::createArrayTexture(SurfaceFormat format, int levels, int width, int height, int layers) {
+    const BackendObject name = backend->createArrayTexture(format, levels, width, height, layers);
+    ++live.textures;
+    return name;
+}
+BackendObject GraphicsDevice::Impl::createTextureView(const std::string& who, BackendObject source, SurfaceFormat format, bool array, int firstLevel,
+                                                      int levels, int firstLayer, int layers) {
+    const BackendObject name = backend->createTextureView(source, format, array, firstLevel, levels, firstLayer, layers);
+    if (name == 0)
+        throw InvalidOperation(who + ": the graphics API cannot make a view of levels " + std::to_string(firstLevel) + "+" + std::to_string(levels) +
+                           ", layers " + std::to_string(firstLayer) + "+" + std::to_string(layers) + " (texture views: GL 4.3)");
+    ++live.textures;
+    return name;
+}
 BackendObject GraphicsDevice::Impl::createMultisampleTexture(SurfaceFormat format, int samples, int width, int height, int& given) {
     const BackendObject name = backend->createMultisampleTexture(format, samples, width, height, given);
     ++live.textures;

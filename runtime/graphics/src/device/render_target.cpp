@@ -48,6 +48,14 @@ RenderTarget2D::RenderTarget2D(fxport::GraphicsDevice& device, int width, int he
     adoptDepth(device, depth_, preferredDepthFormat, width, height);
 }
 
+RenderTarget2D::RenderTarget2D(Texture2DArray& array, int layer, int level, int layers)
+    : Texture2D(array.device(), "RenderTarget2D", array.levelWidth(level), array.levelHeight(level), array.Format(),
+                array.layerView("a RenderTarget2D over layers", layer, level, layers)),
+      usage_(fxport::RenderTargetUsage::PreserveContents) {
+    checkRenderable(device(), describe(), Format());
+    adoptDepth(device(), depth_, DepthFormat::None, Width(), Height());
+}
+
 RenderTarget2D::~RenderTarget2D() { disposeFromDestructor(); }
 
 void RenderTarget2D::releaseGpuObjects() {

@@ -87,6 +87,11 @@ Texture2D::Texture2D(fxport::GraphicsDevice& device, const char* typeName, int w
     create(mipMap);
 }
 
+Texture2D::Texture2D(fxport::GraphicsDevice& device, const char* typeName, int width, int height, SurfaceFormat format, std::uint32_t adopted)
+    : Texture(device, typeName, Kind::Texture2D, format, 1), width_(width), height_(height) {
+    name_ = adopted;
+}
+
 void Texture2D::create(bool) {
     name_ = deviceImpl(device()).createTexture(false, format_, levels_, width_, height_);
 }

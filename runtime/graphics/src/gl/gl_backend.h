@@ -85,6 +85,9 @@ public:
     void copyTexture(const TextureCopy& copy) override;
     BackendObject createVolumeTexture(SurfaceFormat format, int levels, int width, int height, int depth) override;
     void writeVolume(BackendObject texture, SurfaceFormat format, int level, int width, int height, int depth, const void* data) override;
+    BackendObject createArrayTexture(SurfaceFormat format, int levels, int width, int height, int layers) override;
+    BackendObject createTextureView(BackendObject source, SurfaceFormat format, bool array, int firstLevel, int levels, int firstLayer,
+                                    int layers) override;
     BackendObject createMultisampleTexture(SurfaceFormat format, int samples, int width, int height, int& given) override;
     void copySamples(BackendObject source, BackendObject destination, int width, int height) override;
     unsigned multisampledUnits(BackendObject program) override;

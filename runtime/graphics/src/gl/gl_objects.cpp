@@ -120,6 +120,30 @@ BackendObject GlBackend::createVolumeTexture(SurfaceFormat format, int levels, i
     return name;
 }
 
+BackendObject GlBackend::createArrayTexture(SurfaceFormat format, int levels, int width, int height, int layers) {
+    GLuint name = 0;
+    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &name);
+    glTextureStorage3D(name, levels, detail::glFormat(format).internalFormat, width, height, layers);
+    applyD3D9Swizzle(name, format);
+    return name;
+}
+
+// glTextureView (core since 4.3) needs a name never bound: glGenTextures, not glCreateTextures.
+// The view's own parameters start at GL's defaults, so the swizzle is applied again.
+BackendObject GlBackend::createTextureView(BackendObject source, SurfaceFormat format, bool array, int firstLevel, int levels, int firstLayer,
+                                           int layers) {
+    GLuint name = 0;
+    glGenTextures(1, &name);
+    glTextureView(name, array ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D, source, detail::glFormat(format).internalFormat, GLuint(firstLevel),
+                  GLuint(levels), GLuint(firstLayer), GLuint(layers));
+    if (!glIsTexture(name)) {  // refused (no GL_ARB_texture_view, or a range outside the source)
+        glDeleteTextures(1, &name);
+        return 0;
+    }
+    applyD3D9Swizzle(name, format);
+    return name;
+}
+
 BackendObject GlBackend::createMultisampleTexture(SurfaceFormat format, int samples, int width, int height, int& given) {
     GLuint name = 0;
     glCreateTextures(GL_TEXTURE_2D_MULTISAMPLE, 1, &name);

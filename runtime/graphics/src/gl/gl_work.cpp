@@ -80,9 +80,9 @@ void GlBackend::readTexture(BackendObject texture, SurfaceFormat format, int fac
     if (face < 0) {
         glGetTextureImage(texture, level, f.format, f.type, GLsizei(bytes), out);
     } else {
-        GLint size = 0;
-        glGetTextureLevelParameteriv(texture, level, GL_TEXTURE_WIDTH, &size);
-        glGetTextureSubImage(texture, level, 0, 0, face, size, size, 1, f.format, f.type, GLsizei(bytes), out);
+        // A cube's face or an array's layer: the level's width x height at depth `face`.
+        const Rectangle size = textureLevelSize(texture, level);
+        glGetTextureSubImage(texture, level, 0, 0, face, size.Width, size.Height, 1, f.format, f.type, GLsizei(bytes), out);
     }
 }
 
@@ -91,9 +91,8 @@ void GlBackend::readTextureFloats(BackendObject texture, int face, int level, st
     if (face < 0) {
         glGetTextureImage(texture, level, GL_RGBA, GL_FLOAT, GLsizei(bytes), out);
     } else {
-        GLint size = 0;
-        glGetTextureLevelParameteriv(texture, level, GL_TEXTURE_WIDTH, &size);
-        glGetTextureSubImage(texture, level, 0, 0, face, size, size, 1, GL_RGBA, GL_FLOAT, GLsizei(bytes), out);
+        const Rectangle size = textureLevelSize(texture, level);
+        glGetTextureSubImage(texture, level, 0, 0, face, size.Width, size.Height, 1, GL_RGBA, GL_FLOAT, GLsizei(bytes), out);
     }
 }
 
@@ -106,8 +105,11 @@ Rectangle GlBackend::textureLevelSize(BackendObject texture, int level) {
 
 void GlBackend::copyTexture(const TextureCopy& c) {
     const GLenum target = c.cube ? GL_TEXTURE_CUBE_MAP : c.multisampled ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D;
-    glCopyImageSubData(c.source, target, c.sourceLevel, c.sourceX, c.sourceY, 0, c.destination, target, c.destinationLevel,
-                       c.destinationX, c.destinationY, 0, c.width, c.height, c.cube ? 6 : 1);
+    // An array's layer is addressed as its z (GL copies between a 2D texture and an array's layer).
+    const GLenum sourceTarget = c.sourceLayer >= 0 ? GL_TEXTURE_2D_ARRAY : target;
+    const GLenum destinationTarget = c.destinationLayer >= 0 ? GL_TEXTURE_2D_ARRAY : target;
+    glCopyImageSubData(c.source, sourceTarget, c.sourceLevel, c.sourceX, c.sourceY, std::max(c.sourceLayer, 0), c.destination, destinationTarget,
+                       c.destinationLevel, c.destinationX, c.destinationY, std::max(c.destinationLayer, 0), c.width, c.height, c.cube ? 6 : 1);
 }
 
 void GlBackend::presentFlipped(BackendObject framebuffer, int width, int height) {

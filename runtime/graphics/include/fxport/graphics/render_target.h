@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "fxport/graphics/texture.h"
+#include "fxport/graphics/texture_2d_array.h"
 
 namespace fxport {
 
@@ -31,6 +32,12 @@ public:
                    SurfaceFormat preferredFormat = SurfaceFormat::Color,
                    DepthFormat preferredDepthFormat = DepthFormat::None, int preferredMultiSampleCount = 0,
                    fxport::RenderTargetUsage usage = fxport::RenderTargetUsage::DiscardContents);
+    // fxport: a target over one layer of one level of `array` (D3D11's render-target view of an
+    // array slice): draws into it write the array's texels. No depth buffer; `array` must outlive it.
+    // `layers` > 1: a layered target over that many layers from `layer` (a view of several slices):
+    // each primitive goes to the layer its SV_RenderTargetArrayIndex names (the first when none is
+    // written, as D3D), a clear clears every layer; its texels are read through `array`.
+    RenderTarget2D(Texture2DArray& array, int layer, int level, int layers = 1);
     ~RenderTarget2D() override;
 
     DepthFormat DepthStencilFormat() const { return depth_.format; }

@@ -19,7 +19,7 @@ enum class CubeMapFace : std::uint8_t { PositiveX, NegativeX, PositiveY, Negativ
 
 class Texture : public GraphicsResource {
 public:
-    enum class Kind : std::uint8_t { Texture2D, TextureCube, Texture3D };
+    enum class Kind : std::uint8_t { Texture2D, TextureCube, Texture3D, Texture2DArray };
 
     SurfaceFormat Format() const { return format_; }
     int LevelCount() const { return levels_; }
@@ -48,10 +48,17 @@ protected:
     Kind kind_;
 };
 
+class Texture2DArray;
+
 class Texture2D : public Texture {
 public:
     Texture2D(fxport::GraphicsDevice& device, int width, int height, bool mipMap = false,
               SurfaceFormat format = SurfaceFormat::Color);
+    // fxport: one layer of one level of `array` as a 2D texture sharing its texels (a D3D11
+    // depth-stencil view of an array slice is a depth buffer over it); `array` must outlive it.
+    // `layers` > 1: that many layers from `layer`, a layered depth buffer's texture (draws reach
+    // the layer SV_RenderTargetArrayIndex names); read and write texels through `array` then.
+    Texture2D(Texture2DArray& array, int layer, int level, int layers = 1);
     ~Texture2D() override;
 
     int Width() const { return width_; }
@@ -89,6 +96,8 @@ public:
 protected:
     Texture2D(fxport::GraphicsDevice& device, const char* typeName, int width, int height, bool mipMap,
               SurfaceFormat format);
+    // Over a backend texture made elsewhere (a view of another texture's texels), one level.
+    Texture2D(fxport::GraphicsDevice& device, const char* typeName, int width, int height, SurfaceFormat format, std::uint32_t adopted);
 
 private:
     void create(bool mipMap);

@@ -1,0 +1,237 @@
+// Array textures: CreateTexture2D with ArraySize > 1 (no TEXTURECUBE), a device-core
+// Texture2DArray (or CPU memory for USAGE_STAGING), and their views. A shader-resource view sees
+// any range of levels and slices (a part through a texture view sharing the texels); a
+// render-target or depth-stencil view is one slice of one level (a cascaded shadow map: a
+// typeless depth array drawn slice by slice, sampled as a whole) or a layered view of several,
+// drawn into through SV_RenderTargetArrayIndex. D3D numbers subresources level + slice *
+// MipLevels, which pInitialData follows. Not here yet: unordered-access arrays, multisampled
+// arrays (Texture2DMSArray), cube arrays.
+#include <cstring>
+
+#include "d3d11_impl.h"
+#include "guarded.h"
+
+namespace fxport::d3d11 {
+
+namespace {
+
+constexpr UINT kMaxSlices = 2048;  // D3D11_REQ_TEXTURE2D_ARRAY_AXIS_DIMENSION
+
+// What fxport's arrays are not yet, each E_NOTIMPL naming the field.
+HRESULT checkArrayScope(const D3D11_TEXTURE2D_DESC& d, const std::string& at) {
+    if (d.SampleDesc.Count > 1)
+        return fail(E_NOTIMPL, at + "SampleDesc.Count = " + std::to_string(d.SampleDesc.Count) + " with ArraySize = " + std::to_string(d.ArraySize) +
+                                   ": multisampled arrays (Texture2DMSArray) are not supported yet");
+    if (d.BindFlags & D3D11_BIND_UNORDERED_ACCESS)
+        return fail(E_NOTIMPL, at + "BindFlags = " + std::to_string(d.BindFlags) + " with ArraySize = " + std::to_string(d.ArraySize) +
+                                   ": fxport's array textures are SHADER_RESOURCE, RENDER_TARGET and DEPTH_STENCIL only (no UAV arrays yet)");
+    if (d.BindFlags & ~UINT(D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_RENDER_TARGET | D3D11_BIND_DEPTH_STENCIL))
+        return fail(E_NOTIMPL, at + "BindFlags = " + std::to_string(d.BindFlags) + ": only SHADER_RESOURCE, RENDER_TARGET and DEPTH_STENCIL for an array texture");
+    if (d.MiscFlags & ~UINT(D3D11_RESOURCE_MISC_GENERATE_MIPS))
+        return fail(E_NOTIMPL, at + "MiscFlags = " + std::to_string(d.MiscFlags) + ": an array texture takes D3D11_RESOURCE_MISC_GENERATE_MIPS only");
+    return S_OK;
+}
+
+// The texels' format: a colour format, or a depth array's (a typeless depth family, sampled and
+// drawn into; or a depth format, drawn into only), whose slices a depth-stencil view draws into.
+HRESULT arrayFormat(const D3D11_TEXTURE2D_DESC& d, bool hasData, SurfaceFormat& format) {
+    const std::string at = "CreateTexture2D: D3D11_TEXTURE2D_DESC.";
+    const bool depthTarget = (d.BindFlags & D3D11_BIND_DEPTH_STENCIL) != 0;
+    const DepthFamily* family = depthFamilyOf(d.Format);
+    if (!family && depthTarget) family = depthFamilyOfView(d.Format);
+    if (depthTarget && (d.BindFlags & D3D11_BIND_RENDER_TARGET))
+        return fail(E_INVALIDARG, at + "BindFlags = " + std::to_string(d.BindFlags) + ": a texture is a depth-stencil or a render target, not both");
+    if (family && (d.BindFlags & D3D11_BIND_RENDER_TARGET))
+        return fail(E_NOTIMPL, at + "BindFlags = " + std::to_string(d.BindFlags) + " with Format = " + formatName(d.Format) +
+                                   ": fxport keeps a typeless texture as a depth texture (DEPTH_STENCIL and SHADER_RESOURCE only)");
+    if (depthTarget && (d.BindFlags & D3D11_BIND_SHADER_RESOURCE) && family && family->typeless != d.Format)
+        return fail(E_INVALIDARG, at + "BindFlags = " + std::to_string(d.BindFlags) + " with Format = " + formatName(d.Format) +
+                                      ": a depth texture a shader samples is made typeless (R32_TYPELESS, R24G8_TYPELESS, R16_TYPELESS)");
+    if (depthTarget && (d.MiscFlags & D3D11_RESOURCE_MISC_GENERATE_MIPS))
+        return fail(E_INVALIDARG, at + "MiscFlags = D3D11_RESOURCE_MISC_GENERATE_MIPS with BIND_DEPTH_STENCIL (mips are generated for render targets)");
+    if (family && family->typeless == DXGI_FORMAT_R24G8_TYPELESS && hasData)
+        return fail(E_NOTIMPL, at + "Format = DXGI_FORMAT_R24G8_TYPELESS with pInitialData: fxport does not upload packed depth-stencil texels");
+    if (depthTarget && hasData) return fail(E_INVALIDARG, at + "BindFlags has DEPTH_STENCIL and pInitialData is given");
+    if (family) {
+        format = family->sampled;
+        return S_OK;
+    }
+    if (textureFormat(d.Format, format)) return S_OK;
+    return fail(d.Format == DXGI_FORMAT_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
+                at + "Format = " + formatName(d.Format) + " (" + std::to_string(d.Format) + "): not an array texture format fxport supports (docs/API.md lists them)");
+}
+
+// D3D's own rules for an array description.
+HRESULT checkArrayDesc(const D3D11_TEXTURE2D_DESC& d, bool hasData, SurfaceFormat& format) {
+    const std::string at = "CreateTexture2D: D3D11_TEXTURE2D_DESC.";
+    if (d.ArraySize > kMaxSlices) return fail(E_INVALIDARG, at + "ArraySize = " + std::to_string(d.ArraySize) + " (1 to 2048)");
+    if (d.SampleDesc.Count == 0) return fail(E_INVALIDARG, at + "SampleDesc.Count = 0");
+    if (HRESULT hr = checkArrayScope(d, at); FAILED(hr)) return hr;
+    const int full = fullMipCount(d.Width, d.Height);
+    if (int(d.MipLevels) > full)
+        return fail(E_INVALIDARG, at + "MipLevels = " + std::to_string(d.MipLevels) + " (a " + std::to_string(d.Width) + "x" + std::to_string(d.Height) +
+                                      " texture has at most " + std::to_string(full) + ")");
+    // D3D11: a dynamic texture is one level of one slice.
+    if (d.Usage == D3D11_USAGE_DYNAMIC)
+        return fail(E_INVALIDARG, at + "Usage = D3D11_USAGE_DYNAMIC with ArraySize = " + std::to_string(d.ArraySize) + " (a dynamic texture has ArraySize 1)");
+    if (HRESULT hr = checkUsage("CreateTexture2D", "D3D11_TEXTURE2D_DESC", d.Usage, d.BindFlags, d.CPUAccessFlags, hasData); FAILED(hr)) return hr;
+    if (HRESULT hr = arrayFormat(d, hasData, format); FAILED(hr)) return hr;
+    if ((d.MiscFlags & D3D11_RESOURCE_MISC_GENERATE_MIPS) && isIntegerFormat(format))
+        return fail(E_INVALIDARG, at + "MiscFlags = D3D11_RESOURCE_MISC_GENERATE_MIPS with Format = " + formatName(d.Format) +
+                                      ": integer texels cannot be filtered into smaller levels");
+    return S_OK;
+}
+
+// Subresource `sub` of `initial`, packed tightly.
+HRESULT packSubresource(const Texture& t, const D3D11_SUBRESOURCE_DATA& s, UINT sub, Subresource at, std::vector<std::uint8_t>& packed) {
+    const std::string where = "CreateTexture2D: pInitialData[" + std::to_string(sub) + "].";
+    if (!s.pSysMem) return fail(E_INVALIDARG, where + "pSysMem is null");
+    const std::size_t row = std::size_t(t.levelWidth(at.level)) * std::size_t(bytesPerPixel(t.format));
+    if (s.SysMemPitch < row)
+        return fail(E_INVALIDARG, where + "SysMemPitch = " + std::to_string(s.SysMemPitch) + ", less than a row (" + std::to_string(row) + " bytes)");
+    packed.resize(t.levelBytes(at.level));
+    for (int y = 0; y < t.levelHeight(at.level); ++y)
+        std::memcpy(&packed[std::size_t(y) * row], static_cast<const std::uint8_t*>(s.pSysMem) + std::size_t(y) * s.SysMemPitch, row);
+    return S_OK;
+}
+
+HRESULT fillArray(Texture& t, const D3D11_SUBRESOURCE_DATA* initial) {
+    std::vector<std::uint8_t> packed;
+    for (UINT sub = 0; sub < UINT(t.subresources()); ++sub) {
+        Subresource at;
+        splitSubresource(t, sub, at);
+        if (HRESULT hr = packSubresource(t, initial[sub], sub, at, packed); FAILED(hr)) return hr;
+        writeSubresource(t, at, nullptr, packed);
+    }
+    return S_OK;
+}
+
+// The slices [first, first + count) a view names, inside the texture's `slices`.
+HRESULT checkSlices(const std::string& at, UINT first, UINT count, int slices) {
+    if (count == 0 || first >= UINT(slices) || count > UINT(slices) - first)
+        return fail(E_INVALIDARG, at + "FirstArraySlice + ArraySize = " + std::to_string(first) + " + " + std::to_string(count) + " (the texture has " +
+                                      std::to_string(slices) + " slices)");
+    return S_OK;
+}
+
+}  // namespace
+
+HRESULT createTextureArray(Device* device, const D3D11_TEXTURE2D_DESC& d, const D3D11_SUBRESOURCE_DATA* pInitialData, ID3D11Texture2D** pp) {
+    SurfaceFormat format = SurfaceFormat::Color;
+    if (HRESULT hr = checkArrayDesc(d, pInitialData && pInitialData->pSysMem, format); FAILED(hr)) return hr;
+    if (!pp) return succeed();  // D3D: validation only
+    return guarded("CreateTexture2D", [&] {
+        auto texture = std::unique_ptr<Texture, void (*)(Texture*)>(new Texture(device, d), [](Texture* t) { t->Release(); });
+        Texture& t = *texture;
+        t.format = format;
+        t.levels = d.MipLevels == 0 ? fullMipCount(d.Width, d.Height) : int(d.MipLevels);
+        t.desc.MipLevels = UINT(t.levels);
+        if (d.Usage == D3D11_USAGE_STAGING)
+            for (int sub = 0; sub < t.subresources(); ++sub) t.staging.emplace_back(t.levelBytes(sub % t.levels), 0);
+        else
+            t.array = std::make_unique<fxport::Texture2DArray>(device->core(), int(d.Width), int(d.Height), int(d.ArraySize), t.levels, format);
+        if (pInitialData)
+            if (HRESULT hr = fillArray(t, pInitialData); FAILED(hr)) return hr;
+        *pp = texture.release();
+        return succeed();
+    });
+}
+
+HRESULT arrayShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc, ID3D11ShaderResourceView** pp) {
+    const std::string call = "CreateShaderResourceView", at = call + ": D3D11_SHADER_RESOURCE_VIEW_DESC.";
+    D3D11_SHADER_RESOURCE_VIEW_DESC d;
+    d.Format = t->desc.Format;
+    d.ViewDimension = D3D11_SRV_DIMENSION_TEXTURE2DARRAY;
+    d.Texture2DArray = {0, UINT(t->levels), 0, UINT(t->slices())};
+    if (pDesc) {
+        if (pDesc->ViewDimension != D3D11_SRV_DIMENSION_TEXTURE2DARRAY)
+            return fail(pDesc->ViewDimension == D3D11_SRV_DIMENSION_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
+                        at + "ViewDimension = " + std::to_string(pDesc->ViewDimension) + " (fxport views an array texture as D3D11_SRV_DIMENSION_TEXTURE2DARRAY)");
+        if (HRESULT f = checkViewFormat(call.c_str(), "D3D11_SHADER_RESOURCE_VIEW_DESC", pDesc->Format, *t, false); FAILED(f)) return f;
+        const auto& a = pDesc->Texture2DArray;
+        if (a.MostDetailedMip >= UINT(t->levels))
+            return fail(E_INVALIDARG, at + "Texture2DArray.MostDetailedMip = " + std::to_string(a.MostDetailedMip) + " (the texture has " +
+                                          std::to_string(t->levels) + " levels)");
+        const UINT levels = a.MipLevels == UINT(-1) ? UINT(t->levels) - a.MostDetailedMip : a.MipLevels;
+        if (levels == 0 || levels > UINT(t->levels) - a.MostDetailedMip)
+            return fail(E_INVALIDARG, at + "Texture2DArray.MipLevels = " + std::to_string(a.MipLevels) + " from MostDetailedMip " +
+                                          std::to_string(a.MostDetailedMip) + " (the texture has " + std::to_string(t->levels) + " levels)");
+        if (HRESULT f = checkSlices(at + "Texture2DArray.", a.FirstArraySlice, a.ArraySize, t->slices()); FAILED(f)) return f;
+        d.Texture2DArray = {a.MostDetailedMip, levels, a.FirstArraySlice, a.ArraySize};
+        if (pDesc->Format != DXGI_FORMAT_UNKNOWN) d.Format = pDesc->Format;
+    }
+    if (!pp) return succeed();
+    return guarded(call.c_str(), [&] {
+        auto view = std::unique_ptr<ShaderResourceView, void (*)(ShaderResourceView*)>(new ShaderResourceView(device, t, d),
+                                                                                       [](ShaderResourceView* v) { v->Release(); });
+        const auto& a = d.Texture2DArray;
+        if (a.MostDetailedMip != 0 || a.MipLevels != UINT(t->levels) || a.FirstArraySlice != 0 || a.ArraySize != UINT(t->slices()))
+            view->arrayRange = std::make_unique<fxport::Texture2DArray>(*t->array, int(a.MostDetailedMip), int(a.MipLevels), int(a.FirstArraySlice),
+                                                                        int(a.ArraySize));
+        *pp = view.release();
+        return succeed();
+    });
+}
+
+HRESULT arrayRenderTargetView(Device* device, Texture* t, const D3D11_RENDER_TARGET_VIEW_DESC* pDesc, ID3D11RenderTargetView** pp) {
+    const std::string call = "CreateRenderTargetView", at = call + ": D3D11_RENDER_TARGET_VIEW_DESC.";
+    D3D11_RENDER_TARGET_VIEW_DESC d;
+    d.Format = t->desc.Format;
+    d.ViewDimension = D3D11_RTV_DIMENSION_TEXTURE2DARRAY;
+    d.Texture2DArray = {0, 0, UINT(t->slices())};
+    if (pDesc) {
+        if (pDesc->ViewDimension != D3D11_RTV_DIMENSION_TEXTURE2DARRAY)
+            return fail(pDesc->ViewDimension == D3D11_RTV_DIMENSION_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
+                        at + "ViewDimension = " + std::to_string(pDesc->ViewDimension) + " (fxport views an array texture as D3D11_RTV_DIMENSION_TEXTURE2DARRAY)");
+        if (HRESULT f = checkViewFormat(call.c_str(), "D3D11_RENDER_TARGET_VIEW_DESC", pDesc->Format, *t, false); FAILED(f)) return f;
+        d = *pDesc;
+        if (d.Format == DXGI_FORMAT_UNKNOWN) d.Format = t->desc.Format;
+    }
+    const auto& a = d.Texture2DArray;
+    if (a.MipSlice >= UINT(t->levels))
+        return fail(E_INVALIDARG, at + "Texture2DArray.MipSlice = " + std::to_string(a.MipSlice) + " (the texture has " + std::to_string(t->levels) + " levels)");
+    if (HRESULT f = checkSlices(at + "Texture2DArray.", a.FirstArraySlice, a.ArraySize, t->slices()); FAILED(f)) return f;
+    if (!pp) return succeed();
+    return guarded(call.c_str(), [&] {
+        auto view = std::unique_ptr<RenderTargetView, void (*)(RenderTargetView*)>(new RenderTargetView(device, t, d),
+                                                                                   [](RenderTargetView* v) { v->Release(); });
+        // Several slices: a layered target, each primitive in the slice its SV_RenderTargetArrayIndex names.
+        view->slice = std::make_unique<RenderTarget2D>(*t->array, int(a.FirstArraySlice), int(a.MipSlice), int(a.ArraySize));
+        *pp = view.release();
+        return succeed();
+    });
+}
+
+
+HRESULT arrayDepthStencilView(Device* device, Texture* t, const D3D11_DEPTH_STENCIL_VIEW_DESC* pDesc, ID3D11DepthStencilView** pp) {
+    const std::string call = "CreateDepthStencilView", at = call + ": D3D11_DEPTH_STENCIL_VIEW_DESC.";
+    D3D11_DEPTH_STENCIL_VIEW_DESC d;
+    d.Format = t->desc.Format;
+    d.ViewDimension = D3D11_DSV_DIMENSION_TEXTURE2DARRAY;
+    d.Texture2DArray = {0, 0, UINT(t->slices())};
+    if (pDesc) {
+        if (pDesc->ViewDimension != D3D11_DSV_DIMENSION_TEXTURE2DARRAY)
+            return fail(pDesc->ViewDimension == D3D11_DSV_DIMENSION_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
+                        at + "ViewDimension = " + std::to_string(pDesc->ViewDimension) + " (fxport views an array texture as D3D11_DSV_DIMENSION_TEXTURE2DARRAY)");
+        if (HRESULT f = checkViewFormat(call.c_str(), "D3D11_DEPTH_STENCIL_VIEW_DESC", pDesc->Format, *t, true); FAILED(f)) return f;
+        if (pDesc->Flags != 0)
+            return fail(E_NOTIMPL, at + "Flags = " + std::to_string(pDesc->Flags) + ": read-only depth views are not supported yet");
+        d = *pDesc;
+        if (d.Format == DXGI_FORMAT_UNKNOWN) d.Format = t->desc.Format;
+    }
+    const auto& a = d.Texture2DArray;
+    if (a.MipSlice >= UINT(t->levels))
+        return fail(E_INVALIDARG, at + "Texture2DArray.MipSlice = " + std::to_string(a.MipSlice) + " (the texture has " + std::to_string(t->levels) + " levels)");
+    if (HRESULT f = checkSlices(at + "Texture2DArray.", a.FirstArraySlice, a.ArraySize, t->slices()); FAILED(f)) return f;
+    if (!pp) return succeed();
+    return guarded(call.c_str(), [&] {
+        auto view = std::unique_ptr<DepthStencilView, void (*)(DepthStencilView*)>(new DepthStencilView(device, t, d),
+                                                                                   [](DepthStencilView* v) { v->Release(); });
+        view->sliceTexture = std::make_unique<fxport::Texture2D>(*t->array, int(a.FirstArraySlice), int(a.MipSlice), int(a.ArraySize));
+        view->slice = std::make_unique<core::DepthBuffer>(device->core(), *view->sliceTexture);
+        *pp = view.release();
+        return succeed();
+    });
+}
+
+}  // namespace fxport::d3d11

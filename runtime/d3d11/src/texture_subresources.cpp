@@ -1,0 +1,42 @@
+// One subresource of a 2D texture or array texture, wherever its texels live: the device core's
+// Texture2D or Texture2DArray, or CPU memory for USAGE_STAGING (one vector per subresource, in
+// D3D's order level + slice * MipLevels). The context's copies and updates go through these.
+#include <cstring>
+
+#include "d3d11_impl.h"
+#include "fxport/graphics/errors.h"
+
+namespace fxport::d3d11 {
+
+bool splitSubresource(const Texture& t, UINT index, Subresource& out) {
+    if (index >= UINT(t.subresources())) return false;
+    out.level = int(index % UINT(t.levels));
+    out.slice = int(index / UINT(t.levels));
+    return true;
+}
+
+std::vector<std::uint8_t> readSubresource(Texture& t, Subresource s) {
+    if (!t.staging.empty()) return t.staging[std::size_t(s.slice * t.levels + s.level)];
+    std::vector<std::uint8_t> texels(t.levelBytes(s.level));
+    if (t.array) t.array->getData(s.level, s.slice, texels.data(), texels.size());
+    else if (t.colour) t.colour->getData(s.level, texels.data(), texels.size());
+    else throw InvalidOperation("the texture's texels cannot be read (a depth-stencil or cube texture)");
+    return texels;
+}
+
+void writeSubresource(Texture& t, Subresource s, const Rectangle* area, const std::vector<std::uint8_t>& packed) {
+    if (t.array) return t.array->setData(s.level, s.slice, area, packed.data(), packed.size());
+    if (t.colour) return t.colour->setData(s.level, area, packed.data(), packed.size());
+    if (t.staging.empty()) throw InvalidOperation("the texture's texels cannot be written (a depth-stencil or cube texture)");
+    // Staging: `area` of the level's tightly packed rows.
+    std::vector<std::uint8_t>& level = t.staging[std::size_t(s.slice * t.levels + s.level)];
+    if (!area) {
+        level = packed;
+        return;
+    }
+    const std::size_t texel = std::size_t(bytesPerPixel(t.format)), row = std::size_t(area->Width) * texel;
+    for (int y = 0; y < area->Height; ++y)
+        std::memcpy(&level[(std::size_t(area->Y + y) * std::size_t(t.levelWidth(s.level)) + std::size_t(area->X)) * texel], &packed[std::size_t(y) * row], row);
+}
+
+}  // namespace fxport::d3d11
