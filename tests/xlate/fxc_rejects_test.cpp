@@ -1,9 +1,9 @@
 // HLSL that fxc rejects and glslang accepts: each rule of the fxc-check families added for
 // issue 23 (effect_keywords, patch_objects, overload_ambiguity, overload_ties, ternary_shapes,
 // uniform_initializers, uav_rules, operand_type_rules, declaration_limits, majority_modifiers,
-// switch_labels, switch `continue`) must stop the compile with an FX2001 error at the offending
-// line, and a valid twin of each case -- the same code one step away from the rule -- must still
-// compile, so a rule that grew too wide fails here too. Sources follow vkd3d's conformance
+// switch_labels, switch `continue`, the division by an unset static, unset static resources ...)
+// must stop the compile with an FX2001 error at the offending line, and a valid twin of each case
+// -- the same code one step away from the rule -- must still compile, so a rule that grew too wide fails here too. Sources follow vkd3d's conformance
 // sections that pin the rules (named per case).
 #include <gtest/gtest.h>
 
@@ -170,6 +170,27 @@ std::vector<RejectCase> cases() {
         {"ScalarOutParameterOfAVector", "ps_4_0",
          "void fun(out float f) { f = 1; }\nfloat4 main() : sv_target\n{\n    float4 p = {-1, -2, -3, -4};\n    fun(p);\n    return p;\n}\n", 5, "out parameter",
          "void fun(out float f) { f = 1; }\nfloat4 main() : sv_target\n{\n    float4 p = {-1, -2, -3, -4};\n    fun(p.y);\n    return p;\n}\n"},
+        // static-initializer: a static starts at zero, so `1 / i` divides by the constant 0.
+        {"DivisionByUnsetStatic", "ps_4_0", "static uint i;\n\nfloat4 main() : sv_target\n{\n    return 1 / i;\n}\n", 3, "division by zero",
+         "static uint i = 2;\n\nfloat4 main() : sv_target\n{\n    return 1 / i;\n}\n"},
+        // static-initializer: a static that a uniform sets is no constant.
+        {"DivisionByStaticSetFromUniform", "ps_4_0", "uint u;\nstatic uint i;\n\nfloat4 main() : sv_target\n{\n    return 1 / i;\n}\n", 4,
+         "division by zero", "uint u;\nstatic uint i;\n\nfloat4 main() : sv_target\n{\n    i = u;\n    return 1 / i;\n}\n"},
+        // static-initializer: a static texture read with no value; given one, it compiles.
+        {"StaticTextureWithoutValue", "ps_4_0",
+         "static Texture2D tex;\nsampler sam;\n\nfloat4 main() : sv_target\n{\n    return tex.Sample(sam, float2(0, 0));\n}\n", 1, "never given a value",
+         "Texture2D real_tex;\nstatic Texture2D tex = real_tex;\nsampler sam;\n\nfloat4 main() : sv_target\n{\n    return tex.Sample(sam, float2(0, 0));\n}\n"},
+        // static-initializer: through a function's static copy; a read in dead code does not count.
+        {"StaticTextureCopiedWithoutValue", "ps_4_0",
+         "static Texture2D tex1;\nsampler sam;\n\nfloat4 main() : sv_target\n{\n    static Texture2D tex2 = tex1;\n    return tex2.Sample(sam, float2(0, 0));\n}\n",
+         1, "'tex1'",
+         "static Texture2D tex1;\nsampler sam;\n\nfloat4 main() : sv_target\n{\n    if (0)\n        return tex1.Sample(sam, float2(0, 0));\n"
+         "    float4 unused = tex1.Sample(sam, float2(0, 0));\n    return 1;\n}\n"},
+        // static-initializer: assigned in the function before the read.
+        {"StaticTextureAssignedLater", "ps_4_0",
+         "Texture2D real_tex;\nstatic Texture2D tex;\nsampler sam;\n\nfloat4 main() : sv_target\n{\n    return tex.Sample(sam, float2(0, 0));\n}\n", 2,
+         "'tex'",
+         "Texture2D real_tex;\nstatic Texture2D tex;\nsampler sam;\n\nfloat4 main() : sv_target\n{\n    tex = real_tex;\n    return tex.Sample(sam, float2(0, 0));\n}\n"},
     };
 }
 
