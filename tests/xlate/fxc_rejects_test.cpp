@@ -1,9 +1,9 @@
 // HLSL that fxc rejects and glslang accepts: each rule of the fxc-check families added for
 // issue 23 (effect_keywords, patch_objects, overload_ambiguity, overload_ties, ternary_shapes,
 // uniform_initializers, uav_rules, operand_type_rules, declaration_limits, majority_modifiers,
-// switch_labels, switch `continue`) must stop the compile with an FX2001 error at the offending
-// line, and a valid twin of each case -- the same code one step away from the rule -- must still
-// compile, so a rule that grew too wide fails here too. Sources follow vkd3d's conformance
+// switch_labels, switch `continue`, the division by an unset static, unset static resources ...)
+// must stop the compile with an FX2001 error at the offending line, and a valid twin of each case
+// -- the same code one step away from the rule -- must still compile, so a rule that grew too wide fails here too. Sources follow vkd3d's conformance
 // sections that pin the rules (named per case).
 #include <gtest/gtest.h>
 
@@ -24,7 +24,7 @@ struct RejectCase {
     const char* word;     // a word the message must hold
     std::string valid;    // one step away: fxc compiles it
     const char* validProfile = nullptr;  // the twin's profile when the step is the profile itself
-    const char* id = diag::kHlsl;        // the error's id (FX1204 for the element limit, docs/limits.md)
+    const char* id = diag::kHlsl;        // the error's id (FX1204 for the element limit, docs/limits.md; FX1403 for entry attributes)
 };
 
 void PrintTo(const RejectCase& c, std::ostream* os) { *os << c.name; }
@@ -34,6 +34,15 @@ CompiledEffect compile(const std::string& source, const char* profile) {
     options.useCache = false;
     if (!profile) return compileEffectSource(source, "/tmp/fxc_rejects_case.fx", options);
     return compileShaderSource(source, "/tmp/fxc_rejects_case.hlsl", {{"/tmp/fxc_rejects_case.hlsl", "main", profile}}, options);
+}
+
+
+// A hull shader of a tri domain with the given output topology (hull-shader-attributes).
+std::string hullOfTriangles(const char* topology) {
+    return std::string("struct patch_constant_data\n{\n    float edges[3] : SV_TessFactor;\n    float inside : SV_InsideTessFactor;\n};\n\n"
+                       "patch_constant_data patch_constant()\n{\n    return (patch_constant_data)0;\n}\n\n[domain(\"tri\")]\n"
+                       "[outputcontrolpoints(3)]\n[partitioning(\"integer\")]\n[outputtopology(\"") +
+           topology + "\")]\n[patchconstantfunc(\"patch_constant\")]\nfloat4 main() : POSITION\n{\n    return 0;\n}\n";
 }
 
 const char* kHullPrelude = R"(struct data { float4 val : VAL; };
@@ -170,6 +179,102 @@ std::vector<RejectCase> cases() {
         {"ScalarOutParameterOfAVector", "ps_4_0",
          "void fun(out float f) { f = 1; }\nfloat4 main() : sv_target\n{\n    float4 p = {-1, -2, -3, -4};\n    fun(p);\n    return p;\n}\n", 5, "out parameter",
          "void fun(out float f) { f = 1; }\nfloat4 main() : sv_target\n{\n    float4 p = {-1, -2, -3, -4};\n    fun(p.y);\n    return p;\n}\n"},
+        // static-initializer: a static starts at zero, so `1 / i` divides by the constant 0.
+        {"DivisionByUnsetStatic", "ps_4_0", "static uint i;\n\nfloat4 main() : sv_target\n{\n    return 1 / i;\n}\n", 3, "division by zero",
+         "static uint i = 2;\n\nfloat4 main() : sv_target\n{\n    return 1 / i;\n}\n"},
+        // static-initializer: a static that a uniform sets is no constant.
+        {"DivisionByStaticSetFromUniform", "ps_4_0", "uint u;\nstatic uint i;\n\nfloat4 main() : sv_target\n{\n    return 1 / i;\n}\n", 4,
+         "division by zero", "uint u;\nstatic uint i;\n\nfloat4 main() : sv_target\n{\n    i = u;\n    return 1 / i;\n}\n"},
+        // static-initializer: a static texture read with no value; given one, it compiles.
+        {"StaticTextureWithoutValue", "ps_4_0",
+         "static Texture2D tex;\nsampler sam;\n\nfloat4 main() : sv_target\n{\n    return tex.Sample(sam, float2(0, 0));\n}\n", 1, "never given a value",
+         "Texture2D real_tex;\nstatic Texture2D tex = real_tex;\nsampler sam;\n\nfloat4 main() : sv_target\n{\n    return tex.Sample(sam, float2(0, 0));\n}\n"},
+        // static-initializer: through a function's static copy; a read in dead code does not count.
+        {"StaticTextureCopiedWithoutValue", "ps_4_0",
+         "static Texture2D tex1;\nsampler sam;\n\nfloat4 main() : sv_target\n{\n    static Texture2D tex2 = tex1;\n    return tex2.Sample(sam, float2(0, 0));\n}\n",
+         1, "'tex1'",
+         "static Texture2D tex1;\nsampler sam;\n\nfloat4 main() : sv_target\n{\n    if (0)\n        return tex1.Sample(sam, float2(0, 0));\n"
+         "    float4 unused = tex1.Sample(sam, float2(0, 0));\n    return 1;\n}\n"},
+        // static-initializer: assigned in the function before the read.
+        {"StaticTextureAssignedLater", "ps_4_0",
+         "Texture2D real_tex;\nstatic Texture2D tex;\nsampler sam;\n\nfloat4 main() : sv_target\n{\n    return tex.Sample(sam, float2(0, 0));\n}\n", 2,
+         "'tex'",
+         "Texture2D real_tex;\nstatic Texture2D tex;\nsampler sam;\n\nfloat4 main() : sv_target\n{\n    tex = real_tex;\n    return tex.Sample(sam, float2(0, 0));\n}\n"},
+        // vector-indexing: a vector's component is written only at a constant index; read at any.
+        {"VectorWrittenAtUniformIndex", "ps_4_0", "float4 v;\nfloat i;\n\nfloat4 main() : sv_target\n{\n    float4 p = v;\n    p[i] = 2.0;\n    return p;\n}\n", 7,
+         "written at index", "float4 v;\nfloat i;\n\nfloat4 main() : sv_target\n{\n    float4 p = v;\n    p[1] = p[i];\n    return p;\n}\n"},
+        {"VectorWrittenInUnrolledLoop", "ps_4_0", "float4 v;\nint i;\n\nfloat4 main() : sv_target\n{\n    float4 p = v;\n    p[i] += 1;\n    return p;\n}\n", 7,
+         "written at index", "float4 v;\nint i;\n\nfloat4 main() : sv_target\n{\n    float4 p = v;\n    for (int k = 0; k < 4; k++)\n        p[k] += 1;\n    return p;\n}\n"},
+        // entry-point-semantics: a row_major matrix's rows are no vectors on a shared input semantic.
+        {"RowMajorRowsBesideVectorInput", "ps_4_0",
+         "float4 main(in float2 a : TEXCOORD0, row_major float1x2 b : TEXCOORD0) : sv_target\n{\n    return 0.0;\n}\n", 1, "layouts",
+         "float4 main(in float2 a : TEXCOORD0, float2x1 b : TEXCOORD0) : sv_target\n{\n    return 0.0;\n}\n"},
+        {"RowMajorRowsBesideVector4Input", "ps_4_0",
+         "float4 main(in float4 a : TEXCOORD0, row_major float1x4 b : TEXCOORD0) : sv_target\n{\n    return 0.0;\n}\n", 1, "layouts",
+         "float4 main(in float4 a : TEXCOORD0, row_major float1x4 b : TEXCOORD0) : sv_target\n{\n    return 0.0;\n}\n", "ps_3_0"},
+        // fxgroup-syntax: an fxgroup holds technique10/technique11 only.
+        {"UnversionedTechniqueInGroup", "ps_4_0", "fxgroup group1\n{\n    technique\n    {\n    }\n}\n\nfloat4 main() : sv_target { return 0; }\n", 3, "fxgroup",
+         "fxgroup group1\n{\n    technique11\n    {\n    }\n}\n\nfloat4 main() : sv_target { return 0; }\n"},
+        // sm1-const-folding: 3000000000 is a negative int to fxc; SM 1-3 refuse it as a uint.
+        {"NegativeIntLiteralAsUintSm2", "ps_2_0", "float4 main() : SV_TARGET\n{\n    uint x = 3000000000 + 3000000000;\n    return float4(x, 0.0, 0.0, 0.0);\n}\n", 3,
+         "negative int", "float4 main() : SV_TARGET\n{\n    uint x = 3000000000u + 3000000000u;\n    return float4(x, 0.0, 0.0, 0.0);\n}\n"},
+        {"NegativeIntLiteralAsUintSm4", "ps_3_0", "float4 main() : SV_TARGET\n{\n    uint x = 3000000000;\n    return float4(x, 0.0, 0.0, 0.0);\n}\n", 3,
+         "negative int", "float4 main() : SV_TARGET\n{\n    uint x = 3000000000;\n    return float4(x, 0.0, 0.0, 0.0);\n}\n", "ps_4_0"},
+        // cast-to-int: a hexadecimal literal is not read as a negative int there.
+        {"DecimalNotHexLiteralAsUint", "ps_2_0", "float4 main() : SV_TARGET\n{\n    uint u = 4294967294;\n    return float4(u, 0.0, 0.0, 0.0);\n}\n", 3,
+         "negative int", "float4 main() : SV_TARGET\n{\n    uint u = 0xfffffffe;\n    return float4(u, 0.0, 0.0, 0.0);\n}\n"},
+        // bitwise-assignment: `<<=` needs integers too.
+        {"FloatShiftAssignment", "ps_4_0", "float4 main() : SV_TARGET\n{\n    float x = 5.0, y = 15.0;\n    x <<= y;\n    return float4(x, y, 0, 0);\n}\n", 4, "<<=",
+         "float4 main() : SV_TARGET\n{\n    int x = 5, y = 15;\n    x <<= y;\n    return float4(x, y, 0, 0);\n}\n"},
+        // texture-load-offset: an immediate texel offset is -8..7.
+        {"TexelOffsetOutOfRange", "ps_4_0",
+         "Texture2D t;\n\nfloat4 main(float4 pos : sv_position) : sv_target\n{\n    return t.Load(int3(pos.xy, 0), int2(8, 1));\n}\n", 5, "-8 to 7",
+         "Texture2D t;\n\nfloat4 main(float4 pos : sv_position) : sv_target\n{\n    return t.Load(int3(pos.xy, 0), int2(-8, 7));\n}\n"},
+        {"SampleOffsetOutOfRange", "ps_4_0",
+         "Texture2D t;\nsampler s;\n\nfloat4 main(float4 pos : sv_position) : sv_target\n{\n    return t.Sample(s, pos.xy, int2(0, -9));\n}\n", 6, "-8 to 7",
+         "Texture2D t;\nsampler s;\n\nfloat4 main(float4 pos : sv_position) : sv_target\n{\n    return t.Sample(s, pos.xy, int2(0, -8));\n}\n"},
+        // load-level: a Texture2D's subscript takes two coordinates (a Texture2DArray's three).
+        {"TextureSubscriptOfWrongSize", "ps_4_0", "Texture2D t;\n\nfloat4 main() : sv_target\n{\n    return t[uint3(0, 0, 0)];\n}\n", 5, "2 coordinates",
+         "Texture2DArray t;\n\nfloat4 main() : sv_target\n{\n    return t[uint3(0, 0, 0)];\n}\n"},
+        // tgsm: at cs_4_x groupshared is an array of one element per thread, written at SV_GroupIndex.
+        {"GroupSharedScalarCs4", "cs_4_0",
+         "RWByteAddressBuffer u : register(u0);\ngroupshared uint m;\n\n[numthreads(4, 1, 1)]\nvoid main(uint local_idx : SV_GroupIndex)\n{\n"
+         "    if (local_idx == 0)\n        m = 0;\n    GroupMemoryBarrierWithGroupSync();\n    u.Store(4 * local_idx, m);\n}\n",
+         2, "array of 4",
+         "RWByteAddressBuffer u : register(u0);\ngroupshared uint m;\n\n[numthreads(4, 1, 1)]\nvoid main(uint local_idx : SV_GroupIndex)\n{\n"
+         "    if (local_idx == 0)\n        m = 0;\n    GroupMemoryBarrierWithGroupSync();\n    u.Store(4 * local_idx, m);\n}\n",
+         "cs_5_0"},
+        {"GroupSharedStoreElsewhereCs4", "cs_4_0",
+         "RWByteAddressBuffer u : register(u0);\ngroupshared uint m[4];\n\n[numthreads(4, 1, 1)]\nvoid main(uint local_idx : SV_GroupIndex)\n{\n"
+         "    if (local_idx == 0)\n        m[0] = 0;\n    GroupMemoryBarrierWithGroupSync();\n    u.Store(4 * local_idx, m[0]);\n}\n",
+         8, "SV_GroupIndex",
+         "RWByteAddressBuffer u : register(u0);\ngroupshared uint m[4];\n\n[numthreads(4, 1, 1)]\nvoid main(uint local_idx : SV_GroupIndex)\n{\n"
+         "    m[local_idx] = 0;\n    GroupMemoryBarrierWithGroupSync();\n    u.Store(4 * local_idx, m[0]);\n}\n"},
+        // effect-shader-objects: VertexShader names the type, vertexshadeR is a name.
+        {"VertexShaderAsVariable", "ps_4_0", "float4 VertexShader;\n\nfloat4 main() : sv_target\n{\n    return 0;\n}\n", 1, "shader object type",
+         "float4 vertexshadeR;\nfloat4 geometryshader;\n\nfloat4 main() : sv_target\n{\n    return 0;\n}\n"},
+        {"LowerCaseVertexShaderAsVariable", "ps_2_0", "float4 vertexshader;\n\nfloat4 main() : sv_target\n{\n    return 0;\n}\n", 1, "shader object type",
+         "float4 main() : sv_target\n{\n    return 0;\n}\n\ntechnique t\n{\n    pass p\n    {\n        VertexShader = NULL;\n        PixelShader = compile ps_2_0 main();\n    }\n}\n"},
+        // invalid: a static struct of a sampler and numbers needs an initial value.
+        {"StaticStructOfObjectAndNumbers", "ps_4_0",
+         "struct apple\n{\n    sampler sam;\n    float4 aa;\n};\n\nstatic struct apple a;\n\nfloat4 main() : sv_target\n{\n    return 1.0;\n}\n", 7, "both an object and numbers",
+         "struct apple\n{\n    float4 bb;\n    float4 aa;\n};\n\nstatic struct apple a;\n\nfloat4 main() : sv_target\n{\n    return 1.0;\n}\n"},
+        // numthreads: a thread-group dimension is a scalar.
+        {"NumthreadsOfAVector", "cs_5_0", "[numthreads(uint1(1), 1, 1)]\nvoid main() {}\n", 2, "vector", "[numthreads(uint(1), 1, 1)]\nvoid main() {}\n", nullptr,
+         diag::kBadEntrySignature},
+        // hull-shader-attributes: lines come from an isoline domain only.
+        {"LineTopologyOfTriangles", "hs_5_0", hullOfTriangles("line"), 17, "isoline", hullOfTriangles("triangle_cw"), nullptr, diag::kBadEntrySignature},
+        // rt-format-mismatch: no double output.
+        {"DoubleOutput", "ps_4_0", "double2 main() : sv_target\n{\n    return 0;\n}\n", 1, "double", "float2 main() : sv_target\n{\n    return 0;\n}\n"},
+        // nointerpolation: a constant value has no centroid.
+        {"NointerpolationCentroid", "vs_4_0",
+         "struct ps_input\n{\n    nointerpolation centroid float4 t : texcoord;\n};\n\nvoid main(uint id : sv_vertexid, inout ps_input input, out float4 pos : sv_position)\n{\n    pos = 0;\n}\n",
+         3, "exclude",
+         "struct ps_input\n{\n    nointerpolation float4 t : texcoord;\n};\n\nvoid main(uint id : sv_vertexid, inout centroid ps_input input, out float4 pos : sv_position)\n{\n    pos = 0;\n}\n"},
+        // arithmetic-int-uniform: no signed division of minimum precision; min16uint divides.
+        {"SignedMinPrecisionDivision", "ps_4_0",
+         "uniform min16int4 u;\n\nint4 main() : sv_target\n{\n    min16int i = 32767;\n    return int4(u.x / i, 0, 0, 0);\n}\n", 6, "minimum-precision",
+         "uniform min16uint4 u;\n\nint4 main() : sv_target\n{\n    min16uint i = 32767;\n    return int4(u.x / i, 0, 0, 0);\n}\n"},
     };
 }
 

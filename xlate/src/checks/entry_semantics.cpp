@@ -5,7 +5,11 @@
 //  - an output semantic names one value: two outputs (parameters, members, the result) on one
 //    semantic and index are an error, so is an array of structs whose members carry semantics;
 //  - at SM 4-5 two inputs on one semantic and index must have one layout: the same register
-//    count and width and the same kind of register (float and half alike, int, uint, bool alike).
+//    count and width and the same kind of register (float and half alike, int, uint, bool alike);
+//    a row_major matrix's rows are not vectors there, though they take the registers a vector
+//    would (`float2 a : TEXCOORD0, row_major float1x2 b : TEXCOORD0` is refused, vkd3d pins it),
+//    while a column_major matrix's columns are (`float2x1` beside `float2` compiles);
+//  - an output is no double (signature elements hold 32-bit components).
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
@@ -53,6 +57,7 @@ public:
 
 private:
     void entry(const FxFunction& f, const ShaderProfile& profile) {
+        if (doubleOutput(f)) return;
         std::vector<Element> inputs, outputs;
         for (const auto& p : f.parameters) {
             auto has = [&](const char* m) { return std::find(p.modifiers.begin(), p.modifiers.end(), m) != p.modifiers.end(); };
@@ -84,6 +89,22 @@ private:
         }
     }
 
+    // A signature element holds 32-bit components: a double output (`double2 main() : sv_target`)
+    // is refused (vkd3d's rt-format-mismatch), where glslang writes it to a dvec output.
+    bool doubleOutput(const FxFunction& f) {
+        auto isDouble = [&](const std::string& type) { return describeBasicType(syntax_.resolveType(type)).scalar == "double"; };
+        if (f.returnType != "void" && isDouble(f.returnType)) {
+            report("'" + f.name + "' returns a " + f.returnType + ": a shader output holds 32-bit values, no double", f.token);
+            return true;
+        }
+        for (const auto& p : f.parameters)
+            if (std::find(p.modifiers.begin(), p.modifiers.end(), "out") != p.modifiers.end() && isDouble(p.type)) {
+                report("output '" + p.name + "' of '" + f.name + "' is a " + p.type + ": a shader output holds 32-bit values, no double", p.typeToken);
+                return true;
+            }
+        return false;
+    }
+
     // Appends the signature values of a `type name[dims] : semantic`; false when the type is not
     // understood (nothing judged then).
     bool flatten(const std::string& typeName, const std::string& semantic, const std::vector<int>& dims,
@@ -101,6 +122,7 @@ private:
             bool isFloat = b.scalar == "float" || b.scalar == "half" || b.scalar.rfind("min16float", 0) == 0 || b.scalar.rfind("min10float", 0) == 0;
             bool isInt = b.scalar == "int" || b.scalar == "uint" || b.scalar == "bool" || b.scalar == "dword" || b.scalar.rfind("min16", 0) == 0;
             std::string layout = isFloat || isInt ? std::string(isFloat ? "f:" : "i:") + std::to_string(registers) + "x" + std::to_string(width) : "";
+            if (!layout.empty() && b.isMatrix && std::find(modifiers.begin(), modifiers.end(), "row_major") != modifiers.end()) layout += ":rows";
             if (cascade) {
                 auto [base, first] = cascade->take(registers * int(count));
                 for (int k = 0; k < registers * count; ++k) out.push_back({base + std::to_string(first + k), layout, token});

@@ -46,6 +46,12 @@ constexpr Family kFamilies[] = {
     findDeclarationFormErrors,
     findMatrixSubscriptErrors,
     findOutArgumentShapeErrors,
+    findVectorElementWriteErrors,
+    findNegativeUintConstantErrors,
+    findTexelOffsetErrors,
+    findTextureSubscriptErrors,
+    findGroupSharedCs4Errors,
+    findStaticMixedStructErrors,
 };
 
 bool isShaderState(const std::string& name) {

@@ -83,5 +83,11 @@ std::vector<std::pair<size_t, Diagnostic>> findOutArgumentShapeErrors(const Effe
 std::vector<std::pair<size_t, Diagnostic>> findDeclarationLimitErrors(const EffectSyntax& syntax, const SourceMap& map);  // declaration_limits.cpp
 std::vector<std::pair<size_t, Diagnostic>> findOverloadTieErrors(const EffectSyntax& syntax, const SourceMap& map);  // overload_ties.cpp
 std::vector<std::pair<size_t, Diagnostic>> findDeclarationFormErrors(const EffectSyntax& syntax, const SourceMap& map);  // declaration_forms.cpp
+std::vector<std::pair<size_t, Diagnostic>> findVectorElementWriteErrors(const EffectSyntax& syntax, const SourceMap& map);  // vector_element_writes.cpp
+std::vector<std::pair<size_t, Diagnostic>> findNegativeUintConstantErrors(const EffectSyntax& syntax, const SourceMap& map);  // negative_uint_constants.cpp
+std::vector<std::pair<size_t, Diagnostic>> findTexelOffsetErrors(const EffectSyntax& syntax, const SourceMap& map);  // texel_offsets.cpp
+std::vector<std::pair<size_t, Diagnostic>> findTextureSubscriptErrors(const EffectSyntax& syntax, const SourceMap& map);  // texture_subscripts.cpp
+std::vector<std::pair<size_t, Diagnostic>> findGroupSharedCs4Errors(const EffectSyntax& syntax, const SourceMap& map);  // group_shared_cs4.cpp
+std::vector<std::pair<size_t, Diagnostic>> findStaticMixedStructErrors(const EffectSyntax& syntax, const SourceMap& map);  // static_mixed_structs.cpp
 
 }  // namespace fxport::xlate

@@ -165,7 +165,8 @@ private:
             const std::string& m = t_[i].text;
             if (seen.count(m)) report("modifier '" + m + "' is given twice (fxc X3048)", i);
             for (const auto& [p, q] : {std::pair{"static", "uniform"}, {"row_major", "column_major"}, {"out", "uniform"},
-                                       {"inout", "uniform"}, {"out", "const"}, {"static", "extern"}})
+                                       {"inout", "uniform"}, {"out", "const"}, {"static", "extern"},
+                                       {"nointerpolation", "centroid"}})  // a constant value has no centroid (vkd3d's nointerpolation)
                 if ((m == p && seen.count(q)) || (m == q && seen.count(p)))
                     report(std::string("modifiers '") + p + "' and '" + q + "' exclude each other (fxc X3049)", i);
             seen.insert(m);

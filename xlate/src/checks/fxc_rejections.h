@@ -6,7 +6,7 @@
 //  - the same attribute twice on a statement, or [branch] with [flatten], [loop] with [unroll],
 //    [fastopt] with [unroll] (X3524 / X3525);
 //  - a modifier given twice, or modifiers that exclude each other (static uniform, out uniform,
-//    out const, row_major column_major), and row_major/column_major on a type that is no matrix
+//    out const, row_major column_major, nointerpolation centroid), and row_major/column_major on a type that is no matrix
 //    (X3048 / X3049 / X3025);
 //  - an assignment to a swizzle that names a component twice (`v.xx = ...`, X3018);
 //  - a local `const` without an initial value (X3012);

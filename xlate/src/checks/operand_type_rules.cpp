@@ -8,7 +8,10 @@
 //    vector argument of another number of components, a float1 included: there is no implicit
 //    conversion between them (X3017; vkd3d's step, ldexp);
 //  - the bitwise operators `<<`, `>>`, `&`, `|`, `^` need integer operands: a float operand is
-//    refused (X3082; vkd3d's bitwise). Judged where an operand is one name or literal.
+//    refused (X3082; vkd3d's bitwise), in `<<=` and `>>=` too (vkd3d's bitwise-assignment). Judged
+//    where an operand is one name or literal;
+//  - `/` and `%` between signed minimum-precision integers (min16int, min12int) are not supported
+//    (vkd3d's arithmetic-int-uniform; min16uint divides, and so does a min16int by an int).
 #include "hlsl/call_arguments.h"
 #include "hlsl/expression_types.h"
 #include "checks/fxc_checks.h"
@@ -39,12 +42,20 @@ public:
                 if (t_[i].isIdent() && t_[i + 1].is("(") && !(i > 0 && t_[i - 1].is(".")) && !syntax_.findFunction(t_[i].text)) call(f, i);
                 if (t_[i].kind != Token::Kind::Punct) continue;
                 if (isOneOf(t_[i].text, {"&", "|", "^"})) bitwise(f, i, i);
+                if (isOneOf(t_[i].text, {"/", "%", "/=", "%="})) signedMinPrecisionDivision(f, i);
                 // The lexer keeps `<<` and `>>` as two tokens (they close templates and annotations).
                 bool shift = (t_[i].is("<") || t_[i].is(">")) && t_[i + 1].is(t_[i].text) && t_[i].end == t_[i + 1].offset &&
                              i + 2 < f.body.end && !t_[i + 2].is("=") && !t_[i + 2].is(t_[i].text) && !(i > 0 && t_[i - 1].is(t_[i].text));
                 if (shift) {
                     bitwise(f, i, i + 1);
                     ++i;
+                }
+                // `x <<= y` (three tokens) takes the same operands.
+                bool shiftAssign = (t_[i].is("<") || t_[i].is(">")) && t_[i + 1].is(t_[i].text) && i + 2 < f.body.end && t_[i + 2].is("=") &&
+                                   t_[i].end == t_[i + 1].offset && t_[i + 1].end == t_[i + 2].offset && !(i > 0 && t_[i - 1].is(t_[i].text));
+                if (shiftAssign) {
+                    bitwise(f, i, i + 2);
+                    i += 2;
                 }
             }
         }
@@ -83,6 +94,29 @@ private:
         }
     }
 
+    std::string spelled(size_t first, size_t last) const {
+        std::string out;
+        for (size_t k = first; k <= last; ++k) out += t_[k].text;
+        return out;
+    }
+
+    // `a / b` where both operands are signed minimum-precision integers (in the common type of a
+    // min16int and an int, the division is a 32-bit one). An operand is judged when it is one name
+    // or a member or swizzle of one (`u.x`), and must end where the operator's neighbours end.
+    void signedMinPrecisionDivision(const FxFunction& f, size_t op) {
+        if (op < f.body.begin + 2 || op + 2 >= f.body.end || !t_[op - 1].isIdent() || !t_[op + 1].isIdent()) return;
+        const size_t leftBegin = t_[op - 2].is(".") ? op - 3 : op - 1;
+        if (leftBegin <= f.body.begin || t_[leftBegin - 1].is(".") || !t_[leftBegin].isIdent()) return;
+        const size_t rightEnd = t_[op + 2].is(".") ? op + 4 : op + 2;
+        if (rightEnd >= f.body.end || t_[rightEnd].is(".") || t_[rightEnd].is("(") || t_[rightEnd].is("[")) return;
+        auto left = typeOf(f, leftBegin, op), right = typeOf(f, op + 1, rightEnd);
+        auto signedMin = [](const std::optional<ExpressionType>& t) { return t && isOneOf(t->basic.scalar, {"min16int", "min12int"}); };
+        if (signedMin(left) && signedMin(right))
+            report("'" + t_[op].text + "': division of signed minimum-precision integers ('" + describe(*left) + "' by '" + describe(*right) +
+                       "') is not supported by fxc",
+                   op);
+    }
+
     // `a >> b` (the operator's tokens [op, opLast]) where a or b is one name or literal of a float type.
     void bitwise(const FxFunction& f, size_t op, size_t opLast) {
         if (op <= f.body.begin || opLast + 2 >= f.body.end) return;
@@ -92,7 +126,7 @@ private:
             if (side < op ? t_[side - 1].is(".") : (t_[side + 1].is(".") || t_[side + 1].is("(") || t_[side + 1].is("["))) continue;
             auto type = typeOf(f, side, side + 1);
             if (type && isFloatScalarType(type->basic.scalar))
-                return report("'" + t_[op].text + (op == opLast ? "" : t_[op].text) + "': int or unsigned int type required, '" + t_[side].text + "' is '" + describe(*type) + "' (fxc X3082)", op);
+                return report("'" + spelled(op, opLast) + "': int or unsigned int type required, '" + t_[side].text + "' is '" + describe(*type) + "' (fxc X3082)", op);
         }
     }
 };

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cstdlib>
 #include <map>
+#include <regex>
 #include <vector>
 
 #include "fx/text_util.h"
@@ -105,6 +106,11 @@ std::string checkStageAttributes(const EffectSyntax& syntax, const FxFunction& e
         // Literal sizes are checked here (what glslang makes of 0 or -1 is its own); sizes from
         // constants are checked on the SPIR-V's LocalSize (checkThreadGroupSize).
         for (const std::string& a : it->second.arguments) {
+            // A vector of one component is no scalar here: `uint(1)` compiles, `uint1(1)` is
+            // refused (vkd3d's numthreads).
+            static const std::regex vector(R"(^\s*(u?int|float|half|double|bool|dword|min16u?int|min16float)[1-4]\s*\()");
+            if (std::regex_search(a, vector))
+                return who + "[numthreads]: '" + a + "' is a vector; each thread-group dimension is one integer";
             char* end = nullptr;
             long n = std::strtol(a.c_str(), &end, 0);
             if (end && *end == '\0' && !a.empty() && n < 1)
@@ -125,6 +131,10 @@ std::string checkStageAttributes(const EffectSyntax& syntax, const FxFunction& e
         return who + e;
     if (out.domain == "isoline" && (out.outputTopology == "triangle_cw" || out.outputTopology == "triangle_ccw"))
         return who + "[outputtopology(\"" + out.outputTopology + "\")] cannot tessellate an isoline domain";
+    // Lines come out of an isoline domain only (vkd3d's hull-shader-attributes: "line" with a tri
+    // or quad domain is refused).
+    if (out.outputTopology == "line" && out.domain != "isoline")
+        return who + "[outputtopology(\"line\")] needs [domain(\"isoline\")]: a " + out.domain + " domain tessellates to triangles or points";
     auto points = attrs.find("outputcontrolpoints");
     if (points == attrs.end()) return who + "needs the attribute [outputcontrolpoints(N)]";
     int n = 0;
@@ -140,6 +150,10 @@ std::string checkStageAttributes(const EffectSyntax& syntax, const FxFunction& e
     if (pc == attrs.end()) return who + "needs the attribute [patchconstantfunc(\"name\")]";
     if (pc->second.arguments.size() != 1 || pc->second.arguments[0].empty()) return who + "[patchconstantfunc] takes the name of a function";
     out.patchConstantFunction = pc->second.arguments[0];
+    // The patch-constant function runs once per patch beside the per-control-point entry: fxc
+    // does not take the entry itself there (vkd3d's hull-shader-attributes, not implemented).
+    if (out.patchConstantFunction == entry.name)
+        return who + "[patchconstantfunc(\"" + out.patchConstantFunction + "\")] names the entry point itself, which fxc does not implement";
     if (!syntax.findFunction(out.patchConstantFunction))
         return who + "[patchconstantfunc(\"" + out.patchConstantFunction + "\")] names no function of this shader";
     out.inputControlPoints = patchSize(entry, "InputPatch");

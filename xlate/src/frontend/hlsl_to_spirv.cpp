@@ -13,6 +13,7 @@
 #include "rewrite/keyword_identifiers.h"
 #include "spirv/spirv_fixups.h"
 #include "spirv/static_zero_init.h"
+#include "spirv/unset_static_resources.h"
 #include "rewrite/pow2_partitioning.h"
 #include "spirv/spirv_integer_fixups.h"
 #include "rewrite/tess_factor_intrinsics.h"
@@ -130,6 +131,11 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
     std::string legalizeError;
     if (!legalizeSpirv(out.words, &legalizeError)) {
         out.errors.push_back({0, {}, legalizeError});
+        return out;
+    }
+    if (std::string unset = staticResourceReadWithoutValue(out.words); !unset.empty()) {  // after dead code is gone
+        out.errors.push_back({staticDeclarationLine(*request.source, unset), unset,
+                              "static resource '" + unset + "' is read but never given a value: fxc binds only a resource it can trace to a register"});
         return out;
     }
     runSpirvPasses(out.words, {sm2or3 ? SpirvPass(integerDivisionInFloats) : nullptr,  // after folding: fxc folds constants exactly
