@@ -275,6 +275,10 @@ std::vector<RejectCase> cases() {
         {"SignedMinPrecisionDivision", "ps_4_0",
          "uniform min16int4 u;\n\nint4 main() : sv_target\n{\n    min16int i = 32767;\n    return int4(u.x / i, 0, 0, 0);\n}\n", 6, "minimum-precision",
          "uniform min16uint4 u;\n\nint4 main() : sv_target\n{\n    min16uint i = 32767;\n    return int4(u.x / i, 0, 0, 0);\n}\n"},
+        // effect-compile: a shader variable's value is a literal expression, no other variable.
+        {"ShaderVariableFromVariable", "ps_4_0",
+         "float4 main() : sv_target { return 0; }\n\nPixelShader ps1 = CompileShader(ps_2_0, main());\nPixelShader ps2 = ps1;\n", 4, "literal expression",
+         "float4 main() : sv_target { return 0; }\n\nPixelShader ps1 = CompileShader(ps_2_0, main());\nPixelShader ps2 = NULL;\n"},
     };
 }
 

@@ -2,7 +2,9 @@
 // them there and drops them after); vkd3d's effect-compile and constructgswithso pin them:
 //  - `compile ps_2_0 f(1, 2, 3)` passes literals to f's uniform parameters: no more literals than
 //    the overload with most uniform parameters takes;
-//  - a shader variable is not initialised from a number (`PixelShader ps = 42;`);
+//  - a shader variable is not initialised from a number (`PixelShader ps = 42;`), nor from another
+//    shader variable (`PixelShader ps2 = ps1;`: "initializer must be a literal expression", as for
+//    any uniform's default value, uniform_initializers.cpp);
 //  - ConstructGSWithSO takes 2 arguments (shader, declaration: Effects 10) or 6 (shader, four
 //    stream declarations, rasterized stream: Effects 11).
 #include <algorithm>
@@ -34,11 +36,22 @@ public:
         for (size_t i = 0; i + 4 < t_.size(); ++i) {
             if (isShaderType(t_[i].text) && t_[i + 1].isIdent() && t_[i + 2].is("=") && t_[i + 3].kind == Token::Kind::Number && t_[i + 4].is(";"))
                 report("shader variable '" + t_[i + 1].text + "' cannot be initialised from the number " + t_[i + 3].text, i + 3);
+            if (isShaderType(t_[i].text) && t_[i + 1].isIdent() && t_[i + 2].is("=") && t_[i + 3].isIdent() && t_[i + 4].is(";") &&
+                isShaderVariable(t_[i + 3].text))
+                report("shader variable '" + t_[i + 1].text + "' cannot be initialised from the variable '" + t_[i + 3].text +
+                           "': the initial value must be a literal expression",
+                       i + 3);
             if (t_[i].is("ConstructGSWithSO") && t_[i + 1].is("(")) streamOutputArguments(i);
         }
     }
 
 private:
+    bool isShaderVariable(const std::string& name) const {
+        for (const auto& v : syntax_.shaderVariables)
+            if (v.name == name) return true;
+        return false;
+    }
+
     void literalArguments(const FxShaderExpr& e) {
         if (e.kind != FxShaderExpr::Kind::Compile || trim(e.arguments).empty()) return;
         size_t given = 1;
