@@ -896,7 +896,9 @@ void EffectBuilder::buildTechniques() {
                 if (!resolveShader(e, stage, target, a.nameToken)) pass.valid = false;
             }
             if (t.name != kLooseTechnique) checkTessellationPass(pass, p.token);
-            if (pass.valid && pass.vertexShader.shaders.empty() && pass.pixelShader.shaders.empty() && pass.computeShader.shaders.empty()) {
+            const bool anyShader = !pass.vertexShader.shaders.empty() || !pass.pixelShader.shaders.empty() || !pass.computeShader.shaders.empty() ||
+                                   !pass.geometryShader.shaders.empty() || !pass.hullShader.shaders.empty() || !pass.domainShader.shaders.empty();
+            if (pass.valid && !anyShader) {
                 // A state-only pass (restoring states) is fine to Apply(); one that relies on the
                 // fixed-function pipeline (Lighting, TextureStage states ...) cannot draw anything.
                 if (fixedFunction) {
@@ -1192,7 +1194,7 @@ CompiledEffect compileUncached(const std::string& source, const std::string& dis
     if (auto rejected = checkEffectProfile(syntax, pre.map, options.effectProfile); !rejected.empty()) throw CompileError(std::move(rejected));
     // Objects declared in a cbuffer move out of it (cbuffer_objects.h), after fxc's rules on them
     // were judged where they were written; the moved text is parsed again.
-    if (std::string moved = objectsMovedOutOfCbuffers(pre.text); moved != pre.text) {
+    if (std::string moved = nonMembersMovedOutOfCbuffers(pre.text); moved != pre.text) {
         pre.text = std::move(moved);
         syntax = parseEffect(pre.text, pre.map, isLooseShaderCompile(options));
     }

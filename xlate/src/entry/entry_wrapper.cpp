@@ -255,6 +255,12 @@ bool has(const std::vector<std::string>& v, const char* s) {
     return false;
 }
 
+bool writesPosition(const std::vector<Leaf>& outputs) {
+    for (const Leaf& leaf : outputs)
+        if ((leaf.semanticBase == "POSITION" && leaf.semanticIndex == 0) || leaf.semanticBase == "SV_POSITION") return true;
+    return false;
+}
+
 }  // namespace
 
 EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& entry, const ShaderProfile& profile,
@@ -383,6 +389,10 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
         }
     }
 
+    // From vs_4_0 on, fxc takes a vertex shader that writes no position: it feeds a hull or
+    // geometry shader (SubD11's control-point VS), so its outputs keep their declared types as
+    // beside one.
+    if (vertex && profile.major >= 4 && !writesPosition(outputs)) nextToGeometryShader = true;
     std::string positionMember;
     int m = 0;
     for (const Leaf& leaf : outputs) {

@@ -42,29 +42,35 @@ private:
 
     bool end(size_t i) const { return i >= t_.size() || t_[i].kind == Token::Kind::End; }
 
-    // The body of the cbuffer whose keyword is at `keyword`: its objects moved. Returns the last token seen.
+    // The body of the cbuffer whose keyword is at `keyword`: its objects and statics moved. Returns the last token seen.
     size_t moveObjectsOf(size_t keyword) {
         size_t open = keyword + 1;
         while (!end(open) && !t_[open].is("{") && !t_[open].is(";")) ++open;
         if (end(open) || !t_[open].is("{")) return open;
-        std::string moved;
+        std::string moved, statics;
         std::vector<Edit> removals;
         size_t i = open + 1;
         while (!end(i) && !t_[i].is("}")) {
             size_t first = i, last = declarationEnd(i);  // last: its ';' (or the '}' that ends the body)
             if (end(last)) return last;
             size_t type = first;
-            while (type < last && t_[type].isIdent() && isModifier(t_[type].text)) ++type;
+            bool isStatic = false;
+            for (; type < last && t_[type].isIdent() && isModifier(t_[type].text); ++type) isStatic |= t_[type].is("static");
             const char cls = type < last ? resourceRegisterClass(t_[type].text) : 0;
-            if (cls && t_[last].is(";")) {
-                moved += withoutForeignPlacement(first, last, cls) + " ";
+            if ((cls || isStatic) && t_[last].is(";")) {
+                (cls ? moved : statics) += withoutForeignPlacement(first, last, cls) + " ";
                 removals.push_back({t_[first].offset, t_[last].end, ""});
             }
             i = t_[last].is(";") ? last + 1 : last;
         }
-        if (moved.empty()) return i;
-        inserts_.push_back({t_[keyword].offset, t_[keyword].offset, moved});
+        if (moved.empty() && statics.empty()) return i;
+        if (!moved.empty()) inserts_.push_back({t_[keyword].offset, t_[keyword].offset, moved});
         inserts_.insert(inserts_.end(), removals.begin(), removals.end());
+        if (!statics.empty() && !end(i)) {
+            // After the body (and its ';'), on the closing line: a static's initializer may read the members.
+            const size_t after = !end(i + 1) && t_[i + 1].is(";") ? t_[i + 1].end : t_[i].end;
+            inserts_.push_back({after, after, " " + statics});
+        }
         return i;
     }
 
@@ -125,6 +131,6 @@ private:
 
 }  // namespace
 
-std::string objectsMovedOutOfCbuffers(const std::string& preprocessed) { return Mover(preprocessed).run(); }
+std::string nonMembersMovedOutOfCbuffers(const std::string& preprocessed) { return Mover(preprocessed).run(); }
 
 }  // namespace fxport::xlate

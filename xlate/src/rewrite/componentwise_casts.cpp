@@ -114,6 +114,50 @@ void rewriteEqualAssignment(const EffectSyntax& syntax, const FxFunction& f, siz
     edits.push_back({t[i].offset, t[i + 3].end, text});
 }
 
+// The vector an initializer's cast operand evaluates to, spelled so that repeating it is harmless:
+// a constructor of literals and names (`uint4(4, 4, 4, 4)`) or a variable (`v`), ending at `end`;
+// its component count, or 0.
+int repeatableVectorComponents(const EffectSyntax& syntax, const FxFunction* f, size_t first, size_t end) {
+    const auto& t = syntax.tokens;
+    if (end == first + 1 && t[first].isIdent()) {
+        auto v = f ? declaredVariable(syntax, *f, t[first].text, first) : std::nullopt;
+        std::string type;
+        if (v && v->dims.empty()) type = v->type;
+        for (const auto& g : syntax.globals)
+            if (!v && g.name == t[first].text && g.arrayDims.empty()) type = g.type;
+        BasicType b = describeBasicType(syntax.resolveType(type));
+        return b.ok && !b.isMatrix ? b.rows * b.columns : 0;
+    }
+    if (end < first + 3 || !t[first].isIdent() || !t[first + 1].is("(") || !t[end - 1].is(")")) return 0;
+    for (size_t k = first + 2; k + 1 < end; ++k)
+        if (!(t[k].isIdent() || t[k].kind == Token::Kind::Number || t[k].is(",") || t[k].is("-") || t[k].is("."))) return 0;
+    BasicType b = describeBasicType(syntax.resolveType(t[first].text));
+    return b.ok && !b.isMatrix ? b.rows * b.columns : 0;
+}
+
+// `= (S[N]) e;`, S a scalar type and e a vector of at least N components (SubD11: `static const
+// uint Val[4] = (uint[4])uint4(4, 4, 4, 4);`): glslang reads the cast as an array constructor of one
+// argument and refuses it. The initializer becomes the list of e's first N components, converted.
+void rewriteVectorToArrayInitializers(const EffectSyntax& syntax, const FxFunction* f, size_t begin, size_t end, std::vector<TextEdit>& edits) {
+    const auto& t = syntax.tokens;
+    for (size_t i = begin + 1; i + 6 < end; ++i) {
+        if (!t[i - 1].is("=") || !t[i].is("(") || !t[i + 1].isIdent() || !t[i + 2].is("[") || t[i + 3].kind != Token::Kind::Number ||
+            !t[i + 4].is("]") || !t[i + 5].is(")"))
+            continue;
+        BasicType to = describeBasicType(syntax.resolveType(t[i + 1].text));
+        const int n = std::atoi(t[i + 3].text.c_str());
+        if (!to.ok || to.rows * to.columns != 1 || n < 1) continue;
+        size_t stop = i + 6;
+        for (int depth = 0; stop < end && !(depth == 0 && t[stop].is(";")); ++stop)
+            depth += t[stop].is("(") ? 1 : t[stop].is(")") ? -1 : 0;
+        if (stop >= end || repeatableVectorComponents(syntax, f, i + 6, stop) < n) continue;
+        const std::string operand = "(" + syntax.text({i + 6, stop}) + ")";
+        std::string list = "{";
+        for (int k = 0; k < n; ++k) list += (k ? ", (" : " (") + to.scalar + ")" + operand + "[" + std::to_string(k) + "]";
+        edits.push_back({t[i].offset, t[stop - 1].end, list + " }"});
+    }
+}
+
 void rewriteIn(const EffectSyntax& syntax, const FxFunction& f, std::vector<TextEdit>& edits) {
     const auto& t = syntax.tokens;
     for (size_t i = f.body.begin + 1; i + 2 < f.body.end; ++i) {
@@ -175,7 +219,12 @@ void rewriteIn(const EffectSyntax& syntax, const FxFunction& f, std::vector<Text
 std::vector<TextEdit> componentwiseCasts(const EffectSyntax& syntax) {
     std::vector<TextEdit> edits;
     for (const auto& f : syntax.functions)
-        if (!f.body.empty()) rewriteIn(syntax, f, edits);
+        if (!f.body.empty()) {
+            rewriteIn(syntax, f, edits);
+            rewriteVectorToArrayInitializers(syntax, &f, f.body.begin, f.body.end, edits);
+        }
+    for (const auto& g : syntax.globals)
+        if (!g.initializer.empty()) rewriteVectorToArrayInitializers(syntax, nullptr, g.initializer.begin - 1, g.initializer.end + 1, edits);
     return edits;
 }
 

@@ -30,6 +30,13 @@ bool typedefNamesPrecise(const std::vector<Token>& t) {
     return false;
 }
 
+// glslang reserves the SM 5.1 template types' names; fxc up to SM 5.0 reads them as names, and the
+// DirectX SDK's tutorials declare `cbuffer ConstantBuffer : register(b0)`. A use with a template
+// argument list stays the type.
+bool isTemplateTypeName(const std::vector<Token>& t, size_t i) {
+    return (t[i].is("ConstantBuffer") || t[i].is("TextureBuffer")) && !t[i + 1].is("<");
+}
+
 std::string literalString(const std::uint32_t* w, size_t count) {
     std::string s(reinterpret_cast<const char*>(w), count * 4);
     return s.substr(0, std::strlen(s.c_str()));
@@ -53,7 +60,8 @@ std::vector<TextEdit> keywordIdentifiersRenamed(const EffectSyntax& syntax) {
     std::vector<TextEdit> edits;
     const bool typedefNamed = typedefNamesPrecise(t);
     for (size_t i = 0; i + 1 < t.size(); ++i)
-        if (t[i].isIdent() && t[i].is("precise") && isNameUse(t, i, typedefNamed)) edits.push_back({t[i].offset, t[i].end, kPrefix + t[i].text});
+        if (t[i].isIdent() && ((t[i].is("precise") && isNameUse(t, i, typedefNamed)) || isTemplateTypeName(t, i)))
+            edits.push_back({t[i].offset, t[i].end, kPrefix + t[i].text});
     return edits;
 }
 
