@@ -38,6 +38,7 @@ struct BrokenCase {
     const char* id;            // expected id of the first error
     const char* file;          // file name the first error must point into (ends the location's path)
     int line;                  // exact 1-based line of the first error
+    bool confined = false;     // compiled with the effect's folder as the include root (--root)
 };
 
 void PrintTo(const BrokenCase& c, std::ostream* os) { *os << c.name; }
@@ -107,13 +108,13 @@ std::vector<BrokenCase> cases() {
         {"UndefinedTechniqueMacro", kDir + "technique_macro_undefined.fx", diag::kPreprocessor, "technique_macro_undefined.fx", 8},
         {"UnterminatedComment", kDir + "unterminated_comment.fx", diag::kPreprocessor, "unterminated_comment.fx", 5},
         {"IncludeNotFound", kDir + "include_not_found.fx", diag::kIncludeNotFound, "include_not_found.fx", 3},
-        // The effect's own folder (outside/) is the only include root; ../secret.fxh exists but escapes it.
-        {"IncludeOutsideAllowedFolders", kDir + "outside/include_outside.fx", diag::kIncludeOutside, "include_outside.fx", 2},
+        // The effect's own folder (outside/) is the include root; ../secret.fxh exists but escapes it.
+        {"IncludeOutsideAllowedFolders", kDir + "outside/include_outside.fx", diag::kIncludeOutside, "include_outside.fx", 2, true},
         // include_cycle.fx -> cycle_a.fxh -> cycle_b.fxh -> cycle_a.fxh: the include closing the cycle.
         {"IncludeCycle", kDir + "include_cycle.fx", diag::kIncludeCycle, "cycle_b.fxh", 4},
         // fxc's search of the open files' folders never reaches outside the allowed folders.
         {"IncludeOutsideThroughOpenFolders", kDir + "nested_outside/include_through_open_folders.fx", diag::kIncludeOutside,
-         "reach_out.fxh", 3},
+         "reach_out.fxh", 3, true},
         // HLSL (glslang).
         {"HlslTypeErrorInInclude", kDir + "hlsl_error_in_include.fx", diag::kHlsl, "type_error.fxh", 8},
         {"HlslUndeclaredIdentifier", kDir + "undeclared_identifier.fx", diag::kHlsl, "undeclared_identifier.fx", 7},
@@ -165,6 +166,7 @@ TEST_P(BrokenInput, LibraryReportsFirstErrorAtTheRightPlace) {
     ASSERT_TRUE(fs::exists(c.effect)) << c.effect << " is missing (are the tests running from the repository root?)";
     CompileOptions options;
     options.useCache = false;
+    if (c.confined) options.includeRoot = fs::path(c.effect).parent_path().string();
     try {
         CompiledEffect effect = compileEffectFile(c.effect, options);
         FAIL() << c.effect << " compiled (" << effect.techniques.size() << " techniques), but it is broken";
@@ -202,7 +204,8 @@ TEST_P(BrokenInput, LibraryReportsFirstErrorAtTheRightPlace) {
 
 TEST_P(BrokenInput, CliCheckExitsOneAndPrintsTheLocation) {
     const BrokenCase& c = GetParam();
-    RunResult r = runCli("check " + quoted(c.effect) + " --no-cache");
+    const std::string root = c.confined ? " --root " + quoted(fs::path(c.effect).parent_path().string()) : "";
+    RunResult r = runCli("check " + quoted(c.effect) + " --no-cache" + root);
     ASSERT_TRUE(r.exited) << "fxport check " << c.effect << " did not exit normally (crashed?):\n" << r.output;
     EXPECT_EQ(r.status, 1) << r.output;
     EXPECT_NE(r.output.find(printedLocation(c)), std::string::npos)

@@ -262,10 +262,15 @@ TEST(IncludeRoot, UpwardIncludesResolveInsideTheRootOnly) {
     EXPECT_EQ(param(e, "LightDirection").declaredAt.line, 3);
     expectAllPassesLink(e);
 
-    // Default root = the effect's folder: FX1103 at the #include, naming the resolved file and the option.
+    // No root (the default): the includes resolve wherever they lead, as with fxc.
+    CompiledEffect unconfined = compileEffectFile(effect, noCache());
+    EXPECT_EQ(param(unconfined, "LightDirection").declaredAt.file, root + "/Effects/Shared/Lighting.fxh");
+
+    // The effect's own folder as the root: FX1103 at the #include, naming the resolved file and the option.
+    options.includeRoot = root + "/Effects/Water";
     try {
-        compileEffectFile(effect, noCache());
-        FAIL() << "compiled without a root";
+        compileEffectFile(effect, options);
+        FAIL() << "compiled outside its root";
     } catch (const CompileError& err) {
         const Diagnostic& d = err.diagnostics().front();
         EXPECT_EQ(d.id, diag::kIncludeOutside);
@@ -306,11 +311,13 @@ TEST(IncludeRoot, SymbolicLinksLeavingTheRootAreRefused) {
     fs::remove_all(dir);
 }
 
-TEST(IncludeRoot, CheckOfAFolderUsesItAsTheRoot) {
+TEST(IncludeRoot, CheckConfinesOnlyWithARoot) {
     RunResult r = runCli("check --no-cache tests/fixtures/include_root");
     EXPECT_EQ(r.status, 0) << r.output;
     EXPECT_NE(r.output.find("Water.fx: ok"), std::string::npos) << r.output;
     r = runCli("check --no-cache tests/fixtures/include_root/Effects/Water/Water.fx");
+    EXPECT_EQ(r.status, 0) << r.output;
+    r = runCli("check --no-cache --root tests/fixtures/include_root/Effects/Water tests/fixtures/include_root/Effects/Water/Water.fx");
     EXPECT_EQ(r.status, 1) << r.output;
     EXPECT_NE(r.output.find("Water.fx(2,11): error FX1103"), std::string::npos) << r.output;
     r = runCli("check --no-cache --root tests/fixtures/include_root tests/fixtures/include_root/Effects/Water/Water.fx");

@@ -248,10 +248,19 @@ TEST(GameIncludes, FromTheGameFolderWithWindowsPathsGuardsAndATechniqueInAHeader
         EXPECT_TRUE(std::any_of(deps.begin(), deps.end(), [&](const std::string& d) { return d.find(file) != std::string::npos; })) << file;
 }
 
-TEST(GameIncludes, WithoutTheRootTheGameFolderIsNotSearched) {
+// Without a root the folders above the effect stand in for the game's working folder all the way
+// up (fxc resolves against the current directory); a root ends the search there.
+TEST(GameIncludes, WithoutARootTheFoldersAboveAreSearched) {
+    CompiledEffect e = compileEffectFile(kWater, noCache());
+    EXPECT_EQ(e.techniques.at(0).name, "Main");
+}
+
+TEST(GameIncludes, ARootEndsTheSearchOfTheFoldersAbove) {
+    CompileOptions options = noCache();
+    options.includeRoot = fs::path(kWater).parent_path().string();
     try {
-        compileEffectFile(kWater, noCache());
-        ADD_FAILURE() << "compiled without the include root";
+        compileEffectFile(kWater, options);
+        ADD_FAILURE() << "compiled with the effect's folder as the include root";
     } catch (const CompileError& e) {
         const Diagnostic& d = e.diagnostics().front();
         EXPECT_EQ(d.id, std::string(diag::kIncludeNotFound));

@@ -3,8 +3,8 @@
 //   fxport dump IN.fx [--reflection] [-I dir] [-D NAME=VALUE]
 //   fxport check PATH... [-I dir] [-D NAME=VALUE] [--no-cache] [--warnings]
 //   --entry NAME --profile P (repeatable): a loose shader file (no technique) by entry point, as fxc /E /T
-//   --root DIR: `#include "../x.fxh"` may reach files inside DIR (default: the effect's folder, or
-//   the folder `check` scans)
+//   --root DIR: every #include must stay inside DIR (or an -I folder); default: includes resolve
+//   anywhere, as with fxc
 //   fxport --help | fxport COMMAND --help | fxport --version
 // fxc spellings are accepted beside the long forms: /E, /T, /D, /I, /Fo, /?.
 // Exit status: 0 success, 1 an effect failed to compile, 2 bad usage (one line naming the option).
@@ -36,7 +36,7 @@ const char* kUsage =
     "       fxport compile IN.hlsl -o OUT --entry NAME --profile vs_5_0 [--entry NAME --profile ps_5_0]\n"
     "       fxport dump IN.fx [--reflection] [-I dir] [-D NAME=VALUE]\n"
     "       fxport check PATH... [-I dir] [-D NAME=VALUE] [--no-cache] [--warnings]\n"
-    "       (all: --root DIR lets #include \"../x.fxh\" reach files inside DIR)\n"
+    "       (all: --root DIR confines every #include to DIR and the -I folders)\n"
     "       fxport --version | fxport --help | fxport COMMAND --help\n";
 
 const char* kHelp =
@@ -51,8 +51,8 @@ const char* kHelp =
     "options of every command:\n"
     "  -I DIR, /I DIR           a folder #include may read from (repeatable)\n"
     "  -D NAME[=VALUE], /D ...  define a macro before the source (repeatable; VALUE defaults to 1)\n"
-    "  --root DIR               #include \"../x.fxh\" may reach files inside DIR (default: the effect's\n"
-    "                           folder, or the folder check scans)\n"
+    "  --root DIR               every #include must stay inside DIR or an -I folder (FX1103 otherwise);\n"
+    "                           default: #include \"../x.fxh\" resolves wherever it leads, as with fxc\n"
     "  --entry NAME --profile P, /E NAME /T P\n"
     "                           a loose shader file (no technique): compile entry point NAME for\n"
     "                           profile P (vs_5_0, ps_4_0 ...); repeatable, one --profile per --entry\n"
@@ -387,9 +387,9 @@ bool isHeaderFile(const fs::path& path) {
     return ext == ".fxh" || ext == ".hlsli";
 }
 
-// (file, include root): an effect found by scanning a folder may #include upwards within that folder.
-std::vector<std::pair<std::string, std::string>> collectEffects(const std::vector<std::string>& paths, std::vector<std::string>& missing) {
-    std::vector<std::pair<std::string, std::string>> files;
+// The effect files named, and those found by scanning the folders named, in order.
+std::vector<std::string> collectEffects(const std::vector<std::string>& paths, std::vector<std::string>& missing) {
+    std::vector<std::string> files;
     for (const auto& p : paths) {
         std::error_code ec;
         if (fs::is_directory(p, ec)) {
@@ -398,9 +398,9 @@ std::vector<std::pair<std::string, std::string>> collectEffects(const std::vecto
                 if (entry.is_regular_file() && isEffectFile(entry.path()))
                     found.push_back(entry.path().string());
             std::sort(found.begin(), found.end());
-            for (auto& f : found) files.push_back({std::move(f), p});
+            for (auto& f : found) files.push_back(std::move(f));
         } else if (fs::exists(p, ec)) {
-            files.push_back({p, std::string()});
+            files.push_back(p);
         } else {
             missing.push_back(p);
         }
@@ -510,11 +510,7 @@ int main(int argc, char** argv) {
                 ++passed;
             };
             std::vector<std::pair<std::string, CompileOptions>> jobs;
-            for (const auto& [f, scannedRoot] : files) {
-                CompileOptions options = a.options;
-                if (options.includeRoot.empty()) options.includeRoot = scannedRoot;
-                jobs.push_back({f, options});
-            }
+            for (const auto& f : files) jobs.push_back({f, a.options});
             // Headers are skipped where they stand in the list; loose shaders (--entry) compile one by one.
             std::vector<std::pair<std::string, CompileOptions>> effects;
             std::vector<size_t> after;  // effects[k] is reported after the skipped files before jobs index after[k]

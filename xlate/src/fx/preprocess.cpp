@@ -190,8 +190,9 @@ public:
         std::string display; // as the user named it
     };
 
-    // `roots` are searched and allowed; `extraAllowed` (CompileOptions::includeRoot) is allowed
-    // only: fxc reaches it through `../` from the including file, never by searching it.
+    // `roots` are searched; `extraAllowed` (CompileOptions::includeRoot), when given, confines
+    // every include to it and to `roots` (fxc reaches it through `../` from the including file,
+    // never by searching it). Without it an include may be anywhere, as fxc and cpp allow.
     RestrictedIncluder(std::vector<Root> roots, std::optional<Root> extraAllowed, std::string rootDisplay, fs::path rootAbsolute)
         : roots_(std::move(roots)), extraAllowed_(std::move(extraAllowed)) {
         displayToAbsolute_[rootDisplay] = std::move(rootAbsolute);
@@ -317,9 +318,10 @@ private:
         // Games name includes from their working folder (`"Content/Shaders/Common/Fog.fxh"`), which
         // fxc resolves against the current directory: the folders from the effect's up to the
         // include root stand in for it, nearest first.
-        if (extraAllowed_ && !roots_.empty())
+        if (!roots_.empty())
             for (fs::path dir = roots_.front().absolute.parent_path(), display = fs::path(roots_.front().display).parent_path();
-                 isUnder(dir, extraAllowed_->absolute) && dir.has_relative_path(); dir = dir.parent_path(), display = display.parent_path())
+                 (!extraAllowed_ || isUnder(dir, extraAllowed_->absolute)) && dir.has_relative_path();
+                 dir = dir.parent_path(), display = display.parent_path())
                 addDir(dir, display.string());
 
         std::optional<fs::path> found;
@@ -343,7 +345,7 @@ private:
             if (!found) continue;
             // Canonical: a symbolic link inside a root that points outside it is outside.
             canonical = fs::weakly_canonical(*found, ec);
-            bool allowed = extraAllowed_ && isUnder(canonical, extraAllowed_->absolute);
+            bool allowed = !extraAllowed_ || isUnder(canonical, extraAllowed_->absolute);  // no root: anywhere, as fxc
             for (const auto& r : roots_)
                 if (isUnder(canonical, r.absolute)) allowed = true;
             if (!allowed) {

@@ -20,12 +20,13 @@
 namespace fxport::xlate {
 
 struct CompileOptions {
-    // Extra folders `#include` may read from. The effect's own folder is always allowed; nothing
-    // outside these folders is ever read (an include that escapes them is an error).
+    // Extra folders `#include` searches (fxc /I), after the including files' folders.
     std::vector<std::string> includeDirs;
-    // A folder `#include "../Common/x.fxh"` may climb up to (fxc resolves relative to the including
-    // file, also upwards). Empty = the effect's own folder. `fxport check DIR` uses DIR; `--root`.
-    // Files are judged by their real path: a symbolic link leaving the root is outside it.
+    // Confines `#include`: when set, every file read lies under it or under includeDirs (an include
+    // that escapes is FX1103), for compiling effects one does not trust. Empty = no confinement:
+    // `#include "../Common/x.fxh"` and `<..\Helpers\y.fxh>` resolve wherever they lead, as with
+    // fxc. `fxport check DIR` uses DIR; `--root`. Files are judged by their real path: a symbolic
+    // link leaving the root is outside it.
     std::string includeRoot;
     // `-D NAME=VALUE` style macros, applied before the source.
     std::vector<std::pair<std::string, std::string>> defines;

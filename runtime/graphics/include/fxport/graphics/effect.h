@@ -219,7 +219,7 @@ private:
 
 struct EffectOptions {
     std::vector<std::string> includeDirs;                        // extra #include folders
-    std::string includeRoot;  // `#include "../x.fxh"` may reach inside it (empty: the effect's folder)
+    std::string includeRoot;  // set: every #include must stay inside it (empty: no confinement, as fxc)
     std::vector<std::pair<std::string, std::string>> defines;    // -D NAME=VALUE
     std::vector<std::string> techniques;                         // compile only these; empty = all
     bool useCache = true;                                        // xlate's content-hash cache
