@@ -11,6 +11,7 @@
 #include <regex>
 
 #include "fxport/xlate/effect_compiler.h"
+#include "fxport/xlate/effect_file.h"
 
 namespace fs = std::filesystem;
 using namespace fxport::xlate;
@@ -112,4 +113,79 @@ TEST(RealworldThirdWave, VectorCastToAnArrayInAnInitializer) {
         "ps_5_0");
     const std::string& glsl = onlyShader(e).glsl;
     EXPECT_TRUE(std::regex_search(glsl, std::regex(R"(7u, 10u, 13u, 16u)"))) << glsl;
+}
+
+// The DirectX SDK's skinning idiom (SkinnedMesh, MultiAnimation, LocalDeformablePRT): a vector cast
+// to an array in a local declaration, from a struct member or a call. The value is converted once
+// (float to int truncates, as fxc's cast does) and the array's elements are its components.
+TEST(RealworldThirdWave, VectorCastToAnArrayFromAnyExpression) {
+    CompiledEffect e = compileLoose(
+        "struct VSIn { float4 pos : POSITION; float4 weights : BLENDWEIGHT; float4 indices : BLENDINDICES; };\n"
+        "float4x4 Bones[4];\n"
+        "float4 main(VSIn i) : SV_Position {\n"
+        "    float w[3] = (float[3])i.weights;\n"
+        "    int idx[4] = (int[4])i.indices;\n"
+        "    return mul(i.pos, Bones[idx[1]]) * w[2];\n}\n",
+        "vs_4_0");
+    const std::string& glsl = onlyShader(e).glsl;
+    EXPECT_TRUE(std::regex_search(glsl, std::regex(R"(ivec4\()"))) << glsl;  // the indices converted to int, once
+}
+
+// PRT.fx sizes an entry parameter by an expression of macros: `float4 w[NUM_PCA/4] : BLENDWEIGHT1`
+// (NUM_PCA given by the application, here -D). The parameter has NUM_PCA/4 elements, not NUM_PCA.
+TEST(RealworldThirdWave, EntryParameterSizedByAnExpression) {
+    fs::path dir = fs::temp_directory_path() / ("fxport-third-wave-prt-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::ofstream(dir / "prt.fx") << "float4x4 WVP;\n"
+                                     "float4 VS(float4 p : POSITION, float4 w[NUM_PCA/4] : BLENDWEIGHT1, out float4 c : COLOR0) : POSITION\n"
+                                     "{ c = w[0] + w[NUM_PCA/4 - 1]; return mul(p, WVP); }\n"
+                                     "float4 PS(float4 c : COLOR0) : COLOR0 { return c; }\n"
+                                     "technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n";
+    CompileOptions o;
+    o.useCache = false;
+    o.defines = {{"NUM_PCA", "8"}};
+    CompiledEffect e = compileEffectFile((dir / "prt.fx").string(), o);
+    const CompiledShader& vs = e.shaders.at(size_t(e.techniques.at(0).passes.at(0).vertexShader.shaders.at(0)));
+    int blendWeights = 0;
+    for (const auto& in : vs.inputs) blendWeights += in.semantic.rfind("BLENDWEIGHT", 0) == 0 ? 1 : 0;
+    EXPECT_EQ(blendWeights, 2);  // BLENDWEIGHT1 and BLENDWEIGHT2
+    fs::remove_all(dir);
+}
+
+// `VertexShader = null;` in a pass (the DirectX SDK's ShadowVolume, PostProcess, ConfigSystem): the
+// effect framework takes `null` as NULL there; elsewhere `null` stays an undeclared name (fxc X3004).
+TEST(RealworldThirdWave, NullAsAPassStateValue) {
+    fs::path dir = fs::temp_directory_path() / ("fxport-third-wave-null-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::ofstream(dir / "null.fx") << "float4 PS() : COLOR0 { return 1; }\n"
+                                      "technique T { pass P { VertexShader = null; PixelShader = compile ps_2_0 PS(); } }\n";
+    CompileOptions o;
+    o.useCache = false;
+    CompiledEffect e = compileEffectFile((dir / "null.fx").string(), o);
+    EXPECT_TRUE(e.techniques.at(0).passes.at(0).vertexShader.shaders.empty());
+    std::ofstream(dir / "null.fx") << "float4 PS() : COLOR0 { float4 c = null; return c; }\n"
+                                      "technique T { pass P { PixelShader = compile ps_2_0 PS(); } }\n";
+    EXPECT_THROW(compileEffectFile((dir / "null.fx").string(), o), CompileError);
+    fs::remove_all(dir);
+}
+
+// D3DX spells the counter-clockwise stencil states with an underscore (`Ccw_StencilPass = Decr;`,
+// the DirectX SDK's ShadowVolume): the same states as CcwStencilPass.
+TEST(RealworldThirdWave, CcwStencilStatesWithAnUnderscore) {
+    fs::path dir = fs::temp_directory_path() / ("fxport-third-wave-ccw-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::ofstream(dir / "ccw.fx") << "float4 PS() : COLOR0 { return 1; }\n"
+                                     "technique T { pass P { TwoSidedStencilMode = true; Ccw_StencilFunc = Always; Ccw_StencilPass = Decr;\n"
+                                     "    PixelShader = compile ps_2_0 PS(); } }\n";
+    CompileOptions o;
+    o.useCache = false;
+    CompiledEffect e = compileEffectFile((dir / "ccw.fx").string(), o);
+    bool pass = false, func = false;
+    for (const auto& s : e.techniques.at(0).passes.at(0).states) {
+        pass |= s.state == RenderState::CcwStencilPass && std::get<StencilOperation>(s.value) == StencilOperation::Decrement;
+        func |= s.state == RenderState::CcwStencilFunc && std::get<CompareFunction>(s.value) == CompareFunction::Always;
+    }
+    EXPECT_TRUE(pass);
+    EXPECT_TRUE(func);
+    fs::remove_all(dir);
 }

@@ -72,7 +72,9 @@ public:
         }
         std::vector<std::string> elements = arrayElementAccesses(access, dims);
         if (elements.empty()) {
-            error = "array '" + access + "' is too large to be a shader input or output";
+            const bool unsized = std::find(dims.begin(), dims.end(), 0) != dims.end();
+            error = unsized ? "array '" + access + "' has a size that is no constant (a macro the application defines, left undefined?)"
+                            : "array '" + access + "' is too large to be a shader input or output";
             return false;
         }
         if (const FxStruct* s = syntax_.findStruct(syntax_.resolveType(type))) {

@@ -913,7 +913,8 @@ private:
         if (i < span.end && tok(i).isIdent()) p.name = tok(i++).text;
         while (i < span.end && tok(i).is("[")) {
             size_t after = skipGroup(i, "array size");
-            p.arrayDims.push_back(std::atoi(tok(i + 1).text.c_str()));
+            // A size may be an expression of macros and constants (PRT.fx: `float4 w[NUM_PCA/4]`).
+            p.arrayDims.push_back(after == i + 2 ? 0 : evaluateIntExpression({i + 1, after - 1}));
             i = after;
         }
         while (i < span.end && tok(i).is(":")) {

@@ -307,6 +307,12 @@ const std::map<std::string, Dx9State>& dx9States() {
         {"ccwstencilpass", {RenderState::CcwStencilPass, ValueKind::StencilOp}},
         {"ccwstencilfail", {RenderState::CcwStencilFail, ValueKind::StencilOp}},
         {"ccwstencilzfail", {RenderState::CcwStencilZFail, ValueKind::StencilOp}},
+        // D3DX's own spellings of the same states (D3DRS_CCW_STENCILFUNC ...), as the DirectX
+        // SDK's ShadowVolume writes them.
+        {"ccw_stencilfunc", {RenderState::CcwStencilFunc, ValueKind::Compare}},
+        {"ccw_stencilpass", {RenderState::CcwStencilPass, ValueKind::StencilOp}},
+        {"ccw_stencilfail", {RenderState::CcwStencilFail, ValueKind::StencilOp}},
+        {"ccw_stencilzfail", {RenderState::CcwStencilZFail, ValueKind::StencilOp}},
         {"cullmode", {RenderState::CullMode, ValueKind::Cull}},
         {"fillmode", {RenderState::FillMode, ValueKind::Fill}},
         {"scissortestenable", {RenderState::ScissorTestEnable, ValueKind::Bool}},

@@ -135,6 +135,31 @@ int repeatableVectorComponents(const EffectSyntax& syntax, const FxFunction* f, 
     return b.ok && !b.isMatrix ? b.rows * b.columns : 0;
 }
 
+// `T a[N] = (S[N]) e;` as a local declaration statement (not static), e any expression but an array
+// or struct variable, N at most 4: the DirectX SDK's skinning idiom `float w[4] =
+// (float[4])i.BlendWeights;`, `int idx[4] = (int[4])D3DCOLORtoUBYTE4(c);`. e is evaluated once into
+// a vector of N components (fxc's cast: conversion, truncation) declared just before, which the
+// array's initializer list reads. `cast` is the '(' of the cast, `stop` the ';'.
+void declareThroughVector(const EffectSyntax& syntax, const FxFunction& f, size_t cast, size_t stop, const std::string& scalar, int n,
+                          std::vector<TextEdit>& edits) {
+    const auto& t = syntax.tokens;
+    if (n > 4 || cast < 6 || !t[cast - 2].is("]") || !t[cast - 4].is("[") || !t[cast - 5].isIdent()) return;
+    if (stop == cast + 7 && t[cast + 6].isIdent()) {  // a lone name: an array or struct is glslang's (or the other rewrites')
+        auto v = declaredVariable(syntax, f, t[cast + 6].text, cast + 6);
+        if (!v || !v->dims.empty() || syntax.findStruct(syntax.resolveType(v->type))) return;
+    }
+    size_t start = cast - 5;  // back over the type and modifiers to the statement's start
+    while (start > f.body.begin && t[start - 1].isIdent()) --start;
+    if (start == cast - 5 || !(t[start - 1].is(";") || t[start - 1].is("{") || t[start - 1].is("}"))) return;
+    for (size_t k = start; k < cast - 5; ++k)
+        if (t[k].is("static")) return;
+    const std::string vector = scalar + std::to_string(n), temp = "fxport_cast_" + std::to_string(cast);
+    edits.push_back({t[start].offset, t[start].offset, vector + " " + temp + " = (" + vector + ")(" + syntax.text({cast + 6, stop}) + "); "});
+    std::string list = "{";
+    for (int k = 0; k < n; ++k) list += (k ? ", " : " ") + temp + "[" + std::to_string(k) + "]";
+    edits.push_back({t[cast].offset, t[stop - 1].end, list + " }"});
+}
+
 // `= (S[N]) e;`, S a scalar type and e a vector of at least N components (SubD11: `static const
 // uint Val[4] = (uint[4])uint4(4, 4, 4, 4);`): glslang reads the cast as an array constructor of one
 // argument and refuses it. The initializer becomes the list of e's first N components, converted.
@@ -150,7 +175,11 @@ void rewriteVectorToArrayInitializers(const EffectSyntax& syntax, const FxFuncti
         size_t stop = i + 6;
         for (int depth = 0; stop < end && !(depth == 0 && t[stop].is(";")); ++stop)
             depth += t[stop].is("(") ? 1 : t[stop].is(")") ? -1 : 0;
-        if (stop >= end || repeatableVectorComponents(syntax, f, i + 6, stop) < n) continue;
+        if (stop >= end) continue;
+        if (repeatableVectorComponents(syntax, f, i + 6, stop) < n) {
+            if (f) declareThroughVector(syntax, *f, i, stop, to.scalar, n, edits);
+            continue;
+        }
         const std::string operand = "(" + syntax.text({i + 6, stop}) + ")";
         std::string list = "{";
         for (int k = 0; k < n; ++k) list += (k ? ", (" : " (") + to.scalar + ")" + operand + "[" + std::to_string(k) + "]";
