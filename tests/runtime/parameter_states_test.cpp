@@ -79,4 +79,25 @@ TEST_F(ParameterStates, AParameterNoShaderReadsKeepsItsValueForTheState) {
 }
 
 }  // namespace
+// Sampler states from parameters: the filters and AddressU follow Mode at each Apply() (D3D9's
+// codes: Filters = {POINT, LINEAR}, Addresses = {CLAMP, WRAP}); AddressV, given as a value, stays.
+TEST_F(ParameterStates, SamplerStatesReadTheirParameterAtEachApply) {
+    effect.CurrentTechnique = effect.Techniques["SamplerFromParameters"];
+    device.SamplerStates[0] = SamplerState::LinearWrap;
+    effect.Parameters["Mode"].SetValue(0);
+    apply();
+    EXPECT_EQ(device.SamplerStates[0].Filter, TextureFilter::Point);
+    EXPECT_EQ(device.SamplerStates[0].AddressU, TextureAddressMode::Clamp);
+    EXPECT_EQ(device.SamplerStates[0].AddressV, TextureAddressMode::Mirror);
+    effect.Parameters["Mode"].SetValue(1);
+    apply();
+    EXPECT_EQ(device.SamplerStates[0].Filter, TextureFilter::LinearMipPoint);
+    EXPECT_EQ(device.SamplerStates[0].AddressU, TextureAddressMode::Wrap);
+    EXPECT_EQ(device.SamplerStates[0].AddressV, TextureAddressMode::Mirror);
+    // The parameter itself changes too: Filters[1] = D3DTEXF_POINT.
+    effect.Parameters["Filters"].SetValue(std::vector<int>{1, 1});
+    apply();
+    EXPECT_EQ(device.SamplerStates[0].Filter, TextureFilter::Point);
+}
+
 }  // namespace fxport

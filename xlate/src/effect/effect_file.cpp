@@ -44,6 +44,8 @@ constexpr Names<ParameterType, 17> kType{{"void", "bool", "int", "uint", "float"
                                           "sampler3D", "samplerCube", "samplerState"}};
 constexpr Names<TextureFilter, 4> kFilter{{"none", "point", "linear", "anisotropic"}};
 constexpr Names<TextureAddress, 5> kAddress{{"wrap", "mirror", "clamp", "border", "mirrorOnce"}};
+constexpr Names<SamplerStateField, 9> kSamplerField{
+    {"minFilter", "magFilter", "mipFilter", "addressU", "addressV", "addressW", "maxAnisotropy", "maxMipLevel", "mipLodBias"}};
 constexpr Names<TextureKind, 4> kKind{{"1D", "2D", "3D", "cube"}};
 constexpr Names<RenderState, 52> kState{
     {"AlphaBlendEnable", "SrcBlend", "DestBlend", "BlendOp", "SeparateAlphaBlendEnable", "SrcBlendAlpha",
@@ -204,6 +206,16 @@ SamplerStateDesc samplerStateFrom(const json& j) {
     return s;
 }
 
+json selectorJson(const std::vector<SelectorOp>& selector);
+std::vector<SelectorOp> selectorFrom(const json& j);
+
+// `MinFilter = <Filter>;`: the field, the parameter's index and the element program.
+json toJson(const SamplerStateParameter& p) {
+    json j{{"field", kSamplerField.of(p.field)}, {"parameter", p.parameter}};
+    if (!p.element.empty()) j["element"] = selectorJson(p.element);
+    return j;
+}
+
 json toJson(const CompiledShader& s, const CompiledEffect& effect, bool withGlsl) {
     json j{{"stage", kStage.of(s.profile.stage)}, {"profile", s.profile.name}, {"entryPoint", s.entryPoint}};
     if (!s.arguments.empty()) j["arguments"] = s.arguments;
@@ -212,9 +224,12 @@ json toJson(const CompiledShader& s, const CompiledEffect& effect, bool withGlsl
         inputs.push_back({{"semantic", i.semantic}, {"location", i.location}, {"components", i.components}, {"integer", i.isInteger}});
     if (s.profile.stage == ShaderStage::Vertex) j["inputs"] = inputs;
     json samplers = json::array();
-    for (const auto& b : s.samplers)
-        samplers.push_back({{"unit", b.unit}, {"kind", kKind.of(b.kind)}, {"glslName", b.glslName}, {"sampler", b.samplerName},
-                            {"texture", b.textureParameter}, {"state", toJson(b.state)}});
+    for (const auto& b : s.samplers) {
+        json sj{{"unit", b.unit}, {"kind", kKind.of(b.kind)}, {"glslName", b.glslName}, {"sampler", b.samplerName},
+                {"texture", b.textureParameter}, {"state", toJson(b.state)}};
+        for (const auto& p : b.stateParameters) sj["stateParameters"].push_back(toJson(p));
+        samplers.push_back(sj);
+    }
     j["samplers"] = samplers;
     json read = json::array();
     for (int p : s.parametersRead) read.push_back(effect.parameters[static_cast<size_t>(p)].name);
@@ -512,6 +527,10 @@ CompiledEffect deserializeEffect(std::string_view text, const std::string& nameF
                 sb.samplerName = b.at("sampler");
                 sb.textureParameter = b.at("texture");
                 sb.state = samplerStateFrom(b.at("state"));
+                if (b.contains("stateParameters"))
+                    for (const auto& p : b["stateParameters"])
+                        sb.stateParameters.push_back({kSamplerField.parse(p.at("field")), p.at("parameter").get<int>(),
+                                                      p.contains("element") ? selectorFrom(p["element"]) : std::vector<SelectorOp>{}});
                 cs.samplers.push_back(sb);
             }
             for (const auto& name : s.at("parametersRead")) cs.parametersRead.push_back(paramIndex.at(name.get<std::string>()));

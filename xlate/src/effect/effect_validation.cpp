@@ -69,8 +69,16 @@ std::optional<std::string> findEffectInconsistency(const CompiledEffect& e) {
         const std::string what = "shader #" + std::to_string(i) + " (" + s.entryPoint + ")";
         for (const auto& in : s.inputs)
             if (!within(in.location, 0, kMaxLocation - 1) || !within(in.components, 1, 4)) return what + " has input '" + in.semantic + "' out of range";
-        for (const auto& b : s.samplers)
+        const long long lastParameter = static_cast<long long>(e.parameters.size()) - 1;
+        for (const auto& b : s.samplers) {
             if (!within(b.unit, 0, kMaxUnit - 1)) return what + " binds a sampler to unit " + std::to_string(b.unit);
+            for (const auto& sp : b.stateParameters) {
+                if (!within(sp.parameter, 0, lastParameter)) return what + " reads a sampler state from parameter #" + std::to_string(sp.parameter);
+                for (const auto& op : sp.element)
+                    if (op.kind != SelectorOp::Kind::PushConstant && !within(op.value, 0, lastParameter))
+                        return what + " indexes a sampler state's parameter by parameter #" + std::to_string(op.value) + ", which does not exist";
+            }
+        }
         for (int p : s.parametersRead)
             if (!within(p, 0, static_cast<long long>(e.parameters.size()) - 1)) return what + " reads parameter #" + std::to_string(p);
         for (const auto* ranges : {&s.uniformRangesRead, &s.uniformRangesLive})

@@ -733,8 +733,38 @@ StateResult translatePassAssignment(const FxAssignment& a, StateContext& ctx, st
     return StateResult::Applied;
 }
 
+// The sampler states the effect framework can read from a parameter, by lower-case name.
+static std::optional<SamplerStateField> samplerStateField(const std::string& key) {
+    static const std::map<std::string, SamplerStateField> fields = {
+        {"minfilter", SamplerStateField::MinFilter}, {"magfilter", SamplerStateField::MagFilter}, {"mipfilter", SamplerStateField::MipFilter},
+        {"addressu", SamplerStateField::AddressU},   {"addressv", SamplerStateField::AddressV},   {"addressw", SamplerStateField::AddressW},
+        {"maxanisotropy", SamplerStateField::MaxAnisotropy}, {"maxmiplevel", SamplerStateField::MaxMipLevel},
+        {"mipmaplodbias", SamplerStateField::MipLodBias}};
+    auto it = fields.find(key);
+    return it == fields.end() ? std::nullopt : std::optional(it->second);
+}
+
+bool resolveSamplerStateParameter(const FxAssignment& a, StateContext& ctx, SamplerStateParameter& out) {
+    const Token& nameTok = ctx.syntax.tokens[a.nameToken];
+    StateAssignment s;
+    s.where = ctx.map.locate(nameTok.line, nameTok.column, nameTok.text);
+    auto field = samplerStateField(toLower(a.name));
+    auto result = field ? fromParameter(a, ctx, s) : std::nullopt;
+    if (!result) {
+        ctx.diagnostics.push_back(ctx.map.makeAt(Severity::Error, diag::kBadStateValue,
+                                                 "sampler state '" + a.name + " = " + ctx.syntax.text(a.value) + "' names no parameter of the effect",
+                                                 s.where));
+        return false;
+    }
+    if (*result != StateResult::Applied) return false;
+    out.field = *field;
+    out.parameter = s.parameter;
+    out.element = s.element;
+    return true;
+}
+
 bool translateSamplerAssignment(const FxAssignment& a, StateContext& ctx, SamplerStateDesc& state,
-                                std::string& textureParameter) {
+                                std::string& textureParameter, std::vector<FxAssignment>* fromParameters) {
     ValueReader r{ctx, a, ctx.syntax.looseShaders};
     std::string key = toLower(a.name);
     auto filterOf = [&](const std::string& n) -> std::optional<TextureFilter> {
@@ -761,10 +791,14 @@ bool translateSamplerAssignment(const FxAssignment& a, StateContext& ctx, Sample
 
     const std::vector<Token>& tokens = ctx.syntax.tokens;
     if (key != "texture" && a.value.end > a.value.begin + 2 && tokens[a.value.begin].is("<") && tokens[a.value.end - 1].is(">")) {
-        // D3D9's effect framework would read the parameter at Apply(); fxport's sampler states are
-        // decoded once, so say so rather than call the value malformed.
+        // D3D9's effect framework reads the parameter at Apply(): resolved once the effect's
+        // parameters are known (resolveSamplerStateParameter).
+        if (fromParameters && samplerStateField(key)) {
+            fromParameters->push_back(a);
+            return true;
+        }
         r.error(diag::kUnsupported, "sampler state '" + a.name + " = " + r.text() +
-                                        "' reads a parameter at Apply(); fxport supports sampler states given as values only");
+                                        "' reads a parameter at Apply(); fxport reads filters, address modes, anisotropy, levels and bias so");
         return false;
     }
     if (key == "texture") {

@@ -33,10 +33,16 @@ enum class StateResult {
 StateResult translatePassAssignment(const FxAssignment& assignment, StateContext& context,
                                     std::vector<StateAssignment>& out);
 
-// One `sampler_state { ... }` entry. `Texture = <T>` sets textureParameter. Returns false after
-// adding an error.
+// One `sampler_state { ... }` entry. `Texture = <T>` sets textureParameter. A filter, address,
+// anisotropy, level or bias read from a parameter (`MinFilter = <Filter>;`) goes to
+// `fromParameters` as written, for resolveSamplerStateParameter once the parameters are known
+// (without `fromParameters` it is an error). Returns false after adding an error.
 bool translateSamplerAssignment(const FxAssignment& assignment, StateContext& context, SamplerStateDesc& state,
-                                std::string& textureParameter);
+                                std::string& textureParameter, std::vector<FxAssignment>* fromParameters = nullptr);
+
+// A sampler state translateSamplerAssignment left to `fromParameters`, with the parameter (element)
+// resolved against `context.parameters`. False after adding an error.
+bool resolveSamplerStateParameter(const FxAssignment& assignment, StateContext& context, SamplerStateParameter& out);
 
 // The D3D9 fixed-function states (lower case) a pass or sampler may set: accepted, ignored, and
 // warned about (FX1303). Tests set each one.

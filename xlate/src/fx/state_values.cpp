@@ -2,6 +2,7 @@
 // arrives in (fxport's enum order from the parser, D3D9's codes from a parameter at Apply()).
 #include "fx/state_values.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -103,6 +104,28 @@ StateValue stateValueFromD3D9(RenderState state, double number) {
     // the order of fxport's enums.
     if (enumerated) return dwordOf(number) >= 1 ? stateValueFromCanonical(state, dwordOf(number) - 1) : v;
     return stateValueFromCanonical(state, number);
+}
+
+void setSamplerStateFromD3D9(SamplerStateDesc& desc, SamplerStateField field, double number) {
+    const int code = dwordOf(number);
+    auto filter = [&](std::optional<TextureFilter>& f) {  // D3DTEXF_NONE 0, POINT 1, LINEAR 2, ANISOTROPIC 3 (and the quads: linear)
+        if (code >= 0 && code <= 3) f = TextureFilter(code);
+        else if (code >= 4 && code <= 7) f = TextureFilter::Linear;
+    };
+    auto address = [&](std::optional<TextureAddress>& a) {  // D3DTADDRESS_WRAP 1 ... MIRRORONCE 5
+        if (code >= 1 && code <= 5) a = TextureAddress(code - 1);
+    };
+    switch (field) {
+    case SamplerStateField::MinFilter: filter(desc.minFilter); break;
+    case SamplerStateField::MagFilter: filter(desc.magFilter); break;
+    case SamplerStateField::MipFilter: filter(desc.mipFilter); break;
+    case SamplerStateField::AddressU: address(desc.addressU); break;
+    case SamplerStateField::AddressV: address(desc.addressV); break;
+    case SamplerStateField::AddressW: address(desc.addressW); break;
+    case SamplerStateField::MaxAnisotropy: desc.maxAnisotropy = std::max(1, code); break;
+    case SamplerStateField::MaxMipLevel: desc.maxMipLevel = std::max(0, code); break;
+    case SamplerStateField::MipLodBias: desc.mipLodBias = static_cast<float>(number); break;
+    }
 }
 
 }  // namespace fxport::xlate

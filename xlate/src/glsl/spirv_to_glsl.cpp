@@ -415,6 +415,7 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
                     b.unit = s.unit;
                     b.textureParameter = s.textureParameter;
                     b.state = s.state;
+                    b.stateParameters = s.stateParameters;
                 }
             compiler.unset_decoration(img.id, spv::DecorationDescriptorSet);
             compiler.set_decoration(img.id, spv::DecorationBinding, static_cast<uint32_t>(b.unit));
@@ -431,6 +432,7 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
                 if (s.name == sampler) {
                     b.samplerName = sampler;
                     b.state = s.state;
+                    b.stateParameters = s.stateParameters;
                 }
             auto unit = effect.textureUnits.find(image);
             int u = unit != effect.textureUnits.end() ? unit->second : 0;

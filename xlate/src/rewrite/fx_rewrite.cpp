@@ -333,7 +333,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
                 usedUnits.insert(u);
             }
         }
-        for (const auto& a : s.states) translateSamplerAssignment(a, stateContext, es.state, es.textureParameter);
+        for (const auto& a : s.states) translateSamplerAssignment(a, stateContext, es.state, es.textureParameter, &es.parameterStates);
         // A comparison sampler compares even without ComparisonFunc (D3D10's default is NEVER).
         if (iequals(s.type, "SamplerComparisonState") && !es.state.comparison) es.state.comparison = CompareFunction::Never;
         out.samplers.push_back(std::move(es));

@@ -23,6 +23,8 @@ struct EffectSampler {
     bool dx10 = false;
     std::string textureParameter;  // DX9: Texture = <T>
     SamplerStateDesc state;
+    std::vector<FxAssignment> parameterStates;          // `MinFilter = <Filter>;` as written
+    std::vector<SamplerStateParameter> stateParameters; // the same, resolved (EffectBuilder)
 };
 
 struct RewrittenEffect {

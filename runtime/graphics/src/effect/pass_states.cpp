@@ -294,6 +294,13 @@ SamplerOverride decodeSamplerState(const xlate::SamplerStateDesc& e) {
     return o;
 }
 
+SamplerOverride currentSamplerState(const SamplerSlot& slot, const Effect::Impl& effect) {
+    if (slot.fromParameters.empty()) return slot.state;
+    xlate::SamplerStateDesc desc = slot.literal;
+    for (const SamplerStateFromParameter& p : slot.fromParameters) xlate::setSamplerStateFromD3D9(desc, p.field, effect.evaluateSelector(p.read));
+    return decodeSamplerState(desc);
+}
+
 SamplerState SamplerOverride::over(SamplerState s) const {
     // A shader's sampler either compares (sampler2DShadow in the GLSL) or not; GL leaves the
     // other combinations undefined, so every slot says which.

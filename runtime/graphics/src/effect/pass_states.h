@@ -69,13 +69,25 @@ struct SamplerOverride {
     SamplerState over(SamplerState device) const;
 };
 
+// A sampler state read from a parameter at Apply(): the field and the program that reads the
+// parameter's (element's) D3D9 number (Effect::Impl::evaluateSelector).
+struct SamplerStateFromParameter {
+    xlate::SamplerStateField field = xlate::SamplerStateField::MinFilter;
+    std::vector<xlate::SelectorOp> read;
+};
+
 // One texture unit a shader samples, ready for Apply().
 struct SamplerSlot {
     int unit = 0;
     int textureParameter = -1;  // index into the effect's parameters; -1: Textures[unit] as set by the host
-    SamplerOverride state;
+    SamplerOverride state;      // decoded once, when no state reads a parameter
+    xlate::SamplerStateDesc literal;                       // the states given as values
+    std::vector<SamplerStateFromParameter> fromParameters; // the others, over `literal` at each Apply()
 };
 
 SamplerOverride decodeSamplerState(const xlate::SamplerStateDesc& desc);
+
+// The slot's sampler state now: `state`, or with states read from the effect's parameters.
+SamplerOverride currentSamplerState(const SamplerSlot& slot, const Effect::Impl& effect);
 
 }  // namespace fxport

@@ -83,6 +83,14 @@ enum class TextureFilter : std::uint8_t { None, Point, Linear, Anisotropic };
 enum class TextureAddress : std::uint8_t { Wrap, Mirror, Clamp, Border, MirrorOnce };
 enum class TextureKind : std::uint8_t { Texture1D, Texture2D, Texture3D, TextureCube };
 
+// An index the effect framework evaluates at Apply() over the current parameter values: a stack
+// program (`VSIndices[ShaderIndex]` is PushParameter ShaderIndex, IndexParameter VSIndices).
+struct SelectorOp {
+    enum class Kind : std::uint8_t { PushConstant, PushParameter, IndexParameter } kind = Kind::PushConstant;
+    int value = 0;  // constant, or parameter index (IndexParameter pops an index, pushes param[index])
+    bool operator==(const SelectorOp&) const = default;
+};
+
 struct SamplerStateDesc {
     std::optional<TextureFilter> minFilter, magFilter, mipFilter;
     std::optional<TextureAddress> addressU, addressV, addressW;
@@ -97,6 +105,19 @@ struct SamplerStateDesc {
     bool operator==(const SamplerStateDesc&) const = default;
 };
 
+// A sampler state the effect framework reads from a parameter at Apply() (`MinFilter = <Filter>;`,
+// `AddressU = <Modes[Mode]>;`): the parameter (element) holds D3D9's number for it (D3DTEXF_*,
+// D3DTADDRESS_*, or the anisotropy, level or bias itself).
+enum class SamplerStateField : std::uint8_t { MinFilter, MagFilter, MipFilter, AddressU, AddressV, AddressW, MaxAnisotropy, MaxMipLevel, MipLodBias };
+struct SamplerStateParameter {
+    SamplerStateField field = SamplerStateField::MinFilter;
+    int parameter = -1;               // index into CompiledEffect::parameters
+    std::vector<SelectorOp> element;  // the element to read, as StateAssignment::element; empty = 0
+    bool operator==(const SamplerStateParameter&) const = default;
+};
+// Sets `field` of `desc` from D3D9's number for it; a code D3D9 does not define leaves it as it was.
+void setSamplerStateFromD3D9(SamplerStateDesc& desc, SamplerStateField field, double number);
+
 // One texture unit a shader samples. For DX9 samplers the unit is the sampler register
 // (register(sN) or the order fxc would give); `GraphicsDevice.Textures[unit]` feeds it unless the
 // effect names a texture parameter.
@@ -107,6 +128,7 @@ struct SamplerBinding {
     std::string samplerName;       // effect sampler (DX9 `sampler S` / DX10 `SamplerState S`), may be empty
     std::string textureParameter;  // texture parameter feeding it (`Texture = <T>` / DX10 Texture2D), may be empty
     SamplerStateDesc state;        // the effect's sampler_state, applied at Apply()
+    std::vector<SamplerStateParameter> stateParameters;  // states read from parameters at Apply(), over `state`
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -253,13 +275,6 @@ enum class FillMode : std::uint8_t { Point, WireFrame, Solid };
 using StateValue = std::variant<bool, int, float, Blend, BlendFunction, CompareFunction, StencilOperation, CullMode,
                                 FillMode, std::array<float, 4>>;
 
-// An index the effect framework evaluates at Apply() over the current parameter values: a stack
-// program (`VSIndices[ShaderIndex]` is PushParameter ShaderIndex, IndexParameter VSIndices).
-struct SelectorOp {
-    enum class Kind : std::uint8_t { PushConstant, PushParameter, IndexParameter } kind = Kind::PushConstant;
-    int value = 0;  // constant, or parameter index (IndexParameter pops an index, pushes param[index])
-    bool operator==(const SelectorOp&) const = default;
-};
 
 struct StateAssignment {
     RenderState state = RenderState::AlphaBlendEnable;
