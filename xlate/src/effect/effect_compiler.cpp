@@ -42,6 +42,7 @@
 #include "rewrite/unused_sampler_arrays.h"
 #include "rewrite/sampler_array_elements.h"
 #include "rewrite/sampler_textures.h"
+#include "rewrite/keyword_case.h"
 #include "rewrite/literal_suffixes.h"
 #include "fx/render_states.h"
 #include "fx/shader_profile.h"
@@ -830,6 +831,13 @@ bool EffectBuilder::resolveShader(const FxShaderExpr& expr, ShaderStage stage, S
 
 void EffectBuilder::buildTechniques() {
     StateContext stateContext{syntax_, pre_.map, effect_.diagnostics, &effect_.parameters};
+    // Sampler states read from parameters (`MinFilter = <Filter>;`), now that the parameters are
+    // known; the shaders' sampler bindings carry them.
+    for (auto& es : rewritten_.samplers) {
+        es.stateParameters.clear();
+        for (const auto& a : es.parameterStates)
+            if (SamplerStateParameter p; resolveSamplerStateParameter(a, stateContext, p)) es.stateParameters.push_back(p);
+    }
     for (const auto& t : syntax_.techniques) {
         if (!options_.techniques.empty() &&
             std::find(options_.techniques.begin(), options_.techniques.end(), t.name) == options_.techniques.end())
@@ -1158,6 +1166,7 @@ CompiledEffect compileUncached(const std::string& source, const std::string& dis
     pre.text = samplerArraysAsElements(pre.text);  // sam[1] -> sam_fxport_1
     pre.text = samplerTexturesDeclared(pre.text);  // tex2D(sam, uv) beside tex.Sample(sam, uv)
     pre.text = longLiteralSuffixesDropped(pre.text);  // 3lu -> 3u
+    pre.text = typeKeywordsLowerCased(pre.text);      // Matrix m -> matrix m
 
     EffectSyntax syntax = parseEffect(pre.text, pre.map, isLooseShaderCompile(options));
     CompiledEffect effect;
