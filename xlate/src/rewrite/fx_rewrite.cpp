@@ -30,6 +30,7 @@
 #include "rewrite/componentwise_casts.h"
 #include "rewrite/mixed_shapes.h"
 #include "rewrite/array_arguments.h"
+#include "rewrite/overload_choices.h"
 #include "rewrite/intrinsic_overrides.h"
 #include "rewrite/scalar_intrinsics.h"
 
@@ -428,6 +429,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : scalarIntrinsicCalls(syntax)) edits.push_back(std::move(e));
     for (auto& e : mixedShapeConversions(syntax)) edits.push_back(std::move(e));
     for (auto& e : arrayArgumentOverloads(syntax)) edits.push_back(std::move(e));
+    for (auto& e : fxcOverloadChoices(syntax)) edits.push_back(std::move(e));
     for (auto& e : intrinsicOverrides(syntax)) edits.push_back(std::move(e));
     for (auto& e : spellOutPackMatrixPragmas(syntax, defaultMajority)) edits.push_back(std::move(e));
     out.sourceText = &text;
