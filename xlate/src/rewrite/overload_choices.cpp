@@ -112,7 +112,9 @@ private:
                 if (!chosen) return;
                 calls.push_back({i, chosen});
             }
-        if (calls.size() + overloads.size() != uses) return;  // a prototype, a compile statement ...
+        // A prototype, a compile statement ... name it too; an entry point is named by the caller
+        // of the compiler and never called (so a set without calls keeps its names).
+        if (calls.empty() || calls.size() + overloads.size() != uses) return;
         std::map<const FxFunction*, std::string> renamed;
         for (size_t k = 0; k < overloads.size(); ++k) {
             renamed[overloads[k]] = name + "_fxport_o" + std::to_string(k + 1);

@@ -12,9 +12,10 @@
 //   count widening (float -> float2)         worse than none.
 // Overloads compare by these steps in order: the one that needs a step the other does not loses.
 // Where a set of overloads takes half, double or a minimum-precision type, each definition is
-// renamed (`f` -> `f_fxport_o1`) and each call names the overload fxc picks. Only where every use
-// of the name is a definition or a call whose arguments' types are evident and that has one
-// winner; otherwise the set is left to glslang (and a tie to the checks, overload_ties.cpp).
+// renamed (`f` -> `f_fxport_o1`) and each call names the overload fxc picks. Only where the name
+// is called, and every use of it is a definition or a call whose arguments' types are evident
+// and that has one winner; otherwise the set is left to glslang (and a tie to the checks,
+// overload_ties.cpp).
 #pragma once
 
 #include <vector>
