@@ -166,6 +166,10 @@ std::vector<RejectCase> cases() {
         {"OverloadTieOfBool", "ps_4_0",
          "float f(int x) { return 1.0; }\nfloat f(float x) { return 2.0; }\nfloat4 main() : sv_target\n{\n    return f(true);\n}\n", 5, "ambiguous",
          "float f(int x) { return 1.0; }\nfloat f(float x) { return 2.0; }\nfloat4 main() : sv_target\n{\n    return f(1.5);\n}\n"},
+        // function-overload L44: an unsuffixed literal is int and uint alike; `3l` is an int.
+        {"OverloadTieOfIntLiteral", "ps_4_0",
+         "float func(int arg) { return 1.0; }\nfloat func(uint arg) { return 2.0; }\nfloat4 main() : sv_target\n{\n    return func(3);\n}\n", 5, "ambiguous",
+         "float func(int arg) { return 1.0; }\nfloat func(uint arg) { return 2.0; }\nfloat4 main() : sv_target\n{\n    return func(3l);\n}\n"},
         // function-overload: a float4 argument ties float4 and float2x2.
         {"OverloadTieOfVectorAndMatrix", "ps_4_0",
          "float4 func(float2x2 x) { return 2.0; }\nfloat4 func(float4 x) { return 1.0; }\nfloat4 main() : sv_target\n{\n    return func(float4(0, 0, 0, 0));\n}\n",

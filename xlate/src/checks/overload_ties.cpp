@@ -3,11 +3,11 @@
 // as many parameters tie for a call when every parameter where they differ ties for its argument:
 //  - a bool for int and float: neither is closer;
 //  - a vector of N components for the vector floatN and a matrix of N components (float2x2 for a
-//    float4): fxc converts between them as freely as it takes the vector as it is.
+//    float4): fxc converts between them as freely as it takes the vector as it is;
+//  - an unsuffixed integer literal (`3`, `-3`) for int and uint of one shape: its sign is
+//    unspecified (`3l` reaches the checks as `int(3)`, typed: literal_suffixes.h).
 // Judged where the arguments' types are evident (expression_types.h); the other ties fxc knows
-// are left to glslang (overload_ambiguity.cpp judges scalars and one-component vectors). Not
-// judged: an unsuffixed int literal for int and uint (fxc ties them too), as `3l` (an int to fxc)
-// reaches the checks as `3` (literal_suffixes.h).
+// are left to glslang (overload_ambiguity.cpp judges scalars and one-component vectors).
 #include <map>
 
 #include "hlsl/call_arguments.h"
@@ -66,9 +66,23 @@ private:
         if (!type || !type->isNumeric()) return false;
         const BasicType& t = type->basic;
         if (scalars && p.scalar == "int" && q.scalar == "float" && t.scalar == "bool" && !t.isMatrix && t.columns == 1) return true;
+        if (intLiteral(arg) && p.rows == q.rows && p.columns == q.columns && p.isMatrix == q.isMatrix && isInt(p.scalar) && isUint(q.scalar))
+            return true;
         const int n = t.rows * t.columns;
         return !t.isMatrix && !type->vector1 && t.columns > 1 && p.scalar == q.scalar && !p.isMatrix && p.columns == n && q.isMatrix &&
                q.rows > 1 && q.columns > 1 && q.rows * q.columns == n;
+    }
+
+    static bool isInt(const std::string& s) { return s == "int"; }
+    static bool isUint(const std::string& s) { return s == "uint" || s == "dword"; }
+
+    // `3`, `0x10`, `-3`: no suffix, no point, no exponent (`3.0` is float, `3u` uint).
+    bool intLiteral(std::pair<size_t, size_t> arg) const {
+        size_t at = arg.first + (arg.second == arg.first + 2 && t_[arg.first].is("-") ? 1 : 0);
+        if (at + 1 != arg.second || t_[at].kind != Token::Kind::Number) return false;
+        const std::string& s = t_[at].text;
+        const bool hex = s.size() > 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X');
+        return s.find_first_not_of(hex ? "0123456789abcdefABCDEFxX" : "0123456789") == std::string::npos;
     }
 
     std::string show(const FxFunction& f) const {

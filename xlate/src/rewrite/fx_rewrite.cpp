@@ -12,6 +12,7 @@
 #include "rewrite/refract_eta.h"
 #include "rewrite/tess_factor_intrinsics.h"
 #include "rewrite/compare_store.h"
+#include "rewrite/interlocked_values.h"
 #include "rewrite/mixed_dimension_outputs.h"
 #include "rewrite/switch_labels.h"
 #include "rewrite/local_state_blocks.h"
@@ -30,6 +31,7 @@
 #include "rewrite/componentwise_casts.h"
 #include "rewrite/mixed_shapes.h"
 #include "rewrite/array_arguments.h"
+#include "rewrite/overload_choices.h"
 #include "rewrite/intrinsic_overrides.h"
 #include "rewrite/scalar_intrinsics.h"
 
@@ -137,7 +139,9 @@ namespace {
 std::string applyEdits(const std::string& text, std::vector<TextEdit> edits) {
     // Outer edits first where two start together (`shared` blanked inside a blanked declaration);
     // an insertion (an empty range) before any edit that starts where it is inserted.
-    std::sort(edits.begin(), edits.end(), [](const TextEdit& a, const TextEdit& b) {
+    // Stable: two insertions at one place keep the order the rewrites gave them (a closing `)`
+    // of interlocked_values.h before compare_store.h's extra argument).
+    std::stable_sort(edits.begin(), edits.end(), [](const TextEdit& a, const TextEdit& b) {
         if (a.begin != b.begin) return a.begin < b.begin;
         if ((a.begin == a.end) != (b.begin == b.end)) return a.begin == a.end;
         return a.end > b.end;
@@ -409,6 +413,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : intrinsicsAsGlslangSpellsThem(syntax)) edits.push_back(std::move(e));
     for (auto& e : pow2PartitioningAsInteger(syntax)) edits.push_back(std::move(e));
     for (auto& e : tessFactorIntrinsics(syntax)) edits.push_back(std::move(e));
+    for (auto& e : interlockedValueConversions(syntax)) edits.push_back(std::move(e));  // before compare_store: see there
     for (auto& e : compareStoreAsExchange(syntax)) edits.push_back(std::move(e));
     for (auto& e : mixedDimensionOutputs(syntax)) edits.push_back(std::move(e));
     for (auto& e : switchLabelsAsIntegers(syntax)) edits.push_back(std::move(e));
@@ -428,6 +433,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : scalarIntrinsicCalls(syntax)) edits.push_back(std::move(e));
     for (auto& e : mixedShapeConversions(syntax)) edits.push_back(std::move(e));
     for (auto& e : arrayArgumentOverloads(syntax)) edits.push_back(std::move(e));
+    for (auto& e : fxcOverloadChoices(syntax)) edits.push_back(std::move(e));
     for (auto& e : intrinsicOverrides(syntax)) edits.push_back(std::move(e));
     for (auto& e : spellOutPackMatrixPragmas(syntax, defaultMajority)) edits.push_back(std::move(e));
     out.sourceText = &text;

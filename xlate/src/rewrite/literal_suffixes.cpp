@@ -36,7 +36,9 @@ std::string longLiteralSuffixesDropped(const std::string& text) {
         }
         if (!valid || (!longSuffix && !split) || kept.size() > 1 || suffix.size() > 2) continue;
         out.append(text, at, t.offset - at);
-        out += s.substr(0, digits) + kept;
+        // `3l` is an int to fxc, where an unsuffixed `3` is a literal that fits int and uint alike
+        // (an overload of each ties for it: overload_ties.cpp), so the type is spelled out.
+        out += kept.empty() ? "int(" + s.substr(0, digits) + ")" : s.substr(0, digits) + kept;
         at = end;
     }
     if (at == 0) return text;

@@ -1,8 +1,9 @@
 // Integer literals with fxc's `l` suffix (`3l`, `3lu`, `0x10L`): a 32-bit int (or uint with `u`)
 // to fxc; glslang's HLSL scanner stops at the `l` ("')' : Expected"; vkd3d's function-overload
 // pins `func(3lu)`; glslang's preprocessor even hands `3lu` on as `3 u`). The `l` is dropped on
-// the preprocessed text (`3 u` joined again), before the parser, so every
-// later rewrite sees `3`, `3u`, `0x10` (the line stays: only characters of the literal go).
+// the preprocessed text (`3 u` joined again), before the parser, so every later rewrite and check
+// sees `3u`, and `int(3)`, `int(0x10)` for an int: fxc's `3l` is typed, its `3` is a literal
+// that int and uint overloads tie for (the line stays: only the literal's text changes).
 #pragma once
 
 #include <string>
