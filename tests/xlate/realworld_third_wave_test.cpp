@@ -191,14 +191,16 @@ TEST(RealworldThirdWave, CcwStencilStatesWithAnUnderscore) {
 }
 
 // fxc reads `Matrix` and `Vector` as the type keywords (the DirectX SDK's Soldier.fx, vs_4_0:
-// `Matrix m = ...;`); a struct the source names `Vector` stays that struct.
+// `Matrix m = ...;`), though not as templates (vkd3d's type-names: `Vector<float, 2> v;` fails);
+// a struct the source names `Vector` stays that struct.
 TEST(RealworldThirdWave, TypeKeywordsInAnyCase) {
     CompiledEffect e = compileLoose(
         "float4x4 World;\n"
         "float4 main(float4 p : POSITION) : SV_Position {\n"
-        "    Matrix m = World * 2;\n    VECTOR<float, 4> v = p;\n    return mul(v, m);\n}\n",
+        "    Matrix m = World * 2;\n    VECTOR v = p;\n    return mul(v, m);\n}\n",
         "vs_4_0");
     EXPECT_FALSE(onlyShader(e).glsl.empty());
+    EXPECT_THROW(compileLoose("Vector<float, 2> v;\nfloat4 main() : SV_Target { return v.xyxy; }\n", "ps_4_0"), CompileError);
     EXPECT_NO_THROW(compileLoose("struct Vector { float4 xyzw; };\n"
                                  "float4 main(float4 p : POSITION) : SV_Position { Vector v; v.xyzw = p; return v.xyzw; }\n",
                                  "vs_4_0"));
