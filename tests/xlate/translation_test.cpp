@@ -435,18 +435,35 @@ technique T { pass P { ZWriteEnable = <ZWrites[Mode]>; CullMode = (Culls[2]); Ve
         EXPECT_NE(what.find("Bad.fx(3,24)"), std::string::npos) << what;
         EXPECT_NE(what.find("'Nope' is not a parameter"), std::string::npos) << what;
     }
-    // Sampler states are decoded once: one set from a parameter is refused by name, not called malformed.
+    // A sampler state from a parameter element is kept for Apply(): AddressU from Modes[0].
+    CompiledEffect sampled = compileEffectSource(
+        "int Modes[2];\ntexture Tex;\nsampler S = sampler_state { Texture = <Tex>; AddressU = <Modes[0]>; };\n"
+        "float4 PS(float2 uv : TEXCOORD0) : COLOR0 { return tex2D(S, uv); }\n"
+        "technique T { pass P { PixelShader = compile ps_2_0 PS(); } }\n",
+        "virtual/Sampler.fx", noCache());
+    const SamplerBinding& binding = sampled.shaders.at(0).samplers.at(0);
+    ASSERT_EQ(binding.stateParameters.size(), 1u);
+    EXPECT_EQ(binding.stateParameters[0].field, SamplerStateField::AddressU);
+    EXPECT_EQ(sampled.parameters.at(size_t(binding.stateParameters[0].parameter)).name, "Modes");
+    EXPECT_FALSE(binding.state.addressU.has_value());
+    // One the effect framework cannot read so (a border colour) is refused by name, not called malformed.
     try {
-        compileEffectSource("int Modes[2];\ntexture Tex;\nsampler S = sampler_state { Texture = <Tex>; AddressU = <Modes[0]>; };\n"
+        compileEffectSource("float4 Border;\ntexture Tex;\nsampler S = sampler_state { Texture = <Tex>; BorderColor = <Border>; };\n"
                             "float4 PS(float2 uv : TEXCOORD0) : COLOR0 { return tex2D(S, uv); }\n"
                             "technique T { pass P { PixelShader = compile ps_2_0 PS(); } }\n",
-                            "virtual/Sampler.fx", noCache());
-        FAIL() << "a sampler state from a parameter compiled";
+                            "virtual/Border.fx", noCache());
+        FAIL() << "a border colour from a parameter compiled";
     } catch (const CompileError& err) {
         std::string what = err.what();
-        EXPECT_NE(what.find("Sampler.fx(3,46): error FX1404: sampler state 'AddressU"), std::string::npos) << what;
+        EXPECT_NE(what.find("Border.fx(3,46): error FX1404: sampler state 'BorderColor"), std::string::npos) << what;
         EXPECT_NE(what.find("reads a parameter at Apply()"), std::string::npos) << what;
     }
+    // A sampler state naming no parameter is an error at the state.
+    EXPECT_THROW(compileEffectSource("texture Tex;\nsampler S = sampler_state { Texture = <Tex>; MinFilter = <Nope>; };\n"
+                                     "float4 PS(float2 uv : TEXCOORD0) : COLOR0 { return tex2D(S, uv); }\n"
+                                     "technique T { pass P { PixelShader = compile ps_2_0 PS(); } }\n",
+                                     "virtual/Nope.fx", noCache()),
+                 CompileError);
 }
 
 TEST(Translation, ParameterDrivenStatesReadD3D9Codes) {
