@@ -214,7 +214,8 @@ json toJson(const CompiledShader& s, const CompiledEffect& effect, bool withGlsl
     json samplers = json::array();
     for (const auto& b : s.samplers)
         samplers.push_back({{"unit", b.unit}, {"kind", kKind.of(b.kind)}, {"glslName", b.glslName}, {"sampler", b.samplerName},
-                            {"texture", b.textureParameter}, {"state", toJson(b.state)}});
+                            {"texture", b.textureParameter}, {"state", toJson(b.state)}, {"elements", b.elements},
+                            {"textureRegister", b.textureRegister}, {"samplerRegister", b.samplerRegister}});
     j["samplers"] = samplers;
     json read = json::array();
     for (int p : s.parametersRead) read.push_back(effect.parameters[static_cast<size_t>(p)].name);
@@ -512,6 +513,9 @@ CompiledEffect deserializeEffect(std::string_view text, const std::string& nameF
                 sb.samplerName = b.at("sampler");
                 sb.textureParameter = b.at("texture");
                 sb.state = samplerStateFrom(b.at("state"));
+                sb.elements = b.value("elements", 1);
+                sb.textureRegister = b.value("textureRegister", -1);
+                sb.samplerRegister = b.value("samplerRegister", -1);
                 cs.samplers.push_back(sb);
             }
             for (const auto& name : s.at("parametersRead")) cs.parametersRead.push_back(paramIndex.at(name.get<std::string>()));
