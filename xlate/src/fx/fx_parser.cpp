@@ -982,7 +982,12 @@ private:
                         for (size_t k = pos_ + 1; k < comma; ++k) r.profile += tok(k).text;
                     r.registerClass = tail.registerClass;
                     r.index = reg.size() > 1 ? tail.registerIndex : -1;
-                    if (reg.size() > 1) tail.registers.push_back(r);
+                    // register(ps, t[1]): a register written with its index in brackets.
+                    if (tok(after - 2).is("]") && after >= pos_ + 6 && tok(after - 4).is("[") && tok(after - 5).text.size() == 1) {
+                        r.registerClass = char(std::tolower(static_cast<unsigned char>(tok(after - 5).text[0])));
+                        r.index = std::atoi(tok(after - 3).text.c_str());
+                    }
+                    if (r.index >= 0) tail.registers.push_back(r);
                     // DX9 constant registers (register(c8), register(vs, c8)) place a constant in ONE
                     // stage's register file; the VS and PS files overlap, one GL uniform buffer cannot.
                     // Only SetVertexShaderConstantF-style code cares, which XNA's Effect never is.
