@@ -72,7 +72,9 @@ TEST(D3dRegisters, DeclaredArraysTakeAllTheirElements) {
     for (const auto& b : e.shaders.at(0).samplers) {
         if (b.textureParameter == "texs") texs = b.textureRegister;
         if (b.textureParameter == "tex") tex = b.textureRegister;
-        if (b.samplerName == "sam") EXPECT_EQ(b.samplerRegister, 2);
+        if (b.samplerName == "sam") {
+            EXPECT_EQ(b.samplerRegister, 2);
+        }
     }
     EXPECT_EQ(texs, 2);
     EXPECT_EQ(tex, 5);
@@ -87,8 +89,28 @@ TEST(D3dRegisters, ATextureMadeForASamplerComesFirst) {
     for (const auto& b : e.shaders.at(0).samplers) {
         if (b.textureParameter == "tex") declared = b.textureRegister;
         if (b.textureParameter.find("sam_fxport_texture") == 0) made = b.textureRegister;
-        if (b.samplerName == "sam") EXPECT_EQ(b.samplerRegister, 0);
+        if (b.samplerName == "sam") {
+            EXPECT_EQ(b.samplerRegister, 0);
+        }
     }
     EXPECT_EQ(made, 0);
     EXPECT_EQ(declared, 1);
+}
+
+// register-reservations-profile and -resources (fxc's probes in a ps_4_0 shader): a reservation
+// for another stage or profile binds nothing, ps_4_0's holds, and so does one of its own class only.
+TEST(D3dRegisters, ReservationsForOtherProfilesOrClassesAreIgnored) {
+    auto registerOf = [](const std::string& declaration) {
+        CompiledEffect e = compile(declaration, "return tex1.Load(int3(0, 0, 0));");
+        EXPECT_FALSE(e.hasErrors()) << declaration;
+        return binding(e, "", "tex1").textureRegister;
+    };
+    EXPECT_EQ(registerOf("Texture2D tex1 : register(vs, t1);\n"), 0);
+    EXPECT_EQ(registerOf("Texture2D tex1 : register(ps_4_1, t1);\n"), 0);
+    EXPECT_EQ(registerOf("Texture2D tex1 : register(ps, t1);\n"), 1);
+    EXPECT_EQ(registerOf("Texture2D tex1 : register(ps_4_1, t1) : register(ps_4_0, t2);\n"), 2);
+    EXPECT_EQ(registerOf("Texture2D tex1 : register(ps, t1) : register(ps_5_0, t2);\n"), 1);
+    EXPECT_EQ(registerOf("Texture2D tex1 : register(ps, t[1]);\n"), 1);
+    EXPECT_EQ(registerOf("Texture2D unused : register(s0);\nTexture2D tex1;\n"), 0);
+    EXPECT_EQ(registerOf("Texture2D unused[2][2] : register(t0);\nTexture2D tex1;\n"), 4);
 }
