@@ -138,13 +138,30 @@ ShaderBindings bindingsOf(const xlate::CompiledEffect& effect, int shader) {
         if (sb.registerClass == 't') bufferSlots.insert(sb.slot);
     std::map<std::string, int> tSlots = allocate(effect, RK::Texture, textures, {}, bufferSlots);
     std::map<std::string, int> sSlots = allocate(effect, RK::Sampler, samplers);
+    // xlate's registers (fxc's, for SM4+ shaders) where it gives them.
+    for (const auto& sb : s.samplers) {
+        const std::string t = sb.textureParameter.empty() ? sb.samplerName : sb.textureParameter;
+        if (sb.textureRegister >= 0) tSlots[t] = sb.textureRegister;
+        if (sb.samplerRegister >= 0) sSlots[sb.samplerName] = sb.samplerRegister;
+    }
     for (const auto& sb : s.samplers) {
         const std::string t = sb.textureParameter.empty() ? sb.samplerName : sb.textureParameter;
         SamplerUnit u;
         u.glUnit = sb.unit;
-        u.textureSlot = sb.textureParameter.empty() && sb.unit >= 0 ? sb.unit : tSlots[t];  // DX9: register(sN) is both
-        u.samplerSlot = sb.samplerName.empty() ? -1 : sb.textureParameter.empty() ? sb.unit : sSlots[sb.samplerName];
-        b.units.push_back(u);
+        u.textureSlot = sb.textureRegister >= 0                          ? sb.textureRegister
+                        : sb.textureParameter.empty() && sb.unit >= 0 ? sb.unit  // DX9: register(sN) is both
+                                                                      : tSlots[t];
+        u.samplerSlot = sb.samplerName.empty()        ? -1
+                        : sb.samplerRegister >= 0     ? sb.samplerRegister
+                        : sb.textureParameter.empty() ? sb.unit
+                                                      : sSlots[sb.samplerName];
+        // An array of textures: element k on GL unit + k, from t# + k.
+        for (int k = 0; k < std::max(sb.elements, 1); ++k) {
+            SamplerUnit e = u;
+            e.glUnit += k;
+            if (e.textureSlot >= 0) e.textureSlot += k;
+            b.units.push_back(e);
+        }
     }
     for (const auto& [name, slot] : tSlots) b.textures.push_back({name, slot, kinds[name]});
     for (const auto& [name, slot] : sSlots) b.samplers.push_back({name, slot, xlate::TextureKind::Texture2D});

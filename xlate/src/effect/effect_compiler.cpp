@@ -23,6 +23,7 @@
 #include "fx/constant_eval.h"
 #include "d3d9asm/d3d9_asm.h"
 #include "effect/effect_cache.h"
+#include "effect/d3d_registers.h"
 #include "checks/effect_profile_rules.h"
 #include "fxport/xlate/effect_file.h"
 #include "entry/entry_wrapper.h"
@@ -711,6 +712,12 @@ int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile
     shader.glsl = glsl.glsl;
     shader.inputs = glsl.inputs;
     shader.samplers = glsl.samplers;
+    if (profile.major >= 4) {  // D3D9's sampler registers are the units already
+        std::vector<int> bufferRegisters;
+        for (const StorageBinding& b : glsl.storage)
+            if (b.registerClass == 't') bufferRegisters.push_back(b.slot);
+        assignD3dRegisters(shader.samplers, glsl.samplerFirstUse, syntax_, bufferRegisters, profile);
+    }
     shader.uniformRangesRead = glsl.rangesRead;
     shader.uniformRangesLive = glsl.rangesLive;
     shader.outputTargets = glsl.outputTargets;

@@ -226,7 +226,8 @@ json toJson(const CompiledShader& s, const CompiledEffect& effect, bool withGlsl
     json samplers = json::array();
     for (const auto& b : s.samplers) {
         json sj{{"unit", b.unit}, {"kind", kKind.of(b.kind)}, {"glslName", b.glslName}, {"sampler", b.samplerName},
-                {"texture", b.textureParameter}, {"state", toJson(b.state)}};
+                {"texture", b.textureParameter}, {"state", toJson(b.state)}, {"elements", b.elements},
+                {"textureRegister", b.textureRegister}, {"samplerRegister", b.samplerRegister}};
         for (const auto& p : b.stateParameters) sj["stateParameters"].push_back(toJson(p));
         samplers.push_back(sj);
     }
@@ -531,6 +532,9 @@ CompiledEffect deserializeEffect(std::string_view text, const std::string& nameF
                     for (const auto& p : b["stateParameters"])
                         sb.stateParameters.push_back({kSamplerField.parse(p.at("field")), p.at("parameter").get<int>(),
                                                       p.contains("element") ? selectorFrom(p["element"]) : std::vector<SelectorOp>{}});
+                sb.elements = b.value("elements", 1);
+                sb.textureRegister = b.value("textureRegister", -1);
+                sb.samplerRegister = b.value("samplerRegister", -1);
                 cs.samplers.push_back(sb);
             }
             for (const auto& name : s.at("parametersRead")) cs.parametersRead.push_back(paramIndex.at(name.get<std::string>()));

@@ -72,6 +72,9 @@ std::optional<std::string> findEffectInconsistency(const CompiledEffect& e) {
         const long long lastParameter = static_cast<long long>(e.parameters.size()) - 1;
         for (const auto& b : s.samplers) {
             if (!within(b.unit, 0, kMaxUnit - 1)) return what + " binds a sampler to unit " + std::to_string(b.unit);
+            if (!within(b.elements, 1, kMaxUnit - b.unit) || !within(b.textureRegister, -1, 127) || !within(b.samplerRegister, -1, 15))
+                return what + " binds a sampler of " + std::to_string(b.elements) + " elements at unit " + std::to_string(b.unit) +
+                       " (registers t" + std::to_string(b.textureRegister) + ", s" + std::to_string(b.samplerRegister) + ")";
             for (const auto& sp : b.stateParameters) {
                 if (!within(sp.parameter, 0, lastParameter)) return what + " reads a sampler state from parameter #" + std::to_string(sp.parameter);
                 for (const auto& op : sp.element)

@@ -939,6 +939,7 @@ private:
         std::vector<Annotation> annotations;
         size_t annotationBegin = 0, annotationEnd = 0;
         size_t registerBegin = 0, registerEnd = 0;  // `: register(...)`, the last one
+        std::vector<FxRegister> registers;          // all of them
     };
     // The tokens of `packoffset(c4.w)` between the parentheses, as 4 * 4 + 3 floats; -1 where they
     // are not a c-register (glslang reports those).
@@ -974,6 +975,19 @@ private:
                     std::string reg = tok(after - 2).text;  // s0, t3, c4 ... (last argument)
                     if (reg.size() > 1) tail.registerIndex = std::atoi(reg.c_str() + 1);
                     if (reg.size() > 1) tail.registerClass = char(std::tolower(static_cast<unsigned char>(reg[0])));
+                    FxRegister r;  // register(ps_4_0, t1): the tokens before the comma are the profile
+                    size_t comma = pos_ + 1;
+                    while (comma + 1 < after && !tok(comma).is(",")) ++comma;
+                    if (comma + 1 < after)
+                        for (size_t k = pos_ + 1; k < comma; ++k) r.profile += tok(k).text;
+                    r.registerClass = tail.registerClass;
+                    r.index = reg.size() > 1 ? tail.registerIndex : -1;
+                    // register(ps, t[1]): a register written with its index in brackets.
+                    if (tok(after - 2).is("]") && after >= pos_ + 6 && tok(after - 4).is("[") && tok(after - 5).text.size() == 1) {
+                        r.registerClass = char(std::tolower(static_cast<unsigned char>(tok(after - 5).text[0])));
+                        r.index = std::atoi(tok(after - 3).text.c_str());
+                    }
+                    if (r.index >= 0) tail.registers.push_back(r);
                     // DX9 constant registers (register(c8), register(vs, c8)) place a constant in ONE
                     // stage's register file; the VS and PS files overlap, one GL uniform buffer cannot.
                     // Only SetVertexShaderConstantF-style code cares, which XNA's Effect never is.
@@ -1026,6 +1040,7 @@ private:
             Tail tail = parseDeclaratorTail();
             tex.semantic = tail.semantic;
             tex.explicitUnit = tail.registerIndex;
+            tex.registers = tail.registers;
             tex.annotations = tail.annotations;
             ignoreStateBlock(name);
             if (accept("=")) skipInitializer(name);
@@ -1052,6 +1067,7 @@ private:
             if (!tail.dims.empty())
                 fail(diag::kUnsupported, "sampler arrays ('" + name + "[]') are not supported", nameToken);
             s.explicitUnit = tail.registerIndex;
+            s.registers = tail.registers;
             if (accept("=")) {
                 if (!iequals(cur().text, "sampler_state"))
                     fail(diag::kSyntax, "expected 'sampler_state' after '" + name + " =', found '" + cur().text + "'", pos_);

@@ -64,6 +64,14 @@ struct FxStateObject {
     size_t token = 0;
 };
 
+// One `register([profile,] xN)` of an object, as written: which shaders it binds in is decided per
+// shader (d3d_registers.h).
+struct FxRegister {
+    std::string profile;  // "", "ps", "ps[5]", "ps_4_0" ...
+    char registerClass = 0;  // lower case
+    int index = -1;
+};
+
 // A sampler: DX9 `sampler S = sampler_state {...};` / `sampler2D S : register(s1);`, or DX10
 // `SamplerState S { ... };`.
 struct FxSampler {
@@ -71,6 +79,7 @@ struct FxSampler {
     std::string type;          // as written: sampler, sampler2D, samplerCUBE, SamplerState ...
     bool dx10 = false;         // SamplerState / SamplerComparisonState
     int explicitUnit = -1;     // register(sN)
+    std::vector<FxRegister> registers;  // every register() written
     std::vector<FxAssignment> states;
     TokenSpan declaration;     // the whole declaration incl. ';' (rewritten later)
     size_t token = 0;
@@ -81,6 +90,7 @@ struct FxTexture {
     std::string type;  // texture, texture2D, textureCUBE ... (DX9 objects), Texture2D ... (DX10)
     bool dx9Object = false;
     int explicitUnit = -1;  // register(tN)
+    std::vector<FxRegister> registers;  // every register() written
     std::string semantic;
     std::vector<Annotation> annotations;
     TokenSpan declaration;

@@ -401,6 +401,14 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
         for (const auto& s : effect.samplers)
             if (!s.dx10) usedUnits.insert(s.unit);
         for (const auto& [name, unit] : effect.textureUnits) usedUnits.insert(unit);
+        // The GL units this shader's DX9 samplers take: a DX10 pair must not share one (a sampler2D
+        // and a texture object on GL unit 0 would read the same texture).
+        std::set<int> dx9Units;
+        auto elementsOf = [&](const spirv_cross::SPIRType& type) {
+            int n = 1;
+            for (uint32_t a : type.array) n *= std::max<int>(1, static_cast<int>(a));
+            return n;
+        };
         for (const auto& img : res.sampled_images) {
             std::string name = compiler.get_name(img.id);
             bool combined = false;
@@ -417,9 +425,12 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
                     b.state = s.state;
                     b.stateParameters = s.stateParameters;
                 }
+            b.elements = elementsOf(compiler.get_type(img.type_id));
+            for (int k = 0; k < b.elements; ++k) dx9Units.insert(b.unit + k);
             compiler.unset_decoration(img.id, spv::DecorationDescriptorSet);
             compiler.set_decoration(img.id, spv::DecorationBinding, static_cast<uint32_t>(b.unit));
             out.samplers.push_back(b);
+            out.samplerFirstUse.push_back(img.id);
         }
         std::set<int> pairUnits;
         for (const auto& c : compiler.get_combined_image_samplers()) {
@@ -434,18 +445,27 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
                     b.state = s.state;
                     b.stateParameters = s.stateParameters;
                 }
+            b.elements = elementsOf(compiler.get_type_from_variable(c.image_id));
             auto unit = effect.textureUnits.find(image);
             int u = unit != effect.textureUnits.end() ? unit->second : 0;
-            if (pairUnits.count(u)) {  // the same texture with a second sampler: next free unit
+            auto runTaken = [&](int first, bool anyUsed) {
+                for (int k = 0; k < b.elements; ++k)
+                    if (pairUnits.count(first + k) || dx9Units.count(first + k) || (anyUsed && usedUnits.count(first + k))) return true;
+                return false;
+            };
+            // The same texture with a second sampler, or a unit a DX9 sampler of this shader has:
+            // the next free run of units.
+            if (runTaken(u, false)) {
                 u = 0;
-                while (usedUnits.count(u) || pairUnits.count(u)) ++u;
+                while (runTaken(u, true)) ++u;
             }
-            pairUnits.insert(u);
+            for (int k = 0; k < b.elements; ++k) pairUnits.insert(u + k);
             b.unit = u;
             b.glslName = "fxport_" + image + "_" + (sampler.empty() ? std::string("default") : sampler);
             compiler.set_name(c.combined_id, b.glslName);
             compiler.set_decoration(c.combined_id, spv::DecorationBinding, static_cast<uint32_t>(u));
             out.samplers.push_back(b);
+            out.samplerFirstUse.push_back(c.image_id);
         }
 
         // ---- interface locations

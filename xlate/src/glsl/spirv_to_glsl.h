@@ -53,6 +53,9 @@ struct GlslShader {
     std::string error;  // non-empty = failed
     std::vector<VertexInput> inputs;
     std::vector<SamplerBinding> samplers;
+    // Per sampler binding, the SPIR-V id of the variable it samples (the texture of a pair). glslang
+    // numbers globals as the code first uses them, so ids order the bindings by first use.
+    std::vector<std::uint32_t> samplerFirstUse;
     std::vector<UniformBlockLayout> blocks;  // the blocks this shader reads, as it declares them
     std::vector<std::string> membersRead;    // block members with active ranges (any block)
     std::vector<UniformRange> rangesRead;

@@ -6,11 +6,9 @@
 
 namespace fxport::xlate {
 
-namespace {
-
 // The registers an array takes: the product of its sizes (`Texture2D t[2][2]`: 4), read from the
 // tokens after its name; a size that is not a literal counts as 1.
-int elementsOf(const EffectSyntax& syntax, const FxTexture& t) {
+int textureElements(const EffectSyntax& syntax, const FxTexture& t) {
     int elements = 1;
     const auto& tokens = syntax.tokens;
     for (size_t i = t.token + 1; i + 2 < tokens.size() && tokens[i].is("[") && tokens[i + 2].is("]"); i += 3) {
@@ -20,20 +18,18 @@ int elementsOf(const EffectSyntax& syntax, const FxTexture& t) {
     return elements;
 }
 
-}  // namespace
-
 std::map<std::string, int> textureRegisters(const EffectSyntax& syntax) {
     std::map<std::string, int> units;
     std::set<int> taken;
     for (const auto& t : syntax.textures)
         if (!t.dx9Object && t.explicitUnit >= 0) {
-            const int elements = elementsOf(syntax, t);
+            const int elements = textureElements(syntax, t);
             units[t.name] = t.explicitUnit;
             for (int k = 0; k < elements; ++k) taken.insert(t.explicitUnit + k);
         }
     for (const auto& t : syntax.textures) {
         if (t.dx9Object || units.count(t.name)) continue;
-        const int elements = elementsOf(syntax, t);
+        const int elements = textureElements(syntax, t);
         int u = 0;
         auto runIsFree = [&](int first) {
             for (int k = 0; k < elements; ++k)

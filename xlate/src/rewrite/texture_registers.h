@@ -13,6 +13,9 @@
 
 namespace fxport::xlate {
 
+// The registers texture `t` takes: the product of its array sizes, 1 for a single texture.
+int textureElements(const EffectSyntax& syntax, const FxTexture& t);
+
 // The first t register of each DX10 texture object that gets one.
 std::map<std::string, int> textureRegisters(const EffectSyntax& syntax);
 

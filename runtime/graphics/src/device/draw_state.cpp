@@ -180,46 +180,49 @@ void GraphicsDevice::Impl::applyTexturesOf(const ShaderProgram* const* programs,
         const ShaderProgram* program = programs[p];
         if (!program) continue;
         if (!program->multisampledUnits) program->multisampledUnits = program->program ? backend->multisampledUnits(program->program) : 0u;
+        // An array of samplers (`Texture2D t[3]`) takes a unit per element, from sampler.unit on.
         for (const xlate::SamplerBinding& sampler : program->shader->samplers) {
-            int unit = sampler.unit;
-            if (unit < 0 || unit >= kMaxTextureSlots) continue;
-            Texture* texture = device.Textures[unit].get();
-            BackendObject name = texture ? texture->backendObject() : 0;
-            const bool readsSamples = ((*program->multisampledUnits >> unit) & 1u) != 0;
-            if (texture) {
-                if (&texture->device() != &device)  // its GL name means nothing in this device's context
-                    throw InvalidOperation("Draw: texture " + textureName(texture) + " in Textures[" + std::to_string(unit) +
-                                           "] was made by another GraphicsDevice; make it with this one");
-                for (const RenderTargetBinding& b : targets)
-                    if (b.RenderTarget == texture)
-                        throw InvalidOperation("Draw: texture " + textureName(texture) + " in Textures[" +
-                                               std::to_string(unit) + "] is also the current render target; " +
-                                               "set another render target (or clear the slot) before sampling it");
-                const bool cube = texture->kind() == Texture::Kind::TextureCube, volume = texture->kind() == Texture::Kind::Texture3D;
-                if (cube != (sampler.kind == xlate::TextureKind::TextureCube) || volume != (sampler.kind == xlate::TextureKind::Texture3D))
-                    throw InvalidOperation(std::string("Draw: ") + program->label + " samples a " + shapeName(sampler.kind) +
-                                           " texture at unit " + std::to_string(unit) + " but Textures[" + std::to_string(unit) +
-                                           "] holds a " + (cube ? "cube" : volume ? "3D" : "2D") + " texture " + textureName(texture));
-                if (texture->sampleCount() > 0 && !readsSamples)
-                    throw InvalidOperation(std::string("Draw: ") + program->label + " samples unit " + std::to_string(unit) + " as a Texture2D but Textures[" +
-                                           std::to_string(unit) + "] holds the multisampled texture " + textureName(texture) +
-                                           " (declare it Texture2DMS, or resolve it first)");
-                if (readsSamples && texture->sampleCount() == 0) name = sampleCopyOf(*texture);
-            }
-            if (shadow.unknown() || boundTextures[std::size_t(unit)] != name) {
-                backend->bindTexture(unit, name);
-                boundTextures[std::size_t(unit)] = name;
-            }
-            // The sampler-object lookup (a map keyed by the state's bytes) runs only when the
-            // slot's state differs from what is bound, not on every draw.
-            const SamplerState& wanted = texture && isIntegerFormat(texture->Format()) ? unfiltered(device.SamplerStates[unit])
-                                                                                         : device.SamplerStates[unit];
-            std::size_t u = std::size_t(unit);
-            if (shadow.unknown() || boundSamplers[u] == 0 || !(boundSamplerStates[u] == wanted)) {
-                BackendObject object = samplerFor(wanted);
-                if (shadow.unknown() || boundSamplers[u] != object) backend->bindSampler(unit, object);
-                boundSamplers[u] = object;
-                boundSamplerStates[u] = wanted;
+            for (int element = 0; element < std::max(sampler.elements, 1); ++element) {
+                int unit = sampler.unit + element;
+                if (unit < 0 || unit >= kMaxTextureSlots) continue;
+                Texture* texture = device.Textures[unit].get();
+                BackendObject name = texture ? texture->backendObject() : 0;
+                const bool readsSamples = ((*program->multisampledUnits >> unit) & 1u) != 0;
+                if (texture) {
+                    if (&texture->device() != &device)  // its GL name means nothing in this device's context
+                        throw InvalidOperation("Draw: texture " + textureName(texture) + " in Textures[" + std::to_string(unit) +
+                                               "] was made by another GraphicsDevice; make it with this one");
+                    for (const RenderTargetBinding& b : targets)
+                        if (b.RenderTarget == texture)
+                            throw InvalidOperation("Draw: texture " + textureName(texture) + " in Textures[" +
+                                                   std::to_string(unit) + "] is also the current render target; " +
+                                                   "set another render target (or clear the slot) before sampling it");
+                    const bool cube = texture->kind() == Texture::Kind::TextureCube, volume = texture->kind() == Texture::Kind::Texture3D;
+                    if (cube != (sampler.kind == xlate::TextureKind::TextureCube) || volume != (sampler.kind == xlate::TextureKind::Texture3D))
+                        throw InvalidOperation(std::string("Draw: ") + program->label + " samples a " + shapeName(sampler.kind) +
+                                               " texture at unit " + std::to_string(unit) + " but Textures[" + std::to_string(unit) +
+                                               "] holds a " + (cube ? "cube" : volume ? "3D" : "2D") + " texture " + textureName(texture));
+                    if (texture->sampleCount() > 0 && !readsSamples)
+                        throw InvalidOperation(std::string("Draw: ") + program->label + " samples unit " + std::to_string(unit) + " as a Texture2D but Textures[" +
+                                               std::to_string(unit) + "] holds the multisampled texture " + textureName(texture) +
+                                               " (declare it Texture2DMS, or resolve it first)");
+                    if (readsSamples && texture->sampleCount() == 0) name = sampleCopyOf(*texture);
+                }
+                if (shadow.unknown() || boundTextures[std::size_t(unit)] != name) {
+                    backend->bindTexture(unit, name);
+                    boundTextures[std::size_t(unit)] = name;
+                }
+                // The sampler-object lookup (a map keyed by the state's bytes) runs only when the
+                // slot's state differs from what is bound, not on every draw.
+                const SamplerState& wanted = texture && isIntegerFormat(texture->Format()) ? unfiltered(device.SamplerStates[unit])
+                                                                                             : device.SamplerStates[unit];
+                std::size_t u = std::size_t(unit);
+                if (shadow.unknown() || boundSamplers[u] == 0 || !(boundSamplerStates[u] == wanted)) {
+                    BackendObject object = samplerFor(wanted);
+                    if (shadow.unknown() || boundSamplers[u] != object) backend->bindSampler(unit, object);
+                    boundSamplers[u] = object;
+                    boundSamplerStates[u] = wanted;
+                }
             }
         }
     }

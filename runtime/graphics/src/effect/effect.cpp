@@ -121,6 +121,14 @@ std::vector<SamplerSlot> samplerSlotsOf(const xlate::CompiledShader& shader, con
             slot.fromParameters.push_back(std::move(from));
         }
         out.push_back(slot);
+        // An array of textures (`Texture2D t[3]`): its other elements sample the units after it,
+        // fed by GraphicsDevice.Textures (a texture parameter feeds element 0).
+        for (int k = 1; k < sampler.elements && sampler.unit + k < kMaxTextureSlots; ++k) {
+            SamplerSlot element = slot;
+            element.unit = sampler.unit + k;
+            element.textureParameter = SamplerSlot{}.textureParameter;
+            out.push_back(element);
+        }
     }
     return out;
 }

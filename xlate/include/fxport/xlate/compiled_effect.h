@@ -129,6 +129,14 @@ struct SamplerBinding {
     std::string textureParameter;  // texture parameter feeding it (`Texture = <T>` / DX10 Texture2D), may be empty
     SamplerStateDesc state;        // the effect's sampler_state, applied at Apply()
     std::vector<SamplerStateParameter> stateParameters;  // states read from parameters at Apply(), over `state`
+    // GL units unit .. unit + elements - 1: an array of samplers (`Texture2D t[3]`) binds one per
+    // element, consecutively.
+    int elements = 1;
+    // D3D10+ shaders: the t# and s# registers fxc gives this texture and sampler (element 0 of an
+    // array; d3d_registers.h has the rules), for a D3D11 front end; -1 where D3D has none (a Load
+    // without sampler) and in SM 1-3 shaders, whose sampler register is `unit`.
+    int textureRegister = -1;
+    int samplerRegister = -1;
 };
 
 // ---------------------------------------------------------------------------------------------
