@@ -19,6 +19,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -459,6 +460,25 @@ TEST_F(UntrustedEffectFile, ChangedByteFailsTheChecksum) {
     auto j = nlohmann::json::parse(file);
     j["uniformBlocks"][0]["size"] = 4096;
     EXPECT_NE(loadError(j.dump()).find("checksum"), std::string::npos);
+}
+
+// A sampler binding's array elements, registers and parameter-driven states are bounded too: the
+// runtime binds units unit..unit+elements-1 and reads the parameter at Apply().
+TEST_F(UntrustedEffectFile, SamplerBindingsOutOfRangeFailValidation) {
+    const std::string sampled = serializeEffect(compileEffectFile("tests/fixtures/runtime/ParameterStates.fx", noCache()));
+    auto withSampler = [&](const std::function<void(nlohmann::json&)>& change) {
+        auto j = nlohmann::json::parse(sampled);
+        for (auto& shader : j["shaders"])
+            if (!shader["samplers"].empty() && shader["samplers"][0].contains("stateParameters")) {
+                change(shader["samplers"][0]);
+                break;
+            }
+        return loadError(resealEffectFile(j.dump()));
+    };
+    EXPECT_NE(withSampler([](nlohmann::json& b) { b["elements"] = 1 << 30; }).find("binds a sampler of"), std::string::npos);
+    EXPECT_NE(withSampler([](nlohmann::json& b) { b["textureRegister"] = 100000; }).find("binds a sampler of"), std::string::npos);
+    EXPECT_NE(withSampler([](nlohmann::json& b) { b["stateParameters"][0]["parameter"] = 999; }).find("reads a sampler state from parameter"),
+              std::string::npos);
 }
 
 TEST_F(UntrustedEffectFile, ImpossibleValuesFailValidationEvenWhenResealed) {
