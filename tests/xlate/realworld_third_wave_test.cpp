@@ -149,6 +149,14 @@ TEST(RealworldThirdWave, EntryParameterSizedByAnExpression) {
     int blendWeights = 0;
     for (const auto& in : vs.inputs) blendWeights += in.semantic.rfind("BLENDWEIGHT", 0) == 0 ? 1 : 0;
     EXPECT_EQ(blendWeights, 2);  // BLENDWEIGHT1 and BLENDWEIGHT2
+    // Without the macro the size is no constant, and the error names the parameter as written.
+    o.defines.clear();
+    try {
+        compileEffectFile((dir / "prt.fx").string(), o);
+        ADD_FAILURE() << "compiled without NUM_PCA";
+    } catch (const CompileError& err) {
+        EXPECT_NE(std::string(err.what()).find("array 'w' has a size that is no constant"), std::string::npos) << err.what();
+    }
     fs::remove_all(dir);
 }
 

@@ -300,8 +300,12 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
         callArgs.push_back(local);
         bool isOut = has(p.modifiers, "out") || has(p.modifiers, "inout");
         bool isIn = !has(p.modifiers, "out");
-        if (isIn && !flat.flatten(p.type, local, p.semantic, p.arrayDims, p.modifiers, inputs)) break;
-        if (isOut && !flat.flatten(p.type, local, p.semantic, p.arrayDims, p.modifiers, outputs)) break;
+        if ((isIn && !flat.flatten(p.type, local, p.semantic, p.arrayDims, p.modifiers, inputs)) ||
+            (isOut && !flat.flatten(p.type, local, p.semantic, p.arrayDims, p.modifiers, outputs))) {
+            // The message names the wrapper's local (`a0.Verts`): say the parameter's own name.
+            if (size_t at = flat.error.find("'" + local); at != std::string::npos) flat.error.replace(at + 1, local.size(), p.name);
+            break;
+        }
     }
     if (!flat.error.empty()) {
         w.error = flat.error + " (in '" + entry.name + "')";
