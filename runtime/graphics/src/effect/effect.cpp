@@ -114,7 +114,7 @@ std::vector<SamplerSlot> samplerSlotsOf(const xlate::CompiledShader& shader, con
             if (it != e.parameterIndex.end()) slot.textureParameter = it->second;
         }
         slot.state = decodeSamplerState(sampler.state);
-        slot.literal = sampler.state;
+        if (!sampler.stateParameters.empty()) slot.literal = sampler.state;  // decoded again with them at Apply()
         for (const xlate::SamplerStateParameter& p : sampler.stateParameters) {
             SamplerStateFromParameter from{p.field, p.element};  // leaves the element index on the stack (none: 0)
             from.read.push_back({xlate::SelectorOp::Kind::IndexParameter, p.parameter});

@@ -121,7 +121,7 @@ void EffectPass::applyThis() {
             // Textures[n] directly (as the tutorials do) keep working.
             if (slot.textureParameter >= 0 && e.textures[std::size_t(slot.textureParameter)])
                 device.Textures[slot.unit] = e.textures[std::size_t(slot.textureParameter)];
-            device.SamplerStates[slot.unit] = currentSamplerState(slot, e).over(device.SamplerStates[slot.unit]);
+            device.SamplerStates[slot.unit] = samplerStateOver(slot, e, device.SamplerStates[slot.unit]);
         }
     }
     // A stage the pass leaves alone keeps its shader (D3D9). When that is one of this effect's (an

@@ -294,11 +294,11 @@ SamplerOverride decodeSamplerState(const xlate::SamplerStateDesc& e) {
     return o;
 }
 
-SamplerOverride currentSamplerState(const SamplerSlot& slot, const Effect::Impl& effect) {
-    if (slot.fromParameters.empty()) return slot.state;
+SamplerState samplerStateOver(const SamplerSlot& slot, const Effect::Impl& effect, const SamplerState& device) {
+    if (slot.fromParameters.empty()) return slot.state.over(device);
     xlate::SamplerStateDesc desc = slot.literal;
     for (const SamplerStateFromParameter& p : slot.fromParameters) xlate::setSamplerStateFromD3D9(desc, p.field, effect.evaluateSelector(p.read));
-    return decodeSamplerState(desc);
+    return decodeSamplerState(desc).over(device);
 }
 
 SamplerState SamplerOverride::over(SamplerState s) const {

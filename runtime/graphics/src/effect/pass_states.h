@@ -87,7 +87,8 @@ struct SamplerSlot {
 
 SamplerOverride decodeSamplerState(const xlate::SamplerStateDesc& desc);
 
-// The slot's sampler state now: `state`, or with states read from the effect's parameters.
-SamplerOverride currentSamplerState(const SamplerSlot& slot, const Effect::Impl& effect);
+// The slot's sampler state over `device`: `state`, decoded once, or, where states are read from
+// the effect's parameters, decoded from them now (only such slots pay for it at Apply()).
+SamplerState samplerStateOver(const SamplerSlot& slot, const Effect::Impl& effect, const SamplerState& device);
 
 }  // namespace fxport
