@@ -325,3 +325,35 @@ TEST_F(DdsTexture, VolumesAndFlatTexturesAreLoadedByTheirOwnClass) {
 
 }  // namespace
 }  // namespace fxport
+
+namespace fxport {
+namespace {
+
+// XNA's Dxt formats hold blocks: SetData/GetData exchange them as they are (GL stores them
+// compressed); a region must lie on the 4x4 grid; they are never render targets.
+TEST_F(DdsTexture, DxtTextureHoldsItsBlocksAsSet) {
+    GraphicsDevice& d = device();
+    Texture2D texture(d, 8, 4, false, SurfaceFormat::Dxt5);
+    std::vector<std::uint8_t> blocks(32);
+    for (std::size_t i = 0; i < blocks.size(); ++i) blocks[i] = std::uint8_t(i * 29 + 3);
+    texture.SetData(blocks);
+    EXPECT_EQ(texture.GetData<std::uint8_t>(), blocks);
+    // The second block alone (texels 4..7 of the four rows).
+    const std::vector<std::uint8_t> second(16, 0x42);
+    const Rectangle right(4, 0, 4, 4);
+    texture.SetData(0, &right, second.data(), second.size());
+    std::copy(second.begin(), second.end(), blocks.begin() + 16);
+    EXPECT_EQ(texture.GetData<std::uint8_t>(), blocks);
+    const Rectangle offGrid(2, 0, 4, 4);
+    EXPECT_THROW(texture.SetData(0, &offGrid, second.data(), second.size()), ArgumentError);
+    try {
+        texture.SetData(blocks.data(), 31);
+        ADD_FAILURE() << "31 bytes for two 16-byte blocks accepted";
+    } catch (const ArgumentError& e) {
+        EXPECT_NE(std::string(e.what()).find("needs 32 bytes"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(RenderTarget2D(d, 8, 8, false, SurfaceFormat::Dxt1, DepthFormat::None), ArgumentError);
+}
+
+}  // namespace
+}  // namespace fxport

@@ -113,6 +113,7 @@ public:
 
     void adoptD3DConventions() override { calls.push_back("adoptD3DConventions"); }
     int maxTextureSize() override { return 16384; }
+    int maxSamples() override { return 8; }
     void finish() override { calls.push_back("finish"); }
     GpuLimits measureLimits(const std::vector<SurfaceFormat>& formats, int size, int repeats) override {
         calls.push_back("measureLimits " + std::to_string(formats.size()) + " formats " + std::to_string(size) + " x" +
@@ -139,6 +140,7 @@ public:
     }
 
     bool isColorRenderable(SurfaceFormat format) override { return format != SurfaceFormat::Depth32; }
+    bool isSampleable(SurfaceFormat) override { return true; }
     const char* imageFormatName(SurfaceFormat format) override {
         return format == SurfaceFormat::Color ? "rgba8" : format == SurfaceFormat::Single ? "r32f" : "";
     }

@@ -42,7 +42,7 @@ HRESULT Context::Map(ID3D11Resource* pResource, UINT Subresource, D3D11_MAP MapT
         if (t->staging.empty())
             for (int level = 0; level < t->levels; ++level) t->staging.emplace_back(t->levelBytes(level), 0);
         t->mappedLevel = int(Subresource);
-        const UINT row = UINT(t->levelWidth(at.level) * bytesPerPixel(t->format));
+        const UINT row = UINT(rowBytes(t->format, t->levelWidth(at.level)));  // of 4x4 blocks for BC formats
         *out = D3D11_MAPPED_SUBRESOURCE{t->staging[Subresource].data(), row, UINT(t->levelBytes(at.level))};
         return succeed();
     }
@@ -93,10 +93,11 @@ void Context::UpdateSubresource(ID3D11Resource* pDst, UINT DstSubresource, const
         const int level = at.level;
         Rectangle r(0, 0, t->levelWidth(level), t->levelHeight(level));
         if (box) r = Rectangle(int(box->left), int(box->top), int(box->right) - int(box->left), int(box->bottom) - int(box->top));
-        const std::size_t row = std::size_t(r.Width) * std::size_t(bytesPerPixel(t->format));
+        const std::size_t row = rowBytes(t->format, r.Width);  // of 4x4 blocks for BC formats
         if (SrcRowPitch < row) return fail(E_INVALIDARG, "UpdateSubresource: SrcRowPitch = " + std::to_string(SrcRowPitch) + " < " + std::to_string(row));
-        std::vector<std::uint8_t> packed(row * std::size_t(std::max(r.Height, 0)));
-        for (int y = 0; y < r.Height; ++y)
+        const int rows = rowCount(t->format, r.Height);
+        std::vector<std::uint8_t> packed(row * std::size_t(rows));
+        for (int y = 0; y < rows; ++y)
             std::memcpy(&packed[std::size_t(y) * row], static_cast<const std::uint8_t*>(pSrcData) + std::size_t(y) * SrcRowPitch, row);
         writeSubresource(*t, at, &r, packed);
         return succeed();
@@ -212,11 +213,13 @@ void Context::CopySubresourceRegion(ID3D11Resource* pDst, UINT DstSubresource, U
             core::copyTextureRegion(*td->colour, dl, x, y, *ts->colour, sl, area);
             return succeed();
         }
-        // Staging or an array on one side or both: through the CPU (a GPU texture's whole subresource is read).
-        const int texel = bytesPerPixel(ts->format);
+        // Staging or an array on one side or both: through the CPU (a GPU texture's whole subresource is read),
+        // in units of 4x4 blocks for BC formats (whose boxes D3D puts on the block grid).
+        const int texel = bytesPerPixel(ts->format), block = isCompressedFormat(ts->format) ? 4 : 1;
         const std::vector<std::uint8_t> source = readSubresource(*ts, from);
-        std::vector<std::uint8_t> packed(std::size_t(area.Width) * std::size_t(area.Height) * std::size_t(texel));
-        copyRows(source, ts->levelWidth(sl), area.X, area.Y, packed, area.Width, 0, 0, area.Width, area.Height, texel);
+        const int across = int(rowBytes(ts->format, area.Width)) / texel, down = rowCount(ts->format, area.Height);
+        std::vector<std::uint8_t> packed(std::size_t(across) * std::size_t(down) * std::size_t(texel));
+        copyRows(source, int(rowBytes(ts->format, ts->levelWidth(sl))) / texel, area.X / block, area.Y / block, packed, across, 0, 0, across, down, texel);
         const Rectangle target(x, y, area.Width, area.Height);
         writeSubresource(*td, to, &target, packed);
         return succeed();

@@ -181,6 +181,12 @@ public:
         predicate_ = p;
         predicateValue_ = value;
     }
+    HRESULT CheckFormatSupport(DXGI_FORMAT format, UINT* support) override { return device_->CheckFormatSupport(format, support); }
+    HRESULT CheckMultisampleQualityLevels(DXGI_FORMAT format, UINT samples, UINT* levels) override {
+        return device_->CheckMultisampleQualityLevels(format, samples, levels);
+    }
+    UINT GetCreationFlags() override { return device_->GetCreationFlags(); }
+    HRESULT GetDeviceRemovedReason() override { return S_OK; }
     void GetPredication(ID3D10Predicate** pp, BOOL* value) override {
         if (pp) {
             *pp = predicate_.Get();

@@ -281,6 +281,9 @@ D3D11_SAMPLER_DESC defaultSamplerDesc();
 // --- formats (formats.cpp)
 const char* formatName(DXGI_FORMAT format);
 bool textureFormat(DXGI_FORMAT format, SurfaceFormat& out);
+// D3D's limits on a block-compressed texture (BC1-BC7): sampled only -- no render-target,
+// depth-stencil or unordered-access binding, one sample, no generated mips. S_OK for other formats.
+HRESULT checkCompressedUse(const std::string& at, const D3D11_TEXTURE2D_DESC& d, SurfaceFormat format);
 bool depthFormat(DXGI_FORMAT format, DepthFormat& out);
 // --- vertex formats (vertex_formats.cpp)
 bool vertexFormat(DXGI_FORMAT format, VertexFormat& out);
@@ -389,6 +392,12 @@ public:
     HRESULT CreateDeferredContext(UINT ContextFlags, ID3D11DeviceContext** ppDeferredContext) override;
     void GetImmediateContext(ID3D11DeviceContext** ppImmediateContext) override;
     D3D_FEATURE_LEVEL GetFeatureLevel() override { return D3D_FEATURE_LEVEL_11_0; }
+    HRESULT CheckFormatSupport(DXGI_FORMAT Format, UINT* pFormatSupport) override;  // format_support.cpp
+    HRESULT CheckMultisampleQualityLevels(DXGI_FORMAT Format, UINT SampleCount, UINT* pNumQualityLevels) override;
+    HRESULT CheckFeatureSupport(D3D11_FEATURE Feature, void* pFeatureSupportData, UINT FeatureSupportDataSize) override;
+    UINT GetCreationFlags() override { return creationFlags; }
+    HRESULT GetDeviceRemovedReason() override { return S_OK; }
+    UINT creationFlags = 0;  // D3D11CreateDevice's Flags
 
     GraphicsDevice& core() { return *core_; }
     Context& context() { return *context_; }

@@ -208,7 +208,7 @@ HRESULT Device::CreateDepthStencilState(const D3D11_DEPTH_STENCIL_DESC* d, ID3D1
     return createState<DepthStencilState>(this, d, pp, &decodeDepthStencil, "CreateDepthStencilState");
 }
 
-HRESULT D3D11CreateDevice(void* pAdapter, D3D_DRIVER_TYPE DriverType, void* Software, UINT, const D3D_FEATURE_LEVEL* pFeatureLevels,
+HRESULT D3D11CreateDevice(void* pAdapter, D3D_DRIVER_TYPE DriverType, void* Software, UINT Flags, const D3D_FEATURE_LEVEL* pFeatureLevels,
                           UINT FeatureLevels, UINT SDKVersion, ID3D11Device** ppDevice, D3D_FEATURE_LEVEL* pFeatureLevel,
                           ID3D11DeviceContext** ppImmediateContext) {
     if (pAdapter || Software) return fail(E_INVALIDARG, "D3D11CreateDevice: pAdapter and Software must be null (fxport has one GL driver)");
@@ -224,6 +224,7 @@ HRESULT D3D11CreateDevice(void* pAdapter, D3D_DRIVER_TYPE DriverType, void* Soft
     if (!ppDevice && !ppImmediateContext) return S_FALSE;  // D3D: the arguments are valid
     return guarded("D3D11CreateDevice", [&] {
         auto* device = new Device();
+        device->creationFlags = Flags;
         if (ppImmediateContext) device->GetImmediateContext(ppImmediateContext);
         if (ppDevice) *ppDevice = device;
         else device->Release();  // the context holds it

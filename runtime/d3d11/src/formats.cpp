@@ -69,6 +69,31 @@ const char* formatName(DXGI_FORMAT f) {
     case DXGI_FORMAT_R8_TYPELESS: return "DXGI_FORMAT_R8_TYPELESS";
     case DXGI_FORMAT_B8G8R8A8_TYPELESS: return "DXGI_FORMAT_B8G8R8A8_TYPELESS";
     case DXGI_FORMAT_B8G8R8A8_UNORM_SRGB: return "DXGI_FORMAT_B8G8R8A8_UNORM_SRGB";
+    case DXGI_FORMAT_R9G9B9E5_SHAREDEXP: return "DXGI_FORMAT_R9G9B9E5_SHAREDEXP";
+    case DXGI_FORMAT_BC1_TYPELESS: return "DXGI_FORMAT_BC1_TYPELESS";
+    case DXGI_FORMAT_BC1_UNORM: return "DXGI_FORMAT_BC1_UNORM";
+    case DXGI_FORMAT_BC1_UNORM_SRGB: return "DXGI_FORMAT_BC1_UNORM_SRGB";
+    case DXGI_FORMAT_BC2_TYPELESS: return "DXGI_FORMAT_BC2_TYPELESS";
+    case DXGI_FORMAT_BC2_UNORM: return "DXGI_FORMAT_BC2_UNORM";
+    case DXGI_FORMAT_BC2_UNORM_SRGB: return "DXGI_FORMAT_BC2_UNORM_SRGB";
+    case DXGI_FORMAT_BC3_TYPELESS: return "DXGI_FORMAT_BC3_TYPELESS";
+    case DXGI_FORMAT_BC3_UNORM: return "DXGI_FORMAT_BC3_UNORM";
+    case DXGI_FORMAT_BC3_UNORM_SRGB: return "DXGI_FORMAT_BC3_UNORM_SRGB";
+    case DXGI_FORMAT_BC4_TYPELESS: return "DXGI_FORMAT_BC4_TYPELESS";
+    case DXGI_FORMAT_BC4_UNORM: return "DXGI_FORMAT_BC4_UNORM";
+    case DXGI_FORMAT_BC4_SNORM: return "DXGI_FORMAT_BC4_SNORM";
+    case DXGI_FORMAT_BC5_TYPELESS: return "DXGI_FORMAT_BC5_TYPELESS";
+    case DXGI_FORMAT_BC5_UNORM: return "DXGI_FORMAT_BC5_UNORM";
+    case DXGI_FORMAT_BC5_SNORM: return "DXGI_FORMAT_BC5_SNORM";
+    case DXGI_FORMAT_B5G6R5_UNORM: return "DXGI_FORMAT_B5G6R5_UNORM";
+    case DXGI_FORMAT_B5G5R5A1_UNORM: return "DXGI_FORMAT_B5G5R5A1_UNORM";
+    case DXGI_FORMAT_BC6H_TYPELESS: return "DXGI_FORMAT_BC6H_TYPELESS";
+    case DXGI_FORMAT_BC6H_UF16: return "DXGI_FORMAT_BC6H_UF16";
+    case DXGI_FORMAT_BC6H_SF16: return "DXGI_FORMAT_BC6H_SF16";
+    case DXGI_FORMAT_BC7_TYPELESS: return "DXGI_FORMAT_BC7_TYPELESS";
+    case DXGI_FORMAT_BC7_UNORM: return "DXGI_FORMAT_BC7_UNORM";
+    case DXGI_FORMAT_BC7_UNORM_SRGB: return "DXGI_FORMAT_BC7_UNORM_SRGB";
+    case DXGI_FORMAT_B4G4R4A4_UNORM: return "DXGI_FORMAT_B4G4R4A4_UNORM";
     }
     return "(a DXGI_FORMAT fxport does not know)";
 }
@@ -113,8 +138,43 @@ bool textureFormat(DXGI_FORMAT f, SurfaceFormat& out) {
     case DXGI_FORMAT_R8_UNORM: out = SurfaceFormat::R8; return true;
     case DXGI_FORMAT_R8G8B8A8_SNORM: out = SurfaceFormat::NormalizedByte4; return true;
     case DXGI_FORMAT_R8G8_SNORM: out = SurfaceFormat::NormalizedByte2; return true;
+    case DXGI_FORMAT_R16_SNORM: out = SurfaceFormat::R16SNorm; return true;
+    case DXGI_FORMAT_R16G16_SNORM: out = SurfaceFormat::Rg16SNorm; return true;
+    case DXGI_FORMAT_R16G16B16A16_SNORM: out = SurfaceFormat::Rgba16SNorm; return true;
+    case DXGI_FORMAT_R10G10B10A2_UINT: out = SurfaceFormat::Rgb10A2UInt; return true;
+    case DXGI_FORMAT_R11G11B10_FLOAT: out = SurfaceFormat::Rg11B10Float; return true;
+    case DXGI_FORMAT_R9G9B9E5_SHAREDEXP: out = SurfaceFormat::Rgb9E5Float; return true;
+    // XNA's 16-bit formats are D3D's B5G6R5/B5G5R5A1/B4G4R4A4 bit for bit.
+    case DXGI_FORMAT_B5G6R5_UNORM: out = SurfaceFormat::Bgr565; return true;
+    case DXGI_FORMAT_B5G5R5A1_UNORM: out = SurfaceFormat::Bgra5551; return true;
+    case DXGI_FORMAT_B4G4R4A4_UNORM: out = SurfaceFormat::Bgra4444; return true;
+    // Block-compressed (the _TYPELESS ones are not mapped: fxport views a texture in its own format)
+    case DXGI_FORMAT_BC1_UNORM: out = SurfaceFormat::Dxt1; return true;
+    case DXGI_FORMAT_BC2_UNORM: out = SurfaceFormat::Dxt3; return true;
+    case DXGI_FORMAT_BC3_UNORM: out = SurfaceFormat::Dxt5; return true;
+    case DXGI_FORMAT_BC1_UNORM_SRGB: out = SurfaceFormat::Dxt1SRgb; return true;
+    case DXGI_FORMAT_BC2_UNORM_SRGB: out = SurfaceFormat::Dxt3SRgb; return true;
+    case DXGI_FORMAT_BC3_UNORM_SRGB: out = SurfaceFormat::Dxt5SRgb; return true;
+    case DXGI_FORMAT_BC4_UNORM: out = SurfaceFormat::Bc4; return true;
+    case DXGI_FORMAT_BC4_SNORM: out = SurfaceFormat::Bc4SNorm; return true;
+    case DXGI_FORMAT_BC5_UNORM: out = SurfaceFormat::Bc5; return true;
+    case DXGI_FORMAT_BC5_SNORM: out = SurfaceFormat::Bc5SNorm; return true;
+    case DXGI_FORMAT_BC6H_UF16: out = SurfaceFormat::Bc6hUFloat; return true;
+    case DXGI_FORMAT_BC6H_SF16: out = SurfaceFormat::Bc6hSFloat; return true;
+    case DXGI_FORMAT_BC7_UNORM: out = SurfaceFormat::Bc7; return true;
+    case DXGI_FORMAT_BC7_UNORM_SRGB: out = SurfaceFormat::Bc7SRgb; return true;
     default: return false;
     }
+}
+
+HRESULT checkCompressedUse(const std::string& at, const D3D11_TEXTURE2D_DESC& d, SurfaceFormat format) {
+    if (!isCompressedFormat(format)) return S_OK;
+    const UINT drawn = D3D11_BIND_RENDER_TARGET | D3D11_BIND_DEPTH_STENCIL | D3D11_BIND_UNORDERED_ACCESS;
+    const std::string with = " with Format = " + std::string(formatName(d.Format)) + ": block-compressed textures are only sampled";
+    if (d.BindFlags & drawn) return fail(E_INVALIDARG, at + "BindFlags = " + std::to_string(d.BindFlags) + with);
+    if (d.SampleDesc.Count > 1) return fail(E_INVALIDARG, at + "SampleDesc.Count = " + std::to_string(d.SampleDesc.Count) + with);
+    if (d.MiscFlags & D3D11_RESOURCE_MISC_GENERATE_MIPS) return fail(E_INVALIDARG, at + "MiscFlags = D3D11_RESOURCE_MISC_GENERATE_MIPS" + with);
+    return S_OK;
 }
 
 bool depthFormat(DXGI_FORMAT f, DepthFormat& out) {

@@ -137,7 +137,7 @@ HRESULT Device::CreateBuffer(const D3D11_BUFFER_DESC* pDesc, const D3D11_SUBRESO
 Texture::Texture(Device* device, const D3D11_TEXTURE2D_DESC& d) : Object(device), desc(d) {}
 
 std::size_t Texture::levelBytes(int level) const {
-    return std::size_t(levelWidth(level)) * std::size_t(levelHeight(level)) * std::size_t(bytesPerPixel(format));
+    return regionBytes(format, levelWidth(level), levelHeight(level));
 }
 
 HRESULT Device::CreateTexture2D(const D3D11_TEXTURE2D_DESC* pDesc, const D3D11_SUBRESOURCE_DATA* pInitialData,
@@ -194,6 +194,7 @@ HRESULT Device::CreateTexture2D(const D3D11_TEXTURE2D_DESC* pDesc, const D3D11_S
                                                              "): not a " + (depthTarget ? "depth" : "texture") +
                                                              " format fxport supports (docs/API.md lists them)");
     if (depthTarget && pInitialData) return fail(E_INVALIDARG, at + "BindFlags has DEPTH_STENCIL and pInitialData is given");
+    if (HRESULT hr = checkCompressedUse(at, d, surface); FAILED(hr)) return hr;
     if ((d.MiscFlags & D3D11_RESOURCE_MISC_GENERATE_MIPS) && !depthTarget && isIntegerFormat(surface))
         return fail(E_INVALIDARG, at + "MiscFlags = " + std::to_string(d.MiscFlags) + " (D3D11_RESOURCE_MISC_GENERATE_MIPS) with Format = " +
                                       formatName(d.Format) + ": integer texels cannot be filtered into smaller levels");
@@ -228,12 +229,12 @@ HRESULT Device::CreateTexture2D(const D3D11_TEXTURE2D_DESC* pDesc, const D3D11_S
                 const int level = sub % t.levels, face = sub / t.levels;
                 const D3D11_SUBRESOURCE_DATA& s = pInitialData[sub];
                 if (!s.pSysMem) return fail(E_INVALIDARG, "CreateTexture2D: pInitialData[" + std::to_string(sub) + "].pSysMem is null");
-                const std::size_t row = std::size_t(t.levelWidth(level)) * std::size_t(bytesPerPixel(surface));
+                const std::size_t row = rowBytes(surface, t.levelWidth(level));  // of 4x4 blocks for BC formats
                 if (s.SysMemPitch < row)
                     return fail(E_INVALIDARG, "CreateTexture2D: pInitialData[" + std::to_string(sub) + "].SysMemPitch = " +
                                                   std::to_string(s.SysMemPitch) + ", less than a row (" + std::to_string(row) + " bytes)");
                 std::vector<std::uint8_t> packed(t.levelBytes(level));
-                for (int y = 0; y < t.levelHeight(level); ++y)
+                for (int y = 0; y < rowCount(surface, t.levelHeight(level)); ++y)
                     std::memcpy(&packed[std::size_t(y) * row], static_cast<const std::uint8_t*>(s.pSysMem) + std::size_t(y) * s.SysMemPitch, row);
                 if (!t.staging.empty()) t.staging[std::size_t(level)] = std::move(packed);
                 else if (t.cube) t.cube->setData(CubeMapFace(face), packed.data(), packed.size());

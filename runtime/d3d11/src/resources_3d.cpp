@@ -80,8 +80,8 @@ HRESULT Device::CreateTexture3D(const D3D11_TEXTURE3D_DESC* pDesc, const D3D11_S
             std::vector<std::uint8_t> packed;
             for (int level = 0; level < int(volume->desc.MipLevels); ++level) {
                 const int w = std::max(1, int(d.Width) >> level), h = std::max(1, int(d.Height) >> level), z = std::max(1, int(d.Depth) >> level);
-                const std::size_t row = std::size_t(w) * std::size_t(bytesPerPixel(format));
-                if (HRESULT hr = packLevel(pInitialData[level], level, row, h, z, packed); FAILED(hr)) return hr;
+                const std::size_t row = rowBytes(format, w);  // of 4x4 blocks for BC formats
+                if (HRESULT hr = packLevel(pInitialData[level], level, row, rowCount(format, h), z, packed); FAILED(hr)) return hr;
                 volume->texels->setData(level, packed.data(), packed.size());
             }
         }

@@ -56,7 +56,7 @@ HRESULT arrayFormat(const D3D11_TEXTURE2D_DESC& d, bool hasData, SurfaceFormat& 
         format = family->sampled;
         return S_OK;
     }
-    if (textureFormat(d.Format, format)) return S_OK;
+    if (textureFormat(d.Format, format)) return checkCompressedUse(at, d, format);
     return fail(d.Format == DXGI_FORMAT_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
                 at + "Format = " + formatName(d.Format) + " (" + std::to_string(d.Format) + "): not an array texture format fxport supports (docs/API.md lists them)");
 }
@@ -86,11 +86,11 @@ HRESULT checkArrayDesc(const D3D11_TEXTURE2D_DESC& d, bool hasData, SurfaceForma
 HRESULT packSubresource(const Texture& t, const D3D11_SUBRESOURCE_DATA& s, UINT sub, Subresource at, std::vector<std::uint8_t>& packed) {
     const std::string where = "CreateTexture2D: pInitialData[" + std::to_string(sub) + "].";
     if (!s.pSysMem) return fail(E_INVALIDARG, where + "pSysMem is null");
-    const std::size_t row = std::size_t(t.levelWidth(at.level)) * std::size_t(bytesPerPixel(t.format));
+    const std::size_t row = rowBytes(t.format, t.levelWidth(at.level));  // of 4x4 blocks for BC formats
     if (s.SysMemPitch < row)
         return fail(E_INVALIDARG, where + "SysMemPitch = " + std::to_string(s.SysMemPitch) + ", less than a row (" + std::to_string(row) + " bytes)");
     packed.resize(t.levelBytes(at.level));
-    for (int y = 0; y < t.levelHeight(at.level); ++y)
+    for (int y = 0; y < rowCount(t.format, t.levelHeight(at.level)); ++y)
         std::memcpy(&packed[std::size_t(y) * row], static_cast<const std::uint8_t*>(s.pSysMem) + std::size_t(y) * s.SysMemPitch, row);
     return S_OK;
 }

@@ -34,9 +34,11 @@ void writeSubresource(Texture& t, Subresource s, const Rectangle* area, const st
         level = packed;
         return;
     }
-    const std::size_t texel = std::size_t(bytesPerPixel(t.format)), row = std::size_t(area->Width) * texel;
-    for (int y = 0; y < area->Height; ++y)
-        std::memcpy(&level[(std::size_t(area->Y + y) * std::size_t(t.levelWidth(s.level)) + std::size_t(area->X)) * texel], &packed[std::size_t(y) * row], row);
+    // In units of 4x4 blocks for BC formats (an area on the block grid).
+    const std::size_t texel = std::size_t(bytesPerPixel(t.format)), row = rowBytes(t.format, area->Width);
+    const std::size_t levelRow = rowBytes(t.format, t.levelWidth(s.level)), block = isCompressedFormat(t.format) ? 4 : 1;
+    for (int y = 0; y < rowCount(t.format, area->Height); ++y)
+        std::memcpy(&level[(std::size_t(area->Y) / block + std::size_t(y)) * levelRow + std::size_t(area->X) / block * texel], &packed[std::size_t(y) * row], row);
 }
 
 }  // namespace fxport::d3d11

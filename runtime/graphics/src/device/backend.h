@@ -177,6 +177,7 @@ public:
     // first vertex.
     virtual void adoptD3DConventions() = 0;
     virtual int maxTextureSize() = 0;
+    virtual int maxSamples() = 0;  // of a multisampled colour target
     virtual void finish() = 0;  // waits until the GPU has done everything submitted
 
     // Buffers. allocateBuffer fixes the size once, from `initial` (null: undefined); `streaming`
@@ -191,9 +192,12 @@ public:
                             std::size_t destinationOffset, std::size_t bytes) = 0;
 
     // Textures: 2D or cube, `levels` levels of `format` (D3D9's reads of missing channels applied).
-    // Texel transfers are in the format's own layout (bytesPerPixel), face -1 for a 2D texture;
+    // Texel transfers are in the format's own layout (rowBytes x rowCount: blocks for a compressed
+    // format, whose areas lie on the 4-texel grid or reach the level's edge), face -1 for a 2D texture;
     // readTextureFloats reads RGBA floats.
     virtual bool isColorRenderable(SurfaceFormat format) = 0;
+    // Whether textures of `format` can be made and sampled (the compressed families are extensions in GL).
+    virtual bool isSampleable(SurfaceFormat format) = 0;
     // The image-unit format qualifier a shader declares for `format` ("rgba8"), "" when images cannot hold it.
     virtual const char* imageFormatName(SurfaceFormat format) = 0;
     virtual BackendObject createTexture(bool cube, SurfaceFormat format, int levels, int width, int height) = 0;

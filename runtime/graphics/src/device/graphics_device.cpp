@@ -225,6 +225,11 @@ GraphicsDevice* GraphicsDevice::current() { return liveDevices().empty() ? nullp
 std::string GraphicsDevice::rendererName() const { return context_ ? context_->rendererName() : "no context (a device over a test backend)"; }
 
 int GraphicsDevice::maxTextureSize() const { return impl_->backend->maxTextureSize(); }
+bool GraphicsDevice::supportsTextureFormat(SurfaceFormat format) const { return impl_->isSampleable(format); }
+bool GraphicsDevice::supportsRenderTargetFormat(SurfaceFormat format) const {
+    return impl_->isSampleable(format) && impl_->backend->isColorRenderable(format);
+}
+int GraphicsDevice::maxSampleCount() const { return impl_->backend->maxSamples(); }
 
 GpuObjectCounts GraphicsDevice::liveGpuObjects() const { return impl_->live; }
 
@@ -627,17 +632,33 @@ void GraphicsDevice::SaveBackBufferAsPng(const std::string& path) const { impl_-
 
 // --- GL object bookkeeping
 
+// The core formats are GL 4.5's; the compressed families (S3TC above all) are extensions, asked once.
+bool GraphicsDevice::Impl::isSampleable(SurfaceFormat format) {
+    std::int8_t& known = sampleableFormats[std::size_t(format)];
+    if (known == 0) known = backend->isSampleable(format) ? 1 : -1;
+    return known > 0;
+}
+
+void GraphicsDevice::Impl::requireSampleable(SurfaceFormat format) {
+    if (!isSampleable(format))
+        throw ArgumentError(std::string("the graphics driver cannot make textures of SurfaceFormat::") + surfaceFormatName(format) +
+                           (isCompressedFormat(format) ? " (its block compression is a GL extension this driver lacks)" : ""));
+}
+
 BackendObject GraphicsDevice::Impl::createTexture(bool cube, SurfaceFormat format, int levels, int width, int height) {
+    requireSampleable(format);
     const BackendObject name = backend->createTexture(cube, format, levels, width, height);
     ++live.textures;
     return name;
 }
 BackendObject GraphicsDevice::Impl::createVolumeTexture(SurfaceFormat format, int levels, int width, int height, int depth) {
+    requireSampleable(format);
     const BackendObject name = backend->createVolumeTexture(format, levels, width, height, depth);
     ++live.textures;
     return name;
 }
 BackendObject GraphicsDevice::Impl::createArrayTexture(SurfaceFormat format, int levels, int width, int height, int layers) {
+    requireSampleable(format);
     const BackendObject name = backend->createArrayTexture(format, levels, width, height, layers);
     ++live.textures;
     return name;

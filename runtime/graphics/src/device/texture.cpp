@@ -50,9 +50,22 @@ void Texture::releaseGpuObjects() {
 
 int Texture::levelWidth(int base, int level) const { return std::max(1, base >> level); }
 
+// D3D's rule for compressed formats, which GL shares: a region starts on the 4-texel grid and ends on
+// it or at the level's edge.
+void Texture::checkBlockGrid(int x, int y, int w, int h, int level) const {
+    if (!isCompressedFormat(format_)) return;
+    const Rectangle size = deviceImpl(device()).backend->textureLevelSize(name_, level);
+    const bool xEnds = (x + w) % 4 == 0 || x + w == size.Width, yEnds = (y + h) % 4 == 0 || y + h == size.Height;
+    if (x % 4 != 0 || y % 4 != 0 || !xEnds || !yEnds)
+        throw ArgumentError(describe() + ": SetData region (" + std::to_string(x) + "," + std::to_string(y) + "," + std::to_string(w) + "," +
+                            std::to_string(h) + ") of " + surfaceFormatName(format_) +
+                            " is not on the 4x4 block grid (corners at multiples of 4 or the level's edge)");
+}
+
 void Texture::writeTexels(int face, int level, int x, int y, int w, int h, const void* data, std::size_t bytes, std::size_t elementSize) {
     if (samples_ > 0) throw InvalidOperation(describe() + ": SetData on a multisampled texture (its samples are written by draws only)");
-    std::size_t expected = std::size_t(w) * std::size_t(h) * std::size_t(bytesPerPixel(format_));
+    checkBlockGrid(x, y, w, h, level);
+    std::size_t expected = regionBytes(format_, w, h);
     if (bytes != expected) {
         // In the caller's units: SetData(data, count) counts elements, not bytes.
         const std::string unit = elementSize > 1 ? " elements of " + std::to_string(elementSize) + " bytes" : " bytes";
@@ -114,7 +127,7 @@ void Texture2D::setData(int level, const Rectangle* rect, const void* data, std:
 void Texture2D::getData(int level, void* data, std::size_t bytes) const {
     throwIfDisposed("GetData");
     int w = levelWidth(width_, level), h = levelWidth(height_, level);
-    std::size_t expected = std::size_t(w) * std::size_t(h) * std::size_t(bytesPerPixel(format_));
+    std::size_t expected = regionBytes(format_, w, h);
     if (bytes != expected)
         throw ArgumentError(describe() + ": GetData buffer has " + std::to_string(bytes) + " bytes, level " +
                             std::to_string(level) + " (" + std::to_string(w) + "x" + std::to_string(h) + " " +
@@ -205,7 +218,7 @@ void TextureCube::setData(CubeMapFace face, const void* data, std::size_t bytes,
 
 void TextureCube::getData(CubeMapFace face, void* data, std::size_t bytes) const {
     throwIfDisposed("GetData");
-    std::size_t expected = std::size_t(size_) * std::size_t(size_) * std::size_t(bytesPerPixel(format_));
+    std::size_t expected = regionBytes(format_, size_, size_);
     if (bytes != expected)
         throw ArgumentError(describe() + ": GetData buffer has " + std::to_string(bytes) + " bytes, a face has " +
                             std::to_string(expected));

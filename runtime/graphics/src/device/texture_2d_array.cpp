@@ -61,7 +61,7 @@ Texture2D::Texture2D(Texture2DArray& array, int layer, int level, int layers)
                 array.layerView("a Texture2D over layers", layer, level, layers)) {}
 
 std::size_t Texture2DArray::layerBytes(int level) const {
-    return std::size_t(levelWidth(level)) * std::size_t(levelHeight(level)) * std::size_t(bytesPerPixel(format_));
+    return regionBytes(format_, levelWidth(level), levelHeight(level));
 }
 
 void Texture2DArray::checkSubresource(const char* call, int level, int layer) const {

@@ -33,8 +33,7 @@ Texture3D::Texture3D(fxport::GraphicsDevice& device, int width, int height, int 
 Texture3D::~Texture3D() { disposeFromDestructor(); }
 
 std::size_t Texture3D::levelBytes(int level) const {
-    return std::size_t(levelWidth(width_, level)) * std::size_t(levelWidth(height_, level)) * std::size_t(levelWidth(depth_, level)) *
-           std::size_t(bytesPerPixel(format_));
+    return regionBytes(format_, levelWidth(width_, level), levelWidth(height_, level)) * std::size_t(levelWidth(depth_, level));
 }
 
 void Texture3D::checkLevel(const char* call, int level) const {

@@ -25,7 +25,7 @@ void TextureCube::getData(CubeMapFace face, int level, void* data, std::size_t b
     if (level < 0 || level >= levels_)
         throw ArgumentError(describe() + ": GetData level " + std::to_string(level) + " (the cube has " + std::to_string(levels_) + " levels)");
     const int size = levelWidth(size_, level);
-    const std::size_t expected = std::size_t(size) * std::size_t(size) * std::size_t(bytesPerPixel(format_));
+    const std::size_t expected = regionBytes(format_, size, size);
     if (bytes != expected)
         throw ArgumentError(describe() + ": GetData buffer has " + std::to_string(bytes) + " bytes, level " + std::to_string(level) + " of a face has " +
                             std::to_string(expected));

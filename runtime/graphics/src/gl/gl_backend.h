@@ -53,6 +53,7 @@ public:
 
     void adoptD3DConventions() override;
     int maxTextureSize() override;
+    int maxSamples() override;
     void finish() override { glFinish(); }
 
     BackendObject createBuffer() override;
@@ -70,6 +71,7 @@ public:
     }
 
     bool isColorRenderable(SurfaceFormat format) override;
+    bool isSampleable(SurfaceFormat format) override;
     const char* imageFormatName(SurfaceFormat format) override;
     BackendObject createTexture(bool cube, SurfaceFormat format, int levels, int width, int height) override;
     BackendObject createBufferTexture(BackendObject buffer, SurfaceFormat format, std::size_t offset, std::size_t bytes) override;

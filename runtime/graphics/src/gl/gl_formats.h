@@ -14,6 +14,7 @@ struct GlTextureFormat {
     int channels;           // 1..4 (for PNG export)
     bool isFloat;           // float or half texels (PNG export clamps)
     bool isInteger;         // *_INTEGER client formats; sampled unfiltered
+    bool isCompressed = false;  // 4x4 blocks of bytesPerPixel bytes (format and type unused)
 };
 
 const GlTextureFormat& glFormat(SurfaceFormat format);

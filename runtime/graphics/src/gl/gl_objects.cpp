@@ -48,6 +48,12 @@ void GlBackend::adoptD3DConventions() {
     glProvokingVertex(GL_FIRST_VERTEX_CONVENTION);
 }
 
+int GlBackend::maxSamples() {
+    GLint samples = 0;
+    glGetIntegerv(GL_MAX_COLOR_TEXTURE_SAMPLES, &samples);  // multisampled targets are textures
+    return samples;
+}
+
 int GlBackend::maxTextureSize() {
     GLint size = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &size);
@@ -65,6 +71,12 @@ void GlBackend::allocateBuffer(BackendObject buffer, std::size_t bytes, const vo
 }
 
 bool GlBackend::isColorRenderable(SurfaceFormat format) { return detail::isColorRenderable(format); }
+
+bool GlBackend::isSampleable(SurfaceFormat format) {
+    GLint supported = GL_FALSE;
+    glGetInternalformativ(GL_TEXTURE_2D, detail::glFormat(format).internalFormat, GL_INTERNALFORMAT_SUPPORTED, 1, &supported);
+    return supported == GL_TRUE;
+}
 
 const char* GlBackend::imageFormatName(SurfaceFormat format) {
     // Alpha8 is stored as red with a swizzle: an image load would not read what a sample does.

@@ -42,7 +42,13 @@ void GlBackend::writeTexture(BackendObject texture, SurfaceFormat format, int fa
                              const void* data) {
     const detail::GlTextureFormat& f = detail::glFormat(format);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    if (face < 0)
+    if (f.isCompressed) {
+        const auto bytes = GLsizei(regionBytes(format, area.Width, area.Height));
+        if (face < 0)
+            glCompressedTextureSubImage2D(texture, level, area.X, area.Y, area.Width, area.Height, f.internalFormat, bytes, data);
+        else
+            glCompressedTextureSubImage3D(texture, level, area.X, area.Y, face, area.Width, area.Height, 1, f.internalFormat, bytes, data);
+    } else if (face < 0)
         glTextureSubImage2D(texture, level, area.X, area.Y, area.Width, area.Height, f.format, f.type, data);
     else
         glTextureSubImage3D(texture, level, area.X, area.Y, face, area.Width, area.Height, 1, f.format, f.type, data);
@@ -51,7 +57,11 @@ void GlBackend::writeTexture(BackendObject texture, SurfaceFormat format, int fa
 void GlBackend::writeVolume(BackendObject texture, SurfaceFormat format, int level, int width, int height, int depth, const void* data) {
     const detail::GlTextureFormat& f = detail::glFormat(format);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTextureSubImage3D(texture, level, 0, 0, 0, width, height, depth, f.format, f.type, data);
+    if (f.isCompressed)
+        glCompressedTextureSubImage3D(texture, level, 0, 0, 0, width, height, depth, f.internalFormat,
+                                      GLsizei(regionBytes(format, width, height) * std::size_t(depth)), data);
+    else
+        glTextureSubImage3D(texture, level, 0, 0, 0, width, height, depth, f.format, f.type, data);
 }
 
 void GlBackend::copySamples(BackendObject source, BackendObject destination, int width, int height) {
@@ -77,7 +87,11 @@ void GlBackend::copySamples(BackendObject source, BackendObject destination, int
 void GlBackend::readTexture(BackendObject texture, SurfaceFormat format, int face, int level, std::size_t bytes, void* out) {
     const detail::GlTextureFormat& f = detail::glFormat(format);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    if (face < 0) {
+    if (f.isCompressed) {
+        if (face < 0) return glGetCompressedTextureImage(texture, level, GLsizei(bytes), out);
+        const Rectangle size = textureLevelSize(texture, level);
+        glGetCompressedTextureSubImage(texture, level, 0, 0, face, size.Width, size.Height, 1, GLsizei(bytes), out);
+    } else if (face < 0) {
         glGetTextureImage(texture, level, f.format, f.type, GLsizei(bytes), out);
     } else {
         // A cube's face or an array's layer: the level's width x height at depth `face`.

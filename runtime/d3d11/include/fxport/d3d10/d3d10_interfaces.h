@@ -119,6 +119,11 @@ public:
     virtual HRESULT CreatePredicate(const D3D10_QUERY_DESC* pPredicateDesc, ID3D10Predicate** ppPredicate) = 0;
     virtual void SetPredication(ID3D10Predicate* pPredicate, BOOL PredicateValue) = 0;
     virtual void GetPredication(ID3D10Predicate** ppPredicate, BOOL* pPredicateValue) = 0;
+    // As ID3D11Device's (D3D10_FORMAT_SUPPORT has D3D11_FORMAT_SUPPORT's bits).
+    virtual HRESULT CheckFormatSupport(DXGI_FORMAT Format, UINT* pFormatSupport) = 0;
+    virtual HRESULT CheckMultisampleQualityLevels(DXGI_FORMAT Format, UINT SampleCount, UINT* pNumQualityLevels) = 0;
+    virtual UINT GetCreationFlags() = 0;
+    virtual HRESULT GetDeviceRemovedReason() = 0;
 
     // fxport: the D3D11 device and immediate context underneath (no reference added), for what
     // D3D10 does on resources (Map) and for mixing the two APIs.

@@ -268,6 +268,13 @@ public:
     virtual HRESULT CreateDeferredContext(UINT ContextFlags, ID3D11DeviceContext** ppDeferredContext) = 0;
     virtual void GetImmediateContext(ID3D11DeviceContext** ppImmediateContext) = 0;
     virtual D3D_FEATURE_LEVEL GetFeatureLevel() = 0;
+    // What the GL driver underneath can make of a format (D3D11_FORMAT_SUPPORT bits) and with how
+    // many samples (1 quality level, or 0 when not); the features of a feature level 11_0 device.
+    virtual HRESULT CheckFormatSupport(DXGI_FORMAT Format, UINT* pFormatSupport) = 0;
+    virtual HRESULT CheckMultisampleQualityLevels(DXGI_FORMAT Format, UINT SampleCount, UINT* pNumQualityLevels) = 0;
+    virtual HRESULT CheckFeatureSupport(D3D11_FEATURE Feature, void* pFeatureSupportData, UINT FeatureSupportDataSize) = 0;
+    virtual UINT GetCreationFlags() = 0;
+    virtual HRESULT GetDeviceRemovedReason() = 0;  // S_OK: a GL device is never removed under the program
 };
 
 // Makes a device and its immediate context. Headless: the device draws into textures on the

@@ -262,6 +262,12 @@ public:
     platform::GraphicsContext& context() { return *context_; }
     std::string rendererName() const;
     int maxTextureSize() const;
+    // fxport: what the driver can make, for D3D's CheckFormatSupport / CheckMultisampleQualityLevels:
+    // textures of `format` (the compressed ones are GL extensions), render targets of it, and the
+    // most samples a multisampled target has.
+    bool supportsTextureFormat(SurfaceFormat format) const;
+    bool supportsRenderTargetFormat(SurfaceFormat format) const;
+    int maxSampleCount() const;
     DepthStorageStatistics depthStorageStatistics() const;
     GpuObjectCounts liveGpuObjects() const;
     ClearStatistics clearStatistics() const;

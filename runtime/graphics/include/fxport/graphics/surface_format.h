@@ -2,6 +2,7 @@
 // the table below is the public view of what a texel holds.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 namespace fxport {
@@ -45,6 +46,21 @@ enum class SurfaceFormat : std::uint8_t {
     // not colour render targets.
     Depth24Stencil8,  // 24-bit unorm depth and 8-bit stencil (SetData/GetData: one uint32, depth in the high 24 bits)
     Depth16,          // 16-bit unorm depth (SetData/GetData: uint16)
+    // Block-compressed texels, stored and sampled compressed (XNA's Dxt1/Dxt3/Dxt5 are D3D's
+    // BC1/BC2/BC3). They hold 4x4-texel blocks of 8 bytes (Dxt1, Bc4) or 16: SetData/GetData exchange
+    // whole blocks, rows of blocks top first, and a rectangle's corners lie on the 4-texel grid or the
+    // level's edge, as in D3D. Sampled only: never render targets or storage.
+    Dxt1, Dxt3, Dxt5,
+    Dxt1SRgb, Dxt3SRgb, Dxt5SRgb,  // the same, sRGB-encoded (D3D's BC1-3 _UNORM_SRGB)
+    Bc4, Bc4SNorm,                 // one channel (r, 0, 0, 1)
+    Bc5, Bc5SNorm,                 // two channels (r, g, 0, 1): normal maps
+    Bc6hUFloat, Bc6hSFloat,        // HDR (r, g, b, 1) halves
+    Bc7, Bc7SRgb,
+    // More of D3D10+'s uncompressed formats:
+    Rg11B10Float,  // packed unsigned floats, 11-11-10 bits (D3D's R11G11B10_FLOAT, an HDR target)
+    Rgb9E5Float,   // a shared 5-bit exponent (D3D's R9G9B9E5_SHAREDEXP): sampled only
+    R16SNorm, Rg16SNorm, Rgba16SNorm,
+    Rgb10A2UInt,   // D3D's R10G10B10A2_UINT
 };
 
 enum class DepthFormat : std::uint8_t {
@@ -58,8 +74,17 @@ enum class DepthFormat : std::uint8_t {
 // PreserveContents (and PlatformContents, treated alike) keeps them. See graphics_device.h.
 enum class RenderTargetUsage : std::uint8_t { DiscardContents, PreserveContents, PlatformContents };
 
-// Bytes of one texel (what SetData/GetData exchange per pixel).
+// Bytes of one texel (what SetData/GetData exchange per pixel); of one 4x4 block for the
+// block-compressed formats.
 int bytesPerPixel(SurfaceFormat format);
+// Whether texels come in 4x4 blocks (Dxt1 ... Bc7SRgb).
+bool isCompressedFormat(SurfaceFormat format);
+// The layout SetData/GetData and D3D's pitches use, for any format (a plain format's "block" is one
+// texel): the bytes of one row of blocks `width` texels wide, the rows of blocks `height` texels
+// high, and the bytes of a width x height region (rowBytes * rowCount).
+std::size_t rowBytes(SurfaceFormat format, int width);
+int rowCount(SurfaceFormat format, int height);
+std::size_t regionBytes(SurfaceFormat format, int width, int height);
 // Whether texels are integers (R32UInt ... Rgba8SInt): sampled unfiltered, cleared with integers.
 bool isIntegerFormat(SurfaceFormat format);
 // "Color", "HalfVector4" ... for messages.

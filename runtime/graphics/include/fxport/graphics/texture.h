@@ -40,6 +40,8 @@ protected:
     void writeTexels(int face, int level, int x, int y, int w, int h, const void* data, std::size_t bytes, std::size_t elementSize = 1);
     void readTexels(int face, int level, void* data, std::size_t bytes) const;
     int levelWidth(int base, int level) const;
+    // Throws ArgumentError when a compressed format's region is off its 4x4 block grid.
+    void checkBlockGrid(int x, int y, int w, int h, int level) const;
 
     std::uint32_t name_ = 0;
     int samples_ = 0;
@@ -75,7 +77,7 @@ public:
     }
     template <class T> void GetData(T* data, std::size_t count) const { getData(0, data, sizeof(T) * count); }
     template <class T> std::vector<T> GetData() const {
-        std::vector<T> out(std::size_t(width_) * std::size_t(height_) * std::size_t(bytesPerPixel(format_)) / sizeof(T));
+        std::vector<T> out(regionBytes(format_, width_, height_) / sizeof(T));
         GetData(out.data(), out.size());
         return out;
     }
