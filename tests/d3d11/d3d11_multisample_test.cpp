@@ -195,5 +195,88 @@ TEST(D3D11Multisample, RefusedDescriptionsCopiesAndResolvesNameTheField) {
     EXPECT_NE(lastError().find("Format = DXGI_FORMAT_R8G8B8A8_UNORM"), std::string::npos) << lastError();
 }
 
+// A 4x multisampled swap chain drawn with a 4x depth buffer (what a D3D11 game asks for when it
+// turns MSAA on): three full-screen triangles at depths 0.5 (red), 0.7 (blue, behind it: hidden
+// everywhere) and 0.3 (green, the left half only, in front). The resolved back buffer is green on
+// the left and red on the right, which only a depth test of every sample gives.
+TEST(D3D11Multisample, MultisampledSwapChainAndDepthBufferTestDepthPerSample) {
+    DXGI_SWAP_CHAIN_DESC sd;
+    sd.BufferCount = 1;
+    sd.BufferDesc.Width = sd.BufferDesc.Height = 8;
+    sd.BufferDesc.Format = DXGI_FORMAT_R8G8B8A8_UNORM;
+    sd.BufferUsage = DXGI_USAGE_RENDER_TARGET_OUTPUT;
+    sd.SampleDesc.Count = kSamples;
+    Device d;
+    d.device.Reset();
+    d.context.Reset();
+    ComPtr<IDXGISwapChain> swapChain;
+    ASSERT_EQ(D3D11CreateDeviceAndSwapChain(nullptr, D3D_DRIVER_TYPE_HARDWARE, nullptr, 0, nullptr, 0, D3D11_SDK_VERSION, &sd,
+                                            swapChain.GetAddressOf(), d.device.GetAddressOf(), nullptr, d.context.GetAddressOf()),
+              S_OK)
+        << lastError();
+    UINT levels = 0;
+    ASSERT_EQ(d.device->CheckMultisampleQualityLevels(DXGI_FORMAT_D24_UNORM_S8_UINT, kSamples, &levels), S_OK);
+    EXPECT_EQ(levels, 1u);
+    ComPtr<ID3D11Texture2D> backBuffer, depth;
+    ASSERT_EQ(swapChain->GetBuffer(0, IID_ID3D11Texture2D, reinterpret_cast<void**>(backBuffer.GetAddressOf())), S_OK) << lastError();
+    D3D11_TEXTURE2D_DESC desc;
+    backBuffer->GetDesc(&desc);
+    EXPECT_EQ(desc.SampleDesc.Count, kSamples);
+    desc.Format = DXGI_FORMAT_D24_UNORM_S8_UINT;
+    desc.BindFlags = D3D11_BIND_DEPTH_STENCIL;
+    ASSERT_EQ(d.device->CreateTexture2D(&desc, nullptr, depth.GetAddressOf()), S_OK) << lastError();
+    ComPtr<ID3D11RenderTargetView> rtv;
+    ComPtr<ID3D11DepthStencilView> dsv;
+    ASSERT_EQ(d.device->CreateRenderTargetView(backBuffer.Get(), nullptr, rtv.GetAddressOf()), S_OK) << lastError();
+    ASSERT_EQ(d.device->CreateDepthStencilView(depth.Get(), nullptr, dsv.GetAddressOf()), S_OK) << lastError();
+    D3D11_DEPTH_STENCIL_VIEW_DESC dsvDesc;
+    dsv->GetDesc(&dsvDesc);
+    EXPECT_EQ(dsvDesc.ViewDimension, D3D11_DSV_DIMENSION_TEXTURE2DMS);
+    const FLOAT black[4] = {0, 0, 0, 1};
+    d.context->ClearRenderTargetView(rtv.Get(), black);
+    d.context->ClearDepthStencilView(dsv.Get(), D3D11_CLEAR_DEPTH, 1.0f, 0);
+    d.context->OMSetRenderTargets(1, rtv.GetAddressOfConst(), dsv.Get());
+    d.context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+    struct Layer { const char* z; const char* colour; float width; };
+    for (const Layer& layer : {Layer{"0.5", "float4(1, 0, 0, 1)", 8}, Layer{"0.7", "float4(0, 0, 1, 1)", 8}, Layer{"0.3", "float4(0, 1, 0, 1)", 4}}) {
+        const std::string text = std::string(R"(
+float4 vs(uint id : SV_VertexID) : SV_Position {
+    float2 corner = float2((id << 1) & 2, id & 2);
+    return float4(corner * float2(2, -2) + float2(-1, 1), )") + layer.z + R"(, 1);
+}
+float4 ps() : SV_Target { return )" + layer.colour + "; }\n";
+        ComPtr<ID3DBlob> vsCode = compile(text, "vs", "vs_5_0"), psCode = compile(text, "ps", "ps_5_0");
+        ASSERT_TRUE(vsCode && psCode);
+        ComPtr<ID3D11VertexShader> vs;
+        ComPtr<ID3D11PixelShader> ps;
+        ASSERT_EQ(d.device->CreateVertexShader(vsCode->GetBufferPointer(), vsCode->GetBufferSize(), nullptr, vs.GetAddressOf()), S_OK);
+        ASSERT_EQ(d.device->CreatePixelShader(psCode->GetBufferPointer(), psCode->GetBufferSize(), nullptr, ps.GetAddressOf()), S_OK);
+        D3D11_VIEWPORT viewport;
+        viewport.Width = layer.width;
+        viewport.Height = 8;
+        d.context->RSSetViewports(1, &viewport);
+        d.context->VSSetShader(vs.Get(), nullptr, 0);
+        d.context->PSSetShader(ps.Get(), nullptr, 0);
+        d.context->Draw(3, 0);  // D3D's default depth state: test LESS, write
+        EXPECT_EQ(lastError(), "");
+    }
+    EXPECT_EQ(swapChain->Present(0, 0), S_OK);
+    D3D11_TEXTURE2D_DESC singleDesc = desc;
+    singleDesc.Format = DXGI_FORMAT_R8G8B8A8_UNORM;
+    singleDesc.SampleDesc.Count = 1;
+    singleDesc.BindFlags = D3D11_BIND_RENDER_TARGET;
+    ComPtr<ID3D11Texture2D> single;
+    ASSERT_EQ(d.device->CreateTexture2D(&singleDesc, nullptr, single.GetAddressOf()), S_OK) << lastError();
+    d.context->ResolveSubresource(single.Get(), 0, backBuffer.Get(), 0, DXGI_FORMAT_R8G8B8A8_UNORM);
+    EXPECT_EQ(lastError(), "");
+    const auto pixels = readPixels(d, single.Get());
+    ASSERT_EQ(pixels.size(), 64u);
+    for (int i = 0; i < 64; ++i) {
+        const bool left = i % 8 < 4;
+        EXPECT_EQ(pixels[std::size_t(i)], (std::array<std::uint8_t, 4>{std::uint8_t(left ? 0 : 255), std::uint8_t(left ? 255 : 0), 0, 255}))
+            << "pixel " << i;
+    }
+}
+
 }  // namespace
 }  // namespace d3d11test

@@ -220,7 +220,7 @@ public:
 
     BackendObject createRenderbuffer() override { return make("createRenderbuffer"); }
     void deleteRenderbuffer(BackendObject renderbuffer) override { release("deleteRenderbuffer", renderbuffer); }
-    void allocateRenderbuffer(BackendObject renderbuffer, DepthFormat, int width, int height) override {
+    void allocateRenderbuffer(BackendObject renderbuffer, DepthFormat, int width, int height, int) override {
         calls.push_back("allocateRenderbuffer " + std::to_string(renderbuffer) + " " + std::to_string(width) + "x" + std::to_string(height));
     }
     BackendObject createFramebuffer(const std::vector<ColorAttachment>& colour, BackendObject depth, bool, bool,

@@ -76,8 +76,10 @@ HRESULT Device::CheckMultisampleQualityLevels(DXGI_FORMAT Format, UINT SampleCou
     return guarded("CheckMultisampleQualityLevels", [&] {
         const UINT bits = textureSupport(core(), Format);
         if (SampleCount == 1) *pNumQualityLevels = (bits | depthSupport(Format)) != 0 ? 1 : 0;
-        // Multisampled textures are colour targets in fxport (CreateTexture2D); depth formats have none.
-        else if ((bits & D3D11_FORMAT_SUPPORT_MULTISAMPLE_RENDERTARGET) && int(SampleCount) <= core().maxSampleCount()) *pNumQualityLevels = 1;
+        // Multisampled textures are colour targets and depth-stencil buffers (CreateTexture2D).
+        else if ((bits & D3D11_FORMAT_SUPPORT_MULTISAMPLE_RENDERTARGET || depthSupport(Format) & D3D11_FORMAT_SUPPORT_DEPTH_STENCIL) &&
+                 int(SampleCount) <= core().maxSampleCount())
+            *pNumQualityLevels = 1;
         return succeed();
     });
 }

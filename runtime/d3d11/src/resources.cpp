@@ -210,7 +210,8 @@ HRESULT Device::CreateTexture2D(const D3D11_TEXTURE2D_DESC* pDesc, const D3D11_S
             t.colour = std::make_unique<fxport::Texture2D>(core(), int(d.Width), int(d.Height), false, surface);
             t.depth = std::make_unique<core::DepthBuffer>(core(), *t.colour);
         } else if (depthTarget) {
-            t.depth = std::make_unique<core::DepthBuffer>(core(), int(d.Width), int(d.Height), depth);
+            const int samples = d.SampleDesc.Count > 1 ? int(d.SampleDesc.Count) : 0;
+            t.depth = std::make_unique<core::DepthBuffer>(core(), int(d.Width), int(d.Height), depth, samples);
         } else if (d.SampleDesc.Count > 1) {
             t.colour = std::make_unique<core::MultisampleTarget>(core(), int(d.Width), int(d.Height), surface, int(d.SampleDesc.Count));
         } else if (isCube) {

@@ -28,9 +28,12 @@ HRESULT checkMultisampleDesc(const D3D11_TEXTURE2D_DESC& d, bool hasData) {
     if (d.ArraySize != 1)
         return fail(E_NOTIMPL, at + "ArraySize = " + std::to_string(d.ArraySize) + " with SampleDesc.Count = " + std::to_string(count) +
                                    ": multisampled texture arrays are not supported yet");
-    if (!(d.BindFlags & D3D11_BIND_RENDER_TARGET) || (d.BindFlags & D3D11_BIND_DEPTH_STENCIL))
+    // Colour targets (read by Texture2DMS too), or depth-stencil buffers drawn beside them.
+    const bool colour = (d.BindFlags & D3D11_BIND_RENDER_TARGET) && !(d.BindFlags & D3D11_BIND_DEPTH_STENCIL);
+    if (!colour && d.BindFlags != D3D11_BIND_DEPTH_STENCIL)
         return fail(E_NOTIMPL, at + "BindFlags = " + std::to_string(d.BindFlags) + " with SampleDesc.Count = " + std::to_string(count) +
-                                   ": fxport's multisampled textures are colour render targets (RENDER_TARGET, and SHADER_RESOURCE)");
+                                   ": fxport's multisampled textures are colour render targets (RENDER_TARGET, and SHADER_RESOURCE) or "
+                                   "depth-stencil buffers (DEPTH_STENCIL alone: a shader does not read multisampled depth yet)");
     return S_OK;
 }
 

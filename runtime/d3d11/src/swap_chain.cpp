@@ -69,8 +69,6 @@ HRESULT CreateHeadlessSwapChain(ID3D11Device* device, const DXGI_SWAP_CHAIN_DESC
         return fail(E_INVALIDARG, at + "BufferDesc.Width x Height = " + std::to_string(desc->BufferDesc.Width) + " x " +
                                       std::to_string(desc->BufferDesc.Height) + " (a headless swap chain needs its size)");
     if (desc->BufferCount == 0) return fail(E_INVALIDARG, at + "BufferCount = 0");
-    if (desc->SampleDesc.Count != 1)
-        return fail(E_NOTIMPL, at + "SampleDesc.Count = " + std::to_string(desc->SampleDesc.Count) + ": no multisampling");
     D3D11_TEXTURE2D_DESC t;
     t.Width = desc->BufferDesc.Width;
     t.Height = desc->BufferDesc.Height;
@@ -78,6 +76,7 @@ HRESULT CreateHeadlessSwapChain(ID3D11Device* device, const DXGI_SWAP_CHAIN_DESC
     t.ArraySize = 1;
     t.Format = desc->BufferDesc.Format;
     t.BindFlags = D3D11_BIND_RENDER_TARGET | D3D11_BIND_SHADER_RESOURCE;
+    t.SampleDesc = desc->SampleDesc;  // a multisampled back buffer is a multisampled target (CreateTexture2D checks the count)
     ComPtr<ID3D11Texture2D> backBuffer;
     if (HRESULT hr = device->CreateTexture2D(&t, nullptr, backBuffer.GetAddressOf()); FAILED(hr)) return hr;
     if (ppSwapChain) *ppSwapChain = new SwapChain(device, *desc, backBuffer);

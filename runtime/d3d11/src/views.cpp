@@ -198,7 +198,7 @@ HRESULT Device::CreateRenderTargetView(ID3D11Resource* pResource, const D3D11_RE
                         std::string(call) + ": D3D11_RENDER_TARGET_VIEW_DESC.ViewDimension = " + std::to_string(pDesc->ViewDimension) +
                             " (fxport views this texture as D3D11_RTV_DIMENSION_" + (multisampled ? "TEXTURE2DMS" : "TEXTURE2D") + ")");
         if (HRESULT f = checkViewFormat(call, "D3D11_RENDER_TARGET_VIEW_DESC", pDesc->Format, *t, false); FAILED(f)) return f;
-        if (pDesc->Texture2D.MipSlice != 0)
+        if (!multisampled && pDesc->Texture2D.MipSlice != 0)
             return fail(E_NOTIMPL, std::string(call) + ": D3D11_RENDER_TARGET_VIEW_DESC.Texture2D.MipSlice = " +
                                        std::to_string(pDesc->Texture2D.MipSlice) + ": fxport renders into level 0");
     }
@@ -223,9 +223,10 @@ HRESULT Device::CreateDepthStencilView(ID3D11Resource* pResource, const D3D11_DE
     if (HRESULT f = needsDescription(call, *t, pDesc != nullptr); FAILED(f)) return f;
     D3D11_DEPTH_STENCIL_VIEW_DESC d;
     d.Format = t->desc.Format;
-    d.ViewDimension = D3D11_DSV_DIMENSION_TEXTURE2D;
+    const bool multisampled = t->desc.SampleDesc.Count > 1;
+    d.ViewDimension = multisampled ? D3D11_DSV_DIMENSION_TEXTURE2DMS : D3D11_DSV_DIMENSION_TEXTURE2D;
     if (pDesc) {
-        if (pDesc->ViewDimension != D3D11_DSV_DIMENSION_TEXTURE2D)
+        if (pDesc->ViewDimension != d.ViewDimension)
             return fail(pDesc->ViewDimension == D3D11_DSV_DIMENSION_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
                         std::string(call) + ": D3D11_DEPTH_STENCIL_VIEW_DESC.ViewDimension = " + std::to_string(pDesc->ViewDimension));
         if (HRESULT f = checkViewFormat(call, "D3D11_DEPTH_STENCIL_VIEW_DESC", pDesc->Format, *t, true); FAILED(f)) return f;

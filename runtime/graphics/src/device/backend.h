@@ -254,7 +254,8 @@ public:
     virtual void presentFlipped(BackendObject framebuffer, int width, int height) = 0;  // to the window, rows reversed
     virtual void clearDepthStencil(BackendObject renderbuffer, bool hasStencil, bool isTexture, bool depth, bool stencil, float depthValue,
                                    int stencilValue) = 0;
-    virtual void allocateRenderbuffer(BackendObject renderbuffer, DepthFormat format, int width, int height) = 0;
+    // `samples` > 0: multisampled, exactly that many (InvalidOperation when the driver gives another count).
+    virtual void allocateRenderbuffer(BackendObject renderbuffer, DepthFormat format, int width, int height, int samples) = 0;
     // Clears `area` of the bound framebuffer's first `colourTargets` colour attachments (when
     // `colour`) and of its depth and/or stencil, whatever the write masks and scissor were: it
     // leaves the scissor test on, the scissor at `area` and the cleared channels' masks open (the

@@ -156,11 +156,14 @@ void setTexelBuffer(GraphicsDevice& device, bool unorderedAccess, int slot, cons
 
 // --- DepthBuffer
 
-DepthBuffer::DepthBuffer(GraphicsDevice& device, int width, int height, DepthFormat format)
+DepthBuffer::DepthBuffer(GraphicsDevice& device, int width, int height, DepthFormat format, int samples)
     : GraphicsResource(device, "DepthBuffer") {
     if (format == DepthFormat::None || width <= 0 || height <= 0)
         throw ArgumentError(describe() + ": " + std::to_string(width) + "x" + std::to_string(height) + " " +
                             depthFormatName(format) + " is not a depth buffer");
+    if (samples < 0 || samples > device.maxSampleCount())
+        throw ArgumentError(describe() + ": " + std::to_string(samples) + " samples (the driver makes up to " + std::to_string(device.maxSampleCount()) + ")");
+    storage_.samples = samples;
     storage_.format = format;
     storage_.width = width;
     storage_.height = height;

@@ -103,7 +103,7 @@ public:
     void presentFlipped(BackendObject framebuffer, int width, int height) override;
     void clearDepthStencil(BackendObject renderbuffer, bool hasStencil, bool isTexture, bool depth, bool stencil, float depthValue,
                            int stencilValue) override;
-    void allocateRenderbuffer(BackendObject renderbuffer, DepthFormat format, int width, int height) override;
+    void allocateRenderbuffer(BackendObject renderbuffer, DepthFormat format, int width, int height, int samples) override;
     void clearFramebuffer(BackendObject framebuffer, const Rectangle& area, int colourTargets, bool colour, const Vector4& color,
                           bool depth, bool stencil, float depthValue, int stencilValue) override;
     void invalidateFramebuffer(int colourTargets, bool depth, bool stencil) override;

@@ -5,6 +5,7 @@
 
 #include "gl/gl_backend.h"
 #include "gl/gl_formats.h"
+#include "fxport/graphics/errors.h"
 
 namespace fxport {
 
@@ -207,8 +208,15 @@ BackendObject GlBackend::createRenderbuffer() {
     return name;
 }
 
-void GlBackend::allocateRenderbuffer(BackendObject renderbuffer, DepthFormat format, int width, int height) {
-    glNamedRenderbufferStorage(renderbuffer, detail::glDepthFormat(format), width, height);
+void GlBackend::allocateRenderbuffer(BackendObject renderbuffer, DepthFormat format, int width, int height, int samples) {
+    if (samples == 0) return glNamedRenderbufferStorage(renderbuffer, detail::glDepthFormat(format), width, height);
+    glNamedRenderbufferStorageMultisample(renderbuffer, samples, detail::glDepthFormat(format), width, height);
+    // A framebuffer needs every attachment at one count; the colour targets have exactly theirs.
+    GLint given = 0;
+    glGetNamedRenderbufferParameteriv(renderbuffer, GL_RENDERBUFFER_SAMPLES, &given);
+    if (given != samples)
+        throw InvalidOperation("the graphics driver made a depth buffer of " + std::to_string(given) + " samples for " + std::to_string(samples) +
+                               " (" + depthFormatName(format) + ")");
 }
 
 BackendObject GlBackend::createFramebuffer(const std::vector<ColorAttachment>& colour, BackendObject depth, bool depthHasStencil,

@@ -246,11 +246,13 @@ struct D3D11_BUFFER_UAV { UINT FirstElement = 0; UINT NumElements = 0; UINT Flag
 struct D3D11_TEX2D_UAV { UINT MipSlice = 0; };
 enum D3D11_RTV_DIMENSION : UINT { D3D11_RTV_DIMENSION_UNKNOWN = 0, D3D11_RTV_DIMENSION_TEXTURE2D = 4, D3D11_RTV_DIMENSION_TEXTURE2DARRAY = 5,
                                   D3D11_RTV_DIMENSION_TEXTURE2DMS = 6 };
-enum D3D11_DSV_DIMENSION : UINT { D3D11_DSV_DIMENSION_UNKNOWN = 0, D3D11_DSV_DIMENSION_TEXTURE2D = 3, D3D11_DSV_DIMENSION_TEXTURE2DARRAY = 4 };
+enum D3D11_DSV_DIMENSION : UINT { D3D11_DSV_DIMENSION_UNKNOWN = 0, D3D11_DSV_DIMENSION_TEXTURE2D = 3, D3D11_DSV_DIMENSION_TEXTURE2DARRAY = 4,
+                                  D3D11_DSV_DIMENSION_TEXTURE2DMS = 5 };
 struct D3D11_TEX2D_SRV { UINT MostDetailedMip = 0; UINT MipLevels = 0; };
 struct D3D11_TEXCUBE_SRV { UINT MostDetailedMip = 0; UINT MipLevels = 0; };
 struct D3D11_TEX3D_SRV { UINT MostDetailedMip = 0; UINT MipLevels = 0; };
 struct D3D11_TEX2DMS_SRV { UINT UnusedField_NothingToDefine = 0; };
+struct D3D11_TEX2DMS_DSV { UINT UnusedField_NothingToDefine = 0; };
 struct D3D11_TEX2DMS_RTV { UINT UnusedField_NothingToDefine = 0; };
 struct D3D11_TEX2D_RTV { UINT MipSlice = 0; };
 struct D3D11_TEX2D_ARRAY_SRV { UINT MostDetailedMip = 0; UINT MipLevels = 0; UINT FirstArraySlice = 0; UINT ArraySize = 0; };
@@ -289,6 +291,7 @@ struct D3D11_DEPTH_STENCIL_VIEW_DESC {
     UINT Flags = 0;
     D3D11_TEX2D_DSV Texture2D;
     D3D11_TEX2D_ARRAY_DSV Texture2DArray;
+    D3D11_TEX2DMS_DSV Texture2DMS;
 };
 
 // --- input assembler

@@ -17,6 +17,7 @@ namespace fxport {
 struct DepthStorage {
     DepthFormat format = DepthFormat::None;  // what the target was made with (reported as made)
     int width = 0, height = 0;
+    int samples = 0;  // > 0: a multisampled buffer (a D3D11 depth target beside a multisampled colour one)
     std::uint32_t renderbuffer = 0;  // the GL buffer; 0 while not made (or format None)
     // The buffer is a depth texture a shader also samples (a D3D11 shadow map: the texture owns it,
     // made at once) rather than a renderbuffer of the device's own.

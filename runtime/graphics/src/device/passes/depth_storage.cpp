@@ -25,7 +25,7 @@ long channels(unsigned bits) { return long((bits & kDepth) != 0) + long((bits & 
 // As drivers store them: 24-bit depth takes 4 bytes with or without stencil.
 std::int64_t bytesOf(const DepthStorage& storage) {
     const int perPixel = storage.format == DepthFormat::None ? 0 : storage.format == DepthFormat::Depth16 ? 2 : 4;
-    return std::int64_t(storage.width) * std::int64_t(storage.height) * perPixel;
+    return std::int64_t(storage.width) * std::int64_t(storage.height) * perPixel * std::max(storage.samples, 1);
 }
 
 Texture* firstBound(const std::vector<RenderTargetBinding>& targets, RenderTarget2D* backBuffer) {
@@ -95,7 +95,7 @@ bool GraphicsDevice::Impl::depthTestPassesAll(const fxport::DepthStencilState& s
 
 void GraphicsDevice::Impl::makeDepthStorage(DepthStorage& storage) {
     storage.renderbuffer = createRenderbuffer();
-    backend->allocateRenderbuffer(storage.renderbuffer, storage.format, storage.width, storage.height);
+    backend->allocateRenderbuffer(storage.renderbuffer, storage.format, storage.width, storage.height, storage.samples);
     ++depthStats.allocated;
     depthStats.allocatedBytes += bytesOf(storage);
     if (&storage != boundDepthStorage()) return;  // made with its target: nothing is bound or waits
