@@ -43,3 +43,15 @@ TEST(FxcValues, OverflowingIntLiteralFoldIsIntMin) {
     const std::string glsl = pixelGlsl("float4 main() : SV_TARGET\n{\n    uint y = 3000000000 + 3000000000;\n    return y;\n}\n");
     EXPECT_NE(glsl.find("vec4(2147483648.0)"), std::string::npos) << glsl;
 }
+
+// lhs-cast L88, L102: a cast in parentheses with a swizzle after it writes the components the
+// swizzles reach, the value converted by the outermost cast (SM 2-3); SM 4 refuses both (the
+// casts change the component type).
+TEST(FxcValues, ParenthesisedLvalueCastWritesTheSwizzledComponents) {
+    EXPECT_NE(pixelGlsl("float4 main() : sv_target\n{\n    float4 f = 0;\n    ((int4) f).xy = float2(1.4, 3.8);\n    return f;\n}\n", "ps_2_0")
+                  .find("vec4(1.0, 3.0, 0.0, 0.0)"),
+              std::string::npos);
+    const std::string nested = "float4 main() : sv_target\n{\n    float4 f = 0;\n    ((float3)((int4) f).xyz).zx = float2(1.5, 2.5);\n    return f;\n}\n";
+    EXPECT_NE(pixelGlsl(nested, "ps_2_0").find("vec4(2.5, 0.0, 1.5, 0.0)"), std::string::npos) << pixelGlsl(nested, "ps_2_0");
+    EXPECT_THROW(pixelGlsl(nested, "ps_4_0"), CompileError);
+}
