@@ -54,6 +54,12 @@ std::vector<ChoiceCase> cases() {
         // L517: narrowing four arguments to half beats one count narrowing.
         {"CountNarrowingIsWorst", "func(half4 x, half y, half z, half a)", "func(float2 x, double y, double z, double a)",
          "float4 x = 0.0;\n    float y = 0.0;\n    return func(x, y, y, y);"},
+        // refract L207: an intrinsic of half arguments only is half (the half4 overload takes it);
+        // one float argument makes it float.
+        {"HalfIntrinsicStaysHalf", "detect(half4 x)", "detect(float4 x)",
+         "half4 r = 0;\n    half4 n = 0;\n    half i = 0;\n    return detect(refract(r, n, i));"},
+        {"MixedIntrinsicIsFloat", "detect(float4 x)", "detect(half4 x)",
+         "float4 r = 0;\n    half4 n = 0;\n    half i = 0;\n    return detect(refract(r, n, i));"},
     };
 }
 

@@ -364,8 +364,11 @@ private:
         if (args.empty()) return std::nullopt;
         const BasicType& first = args[0].basic;
         if (kSameShapeFloat.count(name)) {
+            // fxc keeps half where every argument is half (refract(half4, half4, half) is a
+            // half4, which an overload on half4 takes); any other mix computes in float.
             BasicType b = first;
-            if (name != "abs") b.scalar = "float";
+            const bool allHalf = std::all_of(args.begin(), args.end(), [](const ExpressionType& a) { return a.basic.scalar == "half"; });
+            if (name != "abs" && !allHalf) b.scalar = "float";
             return numeric(b);
         }
         if (name == "sign") return numeric(basic("int", first.rows, first.columns, first.isMatrix));

@@ -9,6 +9,7 @@
 #include "rewrite/length_property.h"
 #include "rewrite/unused_uavs.h"
 #include "rewrite/pow2_partitioning.h"
+#include "rewrite/int_literal_folding.h"
 #include "rewrite/refract_eta.h"
 #include "rewrite/tess_factor_intrinsics.h"
 #include "rewrite/compare_store.h"
@@ -410,6 +411,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : lengthPropertiesAsCalls(syntax)) edits.push_back(std::move(e));
     for (auto& e : unusedUavsDropped(syntax)) edits.push_back(std::move(e));
     for (auto& e : refractVectorEta(syntax)) edits.push_back(std::move(e));
+    for (auto& e : overflowingIntFoldsAsFxc(syntax)) edits.push_back(std::move(e));
     for (auto& e : intrinsicsAsGlslangSpellsThem(syntax)) edits.push_back(std::move(e));
     for (auto& e : pow2PartitioningAsInteger(syntax)) edits.push_back(std::move(e));
     for (auto& e : tessFactorIntrinsics(syntax)) edits.push_back(std::move(e));

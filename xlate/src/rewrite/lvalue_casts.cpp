@@ -2,6 +2,7 @@
 #include "rewrite/lvalue_casts.h"
 
 #include <cstdlib>
+#include <cstring>
 #include <optional>
 #include <string>
 
@@ -55,9 +56,112 @@ std::optional<BasicType> targetType(const EffectSyntax& syntax, const FxFunction
     return numeric(syntax, type);
 }
 
+// A swizzle's components (0..3), or nothing.
+std::optional<std::vector<int>> swizzleComponents(const std::string& sw) {
+    if (sw.empty() || sw.size() > 4) return std::nullopt;
+    for (const char* set : {"xyzw", "rgba"}) {
+        std::vector<int> out;
+        for (char ch : sw)
+            if (const char* at = std::strchr(set, ch); at && ch) out.push_back(int(at - set));
+        if (out.size() == sw.size()) return out;
+    }
+    return std::nullopt;
+}
+
+// What a parenthesised cast reaches: the variable (with members), the components of it still
+// visible (indices into it), and the casts met, outermost first.
+struct CastView {
+    size_t target = 0, targetEnd = 0;
+    std::vector<int> components;
+    std::vector<BasicType> casts;
+};
+
+// `( (T)+ X ) . swizzle` at j, X a variable path or again such a form; `j` moves past it.
+std::optional<CastView> castView(const EffectSyntax& syntax, const FxFunction& f, size_t& j) {
+    const auto& t = syntax.tokens;
+    if (j >= f.body.end || !t[j].is("(")) return std::nullopt;
+    ++j;
+    std::vector<BasicType> casts;
+    while (j + 2 < f.body.end && t[j].is("(") && t[j + 1].isIdent() && t[j + 2].is(")")) {
+        auto b = numeric(syntax, t[j + 1].text);
+        if (!b || b->isMatrix) return std::nullopt;
+        casts.push_back(*b);
+        j += 3;
+    }
+    if (casts.empty() || j >= f.body.end) return std::nullopt;
+    CastView view;
+    if (t[j].is("(")) {
+        auto inner = castView(syntax, f, j);
+        if (!inner) return std::nullopt;
+        view = *inner;
+    } else if (t[j].isIdent()) {
+        view.target = j++;
+        while (j + 1 < f.body.end && t[j].is(".") && t[j + 1].isIdent() && !swizzleComponents(t[j + 1].text)) j += 2;
+        view.targetEnd = j;
+        auto type = targetType(syntax, f, view.target, view.targetEnd);
+        if (!type || type->isMatrix) return std::nullopt;
+        for (int k = 0; k < type->columns; ++k) view.components.push_back(k);
+    } else {
+        return std::nullopt;
+    }
+    // The casts, innermost first, keep the first components.
+    for (auto k = casts.rbegin(); k != casts.rend(); ++k) {
+        if (k->columns > int(view.components.size())) return std::nullopt;
+        view.components.resize(size_t(k->columns));
+    }
+    view.casts.insert(view.casts.begin(), casts.begin(), casts.end());
+    if (j + 2 >= f.body.end || !t[j].is(")") || !t[j + 1].is(".")) return std::nullopt;
+    auto sw = swizzleComponents(t[j + 2].text);
+    if (!sw) return std::nullopt;
+    std::vector<int> picked;
+    for (int c : *sw) {
+        if (c >= int(view.components.size())) return std::nullopt;
+        picked.push_back(view.components[size_t(c)]);
+    }
+    view.components = picked;
+    j += 3;
+    return view;
+}
+
+// `((int4) f).xy = v;` at i: the target and value, in LvalueCast's swizzledTarget/assignedType.
+std::optional<LvalueCast> parenthesisedCastAt(const EffectSyntax& syntax, const FxFunction& f, size_t i) {
+    const auto& t = syntax.tokens;
+    size_t j = i;
+    auto view = castView(syntax, f, j);
+    if (!view || j >= f.body.end || !t[j].is("=")) return std::nullopt;
+    LvalueCast c;
+    c.first = i;
+    c.function = &f;
+    c.target = view->target;
+    c.equals = j;
+    c.casts = view->casts;
+    auto type = targetType(syntax, f, view->target, view->targetEnd);
+    if (!type) return std::nullopt;
+    c.targetType = *type;
+    for (size_t k = view->target; k < view->targetEnd; ++k) c.swizzledTarget += t[k].text;
+    if (type->columns > 1) {
+        c.swizzledTarget += ".";
+        for (int k : view->components) c.swizzledTarget += "xyzw"[k];
+    }
+    BasicType assigned = c.casts.front();
+    assigned.columns = int(view->components.size());
+    c.assignedType = spell(assigned);
+    int depth = 0;
+    for (++j; j < f.body.end; ++j) {
+        if (t[j].is("(") || t[j].is("[") || t[j].is("{")) ++depth;
+        else if (t[j].is(")") || t[j].is("]") || t[j].is("}")) --depth;
+        else if (depth == 0 && t[j].is(";")) break;
+        if (depth < 0) return std::nullopt;
+    }
+    if (j >= f.body.end) return std::nullopt;
+    c.semicolon = j;
+    return c;
+}
+
 std::optional<LvalueCast> lvalueCastAt(const EffectSyntax& syntax, const FxFunction& f, size_t i) {
     const auto& t = syntax.tokens;
     if (!t[i].is("(") || !(i == f.body.begin || t[i - 1].is(";") || t[i - 1].is("{") || t[i - 1].is("}"))) return std::nullopt;
+    if (i + 1 < f.body.end && t[i + 1].is("(")) return parenthesisedCastAt(syntax, f, i);
     LvalueCast c;
     c.first = i;
     c.function = &f;
@@ -165,6 +269,11 @@ std::vector<TextEdit> lvalueCastsAsAssignments(const EffectSyntax& syntax) {
     const auto& t = syntax.tokens;
     std::vector<TextEdit> edits;
     for (const LvalueCast& c : findLvalueCasts(syntax)) {
+        if (!c.swizzledTarget.empty()) {
+            edits.push_back({t[c.first].offset, t[c.equals].end, " " + c.swizzledTarget + " = (" + c.assignedType + ")("});
+            edits.push_back({t[c.semicolon].offset, t[c.semicolon].offset, ")"});
+            continue;
+        }
         const BasicType& outer = c.casts.front();
         const BasicType& target = c.targetType;
         std::string lhs;

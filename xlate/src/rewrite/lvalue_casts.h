@@ -6,7 +6,10 @@
 // In shader model 4 and later fxc refuses a cast there that changes the component type
 // (`(int4) p = ...` of a float4 p): findLvalueCastErrors (fxc_checks.h) says so.
 // Only a variable, its struct members and a swizzle are taken as the target, numeric types as the
-// casts; other forms are left to glslang.
+// casts; other forms are left to glslang. A cast in parentheses with a swizzle after it,
+// `((int4) f).xy = v;` and `((float3)((int4) f).xyz).xy = v;`, writes the components of the target
+// the swizzles reach (f.xy), the value converted by the outermost cast (SM2-3; refused from SM4 on
+// as the casts change the component type).
 #pragma once
 
 #include <vector>
@@ -24,6 +27,10 @@ struct LvalueCast {
     std::vector<BasicType> casts;  // outermost first
     BasicType targetType;
     const FxFunction* function = nullptr;
+    // `((int4) f).xy = v;` (SM2-3): the components written, spelled (`f.xy`), and what the value
+    // becomes (the outermost cast's component type, as many components: `int2`); empty otherwise.
+    std::string swizzledTarget;
+    std::string assignedType;
 };
 
 std::vector<LvalueCast> findLvalueCasts(const EffectSyntax& syntax);

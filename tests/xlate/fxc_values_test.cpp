@@ -1,0 +1,57 @@
+// Issue 23: values fxc gives where glslang, left alone, computes others. Each case is a section of
+// vkd3d's conformance suite (file and line named), whose probe is native D3D's value; the constant
+// the translated pixel shader returns is read from its GLSL (SPIRV-Cross folds it to a literal).
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "fxport/xlate/effect_compiler.h"
+
+namespace fs = std::filesystem;
+using namespace fxport::xlate;
+
+namespace {
+
+std::string pixelGlsl(const std::string& source, const std::string& profile = "ps_4_0") {
+    fs::path dir = fs::temp_directory_path() / ("fxport-fxc-values-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    fs::path file = dir / "shader.hlsl";
+    std::ofstream(file) << source;
+    CompileOptions o;
+    o.useCache = false;
+    return compileShaderFiles({{file.string(), "main", profile}}, o).shaders.at(0).glsl;
+}
+
+}  // namespace
+
+// sm1-const-folding L104-L136: fxc folds unsuffixed int literals exactly and converts the result
+// to int as x86 does, INT_MIN where it is out of range (a uint then reads 2^31); glslang wraps to
+// 1705032704. A sum that stays in range is the same either way; u-suffixed literals wrap (L117).
+TEST(FxcValues, OverflowingIntLiteralFoldIsIntMin) {
+    for (const char* profile : {"ps_2_0", "ps_4_0"}) {
+        const std::string glsl = pixelGlsl(
+            "float4 main() : SV_TARGET\n{\n    int x = 3000000000 + 3000000000;\n"
+            "    return float4(x, 3000000000 + 3000000000, 3000000000u + 3000000000u, 1000 + 2000);\n}\n",
+            profile);
+        EXPECT_NE(glsl.find("vec4(-2147483648.0, -2147483648.0, 1705032704.0, 3000.0)"), std::string::npos) << profile << "\n" << glsl;
+    }
+    // SM 4: INT_MIN read as a uint (SM 1-3 refuse the uint: negative_uint_constants).
+    const std::string glsl = pixelGlsl("float4 main() : SV_TARGET\n{\n    uint y = 3000000000 + 3000000000;\n    return y;\n}\n");
+    EXPECT_NE(glsl.find("vec4(2147483648.0)"), std::string::npos) << glsl;
+}
+
+// lhs-cast L88, L102: a cast in parentheses with a swizzle after it writes the components the
+// swizzles reach, the value converted by the outermost cast (SM 2-3); SM 4 refuses both (the
+// casts change the component type).
+TEST(FxcValues, ParenthesisedLvalueCastWritesTheSwizzledComponents) {
+    EXPECT_NE(pixelGlsl("float4 main() : sv_target\n{\n    float4 f = 0;\n    ((int4) f).xy = float2(1.4, 3.8);\n    return f;\n}\n", "ps_2_0")
+                  .find("vec4(1.0, 3.0, 0.0, 0.0)"),
+              std::string::npos);
+    const std::string nested = "float4 main() : sv_target\n{\n    float4 f = 0;\n    ((float3)((int4) f).xyz).zx = float2(1.5, 2.5);\n    return f;\n}\n";
+    EXPECT_NE(pixelGlsl(nested, "ps_2_0").find("vec4(2.5, 0.0, 1.5, 0.0)"), std::string::npos) << pixelGlsl(nested, "ps_2_0");
+    EXPECT_THROW(pixelGlsl(nested, "ps_4_0"), CompileError);
+}
