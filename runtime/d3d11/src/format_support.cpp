@@ -47,11 +47,15 @@ UINT bufferSupport(DXGI_FORMAT format) {
     return bits;
 }
 
-// Copies a feature's answer when the caller's size is the structure's (D3D: E_INVALIDARG otherwise).
+// D3D's answer to a structure of the wrong size (or none).
+HRESULT wrongSize(const char* feature, std::size_t wanted, const void* out, UINT size) {
+    return fail(E_INVALIDARG, std::string("CheckFeatureSupport: ") + feature + " needs a " + std::to_string(wanted) + "-byte structure (got " +
+                                  std::to_string(size) + (out ? " bytes)" : " bytes and a null pointer)"));
+}
+
+// Copies a feature's answer when the caller's size is the structure's.
 template <class T> HRESULT answer(const char* feature, void* out, UINT size, const T& value) {
-    if (!out || size != sizeof(T))
-        return fail(E_INVALIDARG, std::string("CheckFeatureSupport: ") + feature + " needs a " + std::to_string(sizeof(T)) + "-byte structure (got " +
-                                      std::to_string(size) + (out ? " bytes)" : " bytes and a null pointer)"));
+    if (!out || size != sizeof(T)) return wrongSize(feature, sizeof(T), out, size);
     std::memcpy(out, &value, sizeof(T));
     return succeed();
 }
@@ -100,7 +104,7 @@ HRESULT Device::CheckFeatureSupport(D3D11_FEATURE Feature, void* pFeatureSupport
         return answer("D3D11_FEATURE_SHADER_MIN_PRECISION_SUPPORT", out, size, D3D11_FEATURE_DATA_SHADER_MIN_PRECISION_SUPPORT{0, 0});
     case D3D11_FEATURE_FORMAT_SUPPORT: {
         if (!out || size != sizeof(D3D11_FEATURE_DATA_FORMAT_SUPPORT))
-            return answer("D3D11_FEATURE_FORMAT_SUPPORT", out, size, D3D11_FEATURE_DATA_FORMAT_SUPPORT{});
+            return wrongSize("D3D11_FEATURE_FORMAT_SUPPORT", sizeof(D3D11_FEATURE_DATA_FORMAT_SUPPORT), out, size);
         auto* data = static_cast<D3D11_FEATURE_DATA_FORMAT_SUPPORT*>(out);
         return CheckFormatSupport(data->InFormat, &data->OutFormatSupport);
     }

@@ -124,6 +124,18 @@ std::optional<CastView> castView(const EffectSyntax& syntax, const FxFunction& f
 }
 
 // `((int4) f).xy = v;` at i: the target and value, in LvalueCast's swizzledTarget/assignedType.
+// The `;` that ends the statement from token `from`, outside brackets; none if a bracket closes first.
+std::optional<size_t> statementEnd(const std::vector<Token>& t, size_t from, size_t end) {
+    int depth = 0;
+    for (size_t j = from; j < end; ++j) {
+        if (t[j].is("(") || t[j].is("[") || t[j].is("{")) ++depth;
+        else if (t[j].is(")") || t[j].is("]") || t[j].is("}")) --depth;
+        else if (depth == 0 && t[j].is(";")) return j;
+        if (depth < 0) return std::nullopt;
+    }
+    return std::nullopt;
+}
+
 std::optional<LvalueCast> parenthesisedCastAt(const EffectSyntax& syntax, const FxFunction& f, size_t i) {
     const auto& t = syntax.tokens;
     size_t j = i;
@@ -146,15 +158,9 @@ std::optional<LvalueCast> parenthesisedCastAt(const EffectSyntax& syntax, const 
     BasicType assigned = c.casts.front();
     assigned.columns = int(view->components.size());
     c.assignedType = spell(assigned);
-    int depth = 0;
-    for (++j; j < f.body.end; ++j) {
-        if (t[j].is("(") || t[j].is("[") || t[j].is("{")) ++depth;
-        else if (t[j].is(")") || t[j].is("]") || t[j].is("}")) --depth;
-        else if (depth == 0 && t[j].is(";")) break;
-        if (depth < 0) return std::nullopt;
-    }
-    if (j >= f.body.end) return std::nullopt;
-    c.semicolon = j;
+    const auto end = statementEnd(t, j + 1, f.body.end);
+    if (!end) return std::nullopt;
+    c.semicolon = *end;
     return c;
 }
 
@@ -180,15 +186,9 @@ std::optional<LvalueCast> lvalueCastAt(const EffectSyntax& syntax, const FxFunct
     auto type = targetType(syntax, f, c.target, c.equals);
     if (!type) return std::nullopt;
     c.targetType = *type;
-    int depth = 0;
-    for (++j; j < f.body.end; ++j) {
-        if (t[j].is("(") || t[j].is("[") || t[j].is("{")) ++depth;
-        else if (t[j].is(")") || t[j].is("]") || t[j].is("}")) --depth;
-        else if (depth == 0 && t[j].is(";")) break;
-        if (depth < 0) return std::nullopt;
-    }
-    if (j >= f.body.end) return std::nullopt;
-    c.semicolon = j;
+    const auto end = statementEnd(t, j + 1, f.body.end);
+    if (!end) return std::nullopt;
+    c.semicolon = *end;
     return c;
 }
 

@@ -52,10 +52,10 @@ int Texture::levelWidth(int base, int level) const { return std::max(1, base >> 
 
 // D3D's rule for compressed formats, which GL shares: a region starts on the 4-texel grid and ends on
 // it or at the level's edge.
-void Texture::checkBlockGrid(int x, int y, int w, int h, int level) const {
+void Texture::checkBlockGrid(const Rectangle& r, int levelWidth, int levelHeight) const {
     if (!isCompressedFormat(format_)) return;
-    const Rectangle size = deviceImpl(device()).backend->textureLevelSize(name_, level);
-    const bool xEnds = (x + w) % 4 == 0 || x + w == size.Width, yEnds = (y + h) % 4 == 0 || y + h == size.Height;
+    const int x = r.X, y = r.Y, w = r.Width, h = r.Height;
+    const bool xEnds = (x + w) % 4 == 0 || x + w == levelWidth, yEnds = (y + h) % 4 == 0 || y + h == levelHeight;
     if (x % 4 != 0 || y % 4 != 0 || !xEnds || !yEnds)
         throw ArgumentError(describe() + ": SetData region (" + std::to_string(x) + "," + std::to_string(y) + "," + std::to_string(w) + "," +
                             std::to_string(h) + ") of " + surfaceFormatName(format_) +
@@ -64,7 +64,6 @@ void Texture::checkBlockGrid(int x, int y, int w, int h, int level) const {
 
 void Texture::writeTexels(int face, int level, int x, int y, int w, int h, const void* data, std::size_t bytes, std::size_t elementSize) {
     if (samples_ > 0) throw InvalidOperation(describe() + ": SetData on a multisampled texture (its samples are written by draws only)");
-    checkBlockGrid(x, y, w, h, level);
     std::size_t expected = regionBytes(format_, w, h);
     if (bytes != expected) {
         // In the caller's units: SetData(data, count) counts elements, not bytes.
@@ -121,6 +120,7 @@ void Texture2D::setData(int level, const Rectangle* rect, const void* data, std:
         throw ArgumentError(describe() + ": SetData rectangle (" + std::to_string(r.X) + "," + std::to_string(r.Y) + "," +
                             std::to_string(r.Width) + "," + std::to_string(r.Height) + ") is outside the " +
                             std::to_string(w) + "x" + std::to_string(h) + " level");
+    checkBlockGrid(r, w, h);
     writeTexels(-1, level, r.X, r.Y, r.Width, r.Height, data, bytes, elementSize);
 }
 

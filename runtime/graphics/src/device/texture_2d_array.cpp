@@ -79,6 +79,7 @@ void Texture2DArray::setData(int level, int layer, const Rectangle* rect, const 
         throw ArgumentError(describe() + ": SetData rectangle (" + std::to_string(r.X) + "," + std::to_string(r.Y) + "," + std::to_string(r.Width) +
                             "," + std::to_string(r.Height) + ") is outside level " + std::to_string(level) + " (" + std::to_string(w) + "x" +
                             std::to_string(h) + ")");
+    checkBlockGrid(r, w, h);
     writeTexels(layer, level, r.X, r.Y, r.Width, r.Height, data, bytes);  // the layer travels as the backend's face
 }
 

@@ -40,8 +40,9 @@ protected:
     void writeTexels(int face, int level, int x, int y, int w, int h, const void* data, std::size_t bytes, std::size_t elementSize = 1);
     void readTexels(int face, int level, void* data, std::size_t bytes) const;
     int levelWidth(int base, int level) const;
-    // Throws ArgumentError when a compressed format's region is off its 4x4 block grid.
-    void checkBlockGrid(int x, int y, int w, int h, int level) const;
+    // Throws ArgumentError when a compressed format's region `r` of a levelWidth x levelHeight level
+    // is off its 4x4 block grid (whole faces and levels always lie on it).
+    void checkBlockGrid(const Rectangle& r, int levelWidth, int levelHeight) const;
 
     std::uint32_t name_ = 0;
     int samples_ = 0;
