@@ -207,6 +207,14 @@ private:
                    const std::string& arguments, const std::string& source, const std::string& entryName,
                    const EntryWrapper& wrapper, bool dx9Compatible);
     bool resolveShader(const FxShaderExpr& expr, ShaderStage stage, ShaderChoice& choice, size_t blameToken);
+    bool resolveStreamOutShader(const FxShaderExpr& expr, ShaderChoice& choice, size_t blameToken);
+    bool readStreamOutput(const FxShaderExpr& expr, const CompiledShader& shader, StreamOutput& so);
+    std::optional<ShaderStage> stageOf(const FxShaderExpr& expr) const;
+    bool foldNullGeometryShader(Pass& pass, size_t token);
+    // Shaders made by ConstructGSWithSO: (the shader streamed, its declaration) -> the copy with it,
+    // and each copy's shader.
+    std::map<std::pair<int, std::string>, int> streamCopies_;
+    std::map<int, int> streamBase_;
     void reportOversized(const OversizedVariable& over, size_t blameToken);
     bool buildSelector(TokenSpan span, std::vector<SelectorOp>& ops, size_t blameToken);
     int parameterIndex(const std::string& name) const {
@@ -725,6 +733,8 @@ int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile
     shader.clipDistances = glsl.clipDistances;
     shader.varyingInputs = glsl.varyingInputs;
     shader.varyingOutputs = glsl.varyingOutputs;
+    shader.outputs = glsl.outputs;
+    shader.outputPrimitiveVertices = glsl.outputPrimitiveVertices;
     shader.needsD3D9PixelOffset = wrapper.usesPixelOffset;
     shader.storage = glsl.storage;
     shader.threadGroupSize = glsl.threadGroupSize;
@@ -802,8 +812,11 @@ bool EffectBuilder::resolveShader(const FxShaderExpr& expr, ShaderStage stage, S
         return true;
     }
     case FxShaderExpr::Kind::StreamOut:
-        error(diag::kUnsupported, "geometry shaders with stream output (ConstructGSWithSO) are not supported", expr.token);
-        return false;
+        if (stage != ShaderStage::Geometry) {
+            error(diag::kBadProfile, std::string("ConstructGSWithSO makes a geometry shader, but it is assigned to a ") + stageName(stage) + " shader", expr.token);
+            return false;
+        }
+        return resolveStreamOutShader(expr, choice, blameToken);
     case FxShaderExpr::Kind::Variable:
     case FxShaderExpr::Kind::ArrayElement: {
         const FxShaderVariable* var = nullptr;
@@ -911,6 +924,7 @@ void EffectBuilder::buildTechniques() {
                 if (!resolveShader(e, stage, target, a.nameToken)) pass.valid = false;
             }
             if (t.name != kLooseTechnique) checkTessellationPass(pass, p.token);
+            if (pass.valid && !foldNullGeometryShader(pass, p.token)) pass.valid = false;
             const bool anyShader = !pass.vertexShader.shaders.empty() || !pass.pixelShader.shaders.empty() || !pass.computeShader.shaders.empty() ||
                                    !pass.geometryShader.shaders.empty() || !pass.hullShader.shaders.empty() || !pass.domainShader.shaders.empty();
             if (pass.valid && !anyShader) {
@@ -929,6 +943,108 @@ void EffectBuilder::buildTechniques() {
         }
         effect_.techniques.push_back(std::move(tech));
     }
+}
+
+// The stage `expr` compiles for (what ConstructGSWithSO wraps): by its profile, through shader variables.
+std::optional<ShaderStage> EffectBuilder::stageOf(const FxShaderExpr& expr) const {
+    if (expr.kind == FxShaderExpr::Kind::Compile) {
+        auto profile = parseShaderProfile(expr.profile);
+        return profile ? std::optional(profile->stage) : std::nullopt;
+    }
+    if (expr.kind != FxShaderExpr::Kind::Variable) return std::nullopt;
+    for (const auto& v : syntax_.shaderVariables)
+        if (v.name == expr.variable && !v.isArray && v.elements.size() == 1) return stageOf(v.elements[0]);
+    return std::nullopt;
+}
+
+// ConstructGSWithSO(shader, declaration...): a copy of the shader (a geometry shader, or a vertex
+// shader: D3D's "null" geometry shader that streams the vertex shader's outputs) that carries the
+// declaration, resolved against its outputs.
+bool EffectBuilder::resolveStreamOutShader(const FxShaderExpr& expr, ShaderChoice& choice, size_t blameToken) {
+    FxShaderExpr inner = parseShaderExpr(syntax_, expr.streamShader);
+    if (inner.kind == FxShaderExpr::Kind::Invalid) inner.token = expr.token;
+    const ShaderStage stage = stageOf(inner).value_or(ShaderStage::Geometry);
+    if (stage != ShaderStage::Vertex && stage != ShaderStage::Geometry) {
+        error(diag::kBadProfile, std::string("ConstructGSWithSO streams a geometry or a vertex shader, not a ") + stageName(stage) + " shader", inner.token);
+        return false;
+    }
+    ShaderChoice streamed;
+    if (!resolveShader(inner, stage, streamed, blameToken)) return false;
+    if (streamed.shaders.size() != 1 || streamed.shaders[0] < 0 || !streamed.selector.empty()) {
+        error(diag::kUnsupported, "ConstructGSWithSO of NULL or of a shader array is not supported", inner.token);
+        return false;
+    }
+    const int base = streamed.shaders[0];
+    StreamOutput so;
+    if (!readStreamOutput(expr, effect_.shaders[static_cast<size_t>(base)], so)) return false;
+    std::string key = std::to_string(so.rasterizedStream);
+    for (const auto& e : so.entries)
+        key += ";" + std::to_string(e.stream) + ":" + std::to_string(e.outputSlot) + ":" + e.semanticName + ":" + std::to_string(e.semanticIndex) + ":" +
+               std::to_string(e.startComponent) + ":" + std::to_string(e.componentCount);
+    auto [it, made] = streamCopies_.try_emplace({base, key}, static_cast<int>(effect_.shaders.size()));
+    if (made) {
+        CompiledShader copy = effect_.shaders[static_cast<size_t>(base)];
+        copy.streamOutput = so;
+        effect_.shaders.push_back(std::move(copy));
+        if (auto r = reflections_.find(base); r != reflections_.end()) reflections_[it->second] = r->second;
+        streamBase_[it->second] = base;
+    }
+    choice = {};
+    choice.shaders = {it->second};
+    return true;
+}
+
+// The declaration strings (and, in the Effects 11 form, the rasterized stream) of `expr`.
+bool EffectBuilder::readStreamOutput(const FxShaderExpr& expr, const CompiledShader& shader, StreamOutput& so) {
+    const auto& args = expr.streamArguments;
+    if (args.size() != 1 && args.size() != 5) return false;  // fxc's argument count: checks/effect_object_values.cpp
+    for (size_t k = 0; k < std::min<size_t>(args.size(), 4); ++k) {
+        const Token& first = syntax_.tokens[args[k].begin];
+        if (args[k].end == args[k].begin + 1 && (iequals(first.text, "NULL") || first.text == "0") && first.kind != Token::Kind::String) continue;
+        if (args[k].end != args[k].begin + 1 || first.kind != Token::Kind::String) {
+            error(diag::kBadStreamOutput, "a stream-output declaration is a string (\"POSITION.xyz; TEXCOORD0.xy\") or NULL", args[k].begin);
+            return false;
+        }
+        std::string why;
+        if (!parseStreamOutputDeclaration(first.text, static_cast<int>(k), so.entries, why)) {
+            error(diag::kBadStreamOutput, "ConstructGSWithSO: " + why, args[k].begin);
+            return false;
+        }
+    }
+    if (args.size() == 5) {
+        std::string number = syntax_.text(args[4]);
+        number.erase(std::remove_if(number.begin(), number.end(), [](unsigned char c) { return std::isspace(c); }), number.end());
+        char* end = nullptr;
+        long value = std::strtol(number.c_str(), &end, 0);
+        if (number.empty() || *end != '\0') {
+            error(diag::kBadStreamOutput, "ConstructGSWithSO: the rasterized stream '" + number + "' is not a number (0 to 3, or -1 for none)", args[4].begin);
+            return false;
+        }
+        so.rasterizedStream = value == 0xFFFFFFFFL ? kNoRasterizedStream : static_cast<int>(value);
+    }
+    std::string why;
+    if (!resolveStreamOutput(shader.outputs, so, why)) {
+        error(diag::kBadStreamOutput, "ConstructGSWithSO('" + shader.entryPoint + "'): " + why, args.empty() ? expr.token : args[0].begin);
+        return false;
+    }
+    return true;
+}
+
+// A pass whose geometry shader streams its vertex shader's outputs (ConstructGSWithSO of a vertex
+// shader) runs that vertex shader with the stream output and no geometry shader, as GL captures a
+// vertex shader's outputs itself.
+bool EffectBuilder::foldNullGeometryShader(Pass& pass, size_t token) {
+    if (pass.geometryShader.shaders.size() != 1 || pass.geometryShader.shaders[0] < 0) return true;
+    const int gs = pass.geometryShader.shaders[0];
+    if (effect_.shaders[static_cast<size_t>(gs)].profile.stage != ShaderStage::Vertex) return true;
+    const int streamed = streamBase_.count(gs) ? streamBase_.at(gs) : -1;
+    if (pass.vertexShader.shaders.size() != 1 || !pass.vertexShader.selector.empty() || pass.vertexShader.shaders[0] != streamed) {
+        error(diag::kUnsupported, "pass '" + pass.name + "' streams the outputs of a vertex shader (ConstructGSWithSO) other than its own vertex shader", token);
+        return false;
+    }
+    pass.vertexShader.shaders = {gs};
+    pass.geometryShader = {};
+    return true;
 }
 
 // The attributes of the hull shader `pass` compiles (SetHullShader(CompileShader(hs_5_0, HS()))),

@@ -256,6 +256,20 @@ json toJson(const CompiledShader& s, const CompiledEffect& effect, bool withGlsl
     // The locations are the GLSL's: written with it (the golden reflection has neither).
     if (withGlsl && !s.varyingInputs.empty()) j["varyingInputs"] = varyings(s.varyingInputs);
     if (withGlsl && !s.varyingOutputs.empty()) j["varyingOutputs"] = varyings(s.varyingOutputs);
+    // What stream output captures: the outputs by GLSL name (with the GLSL), the declaration.
+    if (withGlsl && !s.outputs.empty()) {
+        json outputs = json::array();
+        for (const ShaderOutput& o : s.outputs) outputs.push_back(json{o.semantic, o.glslName, o.components});
+        j["outputs"] = outputs;
+    }
+    if (s.outputPrimitiveVertices > 0) j["outputPrimitiveVertices"] = s.outputPrimitiveVertices;
+    if (!s.streamOutput.empty()) {
+        json entries = json::array();
+        for (const StreamOutputEntry& e : s.streamOutput.entries)
+            entries.push_back({{"stream", e.stream}, {"semantic", e.semanticName}, {"index", e.semanticIndex}, {"start", e.startComponent},
+                               {"count", e.componentCount}, {"slot", e.outputSlot}, {"varying", e.varying}});
+        j["streamOutput"] = {{"entries", entries}, {"strides", s.streamOutput.strides}, {"rasterizedStream", s.streamOutput.rasterizedStream}};
+    }
     // Compute, hull and domain shaders' reflection: written only where there is some, so effects
     // without them read as before.
     if (!s.storage.empty()) {
@@ -554,6 +568,17 @@ CompiledEffect deserializeEffect(std::string_view text, const std::string& nameF
             };
             readVaryings("varyingInputs", cs.varyingInputs);
             readVaryings("varyingOutputs", cs.varyingOutputs);
+            if (s.contains("outputs"))
+                for (const auto& o : s["outputs"]) cs.outputs.push_back({o.at(0).get<std::string>(), o.at(1).get<std::string>(), o.at(2).get<int>()});
+            cs.outputPrimitiveVertices = s.value("outputPrimitiveVertices", 0);
+            if (s.contains("streamOutput")) {
+                const json& so = s["streamOutput"];
+                for (const auto& en : so.at("entries"))
+                    cs.streamOutput.entries.push_back({en.at("stream"), en.at("semantic"), en.at("index"), en.at("start"), en.at("count"),
+                                                       en.at("slot"), en.at("varying")});
+                cs.streamOutput.strides = so.at("strides").get<std::array<int, kStreamOutputSlots>>();
+                cs.streamOutput.rasterizedStream = so.at("rasterizedStream");
+            }
             if (s.contains("storage"))
                 for (const auto& b : s["storage"]) {
                     StorageBinding sb;

@@ -53,6 +53,22 @@ std::optional<std::string> checkParameter(const Parameter& p, const CompiledEffe
     return std::nullopt;
 }
 
+// A stored declaration must be one the compiler could have resolved against the shader's outputs,
+// naming only variables the shader has (the runtime links a GL program with them).
+std::optional<std::string> checkStreamOutput(const CompiledShader& s) {
+    for (const ShaderOutput& o : s.outputs)
+        if (!within(o.components, 1, 4) || o.glslName.empty()) return " has output '" + o.semantic + "' of " + std::to_string(o.components) + " components";
+    if (!within(s.outputPrimitiveVertices, 0, 3)) return " emits primitives of " + std::to_string(s.outputPrimitiveVertices) + " vertices";
+    if (s.streamOutput.empty()) return std::nullopt;
+    if (s.profile.stage != ShaderStage::Vertex && s.profile.stage != ShaderStage::Geometry) return " streams output from a stage that cannot";
+    StreamOutput again = s.streamOutput;
+    for (auto& e : again.entries) e.varying.clear();
+    std::string why;
+    if (!resolveStreamOutput(s.outputs, again, why)) return "'s stream output is inconsistent: " + why;
+    if (again.entries != s.streamOutput.entries) return "'s stream output captures variables its outputs do not name";
+    return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<std::string> findEffectInconsistency(const CompiledEffect& e) {
@@ -95,6 +111,7 @@ std::optional<std::string> findEffectInconsistency(const CompiledEffect& e) {
             if (!within(b.slot, 0, 127) || !within(b.binding, 0, kSrvBufferBindingBase + 127) || !within(b.stride, 0, 2048))
                 return what + " binds '" + b.name + "' at register " + std::to_string(b.slot) + ", binding " + std::to_string(b.binding) +
                        ", stride " + std::to_string(b.stride);
+        if (auto problem = checkStreamOutput(s)) return what + *problem;
         for (int n : s.threadGroupSize)
             if (!within(n, 0, 1024)) return what + " has a thread-group size of " + std::to_string(n);
     }

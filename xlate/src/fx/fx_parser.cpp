@@ -1221,6 +1221,22 @@ FxShaderExpr parseShaderExpr(const EffectSyntax& syntax, TokenSpan span) {
     }
     if (iequals(first.text, "ConstructGSWithSO") || iequals(first.text, "ConstructGSWithSOExt")) {
         e.kind = FxShaderExpr::Kind::StreamOut;
+        if (span.end < span.begin + 3 || !t(span.begin + 1).is("(") || !t(span.end - 1).is(")")) {
+            e.kind = FxShaderExpr::Kind::Invalid;
+            return e;
+        }
+        // Split the arguments at the commas outside parentheses.
+        std::vector<TokenSpan> arguments;
+        size_t start = span.begin + 2;
+        int depth = 0;
+        for (size_t i = start; i < span.end - 1; ++i) {
+            if (t(i).is("(")) ++depth;
+            if (t(i).is(")")) --depth;
+            if (depth == 0 && t(i).is(",")) arguments.push_back({start, i}), start = i + 1;
+        }
+        arguments.push_back({start, span.end - 1});
+        e.streamShader = arguments.front();
+        e.streamArguments.assign(arguments.begin() + 1, arguments.end());
         return e;
     }
     auto parseCall = [&](size_t i, size_t end) {

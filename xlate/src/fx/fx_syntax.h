@@ -39,6 +39,10 @@ struct FxShaderExpr {
     std::string variable;   // Variable / ArrayElement
     TokenSpan index;        // ArrayElement: the index expression
     TokenSpan asmBlock;     // Asm: from '{' to '}' of `asm { ... }` (see d3d9_asm.h)
+    // StreamOut: ConstructGSWithSO(shader, decl) (Effects 10) or (shader, decl0..decl3, rasterized
+    // stream) (Effects 11): the shader's tokens and each argument after it (a string, NULL or a number).
+    TokenSpan streamShader;
+    std::vector<TokenSpan> streamArguments;
     size_t token = 0;       // for diagnostics
 };
 

@@ -290,6 +290,26 @@ void addLiveRanges(const std::optional<std::map<std::uint32_t, std::vector<LiveR
         for (const LiveRange& r : it->second) out.rangesLive.push_back({r.offset, r.size, block});
 }
 
+// What stream output may capture (stream_output.h): each user-semantic output by the name
+// SPIRV-Cross gave it in the GLSL just made, and gl_Position; for a geometry shader, the vertices
+// of its output primitives.
+template <typename SemanticOf>
+void recordOutputs(spirv_cross::CompilerGLSL& compiler, const spirv_cross::ShaderResources& res, const SemanticOf& semanticOf, GlslShader& out) {
+    for (const auto& r : res.stage_outputs) {
+        std::string sem = semanticOf(r.id);
+        const auto& t = compiler.get_type(r.type_id);
+        if (sem.empty() || t.columns > 1 || !t.array.empty()) continue;  // matrices and arrays: several registers, not captured
+        auto [base, index] = splitSemantic(sem);
+        out.outputs.push_back({base + std::to_string(index), compiler.get_name(r.id), static_cast<int>(t.vecsize)});
+    }
+    for (const auto& b : res.builtin_outputs)
+        if (b.builtin == spv::BuiltInPosition) out.outputs.push_back({"SV_POSITION0", "gl_Position", 4});
+    const auto& modes = compiler.get_execution_mode_bitset();
+    if (modes.get(spv::ExecutionModeOutputPoints)) out.outputPrimitiveVertices = 1;
+    if (modes.get(spv::ExecutionModeOutputLineStrip)) out.outputPrimitiveVertices = 2;
+    if (modes.get(spv::ExecutionModeOutputTriangleStrip)) out.outputPrimitiveVertices = 3;
+}
+
 }  // namespace
 
 GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, const RewrittenEffect& effect,
@@ -537,6 +557,7 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
                     if (!t.array.empty()) out.clipDistances = static_cast<int>(t.array[0]);
                 }
         out.glsl = sampleMaskInFromGl(compiler.compile());
+        if (stage != ShaderStage::Pixel && stage != ShaderStage::Hull) recordOutputs(compiler, res, semanticOf, out);
         if (stage == ShaderStage::Geometry) {
             int clip = 0, cull = 0;  // per vertex: the inner of the input's two dimensions
             for (const auto& b : res.builtin_inputs) {

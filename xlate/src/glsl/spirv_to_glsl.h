@@ -64,6 +64,8 @@ struct GlslShader {
     bool writesDepth = false;
     int clipDistances = 0;  // the size of the gl_ClipDistance output (non-pixel stages)
     std::vector<Varying> varyingInputs, varyingOutputs;
+    std::vector<ShaderOutput> outputs;   // non-pixel stages: what stream output may capture
+    int outputPrimitiveVertices = 0;      // geometry: 1 points, 2 line strips, 3 triangle strips
     std::vector<StorageBinding> storage;   // SSBOs and images (UAVs, buffer SRVs)
     std::array<int, 3> threadGroupSize{};  // compute: the SPIR-V LocalSize
 };

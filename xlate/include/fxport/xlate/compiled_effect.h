@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "fxport/xlate/diagnostics.h"
+#include "fxport/xlate/stream_output.h"
 
 namespace fxport::xlate {
 
@@ -233,6 +234,13 @@ struct CompiledShader {
     // shaders compiled apart by semantic, moving a reader's locations to its writer's.
     std::vector<Varying> varyingInputs;
     std::vector<Varying> varyingOutputs;
+    // Vertex, geometry and domain shaders: every value they write by semantic (user semantics and
+    // SV_Position), with its GLSL name, for stream output to find; and the declaration a shader made
+    // by ConstructGSWithSO streams (empty for the others). A vertex shader with one is D3D's "null"
+    // geometry shader with stream output: its own outputs are captured.
+    std::vector<ShaderOutput> outputs;
+    StreamOutput streamOutput;
+    int outputPrimitiveVertices = 0;      // geometry shaders: 1 points, 2 line strips, 3 triangle strips
     std::vector<StorageBinding> storage;  // UAVs and buffer SRVs
     std::array<int, 3> threadGroupSize{};  // compute shaders: [numthreads(x, y, z)]
     Tessellation tessellation;            // hull and domain shaders

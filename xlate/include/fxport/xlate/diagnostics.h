@@ -38,6 +38,7 @@ inline constexpr const char* kMissingEntry = "FX1402";        // compile names a
 inline constexpr const char* kBadEntrySignature = "FX1403";   // entry parameter/return we cannot map
 inline constexpr const char* kUnsupported = "FX1404";         // asm {} blocks, stream output, ... (per pass)
 inline constexpr const char* kUnknownShader = "FX1405";       // pass refers to an undeclared shader variable
+inline constexpr const char* kBadStreamOutput = "FX1406";     // a ConstructGSWithSO declaration D3D or fxport refuses
 inline constexpr const char* kHlsl = "FX2001";                // glslang rejected the HLSL (type errors etc.)
 inline constexpr const char* kImplicitConversion = "FX2002";  // fxc's implicit truncation of an argument (warning X3206)
 inline constexpr const char* kSpirv = "FX2101";               // SPIR-V optimisation / cross-compilation failed
