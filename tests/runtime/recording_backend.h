@@ -254,13 +254,15 @@ public:
     }
 
     // A source holding `reject` fails to build (the log says so).
-    BackendObject createProgram(int stage, const std::string& source, std::string& log) override {
+    BackendObject createProgram(int stage, const std::string& source, const std::vector<std::string>& captured, std::string& log) override {
         if (source.find("reject") != std::string::npos) {
             calls.push_back("createProgram stage " + std::to_string(stage) + " rejected");
             log = "0:1: the recording backend rejects this source";
             return 0;
         }
-        return make("createProgram stage " + std::to_string(stage));
+        std::string line = "createProgram stage " + std::to_string(stage);
+        for (const std::string& c : captured) line += " " + c;
+        return make(line);
     }
     void deleteProgram(BackendObject program) override { release("deleteProgram", program); }
     BackendObject createComputePipeline(BackendObject program) override {
@@ -284,6 +286,14 @@ public:
         if (c.controlPoints > 0) line += " patches of " + std::to_string(c.controlPoints);
         calls.push_back(line);
     }
+    void beginStreamOutput(const std::array<StreamOutputBuffer, 4>& buffers, int primitiveVertices, BackendObject query) override {
+        std::string line = "beginStreamOutput " + std::to_string(primitiveVertices) + " query " + std::to_string(query);
+        for (const auto& b : buffers)
+            line += " " + std::to_string(b.buffer) + "@" + std::to_string(b.offset) + "+" + std::to_string(b.bytes);
+        calls.push_back(line);
+    }
+    void endStreamOutput() override { calls.push_back("endStreamOutput"); }
+    void setRasterizerDiscard(bool discard) override { calls.push_back(std::string("setRasterizerDiscard ") + (discard ? "on" : "off")); }
     void dispatch(int x, int y, int z) override {
         calls.push_back("dispatch " + std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z));
     }

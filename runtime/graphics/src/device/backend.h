@@ -114,6 +114,7 @@ enum class QueryKind {
     VerticesSubmitted, PrimitivesSubmitted, VertexShaderInvocations, GeometryShaderInvocations, GeometryShaderPrimitives,
     ClippingInputPrimitives, ClippingOutputPrimitives, FragmentShaderInvocations, TessControlPatches, TessEvaluationInvocations,
     ComputeShaderInvocations,
+    PrimitivesWritten,  // by stream output (between beginStreamOutput and endStreamOutput)
 };
 inline constexpr int kPipelineStatistics = 11;  // QueryKind::VerticesSubmitted + 0 .. 10
 inline QueryKind pipelineStatistic(int i) { return QueryKind(int(QueryKind::VerticesSubmitted) + i); }
@@ -267,8 +268,10 @@ public:
     virtual void invalidateFramebuffer(int colourTargets, bool depth, bool stencil) = 0;
 
     // Programs: one shader of `stage` (0 vertex .. 5 compute) made from `source`, its uniform blocks
-    // moved to the stage's binding range; 0 with the API's log in `log` when rejected.
-    virtual BackendObject createProgram(int stage, const std::string& source, std::string& log) = 0;
+    // moved to the stage's binding range; 0 with the API's log in `log` when rejected. `captured`:
+    // the outputs stream output writes (xlate::capturedVaryings: names, gaps, buffer changes), for
+    // the last stage before the rasteriser; empty for the others.
+    virtual BackendObject createProgram(int stage, const std::string& source, const std::vector<std::string>& captured, std::string& log) = 0;
     virtual void deleteProgram(BackendObject program) = 0;
     virtual BackendObject createComputePipeline(BackendObject program) = 0;
     virtual void deletePipeline(BackendObject pipeline) = 0;
@@ -279,6 +282,19 @@ public:
     virtual void bindStorageBuffer(int binding, BackendObject buffer, std::size_t offset, std::size_t bytes) = 0;
     virtual void bindStorageImage(int unit, BackendObject texture, SurfaceFormat format, bool writes) = 0;
     virtual void storageBarrier() = 0;
+
+    // Stream output: the draws between beginStreamOutput and endStreamOutput write the captured
+    // outputs of primitives of `primitiveVertices` vertices (1 points, 2 lines, 3 triangles) to
+    // `buffers` (one per slot, bytes 0: none) and count the primitives written into `query` (a
+    // PrimitivesWritten query). Rasterizer discard drops every primitive after it (D3D11's
+    // D3D11_SO_NO_RASTERIZED_STREAM).
+    struct StreamOutputBuffer {
+        BackendObject buffer = 0;
+        std::size_t offset = 0, bytes = 0;
+    };
+    virtual void beginStreamOutput(const std::array<StreamOutputBuffer, 4>& buffers, int primitiveVertices, BackendObject query) = 0;
+    virtual void endStreamOutput() = 0;
+    virtual void setRasterizerDiscard(bool discard) = 0;
 
     // Work: a draw with the bound pipeline, vertex array and state; a compute dispatch.
     virtual void draw(const DrawCall& call) = 0;

@@ -33,6 +33,9 @@ class GraphicsResource;
 struct ComputeAnalysis;
 struct ComputePasses;
 class FragmentRuns;  // fragment_tally.h
+namespace core {
+class ByteBuffer;  // front_end_core.h
+}
 
 
 struct GraphicsDevice::Impl {
@@ -106,6 +109,18 @@ struct GraphicsDevice::Impl {
     const ShaderProgram* makeLinkedReader(const ShaderProgram& reader, const ShaderProgram& writer);
     void dropLinkedReadersOf(BackendObject readerProgram);
     BackendObject boundPipeline = 0;
+
+    // --- stream output (stream_output.cpp): D3D10/11's SO targets, where the next draw whose last
+    // stage before the rasteriser streams writes in each (bytes from the buffer's start).
+    struct StreamTarget {
+        core::ByteBuffer* buffer = nullptr;
+        std::size_t offset = 0;
+    };
+    std::array<StreamTarget, xlate::kStreamOutputSlots> streamTargets{};
+    BackendObject primitivesWrittenQuery = 0;
+    // Every draw goes through here: with stream output, wrapped in its capture.
+    void issueDraw(const DrawCall& call);
+    void forgetStreamTarget(const core::ByteBuffer* buffer);
 
     // --- uniform buffers: wanted (set by Apply) and bound
     std::array<BackendObject, kUniformStages * kUniformBindingsPerStage> wantedUniformBuffers{};
@@ -268,7 +283,8 @@ struct GraphicsDevice::Impl {
     BackendObject createRenderbuffer();
     void deleteRenderbuffer(BackendObject& name);
     // Programs are shared by (stage, GLSL text) and reference-counted. `stage`: 0 vertex .. 5 compute.
-    BackendObject createProgram(int stage, const std::string& source, const std::string& label);
+    // `captured`: what stream output writes (Backend::createProgram), for a shader that streams.
+    BackendObject createProgram(int stage, const std::string& source, const std::string& label, const std::vector<std::string>& captured = {});
     struct CachedProgram {
         BackendObject program = 0;
         int references = 0;

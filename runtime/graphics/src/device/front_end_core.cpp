@@ -56,6 +56,7 @@ ByteBuffer::~ByteBuffer() { disposeFromDestructor(); }
 
 void ByteBuffer::releaseGpuObjects() {
     deviceImpl(device()).forgetStorage(this);
+    deviceImpl(device()).forgetStreamTarget(this);
     deviceImpl(device()).deleteBuffer(name_);
 }
 
@@ -208,7 +209,7 @@ ShaderCode::ShaderCode(GraphicsDevice& device, std::shared_ptr<const xlate::Comp
     program_->shader = &s;
     program_->label = label;
     program_->mayDiscard = s.glsl.find("discard") != std::string::npos;
-    program_->program = deviceImpl(device).createProgram(stage, s.glsl, label);
+    program_->program = deviceImpl(device).createProgram(stage, s.glsl, label, xlate::capturedVaryings(s.streamOutput));
 }
 
 ShaderCode::~ShaderCode() { disposeFromDestructor(); }
@@ -322,7 +323,7 @@ void issue(GraphicsDevice::Impl& d, GraphicsDevice::Impl::VertexArray& va, const
         call.indexSize = a.indexSize;
         call.baseVertex = a.baseVertex;
     }
-    d.backend->draw(call);
+    d.issueDraw(call);
 }
 
 // The element of `streams` feeding a vertex-shader input (by semantic, any name; feedsInput).

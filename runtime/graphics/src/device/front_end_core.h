@@ -5,6 +5,7 @@
 // target, instanced and byte-offset draws. Nothing here changes what an XNA call does.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -43,6 +44,10 @@ public:
     // Bytes [sourceOffset, sourceOffset + bytes) of `source` to `destinationOffset` (both ranges inside).
     void copyFrom(const ByteBuffer& source, std::size_t sourceOffset, std::size_t destinationOffset, std::size_t bytes);
     std::uint32_t backendObject() const { return name_; }
+    // D3D's BufferFilledSize: the bytes from the start to where stream output into it last stopped
+    // (what DrawAuto draws and an append continues from).
+    std::size_t streamOutputFilled() const { return streamFilled_; }
+    void setStreamOutputFilled(std::size_t bytes) { streamFilled_ = bytes; }
 
 protected:
     void releaseGpuObjects() override;
@@ -50,6 +55,7 @@ protected:
 private:
     std::size_t size_;
     std::uint32_t name_ = 0;
+    std::size_t streamFilled_ = 0;
 };
 
 // `count` elements of a ByteBuffer from element `first` read as texels of `format` (D3D11's typed
@@ -135,6 +141,12 @@ void setUniformBuffer(GraphicsDevice& device, int stage, int blockBinding, const
 // runtime array then holds; throws ArgumentError for a range outside the buffer or misaligned.
 void setStorageBuffer(GraphicsDevice& device, bool unorderedAccess, int slot, const ByteBuffer* buffer, std::size_t offset = 0,
                       std::size_t bytes = 0);
+// D3D10/11's SOSetTargets: buffer `slot` (null: none) takes what the draws whose last stage before
+// the rasteriser streams (xlate::StreamOutput) write, from byte offsets[slot], or with
+// kStreamOutputAppend from its streamOutputFilled(). Each draw moves the write position on.
+inline constexpr std::size_t kStreamOutputAppend = ~std::size_t(0);
+void setStreamOutputTargets(GraphicsDevice& device, const std::array<ByteBuffer*, 4>& buffers, const std::array<std::size_t, 4>& offsets);
+
 // Binds colour targets and a depth buffer of their size (null: none); the targets' own depth
 // buffers are not used. Resets the device's Viewport to the whole target (as SetRenderTargets).
 void setTargets(GraphicsDevice& device, const std::vector<RenderTargetBinding>& colour, DepthBuffer* depth);

@@ -499,7 +499,7 @@ void GraphicsDevice::DrawIndexedPrimitives(PrimitiveType primitiveType, int base
     const bool wide = Indices->IndexElementSize() == IndexElementSize::ThirtyTwoBits;
     const DrawCall draw{primitiveType, 0, count, startIndex, true, baseVertex, wide ? 4 : 2};
     if (d.computePasses && d.computePasses->tryDraw(primitiveType, primitiveCount, draw)) return;
-    d.backend->draw(draw);
+    d.issueDraw(draw);
 }
 
 void GraphicsDevice::DrawPrimitives(PrimitiveType primitiveType, int vertexStart, int primitiveCount) {
@@ -516,7 +516,7 @@ void GraphicsDevice::DrawPrimitives(PrimitiveType primitiveType, int vertexStart
     d.bindVertexBuffer();
     const DrawCall draw{primitiveType, 0, count, vertexStart};
     if (d.computePasses && d.computePasses->tryDraw(primitiveType, primitiveCount, draw)) return;
-    d.backend->draw(draw);
+    d.issueDraw(draw);
 }
 
 GraphicsDevice::Impl::VertexArray& GraphicsDevice::Impl::bindVertexBuffer() {
@@ -560,7 +560,7 @@ void GraphicsDevice::drawUser(PrimitiveType type, const void* vertices, std::siz
     DrawCall draw{type, 0, count, 0};
     if (d.computePasses && primitiveCount <= 2) draw.userDataHash = hashBytes(vertices, std::size_t(count) * stride);
     if (d.computePasses && d.computePasses->tryDraw(type, primitiveCount, draw)) return;
-    d.backend->draw(draw);
+    d.issueDraw(draw);
 }
 
 void GraphicsDevice::drawUserIndexed(PrimitiveType type, const void* vertices, std::size_t stride, int vertexCount,
@@ -598,7 +598,7 @@ void GraphicsDevice::drawUserIndexed(PrimitiveType type, const void* vertices, s
         draw.userDataHash = hashBytes(indices, std::size_t(count) * std::size_t(indexSize),
                                       hashBytes(vertices, std::size_t(vertexCount) * stride));
     if (d.computePasses && d.computePasses->tryDraw(type, primitiveCount, draw)) return;
-    d.backend->draw(draw);
+    d.issueDraw(draw);
 }
 
 // --- presentation and read-back
@@ -715,19 +715,23 @@ void GraphicsDevice::Impl::deleteRenderbuffer(BackendObject& name) {
     --live.renderbuffers;
     name = 0;
 }
-BackendObject GraphicsDevice::Impl::createProgram(int stage, const std::string& source, const std::string& label) {
-    // Identical GLSL for the same stage shares one program (a model's per-part material effects,
-    // the same effect loaded twice): effects hold references, the last release deletes it.
-    auto cached = programCache.find({stage, source});
+BackendObject GraphicsDevice::Impl::createProgram(int stage, const std::string& source, const std::string& label,
+                                                  const std::vector<std::string>& captured) {
+    // Identical GLSL for the same stage (and the same captured outputs) shares one program (a
+    // model's per-part material effects, the same effect loaded twice): effects hold references,
+    // the last release deletes it.
+    std::string key = source;
+    for (const std::string& c : captured) key += "\n// captured " + c;
+    auto cached = programCache.find({stage, key});
     if (cached != programCache.end()) {
         ++cached->second.references;
         return cached->second.program;
     }
     std::string log;
-    const BackendObject program = backend->createProgram(stage, source, log);
+    const BackendObject program = backend->createProgram(stage, source, captured, log);
     if (!program) throw InvalidOperation(label + ": the GL driver rejected the translated shader:\n" + log);
     ++live.programs;
-    programCache.emplace(std::make_pair(stage, source), CachedProgram{program, 1});
+    programCache.emplace(std::make_pair(stage, key), CachedProgram{program, 1});
     return program;
 }
 

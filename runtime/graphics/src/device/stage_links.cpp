@@ -36,7 +36,8 @@ const ShaderProgram* GraphicsDevice::Impl::makeLinkedReader(const ShaderProgram&
     linked->program.shader = &linked->shader;
     linked->program.label = reader.label + " [inputs linked to " + writer.label + "]";
     linked->program.mayDiscard = reader.mayDiscard;
-    linked->program.program = createProgram(reader.stage, linked->shader.glsl, linked->program.label);
+    linked->program.program =
+        createProgram(reader.stage, linked->shader.glsl, linked->program.label, xlate::capturedVaryings(linked->shader.streamOutput));
     return &linkedReaders.emplace(key, std::move(linked)).first->second->program;
 }
 

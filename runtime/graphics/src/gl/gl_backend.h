@@ -108,7 +108,13 @@ public:
                           bool depth, bool stencil, float depthValue, int stencilValue) override;
     void invalidateFramebuffer(int colourTargets, bool depth, bool stencil) override;
 
-    BackendObject createProgram(int stage, const std::string& source, std::string& log) override;
+    BackendObject createProgram(int stage, const std::string& source, const std::vector<std::string>& captured, std::string& log) override;
+    void beginStreamOutput(const std::array<StreamOutputBuffer, 4>& buffers, int primitiveVertices, BackendObject query) override;
+    void endStreamOutput() override;
+    void setRasterizerDiscard(bool discard) override {
+        if (discard) glEnable(GL_RASTERIZER_DISCARD);
+        else glDisable(GL_RASTERIZER_DISCARD);
+    }
     void deleteProgram(BackendObject program) override { glDeleteProgram(program); }
     BackendObject createComputePipeline(BackendObject program) override;
     void deletePipeline(BackendObject pipeline) override { glDeleteProgramPipelines(1, &pipeline); }

@@ -245,9 +245,43 @@ BackendObject GlBackend::createFramebuffer(const std::vector<ColorAttachment>& c
     return fbo;
 }
 
-BackendObject GlBackend::createProgram(int stage, const std::string& source, std::string& log) {
+namespace {
+
+// glCreateShaderProgramv's steps with the captured varyings named before the link (GL reads them
+// then). A shader that does not compile leaves its log in `log` and gives 0.
+GLuint createCapturingProgram(GLenum stage, const char* text, const std::vector<std::string>& captured, std::string& log) {
+    const GLuint shader = glCreateShader(stage);
+    glShaderSource(shader, 1, &text, nullptr);
+    glCompileShader(shader);
+    GLint compiled = 0;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &compiled);
+    if (!compiled) {
+        GLint length = 0;
+        glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+        log.assign(std::size_t(std::max(length, 1)), '\0');
+        glGetShaderInfoLog(shader, GLsizei(log.size()), nullptr, log.data());
+        glDeleteShader(shader);
+        return 0;
+    }
+    const GLuint program = glCreateProgram();
+    glProgramParameteri(program, GL_PROGRAM_SEPARABLE, GL_TRUE);
+    std::vector<const char*> names;
+    for (const std::string& n : captured) names.push_back(n.c_str());
+    glTransformFeedbackVaryings(program, GLsizei(names.size()), names.data(), GL_INTERLEAVED_ATTRIBS);
+    glAttachShader(program, shader);
+    glLinkProgram(program);
+    glDetachShader(program, shader);
+    glDeleteShader(shader);
+    return program;
+}
+
+}  // namespace
+
+BackendObject GlBackend::createProgram(int stage, const std::string& source, const std::vector<std::string>& captured, std::string& log) {
     const char* text = source.c_str();
-    GLuint program = glCreateShaderProgramv(glStageOf(stage), 1, &text);
+    GLuint program = 0;
+    if (captured.empty()) program = glCreateShaderProgramv(glStageOf(stage), 1, &text);
+    else if (!(program = createCapturingProgram(glStageOf(stage), text, captured, log))) return 0;
     GLint ok = 0;
     glGetProgramiv(program, GL_LINK_STATUS, &ok);
     if (!ok) {
@@ -298,6 +332,7 @@ GLenum queryTarget(QueryKind kind) {
     case QueryKind::TessControlPatches: return GL_TESS_CONTROL_SHADER_PATCHES_ARB;
     case QueryKind::TessEvaluationInvocations: return GL_TESS_EVALUATION_SHADER_INVOCATIONS_ARB;
     case QueryKind::ComputeShaderInvocations: return GL_COMPUTE_SHADER_INVOCATIONS_ARB;
+    case QueryKind::PrimitivesWritten: return GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN;
     }
     return GL_SAMPLES_PASSED;
 }
@@ -325,5 +360,23 @@ bool GlBackend::hasPipelineStatistics() {
 
 void GlBackend::beginStatistic(BackendObject query, QueryKind kind) { glBeginQuery(queryTarget(kind), query); }
 void GlBackend::endStatistic(QueryKind kind) { glEndQuery(queryTarget(kind)); }
+
+// Transform feedback on GL's default object: D3D binds its stream-output targets per draw from the
+// device's state, so no object needs to outlive a draw.
+void GlBackend::beginStreamOutput(const std::array<StreamOutputBuffer, 4>& buffers, int primitiveVertices, BackendObject query) {
+    for (std::size_t slot = 0; slot < buffers.size(); ++slot) {
+        const StreamOutputBuffer& b = buffers[slot];
+        if (b.bytes == 0) glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, GLuint(slot), 0);
+        else glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, GLuint(slot), b.buffer, GLintptr(b.offset), GLsizeiptr(b.bytes));
+    }
+    glBeginQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, query);
+    glBeginTransformFeedback(primitiveVertices == 1 ? GL_POINTS : primitiveVertices == 2 ? GL_LINES : GL_TRIANGLES);
+}
+
+void GlBackend::endStreamOutput() {
+    glEndTransformFeedback();
+    glEndQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
+    for (GLuint slot = 0; slot < 4; ++slot) glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, slot, 0);
+}
 
 }  // namespace fxport
