@@ -21,6 +21,7 @@ void Context::ClearState() {
     layout_ = nullptr;
     for (VertexSlot& v : vertexSlots_) v = VertexSlot{};
     indexBuffer_ = nullptr;
+    SOSetTargets(0, nullptr, nullptr);
     indexFormat_ = DXGI_FORMAT_UNKNOWN;
     indexOffset_ = 0;
     topology_ = D3D11_PRIMITIVE_TOPOLOGY_UNDEFINED;

@@ -76,6 +76,9 @@ public:
     void DrawIndexedInstanced(UINT IndexCountPerInstance, UINT InstanceCount, UINT StartIndexLocation, INT BaseVertexLocation,
                               UINT StartInstanceLocation) override;
     void Dispatch(UINT ThreadGroupCountX, UINT ThreadGroupCountY, UINT ThreadGroupCountZ) override;
+    void DrawAuto() override;  // stream_output.cpp
+    void SOSetTargets(UINT NumBuffers, ID3D11Buffer* const* ppSOTargets, const UINT* pOffsets) override;
+    void SOGetTargets(UINT NumBuffers, ID3D11Buffer** ppSOTargets) override;
     HRESULT Map(ID3D11Resource* pResource, UINT Subresource, D3D11_MAP MapType, UINT MapFlags,
                 D3D11_MAPPED_SUBRESOURCE* pMappedResource) override;
     void Unmap(ID3D11Resource* pResource, UINT Subresource) override;
@@ -151,6 +154,7 @@ private:
     };
     std::array<VertexSlot, D3D11_IA_VERTEX_INPUT_RESOURCE_SLOT_COUNT> vertexSlots_;
     ComPtr<Buffer> indexBuffer_;
+    std::array<ComPtr<Buffer>, D3D11_SO_BUFFER_SLOT_COUNT> soTargets_;  // SOSetTargets
     DXGI_FORMAT indexFormat_ = DXGI_FORMAT_UNKNOWN;
     UINT indexOffset_ = 0;
     D3D11_PRIMITIVE_TOPOLOGY topology_ = D3D11_PRIMITIVE_TOPOLOGY_UNDEFINED;

@@ -131,11 +131,14 @@ bool Context::prepare(const char* call) {
     GraphicsDevice& core = device_->core();
     core::DepthBuffer* depth = depthView_ ? &depthView_->buffer() : nullptr;
     const bool depthOnly = colour.empty();  // a shadow-map pass: depth-stencil view, no render target
-    if (depthOnly && !depth) {
+    // Stream output draws with no target at all (ParticlesGS's advance pass): what the rasteriser
+    // makes of it goes to a 1 x 1 scratch target that nothing reads.
+    const bool streaming = std::any_of(soTargets_.begin(), soTargets_.end(), [](const ComPtr<Buffer>& b) { return bool(b); });
+    if (depthOnly && !depth && !streaming) {
         note(at + "no render target or depth-stencil view bound; nothing drawn");
         return false;
     }
-    if (depthOnly) colour.emplace_back(&scratchTarget(depth->width(), depth->height()));
+    if (depthOnly) colour.emplace_back(&scratchTarget(depth ? depth->width() : 1, depth ? depth->height() : 1));
     const RenderTarget2D& first = *static_cast<RenderTarget2D*>(colour[0].RenderTarget);
     if (depth && (depth->width() != first.Width() || depth->height() != first.Height())) {
         note(at + "the depth-stencil view is " + std::to_string(depth->width()) + "x" + std::to_string(depth->height()) +
@@ -172,6 +175,16 @@ bool Context::prepare(const char* call) {
         const PixelShader& pixel = pixelShader_ ? *pixelShader_.Get() : emptyPixelShader();  // D3D draws depth without one
         const core::ShaderCode* stages[5] = {vertexShader_->code.get(), pixel.code.get(), codeOf(geometryShader_),
                                              codeOf(hullShader_), codeOf(domainShader_)};
+        // A geometry shader made with stream output from vertex-shader bytecode (D3D's "null" one)
+        // is the vertex shader capturing its own outputs: it runs in the vertex stage.
+        if (stages[2] && stages[2]->shader().profile.stage == xlate::ShaderStage::Vertex) {
+            if (stages[2]->shader().glsl != stages[0]->shader().glsl) {
+                note(std::string(call) + ": the geometry shader streams a vertex shader other than the bound one; nothing drawn");
+                return false;
+            }
+            stages[0] = stages[2];
+            stages[2] = nullptr;
+        }
         core::setShaderStages(core, stages);
         const ShaderBindings* bindings[5] = {&vertexShader_->bindings, &pixel.bindings,
                                              geometryShader_ ? &geometryShader_->bindings : nullptr,

@@ -86,6 +86,16 @@ public:
     }
     HRESULT CreateVertexShader(const void* b, SIZE_T l, ID3D10VertexShader** pp) override { return device_->CreateVertexShader(b, l, nullptr, pp); }
     HRESULT CreatePixelShader(const void* b, SIZE_T l, ID3D10PixelShader** pp) override { return device_->CreatePixelShader(b, l, nullptr, pp); }
+    HRESULT CreateGeometryShaderWithStreamOutput(const void* b, SIZE_T l, const D3D10_SO_DECLARATION_ENTRY* entries, UINT count, UINT stride,
+                                                 ID3D10GeometryShader** pp) override {
+        // D3D10's entries are D3D11's on stream 0; one stride, of slot 0 (D3D10 writes several slots
+        // only with one entry each, whose strides are their sizes).
+        std::vector<D3D11_SO_DECLARATION_ENTRY> d3d11(count);
+        for (UINT i = 0; i < count && entries; ++i)
+            d3d11[i] = {0, entries[i].SemanticName, entries[i].SemanticIndex, entries[i].StartComponent, entries[i].ComponentCount, entries[i].OutputSlot};
+        const UINT strides[1] = {stride};
+        return device_->CreateGeometryShaderWithStreamOutput(b, l, entries ? d3d11.data() : nullptr, count, strides, 1, 0, nullptr, pp);
+    }
     HRESULT CreateGeometryShader(const void* b, SIZE_T l, ID3D10GeometryShader** pp) override {
         return device_->CreateGeometryShader(b, l, nullptr, pp);
     }
@@ -150,6 +160,14 @@ public:
     void Draw(UINT c, UINT s) override { context_->Draw(c, s); }
     void DrawIndexed(UINT c, UINT s, INT b) override { context_->DrawIndexed(c, s, b); }
     void DrawInstanced(UINT c, UINT n, UINT s, UINT i) override { context_->DrawInstanced(c, n, s, i); }
+    void DrawAuto() override { context_->DrawAuto(); }
+    void SOSetTargets(UINT n, ID3D10Buffer* const* pp, const UINT* offsets) override { context_->SOSetTargets(n, pp, offsets); }
+    // D3D10 answers the offsets too: fxport's are where the next stream output writes, which D3D10
+    // reports as the offsets last set (-1 for an append).
+    void SOGetTargets(UINT n, ID3D10Buffer** pp, UINT* offsets) override {
+        context_->SOGetTargets(n, pp);
+        for (UINT i = 0; offsets && i < n; ++i) offsets[i] = 0;
+    }
     void DrawIndexedInstanced(UINT c, UINT n, UINT s, INT b, UINT i) override { context_->DrawIndexedInstanced(c, n, s, b, i); }
     void ClearRenderTargetView(ID3D10RenderTargetView* v, const FLOAT c[4]) override { context_->ClearRenderTargetView(v, c); }
     void ClearDepthStencilView(ID3D10DepthStencilView* v, UINT f, FLOAT d, UINT8 s) override { context_->ClearDepthStencilView(v, f, d, s); }

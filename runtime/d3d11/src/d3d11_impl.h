@@ -379,6 +379,8 @@ public:
     HRESULT CreatePixelShader(const void* pShaderBytecode, SIZE_T BytecodeLength, ID3D11ClassLinkage* pClassLinkage,
                               ID3D11PixelShader** ppPixelShader) override;
     HRESULT CreateGeometryShader(const void*, SIZE_T, ID3D11ClassLinkage*, ID3D11GeometryShader** pp) override;
+    HRESULT CreateGeometryShaderWithStreamOutput(const void*, SIZE_T, const D3D11_SO_DECLARATION_ENTRY*, UINT, const UINT*, UINT, UINT,
+                                                 ID3D11ClassLinkage*, ID3D11GeometryShader** pp) override;  // stream_output.cpp
     HRESULT CreateHullShader(const void*, SIZE_T, ID3D11ClassLinkage*, ID3D11HullShader** pp) override;
     HRESULT CreateDomainShader(const void*, SIZE_T, ID3D11ClassLinkage*, ID3D11DomainShader** pp) override;
     HRESULT CreateComputeShader(const void*, SIZE_T, ID3D11ClassLinkage*, ID3D11ComputeShader** pp) override;

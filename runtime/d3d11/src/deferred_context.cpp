@@ -131,6 +131,13 @@ public:
         act([=](auto& c) { c.DrawIndexedInstanced(n, instances, first, base, firstInstance); });
     }
     void Dispatch(UINT x, UINT y, UINT z) override { act([=](auto& c) { c.Dispatch(x, y, z); }); }
+    void DrawAuto() override { act([](auto& c) { c.DrawAuto(); }); }
+    void SOSetTargets(UINT n, ID3D11Buffer* const* b, const UINT* offsets) override {
+        state([n, held = hold(b, n), o = copyOf(offsets, n)](auto& c) { c.SOSetTargets(n, orNull(raw(held)), orNull(o)); });
+    }
+    void SOGetTargets(UINT n, ID3D11Buffer** b) override {  // a deferred context answers what it was given: nothing here
+        for (UINT i = 0; b && i < n; ++i) b[i] = nullptr;
+    }
     void UpdateSubresource(ID3D11Resource* dst, UINT sub, const D3D11_BOX* box, const void* data, UINT rowPitch, UINT depthPitch) override;
     void CopyResource(ID3D11Resource* dst, ID3D11Resource* src) override {
         act([to = ComPtr<ID3D11Resource>(dst), from = ComPtr<ID3D11Resource>(src)](auto& c) { c.CopyResource(to.Get(), from.Get()); });

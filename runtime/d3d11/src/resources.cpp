@@ -116,11 +116,12 @@ HRESULT Device::CreateBuffer(const D3D11_BUFFER_DESC* pDesc, const D3D11_SUBRESO
                                           " for a constant buffer (at most 4096 registers, 65536 bytes)");
     }
     const UINT known = D3D11_BIND_VERTEX_BUFFER | D3D11_BIND_INDEX_BUFFER | D3D11_BIND_CONSTANT_BUFFER | D3D11_BIND_SHADER_RESOURCE |
-                       D3D11_BIND_UNORDERED_ACCESS;
+                       D3D11_BIND_UNORDERED_ACCESS | D3D11_BIND_STREAM_OUTPUT;
     if (d.BindFlags & ~known)
         return fail(E_NOTIMPL, "CreateBuffer: D3D11_BUFFER_DESC.BindFlags = " + std::to_string(d.BindFlags) +
-                                   ": fxport binds buffers as vertex, index, constant, shader-resource and unordered-access buffers "
-                                   "(no stream output)");
+                                   ": fxport binds buffers as vertex, index, constant, shader-resource, unordered-access and stream-output buffers");
+    if ((d.BindFlags & D3D11_BIND_STREAM_OUTPUT) && d.Usage != D3D11_USAGE_DEFAULT)
+        return fail(E_INVALIDARG, "CreateBuffer: a stream-output buffer (D3D11_BIND_STREAM_OUTPUT) has D3D11_USAGE_DEFAULT");
     if (HRESULT hr = checkBufferMisc(d); FAILED(hr)) return hr;
     if (HRESULT hr = checkUsage(call, "D3D11_BUFFER_DESC", d.Usage, d.BindFlags, d.CPUAccessFlags, pInitialData && pInitialData->pSysMem); FAILED(hr))
         return hr;

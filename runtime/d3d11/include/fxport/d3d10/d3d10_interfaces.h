@@ -5,7 +5,7 @@
 // objects are D3D11's (ID3D10Texture2D is ID3D11Texture2D ...), so either API's calls take them.
 // ID3D10Buffer::Map/Unmap map on the buffer (through the immediate context underneath); queries
 // and predicates are D3D10's own objects (Begin, End and GetData on the query) over D3D11's.
-// Missing here: ID3D10Texture2D::Map (use fxport's D3D11 context: GetD3D11Context()), stream output.
+// Missing here: ID3D10Texture2D::Map (use fxport's D3D11 context: GetD3D11Context()).
 #pragma once
 
 #include "fxport/d3d10/d3d10_types.h"
@@ -69,6 +69,9 @@ public:
     virtual HRESULT CreateVertexShader(const void* pShaderBytecode, SIZE_T BytecodeLength, ID3D10VertexShader** ppVertexShader) = 0;
     virtual HRESULT CreatePixelShader(const void* pShaderBytecode, SIZE_T BytecodeLength, ID3D10PixelShader** ppPixelShader) = 0;
     virtual HRESULT CreateGeometryShader(const void* pShaderBytecode, SIZE_T BytecodeLength, ID3D10GeometryShader** ppGeometryShader) = 0;
+    virtual HRESULT CreateGeometryShaderWithStreamOutput(const void* pShaderBytecode, SIZE_T BytecodeLength,
+                                                         const D3D10_SO_DECLARATION_ENTRY* pSODeclaration, UINT NumEntries,
+                                                         UINT OutputStreamStride, ID3D10GeometryShader** ppGeometryShader) = 0;
     virtual HRESULT CreateBlendState(const D3D10_BLEND_DESC* pBlendStateDesc, ID3D10BlendState** ppBlendState) = 0;
     virtual HRESULT CreateDepthStencilState(const D3D10_DEPTH_STENCIL_DESC* pDepthStencilDesc,
                                             ID3D10DepthStencilState** ppDepthStencilState) = 0;
@@ -105,6 +108,9 @@ public:
     virtual void DrawInstanced(UINT VertexCountPerInstance, UINT InstanceCount, UINT StartVertexLocation, UINT StartInstanceLocation) = 0;
     virtual void DrawIndexedInstanced(UINT IndexCountPerInstance, UINT InstanceCount, UINT StartIndexLocation, INT BaseVertexLocation,
                                       UINT StartInstanceLocation) = 0;
+    virtual void DrawAuto() = 0;
+    virtual void SOSetTargets(UINT NumBuffers, ID3D10Buffer* const* ppSOTargets, const UINT* pOffsets) = 0;
+    virtual void SOGetTargets(UINT NumBuffers, ID3D10Buffer** ppSOTargets, UINT* pOffsets) = 0;
     virtual void ClearRenderTargetView(ID3D10RenderTargetView* pRenderTargetView, const FLOAT ColorRGBA[4]) = 0;
     virtual void ClearDepthStencilView(ID3D10DepthStencilView* pDepthStencilView, UINT ClearFlags, FLOAT Depth, UINT8 Stencil) = 0;
     virtual void UpdateSubresource(ID3D10Resource* pDstResource, UINT DstSubresource, const D3D10_BOX* pDstBox, const void* pSrcData,

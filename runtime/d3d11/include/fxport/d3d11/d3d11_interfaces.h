@@ -186,6 +186,13 @@ public:
     virtual void DrawIndexedInstanced(UINT IndexCountPerInstance, UINT InstanceCount, UINT StartIndexLocation,
                                       INT BaseVertexLocation, UINT StartInstanceLocation) = 0;
     virtual void Dispatch(UINT ThreadGroupCountX, UINT ThreadGroupCountY, UINT ThreadGroupCountZ) = 0;
+    // Draws the vertices stream output last wrote into the vertex buffer at slot 0 (its filled size
+    // from the bound offset, divided by the bound stride).
+    virtual void DrawAuto() = 0;
+    // --- stream output: buffers written by a geometry shader made with stream output; an offset of
+    // -1 (0xffffffff) appends where the buffer's last stream output ended.
+    virtual void SOSetTargets(UINT NumBuffers, ID3D11Buffer* const* ppSOTargets, const UINT* pOffsets) = 0;
+    virtual void SOGetTargets(UINT NumBuffers, ID3D11Buffer** ppSOTargets) = 0;
     // --- resources
     virtual HRESULT Map(ID3D11Resource* pResource, UINT Subresource, D3D11_MAP MapType, UINT MapFlags,
                         D3D11_MAPPED_SUBRESOURCE* pMappedResource) = 0;
@@ -251,6 +258,12 @@ public:
                                       ID3D11PixelShader** ppPixelShader) = 0;
     virtual HRESULT CreateGeometryShader(const void* pShaderBytecode, SIZE_T BytecodeLength, ID3D11ClassLinkage* pClassLinkage,
                                          ID3D11GeometryShader** ppGeometryShader) = 0;
+    // A geometry shader (or, from vertex-shader bytecode, D3D's "null" geometry shader) whose output
+    // vertices are written to the stream-output targets, as the declaration says.
+    virtual HRESULT CreateGeometryShaderWithStreamOutput(const void* pShaderBytecode, SIZE_T BytecodeLength,
+                                                         const D3D11_SO_DECLARATION_ENTRY* pSODeclaration, UINT NumEntries,
+                                                         const UINT* pBufferStrides, UINT NumStrides, UINT RasterizedStream,
+                                                         ID3D11ClassLinkage* pClassLinkage, ID3D11GeometryShader** ppGeometryShader) = 0;
     virtual HRESULT CreateHullShader(const void* pShaderBytecode, SIZE_T BytecodeLength, ID3D11ClassLinkage* pClassLinkage,
                                      ID3D11HullShader** ppHullShader) = 0;
     virtual HRESULT CreateDomainShader(const void* pShaderBytecode, SIZE_T BytecodeLength, ID3D11ClassLinkage* pClassLinkage,

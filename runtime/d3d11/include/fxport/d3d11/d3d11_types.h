@@ -18,6 +18,7 @@ using FLOAT = float;
 using ULONG = std::uint32_t;
 using SIZE_T = std::size_t;
 using UINT8 = std::uint8_t;
+using BYTE = std::uint8_t;
 using LPCSTR = const char*;
 using LPCVOID = const void*;
 
@@ -306,6 +307,20 @@ struct D3D11_INPUT_ELEMENT_DESC {
     D3D11_INPUT_CLASSIFICATION InputSlotClass = D3D11_INPUT_PER_VERTEX_DATA;
     UINT InstanceDataStepRate = 0;
 };
+// Stream output (CreateGeometryShaderWithStreamOutput): one entry per captured output or gap
+// (SemanticName null), and the buffer slots SOSetTargets binds.
+struct D3D11_SO_DECLARATION_ENTRY {
+    UINT Stream = 0;
+    LPCSTR SemanticName = nullptr;
+    UINT SemanticIndex = 0;
+    BYTE StartComponent = 0;
+    BYTE ComponentCount = 0;
+    BYTE OutputSlot = 0;
+};
+constexpr UINT D3D11_SO_NO_RASTERIZED_STREAM = 0xffffffffu;
+constexpr UINT D3D11_SO_BUFFER_SLOT_COUNT = 4;
+constexpr UINT D3D11_SO_STREAM_COUNT = 4;
+constexpr UINT D3D11_SO_OUTPUT_COMPONENT_COUNT = 128;
 enum D3D11_PRIMITIVE_TOPOLOGY : UINT {
     D3D11_PRIMITIVE_TOPOLOGY_UNDEFINED = 0, D3D11_PRIMITIVE_TOPOLOGY_POINTLIST = 1, D3D11_PRIMITIVE_TOPOLOGY_LINELIST = 2,
     D3D11_PRIMITIVE_TOPOLOGY_LINESTRIP = 3, D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST = 4, D3D11_PRIMITIVE_TOPOLOGY_TRIANGLESTRIP = 5,
