@@ -170,6 +170,11 @@ bool Context::prepare(const char* call) {
         // The pass binds its shaders, constants and textures and sets the states it names over
         // the context's (Effects11's Apply does the same through the context's Set calls).
         effectPass_->Apply();
+        // SetPixelShader(NULL): D3D runs no pixel shader (depth only; a stream-output pass).
+        if (core::fillEmptyPixelStage(core, *emptyPixelShader().code)) {
+            core.BlendState.ColorWriteChannels = core.BlendState.ColorWriteChannels1 = ColorWriteChannels::None;
+            core.BlendState.ColorWriteChannels2 = core.BlendState.ColorWriteChannels3 = ColorWriteChannels::None;
+        }
     } else {
         auto codeOf = [](const auto& shader) { return shader ? shader->code.get() : nullptr; };
         const PixelShader& pixel = pixelShader_ ? *pixelShader_.Get() : emptyPixelShader();  // D3D draws depth without one

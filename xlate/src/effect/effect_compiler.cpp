@@ -922,6 +922,7 @@ void EffectBuilder::buildTechniques() {
                                        : stage == ShaderStage::Compute ? pass.computeShader
                                                                        : pass.geometryShader;
                 if (!resolveShader(e, stage, target, a.nameToken)) pass.valid = false;
+                if (stage == ShaderStage::Pixel && a.isCall) pass.nullPixelShader = e.kind == FxShaderExpr::Kind::Null;
             }
             if (t.name != kLooseTechnique) checkTessellationPass(pass, p.token);
             if (pass.valid && !foldNullGeometryShader(pass, p.token)) pass.valid = false;

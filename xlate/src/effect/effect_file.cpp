@@ -343,6 +343,7 @@ json techniquesJson(const CompiledEffect& effect, bool withLocation) {
             }
             json pj{{"name", p.name}, {"valid", p.valid}, {"vertexShader", toJson(p.vertexShader)},
                     {"pixelShader", toJson(p.pixelShader)}, {"geometryShader", toJson(p.geometryShader)}, {"states", states}};
+            if (p.nullPixelShader) pj["nullPixelShader"] = true;
             if (!p.hullShader.shaders.empty()) pj["hullShader"] = toJson(p.hullShader);
             if (!p.domainShader.shaders.empty()) pj["domainShader"] = toJson(p.domainShader);
             if (!p.computeShader.shaders.empty()) pj["computeShader"] = toJson(p.computeShader);
@@ -615,6 +616,7 @@ CompiledEffect deserializeEffect(std::string_view text, const std::string& nameF
                 pass.vertexShader = choiceFrom(p.at("vertexShader"));
                 pass.pixelShader = choiceFrom(p.at("pixelShader"));
                 pass.geometryShader = choiceFrom(p.at("geometryShader"));
+                pass.nullPixelShader = p.value("nullPixelShader", false);
                 if (p.contains("hullShader")) pass.hullShader = choiceFrom(p["hullShader"]);
                 if (p.contains("domainShader")) pass.domainShader = choiceFrom(p["domainShader"]);
                 if (p.contains("computeShader")) pass.computeShader = choiceFrom(p["computeShader"]);

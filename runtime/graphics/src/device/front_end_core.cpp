@@ -263,6 +263,13 @@ void setStorageBuffer(GraphicsDevice& device, bool unorderedAccess, int slot, co
     else d.resourceBuffers[std::size_t(slot)] = wanted;
 }
 
+bool fillEmptyPixelStage(GraphicsDevice& device, const ShaderCode& code) {
+    GraphicsDevice::Impl& d = deviceImpl(device);
+    if (d.shaders[1]) return false;
+    d.shaders[1] = &code.program();
+    return true;
+}
+
 void setUniformBuffer(GraphicsDevice& device, int stage, int blockBinding, const ByteBuffer* buffer) {
     if (stage < 0 || stage >= kUniformStages || blockBinding < 0 || blockBinding >= kUniformBindingsPerStage || blockBinding == kUnusedUniformBinding)
         throw ArgumentError("uniform binding " + std::to_string(blockBinding) + " of stage " + std::to_string(stage) +

@@ -129,6 +129,9 @@ private:
 // is off -- vertex and pixel are required), as an effect pass with those stages would, with no D3D9
 // pass emulation.
 void setShaderStages(GraphicsDevice& device, const ShaderCode* const (&stages)[5]);
+// After an effect pass whose pixel stage is NULL (xlate::Pass::nullPixelShader): binds `code` (a
+// pixel shader that writes nothing) there and returns true; false when a pixel shader is bound.
+bool fillEmptyPixelStage(GraphicsDevice& device, const ShaderCode& code);
 // The compute shader GraphicsDevice::DispatchCompute runs (null: none).
 void setComputeShader(GraphicsDevice& device, const ShaderCode* computeShader);
 // Binds `buffer` (null: none) to uniform-block binding `blockBinding` of `stage` (0 vertex, 1 pixel,

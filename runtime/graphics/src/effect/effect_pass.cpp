@@ -98,6 +98,7 @@ void EffectPass::applyThis() {
             // D3D: a stage the pass does not assign keeps its shader -- except the geometry, hull
             // and domain stages, which a pass with a vertex shader and none of its own runs without.
             if (stage >= 2 && stage < kStageCount && !pass.vertexShader.shaders.empty()) d.shaders[std::size_t(stage)] = nullptr;
+            if (stage == 1 && pass.nullPixelShader) d.shaders[1] = nullptr;  // Effects 10/11's SetPixelShader(NULL): a front end supplies none
             continue;
         }
         int chosen = chooseShader(e, choice, technique.name, pass.name);

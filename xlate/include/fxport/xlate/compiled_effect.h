@@ -326,6 +326,9 @@ struct Pass {
     ShaderChoice vertexShader, pixelShader, geometryShader;
     ShaderChoice hullShader, domainShader, computeShader;  // technique11: SetHullShader ...
     std::vector<StateAssignment> states;  // in source order; later assignments win
+    // SetPixelShader(NULL) (Effects 10/11): no pixel shader runs, where an unassigned stage keeps
+    // the one before (a stream-output pass draws nothing, or depth only).
+    bool nullPixelShader = false;
     bool valid = true;                    // false: a diagnostic says why (e.g. asm block)
     SourceLocation declaredAt;
 };
