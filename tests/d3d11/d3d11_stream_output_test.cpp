@@ -351,4 +351,17 @@ TEST(StreamOutput, D3D10EffectPassStreamsThroughConstructGSWithSO) {
         for (int c = 0; c < 3; ++c) EXPECT_EQ(floats[i * 4 + std::size_t(c)], points[i].pos[c]);
         EXPECT_EQ(floats[i * 4 + 3], points[i].counter);
     }
+
+    // D3D10's SOGetTargets answers the buffers and the offsets SOSetTargets was given.
+    ID3D11Buffer* t = target.Get();
+    const UINT append = 0xffffffffu;
+    device->SOSetTargets(1, &t, &append);
+    ID3D11Buffer* bound[2] = {};
+    UINT offsets[2] = {7, 7};
+    device->SOGetTargets(2, bound, offsets);
+    EXPECT_EQ(bound[0], t);
+    EXPECT_EQ(bound[1], nullptr);
+    EXPECT_EQ(offsets[0], append);
+    EXPECT_EQ(offsets[1], 0u);
+    if (bound[0]) bound[0]->Release();
 }

@@ -167,6 +167,7 @@ TEST(StreamOutputEffect, BadDeclarationsAreRefusedAtTheirLine) {
         {"ConstructGSWithSO(CompileShader(gs_4_0, GS()), \"POSITION.xyz\")", "captures an output whole"},
         {"ConstructGSWithSO(CompileShader(gs_5_0, GS()), NULL, \"COUNTER.x\", NULL, NULL, 0)", "stream 0 only"},
         {"ConstructGSWithSO(CompileShader(gs_5_0, GS()), \"COUNTER.x\", NULL, NULL, NULL, 9)", "rasterized stream 9"},
+        {"ConstructGSWithSO(CompileShader(gs_5_0, GS()), \"COUNTER.x\", NULL, NULL, NULL, 1)", "rasterizes stream 0 only"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.gs);

@@ -139,8 +139,7 @@ TEST_P(RealWorldFixture, TranslatesAndLinksOrNamesWhatIsUnsupported) {
     const std::string path = GetParam();
     // Constructs fxport does not translate, each with the diagnostic a user gets.
     static const std::map<std::string, std::string> unsupported = {
-        {"asm_sm1/FixedFunction.fx", "FX1404"},
-        {"dx10_11/Technique11Shadows.fx", "FX1404"}};
+        {"asm_sm1/FixedFunction.fx", "FX1404"}};
     std::string rel = fs::path(path).lexically_relative("tests/fixtures/realworld").generic_string();
     auto it = unsupported.find(rel);
     if (it != unsupported.end()) {

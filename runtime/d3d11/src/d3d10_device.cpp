@@ -1,6 +1,7 @@
 // D3D10's device as a thin adapter (fxport/d3d10/d3d10_interfaces.h): every call goes to the D3D11
 // device or its immediate context, converting the two descriptions D3D10 spells differently
 // (D3D10_VIEWPORT, D3D10_BLEND_DESC). Resources, views, shaders and states are the D3D11 objects.
+#include <array>
 #include <atomic>
 
 #include "d3d10_queries.h"
@@ -161,12 +162,14 @@ public:
     void DrawIndexed(UINT c, UINT s, INT b) override { context_->DrawIndexed(c, s, b); }
     void DrawInstanced(UINT c, UINT n, UINT s, UINT i) override { context_->DrawInstanced(c, n, s, i); }
     void DrawAuto() override { context_->DrawAuto(); }
-    void SOSetTargets(UINT n, ID3D10Buffer* const* pp, const UINT* offsets) override { context_->SOSetTargets(n, pp, offsets); }
-    // D3D10 answers the offsets too: fxport's are where the next stream output writes, which D3D10
-    // reports as the offsets last set (-1 for an append).
+    void SOSetTargets(UINT n, ID3D10Buffer* const* pp, const UINT* offsets) override {
+        for (UINT i = 0; i < soOffsets_.size(); ++i) soOffsets_[i] = i < n && pp && pp[i] && offsets ? offsets[i] : 0;
+        context_->SOSetTargets(n, pp, offsets);
+    }
+    // D3D10 answers the offsets too: the ones SOSetTargets was given (-1 for an append).
     void SOGetTargets(UINT n, ID3D10Buffer** pp, UINT* offsets) override {
         context_->SOGetTargets(n, pp);
-        for (UINT i = 0; offsets && i < n; ++i) offsets[i] = 0;
+        for (UINT i = 0; offsets && i < n; ++i) offsets[i] = i < soOffsets_.size() ? soOffsets_[i] : 0;
     }
     void DrawIndexedInstanced(UINT c, UINT n, UINT s, INT b, UINT i) override { context_->DrawIndexedInstanced(c, n, s, b, i); }
     void ClearRenderTargetView(ID3D10RenderTargetView* v, const FLOAT c[4]) override { context_->ClearRenderTargetView(v, c); }
@@ -183,6 +186,7 @@ public:
         context_->ClearState();
         predicate_ = nullptr;
         predicateValue_ = FALSE;
+        soOffsets_ = {};
     }
     void Flush() override { context_->Flush(); }
     HRESULT CreateQuery(const D3D10_QUERY_DESC* d, ID3D10Query** pp) override {
@@ -216,6 +220,7 @@ public:
 private:
     ComPtr<ID3D11Device> device_;
     ComPtr<ID3D11DeviceContext> context_;
+    std::array<UINT, 4> soOffsets_{};  // what SOSetTargets was given, which SOGetTargets answers
     ComPtr<ID3D10Predicate> predicate_;  // the D3D10 object SetPredication was given (GetPredication's answer)
     BOOL predicateValue_ = FALSE;
     std::atomic<ULONG> references_{1};

@@ -1023,6 +1023,7 @@ bool EffectBuilder::readStreamOutput(const FxShaderExpr& expr, const CompiledSha
         }
         so.rasterizedStream = value == 0xFFFFFFFFL ? kNoRasterizedStream : static_cast<int>(value);
     }
+    if (options_.skipShaders) return true;  // an outline compiles no shader: there are no outputs to resolve against
     std::string why;
     if (!resolveStreamOutput(shader.outputs, so, why)) {
         error(diag::kBadStreamOutput, "ConstructGSWithSO('" + shader.entryPoint + "'): " + why, args.empty() ? expr.token : args[0].begin);

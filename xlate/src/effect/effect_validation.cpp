@@ -61,6 +61,11 @@ std::optional<std::string> checkStreamOutput(const CompiledShader& s) {
     if (!within(s.outputPrimitiveVertices, 0, 3)) return " emits primitives of " + std::to_string(s.outputPrimitiveVertices) + " vertices";
     if (s.streamOutput.empty()) return std::nullopt;
     if (s.profile.stage != ShaderStage::Vertex && s.profile.stage != ShaderStage::Geometry) return " streams output from a stage that cannot";
+    if (s.glsl.empty()) {  // an outline (CompileOptions::skipShaders): parsed, never resolved
+        for (const auto& e : s.streamOutput.entries)
+            if (!e.varying.empty()) return "'s stream output names variables of a shader that was not compiled";
+        return std::nullopt;
+    }
     StreamOutput again = s.streamOutput;
     for (auto& e : again.entries) e.varying.clear();
     std::string why;

@@ -99,6 +99,10 @@ bool resolveStreamOutput(const std::vector<ShaderOutput>& outputs, StreamOutput&
         error = "rasterized stream " + std::to_string(so.rasterizedStream) + " (0 to 3, or -1 for none)";
         return false;
     }
+    if (so.rasterizedStream > 0) {  // GL rasterizes stream 0
+        error = "rasterized stream " + std::to_string(so.rasterizedStream) + ": fxport rasterizes stream 0 only (or none)";
+        return false;
+    }
     std::array<int, kStreamOutputSlots> used{};
     std::array<int, kStreamOutputSlots> slotStream{-1, -1, -1, -1};
     std::set<std::string> captured;
