@@ -109,6 +109,18 @@ TEST_P(HlslShapes, DeterminantOfNonSquareAndTransposeOfOneRow) {
     expectPixel(draw(*e), expected, 1e-3f);
 }
 
+// determinant of a matrix of one row or one column is its first element (the top-left 1x1), as
+// for float1x1.
+TEST_P(HlslShapes, DeterminantOfOneRowOrOneColumnIsTheFirstElement) {
+    auto e = effect("float4 A;",
+                    "float2x1 c = {A.y, A.x}; float1x3 r = {A.z, A.x, A.y}; float1x1 one = A.w;"
+                    "return float4(determinant(c), determinant(r), determinant(one), 1);");
+    const float a[4] = {1.5f, -6.0f, 11.0f, 0.25f};
+    e->Parameters["A"].SetValue(Vector4(a[0], a[1], a[2], a[3]));
+    const float expected[4] = {a[1], a[2], a[3], 1};
+    expectPixel(draw(*e), expected);
+}
+
 // An array passed to a parameter that is an array of another shape with as many elements: the
 // elements in order (float a[2][3] from a float f[3][2] or a float g[6]).
 TEST_P(HlslShapes, ArrayArgumentOfAnotherShapeTakesElementsInOrder) {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <set>
 #include <string>
+#include <string_view>
 
 #include "hlsl/call_arguments.h"
 #include "hlsl/hlsl_types.h"
@@ -44,6 +45,22 @@ bool isScalar(const EffectSyntax& syntax, const FxFunction& f, size_t b, size_t 
     return type.ok && type.rows * type.columns == 1 && (!matrixOnly || type.isMatrix || type.scalar == syntax.resolveType(d->type));
 }
 
+// Whether tokens [b, e) of `f` are one local variable or parameter declared as a matrix of one row
+// or one column (float1x1, float2x1, float1x3 ...): fxc's determinant of a non-square matrix is that of its
+// top-left square, here its first element (degenerate_matrices.h makes such a matrix a vector,
+// whose .x it is; glslang takes no float1 where the helper's float is).
+bool isOneLineMatrix(const EffectSyntax& syntax, const FxFunction& f, size_t b, size_t e) {
+    const auto& t = syntax.tokens;
+    if (e != b + 1 || !t[b].isIdent()) return false;
+    // Only a local or a parameter: a uniform keeps its matrix type (its register layout).
+    const bool parameter = std::any_of(f.parameters.begin(), f.parameters.end(), [&](const FxParameter& p) { return p.name == t[b].text; });
+    if (!parameter && !f.declarationSites.count(t[b].text)) return false;
+    auto d = declaredVariable(syntax, f, t[b].text, b);
+    if (!d || !d->dims.empty()) return false;
+    BasicType type = describeBasicType(syntax.resolveType(d->type));
+    return type.ok && type.isMatrix && (type.rows == 1 || type.columns == 1);
+}
+
 }  // namespace
 
 std::vector<TextEdit> scalarIntrinsicCalls(const EffectSyntax& syntax) {
@@ -58,6 +75,12 @@ std::vector<TextEdit> scalarIntrinsicCalls(const EffectSyntax& syntax) {
                 if (t[i].text != h.name || syntax.findFunction(h.name)) continue;
                 auto args = callArgumentSpans(t, i + 1, f.body.end);
                 if (args.size() != h.arguments) continue;
+                if (std::string_view(h.name) == "determinant" && isOneLineMatrix(syntax, f, args[0].first, args[0].second)) {
+                    edits.push_back({t[i].offset, t[i].end, std::string("fxport_") + h.name + "_scalar"});
+                    edits.push_back({t[args[0].first].end, t[args[0].first].end, ".x"});
+                    used.insert(&h);
+                    continue;
+                }
                 bool scalars = true;
                 for (const auto& [b, e] : args) scalars = scalars && isScalar(syntax, f, b, e, h.matrixOnly);
                 if (!scalars) continue;
