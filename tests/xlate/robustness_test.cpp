@@ -15,7 +15,6 @@
 #include <unistd.h>
 
 #include <array>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -201,14 +200,13 @@ TEST(Robustness, InputsOfTheSizesThatCrashedGetDiagnostics) {
     for (int i = 0; i < 2000; ++i) s.write("chain" + std::to_string(i) + ".fxh", "#include \"chain" + std::to_string(i + 1) + ".fxh\"\n");
     s.write("chain2000.fxh", "float4 Last;\n");
     inputs.push_back({s.write("chain.fx", "#include \"chain0.fxh\"\n" + kTail), diag::kIncludeLimit, 1});
+    // A hang here is caught by the test's ctest TIMEOUT (tests/xlate/CMakeLists.txt); how fast the
+    // refusals are is not asserted (speed belongs in benchmarks).
     for (const auto& in : inputs) {
-        auto start = std::chrono::steady_clock::now();
         Diagnostic d = firstError(in.path);
-        double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         EXPECT_EQ(d.id, in.id) << in.path << ": " << d.format().substr(0, 300);
         if (in.id != diag::kIncludeLimit) EXPECT_EQ(d.location.line, in.line) << in.path;
         else EXPECT_NE(d.location.file.find("chain30.fxh"), std::string::npos) << d.format();
-        EXPECT_LT(seconds, 20.0) << in.path;  // was 8.9 s for the include chain alone, unloaded
     }
     // More #include directives than the limit, none nested: FX1105 at the one past it.
     std::string many;
@@ -353,8 +351,7 @@ TEST(FrontEndWorker, CrashIsReportedWithTheLastProgress) {
 
 TEST(FrontEndWorker, EndlessWorkIsStoppedByTheCpuLimit) {
     WorkerLimits limits;
-    limits.cpuSeconds = 1;
-    auto start = std::chrono::steady_clock::now();
+    limits.cpuSeconds = 1;  // a worker that outlived it would hang the test: its ctest TIMEOUT says so
     WorkerOutcome o = runInWorker(
         [] {
             volatile unsigned long n = 0;
@@ -363,7 +360,6 @@ TEST(FrontEndWorker, EndlessWorkIsStoppedByTheCpuLimit) {
         },
         limits);
     EXPECT_EQ(o.kind, WorkerOutcome::Kind::TimedOut);
-    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 30.0);
 }
 
 #if !defined(__SANITIZE_ADDRESS__)
