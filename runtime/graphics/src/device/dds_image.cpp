@@ -56,17 +56,23 @@ void decodeColours(const std::uint8_t* block, bool allowThreeColour, Color out[1
     }
 }
 
+// How a file stores its texels: the DXGI format that holds them bit for bit (0: none does), the
+// layout of a level (4x4 blocks of `blockBytes`, or `bitsPerPixel` per texel), and how they decode
+// to RGBA8 (`decode`; Opaque: they do not, e.g. BC4-BC7 and float texels).
 struct Format {
-    enum Kind { Bc1, Bc2, Bc3, Masks } kind = Masks;
-    int bitsPerPixel = 0;
-    std::uint32_t masks[4] = {0, 0, 0, 0};  // r, g, b, a
+    enum Kind { Bc1, Bc2, Bc3, Masks, Opaque } decode = Opaque;
+    std::uint32_t dxgi = 0;
+    int blockBytes = 0;    // block-compressed: 8 (BC1, BC4) or 16
+    int bitsPerPixel = 0;  // uncompressed
+    std::uint32_t masks[4] = {0, 0, 0, 0};  // r, g, b, a (decode == Masks)
     bool luminance = false;
+    bool premultiplied = false;  // DXT2, DXT4
 };
 
-std::size_t levelBytes(const Format& f, int w, int h) {
-    if (f.kind == Format::Masks) return std::size_t(w) * std::size_t(h) * std::size_t(f.bitsPerPixel / 8);
-    const std::size_t blocks = std::size_t((w + 3) / 4) * std::size_t((h + 3) / 4);
-    return blocks * (f.kind == Format::Bc1 ? 8 : 16);
+// The bytes of one width x height slice; 64-bit arithmetic (16384^2 texels of 16 bytes fit).
+std::uint64_t levelBytes(const Format& f, int w, int h) {
+    if (f.blockBytes) return std::uint64_t((w + 3) / 4) * std::uint64_t((h + 3) / 4) * std::uint64_t(f.blockBytes);
+    return std::uint64_t(w) * std::uint64_t(h) * std::uint64_t(f.bitsPerPixel / 8);
 }
 
 int scaleChannel(std::uint32_t pixel, std::uint32_t mask) {
@@ -78,7 +84,7 @@ int scaleChannel(std::uint32_t pixel, std::uint32_t mask) {
 
 std::vector<Color> decodeLevel(const Format& f, const std::uint8_t* data, int w, int h) {
     std::vector<Color> texels(std::size_t(w) * std::size_t(h));
-    if (f.kind == Format::Masks) {
+    if (f.decode == Format::Masks) {
         const int bytes = f.bitsPerPixel / 8;
         for (std::size_t i = 0; i < texels.size(); ++i) {
             std::uint32_t pixel = 0;
@@ -90,14 +96,14 @@ std::vector<Color> decodeLevel(const Format& f, const std::uint8_t* data, int w,
         }
         return texels;
     }
-    const std::size_t blockBytes = f.kind == Format::Bc1 ? 8 : 16;
+    const std::size_t blockBytes = std::size_t(f.blockBytes);
     const int bw = (w + 3) / 4, bh = (h + 3) / 4;
     Color block[16];
     for (int by = 0; by < bh; ++by)
         for (int bx = 0; bx < bw; ++bx) {
             const std::uint8_t* at = data + (std::size_t(by) * std::size_t(bw) + std::size_t(bx)) * blockBytes;
-            if (f.kind == Format::Bc1) decodeBc1Block(at, block);
-            else if (f.kind == Format::Bc2) decodeBc2Block(at, block);
+            if (f.decode == Format::Bc1) decodeBc1Block(at, block);
+            else if (f.decode == Format::Bc2) decodeBc2Block(at, block);
             else decodeBc3Block(at, block);
             for (int y = 0; y < 4 && by * 4 + y < h; ++y)
                 for (int x = 0; x < 4 && bx * 4 + x < w; ++x) texels[std::size_t(by * 4 + y) * std::size_t(w) + std::size_t(bx * 4 + x)] = block[y * 4 + x];
@@ -105,38 +111,119 @@ std::vector<Color> decodeLevel(const Format& f, const std::uint8_t* data, int w,
     return texels;
 }
 
+// Bits per texel (or bytes per 4x4 block, as a negative number) of the DXGI formats a DDS file can
+// store that D3D11 samples; 0 for the others (video, packed 4:2:2, 1-bit, formats past BC7).
+int dxgiLayout(std::uint32_t dxgi) {
+    if (dxgi >= 1 && dxgi <= 4) return 128;
+    if (dxgi >= 5 && dxgi <= 8) return 96;
+    if (dxgi >= 9 && dxgi <= 22) return 64;
+    if ((dxgi >= 23 && dxgi <= 47) || dxgi == 67 || (dxgi >= 87 && dxgi <= 93)) return 32;
+    if ((dxgi >= 48 && dxgi <= 59) || dxgi == 85 || dxgi == 86 || dxgi == 115) return 16;
+    if (dxgi >= 60 && dxgi <= 65) return 8;
+    if ((dxgi >= 70 && dxgi <= 72) || (dxgi >= 79 && dxgi <= 81)) return -8;  // BC1, BC4
+    if ((dxgi >= 73 && dxgi <= 78) || (dxgi >= 82 && dxgi <= 84) || (dxgi >= 94 && dxgi <= 99)) return -16;  // BC2, BC3, BC5, BC6H, BC7
+    return 0;
+}
+
 Format formatOfDxgi(std::uint32_t dxgi, const std::string& name) {
     Format f;
-    switch (dxgi) {
-    case 71: case 72: f.kind = Format::Bc1; return f;
-    case 74: case 75: f.kind = Format::Bc2; return f;
-    case 77: case 78: f.kind = Format::Bc3; return f;
-    case 28: case 29: f.bitsPerPixel = 32; f.masks[0] = 0xFF; f.masks[1] = 0xFF00; f.masks[2] = 0xFF0000; f.masks[3] = 0xFF000000u; return f;
-    case 87: case 91: f.bitsPerPixel = 32; f.masks[0] = 0xFF0000; f.masks[1] = 0xFF00; f.masks[2] = 0xFF; f.masks[3] = 0xFF000000u; return f;
-    case 88: case 93: f.bitsPerPixel = 32; f.masks[0] = 0xFF0000; f.masks[1] = 0xFF00; f.masks[2] = 0xFF; return f;
-    default: throw ArgumentError(name + ": DXGI format " + std::to_string(dxgi) + " is not one fxport reads (R8G8B8A8, B8G8R8A8/X8, BC1-BC3)");
+    const int layout = dxgiLayout(dxgi);
+    if (!layout) throw ArgumentError(name + ": DXGI format " + std::to_string(dxgi) + " is not one fxport reads (a format D3D11 samples, BC1-BC7 included)");
+    f.dxgi = dxgi;
+    if (layout < 0) f.blockBytes = -layout;
+    else f.bitsPerPixel = layout;
+    switch (dxgi) {  // those that decode to RGBA8 (Texture2D::FromFile)
+    case 71: case 72: f.decode = Format::Bc1; break;
+    case 74: case 75: f.decode = Format::Bc2; break;
+    case 77: case 78: f.decode = Format::Bc3; break;
+    case 28: case 29: f.decode = Format::Masks; f.masks[0] = 0xFF; f.masks[1] = 0xFF00; f.masks[2] = 0xFF0000; f.masks[3] = 0xFF000000u; break;
+    case 87: case 91: f.decode = Format::Masks; f.masks[0] = 0xFF0000; f.masks[1] = 0xFF00; f.masks[2] = 0xFF; f.masks[3] = 0xFF000000u; break;
+    case 88: case 93: f.decode = Format::Masks; f.masks[0] = 0xFF0000; f.masks[1] = 0xFF00; f.masks[2] = 0xFF; break;
+    default: break;
     }
+    return f;
+}
+
+// A FourCC: DXT1-5 and BC4/BC5's names (ATI1, BC4U, BC4S, ATI2, BC5U, BC5S), or a D3DFORMAT number
+// D3DX9 writes there for 16-bit and float texels (DirectXTK's DDSTextureLoader reads the same).
+Format formatOfFourCC(std::span<const std::uint8_t> b, const std::string& name) {
+    const std::uint32_t code = u32(b, 84);
+    Format f;
+    auto block = [&](std::uint32_t dxgi, Format::Kind decode) {
+        f = formatOfDxgi(dxgi, name);
+        f.decode = decode;
+        return f;
+    };
+    if (code == fourCC("DXT1")) return block(71, Format::Bc1);
+    if (code == fourCC("DXT2") || code == fourCC("DXT3")) return f = block(74, Format::Bc2), f.premultiplied = code == fourCC("DXT2"), f;
+    if (code == fourCC("DXT4") || code == fourCC("DXT5")) return f = block(77, Format::Bc3), f.premultiplied = code == fourCC("DXT4"), f;
+    if (code == fourCC("ATI1") || code == fourCC("BC4U")) return block(80, Format::Opaque);
+    if (code == fourCC("BC4S")) return block(81, Format::Opaque);
+    if (code == fourCC("ATI2") || code == fourCC("BC5U")) return block(83, Format::Opaque);
+    if (code == fourCC("BC5S")) return block(84, Format::Opaque);
+    switch (code) {
+    case 36: return formatOfDxgi(11, name);   // D3DFMT_A16B16G16R16 -> R16G16B16A16_UNORM
+    case 110: return formatOfDxgi(13, name);  // D3DFMT_Q16W16V16U16 -> R16G16B16A16_SNORM
+    case 111: return formatOfDxgi(54, name);  // D3DFMT_R16F
+    case 112: return formatOfDxgi(34, name);  // D3DFMT_G16R16F
+    case 113: return formatOfDxgi(10, name);  // D3DFMT_A16B16G16R16F
+    case 114: return formatOfDxgi(41, name);  // D3DFMT_R32F
+    case 115: return formatOfDxgi(16, name);  // D3DFMT_G32R32F
+    case 116: return formatOfDxgi(2, name);   // D3DFMT_A32B32G32R32F
+    default: break;
+    }
+    std::string text(reinterpret_cast<const char*>(&b[84]), 4);
+    for (char& c : text)
+        if (c < 32 || c > 126) c = '?';
+    throw ArgumentError(name + ": compression '" + text + "' is not one fxport reads (FourCC " + std::to_string(code) +
+                        "; it reads DXT1-DXT5, ATI1/BC4U/BC4S, ATI2/BC5U/BC5S, D3DFMT 36 and 110-116, DX10)");
+}
+
+// The DXGI format whose bits are those of a legacy channel-mask format (DirectXTK's table; A2B10G10R10
+// files written by D3DX have their red and blue masks swapped, read as D3DX meant them); 0 when none.
+std::uint32_t dxgiOfMasks(std::uint32_t flags, int bits, const std::uint32_t m[4]) {
+    auto is = [&](std::uint32_t r, std::uint32_t g, std::uint32_t b, std::uint32_t a) { return m[0] == r && m[1] == g && m[2] == b && m[3] == a; };
+    if (flags & 0x40) {  // DDPF_RGB
+        if (bits == 32 && is(0xFF, 0xFF00, 0xFF0000, 0xFF000000u)) return 28;         // R8G8B8A8_UNORM
+        if (bits == 32 && is(0xFF0000, 0xFF00, 0xFF, 0xFF000000u)) return 87;         // B8G8R8A8_UNORM
+        if (bits == 32 && is(0xFF0000, 0xFF00, 0xFF, 0)) return 88;                   // B8G8R8X8_UNORM
+        if (bits == 32 && is(0x3FF00000, 0xFFC00, 0x3FF, 0xC0000000u)) return 24;     // R10G10B10A2_UNORM
+        if (bits == 32 && is(0xFFFF, 0xFFFF0000u, 0, 0)) return 35;                   // R16G16_UNORM
+        if (bits == 32 && is(0xFFFFFFFFu, 0, 0, 0)) return 41;                        // R32_FLOAT
+        if (bits == 16 && is(0x7C00, 0x3E0, 0x1F, 0x8000)) return 86;                 // B5G5R5A1_UNORM
+        if (bits == 16 && is(0xF800, 0x7E0, 0x1F, 0)) return 85;                      // B5G6R5_UNORM
+        if (bits == 16 && is(0xF00, 0xF0, 0xF, 0xF000)) return 115;                   // B4G4R4A4_UNORM
+        if (bits == 16 && is(0xFF, 0, 0, 0xFF00)) return 49;                          // R8G8_UNORM
+        if (bits == 16 && is(0xFFFF, 0, 0, 0)) return 56;                             // R16_UNORM
+        if (bits == 8 && is(0xFF, 0, 0, 0)) return 61;                                // R8_UNORM
+    } else if (flags & 0x20000) {  // DDPF_LUMINANCE
+        if (bits == 16 && is(0xFFFF, 0, 0, 0)) return 56;
+        if ((bits == 16 || bits == 8) && is(0xFF, 0, 0, 0xFF00)) return 49;
+        if (bits == 8 && is(0xFF, 0, 0, 0)) return 61;
+    } else if ((flags & 0x2) && bits == 8) {  // DDPF_ALPHA
+        return 65;                           // A8_UNORM
+    } else if (flags & 0x80000) {            // DDPF_BUMPDUDV: signed texels
+        if (bits == 32 && is(0xFF, 0xFF00, 0xFF0000, 0xFF000000u)) return 31;  // R8G8B8A8_SNORM
+        if (bits == 32 && is(0xFFFF, 0xFFFF0000u, 0, 0)) return 37;            // R16G16_SNORM
+        if (bits == 16 && is(0xFF, 0xFF00, 0, 0)) return 51;                   // R8G8_SNORM
+    }
+    return 0;
 }
 
 Format formatOfPixelFormat(std::span<const std::uint8_t> b, const std::string& name) {
-    const std::uint32_t flags = u32(b, 80), code = u32(b, 84);
+    const std::uint32_t flags = u32(b, 80);
+    if (flags & 0x4) return formatOfFourCC(b, name);  // DDPF_FOURCC
     Format f;
-    if (flags & 0x4) {  // DDPF_FOURCC
-        if (code == fourCC("DXT1")) f.kind = Format::Bc1;
-        else if (code == fourCC("DXT2") || code == fourCC("DXT3")) f.kind = Format::Bc2;
-        else if (code == fourCC("DXT4") || code == fourCC("DXT5")) f.kind = Format::Bc3;
-        else {
-            std::string text(reinterpret_cast<const char*>(&b[84]), 4);
-            throw ArgumentError(name + ": compression '" + text + "' is not one fxport reads (DXT1, DXT3, DXT5)");
-        }
-        return f;
-    }
-    f.bitsPerPixel = int(u32(b, 88));
+    f.bitsPerPixel = int(std::min<std::uint32_t>(u32(b, 88), 1024));
     if (f.bitsPerPixel != 8 && f.bitsPerPixel != 16 && f.bitsPerPixel != 24 && f.bitsPerPixel != 32)
-        throw ArgumentError(name + ": " + std::to_string(f.bitsPerPixel) + " bits per pixel is not a format fxport reads");
+        throw ArgumentError(name + ": " + std::to_string(u32(b, 88)) + " bits per pixel is not a format fxport reads");
     f.luminance = (flags & 0x20000) != 0;  // DDPF_LUMINANCE: the red mask is the luminance
-    if (flags & 0x40 || f.luminance) f.masks[0] = u32(b, 92), f.masks[1] = u32(b, 96), f.masks[2] = u32(b, 100);
-    if (flags & 0x3) f.masks[3] = u32(b, 104);  // DDPF_ALPHAPIXELS or DDPF_ALPHA
+    f.masks[0] = u32(b, 92), f.masks[1] = u32(b, 96), f.masks[2] = u32(b, 100), f.masks[3] = u32(b, 104);
+    f.dxgi = dxgiOfMasks(flags, f.bitsPerPixel, f.masks);
+    if (f.dxgi == 24) std::swap(f.masks[0], f.masks[2]);  // D3DX's swapped A2B10G10R10 masks (see dxgiOfMasks)
+    if (!(flags & 0x40) && !f.luminance) f.masks[0] = f.masks[1] = f.masks[2] = 0;
+    if (!(flags & 0x3)) f.masks[3] = 0;  // neither DDPF_ALPHAPIXELS nor DDPF_ALPHA
+    f.decode = (flags & 0x80000) ? Format::Opaque : Format::Masks;  // signed bump-map texels do not decode to colours
     return f;
 }
 
@@ -164,10 +251,38 @@ void decodeBc3Block(const std::uint8_t* block, Color out[16]) {
     for (int i = 0; i < 16; ++i) out[i].A = std::uint8_t(a[(bits >> (3 * i)) & 7]);
 }
 
-DdsImage decodeDds(std::span<const std::uint8_t> b, const std::string& name) {
+namespace {
+
+constexpr int kMaxArraySize = 2048;  // D3D11's largest Texture2DArray
+
+// The DX10 header's resource dimension, array size and cube flag (DirectXTK's rules: a 3D one needs
+// DDSD_DEPTH, is no array; a 1D one has height 1).
+void readDx10Header(std::span<const std::uint8_t> b, const std::string& name, DdsImage& image) {
+    const std::uint32_t dimension = u32(b, 132), arraySize = u32(b, 140);
+    if (arraySize == 0 || arraySize > std::uint32_t(kMaxArraySize))
+        throw ArgumentError(name + ": DX10 header's array size " + std::to_string(arraySize) + " (1.." + std::to_string(kMaxArraySize) + ")");
+    image.arraySize = int(arraySize);
+    if (dimension == 2) {  // D3D10_RESOURCE_DIMENSION_TEXTURE1D
+        if (image.height != 1) throw ArgumentError(name + ": a 1D texture of height " + std::to_string(image.height));
+        image.oneDimensional = true;
+    } else if (dimension == 3) {
+        image.cube = (u32(b, 136) & 0x4) != 0;  // D3D11_RESOURCE_MISC_TEXTURECUBE
+        image.volume = false;
+    } else if (dimension == 4) {
+        image.volume = true;
+        image.cube = false;
+        if (arraySize > 1) throw ArgumentError(name + ": a volume texture with array size " + std::to_string(arraySize) + " (volumes are not arrays)");
+    } else {
+        throw ArgumentError(name + ": DX10 header's resource dimension " + std::to_string(dimension) + " is not a texture's (2, 3 or 4)");
+    }
+    const std::uint32_t alpha = u32(b, 144) & 0x7;  // DDS_MISC_FLAGS2_ALPHA_MODE_MASK
+    image.alphaMode = alpha <= 4 ? int(alpha) : 0;
+}
+
+// The header's size, kind (2D, cube, volume, array) and level count; the texels start at `offset`.
+Format readHeader(std::span<const std::uint8_t> b, const std::string& name, DdsImage& image, std::size_t& offset) {
     if (b.size() < 128 || std::memcmp(b.data(), "DDS ", 4) != 0 || u32(b, 4) != 124)
         throw ArgumentError(name + ": not a DDS file (no 'DDS ' magic and 124-byte header)");
-    DdsImage image;
     image.height = int(std::min<std::uint32_t>(u32(b, 12), INT_MAX));
     image.width = int(std::min<std::uint32_t>(u32(b, 16), INT_MAX));
     if (image.width < 1 || image.height < 1 || image.width > kMaxSide || image.height > kMaxSide)
@@ -176,50 +291,92 @@ DdsImage decodeDds(std::span<const std::uint8_t> b, const std::string& name) {
     const std::uint32_t caps2 = u32(b, 112);
     image.volume = (caps2 & 0x200000) != 0;  // DDSCAPS2_VOLUME
     image.cube = (caps2 & 0x200) != 0;
-    std::size_t offset = 128;
+    offset = 128;
     Format format;
     if ((u32(b, 80) & 0x4) && u32(b, 84) == fourCC("DX10")) {
         if (b.size() < 148) throw ArgumentError(name + ": truncated DX10 header");
         format = formatOfDxgi(u32(b, 128), name);
-        image.cube = image.cube || (u32(b, 136) & 0x4);
-        image.volume = image.volume || u32(b, 132) == 4;  // D3D10_RESOURCE_DIMENSION_TEXTURE3D
-        if (u32(b, 140) > 1) throw ArgumentError(name + ": a texture array of " + std::to_string(u32(b, 140)) + "; fxport loads one texture");
+        readDx10Header(b, name, image);
         offset = 148;
     } else {
         format = formatOfPixelFormat(b, name);
+        image.volume = image.volume || (u32(b, 8) & 0x800000);  // DDSD_DEPTH
+        if (image.cube && (caps2 & 0xFC00) != 0xFC00)
+            throw ArgumentError(name + ": a cube map without all six faces (DDSCAPS2 " + std::to_string(caps2) + "); D3D has no partial cubes");
+        image.alphaMode = format.premultiplied ? 2 : 0;
     }
     if (image.volume) {
         image.depth = int(std::min<std::uint32_t>(u32(b, 24), INT_MAX));
-        if (image.cube || image.depth < 1 || image.depth > kMaxVolumeDepth)
-            throw ArgumentError(name + ": a volume texture " + (image.cube ? std::string("that is also a cube map") : "of depth " + std::to_string(u32(b, 24))) +
-                                " is not one fxport loads (depth 1.." + std::to_string(kMaxVolumeDepth) + ")");
+        if (image.cube || image.depth < 1 || image.depth > kMaxVolumeDepth || image.width > kMaxVolumeDepth || image.height > kMaxVolumeDepth)
+            throw ArgumentError(name + ": a volume texture " + (image.cube ? std::string("that is also a cube map") : "of " + std::to_string(image.width) + "x" +
+                                std::to_string(image.height) + "x" + std::to_string(u32(b, 24))) + " is not one fxport loads (1.." + std::to_string(kMaxVolumeDepth) + " each)");
     }
+    image.dxgiFormat = format.dxgi;
     const int fullChain = int(std::bit_width(unsigned(std::max({image.width, image.height, image.depth}))));  // levels down to 1x1x1
-    const std::uint32_t stored = (u32(b, 8) & 0x20000) ? u32(b, 28) : 1;  // DDSD_MIPMAPCOUNT
+    const std::uint32_t stored = u32(b, 28);  // mipMapCount; 0 is one level (DirectXTK reads it whatever DDSD_MIPMAPCOUNT says)
     image.levelCount = int(std::clamp<std::uint32_t>(stored, 1, std::uint32_t(fullChain)));
-    for (int face = 0; face < (image.cube ? 6 : 1); ++face)
-        for (int level = 0; level < image.levelCount; ++level) {
-            const int w = std::max(1, image.width >> level), h = std::max(1, image.height >> level);
-            const std::size_t bytes = levelBytes(format, w, h);  // of one slice; a volume's slices follow each other
-            std::vector<Color> texels;
-            for (int slice = 0; slice < std::max(1, image.depth >> level); ++slice) {
-                if (offset > b.size() || b.size() - offset < bytes)
-                    throw ArgumentError(name + ": truncated: level " + std::to_string(level) + (image.cube ? " of face " + std::to_string(face) : "") +
-                                        (image.volume ? " slice " + std::to_string(slice) : "") + " needs " + std::to_string(bytes) +
-                                        " bytes at offset " + std::to_string(offset) + ", the file has " + std::to_string(b.size()));
-                std::vector<Color> one = decodeLevel(format, b.data() + offset, w, h);
-                texels.insert(texels.end(), one.begin(), one.end());
-                offset += bytes;
+    return format;
+}
+
+// Each subresource's bytes in the file's order (array item, face, level; a volume level's slices
+// together), checked against the file's length before anything is copied.
+void readLevels(std::span<const std::uint8_t> b, const std::string& name, const Format& format, bool decode, std::size_t offset, DdsImage& image) {
+    const int faces = image.cube ? 6 : 1;
+    for (int item = 0; item < image.arraySize; ++item)
+        for (int face = 0; face < faces; ++face)
+            for (int level = 0; level < image.levelCount; ++level) {
+                const int w = std::max(1, image.width >> level), h = std::max(1, image.height >> level), slices = std::max(1, image.depth >> level);
+                const std::uint64_t slice = levelBytes(format, w, h), bytes = slice * std::uint64_t(slices);
+                if (offset > b.size() || b.size() - offset < bytes) {
+                    const std::uint64_t whole = offset > b.size() ? 0 : (b.size() - offset) / slice;  // a volume's slices present
+                    throw ArgumentError(name + ": truncated: level " + std::to_string(level) + (image.arraySize > 1 ? " of array item " + std::to_string(item) : "") +
+                                        (image.cube ? " of face " + std::to_string(face) : "") + (image.volume ? " slice " + std::to_string(whole) : "") +
+                                        " needs " + std::to_string(image.volume ? slice : bytes) + " bytes at offset " +
+                                        std::to_string(offset + whole * slice * (image.volume ? 1 : 0)) + ", the file has " + std::to_string(b.size()));
+                }
+                const std::uint8_t* at = b.data() + offset;
+                if (decode) {
+                    std::vector<Color> texels;
+                    for (int z = 0; z < slices; ++z) {
+                        std::vector<Color> one = decodeLevel(format, at + std::size_t(slice) * std::size_t(z), w, h);
+                        texels.insert(texels.end(), one.begin(), one.end());
+                    }
+                    image.levels.push_back(std::move(texels));
+                } else {
+                    image.stored.emplace_back(at, at + bytes);
+                }
+                offset += std::size_t(bytes);
             }
-            image.levels.push_back(std::move(texels));
-        }
+}
+
+}  // namespace
+
+DdsImage decodeDds(std::span<const std::uint8_t> b, const std::string& name, DdsContent content) {
+    DdsImage image;
+    std::size_t offset = 0;
+    const Format format = readHeader(b, name, image, offset);
+    const bool decode = content == DdsContent::Decoded;
+    if (decode && format.decode == Format::Opaque)
+        throw ArgumentError(name + ": DXGI format " + std::to_string(format.dxgi) +
+                            " does not decode to 8-bit RGBA here (fxport decodes DXT1-DXT5, 8-bit RGBA/BGRA and channel-mask formats; "
+                            "D3DX11CreateShaderResourceViewFromFile keeps the rest as stored)");
+    if (decode && (image.arraySize > 1 || image.oneDimensional))
+        throw ArgumentError(name + ": a " + (image.oneDimensional ? std::string("1D texture") : "texture array of " + std::to_string(image.arraySize)) +
+                            "; fxport loads one 2D, cube or volume texture here");
+    if (!decode && image.dxgiFormat == 0 && format.decode == Format::Opaque)
+        throw ArgumentError(name + ": signed (bump-map) texels of a layout no DXGI format holds");
+    if (!decode && image.dxgiFormat == 0) {
+        readLevels(b, name, format, true, offset, image);  // no DXGI format holds these texels: 8-bit RGBA instead
+        return image;
+    }
+    readLevels(b, name, format, decode, offset, image);
     return image;
 }
 
-DdsImage readDds(const std::string& path) {
+DdsImage readDds(const std::string& path, DdsContent content) {
     platform::FileBytes file = platform::readUntrustedFile(path);
-    if (!file.ok()) throw ArgumentError("Texture2D::FromFile: " + file.error);
-    return decodeDds(file.bytes, path);
+    if (!file.ok()) throw ArgumentError((content == DdsContent::Decoded ? "Texture2D::FromFile: " : "") + file.error);
+    return decodeDds(file.bytes, path, content);
 }
 
 }  // namespace fxport::detail
