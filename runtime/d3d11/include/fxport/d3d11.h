@@ -12,5 +12,8 @@
 #include "fxport/d3d11/d3d11_interfaces.h"
 #include "fxport/d3d11/d3d11_types.h"
 #include "fxport/d3d11/d3dcompiler.h"
+#include "fxport/d3d11/d3dx11tex.h"
+#include "fxport/d3d11/dds_texture_loader.h"
+#include "fxport/d3d11/wic_texture_loader.h"
 #include "fxport/d3d11/d3dx11effect.h"
 #include "fxport/d3d11/dxgi.h"

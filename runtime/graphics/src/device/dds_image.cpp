@@ -312,6 +312,7 @@ Format readHeader(std::span<const std::uint8_t> b, const std::string& name, DdsI
                                 std::to_string(image.height) + "x" + std::to_string(u32(b, 24))) + " is not one fxport loads (1.." + std::to_string(kMaxVolumeDepth) + " each)");
     }
     image.dxgiFormat = format.dxgi;
+    image.decodable = format.decode != Format::Opaque;
     const int fullChain = int(std::bit_width(unsigned(std::max({image.width, image.height, image.depth}))));  // levels down to 1x1x1
     const std::uint32_t stored = u32(b, 28);  // mipMapCount; 0 is one level (DirectXTK reads it whatever DDSD_MIPMAPCOUNT says)
     image.levelCount = int(std::clamp<std::uint32_t>(stored, 1, std::uint32_t(fullChain)));

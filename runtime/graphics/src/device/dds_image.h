@@ -34,6 +34,7 @@ struct DdsImage {
     int arraySize = 1;                        // DX10 array items (each of 6 faces for a cube); Stored only
     int levelCount = 1;                       // mip levels per face, as stored (clamped to the full chain)
     std::uint32_t dxgiFormat = 0;             // the DXGI_FORMAT value of the stored texels (0: none matches)
+    bool decodable = false;                   // the texels decode to 8-bit RGBA (DdsContent::Decoded reads them)
     int alphaMode = 0;                        // DDS_ALPHA_MODE: 0 unknown, 1 straight, 2 premultiplied (DXT2/4), 3 opaque, 4 custom
     std::vector<std::vector<Color>> levels;   // decoded: face-major (face 0's levels, then face 1's ...); a volume level's slices together
     std::vector<std::vector<std::uint8_t>> stored;  // Stored: item-major, then face, then level; a volume level's slices together
