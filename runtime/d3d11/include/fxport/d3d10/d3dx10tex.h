@@ -1,8 +1,9 @@
 // D3DX10's texture loading with D3DX10's names: D3DX10CreateShaderResourceViewFromFile, what the
-// Rastertek DX10 tutorials' TextureClass calls. The file is read as fxport's Texture2D::FromFile
-// reads it (PNG, JPEG, BMP, TGA ... through stb_image; DDS with its levels), as 8-bit RGBA
-// (DXGI_FORMAT_R8G8B8A8_UNORM); as D3DX10 does without a D3DX10_IMAGE_LOAD_INFO, the texture gets a
-// full mip chain, each level the 2x2 box average of the one above (a DDS's own levels are kept).
+// Rastertek DX10 tutorials' TextureClass calls. The same loader as D3DX11's (fxport/d3d11/
+// d3dx11tex.h says what it does): a DDS keeps its stored DXGI format, levels, cube faces and volume
+// slices; any other image (PNG, JPEG, BMP, TGA ... through stb_image) becomes R8G8B8A8_UNORM with a
+// full mip chain, each level the 2x2 box average of the one above, as D3DX10 does without a
+// D3DX10_IMAGE_LOAD_INFO.
 #pragma once
 
 #include "fxport/d3d10/d3d10_interfaces.h"
