@@ -338,13 +338,36 @@ TEST_F(TextureFiles, VolumeDdsIsATexture3D) {
     EXPECT_EQ(desc.Format, DXGI_FORMAT_B8G8R8A8_UNORM);  // A8R8G8B8's bytes are B, G, R, A
 }
 
+// A DX10 array of two 2x2 R8G8B8A8 items, each with its own bytes: a TEXTURE2DARRAY view, each
+// slice read back as stored.
+TEST_F(TextureFiles, ArrayDdsKeepsEveryItem) {
+    Bytes file = dx10Header(2, 2, 1, DXGI_FORMAT_R8G8B8A8_UNORM, 3, 0, 2);
+    Bytes items[2];
+    for (std::size_t i = 0; i < 16; ++i) items[0].push_back(std::uint8_t(i * 7)), items[1].push_back(std::uint8_t(255 - i * 5));
+    append(file, items[0]);
+    append(file, items[1]);
+    ComPtr<ID3D11ShaderResourceView> srv = view(write("array.dds", file));
+    ASSERT_TRUE(srv);
+    D3D11_SHADER_RESOURCE_VIEW_DESC sd;
+    srv->GetDesc(&sd);
+    EXPECT_EQ(sd.ViewDimension, D3D11_SRV_DIMENSION_TEXTURE2DARRAY);
+    ComPtr<ID3D11Texture2D> texture = texture2D(srv.Get());
+    ASSERT_TRUE(texture);
+    D3D11_TEXTURE2D_DESC desc;
+    texture->GetDesc(&desc);
+    EXPECT_EQ(desc.ArraySize, 2u);
+    EXPECT_EQ(desc.MipLevels, 1u);
+    EXPECT_EQ(readLevel(texture.Get(), 0, 8, 2), items[0]);
+    EXPECT_EQ(readLevel(texture.Get(), 1, 8, 2), items[1]);  // subresource 1: item 1's level 0
+}
+
 // A DXT1 file with 2 of 4 levels: fxport's textures have 1 level or the full chain, so the texels are
 // decoded and the chain completed (as Texture2D::FromFile does); a BC7 one is refused by name.
 TEST_F(TextureFiles, PartialChainsDecodeOrAreRefused) {
     Bytes file = ddsHeader(8, 8, 2, "DXT1");
     append(file, kBc1Level0);
     append(file, kBc1Level1);
-    ComPtr<ID3D11Texture2D> texture = texture2D(view(write("partial.dds", file)).Get());
+    ComPtr<ID3D11Texture2D> texture = texture2D(view(write("partial.tex", file)).Get());  // known by its magic, not its name
     ASSERT_TRUE(texture);
     D3D11_TEXTURE2D_DESC desc;
     texture->GetDesc(&desc);

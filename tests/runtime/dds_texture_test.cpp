@@ -64,6 +64,53 @@ TEST(DdsBlocks, Bc1ThreeColourModeHasHalfwayAndTransparentBlack) {
     for (int i = 0; i < 16; ++i) EXPECT_EQ(texels[i], expected[i % 4]) << "texel " << i;
 }
 
+// DdsContent::Stored: each legacy pixel format as the DXGI format DirectXTK's loader maps it to
+// (DXGI_FORMAT numbers from dxgiformat.h), the bytes as stored, the level sizes of the layout.
+TEST(DdsStored, LegacyFormatsMapToDxgiAndKeepTheirBytes) {
+    struct Case {
+        const char* fourCC;
+        std::uint32_t code, bits, r, g, b, a, flags, dxgi, bytes4x4;
+    };
+    const Case cases[] = {
+        {"DXT1", 0, 0, 0, 0, 0, 0, 0, 71, 8},      {"DXT3", 0, 0, 0, 0, 0, 0, 0, 74, 16},       {"DXT5", 0, 0, 0, 0, 0, 0, 0, 77, 16},
+        {"ATI1", 0, 0, 0, 0, 0, 0, 0, 80, 8},      {"BC4S", 0, 0, 0, 0, 0, 0, 0, 81, 8},        {"ATI2", 0, 0, 0, 0, 0, 0, 0, 83, 16},
+        {"BC5S", 0, 0, 0, 0, 0, 0, 0, 84, 16},     {nullptr, 113, 0, 0, 0, 0, 0, 0, 10, 128},  {nullptr, 116, 0, 0, 0, 0, 0, 0, 2, 256},
+        {nullptr, 111, 0, 0, 0, 0, 0, 0, 54, 32},  {nullptr, 0, 32, 0xFF, 0xFF00, 0xFF0000, 0xFF000000u, 0x41, 28, 64},
+        {nullptr, 0, 32, 0xFF0000, 0xFF00, 0xFF, 0, 0x40, 88, 64},  {nullptr, 0, 32, 0x3FF00000, 0xFFC00, 0x3FF, 0xC0000000u, 0x41, 24, 64},
+        {nullptr, 0, 16, 0xF800, 0x7E0, 0x1F, 0, 0x40, 85, 32},     {nullptr, 0, 8, 0xFF, 0, 0, 0, 0x20000, 61, 16},
+        {nullptr, 0, 8, 0, 0, 0, 0xFF, 0x2, 65, 16},
+    };
+    for (const Case& c : cases) {
+        std::vector<std::uint8_t> file = header(4, 4, 1, c.fourCC, c.bits, c.r, c.g, c.b, c.a);
+        if (!c.fourCC && c.code) put32(file, 80, 0x4), put32(file, 84, c.code);
+        if (!c.fourCC && !c.code) put32(file, 80, c.flags);
+        for (std::uint32_t i = 0; i < c.bytes4x4; ++i) file.push_back(std::uint8_t(i * 3 + 1));
+        const detail::DdsImage image = detail::decodeDds(file, "case.dds", detail::DdsContent::Stored);
+        EXPECT_EQ(image.dxgiFormat, c.dxgi) << (c.fourCC ? c.fourCC : std::to_string(c.code + c.bits));
+        ASSERT_EQ(image.stored.size(), 1u);
+        EXPECT_EQ(image.stored[0], std::vector<std::uint8_t>(file.end() - std::ptrdiff_t(c.bytes4x4), file.end()));
+    }
+}
+
+// A 24-bit RGB file has no DXGI format: Stored mode decodes it (dxgiFormat 0); a BC4 file does not
+// decode to RGBA8, so XNA's Decoded read refuses it by name.
+TEST(DdsStored, FormatsWithoutDxgiDecodeAndOpaqueOnesRefuseDecoding) {
+    std::vector<std::uint8_t> rgb = header(1, 1, 1, nullptr, 24, 0xFF0000, 0xFF00, 0xFF);
+    rgb.insert(rgb.end(), {10, 20, 30});
+    const detail::DdsImage image = detail::decodeDds(rgb, "rgb.dds", detail::DdsContent::Stored);
+    EXPECT_EQ(image.dxgiFormat, 0u);
+    ASSERT_EQ(image.levels.size(), 1u);
+    EXPECT_EQ(image.levels[0][0], Color(30, 20, 10, 255));
+    std::vector<std::uint8_t> bc4 = header(4, 4, 1, "ATI1");
+    bc4.resize(bc4.size() + 8, 0);
+    try {
+        detail::decodeDds(bc4, "bc4.dds");
+        ADD_FAILURE() << "decoded";
+    } catch (const ArgumentError& e) {
+        EXPECT_NE(std::string(e.what()).find("bc4.dds: DXGI format 80 does not decode"), std::string::npos) << e.what();
+    }
+}
+
 TEST(DdsBlocks, Bc2ExplicitAndBc3InterpolatedAlpha) {
     std::uint8_t bc2[16] = {0x10, 0x32, 0x54, 0x76, 0x98, 0xBA, 0xDC, 0xFE};  // texel i: alpha nibble i
     std::copy(kRedBlueBlock, kRedBlueBlock + 8, bc2 + 8);

@@ -101,7 +101,7 @@ HRESULT wrapDecoded(Device* device, std::unique_ptr<fxport::Texture2D> flat, std
     return succeed();
 }
 
-// The DDS decoded to RGBA8 by the device core's FromFile (which completes a partial chain).
+// The DDS decoded to RGBA8 as the device core's FromFile decodes it (completing a partial chain).
 HRESULT loadDecodedDds(Device* device, const std::string& path, const DdsImage& dds, ID3D11Resource** out) {
     if (dds.volume) {
         std::unique_ptr<fxport::Texture3D> texels = fxport::Texture3D::FromFile(device->core(), path);
@@ -118,7 +118,7 @@ HRESULT loadDecodedDds(Device* device, const std::string& path, const DdsImage& 
         return succeed();
     }
     if (dds.cube) return wrapDecoded(device, nullptr, fxport::TextureCube::FromFile(device->core(), path), out);
-    return wrapDecoded(device, fxport::Texture2D::FromFile(device->core(), path), nullptr, out);
+    return wrapDecoded(device, detail::texture2DFromDds(device->core(), path), nullptr, out);
 }
 
 int fullChain(const DdsImage& dds) { return int(std::bit_width(unsigned(std::max({dds.width, dds.height, dds.depth})))); }

@@ -14,11 +14,17 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "fxport/math.h"
+
+namespace fxport {
+class GraphicsDevice;
+class Texture2D;
+}  // namespace fxport
 
 namespace fxport::detail {
 
@@ -45,6 +51,10 @@ struct DdsImage {
 DdsImage readDds(const std::string& path, DdsContent content = DdsContent::Decoded);
 // The same from bytes already read; `name` is for messages.
 DdsImage decodeDds(std::span<const std::uint8_t> bytes, const std::string& name, DdsContent content = DdsContent::Decoded);
+
+// The DDS file at `path` as Texture2D::FromFile loads a .dds (decoded, a partial chain completed by
+// 2x2 averages), whatever the file's name (texture.cpp).
+std::unique_ptr<Texture2D> texture2DFromDds(GraphicsDevice& device, const std::string& path);
 
 // One BC1/BC2/BC3 block of 16 texels (row by row) from its 8 or 16 bytes.
 void decodeBc1Block(const std::uint8_t* block, Color out[16]);

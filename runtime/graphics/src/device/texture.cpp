@@ -135,11 +135,11 @@ void Texture2D::getData(int level, void* data, std::size_t bytes) const {
     readTexels(-1, level, data, bytes);
 }
 
-namespace {
+namespace detail {
 
 // A DDS file's levels as stored (decoded to RGBA8); a partial mip chain is completed by averaging
 // 2x2 texels, as GenerateMips would.
-std::unique_ptr<Texture2D> textureFromDds(fxport::GraphicsDevice& device, const std::string& path) {
+std::unique_ptr<Texture2D> texture2DFromDds(fxport::GraphicsDevice& device, const std::string& path) {
     detail::DdsImage dds = detail::readDds(path);
     if (dds.cube) throw ArgumentError("Texture2D::FromFile: '" + path + "' is a cube map (six faces); a Texture2D has one");
     if (dds.volume) throw ArgumentError("Texture2D::FromFile: '" + path + "' is a volume texture (depth " + std::to_string(dds.depth) + "); load it as Texture3D");
@@ -155,12 +155,12 @@ std::unique_ptr<Texture2D> textureFromDds(fxport::GraphicsDevice& device, const 
     return texture;
 }
 
-}  // namespace
+}  // namespace detail
 
 std::unique_ptr<Texture2D> Texture2D::FromFile(fxport::GraphicsDevice& device, const std::string& path) {
     std::string extension = std::filesystem::path(path).extension().string();
     for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
-    if (extension == ".dds") return textureFromDds(device, path);
+    if (extension == ".dds") return detail::texture2DFromDds(device, path);
     detail::Image image = detail::loadImage(path);  // throws ArgumentError naming the file
     auto texture = std::make_unique<Texture2D>(device, image.width, image.height, false, SurfaceFormat::Color);
     texture->Name = path;
