@@ -24,14 +24,6 @@ std::optional<ShaderStage> constantStateStage(const std::string& lower) {
     return std::nullopt;
 }
 
-bool isStageSamplerState(const std::string& lower) {
-    static const char* const k[] = {"minfilter", "magfilter", "mipfilter", "addressu", "addressv", "addressw", "bordercolor",
-                                    "maxanisotropy", "maxmiplevel", "mipmaplodbias", "srgbtexture"};
-    for (const char* s : k)
-        if (lower == s) return true;
-    return false;
-}
-
 std::string padded(const std::vector<std::string>& components) {
     std::string out = "float4(";
     for (size_t i = 0; i < 4; ++i) out += (i ? ", " : "") + (i < components.size() ? components[i] : std::string("0"));
@@ -207,13 +199,29 @@ AsmPassBindings collectAsmPassBindings(const FxPass& pass, bool vertexIsAsm, boo
             c.bindBumpEnvironment(a, lower, out.pixel.bumpEnvironment[a.index], out.pixelSignature);
             continue;
         }
-        if (lower == "texture" || lower == "sampler" || (a.index >= 0 && isStageSamplerState(lower))) {
+        if (lower == "texture" || lower == "sampler" || (a.index >= 0 && isTextureStageSamplerState(lower))) {
             consumed[i] = true;
             c.bindSamplerStage(a, out.stages[a.index < 0 ? 0 : a.index]);
         }
     }
     for (const auto& [n, stage] : out.stages)
         if (stage.kind) out.pixel.stageKinds[n] = *stage.kind;
+    return out;
+}
+
+std::map<int, PassSamplerStage> collectPassSamplerStages(const FxPass& pass, const RewrittenEffect& rewritten, StateContext& context,
+                                                         std::vector<bool>& consumed) {
+    std::map<int, PassSamplerStage> out;
+    Collector c(rewritten, context);
+    for (size_t i = 0; i < pass.assignments.size(); ++i) {
+        const FxAssignment& a = pass.assignments[i];
+        const std::string lower = toLower(a.name);
+        if (a.isCall || consumed[i] || !(lower == "texture" || lower == "sampler" || (a.index >= 0 && isTextureStageSamplerState(lower)))) continue;
+        consumed[i] = true;
+        auto [it, first] = out.try_emplace(a.index < 0 ? 0 : a.index);
+        if (first) it->second.token = a.nameToken;
+        c.bindSamplerStage(a, it->second.stage);
+    }
     return out;
 }
 

@@ -43,4 +43,15 @@ struct AsmPassBindings {
 AsmPassBindings collectAsmPassBindings(const FxPass& pass, bool vertexIsAsm, bool pixelIsAsm, const RewrittenEffect& rewritten,
                                        StateContext& context, std::vector<bool>& consumed);
 
+// The same texture-stage states for an HLSL pixel shader (D3D9 sets the stage whatever the shader
+// is written in: stage n is the sampler at register s<n>): `Texture[n] = <T>;`, `Sampler[n] =
+// (S);`, `MinFilter[n] = Linear;` ... (`Texture = <T>` is stage 0). Each stage with the token of
+// its first assignment; the assignments read are marked in `consumed` (already sized).
+struct PassSamplerStage {
+    AsmTextureStage stage;
+    size_t token = 0;
+};
+std::map<int, PassSamplerStage> collectPassSamplerStages(const FxPass& pass, const RewrittenEffect& rewritten, StateContext& context,
+                                                         std::vector<bool>& consumed);
+
 }  // namespace fxport::xlate

@@ -211,6 +211,9 @@ private:
     bool readStreamOutput(const FxShaderExpr& expr, const CompiledShader& shader, StreamOutput& so);
     std::optional<ShaderStage> stageOf(const FxShaderExpr& expr) const;
     bool foldNullGeometryShader(Pass& pass, size_t token);
+    void applyPassSamplerStages(ShaderChoice& pixel, const std::map<int, PassSamplerStage>& stages);
+    // Pixel shaders with a pass's sampler stages: (the shader, the stages' text) -> the copy.
+    std::map<std::pair<int, std::string>, int> stageCopies_;
     // Shaders made by ConstructGSWithSO: (the shader streamed, its declaration) -> the copy with it,
     // and each copy's shader.
     std::map<std::pair<int, std::string>, int> streamCopies_;
@@ -882,15 +885,18 @@ void EffectBuilder::buildTechniques() {
                     parseShaderExpr(syntax_, a.value).kind != FxShaderExpr::Kind::Null)
                     passHasGeometryShader_ = true;
             }
-            bool vertexIsAsm = false, pixelIsAsm = false;
+            bool vertexIsAsm = false, pixelIsAsm = false, setsPixelShader = false;
             for (const auto& a : p.assignments) {
                 std::string n = toLower(a.name);
                 if (n != "vertexshader" && n != "pixelshader") continue;
                 (n == "vertexshader" ? vertexIsAsm : pixelIsAsm) |= isAsmShader(parseShaderExpr(syntax_, a.value));
+                setsPixelShader |= n == "pixelshader";
             }
             std::vector<bool> consumedByAsm;
             size_t errorsBefore = effect_.diagnostics.size();
             passAsm_ = collectAsmPassBindings(p, vertexIsAsm, pixelIsAsm, rewritten_, stateContext, consumedByAsm);
+            std::map<int, PassSamplerStage> samplerStages;
+            if (setsPixelShader && !pixelIsAsm) samplerStages = collectPassSamplerStages(p, rewritten_, stateContext, consumedByAsm);
             for (size_t d = errorsBefore; d < effect_.diagnostics.size(); ++d)
                 if (effect_.diagnostics[d].severity == Severity::Error) pass.valid = false;
             for (size_t ai = 0; ai < p.assignments.size(); ++ai) {
@@ -926,6 +932,7 @@ void EffectBuilder::buildTechniques() {
             }
             if (t.name != kLooseTechnique) checkTessellationPass(pass, p.token);
             if (pass.valid && !foldNullGeometryShader(pass, p.token)) pass.valid = false;
+            if (!samplerStages.empty()) applyPassSamplerStages(pass.pixelShader, samplerStages);
             const bool anyShader = !pass.vertexShader.shaders.empty() || !pass.pixelShader.shaders.empty() || !pass.computeShader.shaders.empty() ||
                                    !pass.geometryShader.shaders.empty() || !pass.hullShader.shaders.empty() || !pass.domainShader.shaders.empty();
             if (pass.valid && !anyShader) {
@@ -944,6 +951,51 @@ void EffectBuilder::buildTechniques() {
         }
         effect_.techniques.push_back(std::move(tech));
     }
+}
+
+// The D3D9 texture stage (s# register) that sampler binding `b` reads: fxc's register where the
+// reflection has one, else (SM 1-3) its unit, which XNA's Textures[] index is.
+static int textureStageOf(const SamplerBinding& b, const ShaderProfile& profile) {
+    if (b.samplerRegister >= 0) return b.samplerRegister;
+    return profile.major < 4 ? b.unit : -1;
+}
+
+// D3D9 pass states for texture stages (`Texture[0] = <T>; MagFilter[0] = Linear;`) reach an HLSL
+// pixel shader's sampler at register s<n> (D3D9 sets the stage, whatever samples it): each pixel
+// shader the pass may run becomes a copy whose sampler there takes the stage's texture and, over
+// its own sampler_state, the states the pass names. A stage the shader does not sample is not
+// kept for later passes as D3D9's device would keep it; a warning says so.
+void EffectBuilder::applyPassSamplerStages(ShaderChoice& pixel, const std::map<int, PassSamplerStage>& stages) {
+    std::string key;
+    for (const auto& [n, s] : stages) key += std::to_string(n) + "{" + s.stage.signature + "}";
+    std::set<int> sampled;
+    for (int& index : pixel.shaders) {
+        if (index < 0) continue;
+        auto [it, made] = stageCopies_.try_emplace({index, key}, static_cast<int>(effect_.shaders.size()));
+        if (made) {
+            CompiledShader copy = effect_.shaders[static_cast<size_t>(index)];
+            for (SamplerBinding& b : copy.samplers) {
+                const int reg = textureStageOf(b, copy.profile);
+                auto stage = stages.find(reg);
+                if (reg < 0 || stage == stages.end()) continue;
+                const AsmTextureStage& s = stage->second.stage;
+                if (!s.textureParameter.empty()) b.textureParameter = s.textureParameter;
+                overlaySamplerState(b.state, s.state);
+            }
+            effect_.shaders.push_back(std::move(copy));
+            if (auto r = reflections_.find(index); r != reflections_.end()) reflections_[it->second] = r->second;
+        }
+        index = it->second;
+        for (const SamplerBinding& b : effect_.shaders[static_cast<size_t>(index)].samplers)
+            sampled.insert(textureStageOf(b, effect_.shaders[static_cast<size_t>(index)].profile));
+    }
+    for (const auto& [n, s] : stages)
+        if (!sampled.count(n))
+            effect_.diagnostics.push_back(at(Severity::Warning, diag::kIgnoredState,
+                                             "texture stage " + std::to_string(n) + " is set, but no pixel shader of this pass samples register s" +
+                                                 std::to_string(n) + ": D3D9 would keep the stage's texture and states on the device for " +
+                                                 "later passes; fxport sets them only for a pass whose pixel shader samples the stage",
+                                             s.token));
 }
 
 // The stage `expr` compiles for (what ConstructGSWithSO wraps): by its profile, through shader variables.

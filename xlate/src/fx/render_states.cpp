@@ -910,4 +910,29 @@ bool translateSamplerAssignment(const FxAssignment& a, StateContext& ctx, Sample
     return false;
 }
 
+bool isTextureStageSamplerState(const std::string& lower) {
+    static const std::set<std::string> k = {"minfilter", "magfilter", "mipfilter", "addressu", "addressv", "addressw", "bordercolor",
+                                            "maxanisotropy", "maxmiplevel", "mipmaplodbias", "srgbtexture"};
+    return k.count(lower) > 0;
+}
+
+void overlaySamplerState(SamplerStateDesc& base, const SamplerStateDesc& over) {
+    auto take = [](auto& to, const auto& from) {
+        if (from) to = from;
+    };
+    take(base.minFilter, over.minFilter);
+    take(base.magFilter, over.magFilter);
+    take(base.mipFilter, over.mipFilter);
+    take(base.addressU, over.addressU);
+    take(base.addressV, over.addressV);
+    take(base.addressW, over.addressW);
+    take(base.borderColor, over.borderColor);
+    take(base.maxAnisotropy, over.maxAnisotropy);
+    take(base.maxMipLevel, over.maxMipLevel);
+    take(base.mipLodBias, over.mipLodBias);
+    take(base.minLod, over.minLod);
+    take(base.maxLod, over.maxLod);
+    take(base.comparison, over.comparison);
+}
+
 }  // namespace fxport::xlate

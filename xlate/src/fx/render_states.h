@@ -40,6 +40,13 @@ StateResult translatePassAssignment(const FxAssignment& assignment, StateContext
 bool translateSamplerAssignment(const FxAssignment& assignment, StateContext& context, SamplerStateDesc& state,
                                 std::string& textureParameter, std::vector<FxAssignment>* fromParameters = nullptr);
 
+// A sampler state a D3D9 pass sets per texture stage (`MinFilter[1] = Linear;`), lower case: what
+// a pass gives the sampler at register s<n> of its pixel shader (asm or HLSL).
+bool isTextureStageSamplerState(const std::string& lower);
+
+// Each state `over` sets replaces `base`'s (a pass's MinFilter[0] over a sampler_state's).
+void overlaySamplerState(SamplerStateDesc& base, const SamplerStateDesc& over);
+
 // A sampler state translateSamplerAssignment left to `fromParameters`, with the parameter (element)
 // resolved against `context.parameters`. False after adding an error.
 bool resolveSamplerStateParameter(const FxAssignment& assignment, StateContext& context, SamplerStateParameter& out);

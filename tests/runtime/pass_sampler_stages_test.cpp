@@ -1,0 +1,71 @@
+// Texture-stage states of a D3D9 pass reach an HLSL pixel shader's samplers (issue 24, the XNA 2.0
+// samples' MaterialShader20.fx): `Texture[0] = <Image>; MagFilter[0] = Linear;` bind the parameter
+// and set the sampler state at register s0, as D3D9's effect framework does. Fixture:
+// PassSamplerStages.fx. The drawn pixel is compared with the texels the test wrote.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "fxport/xlate/effect_compiler.h"
+#include "runtime_test_support.h"
+
+namespace fxport {
+namespace {
+
+using test::drawQuad;
+using test::testDevice;
+
+TEST(PassSamplerStages, StageStatesBindTheTextureAndGoOverTheSamplerState) {
+    GraphicsDevice& device = testDevice();
+    device.BlendState = BlendState::Opaque;
+    device.DepthStencilState = DepthStencilState::None;
+    device.RasterizerState = RasterizerState::CullNone;
+    Effect effect(device, test::runtimeFixture("PassSamplerStages.fx"));
+    Texture2D image(device, 1, 1, false, SurfaceFormat::Color), other(device, 1, 1, false, SurfaceFormat::Color);
+    image.SetData(std::vector<Color>{Color(64, 128, 192, 255)});
+    other.SetData(std::vector<Color>{Color(255, 255, 255, 255)});
+    effect.Parameters["Image"].SetValue(image);
+    effect.Parameters["Other"].SetValue(other);
+    device.SamplerStates[0] = SamplerState::PointWrap;
+    device.SamplerStates[1] = SamplerState::LinearWrap;
+    effect.CurrentTechnique = effect.Techniques["Stages"];
+    effect.CurrentTechnique->Passes[0].Apply();
+
+    // A filter the pass does not name keeps the device's: MipFilter[0] stays PointWrap's point.
+    EXPECT_EQ(device.Textures[0].get(), &image);
+    EXPECT_EQ(device.SamplerStates[0].Filter, TextureFilter::LinearMipPoint);
+    EXPECT_EQ(device.SamplerStates[0].AddressU, TextureAddressMode::Clamp);
+    EXPECT_EQ(device.SamplerStates[0].AddressV, TextureAddressMode::Mirror);
+    EXPECT_EQ(device.Textures[1].get(), &image) << "Texture[1] goes over the sampler_state's Texture = <Other>";
+    EXPECT_EQ(device.SamplerStates[1].Filter, TextureFilter::PointMipLinear);  // the sampler_state names no MipFilter: LinearWrap's
+    EXPECT_EQ(device.SamplerStates[1].AddressU, TextureAddressMode::Clamp);
+    EXPECT_EQ(device.SamplerStates[1].AddressV, TextureAddressMode::Wrap);
+
+    RenderTarget2D target(device, 2, 2, false, SurfaceFormat::Vector4);
+    device.SetRenderTarget(target);
+    device.Clear(Color::Black);
+    effect.CurrentTechnique->Passes[0].Apply();
+    drawQuad(device);
+    device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+    const std::vector<float> px = test::readFloats(target);
+    ASSERT_EQ(px.size(), 16u);
+    const float want[4] = {64 / 255.0f, 128 / 255.0f, 192 / 255.0f, 1.0f};  // Image's rg from s0, Image's ba from s1
+    for (int c = 0; c < 4; ++c) EXPECT_NEAR(px[std::size_t(c)], want[c], 1e-6f) << "channel " << c;
+}
+
+TEST(PassSamplerStages, AStageNoShaderSamplesIsReportedAtItsLine) {
+    xlate::CompiledEffect e = xlate::compileEffectFile(test::runtimeFixture("PassSamplerStages.fx"), xlate::CompileOptions{});
+    bool found = false;
+    for (const auto& d : e.diagnostics)
+        if (d.message.find("texture stage 3") != std::string::npos) {
+            found = true;
+            EXPECT_EQ(d.id, std::string(xlate::diag::kIgnoredState));
+            EXPECT_EQ(d.location.line, 46) << d.format();
+        }
+    EXPECT_TRUE(found);
+    for (const auto& d : e.diagnostics) EXPECT_EQ(d.message.find("fixed-function"), std::string::npos) << d.format();
+}
+
+}  // namespace
+}  // namespace fxport
