@@ -404,6 +404,10 @@ void GpuSession::bindTextures(fxport::Effect& effect, const std::string& source,
     }
     for (const auto& shader : compiled.shaders) {
         for (const auto& binding : shader.samplers) {
+            if (model < 40 && binding.samplerRegister >= 0) {
+                bindD3d9Sampler(binding, model, false);
+                continue;
+            }
             int slot = samplerSlots.count(binding.samplerName) ? samplerSlots[binding.samplerName] : binding.unit;
             auto s = samplers_.find(slot);
             device().SamplerStates[binding.unit] = s != samplers_.end() ? samplerState(s->second) : defaultSampler(model);
@@ -416,12 +420,39 @@ void GpuSession::bindTextures(fxport::Effect& effect, const std::string& source,
     }
 }
 
+// SM 1-3: [sampler N] and [srv N] are D3D9's sampler register N, which xlate's reflection gives
+// each binding (a combined `tex.Sample(sam, uv)` has its own). The sampler state goes before
+// Apply(), which merges the effect's sampler_state over it; the texture after, over the one
+// Apply() binds from a texture parameter, as D3D9's SetTexture(N) feeds the register whatever
+// texture object the shader names.
+void GpuSession::bindD3d9Sampler(const fxport::xlate::SamplerBinding& binding, int model, bool texture) {
+    for (int k = 0; k < binding.elements; ++k) {
+        const int reg = binding.samplerRegister + k, unit = binding.unit + k;
+        if (!texture) {
+            auto s = samplers_.find(reg);
+            device().SamplerStates[unit] = s != samplers_.end() ? samplerState(s->second) : defaultSampler(model);
+            continue;
+        }
+        if (unsupportedTextures_.count(reg)) throw Unsupported(unsupportedTextures_[reg]);
+        auto t = textures_.find(reg);
+        device().Textures[unit] = t == textures_.end() ? nullptr : t->second.get();
+    }
+}
+
+void GpuSession::bindD3d9Textures(fxport::Effect& effect, int model) {
+    if (model >= 40) return;
+    for (const auto& shader : effect.compiled().shaders)
+        for (const auto& binding : shader.samplers)
+            if (binding.samplerRegister >= 0) bindD3d9Sampler(binding, model, true);
+}
+
 void GpuSession::draw(fxport::Effect& effect, const std::string& source, int model, const DrawCall& call) {
     bindTargets();
     bindTextures(effect, source, model);
     bindStorage();
     effect.CurrentTechnique = effect.Techniques[0];
     effect.CurrentTechnique->Passes[0].Apply();
+    bindD3d9Textures(effect, model);
     // D3D's defaults for a runner that sets no states: no culling, no blending, no depth test.
     device().RasterizerState = fxport::RasterizerState::CullNone;
     device().BlendState = fxport::BlendState::Opaque;

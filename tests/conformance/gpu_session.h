@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "fxport/math.h"
+#include "fxport/xlate/compiled_effect.h"
 #include "gpu_backend.h"
 #include "probe.h"
 #include "resource_desc.h"
@@ -63,6 +64,8 @@ private:
     void makeVolume(const ResourceDesc& r);
     void bindTargets();
     void bindTextures(fxport::Effect& effect, const std::string& source, int model);
+    void bindD3d9Sampler(const fxport::xlate::SamplerBinding& binding, int model, bool texture);
+    void bindD3d9Textures(fxport::Effect& effect, int model);  // after Apply(): SM 1-3 textures by register
     void drawVertices(const DrawCall& call);
     void makeUav(const ResourceDesc& r);
     void makeBufferSrv(const ResourceDesc& r);

@@ -114,3 +114,91 @@ TEST(D3dRegisters, ReservationsForOtherProfilesOrClassesAreIgnored) {
     EXPECT_EQ(registerOf("Texture2D unused : register(s0);\nTexture2D tex1;\n"), 0);
     EXPECT_EQ(registerOf("Texture2D unused[2][2] : register(t0);\nTexture2D tex1;\n"), 4);
 }
+
+
+namespace {
+
+CompiledEffect compileSm3(const std::string& declarations, const std::string& body) {
+    CompileOptions o;
+    o.useCache = false;
+    return compileEffectSource(declarations + "float4 PS() : COLOR { " + body + " }\ntechnique T { pass P { PixelShader = compile ps_3_0 PS(); } }\n",
+                               "virtual/D3d9Registers.fx", o);
+}
+
+// The SM 1-3 binding that samples `texture` with `sampler` (a DX9 sampler's own texture when empty).
+const SamplerBinding& d3d9Binding(const CompiledEffect& e, const std::string& sampler, const std::string& texture = {}) {
+    for (const auto& b : e.shaders.at(0).samplers)
+        if (b.samplerName == sampler &&
+            (texture.empty() ? b.textureParameter.empty() || b.textureParameter.find("_fxport_texture") != std::string::npos : b.textureParameter == texture))
+            return b;
+    throw std::runtime_error("no binding for " + sampler + "+" + texture);
+}
+
+}  // namespace
+
+// SM 1-3: one s# (also the texture stage) per DX9 sampler and per combined `tex.Sample(sam, uv)`.
+// The values are combined-samplers.shader_test's sm<4 probes (fxc's output), each a weighted sum
+// of [srv N] = N: e.g. 453021 reads s4, s5, s3, s0, s2, s1.
+TEST(D3d9Registers, CombinedSamplersComeBeforeTheSamplersOfTheirWidth) {
+    // "On sm1, textures for new combined samplers are allocated before regular samplers":
+    // 10 * tex.Sample(sam) + tex2D(sam) probes 1, so the combined sampler is s0 and sam s1.
+    CompiledEffect e = compileSm3("Texture2D tex;\nsampler sam;\n", "return 10 * tex.Sample(sam, float2(0, 0)) + tex2D(sam, float2(0, 0));");
+    ASSERT_FALSE(e.hasErrors());
+    EXPECT_EQ(d3d9Binding(e, "sam", "tex").samplerRegister, 0);
+    EXPECT_EQ(d3d9Binding(e, "sam", "tex").textureRegister, 0);
+    EXPECT_EQ(d3d9Binding(e, "sam").samplerRegister, 1);
+    EXPECT_EQ(d3d9Binding(e, "sam").textureRegister, 1);
+}
+
+// combined-samplers' samA/samB/samC shader (probe 453021): the combined samplers take s0-s2 in
+// their samplers' declaration order (A, B, C), not their order of use (A, C, B); the DX9 samplers
+// then s3-s5, also by declaration.
+TEST(D3d9Registers, CombinedThenDx9SamplersEachInDeclarationOrder) {
+    CompiledEffect e = compileSm3("sampler samA;\nsampler samB;\nsampler samC;\ntexture2D tex;\n",
+                                  "return 100000 * tex2D(samB, float2(0, 0)) + 10000 * tex2D(samC, float2(0, 0)) + 1000 * tex2D(samA, float2(0, 0))"
+                                  " + 100 * tex.Sample(samA, float2(0, 0)) + 10 * tex.Sample(samC, float2(0, 0)) + tex.Sample(samB, float2(0, 0));");
+    ASSERT_FALSE(e.hasErrors());
+    EXPECT_EQ(d3d9Binding(e, "samA", "tex").samplerRegister, 0);
+    EXPECT_EQ(d3d9Binding(e, "samB", "tex").samplerRegister, 1);
+    EXPECT_EQ(d3d9Binding(e, "samC", "tex").samplerRegister, 2);
+    EXPECT_EQ(d3d9Binding(e, "samA").samplerRegister, 3);
+    EXPECT_EQ(d3d9Binding(e, "samB").samplerRegister, 4);
+    EXPECT_EQ(d3d9Binding(e, "samC").samplerRegister, 5);
+}
+
+// combined-samplers' texA/samA[2]/texB[2]/samB shader (probe 4351): wider objects first. The
+// combined texB[].Sample(samB) is as wide as texB (s0-s1, texB[1] at s1), samA[] as its bind count
+// (s2-s3); then the combined texA.Sample(samA[0]) s4 before samB s5. And sam[2] beside a combined
+// sampler (probe 21): sam[] s0-s1, the combined one s2.
+TEST(D3d9Registers, WiderSamplersAndArraysComeFirst) {
+    CompiledEffect e = compileSm3("Texture2D texA;\nsampler samA[2];\nTexture2D texB[2];\nsampler samB;\n",
+                                  "return 1000 * texA.Sample(samA[0], float2(0, 0)) + 100 * tex2D(samA[1], float2(0, 0))"
+                                  " + 10 * tex2D(samB, float2(0, 0)) + texB[1].Sample(samB, float2(0, 0));");
+    ASSERT_FALSE(e.hasErrors());
+    EXPECT_EQ(d3d9Binding(e, "samB", "texB").samplerRegister, 0);
+    EXPECT_EQ(d3d9Binding(e, "samB", "texB").elements, 2);
+    EXPECT_EQ(d3d9Binding(e, "samA_fxport_1").samplerRegister, 3);
+    EXPECT_EQ(d3d9Binding(e, "samA_fxport_0", "texA").samplerRegister, 4);
+    EXPECT_EQ(d3d9Binding(e, "samB").samplerRegister, 5);
+
+    CompiledEffect arrays = compileSm3("Texture2D tex;\nsampler sam[2];\n", "return 10 * tex.Sample(sam[0], float2(0, 0)) + tex2D(sam[1], float2(0, 0));");
+    ASSERT_FALSE(arrays.hasErrors());
+    EXPECT_EQ(d3d9Binding(arrays, "sam_fxport_1").samplerRegister, 1);
+    EXPECT_EQ(d3d9Binding(arrays, "sam_fxport_0", "tex").samplerRegister, 2);
+}
+
+// Past s15 (D3D9's last sampler register; fxc refuses such a shader, fxport's GL units reach
+// further) a shader keeps no registers and binds by unit, as before: it still compiles.
+TEST(D3d9Registers, PastS15NoRegistersAreGiven) {
+    std::string declarations, body = "float4 f = 0;";
+    for (int i = 0; i < 17; ++i) {
+        declarations += "sampler s" + std::to_string(i) + ";\n";
+        body += " f += tex2D(s" + std::to_string(i) + ", float2(0, 0));";
+    }
+    CompiledEffect e = compileSm3(declarations, body + " return f;");
+    ASSERT_FALSE(e.hasErrors());
+    for (const auto& b : e.shaders.at(0).samplers) {
+        EXPECT_EQ(b.samplerRegister, -1) << b.samplerName;
+        EXPECT_EQ(b.textureRegister, -1) << b.samplerName;
+    }
+}

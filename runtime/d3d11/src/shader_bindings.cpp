@@ -68,6 +68,16 @@ std::map<std::string, int> allocate(const xlate::CompiledEffect& e, RK kind, std
     return slots;
 }
 
+// The shader's samplers with the t#/s# registers this front end binds by: xlate's (fxc's) for a
+// D3D10+ shader. An SM 1-3 shader's are D3D9 sampler registers (one s# per sampler and per combined
+// `tex.Sample(sam, uv)`), not D3D11's separate t# and s#: such a shader keeps the slots allocated here.
+std::vector<xlate::SamplerBinding> d3d10Registers(const xlate::CompiledShader& s) {
+    std::vector<xlate::SamplerBinding> out = s.samplers;
+    if (s.profile.major < 4)
+        for (auto& sb : out) sb.textureRegister = sb.samplerRegister = -1;
+    return out;
+}
+
 }  // namespace
 
 int packedSize(const xlate::Parameter& p) {
@@ -123,9 +133,10 @@ ShaderBindings bindingsOf(const xlate::CompiledEffect& effect, int shader) {
     std::sort(b.cbuffers.begin(), b.cbuffers.end(), [](const auto& x, const auto& y) { return x.slot < y.slot; });
 
     // Textures and samplers: DX10 pairs name both; a DX9 sampler (sampler2D) is its own s# and t#.
+    const std::vector<xlate::SamplerBinding> shaderSamplers = d3d10Registers(s);
     std::vector<std::string> textures, samplers;
     std::map<std::string, xlate::TextureKind> kinds;
-    for (const auto& sb : s.samplers) {
+    for (const auto& sb : shaderSamplers) {
         const std::string t = sb.textureParameter.empty() ? sb.samplerName : sb.textureParameter;
         if (std::find(textures.begin(), textures.end(), t) == textures.end()) textures.push_back(t);
         kinds[t] = sb.kind;
@@ -139,12 +150,12 @@ ShaderBindings bindingsOf(const xlate::CompiledEffect& effect, int shader) {
     std::map<std::string, int> tSlots = allocate(effect, RK::Texture, textures, {}, bufferSlots);
     std::map<std::string, int> sSlots = allocate(effect, RK::Sampler, samplers);
     // xlate's registers (fxc's, for SM4+ shaders) where it gives them.
-    for (const auto& sb : s.samplers) {
+    for (const auto& sb : shaderSamplers) {
         const std::string t = sb.textureParameter.empty() ? sb.samplerName : sb.textureParameter;
         if (sb.textureRegister >= 0) tSlots[t] = sb.textureRegister;
         if (sb.samplerRegister >= 0) sSlots[sb.samplerName] = sb.samplerRegister;
     }
-    for (const auto& sb : s.samplers) {
+    for (const auto& sb : shaderSamplers) {
         const std::string t = sb.textureParameter.empty() ? sb.samplerName : sb.textureParameter;
         SamplerUnit u;
         u.glUnit = sb.unit;

@@ -1,7 +1,8 @@
-// fxc's t# and s# registers for one D3D10+ shader (d3d_registers.h).
+// fxc's t# and s# registers for one D3D10+ shader, and the s# of an SM 1-3 one (d3d_registers.h).
 #include "effect/d3d_registers.h"
 
 #include <algorithm>
+#include <cctype>
 #include <map>
 #include <set>
 #include <string>
@@ -11,6 +12,8 @@
 namespace fxport::xlate {
 
 namespace {
+
+constexpr int kD3d9SamplerRegisters = 16;  // s0-s15
 
 // `sam_fxport_3` -> {"sam", 3}: an element of a DX9 sampler array (sampler_array_elements.h);
 // other names are {name, -1}.
@@ -163,7 +166,82 @@ void assignSamplers(std::vector<SamplerBinding>& bindings, const EffectSyntax& s
     }
 }
 
+// Whether DX9 sampler `name` names its texture itself (`Texture = <T>` in its sampler_state).
+bool namesItsTexture(const EffectSyntax& syntax, const std::string& name) {
+    for (const auto& s : syntax.samplers)
+        if (s.name == name)
+            for (const auto& a : s.states)
+                if (a.name.size() == 7 && std::equal(a.name.begin(), a.name.end(), "texture",
+                                                     [](char x, char y) { return std::tolower(static_cast<unsigned char>(x)) == y; }))
+                    return true;
+    return false;
+}
+
+// The D3D9 sampler object binding `b` uses, added to `objects` (widened as needed): a DX9 sampler
+// (array), or the combined sampler `tex.Sample(sam, uv)` makes, as wide as the texture (array).
+// Returns its key and the element `b` uses.
+std::pair<std::string, int> addD3d9Object(std::map<std::string, Object>& objects, const SamplerBinding& b, const EffectSyntax& syntax,
+                                          const ShaderProfile& target) {
+    auto [base, element] = arrayElement(b.samplerName);
+    const bool combined = !b.samplerName.empty() && !b.textureParameter.empty() && samplerOfMadeTexture(b.textureParameter).empty() &&
+                          !namesItsTexture(syntax, b.samplerName);
+    const std::string key = combined ? base + "+" + b.textureParameter : base;
+    Object& o = objects[key];
+    o.name = key;
+    o.declared = std::size_t(samplerDeclaration(syntax, base));
+    o.madeForSampler = combined;
+    if (combined) {
+        for (const auto& t : syntax.textures)
+            if (t.name == b.textureParameter) o.width = std::max(o.width, textureElements(syntax, t));
+        return {key, 0};
+    }
+    o.isArray = element >= 0;
+    o.width = std::max(o.width, element + 1);  // the bind count
+    o.explicitRegister = samplerExplicit(syntax, o.isArray ? base + "_fxport_0" : base, target);
+    return {key, std::max(element, 0)};
+}
+
+// combined-samplers' order: register(sN) holds; the rest take the lowest free run by decreasing
+// width, ties the combined samplers first, each kind in its samplers' declaration order.
+void placeD3d9Objects(std::map<std::string, Object>& objects) {
+    std::set<int> taken;
+    std::vector<Object*> order;
+    for (auto& [name, o] : objects)
+        if (o.explicitRegister >= 0) {
+            o.first = o.explicitRegister;
+            for (int k = 0; k < o.width; ++k) taken.insert(o.first + k);
+        } else {
+            order.push_back(&o);
+        }
+    std::stable_sort(order.begin(), order.end(), [](const Object* a, const Object* b) {
+        if (a->width != b->width) return a->width > b->width;
+        if (a->madeForSampler != b->madeForSampler) return a->madeForSampler;
+        return a->declared < b->declared;
+    });
+    for (Object* o : order) o->first = takeRun(taken, o->width);
+}
+
 }  // namespace
+
+void assignD3d9SamplerRegisters(std::vector<SamplerBinding>& bindings, const EffectSyntax& syntax, const ShaderProfile& target) {
+    // Keyed by sampler (array) name, or "sampler+texture" for a combined one (no HLSL name has '+').
+    std::map<std::string, Object> objects;
+    std::vector<std::pair<std::string, int>> keys;  // per binding: object and element
+    for (const auto& b : bindings)  // a texture read without sampler has no s#
+        keys.push_back(b.samplerName.empty() ? std::pair<std::string, int>{"", -1} : addD3d9Object(objects, b, syntax, target));
+    placeD3d9Objects(objects);
+    std::vector<int> registers;
+    for (std::size_t i = 0; i < bindings.size(); ++i) {
+        registers.push_back(keys[i].second < 0 ? -1 : objects[keys[i].first].first + keys[i].second);
+        // D3D9 has s0-s15, which fxc refuses to pass; fxport's units go further. Such a shader keeps
+        // no registers (-1) and binds by `unit` alone, as every SM 1-3 shader did before.
+        if (registers.back() + std::max(bindings[i].elements, 1) > kD3d9SamplerRegisters) return;
+    }
+    for (std::size_t i = 0; i < bindings.size(); ++i) {
+        bindings[i].samplerRegister = registers[i];
+        bindings[i].textureRegister = registers[i];  // D3D9's texture stage is the sampler's
+    }
+}
 
 int reservedRegister(const std::vector<FxRegister>& registers, char registerClass, const ShaderProfile& target) {
     const std::string stage = target.name.substr(0, 2);

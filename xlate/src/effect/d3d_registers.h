@@ -1,6 +1,7 @@
 // The t# and s# registers fxc gives the textures and samplers one D3D10+ shader uses
 // (SamplerBinding::textureRegister / samplerRegister), for a D3D11 front end to bind slot N where
-// D3D would. vkd3d's texture-ordering and combined-samplers pin fxc's rules:
+// D3D would; and the s# of an SM 1-3 shader's samplers (assignD3d9SamplerRegisters). vkd3d's
+// texture-ordering and combined-samplers pin fxc's rules:
 //  - a register(tN) / register(sN) holds, and fxc keeps it reserved even where it is unused; one
 //    of another class (a texture's register(s0)) is ignored, and so is one for another profile
 //    (reservedRegister);
@@ -27,6 +28,15 @@ namespace fxport::xlate {
 // `bufferRegisters`: t registers structured and raw buffers of the shader already hold.
 void assignD3dRegisters(std::vector<SamplerBinding>& bindings, const std::vector<std::uint32_t>& firstUse,
                         const EffectSyntax& syntax, const std::vector<int>& bufferRegisters, const ShaderProfile& target);
+
+// SM 1-3: the sampler register (s#, also the texture stage) fxc gives each binding, in both
+// textureRegister and samplerRegister. vkd3d's combined-samplers pins the order: a register(sN)
+// holds; `tex.Sample(sam, uv)` makes a combined sampler per sampler and texture, as wide as the
+// texture (array); the rest take the lowest free run by decreasing width, ties the combined ones
+// first (in their samplers' declaration order), then the DX9 samplers in declaration order (an
+// array as wide as its last used element + 1). Samplers the shader does not sample take none. A
+// shader that would pass s15 (which fxc refuses; fxport's GL units go further) gets none (-1).
+void assignD3d9SamplerRegisters(std::vector<SamplerBinding>& bindings, const EffectSyntax& syntax, const ShaderProfile& target);
 
 // The register of class `registerClass` ('t', 's') that `registers` bind an object at in a shader
 // compiled for `target`; -1 for none. As vkd3d's register-reservations-profile pins fxc (SM4-5):

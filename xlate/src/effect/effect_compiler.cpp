@@ -723,11 +723,13 @@ int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile
     shader.glsl = glsl.glsl;
     shader.inputs = glsl.inputs;
     shader.samplers = glsl.samplers;
-    if (profile.major >= 4) {  // D3D9's sampler registers are the units already
+    if (profile.major >= 4) {
         std::vector<int> bufferRegisters;
         for (const StorageBinding& b : glsl.storage)
             if (b.registerClass == 't') bufferRegisters.push_back(b.slot);
         assignD3dRegisters(shader.samplers, glsl.samplerFirstUse, syntax_, bufferRegisters, profile);
+    } else {
+        assignD3d9SamplerRegisters(shader.samplers, syntax_, profile);
     }
     shader.uniformRangesRead = glsl.rangesRead;
     shader.uniformRangesLive = glsl.rangesLive;

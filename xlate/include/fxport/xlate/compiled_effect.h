@@ -135,7 +135,9 @@ struct SamplerBinding {
     int elements = 1;
     // D3D10+ shaders: the t# and s# registers fxc gives this texture and sampler (element 0 of an
     // array; d3d_registers.h has the rules), for a D3D11 front end; -1 where D3D has none (a Load
-    // without sampler) and in SM 1-3 shaders, whose sampler register is `unit`.
+    // without sampler). SM 1-3 shaders: the s# register fxc gives the sampler (the texture stage
+    // too) in both; `tex.Sample(sam, uv)` there is a combined sampler of its own; -1 in a shader
+    // that would pass s15. XNA's Effect binds SM 1-3 samplers by `unit` alone.
     int textureRegister = -1;
     int samplerRegister = -1;
 };
