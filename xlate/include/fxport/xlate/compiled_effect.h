@@ -133,11 +133,9 @@ struct SamplerBinding {
     // GL units unit .. unit + elements - 1: an array of samplers (`Texture2D t[3]`) binds one per
     // element, consecutively.
     int elements = 1;
-    // D3D10+ shaders: the t# and s# registers fxc gives this texture and sampler (element 0 of an
-    // array; d3d_registers.h has the rules), for a D3D11 front end; -1 where D3D has none (a Load
-    // without sampler). SM 1-3 shaders: the s# register fxc gives the sampler (the texture stage
-    // too) in both; `tex.Sample(sam, uv)` there is a combined sampler of its own; -1 in a shader
-    // that would pass s15. XNA's Effect binds SM 1-3 samplers by `unit` alone.
+    // The t# and s# registers fxc gives this texture and sampler (element 0 of an array; -1 where
+    // D3D has none, as a Load without sampler); SM 1-3: the s# (texture stage) in both, combined
+    // samplers too, -1 past s15 (d3d_registers.h has the rules). XNA binds SM 1-3 by `unit` alone.
     int textureRegister = -1;
     int samplerRegister = -1;
 };
