@@ -57,7 +57,7 @@ namespace fs = std::filesystem;
 
 namespace fxport::xlate {
 
-const char* compilerVersion() { return "fxport-xlate-18"; }  // 3: asm { } blocks translate; 4: compute, hull, domain; 5: D3D resource registers; 6: one-row/one-column matrices as vectors, lhs and componentwise casts, scalar intrinsics; 7: mixed shapes, fxc signature layout, geometry entries, struct inheritance, more fxc rejections; 8: D3D integer fix-ups, out-argument wrappers, clip-distance packing, serialised varyings, typed buffers, constant-expression sizes, component-wise casts; 9: cbuffers at D3D offsets (packoffset, register(cN), register arrays); 10: D3D9 fixed-function variants, tight structured buffers, sampler-array elements, integer matrices, fetch offsets, negated comparisons, pow2 partitioning and ProcessTessFactors, split-array semantics; 11: live SM1-3 constant ranges, zero-initialised statics, fxc string escapes, nested struct reflection; 12: objects in cbuffers moved out, constant-array sizes, SV_Coverage input, struct-parameter interpolation modifiers; 13: ByteAddressBuffer sizes in bytes, packed GS clip/cull inputs, per-sample input evaluation, no fxport_Internal block; 14: fxc's overload choices, Interlocked float values, vector-to-array casts, statics in cbuffers, VS without position, sampler states from parameters, keyword spellings; 15: fxc's t#/s# registers and array elements in sampler bindings; 16: int literal folding as fxc, half-only overloads, SM2-3 lvalue casts with swizzles; 17: stream-output declarations (ConstructGSWithSO), SetPixelShader(NULL); 18: SM1-3 sampler registers (combined samplers), D3D9 pass texture stages for HLSL pixel shaders
+const char* compilerVersion() { return "fxport-xlate-19"; }  // 3: asm { } blocks translate; 4: compute, hull, domain; 5: D3D resource registers; 6: one-row/one-column matrices as vectors, lhs and componentwise casts, scalar intrinsics; 7: mixed shapes, fxc signature layout, geometry entries, struct inheritance, more fxc rejections; 8: D3D integer fix-ups, out-argument wrappers, clip-distance packing, serialised varyings, typed buffers, constant-expression sizes, component-wise casts; 9: cbuffers at D3D offsets (packoffset, register(cN), register arrays); 10: D3D9 fixed-function variants, tight structured buffers, sampler-array elements, integer matrices, fetch offsets, negated comparisons, pow2 partitioning and ProcessTessFactors, split-array semantics; 11: live SM1-3 constant ranges, zero-initialised statics, fxc string escapes, nested struct reflection; 12: objects in cbuffers moved out, constant-array sizes, SV_Coverage input, struct-parameter interpolation modifiers; 13: ByteAddressBuffer sizes in bytes, packed GS clip/cull inputs, per-sample input evaluation, no fxport_Internal block; 14: fxc's overload choices, Interlocked float values, vector-to-array casts, statics in cbuffers, VS without position, sampler states from parameters, keyword spellings; 15: fxc's t#/s# registers and array elements in sampler bindings; 16: int literal folding as fxc, half-only overloads, SM2-3 lvalue casts with swizzles; 17: stream-output declarations (ConstructGSWithSO), SetPixelShader(NULL); 18: SM1-3 sampler registers (combined samplers), D3D9 pass texture stages for HLSL pixel shaders; 19: pass texture stages kept for later passes
 
 namespace {
 
@@ -211,7 +211,7 @@ private:
     bool readStreamOutput(const FxShaderExpr& expr, const CompiledShader& shader, StreamOutput& so);
     std::optional<ShaderStage> stageOf(const FxShaderExpr& expr) const;
     bool foldNullGeometryShader(Pass& pass, size_t token);
-    void applyPassSamplerStages(ShaderChoice& pixel, const std::map<int, PassSamplerStage>& stages);
+    void applyPassSamplerStages(ShaderChoice& pixel, const std::map<int, PassSamplerStage>& stages, std::vector<TextureStage>& unsampled);
     // Pixel shaders with a pass's sampler stages: (the shader, the stages' text) -> the copy.
     std::map<std::pair<int, std::string>, int> stageCopies_;
     // Shaders made by ConstructGSWithSO: (the shader streamed, its declaration) -> the copy with it,
@@ -934,7 +934,7 @@ void EffectBuilder::buildTechniques() {
             }
             if (t.name != kLooseTechnique) checkTessellationPass(pass, p.token);
             if (pass.valid && !foldNullGeometryShader(pass, p.token)) pass.valid = false;
-            if (!samplerStages.empty()) applyPassSamplerStages(pass.pixelShader, samplerStages);
+            if (!samplerStages.empty()) applyPassSamplerStages(pass.pixelShader, samplerStages, pass.textureStages);
             const bool anyShader = !pass.vertexShader.shaders.empty() || !pass.pixelShader.shaders.empty() || !pass.computeShader.shaders.empty() ||
                                    !pass.geometryShader.shaders.empty() || !pass.hullShader.shaders.empty() || !pass.domainShader.shaders.empty();
             if (pass.valid && !anyShader) {
@@ -965,9 +965,9 @@ static int textureStageOf(const SamplerBinding& b, const ShaderProfile& profile)
 // D3D9 pass states for texture stages (`Texture[0] = <T>; MagFilter[0] = Linear;`) reach an HLSL
 // pixel shader's sampler at register s<n> (D3D9 sets the stage, whatever samples it): each pixel
 // shader the pass may run becomes a copy whose sampler there takes the stage's texture and, over
-// its own sampler_state, the states the pass names. A stage the shader does not sample is not
-// kept for later passes as D3D9's device would keep it; a warning says so.
-void EffectBuilder::applyPassSamplerStages(ShaderChoice& pixel, const std::map<int, PassSamplerStage>& stages) {
+// its own sampler_state, the states the pass names. A stage no pixel shader of the pass samples
+// goes to Pass::textureStages: Apply() sets the device's stage, which later passes may sample.
+void EffectBuilder::applyPassSamplerStages(ShaderChoice& pixel, const std::map<int, PassSamplerStage>& stages, std::vector<TextureStage>& unsampled) {
     std::string key;
     for (const auto& [n, s] : stages) key += std::to_string(n) + "{" + s.stage.signature + "}";
     std::set<int> sampled;
@@ -992,12 +992,7 @@ void EffectBuilder::applyPassSamplerStages(ShaderChoice& pixel, const std::map<i
             sampled.insert(textureStageOf(b, effect_.shaders[static_cast<size_t>(index)].profile));
     }
     for (const auto& [n, s] : stages)
-        if (!sampled.count(n))
-            effect_.diagnostics.push_back(at(Severity::Warning, diag::kIgnoredState,
-                                             "texture stage " + std::to_string(n) + " is set, but no pixel shader of this pass samples register s" +
-                                                 std::to_string(n) + ": D3D9 would keep the stage's texture and states on the device for " +
-                                                 "later passes; fxport sets them only for a pass whose pixel shader samples the stage",
-                                             s.token));
+        if (!sampled.count(n)) unsampled.push_back({n, s.stage.textureParameter, s.stage.state});
 }
 
 // The stage `expr` compiles for (what ConstructGSWithSO wraps): by its profile, through shader variables.

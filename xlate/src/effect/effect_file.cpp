@@ -344,6 +344,8 @@ json techniquesJson(const CompiledEffect& effect, bool withLocation) {
             json pj{{"name", p.name}, {"valid", p.valid}, {"vertexShader", toJson(p.vertexShader)},
                     {"pixelShader", toJson(p.pixelShader)}, {"geometryShader", toJson(p.geometryShader)}, {"states", states}};
             if (p.nullPixelShader) pj["nullPixelShader"] = true;
+            for (const TextureStage& ts : p.textureStages)
+                pj["textureStages"].push_back(json{{"stage", ts.stage}, {"texture", ts.textureParameter}, {"state", toJson(ts.state)}});
             if (!p.hullShader.shaders.empty()) pj["hullShader"] = toJson(p.hullShader);
             if (!p.domainShader.shaders.empty()) pj["domainShader"] = toJson(p.domainShader);
             if (!p.computeShader.shaders.empty()) pj["computeShader"] = toJson(p.computeShader);
@@ -617,6 +619,9 @@ CompiledEffect deserializeEffect(std::string_view text, const std::string& nameF
                 pass.pixelShader = choiceFrom(p.at("pixelShader"));
                 pass.geometryShader = choiceFrom(p.at("geometryShader"));
                 pass.nullPixelShader = p.value("nullPixelShader", false);
+                if (p.contains("textureStages"))
+                    for (const auto& ts : p["textureStages"])
+                        pass.textureStages.push_back({ts.at("stage").get<int>(), ts.at("texture").get<std::string>(), samplerStateFrom(ts.at("state"))});
                 if (p.contains("hullShader")) pass.hullShader = choiceFrom(p["hullShader"]);
                 if (p.contains("domainShader")) pass.domainShader = choiceFrom(p["domainShader"]);
                 if (p.contains("computeShader")) pass.computeShader = choiceFrom(p["computeShader"]);

@@ -1,6 +1,7 @@
 // The consistency checks of a loaded CompiledEffect (see effect_validation.h).
 #include "effect/effect_validation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <variant>
 
@@ -138,6 +139,12 @@ std::optional<std::string> findEffectInconsistency(const CompiledEffect& e) {
                 if (const auto* v = std::get_if<std::array<float, 4>>(&st.value))
                     for (float x : *v) finite = finite && std::isfinite(x);
                 if (!finite) return where + " sets a state to a value that is not a number";
+            }
+            for (const TextureStage& ts : p.textureStages) {
+                if (!within(ts.stage, 0, 15)) return where + " sets texture stage " + std::to_string(ts.stage);
+                const bool known = ts.textureParameter.empty() ||
+                                   std::any_of(e.parameters.begin(), e.parameters.end(), [&](const Parameter& x) { return x.name == ts.textureParameter; });
+                if (!known) return where + " sets texture stage " + std::to_string(ts.stage) + " from '" + ts.textureParameter + "', which is no parameter";
             }
         }
     return std::nullopt;

@@ -133,6 +133,16 @@ std::vector<SamplerSlot> samplerSlotsOf(const xlate::CompiledShader& shader, con
     return out;
 }
 
+// A D3D9 texture stage a pass sets for later passes (xlate::Pass::textureStages) as a slot.
+SamplerSlot textureStageSlot(const xlate::TextureStage& stage, const Effect::Impl& e) {
+    SamplerSlot slot;
+    slot.unit = stage.stage;
+    if (auto it = e.parameterIndex.find(stage.textureParameter); !stage.textureParameter.empty() && it != e.parameterIndex.end())
+        slot.textureParameter = it->second;
+    slot.state = decodeSamplerState(stage.state);
+    return slot;
+}
+
 EffectWarningHandler& warningHandler() {
     static EffectWarningHandler handler = [](const std::string& warning) { std::cerr << "fxport: " << warning << "\n"; };
     return handler;
@@ -420,7 +430,10 @@ Effect::Impl::Code& Effect::Impl::addCode(std::shared_ptr<const xlate::CompiledE
         }
         for (const xlate::Technique& technique : code->effect->techniques) {
             std::vector<PassStates>& passes = code->passStates.emplace_back();
-            for (const xlate::Pass& pass : technique.passes) passes.push_back(decodePassStates(pass));
+            for (const xlate::Pass& pass : technique.passes) {
+                PassStates& states = passes.emplace_back(decodePassStates(pass));
+                for (const xlate::TextureStage& stage : pass.textureStages) states.textureStages.push_back(textureStageSlot(stage, *this));
+            }
         }
     } catch (...) {
         for (ShaderProgram& p : code->programs) device.deleteProgram(p.program);

@@ -153,6 +153,12 @@ void applyPassStates(const PassStates& states, const Effect::Impl& e, GraphicsDe
     // sRGB write and the D3D9 fixed-function states (alpha test, fog, points, clip planes, shade
     // mode) belong to the pass: off unless it turns them on (XNA 4's device has none of them, so
     // nothing else would ever turn them off); a program sets device.FixedFunction after Apply().
+    // Texture stages no shader of the pass samples: the device keeps them for later passes (D3D9).
+    for (const SamplerSlot& slot : states.textureStages) {
+        if (slot.textureParameter >= 0 && e.textures[std::size_t(slot.textureParameter)])
+            device.Textures[slot.unit] = e.textures[std::size_t(slot.textureParameter)];
+        device.SamplerStates[slot.unit] = samplerStateOver(slot, e, device.SamplerStates[slot.unit]);
+    }
     PassEmulation emulation;
     device.FixedFunction = FixedFunctionState{};
     if (states.rows.empty()) {

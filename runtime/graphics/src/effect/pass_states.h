@@ -42,18 +42,6 @@ struct PassStateRow {
 // Fills the typed field of `row` from xlate's value for the row's state.
 void setRowValue(PassStateRow& row, const xlate::StateValue& value);
 
-struct PassStates {
-    std::vector<PassStateRow> rows;  // in source order: later rows win
-    bool hasParameterRows = false;
-};
-
-PassStates decodePassStates(const xlate::Pass& pass);
-
-// Sets the rows over the device's BlendState/DepthStencilState/RasterizerState (D3D9 keeps
-// AlphaBlendEnable, SrcBlend ... as separate states; XNA's objects are folded back). Parameter-
-// driven rows read `effect`'s current parameter values.
-void applyPassStates(const PassStates& states, const Effect::Impl& effect, GraphicsDevice& device);
-
 // The effect's sampler_state over the device's SamplerStates[unit]: what the effect specified.
 struct SamplerOverride {
     std::optional<TextureAddressMode> addressU, addressV, addressW;
@@ -90,5 +78,20 @@ SamplerOverride decodeSamplerState(const xlate::SamplerStateDesc& desc);
 // The slot's sampler state over `device`: `state`, decoded once, or, where states are read from
 // the effect's parameters, decoded from them now (only such slots pay for it at Apply()).
 SamplerState samplerStateOver(const SamplerSlot& slot, const Effect::Impl& effect, const SamplerState& device);
+
+struct PassStates {
+    std::vector<PassStateRow> rows;  // in source order: later rows win
+    bool hasParameterRows = false;
+    // D3D9 texture stages the pass sets and its shaders do not sample (xlate::Pass::textureStages),
+    // set on the device at Apply() for later passes.
+    std::vector<SamplerSlot> textureStages;
+};
+
+PassStates decodePassStates(const xlate::Pass& pass);
+
+// Sets the rows over the device's BlendState/DepthStencilState/RasterizerState (D3D9 keeps
+// AlphaBlendEnable, SrcBlend ... as separate states; XNA's objects are folded back). Parameter-
+// driven rows read `effect`'s current parameter values.
+void applyPassStates(const PassStates& states, const Effect::Impl& effect, GraphicsDevice& device);
 
 }  // namespace fxport

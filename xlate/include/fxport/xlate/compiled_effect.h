@@ -320,6 +320,14 @@ struct ShaderChoice {
     std::vector<SelectorOp> selector; // empty = shaders[0]
 };
 
+// A D3D9 texture stage a pass sets (`Texture[1] = <T>; MinFilter[1] = Linear;`) that none of its
+// pixel shaders samples: Apply() sets the device's stage, which D3D9 keeps for later passes.
+struct TextureStage {
+    int stage = 0;                 // register s<stage>, 0..15
+    std::string textureParameter;  // empty: the stage's texture is left as it is
+    SamplerStateDesc state;        // the states the pass names (unset ones stay the device's)
+};
+
 struct Pass {
     std::string name;
     std::vector<Annotation> annotations;
@@ -329,6 +337,7 @@ struct Pass {
     // SetPixelShader(NULL) (Effects 10/11): no pixel shader runs, where an unassigned stage keeps
     // the one before (a stream-output pass draws nothing, or depth only).
     bool nullPixelShader = false;
+    std::vector<TextureStage> textureStages;  // stages no pixel shader of the pass samples
     bool valid = true;                    // false: a diagnostic says why (e.g. asm block)
     SourceLocation declaredAt;
 };
