@@ -345,6 +345,9 @@ void dump(const CompiledEffect& e, std::ostream& out) {
             if (!p.computeShader.shaders.empty()) out << ", cs " << choice(p.computeShader);
             out << "\n";
             for (const auto& s : p.states) out << "      " << describeStateAssignment(s, e) << "\n";
+            for (const auto& ts : p.textureStages)  // set on the device for later passes (D3D9)
+                out << "      texture stage " << ts.stage << (ts.textureParameter.empty() ? "" : " <- texture " + ts.textureParameter)
+                    << " (no shader of this pass samples it: kept for later passes)\n";
         }
     }
     out << "\nshaders:\n";
