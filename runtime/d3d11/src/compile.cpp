@@ -44,7 +44,7 @@ private:
 
 std::string narrowPath(const wchar_t* w) {
     std::string out;
-    for (; *w; ++w) platform::appendUtf8(out, char32_t(*w));
+    for (; w && *w; ++w) platform::appendUtf8(out, char32_t(*w));
     return out;
 }
 

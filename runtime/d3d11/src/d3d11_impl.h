@@ -329,7 +329,7 @@ void writeSubresource(Texture& t, Subresource s, const Rectangle* area, const st
 HRESULT volumeShaderResourceView(Device* device, Volume* v, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc, ID3D11ShaderResourceView** pp);
 
 // --- a compiled-shader blob's content (compile.cpp)
-std::string narrowPath(const wchar_t* path);  // UTF-8
+std::string narrowPath(const wchar_t* path);  // UTF-8; null gives ""
 // A blob starts with one line saying what D3DCompile made: a shader (vs_*, ps_* ... targets) or a
 // whole effect (fx_* targets); the compiled effect's text follows.
 enum class BlobKind { Shader, Effect };

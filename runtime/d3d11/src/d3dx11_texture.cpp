@@ -37,8 +37,6 @@ HRESULT loadView(const char* call, ID3D11Device* device, const char* path, const
     return device->CreateShaderResourceView(texture.Get(), nullptr, pp);  // the view holds the texture
 }
 
-std::string narrowOrEmpty(const wchar_t* path) { return path ? narrowPath(path) : std::string(); }
-
 }  // namespace
 
 HRESULT D3DX11CreateShaderResourceViewFromFileA(ID3D11Device* pDevice, LPCSTR pSrcFile, D3DX11_IMAGE_LOAD_INFO* pLoadInfo, ID3DX11ThreadPump* pPump,
@@ -48,7 +46,7 @@ HRESULT D3DX11CreateShaderResourceViewFromFileA(ID3D11Device* pDevice, LPCSTR pS
 
 HRESULT D3DX11CreateShaderResourceViewFromFileW(ID3D11Device* pDevice, const wchar_t* pSrcFile, D3DX11_IMAGE_LOAD_INFO* pLoadInfo,
                                                 ID3DX11ThreadPump* pPump, ID3D11ShaderResourceView** ppShaderResourceView, HRESULT* pHResult) {
-    const std::string path = narrowOrEmpty(pSrcFile);
+    const std::string path = narrowPath(pSrcFile);
     return answer(loadView("D3DX11CreateShaderResourceViewFromFile", pDevice, pSrcFile ? path.c_str() : nullptr, pLoadInfo, pPump, ppShaderResourceView),
                   pHResult);
 }
@@ -62,7 +60,7 @@ HRESULT D3DX11CreateTextureFromFileA(ID3D11Device* pDevice, LPCSTR pSrcFile, D3D
 HRESULT D3DX11CreateTextureFromFileW(ID3D11Device* pDevice, const wchar_t* pSrcFile, D3DX11_IMAGE_LOAD_INFO* pLoadInfo, ID3DX11ThreadPump* pPump,
                                      ID3D11Resource** ppTexture, HRESULT* pHResult) {
     if (ppTexture) *ppTexture = nullptr;
-    const std::string path = narrowOrEmpty(pSrcFile);
+    const std::string path = narrowPath(pSrcFile);
     return answer(loadResource("D3DX11CreateTextureFromFile", pDevice, pSrcFile ? path.c_str() : nullptr, pLoadInfo, pPump, ppTexture), pHResult);
 }
 
@@ -88,7 +86,7 @@ HRESULT D3DX10CreateShaderResourceViewFromFile(ID3D10Device* pDevice, LPCSTR pSr
 
 HRESULT D3DX10CreateShaderResourceViewFromFile(ID3D10Device* pDevice, const wchar_t* pSrcFile, D3DX10_IMAGE_LOAD_INFO* pLoadInfo,
                                                void* pPump, ID3D10ShaderResourceView** ppShaderResourceView, HRESULT* pHResult) {
-    const std::string path = pSrcFile ? d3d11::narrowPath(pSrcFile) : std::string();
+    const std::string path = d3d11::narrowPath(pSrcFile);
     return loadView10(pDevice, pSrcFile ? path.c_str() : nullptr, pLoadInfo, pPump, ppShaderResourceView, pHResult);
 }
 

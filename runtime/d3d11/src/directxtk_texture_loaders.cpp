@@ -1,7 +1,6 @@
 // DirectXTK's CreateDDSTextureFromFile and CreateWICTextureFromFile (fxport/d3d11/
 // dds_texture_loader.h, wic_texture_loader.h) over the one texture-file loader.
 #include "d3d11_impl.h"
-#include "device/dds_image.h"
 #include "fxport/d3d11/dds_texture_loader.h"
 #include "fxport/d3d11/wic_texture_loader.h"
 #include "texture_file_loader.h"
@@ -29,26 +28,16 @@ HRESULT create(const TextureFileRequest& request, ID3D11Device* device11, const 
     return succeed();
 }
 
-// The DX10 header's alpha mode, or premultiplied for DXT2/DXT4 (read from the header again: cheap
-// beside the texels, and keeps the loader's answer a plain resource).
-void tellAlphaMode(const char* path, DDS_ALPHA_MODE* alphaMode) {
-    if (!alphaMode) return;
-    *alphaMode = DDS_ALPHA_MODE_UNKNOWN;
-    try {
-        *alphaMode = DDS_ALPHA_MODE(detail::readDds(path, detail::DdsContent::Stored).alphaMode);
-    } catch (const std::exception&) {  // the file loaded a moment ago; if it cannot now, the mode stays unknown
-    }
-}
-
 HRESULT createDds(ID3D11Device* device, const char* path, ID3D11Resource** texture, ID3D11ShaderResourceView** view, std::size_t maxsize,
                   DDS_ALPHA_MODE* alphaMode) {
     TextureFileRequest request;
     request.call = "CreateDDSTextureFromFile";
     request.images = false;
     request.maxSize = maxsize;
+    int mode = DDS_ALPHA_MODE_UNKNOWN;
+    request.alphaMode = &mode;  // the DX10 header's, or premultiplied for DXT2/DXT4, as the loader reads it
     const HRESULT hr = create(request, device, path, texture, view);
-    if (SUCCEEDED(hr)) tellAlphaMode(path, alphaMode);
-    else if (alphaMode) *alphaMode = DDS_ALPHA_MODE_UNKNOWN;
+    if (alphaMode) *alphaMode = SUCCEEDED(hr) ? DDS_ALPHA_MODE(mode) : DDS_ALPHA_MODE_UNKNOWN;
     return hr;
 }
 
@@ -61,8 +50,6 @@ HRESULT createWic(ID3D11Device* device, bool withContext, const char* path, ID3D
     request.maxSize = maxsize;
     return create(request, device, path, texture, view);
 }
-
-std::string narrowed(const wchar_t* path) { return path ? narrowPath(path) : std::string(); }
 
 }  // namespace
 
@@ -78,13 +65,13 @@ HRESULT CreateDDSTextureFromFile(ID3D11Device* d3dDevice, ID3D11DeviceContext*, 
 
 HRESULT CreateDDSTextureFromFile(ID3D11Device* d3dDevice, const wchar_t* szFileName, ID3D11Resource** texture,
                                  ID3D11ShaderResourceView** textureView, std::size_t maxsize, DDS_ALPHA_MODE* alphaMode) {
-    const std::string path = narrowed(szFileName);
+    const std::string path = narrowPath(szFileName);
     return createDds(d3dDevice, szFileName ? path.c_str() : nullptr, texture, textureView, maxsize, alphaMode);
 }
 
 HRESULT CreateDDSTextureFromFile(ID3D11Device* d3dDevice, ID3D11DeviceContext*, const wchar_t* szFileName, ID3D11Resource** texture,
                                  ID3D11ShaderResourceView** textureView, std::size_t maxsize, DDS_ALPHA_MODE* alphaMode) {
-    const std::string path = narrowed(szFileName);
+    const std::string path = narrowPath(szFileName);
     return createDds(d3dDevice, szFileName ? path.c_str() : nullptr, texture, textureView, maxsize, alphaMode);
 }
 
@@ -100,13 +87,13 @@ HRESULT CreateWICTextureFromFile(ID3D11Device* d3dDevice, ID3D11DeviceContext* d
 
 HRESULT CreateWICTextureFromFile(ID3D11Device* d3dDevice, const wchar_t* szFileName, ID3D11Resource** texture,
                                  ID3D11ShaderResourceView** textureView, std::size_t maxsize) {
-    const std::string path = narrowed(szFileName);
+    const std::string path = narrowPath(szFileName);
     return createWic(d3dDevice, false, szFileName ? path.c_str() : nullptr, texture, textureView, maxsize);
 }
 
 HRESULT CreateWICTextureFromFile(ID3D11Device* d3dDevice, ID3D11DeviceContext* d3dContext, const wchar_t* szFileName, ID3D11Resource** texture,
                                  ID3D11ShaderResourceView** textureView, std::size_t maxsize) {
-    const std::string path = narrowed(szFileName);
+    const std::string path = narrowPath(szFileName);
     return createWic(d3dDevice, d3dContext != nullptr, szFileName ? path.c_str() : nullptr, texture, textureView, maxsize);
 }
 

@@ -126,6 +126,7 @@ int fullChain(const DdsImage& dds) { return int(std::bit_width(unsigned(std::max
 HRESULT loadDds(Device* device, const std::string& path, const TextureFileRequest& r, ID3D11Resource** out) {
     const std::string at = std::string(r.call) + ": " + path;
     DdsImage dds = detail::readDds(path, detail::DdsContent::Stored);
+    if (r.alphaMode) *r.alphaMode = dds.alphaMode;
     if (dds.oneDimensional) return fail(E_NOTIMPL, at + ": a 1D texture (DX10 TEXTURE1D); fxport has no ID3D11Texture1D");
     if (r.maxSize && std::size_t(std::max({dds.width, dds.height, dds.depth})) > r.maxSize)
         return fail(E_NOTIMPL, at + ": " + std::to_string(dds.width) + "x" + std::to_string(dds.height) + " is larger than maxsize " +

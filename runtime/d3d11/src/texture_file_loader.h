@@ -17,6 +17,7 @@ struct TextureFileRequest {
     bool dds = true, images = true;  // the kinds of file taken
     bool imageMipChain = true;
     std::size_t maxSize = 0;        // DirectXTK's maxsize: larger textures are refused (0: D3D11's limits)
+    int* alphaMode = nullptr;       // out, when given: a DDS's alpha mode (DDS_ALPHA_MODE's values)
 };
 
 // The texture `path` holds, a shader resource of the device: a DDS keeps its stored DXGI format,
