@@ -26,33 +26,7 @@ using Texel = std::array<float, 4>;
 
 // Draws every texel of `view` (width x height) into a float target and reads the target back.
 std::vector<Texel> loadEveryTexel(Device& d, ID3D11ShaderResourceView* view, UINT width, UINT height) {
-    D3D11_TEXTURE2D_DESC desc;
-    desc.Width = width;
-    desc.Height = height;
-    desc.MipLevels = desc.ArraySize = 1;
-    desc.Format = DXGI_FORMAT_R32G32B32A32_FLOAT;
-    desc.BindFlags = D3D11_BIND_RENDER_TARGET;
-    ComPtr<ID3D11Texture2D> target;
-    EXPECT_EQ(d.device->CreateTexture2D(&desc, nullptr, target.GetAddressOf()), S_OK) << lastError();
-    ComPtr<ID3DBlob> vsCode = compile(kFullScreen, "vs", "vs_5_0"), psCode = compile(kFullScreen, "ps", "ps_5_0");
-    ComPtr<ID3D11VertexShader> vs;
-    ComPtr<ID3D11PixelShader> ps;
-    EXPECT_EQ(d.device->CreateVertexShader(vsCode->GetBufferPointer(), vsCode->GetBufferSize(), nullptr, vs.GetAddressOf()), S_OK);
-    EXPECT_EQ(d.device->CreatePixelShader(psCode->GetBufferPointer(), psCode->GetBufferSize(), nullptr, ps.GetAddressOf()), S_OK);
-    ComPtr<ID3D11RenderTargetView> rtv;
-    EXPECT_EQ(d.device->CreateRenderTargetView(target.Get(), nullptr, rtv.GetAddressOf()), S_OK) << lastError();
-    d.context->OMSetRenderTargets(1, rtv.GetAddressOfConst(), nullptr);
-    D3D11_VIEWPORT viewport;
-    viewport.Width = float(width);
-    viewport.Height = float(height);
-    d.context->RSSetViewports(1, &viewport);
-    d.context->VSSetShader(vs.Get(), nullptr, 0);
-    d.context->PSSetShader(ps.Get(), nullptr, 0);
-    d.context->PSSetShaderResources(0, 1, &view);
-    d.context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
-    d.context->Draw(3, 0);
-    EXPECT_EQ(lastError(), "");
-    return readTexels<Texel>(d, target.Get());
+    return drawWithTexture(d, kFullScreen, view, width, height);
 }
 
 ComPtr<ID3D11Texture2D> makeCompressed(Device& d, DXGI_FORMAT format, UINT width, UINT height, const std::vector<std::uint8_t>& blocks,

@@ -21,6 +21,37 @@ ComPtr<ID3DBlob> compile(const std::string& source, const char* entry, const cha
     return code;
 }
 
+std::vector<std::array<float, 4>> drawWithTexture(Device& d, const std::string& source, ID3D11ShaderResourceView* view, UINT width, UINT height,
+                                                  ID3D11SamplerState* sampler) {
+    D3D11_TEXTURE2D_DESC desc{};
+    desc.Width = width;
+    desc.Height = height;
+    desc.MipLevels = desc.ArraySize = 1;
+    desc.Format = DXGI_FORMAT_R32G32B32A32_FLOAT;
+    desc.SampleDesc.Count = 1;
+    desc.BindFlags = D3D11_BIND_RENDER_TARGET;
+    ComPtr<ID3D11Texture2D> target;
+    EXPECT_EQ(d.device->CreateTexture2D(&desc, nullptr, target.GetAddressOf()), S_OK) << lastError();
+    ComPtr<ID3DBlob> vsCode = compile(source, "vs", "vs_5_0"), psCode = compile(source, "ps", "ps_5_0");
+    ComPtr<ID3D11VertexShader> vs;
+    ComPtr<ID3D11PixelShader> ps;
+    EXPECT_EQ(d.device->CreateVertexShader(vsCode->GetBufferPointer(), vsCode->GetBufferSize(), nullptr, vs.GetAddressOf()), S_OK);
+    EXPECT_EQ(d.device->CreatePixelShader(psCode->GetBufferPointer(), psCode->GetBufferSize(), nullptr, ps.GetAddressOf()), S_OK);
+    ComPtr<ID3D11RenderTargetView> rtv;
+    EXPECT_EQ(d.device->CreateRenderTargetView(target.Get(), nullptr, rtv.GetAddressOf()), S_OK) << lastError();
+    d.context->OMSetRenderTargets(1, rtv.GetAddressOfConst(), nullptr);
+    D3D11_VIEWPORT viewport{0, 0, float(width), float(height), 0, 1};
+    d.context->RSSetViewports(1, &viewport);
+    d.context->VSSetShader(vs.Get(), nullptr, 0);
+    d.context->PSSetShader(ps.Get(), nullptr, 0);
+    d.context->PSSetShaderResources(0, 1, &view);
+    if (sampler) d.context->PSSetSamplers(0, 1, &sampler);
+    d.context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+    d.context->Draw(3, 0);
+    EXPECT_EQ(lastError(), "");
+    return readTexels<std::array<float, 4>>(d, target.Get());
+}
+
 std::vector<std::uint8_t> readTexelBytes(Device& d, ID3D11Texture2D* texture, std::size_t texelBytes) {
     D3D11_TEXTURE2D_DESC desc;
     texture->GetDesc(&desc);

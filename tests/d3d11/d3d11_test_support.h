@@ -38,6 +38,11 @@ std::vector<T> readTexels(Device& d, ID3D11Texture2D* texture, std::size_t perTe
     std::memcpy(out.data(), bytes.data(), out.size() * sizeof(T));
     return out;
 }
+// Draws `source`'s entries "vs" (a full-screen triangle from SV_VertexID) and "ps" (vs_5_0/ps_5_0)
+// into a width x height R32G32B32A32_FLOAT target with `view` at t0 and `sampler` (may be null) at
+// s0, and reads the target back.
+std::vector<std::array<float, 4>> drawWithTexture(Device& d, const std::string& source, ID3D11ShaderResourceView* view, UINT width, UINT height,
+                                                  ID3D11SamplerState* sampler = nullptr);
 // RGBA8 pixels of a R8G8B8A8_UNORM texture, top row first.
 inline std::vector<std::array<std::uint8_t, 4>> readPixels(Device& d, ID3D11Texture2D* texture) {
     return readTexels<std::array<std::uint8_t, 4>>(d, texture);

@@ -106,42 +106,15 @@ struct TextureFiles : ::testing::Test {
     std::vector<Texel> draw(const char* source, ID3D11ShaderResourceView* srv, UINT width, UINT height);
 };
 
-// Draws a width x height float target with pixel shader `ps` of `source` reading t0 (through s0, a
-// point sampler) and reads it back.
+// Draws pixel shader `ps` of `source` reading t0 through a point sampler into a width x height
+// float target and reads it back.
 std::vector<Texel> TextureFiles::draw(const char* source, ID3D11ShaderResourceView* srv, UINT width, UINT height) {
-    D3D11_TEXTURE2D_DESC desc;
-    desc.Width = width;
-    desc.Height = height;
-    desc.MipLevels = desc.ArraySize = 1;
-    desc.Format = DXGI_FORMAT_R32G32B32A32_FLOAT;
-    desc.BindFlags = D3D11_BIND_RENDER_TARGET;
-    ComPtr<ID3D11Texture2D> target;
-    EXPECT_EQ(d.device->CreateTexture2D(&desc, nullptr, target.GetAddressOf()), S_OK) << lastError();
-    ComPtr<ID3DBlob> vsCode = compile(source, "vs", "vs_5_0"), psCode = compile(source, "ps", "ps_5_0");
-    ComPtr<ID3D11VertexShader> vs;
-    ComPtr<ID3D11PixelShader> ps;
-    EXPECT_EQ(d.device->CreateVertexShader(vsCode->GetBufferPointer(), vsCode->GetBufferSize(), nullptr, vs.GetAddressOf()), S_OK);
-    EXPECT_EQ(d.device->CreatePixelShader(psCode->GetBufferPointer(), psCode->GetBufferSize(), nullptr, ps.GetAddressOf()), S_OK);
-    ComPtr<ID3D11RenderTargetView> rtv;
-    EXPECT_EQ(d.device->CreateRenderTargetView(target.Get(), nullptr, rtv.GetAddressOf()), S_OK) << lastError();
     D3D11_SAMPLER_DESC sd;
     sd.Filter = D3D11_FILTER_MIN_MAG_MIP_POINT;
     sd.AddressU = sd.AddressV = sd.AddressW = D3D11_TEXTURE_ADDRESS_CLAMP;
     ComPtr<ID3D11SamplerState> sampler;
     EXPECT_EQ(d.device->CreateSamplerState(&sd, sampler.GetAddressOf()), S_OK) << lastError();
-    d.context->OMSetRenderTargets(1, rtv.GetAddressOfConst(), nullptr);
-    D3D11_VIEWPORT viewport;
-    viewport.Width = float(width);
-    viewport.Height = float(height);
-    d.context->RSSetViewports(1, &viewport);
-    d.context->VSSetShader(vs.Get(), nullptr, 0);
-    d.context->PSSetShader(ps.Get(), nullptr, 0);
-    d.context->PSSetShaderResources(0, 1, &srv);
-    d.context->PSSetSamplers(0, 1, sampler.GetAddressOfConst());
-    d.context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
-    d.context->Draw(3, 0);
-    EXPECT_EQ(lastError(), "");
-    return readTexels<Texel>(d, target.Get());
+    return drawWithTexture(d, source, srv, width, height, sampler.Get());
 }
 
 const char* const kLoadTexels = R"(
