@@ -17,17 +17,28 @@ namespace {
 using test::drawQuad;
 using test::testDevice;
 
-TEST(PassSamplerStages, StageStatesBindTheTextureAndGoOverTheSamplerState) {
+// The fixture effect with its two texture parameters set to 1 x 1 textures of the given colours.
+class PassSamplerStages : public ::testing::Test {
+protected:
+    void SetUp() override {
+        device.BlendState = BlendState::Opaque;
+        device.DepthStencilState = DepthStencilState::None;
+        device.RasterizerState = RasterizerState::CullNone;
+    }
+    void setTextures(Color imageTexel, Color otherTexel) {
+        image.SetData(std::vector<Color>{imageTexel});
+        other.SetData(std::vector<Color>{otherTexel});
+        effect.Parameters["Image"].SetValue(image);
+        effect.Parameters["Other"].SetValue(other);
+    }
     GraphicsDevice& device = testDevice();
-    device.BlendState = BlendState::Opaque;
-    device.DepthStencilState = DepthStencilState::None;
-    device.RasterizerState = RasterizerState::CullNone;
-    Effect effect(device, test::runtimeFixture("PassSamplerStages.fx"));
-    Texture2D image(device, 1, 1, false, SurfaceFormat::Color), other(device, 1, 1, false, SurfaceFormat::Color);
-    image.SetData(std::vector<Color>{Color(64, 128, 192, 255)});
-    other.SetData(std::vector<Color>{Color(255, 255, 255, 255)});
-    effect.Parameters["Image"].SetValue(image);
-    effect.Parameters["Other"].SetValue(other);
+    Effect effect{device, test::runtimeFixture("PassSamplerStages.fx")};
+    Texture2D image{device, 1, 1, false, SurfaceFormat::Color};
+    Texture2D other{device, 1, 1, false, SurfaceFormat::Color};
+};
+
+TEST_F(PassSamplerStages, StageStatesBindTheTextureAndGoOverTheSamplerState) {
+    setTextures(Color(64, 128, 192, 255), Color(255, 255, 255, 255));
     device.SamplerStates[0] = SamplerState::PointWrap;
     device.SamplerStates[1] = SamplerState::LinearWrap;
     effect.CurrentTechnique = effect.Techniques["Stages"];
@@ -55,17 +66,8 @@ TEST(PassSamplerStages, StageStatesBindTheTextureAndGoOverTheSamplerState) {
     for (int c = 0; c < 4; ++c) EXPECT_NEAR(px[std::size_t(c)], want[c], 1e-6f) << "channel " << c;
 }
 
-TEST(PassSamplerStages, AStageNoShaderOfThePassSamplesIsKeptForLaterPasses) {
-    GraphicsDevice& device = testDevice();
-    device.BlendState = BlendState::Opaque;
-    device.DepthStencilState = DepthStencilState::None;
-    device.RasterizerState = RasterizerState::CullNone;
-    Effect effect(device, test::runtimeFixture("PassSamplerStages.fx"));
-    Texture2D image(device, 1, 1, false, SurfaceFormat::Color), other(device, 1, 1, false, SurfaceFormat::Color);
-    image.SetData(std::vector<Color>{Color(64, 128, 192, 255)});
-    other.SetData(std::vector<Color>{Color(0, 0, 32, 96)});
-    effect.Parameters["Image"].SetValue(image);
-    effect.Parameters["Other"].SetValue(other);
+TEST_F(PassSamplerStages, AStageNoShaderOfThePassSamplesIsKeptForLaterPasses) {
+    setTextures(Color(64, 128, 192, 255), Color(0, 0, 32, 96));
     device.Textures[2] = nullptr;
     device.SamplerStates[2] = SamplerState::LinearClamp;
     effect.CurrentTechnique = effect.Techniques["Multipass"];
