@@ -121,6 +121,32 @@ TEST_P(HlslShapes, DeterminantOfOneRowOrOneColumnIsTheFirstElement) {
     expectPixel(draw(*e), expected);
 }
 
+// Uniforms of one row or one column: set as XNA sets a matrix (values row by row), read by
+// element, by matrix swizzle, whole (mul of a 1x3 and a 3x1 is their dot product) and through
+// determinant (the first element). row_major and column_major differ only in registers.
+TEST_P(HlslShapes, OneRowAndOneColumnUniformsReadTheValuesSet) {
+    auto e = effect("float1x3 r; float3x1 c; row_major float1x2 rr; row_major float2x1 rc; float1x1 one;",
+                    "return float4(r[0][2] + 10 * c[1][0], rr._m01 + 10 * rc._m10, mul(r, c), determinant(c) + one[0][0]);");
+    const std::vector<float> r = {0.5f, -2.0f, 3.0f}, c = {1.5f, 0.25f, -4.0f}, rr = {7.0f, -1.0f}, rc = {2.0f, 0.75f};
+    e->Parameters["r"].SetValue(r);
+    e->Parameters["c"].SetValue(c);
+    e->Parameters["rr"].SetValue(rr);
+    e->Parameters["rc"].SetValue(rc);
+    e->Parameters["one"].SetValue(std::vector<float>{-6.0f});
+    const float expected[4] = {r[2] + 10 * c[1], rr[1] + 10 * rc[1], r[0] * c[0] + r[1] * c[1] + r[2] * c[2], c[0] - 6.0f};
+    expectPixel(draw(*e), expected);
+}
+
+// Matrix swizzles of local one-row and one-column matrices (`_m01`, `_31`, several elements)
+// read the components of their line.
+TEST_P(HlslShapes, MatrixSwizzlesOfOneRowAndOneColumnLocals) {
+    auto e = effect("float4 A;", "float1x3 l = A.xyz; float3x1 k = A.yzw; return float4(l._m01, k._31, l._m00_m02);");
+    const float a[4] = {1.5f, -6.0f, 11.0f, 0.25f};
+    e->Parameters["A"].SetValue(Vector4(a[0], a[1], a[2], a[3]));
+    const float expected[4] = {a[1], a[3], a[0], a[2]};
+    expectPixel(draw(*e), expected);
+}
+
 // An array passed to a parameter that is an array of another shape with as many elements: the
 // elements in order (float a[2][3] from a float f[3][2] or a float g[6]).
 TEST_P(HlslShapes, ArrayArgumentOfAnotherShapeTakesElementsInOrder) {

@@ -137,3 +137,42 @@ TEST(CbufferPacking, ASamplerUsedWithOnlyAPackoffsetIsRefused) {
     CompiledEffect e = compile("Texture2D tex;\ncbuffer C { sampler sam : packoffset(c1) : register(s0); }\n", "return tex.Sample(sam, float2(0, 0));");
     EXPECT_EQ(e.shaders.size(), 1u);
 }
+
+// A matrix of one row or one column keeps a matrix's registers (one per column, or per row when
+// row_major) although GLSL stores it as an array of registers (degenerate_matrices.h): float1x3
+// takes c0.x c1.x c2.x, a scalar after it packs into c2.y; float3x1 takes c3.xyz and a scalar
+// c3.w; a row_major float3x1 three registers, a row_major float1x3 one; a float1x1 starts one.
+TEST(CbufferPacking, OneRowAndOneColumnMatricesTakeAMatrixRegisters) {
+    CompiledEffect e = compile("cbuffer C { float1x3 a; float s; float3x1 b; float t; row_major float3x1 c; row_major float1x3 d; float1x1 u; }\n",
+                               "return float4(a[0][2] + s + b[1][0] + t, c[2][0], d[0][1], determinant(u));");
+    EXPECT_EQ(param(e, "a").offset, 0);
+    EXPECT_EQ(param(e, "a").size, 36);
+    EXPECT_EQ(param(e, "a").matrixStride, 16);
+    EXPECT_FALSE(param(e, "a").rowMajor);
+    EXPECT_EQ(param(e, "a").parameterClass, ParameterClass::Matrix);
+    EXPECT_EQ(param(e, "a").rows, 1);
+    EXPECT_EQ(param(e, "a").columns, 3);
+    EXPECT_EQ(param(e, "s").offset, 36);
+    EXPECT_EQ(param(e, "b").offset, 48);
+    EXPECT_EQ(param(e, "b").size, 12);
+    EXPECT_EQ(param(e, "t").offset, 60);
+    EXPECT_EQ(param(e, "c").offset, 64);
+    EXPECT_EQ(param(e, "c").size, 36);
+    EXPECT_TRUE(param(e, "c").rowMajor);
+    EXPECT_EQ(param(e, "d").offset, 112);
+    EXPECT_EQ(param(e, "d").size, 12);
+    EXPECT_EQ(param(e, "u").offset, 128);  // a matrix, even a 1x1, starts a register
+    EXPECT_EQ(blockOf(e, "a").size, 144);
+}
+
+// `#pragma pack_matrix(row_major)` before the declaration decides its registers as a modifier would.
+TEST(CbufferPacking, PackMatrixPragmaDecidesOneRowMatrixRegisters) {
+    CompiledEffect e = compile("#pragma pack_matrix(row_major)\nfloat1x4 a;\nfloat b;\n#pragma pack_matrix(column_major)\nfloat1x2 c;\n",
+                               "return float4(a[0][3] + b, c[0][1], a._m01_m02);", "ps_3_0");
+    EXPECT_EQ(param(e, "a").offset, 0);
+    EXPECT_TRUE(param(e, "a").rowMajor);
+    EXPECT_EQ(param(e, "b").offset, 16);  // SM3: every global starts a register
+    EXPECT_EQ(param(e, "c").offset, 32);
+    EXPECT_FALSE(param(e, "c").rowMajor);
+    EXPECT_EQ(param(e, "c").size, 20);
+}

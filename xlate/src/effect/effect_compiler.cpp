@@ -28,6 +28,8 @@
 #include "fxport/xlate/effect_file.h"
 #include "entry/entry_wrapper.h"
 #include "rewrite/fx_rewrite.h"
+#include "rewrite/degenerate_matrices.h"
+#include "hlsl/variable_declarations.h"
 #include "fx/parameter_selector.h"
 #include "frontend/front_end_hazards.h"
 #include "checks/fxc_checks.h"
@@ -57,7 +59,7 @@ namespace fs = std::filesystem;
 
 namespace fxport::xlate {
 
-const char* compilerVersion() { return "fxport-xlate-19"; }  // 3: asm { } blocks translate; 4: compute, hull, domain; 5: D3D resource registers; 6: one-row/one-column matrices as vectors, lhs and componentwise casts, scalar intrinsics; 7: mixed shapes, fxc signature layout, geometry entries, struct inheritance, more fxc rejections; 8: D3D integer fix-ups, out-argument wrappers, clip-distance packing, serialised varyings, typed buffers, constant-expression sizes, component-wise casts; 9: cbuffers at D3D offsets (packoffset, register(cN), register arrays); 10: D3D9 fixed-function variants, tight structured buffers, sampler-array elements, integer matrices, fetch offsets, negated comparisons, pow2 partitioning and ProcessTessFactors, split-array semantics; 11: live SM1-3 constant ranges, zero-initialised statics, fxc string escapes, nested struct reflection; 12: objects in cbuffers moved out, constant-array sizes, SV_Coverage input, struct-parameter interpolation modifiers; 13: ByteAddressBuffer sizes in bytes, packed GS clip/cull inputs, per-sample input evaluation, no fxport_Internal block; 14: fxc's overload choices, Interlocked float values, vector-to-array casts, statics in cbuffers, VS without position, sampler states from parameters, keyword spellings; 15: fxc's t#/s# registers and array elements in sampler bindings; 16: int literal folding as fxc, half-only overloads, SM2-3 lvalue casts with swizzles; 17: stream-output declarations (ConstructGSWithSO), SetPixelShader(NULL); 18: SM1-3 sampler registers (combined samplers), D3D9 pass texture stages for HLSL pixel shaders; 19: pass texture stages kept for later passes
+const char* compilerVersion() { return "fxport-xlate-20"; }  // 3: asm { } blocks translate; 4: compute, hull, domain; 5: D3D resource registers; 6: one-row/one-column matrices as vectors, lhs and componentwise casts, scalar intrinsics; 7: mixed shapes, fxc signature layout, geometry entries, struct inheritance, more fxc rejections; 8: D3D integer fix-ups, out-argument wrappers, clip-distance packing, serialised varyings, typed buffers, constant-expression sizes, component-wise casts; 9: cbuffers at D3D offsets (packoffset, register(cN), register arrays); 10: D3D9 fixed-function variants, tight structured buffers, sampler-array elements, integer matrices, fetch offsets, negated comparisons, pow2 partitioning and ProcessTessFactors, split-array semantics; 11: live SM1-3 constant ranges, zero-initialised statics, fxc string escapes, nested struct reflection; 12: objects in cbuffers moved out, constant-array sizes, SV_Coverage input, struct-parameter interpolation modifiers; 13: ByteAddressBuffer sizes in bytes, packed GS clip/cull inputs, per-sample input evaluation, no fxport_Internal block; 14: fxc's overload choices, Interlocked float values, vector-to-array casts, statics in cbuffers, VS without position, sampler states from parameters, keyword spellings; 15: fxc's t#/s# registers and array elements in sampler bindings; 16: int literal folding as fxc, half-only overloads, SM2-3 lvalue casts with swizzles; 17: stream-output declarations (ConstructGSWithSO), SetPixelShader(NULL); 18: SM1-3 sampler registers (combined samplers), D3D9 pass texture stages for HLSL pixel shaders; 19: pass texture stages kept for later passes; 20: one-row/one-column matrix uniforms in register arrays
 
 namespace {
 
@@ -1148,6 +1150,20 @@ void placeStructMembers(Parameter& param, const UniformMember& layout) {
         }
 }
 
+// A one-row or one-column matrix uniform lives in an array of registers (degenerate_matrices.h):
+// the block reflects the array, the parameter is still the matrix, one register per column
+// (column_major) or row (row_major).
+void placeVectorUniform(Parameter& param, const EffectSyntax& syntax, const std::string& defaultMajority) {
+    if (param.parameterClass != ParameterClass::Matrix || param.elements != 0) return;
+    for (const auto& g : syntax.globals) {
+        if (g.name != param.name || !isVectorUniform(syntax, g)) continue;
+        param.rowMajor = vectorUniformStorage(syntax, g, defaultMajority).rowMajor;
+        param.matrixStride = 16;
+        param.arrayStride = 0;
+        return;
+    }
+}
+
 }  // namespace
 
 void EffectBuilder::finishReflection() {
@@ -1195,6 +1211,7 @@ void EffectBuilder::finishReflection() {
             param.matrixStride = m.matrixStride;
             param.arrayStride = m.arrayStride;
             if (param.parameterClass == ParameterClass::Matrix) param.rowMajor = m.hlslRowMajor;
+            placeVectorUniform(param, syntax_, options_.defaultMatrixMajority);
             placeStructMembers(param, m);
         }
     }

@@ -329,8 +329,8 @@ private:
             if (t_[i].isIdent() && t_[i].text == name && t_[i - 1].isIdent() && !t_[i + 1].is("(") && typeNamed(t_[i - 1].text)) return true;
         for (const auto& p : f_.parameters)
             if (p.name == name) return p.semantic.empty();
-        for (const auto& g : syntax_.globals)
-            if (g.name == name) return std::find(g.modifiers.begin(), g.modifiers.end(), "static") != g.modifiers.end();
+        for (const auto& g : syntax_.globals)  // a static, or a uniform read as a vector (degenerate_matrices.h)
+            if (g.name == name) return std::find(g.modifiers.begin(), g.modifiers.end(), "static") != g.modifiers.end() || isVectorUniform(syntax_, g);
         return false;
     }
 

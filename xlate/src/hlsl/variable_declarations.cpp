@@ -39,4 +39,12 @@ std::optional<DeclaredVariable> declaredVariable(const EffectSyntax& syntax, con
     return std::nullopt;
 }
 
+bool isVectorUniform(const EffectSyntax& syntax, const FxGlobal& g) {
+    if (std::find(g.modifiers.begin(), g.modifiers.end(), "static") != g.modifiers.end() || !g.arrayDims.empty() || g.isStringParameter) return false;
+    if (std::find(g.modifiers.begin(), g.modifiers.end(), "groupshared") != g.modifiers.end()) return false;
+    if (syntax.resolveType(g.type) != g.type) return false;  // a typedef: its majority is its own (matrix_majority.h)
+    BasicType b = describeBasicType(g.type);
+    return b.ok && b.isMatrix && (b.rows == 1 || b.columns == 1);
+}
+
 }  // namespace fxport::xlate

@@ -23,4 +23,9 @@ std::unordered_map<std::string, std::vector<size_t>> declarationSites(const std:
 
 std::optional<DeclaredVariable> declaredVariable(const EffectSyntax& syntax, const FxFunction& f, const std::string& name, size_t at);
 
+// Whether global `g` is a uniform of a one-row or one-column matrix type, which the rewrite gives
+// register storage and reads as a vector (degenerate_matrices.h): not static, not an array, the
+// type spelled out (not a typedef).
+bool isVectorUniform(const EffectSyntax& syntax, const FxGlobal& g);
+
 }  // namespace fxport::xlate

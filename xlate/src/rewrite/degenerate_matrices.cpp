@@ -9,6 +9,8 @@
 #include <string>
 
 #include "hlsl/hlsl_types.h"
+#include "hlsl/variable_declarations.h"
+#include "rewrite/matrix_swizzle.h"
 #include "rewrite/mixed_shapes.h"
 
 namespace fxport::xlate {
@@ -21,6 +23,7 @@ enum class Shape { Row, Column, Scalar };  // 1xN, Nx1, 1x1
 struct Degenerate {
     size_t end = 0;       // one past the type's last token
     std::string vector;   // the type that replaces it: float4, int3, float
+    std::string scalar;   // its component type
     Shape shape = Shape::Row;
 };
 
@@ -39,6 +42,7 @@ std::optional<Degenerate> degenerateAt(const std::vector<Token>& t, size_t i) {
     Degenerate d;
     d.end = end;
     d.vector = n == 1 ? b.scalar : b.scalar + std::to_string(n);
+    d.scalar = b.scalar;
     d.shape = n == 1 ? Shape::Scalar : b.rows == 1 ? Shape::Row : Shape::Column;
     return d;
 }
@@ -77,6 +81,13 @@ void declaredNames(const std::vector<Token>& t, size_t i, size_t end, Shape shap
 
 bool isStatic(const FxGlobal& g) { return std::find(g.modifiers.begin(), g.modifiers.end(), "static") != g.modifiers.end(); }
 
+// The global declared by the type at token i, if any (its name within a few tokens after it).
+const FxGlobal* globalTypedAt(const EffectSyntax& syntax, size_t i) {
+    for (const auto& g : syntax.globals)
+        if (g.token > i && g.token <= i + 8 && syntax.tokens[g.token].text == g.name) return &g;
+    return nullptr;
+}
+
 // Whether the type at token i may become a vector, and the variables it declares.
 bool mayRespell(const EffectSyntax& syntax, size_t i, const FxFunction*& inFunction) {
     inFunction = nullptr;
@@ -90,14 +101,74 @@ bool mayRespell(const EffectSyntax& syntax, size_t i, const FxFunction*& inFunct
             if (p.typeToken == i) return true;
         return i < f.token;  // the return type
     }
-    for (const auto& g : syntax.globals) {
+    for (const auto& g : syntax.globals)
         if (i >= g.initializer.begin && i < g.initializer.end) return true;
-        if (g.token > i && g.token <= i + 8 && syntax.tokens[g.token].text == g.name) return isStatic(g);
+    const FxGlobal* g = globalTypedAt(syntax, i);
+    return g && isStatic(*g);
+}
+
+// The majority the latest `#pragma pack_matrix(...)` before token `at` names, or "".
+std::string pragmaMajorityBefore(const std::vector<Token>& t, size_t at) {
+    for (size_t i = std::min(at, t.size()); i-- > 2;)
+        if (t[i].is("pack_matrix") && t[i - 1].is("pragma") && t[i - 2].is("#") && i + 2 < t.size() && t[i + 1].is("(") &&
+            (t[i + 2].is("row_major") || t[i + 2].is("column_major")))
+            return t[i + 2].text;
+    return {};
+}
+
+// A uniform's use in a function body: the vector its register storage holds.
+std::string vectorFromStorage(const std::string& name, const std::string& scalar, const VectorUniformStorage& s) {
+    if (s.registers == 1) return name + "[0]";
+    std::string out = "(" + scalar + std::to_string(s.registers) + "(";
+    for (int r = 0; r < s.registers; ++r) out += (r ? ", " : "") + name + "[" + std::to_string(r) + "]";
+    return out + "))";
+}
+
+// Edits declaring the uniform whose type is tokens [begin, end) as register storage: the type
+// becomes the register's, each declared name gets the register count.
+void declareStorage(const EffectSyntax& syntax, size_t begin, size_t end, const std::string& scalar, const VectorUniformStorage& s,
+                    std::vector<TextEdit>& edits) {
+    const std::vector<Token>& t = syntax.tokens;
+    edits.push_back({t[begin].offset, t[end - 1].end, s.perRegister == 1 ? scalar : scalar + std::to_string(s.perRegister)});
+    int depth = 0;
+    for (size_t k = end; k < t.size(); ++k) {
+        if (depth == 0 && t[k].is(";")) return;
+        if (t[k].is("(") || t[k].is("[") || t[k].is("{")) ++depth;
+        else if (t[k].is(")") || t[k].is("]") || t[k].is("}")) --depth;
+        else if (depth == 0 && t[k].isIdent() && (k == end || t[k - 1].is(",")))
+            edits.push_back({t[k].end, t[k].end, "[" + std::to_string(s.registers) + "]"});
     }
-    return false;
+}
+
+// `._m01_m02` of a one-row or one-column matrix as the components of its vector (`.yz`); "" if an
+// element is outside it (glslang then reports the swizzle).
+std::string vectorSwizzle(const std::string& swizzle, Shape shape) {
+    auto elements = parseMatrixSwizzle(swizzle);
+    if (!elements) return {};
+    std::string out;
+    for (const auto& e : *elements) {
+        const int inLine = shape == Shape::Column ? e.column : e.row;  // 0 within the vector's line
+        if (inLine != 0 || (shape == Shape::Scalar && e.column != 0)) return {};
+        out += "xyzw"[shape == Shape::Column ? e.row : e.column];
+    }
+    return out;
 }
 
 }  // namespace
+
+VectorUniformStorage vectorUniformStorage(const EffectSyntax& syntax, const FxGlobal& g, const std::string& defaultMajority) {
+    const BasicType b = describeBasicType(g.type);
+    std::string majority;
+    for (const auto& m : g.modifiers)
+        if (m == "row_major" || m == "column_major") majority = m;
+    if (majority.empty()) majority = pragmaMajorityBefore(syntax.tokens, g.token);
+    if (majority.empty()) majority = defaultMajority;
+    VectorUniformStorage s;
+    s.rowMajor = majority == "row_major";
+    s.registers = s.rowMajor ? b.rows : b.columns;
+    s.perRegister = s.rowMajor ? b.columns : b.rows;
+    return s;
+}
 
 std::string degenerateAsVector(const std::string& type) {
     BasicType b = describeBasicType(type);
@@ -108,21 +179,29 @@ std::string degenerateAsVector(const std::string& type) {
 
 std::string entryReturnType(const EffectSyntax&, const FxFunction& entry) { return degenerateAsVector(entry.returnType); }
 
-std::vector<TextEdit> degenerateMatricesAsVectors(const EffectSyntax& syntax) {
+std::vector<TextEdit> degenerateMatricesAsVectors(const EffectSyntax& syntax, const std::string& defaultMajority,
+                                                 std::vector<TextEdit>* swizzles) {
     const std::vector<Token>& t = syntax.tokens;
     struct Respelled {
         size_t begin, end;  // the type's tokens
         std::string vector;
-        const FxFunction* function;  // null: a static global
+        const FxFunction* function;  // null: a global
         std::map<std::string, Shape> names;  // the variables it declares
+        const FxGlobal* uniform = nullptr;  // a uniform becoming register storage
+        std::string scalar;
     };
     std::vector<Respelled> found;
     for (size_t i = 0; i + 1 < t.size(); ++i) {
         auto d = degenerateAt(t, i);
         if (!d) continue;
         const FxFunction* f = nullptr;
-        if (!mayRespell(syntax, i, f)) continue;
-        Respelled r{i, d->end, d->vector, f, {}};
+        const FxGlobal* uniform = globalTypedAt(syntax, i);
+        if (uniform && !isVectorUniform(syntax, *uniform)) uniform = nullptr;
+        if (uniform) {
+            for (const auto& fn : syntax.functions) uniform = i >= fn.declaration.begin && i < fn.declaration.end ? nullptr : uniform;
+        }
+        if (!uniform && !mayRespell(syntax, i, f)) continue;
+        Respelled r{i, d->end, d->vector, f, {}, uniform, d->scalar};
         if (!f) {
             declaredNames(t, d->end, t.size(), d->shape, r.names);
         } else if (i >= f->body.begin && i < f->body.end) {
@@ -176,12 +255,19 @@ std::vector<TextEdit> degenerateMatricesAsVectors(const EffectSyntax& syntax) {
     }
     std::vector<TextEdit> edits;
     std::map<std::string, Shape> statics;
+    std::map<std::string, std::string> uniformReads;  // a uniform's name -> the vector it reads
     std::map<const FxFunction*, std::map<std::string, Shape>> locals;
     for (const auto& r : found) {
         bool keep = false;
         for (const auto& [name, shape] : r.names) keep |= unsafe.count(name) > 0;
         if (keep) continue;
-        edits.push_back({t[r.begin].offset, t[r.end - 1].end, r.vector});
+        if (r.uniform) {
+            const VectorUniformStorage storage = vectorUniformStorage(syntax, *r.uniform, defaultMajority);
+            declareStorage(syntax, r.begin, r.end, r.scalar, storage, edits);
+            for (const auto& [name, shape] : r.names) uniformReads[name] = vectorFromStorage(name, r.scalar, storage);
+        } else {
+            edits.push_back({t[r.begin].offset, t[r.end - 1].end, r.vector});
+        }
         auto& into = r.function ? locals[r.function] : statics;
         into.insert(r.names.begin(), r.names.end());
     }
@@ -196,15 +282,29 @@ std::vector<TextEdit> degenerateMatricesAsVectors(const EffectSyntax& syntax) {
         if (g.shape != Shape::Row && second > first) blank(first, second);
     }
     // `m[0]` of a 1xN is the vector itself; `m[i][0]` of an Nx1 is `m[i]`; a 1x1's indices go.
+    // A uniform's every use reads the vector from its storage.
     for (const auto& f : syntax.functions) {
         std::map<std::string, Shape> names = statics;
         for (const auto& [name, shape] : locals[&f]) names[name] = shape;
         for (const auto& p : f.parameters)
             if (!locals[&f].count(p.name)) names.erase(p.name);  // a parameter hides a static
+        for (const auto& [name, sites] : f.declarationSites)
+            if (uniformReads.count(name) && !locals[&f].count(name)) names.erase(name);  // so does a local
         if (names.empty()) continue;
         for (size_t i = f.body.begin; i + 1 < f.body.end; ++i) {
             auto n = names.find(t[i].text);
-            if (n == names.end() || !t[i].isIdent() || (i > 0 && t[i - 1].is(".")) || !t[i + 1].is("[")) continue;
+            if (n == names.end() || !t[i].isIdent() || (i > 0 && t[i - 1].is("."))) continue;
+            auto read = uniformReads.find(n->first);
+            const std::string value = read != uniformReads.end() && !locals[&f].count(n->first) ? read->second : t[i].text;
+            if (i + 2 < f.body.end && t[i + 1].is(".") && t[i + 2].isIdent()) {
+                // Matrix swizzles become the vector's; ahead of matrix_swizzle.h's edit of the same range.
+                const std::string components = vectorSwizzle(t[i + 2].text, n->second);
+                if (!components.empty() && swizzles) swizzles->push_back({t[i].offset, t[i + 2].end, value + "." + components});
+                else if (value != t[i].text) edits.push_back({t[i].offset, t[i].end, value});
+                continue;
+            }
+            if (value != t[i].text) edits.push_back({t[i].offset, t[i].end, value});
+            if (!t[i + 1].is("[")) continue;
             size_t first = pastBracket(t, i + 1, f.body.end);
             size_t second = first < f.body.end && t[first].is("[") ? pastBracket(t, first, f.body.end) : first;
             if (n->second != Shape::Column) blank(i + 1, first);

@@ -7,7 +7,12 @@
 // vector), `m[i][0]` of an Nx1 is component i (`m[i]`).
 // Parameters and return types become vectors too, with a semantic or not: the entry wrapper lays
 // the vector onto the matrix's semantic registers (signature_layout.h).
-// Left as they are: uniforms and struct members (their register layout is a matrix's), and
+// A uniform (a non-static global, not an array) keeps D3D's matrix layout, a register per column
+// (column_major) or per row (row_major), in storage glslang can lay out: an array of registers,
+// `float1x3 m` (column_major) -> `float m[3]`, `float3x1 m` -> `float3 m[1]`, whose D3D packing is
+// the matrix's (each element starts a register; cbuffer_packing.h). Each use of it in a function
+// body is the vector read from there: `float3(m[0], m[1], m[2])`, `m[0]`.
+// Left as they are: struct members and uniform arrays (their register layout is a matrix's), and
 // variables used where a vector means something else:
 // an indexed group `(c ? a : b)[0]`, a 1xN second or Nx1 first argument of mul (fxc's outer
 // product).
@@ -20,7 +25,21 @@
 
 namespace fxport::xlate {
 
-std::vector<TextEdit> degenerateMatricesAsVectors(const EffectSyntax& syntax);
+// `defaultMajority`: CompileOptions::defaultMatrixMajority (the majority before any pragma).
+// `swizzles`, where given, gets the edits of matrix swizzles of such variables (`m._m01_m02` ->
+// `m.yz`), which must go ahead of matrix_swizzle.h's edits of the same tokens.
+std::vector<TextEdit> degenerateMatricesAsVectors(const EffectSyntax& syntax, const std::string& defaultMajority = {},
+                                                 std::vector<TextEdit>* swizzles = nullptr);
+
+// Such a uniform's storage: `registers` elements of `perRegister` components each, and the
+// majority D3D lays it out in (its own modifier, else the latest `#pragma pack_matrix` before it,
+// else `defaultMajority`, else column_major).
+struct VectorUniformStorage {
+    int registers = 1;
+    int perRegister = 1;
+    bool rowMajor = false;
+};
+VectorUniformStorage vectorUniformStorage(const EffectSyntax& syntax, const FxGlobal& g, const std::string& defaultMajority);
 
 // `type` as the rewritten source spells a parameter or return of it: `float4x1` and `float1x4`
 // -> `float4`, `float1x1` -> `float`; any other type as written.

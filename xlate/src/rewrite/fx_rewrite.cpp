@@ -427,7 +427,9 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : staticObjectAliases(syntax)) edits.push_back(std::move(e));
     for (auto& e : shaderValuedDefaultsDropped(syntax)) edits.push_back(std::move(e));
     for (auto& e : respellOneComponentVectors(syntax)) edits.push_back(std::move(e));
-    for (auto& e : degenerateMatricesAsVectors(syntax)) edits.push_back(std::move(e));
+    std::vector<TextEdit> vectorSwizzles;  // ahead of lowerMatrixSwizzles' edits of the same tokens (applyEdits keeps order)
+    for (auto& e : degenerateMatricesAsVectors(syntax, defaultMajority, &vectorSwizzles)) edits.push_back(std::move(e));
+    edits.insert(edits.begin(), vectorSwizzles.begin(), vectorSwizzles.end());
     for (auto& e : lvalueCastsAsAssignments(syntax)) edits.push_back(std::move(e));
     for (auto& e : outArgumentsThroughConversions(syntax)) edits.push_back(std::move(e));
     for (auto& e : componentwiseCasts(syntax)) edits.push_back(std::move(e));

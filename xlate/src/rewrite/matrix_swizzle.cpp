@@ -8,22 +8,13 @@
 
 namespace fxport::xlate {
 
-namespace {
-
-struct Element {
-    int row = 0;
-    int column = 0;
-    std::string text;  // `_m30` or `_41`, as written
-};
-
-// `_m30_m31` / `_41_42` (not mixed within one swizzle, as fxc requires); nullopt if not a matrix swizzle.
-std::optional<std::vector<Element>> parseMatrixSwizzle(const std::string& s) {
-    std::vector<Element> elements;
+std::optional<std::vector<MatrixSwizzleElement>> parseMatrixSwizzle(const std::string& s) {
+    std::vector<MatrixSwizzleElement> elements;
     size_t i = 0;
     bool zeroBased = s.size() > 1 && s[1] == 'm';
     while (i < s.size()) {
         if (s[i] != '_') return std::nullopt;
-        Element e;
+        MatrixSwizzleElement e;
         size_t start = i++;
         if (zeroBased) {
             if (i >= s.size() || s[i] != 'm') return std::nullopt;
@@ -42,6 +33,8 @@ std::optional<std::vector<Element>> parseMatrixSwizzle(const std::string& s) {
     if (elements.empty() || elements.size() > 4) return std::nullopt;
     return elements;
 }
+
+namespace {
 
 // Index of the first token of the postfix expression that ends at token `last` (inclusive);
 // nullopt if it is not one we can delimit.

@@ -4,12 +4,24 @@
 // a camera position out of a view matrix.
 #pragma once
 
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "fx/fx_syntax.h"
 #include "fx/lexer.h"
 
 namespace fxport::xlate {
+
+struct MatrixSwizzleElement {
+    int row = 0;  // zero-based
+    int column = 0;
+    std::string text;  // `_m30` or `_41`, as written
+};
+
+// The elements of `_m30_m31` / `_41_42` (not mixed within one swizzle, as fxc requires); nullopt
+// if `swizzle` is not a matrix swizzle.
+std::optional<std::vector<MatrixSwizzleElement>> parseMatrixSwizzle(const std::string& swizzle);
 
 // Edits for every `.`-swizzle of two or more matrix elements (`_mRC` zero-based or `_RC` one-based):
 //  - all elements in one row r:  `._m30_m31_m32` -> `[3].xyz` (a postfix like the original, so the

@@ -52,9 +52,12 @@ bool isScalar(const EffectSyntax& syntax, const FxFunction& f, size_t b, size_t 
 bool isOneLineMatrix(const EffectSyntax& syntax, const FxFunction& f, size_t b, size_t e) {
     const auto& t = syntax.tokens;
     if (e != b + 1 || !t[b].isIdent()) return false;
-    // Only a local or a parameter: a uniform keeps its matrix type (its register layout).
+    // A local, a parameter or a uniform read as a vector (degenerate_matrices.h); a struct member
+    // or an array element keeps its matrix type.
     const bool parameter = std::any_of(f.parameters.begin(), f.parameters.end(), [&](const FxParameter& p) { return p.name == t[b].text; });
-    if (!parameter && !f.declarationSites.count(t[b].text)) return false;
+    const bool uniform = std::any_of(syntax.globals.begin(), syntax.globals.end(),
+                                     [&](const FxGlobal& g) { return g.name == t[b].text && isVectorUniform(syntax, g); });
+    if (!parameter && !uniform && !f.declarationSites.count(t[b].text)) return false;
     auto d = declaredVariable(syntax, f, t[b].text, b);
     if (!d || !d->dims.empty()) return false;
     BasicType type = describeBasicType(syntax.resolveType(d->type));
