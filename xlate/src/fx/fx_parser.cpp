@@ -698,8 +698,9 @@ private:
             expectIdentifier("register");
             if (cur().is("(")) {
                 size_t after = skipGroup(pos_, "register");
-                const std::string& last = tok(after - 2).text;  // b3 (the last argument)
-                if (after >= pos_ + 3 && last.size() > 1 && (last[0] == 'b' || last[0] == 'B')) reg = std::atoi(last.c_str() + 1);
+                const std::string& last = tok(after - 2).text;  // b3 (the last argument); c3 before SM 5.1 (register_reservations.cpp)
+                const char letter = last.empty() ? 0 : char(std::tolower(static_cast<unsigned char>(last[0])));
+                if (after >= pos_ + 3 && last.size() > 1 && (letter == 'b' || letter == 'c')) reg = std::atoi(last.c_str() + 1);
                 pos_ = after;
             }
         }
