@@ -84,5 +84,32 @@ TEST(OneRowTextures, LinearFilterBlendsNeighboursOfTheRow) {
             EXPECT_NEAR(px[x * 4 + c], (texel(x)[c] + texel(x + 1)[c]) / 2, 1.5f / 255.0f) << "pixel " << x << " channel " << c;
 }
 
+// A D3D10 Texture1D object has no texture of the device to read (GL would read black): the draw
+// says so instead.
+TEST(OneRowTextures, Texture1DObjectIsRefusedAtTheDraw) {
+    GraphicsDevice& device = testDevice();
+    const std::string text =
+        "Texture1D Ramp; SamplerState Linear;\n"
+        "float4 VS(float4 p : POSITION0) : SV_Position { return p; }\n"
+        "float4 PS(float4 p : SV_Position) : SV_Target { return Ramp.Sample(Linear, p.x / 4); }\n"
+        "technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelShader(CompileShader(ps_4_0, PS())); } }\n";
+    EffectOptions options;
+    options.useCache = false;
+    Effect effect(device, EffectSource{text, "Texture1DObject.fx"}, options);
+    Texture2D texture(device, 4, 1, false, SurfaceFormat::Color);
+    texture.SetData(kRamp);
+    effect.Parameters["Ramp"].SetValue(texture);
+    RenderTarget2D target(device, 4, 1, false, SurfaceFormat::Vector4);
+    device.SetRenderTarget(target);
+    effect.CurrentTechnique->Passes[0].Apply();
+    try {
+        drawQuad(device);
+        ADD_FAILURE() << "a Texture1D sampled from a 2D texture drew";
+    } catch (const InvalidOperation& e) {
+        EXPECT_NE(std::string(e.what()).find("samples a Texture1D at unit 0"), std::string::npos) << e.what();
+    }
+    device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
+}
+
 }  // namespace
 }  // namespace fxport
