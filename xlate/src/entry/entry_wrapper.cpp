@@ -267,15 +267,14 @@ bool writesPosition(const std::vector<Leaf>& outputs) {
 
 namespace {
 
-// Whether `attributes` ("[maxvertexcount(3)][earlydepthstencil]") holds `name`, in any case (fxc's).
+// Whether `attributes` ("[maxvertexcount(3)][earlydepthstencil]") holds attribute `name`. fxc
+// matches attribute names in their case (vkd3d's numthreads: `[NumThreads(...)]` is refused).
 bool hasAttribute(const std::string& attributes, const std::string& name) {
-    std::string lower;
-    for (char c : attributes) lower += char(std::tolower(static_cast<unsigned char>(c)));
-    for (size_t at = lower.find(name); at != std::string::npos; at = lower.find(name, at + 1)) {
+    for (size_t at = attributes.find(name); at != std::string::npos; at = attributes.find(name, at + 1)) {
         size_t before = at, after = at + name.size();
-        while (before > 0 && std::isspace(static_cast<unsigned char>(lower[before - 1]))) --before;
-        while (after < lower.size() && std::isspace(static_cast<unsigned char>(lower[after]))) ++after;
-        if (before > 0 && lower[before - 1] == '[' && after < lower.size() && (lower[after] == ']' || lower[after] == '(')) return true;
+        while (before > 0 && std::isspace(static_cast<unsigned char>(attributes[before - 1]))) --before;
+        while (after < attributes.size() && std::isspace(static_cast<unsigned char>(attributes[after]))) ++after;
+        if (before > 0 && attributes[before - 1] == '[' && after < attributes.size() && (attributes[after] == ']' || attributes[after] == '(')) return true;
     }
     return false;
 }

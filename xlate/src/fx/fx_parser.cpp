@@ -714,7 +714,10 @@ private:
         expect("{", ("to open cbuffer " + name).c_str());
         while (!accept("}")) {
             if (isEnd()) fail(diag::kUnterminated, "cbuffer '" + name + "' is never closed with '}'", open);
-            if (accept(";")) continue;
+            if (accept(";")) {  // an empty declaration (HBAO+'s PAD_FLOAT; expands to nothing): fxc takes it, glslang does not
+                blank(pos_ - 1, pos_);
+                continue;
+            }
             parseDeclaration(name);
         }
         accept(";");

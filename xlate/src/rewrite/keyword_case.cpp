@@ -43,23 +43,4 @@ std::string typeKeywordsLowerCased(const std::string& text) {
     return out.empty() ? text : out;
 }
 
-std::string attributeNamesLowerCased(const std::string& text) {
-    static const std::set<std::string> kAttributes = {
-        "numthreads", "maxvertexcount", "domain", "partitioning", "outputtopology", "outputcontrolpoints", "patchconstantfunc",
-        "maxtessfactor", "instance", "earlydepthstencil", "unroll", "loop", "branch", "flatten", "forcecase", "call", "fastopt",
-        "allow_uav_condition"};
-    const std::vector<Token> t = tokenize(text);
-    std::string out;
-    for (size_t i = 1; i + 1 < t.size(); ++i) {
-        if (!t[i].isIdent() || !t[i - 1].is("[") || !(t[i + 1].is("(") || t[i + 1].is("]"))) continue;
-        if (i >= 2 && (t[i - 2].isIdent() || t[i - 2].is(")") || (t[i - 2].is("]") && !t[i + 1].is("(")))) continue;  // an index
-        std::string lower;
-        for (char c : t[i].text) lower += char(std::tolower(static_cast<unsigned char>(c)));
-        if (lower == t[i].text || !kAttributes.count(lower)) continue;
-        if (out.empty()) out = text;
-        out.replace(t[i].offset, lower.size(), lower);
-    }
-    return out.empty() ? text : out;
-}
-
 }  // namespace fxport::xlate

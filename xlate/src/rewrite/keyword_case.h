@@ -12,9 +12,4 @@ namespace fxport::xlate {
 
 std::string typeKeywordsLowerCased(const std::string& preprocessed);
 
-// fxc reads attribute names in any case too (`[MaxVertexCount(12)]`, `[NumThreads(8, 8, 1)]`,
-// `[EarlyDepthStencil]`; Intel's AOIT ZoomBox.fx); glslang and fxport's own readers know the
-// lower-case words. A known attribute name right after a `[` that opens no index is lower-cased.
-std::string attributeNamesLowerCased(const std::string& preprocessed);
-
 }  // namespace fxport::xlate
