@@ -58,6 +58,20 @@ TEST_P(HlslAcceptedForms, ArraySizesFromConstantExpressions) {
         expectPixel("static const int size = 2; Texture2DMS<float4, size - 1> t;", "return A;", {1, 2, 3, 4}, {1, 2, 3, 4});
 }
 
+// A local constant sizes arrays only in its own block: two functions each with `const int n`
+// (Intel ASSAO's vaSimpleShadowMap.hlsl: 6 and 14 samples), an inner block's n hiding the
+// function's, and a global n hidden by neither outside them. Each array's flat list fills it in order.
+TEST_P(HlslAcceptedForms, LocalConstantSizesInTheirOwnScope) {
+    const std::string functions =
+        "static const int n = 2;\n"
+        "float2 a() { const int n = 3; const float2 o[n] = {1, 2, 3, 4, 5, 6}; return o[n - 1]; }\n"
+        "float2 b() { const int n = 4; const float2 o[n] = {1, 2, 3, 4, 5, 6, 7, 8}; float2 s = o[n - 1];\n"
+        "  { const int n = 1; const float2 p[n] = {10, 20}; s += p[0]; } const float q[n] = {1, 2, 3, 4}; return s + q[n - 1]; }\n"
+        "float2 c() { const float2 o[n] = {9, 8, 7, 6}; return o[n - 1]; }\n";
+    // a(): o[2] = (5, 6); b(): o[3] + p[0] + q[3] = (7 + 10 + 4, 8 + 20 + 4); c(): o[1] = (7, 6).
+    expectPixel(functions, "return float4(a().x, b(), c().x) + A;", {5, 21, 32, 7});
+}
+
 // Brace initializers that name variables: each variable gives its components in fxc's order
 // (xlate/src/rewrite/initializer_lists.cpp with aggregate_components.h).
 TEST_P(HlslAcceptedForms, BraceInitializersNamingVariables) {

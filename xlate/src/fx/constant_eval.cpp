@@ -13,9 +13,8 @@ namespace {
 
 class Evaluator {
 public:
-    Evaluator(const EffectSyntax& syntax, TokenSpan span, const std::map<std::string, std::vector<double>>& known,
-              const std::map<std::string, std::vector<double>>* arrays)
-        : syntax_(syntax), pos_(span.begin), end_(span.end), known_(known), arrays_(arrays) {}
+    Evaluator(const EffectSyntax& syntax, TokenSpan span, const ConstantLookup& lookup)
+        : syntax_(syntax), pos_(span.begin), end_(span.end), lookup_(lookup) {}
 
     std::optional<std::vector<double>> run() {
         auto v = expression();
@@ -27,8 +26,7 @@ public:
 private:
     const EffectSyntax& syntax_;
     size_t pos_, end_;
-    const std::map<std::string, std::vector<double>>& known_;
-    const std::map<std::string, std::vector<double>>* arrays_;
+    const ConstantLookup& lookup_;
     // Every level of ( or { is one level of recursion here: bounded, so that 30 000
     // nested parentheses are a diagnostic and not a stack overflow.
     int depth_ = 0;
@@ -113,14 +111,14 @@ private:
     }
     // `name[index]` of a constant array of scalars; the index truncates, as fxc's does.
     std::optional<std::vector<double>> element(const std::string& name) {
-        auto array = arrays_->find(name);
-        if (array == arrays_->end()) return std::nullopt;
+        const std::vector<double>* array = lookup_(name, true);
+        if (!array) return std::nullopt;
         ++pos_;  // '['
         auto index = expression();
         if (!index || index->size() != 1 || !accept("]")) return std::nullopt;
         const double i = (*index)[0];
-        if (!(i >= 0) || i >= double(array->second.size())) return std::nullopt;
-        return std::vector<double>{array->second[static_cast<size_t>(i)]};
+        if (!(i >= 0) || i >= double(array->size())) return std::nullopt;
+        return std::vector<double>{(*array)[static_cast<size_t>(i)]};
     }
     std::optional<std::vector<double>> primary() {
         const Token* t = cur();
@@ -157,9 +155,8 @@ private:
                 if (v->size() != want) return std::nullopt;
                 return v;
             }
-            auto it = known_.find(t->text);
-            if (it != known_.end()) return it->second;
-            if (arrays_ && cur() && cur()->is("[")) return element(t->text);
+            if (const std::vector<double>* value = lookup_(t->text, false)) return *value;
+            if (cur() && cur()->is("[")) return element(t->text);
         }
         return std::nullopt;
     }
@@ -170,7 +167,18 @@ private:
 std::optional<std::vector<double>> evaluateConstant(const EffectSyntax& syntax, TokenSpan span,
                                                     const std::map<std::string, std::vector<double>>& known, bool* tooDeep,
                                                     const std::map<std::string, std::vector<double>>* arrays) {
-    Evaluator evaluator(syntax, span, known, arrays);
+    auto lookup = [&known, arrays](const std::string& name, bool array) -> const std::vector<double>* {
+        const auto* names = array ? arrays : &known;
+        if (!names) return nullptr;
+        auto it = names->find(name);
+        return it == names->end() ? nullptr : &it->second;
+    };
+    return evaluateConstantWith(syntax, span, lookup, tooDeep);
+}
+
+std::optional<std::vector<double>> evaluateConstantWith(const EffectSyntax& syntax, TokenSpan span, const ConstantLookup& lookup,
+                                                        bool* tooDeep) {
+    Evaluator evaluator(syntax, span, lookup);
     auto value = evaluator.run();
     if (tooDeep) *tooDeep = evaluator.tooDeep();
     return value;

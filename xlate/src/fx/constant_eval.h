@@ -3,6 +3,7 @@
 // brace lists ({1, 2, 3, 4}) and earlier globals by name. Anything else -> no default.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -20,5 +21,11 @@ std::optional<std::vector<double>> evaluateConstant(const EffectSyntax& syntax, 
                                                     const std::map<std::string, std::vector<double>>& known,
                                                     bool* tooDeep = nullptr,
                                                     const std::map<std::string, std::vector<double>>* arrays = nullptr);
+
+// A name's value where the expression stands (constants are scoped): a scalar constant's when
+// `array` is false, a constant array of scalars' when it is true; nullptr when there is none.
+using ConstantLookup = std::function<const std::vector<double>*(const std::string& name, bool array)>;
+std::optional<std::vector<double>> evaluateConstantWith(const EffectSyntax& syntax, TokenSpan span, const ConstantLookup& lookup,
+                                                        bool* tooDeep = nullptr);
 
 }  // namespace fxport::xlate
