@@ -72,6 +72,12 @@ TEST_P(HlslAcceptedForms, LocalConstantSizesInTheirOwnScope) {
     expectPixel(functions, "return float4(a().x, b(), c().x) + A;", {5, 21, 32, 7});
 }
 
+// A uniform array sized by its initializer (NVIDIA SoftShadows' Poisson.fxh): three elements whose
+// defaults are the listed values, read back by the shader.
+TEST_P(HlslAcceptedForms, UniformArraySizedByItsInitializer) {
+    expectPixel("float2 P[] = { {1, 2}, {3, 4}, {5, 6} }; float Q[] = {7, 8};", "return float4(P[0] + P[2], P[1].y, Q[1]) + A;", {6, 8, 4, 8});
+}
+
 // Brace initializers that name variables: each variable gives its components in fxc's order
 // (xlate/src/rewrite/initializer_lists.cpp with aggregate_components.h).
 TEST_P(HlslAcceptedForms, BraceInitializersNamingVariables) {

@@ -42,3 +42,34 @@ TEST(RealworldFourthWave, LocalConstantSizesAreTheirFunctions) {
         "ps_5_0");
     EXPECT_FALSE(e.shaders.at(0).glsl.empty());
 }
+
+// NVIDIA SoftShadows' Poisson.fxh: a uniform array sized by its initializer, `float2 P[] = {...}`.
+// fxc gives it the initializer's element count and keeps the values as the parameter's default,
+// in $Global as `float2 P[3]` would be (two registers and a float2: 40 bytes, the block 48). A
+// flat list and SM2 XNA style do the same.
+TEST(RealworldFourthWave, UniformArraySizedByItsInitializer) {
+    CompileOptions o;
+    o.useCache = false;
+    const std::string shader = "float4 PS(float2 t : TEXCOORD0) : SV_Target { return float4(P[0] + P[2], 0, 1); }\n"
+                               "technique11 T { pass P0 { SetPixelShader(CompileShader(ps_4_0, PS())); } }\n";
+    for (const char* declaration : {"float2 P[] = { {1, 2}, {3, 4}, {5, 6} };\n", "float2 P[] = { 1, 2, 3, 4, 5, 6 };\n"}) {
+        SCOPED_TRACE(declaration);
+        CompiledEffect e = compileEffectSource(declaration + shader, writeSource("poisson.fx", "").string(), o);
+        const Parameter* p = e.findParameter("P");
+        ASSERT_NE(p, nullptr);
+        EXPECT_EQ(p->elements, 3);
+        EXPECT_EQ(p->columns, 2);
+        EXPECT_EQ(p->defaultValue, (std::vector<double>{1, 2, 3, 4, 5, 6}));
+        EXPECT_EQ(p->offset, 0);
+        ASSERT_FALSE(e.uniformBlocks.empty());
+        EXPECT_EQ(e.uniformBlocks[0].size, 48);
+    }
+    CompiledEffect xna = compileEffectSource("float P[] = { 1, 2, 3 };\n"
+                                             "float4 PS(float2 t : TEXCOORD0) : COLOR0 { return float4(P[0], P[1], P[2], 1); }\n"
+                                             "technique T { pass P0 { PixelShader = compile ps_2_0 PS(); } }\n",
+                                             writeSource("xna.fx", "").string(), o);
+    const Parameter* p = xna.findParameter("P");
+    ASSERT_NE(p, nullptr);
+    EXPECT_EQ(p->elements, 3);
+    EXPECT_EQ(p->defaultValue, (std::vector<double>{1, 2, 3}));
+}
