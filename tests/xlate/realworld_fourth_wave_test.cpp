@@ -6,6 +6,7 @@
 
 #include <unistd.h>
 
+#include <array>
 #include <filesystem>
 #include <fstream>
 
@@ -72,4 +73,41 @@ TEST(RealworldFourthWave, UniformArraySizedByItsInitializer) {
     ASSERT_NE(p, nullptr);
     EXPECT_EQ(p->elements, 3);
     EXPECT_EQ(p->defaultValue, (std::vector<double>{1, 2, 3}));
+}
+
+// GameTechDev's OutdoorLightScattering defaults THREAD_GROUP_SIZE to `max(INITIAL_SAMPLE_STEP, 32)`
+// in [numthreads]: the comma inside max() separates no attribute arguments, and the size is the
+// constant fxc folds (128), as is a static int's initial value (vkd3d's numthreads, which fxc takes).
+TEST(RealworldFourthWave, ThreadGroupSizesFromConstantExpressions) {
+    CompiledEffect e = compileLoose("#define THREAD_GROUP_SIZE max(128, 32)\n"
+                                    "static const uint rows = 2; static int depth = 3;\n"
+                                    "[numthreads(THREAD_GROUP_SIZE / 16, rows * 2 - 7 / 2, depth)]\n"
+                                    "void main() {}\n",
+                                    "cs_5_0");
+    EXPECT_EQ(e.shaders.at(0).threadGroupSize, (std::array<int, 3>{8, 1, 3}));  // 7 / 2 is int division: 3
+}
+
+// A size that is no integer constant fxport evaluates is refused at its own file:line, saying so.
+TEST(RealworldFourthWave, ThreadGroupSizeThatIsNoConstantIsLocated) {
+    struct Case {
+        const char* source;
+        const char* message;
+    };
+    const Case cases[] = {
+        {"static int x = 1;\n\n[numthreads(1, x++, 1)]\nvoid main() {}\n", "'x ++' is no integer constant fxport can evaluate"},
+        {"\n\n[numthreads(float(2), 1, 1)]\nvoid main() {}\n", "'float(2)' is not an integer"},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.source);
+        try {
+            compileLoose(c.source, "cs_5_0");
+            ADD_FAILURE() << "compiled";
+        } catch (const CompileError& err) {
+            ASSERT_FALSE(err.diagnostics().empty());
+            const Diagnostic& d = err.diagnostics().front();
+            EXPECT_NE(d.message.find(c.message), std::string::npos) << d.message;
+            EXPECT_EQ(d.location.line, 3) << d.message;
+            EXPECT_NE(d.location.file.find("shader.hlsl"), std::string::npos);
+        }
+    }
 }

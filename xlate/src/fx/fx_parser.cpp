@@ -854,6 +854,7 @@ private:
         f.returnType = returnType;
         f.token = nameToken;
         f.attributes = std::move(pendingAttributes_);
+        if (!f.attributes.empty()) f.attributeTokens = {declarationStart, start};
         pendingAttributes_.clear();
         size_t close = skipGroup(pos_, ("parameter list of '" + name + "'").c_str());
         // `float2 f(void)`: C's spelling of no parameters, which fxc takes; glslang does not.
@@ -895,6 +896,7 @@ private:
             if (!f.attributes.empty()) blank(declarationStart, start);
             syntax_.edits.push_back({tok(start).offset, tok(start).offset, proto->second.text + " "});
             f.attributes = proto->second.text;
+            f.attributeTokens = {proto->second.begin, proto->second.end};
         }
         size_t after = skipGroup(pos_, ("body of function '" + name + "'").c_str());
         f.body = {pos_ + 1, after - 1};

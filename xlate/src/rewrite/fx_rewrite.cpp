@@ -4,6 +4,7 @@
 #include "rewrite/geometry_output_stream.h"
 
 #include "rewrite/array_sizes.h"
+#include "rewrite/numthreads_sizes.h"
 #include "rewrite/initializer_lists.h"
 #include "rewrite/out_argument_casts.h"
 #include "rewrite/length_property.h"
@@ -408,6 +409,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : lowerMatrixSwizzles(tokens)) edits.push_back(std::move(e));
     for (auto& e : regroupFlatInitializers(syntax)) edits.push_back(std::move(e));
     for (auto& e : arraySizesAsLiterals(syntax)) edits.push_back(std::move(e));
+    for (auto& e : threadGroupSizesAsLiterals(syntax)) edits.push_back(std::move(e));
     for (auto& e : lengthPropertiesAsCalls(syntax)) edits.push_back(std::move(e));
     for (auto& e : unusedUavsDropped(syntax)) edits.push_back(std::move(e));
     for (auto& e : refractVectorEta(syntax)) edits.push_back(std::move(e));
