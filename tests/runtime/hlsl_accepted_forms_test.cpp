@@ -100,6 +100,19 @@ TEST_P(HlslAcceptedForms, ComponentwiseCastsAndConstructors) {
     expectPixel("", "float arr[4] = {61, 62, 63, 64}; int2x2 mat; mat = (int2x2) arr; return float4(mat) + A;", {62, 63, 64, 65}, {1, 1, 1, 1});
 }
 
+// A struct becomes another struct type whose members match one for one (xlate/src/rewrite/
+// aggregate_conversions.cpp): returned as the other type, initializing one, passed to a parameter of
+// it, cast to it in an expression (a cast converts: the int2 member truncates), and an
+// array becoming a struct. Xbox-ATG-Samples' SimpleTexturePC vertex shader returns its input so.
+TEST_P(HlslAcceptedForms, StructsConvertComponentwise) {
+    const std::string structs = "struct P { float2 a; float b; }; struct Q { float2 c; float d; }; struct I { int2 e; float f; };"
+                                "Q asQ(P p) { return p; } float sum(Q q) { return q.c.x + q.c.y + q.d; }";
+    expectPixel(structs, "P p; p.a = A.xy; p.b = A.z; Q q = asQ(p); Q r = p; return float4(q.c, r.d, sum(p));",
+                {1.5f, -2, 4, 3.5f}, {1.5f, -2, 4, 0});
+    expectPixel(structs, "float4 v = A; float w[3] = {A.w, A.z, A.y}; Q q = w; return float4(((I)v).e, ((I)v).f, q.d);",
+                {2, -3, 4.25f, -3.5f}, {2.75f, -3.5f, 4.25f, 1});
+}
+
 // Casts on the left of '=' that keep part of the target (xlate/src/rewrite/lvalue_casts.cpp): a matrix
 // cast keeps its rows and columns (the top left), an array cast the first components in order.
 TEST_P(HlslAcceptedForms, PartialAssignmentsThroughCasts) {

@@ -111,3 +111,25 @@ TEST(RealworldFourthWave, ThreadGroupSizeThatIsNoConstantIsLocated) {
         }
     }
 }
+
+// Xbox-ATG-Samples SimpleTexturePC / SimpleTrianglePC VertexShader.hlsl return the input struct as
+// the output struct, whose members match one for one: fxc converts (componentwise-equal), so do
+// an initialization, a cast and an argument of the other type. The outputs keep their semantics.
+TEST(RealworldFourthWave, StructConvertsToAComponentwiseEqualStruct) {
+    const std::string structs = "struct Vertex { float4 position : SV_Position; float2 texcoord : TEXCOORD0; };\n"
+                                "struct Interpolants { float4 position : SV_Position; float2 texcoord : TEXCOORD0; };\n"
+                                "Interpolants passOn(Interpolants x) { return x; }\n";
+    for (const char* body : {"return In;", "Interpolants b = In; return b;", "return (Interpolants)In;", "return passOn(In);"}) {
+        SCOPED_TRACE(body);
+        CompiledEffect e = compileLoose(structs + "Interpolants main(Vertex In) { " + body + " }\n", "vs_5_0");
+        const CompiledShader& vs = e.shaders.at(0);
+        bool texcoord = false;
+        for (const auto& out : vs.outputs) texcoord |= out.semantic == "TEXCOORD0";
+        EXPECT_TRUE(texcoord);
+    }
+    // Component types differ (int against float): fxc refuses the implicit conversion, and so does fxport.
+    EXPECT_THROW(compileLoose("struct A { float3 aa; int bb; }; struct B { float3 aa; float bb; };\n"
+                              "float4 main(float4 p : POSITION) : SV_Position { A a = (A)p; B b = a; return b.aa.xyzz; }\n",
+                              "vs_5_0"),
+                 CompileError);
+}

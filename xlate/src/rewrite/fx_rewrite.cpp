@@ -3,6 +3,7 @@
 #include "rewrite/geometry_clip_inputs.h"
 #include "rewrite/geometry_output_stream.h"
 
+#include "rewrite/aggregate_conversions.h"
 #include "rewrite/array_sizes.h"
 #include "rewrite/numthreads_sizes.h"
 #include "rewrite/initializer_lists.h"
@@ -435,6 +436,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : lvalueCastsAsAssignments(syntax)) edits.push_back(std::move(e));
     for (auto& e : outArgumentsThroughConversions(syntax)) edits.push_back(std::move(e));
     for (auto& e : componentwiseCasts(syntax)) edits.push_back(std::move(e));
+    for (auto& e : aggregateConversions(syntax)) edits.push_back(std::move(e));
     for (auto& e : intrinsicsAsFxc(syntax)) edits.push_back(std::move(e));
     for (auto& e : scalarIntrinsicCalls(syntax)) edits.push_back(std::move(e));
     for (auto& e : mixedShapeConversions(syntax)) edits.push_back(std::move(e));
