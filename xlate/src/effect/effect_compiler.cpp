@@ -53,6 +53,7 @@
 #include "glsl/spirv_to_glsl.h"
 #include "entry/patch_constant_wrapper.h"
 #include "entry/stage_attributes.h"
+#include "rewrite/numthreads_sizes.h"
 #include "fx/text_util.h"
 
 namespace fs = std::filesystem;
@@ -202,6 +203,7 @@ private:
     }
 
     int compileShader(const FxShaderExpr& expr, ShaderStage expected, size_t blameToken);
+    bool threadGroupSizesEvaluate(const FxFunction& entry, const ShaderProfile& profile);
     int compileAsmShader(const FxShaderExpr& expr, ShaderStage expected);
     bool isAsmShader(const FxShaderExpr& expr) const;
     // glslang + SPIRV-Cross + reflection of one shader; `source` is the whole HLSL to compile.
@@ -446,6 +448,17 @@ bool EffectBuilder::buildSelector(TokenSpan span, std::vector<SelectorOp>& ops, 
     return false;
 }
 
+// Each [numthreads] size is an integer constant fxport evaluates (numthreads_sizes.h); otherwise
+// the error is at that size's file:line.
+bool EffectBuilder::threadGroupSizesEvaluate(const FxFunction& entry, const ShaderProfile& profile) {
+    for (const ThreadGroupSize& size : threadGroupSizes(syntax_, entry))
+        if (!size.problem.empty()) {
+            error(diag::kBadEntrySignature, "'" + entry.name + "' (" + profile.name + ") [numthreads]: " + size.problem, size.span.begin);
+            return false;
+        }
+    return true;
+}
+
 int EffectBuilder::compileShader(const FxShaderExpr& expr, ShaderStage expected, size_t /*blameToken*/) {
     auto profile = parseShaderProfile(expr.profile);
     if (!profile) {
@@ -490,6 +503,7 @@ int EffectBuilder::compileShader(const FxShaderExpr& expr, ShaderStage expected,
             error(diag::kBadEntrySignature, why, entry->token);
             return -1;
         }
+        if (expected == ShaderStage::Compute && !threadGroupSizesEvaluate(*entry, *profile)) return -1;
     }
     // Vertex and pixel shaders get a wrapper that maps D3D9 semantics; the D3D10+ stages are
     // compiled as written.

@@ -777,6 +777,20 @@ private:
         if (!isConst || g.initializer.empty() || !g.arrayDims.empty()) return;
         if (auto v = evaluateConstant(syntax_, g.initializer, constants_); v && v->size() == 1) constants_[g.name] = *v;
     }
+    // `float2 P[] = { {1, 2}, {3, 4}, {5, 6} };`: fxc sizes the array by its initializer (3 elements;
+    // NVIDIA SoftShadows' Poisson.fxh), a uniform as a static, so the parameter has that many
+    // elements. Only initializers constant_eval reads (numbers, constructors, earlier constants)
+    // of numeric types; others keep 0 for glslang to size.
+    void sizeFromInitializer(FxGlobal& g) const {
+        if (g.arrayDims.empty() || g.arrayDims[0] != 0 || g.initializer.empty()) return;
+        BasicType b = describeBasicType(syntax_.resolveType(g.type));
+        if (!b.ok) return;
+        long long each = b.rows * b.columns;
+        for (size_t d = 1; d < g.arrayDims.size(); ++d) each *= std::max(g.arrayDims[d], 0);
+        auto v = evaluateConstant(syntax_, g.initializer, constants_);
+        if (!v || v->empty() || each <= 0 || v->size() % size_t(each) != 0 || v->size() / size_t(each) > size_t(INT_MAX)) return;
+        g.arrayDims[0] = static_cast<int>(v->size() / size_t(each));
+    }
     std::map<std::string, std::vector<double>> constants_;
 
     // `precise NAME` then a declarator's end: a type named `precise` (fxc's modifier needs a type after it).
@@ -844,6 +858,7 @@ private:
         f.returnType = returnType;
         f.token = nameToken;
         f.attributes = std::move(pendingAttributes_);
+        if (!f.attributes.empty()) f.attributeTokens = {declarationStart, start};
         pendingAttributes_.clear();
         size_t close = skipGroup(pos_, ("parameter list of '" + name + "'").c_str());
         // `float2 f(void)`: C's spelling of no parameters, which fxc takes; glslang does not.
@@ -885,6 +900,7 @@ private:
             if (!f.attributes.empty()) blank(declarationStart, start);
             syntax_.edits.push_back({tok(start).offset, tok(start).offset, proto->second.text + " "});
             f.attributes = proto->second.text;
+            f.attributeTokens = {proto->second.begin, proto->second.end};
         }
         size_t after = skipGroup(pos_, ("body of function '" + name + "'").c_str());
         f.body = {pos_ + 1, after - 1};
@@ -1177,6 +1193,7 @@ private:
             if (tail.annotationEnd > tail.annotationBegin) blank(tail.annotationBegin, tail.annotationEnd);
             ignoreStateBlock(name);
             if (accept("=")) g.initializer = skipInitializer(name);
+            sizeFromInitializer(g);
             rememberConstant(g);
             syntax_.globals.push_back(std::move(g));
             if (accept(",")) {

@@ -3,7 +3,9 @@
 #include "rewrite/geometry_clip_inputs.h"
 #include "rewrite/geometry_output_stream.h"
 
+#include "rewrite/aggregate_conversions.h"
 #include "rewrite/array_sizes.h"
+#include "rewrite/numthreads_sizes.h"
 #include "rewrite/initializer_lists.h"
 #include "rewrite/out_argument_casts.h"
 #include "rewrite/length_property.h"
@@ -414,6 +416,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : lowerMatrixSwizzles(tokens)) edits.push_back(std::move(e));
     for (auto& e : regroupFlatInitializers(syntax)) edits.push_back(std::move(e));
     for (auto& e : arraySizesAsLiterals(syntax)) edits.push_back(std::move(e));
+    for (auto& e : threadGroupSizesAsLiterals(syntax)) edits.push_back(std::move(e));
     for (auto& e : lengthPropertiesAsCalls(syntax)) edits.push_back(std::move(e));
     for (auto& e : unusedUavsDropped(syntax)) edits.push_back(std::move(e));
     for (auto& e : refractVectorEta(syntax)) edits.push_back(std::move(e));
@@ -439,6 +442,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : lvalueCastsAsAssignments(syntax)) edits.push_back(std::move(e));
     for (auto& e : outArgumentsThroughConversions(syntax)) edits.push_back(std::move(e));
     for (auto& e : componentwiseCasts(syntax)) edits.push_back(std::move(e));
+    for (auto& e : aggregateConversions(syntax)) edits.push_back(std::move(e));
     for (auto& e : intrinsicsAsFxc(syntax)) edits.push_back(std::move(e));
     for (auto& e : scalarIntrinsicCalls(syntax)) edits.push_back(std::move(e));
     if (out.dx9Samplers)
