@@ -1,0 +1,47 @@
+// Operators on matrices computed per component, as fxc computes them (xlate/src/rewrite/
+// matrix_operators.h): each form compiles as a loose shader (fxc /T), where glslang 12 refused it,
+// crashed or computed a matrix product. The values are pinned by tests/runtime (hlsl_shapes_test,
+// hlsl_integer_matrices_test) against C++ arithmetic.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <string>
+
+#include "fxport/xlate/effect_compiler.h"
+#include "fxport/xlate/effect_file.h"
+
+namespace fs = std::filesystem;
+using namespace fxport::xlate;
+
+namespace {
+
+// `body` as the statements of a compute shader's main, after `globals`; the GLSL compiled.
+std::string compileCompute(const std::string& globals, const std::string& body) {
+    fs::path dir = fs::temp_directory_path() / ("fxport-matrix-operators-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    fs::path file = dir / "shader.hlsl";
+    std::ofstream(file) << globals << "\nRWStructuredBuffer<float4> o;\n[numthreads(1, 1, 1)]\nvoid main(uint i : SV_GroupIndex)\n{\n"
+                        << body << "\n}\n";
+    CompileOptions options;
+    options.useCache = false;
+    return compileShaderFiles({{file.string(), "main", "cs_5_0"}}, options).shaders.at(0).glsl;
+}
+
+}  // namespace
+
+// float2x3 * float2x3 and `*=`: glslang refused them ("Could not perform requested binary operation").
+TEST(MatrixOperators, NonSquareMatrixTimesMatrixCompiles) {
+    EXPECT_NE(compileCompute("float2x3 C;", "float2x3 q = C * C; q *= C; o[0] = float4(q[0], q[1].x);"), "");
+}
+
+// float2x2 * float2x2 multiplies rows in the GLSL, not the whole matrices (glslang's
+// OpMatrixTimesMatrix before: `spvWorkaroundRowMajor(_19.A) * spvWorkaroundRowMajor(_19.B)`).
+TEST(MatrixOperators, SquareMatrixTimesMatrixIsNoMatrixProduct) {
+    const std::string glsl = compileCompute("float2x2 A; float2x2 B;", "float2x2 p = A * B; o[0] = float4(p[0], p[1]);");
+    EXPECT_FALSE(std::regex_search(glsl, std::regex(R"(\(\w+\.A\) \*)"))) << glsl;
+    EXPECT_TRUE(std::regex_search(glsl, std::regex(R"(\(\w+\.A\)\[1\] \*)"))) << glsl;
+}
