@@ -17,6 +17,11 @@ const std::map<std::string, std::string> kOperatorNames = {
 bool isComparison(const std::string& op) { return op == "==" || op == "!=" || op == "<" || op == ">" || op == "<=" || op == ">="; }
 bool isFullMatrix(const BasicType& b) { return b.isMatrix && b.rows > 1 && b.columns > 1; }
 bool isScalarLike(const BasicType& b) { return b.rows * b.columns == 1; }
+bool isIntegral(const BasicType& b) {
+    const std::string s = glslangScalar(b.scalar);
+    return s != "float" && s != "double";
+}
+bool isIntegralMatrix(const BasicType& b) { return isFullMatrix(b) && isIntegral(b); }
 
 // An operand the helpers take: a full matrix of the result's shape, or a scalar.
 bool fits(const BasicType& operand, const BasicType& shape) {
@@ -40,7 +45,7 @@ std::string rowOf(const BasicType& type, const std::string& v, int r, const std:
 
 bool needsRowwiseOperator(const std::string& op, const BasicType& l, const BasicType& r, const BasicType& result) {
     if (!kOperatorNames.count(op) || !isFullMatrix(result) || !fits(l, result) || !fits(r, result)) return false;
-    return op == "*" && l.isMatrix && r.isMatrix;
+    return (op == "*" && l.isMatrix && r.isMatrix) || isIntegralMatrix(l) || isIntegralMatrix(r);
 }
 
 MatrixHelper rowwiseOperator(const std::string& op, const BasicType& l, const BasicType& r, const BasicType& result) {
@@ -55,7 +60,7 @@ MatrixHelper rowwiseOperator(const std::string& op, const BasicType& l, const Ba
 bool needsRowwiseAssignment(const std::string& op, const BasicType& target, const BasicType& value) {
     const std::string binary = op.substr(0, op.size() - 1);
     if (!kOperatorNames.count(binary) || isComparison(binary) || !isFullMatrix(target) || !fits(value, target)) return false;
-    return binary == "*" && value.isMatrix;
+    return (binary == "*" && value.isMatrix) || isIntegralMatrix(target) || isIntegralMatrix(value);
 }
 
 MatrixHelper rowwiseAssignment(const std::string& op, const BasicType& target, const BasicType& value) {
@@ -73,7 +78,10 @@ MatrixHelper rowwiseAssignment(const std::string& op, const BasicType& target, c
     return {name, code + "return a; } "};
 }
 
-bool needsRowwiseNegation(const BasicType&) { return false; }
+bool needsRowwiseNegation(const BasicType& m) {
+    const std::string s = glslangScalar(m.scalar);
+    return isFullMatrix(m) && (s == "int" || s == "uint");
+}
 
 MatrixHelper rowwiseNegation(const BasicType& m) {
     const std::string type = glslangSpelling(m), name = "fxport_matrix_negate_" + type;
