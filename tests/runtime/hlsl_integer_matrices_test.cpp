@@ -103,6 +103,19 @@ TEST_P(HlslIntegerMatrixOperators, CompoundAssignmentsPerComponent) {
     expectPixel(*e, expected);
 }
 
+// Comparisons give bool matrices, per component; `?:` with one selects per component, with
+// branches of other types (a uint scalar and an int2x3) and scalar branches (DirectXTex BC6HEncode's
+// `uint2x3 s = color >= 0 ? 0 : 1;`).
+TEST_P(HlslIntegerMatrixOperators, ComparisonsAndSelectionsPerComponent) {
+    auto e = withUniforms(std::string(kMatrices) +
+                          "bool2x3 b = e > 6; uint2x3 s = e >= 0 ? 0 : 1; int2x3 g = (e == 12) ? G : e;"
+                          "int2x3 h = ((I.x >= 15) | (e == 9)) ? e : -e;"
+                          "return float4(b[0][0] * 10 + b[0][1], s[0][1] * 10 + s[1][0], g[0][2] * 100 + g[1][1], h[1][1] * 100 + h[0][0]);");
+    const float expected[4] = {10 * (kI[0] > 6) + (kI[1] > 6), float(10 * (kI[1] >= 0 ? 0 : 1) + (kI[3] >= 0 ? 0 : 1)),
+                               float(100 * (kI[2] == 12 ? 11 : kI[2]) + 9), float(100 * 9 - kI[0])};
+    expectPixel(*e, expected);
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslIntegerMatrixOperators, ::testing::Values("4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 

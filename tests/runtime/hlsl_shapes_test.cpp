@@ -209,6 +209,19 @@ TEST_P(HlslShapes, NonSquareAndMixedMatrixTimesMatrixArePerComponent) {
     expectPixel(draw(*e), expected);
 }
 
+// A comparison of matrices is a bool matrix, per component (glslang crashed on it), stored, passed
+// to any() or used as a `?:` condition.
+TEST_P(HlslShapes, MatrixComparisonsGiveBoolMatrices) {
+    const float a[4] = {0.5f, -1.25f, 2.0f, 8.0f};
+    auto e = effect("float4 A;",
+                    "float2x2 m = {A.x, A.y, A.z, A.w}; bool2x2 b = m > 1; float2x2 f = (m > 1) ? m : 0;"
+                    "return float4(b[0][1] + 2 * b[1][1], any(m > 7), f[1][0], f[0][0]);");
+    e->Parameters["A"].SetValue(Vector4(a[0], a[1], a[2], a[3]));
+    const float expected[4] = {float(int(a[1] > 1) + 2 * int(a[3] > 1)), float(a[0] > 7 || a[1] > 7 || a[2] > 7 || a[3] > 7),
+                               a[2] > 1 ? a[2] : 0, a[0] > 1 ? a[0] : 0};
+    expectPixel(draw(*e), expected);
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslShapes, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 

@@ -60,3 +60,14 @@ TEST(MatrixOperators, IntegerMatrixOperatorsCompile) {
     }
 }
 
+// Comparisons of matrices give bool matrices (glslang crashed on them), stored, passed to any()
+// or used as a `?:` condition, also with branches of other types (a uint scalar and an int2x3:
+// fxport's select helper took both as uint2x3 before) and scalar branches (BC6HEncode's
+// `uint2x3 s = color >= 0 ? 0 : 1;`).
+TEST(MatrixOperators, MatrixComparisonsCompile) {
+    EXPECT_NE(compileCompute("uint g;",
+                             "float2x2 m = (float2x2)i; bool2x2 b = m > 1; float2x2 f = (m > 1) ? m : 0; o[0] = any(m > 1);\n"
+                             "int2x3 e = (int2x3)i; e = (e == 7) ? g : e; uint2x3 s = e >= 0 ? 0 : 1;\n"
+                             "e = ((i >= 15) | (e == 0)) ? e : -e; o[1] = float4(b[0], f[1]) + e[0].xyzz + s[1].xyzz;"),
+              "");
+}

@@ -107,6 +107,10 @@ private:
         if (!b || !a->isNumeric() || !b->isNumeric()) return std::nullopt;
         auto shape = commonShape(a->basic, b->basic);
         if (!shape) return std::nullopt;
+        // Scalar branches take a vector or matrix condition's shape: fxc selects per component
+        // (vkd3d's add_ternary).
+        const BasicType& c = condition->basic;
+        if (isScalarLike(*shape) && condition->isNumeric() && !isScalarLike(c)) shape = basic(shape->scalar, c.rows, c.columns, c.isMatrix);
         ExpressionType out = withVector1(numeric(*shape), *a, *b);
         out.keptMatrix = a->keptMatrix || b->keptMatrix || condition->keptMatrix;
         parts.selections.push_back({begin, question, colon, at_, *condition, *a, *b, out});

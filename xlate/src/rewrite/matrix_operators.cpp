@@ -45,7 +45,7 @@ std::string rowOf(const BasicType& type, const std::string& v, int r, const std:
 
 bool needsRowwiseOperator(const std::string& op, const BasicType& l, const BasicType& r, const BasicType& result) {
     if (!kOperatorNames.count(op) || !isFullMatrix(result) || !fits(l, result) || !fits(r, result)) return false;
-    return (op == "*" && l.isMatrix && r.isMatrix) || isIntegralMatrix(l) || isIntegralMatrix(r);
+    return isComparison(op) || (op == "*" && l.isMatrix && r.isMatrix) || isIntegralMatrix(l) || isIntegralMatrix(r);
 }
 
 MatrixHelper rowwiseOperator(const std::string& op, const BasicType& l, const BasicType& r, const BasicType& result) {
