@@ -103,6 +103,15 @@ TEST_P(HlslIntegerMatrixOperators, CompoundAssignmentsPerComponent) {
     expectPixel(*e, expected);
 }
 
+// `++` and `--` on int and uint matrices, prefix (the new value) and postfix (the old one).
+TEST_P(HlslIntegerMatrixOperators, IncrementsPerComponent) {
+    auto e = withUniforms(std::string(kMatrices) +
+                          "int2x3 g = e++; ++e; int2x3 h = --e + 10; uint2x4 v = u--; --u;"
+                          "return float4(g[0][1], e[1][2] * 100 + h[0][0], v[0][3], u[1][0]);");
+    const float expected[4] = {float(kI[1]), float((-6 + 1) * 100 + (kI[0] + 1 + 10)), float(kU[3]), float(std::uint32_t(1u - 2u))};
+    expectPixel(*e, expected);
+}
+
 // Comparisons give bool matrices, per component; `?:` with one selects per component, with
 // branches of other types (a uint scalar and an int2x3) and scalar branches (DirectXTex BC6HEncode's
 // `uint2x3 s = color >= 0 ? 0 : 1;`).

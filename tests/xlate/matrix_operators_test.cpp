@@ -47,7 +47,7 @@ TEST(MatrixOperators, SquareMatrixTimesMatrixIsNoMatrixProduct) {
 }
 
 // Every operator on int and uint matrices of each shape (glslang crashed on them with SIGSEGV, or
-// failed with "Id is 0" for the compound assignments and refused `e * e`); DirectXTex BC7Encode's
+// failed with "Id is 0" for the compound assignments and `++`/`--` and refused `e * e`); DirectXTex BC7Encode's
 // `return quantized << 2;` on a uint2x4.
 TEST(MatrixOperators, IntegerMatrixOperatorsCompile) {
     const char* const types[] = {"int2x3", "uint2x4", "int2x2", "int3x3"};
@@ -55,7 +55,7 @@ TEST(MatrixOperators, IntegerMatrixOperatorsCompile) {
     for (const char* type : types) {
         std::string body = std::string(type) + " e = (" + type + ")i;\n";
         for (const char* form : forms) body += std::string("e = ") + form + ";\n";
-        body += "e += 1; e -= i; e *= e; e /= 2; e %= 5; e &= 3; e |= 4; e ^= 1; e <<= 2; e >>= 1;\no[0] = float4(e[0].xy, e[1].xy);";
+        body += "e += 1; e -= i; e *= e; e /= 2; e %= 5; e &= 3; e |= 4; e ^= 1; e <<= 2; e >>= 1; e++; ++e; e--; --e;\no[0] = float4(e[0].xy, e[1].xy);";
         EXPECT_NE(compileCompute(std::string(type) + " f(inout " + type + " q) { q[0] <<= 3; return q << 2; }", body + " f(e);"), "") << type;
     }
 }

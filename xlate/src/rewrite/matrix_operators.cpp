@@ -78,7 +78,7 @@ MatrixHelper rowwiseAssignment(const std::string& op, const BasicType& target, c
     return {name, code + "return a; } "};
 }
 
-bool needsRowwiseNegation(const BasicType& m) {
+bool needsRowwiseUnary(const BasicType& m) {
     const std::string s = glslangScalar(m.scalar);
     return isFullMatrix(m) && (s == "int" || s == "uint");
 }
@@ -88,6 +88,14 @@ MatrixHelper rowwiseNegation(const BasicType& m) {
     std::string code = type + " " + name + "(" + type + " a) { " + type + " r; ";
     for (int i = 0; i < m.rows; ++i) code += "r[" + std::to_string(i) + "] = -a[" + std::to_string(i) + "]; ";
     return {name, code + "return r; } "};
+}
+
+MatrixHelper rowwiseIncrement(const std::string& op, bool postfix, const BasicType& m) {
+    const std::string type = glslangSpelling(m);
+    const std::string name = std::string("fxport_matrix_") + (postfix ? "post" : "pre") + (op == "++" ? "increment_" : "decrement_") + type;
+    std::string code = type + " " + name + "(inout " + type + " a) { " + (postfix ? type + " old = a; " : "");
+    for (int i = 0; i < m.rows; ++i) code += "a[" + std::to_string(i) + "] " + op.substr(1) + "= 1; ";
+    return {name, code + (postfix ? "return old; } " : "return a; } ")};
 }
 
 }  // namespace fxport::xlate

@@ -38,8 +38,11 @@ bool needsRowwiseAssignment(const std::string& op, const BasicType& target, cons
 // `T name(inout T a, V b)`: each row of a assigned its `op` with b's; a's new value returned.
 MatrixHelper rowwiseAssignment(const std::string& op, const BasicType& target, const BasicType& value);
 
-// Whether `-m` needs a helper (an int or uint matrix).
-bool needsRowwiseNegation(const BasicType& m);
+// Whether `-m`, `++m`, `m--` ... need a helper (an int or uint matrix).
+bool needsRowwiseUnary(const BasicType& m);
 MatrixHelper rowwiseNegation(const BasicType& m);
+// `T name(inout T a)`: each row of a incremented (op `++`) or decremented (`--`); a's new value
+// returned, or its old one for the postfix forms.
+MatrixHelper rowwiseIncrement(const std::string& op, bool postfix, const BasicType& m);
 
 }  // namespace fxport::xlate

@@ -136,6 +136,7 @@ public:
                 mul(f, i);
                 matrixIntrinsic(f, i);
                 compoundAssignment(f, i);
+                increment(f, i);
                 if (size_t e = expressionAfter(f, i)) operators(f, i + 1, e);
             }
         }
@@ -310,6 +311,45 @@ private:
         wrap(rowwiseAssignment(op, target->basic, value->basic), targetBegin, i, i + width, valueEnd);
     }
 
+    // The end of the assignment target that starts at token i: a name, with member selections
+    // and indexing; 0 when there is none.
+    size_t targetAfter(const FxFunction& f, size_t i) const {
+        if (i >= f.body.end || !t_[i].isIdent()) return 0;
+        size_t j = i + 1;
+        while (j < f.body.end) {
+            if (t_[j].is(".") && j + 1 < f.body.end && t_[j + 1].isIdent()) {
+                j += 2;
+            } else if (t_[j].is("[")) {
+                int depth = 0;
+                do {
+                    if (t_[j].is("[")) ++depth;
+                    else if (t_[j].is("]")) --depth;
+                    ++j;
+                } while (depth > 0 && j < f.body.end);
+                if (depth != 0) return 0;
+            } else {
+                break;
+            }
+        }
+        return j;
+    }
+
+    // `m++`, `--m` ... at i on an int or uint matrix (matrix_operators.h): a helper takes m inout.
+    void increment(const FxFunction& f, size_t i) {
+        if (!t_[i].is("++") && !t_[i].is("--")) return;
+        const size_t before = targetBefore(f, i), after = before ? 0 : targetAfter(f, i + 1);
+        const size_t begin = before ? before : i + 1, end = before ? i : after;
+        if (!end) return;
+        auto type = expressionType(syntax_, f, begin, end);
+        if (!type || !type->isNumeric() || type->keptMatrix || !needsRowwiseUnary(type->basic)) return;
+        const MatrixHelper helper = rowwiseIncrement(t_[i].text, before != 0, type->basic);
+        helpers_.emplace(helper.name, helper.code);
+        const size_t first = std::min(begin, i), last = std::max(end - 1, i);
+        opened_[first].emplace(last + 1 - first, helper.name + "(");
+        ++closed_[last];
+        edits_.push_back({t_[i].offset, t_[i].end, ""});
+    }
+
     // `helper(left, right)` in place of tokens [begin, end) whose operator is [op, opEnd).
     void wrap(const MatrixHelper& helper, size_t begin, size_t op, size_t opEnd, size_t end) {
         if (!wrapped_.insert({begin, end}).second) return;
@@ -321,7 +361,7 @@ private:
 
     // `-m` of an int or uint matrix (matrix_operators.h).
     void negate(const Negation& n) {
-        if (n.operand.keptMatrix || !needsRowwiseNegation(n.operand.basic) || !wrapped_.insert({n.minus, n.end}).second) return;
+        if (n.operand.keptMatrix || !needsRowwiseUnary(n.operand.basic) || !wrapped_.insert({n.minus, n.end}).second) return;
         const MatrixHelper helper = rowwiseNegation(n.operand.basic);
         helpers_.emplace(helper.name, helper.code);
         opened_[n.minus + 1].emplace(n.end - n.minus - 1, helper.name + "(");
