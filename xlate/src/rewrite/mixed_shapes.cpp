@@ -250,7 +250,7 @@ private:
     // The end of the expression that follows token i when i is `return` or an assignment's
     // (compound or not) or initializer's `=`: the `;` or `,` that ends it; 0 when i starts none.
     size_t expressionAfter(const FxFunction& f, size_t i) const {
-        if (!t_[i].is("return") && !t_[i].is("=") && compoundWidth(i) == 0) return 0;
+        if (!t_[i].is("return") && !t_[i].is("=") && compoundWidth(i) != 1) return 0;  // `<<=` is read at its `=`
         if (t_[i].is("=") && i > 0 && adjacent(i - 1) && (t_[i - 1].is("<") || t_[i - 1].is(">")) &&
             !(i > 1 && adjacent(i - 2) && t_[i - 2].is(t_[i - 1].text)))
             return 0;  // `<=`, `>=`; `<<=`, `>>=` are assignments
@@ -393,9 +393,8 @@ private:
 
     // Binary operations between matrices of different shapes in tokens [b, e): fxc computes them
     // in the smaller rows and columns (float1x4 + float4x4 adds the first row); glslang refuses
-    // them ("Could not perform requested binary operation").
-    // Operations on matrices glslang computes otherwise than fxc (matrix_operators.h) become
-    // helpers too.
+    // them ("Could not perform requested binary operation"). Operations on matrices glslang
+    // computes otherwise than fxc (matrix_operators.h) become helpers too.
     void operators(const FxFunction& f, size_t b, size_t e) {
         ExpressionParts parts;
         if (!expressionType(syntax_, f, b, e, &parts)) return;
