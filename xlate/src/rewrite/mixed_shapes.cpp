@@ -138,6 +138,7 @@ public:
                 compoundAssignment(f, i);
                 increment(f, i);
                 if (size_t e = expressionAfter(f, i)) operators(f, i + 1, e);
+                statementExpressions(f, i);
             }
         }
         insertConversions();
@@ -261,6 +262,17 @@ private:
             else if (depth == 0 && (t_[j].is(";") || t_[j].is(","))) return j > i + 1 ? j : 0;
         }
         return 0;
+    }
+
+    // Expressions that are neither assigned nor returned: the condition of an `if`, `while` or
+    // `switch`, and each argument of a call made as a statement (`f(e << 2);`, whose void result
+    // has no type).
+    void statementExpressions(const FxFunction& f, size_t i) {
+        if (i == 0 || !t_[i].isIdent() || !t_[i + 1].is("(")) return;
+        const bool condition = t_[i].is("if") || t_[i].is("while") || t_[i].is("switch");
+        const bool call = t_[i - 1].is(";") || t_[i - 1].is("{") || t_[i - 1].is("}") || t_[i - 1].is("else");
+        if (!condition && (!call || syntax_.findStruct(t_[i].text))) return;
+        for (const auto& [b, e] : callArgumentSpans(t_, i + 1, f.body.end)) operators(f, b, e);
     }
 
     // Whether token i ends where token i + 1 starts.
