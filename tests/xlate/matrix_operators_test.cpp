@@ -72,11 +72,12 @@ TEST(MatrixOperators, MatrixComparisonsCompile) {
               "");
 }
 
-// Operators on matrices in an `if` or `while` condition and in the arguments of a call made as a
-// statement are spelled out too (glslang crashed on them there as well).
+// Operators on matrices in an `if` or `while` condition, in the arguments of a call made as a
+// statement and in a `for` header's step are spelled out too (glslang crashed on them there as well).
 TEST(MatrixOperators, OperatorsInConditionsAndCallStatementsCompile) {
     EXPECT_NE(compileCompute("static int2x3 kept; void put(int2x3 v) { kept = v; }",
                              "int2x3 e = (int2x3)i; float2x2 m = (float2x2)i;\n"
-                             "if (any(m > 1)) o[0] = 1;\nelse put(e << 2);\nwhile (all(e == 3)) { put(-e); e += 1; }\no[0] = kept[0].xyzz;"),
+                             "if (any(m > 1)) o[0] = 1;\nelse put(e << 2);\nwhile (all(e == 3)) { put(-e); e += 1; }\n"
+                             "for (int k = 0; k < 2; e = e << 1) ++k;\no[0] = kept[0].xyzz;"),
               "");
 }

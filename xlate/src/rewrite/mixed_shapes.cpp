@@ -249,7 +249,8 @@ private:
     }
 
     // The end of the expression that follows token i when i is `return` or an assignment's
-    // (compound or not) or initializer's `=`: the `;` or `,` that ends it; 0 when i starts none.
+    // (compound or not) or initializer's `=`: the `;` or `,` that ends it, or the `)` around it (a
+    // `for` header's step, `(x = a * b)`); 0 when i starts none.
     size_t expressionAfter(const FxFunction& f, size_t i) const {
         if (!t_[i].is("return") && !t_[i].is("=") && compoundWidth(i) != 1) return 0;  // `<<=` is read at its `=`
         if (t_[i].is("=") && i > 0 && adjacent(i - 1) && (t_[i - 1].is("<") || t_[i - 1].is(">")) &&
@@ -258,7 +259,7 @@ private:
         int depth = 0;
         for (size_t j = i + 1; j < f.body.end; ++j) {
             if (t_[j].is("(") || t_[j].is("[") || t_[j].is("{")) ++depth;
-            else if ((t_[j].is(")") || t_[j].is("]") || t_[j].is("}")) && --depth < 0) return 0;
+            else if ((t_[j].is(")") || t_[j].is("]") || t_[j].is("}")) && --depth < 0) return t_[j].is(")") && j > i + 1 ? j : 0;
             else if (depth == 0 && (t_[j].is(";") || t_[j].is(","))) return j > i + 1 ? j : 0;
         }
         return 0;
