@@ -178,6 +178,81 @@ TEST(D3D11DepthTexture, D32FloatDepthBufferTests) {
         EXPECT_EQ(pixels[x][0], planeDepth(x) < 0.1f ? 255 : 0) << "pixel " << x << " (depth " << planeDepth(x) << ")";
 }
 
+// A triangle at depth 0.1 that outputs the depth texture's own texel, drawn through a
+// read-only view of that texture (deferred lighting reads the G-buffer depth this way).
+const char* const kReadOnlyPass = R"(
+Texture2D<float> Depth : register(t0);
+float4 vs(uint id : SV_VertexID) : SV_Position {
+    float2 corner = float2((id << 1) & 2, id & 2);
+    return float4(corner * float2(2, -2) + float2(-1, 1), 0.1, 1);
+}
+float4 ps(float4 pos : SV_Position) : SV_Target { return float4(Depth.Load(int3(pos.xy, 0)), 1, 0, 1); }
+)";
+
+// D3D11_DSV_READ_ONLY_DEPTH: the depth test still runs against the texture, nothing is written to
+// it although the state enables depth writes, and a shader samples the texture meanwhile.
+TEST(D3D11DepthTexture, ReadOnlyDepthViewTestsWithoutWritingWhileSampled) {
+    Device d;
+    ComPtr<ID3D11Texture2D> shadow = makeTarget(d, DXGI_FORMAT_R24G8_TYPELESS, D3D11_BIND_DEPTH_STENCIL | D3D11_BIND_SHADER_RESOURCE);
+    ComPtr<ID3D11Texture2D> result = makeTarget(d, DXGI_FORMAT_R32G32B32A32_FLOAT, D3D11_BIND_RENDER_TARGET);
+    ASSERT_TRUE(shadow && result);
+    D3D11_DEPTH_STENCIL_VIEW_DESC dsvDesc;
+    dsvDesc.Format = DXGI_FORMAT_D24_UNORM_S8_UINT;
+    dsvDesc.ViewDimension = D3D11_DSV_DIMENSION_TEXTURE2D;
+    ComPtr<ID3D11DepthStencilView> writable, readOnly;
+    ASSERT_EQ(d.device->CreateDepthStencilView(shadow.Get(), &dsvDesc, writable.GetAddressOf()), S_OK) << lastError();
+    dsvDesc.Flags = D3D11_DSV_READ_ONLY_DEPTH | D3D11_DSV_READ_ONLY_STENCIL;
+    ASSERT_EQ(d.device->CreateDepthStencilView(shadow.Get(), &dsvDesc, readOnly.GetAddressOf()), S_OK) << lastError();
+    D3D11_DEPTH_STENCIL_VIEW_DESC got;
+    readOnly->GetDesc(&got);
+    EXPECT_EQ(got.Flags, UINT(D3D11_DSV_READ_ONLY_DEPTH | D3D11_DSV_READ_ONLY_STENCIL));
+    D3D11_SHADER_RESOURCE_VIEW_DESC srvDesc;
+    srvDesc.Format = DXGI_FORMAT_R24_UNORM_X8_TYPELESS;
+    srvDesc.ViewDimension = D3D11_SRV_DIMENSION_TEXTURE2D;
+    srvDesc.Texture2D.MipLevels = 1;
+    ComPtr<ID3D11ShaderResourceView> srv;
+    ASSERT_EQ(d.device->CreateShaderResourceView(shadow.Get(), &srvDesc, srv.GetAddressOf()), S_OK) << lastError();
+    ComPtr<ID3D11RenderTargetView> rtv;
+    ASSERT_EQ(d.device->CreateRenderTargetView(result.Get(), nullptr, rtv.GetAddressOf()), S_OK) << lastError();
+
+    D3D11_VIEWPORT viewport;
+    viewport.Width = viewport.Height = float(kSize);
+    d.context->RSSetViewports(1, &viewport);
+    d.context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+    Shaders depthPass(d, kDepthPass), readOnlyPass(d, kReadOnlyPass);
+    d.context->ClearDepthStencilView(writable.Get(), D3D11_CLEAR_DEPTH, 1.0f, 0);
+    d.context->OMSetRenderTargets(1, rtv.GetAddressOfConst(), writable.Get());
+    depthPass.set(d);
+    d.context->Draw(3, 0);  // the plane, 0.25 * u
+    const float black[4] = {0, 0, 0, 0};
+    d.context->ClearRenderTargetView(rtv.Get(), black);
+    d.context->OMSetRenderTargets(1, rtv.GetAddressOfConst(), readOnly.Get());  // default state: LESS, writes enabled
+    readOnlyPass.set(d);
+    d.context->PSSetShaderResources(0, 1, srv.GetAddressOfConst());
+    d.context->Draw(3, 0);
+    ASSERT_EQ(lastError(), "");
+    const std::vector<std::array<float, 4>> texels = readTexels<std::array<float, 4>>(d, result.Get());
+    ASSERT_GE(texels.size(), size_t(kSize));
+    for (UINT x = 0; x < kSize; ++x) {
+        const bool passes = 0.1f < planeDepth(x);
+        EXPECT_NEAR(texels[x][0], passes ? planeDepth(x) : 0.0f, 1.0f / 16777215.0f) << "pixel " << x;
+        EXPECT_EQ(texels[x][1], passes ? 1.0f : 0.0f) << "pixel " << x;
+    }
+    // The texture still holds the plane: read without a depth view, every pixel drawn.
+    d.context->OMSetRenderTargets(1, rtv.GetAddressOfConst(), nullptr);
+    d.context->Draw(3, 0);
+    const std::vector<std::array<float, 4>> after = readTexels<std::array<float, 4>>(d, result.Get());
+    ASSERT_GE(after.size(), size_t(kSize));
+    for (UINT x = 0; x < kSize; ++x) EXPECT_NEAR(after[x][0], planeDepth(x), 1.0f / 16777215.0f) << "depth texel " << x << " after the draw";
+    // Read-only stencil needs a format with stencil.
+    shadow = makeTarget(d, DXGI_FORMAT_R32_TYPELESS, D3D11_BIND_DEPTH_STENCIL | D3D11_BIND_SHADER_RESOURCE);
+    dsvDesc.Format = DXGI_FORMAT_D32_FLOAT;
+    EXPECT_EQ(d.device->CreateDepthStencilView(shadow.Get(), &dsvDesc, readOnly.ReleaseAndGetAddressOf()), E_INVALIDARG);
+    EXPECT_NE(lastError().find("Flags = 3 for a DXGI_FORMAT_D32_FLOAT view"), std::string::npos) << lastError();
+    dsvDesc.Flags = D3D11_DSV_READ_ONLY_DEPTH;
+    EXPECT_EQ(d.device->CreateDepthStencilView(shadow.Get(), &dsvDesc, readOnly.ReleaseAndGetAddressOf()), S_OK) << lastError();
+}
+
 TEST(D3D11DepthTexture, RefusedDescriptionsNameTheField) {
     Device d;
     D3D11_TEXTURE2D_DESC desc;

@@ -58,6 +58,26 @@ TEST_P(HlslAcceptedForms, ArraySizesFromConstantExpressions) {
         expectPixel("static const int size = 2; Texture2DMS<float4, size - 1> t;", "return A;", {1, 2, 3, 4}, {1, 2, 3, 4});
 }
 
+// A local constant sizes arrays only in its own block: two functions each with `const int n`
+// (Intel ASSAO's vaSimpleShadowMap.hlsl: 6 and 14 samples), an inner block's n hiding the
+// function's, and a global n hidden by neither outside them. Each array's flat list fills it in order.
+TEST_P(HlslAcceptedForms, LocalConstantSizesInTheirOwnScope) {
+    const std::string functions =
+        "static const int n = 2;\n"
+        "float2 a() { const int n = 3; const float2 o[n] = {1, 2, 3, 4, 5, 6}; return o[n - 1]; }\n"
+        "float2 b() { const int n = 4; const float2 o[n] = {1, 2, 3, 4, 5, 6, 7, 8}; float2 s = o[n - 1];\n"
+        "  { const int n = 1; const float2 p[n] = {10, 20}; s += p[0]; } const float q[n] = {1, 2, 3, 4}; return s + q[n - 1]; }\n"
+        "float2 c() { const float2 o[n] = {9, 8, 7, 6}; return o[n - 1]; }\n";
+    // a(): o[2] = (5, 6); b(): o[3] + p[0] + q[3] = (7 + 10 + 4, 8 + 20 + 4); c(): o[1] = (7, 6).
+    expectPixel(functions, "return float4(a().x, b(), c().x) + A;", {5, 21, 32, 7});
+}
+
+// A uniform array sized by its initializer (NVIDIA SoftShadows' Poisson.fxh): three elements whose
+// defaults are the listed values, read back by the shader.
+TEST_P(HlslAcceptedForms, UniformArraySizedByItsInitializer) {
+    expectPixel("float2 P[] = { {1, 2}, {3, 4}, {5, 6} }; float Q[] = {7, 8};", "return float4(P[0] + P[2], P[1].y, Q[1]) + A;", {6, 8, 4, 8});
+}
+
 // Brace initializers that name variables: each variable gives its components in fxc's order
 // (xlate/src/rewrite/initializer_lists.cpp with aggregate_components.h).
 TEST_P(HlslAcceptedForms, BraceInitializersNamingVariables) {
@@ -78,6 +98,19 @@ TEST_P(HlslAcceptedForms, ComponentwiseCastsAndConstructors) {
                 {0, 0.5f, 0, 0});
     expectPixel("", "float4x1 mat = {91, 92, 93, 94}; int arr[3]; arr = (int[3]) mat; return float4(arr, A.x);", {91, 92, 93, 2}, {2, 0, 0, 0});
     expectPixel("", "float arr[4] = {61, 62, 63, 64}; int2x2 mat; mat = (int2x2) arr; return float4(mat) + A;", {62, 63, 64, 65}, {1, 1, 1, 1});
+}
+
+// A struct becomes another struct type whose members match one for one (xlate/src/rewrite/
+// aggregate_conversions.cpp): returned as the other type, initializing one, passed to a parameter of
+// it, cast to it in an expression (a cast converts: the int2 member truncates), and an
+// array becoming a struct. Xbox-ATG-Samples' SimpleTexturePC vertex shader returns its input so.
+TEST_P(HlslAcceptedForms, StructsConvertComponentwise) {
+    const std::string structs = "struct P { float2 a; float b; }; struct Q { float2 c; float d; }; struct I { int2 e; float f; };"
+                                "Q asQ(P p) { return p; } float sum(Q q) { return q.c.x + q.c.y + q.d; }";
+    expectPixel(structs, "P p; p.a = A.xy; p.b = A.z; Q q = asQ(p); Q r = p; return float4(q.c, r.d, sum(p));",
+                {1.5f, -2, 4, 3.5f}, {1.5f, -2, 4, 0});
+    expectPixel(structs, "float4 v = A; float w[3] = {A.w, A.z, A.y}; Q q = w; return float4(((I)v).e, ((I)v).f, q.d);",
+                {2, -3, 4.25f, -3.5f}, {2.75f, -3.5f, 4.25f, 1});
 }
 
 // Casts on the left of '=' that keep part of the target (xlate/src/rewrite/lvalue_casts.cpp): a matrix

@@ -150,6 +150,19 @@ TEST(ConstantsFidelity, TwoCbuffersOfOneName) {
     EXPECT_NE(m1, m2);
 }
 
+// Before SM 5.1 fxc takes a cbuffer's slot as register(c#) as well as b# (AMD's ShadowFX ships
+// fxc's output of `cbuffer CB : register(c0)`); other letters stay refused.
+TEST(ConstantsFidelity, CbufferSlotMayBeWrittenAsAConstantRegister) {
+    const std::string source = "cbuffer cb : register(c2) { float4 m1; };\nfloat4 PS() : SV_Target { return m1; }\n" + std::string(kTechnique);
+    EXPECT_EQ(firstError(source), "");
+    CompiledEffect e = compileEffectSource(source, "virtual/CbufferC.fx", uncached());
+    bool found = false;
+    for (const auto& r : e.resources)
+        if (r.kind == ResourceDeclaration::Kind::ConstantBuffer && r.name == "cb") found = r.explicitRegister == 2;
+    EXPECT_TRUE(found);
+    EXPECT_NE(firstError("cbuffer cb : register(t2) { float4 m1; };\nfloat4 PS() : SV_Target { return m1; }\n" + std::string(kTechnique)), "");
+}
+
 // Annotations belong to globals: a local's are refused at their '<'.
 TEST(ConstantsFidelity, LocalVariableAnnotationsAreRefused) {
     std::string error = firstError("float4 PS() : SV_Target\n{\n    float var < int a = 1; > = 0;\n    return var;\n}\n" + std::string(kTechnique));

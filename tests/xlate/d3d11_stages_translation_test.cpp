@@ -321,3 +321,26 @@ void main(InputPatch<data, 3> input) { }
     const std::string& glsl = e.shaders[0].glsl;
     EXPECT_NE(glsl.find("gl_out[gl_InvocationID].gl_Position"), std::string::npos) << glsl;
 }
+
+// [earlydepthstencil] reaches the GL program (the depth test before the shader: a hidden fragment
+// writes no UAV), and SM5's conservative depth outputs are the fragment's depth. Attribute names
+// keep their case, as fxc matches them (vkd3d's numthreads refuses [NumThreads(1, 1, 1)] below SM6).
+TEST(D3D11Stages, EarlyDepthStencilAndConservativeDepth) {
+    CompiledEffect ps = compileLoose("RWTexture2D<float4> U : register(u1);\n[earlydepthstencil]\n"
+                                     "float4 main(float4 p : SV_Position) : SV_Target { U[uint2(p.xy)] = 1; return p; }\n",
+                                     "ps_5_0");
+    ASSERT_EQ(ps.shaders.size(), 1u);
+    EXPECT_NE(ps.shaders[0].glsl.find("early_fragment_tests"), std::string::npos) << ps.shaders[0].glsl;
+    CompiledEffect plain = compileLoose("float4 main(float4 p : SV_Position) : SV_Target { return p; }\n", "ps_5_0");
+    EXPECT_EQ(plain.shaders.at(0).glsl.find("early_fragment_tests"), std::string::npos);
+    for (const char* semantic : {"SV_DepthLessEqual", "SV_DepthGreaterEqual"}) {
+        CompiledEffect depth = compileLoose(std::string("struct O { float4 c : SV_Target0; float d : ") + semantic +
+                                                "; };\nO main(float4 p : SV_Position) { O o; o.c = 1; o.d = p.z * 0.5; return o; }\n",
+                                            "ps_5_0");
+        ASSERT_EQ(depth.shaders.size(), 1u) << semantic;
+        EXPECT_NE(depth.shaders[0].glsl.find("gl_FragDepth"), std::string::npos) << semantic << "\n" << depth.shaders[0].glsl;
+    }
+    EXPECT_NE(firstError("RWTexture2D<float4> U;\n[NumThreads(8, 8, 1)]\nvoid main(uint3 t : SV_DispatchThreadID) { U[t.xy] = 1; }\n"
+                         "technique11 T { pass P { SetComputeShader(CompileShader(cs_5_0, main())); } }\n"),
+              "");
+}

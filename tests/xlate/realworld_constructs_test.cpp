@@ -345,6 +345,24 @@ TEST(ImplicitConversions, VectorToScalarTruncationAndPromotionTranslateWithFxcWa
     expectAllPassesLink(e);
 }
 
+// fxc warns X3206 where an initialization truncates too (`float2 uv = input.TexCoord4;`), at the
+// variable; a swizzle of as many components, or a wider target, is no truncation.
+TEST(ImplicitConversions, TruncatingInitializationsGetFxcWarning) {
+    CompiledEffect e = compileEffectSource("struct VSIn { float4 TexCoord4 : TEXCOORD0; float3 n : NORMAL; };\nfloat4 Tint;\n"
+                                           "float4 PS(VSIn input) : COLOR0 {\n    float2 uv = input.TexCoord4;\n    float s = Tint, k = 2;\n"
+                                           "    float4 wide = input.n.xyzz; float2 fine = input.TexCoord4.xy;\n"
+                                           "    return float4(uv, s, wide.x + fine.x + k);\n}\n"
+                                           "technique T { pass P { PixelShader = compile ps_3_0 PS(); } }\n",
+                                           "virtual/Truncation.fx", noCache());
+    std::vector<std::pair<int, std::string>> warnings;
+    for (const auto& d : e.diagnostics)
+        if (d.id == diag::kImplicitConversion) warnings.push_back({d.location.line, d.message});
+    using W = std::vector<std::pair<int, std::string>>;
+    EXPECT_EQ(warnings, (W{{4, "implicit truncation of vector type (fxc X3206): 'uv' is float2, initialised from float4; its first components are used"},
+                           {5, "implicit truncation of vector type (fxc X3206): 's' is float, initialised from float4; its first component is used"}}));
+    expectAllPassesLink(e);
+}
+
 TEST(ImplicitConversions, CallsThatResolvedBeforeAreUntouchedAndRealErrorsStay) {
     // An overload the effect declares itself is chosen, not a generated one: no warning.
     CompiledEffect e = compileEffectSource("float f(float x) { return x; }\nfloat f(float4 x) { return x.w; }\n"

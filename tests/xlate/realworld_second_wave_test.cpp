@@ -78,6 +78,25 @@ CompiledEffect compileFixture(const std::string& file, CompileOptions options = 
 }  // namespace
 
 // ---- 1. declarations fxc accepts ------------------------------------------------------------------
+// NVIDIA HBAO+'s ConstantBuffers.hlsl: `#define REGISTER(SLOT) : register(##SLOT##)` pastes a
+// parenthesis with the argument, which fxc's preprocessor leaves side by side (glslang's refused
+// the paste), and `PAD_FLOAT;` with an empty PAD_FLOAT is an empty declaration in the cbuffer
+// (glslang refused the lone ';'). The cbuffer lands in slot b3 and keeps both members.
+TEST(Declarations, ImpossiblePastesAndEmptyCbufferDeclarations) {
+    CompiledEffect e = compileEffectSource("#define REGISTER(SLOT) : register(##SLOT##)\n#define PAD_FLOAT\n"
+                                           "#define DECLARE_CONSTANT(TYPE, VARIABLE) TYPE g_##VARIABLE\n"
+                                           "cbuffer Global REGISTER(b3)\n{\n    DECLARE_CONSTANT(float4, Color);\n    PAD_FLOAT;\n    float Scale;\n};\n"
+                                           "float4 PS() : SV_Target { return g_Color * Scale; }\n"
+                                           "technique10 T { pass P { SetPixelShader(CompileShader(ps_4_0, PS())); } }\n",
+                                           "virtual/Hbao.fx", noCache());
+    EXPECT_EQ(param(e, "g_Color").offset, 0);
+    EXPECT_EQ(param(e, "Scale").offset, 16);
+    bool slot = false;
+    for (const auto& r : e.resources) slot = slot || (r.name == "Global" && r.explicitRegister == 3);
+    EXPECT_TRUE(slot);
+    expectAllPassesLink(e);
+}
+
 
 TEST(Declarations, SeveralTexturesAndSamplersInOneStatement) {
     CompiledEffect e = compileFixture("declarations/SeveralDeclarators.fx");

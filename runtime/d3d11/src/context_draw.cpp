@@ -201,6 +201,10 @@ bool Context::prepare(const char* call) {
             bindStorage(call, *stages[stage], *slots[stage], stage == 1 ? &psUavs_ : nullptr);  // stage 1: the pixel shader
         }
     }
+    // A read-only depth-stencil view writes no depth (or stencil) whatever the state or the
+    // effect pass says, so a shader may sample the texture while it is bound.
+    if (depthView_ && (depthView_->desc.Flags & D3D11_DSV_READ_ONLY_DEPTH)) core.DepthStencilState.DepthBufferWriteEnable = false;
+    if (depthView_ && (depthView_->desc.Flags & D3D11_DSV_READ_ONLY_STENCIL)) core.DepthStencilState.StencilWriteMask = 0;
     return true;
 }
 

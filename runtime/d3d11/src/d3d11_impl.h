@@ -305,6 +305,9 @@ const DepthFamily* depthFamilyOfView(DXGI_FORMAT depthView);   // the family who
 // A view's Format for texture `t`: its own (or UNKNOWN), or the typeless depth family's view of
 // that kind; E_NOTIMPL/E_INVALIDARG naming `desc`.Format otherwise.
 HRESULT checkViewFormat(const char* call, const char* desc, DXGI_FORMAT viewFormat, const Texture& t, bool depthView);
+// D3D11_DEPTH_STENCIL_VIEW_DESC.Flags for a view of `viewFormat`: read-only depth, and read-only
+// stencil where the format has stencil; E_INVALIDARG naming the field (`at` ends with "DESC.").
+HRESULT checkDepthViewFlags(const std::string& at, UINT flags, DXGI_FORMAT viewFormat);
 // CreateTexture2D's checks of a multisampled description (resources_multisample.cpp).
 HRESULT checkMultisampleDesc(const D3D11_TEXTURE2D_DESC& d, bool hasData);
 // CreateTexture2D's usage rules (resources.cpp) and its full mip chain.

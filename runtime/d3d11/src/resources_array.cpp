@@ -214,8 +214,8 @@ HRESULT arrayDepthStencilView(Device* device, Texture* t, const D3D11_DEPTH_STEN
             return fail(pDesc->ViewDimension == D3D11_DSV_DIMENSION_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
                         at + "ViewDimension = " + std::to_string(pDesc->ViewDimension) + " (fxport views an array texture as D3D11_DSV_DIMENSION_TEXTURE2DARRAY)");
         if (HRESULT f = checkViewFormat(call.c_str(), "D3D11_DEPTH_STENCIL_VIEW_DESC", pDesc->Format, *t, true); FAILED(f)) return f;
-        if (pDesc->Flags != 0)
-            return fail(E_NOTIMPL, at + "Flags = " + std::to_string(pDesc->Flags) + ": read-only depth views are not supported yet");
+        if (HRESULT f = checkDepthViewFlags(at, pDesc->Flags, pDesc->Format != DXGI_FORMAT_UNKNOWN ? pDesc->Format : t->desc.Format); FAILED(f))
+            return f;
         d = *pDesc;
         if (d.Format == DXGI_FORMAT_UNKNOWN) d.Format = t->desc.Format;
     }

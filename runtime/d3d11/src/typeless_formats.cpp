@@ -44,4 +44,12 @@ HRESULT checkViewFormat(const char* call, const char* desc, DXGI_FORMAT viewForm
                                   " texture (its " + (depthView ? "depth-stencil" : "shader-resource") + " view is " + formatName(wanted) + ")");
 }
 
+HRESULT checkDepthViewFlags(const std::string& at, UINT flags, DXGI_FORMAT viewFormat) {
+    const bool stencil = viewFormat == DXGI_FORMAT_D24_UNORM_S8_UINT;  // the one stencil format fxport has
+    if ((flags & ~UINT(D3D11_DSV_READ_ONLY_DEPTH | D3D11_DSV_READ_ONLY_STENCIL)) != 0 || ((flags & D3D11_DSV_READ_ONLY_STENCIL) && !stencil))
+        return fail(E_INVALIDARG, at + "Flags = " + std::to_string(flags) + " for a " + formatName(viewFormat) + " view (D3D11_DSV_READ_ONLY_DEPTH" +
+                                      (stencil ? " | D3D11_DSV_READ_ONLY_STENCIL" : ", the format has no stencil") + ")");
+    return S_OK;
+}
+
 }  // namespace fxport::d3d11

@@ -230,9 +230,9 @@ HRESULT Device::CreateDepthStencilView(ID3D11Resource* pResource, const D3D11_DE
             return fail(pDesc->ViewDimension == D3D11_DSV_DIMENSION_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
                         std::string(call) + ": D3D11_DEPTH_STENCIL_VIEW_DESC.ViewDimension = " + std::to_string(pDesc->ViewDimension));
         if (HRESULT f = checkViewFormat(call, "D3D11_DEPTH_STENCIL_VIEW_DESC", pDesc->Format, *t, true); FAILED(f)) return f;
-        if (pDesc->Flags != 0)
-            return fail(E_NOTIMPL, std::string(call) + ": D3D11_DEPTH_STENCIL_VIEW_DESC.Flags = " + std::to_string(pDesc->Flags) +
-                                       ": read-only depth views are not supported yet");
+        const DXGI_FORMAT viewed = pDesc->Format != DXGI_FORMAT_UNKNOWN ? pDesc->Format : t->desc.Format;
+        if (HRESULT f = checkDepthViewFlags(std::string(call) + ": D3D11_DEPTH_STENCIL_VIEW_DESC.", pDesc->Flags, viewed); FAILED(f)) return f;
+        d.Flags = pDesc->Flags;
         if (pDesc->Texture2D.MipSlice != 0)
             return fail(E_INVALIDARG, std::string(call) + ": D3D11_DEPTH_STENCIL_VIEW_DESC.Texture2D.MipSlice = " +
                                           std::to_string(pDesc->Texture2D.MipSlice) + " (the texture has 1 level)");

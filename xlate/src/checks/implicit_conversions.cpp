@@ -87,8 +87,38 @@ const char* typeName(const BasicType& b, std::string& buffer) {
 
 }  // namespace
 
+namespace {
+
+// `T name = value;` in a body, T a vector or scalar and value wider (`float2 uv = input.TexCoord4;`):
+// fxc warns X3206 and uses the first components, as glslang does silently.
+void findTruncatingInitializations(const EffectSyntax& syntax, const SourceMap& map, const FxFunction& f, std::vector<Diagnostic>& out) {
+    const auto& t = syntax.tokens;
+    for (size_t i = f.body.begin; i + 3 < f.body.end; ++i) {
+        if (!t[i].isIdent() || !t[i + 1].isIdent() || !t[i + 2].is("=") || (i > f.body.begin && t[i - 1].is("."))) continue;
+        auto want = vectorOrScalar(syntax, t[i].text);
+        if (!want) continue;
+        size_t end = i + 3;
+        for (int depth = 0; end < f.body.end; ++end) {
+            if (t[end].is("(") || t[end].is("[") || t[end].is("{")) ++depth;
+            else if (t[end].is(")") || t[end].is("]") || t[end].is("}")) --depth;
+            else if (depth == 0 && (t[end].is(";") || t[end].is(","))) break;
+        }
+        if (end == i + 3 || end >= f.body.end) continue;
+        auto have = typeOfArgument(syntax, f, {i + 3, end});
+        if (!have || have->columns <= want->columns) continue;
+        std::string h, w;
+        out.push_back(map.make(Severity::Warning, diag::kImplicitConversion,
+                               std::string(kTruncationWarning) + ": '" + t[i + 1].text + "' is " + typeName(*want, w) + ", initialised from " +
+                                   typeName(*have, h) + (want->columns == 1 ? "; its first component is used" : "; its first components are used"),
+                               t[i + 1].line, t[i + 1].column, t[i + 1].text));
+    }
+}
+
+}  // namespace
+
 std::vector<Diagnostic> findImplicitTruncations(const EffectSyntax& syntax, const SourceMap& map) {
     std::vector<Diagnostic> out;
+    for (const auto& f : syntax.functions) findTruncatingInitializations(syntax, map, f, out);
     const auto& t = syntax.tokens;
     std::map<std::string, int> overloads;
     for (const auto& f : syntax.functions) ++overloads[f.name];

@@ -131,7 +131,9 @@ private:
         bool bare = s.size() == 1 && !indexed;
         if (kind == Kind::Sampler && (letter != 's' && letter != 't' ? true : !(digitFollows || indexed)))
             report("register(" + s + ") is not a sampler register: a sampler requires an 's' or 't' register (fxc X3530)", r.regToken);
-        else if (kind == Kind::Buffer && (letter != 'b' || !digitFollows || s.find_first_not_of("0123456789", 1) != std::string::npos))
+        // Before SM 5.1 fxc takes a constant buffer's slot as c# too (the D3D12 HLSL docs: "in
+        // previous versions it could be c or b"); AMD's ShadowFX ships fxc 6.3's output of one.
+        else if (kind == Kind::Buffer && ((letter != 'b' && letter != 'c') || !digitFollows || s.find_first_not_of("0123456789", 1) != std::string::npos))
             report("register(" + s + ") is not a constant buffer register like b0 (fxc X3530)", r.regToken);
         else if (kind == Kind::Number && !digitFollows && !indexed && !bare && anyEntryBelow4())
             report("register(" + s + ") is not a register name (a letter and its index, like c4) (fxc X3530)", r.regToken);

@@ -53,13 +53,14 @@
 #include "glsl/spirv_to_glsl.h"
 #include "entry/patch_constant_wrapper.h"
 #include "entry/stage_attributes.h"
+#include "rewrite/numthreads_sizes.h"
 #include "fx/text_util.h"
 
 namespace fs = std::filesystem;
 
 namespace fxport::xlate {
 
-const char* compilerVersion() { return "fxport-xlate-20"; }  // 3: asm { } blocks translate; 4: compute, hull, domain; 5: D3D resource registers; 6: one-row/one-column matrices as vectors, lhs and componentwise casts, scalar intrinsics; 7: mixed shapes, fxc signature layout, geometry entries, struct inheritance, more fxc rejections; 8: D3D integer fix-ups, out-argument wrappers, clip-distance packing, serialised varyings, typed buffers, constant-expression sizes, component-wise casts; 9: cbuffers at D3D offsets (packoffset, register(cN), register arrays); 10: D3D9 fixed-function variants, tight structured buffers, sampler-array elements, integer matrices, fetch offsets, negated comparisons, pow2 partitioning and ProcessTessFactors, split-array semantics; 11: live SM1-3 constant ranges, zero-initialised statics, fxc string escapes, nested struct reflection; 12: objects in cbuffers moved out, constant-array sizes, SV_Coverage input, struct-parameter interpolation modifiers; 13: ByteAddressBuffer sizes in bytes, packed GS clip/cull inputs, per-sample input evaluation, no fxport_Internal block; 14: fxc's overload choices, Interlocked float values, vector-to-array casts, statics in cbuffers, VS without position, sampler states from parameters, keyword spellings; 15: fxc's t#/s# registers and array elements in sampler bindings; 16: int literal folding as fxc, half-only overloads, SM2-3 lvalue casts with swizzles; 17: stream-output declarations (ConstructGSWithSO), SetPixelShader(NULL); 18: SM1-3 sampler registers (combined samplers), D3D9 pass texture stages for HLSL pixel shaders; 19: pass texture stages kept for later passes; 20: one-row/one-column matrix uniforms in register arrays
+const char* compilerVersion() { return "fxport-xlate-25"; }  // 3: asm { } blocks translate; 4: compute, hull, domain; 5: D3D resource registers; 6: one-row/one-column matrices as vectors, lhs and componentwise casts, scalar intrinsics; 7: mixed shapes, fxc signature layout, geometry entries, struct inheritance, more fxc rejections; 8: D3D integer fix-ups, out-argument wrappers, clip-distance packing, serialised varyings, typed buffers, constant-expression sizes, component-wise casts; 9: cbuffers at D3D offsets (packoffset, register(cN), register arrays); 10: D3D9 fixed-function variants, tight structured buffers, sampler-array elements, integer matrices, fetch offsets, negated comparisons, pow2 partitioning and ProcessTessFactors, split-array semantics; 11: live SM1-3 constant ranges, zero-initialised statics, fxc string escapes, nested struct reflection; 12: objects in cbuffers moved out, constant-array sizes, SV_Coverage input, struct-parameter interpolation modifiers; 13: ByteAddressBuffer sizes in bytes, packed GS clip/cull inputs, per-sample input evaluation, no fxport_Internal block; 14: fxc's overload choices, Interlocked float values, vector-to-array casts, statics in cbuffers, VS without position, sampler states from parameters, keyword spellings; 15: fxc's t#/s# registers and array elements in sampler bindings; 16: int literal folding as fxc, half-only overloads, SM2-3 lvalue casts with swizzles; 17: stream-output declarations (ConstructGSWithSO), SetPixelShader(NULL); 18: SM1-3 sampler registers (combined samplers), D3D9 pass texture stages for HLSL pixel shaders; 19: pass texture stages kept for later passes; 20: one-row/one-column matrix uniforms in register arrays; 21: DX9 1D sampling on one-row 2D textures; 22: GatherCmpGreen/Blue/Alpha; 23: earlydepthstencil on the wrapper, conservative depth outputs; 24: impossible ## pastes, empty cbuffer declarations; 25: scoped local constants, implicit-size uniform arrays, numthreads constant expressions, struct conversions
 
 namespace {
 
@@ -202,6 +203,7 @@ private:
     }
 
     int compileShader(const FxShaderExpr& expr, ShaderStage expected, size_t blameToken);
+    bool threadGroupSizesEvaluate(const FxFunction& entry, const ShaderProfile& profile);
     int compileAsmShader(const FxShaderExpr& expr, ShaderStage expected);
     bool isAsmShader(const FxShaderExpr& expr) const;
     // glslang + SPIRV-Cross + reflection of one shader; `source` is the whole HLSL to compile.
@@ -446,6 +448,17 @@ bool EffectBuilder::buildSelector(TokenSpan span, std::vector<SelectorOp>& ops, 
     return false;
 }
 
+// Each [numthreads] size is an integer constant fxport evaluates (numthreads_sizes.h); otherwise
+// the error is at that size's file:line.
+bool EffectBuilder::threadGroupSizesEvaluate(const FxFunction& entry, const ShaderProfile& profile) {
+    for (const ThreadGroupSize& size : threadGroupSizes(syntax_, entry))
+        if (!size.problem.empty()) {
+            error(diag::kBadEntrySignature, "'" + entry.name + "' (" + profile.name + ") [numthreads]: " + size.problem, size.span.begin);
+            return false;
+        }
+    return true;
+}
+
 int EffectBuilder::compileShader(const FxShaderExpr& expr, ShaderStage expected, size_t /*blameToken*/) {
     auto profile = parseShaderProfile(expr.profile);
     if (!profile) {
@@ -490,6 +503,7 @@ int EffectBuilder::compileShader(const FxShaderExpr& expr, ShaderStage expected,
             error(diag::kBadEntrySignature, why, entry->token);
             return -1;
         }
+        if (expected == ShaderStage::Compute && !threadGroupSizesEvaluate(*entry, *profile)) return -1;
     }
     // Vertex and pixel shaders get a wrapper that maps D3D9 semantics; the D3D10+ stages are
     // compiled as written.

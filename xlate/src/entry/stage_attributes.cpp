@@ -26,13 +26,49 @@ std::string trimmed(std::string s) {
     return s;
 }
 
+// Where the bracket, parenthesis or quote opened at `text[open]` closes (npos when it does not).
+size_t closingOf(const std::string& text, size_t open) {
+    std::string expected;  // the closers still owed, innermost last
+    for (size_t k = open; k < text.size(); ++k) {
+        const char c = text[k];
+        if (!expected.empty() && expected.back() == '"') {
+            if (c == '"') expected.pop_back();
+        } else if (c == '"') {
+            expected += '"';
+        } else if (c == '(' || c == '[' || c == '{') {
+            expected += c == '(' ? ')' : c == '[' ? ']' : '}';
+        } else if (!expected.empty() && c == expected.back()) {
+            expected.pop_back();
+        }
+        if (expected.empty()) return k;
+    }
+    return std::string::npos;
+}
+
+// `args` split at its top-level commas: `max(128, 32), 1, 1` is three arguments.
+std::vector<std::string> splitArguments(const std::string& args) {
+    std::vector<std::string> out;
+    size_t start = 0;
+    for (size_t k = 0; k <= args.size(); ++k) {
+        if (k < args.size() && (args[k] == '(' || args[k] == '[' || args[k] == '{' || args[k] == '"')) {
+            size_t close = closingOf(args, k);
+            k = close == std::string::npos ? args.size() - 1 : close;
+        } else if (k == args.size() || args[k] == ',') {
+            out.push_back(trimmed(args.substr(start, k - start)));
+            start = k + 1;
+        }
+    }
+    if (out.size() == 1 && out[0].empty()) out.clear();
+    return out;
+}
+
 // "[numthreads(8, 8, 1)] [domain("tri")]" -> {numthreads: [8, 8, 1], domain: [tri]}. Names as
 // written: fxc's attribute names are case-sensitive ([NumThreads] is no numthreads).
 std::map<std::string, Attribute> parseAttributes(const std::string& text) {
     std::map<std::string, Attribute> out;
     size_t i = 0;
     while ((i = text.find('[', i)) != std::string::npos) {
-        size_t end = text.find(']', i);
+        size_t end = closingOf(text, i);
         if (end == std::string::npos) break;
         std::string body = text.substr(i + 1, end - i - 1);
         i = end + 1;
@@ -42,14 +78,7 @@ std::map<std::string, Attribute> parseAttributes(const std::string& text) {
         if (open != std::string::npos) {
             a.hasArguments = true;
             size_t close = body.rfind(')');
-            std::string args = body.substr(open + 1, (close == std::string::npos ? body.size() : close) - open - 1);
-            size_t start = 0;
-            for (size_t k = 0; k <= args.size(); ++k)
-                if (k == args.size() || args[k] == ',') {
-                    a.arguments.push_back(trimmed(args.substr(start, k - start)));
-                    start = k + 1;
-                }
-            if (a.arguments.size() == 1 && a.arguments[0].empty()) a.arguments.clear();
+            a.arguments = splitArguments(body.substr(open + 1, (close == std::string::npos ? body.size() : close) - open - 1));
         }
         out[name] = a;
     }

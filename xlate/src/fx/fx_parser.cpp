@@ -698,8 +698,9 @@ private:
             expectIdentifier("register");
             if (cur().is("(")) {
                 size_t after = skipGroup(pos_, "register");
-                const std::string& last = tok(after - 2).text;  // b3 (the last argument)
-                if (after >= pos_ + 3 && last.size() > 1 && (last[0] == 'b' || last[0] == 'B')) reg = std::atoi(last.c_str() + 1);
+                const std::string& last = tok(after - 2).text;  // b3 (the last argument); c3 before SM 5.1 (register_reservations.cpp)
+                const char letter = last.empty() ? 0 : char(std::tolower(static_cast<unsigned char>(last[0])));
+                if (after >= pos_ + 3 && last.size() > 1 && (letter == 'b' || letter == 'c')) reg = std::atoi(last.c_str() + 1);
                 pos_ = after;
             }
         }
@@ -713,7 +714,10 @@ private:
         expect("{", ("to open cbuffer " + name).c_str());
         while (!accept("}")) {
             if (isEnd()) fail(diag::kUnterminated, "cbuffer '" + name + "' is never closed with '}'", open);
-            if (accept(";")) continue;
+            if (accept(";")) {  // an empty declaration (HBAO+'s PAD_FLOAT; expands to nothing): fxc takes it, glslang does not
+                blank(pos_ - 1, pos_);
+                continue;
+            }
             parseDeclaration(name);
         }
         accept(";");
@@ -772,6 +776,20 @@ private:
         bool isConst = std::find(g.modifiers.begin(), g.modifiers.end(), "const") != g.modifiers.end();
         if (!isConst || g.initializer.empty() || !g.arrayDims.empty()) return;
         if (auto v = evaluateConstant(syntax_, g.initializer, constants_); v && v->size() == 1) constants_[g.name] = *v;
+    }
+    // `float2 P[] = { {1, 2}, {3, 4}, {5, 6} };`: fxc sizes the array by its initializer (3 elements;
+    // NVIDIA SoftShadows' Poisson.fxh), a uniform as a static, so the parameter has that many
+    // elements. Only initializers constant_eval reads (numbers, constructors, earlier constants)
+    // of numeric types; others keep 0 for glslang to size.
+    void sizeFromInitializer(FxGlobal& g) const {
+        if (g.arrayDims.empty() || g.arrayDims[0] != 0 || g.initializer.empty()) return;
+        BasicType b = describeBasicType(syntax_.resolveType(g.type));
+        if (!b.ok) return;
+        long long each = b.rows * b.columns;
+        for (size_t d = 1; d < g.arrayDims.size(); ++d) each *= std::max(g.arrayDims[d], 0);
+        auto v = evaluateConstant(syntax_, g.initializer, constants_);
+        if (!v || v->empty() || each <= 0 || v->size() % size_t(each) != 0 || v->size() / size_t(each) > size_t(INT_MAX)) return;
+        g.arrayDims[0] = static_cast<int>(v->size() / size_t(each));
     }
     std::map<std::string, std::vector<double>> constants_;
 
@@ -840,6 +858,7 @@ private:
         f.returnType = returnType;
         f.token = nameToken;
         f.attributes = std::move(pendingAttributes_);
+        if (!f.attributes.empty()) f.attributeTokens = {declarationStart, start};
         pendingAttributes_.clear();
         size_t close = skipGroup(pos_, ("parameter list of '" + name + "'").c_str());
         // `float2 f(void)`: C's spelling of no parameters, which fxc takes; glslang does not.
@@ -881,6 +900,7 @@ private:
             if (!f.attributes.empty()) blank(declarationStart, start);
             syntax_.edits.push_back({tok(start).offset, tok(start).offset, proto->second.text + " "});
             f.attributes = proto->second.text;
+            f.attributeTokens = {proto->second.begin, proto->second.end};
         }
         size_t after = skipGroup(pos_, ("body of function '" + name + "'").c_str());
         f.body = {pos_ + 1, after - 1};
@@ -1173,6 +1193,7 @@ private:
             if (tail.annotationEnd > tail.annotationBegin) blank(tail.annotationBegin, tail.annotationEnd);
             ignoreStateBlock(name);
             if (accept("=")) g.initializer = skipInitializer(name);
+            sizeFromInitializer(g);
             rememberConstant(g);
             syntax_.globals.push_back(std::move(g));
             if (accept(",")) {

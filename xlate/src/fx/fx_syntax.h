@@ -160,6 +160,7 @@ struct FxFunction {
     bool hasStreamParameter = false;  // a geometry shader (inout TriangleStream<T> ...)
     size_t token = 0;
     std::string attributes;  // e.g. "[maxvertexcount(3)]"
+    TokenSpan attributeTokens;  // where `attributes` is written: before the function, or its first prototype with attributes
     // Where the body may declare each name: the token positions of `T name` (an identifier after an
     // identifier, not a call), ascending. declaredVariable looks up here instead of scanning the
     // body backwards, which made a body of n statements cost n^2.

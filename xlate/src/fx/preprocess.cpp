@@ -97,6 +97,36 @@ void checkIsText(const std::string& source, const std::string& displayPath) {
     }
 }
 
+namespace {
+
+// `##` next to a parenthesis, comma, bracket, brace or ';' in a #define (HBAO+'s `register(##SLOT##)`)
+// can paste nothing: fxc's preprocessor leaves the tokens side by side, glslang's refuses the paste
+// ("'##' : not supported for these tokens"). Such a `##` becomes spaces (columns keep).
+void dropImpossiblePastes(std::string& text, size_t start, size_t end) {
+    static const std::string kNeverPasted = "()[]{},;";
+    bool quoted = false;
+    for (size_t k = start; k + 1 < end; ++k) {
+        if (text[k] == '"') quoted = !quoted;
+        if (quoted || text[k] != '#' || text[k + 1] != '#') continue;
+        size_t before = k, after = k + 2;
+        while (before > start && (text[before - 1] == ' ' || text[before - 1] == '\t')) --before;
+        while (after < end && (text[after] == ' ' || text[after] == '\t')) ++after;
+        const bool previousNeverPastes = before > start && kNeverPasted.find(text[before - 1]) != std::string::npos;
+        const bool nextNeverPastes = after < end && kNeverPasted.find(text[after]) != std::string::npos;
+        if (previousNeverPastes || nextNeverPastes) text[k] = text[k + 1] = ' ';
+        ++k;
+    }
+}
+
+bool isDefineLine(const std::string& text, size_t start, size_t end) {
+    size_t hash = text.find_first_not_of(" \t", start);
+    if (hash >= end || text[hash] != '#') return false;
+    size_t word = text.find_first_not_of(" \t", hash + 1);
+    return word < end && text.compare(word, 6, "define") == 0;
+}
+
+}  // namespace
+
 void prepareSourceText(std::string& text, const std::string& displayPath, std::vector<Diagnostic>& warnings) {
     static const std::regex directive(R"(^[ \t]*#[ \t]*line\b)");
     static const std::regex wellFormed(R"(^[ \t]*#[ \t]*line[ \t]+[0-9]+([ \t]+"[^"\n]*")?[ \t]*(//.*)?\r?$)");
@@ -119,6 +149,16 @@ void prepareSourceText(std::string& text, const std::string& displayPath, std::v
             }
             for (size_t k = start; k < end; ++k)
                 if (text[k] != '\r') text[k] = ' ';
+        }
+        for (bool define = isDefineLine(text, start, end), continued = define; continued;) {  // and its continuation lines
+            dropImpossiblePastes(text, start, end);
+            size_t tail = text.find_last_not_of(" \t\r", end == start ? start : end - 1);
+            continued = tail != std::string::npos && tail >= start && tail < end && text[tail] == '\\' && end < text.size();
+            if (!continued) break;
+            start = end + 1;
+            end = text.find('\n', start);
+            if (end == std::string::npos) end = text.size();
+            ++line;
         }
         start = end + 1;
     }

@@ -23,14 +23,24 @@ public:
     explicit ConstantSizes(const EffectSyntax& syntax);
 
     // The size written between the brackets at tokens `open` ('[') and `close` (']'): 0 for `[]`,
-    // nothing when it is not a constant.
+    // nothing when it is not a constant. Names mean the constants visible at `open`.
     std::optional<int> size(size_t open, size_t close) const;
 
 private:
-    void rememberArray(size_t type, const BasicType& b);
+    // A constant with the tokens where it is visible: from its declaration to the end of the block
+    // that declares it (a function's local, fxc's scoping) or of the file (a global).
+    struct Scoped {
+        size_t from = 0, to = 0;
+        bool array = false;
+        std::vector<double> values;
+    };
+    void remember(size_t type, size_t scopeEnd);
+    void rememberArray(size_t type, size_t scopeEnd, const BasicType& b);
+    std::optional<std::vector<double>> evaluate(TokenSpan span) const;
+    const std::vector<double>* visible(const std::string& name, bool array, size_t at) const;
     const EffectSyntax& syntax_;
-    std::map<std::string, std::vector<double>> known_;
-    std::map<std::string, std::vector<double>> arrays_;  // constant arrays of scalars, for `w[i]` in a size
+    // Each name's constants in declaration order: an inner block's, declared later, hides an outer one.
+    std::map<std::string, std::vector<Scoped>> constants_;
 };
 
 std::vector<TextEdit> arraySizesAsLiterals(const EffectSyntax& syntax);

@@ -3,7 +3,9 @@
 #include "rewrite/geometry_clip_inputs.h"
 #include "rewrite/geometry_output_stream.h"
 
+#include "rewrite/aggregate_conversions.h"
 #include "rewrite/array_sizes.h"
+#include "rewrite/numthreads_sizes.h"
 #include "rewrite/initializer_lists.h"
 #include "rewrite/out_argument_casts.h"
 #include "rewrite/length_property.h"
@@ -48,6 +50,7 @@
 #include "fx/text_util.h"
 #include "rewrite/intrinsic_spellings.h"
 #include "rewrite/texture_registers.h"
+#include "rewrite/one_row_textures.h"
 
 namespace fxport::xlate {
 
@@ -70,6 +73,10 @@ const char* dx9SamplerType(TextureKind k) {
     }
     return "sampler2D";
 }
+
+// The type a DX9 sampler is declared with for glslang: a 1D one reads the one-row 2D texture D3D9
+// binds (one_row_textures.h).
+const char* declaredDx9SamplerType(TextureKind k) { return k == TextureKind::Texture1D ? "sampler2D" : dx9SamplerType(k); }
 
 // Which dimension a DX9 texture intrinsic implies: tex2Dlod -> 2D, texCUBEbias -> cube ...
 std::optional<TextureKind> intrinsicKind(const std::string& name) {
@@ -367,18 +374,19 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
         const EffectSampler& es = out.samplers[i];
         auto [b, e] = spanBytes(s.declaration);
         std::string decl = s.dx10 ? s.type + " " + s.name + ";"
-                                  : std::string(dx9SamplerType(es.kind)) + " " + s.name + " : register(s" + std::to_string(es.unit) + ");";
+                                  : std::string(declaredDx9SamplerType(es.kind)) + " " + s.name + " : register(s" + std::to_string(es.unit) + ");";
         for (const auto& a : aliases)
-            if (a.sampler == s.name) decl += std::string(" ") + dx9SamplerType(a.kind) + " " + a.alias + " : register(s" + std::to_string(es.unit) + ");";
+            if (a.sampler == s.name) decl += std::string(" ") + declaredDx9SamplerType(a.kind) + " " + a.alias + " : register(s" + std::to_string(es.unit) + ");";
         edits.push_back({b, e, decl});
     }
     for (const auto& f : syntax.functions)
-        for (size_t i = 0; i < f.parameters.size(); ++i)
-            if (isUntypedSampler(f.parameters[i].type)) {
-                auto k = slots.kind(slots.slot("p:" + functionKey(f) + ":" + std::to_string(i))).value_or(TextureKind::Texture2D);
-                const Token& t = tokens[f.parameters[i].typeToken];
-                edits.push_back({t.offset, t.end, dx9SamplerType(k)});
-            }
+        for (size_t i = 0; i < f.parameters.size(); ++i) {
+            const FxParameter& p = f.parameters[i];
+            if (!isDx9Sampler(p.type) || (!isUntypedSampler(p.type) && textureKindOfType(p.type) != TextureKind::Texture1D)) continue;
+            auto k = slots.kind(slots.slot("p:" + functionKey(f) + ":" + std::to_string(i))).value_or(TextureKind::Texture2D);
+            const Token& t = tokens[p.typeToken];
+            edits.push_back({t.offset, t.end, declaredDx9SamplerType(k)});
+        }
     // glslang's HLSL front end takes no `half` (nor min16float ...) as the component type of
     // vector<T, N> / matrix<T, R, C>; `half` alone it maps to float, as fxc does for SM4 (and SM2-3
     // only treat it as a precision hint), so the template argument becomes float too.
@@ -408,6 +416,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : lowerMatrixSwizzles(tokens)) edits.push_back(std::move(e));
     for (auto& e : regroupFlatInitializers(syntax)) edits.push_back(std::move(e));
     for (auto& e : arraySizesAsLiterals(syntax)) edits.push_back(std::move(e));
+    for (auto& e : threadGroupSizesAsLiterals(syntax)) edits.push_back(std::move(e));
     for (auto& e : lengthPropertiesAsCalls(syntax)) edits.push_back(std::move(e));
     for (auto& e : unusedUavsDropped(syntax)) edits.push_back(std::move(e));
     for (auto& e : refractVectorEta(syntax)) edits.push_back(std::move(e));
@@ -433,8 +442,11 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : lvalueCastsAsAssignments(syntax)) edits.push_back(std::move(e));
     for (auto& e : outArgumentsThroughConversions(syntax)) edits.push_back(std::move(e));
     for (auto& e : componentwiseCasts(syntax)) edits.push_back(std::move(e));
+    for (auto& e : aggregateConversions(syntax)) edits.push_back(std::move(e));
     for (auto& e : intrinsicsAsFxc(syntax)) edits.push_back(std::move(e));
     for (auto& e : scalarIntrinsicCalls(syntax)) edits.push_back(std::move(e));
+    if (out.dx9Samplers)
+        for (auto& e : oneDimensionalSamplingAsRows(syntax)) edits.push_back(std::move(e));
     for (auto& e : mixedShapeConversions(syntax)) edits.push_back(std::move(e));
     for (auto& e : arrayArgumentOverloads(syntax)) edits.push_back(std::move(e));
     for (auto& e : fxcOverloadChoices(syntax)) edits.push_back(std::move(e));

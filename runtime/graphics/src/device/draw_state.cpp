@@ -198,6 +198,11 @@ void GraphicsDevice::Impl::applyTexturesOf(const ShaderProgram* const* programs,
                                                    std::to_string(unit) + "] is also the current render target; " +
                                                    "set another render target (or clear the slot) before sampling it");
                     const bool cube = texture->kind() == Texture::Kind::TextureCube, volume = texture->kind() == Texture::Kind::Texture3D;
+                    // A D3D10 Texture1D object: no texture of the device is one (a GL sampler1D would read black).
+                    if (sampler.kind == xlate::TextureKind::Texture1D)
+                        throw InvalidOperation(std::string("Draw: ") + program->label + " samples a Texture1D at unit " + std::to_string(unit) +
+                                               "; fxport has no 1D textures (declare it Texture2D, or sample a one-row texture with a DX9 "
+                                               "sampler1D and tex1D)");
                     if (cube != (sampler.kind == xlate::TextureKind::TextureCube) || volume != (sampler.kind == xlate::TextureKind::Texture3D))
                         throw InvalidOperation(std::string("Draw: ") + program->label + " samples a " + shapeName(sampler.kind) +
                                                " texture at unit " + std::to_string(unit) + " but Textures[" + std::to_string(unit) +
