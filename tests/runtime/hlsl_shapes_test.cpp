@@ -181,6 +181,47 @@ TEST_P(HlslShapes, MatrixConditionSelectsComponentByComponent) {
     expectPixel(draw(*e), expected);
 }
 
+// `*` between two matrices multiplies component by component, as fxc does (mul() is the matrix
+// product): float2x2 * float2x2 and `*=` (glslang's OpMatrixTimesMatrix before).
+TEST_P(HlslShapes, SquareMatrixTimesMatrixIsPerComponent) {
+    const float a[4] = {0.5f, -1.25f, 2.0f, 8.0f}, b[4] = {3.0f, 0.25f, -2.0f, 1.5f};
+    auto e = effect("float4 A; float4 B;",
+                    "float2x2 a = {A.x, A.y, A.z, A.w}; float2x2 b = {B.x, B.y, B.z, B.w};"
+                    "float2x2 p = a * b; a *= b; return float4(p[0][1], p[1][0], a[0][0], a[1][1]);");
+    e->Parameters["A"].SetValue(Vector4(a[0], a[1], a[2], a[3]));
+    e->Parameters["B"].SetValue(Vector4(b[0], b[1], b[2], b[3]));
+    const float expected[4] = {a[1] * b[1], a[2] * b[2], a[0] * b[0], a[3] * b[3]};
+    expectPixel(draw(*e), expected);
+}
+
+// The same for float2x3 * float2x3 (refused before) and float3x3 * float2x2, in the smaller shape.
+TEST_P(HlslShapes, NonSquareAndMixedMatrixTimesMatrixArePerComponent) {
+    const float a[4] = {0.5f, -1.25f, 2.0f, 8.0f}, b[4] = {3.0f, 0.25f, -2.0f, 1.5f};
+    auto e = effect("float4 A; float4 B;",
+                    "float2x2 b = {B.x, B.y, B.z, B.w};"
+                    "float2x3 c = {A.x, A.y, 1, A.z, A.w, 2}; float2x3 d = {B.y, B.x, 3, B.w, B.z, 4};"
+                    "float3x3 n = {A.w, A.z, 0, A.y, A.x, 0, 0, 0, 1};"
+                    "float2x3 q = c * d; float2x2 r = n * b; c *= d;"
+                    "return float4(q[1][0], q[0][2], r[1][0], c[0][1]);");
+    e->Parameters["A"].SetValue(Vector4(a[0], a[1], a[2], a[3]));
+    e->Parameters["B"].SetValue(Vector4(b[0], b[1], b[2], b[3]));
+    const float expected[4] = {a[2] * b[3], 1 * 3, a[1] * b[2], a[1] * b[0]};
+    expectPixel(draw(*e), expected);
+}
+
+// A comparison of matrices is a bool matrix, per component (glslang crashed on it), stored, passed
+// to any() or used as a `?:` condition.
+TEST_P(HlslShapes, MatrixComparisonsGiveBoolMatrices) {
+    const float a[4] = {0.5f, -1.25f, 2.0f, 8.0f};
+    auto e = effect("float4 A;",
+                    "float2x2 m = {A.x, A.y, A.z, A.w}; bool2x2 b = m > 1; float2x2 f = (m > 1) ? m : 0;"
+                    "return float4(b[0][1] + 2 * b[1][1], any(m > 7), f[1][0], f[0][0]);");
+    e->Parameters["A"].SetValue(Vector4(a[0], a[1], a[2], a[3]));
+    const float expected[4] = {float(int(a[1] > 1) + 2 * int(a[3] > 1)), float(a[0] > 7 || a[1] > 7 || a[2] > 7 || a[3] > 7),
+                               a[2] > 1 ? a[2] : 0, a[0] > 1 ? a[0] : 0};
+    expectPixel(draw(*e), expected);
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslShapes, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 

@@ -180,6 +180,15 @@ TEST(Robustness, FormerGlslangCrashesInMulNowCompile) {
     }
 }
 
+// The check for `(a + 1)--` leaves alone a `++` that starts the statement after a `for`, `while`
+// or `if` header (`for (...) ++n;` was refused as a postfix on a value).
+TEST(Robustness, PrefixIncrementAfterAStatementHeaderCompiles) {
+    CompiledEffect e = compileShaderSource("RWStructuredBuffer<int> o;\n[numthreads(1, 1, 1)] void main() {\n"
+                                           "int n = 0; for (int k = 0; k < 2; k++) ++n; while (n < 5) ++n; if (n > 0) --n; o[0] = n; }\n",
+                                           "prefix_after_header.hlsl", {{"prefix_after_header.hlsl", "main", "cs_5_0"}}, noCache());
+    EXPECT_EQ(e.shaders.size(), 1u);
+}
+
 TEST(Robustness, InputsOfTheSizesThatCrashedGetDiagnostics) {
     Scratch s;
     struct Big {

@@ -325,6 +325,8 @@ private:
                 if (!operand.is(")")) continue;
                 auto open = openParen(f.body.begin, i - 1);
                 if (!open) continue;
+                // `for (...) ++n;`: the `++` starts the statement after the header.
+                if (tok(*open - 1).is("for") || tok(*open - 1).is("while") || tok(*open - 1).is("if")) continue;
                 bool lvalue = !tok(*open - 1).isIdent();  // F(x)-- and float2(a, b)-- are values
                 int index = 0;  // inside [...]: `(a[i + 1])--` is still an l-value
                 for (size_t k = *open + 1; lvalue && k + 1 < i; ++k) {

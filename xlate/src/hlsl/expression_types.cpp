@@ -51,8 +51,7 @@ class Reader {
 public:
     Reader(const EffectSyntax& syntax, const FxFunction& f, size_t end) : syntax_(syntax), t_(syntax.tokens), f_(f), end_(end) {}
 
-    std::vector<BinaryOperation> operations;
-    std::vector<Selection> selections;
+    ExpressionParts parts;
 
     Type whole(size_t begin) {
         at_ = begin;
@@ -108,9 +107,13 @@ private:
         if (!b || !a->isNumeric() || !b->isNumeric()) return std::nullopt;
         auto shape = commonShape(a->basic, b->basic);
         if (!shape) return std::nullopt;
+        // Scalar branches take a vector or matrix condition's shape: fxc selects per component
+        // (vkd3d's add_ternary).
+        const BasicType& c = condition->basic;
+        if (isScalarLike(*shape) && condition->isNumeric() && !isScalarLike(c)) shape = basic(shape->scalar, c.rows, c.columns, c.isMatrix);
         ExpressionType out = withVector1(numeric(*shape), *a, *b);
         out.keptMatrix = a->keptMatrix || b->keptMatrix || condition->keptMatrix;
-        selections.push_back({begin, question, colon, at_, *condition, out});
+        parts.selections.push_back({begin, question, colon, at_, *condition, *a, *b, out});
         return out;
     }
 
@@ -134,13 +137,13 @@ private:
             const size_t rightBegin = at_;
             Type right = binary(precedence + 1);
             if (!right || !left->isNumeric() || !right->isNumeric()) return std::nullopt;
-            operations.push_back({leftBegin, leftEnd, rightBegin, at_, left->basic, right->basic, left->keptMatrix || right->keptMatrix});
             auto shape = commonShape(left->basic, right->basic);
             if (!shape) return std::nullopt;
             const bool logical = precedence <= 2 || precedence == 6 || precedence == 7;
             if (logical) shape->scalar = "bool";
             else if (shape->scalar == "bool") shape->scalar = "int";
             const bool kept = left->keptMatrix || right->keptMatrix;
+            parts.operations.push_back({leftBegin, leftEnd, rightBegin, at_, left->basic, right->basic, *shape, op, kept});
             left = withVector1(numeric(*shape), *left, *right);
             left->keptMatrix = kept;
         }
@@ -182,7 +185,13 @@ private:
 
     Type unary() {
         if (at_ >= end_) return std::nullopt;
-        if (is("-") || is("+") || is("~") || is("++") || is("--")) {
+        if (is("-")) {
+            const size_t minus = at_++;
+            Type operand = unary();
+            if (operand && operand->isNumeric()) parts.negations.push_back({minus, at_, *operand});
+            return operand;
+        }
+        if (is("+") || is("~") || is("++") || is("--")) {
             ++at_;
             return unary();
         }
@@ -399,12 +408,11 @@ private:
 }  // namespace
 
 std::optional<ExpressionType> expressionType(const EffectSyntax& syntax, const FxFunction& f, size_t begin, size_t end,
-                                             std::vector<BinaryOperation>* operations, std::vector<Selection>* selections) {
+                                             ExpressionParts* parts) {
     if (begin >= end || end > syntax.tokens.size()) return std::nullopt;
     Reader reader(syntax, f, end);
     Type type = reader.whole(begin);
-    if (type && operations) *operations = std::move(reader.operations);
-    if (type && selections) *selections = std::move(reader.selections);
+    if (type && parts) *parts = std::move(reader.parts);
     return type;
 }
 
@@ -431,6 +439,20 @@ ExpressionType productType(const ExpressionType& a, const ExpressionType& b) {
 std::string spellType(const BasicType& b) {
     if (b.isMatrix) return b.scalar + std::to_string(b.rows) + "x" + std::to_string(b.columns);
     return b.columns > 1 ? b.scalar + std::to_string(b.columns) : b.scalar;
+}
+
+std::string glslangScalar(const std::string& s) {
+    if (s == "half" || s.rfind("min16f", 0) == 0 || s.rfind("min10f", 0) == 0) return "float";
+    if (s == "dword" || s == "min16uint") return "uint";
+    if (s.rfind("min", 0) == 0) return "int";
+    return s;
+}
+
+std::string glslangSpelling(BasicType b) {
+    b.scalar = glslangScalar(b.scalar);
+    const int n = b.rows * b.columns;
+    if (b.isMatrix && b.rows > 1 && b.columns > 1) return spellType(b);
+    return n > 1 ? b.scalar + std::to_string(n) : b.scalar;
 }
 
 std::string commonScalar(const std::string& a, const std::string& b) {

@@ -33,28 +33,50 @@ struct ExpressionType {
 // the first row times the one component).
 ExpressionType productType(const ExpressionType& a, const ExpressionType& b);
 
-// A binary operation met on the way: its operands' token spans and types (both numeric).
+// A binary operation met on the way: its operator (`<<` and `<=` as one), its operands' token
+// spans and types (both numeric) and its result's type.
 struct BinaryOperation {
     size_t leftBegin = 0, leftEnd = 0, rightBegin = 0, rightEnd = 0;
-    BasicType left, right;
+    BasicType left, right, result;
+    std::string op;
     bool keptMatrix = false;  // either operand is (see ExpressionType)
 };
 
-// A `c ? a : b` met on the way: the tokens of its condition's start, '?', ':' and its end.
+// A `c ? a : b` met on the way: the tokens of its condition's start, '?', ':' and its end; the
+// types of the condition, of each branch and of the result.
 struct Selection {
     size_t begin = 0, question = 0, colon = 0, end = 0;
-    ExpressionType condition, result;
+    ExpressionType condition, first, second, result;
 };
 
-// The type of tokens [begin, end) of `f`'s body; `operations` and `selections`, when given,
-// receive the binary operations and the selections inside (only when the whole expression has a
-// type).
+// A unary minus met on the way: the `-` token, the end of its operand and the operand's type.
+struct Negation {
+    size_t minus = 0, end = 0;
+    ExpressionType operand;
+};
+
+// What an expression is made of, as far as the rewrites that retype operations need it.
+struct ExpressionParts {
+    std::vector<BinaryOperation> operations;
+    std::vector<Selection> selections;
+    std::vector<Negation> negations;
+};
+
+// The type of tokens [begin, end) of `f`'s body; `parts`, when given, receives the operations
+// inside (only when the whole expression has a type).
 std::optional<ExpressionType> expressionType(const EffectSyntax& syntax, const FxFunction& f, size_t begin, size_t end,
-                                             std::vector<BinaryOperation>* operations = nullptr,
-                                             std::vector<Selection>* selections = nullptr);
+                                             ExpressionParts* parts = nullptr);
 
 // fxc's spelling of a numeric type: float, float3, float2x3.
 std::string spellType(const BasicType& b);
+
+// glslang's component type for fxc's: half and the min-precision types are float to it, dword
+// and min16uint uint, the other min-precision types int.
+std::string glslangScalar(const std::string& s);
+
+// How glslang spells fxc's type: a one-row or one-column matrix is a vector to it
+// (degenerate_matrices.h), a one-component one a scalar.
+std::string glslangSpelling(BasicType b);
 
 // The component type of an operation between `a` and `b` (float beats uint beats int; bool,
 // half and the min-precision types count as int and float).

@@ -10,6 +10,7 @@
 
 #include "hlsl/call_arguments.h"
 #include "hlsl/expression_types.h"
+#include "rewrite/matrix_operators.h"
 
 namespace fxport::xlate {
 
@@ -17,23 +18,6 @@ namespace {
 
 const std::set<std::string> kElementwise = {"clamp", "max", "min", "mad"};
 const std::set<std::string> kElementwiseFloat = {"lerp", "smoothstep", "pow", "step", "fmod", "ldexp"};
-
-// glslang's component type for fxc's: half and the min-precision types are float to it.
-std::string glslangScalar(const std::string& s) {
-    if (s == "half" || s.rfind("min16f", 0) == 0 || s.rfind("min10f", 0) == 0) return "float";
-    if (s == "dword" || s == "min16uint") return "uint";
-    if (s.rfind("min", 0) == 0) return "int";
-    return s;
-}
-
-// How glslang spells fxc's type: a one-row or one-column matrix is a vector to it
-// (degenerate_matrices.h), a one-component one a scalar.
-std::string glslangSpelling(BasicType b) {
-    b.scalar = glslangScalar(b.scalar);
-    const int n = b.rows * b.columns;
-    if (b.isMatrix && b.rows > 1 && b.columns > 1) return spellType(b);
-    return n > 1 ? b.scalar + std::to_string(n) : b.scalar;
-}
 
 // Component (r, c) of `v`, a value of fxc type `from` as glslang holds it.
 std::string component(const BasicType& from, int r, int c, const std::string& v = "v") {
@@ -151,7 +135,10 @@ public:
                 call(f, i);
                 mul(f, i);
                 matrixIntrinsic(f, i);
+                compoundAssignment(f, i);
+                increment(f, i);
                 if (size_t e = expressionAfter(f, i)) operators(f, i + 1, e);
+                statementExpressions(f, i);
             }
         }
         insertConversions();
@@ -174,6 +161,7 @@ private:
     std::map<size_t, std::multimap<size_t, std::string, std::greater<size_t>>> opened_;
     std::map<size_t, int> closed_;
     std::set<size_t> selected_;  // first tokens of selections already spelled out
+    std::set<std::pair<size_t, size_t>> wrapped_;  // token spans already passed to a matrix_operators.h helper
 
     // Tokens [b, e), of type `from`, passed through the helper that makes them `to`.
     void convert(size_t b, size_t e, const BasicType& from, const BasicType& to) {
@@ -260,18 +248,138 @@ private:
             if (!sameType(types[a], *common)) convert(spans[a].first, spans[a].second, types[a], *common);
     }
 
-    // The end of the expression that follows token i when i is `return` or an assignment's or
-    // initializer's `=`: the `;` or `,` that ends it; 0 when i starts none.
+    // The end of the expression that follows token i when i is `return` or an assignment's
+    // (compound or not) or initializer's `=`: the `;` or `,` that ends it, or the `)` around it (a
+    // `for` header's step, `(x = a * b)`); 0 when i starts none.
     size_t expressionAfter(const FxFunction& f, size_t i) const {
-        if (!t_[i].is("return") && !t_[i].is("=")) return 0;
-        if (t_[i].is("=") && i > 0 && t_[i - 1].end == t_[i].offset && (t_[i - 1].is("<") || t_[i - 1].is(">"))) return 0;
+        if (!t_[i].is("return") && !t_[i].is("=") && compoundWidth(i) != 1) return 0;  // `<<=` is read at its `=`
+        if (t_[i].is("=") && i > 0 && adjacent(i - 1) && (t_[i - 1].is("<") || t_[i - 1].is(">")) &&
+            !(i > 1 && adjacent(i - 2) && t_[i - 2].is(t_[i - 1].text)))
+            return 0;  // `<=`, `>=`; `<<=`, `>>=` are assignments
         int depth = 0;
         for (size_t j = i + 1; j < f.body.end; ++j) {
             if (t_[j].is("(") || t_[j].is("[") || t_[j].is("{")) ++depth;
-            else if ((t_[j].is(")") || t_[j].is("]") || t_[j].is("}")) && --depth < 0) return 0;
+            else if ((t_[j].is(")") || t_[j].is("]") || t_[j].is("}")) && --depth < 0) return t_[j].is(")") && j > i + 1 ? j : 0;
             else if (depth == 0 && (t_[j].is(";") || t_[j].is(","))) return j > i + 1 ? j : 0;
         }
         return 0;
+    }
+
+    // Expressions that are neither assigned nor returned: the condition of an `if`, `while` or
+    // `switch`, and each argument of a call made as a statement (`f(e << 2);`, whose void result
+    // has no type).
+    void statementExpressions(const FxFunction& f, size_t i) {
+        if (i == 0 || !t_[i].isIdent() || !t_[i + 1].is("(")) return;
+        const bool condition = t_[i].is("if") || t_[i].is("while") || t_[i].is("switch");
+        const bool call = t_[i - 1].is(";") || t_[i - 1].is("{") || t_[i - 1].is("}") || t_[i - 1].is("else");
+        if (!condition && (!call || syntax_.findStruct(t_[i].text))) return;
+        for (const auto& [b, e] : callArgumentSpans(t_, i + 1, f.body.end)) operators(f, b, e);
+    }
+
+    // Whether token i ends where token i + 1 starts.
+    bool adjacent(size_t i) const { return t_[i].end == t_[i + 1].offset; }
+
+    // The tokens of the compound assignment that starts at i (`+=`: 1, `<` `<` `=`: 3); 0 when none.
+    size_t compoundWidth(size_t i) const {
+        static const std::set<std::string> kCompound = {"+=", "-=", "*=", "/=", "%=", "&=", "|=", "^="};
+        if (kCompound.count(t_[i].text) && t_[i].kind == Token::Kind::Punct) return 1;
+        const bool shift = (t_[i].is("<") || t_[i].is(">")) && i + 2 < t_.size() && t_[i + 1].is(t_[i].text) && t_[i + 2].is("=");
+        return shift && adjacent(i) && adjacent(i + 1) ? 3 : 0;
+    }
+
+    // The first token of the assignment target that ends before token i: a name, with member
+    // selections and indexing (`a[i].m[2]`); 0 when there is none.
+    size_t targetBefore(const FxFunction& f, size_t i) const {
+        size_t j = i;
+        for (;;) {
+            if (j <= f.body.begin + 1) return 0;
+            if (t_[j - 1].is("]")) {
+                int depth = 0;
+                do {
+                    --j;
+                    if (t_[j].is("]")) ++depth;
+                    else if (t_[j].is("[")) --depth;
+                } while (depth > 0 && j > f.body.begin + 1);
+                if (depth != 0) return 0;
+                continue;
+            }
+            if (!t_[j - 1].isIdent()) return j == i ? 0 : j;
+            --j;
+            if (!t_[j - 1].is(".")) return j;
+            --j;
+        }
+    }
+
+    // `target op= value` at i where fxc's per-component meaning needs spelling out
+    // (matrix_operators.h): a helper takes the target inout.
+    void compoundAssignment(const FxFunction& f, size_t i) {
+        const size_t width = compoundWidth(i), valueEnd = width ? expressionAfter(f, i + width - 1) : 0;
+        const size_t targetBegin = valueEnd ? targetBefore(f, i) : 0;
+        if (!targetBegin) return;
+        auto target = expressionType(syntax_, f, targetBegin, i), value = expressionType(syntax_, f, i + width, valueEnd);
+        if (!target || !value || !target->isNumeric() || !value->isNumeric() || target->keptMatrix || value->keptMatrix) return;
+        std::string op;
+        for (size_t k = i; k < i + width; ++k) op += t_[k].text;
+        if (!needsRowwiseAssignment(op, target->basic, value->basic)) return;
+        wrap(rowwiseAssignment(op, target->basic, value->basic), targetBegin, i, i + width, valueEnd);
+    }
+
+    // The end of the assignment target that starts at token i: a name, with member selections
+    // and indexing; 0 when there is none.
+    size_t targetAfter(const FxFunction& f, size_t i) const {
+        if (i >= f.body.end || !t_[i].isIdent()) return 0;
+        size_t j = i + 1;
+        while (j < f.body.end) {
+            if (t_[j].is(".") && j + 1 < f.body.end && t_[j + 1].isIdent()) {
+                j += 2;
+            } else if (t_[j].is("[")) {
+                int depth = 0;
+                do {
+                    if (t_[j].is("[")) ++depth;
+                    else if (t_[j].is("]")) --depth;
+                    ++j;
+                } while (depth > 0 && j < f.body.end);
+                if (depth != 0) return 0;
+            } else {
+                break;
+            }
+        }
+        return j;
+    }
+
+    // `m++`, `--m` ... at i on an int or uint matrix (matrix_operators.h): a helper takes m inout.
+    void increment(const FxFunction& f, size_t i) {
+        if (!t_[i].is("++") && !t_[i].is("--")) return;
+        const size_t before = targetBefore(f, i), after = before ? 0 : targetAfter(f, i + 1);
+        const size_t begin = before ? before : i + 1, end = before ? i : after;
+        if (!end) return;
+        auto type = expressionType(syntax_, f, begin, end);
+        if (!type || !type->isNumeric() || type->keptMatrix || !needsRowwiseUnary(type->basic)) return;
+        const MatrixHelper helper = rowwiseIncrement(t_[i].text, before != 0, type->basic);
+        helpers_.emplace(helper.name, helper.code);
+        const size_t first = std::min(begin, i), last = std::max(end - 1, i);
+        opened_[first].emplace(last + 1 - first, helper.name + "(");
+        ++closed_[last];
+        edits_.push_back({t_[i].offset, t_[i].end, ""});
+    }
+
+    // `helper(left, right)` in place of tokens [begin, end) whose operator is [op, opEnd).
+    void wrap(const MatrixHelper& helper, size_t begin, size_t op, size_t opEnd, size_t end) {
+        if (!wrapped_.insert({begin, end}).second) return;
+        helpers_.emplace(helper.name, helper.code);
+        opened_[begin].emplace(end - begin, helper.name + "(");
+        ++closed_[end - 1];
+        edits_.push_back({t_[op].offset, t_[opEnd - 1].end, ","});
+    }
+
+    // `-m` of an int or uint matrix (matrix_operators.h).
+    void negate(const Negation& n) {
+        if (n.operand.keptMatrix || !needsRowwiseUnary(n.operand.basic) || !wrapped_.insert({n.minus, n.end}).second) return;
+        const MatrixHelper helper = rowwiseNegation(n.operand.basic);
+        helpers_.emplace(helper.name, helper.code);
+        opened_[n.minus + 1].emplace(n.end - n.minus - 1, helper.name + "(");
+        ++closed_[n.end - 1];
+        edits_.push_back({t_[n.minus].offset, t_[n.minus].end, ""});
     }
 
     // `c ? a : b` with a matrix condition of the result's shape: fxc selects component by
@@ -280,12 +388,15 @@ private:
         const BasicType &c = s.condition.basic, &r = s.result.basic;
         if (s.result.keptMatrix || !c.isMatrix || !r.isMatrix || c.rows != r.rows || c.columns != r.columns || c.rows * c.columns == 1) return;
         if (!selected_.insert(s.begin).second) return;
-        const std::string name = "fxport_select_" + helperName(c, r).substr(13);
-        std::string code = glslangSpelling(r) + " " + name + "(" + glslangSpelling(c) + " c, " + glslangSpelling(r) + " a, " + glslangSpelling(r) +
+        // Each branch as it is (glslang converts no matrix argument to the result's type); the
+        // result's constructor converts each component.
+        const BasicType &a = s.first.basic, &b = s.second.basic;
+        const std::string name = "fxport_select_" + glslangSpelling(c) + "_" + glslangSpelling(a) + "_" + glslangSpelling(b) + "_to_" + glslangSpelling(r);
+        std::string code = glslangSpelling(r) + " " + name + "(" + glslangSpelling(c) + " c, " + glslangSpelling(a) + " a, " + glslangSpelling(b) +
                            " b) { return " + glslangSpelling(r) + "(";
         for (int i = 0; i < r.rows; ++i)
             for (int k = 0; k < r.columns; ++k)
-                code += std::string(i || k ? ", " : "") + "(" + component(c, i, k, "c") + " != 0 ? " + component(r, i, k, "a") + " : " + component(r, i, k, "b") + ")";
+                code += std::string(i || k ? ", " : "") + "(" + component(c, i, k, "c") + " != 0 ? " + component(a, i, k, "a") + " : " + component(b, i, k, "b") + ")";
         helpers_.emplace(name, code + "); } ");
         opened_[s.begin].emplace(s.end - s.begin, name + "(");
         ++closed_[s.end - 1];
@@ -295,23 +406,24 @@ private:
 
     // Binary operations between matrices of different shapes in tokens [b, e): fxc computes them
     // in the smaller rows and columns (float1x4 + float4x4 adds the first row); glslang refuses
-    // them ("Could not perform requested binary operation").
+    // them ("Could not perform requested binary operation"). Operations on matrices glslang
+    // computes otherwise than fxc (matrix_operators.h) become helpers too.
     void operators(const FxFunction& f, size_t b, size_t e) {
-        std::vector<BinaryOperation> operations;
-        std::vector<Selection> selections;
-        if (!expressionType(syntax_, f, b, e, &operations, &selections)) return;
-        for (const auto& s : selections) select(s);
-        for (const auto& op : operations) {
-            const BasicType &l = op.left, &r = op.right;
-            if (op.keptMatrix || !l.isMatrix || !r.isMatrix || (l.rows == r.rows && l.columns == r.columns)) continue;
-            BasicType common = l;
-            common.rows = std::min(l.rows, r.rows);
-            common.columns = std::min(l.columns, r.columns);
-            BasicType lTo = common, rTo = common;
-            lTo.scalar = l.scalar;
-            rTo.scalar = r.scalar;
-            if (!sameType(l, lTo)) convert(op.leftBegin, op.leftEnd, l, lTo);
-            if (!sameType(r, rTo)) convert(op.rightBegin, op.rightEnd, r, rTo);
+        ExpressionParts parts;
+        if (!expressionType(syntax_, f, b, e, &parts)) return;
+        for (const auto& s : parts.selections) select(s);
+        for (const auto& n : parts.negations) negate(n);
+        for (const auto& op : parts.operations) {
+            if (op.keptMatrix) continue;
+            BasicType lTo = op.left, rTo = op.right;
+            if (op.left.isMatrix && op.right.isMatrix && (op.left.rows != op.right.rows || op.left.columns != op.right.columns)) {
+                lTo.rows = rTo.rows = std::min(op.left.rows, op.right.rows);
+                lTo.columns = rTo.columns = std::min(op.left.columns, op.right.columns);
+                if (!sameType(op.left, lTo)) convert(op.leftBegin, op.leftEnd, op.left, lTo);
+                if (!sameType(op.right, rTo)) convert(op.rightBegin, op.rightEnd, op.right, rTo);
+            }
+            if (needsRowwiseOperator(op.op, lTo, rTo, op.result))
+                wrap(rowwiseOperator(op.op, lTo, rTo, op.result), op.leftBegin, op.leftEnd, op.rightBegin, op.rightEnd);
         }
     }
 };

@@ -13,6 +13,8 @@
 //    matrix (a vector to glslang, which mul would take as a row or a column where fxc does not):
 //    a helper with fxc's product, a vector a row on the left and a column on the right, over the
 //    smaller inner dimension (mul(float1, float4x4) is the first row scaled; vkd3d's mul pins it).
+//  - operators on matrices glslang computes otherwise than fxc (matrix_operators.h), in the same
+//    expressions, compound assignments and `++`/`--`: generated helpers that compute row by row.
 // An operand whose type differs is passed through a generated helper that builds the common type
 // from its components (`fxport_shape_float3x2_to_float2x2(a)`, evaluated once, as before); the
 // helpers go before the first function. Only where every operand's type is evident

@@ -10,16 +10,19 @@ namespace fxport::xlate {
 namespace {
 
 constexpr std::uint32_t kTypeBool = 20, kTypeInt = 21, kTypeMatrix = 24, kTypeArray = 28, kConstant = 43, kMemberDecorate = 72,
-                        kTranspose = 84, kCompositeConstruct = 80, kCompositeExtract = 81, kIMul = 132, kMatrixTimesScalar = 143;
+                        kTranspose = 84, kCompositeConstruct = 80, kCompositeExtract = 81, kIMul = 132, kMatrixTimesScalar = 143,
+                        kExtInst = 12, kSelect = 169;
 constexpr std::uint32_t kDecRowMajor = 4, kDecColMajor = 5, kDecMatrixStride = 7;
 
 std::uint32_t firstWord(std::uint32_t opcode, size_t count) { return (std::uint32_t(count) << 16) | opcode; }
 
 // Component-wise operations SPIR-V defines on scalars and vectors only: conversions, bitcast,
-// arithmetic, logic, comparisons and bit operations.
+// arithmetic, logic, select (glslang's conversion of a bool matrix to a float one), comparisons,
+// bit operations, and the extended instructions (abs of an int matrix: SAbs; every
+// GLSL.std.450 instruction with an int or bool result computes per component).
 bool computesPerComponent(std::uint32_t op) {
-    return (op >= 109 && op <= 114) || op == 124 || (op >= 126 && op <= 141) || (op >= 164 && op <= 168) || (op >= 170 && op <= 191) ||
-           (op >= 194 && op <= 200);
+    return (op >= 109 && op <= 114) || op == 124 || (op >= 126 && op <= 141) || (op >= 164 && op <= 191) || (op >= 194 && op <= 200) ||
+           op == kExtInst;
 }
 
 struct Shape {
@@ -85,7 +88,7 @@ public:
 private:
     bool touchesChanged(const SpirvInstruction& inst) const {
         if (changed_.count(inst.words[1])) return true;
-        for (size_t k = 3; k < inst.words.size(); ++k)
+        for (size_t k = inst.opcode() == kExtInst ? 5 : 3; k < inst.words.size(); ++k)
             if (changed_.count(m_.typeOf(inst.words[k]))) return true;
         return false;
     }
@@ -100,9 +103,10 @@ private:
         const auto& w = inst.words;
         Shape result = matrices_.at(w[1]);
         std::vector<std::uint32_t> columns;
+        const size_t literals = inst.opcode() == kExtInst ? 2 : 0;  // the set and the instruction
         for (std::uint32_t c = 0; c < result.count; ++c) {
-            std::vector<std::uint32_t> operands;
-            for (size_t k = 3; k < w.size(); ++k) {
+            std::vector<std::uint32_t> operands(w.begin() + 3, w.begin() + 3 + std::ptrdiff_t(literals));
+            for (size_t k = 3 + literals; k < w.size(); ++k) {
                 auto it = matrices_.find(m_.typeOf(w[k]));
                 operands.push_back(it == matrices_.end() ? w[k] : emit(out, kCompositeExtract, it->second.column, {w[k], c}));
             }
