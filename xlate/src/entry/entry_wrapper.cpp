@@ -10,6 +10,7 @@
 
 #include "hlsl/hlsl_types.h"
 #include "entry/signature_layout.h"
+#include "entry/stage_attributes.h"
 #include "fx/text_util.h"
 #include "rewrite/keyword_identifiers.h"
 
@@ -265,22 +266,6 @@ bool writesPosition(const std::vector<Leaf>& outputs) {
 
 }  // namespace
 
-namespace {
-
-// Whether `attributes` ("[maxvertexcount(3)][earlydepthstencil]") holds attribute `name`. fxc
-// matches attribute names in their case (vkd3d's numthreads: `[NumThreads(...)]` is refused).
-bool hasAttribute(const std::string& attributes, const std::string& name) {
-    for (size_t at = attributes.find(name); at != std::string::npos; at = attributes.find(name, at + 1)) {
-        size_t before = at, after = at + name.size();
-        while (before > 0 && std::isspace(static_cast<unsigned char>(attributes[before - 1]))) --before;
-        while (after < attributes.size() && std::isspace(static_cast<unsigned char>(attributes[after]))) ++after;
-        if (before > 0 && attributes[before - 1] == '[' && after < attributes.size() && (attributes[after] == ']' || attributes[after] == '(')) return true;
-    }
-    return false;
-}
-
-}  // namespace
-
 EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& entry, const ShaderProfile& profile,
                                const std::string& arguments, bool nextToGeometryShader) {
     EntryWrapper w;
@@ -494,7 +479,7 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
     if (!noOutputs) code << "struct fxport_Output {\n" << outStruct.str() << "};\n";
     // [earlydepthstencil] on the entry: the depth-stencil test runs before the shader (a UAV write of
     // a hidden fragment never happens); the attribute belongs on the function GL runs.
-    if (!vertex && hasAttribute(entry.attributes, "earlydepthstencil")) code << "[earlydepthstencil]\n";
+    if (!vertex && hasAttribute(entry, "earlydepthstencil")) code << "[earlydepthstencil]\n";
     code << (noOutputs ? "void " : "fxport_Output ") << kWrapperEntry << "(" << params.str() << ") {\n";
     for (const auto& l : locals) code << "    " << l << "\n";
     code << fill.str();

@@ -125,6 +125,8 @@ std::string stringAttribute(const std::map<std::string, Attribute>& attrs, const
 
 }  // namespace
 
+bool hasAttribute(const FxFunction& entry, const std::string& name) { return parseAttributes(entry.attributes).count(name) > 0; }
+
 std::string checkStageAttributes(const EffectSyntax& syntax, const FxFunction& entry, const ShaderProfile& profile, Tessellation& out) {
     std::map<std::string, Attribute> attrs = parseAttributes(entry.attributes);
     const std::string who = "'" + entry.name + "' (" + profile.name + ") ";

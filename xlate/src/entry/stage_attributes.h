@@ -18,6 +18,10 @@ namespace fxport::xlate {
 // shaders (and the control-point counts of their InputPatch/OutputPatch parameters).
 std::string checkStageAttributes(const EffectSyntax& syntax, const FxFunction& entry, const ShaderProfile& profile, Tessellation& out);
 
+// Whether `entry` carries attribute `name` (`[earlydepthstencil]`), in the case written, as fxc
+// matches attribute names.
+bool hasAttribute(const FxFunction& entry, const std::string& name);
+
 // D3D11's thread-group limits (cs_5_0: x, y <= 1024, z <= 64, x*y*z <= 1024; cs_4_x: x, y <= 768,
 // z == 1, x*y*z <= 768); empty when `size` is within them.
 std::string checkThreadGroupSize(const std::array<int, 3>& size, const ShaderProfile& profile);
