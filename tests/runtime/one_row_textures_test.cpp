@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -24,8 +25,35 @@ const std::vector<Color> kRamp = {Color(10, 20, 30, 255), Color(200, 100, 50, 25
 // `sample` is the PS's expression of `uv` and `ramp`. With D3D9's pixel centres (an SM3 vertex
 // shader) the quad's TEXCOORD0 at pixel x is x / 4; `shift` is added to it: 1/8 puts pixel x on the
 // centre of texel x, 1/4 halfway between texels x and x + 1.
-std::vector<float> drawRamp(const std::string& sample, const std::string& filter, float shift = 0) {
+// Draws a 4 x 1 float target with the technique of `text` (an effect named `name`), the ramp bound
+// to its texture parameter `rampParameter` and `set` setting the rest; the target is unbound again
+// also when the draw throws.
+std::vector<float> drawEffect(const std::string& text, const std::string& name, const std::string& rampParameter,
+                              const std::function<void(Effect&)>& set = {}) {
     GraphicsDevice& device = testDevice();
+    EffectOptions options;
+    options.useCache = false;
+    Effect effect(device, EffectSource{text, name}, options);
+    Texture2D texture(device, 4, 1, false, SurfaceFormat::Color);
+    texture.SetData(kRamp);
+    effect.Parameters[rampParameter].SetValue(texture);
+    if (set) set(effect);
+    device.BlendState = BlendState::Opaque;
+    device.DepthStencilState = DepthStencilState::None;
+    device.RasterizerState = RasterizerState::CullNone;
+    RenderTarget2D target(device, 4, 1, false, SurfaceFormat::Vector4);
+    struct Unbind {
+        GraphicsDevice& d;
+        ~Unbind() { d.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr)); }
+    } unbind{device};
+    device.SetRenderTarget(target);
+    device.Clear(Color::Black);
+    effect.CurrentTechnique->Passes[0].Apply();
+    drawQuad(device);
+    return readFloats(target);
+}
+
+std::vector<float> drawRamp(const std::string& sample, const std::string& filter, float shift = 0) {
     const std::string text =
         "texture RampTexture;\n"
         "sampler1D ramp = sampler_state { Texture = <RampTexture>; MinFilter = " + filter + "; MagFilter = " + filter +
@@ -35,23 +63,7 @@ std::vector<float> drawRamp(const std::string& sample, const std::string& filter
         "void VS(inout float4 p : POSITION0, inout float2 uv : TEXCOORD0) {}\n"
         "float4 PS(float2 uv : TEXCOORD0) : COLOR0 { uv.x += Shift; return " + sample + "; }\n"
         "technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }\n";
-    EffectOptions options;
-    options.useCache = false;
-    Effect effect(device, EffectSource{text, "OneRowTextures.fx"}, options);
-    Texture2D texture(device, 4, 1, false, SurfaceFormat::Color);
-    texture.SetData(kRamp);
-    effect.Parameters["RampTexture"].SetValue(texture);
-    effect.Parameters["Shift"].SetValue(shift);
-    device.BlendState = BlendState::Opaque;
-    device.DepthStencilState = DepthStencilState::None;
-    device.RasterizerState = RasterizerState::CullNone;
-    RenderTarget2D target(device, 4, 1, false, SurfaceFormat::Vector4);
-    device.SetRenderTarget(target);
-    device.Clear(Color::Black);
-    effect.CurrentTechnique->Passes[0].Apply();
-    drawQuad(device);
-    device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
-    return readFloats(target);
+    return drawEffect(text, "OneRowTextures.fx", "RampTexture", [&](Effect& e) { e.Parameters["Shift"].SetValue(shift); });
 }
 
 std::array<float, 4> texel(size_t x) { return {kRamp[x].R / 255.0f, kRamp[x].G / 255.0f, kRamp[x].B / 255.0f, kRamp[x].A / 255.0f}; }
@@ -87,28 +99,17 @@ TEST(OneRowTextures, LinearFilterBlendsNeighboursOfTheRow) {
 // A D3D10 Texture1D object has no texture of the device to read (GL would read black): the draw
 // says so instead.
 TEST(OneRowTextures, Texture1DObjectIsRefusedAtTheDraw) {
-    GraphicsDevice& device = testDevice();
     const std::string text =
         "Texture1D Ramp; SamplerState Linear;\n"
         "float4 VS(float4 p : POSITION0) : SV_Position { return p; }\n"
         "float4 PS(float4 p : SV_Position) : SV_Target { return Ramp.Sample(Linear, p.x / 4); }\n"
         "technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelShader(CompileShader(ps_4_0, PS())); } }\n";
-    EffectOptions options;
-    options.useCache = false;
-    Effect effect(device, EffectSource{text, "Texture1DObject.fx"}, options);
-    Texture2D texture(device, 4, 1, false, SurfaceFormat::Color);
-    texture.SetData(kRamp);
-    effect.Parameters["Ramp"].SetValue(texture);
-    RenderTarget2D target(device, 4, 1, false, SurfaceFormat::Vector4);
-    device.SetRenderTarget(target);
-    effect.CurrentTechnique->Passes[0].Apply();
     try {
-        drawQuad(device);
+        drawEffect(text, "Texture1DObject.fx", "Ramp");
         ADD_FAILURE() << "a Texture1D sampled from a 2D texture drew";
     } catch (const InvalidOperation& e) {
         EXPECT_NE(std::string(e.what()).find("samples a Texture1D at unit 0"), std::string::npos) << e.what();
     }
-    device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
 }
 
 }  // namespace
