@@ -197,9 +197,9 @@ std::vector<TextEdit> degenerateMatricesAsVectors(const EffectSyntax& syntax, co
         const FxFunction* f = nullptr;
         const FxGlobal* uniform = globalTypedAt(syntax, i);
         if (uniform && !isVectorUniform(syntax, *uniform)) uniform = nullptr;
-        if (uniform) {
-            for (const auto& fn : syntax.functions) uniform = i >= fn.declaration.begin && i < fn.declaration.end ? nullptr : uniform;
-        }
+        const bool inFunction = std::any_of(syntax.functions.begin(), syntax.functions.end(),
+                                            [&](const FxFunction& fn) { return i >= fn.declaration.begin && i < fn.declaration.end; });
+        if (inFunction) uniform = nullptr;  // a local named like the uniform
         if (!uniform && !mayRespell(syntax, i, f)) continue;
         Respelled r{i, d->end, d->vector, f, {}, uniform, d->scalar};
         if (!f) {
