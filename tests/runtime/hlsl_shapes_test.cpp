@@ -222,6 +222,43 @@ TEST_P(HlslShapes, MatrixComparisonsGiveBoolMatrices) {
     expectPixel(draw(*e), expected);
 }
 
+// Matrix products per component also where the whole expression is beyond the rewrite's typer
+// or no assignment holds it: a `for` condition and an array index. a * b is {1, 2, 3, 4} per
+// component; a matrix product would give {3, 3, 7, 7} or, in glslang's transposed storage,
+// {4, 4, 6, 6}.
+TEST_P(HlslShapes, MatrixTimesMatrixInLoopConditionsAndIndices) {
+    auto e = effect("float4 A; float4 B;",
+                    "float2x2 a = {A.x, A.y, A.z, A.w}; float2x2 b = {B.x, B.y, B.z, B.w};"
+                    "float n = 0; for (int k = 0; k < (int)(a * b)[1][1]; ++k) n += 1;"
+                    "float4 v = {10, 11, 12, 13}; return float4(n, v[(int)(a * b)[0][1]], v[(int)(a * b)[1][0]], 0);");
+    e->Parameters["A"].SetValue(Vector4(1, 2, 3, 4));
+    e->Parameters["B"].SetValue(Vector4(1, 1, 1, 1));
+    const float expected[4] = {4, 12, 13, 0};
+    expectPixel(draw(*e), expected);
+}
+
+// The same inside a method's arguments (SM4+): the expression around it (T.Load(...)) has no
+// type to the rewrite, its arguments do. Texel (x, y) holds (x, y).
+class HlslShapesSm4 : public HlslShapes {};
+TEST_P(HlslShapesSm4, MatrixTimesMatrixInMethodArguments) {
+    Texture2D tex(device, 8, 8, false, SurfaceFormat::Vector4);
+    std::vector<Vector4> texels;
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) texels.emplace_back(float(x), float(y), 0.0f, 1.0f);
+    tex.SetData(texels.data(), texels.size());
+    auto e = effect("float4 A; float4 B; Texture2D<float4> T;",
+                    "float2x2 a = {A.x, A.y, A.z, A.w}; float2x2 b = {B.x, B.y, B.z, B.w};"
+                    "float4 t = T.Load(int3((a * b)[0], 0)); return float4(t.xy, T.Load(int3((a * b)[1], 0)).xy);");
+    e->Parameters["T"].SetValue(&tex);
+    e->Parameters["A"].SetValue(Vector4(1, 2, 3, 4));
+    e->Parameters["B"].SetValue(Vector4(1, 1, 1, 1));
+    const float expected[4] = {1, 2, 3, 4};
+    expectPixel(draw(*e), expected);
+}
+
+INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslShapesSm4, ::testing::Values("4_0", "5_0"),
+                         [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslShapes, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 

@@ -138,7 +138,7 @@ public:
                 compoundAssignment(f, i);
                 increment(f, i);
                 if (size_t e = expressionAfter(f, i)) operators(f, i + 1, e);
-                statementExpressions(f, i);
+                groupedExpressions(f, i);
             }
         }
         insertConversions();
@@ -265,15 +265,27 @@ private:
         return 0;
     }
 
-    // Expressions that are neither assigned nor returned: the condition of an `if`, `while` or
-    // `switch`, and each argument of a call made as a statement (`f(e << 2);`, whose void result
-    // has no type).
-    void statementExpressions(const FxFunction& f, size_t i) {
-        if (i == 0 || !t_[i].isIdent() || !t_[i + 1].is("(")) return;
-        const bool condition = t_[i].is("if") || t_[i].is("while") || t_[i].is("switch");
-        const bool call = t_[i - 1].is(";") || t_[i - 1].is("{") || t_[i - 1].is("}") || t_[i - 1].is("else");
-        if (!condition && (!call || syntax_.findStruct(t_[i].text))) return;
-        for (const auto& [b, e] : callArgumentSpans(t_, i + 1, f.body.end)) operators(f, b, e);
+    // Each part of the bracket group that opens at i, `(` or `[`: a condition, a `for` header's
+    // parts, a call's or a method's arguments, an index, a parenthesised operand. A whole
+    // expression has no type when any of it is beyond the typer (a method call: `T.Sample(s,
+    // (a * b)[1])`), so its parts are read on their own too; the type of a part is the same
+    // wherever it stands, and every helper is placed once per span.
+    void groupedExpressions(const FxFunction& f, size_t i) {
+        if (!t_[i].is("(") && !t_[i].is("[")) return;
+        int depth = 0;
+        size_t begin = i + 1;
+        for (size_t j = i + 1; j < f.body.end; ++j) {
+            if (t_[j].is("(") || t_[j].is("[") || t_[j].is("{")) {
+                ++depth;
+            } else if (t_[j].is(")") || t_[j].is("]") || t_[j].is("}")) {
+                if (--depth >= 0) continue;
+                if (j > begin) operators(f, begin, j);
+                return;
+            } else if (depth == 0 && (t_[j].is(",") || t_[j].is(";"))) {
+                if (j > begin) operators(f, begin, j);
+                begin = j + 1;
+            }
+        }
     }
 
     // Whether token i ends where token i + 1 starts.
