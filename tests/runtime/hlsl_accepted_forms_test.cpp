@@ -145,6 +145,16 @@ TEST_P(HlslAcceptedForms, TextureLengthProperty) {
     for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], expected[k]) << "channel " << k;
 }
 
+// Static initializers that call the effect's functions run before the entry point (glslang took the
+// call as made by the function defined just before: "Recursion detected", or a crash when that one
+// is never called; xlate/src/rewrite/static_initializer_calls.h). `other` is called only from an
+// initializer, `twice` also from the entry point.
+TEST_P(HlslAcceptedForms, StaticInitializersCallEffectFunctions) {
+    expectPixel("float twice(float v) { return 2 * v; }\nstatic float a = twice(0.25) + 0.5;\n"
+                "float three() { return 3; } float other() { return three(); }\nstatic const float b = other(), c = twice(b);",
+                "return float4(a, b, c, twice(A.x));", {1, 3, 6, 0.5f}, {0.25f, 0, 0, 0});
+}
+
 // UAVs of matrix or small struct elements that no function uses compile (and are dropped, as fxc
 // drops them: xlate/src/rewrite/unused_uavs.cpp); SM5 pixel shaders only.
 TEST_P(HlslAcceptedFormsSm5, UnusedUavsOfMatrixOrStructElements) {

@@ -13,6 +13,7 @@
 #include "entry/stage_attributes.h"
 #include "fx/text_util.h"
 #include "rewrite/keyword_identifiers.h"
+#include "rewrite/static_initializer_calls.h"
 
 namespace fxport::xlate {
 
@@ -481,6 +482,7 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
     // a hidden fragment never happens); the attribute belongs on the function GL runs.
     if (!vertex && hasAttribute(entry, "earlydepthstencil")) code << "[earlydepthstencil]\n";
     code << (noOutputs ? "void " : "fxport_Output ") << kWrapperEntry << "(" << params.str() << ") {\n";
+    if (hasInitializerCalls(syntax)) code << "    " << kStaticInitializerScopes << "();\n";  // static_initializer_calls.h
     for (const auto& l : locals) code << "    " << l << "\n";
     code << fill.str();
     std::string call = entry.name + "(";

@@ -6,6 +6,7 @@
 #include "rewrite/aggregate_conversions.h"
 #include "rewrite/array_sizes.h"
 #include "rewrite/numthreads_sizes.h"
+#include "rewrite/static_initializer_calls.h"
 #include "rewrite/initializer_lists.h"
 #include "rewrite/out_argument_casts.h"
 #include "rewrite/length_property.h"
@@ -417,6 +418,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : regroupFlatInitializers(syntax)) edits.push_back(std::move(e));
     for (auto& e : arraySizesAsLiterals(syntax)) edits.push_back(std::move(e));
     for (auto& e : threadGroupSizesAsLiterals(syntax)) edits.push_back(std::move(e));
+    for (auto& e : initializerCallScopes(syntax)) edits.push_back(std::move(e));
     for (auto& e : lengthPropertiesAsCalls(syntax)) edits.push_back(std::move(e));
     for (auto& e : unusedUavsDropped(syntax)) edits.push_back(std::move(e));
     for (auto& e : refractVectorEta(syntax)) edits.push_back(std::move(e));
