@@ -70,6 +70,21 @@ TEST_P(StructParameters, AMemberChecksItsTypeLikeAParameter) {
     EXPECT_EQ(e->Parameters["light"].StructureMembers().find("nope"), nullptr);
 }
 
+// An array of arrays is one array of all its elements to XNA and D3D (float c[2][3]: 6, in order,
+// each in its own register), set whole or element by element. fxport listed 2 elements of 48 bytes.
+TEST_P(StructParameters, ArrayOfArraysIsOneArrayOfAllElements) {
+    auto e = effect("float c[2][3]; float4 v[2][2];", "return float4(c[1][0], c[0][2], c[1][2], v[1][0].y);");
+    ASSERT_EQ(e->Parameters["c"].Elements().Count(), 6);
+    ASSERT_EQ(e->Parameters["v"].Elements().Count(), 4);
+    e->Parameters["c"].SetValue(std::vector<float>{0.5f, 1.5f, 2.5f, 3.5f, 4.5f, 5.5f});
+    e->Parameters["v"].Elements()[2].SetValue(Vector4(0, 6.25f, 0, 0));
+    const float first[4] = {3.5f, 2.5f, 5.5f, 6.25f};
+    expectPixel(draw(*e), first);
+    e->Parameters["c"].Elements()[5].SetValue(8.0f);
+    const float later[4] = {3.5f, 2.5f, 8.0f, 6.25f};
+    expectPixel(draw(*e), later);
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, StructParameters, ::testing::Values("2_0", "3_0", "4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 

@@ -84,6 +84,17 @@ int splitArrayElement(const std::string& name) {
     return k;
 }
 
+// The stride between the innermost elements of member i, an array: D3D reflects an array of
+// arrays as one (float a[2][3]: 6 elements), and std140 lays the inner arrays one after another
+// (each inner stride is whole registers), so the outer stride is the inner one times the count.
+int innermostArrayStride(GlslCompiler& c, const spirv_cross::SPIRType& type, uint32_t i) {
+    const auto& mt = c.get_type(type.member_types[i]);
+    std::uint32_t stride = c.type_struct_member_array_stride(type, i);
+    for (size_t d = 0; d + 1 < mt.array.size(); ++d)  // SPIRV-Cross keeps the outermost size last
+        if (mt.array_size_literal[d] && mt.array[d] > 0) stride /= mt.array[d];
+    return static_cast<int>(stride);
+}
+
 // Re-lays out struct `structId` (a uniform block or a struct inside one) with std140 rules and
 // returns its std140 size. glslang packs a user cbuffer the HLSL way (a vector may start anywhere
 // that keeps it inside one 16-byte register; a member may use the tail of an array's last
@@ -388,7 +399,7 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
                     // SPIR-V sees HLSL's matrix transposed: RowMajor there is HLSL column_major.
                     m.hlslRowMajor = !compiler.has_member_decoration(ubo.base_type_id, i, spv::DecorationRowMajor);
                 }
-                if (!mt.array.empty()) m.arrayStride = static_cast<int>(compiler.type_struct_member_array_stride(type, i));
+                if (!mt.array.empty()) m.arrayStride = innermostArrayStride(compiler, type, i);
                 block.members.push_back(m);
             }
             for (const auto& range : compiler.get_active_buffer_ranges(ubo.id)) {

@@ -348,8 +348,10 @@ std::vector<UniformMember> describeMembers(const Module& m, Packer& packer, std:
         u.offset = int(packer.memberOffset(structId, k));
         u.size = int(packer.sizeOf(t, rowMajor));
         const Inst* ti = packer.type(t);
+        // An array of arrays is one array to D3D's reflection (float a[2][3]: 6 elements), whose
+        // stride is the innermost one: each inner array fills whole registers, so they follow on.
         while (ti && ti->op == kOpTypeArray) {
-            if (!u.arrayStride) u.arrayStride = int(packer.arrayStride(t, rowMajor));
+            u.arrayStride = int(packer.arrayStride(t, rowMajor));
             t = m.w(*ti, 2);
             ti = packer.type(t);
         }
