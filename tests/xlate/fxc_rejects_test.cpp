@@ -193,6 +193,14 @@ std::vector<RejectCase> cases() {
         {"StaticTextureWithoutValue", "ps_4_0",
          "static Texture2D tex;\nsampler sam;\n\nfloat4 main() : sv_target\n{\n    return tex.Sample(sam, float2(0, 0));\n}\n", 1, "never given a value",
          "Texture2D real_tex;\nstatic Texture2D tex = real_tex;\nsampler sam;\n\nfloat4 main() : sv_target\n{\n    return tex.Sample(sam, float2(0, 0));\n}\n"},
+        // A local texture array indexed by a uniform holds no one known texture (fxc: SM5.0 indexes
+        // resource arrays by literals only); stored at an index that folds to a constant (vkd3d's
+        // object-references), the copies are traced and it compiles.
+        {"LocalTextureArrayIndexedByAUniform", "ps_5_0",
+         "Texture2D t1, t2;\nuint u;\n\nfloat4 main() : sv_target\n{\n    Texture2D b[2];\n    b[0] = t1;\n    b[1] = t2;\n    return b[u].Load(int3(0, 0, 0));\n}\n", 6,
+         "local resource variable",
+         "Texture2D t1, t2;\nuint u;\n\nfloat4 main() : sv_target\n{\n    Texture2D b[2];\n    int4 co = {0, 0, 0, 0};\n    b[(int)co.x + (int)co.y] = t1;\n"
+         "    b[1] = t2;\n    return b[0].Load(int3(0, 0, 0)) + b[1].Load(int3(0, 0, 0));\n}\n"},
         // static-initializer: through a function's static copy; a read in dead code does not count.
         {"StaticTextureCopiedWithoutValue", "ps_4_0",
          "static Texture2D tex1;\nsampler sam;\n\nfloat4 main() : sv_target\n{\n    static Texture2D tex2 = tex1;\n    return tex2.Sample(sam, float2(0, 0));\n}\n",

@@ -138,6 +138,17 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
                               "static resource '" + unset + "' is read but never given a value: fxc binds only a resource it can trace to a register"});
         return out;
     }
+    if (!localResourceVariableLeft(out.words).empty() && !forwardResourceCopies(out.words, &legalizeError)) {
+        out.errors.push_back({0, {}, legalizeError});
+        return out;
+    }
+    if (std::string local = localResourceVariableLeft(out.words); !local.empty()) {
+        out.errors.push_back({resourceDeclarationLine(*request.source, local), local,
+                              (local == "(unnamed)" ? std::string("a local resource variable") : "local resource variable '" + local + "'") +
+                                  " does not hold one known resource where it is used (fxc traces such copies, fxport does not yet; GLSL has no "
+                                  "resource variables): use the global resource directly"});
+        return out;
+    }
     runSpirvPasses(out.words, {sm2or3 ? SpirvPass(integerDivisionInFloats) : nullptr,  // after folding: fxc folds constants exactly
                                packClipCullDistances, packStructuredBuffersTightly,
                                [&](ParsedSpirv& m) { return byteAddressLengthsInBytes(m, byteAddressBufferNames(*request.source)); },

@@ -225,4 +225,18 @@ bool legalizeSpirv(std::vector<std::uint32_t>& words, std::string* error) {
     });
 }
 
+bool forwardResourceCopies(std::vector<std::uint32_t>& words, std::string* error) {
+    // Scalar replacement ran before constant folding made indices like `(int)co.x + (int)co.y`
+    // constant; with them constant now, the array splits and the stores forward.
+    return runPasses(words, error, [](spvtools::Optimizer& o) {
+        o.RegisterPass(spvtools::CreateScalarReplacementPass())
+            .RegisterPass(spvtools::CreateLocalAccessChainConvertPass())
+            .RegisterPass(spvtools::CreateLocalSingleBlockLoadStoreElimPass())
+            .RegisterPass(spvtools::CreateLocalSingleStoreElimPass())
+            .RegisterPass(spvtools::CreateLocalMultiStoreElimPass())
+            .RegisterPass(spvtools::CreateSimplificationPass())
+            .RegisterPass(spvtools::CreateAggressiveDCEPass());
+    });
+}
+
 }  // namespace fxport::xlate

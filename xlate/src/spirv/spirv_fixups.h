@@ -26,4 +26,9 @@ bool dividesByConstantZero(const std::vector<std::uint32_t>& words, bool floatsT
 // Returns false (and leaves `words` as they were) when spirv-opt refuses the module.
 bool legalizeSpirv(std::vector<std::uint32_t>& words, std::string* error);
 
+// Another round of scalar replacement and store forwarding, for a module that still has a local
+// resource variable after legalizeSpirv (unset_static_resources.h): run only then, so every other
+// module's GLSL stays as it was.
+bool forwardResourceCopies(std::vector<std::uint32_t>& words, std::string* error);
+
 }  // namespace fxport::xlate

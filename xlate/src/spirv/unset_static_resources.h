@@ -19,4 +19,12 @@ std::string staticResourceReadWithoutValue(const std::vector<std::uint32_t>& wor
 // The line (1-based) of `source` that declares `static ... name`, 0 when none is found.
 int staticDeclarationLine(const std::string& source, const std::string& name);
 
+// A local resource variable (or array of them) that legalisation could not replace by the one
+// resource it holds (`Texture2D b[1]; b[(int)v.x] = t;`: fxc copy-propagates such stores, glslang
+// does not): GLSL has no such variables, so SPIRV-Cross would write GLSL no driver takes. Its name
+// (OpName), "(unnamed)" without one, "" when there is none.
+std::string localResourceVariableLeft(const std::vector<std::uint32_t>& words);
+// The line (1-based) of `source` that declares resource variable `name`, 0 when none is found.
+int resourceDeclarationLine(const std::string& source, const std::string& name);
+
 }  // namespace fxport::xlate
