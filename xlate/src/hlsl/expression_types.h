@@ -19,7 +19,7 @@ namespace fxport::xlate {
 struct ExpressionType {
     BasicType basic;           // numeric when basic.ok (scalar, vector or matrix)
     std::string structName;    // a struct's name (typedefs resolved) when not numeric
-    std::vector<int> dims;     // array sizes, outermost first
+    std::vector<int> dims;     // array sizes, outermost first (0: none known, a structured buffer of structs)
     bool vector1 = false;      // a one-component vector (float1, vector<float, 1>), not a scalar
     // A one-row or one-column matrix that stays a matrix to glslang (a uniform, a struct member, an
     // entry input: degenerate_matrices.h), or a value computed from one: glslang's type is not
