@@ -146,6 +146,10 @@ private:
             for (auto& p : parts) e.parts.push_back(std::move(p.access));
             const BasicType b = describeBasicType(syntax_.resolveType(declared->type));
             e.vectorLike = declared->dims.empty() && b.ok && !b.isMatrix;
+            if (std::none_of(parts.begin(), parts.end(), [](const AggregateComponent& c) { return c.object; })) {
+                e.tempType = e.componentType = declared->type;
+                e.tempDims = declared->dims;
+            }
         }
         sawAggregate_ = true;
         ++at_;
@@ -332,7 +336,7 @@ bool evaluateOnce(const EffectSyntax& syntax, const FxFunction* f, size_t type, 
     for (size_t e = 0; e <= last; ++e) {
         Element& x = elements[e];
         if (x.literal) continue;
-        if (x.tempType.empty()) return false;  // a variable named alone: pure, never here
+        if (x.tempType.empty()) return false;  // an object
         const std::string name = "fxport_init_" + std::to_string(x.begin);
         std::string dims;
         for (int d : x.tempDims) dims += "[" + std::to_string(d) + "]";
