@@ -32,7 +32,7 @@ struct Element {
     bool literal = false;            // nothing to evaluate (a literal, a constructor of literals)
     bool pure = true;                // repeating its text changes nothing (no call, no assignment)
     std::string whole;               // its text where it is not kept in place (a temporary's name)
-    std::string tempType;            // the type a temporary holding it is declared with (glslang's spelling)
+    std::string tempType;            // the type a temporary holding it is declared with (as glslang spells it; a variable's as declared)
     std::vector<int> tempDims;
     std::string componentType;       // the type its components are named through (aggregate_components.h)
 };
