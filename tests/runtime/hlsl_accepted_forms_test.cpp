@@ -113,6 +113,43 @@ TEST_P(HlslAcceptedForms, StructsConvertComponentwise) {
                 {2, -3, 4.25f, -3.5f}, {2.75f, -3.5f, 4.25f, 1});
 }
 
+// A struct and an array whose components match one for one in type convert into each other both
+// ways (xlate/src/rewrite/aggregate_conversions.cpp): a struct assigned to an array member and
+// initializing an array, an array member assigned to a struct. Intel AOIT's `data.color = B[i];`
+// (struct C { float4 color[2]; } to D's float4 color[2]) in locals; the buffer form is below.
+TEST_P(HlslAcceptedForms, StructsAndArraysConvertComponentwiseBothWays) {
+    const std::string structs = "struct C { float4 color[2]; }; struct D { float4 depth[1]; float4 color[2]; };";
+    // d.color = (A, A.wzyx); a = the same; h = d.color, so h.color[1] is A.wzyx.
+    expectPixel(structs,
+                "C c; c.color[0] = A; c.color[1] = A.wzyx; D d; d.depth[0] = 0; d.color = c; float4 a[2] = c; C h; h = d.color;"
+                " return float4(d.color[1].x, a[0].y, h.color[1].w, h.color[0].z);",
+                {4, -1.5f, 0.5f, 2.25f}, {0.5f, -1.5f, 2.25f, 4});
+}
+
+// Flat brace lists of expressions that are not literals fill the declared type's components in
+// order (xlate/src/rewrite/initializer_lists.cpp). BakingLab's SH.hlsl `SH4 shr = { sh.c[0].x, ... }`
+// (struct SH4 { float c[4]; }), scalars filling a struct's float2, scalars filling float2
+// elements, and float2 values each filling two float elements.
+TEST_P(HlslAcceptedForms, FlatInitializersOfExpressions) {
+    const Vector4 a(0.5f, -1.5f, 2.25f, 4);
+    const std::string sh = "struct SH4 { float c[4]; }; struct SHV { float3 c[4]; };";
+    expectPixel(sh, "SHV sh; sh.c[0] = A.xyz; sh.c[1] = A.yzw; sh.c[2] = A.zwx; sh.c[3] = A.wxy;"
+                    " SH4 shr = { sh.c[0].z, sh.c[1].z, sh.c[2].z, sh.c[3].z }; return float4(shr.c[0], shr.c[1], shr.c[2], shr.c[3]);",
+                {2.25f, 4, 0.5f, -1.5f}, a);
+    expectPixel("struct V { float2 a; float b; };", "V v = { A.x, A.y, A.z }; return float4(v.b, v.a.y, v.a.x, 1);", {2.25f, -1.5f, 0.5f, 1}, a);
+    expectPixel("", "float2 a[2] = { A.x, A.y, A.z, A.w }; return float4(a[1], a[0]);", {2.25f, 4, 0.5f, -1.5f}, a);
+    expectPixel("", "float c[4] = { A.xy, A.zw }; return float4(c[3], c[2], c[1], c[0]);", {4, 2.25f, -1.5f, 0.5f}, a);
+}
+
+// An element with a call that fills several components is evaluated once, and every element in
+// order: bump(q) runs once, after q.x is read and before the last q.x is (d = {A.x, A.x + 1,
+// A.y + 1, A.x + 1}; twice would give A.y + 2 and A.x + 2).
+TEST_P(HlslAcceptedForms, FlatInitializerElementsEvaluatedOnceInOrder) {
+    expectPixel("float4 bump(inout float4 q) { q += 1; return q; }",
+                "float4 q = A; float d[4] = { q.x, bump(q).xy, q.x }; return float4(d[0], d[1], d[2], d[3]);", {0.5f, 1.5f, -0.5f, 1.5f},
+                {0.5f, -1.5f, 2.25f, 4});
+}
+
 // Casts on the left of '=' that keep part of the target (xlate/src/rewrite/lvalue_casts.cpp): a matrix
 // cast keeps its rows and columns (the top left), an array cast the first components in order.
 TEST_P(HlslAcceptedForms, PartialAssignmentsThroughCasts) {
@@ -325,6 +362,48 @@ TEST_P(HlslAcceptedFormsSm4, NegatedComparisonsOfNaN) {
                 {0, 0, 0, 8}, {0, 1, 0, 0});
     expectPixel("", "float n = A.x / A.w; return float4(!(n <= A.y) ? 1 : 0, !(n > A.y) ? 2 : 0, (n < A.y) ? 4 : 0, !(n == A.y) ? 8 : 0);",
                 {1, 0, 0, 8}, {3, 1, 0, 1});
+}
+
+// Intel AOIT's AOIT.hlsl loads and stores its per-pixel data as structured-buffer elements of a
+// struct holding one array, to and from arrays of that array's type (fxc converts componentwise-
+// equal aggregates): `data.color = B[i];`, `uint4 a[2] = B[i];`, `RWB[i] = a;`. A compute shader
+// does each and the buffer read back holds the values moved, element by element.
+TEST(HlslAcceptedFormsCompute, StructuredBufferElementsConvertToAndFromArrays) {
+    const char* const source = R"(struct C { uint4 color[2]; };
+struct D { float4 depth[1]; uint4 color[2]; };
+StructuredBuffer<C> B : register(t0);
+RWStructuredBuffer<C> RWB : register(u0);
+[numthreads(1, 1, 1)]
+void Main()
+{
+    D d;
+    d.depth[0] = 0;
+    d.color = B[0];
+    uint4 a[2] = B[1];
+    a[0] += 100;
+    RWB[0] = a;
+    RWB[1] = d.color;
+}
+technique11 T { pass P { SetComputeShader(CompileShader(cs_5_0, Main())); } }
+)";
+    GraphicsDevice& device = testDevice();
+    Effect effect(device, EffectSource{source, "aoit_buffers.fx"});
+    std::vector<uint32_t> input(16);
+    for (uint32_t k = 0; k < 16; ++k) input[k] = k < 8 ? k + 1 : k + 3;  // B[0] = 1..8, B[1] = 11..18
+    StructuredBuffer in(device, 32, 2), out(device, 32, 2);
+    in.SetData(input);
+    out.SetData(std::vector<uint32_t>(16, 0));
+    device.SetShaderResource(0, in);
+    device.SetUnorderedAccess(0, out);
+    effect.CurrentTechnique->Passes[0].Apply();
+    device.DispatchCompute(1, 1, 1);
+    device.SetShaderResource(0, nullptr);
+    const std::vector<uint32_t> got = out.GetData<uint32_t>();
+    ASSERT_EQ(got.size(), 16u);
+    for (uint32_t k = 0; k < 8; ++k) {
+        EXPECT_EQ(got[k], input[8 + k] + (k < 4 ? 100u : 0u)) << "RWB[0] component " << k;  // B[1], a[0] + 100
+        EXPECT_EQ(got[8 + k], input[k]) << "RWB[1] component " << k;                         // B[0] through d.color
+    }
 }
 
 std::string modelName(const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; }

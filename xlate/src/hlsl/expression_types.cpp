@@ -325,10 +325,32 @@ private:
         auto declared = declaredVariable(syntax_, f_, tk.text, at_);
         const size_t use = at_++;
         if (!declared) return std::nullopt;
+        if (Type elements = structuredBufferOfStructs(declared->type)) return elements;
         Type type = typeNamed(declared->type);
         if (type) type->dims = declared->dims;
         if (type && isDegenerate(type->basic)) type->keptMatrix = !declaredLocally(tk.text, use);
         return type;
+    }
+
+    // `[RW]StructuredBuffer<S>` of a struct S: read as an array of S of no known size (dims {0}),
+    // so that indexing gives an S (Intel AOIT assigns `B[i]` to a componentwise-equal array).
+    // Buffers of numbers stay unknown: the rewrites that type numbers were not written for them.
+    Type structuredBufferOfStructs(const std::string& declared) const {
+        std::string compact;
+        for (char c : declared)
+            if (c != ' ' && c != '\t') compact += c;
+        for (const char* prefix : {"StructuredBuffer<", "RWStructuredBuffer<"}) {
+            const std::string p = prefix;
+            if (compact.rfind(p, 0) != 0 || compact.back() != '>') continue;
+            const std::string written = compact.substr(p.size(), compact.size() - p.size() - 1);
+            const std::string element = syntax_.resolveType(written);
+            if (!syntax_.findStruct(element)) return std::nullopt;
+            ExpressionType type;
+            type.structName = element;
+            type.dims = {0};
+            return type;
+        }
+        return std::nullopt;
     }
 
     // Whether `name` used at `use` is a local of the body or a parameter without a semantic (not

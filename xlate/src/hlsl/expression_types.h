@@ -1,9 +1,10 @@
 // The HLSL type of an expression in a function body, found from the tokens alone (before glslang
 // runs), with fxc's rules: literals (`1` int, `1.0` float, `1u` uint), variables as declared
-// (variable_declarations.h), struct members, swizzles, indexing, casts, constructors, the
-// effect's own functions, the common intrinsics, and the operators' common type (a scalar or a
-// one-component value takes the other's shape; two vectors the smaller; two matrices the smaller
-// rows and columns; the component type float > uint > int, bool arithmetic as int).
+// (variable_declarations.h), struct members, swizzles, indexing (a structured buffer of structs
+// gives its struct), casts, constructors, the effect's own functions, the common intrinsics, and
+// the operators' common type (a scalar or a one-component value takes the other's shape; two
+// vectors the smaller; two matrices the smaller rows and columns; the component type float > uint
+// > int, bool arithmetic as int).
 // Nothing where anything is not evident, so a rewrite built on it changes only what it understands.
 #pragma once
 
@@ -19,7 +20,7 @@ namespace fxport::xlate {
 struct ExpressionType {
     BasicType basic;           // numeric when basic.ok (scalar, vector or matrix)
     std::string structName;    // a struct's name (typedefs resolved) when not numeric
-    std::vector<int> dims;     // array sizes, outermost first
+    std::vector<int> dims;     // array sizes, outermost first (0: none known, a structured buffer of structs)
     bool vector1 = false;      // a one-component vector (float1, vector<float, 1>), not a scalar
     // A one-row or one-column matrix that stays a matrix to glslang (a uniform, a struct member, an
     // entry input: degenerate_matrices.h), or a value computed from one: glslang's type is not

@@ -90,30 +90,6 @@ void expandConstructorArguments(const EffectSyntax& syntax, const FxFunction& f,
     }
 }
 
-// `y = x;` at a statement's start, y and x arrays or structs of other types whose components
-// match one for one in type: one assignment per component.
-void rewriteEqualAssignment(const EffectSyntax& syntax, const FxFunction& f, size_t i, std::vector<TextEdit>& edits) {
-    const auto& t = syntax.tokens;
-    if (i + 3 >= f.body.end || !t[i].isIdent() || !t[i + 1].is("=") || !t[i + 2].isIdent() || !t[i + 3].is(";")) return;
-    if (!(t[i - 1].is(";") || t[i - 1].is("{") || t[i - 1].is("}"))) return;
-    auto y = declaredVariable(syntax, f, t[i].text, i);
-    auto x = declaredVariable(syntax, f, t[i + 2].text, i);
-    auto aggregate = [&](const Declared& d) { return !d.dims.empty() || syntax.findStruct(syntax.resolveType(d.type)); };
-    if (!y || !x || !aggregate(*y) || !aggregate(*x)) return;
-    if (syntax.resolveType(y->type) == syntax.resolveType(x->type) && y->dims == x->dims) return;  // glslang's
-    std::vector<AggregateComponent> lhs, rhs;
-    if (!aggregateComponents(syntax, y->type, y->dims, t[i].text, false, lhs, true) ||
-        !aggregateComponents(syntax, x->type, x->dims, t[i + 2].text, false, rhs, true) ||
-        lhs.size() != rhs.size())
-        return;
-    std::string text;
-    for (size_t k = 0; k < lhs.size(); ++k) {
-        if (lhs[k].scalar != rhs[k].scalar) return;  // fxc converts only between equal component types here
-        text += lhs[k].access + " = " + rhs[k].access + "; ";
-    }
-    edits.push_back({t[i].offset, t[i + 3].end, text});
-}
-
 // The vector an initializer's cast operand evaluates to, spelled so that repeating it is harmless:
 // a constructor of literals and names (`uint4(4, 4, 4, 4)`) or a variable (`v`), ending at `end`;
 // its component count, or 0.
@@ -192,7 +168,6 @@ void rewriteIn(const EffectSyntax& syntax, const FxFunction& f, std::vector<Text
     for (size_t i = f.body.begin + 1; i + 2 < f.body.end; ++i) {
         rewriteConstructor(syntax, f, i, edits);
         expandConstructorArguments(syntax, f, i, edits);
-        rewriteEqualAssignment(syntax, f, i, edits);
         auto cast = castAt(syntax, i, f.body.end);
         if (!cast) continue;
         const Declared& to = cast->first;
