@@ -1058,6 +1058,7 @@ private:
             tex.dx9Object = dx9;
             tex.token = nameToken;
             Tail tail = parseDeclaratorTail();
+            tex.arrayDims = tail.dims;
             tex.semantic = tail.semantic;
             tex.explicitUnit = tail.registerIndex;
             tex.registers = tail.registers;

@@ -93,6 +93,7 @@ struct FxTexture {
     std::string name;
     std::string type;  // texture, texture2D, textureCUBE ... (DX9 objects), Texture2D ... (DX10)
     bool dx9Object = false;
+    std::vector<int> arrayDims;  // `Texture2D T[5]` -> {5}
     int explicitUnit = -1;  // register(tN)
     std::vector<FxRegister> registers;  // every register() written
     std::string semantic;
