@@ -11,7 +11,7 @@
 // of the declared textures; `sampler sam[2]` indexed by constants is one sampler per element.
 // Also here, the UAV intrinsics glslang gets wrong: InterlockedCompareStore (dropped by glslang)
 // stores where the comparison holds and only there, on uint and int buffers; GetDimensions takes
-// a mix of uint and float out arguments.
+// a mix of uint and float out arguments, also on array elements, parameters and struct members.
 #include <cstring>
 
 #include "d3d11_test_support.h"
@@ -155,6 +155,92 @@ TEST(D3D11ResourceFidelity, CompareStoreStoresWhereTheComparisonHolds) {
     EXPECT_EQ(gotS[0], 4);
     EXPECT_EQ(gotS[1], -1);
     EXPECT_EQ(gotU[2], 302u) << "GetDimensions(uint, float) of a 3x2 texture";
+}
+
+// GetDimensions with float and uint out arguments mixed, on a texture that is not a plain global:
+// an element of a texture array (DeferredCoarsePixelShading's GBuffer.hlsl), a function parameter
+// and a struct's member, the last inside an `if`. fxc takes every such call; glslang called them
+// ambiguous. The sizes read back are the ones the textures were created with.
+const char* kArrayDimensions = R"(
+struct Layer { Texture2D<float4> tex; float scale; };
+Texture2D<float4> T[3] : register(t0);
+RWBuffer<uint> Out : register(u0);
+
+uint3 sizeOf(Texture2D<float4> t, uint mip)
+{
+    float w, h;
+    uint levels;
+    t.GetDimensions(mip, w, h, levels);
+    return uint3(w, h, levels);
+}
+
+[numthreads(1, 1, 1)]
+void Main()
+{
+    float w;
+    uint h, levels;
+    T[1].GetDimensions(1, w, h, levels);
+    Out[0] = uint(w);
+    Out[1] = h;
+    Out[2] = levels;
+    uint3 p = sizeOf(T[2], 0);
+    Out[3] = p.x;
+    Out[4] = p.y;
+    Out[5] = p.z;
+    Layer layer;
+    layer.tex = T[0];
+    layer.scale = 1;
+    uint lw = 0;
+    float lh = 0;
+    if (w > 0)
+        layer.tex.GetDimensions(lw, lh);
+    Out[6] = lw;
+    Out[7] = uint(lh);
+}
+)";
+
+// `levels` 0 is the full chain (fxport makes one level or all of them).
+ComPtr<ID3D11ShaderResourceView> mippedTexture(Device& d, UINT width, UINT height, UINT levels) {
+    D3D11_TEXTURE2D_DESC desc;
+    desc.Width = width;
+    desc.Height = height;
+    desc.MipLevels = levels;
+    desc.ArraySize = 1;
+    desc.Format = DXGI_FORMAT_R8G8B8A8_UNORM;
+    desc.BindFlags = D3D11_BIND_SHADER_RESOURCE;
+    ComPtr<ID3D11Texture2D> texture;
+    EXPECT_EQ(d.device->CreateTexture2D(&desc, nullptr, texture.GetAddressOf()), S_OK) << lastError();
+    ComPtr<ID3D11ShaderResourceView> view;
+    EXPECT_EQ(d.device->CreateShaderResourceView(texture.Get(), nullptr, view.GetAddressOf()), S_OK) << lastError();
+    return view;
+}
+
+TEST(D3D11ResourceFidelity, GetDimensionsMixedOutputsOfArrayElementsParametersAndMembers) {
+    Device d;
+    ComPtr<ID3DBlob> code = compile(kArrayDimensions, "Main", "cs_5_0", "array_dimensions.hlsl");
+    ASSERT_TRUE(code);
+    ComPtr<ID3D11ComputeShader> shader;
+    ASSERT_EQ(d.device->CreateComputeShader(code->GetBufferPointer(), code->GetBufferSize(), nullptr, shader.GetAddressOf()), S_OK)
+        << lastError();
+    // T[0] 5x3 (one level), T[1] 12x10 (full chain: 12x10, 6x5, 3x2, 1x1), T[2] 7x4 (7x4, 3x2, 1x1).
+    ComPtr<ID3D11ShaderResourceView> views[3] = {mippedTexture(d, 5, 3, 1), mippedTexture(d, 12, 10, 0), mippedTexture(d, 7, 4, 0)};
+    const std::vector<std::uint32_t> sentinel(8, 0xDEADBEEFu);
+    ComPtr<ID3D11Buffer> out = makeBuffer(d, sentinel.data(), 8 * 4, D3D11_BIND_UNORDERED_ACCESS);
+    D3D11_UNORDERED_ACCESS_VIEW_DESC desc{};
+    desc.ViewDimension = D3D11_UAV_DIMENSION_BUFFER;
+    desc.Format = DXGI_FORMAT_R32_UINT;
+    desc.Buffer.NumElements = 8;
+    ComPtr<ID3D11UnorderedAccessView> uav;
+    ASSERT_EQ(d.device->CreateUnorderedAccessView(out.Get(), &desc, uav.GetAddressOf()), S_OK) << lastError();
+
+    d.context->CSSetShader(shader.Get(), nullptr, 0);
+    for (UINT i = 0; i < 3; ++i) d.context->CSSetShaderResources(i, 1, views[i].GetAddressOfConst());
+    d.context->CSSetUnorderedAccessViews(0, 1, uav.GetAddressOfConst(), nullptr);
+    d.context->Dispatch(1, 1, 1);
+    ASSERT_EQ(lastError(), "");
+    const std::vector<std::uint32_t> got = readBuffer<std::uint32_t>(d, out.Get());
+    const std::vector<std::uint32_t> expected = {6, 5, 4, 7, 4, 3, 5, 3};
+    EXPECT_EQ(got, expected) << "T[1] at level 1 (w, h, levels), sizeOf(T[2], 0), layer.tex (T[0])";
 }
 
 UINT bindPoint(ID3DBlob* code, const char* name) {

@@ -72,14 +72,22 @@ INSTANTIATE_TEST_SUITE_P(
         BadUsage{"CompileWithoutOutput", "compile " + kEffect, "compile needs one input and -o OUT"},
         BadUsage{"DumpWithoutInput", "dump", "dump needs one input"},
         BadUsage{"CheckWithoutPath", "check", "check needs at least one path"},
-        BadUsage{"VersionWithExtra", "--version now", "option '--version' takes no further arguments (got 'now')"}),
+        BadUsage{"VersionWithExtra", "--version now", "option '--version' takes no further arguments (got 'now')"},
+        // An fxc switch fxport does not know was taken for a second input, and the message named none.
+        BadUsage{"UnknownSlashSwitch", "compile " + kEffect + " -o x /Xyz", "option '/Xyz' is unknown"},
+        BadUsage{"UnknownSlashSwitchDump", "dump " + kEffect + " /WX", "option '/WX' is unknown"},
+        BadUsage{"BackwardsCompatibilityRefused", "compile " + kEffect + " -o x /Gec", "option '/Gec' is fxc's backwards-compatibility mode"},
+        BadUsage{"AvoidFlowControlRefused", "compile " + kEffect + " -o x -Gfa", "option '-Gfa' makes fxc avoid flow control"},
+        BadUsage{"PreferFlowControlRefused", "check hlsl /Gfp", "option '/Gfp' makes fxc prefer flow control"},
+        BadUsage{"PartialPrecisionRefused", "compile " + kEffect + " -o x /Gpp", "option '/Gpp' makes fxc compute at partial precision"},
+        BadUsage{"BothPackings", "compile " + kEffect + " -o x /Zpr -Zpc", "options '/Zpr' and '-Zpc' exclude each other"}),
     [](const ::testing::TestParamInfo<BadUsage>& p) { return std::string(p.param.name); });
 
 TEST(Cli, HelpListsCommandsAndExitsZero) {
     for (const char* help : {"--help", "-h", "/?"}) {
         RunResult r = runCli(help);
         EXPECT_EQ(r.status, 0) << help << "\n" << r.output;
-        for (const char* word : {"compile", "dump", "check", "--version", "/I"})
+        for (const char* word : {"compile", "dump", "check", "--version", "/I", "/Zpr", "/Qstrip_reflect", "/Gec"})
             EXPECT_NE(r.output.find(word), std::string::npos) << help << " does not mention " << word;
     }
 }
@@ -89,7 +97,8 @@ TEST(Cli, EveryCommandHasHelpWithItsOptions) {
         const char* command;
         const char* option;
     };
-    for (Expect e : {Expect{"compile", "--depfile"}, Expect{"compile", "/Fo"}, Expect{"dump", "--reflection"}, Expect{"check", "--warnings"}}) {
+    for (Expect e : {Expect{"compile", "--depfile"}, Expect{"compile", "/Fo"}, Expect{"compile", "/Zpr"}, Expect{"dump", "--reflection"},
+                     Expect{"check", "--warnings"}}) {
         RunResult r = runCli(std::string(e.command) + " --help");
         EXPECT_EQ(r.status, 0) << e.command << "\n" << r.output;
         EXPECT_EQ(r.output.rfind(std::string("usage: fxport ") + e.command, 0), 0u) << r.output;
@@ -125,6 +134,44 @@ TEST(Cli, FxcAliasesCompile) {
     RunResult attached = runCli("compile '" + fx + "' --no-cache /Fo'" + out + "' /DWANTED=3");
     EXPECT_EQ(attached.status, 0) << attached.output;
     EXPECT_TRUE(fs::exists(out));
+}
+
+// fxc's /Zpr and /Zpc (also -Zpr): a matrix that names no majority is row_major or column_major,
+// as D3DCompile's D3DCOMPILE_PACK_MATRIX_* make it; the reflection says which.
+TEST(Cli, FxcPackingSwitchesSetTheDefaultMajority) {
+    fs::path dir = fs::path(::testing::TempDir()) / "fxport_cli_packing";
+    fs::create_directories(dir);
+    std::ofstream(dir / "m.hlsl") << "float4x4 M;\nfloat4 main(float4 p : SV_Position) : SV_Target { return mul(p, M); }\n";
+    const std::string dump = "dump '" + (dir / "m.hlsl").string() + "' --entry main --profile ps_5_0 ";
+    struct Expect {
+        const char* switches;
+        const char* majority;
+    };
+    for (Expect e : {Expect{"", "column_major"}, Expect{"/Zpr", "row_major"}, Expect{"-Zpr", "row_major"}, Expect{"/Zpc", "column_major"},
+                     Expect{"/Zpr /Zpr", "row_major"}}) {
+        RunResult r = runCli(dump + e.switches);
+        ASSERT_EQ(r.status, 0) << e.switches << "\n" << r.output;
+        EXPECT_NE(r.output.find(std::string("float4x4 M   @0 size 64 ") + e.majority + "\n"), std::string::npos) << e.switches << "\n" << r.output;
+    }
+}
+
+// fxc's optimisation, debug, strip and strictness switches (real build scripts: /O3 /Qstrip_reflect,
+// /nologo /O1, /Ges) are accepted and change nothing: the compiled effect is the same file.
+TEST(Cli, FxcSwitchesThatChangeNothingAreIgnored) {
+    fs::path dir = fs::path(::testing::TempDir()) / "fxport_cli_ignored";
+    fs::create_directories(dir);
+    const std::string plain = (dir / "plain.fxeffect").string(), flagged = (dir / "flagged.fxeffect").string();
+    ASSERT_EQ(runCli("compile " + kEffect + " --no-cache -o '" + plain + "'").status, 0);
+    RunResult r = runCli("compile " + kEffect + " --no-cache /O3 /Od -O0 /O1 /O2 /Zi /nologo /Qstrip_reflect /Qstrip_debug /Ges /Gis -o '" + flagged + "'");
+    ASSERT_EQ(r.status, 0) << r.output;
+    auto read = [](const std::string& path) {
+        std::ifstream in(path, std::ios::binary);
+        std::stringstream text;
+        text << in.rdbuf();
+        return text.str();
+    };
+    EXPECT_EQ(read(plain), read(flagged));
+    EXPECT_FALSE(read(plain).empty());
 }
 
 // --depfile names the output and the effect and every file it includes, in Make syntax.

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <regex>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "fxport/xlate/effect_compiler.h"
@@ -158,4 +159,66 @@ technique T { pass P { VertexShader = compile vs_4_0 VS(); PixelShader = compile
 )"));
     const CompiledShader& ps = pixelShader(e);
     EXPECT_TRUE(hasLine(ps.glsl, R"(flat in vec4 \w+;)")) << ps.glsl;
+}
+
+// An entry name with several overloads: d3dcompiler_47 (fxc) compiles the overload declared last,
+// counting each overload from its first declaration, so a later prototype of an earlier overload
+// changes nothing and an earlier prototype moves its overload ahead (vkd3d's
+// tests/entry-point-overload.shader_test, native results, in ValveSoftware/vkd3d). Each overload
+// returns its own constant, which SPIRV-Cross folds into the pixel shader's GLSL.
+namespace {
+
+std::string looseEntryGlsl(const std::string& source, const std::string& entry = "main") {
+    CompileOptions o;
+    o.useCache = false;
+    return compileShaderSource(source, "virtual/Overloads.hlsl", {{"virtual/Overloads.hlsl", entry, "ps_4_0"}}, o).shaders.at(0).glsl;
+}
+
+const char* const kNoInputs = "float4 main() : sv_target { return 0.25; }\n";
+const char* const kTexcoord = "float4 main(float tex : texcoord) : sv_target { return 0.75 + tex * 0; }\n";
+
+}  // namespace
+
+TEST(EntrySignature, OverloadedEntryIsTheOneDeclaredLast) {
+    for (const auto& [source, chosen, other] : {std::tuple{std::string(kNoInputs) + kTexcoord, "0.75", "0.25"},
+                                                std::tuple{std::string(kTexcoord) + kNoInputs, "0.25", "0.75"}}) {
+        const std::string glsl = looseEntryGlsl(source);
+        EXPECT_NE(glsl.find(chosen), std::string::npos) << source << glsl;
+        EXPECT_EQ(glsl.find(other), std::string::npos) << source << glsl;
+    }
+}
+
+TEST(EntrySignature, OverloadedEntryCountsFromItsFirstDeclaration) {
+    // A later prototype of the first overload does not make it the last declared.
+    std::string glsl = looseEntryGlsl(std::string(kTexcoord) + kNoInputs + "float4 main(float tex : texcoord) : sv_target;\n");
+    EXPECT_NE(glsl.find("0.25"), std::string::npos) << glsl;
+    // An earlier prototype of the second definition makes the first one the last declared.
+    glsl = looseEntryGlsl(std::string("float4 main() : sv_target;\n") + kTexcoord + kNoInputs);
+    EXPECT_NE(glsl.find("0.75"), std::string::npos) << glsl;
+    EXPECT_EQ(glsl.find("0.25"), std::string::npos) << glsl;
+}
+
+// MSAAFilter's and BakingLab's ToneMap: a helper overload, then the pixel shader of the same name.
+TEST(EntrySignature, OverloadedEntryAfterAHelperOfItsName) {
+    const std::string glsl = looseEntryGlsl(R"(
+float3 ToneMap(float3 color, float exposure) { return color * exposure; }
+float4 ToneMap(in float4 pos : SV_Position) : SV_Target0 { return float4(ToneMap(float3(1, 2, 4), 0.5), 1); }
+)",
+                                            "ToneMap");
+    EXPECT_NE(glsl.find("vec4(0.5, 1.0, 2.0, 1.0)"), std::string::npos) << glsl;
+}
+
+// With the helper declared last, fxc takes the helper as the entry, whose parameters have no
+// semantics: the error names the helper's parameter at the helper's line.
+TEST(EntrySignature, OverloadedEntryDeclaredLastWithoutSemanticsIsRefusedAtItsLine) {
+    try {
+        looseEntryGlsl("float4 ToneMap(in float4 pos : SV_Position) : SV_Target0 { return pos; }\n"
+                       "float3 ToneMap(float3 color, float exposure) { return color * exposure; }\n",
+                       "ToneMap");
+        FAIL() << "the helper overload compiled as the entry point";
+    } catch (const CompileError& e) {
+        const std::string text = e.diagnostics().empty() ? e.what() : e.diagnostics()[0].format();
+        EXPECT_NE(text.find("Overloads.hlsl(2,"), std::string::npos) << text;
+        EXPECT_NE(text.find("'color'"), std::string::npos) << text;
+    }
 }

@@ -6,7 +6,8 @@
 //   --root DIR: every #include must stay inside DIR (or an -I folder); default: includes resolve
 //   anywhere, as with fxc
 //   fxport --help | fxport COMMAND --help | fxport --version
-// fxc spellings are accepted beside the long forms: /E, /T, /D, /I, /Fo, /?.
+// fxc spellings are accepted beside the long forms: /E, /T, /D, /I, /Fo, /?; /Zpr and /Zpc set
+// the default matrix majority, fxc's optimisation/strip switches are ignored (fxc_switches.h).
 // Exit status: 0 success, 1 an effect failed to compile, 2 bad usage (one line naming the option).
 #include <unistd.h>
 
@@ -23,6 +24,7 @@
 
 #include "fxport/xlate/effect_compiler.h"
 #include "fxport/xlate/effect_file.h"
+#include "fxc_switches.h"
 #include "output_file.h"
 
 namespace fs = std::filesystem;
@@ -56,6 +58,12 @@ const char* kHelp =
     "  --entry NAME --profile P, /E NAME /T P\n"
     "                           a loose shader file (no technique): compile entry point NAME for\n"
     "                           profile P (vs_5_0, ps_4_0 ...); repeatable, one --profile per --entry\n"
+    "  /Zpr, /Zpc (-Zpr, -Zpc)  fxc's default matrix packing: matrices that name no majority are\n"
+    "                           row_major (/Zpr) or column_major (/Zpc, the default) until a\n"
+    "                           #pragma pack_matrix\n"
+    "  /O0../O3 /Od /Zi /nologo /Qstrip_reflect /Qstrip_debug /Ges /Gis\n"
+    "                           fxc switches that change nothing fxport emits: accepted, ignored;\n"
+    "                           /Gec /Gfa /Gfp /Gpp change what fxc computes and are refused\n"
     "  -h, --help, /?           help (after a command: that command's help)\n"
     "  --version                print fxport's version\n"
     "\n"
@@ -74,7 +82,10 @@ const char* commandHelp(const std::string& command) {
                "  --no-cache            do not read or write the compile cache\n"
                "  --depfile FILE        also write FILE: Make-style dependencies of OUT (the effect and\n"
                "                        every file it #includes), for Ninja/Make depfile support\n"
-               "  /E NAME, /T PROFILE   fxc's entry point and profile (for loose shaders)\n";
+               "  /E NAME, /T PROFILE   fxc's entry point and profile (for loose shaders)\n"
+               "  /Zpr, /Zpc            row-major / column-major matrices by default (fxc's packing)\n"
+               "  /O3, /nologo ...      fxc's optimisation, debug and strip switches: ignored (see\n"
+               "                        'fxport --help'); other unknown /X switches are errors\n";
     if (command == "dump")
         return "usage: fxport dump IN.fx [options]\n"
                "Prints the effect's uniform blocks, parameters, techniques with their states, and each\n"
@@ -106,6 +117,7 @@ struct Args {
     std::vector<std::string> given;  // options as typed, to say which do not belong to the command
     std::vector<ShaderEntry> entries;  // --entry NAME --profile P (fxc /E /T), for loose shader files
     int profiles = 0;
+    std::string majoritySwitch;  // /Zpr or /Zpc as typed, once given
 };
 
 // A loose shader file with --entry/--profile (fxc /E /T), else an effect.
@@ -142,13 +154,12 @@ std::vector<std::pair<std::string, std::string>> withFxcAliases(int argc, char**
         std::string s = argv[i];
         bool done = false;
         if (!s.empty() && s[0] == '/') {
-            std::error_code ec;
             for (const auto& a : kFxcAliases) {
                 size_t n = std::strlen(a.fxc);
                 if (s == a.fxc) {
                     out.push_back({a.ours, s});
                     done = true;
-                } else if (s.compare(0, n, a.fxc) == 0 && !fs::exists(fs::path("/") / s.substr(1, s.find('/', 1) - 1), ec)) {
+                } else if (s.compare(0, n, a.fxc) == 0 && cli::isSlashSwitch(s)) {
                     out.push_back({a.ours, a.fxc});
                     out.push_back({s.substr(n), s.substr(n)});
                     done = true;
@@ -159,6 +170,33 @@ std::vector<std::pair<std::string, std::string>> withFxcAliases(int argc, char**
         if (!done) out.push_back({s, s});
     }
     return out;
+}
+
+// fxc's value-less switches (fxc_switches.h), spelled /X or -X: 0 when `s` is none, 1 when it is
+// taken (or ignored), -1 when it is refused (`error` says why).
+int takeFxcSwitch(const std::string& s, Args& a, std::string& error) {
+    if (s.size() < 2 || (s[0] != '/' && s[0] != '-')) return 0;
+    const cli::FxcSwitch given = cli::fxcSwitch(s.substr(1));
+    switch (given.action) {
+        case cli::FxcSwitchAction::NotASwitch:
+            return 0;
+        case cli::FxcSwitchAction::Ignore:
+            return 1;
+        case cli::FxcSwitchAction::Refuse:
+            error = "option '" + s + "' " + given.why;
+            return -1;
+        case cli::FxcSwitchAction::RowMajor:
+        case cli::FxcSwitchAction::ColumnMajor:
+            break;
+    }
+    const std::string majority = given.action == cli::FxcSwitchAction::RowMajor ? "row_major" : "column_major";
+    if (!a.majoritySwitch.empty() && a.options.defaultMatrixMajority != majority) {
+        error = "options '" + a.majoritySwitch + "' and '" + s + "' exclude each other (matrices are row-major or column-major)";
+        return -1;
+    }
+    a.options.defaultMatrixMajority = majority;
+    a.majoritySwitch = s;
+    return 1;
 }
 
 bool parseArgs(int argc, char** argv, Args& a, std::string& error) {
@@ -200,6 +238,10 @@ bool parseArgs(int argc, char** argv, Args& a, std::string& error) {
         std::string v;
         if (s == "--help" || s == "-h") {
             a.help = true;
+            continue;
+        }
+        if (const int taken = takeFxcSwitch(s, a, error)) {
+            if (taken < 0) return false;
             continue;
         }
         if (!s.empty() && s[0] == '-') a.given.push_back(typed.rfind("-", 0) == 0 && typed.size() > 2 && typed[1] != '-' ? typed.substr(0, 2) : typed);
@@ -247,6 +289,9 @@ bool parseArgs(int argc, char** argv, Args& a, std::string& error) {
             a.showWarnings = true;
         } else if (!s.empty() && s[0] == '-') {
             error = "option '" + typed + "' is unknown (see 'fxport " + a.command + " --help')";
+            return false;
+        } else if (cli::isSlashSwitch(s)) {
+            error = "option '" + typed + "' is unknown: not an fxc switch fxport reads, nor an existing path (see 'fxport " + a.command + " --help')";
             return false;
         } else {
             a.inputs.push_back(s);

@@ -40,7 +40,9 @@ static size_t countArguments(const std::string& arguments) {
 const FxFunction* EffectSyntax::findEntry(const std::string& name, const std::string& literalArguments) const {
     const size_t given = countArguments(literalArguments);
     const FxFunction* first = nullptr;
+    const FxFunction* takes = nullptr;
     const FxFunction* takesFewer = nullptr;  // some uniforms left over: made parameters of the effect
+    auto later = [](const FxFunction* best, const FxFunction& f) { return !best || f.firstDeclared > best->firstDeclared; };
     for (const auto& f : functions) {
         if (f.name != name) continue;
         if (!first) first = &f;
@@ -50,10 +52,10 @@ const FxFunction* EffectSyntax::findEntry(const std::string& name, const std::st
                 ++uniforms;
                 if (p.defaultValue.empty()) ++required;
             }
-        if (given <= uniforms && given >= required) return &f;
-        if (given < uniforms && !takesFewer) takesFewer = &f;
+        if (given <= uniforms && given >= required && later(takes, f)) takes = &f;
+        if (given < uniforms && later(takesFewer, f)) takesFewer = &f;
     }
-    return takesFewer ? takesFewer : first;
+    return takes ? takes : takesFewer ? takesFewer : first;
 }
 const FxStruct* EffectSyntax::findStruct(const std::string& name) const {
     for (const auto& s : structs)
@@ -886,8 +888,15 @@ private:
         }
         if (accept(";")) {  // prototype: its attributes are the function's (below)
             if (!f.attributes.empty()) prototypeAttributes_.emplace(name, PrototypeAttributes{f.attributes, declarationStart, start});
+            prototypes_.push_back({name, parameterTypes(f), nameToken});
             return;
         }
+        f.firstDeclared = nameToken;
+        for (const auto& p : prototypes_)
+            if (p.name == name && p.parameterTypes == parameterTypes(f)) {
+                f.firstDeclared = p.token;
+                break;
+            }
         if (!cur().is("{")) {
             if (isEnd()) fail(diag::kUnterminated, "function '" + name + "' has no body before the end of the file", nameToken);
             fail(diag::kSyntax, "expected '{' to open the body of function '" + name + "', found '" + cur().text + "'", pos_);
@@ -1058,6 +1067,7 @@ private:
             tex.dx9Object = dx9;
             tex.token = nameToken;
             Tail tail = parseDeclaratorTail();
+            tex.arrayDims = tail.dims;
             tex.semantic = tail.semantic;
             tex.explicitUnit = tail.registerIndex;
             tex.registers = tail.registers;
@@ -1216,6 +1226,24 @@ private:
         size_t begin = 0, end = 0;  // its tokens
     };
     std::map<std::string, PrototypeAttributes> prototypeAttributes_;  // by function name, the first prototype with attributes
+    // Every prototype, in source order: where each overload was first declared (FxFunction::firstDeclared).
+    struct Prototype {
+        std::string name;
+        std::vector<std::string> parameterTypes;
+        size_t token = 0;
+    };
+    std::vector<Prototype> prototypes_;
+
+    // What tells overloads apart: each parameter's type (typedefs resolved) and array sizes.
+    std::vector<std::string> parameterTypes(const FxFunction& f) const {
+        std::vector<std::string> types;
+        for (const auto& p : f.parameters) {
+            std::string type = syntax_.resolveType(p.type);
+            for (int d : p.arrayDims) type += "[" + std::to_string(d) + "]";
+            types.push_back(std::move(type));
+        }
+        return types;
+    }
 };
 
 }  // namespace

@@ -93,6 +93,7 @@ struct FxTexture {
     std::string name;
     std::string type;  // texture, texture2D, textureCUBE ... (DX9 objects), Texture2D ... (DX10)
     bool dx9Object = false;
+    std::vector<int> arrayDims;  // `Texture2D T[5]` -> {5}
     int explicitUnit = -1;  // register(tN)
     std::vector<FxRegister> registers;  // every register() written
     std::string semantic;
@@ -159,6 +160,10 @@ struct FxFunction {
     TokenSpan declaration;  // attributes, signature and body
     bool hasStreamParameter = false;  // a geometry shader (inout TriangleStream<T> ...)
     size_t token = 0;
+    // The name token of this overload's first declaration: a prototype of the same parameter types
+    // before the definition, else `token`. fxc's entry point among overloads is the one declared
+    // last by this measure (findEntry).
+    size_t firstDeclared = 0;
     std::string attributes;  // e.g. "[maxvertexcount(3)]"
     TokenSpan attributeTokens;  // where `attributes` is written: before the function, or its first prototype with attributes
     // Where the body may declare each name: the token positions of `T name` (an identifier after an
@@ -195,9 +200,11 @@ struct EffectSyntax {
     std::vector<Diagnostic> warnings;  // what the parser ignored, with its place
 
     const FxFunction* findFunction(const std::string& name) const;
-    // The overload of `name` that `compile ps_2_0 name(literalArguments)` means: the one whose
-    // `uniform` parameters take that many literals (fewer where the rest have defaults or get none);
-    // else the first of that name.
+    // The overload of `name` that `compile ps_2_0 name(literalArguments)` (or fxc /E name) means:
+    // of those whose `uniform` parameters take that many literals (else of those that take fewer,
+    // the rest becoming parameters), the one first declared last, as d3dcompiler_47 picks an
+    // overloaded entry point (a later prototype of an earlier overload does not count, an earlier
+    // prototype does); else the first of that name.
     const FxFunction* findEntry(const std::string& name, const std::string& literalArguments) const;
     const FxStruct* findStruct(const std::string& name) const;
     const FxSampler* findSampler(const std::string& name) const;

@@ -5,6 +5,7 @@
 
 #include "hlsl/call_arguments.h"
 #include "hlsl/expression_types.h"
+#include "hlsl/method_receivers.h"
 
 namespace fxport::xlate {
 
@@ -20,6 +21,14 @@ size_t dimensionCount(const std::string& type) {
     return 0;
 }
 
+// Whether a statement may start after token `before`: after `;`, a brace, a control statement's
+// `)`, `else`, `do` or a case label. The rewrite turns the call into a block, a statement too.
+bool startsStatement(const Token& before) {
+    for (const char* s : {";", "{", "}", ")", "else", "do", ":"})
+        if (before.is(s)) return true;
+    return false;
+}
+
 }  // namespace
 
 std::vector<TextEdit> mixedDimensionOutputs(const EffectSyntax& syntax) {
@@ -27,17 +36,19 @@ std::vector<TextEdit> mixedDimensionOutputs(const EffectSyntax& syntax) {
     std::vector<TextEdit> edits;
     for (const auto& f : syntax.functions) {
         for (size_t i = f.body.begin + 1; i + 3 < f.body.end; ++i) {
-            // `name . GetDimensions (` at the start of a statement, `) ;` after it.
-            if (!t[i].is("GetDimensions") || !t[i - 1].is(".") || i < 2 || !t[i - 2].isIdent() || !t[i + 1].is("(")) continue;
-            const size_t start = i - 2;
-            if (!(t[start - 1].is(";") || t[start - 1].is("{") || t[start - 1].is("}"))) continue;
+            // `receiver . GetDimensions (` as a statement of its own, `) ;` after it; the receiver
+            // any texture (`T`, `T[0]`, a parameter, `s.tex`).
+            if (!t[i].is("GetDimensions") || !t[i - 1].is(".") || !t[i + 1].is("(")) continue;
+            const auto receiver = methodReceiver(syntax, f, i - 1);
+            if (!receiver) continue;
+            const size_t start = receiver->begin;
+            if (!startsStatement(t[start - 1])) continue;
             auto spans = callArgumentSpans(t, i + 1, f.body.end);
             if (spans.empty()) continue;
             const size_t close = spans.back().second;  // the ')'
             if (close + 1 >= f.body.end || !t[close + 1].is(";")) continue;
             // With a mip level (the first argument, an input) there is one more output, the levels.
-            const FxTexture* texture = syntax.findTexture(t[start].text);
-            const size_t dims = texture ? dimensionCount(texture->type) : 0;
+            const size_t dims = dimensionCount(receiver->type);
             if (dims == 0 || (spans.size() != dims && spans.size() != dims + 2)) continue;
             const size_t firstOut = spans.size() == dims ? 0 : 1;
             std::set<std::string> scalars;
@@ -51,7 +62,7 @@ std::vector<TextEdit> mixedDimensionOutputs(const EffectSyntax& syntax) {
             // An argument of unknown type (expression_types.h misses `uint a, b;` locals) may be
             // either: temporaries are right for any numeric out argument.
             if (known && (scalars.size() < 2 || !scalars.count("float"))) continue;
-            std::string temps, call = t[start].text + ".GetDimensions(", assign;
+            std::string temps, call = syntax.text(TokenSpan{start, i - 1}) + ".GetDimensions(", assign;
             for (size_t k = 0; k < spans.size(); ++k) {
                 const std::string temp = "fxport_dim" + std::to_string(k);
                 const std::string argument = syntax.text(TokenSpan{spans[k].first, spans[k].second});
