@@ -181,6 +181,7 @@ struct VSOut {
     float4 gamma : GAMMA;
     float delta : TEXCOORD2;
     nointerpolation uint cell : CELL;
+    float4 world : POSITION0;  // from SM4 a user semantic beside SV_Position (NvCloth, FaceWorks)
 };
 VSOut VS(uint id : SV_VertexID)
 {
@@ -191,6 +192,7 @@ VSOut VS(uint id : SV_VertexID)
     o.gamma = float4(6, 7, 8, 9);
     o.delta = 10;
     o.cell = 11;
+    o.world = float4(12, 13, 14, 15);
     return o;
 }
 )";
@@ -205,8 +207,10 @@ const char* kReaders[] = {
     // One user semantic only, declared in a struct.
     R"(struct In { float4 p : SV_Position; float4 g : GAMMA; };
        float4 PS(In i) : SV_Target { return i.g; })",
+    // POSITION0 is the varying the vertex shader wrote there, not the pixel's position.
+    R"(float4 PS(float4 p : SV_Position, float4 w : POSITION0) : SV_Target { return w; })",
 };
-const std::array<float, 4> kRead[] = {{6, 9, 10, 11}, {7, 4, 10, 11}, {6, 7, 8, 9}};
+const std::array<float, 4> kRead[] = {{6, 9, 10, 11}, {7, 4, 10, 11}, {6, 7, 8, 9}, {12, 13, 14, 15}};
 
 TEST(D3D11StageLinks, ShadersCompiledApartLinkBySemantic) {
     Device d;
@@ -261,7 +265,7 @@ TEST(D3D11StageLinks, ReflectionListsEachStageOutputs) {
     ASSERT_TRUE(vs && ps);
     std::vector<std::string> written = outputsOf(vs.Get());
     std::sort(written.begin() + 1, written.end());
-    EXPECT_EQ(written, (std::vector<std::string>{"SV_Position0 sv", "ALPHA0", "BETA0", "CELL0", "GAMMA0", "TEXCOORD2"}));
+    EXPECT_EQ(written, (std::vector<std::string>{"SV_Position0 sv", "ALPHA0", "BETA0", "CELL0", "GAMMA0", "POSITION0", "TEXCOORD2"}));
     EXPECT_EQ(outputsOf(ps.Get()), (std::vector<std::string>{"SV_Target0 sv", "SV_Target1 sv"}));
 }
 

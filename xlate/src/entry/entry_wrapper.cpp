@@ -364,7 +364,9 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
         }
         // Pixel shader inputs.
         const std::string& b = leaf.semanticBase;
-        if (b == "POSITION" || b == "SV_POSITION" || b == "VPOS") {
+        // From SM4 on POSITIONn is a user semantic like any other (only SV_Position is the pixel's
+        // position): NvCloth's and FaceWorks' shaders pass a world position on POSITION0 beside it.
+        if ((b == "POSITION" && profile.major < 4) || b == "SV_POSITION" || b == "VPOS") {
             if (!fragCoordDeclared) addParam("float4 fxport_fragCoord : SV_Position");
             fragCoordDeclared = true;
             // D3D9 VPOS counts pixels from 0 at pixel centres; GL's gl_FragCoord has them at +0.5.
@@ -402,16 +404,27 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
     // beside one.
     if (vertex && profile.major >= 4 && !writesPosition(outputs)) nextToGeometryShader = true;
     std::string positionMember;
+    // POSITION0 is the position up to SM3; from SM4 on only when no SV_Position is written (fxc
+    // without /Gec would not rasterise it; taken as the position, it also stays the user varying
+    // a pixel shader of SM4 reads on POSITION0).
+    const bool writesSvPosition = std::any_of(outputs.begin(), outputs.end(), [](const Leaf& l) { return l.semanticBase == "SV_POSITION"; });
     int m = 0;
     for (const Leaf& leaf : outputs) {
         const std::string& b = leaf.semanticBase;
         std::string name = "o" + std::to_string(m++);
         if (vertex) {
-            if ((b == "POSITION" && leaf.semanticIndex == 0 && !nextToGeometryShader) || b == "SV_POSITION") {
+            const bool position = b == "SV_POSITION" || (b == "POSITION" && leaf.semanticIndex == 0 && !nextToGeometryShader &&
+                                                         (profile.major < 4 || !writesSvPosition));
+            if (position) {
                 outStruct << "    float4 " << name << " : SV_Position;\n";
                 copyOut << "    o." << name << " = " << widen(leafValue(leaf), leaf.components) << ";\n";
                 if (leaf.components < 4) copyOut << "    o." << name << ".w = 1;\n";
                 positionMember = name;
+                if (b == "POSITION" && profile.major >= 4) {
+                    const std::string varying = "o" + std::to_string(m++);
+                    outStruct << "    float4 " << varying << " : POSITION0;\n";
+                    copyOut << "    o." << varying << " = " << widen(leafValue(leaf), leaf.components) << ";\n";
+                }
             } else if (profile.major < 4 && ((b == "PSIZE" && leaf.components > 1) || (b == "FOG" && profile.major < 3 && leaf.components > 1))) {
                 // D3D9's oPts and (before vs_3_0) oFog registers hold one float (fxc rejects more).
                 w.error = "vertex shader output '" + leaf.access + "' has semantic " + b + " in " + profile.name +

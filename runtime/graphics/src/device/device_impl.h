@@ -283,8 +283,9 @@ struct GraphicsDevice::Impl {
     BackendObject createRenderbuffer();
     void deleteRenderbuffer(BackendObject& name);
     // Programs are shared by (stage, GLSL text) and reference-counted. `stage`: 0 vertex .. 5 compute.
-    // `captured`: what stream output writes (Backend::createProgram), for a shader that streams.
-    BackendObject createProgram(int stage, const std::string& source, const std::string& label, const std::vector<std::string>& captured = {});
+    // The program of `shader` at `stage` from `glsl` (the shader's own, or a variant of it): what
+    // stream output writes comes from the shader (Backend::createProgram).
+    BackendObject createProgram(int stage, const xlate::CompiledShader& shader, const std::string& glsl, const std::string& label);
     struct CachedProgram {
         BackendObject program = 0;
         int references = 0;

@@ -96,7 +96,7 @@ static const FixedFunctionVariant& variantFor(GraphicsDevice::Impl& d, const Sha
     if (!glsl) {
         std::cerr << "fxport: " << program.label << ": " << what << " cannot be emulated (" << why << "); drawing without it\n";
     } else {
-        v.program = d.createProgram(program.stage, *glsl, program.label + " [" + what + "]", xlate::capturedVaryings(program.shader->streamOutput));
+        v.program = d.createProgram(program.stage, *program.shader, *glsl, program.label + " [" + what + "]");
         for (int u = 0; u < kUniformCount; ++u) v.locations[std::size_t(u)] = d.backend->uniformLocation(v.program, kUniformNames[u]);
     }
     return program.fixedFunctionVariants.emplace(key, v).first->second;

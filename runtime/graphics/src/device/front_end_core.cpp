@@ -209,7 +209,7 @@ ShaderCode::ShaderCode(GraphicsDevice& device, std::shared_ptr<const xlate::Comp
     program_->shader = &s;
     program_->label = label;
     program_->mayDiscard = s.glsl.find("discard") != std::string::npos;
-    program_->program = deviceImpl(device).createProgram(stage, s.glsl, label, xlate::capturedVaryings(s.streamOutput));
+    program_->program = deviceImpl(device).createProgram(stage, s, s.glsl, label);
 }
 
 ShaderCode::~ShaderCode() { disposeFromDestructor(); }

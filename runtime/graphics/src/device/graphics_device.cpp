@@ -715,13 +715,18 @@ void GraphicsDevice::Impl::deleteRenderbuffer(BackendObject& name) {
     --live.renderbuffers;
     name = 0;
 }
-BackendObject GraphicsDevice::Impl::createProgram(int stage, const std::string& source, const std::string& label,
-                                                  const std::vector<std::string>& captured) {
+BackendObject GraphicsDevice::Impl::createProgram(int stage, const xlate::CompiledShader& shader, const std::string& source,
+                                                  const std::string& label) {
     // Identical GLSL for the same stage (and the same captured outputs) shares one program (a
     // model's per-part material effects, the same effect loaded twice): effects hold references,
-    // the last release deletes it.
+    // the last release deletes it. The varyings' semantics are part of the key: stages compiled
+    // apart are linked per program (stage_links.cpp), and `return i.a;` reading GAMMA0 at
+    // location 29 is the same GLSL as reading POSITION0 there.
+    const std::vector<std::string> captured = xlate::capturedVaryings(shader.streamOutput);
     std::string key = source;
     for (const std::string& c : captured) key += "\n// captured " + c;
+    for (const xlate::Varying& v : shader.varyingInputs) key += "\n// in " + v.semantic + "=" + std::to_string(v.location);
+    for (const xlate::Varying& v : shader.varyingOutputs) key += "\n// out " + v.semantic + "=" + std::to_string(v.location);
     auto cached = programCache.find({stage, key});
     if (cached != programCache.end()) {
         ++cached->second.references;

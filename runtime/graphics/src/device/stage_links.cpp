@@ -37,7 +37,7 @@ const ShaderProgram* GraphicsDevice::Impl::makeLinkedReader(const ShaderProgram&
     linked->program.label = reader.label + " [inputs linked to " + writer.label + "]";
     linked->program.mayDiscard = reader.mayDiscard;
     linked->program.program =
-        createProgram(reader.stage, linked->shader.glsl, linked->program.label, xlate::capturedVaryings(linked->shader.streamOutput));
+        createProgram(reader.stage, linked->shader, linked->shader.glsl, linked->program.label);
     return &linkedReaders.emplace(key, std::move(linked)).first->second->program;
 }
 

@@ -423,7 +423,7 @@ Effect::Impl::Code& Effect::Impl::addCode(std::shared_ptr<const xlate::CompiledE
             p.shader = &shader;
             p.label = displayName + ": " + shader.entryPoint + " (" + shader.profile.name + ")";
             p.mayDiscard = shader.glsl.find("discard") != std::string::npos;
-            p.program = device.createProgram(int(shader.profile.stage), shader.glsl, p.label, xlate::capturedVaryings(shader.streamOutput));
+            p.program = device.createProgram(int(shader.profile.stage), shader, shader.glsl, p.label);
             code->programs.push_back(p);
             code->reads.push_back(blockReadsOf(shader, blocks.size()));
             code->samplers.push_back(samplerSlotsOf(shader, *this));
