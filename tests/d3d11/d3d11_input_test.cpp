@@ -124,6 +124,46 @@ TEST_F(InstancingTest, ThreeSlotsAndStepRatesDrawWhatTheCpuComputes) {
     EXPECT_EQ(differing, 0);
 }
 
+// SV_InstanceID counts the draw's instances from 0 whatever StartInstanceLocation is (D3D; GL's
+// gl_InstanceID too, Vulkan's InstanceIndex, which glslang maps it to, adds the base). Two
+// instances of one full-target triangle: the second, id 1, is what stays.
+TEST(D3D11SystemValues, InstanceIdCountsFromZeroAfterAStartInstanceLocation) {
+    Device d;
+    const char* source = R"(
+        struct V { float4 p : SV_Position; nointerpolation uint id : INSTANCE; };
+        V VS(uint v : SV_VertexID, uint i : SV_InstanceID) {
+            V o; o.p = float4(v == 1 ? 3.0 : -1.0, v == 2 ? -3.0 : 1.0, 0, 1); o.id = i; return o;
+        }
+        float4 PS(V i) : SV_Target { return float4(i.id, 0, 0, 1); })";
+    ComPtr<ID3DBlob> vsCode = compile(source, "VS", "vs_5_0", "instance_id.hlsl"), psCode = compile(source, "PS", "ps_5_0", "instance_id.hlsl");
+    ASSERT_TRUE(vsCode && psCode);
+    ComPtr<ID3D11VertexShader> vs;
+    ComPtr<ID3D11PixelShader> ps;
+    ASSERT_EQ(d.device->CreateVertexShader(vsCode->GetBufferPointer(), vsCode->GetBufferSize(), nullptr, vs.GetAddressOf()), S_OK) << lastError();
+    ASSERT_EQ(d.device->CreatePixelShader(psCode->GetBufferPointer(), psCode->GetBufferSize(), nullptr, ps.GetAddressOf()), S_OK) << lastError();
+    D3D11_TEXTURE2D_DESC desc{};
+    desc.Width = desc.Height = 4;
+    desc.MipLevels = desc.ArraySize = 1;
+    desc.Format = DXGI_FORMAT_R32G32B32A32_FLOAT;
+    desc.SampleDesc.Count = 1;
+    desc.BindFlags = D3D11_BIND_RENDER_TARGET;
+    ComPtr<ID3D11Texture2D> target;
+    ASSERT_EQ(d.device->CreateTexture2D(&desc, nullptr, target.GetAddressOf()), S_OK) << lastError();
+    ComPtr<ID3D11RenderTargetView> rtv;
+    ASSERT_EQ(d.device->CreateRenderTargetView(target.Get(), nullptr, rtv.GetAddressOf()), S_OK) << lastError();
+    d.context->OMSetRenderTargets(1, rtv.GetAddressOfConst(), nullptr);
+    D3D11_VIEWPORT vp{};
+    vp.Width = vp.Height = 4;
+    vp.MaxDepth = 1;
+    d.context->RSSetViewports(1, &vp);
+    d.context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+    d.context->VSSetShader(vs.Get(), nullptr, 0);
+    d.context->PSSetShader(ps.Get(), nullptr, 0);
+    d.context->DrawInstanced(3, 2, 0, 5);
+    ASSERT_EQ(lastError(), "");
+    for (const std::array<float, 4>& t : readTexels<std::array<float, 4>>(d, target.Get())) ASSERT_EQ(t, (std::array<float, 4>{1, 0, 0, 1}));
+}
+
 TEST_F(InstancingTest, InvalidSlotDescriptionsNameTheFieldAndValue) {
     auto rejected = [&](HRESULT code, D3D11_INPUT_ELEMENT_DESC changed, int index, const std::string& words) {
         D3D11_INPUT_ELEMENT_DESC elements[3] = {kLayout[0], kLayout[1], kLayout[2]};

@@ -347,6 +347,10 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
         options.separate_shader_objects = true;  // program pipelines: any VS with any PS
         options.vertex.fixup_clipspace = false;  // D3D's z in [0, w] is kept: the runtime uses glClipControl
         options.vertex.flip_vert_y = false;      // and an upper-left origin, so no flip either
+        // D3D's SV_InstanceID counts from 0 whatever StartInstanceLocation is, as GL's gl_InstanceID
+        // does; Vulkan's InstanceIndex (glslang's mapping) adds the base instance, which SPIRV-Cross
+        // would add back through gl_BaseInstanceARB.
+        options.vertex.support_nonzero_base_instance = false;
         compiler.set_common_options(options);
 
         // ---- uniform blocks
