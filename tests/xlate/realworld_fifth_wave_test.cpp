@@ -76,3 +76,28 @@ TEST(RealworldFifthWave, TakenErrorKeepsItsText) {
     ASSERT_FALSE(errors.empty());
     EXPECT_EQ(errors[0].location.line, 2);
 }
+
+// HolographicSpatialMapping's `min16float4x4 normalToWorld` in a cbuffer, and local minimum-precision
+// matrices: each is its 32-bit matrix (fxc keeps 32-bit storage in constant buffers), so the
+// members after them sit where float4x4 and int2x2 would put them.
+TEST(RealworldFifthWave, MinimumPrecisionMatrixNames) {
+    CompiledEffect e = compileLoose("cbuffer C : register(b0) { min16float4x4 m; min16int2x2 k; float4 after; };\n"
+                                    "float4 main(float4 p : SV_Position) : SV_Target {\n"
+                                    "    min16float3x3 r = (min16float3x3)m;\n"
+                                    "    matrix<min16uint, 2, 2> u = (matrix<min16uint, 2, 2>)k;\n"
+                                    "    min10float2x2 h = min10float2x2(1, 2, 3, 4);\n"
+                                    "    return float4(mul(p.xyz, r), h[1][0]) + mul(p, m) + after + u[1][1];\n"
+                                    "}\n",
+                                    "ps_5_0");
+    auto offsetOf = [&](const std::string& name) {
+        for (const auto& p : e.parameters)
+            if (p.name == name) return p.offset;
+        return -2;
+    };
+    EXPECT_EQ(offsetOf("m"), 0);
+    EXPECT_EQ(offsetOf("k"), 64);
+    EXPECT_EQ(offsetOf("after"), 96);  // int2x2: two registers, the second half used
+    const std::string& glsl = e.shaders.at(0).glsl;
+    EXPECT_NE(glsl.find("mat3"), std::string::npos) << glsl;
+}
+
