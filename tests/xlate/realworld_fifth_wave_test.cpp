@@ -101,3 +101,18 @@ TEST(RealworldFifthWave, MinimumPrecisionMatrixNames) {
     EXPECT_NE(glsl.find("mat3"), std::string::npos) << glsl;
 }
 
+// MiniEngine's `WorkCounts.Store2(0, 0);`: a scalar value is converted to the uintN parameter,
+// fxc's argument conversion: replicated, a float value-converted (2.75 -> 2). The GLSL stores it in
+// every word of the store (glslang folds the constant ones), and a variable likewise.
+TEST(RealworldFifthWave, ByteAddressStoreOfAScalar) {
+    CompiledEffect e = compileLoose("RWByteAddressBuffer C : register(u0);\n"
+                                    "[numthreads(64, 1, 1)]\n"
+                                    "void main(uint GI : SV_GroupIndex) { C.Store2(4, 7); C.Store3(16, 2.75); C.Store4(32, GI); }\n",
+                                    "cs_5_0");
+    const std::string& glsl = e.shaders.at(0).glsl;
+    for (const char* store : {"._data[1] = 7u;", "._data[2] = 7u;", "._data[4] = 2u;", "._data[5] = 2u;", "._data[6] = 2u;",
+                              "._data[8] = gl_LocalInvocationIndex;", "._data[11] = gl_LocalInvocationIndex;"})
+        EXPECT_NE(glsl.find(store), std::string::npos) << store << "\n" << glsl;
+    EXPECT_EQ(glsl.find("._data[3] ="), std::string::npos) << glsl;
+}
+

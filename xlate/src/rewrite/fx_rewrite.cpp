@@ -16,6 +16,7 @@
 #include "rewrite/refract_eta.h"
 #include "rewrite/tess_factor_intrinsics.h"
 #include "rewrite/compare_store.h"
+#include "rewrite/byte_address_stores.h"
 #include "rewrite/interlocked_values.h"
 #include "rewrite/mixed_dimension_outputs.h"
 #include "rewrite/switch_labels.h"
@@ -433,6 +434,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : tessFactorIntrinsics(syntax)) edits.push_back(std::move(e));
     for (auto& e : interlockedValueConversions(syntax)) edits.push_back(std::move(e));  // before compare_store: see there
     for (auto& e : compareStoreAsExchange(syntax)) edits.push_back(std::move(e));
+    for (auto& e : byteAddressStoreValues(syntax)) edits.push_back(std::move(e));
     for (auto& e : mixedDimensionOutputs(syntax)) edits.push_back(std::move(e));
     for (auto& e : switchLabelsAsIntegers(syntax)) edits.push_back(std::move(e));
     for (auto& e : matrixConstructorArgumentsAsRows(syntax)) edits.push_back(std::move(e));
