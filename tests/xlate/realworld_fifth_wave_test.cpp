@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include "fxport/xlate/effect_compiler.h"
 #include "fxport/xlate/effect_file.h"
@@ -116,3 +117,27 @@ TEST(RealworldFifthWave, ByteAddressStoreOfAScalar) {
     EXPECT_EQ(glsl.find("._data[3] ="), std::string::npos) << glsl;
 }
 
+// MiniEngine's ModelViewerPS: textures at register(t64) and on (D3D11 has t0..t127). The t register
+// stays the D3D binding; the GL units are the shader's own, each texture its own unit in range.
+TEST(RealworldFifthWave, TextureRegistersAboveThirtyOne) {
+    CompiledEffect e = compileLoose("Texture2D<float> A : register(t64);\n"
+                                    "Texture2DArray<float> B : register(t127);\n"
+                                    "Texture2D<float4> C : register(t1);\n"
+                                    "SamplerState S : register(s0);\n"
+                                    "SamplerComparisonState Z : register(s1);\n"
+                                    "float4 main(float4 p : SV_Position) : SV_Target {\n"
+                                    "    return A.Sample(S, p.xy) + B.SampleCmp(Z, p.xyz, 0.5) + A.Load(int3(p.xy, 0)) + C.Sample(S, p.xy);\n"
+                                    "}\n",
+                                    "ps_5_0");
+    std::map<int, int> unitOfRegister;
+    for (const SamplerBinding& b : e.shaders.at(0).samplers) {
+        EXPECT_GE(b.unit, 0);
+        EXPECT_LT(b.unit, 32);
+        if (unitOfRegister.count(b.textureRegister)) continue;  // A with S and A loaded may share or not
+        for (const auto& [reg, unit] : unitOfRegister) EXPECT_NE(unit, b.unit) << "t" << reg << " and t" << b.textureRegister;
+        unitOfRegister[b.textureRegister] = b.unit;
+    }
+    EXPECT_TRUE(unitOfRegister.count(64));
+    EXPECT_TRUE(unitOfRegister.count(127));
+    EXPECT_EQ(unitOfRegister.at(1), 1);  // a register within the units keeps its unit
+}
