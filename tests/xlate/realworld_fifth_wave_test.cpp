@@ -141,3 +141,19 @@ TEST(RealworldFifthWave, TextureRegistersAboveThirtyOne) {
     EXPECT_TRUE(unitOfRegister.count(127));
     EXPECT_EQ(unitOfRegister.at(1), 1);  // a register within the units keeps its unit
 }
+
+// FidelityFX's ffx_a.h defines `AToThreeF1(AF1)` and `AToThreeF1(AH1)` (float, min16float) and the
+// FSR pass calls neither: fxc keeps them apart; to glslang they are one function defined twice.
+// Uncalled, the earlier is renamed; called ones still get fxc's choice (2.0 for the float
+// argument, the min16float overload adding 10).
+TEST(RealworldFifthWave, UncalledMinimumPrecisionOverloadTwins) {
+    const std::string overloads = "float f(float c) { return c; }\nmin16float f(min16float c) { return c + 10; }\n"
+                                  "int g(min16int c) { return c; }\nint g(int c) { return c; }\n";
+    CompiledEffect e = compileLoose(overloads + "float4 main() : SV_Target { return 1; }\n", "ps_5_0");
+    EXPECT_FALSE(e.shaders.at(0).glsl.empty());
+    e = compileLoose(overloads + "float4 main(float4 p : SV_Position) : SV_Target { min16float h = p.x; return float4(f(2.0), f(h), 0, 1); }\n",
+                     "ps_5_0");
+    const std::string& glsl = e.shaders.at(0).glsl;
+    EXPECT_NE(glsl.find("10.0"), std::string::npos) << glsl;  // the min16float overload, called for h
+}
+
