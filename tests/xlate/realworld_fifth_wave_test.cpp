@@ -157,3 +157,16 @@ TEST(RealworldFifthWave, UncalledMinimumPrecisionOverloadTwins) {
     EXPECT_NE(glsl.find("10.0"), std::string::npos) << glsl;  // the min16float overload, called for h
 }
 
+// MiniEngine's TAAResolve.hlsl: `int offsets[1][8] = { MAKEOFFSET(-1, -1), ... }`, a 2-D array
+// initialised by a flat list with a non-literal item. The values land in order (row width 10).
+TEST(RealworldFifthWave, TwoDimensionalArrayFromAFlatNonLiteralList) {
+    CompiledEffect e = compileLoose("#define MK(x, y) int((y) * 10 + (x))\n"
+                                    "float4 main(float4 p : SV_Position) : SV_Target {\n"
+                                    "    const int o[1][8] = { MK(-1, -1), MK(0, -1), MK(1, -1), MK(-1, 0), MK(1, 0), MK(-1, 1), MK(0, 1), MK(1, int(p.y)) };\n"
+                                    "    int q[2][2] = { 1, 2, 3, int(p.y) };\n"
+                                    "    return o[0][(uint)p.x % 8] + q[1][(uint)p.x % 2];\n"
+                                    "}\n",
+                                    "ps_5_0");
+    const std::string& glsl = e.shaders.at(0).glsl;
+    EXPECT_NE(glsl.find("(-11, -10, -9, -1, 1, 9, 10, "), std::string::npos) << glsl;
+}
