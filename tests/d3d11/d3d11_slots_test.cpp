@@ -129,5 +129,70 @@ TEST(D3D11Slots, ResourcesBoundAtTheirSlotsReachTheShader) {
     }
 }
 
+// MiniEngine's ModelViewerPS: textures at register(t64)..: D3D11 has t0..t127. The reflection keeps
+// the registers; drawn with views bound at t64 and t100 (a decoy at t0), the shader reads those.
+TEST(D3D11Slots, TextureRegistersAboveThirtyOne) {
+    const char* pixel = R"(
+Texture2D High : register(t64);
+Texture2D Higher : register(t100);
+SamplerState S : register(s0);
+float4 PS(float4 pos : SV_Position) : SV_Target
+{
+    return High.Sample(S, float2(0.5, 0.5)) * 0.5 + Higher.Load(int3(0, 0, 0)) * 0.25;
+}
+)";
+    Device d;
+    ComPtr<ID3DBlob> vsCode = compile(kVertex, "VS", "vs_4_0", "slots_vs.hlsl");
+    ComPtr<ID3DBlob> psCode = compile(pixel, "PS", "ps_5_0", "slots_high.hlsl");
+    ASSERT_TRUE(vsCode && psCode) << lastError();
+    ComPtr<ID3D11ShaderReflection> r;
+    ASSERT_EQ(D3DReflect(psCode->GetBufferPointer(), psCode->GetBufferSize(), r.GetAddressOf()), S_OK) << lastError();
+    for (const Slot& s : {Slot{"High", D3D_SIT_TEXTURE, 64}, Slot{"Higher", D3D_SIT_TEXTURE, 100}}) {
+        D3D11_SHADER_INPUT_BIND_DESC b;
+        ASSERT_EQ(r->GetResourceBindingDescByName(s.name, &b), S_OK) << s.name << ": " << lastError();
+        EXPECT_EQ(b.BindPoint, s.bindPoint) << s.name;
+    }
+    ComPtr<ID3D11VertexShader> vs;
+    ComPtr<ID3D11PixelShader> ps;
+    ASSERT_EQ(d.device->CreateVertexShader(vsCode->GetBufferPointer(), vsCode->GetBufferSize(), nullptr, vs.GetAddressOf()), S_OK) << lastError();
+    ASSERT_EQ(d.device->CreatePixelShader(psCode->GetBufferPointer(), psCode->GetBufferSize(), nullptr, ps.GetAddressOf()), S_OK) << lastError();
+    const std::vector<std::uint32_t> red = {0xff0000c8u}, green = {0xff00c800u}, blue = {0xffff0000u};
+    auto srvOf = [&](const std::vector<std::uint32_t>& texel) {
+        ComPtr<ID3D11Texture2D> t = makeTexture(d, 1, 1, D3D11_BIND_SHADER_RESOURCE, &texel);
+        ComPtr<ID3D11ShaderResourceView> v;
+        EXPECT_EQ(d.device->CreateShaderResourceView(t.Get(), nullptr, v.GetAddressOf()), S_OK);
+        return v;
+    };
+    ComPtr<ID3D11ShaderResourceView> high = srvOf(red), higher = srvOf(green), decoy = srvOf(blue);
+    ID3D11ShaderResourceView* decoys[1] = {decoy.Get()};
+    d.context->PSSetShaderResources(0, 1, decoys);
+    d.context->PSSetShaderResources(64, 1, high.GetAddressOfConst());
+    d.context->PSSetShaderResources(100, 1, higher.GetAddressOfConst());
+    D3D11_SAMPLER_DESC sd;
+    sd.Filter = D3D11_FILTER_MIN_MAG_MIP_POINT;
+    ComPtr<ID3D11SamplerState> sampler;
+    ASSERT_EQ(d.device->CreateSamplerState(&sd, sampler.GetAddressOf()), S_OK);
+    d.context->PSSetSamplers(0, 1, sampler.GetAddressOfConst());
+    ComPtr<ID3D11Texture2D> target = makeTexture(d, 4, 4, D3D11_BIND_RENDER_TARGET);
+    ComPtr<ID3D11RenderTargetView> rtv;
+    ASSERT_EQ(d.device->CreateRenderTargetView(target.Get(), nullptr, rtv.GetAddressOf()), S_OK);
+    d.context->OMSetRenderTargets(1, rtv.GetAddressOfConst(), nullptr);
+    D3D11_VIEWPORT vp;
+    vp.Width = 4;
+    vp.Height = 4;
+    d.context->RSSetViewports(1, &vp);
+    d.context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+    d.context->VSSetShader(vs.Get(), nullptr, 0);
+    d.context->PSSetShader(ps.Get(), nullptr, 0);
+    d.context->Draw(3, 0);
+    ASSERT_EQ(lastError(), "");
+    // red*0.5 + green*0.25: R = 200*0.5, G = 200*0.25, B = 0 (the blue decoy would show here).
+    for (const auto& p : readPixels(d, target.Get())) {
+        EXPECT_NEAR(p[0], 200 * 0.5, 2.0);
+        EXPECT_NEAR(p[1], 200 * 0.25, 2.0);
+        EXPECT_NEAR(p[2], 0, 2.0);
+    }
+}
+
 }  // namespace
 }  // namespace d3d11test

@@ -132,7 +132,7 @@ private:
     // One shader stage's slots (each stage has its own, as in D3D).
     struct Stage {
         std::array<ComPtr<Buffer>, D3D11_COMMONSHADER_CONSTANT_BUFFER_API_SLOT_COUNT> constantBuffers;
-        std::array<ComPtr<ShaderResourceView>, 32> views;  // t0..t31 (D3D has 128; fxport samples 16 units)
+        std::array<ComPtr<ShaderResourceView>, D3D11_COMMONSHADER_INPUT_RESOURCE_SLOT_COUNT> views;  // t0..t127; a shader's GL units are its own (SamplerBinding::unit)
         std::array<ComPtr<SamplerState>, D3D11_COMMONSHADER_SAMPLER_SLOT_COUNT> samplers;
     };
     using UavSlots = std::array<ComPtr<UnorderedAccessView>, D3D11_PS_CS_UAV_REGISTER_COUNT>;

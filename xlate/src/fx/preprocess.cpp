@@ -14,6 +14,7 @@
 #include "fx/glslang_predefines.h"
 #include "frontend/glslang_process.h"
 #include "fx/macro_bounds.h"
+#include "fx/stray_quotes.h"
 #include "fx/string_escapes.h"
 #include "fx/text_encoding.h"
 #include "fx/input_limits.h"
@@ -327,7 +328,7 @@ private:
             return nullptr;
         }
         loaded.push_back({display, text});
-        auto* owned = new std::string(protectStringEscapes(blankAsmLineComments(text)));  // string_escapes.h
+        auto* owned = new std::string(protectStringEscapes(hideStrayQuotes(blankAsmLineComments(text))));  // string_escapes.h, stray_quotes.h
         return new IncludeResult(display, owned->data(), owned->size(), owned);
     }
 
@@ -524,7 +525,7 @@ std::optional<PreprocessedEffect> PreprocessRun::operator()(bool cascading) cons
     includer.macros = &macros;
 
     glslang::TShader shader(EShLangFragment);
-    const std::string cleaned = protectStringEscapes(blankAsmLineComments(source));  // string_escapes.h
+    const std::string cleaned = protectStringEscapes(hideStrayQuotes(blankAsmLineComments(source)));  // string_escapes.h, stray_quotes.h
     const char* text = cleaned.c_str();
     const char* name = displayPath.c_str();
     int length = static_cast<int>(cleaned.size());
@@ -558,6 +559,7 @@ std::optional<PreprocessedEffect> PreprocessRun::operator()(bool cascading) cons
             SourceLocation where{m[1].str(), std::stoi(m[2].str()), 0};
             if (where.line < 1) where.line = 1;  // glslang's end-of-input errors can say line 0
             std::string msg(trim(m[3].str()));
+            restoreStrayQuotes(msg);
             const char* id = diag::kPreprocessor;
             static const std::string kIncludeFailed = "Could not process include directive for header name: ";
             auto inc = msg.find(kIncludeFailed);
@@ -588,7 +590,11 @@ std::optional<PreprocessedEffect> PreprocessRun::operator()(bool cascading) cons
             d.location = {displayPath, 1, 1};  // glslang named no line: the file as a whole
             diags.push_back(d);
         }
-        // Without cascading errors glslang gave up at the first one (then "missing #endif" follows).
+        // Without cascading errors glslang gave up at the first one, inside its #if groups: the
+        // "missing #endif" it adds then is its own stop, not the file's.
+        if (!cascading && diags.size() > 1)
+            diags.erase(std::remove_if(diags.begin() + 1, diags.end(), [](const Diagnostic& d) { return d.message.find("missing #endif") != std::string::npos; }),
+                        diags.end());
         if (!cascading && isMacroRedefinition(diags.front())) return std::nullopt;
         if (!onlyMacroRedefinitions(diags)) {
             // The real errors, without the redefinitions that are only warnings.
@@ -612,6 +618,7 @@ std::optional<PreprocessedEffect> PreprocessRun::operator()(bool cascading) cons
         throw CompileError({d});
     }
     restoreStringEscapes(output);
+    restoreStrayQuotes(output);
     result.text = result.map.build(output, displayPath);
     // Macros can nest brackets that no file shows (`#define P(x) (x)` called through other macros).
     if (auto p = findNestingPastLimit(result.text))

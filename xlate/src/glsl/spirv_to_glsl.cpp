@@ -60,6 +60,8 @@ public:
     }
 };
 
+// GL texture units a shader's samplers take (0..31, effect_validation's kMaxUnit).
+constexpr int kGlTextureUnits = 32;
 constexpr const char* kSampleMaskInName = "fxport_sampleMaskIn";
 
 // The wrapper's stand-in for SV_Coverage (kSampleMaskInSemantic) becomes GL's gl_SampleMaskIn[0]:
@@ -489,8 +491,9 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
                 return false;
             };
             // The same texture with a second sampler, or a unit a DX9 sampler of this shader has:
-            // the next free run of units.
-            if (runTaken(u, false)) {
+            // the next free run of units. So does a register past the GL units (MiniEngine's
+            // register(t64); D3D11 has t0..t127): the D3D slot stays its textureRegister.
+            if (runTaken(u, false) || u + b.elements > kGlTextureUnits) {
                 u = 0;
                 while (runTaken(u, true)) ++u;
             }

@@ -16,6 +16,7 @@
 #include "rewrite/refract_eta.h"
 #include "rewrite/tess_factor_intrinsics.h"
 #include "rewrite/compare_store.h"
+#include "rewrite/byte_address_stores.h"
 #include "rewrite/interlocked_values.h"
 #include "rewrite/mixed_dimension_outputs.h"
 #include "rewrite/switch_labels.h"
@@ -38,6 +39,7 @@
 #include "rewrite/overload_choices.h"
 #include "rewrite/intrinsic_overrides.h"
 #include "rewrite/scalar_intrinsics.h"
+#include "rewrite/min_precision_types.h"
 
 #include <algorithm>
 #include <numeric>
@@ -391,12 +393,16 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     // glslang's HLSL front end takes no `half` (nor min16float ...) as the component type of
     // vector<T, N> / matrix<T, R, C>; `half` alone it maps to float, as fxc does for SM4 (and SM2-3
     // only treat it as a precision hint), so the template argument becomes float too.
+    // Nor the minimum-precision integers there, nor any minimum-precision matrix name
+    // (`min16float4x4`, Windows-universal-samples; `min16int2x2`): each is its 32-bit type, as
+    // glslang makes `min16float` float and as fxc stores them in constant buffers.
     for (size_t i = 0; i + 2 < tokens.size(); ++i) {
         const Token& t = tokens[i + 2];
-        if ((tokens[i].text == "vector" || tokens[i].text == "matrix") && tokens[i + 1].is("<") && t.isIdent() &&
-            (t.text == "half" || t.text == "min16float" || t.text == "min10float"))
-            edits.push_back({t.offset, t.end, "float"});
+        if ((tokens[i].text == "vector" || tokens[i].text == "matrix") && tokens[i + 1].is("<") && t.isIdent())
+            if (const char* full = fullPrecisionScalar(t.text)) edits.push_back({t.offset, t.end, full});
     }
+    for (const Token& t : tokens)
+        if (std::string matrix = fullPrecisionMatrixName(t); !matrix.empty()) edits.push_back({t.offset, t.end, matrix});
     // `const static int N = 4;` is a constant to fxc as `static const` is; glslang keeps the last
     // storage word only, so N would be a plain static and `float w[N + 1]` no constant size.
     for (size_t i = 0; i + 1 < tokens.size(); ++i)
@@ -428,6 +434,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : tessFactorIntrinsics(syntax)) edits.push_back(std::move(e));
     for (auto& e : interlockedValueConversions(syntax)) edits.push_back(std::move(e));  // before compare_store: see there
     for (auto& e : compareStoreAsExchange(syntax)) edits.push_back(std::move(e));
+    for (auto& e : byteAddressStoreValues(syntax)) edits.push_back(std::move(e));
     for (auto& e : mixedDimensionOutputs(syntax)) edits.push_back(std::move(e));
     for (auto& e : switchLabelsAsIntegers(syntax)) edits.push_back(std::move(e));
     for (auto& e : matrixConstructorArgumentsAsRows(syntax)) edits.push_back(std::move(e));

@@ -7,6 +7,7 @@
 
 #include "hlsl/call_arguments.h"
 #include "hlsl/expression_types.h"
+#include "rewrite/min_precision_types.h"
 
 namespace fxport::xlate {
 
@@ -112,6 +113,7 @@ private:
                 if (!chosen) return;
                 calls.push_back({i, chosen});
             }
+        if (calls.empty() && overloads.size() == uses) return renameUncalledTwins(name, overloads);
         // A prototype, a compile statement ... name it too; an entry point is named by the caller
         // of the compiler and never called (so a set without calls keeps its names).
         if (calls.empty() || calls.size() + overloads.size() != uses) return;
@@ -122,6 +124,32 @@ private:
             edits_.push_back({n.offset, n.end, renamed[overloads[k]]});
         }
         for (const Call& c : calls) edits_.push_back({t_[c.at].offset, t_[c.at].end, renamed[c.chosen]});
+    }
+
+    // A set nothing calls (FidelityFX's `AToThreeF1(AF1)` beside `AToThreeF1(AH1)`, AH1 being
+    // min16float, on a path that uses neither) has no call to choose for, but two definitions
+    // glslang reads alike are still one function defined twice to it. Each that a later one
+    // repeats for glslang is renamed: uncalled, its name matters to no call, and the last keeps
+    // the name, as fxc's entry point among overloads is the one declared last.
+    void renameUncalledTwins(const std::string& name, const std::vector<const FxFunction*>& overloads) {
+        for (size_t k = 0; k < overloads.size(); ++k)
+            for (size_t j = k + 1; j < overloads.size(); ++j)
+                if (sameToGlslang(*overloads[k], *overloads[j])) {
+                    const Token& n = t_[overloads[k]->token];
+                    edits_.push_back({n.offset, n.end, name + "_fxport_o" + std::to_string(k + 1)});
+                    break;
+                }
+    }
+
+    bool sameToGlslang(const FxFunction& a, const FxFunction& b) const {
+        if (a.parameters.size() != b.parameters.size()) return false;
+        for (size_t k = 0; k < a.parameters.size(); ++k) {
+            BasicType x = describeBasicType(syntax_.resolveType(a.parameters[k].type));
+            BasicType y = describeBasicType(syntax_.resolveType(b.parameters[k].type));
+            auto scalar = [](const std::string& s) { return fullPrecisionScalar(s) ? std::string(fullPrecisionScalar(s)) : s; };
+            if (x.rows != y.rows || x.columns != y.columns || x.isMatrix != y.isMatrix || scalar(x.scalar) != scalar(y.scalar)) return false;
+        }
+        return true;
     }
 
     // fxc's pick for the call whose name is at `at` in `caller`; nothing for a tie or an argument

@@ -15,7 +15,8 @@
 // renamed (`f` -> `f_fxport_o1`) and each call names the overload fxc picks. Only where the name
 // is called, and every use of it is a definition or a call whose arguments' types are evident
 // and that has one winner; otherwise the set is left to glslang (and a tie to the checks,
-// overload_ties.cpp).
+// overload_ties.cpp). A set nothing calls or names otherwise keeps its names, except a definition
+// a later one repeats as glslang reads them (`f(float)`, `f(min16float)`): that one is renamed.
 #pragma once
 
 #include <vector>
