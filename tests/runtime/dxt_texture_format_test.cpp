@@ -344,6 +344,32 @@ TEST_F(DxtTextureFormat, DxtCompressedMipLevelsAreCompressed) {
     EXPECT_EQ(levelBytes(*texture, 3).size(), 8u);  // 1x1: one block
 }
 
+// DxtCompressed on .dds files: a DXT5 file keeps its blocks as stored (no second compression); an
+// uncompressed A8R8G8B8 file is compressed from its texels (opaque: Dxt1, within the BC1 bound).
+TEST_F(DxtTextureFormat, DxtCompressedKeepsDxtFilesAndCompressesUncompressedOnes) {
+    TextureProcessor dxt;
+    dxt.TextureFormat = TextureProcessorOutputFormat::DxtCompressed;
+    std::vector<std::uint8_t> five = ddsHeader(4, 4, 1, "DXT5");
+    const std::vector<std::uint8_t> block = blocksFor(false, 1, 19u);
+    five.insert(five.end(), block.begin(), block.end());
+    auto kept = dxt.Load(device(), write("five.dds", five));
+    EXPECT_EQ(kept->Format(), SurfaceFormat::Dxt5);
+    EXPECT_EQ(levelBytes(*kept, 0), block);
+
+    std::vector<std::uint8_t> argb = ddsHeader(4, 4, 1, "DXT1");
+    put32(argb, 80, 0x41), put32(argb, 84, 0), put32(argb, 88, 32);  // DDPF_RGB | DDPF_ALPHAPIXELS, 32 bits
+    put32(argb, 92, 0xFF0000), put32(argb, 96, 0xFF00), put32(argb, 100, 0xFF), put32(argb, 104, 0xFF000000u);
+    std::vector<Color> source;
+    for (int i = 0; i < 16; ++i) {
+        source.push_back(Color(40 + 50 * (i % 4), 120, 220 - 50 * (i % 4), 255));
+        for (std::uint8_t byte : {source.back().B, source.back().G, source.back().R, source.back().A}) argb.push_back(byte);
+    }
+    auto compressed = dxt.Load(device(), write("argb.dds", argb));
+    ASSERT_EQ(compressed->Format(), SurfaceFormat::Dxt1);
+    const std::vector<Color> decoded = decode(true, levelBytes(*compressed, 0), 4, 4);
+    for (std::size_t i = 0; i < 16; ++i) EXPECT_LE(maxChannelDifference(decoded[i], source[i]), 8) << "texel " << i;
+}
+
 // A size that is not a multiple of 4 cannot be block-compressed: refused, naming the file and size.
 TEST_F(DxtTextureFormat, DxtCompressedRefusesSizesNotMultiplesOfFour) {
     const std::string path = writePng("odd.png", 6, 4, std::vector<Color>(24, Color(10, 20, 30, 255)));
