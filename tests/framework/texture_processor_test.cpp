@@ -1,7 +1,9 @@
 // fxport::TextureProcessor (XNA's content-pipeline texture processing) and ContentManager applying
 // it: every expectation is XNA's rule computed here by hand (colour key, round(v * a / 255),
 // bilinear at texel centres, 2x2 rounded averages), never the processor's own output.
+#include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -109,6 +111,61 @@ TEST_F(TextureProcessorContent, ContentLoadAppliesXnasDefaultsAndPerAssetSetting
     ContentManager mips(device(), root.string());
     mips.textureProcessor.GenerateMipmaps = true;
     EXPECT_EQ(mips.Load<Texture2D>("Sprite")->LevelCount(), 2);
+}
+
+// The per-asset processor carries XNA's TextureFormat: NoChange keeps a DXT1 .dds's blocks (a
+// texture and a cube map), DxtCompressed refuses the 2x1 sprite naming the asset (4x4 blocks), and
+// the default (Color) decodes. The block bytes are the file's own; the sizes are D3D's BC1 layout.
+TEST_F(TextureProcessorContent, PerAssetTextureFormat) {
+    auto header = [](bool cube) {
+        std::vector<std::uint8_t> h(128, 0);
+        auto put = [&](std::size_t at, std::uint32_t v) {
+            for (int k = 0; k < 4; ++k) h[at + std::size_t(k)] = std::uint8_t(v >> (8 * k));
+        };
+        h[0] = 'D', h[1] = 'D', h[2] = 'S', h[3] = ' ';
+        put(4, 124), put(8, 0x1007), put(12, 4), put(16, 4), put(28, 1), put(76, 32), put(80, 0x4);
+        h[84] = 'D', h[85] = 'X', h[86] = 'T', h[87] = '1';
+        put(108, cube ? 0x1008 : 0x1000);
+        if (cube) put(112, 0xFE00);
+        return h;
+    };
+    const std::vector<std::uint8_t> block = {0x00, 0xF8, 0x1F, 0x00, 0xE4, 0x1B, 0x4E, 0xB1};  // red, blue, four-colour mode
+    for (bool cube : {false, true}) {
+        std::vector<std::uint8_t> file = header(cube);
+        for (int face = 0; face < (cube ? 6 : 1); ++face) file.insert(file.end(), block.begin(), block.end());
+        std::ofstream(root / (cube ? "Sky.dds" : "Wall.dds"), std::ios::binary)
+            .write(reinterpret_cast<const char*>(file.data()), std::streamsize(file.size()));
+    }
+    TextureProcessor noChange;
+    noChange.TextureFormat = TextureProcessorOutputFormat::NoChange;
+    ContentManager content(device(), root.string());
+    content.SetTextureProcessor("Wall", noChange);
+    content.SetTextureProcessor("Sky", noChange);
+    Texture2D* wall = content.Load<Texture2D>("Wall");
+    EXPECT_EQ(wall->Format(), SurfaceFormat::Dxt1);
+    EXPECT_EQ(wall->GetData<std::uint8_t>(), block);
+    TextureCube* sky = content.Load<TextureCube>("Sky");
+    EXPECT_EQ(sky->Format(), SurfaceFormat::Dxt1);
+    std::vector<std::uint8_t> face(8);
+    sky->GetData(CubeMapFace::NegativeZ, face.data(), face.size());
+    EXPECT_EQ(face, block);
+    EXPECT_THROW(content.SetTextureProcessor("Sky", TextureProcessor()), InvalidOperation);
+
+    ContentManager decoded(device(), root.string());
+    EXPECT_EQ(decoded.Load<Texture2D>("Wall")->Format(), SurfaceFormat::Color);
+    EXPECT_EQ(decoded.Load<TextureCube>("Sky")->Format(), SurfaceFormat::Color);
+
+    TextureProcessor dxt;
+    dxt.TextureFormat = TextureProcessorOutputFormat::DxtCompressed;
+    decoded.SetTextureProcessor("Sprite", dxt);
+    try {
+        decoded.Load<Texture2D>("Sprite");
+        ADD_FAILURE() << "a 2x1 image compressed";
+    } catch (const ContentLoadException& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("Load<Texture2D>(\"Sprite\")"), std::string::npos) << what;
+        EXPECT_NE(what.find("multiples of 4"), std::string::npos) << what;
+    }
 }
 
 }  // namespace

@@ -194,28 +194,34 @@ template <> Texture2D* ContentManager::Load<Texture2D>(const std::string& assetN
         locate(assetName, "Texture2D", candidates(RootDirectory, assetName, {".png", ".jpg", ".jpeg", ".bmp", ".tga", ".dds"}));
     GraphicsDevice& graphicsDevice = device(assetName, "Texture2D");
     LoadTimer timer;
-    auto processor = textureProcessors_.find(portableName(assetName));
-    const TextureProcessor& processing = processor != textureProcessors_.end() ? processor->second : textureProcessor;
+    const TextureProcessor& processing = processorFor(assetName);
     auto texture = loadNamed("Texture2D", assetName, [&] { return processing.Load(graphicsDevice, file); });
     texture->Name = assetName;
     loadLog_.push_back({assetName, "Texture2D", file, timer.milliseconds()});
     return textures_.emplace(portableName(assetName), std::move(texture)).first->second.get();
 }
 
-// Cube maps come from .dds files as authored (XNA's TextureProcessor makes them only from .dds too).
+const TextureProcessor& ContentManager::processorFor(const std::string& assetName) const {
+    auto processor = textureProcessors_.find(portableName(assetName));
+    return processor != textureProcessors_.end() ? processor->second : textureProcessor;
+}
+
+// Cube maps come from .dds files as authored (XNA's TextureProcessor makes them only from .dds too);
+// of the asset's processor only TextureFormat applies (a DXT cube kept compressed under NoChange).
 template <> TextureCube* ContentManager::Load<TextureCube>(const std::string& assetName) {
     if (auto it = cubes_.find(portableName(assetName)); it != cubes_.end()) return it->second.get();
     const std::string file = locate(assetName, "TextureCube", candidates(RootDirectory, assetName, {".dds"}));
     GraphicsDevice& graphicsDevice = device(assetName, "TextureCube");
     LoadTimer timer;
-    auto cube = loadNamed("TextureCube", assetName, [&] { return TextureCube::FromFile(graphicsDevice, file); });
+    const TextureProcessor& processing = processorFor(assetName);
+    auto cube = loadNamed("TextureCube", assetName, [&] { return processing.LoadCube(graphicsDevice, file); });
     cube->Name = assetName;
     loadLog_.push_back({assetName, "TextureCube", file, timer.milliseconds()});
     return cubes_.emplace(portableName(assetName), std::move(cube)).first->second.get();
 }
 
 void ContentManager::SetTextureProcessor(const std::string& assetName, const TextureProcessor& processor) {
-    if (textures_.count(portableName(assetName)))
+    if (textures_.count(portableName(assetName)) || cubes_.count(portableName(assetName)))
         throw InvalidOperation("ContentManager::SetTextureProcessor(" + quoted(assetName) +
                                "): the texture is already loaded; set its processing before the first Load");
     textureProcessors_[portableName(assetName)] = processor;

@@ -24,6 +24,7 @@
 namespace fxport {
 class GraphicsDevice;
 class Texture2D;
+class TextureCube;
 }  // namespace fxport
 
 namespace fxport::detail {
@@ -55,6 +56,12 @@ DdsImage decodeDds(std::span<const std::uint8_t> bytes, const std::string& name,
 // The DDS file at `path` as Texture2D::FromFile loads a .dds (decoded, a partial chain completed by
 // 2x2 averages), whatever the file's name (texture.cpp).
 std::unique_ptr<Texture2D> texture2DFromDds(GraphicsDevice& device, const std::string& path);
+// The same with a BC1/BC2/BC3 (DXT1-5) file's blocks kept compressed: SurfaceFormat::Dxt1/Dxt3/
+// Dxt5, its levels as stored (a partial chain completed by 2x2 averages encoded again); any other
+// file as texture2DFromDds / TextureCube::FromFile load it (dds_stored_textures.cpp). What
+// TextureProcessor's NoChange and DxtCompressed outputs load a .dds as.
+std::unique_ptr<Texture2D> texture2DFromDdsAsStored(GraphicsDevice& device, const std::string& path);
+std::unique_ptr<TextureCube> textureCubeFromDdsAsStored(GraphicsDevice& device, const std::string& path);
 
 // One BC1/BC2/BC3 block of 16 texels (row by row) from its 8 or 16 bytes.
 void decodeBc1Block(const std::uint8_t* block, Color out[16]);

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <filesystem>
 
+#include "device/dds_image.h"
+#include "device/dxt_encoder.h"
 #include "device/image_io.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/texture.h"
@@ -57,6 +59,53 @@ std::vector<Color> resize(const std::vector<Color>& src, int w, int h, int W, in
     return out;
 }
 
+// XNA's DxtCompressed rule: Dxt5 for fractional alpha (strictly between 0 and 255), else Dxt1.
+SurfaceFormat dxtFormatFor(const std::vector<std::vector<Color>>& levels) {
+    for (const std::vector<Color>& level : levels)
+        for (const Color& c : level)
+            if (c.A != 0 && c.A != 255) return SurfaceFormat::Dxt5;
+    return SurfaceFormat::Dxt1;
+}
+
+// `levels` (width x height, then its mip chain) block-compressed into a new texture.
+std::unique_ptr<Texture2D> compressed(GraphicsDevice& device, const std::string& path, const std::vector<std::vector<Color>>& levels,
+                                      int width, int height) {
+    if (width % 4 != 0 || height % 4 != 0)
+        throw ArgumentError(path + ": TextureFormat DxtCompressed needs a width and height that are multiples of 4 (block-compressed "
+                                   "textures are made of 4x4 blocks); the image is " +
+                            std::to_string(width) + "x" + std::to_string(height) +
+                            " (resize it, set ResizeToPowerOfTwo, or use TextureFormat Color)");
+    const SurfaceFormat format = dxtFormatFor(levels);
+    auto texture = std::make_unique<Texture2D>(device, width, height, levels.size() > 1, format);
+    texture->Name = path;
+    for (std::size_t l = 0; l < levels.size(); ++l) {
+        const int w = std::max(1, width >> l), h = std::max(1, height >> l);
+        const std::vector<std::uint8_t> blocks = detail::encodeDxt(format, levels[l], w, h);
+        texture->SetData(int(l), nullptr, blocks.data(), blocks.size());
+    }
+    return texture;
+}
+
+// A .dds as authored, in `format`'s SurfaceFormat (an uncompressed file's decoded levels are read
+// back exactly, SurfaceFormat::Color, to be compressed).
+std::unique_ptr<Texture2D> loadDds(GraphicsDevice& device, const std::string& path, TextureProcessorOutputFormat format) {
+    if (format == TextureProcessorOutputFormat::Color) return detail::texture2DFromDds(device, path);
+    std::unique_ptr<Texture2D> texture = detail::texture2DFromDdsAsStored(device, path);
+    if (format == TextureProcessorOutputFormat::NoChange || texture->Format() != SurfaceFormat::Color) return texture;
+    std::vector<std::vector<Color>> levels;
+    for (int l = 0; l < texture->LevelCount(); ++l) {
+        levels.emplace_back(std::size_t(std::max(1, texture->Width() >> l)) * std::size_t(std::max(1, texture->Height() >> l)));
+        texture->getData(l, levels.back().data(), levels.back().size() * sizeof(Color));
+    }
+    return compressed(device, path, levels, texture->Width(), texture->Height());
+}
+
+std::string lowerExtension(const std::string& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return extension;
+}
+
 }  // namespace
 
 TextureProcessor::Output TextureProcessor::Process(std::vector<Color> pixels, int width, int height) const {
@@ -76,17 +125,22 @@ TextureProcessor::Output TextureProcessor::Process(std::vector<Color> pixels, in
 }
 
 std::unique_ptr<Texture2D> TextureProcessor::Load(GraphicsDevice& device, const std::string& path) const {
-    std::string extension = std::filesystem::path(path).extension().string();
-    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
-    if (extension == ".dds") return Texture2D::FromFile(device, path);
+    if (lowerExtension(path) == ".dds") return loadDds(device, path, TextureFormat);
     detail::Image image = detail::loadImage(path);  // throws ArgumentError naming the file
     Output processed = Process(std::move(image.pixels), image.width, image.height);
+    if (TextureFormat == TextureProcessorOutputFormat::DxtCompressed)
+        return compressed(device, path, processed.levels, processed.width, processed.height);
     auto texture = std::make_unique<Texture2D>(device, processed.width, processed.height, processed.levels.size() > 1,
                                                SurfaceFormat::Color);
     texture->Name = path;
     for (std::size_t l = 0; l < processed.levels.size(); ++l)
         texture->SetData(int(l), nullptr, processed.levels[l].data(), processed.levels[l].size());
     return texture;
+}
+
+std::unique_ptr<TextureCube> TextureProcessor::LoadCube(GraphicsDevice& device, const std::string& path) const {
+    if (TextureFormat == TextureProcessorOutputFormat::Color) return TextureCube::FromFile(device, path);
+    return detail::textureCubeFromDdsAsStored(device, path);
 }
 
 }  // namespace fxport

@@ -66,10 +66,13 @@ public:
     EffectOptions effectOptions;
     // fxport: the processing every image texture gets, XNA's TextureProcessor defaults unless changed
     // (a game whose .contentproj changed them says so here, or per asset below;
-    // TextureProcessor::None() loads images as the files have them).
+    // TextureProcessor::None() loads images as the files have them). Its TextureFormat (XNA's
+    // Color, DxtCompressed, NoChange) is the loaded texture's SurfaceFormat; TextureCube loads take
+    // only TextureFormat from it (texture_processor.h).
     TextureProcessor textureProcessor;
     // fxport: the processing of one asset (its name as Load is given it), instead of textureProcessor;
-    // XNA's per-asset ProcessorParameters. Throws InvalidOperation when the asset is already loaded.
+    // XNA's per-asset ProcessorParameters, TextureFormat included (e.g. NoChange to keep a .dds's
+    // DXT blocks). Throws InvalidOperation when the asset is already loaded.
     void SetTextureProcessor(const std::string& assetName, const TextureProcessor& processor);
 
     // fxport: a Game sets its device here when it makes it; a standalone manager takes it in the
@@ -106,6 +109,8 @@ private:
     // `folder` as the places it names: itself when absolute; else beside the executable, then from
     // the working directory (once when both are the same folder).
     static std::vector<std::filesystem::path> searchFolders(const std::string& folder);
+    // The asset's SetTextureProcessor processor, else textureProcessor.
+    const TextureProcessor& processorFor(const std::string& assetName) const;
 
     GraphicsDevice* device_ = nullptr;
     std::map<std::string, std::unique_ptr<Effect>> effects_;
