@@ -340,6 +340,16 @@ float4 ps(float4 pos : SV_Position) : SV_Target { return Line.Load(int2(pos.x, 0
     EXPECT_EQ(b.BindPoint, 2u);
 }
 
+// CheckFormatSupport reports TEXTURE1D for the formats CreateTexture1D makes, not for BC formats.
+TEST(D3D11Texture1D, FormatSupportSaysWhichFormatsAre1D) {
+    Device d;
+    UINT bits = 0;
+    ASSERT_EQ(d.device->CheckFormatSupport(DXGI_FORMAT_R32G32B32A32_FLOAT, &bits), S_OK);
+    EXPECT_TRUE(bits & D3D11_FORMAT_SUPPORT_TEXTURE1D);
+    ASSERT_EQ(d.device->CheckFormatSupport(DXGI_FORMAT_BC1_UNORM, &bits), S_OK);
+    EXPECT_FALSE(bits & D3D11_FORMAT_SUPPORT_TEXTURE1D);
+}
+
 HRESULT create(Device& d, D3D11_TEXTURE1D_DESC desc) {
     ComPtr<ID3D11Texture1D> t;
     return d.device->CreateTexture1D(&desc, nullptr, t.GetAddressOf());
