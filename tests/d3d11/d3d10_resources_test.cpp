@@ -260,5 +260,29 @@ TEST_F(D3D10Resources, ArrayTexturesTakeD3D10sViewDimensions) {
         << GetLastErrorMessage();
 }
 
+// ID3D10Device::CreateTexture1D is D3D11's: a 1D array, a TEXTURE1DARRAY view of part of its
+// slices, and a slice range past its end refused with the field.
+TEST_F(D3D10Resources, OneDimensionalTexturesTakeD3D10sViewDimensions) {
+    D3D10_TEXTURE1D_DESC td;
+    td.Width = 8;
+    td.MipLevels = 0;
+    td.ArraySize = 3;
+    td.Format = DXGI_FORMAT_R8G8B8A8_UNORM;
+    td.BindFlags = D3D10_BIND_SHADER_RESOURCE;
+    ComPtr<ID3D10Texture1D> t;
+    ASSERT_EQ(device->CreateTexture1D(&td, nullptr, t.GetAddressOf()), S_OK) << GetLastErrorMessage();
+    t->GetDesc(&td);
+    EXPECT_EQ(td.MipLevels, 4u);
+    D3D10_SHADER_RESOURCE_VIEW_DESC srv;
+    srv.ViewDimension = D3D10_SRV_DIMENSION_TEXTURE1DARRAY;
+    srv.Texture1DArray = D3D10_TEX1D_ARRAY_SRV{1, 2, 1, 2};
+    ComPtr<ID3D10ShaderResourceView> view;
+    EXPECT_EQ(device->CreateShaderResourceView(t.Get(), &srv, view.GetAddressOf()), S_OK) << GetLastErrorMessage();
+    srv.Texture1DArray = D3D10_TEX1D_ARRAY_SRV{0, 1, 2, 2};
+    EXPECT_EQ(device->CreateShaderResourceView(t.Get(), &srv, view.ReleaseAndGetAddressOf()), E_INVALIDARG);
+    EXPECT_NE(std::string(GetLastErrorMessage()).find("Texture1DArray.FirstArraySlice + ArraySize = 2 + 2 (the texture has 3 slices)"), std::string::npos)
+        << GetLastErrorMessage();
+}
+
 }  // namespace
 }  // namespace d3d10test

@@ -336,6 +336,46 @@ TEST_F(TextureFiles, ArrayDdsKeepsEveryItem) {
     EXPECT_EQ(readLevel(texture.Get(), 1, 8, 2), items[1]);  // subresource 1: item 1's level 0
 }
 
+// A DX10 TEXTURE1D array of two 4-texel R8G8B8A8 rows with two levels (4 and 2 texels): an
+// ID3D11Texture1D under a TEXTURE1DARRAY view, each subresource read back as stored.
+TEST_F(TextureFiles, OneDimensionalDdsKeepsItsRowsAndLevels) {
+    Bytes file = dx10Header(4, 1, 2, DXGI_FORMAT_R8G8B8A8_UNORM, 2, 0, 2);
+    Bytes rows[4];  // item 0 level 0, item 0 level 1, item 1 level 0, item 1 level 1
+    for (std::size_t r = 0; r < 4; ++r) {
+        for (std::size_t i = 0; i < (r % 2 ? 8u : 16u); ++i) rows[r].push_back(std::uint8_t(r * 50 + i * 3));
+        append(file, rows[r]);
+    }
+    ComPtr<ID3D11ShaderResourceView> srv = view(write("line.dds", file));
+    ASSERT_TRUE(srv);
+    D3D11_SHADER_RESOURCE_VIEW_DESC sd;
+    srv->GetDesc(&sd);
+    EXPECT_EQ(sd.ViewDimension, D3D11_SRV_DIMENSION_TEXTURE1DARRAY);
+    ComPtr<ID3D11Resource> resource;
+    srv->GetResource(resource.GetAddressOf());
+    D3D11_RESOURCE_DIMENSION dimension = D3D11_RESOURCE_DIMENSION_UNKNOWN;
+    resource->GetType(&dimension);
+    ASSERT_EQ(dimension, D3D11_RESOURCE_DIMENSION_TEXTURE1D);
+    auto* line = static_cast<ID3D11Texture1D*>(resource.Get());
+    D3D11_TEXTURE1D_DESC desc;
+    line->GetDesc(&desc);
+    EXPECT_EQ(desc.Width, 4u);
+    EXPECT_EQ(desc.ArraySize, 2u);
+    EXPECT_EQ(desc.MipLevels, 2u);
+    desc.Usage = D3D11_USAGE_STAGING;
+    desc.BindFlags = 0;
+    desc.CPUAccessFlags = D3D11_CPU_ACCESS_READ;
+    ComPtr<ID3D11Texture1D> staging;
+    ASSERT_EQ(d.device->CreateTexture1D(&desc, nullptr, staging.GetAddressOf()), S_OK) << lastError();
+    d.context->CopyResource(staging.Get(), line);
+    for (UINT sub = 0; sub < 4; ++sub) {
+        D3D11_MAPPED_SUBRESOURCE mapped;
+        ASSERT_EQ(d.context->Map(staging.Get(), sub, D3D11_MAP_READ, 0, &mapped), S_OK) << lastError();
+        const auto* bytes = static_cast<const std::uint8_t*>(mapped.pData);
+        EXPECT_EQ(Bytes(bytes, bytes + rows[sub].size()), rows[sub]) << "subresource " << sub;
+        d.context->Unmap(staging.Get(), sub);
+    }
+}
+
 // A DXT1 file with 2 of 4 levels: fxport's textures have 1 level or the full chain, so the texels are
 // decoded and the chain completed (as Texture2D::FromFile does); a BC7 one is refused by name.
 TEST_F(TextureFiles, PartialChainsDecodeOrAreRefused) {
@@ -442,9 +482,9 @@ TEST_F(TextureFiles, BadFilesAreRefusedByName) {
     Bytes partialCube = ddsHeader(4, 4, 1, "DXT1");
     put32(partialCube, 112, 0x200 | 0x400);
     refused(write("partial-cube.dds", partialCube), E_INVALIDARG, "six faces");
-    Bytes oneD = dx10Header(4, 1, 1, DXGI_FORMAT_R8G8B8A8_UNORM, 2);
-    append(oneD, Bytes(16, 0));
-    refused(write("line.dds", oneD), E_NOTIMPL, "1D texture");
+    Bytes tallLine = dx10Header(4, 2, 1, DXGI_FORMAT_R8G8B8A8_UNORM, 2);
+    append(tallLine, Bytes(32, 0));
+    refused(write("tall-line.dds", tallLine), E_INVALIDARG, "a 1D texture of height 2");
     refused((folder / "missing.png").string(), E_INVALIDARG, "missing.png");
 
     ComPtr<ID3D11ShaderResourceView> srv;

@@ -96,9 +96,9 @@ TEST(OneRowTextures, LinearFilterBlendsNeighboursOfTheRow) {
             EXPECT_NEAR(px[x * 4 + c], (texel(x)[c] + texel(x + 1)[c]) / 2, 1.5f / 255.0f) << "pixel " << x << " channel " << c;
 }
 
-// A D3D10 Texture1D object has no texture of the device to read (GL would read black): the draw
-// says so instead.
-TEST(OneRowTextures, Texture1DObjectIsRefusedAtTheDraw) {
+// A D3D10 Texture1D object reads a 1D texture (fxport::Texture1D); given a 2D one (which GL
+// would read as black) the draw names the slot and both dimensions instead.
+TEST(OneRowTextures, Texture1DObjectOverA2DTextureIsRefusedAtTheDraw) {
     const std::string text =
         "Texture1D Ramp; SamplerState Linear;\n"
         "float4 VS(float4 p : POSITION0) : SV_Position { return p; }\n"
@@ -108,7 +108,7 @@ TEST(OneRowTextures, Texture1DObjectIsRefusedAtTheDraw) {
         drawEffect(text, "Texture1DObject.fx", "Ramp");
         ADD_FAILURE() << "a Texture1D sampled from a 2D texture drew";
     } catch (const InvalidOperation& e) {
-        EXPECT_NE(std::string(e.what()).find("samples a Texture1D at unit 0"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("samples a 1D texture at unit 0 but Textures[0] holds a 2D texture"), std::string::npos) << e.what();
     }
 }
 

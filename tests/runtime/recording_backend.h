@@ -171,6 +171,12 @@ public:
         textureSizes[t] = {width, height};
         return t;
     }
+    BackendObject createLineTexture(SurfaceFormat, int levels, int width, int layers, bool array) override {
+        const BackendObject t = make(std::string("createLineTexture ") + (array ? "array " : "1d ") + std::to_string(width) + " layers " +
+                                     std::to_string(layers) + " levels " + std::to_string(levels));
+        textureSizes[t] = {width, array ? layers : 1};
+        return t;
+    }
     BackendObject createTextureView(BackendObject source, SurfaceFormat, bool array, int firstLevel, int levels, int firstLayer, int layers) override {
         const BackendObject t = make("createTextureView " + std::to_string(source) + (array ? " array" : " 2d") + " levels " +
                                      std::to_string(firstLevel) + "+" + std::to_string(levels) + " layers " + std::to_string(firstLayer) + "+" +

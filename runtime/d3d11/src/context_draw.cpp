@@ -32,6 +32,35 @@ Color colorOf(const FLOAT f[4]) {
     return Color(byte(f[0]), byte(f[1]), byte(f[2]), byte(f[3]));
 }
 
+// Whether a texture of `kind` is what a shader's texture of `wanted` samples, and the words for
+// either in a message (arrays as their elements: xlate's kinds do not mark arrays).
+const char* dimensionOf(xlate::TextureKind kind) {
+    switch (kind) {
+    case xlate::TextureKind::Texture1D: return "1D";
+    case xlate::TextureKind::Texture3D: return "3D";
+    case xlate::TextureKind::TextureCube: return "cube";
+    default: return "2D";
+    }
+}
+const char* dimensionOf(fxport::Texture::Kind kind) {
+    switch (kind) {
+    case fxport::Texture::Kind::Texture1D:
+    case fxport::Texture::Kind::Texture1DArray: return "1D";
+    case fxport::Texture::Kind::Texture3D: return "3D";
+    case fxport::Texture::Kind::TextureCube: return "cube";
+    default: return "2D";
+    }
+}
+
+// D3D's debug layer refuses a view of another dimension than the shader's texture (GL would read
+// black): the t# register and both dimensions.
+void checkViewDimension(const ShaderBindings& bindings, int slot, const fxport::Texture& viewed) {
+    for (const ResourceBinding& t : bindings.textures)
+        if (t.slot == slot && std::string(dimensionOf(t.kind)) != dimensionOf(viewed.kind()))
+            throw InvalidOperation("t" + std::to_string(slot) + " holds a view of a " + dimensionOf(viewed.kind()) + " texture where the shader's '" +
+                                   t.name + "' is a " + dimensionOf(t.kind) + " texture");
+}
+
 }  // namespace
 
 void Context::bindStage(int stage, const ShaderBindings& bindings, const Stage& s) {
@@ -51,6 +80,7 @@ void Context::bindStage(int stage, const ShaderBindings& bindings, const Stage& 
             u.textureSlot >= 0 && std::size_t(u.textureSlot) < s.views.size() ? s.views[std::size_t(u.textureSlot)].Get() : nullptr;
         if (v && !v->sampled())
             throw InvalidOperation("t" + std::to_string(u.textureSlot) + " holds a view of a buffer where the shader samples a texture");
+        if (v) checkViewDimension(bindings, u.textureSlot, *v->sampled());
         core.Textures[u.glUnit] = v ? v->sampled() : nullptr;
         const SamplerState* st =
             u.samplerSlot >= 0 && std::size_t(u.samplerSlot) < s.samplers.size() ? s.samplers[std::size_t(u.samplerSlot)].Get() : nullptr;
@@ -97,12 +127,15 @@ void Context::bindStorage(const char* call, const core::ShaderCode& code, const 
             throw InvalidOperation(use + ", but no unordered-access view is set there" +
                                    (uavs ? std::string(" (CSSetUnorderedAccessViews, or OMSetRenderTargetsAndUnorderedAccessViews for a pixel shader)")
                                         : std::string(" (fxport binds UAVs for pixel and compute shaders only)")));
-        if (image != (v->texture != nullptr))
-            throw InvalidOperation(use + ", a " + (image ? "texture" : "buffer") + ", but the view there is of a " + (v->texture ? "texture" : "buffer"));
+        const bool ofTexture = v->texture || v->image;
+        if (image != ofTexture)
+            throw InvalidOperation(use + ", a " + (image ? "texture" : "buffer") + ", but the view there is of a " + (ofTexture ? "texture" : "buffer"));
         if (typed != (v->typed != nullptr))
             throw InvalidOperation(use + (typed ? ", a typed buffer (RWBuffer<T>), but the view there has no Format" : ", but the view there is a typed one (RWBuffer<T>)"));
         if (typed) {
             core::setTexelBuffer(core, true, b.slot, v->typed.get());
+        } else if (image && v->image) {
+            core.SetUnorderedAccess(b.slot, v->image.get());
         } else if (image) {
             core.SetUnorderedAccess(b.slot, v->texture->colour.get());
         } else {

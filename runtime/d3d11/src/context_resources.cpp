@@ -33,6 +33,10 @@ HRESULT Context::Map(ID3D11Resource* pResource, UINT Subresource, D3D11_MAP MapT
         *out = D3D11_MAPPED_SUBRESOURCE{b->cpu.data(), b->desc.ByteWidth, b->desc.ByteWidth};
         return succeed();
     }
+    if (auto* l = own<LineTexture>(pResource, device_)) {
+        if (HRESULT hr = checkAccess(l->desc.Usage, l->desc.CPUAccessFlags); FAILED(hr)) return hr;
+        return mapLine(*l, Subresource, *out);
+    }
     if (auto* t = own<Texture>(pResource, device_)) {
         d3d11::Subresource at;  // the parameter `Subresource` hides the type
         if (!splitSubresource(*t, Subresource, at))
@@ -57,6 +61,7 @@ void Context::Unmap(ID3D11Resource* pResource, UINT Subresource) {
             if (b->gpu) b->gpu->write(0, b->cpu.size(), b->cpu.data());
             return succeed();
         }
+        if (auto* l = own<LineTexture>(pResource, device_)) return unmapLine(*l, Subresource);
         if (auto* t = own<Texture>(pResource, device_)) {
             if (t->mappedLevel != int(Subresource)) return fail(E_INVALIDARG, "Unmap: subresource " + std::to_string(Subresource) + " is not mapped");
             t->mappedLevel = -1;
@@ -83,6 +88,7 @@ void Context::UpdateSubresource(ID3D11Resource* pDst, UINT DstSubresource, const
             b->gpu->write(left, right - left, pSrcData);
             return succeed();
         }
+        if (auto* l = own<LineTexture>(pDst, device_)) return updateLine(*l, DstSubresource, box, pSrcData);
         auto* t = own<Texture>(pDst, device_);
         if (!t) return fail(E_INVALIDARG, "UpdateSubresource: pDstResource is not a buffer or texture of this device");
         if (t->desc.Usage != D3D11_USAGE_DEFAULT || !(t->colour || t->array))
@@ -116,8 +122,10 @@ void Context::CopyResource(ID3D11Resource* pDst, ID3D11Resource* pSrc) {
             else bd->cpu = bs->cpu;
             return succeed();
         }
+        auto *ld = own<LineTexture>(pDst, device_), *ls = own<LineTexture>(pSrc, device_);
+        if (ld && ls) return copyLines(*ld, *ls);
         auto *td = own<Texture>(pDst, device_), *ts = own<Texture>(pSrc, device_);
-        if (!td || !ts) return fail(E_INVALIDARG, "CopyResource: the resources are not two buffers or two textures of this device");
+        if (!td || !ts) return fail(E_INVALIDARG, "CopyResource: the resources are not two buffers or two textures (of one dimension) of this device");
         if (td->desc.Width != ts->desc.Width || td->desc.Height != ts->desc.Height || td->desc.Format != ts->desc.Format ||
             td->levels != ts->levels)
             return fail(E_INVALIDARG, "CopyResource: the textures differ in size, format or mip levels");
@@ -188,8 +196,13 @@ void Context::CopySubresourceRegion(ID3D11Resource* pDst, UINT DstSubresource, U
             else std::memmove(bd->cpu.data() + DstX, bs->cpu.data() + left, bytes);
             return succeed();
         }
+        auto *ld = own<LineTexture>(pDst, device_), *ls = own<LineTexture>(pSrc, device_);
+        if (ld && ls) {
+            if (DstY != 0) return fail(E_INVALIDARG, at + "DstY = " + std::to_string(DstY) + " (1D textures: 0)");
+            return copyLineRegion(*ld, DstSubresource, DstX, *ls, SrcSubresource, box);
+        }
         auto *td = own<Texture>(pDst, device_), *ts = own<Texture>(pSrc, device_);
-        if (!td || !ts) return fail(E_INVALIDARG, at + "the resources are not two buffers or two textures of this device");
+        if (!td || !ts) return fail(E_INVALIDARG, at + "the resources are not two buffers or two textures (of one dimension) of this device");
         if (td->desc.Format != ts->desc.Format)
             return fail(E_INVALIDARG, at + "the textures' formats differ (" + std::string(formatName(td->desc.Format)) + ", " + formatName(ts->desc.Format) + ")");
         if (td->depth || ts->depth) return fail(E_NOTIMPL, at + "depth-stencil textures cannot be copied in fxport yet");
@@ -250,6 +263,15 @@ void Context::ClearDepthStencilView(ID3D11DepthStencilView* p, UINT flags, FLOAT
 void Context::GenerateMips(ID3D11ShaderResourceView* p) {
     if (predicatedAway()) return;  // SetPredication
     auto* v = own<ShaderResourceView>(p, device_);
+    if (v && v->line) {
+        if (!(v->line->desc.MiscFlags & D3D11_RESOURCE_MISC_GENERATE_MIPS))
+            return note("GenerateMips: the view's 1D texture was not made with D3D11_RESOURCE_MISC_GENERATE_MIPS");
+        guarded("GenerateMips", [&] {
+            core::generateMips(*v->line->texels);  // every slice of an array
+            return succeed();
+        });
+        return;
+    }
     if (!v || !v->texture || !(v->texture->desc.MiscFlags & D3D11_RESOURCE_MISC_GENERATE_MIPS))
         return note("GenerateMips: the view's texture was not made with D3D11_RESOURCE_MISC_GENERATE_MIPS");
     guarded("GenerateMips", [&] {

@@ -70,6 +70,9 @@ public:
     HRESULT CreateBuffer(const D3D10_BUFFER_DESC* d, const D3D10_SUBRESOURCE_DATA* i, ID3D10Buffer** pp) override {
         return device_->CreateBuffer(d, i, pp);
     }
+    HRESULT CreateTexture1D(const D3D10_TEXTURE1D_DESC* d, const D3D10_SUBRESOURCE_DATA* i, ID3D10Texture1D** pp) override {
+        return device_->CreateTexture1D(d, i, pp);
+    }
     HRESULT CreateTexture2D(const D3D10_TEXTURE2D_DESC* d, const D3D10_SUBRESOURCE_DATA* i, ID3D10Texture2D** pp) override {
         return device_->CreateTexture2D(d, i, pp);
     }

@@ -20,6 +20,7 @@
 #include "fxport/graphics/render_target.h"
 #include "fxport/graphics/sampler_state.h"
 #include "fxport/graphics/texture.h"
+#include "fxport/graphics/texture_1d.h"
 #include "fxport/graphics/texture_2d_array.h"
 #include "fxport/graphics/texture_3d.h"
 #include "fxport/xlate/compiled_effect.h"
@@ -105,6 +106,25 @@ public:
     std::unique_ptr<fxport::Texture3D> texels;
 };
 
+// A 1D texture or 1D array (resources_1d.cpp): a device-core Texture1D (GL's 1D or 1D array
+// texture, by ArraySize), or CPU memory for USAGE_STAGING; a DYNAMIC one keeps what Map hands out
+// in `staging` too and uploads it at Unmap. Subresources are D3D's level + slice * MipLevels.
+class LineTexture final : public Object<ID3D11Texture1D> {
+public:
+    LineTexture(Device* device, const D3D11_TEXTURE1D_DESC& d) : Object(device), desc(d) {}
+    void GetType(D3D11_RESOURCE_DIMENSION* d) override { if (d) *d = D3D11_RESOURCE_DIMENSION_TEXTURE1D; }
+    void GetDesc(D3D11_TEXTURE1D_DESC* pDesc) override { if (pDesc) *pDesc = desc; }
+    D3D11_TEXTURE1D_DESC desc;
+    SurfaceFormat format = SurfaceFormat::Color;
+    std::unique_ptr<fxport::Texture1D> texels;       // null for USAGE_STAGING
+    std::vector<std::vector<std::uint8_t>> staging;  // STAGING (and a mapped DYNAMIC): each subresource's row
+    int levels = 1;
+    int mapped = -1;  // the mapped subresource
+    int subresources() const { return levels * int(desc.ArraySize); }
+    int levelWidth(int level) const { return std::max(1, int(desc.Width) >> level); }
+    std::size_t rowBytes(int level) const { return regionBytes(format, levelWidth(level), 1); }
+};
+
 // The elements of a buffer a view sees: [first, first + count), bound as bytes [offset, offset +
 // bytes) for a structured or raw view (bytes 0: the whole buffer).
 struct BufferRange {
@@ -122,36 +142,45 @@ public:
         : Object(device), buffer(viewed), desc(d) { buffer->AddRef(); }
     ShaderResourceView(Device* device, Volume* viewed, const D3D11_SHADER_RESOURCE_VIEW_DESC& d)
         : Object(device), volume(viewed), desc(d) { volume->AddRef(); }
+    ShaderResourceView(Device* device, LineTexture* viewed, const D3D11_SHADER_RESOURCE_VIEW_DESC& d)
+        : Object(device), line(viewed), desc(d) { line->AddRef(); }
     ~ShaderResourceView() override {
         typed.reset();  // before the buffer it reads may go
         arrayRange.reset();
+        lineRange.reset();
         resource()->Release();
     }
     void GetResource(ID3D11Resource** r) override { resource()->AddRef(); *r = resource(); }
     void GetDesc(D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc) override { if (pDesc) *pDesc = desc; }
     ID3D11Resource* resource() const {
+        if (line) return line;
         return texture ? static_cast<ID3D11Resource*>(texture) : volume ? static_cast<ID3D11Resource*>(volume) : buffer;
     }
     // What a shader samples through the view; null for a view of a buffer.
     fxport::Texture* sampled() const {
         if (arrayRange) return arrayRange.get();
+        if (line) return lineRange ? lineRange.get() : line->texels.get();
         return texture ? texture->sampled() : volume ? volume->texels.get() : nullptr;
     }
     Texture* texture = nullptr;
     Volume* volume = nullptr;
+    LineTexture* line = nullptr;
     Buffer* buffer = nullptr;
     D3D11_SHADER_RESOURCE_VIEW_DESC desc;
     BufferRange range;                         // buffer views
     std::unique_ptr<core::TexelBuffer> typed;  // a typed buffer view (Buffer<T>)
     std::unique_ptr<fxport::Texture2DArray> arrayRange;  // a view of part of an array texture's levels or slices
+    std::unique_ptr<fxport::Texture1D> lineRange;        // a 1D texture seen as another dimension or in part
 };
-// An unordered-access view of a structured or raw buffer, or of level 0 of a 2D texture.
+// An unordered-access view of a structured or raw buffer, of level 0 of a 2D texture, or of level
+// 0 of a 1D texture (`image`: every slice of a 1D array).
 class UnorderedAccessView final : public Object<ID3D11UnorderedAccessView> {
 public:
     UnorderedAccessView(Device* device, ID3D11Resource* viewed, Buffer* b, Texture* t, const D3D11_UNORDERED_ACCESS_VIEW_DESC& d)
         : Object(device), resource(viewed), buffer(b), texture(t), desc(d) { resource->AddRef(); }
     ~UnorderedAccessView() override {
         typed.reset();
+        image.reset();
         resource->Release();
     }
     void GetResource(ID3D11Resource** r) override { resource->AddRef(); *r = resource; }
@@ -162,6 +191,7 @@ public:
     D3D11_UNORDERED_ACCESS_VIEW_DESC desc;
     BufferRange range;                         // buffer views
     std::unique_ptr<core::TexelBuffer> typed;  // a typed buffer view (RWBuffer<T>)
+    std::unique_ptr<fxport::Texture1D> image;  // a 1D texture's view (resources_1d.cpp)
 };
 class RenderTargetView final : public Object<ID3D11RenderTargetView> {
 public:
@@ -331,6 +361,18 @@ void writeSubresource(Texture& t, Subresource s, const Rectangle* area, const st
 // CreateShaderResourceView of a 3D texture (resources_3d.cpp).
 HRESULT volumeShaderResourceView(Device* device, Volume* v, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc, ID3D11ShaderResourceView** pp);
 
+// 1D textures (resources_1d.cpp, line_subresources.cpp): their views, and the context's Map,
+// UpdateSubresource and copies of them (D3D's checks of the call done by the caller).
+HRESULT lineShaderResourceView(Device* device, LineTexture* t, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc, ID3D11ShaderResourceView** pp);
+HRESULT lineUnorderedAccessView(Device* device, LineTexture* t, const D3D11_UNORDERED_ACCESS_VIEW_DESC* pDesc, ID3D11UnorderedAccessView** pp);
+std::vector<std::uint8_t> readLine(LineTexture& t, int subresource);
+void writeLine(LineTexture& t, int subresource, int x, const std::uint8_t* texels, int count);
+HRESULT mapLine(LineTexture& t, UINT subresource, D3D11_MAPPED_SUBRESOURCE& out);
+HRESULT unmapLine(LineTexture& t, UINT subresource);
+HRESULT updateLine(LineTexture& t, UINT subresource, const D3D11_BOX* box, const void* data);
+HRESULT copyLines(LineTexture& destination, LineTexture& source);
+HRESULT copyLineRegion(LineTexture& destination, UINT destinationSub, UINT x, LineTexture& source, UINT sourceSub, const D3D11_BOX* box);
+
 // --- a compiled-shader blob's content (compile.cpp)
 std::string narrowPath(const wchar_t* path);  // UTF-8; null gives ""
 // A blob starts with one line saying what D3DCompile made: a shader (vs_*, ps_* ... targets) or a
@@ -362,6 +404,8 @@ public:
     ULONG Release() override;
 
     HRESULT CreateBuffer(const D3D11_BUFFER_DESC* pDesc, const D3D11_SUBRESOURCE_DATA* pInitialData, ID3D11Buffer** ppBuffer) override;
+    HRESULT CreateTexture1D(const D3D11_TEXTURE1D_DESC* pDesc, const D3D11_SUBRESOURCE_DATA* pInitialData,
+                            ID3D11Texture1D** ppTexture1D) override;  // resources_1d.cpp
     HRESULT CreateTexture2D(const D3D11_TEXTURE2D_DESC* pDesc, const D3D11_SUBRESOURCE_DATA* pInitialData,
                             ID3D11Texture2D** ppTexture2D) override;
     HRESULT CreateTexture3D(const D3D11_TEXTURE3D_DESC* pDesc, const D3D11_SUBRESOURCE_DATA* pInitialData,

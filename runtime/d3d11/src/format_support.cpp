@@ -19,6 +19,7 @@ UINT textureSupport(GraphicsDevice& core, DXGI_FORMAT format) {
                 D3D11_FORMAT_SUPPORT_SHADER_LOAD | D3D11_FORMAT_SUPPORT_MIP | D3D11_FORMAT_SUPPORT_CPU_LOCKABLE;
     if (!isIntegerFormat(surface)) bits |= D3D11_FORMAT_SUPPORT_SHADER_SAMPLE | D3D11_FORMAT_SUPPORT_SHADER_GATHER;
     if (isCompressedFormat(surface)) return bits;
+    bits |= D3D11_FORMAT_SUPPORT_TEXTURE1D;  // CreateTexture1D takes the uncompressed colour formats
     if (core.supportsRenderTargetFormat(surface)) {
         bits |= D3D11_FORMAT_SUPPORT_RENDER_TARGET | D3D11_FORMAT_SUPPORT_MULTISAMPLE_RENDERTARGET | D3D11_FORMAT_SUPPORT_MULTISAMPLE_LOAD;
         if (!isIntegerFormat(surface))

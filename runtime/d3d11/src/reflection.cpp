@@ -82,6 +82,7 @@ public:
             resources_.push_back({t.name, D3D_SIT_TEXTURE, UINT(t.slot),
                                   t.kind == xlate::TextureKind::TextureCube ? D3D_SRV_DIMENSION_TEXTURECUBE
                                   : t.kind == xlate::TextureKind::Texture3D ? D3D_SRV_DIMENSION_TEXTURE3D
+                                  : t.kind == xlate::TextureKind::Texture1D ? D3D_SRV_DIMENSION_TEXTURE1D
                                                                              : D3D_SRV_DIMENSION_TEXTURE2D});  // xlate does not mark arrays
         for (const CbufferBinding& c : bindings_.cbuffers) resources_.push_back({c.name, D3D_SIT_CBUFFER, UINT(c.slot), D3D_SRV_DIMENSION_UNKNOWN});
         // Buffers and RWTexture2Ds (xlate's storage list; a ByteAddressBuffer reads as a structured

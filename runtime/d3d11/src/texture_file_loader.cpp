@@ -101,6 +101,22 @@ HRESULT wrapDecoded(Device* device, std::unique_ptr<fxport::Texture2D> flat, std
     return succeed();
 }
 
+// A DX10 TEXTURE1D file: its rows as stored (item-major, then level), one subresource each.
+HRESULT newLine(Device* device, const DdsImage& dds, DXGI_FORMAT format, ID3D11Resource** out) {
+    D3D11_TEXTURE1D_DESC d;
+    d.Width = UINT(dds.width);
+    d.MipLevels = UINT(dds.levelCount);
+    d.ArraySize = UINT(dds.arraySize);
+    d.Format = format;
+    d.BindFlags = D3D11_BIND_SHADER_RESOURCE;
+    std::vector<D3D11_SUBRESOURCE_DATA> data(dds.stored.size());
+    for (std::size_t i = 0; i < data.size(); ++i) data[i] = {dds.stored[i].data(), UINT(dds.stored[i].size()), 0};
+    ID3D11Texture1D* line = nullptr;
+    const HRESULT hr = device->CreateTexture1D(&d, data.data(), &line);
+    if (SUCCEEDED(hr)) *out = line;
+    return hr;
+}
+
 // The DDS decoded to RGBA8 as the device core's FromFile decodes it (completing a partial chain).
 HRESULT loadDecodedDds(Device* device, const std::string& path, const DdsImage& dds, ID3D11Resource** out) {
     if (dds.volume) {
@@ -127,13 +143,16 @@ HRESULT loadDds(Device* device, const std::string& path, const TextureFileReques
     const std::string at = std::string(r.call) + ": " + path;
     DdsImage dds = detail::readDds(path, detail::DdsContent::Stored);
     if (r.alphaMode) *r.alphaMode = dds.alphaMode;
-    if (dds.oneDimensional) return fail(E_NOTIMPL, at + ": a 1D texture (DX10 TEXTURE1D); fxport has no ID3D11Texture1D");
     if (r.maxSize && std::size_t(std::max({dds.width, dds.height, dds.depth})) > r.maxSize)
         return fail(E_NOTIMPL, at + ": " + std::to_string(dds.width) + "x" + std::to_string(dds.height) + " is larger than maxsize " +
                                    std::to_string(r.maxSize) + " (fxport does not drop levels to fit)");
     const DXGI_FORMAT format = DXGI_FORMAT(dds.dxgiFormat);
     SurfaceFormat surface = SurfaceFormat::Color;
     const bool held = dds.dxgiFormat && textureFormat(format, surface) && !depthFamilyOf(format);
+    if (dds.oneDimensional) {  // any chain: CreateTexture1D takes every level count
+        if (!held) return fail(E_NOTIMPL, at + ": " + formatName(format) + " (" + std::to_string(dds.dxgiFormat) + ") is not a 1D texture format fxport samples");
+        return newLine(device, dds, format, out);
+    }
     const bool chainFits = dds.levelCount == 1 || dds.levelCount == fullChain(dds) || (dds.arraySize > 1 && !dds.cube);
     if (dds.dxgiFormat == 0 || !held || !chainFits) {
         if (dds.arraySize == 1 && dds.decodable) return loadDecodedDds(device, path, dds, out);

@@ -137,6 +137,7 @@ HRESULT Device::CreateShaderResourceView(ID3D11Resource* pResource, const D3D11_
     const char* call = "CreateShaderResourceView";
     if (auto* b = dynamic_cast<Buffer*>(pResource); b && &b->device() == this) return bufferShaderResourceView(this, b, pDesc, ppSRView);
     if (auto* v = dynamic_cast<Volume*>(pResource); v && &v->device() == this) return volumeShaderResourceView(this, v, pDesc, ppSRView);
+    if (auto* l = dynamic_cast<LineTexture*>(pResource); l && &l->device() == this) return lineShaderResourceView(this, l, pDesc, ppSRView);
     HRESULT hr;
     Texture* t = textureOf(this, pResource, call, hr);
     if (!t) return hr;
@@ -247,6 +248,11 @@ HRESULT Device::CreateUnorderedAccessView(ID3D11Resource* pResource, const D3D11
                                           ID3D11UnorderedAccessView** ppUAView) {
     const char* call = "CreateUnorderedAccessView";
     if (!pResource) return fail(E_INVALIDARG, std::string(call) + ": pResource is null");
+    if (auto* l = dynamic_cast<LineTexture*>(pResource); l && &l->device() == this) {
+        if (!(l->desc.BindFlags & D3D11_BIND_UNORDERED_ACCESS))
+            return fail(E_INVALIDARG, std::string(call) + ": the resource's BindFlags = " + std::to_string(l->desc.BindFlags) + " lack D3D11_BIND_UNORDERED_ACCESS");
+        return lineUnorderedAccessView(this, l, pDesc, ppUAView);
+    }
     auto* b = dynamic_cast<Buffer*>(pResource);
     auto* t = dynamic_cast<Texture*>(pResource);
     if ((b && &b->device() != this) || (t && &t->device() != this) || (!b && !t))

@@ -33,6 +33,7 @@
 #include "fxport/graphics/structured_buffer.h"
 #include "fxport/graphics/surface_format.h"
 #include "fxport/graphics/texture.h"
+#include "fxport/graphics/texture_1d.h"
 #include "fxport/graphics/texture_2d_array.h"
 #include "fxport/graphics/texture_3d.h"
 #include "fxport/graphics/texture_processor.h"

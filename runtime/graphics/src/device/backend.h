@@ -225,10 +225,16 @@ public:
     // one level is written (writeTexture) and read (readTexture, readTextureFloats) with the layer as
     // `face`; a colour attachment's `face` names the layer too.
     virtual BackendObject createArrayTexture(SurfaceFormat format, int levels, int width, int height, int layers) = 0;
-    // A second texture over the texels of `source` (an array texture): levels [firstLevel,
+    // 1D textures (D3D10+'s Texture1D): `layers` rows of `levels` levels of `width` texels, a 1D
+    // array texture (`array`) or a plain 1D one (one layer). Transfers, copies and clears address
+    // them as array textures of height 1 do: the layer as `face` (-1 for a plain 1D texture), Y and
+    // the copy's Y 0, heights 1. textureLevelSize gives Height 1, or a 1D array's layer count (a copy
+    // of that height copies every layer). No compressed formats (D3D has none in 1D).
+    virtual BackendObject createLineTexture(SurfaceFormat format, int levels, int width, int layers, bool array) = 0;
+    // A second texture over the texels of `source` (an array texture, 2D or 1D): levels [firstLevel,
     // firstLevel + levels) and layers [firstLayer, firstLayer + layers), seen as an array texture
-    // (`array`) or, for one layer, as a 2D texture. Writes through either are seen by both; it is
-    // deleted with deleteTexture (the source's texels stay). 0 when the API cannot make views.
+    // (`array`) or, for one layer, as a single 2D (or 1D) texture. Writes through either are seen by
+    // both; it is deleted with deleteTexture (the source's texels stay). 0 when the API cannot make views.
     virtual BackendObject createTextureView(BackendObject source, SurfaceFormat format, bool array, int firstLevel, int levels, int firstLayer,
                                             int layers) = 0;
     // Multisampled 2D textures (D3D10+'s SampleDesc.Count > 1), fixed sample positions: render
@@ -276,8 +282,9 @@ public:
     virtual BackendObject createComputePipeline(BackendObject program) = 0;
     virtual void deletePipeline(BackendObject pipeline) = 0;
 
-    // Storage: a buffer on a shader-storage binding, level 0 of a texture on an image unit, and the
-    // barrier that makes shader writes visible to whatever comes next.
+    // Storage: a buffer on a shader-storage binding, level 0 of a texture on an image unit (every
+    // layer of a 1D array texture, which a shader's image1DArray indexes), and the barrier that
+    // makes shader writes visible to whatever comes next.
     // `bytes` 0: the whole buffer; otherwise that many from `offset` (a multiple of bufferOffsetAlignment(true)).
     virtual void bindStorageBuffer(int binding, BackendObject buffer, std::size_t offset, std::size_t bytes) = 0;
     virtual void bindStorageImage(int unit, BackendObject texture, SurfaceFormat format, bool writes) = 0;

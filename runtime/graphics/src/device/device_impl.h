@@ -273,6 +273,7 @@ struct GraphicsDevice::Impl {
     BackendObject createTexture(bool cube, SurfaceFormat format, int levels, int width, int height);
     BackendObject createVolumeTexture(SurfaceFormat format, int levels, int width, int height, int depth);
     BackendObject createArrayTexture(SurfaceFormat format, int levels, int width, int height, int layers);
+    BackendObject createLineTexture(SurfaceFormat format, int levels, int width, int layers, bool array);
     // A view of `source` (Backend::createTextureView); throws InvalidOperation naming `who` when the backend cannot make it.
     BackendObject createTextureView(const std::string& who, BackendObject source, SurfaceFormat format, bool array, int firstLevel, int levels,
                                     int firstLayer, int layers);

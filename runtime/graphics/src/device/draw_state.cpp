@@ -171,6 +171,18 @@ const char* shapeName(xlate::TextureKind kind) {
     }
 }
 
+// The shader-side dimension a texture of `kind` is sampled as (arrays as their elements: xlate's
+// kinds do not mark arrays).
+xlate::TextureKind shapeOf(Texture::Kind kind) {
+    switch (kind) {
+    case Texture::Kind::TextureCube: return xlate::TextureKind::TextureCube;
+    case Texture::Kind::Texture3D: return xlate::TextureKind::Texture3D;
+    case Texture::Kind::Texture1D:
+    case Texture::Kind::Texture1DArray: return xlate::TextureKind::Texture1D;
+    default: return xlate::TextureKind::Texture2D;
+    }
+}
+
 }  // namespace
 
 void GraphicsDevice::Impl::applyTextures() { applyTexturesOf(shaders.data(), shaders.size()); }
@@ -197,16 +209,11 @@ void GraphicsDevice::Impl::applyTexturesOf(const ShaderProgram* const* programs,
                             throw InvalidOperation("Draw: texture " + textureName(texture) + " in Textures[" +
                                                    std::to_string(unit) + "] is also the current render target; " +
                                                    "set another render target (or clear the slot) before sampling it");
-                    const bool cube = texture->kind() == Texture::Kind::TextureCube, volume = texture->kind() == Texture::Kind::Texture3D;
-                    // A D3D10 Texture1D object: no texture of the device is one (a GL sampler1D would read black).
-                    if (sampler.kind == xlate::TextureKind::Texture1D)
-                        throw InvalidOperation(std::string("Draw: ") + program->label + " samples a Texture1D at unit " + std::to_string(unit) +
-                                               "; fxport has no 1D textures (declare it Texture2D, or sample a one-row texture with a DX9 "
-                                               "sampler1D and tex1D)");
-                    if (cube != (sampler.kind == xlate::TextureKind::TextureCube) || volume != (sampler.kind == xlate::TextureKind::Texture3D))
+                    // GL reads a texture of another dimension than the sampler's as black: a D3D debug-layer error instead.
+                    if (shapeOf(texture->kind()) != sampler.kind)
                         throw InvalidOperation(std::string("Draw: ") + program->label + " samples a " + shapeName(sampler.kind) +
                                                " texture at unit " + std::to_string(unit) + " but Textures[" + std::to_string(unit) +
-                                               "] holds a " + (cube ? "cube" : volume ? "3D" : "2D") + " texture " + textureName(texture));
+                                               "] holds a " + shapeName(shapeOf(texture->kind())) + " texture " + textureName(texture));
                     if (texture->sampleCount() > 0 && !readsSamples)
                         throw InvalidOperation(std::string("Draw: ") + program->label + " samples unit " + std::to_string(unit) + " as a Texture2D but Textures[" +
                                                std::to_string(unit) + "] holds the multisampled texture " + textureName(texture) +

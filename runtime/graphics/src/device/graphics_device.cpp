@@ -663,6 +663,12 @@ BackendObject GraphicsDevice::Impl::createArrayTexture(SurfaceFormat format, int
     ++live.textures;
     return name;
 }
+BackendObject GraphicsDevice::Impl::createLineTexture(SurfaceFormat format, int levels, int width, int layers, bool array) {
+    requireSampleable(format);
+    const BackendObject name = backend->createLineTexture(format, levels, width, layers, array);
+    ++live.textures;
+    return name;
+}
 BackendObject GraphicsDevice::Impl::createTextureView(const std::string& who, BackendObject source, SurfaceFormat format, bool array, int firstLevel,
                                                       int levels, int firstLayer, int layers) {
     const BackendObject name = backend->createTextureView(source, format, array, firstLevel, levels, firstLayer, layers);

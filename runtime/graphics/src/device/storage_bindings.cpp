@@ -11,6 +11,7 @@
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/structured_buffer.h"
 #include "fxport/graphics/texture.h"
+#include "fxport/graphics/texture_1d.h"
 #include "fxport/xlate/compiled_effect.h"
 
 namespace fxport {
@@ -49,6 +50,23 @@ SurfaceFormat sameBitsAs(Backend& backend, SurfaceFormat format, const std::stri
 
 const char* heldName(const GraphicsDevice::Impl::StorageSlot& slot) { return slot.typedBuffer ? "typed buffer" : slot.image ? "texture" : "buffer"; }
 
+// Any texture a shader writes as an image: its level 0 (a 1D array's every layer).
+void setTextureUnorderedAccess(GraphicsDevice& device, GraphicsDevice::Impl& impl, int slot, Texture* texture) {
+    if (slot < 0 || slot >= kMaxUnorderedAccessSlots) throw ArgumentError(slotOutside("SetUnorderedAccess", slot, kMaxUnorderedAccessSlots));
+    if (!texture) {
+        impl.unorderedAccess[std::size_t(slot)] = {};
+        return;
+    }
+    if (&texture->device() != &device) throw InvalidOperation("SetUnorderedAccess: the texture was made by another GraphicsDevice");
+    if (texture->IsDisposed()) throw InvalidOperation("SetUnorderedAccess: the texture was disposed");
+    if (!*impl.backend->imageFormatName(texture->Format()))
+        throw ArgumentError("SetUnorderedAccess: " + (texture->Name.empty() ? std::string("the texture") : "texture '" + texture->Name + "'") +
+                            " has format " + surfaceFormatName(texture->Format()) +
+                            ", which shaders cannot write as a RWTexture2D on GL (use Single, Vector2, Vector4, HalfSingle, HalfVector2, "
+                            "HalfVector4, Color or Rgba64)");
+    impl.unorderedAccess[std::size_t(slot)] = GraphicsDevice::Impl::StorageSlot{texture, texture->backendObject(), true, texture->Format()};
+}
+
 }  // namespace
 
 void GraphicsDevice::SetUnorderedAccess(int slot, StructuredBuffer* buffer) {
@@ -58,21 +76,9 @@ void GraphicsDevice::SetUnorderedAccess(int slot, StructuredBuffer* buffer) {
     impl_->unorderedAccess[std::size_t(slot)] = buffer ? Impl::StorageSlot{buffer, buffer->backendObject(), false, SurfaceFormat::Color} : Impl::StorageSlot{};
 }
 
-void GraphicsDevice::SetUnorderedAccess(int slot, Texture2D* texture) {
-    if (slot < 0 || slot >= kMaxUnorderedAccessSlots) throw ArgumentError(slotOutside("SetUnorderedAccess", slot, kMaxUnorderedAccessSlots));
-    if (!texture) {
-        impl_->unorderedAccess[std::size_t(slot)] = {};
-        return;
-    }
-    if (&texture->device() != this) throw InvalidOperation("SetUnorderedAccess: the texture was made by another GraphicsDevice");
-    if (texture->IsDisposed()) throw InvalidOperation("SetUnorderedAccess: the texture was disposed");
-    if (!*impl_->backend->imageFormatName(texture->Format()))
-        throw ArgumentError("SetUnorderedAccess: " + (texture->Name.empty() ? std::string("the texture") : "texture '" + texture->Name + "'") +
-                            " has format " + surfaceFormatName(texture->Format()) +
-                            ", which shaders cannot write as a RWTexture2D on GL (use Single, Vector2, Vector4, HalfSingle, HalfVector2, "
-                            "HalfVector4, Color or Rgba64)");
-    impl_->unorderedAccess[std::size_t(slot)] = Impl::StorageSlot{texture, texture->backendObject(), true, texture->Format()};
-}
+void GraphicsDevice::SetUnorderedAccess(int slot, Texture2D* texture) { setTextureUnorderedAccess(*this, *impl_, slot, texture); }
+void GraphicsDevice::SetUnorderedAccess(int slot, Texture1D* texture) { setTextureUnorderedAccess(*this, *impl_, slot, texture); }
+
 
 void GraphicsDevice::SetShaderResource(int slot, StructuredBuffer* buffer) {
     if (slot < 0 || slot >= kMaxShaderResourceBuffers) throw ArgumentError(slotOutside("SetShaderResource", slot, kMaxShaderResourceBuffers));

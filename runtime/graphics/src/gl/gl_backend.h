@@ -11,6 +11,14 @@ namespace fxport {
 // GL's primitive mode for a draw (GL_PATCHES for a patch draw).
 GLenum glModeOf(const DrawCall& call);
 inline GLenum glIndexTypeOf(const DrawCall& call) { return call.indexSize == 4 ? GL_UNSIGNED_INT : GL_UNSIGNED_SHORT; }
+// 1D textures (gl_line_textures.cpp): GL addresses a 1D array's layer as y in its 2D calls, where
+// other arrays take it as z, and a plain 1D texture through 1D calls. Each returns false for a
+// texture of another target, which the caller then handles.
+GLenum glTargetOf(GLuint texture);
+bool writeLine(GLuint texture, SurfaceFormat format, int face, int level, const Rectangle& area, const void* data);
+bool readLine(GLuint texture, GLenum format, GLenum type, int face, int level, std::size_t bytes, void* out);
+// The (x, y, z) glCopyImageSubData takes for texel x of row y in `layer` (-1: not an array) of a texture of `target`.
+void copyOrigin(GLenum target, int x, int y, int layer, GLint (&out)[3]);
 // Moves each uniform block of a linked program from its HLSL binding b to `stage`'s range
 // (backend.h, uniformBindingFor); compute passes' programs use it too.
 void moveUniformBlocksToStage(GLuint program, int stage);
@@ -88,6 +96,7 @@ public:
     BackendObject createVolumeTexture(SurfaceFormat format, int levels, int width, int height, int depth) override;
     void writeVolume(BackendObject texture, SurfaceFormat format, int level, int width, int height, int depth, const void* data) override;
     BackendObject createArrayTexture(SurfaceFormat format, int levels, int width, int height, int layers) override;
+    BackendObject createLineTexture(SurfaceFormat format, int levels, int width, int layers, bool array) override;
     BackendObject createTextureView(BackendObject source, SurfaceFormat format, bool array, int firstLevel, int levels, int firstLayer,
                                     int layers) override;
     BackendObject createMultisampleTexture(SurfaceFormat format, int samples, int width, int height, int& given) override;

@@ -141,13 +141,29 @@ BackendObject GlBackend::createArrayTexture(SurfaceFormat format, int levels, in
     return name;
 }
 
+// A 1D array's layers are GL's rows: glTextureStorage2D with the layer count as its height.
+BackendObject GlBackend::createLineTexture(SurfaceFormat format, int levels, int width, int layers, bool array) {
+    GLuint name = 0;
+    glCreateTextures(array ? GL_TEXTURE_1D_ARRAY : GL_TEXTURE_1D, 1, &name);
+    if (array)
+        glTextureStorage2D(name, levels, detail::glFormat(format).internalFormat, width, layers);
+    else
+        glTextureStorage1D(name, levels, detail::glFormat(format).internalFormat, width);
+    applyD3D9Swizzle(name, format);
+    return name;
+}
+
 // glTextureView (core since 4.3) needs a name never bound: glGenTextures, not glCreateTextures.
 // The view's own parameters start at GL's defaults, so the swizzle is applied again.
 BackendObject GlBackend::createTextureView(BackendObject source, SurfaceFormat format, bool array, int firstLevel, int levels, int firstLayer,
                                            int layers) {
     GLuint name = 0;
     glGenTextures(1, &name);
-    glTextureView(name, array ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D, source, detail::glFormat(format).internalFormat, GLuint(firstLevel),
+    // A view keeps its source's dimension: a 1D texture's views are 1D (GL allows no other).
+    const GLenum sourceTarget = glTargetOf(source);
+    const bool line = sourceTarget == GL_TEXTURE_1D || sourceTarget == GL_TEXTURE_1D_ARRAY;
+    const GLenum target = line ? (array ? GL_TEXTURE_1D_ARRAY : GL_TEXTURE_1D) : (array ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D);
+    glTextureView(name, target, source, detail::glFormat(format).internalFormat, GLuint(firstLevel),
                   GLuint(levels), GLuint(firstLayer), GLuint(layers));
     if (!glIsTexture(name)) {  // refused (no GL_ARB_texture_view, or a range outside the source)
         glDeleteTextures(1, &name);

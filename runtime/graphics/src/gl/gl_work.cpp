@@ -42,6 +42,7 @@ void GlBackend::writeTexture(BackendObject texture, SurfaceFormat format, int fa
                              const void* data) {
     const detail::GlTextureFormat& f = detail::glFormat(format);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    if (!f.isCompressed && writeLine(texture, format, face, level, area, data)) return;
     if (f.isCompressed) {
         const auto bytes = GLsizei(regionBytes(format, area.Width, area.Height));
         if (face < 0)
@@ -87,6 +88,7 @@ void GlBackend::copySamples(BackendObject source, BackendObject destination, int
 void GlBackend::readTexture(BackendObject texture, SurfaceFormat format, int face, int level, std::size_t bytes, void* out) {
     const detail::GlTextureFormat& f = detail::glFormat(format);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    if (!f.isCompressed && readLine(texture, f.format, f.type, face, level, bytes, out)) return;
     if (f.isCompressed) {
         if (face < 0) return glGetCompressedTextureImage(texture, level, GLsizei(bytes), out);
         const Rectangle size = textureLevelSize(texture, level);
@@ -102,6 +104,7 @@ void GlBackend::readTexture(BackendObject texture, SurfaceFormat format, int fac
 
 void GlBackend::readTextureFloats(BackendObject texture, int face, int level, std::size_t bytes, void* out) {
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    if (readLine(texture, GL_RGBA, GL_FLOAT, face, level, bytes, out)) return;
     if (face < 0) {
         glGetTextureImage(texture, level, GL_RGBA, GL_FLOAT, GLsizei(bytes), out);
     } else {
@@ -120,10 +123,16 @@ Rectangle GlBackend::textureLevelSize(BackendObject texture, int level) {
 void GlBackend::copyTexture(const TextureCopy& c) {
     const GLenum target = c.cube ? GL_TEXTURE_CUBE_MAP : c.multisampled ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D;
     // An array's layer is addressed as its z (GL copies between a 2D texture and an array's layer).
-    const GLenum sourceTarget = c.sourceLayer >= 0 ? GL_TEXTURE_2D_ARRAY : target;
-    const GLenum destinationTarget = c.destinationLayer >= 0 ? GL_TEXTURE_2D_ARRAY : target;
-    glCopyImageSubData(c.source, sourceTarget, c.sourceLevel, c.sourceX, c.sourceY, std::max(c.sourceLayer, 0), c.destination, destinationTarget,
-                       c.destinationLevel, c.destinationX, c.destinationY, std::max(c.destinationLayer, 0), c.width, c.height, c.cube ? 6 : 1);
+    // 1D textures keep their own target (a 1D array's layer is its y: copyOrigin).
+    const GLenum sourceActual = glTargetOf(c.source), destinationActual = glTargetOf(c.destination);
+    const auto lineTarget = [](GLenum t) { return t == GL_TEXTURE_1D || t == GL_TEXTURE_1D_ARRAY; };
+    const GLenum sourceTarget = lineTarget(sourceActual) ? sourceActual : c.sourceLayer >= 0 ? GL_TEXTURE_2D_ARRAY : target;
+    const GLenum destinationTarget = lineTarget(destinationActual) ? destinationActual : c.destinationLayer >= 0 ? GL_TEXTURE_2D_ARRAY : target;
+    GLint from[3], to[3];
+    copyOrigin(sourceTarget, c.sourceX, c.sourceY, c.sourceLayer, from);
+    copyOrigin(destinationTarget, c.destinationX, c.destinationY, c.destinationLayer, to);
+    glCopyImageSubData(c.source, sourceTarget, c.sourceLevel, from[0], from[1], from[2], c.destination, destinationTarget, c.destinationLevel,
+                       to[0], to[1], to[2], c.width, c.height, c.cube ? 6 : 1);
 }
 
 void GlBackend::presentFlipped(BackendObject framebuffer, int width, int height) {
@@ -225,7 +234,9 @@ void GlBackend::invalidateFramebuffer(int colourTargets, bool depth, bool stenci
 }
 
 void GlBackend::bindStorageImage(int unit, BackendObject texture, SurfaceFormat format, bool writes) {
-    glBindImageTexture(GLuint(unit), texture, 0, GL_FALSE, 0, writes ? GL_READ_WRITE : GL_READ_ONLY,
+    // A 1D array is bound layered: a shader's image1DArray indexes its layers.
+    const GLboolean layered = glTargetOf(texture) == GL_TEXTURE_1D_ARRAY ? GL_TRUE : GL_FALSE;
+    glBindImageTexture(GLuint(unit), texture, 0, layered, 0, writes ? GL_READ_WRITE : GL_READ_ONLY,
                        detail::glFormat(format).internalFormat);
 }
 

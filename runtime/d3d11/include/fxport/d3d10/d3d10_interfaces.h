@@ -16,6 +16,7 @@ namespace fxport::d3d10 {
 using ID3D10DeviceChild = ID3D11DeviceChild;
 using ID3D10Resource = ID3D11Resource;
 using ID3D10Buffer = ID3D11Buffer;
+using ID3D10Texture1D = ID3D11Texture1D;
 using ID3D10Texture2D = ID3D11Texture2D;
 using ID3D10View = ID3D11View;
 using ID3D10ShaderResourceView = ID3D11ShaderResourceView;
@@ -55,6 +56,8 @@ class ID3D10Device : public IUnknown {
 public:
     // --- resources, views, shaders and states (D3D11's checks and messages)
     virtual HRESULT CreateBuffer(const D3D10_BUFFER_DESC* pDesc, const D3D10_SUBRESOURCE_DATA* pInitialData, ID3D10Buffer** ppBuffer) = 0;
+    virtual HRESULT CreateTexture1D(const D3D10_TEXTURE1D_DESC* pDesc, const D3D10_SUBRESOURCE_DATA* pInitialData,
+                                    ID3D10Texture1D** ppTexture1D) = 0;
     virtual HRESULT CreateTexture2D(const D3D10_TEXTURE2D_DESC* pDesc, const D3D10_SUBRESOURCE_DATA* pInitialData,
                                     ID3D10Texture2D** ppTexture2D) = 0;
     virtual HRESULT CreateShaderResourceView(ID3D10Resource* pResource, const D3D10_SHADER_RESOURCE_VIEW_DESC* pDesc,

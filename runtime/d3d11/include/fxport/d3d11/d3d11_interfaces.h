@@ -64,6 +64,10 @@ public:
     virtual HRESULT Map(D3D11_MAP MapType, UINT MapFlags, void** ppData) = 0;
     virtual void Unmap() = 0;
 };
+class ID3D11Texture1D : public ID3D11Resource {
+public:
+    virtual void GetDesc(D3D11_TEXTURE1D_DESC* pDesc) = 0;
+};
 class ID3D11Texture2D : public ID3D11Resource {
 public:
     virtual void GetDesc(D3D11_TEXTURE2D_DESC* pDesc) = 0;
@@ -237,6 +241,8 @@ class ID3D11Device : public IUnknown {
 public:
     virtual HRESULT CreateBuffer(const D3D11_BUFFER_DESC* pDesc, const D3D11_SUBRESOURCE_DATA* pInitialData,
                                  ID3D11Buffer** ppBuffer) = 0;
+    virtual HRESULT CreateTexture1D(const D3D11_TEXTURE1D_DESC* pDesc, const D3D11_SUBRESOURCE_DATA* pInitialData,
+                                    ID3D11Texture1D** ppTexture1D) = 0;
     virtual HRESULT CreateTexture2D(const D3D11_TEXTURE2D_DESC* pDesc, const D3D11_SUBRESOURCE_DATA* pInitialData,
                                     ID3D11Texture2D** ppTexture2D) = 0;
     virtual HRESULT CreateTexture3D(const D3D11_TEXTURE3D_DESC* pDesc, const D3D11_SUBRESOURCE_DATA* pInitialData,

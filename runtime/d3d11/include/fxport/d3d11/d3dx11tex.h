@@ -2,7 +2,7 @@
 // Rastertek DX11 tutorials' TextureClass and the DirectX SDK samples call) and
 // D3DX11CreateTextureFromFile. A DDS file keeps what it stores: its DXGI format (BC1-BC7 as blocks,
 // float and 16-bit formats as they are), its mip levels, a cube map (TEXTURECUBE view), a texture
-// array, a volume (ID3D11Texture3D); a DDS whose format or partial mip chain fxport cannot hold
+// array, a volume (ID3D11Texture3D), a 1D texture or array (ID3D11Texture1D); a DDS whose format or partial mip chain fxport cannot hold
 // natively but whose texels decode to RGBA8 (B8G8R8X8, 24-bit RGB ...) is loaded decoded as
 // R8G8B8A8_UNORM. Any other image (PNG, JPEG, BMP, TGA ... through stb_image, as XNA's
 // Texture2D::FromFile reads them) becomes R8G8B8A8_UNORM with a full mip chain, each level the 2x2

@@ -37,6 +37,7 @@ namespace fxport {
 
 class Effect;
 class StructuredBuffer;
+class Texture1D;
 
 enum class PrimitiveType : std::uint8_t { TriangleList, TriangleStrip, LineList, LineStrip, PointList };
 
@@ -218,6 +219,8 @@ public:
     void SetUnorderedAccess(int slot, StructuredBuffer& buffer) { SetUnorderedAccess(slot, &buffer); }
     void SetUnorderedAccess(int slot, Texture2D* texture);
     void SetUnorderedAccess(int slot, Texture2D& texture) { SetUnorderedAccess(slot, &texture); }
+    // fxport: level 0 of a 1D texture (RWTexture1D), or every layer of a 1D array (RWTexture1DArray).
+    void SetUnorderedAccess(int slot, Texture1D* texture);
     // Shader-resource buffers (register tN) for StructuredBuffer<T> / ByteAddressBuffer.
     void SetShaderResource(int slot, StructuredBuffer* buffer);
     void SetShaderResource(int slot, StructuredBuffer& buffer) { SetShaderResource(slot, &buffer); }
