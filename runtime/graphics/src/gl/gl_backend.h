@@ -3,6 +3,8 @@
 // clears, copies, transfers) in gl_work.cpp.
 #pragma once
 
+#include <unordered_map>
+
 #include "device/backend.h"
 #include "fxport/platform/gl.h"
 
@@ -14,9 +16,8 @@ inline GLenum glIndexTypeOf(const DrawCall& call) { return call.indexSize == 4 ?
 // 1D textures (gl_line_textures.cpp): GL addresses a 1D array's layer as y in its 2D calls, where
 // other arrays take it as z, and a plain 1D texture through 1D calls. Each returns false for a
 // texture of another target, which the caller then handles.
-GLenum glTargetOf(GLuint texture);
-bool writeLine(GLuint texture, SurfaceFormat format, int face, int level, const Rectangle& area, const void* data);
-bool readLine(GLuint texture, GLenum format, GLenum type, int face, int level, std::size_t bytes, void* out);
+bool writeLine(GLenum target, GLuint texture, SurfaceFormat format, int face, int level, const Rectangle& area, const void* data);
+bool readLine(GLenum target, GLuint texture, GLenum format, GLenum type, int face, int level, std::size_t bytes, void* out);
 // The (x, y, z) glCopyImageSubData takes for texel x of row y in `layer` (-1: not an array) of a texture of `target`.
 void copyOrigin(GLenum target, int x, int y, int layer, GLint (&out)[3]);
 // Moves each uniform block of a linked program from its HLSL binding b to `stage`'s range
@@ -84,7 +85,10 @@ public:
     BackendObject createTexture(bool cube, SurfaceFormat format, int levels, int width, int height) override;
     BackendObject createBufferTexture(BackendObject buffer, SurfaceFormat format, std::size_t offset, std::size_t bytes) override;
     std::size_t bufferOffsetAlignment(bool storage) override;
-    void deleteTexture(BackendObject texture) override { glDeleteTextures(1, &texture); }
+    void deleteTexture(BackendObject texture) override {
+        lineTargets_.erase(texture);
+        glDeleteTextures(1, &texture);
+    }
     void writeTexture(BackendObject texture, SurfaceFormat format, int face, int level, const Rectangle& area,
                       const void* data) override;
     void readTexture(BackendObject texture, SurfaceFormat format, int face, int level, std::size_t bytes, void* out) override;
@@ -160,6 +164,16 @@ public:
     }
 
     GpuLimits measureLimits(const std::vector<SurfaceFormat>& formats, int size, int repeats) override;  // gl_limits_probe.cpp
+
+private:
+    // GL_TEXTURE_1D or GL_TEXTURE_1D_ARRAY for the 1D textures and views this backend made,
+    // GL_NONE for any other texture: remembered at creation, so uploads, copies and image binds
+    // do not ask GL for a texture's target each time.
+    GLenum lineTargetOf(BackendObject texture) const {
+        auto it = lineTargets_.find(texture);
+        return it == lineTargets_.end() ? GL_NONE : it->second;
+    }
+    std::unordered_map<BackendObject, GLenum> lineTargets_;
 };
 
 }  // namespace fxport

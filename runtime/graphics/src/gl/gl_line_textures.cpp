@@ -7,14 +7,7 @@
 
 namespace fxport {
 
-GLenum glTargetOf(GLuint texture) {
-    GLint target = GL_NONE;
-    glGetTextureParameteriv(texture, GL_TEXTURE_TARGET, &target);  // GL 4.5
-    return GLenum(target);
-}
-
-bool writeLine(GLuint texture, SurfaceFormat format, int face, int level, const Rectangle& area, const void* data) {
-    const GLenum target = glTargetOf(texture);
+bool writeLine(GLenum target, GLuint texture, SurfaceFormat format, int face, int level, const Rectangle& area, const void* data) {
     const detail::GlTextureFormat& f = detail::glFormat(format);
     if (target == GL_TEXTURE_1D)
         glTextureSubImage1D(texture, level, area.X, area.Width, f.format, f.type, data);
@@ -25,8 +18,8 @@ bool writeLine(GLuint texture, SurfaceFormat format, int face, int level, const 
     return true;
 }
 
-bool readLine(GLuint texture, GLenum format, GLenum type, int face, int level, std::size_t bytes, void* out) {
-    if (face < 0 || glTargetOf(texture) != GL_TEXTURE_1D_ARRAY) return false;  // a plain 1D texture reads whole (glGetTextureImage)
+bool readLine(GLenum target, GLuint texture, GLenum format, GLenum type, int face, int level, std::size_t bytes, void* out) {
+    if (face < 0 || target != GL_TEXTURE_1D_ARRAY) return false;  // a plain 1D texture reads whole (glGetTextureImage)
     GLint width = 0;
     glGetTextureLevelParameteriv(texture, level, GL_TEXTURE_WIDTH, &width);
     glGetTextureSubImage(texture, level, 0, face, 0, width, 1, 1, format, type, GLsizei(bytes), out);

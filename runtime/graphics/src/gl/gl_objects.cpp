@@ -150,6 +150,7 @@ BackendObject GlBackend::createLineTexture(SurfaceFormat format, int levels, int
     else
         glTextureStorage1D(name, levels, detail::glFormat(format).internalFormat, width);
     applyD3D9Swizzle(name, format);
+    lineTargets_[name] = array ? GL_TEXTURE_1D_ARRAY : GL_TEXTURE_1D;
     return name;
 }
 
@@ -160,7 +161,7 @@ BackendObject GlBackend::createTextureView(BackendObject source, SurfaceFormat f
     GLuint name = 0;
     glGenTextures(1, &name);
     // A view keeps its source's dimension: a 1D texture's views are 1D (GL allows no other).
-    const GLenum sourceTarget = glTargetOf(source);
+    const GLenum sourceTarget = lineTargetOf(source);
     const bool line = sourceTarget == GL_TEXTURE_1D || sourceTarget == GL_TEXTURE_1D_ARRAY;
     const GLenum target = line ? (array ? GL_TEXTURE_1D_ARRAY : GL_TEXTURE_1D) : (array ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D);
     glTextureView(name, target, source, detail::glFormat(format).internalFormat, GLuint(firstLevel),
@@ -170,6 +171,7 @@ BackendObject GlBackend::createTextureView(BackendObject source, SurfaceFormat f
         return 0;
     }
     applyD3D9Swizzle(name, format);
+    if (line) lineTargets_[name] = target;
     return name;
 }
 

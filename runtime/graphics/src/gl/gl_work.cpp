@@ -42,7 +42,7 @@ void GlBackend::writeTexture(BackendObject texture, SurfaceFormat format, int fa
                              const void* data) {
     const detail::GlTextureFormat& f = detail::glFormat(format);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    if (!f.isCompressed && writeLine(texture, format, face, level, area, data)) return;
+    if (!f.isCompressed && writeLine(lineTargetOf(texture), texture, format, face, level, area, data)) return;
     if (f.isCompressed) {
         const auto bytes = GLsizei(regionBytes(format, area.Width, area.Height));
         if (face < 0)
@@ -88,7 +88,7 @@ void GlBackend::copySamples(BackendObject source, BackendObject destination, int
 void GlBackend::readTexture(BackendObject texture, SurfaceFormat format, int face, int level, std::size_t bytes, void* out) {
     const detail::GlTextureFormat& f = detail::glFormat(format);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    if (!f.isCompressed && readLine(texture, f.format, f.type, face, level, bytes, out)) return;
+    if (!f.isCompressed && readLine(lineTargetOf(texture), texture, f.format, f.type, face, level, bytes, out)) return;
     if (f.isCompressed) {
         if (face < 0) return glGetCompressedTextureImage(texture, level, GLsizei(bytes), out);
         const Rectangle size = textureLevelSize(texture, level);
@@ -104,7 +104,7 @@ void GlBackend::readTexture(BackendObject texture, SurfaceFormat format, int fac
 
 void GlBackend::readTextureFloats(BackendObject texture, int face, int level, std::size_t bytes, void* out) {
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    if (readLine(texture, GL_RGBA, GL_FLOAT, face, level, bytes, out)) return;
+    if (readLine(lineTargetOf(texture), texture, GL_RGBA, GL_FLOAT, face, level, bytes, out)) return;
     if (face < 0) {
         glGetTextureImage(texture, level, GL_RGBA, GL_FLOAT, GLsizei(bytes), out);
     } else {
@@ -124,7 +124,7 @@ void GlBackend::copyTexture(const TextureCopy& c) {
     const GLenum target = c.cube ? GL_TEXTURE_CUBE_MAP : c.multisampled ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D;
     // An array's layer is addressed as its z (GL copies between a 2D texture and an array's layer).
     // 1D textures keep their own target (a 1D array's layer is its y: copyOrigin).
-    const GLenum sourceActual = glTargetOf(c.source), destinationActual = glTargetOf(c.destination);
+    const GLenum sourceActual = lineTargetOf(c.source), destinationActual = lineTargetOf(c.destination);
     const auto lineTarget = [](GLenum t) { return t == GL_TEXTURE_1D || t == GL_TEXTURE_1D_ARRAY; };
     const GLenum sourceTarget = lineTarget(sourceActual) ? sourceActual : c.sourceLayer >= 0 ? GL_TEXTURE_2D_ARRAY : target;
     const GLenum destinationTarget = lineTarget(destinationActual) ? destinationActual : c.destinationLayer >= 0 ? GL_TEXTURE_2D_ARRAY : target;
@@ -235,7 +235,7 @@ void GlBackend::invalidateFramebuffer(int colourTargets, bool depth, bool stenci
 
 void GlBackend::bindStorageImage(int unit, BackendObject texture, SurfaceFormat format, bool writes) {
     // A 1D array is bound layered: a shader's image1DArray indexes its layers.
-    const GLboolean layered = glTargetOf(texture) == GL_TEXTURE_1D_ARRAY ? GL_TRUE : GL_FALSE;
+    const GLboolean layered = lineTargetOf(texture) == GL_TEXTURE_1D_ARRAY ? GL_TRUE : GL_FALSE;
     glBindImageTexture(GLuint(unit), texture, 0, layered, 0, writes ? GL_READ_WRITE : GL_READ_ONLY,
                        detail::glFormat(format).internalFormat);
 }
