@@ -213,3 +213,18 @@ TEST(RealworldThirdWave, TypeKeywordsInAnyCase) {
                                  "float4 main(float4 p : POSITION) : SV_Position { Vector v; v.xyzw = p; return v.xyzw; }\n",
                                  "vs_4_0"));
 }
+
+// Entry attributes in another case: Intel's ZoomBox.hlsl (DynamicResolutionRendering, AOIT) writes
+// `[MaxVertexCount(12)]` and fxc compiles it at run time; `[NumThreads]` stays refused, as fxc
+// refuses it (vkd3d's numthreads), and an array sized by a constant of such a name is left alone.
+TEST(RealworldThirdWave, EntryAttributesInAnyCase) {
+    CompiledEffect gs = compileLoose("struct V { float4 p : SV_Position; };\n"
+                                     "[MaxVertexCount(3)]\n"
+                                     "void main(triangle V i[3], inout TriangleStream<V> s) { for (int k = 0; k < 3; ++k) s.Append(i[k]); }\n",
+                                     "gs_4_0");
+    EXPECT_NE(onlyShader(gs).glsl.find("max_vertices = 3"), std::string::npos) << onlyShader(gs).glsl;
+    EXPECT_THROW(compileLoose("[NumThreads(1, 1, 1)]\nvoid main() {}\n", "cs_5_0"), CompileError);
+    EXPECT_NO_THROW(compileLoose("static const int Domain = 2;\nfloat4 c[Domain];\n"
+                                 "float4 main() : SV_Target { return c[1]; }\n",
+                                 "ps_4_0"));
+}

@@ -45,6 +45,7 @@
 #include "rewrite/unused_sampler_arrays.h"
 #include "rewrite/sampler_array_elements.h"
 #include "rewrite/sampler_textures.h"
+#include "rewrite/attribute_case.h"
 #include "rewrite/keyword_case.h"
 #include "rewrite/literal_suffixes.h"
 #include "fx/render_states.h"
@@ -1372,6 +1373,7 @@ CompiledEffect compileUncached(const std::string& source, const std::string& dis
     pre.text = samplerTexturesDeclared(pre.text);  // tex2D(sam, uv) beside tex.Sample(sam, uv)
     pre.text = longLiteralSuffixesDropped(pre.text);  // 3lu -> 3u
     pre.text = typeKeywordsLowerCased(pre.text);      // Matrix m -> matrix m
+    pre.text = entryAttributeNamesLowerCased(pre.text);  // [MaxVertexCount(3)] -> [maxvertexcount(3)]
 
     EffectSyntax syntax = parseEffect(pre.text, pre.map, isLooseShaderCompile(options));
     CompiledEffect effect;
