@@ -228,3 +228,23 @@ TEST(RealworldThirdWave, EntryAttributesInAnyCase) {
                                  "float4 main() : SV_Target { return c[1]; }\n",
                                  "ps_4_0"));
 }
+
+// More textures than GL's 32 units per stage (D3D11 has 128 slots): FX1404 naming the texture past
+// the limit, not an inconsistent-effect FX3101; 32 of them at high registers still compile.
+TEST(RealworldThirdWave, TexturesPastTheGlUnitsAreNamed) {
+    auto shader = [](int count) {
+        std::string s;
+        for (int i = 0; i < count; ++i) s += "Texture2D t" + std::to_string(i) + " : register(t" + std::to_string(i + 40) + ");\n";
+        s += "SamplerState s;\nfloat4 main(float2 uv : TEXCOORD0) : SV_Target {\n    float4 c = 0;\n";
+        for (int i = 0; i < count; ++i) s += "    c += t" + std::to_string(i) + ".Sample(s, uv);\n";
+        return s + "    return c;\n}\n";
+    };
+    EXPECT_EQ(onlyShader(compileLoose(shader(32), "ps_5_0")).samplers.size(), 32u);
+    try {
+        compileLoose(shader(33), "ps_5_0");
+        ADD_FAILURE() << "33 textures compiled";
+    } catch (const CompileError& err) {
+        EXPECT_NE(std::string(err.what()).find("FX1404"), std::string::npos) << err.what();
+        EXPECT_NE(std::string(err.what()).find("'t32' is its texture and sampler pair number 33"), std::string::npos) << err.what();
+    }
+}

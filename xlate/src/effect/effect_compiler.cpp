@@ -733,6 +733,10 @@ int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile
         error(diag::kSpirv, "SPIRV-Cross could not translate '" + expr.entry + "': " + glsl.error, expr.token);
         return -1;
     }
+    if (!glsl.unsupported.empty()) {
+        error(diag::kUnsupported, "'" + expr.entry + "' (" + expr.profile + ") cannot run on GL: " + glsl.unsupported, expr.token);
+        return -1;
+    }
     CompiledShader shader;
     shader.profile = profile;
     shader.entryPoint = displayEntry;

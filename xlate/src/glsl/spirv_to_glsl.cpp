@@ -498,6 +498,12 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
                 while (runTaken(u, true)) ++u;
             }
             for (int k = 0; k < b.elements; ++k) pairUnits.insert(u + k);
+            if (u + b.elements > kGlTextureUnits) {
+                // D3D11 gives a stage 128 texture slots; GL drivers give 32 units (NVIDIA, Mesa).
+                out.unsupported = "'" + image + "' is its texture and sampler pair number " + std::to_string(pairUnits.size() + dx9Units.size()) +
+                                  ", and a GL stage has " + std::to_string(kGlTextureUnits) + " texture units (D3D11 has 128 slots)";
+                return out;
+            }
             b.unit = u;
             b.glslName = "fxport_" + image + "_" + (sampler.empty() ? std::string("default") : sampler);
             compiler.set_name(c.combined_id, b.glslName);

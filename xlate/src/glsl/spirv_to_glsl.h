@@ -50,7 +50,8 @@ struct UniformBlockLayout {
 
 struct GlslShader {
     std::string glsl;
-    std::string error;  // non-empty = failed
+    std::string error;        // non-empty = failed
+    std::string unsupported;  // non-empty = needs more than GL gives (FX1404), e.g. texture units
     std::vector<VertexInput> inputs;
     std::vector<SamplerBinding> samplers;
     // Per sampler binding, the SPIR-V id of the variable it samples (the texture of a pair). glslang
