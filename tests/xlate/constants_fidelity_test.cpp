@@ -173,6 +173,24 @@ TEST(ConstantsFidelity, LocalVariableAnnotationsAreRefused) {
               "");
 }
 
+// Gather with four offsets is four gathers with one offset each, component k from gather k (as fxc
+// compiles it and GLSL defines it): llvmpipe's textureGatherOffsets reads other texels
+// (gather_offsets.h). The values are the conformance runner's (gather.shader_test,
+// gather-cmp.shader_test).
+TEST(ConstantsFidelity, GatherWithFourOffsetsIsFourGathers) {
+    CompiledEffect e = compileEffectSource("Texture2D t; SamplerState s; SamplerComparisonState c;\n"
+                                           "float4 PS() : SV_Target { return t.GatherGreen(s, float2(0.2, 0.2), int2(0, 0), int2(1, 0), int2(0, 0), int2(0, 1))\n"
+                                           "  + t.GatherCmp(c, float2(0.2, 0.2), 0.5, int2(0, 0), int2(1, 0), int2(0, 0), int2(0, 1)); }\n"
+                                           "technique11 T { pass P { SetPixelShader(CompileShader(ps_5_0, PS())); } }\n",
+                                           "virtual/GatherOffsets.fx", uncached());
+    ASSERT_FALSE(e.shaders.empty());
+    const std::string& glsl = e.shaders.back().glsl;
+    EXPECT_EQ(glsl.find("textureGatherOffsets"), std::string::npos) << glsl;
+    size_t gathers = 0;
+    for (size_t at = glsl.find("textureGatherOffset("); at != std::string::npos; at = glsl.find("textureGatherOffset(", at + 1)) ++gathers;
+    EXPECT_EQ(gathers, 8u) << glsl;
+}
+
 // Load()'s offset from a swizzle of a local vector fxc folds and glslang does not: the fetch reads
 // coordinate + offset, as GLSL takes no variable texelFetchOffset (fetch_offsets.h). The values
 // are the conformance runner's (swizzle-constant-prop.shader_test).

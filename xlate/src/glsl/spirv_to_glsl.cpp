@@ -3,6 +3,7 @@
 #include "glsl/arrayed_clip_inputs.h"
 
 #include "spirv/fetch_offsets.h"
+#include "spirv/gather_offsets.h"
 #include "spirv/integer_matrices.h"
 #include "spirv/live_uniform_bytes.h"
 
@@ -335,7 +336,7 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
             packed = packConstantBuffers(module, *effect.syntax);
             for (PackedBlock& b : packed)
                 if (!b.glslDeclarable && module.reparse()) flattenConstantBuffer(module, b);
-            if (module.reparse()) runSpirvPasses(module, {integerMatricesAsArrays, fetchOffsetsIntoCoordinates});
+            if (module.reparse()) runSpirvPasses(module, {integerMatricesAsArrays, fetchOffsetsIntoCoordinates, gatherOffsetsAsFourGathers});
             spirv = module.assemble();
         }
         const auto live = liveUniformBytes(spirv);
