@@ -147,6 +147,35 @@ void cs(uint i : SV_DispatchThreadID) { Out.Store(i * 4, In.Load(i * 4) + 1000);
     for (std::uint32_t w = 0; w < 16; ++w) EXPECT_EQ(got[w], w >= 8 && w < 12 ? in[w - 4] + 1000 : 0u) << "word " << w;
 }
 
+// A static global initialized by calling the effect's functions, read by a compute shader (which
+// runs without fxport's entry wrapper): fxc runs the initializer before the entry; glslang crashed
+// (FX9001) where the entry did not reach the functions the initializer calls.
+TEST(D3D11BufferRange, StaticInitializersCallingFunctionsRunBeforeAComputeEntry) {
+    Device d;
+    const std::vector<std::uint32_t> zeros(4, 0);
+    ComPtr<ID3D11Buffer> target = makeBuffer(d, zeros.data(), 16, D3D11_BIND_UNORDERED_ACCESS, D3D11_RESOURCE_MISC_BUFFER_ALLOW_RAW_VIEWS);
+    ASSERT_TRUE(target);
+    D3D11_UNORDERED_ACCESS_VIEW_DESC ud;
+    ud.Format = DXGI_FORMAT_R32_TYPELESS;
+    ud.ViewDimension = D3D11_UAV_DIMENSION_BUFFER;
+    ud.Buffer.FirstElement = 0;
+    ud.Buffer.NumElements = 4;
+    ud.Buffer.Flags = D3D11_BUFFER_UAV_FLAG_RAW;
+    ComPtr<ID3D11UnorderedAccessView> uav;
+    ASSERT_EQ(d.device->CreateUnorderedAccessView(target.Get(), &ud, uav.GetAddressOf()), S_OK) << lastError();
+    dispatch(d, R"(
+RWByteAddressBuffer Out : register(u0);
+uint twice(uint x) { return x * 2; }
+static uint Base = twice(20) + 1;
+static uint Step = twice(Base);
+[numthreads(4, 1, 1)]
+void cs(uint i : SV_DispatchThreadID) { Out.Store(i * 4, Base + Step * i); })",
+             nullptr, uav.Get());
+    const std::vector<std::uint32_t> got = readBuffer<std::uint32_t>(d, target.Get());
+    ASSERT_EQ(got.size(), 4u);
+    for (std::uint32_t i = 0; i < 4; ++i) EXPECT_EQ(got[i], 41u + 82u * i) << "word " << i;
+}
+
 // D3D's GetDimensions of a byte-address buffer is its view's size in bytes, not in words (glslang
 // answers the count of uints); through a function parameter too.
 TEST(D3D11BufferRange, RawViewsReportTheirSizeInBytes) {

@@ -248,3 +248,14 @@ TEST(RealworldThirdWave, TexturesPastTheGlUnitsAreNamed) {
         EXPECT_NE(std::string(err.what()).find("'t32' is its texture and sampler pair number 33"), std::string::npos) << err.what();
     }
 }
+
+// The fuzz seed written to reach the recent rewrites (tests/fuzz/seeds) compiles, so the fuzzers
+// start from a compiled effect; its geometry and compute entries read a static initializer that
+// calls a function (glslang crashed on them before those entries reached the callee).
+TEST(RealworldThirdWave, RecentRewritesFuzzSeedCompiles) {
+    CompileOptions o;
+    o.useCache = false;
+    CompiledEffect e = compileEffectFile("tests/fuzz/seeds/recent_rewrites.fx", o);
+    EXPECT_EQ(e.techniques.size(), 2u);
+    EXPECT_EQ(e.shaders.size(), 4u);
+}

@@ -46,6 +46,14 @@ std::vector<TextEdit> initializerCallScopes(const EffectSyntax& syntax) {
                          "void " + name + "() {" + (previous.empty() ? "" : " " + previous + "();") + " } "});
         previous = name;
     }
+    // Geometry, hull, domain and compute entries run without the entry wrapper: each function
+    // defined after the chain calls its last link first too (the links are empty: calling them
+    // from a function that is no entry changes nothing).
+    const auto& t = syntax.tokens;
+    for (const FxFunction& f : syntax.functions) {
+        if (starts.empty() || f.declaration.begin < *starts.rbegin() || f.body.begin == 0 || !t[f.body.begin - 1].is("{")) continue;
+        edits.push_back({t[f.body.begin].offset, t[f.body.begin].offset, std::string(kStaticInitializerScopes) + "(); "});
+    }
     return edits;
 }
 
