@@ -4,8 +4,10 @@
 // itself to its linker ("Recursion detected"), and where that function is not reached from the
 // entry point glslang drops the callee and then crashes on the call. Each such declaration gets a
 // function of its own just before it (the caller glslang records) that calls the function placed
-// before the previous one; the entry wrapper calls the last (kStaticInitializerScopes) first, so
-// every callee stays reachable.
+// before the previous one; the entry wrapper calls the last (kStaticInitializerScopes) first, and
+// so does every function defined after it (geometry, hull, domain and compute entries have no
+// wrapper; the links are empty, so a call from elsewhere changes nothing): every callee stays
+// reachable.
 #pragma once
 
 #include <vector>
