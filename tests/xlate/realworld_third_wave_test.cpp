@@ -2,6 +2,7 @@
 // (walbourn/directx-sdk-samples, compiled by the entry points and profiles their C++ names) that
 // fxc takes and fxport refused. Each is a small source of our own, compiled as a loose file as
 // D3DCompileFromFile would, with what the construct means asserted on the reflection or the GLSL.
+#include <set>
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -258,4 +259,23 @@ TEST(RealworldThirdWave, RecentRewritesFuzzSeedCompiles) {
     CompiledEffect e = compileEffectFile("tests/fuzz/seeds/recent_rewrites.fx", o);
     EXPECT_EQ(e.techniques.size(), 2u);
     EXPECT_EQ(e.shaders.size(), 4u);
+}
+
+// An error in a function two shaders include (glslang compiles the whole effect for each) is
+// reported once.
+TEST(RealworldThirdWave, AnErrorSeenByEveryShaderIsReportedOnce) {
+    CompileOptions o;
+    o.useCache = false;
+    try {
+        compileEffectSource("float4 helper(float4 c) { return c * missing; }\n"
+                            "float4 VS(float4 p : POSITION) : POSITION { return helper(p); }\n"
+                            "float4 PS(float4 c : COLOR0) : COLOR0 { return helper(c); }\n"
+                            "technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n",
+                            "virtual/Repeated.fx", o);
+        ADD_FAILURE() << "compiled";
+    } catch (const CompileError& err) {
+        std::set<std::string> seen;
+        for (const auto& d : err.diagnostics()) EXPECT_TRUE(seen.insert(d.format()).second) << d.format();
+        EXPECT_FALSE(err.diagnostics().empty());
+    }
 }

@@ -1,6 +1,7 @@
 #include "fxport/xlate/diagnostics.h"
 
 #include <algorithm>
+#include <set>
 
 namespace fxport::xlate {
 
@@ -44,7 +45,17 @@ static std::string joinMessages(const std::vector<Diagnostic>& diagnostics) {
     return all.empty() ? std::string("effect compilation failed") : all;
 }
 
+// glslang compiles the whole effect for each of its shaders, so an error in a function every
+// shader includes comes back once per shader, word for word: it is reported once.
+static std::vector<Diagnostic> withoutRepeats(std::vector<Diagnostic> diagnostics) {
+    std::vector<Diagnostic> out;
+    std::set<std::string> seen;
+    for (auto& d : diagnostics)
+        if (seen.insert(d.format()).second) out.push_back(std::move(d));
+    return out;
+}
+
 CompileError::CompileError(std::vector<Diagnostic> diagnostics)
-    : std::runtime_error(joinMessages(diagnostics)), diagnostics_(std::move(diagnostics)) {}
+    : std::runtime_error(joinMessages(withoutRepeats(diagnostics))), diagnostics_(withoutRepeats(std::move(diagnostics))) {}
 
 }  // namespace fxport::xlate
