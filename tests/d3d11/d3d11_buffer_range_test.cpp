@@ -25,6 +25,30 @@ void dispatch(Device& d, const char* source, ID3D11ShaderResourceView* srv, ID3D
     EXPECT_EQ(lastError(), "");
 }
 
+// A raw (ByteAddressBuffer) view of `count` words from word `first`.
+ComPtr<ID3D11ShaderResourceView> rawSrv(Device& d, ID3D11Buffer* buffer, UINT first, UINT count) {
+    D3D11_SHADER_RESOURCE_VIEW_DESC sd;
+    sd.Format = DXGI_FORMAT_R32_TYPELESS;
+    sd.ViewDimension = D3D11_SRV_DIMENSION_BUFFEREX;
+    sd.BufferEx.FirstElement = first;
+    sd.BufferEx.NumElements = count;
+    sd.BufferEx.Flags = D3D11_BUFFEREX_SRV_FLAG_RAW;
+    ComPtr<ID3D11ShaderResourceView> srv;
+    EXPECT_EQ(d.device->CreateShaderResourceView(buffer, &sd, srv.GetAddressOf()), S_OK) << lastError();
+    return srv;
+}
+ComPtr<ID3D11UnorderedAccessView> rawUav(Device& d, ID3D11Buffer* buffer, UINT first, UINT count) {
+    D3D11_UNORDERED_ACCESS_VIEW_DESC ud;
+    ud.Format = DXGI_FORMAT_R32_TYPELESS;
+    ud.ViewDimension = D3D11_UAV_DIMENSION_BUFFER;
+    ud.Buffer.FirstElement = first;
+    ud.Buffer.NumElements = count;
+    ud.Buffer.Flags = D3D11_BUFFER_UAV_FLAG_RAW;
+    ComPtr<ID3D11UnorderedAccessView> uav;
+    EXPECT_EQ(d.device->CreateUnorderedAccessView(buffer, &ud, uav.GetAddressOf()), S_OK) << lastError();
+    return uav;
+}
+
 std::vector<std::uint32_t> counting(std::uint32_t n, std::uint32_t from) {
     std::vector<std::uint32_t> v(n);
     std::iota(v.begin(), v.end(), from);
@@ -120,22 +144,8 @@ TEST(D3D11BufferRange, RawViewsStartAtFirstElement) {
     ComPtr<ID3D11Buffer> source = makeBuffer(d, in.data(), 64, D3D11_BIND_SHADER_RESOURCE, rawMisc);
     ComPtr<ID3D11Buffer> target = makeBuffer(d, zeros.data(), 64, D3D11_BIND_UNORDERED_ACCESS, rawMisc);
     ASSERT_TRUE(source && target);
-    D3D11_SHADER_RESOURCE_VIEW_DESC sd;
-    sd.Format = DXGI_FORMAT_R32_TYPELESS;
-    sd.ViewDimension = D3D11_SRV_DIMENSION_BUFFEREX;
-    sd.BufferEx.FirstElement = 4;
-    sd.BufferEx.NumElements = 4;
-    sd.BufferEx.Flags = D3D11_BUFFEREX_SRV_FLAG_RAW;
-    ComPtr<ID3D11ShaderResourceView> srv;
-    ASSERT_EQ(d.device->CreateShaderResourceView(source.Get(), &sd, srv.GetAddressOf()), S_OK) << lastError();
-    D3D11_UNORDERED_ACCESS_VIEW_DESC ud;
-    ud.Format = DXGI_FORMAT_R32_TYPELESS;
-    ud.ViewDimension = D3D11_UAV_DIMENSION_BUFFER;
-    ud.Buffer.FirstElement = 8;
-    ud.Buffer.NumElements = 4;
-    ud.Buffer.Flags = D3D11_BUFFER_UAV_FLAG_RAW;
-    ComPtr<ID3D11UnorderedAccessView> uav;
-    ASSERT_EQ(d.device->CreateUnorderedAccessView(target.Get(), &ud, uav.GetAddressOf()), S_OK) << lastError();
+    ComPtr<ID3D11ShaderResourceView> srv = rawSrv(d, source.Get(), 4, 4);
+    ComPtr<ID3D11UnorderedAccessView> uav = rawUav(d, target.Get(), 8, 4);
     dispatch(d, R"(
 ByteAddressBuffer In : register(t0);
 RWByteAddressBuffer Out : register(u0);
@@ -155,14 +165,7 @@ TEST(D3D11BufferRange, StaticInitializersCallingFunctionsRunBeforeAComputeEntry)
     const std::vector<std::uint32_t> zeros(4, 0);
     ComPtr<ID3D11Buffer> target = makeBuffer(d, zeros.data(), 16, D3D11_BIND_UNORDERED_ACCESS, D3D11_RESOURCE_MISC_BUFFER_ALLOW_RAW_VIEWS);
     ASSERT_TRUE(target);
-    D3D11_UNORDERED_ACCESS_VIEW_DESC ud;
-    ud.Format = DXGI_FORMAT_R32_TYPELESS;
-    ud.ViewDimension = D3D11_UAV_DIMENSION_BUFFER;
-    ud.Buffer.FirstElement = 0;
-    ud.Buffer.NumElements = 4;
-    ud.Buffer.Flags = D3D11_BUFFER_UAV_FLAG_RAW;
-    ComPtr<ID3D11UnorderedAccessView> uav;
-    ASSERT_EQ(d.device->CreateUnorderedAccessView(target.Get(), &ud, uav.GetAddressOf()), S_OK) << lastError();
+    ComPtr<ID3D11UnorderedAccessView> uav = rawUav(d, target.Get(), 0, 4);
     dispatch(d, R"(
 RWByteAddressBuffer Out : register(u0);
 uint twice(uint x) { return x * 2; }
@@ -185,22 +188,8 @@ TEST(D3D11BufferRange, RawViewsReportTheirSizeInBytes) {
     ComPtr<ID3D11Buffer> source = makeBuffer(d, in.data(), 64, D3D11_BIND_SHADER_RESOURCE, rawMisc);
     ComPtr<ID3D11Buffer> target = makeBuffer(d, zeros.data(), 64, D3D11_BIND_UNORDERED_ACCESS, rawMisc);
     ASSERT_TRUE(source && target);
-    D3D11_SHADER_RESOURCE_VIEW_DESC sd;
-    sd.Format = DXGI_FORMAT_R32_TYPELESS;
-    sd.ViewDimension = D3D11_SRV_DIMENSION_BUFFEREX;
-    sd.BufferEx.FirstElement = 4;
-    sd.BufferEx.NumElements = 8;
-    sd.BufferEx.Flags = D3D11_BUFFEREX_SRV_FLAG_RAW;
-    ComPtr<ID3D11ShaderResourceView> srv;
-    ASSERT_EQ(d.device->CreateShaderResourceView(source.Get(), &sd, srv.GetAddressOf()), S_OK) << lastError();
-    D3D11_UNORDERED_ACCESS_VIEW_DESC ud;
-    ud.Format = DXGI_FORMAT_R32_TYPELESS;
-    ud.ViewDimension = D3D11_UAV_DIMENSION_BUFFER;
-    ud.Buffer.FirstElement = 0;
-    ud.Buffer.NumElements = 16;
-    ud.Buffer.Flags = D3D11_BUFFER_UAV_FLAG_RAW;
-    ComPtr<ID3D11UnorderedAccessView> uav;
-    ASSERT_EQ(d.device->CreateUnorderedAccessView(target.Get(), &ud, uav.GetAddressOf()), S_OK) << lastError();
+    ComPtr<ID3D11ShaderResourceView> srv = rawSrv(d, source.Get(), 4, 8);
+    ComPtr<ID3D11UnorderedAccessView> uav = rawUav(d, target.Get(), 0, 16);
     dispatch(d, R"(
 ByteAddressBuffer In : register(t0);
 RWByteAddressBuffer Out : register(u0);
