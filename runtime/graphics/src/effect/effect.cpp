@@ -251,6 +251,34 @@ std::unique_ptr<Effect> Effect::FromCompiledFile(fxport::GraphicsDevice& device,
 
 Effect::~Effect() { disposeFromDestructor(); }
 
+std::unique_ptr<Effect> Effect::Clone() {
+    if (IsDisposed()) throw InvalidOperation("Effect '" + impl_->displayName + "'.Clone(): the effect was disposed");
+    // Both whole, so their blocks have the final layouts and the values copy byte for byte.
+    auto clone = std::make_unique<Effect>(device(), compiled());
+    copyValuesTo(*clone);
+    return clone;
+}
+
+void Effect::copyValuesTo(Effect& clone) {
+    // Blocks of one size are copied: after Clone's compiled() both effects have the final layouts;
+    // a stock effect and its clone, built alike, have the same ones (and push their properties
+    // into them at each Apply anyway). Compiling every permutation here would take seconds.
+    Impl& from = *impl_;
+    Impl& to = *clone.impl_;
+    for (std::size_t b = 0; b < from.blocks.size() && b < to.blocks.size(); ++b) {
+        ConstantBlock& target = to.blocks[b].constants;
+        if (target.bytes.size() != from.blocks[b].constants.bytes.size()) continue;
+        target.bytes = from.blocks[b].constants.bytes;
+        target.dirtyBegin = 0;
+        target.dirtyEnd = int(target.bytes.size());
+    }
+    to.textures = from.textures;
+    to.unread = from.unread;
+    clone.Name = Name;
+    for (std::size_t t = 0; t < Techniques.items_.size(); ++t)
+        if (CurrentTechnique == Techniques.items_[t].get() && t < clone.Techniques.items_.size()) clone.CurrentTechnique = clone.Techniques.items_[t].get();
+}
+
 const xlate::CompiledEffect& Effect::compiled() const {
     if (!impl_->whole) const_cast<Effect*>(this)->Precompile();
     return *impl_->whole->effect;

@@ -31,6 +31,8 @@ class AlphaTestEffect : public Effect, public IEffectMatrices, public IEffectFog
 public:
     explicit AlphaTestEffect(fxport::GraphicsDevice& device);
     ~AlphaTestEffect() override;
+    // XNA's Clone: a AlphaTestEffect with these properties and the parameter values.
+    std::unique_ptr<Effect> Clone() override;
 
     Vector3 DiffuseColor = Vector3(1, 1, 1);
     float Alpha = 1;

@@ -50,6 +50,8 @@ public:
     // DirectionalLight0 enabled (white, pointing down -Z), lighting off.
     explicit BasicEffect(fxport::GraphicsDevice& device);
     ~BasicEffect() override;
+    // XNA's Clone: a BasicEffect with these properties and the parameter values.
+    std::unique_ptr<Effect> Clone() override;
 
     Vector3 DiffuseColor = Vector3(1, 1, 1);
     Vector3 EmissiveColor = Vector3(0, 0, 0);

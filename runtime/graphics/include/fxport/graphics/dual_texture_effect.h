@@ -30,6 +30,8 @@ class DualTextureEffect : public Effect, public IEffectMatrices, public IEffectF
 public:
     explicit DualTextureEffect(fxport::GraphicsDevice& device);
     ~DualTextureEffect() override;
+    // XNA's Clone: a DualTextureEffect with these properties and the parameter values.
+    std::unique_ptr<Effect> Clone() override;
 
     Vector3 DiffuseColor = Vector3(1, 1, 1);
     float Alpha = 1;

@@ -286,6 +286,11 @@ public:
     EffectTechniqueCollection Techniques;
     EffectTechnique* CurrentTechnique = nullptr;
 
+    // XNA's Effect.Clone: a new effect of the same code (compiled and linked now), its own copy of
+    // every parameter value (constants, textures), the same CurrentTechnique and Name. The stock
+    // effects clone as their own type with their properties. The clone is the caller's.
+    virtual std::unique_ptr<Effect> Clone();
+
     // The whole effect compiled (compiles the techniques not compiled yet).
     const xlate::CompiledEffect& compiled() const;
     // Compiles and links every technique not compiled yet.
@@ -302,6 +307,9 @@ protected:
     // pushes its properties into Parameters here and returns the pass to apply instead of `pass`
     // (its shader permutation's); the default applies `pass`.
     virtual EffectPass& OnApply(EffectPass& pass) { return pass; }
+    // Clone's second half: every parameter value and the current technique into `clone`, an effect
+    // of the same code (a stock effect's Clone makes its own type, then calls this).
+    void copyValuesTo(Effect& clone);
 
 private:
     friend class EffectPass;   // calls OnApply

@@ -34,6 +34,8 @@ public:
     // Defaults as XNA: lighting on with DirectionalLight0 enabled, amount 1, no specular, Fresnel 1.
     explicit EnvironmentMapEffect(fxport::GraphicsDevice& device);
     ~EnvironmentMapEffect() override;
+    // XNA's Clone: a EnvironmentMapEffect with these properties and the parameter values.
+    std::unique_ptr<Effect> Clone() override;
 
     Vector3 DiffuseColor = Vector3(1, 1, 1);
     Vector3 EmissiveColor = Vector3(0, 0, 0);

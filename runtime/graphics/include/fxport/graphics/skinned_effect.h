@@ -37,6 +37,8 @@ public:
     // 4 weights per vertex, every bone the identity.
     explicit SkinnedEffect(fxport::GraphicsDevice& device);
     ~SkinnedEffect() override;
+    // XNA's Clone: a SkinnedEffect with these properties and the parameter values.
+    std::unique_ptr<Effect> Clone() override;
 
     Vector3 DiffuseColor = Vector3(1, 1, 1);
     Vector3 EmissiveColor = Vector3(0, 0, 0);

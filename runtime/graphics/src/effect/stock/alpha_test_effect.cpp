@@ -36,6 +36,20 @@ AlphaTestEffect::AlphaTestEffect(GraphicsDevice& device)
     CurrentTechnique = Techniques[techniqueNames()[std::size_t(permutation())]];
 }
 
+std::unique_ptr<Effect> AlphaTestEffect::Clone() {
+    auto clone = std::make_unique<AlphaTestEffect>(device());
+    copyValuesTo(*clone);
+    clone->IEffectMatrices::operator=(*this);
+    clone->IEffectFog::operator=(*this);
+    clone->DiffuseColor = DiffuseColor;
+    clone->Alpha = Alpha;
+    clone->AlphaFunction = AlphaFunction;
+    clone->ReferenceAlpha = ReferenceAlpha;
+    clone->Texture = Texture;
+    clone->VertexColorEnabled = VertexColorEnabled;
+    return clone;
+}
+
 AlphaTestEffect::~AlphaTestEffect() = default;
 
 int AlphaTestEffect::permutation() const {

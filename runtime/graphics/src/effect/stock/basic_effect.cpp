@@ -37,6 +37,24 @@ BasicEffect::BasicEffect(GraphicsDevice& device)
     CurrentTechnique = Techniques[techniqueNames()[std::size_t(permutation())]];
 }
 
+std::unique_ptr<Effect> BasicEffect::Clone() {
+    auto clone = std::make_unique<BasicEffect>(device());
+    copyValuesTo(*clone);
+    clone->IEffectMatrices::operator=(*this);
+    clone->IEffectLights::operator=(*this);
+    clone->IEffectFog::operator=(*this);
+    clone->DiffuseColor = DiffuseColor;
+    clone->EmissiveColor = EmissiveColor;
+    clone->SpecularColor = SpecularColor;
+    clone->SpecularPower = SpecularPower;
+    clone->Alpha = Alpha;
+    clone->PreferPerPixelLighting = PreferPerPixelLighting;
+    clone->TextureEnabled = TextureEnabled;
+    clone->Texture = Texture;
+    clone->VertexColorEnabled = VertexColorEnabled;
+    return clone;
+}
+
 BasicEffect::~BasicEffect() = default;
 
 int BasicEffect::permutation() const {

@@ -25,6 +25,19 @@ DualTextureEffect::DualTextureEffect(GraphicsDevice& device)
     CurrentTechnique = Techniques[techniqueNames()[std::size_t(permutation())]];
 }
 
+std::unique_ptr<Effect> DualTextureEffect::Clone() {
+    auto clone = std::make_unique<DualTextureEffect>(device());
+    copyValuesTo(*clone);
+    clone->IEffectMatrices::operator=(*this);
+    clone->IEffectFog::operator=(*this);
+    clone->DiffuseColor = DiffuseColor;
+    clone->Alpha = Alpha;
+    clone->Texture = Texture;
+    clone->Texture2 = Texture2;
+    clone->VertexColorEnabled = VertexColorEnabled;
+    return clone;
+}
+
 DualTextureEffect::~DualTextureEffect() = default;
 
 int DualTextureEffect::permutation() const { return (VertexColorEnabled ? 2 : 0) + (FogEnabled ? 1 : 0); }

@@ -35,6 +35,23 @@ EnvironmentMapEffect::EnvironmentMapEffect(GraphicsDevice& device)
     CurrentTechnique = Techniques[techniqueNames()[std::size_t(permutation())]];
 }
 
+std::unique_ptr<Effect> EnvironmentMapEffect::Clone() {
+    auto clone = std::make_unique<EnvironmentMapEffect>(device());
+    copyValuesTo(*clone);
+    clone->IEffectMatrices::operator=(*this);
+    clone->IEffectLights::operator=(*this);
+    clone->IEffectFog::operator=(*this);
+    clone->DiffuseColor = DiffuseColor;
+    clone->EmissiveColor = EmissiveColor;
+    clone->Alpha = Alpha;
+    clone->Texture = Texture;
+    clone->EnvironmentMap = EnvironmentMap;
+    clone->EnvironmentMapAmount = EnvironmentMapAmount;
+    clone->EnvironmentMapSpecular = EnvironmentMapSpecular;
+    clone->FresnelFactor = FresnelFactor;
+    return clone;
+}
+
 EnvironmentMapEffect::~EnvironmentMapEffect() = default;
 
 int EnvironmentMapEffect::permutation() const {

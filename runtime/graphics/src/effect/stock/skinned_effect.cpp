@@ -36,6 +36,24 @@ SkinnedEffect::SkinnedEffect(GraphicsDevice& device)
     CurrentTechnique = Techniques[techniqueNames()[std::size_t(permutation())]];
 }
 
+std::unique_ptr<Effect> SkinnedEffect::Clone() {
+    auto clone = std::make_unique<SkinnedEffect>(device());
+    copyValuesTo(*clone);
+    clone->IEffectMatrices::operator=(*this);
+    clone->IEffectLights::operator=(*this);
+    clone->IEffectFog::operator=(*this);
+    clone->DiffuseColor = DiffuseColor;
+    clone->EmissiveColor = EmissiveColor;
+    clone->SpecularColor = SpecularColor;
+    clone->SpecularPower = SpecularPower;
+    clone->Alpha = Alpha;
+    clone->PreferPerPixelLighting = PreferPerPixelLighting;
+    clone->Texture = Texture;
+    clone->WeightsPerVertex = WeightsPerVertex;
+    clone->bones_ = bones_;
+    return clone;
+}
+
 SkinnedEffect::~SkinnedEffect() = default;
 
 void SkinnedEffect::SetBoneTransforms(std::span<const Matrix> boneTransforms) {
