@@ -164,6 +164,11 @@ struct GraphicsDevice::Impl {
     // --- vertex input
     VertexBuffer* vertexBuffer = nullptr;
     int vertexOffset = 0;
+    // SetVertexBuffers' bindings (SetVertexBuffer's one); more than one: draws go through the
+    // device core's streams (vertex_buffer_bindings.cpp).
+    std::vector<VertexBufferBinding> vertexBindings;
+    // A draw of the bound buffers as streams: `instances` copies, indexed by Indices when `indexed`.
+    void drawBindings(const char* call, PrimitiveType type, int count, int first, int baseVertex, bool indexed, int instances);
     struct VertexArray {
         BackendObject vao = 0;
         BackendObject buffer = 0;

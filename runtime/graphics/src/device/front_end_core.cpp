@@ -321,9 +321,9 @@ void issue(GraphicsDevice::Impl& d, GraphicsDevice::Impl::VertexArray& va, const
     call.instanced = true;
     call.instances = a.instances;
     call.firstInstance = a.firstInstance;
-    if (a.indices) {
-        if (va.elements != a.indices->backendObject()) {
-            va.elements = a.indices->backendObject();
+    if (const std::uint32_t indices = a.indices ? a.indices->backendObject() : a.indexObject) {
+        if (va.elements != indices) {
+            va.elements = indices;
             d.backend->setIndexBuffer(va.vao, va.elements);
         }
         call.indexed = true;
@@ -412,7 +412,7 @@ void drawStreams(GraphicsDevice& device, const std::vector<InstancedStream>& str
     for (std::size_t s = 0; s < streams.size(); ++s) {
         const VertexStream& v = streams[s].vertices;
         const int stride = v.layout ? v.layout->stride : 0;
-        d.backend->setVertexBuffer(va.vao, int(s), v.buffer ? v.buffer->backendObject() : 0, v.offset, stride);
+        d.backend->setVertexBuffer(va.vao, int(s), v.buffer ? v.buffer->backendObject() : v.object, v.offset, stride);
     }
     issue(d, va, a);
 }

@@ -173,6 +173,7 @@ struct VertexStream {
     const ByteBuffer* buffer = nullptr;
     std::size_t offset = 0;                 // bytes
     const StreamLayout* layout = nullptr;  // elements and stride
+    std::uint32_t object = 0;               // the GPU buffer when `buffer` is null (an XNA VertexBuffer's)
 };
 struct DrawArguments {
     PrimitiveType type = PrimitiveType::TriangleList;
@@ -182,6 +183,7 @@ struct DrawArguments {
     int instances = 1;
     int firstInstance = 0;
     const ByteBuffer* indices = nullptr;  // indexed when set
+    std::uint32_t indexObject = 0;        // indexed from this GPU buffer when `indices` is null (an XNA IndexBuffer's)
     int indexSize = 2;                    // 2 or 4 bytes
     int controlPoints = 0;                // > 0: patches of this many control points (type is ignored)
 };

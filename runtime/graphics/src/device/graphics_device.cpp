@@ -13,6 +13,7 @@
 #include "fxport/platform/graphics_context.h"
 #include "fxport/xlate/compiled_effect.h"
 #include "device/image_io.h"
+#include "device/primitive_counts.h"
 
 namespace fxport {
 
@@ -22,23 +23,6 @@ std::string slotError(int slot) {
     return "slot " + std::to_string(slot) + " is outside 0.." + std::to_string(kMaxTextureSlots - 1);
 }
 
-// An enum value made by a cast (PrimitiveType(77)) would draw GL_TRIANGLES from a count of 0.
-void checkPrimitiveType(PrimitiveType type, const char* call) {
-    if (static_cast<int>(type) > static_cast<int>(PrimitiveType::PointList))
-        throw ArgumentError(std::string(call) + ": PrimitiveType(" + std::to_string(static_cast<int>(type)) +
-                            ") is not a primitive type (TriangleList .. PointList)");
-}
-
-int vertexCountFor(PrimitiveType type, int primitives) {
-    switch (type) {
-    case PrimitiveType::TriangleList: return primitives * 3;
-    case PrimitiveType::TriangleStrip: return primitives + 2;
-    case PrimitiveType::LineList: return primitives * 2;
-    case PrimitiveType::LineStrip: return primitives + 1;
-    case PrimitiveType::PointList: return primitives;
-    }
-    return 0;
-}
 
 // What SetRenderTargets needs of a bound target, 2D or cube.
 struct TargetInfo {
@@ -474,6 +458,8 @@ void GraphicsDevice::SetVertexBuffer(VertexBuffer* buffer, int vertexOffset) {
     if (vertexOffset < 0) throw ArgumentError("GraphicsDevice.SetVertexBuffer: vertex offset " + std::to_string(vertexOffset) + " is negative");
     impl_->vertexBuffer = buffer;
     impl_->vertexOffset = vertexOffset;
+    impl_->vertexBindings.clear();
+    if (buffer) impl_->vertexBindings.push_back(VertexBufferBinding(buffer, vertexOffset));
 }
 
 void GraphicsDevice::DrawIndexedPrimitives(PrimitiveType primitiveType, int baseVertex, int, int, int startIndex,
@@ -489,6 +475,7 @@ void GraphicsDevice::DrawIndexedPrimitives(PrimitiveType primitiveType, int base
         throw ArgumentError("DrawIndexedPrimitives: " + std::to_string(primitiveCount) + " primitives from index " +
                             std::to_string(startIndex) + " need " + std::to_string(count) + " indices; the index buffer has " +
                             std::to_string(Indices->IndexCount()));
+    if (d.vertexBindings.size() > 1) return d.drawBindings("DrawIndexedPrimitives", primitiveType, count, startIndex, baseVertex, true, 1);
     d.drawingPoints = primitiveType == PrimitiveType::PointList;
     d.flush("DrawIndexedPrimitives");
     Impl::VertexArray& va = d.bindVertexBuffer();
@@ -511,6 +498,7 @@ void GraphicsDevice::DrawPrimitives(PrimitiveType primitiveType, int vertexStart
         throw ArgumentError("DrawPrimitives: " + std::to_string(primitiveCount) + " primitives from vertex " +
                             std::to_string(vertexStart) + " overrun the vertex buffer's " +
                             std::to_string(d.vertexBuffer->VertexCount()) + " vertices");
+    if (d.vertexBindings.size() > 1) return d.drawBindings("DrawPrimitives", primitiveType, count, vertexStart, 0, false, 1);
     d.drawingPoints = primitiveType == PrimitiveType::PointList;
     d.flush("DrawPrimitives");
     d.bindVertexBuffer();

@@ -64,6 +64,7 @@ struct PresentationParameters {
 // Number of sampler/texture slots (D3D9 has 16 pixel samplers).
 inline constexpr int kMaxTextureSlots = 16;
 inline constexpr int kMaxRenderTargets = 4;
+inline constexpr int kMaxVertexBufferBindings = 16;  // XNA HiDef's vertex streams
 inline constexpr int kMaxUnorderedAccessSlots = 8;   // D3D11's UAV slots u0..u7
 inline constexpr int kMaxShaderResourceBuffers = 16;  // buffer SRVs t0..t15
 
@@ -125,6 +126,14 @@ public:
 
     void SetVertexBuffer(VertexBuffer* buffer, int vertexOffset = 0);
     void SetVertexBuffer(VertexBuffer& buffer, int vertexOffset = 0) { SetVertexBuffer(&buffer, vertexOffset); }
+    // XNA's SetVertexBuffers: up to kMaxVertexBufferBindings buffers at once (several streams, or
+    // per-instance data for DrawInstancedPrimitives); the bindings are ordered as given.
+    void SetVertexBuffers(const std::vector<VertexBufferBinding>& bindings);
+    template <class... More>
+    void SetVertexBuffers(const VertexBufferBinding& first, const More&... more) {
+        SetVertexBuffers(std::vector<VertexBufferBinding>{first, VertexBufferBinding(more)...});
+    }
+    std::vector<VertexBufferBinding> GetVertexBuffers() const;
 
     // nullptr = the back buffer. Targets must all have the same size (D3D9's rule); the depth buffer
     // is the first target's. Throws ArgumentError naming the target otherwise. As XNA 4 on Windows
@@ -200,6 +209,10 @@ public:
     void DrawIndexedPrimitives(PrimitiveType primitiveType, int baseVertex, int minVertexIndex, int numVertices,
                                int startIndex, int primitiveCount);
     void DrawPrimitives(PrimitiveType primitiveType, int vertexStart, int primitiveCount);
+    // XNA's hardware instancing: `instanceCount` copies of the indexed primitives, the bindings
+    // with an InstanceFrequency advancing once per that many instances.
+    void DrawInstancedPrimitives(PrimitiveType primitiveType, int baseVertex, int minVertexIndex, int numVertices,
+                                 int startIndex, int primitiveCount, int instanceCount);
 
     // --- D3D11 stages (fxport additions; XNA has none of them)
     // Tessellated draws: patches of `controlPoints` (1..32) vertices each, through the hull and

@@ -46,6 +46,23 @@ private:
     std::uint32_t name_ = 0;
 };
 
+// XNA's VertexBufferBinding: a vertex buffer for GraphicsDevice::SetVertexBuffers, from vertex
+// VertexOffset on, advancing once per vertex (InstanceFrequency 0) or once per InstanceFrequency
+// instances (hardware instancing: DrawInstancedPrimitives). Its elements feed the vertex shader's
+// inputs of their semantics, whichever buffer holds them.
+struct VertexBufferBinding {
+    fxport::VertexBuffer* VertexBuffer = nullptr;
+    int VertexOffset = 0;
+    int InstanceFrequency = 0;
+
+    VertexBufferBinding() = default;
+    VertexBufferBinding(fxport::VertexBuffer* buffer, int vertexOffset = 0, int instanceFrequency = 0)
+        : VertexBuffer(buffer), VertexOffset(vertexOffset), InstanceFrequency(instanceFrequency) {}
+    VertexBufferBinding(fxport::VertexBuffer& buffer, int vertexOffset = 0, int instanceFrequency = 0)
+        : VertexBufferBinding(&buffer, vertexOffset, instanceFrequency) {}
+    bool operator==(const VertexBufferBinding&) const = default;
+};
+
 class IndexBuffer : public GraphicsResource {
 public:
     IndexBuffer(fxport::GraphicsDevice& device, fxport::IndexElementSize elementSize, int indexCount,
