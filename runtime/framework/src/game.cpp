@@ -44,6 +44,8 @@ std::optional<int> framesFromEnvironment() {
 Game::Game() { deviceManager_ = &graphics; }
 
 Game::~Game() {
+    // Components first (XNA's Game.Dispose): what they hold goes while the device still exists.
+    Components.Clear();
     // Content (effects, models, textures) goes before the device that made it.
     Content.Unload();
     Content.setGraphicsDevice(nullptr);
@@ -63,7 +65,31 @@ void Game::Start() {
     GraphicsDevice = device_.get();
     Content.setGraphicsDevice(GraphicsDevice);
     started_ = true;
+    deviceManager_->applyWindowSettings();
+    applyWindowState();
     Initialize();
+    // XNA's rule: from now on a component is initialized as it is added.
+    Components.initializeOnAdd_ = true;
+}
+
+void Game::Initialize() {
+    Components.initializeAdded();
+    LoadContent();
+}
+
+void Game::Update(const GameTime& gameTime) { Components.update(gameTime); }
+
+void Game::Draw(const GameTime& gameTime) { Components.draw(gameTime); }
+
+bool Game::IsActive() const { return GraphicsDevice && device_->context().isFocused(); }
+
+void Game::applyWindowState() {
+    if (!GraphicsDevice) return;
+    if (appliedMouseVisible_ != IsMouseVisible) {
+        device_->context().setCursorVisible(IsMouseVisible);
+        appliedMouseVisible_ = IsMouseVisible;
+    }
+    Window.applyChanges();
 }
 
 bool Game::usesRealClock() const {
@@ -81,6 +107,8 @@ void Game::Run() {
     Start();
     if (!FrameLimit) FrameLimit = framesFromEnvironment();
     while (!exitRequested_ && !windowClosed() && (!FrameLimit || frames_ < *FrameLimit)) Tick();
+    // XNA's Game.Dispose unloads the components before the device goes (and the game's content with it).
+    Components.unloadContent();
     UnloadContent();
 }
 
@@ -122,6 +150,7 @@ void Game::Tick(TimeSpan elapsedRealTime) {
 }
 
 void Game::tick(TimeSpan elapsedRealTime) {
+    applyWindowState();
     accumulated_ += elapsedRealTime;
     if (accumulated_ > kMaxElapsedTime) accumulated_ = kMaxElapsedTime;
     if (IsFixedTimeStep) {

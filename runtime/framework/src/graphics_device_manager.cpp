@@ -1,8 +1,12 @@
-// GraphicsDeviceManager: registration with its Game and ApplyChanges (a device Reset).
+// GraphicsDeviceManager: registration with its Game, ApplyChanges (a device Reset) and the window
+// settings (full screen, vertical retrace).
 #include "fxport/framework/graphics_device_manager.h"
+
+#include <cstdio>
 
 #include "fxport/framework/game.h"
 #include "fxport/graphics/graphics_device.h"
+#include "fxport/platform/graphics_context.h"
 
 namespace fxport {
 
@@ -20,6 +24,10 @@ GraphicsDeviceManager& GraphicsDeviceManager::operator=(const GraphicsDeviceMana
     PreferredBackBufferHeight = other.PreferredBackBufferHeight;
     PreferredBackBufferFormat = other.PreferredBackBufferFormat;
     PreferredDepthStencilFormat = other.PreferredDepthStencilFormat;
+    IsFullScreen = other.IsFullScreen;
+    SynchronizeWithVerticalRetrace = other.SynchronizeWithVerticalRetrace;
+    PreferMultiSampling = other.PreferMultiSampling;
+    GraphicsProfile = other.GraphicsProfile;
     platform = other.platform;
     return *this;
 }
@@ -35,6 +43,25 @@ void GraphicsDeviceManager::ApplyChanges() {
     parameters.BackBufferFormat = PreferredBackBufferFormat;
     parameters.DepthStencilFormat = PreferredDepthStencilFormat;
     device->Reset(parameters);
+    applyWindowSettings();
+}
+
+void GraphicsDeviceManager::ToggleFullScreen() {
+    IsFullScreen = !IsFullScreen;
+    ApplyChanges();
+}
+
+void GraphicsDeviceManager::applyWindowSettings() {
+    fxport::GraphicsDevice* device = GraphicsDevice();
+    if (!device) return;
+    device->context().setFullScreen(IsFullScreen);
+    device->context().setVSync(SynchronizeWithVerticalRetrace);
+    // Said once, not silently dropped: the game may rely on smooth edges that it will not get.
+    if (PreferMultiSampling && !warnedMultiSampling_) {
+        std::fprintf(stderr, "fxport: warning: GraphicsDeviceManager.PreferMultiSampling: fxport's back buffer is not "
+                             "multisampled; drawing without multisampling\n");
+        warnedMultiSampling_ = true;
+    }
 }
 
 }  // namespace fxport

@@ -23,6 +23,13 @@ public:
     MouseInput mouse() const override { return {}; }
     GamepadInput gamepad(int) const override { return {}; }
     void setMousePosition(int, int) override {}
+    void setTitle(const std::string&) override {}
+    void setCursorVisible(bool) override {}
+    void setResizable(bool) override {}
+    void setFullScreen(bool) override {}
+    void setVSync(bool) override {}
+    bool isFocused() const override { return true; }
+    WindowBounds clientBounds() const override { return {0, 0, width(), height()}; }
     int width() const override { return width_; }
     int height() const override { return height_; }
     std::string rendererName() const override { return rendererName_; }

@@ -145,6 +145,27 @@ public:
         m.scrollWheel = int(g_scroll * 120);
         return m;
     }
+    void setTitle(const std::string& title) override { glfwSetWindowTitle(window_, title.c_str()); }
+    void setCursorVisible(bool visible) override {
+        glfwSetInputMode(window_, GLFW_CURSOR, visible ? GLFW_CURSOR_NORMAL : GLFW_CURSOR_HIDDEN);
+    }
+    void setResizable(bool resizable) override {
+        glfwSetWindowAttrib(window_, GLFW_RESIZABLE, resizable ? GLFW_TRUE : GLFW_FALSE);
+    }
+    void setFullScreen(bool fullScreen) override;
+    void setVSync(bool vsync) override {
+        vsync_ = vsync;
+        // The swap interval belongs to the current context: now if this one is, else at its next bind.
+        if (glfwGetCurrentContext() == window_) glfwSwapInterval(vsync_ ? 1 : 0);
+        else swapIntervalSet_ = false;
+    }
+    bool isFocused() const override { return glfwGetWindowAttrib(window_, GLFW_FOCUSED) != 0; }
+    WindowBounds clientBounds() const override {
+        WindowBounds b;
+        glfwGetWindowPos(window_, &b.x, &b.y);
+        glfwGetWindowSize(window_, &b.width, &b.height);
+        return b;
+    }
     // The window may have been resized (and on HiDPI screens pixels differ from screen units).
     int width() const override { return framebufferSize().first; }
     int height() const override { return framebufferSize().second; }
@@ -166,9 +187,29 @@ private:
     void unbindNative() override { glfwMakeContextCurrent(nullptr); }
 
     GLFWwindow* window_ = nullptr;
+    WindowBounds windowed_;  // where the window was before it went full screen
     bool vsync_;
     bool swapIntervalSet_ = false;
 };
+
+// FNA's "desktop" full screen: the monitor keeps its video mode (no mode switch to the back buffer's
+// size as XNA made), the back buffer is scaled into it at Present.
+void GLFWGraphicsContext::setFullScreen(bool fullScreen) {
+    if ((glfwGetWindowMonitor(window_) != nullptr) == fullScreen) return;
+    if (!fullScreen) {
+        glfwSetWindowMonitor(window_, nullptr, windowed_.x, windowed_.y, windowed_.width, windowed_.height, GLFW_DONT_CARE);
+        return;
+    }
+    GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+    const GLFWvidmode* mode = monitor != nullptr ? glfwGetVideoMode(monitor) : nullptr;
+    if (mode == nullptr) {
+        std::fprintf(stderr, "fxport: warning: GraphicsDeviceManager.IsFullScreen: no monitor to fill (%s); staying in a window\n",
+                     lastGlfwError().c_str());
+        return;
+    }
+    windowed_ = clientBounds();
+    glfwSetWindowMonitor(window_, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
+}
 
 }  // namespace
 

@@ -14,9 +14,10 @@
 //   int main() { Game1 game; game.Run(); }
 //
 // Run() makes the GraphicsDevice from the GraphicsDeviceManager (headless OSMesa unless the manager
-// or $FXPORT_PLATFORM asks for "egl" or a "glfw" window), calls Initialize (whose base version calls
-// LoadContent), then ticks until Exit(), the window closes or FrameLimit frames have been drawn, and
-// ends with UnloadContent.
+// or $FXPORT_PLATFORM asks for "egl" or a "glfw" window), calls Initialize (whose base version
+// initializes the Components and calls LoadContent), then ticks until Exit(), the window closes or
+// FrameLimit frames have been drawn, and ends by unloading the drawable components, then
+// UnloadContent.
 //
 // Time, as XNA (Tick): with IsFixedTimeStep (the default) every Update advances the game by
 // TargetElapsedTime (default 1/60 s); a tick that finds less real time than that waits, one that
@@ -32,7 +33,11 @@
 #include <string>
 
 #include "fxport/framework/content_manager.h"
+#include "fxport/framework/drawable_game_component.h"
+#include "fxport/framework/game_component_collection.h"
+#include "fxport/framework/game_service_container.h"
 #include "fxport/framework/game_time.h"
+#include "fxport/framework/game_window.h"
 #include "fxport/framework/graphics_device_manager.h"
 #include "fxport/framework/time_span.h"
 
@@ -45,11 +50,6 @@ enum class GameClock {
     Automatic,  // RealTime in a window (GLFW), Simulated headless
     RealTime,   // std::chrono::steady_clock
     Simulated,  // exactly TargetElapsedTime per tick, no waiting: every run takes the same steps
-};
-
-// XNA's Game.Window: only the title is used (fxport: read when the device is made).
-struct GameWindow {
-    std::string Title = "fxport";
 };
 
 class Game {
@@ -88,6 +88,12 @@ public:
     // game does not (so an unmodified game can run headless in a script or test).
     std::optional<int> FrameLimit;
     GameClock Clock = GameClock::Automatic;
+    // XNA's default: the pointer is hidden over the window. Handed to the window at the next tick;
+    // headless there is no pointer to show.
+    bool IsMouseVisible = false;
+    // Whether the window has the keyboard focus (XNA: the game is the foreground program). Always
+    // true headless; false before the game has started.
+    bool IsActive() const;
 
     // fxport: whether Exit() was called; frames drawn so far; the number of Update calls so far.
     bool ExitRequested() const { return exitRequested_; }
@@ -104,18 +110,24 @@ public:
     // owns it and keeps it until the Game is destroyed (after Content is unloaded).
     fxport::GraphicsDevice* GraphicsDevice = nullptr;
     ContentManager Content;
-    GameWindow Window;
+    GameWindow Window{*this};
+    // XNA's Components and Services (game_component_collection.h, game_service_container.h).
+    GameComponentCollection Components;
+    GameServiceContainer Services;
 
 protected:
     Game();
-    // XNA's Initialize() ends by calling LoadContent(); overrides call Game::Initialize() last.
-    virtual void Initialize() { LoadContent(); }
+    // XNA's Initialize() initializes the Components added so far and ends by calling
+    // LoadContent(); overrides call Game::Initialize() last.
+    virtual void Initialize();
     virtual void LoadContent() {}
     virtual void UnloadContent() {}
-    virtual void Update(const GameTime& gameTime) { (void)gameTime; }
+    // Updates the Enabled components by UpdateOrder (what a C# base.Update(gameTime) does).
+    virtual void Update(const GameTime& gameTime);
     // Return false to skip this frame's Draw and EndDraw.
     virtual bool BeginDraw() { return true; }
-    virtual void Draw(const GameTime& gameTime) { (void)gameTime; }
+    // Draws the Visible drawable components by DrawOrder (a C# base.Draw(gameTime)).
+    virtual void Draw(const GameTime& gameTime);
     // Presents the back buffer.
     virtual void EndDraw();
 
@@ -124,6 +136,8 @@ private:
     void tick(TimeSpan elapsedRealTime);
     bool usesRealClock() const;
     bool windowClosed() const;
+    // Hands IsMouseVisible and Window's fields to the window when they changed.
+    void applyWindowState();
 
     GraphicsDeviceManager* deviceManager_ = nullptr;
     std::unique_ptr<fxport::GraphicsDevice> device_;
@@ -131,6 +145,7 @@ private:
     TimeSpan accumulated_;
     std::int64_t lastClockTicks_ = -1;  // steady clock, in TimeSpan ticks; -1 = not read yet
     int updateFrameLag_ = 0;
+    std::optional<bool> appliedMouseVisible_;
     bool started_ = false;
     bool exitRequested_ = false;
     bool suppressDraw_ = false;

@@ -1,12 +1,13 @@
 // GraphicsDeviceManager: the back buffer a Game asks for, and the switch between headless and a
 // window. As in XNA, a game makes one with itself as owner (`graphics = new
 // GraphicsDeviceManager(this)` -> `fxport::GraphicsDeviceManager graphics{this};`) and sets the
-// Preferred* fields before Run; after that, ApplyChanges() resizes the back buffer. A Game also has
-// a manager of its own (Game::graphics), used when the game declares none.
+// Preferred* fields, IsFullScreen and the rest before Run; after that, ApplyChanges() applies them.
+// A Game also has a manager of its own (Game::graphics), used when the game declares none.
 #pragma once
 
 #include <string>
 
+#include "fxport/framework/graphics_profile.h"
 #include "fxport/graphics/surface_format.h"
 
 namespace fxport {
@@ -21,7 +22,7 @@ public:
     explicit GraphicsDeviceManager(Game* game);
     ~GraphicsDeviceManager();
     GraphicsDeviceManager(const GraphicsDeviceManager&) = delete;
-    // Copies the settings (Preferred*, platform); each manager stays with its own game.
+    // Copies the settings (the fields); each manager stays with its own game.
     GraphicsDeviceManager& operator=(const GraphicsDeviceManager& other);
 
     // XNA 4's defaults.
@@ -29,6 +30,16 @@ public:
     int PreferredBackBufferHeight = 480;
     SurfaceFormat PreferredBackBufferFormat = SurfaceFormat::Color;
     DepthFormat PreferredDepthStencilFormat = DepthFormat::Depth24;
+    // Read when the device is made and by ApplyChanges (XNA's defaults). Full screen, in a window
+    // (GLFW), fills the primary monitor at its current mode and scales the back buffer into it;
+    // headless there is no screen and nothing changes. The vertical retrace is the window's swap
+    // interval; headless nothing waits for it.
+    bool IsFullScreen = false;
+    bool SynchronizeWithVerticalRetrace = true;
+    // fxport's back buffer is never multisampled: true prints a warning (once per manager).
+    bool PreferMultiSampling = false;
+    // Recorded only: the device has every HiDef feature and enforces no Reach limit (graphics_profile.h).
+    fxport::GraphicsProfile GraphicsProfile = fxport::GraphicsProfile::Reach;
     // fxport: where the GL context comes from: "osmesa" (headless, CPU), "egl" (headless, GPU) or
     // "glfw" (a window). Empty: $FXPORT_PLATFORM, else osmesa -- headless unless asked.
     std::string platform;
@@ -40,9 +51,17 @@ public:
     // it does nothing (Run reads the fields). A window keeps its size (fxport: the back buffer is
     // scaled into it at Present).
     void ApplyChanges();
+    // XNA's ToggleFullScreen: flips IsFullScreen and applies the changes at once (ApplyChanges).
+    void ToggleFullScreen();
 
 private:
+    friend class Game;
+    // Hands IsFullScreen and SynchronizeWithVerticalRetrace to the device's window; warns about
+    // PreferMultiSampling. Run when the device is made and by ApplyChanges.
+    void applyWindowSettings();
+
     Game* game_;
+    bool warnedMultiSampling_ = false;
 };
 
 }  // namespace fxport

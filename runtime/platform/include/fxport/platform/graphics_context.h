@@ -38,6 +38,11 @@ struct MouseInput {
     int scrollWheel = 0;  // accumulated, 120 per notch as in Windows/XNA
 };
 
+// A window's client area: its top-left corner on the desktop and its size, in screen units.
+struct WindowBounds {
+    int x = 0, y = 0, width = 0, height = 0;
+};
+
 // One gamepad in GLFW's standard mapping (an Xbox layout): buttons A, B, X, Y, LeftShoulder,
 // RightShoulder, Back, Start, Guide, LeftThumb, RightThumb, DPadUp, DPadRight, DPadDown, DPadLeft;
 // axes LeftX, LeftY, RightX, RightY (y down), LeftTrigger, RightTrigger (-1 released .. 1).
@@ -83,6 +88,19 @@ public:
     // Size of the default framebuffer in pixels (a window's current size).
     virtual int width() const = 0;
     virtual int height() const = 0;
+    // The window settings XNA's Game, GameWindow and GraphicsDeviceManager change while a game runs.
+    // Headless there is no window, pointer or display: the setters do nothing, isFocused() is true
+    // and clientBounds() is {0, 0, width(), height()}.
+    virtual void setTitle(const std::string& title) = 0;
+    virtual void setCursorVisible(bool visible) = 0;
+    virtual void setResizable(bool resizable) = 0;
+    // Full screen: the primary monitor at its current video mode (the back buffer is scaled into
+    // it, as into a window); false restores the window's earlier position and size.
+    virtual void setFullScreen(bool fullScreen) = 0;
+    // Whether swapBuffers waits for vertical blank (ContextDesc::vsync, changed later).
+    virtual void setVSync(bool vsync) = 0;
+    virtual bool isFocused() const = 0;
+    virtual WindowBounds clientBounds() const = 0;
     // GL_RENDERER and GL_VERSION, e.g. "llvmpipe (LLVM 15.0.6, 256 bits) / 4.5 (Core Profile) Mesa 22.3.6".
     virtual std::string rendererName() const = 0;
 };
