@@ -55,3 +55,16 @@ TEST(FxcValues, ParenthesisedLvalueCastWritesTheSwizzledComponents) {
     EXPECT_NE(pixelGlsl(nested, "ps_2_0").find("vec4(2.5, 0.0, 1.5, 0.0)"), std::string::npos) << pixelGlsl(nested, "ps_2_0");
     EXPECT_THROW(pixelGlsl(nested, "ps_4_0"), CompileError);
 }
+
+// unroll L25: `[unroll(n)]` is the most iterations the loop runs (fxc emits n copies of the body),
+// so the loop to 8 stops at 4 (the suite's probe). glslang does not fold the loops, so the GLSL is
+// read for the limit ahead of each loop's own condition: a `for`, a limit above the trip count, a
+// `while`, and a loop without a condition as the unbraced body of an `if`.
+TEST(FxcValues, UnrollCountCapsTheIterations) {
+    const std::string glsl = pixelGlsl(
+        "float4 main() : sv_target\n{\n    int i, j = 0, k = 0, n = 0;\n    [unroll(4)]\n    for (i = 0; i < 8; ++i);\n"
+        "    [unroll(20)] for (j = 0; j < 8; ++j) {}\n    [unroll(3)] while (k < 10) ++k;\n"
+        "    if (i > 0) [allow_uav_condition] [unroll(2)] for (;;) ++n;\n    return float4(i, j, k, n);\n}\n");
+    for (const char* limit : {" < 4u) && (", " < 20u) && (", " < 3u) && (", " < 2u; )"})
+        EXPECT_NE(glsl.find(limit), std::string::npos) << limit << "\n" << glsl;
+}
