@@ -69,3 +69,17 @@ TEST(DeclarationSpellings, LocalsFxcRefusesStayRefused) {
     EXPECT_EQ(compileError("struct s { float4 f; };\nfloat4 PS(void) : SV_Target { const struct s a; return 0; }\n"),
               "const variable 'a' has no initial value (fxc X3012)");
 }
+
+// texture-load-typed L56: fxc reads the texture keywords in any case, so a templated `texture2D`
+// is a Texture2D and a templated `textureCUBE` a TextureCube (a DX9 texture takes no template).
+TEST(DeclarationSpellings, LowerCaseTemplatedTexturesAreObjects) {
+    CompileOptions o;
+    o.useCache = false;
+    CompiledEffect e = compileEffectSource("texture2D<float> F;\ntextureCUBE<float4> C;\nSamplerState S;\n"
+                                           "float4 PS() : SV_Target { return F.Load(int3(0, 0, 0)) + C.Sample(S, float3(1, 0, 0)); }\n"
+                                           "technique10 T { pass P { SetPixelShader(CompileShader(ps_4_0, PS())); } }\n",
+                                           "virtual/LowerCaseTextures.fx", o);
+    const std::string& glsl = e.shaders.at(static_cast<size_t>(e.techniques.at(0).passes.at(0).pixelShader.shaders.at(0))).glsl;
+    EXPECT_NE(glsl.find("texelFetch("), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find("samplerCube "), std::string::npos) << glsl;
+}

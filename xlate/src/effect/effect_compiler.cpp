@@ -1367,6 +1367,7 @@ CompiledEffect compileUncached(const std::string& source, const std::string& dis
     PreprocessedEffect pre = preprocessEffect(source, displayPath, absolutePath, options);
     reportWorkerProgress("parse");
     pre.text = splitStructDefinitions(pre.text);  // `static struct { ... } x;` and definitions in definitions
+    pre.text = textureTemplatesSpelledAsObjects(pre.text);  // texture2D<float> t -> Texture2D<float> t
     pre.text = dropUnusedSamplerArrays(pre.text);
     pre.text = samplerArraysAsElements(pre.text);  // sam[1] -> sam_fxport_1
     pre.text = samplerTexturesDeclared(pre.text);  // tex2D(sam, uv) beside tex.Sample(sam, uv)

@@ -43,4 +43,19 @@ std::string typeKeywordsLowerCased(const std::string& text) {
     return out.empty() ? text : out;
 }
 
+std::string textureTemplatesSpelledAsObjects(const std::string& text) {
+    static const char* const objects[] = {"Texture1D", "Texture2D", "Texture3D", "TextureCube"};
+    const std::vector<Token> t = tokenize(text);
+    std::string out;
+    for (size_t i = 0; i + 1 < t.size(); ++i) {
+        if (!t[i].isIdent() || !t[i + 1].is("<") || (i > 0 && t[i - 1].is("."))) continue;
+        for (const char* object : objects)
+            if (t[i].text != object && iequals(t[i].text, object)) {
+                if (out.empty()) out = text;
+                out.replace(t[i].offset, t[i].end - t[i].offset, object);
+            }
+    }
+    return out.empty() ? text : out;
+}
+
 }  // namespace fxport::xlate

@@ -12,4 +12,10 @@ namespace fxport::xlate {
 
 std::string typeKeywordsLowerCased(const std::string& preprocessed);
 
+// fxc reads the texture keywords in any case too: `texture2D<float> t;` is a Texture2D (vkd3d's
+// texture-load-typed L56). A DX9 texture takes no template, so a case variant of texture1D,
+// texture2D, texture3D or textureCUBE followed by `<` is the DX10 object: spelled as glslang knows it
+// (Texture2D, TextureCube). `TEXTURECUBE` keeps its length (`TextureCube`): offsets stay.
+std::string textureTemplatesSpelledAsObjects(const std::string& preprocessed);
+
 }  // namespace fxport::xlate
