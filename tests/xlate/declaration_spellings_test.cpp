@@ -83,3 +83,22 @@ TEST(DeclarationSpellings, LowerCaseTemplatedTexturesAreObjects) {
     EXPECT_NE(glsl.find("texelFetch("), std::string::npos) << glsl;
     EXPECT_NE(glsl.find("samplerCube "), std::string::npos) << glsl;
 }
+
+// type-names L1: a typedef in a function may name a built-in type, which then means the alias to
+// the block's end (`typedef Half2 float;` makes `float v` a float2; `typedef float float;` changes
+// nothing); DWORD is dword in any case, also where a local typedef shadows `dword`. The pixel
+// shader's value is folded to a literal: (v.x, v.y, w, d) = (2, 3, 1, 4).
+TEST(DeclarationSpellings, LocalTypedefsMayNameBuiltinTypes) {
+    CompileOptions o;
+    o.useCache = false;
+    CompiledEffect e = compileEffectSource("typedef float2 Half2;\n"
+                                           "float4 PS() : SV_Target {\n"
+                                           "    float w = 1;\n"
+                                           "    {\n        typedef Half2 float;\n        typedef float2 dword;\n"
+                                           "        float v = {2, 3};\n        DWORD d = 4.5;\n"
+                                           "        {\n            typedef float float;\n            return float4(v, w, d);\n        }\n    }\n}\n"
+                                           "technique10 T { pass P { SetPixelShader(CompileShader(ps_4_0, PS())); } }\n",
+                                           "virtual/LocalTypedefs.fx", o);
+    const std::string& glsl = e.shaders.at(static_cast<size_t>(e.techniques.at(0).passes.at(0).pixelShader.shaders.at(0))).glsl;
+    EXPECT_NE(glsl.find("vec4(2.0, 3.0, 1.0, 4.0)"), std::string::npos) << glsl;
+}

@@ -45,6 +45,7 @@
 #include "rewrite/unused_sampler_arrays.h"
 #include "rewrite/sampler_array_elements.h"
 #include "rewrite/sampler_textures.h"
+#include "rewrite/builtin_type_typedefs.h"
 #include "rewrite/keyword_case.h"
 #include "rewrite/literal_suffixes.h"
 #include "fx/render_states.h"
@@ -1372,6 +1373,7 @@ CompiledEffect compileUncached(const std::string& source, const std::string& dis
     pre.text = samplerArraysAsElements(pre.text);  // sam[1] -> sam_fxport_1
     pre.text = samplerTexturesDeclared(pre.text);  // tex2D(sam, uv) beside tex.Sample(sam, uv)
     pre.text = longLiteralSuffixesDropped(pre.text);  // 3lu -> 3u
+    pre.text = builtinTypeTypedefsResolved(pre.text);  // { typedef half2 float; float v; } -> { half2 v; }
     pre.text = typeKeywordsLowerCased(pre.text);      // Matrix m -> matrix m
 
     EffectSyntax syntax = parseEffect(pre.text, pre.map, isLooseShaderCompile(options));

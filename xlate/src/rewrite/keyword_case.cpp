@@ -33,7 +33,8 @@ std::string typeKeywordsLowerCased(const std::string& text) {
     bool scanned = false;
     for (size_t i = 0; i + 1 < t.size(); ++i) {
         const std::string& w = t[i].text;
-        if (!t[i].isIdent() || w == "matrix" || w == "vector" || !(iequals(w, "matrix") || iequals(w, "vector"))) continue;
+        if (!t[i].isIdent() || w == "matrix" || w == "vector" || w == "dword") continue;
+        if (!(iequals(w, "matrix") || iequals(w, "vector") || iequals(w, "dword"))) continue;
         if (!t[i + 1].isIdent() || (i > 0 && t[i - 1].is("."))) continue;
         if (!scanned) declared = declaredNames(t), scanned = true;
         if (declared.count(w)) continue;
