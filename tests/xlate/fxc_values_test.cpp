@@ -68,3 +68,13 @@ TEST(FxcValues, UnrollCountCapsTheIterations) {
     for (const char* limit : {" < 4u) && (", " < 20u) && (", " < 3u) && (", " < 2u; )"})
         EXPECT_NE(glsl.find(limit), std::string::npos) << limit << "\n" << glsl;
 }
+
+// srv-buffers L95: a Buffer's Load takes an int location; fxc converts a vector argument to it by
+// keeping the first component (element 2 of float2(2, 9999)), a matrix its _m00.
+TEST(FxcValues, BufferLoadOfAVectorReadsItsFirstComponent) {
+    const std::string glsl = pixelGlsl(
+        "Buffer b;\nBuffer<uint> u;\nfloat4 main() : sv_target\n{\n    float2x2 m = {5, 6, 7, 8};\n"
+        "    return b.Load(float2(2, 9999)) + u.Load(m);\n}\n");
+    EXPECT_NE(glsl.find("texelFetch(b, 2)"), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find("texelFetch(u, 5)"), std::string::npos) << glsl;
+}

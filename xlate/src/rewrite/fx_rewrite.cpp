@@ -23,6 +23,7 @@
 #include "rewrite/local_state_blocks.h"
 #include "rewrite/negated_bool_literals.h"
 #include "rewrite/unroll_limits.h"
+#include "rewrite/buffer_load_locations.h"
 #include "rewrite/keyword_identifiers.h"
 #include "rewrite/matrix_constructor_arguments.h"
 #include "rewrite/matrix_rows_intrinsics.h"
@@ -436,6 +437,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : interlockedValueConversions(syntax)) edits.push_back(std::move(e));  // before compare_store: see there
     for (auto& e : compareStoreAsExchange(syntax)) edits.push_back(std::move(e));
     for (auto& e : byteAddressStoreValues(syntax)) edits.push_back(std::move(e));
+    for (auto& e : bufferLoadLocationsAsScalars(syntax)) edits.push_back(std::move(e));
     for (auto& e : mixedDimensionOutputs(syntax)) edits.push_back(std::move(e));
     for (auto& e : switchLabelsAsIntegers(syntax)) edits.push_back(std::move(e));
     for (auto& e : matrixConstructorArgumentsAsRows(syntax)) edits.push_back(std::move(e));
