@@ -102,3 +102,15 @@ TEST(DeclarationSpellings, LocalTypedefsMayNameBuiltinTypes) {
     const std::string& glsl = e.shaders.at(static_cast<size_t>(e.techniques.at(0).passes.at(0).pixelShader.shaders.at(0))).glsl;
     EXPECT_NE(glsl.find("vec4(2.0, 3.0, 1.0, 4.0)"), std::string::npos) << glsl;
 }
+
+// null L55: `= NULL` on a resource global is fxc's spelling of no object bound, and Effects 10's
+// RenderTargetView / DepthStencilView variables are nothing a shader reads; NULL stays refused as
+// a numeric value and in lower case (null L1, L29).
+TEST(DeclarationSpellings, NullInitializedResourcesAndViews) {
+    EXPECT_EQ(compileError("Texture2D T = NULL;\nTexture2DMS<float4> M = NULL;\nStructuredBuffer<float4> B = NULL, C = NULL;\n"
+                           "RenderTargetView rtv = NULL;\nDepthStencilView dsv;\nSamplerState S;\n"
+                           "float4 PS() : SV_Target { return T.Sample(S, 0.5) + M.Load(int2(0, 0), 0) + B[0] + C[1]; }\n"),
+              "");
+    EXPECT_NE(compileError("float4 V = NULL;\nfloat4 PS() : SV_Target { return V; }\n"), "");
+    EXPECT_NE(compileError("Texture2D T = null;\nfloat4 PS() : SV_Target { return 0; }\n"), "");
+}

@@ -120,6 +120,16 @@ bool isShaderObjectType(const std::string& s) {
     return iequals(s, "VertexShader") || iequals(s, "PixelShader") || iequals(s, "GeometryShader") || iequals(s, "HullShader") ||
            iequals(s, "DomainShader") || iequals(s, "ComputeShader");
 }
+// Effects 10's render-target and depth-stencil view variables: the application sets them through
+// the effect; no shader reads them (fxc takes them in a plain shader too, vkd3d's null L55).
+bool isViewObjectType(const std::string& s) { return s == "RenderTargetView" || s == "DepthStencilView"; }
+// A resource a global declares, which `= NULL` leaves unbound (fxc takes that initializer).
+bool isResourceObjectType(const std::string& s) {
+    for (const char* prefix : {"Texture", "RWTexture", "Buffer", "RWBuffer", "StructuredBuffer", "RWStructuredBuffer",
+                               "AppendStructuredBuffer", "ConsumeStructuredBuffer", "ByteAddressBuffer", "RWByteAddressBuffer"})
+        if (s.rfind(prefix, 0) == 0) return true;
+    return false;
+}
 bool isTypeModifier(const std::string& s) {
     static const std::set<std::string> k = {"static", "const", "uniform", "extern", "shared", "volatile", "precise",
                                             "row_major", "column_major", "inline", "groupshared", "nointerpolation",
@@ -848,6 +858,7 @@ private:
         }
         if (isDx9SamplerType(type) || isDx10SamplerType(type)) return parseSampler(type, name, nameToken, start);
         if (isStateObjectType(type)) return parseStateObject(type, name, nameToken, start);
+        if (isViewObjectType(type) && cbuffer.empty()) return parseViewObject(type, name, start);
         if (isShaderObjectType(type)) return parseShaderVariable(type, name, nameToken, start);
         if (iequals(type, "string")) return parseStringParameter(name, nameToken, start);
         parseVariable(type, modifiers, name, nameToken, cbuffer);
@@ -1040,6 +1051,22 @@ private:
     }
 
     // Skips an initializer to the ',' or ';' that ends it (depth 0). Returns its span.
+    // `T t = NULL;` of a resource: the initializer is fxc's spelling of no object bound, which
+    // glslang refuses (a uniform initializer must be constant); ` = NULL` goes. True when it went.
+    bool blankNullInitializer(TokenSpan init) {
+        if (init.end != init.begin + 1 || !tok(init.begin).is("NULL") || tok(init.begin).kind == Token::Kind::String) return false;
+        blank(init.begin - 1, init.end);
+        return true;
+    }
+
+    // `RenderTargetView rtv = NULL;`: nothing any shader reads, so the declaration goes.
+    void parseViewObject(const std::string& type, const std::string& name, size_t start) {
+        parseDeclaratorTail();
+        if (accept("=")) skipInitializer(name);
+        expect(";", ("after " + type + " '" + name + "'").c_str());
+        blank(start, pos_);
+    }
+
     TokenSpan skipInitializer(const std::string& name) {
         size_t b = pos_;
         int depth = 0;
@@ -1073,7 +1100,7 @@ private:
             tex.registers = tail.registers;
             tex.annotations = tail.annotations;
             ignoreStateBlock(name);
-            if (accept("=")) skipInitializer(name);
+            if (accept("=")) blankNullInitializer(skipInitializer(name));
             if (!dx9 && tail.annotationEnd > tail.annotationBegin) blank(tail.annotationBegin, tail.annotationEnd);
             syntax_.textures.push_back(std::move(tex));
             if (!accept(",")) break;
@@ -1203,6 +1230,7 @@ private:
             if (tail.annotationEnd > tail.annotationBegin) blank(tail.annotationBegin, tail.annotationEnd);
             ignoreStateBlock(name);
             if (accept("=")) g.initializer = skipInitializer(name);
+            if (isResourceObjectType(type) && blankNullInitializer(g.initializer)) g.initializer = {};
             sizeFromInitializer(g);
             rememberConstant(g);
             syntax_.globals.push_back(std::move(g));
