@@ -78,3 +78,17 @@ TEST(FxcValues, BufferLoadOfAVectorReadsItsFirstComponent) {
     EXPECT_NE(glsl.find("texelFetch(b, 2)"), std::string::npos) << glsl;
     EXPECT_NE(glsl.find("texelFetch(u, 5)"), std::string::npos) << glsl;
 }
+
+// minimum-precision L5: a flat initializer of a min-precision matrix (`min16uint4x2 e = {14.4, ...}`,
+// the values truncated) and mul of an integer matrix, which fxc computes in the common component
+// type and glslang has no overload for: rows (14 15)(16 17)(18 19)(20 21) times (4, 5), and the
+// int2x2 product (1 2)(3 4) x (5 6)(7 8) = (19 22)(43 50).
+TEST(FxcValues, IntegerMatrixProducts) {
+    std::string glsl = pixelGlsl(
+        "float4 main() : sv_target\n{\n    min10float2 b = {4, 5};\n    min16uint4x2 e = {14.4, 15, 16, 17, 18, 19, 20, 21};\n"
+        "    return mul(e, b);\n}\n");
+    EXPECT_NE(glsl.find("vec4(131.0, 149.0, 167.0, 185.0)"), std::string::npos) << glsl;
+    glsl = pixelGlsl("float4 main() : sv_target\n{\n    int2x2 e = {1, 2, 3, 4};\n    int2x2 f = {5, 6, 7, 8};\n    int2x2 r = mul(e, f);\n"
+                     "    return float4(r[0], r[1]);\n}\n");
+    EXPECT_NE(glsl.find("vec4(19.0, 22.0, 43.0, 50.0)"), std::string::npos) << glsl;
+}
