@@ -778,17 +778,31 @@ private:
     // `float w[N + 1]` with `static const int N = 4;` earlier: fxc sizes arrays by any constant
     // expression of constants declared before. 0 (unknown) where it is not one.
     int evaluateWithConstants(TokenSpan span) const {
-        auto v = evaluateConstant(syntax_, span, constants_);
+        const TypedConstantLookup typed = [this](const std::string& name) -> const TypedConstant* {
+            auto it = typedConstants_.find(name);
+            return it == typedConstants_.end() ? nullptr : &it->second;
+        };
+        auto scalars = [this](const std::string& name, bool array) -> const std::vector<double>* {
+            auto it = constants_.find(name);
+            return array || it == constants_.end() ? nullptr : &it->second;
+        };
+        auto v = evaluateConstantWith(syntax_, span, scalars, nullptr, false, &typed);
         if (!v || v->size() != 1) return 0;
         if (!std::isfinite((*v)[0])) return -1;  // 1 / 0: no size
         return static_cast<int>(std::clamp<double>((*v)[0], INT_MIN, INT_MAX));
     }
-    // Remembers a scalar `static const` / `const` global's value for the array sizes after it.
+    // Remembers a `static const` / `const` global's value for the array sizes after it.
     void rememberConstant(const FxGlobal& g) {
         bool isConst = std::find(g.modifiers.begin(), g.modifiers.end(), "const") != g.modifiers.end();
-        if (!isConst || g.initializer.empty() || !g.arrayDims.empty()) return;
-        if (auto v = evaluateConstant(syntax_, g.initializer, constants_); v && v->size() == 1) constants_[g.name] = *v;
+        if (!isConst || g.initializer.empty()) return;
+        auto v = evaluateConstant(syntax_, g.initializer, constants_);
+        if (!v) return;
+        if (g.arrayDims.empty() && v->size() == 1) constants_[g.name] = *v;
+        // A vector, matrix, struct or array constant: read through subscripts, members and
+        // swizzles (`float b[s.m[1]._22]`), as the rewrite's ConstantSizes does.
+        else if (auto c = typedConstant(syntax_, g.type, g.arrayDims, std::move(*v))) typedConstants_[g.name] = std::move(*c);
     }
+    std::map<std::string, TypedConstant> typedConstants_;
     // `float2 P[] = { {1, 2}, {3, 4}, {5, 6} };`: fxc sizes the array by its initializer (3 elements;
     // NVIDIA SoftShadows' Poisson.fxh), a uniform as a static, so the parameter has that many
     // elements. Only initializers constant_eval reads (numbers, constructors, earlier constants)
