@@ -69,3 +69,48 @@ TEST(DeclarationSpellings, LocalsFxcRefusesStayRefused) {
     EXPECT_EQ(compileError("struct s { float4 f; };\nfloat4 PS(void) : SV_Target { const struct s a; return 0; }\n"),
               "const variable 'a' has no initial value (fxc X3012)");
 }
+
+// texture-load-typed L56: fxc reads the texture keywords in any case, so a templated `texture2D`
+// is a Texture2D and a templated `textureCUBE` a TextureCube (a DX9 texture takes no template).
+TEST(DeclarationSpellings, LowerCaseTemplatedTexturesAreObjects) {
+    CompileOptions o;
+    o.useCache = false;
+    CompiledEffect e = compileEffectSource("texture2D<float> F;\ntextureCUBE<float4> C;\nSamplerState S;\n"
+                                           "float4 PS() : SV_Target { return F.Load(int3(0, 0, 0)) + C.Sample(S, float3(1, 0, 0)); }\n"
+                                           "technique10 T { pass P { SetPixelShader(CompileShader(ps_4_0, PS())); } }\n",
+                                           "virtual/LowerCaseTextures.fx", o);
+    const std::string& glsl = e.shaders.at(static_cast<size_t>(e.techniques.at(0).passes.at(0).pixelShader.shaders.at(0))).glsl;
+    EXPECT_NE(glsl.find("texelFetch("), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find("samplerCube "), std::string::npos) << glsl;
+}
+
+// type-names L1: a typedef in a function may name a built-in type, which then means the alias to
+// the block's end (`typedef Half2 float;` makes `float v` a float2; `typedef float float;` changes
+// nothing); DWORD is dword in any case, also where a local typedef shadows `dword`. The pixel
+// shader's value is folded to a literal: (v.x, v.y, w, d) = (2, 3, 1, 4).
+TEST(DeclarationSpellings, LocalTypedefsMayNameBuiltinTypes) {
+    CompileOptions o;
+    o.useCache = false;
+    CompiledEffect e = compileEffectSource("typedef float2 Half2;\n"
+                                           "float4 PS() : SV_Target {\n"
+                                           "    float w = 1;\n"
+                                           "    {\n        typedef Half2 float;\n        typedef float2 dword;\n"
+                                           "        float v = {2, 3};\n        DWORD d = 4.5;\n"
+                                           "        {\n            typedef float float;\n            return float4(v, w, d);\n        }\n    }\n}\n"
+                                           "technique10 T { pass P { SetPixelShader(CompileShader(ps_4_0, PS())); } }\n",
+                                           "virtual/LocalTypedefs.fx", o);
+    const std::string& glsl = e.shaders.at(static_cast<size_t>(e.techniques.at(0).passes.at(0).pixelShader.shaders.at(0))).glsl;
+    EXPECT_NE(glsl.find("vec4(2.0, 3.0, 1.0, 4.0)"), std::string::npos) << glsl;
+}
+
+// null L55: `= NULL` on a resource global is fxc's spelling of no object bound, and Effects 10's
+// RenderTargetView / DepthStencilView variables are nothing a shader reads; NULL stays refused as
+// a numeric value and in lower case (null L1, L29).
+TEST(DeclarationSpellings, NullInitializedResourcesAndViews) {
+    EXPECT_EQ(compileError("Texture2D T = NULL;\nTexture2DMS<float4> M = NULL;\nStructuredBuffer<float4> B = NULL, C = NULL;\n"
+                           "RenderTargetView rtv = NULL;\nDepthStencilView dsv;\nSamplerState S;\n"
+                           "float4 PS() : SV_Target { return T.Sample(S, 0.5) + M.Load(int2(0, 0), 0) + B[0] + C[1]; }\n"),
+              "");
+    EXPECT_NE(compileError("float4 V = NULL;\nfloat4 PS() : SV_Target { return V; }\n"), "");
+    EXPECT_NE(compileError("Texture2D T = null;\nfloat4 PS() : SV_Target { return 0; }\n"), "");
+}

@@ -55,3 +55,40 @@ TEST(FxcValues, ParenthesisedLvalueCastWritesTheSwizzledComponents) {
     EXPECT_NE(pixelGlsl(nested, "ps_2_0").find("vec4(2.5, 0.0, 1.5, 0.0)"), std::string::npos) << pixelGlsl(nested, "ps_2_0");
     EXPECT_THROW(pixelGlsl(nested, "ps_4_0"), CompileError);
 }
+
+// unroll L25: `[unroll(n)]` is the most iterations the loop runs (fxc emits n copies of the body),
+// so the loop to 8 stops at 4 (the suite's probe). glslang does not fold the loops, so the GLSL is
+// read for the limit ahead of each loop's own condition: a `for`, a limit above the trip count, a
+// `while`, and a loop without a condition as the unbraced body of an `if`.
+TEST(FxcValues, UnrollCountCapsTheIterations) {
+    const std::string glsl = pixelGlsl(
+        "float4 main() : sv_target\n{\n    int i, j = 0, k = 0, n = 0;\n    [unroll(4)]\n    for (i = 0; i < 8; ++i);\n"
+        "    [unroll(20)] for (j = 0; j < 8; ++j) {}\n    [unroll(3)] while (k < 10) ++k;\n"
+        "    if (i > 0) [allow_uav_condition] [unroll(2)] for (;;) ++n;\n    return float4(i, j, k, n);\n}\n");
+    for (const char* limit : {" < 4u) && (", " < 20u) && (", " < 3u) && (", " < 2u; )"})
+        EXPECT_NE(glsl.find(limit), std::string::npos) << limit << "\n" << glsl;
+}
+
+// srv-buffers L95: a Buffer's Load takes an int location; fxc converts a vector argument to it by
+// keeping the first component (element 2 of float2(2, 9999)), a matrix its _m00.
+TEST(FxcValues, BufferLoadOfAVectorReadsItsFirstComponent) {
+    const std::string glsl = pixelGlsl(
+        "Buffer b;\nBuffer<uint> u;\nfloat4 main() : sv_target\n{\n    float2x2 m = {5, 6, 7, 8};\n"
+        "    return b.Load(float2(2, 9999)) + u.Load(m);\n}\n");
+    EXPECT_NE(glsl.find("texelFetch(b, 2)"), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find("texelFetch(u, 5)"), std::string::npos) << glsl;
+}
+
+// minimum-precision L5: a flat initializer of a min-precision matrix (`min16uint4x2 e = {14.4, ...}`,
+// the values truncated) and mul of an integer matrix, which fxc computes in the common component
+// type and glslang has no overload for: rows (14 15)(16 17)(18 19)(20 21) times (4, 5), and the
+// int2x2 product (1 2)(3 4) x (5 6)(7 8) = (19 22)(43 50).
+TEST(FxcValues, IntegerMatrixProducts) {
+    std::string glsl = pixelGlsl(
+        "float4 main() : sv_target\n{\n    min10float2 b = {4, 5};\n    min16uint4x2 e = {14.4, 15, 16, 17, 18, 19, 20, 21};\n"
+        "    return mul(e, b);\n}\n");
+    EXPECT_NE(glsl.find("vec4(131.0, 149.0, 167.0, 185.0)"), std::string::npos) << glsl;
+    glsl = pixelGlsl("float4 main() : sv_target\n{\n    int2x2 e = {1, 2, 3, 4};\n    int2x2 f = {5, 6, 7, 8};\n    int2x2 r = mul(e, f);\n"
+                     "    return float4(r[0], r[1]);\n}\n");
+    EXPECT_NE(glsl.find("vec4(19.0, 22.0, 43.0, 50.0)"), std::string::npos) << glsl;
+}

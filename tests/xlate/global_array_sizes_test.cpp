@@ -49,3 +49,25 @@ TEST(GlobalArraySizes, AnUndeclaredNameInTheSizeIsStillRefused) {
         EXPECT_NE(d.message.find("undeclared identifier 'Nope' in the size of array 'W'"), std::string::npos) << d.message;
     }
 }
+
+// array-size-expr L71: fxc sizes an array by a constant read through a struct member, a matrix
+// row, matrix and vector swizzles (a.m[1] is rows (1 1 1)(1 5 1); ._13_22_21 is (1, 5, 1), .zxy.z
+// is 5), and by a vector constant's components or a constant array's element (an int: 7.9 is 7).
+// The parameters have those sizes; a local array's size is a literal glslang takes.
+TEST(GlobalArraySizes, SizesReadThroughStructMembersAndSwizzles) {
+    CompileOptions o;
+    o.useCache = false;
+    CompiledEffect e = compileEffectSource(
+        "static const struct { float f; float2x3 m[2]; } a = {0, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 5, 1};\n"
+        "static const int2 S = int2(3, 2);\nstatic const int w[3] = {1, 2, 7.9};\n"
+        "float C[a.m[1]._13_22_21.zxy.z];\nfloat W[S.x * S.y + w[2]];\n"
+        "float4 PS() : COLOR0 { float l[a.m[1][1].y + S.y]; l[6] = C[4]; return l[6] + W[12]; }\n"
+        "technique T { pass P { PixelShader = compile ps_2_0 PS(); } }\n",
+        "virtual/ArraySizes.fx", o);
+    const Parameter* c = e.findParameter("C");
+    ASSERT_NE(c, nullptr);
+    EXPECT_EQ(c->elements, 5);
+    const Parameter* w = e.findParameter("W");
+    ASSERT_NE(w, nullptr);
+    EXPECT_EQ(w->elements, 13);
+}

@@ -46,6 +46,7 @@
 #include "rewrite/sampler_array_elements.h"
 #include "rewrite/sampler_textures.h"
 #include "rewrite/attribute_case.h"
+#include "rewrite/builtin_type_typedefs.h"
 #include "rewrite/keyword_case.h"
 #include "rewrite/literal_suffixes.h"
 #include "fx/render_states.h"
@@ -1372,10 +1373,12 @@ CompiledEffect compileUncached(const std::string& source, const std::string& dis
     PreprocessedEffect pre = preprocessEffect(source, displayPath, absolutePath, options);
     reportWorkerProgress("parse");
     pre.text = splitStructDefinitions(pre.text);  // `static struct { ... } x;` and definitions in definitions
+    pre.text = textureTemplatesSpelledAsObjects(pre.text);  // texture2D<float> t -> Texture2D<float> t
     pre.text = dropUnusedSamplerArrays(pre.text);
     pre.text = samplerArraysAsElements(pre.text);  // sam[1] -> sam_fxport_1
     pre.text = samplerTexturesDeclared(pre.text);  // tex2D(sam, uv) beside tex.Sample(sam, uv)
     pre.text = longLiteralSuffixesDropped(pre.text);  // 3lu -> 3u
+    pre.text = builtinTypeTypedefsResolved(pre.text);  // { typedef half2 float; float v; } -> { half2 v; }
     pre.text = typeKeywordsLowerCased(pre.text);      // Matrix m -> matrix m
     pre.text = entryAttributeNamesLowerCased(pre.text);  // [MaxVertexCount(3)] -> [maxvertexcount(3)]
 

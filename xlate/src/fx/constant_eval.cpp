@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 
 #include "fx/input_limits.h"
 
@@ -13,10 +14,39 @@ namespace fxport::xlate {
 
 namespace {
 
+// Which components a swizzle picks of a numeric value of shape `b`: `zxy` of a vector (or `x` of a
+// scalar), `_13_22` / `_m02_m11` of a matrix; nothing for anything else.
+std::optional<std::vector<size_t>> swizzleComponents(const BasicType& b, const std::string& s) {
+    std::vector<size_t> picked;
+    if (b.isMatrix) {
+        for (size_t i = 0; i < s.size();) {
+            if (s[i] != '_') return std::nullopt;
+            const bool zeroBased = i + 1 < s.size() && s[i + 1] == 'm';
+            const size_t at = i + (zeroBased ? 2 : 1);
+            if (at + 2 > s.size()) return std::nullopt;
+            const int r = s[at] - '0' - (zeroBased ? 0 : 1), c = s[at + 1] - '0' - (zeroBased ? 0 : 1);
+            if (r < 0 || r >= b.rows || c < 0 || c >= b.columns) return std::nullopt;
+            picked.push_back(size_t(r * b.columns + c));
+            i = at + 2;
+        }
+    } else {
+        for (char ch : s) {
+            const char* sets[] = {"xyzw", "rgba"};
+            size_t k = std::string::npos;
+            for (const char* set : sets)
+                if (const char* p = std::strchr(set, ch); p && ch) k = size_t(p - set);
+            if (k == std::string::npos || int(k) >= b.columns) return std::nullopt;
+            picked.push_back(k);
+        }
+    }
+    if (picked.empty() || picked.size() > 4) return std::nullopt;
+    return picked;
+}
+
 class Evaluator {
 public:
-    Evaluator(const EffectSyntax& syntax, TokenSpan span, const ConstantLookup& lookup, bool integers)
-        : syntax_(syntax), pos_(span.begin), end_(span.end), lookup_(lookup), integers_(integers) {}
+    Evaluator(const EffectSyntax& syntax, TokenSpan span, const ConstantLookup& lookup, bool integers, const TypedConstantLookup* typed)
+        : syntax_(syntax), pos_(span.begin), end_(span.end), lookup_(lookup), integers_(integers), typed_(typed) {}
 
     std::optional<std::vector<double>> run() {
         auto v = expression();
@@ -30,6 +60,7 @@ private:
     size_t pos_, end_;
     const ConstantLookup& lookup_;
     const bool integers_;
+    const TypedConstantLookup* typed_;
     // Every level of ( or { is one level of recursion here: bounded, so that 30 000
     // nested parentheses are a diagnostic and not a stack overflow.
     int depth_ = 0;
@@ -148,6 +179,61 @@ private:
         if (!(i >= 0) || i >= double(array->size())) return std::nullopt;
         return std::vector<double>{(*array)[static_cast<size_t>(i)]};
     }
+    // A typed constant read through `[i]`, `.member` and swizzles down to a numeric value.
+    std::optional<std::vector<double>> access(const TypedConstant& c) {
+        std::string type = syntax_.resolveType(c.type);
+        std::vector<int> dims = c.dims;
+        std::vector<double> v = c.values;
+        BasicType b = describeBasicType(type);
+        for (;;) {
+            if (accept("[")) {
+                auto index = expression();
+                if (!index || index->size() != 1 || !accept("]") || !((*index)[0] >= 0)) return std::nullopt;
+                const size_t i = static_cast<size_t>((*index)[0]);
+                // An array's element, a matrix's row, a vector's component.
+                const size_t count = !dims.empty() ? size_t(dims.front()) : b.isMatrix ? size_t(b.rows) : b.ok ? size_t(b.columns) : 0;
+                if (i >= count || v.size() % count != 0) return std::nullopt;
+                const size_t n = v.size() / count;
+                v = std::vector<double>(v.begin() + std::ptrdiff_t(i * n), v.begin() + std::ptrdiff_t((i + 1) * n));
+                if (!dims.empty()) dims.erase(dims.begin());
+                else b = BasicType{b.scalar, 1, b.isMatrix ? b.columns : 1, false, true};
+            } else if (cur() && cur()->is(".") && pos_ + 1 < end_ && syntax_.tokens[pos_ + 1].isIdent() && dims.empty()) {
+                const std::string& name = syntax_.tokens[pos_ + 1].text;
+                pos_ += 2;
+                if (const FxStruct* st = b.ok ? nullptr : syntax_.findStruct(type)) {
+                    size_t offset = 0;
+                    const FxStructMember* member = nullptr;
+                    for (const auto& m : st->members) {
+                        auto scalars = componentScalars(syntax_, m.type, m.arrayDims);
+                        if (!scalars) return std::nullopt;
+                        if (m.name == name) {
+                            member = &m;
+                            if (offset + scalars->size() > v.size()) return std::nullopt;
+                            v = std::vector<double>(v.begin() + std::ptrdiff_t(offset), v.begin() + std::ptrdiff_t(offset + scalars->size()));
+                            break;
+                        }
+                        offset += scalars->size();
+                    }
+                    if (!member) return std::nullopt;
+                    type = syntax_.resolveType(member->type);
+                    dims = member->arrayDims;
+                    b = describeBasicType(type);
+                } else {
+                    auto picked = b.ok ? swizzleComponents(b, name) : std::nullopt;
+                    if (!picked) return std::nullopt;
+                    std::vector<double> out;
+                    for (size_t k : *picked) out.push_back(v[k]);
+                    v = std::move(out);
+                    b = BasicType{b.scalar, 1, int(v.size()), false, true};
+                }
+            } else {
+                break;
+            }
+        }
+        if (!dims.empty() || !b.ok) return std::nullopt;
+        return v;
+    }
+
     std::optional<std::vector<double>> primary() {
         const Token* t = cur();
         if (!t) return std::nullopt;
@@ -185,6 +271,7 @@ private:
                 return v;
             }
             if (const std::vector<double>* value = lookup_(t->text, false)) return *value;
+            if (const TypedConstant* c = typed_ && *typed_ ? (*typed_)(t->text) : nullptr) return access(*c);
             if (cur() && cur()->is("[")) return element(t->text);
         }
         return std::nullopt;
@@ -205,9 +292,46 @@ std::optional<std::vector<double>> evaluateConstant(const EffectSyntax& syntax, 
     return evaluateConstantWith(syntax, span, lookup, tooDeep);
 }
 
+std::optional<std::vector<std::string>> componentScalars(const EffectSyntax& syntax, const std::string& type, const std::vector<int>& dims) {
+    std::vector<std::string> one;
+    const std::string& resolved = syntax.resolveType(type);
+    if (BasicType b = describeBasicType(resolved); b.ok) {
+        one.assign(size_t(b.rows * b.columns), b.scalar);
+    } else if (const FxStruct* st = syntax.findStruct(resolved)) {
+        for (const auto& m : st->members) {
+            if (syntax.resolveType(m.type) == resolved) return std::nullopt;  // no recursion through a broken definition
+            auto member = componentScalars(syntax, m.type, m.arrayDims);
+            if (!member) return std::nullopt;
+            one.insert(one.end(), member->begin(), member->end());
+        }
+    } else {
+        return std::nullopt;
+    }
+    std::vector<std::string> all;
+    size_t copies = 1;
+    for (int d : dims) {
+        if (d <= 0 || copies * size_t(d) * one.size() > 65536) return std::nullopt;
+        copies *= size_t(d);
+    }
+    for (size_t i = 0; i < copies; ++i) all.insert(all.end(), one.begin(), one.end());
+    return all;
+}
+
+std::optional<TypedConstant> typedConstant(const EffectSyntax& syntax, const std::string& type, const std::vector<int>& dims,
+                                           std::vector<double> values) {
+    auto scalars = componentScalars(syntax, type, dims);
+    if (!scalars || scalars->size() != values.size()) return std::nullopt;
+    for (size_t k = 0; k < values.size(); ++k) {
+        const std::string& s = (*scalars)[k];
+        const bool real = s == "float" || s == "half" || s == "double" || s.rfind("min16f", 0) == 0 || s.rfind("min10f", 0) == 0;
+        if (!real) values[k] = std::trunc(values[k]);
+    }
+    return TypedConstant{type, dims, std::move(values)};
+}
+
 std::optional<std::vector<double>> evaluateConstantWith(const EffectSyntax& syntax, TokenSpan span, const ConstantLookup& lookup,
-                                                        bool* tooDeep, bool integers) {
-    Evaluator evaluator(syntax, span, lookup, integers);
+                                                        bool* tooDeep, bool integers, const TypedConstantLookup* typed) {
+    Evaluator evaluator(syntax, span, lookup, integers, typed);
     auto value = evaluator.run();
     if (tooDeep) *tooDeep = evaluator.tooDeep();
     return value;

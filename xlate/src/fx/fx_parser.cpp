@@ -120,6 +120,16 @@ bool isShaderObjectType(const std::string& s) {
     return iequals(s, "VertexShader") || iequals(s, "PixelShader") || iequals(s, "GeometryShader") || iequals(s, "HullShader") ||
            iequals(s, "DomainShader") || iequals(s, "ComputeShader");
 }
+// Effects 10's render-target and depth-stencil view variables: the application sets them through
+// the effect; no shader reads them (fxc takes them in a plain shader too, vkd3d's null L55).
+bool isViewObjectType(const std::string& s) { return s == "RenderTargetView" || s == "DepthStencilView"; }
+// A resource a global declares, which `= NULL` leaves unbound (fxc takes that initializer).
+bool isResourceObjectType(const std::string& s) {
+    for (const char* prefix : {"Texture", "RWTexture", "Buffer", "RWBuffer", "StructuredBuffer", "RWStructuredBuffer",
+                               "AppendStructuredBuffer", "ConsumeStructuredBuffer", "ByteAddressBuffer", "RWByteAddressBuffer"})
+        if (s.rfind(prefix, 0) == 0) return true;
+    return false;
+}
 bool isTypeModifier(const std::string& s) {
     static const std::set<std::string> k = {"static", "const", "uniform", "extern", "shared", "volatile", "precise",
                                             "row_major", "column_major", "inline", "groupshared", "nointerpolation",
@@ -768,17 +778,31 @@ private:
     // `float w[N + 1]` with `static const int N = 4;` earlier: fxc sizes arrays by any constant
     // expression of constants declared before. 0 (unknown) where it is not one.
     int evaluateWithConstants(TokenSpan span) const {
-        auto v = evaluateConstant(syntax_, span, constants_);
+        const TypedConstantLookup typed = [this](const std::string& name) -> const TypedConstant* {
+            auto it = typedConstants_.find(name);
+            return it == typedConstants_.end() ? nullptr : &it->second;
+        };
+        auto scalars = [this](const std::string& name, bool array) -> const std::vector<double>* {
+            auto it = constants_.find(name);
+            return array || it == constants_.end() ? nullptr : &it->second;
+        };
+        auto v = evaluateConstantWith(syntax_, span, scalars, nullptr, false, &typed);
         if (!v || v->size() != 1) return 0;
         if (!std::isfinite((*v)[0])) return -1;  // 1 / 0: no size
         return static_cast<int>(std::clamp<double>((*v)[0], INT_MIN, INT_MAX));
     }
-    // Remembers a scalar `static const` / `const` global's value for the array sizes after it.
+    // Remembers a `static const` / `const` global's value for the array sizes after it.
     void rememberConstant(const FxGlobal& g) {
         bool isConst = std::find(g.modifiers.begin(), g.modifiers.end(), "const") != g.modifiers.end();
-        if (!isConst || g.initializer.empty() || !g.arrayDims.empty()) return;
-        if (auto v = evaluateConstant(syntax_, g.initializer, constants_); v && v->size() == 1) constants_[g.name] = *v;
+        if (!isConst || g.initializer.empty()) return;
+        auto v = evaluateConstant(syntax_, g.initializer, constants_);
+        if (!v) return;
+        if (g.arrayDims.empty() && v->size() == 1) constants_[g.name] = *v;
+        // A vector, matrix, struct or array constant: read through subscripts, members and
+        // swizzles (`float b[s.m[1]._22]`), as the rewrite's ConstantSizes does.
+        else if (auto c = typedConstant(syntax_, g.type, g.arrayDims, std::move(*v))) typedConstants_[g.name] = std::move(*c);
     }
+    std::map<std::string, TypedConstant> typedConstants_;
     // `float2 P[] = { {1, 2}, {3, 4}, {5, 6} };`: fxc sizes the array by its initializer (3 elements;
     // NVIDIA SoftShadows' Poisson.fxh), a uniform as a static, so the parameter has that many
     // elements. Only initializers constant_eval reads (numbers, constructors, earlier constants)
@@ -848,6 +872,7 @@ private:
         }
         if (isDx9SamplerType(type) || isDx10SamplerType(type)) return parseSampler(type, name, nameToken, start);
         if (isStateObjectType(type)) return parseStateObject(type, name, nameToken, start);
+        if (isViewObjectType(type) && cbuffer.empty()) return parseViewObject(type, name, start);
         if (isShaderObjectType(type)) return parseShaderVariable(type, name, nameToken, start);
         if (iequals(type, "string")) return parseStringParameter(name, nameToken, start);
         parseVariable(type, modifiers, name, nameToken, cbuffer);
@@ -1040,6 +1065,22 @@ private:
     }
 
     // Skips an initializer to the ',' or ';' that ends it (depth 0). Returns its span.
+    // `T t = NULL;` of a resource: the initializer is fxc's spelling of no object bound, which
+    // glslang refuses (a uniform initializer must be constant); ` = NULL` goes. True when it went.
+    bool blankNullInitializer(TokenSpan init) {
+        if (init.end != init.begin + 1 || !tok(init.begin).is("NULL") || tok(init.begin).kind == Token::Kind::String) return false;
+        blank(init.begin - 1, init.end);
+        return true;
+    }
+
+    // `RenderTargetView rtv = NULL;`: nothing any shader reads, so the declaration goes.
+    void parseViewObject(const std::string& type, const std::string& name, size_t start) {
+        parseDeclaratorTail();
+        if (accept("=")) skipInitializer(name);
+        expect(";", ("after " + type + " '" + name + "'").c_str());
+        blank(start, pos_);
+    }
+
     TokenSpan skipInitializer(const std::string& name) {
         size_t b = pos_;
         int depth = 0;
@@ -1073,7 +1114,7 @@ private:
             tex.registers = tail.registers;
             tex.annotations = tail.annotations;
             ignoreStateBlock(name);
-            if (accept("=")) skipInitializer(name);
+            if (accept("=")) blankNullInitializer(skipInitializer(name));
             if (!dx9 && tail.annotationEnd > tail.annotationBegin) blank(tail.annotationBegin, tail.annotationEnd);
             syntax_.textures.push_back(std::move(tex));
             if (!accept(",")) break;
@@ -1203,6 +1244,7 @@ private:
             if (tail.annotationEnd > tail.annotationBegin) blank(tail.annotationBegin, tail.annotationEnd);
             ignoreStateBlock(name);
             if (accept("=")) g.initializer = skipInitializer(name);
+            if (isResourceObjectType(type) && blankNullInitializer(g.initializer)) g.initializer = {};
             sizeFromInitializer(g);
             rememberConstant(g);
             syntax_.globals.push_back(std::move(g));

@@ -74,7 +74,7 @@ void ConstantSizes::remember(size_t at, size_t scopeEnd) {
     if (t[j].is("static")) ++j;
     if (j + 3 >= t.size() || !t[j].isIdent() || !t[j + 1].isIdent()) return;
     BasicType b = describeBasicType(syntax_.resolveType(t[j].text));
-    if (!b.ok || b.rows * b.columns != 1) return;
+    if (!b.ok || b.rows * b.columns != 1) return rememberTyped(j, scopeEnd);
     if (t[j + 2].is("[")) return rememberArray(j, scopeEnd, b);
     if (!t[j + 2].is("=")) return;
     size_t end = j + 3;
@@ -103,6 +103,36 @@ void ConstantSizes::rememberArray(size_t type, size_t scopeEnd, const BasicType&
     constants_[t[type + 1].text].push_back({type + 1, scopeEnd, true, std::move(*v)});
 }
 
+// `[static] const T name[N]... = ...;` of a vector, matrix or struct type T (or an array of
+// scalars with more than one size), at the type token `type`: its components (typedConstant).
+void ConstantSizes::rememberTyped(size_t type, size_t scopeEnd) {
+    const auto& t = syntax_.tokens;
+    size_t j = type + 2;
+    std::vector<int> dims;
+    while (j + 1 < t.size() && t[j].is("[")) {
+        size_t close = j + 1;
+        while (close < t.size() && !t[close].is("]") && !t[close].is(";") && t[close].kind != Token::Kind::End) ++close;
+        auto n = close < t.size() && t[close].is("]") ? size(j, close) : std::nullopt;
+        if (!n || *n == 0) return;
+        dims.push_back(*n);
+        j = close + 1;
+    }
+    if (j >= t.size() || !t[j].is("=")) return;
+    size_t end = j + 1;
+    while (end < t.size() && !t[end].is(";") && t[end].kind != Token::Kind::End) ++end;
+    auto v = evaluate({j + 1, end});
+    if (auto c = v ? typedConstant(syntax_, t[type].text, dims, std::move(*v)) : std::nullopt)
+        typed_[t[type + 1].text].push_back({type + 1, scopeEnd, std::move(*c)});
+}
+
+const TypedConstant* ConstantSizes::visibleTyped(const std::string& name, size_t at) const {
+    auto it = typed_.find(name);
+    if (it == typed_.end()) return nullptr;
+    for (auto c = it->second.rbegin(); c != it->second.rend(); ++c)
+        if (c->from < at && at < c->to) return &c->value;
+    return nullptr;
+}
+
 // The value of the constant `name` (an array's when `array`) that token `at` sees: the latest
 // declared before it whose block is still open there.
 const std::vector<double>* ConstantSizes::visible(const std::string& name, bool array, size_t at) const {
@@ -114,7 +144,9 @@ const std::vector<double>* ConstantSizes::visible(const std::string& name, bool 
 }
 
 std::optional<std::vector<double>> ConstantSizes::evaluate(TokenSpan span) const {
-    return evaluateConstantWith(syntax_, span, [this, span](const std::string& name, bool array) { return visible(name, array, span.begin); });
+    const TypedConstantLookup typed = [this, span](const std::string& name) { return visibleTyped(name, span.begin); };
+    return evaluateConstantWith(
+        syntax_, span, [this, span](const std::string& name, bool array) { return visible(name, array, span.begin); }, nullptr, false, &typed);
 }
 
 std::optional<int> ConstantSizes::size(size_t open, size_t close) const {

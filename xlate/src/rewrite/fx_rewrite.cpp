@@ -22,6 +22,8 @@
 #include "rewrite/switch_labels.h"
 #include "rewrite/local_state_blocks.h"
 #include "rewrite/negated_bool_literals.h"
+#include "rewrite/unroll_limits.h"
+#include "rewrite/buffer_load_locations.h"
 #include "rewrite/keyword_identifiers.h"
 #include "rewrite/matrix_constructor_arguments.h"
 #include "rewrite/matrix_rows_intrinsics.h"
@@ -435,11 +437,13 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : interlockedValueConversions(syntax)) edits.push_back(std::move(e));  // before compare_store: see there
     for (auto& e : compareStoreAsExchange(syntax)) edits.push_back(std::move(e));
     for (auto& e : byteAddressStoreValues(syntax)) edits.push_back(std::move(e));
+    for (auto& e : bufferLoadLocationsAsScalars(syntax)) edits.push_back(std::move(e));
     for (auto& e : mixedDimensionOutputs(syntax)) edits.push_back(std::move(e));
     for (auto& e : switchLabelsAsIntegers(syntax)) edits.push_back(std::move(e));
     for (auto& e : matrixConstructorArgumentsAsRows(syntax)) edits.push_back(std::move(e));
     for (auto& e : keywordIdentifiersRenamed(syntax)) edits.push_back(std::move(e));
     for (auto& e : negatedBoolLiteralsAsInts(syntax)) edits.push_back(std::move(e));
+    for (auto& e : unrollLimitsAsConditions(syntax)) edits.push_back(std::move(e));
     for (auto& e : localStateBlocksDropped(syntax)) edits.push_back(std::move(e));
     for (auto& e : matrixIntrinsicsByRow(syntax)) edits.push_back(std::move(e));
     for (auto& e : staticObjectAliases(syntax)) edits.push_back(std::move(e));

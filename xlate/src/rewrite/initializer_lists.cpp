@@ -10,6 +10,7 @@
 #include "hlsl/aggregate_components.h"
 #include "hlsl/expression_types.h"
 #include "rewrite/array_sizes.h"
+#include "rewrite/min_precision_types.h"
 #include "hlsl/hlsl_types.h"
 #include "hlsl/variable_declarations.h"
 
@@ -241,7 +242,9 @@ public:
         // A one-row or one-column matrix is a vector to glslang (see degenerate_matrices.h).
         const bool degenerate = basic.isMatrix && (basic.rows == 1 || basic.columns == 1);
         const bool constructor = size > 1 || (basic.isMatrix && !degenerate);
-        if (constructor) text((degenerate ? basic.scalar + std::to_string(size) : type) + "(");
+        // A min-precision matrix constructor is spelled as its 32-bit type, as glslang reads the declaration's (min_precision_types.h).
+        const std::string full = fullPrecisionMatrixName(type);
+        if (constructor) text((degenerate ? basic.scalar + std::to_string(size) : full.empty() ? type : full) + "(");
         components(size, basic.isMatrix && !degenerate);
         if (constructor) text(")");
         return true;

@@ -16,5 +16,8 @@ const char* fullPrecisionScalar(const std::string& name);
 
 // `float4x4` for the token `min16float4x4` (and the other minimum-precision matrix names), else "".
 std::string fullPrecisionMatrixName(const Token& t);
+// The same for a type name as text (`min16uint4x2` -> `uint4x2`): a rewrite that spells a
+// constructor of a declared type writes it so.
+std::string fullPrecisionMatrixName(const std::string& name);
 
 }  // namespace fxport::xlate

@@ -32,12 +32,15 @@ std::string shapeName(const ExpressionType& e) { return spellType(e.basic) + (e.
 // Whether mul(a, b) needs fxc's meaning spelled out: a one-component vector or matrix, or a
 // one-row or one-column matrix, takes part (glslang crashes on the first, and holds the others as
 // vectors, which mul would take as rows or columns where fxc does not); plain scalars, vectors
-// and full matrices glslang multiplies as fxc does.
+// and full float matrices glslang multiplies as fxc does.
 bool mulNeedsHelper(const ExpressionType& a, const ExpressionType& b) {
     auto scalar = [](const ExpressionType& e) { return !e.basic.isMatrix && !e.vector1 && e.basic.columns == 1; };
     if (scalar(a) || scalar(b)) return false;
     auto odd = [](const ExpressionType& e) { return e.vector1 || (e.basic.isMatrix && (e.basic.rows == 1 || e.basic.columns == 1)); };
-    return odd(a) || odd(b);
+    // An int, uint or bool matrix: glslang has no overload of mul for one (GLSL has no integer
+    // matrices); fxc multiplies in the common component type (vkd3d's minimum-precision L5).
+    auto integer = [](const ExpressionType& e) { return e.basic.isMatrix && glslangScalar(e.basic.scalar) != "float" && e.basic.scalar != "double"; };
+    return odd(a) || odd(b) || integer(a) || integer(b);
 }
 
 // `R name(A a, B b) { return R(sums); }`: fxc's mul, a vector a row on the left and a column on
