@@ -3,6 +3,7 @@
 // IsFullScreen / ToggleFullScreen / SynchronizeWithVerticalRetrace / PreferMultiSampling /
 // GraphicsProfile, with XNA's defaults. Headless (OSMesa): the window settings must be accepted
 // and leave the back buffer and the frames as they were.
+#include <algorithm>
 #include <memory>
 #include <string>
 
@@ -182,6 +183,27 @@ TEST(GameMembers, NoMultiSamplingNoWarning) {
     game.RunOneFrame();
     const std::string err = testing::internal::GetCapturedStderr();
     EXPECT_EQ(occurrences(err, "PreferMultiSampling"), 0u) << err;
+}
+
+// GraphicsAdapter.DefaultAdapter.CurrentDisplayMode, which games size their back buffer from:
+// headless (no monitor) the documented 1920x1080; with a monitor its current mode, one of the
+// modes it supports.
+TEST(GameMembers, DefaultAdapterReportsADisplayMode) {
+    GraphicsAdapter& adapter = GraphicsAdapter::DefaultAdapter();
+    const DisplayMode mode = adapter.CurrentDisplayMode();
+    const std::vector<DisplayMode> modes = adapter.SupportedDisplayModes();
+    ASSERT_FALSE(modes.empty());
+    if (adapter.IsHeadless()) {
+        EXPECT_EQ(mode, (DisplayMode{1920, 1080, SurfaceFormat::Color, 60}));
+        EXPECT_EQ(modes.size(), 1u);
+    } else {
+        EXPECT_GT(mode.Width, 0);
+        EXPECT_NE(std::find(modes.begin(), modes.end(), mode), modes.end());
+    }
+    EXPECT_NEAR(mode.AspectRatio(), float(mode.Width) / float(mode.Height), 1e-6);
+    EXPECT_EQ(mode.TitleSafeArea(), Rectangle(0, 0, mode.Width, mode.Height));
+    EXPECT_EQ(GraphicsAdapter::Adapters().size(), 1u);
+    EXPECT_TRUE(adapter.IsDefaultAdapter());
 }
 
 }  // namespace

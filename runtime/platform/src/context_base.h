@@ -61,6 +61,7 @@ std::unique_ptr<ContextBase> createEGLContext(const ContextDesc& desc);
 #endif
 #ifdef FXPORT_HAVE_GLFW
 std::unique_ptr<ContextBase> createGLFWContext(const ContextDesc& desc);
+bool glfwDisplayModes(std::vector<DisplayModeInfo>& modes, DisplayModeInfo& current);  // primaryDisplayModes
 #endif
 
 }  // namespace fxport::platform

@@ -217,4 +217,20 @@ std::unique_ptr<ContextBase> createGLFWContext(const ContextDesc& desc) {
     return std::make_unique<GLFWGraphicsContext>(desc);
 }
 
+// GLFW is initialised for the question only when no window holds it (and terminated after).
+bool glfwDisplayModes(std::vector<DisplayModeInfo>& modes, DisplayModeInfo& current) {
+    const bool own = g_liveWindows == 0;
+    if (own && !glfwInit()) return false;
+    GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+    const GLFWvidmode* now = monitor != nullptr ? glfwGetVideoMode(monitor) : nullptr;
+    if (now != nullptr) {
+        current = {now->width, now->height, now->refreshRate};
+        int count = 0;
+        const GLFWvidmode* all = glfwGetVideoModes(monitor, &count);
+        for (int i = 0; i < count; ++i) modes.push_back({all[i].width, all[i].height, all[i].refreshRate});
+    }
+    if (own) glfwTerminate();
+    return now != nullptr;
+}
+
 }  // namespace fxport::platform

@@ -141,6 +141,16 @@ Platform platformFromString(const std::string& name) {
                              joinedNames(availablePlatforms()) + ")");
 }
 
+bool primaryDisplayModes(std::vector<DisplayModeInfo>& modes, DisplayModeInfo& current) {
+#ifdef FXPORT_HAVE_GLFW
+    return glfwDisplayModes(modes, current);
+#else
+    (void)modes;
+    (void)current;
+    return false;
+#endif
+}
+
 std::vector<Platform> availablePlatforms() {
     std::vector<Platform> platforms{Platform::OSMesa};
 #ifdef FXPORT_HAVE_EGL

@@ -21,6 +21,7 @@
 #include "fxport/graphics/fullscreen_quad.h"
 #include "fxport/graphics/gpu_limits.h"
 #include "fxport/graphics/gpu_timer.h"
+#include "fxport/graphics/graphics_adapter.h"
 #include "fxport/graphics/graphics_device.h"
 #include "fxport/graphics/model.h"
 #include "fxport/graphics/rasterizer_state.h"

@@ -105,6 +105,14 @@ public:
     virtual std::string rendererName() const = 0;
 };
 
+// A monitor's video mode.
+struct DisplayModeInfo {
+    int width = 0, height = 0, refreshRate = 0;
+};
+// The primary monitor's modes and, in `current`, the mode it runs in, where a display is reachable
+// (GLFW built in and a monitor found); false otherwise (headless: no monitor).
+bool primaryDisplayModes(std::vector<DisplayModeInfo>& modes, DisplayModeInfo& current);
+
 // "osmesa", "egl", "glfw" (case-insensitive). Throws std::runtime_error listing the valid names.
 Platform platformFromString(const std::string& name);
 // The lower-case name that platformFromString accepts.
