@@ -4,9 +4,10 @@
 //    "SV_VertexID doesn't include the StartVertexLocation"), while the vertex fetched is still
 //    StartVertexLocation + i / index + BaseVertexLocation. GL's gl_VertexID counts them in.
 //  - SV_RenderTargetArrayIndex written by a vertex shader (D3D11.3 VPRT, as HolographicSpinningCube's
-//    VPRT vertex shader does) sends each primitive to that slice of an array render target, and the
-//    pixel shader reads the slice back through the same semantic.
+//    VPRT vertex shader does) or by a domain shader sends each primitive to that slice of an array
+//    render target, and the pixel shader reads the slice back through the same semantic.
 #include <cstring>
+#include <functional>
 
 #include "d3d11_test_support.h"
 
@@ -165,6 +166,28 @@ std::vector<Texel> readSlice(Device& d, ID3D11Texture2D* array, UINT slice, UINT
     return readTexels<Texel>(d, staging.Get());
 }
 
+// Slices of a kSlices-slice kSize x kSize float array target: each pixel of slice s is `drawn(s)`.
+constexpr UINT kSlices = 4, kSize = 2;
+void expectSlices(Device& d, ID3D11Texture2D* array, const std::function<Texel(UINT)>& drawn) {
+    for (UINT slice = 0; slice < kSlices; ++slice) {
+        const std::vector<Texel> got = readSlice(d, array, slice, kSize, kSize);
+        ASSERT_EQ(got.size(), std::size_t(kSize * kSize));
+        for (std::size_t p = 0; p < got.size(); ++p) EXPECT_EQ(got[p], drawn(slice)) << "slice " << slice << " pixel " << p;
+    }
+}
+
+// The array target, cleared to -1 and bound with a viewport over it.
+ComPtr<ID3D11Texture2D> bindArrayTarget(Device& d) {
+    ComPtr<ID3D11Texture2D> array = floatTexture(d, kSize, kSize, kSlices, D3D11_BIND_RENDER_TARGET);
+    ComPtr<ID3D11RenderTargetView> rtv;
+    EXPECT_EQ(d.device->CreateRenderTargetView(array.Get(), nullptr, rtv.GetAddressOf()), S_OK) << lastError();
+    const FLOAT clear[4] = {-1, -1, -1, -1};
+    d.context->ClearRenderTargetView(rtv.Get(), clear);
+    d.context->OMSetRenderTargets(1, rtv.GetAddressOfConst(), nullptr);
+    setViewport(d, kSize, kSize);
+    return array;
+}
+
 TEST(D3D11SystemValues, AVertexShaderSendsEachInstanceToTheSliceItsRenderTargetArrayIndexNames) {
     Device d;
     // VPRT: instance i draws a full-screen triangle into slice i + 1; the pixel shader reads the
@@ -182,24 +205,43 @@ float4 PS(float4 p : SV_Position, uint instance : INSTANCE, uint slice : SV_Rend
     return float4(slice, instance, 7, 1);
 })",
                "vprt.hlsl");
-    constexpr UINT kSlices = 4, kSize = 2;
-    ComPtr<ID3D11Texture2D> array = floatTexture(d, kSize, kSize, kSlices, D3D11_BIND_RENDER_TARGET);
-    ComPtr<ID3D11RenderTargetView> rtv;
-    ASSERT_EQ(d.device->CreateRenderTargetView(array.Get(), nullptr, rtv.GetAddressOf()), S_OK) << lastError();
-    const FLOAT clear[4] = {-1, -1, -1, -1};
-    d.context->ClearRenderTargetView(rtv.Get(), clear);
-    d.context->OMSetRenderTargets(1, rtv.GetAddressOfConst(), nullptr);
-    setViewport(d, kSize, kSize);
+    ComPtr<ID3D11Texture2D> array = bindArrayTarget(d);
     d.context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
     d.context->DrawInstanced(3, 2, 0, 0);
     ASSERT_EQ(lastError(), "");
-    for (UINT slice = 0; slice < kSlices; ++slice) {
-        // Slices 1 and 2 hold instances 0 and 1; 0 and 3 keep the clear colour.
-        const Texel want = slice == 1 || slice == 2 ? Texel{float(slice), float(slice - 1), 7, 1} : Texel{-1, -1, -1, -1};
-        const std::vector<Texel> got = readSlice(d, array.Get(), slice, kSize, kSize);
-        ASSERT_EQ(got.size(), std::size_t(kSize * kSize));
-        for (std::size_t p = 0; p < got.size(); ++p) EXPECT_EQ(got[p], want) << "slice " << slice << " pixel " << p;
-    }
+    // Slices 1 and 2 hold instances 0 and 1; 0 and 3 keep the clear colour.
+    expectSlices(d, array.Get(), [](UINT slice) { return slice == 1 || slice == 2 ? Texel{float(slice), float(slice - 1), 7, 1} : Texel{-1, -1, -1, -1}; });
+}
+
+TEST(D3D11SystemValues, ADomainShaderSendsItsPatchToTheSliceItsRenderTargetArrayIndexNames) {
+    Device d;
+    const char* source = R"(
+struct P { float4 p : POS; };
+struct C { float e[3] : SV_TessFactor; float i : SV_InsideTessFactor; };
+struct D { float4 p : SV_Position; uint slice : SV_RenderTargetArrayIndex; };
+P VS(uint id : SV_VertexID) { P o; o.p = float4(id == 1 ? 3.0 : -1.0, id == 2 ? -3.0 : 1.0, 0, 1); return o; }
+C Constants() { C c; c.e[0] = c.e[1] = c.e[2] = 1; c.i = 1; return c; }
+[domain("tri")] [partitioning("integer")] [outputtopology("triangle_cw")] [outputcontrolpoints(3)] [patchconstantfunc("Constants")]
+P HS(InputPatch<P, 3> patch, uint i : SV_OutputControlPointID) { return patch[i]; }
+[domain("tri")]
+D DS(C c, float3 uvw : SV_DomainLocation, const OutputPatch<P, 3> patch) {
+    D o; o.p = patch[0].p * uvw.x + patch[1].p * uvw.y + patch[2].p * uvw.z; o.slice = 2; return o;
+}
+float4 PS(float4 p : SV_Position, uint slice : SV_RenderTargetArrayIndex) : SV_Target { return float4(slice, 5, 0, 1); })";
+    setShaders(d, source, "vprt_domain.hlsl");
+    ComPtr<ID3DBlob> hsCode = compile(source, "HS", "hs_5_0", "vprt_domain.hlsl"), dsCode = compile(source, "DS", "ds_5_0", "vprt_domain.hlsl");
+    ASSERT_TRUE(hsCode && dsCode);
+    ComPtr<ID3D11HullShader> hs;
+    ComPtr<ID3D11DomainShader> ds;
+    ASSERT_EQ(d.device->CreateHullShader(hsCode->GetBufferPointer(), hsCode->GetBufferSize(), nullptr, hs.GetAddressOf()), S_OK) << lastError();
+    ASSERT_EQ(d.device->CreateDomainShader(dsCode->GetBufferPointer(), dsCode->GetBufferSize(), nullptr, ds.GetAddressOf()), S_OK) << lastError();
+    ComPtr<ID3D11Texture2D> array = bindArrayTarget(d);
+    d.context->HSSetShader(hs.Get(), nullptr, 0);
+    d.context->DSSetShader(ds.Get(), nullptr, 0);
+    d.context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_3_CONTROL_POINT_PATCHLIST);
+    d.context->Draw(3, 0);
+    ASSERT_EQ(lastError(), "");
+    expectSlices(d, array.Get(), [](UINT slice) { return slice == 2 ? Texel{2, 5, 0, 1} : Texel{-1, -1, -1, -1}; });
 }
 
 }  // namespace
