@@ -430,6 +430,19 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
                 w.error = "vertex shader output '" + leaf.access + "' has semantic " + b + " in " + profile.name +
                           ": it holds one float, not " + std::to_string(leaf.components) + " components";
                 return w;
+            } else if (b == "SV_RENDERTARGETARRAYINDEX" || b == "SV_VIEWPORTARRAYINDEX") {
+                // glslang makes the semantic as written gl_Layer / gl_ViewportIndex (pre_raster_builtins.h)
+                // and the one with an index a user varying, which is what a geometry shader reads. The
+                // wrapper writes both unless it knows a geometry shader follows (D3D11's stages are
+                // compiled apart: one may).
+                const std::string type = vectorType(leaf.scalar == "int" ? "int" : "uint", 1);
+                if (!nextToGeometryShader) {
+                    outStruct << "    " << type << " " << name << " : " << b << ";\n";
+                    copyOut << "    o." << name << " = " << leafValue(leaf) << ";\n";
+                    name = "o" + std::to_string(m++);
+                }
+                outStruct << "    nointerpolation " << type << " " << name << " : " << b << leaf.semanticIndex << ";\n";
+                copyOut << "    o." << name << " = " << leafValue(leaf) << ";\n";
             } else if (b.rfind("SV_", 0) == 0) {
                 outStruct << "    " << vectorType(leaf.scalar, leaf.components) << " " << name << " : " << b << leaf.semanticIndex << ";\n";
                 copyOut << "    o." << name << " = " << leafValue(leaf) << ";\n";

@@ -1,7 +1,9 @@
 #include "glsl/spirv_to_glsl.h"
 
 #include "glsl/arrayed_clip_inputs.h"
+#include "glsl/pre_raster_builtins.h"
 
+#include "spirv/domain_layer_outputs.h"
 #include "spirv/fetch_offsets.h"
 #include "spirv/gather_offsets.h"
 #include "spirv/integer_matrices.h"
@@ -59,7 +61,32 @@ public:
         return buffer_is_packing_standard(block, spirv_cross::BufferPackingStd140) ||
                buffer_is_packing_standard(block, spirv_cross::BufferPackingStd140EnhancedLayout);
     }
+    // SV_VertexID as D3D counts it (pre_raster_builtins.h).
+    std::string builtin_to_glsl(spv::BuiltIn builtin, spv::StorageClass storage) override {
+        if (builtin == spv::BuiltInVertexIndex && get_execution_model() == spv::ExecutionModelVertex) return vertexIdExpression();
+        return CompilerGLSL::builtin_to_glsl(builtin, storage);
+    }
 };
+
+bool readsVertexId(const spirv_cross::ShaderResources& res, ShaderStage stage) {
+    if (stage == ShaderStage::Vertex)
+        for (const auto& b : res.builtin_inputs)
+            if (b.builtin == spv::BuiltInVertexIndex) return true;
+    return false;
+}
+
+// The header lines writing gl_Layer and gl_ViewportIndex before the geometry stage needs
+// (pre_raster_builtins.h); whether there are any.
+bool declareLayerViewportOutputs(GlslCompiler& compiler, const spirv_cross::ShaderResources& res, ShaderStage stage) {
+    if (stage != ShaderStage::Vertex && stage != ShaderStage::Domain) return false;
+    bool layer = false, viewport = false;
+    for (const auto& b : res.builtin_outputs) {
+        layer |= b.builtin == spv::BuiltInLayer;
+        viewport |= b.builtin == spv::BuiltInViewportIndex;
+    }
+    for (const std::string& line : layerViewportExtensionLines(stage, layer, viewport)) compiler.add_header_line(line);
+    return layer || viewport;
+}
 
 // GL texture units a shader's samplers take (0..31, effect_validation's kMaxUnit).
 constexpr int kGlTextureUnits = 32;
@@ -336,7 +363,8 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
             packed = packConstantBuffers(module, *effect.syntax);
             for (PackedBlock& b : packed)
                 if (!b.glslDeclarable && module.reparse()) flattenConstantBuffer(module, b);
-            if (module.reparse()) runSpirvPasses(module, {integerMatricesAsArrays, fetchOffsetsIntoCoordinates, gatherOffsetsAsFourGathers});
+            if (module.reparse())
+                runSpirvPasses(module, {integerMatricesAsArrays, fetchOffsetsIntoCoordinates, gatherOffsetsAsFourGathers, domainLayerOutputs});
             spirv = module.assemble();
         }
         const auto live = liveUniformBytes(spirv);
@@ -354,6 +382,10 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
         // does; Vulkan's InstanceIndex (glslang's mapping) adds the base instance, which SPIRV-Cross
         // would add back through gl_BaseInstanceARB.
         options.vertex.support_nonzero_base_instance = false;
+        // gl_PerVertex is not redeclared where a vertex or domain shader writes gl_Layer or
+        // gl_ViewportIndex: the extensions make them outputs of their own, but Mesa counts them
+        // members of gl_PerVertex, so a redeclaration without them hides them there.
+        if (declareLayerViewportOutputs(compiler, res, stage)) options.separate_shader_objects = false;
         compiler.set_common_options(options);
 
         // ---- uniform blocks
@@ -582,6 +614,7 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
                     if (!t.array.empty()) out.clipDistances = static_cast<int>(t.array[0]);
                 }
         out.glsl = sampleMaskInFromGl(compiler.compile());
+        if (readsVertexId(res, stage)) out.glsl = withStartVertexDeclared(out.glsl);
         if (stage != ShaderStage::Pixel && stage != ShaderStage::Hull) recordOutputs(compiler, res, semanticOf, out);
         if (stage == ShaderStage::Geometry) {
             int clip = 0, cull = 0;  // per vertex: the inner of the input's two dimensions

@@ -120,6 +120,16 @@ struct GraphicsDevice::Impl {
     BackendObject primitivesWrittenQuery = 0;
     // Every draw goes through here: with stream output, wrapped in its capture.
     void issueDraw(const DrawCall& call);
+    // The bound vertex program's xlate::kStartVertexUniform set to the draw's start vertex (a
+    // vertex program that reads SV_VertexID has one; start_vertex.cpp), per program: its location
+    // (-1: none) and the value it holds.
+    struct StartVertexUniform {
+        int location = -1;
+        int value = 0;
+    };
+    std::map<BackendObject, StartVertexUniform> startVertexUniforms;
+    BackendObject boundVertexProgram = 0;  // applyShaders: the vertex program of boundPipeline
+    void setStartVertex(const DrawCall& call);
     void forgetStreamTarget(const core::ByteBuffer* buffer);
 
     // --- uniform buffers: wanted (set by Apply) and bound

@@ -128,6 +128,7 @@ void GraphicsDevice::Impl::applyShaders() {
         writer = shaders[std::size_t(stage)];
     }
     BackendObject vs = vertexProgramFor(*linked[0]), ps = pixelProgramFor(*linked[1], *pixelWriter);
+    boundVertexProgram = vs;
     BackendObject gs = linked[2] ? linked[2]->program : 0;
     BackendObject hs = linked[kHullStage] ? linked[kHullStage]->program : 0, ds = linked[kDomainStage] ? linked[kDomainStage]->program : 0;
     auto key = std::make_tuple(vs, ps, gs, hs, ds);

@@ -749,6 +749,8 @@ void GraphicsDevice::Impl::deleteProgram(BackendObject& name) {
     dropPipelinesUsing(name);
     dropComputePipelinesUsing(name);
     dropVertexArraysUsing(name);
+    startVertexUniforms.erase(name);
+    if (boundVertexProgram == name) boundVertexProgram = 0;
     for (auto& s : shaders)
         if (s && s->program == name) s = nullptr;
     backend->deleteProgram(name);

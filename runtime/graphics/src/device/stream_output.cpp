@@ -21,6 +21,7 @@ int capturedPrimitiveVertices(const ShaderProgram& last, PrimitiveType drawn) {
 }  // namespace
 
 void GraphicsDevice::Impl::issueDraw(const DrawCall& call) {
+    setStartVertex(call);
     const ShaderProgram* last = shaders[2] ? shaders[2] : shaders[kDomainStage] ? shaders[kDomainStage] : shaders[0];
     const xlate::StreamOutput* so = last && last->shader ? &last->shader->streamOutput : nullptr;
     if (!so || so->empty()) {

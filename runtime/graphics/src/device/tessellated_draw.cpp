@@ -54,7 +54,9 @@ void GraphicsDevice::DrawPatches(int controlPoints, int vertexStart, int patchCo
         d.flush("DrawPatches");
     }
     d.bindVertexBuffer();
-    d.backend->draw(DrawCall{PrimitiveType::TriangleList, controlPoints, int(count), vertexStart});
+    const DrawCall call{PrimitiveType::TriangleList, controlPoints, int(count), vertexStart};
+    d.setStartVertex(call);
+    d.backend->draw(call);
 }
 
 void GraphicsDevice::DrawIndexedPatches(int controlPoints, int baseVertex, int startIndex, int patchCount) {
@@ -79,7 +81,9 @@ void GraphicsDevice::DrawIndexedPatches(int controlPoints, int baseVertex, int s
         d.backend->setIndexBuffer(va.vao, va.elements);
     }
     const bool wide = Indices->IndexElementSize() == IndexElementSize::ThirtyTwoBits;
-    d.backend->draw(DrawCall{PrimitiveType::TriangleList, controlPoints, int(count), startIndex, true, baseVertex, wide ? 4 : 2});
+    const DrawCall call{PrimitiveType::TriangleList, controlPoints, int(count), startIndex, true, baseVertex, wide ? 4 : 2};
+    d.setStartVertex(call);
+    d.backend->draw(call);
 }
 
 }  // namespace fxport

@@ -207,6 +207,12 @@ struct Tessellation {
     int outputControlPoints = 0;         // hull: [outputcontrolpoints(N)]
 };
 
+// The int uniform a vertex shader that reads SV_VertexID subtracts from gl_VertexID (xlate's GLSL
+// declares it only then): D3D's SV_VertexID leaves out the draw's StartVertexLocation (Draw*) and
+// BaseVertexLocation (DrawIndexed*), GL's gl_VertexID counts them in. The runtime sets it to that
+// value before each draw.
+inline constexpr const char* kStartVertexUniform = "fxport_startVertex";
+
 struct CompiledShader {
     ShaderProfile profile;
     std::string entryPoint;

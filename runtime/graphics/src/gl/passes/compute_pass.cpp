@@ -240,6 +240,9 @@ const ComputeAnalysis& ComputePasses::analysisOf(const ShaderProgram& program) {
         if (program.stage == 0) {
             analysis->vertex = detail::parseVertexOutputs(program.shader->glsl);
             analysis->refusal = analysis->vertex.refusal;
+            // Its capture program is linked apart, without the draw's start vertex (xlate::kStartVertexUniform).
+            if (analysis->refusal.empty() && program.shader->glsl.find(xlate::kStartVertexUniform) != std::string::npos)
+                analysis->refusal = "reads SV_VertexID";
         } else {
             analysis->pixel = detail::pixelFunctionFromShader(program.shader->glsl);
             analysis->refusal = analysis->pixel.refusal;
