@@ -22,6 +22,7 @@
 #include "rewrite/switch_labels.h"
 #include "rewrite/local_state_blocks.h"
 #include "rewrite/negated_bool_literals.h"
+#include "rewrite/qualified_casts.h"
 #include "rewrite/keyword_identifiers.h"
 #include "rewrite/matrix_constructor_arguments.h"
 #include "rewrite/matrix_rows_intrinsics.h"
@@ -440,6 +441,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : matrixConstructorArgumentsAsRows(syntax)) edits.push_back(std::move(e));
     for (auto& e : keywordIdentifiersRenamed(syntax)) edits.push_back(std::move(e));
     for (auto& e : negatedBoolLiteralsAsInts(syntax)) edits.push_back(std::move(e));
+    for (auto& e : castQualifiersDropped(syntax)) edits.push_back(std::move(e));
     for (auto& e : localStateBlocksDropped(syntax)) edits.push_back(std::move(e));
     for (auto& e : matrixIntrinsicsByRow(syntax)) edits.push_back(std::move(e));
     for (auto& e : staticObjectAliases(syntax)) edits.push_back(std::move(e));

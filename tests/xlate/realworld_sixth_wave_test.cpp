@@ -1,0 +1,51 @@
+// Real-world shaders, sixth wave (session 24's run 25 over Source SDK 2013 stdshaders, helix-toolkit,
+// Urho3D, OGRE, FleX, d3d12book, AMD ForwardPlus11/TiledLighting11, DigitalRune): valid HLSL that
+// fxc compiles and fxport refused. Each is a small source of our own in the project's shape, with
+// what the construct means asserted on the GLSL.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "fxport/xlate/effect_compiler.h"
+#include "fxport/xlate/effect_file.h"
+
+namespace fs = std::filesystem;
+using namespace fxport::xlate;
+
+namespace {
+
+fs::path writeSource(const std::string& name, const std::string& source) {
+    fs::path dir = fs::temp_directory_path() / ("fxport-sixth-wave-" + std::to_string(::getpid()));
+    fs::create_directories((dir / name).parent_path());
+    std::ofstream(dir / name) << source;
+    return dir / name;
+}
+
+CompiledEffect compileLoose(const std::string& source, const std::string& profile, const std::string& name = "shader.hlsl") {
+    CompileOptions o;
+    o.useCache = false;
+    return compileShaderFiles({{writeSource(name, source).string(), "main", profile}}, o);
+}
+
+}  // namespace
+
+// Source SDK's common_vs_fxc.h: `mul3x3(modelNormal, (const float3x3)cModel[0])` in every vertex
+// shader. The qualifier says nothing about a cast's value: the GLSL is the one of the plain cast.
+TEST(RealworldSixthWave, ConstQualifiedCast) {
+    const std::string body = "float4x3 cModel[2] : register(c58);\n"
+                             "float4 main(float3 n : NORMAL) : POSITION {\n"
+                             "    float3 r = mul(n, (CAST float3x3)cModel[0]) + mul(n, (CAST matrix<float, 3, 3>)cModel[1]);\n"
+                             "    return float4(r, 1);\n"
+                             "}\n";
+    auto with = [&](const std::string& qualifier) {
+        std::string s = body;
+        for (size_t at; (at = s.find("CAST")) != std::string::npos;) s.replace(at, 4, qualifier);
+        return compileLoose(s, "vs_3_0").shaders.at(0).glsl;
+    };
+    const std::string plain = with("");
+    EXPECT_NE(plain.find("mat3"), std::string::npos) << plain;
+    EXPECT_EQ(with("const"), plain);
+}
