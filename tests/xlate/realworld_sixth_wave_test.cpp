@@ -49,3 +49,19 @@ TEST(RealworldSixthWave, ConstQualifiedCast) {
     EXPECT_NE(plain.find("mat3"), std::string::npos) << plain;
     EXPECT_EQ(with("const"), plain);
 }
+
+// helix-toolkit's psCommon.hlsl: `#include "..\Common\Common.hlsl"` inside an include guard, the
+// header included a second time (its body skipped), and such an include under `#if 0`. The taken
+// include finds the file through the backslashes; the skipped ones are not read as string literals.
+TEST(RealworldSixthWave, WindowsHeaderNameInSkippedGroup) {
+    writeSource("Common/Common.hlsl", "#ifndef COMMON_HLSL\n#define COMMON_HLSL\nstatic const float kCommon = 0.375;\n#endif\n");
+    writeSource("PS/psCommon.hlsl", "#ifndef PSCOMMON_HLSL\n#define PSCOMMON_HLSL\n#include \"..\\Common\\Common.hlsl\"\n"
+                                    "float common() { return kCommon; }\n#endif\n");
+    CompiledEffect e = compileLoose("#include \"psCommon.hlsl\"\n"
+                                    "#include \"psCommon.hlsl\"\n"
+                                    "#if 0\n#include \"..\\Missing\\Nothing.hlsl\"\n#endif\n"
+                                    "float4 main() : SV_Target { return common(); }\n",
+                                    "ps_4_0", "PS/main.hlsl");
+    const std::string& glsl = e.shaders.at(0).glsl;
+    EXPECT_NE(glsl.find("0.375"), std::string::npos) << glsl;
+}
