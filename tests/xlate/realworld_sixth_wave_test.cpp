@@ -65,3 +65,23 @@ TEST(RealworldSixthWave, WindowsHeaderNameInSkippedGroup) {
     const std::string& glsl = e.shaders.at(0).glsl;
     EXPECT_NE(glsl.find("0.375"), std::string::npos) << glsl;
 }
+
+// OGRE's Hair.hlsl declares Buffer<> t0..t35 and its textures at t38 and on: the effect's texture
+// objects take more registers than GL has units. A shader's textures still get units in range, each
+// its own (the buffers it reads are texel buffers, bound apart from the units).
+TEST(RealworldSixthWave, TexturesAfterMoreBuffersThanUnits) {
+    std::string source;
+    for (int i = 0; i < 36; ++i) source += "Buffer<float4> B" + std::to_string(i) + " : register(t" + std::to_string(i) + ");\n";
+    source += "Texture2D A : register(t38);\nTexture2DArray C : register(t60);\nSamplerState S : register(s0);\n"
+              "float4 main(float4 p : SV_Position) : SV_Target {\n"
+              "    return A.Sample(S, p.xy) + C.Sample(S, p.xyz) + B35.Load(int(p.x));\n"
+              "}\n";
+    CompiledEffect e = compileLoose(source, "ps_5_0");
+    const auto& samplers = e.shaders.at(0).samplers;
+    ASSERT_EQ(samplers.size(), 2u);
+    for (const SamplerBinding& b : samplers) {
+        EXPECT_GE(b.unit, 0);
+        EXPECT_LT(b.unit, 32);
+    }
+    EXPECT_NE(samplers[0].unit, samplers[1].unit);
+}
