@@ -85,3 +85,21 @@ TEST(RealworldSixthWave, TexturesAfterMoreBuffersThanUnits) {
     }
     EXPECT_NE(samplers[0].unit, samplers[1].unit);
 }
+
+// helix-toolkit's gsLineArrowHead.hlsl: `transform._m00_m11_m22 *= d;`, a compound assignment to
+// matrix elements in several rows (glslang writes such a swizzle only with `=`). The elements read
+// the matrix's own values, then take the result.
+TEST(RealworldSixthWave, CompoundAssignmentToMatrixSwizzle) {
+    CompiledEffect e = compileLoose("float4x4 M;\nfloat d;\n"
+                                    "float4 main() : SV_Target {\n"
+                                    "    float4x4 m = M;\n"
+                                    "    m._m00_m11_m22 *= d;\n"
+                                    "    m._11_42 += float2(2, (d + 1) * 3);\n"
+                                    "    return m[0] + m[1] + m[2] + m[3];\n"
+                                    "}\n",
+                                    "ps_4_0");
+    // The three diagonal elements are read as one vector and scaled together (values: the runtime's
+    // realworld_sixth_wave_render_test).
+    const std::string& glsl = e.shaders.at(0).glsl;
+    EXPECT_NE(glsl.find("vec3("), std::string::npos) << glsl;
+}
