@@ -33,6 +33,25 @@ TEST_P(RealworldSixthWaveRender, CompoundAssignmentToMatrixSwizzle) {
     for (int k = 0; k < 4; ++k) EXPECT_NEAR(px[size_t(k)], expected[k], 1e-5f) << "channel " << k;
 }
 
+// OGRE's HLSL_SM4Support.hlsl on D3D11: `sampler2D` is #defined to a struct of a Texture2D and a
+// SamplerState, and SAMPLER2D(name, reg) declares `static Sampler2D name = {nameTex, nameState}`,
+// sampled through a user tex2D overload. The texel read is the texture's.
+TEST_P(RealworldSixthWaveRender, StaticStructOfObjects) {
+    if (std::string(GetParam()) == "3_0") GTEST_SKIP() << "SM4 objects";
+    auto e = effect("struct Sampler2D { Texture2D t; SamplerState s; };\n"
+                    "float4 tex2D(Sampler2D s, float2 v) { return s.t.Sample(s.s, v); }\n"
+                    "Texture2D Tex0Tex : register(t0);\nSamplerState Tex0State : register(s0);\n"
+                    "static Sampler2D Tex0 = {Tex0Tex, Tex0State};",
+                    "return tex2D(Tex0, float2(0.5, 0.5)) * 0.5 + Tex0.t.Sample(Tex0.s, float2(0.5, 0.5)) * 0.5;");
+    Texture2D texture(device, 1, 1, false, SurfaceFormat::Color);
+    texture.SetData(std::vector<Color>{Color(64, 128, 192, 255)});
+    e->Parameters["Tex0Tex"].SetValue(texture);
+    std::vector<float> px = draw(*e);
+    ASSERT_EQ(px.size(), 4u);
+    const float expected[4] = {64 / 255.0f, 128 / 255.0f, 192 / 255.0f, 1};
+    for (int k = 0; k < 4; ++k) EXPECT_NEAR(px[size_t(k)], expected[k], 1e-3f) << "channel " << k;
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, RealworldSixthWaveRender, ::testing::Values("3_0", "4_0", "5_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 

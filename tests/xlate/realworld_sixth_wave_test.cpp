@@ -103,3 +103,23 @@ TEST(RealworldSixthWave, CompoundAssignmentToMatrixSwizzle) {
     const std::string& glsl = e.shaders.at(0).glsl;
     EXPECT_NE(glsl.find("vec3("), std::string::npos) << glsl;
 }
+
+// OGRE's HLSL_SM4Support.hlsl (OGRE_HLSL >= 4): `#define sampler2D Sampler2D`, a struct of that name
+// holding a Texture2D and a SamplerState, `static Sampler2D Tex0 = {Tex0Tex, Tex0State};` and a
+// user tex2D taking the struct. The struct is the source's type, not the sampler2D keyword in
+// another case; the static variable is its objects: one texture/sampler pair in the GLSL.
+TEST(RealworldSixthWave, StructNamedLikeASamplerType) {
+    CompiledEffect e = compileLoose("#define sampler2D Sampler2D\n"
+                                    "struct Sampler1D { Texture1D t; SamplerState s; };\n"
+                                    "struct Sampler2D { Texture2D t; SamplerState s; };\n"
+                                    "float4 tex1D(Sampler1D s, float v) { return s.t.Sample(s.s, v); }\n"
+                                    "float4 tex2D(Sampler2D s, float2 v) { return s.t.Sample(s.s, v); }\n"
+                                    "Texture2D Tex0Tex : register(t0);\nSamplerState Tex0State : register(s0);\n"
+                                    "static sampler2D Tex0 = {Tex0Tex, Tex0State};\n"
+                                    "float4 main(float2 uv : TEXCOORD0) : SV_Target { return tex2D(Tex0, uv) + Tex0.t.Sample(Tex0.s, uv); }\n",
+                                    "ps_4_0");
+    const auto& samplers = e.shaders.at(0).samplers;
+    ASSERT_EQ(samplers.size(), 1u);
+    EXPECT_EQ(samplers[0].textureParameter, "Tex0Tex");
+    EXPECT_EQ(samplers[0].samplerName, "Tex0State");
+}
