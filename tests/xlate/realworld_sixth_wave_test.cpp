@@ -123,3 +123,30 @@ TEST(RealworldSixthWave, StructNamedLikeASamplerType) {
     EXPECT_EQ(samplers[0].textureParameter, "Tex0Tex");
     EXPECT_EQ(samplers[0].samplerName, "Tex0State");
 }
+
+// OGRE's Cg-era HLSL (Bloom2_ps20.cg, ssao.cg, Grass.cg): `uniform sampler RT : register(s0)` and
+// `uniform sampler2D diffuseMap` as parameters of the entry point, compiled without values as
+// D3DCompile does. Each is a sampler of the shader on the register written (else the next free one).
+TEST(RealworldSixthWave, UniformSamplerParametersOfTheEntry) {
+    CompiledEffect e = compileLoose("float4 main(float2 uv : TEXCOORD0, uniform sampler RT : register(s1),\n"
+                                    "            uniform sampler2D diffuseMap, uniform float weight) : COLOR {\n"
+                                    "    return tex2D(RT, uv) * weight + tex2D(diffuseMap, uv);\n"
+                                    "}\n",
+                                    "ps_2_0");
+    const auto& samplers = e.shaders.at(0).samplers;
+    ASSERT_EQ(samplers.size(), 2u);
+    for (const SamplerBinding& b : samplers) {
+        if (b.samplerName == "RT") EXPECT_EQ(b.samplerRegister, 1);
+        else EXPECT_EQ(b.samplerName, "diffuseMap");
+    }
+    EXPECT_NE(samplers[0].unit, samplers[1].unit);
+    CompiledEffect sm4 = compileLoose("SamplerState S : register(s0);\n"
+                                      "float4 main(float2 uv : TEXCOORD0, uniform Texture2D map : register(t3)) : SV_Target {\n"
+                                      "    return map.Sample(S, uv);\n"
+                                      "}\n",
+                                      "ps_4_0");
+    ASSERT_EQ(sm4.shaders.at(0).samplers.size(), 1u);
+    EXPECT_EQ(sm4.shaders.at(0).samplers[0].textureParameter, "map");
+    EXPECT_EQ(sm4.shaders.at(0).samplers[0].textureRegister, 3);
+}
+

@@ -250,7 +250,8 @@ bool callsEvaluateAttribute(const EffectSyntax& syntax) {
 bool hasGlobal(const EffectSyntax& syntax, const std::string& name) {
     for (const auto& g : syntax.globals)
         if (g.name == name) return true;
-    return false;
+    // A uniform sampler or texture parameter's global (uniform_resource_parameters.h).
+    return syntax.findSampler(name) != nullptr || syntax.findTexture(name) != nullptr;
 }
 
 bool has(const std::vector<std::string>& v, const char* s) {
