@@ -150,3 +150,24 @@ TEST(RealworldSixthWave, UniformSamplerParametersOfTheEntry) {
     EXPECT_EQ(sm4.shaders.at(0).samplers[0].textureRegister, 3);
 }
 
+// Source SDK's portal_ps2x.fxc: `#define USESTATICTEXTURE (((ADDSTATIC == 1) && (HASSTATICTEXTURE ==
+// 1))?(1):(0))` tested by `#if( ... || (USESTATICTEXTURE == 1) )`. The #if takes the branch the
+// ?: selects; in code the macro is the same integer.
+TEST(RealworldSixthWave, ConditionalOperatorInAnIfExpression) {
+    auto glslWith = [](int b) {
+        return compileLoose("#define A 1\n#define B " + std::to_string(b) + "\n"
+                            "#define USE (((A == 1) && (B == 1))?(1):(0))\n"
+                            "#if( (A == 2) || (USE == 1) )\n"
+                            "float4 main() : COLOR { return 0.75 + USE * 0.125; }\n"
+                            "#else\n"
+                            "float4 main() : COLOR { return 0.25 + USE * 0.125; }\n"
+                            "#endif\n",
+                            "ps_2_0")
+            .shaders.at(0)
+            .glsl;
+    };
+    const std::string taken = glslWith(1), skipped = glslWith(0);
+    EXPECT_NE(taken.find("0.875"), std::string::npos) << taken;
+    EXPECT_NE(skipped.find("0.25"), std::string::npos) << skipped;
+    EXPECT_EQ(skipped.find("0.75"), std::string::npos) << skipped;
+}

@@ -11,6 +11,7 @@
 #include <set>
 
 #include "d3d9asm/d3d9_asm.h"
+#include "fx/define_ternaries.h"
 #include "fx/glslang_predefines.h"
 #include "frontend/glslang_process.h"
 #include "fx/macro_bounds.h"
@@ -169,6 +170,10 @@ void prepareSourceText(std::string& text, const std::string& displayPath, std::v
                 if (text[k] != '\r') text[k] = ' ';
         }
         slashIncludeName(text, start, end);
+        if (isDefineLine(text, start, end)) {
+            size_t tail = text.find_last_not_of(" \t\r", end == start ? start : end - 1);
+            if (tail == std::string::npos || tail < start || text[tail] != '\\') integerTernariesAsArithmetic(text, start, end);
+        }
         for (bool define = isDefineLine(text, start, end), continued = define; continued;) {  // and its continuation lines
             dropImpossiblePastes(text, start, end);
             size_t tail = text.find_last_not_of(" \t\r", end == start ? start : end - 1);
