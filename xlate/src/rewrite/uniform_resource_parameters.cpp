@@ -47,6 +47,7 @@ bool declared(const EffectSyntax& syntax, const std::string& name) {
 }  // namespace
 
 std::string uniformResourceParametersDeclared(const std::string& preprocessed, const EffectSyntax& syntax) {
+    if (!syntax.looseShaders) return preprocessed;  // an effect's compile statement must give objects (FX1403 stays)
     std::vector<FxShaderExpr> compiles;
     for (const auto& technique : syntax.techniques)
         for (const auto& pass : technique.passes)
