@@ -171,3 +171,20 @@ TEST(RealworldSixthWave, ConditionalOperatorInAnIfExpression) {
     EXPECT_NE(skipped.find("0.25"), std::string::npos) << skipped;
     EXPECT_EQ(skipped.find("0.75"), std::string::npos) << skipped;
 }
+
+// Source SDK's skin_vs20.fxc / vertexlit_and_unlit_generic_bump_vs20.fxc: `float3 vTangentS : TANGENT;`
+// and `float4 vUserData : TANGENT;` in one VS_INPUT. Both read the one vertex element: one vec4
+// attribute, the float3 member its first three components.
+TEST(RealworldSixthWave, TwoVertexInputsOnOneSemanticOfDifferentWidths) {
+    CompiledEffect e = compileLoose("struct VS_INPUT { float4 p : POSITION; float3 t : TANGENT; float4 u : TANGENT; };\n"
+                                    "float4 main(const VS_INPUT v) : POSITION { return v.p + float4(v.t, 0) * v.u.w; }\n",
+                                    "vs_2_0");
+    const auto& inputs = e.shaders.at(0).inputs;
+    int tangents = 0;
+    for (const auto& in : inputs)
+        if (in.semantic == "TANGENT0") {
+            ++tangents;
+            EXPECT_EQ(in.components, 4);
+        }
+    EXPECT_EQ(tangents, 1);
+}
