@@ -188,3 +188,17 @@ TEST(RealworldSixthWave, TwoVertexInputsOnOneSemanticOfDifferentWidths) {
         }
     EXPECT_EQ(tangents, 1);
 }
+
+// OGRE's Instancing_ps.cg: `float calcDepthShadow(sampler2D shadowMap, float4 uv)` before the
+// static struct `shadowMap` the SM4 support header's SAMPLER2D declares. The parameter is its own.
+TEST(RealworldSixthWave, StaticStructOfObjectsBesideAParameterOfItsName) {
+    CompiledEffect e = compileLoose("struct Sampler2D { Texture2D t; SamplerState s; };\n"
+                                    "float4 tex2D(Sampler2D s, float2 v) { return s.t.Sample(s.s, v); }\n"
+                                    "float shade(Sampler2D shadowMap, float2 uv) { return tex2D(shadowMap, uv).x; }\n"
+                                    "Texture2D shadowMapTex : register(t1);\nSamplerState shadowMapState : register(s1);\n"
+                                    "static Sampler2D shadowMap = {shadowMapTex, shadowMapState};\n"
+                                    "float4 main(float2 uv : TEXCOORD0) : SV_Target { return shade(shadowMap, uv); }\n",
+                                    "ps_4_0");
+    ASSERT_EQ(e.shaders.at(0).samplers.size(), 1u);
+    EXPECT_EQ(e.shaders.at(0).samplers[0].textureParameter, "shadowMapTex");
+}

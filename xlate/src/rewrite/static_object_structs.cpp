@@ -45,6 +45,17 @@ bool staticStructAt(const EffectSyntax& syntax, size_t i, StaticStruct& out) {
     return true;
 }
 
+// A parameter or local of the function named `name` (OGRE's Instancing_ps.cg: `float
+// calcDepthShadow(sampler2D shadowMap, ...)` beside the global `shadowMap`): its uses are not the global's.
+bool declaresOwn(const EffectSyntax& syntax, const FxFunction& f, const std::string& name) {
+    for (const auto& p : f.parameters)
+        if (p.name == name) return true;
+    const auto& t = syntax.tokens;
+    for (size_t k = f.body.begin + 1; k < f.body.end; ++k)
+        if (t[k].is(name) && t[k - 1].isIdent() && !t[k - 1].is("return")) return true;
+    return false;
+}
+
 std::string builder(const StaticStruct& s) {
     const std::string f = "fxport_static_" + s.name;
     std::string r = s.type->name + " " + f + "() { " + s.type->name + " r; ";
@@ -65,7 +76,8 @@ std::vector<TextEdit> staticObjectStructs(const EffectSyntax& syntax) {
         if (depth != 0 || (i > 0 && !t[i - 1].is(";") && !t[i - 1].is("}")) || !staticStructAt(syntax, i, s)) continue;
         std::vector<TextEdit> uses;
         bool written = false;
-        for (const auto& f : syntax.functions)
+        for (const auto& f : syntax.functions) {
+            if (f.body.begin < s.semicolon || declaresOwn(syntax, f, s.name)) continue;  // another `name` there
             for (size_t k = f.body.begin; k < f.body.end && !written; ++k) {
                 if (!t[k].is(s.name) || t[k - 1].is(".")) continue;
                 if (t[k + 1].is(".") && t[k + 2].isIdent()) {
@@ -79,6 +91,7 @@ std::vector<TextEdit> staticObjectStructs(const EffectSyntax& syntax) {
                 written = t[k + 1].is("=") || t[k + 1].is("[");
                 uses.push_back({t[k].offset, t[k].end, "fxport_static_" + s.name + "()"});
             }
+        }
         if (written) continue;
         edits.push_back({t[s.first].offset, t[s.semicolon].end, builder(s)});
         edits.insert(edits.end(), uses.begin(), uses.end());

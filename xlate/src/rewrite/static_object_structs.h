@@ -8,6 +8,7 @@
 //  - any other use becomes a call of a generated function that builds the struct from the objects
 //    (`tex2D(name, uv)` -> `tex2D(fxport_static_name(), uv)`), which glslang inlines;
 //  - the declaration becomes that function.
+// Only in functions after the declaration that have no parameter or local of that name.
 #pragma once
 
 #include <vector>
