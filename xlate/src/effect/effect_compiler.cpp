@@ -41,6 +41,7 @@
 #include "effect/loose_shaders.h"
 #include "fx/preprocess.h"
 #include "rewrite/cbuffer_objects.h"
+#include "rewrite/uniform_resource_parameters.h"
 #include "rewrite/struct_definitions.h"
 #include "rewrite/unused_sampler_arrays.h"
 #include "rewrite/sampler_array_elements.h"
@@ -1419,6 +1420,12 @@ CompiledEffect compileUncached(const std::string& source, const std::string& dis
     // were judged where they were written; the moved text is parsed again.
     if (std::string moved = nonMembersMovedOutOfCbuffers(pre.text); moved != pre.text) {
         pre.text = std::move(moved);
+        syntax = parseEffect(pre.text, pre.map, isLooseShaderCompile(options));
+    }
+    // Uniform resource parameters of entry points without a value become globals the wrapper passes
+    // (uniform_resource_parameters.h); the declared text is parsed again.
+    if (std::string declared = uniformResourceParametersDeclared(pre.text, syntax); declared != pre.text) {
+        pre.text = std::move(declared);
         syntax = parseEffect(pre.text, pre.map, isLooseShaderCompile(options));
     }
     RewrittenEffect rewritten = rewriteEffect(pre.text, syntax, pre.map, effect.diagnostics, options.defaultMatrixMajority);

@@ -250,7 +250,8 @@ bool callsEvaluateAttribute(const EffectSyntax& syntax) {
 bool hasGlobal(const EffectSyntax& syntax, const std::string& name) {
     for (const auto& g : syntax.globals)
         if (g.name == name) return true;
-    return false;
+    // A uniform sampler or texture parameter's global (uniform_resource_parameters.h).
+    return syntax.findSampler(name) != nullptr || syntax.findTexture(name) != nullptr;
 }
 
 bool has(const std::vector<std::string>& v, const char* s) {
@@ -340,6 +341,14 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
     const bool evaluatesItself = perSample && callsEvaluateAttribute(syntax);
     int n = 0;
     std::map<std::string, std::string> inputNames;  // semantic -> wrapper parameter
+    // A vertex element two members read (Source SDK's skin_vs20.fxc: `float3 vTangentS : TANGENT;`
+    // and `float4 vUserData : TANGENT;`) is one input as wide as the widest of them; each member
+    // takes its first components, as D3D9 fetches the element for each.
+    std::map<std::string, int> inputWidths;  // semantic -> components of the widest leaf on it
+    for (const Leaf& leaf : inputs) {
+        int& width = inputWidths[leaf.semanticBase + std::to_string(leaf.semanticIndex)];
+        width = std::max(width, leaf.components);
+    }
     for (const Leaf& leaf : inputs) {
         std::string sem = leaf.semanticBase + std::to_string(leaf.semanticIndex);
         std::string name = "i" + std::to_string(n++);
@@ -357,7 +366,10 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
                 // shaders declare one); the vertex declaration's Position element feeds it.
                 if (!repeat) addParam(vectorType(leaf.scalar, leaf.components) + " " + name + " : POSITION" + std::to_string(leaf.semanticIndex));
             } else {
-                if (!repeat) addParam(vectorType(leaf.scalar, leaf.components) + " " + name + " : " + sem);
+                const int width = inputWidths[sem];
+                if (!repeat) addParam(vectorType(leaf.scalar, width) + " " + name + " : " + sem);
+                fill << assignLeaf(leaf, width > leaf.components ? narrow(name, leaf.components) : name);
+                continue;
             }
             fill << assignLeaf(leaf, name);
             continue;

@@ -865,12 +865,15 @@ private:
 
         if (cur().is("(")) return parseFunction(type, name, nameToken, start);
 
-        // A typedef of that name (`typedef float4 texturE;`) is no texture: fxc takes the typedef.
+        // A typedef of that name (`typedef float4 texturE;`) is no texture: fxc takes the typedef. So
+        // is a struct the source declares (OGRE's `struct Sampler2D { Texture2D t; SamplerState s; }`)
+        // no DX9 sampler.
         const bool typedefName = syntax_.typedefs.count(type) > 0;
+        const bool userType = typedefName || syntax_.findStruct(type) != nullptr;
         if (!typedefName && (isDx9TextureType(type) || (isDx10TextureType(type) && cbuffer.empty()))) {
             return parseTexture(type, name, nameToken, start, isDx9TextureType(type));
         }
-        if (isDx9SamplerType(type) || isDx10SamplerType(type)) return parseSampler(type, name, nameToken, start);
+        if ((isDx9SamplerType(type) && !userType) || isDx10SamplerType(type)) return parseSampler(type, name, nameToken, start);
         if (isStateObjectType(type)) return parseStateObject(type, name, nameToken, start);
         if (isViewObjectType(type) && cbuffer.empty()) return parseViewObject(type, name, start);
         if (isShaderObjectType(type)) return parseShaderVariable(type, name, nameToken, start);

@@ -11,6 +11,7 @@
 #include <set>
 
 #include "d3d9asm/d3d9_asm.h"
+#include "fx/define_ternaries.h"
 #include "fx/glslang_predefines.h"
 #include "frontend/glslang_process.h"
 #include "fx/macro_bounds.h"
@@ -126,6 +127,23 @@ bool isDefineLine(const std::string& text, size_t start, size_t end) {
     return word < end && text.compare(word, 6, "define") == 0;
 }
 
+// A Windows header name (`#include "..\Common\Common.hlsl"`, helix-toolkit): fxc takes its backslashes
+// as separators. glslang does too in a taken #include, but in a skipped group (a guarded header
+// included a second time) it reads the name as a string literal and stops at `\C` ("Invalid escape
+// sequence"). The include search turns backslashes into slashes anyway (RestrictedIncluder), so the
+// name is spelled with slashes before glslang sees it.
+void slashIncludeName(std::string& text, size_t start, size_t end) {
+    size_t hash = text.find_first_not_of(" \t", start);
+    if (hash >= end || text[hash] != '#') return;
+    size_t word = text.find_first_not_of(" \t", hash + 1);
+    if (word >= end || text.compare(word, 7, "include") != 0) return;
+    size_t open = text.find_first_not_of(" \t", word + 7);
+    if (open >= end || (text[open] != '"' && text[open] != '<')) return;
+    size_t close = text.find(text[open] == '"' ? '"' : '>', open + 1);
+    if (close == std::string::npos || close >= end) return;
+    std::replace(text.begin() + static_cast<std::ptrdiff_t>(open), text.begin() + static_cast<std::ptrdiff_t>(close), '\\', '/');
+}
+
 }  // namespace
 
 void prepareSourceText(std::string& text, const std::string& displayPath, std::vector<Diagnostic>& warnings) {
@@ -150,6 +168,11 @@ void prepareSourceText(std::string& text, const std::string& displayPath, std::v
             }
             for (size_t k = start; k < end; ++k)
                 if (text[k] != '\r') text[k] = ' ';
+        }
+        slashIncludeName(text, start, end);
+        if (isDefineLine(text, start, end)) {
+            size_t tail = text.find_last_not_of(" \t\r", end == start ? start : end - 1);
+            if (tail == std::string::npos || tail < start || text[tail] != '\\') integerTernariesAsArithmetic(text, start, end);
         }
         for (bool define = isDefineLine(text, start, end), continued = define; continued;) {  // and its continuation lines
             dropImpossiblePastes(text, start, end);

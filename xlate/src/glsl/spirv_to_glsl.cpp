@@ -526,9 +526,13 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
             // The same texture with a second sampler, or a unit a DX9 sampler of this shader has:
             // the next free run of units. So does a register past the GL units (MiniEngine's
             // register(t64); D3D11 has t0..t127): the D3D slot stays its textureRegister.
+            // Units the effect's other textures take are avoided where the GL units allow; where
+            // they take them all (OGRE's Hair.hlsl declares Buffer<> t0..t35), only this shader's own.
             if (runTaken(u, false) || u + b.elements > kGlTextureUnits) {
                 u = 0;
                 while (runTaken(u, true)) ++u;
+                if (u + b.elements > kGlTextureUnits)
+                    for (u = 0; runTaken(u, false);) ++u;
             }
             for (int k = 0; k < b.elements; ++k) pairUnits.insert(u + k);
             if (u + b.elements > kGlTextureUnits) {

@@ -24,10 +24,12 @@
 #include "rewrite/negated_bool_literals.h"
 #include "rewrite/unroll_limits.h"
 #include "rewrite/buffer_load_locations.h"
+#include "rewrite/qualified_casts.h"
 #include "rewrite/keyword_identifiers.h"
 #include "rewrite/matrix_constructor_arguments.h"
 #include "rewrite/matrix_rows_intrinsics.h"
 #include "rewrite/static_object_aliases.h"
+#include "rewrite/static_object_structs.h"
 #include "rewrite/shader_valued_defaults.h"
 #include "rewrite/fxc_intrinsics.h"
 #include "rewrite/matrix_majority.h"
@@ -96,6 +98,12 @@ bool isUntypedSampler(const std::string& type) { return type == "sampler" || typ
 bool isDx9Sampler(const std::string& type) {
     std::string t = toLower(type);
     return t == "sampler" || t == "sampler1d" || t == "sampler2d" || t == "sampler3d" || t == "samplercube";
+}
+// A type the source declares under such a name (OGRE's HLSL_SM4Support.hlsl: `#define sampler2D
+// Sampler2D` and `struct Sampler2D { Texture2D t; SamplerState s; }`) is that type, not the keyword
+// in another case.
+bool isDx9SamplerIn(const EffectSyntax& syntax, const std::string& type) {
+    return isDx9Sampler(type) && !syntax.findStruct(type) && !syntax.typedefs.count(type);
 }
 
 // Union-find over "sampler slots": global samplers and sampler-typed function parameters. Passing
@@ -244,7 +252,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     auto functionKey = [](const FxFunction& f) { return f.name + "/" + std::to_string(f.parameters.size()); };
     for (const auto& f : syntax.functions)
         for (size_t i = 0; i < f.parameters.size(); ++i)
-            if (isDx9Sampler(f.parameters[i].type)) {
+            if (isDx9SamplerIn(syntax, f.parameters[i].type)) {
                 out.dx9Samplers = true;
                 int id = slots.slot("p:" + functionKey(f) + ":" + std::to_string(i));
                 if (!isUntypedSampler(f.parameters[i].type)) slots.setKind(id, textureKindOfType(f.parameters[i].type), f.parameters[i].typeToken);
@@ -262,7 +270,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     }
     auto slotOfName = [&](const FxFunction& f, const std::string& name) -> std::optional<int> {
         for (size_t i = 0; i < f.parameters.size(); ++i)
-            if (f.parameters[i].name == name && isDx9Sampler(f.parameters[i].type))
+            if (f.parameters[i].name == name && isDx9SamplerIn(syntax, f.parameters[i].type))
                 return slots.slot("p:" + functionKey(f) + ":" + std::to_string(i));
         if (const FxSampler* s = syntax.findSampler(name); s && !s->dx10) return slots.slot("g:" + s->name);
         return std::nullopt;
@@ -319,7 +327,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
             for (const auto& g : syntax.functions) {
                 if (g.name != callee) continue;
                 for (const auto& [index, name] : bareArgs) {
-                    if (index >= g.parameters.size() || !isDx9Sampler(g.parameters[index].type)) continue;
+                    if (index >= g.parameters.size() || !isDx9SamplerIn(syntax, g.parameters[index].type)) continue;
                     auto s = slotOfName(f, name);
                     if (!s) continue;
                     if (!slots.join(*s, slots.slot("p:" + functionKey(g) + ":" + std::to_string(index))))
@@ -387,7 +395,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (const auto& f : syntax.functions)
         for (size_t i = 0; i < f.parameters.size(); ++i) {
             const FxParameter& p = f.parameters[i];
-            if (!isDx9Sampler(p.type) || (!isUntypedSampler(p.type) && textureKindOfType(p.type) != TextureKind::Texture1D)) continue;
+            if (!isDx9SamplerIn(syntax, p.type) || (!isUntypedSampler(p.type) && textureKindOfType(p.type) != TextureKind::Texture1D)) continue;
             auto k = slots.kind(slots.slot("p:" + functionKey(f) + ":" + std::to_string(i))).value_or(TextureKind::Texture2D);
             const Token& t = tokens[p.typeToken];
             edits.push_back({t.offset, t.end, declaredDx9SamplerType(k)});
@@ -444,9 +452,11 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : keywordIdentifiersRenamed(syntax)) edits.push_back(std::move(e));
     for (auto& e : negatedBoolLiteralsAsInts(syntax)) edits.push_back(std::move(e));
     for (auto& e : unrollLimitsAsConditions(syntax)) edits.push_back(std::move(e));
+    for (auto& e : castQualifiersDropped(syntax)) edits.push_back(std::move(e));
     for (auto& e : localStateBlocksDropped(syntax)) edits.push_back(std::move(e));
     for (auto& e : matrixIntrinsicsByRow(syntax)) edits.push_back(std::move(e));
     for (auto& e : staticObjectAliases(syntax)) edits.push_back(std::move(e));
+    for (auto& e : staticObjectStructs(syntax)) edits.push_back(std::move(e));
     for (auto& e : shaderValuedDefaultsDropped(syntax)) edits.push_back(std::move(e));
     for (auto& e : respellOneComponentVectors(syntax)) edits.push_back(std::move(e));
     std::vector<TextEdit> vectorSwizzles;  // ahead of lowerMatrixSwizzles' edits of the same tokens (applyEdits keeps order)

@@ -71,6 +71,20 @@ std::optional<size_t> postfixStart(const std::vector<Token>& tokens, size_t last
     }
 }
 
+// The token that ends the assigned expression starting at `from`: the `;` or `,` at its depth, or
+// the bracket that closes around it.
+size_t assignedExpressionEnd(const std::vector<Token>& tokens, size_t from) {
+    int depth = 0;
+    for (size_t k = from; k < tokens.size(); ++k) {
+        const Token& t = tokens[k];
+        if (t.is("(") || t.is("[") || t.is("{")) ++depth;
+        else if ((t.is(")") || t.is("]") || t.is("}")) && depth-- == 0) return k;
+        else if (depth == 0 && (t.is(";") || t.is(","))) return k;
+        if (t.kind == Token::Kind::End) return k;
+    }
+    return tokens.size() - 1;
+}
+
 }  // namespace
 
 std::vector<TextEdit> lowerMatrixSwizzles(const std::vector<Token>& tokens) {
@@ -89,18 +103,33 @@ std::vector<TextEdit> lowerMatrixSwizzles(const std::vector<Token>& tokens) {
             continue;
         }
         // Written (`m._m00_m11 = v`): a vector constructor is no l-value; glslang handles writes.
-        const Token& next = tokens[i + 2 < tokens.size() ? i + 2 : i + 1];
-        if (next.kind == Token::Kind::Punct && !next.text.empty() && next.text.back() == '=' && next.text != "==" &&
-            next.text != "<=" && next.text != ">=" && next.text != "!=")
-            continue;
+        const size_t after = i + 2 < tokens.size() ? i + 2 : i + 1;
+        const Token& next = tokens[after];
+        const bool written = next.kind == Token::Kind::Punct && !next.text.empty() && next.text.back() == '=' && next.text != "==" &&
+                             next.text != "<=" && next.text != ">=" && next.text != "!=";
         auto start = postfixStart(tokens, i - 1);
         if (!start) continue;  // left to glslang, which reports it
         // The base's text as written (it may span lines: keep it on one line inside the constructor).
         std::string base;
-        for (size_t k = *start; k < i; ++k) base += (k > *start ? " " : "") + tokens[k].text;
+        bool hasCall = false;
+        for (size_t k = *start; k < i; ++k) {
+            base += (k > *start ? " " : "") + tokens[k].text;
+            hasCall = hasCall || tokens[k].is("(");
+        }
         std::string r = "float" + std::to_string(elements->size()) + "(";
         for (size_t k = 0; k < elements->size(); ++k) r += (k ? ", " : "") + base + "." + (*elements)[k].text;
         r += ")";
+        if (written) {
+            // glslang writes only with `=`: `m._m00_m11 *= e` (helix-toolkit's gsLineArrowHead.hlsl)
+            // is `m._m00_m11 = float2(m._m00, m._m11) * (e)`, the base read once more (so only a base
+            // without calls, which could have effects).
+            if (next.text == "=" || hasCall) continue;
+            const std::string op = next.text.substr(0, next.text.size() - 1);
+            const size_t end = assignedExpressionEnd(tokens, after + 1);
+            edits.push_back({next.offset, next.end, "= " + r + " " + op + " ("});
+            edits.push_back({tokens[end].offset, tokens[end].offset, ")"});
+            continue;
+        }
         edits.push_back({tokens[*start].offset, tokens[i + 1].end, r});
     }
     return edits;

@@ -28,7 +28,8 @@ std::optional<std::vector<MatrixSwizzleElement>> parseMatrixSwizzle(const std::s
 //    base expression is untouched, and it stays an l-value);
 //  - otherwise, when read: `B._11_22_33` -> `float3(B._11, B._22, B._33)`, with B the postfix
 //    expression before the dot (identifier, member, index and call chain), repeated per element;
-//    a write (`m._m00_m11 = v`) is left to glslang, which handles it.
+//    a write (`m._m00_m11 = v`) is left to glslang, which handles it; a compound one
+//    (`m._m00_m11 *= e`, which glslang refuses) becomes `m._m00_m11 = float2(m._m00, m._m11) * (e)`.
 std::vector<TextEdit> lowerMatrixSwizzles(const std::vector<Token>& tokens);
 
 }  // namespace fxport::xlate
