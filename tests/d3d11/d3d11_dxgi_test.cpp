@@ -164,7 +164,7 @@ TEST(D3D11Dxgi, RastertekInitializeSequenceRunsAsWritten) {
 
     // Shutdown: windowed first (a full-screen swap chain may not be released), then every object.
     if (m_swapChain) m_swapChain->SetFullscreenState(false, NULL);
-    m_deviceContext->ClearState();
+    m_deviceContext->ClearState();  // not Rastertek's: unbound, the view's last Release says 0
     EXPECT_EQ(m_renderTargetView->Release(), 0u);
     m_deviceContext->Release();
     m_device->Release();

@@ -135,8 +135,7 @@ public:
 
 class IDXGIOutput : public IDXGIObject {
 public:
-    // DeviceName L"\\\\.\\DISPLAY1", not attached to a desktop; DesktopCoordinates 1920 x 1080
-    // (fxport's headless desktop).
+    // DeviceName L"\\\\.\\DISPLAY1", attached to a virtual 1920 x 1080 desktop (headless: no screen).
     virtual HRESULT GetDesc(DXGI_OUTPUT_DESC* pDesc) = 0;
     // DXGI's two calls: pDesc null sets *pNumModes to the count; otherwise up to *pNumModes modes
     // are written (ascending by width, then height), *pNumModes set to how many, and
