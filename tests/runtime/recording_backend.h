@@ -114,6 +114,7 @@ public:
     void adoptD3DConventions() override { calls.push_back("adoptD3DConventions"); }
     int maxTextureSize() override { return 16384; }
     int maxSamples() override { return 8; }
+    AdapterIdentity adapterIdentity() override { return {"recording backend", "fxport", AdapterIdentity::Memory::Unknown, 0}; }
     void finish() override { calls.push_back("finish"); }
     GpuLimits measureLimits(const std::vector<SurfaceFormat>& formats, int size, int repeats) override {
         calls.push_back("measureLimits " + std::to_string(formats.size()) + " formats " + std::to_string(size) + " x" +

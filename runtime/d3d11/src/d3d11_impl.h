@@ -29,6 +29,7 @@
 namespace fxport::d3d11 {
 
 class Device;
+class DxgiDevice;  // dxgi_impl.h
 
 // --- results (errors.cpp)
 HRESULT fail(HRESULT code, const std::string& message);  // records the message, returns code
@@ -402,6 +403,8 @@ public:
     ~Device() override;
     ULONG AddRef() override { return ++references_; }
     ULONG Release() override;
+    // ID3D11Device, and IDXGIDevice(1) through dxgi() (dxgi_device.cpp).
+    HRESULT QueryInterface(REFIID riid, void** ppvObject) override;
 
     HRESULT CreateBuffer(const D3D11_BUFFER_DESC* pDesc, const D3D11_SUBRESOURCE_DATA* pInitialData, ID3D11Buffer** ppBuffer) override;
     HRESULT CreateTexture1D(const D3D11_TEXTURE1D_DESC* pDesc, const D3D11_SUBRESOURCE_DATA* pInitialData,
@@ -450,11 +453,13 @@ public:
 
     GraphicsDevice& core() { return *core_; }
     Context& context() { return *context_; }
+    DxgiDevice& dxgi();  // the device's IDXGIDevice (dxgi_device.cpp)
 
 private:
     std::atomic<ULONG> references_{1};
     std::unique_ptr<GraphicsDevice> core_;
     std::unique_ptr<Context> context_;
+    std::unique_ptr<DxgiDevice> dxgi_;
 };
 
 template <class Interface>

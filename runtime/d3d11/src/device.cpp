@@ -6,6 +6,7 @@
 
 #include "context.h"
 #include "device/vertex_input.h"
+#include "dxgi_impl.h"
 #include "guarded.h"
 
 namespace fxport::d3d11 {
@@ -211,7 +212,10 @@ HRESULT Device::CreateDepthStencilState(const D3D11_DEPTH_STENCIL_DESC* d, ID3D1
 HRESULT D3D11CreateDevice(void* pAdapter, D3D_DRIVER_TYPE DriverType, void* Software, UINT Flags, const D3D_FEATURE_LEVEL* pFeatureLevels,
                           UINT FeatureLevels, UINT SDKVersion, ID3D11Device** ppDevice, D3D_FEATURE_LEVEL* pFeatureLevel,
                           ID3D11DeviceContext** ppImmediateContext) {
-    if (pAdapter || Software) return fail(E_INVALIDARG, "D3D11CreateDevice: pAdapter and Software must be null (fxport has one GL driver)");
+    if (Software) return fail(E_INVALIDARG, "D3D11CreateDevice: Software must be null (fxport has one GL driver)");
+    // An adapter can only be the one IDXGIFactory::EnumAdapters gives (the GL driver's GPU); D3D's rule for it:
+    if (pAdapter && DriverType != D3D_DRIVER_TYPE_UNKNOWN)
+        return fail(E_INVALIDARG, "D3D11CreateDevice: DriverType = " + std::to_string(DriverType) + " with an adapter (it must be UNKNOWN)");
     if (DriverType == D3D_DRIVER_TYPE_NULL || DriverType > D3D_DRIVER_TYPE_WARP)
         return fail(E_INVALIDARG, "D3D11CreateDevice: DriverType = " + std::to_string(DriverType) + " (HARDWARE, WARP, REFERENCE or UNKNOWN)");
     if (SDKVersion != D3D11_SDK_VERSION)

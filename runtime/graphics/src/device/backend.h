@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "fxport/graphics/adapter_identity.h"
 #include "fxport/graphics/blend_state.h"
 #include "fxport/graphics/depth_stencil_state.h"
 #include "fxport/graphics/gpu_limits.h"
@@ -179,6 +180,7 @@ public:
     virtual void adoptD3DConventions() = 0;
     virtual int maxTextureSize() = 0;
     virtual int maxSamples() = 0;  // of a multisampled colour target
+    virtual AdapterIdentity adapterIdentity() = 0;  // the driver's name, vendor and video memory
     virtual void finish() = 0;  // waits until the GPU has done everything submitted
 
     // Buffers. allocateBuffer fixes the size once, from `initial` (null: undefined); `streaming`

@@ -214,6 +214,7 @@ bool GraphicsDevice::supportsRenderTargetFormat(SurfaceFormat format) const {
     return impl_->isSampleable(format) && impl_->backend->isColorRenderable(format);
 }
 int GraphicsDevice::maxSampleCount() const { return impl_->backend->maxSamples(); }
+AdapterIdentity GraphicsDevice::adapterIdentity() const { return impl_->backend->adapterIdentity(); }
 
 GpuObjectCounts GraphicsDevice::liveGpuObjects() const { return impl_->live; }
 

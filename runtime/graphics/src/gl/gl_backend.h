@@ -164,6 +164,7 @@ public:
     }
 
     GpuLimits measureLimits(const std::vector<SurfaceFormat>& formats, int size, int repeats) override;  // gl_limits_probe.cpp
+    AdapterIdentity adapterIdentity() override;  // gl_adapter_identity.cpp
 
 private:
     // GL_TEXTURE_1D or GL_TEXTURE_1D_ARRAY for the 1D textures and views this backend made,

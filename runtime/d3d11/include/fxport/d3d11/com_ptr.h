@@ -5,6 +5,8 @@
 #include <cstddef>
 #include <utility>
 
+#include "fxport/d3d11/com_identity.h"
+
 namespace fxport::d3d11 {
 
 template <class T>
@@ -29,6 +31,11 @@ public:
         if (p_) left = p_->Release();
         p_ = nullptr;
         return left;
+    }
+    // WRL's As: the object's interface U through QueryInterface (`device.As(&dxgiDevice)`).
+    template <class U>
+    auto As(ComPtr<U>* other) const {
+        return p_->QueryInterface(uuidOf<U>(), reinterpret_cast<void**>(other->ReleaseAndGetAddressOf()));
     }
     // Takes over a reference the caller owns (no AddRef).
     void Attach(T* p) { Reset(); p_ = p; }

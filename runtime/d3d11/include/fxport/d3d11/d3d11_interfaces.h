@@ -5,6 +5,7 @@
 // ones do nothing) with GetLastErrorMessage() saying so.
 #pragma once
 
+#include "fxport/d3d11/com_identity.h"
 #include "fxport/d3d11/d3d11_types.h"
 
 namespace fxport::d3d11 {
@@ -15,6 +16,10 @@ class ID3D11ClassInstance;
 
 class IUnknown {
 public:
+    // Another interface of the same object, with a reference (E_NOINTERFACE and *ppvObject null
+    // when it has none). Every object answers IID_IUnknown; the device answers IID_ID3D11Device and
+    // IID_IDXGIDevice (dxgi.h), the DXGI objects their own interfaces.
+    virtual HRESULT QueryInterface(REFIID riid, void** ppvObject);
     virtual ULONG AddRef() = 0;
     virtual ULONG Release() = 0;
 
@@ -296,9 +301,15 @@ public:
     virtual HRESULT GetDeviceRemovedReason() = 0;  // S_OK: a GL device is never removed under the program
 };
 
+// The identifiers QueryInterface and IDXGISwapChain::GetBuffer answer (the DXGI ones are in dxgi.h).
+FXPORT_INTERFACE_ID(IUnknown, 0x00000000, 0x0000, 0x0000, 0xc0, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x46)
+FXPORT_INTERFACE_ID(ID3D11Device, 0xdb6f6ddb, 0xac77, 0x4e88, 0x82, 0x53, 0x81, 0x9d, 0xf9, 0xbb, 0xf1, 0x40)
+FXPORT_INTERFACE_ID(ID3D11Texture2D, 0x6f15aaf2, 0xd208, 0x4e89, 0x9a, 0xb4, 0x48, 0x95, 0x35, 0xd3, 0x4f, 0x9c)
+
 // Makes a device and its immediate context. Headless: the device draws into textures on the
-// platform $FXPORT_PLATFORM names (OSMesa by default, "egl" for a GPU). pAdapter and Software must
-// be null; DriverType HARDWARE, UNKNOWN, WARP or REFERENCE all mean the same GL driver. The
+// platform $FXPORT_PLATFORM names (OSMesa by default, "egl" for a GPU). pAdapter is null or the
+// one adapter IDXGIFactory::EnumAdapters gives (then DriverType must be UNKNOWN, as D3D's rule);
+// Software must be null; DriverType HARDWARE, UNKNOWN, WARP or REFERENCE all mean the same GL driver. The
 // feature level is 11_0 (the first of pFeatureLevels it must be at most).
 HRESULT D3D11CreateDevice(void* pAdapter, D3D_DRIVER_TYPE DriverType, void* Software, UINT Flags,
                           const D3D_FEATURE_LEVEL* pFeatureLevels, UINT FeatureLevels, UINT SDKVersion,

@@ -21,10 +21,12 @@ using UINT8 = std::uint8_t;
 using BYTE = std::uint8_t;
 using LPCSTR = const char*;
 using LPCVOID = const void*;
+using LPVOID = void*;
 
 constexpr HRESULT S_OK = 0;
 constexpr HRESULT S_FALSE = 1;
 constexpr HRESULT E_NOTIMPL = HRESULT(0x80004001u);
+constexpr HRESULT E_NOINTERFACE = HRESULT(0x80004002u);
 constexpr HRESULT E_POINTER = HRESULT(0x80004003u);
 constexpr HRESULT E_FAIL = HRESULT(0x80004005u);
 constexpr HRESULT E_OUTOFMEMORY = HRESULT(0x8007000Eu);

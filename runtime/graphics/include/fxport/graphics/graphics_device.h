@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "fxport/graphics/adapter_identity.h"
 #include "fxport/graphics/blend_state.h"
 #include "fxport/graphics/depth_stencil_state.h"
 #include "fxport/graphics/device_optimizations.h"
@@ -277,6 +278,8 @@ public:
     void Reset(const fxport::PresentationParameters& parameters);
     platform::GraphicsContext& context() { return *context_; }
     std::string rendererName() const;
+    // The GPU's name, vendor and video memory as the driver reports them (DXGI's adapter description).
+    AdapterIdentity adapterIdentity() const;
     int maxTextureSize() const;
     // fxport: what the driver can make, for D3D's CheckFormatSupport / CheckMultisampleQualityLevels:
     // textures of `format` (the compressed ones are GL extensions), render targets of it, and the
