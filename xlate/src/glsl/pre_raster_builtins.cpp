@@ -49,4 +49,14 @@ std::vector<std::string> layerViewportExtensionLines(ShaderStage stage, bool lay
     return lines;
 }
 
+std::string perVertexForLayerOutputs(const std::string& glsl) {
+    const std::size_t begin = glsl.find("out gl_PerVertex");
+    if (begin == std::string::npos || (begin > 0 && glsl[begin - 1] != '\n')) return glsl;
+    const std::size_t close = glsl.find("};", begin);
+    if (close == std::string::npos) return glsl;
+    const std::size_t end = close + 2;
+    return glsl.substr(0, begin) + "#if defined(GL_NV_viewport_array2)\n" + glsl.substr(begin, end - begin) + "\n#endif" +
+           glsl.substr(end);
+}
+
 }  // namespace fxport::xlate

@@ -24,4 +24,11 @@ std::string withStartVertexDeclared(const std::string& glsl);
 // from `stage` (Vertex or Domain), or stop the compile with an #error saying what is missing.
 std::vector<std::string> layerViewportExtensionLines(ShaderStage stage, bool layer, bool viewport);
 
+// The separable `out gl_PerVertex { ... };` redeclaration of a shader writing gl_Layer or
+// gl_ViewportIndex, kept for NVIDIA only: its compiler requires the redeclaration (C7592) and takes
+// the extensions' outputs beside it, while Mesa counts them members of gl_PerVertex, so a
+// redeclaration without them hides them (and Mesa needs none). GL_NV_viewport_array2 tells the two
+// apart in the preprocessor.
+std::string perVertexForLayerOutputs(const std::string& glsl);
+
 }  // namespace fxport::xlate

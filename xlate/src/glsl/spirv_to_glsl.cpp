@@ -382,10 +382,8 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
         // does; Vulkan's InstanceIndex (glslang's mapping) adds the base instance, which SPIRV-Cross
         // would add back through gl_BaseInstanceARB.
         options.vertex.support_nonzero_base_instance = false;
-        // gl_PerVertex is not redeclared where a vertex or domain shader writes gl_Layer or
-        // gl_ViewportIndex: the extensions make them outputs of their own, but Mesa counts them
-        // members of gl_PerVertex, so a redeclaration without them hides them there.
-        if (declareLayerViewportOutputs(compiler, res, stage)) options.separate_shader_objects = false;
+        // A vertex or domain shader writing gl_Layer or gl_ViewportIndex: see perVertexForLayerOutputs.
+        const bool layerOutputs = declareLayerViewportOutputs(compiler, res, stage);
         compiler.set_common_options(options);
 
         // ---- uniform blocks
@@ -619,6 +617,7 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
                 }
         out.glsl = sampleMaskInFromGl(compiler.compile());
         if (readsVertexId(res, stage)) out.glsl = withStartVertexDeclared(out.glsl);
+        if (layerOutputs) out.glsl = perVertexForLayerOutputs(out.glsl);
         if (stage != ShaderStage::Pixel && stage != ShaderStage::Hull) recordOutputs(compiler, res, semanticOf, out);
         if (stage == ShaderStage::Geometry) {
             int clip = 0, cull = 0;  // per vertex: the inner of the input's two dimensions
