@@ -76,51 +76,44 @@ void expectPixels(const std::vector<float>& px, const std::vector<InstanceData>&
         }
 }
 
-TEST(HardwareInstancing, EachInstanceTakesItsOwnRowOfTheInstanceBuffer) {
-    GraphicsDevice& device = testDevice();
+// Three instances of the indexed quad, the per-instance rows `rows` bound from row `firstRow` on
+// and advancing every `frequency` instances; the 4x4 target's pixels.
+std::vector<float> drawThreeInstances(GraphicsDevice& device, const std::vector<InstanceData>& rows, int firstRow, int frequency) {
     auto effect = instancedEffect(device);
     VertexBuffer quad(device, kPositionDeclaration, 4);
     quad.SetData(kQuad);
     IndexBuffer indices(device, IndexElementSize::SixteenBits, 6);
     indices.SetData(kQuadIndices);
-    // Three of the four quadrants: lower left, lower right, upper right.
-    const std::vector<InstanceData> instances = {{Vector4(0, 0, 0, 0), Vector4(1, 0, 0, 1)},
-                                                 {Vector4(1, 0, 0, 0), Vector4(0, 1, 0, 1)},
-                                                 {Vector4(1, 1, 0, 0), Vector4(0, 0, 1, 1)}};
-    VertexBuffer perInstance(device, kInstanceDeclaration, 3);
-    perInstance.SetData(instances);
-    const std::vector<float> px = drawInto4x4(device, [&] {
-        device.SetVertexBuffers(VertexBufferBinding(quad), VertexBufferBinding(perInstance, 0, 1));
+    VertexBuffer perInstance(device, kInstanceDeclaration, int(rows.size()));
+    perInstance.SetData(rows);
+    std::vector<float> px = drawInto4x4(device, [&] {
+        device.SetVertexBuffers(VertexBufferBinding(quad), VertexBufferBinding(perInstance, firstRow, frequency));
         device.Indices = &indices;
         effect->CurrentTechnique->Passes[0].Apply();
         device.DrawInstancedPrimitives(PrimitiveType::TriangleList, 0, 0, 4, 0, 2, 3);
     });
-    expectPixels(px, instances);
-    ASSERT_EQ(device.GetVertexBuffers().size(), 2u);
-    EXPECT_EQ(device.GetVertexBuffers()[1].InstanceFrequency, 1);
+    const std::vector<VertexBufferBinding> bound = device.GetVertexBuffers();
+    EXPECT_EQ(bound.size(), 2u);
+    EXPECT_TRUE(bound.size() == 2 && bound[1].InstanceFrequency == frequency);
+    device.Indices = nullptr;
+    return px;
+}
+
+TEST(HardwareInstancing, EachInstanceTakesItsOwnRowOfTheInstanceBuffer) {
+    // Three of the four quadrants: lower left, lower right, upper right.
+    const std::vector<InstanceData> instances = {{Vector4(0, 0, 0, 0), Vector4(1, 0, 0, 1)},
+                                                 {Vector4(1, 0, 0, 0), Vector4(0, 1, 0, 1)},
+                                                 {Vector4(1, 1, 0, 0), Vector4(0, 0, 1, 1)}};
+    expectPixels(drawThreeInstances(testDevice(), instances, 0, 1), instances);
 }
 
 // InstanceFrequency 2: instances 0 and 1 read row 0, instance 2 row 1 (a VertexOffset of 1 skips
 // the buffer's first row); instance 1 draws over instance 0 in the same place.
 TEST(HardwareInstancing, FrequencyAndVertexOffsetPickTheRows) {
-    GraphicsDevice& device = testDevice();
-    auto effect = instancedEffect(device);
-    VertexBuffer quad(device, kPositionDeclaration, 4);
-    quad.SetData(kQuad);
-    IndexBuffer indices(device, IndexElementSize::SixteenBits, 6);
-    indices.SetData(kQuadIndices);
     const std::vector<InstanceData> rows = {{Vector4(1, 1, 0, 0), Vector4(1, 1, 1, 1)},
                                             {Vector4(0, 1, 0, 0), Vector4(1, 0, 1, 1)},
                                             {Vector4(1, 0, 0, 0), Vector4(0, 1, 1, 1)}};
-    VertexBuffer perInstance(device, kInstanceDeclaration, 3);
-    perInstance.SetData(rows);
-    const std::vector<float> px = drawInto4x4(device, [&] {
-        device.SetVertexBuffers(VertexBufferBinding(quad), VertexBufferBinding(perInstance, 1, 2));
-        device.Indices = &indices;
-        effect->CurrentTechnique->Passes[0].Apply();
-        device.DrawInstancedPrimitives(PrimitiveType::TriangleList, 0, 0, 4, 0, 2, 3);
-    });
-    expectPixels(px, {rows[1], rows[2]});
+    expectPixels(drawThreeInstances(testDevice(), rows, 1, 2), {rows[1], rows[2]});
 }
 
 // Two streams without instancing: positions from one buffer, offsets and colours from another,
