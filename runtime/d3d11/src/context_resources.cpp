@@ -226,6 +226,13 @@ void Context::CopySubresourceRegion(ID3D11Resource* pDst, UINT DstSubresource, U
             core::copyTextureRegion(*td->colour, dl, x, y, *ts->colour, sl, area);
             return succeed();
         }
+        // A whole level read back into a staging level of the same size (screenshots, probes, every
+        // frame in some programs): straight into the staging memory, not through two copies.
+        if (!td->staging.empty() && ts->staging.empty() && !box && x == 0 && y == 0 &&
+            ts->levelWidth(sl) == td->levelWidth(dl) && ts->levelHeight(sl) == td->levelHeight(dl)) {
+            readSubresourceInto(*ts, from, td->staging[std::size_t(to.slice * td->levels + to.level)]);
+            return succeed();
+        }
         // Staging or an array on one side or both: through the CPU (a GPU texture's whole subresource is read),
         // in units of 4x4 blocks for BC formats (whose boxes D3D puts on the block grid).
         const int texel = bytesPerPixel(ts->format), block = isCompressedFormat(ts->format) ? 4 : 1;

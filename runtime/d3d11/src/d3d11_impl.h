@@ -357,6 +357,8 @@ struct Subresource {
 };
 bool splitSubresource(const Texture& t, UINT index, Subresource& out);  // false: past the last
 std::vector<std::uint8_t> readSubresource(Texture& t, Subresource s);
+// The same into `texels` (resized; its memory reused when it has the room).
+void readSubresourceInto(Texture& t, Subresource s, std::vector<std::uint8_t>& texels);
 // `area` (null: the whole level) of subresource `s` from tightly packed texels.
 void writeSubresource(Texture& t, Subresource s, const Rectangle* area, const std::vector<std::uint8_t>& packed);
 // CreateShaderResourceView of a 3D texture (resources_3d.cpp).

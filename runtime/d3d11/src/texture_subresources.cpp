@@ -16,12 +16,20 @@ bool splitSubresource(const Texture& t, UINT index, Subresource& out) {
 }
 
 std::vector<std::uint8_t> readSubresource(Texture& t, Subresource s) {
-    if (!t.staging.empty()) return t.staging[std::size_t(s.slice * t.levels + s.level)];
-    std::vector<std::uint8_t> texels(t.levelBytes(s.level));
+    std::vector<std::uint8_t> texels;
+    readSubresourceInto(t, s, texels);
+    return texels;
+}
+
+void readSubresourceInto(Texture& t, Subresource s, std::vector<std::uint8_t>& texels) {
+    if (!t.staging.empty()) {
+        texels = t.staging[std::size_t(s.slice * t.levels + s.level)];
+        return;
+    }
+    texels.resize(t.levelBytes(s.level));
     if (t.array) t.array->getData(s.level, s.slice, texels.data(), texels.size());
     else if (t.colour) t.colour->getData(s.level, texels.data(), texels.size());
     else throw InvalidOperation("the texture's texels cannot be read (a depth-stencil or cube texture)");
-    return texels;
 }
 
 void writeSubresource(Texture& t, Subresource s, const Rectangle* area, const std::vector<std::uint8_t>& packed) {
