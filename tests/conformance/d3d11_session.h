@@ -65,7 +65,8 @@ private:
     ComPtr<fxport::d3d11::ID3D11Resource> resolved(fxport::d3d11::ID3D11Texture2D* texture);
     ComPtr<fxport::d3d11::ID3D11Resource> stagingFor(fxport::d3d11::ID3D11Resource* resource, const ResourceDesc& desc,
                                                      std::size_t& rowBytes, std::size_t& rows);
-    std::vector<std::uint32_t> readBack(fxport::d3d11::ID3D11Resource* resource, const ResourceDesc& desc);
+    // Level 0 (or the buffer) into `words`, whose memory is reused from one read-back to the next.
+    void readBack(fxport::d3d11::ID3D11Resource* resource, const ResourceDesc& desc, std::vector<std::uint32_t>& words);
     void forgetReadbacks();
 
     // d3d11_session.cpp
@@ -90,6 +91,12 @@ private:
     std::map<std::string, Shader> shaders_;  // by stage, packing and source
     ComPtr<fxport::d3d11::ID3D11Buffer> constants_;
     std::vector<std::uint32_t> constantWords_;  // what constants_ holds
+    struct StagingCopy {
+        ComPtr<fxport::d3d11::ID3D11Resource> resource;  // held: its address keys the map
+        ComPtr<fxport::d3d11::ID3D11Resource> staging;
+        std::size_t rowBytes = 0, rows = 0;
+    };
+    std::map<fxport::d3d11::ID3D11Resource*, StagingCopy> stagingCopies_;  // readBack()'s, per resource
 };
 
 }  // namespace conformance

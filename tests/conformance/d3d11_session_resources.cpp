@@ -321,23 +321,30 @@ D3d11Session::ComPtr<ID3D11Resource> D3d11Session::resolved(ID3D11Texture2D* tex
 }
 
 // Level 0 of a texture or the whole of a buffer as 32-bit words, rows packed (a staging copy, Map;
-// a multisampled texture resolved first).
-std::vector<std::uint32_t> D3d11Session::readBack(ID3D11Resource* resource, const ResourceDesc& r) {
+// a multisampled texture resolved first). A target is read after every draw: its staging copy is
+// kept (one per resource; the session holds the resource, so its address is not reused) and
+// `words` keeps its memory, so that no read-back allocates and zero-fills megabytes again.
+void D3d11Session::readBack(ID3D11Resource* resource, const ResourceDesc& r, std::vector<std::uint32_t>& words) {
     ComPtr<ID3D11Resource> single;
     if (r.dimension == "2dms") {
         single = resolved(static_cast<ID3D11Texture2D*>(resource));
         resource = single.Get();
     }
     std::size_t rowBytes = 0, rows = 0;
-    ComPtr<ID3D11Resource> staging = stagingFor(resource, r, rowBytes, rows);
+    ComPtr<ID3D11Resource> staging;
+    auto kept = stagingCopies_.find(resource);
+    if (kept != stagingCopies_.end()) staging = kept->second.staging, rowBytes = kept->second.rowBytes, rows = kept->second.rows;
+    else {
+        staging = stagingFor(resource, r, rowBytes, rows);
+        if (!single) stagingCopies_[resource] = StagingCopy{ComPtr<ID3D11Resource>(resource), staging, rowBytes, rows};
+    }
     context_->CopySubresourceRegion(staging.Get(), 0, 0, 0, 0, resource, 0, nullptr);
     D3D11_MAPPED_SUBRESOURCE m;
     if (FAILED(context_->Map(staging.Get(), 0, D3D11_MAP_READ, 0, &m))) throw std::runtime_error(GetLastErrorMessage());
-    std::vector<std::uint32_t> words(rowBytes / 4 * rows);
+    words.resize(rowBytes / 4 * rows);
     for (std::size_t y = 0; y < rows; ++y)
         std::memcpy(words.data() + y * rowBytes / 4, static_cast<const char*>(m.pData) + y * m.RowPitch, rowBytes);
     context_->Unmap(staging.Get(), 0);
-    return words;
 }
 
 namespace {
@@ -365,7 +372,7 @@ Texel D3d11Session::readTexel(int slot, int x, int y) {
     }
     Texture& t = it->second;
     if (x < 0 || y < 0 || x >= t.desc.width || y >= t.desc.height) throw std::runtime_error("probe outside the render target");
-    if (t.readback.empty()) t.readback = readBack(t.texture.Get(), t.desc);  // once per target after each draw
+    if (t.readback.empty()) readBack(t.texture.Get(), t.desc, t.readback);  // once per target after each draw
     return texelAt(t.readback, t.desc, t.desc.width, x, y);
 }
 
@@ -376,7 +383,7 @@ Texel D3d11Session::readUav(int slot, int x, int y) {
         throw Unsupported(bad != unmadeUavs_.end() ? bad->second : "probe of an undeclared UAV");
     }
     Uav& u = it->second;
-    if (u.readback.empty()) u.readback = readBack(u.resource.Get(), u.desc);
+    if (u.readback.empty()) readBack(u.resource.Get(), u.desc, u.readback);
     if (!isBuffer(u.desc)) {
         if (x < 0 || y < 0 || x >= u.desc.width || y >= u.desc.height) throw std::runtime_error("probe outside the UAV texture");
         return texelAt(u.readback, u.desc, u.desc.width, x, y);

@@ -85,7 +85,27 @@ void ModelRun::mark(int line) const {
     if (::write(options_.markerFd, text.data(), text.size()) < 0) return;
 }
 
+// Every section's compile check before the first [test] block makes a GL session: each compile
+// runs in a forked worker (fxport's containment), and a fork of a process holding a GL context
+// costs several times more (page tables, copy-on-write faults). Same order, same crash markers.
+void ModelRun::compileSectionsAhead() {
+    RequireDesc require = require_;
+    bool inRange = inRange_;
+    for (const Block& block : file_.blocks) {
+        if (block.kind == BlockKind::Require) {
+            require = parseRequire(block);
+            inRange = model_ >= require.minModel && model_ <= require.maxModel;
+        }
+        if (!inRange || block.kind != BlockKind::Shader || block.hexBytecode || !stageRunsAt(block.stage, model_) ||
+            crashedBefore(block.line))
+            continue;
+        mark(block.line);
+        compiledAhead_[&block] = compiler_.compile(block, model_, require);
+    }
+}
+
 ModelResult ModelRun::run() {
+    compileSectionsAhead();
     for (const Block& block : file_.blocks) {
         if (block.kind == BlockKind::Require) { onRequire(block); continue; }
         if (!inRange_) continue;
@@ -130,8 +150,9 @@ void ModelRun::onShader(const Block& block) {
         shaders_[block.stage].diagnostic = "the compile crashed the process";
         return;
     }
-    mark(block.line);
-    CompileOutcome outcome = compiler_.compile(block, model_, require_);
+    auto ahead = compiledAhead_.find(&block);
+    if (ahead == compiledAhead_.end()) mark(block.line);
+    CompileOutcome outcome = ahead != compiledAhead_.end() ? ahead->second : compiler_.compile(block, model_, require_);
     shaders_[block.stage].compiled = outcome.compiled;
     shaders_[block.stage].diagnostic = outcome.diagnostic;
     countCompile(block, kind, expect.expectsReject(), outcome);

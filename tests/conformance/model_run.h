@@ -51,6 +51,7 @@ private:
     };
     enum class DrawState { None, Drawn, Failed, Skipped };
 
+    void compileSectionsAhead();
     void onRequire(const Block& block);
     void onShader(const Block& block);
     void onResource(const Block& block);
@@ -87,6 +88,7 @@ private:
     bool inRange_ = true;
     std::string missingCapability_;  // a [require] capability this runner does not claim
     std::map<Stage, ShaderSlot> shaders_;
+    std::map<const Block*, CompileOutcome> compiledAhead_;  // compileSectionsAhead()'s outcomes
     bool testsRun_ = true;           // the last section should compile here (vkd3d's hlsl_hrs)
     std::string testsSkipReason_;    // set when tests run but cannot execute (reason of the skip)
 
