@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 
+#include "opaque_draw_test.h"
 #include "runtime_test_support.h"
 
 namespace fxport {
@@ -70,17 +71,8 @@ template <class F> V4 interpolate(F f, double u, double v) {
     return out;
 }
 
-class AsmShaders : public ::testing::Test {
+class AsmShaders : public test::OpaqueDrawTest {
 protected:
-    void SetUp() override {
-        device.BlendState = BlendState::Opaque;
-        device.DepthStencilState = DepthStencilState::None;
-        device.RasterizerState = RasterizerState::CullNone;
-    }
-    void TearDown() override {
-        device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
-        for (int i = 0; i < kMaxTextureSlots; ++i) device.Textures[i] = nullptr;
-    }
     template <class Expected> void expectPixels(RenderTarget2D& target, Expected expected, double tolerance) {
         std::vector<float> px = readFloats(target);
         int mismatches = 0;
@@ -95,7 +87,6 @@ protected:
             }
         EXPECT_EQ(mismatches, 0);
     }
-    GraphicsDevice& device = testDevice();
 };
 
 // ps_1_1: tex, texcoord, def, _bx2/_bias/1-/- sources, _x2/_d2/_x4/_sat results, masks, selectors,

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <random>
 
+#include "opaque_draw_test.h"
 #include "runtime_test_support.h"
 
 namespace fxport {
@@ -15,17 +16,8 @@ using test::readFloats;
 using test::runtimeFixture;
 using test::testDevice;
 
-class Conventions : public ::testing::Test {
+class Conventions : public test::OpaqueDrawTest {
 protected:
-    void SetUp() override {
-        device.BlendState = BlendState::Opaque;
-        device.DepthStencilState = DepthStencilState::None;
-        device.RasterizerState = RasterizerState::CullNone;
-    }
-    void TearDown() override {
-        device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
-        for (int i = 0; i < kMaxTextureSlots; ++i) device.Textures[i] = nullptr;
-    }
     Effect& effect() {
         static Effect e(testDevice(), runtimeFixture("Conventions.fx"));
         return e;
@@ -34,7 +26,6 @@ protected:
         effect().CurrentTechnique = effect().Techniques[technique];
         effect().CurrentTechnique->Passes[0].Apply();
     }
-    GraphicsDevice& device = testDevice();
 };
 
 // Row "NDC z in [0,1]; texture v=0 is the top row" + row "D3D9 pixel centres": a full-screen quad

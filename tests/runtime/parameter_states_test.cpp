@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "opaque_draw_test.h"
 #include "runtime_test_support.h"
 
 namespace fxport {
@@ -15,16 +16,9 @@ namespace {
 using test::drawQuad;
 using test::testDevice;
 
-class ParameterStates : public ::testing::Test {
+class ParameterStates : public test::OpaqueDrawTest {
 protected:
-    void SetUp() override {
-        device.BlendState = BlendState::Opaque;
-        device.DepthStencilState = DepthStencilState::None;
-        device.RasterizerState = RasterizerState::CullNone;
-    }
-    void TearDown() override { device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr)); }
     void apply() { effect.CurrentTechnique->Passes[0].Apply(); }
-    GraphicsDevice& device = testDevice();
     Effect effect{device, test::runtimeFixture("ParameterStates.fx")};
 };
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "fxport/xlate/effect_compiler.h"
+#include "opaque_draw_test.h"
 #include "runtime_test_support.h"
 
 namespace fxport {
@@ -18,20 +19,14 @@ using test::drawQuad;
 using test::testDevice;
 
 // The fixture effect with its two texture parameters set to 1 x 1 textures of the given colours.
-class PassSamplerStages : public ::testing::Test {
+class PassSamplerStages : public test::OpaqueDrawTest {
 protected:
-    void SetUp() override {
-        device.BlendState = BlendState::Opaque;
-        device.DepthStencilState = DepthStencilState::None;
-        device.RasterizerState = RasterizerState::CullNone;
-    }
     void setTextures(Color imageTexel, Color otherTexel) {
         image.SetData(std::vector<Color>{imageTexel});
         other.SetData(std::vector<Color>{otherTexel});
         effect.Parameters["Image"].SetValue(image);
         effect.Parameters["Other"].SetValue(other);
     }
-    GraphicsDevice& device = testDevice();
     Effect effect{device, test::runtimeFixture("PassSamplerStages.fx")};
     Texture2D image{device, 1, 1, false, SurfaceFormat::Color};
     Texture2D other{device, 1, 1, false, SurfaceFormat::Color};

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "opaque_draw_test.h"
 #include "runtime_test_support.h"
 
 namespace fxport {
@@ -18,20 +19,13 @@ using test::drawQuad;
 using test::readFloats;
 using test::testDevice;
 
-class PassStateEmulation : public ::testing::Test {
+class PassStateEmulation : public test::OpaqueDrawTest {
 protected:
-    void SetUp() override {
-        device.BlendState = BlendState::Opaque;
-        device.DepthStencilState = DepthStencilState::None;
-        device.RasterizerState = RasterizerState::CullNone;
-    }
-    void TearDown() override { device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr)); }
     void draw(const char* technique) {
         effect.CurrentTechnique = effect.Techniques[technique];
         effect.CurrentTechnique->Passes[0].Apply();
         drawQuad(device);
     }
-    GraphicsDevice& device = testDevice();
     Effect effect{device, test::runtimeFixture("PassStateEmulation.fx")};
 };
 

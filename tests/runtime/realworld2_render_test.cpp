@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 
+#include "opaque_draw_test.h"
 #include "runtime_test_support.h"
 
 namespace fxport {
@@ -18,22 +19,8 @@ using test::testDevice;
 
 std::string fixture(const std::string& name) { return std::string(FXPORT_REALWORLD2_FIXTURES) + "/" + name; }
 
-class RealWorld2Render : public ::testing::Test {
+class RealWorld2Render : public test::OpaqueDrawTest {
 protected:
-    void SetUp() override {
-        device.BlendState = BlendState::Opaque;
-        device.DepthStencilState = DepthStencilState::None;
-        device.RasterizerState = RasterizerState::CullNone;
-    }
-    void TearDown() override {
-        device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
-        for (int i = 0; i < kMaxTextureSlots; ++i) device.Textures[i] = nullptr;
-    }
-    EffectOptions noCache() {
-        EffectOptions o;
-        o.useCache = false;
-        return o;
-    }
     // Draws the current technique's first pass over a W×H float target and reads it back. A pass
     // without vertex shader (SpriteBatch-style) keeps the one of Conventions.fx, bound first.
     std::vector<float> draw(Effect& effect, int w, int h) {
@@ -52,7 +39,6 @@ protected:
     void expectEvery(const std::vector<float>& px, const std::array<double, 4>& expected, const char* what) {
         for (size_t i = 0; i < px.size(); ++i) EXPECT_NEAR(px[i], expected[i % 4], 1e-5) << what << " value " << i;
     }
-    GraphicsDevice& device = testDevice();
 };
 
 // A shader writing global uniforms works on its own copy, taken afresh at every run.

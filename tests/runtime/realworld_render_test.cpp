@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 
+#include "opaque_draw_test.h"
 #include "runtime_test_support.h"
 
 namespace fxport {
@@ -17,23 +18,7 @@ using test::testDevice;
 
 std::string wild(const std::string& name) { return std::string(FXPORT_WILD_FIXTURES) + "/" + name; }
 
-class RealWorldRender : public ::testing::Test {
-protected:
-    void SetUp() override {
-        device.BlendState = BlendState::Opaque;
-        device.DepthStencilState = DepthStencilState::None;
-        device.RasterizerState = RasterizerState::CullNone;
-    }
-    void TearDown() override {
-        device.SetRenderTarget(static_cast<RenderTarget2D*>(nullptr));
-        for (int i = 0; i < kMaxTextureSlots; ++i) device.Textures[i] = nullptr;
-    }
-    EffectOptions noCache() {
-        EffectOptions o;
-        o.useCache = false;
-        return o;
-    }
-    GraphicsDevice& device = testDevice();
+class RealWorldRender : public test::OpaqueDrawTest {
 };
 
 // Item 2: Texture2D/TextureCube named in SamplerState blocks, then used as objects.
