@@ -51,6 +51,10 @@ public:
         calls.push_back("setScissor " + std::to_string(r.Width) + "x" + std::to_string(r.Height));
         scissor = r;
     }
+    void setMoreViewports(const std::vector<Viewport>& more, ViewportShift) override {
+        calls.push_back("setMoreViewports " + std::to_string(more.size()));
+    }
+    void setMoreScissors(const std::vector<Rectangle>& more) override { calls.push_back("setMoreScissors " + std::to_string(more.size())); }
     void setSrgbWrite(bool enabled) override { calls.push_back(std::string("setSrgbWrite ") + (enabled ? "on" : "off")); }
     void setClipPlanes(int count) override { calls.push_back("setClipPlanes " + std::to_string(count)); }
     void setPointSize(float size, bool fromShader) override {

@@ -138,8 +138,15 @@ public:
     virtual void setBlend(const BlendState& state, const BlendState* had) = 0;
     virtual void setDepthStencil(const DepthStencilState& state, const DepthStencilState* had) = 0;
     virtual void setRasterizer(const RasterizerState& state, const RasterizerState* had) = 0;
+    // Viewport 0, and (unshifted) every other index of the viewport array too, so that an index
+    // nothing set draws through viewport 0.
     virtual void setViewport(const Viewport& viewport, ViewportShift shift) = 0;
-    virtual void setScissor(const Rectangle& rectangle) = 0;  // the rectangle; RasterizerState switches the test
+    // D3D10/11's viewports 1..more.size() (a pre-rasteriser stage's SV_ViewportArrayIndex picks
+    // one), each with its own depth range; sent after setViewport.
+    virtual void setMoreViewports(const std::vector<Viewport>& more, ViewportShift shift) = 0;
+    // The rectangle of every viewport; RasterizerState switches the test.
+    virtual void setScissor(const Rectangle& rectangle) = 0;
+    virtual void setMoreScissors(const std::vector<Rectangle>& more) = 0;  // of viewports 1.., after setScissor
     virtual void setSrgbWrite(bool enabled) = 0;              // encode into sRGB-encoded targets (D3D9 SRGBWriteEnable)
     // Clip planes 0..count-1 on, the others off: the SV_ClipDistance values the last stage before
     // the rasteriser writes (D3D clips by every one a shader writes; GL only by those enabled).

@@ -74,6 +74,10 @@ struct GraphicsDevice::Impl {
     // A depth/stencil buffer of its own that replaces the first target's (front_end_core.h: D3D11's
     // depth-stencil views are apart from render targets). Null for XNA, whose targets own theirs.
     DepthStorage* depthOverride = nullptr;
+    // D3D10/11's viewports and scissor rectangles 1.. (setMoreViewports); index 0 is the device's
+    // Viewport and ScissorRectangle. Empty for XNA.
+    std::vector<fxport::Viewport> moreViewports;
+    std::vector<Rectangle> moreScissors;
     void generateMipsOfUnboundTargets(const std::vector<RenderTargetBinding>& previous);
 
     // --- shaders set by EffectPass::Apply (a stage left null keeps what was there)

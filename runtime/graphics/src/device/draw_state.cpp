@@ -53,7 +53,7 @@ void GraphicsDevice::Impl::flush(const char* what) {
     shadow.setDepthStencil(testOff ? fxport::DepthStencilState::None : wanted);
     shadow.setRasterizer(device.RasterizerState);
     applyViewport(device.Viewport);
-    shadow.setScissor(device.ScissorRectangle);
+    shadow.setScissor(device.ScissorRectangle, moreScissors);
     applyShaders();
     applyTextures();
     if (applyStorage(shaders.data(), shaders.size(), what)) storageDirty = true;  // the draw writes: barrier before what follows
@@ -253,7 +253,7 @@ void GraphicsDevice::Impl::applyViewport(const fxport::Viewport& w) {
     // 1/256 pixel down the rows (docs/DESIGN.md).
     const ShaderProgram* vertex = shaders[0];
     const bool d3d9 = vertex && vertex->shader && vertex->shader->needsD3D9PixelOffset;
-    shadow.setViewport(w, d3d9 ? ViewportShift{0.5f, 0.5f - 1.0f / 256.0f} : ViewportShift{});
+    shadow.setViewport(w, d3d9 ? ViewportShift{0.5f, 0.5f - 1.0f / 256.0f} : ViewportShift{}, moreViewports);
 }
 
 BackendObject GraphicsDevice::Impl::samplerFor(const SamplerState& s) {

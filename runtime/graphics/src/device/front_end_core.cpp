@@ -290,6 +290,15 @@ void setTargets(GraphicsDevice& device, const std::vector<RenderTargetBinding>& 
     }
 }
 
+void setMoreViewports(GraphicsDevice& device, const std::vector<Viewport>& viewports, const std::vector<Rectangle>& scissors) {
+    constexpr std::size_t kMost = 15;  // D3D11's 16 viewports (GL 4.1 has at least 16) less index 0
+    if (viewports.size() > kMost || scissors.size() > kMost)
+        throw ArgumentError(std::to_string(std::max(viewports.size(), scissors.size()) + 1) + " viewports or scissor rectangles; at most 16");
+    GraphicsDevice::Impl& d = deviceImpl(device);
+    d.moreViewports = viewports;
+    d.moreScissors = scissors;
+}
+
 // --- draws
 
 namespace {

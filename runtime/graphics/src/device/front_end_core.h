@@ -154,6 +154,12 @@ void setStreamOutputTargets(GraphicsDevice& device, const std::array<ByteBuffer*
 // buffers are not used. Resets the device's Viewport to the whole target (as SetRenderTargets).
 void setTargets(GraphicsDevice& device, const std::vector<RenderTargetBinding>& colour, DepthBuffer* depth);
 
+// D3D10/11's viewports and scissor rectangles 1.. (RSSetViewports / RSSetScissorRects with more
+// than one; a pre-rasteriser stage's SV_ViewportArrayIndex picks one); the device's Viewport and
+// ScissorRectangle are index 0. Kept until set again (empty: index 0 only, as for XNA). ArgumentError
+// beyond D3D11's 16 in all.
+void setMoreViewports(GraphicsDevice& device, const std::vector<Viewport>& viewports, const std::vector<Rectangle>& scissors);
+
 // One attribute of a vertex stream: the vertex-shader input it feeds, matched by semantic whatever
 // the name (D3D11 input layouts name any: "CASCADE0", "CLIP_DISTANCE0"), and how its bytes read.
 struct StreamElement {

@@ -30,7 +30,9 @@ public:
     void setDepthStencil(const DepthStencilState& state, const DepthStencilState* had) override;
     void setRasterizer(const RasterizerState& state, const RasterizerState* had) override;
     void setViewport(const Viewport& viewport, ViewportShift shift) override;
+    void setMoreViewports(const std::vector<Viewport>& more, ViewportShift shift) override;
     void setScissor(const Rectangle& rectangle) override;
+    void setMoreScissors(const std::vector<Rectangle>& more) override;
     void setSrgbWrite(bool enabled) override;
     void setClipPlanes(int count) override;
     void setPointSize(float size, bool fromShader) override;
