@@ -147,6 +147,7 @@ public:
         : Object(device), line(viewed), desc(d) { line->AddRef(); }
     ~ShaderResourceView() override {
         typed.reset();  // before the buffer it reads may go
+        formatView.reset();
         arrayRange.reset();
         lineRange.reset();
         resource()->Release();
@@ -159,6 +160,7 @@ public:
     }
     // What a shader samples through the view; null for a view of a buffer.
     fxport::Texture* sampled() const {
+        if (formatView) return formatView.get();
         if (arrayRange) return arrayRange.get();
         if (line) return lineRange ? lineRange.get() : line->texels.get();
         return texture ? texture->sampled() : volume ? volume->texels.get() : nullptr;
@@ -170,6 +172,7 @@ public:
     D3D11_SHADER_RESOURCE_VIEW_DESC desc;
     BufferRange range;                         // buffer views
     std::unique_ptr<core::TexelBuffer> typed;  // a typed buffer view (Buffer<T>)
+    std::unique_ptr<fxport::Texture2D> formatView;       // a typeless colour texture read in another format of its family
     std::unique_ptr<fxport::Texture2DArray> arrayRange;  // a view of part of an array texture's levels or slices
     std::unique_ptr<fxport::Texture1D> lineRange;        // a 1D texture seen as another dimension or in part
 };
@@ -333,8 +336,15 @@ struct DepthFamily {
 };
 const DepthFamily* depthFamilyOf(DXGI_FORMAT textureFormat);  // null: not one of them
 const DepthFamily* depthFamilyOfView(DXGI_FORMAT depthView);   // the family whose DSV format this is (D32_FLOAT ...)
-// A view's Format for texture `t`: its own (or UNKNOWN), or the typeless depth family's view of
-// that kind; E_NOTIMPL/E_INVALIDARG naming `desc`.Format otherwise.
+// The format a typeless colour texture is stored in (R8G8B8A8_TYPELESS: R8G8B8A8_UNORM's; BC1-7,
+// B8G8R8A8/X8); false for any other format.
+bool typelessColourStorage(DXGI_FORMAT typeless, SurfaceFormat& out);
+// What a view of `viewFormat` reads `t` as: the view's format for a typeless colour texture, the
+// texture's own otherwise.
+SurfaceFormat viewSurface(DXGI_FORMAT viewFormat, const Texture& t);
+// A view's Format for texture `t`: its own (or UNKNOWN), a typed member of a typeless colour
+// texture's family, or the typeless depth family's view of that kind; E_NOTIMPL/E_INVALIDARG
+// naming `desc`.Format otherwise.
 HRESULT checkViewFormat(const char* call, const char* desc, DXGI_FORMAT viewFormat, const Texture& t, bool depthView);
 // D3D11_DEPTH_STENCIL_VIEW_DESC.Flags for a view of `viewFormat`: read-only depth, and read-only
 // stencil where the format has stencil; E_INVALIDARG naming the field (`at` ends with "DESC.").

@@ -184,13 +184,13 @@ HRESULT Device::CreateTexture2D(const D3D11_TEXTURE2D_DESC* pDesc, const D3D11_S
     const bool sampledDepth = family && (d.BindFlags & D3D11_BIND_SHADER_RESOURCE);
     if (sampledDepth && depthTarget && d.MipLevels != 1)
         return fail(E_NOTIMPL, at + "MipLevels = " + std::to_string(d.MipLevels) + " for a depth texture: fxport makes 1 level");
-    if (family && family->typeless == DXGI_FORMAT_R24G8_TYPELESS && pInitialData)
-        return fail(E_NOTIMPL, at + "Format = DXGI_FORMAT_R24G8_TYPELESS with pInitialData: fxport does not upload packed depth-stencil texels");
+    if (family && hasStencil(family->depth) && pInitialData)
+        return fail(E_NOTIMPL, at + "Format = " + formatName(d.Format) + " with pInitialData: fxport does not upload packed depth-stencil texels");
     if (HRESULT hr = checkUsage(call, "D3D11_TEXTURE2D_DESC", d.Usage, d.BindFlags, d.CPUAccessFlags, pInitialData && pInitialData->pSysMem); FAILED(hr))
         return hr;
     SurfaceFormat surface = family ? family->sampled : SurfaceFormat::Color;
     DepthFormat depth = family ? family->depth : DepthFormat::None;
-    if (!family && (depthTarget ? !depthFormat(d.Format, depth) : !textureFormat(d.Format, surface)))
+    if (!family && (depthTarget ? !depthFormat(d.Format, depth) : !textureFormat(d.Format, surface) && !typelessColourStorage(d.Format, surface)))
         return fail(d.Format == DXGI_FORMAT_UNKNOWN ? E_INVALIDARG : E_NOTIMPL, at + "Format = " + formatName(d.Format) + " (" + std::to_string(d.Format) +
                                                              "): not a " + (depthTarget ? "depth" : "texture") +
                                                              " format fxport supports (docs/API.md lists them)");

@@ -49,8 +49,8 @@ HRESULT arrayFormat(const D3D11_TEXTURE2D_DESC& d, bool hasData, SurfaceFormat& 
                                       ": a depth texture a shader samples is made typeless (R32_TYPELESS, R24G8_TYPELESS, R16_TYPELESS)");
     if (depthTarget && (d.MiscFlags & D3D11_RESOURCE_MISC_GENERATE_MIPS))
         return fail(E_INVALIDARG, at + "MiscFlags = D3D11_RESOURCE_MISC_GENERATE_MIPS with BIND_DEPTH_STENCIL (mips are generated for render targets)");
-    if (family && family->typeless == DXGI_FORMAT_R24G8_TYPELESS && hasData)
-        return fail(E_NOTIMPL, at + "Format = DXGI_FORMAT_R24G8_TYPELESS with pInitialData: fxport does not upload packed depth-stencil texels");
+    if (family && hasStencil(family->depth) && hasData)
+        return fail(E_NOTIMPL, at + "Format = " + formatName(d.Format) + " with pInitialData: fxport does not upload packed depth-stencil texels");
     if (depthTarget && hasData) return fail(E_INVALIDARG, at + "BindFlags has DEPTH_STENCIL and pInitialData is given");
     if (family) {
         format = family->sampled;

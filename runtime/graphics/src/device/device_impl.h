@@ -288,7 +288,7 @@ struct GraphicsDevice::Impl {
     // Texture creation first requires the format (ArgumentError naming it when the driver lacks it).
     void requireSampleable(SurfaceFormat format);
     bool isSampleable(SurfaceFormat format);  // asked of the backend once per format
-    std::array<std::int8_t, 64> sampleableFormats{};  // per SurfaceFormat: 0 not asked, 1 yes, -1 no
+    std::array<std::int8_t, kSurfaceFormatCount> sampleableFormats{};  // per SurfaceFormat: 0 not asked, 1 yes, -1 no
     BackendObject createTexture(bool cube, SurfaceFormat format, int levels, int width, int height);
     BackendObject createVolumeTexture(SurfaceFormat format, int levels, int width, int height, int depth);
     BackendObject createArrayTexture(SurfaceFormat format, int levels, int width, int height, int layers);

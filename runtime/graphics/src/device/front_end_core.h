@@ -90,7 +90,7 @@ public:
     // `samples` > 0: multisampled, for multisampled colour targets of that count (D3D11's
     // SampleDesc.Count); ArgumentError beyond the driver's count.
     DepthBuffer(GraphicsDevice& device, int width, int height, DepthFormat format, int samples = 0);
-    // The depth buffer that is level 0 of `texture` (SurfaceFormat Depth32, Depth24Stencil8 or
+    // The depth buffer that is level 0 of `texture` (SurfaceFormat Depth32, Depth24Stencil8, Depth32Stencil8 or
     // Depth16): what draws write through it, shaders sample from the texture (a D3D11 shadow map's
     // DSV and SRV). Made at once; `texture` must outlive it.
     DepthBuffer(GraphicsDevice& device, Texture2D& texture);

@@ -393,7 +393,7 @@ void GraphicsDevice::Impl::bindTargets() {
         for (const RenderTargetBinding& b : bindings)
             colour.push_back({b.RenderTarget->backendObject(), b.RenderTarget->kind() == Texture::Kind::TextureCube ? int(b.CubeMapFace) : -1});
         std::string problem;
-        fbo = backend->createFramebuffer(colour, depth, depthFormat == DepthFormat::Depth24Stencil8, depthIsTexture, problem);
+        fbo = backend->createFramebuffer(colour, depth, hasStencil(depthFormat), depthIsTexture, problem);
         if (fbo == 0)
             throw InvalidOperation("GraphicsDevice.SetRenderTargets: the driver rejects this combination of targets (" +
                                    std::string(surfaceFormatName(first->Format())) + ", " + problem + ")");

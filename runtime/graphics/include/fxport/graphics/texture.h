@@ -62,6 +62,10 @@ public:
     // `layers` > 1: that many layers from `layer`, a layered depth buffer's texture (draws reach
     // the layer SV_RenderTargetArrayIndex names); read and write texels through `array` then.
     Texture2D(Texture2DArray& array, int layer, int level, int layers = 1);
+    // fxport: every level of `source` read as `format`, sharing its texels (a D3D11 shader-resource
+    // view of a typeless texture in another format of its family: sRGB of a linear BC1, SNORM of
+    // BC4). `format` has `source`'s bytes per texel or block; `source` must outlive it.
+    Texture2D(Texture2D& source, SurfaceFormat format);
     ~Texture2D() override;
 
     int Width() const { return width_; }
