@@ -189,6 +189,9 @@ public:
         textureSizes[t] = textureSizes[source];
         return t;
     }
+    BackendObject createCubeArrayView(BackendObject source, SurfaceFormat format, int firstLevel, int levels, int firstLayer, int layers) override {
+        return createTextureView(source, format, true, firstLevel, levels, firstLayer, layers);
+    }
     BackendObject createMultisampleTexture(SurfaceFormat, int samples, int width, int height, int& given) override {
         given = samples;
         const BackendObject t = make("createMultisampleTexture " + std::to_string(width) + "x" + std::to_string(height) + " samples " +

@@ -47,7 +47,8 @@ const char* dimensionOf(fxport::Texture::Kind kind) {
     case fxport::Texture::Kind::Texture1D:
     case fxport::Texture::Kind::Texture1DArray: return "1D";
     case fxport::Texture::Kind::Texture3D: return "3D";
-    case fxport::Texture::Kind::TextureCube: return "cube";
+    case fxport::Texture::Kind::TextureCube:
+    case fxport::Texture::Kind::TextureCubeArray: return "cube";
     default: return "2D";
     }
 }

@@ -246,6 +246,9 @@ public:
     // both; it is deleted with deleteTexture (the source's texels stay). 0 when the API cannot make views.
     virtual BackendObject createTextureView(BackendObject source, SurfaceFormat format, bool array, int firstLevel, int levels, int firstLayer,
                                             int layers) = 0;
+    // The same over a 2D array's layers read as cubes (a cube map array: `layers` a multiple of 6,
+    // square levels; D3D11's TEXTURECUBEARRAY view). 0 when the API cannot make it.
+    virtual BackendObject createCubeArrayView(BackendObject source, SurfaceFormat format, int firstLevel, int levels, int firstLayer, int layers) = 0;
     // Multisampled 2D textures (D3D10+'s SampleDesc.Count > 1), fixed sample positions: render
     // targets a shader reads sample by sample. `given` is the count the driver made (it may round
     // up). copySamples copies level 0 between a multisampled and a single-sample texture of one

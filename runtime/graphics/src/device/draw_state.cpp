@@ -176,7 +176,8 @@ const char* shapeName(xlate::TextureKind kind) {
 // kinds do not mark arrays).
 xlate::TextureKind shapeOf(Texture::Kind kind) {
     switch (kind) {
-    case Texture::Kind::TextureCube: return xlate::TextureKind::TextureCube;
+    case Texture::Kind::TextureCube:
+    case Texture::Kind::TextureCubeArray: return xlate::TextureKind::TextureCube;
     case Texture::Kind::Texture3D: return xlate::TextureKind::Texture3D;
     case Texture::Kind::Texture1D:
     case Texture::Kind::Texture1DArray: return xlate::TextureKind::Texture1D;

@@ -103,6 +103,7 @@ public:
     void writeVolume(BackendObject texture, SurfaceFormat format, int level, int width, int height, int depth, const void* data) override;
     BackendObject createArrayTexture(SurfaceFormat format, int levels, int width, int height, int layers) override;
     BackendObject createLineTexture(SurfaceFormat format, int levels, int width, int layers, bool array) override;
+    BackendObject createCubeArrayView(BackendObject source, SurfaceFormat format, int firstLevel, int levels, int firstLayer, int layers) override;
     BackendObject createTextureView(BackendObject source, SurfaceFormat format, bool array, int firstLevel, int levels, int firstLayer,
                                     int layers) override;
     BackendObject createMultisampleTexture(SurfaceFormat format, int samples, int width, int height, int& given) override;

@@ -175,6 +175,20 @@ BackendObject GlBackend::createTextureView(BackendObject source, SurfaceFormat f
     return name;
 }
 
+// GL lets a 2D array texture be viewed as a cube map array (ARB_texture_view's compatible targets).
+BackendObject GlBackend::createCubeArrayView(BackendObject source, SurfaceFormat format, int firstLevel, int levels, int firstLayer, int layers) {
+    GLuint name = 0;
+    glGenTextures(1, &name);
+    glTextureView(name, GL_TEXTURE_CUBE_MAP_ARRAY, source, detail::glFormat(format).internalFormat, GLuint(firstLevel), GLuint(levels),
+                  GLuint(firstLayer), GLuint(layers));
+    if (!glIsTexture(name)) {
+        glDeleteTextures(1, &name);
+        return 0;
+    }
+    applyD3D9Swizzle(name, format);
+    return name;
+}
+
 BackendObject GlBackend::createMultisampleTexture(SurfaceFormat format, int samples, int width, int height, int& given) {
     GLuint name = 0;
     glCreateTextures(GL_TEXTURE_2D_MULTISAMPLE, 1, &name);

@@ -19,7 +19,7 @@ enum class CubeMapFace : std::uint8_t { PositiveX, NegativeX, PositiveY, Negativ
 
 class Texture : public GraphicsResource {
 public:
-    enum class Kind : std::uint8_t { Texture2D, TextureCube, Texture3D, Texture2DArray, Texture1D, Texture1DArray };
+    enum class Kind : std::uint8_t { Texture2D, TextureCube, Texture3D, Texture2DArray, Texture1D, Texture1DArray, TextureCubeArray };
 
     SurfaceFormat Format() const { return format_; }
     int LevelCount() const { return levels_; }
