@@ -197,18 +197,24 @@ public:
     std::unique_ptr<core::TexelBuffer> typed;  // a typed buffer view (RWBuffer<T>)
     std::unique_ptr<fxport::Texture1D> image;  // a 1D texture's view (resources_1d.cpp)
 };
+// A render-target view of a 2D texture (texture set) or of rows of a 1D texture (line set, and
+// `slice` the target over them).
 class RenderTargetView final : public Object<ID3D11RenderTargetView> {
 public:
     RenderTargetView(Device* device, Texture* viewed, const D3D11_RENDER_TARGET_VIEW_DESC& d)
         : Object(device), texture(viewed), desc(d) { texture->AddRef(); }
+    RenderTargetView(Device* device, LineTexture* viewed, const D3D11_RENDER_TARGET_VIEW_DESC& d)
+        : Object(device), line(viewed), desc(d) { line->AddRef(); }
     ~RenderTargetView() override {
         slice.reset();  // before the array it draws into may go
-        texture->Release();
+        resource()->Release();
     }
-    void GetResource(ID3D11Resource** r) override { texture->AddRef(); *r = texture; }
+    ID3D11Resource* resource() const { return line ? static_cast<ID3D11Resource*>(line) : texture; }
+    void GetResource(ID3D11Resource** r) override { resource()->AddRef(); *r = resource(); }
     void GetDesc(D3D11_RENDER_TARGET_VIEW_DESC* pDesc) override { if (pDesc) *pDesc = desc; }
     RenderTarget2D& target() const { return slice ? *slice : static_cast<RenderTarget2D&>(*texture->colour); }
-    Texture* texture;
+    Texture* texture = nullptr;
+    LineTexture* line = nullptr;
     D3D11_RENDER_TARGET_VIEW_DESC desc;
     std::unique_ptr<RenderTarget2D> slice;  // a view of slices of an array texture (layered for several)
 };
@@ -216,14 +222,18 @@ class DepthStencilView final : public Object<ID3D11DepthStencilView> {
 public:
     DepthStencilView(Device* device, Texture* viewed, const D3D11_DEPTH_STENCIL_VIEW_DESC& d)
         : Object(device), texture(viewed), desc(d) { texture->AddRef(); }
+    DepthStencilView(Device* device, LineTexture* viewed, const D3D11_DEPTH_STENCIL_VIEW_DESC& d)
+        : Object(device), line(viewed), desc(d) { line->AddRef(); }
     ~DepthStencilView() override {
         slice.reset();  // before the texture it is made over
         sliceTexture.reset();
-        texture->Release();
+        resource()->Release();
     }
-    void GetResource(ID3D11Resource** r) override { texture->AddRef(); *r = texture; }
+    ID3D11Resource* resource() const { return line ? static_cast<ID3D11Resource*>(line) : texture; }
+    void GetResource(ID3D11Resource** r) override { resource()->AddRef(); *r = resource(); }
     void GetDesc(D3D11_DEPTH_STENCIL_VIEW_DESC* pDesc) override { if (pDesc) *pDesc = desc; }
-    Texture* texture;
+    Texture* texture = nullptr;
+    LineTexture* line = nullptr;  // a 1D view: slice is the depth buffer over sliceTexture's rows
     D3D11_DEPTH_STENCIL_VIEW_DESC desc;
     std::unique_ptr<fxport::Texture2D> sliceTexture;  // slices of an array texture (one: a 2D texture)
     std::unique_ptr<core::DepthBuffer> slice;          // the depth buffer over it
@@ -376,6 +386,9 @@ HRESULT volumeShaderResourceView(Device* device, Volume* v, const D3D11_SHADER_R
 // UpdateSubresource and copies of them (D3D's checks of the call done by the caller).
 HRESULT lineShaderResourceView(Device* device, LineTexture* t, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc, ID3D11ShaderResourceView** pp);
 HRESULT lineUnorderedAccessView(Device* device, LineTexture* t, const D3D11_UNORDERED_ACCESS_VIEW_DESC* pDesc, ID3D11UnorderedAccessView** pp);
+// Render-target and depth-stencil views of rows of a 1D texture (line_targets.cpp).
+HRESULT lineRenderTargetView(Device* device, LineTexture* t, const D3D11_RENDER_TARGET_VIEW_DESC* pDesc, ID3D11RenderTargetView** pp);
+HRESULT lineDepthStencilView(Device* device, LineTexture* t, const D3D11_DEPTH_STENCIL_VIEW_DESC* pDesc, ID3D11DepthStencilView** pp);
 std::vector<std::uint8_t> readLine(LineTexture& t, int subresource);
 void writeLine(LineTexture& t, int subresource, int x, const std::uint8_t* texels, int count);
 HRESULT mapLine(LineTexture& t, UINT subresource, D3D11_MAPPED_SUBRESOURCE& out);

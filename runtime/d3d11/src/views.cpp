@@ -199,6 +199,7 @@ HRESULT Device::CreateShaderResourceView(ID3D11Resource* pResource, const D3D11_
 HRESULT Device::CreateRenderTargetView(ID3D11Resource* pResource, const D3D11_RENDER_TARGET_VIEW_DESC* pDesc,
                                        ID3D11RenderTargetView** ppRTView) {
     const char* call = "CreateRenderTargetView";
+    if (auto* l = dynamic_cast<LineTexture*>(pResource); l && &l->device() == this) return lineRenderTargetView(this, l, pDesc, ppRTView);
     HRESULT hr;
     Texture* t = textureOf(this, pResource, call, hr);
     if (!t) return hr;
@@ -232,6 +233,7 @@ HRESULT Device::CreateRenderTargetView(ID3D11Resource* pResource, const D3D11_RE
 HRESULT Device::CreateDepthStencilView(ID3D11Resource* pResource, const D3D11_DEPTH_STENCIL_VIEW_DESC* pDesc,
                                        ID3D11DepthStencilView** ppDepthStencilView) {
     const char* call = "CreateDepthStencilView";
+    if (auto* l = dynamic_cast<LineTexture*>(pResource); l && &l->device() == this) return lineDepthStencilView(this, l, pDesc, ppDepthStencilView);
     HRESULT hr;
     Texture* t = textureOf(this, pResource, call, hr);
     if (!t) return hr;

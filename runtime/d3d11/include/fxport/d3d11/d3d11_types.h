@@ -271,10 +271,12 @@ struct D3D11_BUFFER_UAV { UINT FirstElement = 0; UINT NumElements = 0; UINT Flag
 struct D3D11_TEX2D_UAV { UINT MipSlice = 0; };
 struct D3D11_TEX1D_UAV { UINT MipSlice = 0; };
 struct D3D11_TEX1D_ARRAY_UAV { UINT MipSlice = 0; UINT FirstArraySlice = 0; UINT ArraySize = 0; };
-enum D3D11_RTV_DIMENSION : UINT { D3D11_RTV_DIMENSION_UNKNOWN = 0, D3D11_RTV_DIMENSION_TEXTURE2D = 4, D3D11_RTV_DIMENSION_TEXTURE2DARRAY = 5,
+enum D3D11_RTV_DIMENSION : UINT { D3D11_RTV_DIMENSION_UNKNOWN = 0, D3D11_RTV_DIMENSION_TEXTURE1D = 2, D3D11_RTV_DIMENSION_TEXTURE1DARRAY = 3,
+                                  D3D11_RTV_DIMENSION_TEXTURE2D = 4, D3D11_RTV_DIMENSION_TEXTURE2DARRAY = 5,
                                   D3D11_RTV_DIMENSION_TEXTURE2DMS = 6 };
 enum D3D11_DSV_FLAG : UINT { D3D11_DSV_READ_ONLY_DEPTH = 0x1, D3D11_DSV_READ_ONLY_STENCIL = 0x2 };
-enum D3D11_DSV_DIMENSION : UINT { D3D11_DSV_DIMENSION_UNKNOWN = 0, D3D11_DSV_DIMENSION_TEXTURE2D = 3, D3D11_DSV_DIMENSION_TEXTURE2DARRAY = 4,
+enum D3D11_DSV_DIMENSION : UINT { D3D11_DSV_DIMENSION_UNKNOWN = 0, D3D11_DSV_DIMENSION_TEXTURE1D = 1, D3D11_DSV_DIMENSION_TEXTURE1DARRAY = 2,
+                                  D3D11_DSV_DIMENSION_TEXTURE2D = 3, D3D11_DSV_DIMENSION_TEXTURE2DARRAY = 4,
                                   D3D11_DSV_DIMENSION_TEXTURE2DMS = 5 };
 struct D3D11_TEX1D_SRV { UINT MostDetailedMip = 0; UINT MipLevels = 0; };
 struct D3D11_TEX1D_ARRAY_SRV { UINT MostDetailedMip = 0; UINT MipLevels = 0; UINT FirstArraySlice = 0; UINT ArraySize = 0; };
@@ -285,9 +287,13 @@ struct D3D11_TEX3D_SRV { UINT MostDetailedMip = 0; UINT MipLevels = 0; };
 struct D3D11_TEX2DMS_SRV { UINT UnusedField_NothingToDefine = 0; };
 struct D3D11_TEX2DMS_DSV { UINT UnusedField_NothingToDefine = 0; };
 struct D3D11_TEX2DMS_RTV { UINT UnusedField_NothingToDefine = 0; };
+struct D3D11_TEX1D_RTV { UINT MipSlice = 0; };
+struct D3D11_TEX1D_ARRAY_RTV { UINT MipSlice = 0; UINT FirstArraySlice = 0; UINT ArraySize = 0; };
 struct D3D11_TEX2D_RTV { UINT MipSlice = 0; };
 struct D3D11_TEX2D_ARRAY_SRV { UINT MostDetailedMip = 0; UINT MipLevels = 0; UINT FirstArraySlice = 0; UINT ArraySize = 0; };
 struct D3D11_TEX2D_ARRAY_RTV { UINT MipSlice = 0; UINT FirstArraySlice = 0; UINT ArraySize = 0; };
+struct D3D11_TEX1D_DSV { UINT MipSlice = 0; };
+struct D3D11_TEX1D_ARRAY_DSV { UINT MipSlice = 0; UINT FirstArraySlice = 0; UINT ArraySize = 0; };
 struct D3D11_TEX2D_DSV { UINT MipSlice = 0; };
 struct D3D11_TEX2D_ARRAY_DSV { UINT MipSlice = 0; UINT FirstArraySlice = 0; UINT ArraySize = 0; };
 // D3D's view descriptions hold one member per dimension in a union; here they are separate
@@ -317,6 +323,8 @@ struct D3D11_UNORDERED_ACCESS_VIEW_DESC {
 struct D3D11_RENDER_TARGET_VIEW_DESC {
     DXGI_FORMAT Format = DXGI_FORMAT_UNKNOWN;
     D3D11_RTV_DIMENSION ViewDimension = D3D11_RTV_DIMENSION_UNKNOWN;
+    D3D11_TEX1D_RTV Texture1D;
+    D3D11_TEX1D_ARRAY_RTV Texture1DArray;
     D3D11_TEX2D_RTV Texture2D;
     D3D11_TEX2D_ARRAY_RTV Texture2DArray;
     D3D11_TEX2DMS_RTV Texture2DMS;
@@ -325,6 +333,8 @@ struct D3D11_DEPTH_STENCIL_VIEW_DESC {
     DXGI_FORMAT Format = DXGI_FORMAT_UNKNOWN;
     D3D11_DSV_DIMENSION ViewDimension = D3D11_DSV_DIMENSION_UNKNOWN;
     UINT Flags = 0;  // D3D11_DSV_FLAG
+    D3D11_TEX1D_DSV Texture1D;
+    D3D11_TEX1D_ARRAY_DSV Texture1DArray;
     D3D11_TEX2D_DSV Texture2D;
     D3D11_TEX2D_ARRAY_DSV Texture2DArray;
     D3D11_TEX2DMS_DSV Texture2DMS;
