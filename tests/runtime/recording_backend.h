@@ -300,7 +300,7 @@ public:
         if (c.controlPoints > 0) line += " patches of " + std::to_string(c.controlPoints);
         calls.push_back(line);
     }
-    void beginStreamOutput(const std::array<StreamOutputBuffer, 4>& buffers, int primitiveVertices, BackendObject query) override {
+    void beginStreamOutput(const std::array<StreamOutputBuffer, 4>& buffers, int primitiveVertices, BackendObject query, BackendObject) override {
         std::string line = "beginStreamOutput " + std::to_string(primitiveVertices) + " query " + std::to_string(query);
         for (const auto& b : buffers)
             line += " " + std::to_string(b.buffer) + "@" + std::to_string(b.offset) + "+" + std::to_string(b.bytes);

@@ -418,6 +418,7 @@ public:
     std::unique_ptr<core::GpuQuery> gpu;
     bool begun = false;  // between Begin and End (occlusion and disjoint queries)
     bool ended = false;  // End has been called since the last Begin
+    core::StreamOutputCounts atBegin, atEnd;  // a stream-output query's readings of the core's counts
 };
 
 class Device final : public ID3D11Device {

@@ -115,7 +115,8 @@ enum class QueryKind {
     VerticesSubmitted, PrimitivesSubmitted, VertexShaderInvocations, GeometryShaderInvocations, GeometryShaderPrimitives,
     ClippingInputPrimitives, ClippingOutputPrimitives, FragmentShaderInvocations, TessControlPatches, TessEvaluationInvocations,
     ComputeShaderInvocations,
-    PrimitivesWritten,  // by stream output (between beginStreamOutput and endStreamOutput)
+    PrimitivesWritten,    // by stream output (between beginStreamOutput and endStreamOutput)
+    PrimitivesGenerated,  // for stream output, whether or not they fitted (D3D's PrimitivesStorageNeeded)
 };
 inline constexpr int kPipelineStatistics = 11;  // QueryKind::VerticesSubmitted + 0 .. 10
 inline QueryKind pipelineStatistic(int i) { return QueryKind(int(QueryKind::VerticesSubmitted) + i); }
@@ -304,14 +305,16 @@ public:
 
     // Stream output: the draws between beginStreamOutput and endStreamOutput write the captured
     // outputs of primitives of `primitiveVertices` vertices (1 points, 2 lines, 3 triangles) to
-    // `buffers` (one per slot, bytes 0: none) and count the primitives written into `query` (a
-    // PrimitivesWritten query). Rasterizer discard drops every primitive after it (D3D11's
+    // `buffers` (one per slot, bytes 0: none), count the primitives written into `written` (a
+    // PrimitivesWritten query) and those generated, written or not, into `generated` (a
+    // PrimitivesGenerated query). Rasterizer discard drops every primitive after it (D3D11's
     // D3D11_SO_NO_RASTERIZED_STREAM).
     struct StreamOutputBuffer {
         BackendObject buffer = 0;
         std::size_t offset = 0, bytes = 0;
     };
-    virtual void beginStreamOutput(const std::array<StreamOutputBuffer, 4>& buffers, int primitiveVertices, BackendObject query) = 0;
+    virtual void beginStreamOutput(const std::array<StreamOutputBuffer, 4>& buffers, int primitiveVertices, BackendObject written,
+                                   BackendObject generated) = 0;
     virtual void endStreamOutput() = 0;
     virtual void setRasterizerDiscard(bool discard) = 0;
 

@@ -122,6 +122,8 @@ struct GraphicsDevice::Impl {
     };
     std::array<StreamTarget, xlate::kStreamOutputSlots> streamTargets{};
     BackendObject primitivesWrittenQuery = 0;
+    BackendObject primitivesGeneratedQuery = 0;
+    std::uint64_t streamOutputWritten = 0, streamOutputNeeded = 0;  // since the device was made (core::streamOutputCounts)
     // Every draw goes through here: with stream output, wrapped in its capture.
     void issueDraw(const DrawCall& call);
     // The bound vertex program's xlate::kStartVertexUniform set to the draw's start vertex (a

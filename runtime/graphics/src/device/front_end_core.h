@@ -149,6 +149,14 @@ void setStorageBuffer(GraphicsDevice& device, bool unorderedAccess, int slot, co
 // kStreamOutputAppend from its streamOutputFilled(). Each draw moves the write position on.
 inline constexpr std::size_t kStreamOutputAppend = ~std::size_t(0);
 void setStreamOutputTargets(GraphicsDevice& device, const std::array<ByteBuffer*, 4>& buffers, const std::array<std::size_t, 4>& offsets);
+// The primitives stream output has written, and those it was given (written or not: a buffer
+// without room drops them), since the device was made: D3D11's SO_STATISTICS queries are the
+// difference between two readings. Stream 0 only (the one fxport captures); exact, since each
+// streaming draw waits for its counts.
+struct StreamOutputCounts {
+    std::uint64_t written = 0, needed = 0;
+};
+StreamOutputCounts streamOutputCounts(GraphicsDevice& device);
 
 // Binds colour targets and a depth buffer of their size (null: none); the targets' own depth
 // buffers are not used. Resets the device's Viewport to the whole target (as SetRenderTargets).

@@ -125,7 +125,8 @@ public:
     void invalidateFramebuffer(int colourTargets, bool depth, bool stencil) override;
 
     BackendObject createProgram(int stage, const std::string& source, const std::vector<std::string>& captured, std::string& log) override;
-    void beginStreamOutput(const std::array<StreamOutputBuffer, 4>& buffers, int primitiveVertices, BackendObject query) override;
+    void beginStreamOutput(const std::array<StreamOutputBuffer, 4>& buffers, int primitiveVertices, BackendObject written,
+                           BackendObject generated) override;
     void endStreamOutput() override;
     void setRasterizerDiscard(bool discard) override {
         if (discard) glEnable(GL_RASTERIZER_DISCARD);

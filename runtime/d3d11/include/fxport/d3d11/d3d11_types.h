@@ -530,11 +530,20 @@ constexpr UINT D3D11CalcSubresource(UINT MipSlice, UINT ArraySlice, UINT MipLeve
 
 // --- queries (ID3D11Query): event, occlusion (and its predicate, ID3D11Predicate for
 // SetPredication), timestamp, timestamp-disjoint, and pipeline statistics where the GL driver has
-// GL_ARB_pipeline_statistics_query. The stream-output queries are not there (CreateQuery: E_NOTIMPL).
+// GL_ARB_pipeline_statistics_query, and the stream-output statistics and overflow predicates of
+// stream 0 (the _STREAM1-3 ones: E_NOTIMPL, fxport captures stream 0 only).
 enum D3D11_QUERY : UINT {
     D3D11_QUERY_EVENT = 0, D3D11_QUERY_OCCLUSION = 1, D3D11_QUERY_TIMESTAMP = 2, D3D11_QUERY_TIMESTAMP_DISJOINT = 3,
     D3D11_QUERY_PIPELINE_STATISTICS = 4, D3D11_QUERY_OCCLUSION_PREDICATE = 5, D3D11_QUERY_SO_STATISTICS = 6,
-    D3D11_QUERY_SO_OVERFLOW_PREDICATE = 7,
+    D3D11_QUERY_SO_OVERFLOW_PREDICATE = 7, D3D11_QUERY_SO_STATISTICS_STREAM0 = 8, D3D11_QUERY_SO_OVERFLOW_PREDICATE_STREAM0 = 9,
+    D3D11_QUERY_SO_STATISTICS_STREAM1 = 10, D3D11_QUERY_SO_OVERFLOW_PREDICATE_STREAM1 = 11, D3D11_QUERY_SO_STATISTICS_STREAM2 = 12,
+    D3D11_QUERY_SO_OVERFLOW_PREDICATE_STREAM2 = 13, D3D11_QUERY_SO_STATISTICS_STREAM3 = 14, D3D11_QUERY_SO_OVERFLOW_PREDICATE_STREAM3 = 15,
+};
+// GetData of an SO_STATISTICS query: the primitives stream output wrote between Begin and End, and
+// those it would have written had the buffers had room (more: the overflow predicate is TRUE).
+struct D3D11_QUERY_DATA_SO_STATISTICS {
+    UINT64 NumPrimitivesWritten = 0;
+    UINT64 PrimitivesStorageNeeded = 0;
 };
 constexpr UINT D3D11_QUERY_MISC_PREDICATEHINT = 0x1;
 constexpr UINT D3D11_ASYNC_GETDATA_DONOTFLUSH = 0x1;
