@@ -16,6 +16,7 @@ int depthBytes(DepthFormat depth) {
     case DepthFormat::Depth24: return 4;
     case DepthFormat::Depth24Stencil8: return 4;
     case DepthFormat::Depth32F: return 4;
+    case DepthFormat::Depth32FStencil8: return 8;
     }
     return 0;
 }

@@ -282,5 +282,67 @@ TEST(D3D11DepthTexture, RefusedDescriptionsNameTheField) {
     EXPECT_NE(lastError().find("Format = DXGI_FORMAT_R32_TYPELESS"), std::string::npos) << lastError();
 }
 
+TEST(D3D11DepthTexture, R32G8X24TypelessShadowMapIsWrittenAndSampled) {
+    // GL_DEPTH32F_STENCIL8: the float depth is kept exactly, as D32_FLOAT's.
+    expectPlane(shadowRoundTrip(DXGI_FORMAT_R32G8X24_TYPELESS, DXGI_FORMAT_D32_FLOAT_S8X24_UINT, DXGI_FORMAT_R32_FLOAT_X8X24_TYPELESS), 1e-6f);
+}
+
+// A D32_FLOAT_S8X24_UINT depth-stencil buffer has stencil: a first draw over the left half writes
+// 1 (REPLACE), a full-target draw then passes only where the stencil EQUALs 1.
+TEST(D3D11DepthTexture, D32FloatS8X24HasStencil) {
+    Device d;
+    ComPtr<ID3D11Texture2D> depth = makeTarget(d, DXGI_FORMAT_D32_FLOAT_S8X24_UINT, D3D11_BIND_DEPTH_STENCIL);
+    ComPtr<ID3D11Texture2D> colour = makeTexture(d, kSize, kSize, D3D11_BIND_RENDER_TARGET);
+    ASSERT_TRUE(depth && colour);
+    ComPtr<ID3D11DepthStencilView> dsv;
+    ASSERT_EQ(d.device->CreateDepthStencilView(depth.Get(), nullptr, dsv.GetAddressOf()), S_OK) << lastError();
+    ComPtr<ID3D11RenderTargetView> rtv;
+    ASSERT_EQ(d.device->CreateRenderTargetView(colour.Get(), nullptr, rtv.GetAddressOf()), S_OK) << lastError();
+    const float black[4] = {0, 0, 0, 0};
+    d.context->ClearRenderTargetView(rtv.Get(), black);
+    d.context->ClearDepthStencilView(dsv.Get(), D3D11_CLEAR_DEPTH | D3D11_CLEAR_STENCIL, 1.0f, 0);
+    d.context->OMSetRenderTargets(1, rtv.GetAddressOfConst(), dsv.Get());
+    D3D11_DEPTH_STENCIL_DESC write, test;
+    write.DepthEnable = test.DepthEnable = FALSE;
+    write.StencilEnable = test.StencilEnable = TRUE;
+    write.FrontFace.StencilFunc = write.BackFace.StencilFunc = D3D11_COMPARISON_ALWAYS;
+    write.FrontFace.StencilPassOp = write.BackFace.StencilPassOp = D3D11_STENCIL_OP_REPLACE;
+    test.FrontFace.StencilFunc = test.BackFace.StencilFunc = D3D11_COMPARISON_EQUAL;
+    ComPtr<ID3D11DepthStencilState> writing, testing;
+    ASSERT_EQ(d.device->CreateDepthStencilState(&write, writing.GetAddressOf()), S_OK) << lastError();
+    ASSERT_EQ(d.device->CreateDepthStencilState(&test, testing.GetAddressOf()), S_OK) << lastError();
+    D3D11_VIEWPORT viewport;
+    viewport.Width = float(kSize) / 2;  // the left half only
+    viewport.Height = float(kSize);
+    d.context->RSSetViewports(1, &viewport);
+    d.context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+    Shaders pass(d, kDepthPass);
+    pass.set(d);
+    d.context->OMSetDepthStencilState(writing.Get(), 1);
+    d.context->Draw(3, 0);
+    d.context->ClearRenderTargetView(rtv.Get(), black);
+    viewport.Width = float(kSize);
+    d.context->RSSetViewports(1, &viewport);
+    d.context->OMSetDepthStencilState(testing.Get(), 1);
+    d.context->Draw(3, 0);
+    ASSERT_EQ(lastError(), "");
+    std::vector<std::array<std::uint8_t, 4>> pixels = readPixels(d, colour.Get());
+    for (UINT y = 0; y < kSize; ++y)
+        for (UINT x = 0; x < kSize; ++x) EXPECT_EQ(pixels[y * kSize + x][0], x < kSize / 2 ? 255 : 0) << "pixel (" << x << ", " << y << ")";
+}
+
+TEST(D3D11DepthTexture, StencilShaderResourceViewsAreNotImplemented) {
+    Device d;
+    ComPtr<ID3D11Texture2D> t = makeTarget(d, DXGI_FORMAT_R32G8X24_TYPELESS, D3D11_BIND_DEPTH_STENCIL | D3D11_BIND_SHADER_RESOURCE);
+    ASSERT_TRUE(t);
+    D3D11_SHADER_RESOURCE_VIEW_DESC desc;
+    desc.Format = DXGI_FORMAT_X32_TYPELESS_G8X24_UINT;
+    desc.ViewDimension = D3D11_SRV_DIMENSION_TEXTURE2D;
+    desc.Texture2D.MipLevels = 1;
+    ComPtr<ID3D11ShaderResourceView> srv;
+    EXPECT_EQ(d.device->CreateShaderResourceView(t.Get(), &desc, srv.GetAddressOf()), E_NOTIMPL);
+    EXPECT_NE(lastError().find("DXGI_FORMAT_X32_TYPELESS_G8X24_UINT"), std::string::npos) << lastError();
+}
+
 }  // namespace
 }  // namespace d3d11test

@@ -365,3 +365,92 @@ TEST(StreamOutput, D3D10EffectPassStreamsThroughConstructGSWithSO) {
     EXPECT_EQ(offsets[1], 0u);
     if (bound[0]) bound[0]->Release();
 }
+
+namespace {
+
+// GetData of a stream-output query, waiting as D3D code does (S_FALSE until ready).
+template <class T>
+T queryData(Device& d, ID3D11Query* q) {
+    T out{};
+    HRESULT hr = S_FALSE;
+    for (int tries = 0; tries < 1000 && hr == S_FALSE; ++tries) hr = d.context->GetData(q, &out, sizeof out, 0);
+    EXPECT_EQ(hr, S_OK) << lastError();
+    return out;
+}
+
+ComPtr<ID3D11Query> makeQuery(Device& d, D3D11_QUERY kind) {
+    D3D11_QUERY_DESC desc;
+    desc.Query = kind;
+    ComPtr<ID3D11Query> q;
+    EXPECT_EQ(d.device->CreateQuery(&desc, q.GetAddressOf()), S_OK) << lastError();
+    return q;
+}
+
+}  // namespace
+
+// Each point becomes two point primitives: 3 points into room for 16 vertices write 6, and into
+// room for 3 write 3 of the 6 needed, which the overflow predicates report.
+TEST(StreamOutput, StatisticsQueriesCountWrittenAndNeededPrimitives) {
+    const std::vector<Point> points = {{{0, 0, 0}, 1}, {{1, 1, 1}, 2}, {{2, 2, 2}, 3}};
+    Pipeline p(points);
+    auto roomy = soBuffer(p.d, 16), tight = soBuffer(p.d, 3);
+    for (D3D11_QUERY kind : {D3D11_QUERY_SO_STATISTICS, D3D11_QUERY_SO_STATISTICS_STREAM0}) {
+        SCOPED_TRACE("query " + std::to_string(kind));
+        ComPtr<ID3D11Query> stats = makeQuery(p.d, kind), overflow = makeQuery(p.d, D3D11_QUERY(kind + 1));
+        ASSERT_TRUE(stats && overflow);
+        EXPECT_EQ(stats->GetDataSize(), sizeof(D3D11_QUERY_DATA_SO_STATISTICS));
+        EXPECT_EQ(overflow->GetDataSize(), sizeof(BOOL));
+        p.d.context->Begin(stats.Get());
+        p.d.context->Begin(overflow.Get());
+        p.stream(roomy.Get(), 0, 3);
+        p.d.context->End(stats.Get());
+        p.d.context->End(overflow.Get());
+        D3D11_QUERY_DATA_SO_STATISTICS s = queryData<D3D11_QUERY_DATA_SO_STATISTICS>(p.d, stats.Get());
+        EXPECT_EQ(s.NumPrimitivesWritten, 6u);
+        EXPECT_EQ(s.PrimitivesStorageNeeded, 6u);
+        EXPECT_EQ(queryData<BOOL>(p.d, overflow.Get()), FALSE);
+
+        p.d.context->Begin(stats.Get());
+        p.d.context->Begin(overflow.Get());
+        p.stream(tight.Get(), 0, 3);
+        p.stream(roomy.Get(), 0, 1);
+        p.d.context->End(stats.Get());
+        p.d.context->End(overflow.Get());
+        s = queryData<D3D11_QUERY_DATA_SO_STATISTICS>(p.d, stats.Get());
+        EXPECT_EQ(s.NumPrimitivesWritten, 3u + 2u);
+        EXPECT_EQ(s.PrimitivesStorageNeeded, 6u + 2u);
+        EXPECT_EQ(queryData<BOOL>(p.d, overflow.Get()), TRUE);
+    }
+}
+
+TEST(StreamOutput, AnOverflowPredicatePredicatesAndOtherStreamsAreNotImplemented) {
+    const std::vector<Point> points = {{{0, 0, 0}, 1}, {{1, 1, 1}, 2}};
+    Pipeline p(points);
+    auto tight = soBuffer(p.d, 1);
+    D3D11_QUERY_DESC desc;
+    desc.Query = D3D11_QUERY_SO_OVERFLOW_PREDICATE;
+    ComPtr<ID3D11Predicate> overflowed;
+    ASSERT_EQ(p.d.device->CreatePredicate(&desc, overflowed.GetAddressOf()), S_OK) << lastError();
+    p.d.context->Begin(overflowed.Get());
+    p.stream(tight.Get(), 0, 2);
+    p.d.context->End(overflowed.Get());
+    // A clear predicated on "overflowed is TRUE" is skipped; on FALSE it runs.
+    ComPtr<ID3D11Texture2D> colour = makeTexture(p.d, 2, 2, D3D11_BIND_RENDER_TARGET);
+    ComPtr<ID3D11RenderTargetView> rtv;
+    ASSERT_EQ(p.d.device->CreateRenderTargetView(colour.Get(), nullptr, rtv.GetAddressOf()), S_OK) << lastError();
+    const float black[4] = {0, 0, 0, 0}, white[4] = {1, 1, 1, 1};
+    p.d.context->ClearRenderTargetView(rtv.Get(), black);
+    p.d.context->SetPredication(overflowed.Get(), TRUE);
+    p.d.context->ClearRenderTargetView(rtv.Get(), white);
+    p.d.context->SetPredication(nullptr, FALSE);
+    EXPECT_EQ(readPixels(p.d, colour.Get())[0][0], 0) << "the predicated clear ran although the stream overflowed";
+    p.d.context->SetPredication(overflowed.Get(), FALSE);
+    p.d.context->ClearRenderTargetView(rtv.Get(), white);
+    p.d.context->SetPredication(nullptr, FALSE);
+    EXPECT_EQ(readPixels(p.d, colour.Get())[0][0], 255);
+
+    desc.Query = D3D11_QUERY_SO_STATISTICS_STREAM1;
+    ComPtr<ID3D11Query> q;
+    EXPECT_EQ(p.d.device->CreateQuery(&desc, q.GetAddressOf()), E_NOTIMPL);
+    EXPECT_NE(lastError().find("stream 0"), std::string::npos) << lastError();
+}

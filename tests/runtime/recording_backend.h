@@ -51,6 +51,10 @@ public:
         calls.push_back("setScissor " + std::to_string(r.Width) + "x" + std::to_string(r.Height));
         scissor = r;
     }
+    void setMoreViewports(const std::vector<Viewport>& more, ViewportShift) override {
+        calls.push_back("setMoreViewports " + std::to_string(more.size()));
+    }
+    void setMoreScissors(const std::vector<Rectangle>& more) override { calls.push_back("setMoreScissors " + std::to_string(more.size())); }
     void setSrgbWrite(bool enabled) override { calls.push_back(std::string("setSrgbWrite ") + (enabled ? "on" : "off")); }
     void setClipPlanes(int count) override { calls.push_back("setClipPlanes " + std::to_string(count)); }
     void setPointSize(float size, bool fromShader) override {
@@ -185,6 +189,9 @@ public:
         textureSizes[t] = textureSizes[source];
         return t;
     }
+    BackendObject createCubeArrayView(BackendObject source, SurfaceFormat format, int firstLevel, int levels, int firstLayer, int layers) override {
+        return createTextureView(source, format, true, firstLevel, levels, firstLayer, layers);
+    }
     BackendObject createMultisampleTexture(SurfaceFormat, int samples, int width, int height, int& given) override {
         given = samples;
         const BackendObject t = make("createMultisampleTexture " + std::to_string(width) + "x" + std::to_string(height) + " samples " +
@@ -293,7 +300,7 @@ public:
         if (c.controlPoints > 0) line += " patches of " + std::to_string(c.controlPoints);
         calls.push_back(line);
     }
-    void beginStreamOutput(const std::array<StreamOutputBuffer, 4>& buffers, int primitiveVertices, BackendObject query) override {
+    void beginStreamOutput(const std::array<StreamOutputBuffer, 4>& buffers, int primitiveVertices, BackendObject query, BackendObject) override {
         std::string line = "beginStreamOutput " + std::to_string(primitiveVertices) + " query " + std::to_string(query);
         for (const auto& b : buffers)
             line += " " + std::to_string(b.buffer) + "@" + std::to_string(b.offset) + "+" + std::to_string(b.bytes);

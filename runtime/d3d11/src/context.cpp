@@ -34,9 +34,8 @@ void Context::ClearState() {
     for (Stage* stage : {&vs_, &ps_, &gs_, &hs_, &ds_, &cs_}) *stage = Stage{};
     for (auto& u : csUavs_) u = nullptr;
     for (auto& u : psUavs_) u = nullptr;
-    viewport_ = D3D11_VIEWPORT{};
-    viewportSet_ = false;
-    scissor_ = D3D11_RECT{};
+    viewports_.clear();
+    scissors_.clear();
     rasterizer_ = nullptr;
     blend_ = nullptr;
     std::fill(std::begin(blendFactor_), std::end(blendFactor_), 1.0f);
@@ -142,13 +141,25 @@ void Context::CSSetUnorderedAccessViews(UINT s, UINT n, ID3D11UnorderedAccessVie
 
 // --- rasterizer and output merger
 
+// Each viewport and scissor rectangle (D3D11 has 16; SV_ViewportArrayIndex picks one), as the
+// device core's: whole pixels, as for XNA.
 void Context::RSSetViewports(UINT n, const D3D11_VIEWPORT* p) {
-    viewportSet_ = n > 0 && p;
-    if (viewportSet_) viewport_ = p[0];
-    if (n > 1) note("RSSetViewports: " + std::to_string(n) + " viewports; fxport uses the first");
+    if (n > D3D11_VIEWPORT_AND_SCISSORRECT_OBJECT_COUNT_PER_PIPELINE)
+        return note("RSSetViewports: " + std::to_string(n) + " viewports; D3D11 has 16; nothing set");
+    viewports_.clear();
+    for (UINT i = 0; p && i < n; ++i) {
+        const D3D11_VIEWPORT& d = p[i];
+        Viewport v(int(std::lround(d.TopLeftX)), int(std::lround(d.TopLeftY)), int(std::lround(d.Width)), int(std::lround(d.Height)));
+        v.MinDepth = d.MinDepth;
+        v.MaxDepth = d.MaxDepth;
+        viewports_.push_back(v);
+    }
 }
 void Context::RSSetScissorRects(UINT n, const D3D11_RECT* p) {
-    if (n > 0 && p) scissor_ = p[0];
+    if (n > D3D11_VIEWPORT_AND_SCISSORRECT_OBJECT_COUNT_PER_PIPELINE)
+        return note("RSSetScissorRects: " + std::to_string(n) + " rectangles; D3D11 has 16; nothing set");
+    scissors_.clear();
+    for (UINT i = 0; p && i < n; ++i) scissors_.emplace_back(p[i].left, p[i].top, p[i].right - p[i].left, p[i].bottom - p[i].top);
 }
 void Context::RSSetState(ID3D11RasterizerState* p) { rasterizer_ = own<RasterizerState>(p, device_); }
 

@@ -167,9 +167,10 @@ private:
     Stage vs_, ps_, gs_, hs_, ds_, cs_;
     UavSlots csUavs_;
     UavSlots psUavs_;  // OMSetRenderTargetsAndUnorderedAccessViews: the pixel shader's u#
-    D3D11_VIEWPORT viewport_;
-    bool viewportSet_ = false;
-    D3D11_RECT scissor_;
+    // RSSetViewports / RSSetScissorRects, as the core's (index 0 first; no viewport: the whole target).
+    std::vector<Viewport> viewports_;
+    std::vector<Rectangle> scissors_;
+    void setViewports(GraphicsDevice& core) const;  // context_draw.cpp
     ComPtr<RasterizerState> rasterizer_;
     ComPtr<BlendState> blend_;
     FLOAT blendFactor_[4] = {1, 1, 1, 1};

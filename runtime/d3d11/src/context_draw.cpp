@@ -47,7 +47,8 @@ const char* dimensionOf(fxport::Texture::Kind kind) {
     case fxport::Texture::Kind::Texture1D:
     case fxport::Texture::Kind::Texture1DArray: return "1D";
     case fxport::Texture::Kind::Texture3D: return "3D";
-    case fxport::Texture::Kind::TextureCube: return "cube";
+    case fxport::Texture::Kind::TextureCube:
+    case fxport::Texture::Kind::TextureCubeArray: return "cube";
     default: return "2D";
     }
 }
@@ -190,14 +191,7 @@ bool Context::prepare(const char* call) {
     core.DepthStencilState = depthStencil_ ? depthStencil_->state : defaultDepthStencil_;
     core.DepthStencilState.ReferenceStencil = int(stencilRef_);
     core.RasterizerState = rasterizer_ ? rasterizer_->state : defaultRasterizer_;
-    if (viewportSet_) {
-        Viewport v(int(std::lround(viewport_.TopLeftX)), int(std::lround(viewport_.TopLeftY)), int(std::lround(viewport_.Width)),
-                   int(std::lround(viewport_.Height)));
-        v.MinDepth = viewport_.MinDepth;
-        v.MaxDepth = viewport_.MaxDepth;
-        core.Viewport = v;
-    }
-    core.ScissorRectangle = Rectangle(scissor_.left, scissor_.top, scissor_.right - scissor_.left, scissor_.bottom - scissor_.top);
+    setViewports(core);
 
     if (effectPass_) {
         // The pass binds its shaders, constants and textures and sets the states it names over
@@ -239,6 +233,21 @@ bool Context::prepare(const char* call) {
     if (depthView_ && (depthView_->desc.Flags & D3D11_DSV_READ_ONLY_DEPTH)) core.DepthStencilState.DepthBufferWriteEnable = false;
     if (depthView_ && (depthView_->desc.Flags & D3D11_DSV_READ_ONLY_STENCIL)) core.DepthStencilState.StencilWriteMask = 0;
     return true;
+}
+
+namespace {
+template <class T>
+std::vector<T> afterFirst(const std::vector<T>& all) {
+    return all.size() > 1 ? std::vector<T>(all.begin() + 1, all.end()) : std::vector<T>{};
+}
+}  // namespace
+
+// Viewport and scissor 0 are the device's (no viewport set: setTargets' whole target); the rest
+// are the core's viewports 1.. .
+void Context::setViewports(GraphicsDevice& core) const {
+    if (!viewports_.empty()) core.Viewport = viewports_[0];
+    core.ScissorRectangle = scissors_.empty() ? Rectangle(0, 0, 0, 0) : scissors_[0];
+    core::setMoreViewports(core, afterFirst(viewports_), afterFirst(scissors_));
 }
 
 bool Context::streams(const char* call, std::vector<core::InstancedStream>& out) {

@@ -147,6 +147,7 @@ public:
         : Object(device), line(viewed), desc(d) { line->AddRef(); }
     ~ShaderResourceView() override {
         typed.reset();  // before the buffer it reads may go
+        formatView.reset();
         arrayRange.reset();
         lineRange.reset();
         resource()->Release();
@@ -159,6 +160,7 @@ public:
     }
     // What a shader samples through the view; null for a view of a buffer.
     fxport::Texture* sampled() const {
+        if (formatView) return formatView.get();
         if (arrayRange) return arrayRange.get();
         if (line) return lineRange ? lineRange.get() : line->texels.get();
         return texture ? texture->sampled() : volume ? volume->texels.get() : nullptr;
@@ -170,6 +172,7 @@ public:
     D3D11_SHADER_RESOURCE_VIEW_DESC desc;
     BufferRange range;                         // buffer views
     std::unique_ptr<core::TexelBuffer> typed;  // a typed buffer view (Buffer<T>)
+    std::unique_ptr<fxport::Texture2D> formatView;       // a typeless colour texture read in another format of its family
     std::unique_ptr<fxport::Texture2DArray> arrayRange;  // a view of part of an array texture's levels or slices
     std::unique_ptr<fxport::Texture1D> lineRange;        // a 1D texture seen as another dimension or in part
 };
@@ -194,18 +197,24 @@ public:
     std::unique_ptr<core::TexelBuffer> typed;  // a typed buffer view (RWBuffer<T>)
     std::unique_ptr<fxport::Texture1D> image;  // a 1D texture's view (resources_1d.cpp)
 };
+// A render-target view of a 2D texture (texture set) or of rows of a 1D texture (line set, and
+// `slice` the target over them).
 class RenderTargetView final : public Object<ID3D11RenderTargetView> {
 public:
     RenderTargetView(Device* device, Texture* viewed, const D3D11_RENDER_TARGET_VIEW_DESC& d)
         : Object(device), texture(viewed), desc(d) { texture->AddRef(); }
+    RenderTargetView(Device* device, LineTexture* viewed, const D3D11_RENDER_TARGET_VIEW_DESC& d)
+        : Object(device), line(viewed), desc(d) { line->AddRef(); }
     ~RenderTargetView() override {
         slice.reset();  // before the array it draws into may go
-        texture->Release();
+        resource()->Release();
     }
-    void GetResource(ID3D11Resource** r) override { texture->AddRef(); *r = texture; }
+    ID3D11Resource* resource() const { return line ? static_cast<ID3D11Resource*>(line) : texture; }
+    void GetResource(ID3D11Resource** r) override { resource()->AddRef(); *r = resource(); }
     void GetDesc(D3D11_RENDER_TARGET_VIEW_DESC* pDesc) override { if (pDesc) *pDesc = desc; }
     RenderTarget2D& target() const { return slice ? *slice : static_cast<RenderTarget2D&>(*texture->colour); }
-    Texture* texture;
+    Texture* texture = nullptr;
+    LineTexture* line = nullptr;
     D3D11_RENDER_TARGET_VIEW_DESC desc;
     std::unique_ptr<RenderTarget2D> slice;  // a view of slices of an array texture (layered for several)
 };
@@ -213,14 +222,18 @@ class DepthStencilView final : public Object<ID3D11DepthStencilView> {
 public:
     DepthStencilView(Device* device, Texture* viewed, const D3D11_DEPTH_STENCIL_VIEW_DESC& d)
         : Object(device), texture(viewed), desc(d) { texture->AddRef(); }
+    DepthStencilView(Device* device, LineTexture* viewed, const D3D11_DEPTH_STENCIL_VIEW_DESC& d)
+        : Object(device), line(viewed), desc(d) { line->AddRef(); }
     ~DepthStencilView() override {
         slice.reset();  // before the texture it is made over
         sliceTexture.reset();
-        texture->Release();
+        resource()->Release();
     }
-    void GetResource(ID3D11Resource** r) override { texture->AddRef(); *r = texture; }
+    ID3D11Resource* resource() const { return line ? static_cast<ID3D11Resource*>(line) : texture; }
+    void GetResource(ID3D11Resource** r) override { resource()->AddRef(); *r = resource(); }
     void GetDesc(D3D11_DEPTH_STENCIL_VIEW_DESC* pDesc) override { if (pDesc) *pDesc = desc; }
-    Texture* texture;
+    Texture* texture = nullptr;
+    LineTexture* line = nullptr;  // a 1D view: slice is the depth buffer over sliceTexture's rows
     D3D11_DEPTH_STENCIL_VIEW_DESC desc;
     std::unique_ptr<fxport::Texture2D> sliceTexture;  // slices of an array texture (one: a 2D texture)
     std::unique_ptr<core::DepthBuffer> slice;          // the depth buffer over it
@@ -333,8 +346,15 @@ struct DepthFamily {
 };
 const DepthFamily* depthFamilyOf(DXGI_FORMAT textureFormat);  // null: not one of them
 const DepthFamily* depthFamilyOfView(DXGI_FORMAT depthView);   // the family whose DSV format this is (D32_FLOAT ...)
-// A view's Format for texture `t`: its own (or UNKNOWN), or the typeless depth family's view of
-// that kind; E_NOTIMPL/E_INVALIDARG naming `desc`.Format otherwise.
+// The format a typeless colour texture is stored in (R8G8B8A8_TYPELESS: R8G8B8A8_UNORM's; BC1-7,
+// B8G8R8A8/X8); false for any other format.
+bool typelessColourStorage(DXGI_FORMAT typeless, SurfaceFormat& out);
+// What a view of `viewFormat` reads `t` as: the view's format for a typeless colour texture, the
+// texture's own otherwise.
+SurfaceFormat viewSurface(DXGI_FORMAT viewFormat, const Texture& t);
+// A view's Format for texture `t`: its own (or UNKNOWN), a typed member of a typeless colour
+// texture's family, or the typeless depth family's view of that kind; E_NOTIMPL/E_INVALIDARG
+// naming `desc`.Format otherwise.
 HRESULT checkViewFormat(const char* call, const char* desc, DXGI_FORMAT viewFormat, const Texture& t, bool depthView);
 // D3D11_DEPTH_STENCIL_VIEW_DESC.Flags for a view of `viewFormat`: read-only depth, and read-only
 // stencil where the format has stencil; E_INVALIDARG naming the field (`at` ends with "DESC.").
@@ -368,6 +388,9 @@ HRESULT volumeShaderResourceView(Device* device, Volume* v, const D3D11_SHADER_R
 // UpdateSubresource and copies of them (D3D's checks of the call done by the caller).
 HRESULT lineShaderResourceView(Device* device, LineTexture* t, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc, ID3D11ShaderResourceView** pp);
 HRESULT lineUnorderedAccessView(Device* device, LineTexture* t, const D3D11_UNORDERED_ACCESS_VIEW_DESC* pDesc, ID3D11UnorderedAccessView** pp);
+// Render-target and depth-stencil views of rows of a 1D texture (line_targets.cpp).
+HRESULT lineRenderTargetView(Device* device, LineTexture* t, const D3D11_RENDER_TARGET_VIEW_DESC* pDesc, ID3D11RenderTargetView** pp);
+HRESULT lineDepthStencilView(Device* device, LineTexture* t, const D3D11_DEPTH_STENCIL_VIEW_DESC* pDesc, ID3D11DepthStencilView** pp);
 std::vector<std::uint8_t> readLine(LineTexture& t, int subresource);
 void writeLine(LineTexture& t, int subresource, int x, const std::uint8_t* texels, int count);
 HRESULT mapLine(LineTexture& t, UINT subresource, D3D11_MAPPED_SUBRESOURCE& out);
@@ -397,6 +420,7 @@ public:
     std::unique_ptr<core::GpuQuery> gpu;
     bool begun = false;  // between Begin and End (occlusion and disjoint queries)
     bool ended = false;  // End has been called since the last Begin
+    core::StreamOutputCounts atBegin, atEnd;  // a stream-output query's readings of the core's counts
 };
 
 class Device final : public ID3D11Device {

@@ -286,9 +286,8 @@ struct Context::Bindings {
     ComPtr<ComputeShader> cs;
     std::array<Stage, 6> stages;
     UavSlots csUavs, psUavs;
-    D3D11_VIEWPORT viewport;
-    bool viewportSet;
-    D3D11_RECT scissor;
+    std::vector<Viewport> viewports;
+    std::vector<Rectangle> scissors;
     ComPtr<RasterizerState> rasterizer;
     ComPtr<BlendState> blend;
     std::array<FLOAT, 4> blendFactor;
@@ -306,7 +305,7 @@ struct Context::Bindings {
 Context::Bindings Context::bindings() const {
     return Bindings{layout_, vertexSlots_, indexBuffer_, indexFormat_, indexOffset_, topology_, vertexShader_, pixelShader_,
                     geometryShader_, hullShader_, domainShader_, computeShader_, {vs_, ps_, gs_, hs_, ds_, cs_}, csUavs_, psUavs_,
-                    viewport_, viewportSet_, scissor_, rasterizer_, blend_, {blendFactor_[0], blendFactor_[1], blendFactor_[2], blendFactor_[3]},
+                    viewports_, scissors_, rasterizer_, blend_, {blendFactor_[0], blendFactor_[1], blendFactor_[2], blendFactor_[3]},
                     sampleMask_, depthStencil_, stencilRef_, targets_, depthView_, effectPass_, effectOwner_, predicate_, predicateValue_};
 }
 
@@ -327,9 +326,8 @@ void Context::rebind(const Bindings& b) {
     for (std::size_t i = 0; i < 6; ++i) *stages[i] = b.stages[i];
     csUavs_ = b.csUavs;
     psUavs_ = b.psUavs;
-    viewport_ = b.viewport;
-    viewportSet_ = b.viewportSet;
-    scissor_ = b.scissor;
+    viewports_ = b.viewports;
+    scissors_ = b.scissors;
     rasterizer_ = b.rasterizer;
     blend_ = b.blend;
     std::copy(b.blendFactor.begin(), b.blendFactor.end(), blendFactor_);

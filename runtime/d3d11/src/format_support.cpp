@@ -14,6 +14,8 @@ namespace {
 
 UINT textureSupport(GraphicsDevice& core, DXGI_FORMAT format) {
     SurfaceFormat surface;
+    if (typelessColourStorage(format, surface))  // made as a 2D texture; its views name what it reads as
+        return core.supportsTextureFormat(surface) ? D3D11_FORMAT_SUPPORT_TEXTURE2D | D3D11_FORMAT_SUPPORT_MIP | D3D11_FORMAT_SUPPORT_CPU_LOCKABLE : 0;
     if (!textureFormat(format, surface) || !core.supportsTextureFormat(surface)) return 0;
     UINT bits = D3D11_FORMAT_SUPPORT_TEXTURE2D | D3D11_FORMAT_SUPPORT_TEXTURE3D | D3D11_FORMAT_SUPPORT_TEXTURECUBE |
                 D3D11_FORMAT_SUPPORT_SHADER_LOAD | D3D11_FORMAT_SUPPORT_MIP | D3D11_FORMAT_SUPPORT_CPU_LOCKABLE;
@@ -33,7 +35,7 @@ UINT depthSupport(DXGI_FORMAT format) {
     UINT bits = 0;
     if (depthFormat(format, depth)) bits |= D3D11_FORMAT_SUPPORT_TEXTURE2D | D3D11_FORMAT_SUPPORT_DEPTH_STENCIL;
     if (depthFamilyOf(format)) bits |= D3D11_FORMAT_SUPPORT_TEXTURE2D;  // a typeless shadow map
-    for (DXGI_FORMAT typeless : {DXGI_FORMAT_R32_TYPELESS, DXGI_FORMAT_R24G8_TYPELESS, DXGI_FORMAT_R16_TYPELESS})
+    for (DXGI_FORMAT typeless : {DXGI_FORMAT_R32_TYPELESS, DXGI_FORMAT_R24G8_TYPELESS, DXGI_FORMAT_R32G8X24_TYPELESS, DXGI_FORMAT_R16_TYPELESS})
         if (depthFamilyOf(typeless)->sampledView == format)  // its shader-resource view
             bits |= D3D11_FORMAT_SUPPORT_TEXTURE2D | D3D11_FORMAT_SUPPORT_SHADER_LOAD | D3D11_FORMAT_SUPPORT_SHADER_SAMPLE |
                     D3D11_FORMAT_SUPPORT_SHADER_SAMPLE_COMPARISON | D3D11_FORMAT_SUPPORT_SHADER_GATHER_COMPARISON;

@@ -21,6 +21,10 @@ const char* formatName(DXGI_FORMAT f) {
     case DXGI_FORMAT_R32G32_FLOAT: return "DXGI_FORMAT_R32G32_FLOAT";
     case DXGI_FORMAT_R32G32_UINT: return "DXGI_FORMAT_R32G32_UINT";
     case DXGI_FORMAT_R32G32_SINT: return "DXGI_FORMAT_R32G32_SINT";
+    case DXGI_FORMAT_R32G8X24_TYPELESS: return "DXGI_FORMAT_R32G8X24_TYPELESS";
+    case DXGI_FORMAT_D32_FLOAT_S8X24_UINT: return "DXGI_FORMAT_D32_FLOAT_S8X24_UINT";
+    case DXGI_FORMAT_R32_FLOAT_X8X24_TYPELESS: return "DXGI_FORMAT_R32_FLOAT_X8X24_TYPELESS";
+    case DXGI_FORMAT_X32_TYPELESS_G8X24_UINT: return "DXGI_FORMAT_X32_TYPELESS_G8X24_UINT";
     case DXGI_FORMAT_R10G10B10A2_UNORM: return "DXGI_FORMAT_R10G10B10A2_UNORM";
     case DXGI_FORMAT_R10G10B10A2_UINT: return "DXGI_FORMAT_R10G10B10A2_UINT";
     case DXGI_FORMAT_R11G11B10_FLOAT: return "DXGI_FORMAT_R11G11B10_FLOAT";
@@ -68,6 +72,9 @@ const char* formatName(DXGI_FORMAT f) {
     case DXGI_FORMAT_R16_TYPELESS: return "DXGI_FORMAT_R16_TYPELESS";
     case DXGI_FORMAT_R8_TYPELESS: return "DXGI_FORMAT_R8_TYPELESS";
     case DXGI_FORMAT_B8G8R8A8_TYPELESS: return "DXGI_FORMAT_B8G8R8A8_TYPELESS";
+    case DXGI_FORMAT_B8G8R8X8_UNORM: return "DXGI_FORMAT_B8G8R8X8_UNORM";
+    case DXGI_FORMAT_B8G8R8X8_TYPELESS: return "DXGI_FORMAT_B8G8R8X8_TYPELESS";
+    case DXGI_FORMAT_B8G8R8X8_UNORM_SRGB: return "DXGI_FORMAT_B8G8R8X8_UNORM_SRGB";
     case DXGI_FORMAT_B8G8R8A8_UNORM_SRGB: return "DXGI_FORMAT_B8G8R8A8_UNORM_SRGB";
     case DXGI_FORMAT_R9G9B9E5_SHAREDEXP: return "DXGI_FORMAT_R9G9B9E5_SHAREDEXP";
     case DXGI_FORMAT_BC1_TYPELESS: return "DXGI_FORMAT_BC1_TYPELESS";
@@ -133,6 +140,8 @@ bool textureFormat(DXGI_FORMAT f, SurfaceFormat& out) {
     case DXGI_FORMAT_R8G8B8A8_SINT: out = SurfaceFormat::Rgba8SInt; return true;
     case DXGI_FORMAT_B8G8R8A8_UNORM: out = SurfaceFormat::Bgra32; return true;
     case DXGI_FORMAT_B8G8R8A8_UNORM_SRGB: out = SurfaceFormat::Bgra32SRgb; return true;
+    case DXGI_FORMAT_B8G8R8X8_UNORM: out = SurfaceFormat::Bgrx32; return true;  // X: alpha reads 1
+    case DXGI_FORMAT_B8G8R8X8_UNORM_SRGB: out = SurfaceFormat::Bgrx32SRgb; return true;
     case DXGI_FORMAT_R16_UNORM: out = SurfaceFormat::R16; return true;
     case DXGI_FORMAT_R8G8_UNORM: out = SurfaceFormat::Rg8; return true;
     case DXGI_FORMAT_R8_UNORM: out = SurfaceFormat::R8; return true;
@@ -148,7 +157,7 @@ bool textureFormat(DXGI_FORMAT f, SurfaceFormat& out) {
     case DXGI_FORMAT_B5G6R5_UNORM: out = SurfaceFormat::Bgr565; return true;
     case DXGI_FORMAT_B5G5R5A1_UNORM: out = SurfaceFormat::Bgra5551; return true;
     case DXGI_FORMAT_B4G4R4A4_UNORM: out = SurfaceFormat::Bgra4444; return true;
-    // Block-compressed (the _TYPELESS ones are not mapped: fxport views a texture in its own format)
+    // Block-compressed (a _TYPELESS one is a texture of its family, typeless_formats.cpp)
     case DXGI_FORMAT_BC1_UNORM: out = SurfaceFormat::Dxt1; return true;
     case DXGI_FORMAT_BC2_UNORM: out = SurfaceFormat::Dxt3; return true;
     case DXGI_FORMAT_BC3_UNORM: out = SurfaceFormat::Dxt5; return true;
@@ -182,6 +191,7 @@ bool depthFormat(DXGI_FORMAT f, DepthFormat& out) {
     case DXGI_FORMAT_D24_UNORM_S8_UINT: out = DepthFormat::Depth24Stencil8; return true;
     case DXGI_FORMAT_D16_UNORM: out = DepthFormat::Depth16; return true;
     case DXGI_FORMAT_D32_FLOAT: out = DepthFormat::Depth32F; return true;
+    case DXGI_FORMAT_D32_FLOAT_S8X24_UINT: out = DepthFormat::Depth32FStencil8; return true;
     default: return false;
     }
 }

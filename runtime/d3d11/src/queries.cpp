@@ -3,7 +3,10 @@
 // counts the samples passing the depth and stencil tests between Begin and End; a disjoint query
 // answers GL's timestamps' frequency (nanoseconds) and never disjoint; a pipeline-statistics query
 // reads GL_ARB_pipeline_statistics_query's eleven counters (the same ones as D3D's; E_NOTIMPL where
-// the driver lacks them). GetData answers S_FALSE until the result is there, as D3D does.
+// the driver lacks them); a stream-output statistics query (or overflow predicate) is the
+// difference of the core's stream-output counts at Begin and End, which each streaming draw has
+// already waited for (stream 0: the one fxport captures). GetData answers S_FALSE until the result
+// is there, as D3D does.
 // SetPredication skips the predicated calls while an occlusion predicate's result equals the value
 // given: the context waits for the result at each such call (GL's conditional rendering would
 // cover draws and clears only, not the copies and updates D3D predicates too).
@@ -15,7 +18,13 @@ namespace fxport::d3d11 {
 namespace {
 
 bool countsSamples(D3D11_QUERY q) { return q == D3D11_QUERY_OCCLUSION || q == D3D11_QUERY_OCCLUSION_PREDICATE; }
-bool bracketed(D3D11_QUERY q) { return countsSamples(q) || q == D3D11_QUERY_TIMESTAMP_DISJOINT || q == D3D11_QUERY_PIPELINE_STATISTICS; }
+// SO_STATISTICS(_STREAMn) and SO_OVERFLOW_PREDICATE(_STREAMn): 6, 7 and 8..15, statistics even.
+bool streamOutput(D3D11_QUERY q) { return q >= D3D11_QUERY_SO_STATISTICS; }
+bool overflowPredicate(D3D11_QUERY q) { return streamOutput(q) && q % 2 == 1; }
+bool bracketed(D3D11_QUERY q) {
+    return countsSamples(q) || q == D3D11_QUERY_TIMESTAMP_DISJOINT || q == D3D11_QUERY_PIPELINE_STATISTICS || streamOutput(q);
+}
+bool isPredicate(D3D11_QUERY q) { return q == D3D11_QUERY_OCCLUSION_PREDICATE || overflowPredicate(q); }
 
 core::GpuQuery::Kind kindOf(D3D11_QUERY q) {
     if (countsSamples(q)) return core::GpuQuery::Kind::SamplesPassed;
@@ -27,22 +36,35 @@ core::GpuQuery::Kind kindOf(D3D11_QUERY q) {
 HRESULT checkQuery(Device& device, const char* call, const D3D11_QUERY_DESC* d) {
     if (!d) return fail(E_INVALIDARG, std::string(call) + ": the D3D11_QUERY_DESC pointer is null");
     const std::string at = std::string(call) + ": D3D11_QUERY_DESC.";
-    if (d->Query > D3D11_QUERY_SO_OVERFLOW_PREDICATE) return fail(E_INVALIDARG, at + "Query = " + std::to_string(d->Query) + " (not a D3D11_QUERY value)");
-    const bool predicate = d->Query == D3D11_QUERY_OCCLUSION_PREDICATE || d->Query == D3D11_QUERY_SO_OVERFLOW_PREDICATE;
+    if (d->Query > D3D11_QUERY_SO_OVERFLOW_PREDICATE_STREAM3)
+        return fail(E_INVALIDARG, at + "Query = " + std::to_string(d->Query) + " (not a D3D11_QUERY value)");
+    const bool predicate = isPredicate(d->Query);
     if (d->MiscFlags & ~D3D11_QUERY_MISC_PREDICATEHINT || (d->MiscFlags && !predicate))
         return fail(E_INVALIDARG, at + "MiscFlags = " + std::to_string(d->MiscFlags) + " (0, or D3D11_QUERY_MISC_PREDICATEHINT for a predicate)");
-    if (d->Query >= D3D11_QUERY_SO_STATISTICS)
-        return fail(E_NOTIMPL, at + "Query = " + std::to_string(d->Query) + ": fxport has no stream output, so no stream-output queries");
+    if (d->Query >= D3D11_QUERY_SO_STATISTICS_STREAM1)
+        return fail(E_NOTIMPL, at + "Query = " + std::to_string(d->Query) + ": fxport captures stream 0 only (the _STREAM0 and all-streams queries count it)");
     if (d->Query == D3D11_QUERY_PIPELINE_STATISTICS && !core::pipelineStatisticsAvailable(device.core()))
         return fail(E_NOTIMPL, at + "Query = D3D11_QUERY_PIPELINE_STATISTICS: the GL driver lacks GL_ARB_pipeline_statistics_query, "
                                     "which counts what D3D's statistics count");
     return S_OK;
 }
 
+// An SO query's answer from its two readings: D3D11_QUERY_DATA_SO_STATISTICS, or whether some
+// primitive found no room (the overflow predicate's BOOL).
+D3D11_QUERY_DATA_SO_STATISTICS streamOutputStatistics(const Query& q) {
+    return {q.atEnd.written - q.atBegin.written, q.atEnd.needed - q.atBegin.needed};
+}
+void writeStreamOutputData(const Query& q, void* data) {
+    const D3D11_QUERY_DATA_SO_STATISTICS s = streamOutputStatistics(q);
+    if (overflowPredicate(q.desc.Query)) *static_cast<BOOL*>(data) = s.PrimitivesStorageNeeded > s.NumPrimitivesWritten;
+    else *static_cast<D3D11_QUERY_DATA_SO_STATISTICS*>(data) = s;
+}
+
 }  // namespace
 
 Query::Query(Device* device, const D3D11_QUERY_DESC& d) : Object(device), desc(d) {
-    if (desc.Query != D3D11_QUERY_TIMESTAMP_DISJOINT) gpu = std::make_unique<core::GpuQuery>(device->core(), kindOf(desc.Query));
+    if (desc.Query != D3D11_QUERY_TIMESTAMP_DISJOINT && !streamOutput(desc.Query))
+        gpu = std::make_unique<core::GpuQuery>(device->core(), kindOf(desc.Query));
 }
 
 UINT Query::GetDataSize() {
@@ -51,7 +73,9 @@ UINT Query::GetDataSize() {
     case D3D11_QUERY_OCCLUSION_PREDICATE: return sizeof(BOOL);
     case D3D11_QUERY_TIMESTAMP_DISJOINT: return sizeof(D3D11_QUERY_DATA_TIMESTAMP_DISJOINT);
     case D3D11_QUERY_PIPELINE_STATISTICS: return sizeof(D3D11_QUERY_DATA_PIPELINE_STATISTICS);
-    default: return sizeof(UINT64);
+    default:
+        if (overflowPredicate(desc.Query)) return sizeof(BOOL);
+        return streamOutput(desc.Query) ? UINT(sizeof(D3D11_QUERY_DATA_SO_STATISTICS)) : UINT(sizeof(UINT64));
     }
 }
 
@@ -66,7 +90,7 @@ HRESULT Device::CreateQuery(const D3D11_QUERY_DESC* d, ID3D11Query** pp) {
 
 HRESULT Device::CreatePredicate(const D3D11_QUERY_DESC* d, ID3D11Predicate** pp) {
     if (HRESULT hr = checkQuery(*this, "CreatePredicate", d); FAILED(hr)) return hr;
-    if (d->Query != D3D11_QUERY_OCCLUSION_PREDICATE)
+    if (!isPredicate(d->Query))
         return fail(E_INVALIDARG, "CreatePredicate: D3D11_QUERY_DESC.Query = " + std::to_string(d->Query) +
                                       " (a predicate is D3D11_QUERY_OCCLUSION_PREDICATE or SO_OVERFLOW_PREDICATE)");
     if (!pp) return S_FALSE;
@@ -94,6 +118,7 @@ void Context::Begin(ID3D11Asynchronous* async) {
             q->gpu->begin();
             (statistics ? statistics_ : counting_) = q;
         }
+        if (streamOutput(q->desc.Query)) q->atBegin = core::streamOutputCounts(device_->core());
         return succeed();
     });
 }
@@ -106,6 +131,7 @@ void Context::End(ID3D11Asynchronous* async) {
         return note("End: the query was not begun (an occlusion, pipeline-statistics or disjoint query needs Begin first)");
     guarded("End", [&] {
         if (q->gpu) q->gpu->end();
+        if (streamOutput(q->desc.Query)) q->atEnd = core::streamOutputCounts(device_->core());
         if (counting_.Get() == q) counting_ = nullptr;
         if (statistics_.Get() == q) statistics_ = nullptr;
         q->begun = false;
@@ -137,7 +163,10 @@ HRESULT Context::GetData(ID3D11Asynchronous* async, void* data, UINT size, UINT 
             out = {s[0], s[1], s[2], s[3], s[4], s[5], s[6], s[7], s[8], s[9], s[10]};
             break;
         }
-        default: *static_cast<UINT64*>(data) = value; break;
+        default:
+            if (streamOutput(q->desc.Query)) writeStreamOutputData(*q, data);
+            else *static_cast<UINT64*>(data) = value;
+            break;
         }
         return succeed();
     });
@@ -146,8 +175,8 @@ HRESULT Context::GetData(ID3D11Asynchronous* async, void* data, UINT size, UINT 
 void Context::SetPredication(ID3D11Predicate* pPredicate, BOOL PredicateValue) {
     Query* q = own<Query>(pPredicate, device_);
     if (pPredicate && !q) return note("SetPredication: pPredicate was not made by this device");
-    if (q && q->desc.Query != D3D11_QUERY_OCCLUSION_PREDICATE)
-        return note("SetPredication: the query is D3D11_QUERY " + std::to_string(q->desc.Query) + ", not an OCCLUSION_PREDICATE");
+    if (q && !isPredicate(q->desc.Query))
+        return note("SetPredication: the query is D3D11_QUERY " + std::to_string(q->desc.Query) + ", not an OCCLUSION_PREDICATE or SO_OVERFLOW_PREDICATE");
     predicate_ = q;
     predicateValue_ = PredicateValue;
     succeed();
@@ -164,7 +193,14 @@ void Context::GetPredication(ID3D11Predicate** ppPredicate, BOOL* pPredicateValu
 // D3D skips a predicated call when the predicate's data (some sample passed) equals the value set.
 // A predicate not yet issued (no End since Begin) decides nothing: the call runs.
 bool Context::predicatedAway() {
-    if (!predicate_ || !predicate_->ended || !predicate_->gpu) return false;
+    if (!predicate_ || !predicate_->ended) return false;
+    if (overflowPredicate(predicate_->desc.Query)) {
+        const D3D11_QUERY_DATA_SO_STATISTICS s = streamOutputStatistics(*predicate_.Get());
+        const bool skip = (s.PrimitivesStorageNeeded > s.NumPrimitivesWritten) == (predicateValue_ != FALSE);
+        if (skip) succeed();
+        return skip;
+    }
+    if (!predicate_->gpu) return false;
     bool skip = false;
     guarded("SetPredication", [&] {
         skip = (predicate_->gpu->result() != 0) == (predicateValue_ != FALSE);

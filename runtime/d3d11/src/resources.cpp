@@ -76,8 +76,6 @@ HRESULT checkCube(const D3D11_TEXTURE2D_DESC& d, const std::string& at) {
     if (d.ArraySize % 6 != 0 || d.Width != d.Height)
         return fail(E_INVALIDARG, at + "ArraySize = " + std::to_string(d.ArraySize) + ", Width x Height = " + std::to_string(d.Width) + " x " +
                                       std::to_string(d.Height) + " with D3D11_RESOURCE_MISC_TEXTURECUBE (a cube is six square faces)");
-    if (d.ArraySize != 6)
-        return fail(E_NOTIMPL, at + "ArraySize = " + std::to_string(d.ArraySize) + " with D3D11_RESOURCE_MISC_TEXTURECUBE: cube arrays are not supported yet");
     if (d.BindFlags != D3D11_BIND_SHADER_RESOURCE || (d.Usage != D3D11_USAGE_DEFAULT && d.Usage != D3D11_USAGE_IMMUTABLE))
         return fail(E_NOTIMPL, at + "BindFlags = " + std::to_string(d.BindFlags) + ", Usage = " + std::to_string(d.Usage) +
                                    " for a cube texture: fxport's cube textures are DEFAULT or IMMUTABLE shader resources only");
@@ -152,6 +150,7 @@ HRESULT Device::CreateTexture2D(const D3D11_TEXTURE2D_DESC* pDesc, const D3D11_S
     if (d.ArraySize == 0) return fail(E_INVALIDARG, at + "ArraySize = 0");
     const bool isCube = (d.MiscFlags & D3D11_RESOURCE_MISC_TEXTURECUBE) != 0;
     if (d.ArraySize > 1 && !isCube) return createTextureArray(this, d, pInitialData, ppTexture2D);
+    if (isCube && d.ArraySize > 6) return createTextureArray(this, d, pInitialData, ppTexture2D);  // a cube array
     if (d.SampleDesc.Count == 0) return fail(E_INVALIDARG, at + "SampleDesc.Count = 0");
     if (d.SampleDesc.Count > 1)
         if (HRESULT hr = checkMultisampleDesc(d, pInitialData != nullptr); FAILED(hr)) return hr;
@@ -184,13 +183,13 @@ HRESULT Device::CreateTexture2D(const D3D11_TEXTURE2D_DESC* pDesc, const D3D11_S
     const bool sampledDepth = family && (d.BindFlags & D3D11_BIND_SHADER_RESOURCE);
     if (sampledDepth && depthTarget && d.MipLevels != 1)
         return fail(E_NOTIMPL, at + "MipLevels = " + std::to_string(d.MipLevels) + " for a depth texture: fxport makes 1 level");
-    if (family && family->typeless == DXGI_FORMAT_R24G8_TYPELESS && pInitialData)
-        return fail(E_NOTIMPL, at + "Format = DXGI_FORMAT_R24G8_TYPELESS with pInitialData: fxport does not upload packed depth-stencil texels");
+    if (family && hasStencil(family->depth) && pInitialData)
+        return fail(E_NOTIMPL, at + "Format = " + formatName(d.Format) + " with pInitialData: fxport does not upload packed depth-stencil texels");
     if (HRESULT hr = checkUsage(call, "D3D11_TEXTURE2D_DESC", d.Usage, d.BindFlags, d.CPUAccessFlags, pInitialData && pInitialData->pSysMem); FAILED(hr))
         return hr;
     SurfaceFormat surface = family ? family->sampled : SurfaceFormat::Color;
     DepthFormat depth = family ? family->depth : DepthFormat::None;
-    if (!family && (depthTarget ? !depthFormat(d.Format, depth) : !textureFormat(d.Format, surface)))
+    if (!family && (depthTarget ? !depthFormat(d.Format, depth) : !textureFormat(d.Format, surface) && !typelessColourStorage(d.Format, surface)))
         return fail(d.Format == DXGI_FORMAT_UNKNOWN ? E_INVALIDARG : E_NOTIMPL, at + "Format = " + formatName(d.Format) + " (" + std::to_string(d.Format) +
                                                              "): not a " + (depthTarget ? "depth" : "texture") +
                                                              " format fxport supports (docs/API.md lists them)");

@@ -27,12 +27,17 @@ HRESULT checkLineShape(const D3D11_TEXTURE1D_DESC& d, const std::string& at) {
     return S_OK;
 }
 
-// Binds, usage and misc flags: shader resources and UAVs (no render targets or depth in fxport's
-// 1D textures), D3D's usage rules (checkUsage), GENERATE_MIPS only.
+// Binds, usage and misc flags: shader resources, UAVs and render targets, or a depth-stencil
+// texture drawn into only; D3D's usage rules (checkUsage), GENERATE_MIPS only.
 HRESULT checkLineUse(const D3D11_TEXTURE1D_DESC& d, bool hasData, const std::string& at) {
-    if (d.BindFlags & ~UINT(D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_UNORDERED_ACCESS))
-        return fail(d.BindFlags & (D3D11_BIND_RENDER_TARGET | D3D11_BIND_DEPTH_STENCIL) ? E_NOTIMPL : E_INVALIDARG,
-                    at + "BindFlags = " + std::to_string(d.BindFlags) + ": fxport's 1D textures are SHADER_RESOURCE and UNORDERED_ACCESS only");
+    const UINT known = D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_UNORDERED_ACCESS | D3D11_BIND_RENDER_TARGET | D3D11_BIND_DEPTH_STENCIL;
+    if (d.BindFlags & ~known)
+        return fail(E_INVALIDARG, at + "BindFlags = " + std::to_string(d.BindFlags) +
+                                      ": a 1D texture is bound as SHADER_RESOURCE, UNORDERED_ACCESS, RENDER_TARGET or DEPTH_STENCIL");
+    if ((d.BindFlags & D3D11_BIND_DEPTH_STENCIL) && (d.BindFlags & ~UINT(D3D11_BIND_DEPTH_STENCIL)))
+        return fail(d.BindFlags & (D3D11_BIND_RENDER_TARGET | D3D11_BIND_UNORDERED_ACCESS) ? E_INVALIDARG : E_NOTIMPL,
+                    at + "BindFlags = " + std::to_string(d.BindFlags) + ": fxport's 1D depth textures are DEPTH_STENCIL only (not sampled)");
+    if ((d.BindFlags & D3D11_BIND_DEPTH_STENCIL) && hasData) return fail(E_INVALIDARG, at + "BindFlags has DEPTH_STENCIL and pInitialData is given");
     if ((d.BindFlags & D3D11_BIND_UNORDERED_ACCESS) && d.Usage != D3D11_USAGE_DEFAULT)
         return fail(E_INVALIDARG, at + "Usage = " + std::to_string(d.Usage) + " with BIND_UNORDERED_ACCESS (must be USAGE_DEFAULT)");
     // D3D11: a dynamic texture is one level of one slice.
@@ -48,6 +53,12 @@ HRESULT checkLineUse(const D3D11_TEXTURE1D_DESC& d, bool hasData, const std::str
 }
 
 HRESULT checkLineFormat(const D3D11_TEXTURE1D_DESC& d, SurfaceFormat& format, const std::string& at) {
+    if (d.BindFlags & D3D11_BIND_DEPTH_STENCIL) {  // D32_FLOAT, D24_UNORM_S8_UINT ...: a depth texture the DSV draws into
+        const DepthFamily* family = depthFamilyOfView(d.Format);
+        if (!family) return fail(E_INVALIDARG, at + "Format = " + formatName(d.Format) + " with BIND_DEPTH_STENCIL: not a depth format");
+        format = family->sampled;
+        return S_OK;
+    }
     if (!textureFormat(d.Format, format) || depthFamilyOf(d.Format) || isCompressedFormat(format))
         return fail(d.Format == DXGI_FORMAT_UNKNOWN || (textureFormat(d.Format, format) && isCompressedFormat(format)) ? E_INVALIDARG : E_NOTIMPL,
                     at + "Format = " + formatName(d.Format) + " (" + std::to_string(d.Format) +

@@ -1,11 +1,12 @@
-// Array textures: CreateTexture2D with ArraySize > 1 (no TEXTURECUBE), a device-core
+// Array textures: CreateTexture2D with ArraySize > 1 (and cube arrays: TEXTURECUBE with 6N), a device-core
 // Texture2DArray (or CPU memory for USAGE_STAGING), and their views. A shader-resource view sees
 // any range of levels and slices (a part through a texture view sharing the texels); a
 // render-target or depth-stencil view is one slice of one level (a cascaded shadow map: a
 // typeless depth array drawn slice by slice, sampled as a whole) or a layered view of several,
 // drawn into through SV_RenderTargetArrayIndex. D3D numbers subresources level + slice *
 // MipLevels, which pInitialData follows. Not here yet: unordered-access arrays, multisampled
-// arrays (Texture2DMSArray), cube arrays.
+// arrays (Texture2DMSArray). A cube array's TEXTURECUBEARRAY view is a GL cube map array view of
+// its layers.
 #include <cstring>
 
 #include "d3d11_impl.h"
@@ -27,8 +28,11 @@ HRESULT checkArrayScope(const D3D11_TEXTURE2D_DESC& d, const std::string& at) {
                                    ": fxport's array textures are SHADER_RESOURCE, RENDER_TARGET and DEPTH_STENCIL only (no UAV arrays yet)");
     if (d.BindFlags & ~UINT(D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_RENDER_TARGET | D3D11_BIND_DEPTH_STENCIL))
         return fail(E_NOTIMPL, at + "BindFlags = " + std::to_string(d.BindFlags) + ": only SHADER_RESOURCE, RENDER_TARGET and DEPTH_STENCIL for an array texture");
-    if (d.MiscFlags & ~UINT(D3D11_RESOURCE_MISC_GENERATE_MIPS))
-        return fail(E_NOTIMPL, at + "MiscFlags = " + std::to_string(d.MiscFlags) + ": an array texture takes D3D11_RESOURCE_MISC_GENERATE_MIPS only");
+    if (d.MiscFlags & ~UINT(D3D11_RESOURCE_MISC_GENERATE_MIPS | D3D11_RESOURCE_MISC_TEXTURECUBE))
+        return fail(E_NOTIMPL, at + "MiscFlags = " + std::to_string(d.MiscFlags) + ": an array texture takes D3D11_RESOURCE_MISC_GENERATE_MIPS and TEXTURECUBE only");
+    if ((d.MiscFlags & D3D11_RESOURCE_MISC_TEXTURECUBE) && (d.ArraySize % 6 != 0 || d.Width != d.Height))
+        return fail(E_INVALIDARG, at + "ArraySize = " + std::to_string(d.ArraySize) + ", Width x Height = " + std::to_string(d.Width) + " x " +
+                                      std::to_string(d.Height) + " with D3D11_RESOURCE_MISC_TEXTURECUBE (a cube array is square, 6 faces a cube)");
     return S_OK;
 }
 
@@ -49,8 +53,8 @@ HRESULT arrayFormat(const D3D11_TEXTURE2D_DESC& d, bool hasData, SurfaceFormat& 
                                       ": a depth texture a shader samples is made typeless (R32_TYPELESS, R24G8_TYPELESS, R16_TYPELESS)");
     if (depthTarget && (d.MiscFlags & D3D11_RESOURCE_MISC_GENERATE_MIPS))
         return fail(E_INVALIDARG, at + "MiscFlags = D3D11_RESOURCE_MISC_GENERATE_MIPS with BIND_DEPTH_STENCIL (mips are generated for render targets)");
-    if (family && family->typeless == DXGI_FORMAT_R24G8_TYPELESS && hasData)
-        return fail(E_NOTIMPL, at + "Format = DXGI_FORMAT_R24G8_TYPELESS with pInitialData: fxport does not upload packed depth-stencil texels");
+    if (family && hasStencil(family->depth) && hasData)
+        return fail(E_NOTIMPL, at + "Format = " + formatName(d.Format) + " with pInitialData: fxport does not upload packed depth-stencil texels");
     if (depthTarget && hasData) return fail(E_INVALIDARG, at + "BindFlags has DEPTH_STENCIL and pInitialData is given");
     if (family) {
         format = family->sampled;
@@ -137,8 +141,49 @@ HRESULT createTextureArray(Device* device, const D3D11_TEXTURE2D_DESC& d, const 
     });
 }
 
+namespace {
+
+bool isCubeArray(const Texture& t) { return (t.desc.MiscFlags & D3D11_RESOURCE_MISC_TEXTURECUBE) != 0; }
+
+// A TEXTURECUBEARRAY view of a cube array: NumCubes cubes from face First2DArrayFace.
+HRESULT cubeArrayShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc, ID3D11ShaderResourceView** pp) {
+    const std::string call = "CreateShaderResourceView", at = call + ": D3D11_SHADER_RESOURCE_VIEW_DESC.";
+    D3D11_SHADER_RESOURCE_VIEW_DESC d;
+    d.Format = t->desc.Format;
+    d.ViewDimension = D3D11_SRV_DIMENSION_TEXTURECUBEARRAY;
+    d.TextureCubeArray = {0, UINT(t->levels), 0, UINT(t->slices() / 6)};
+    if (pDesc) {
+        if (HRESULT f = checkViewFormat(call.c_str(), "D3D11_SHADER_RESOURCE_VIEW_DESC", pDesc->Format, *t, false); FAILED(f)) return f;
+        const auto& c = pDesc->TextureCubeArray;
+        const UINT levels = c.MipLevels == UINT(-1) && c.MostDetailedMip < UINT(t->levels) ? UINT(t->levels) - c.MostDetailedMip : c.MipLevels;
+        if (c.MostDetailedMip >= UINT(t->levels) || levels == 0 || levels > UINT(t->levels) - c.MostDetailedMip)
+            return fail(E_INVALIDARG, at + "TextureCubeArray = {MostDetailedMip " + std::to_string(c.MostDetailedMip) + ", MipLevels " +
+                                          std::to_string(c.MipLevels) + "} (the texture has " + std::to_string(t->levels) + " levels)");
+        if (c.NumCubes == 0 || c.First2DArrayFace >= UINT(t->slices()) || c.NumCubes > (UINT(t->slices()) - c.First2DArrayFace) / 6)
+            return fail(E_INVALIDARG, at + "TextureCubeArray = {First2DArrayFace " + std::to_string(c.First2DArrayFace) + ", NumCubes " +
+                                          std::to_string(c.NumCubes) + "} (the texture has " + std::to_string(t->slices()) + " faces)");
+        d.TextureCubeArray = {c.MostDetailedMip, levels, c.First2DArrayFace, c.NumCubes};
+        if (pDesc->Format != DXGI_FORMAT_UNKNOWN) d.Format = pDesc->Format;
+    }
+    if (!pp) return succeed();
+    return guarded(call.c_str(), [&] {
+        auto view = std::unique_ptr<ShaderResourceView, void (*)(ShaderResourceView*)>(new ShaderResourceView(device, t, d),
+                                                                                       [](ShaderResourceView* v) { v->Release(); });
+        const auto& c = d.TextureCubeArray;
+        view->arrayRange = std::make_unique<fxport::Texture2DArray>(*t->array, int(c.MostDetailedMip), int(c.MipLevels),
+                                                                    fxport::Texture2DArray::Cubes{int(c.First2DArrayFace), int(c.NumCubes)});
+        *pp = view.release();
+        return succeed();
+    });
+}
+
+}  // namespace
+
 HRESULT arrayShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc, ID3D11ShaderResourceView** pp) {
     const std::string call = "CreateShaderResourceView", at = call + ": D3D11_SHADER_RESOURCE_VIEW_DESC.";
+    // A cube array is viewed as cubes by default (D3D's view of the whole resource), or as 2D slices.
+    if (isCubeArray(*t) && (!pDesc || pDesc->ViewDimension == D3D11_SRV_DIMENSION_TEXTURECUBEARRAY))
+        return cubeArrayShaderResourceView(device, t, pDesc, pp);
     D3D11_SHADER_RESOURCE_VIEW_DESC d;
     d.Format = t->desc.Format;
     d.ViewDimension = D3D11_SRV_DIMENSION_TEXTURE2DARRAY;
@@ -146,7 +191,8 @@ HRESULT arrayShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_R
     if (pDesc) {
         if (pDesc->ViewDimension != D3D11_SRV_DIMENSION_TEXTURE2DARRAY)
             return fail(pDesc->ViewDimension == D3D11_SRV_DIMENSION_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
-                        at + "ViewDimension = " + std::to_string(pDesc->ViewDimension) + " (fxport views an array texture as D3D11_SRV_DIMENSION_TEXTURE2DARRAY)");
+                        at + "ViewDimension = " + std::to_string(pDesc->ViewDimension) + " (fxport views an array texture as D3D11_SRV_DIMENSION_TEXTURE2DARRAY" +
+                            (isCubeArray(*t) ? std::string(", a cube array also as TEXTURECUBEARRAY; a TEXTURECUBE view of it: not yet)") : std::string(")")));
         if (HRESULT f = checkViewFormat(call.c_str(), "D3D11_SHADER_RESOURCE_VIEW_DESC", pDesc->Format, *t, false); FAILED(f)) return f;
         const auto& a = pDesc->Texture2DArray;
         if (a.MostDetailedMip >= UINT(t->levels))

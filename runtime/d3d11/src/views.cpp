@@ -32,10 +32,19 @@ Texture* textureOf(Device* device, ID3D11Resource* resource, const char* call, H
     return t;
 }
 
-// A typeless (depth) texture is viewed only through a description naming the view's format.
+// A typeless texture is viewed only through a description naming the view's format.
 HRESULT needsDescription(const char* call, const Texture& t, bool given) {
-    if (given || !depthFamilyOf(t.desc.Format)) return S_OK;
+    SurfaceFormat stored;
+    if (given || (!depthFamilyOf(t.desc.Format) && !typelessColourStorage(t.desc.Format, stored))) return S_OK;
     return fail(E_INVALIDARG, std::string(call) + ": pDesc is null for a " + formatName(t.desc.Format) + " texture (a typeless texture's view names its Format)");
+}
+
+// Render-target and unordered-access views of a typeless colour texture write its stored format.
+HRESULT checkStoredFormat(const char* call, const char* desc, DXGI_FORMAT viewFormat, const Texture& t) {
+    if (viewSurface(viewFormat, t) == t.format) return S_OK;
+    return fail(E_NOTIMPL, std::string(call) + ": " + desc + ".Format = " + formatName(viewFormat) + " of a " + formatName(t.desc.Format) +
+                               " texture: fxport writes it in the format it stores (" + surfaceFormatName(t.format) +
+                               "); shader-resource views read the others");
 }
 
 // FirstElement's byte offset must be a multiple of the GL's alignment for a view of part of a
@@ -172,14 +181,25 @@ HRESULT Device::CreateShaderResourceView(ID3D11Resource* pResource, const D3D11_
                                        ", MipLevels " + std::to_string(levels) + "}: fxport views every level (0, -1)");
     }
     if (pDesc && pDesc->Format != DXGI_FORMAT_UNKNOWN) d.Format = pDesc->Format;
+    const SurfaceFormat read = viewSurface(d.Format, *t);
+    if (read != t->format && (!t->colour || multisampled))
+        return fail(E_NOTIMPL, std::string(call) + ": D3D11_SHADER_RESOURCE_VIEW_DESC.Format = " + formatName(d.Format) + " of a " +
+                                   formatName(t->desc.Format) + " " + (t->cube ? "cube" : "multisampled") +
+                                   " texture: fxport reads those in their stored format only");
     if (!ppSRView) return succeed();
-    *ppSRView = new ShaderResourceView(this, t, d);
-    return succeed();
+    return guarded(call, [&] {
+        auto view = std::unique_ptr<ShaderResourceView, void (*)(ShaderResourceView*)>(new ShaderResourceView(this, t, d),
+                                                                                       [](ShaderResourceView* v) { v->Release(); });
+        if (read != t->format) view->formatView = std::make_unique<fxport::Texture2D>(*t->colour, read);  // a GL texture view
+        *ppSRView = view.release();
+        return succeed();
+    });
 }
 
 HRESULT Device::CreateRenderTargetView(ID3D11Resource* pResource, const D3D11_RENDER_TARGET_VIEW_DESC* pDesc,
                                        ID3D11RenderTargetView** ppRTView) {
     const char* call = "CreateRenderTargetView";
+    if (auto* l = dynamic_cast<LineTexture*>(pResource); l && &l->device() == this) return lineRenderTargetView(this, l, pDesc, ppRTView);
     HRESULT hr;
     Texture* t = textureOf(this, pResource, call, hr);
     if (!t) return hr;
@@ -199,6 +219,8 @@ HRESULT Device::CreateRenderTargetView(ID3D11Resource* pResource, const D3D11_RE
                         std::string(call) + ": D3D11_RENDER_TARGET_VIEW_DESC.ViewDimension = " + std::to_string(pDesc->ViewDimension) +
                             " (fxport views this texture as D3D11_RTV_DIMENSION_" + (multisampled ? "TEXTURE2DMS" : "TEXTURE2D") + ")");
         if (HRESULT f = checkViewFormat(call, "D3D11_RENDER_TARGET_VIEW_DESC", pDesc->Format, *t, false); FAILED(f)) return f;
+        if (HRESULT f = checkStoredFormat(call, "D3D11_RENDER_TARGET_VIEW_DESC", pDesc->Format, *t); FAILED(f)) return f;
+        if (pDesc->Format != DXGI_FORMAT_UNKNOWN) d.Format = pDesc->Format;
         if (!multisampled && pDesc->Texture2D.MipSlice != 0)
             return fail(E_NOTIMPL, std::string(call) + ": D3D11_RENDER_TARGET_VIEW_DESC.Texture2D.MipSlice = " +
                                        std::to_string(pDesc->Texture2D.MipSlice) + ": fxport renders into level 0");
@@ -211,6 +233,7 @@ HRESULT Device::CreateRenderTargetView(ID3D11Resource* pResource, const D3D11_RE
 HRESULT Device::CreateDepthStencilView(ID3D11Resource* pResource, const D3D11_DEPTH_STENCIL_VIEW_DESC* pDesc,
                                        ID3D11DepthStencilView** ppDepthStencilView) {
     const char* call = "CreateDepthStencilView";
+    if (auto* l = dynamic_cast<LineTexture*>(pResource); l && &l->device() == this) return lineDepthStencilView(this, l, pDesc, ppDepthStencilView);
     HRESULT hr;
     Texture* t = textureOf(this, pResource, call, hr);
     if (!t) return hr;
@@ -291,6 +314,8 @@ HRESULT Device::CreateUnorderedAccessView(ID3D11Resource* pResource, const D3D11
                             std::string(call) + ": D3D11_UNORDERED_ACCESS_VIEW_DESC.ViewDimension = " + std::to_string(pDesc->ViewDimension) +
                                 " for a 2D texture (D3D11_UAV_DIMENSION_TEXTURE2D)");
             if (HRESULT f = checkViewFormat(call, "D3D11_UNORDERED_ACCESS_VIEW_DESC", pDesc->Format, *t, false); FAILED(f)) return f;
+            if (HRESULT f = checkStoredFormat(call, "D3D11_UNORDERED_ACCESS_VIEW_DESC", pDesc->Format, *t); FAILED(f)) return f;
+            if (pDesc->Format != DXGI_FORMAT_UNKNOWN) d.Format = pDesc->Format;
             if (pDesc->Texture2D.MipSlice != 0)
                 return fail(E_NOTIMPL, std::string(call) + ": D3D11_UNORDERED_ACCESS_VIEW_DESC.Texture2D.MipSlice = " +
                                            std::to_string(pDesc->Texture2D.MipSlice) + ": fxport writes level 0");

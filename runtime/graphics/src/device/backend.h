@@ -115,7 +115,8 @@ enum class QueryKind {
     VerticesSubmitted, PrimitivesSubmitted, VertexShaderInvocations, GeometryShaderInvocations, GeometryShaderPrimitives,
     ClippingInputPrimitives, ClippingOutputPrimitives, FragmentShaderInvocations, TessControlPatches, TessEvaluationInvocations,
     ComputeShaderInvocations,
-    PrimitivesWritten,  // by stream output (between beginStreamOutput and endStreamOutput)
+    PrimitivesWritten,    // by stream output (between beginStreamOutput and endStreamOutput)
+    PrimitivesGenerated,  // for stream output, whether or not they fitted (D3D's PrimitivesStorageNeeded)
 };
 inline constexpr int kPipelineStatistics = 11;  // QueryKind::VerticesSubmitted + 0 .. 10
 inline QueryKind pipelineStatistic(int i) { return QueryKind(int(QueryKind::VerticesSubmitted) + i); }
@@ -138,8 +139,15 @@ public:
     virtual void setBlend(const BlendState& state, const BlendState* had) = 0;
     virtual void setDepthStencil(const DepthStencilState& state, const DepthStencilState* had) = 0;
     virtual void setRasterizer(const RasterizerState& state, const RasterizerState* had) = 0;
+    // Viewport 0, and (unshifted) every other index of the viewport array too, so that an index
+    // nothing set draws through viewport 0.
     virtual void setViewport(const Viewport& viewport, ViewportShift shift) = 0;
-    virtual void setScissor(const Rectangle& rectangle) = 0;  // the rectangle; RasterizerState switches the test
+    // D3D10/11's viewports 1..more.size() (a pre-rasteriser stage's SV_ViewportArrayIndex picks
+    // one), each with its own depth range; sent after setViewport.
+    virtual void setMoreViewports(const std::vector<Viewport>& more, ViewportShift shift) = 0;
+    // The rectangle of every viewport; RasterizerState switches the test.
+    virtual void setScissor(const Rectangle& rectangle) = 0;
+    virtual void setMoreScissors(const std::vector<Rectangle>& more) = 0;  // of viewports 1.., after setScissor
     virtual void setSrgbWrite(bool enabled) = 0;              // encode into sRGB-encoded targets (D3D9 SRGBWriteEnable)
     // Clip planes 0..count-1 on, the others off: the SV_ClipDistance values the last stage before
     // the rasteriser writes (D3D clips by every one a shader writes; GL only by those enabled).
@@ -239,6 +247,9 @@ public:
     // both; it is deleted with deleteTexture (the source's texels stay). 0 when the API cannot make views.
     virtual BackendObject createTextureView(BackendObject source, SurfaceFormat format, bool array, int firstLevel, int levels, int firstLayer,
                                             int layers) = 0;
+    // The same over a 2D array's layers read as cubes (a cube map array: `layers` a multiple of 6,
+    // square levels; D3D11's TEXTURECUBEARRAY view). 0 when the API cannot make it.
+    virtual BackendObject createCubeArrayView(BackendObject source, SurfaceFormat format, int firstLevel, int levels, int firstLayer, int layers) = 0;
     // Multisampled 2D textures (D3D10+'s SampleDesc.Count > 1), fixed sample positions: render
     // targets a shader reads sample by sample. `given` is the count the driver made (it may round
     // up). copySamples copies level 0 between a multisampled and a single-sample texture of one
@@ -294,14 +305,16 @@ public:
 
     // Stream output: the draws between beginStreamOutput and endStreamOutput write the captured
     // outputs of primitives of `primitiveVertices` vertices (1 points, 2 lines, 3 triangles) to
-    // `buffers` (one per slot, bytes 0: none) and count the primitives written into `query` (a
-    // PrimitivesWritten query). Rasterizer discard drops every primitive after it (D3D11's
+    // `buffers` (one per slot, bytes 0: none), count the primitives written into `written` (a
+    // PrimitivesWritten query) and those generated, written or not, into `generated` (a
+    // PrimitivesGenerated query). Rasterizer discard drops every primitive after it (D3D11's
     // D3D11_SO_NO_RASTERIZED_STREAM).
     struct StreamOutputBuffer {
         BackendObject buffer = 0;
         std::size_t offset = 0, bytes = 0;
     };
-    virtual void beginStreamOutput(const std::array<StreamOutputBuffer, 4>& buffers, int primitiveVertices, BackendObject query) = 0;
+    virtual void beginStreamOutput(const std::array<StreamOutputBuffer, 4>& buffers, int primitiveVertices, BackendObject written,
+                                   BackendObject generated) = 0;
     virtual void endStreamOutput() = 0;
     virtual void setRasterizerDiscard(bool discard) = 0;
 

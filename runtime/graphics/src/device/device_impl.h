@@ -74,6 +74,10 @@ struct GraphicsDevice::Impl {
     // A depth/stencil buffer of its own that replaces the first target's (front_end_core.h: D3D11's
     // depth-stencil views are apart from render targets). Null for XNA, whose targets own theirs.
     DepthStorage* depthOverride = nullptr;
+    // D3D10/11's viewports and scissor rectangles 1.. (setMoreViewports); index 0 is the device's
+    // Viewport and ScissorRectangle. Empty for XNA.
+    std::vector<fxport::Viewport> moreViewports;
+    std::vector<Rectangle> moreScissors;
     void generateMipsOfUnboundTargets(const std::vector<RenderTargetBinding>& previous);
 
     // --- shaders set by EffectPass::Apply (a stage left null keeps what was there)
@@ -118,6 +122,8 @@ struct GraphicsDevice::Impl {
     };
     std::array<StreamTarget, xlate::kStreamOutputSlots> streamTargets{};
     BackendObject primitivesWrittenQuery = 0;
+    BackendObject primitivesGeneratedQuery = 0;
+    std::uint64_t streamOutputWritten = 0, streamOutputNeeded = 0;  // since the device was made (core::streamOutputCounts)
     // Every draw goes through here: with stream output, wrapped in its capture.
     void issueDraw(const DrawCall& call);
     // The bound vertex program's xlate::kStartVertexUniform set to the draw's start vertex (a
@@ -284,7 +290,7 @@ struct GraphicsDevice::Impl {
     // Texture creation first requires the format (ArgumentError naming it when the driver lacks it).
     void requireSampleable(SurfaceFormat format);
     bool isSampleable(SurfaceFormat format);  // asked of the backend once per format
-    std::array<std::int8_t, 64> sampleableFormats{};  // per SurfaceFormat: 0 not asked, 1 yes, -1 no
+    std::array<std::int8_t, kSurfaceFormatCount> sampleableFormats{};  // per SurfaceFormat: 0 not asked, 1 yes, -1 no
     BackendObject createTexture(bool cube, SurfaceFormat format, int levels, int width, int height);
     BackendObject createVolumeTexture(SurfaceFormat format, int levels, int width, int height, int depth);
     BackendObject createArrayTexture(SurfaceFormat format, int levels, int width, int height, int layers);

@@ -53,7 +53,7 @@ void GraphicsDevice::Impl::flush(const char* what) {
     shadow.setDepthStencil(testOff ? fxport::DepthStencilState::None : wanted);
     shadow.setRasterizer(device.RasterizerState);
     applyViewport(device.Viewport);
-    shadow.setScissor(device.ScissorRectangle);
+    shadow.setScissor(device.ScissorRectangle, moreScissors);
     applyShaders();
     applyTextures();
     if (applyStorage(shaders.data(), shaders.size(), what)) storageDirty = true;  // the draw writes: barrier before what follows
@@ -176,7 +176,8 @@ const char* shapeName(xlate::TextureKind kind) {
 // kinds do not mark arrays).
 xlate::TextureKind shapeOf(Texture::Kind kind) {
     switch (kind) {
-    case Texture::Kind::TextureCube: return xlate::TextureKind::TextureCube;
+    case Texture::Kind::TextureCube:
+    case Texture::Kind::TextureCubeArray: return xlate::TextureKind::TextureCube;
     case Texture::Kind::Texture3D: return xlate::TextureKind::Texture3D;
     case Texture::Kind::Texture1D:
     case Texture::Kind::Texture1DArray: return xlate::TextureKind::Texture1D;
@@ -253,7 +254,7 @@ void GraphicsDevice::Impl::applyViewport(const fxport::Viewport& w) {
     // 1/256 pixel down the rows (docs/DESIGN.md).
     const ShaderProgram* vertex = shaders[0];
     const bool d3d9 = vertex && vertex->shader && vertex->shader->needsD3D9PixelOffset;
-    shadow.setViewport(w, d3d9 ? ViewportShift{0.5f, 0.5f - 1.0f / 256.0f} : ViewportShift{});
+    shadow.setViewport(w, d3d9 ? ViewportShift{0.5f, 0.5f - 1.0f / 256.0f} : ViewportShift{}, moreViewports);
 }
 
 BackendObject GraphicsDevice::Impl::samplerFor(const SamplerState& s) {

@@ -175,10 +175,11 @@ DepthBuffer::DepthBuffer(GraphicsDevice& device, Texture2D& texture) : GraphicsR
     switch (texture.Format()) {
     case SurfaceFormat::Depth32: storage_.format = DepthFormat::Depth32F; break;
     case SurfaceFormat::Depth24Stencil8: storage_.format = DepthFormat::Depth24Stencil8; break;
+    case SurfaceFormat::Depth32Stencil8: storage_.format = DepthFormat::Depth32FStencil8; break;
     case SurfaceFormat::Depth16: storage_.format = DepthFormat::Depth16; break;
     default:
         throw ArgumentError(describe() + ": a texture of format " + surfaceFormatName(texture.Format()) +
-                            " is not a depth texture (Depth32, Depth24Stencil8 or Depth16)");
+                            " is not a depth texture (Depth32, Depth24Stencil8, Depth32Stencil8 or Depth16)");
     }
     storage_.width = texture.Width();
     storage_.height = texture.Height();
@@ -288,6 +289,15 @@ void setTargets(GraphicsDevice& device, const std::vector<RenderTargetBinding>& 
         d.bindTargets();
         device.Viewport = fxport::Viewport(0, 0, d.targetWidth, d.targetHeight);
     }
+}
+
+void setMoreViewports(GraphicsDevice& device, const std::vector<Viewport>& viewports, const std::vector<Rectangle>& scissors) {
+    constexpr std::size_t kMost = 15;  // D3D11's 16 viewports (GL 4.1 has at least 16) less index 0
+    if (viewports.size() > kMost || scissors.size() > kMost)
+        throw ArgumentError(std::to_string(std::max(viewports.size(), scissors.size()) + 1) + " viewports or scissor rectangles; at most 16");
+    GraphicsDevice::Impl& d = deviceImpl(device);
+    d.moreViewports = viewports;
+    d.moreScissors = scissors;
 }
 
 // --- draws
@@ -430,8 +440,8 @@ void clearTexture(Texture& texture, const Vector4& color) {
 void clearDepthBuffer(GraphicsDevice& device, DepthBuffer& buffer, bool depth, bool stencil, float depthValue,
                       int stencilValue) {
     DepthStorage& s = buffer.storage();
-    const bool hasStencil = s.format == DepthFormat::Depth24Stencil8;
-    stencil = stencil && hasStencil;
+    const bool stencilled = hasStencil(s.format);
+    stencil = stencil && stencilled;
     if (!depth && !stencil) return;
     if (s.renderbuffer == 0) {  // not made yet: the clear waits on it (depth_storage.cpp)
         s.waitingClear |= (depth ? unsigned(ClearOptions::DepthBuffer) : 0u) | (stencil ? unsigned(ClearOptions::Stencil) : 0u);
@@ -440,7 +450,7 @@ void clearDepthBuffer(GraphicsDevice& device, DepthBuffer& buffer, bool depth, b
         return;
     }
     GraphicsDevice::Impl& d = deviceImpl(device);
-    d.backend->clearDepthStencil(s.renderbuffer, hasStencil, s.isTexture, depth, stencil, depthValue, stencilValue);
+    d.backend->clearDepthStencil(s.renderbuffer, stencilled, s.isTexture, depth, stencil, depthValue, stencilValue);
     d.shadow.invalidate();  // the next draw sets every state again (masks, scissor)
 }
 

@@ -90,7 +90,7 @@ public:
     // `samples` > 0: multisampled, for multisampled colour targets of that count (D3D11's
     // SampleDesc.Count); ArgumentError beyond the driver's count.
     DepthBuffer(GraphicsDevice& device, int width, int height, DepthFormat format, int samples = 0);
-    // The depth buffer that is level 0 of `texture` (SurfaceFormat Depth32, Depth24Stencil8 or
+    // The depth buffer that is level 0 of `texture` (SurfaceFormat Depth32, Depth24Stencil8, Depth32Stencil8 or
     // Depth16): what draws write through it, shaders sample from the texture (a D3D11 shadow map's
     // DSV and SRV). Made at once; `texture` must outlive it.
     DepthBuffer(GraphicsDevice& device, Texture2D& texture);
@@ -149,10 +149,24 @@ void setStorageBuffer(GraphicsDevice& device, bool unorderedAccess, int slot, co
 // kStreamOutputAppend from its streamOutputFilled(). Each draw moves the write position on.
 inline constexpr std::size_t kStreamOutputAppend = ~std::size_t(0);
 void setStreamOutputTargets(GraphicsDevice& device, const std::array<ByteBuffer*, 4>& buffers, const std::array<std::size_t, 4>& offsets);
+// The primitives stream output has written, and those it was given (written or not: a buffer
+// without room drops them), since the device was made: D3D11's SO_STATISTICS queries are the
+// difference between two readings. Stream 0 only (the one fxport captures); exact, since each
+// streaming draw waits for its counts.
+struct StreamOutputCounts {
+    std::uint64_t written = 0, needed = 0;
+};
+StreamOutputCounts streamOutputCounts(GraphicsDevice& device);
 
 // Binds colour targets and a depth buffer of their size (null: none); the targets' own depth
 // buffers are not used. Resets the device's Viewport to the whole target (as SetRenderTargets).
 void setTargets(GraphicsDevice& device, const std::vector<RenderTargetBinding>& colour, DepthBuffer* depth);
+
+// D3D10/11's viewports and scissor rectangles 1.. (RSSetViewports / RSSetScissorRects with more
+// than one; a pre-rasteriser stage's SV_ViewportArrayIndex picks one); the device's Viewport and
+// ScissorRectangle are index 0. Kept until set again (empty: index 0 only, as for XNA). ArgumentError
+// beyond D3D11's 16 in all.
+void setMoreViewports(GraphicsDevice& device, const std::vector<Viewport>& viewports, const std::vector<Rectangle>& scissors);
 
 // One attribute of a vertex stream: the vertex-shader input it feeds, matched by semantic whatever
 // the name (D3D11 input layouts name any: "CASCADE0", "CLIP_DISTANCE0"), and how its bytes read.

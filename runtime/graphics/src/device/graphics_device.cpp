@@ -345,7 +345,8 @@ void GraphicsDevice::Impl::noteDrawnTargets() {
     const bool tests = device.DepthStencilState.DepthBufferEnable || device.DepthStencilState.StencilEnable;
     const fxport::Viewport& v = device.Viewport;
     Rectangle area(v.X, v.Y, v.Width, v.Height);
-    if (device.RasterizerState.ScissorTestEnable) {
+    if (!moreViewports.empty()) area = Rectangle(0, 0, targetWidth, targetHeight);  // a D3D11 draw into several: the whole target
+    else if (device.RasterizerState.ScissorTestEnable) {
         const Rectangle& s = device.ScissorRectangle;
         const int x0 = std::max(area.X, s.X), y0 = std::max(area.Y, s.Y);
         const int x1 = std::min(area.X + area.Width, s.X + s.Width), y1 = std::min(area.Y + area.Height, s.Y + s.Height);
@@ -392,7 +393,7 @@ void GraphicsDevice::Impl::bindTargets() {
         for (const RenderTargetBinding& b : bindings)
             colour.push_back({b.RenderTarget->backendObject(), b.RenderTarget->kind() == Texture::Kind::TextureCube ? int(b.CubeMapFace) : -1});
         std::string problem;
-        fbo = backend->createFramebuffer(colour, depth, depthFormat == DepthFormat::Depth24Stencil8, depthIsTexture, problem);
+        fbo = backend->createFramebuffer(colour, depth, hasStencil(depthFormat), depthIsTexture, problem);
         if (fbo == 0)
             throw InvalidOperation("GraphicsDevice.SetRenderTargets: the driver rejects this combination of targets (" +
                                    std::string(surfaceFormatName(first->Format())) + ", " + problem + ")");

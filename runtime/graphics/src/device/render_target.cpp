@@ -56,6 +56,12 @@ RenderTarget2D::RenderTarget2D(Texture2DArray& array, int layer, int level, int 
     adoptDepth(device(), depth_, DepthFormat::None, Width(), Height());
 }
 
+RenderTarget2D::RenderTarget2D(fxport::GraphicsDevice& device, int width, SurfaceFormat format, std::uint32_t row)
+    : Texture2D(device, "RenderTarget2D", width, 1, format, row), usage_(fxport::RenderTargetUsage::PreserveContents) {
+    checkRenderable(this->device(), describe(), Format());
+    adoptDepth(this->device(), depth_, DepthFormat::None, Width(), Height());
+}
+
 RenderTarget2D::~RenderTarget2D() { disposeFromDestructor(); }
 
 void RenderTarget2D::releaseGpuObjects() {

@@ -21,18 +21,22 @@ void StateShadow::setRasterizer(const RasterizerState& wanted) {
     rasterizer_ = wanted;
 }
 
-bool StateShadow::setViewport(const Viewport& wanted, ViewportShift shift) {
-    if (!unknown_ && wanted == viewport_ && shift == viewportShift_) return false;
+bool StateShadow::setViewport(const Viewport& wanted, ViewportShift shift, const std::vector<Viewport>& more) {
+    if (!unknown_ && wanted == viewport_ && shift == viewportShift_ && more == moreViewports_) return false;
     backend_.setViewport(wanted, shift);
+    if (!more.empty()) backend_.setMoreViewports(more, shift);
     viewport_ = wanted;
     viewportShift_ = shift;
+    moreViewports_ = more;
     return true;
 }
 
-void StateShadow::setScissor(const Rectangle& wanted) {
-    if (!unknown_ && wanted == scissor_) return;
+void StateShadow::setScissor(const Rectangle& wanted, const std::vector<Rectangle>& more) {
+    if (!unknown_ && wanted == scissor_ && more == moreScissors_) return;
     backend_.setScissor(wanted);
+    if (!more.empty()) backend_.setMoreScissors(more);
     scissor_ = wanted;
+    moreScissors_ = more;
 }
 
 void StateShadow::setSrgbWrite(bool wanted) {
@@ -59,6 +63,7 @@ void StateShadow::reapply() {
     backend_.setDepthStencil(depthStencil_, nullptr);
     backend_.setRasterizer(rasterizer_, nullptr);
     backend_.setScissor(scissor_);
+    if (!moreScissors_.empty()) backend_.setMoreScissors(moreScissors_);
 }
 
 }  // namespace fxport

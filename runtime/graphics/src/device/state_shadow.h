@@ -4,6 +4,8 @@
 // calls settle(). Texture and sampler bindings (draw_state.cpp) follow the same unknown() flag.
 #pragma once
 
+#include <vector>
+
 #include "device/backend.h"
 
 namespace fxport {
@@ -22,9 +24,10 @@ public:
     void setBlend(const BlendState& wanted);
     void setDepthStencil(const DepthStencilState& wanted);
     void setRasterizer(const RasterizerState& wanted);
-    // Returns whether the viewport was sent (it changed, or the shadow is unknown).
-    bool setViewport(const Viewport& wanted, ViewportShift shift = {});
-    void setScissor(const Rectangle& wanted);
+    // Returns whether the viewport was sent (it changed, or the shadow is unknown). `more`: D3D10/11's
+    // viewports 1.. (none for XNA); any change sends them all again, since viewport 0 resets them.
+    bool setViewport(const Viewport& wanted, ViewportShift shift = {}, const std::vector<Viewport>& more = {});
+    void setScissor(const Rectangle& wanted, const std::vector<Rectangle>& more = {});
     void setSrgbWrite(bool wanted);
     void setClipPlanes(int wanted);
     void setPointSize(float size, bool fromShader);
@@ -46,7 +49,9 @@ private:
     RasterizerState rasterizer_;
     Viewport viewport_;
     ViewportShift viewportShift_;
+    std::vector<Viewport> moreViewports_;
     Rectangle scissor_;
+    std::vector<Rectangle> moreScissors_;
     bool srgbWrite_ = false;
     int clipPlanes_ = 0;
     float pointSize_ = 1;

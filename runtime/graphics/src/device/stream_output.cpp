@@ -48,11 +48,14 @@ void GraphicsDevice::Impl::issueDraw(const DrawCall& call) {
         backend->draw(call);
     } else {
         if (!primitivesWrittenQuery) primitivesWrittenQuery = backend->createQuery(QueryKind::PrimitivesWritten);
+        if (!primitivesGeneratedQuery) primitivesGeneratedQuery = backend->createQuery(QueryKind::PrimitivesGenerated);
         const int vertices = capturedPrimitiveVertices(*last, call.type);
-        backend->beginStreamOutput(buffers, vertices, primitivesWrittenQuery);
+        backend->beginStreamOutput(buffers, vertices, primitivesWrittenQuery, primitivesGeneratedQuery);
         backend->draw(call);
         backend->endStreamOutput();
         const std::uint64_t written = backend->queryResult(primitivesWrittenQuery);
+        streamOutputWritten += written;
+        streamOutputNeeded += backend->queryResult(primitivesGeneratedQuery);
         for (std::size_t slot = 0; slot < buffers.size(); ++slot) {
             if (so->strides[slot] == 0) continue;
             StreamTarget& t = streamTargets[slot];
@@ -69,6 +72,11 @@ void GraphicsDevice::Impl::forgetStreamTarget(const core::ByteBuffer* buffer) {
 }
 
 namespace core {
+
+StreamOutputCounts streamOutputCounts(GraphicsDevice& device) {
+    const GraphicsDevice::Impl& d = deviceImpl(device);
+    return {d.streamOutputWritten, d.streamOutputNeeded};
+}
 
 void setStreamOutputTargets(GraphicsDevice& device, const std::array<ByteBuffer*, 4>& buffers, const std::array<std::size_t, 4>& offsets) {
     GraphicsDevice::Impl& d = deviceImpl(device);

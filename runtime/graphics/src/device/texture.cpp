@@ -104,6 +104,12 @@ Texture2D::Texture2D(fxport::GraphicsDevice& device, const char* typeName, int w
     name_ = adopted;
 }
 
+Texture2D::Texture2D(Texture2D& source, SurfaceFormat format)
+    : Texture(source.device(), "Texture2D", Kind::Texture2D, format, source.LevelCount()), width_(source.Width()), height_(source.Height()) {
+    name_ = deviceImpl(device()).createTextureView(describe() + " as " + surfaceFormatName(format), source.backendObject(), format, false, 0,
+                                                   levels_, 0, 1);
+}
+
 void Texture2D::create(bool) {
     name_ = deviceImpl(device()).createTexture(false, format_, levels_, width_, height_);
 }

@@ -1,6 +1,7 @@
 #include "fxport/graphics/texture_1d.h"
 
 #include "device/device_impl.h"
+#include "fxport/graphics/render_target.h"
 #include "fxport/graphics/errors.h"
 
 namespace fxport {
@@ -50,6 +51,21 @@ Texture1D::Texture1D(Texture1D& source, int firstLevel, int levels, int firstLay
 }
 
 Texture1D::~Texture1D() { disposeFromDestructor(); }
+
+std::uint32_t Texture1D::rowView(const char* who, int layer, int level, int layers) {
+    checkSubresource(who, level, layer);
+    if (layers < 1 || layers > layers_ - layer)
+        throw ArgumentError(describe() + ": " + who + ": layers " + range(layer, layers) + " of " + std::to_string(layers_));
+    return deviceImpl(device()).createTextureView(describe() + ": " + who, name_, format_, layers > 1, level, 1, layer, layers);
+}
+
+// A framebuffer takes a 1D texture as an image one row high (and a 1D array layered), so the 2D
+// target and depth paths draw into rows unchanged.
+Texture2D::Texture2D(Texture1D& line, int layer, int level, int layers)
+    : Texture2D(line.device(), "Texture2D", line.levelWidth(level), 1, line.Format(), line.rowView("a Texture2D over rows", layer, level, layers)) {}
+
+RenderTarget2D::RenderTarget2D(Texture1D& line, int layer, int level, int layers)
+    : RenderTarget2D(line.device(), line.levelWidth(level), line.Format(), line.rowView("a RenderTarget2D over rows", layer, level, layers)) {}
 
 std::size_t Texture1D::rowBytes(int level) const { return regionBytes(format_, levelWidth(level), 1); }
 

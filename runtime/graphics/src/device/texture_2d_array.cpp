@@ -47,6 +47,20 @@ Texture2DArray::Texture2DArray(Texture2DArray& source, int firstLevel, int level
     name_ = deviceImpl(device()).createTextureView(describe(), source.backendObject(), format_, true, firstLevel, levels, firstLayer, layers);
 }
 
+Texture2DArray::Texture2DArray(Texture2DArray& source, int firstLevel, int levels, Cubes cubes)
+    : Texture(source.device(), "TextureCubeArray", Kind::TextureCubeArray, source.Format(), levels),
+      width_(source.levelWidth(std::max(firstLevel, 0))), height_(source.levelHeight(std::max(firstLevel, 0))), layers_(6 * cubes.cubes) {
+    if (firstLevel < 0 || levels <= 0 || firstLevel + levels > source.LevelCount() || cubes.firstLayer < 0 || cubes.cubes <= 0 ||
+        cubes.firstLayer + layers_ > source.Layers() || source.Width() != source.Height())
+        throw ArgumentError(describe() + ": " + std::to_string(cubes.cubes) + " cubes from layer " + std::to_string(cubes.firstLayer) + ", levels " +
+                            range(firstLevel, levels) + " of " + source.describe() + " (" + std::to_string(source.Width()) + "x" +
+                            std::to_string(source.Height()) + ", " + std::to_string(source.LevelCount()) + " levels, " +
+                            std::to_string(source.Layers()) + " layers; cubes are square)");
+    name_ = deviceImpl(device()).backend->createCubeArrayView(source.backendObject(), format_, firstLevel, levels, cubes.firstLayer, layers_);
+    if (name_ == 0) throw InvalidOperation(describe() + ": the graphics API could not make a cube map array view");
+    ++deviceImpl(device()).live.textures;  // deleted as any texture view is
+}
+
 Texture2DArray::~Texture2DArray() { disposeFromDestructor(); }
 
 std::uint32_t Texture2DArray::layerView(const char* who, int layer, int level, int layers) {

@@ -266,7 +266,25 @@ void GlBackend::setViewport(const Viewport& w, ViewportShift shift) {
     glDepthRangef(w.MinDepth, w.MaxDepth);
 }
 
+void GlBackend::setMoreViewports(const std::vector<Viewport>& more, ViewportShift shift) {
+    // glViewport and glDepthRangef (setViewport) set every index; these follow them.
+    for (std::size_t i = 0; i < more.size(); ++i) {
+        const Viewport& w = more[i];
+        const GLuint index = GLuint(i + 1);
+        glViewportIndexedf(index, float(w.X) + shift.x, float(w.Y) + shift.y, float(w.Width), float(w.Height));
+        glDepthRangeIndexed(index, w.MinDepth, w.MaxDepth);
+    }
+}
+
+// glScissor sets the rectangle of every viewport.
 void GlBackend::setScissor(const Rectangle& w) { glScissor(w.X, w.Y, std::max(0, w.Width), std::max(0, w.Height)); }
+
+void GlBackend::setMoreScissors(const std::vector<Rectangle>& more) {
+    for (std::size_t i = 0; i < more.size(); ++i) {
+        const Rectangle& w = more[i];
+        glScissorIndexed(GLuint(i + 1), w.X, w.Y, std::max(0, w.Width), std::max(0, w.Height));
+    }
+}
 
 void GlBackend::setSrgbWrite(bool enabled) {
     // Converts only on sRGB-encoded attachments (SurfaceFormat::ColorSRgb); others are written

@@ -30,7 +30,9 @@ public:
     void setDepthStencil(const DepthStencilState& state, const DepthStencilState* had) override;
     void setRasterizer(const RasterizerState& state, const RasterizerState* had) override;
     void setViewport(const Viewport& viewport, ViewportShift shift) override;
+    void setMoreViewports(const std::vector<Viewport>& more, ViewportShift shift) override;
     void setScissor(const Rectangle& rectangle) override;
+    void setMoreScissors(const std::vector<Rectangle>& more) override;
     void setSrgbWrite(bool enabled) override;
     void setClipPlanes(int count) override;
     void setPointSize(float size, bool fromShader) override;
@@ -101,6 +103,7 @@ public:
     void writeVolume(BackendObject texture, SurfaceFormat format, int level, int width, int height, int depth, const void* data) override;
     BackendObject createArrayTexture(SurfaceFormat format, int levels, int width, int height, int layers) override;
     BackendObject createLineTexture(SurfaceFormat format, int levels, int width, int layers, bool array) override;
+    BackendObject createCubeArrayView(BackendObject source, SurfaceFormat format, int firstLevel, int levels, int firstLayer, int layers) override;
     BackendObject createTextureView(BackendObject source, SurfaceFormat format, bool array, int firstLevel, int levels, int firstLayer,
                                     int layers) override;
     BackendObject createMultisampleTexture(SurfaceFormat format, int samples, int width, int height, int& given) override;
@@ -122,7 +125,8 @@ public:
     void invalidateFramebuffer(int colourTargets, bool depth, bool stencil) override;
 
     BackendObject createProgram(int stage, const std::string& source, const std::vector<std::string>& captured, std::string& log) override;
-    void beginStreamOutput(const std::array<StreamOutputBuffer, 4>& buffers, int primitiveVertices, BackendObject query) override;
+    void beginStreamOutput(const std::array<StreamOutputBuffer, 4>& buffers, int primitiveVertices, BackendObject written,
+                           BackendObject generated) override;
     void endStreamOutput() override;
     void setRasterizerDiscard(bool discard) override {
         if (discard) glEnable(GL_RASTERIZER_DISCARD);

@@ -15,7 +15,7 @@ constexpr GLenum kSrgbDxt1 = 0x8C4D, kSrgbDxt3 = 0x8C4E, kSrgbDxt5 = 0x8C4F;
 
 // Indexed by SurfaceFormat. Bgr565/Bgra5551/Bgra4444 use GL's packed types with BGRA order so the
 // bytes XNA hands us upload unchanged.
-const std::array<detail::GlTextureFormat, 64> kFormats = {{
+const std::array<detail::GlTextureFormat, kSurfaceFormatCount> kFormats = {{
     {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, 4, 4, false, false},                     // Color
     {GL_RGB565, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, 2, 3, false, false},              // Bgr565
     {GL_RGB5_A1, GL_BGRA, GL_UNSIGNED_SHORT_1_5_5_5_REV, 2, 4, false, false},      // Bgra5551
@@ -81,6 +81,10 @@ const std::array<detail::GlTextureFormat, 64> kFormats = {{
     {GL_RG16_SNORM, GL_RG, GL_SHORT, 4, 2, false, false},                             // Rg16SNorm
     {GL_RGBA16_SNORM, GL_RGBA, GL_SHORT, 8, 4, false, false},                         // Rgba16SNorm
     {GL_RGB10_A2UI, GL_RGBA_INTEGER, GL_UNSIGNED_INT_2_10_10_10_REV, 4, 4, false, true},  // Rgb10A2UInt
+    // No alpha stored: GL drops the fourth byte on upload and reads alpha as 1 (sampling, blending).
+    {GL_RGB8, GL_BGRA, GL_UNSIGNED_BYTE, 4, 4, false, false},   // Bgrx32
+    {GL_SRGB8, GL_BGRA, GL_UNSIGNED_BYTE, 4, 4, false, false},  // Bgrx32SRgb
+    {GL_DEPTH32F_STENCIL8, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, 8, 1, true, false},  // Depth32Stencil8
 }};
 
 const char* const kFormatNames[] = {
@@ -93,10 +97,10 @@ const char* const kFormatNames[] = {
     "Bgra32", "Bgra32SRgb", "R16", "Rg8", "R8", "Depth24Stencil8", "Depth16",
     "Dxt1", "Dxt3", "Dxt5", "Dxt1SRgb", "Dxt3SRgb", "Dxt5SRgb", "Bc4", "Bc4SNorm", "Bc5", "Bc5SNorm",
     "Bc6hUFloat", "Bc6hSFloat", "Bc7", "Bc7SRgb", "Rg11B10Float", "Rgb9E5Float", "R16SNorm", "Rg16SNorm",
-    "Rgba16SNorm", "Rgb10A2UInt",
+    "Rgba16SNorm", "Rgb10A2UInt", "Bgrx32", "Bgrx32SRgb", "Depth32Stencil8",
 };
 static_assert(std::size(kFormatNames) == kFormats.size(), "one name per SurfaceFormat");
-static_assert(std::size_t(SurfaceFormat::Rgb10A2UInt) + 1 == kFormats.size(), "one row per SurfaceFormat");
+static_assert(std::size_t(SurfaceFormat::Depth32Stencil8) + 1 == kFormats.size(), "one row per SurfaceFormat");
 
 }  // namespace
 
@@ -119,6 +123,7 @@ const char* depthFormatName(DepthFormat format) {
     case DepthFormat::Depth24: return "Depth24";
     case DepthFormat::Depth24Stencil8: return "Depth24Stencil8";
     case DepthFormat::Depth32F: return "Depth32F";
+    case DepthFormat::Depth32FStencil8: return "Depth32FStencil8";
     }
     return "?";
 }
@@ -134,6 +139,7 @@ GLenum glDepthFormat(DepthFormat format) {
     case DepthFormat::Depth24: return GL_DEPTH_COMPONENT24;
     case DepthFormat::Depth24Stencil8: return GL_DEPTH24_STENCIL8;
     case DepthFormat::Depth32F: return GL_DEPTH_COMPONENT32F;
+    case DepthFormat::Depth32FStencil8: return GL_DEPTH32F_STENCIL8;
     }
     return GL_NONE;
 }
@@ -143,7 +149,8 @@ bool isColorRenderable(SurfaceFormat format) {
     // Nor are shared-exponent texels; compressed ones never are.
     if (isCompressedFormat(format) || format == SurfaceFormat::Rgb9E5Float) return false;
     return format != SurfaceFormat::NormalizedByte2 && format != SurfaceFormat::NormalizedByte4 && format != SurfaceFormat::Depth32 &&
-           format != SurfaceFormat::Depth24Stencil8 && format != SurfaceFormat::Depth16 && format != SurfaceFormat::R16SNorm &&
+           format != SurfaceFormat::Depth24Stencil8 && format != SurfaceFormat::Depth16 &&
+           format != SurfaceFormat::Depth32Stencil8 && format != SurfaceFormat::R16SNorm &&
            format != SurfaceFormat::Rg16SNorm && format != SurfaceFormat::Rgba16SNorm;
 }
 

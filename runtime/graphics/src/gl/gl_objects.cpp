@@ -175,6 +175,20 @@ BackendObject GlBackend::createTextureView(BackendObject source, SurfaceFormat f
     return name;
 }
 
+// GL lets a 2D array texture be viewed as a cube map array (ARB_texture_view's compatible targets).
+BackendObject GlBackend::createCubeArrayView(BackendObject source, SurfaceFormat format, int firstLevel, int levels, int firstLayer, int layers) {
+    GLuint name = 0;
+    glGenTextures(1, &name);
+    glTextureView(name, GL_TEXTURE_CUBE_MAP_ARRAY, source, detail::glFormat(format).internalFormat, GLuint(firstLevel), GLuint(levels),
+                  GLuint(firstLayer), GLuint(layers));
+    if (!glIsTexture(name)) {
+        glDeleteTextures(1, &name);
+        return 0;
+    }
+    applyD3D9Swizzle(name, format);
+    return name;
+}
+
 BackendObject GlBackend::createMultisampleTexture(SurfaceFormat format, int samples, int width, int height, int& given) {
     GLuint name = 0;
     glCreateTextures(GL_TEXTURE_2D_MULTISAMPLE, 1, &name);
@@ -351,6 +365,7 @@ GLenum queryTarget(QueryKind kind) {
     case QueryKind::TessEvaluationInvocations: return GL_TESS_EVALUATION_SHADER_INVOCATIONS_ARB;
     case QueryKind::ComputeShaderInvocations: return GL_COMPUTE_SHADER_INVOCATIONS_ARB;
     case QueryKind::PrimitivesWritten: return GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN;
+    case QueryKind::PrimitivesGenerated: return GL_PRIMITIVES_GENERATED;
     }
     return GL_SAMPLES_PASSED;
 }
@@ -381,19 +396,22 @@ void GlBackend::endStatistic(QueryKind kind) { glEndQuery(queryTarget(kind)); }
 
 // Transform feedback on GL's default object: D3D binds its stream-output targets per draw from the
 // device's state, so no object needs to outlive a draw.
-void GlBackend::beginStreamOutput(const std::array<StreamOutputBuffer, 4>& buffers, int primitiveVertices, BackendObject query) {
+void GlBackend::beginStreamOutput(const std::array<StreamOutputBuffer, 4>& buffers, int primitiveVertices, BackendObject written,
+                                  BackendObject generated) {
     for (std::size_t slot = 0; slot < buffers.size(); ++slot) {
         const StreamOutputBuffer& b = buffers[slot];
         if (b.bytes == 0) glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, GLuint(slot), 0);
         else glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, GLuint(slot), b.buffer, GLintptr(b.offset), GLsizeiptr(b.bytes));
     }
-    glBeginQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, query);
+    glBeginQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, written);
+    glBeginQuery(GL_PRIMITIVES_GENERATED, generated);
     glBeginTransformFeedback(primitiveVertices == 1 ? GL_POINTS : primitiveVertices == 2 ? GL_LINES : GL_TRIANGLES);
 }
 
 void GlBackend::endStreamOutput() {
     glEndTransformFeedback();
     glEndQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
+    glEndQuery(GL_PRIMITIVES_GENERATED);
     for (GLuint slot = 0; slot < 4; ++slot) glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, slot, 0);
 }
 

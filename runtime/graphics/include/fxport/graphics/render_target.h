@@ -39,6 +39,9 @@ public:
     // each primitive goes to the layer its SV_RenderTargetArrayIndex names (the first when none is
     // written, as D3D), a clear clears every layer; its texels are read through `array`.
     RenderTarget2D(Texture2DArray& array, int layer, int level, int layers = 1);
+    // fxport: the same over rows of a 1D texture (D3D11's 1D render-target view): one texel high,
+    // layered over several layers of a 1D array. `line` must outlive it.
+    RenderTarget2D(Texture1D& line, int layer, int level, int layers = 1);
     ~RenderTarget2D() override;
 
     DepthFormat DepthStencilFormat() const { return depth_.format; }
@@ -58,6 +61,7 @@ protected:
     void releaseGpuObjects() override;
 
 private:
+    RenderTarget2D(fxport::GraphicsDevice& device, int width, SurfaceFormat format, std::uint32_t row);  // over a 1D view
     fxport::RenderTargetUsage usage_;
     DepthStorage depth_;
 };

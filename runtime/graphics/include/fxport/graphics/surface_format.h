@@ -61,12 +61,19 @@ enum class SurfaceFormat : std::uint8_t {
     Rgb9E5Float,   // a shared 5-bit exponent (D3D's R9G9B9E5_SHAREDEXP): sampled only
     R16SNorm, Rg16SNorm, Rgba16SNorm,
     Rgb10A2UInt,   // D3D's R10G10B10A2_UINT
+    Bgrx32,        // BGRX8 unorm in memory (D3D's B8G8R8X8_UNORM): the fourth byte is unused, alpha reads 1
+    Bgrx32SRgb,    // the same, sRGB-encoded
+    Depth32Stencil8,  // 32-bit float depth and 8-bit stencil in 8 bytes (D3D's R32G8X24_TYPELESS shadow map)
 };
 
 enum class DepthFormat : std::uint8_t {
     None, Depth16, Depth24, Depth24Stencil8,
     Depth32F,  // fxport addition (D3D10+'s D32_FLOAT): 32-bit float depth, no stencil
+    Depth32FStencil8,  // fxport addition (D3D10+'s D32_FLOAT_S8X24_UINT): 32-bit float depth and 8-bit stencil
 };
+inline constexpr int kSurfaceFormatCount = int(SurfaceFormat::Depth32Stencil8) + 1;
+
+inline bool hasStencil(DepthFormat f) { return f == DepthFormat::Depth24Stencil8 || f == DepthFormat::Depth32FStencil8; }
 
 // What happens to a render target's contents when it is set as a target again, as XNA 4 on Windows:
 // SetRenderTarget(s) clears a DiscardContents target (colour to GraphicsDevice::DiscardColor, depth

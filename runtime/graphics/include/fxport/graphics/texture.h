@@ -19,7 +19,7 @@ enum class CubeMapFace : std::uint8_t { PositiveX, NegativeX, PositiveY, Negativ
 
 class Texture : public GraphicsResource {
 public:
-    enum class Kind : std::uint8_t { Texture2D, TextureCube, Texture3D, Texture2DArray, Texture1D, Texture1DArray };
+    enum class Kind : std::uint8_t { Texture2D, TextureCube, Texture3D, Texture2DArray, Texture1D, Texture1DArray, TextureCubeArray };
 
     SurfaceFormat Format() const { return format_; }
     int LevelCount() const { return levels_; }
@@ -52,6 +52,7 @@ protected:
 };
 
 class Texture2DArray;
+class Texture1D;
 
 class Texture2D : public Texture {
 public:
@@ -62,6 +63,13 @@ public:
     // `layers` > 1: that many layers from `layer`, a layered depth buffer's texture (draws reach
     // the layer SV_RenderTargetArrayIndex names); read and write texels through `array` then.
     Texture2D(Texture2DArray& array, int layer, int level, int layers = 1);
+    // fxport: the same over rows of a 1D texture (`line`'s layers of `level`; one texel high): a
+    // D3D11 1D depth-stencil view's depth buffer is made over it. `line` must outlive it.
+    Texture2D(Texture1D& line, int layer, int level, int layers = 1);
+    // fxport: every level of `source` read as `format`, sharing its texels (a D3D11 shader-resource
+    // view of a typeless texture in another format of its family: sRGB of a linear BC1, SNORM of
+    // BC4). `format` has `source`'s bytes per texel or block; `source` must outlive it.
+    Texture2D(Texture2D& source, SurfaceFormat format);
     ~Texture2D() override;
 
     int Width() const { return width_; }

@@ -32,6 +32,10 @@ public:
     void getData(int level, int layer, void* data, std::size_t bytes) const;  // the whole row
     std::size_t rowBytes(int level) const;  // one layer of `level`
     int levelWidth(int level) const { return Texture::levelWidth(width_, level); }
+    // fxport internals: a new backend texture over `layers` layers from `layer` of one level, 1D for
+    // one layer, a 1D array for more (RenderTarget2D's and Texture2D's constructors over rows take
+    // it: D3D11's 1D render-target and depth-stencil views); ArgumentError naming `who` outside it.
+    std::uint32_t rowView(const char* who, int layer, int level, int layers = 1);
 
 private:
     void checkSubresource(const char* call, int level, int layer) const;

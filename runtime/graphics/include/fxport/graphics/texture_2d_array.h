@@ -1,7 +1,8 @@
 // Texture2DArray (fxport; D3D10+'s Texture2DArray, GL's 2D array texture): `layers` 2D images of
 // one size, format and mip chain, sampled by HLSL's Texture2DArray with (u, v, layer). Texel data
 // is one level of one layer at a time, rows top first. A view sees a range of another array's
-// levels and layers and shares its texels (D3D11's shader-resource view of a sub-range).
+// levels and layers and shares its texels (D3D11's shader-resource view of a sub-range), or sees
+// them as cubes (GL's cube map array: HLSL's TextureCubeArray).
 #pragma once
 
 #include <cstddef>
@@ -19,6 +20,12 @@ public:
     // A view of `source`: levels [firstLevel, firstLevel + levels), layers [firstLayer, firstLayer +
     // layers). `source` must outlive it. ArgumentError for a range outside the source.
     Texture2DArray(Texture2DArray& source, int firstLevel, int levels, int firstLayer, int layers);
+    // A view of `source`'s layers read as cubes (HLSL's TextureCubeArray; Kind::TextureCubeArray):
+    // `cubes` cubes of 6 layers each from `firstLayer`, square levels. ArgumentError otherwise.
+    struct Cubes {
+        int firstLayer, cubes;
+    };
+    Texture2DArray(Texture2DArray& source, int firstLevel, int levels, Cubes cubes);
     ~Texture2DArray() override;
 
     int Width() const { return width_; }    // level 0's (of the view, for a view)

@@ -24,7 +24,8 @@ long channels(unsigned bits) { return long((bits & kDepth) != 0) + long((bits & 
 
 // As drivers store them: 24-bit depth takes 4 bytes with or without stencil.
 std::int64_t bytesOf(const DepthStorage& storage) {
-    const int perPixel = storage.format == DepthFormat::None ? 0 : storage.format == DepthFormat::Depth16 ? 2 : 4;
+    int perPixel = storage.format == DepthFormat::None ? 0 : storage.format == DepthFormat::Depth16 ? 2 : 4;
+    if (storage.format == DepthFormat::Depth32FStencil8) perPixel = 8;
     return std::int64_t(storage.width) * std::int64_t(storage.height) * perPixel * std::max(storage.samples, 1);
 }
 
@@ -148,7 +149,7 @@ void GraphicsDevice::Impl::leaveDiscardedDepth() {
     discardWaitingDepthClear(kDepthStencil, clearStats.dropped);
     if (storage->renderbuffer == 0) return;
     if (boundFramebuffer == 0) bindTargets();
-    backend->invalidateFramebuffer(0, true, storage->format == DepthFormat::Depth24Stencil8);  // boundFramebuffer
+    backend->invalidateFramebuffer(0, true, hasStencil(storage->format));  // boundFramebuffer
     ++depthStats.invalidated;
 }
 
