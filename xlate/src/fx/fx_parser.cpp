@@ -646,13 +646,25 @@ private:
                 parseAnnotations();
                 blank(a, pos_);
             }
-            while (accept(",")) {  // float a, b : TEXCOORD0; -- rare; keep first member's data
-                expectIdentifier("a struct member name");
-                parseArrayDims();
-                if (accept(":")) expectIdentifier("a semantic");
+            // `float4 a, b : TEXCOORD1;` declares two members of one type (and modifiers); each has its
+            // own dimensions and semantic. Every one is a member: reflection, layout and linkage see them all.
+            std::vector<FxStructMember> more;
+            while (accept(",")) {
+                FxStructMember next;
+                next.type = m.type;
+                next.modifiers = m.modifiers;
+                next.name = expectIdentifier("a struct member name");
+                next.arrayDims = parseArrayDims();
+                while (accept(":")) {
+                    std::string sem = expectIdentifier("a semantic");
+                    if (cur().is("(")) pos_ = skipGroup(pos_, "semantic");
+                    else next.semantic = sem;
+                }
+                more.push_back(std::move(next));
             }
             expect(";", ("after member '" + m.name + "' of struct '" + s.name + "'").c_str());
             s.members.push_back(std::move(m));
+            for (auto& n : more) s.members.push_back(std::move(n));
         }
         if (!inherited.empty()) inheritMembers(s, std::move(inherited), open);
         while (!isEnd() && !cur().is(";")) ++pos_;  // optional declarators
