@@ -8,6 +8,7 @@
 #include "spirv/gather_offsets.h"
 #include "spirv/integer_matrices.h"
 #include "spirv/live_uniform_bytes.h"
+#include "spirv/write_only_images.h"
 
 #include <spirv_cross/spirv_glsl.hpp>
 
@@ -388,7 +389,8 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
             for (PackedBlock& b : packed)
                 if (!b.glslDeclarable && module.reparse()) flattenConstantBuffer(module, b);
             if (module.reparse())
-                runSpirvPasses(module, {integerMatricesAsArrays, fetchOffsetsIntoCoordinates, gatherOffsetsAsFourGathers, domainLayerOutputs});
+                runSpirvPasses(module, {integerMatricesAsArrays, fetchOffsetsIntoCoordinates, gatherOffsetsAsFourGathers, domainLayerOutputs,
+                                        writeOnlyImagesWithoutFormat});
             spirv = module.assemble();
         }
         const auto live = liveUniformBytes(spirv);
