@@ -49,6 +49,7 @@
 #include "rewrite/attribute_case.h"
 #include "rewrite/builtin_type_typedefs.h"
 #include "rewrite/keyword_case.h"
+#include "rewrite/rasterizer_ordered_views.h"
 #include "rewrite/literal_suffixes.h"
 #include "fx/render_states.h"
 #include "fx/shader_profile.h"
@@ -134,9 +135,14 @@ using FailedShaders = std::map<std::string, Diagnostic>;
 struct OwnedRequest {
     std::string source;
     HlslToSpirvRequest request;
+    static std::string joinedNames(const std::vector<std::string>& names) {
+        std::string joined;
+        for (const auto& n : names) joined += n + ",";
+        return joined;
+    }
     static std::string keyOf(const HlslToSpirvRequest& r) {
         return std::to_string(static_cast<int>(r.stage)) + "|" + r.entryPoint + "|" + (r.dx9Compatible ? "9" : "") + "|" +
-               std::to_string(r.shaderModel) + "|" + r.hullPartitioning + "|" + *r.source;
+               std::to_string(r.shaderModel) + "|" + r.hullPartitioning + "|" + joinedNames(r.rasterizerOrderedViews) + "|" + *r.source;
     }
 };
 
@@ -672,6 +678,7 @@ int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile
     const bool tessellationStage = (expected == ShaderStage::Hull || expected == ShaderStage::Domain) && entryFunction;
     if (tessellationStage) checkStageAttributes(syntax_, *entryFunction, profile, stageAttributes);
     if (expected == ShaderStage::Hull) request.hullPartitioning = stageAttributes.partitioning;
+    if (expected == ShaderStage::Pixel) request.rasterizerOrderedViews = syntax_.rasterizerOrderedViews;
     SpirvModule spirv = frontEnd(request);
     // A vector passed to a scalar parameter of the effect's own function: fxc uses .x (warning
     // X3206), glslang finds no overload. Compile again with overloads that take vectors there
@@ -1382,8 +1389,11 @@ CompiledEffect compileUncached(const std::string& source, const std::string& dis
     pre.text = builtinTypeTypedefsResolved(pre.text);  // { typedef half2 float; float v; } -> { half2 v; }
     pre.text = typeKeywordsLowerCased(pre.text);      // Matrix m -> matrix m
     pre.text = entryAttributeNamesLowerCased(pre.text);  // [MaxVertexCount(3)] -> [maxvertexcount(3)]
+    std::vector<std::string> orderedViews;
+    pre.text = rasterizerOrderedViewsAsUavs(pre.text, orderedViews);  // RasterizerOrderedTexture2D -> RWTexture2D
 
     EffectSyntax syntax = parseEffect(pre.text, pre.map, isLooseShaderCompile(options));
+    syntax.rasterizerOrderedViews = std::move(orderedViews);
     CompiledEffect effect;
     effect.sourcePath = displayPath;
     effect.diagnostics = pre.warnings;

@@ -191,6 +191,7 @@ struct EffectSyntax {
     std::vector<FxShaderVariable> shaderVariables;
     std::vector<TextEdit> edits;  // framework syntax to remove before glslang sees the text
     std::vector<std::string> cbuffers;  // names of user cbuffers, in declaration order
+    std::vector<std::string> rasterizerOrderedViews;  // variables declared RasterizerOrdered* (spelled RW* since)
     std::vector<int> cbufferRegisters;  // per cbuffer: register(bN) as written, -1 when none
     std::map<std::string, std::string> typedefs;  // `typedef vector<half, 3> vec3;`: vec3 -> vector<half,3>
     // Compiled as fxc /T ps_4_0 compiles a file (loose shaders, no effect profile): fxc then parses
