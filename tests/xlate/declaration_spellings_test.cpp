@@ -143,3 +143,22 @@ TEST(DeclarationSpellings, StructMemberListsDeclareEveryMember) {
     ASSERT_EQ(vs.inputs.size(), 2u);
     EXPECT_EQ(vs.inputs[1].semantic, "COLOR0");
 }
+
+// uav-rwbuffer L69, L98: a UAV of double2 elements (four 32-bit words) that no function touches
+// compiles, as fxc drops it; double3 (six words) stays refused as fxc refuses it (L61).
+TEST(DeclarationSpellings, UnusedDoubleUavsAreDropped) {
+    auto compileSm5 = [](const std::string& declarations) {
+        CompileOptions o;
+        o.useCache = false;
+        try {
+            compileEffectSource(declarations + "float4 PS() : SV_Target1 { return 0; }\n"
+                                               "technique11 T { pass P { SetPixelShader(CompileShader(ps_5_0, PS())); } }\n",
+                                "virtual/DoubleUavs.fx", o);
+        } catch (const CompileError& error) {
+            return error.diagnostics().front().message;
+        }
+        return std::string();
+    };
+    EXPECT_EQ(compileSm5("RWBuffer<double2> u;\nRasterizerOrderedBuffer<double2> v;\nRWBuffer<double> w;\n"), "");
+    EXPECT_NE(compileSm5("RWBuffer<double3> u;\n"), "");
+}
