@@ -32,6 +32,14 @@ protected:
 class HlslAcceptedFormsSm4 : public HlslAcceptedForms {};
 class HlslAcceptedFormsSm5 : public HlslAcceptedForms {};
 
+// side-effects L33: fxc calls the index's function before the base's (xlate/src/rewrite/
+// index_evaluation_order.h): the index call sees i = 1 (1.1 -> element 1), the base call i = 2,
+// so element 1 of (2.1, 2.2, 2.3, 2.4); base first would give element 2 of (1.1 ... 1.4), 1.3.
+TEST_P(HlslAcceptedForms, SubscriptIndexCallRunsBeforeItsBaseCall) {
+    expectPixel("float4 bump() { static uint i; i += 1; return float4(0.1, 0.2, 0.3, 0.4) + i; }", "return bump()[bump().x];",
+                {2.2f, 2.2f, 2.2f, 2.2f});
+}
+
 // Struct definitions that also declare variables, anonymous ones, and ones inside another struct's
 // member list (xlate/src/rewrite/struct_definitions.cpp).
 TEST_P(HlslAcceptedForms, StructDefinitionsWithDeclarators) {
