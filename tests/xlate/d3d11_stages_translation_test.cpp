@@ -376,3 +376,18 @@ TEST(D3D11Stages, RasterizerOrderedViewsRunInPrimitiveOrder) {
     const std::string unused = declarations + "float4 main(float4 pos : SV_Position) : SV_Target\n{\n    return pos;\n}\n";
     EXPECT_EQ(compileLoose(unused, "ps_5_0").shaders.at(0).glsl.find("Interlock"), std::string::npos);
 }
+
+// numthreads L111, L125, L208: a compute entry declared before its definition. The first
+// declaration's attributes are the function's (the definition's are dropped), so a prototype
+// without [numthreads] leaves the entry without one, which fxc refuses; the prototype itself does
+// not reach glslang, which took it for the entry ("No function definition") or a recursion.
+TEST(D3D11Stages, ComputeEntryPrototypesGiveTheAttributes) {
+    const CompiledEffect bare = compileLoose("    [numthreads(1, 1, 1)]\nvoid main();\n\nvoid main() {}\n", "cs_5_0");
+    EXPECT_EQ(bare.shaders.at(0).threadGroupSize, (std::array<int, 3>{1, 1, 1}));
+    const CompiledEffect first = compileLoose(
+        "RWTexture2D<float> u;\n[numthreads(2, 1, 1)]\nvoid main(uint2 id);\n[numthreads(1, 2, 1)]\n"
+        "void main(uint2 id : sv_dispatchthreadid)\n{\n    u[id] = 2.0;\n}\n",
+        "cs_5_0");
+    EXPECT_EQ(first.shaders.at(0).threadGroupSize, (std::array<int, 3>{2, 1, 1}));
+    EXPECT_THROW(compileLoose("void main();\n\n    [numthreads(1, 1, 1)]\nvoid main() {}\n", "cs_5_0"), CompileError);
+}

@@ -202,6 +202,7 @@ private:
     std::map<std::string, OwnedRequest>* collecting_ = nullptr;
     const Prefetched* prefetched_ = nullptr;
     SpirvModule frontEnd(const HlslToSpirvRequest& request);
+    std::string effectText(ShaderStage stage, const std::string& entry, std::vector<TextEdit> extra = {}) const;
 
     Diagnostic at(Severity s, const char* id, const std::string& message, size_t token) const {
         const Token& t = syntax_.tokens[std::min(token, syntax_.tokens.size() - 1)];
@@ -528,7 +529,7 @@ int EffectBuilder::compileShader(const FxShaderExpr& expr, ShaderStage expected,
     }
     std::string source;
     if (!options_.skipShaders) {
-        source = expected == ShaderStage::Geometry ? rewritten_.hlslForGeometryShader(expr.entry) : rewritten_.hlsl;
+        source = effectText(expected, expr.entry);
         if (wrapped) source += wrapper.code;
         if (expected == ShaderStage::Hull) {
             Tessellation t;
@@ -607,6 +608,22 @@ int EffectBuilder::compileAsmShader(const FxShaderExpr& expr, ShaderStage expect
     shown.profile = program.profile.name;
     return emitShader(key, program.profile, shown, displayEntry, signature, source, kWrapperEntry, wrapper,
                       rewritten_.dx9Samplers || !translated.samplers.empty());
+}
+
+// The effect's HLSL for compiling `entry` at `stage`, with `extra` edits. A stage compiled as
+// written (geometry, hull, domain, compute: no entry wrapper) loses the entry's prototypes: glslang
+// names its own entry function like the HLSL one and resolves a call through `void main();` to
+// itself ("Recursion detected"), or takes the prototype as the entry ("No function definition");
+// nothing can call an entry point, so no prototype is needed (numthreads L111, L208).
+std::string EffectBuilder::effectText(ShaderStage stage, const std::string& entry, std::vector<TextEdit> extra) const {
+    const bool asWritten = stage != ShaderStage::Vertex && stage != ShaderStage::Pixel;
+    const auto& t = syntax_.tokens;
+    if (asWritten)
+        for (const FxFunction& f : syntax_.functions)
+            if (f.name == entry)
+                for (const TokenSpan& p : f.prototypes) extra.push_back({t[p.begin].offset, t[p.end - 1].end, {}});
+    if (extra.empty() && stage != ShaderStage::Geometry) return rewritten_.hlsl;
+    return rewritten_.hlslForGeometryShader(stage == ShaderStage::Geometry ? entry : std::string(), extra);
 }
 
 // hlslToSpirv(), or what the prefetch computed for the same request, or (collecting) nothing: the
@@ -695,11 +712,11 @@ int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile
         return grew;
     };
     // The effect's part of the source (what follows it: the entry wrapper, translated asm) is kept.
-    const std::string base = expected == ShaderStage::Geometry ? rewritten_.hlslForGeometryShader(expr.entry) : rewritten_.hlsl;
+    const std::string base = effectText(expected, expr.entry);
     const bool retryable = source.compare(0, base.size(), base) == 0;
     for (int round = 0; retryable && round < 16 && collect(spirv); ++round) {
         std::vector<TextEdit> overloads = vectorToScalarOverloads(syntax_, unmatched);
-        std::string retried = rewritten_.hlslForGeometryShader(expected == ShaderStage::Geometry ? expr.entry : std::string(), overloads);
+        std::string retried = effectText(expected, expr.entry, overloads);
         retried += source.substr(base.size());
         request.source = &retried;
         SpirvModule next = frontEnd(request);

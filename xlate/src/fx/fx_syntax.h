@@ -164,6 +164,7 @@ struct FxFunction {
     // before the definition, else `token`. fxc's entry point among overloads is the one declared
     // last by this measure (findEntry).
     size_t firstDeclared = 0;
+    std::vector<TokenSpan> prototypes;  // earlier declarations of this overload (`void main();`), attributes and ';' included
     std::string attributes;  // e.g. "[maxvertexcount(3)]"
     TokenSpan attributeTokens;  // where `attributes` is written: before the function, or its first prototype with attributes
     // Where the body may declare each name: the token positions of `T name` (an identifier after an
