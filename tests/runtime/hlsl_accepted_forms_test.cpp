@@ -3,6 +3,7 @@
 // out in C++ beside it), so a rewrite that compiles but computes something else fails too.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -30,6 +31,14 @@ protected:
 // run at those models only.
 class HlslAcceptedFormsSm4 : public HlslAcceptedForms {};
 class HlslAcceptedFormsSm5 : public HlslAcceptedForms {};
+
+// side-effects L33: fxc calls the index's function before the base's (xlate/src/rewrite/
+// index_evaluation_order.h): the index call sees i = 1 (1.1 -> element 1), the base call i = 2,
+// so element 1 of (2.1, 2.2, 2.3, 2.4); base first would give element 2 of (1.1 ... 1.4), 1.3.
+TEST_P(HlslAcceptedForms, SubscriptIndexCallRunsBeforeItsBaseCall) {
+    expectPixel("float4 bump() { static uint i; i += 1; return float4(0.1, 0.2, 0.3, 0.4) + i; }", "return bump()[bump().x];",
+                {2.2f, 2.2f, 2.2f, 2.2f});
+}
 
 // Struct definitions that also declare variables, anonymous ones, and ones inside another struct's
 // member list (xlate/src/rewrite/struct_definitions.cpp).
@@ -404,6 +413,39 @@ technique11 T { pass P { SetComputeShader(CompileShader(cs_5_0, Main())); } }
         EXPECT_EQ(got[k], input[8 + k] + (k < 4 ? 100u : 0u)) << "RWB[0] component " << k;  // B[1], a[0] + 100
         EXPECT_EQ(got[8 + k], input[k]) << "RWB[1] component " << k;                         // B[0] through d.color
     }
+}
+
+// A RWTexture2D<float4> that a compute shader only writes, bound to an RGBA8 (Color) target: D3D
+// converts each store to the view's format, so the target holds the values rounded to 8 bits
+// (xlate/src/spirv/write_only_images.h). With the element type's rgba32f format GL would refuse
+// the binding or leave the target unwritten.
+TEST(HlslAcceptedFormsCompute, WrittenOnlyTypedUavTakesTheTargetsFormat) {
+    const char* const source = R"(RWTexture2D<float4> Out : register(u0);
+[numthreads(2, 2, 1)]
+void Main(uint3 id : SV_DispatchThreadID)
+{
+    Out[id.xy] = float4(0.25, 0.5, 1, id.x + 0.5 * id.y);
+}
+technique11 T { pass P { SetComputeShader(CompileShader(cs_5_0, Main())); } }
+)";
+    GraphicsDevice& device = testDevice();
+    Effect effect(device, EffectSource{source, "rgba8_uav.fx"});
+    RenderTarget2D target(device, 2, 2, false, SurfaceFormat::Color, DepthFormat::None);
+    device.SetUnorderedAccess(0, target);
+    effect.CurrentTechnique->Passes[0].Apply();
+    device.DispatchCompute(1, 1, 1);
+    device.SetUnorderedAccess(0, static_cast<Texture2D*>(nullptr));
+    const std::vector<Vector4> got = target.GetDataAsVector4();
+    ASSERT_EQ(got.size(), 4u);
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 2; ++x) {
+            const Vector4& p = got[size_t(y * 2 + x)];
+            const float w = std::min(1.0f, float(x) + 0.5f * float(y));
+            EXPECT_NEAR(p.X, 64 / 255.0f, 1e-6) << x << "," << y;
+            EXPECT_NEAR(p.Y, 128 / 255.0f, 1e-6) << x << "," << y;
+            EXPECT_NEAR(p.Z, 1.0f, 1e-6) << x << "," << y;
+            EXPECT_NEAR(p.W, std::round(w * 255) / 255.0f, 1e-6) << x << "," << y;
+        }
 }
 
 std::string modelName(const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; }

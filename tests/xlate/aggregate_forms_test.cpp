@@ -109,3 +109,15 @@ TEST(AggregateForms, ListsNotUnderstoodAreLeftToGlslang) {
                             "float4 main(float4 p : SV_Position) : SV_Target\n{\n    float c[4] = { g(p.x), p.zw };\n    return c[0];\n}\n"),
               5);
 }
+
+// A cast to a struct of any expression a cast binds, not only of a variable: a constructor, a
+// parenthesised expression and a swizzle each fill the struct's members in order, converted
+// (`(Pair)float2(a, b)`, `(Quad)(p * 2)` with an int2 member truncating). With p = (0.5, -1.5,
+// 2.25, 4): a = (0.5, 4), q = {(1, -3), (4, 8)}, r = (2.25, -1.5).
+TEST(AggregateForms, CastsOfExpressionsToStructs) {
+    const std::string glsl = pixelGlsl(
+        "struct Pair { float x; float y; };\nstruct Quad { Pair lo; int2 hi; };\nfloat4 main() : SV_Target\n{\n"
+        "    float4 p = float4(0.5, -1.5, 2.25, 4);\n    Pair a = (Pair)float2(p.x, p.w);\n    Quad q = (Quad)(p * 2);\n"
+        "    Pair r = (Pair)p.zy;\n    return float4(a.x + a.y, q.lo.y + q.hi.x, q.hi.y, r.x - r.y);\n}\n");
+    EXPECT_NE(glsl.find("vec4(4.5, 1.0, 8.0, 3.75)"), std::string::npos) << glsl;
+}

@@ -127,7 +127,7 @@ TEST(D3D11Stages, ComputeShaderReflectsThreadGroupAndStorageRegisters) {
     // No register: the next free u registers in declaration order (u0 is taken).
     const StorageBinding& image = storage(cs, "Image");
     EXPECT_EQ(image.kind, StorageKind::Image);
-    EXPECT_EQ(image.format, "rgba32f");
+    EXPECT_EQ(image.format, "");  // only written: the bound texture's format (write_only_images.h)
     const StorageBinding& raw = storage(cs, "Raw");
     EXPECT_EQ(raw.registerClass, 'u');
     EXPECT_NE(image.slot, 0);
@@ -204,7 +204,7 @@ TEST(D3D11Stages, SetComputeShaderInATechnique11PassAndTheFileKeepsIt) {
     const CompiledShader& cs = back.shaders[size_t(back.techniques[0].passes[0].computeShader.shaders.at(0))];
     EXPECT_EQ(cs.threadGroupSize, (std::array<int, 3>{8, 4, 2}));
     EXPECT_EQ(storage(cs, "Weights").binding, kSrvBufferBindingBase + 2);
-    EXPECT_EQ(storage(cs, "Image").format, "rgba32f");
+    EXPECT_EQ(storage(cs, "Image").format, "");
 }
 
 TEST(D3D11Stages, FormsFxcRejectsAreLocatedErrors) {
@@ -343,4 +343,51 @@ TEST(D3D11Stages, EarlyDepthStencilAndConservativeDepth) {
     EXPECT_NE(firstError("RWTexture2D<float4> U;\n[NumThreads(8, 8, 1)]\nvoid main(uint3 t : SV_DispatchThreadID) { U[t.xy] = 1; }\n"
                          "technique11 T { pass P { SetComputeShader(CompileShader(cs_5_0, main())); } }\n"),
               "");
+}
+
+// Rasterizer-ordered views (uav-rwtexture L192-L336, rasteriser-ordered-views L41): each kind is
+// a UAV at its register, indexed as its RW twin is (an int2 index into a 2D one), and a pixel
+// shader that uses one runs its body as a critical section in primitive order: the GLSL asks for
+// ARB_fragment_shader_interlock's pixel_interlock_ordered and begins the interlock before the
+// first image access and ends it at the end. A shader that declares one and never touches it
+// gets no interlock.
+TEST(D3D11Stages, RasterizerOrderedViewsRunInPrimitiveOrder) {
+    const std::string declarations =
+        "RasterizerOrderedTexture2D<uint> tex : register(u1);\nRasterizerOrderedBuffer<float4> buf : register(u2);\n"
+        "RasterizerOrderedStructuredBuffer<float> sb : register(u3);\nRasterizerOrderedByteAddressBuffer raw : register(u4);\n"
+        "RasterizerOrderedTexture1DArray<float> arr : register(u5);\n";
+    const std::string used = declarations +
+                             "float4 main(float4 pos : SV_Position) : SV_Target\n{\n    int2 idx = int2(pos.xy);\n    tex[idx] = tex[idx] + 1;\n"
+                             "    buf[idx.x] = 2;\n    sb[idx.y] = 3;\n    raw.Store(0, 4u);\n    arr[int2(0, 0)] = 5;\n    return 0;\n}\n";
+    const CompiledShader ps = compileLoose(used, "ps_5_0").shaders.at(0);
+    for (const char* name : {"tex", "buf", "sb", "raw", "arr"}) EXPECT_EQ(storage(ps, name).registerClass, 'u') << name;
+    EXPECT_EQ(storage(ps, "tex").slot, 1);
+    EXPECT_EQ(storage(ps, "arr").slot, 5);
+    const size_t mode = ps.glsl.find("layout(pixel_interlock_ordered) in;");
+    const size_t begin = ps.glsl.find("SPIRV_Cross_beginInvocationInterlock();");
+    const size_t load = ps.glsl.find("imageLoad(tex");
+    const size_t end = ps.glsl.find("SPIRV_Cross_endInvocationInterlock();");
+    ASSERT_NE(mode, std::string::npos) << ps.glsl;
+    ASSERT_NE(begin, std::string::npos) << ps.glsl;
+    ASSERT_NE(load, std::string::npos) << ps.glsl;
+    ASSERT_NE(end, std::string::npos) << ps.glsl;
+    EXPECT_LT(begin, load);
+    EXPECT_LT(load, end);
+    const std::string unused = declarations + "float4 main(float4 pos : SV_Position) : SV_Target\n{\n    return pos;\n}\n";
+    EXPECT_EQ(compileLoose(unused, "ps_5_0").shaders.at(0).glsl.find("Interlock"), std::string::npos);
+}
+
+// numthreads L111, L125, L208: a compute entry declared before its definition. The first
+// declaration's attributes are the function's (the definition's are dropped), so a prototype
+// without [numthreads] leaves the entry without one, which fxc refuses; the prototype itself does
+// not reach glslang, which took it for the entry ("No function definition") or a recursion.
+TEST(D3D11Stages, ComputeEntryPrototypesGiveTheAttributes) {
+    const CompiledEffect bare = compileLoose("    [numthreads(1, 1, 1)]\nvoid main();\n\nvoid main() {}\n", "cs_5_0");
+    EXPECT_EQ(bare.shaders.at(0).threadGroupSize, (std::array<int, 3>{1, 1, 1}));
+    const CompiledEffect first = compileLoose(
+        "RWTexture2D<float> u;\n[numthreads(2, 1, 1)]\nvoid main(uint2 id);\n[numthreads(1, 2, 1)]\n"
+        "void main(uint2 id : sv_dispatchthreadid)\n{\n    u[id] = 2.0;\n}\n",
+        "cs_5_0");
+    EXPECT_EQ(first.shaders.at(0).threadGroupSize, (std::array<int, 3>{2, 1, 1}));
+    EXPECT_THROW(compileLoose("void main();\n\n    [numthreads(1, 1, 1)]\nvoid main() {}\n", "cs_5_0"), CompileError);
 }

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "fxport/xlate/effect_compiler.h"
 
@@ -201,4 +202,22 @@ TEST(D3d9Registers, PastS15NoRegistersAreGiven) {
         EXPECT_EQ(b.samplerRegister, -1) << b.samplerName;
         EXPECT_EQ(b.textureRegister, -1) << b.samplerName;
     }
+}
+
+// uav-rwtexture L158: an array of UAVs takes one u# per element from its register on, each fed
+// from its own slot (element 1 of `u[2] : register(u2)` is u3, GL image unit 3); an array
+// without a register takes the first run of free registers long enough for all its elements.
+TEST(D3dRegisters, UavArraysTakeOneRegisterPerElement) {
+    CompileOptions o;
+    o.useCache = false;
+    CompiledEffect e = compileEffectSource(
+        "RWTexture2D<float4> u[2] : register(u2);\nRWBuffer<float> v;\nRWTexture2D<float> w[2];\n"
+        "[numthreads(1, 1, 1)] void CS() { u[0][uint2(0, 0)] = 1; u[1][uint2(0, 0)] = 2; v[0] = 3; w[0][uint2(0, 0)] = 4; w[1][uint2(0, 0)] = 5; }\n"
+        "technique11 T { pass P { SetComputeShader(CompileShader(cs_5_0, CS())); } }\n",
+        "virtual/UavArrays.fx", o);
+    ASSERT_FALSE(e.hasErrors());
+    std::vector<std::string> got;
+    for (const auto& b : e.shaders.at(0).storage)
+        got.push_back(b.name + " u" + std::to_string(b.slot) + " @" + std::to_string(b.binding));
+    EXPECT_EQ(got, (std::vector<std::string>{"u[0] u2 @2", "u[1] u3 @3", "v u0 @0", "w[0] u4 @4", "w[1] u5 @5"}));
 }

@@ -114,3 +114,51 @@ TEST(DeclarationSpellings, NullInitializedResourcesAndViews) {
     EXPECT_NE(compileError("float4 V = NULL;\nfloat4 PS() : SV_Target { return V; }\n"), "");
     EXPECT_NE(compileError("Texture2D T = null;\nfloat4 PS() : SV_Target { return 0; }\n"), "");
 }
+
+// hard-copy-prop L163: `float4 a, b;` in a struct declares two members. All of them reach the
+// reflection (so `x.b` is settable through StructureMembers at its own offset) and, in an entry
+// struct, the signature (each with its own semantic).
+TEST(DeclarationSpellings, StructMemberListsDeclareEveryMember) {
+    CompileOptions o;
+    o.useCache = false;
+    CompiledEffect e = compileEffectSource(
+        "struct S { float4 a, b; float c[2], d; };\nS x;\n"
+        "struct VSIn { float4 pos : POSITION0, col : COLOR0; };\n"
+        "float4 VS(VSIn v) : SV_Position { return v.pos + v.col; }\n"
+        "float4 PS() : SV_Target { return x.a + x.b + x.c[1] + x.d; }\n"
+        "technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelShader(CompileShader(ps_4_0, PS())); } }\n",
+        "virtual/MemberLists.fx", o);
+    const Parameter* x = nullptr;
+    for (const auto& p : e.parameters)
+        if (p.name == "x") x = &p;
+    ASSERT_NE(x, nullptr);
+    ASSERT_EQ(x->members.size(), 4u);
+    EXPECT_EQ(x->members[1].name, "b");
+    EXPECT_EQ(x->members[1].offset, 16);
+    EXPECT_EQ(x->members[2].name, "c");
+    EXPECT_EQ(x->members[2].elements, 2);
+    EXPECT_EQ(x->members[3].name, "d");
+    EXPECT_EQ(x->members[3].offset, 52);  // c[1] at 48, d packed after it in the same register
+    const auto& vs = e.shaders.at(static_cast<size_t>(e.techniques.at(0).passes.at(0).vertexShader.shaders.at(0)));
+    ASSERT_EQ(vs.inputs.size(), 2u);
+    EXPECT_EQ(vs.inputs[1].semantic, "COLOR0");
+}
+
+// uav-rwbuffer L69, L98: a UAV of double2 elements (four 32-bit words) that no function touches
+// compiles, as fxc drops it; double3 (six words) stays refused as fxc refuses it (L61).
+TEST(DeclarationSpellings, UnusedDoubleUavsAreDropped) {
+    auto compileSm5 = [](const std::string& declarations) {
+        CompileOptions o;
+        o.useCache = false;
+        try {
+            compileEffectSource(declarations + "float4 PS() : SV_Target1 { return 0; }\n"
+                                               "technique11 T { pass P { SetPixelShader(CompileShader(ps_5_0, PS())); } }\n",
+                                "virtual/DoubleUavs.fx", o);
+        } catch (const CompileError& error) {
+            return error.diagnostics().front().message;
+        }
+        return std::string();
+    };
+    EXPECT_EQ(compileSm5("RWBuffer<double2> u;\nRasterizerOrderedBuffer<double2> v;\nRWBuffer<double> w;\n"), "");
+    EXPECT_NE(compileSm5("RWBuffer<double3> u;\n"), "");
+}

@@ -179,6 +179,10 @@ std::vector<RejectCase> cases() {
         {"MixedMatrixSubscripts", "ps_4_0",
          "float4 main() : sv_target\n{\n    float3x2 mat = {1, 2, 3, 4, 5, 6};\n    float2 p = mat._11_m00;\n    return p.xyxy;\n}\n", 4, "_11_m00",
          "float4 main() : sv_target\n{\n    float3x2 mat = {1, 2, 3, 4, 5, 6};\n    float2 p = mat._m10_m00;\n    return p.xyxy;\n}\n"},
+        // GLSL's texture-coordinate swizzle set (s, t, p, q) is no HLSL; a struct's members so
+        // named (struct-array's `colours[0].q`) are members.
+        {"TextureCoordinateSwizzle", "ps_4_0", "float4 c;\nfloat4 main() : sv_target\n{\n    return c.q + c.st.x;\n}\n", 4, "'q'",
+         "struct pair { float p, q; };\nfloat4 c;\nfloat4 main() : sv_target\n{\n    pair v = {c.x, c.y};\n    return v.q + c.a;\n}\n"},
         // function-cast: one value is not written back into a float4.
         {"ScalarOutParameterOfAVector", "ps_4_0",
          "void fun(out float f) { f = 1; }\nfloat4 main() : sv_target\n{\n    float4 p = {-1, -2, -3, -4};\n    fun(p);\n    return p;\n}\n", 5, "out parameter",

@@ -92,3 +92,18 @@ TEST(FxcValues, IntegerMatrixProducts) {
                      "    return float4(r[0], r[1]);\n}\n");
     EXPECT_NE(glsl.find("vec4(19.0, 22.0, 43.0, 50.0)"), std::string::npos) << glsl;
 }
+
+// uav-out-param L40: an inout argument that is an element of a typed UAV is read before the call
+// (0.1 + 0.1 = 0.2 on D3D); glslang passes an undefined value in and only writes the result back.
+// The translation must load each element it passes inout (imageLoad), a swizzled one too
+// (all its components: fxc refuses a partial write of a typed UAV element, uav-rwtexture L13).
+TEST(FxcValues, InoutUavElementArgumentIsReadBeforeTheCall) {
+    const std::string glsl = pixelGlsl(
+        "RWTexture2D<float> u;\nRWBuffer<float2> b;\nvoid add(inout float f) { f += 0.1; }\n"
+        "void scale(inout float2 v, float s) { v *= s; }\n"
+        "[numthreads(1, 1, 1)]\nvoid main(uint3 id : SV_DispatchThreadID)\n{\n    add(u[id.xy]);\n    scale(b[id.x].yx, 2);\n}\n",
+        "cs_5_0");
+    EXPECT_NE(glsl.find("imageLoad(u, "), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find("imageLoad(b, "), std::string::npos) << glsl;
+    EXPECT_EQ(glsl.find("writeonly"), std::string::npos) << glsl;
+}

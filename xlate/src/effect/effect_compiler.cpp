@@ -49,6 +49,7 @@
 #include "rewrite/attribute_case.h"
 #include "rewrite/builtin_type_typedefs.h"
 #include "rewrite/keyword_case.h"
+#include "rewrite/rasterizer_ordered_views.h"
 #include "rewrite/literal_suffixes.h"
 #include "fx/render_states.h"
 #include "fx/shader_profile.h"
@@ -134,9 +135,14 @@ using FailedShaders = std::map<std::string, Diagnostic>;
 struct OwnedRequest {
     std::string source;
     HlslToSpirvRequest request;
+    static std::string joinedNames(const std::vector<std::string>& names) {
+        std::string joined;
+        for (const auto& n : names) joined += n + ",";
+        return joined;
+    }
     static std::string keyOf(const HlslToSpirvRequest& r) {
         return std::to_string(static_cast<int>(r.stage)) + "|" + r.entryPoint + "|" + (r.dx9Compatible ? "9" : "") + "|" +
-               std::to_string(r.shaderModel) + "|" + r.hullPartitioning + "|" + *r.source;
+               std::to_string(r.shaderModel) + "|" + r.hullPartitioning + "|" + joinedNames(r.rasterizerOrderedViews) + "|" + *r.source;
     }
 };
 
@@ -196,6 +202,7 @@ private:
     std::map<std::string, OwnedRequest>* collecting_ = nullptr;
     const Prefetched* prefetched_ = nullptr;
     SpirvModule frontEnd(const HlslToSpirvRequest& request);
+    std::string effectText(ShaderStage stage, const std::string& entry, std::vector<TextEdit> extra = {}) const;
 
     Diagnostic at(Severity s, const char* id, const std::string& message, size_t token) const {
         const Token& t = syntax_.tokens[std::min(token, syntax_.tokens.size() - 1)];
@@ -522,7 +529,7 @@ int EffectBuilder::compileShader(const FxShaderExpr& expr, ShaderStage expected,
     }
     std::string source;
     if (!options_.skipShaders) {
-        source = expected == ShaderStage::Geometry ? rewritten_.hlslForGeometryShader(expr.entry) : rewritten_.hlsl;
+        source = effectText(expected, expr.entry);
         if (wrapped) source += wrapper.code;
         if (expected == ShaderStage::Hull) {
             Tessellation t;
@@ -603,6 +610,22 @@ int EffectBuilder::compileAsmShader(const FxShaderExpr& expr, ShaderStage expect
                       rewritten_.dx9Samplers || !translated.samplers.empty());
 }
 
+// The effect's HLSL for compiling `entry` at `stage`, with `extra` edits. A stage compiled as
+// written (geometry, hull, domain, compute: no entry wrapper) loses the entry's prototypes: glslang
+// names its own entry function like the HLSL one and resolves a call through `void main();` to
+// itself ("Recursion detected"), or takes the prototype as the entry ("No function definition");
+// nothing can call an entry point, so no prototype is needed (numthreads L111, L208).
+std::string EffectBuilder::effectText(ShaderStage stage, const std::string& entry, std::vector<TextEdit> extra) const {
+    const bool asWritten = stage != ShaderStage::Vertex && stage != ShaderStage::Pixel;
+    const auto& t = syntax_.tokens;
+    if (asWritten)
+        for (const FxFunction& f : syntax_.functions)
+            if (f.name == entry)
+                for (const TokenSpan& p : f.prototypes) extra.push_back({t[p.begin].offset, t[p.end - 1].end, {}});
+    if (extra.empty() && stage != ShaderStage::Geometry) return rewritten_.hlsl;
+    return rewritten_.hlslForGeometryShader(stage == ShaderStage::Geometry ? entry : std::string(), extra);
+}
+
 // hlslToSpirv(), or what the prefetch computed for the same request, or (collecting) nothing: the
 // request is recorded and the shader fails, which the collecting pass throws away.
 SpirvModule EffectBuilder::frontEnd(const HlslToSpirvRequest& request) {
@@ -672,6 +695,7 @@ int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile
     const bool tessellationStage = (expected == ShaderStage::Hull || expected == ShaderStage::Domain) && entryFunction;
     if (tessellationStage) checkStageAttributes(syntax_, *entryFunction, profile, stageAttributes);
     if (expected == ShaderStage::Hull) request.hullPartitioning = stageAttributes.partitioning;
+    if (expected == ShaderStage::Pixel) request.rasterizerOrderedViews = syntax_.rasterizerOrderedViews;
     SpirvModule spirv = frontEnd(request);
     // A vector passed to a scalar parameter of the effect's own function: fxc uses .x (warning
     // X3206), glslang finds no overload. Compile again with overloads that take vectors there
@@ -688,11 +712,11 @@ int EffectBuilder::emitShader(const ShaderKey& key, const ShaderProfile& profile
         return grew;
     };
     // The effect's part of the source (what follows it: the entry wrapper, translated asm) is kept.
-    const std::string base = expected == ShaderStage::Geometry ? rewritten_.hlslForGeometryShader(expr.entry) : rewritten_.hlsl;
+    const std::string base = effectText(expected, expr.entry);
     const bool retryable = source.compare(0, base.size(), base) == 0;
     for (int round = 0; retryable && round < 16 && collect(spirv); ++round) {
         std::vector<TextEdit> overloads = vectorToScalarOverloads(syntax_, unmatched);
-        std::string retried = rewritten_.hlslForGeometryShader(expected == ShaderStage::Geometry ? expr.entry : std::string(), overloads);
+        std::string retried = effectText(expected, expr.entry, overloads);
         retried += source.substr(base.size());
         request.source = &retried;
         SpirvModule next = frontEnd(request);
@@ -1382,8 +1406,11 @@ CompiledEffect compileUncached(const std::string& source, const std::string& dis
     pre.text = builtinTypeTypedefsResolved(pre.text);  // { typedef half2 float; float v; } -> { half2 v; }
     pre.text = typeKeywordsLowerCased(pre.text);      // Matrix m -> matrix m
     pre.text = entryAttributeNamesLowerCased(pre.text);  // [MaxVertexCount(3)] -> [maxvertexcount(3)]
+    std::vector<std::string> orderedViews;
+    pre.text = rasterizerOrderedViewsAsUavs(pre.text, orderedViews);  // RasterizerOrderedTexture2D -> RWTexture2D
 
     EffectSyntax syntax = parseEffect(pre.text, pre.map, isLooseShaderCompile(options));
+    syntax.rasterizerOrderedViews = std::move(orderedViews);
     CompiledEffect effect;
     effect.sourcePath = displayPath;
     effect.diagnostics = pre.warnings;

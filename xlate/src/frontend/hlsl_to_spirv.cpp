@@ -12,6 +12,7 @@
 #include "spirv/structured_buffer_layout.h"
 #include "rewrite/keyword_identifiers.h"
 #include "spirv/spirv_fixups.h"
+#include "spirv/pixel_interlock.h"
 #include "spirv/static_zero_init.h"
 #include "spirv/unset_static_resources.h"
 #include "rewrite/pow2_partitioning.h"
@@ -152,7 +153,8 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
     runSpirvPasses(out.words, {sm2or3 ? SpirvPass(integerDivisionInFloats) : nullptr,  // after folding: fxc folds constants exactly
                                packClipCullDistances, packStructuredBuffersTightly,
                                [&](ParsedSpirv& m) { return byteAddressLengthsInBytes(m, byteAddressBufferNames(*request.source)); },
-                               request.hullPartitioning == "pow2" ? SpirvPass(roundTessFactorsToPowersOfTwo) : nullptr});
+                               request.hullPartitioning == "pow2" ? SpirvPass(roundTessFactorsToPowersOfTwo) : nullptr,
+                               [&](ParsedSpirv& m) { return pixelInterlockForOrderedViews(m, request.rasterizerOrderedViews); }});
     return out;
 }
 

@@ -31,6 +31,8 @@ struct HlslToSpirvRequest {
     int shaderModel = 4;         // the profile's major version: fxc's constant-folding errors differ
     // A hull shader's [partitioning] (pow2_partitioning.h, tess_factor_intrinsics.h); empty otherwise.
     std::string hullPartitioning;
+    // A pixel shader's rasterizer-ordered views, declared as UAVs (rasterizer_ordered_views.h).
+    std::vector<std::string> rasterizerOrderedViews;
 };
 
 SpirvModule hlslToSpirv(const HlslToSpirvRequest& request);

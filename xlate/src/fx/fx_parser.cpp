@@ -646,13 +646,25 @@ private:
                 parseAnnotations();
                 blank(a, pos_);
             }
-            while (accept(",")) {  // float a, b : TEXCOORD0; -- rare; keep first member's data
-                expectIdentifier("a struct member name");
-                parseArrayDims();
-                if (accept(":")) expectIdentifier("a semantic");
+            // `float4 a, b : TEXCOORD1;` declares two members of one type (and modifiers); each has its
+            // own dimensions and semantic. Every one is a member: reflection, layout and linkage see them all.
+            std::vector<FxStructMember> more;
+            while (accept(",")) {
+                FxStructMember next;
+                next.type = m.type;
+                next.modifiers = m.modifiers;
+                next.name = expectIdentifier("a struct member name");
+                next.arrayDims = parseArrayDims();
+                while (accept(":")) {
+                    std::string sem = expectIdentifier("a semantic");
+                    if (cur().is("(")) pos_ = skipGroup(pos_, "semantic");
+                    else next.semantic = sem;
+                }
+                more.push_back(std::move(next));
             }
             expect(";", ("after member '" + m.name + "' of struct '" + s.name + "'").c_str());
             s.members.push_back(std::move(m));
+            for (auto& n : more) s.members.push_back(std::move(n));
         }
         if (!inherited.empty()) inheritMembers(s, std::move(inherited), open);
         while (!isEnd() && !cur().is(";")) ++pos_;  // optional declarators
@@ -915,15 +927,16 @@ private:
             else f.returnSemantic = sem;
         }
         if (accept(";")) {  // prototype: its attributes are the function's (below)
+            firstPrototypeHasAttributes_.emplace(name, !f.attributes.empty());
             if (!f.attributes.empty()) prototypeAttributes_.emplace(name, PrototypeAttributes{f.attributes, declarationStart, start});
-            prototypes_.push_back({name, parameterTypes(f), nameToken});
+            prototypes_.push_back({name, parameterTypes(f), nameToken, {declarationStart, pos_}});
             return;
         }
         f.firstDeclared = nameToken;
         for (const auto& p : prototypes_)
             if (p.name == name && p.parameterTypes == parameterTypes(f)) {
-                f.firstDeclared = p.token;
-                break;
+                if (f.prototypes.empty()) f.firstDeclared = p.token;
+                f.prototypes.push_back(p.span);
             }
         if (!cur().is("{")) {
             if (isEnd()) fail(diag::kUnterminated, "function '" + name + "' has no body before the end of the file", nameToken);
@@ -932,7 +945,13 @@ private:
         // fxc (SM 5) takes a function's attributes from its first declaration and drops the later
         // ones ([numthreads(2, 1, 1)] void main(uint2 id); ... void main(...) { }); glslang wants
         // them on the definition.
-        if (auto proto = prototypeAttributes_.find(name); proto != prototypeAttributes_.end() && start < syntax_.tokens.size()) {
+        // A first declaration without attributes gives the function none: the definition's go too
+        // (numthreads L125: `void main(); [numthreads(1, 1, 1)] void main() {}` has no numthreads).
+        if (auto first = firstPrototypeHasAttributes_.find(name); first != firstPrototypeHasAttributes_.end() && !first->second) {
+            if (!f.attributes.empty()) blank(declarationStart, start);
+            f.attributes.clear();
+            f.attributeTokens = {};
+        } else if (auto proto = prototypeAttributes_.find(name); proto != prototypeAttributes_.end() && start < syntax_.tokens.size()) {
             blank(proto->second.begin, proto->second.end);
             if (!f.attributes.empty()) blank(declarationStart, start);
             syntax_.edits.push_back({tok(start).offset, tok(start).offset, proto->second.text + " "});
@@ -1270,12 +1289,14 @@ private:
         std::string text;
         size_t begin = 0, end = 0;  // its tokens
     };
+    std::map<std::string, bool> firstPrototypeHasAttributes_;  // by function name: whether its first prototype has attributes
     std::map<std::string, PrototypeAttributes> prototypeAttributes_;  // by function name, the first prototype with attributes
     // Every prototype, in source order: where each overload was first declared (FxFunction::firstDeclared).
     struct Prototype {
         std::string name;
         std::vector<std::string> parameterTypes;
         size_t token = 0;
+        TokenSpan span;  // attributes, signature and ';'
     };
     std::vector<Prototype> prototypes_;
 

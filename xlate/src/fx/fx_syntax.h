@@ -164,6 +164,7 @@ struct FxFunction {
     // before the definition, else `token`. fxc's entry point among overloads is the one declared
     // last by this measure (findEntry).
     size_t firstDeclared = 0;
+    std::vector<TokenSpan> prototypes;  // earlier declarations of this overload (`void main();`), attributes and ';' included
     std::string attributes;  // e.g. "[maxvertexcount(3)]"
     TokenSpan attributeTokens;  // where `attributes` is written: before the function, or its first prototype with attributes
     // Where the body may declare each name: the token positions of `T name` (an identifier after an
@@ -191,6 +192,7 @@ struct EffectSyntax {
     std::vector<FxShaderVariable> shaderVariables;
     std::vector<TextEdit> edits;  // framework syntax to remove before glslang sees the text
     std::vector<std::string> cbuffers;  // names of user cbuffers, in declaration order
+    std::vector<std::string> rasterizerOrderedViews;  // variables declared RasterizerOrdered* (spelled RW* since)
     std::vector<int> cbufferRegisters;  // per cbuffer: register(bN) as written, -1 when none
     std::map<std::string, std::string> typedefs;  // `typedef vector<half, 3> vec3;`: vec3 -> vector<half,3>
     // Compiled as fxc /T ps_4_0 compiles a file (loose shaders, no effect profile): fxc then parses

@@ -8,6 +8,7 @@
 #include "spirv/gather_offsets.h"
 #include "spirv/integer_matrices.h"
 #include "spirv/live_uniform_bytes.h"
+#include "spirv/write_only_images.h"
 
 #include <spirv_cross/spirv_glsl.hpp>
 
@@ -221,6 +222,14 @@ void bindStorage(GlslCompiler& compiler, const spirv_cross::ShaderResources& res
         spirv_cross::ID id;
         StorageBinding b;
         bool explicitSlot = false;
+        int count = 1;  // an array (`RWTexture2D<float4> u[2] : register(u2)`) takes consecutive registers
+    };
+    auto elements = [&](spirv_cross::TypeID typeId) {
+        const spirv_cross::SPIRType& type = compiler.get_type(typeId);
+        int n = 1;
+        for (size_t d = 0; d < type.array.size(); ++d)
+            n *= static_cast<int>(type.array_size_literal[d] ? type.array[d] : compiler.get_constant(type.array[d]).scalar());
+        return std::max(n, 1);
     };
     std::vector<Found> found;
     for (const auto& r : res.storage_buffers) {
@@ -236,6 +245,7 @@ void bindStorage(GlslCompiler& compiler, const spirv_cross::ShaderResources& res
             f.b.stride = static_cast<int>(compiler.type_struct_member_array_stride(type, 0));
         f.b.slot = declaredRegister(f.b.name, f.b.registerClass);
         f.explicitSlot = f.b.slot >= 0;
+        f.count = elements(r.type_id);
         found.push_back(f);
     }
     for (const auto& r : res.storage_images) {
@@ -248,6 +258,7 @@ void bindStorage(GlslCompiler& compiler, const spirv_cross::ShaderResources& res
         f.b.writes = !compiler.has_decoration(r.id, spv::DecorationNonWritable);
         f.b.slot = declaredRegister(f.b.name, 'u');
         f.explicitSlot = f.b.slot >= 0;
+        f.count = elements(r.type_id);
         found.push_back(f);
     }
     // Buffer<T>: an image without a sampler, read by texelFetch (Load / operator[]).
@@ -273,20 +284,34 @@ void bindStorage(GlslCompiler& compiler, const spirv_cross::ShaderResources& res
     std::stable_sort(found.begin(), found.end(), [&](const Found& a, const Found& b) { return declaredAt(a.b.name) < declaredAt(b.b.name); });
     std::set<std::pair<char, int>> taken;
     for (const Found& f : found)
-        if (f.explicitSlot) taken.insert({f.b.registerClass, f.b.slot});
+        if (f.explicitSlot)
+            for (int k = 0; k < f.count; ++k) taken.insert({f.b.registerClass, f.b.slot + k});
     for (Found& f : found) {
         if (!f.explicitSlot) {
             int n = f.b.registerClass == 'u' ? firstFreeUav : 0;
-            while (taken.count({f.b.registerClass, n})) ++n;
+            auto freeFrom = [&](int at) {
+                for (int k = 0; k < f.count; ++k)
+                    if (taken.count({f.b.registerClass, at + k})) return false;
+                return true;
+            };
+            while (!freeFrom(n)) ++n;
             f.b.slot = n;
-            taken.insert({f.b.registerClass, n});
+            for (int k = 0; k < f.count; ++k) taken.insert({f.b.registerClass, n + k});
         }
         f.b.binding = f.b.kind == StorageKind::TexelBuffer ? kTexelBufferUnitBase + f.b.slot
                       : f.b.registerClass == 't'         ? kSrvBufferBindingBase + f.b.slot
                                                          : f.b.slot;
         compiler.unset_decoration(f.id, spv::DecorationDescriptorSet);
         compiler.set_decoration(f.id, spv::DecorationBinding, static_cast<uint32_t>(f.b.binding));
-        out.push_back(f.b);
+        // GL gives element k of an array binding + k; each is listed as a binding of its own, fed
+        // from register slot + k as D3D binds the array's elements.
+        for (int k = 0; k < f.count; ++k) {
+            StorageBinding element = f.b;
+            if (f.count > 1) element.name += "[" + std::to_string(k) + "]";
+            element.slot += k;
+            element.binding += k;
+            out.push_back(element);
+        }
     }
 }
 
@@ -364,7 +389,8 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
             for (PackedBlock& b : packed)
                 if (!b.glslDeclarable && module.reparse()) flattenConstantBuffer(module, b);
             if (module.reparse())
-                runSpirvPasses(module, {integerMatricesAsArrays, fetchOffsetsIntoCoordinates, gatherOffsetsAsFourGathers, domainLayerOutputs});
+                runSpirvPasses(module, {integerMatricesAsArrays, fetchOffsetsIntoCoordinates, gatherOffsetsAsFourGathers, domainLayerOutputs,
+                                        writeOnlyImagesWithoutFormat});
             spirv = module.assemble();
         }
         const auto live = liveUniformBytes(spirv);

@@ -114,16 +114,43 @@ private:
         edits.push_back({t_[equals].offset, t_[equals].end, ","});
         edits.push_back({t_[end - 1].end, t_[end - 1].end, ")"});
     }
-    // `(T) x` of a struct T in an expression; `y = (T) x;` alone is componentwise_casts.h's.
+    // `(T) x` of a struct T in an expression; `y = (T) x;` alone is componentwise_casts.h's. The
+    // operand is what a cast binds: a postfix expression (`v`, `s.m[1]`, `float2(a, b)`, `f(x).v`)
+    // or a parenthesised one.
     void cast(const FxFunction& f, size_t i) {
         size_t j = i + 1;
         if (!t_[i].is("(") || (t_[i - 1].isIdent() && !t_[i - 1].is("return"))) return;
         if (t_[j].is("struct")) ++j;
-        if (j + 2 >= f.body.end || !t_[j].isIdent() || !t_[j + 1].is(")") || !t_[j + 2].isIdent()) return;
+        if (j + 2 >= f.body.end || !t_[j].isIdent() || !t_[j + 1].is(")") || !(t_[j + 2].isIdent() || t_[j + 2].is("("))) return;
         const size_t x = j + 2;
-        if (t_[x + 1].is(".") || t_[x + 1].is("[") || t_[x + 1].is("(")) return;
-        if (t_[i - 1].is("=") && t_[i - 2].isIdent() && isBoundary(t_[i - 3]) && t_[x + 1].is(";")) return;
-        convertInPlace(f, x, x + 1, {t_[j].text, {}}, true, i);
+        const size_t end = operandEnd(f, x);
+        if (end <= x) return;
+        if (end == x + 1 && t_[i - 1].is("=") && t_[i - 2].isIdent() && isBoundary(t_[i - 3]) && t_[x + 1].is(";")) return;
+        convertInPlace(f, x, end, {t_[j].text, {}}, true, i);
+    }
+    // One past the postfix (or parenthesised) expression starting at x; x where there is none.
+    size_t operandEnd(const FxFunction& f, size_t x) const {
+        auto closing = [&](size_t open) {  // one past the bracket closing the one at `open`; 0 if none
+            int depth = 0;
+            for (size_t k = open; k < f.body.end; ++k) {
+                if (t_[k].is("(") || t_[k].is("[")) ++depth;
+                if ((t_[k].is(")") || t_[k].is("]")) && --depth == 0) return k + 1;
+            }
+            return size_t(0);
+        };
+        size_t k = t_[x].is("(") ? closing(x) : x + 1;
+        if (k == 0) return x;
+        while (k < f.body.end) {
+            if (t_[k].is(".") && t_[k + 1].isIdent()) {
+                k += 2;
+            } else if (t_[k].is("[") || (t_[k].is("(") && t_[k - 1].isIdent())) {
+                k = closing(k);
+                if (k == 0) return x;
+            } else {
+                break;
+            }
+        }
+        return k;
     }
     // `g(..., e, ...)`, g the effect's own function with one overload of that many parameters, e
     // given to an `in` parameter of a struct type.

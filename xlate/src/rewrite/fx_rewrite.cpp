@@ -8,6 +8,7 @@
 #include "rewrite/numthreads_sizes.h"
 #include "rewrite/static_initializer_calls.h"
 #include "rewrite/initializer_lists.h"
+#include "rewrite/index_evaluation_order.h"
 #include "rewrite/out_argument_casts.h"
 #include "rewrite/length_property.h"
 #include "rewrite/unused_uavs.h"
@@ -464,6 +465,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     edits.insert(edits.begin(), vectorSwizzles.begin(), vectorSwizzles.end());
     for (auto& e : lvalueCastsAsAssignments(syntax)) edits.push_back(std::move(e));
     for (auto& e : outArgumentsThroughConversions(syntax)) edits.push_back(std::move(e));
+    for (auto& e : indexBeforeBaseForCalls(syntax)) edits.push_back(std::move(e));
     for (auto& e : componentwiseCasts(syntax)) edits.push_back(std::move(e));
     for (auto& e : aggregateConversions(syntax)) edits.push_back(std::move(e));
     for (auto& e : intrinsicsAsFxc(syntax)) edits.push_back(std::move(e));

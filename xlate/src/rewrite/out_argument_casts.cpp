@@ -2,6 +2,7 @@
 #include "rewrite/out_argument_casts.h"
 
 #include <algorithm>
+#include <cctype>
 #include <optional>
 #include <string>
 
@@ -43,7 +44,37 @@ struct Conversion {
     std::string castText;      // the casts as written, outermost first
     std::optional<BasicType> outerCast;
     BasicType target, parameter;
+    std::string uavElement;    // `u[i]` of a typed UAV passed inout: its text, passed once more as `in`
 };
+
+bool isTypedUavType(std::string type) {
+    type.erase(std::remove_if(type.begin(), type.end(), [](unsigned char c) { return std::isspace(c); }), type.end());
+    return type.rfind("RWBuffer<", 0) == 0 || type.rfind("RWTexture", 0) == 0;
+}
+
+// `u[...]` or `u[...].xy` filling [begin, end), u a global typed UAV, the index free of writes and
+// calls of user functions (it is evaluated twice): its text on one line, else empty.
+std::string uavElementText(const EffectSyntax& syntax, size_t begin, size_t end) {
+    const auto& t = syntax.tokens;
+    if (end < begin + 3 || !t[begin].isIdent() || !t[begin + 1].is("[")) return "";
+    auto g = std::find_if(syntax.globals.begin(), syntax.globals.end(), [&](const FxGlobal& x) { return x.name == t[begin].text; });
+    if (g == syntax.globals.end() || !isTypedUavType(g->type)) return "";
+    int depth = 0;
+    size_t close = begin + 1;
+    for (; close < end; ++close) {
+        if (t[close].is("[") || t[close].is("(")) ++depth;
+        if ((t[close].is("]") || t[close].is(")")) && --depth == 0) break;
+        for (const char* op : {"=", "+=", "-=", "*=", "/=", "%=", "&=", "|=", "^=", "<<=", ">>=", "++", "--"})
+            if (t[close].is(op)) return "";
+        if (t[close].isIdent() && close + 1 < end && t[close + 1].is("("))
+            for (const auto& f : syntax.functions)
+                if (f.name == t[close].text) return "";
+    }
+    if (close >= end || !(close + 1 == end || (close + 3 == end && t[close + 1].is(".") && t[close + 2].isIdent()))) return "";
+    std::string text;
+    for (size_t k = begin; k < end; ++k) text += (k > begin ? " " : "") + t[k].text;
+    return text;
+}
 
 std::optional<Conversion> conversionOf(const EffectSyntax& syntax, const FxFunction& caller, const FxParameter& p,
                                        size_t begin, size_t end) {
@@ -52,6 +83,13 @@ std::optional<Conversion> conversionOf(const EffectSyntax& syntax, const FxFunct
     if (!inout && !hasModifier(p, "out")) return std::nullopt;
     Conversion c;
     c.argBegin = begin;
+    if (inout && p.arrayDims.empty()) {
+        c.uavElement = uavElementText(syntax, begin, end);
+        if (!c.uavElement.empty()) {
+            c.targetBegin = begin;
+            return c;
+        }
+    }
     size_t at = begin;
     while (at + 3 < end && t[at].is("(") && t[at + 1].isIdent() && t[at + 2].is(")")) {
         auto cast = vectorType(syntax, t[at + 1].text);
@@ -101,6 +139,12 @@ std::string wrapper(const FxFunction& callee, const std::string& name, const std
             args += a;
             continue;
         }
+        if (!c->uavElement.empty()) {  // read through the extra `in` copy, written back through the `out` one
+            params += "in " + p.type + " " + a + "_in, out " + p.type + " " + a;
+            before += a + " = " + a + "_in; ";
+            args += a;
+            continue;
+        }
         const std::string tmp = "fxport_t" + std::to_string(k), param = spellType(c->parameter);
         params += "inout " + spellType(c->target) + " " + a;
         args += tmp;
@@ -145,8 +189,10 @@ std::vector<TextEdit> outArgumentsThroughConversions(const EffectSyntax& syntax)
             const std::string name = "fxport_outarg" + std::to_string(made++) + "_" + callee->name;
             wrappers += wrapper(*callee, name, conversions);
             edits.push_back({t[i].offset, t[i].end, name});
-            for (const auto& c : conversions)
+            for (const auto& c : conversions) {
                 if (c.targetBegin > c.argBegin) edits.push_back({t[c.argBegin].offset, t[c.targetBegin].offset, ""});
+                if (!c.uavElement.empty()) edits.push_back({t[c.argBegin].offset, t[c.argBegin].offset, c.uavElement + ", "});
+            }
         }
         if (!wrappers.empty()) {
             size_t at = t[caller.declaration.begin].offset;

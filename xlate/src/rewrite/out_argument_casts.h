@@ -8,6 +8,10 @@
 // first line, whose parameter has the target's type: it converts in (inout), calls, and writes
 // back with fxc's rule. Only calls of a function with one overload of that arity, numeric
 // non-matrix targets (`x`, `s.member`) and numeric casts are taken; the rest is left to glslang.
+// The same wrapper reads an inout argument that is an element of a typed UAV (`f(u[id.xy])`,
+// `RWTexture2D`/`RWBuffer`): glslang copies such an element out after the call but never in
+// before it (the callee reads an undefined value), so the element is passed twice, once `in` (a
+// load glslang does) and once `out` (the write back it does), when its index has no side effects.
 #pragma once
 
 #include <vector>

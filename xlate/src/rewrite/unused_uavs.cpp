@@ -8,7 +8,7 @@ namespace fxport::xlate {
 
 namespace {
 
-// `RWTexture2D<float2x2>` / `RWBuffer<struct s>`: a UAV whose element glslang cannot take.
+// `RWTexture2D<float2x2>` / `RWBuffer<struct s>` / `RWBuffer<double2>`: a UAV whose element glslang cannot take.
 bool uavOfMatrixOrStruct(const EffectSyntax& syntax, const std::string& type) {
     if (type.rfind("RW", 0) != 0 && type.rfind("RasterizerOrdered", 0) != 0) return false;
     size_t open = type.find('<'), close = type.rfind('>');
@@ -19,6 +19,7 @@ bool uavOfMatrixOrStruct(const EffectSyntax& syntax, const std::string& type) {
     if (element.rfind("struct ", 0) == 0) element = element.substr(7);
     const std::string& resolved = syntax.resolveType(element);
     BasicType b = describeBasicType(resolved);
+    if (b.ok && b.scalar == "double") return b.rows * b.columns <= 2;  // two 32-bit words each: double2 fits, double3 not
     if (!syntax.findStruct(resolved) && !(b.ok && b.isMatrix && b.rows > 1 && b.columns > 1)) return false;
     // fxc takes up to four numeric components there; more, or an object, is its error (and glslang's).
     std::vector<AggregateComponent> parts;
