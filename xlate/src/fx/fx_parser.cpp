@@ -629,10 +629,12 @@ private:
         while (!accept("}")) {
             if (isEnd()) fail(diag::kUnterminated, "struct '" + s.name + "' is never closed with '}'", open);
             FxStructMember m;
+            size_t memberStart = pos_;
             while (cur().isIdent() && isParameterModifier(cur().text) && !peek().is(";") && !peek().is(":") &&
                    !peek().is("["))
                 m.modifiers.push_back(syntax_.tokens[pos_++].text);
             if (cur().is("struct") && peek().isIdent()) ++pos_;  // `struct apple aa;`: the type is apple
+            if (skipMemberFunction(s, memberStart)) continue;
             m.type = parseTypeName();
             m.name = expectIdentifier("a struct member name");
             m.arrayDims = parseArrayDims();
@@ -654,10 +656,32 @@ private:
             expect(";", ("after member '" + m.name + "' of struct '" + s.name + "'").c_str());
             s.members.push_back(std::move(m));
         }
-        if (!inherited.empty()) inheritMembers(s, std::move(inherited), open);
+        if (!inherited.empty() || !inheritedFunctions_.empty()) inheritMembers(s, std::move(inherited), open);
         while (!isEnd() && !cur().is(";")) ++pos_;  // optional declarators
         accept(";");
         syntax_.structs.push_back(std::move(s));
+    }
+
+    // A member function (`inline bool IsLit() { return options & 1; }`, Wicked Engine's
+    // ShaderInterop structs, MAGE's ShadowMap): fxc compiles it, and so does glslang, which calls it
+    // on any value of the struct. It is no data member: nothing of the layout, the reflection or
+    // the entry signature sees it, so the parser steps over it and leaves its text to glslang.
+    bool skipMemberFunction(FxStruct& s, size_t start) {
+        size_t i = pos_;
+        if (tok(i).is("inline")) ++i;
+        if (!tok(i).isIdent()) return false;
+        ++i;
+        if (tok(i).is("<")) i = skipGroup(i, "a template argument list");  // vector<float, 3> f()
+        if (!tok(i).isIdent() || !tok(i + 1).is("(")) return false;
+        std::string name = tok(i).text;
+        i = skipGroup(i + 1, "a member function's parameters");
+        if (tok(i).is(":") && tok(i + 1).isIdent()) i += 2;  // a return semantic
+        if (!tok(i).is("{")) return false;
+        pos_ = skipGroup(i, "a member function's body");
+        syntax_.memberFunctionBodies.push_back({i, pos_});
+        s.memberFunctions.push_back({name, {start, pos_}});
+        accept(";");
+        return true;
     }
 
     // `struct b : a {`: fxc's single inheritance. The base must be one struct declared before;
@@ -668,6 +692,8 @@ private:
         if (!base)
             fail(diag::kSyntax, "the base of struct '" + name + "' must be a struct declared before it; '" + cur().text + "' is not", pos_);
         std::vector<FxStructMember> members = base->members;
+        inheritedFunctions_ = base->memberFunctions;
+        inheritedBase_ = base->name;
         ++pos_;
         if (cur().is(","))
             fail(diag::kSyntax, "struct '" + name + "' names more than one base struct; fxc takes one", pos_);
@@ -690,6 +716,30 @@ private:
             if (!m.semantic.empty()) text += " : " + m.semantic;
             text += ";";
         }
+        // The base's member functions too (MAGE's `struct OmniLight : PointLight` calls the base's
+        // DistanceAttenuation), on the brace's line, token by token, unless the struct defines one
+        // of that name itself (its own then stands alone, as a derived definition hides the base's).
+        // One it hides is copied under a name of its own, which the struct's `Base::f(...)` calls name.
+        for (const auto& f : inheritedFunctions_) {
+            bool own = false;
+            for (const auto& g : s.memberFunctions) own |= g.name == f.name;
+            std::string hidden = own ? f.name + "_fxport_" + inheritedBase_ : std::string();
+            bool named = false;
+            for (size_t i = f.span.begin; i < f.span.end; ++i) {
+                bool isName = own && !named && tok(i).is(f.name) && tok(i + 1).is("(");
+                named |= isName;
+                text += " " + (isName ? hidden : tok(i).text);
+            }
+            if (!own) {
+                s.memberFunctions.push_back(f);
+                continue;
+            }
+            for (const auto& g : s.memberFunctions)
+                for (size_t i = g.span.begin; i + 3 < g.span.end; ++i)
+                    if (tok(i).is(inheritedBase_) && tok(i + 1).is("::") && tok(i + 2).is(f.name))
+                        syntax_.edits.push_back({tok(i).offset, tok(i + 2).end, hidden});
+        }
+        inheritedFunctions_.clear();
         syntax_.edits.push_back({tok(open).end, tok(open).end, " " + text});
         inherited.insert(inherited.end(), s.members.begin(), s.members.end());
         s.members = std::move(inherited);
@@ -1265,6 +1315,8 @@ private:
     }
 
     std::string pendingAttributes_;
+    std::vector<FxMemberFunction> inheritedFunctions_;  // of the base named by the struct being parsed
+    std::string inheritedBase_;
     size_t pendingAttributesStart_ = 0;
     struct PrototypeAttributes {
         std::string text;
