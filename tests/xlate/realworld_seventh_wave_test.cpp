@@ -15,6 +15,7 @@
 #include "fxport/xlate/diagnostics.h"
 #include "fxport/xlate/effect_compiler.h"
 #include "fxport/xlate/effect_file.h"
+#include "run_cli.h"
 
 namespace fs = std::filesystem;
 using namespace fxport::xlate;
@@ -129,4 +130,63 @@ TEST(RealworldSeventhWave, ConstantBufferSlotsNotDeclarations) {
     auto errors = errorsOf(distinct + "float4 main() : SV_Target { return b0; }\n", "ps_5_0");
     ASSERT_FALSE(errors.empty());
     EXPECT_NE(errors[0].message.find("X4567"), std::string::npos) << errors[0].message;
+}
+
+// MAGE's msaa.hlsli resolves `input_textures.m_image.sample[i][p_display]` (a Texture2DMS in a
+// struct parameter) into `output_textures.m_image[p_display]` (an RWTexture2D member indexed by a
+// uint2), RenderDoc's pixel history reads `copyin_stencil_ms.sample[s][uint3(...)].g` of a
+// Texture2DMSArray. `.sample[s][p]` is the Load of sample s at p: texelFetch with the sample index.
+TEST(RealworldSeventhWave, SampleIndexersOfMultisampleTextures) {
+    const std::string glsl = glslOf(
+        "struct Inputs { Texture2DMS<float4> image; };\n"
+        "struct Outputs { RWTexture2D<float4> image; };\n"
+        "Texture2DMS<float4> image : register(t0);\n"
+        "Texture2DMSArray<uint2> stencil : register(t1);\n"
+        "RWTexture2D<float4> outImage : register(u0);\n"
+        "void resolve(uint2 p, Inputs inputs, Outputs outputs) {\n"
+        "    float4 sum = 0;\n"
+        "    for (uint i = 0; i < 4; ++i) sum += inputs.image.sample[i][p] * 0.25 + stencil.sample[3][uint3(p, 1)].g;\n"
+        "    outputs.image[p] = sum;\n"
+        "}\n"
+        "[numthreads(8, 8, 1)] void main(uint3 id : SV_DispatchThreadID) {\n"
+        "    Inputs inputs; inputs.image = image;\n"
+        "    Outputs outputs; outputs.image = outImage;\n"
+        "    resolve(id.xy, inputs, outputs);\n"
+        "}\n",
+        "cs_5_0");
+    EXPECT_NE(glsl.find("ivec2(gl_GlobalInvocationID.xy), int("), std::string::npos) << glsl;  // sample i of image
+    EXPECT_NE(glsl.find("ivec3(uvec3(gl_GlobalInvocationID.xy, 1u)), 3)"), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find("imageStore(outImage"), std::string::npos) << glsl;
+}
+
+// Wicked Engine's gpusortlib_sortCS.hlsl sizes its thread group with a conditional of macro
+// arithmetic: `[numthreads(N / (N > 1024 ? N / 1024 : 1), 1, 1)]`. fxc folds it; so does the
+// thread-group size here: 256 x 2 for N = 256, 1024 x 1 for N = 2048.
+TEST(RealworldSeventhWave, ConditionalThreadGroupSize) {
+    auto sized = [](const std::string& n) {
+        return glslOf("#define N (" + n + ")\n"
+                      "RWBuffer<uint> data : register(u0);\n"
+                      "[numthreads(N / (N > 1024 ? N / 1024 : 1), N >= 512 == 1 ? 1 : 2, 1)]\n"
+                      "void main(uint3 id : SV_DispatchThreadID) { data[id.x] = id.y; }\n",
+                      "cs_5_0");
+    };
+    const std::string small = sized("512 / 2"), large = sized("1024 * 2");
+    EXPECT_NE(small.find("local_size_x = 256, local_size_y = 2,"), std::string::npos) << small;
+    EXPECT_NE(large.find("local_size_x = 1024, local_size_y = 1,"), std::string::npos) << large;
+}
+
+// Luna's DX11 book builds every .fx with `fxc /T fx_5_0 /Fo X.fxo X.fx`, LightHelper.fx (structs
+// and functions, no technique) included: the same command line compiles with fxport, the effect
+// profile taken from /T, and a technique-less file is then a compiled effect, as with fxc; with no
+// profile (XNA's rules) it stays FX1003.
+TEST(RealworldSeventhWave, EffectProfileFromTheCommandLine) {
+    const fs::path header = writeSource("FX/LightHelper.fx", "struct Material { float4 Ambient; float4 Diffuse; };\n"
+                                                              "float4 Lit(Material m, float k) { return m.Ambient + m.Diffuse * k; }\n");
+    const std::string out = (header.parent_path() / "LightHelper.fxo").string();
+    auto fxc = fxport::test::runCli("compile /T fx_5_0 /Fo '" + out + "' '" + header.string() + "' --no-cache");
+    EXPECT_EQ(fxc.status, 0) << fxc.output;
+    EXPECT_TRUE(fs::exists(out)) << fxc.output;
+    auto plain = fxport::test::runCli("compile '" + header.string() + "' -o '" + out + "' --no-cache");
+    EXPECT_EQ(plain.status, 1) << plain.output;
+    EXPECT_NE(plain.output.find("FX1003"), std::string::npos) << plain.output;
 }

@@ -109,7 +109,9 @@ private:
         for (const auto& f : syntax_.functions)
             for (size_t i = f.body.begin; i + 1 < f.body.end; ++i) {
                 if (!t_[i].is(name) || !t_[i + 1].is("(") || (i > 0 && t_[i - 1].is("."))) continue;
-                const FxFunction* chosen = best(f, i, overloads);
+                bool tie = false;
+                const FxFunction* chosen = best(f, i, overloads, tie);
+                if (tie) return;  // ambiguous or matching none: left to the checks (overload_ties.cpp) and glslang
                 if (!chosen) ++undecided;
                 else calls.push_back({i, chosen});
             }
@@ -173,9 +175,10 @@ private:
         return true;
     }
 
-    // fxc's pick for the call whose name is at `at` in `caller`; nothing for a tie or an argument
-    // whose type is not evident.
-    const FxFunction* best(const FxFunction& caller, size_t at, const std::vector<const FxFunction*>& overloads) const {
+    // fxc's pick for the call whose name is at `at` in `caller`; nothing for a tie or no match
+    // (`tied` set) or an argument whose type is not evident.
+    const FxFunction* best(const FxFunction& caller, size_t at, const std::vector<const FxFunction*>& overloads, bool& tied) const {
+        tied = false;
         auto spans = callArgumentSpans(t_, at + 1, caller.body.end);
         if (spans.empty() && !t_[at + 2].is(")")) return nullptr;
         std::vector<BasicType> args;
@@ -200,6 +203,7 @@ private:
                 tie = true;
             }
         }
+        tied = tie || !winner;  // every argument's type known: fxc's answer is this one (or its error)
         return tie ? nullptr : winner;
     }
 
