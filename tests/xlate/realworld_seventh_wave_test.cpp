@@ -190,3 +190,33 @@ TEST(RealworldSeventhWave, EffectProfileFromTheCommandLine) {
     EXPECT_EQ(plain.status, 1) << plain.output;
     EXPECT_NE(plain.output.find("FX1003"), std::string::npos) << plain.output;
 }
+
+// A D3D11 course's fx_5_0 effects (compiled with D3D10_SHADER_ENABLE_BACKWARDS_COMPATIBILITY)
+// include a header of twenty cbuffers, and each technique's shaders read a few: fxc counts the
+// slots per shader. Its instancing vertex shaders assign a cbuffer member (`World =
+// input.Transform;`): the shader works on its own copy, as with a $Globals uniform, the copy
+// declared after the cbuffer (glslang takes no static inside it). The GLSL transforms by the
+// modified copy.
+TEST(RealworldSeventhWave, EffectCbuffersPerShaderAndWrittenMembers) {
+    std::string source;
+    for (int i = 0; i < 20; ++i) source += "cbuffer CB_" + std::to_string(i) + " { float4 v" + std::to_string(i) + "; };\n";
+    source += "cbuffer CB_World { matrix World; };\n"
+              "float4 VS(float4 p : POSITION) : SV_Position { World = World * 2.0; return mul(p, World) + v0 + v1; }\n"
+              "float4 PS1() : SV_Target { return v2 + v3 + v4 + v5 + v6 + v7 + v8 + v9; }\n"
+              "float4 PS2() : SV_Target { return v10 + v11 + v12 + v13 + v14 + v15 + v16 + v17 + v18 + v19; }\n"
+              "technique11 A { pass P { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS1())); } }\n"
+              "technique11 B { pass P { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS2())); } }\n";
+    CompileOptions o;
+    o.useCache = false;
+    o.effectProfile = "fx_5_0";
+    CompiledEffect e;
+    try {
+        e = compileEffectFile(writeSource("Course.fx", source).string(), o);
+    } catch (const CompileError& err) {
+        FAIL() << err.what();
+    }
+    bool copied = false;
+    for (const auto& s : e.shaders)
+        if (s.entryPoint == "VS") copied = s.glsl.find("* 2.0") != std::string::npos && s.glsl.find("World") != std::string::npos;
+    EXPECT_TRUE(copied);
+}

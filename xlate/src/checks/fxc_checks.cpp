@@ -52,6 +52,7 @@ constexpr Family kFamilies[] = {
     findTextureSubscriptErrors,
     findGroupSharedCs4Errors,
     findStaticMixedStructErrors,
+    findConstantBufferSlotErrors,
 };
 
 bool isShaderState(const std::string& name) {

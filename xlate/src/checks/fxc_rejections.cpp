@@ -46,7 +46,6 @@ public:
         for (const auto& f : syntax_.functions) outArgumentsAreLValues(f);
         packOffsetOnAllOrNone();
         packOffsetOutsideCbuffer();
-        constantBufferCount();
         for (const auto& v : syntax_.shaderVariables)
             for (const auto& e : v.elements) compiledShaderVariable(e);
         std::stable_sort(found_.begin(), found_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -384,56 +383,6 @@ private:
             }
         }
         check(argument);
-    }
-
-    // --- at most 14 constant buffers (D3D10/11's slots) ----------------------------------------
-    // The slots the effect's cbuffers take: a `register(bN)` reserves its slot, used or not, and
-    // cbuffers written with one register share it (Wicked Engine's and RenderDoc's headers declare
-    // a dozen cbuffers at b0..b3 for shaders that each read one or two); one without a register
-    // takes a slot only when a shader reads a member of it (fxc leaves the others out). Then
-    // $Globals when a number lives outside them, $Params when an entry function takes uniform
-    // parameters.
-    void constantBufferCount() {
-        std::set<int> registers;
-        size_t count = 0;
-        for (size_t k = 0; k < syntax_.cbuffers.size(); ++k) {
-            int reg = k < syntax_.cbufferRegisters.size() ? syntax_.cbufferRegisters[k] : -1;
-            if (reg >= 0) registers.insert(reg);
-            else count += cbufferRead(syntax_.cbuffers[k]);
-        }
-        count += registers.size();
-        bool globals = false;
-        for (const auto& g : syntax_.globals) {
-            bool constant = std::find(g.modifiers.begin(), g.modifiers.end(), "static") != g.modifiers.end();
-            globals |= g.cbuffer.empty() && !constant && !g.isStringParameter && describeBasicType(syntax_.resolveType(g.type)).ok;
-        }
-        bool params = false;
-        for (const auto& f : syntax_.functions)
-            for (const auto& p : f.parameters)
-                params |= std::find(p.modifiers.begin(), p.modifiers.end(), "uniform") != p.modifiers.end();
-        count += globals + params;
-        if (count > 14 && !syntax_.functions.empty())
-            report("the effect needs " + std::to_string(count) + " constant buffers (its cbuffers" + (globals ? ", $Globals" : "") +
-                       (params ? ", $Params" : "") + "); D3D has 14 slots (fxc X4567)",
-                   syntax_.functions.back().token);
-    }
-
-    // Whether a function (or a struct's member function) names a member of the cbuffer.
-    bool cbufferRead(const std::string& cbuffer) const {
-        std::set<std::string> members;
-        for (const auto& g : syntax_.globals)
-            if (g.cbuffer == cbuffer) members.insert(g.name);
-        if (members.empty()) return false;
-        auto reads = [&](size_t begin, size_t end) {
-            for (size_t i = begin; i < end && i < t_.size(); ++i)
-                if (t_[i].isIdent() && members.count(t_[i].text) && !(i > 0 && t_[i - 1].is("."))) return true;
-            return false;
-        };
-        for (const auto& f : syntax_.functions)
-            if (reads(f.body.begin, f.body.end)) return true;
-        for (const auto& b : syntax_.memberFunctionBodies)
-            if (reads(b.begin, b.end)) return true;
-        return false;
     }
 
     // --- `float4 float;` ---------------------------------------------------------------------
