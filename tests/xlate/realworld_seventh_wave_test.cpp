@@ -220,3 +220,24 @@ TEST(RealworldSeventhWave, EffectCbuffersPerShaderAndWrittenMembers) {
         if (s.entryPoint == "VS") copied = s.glsl.find("* 2.0") != std::string::npos && s.glsl.find("World") != std::string::npos;
     EXPECT_TRUE(copied);
 }
+
+// MAGE's voxel cone tracer: `GetRadianceAndAO(Cone cone)` calls its sibling
+// `GetRadianceAndAO(cone, m_max_cone_distance)`, whose parameter is a float4, with a float; a
+// derived struct calls an inherited one with an int. fxc converts the arguments as in any call;
+// the GLSL reads the float replicated and the int as 2.0.
+TEST(RealworldSeventhWave, MemberFunctionCallsConvertArguments) {
+    const std::string glsl = glslOf(
+        "struct Tracer {\n"
+        "    float4 weights;\n"
+        "    float reach;\n"
+        "    float Trace(float4 distances) { return dot(weights, distances); }\n"
+        "    float Trace() { return Trace(reach); }\n"
+        "    float Scaled(float k) { return reach * k; }\n"
+        "};\n"
+        "struct Wide : Tracer { float Twice() { return Scaled(2) + Trace(); } };\n"
+        "cbuffer C : register(b0) { Wide w; };\n"
+        "float4 main() : SV_Target { return w.Twice(); }\n",
+        "ps_5_0");
+    EXPECT_NE(glsl.find("w.weights, vec4("), std::string::npos) << glsl;  // Trace(reach): the float replicated
+    EXPECT_NE(glsl.find("w.reach, 2.0,"), std::string::npos) << glsl;     // Scaled(2): reach * 2.0 (an fma)
+}

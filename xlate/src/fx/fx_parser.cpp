@@ -657,6 +657,12 @@ private:
             s.members.push_back(std::move(m));
         }
         if (!inherited.empty() || !inheritedFunctions_.empty()) inheritMembers(s, std::move(inherited), open);
+        std::set<std::string> methods;
+        for (const auto& f : s.memberFunctions) methods.insert(f.name);
+        for (const auto& f : s.memberFunctions)
+            if (f.span.begin > open)  // its own, not a base's copied in
+                for (size_t i = f.body + 1; i < f.span.end; ++i)
+                    if (callsSibling(i, methods)) syntax_.edits.push_back({tok(i).offset, tok(i).offset, "this."});
         while (!isEnd() && !cur().is(";")) ++pos_;  // optional declarators
         accept(";");
         syntax_.structs.push_back(std::move(s));
@@ -679,9 +685,17 @@ private:
         if (!tok(i).is("{")) return false;
         pos_ = skipGroup(i, "a member function's body");
         syntax_.memberFunctionBodies.push_back({i, pos_});
-        s.memberFunctions.push_back({name, {start, pos_}});
+        s.memberFunctions.push_back({name, {start, pos_}, i});
         accept(";");
         return true;
+    }
+
+    // `Sibling(args)` inside a member function: glslang's lookup of an unqualified member call
+    // converts no argument (MAGE's `GetRadianceAndAO(cone, m_max_cone_distance)`, a float for a
+    // float4: "no matching overloaded function found"); called as `this.Sibling(args)` it
+    // converts them as for any call, as fxc does.
+    bool callsSibling(size_t i, const std::set<std::string>& methods) const {
+        return tok(i).isIdent() && methods.count(tok(i).text) && tok(i + 1).is("(") && !tok(i - 1).is(".") && !tok(i - 1).is("::");
     }
 
     // `struct b : a {`: fxc's single inheritance. The base must be one struct declared before;
@@ -720,24 +734,28 @@ private:
         // DistanceAttenuation), on the brace's line, token by token, unless the struct defines one
         // of that name itself (its own then stands alone, as a derived definition hides the base's).
         // One it hides is copied under a name of its own, which the struct's `Base::f(...)` calls name.
+        std::set<std::string> methods, ownNames;
+        for (const auto& f : s.memberFunctions) ownNames.insert(f.name);
+        methods = ownNames;
+        for (const auto& f : inheritedFunctions_) methods.insert(f.name);
+        const size_t ownCount = s.memberFunctions.size();
         for (const auto& f : inheritedFunctions_) {
-            bool own = false;
-            for (const auto& g : s.memberFunctions) own |= g.name == f.name;
+            const bool own = ownNames.count(f.name) > 0;
             std::string hidden = own ? f.name + "_fxport_" + inheritedBase_ : std::string();
             bool named = false;
             for (size_t i = f.span.begin; i < f.span.end; ++i) {
                 bool isName = own && !named && tok(i).is(f.name) && tok(i + 1).is("(");
                 named |= isName;
-                text += " " + (isName ? hidden : tok(i).text);
+                text += " " + std::string(i > f.body && callsSibling(i, methods) ? "this." : "") + (isName ? hidden : tok(i).text);
             }
             if (!own) {
                 s.memberFunctions.push_back(f);
                 continue;
             }
-            for (const auto& g : s.memberFunctions)
-                for (size_t i = g.span.begin; i + 3 < g.span.end; ++i)
+            for (size_t k = 0; k < ownCount; ++k)
+                for (size_t i = s.memberFunctions[k].span.begin; i + 3 < s.memberFunctions[k].span.end; ++i)
                     if (tok(i).is(inheritedBase_) && tok(i + 1).is("::") && tok(i + 2).is(f.name))
-                        syntax_.edits.push_back({tok(i).offset, tok(i + 2).end, hidden});
+                        syntax_.edits.push_back({tok(i).offset, tok(i + 2).end, "this." + hidden});
         }
         inheritedFunctions_.clear();
         syntax_.edits.push_back({tok(open).end, tok(open).end, " " + text});

@@ -138,6 +138,7 @@ struct FxStructMember {
 struct FxMemberFunction {
     std::string name;
     TokenSpan span;  // from its first modifier or type to its closing '}'
+    size_t body = 0;  // its '{'
 };
 
 struct FxStruct {
