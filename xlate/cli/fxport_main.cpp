@@ -58,6 +58,9 @@ const char* kHelp =
     "  --entry NAME --profile P, /E NAME /T P\n"
     "                           a loose shader file (no technique): compile entry point NAME for\n"
     "                           profile P (vs_5_0, ps_4_0 ...); repeatable, one --profile per --entry\n"
+    "  --profile fx_N_N, /T fx_5_0\n"
+    "                           the effect profile fxc's /T names (fx_2_0, fx_4_0, fx_4_1, fx_5_0): from\n"
+    "                           fx_4_0 on an effect without technique (variables, functions) compiles\n"
     "  /Zpr, /Zpc (-Zpr, -Zpc)  fxc's default matrix packing: matrices that name no majority are\n"
     "                           row_major (/Zpr) or column_major (/Zpc, the default) until a\n"
     "                           #pragma pack_matrix\n"
@@ -82,7 +85,8 @@ const char* commandHelp(const std::string& command) {
                "  --no-cache            do not read or write the compile cache\n"
                "  --depfile FILE        also write FILE: Make-style dependencies of OUT (the effect and\n"
                "                        every file it #includes), for Ninja/Make depfile support\n"
-               "  /E NAME, /T PROFILE   fxc's entry point and profile (for loose shaders)\n"
+               "  /E NAME, /T PROFILE   fxc's entry point and profile (for loose shaders); /T fx_5_0 alone is\n"
+               "                        the effect's profile\n"
                "  /Zpr, /Zpc            row-major / column-major matrices by default (fxc's packing)\n"
                "  /O3, /nologo ...      fxc's optimisation, debug and strip switches: ignored (see\n"
                "                        'fxport --help'); other unknown /X switches are errors\n";
@@ -269,6 +273,10 @@ bool parseArgs(int argc, char** argv, Args& a, std::string& error) {
             a.entries.push_back({{}, v, {}});
         } else if (s == "--profile") {
             if (!value(v)) return false;
+            if (v.rfind("fx_", 0) == 0) {  // fxc /T fx_5_0 effect.fx: the effect's profile (Luna's DX11 projects)
+                a.options.effectProfile = v;
+                continue;
+            }
             if (a.entries.empty() || a.profiles >= static_cast<int>(a.entries.size())) {
                 error = "option '" + typed + "' (" + v + ") needs an --entry before it (--entry NAME --profile vs_5_0)";
                 return false;

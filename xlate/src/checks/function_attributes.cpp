@@ -28,7 +28,7 @@ public:
 private:
     bool inFunctionBody(size_t at) const {
         const FxFunction* f = functionAt(at);
-        return f && at >= f->body.begin;
+        return (f && at >= f->body.begin) || syntax_.inMemberFunctionBody(at);
     }
 
     // `[a][b(1)] declaration`: returns the index of the declaration's first token.

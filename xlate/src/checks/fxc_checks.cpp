@@ -52,6 +52,7 @@ constexpr Family kFamilies[] = {
     findTextureSubscriptErrors,
     findGroupSharedCs4Errors,
     findStaticMixedStructErrors,
+    findConstantBufferSlotErrors,
 };
 
 bool isShaderState(const std::string& name) {
@@ -86,7 +87,7 @@ const FxFunction* FxcCheck::functionAt(size_t at) const {
     return nullptr;
 }
 
-bool FxcCheck::inFunction(size_t at) const { return functionAt(at) != nullptr; }
+bool FxcCheck::inFunction(size_t at) const { return functionAt(at) != nullptr || syntax_.inMemberFunctionBody(at); }
 
 std::vector<FxcCheck::CompiledEntry> FxcCheck::compiledEntries() const {
     // A loose-shader compile (fxc /T ps_4_0 /E main) compiles its entry points only: the technique

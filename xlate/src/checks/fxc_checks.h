@@ -52,6 +52,7 @@ private:
 
 // The families (one file each).
 std::vector<std::pair<size_t, Diagnostic>> findRegisterReservationErrors(const EffectSyntax& syntax, const SourceMap& map);
+std::vector<std::pair<size_t, Diagnostic>> findConstantBufferSlotErrors(const EffectSyntax& syntax, const SourceMap& map);  // constant_buffer_slots.cpp
 std::vector<std::pair<size_t, Diagnostic>> findGeometryEntryErrors(const EffectSyntax& syntax, const SourceMap& map);
 std::vector<std::pair<size_t, Diagnostic>> findGeometryInputErrors(const EffectSyntax& syntax, const SourceMap& map);  // geometry_input_rules.cpp
 std::vector<std::pair<size_t, Diagnostic>> findLocalDeclarationErrors(const EffectSyntax& syntax, const SourceMap& map);  // local_declaration_rules.cpp

@@ -46,7 +46,6 @@ public:
         for (const auto& f : syntax_.functions) outArgumentsAreLValues(f);
         packOffsetOnAllOrNone();
         packOffsetOutsideCbuffer();
-        constantBufferCount();
         for (const auto& v : syntax_.shaderVariables)
             for (const auto& e : v.elements) compiledShaderVariable(e);
         std::stable_sort(found_.begin(), found_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -81,7 +80,7 @@ private:
     bool inFunction(size_t at) const {
         for (const auto& f : syntax_.functions)
             if (at >= f.declaration.begin && at < f.declaration.end) return true;
-        return false;
+        return syntax_.inMemberFunctionBody(at);
     }
     static bool opens(const Token& t) { return t.is("(") || t.is("[") || t.is("{"); }
 
@@ -384,27 +383,6 @@ private:
             }
         }
         check(argument);
-    }
-
-    // --- at most 14 constant buffers (D3D10/11's slots) ----------------------------------------
-    // The effect's cbuffers (used or not: each reserves its slot), $Globals when a number lives
-    // outside them, $Params when an entry function takes uniform parameters.
-    void constantBufferCount() {
-        size_t count = syntax_.cbuffers.size();
-        bool globals = false;
-        for (const auto& g : syntax_.globals) {
-            bool constant = std::find(g.modifiers.begin(), g.modifiers.end(), "static") != g.modifiers.end();
-            globals |= g.cbuffer.empty() && !constant && !g.isStringParameter && describeBasicType(syntax_.resolveType(g.type)).ok;
-        }
-        bool params = false;
-        for (const auto& f : syntax_.functions)
-            for (const auto& p : f.parameters)
-                params |= std::find(p.modifiers.begin(), p.modifiers.end(), "uniform") != p.modifiers.end();
-        count += globals + params;
-        if (count > 14 && !syntax_.functions.empty())
-            report("the effect needs " + std::to_string(count) + " constant buffers (its cbuffers" + (globals ? ", $Globals" : "") +
-                       (params ? ", $Params" : "") + "); D3D has 14 slots (fxc X4567)",
-                   syntax_.functions.back().token);
     }
 
     // --- `float4 float;` ---------------------------------------------------------------------

@@ -28,6 +28,10 @@ public:
         if (k <= f.body.begin || !t_[k - 1].isIdent()) return false;
         const Token& base = t_[k - 1];
         if ((base.is("mips") || base.is("sample")) && t_[k - 2].is(".")) return true;
+        if (t_[k - 2].is("."))  // `out.m_image[p]`: a struct's texture member (MAGE's OutputTexturesMSAA)
+            for (const auto& s : syntax_.structs)
+                for (const auto& m : s.members)
+                    if (m.name == base.text && isResourceType(syntax_.resolveType(m.type))) return true;
         for (const auto& t : syntax_.textures)
             if (t.name == base.text) return true;
         auto v = declaredVariable(syntax_, f, base.text, k - 1);

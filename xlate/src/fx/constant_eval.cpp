@@ -95,9 +95,40 @@ private:
         return r;
     }
 
+    // `c ? a : b` and the comparisons under it, of scalars (Wicked Engine's gpusortlib sizes its
+    // thread group `[numthreads(N / (N > 1024 ? N / 1024 : 1), ...)]`); then + and -.
     std::optional<std::vector<double>> expression() {
         Level level(*this);
         if (tooDeep_) return std::nullopt;
+        auto condition = comparison();
+        if (!condition || !accept("?")) return condition;
+        auto yes = expression();
+        if (!yes || !accept(":")) return std::nullopt;
+        auto no = expression();
+        if (!no || condition->size() != 1) return std::nullopt;
+        return (*condition)[0] != 0 ? yes : no;
+    }
+    std::optional<std::vector<double>> comparison() { return compared(true); }
+    // == and != over <, >, <= and >= (C's precedence), each left to right; scalars only. The
+    // lexer keeps `<=` and `>=` as two tokens (`<` closes templates and annotations).
+    std::optional<std::vector<double>> compared(bool equality) {
+        auto left = equality ? compared(false) : additive();
+        while (left && cur()) {
+            std::string op = cur()->text;
+            if (equality ? op != "==" && op != "!=" : op != "<" && op != ">") break;
+            ++pos_;
+            if (!equality && cur() && cur()->is("=") && cur()->offset == syntax_.tokens[pos_ - 1].end) {
+                op += "=";
+                ++pos_;
+            }
+            auto right = equality ? compared(false) : additive();
+            if (!right || left->size() != 1 || right->size() != 1) return std::nullopt;
+            const double x = (*left)[0], y = (*right)[0];
+            left = std::vector<double>{double(op == "<" ? x < y : op == ">" ? x > y : op == "<=" ? x <= y : op == ">=" ? x >= y : op == "==" ? x == y : x != y)};
+        }
+        return left;
+    }
+    std::optional<std::vector<double>> additive() {
         auto left = term();
         while (left && cur() && (cur()->is("+") || cur()->is("-"))) {
             char op = cur()->text[0];

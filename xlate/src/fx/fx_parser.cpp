@@ -629,10 +629,12 @@ private:
         while (!accept("}")) {
             if (isEnd()) fail(diag::kUnterminated, "struct '" + s.name + "' is never closed with '}'", open);
             FxStructMember m;
+            size_t memberStart = pos_;
             while (cur().isIdent() && isParameterModifier(cur().text) && !peek().is(";") && !peek().is(":") &&
                    !peek().is("["))
                 m.modifiers.push_back(syntax_.tokens[pos_++].text);
             if (cur().is("struct") && peek().isIdent()) ++pos_;  // `struct apple aa;`: the type is apple
+            if (skipMemberFunction(s, memberStart)) continue;
             m.type = parseTypeName();
             m.name = expectIdentifier("a struct member name");
             m.arrayDims = parseArrayDims();
@@ -666,10 +668,46 @@ private:
             s.members.push_back(std::move(m));
             for (auto& n : more) s.members.push_back(std::move(n));
         }
-        if (!inherited.empty()) inheritMembers(s, std::move(inherited), open);
+        if (!inherited.empty() || !inheritedFunctions_.empty()) inheritMembers(s, std::move(inherited), open);
+        std::set<std::string> methods;
+        for (const auto& f : s.memberFunctions) methods.insert(f.name);
+        for (const auto& f : s.memberFunctions)
+            if (f.span.begin > open)  // its own, not a base's copied in
+                for (size_t i = f.body + 1; i < f.span.end; ++i)
+                    if (callsSibling(i, methods)) syntax_.edits.push_back({tok(i).offset, tok(i).offset, "this."});
         while (!isEnd() && !cur().is(";")) ++pos_;  // optional declarators
         accept(";");
         syntax_.structs.push_back(std::move(s));
+    }
+
+    // A member function (`inline bool IsLit() { return options & 1; }`, Wicked Engine's
+    // ShaderInterop structs, MAGE's ShadowMap): fxc compiles it, and so does glslang, which calls it
+    // on any value of the struct. It is no data member: nothing of the layout, the reflection or
+    // the entry signature sees it, so the parser steps over it and leaves its text to glslang.
+    bool skipMemberFunction(FxStruct& s, size_t start) {
+        size_t i = pos_;
+        if (tok(i).is("inline")) ++i;
+        if (!tok(i).isIdent()) return false;
+        ++i;
+        if (tok(i).is("<")) i = skipGroup(i, "a template argument list");  // vector<float, 3> f()
+        if (!tok(i).isIdent() || !tok(i + 1).is("(")) return false;
+        std::string name = tok(i).text;
+        i = skipGroup(i + 1, "a member function's parameters");
+        if (tok(i).is(":") && tok(i + 1).isIdent()) i += 2;  // a return semantic
+        if (!tok(i).is("{")) return false;
+        pos_ = skipGroup(i, "a member function's body");
+        syntax_.memberFunctionBodies.push_back({i, pos_});
+        s.memberFunctions.push_back({name, {start, pos_}, i});
+        accept(";");
+        return true;
+    }
+
+    // `Sibling(args)` inside a member function: glslang's lookup of an unqualified member call
+    // converts no argument (MAGE's `GetRadianceAndAO(cone, m_max_cone_distance)`, a float for a
+    // float4: "no matching overloaded function found"); called as `this.Sibling(args)` it
+    // converts them as for any call, as fxc does.
+    bool callsSibling(size_t i, const std::set<std::string>& methods) const {
+        return tok(i).isIdent() && methods.count(tok(i).text) && tok(i + 1).is("(") && !tok(i - 1).is(".") && !tok(i - 1).is("::");
     }
 
     // `struct b : a {`: fxc's single inheritance. The base must be one struct declared before;
@@ -680,6 +718,8 @@ private:
         if (!base)
             fail(diag::kSyntax, "the base of struct '" + name + "' must be a struct declared before it; '" + cur().text + "' is not", pos_);
         std::vector<FxStructMember> members = base->members;
+        inheritedFunctions_ = base->memberFunctions;
+        inheritedBase_ = base->name;
         ++pos_;
         if (cur().is(","))
             fail(diag::kSyntax, "struct '" + name + "' names more than one base struct; fxc takes one", pos_);
@@ -702,6 +742,34 @@ private:
             if (!m.semantic.empty()) text += " : " + m.semantic;
             text += ";";
         }
+        // The base's member functions too (MAGE's `struct OmniLight : PointLight` calls the base's
+        // DistanceAttenuation), on the brace's line, token by token, unless the struct defines one
+        // of that name itself (its own then stands alone, as a derived definition hides the base's).
+        // One it hides is copied under a name of its own, which the struct's `Base::f(...)` calls name.
+        std::set<std::string> methods, ownNames;
+        for (const auto& f : s.memberFunctions) ownNames.insert(f.name);
+        methods = ownNames;
+        for (const auto& f : inheritedFunctions_) methods.insert(f.name);
+        const size_t ownCount = s.memberFunctions.size();
+        for (const auto& f : inheritedFunctions_) {
+            const bool own = ownNames.count(f.name) > 0;
+            std::string hidden = own ? f.name + "_fxport_" + inheritedBase_ : std::string();
+            bool named = false;
+            for (size_t i = f.span.begin; i < f.span.end; ++i) {
+                bool isName = own && !named && tok(i).is(f.name) && tok(i + 1).is("(");
+                named |= isName;
+                text += " " + std::string(i > f.body && callsSibling(i, methods) ? "this." : "") + (isName ? hidden : tok(i).text);
+            }
+            if (!own) {
+                s.memberFunctions.push_back(f);
+                continue;
+            }
+            for (size_t k = 0; k < ownCount; ++k)
+                for (size_t i = s.memberFunctions[k].span.begin; i + 3 < s.memberFunctions[k].span.end; ++i)
+                    if (tok(i).is(inheritedBase_) && tok(i + 1).is("::") && tok(i + 2).is(f.name))
+                        syntax_.edits.push_back({tok(i).offset, tok(i + 2).end, "this." + hidden});
+        }
+        inheritedFunctions_.clear();
         syntax_.edits.push_back({tok(open).end, tok(open).end, " " + text});
         inherited.insert(inherited.end(), s.members.begin(), s.members.end());
         s.members = std::move(inherited);
@@ -1284,6 +1352,8 @@ private:
     }
 
     std::string pendingAttributes_;
+    std::vector<FxMemberFunction> inheritedFunctions_;  // of the base named by the struct being parsed
+    std::string inheritedBase_;
     size_t pendingAttributesStart_ = 0;
     struct PrototypeAttributes {
         std::string text;

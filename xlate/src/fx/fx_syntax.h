@@ -135,9 +135,16 @@ struct FxStructMember {
     std::vector<std::string> modifiers;  // interpolation modifiers
 };
 
+struct FxMemberFunction {
+    std::string name;
+    TokenSpan span;  // from its first modifier or type to its closing '}'
+    size_t body = 0;  // its '{'
+};
+
 struct FxStruct {
     std::string name;
     std::vector<FxStructMember> members;
+    std::vector<FxMemberFunction> memberFunctions;  // left to glslang; copied into derived structs
     size_t token = 0;
 };
 
@@ -186,6 +193,12 @@ struct EffectSyntax {
     std::vector<FxGlobal> globals;
     std::vector<FxStruct> structs;
     std::vector<FxFunction> functions;
+    std::vector<TokenSpan> memberFunctionBodies;  // `struct S { float f() { ... } };`: left to glslang, bodies here
+    bool inMemberFunctionBody(size_t token) const {
+        for (const auto& b : memberFunctionBodies)
+            if (token >= b.begin && token < b.end) return true;
+        return false;
+    }
     std::vector<FxSampler> samplers;
     std::vector<FxTexture> textures;
     std::vector<FxStateObject> stateObjects;

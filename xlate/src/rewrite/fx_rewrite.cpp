@@ -25,6 +25,7 @@
 #include "rewrite/negated_bool_literals.h"
 #include "rewrite/unroll_limits.h"
 #include "rewrite/buffer_load_locations.h"
+#include "rewrite/sample_indexers.h"
 #include "rewrite/qualified_casts.h"
 #include "rewrite/keyword_identifiers.h"
 #include "rewrite/matrix_constructor_arguments.h"
@@ -447,6 +448,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : compareStoreAsExchange(syntax)) edits.push_back(std::move(e));
     for (auto& e : byteAddressStoreValues(syntax)) edits.push_back(std::move(e));
     for (auto& e : bufferLoadLocationsAsScalars(syntax)) edits.push_back(std::move(e));
+    for (auto& e : sampleIndexersAsLoads(syntax)) edits.push_back(std::move(e));
     for (auto& e : mixedDimensionOutputs(syntax)) edits.push_back(std::move(e));
     for (auto& e : switchLabelsAsIntegers(syntax)) edits.push_back(std::move(e));
     for (auto& e : matrixConstructorArgumentsAsRows(syntax)) edits.push_back(std::move(e));

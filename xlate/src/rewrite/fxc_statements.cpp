@@ -131,6 +131,16 @@ void copyAssignedUniforms(const EffectSyntax& syntax, std::vector<TextEdit>& edi
             if (depth == 0 && t[end].is(";")) break;
         }
         if (t[end].kind == Token::Kind::End) continue;
+        // A cbuffer's member (a D3D11 course's `SetMeshWorld(World, input)` with an inout World,
+        // compiled with /Gec) gets its copy after the cbuffer: glslang takes no static in a block.
+        if (!g.cbuffer.empty()) {
+            for (int depth = 0; end + 1 < t.size() && t[end].kind != Token::Kind::End; ++end) {
+                if (t[end].is("{")) ++depth;
+                if (t[end].is("}") && depth-- == 0) break;
+            }
+            if (t[end].kind == Token::Kind::End) continue;
+            if (t[end + 1].is(";")) ++end;
+        }
         const std::string copy = "fxport_copy_" + g.name;
         std::string dims;
         for (int d : g.arrayDims) dims += "[" + (d > 0 ? std::to_string(d) : std::string()) + "]";

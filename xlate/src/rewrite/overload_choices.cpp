@@ -104,15 +104,26 @@ private:
 
     void choose(const std::string& name, const std::vector<const FxFunction*>& overloads) {
         std::vector<Call> calls;
-        size_t uses = 0;
+        size_t uses = 0, undecided = 0;
         for (size_t i = 0; i < t_.size(); ++i) uses += t_[i].is(name) && t_[i].isIdent();
         for (const auto& f : syntax_.functions)
             for (size_t i = f.body.begin; i + 1 < f.body.end; ++i) {
                 if (!t_[i].is(name) || !t_[i + 1].is("(") || (i > 0 && t_[i - 1].is("."))) continue;
-                const FxFunction* chosen = best(f, i, overloads);
-                if (!chosen) return;
-                calls.push_back({i, chosen});
+                bool tie = false;
+                const FxFunction* chosen = best(f, i, overloads, tie);
+                if (tie) return;  // ambiguous or matching none: left to the checks (overload_ties.cpp) and glslang
+                if (!chosen) ++undecided;
+                else calls.push_back({i, chosen});
             }
+        for (const TokenSpan& body : syntax_.memberFunctionBodies)  // no FxFunction to read the types in
+            for (size_t i = body.begin; i + 1 < body.end; ++i)
+                undecided += t_[i].is(name) && t_[i + 1].is("(") && !(i > 0 && t_[i - 1].is("."));
+        // A call this ranking cannot decide (MAGE's `Max(abs(p))` in a struct's member function, beside
+        // Max(half3) ... Max(uint3))
+        // leaves the set to glslang, whose reading of the twins must still compile: one of each pair
+        // keeps the name, and to glslang it is the same function as the renamed one (half read as
+        // float), so glslang's pick computes the same.
+        if (undecided) return calls.size() + undecided + overloads.size() == uses ? renameCalledTwins(name, overloads) : void();
         if (calls.empty() && overloads.size() == uses) return renameUncalledTwins(name, overloads);
         // A prototype, a compile statement ... name it too; an entry point is named by the caller
         // of the compiler and never called (so a set without calls keeps its names).
@@ -141,6 +152,18 @@ private:
                 }
     }
 
+    // The calls left to glslang must see a definition declared before them, as glslang's
+    // (and fxc's) lookup does: here the first of twins keeps the name, each later one is renamed.
+    void renameCalledTwins(const std::string& name, const std::vector<const FxFunction*>& overloads) {
+        for (size_t k = 0; k < overloads.size(); ++k)
+            for (size_t j = 0; j < k; ++j)
+                if (sameToGlslang(*overloads[k], *overloads[j])) {
+                    const Token& n = t_[overloads[k]->token];
+                    edits_.push_back({n.offset, n.end, name + "_fxport_o" + std::to_string(k + 1)});
+                    break;
+                }
+    }
+
     bool sameToGlslang(const FxFunction& a, const FxFunction& b) const {
         if (a.parameters.size() != b.parameters.size()) return false;
         for (size_t k = 0; k < a.parameters.size(); ++k) {
@@ -152,9 +175,10 @@ private:
         return true;
     }
 
-    // fxc's pick for the call whose name is at `at` in `caller`; nothing for a tie or an argument
-    // whose type is not evident.
-    const FxFunction* best(const FxFunction& caller, size_t at, const std::vector<const FxFunction*>& overloads) const {
+    // fxc's pick for the call whose name is at `at` in `caller`; nothing for a tie or no match
+    // (`tied` set) or an argument whose type is not evident.
+    const FxFunction* best(const FxFunction& caller, size_t at, const std::vector<const FxFunction*>& overloads, bool& tied) const {
+        tied = false;
         auto spans = callArgumentSpans(t_, at + 1, caller.body.end);
         if (spans.empty() && !t_[at + 2].is(")")) return nullptr;
         std::vector<BasicType> args;
@@ -179,6 +203,7 @@ private:
                 tie = true;
             }
         }
+        tied = tie || !winner;  // every argument's type known: fxc's answer is this one (or its error)
         return tie ? nullptr : winner;
     }
 
