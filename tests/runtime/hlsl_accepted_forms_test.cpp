@@ -418,13 +418,14 @@ technique11 T { pass P { SetComputeShader(CompileShader(cs_5_0, Main())); } }
 // A RWTexture2D<float4> that a compute shader only writes, bound to an RGBA8 (Color) target: D3D
 // converts each store to the view's format, so the target holds the values rounded to 8 bits
 // (xlate/src/spirv/write_only_images.h). With the element type's rgba32f format GL would refuse
-// the binding or leave the target unwritten.
+// the binding or leave the target unwritten. The values scale to whole numbers or far from a half
+// (D3D allows 0.6 ULP in float -> UNORM: 127.5 may store 127 or 128, and the H200 stores 127).
 TEST(HlslAcceptedFormsCompute, WrittenOnlyTypedUavTakesTheTargetsFormat) {
     const char* const source = R"(RWTexture2D<float4> Out : register(u0);
 [numthreads(2, 2, 1)]
 void Main(uint3 id : SV_DispatchThreadID)
 {
-    Out[id.xy] = float4(0.25, 0.5, 1, id.x + 0.5 * id.y);
+    Out[id.xy] = float4(0.25, 0.75, 1, 0.2 * id.x + 0.4 * id.y);
 }
 technique11 T { pass P { SetComputeShader(CompileShader(cs_5_0, Main())); } }
 )";
@@ -440,9 +441,9 @@ technique11 T { pass P { SetComputeShader(CompileShader(cs_5_0, Main())); } }
     for (int y = 0; y < 2; ++y)
         for (int x = 0; x < 2; ++x) {
             const Vector4& p = got[size_t(y * 2 + x)];
-            const float w = std::min(1.0f, float(x) + 0.5f * float(y));
-            EXPECT_NEAR(p.X, 64 / 255.0f, 1e-6) << x << "," << y;
-            EXPECT_NEAR(p.Y, 128 / 255.0f, 1e-6) << x << "," << y;
+            const float w = 0.2f * float(x) + 0.4f * float(y);
+            EXPECT_NEAR(p.X, 64 / 255.0f, 1e-6) << x << "," << y;   // 63.75
+            EXPECT_NEAR(p.Y, 191 / 255.0f, 1e-6) << x << "," << y;  // 191.25
             EXPECT_NEAR(p.Z, 1.0f, 1e-6) << x << "," << y;
             EXPECT_NEAR(p.W, std::round(w * 255) / 255.0f, 1e-6) << x << "," << y;
         }
