@@ -13,20 +13,11 @@
 namespace d3d11test {
 namespace {
 
-const char* const kFullScreen = R"(
-float4 vs(uint id : SV_VertexID) : SV_Position {
-    float2 corner = float2((id << 1) & 2, id & 2);
-    return float4(corner * float2(2, -2) + float2(-1, 1), 0, 1);
-}
-Texture2D tex : register(t0);
-float4 ps(float4 p : SV_Position) : SV_Target { return tex.Load(int3(p.xy, 0)); }
-)";
-
 using Texel = std::array<float, 4>;
 
 // Draws every texel of `view` (width x height) into a float target and reads the target back.
 std::vector<Texel> loadEveryTexel(Device& d, ID3D11ShaderResourceView* view, UINT width, UINT height) {
-    return drawWithTexture(d, kFullScreen, view, width, height);
+    return drawWithTexture(d, kTexelLoadShader, view, width, height);
 }
 
 ComPtr<ID3D11Texture2D> makeCompressed(Device& d, DXGI_FORMAT format, UINT width, UINT height, const std::vector<std::uint8_t>& blocks,

@@ -4,6 +4,15 @@
 
 namespace d3d11test {
 
+const char* const kTexelLoadShader = R"(
+float4 vs(uint id : SV_VertexID) : SV_Position {
+    float2 corner = float2((id << 1) & 2, id & 2);
+    return float4(corner * float2(2, -2) + float2(-1, 1), 0, 1);
+}
+Texture2D tex : register(t0);
+float4 ps(float4 p : SV_Position) : SV_Target { return tex.Load(int3(p.xy, 0)); }
+)";
+
 Device::Device() {
     HRESULT hr = D3D11CreateDevice(nullptr, D3D_DRIVER_TYPE_HARDWARE, nullptr, 0, nullptr, 0, D3D11_SDK_VERSION,
                                    device.GetAddressOf(), nullptr, context.GetAddressOf());

@@ -38,6 +38,9 @@ std::vector<T> readTexels(Device& d, ID3D11Texture2D* texture, std::size_t perTe
     std::memcpy(out.data(), bytes.data(), out.size() * sizeof(T));
     return out;
 }
+// "vs": a full-screen triangle from SV_VertexID; "ps": the texel of t0 under each pixel (Load, no
+// filtering) -- what drawWithTexture draws to read a texture's texels back through a shader.
+extern const char* const kTexelLoadShader;
 // Draws `source`'s entries "vs" (a full-screen triangle from SV_VertexID) and "ps" (vs_5_0/ps_5_0)
 // into a width x height R32G32B32A32_FLOAT target with `view` at t0 and `sampler` (may be null) at
 // s0, and reads the target back.

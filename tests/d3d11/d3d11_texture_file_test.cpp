@@ -117,15 +117,6 @@ std::vector<Texel> TextureFiles::draw(const char* source, ID3D11ShaderResourceVi
     return drawWithTexture(d, source, srv, width, height, sampler.Get());
 }
 
-const char* const kLoadTexels = R"(
-float4 vs(uint id : SV_VertexID) : SV_Position {
-    float2 corner = float2((id << 1) & 2, id & 2);
-    return float4(corner * float2(2, -2) + float2(-1, 1), 0, 1);
-}
-Texture2D tex : register(t0);
-float4 ps(float4 p : SV_Position) : SV_Target { return tex.Load(int3(p.xy, 0)); }
-)";
-
 // --- block decoders from D3D's rules, written apart from the runtime's: BC1's 5:6:5 endpoints
 // widened by bit replication, c0 > c1 giving thirds, otherwise the halfway colour and transparent
 // black; BC3's alpha endpoints with 6 (a0 > a1) or 4 interpolated values plus 0 and 255.
@@ -202,7 +193,7 @@ TEST_F(TextureFiles, Bc1DdsKeepsItsBlocksAndLevels) {
     EXPECT_EQ(readLevel(texture.Get(), 0, 16, 2), kBc1Level0);
     EXPECT_EQ(readLevel(texture.Get(), 1, 8, 1), kBc1Level1);
     EXPECT_EQ(readLevel(texture.Get(), 3, 8, 1), kBc1Level3);
-    const std::vector<Texel> got = draw(kLoadTexels, srv.Get(), 8, 8);
+    const std::vector<Texel> got = draw(kTexelLoadShader, srv.Get(), 8, 8);
     ASSERT_EQ(got.size(), 64u);
     for (int block = 0; block < 4; ++block) {
         SCOPED_TRACE("block " + std::to_string(block));
@@ -224,7 +215,7 @@ TEST_F(TextureFiles, Bc3AndSrgbBc7KeepTheirFormats) {
     texture->GetDesc(&desc);
     EXPECT_EQ(desc.Format, DXGI_FORMAT_BC3_UNORM);
     EXPECT_EQ(desc.MipLevels, 1u);
-    expectTexels(draw(kLoadTexels, srv.Get(), 4, 4), decodeBc3(block.data()), 4, 0);
+    expectTexels(draw(kTexelLoadShader, srv.Get(), 4, 4), decodeBc3(block.data()), 4, 0);
 
     Bytes bc7 = dx10Header(8, 4, 1, DXGI_FORMAT_BC7_UNORM_SRGB);
     append(bc7, Bytes(32, 0x40));

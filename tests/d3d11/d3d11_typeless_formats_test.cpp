@@ -10,15 +10,6 @@
 namespace d3d11test {
 namespace {
 
-const char* const kLoad = R"(
-float4 vs(uint id : SV_VertexID) : SV_Position {
-    float2 corner = float2((id << 1) & 2, id & 2);
-    return float4(corner * float2(2, -2) + float2(-1, 1), 0, 1);
-}
-Texture2D tex : register(t0);
-float4 ps(float4 p : SV_Position) : SV_Target { return tex.Load(int3(p.xy, 0)); }
-)";
-
 using Texel = std::array<float, 4>;
 
 float srgbToLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
@@ -69,7 +60,7 @@ TEST(D3D11TypelessFormats, B8G8R8X8ReadsAlphaAsOne) {
     ComPtr<ID3D11Texture2D> t = makeTexture2D(d, DXGI_FORMAT_B8G8R8X8_UNORM, 2, 2, kBgrx, 8);
     ComPtr<ID3D11ShaderResourceView> view;
     ASSERT_EQ(d.device->CreateShaderResourceView(t.Get(), nullptr, view.GetAddressOf()), S_OK) << lastError();
-    expectTexels(drawWithTexture(d, kLoad, view.Get(), 2, 2), bgrxTexels(false), 0.5f / 255.0f, "B8G8R8X8_UNORM");
+    expectTexels(drawWithTexture(d, kTexelLoadShader, view.Get(), 2, 2), bgrxTexels(false), 0.5f / 255.0f, "B8G8R8X8_UNORM");
 }
 
 TEST(D3D11TypelessFormats, B8G8R8X8SrgbDecodes) {
@@ -77,7 +68,7 @@ TEST(D3D11TypelessFormats, B8G8R8X8SrgbDecodes) {
     ComPtr<ID3D11Texture2D> t = makeTexture2D(d, DXGI_FORMAT_B8G8R8X8_UNORM_SRGB, 2, 2, kBgrx, 8);
     ComPtr<ID3D11ShaderResourceView> view;
     ASSERT_EQ(d.device->CreateShaderResourceView(t.Get(), nullptr, view.GetAddressOf()), S_OK) << lastError();
-    expectTexels(drawWithTexture(d, kLoad, view.Get(), 2, 2), bgrxTexels(true), 2e-3f, "B8G8R8X8_UNORM_SRGB");
+    expectTexels(drawWithTexture(d, kTexelLoadShader, view.Get(), 2, 2), bgrxTexels(true), 2e-3f, "B8G8R8X8_UNORM_SRGB");
 }
 
 TEST(D3D11TypelessFormats, B8G8R8X8TypelessIsReadAsUnormAndSrgb) {
@@ -87,8 +78,8 @@ TEST(D3D11TypelessFormats, B8G8R8X8TypelessIsReadAsUnormAndSrgb) {
     ComPtr<ID3D11ShaderResourceView> linear = viewAs(d, t.Get(), DXGI_FORMAT_B8G8R8X8_UNORM);
     ComPtr<ID3D11ShaderResourceView> srgb = viewAs(d, t.Get(), DXGI_FORMAT_B8G8R8X8_UNORM_SRGB);
     ASSERT_TRUE(linear && srgb);
-    expectTexels(drawWithTexture(d, kLoad, linear.Get(), 2, 2), bgrxTexels(false), 0.5f / 255.0f, "UNORM view");
-    expectTexels(drawWithTexture(d, kLoad, srgb.Get(), 2, 2), bgrxTexels(true), 2e-3f, "SRGB view");
+    expectTexels(drawWithTexture(d, kTexelLoadShader, linear.Get(), 2, 2), bgrxTexels(false), 0.5f / 255.0f, "UNORM view");
+    expectTexels(drawWithTexture(d, kTexelLoadShader, srgb.Get(), 2, 2), bgrxTexels(true), 2e-3f, "SRGB view");
 }
 
 TEST(D3D11TypelessFormats, B8G8R8X8RenderTargetBlendsWithDestinationAlphaOne) {
@@ -153,9 +144,9 @@ TEST(D3D11TypelessFormats, R8G8B8A8TypelessIsReadAsUnormSrgbAndSnorm) {
         }
         unorm.push_back(u), srgb.push_back(s), snorm.push_back(n);
     }
-    expectTexels(drawWithTexture(d, kLoad, viewAs(d, t.Get(), DXGI_FORMAT_R8G8B8A8_UNORM).Get(), 2, 1), unorm, 0.5f / 255.0f, "UNORM");
-    expectTexels(drawWithTexture(d, kLoad, viewAs(d, t.Get(), DXGI_FORMAT_R8G8B8A8_UNORM_SRGB).Get(), 2, 1), srgb, 2e-3f, "SRGB");
-    expectTexels(drawWithTexture(d, kLoad, viewAs(d, t.Get(), DXGI_FORMAT_R8G8B8A8_SNORM).Get(), 2, 1), snorm, 0.5f / 127.0f, "SNORM");
+    expectTexels(drawWithTexture(d, kTexelLoadShader, viewAs(d, t.Get(), DXGI_FORMAT_R8G8B8A8_UNORM).Get(), 2, 1), unorm, 0.5f / 255.0f, "UNORM");
+    expectTexels(drawWithTexture(d, kTexelLoadShader, viewAs(d, t.Get(), DXGI_FORMAT_R8G8B8A8_UNORM_SRGB).Get(), 2, 1), srgb, 2e-3f, "SRGB");
+    expectTexels(drawWithTexture(d, kTexelLoadShader, viewAs(d, t.Get(), DXGI_FORMAT_R8G8B8A8_SNORM).Get(), 2, 1), snorm, 0.5f / 127.0f, "SNORM");
 }
 
 // One 4x4 BC1 block of a single colour: both endpoints c, every index 0 (D3D: every texel is c0).
@@ -182,9 +173,9 @@ TEST(D3D11TypelessFormats, Bc1AndBc3TypelessAreReadAsUnormAndSrgb) {
         Device d;
         ComPtr<ID3D11Texture2D> t = makeTexture2D(d, typeless, 4, 4, blocks.data(), UINT(blocks.size()));
         ASSERT_TRUE(t);
-        expectTexels(drawWithTexture(d, kLoad, viewAs(d, t.Get(), unorm).Get(), 4, 4), std::vector<Texel>(16, rgb565(colour, false)), 1e-6f,
+        expectTexels(drawWithTexture(d, kTexelLoadShader, viewAs(d, t.Get(), unorm).Get(), 4, 4), std::vector<Texel>(16, rgb565(colour, false)), 1e-6f,
                      "UNORM view");
-        expectTexels(drawWithTexture(d, kLoad, viewAs(d, t.Get(), srgb).Get(), 4, 4), std::vector<Texel>(16, rgb565(colour, true)), 2e-3f,
+        expectTexels(drawWithTexture(d, kTexelLoadShader, viewAs(d, t.Get(), srgb).Get(), 4, 4), std::vector<Texel>(16, rgb565(colour, true)), 2e-3f,
                      "SRGB view");
     }
 }
@@ -201,8 +192,8 @@ TEST(D3D11TypelessFormats, Bc4AndBc5TypelessAreReadAsUnormAndSnorm) {
         ComPtr<ID3D11Texture2D> t = makeTexture2D(d, typeless, 4, 4, blocks.data(), UINT(blocks.size()));
         ASSERT_TRUE(t);
         const Texel u = {64.0f / 255.0f, channels > 1 ? 64.0f / 255.0f : 0.0f, 0, 1}, s = {64.0f / 127.0f, channels > 1 ? 64.0f / 127.0f : 0.0f, 0, 1};
-        expectTexels(drawWithTexture(d, kLoad, viewAs(d, t.Get(), unorm).Get(), 4, 4), std::vector<Texel>(16, u), 1e-3f, "UNORM view");
-        expectTexels(drawWithTexture(d, kLoad, viewAs(d, t.Get(), snorm).Get(), 4, 4), std::vector<Texel>(16, s), 1e-2f, "SNORM view");
+        expectTexels(drawWithTexture(d, kTexelLoadShader, viewAs(d, t.Get(), unorm).Get(), 4, 4), std::vector<Texel>(16, u), 1e-3f, "UNORM view");
+        expectTexels(drawWithTexture(d, kTexelLoadShader, viewAs(d, t.Get(), snorm).Get(), 4, 4), std::vector<Texel>(16, s), 1e-2f, "SNORM view");
     }
 }
 
