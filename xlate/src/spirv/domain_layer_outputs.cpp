@@ -13,25 +13,13 @@ constexpr std::uint32_t kEntryPoint = 15, kVariable = 59, kStore = 62, kDecorate
 constexpr std::uint32_t kTessellationEvaluation = 2, kOutput = 3, kBuiltIn = 11, kUserSemantic = 5635;
 constexpr std::uint32_t kLayer = 9, kViewportIndex = 10;
 
-// The literal string starting at word `first`.
-std::string literalAt(const SpirvInstruction& in, size_t first) {
-    std::string s;
-    for (size_t k = first; k < in.words.size(); ++k)
-        for (int b = 0; b < 4; ++b) {
-            const char c = char((in.words[k] >> (8 * b)) & 0xFFu);
-            if (c == 0) return s;
-            s += c;
-        }
-    return s;
-}
-
 // Output variables with the two semantics -> the built-in each stands for.
 std::map<std::uint32_t, std::uint32_t> layerOutputs(const ParsedSpirv& m) {
     std::map<std::uint32_t, std::uint32_t> bySemantic, outputs;
     for (const SpirvInstruction& in : m.instructions) {
         if (in.opcode() == kEntryPoint && in.word(1) != kTessellationEvaluation) return {};
         if (in.opcode() != kDecorateString || in.word(2) != kUserSemantic) continue;
-        const std::string semantic = toUpper(literalAt(in, 3));
+        const std::string semantic = toUpper(spirvLiteralString(in, 3));
         if (semantic == "SV_RENDERTARGETARRAYINDEX") bySemantic[in.word(1)] = kLayer;
         if (semantic == "SV_VIEWPORTARRAYINDEX") bySemantic[in.word(1)] = kViewportIndex;
     }

@@ -17,6 +17,23 @@ bool isIdOperand(spv_operand_type_t t) {
 
 }  // namespace
 
+std::string spirvLiteralString(const SpirvInstruction& in, size_t first) {
+    std::string s;
+    for (size_t k = first; k < in.words.size(); ++k)
+        for (int b = 0; b < 4; ++b) {
+            const char c = char((in.words[k] >> (8 * b)) & 0xFFu);
+            if (c == 0) return s;
+            s += c;
+        }
+    return s;
+}
+
+std::vector<std::uint32_t> spirvLiteralWords(const std::string& s) {
+    std::vector<std::uint32_t> words((s.size() + 4) / 4, 0);
+    for (size_t k = 0; k < s.size(); ++k) words[k / 4] |= std::uint32_t(static_cast<unsigned char>(s[k])) << (8 * (k % 4));
+    return words;
+}
+
 bool ParsedSpirv::parse(const std::vector<std::uint32_t>& words) {
     if (words.size() < kHeaderWords) return false;
     *this = ParsedSpirv();

@@ -42,6 +42,12 @@ constexpr std::uint32_t kGlslStd450FMax = 40;
 // The first word of an instruction of `count` words.
 inline std::uint32_t spirvFirstWord(std::uint32_t opcode, size_t count) { return (std::uint32_t(count) << 16) | opcode; }
 
+// SPIR-V's literal string starting at word `first` of `in`: UTF-8, the first byte in a word's lowest
+// byte, NUL-terminated (what OpName, OpExtension and OpDecorateString carry).
+std::string spirvLiteralString(const SpirvInstruction& in, size_t first);
+// `s` as the words of a literal string (NUL-terminated, padded to a whole word).
+std::vector<std::uint32_t> spirvLiteralWords(const std::string& s);
+
 class ParsedSpirv {
 public:
     // False when SPIRV-Tools cannot parse `words` (the module is then left to the validator).

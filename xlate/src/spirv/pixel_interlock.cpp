@@ -13,23 +13,6 @@ constexpr std::uint32_t kName = 5, kExtension = 10, kCapability = 17, kEntryPoin
 constexpr std::uint32_t kBeginInterlock = 5364, kEndInterlock = 5365, kPixelInterlockOrdered = 5366,
                         kFragmentShaderPixelInterlock = 5378, kFragment = 4;
 
-std::string literalAt(const SpirvInstruction& in, size_t first) {
-    std::string s;
-    for (size_t k = first; k < in.words.size(); ++k)
-        for (int b = 0; b < 4; ++b) {
-            const char c = char((in.words[k] >> (8 * b)) & 0xFFu);
-            if (c == 0) return s;
-            s += c;
-        }
-    return s;
-}
-
-std::vector<std::uint32_t> literalWords(const std::string& s) {
-    std::vector<std::uint32_t> words((s.size() + 4) / 4, 0);
-    for (size_t k = 0; k < s.size(); ++k) words[k / 4] |= std::uint32_t(static_cast<unsigned char>(s[k])) << (8 * (k % 4));
-    return words;
-}
-
 SpirvInstruction instruction(std::uint32_t opcode, std::vector<std::uint32_t> operands) {
     SpirvInstruction in;
     in.words.push_back(spirvFirstWord(opcode, operands.size() + 1));
@@ -48,7 +31,7 @@ bool pixelInterlockForOrderedViews(ParsedSpirv& m, const std::vector<std::string
             if (in.word(1) != kFragment) return false;
             entry = in.word(2);
         }
-        if (in.opcode() == kName && std::find(views.begin(), views.end(), literalAt(in, 2)) != views.end()) named.insert(in.word(1));
+        if (in.opcode() == kName && std::find(views.begin(), views.end(), spirvLiteralString(in, 2)) != views.end()) named.insert(in.word(1));
         if (in.opcode() == kVariable) variables.insert(in.word(2));
     }
     if (!entry || std::none_of(named.begin(), named.end(), [&](std::uint32_t id) { return variables.count(id) > 0; })) return false;
@@ -62,7 +45,7 @@ bool pixelInterlockForOrderedViews(ParsedSpirv& m, const std::vector<std::string
             capabilityDone = true;
         }
         if (!extensionDone && op != kCapability) {
-            std::vector<std::uint32_t> name = literalWords("SPV_EXT_fragment_shader_interlock");
+            std::vector<std::uint32_t> name = spirvLiteralWords("SPV_EXT_fragment_shader_interlock");
             out.push_back(instruction(kExtension, name));
             extensionDone = true;
         }
