@@ -13,6 +13,7 @@
 #include <set>
 
 #include "d3d11_test_support.h"
+#include "shader_sources/quad_patch_stages.h"
 
 namespace d3d11test {
 namespace {
@@ -265,7 +266,7 @@ TEST(D3D11Stages, GeometryShaderExpandsPointsIntoSquares) {
         }
 }
 
-const char* kTessellation = R"(
+const std::string kTessellation = std::string(R"(
 cbuffer Tessellation : register(b0) { float Factor; };   // the hull stage's b0
 struct ControlPoint { float3 pos : TEXCOORD0; float4 unused : SV_Position; };   // (see kPointSprites on semantics between stages)
 struct PatchConstants { float edges[4] : SV_TessFactor; float inside[2] : SV_InsideTessFactor; };
@@ -273,32 +274,7 @@ struct DomainOut { float4 pos : SV_Position; float4 color : COLOR0; };
 
 ControlPoint VS(float3 pos : POSITION) { ControlPoint o; o.pos = pos; o.unused = float4(pos, 1); return o; }
 
-PatchConstants Constants(InputPatch<ControlPoint, 4> patch)
-{
-    PatchConstants o;
-    o.edges[0] = o.edges[1] = o.edges[2] = o.edges[3] = Factor;
-    o.inside[0] = o.inside[1] = Factor;
-    return o;
-}
-
-[domain("quad")]
-[partitioning("integer")]
-[outputtopology("triangle_cw")]
-[outputcontrolpoints(4)]
-[patchconstantfunc("Constants")]
-ControlPoint HS(InputPatch<ControlPoint, 4> patch, uint i : SV_OutputControlPointID) { return patch[i]; }
-
-[domain("quad")]
-DomainOut DS(PatchConstants pc, float2 uv : SV_DomainLocation, const OutputPatch<ControlPoint, 4> patch)
-{
-    DomainOut o;
-    o.pos = float4(lerp(lerp(patch[0].pos, patch[1].pos, uv.x), lerp(patch[3].pos, patch[2].pos, uv.x), uv.y), 1);
-    o.color = float4(uv, uv.x * uv.y, 1);
-    return o;
-}
-
-float4 PS(DomainOut i) : SV_Target { return i.color; }
-)";
+)") + fxport::test::kQuadPatchStages;
 
 struct TessellationTest : ::testing::Test {
     Device d;

@@ -16,6 +16,7 @@
 
 #include "fxport/graphics.h"
 #include "runtime_test_support.h"
+#include "shader_sources/quad_patch_stages.h"
 
 using namespace fxport;
 
@@ -56,39 +57,7 @@ technique11 Compute
 }
 )";
 
-const char* const kTessellationEffect = R"(struct ControlPoint { float3 pos : POSITION; };
-struct PatchConstants { float edges[4] : SV_TessFactor; float inside[2] : SV_InsideTessFactor; };
-struct DomainOut { float4 pos : SV_Position; float4 color : COLOR0; };
-float Factor;
-
-ControlPoint VS(float3 pos : POSITION) { ControlPoint o; o.pos = pos; return o; }
-
-PatchConstants Constants(InputPatch<ControlPoint, 4> patch)
-{
-    PatchConstants o;
-    o.edges[0] = o.edges[1] = o.edges[2] = o.edges[3] = Factor;
-    o.inside[0] = o.inside[1] = Factor;
-    return o;
-}
-
-[domain("quad")]
-[partitioning("integer")]
-[outputtopology("triangle_cw")]
-[outputcontrolpoints(4)]
-[patchconstantfunc("Constants")]
-ControlPoint HS(InputPatch<ControlPoint, 4> patch, uint i : SV_OutputControlPointID) { return patch[i]; }
-
-[domain("quad")]
-DomainOut DS(PatchConstants pc, float2 uv : SV_DomainLocation, const OutputPatch<ControlPoint, 4> patch)
-{
-    DomainOut o;
-    o.pos = float4(lerp(lerp(patch[0].pos, patch[1].pos, uv.x), lerp(patch[3].pos, patch[2].pos, uv.x), uv.y), 1);
-    o.color = float4(uv, uv.x * uv.y, 1);
-    return o;
-}
-
-float4 PS(DomainOut i) : SV_Target { return i.color; }
-
+const std::string kTessellationEffect = std::string(fxport::test::kQuadPatchDeclarations) + fxport::test::kQuadPatchStages + R"(
 technique11 Tessellate
 {
     pass P0
