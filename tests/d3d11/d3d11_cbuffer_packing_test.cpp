@@ -48,10 +48,6 @@ TEST_P(CbufferPacking, TheShaderReadsTheWordsAtD3DOffsets) {
         EXPECT_EQ(v.StartOffset, offset) << name;
     }
 
-    ComPtr<ID3D11VertexShader> vs;
-    ComPtr<ID3D11PixelShader> ps;
-    ASSERT_EQ(d.device->CreateVertexShader(vsCode->GetBufferPointer(), vsCode->GetBufferSize(), nullptr, vs.GetAddressOf()), S_OK) << lastError();
-    ASSERT_EQ(d.device->CreatePixelShader(psCode->GetBufferPointer(), psCode->GetBufferSize(), nullptr, ps.GetAddressOf()), S_OK) << lastError();
 
     std::vector<float> words(256);
     for (int k = 0; k < int(words.size()); ++k) words[std::size_t(k)] = valueOf(k);
@@ -64,18 +60,7 @@ TEST_P(CbufferPacking, TheShaderReadsTheWordsAtD3DOffsets) {
     ASSERT_EQ(d.device->CreateBuffer(&desc, &data, constants.GetAddressOf()), S_OK) << lastError();
     d.context->PSSetConstantBuffers(0, 1, constants.GetAddressOfConst());
 
-    ComPtr<ID3D11Texture2D> target = makeTexture(d, 1, 1, D3D11_BIND_RENDER_TARGET);
-    ComPtr<ID3D11RenderTargetView> rtv;
-    ASSERT_EQ(d.device->CreateRenderTargetView(target.Get(), nullptr, rtv.GetAddressOf()), S_OK);
-    d.context->OMSetRenderTargets(1, rtv.GetAddressOfConst(), nullptr);
-    D3D11_VIEWPORT vp;
-    vp.Width = 1;
-    vp.Height = 1;
-    d.context->RSSetViewports(1, &vp);
-    d.context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
-    d.context->VSSetShader(vs.Get(), nullptr, 0);
-    d.context->PSSetShader(ps.Get(), nullptr, 0);
-    d.context->Draw(3, 0);
+    ComPtr<ID3D11Texture2D> target = drawTriangleToRgba8(d, vsCode.Get(), psCode.Get(), 1, 1);
     ASSERT_EQ(lastError(), "");
 
     const auto pixel = readPixels(d, target.Get()).at(0);
@@ -137,10 +122,6 @@ TEST(D3D11CbufferPacking, DynamicIndexReadsWholeRegisters) {
     ComPtr<ID3DBlob> vsCode = compile(kVertex, "VS", "vs_4_0", "dyn_vs.hlsl");
     ComPtr<ID3DBlob> psCode = compile(source, "PS", "ps_4_0", "dyn.hlsl");
     ASSERT_TRUE(vsCode && psCode);
-    ComPtr<ID3D11VertexShader> vs;
-    ComPtr<ID3D11PixelShader> ps;
-    ASSERT_EQ(d.device->CreateVertexShader(vsCode->GetBufferPointer(), vsCode->GetBufferSize(), nullptr, vs.GetAddressOf()), S_OK) << lastError();
-    ASSERT_EQ(d.device->CreatePixelShader(psCode->GetBufferPointer(), psCode->GetBufferSize(), nullptr, ps.GetAddressOf()), S_OK) << lastError();
     std::vector<float> words(64);
     for (int k = 0; k < int(words.size()); ++k) words[std::size_t(k)] = valueOf(k);
     const std::int32_t one = 1;
@@ -153,18 +134,7 @@ TEST(D3D11CbufferPacking, DynamicIndexReadsWholeRegisters) {
     ComPtr<ID3D11Buffer> constants;
     ASSERT_EQ(d.device->CreateBuffer(&desc, &data, constants.GetAddressOf()), S_OK) << lastError();
     d.context->PSSetConstantBuffers(0, 1, constants.GetAddressOfConst());
-    ComPtr<ID3D11Texture2D> target = makeTexture(d, 1, 1, D3D11_BIND_RENDER_TARGET);
-    ComPtr<ID3D11RenderTargetView> rtv;
-    ASSERT_EQ(d.device->CreateRenderTargetView(target.Get(), nullptr, rtv.GetAddressOf()), S_OK);
-    d.context->OMSetRenderTargets(1, rtv.GetAddressOfConst(), nullptr);
-    D3D11_VIEWPORT vp;
-    vp.Width = 1;
-    vp.Height = 1;
-    d.context->RSSetViewports(1, &vp);
-    d.context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
-    d.context->VSSetShader(vs.Get(), nullptr, 0);
-    d.context->PSSetShader(ps.Get(), nullptr, 0);
-    d.context->Draw(3, 0);
+    ComPtr<ID3D11Texture2D> target = drawTriangleToRgba8(d, vsCode.Get(), psCode.Get(), 1, 1);
     ASSERT_EQ(lastError(), "");
     const int expected[4] = {12, 16, 17, 33};  // arr[1] c3.x, arr[2] c4.x, tail c4.y, m[1][1][1] c8.y
     const auto pixel = readPixels(d, target.Get()).at(0);

@@ -66,10 +66,6 @@ TEST(D3D11Slots, ResourcesBoundAtTheirSlotsReachTheShader) {
     ComPtr<ID3DBlob> vsCode = compile(kVertex, "VS", "vs_4_0", "slots_vs.hlsl");
     ComPtr<ID3DBlob> psCode = compile(kPixel, "PS", "ps_4_0", "slots.hlsl");
     ASSERT_TRUE(vsCode && psCode);
-    ComPtr<ID3D11VertexShader> vs;
-    ComPtr<ID3D11PixelShader> ps;
-    ASSERT_EQ(d.device->CreateVertexShader(vsCode->GetBufferPointer(), vsCode->GetBufferSize(), nullptr, vs.GetAddressOf()), S_OK) << lastError();
-    ASSERT_EQ(d.device->CreatePixelShader(psCode->GetBufferPointer(), psCode->GetBufferSize(), nullptr, ps.GetAddressOf()), S_OK) << lastError();
 
     // 1x1 textures: A (at t3) red 200, B (at t0) green 200; a decoy at t1 and t2 blue.
     const std::vector<std::uint32_t> red = {0xff0000c8u}, green = {0xff00c800u}, blue = {0xffff0000u};
@@ -105,18 +101,7 @@ TEST(D3D11Slots, ResourcesBoundAtTheirSlotsReachTheShader) {
     ID3D11Buffer* cbs[2] = {offset.Get(), scale.Get()};
     d.context->PSSetConstantBuffers(0, 2, cbs);
 
-    ComPtr<ID3D11Texture2D> target = makeTexture(d, 4, 4, D3D11_BIND_RENDER_TARGET);
-    ComPtr<ID3D11RenderTargetView> rtv;
-    ASSERT_EQ(d.device->CreateRenderTargetView(target.Get(), nullptr, rtv.GetAddressOf()), S_OK);
-    d.context->OMSetRenderTargets(1, rtv.GetAddressOfConst(), nullptr);
-    D3D11_VIEWPORT vp;
-    vp.Width = 4;
-    vp.Height = 4;
-    d.context->RSSetViewports(1, &vp);
-    d.context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
-    d.context->VSSetShader(vs.Get(), nullptr, 0);
-    d.context->PSSetShader(ps.Get(), nullptr, 0);
-    d.context->Draw(3, 0);
+    ComPtr<ID3D11Texture2D> target = drawTriangleToRgba8(d, vsCode.Get(), psCode.Get(), 4, 4);
     ASSERT_EQ(lastError(), "");
 
     // red*0.5 + green*0.25 + (0,0,0.25,0): R = 200/255*0.5, G = 200/255*0.25, B = 0.25, A = 1*1 + 0.25 -> 1.
@@ -152,10 +137,6 @@ float4 PS(float4 pos : SV_Position) : SV_Target
         ASSERT_EQ(r->GetResourceBindingDescByName(s.name, &b), S_OK) << s.name << ": " << lastError();
         EXPECT_EQ(b.BindPoint, s.bindPoint) << s.name;
     }
-    ComPtr<ID3D11VertexShader> vs;
-    ComPtr<ID3D11PixelShader> ps;
-    ASSERT_EQ(d.device->CreateVertexShader(vsCode->GetBufferPointer(), vsCode->GetBufferSize(), nullptr, vs.GetAddressOf()), S_OK) << lastError();
-    ASSERT_EQ(d.device->CreatePixelShader(psCode->GetBufferPointer(), psCode->GetBufferSize(), nullptr, ps.GetAddressOf()), S_OK) << lastError();
     const std::vector<std::uint32_t> red = {0xff0000c8u}, green = {0xff00c800u}, blue = {0xffff0000u};
     auto srvOf = [&](const std::vector<std::uint32_t>& texel) {
         ComPtr<ID3D11Texture2D> t = makeTexture(d, 1, 1, D3D11_BIND_SHADER_RESOURCE, &texel);
@@ -173,18 +154,7 @@ float4 PS(float4 pos : SV_Position) : SV_Target
     ComPtr<ID3D11SamplerState> sampler;
     ASSERT_EQ(d.device->CreateSamplerState(&sd, sampler.GetAddressOf()), S_OK);
     d.context->PSSetSamplers(0, 1, sampler.GetAddressOfConst());
-    ComPtr<ID3D11Texture2D> target = makeTexture(d, 4, 4, D3D11_BIND_RENDER_TARGET);
-    ComPtr<ID3D11RenderTargetView> rtv;
-    ASSERT_EQ(d.device->CreateRenderTargetView(target.Get(), nullptr, rtv.GetAddressOf()), S_OK);
-    d.context->OMSetRenderTargets(1, rtv.GetAddressOfConst(), nullptr);
-    D3D11_VIEWPORT vp;
-    vp.Width = 4;
-    vp.Height = 4;
-    d.context->RSSetViewports(1, &vp);
-    d.context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
-    d.context->VSSetShader(vs.Get(), nullptr, 0);
-    d.context->PSSetShader(ps.Get(), nullptr, 0);
-    d.context->Draw(3, 0);
+    ComPtr<ID3D11Texture2D> target = drawTriangleToRgba8(d, vsCode.Get(), psCode.Get(), 4, 4);
     ASSERT_EQ(lastError(), "");
     // red*0.5 + green*0.25: R = 200*0.5, G = 200*0.25, B = 0 (the blue decoy would show here).
     for (const auto& p : readPixels(d, target.Get())) {

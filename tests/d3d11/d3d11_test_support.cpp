@@ -61,6 +61,25 @@ std::vector<std::array<float, 4>> drawWithTexture(Device& d, const std::string& 
     return readTexels<std::array<float, 4>>(d, target.Get());
 }
 
+ComPtr<ID3D11Texture2D> drawTriangleToRgba8(Device& d, ID3DBlob* vsCode, ID3DBlob* psCode, UINT width, UINT height) {
+    ComPtr<ID3D11VertexShader> vs;
+    ComPtr<ID3D11PixelShader> ps;
+    EXPECT_EQ(d.device->CreateVertexShader(vsCode->GetBufferPointer(), vsCode->GetBufferSize(), nullptr, vs.GetAddressOf()), S_OK) << lastError();
+    EXPECT_EQ(d.device->CreatePixelShader(psCode->GetBufferPointer(), psCode->GetBufferSize(), nullptr, ps.GetAddressOf()), S_OK) << lastError();
+    ComPtr<ID3D11Texture2D> target = makeTexture(d, width, height, D3D11_BIND_RENDER_TARGET);
+    ComPtr<ID3D11RenderTargetView> rtv;
+    EXPECT_EQ(d.device->CreateRenderTargetView(target.Get(), nullptr, rtv.GetAddressOf()), S_OK) << lastError();
+    d.context->OMSetRenderTargets(1, rtv.GetAddressOfConst(), nullptr);
+    D3D11_VIEWPORT viewport{0, 0, float(width), float(height), 0, 1};
+    d.context->RSSetViewports(1, &viewport);
+    d.context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+    d.context->VSSetShader(vs.Get(), nullptr, 0);
+    d.context->PSSetShader(ps.Get(), nullptr, 0);
+    d.context->Draw(3, 0);
+    EXPECT_EQ(lastError(), "");
+    return target;
+}
+
 std::vector<std::uint8_t> readTexelBytes(Device& d, ID3D11Texture2D* texture, std::size_t texelBytes) {
     D3D11_TEXTURE2D_DESC desc;
     texture->GetDesc(&desc);

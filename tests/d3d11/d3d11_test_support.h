@@ -46,6 +46,10 @@ extern const char* const kTexelLoadShader;
 // s0, and reads the target back.
 std::vector<std::array<float, 4>> drawWithTexture(Device& d, const std::string& source, ID3D11ShaderResourceView* view, UINT width, UINT height,
                                                   ID3D11SamplerState* sampler = nullptr);
+// Makes vertex and pixel shaders of the two blobs, draws three vertices (a triangle list) into a new
+// width x height R8G8B8A8_UNORM target with a viewport of its size, and returns the target; whatever
+// else the draw reads (constant buffers, views, samplers) the caller binds before.
+ComPtr<ID3D11Texture2D> drawTriangleToRgba8(Device& d, ID3DBlob* vsCode, ID3DBlob* psCode, UINT width, UINT height);
 // RGBA8 pixels of a R8G8B8A8_UNORM texture, top row first.
 inline std::vector<std::array<std::uint8_t, 4>> readPixels(Device& d, ID3D11Texture2D* texture) {
     return readTexels<std::array<std::uint8_t, 4>>(d, texture);
