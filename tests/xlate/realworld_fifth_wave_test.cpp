@@ -10,44 +10,22 @@
 #include <map>
 
 #include "fxport/xlate/effect_compiler.h"
+#include "compile_loose.h"
 #include "fxport/xlate/effect_file.h"
 
 namespace fs = std::filesystem;
 using namespace fxport::xlate;
 
-namespace {
-
-fs::path writeSource(const std::string& name, const std::string& source) {
-    fs::path dir = fs::temp_directory_path() / ("fxport-fifth-wave-" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    std::ofstream(dir / name) << source;
-    return dir / name;
-}
-
-CompiledEffect compileLoose(const std::string& source, const std::string& profile, const std::string& entry = "main") {
-    CompileOptions o;
-    o.useCache = false;
-    return compileShaderFiles({{writeSource("shader.hlsl", source).string(), entry, profile}}, o);
-}
-
-std::vector<Diagnostic> errorsOf(const std::string& source, const std::string& profile) {
-    try {
-        compileLoose(source, profile);
-    } catch (const CompileError& err) {
-        return err.diagnostics();
-    }
-    ADD_FAILURE() << "compiled";
-    return {};
-}
-
-}  // namespace
+using fxport::test::writeLooseSource;
+using fxport::test::compileLoose;
+using fxport::test::errorsOfLoose;
 
 // CMAA2.hlsl's `#error ... it's likely not valid anymore` and FXAA 3.11's `#error ... can't be
 // enabled together` sit in groups that #if skips; a C preprocessor only looks for the next
 // directive there. The taken branch is the one compiled (its constant in the GLSL), also when the
 // quote is unmatched in a skipped #define, a text line or an included header.
 TEST(RealworldFifthWave, UnmatchedQuotesInSkippedGroups) {
-    writeSource("fxaa.h", "#if 0\n#error FXAA_GREEN_AS_LUMA and FXAA_LUMA_SEPARATE_R8 can't be enabled together\n#endif\n");
+    writeLooseSource("fxaa.h", "#if 0\n#error FXAA_GREEN_AS_LUMA and FXAA_LUMA_SEPARATE_R8 can't be enabled together\n#endif\n");
     CompiledEffect e = compileLoose("#include \"fxaa.h\"\n"
                                     "#if (0 != 0)\n"
                                     "#error this codepath needs testing - it's likely not valid anymore\n"
@@ -66,14 +44,14 @@ TEST(RealworldFifthWave, UnmatchedQuotesInSkippedGroups) {
 // A taken #error reports its text as written (apostrophe and quotes kept), once: no second
 // "missing #endif" for the group glslang stopped in. Quotes in taken code are still errors.
 TEST(RealworldFifthWave, TakenErrorKeepsItsText) {
-    std::vector<Diagnostic> errors = errorsOf("#if 1\n#error can't do \"this\"\n#endif\nfloat4 main() : SV_Target { return 1; }\n", "ps_4_0");
+    std::vector<Diagnostic> errors = errorsOfLoose("#if 1\n#error can't do \"this\"\n#endif\nfloat4 main() : SV_Target { return 1; }\n", "ps_4_0");
     ASSERT_EQ(errors.size(), 1u);
     EXPECT_NE(errors[0].message.find("can't do \"this\""), std::string::npos) << errors[0].message;
     EXPECT_EQ(errors[0].location.line, 2);
-    errors = errorsOf("#if 1\n#if foo(TEST)\n#endif\n#endif\nfloat4 main() : SV_Target { return 1; }\n", "ps_4_0");
+    errors = errorsOfLoose("#if 1\n#if foo(TEST)\n#endif\n#endif\nfloat4 main() : SV_Target { return 1; }\n", "ps_4_0");
     ASSERT_EQ(errors.size(), 1u) << errors.back().message;
     EXPECT_EQ(errors[0].location.line, 2);
-    errors = errorsOf("float4 main() : SV_Target {\n return it's;\n}\n", "ps_4_0");
+    errors = errorsOfLoose("float4 main() : SV_Target {\n return it's;\n}\n", "ps_4_0");
     ASSERT_FALSE(errors.empty());
     EXPECT_EQ(errors[0].location.line, 2);
 }

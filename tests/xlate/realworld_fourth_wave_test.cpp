@@ -11,27 +11,14 @@
 #include <fstream>
 
 #include "fxport/xlate/effect_compiler.h"
+#include "compile_loose.h"
 #include "fxport/xlate/effect_file.h"
 
 namespace fs = std::filesystem;
 using namespace fxport::xlate;
 
-namespace {
-
-fs::path writeSource(const std::string& name, const std::string& source) {
-    fs::path dir = fs::temp_directory_path() / ("fxport-fourth-wave-" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    std::ofstream(dir / name) << source;
-    return dir / name;
-}
-
-CompiledEffect compileLoose(const std::string& source, const std::string& profile, const std::string& entry = "main") {
-    CompileOptions o;
-    o.useCache = false;
-    return compileShaderFiles({{writeSource("shader.hlsl", source).string(), entry, profile}}, o);
-}
-
-}  // namespace
+using fxport::test::writeLooseSource;
+using fxport::test::compileLoose;
 
 // ASSAO's vaSimpleShadowMap.hlsl: two functions each size a flat-initialised array by their own
 // `const int sampleCount` (6 and 14). Each array takes its own function's constant.
@@ -55,7 +42,7 @@ TEST(RealworldFourthWave, UniformArraySizedByItsInitializer) {
                                "technique11 T { pass P0 { SetPixelShader(CompileShader(ps_4_0, PS())); } }\n";
     for (const char* declaration : {"float2 P[] = { {1, 2}, {3, 4}, {5, 6} };\n", "float2 P[] = { 1, 2, 3, 4, 5, 6 };\n"}) {
         SCOPED_TRACE(declaration);
-        CompiledEffect e = compileEffectSource(declaration + shader, writeSource("poisson.fx", "").string(), o);
+        CompiledEffect e = compileEffectSource(declaration + shader, writeLooseSource("poisson.fx", "").string(), o);
         const Parameter* p = e.findParameter("P");
         ASSERT_NE(p, nullptr);
         EXPECT_EQ(p->elements, 3);
@@ -68,7 +55,7 @@ TEST(RealworldFourthWave, UniformArraySizedByItsInitializer) {
     CompiledEffect xna = compileEffectSource("float P[] = { 1, 2, 3 };\n"
                                              "float4 PS(float2 t : TEXCOORD0) : COLOR0 { return float4(P[0], P[1], P[2], 1); }\n"
                                              "technique T { pass P0 { PixelShader = compile ps_2_0 PS(); } }\n",
-                                             writeSource("xna.fx", "").string(), o);
+                                             writeLooseSource("xna.fx", "").string(), o);
     const Parameter* p = xna.findParameter("P");
     ASSERT_NE(p, nullptr);
     EXPECT_EQ(p->elements, 3);

@@ -14,47 +14,17 @@
 
 #include "fxport/xlate/diagnostics.h"
 #include "fxport/xlate/effect_compiler.h"
+#include "compile_loose.h"
 #include "fxport/xlate/effect_file.h"
 #include "run_cli.h"
 
 namespace fs = std::filesystem;
 using namespace fxport::xlate;
 
-namespace {
-
-fs::path writeSource(const std::string& name, const std::string& source) {
-    fs::path dir = fs::temp_directory_path() / ("fxport-seventh-wave-" + std::to_string(::getpid()));
-    fs::create_directories((dir / name).parent_path());
-    std::ofstream(dir / name) << source;
-    return dir / name;
-}
-
-CompiledEffect compileLoose(const std::string& source, const std::string& profile, const std::string& entry = "main") {
-    CompileOptions o;
-    o.useCache = false;
-    return compileShaderFiles({{writeSource("shader.hlsl", source).string(), entry, profile}}, o);
-}
-
-std::string glslOf(const std::string& source, const std::string& profile) {
-    try {
-        return compileLoose(source, profile).shaders.at(0).glsl;
-    } catch (const CompileError& err) {
-        ADD_FAILURE() << err.what();
-        return {};
-    }
-}
-
-std::vector<Diagnostic> errorsOf(const std::string& source, const std::string& profile) {
-    try {
-        compileLoose(source, profile);
-    } catch (const CompileError& err) {
-        return err.diagnostics();
-    }
-    ADD_FAILURE() << "compiled";
-    return {};
-}
-
-}  // namespace
+using fxport::test::writeLooseSource;
+using fxport::test::compileLoose;
+using fxport::test::glslOfLoose;
+using fxport::test::errorsOfLoose;
 
 // Wicked Engine's ShaderInterop structs (`inline bool IsUsingWind() { return options & ...; }`)
 // and MAGE's lights (`struct OmniLight : PointLight`, whose Contribution calls the base's
@@ -62,7 +32,7 @@ std::vector<Diagnostic> errorsOf(const std::string& source, const std::string& p
 // functions, called on a cbuffer's struct. The GLSL computes what the methods say: the hidden base
 // function scaled by the derived one, the inherited one called unqualified.
 TEST(RealworldSeventhWave, StructMemberFunctions) {
-    const std::string glsl = glslOf(
+    const std::string glsl = glslOfLoose(
         "struct Light {\n"
         "    float3 color;\n"
         "    uint options;\n"
@@ -88,7 +58,7 @@ TEST(RealworldSeventhWave, StructMemberFunctions) {
 // must not see sqr(half) and sqr(float) as one function defined twice. Attributes on statements
 // inside a member function are statement attributes, not attributes of a file-scope declaration.
 TEST(RealworldSeventhWave, OverloadTwinsCalledFromAMemberFunction) {
-    const std::string glsl = glslOf(
+    const std::string glsl = glslOfLoose(
         "half Max(half2 v) { return max(v.x, v.y); }\n"
         "half Max(half3 v) { return Max(max(v.xy, v.z)); }\n"
         "float Max(float2 v) { return max(v.x, v.y); }\n"
@@ -121,13 +91,13 @@ TEST(RealworldSeventhWave, ConstantBufferSlotsNotDeclarations) {
         shared += "cbuffer Shared" + std::to_string(i) + " : register(b" + std::to_string(i % 4) + ") { float4 s" +
                   std::to_string(i) + "; };\n";
     for (int i = 0; i < 12; ++i) shared += "cbuffer Free" + std::to_string(i) + " { float4 f" + std::to_string(i) + "; };\n";
-    const std::string glsl = glslOf(shared + "float4 main() : SV_Target { return s5 * 0.25 + f3; }\n", "ps_5_0");
+    const std::string glsl = glslOfLoose(shared + "float4 main() : SV_Target { return s5 * 0.25 + f3; }\n", "ps_5_0");
     EXPECT_NE(glsl.find("s5 * 0.25"), std::string::npos) << glsl;
 
     std::string distinct;
     for (int i = 0; i < 15; ++i)
         distinct += "cbuffer B" + std::to_string(i) + " : register(b" + std::to_string(i) + ") { float4 b" + std::to_string(i) + "; };\n";
-    auto errors = errorsOf(distinct + "float4 main() : SV_Target { return b0; }\n", "ps_5_0");
+    auto errors = errorsOfLoose(distinct + "float4 main() : SV_Target { return b0; }\n", "ps_5_0");
     ASSERT_FALSE(errors.empty());
     EXPECT_NE(errors[0].message.find("X4567"), std::string::npos) << errors[0].message;
 }
@@ -137,7 +107,7 @@ TEST(RealworldSeventhWave, ConstantBufferSlotsNotDeclarations) {
 // uint2), RenderDoc's pixel history reads `copyin_stencil_ms.sample[s][uint3(...)].g` of a
 // Texture2DMSArray. `.sample[s][p]` is the Load of sample s at p: texelFetch with the sample index.
 TEST(RealworldSeventhWave, SampleIndexersOfMultisampleTextures) {
-    const std::string glsl = glslOf(
+    const std::string glsl = glslOfLoose(
         "struct Inputs { Texture2DMS<float4> image; };\n"
         "struct Outputs { RWTexture2D<float4> image; };\n"
         "Texture2DMS<float4> image : register(t0);\n"
@@ -164,7 +134,7 @@ TEST(RealworldSeventhWave, SampleIndexersOfMultisampleTextures) {
 // thread-group size here: 256 x 2 for N = 256, 1024 x 1 for N = 2048.
 TEST(RealworldSeventhWave, ConditionalThreadGroupSize) {
     auto sized = [](const std::string& n) {
-        return glslOf("#define N (" + n + ")\n"
+        return glslOfLoose("#define N (" + n + ")\n"
                       "RWBuffer<uint> data : register(u0);\n"
                       "[numthreads(N / (N > 1024 ? N / 1024 : 1), N >= 512 == 1 ? 1 : 2, 1)]\n"
                       "void main(uint3 id : SV_DispatchThreadID) { data[id.x] = id.y; }\n",
@@ -180,7 +150,7 @@ TEST(RealworldSeventhWave, ConditionalThreadGroupSize) {
 // profile taken from /T, and a technique-less file is then a compiled effect, as with fxc; with no
 // profile (XNA's rules) it stays FX1003.
 TEST(RealworldSeventhWave, EffectProfileFromTheCommandLine) {
-    const fs::path header = writeSource("FX/LightHelper.fx", "struct Material { float4 Ambient; float4 Diffuse; };\n"
+    const fs::path header = writeLooseSource("FX/LightHelper.fx", "struct Material { float4 Ambient; float4 Diffuse; };\n"
                                                               "float4 Lit(Material m, float k) { return m.Ambient + m.Diffuse * k; }\n");
     const std::string out = (header.parent_path() / "LightHelper.fxo").string();
     auto fxc = fxport::test::runCli("compile /T fx_5_0 /Fo '" + out + "' '" + header.string() + "' --no-cache");
@@ -211,7 +181,7 @@ TEST(RealworldSeventhWave, EffectCbuffersPerShaderAndWrittenMembers) {
     o.effectProfile = "fx_5_0";
     CompiledEffect e;
     try {
-        e = compileEffectFile(writeSource("Course.fx", source).string(), o);
+        e = compileEffectFile(writeLooseSource("Course.fx", source).string(), o);
     } catch (const CompileError& err) {
         FAIL() << err.what();
     }
@@ -226,7 +196,7 @@ TEST(RealworldSeventhWave, EffectCbuffersPerShaderAndWrittenMembers) {
 // derived struct calls an inherited one with an int. fxc converts the arguments as in any call;
 // the GLSL reads the float replicated and the int as 2.0.
 TEST(RealworldSeventhWave, MemberFunctionCallsConvertArguments) {
-    const std::string glsl = glslOf(
+    const std::string glsl = glslOfLoose(
         "struct Tracer {\n"
         "    float4 weights;\n"
         "    float reach;\n"

@@ -10,27 +10,14 @@
 #include <fstream>
 
 #include "fxport/xlate/effect_compiler.h"
+#include "compile_loose.h"
 #include "fxport/xlate/effect_file.h"
 
 namespace fs = std::filesystem;
 using namespace fxport::xlate;
 
-namespace {
-
-fs::path writeSource(const std::string& name, const std::string& source) {
-    fs::path dir = fs::temp_directory_path() / ("fxport-sixth-wave-" + std::to_string(::getpid()));
-    fs::create_directories((dir / name).parent_path());
-    std::ofstream(dir / name) << source;
-    return dir / name;
-}
-
-CompiledEffect compileLoose(const std::string& source, const std::string& profile, const std::string& name = "shader.hlsl") {
-    CompileOptions o;
-    o.useCache = false;
-    return compileShaderFiles({{writeSource(name, source).string(), "main", profile}}, o);
-}
-
-}  // namespace
+using fxport::test::writeLooseSource;
+using fxport::test::compileLoose;
 
 // Source SDK's common_vs_fxc.h: `mul3x3(modelNormal, (const float3x3)cModel[0])` in every vertex
 // shader. The qualifier says nothing about a cast's value: the GLSL is the one of the plain cast.
@@ -54,14 +41,14 @@ TEST(RealworldSixthWave, ConstQualifiedCast) {
 // header included a second time (its body skipped), and such an include under `#if 0`. The taken
 // include finds the file through the backslashes; the skipped ones are not read as string literals.
 TEST(RealworldSixthWave, WindowsHeaderNameInSkippedGroup) {
-    writeSource("Common/Common.hlsl", "#ifndef COMMON_HLSL\n#define COMMON_HLSL\nstatic const float kCommon = 0.375;\n#endif\n");
-    writeSource("PS/psCommon.hlsl", "#ifndef PSCOMMON_HLSL\n#define PSCOMMON_HLSL\n#include \"..\\Common\\Common.hlsl\"\n"
+    writeLooseSource("Common/Common.hlsl", "#ifndef COMMON_HLSL\n#define COMMON_HLSL\nstatic const float kCommon = 0.375;\n#endif\n");
+    writeLooseSource("PS/psCommon.hlsl", "#ifndef PSCOMMON_HLSL\n#define PSCOMMON_HLSL\n#include \"..\\Common\\Common.hlsl\"\n"
                                     "float common() { return kCommon; }\n#endif\n");
     CompiledEffect e = compileLoose("#include \"psCommon.hlsl\"\n"
                                     "#include \"psCommon.hlsl\"\n"
                                     "#if 0\n#include \"..\\Missing\\Nothing.hlsl\"\n#endif\n"
                                     "float4 main() : SV_Target { return common(); }\n",
-                                    "ps_4_0", "PS/main.hlsl");
+                                    "ps_4_0", "main", "PS/main.hlsl");
     const std::string& glsl = e.shaders.at(0).glsl;
     EXPECT_NE(glsl.find("0.375"), std::string::npos) << glsl;
 }

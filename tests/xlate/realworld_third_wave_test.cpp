@@ -12,22 +12,15 @@
 #include <regex>
 
 #include "fxport/xlate/effect_compiler.h"
+#include "compile_loose.h"
 #include "fxport/xlate/effect_file.h"
 
 namespace fs = std::filesystem;
 using namespace fxport::xlate;
 
-namespace {
+using fxport::test::compileLoose;
 
-CompiledEffect compileLoose(const std::string& source, const std::string& profile, const std::string& entry = "main") {
-    fs::path dir = fs::temp_directory_path() / ("fxport-third-wave-" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    fs::path file = dir / "shader.hlsl";
-    std::ofstream(file) << source;
-    CompileOptions o;
-    o.useCache = false;
-    return compileShaderFiles({{file.string(), entry, profile}}, o);
-}
+namespace {
 
 const CompiledShader& onlyShader(const CompiledEffect& e) { return e.shaders.at(0); }
 
