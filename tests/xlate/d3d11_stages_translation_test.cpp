@@ -12,10 +12,13 @@
 
 #include "fxport/xlate/effect_compiler.h"
 #include "fxport/xlate/effect_file.h"
+#include "compile_loose.h"
 #include "shader_sources/quad_patch_stages.h"
 
 namespace fs = std::filesystem;
 using namespace fxport::xlate;
+
+using fxport::test::compileLoose;
 
 namespace {
 
@@ -26,13 +29,6 @@ CompileOptions noCache() {
 }
 
 // A loose shader file with entry `main`, compiled for `profile`.
-CompiledEffect compileLoose(const std::string& source, const std::string& profile) {
-    fs::path dir = fs::temp_directory_path() / ("fxport-d3d11-stages-" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    fs::path file = dir / "shader.hlsl";
-    std::ofstream(file) << source;
-    return compileShaderFiles({{file.string(), "main", profile}}, noCache());
-}
 
 const StorageBinding& storage(const CompiledShader& s, const std::string& name) {
     for (const auto& b : s.storage)
