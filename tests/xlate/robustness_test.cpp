@@ -87,6 +87,7 @@ std::vector<LimitCase> fixtureCases() {
         // fxport's own: wrong compiled effects that failed their own validation on load.
         {"PackoffsetOverlap", kDir + "packoffset_overlap.fx", diag::kHlsl, 7},
         {"InitializerTooLong", kDir + "initializer_too_long.fx", diag::kHlsl, 3},
+        {"EmptyBracesInInitializerArithmetic", kDir + "initializer_empty_braces_arithmetic.fx", diag::kHlsl, 6},
         // A crash the checks above do not know: contained in the worker, reported at the entry point.
         {"ContainedGlslangCrash", kDir + "contained_glslang_crash.fx", diag::kFrontEndCrashed, 10},
     };

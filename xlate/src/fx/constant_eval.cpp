@@ -86,7 +86,8 @@ private:
 
     std::optional<std::vector<double>> combine(const std::vector<double>& a, const std::vector<double>& b, char op) const {
         size_t n = std::max(a.size(), b.size());
-        if (a.size() != b.size() && a.size() != 1 && b.size() != 1) return std::nullopt;
+        // An empty brace list (`{} - 2`, fuzzing) has no value to combine; one operand of size 1 is broadcast.
+        if (a.empty() || b.empty() || (a.size() != b.size() && a.size() != 1 && b.size() != 1)) return std::nullopt;
         std::vector<double> r(n);
         for (size_t i = 0; i < n; ++i) {
             double x = a[a.size() == 1 ? 0 : i], y = b[b.size() == 1 ? 0 : i];
