@@ -14,6 +14,7 @@
 #include "spirv/spirv_fixups.h"
 #include "spirv/pixel_interlock.h"
 #include "spirv/static_zero_init.h"
+#include "spirv/tessellation_clip_distances.h"
 #include "spirv/unset_static_resources.h"
 #include "rewrite/pow2_partitioning.h"
 #include "spirv/spirv_integer_fixups.h"
@@ -122,7 +123,7 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
     // The SPIR-V passes (parsed_spirv.h), each a function over one parsed module; the spirv-opt
     // runs (the division check, legalisation) work on the words between them.
     const bool sm2or3 = request.shaderModel < 4;
-    runSpirvPasses(out.words, {restoreKeywordIdentifiers, staticVariablesStartAtZero});  // `precise` as a name (keyword_identifiers.h); statics start at zero before the division check (static_zero_init.h)
+    runSpirvPasses(out.words, {restoreKeywordIdentifiers, staticVariablesStartAtZero, tessellationClipDistances});  // `precise` as a name (keyword_identifiers.h); statics start at zero before the division check (static_zero_init.h); hull/domain clip distances as built-ins (tessellation_clip_distances.h)
     if (dividesByConstantZero(out.words, sm2or3)) {
         out.errors.push_back({0, {}, "division by zero: a divisor of this shader folds to the constant 0, which fxc refuses", true});
         return out;
