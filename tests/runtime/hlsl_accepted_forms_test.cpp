@@ -261,6 +261,32 @@ TEST_P(HlslAcceptedFormsSm4, StaticTextureVariablesAliasAGlobalTexture) {
     }
 }
 
+// A cast to a struct of a value whose type the rewrite cannot tell, a method's result: fxc fills
+// the members in order from the value's components, converted (xlate/src/rewrite/
+// aggregate_conversions.cpp, overloads of one casting function). `(Pair)tex.Sample(...)` takes
+// a = texel.xy, b = texel.zw; `(Mixed)tex.Load(...)` truncates into the int member; a scalar
+// (`.Load(...).w`) fills every member.
+TEST_P(HlslAcceptedFormsSm4, CastOfAMethodResultToAStruct) {
+    Texture2D tex(device, 1, 1, false, SurfaceFormat::Vector4);
+    const float texel[4] = {0.25f, -1.5f, 2.75f, 4};
+    tex.SetData(texel, 4);
+    const std::string globals = "Texture2D tex; SamplerState sam; struct Pair { float2 a; float2 b; }; struct Mixed { int i; float3 f; };"
+                                "struct Two { float x; uint y; };";
+    const std::vector<std::pair<std::string, std::vector<float>>> cases = {
+        {"Pair p = (Pair)tex.Sample(sam, float2(0.5, 0.5)); return float4(p.b, p.a);", {2.75f, 4, 0.25f, -1.5f}},
+        {"Mixed m = (Mixed)tex.Load(int3(0, 0, 0)); return float4(m.i, m.f);", {0, -1.5f, 2.75f, 4}},
+        {"Two t = (Two)tex.Load(int3(0, 0, 0)).w; return float4(t.x, t.y, 0, 1);", {4, 4, 0, 1}},
+        {"return float4(((Pair)tex.Sample(sam, float2(0.5, 0.5)).wzyx).b, 0, 0);", {-1.5f, 0.25f, 0, 0}},
+    };
+    for (const auto& [body, expected] : cases) {
+        SCOPED_TRACE(body);
+        auto e = effect(globals, body);
+        e->Parameters["tex"].SetValue(tex);
+        std::vector<float> px = draw(*e);
+        for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], expected[size_t(k)]) << "channel " << k;
+    }
+}
+
 // Integer literals with the `l` suffix are ints (uints with `u`): they pick the int or uint
 // overload and keep their value (xlate/src/rewrite/literal_suffixes.cpp); SM4 and later, where int and uint
 // overloads differ.
