@@ -1,6 +1,7 @@
 #include "rewrite/fx_rewrite.h"
 
 #include "rewrite/geometry_clip_inputs.h"
+#include "rewrite/uniform_object_structs.h"
 #include "rewrite/geometry_output_stream.h"
 
 #include "rewrite/aggregate_conversions.h"
@@ -470,6 +471,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : indexBeforeBaseForCalls(syntax)) edits.push_back(std::move(e));
     for (auto& e : componentwiseCasts(syntax)) edits.push_back(std::move(e));
     for (auto& e : aggregateConversions(syntax)) edits.push_back(std::move(e));
+    for (auto& e : uniformObjectStructs(syntax)) edits.push_back(std::move(e));
     for (auto& e : intrinsicsAsFxc(syntax)) edits.push_back(std::move(e));
     for (auto& e : scalarIntrinsicCalls(syntax)) edits.push_back(std::move(e));
     if (out.dx9Samplers)
