@@ -9,6 +9,7 @@
 #include "frontend/glslang_process.h"
 #include "spirv/byte_address_lengths.h"
 #include "spirv/clip_distance_packing.h"
+#include "spirv/constant_index_bounds.h"
 #include "spirv/structured_buffer_layout.h"
 #include "rewrite/keyword_identifiers.h"
 #include "spirv/spirv_fixups.h"
@@ -133,6 +134,12 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
     std::string legalizeError;
     if (!legalizeSpirv(out.words, &legalizeError)) {
         out.errors.push_back({0, {}, legalizeError});
+        return out;
+    }
+    if (auto past = constantIndexPastArrayEnd(out.words)) {  // after dead code is gone, as fxc judges it
+        out.errors.push_back({deferredIndexLine(*request.source, past->index), {},
+                              "array index " + std::to_string(past->index) + " is out of range (an array of " + std::to_string(past->length) +
+                                  " elements; fxc refuses a constant index out of range where the code runs)"});
         return out;
     }
     if (std::string unset = staticResourceReadWithoutValue(out.words); !unset.empty()) {  // after dead code is gone

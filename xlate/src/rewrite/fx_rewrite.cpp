@@ -2,6 +2,7 @@
 
 #include "rewrite/geometry_clip_inputs.h"
 #include "rewrite/uniform_object_structs.h"
+#include "rewrite/out_of_range_indices.h"
 #include "rewrite/geometry_output_stream.h"
 
 #include "rewrite/aggregate_conversions.h"
@@ -472,6 +473,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : componentwiseCasts(syntax)) edits.push_back(std::move(e));
     for (auto& e : aggregateConversions(syntax)) edits.push_back(std::move(e));
     for (auto& e : uniformObjectStructs(syntax)) edits.push_back(std::move(e));
+    for (auto& e : outOfRangeIndicesDeferred(syntax)) edits.push_back(std::move(e));
     for (auto& e : intrinsicsAsFxc(syntax)) edits.push_back(std::move(e));
     for (auto& e : scalarIntrinsicCalls(syntax)) edits.push_back(std::move(e));
     if (out.dx9Samplers)
