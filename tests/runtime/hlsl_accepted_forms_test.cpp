@@ -311,6 +311,19 @@ TEST_P(HlslAcceptedForms, ShaderValuedDefaultsAreNotWritten) {
     expectPixel(globals, "return f + g + A;", {0.5f, 1, 1.5f, 2}, {0.5f, 1, 1.5f, 2});
 }
 
+// A sampler_state among the values of a numeric uniform's default: the types do not match and fxc
+// discards the whole initializer (vkd3d's sampler-state): no default, 0 until set.
+TEST_P(HlslAcceptedForms, SamplerStateInANumericDefaultDiscardsIt) {
+    expectPixel("float4 f = { sampler_state { foo = BAR; bar = FOO; }, 1, 2, 3 };", "return f + A;", {0.5f, 1, 1.5f, 2}, {0.5f, 1, 1.5f, 2});
+}
+
+// A literal index past an array's end in code that never runs compiles, as fxc takes it before
+// SM6 (vkd3d's hard-copy-prop; xlate/src/rewrite/out_of_range_indices.h): the branch is dead.
+TEST_P(HlslAcceptedForms, OutOfRangeIndexInDeadCode) {
+    expectPixel("", "static float4 arr[4]; bool x = false; if (x) { arr[100] = 0; return arr[100]; } arr[3] = A; return arr[3] * 2;",
+                {1, 2, 3, 4}, {0.5f, 1, 1.5f, 2});
+}
+
 // Case labels written as floats are the integers they truncate to (`case 2.1f:` is `case 2:`), and
 // from SM4 a float selector is converted to int (xlate/src/rewrite/switch_labels.cpp; vkd3d's switch).
 TEST_P(HlslAcceptedForms, SwitchWithFloatLabels) {
