@@ -13,7 +13,7 @@ std::vector<TextEdit> outOfRangeIndicesDeferred(const EffectSyntax& syntax) {
     bool defined = false;
     for (const FxFunction& f : syntax.functions) {
         if (f.body.empty()) continue;
-        for (size_t i = f.body.begin + 1; i + 3 < f.body.end; ++i) {
+        for (size_t i = f.body.begin; i + 3 < f.body.end; ++i) {  // the body starts after its `{`
             // `name[N]` with the first index of name's first dimension a literal past its end.
             if (!t[i].isIdent() || t[i - 1].is(".") || !t[i + 1].is("[") || t[i + 2].kind != Token::Kind::Number || !t[i + 3].is("]")) continue;
             const std::string& n = t[i + 2].text;
