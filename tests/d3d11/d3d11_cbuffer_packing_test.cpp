@@ -29,6 +29,7 @@ struct Case {
     const char* source;        // the pixel shader PS, reading constant buffer slot 0
     int words[4];              // D3D word offset of what it returns in r, g, b, a
     std::vector<std::pair<const char*, UINT>> reflected;  // variable -> D3D byte offset
+    const char* profile = "ps_4_0";
 };
 
 class CbufferPacking : public ::testing::TestWithParam<Case> {};
@@ -37,7 +38,7 @@ TEST_P(CbufferPacking, TheShaderReadsTheWordsAtD3DOffsets) {
     const Case& c = GetParam();
     Device d;
     ComPtr<ID3DBlob> vsCode = compile(kVertex, "VS", "vs_4_0", "packing_vs.hlsl");
-    ComPtr<ID3DBlob> psCode = compile(c.source, "PS", "ps_4_0", (std::string(c.name) + ".hlsl").c_str());
+    ComPtr<ID3DBlob> psCode = compile(c.source, "PS", c.profile, (std::string(c.name) + ".hlsl").c_str());
     ASSERT_TRUE(vsCode && psCode);
 
     ComPtr<ID3D11ShaderReflection> r;
@@ -105,6 +106,24 @@ const Case kCases[] = {
      // p at c1: b c1.x, c c1.yz; d c1.w; q at c2 (stride 16): q[1].c = c3.yz; e c3.w.
      {6, 7, 13, 15},
      {{"a", 0}, {"p", 16}, {"d", 28}, {"q", 32}, {"e", 60}}},
+    // Structs holding objects (vkd3d's object-field-offsets, xlate/src/rewrite/
+    // uniform_object_structs.h): the objects take no room, but an object array starts a register.
+    {"struct_with_objects_in_a_cbuffer",
+     "struct M { float2 a; Texture2D t; SamplerState s; float b; Texture2D arr[2]; float c; };\n"
+     "cbuffer C { float x; M m; float y; }\n"
+     "float4 PS() : SV_Target { return float4(m.a.y, m.b, m.c, y); }\n",
+     // m at c1: a c1.xy, b c1.z; arr starts c2, empty: c c2.x; y in m's last register, c2.y.
+     {5, 6, 8, 9},
+     {{"x", 0}, {"m", 16}, {"y", 36}},
+     "ps_5_0"},
+    {"struct_with_a_struct_of_objects",
+     "struct O { Texture2D t; SamplerState s; };\nstruct N { float a; O o; float b; };\n"
+     "N n;\nfloat g;\n"
+     "float4 PS() : SV_Target { return float4(n.a, n.b, g, n.a); }\n",
+     // n at c0: a c0.x; o starts c1, empty: b c1.x; g c1.y.
+     {0, 4, 5, 0},
+     {{"n", 0}, {"g", 20}},
+     "ps_5_0"},
 };
 
 INSTANTIATE_TEST_SUITE_P(D3D11, CbufferPacking, ::testing::ValuesIn(kCases),

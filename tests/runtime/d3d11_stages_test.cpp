@@ -6,6 +6,8 @@
 //   - a technique11 effect with SetHullShader/SetDomainShader drawing one quad patch: the domain
 //     shader's colour (u, v, u*v) at every covered pixel, where u*v is only within bounds if the
 //     hull shader's tessellation factor (8) reached the tessellator;
+//   - the same patch with a clip distance the vertex shader writes and hull and domain shader pass
+//     on (as Wicked Engine's tessellated objects do): the pixels where it is negative stay empty;
 //   - misuse: DispatchCompute without a compute pass, a plain draw with a tessellation pass, a
 //     UAV slot left empty.
 #include <gtest/gtest.h>
@@ -58,6 +60,53 @@ technique11 Compute
 )";
 
 const std::string kTessellationEffect = std::string(fxport::test::kQuadPatchDeclarations) + fxport::test::kQuadPatchStages + R"(
+technique11 Tessellate
+{
+    pass P0
+    {
+        SetVertexShader(CompileShader(vs_5_0, VS()));
+        SetHullShader(CompileShader(hs_5_0, HS()));
+        SetDomainShader(CompileShader(ds_5_0, DS()));
+        SetPixelShader(CompileShader(ps_5_0, PS()));
+    }
+}
+)";
+
+// The clip distance x + 0.25 from the vertex shader, through the hull shader's input and output
+// patch, interpolated by the domain shader and written as its SV_ClipDistance0.
+const char* const kClippedTessellationEffect = R"(struct ControlPoint { float3 pos : POSITION; float clip : SV_ClipDistance0; };
+struct PatchConstants { float edges[4] : SV_TessFactor; float inside[2] : SV_InsideTessFactor; };
+struct DomainOut { float4 pos : SV_Position; float clip : SV_ClipDistance0; float4 color : COLOR0; };
+
+ControlPoint VS(float3 pos : POSITION) { ControlPoint o; o.pos = pos; o.clip = pos.x + 0.25; return o; }
+
+PatchConstants Constants(InputPatch<ControlPoint, 4> patch)
+{
+    PatchConstants o;
+    o.edges[0] = o.edges[1] = o.edges[2] = o.edges[3] = 4;
+    o.inside[0] = o.inside[1] = 4;
+    return o;
+}
+
+[domain("quad")]
+[partitioning("integer")]
+[outputtopology("triangle_cw")]
+[outputcontrolpoints(4)]
+[patchconstantfunc("Constants")]
+ControlPoint HS(InputPatch<ControlPoint, 4> patch, uint i : SV_OutputControlPointID) { return patch[i]; }
+
+[domain("quad")]
+DomainOut DS(PatchConstants pc, float2 uv : SV_DomainLocation, const OutputPatch<ControlPoint, 4> patch)
+{
+    DomainOut o;
+    o.pos = float4(lerp(lerp(patch[0].pos, patch[1].pos, uv.x), lerp(patch[3].pos, patch[2].pos, uv.x), uv.y), 1);
+    o.clip = lerp(lerp(patch[0].clip, patch[1].clip, uv.x), lerp(patch[3].clip, patch[2].clip, uv.x), uv.y);
+    o.color = 1;
+    return o;
+}
+
+float4 PS(DomainOut i) : SV_Target { return i.color; }
+
 technique11 Tessellate
 {
     pass P0
@@ -189,6 +238,47 @@ TEST(D3D11Stages, TessellatedQuadMatchesTheDomainShaderOnTheCpu) {
     // du*dv/4 = 1/(4*8*8) ~ 0.0039 with factor 8; with 4 it could be 0.0156, untessellated 0.25.
     EXPECT_LT(worstProduct, 1.0 / (4 * factor * factor) + 1e-4);
     EXPECT_GT(worstProduct, 1e-3) << "u*v exact everywhere: the triangles were not interpolating at all?";
+}
+
+TEST(D3D11Stages, ClipDistancePassedThroughHullAndDomainShaderClips) {
+    GraphicsDevice& device = test::testDevice();
+    Effect effect(device, EffectSource{kClippedTessellationEffect, "clipped_tessellation.fx"});
+    const int size = 64;
+    RenderTarget2D target(device, size, size, false, SurfaceFormat::Vector4, DepthFormat::None);
+    device.SetRenderTarget(target);
+    device.Clear(ClearOptions::Target, Vector4(0, 0, 0, 0), 1, 0);
+    std::vector<VertexPositionTexture> corners = {
+        {Vector3(-0.5f, 0.5f, 0), Vector2(0, 0)}, {Vector3(0.5f, 0.5f, 0), Vector2(0, 0)},
+        {Vector3(0.5f, -0.5f, 0), Vector2(0, 0)}, {Vector3(-0.5f, -0.5f, 0), Vector2(0, 0)}};
+    VertexBuffer vb(device, VertexPositionTexture::VertexDeclaration, 4);
+    vb.SetData(corners);
+    device.SetVertexBuffer(vb);
+    device.RasterizerState = RasterizerState::CullNone;
+    device.BlendState = BlendState::Opaque;
+    device.DepthStencilState = DepthStencilState::None;
+    effect.CurrentTechnique->Passes[0].Apply();
+    device.DrawPatches(4, 0, 1);
+    device.SetVertexBuffer(nullptr);
+    device.SetRenderTarget(nullptr);
+
+    std::vector<float> texels = test::readFloats(target);
+    int drawn = 0, clipped = 0;
+    for (int py = 0; py < size; ++py)
+        for (int px = 0; px < size; ++px) {
+            const double x = (px + 0.5) / (size / 2.0) - 1, y = 1 - (py + 0.5) / (size / 2.0);
+            const double edge = 2.0 / size;  // a pixel from any edge: GL's fill rule decides there
+            if (std::abs(y) > 0.5 - edge || x < -0.5 + edge || x > 0.5 - edge || std::abs(x + 0.25) < edge) continue;
+            const float alpha = texels[std::size_t((py * size + px) * 4 + 3)];
+            if (x + 0.25 < 0) {
+                EXPECT_EQ(alpha, 0.0f) << "pixel " << px << "," << py << " has a negative clip distance";
+                ++clipped;
+            } else {
+                EXPECT_EQ(alpha, 1.0f) << "pixel " << px << "," << py << " has a positive clip distance";
+                ++drawn;
+            }
+        }
+    EXPECT_GT(clipped, 100);
+    EXPECT_GT(drawn, 300);
 }
 
 TEST(D3D11Stages, MisuseIsAClearError) {

@@ -261,6 +261,32 @@ TEST_P(HlslAcceptedFormsSm4, StaticTextureVariablesAliasAGlobalTexture) {
     }
 }
 
+// A cast to a struct of a value whose type the rewrite cannot tell, a method's result: fxc fills
+// the members in order from the value's components, converted (xlate/src/rewrite/
+// aggregate_conversions.cpp, overloads of one casting function). `(Pair)tex.Sample(...)` takes
+// a = texel.xy, b = texel.zw; `(Mixed)tex.Load(...)` truncates into the int member; a scalar
+// (`.Load(...).w`) fills every member.
+TEST_P(HlslAcceptedFormsSm4, CastOfAMethodResultToAStruct) {
+    Texture2D tex(device, 1, 1, false, SurfaceFormat::Vector4);
+    const float texel[4] = {0.25f, -1.5f, 2.75f, 4};
+    tex.SetData(texel, 4);
+    const std::string globals = "Texture2D tex; SamplerState sam; struct Pair { float2 a; float2 b; }; struct Mixed { int i; float3 f; };"
+                                "struct Two { float x; uint y; };";
+    const std::vector<std::pair<std::string, std::vector<float>>> cases = {
+        {"Pair p = (Pair)tex.Sample(sam, float2(0.5, 0.5)); return float4(p.b, p.a);", {2.75f, 4, 0.25f, -1.5f}},
+        {"Mixed m = (Mixed)tex.Load(int3(0, 0, 0)); return float4(m.i, m.f);", {0, -1.5f, 2.75f, 4}},
+        {"Two t = (Two)tex.Load(int3(0, 0, 0)).w; return float4(t.x, t.y, 0, 1);", {4, 4, 0, 1}},
+        {"return float4(((Pair)tex.Sample(sam, float2(0.5, 0.5)).wzyx).b, 0, 0);", {-1.5f, 0.25f, 0, 0}},
+    };
+    for (const auto& [body, expected] : cases) {
+        SCOPED_TRACE(body);
+        auto e = effect(globals, body);
+        e->Parameters["tex"].SetValue(tex);
+        std::vector<float> px = draw(*e);
+        for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(px[size_t(k)], expected[size_t(k)]) << "channel " << k;
+    }
+}
+
 // Integer literals with the `l` suffix are ints (uints with `u`): they pick the int or uint
 // overload and keep their value (xlate/src/rewrite/literal_suffixes.cpp); SM4 and later, where int and uint
 // overloads differ.
@@ -283,6 +309,19 @@ TEST_P(HlslAcceptedForms, TypedefNamedLikeATextureType) {
 TEST_P(HlslAcceptedForms, ShaderValuedDefaultsAreNotWritten) {
     const std::string globals = "float4 fun() : COLOR { return 0; } float4 f = {1, 2, compile ps_2_0 fun(), 4}; float g = {CompileShader(ps_2_0, fun())};";
     expectPixel(globals, "return f + g + A;", {0.5f, 1, 1.5f, 2}, {0.5f, 1, 1.5f, 2});
+}
+
+// A sampler_state among the values of a numeric uniform's default: the types do not match and fxc
+// discards the whole initializer (vkd3d's sampler-state): no default, 0 until set.
+TEST_P(HlslAcceptedForms, SamplerStateInANumericDefaultDiscardsIt) {
+    expectPixel("float4 f = { sampler_state { foo = BAR; bar = FOO; }, 1, 2, 3 };", "return f + A;", {0.5f, 1, 1.5f, 2}, {0.5f, 1, 1.5f, 2});
+}
+
+// A literal index past an array's end in code that never runs compiles, as fxc takes it before
+// SM6 (vkd3d's hard-copy-prop; xlate/src/rewrite/out_of_range_indices.h): the branch is dead.
+TEST_P(HlslAcceptedForms, OutOfRangeIndexInDeadCode) {
+    expectPixel("", "static float4 arr[4]; bool x = false; if (x) { arr[100] = 0; return arr[100]; } arr[3] = A; return arr[3] * 2;",
+                {1, 2, 3, 4}, {0.5f, 1, 1.5f, 2});
 }
 
 // Case labels written as floats are the integers they truncate to (`case 2.1f:` is `case 2:`), and

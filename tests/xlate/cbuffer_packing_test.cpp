@@ -5,6 +5,7 @@
 // and tests/runtime/struct_parameters_test.cpp.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <string>
 
 #include "fxport/xlate/effect_compiler.h"
@@ -175,4 +176,30 @@ TEST(CbufferPacking, PackMatrixPragmaDecidesOneRowMatrixRegisters) {
     EXPECT_EQ(param(e, "c").offset, 32);
     EXPECT_FALSE(param(e, "c").rowMajor);
     EXPECT_EQ(param(e, "c").size, 20);
+}
+
+// A uniform struct holding objects and numbers, a global or a cbuffer member (vkd3d's
+// object-field-offsets; xlate/src/rewrite/uniform_object_structs.h): the numbers are in the
+// constant buffer at fxc's offsets (the objects take no room, an object array or a struct of
+// objects only starts a register), the objects are textures and samplers of their own, sampled
+// through the member and through a copy of the whole struct passed to a function.
+TEST(CbufferPacking, StructsHoldingObjectsKeepTheirNumbersInTheBuffer) {
+    CompiledEffect e = compile("struct O { Texture2D t; SamplerState s; };\n"
+                               "struct M { float2 a; Texture2D tex; SamplerState sam; float b; Texture2D arr[2]; float c; O o; float d; };\n"
+                               "cbuffer C { float x; M m; float y; }\nM g;\nfloat z;\n"
+                               "float4 shade(M v) { return v.tex.Sample(v.sam, v.a) * v.b; }\n",
+                               "return shade(m) + g.o.t.Sample(g.o.s, g.a) + float4(m.c, m.d, y + z, x + g.arr[1].Load(int3(0, 0, 0)).x);", "ps_5_0");
+    const Parameter& m = param(e, "m");
+    EXPECT_EQ(m.offset, 16);
+    std::map<std::string, int> offsets;
+    for (const auto& member : m.members)
+        if (member.offset >= 0) offsets[member.name] = member.offset;  // the objects have none
+    // a c1.xy, b c1.z; arr starts c2: c c2.x; o starts c3: d c3.x; y in m's last register.
+    EXPECT_EQ(offsets, (std::map<std::string, int>{{"a", 16}, {"b", 24}, {"c", 32}, {"d", 48}}));
+    EXPECT_EQ(param(e, "y").offset, 52);
+    EXPECT_EQ(param(e, "g").offset, 0);
+    EXPECT_EQ(param(e, "z").offset, 52 - 16);  // g is 36 bytes in $Global: z at c2.y
+    const std::string& glsl = e.shaders.at(0).glsl;
+    EXPECT_EQ(glsl.find("uniform vec2"), std::string::npos) << glsl;  // no number outside a block
+    EXPECT_EQ(e.shaders.at(0).samplers.size(), 3u) << glsl;  // m.tex with m.sam, g.o.t with g.o.s, g.arr
 }

@@ -356,3 +356,35 @@ TEST(D3D11Stages, ComputeEntryPrototypesGiveTheAttributes) {
     EXPECT_EQ(first.shaders.at(0).threadGroupSize, (std::array<int, 3>{2, 1, 1}));
     EXPECT_THROW(compileLoose("void main();\n\n    [numthreads(1, 1, 1)]\nvoid main() {}\n", "cs_5_0"), CompileError);
 }
+
+// A domain shader writing SV_ClipDistance0 (Wicked Engine's objectDS.hlsl: `float clip :
+// SV_ClipDistance0` in its output struct) and a hull shader reading and writing it: glslang alone
+// refuses both ("clip/cull not currently implemented for this stage"). The domain shader writes
+// gl_ClipDistance (the runtime enables its planes), the hull shader reads the vertex shader's
+// gl_in[v].gl_ClipDistance and passes the value on as a varying of its own.
+TEST(D3D11Stages, HullAndDomainShadersPassClipDistancesOn) {
+    const std::string cp = "struct CP { float4 pos : SV_Position; float clip : SV_ClipDistance0; float2 uv : TEXCOORD0; };\n"
+                           "struct HSConst { float e[3] : SV_TessFactor; float i : SV_InsideTessFactor; };\n";
+    CompiledEffect ds = compileLoose(cp + "struct DSOut { float4 pos : SV_Position; float clip : SV_ClipDistance0; float2 uv : TEXCOORD0; };\n"
+                                          "float4 plane;\n"
+                                          "[domain(\"tri\")]\n"
+                                          "DSOut main(HSConst c, float3 b : SV_DomainLocation, const OutputPatch<CP, 3> p) {\n"
+                                          "    DSOut o; o.pos = p[0].pos * b.x + p[1].pos * b.y + p[2].pos * b.z;\n"
+                                          "    o.clip = dot(o.pos, plane); o.uv = b.xy; return o; }\n",
+                                     "ds_5_0");
+    ASSERT_EQ(ds.shaders.size(), 1u);
+    const CompiledShader& d = ds.shaders[0];
+    EXPECT_NE(d.glsl.find("float gl_ClipDistance[1];"), std::string::npos) << d.glsl;
+    EXPECT_NE(d.glsl.find("gl_ClipDistance[0] = "), std::string::npos) << d.glsl;
+    EXPECT_EQ(d.clipDistances, 1);
+
+    CompiledEffect hs = compileLoose(cp + "HSConst pcf(InputPatch<CP, 3> p) { HSConst c; c.e[0] = c.e[1] = c.e[2] = 2; c.i = 2; return c; }\n"
+                                          "[domain(\"tri\")][partitioning(\"integer\")][outputtopology(\"triangle_cw\")]\n"
+                                          "[outputcontrolpoints(3)][patchconstantfunc(\"pcf\")]\n"
+                                          "CP main(InputPatch<CP, 3> p, uint i : SV_OutputControlPointID) { return p[i]; }\n",
+                                     "hs_5_0");
+    ASSERT_EQ(hs.shaders.size(), 1u);
+    const std::string& h = hs.shaders[0].glsl;
+    EXPECT_NE(h.find("gl_in[2].gl_ClipDistance[0]"), std::string::npos) << h;
+    EXPECT_NE(h.find("    float gl_ClipDistance[1];\n} gl_in[];"), std::string::npos) << h;  // one per vertex
+}

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "fxport/xlate/effect_compiler.h"
+#include "gl_link_check.h"
 
 using namespace fxport::xlate;
 
@@ -221,4 +222,22 @@ TEST(EntrySignature, OverloadedEntryDeclaredLastWithoutSemanticsIsRefusedAtItsLi
         EXPECT_NE(text.find("Overloads.hlsl(2,"), std::string::npos) << text;
         EXPECT_NE(text.find("'color'"), std::string::npos) << text;
     }
+}
+
+// A bool vertex input (vkd3d's bool-semantics: `bool4 apple : apple` fed from a uint format): GLSL
+// has no bool attribute ("vertex shader input / attribute cannot have type bvec4"), so the input
+// is a uint one and nonzero reads true; the GL driver compiles and links the pass.
+TEST(EntrySignature, BoolVertexInputsAreUintAttributes) {
+    CompiledEffect e = compile("struct I { bool4 apple : apple; bool one : ONE; float4 pos : POSITION; };\n"
+                               "struct O { float4 pos : SV_Position; nointerpolation int4 fapple : apple1; };\n"
+                               "O VS(I i) { O o; o.pos = i.pos; o.fapple = i.apple + int4(i.one, 0, 0, 0); return o; }\n"
+                               "float4 PS(O i) : SV_Target { return i.fapple; }\n"
+                               "technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelShader(CompileShader(ps_4_0, PS())); } }\n");
+    const std::string& vs = vertexShader(e).glsl;
+    EXPECT_EQ(vs.find("bvec"), std::string::npos) << vs;
+    EXPECT_EQ(vs.find("in bool"), std::string::npos) << vs;
+    EXPECT_NE(vs.find("in uvec4"), std::string::npos) << vs;
+    fxport::test::sharedTestContext();
+    using S = fxport::test::GlslStageSource;
+    EXPECT_EQ(fxport::test::compileAndLinkSeparable({{S::Vertex, vs}, {S::Fragment, pixelShader(e).glsl}}), "");
 }

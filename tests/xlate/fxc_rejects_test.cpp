@@ -292,6 +292,11 @@ std::vector<RejectCase> cases() {
          "uniform min16int4 u;\n\nint4 main() : sv_target\n{\n    min16int i = 32767;\n    return int4(u.x / i, 0, 0, 0);\n}\n", 6, "minimum-precision",
          "uniform min16uint4 u;\n\nint4 main() : sv_target\n{\n    min16uint i = 32767;\n    return int4(u.x / i, 0, 0, 0);\n}\n"},
         // effect-compile: a shader variable's value is a literal expression, no other variable.
+        // hard-copy-prop: a constant index past an array's end is refused in code that runs, and
+        // compiles in dead code (rewrite/out_of_range_indices.h).
+        {"ConstantIndexPastTheEndInLiveCode", "ps_4_0",
+         "float4 main() : sv_target\n{\n    static float4 arr[4];\n    return arr[5];\n}\n", 4, "out of range",
+         "float4 main() : sv_target\n{\n    static float4 arr[4];\n    bool x = false;\n    if (x) return arr[5];\n    return arr[3];\n}\n"},
         {"ShaderVariableFromVariable", "ps_4_0",
          "float4 main() : sv_target { return 0; }\n\nPixelShader ps1 = CompileShader(ps_2_0, main());\nPixelShader ps2 = ps1;\n", 4, "literal expression",
          "float4 main() : sv_target { return 0; }\n\nPixelShader ps1 = CompileShader(ps_2_0, main());\nPixelShader ps2 = NULL;\n"},

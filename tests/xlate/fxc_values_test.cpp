@@ -107,3 +107,13 @@ TEST(FxcValues, InoutUavElementArgumentIsReadBeforeTheCall) {
     EXPECT_NE(glsl.find("imageLoad(b, "), std::string::npos) << glsl;
     EXPECT_EQ(glsl.find("writeonly"), std::string::npos) << glsl;
 }
+
+// initializer-objects L16: a local array of textures initialized from globals, read by literal
+// indices (xlate/src/rewrite/local_object_arrays.h): each element is its texture, as fxc resolves
+// it; glslang alone wrote a module with an id defined twice.
+TEST(FxcValues, LocalTextureArrayElementsAreTheirTextures) {
+    const std::string glsl = pixelGlsl("Texture2D tex1;\nTexture2D tex2;\nfloat4 main() : sv_target\n{\n"
+                                       "    Texture2D q[2] = {tex1, tex2};\n    return q[0].Load(int3(0, 0, 0)) + 2 * q[1].Load(int3(0, 0, 0));\n}\n");
+    EXPECT_NE(glsl.find("texelFetch(fxport_tex1"), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find("(texelFetch(fxport_tex2_SPIRV_Cross_DummySampler, ivec2(0), 0) * 2.0)"), std::string::npos) << glsl;
+}

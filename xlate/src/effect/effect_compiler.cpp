@@ -27,6 +27,7 @@
 #include "checks/effect_profile_rules.h"
 #include "fxport/xlate/effect_file.h"
 #include "entry/entry_wrapper.h"
+#include "rewrite/tessellation_clip_semantics.h"
 #include "rewrite/fx_rewrite.h"
 #include "rewrite/degenerate_matrices.h"
 #include "hlsl/variable_declarations.h"
@@ -622,6 +623,8 @@ std::string EffectBuilder::effectText(ShaderStage stage, const std::string& entr
         for (const FxFunction& f : syntax_.functions)
             if (f.name == entry)
                 for (const TokenSpan& p : f.prototypes) extra.push_back({t[p.begin].offset, t[p.end - 1].end, {}});
+    if (stage == ShaderStage::Hull || stage == ShaderStage::Domain)
+        for (TextEdit& e : tessellationClipSemantics(syntax_)) extra.push_back(std::move(e));
     if (extra.empty() && stage != ShaderStage::Geometry) return rewritten_.hlsl;
     return rewritten_.hlslForGeometryShader(stage == ShaderStage::Geometry ? entry : std::string(), extra);
 }

@@ -367,7 +367,8 @@ EntryWrapper buildEntryWrapper(const EffectSyntax& syntax, const FxFunction& ent
                 if (!repeat) addParam(vectorType(leaf.scalar, leaf.components) + " " + name + " : POSITION" + std::to_string(leaf.semanticIndex));
             } else {
                 const int width = inputWidths[sem];
-                if (!repeat) addParam(vectorType(leaf.scalar, width) + " " + name + " : " + sem);
+                // GLSL has no bool vertex attribute: a bool input reads a uint one (nonzero is true).
+                if (!repeat) addParam(vectorType(leaf.scalar == "bool" ? "uint" : leaf.scalar, width) + " " + name + " : " + sem);
                 fill << assignLeaf(leaf, width > leaf.components ? narrow(name, leaf.components) : name);
                 continue;
             }

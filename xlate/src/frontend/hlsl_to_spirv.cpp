@@ -9,11 +9,13 @@
 #include "frontend/glslang_process.h"
 #include "spirv/byte_address_lengths.h"
 #include "spirv/clip_distance_packing.h"
+#include "spirv/constant_index_bounds.h"
 #include "spirv/structured_buffer_layout.h"
 #include "rewrite/keyword_identifiers.h"
 #include "spirv/spirv_fixups.h"
 #include "spirv/pixel_interlock.h"
 #include "spirv/static_zero_init.h"
+#include "spirv/tessellation_clip_distances.h"
 #include "spirv/unset_static_resources.h"
 #include "rewrite/pow2_partitioning.h"
 #include "spirv/spirv_integer_fixups.h"
@@ -122,7 +124,7 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
     // The SPIR-V passes (parsed_spirv.h), each a function over one parsed module; the spirv-opt
     // runs (the division check, legalisation) work on the words between them.
     const bool sm2or3 = request.shaderModel < 4;
-    runSpirvPasses(out.words, {restoreKeywordIdentifiers, staticVariablesStartAtZero});  // `precise` as a name (keyword_identifiers.h); statics start at zero before the division check (static_zero_init.h)
+    runSpirvPasses(out.words, {restoreKeywordIdentifiers, staticVariablesStartAtZero, tessellationClipDistances});  // `precise` as a name (keyword_identifiers.h); statics start at zero before the division check (static_zero_init.h); hull/domain clip distances as built-ins (tessellation_clip_distances.h)
     if (dividesByConstantZero(out.words, sm2or3)) {
         out.errors.push_back({0, {}, "division by zero: a divisor of this shader folds to the constant 0, which fxc refuses", true});
         return out;
@@ -132,6 +134,12 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
     std::string legalizeError;
     if (!legalizeSpirv(out.words, &legalizeError)) {
         out.errors.push_back({0, {}, legalizeError});
+        return out;
+    }
+    if (auto past = constantIndexPastArrayEnd(out.words)) {  // after dead code is gone, as fxc judges it
+        out.errors.push_back({deferredIndexLine(*request.source, past->index), {},
+                              "array index " + std::to_string(past->index) + " is out of range (an array of " + std::to_string(past->length) +
+                                  " elements; fxc refuses a constant index out of range where the code runs)"});
         return out;
     }
     if (std::string unset = staticResourceReadWithoutValue(out.words); !unset.empty()) {  // after dead code is gone

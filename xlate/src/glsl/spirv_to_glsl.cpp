@@ -645,10 +645,13 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
         if (readsVertexId(res, stage)) out.glsl = withStartVertexDeclared(out.glsl);
         if (layerOutputs) out.glsl = perVertexForLayerOutputs(out.glsl);
         if (stage != ShaderStage::Pixel && stage != ShaderStage::Hull) recordOutputs(compiler, res, semanticOf, out);
-        if (stage == ShaderStage::Geometry) {
+        // A hull shader's clip/cull inputs (spirv/tessellation_clip_distances.h) are arrayed as a
+        // geometry shader's are.
+        if (stage == ShaderStage::Geometry || stage == ShaderStage::Hull) {
             int clip = 0, cull = 0;  // per vertex: the inner of the input's two dimensions
             for (const auto& b : res.builtin_inputs) {
-                const auto& t = compiler.get_type(b.value_type_id);
+                // The variable's type: a hull shader's value_type_id lacks the per-vertex dimension.
+                const auto& t = compiler.get_type_from_variable(b.resource.id);
                 const int inner = t.array.size() >= 2 ? static_cast<int>(t.array.front()) : 0;
                 if (b.builtin == spv::BuiltInClipDistance) clip = inner;
                 if (b.builtin == spv::BuiltInCullDistance) cull = inner;

@@ -233,34 +233,69 @@ private:
     // components match one for one in type (componentwise-equal), by a cast when the source has at
     // least as many components (each converted). Objects take only their type. A struct is
     // returned; an array, which no function returns, is written to the first (out) parameter.
+    // A cast of a value whose type the rewrite cannot tell (`(Pair)t.Sample(s, uv)`, a method's
+    // result) gets overloads for every vector and matrix that can be cast to the struct, and for
+    // the struct itself and the scalars: glslang picks the one of the value's type.
     std::string define(const FxFunction& f, size_t b, size_t e, const DeclaredVariable& to, bool explicitCast = false) {
         auto source = typeOf(f, b, e);
+        if (!isAggregate(to)) return {};
+        if (!source) return explicitCast && to.dims.empty() ? defineForAnySource(f, to) : std::string();
         const std::string target = syntax_.resolveType(to.type);
-        if (!source || !isAggregate(to)) return {};
         const bool aggregate = isAggregate(*source);
         if ((!aggregate && !explicitCast) || (syntax_.resolveType(source->type) == target && source->dims == to.dims)) return {};
+        std::string name = "fxport_convert_" + identifierPart(syntax_.resolveType(source->type));
+        for (int d : source->dims) name += "_" + std::to_string(d);
+        name += "_to_" + identifierPart(target);
+        for (int d : to.dims) name += "_" + std::to_string(d);
+        const std::string definition = conversion(name, *source, to, explicitCast);
+        if (definition.empty()) return {};
+        if (defined_.insert(name).second)  // one line: the rewrite keeps the line count
+            edits.push_back({t_[f.declaration.begin].offset, t_[f.declaration.begin].offset, definition});
+        return name;
+    }
+    // The overloads of `fxport_cast_to_T` (see define()); empty when T holds an object.
+    std::string defineForAnySource(const FxFunction& f, const DeclaredVariable& to) {
+        const std::string name = "fxport_cast_to_" + identifierPart(syntax_.resolveType(to.type));
+        if (defined_.count(name)) return name;
+        std::vector<AggregateComponent> out;
+        if (!aggregateComponents(syntax_, to.type, {}, "r", false, out, true)) return {};
+        for (const auto& c : out)
+            if (c.object) return {};
+        std::string definitions = to.type + " " + name + "(" + to.type + " x) { return x; } ";
+        for (const char* scalar : {"float", "int", "uint", "bool"}) {
+            // A scalar fills every member, as glslang's own cast of one does.
+            definitions += to.type + " " + name + "(" + scalar + " x) { " + to.type + " r; ";
+            for (const auto& c : out) definitions += c.access + " = (" + c.scalar + ")x; ";
+            definitions += "return r; } ";
+            for (size_t n = std::max<size_t>(2, out.size()); n <= 4; ++n)
+                definitions += conversion(name, {scalar + std::to_string(n), {}}, to, true);
+            for (int rows = 2; rows <= 4; ++rows)
+                for (int columns = 2; columns <= 4; ++columns)
+                    if (size_t(rows * columns) == out.size())
+                        definitions += conversion(name, {scalar + std::to_string(rows) + "x" + std::to_string(columns), {}}, to, true);
+        }
+        defined_.insert(name);
+        edits.push_back({t_[f.declaration.begin].offset, t_[f.declaration.begin].offset, definitions});
+        return name;
+    }
+    // The definition of function `name` converting a `source` to `to` (one line); empty where fxc
+    // does not convert.
+    std::string conversion(const std::string& name, const DeclaredVariable& source, const DeclaredVariable& to, bool explicitCast) const {
+        const bool aggregate = isAggregate(source);
         std::vector<AggregateComponent> in, out;
-        if (!aggregateComponents(syntax_, source->type, source->dims, "x", false, in, true) ||
+        if (!aggregateComponents(syntax_, source.type, source.dims, "x", false, in, true) ||
             !aggregateComponents(syntax_, to.type, to.dims, "r", false, out, true) || (explicitCast ? in.size() < out.size() : in.size() != out.size()))
             return {};
-        if (!aggregate && !matrixCastFits(*source, in.size(), out.size())) return {};
+        if (!aggregate && !matrixCastFits(source, in.size(), out.size())) return {};
         std::string body;
         for (size_t k = 0; k < out.size(); ++k) {
             if (in[k].object != out[k].object || ((in[k].object || !explicitCast) && in[k].scalar != out[k].scalar)) return {};
             if (out[k].object && !to.dims.empty()) return {};  // an array of objects as an out parameter: left to glslang
             body += out[k].access + " = " + (out[k].object ? "" : "(" + out[k].scalar + ")") + in[k].access + "; ";
         }
-        std::string name = "fxport_convert_" + identifierPart(syntax_.resolveType(source->type));
-        for (int d : source->dims) name += "_" + std::to_string(d);
-        name += "_to_" + identifierPart(target);
-        for (int d : to.dims) name += "_" + std::to_string(d);
-        const std::string parameter = source->type + " x" + dimsSpelled(source->dims);
-        const std::string definition = to.dims.empty()
-                                           ? to.type + " " + name + "(" + parameter + ") { " + to.type + " r; " + body + "return r; } "
-                                           : "void " + name + "(out " + to.type + " r" + dimsSpelled(to.dims) + ", " + parameter + ") { " + body + "} ";
-        if (defined_.insert(name).second)  // one line: the rewrite keeps the line count
-            edits.push_back({t_[f.declaration.begin].offset, t_[f.declaration.begin].offset, definition});
-        return name;
+        const std::string parameter = source.type + " x" + dimsSpelled(source.dims);
+        return to.dims.empty() ? to.type + " " + name + "(" + parameter + ") { " + to.type + " r; " + body + "return r; } "
+                               : "void " + name + "(out " + to.type + " r" + dimsSpelled(to.dims) + ", " + parameter + ") { " + body + "} ";
     }
     // A matrix of more than one row and column cast to a struct takes exactly its count (fxc X3017).
     bool matrixCastFits(const DeclaredVariable& source, size_t have, size_t want) const {

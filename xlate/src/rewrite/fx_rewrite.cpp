@@ -1,6 +1,9 @@
 #include "rewrite/fx_rewrite.h"
 
 #include "rewrite/geometry_clip_inputs.h"
+#include "rewrite/uniform_object_structs.h"
+#include "rewrite/out_of_range_indices.h"
+#include "rewrite/local_object_arrays.h"
 #include "rewrite/geometry_output_stream.h"
 
 #include "rewrite/aggregate_conversions.h"
@@ -460,6 +463,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : matrixIntrinsicsByRow(syntax)) edits.push_back(std::move(e));
     for (auto& e : staticObjectAliases(syntax)) edits.push_back(std::move(e));
     for (auto& e : staticObjectStructs(syntax)) edits.push_back(std::move(e));
+    for (auto& e : localObjectArraysResolved(syntax)) edits.push_back(std::move(e));
     for (auto& e : shaderValuedDefaultsDropped(syntax)) edits.push_back(std::move(e));
     for (auto& e : respellOneComponentVectors(syntax)) edits.push_back(std::move(e));
     std::vector<TextEdit> vectorSwizzles;  // ahead of lowerMatrixSwizzles' edits of the same tokens (applyEdits keeps order)
@@ -470,6 +474,8 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : indexBeforeBaseForCalls(syntax)) edits.push_back(std::move(e));
     for (auto& e : componentwiseCasts(syntax)) edits.push_back(std::move(e));
     for (auto& e : aggregateConversions(syntax)) edits.push_back(std::move(e));
+    for (auto& e : uniformObjectStructs(syntax)) edits.push_back(std::move(e));
+    for (auto& e : outOfRangeIndicesDeferred(syntax)) edits.push_back(std::move(e));
     for (auto& e : intrinsicsAsFxc(syntax)) edits.push_back(std::move(e));
     for (auto& e : scalarIntrinsicCalls(syntax)) edits.push_back(std::move(e));
     if (out.dx9Samplers)

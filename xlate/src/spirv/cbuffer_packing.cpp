@@ -7,6 +7,7 @@
 #include <set>
 
 #include "fx/fx_syntax.h"
+#include "rewrite/uniform_object_structs.h"
 #include "spirv/parsed_spirv.h"
 
 namespace fxport::xlate {
@@ -164,8 +165,10 @@ public:
             return false;
         };
         std::uint32_t total = end;
+        const std::vector<bool>* starts = registerStarts_.count(id) ? &registerStarts_.at(id) : nullptr;
         for (std::uint32_t k = 0; k < n; ++k) {
             if (!(explicitOffsets && (*explicitOffsets)[k] >= 0)) {
+                if (starts && k < starts->size() && (*starts)[k]) end = roundUp16(end);
                 std::uint32_t at = place(end, memberType(id, k), sizes[k]);
                 while (overlaps(at, sizes[k])) at = place(roundUp16(at + 1), memberType(id, k), sizes[k]);
                 offsets[k] = at;
@@ -174,9 +177,13 @@ public:
             total = std::max(total, offsets[k] + sizes[k]);
             memberOffsets_[{id, k}] = offsets[k];
         }
+        if (starts && starts->size() == n + 1 && starts->back()) total = std::max(total, roundUp16(end));
         structSize_[id] = total;
         return total;
     }
+    // A numbers-only twin of a struct holding objects (rewrite/uniform_object_structs.h): per
+    // member and one past the last, whether a register starts there for a member it dropped.
+    void setRegisterStarts(std::uint32_t structId, std::vector<bool> starts) { registerStarts_[structId] = std::move(starts); }
     std::uint32_t memberOffset(std::uint32_t structId, std::uint32_t k) {
         if (!memberOffsets_.count({structId, k})) packStruct(structId, nullptr);
         return memberOffsets_[{structId, k}];
@@ -186,12 +193,17 @@ public:
     // (4, 8 for a vec2, 16 for a vec3, vec4, array, matrix or struct), no member inside the
     // previous one as std140 sizes it (an array or matrix to its last register's end, a struct
     // rounded up to 16), array strides std140's. glslang and GL drivers refuse the others.
-    bool glslDeclarable(std::uint32_t structId) {
+    // A struct inside the block (`nested`) has no layout(offset = N) in GLSL: its members must be
+    // exactly where std140 puts them (a gap D3D leaves, as for a member dropped beside objects
+    // (uniform_object_structs.h), needs the flattened block).
+    bool glslDeclarable(std::uint32_t structId, bool nested = false) {
         std::uint32_t end = 0;
         for (std::uint32_t k = 0; k < memberCount(structId); ++k) {
             std::uint32_t t = memberType(structId, k), offset = memberOffset(structId, k);
             bool rowMajor = memberRowMajor(structId, k);
             if (offset % std140Alignment(t) != 0 || (k > 0 && offset < end) || !std140Strides(t, rowMajor)) return false;
+            const std::uint32_t alignment = std140Alignment(t);
+            if (nested && offset != (end + alignment - 1) / alignment * alignment) return false;
             if (holdsIntegerMatrix(t)) return false;  // GLSL has no imat2 (integer_matrices.h)
             end = offset + std140Size(t, rowMajor);
         }
@@ -245,7 +257,7 @@ private:
     // inside must be declarable themselves.
     bool std140Strides(std::uint32_t id, bool rowMajor) {
         const Inst& t = m_.instOf(id);
-        if (t.op == kOpTypeStruct) return glslDeclarable(id);
+        if (t.op == kOpTypeStruct) return glslDeclarable(id, true);
         if (t.op != kOpTypeArray) return true;
         std::uint32_t element = m_.w(t, 2);
         if (arrayStride(id, rowMajor) != roundUp16(std140Size(element, rowMajor))) return false;
@@ -266,6 +278,7 @@ private:
     std::map<std::uint32_t, WordAt> arrayStrideWord_;
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> memberOffsets_;
     std::map<std::uint32_t, std::uint32_t> structSize_;
+    std::map<std::uint32_t, std::vector<bool>> registerStarts_;
 };
 
 std::string nameOf(const Module& m, std::uint32_t id) {
@@ -372,6 +385,15 @@ std::vector<PackedBlock> packConstantBuffers(ParsedSpirv& spirv, const EffectSyn
     std::vector<PackedBlock> out;
     Packer packer(m);
     const auto names = memberNames(m);
+    std::map<std::uint32_t, std::vector<bool>> registerStarts;
+    for (const Inst& i : m.insts) {
+        if (i.op != kOpName) continue;
+        const std::string name = m.stringAt(i, 2);
+        if (name.rfind(kNumbersStructPrefix, 0) != 0) continue;
+        if (const FxStruct* original = syntax.findStruct(name.substr(std::string(kNumbersStructPrefix).size())))
+            registerStarts[m.w(i, 1)] = numbersStructRegisterStarts(syntax, *original);
+    }
+    for (const auto& [id, starts] : registerStarts) packer.setRegisterStarts(id, starts);
     for (const auto& [variable, structId] : uniformBlocks(m)) {
         if (!only32BitScalars(m, structId)) continue;
         PackedBlock b;
@@ -383,6 +405,7 @@ std::vector<PackedBlock> packConstantBuffers(ParsedSpirv& spirv, const EffectSyn
         b.size = int(roundUp16(packer.packStruct(structId, &placed)));
         b.members = describeMembers(m, packer, structId, names);
         b.glslDeclarable = packer.glslDeclarable(structId);
+        b.registerStarts = registerStarts;
         out.push_back(std::move(b));
     }
     packer.decorate();
@@ -729,6 +752,7 @@ bool Flattener::run() {
 bool flattenConstantBuffer(ParsedSpirv& spirv, PackedBlock& block) {
     Module m(spirv);
     Packer packer(m);
+    for (const auto& [id, starts] : block.registerStarts) packer.setRegisterStarts(id, starts);
     // The struct's D3D offsets as packConstantBuffers decorated them (explicit placements included).
     std::vector<int> placed;
     for (const UniformMember& u : block.members) placed.push_back(u.offset);

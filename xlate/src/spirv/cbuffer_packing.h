@@ -17,6 +17,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,9 @@ struct PackedBlock {
     std::vector<UniformMember> members;   // at their D3D offsets
     bool glslDeclarable = false;          // GLSL can declare these offsets (layout(offset = N))
     bool flattened = false;               // declared as uvec4 registers[size / 16]
+    // Struct types that are numbers-only twins (rewrite/uniform_object_structs.h): per member, and
+    // one past the last, whether a register starts there for a dropped object member.
+    std::map<std::uint32_t, std::vector<bool>> registerStarts;
     // Flattened blocks only (SPIRV-Cross sees one member then): the byte ranges the shader reads
     // (block = -1, for the caller to fill) and the members they belong to.
     std::vector<UniformRange> rangesRead;
