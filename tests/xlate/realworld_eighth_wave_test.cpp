@@ -72,3 +72,26 @@ TEST(RealworldEighthWave, HalfLiteralsAreFloats) {
     EXPECT_NE(glsl.find("100000.0"), std::string::npos) << glsl;
     EXPECT_NE(glsl.find("0.5"), std::string::npos) << glsl;
 }
+
+// OpenXRay's pda_overlay.ps calls `noise(tc)` in a ps_5_0 shader: an intrinsic of texture shaders
+// (tx_1_0) only, which no shader profile has an instruction for. glslang crashed on it (SIGSEGV,
+// FX9001); it is now fxc's refusal, at the call. A call no compiled shader reaches compiles
+// (vkd3d's noise.shader_test), and a function of the shader's own named noise is called instead.
+TEST(RealworldEighthWave, NoiseIsATextureShaderIntrinsic) {
+    const std::vector<Diagnostic> errors = errorsOf(
+        "float4 main(float2 tc : TEXCOORD0) : SV_Target {\n"
+        "    return tc.x - noise(tc) * 0.5;\n"
+        "}\n",
+        "ps_5_0");
+    ASSERT_EQ(errors.size(), 1u);
+    EXPECT_NE(errors[0].message.find("'noise' is a texture-shader (tx_1_0) intrinsic: ps_5_0"), std::string::npos) << errors[0].message;
+    EXPECT_EQ(errors[0].location.line, 2);
+    EXPECT_FALSE(glslOf("float4 unused(float2 tc) { return noise(tc); }\n"
+                        "float4 main(float2 tc : TEXCOORD0) : SV_Target { return float4(tc, 0, 1); }\n",
+                        "ps_5_0")
+                     .empty());
+    const std::string own = glslOf("float noise(float2 p) { return frac(sin(dot(p, float2(12.9898, 78.233))) * 43758.5453); }\n"
+                                   "float4 main(float2 tc : TEXCOORD0) : SV_Target { return noise(tc); }\n",
+                                   "ps_5_0");
+    EXPECT_NE(own.find("43758.546875"), std::string::npos) << own;
+}
