@@ -95,3 +95,39 @@ TEST(RealworldEighthWave, NoiseIsATextureShaderIntrinsic) {
                                    "ps_5_0");
     EXPECT_NE(own.find("43758.546875"), std::string::npos) << own;
 }
+
+// OpenXRay's gas-mask drops and rain shaders fade with reversed edges: `smoothstep(0.5, 0.0, d)`,
+// `smoothstep(250, 200, p_len)`. GLSL's smoothstep is undefined for edge0 >= edge1; fxc's is
+// t * t * (3 - 2t) with t = saturate((x - a) / (b - a)), which falls from 1 to 0 there. The GLSL
+// spells fxc's arithmetic; edges that are constants in order keep smoothstep (defined, the same).
+TEST(RealworldEighthWave, ReversedSmoothstepEdgesComputeFxcsCurve) {
+    const std::string glsl = glslOf(
+        "cbuffer C : register(b0) { float near; float far; };\n"
+        "float4 main(float4 c : COLOR0) : SV_Target {\n"
+        "    return float4(smoothstep(far, near, c.x), smoothstep(0.5, 0.0, c.y), smoothstep(0.2, 0.8, c.z), 1);\n"
+        "}\n",
+        "ps_5_0");
+    EXPECT_NE(glsl.find("(i0.x - _"), std::string::npos) << glsl;                  // x - a over b - a
+    EXPECT_NE(glsl.find(".near - _"), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find("clamp((i0.y - 0.5) * (-2.0), 0.0, 1.0)"), std::string::npos) << glsl;  // (x - 0.5) / -0.5
+    EXPECT_NE(glsl.find("smoothstep(0.20000000298023223876953125, 0.800000011920928955078125, i0.z)"), std::string::npos) << glsl;
+    EXPECT_EQ(glsl.find("smoothstep(0.5"), std::string::npos) << glsl;
+    EXPECT_EQ(glsl.find("smoothstep(_"), std::string::npos) << glsl;
+}
+
+// clamp(x, a, b) is min(max(x, a), b) to fxc, so reversed bounds (OpenXRay's pda_overlay.ps:
+// `clamp(0.1, sin(4 * n), 0.4)`) give b; GLSL's clamp is undefined when min > max. Bounds that are
+// not constants in order are written as fxc computes them; saturate stays a clamp to 0..1.
+TEST(RealworldEighthWave, ReversedClampBoundsGiveTheMaximum) {
+    const std::string glsl = glslOf(
+        "cbuffer C : register(b0) { float lo; float hi; int ilo; int ihi; };\n"
+        "float4 main(float4 c : COLOR0, int4 k : TEXCOORD1) : SV_Target {\n"
+        "    return float4(clamp(0.1, sin(c.x), 0.4), clamp(c.y, lo, hi), clamp(k.x, ilo, ihi), saturate(c.w));\n"
+        "}\n",
+        "ps_5_0");
+    EXPECT_NE(glsl.find("min(max(0.100000001490116119384765625, sin(i0.x)), 0.4000000059604644775390625)"), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find("min(max(i0.y, _"), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find("min(max(i1.x, _"), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find("clamp(i0.w, 0.0, 1.0)"), std::string::npos) << glsl;
+    EXPECT_EQ(glsl.find("clamp(i0.y"), std::string::npos) << glsl;
+}
