@@ -131,3 +131,21 @@ TEST(RealworldEighthWave, ReversedClampBoundsGiveTheMaximum) {
     EXPECT_NE(glsl.find("clamp(i0.w, 0.0, 1.0)"), std::string::npos) << glsl;
     EXPECT_EQ(glsl.find("clamp(i0.y"), std::string::npos) << glsl;
 }
+
+// Torque3D's MLAA blend weights (DX9-style: sampler2D, tex2Dlod, COLOR0) are compiled at ps_5_0,
+// where fxc's round() is round_ne: halves to the even integer. With glslang's DX9 switch the GLSL
+// was `round`, whose halves GLSL leaves to the implementation; it is `roundEven` as for a
+// Texture2D source (the GLSL before the fix: `vec4(round(vec2(...`).
+TEST(RealworldEighthWave, RoundOfDx9StyleSourceRoundsHalvesToEven) {
+    const std::string source =
+        "sampler2D edges : register(s0);\n"
+        "float4 main(float2 uv : TEXCOORD0) : COLOR0 {\n"
+        "    float e = tex2Dlod(edges, float4(uv, 0, 0)).r;\n"
+        "    return float4(33 * round(4.0 * float2(e, uv.y)), round(uv.x), 1);\n"
+        "}\n";
+    const std::string glsl = glslOf(source, "ps_5_0");
+    EXPECT_NE(glsl.find("roundEven(vec2("), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find("roundEven(i0.x)"), std::string::npos) << glsl;
+    EXPECT_EQ(glsl.find(" round("), std::string::npos) << glsl;
+    EXPECT_EQ(glsl.find("(round("), std::string::npos) << glsl;
+}
