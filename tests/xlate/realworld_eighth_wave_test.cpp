@@ -149,3 +149,27 @@ TEST(RealworldEighthWave, RoundOfDx9StyleSourceRoundsHalvesToEven) {
     EXPECT_EQ(glsl.find(" round("), std::string::npos) << glsl;
     EXPECT_EQ(glsl.find("(round("), std::string::npos) << glsl;
 }
+
+// Seen while reading this sample's GLSL (CloudsGPUPro6 and Torque3D scale sign(); none divides
+// sign() itself): HLSL's sign() is an int, so `sign(d) / 2` divides integers (0), `sign(d) & 1` and
+// `sign(v) >> 1` are integer operations. glslang typed sign as float: the division gave ±0.5, the
+// `&` a float operand (GLSL the driver refuses) and the shift moved the float's bits. The calls
+// are cast to fxc's int type; a constant folds as fxc folds it (sign(-3.0) / 2 + 0.25 is 0.25).
+TEST(RealworldEighthWave, SignIsAnInt) {
+    const std::string glsl = glslOf(
+        "cbuffer C : register(b0) { float d; float3 v; };\n"
+        "float4 main() : SV_Target {\n"
+        "    int a = sign(d) & 1;\n"
+        "    float b = sign(d) / 2;\n"
+        "    int3 c = sign(v) >> 1;\n"
+        "    return float4(a, b, c.y, sign(-3.0) / 2 + 0.25);\n"
+        "}\n",
+        "ps_5_0");
+    EXPECT_NE(glsl.find("float(int(sign(_"), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find(")) & 1)"), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find(")) / 2)"), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find("(ivec3(sign(_"), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find(", 0.25);"), std::string::npos) << glsl;
+    EXPECT_EQ(glsl.find("& 1.0"), std::string::npos) << glsl;
+    EXPECT_EQ(glsl.find("floatBitsToInt(sign"), std::string::npos) << glsl;
+}
