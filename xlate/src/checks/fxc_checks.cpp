@@ -26,6 +26,7 @@ constexpr Family kFamilies[] = {
     findStaticSamplerErrors,
     findFunctionSignatureErrors,
     findComputeOnlyIntrinsicErrors,
+    findTextureShaderIntrinsicErrors,
     findMatrixShapeConversionErrors,
     findLvalueCastErrors,
     findEffectKeywordErrors,

@@ -64,6 +64,7 @@ std::vector<std::pair<size_t, Diagnostic>> findFunctionAttributeErrors(const Eff
 std::vector<std::pair<size_t, Diagnostic>> findStaticSamplerErrors(const EffectSyntax& syntax, const SourceMap& map);
 std::vector<std::pair<size_t, Diagnostic>> findFunctionSignatureErrors(const EffectSyntax& syntax, const SourceMap& map);
 std::vector<std::pair<size_t, Diagnostic>> findComputeOnlyIntrinsicErrors(const EffectSyntax& syntax, const SourceMap& map);
+std::vector<std::pair<size_t, Diagnostic>> findTextureShaderIntrinsicErrors(const EffectSyntax& syntax, const SourceMap& map);  // texture_shader_intrinsics.cpp
 std::vector<std::pair<size_t, Diagnostic>> findMatrixShapeConversionErrors(const EffectSyntax& syntax, const SourceMap& map);
 std::vector<std::pair<size_t, Diagnostic>> findLvalueCastErrors(const EffectSyntax& syntax, const SourceMap& map);  // lvalue_casts.cpp
 std::vector<std::pair<size_t, Diagnostic>> findEffectKeywordErrors(const EffectSyntax& syntax, const SourceMap& map);  // effect_keywords.cpp

@@ -1406,6 +1406,7 @@ CompiledEffect compileUncached(const std::string& source, const std::string& dis
     pre.text = samplerArraysAsElements(pre.text);  // sam[1] -> sam_fxport_1
     pre.text = samplerTexturesDeclared(pre.text);  // tex2D(sam, uv) beside tex.Sample(sam, uv)
     pre.text = longLiteralSuffixesDropped(pre.text);  // 3lu -> 3u
+    pre.text = halfLiteralSuffixesDropped(pre.text);  // 0.1h -> 0.1
     pre.text = builtinTypeTypedefsResolved(pre.text);  // { typedef half2 float; float v; } -> { half2 v; }
     pre.text = typeKeywordsLowerCased(pre.text);      // Matrix m -> matrix m
     pre.text = entryAttributeNamesLowerCased(pre.text);  // [MaxVertexCount(3)] -> [maxvertexcount(3)]

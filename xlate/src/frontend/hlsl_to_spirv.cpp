@@ -14,6 +14,7 @@
 #include "rewrite/keyword_identifiers.h"
 #include "spirv/spirv_fixups.h"
 #include "spirv/pixel_interlock.h"
+#include "spirv/rounding.h"
 #include "spirv/static_zero_init.h"
 #include "spirv/tessellation_clip_distances.h"
 #include "spirv/unset_static_resources.h"
@@ -130,7 +131,8 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
         return out;
     }
     runSpirvPasses(out.words, {applySpirvFixups, structuredBufferStridesAsD3D,
-                               sm2or3 ? SpirvPass(integerNegationInFloats) : nullptr});  // SM2-3 integers are floats
+                               sm2or3 ? SpirvPass(integerNegationInFloats) : nullptr,  // SM2-3 integers are floats
+                               sm2or3 ? nullptr : SpirvPass(roundHalvesToEven)});     // round_ne (rounding.h)
     std::string legalizeError;
     if (!legalizeSpirv(out.words, &legalizeError)) {
         out.errors.push_back({0, {}, legalizeError});

@@ -48,6 +48,7 @@
 #include "rewrite/overload_choices.h"
 #include "rewrite/intrinsic_overrides.h"
 #include "rewrite/scalar_intrinsics.h"
+#include "rewrite/sign_results.h"
 #include "rewrite/min_precision_types.h"
 
 #include <algorithm>
@@ -478,6 +479,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : outOfRangeIndicesDeferred(syntax)) edits.push_back(std::move(e));
     for (auto& e : intrinsicsAsFxc(syntax)) edits.push_back(std::move(e));
     for (auto& e : scalarIntrinsicCalls(syntax)) edits.push_back(std::move(e));
+    for (auto& e : signResultsAsInts(syntax)) edits.push_back(std::move(e));
     if (out.dx9Samplers)
         for (auto& e : oneDimensionalSamplingAsRows(syntax)) edits.push_back(std::move(e));
     for (auto& e : mixedShapeConversions(syntax)) edits.push_back(std::move(e));

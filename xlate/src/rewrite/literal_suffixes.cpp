@@ -46,4 +46,24 @@ std::string longLiteralSuffixesDropped(const std::string& text) {
     return out;
 }
 
+std::string halfLiteralSuffixesDropped(const std::string& text) {
+    std::string out;
+    size_t at = 0;
+    for (const Token& t : tokenize(text)) {
+        if (t.kind != Token::Kind::Number || t.text.size() < 2) continue;
+        const char last = t.text.back();
+        if (last != 'h' && last != 'H') continue;
+        const std::string number = t.text.substr(0, t.text.size() - 1);
+        // A floating literal only (`0.1h`, `1.h`, `1e3h`): digits with a point or an exponent.
+        if (number.find_first_not_of("0123456789.eE+-") != std::string::npos) continue;
+        if (number.find_first_of(".eE") == std::string::npos) continue;
+        out.append(text, at, t.offset - at);
+        out += number;
+        at = t.end;
+    }
+    if (at == 0) return text;
+    out.append(text, at, std::string::npos);
+    return out;
+}
+
 }  // namespace fxport::xlate

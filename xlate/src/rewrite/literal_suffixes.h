@@ -12,4 +12,11 @@ namespace fxport::xlate {
 
 std::string longLiteralSuffixesDropped(const std::string& preprocessed);
 
+// Floating literals with fxc's `h` suffix (`0.1h`, OpenXRay's `#define DEPTH_EPSILON 0.1h`): fxc
+// computes `half` as `float` (a 32-bit value in every profile it compiles to), so `2 * 0.1h` is a
+// float product to fxc. glslang refuses an int operand beside the literal ("Could not perform
+// requested binary operation", glslangValidator alike). The suffix is dropped on the
+// preprocessed text, so every later rewrite and check sees the float literal fxc computes with.
+std::string halfLiteralSuffixesDropped(const std::string& preprocessed);
+
 }  // namespace fxport::xlate

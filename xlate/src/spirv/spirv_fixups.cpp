@@ -3,6 +3,7 @@
 #include "spirv/spirv_integer_fixups.h"
 #include "spirv/parsed_spirv.h"
 #include "spirv/spirv_negated_comparisons.h"
+#include "spirv/reversed_bounds.h"
 
 #include <spirv-tools/optimizer.hpp>
 
@@ -99,7 +100,7 @@ bool hasOpcode(const std::vector<std::uint32_t>& words, std::initializer_list<st
 
 bool applySpirvFixups(ParsedSpirv& m) {
     return runSpirvPasses(m, {remainderTruncates, anyAllOfScalarIsTheScalar, maskShiftCounts, floatToUnsignedSaturates,
-                           negatedComparisonsAsOpposites, interpolateAtSampleTakesInt});
+                           negatedComparisonsAsOpposites, interpolateAtSampleTakesInt, smoothstepAsFxcArithmetic, clampAsMinOfMax});
 }
 
 namespace {
