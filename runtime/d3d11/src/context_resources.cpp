@@ -136,6 +136,9 @@ void Context::CopyResource(ID3D11Resource* pDst, ID3D11Resource* pSrc) {
         if ((td->depth && !td->colour) || (ts->depth && !ts->colour))
             return fail(E_NOTIMPL, "CopyResource: a depth-stencil texture without BIND_SHADER_RESOURCE (a typeless one with it copies)");
         if (td->slices() != ts->slices()) return fail(E_INVALIDARG, "CopyResource: the textures differ in ArraySize");
+        if (td->slices() > 1 && td->desc.SampleDesc.Count > 1)
+            return fail(E_NOTIMPL, "CopyResource: multisampled arrays (SampleDesc.Count = " + std::to_string(td->desc.SampleDesc.Count) +
+                                       ") are not copied yet: resolve their slices (ResolveSubresource)");
         if (td->slices() > 1) {  // arrays: subresource by subresource (through the CPU when one side is staging)
             Subresource at;
             for (UINT sub = 0; splitSubresource(*ts, sub, at); ++sub) writeSubresource(*td, at, nullptr, readSubresource(*ts, at));

@@ -370,6 +370,12 @@ HRESULT createTextureArray(Device* device, const D3D11_TEXTURE2D_DESC& d, const 
 HRESULT arrayShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc, ID3D11ShaderResourceView** pp);
 HRESULT arrayRenderTargetView(Device* device, Texture* t, const D3D11_RENDER_TARGET_VIEW_DESC* pDesc, ID3D11RenderTargetView** pp);
 HRESULT arrayDepthStencilView(Device* device, Texture* t, const D3D11_DEPTH_STENCIL_VIEW_DESC* pDesc, ID3D11DepthStencilView** pp);
+// The slices [first, first + count) a view names, inside the texture's `slices`: E_INVALIDARG
+// naming `at`FirstArraySlice + ArraySize otherwise.
+HRESULT checkSlices(const std::string& at, UINT first, UINT count, int slices);
+// TEXTURE2DMSARRAY views of a multisampled array (resources_multisample_array.cpp).
+HRESULT multisampleArrayShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc, ID3D11ShaderResourceView** pp);
+HRESULT multisampleArrayRenderTargetView(Device* device, Texture* t, const D3D11_RENDER_TARGET_VIEW_DESC* pDesc, ID3D11RenderTargetView** pp);
 // One subresource of a 2D texture or array (texture_subresources.cpp): which level and slice D3D's
 // index names, and its texels, tightly packed, from wherever the texture keeps them (GPU or staging).
 struct Subresource {

@@ -4,12 +4,13 @@
 // render-target or depth-stencil view is one slice of one level (a cascaded shadow map: a
 // typeless depth array drawn slice by slice, sampled as a whole) or a layered view of several,
 // drawn into through SV_RenderTargetArrayIndex. D3D numbers subresources level + slice *
-// MipLevels, which pInitialData follows. Not here yet: unordered-access arrays, multisampled
-// arrays (Texture2DMSArray). A cube array's TEXTURECUBEARRAY view is a GL cube map array view of
+// MipLevels, which pInitialData follows. Multisampled arrays (Texture2DMSArray) are made here, their
+// views in resources_multisample_array.cpp. Not here yet: unordered-access arrays. A cube array's TEXTURECUBEARRAY view is a GL cube map array view of
 // its layers.
 #include <cstring>
 
 #include "d3d11_impl.h"
+#include "device/multisample_target.h"
 #include "guarded.h"
 
 namespace fxport::d3d11 {
@@ -18,11 +19,10 @@ namespace {
 
 constexpr UINT kMaxSlices = 2048;  // D3D11_REQ_TEXTURE2D_ARRAY_AXIS_DIMENSION
 
-// What fxport's arrays are not yet, each E_NOTIMPL naming the field.
-HRESULT checkArrayScope(const D3D11_TEXTURE2D_DESC& d, const std::string& at) {
-    if (d.SampleDesc.Count > 1)
-        return fail(E_NOTIMPL, at + "SampleDesc.Count = " + std::to_string(d.SampleDesc.Count) + " with ArraySize = " + std::to_string(d.ArraySize) +
-                                   ": multisampled arrays (Texture2DMSArray) are not supported yet");
+// What fxport's arrays are not yet, each E_NOTIMPL naming the field; a multisampled array
+// (Texture2DMSArray) has the rules of a multisampled texture.
+HRESULT checkArrayScope(const D3D11_TEXTURE2D_DESC& d, const std::string& at, bool hasData) {
+    if (d.SampleDesc.Count > 1) return checkMultisampleDesc(d, hasData);
     if (d.BindFlags & D3D11_BIND_UNORDERED_ACCESS)
         return fail(E_NOTIMPL, at + "BindFlags = " + std::to_string(d.BindFlags) + " with ArraySize = " + std::to_string(d.ArraySize) +
                                    ": fxport's array textures are SHADER_RESOURCE, RENDER_TARGET and DEPTH_STENCIL only (no UAV arrays yet)");
@@ -70,7 +70,7 @@ HRESULT checkArrayDesc(const D3D11_TEXTURE2D_DESC& d, bool hasData, SurfaceForma
     const std::string at = "CreateTexture2D: D3D11_TEXTURE2D_DESC.";
     if (d.ArraySize > kMaxSlices) return fail(E_INVALIDARG, at + "ArraySize = " + std::to_string(d.ArraySize) + " (1 to 2048)");
     if (d.SampleDesc.Count == 0) return fail(E_INVALIDARG, at + "SampleDesc.Count = 0");
-    if (HRESULT hr = checkArrayScope(d, at); FAILED(hr)) return hr;
+    if (HRESULT hr = checkArrayScope(d, at, hasData); FAILED(hr)) return hr;
     const int full = fullMipCount(d.Width, d.Height);
     if (int(d.MipLevels) > full)
         return fail(E_INVALIDARG, at + "MipLevels = " + std::to_string(d.MipLevels) + " (a " + std::to_string(d.Width) + "x" + std::to_string(d.Height) +
@@ -110,15 +110,14 @@ HRESULT fillArray(Texture& t, const D3D11_SUBRESOURCE_DATA* initial) {
     return S_OK;
 }
 
-// The slices [first, first + count) a view names, inside the texture's `slices`.
+}  // namespace
+
 HRESULT checkSlices(const std::string& at, UINT first, UINT count, int slices) {
     if (count == 0 || first >= UINT(slices) || count > UINT(slices) - first)
         return fail(E_INVALIDARG, at + "FirstArraySlice + ArraySize = " + std::to_string(first) + " + " + std::to_string(count) + " (the texture has " +
                                       std::to_string(slices) + " slices)");
     return S_OK;
 }
-
-}  // namespace
 
 HRESULT createTextureArray(Device* device, const D3D11_TEXTURE2D_DESC& d, const D3D11_SUBRESOURCE_DATA* pInitialData, ID3D11Texture2D** pp) {
     SurfaceFormat format = SurfaceFormat::Color;
@@ -132,6 +131,9 @@ HRESULT createTextureArray(Device* device, const D3D11_TEXTURE2D_DESC& d, const 
         t.desc.MipLevels = UINT(t.levels);
         if (d.Usage == D3D11_USAGE_STAGING)
             for (int sub = 0; sub < t.subresources(); ++sub) t.staging.emplace_back(t.levelBytes(sub % t.levels), 0);
+        else if (d.SampleDesc.Count > 1)
+            t.array = std::make_unique<core::MultisampleArray>(device->core(), int(d.Width), int(d.Height), int(d.ArraySize), format,
+                                                               int(d.SampleDesc.Count));
         else
             t.array = std::make_unique<fxport::Texture2DArray>(device->core(), int(d.Width), int(d.Height), int(d.ArraySize), t.levels, format);
         if (pInitialData)
@@ -181,6 +183,7 @@ HRESULT cubeArrayShaderResourceView(Device* device, Texture* t, const D3D11_SHAD
 
 HRESULT arrayShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc, ID3D11ShaderResourceView** pp) {
     const std::string call = "CreateShaderResourceView", at = call + ": D3D11_SHADER_RESOURCE_VIEW_DESC.";
+    if (t->desc.SampleDesc.Count > 1) return multisampleArrayShaderResourceView(device, t, pDesc, pp);
     // A cube array is viewed as cubes by default (D3D's view of the whole resource), or as 2D slices.
     if (isCubeArray(*t) && (!pDesc || pDesc->ViewDimension == D3D11_SRV_DIMENSION_TEXTURECUBEARRAY))
         return cubeArrayShaderResourceView(device, t, pDesc, pp);
@@ -220,6 +223,7 @@ HRESULT arrayShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_R
 }
 
 HRESULT arrayRenderTargetView(Device* device, Texture* t, const D3D11_RENDER_TARGET_VIEW_DESC* pDesc, ID3D11RenderTargetView** pp) {
+    if (t->desc.SampleDesc.Count > 1) return multisampleArrayRenderTargetView(device, t, pDesc, pp);
     const std::string call = "CreateRenderTargetView", at = call + ": D3D11_RENDER_TARGET_VIEW_DESC.";
     D3D11_RENDER_TARGET_VIEW_DESC d;
     d.Format = t->desc.Format;
