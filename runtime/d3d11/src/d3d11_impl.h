@@ -343,6 +343,8 @@ struct DepthFamily {
     DXGI_FORMAT typeless, depthView, sampledView;
     DepthFormat depth;      // a depth buffer's format (DSV only)
     SurfaceFormat sampled;  // the depth texture's (SRV, or SRV and DSV)
+    DXGI_FORMAT stencilView = DXGI_FORMAT_UNKNOWN;  // an SRV of the stencil (R24G8 / R32G8X24 only)
+    SurfaceFormat stencil = SurfaceFormat::Depth32;  // what that view reads (StencilOf...)
 };
 const DepthFamily* depthFamilyOf(DXGI_FORMAT textureFormat);  // null: not one of them
 const DepthFamily* depthFamilyOfView(DXGI_FORMAT depthView);   // the family whose DSV format this is (D32_FLOAT ...)
@@ -350,7 +352,7 @@ const DepthFamily* depthFamilyOfView(DXGI_FORMAT depthView);   // the family who
 // B8G8R8A8/X8); false for any other format.
 bool typelessColourStorage(DXGI_FORMAT typeless, SurfaceFormat& out);
 // What a view of `viewFormat` reads `t` as: the view's format for a typeless colour texture, the
-// texture's own otherwise.
+// stencil for a typeless depth-stencil texture's stencil view, the texture's own otherwise.
 SurfaceFormat viewSurface(DXGI_FORMAT viewFormat, const Texture& t);
 // A view's Format for texture `t`: its own (or UNKNOWN), a typed member of a typeless colour
 // texture's family, or the typeless depth family's view of that kind; E_NOTIMPL/E_INVALIDARG

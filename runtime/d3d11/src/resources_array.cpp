@@ -197,6 +197,9 @@ HRESULT arrayShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_R
                         at + "ViewDimension = " + std::to_string(pDesc->ViewDimension) + " (fxport views an array texture as D3D11_SRV_DIMENSION_TEXTURE2DARRAY" +
                             (isCubeArray(*t) ? std::string(", a cube array also as TEXTURECUBEARRAY; a TEXTURECUBE view of it: not yet)") : std::string(")")));
         if (HRESULT f = checkViewFormat(call.c_str(), "D3D11_SHADER_RESOURCE_VIEW_DESC", pDesc->Format, *t, false); FAILED(f)) return f;
+        if (viewSurface(pDesc->Format, *t) != t->format)
+            return fail(E_NOTIMPL, at + "Format = " + formatName(pDesc->Format) + " of a " + formatName(t->desc.Format) +
+                                       " array: fxport reads an array's texels in their stored format only (no stencil view of a depth array yet)");
         const auto& a = pDesc->Texture2DArray;
         if (a.MostDetailedMip >= UINT(t->levels))
             return fail(E_INVALIDARG, at + "Texture2DArray.MostDetailedMip = " + std::to_string(a.MostDetailedMip) + " (the texture has " +

@@ -29,6 +29,17 @@ void applyD3D9Swizzle(GLuint name, SurfaceFormat format) {
     if (channels <= 2) glTextureParameteri(name, GL_TEXTURE_SWIZZLE_B, GL_ONE);
 }
 
+// A view of a depth-stencil texture's stencil (D3D's X24_TYPELESS_G8_UINT ...): GL reads the
+// stencil index into red; D3D's views hold it in green, with 0 in red and blue and 1 in alpha.
+void applyStencilRead(GLuint name, SurfaceFormat format) {
+    if (format != SurfaceFormat::StencilOfDepth24Stencil8 && format != SurfaceFormat::StencilOfDepth32Stencil8) return;
+    glTextureParameteri(name, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_STENCIL_INDEX);
+    glTextureParameteri(name, GL_TEXTURE_SWIZZLE_R, GL_ZERO);
+    glTextureParameteri(name, GL_TEXTURE_SWIZZLE_G, GL_RED);
+    glTextureParameteri(name, GL_TEXTURE_SWIZZLE_B, GL_ZERO);
+    glTextureParameteri(name, GL_TEXTURE_SWIZZLE_A, GL_ONE);
+}
+
 GLenum glStageOf(int stage) {
     switch (stage) {
     case 0: return GL_VERTEX_SHADER;
@@ -177,6 +188,7 @@ BackendObject GlBackend::createTextureView(BackendObject source, SurfaceFormat f
         return 0;
     }
     applyD3D9Swizzle(name, format);
+    applyStencilRead(name, format);
     if (line) lineTargets_[name] = target;
     return name;
 }
