@@ -199,6 +199,9 @@ public:
         textureSizes[t] = {width, height};
         return t;
     }
+    BackendObject createCubeView(BackendObject source, SurfaceFormat format, int firstLevel, int levels, int firstLayer) override {
+        return createTextureView(source, format, false, firstLevel, levels, firstLayer, 6);
+    }
     BackendObject createMultisampleArrayTexture(SurfaceFormat, int samples, int width, int height, int layers, int& given) override {
         given = samples;
         const BackendObject t = make("createMultisampleArrayTexture " + std::to_string(width) + "x" + std::to_string(height) + " layers " +

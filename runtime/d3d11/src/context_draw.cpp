@@ -138,7 +138,7 @@ void Context::bindStorage(const char* call, const core::ShaderCode& code, const 
         } else if (image && v->image) {
             core.SetUnorderedAccess(b.slot, v->image.get());
         } else if (image) {
-            core.SetUnorderedAccess(b.slot, v->texture->colour.get());
+            core.SetUnorderedAccess(b.slot, v->formatView ? v->formatView.get() : v->texture->colour.get());
         } else {
             checkStride(use, b, *v->buffer);
             core::setStorageBuffer(core, true, b.slot, v->buffer->gpu.get(), v->range.offset, v->range.bytes);

@@ -149,6 +149,7 @@ public:
         typed.reset();  // before the buffer it reads may go
         formatView.reset();
         arrayRange.reset();
+        cubeRange.reset();
         lineRange.reset();
         resource()->Release();
     }
@@ -162,6 +163,7 @@ public:
     fxport::Texture* sampled() const {
         if (formatView) return formatView.get();
         if (arrayRange) return arrayRange.get();
+        if (cubeRange) return cubeRange.get();
         if (line) return lineRange ? lineRange.get() : line->texels.get();
         return texture ? texture->sampled() : volume ? volume->texels.get() : nullptr;
     }
@@ -174,6 +176,7 @@ public:
     std::unique_ptr<core::TexelBuffer> typed;  // a typed buffer view (Buffer<T>)
     std::unique_ptr<fxport::Texture2D> formatView;       // a typeless colour texture read in another format of its family
     std::unique_ptr<fxport::Texture2DArray> arrayRange;  // a view of part of an array texture's levels or slices
+    std::unique_ptr<fxport::TextureCube> cubeRange;      // a TEXTURECUBE view of a cube array (its first cube)
     std::unique_ptr<fxport::Texture1D> lineRange;        // a 1D texture seen as another dimension or in part
 };
 // An unordered-access view of a structured or raw buffer, of level 0 of a 2D texture, or of level
@@ -185,6 +188,7 @@ public:
     ~UnorderedAccessView() override {
         typed.reset();
         image.reset();
+        formatView.reset();
         resource->Release();
     }
     void GetResource(ID3D11Resource** r) override { resource->AddRef(); *r = resource; }
@@ -196,6 +200,7 @@ public:
     BufferRange range;                         // buffer views
     std::unique_ptr<core::TexelBuffer> typed;  // a typed buffer view (RWBuffer<T>)
     std::unique_ptr<fxport::Texture1D> image;  // a 1D texture's view (resources_1d.cpp)
+    std::unique_ptr<fxport::Texture2D> formatView;  // a typeless colour texture written in another format of its family
 };
 // A render-target view of a 2D texture (texture set) or of rows of a 1D texture (line set, and
 // `slice` the target over them).
@@ -216,7 +221,7 @@ public:
     Texture* texture = nullptr;
     LineTexture* line = nullptr;
     D3D11_RENDER_TARGET_VIEW_DESC desc;
-    std::unique_ptr<RenderTarget2D> slice;  // a view of slices of an array texture (layered for several)
+    std::unique_ptr<RenderTarget2D> slice;  // a view of slices of an array texture (layered for several), or in another format
 };
 class DepthStencilView final : public Object<ID3D11DepthStencilView> {
 public:

@@ -10,6 +10,7 @@
 #include <cstring>
 
 #include "d3d11_impl.h"
+#include "device/cube_view.h"
 #include "device/multisample_target.h"
 #include "guarded.h"
 
@@ -179,6 +180,29 @@ HRESULT cubeArrayShaderResourceView(Device* device, Texture* t, const D3D11_SHAD
     });
 }
 
+// A TEXTURECUBE view of a cube array: its first cube (D3D11_TEX_CUBE_SRV names levels only; another
+// cube is a TEXTURECUBEARRAY view of one cube), read by TextureCube through a GL cube map view.
+HRESULT firstCubeShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_RESOURCE_VIEW_DESC& desc, ID3D11ShaderResourceView** pp) {
+    const std::string call = "CreateShaderResourceView", at = call + ": D3D11_SHADER_RESOURCE_VIEW_DESC.";
+    if (HRESULT f = checkViewFormat(call.c_str(), "D3D11_SHADER_RESOURCE_VIEW_DESC", desc.Format, *t, false); FAILED(f)) return f;
+    const auto& c = desc.TextureCube;
+    const UINT levels = c.MipLevels == UINT(-1) && c.MostDetailedMip < UINT(t->levels) ? UINT(t->levels) - c.MostDetailedMip : c.MipLevels;
+    if (c.MostDetailedMip >= UINT(t->levels) || levels == 0 || levels > UINT(t->levels) - c.MostDetailedMip)
+        return fail(E_INVALIDARG, at + "TextureCube = {MostDetailedMip " + std::to_string(c.MostDetailedMip) + ", MipLevels " +
+                                      std::to_string(c.MipLevels) + "} (the texture has " + std::to_string(t->levels) + " levels)");
+    D3D11_SHADER_RESOURCE_VIEW_DESC d = desc;
+    d.TextureCube = {c.MostDetailedMip, levels};
+    if (d.Format == DXGI_FORMAT_UNKNOWN) d.Format = t->desc.Format;
+    if (!pp) return succeed();
+    return guarded(call.c_str(), [&] {
+        auto view = std::unique_ptr<ShaderResourceView, void (*)(ShaderResourceView*)>(new ShaderResourceView(device, t, d),
+                                                                                       [](ShaderResourceView* v) { v->Release(); });
+        view->cubeRange = std::make_unique<core::CubeView>(*t->array, int(c.MostDetailedMip), int(levels), 0);
+        *pp = view.release();
+        return succeed();
+    });
+}
+
 }  // namespace
 
 HRESULT arrayShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc, ID3D11ShaderResourceView** pp) {
@@ -187,6 +211,7 @@ HRESULT arrayShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_R
     // A cube array is viewed as cubes by default (D3D's view of the whole resource), or as 2D slices.
     if (isCubeArray(*t) && (!pDesc || pDesc->ViewDimension == D3D11_SRV_DIMENSION_TEXTURECUBEARRAY))
         return cubeArrayShaderResourceView(device, t, pDesc, pp);
+    if (isCubeArray(*t) && pDesc->ViewDimension == D3D11_SRV_DIMENSION_TEXTURECUBE) return firstCubeShaderResourceView(device, t, *pDesc, pp);
     D3D11_SHADER_RESOURCE_VIEW_DESC d;
     d.Format = t->desc.Format;
     d.ViewDimension = D3D11_SRV_DIMENSION_TEXTURE2DARRAY;
@@ -195,7 +220,7 @@ HRESULT arrayShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_R
         if (pDesc->ViewDimension != D3D11_SRV_DIMENSION_TEXTURE2DARRAY)
             return fail(pDesc->ViewDimension == D3D11_SRV_DIMENSION_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
                         at + "ViewDimension = " + std::to_string(pDesc->ViewDimension) + " (fxport views an array texture as D3D11_SRV_DIMENSION_TEXTURE2DARRAY" +
-                            (isCubeArray(*t) ? std::string(", a cube array also as TEXTURECUBEARRAY; a TEXTURECUBE view of it: not yet)") : std::string(")")));
+                            (isCubeArray(*t) ? std::string(", a cube array also as TEXTURECUBEARRAY or TEXTURECUBE)") : std::string(")")));
         if (HRESULT f = checkViewFormat(call.c_str(), "D3D11_SHADER_RESOURCE_VIEW_DESC", pDesc->Format, *t, false); FAILED(f)) return f;
         if (viewSurface(pDesc->Format, *t) != t->format)
             return fail(E_NOTIMPL, at + "Format = " + formatName(pDesc->Format) + " of a " + formatName(t->desc.Format) +

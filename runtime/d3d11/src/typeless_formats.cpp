@@ -5,8 +5,8 @@
 // one depth texture underneath; the stencil of R24G8 / R32G8X24 is read through an
 // X24_TYPELESS_G8_UINT / X32_TYPELESS_G8X24_UINT view (a GL texture view in stencil mode). And the colour ones whose members GL can view one as another (a
 // texture view of the same bytes per texel or block): the texture is stored in its family's first
-// format and a shader-resource view in another (sRGB, signed) reads it through a GL texture view.
-// Render-target and unordered-access views keep to the stored format.
+// format and a view in another (sRGB, signed, integer) reads it through a GL texture view -- a
+// render-target view draws into one (core::TargetView), an unordered-access view writes through one.
 #include "d3d11_impl.h"
 
 namespace fxport::d3d11 {
@@ -30,6 +30,16 @@ struct ColourFamily {
 const ColourFamily kColourFamilies[] = {
     {DXGI_FORMAT_R8G8B8A8_TYPELESS,
      {DXGI_FORMAT_R8G8B8A8_UNORM, DXGI_FORMAT_R8G8B8A8_UNORM_SRGB, DXGI_FORMAT_R8G8B8A8_SNORM, DXGI_FORMAT_R8G8B8A8_UINT, DXGI_FORMAT_R8G8B8A8_SINT}},
+    // Each stored in a float or unorm member (renderable and filterable; an upload keeps its bytes).
+    {DXGI_FORMAT_R32G32B32A32_TYPELESS, {DXGI_FORMAT_R32G32B32A32_FLOAT, DXGI_FORMAT_R32G32B32A32_UINT, DXGI_FORMAT_R32G32B32A32_SINT}},
+    {DXGI_FORMAT_R16G16B16A16_TYPELESS,
+     {DXGI_FORMAT_R16G16B16A16_FLOAT, DXGI_FORMAT_R16G16B16A16_UNORM, DXGI_FORMAT_R16G16B16A16_UINT, DXGI_FORMAT_R16G16B16A16_SNORM,
+      DXGI_FORMAT_R16G16B16A16_SINT}},
+    {DXGI_FORMAT_R32G32_TYPELESS, {DXGI_FORMAT_R32G32_FLOAT, DXGI_FORMAT_R32G32_UINT, DXGI_FORMAT_R32G32_SINT}},
+    {DXGI_FORMAT_R16G16_TYPELESS,
+     {DXGI_FORMAT_R16G16_FLOAT, DXGI_FORMAT_R16G16_UNORM, DXGI_FORMAT_R16G16_UINT, DXGI_FORMAT_R16G16_SNORM, DXGI_FORMAT_R16G16_SINT}},
+    {DXGI_FORMAT_R8G8_TYPELESS, {DXGI_FORMAT_R8G8_UNORM, DXGI_FORMAT_R8G8_UINT, DXGI_FORMAT_R8G8_SNORM, DXGI_FORMAT_R8G8_SINT}},
+    {DXGI_FORMAT_R8_TYPELESS, {DXGI_FORMAT_R8_UNORM, DXGI_FORMAT_R8_UINT, DXGI_FORMAT_R8_SINT}},
     {DXGI_FORMAT_B8G8R8A8_TYPELESS, {DXGI_FORMAT_B8G8R8A8_UNORM, DXGI_FORMAT_B8G8R8A8_UNORM_SRGB}},
     {DXGI_FORMAT_B8G8R8X8_TYPELESS, {DXGI_FORMAT_B8G8R8X8_UNORM, DXGI_FORMAT_B8G8R8X8_UNORM_SRGB}},
     {DXGI_FORMAT_BC1_TYPELESS, {DXGI_FORMAT_BC1_UNORM, DXGI_FORMAT_BC1_UNORM_SRGB}},

@@ -258,6 +258,8 @@ public:
     // The same over a 2D array's layers read as cubes (a cube map array: `layers` a multiple of 6,
     // square levels; D3D11's TEXTURECUBEARRAY view). 0 when the API cannot make it.
     virtual BackendObject createCubeArrayView(BackendObject source, SurfaceFormat format, int firstLevel, int levels, int firstLayer, int layers) = 0;
+    // The same over six layers from `firstLayer` read as one cube (D3D11's TEXTURECUBE view of a cube array).
+    virtual BackendObject createCubeView(BackendObject source, SurfaceFormat format, int firstLevel, int levels, int firstLayer) = 0;
     // Multisampled 2D textures (D3D10+'s SampleDesc.Count > 1), fixed sample positions: render
     // targets a shader reads sample by sample. `given` is the count the driver made (it may round
     // up). copySamples copies between a multisampled texture (or layer) and a single-sample one of

@@ -104,6 +104,7 @@ public:
     BackendObject createArrayTexture(SurfaceFormat format, int levels, int width, int height, int layers) override;
     BackendObject createLineTexture(SurfaceFormat format, int levels, int width, int layers, bool array) override;
     BackendObject createCubeArrayView(BackendObject source, SurfaceFormat format, int firstLevel, int levels, int firstLayer, int layers) override;
+    BackendObject createCubeView(BackendObject source, SurfaceFormat format, int firstLevel, int levels, int firstLayer) override;
     BackendObject createTextureView(BackendObject source, SurfaceFormat format, bool array, int firstLevel, int levels, int firstLayer,
                                     int layers) override;
     BackendObject createMultisampleTexture(SurfaceFormat format, int samples, int width, int height, int& given) override;

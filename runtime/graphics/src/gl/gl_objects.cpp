@@ -207,6 +207,19 @@ BackendObject GlBackend::createCubeArrayView(BackendObject source, SurfaceFormat
     return name;
 }
 
+// Six layers of a 2D array read as one cube map (ARB_texture_view's compatible targets too).
+BackendObject GlBackend::createCubeView(BackendObject source, SurfaceFormat format, int firstLevel, int levels, int firstLayer) {
+    GLuint name = 0;
+    glGenTextures(1, &name);
+    glTextureView(name, GL_TEXTURE_CUBE_MAP, source, detail::glFormat(format).internalFormat, GLuint(firstLevel), GLuint(levels), GLuint(firstLayer), 6);
+    if (!glIsTexture(name)) {
+        glDeleteTextures(1, &name);
+        return 0;
+    }
+    applyD3D9Swizzle(name, format);
+    return name;
+}
+
 BackendObject GlBackend::createMultisampleTexture(SurfaceFormat format, int samples, int width, int height, int& given) {
     GLuint name = 0;
     glCreateTextures(GL_TEXTURE_2D_MULTISAMPLE, 1, &name);

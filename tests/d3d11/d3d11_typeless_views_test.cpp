@@ -1,0 +1,238 @@
+// Typeless colour textures written and read in members of their family other than the one fxport
+// stores them in, through GL texture views of the same texels: an R8G8B8A8_TYPELESS texture drawn
+// into through an R8G8B8A8_UINT render-target view and written by a compute shader through an
+// R8G8B8A8_UINT unordered-access view (its bytes read back and compared with the integers written,
+// then read as UNORM); the wider families -- R16G16B16A16_TYPELESS read as UINT and UNORM and drawn
+// into as UINT, R32G32_TYPELESS floats read as their UINT bits, R8_TYPELESS written as R8_UINT and
+// read as R8_UNORM -- each compared with the CPU's reading of the same bytes.
+#include <cstring>
+
+#include "d3d11_test_support.h"
+
+namespace d3d11test {
+namespace {
+
+using Texel = std::array<float, 4>;
+
+const char* const kFullScreen = R"(
+float4 vs(uint id : SV_VertexID) : SV_Position {
+    float2 corner = float2((id << 1) & 2, id & 2);
+    return float4(corner * float2(2, -2) + float2(-1, 1), 0, 1);
+}
+)";
+
+ComPtr<ID3D11Texture2D> makeTexture(Device& d, DXGI_FORMAT format, UINT width, UINT height, UINT bind, const void* texels = nullptr,
+                                    UINT rowPitch = 0) {
+    D3D11_TEXTURE2D_DESC desc;
+    desc.Width = width;
+    desc.Height = height;
+    desc.MipLevels = desc.ArraySize = 1;
+    desc.Format = format;
+    desc.BindFlags = bind;
+    D3D11_SUBRESOURCE_DATA data{texels, rowPitch, 0};
+    ComPtr<ID3D11Texture2D> t;
+    EXPECT_EQ(d.device->CreateTexture2D(&desc, texels ? &data : nullptr, t.GetAddressOf()), S_OK) << lastError();
+    return t;
+}
+
+ComPtr<ID3D11ShaderResourceView> viewAs(Device& d, ID3D11Texture2D* texture, DXGI_FORMAT format) {
+    D3D11_SHADER_RESOURCE_VIEW_DESC desc;
+    desc.Format = format;
+    desc.ViewDimension = D3D11_SRV_DIMENSION_TEXTURE2D;
+    desc.Texture2D.MipLevels = 1;
+    ComPtr<ID3D11ShaderResourceView> view;
+    EXPECT_EQ(d.device->CreateShaderResourceView(texture, &desc, view.GetAddressOf()), S_OK) << lastError();
+    return view;
+}
+
+ComPtr<ID3D11RenderTargetView> targetAs(Device& d, ID3D11Texture2D* texture, DXGI_FORMAT format) {
+    D3D11_RENDER_TARGET_VIEW_DESC desc;
+    desc.Format = format;
+    desc.ViewDimension = D3D11_RTV_DIMENSION_TEXTURE2D;
+    ComPtr<ID3D11RenderTargetView> rtv;
+    EXPECT_EQ(d.device->CreateRenderTargetView(texture, &desc, rtv.GetAddressOf()), S_OK) << lastError();
+    return rtv;
+}
+
+// A full-screen triangle into `rtv` (width x height) with `ps` (entry "ps", after kFullScreen).
+void drawInto(Device& d, ID3D11RenderTargetView* rtv, UINT width, UINT height, const std::string& ps) {
+    const std::string text = std::string(kFullScreen) + ps;
+    ComPtr<ID3DBlob> vsCode = compile(text, "vs", "vs_5_0"), psCode = compile(text, "ps", "ps_5_0");
+    ASSERT_TRUE(vsCode && psCode);
+    ComPtr<ID3D11VertexShader> vs;
+    ComPtr<ID3D11PixelShader> p;
+    ASSERT_EQ(d.device->CreateVertexShader(vsCode->GetBufferPointer(), vsCode->GetBufferSize(), nullptr, vs.GetAddressOf()), S_OK) << lastError();
+    ASSERT_EQ(d.device->CreatePixelShader(psCode->GetBufferPointer(), psCode->GetBufferSize(), nullptr, p.GetAddressOf()), S_OK) << lastError();
+    d.context->OMSetRenderTargets(1, &rtv, nullptr);
+    D3D11_VIEWPORT viewport{0, 0, float(width), float(height), 0, 1};
+    d.context->RSSetViewports(1, &viewport);
+    d.context->VSSetShader(vs.Get(), nullptr, 0);
+    d.context->PSSetShader(p.Get(), nullptr, 0);
+    d.context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+    d.context->Draw(3, 0);
+    EXPECT_EQ(lastError(), "");
+    d.context->OMSetRenderTargets(0, nullptr, nullptr);
+}
+
+// `cs` (entry "cs") once, one group, with `uav` at u0.
+void dispatch(Device& d, ID3D11UnorderedAccessView* uav, const std::string& cs) {
+    ComPtr<ID3DBlob> code = compile(cs, "cs", "cs_5_0");
+    ASSERT_TRUE(code);
+    ComPtr<ID3D11ComputeShader> shader;
+    ASSERT_EQ(d.device->CreateComputeShader(code->GetBufferPointer(), code->GetBufferSize(), nullptr, shader.GetAddressOf()), S_OK) << lastError();
+    d.context->CSSetShader(shader.Get(), nullptr, 0);
+    d.context->CSSetUnorderedAccessViews(0, 1, &uav, nullptr);
+    d.context->Dispatch(1, 1, 1);
+    EXPECT_EQ(lastError(), "");
+    ID3D11UnorderedAccessView* none = nullptr;
+    d.context->CSSetUnorderedAccessViews(0, 1, &none, nullptr);
+}
+
+constexpr UINT kW = 4, kH = 2;
+
+TEST(D3D11TypelessViews, Rgba8TypelessIsDrawnAndWrittenAsUintAndReadAsUnorm) {
+    Device d;
+    ComPtr<ID3D11Texture2D> t = makeTexture(d, DXGI_FORMAT_R8G8B8A8_TYPELESS, kW, kH,
+                                            D3D11_BIND_RENDER_TARGET | D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_UNORDERED_ACCESS);
+    ASSERT_TRUE(t);
+    // The render-target view writes integers: the bytes are those integers.
+    ComPtr<ID3D11RenderTargetView> rtv = targetAs(d, t.Get(), DXGI_FORMAT_R8G8B8A8_UINT);
+    ASSERT_TRUE(rtv);
+    drawInto(d, rtv.Get(), kW, kH, "uint4 ps(float4 pos : SV_Position) : SV_Target { uint2 p = uint2(pos.xy); return uint4(p.x * 16 + 1, p.y * 32 + 2, 200, 255 - p.x); }");
+    std::vector<std::uint8_t> bytes = readTexelBytes(d, t.Get(), 4);
+    ASSERT_EQ(bytes.size(), std::size_t(kW * kH * 4));
+    for (UINT y = 0; y < kH; ++y)
+        for (UINT x = 0; x < kW; ++x) {
+            const std::uint8_t* b = &bytes[(y * kW + x) * 4];
+            EXPECT_EQ((std::array<int, 4>{b[0], b[1], b[2], b[3]}), (std::array<int, 4>{int(x * 16 + 1), int(y * 32 + 2), 200, int(255 - x)}))
+                << "drawn texel (" << x << ", " << y << ")";
+        }
+    // Read as UNORM: byte / 255.
+    std::vector<Texel> unorm = drawWithTexture(d, kTexelLoadShader, viewAs(d, t.Get(), DXGI_FORMAT_R8G8B8A8_UNORM).Get(), kW, kH);
+    ASSERT_EQ(unorm.size(), std::size_t(kW * kH));
+    for (UINT i = 0; i < kW * kH; ++i)
+        for (int c = 0; c < 4; ++c) EXPECT_NEAR(unorm[i][c], float(bytes[i * 4 + c]) / 255.0f, 1e-6f) << "texel " << i << " channel " << c;
+
+    // The unordered-access view writes integers too.
+    D3D11_UNORDERED_ACCESS_VIEW_DESC uavDesc;
+    uavDesc.Format = DXGI_FORMAT_R8G8B8A8_UINT;
+    uavDesc.ViewDimension = D3D11_UAV_DIMENSION_TEXTURE2D;
+    ComPtr<ID3D11UnorderedAccessView> uav;
+    ASSERT_EQ(d.device->CreateUnorderedAccessView(t.Get(), &uavDesc, uav.GetAddressOf()), S_OK) << lastError();
+    dispatch(d, uav.Get(), R"(
+RWTexture2D<uint4> Out : register(u0);
+[numthreads(4, 2, 1)] void cs(uint3 id : SV_DispatchThreadID) { Out[id.xy] = uint4(id.x + 100, id.y + 50, 7, 9 + id.x * id.y); }
+)");
+    bytes = readTexelBytes(d, t.Get(), 4);
+    ASSERT_EQ(bytes.size(), std::size_t(kW * kH * 4));
+    for (UINT y = 0; y < kH; ++y)
+        for (UINT x = 0; x < kW; ++x) {
+            const std::uint8_t* b = &bytes[(y * kW + x) * 4];
+            EXPECT_EQ((std::array<int, 4>{b[0], b[1], b[2], b[3]}), (std::array<int, 4>{int(x + 100), int(y + 50), 7, int(9 + x * y)}))
+                << "written texel (" << x << ", " << y << ")";
+        }
+}
+
+TEST(D3D11TypelessViews, Rgba16TypelessReadsAsUintAndUnormAndIsDrawnAsUint) {
+    Device d;
+    std::array<std::uint16_t, kW * kH * 4> texels{};
+    for (std::size_t i = 0; i < texels.size(); ++i) texels[i] = std::uint16_t(i * 4099 + 17);
+    ComPtr<ID3D11Texture2D> t = makeTexture(d, DXGI_FORMAT_R16G16B16A16_TYPELESS, kW, kH, D3D11_BIND_RENDER_TARGET | D3D11_BIND_SHADER_RESOURCE,
+                                            texels.data(), kW * 8);
+    ASSERT_TRUE(t);
+    const std::vector<Texel> asUint = drawWithTexture(d, std::string(kFullScreen) + R"(
+Texture2D<uint4> T : register(t0);
+float4 ps(float4 pos : SV_Position) : SV_Target { return float4(T.Load(int3(pos.xy, 0))); }
+)",
+                                                      viewAs(d, t.Get(), DXGI_FORMAT_R16G16B16A16_UINT).Get(), kW, kH);
+    const std::vector<Texel> asUnorm = drawWithTexture(d, kTexelLoadShader, viewAs(d, t.Get(), DXGI_FORMAT_R16G16B16A16_UNORM).Get(), kW, kH);
+    ASSERT_EQ(asUint.size(), std::size_t(kW * kH));
+    ASSERT_EQ(asUnorm.size(), std::size_t(kW * kH));
+    for (UINT i = 0; i < kW * kH; ++i)
+        for (int c = 0; c < 4; ++c) {
+            EXPECT_EQ(asUint[i][c], float(texels[i * 4 + c])) << "UINT texel " << i << " channel " << c;
+            EXPECT_NEAR(asUnorm[i][c], float(texels[i * 4 + c]) / 65535.0f, 1e-6f) << "UNORM texel " << i << " channel " << c;
+        }
+    ComPtr<ID3D11RenderTargetView> rtv = targetAs(d, t.Get(), DXGI_FORMAT_R16G16B16A16_UINT);
+    ASSERT_TRUE(rtv);
+    drawInto(d, rtv.Get(), kW, kH, "uint4 ps(float4 pos : SV_Position) : SV_Target { uint2 p = uint2(pos.xy); return uint4(1000 + p.x, 2000 + p.y, 3, 65535); }");
+    const std::vector<std::uint16_t> drawn = readTexels<std::uint16_t>(d, t.Get(), 4);
+    ASSERT_EQ(drawn.size(), std::size_t(kW * kH * 4));
+    for (UINT y = 0; y < kH; ++y)
+        for (UINT x = 0; x < kW; ++x) {
+            const std::uint16_t* v = &drawn[(y * kW + x) * 4];
+            EXPECT_EQ((std::array<int, 4>{v[0], v[1], v[2], v[3]}), (std::array<int, 4>{int(1000 + x), int(2000 + y), 3, 65535}))
+                << "drawn texel (" << x << ", " << y << ")";
+        }
+}
+
+TEST(D3D11TypelessViews, Rg32TypelessFloatsReadAsTheirUintBits) {
+    Device d;
+    const float texels[kW * kH * 2] = {1.5f, -2.25f, 0.1f, 1e30f, -0.0f, 3.0e-38f, 65504.0f, -1.0f, 0.5f, 2.0f, 7.75f, -8.5f, 1.0f / 3.0f, 100.0f, 0.0f, 42.0f};
+    ComPtr<ID3D11Texture2D> t = makeTexture(d, DXGI_FORMAT_R32G32_TYPELESS, kW, kH, D3D11_BIND_SHADER_RESOURCE, texels, kW * 8);
+    ASSERT_TRUE(t);
+    // The bits in 16-bit halves, which a float holds exactly.
+    const std::vector<Texel> bits = drawWithTexture(d, std::string(kFullScreen) + R"(
+Texture2D<uint2> T : register(t0);
+float4 ps(float4 pos : SV_Position) : SV_Target { uint2 v = T.Load(int3(pos.xy, 0)); return float4(v.x >> 16, v.x & 0xffff, v.y >> 16, v.y & 0xffff); }
+)",
+                                                    viewAs(d, t.Get(), DXGI_FORMAT_R32G32_UINT).Get(), kW, kH);
+    ASSERT_EQ(bits.size(), std::size_t(kW * kH));
+    for (UINT i = 0; i < kW * kH; ++i) {
+        std::uint32_t x = 0, y = 0;
+        std::memcpy(&x, &texels[i * 2], 4);
+        std::memcpy(&y, &texels[i * 2 + 1], 4);
+        EXPECT_EQ(bits[i], (Texel{float(x >> 16), float(x & 0xffff), float(y >> 16), float(y & 0xffff)})) << "texel " << i;
+    }
+}
+
+TEST(D3D11TypelessViews, R8TypelessIsWrittenAsUintAndReadAsUnorm) {
+    Device d;
+    ComPtr<ID3D11Texture2D> t = makeTexture(d, DXGI_FORMAT_R8_TYPELESS, kW, kH, D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_UNORDERED_ACCESS);
+    ASSERT_TRUE(t);
+    D3D11_UNORDERED_ACCESS_VIEW_DESC uavDesc;
+    uavDesc.Format = DXGI_FORMAT_R8_UINT;
+    uavDesc.ViewDimension = D3D11_UAV_DIMENSION_TEXTURE2D;
+    ComPtr<ID3D11UnorderedAccessView> uav;
+    ASSERT_EQ(d.device->CreateUnorderedAccessView(t.Get(), &uavDesc, uav.GetAddressOf()), S_OK) << lastError();
+    dispatch(d, uav.Get(), R"(
+RWTexture2D<uint> Out : register(u0);
+[numthreads(4, 2, 1)] void cs(uint3 id : SV_DispatchThreadID) { Out[id.xy] = id.x * 60 + id.y * 7 + 3; }
+)");
+    const std::vector<Texel> unorm = drawWithTexture(d, kTexelLoadShader, viewAs(d, t.Get(), DXGI_FORMAT_R8_UNORM).Get(), kW, kH);
+    ASSERT_EQ(unorm.size(), std::size_t(kW * kH));
+    for (UINT y = 0; y < kH; ++y)
+        for (UINT x = 0; x < kW; ++x) {
+            const Texel want{float(x * 60 + y * 7 + 3) / 255.0f, 0, 0, 1};
+            for (int c = 0; c < 4; ++c) EXPECT_NEAR(unorm[y * kW + x][c], want[c], 1e-6f) << "texel (" << x << ", " << y << ") channel " << c;
+        }
+}
+
+TEST(D3D11TypelessViews, ViewsOutsideTheFamilyAreRefusedNamingTheFormat) {
+    Device d;
+    ComPtr<ID3D11Texture2D> t = makeTexture(d, DXGI_FORMAT_R16G16_TYPELESS, kW, kH, D3D11_BIND_RENDER_TARGET | D3D11_BIND_SHADER_RESOURCE);
+    ASSERT_TRUE(t);
+    D3D11_RENDER_TARGET_VIEW_DESC desc;
+    desc.Format = DXGI_FORMAT_R32_FLOAT;
+    desc.ViewDimension = D3D11_RTV_DIMENSION_TEXTURE2D;
+    ComPtr<ID3D11RenderTargetView> rtv;
+    EXPECT_EQ(d.device->CreateRenderTargetView(t.Get(), &desc, rtv.GetAddressOf()), E_INVALIDARG);
+    EXPECT_NE(lastError().find("Format = DXGI_FORMAT_R32_FLOAT for a DXGI_FORMAT_R16G16_TYPELESS texture"), std::string::npos) << lastError();
+    // A multisampled typeless texture is drawn into in its stored format only.
+    D3D11_TEXTURE2D_DESC msDesc;
+    msDesc.Width = kW;
+    msDesc.Height = kH;
+    msDesc.MipLevels = msDesc.ArraySize = 1;
+    msDesc.Format = DXGI_FORMAT_R8G8B8A8_TYPELESS;
+    msDesc.SampleDesc.Count = 4;
+    msDesc.BindFlags = D3D11_BIND_RENDER_TARGET;
+    ComPtr<ID3D11Texture2D> samples;
+    ASSERT_EQ(d.device->CreateTexture2D(&msDesc, nullptr, samples.GetAddressOf()), S_OK) << lastError();
+    desc.Format = DXGI_FORMAT_R8G8B8A8_UINT;
+    desc.ViewDimension = D3D11_RTV_DIMENSION_TEXTURE2DMS;
+    EXPECT_EQ(d.device->CreateRenderTargetView(samples.Get(), &desc, rtv.GetAddressOf()), E_NOTIMPL);
+    EXPECT_NE(lastError().find("Format = DXGI_FORMAT_R8G8B8A8_UINT of a multisampled DXGI_FORMAT_R8G8B8A8_TYPELESS texture"), std::string::npos) << lastError();
+}
+
+}  // namespace
+}  // namespace d3d11test
