@@ -4,7 +4,9 @@
 // R8G8B8A8_UINT unordered-access view (its bytes read back and compared with the integers written,
 // then read as UNORM); the wider families -- R16G16B16A16_TYPELESS read as UINT and UNORM and drawn
 // into as UINT, R32G32_TYPELESS floats read as their UINT bits, R8_TYPELESS written as R8_UINT and
-// read as R8_UNORM -- each compared with the CPU's reading of the same bytes.
+// read as R8_UNORM -- each compared with the CPU's reading of the same bytes; and an R8G8B8A8_TYPELESS
+// array read through a UINT TEXTURE2DARRAY view of two slices and drawn into through a UINT
+// render-target view of one.
 #include <cstring>
 
 #include "d3d11_test_support.h"
@@ -232,6 +234,89 @@ TEST(D3D11TypelessViews, ViewsOutsideTheFamilyAreRefusedNamingTheFormat) {
     desc.ViewDimension = D3D11_RTV_DIMENSION_TEXTURE2DMS;
     EXPECT_EQ(d.device->CreateRenderTargetView(samples.Get(), &desc, rtv.GetAddressOf()), E_NOTIMPL);
     EXPECT_NE(lastError().find("Format = DXGI_FORMAT_R8G8B8A8_UINT of a multisampled DXGI_FORMAT_R8G8B8A8_TYPELESS texture"), std::string::npos) << lastError();
+}
+
+// Texel (x, y) of slice s of the 2x2 array: no two bytes alike.
+std::array<std::uint8_t, 4> arrayTexel(UINT s, UINT x, UINT y) {
+    const UINT base = s * 60 + (y * 2 + x) * 12;
+    return {std::uint8_t(base + 1), std::uint8_t(base + 2), std::uint8_t(base + 3), std::uint8_t(base + 4)};
+}
+
+TEST(D3D11TypelessViews, ATypelessArrayIsReadAndDrawnInAnotherMemberSliceBySlice) {
+    Device d;
+    constexpr UINT kSlices = 3;
+    std::vector<std::array<std::uint8_t, 4>> texels;
+    for (UINT s = 0; s < kSlices; ++s)
+        for (UINT i = 0; i < 4; ++i) texels.push_back(arrayTexel(s, i % 2, i / 2));
+    std::vector<D3D11_SUBRESOURCE_DATA> data;
+    for (UINT s = 0; s < kSlices; ++s) data.push_back({&texels[s * 4], 8, 0});
+    D3D11_TEXTURE2D_DESC desc;
+    desc.Width = desc.Height = 2;
+    desc.MipLevels = 1;
+    desc.ArraySize = kSlices;
+    desc.Format = DXGI_FORMAT_R8G8B8A8_TYPELESS;
+    desc.BindFlags = D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_RENDER_TARGET;
+    ComPtr<ID3D11Texture2D> t;
+    ASSERT_EQ(d.device->CreateTexture2D(&desc, data.data(), t.GetAddressOf()), S_OK) << lastError();
+
+    // Slices 1 and 2 as integers: pixel (x, y) of a 4x2 target reads texel (x % 2, y) of view slice x / 2.
+    D3D11_SHADER_RESOURCE_VIEW_DESC srv;
+    srv.Format = DXGI_FORMAT_R8G8B8A8_UINT;
+    srv.ViewDimension = D3D11_SRV_DIMENSION_TEXTURE2DARRAY;
+    srv.Texture2DArray = {0, 1, 1, 2};
+    ComPtr<ID3D11ShaderResourceView> view;
+    ASSERT_EQ(d.device->CreateShaderResourceView(t.Get(), &srv, view.GetAddressOf()), S_OK) << lastError();
+    const std::vector<Texel> got = drawWithTexture(d, std::string(kFullScreen) + R"(
+Texture2DArray<uint4> T : register(t0);
+float4 ps(float4 pos : SV_Position) : SV_Target { uint2 p = uint2(pos.xy); return float4(T.Load(int4(p.x % 2, p.y, p.x / 2, 0))); }
+)",
+                                                   view.Get(), 4, 2);
+    ASSERT_EQ(got.size(), 8u);
+    for (UINT y = 0; y < 2; ++y)
+        for (UINT x = 0; x < 4; ++x) {
+            const std::array<std::uint8_t, 4> want = arrayTexel(1 + x / 2, x % 2, y);
+            EXPECT_EQ(got[y * 4 + x], (Texel{float(want[0]), float(want[1]), float(want[2]), float(want[3])})) << "pixel (" << x << ", " << y << ")";
+        }
+
+    // Slice 2 drawn into as integers; slices 0 and 1 keep their bytes.
+    D3D11_RENDER_TARGET_VIEW_DESC rtvDesc;
+    rtvDesc.Format = DXGI_FORMAT_R8G8B8A8_UINT;
+    rtvDesc.ViewDimension = D3D11_RTV_DIMENSION_TEXTURE2DARRAY;
+    rtvDesc.Texture2DArray = {0, 2, 1};
+    ComPtr<ID3D11RenderTargetView> rtv;
+    ASSERT_EQ(d.device->CreateRenderTargetView(t.Get(), &rtvDesc, rtv.GetAddressOf()), S_OK) << lastError();
+    drawInto(d, rtv.Get(), 2, 2, "uint4 ps(float4 pos : SV_Position) : SV_Target { return uint4(200 + uint(pos.x), 210 + uint(pos.y), 7, 9); }");
+    desc.Usage = D3D11_USAGE_STAGING;
+    desc.BindFlags = 0;
+    desc.CPUAccessFlags = D3D11_CPU_ACCESS_READ;
+    ComPtr<ID3D11Texture2D> staging;
+    ASSERT_EQ(d.device->CreateTexture2D(&desc, nullptr, staging.GetAddressOf()), S_OK) << lastError();
+    d.context->CopyResource(staging.Get(), t.Get());
+    for (UINT s = 0; s < kSlices; ++s) {
+        D3D11_MAPPED_SUBRESOURCE mapped;
+        ASSERT_EQ(d.context->Map(staging.Get(), s, D3D11_MAP_READ, 0, &mapped), S_OK) << lastError();
+        for (UINT y = 0; y < 2; ++y)
+            for (UINT x = 0; x < 2; ++x) {
+                const std::uint8_t* b = static_cast<const std::uint8_t*>(mapped.pData) + y * mapped.RowPitch + x * 4;
+                const std::array<std::uint8_t, 4> want =
+                    s == 2 ? std::array<std::uint8_t, 4>{std::uint8_t(200 + x), std::uint8_t(210 + y), 7, 9} : arrayTexel(s, x, y);
+                EXPECT_EQ((std::array<std::uint8_t, 4>{b[0], b[1], b[2], b[3]}), want) << "slice " << s << " texel (" << x << ", " << y << ")";
+            }
+        d.context->Unmap(staging.Get(), s);
+    }
+
+    // A typeless cube array's cube views read its stored format only.
+    desc.Usage = D3D11_USAGE_DEFAULT;
+    desc.BindFlags = D3D11_BIND_SHADER_RESOURCE;
+    desc.CPUAccessFlags = 0;
+    desc.ArraySize = 12;
+    desc.MiscFlags = D3D11_RESOURCE_MISC_TEXTURECUBE;
+    ComPtr<ID3D11Texture2D> cubes;
+    ASSERT_EQ(d.device->CreateTexture2D(&desc, nullptr, cubes.GetAddressOf()), S_OK) << lastError();
+    srv.ViewDimension = D3D11_SRV_DIMENSION_TEXTURECUBEARRAY;
+    srv.TextureCubeArray = {0, 1, 0, 2};
+    EXPECT_EQ(d.device->CreateShaderResourceView(cubes.Get(), &srv, view.ReleaseAndGetAddressOf()), E_NOTIMPL);
+    EXPECT_NE(lastError().find("Format = DXGI_FORMAT_R8G8B8A8_UINT of a DXGI_FORMAT_R8G8B8A8_TYPELESS cube array"), std::string::npos) << lastError();
 }
 
 }  // namespace

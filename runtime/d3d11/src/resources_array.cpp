@@ -10,8 +10,10 @@
 #include <cstring>
 
 #include "d3d11_impl.h"
+#include "device/array_format_view.h"
 #include "device/cube_view.h"
 #include "device/multisample_target.h"
+#include "device/target_view.h"
 #include "guarded.h"
 
 namespace fxport::d3d11 {
@@ -61,7 +63,7 @@ HRESULT arrayFormat(const D3D11_TEXTURE2D_DESC& d, bool hasData, SurfaceFormat& 
         format = family->sampled;
         return S_OK;
     }
-    if (textureFormat(d.Format, format)) return checkCompressedUse(at, d, format);
+    if (textureFormat(d.Format, format) || typelessColourStorage(d.Format, format)) return checkCompressedUse(at, d, format);
     return fail(d.Format == DXGI_FORMAT_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
                 at + "Format = " + formatName(d.Format) + " (" + std::to_string(d.Format) + "): not an array texture format fxport supports (docs/API.md lists them)");
 }
@@ -148,6 +150,14 @@ namespace {
 
 bool isCubeArray(const Texture& t) { return (t.desc.MiscFlags & D3D11_RESOURCE_MISC_TEXTURECUBE) != 0; }
 
+// A typeless cube array's cube views read its stored format only (its 2D array views any member).
+HRESULT checkStoredCubeFormat(const std::string& at, DXGI_FORMAT viewFormat, const Texture& t) {
+    if (viewSurface(viewFormat, t) == t.format) return S_OK;
+    return fail(E_NOTIMPL, at + "Format = " + formatName(viewFormat) + " of a " + formatName(t.desc.Format) +
+                               " cube array: its cube views read the format it is stored in (" + surfaceFormatName(t.format) +
+                               "); a TEXTURE2DARRAY view reads the others");
+}
+
 // A TEXTURECUBEARRAY view of a cube array: NumCubes cubes from face First2DArrayFace.
 HRESULT cubeArrayShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc, ID3D11ShaderResourceView** pp) {
     const std::string call = "CreateShaderResourceView", at = call + ": D3D11_SHADER_RESOURCE_VIEW_DESC.";
@@ -157,6 +167,7 @@ HRESULT cubeArrayShaderResourceView(Device* device, Texture* t, const D3D11_SHAD
     d.TextureCubeArray = {0, UINT(t->levels), 0, UINT(t->slices() / 6)};
     if (pDesc) {
         if (HRESULT f = checkViewFormat(call.c_str(), "D3D11_SHADER_RESOURCE_VIEW_DESC", pDesc->Format, *t, false); FAILED(f)) return f;
+        if (HRESULT f = checkStoredCubeFormat(at, pDesc->Format, *t); FAILED(f)) return f;
         const auto& c = pDesc->TextureCubeArray;
         const UINT levels = c.MipLevels == UINT(-1) && c.MostDetailedMip < UINT(t->levels) ? UINT(t->levels) - c.MostDetailedMip : c.MipLevels;
         if (c.MostDetailedMip >= UINT(t->levels) || levels == 0 || levels > UINT(t->levels) - c.MostDetailedMip)
@@ -185,6 +196,7 @@ HRESULT cubeArrayShaderResourceView(Device* device, Texture* t, const D3D11_SHAD
 HRESULT firstCubeShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_RESOURCE_VIEW_DESC& desc, ID3D11ShaderResourceView** pp) {
     const std::string call = "CreateShaderResourceView", at = call + ": D3D11_SHADER_RESOURCE_VIEW_DESC.";
     if (HRESULT f = checkViewFormat(call.c_str(), "D3D11_SHADER_RESOURCE_VIEW_DESC", desc.Format, *t, false); FAILED(f)) return f;
+    if (HRESULT f = checkStoredCubeFormat(at, desc.Format, *t); FAILED(f)) return f;
     const auto& c = desc.TextureCube;
     const UINT levels = c.MipLevels == UINT(-1) && c.MostDetailedMip < UINT(t->levels) ? UINT(t->levels) - c.MostDetailedMip : c.MipLevels;
     if (c.MostDetailedMip >= UINT(t->levels) || levels == 0 || levels > UINT(t->levels) - c.MostDetailedMip)
@@ -222,9 +234,9 @@ HRESULT arrayShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_R
                         at + "ViewDimension = " + std::to_string(pDesc->ViewDimension) + " (fxport views an array texture as D3D11_SRV_DIMENSION_TEXTURE2DARRAY" +
                             (isCubeArray(*t) ? std::string(", a cube array also as TEXTURECUBEARRAY or TEXTURECUBE)") : std::string(")")));
         if (HRESULT f = checkViewFormat(call.c_str(), "D3D11_SHADER_RESOURCE_VIEW_DESC", pDesc->Format, *t, false); FAILED(f)) return f;
-        if (viewSurface(pDesc->Format, *t) != t->format)
+        if (depthFamilyOf(t->desc.Format) && viewSurface(pDesc->Format, *t) != t->format)
             return fail(E_NOTIMPL, at + "Format = " + formatName(pDesc->Format) + " of a " + formatName(t->desc.Format) +
-                                       " array: fxport reads an array's texels in their stored format only (no stencil view of a depth array yet)");
+                                       " array: no stencil view of a depth array yet");
         const auto& a = pDesc->Texture2DArray;
         if (a.MostDetailedMip >= UINT(t->levels))
             return fail(E_INVALIDARG, at + "Texture2DArray.MostDetailedMip = " + std::to_string(a.MostDetailedMip) + " (the texture has " +
@@ -242,7 +254,10 @@ HRESULT arrayShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_R
         auto view = std::unique_ptr<ShaderResourceView, void (*)(ShaderResourceView*)>(new ShaderResourceView(device, t, d),
                                                                                        [](ShaderResourceView* v) { v->Release(); });
         const auto& a = d.Texture2DArray;
-        if (a.MostDetailedMip != 0 || a.MipLevels != UINT(t->levels) || a.FirstArraySlice != 0 || a.ArraySize != UINT(t->slices()))
+        if (const SurfaceFormat read = viewSurface(d.Format, *t); read != t->format)  // a typeless array read as another member
+            view->arrayRange = std::make_unique<core::ArrayFormatView>(*t->array, int(a.MostDetailedMip), int(a.MipLevels), int(a.FirstArraySlice),
+                                                                       int(a.ArraySize), read);
+        else if (a.MostDetailedMip != 0 || a.MipLevels != UINT(t->levels) || a.FirstArraySlice != 0 || a.ArraySize != UINT(t->slices()))
             view->arrayRange = std::make_unique<fxport::Texture2DArray>(*t->array, int(a.MostDetailedMip), int(a.MipLevels), int(a.FirstArraySlice),
                                                                         int(a.ArraySize));
         *pp = view.release();
@@ -274,7 +289,10 @@ HRESULT arrayRenderTargetView(Device* device, Texture* t, const D3D11_RENDER_TAR
         auto view = std::unique_ptr<RenderTargetView, void (*)(RenderTargetView*)>(new RenderTargetView(device, t, d),
                                                                                    [](RenderTargetView* v) { v->Release(); });
         // Several slices: a layered target, each primitive in the slice its SV_RenderTargetArrayIndex names.
-        view->slice = std::make_unique<RenderTarget2D>(*t->array, int(a.FirstArraySlice), int(a.MipSlice), int(a.ArraySize));
+        if (const SurfaceFormat written = viewSurface(d.Format, *t); written != t->format)  // a typeless array in another member
+            view->slice = std::make_unique<core::TargetView>(*t->array, int(a.FirstArraySlice), int(a.MipSlice), int(a.ArraySize), written);
+        else
+            view->slice = std::make_unique<RenderTarget2D>(*t->array, int(a.FirstArraySlice), int(a.MipSlice), int(a.ArraySize));
         *pp = view.release();
         return succeed();
     });
