@@ -6,7 +6,8 @@
 // into as UINT, R32G32_TYPELESS floats read as their UINT bits, R8_TYPELESS written as R8_UINT and
 // read as R8_UNORM -- each compared with the CPU's reading of the same bytes; and an R8G8B8A8_TYPELESS
 // array read through a UINT TEXTURE2DARRAY view of two slices and drawn into through a UINT
-// render-target view of one.
+// render-target view of one; typeless cubes and cube arrays read through sRGB cube views.
+#include <cmath>
 #include <cstring>
 
 #include "d3d11_test_support.h"
@@ -304,19 +305,80 @@ float4 ps(float4 pos : SV_Position) : SV_Target { uint2 p = uint2(pos.xy); retur
             }
         d.context->Unmap(staging.Get(), s);
     }
+}
 
-    // A typeless cube array's cube views read its stored format only.
-    desc.Usage = D3D11_USAGE_DEFAULT;
+float srgbToLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
+
+// Face f of cube c of a typeless cube (array): the bytes (40c + 20f + 30, 60, 200 - 10f, 255).
+std::uint32_t cubeFace(UINT c, UINT f) { return 0xff000000u | (200u - 10u * f) << 16 | 60u << 8 | (40u * c + 20u * f + 30u); }
+
+// `cubes` cubes of R8G8B8A8_TYPELESS, 1x1 faces of cubeFace's bytes.
+ComPtr<ID3D11Texture2D> typelessCubes(Device& d, UINT cubes, std::vector<std::uint32_t>& texels) {
+    D3D11_TEXTURE2D_DESC desc;
+    desc.Width = desc.Height = 1;
+    desc.MipLevels = 1;
+    desc.ArraySize = 6 * cubes;
+    desc.Format = DXGI_FORMAT_R8G8B8A8_TYPELESS;
     desc.BindFlags = D3D11_BIND_SHADER_RESOURCE;
-    desc.CPUAccessFlags = 0;
-    desc.ArraySize = 12;
     desc.MiscFlags = D3D11_RESOURCE_MISC_TEXTURECUBE;
-    ComPtr<ID3D11Texture2D> cubes;
-    ASSERT_EQ(d.device->CreateTexture2D(&desc, nullptr, cubes.GetAddressOf()), S_OK) << lastError();
+    texels.clear();
+    for (UINT c = 0; c < cubes; ++c)
+        for (UINT f = 0; f < 6; ++f) texels.push_back(cubeFace(c, f));
+    std::vector<D3D11_SUBRESOURCE_DATA> data;
+    for (std::uint32_t& t : texels) data.push_back({&t, 4, 0});
+    ComPtr<ID3D11Texture2D> t;
+    EXPECT_EQ(d.device->CreateTexture2D(&desc, data.data(), t.GetAddressOf()), S_OK) << lastError();
+    return t;
+}
+
+// Pixel i samples face i % 6 of cube i / 6 (a TextureCube reads cube 0 only).
+std::string cubeSampler(bool array) {
+    return std::string(kFullScreen) + (array ? "TextureCubeArray" : "TextureCube") + R"( Faces : register(t0);
+SamplerState Point : register(s0);
+float4 ps(float4 pos : SV_Position) : SV_Target {
+    const float3 axes[6] = { float3(1, 0, 0), float3(-1, 0, 0), float3(0, 1, 0), float3(0, -1, 0), float3(0, 0, 1), float3(0, 0, -1) };
+    uint i = uint(pos.x);
+    return Faces.SampleLevel(Point, )" + (array ? "float4(axes[i % 6], i / 6)" : "axes[i % 6]") + R"(, 0);
+})";
+}
+
+void expectSrgbFaces(const std::vector<Texel>& got, UINT cubes, const char* what) {
+    ASSERT_EQ(got.size(), std::size_t(6 * cubes)) << what;
+    for (UINT i = 0; i < 6 * cubes; ++i) {
+        const std::uint32_t bytes = cubeFace(i / 6, i % 6);
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(got[i][c], srgbToLinear(float((bytes >> (8 * c)) & 0xff) / 255.0f), 2e-3f) << what << ": cube " << i / 6 << " face " << i % 6 << " channel " << c;
+        EXPECT_NEAR(got[i][3], 1.0f, 1e-6f) << what;
+    }
+}
+
+// Typeless cubes and cube arrays read as R8G8B8A8_UNORM_SRGB: TEXTURECUBE views of a cube and of
+// a cube array's first cube, and a TEXTURECUBEARRAY view of both cubes, decode each face's bytes.
+TEST(D3D11TypelessViews, TypelessCubesAndCubeArraysAreReadInAnotherMember) {
+    Device d;
+    D3D11_SAMPLER_DESC point;
+    point.Filter = D3D11_FILTER_MIN_MAG_MIP_POINT;
+    ComPtr<ID3D11SamplerState> sampler;
+    ASSERT_EQ(d.device->CreateSamplerState(&point, sampler.GetAddressOf()), S_OK) << lastError();
+    std::vector<std::uint32_t> texels;
+    D3D11_SHADER_RESOURCE_VIEW_DESC srv;
+    srv.Format = DXGI_FORMAT_R8G8B8A8_UNORM_SRGB;
+    srv.ViewDimension = D3D11_SRV_DIMENSION_TEXTURECUBE;
+    srv.TextureCube = {0, 1};
+    ComPtr<ID3D11Texture2D> cube = typelessCubes(d, 1, texels);
+    ASSERT_TRUE(cube);
+    ComPtr<ID3D11ShaderResourceView> view;
+    ASSERT_EQ(d.device->CreateShaderResourceView(cube.Get(), &srv, view.GetAddressOf()), S_OK) << lastError();
+    expectSrgbFaces(drawWithTexture(d, cubeSampler(false), view.Get(), 6, 1, sampler.Get()), 1, "a cube");
+
+    ComPtr<ID3D11Texture2D> cubes = typelessCubes(d, 2, texels);
+    ASSERT_TRUE(cubes);
+    ASSERT_EQ(d.device->CreateShaderResourceView(cubes.Get(), &srv, view.ReleaseAndGetAddressOf()), S_OK) << lastError();
+    expectSrgbFaces(drawWithTexture(d, cubeSampler(false), view.Get(), 6, 1, sampler.Get()), 1, "a cube array's first cube");
     srv.ViewDimension = D3D11_SRV_DIMENSION_TEXTURECUBEARRAY;
     srv.TextureCubeArray = {0, 1, 0, 2};
-    EXPECT_EQ(d.device->CreateShaderResourceView(cubes.Get(), &srv, view.ReleaseAndGetAddressOf()), E_NOTIMPL);
-    EXPECT_NE(lastError().find("Format = DXGI_FORMAT_R8G8B8A8_UINT of a DXGI_FORMAT_R8G8B8A8_TYPELESS cube array"), std::string::npos) << lastError();
+    ASSERT_EQ(d.device->CreateShaderResourceView(cubes.Get(), &srv, view.ReleaseAndGetAddressOf()), S_OK) << lastError();
+    expectSrgbFaces(drawWithTexture(d, cubeSampler(true), view.Get(), 12, 1, sampler.Get()), 2, "a cube array");
 }
 
 }  // namespace

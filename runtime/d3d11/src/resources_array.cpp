@@ -150,14 +150,6 @@ namespace {
 
 bool isCubeArray(const Texture& t) { return (t.desc.MiscFlags & D3D11_RESOURCE_MISC_TEXTURECUBE) != 0; }
 
-// A typeless cube array's cube views read its stored format only (its 2D array views any member).
-HRESULT checkStoredCubeFormat(const std::string& at, DXGI_FORMAT viewFormat, const Texture& t) {
-    if (viewSurface(viewFormat, t) == t.format) return S_OK;
-    return fail(E_NOTIMPL, at + "Format = " + formatName(viewFormat) + " of a " + formatName(t.desc.Format) +
-                               " cube array: its cube views read the format it is stored in (" + surfaceFormatName(t.format) +
-                               "); a TEXTURE2DARRAY view reads the others");
-}
-
 // A TEXTURECUBEARRAY view of a cube array: NumCubes cubes from face First2DArrayFace.
 HRESULT cubeArrayShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc, ID3D11ShaderResourceView** pp) {
     const std::string call = "CreateShaderResourceView", at = call + ": D3D11_SHADER_RESOURCE_VIEW_DESC.";
@@ -167,7 +159,6 @@ HRESULT cubeArrayShaderResourceView(Device* device, Texture* t, const D3D11_SHAD
     d.TextureCubeArray = {0, UINT(t->levels), 0, UINT(t->slices() / 6)};
     if (pDesc) {
         if (HRESULT f = checkViewFormat(call.c_str(), "D3D11_SHADER_RESOURCE_VIEW_DESC", pDesc->Format, *t, false); FAILED(f)) return f;
-        if (HRESULT f = checkStoredCubeFormat(at, pDesc->Format, *t); FAILED(f)) return f;
         const auto& c = pDesc->TextureCubeArray;
         const UINT levels = c.MipLevels == UINT(-1) && c.MostDetailedMip < UINT(t->levels) ? UINT(t->levels) - c.MostDetailedMip : c.MipLevels;
         if (c.MostDetailedMip >= UINT(t->levels) || levels == 0 || levels > UINT(t->levels) - c.MostDetailedMip)
@@ -184,8 +175,11 @@ HRESULT cubeArrayShaderResourceView(Device* device, Texture* t, const D3D11_SHAD
         auto view = std::unique_ptr<ShaderResourceView, void (*)(ShaderResourceView*)>(new ShaderResourceView(device, t, d),
                                                                                        [](ShaderResourceView* v) { v->Release(); });
         const auto& c = d.TextureCubeArray;
-        view->arrayRange = std::make_unique<fxport::Texture2DArray>(*t->array, int(c.MostDetailedMip), int(c.MipLevels),
-                                                                    fxport::Texture2DArray::Cubes{int(c.First2DArrayFace), int(c.NumCubes)});
+        const fxport::Texture2DArray::Cubes cubes{int(c.First2DArrayFace), int(c.NumCubes)};
+        if (const SurfaceFormat read = viewSurface(d.Format, *t); read != t->format)  // a typeless cube array read as another member
+            view->arrayRange = std::make_unique<core::ArrayFormatView>(*t->array, int(c.MostDetailedMip), int(c.MipLevels), cubes, read);
+        else
+            view->arrayRange = std::make_unique<fxport::Texture2DArray>(*t->array, int(c.MostDetailedMip), int(c.MipLevels), cubes);
         *pp = view.release();
         return succeed();
     });
@@ -196,7 +190,6 @@ HRESULT cubeArrayShaderResourceView(Device* device, Texture* t, const D3D11_SHAD
 HRESULT firstCubeShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_RESOURCE_VIEW_DESC& desc, ID3D11ShaderResourceView** pp) {
     const std::string call = "CreateShaderResourceView", at = call + ": D3D11_SHADER_RESOURCE_VIEW_DESC.";
     if (HRESULT f = checkViewFormat(call.c_str(), "D3D11_SHADER_RESOURCE_VIEW_DESC", desc.Format, *t, false); FAILED(f)) return f;
-    if (HRESULT f = checkStoredCubeFormat(at, desc.Format, *t); FAILED(f)) return f;
     const auto& c = desc.TextureCube;
     const UINT levels = c.MipLevels == UINT(-1) && c.MostDetailedMip < UINT(t->levels) ? UINT(t->levels) - c.MostDetailedMip : c.MipLevels;
     if (c.MostDetailedMip >= UINT(t->levels) || levels == 0 || levels > UINT(t->levels) - c.MostDetailedMip)
@@ -209,7 +202,7 @@ HRESULT firstCubeShaderResourceView(Device* device, Texture* t, const D3D11_SHAD
     return guarded(call.c_str(), [&] {
         auto view = std::unique_ptr<ShaderResourceView, void (*)(ShaderResourceView*)>(new ShaderResourceView(device, t, d),
                                                                                        [](ShaderResourceView* v) { v->Release(); });
-        view->cubeRange = std::make_unique<core::CubeView>(*t->array, int(c.MostDetailedMip), int(levels), 0);
+        view->cubeRange = std::make_unique<core::CubeView>(*t->array, int(c.MostDetailedMip), int(levels), 0, viewSurface(d.Format, *t));
         *pp = view.release();
         return succeed();
     });

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "d3d11_impl.h"
+#include "device/cube_view.h"
 #include "device/target_view.h"
 #include "guarded.h"
 
@@ -183,7 +184,7 @@ HRESULT Device::CreateShaderResourceView(ID3D11Resource* pResource, const D3D11_
     }
     if (pDesc && pDesc->Format != DXGI_FORMAT_UNKNOWN) d.Format = pDesc->Format;
     const SurfaceFormat read = viewSurface(d.Format, *t);
-    if (read != t->format && (!t->colour || multisampled))
+    if (read != t->format && ((!t->colour && !t->cube) || multisampled))
         return fail(E_NOTIMPL, std::string(call) + ": D3D11_SHADER_RESOURCE_VIEW_DESC.Format = " + formatName(d.Format) + " of a " +
                                    formatName(t->desc.Format) + " " + (t->cube ? "cube" : "multisampled") +
                                    " texture: fxport reads those in their stored format only");
@@ -191,7 +192,8 @@ HRESULT Device::CreateShaderResourceView(ID3D11Resource* pResource, const D3D11_
     return guarded(call, [&] {
         auto view = std::unique_ptr<ShaderResourceView, void (*)(ShaderResourceView*)>(new ShaderResourceView(this, t, d),
                                                                                        [](ShaderResourceView* v) { v->Release(); });
-        if (read != t->format) view->formatView = std::make_unique<fxport::Texture2D>(*t->colour, read);  // a GL texture view
+        if (read != t->format && t->cube) view->cubeRange = std::make_unique<core::CubeView>(*t->cube, read);  // GL texture views
+        else if (read != t->format) view->formatView = std::make_unique<fxport::Texture2D>(*t->colour, read);
         *ppSRView = view.release();
         return succeed();
     });

@@ -1,6 +1,7 @@
 #include "device/array_format_view.h"
 
 #include "device/device_impl.h"
+#include "fxport/graphics/errors.h"
 
 namespace fxport::core {
 
@@ -12,6 +13,16 @@ ArrayFormatView::ArrayFormatView(Texture2DArray& source, int firstLevel, int lev
     d.deleteTexture(name_);
     name_ = d.createTextureView(describe() + " as " + surfaceFormatName(format), source.backendObject(), format, true, firstLevel, levels, firstLayer,
                                 layers);
+    format_ = format;
+}
+
+ArrayFormatView::ArrayFormatView(Texture2DArray& source, int firstLevel, int levels, Cubes cubes, SurfaceFormat format)
+    : Texture2DArray(source, firstLevel, levels, cubes) {
+    GraphicsDevice::Impl& d = deviceImpl(device());
+    d.deleteTexture(name_);
+    name_ = d.backend->createCubeArrayView(source.backendObject(), format, firstLevel, levels, cubes.firstLayer, 6 * cubes.cubes);
+    if (name_ == 0) throw InvalidOperation(describe() + ": the graphics API could not make a cube map array view as " + surfaceFormatName(format));
+    ++d.live.textures;  // deleted as any texture view is
     format_ = format;
 }
 

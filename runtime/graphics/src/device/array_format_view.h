@@ -11,6 +11,8 @@ class ArrayFormatView final : public Texture2DArray {
 public:
     // ArgumentError outside `source`; InvalidOperation when the API cannot view it as `format`.
     ArrayFormatView(Texture2DArray& source, int firstLevel, int levels, int firstLayer, int layers, SurfaceFormat format);
+    // The same read as cubes (a cube array's TEXTURECUBEARRAY view: Texture::Kind::TextureCubeArray).
+    ArrayFormatView(Texture2DArray& source, int firstLevel, int levels, Cubes cubes, SurfaceFormat format);
 };
 
 }  // namespace fxport::core
