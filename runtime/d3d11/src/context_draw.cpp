@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "context.h"
+#include "device/pass_emulation.h"
 #include "guarded.h"
 
 namespace fxport::d3d11 {
@@ -228,6 +229,11 @@ bool Context::prepare(const char* call) {
             bindStorage(call, *stages[stage], *slots[stage], stage == 1 ? &psUavs_ : nullptr);  // stage 1: the pixel shader
         }
     }
+    // D3D10+ encodes what a draw writes into an _SRGB render-target view (blending in linear):
+    // GL's sRGB write, which changes sRGB attachments only, is on for every draw of this front end.
+    PassEmulation srgbEncoded;
+    srgbEncoded.srgbWrite = true;
+    setPassEmulation(core, srgbEncoded);
     // A read-only depth-stencil view writes no depth (or stencil) whatever the state or the
     // effect pass says, so a shader may sample the texture while it is bound.
     if (depthView_ && (depthView_->desc.Flags & D3D11_DSV_READ_ONLY_DEPTH)) core.DepthStencilState.DepthBufferWriteEnable = false;
