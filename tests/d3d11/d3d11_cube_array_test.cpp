@@ -1,7 +1,8 @@
 // Cube arrays: CreateTexture2D with MISC_TEXTURECUBE and ArraySize 6N, read by HLSL's
 // TextureCubeArray through a D3D11_SRV_DIMENSION_TEXTURECUBEARRAY view (GL's cube map array view
 // of the texture's layers). Each face of each cube is one colour; pixel i samples face i % 6 of
-// cube i / 6 along the face's axis and must read that face's colour.
+// cube i / 6 along the face's axis and must read that face's colour. A TEXTURECUBE view of a cube
+// array reads its first cube through HLSL's TextureCube.
 #include "d3d11_test_support.h"
 
 namespace d3d11test {
@@ -98,6 +99,39 @@ TEST(D3D11CubeArray, FacesAreAlsoA2DArrayAndBadRangesAreRefused) {
     desc.TextureCubeArray = {0, 1, 12, 2};  // past the third cube
     EXPECT_EQ(d.device->CreateShaderResourceView(t.Get(), &desc, view.GetAddressOf()), E_INVALIDARG);
     EXPECT_NE(lastError().find("NumCubes 2"), std::string::npos) << lastError();
+}
+
+// D3D11_TEX_CUBE_SRV names levels only: a TEXTURECUBE view of a cube array is its first cube.
+TEST(D3D11CubeArray, ATextureCubeViewOfACubeArrayReadsItsFirstCube) {
+    Device d;
+    ComPtr<ID3D11Texture2D> t = makeCubeArray(d);
+    ASSERT_TRUE(t);
+    D3D11_SHADER_RESOURCE_VIEW_DESC desc;
+    desc.Format = DXGI_FORMAT_R8G8B8A8_UNORM;
+    desc.ViewDimension = D3D11_SRV_DIMENSION_TEXTURECUBE;
+    desc.TextureCube = {0, UINT(-1)};
+    ComPtr<ID3D11ShaderResourceView> view;
+    ASSERT_EQ(d.device->CreateShaderResourceView(t.Get(), &desc, view.GetAddressOf()), S_OK) << lastError();
+    D3D11_SHADER_RESOURCE_VIEW_DESC got;
+    view->GetDesc(&got);
+    EXPECT_EQ(got.ViewDimension, D3D11_SRV_DIMENSION_TEXTURECUBE);
+    EXPECT_EQ(got.TextureCube.MipLevels, 1u);
+    const char* const oneCube = R"(
+float4 vs(uint id : SV_VertexID) : SV_Position {
+    float2 corner = float2((id << 1) & 2, id & 2);
+    return float4(corner * float2(2, -2) + float2(-1, 1), 0, 1);
+}
+TextureCube tex : register(t0);
+SamplerState smp : register(s0);
+float4 ps(float4 p : SV_Position) : SV_Target {
+    const float3 axes[6] = { float3(1, 0, 0), float3(-1, 0, 0), float3(0, 1, 0), float3(0, -1, 0), float3(0, 0, 1), float3(0, 0, -1) };
+    return tex.SampleLevel(smp, axes[uint(p.x)], 0);
+}
+)";
+    expectFaces(drawWithTexture(d, oneCube, view.Get(), 6, 1), 0, 1);
+    desc.TextureCube = {1, 1};
+    EXPECT_EQ(d.device->CreateShaderResourceView(t.Get(), &desc, view.GetAddressOf()), E_INVALIDARG);
+    EXPECT_NE(lastError().find("TextureCube = {MostDetailedMip 1, MipLevels 1} (the texture has 1 levels)"), std::string::npos) << lastError();
 }
 
 }  // namespace

@@ -3,7 +3,9 @@
 // D16_UNORM) by a draw whose depth runs across the target, then read through its shader-resource
 // view (R32_FLOAT, R16_UNORM) by Load and by SampleCmpLevelZero with a comparison sampler; both
 // compared per pixel with the CPU's plane depth; the same through a depth-only pass (no render
-// target, no pixel shader). D32_FLOAT depth buffers; the descriptions D3D
+// target, no pixel shader). D32_FLOAT depth buffers; the stencil of R24G8 / R32G8X24 shadow maps
+// (INCR_SAT draws over narrowing viewports) read through X24_TYPELESS_G8_UINT /
+// X32_TYPELESS_G8X24_UINT views as (0, stencil, 0, 1) beside their depth; the descriptions D3D
 // refuses (a D24_UNORM_S8_UINT texture with SHADER_RESOURCE, a typeless texture's view without a
 // format, a view of the wrong format) answered with the field and value.
 #include <cmath>
@@ -331,17 +333,120 @@ TEST(D3D11DepthTexture, D32FloatS8X24HasStencil) {
         for (UINT x = 0; x < kSize; ++x) EXPECT_EQ(pixels[y * kSize + x][0], x < kSize / 2 ? 255 : 0) << "pixel (" << x << ", " << y << ")";
 }
 
-TEST(D3D11DepthTexture, StencilShaderResourceViewsAreNotImplemented) {
+// Column x of a depth-only pass's stencil after four draws with INCR_SAT, the first over the whole
+// target and each next one a column narrower: kSize - x.
+UINT columnStencil(UINT x) { return kSize - x; }
+
+// Fills a typeless depth-stencil texture's stencil with columnStencil (depth too, the plane), then
+// reads it through `stencilView` in a shader (Texture2D<uint4>.Load: (r, g, b, a) into the target's
+// (g, r, b, a)) and its depth through `depthView`: per pixel (stencil, r, b, a, depth).
+std::vector<std::array<float, 5>> stencilRoundTrip(DXGI_FORMAT typeless, DXGI_FORMAT dsvFormat, DXGI_FORMAT stencilView, DXGI_FORMAT depthView) {
+    Device d;
+    std::vector<std::array<float, 5>> out;
+    ComPtr<ID3D11Texture2D> t = makeTarget(d, typeless, D3D11_BIND_DEPTH_STENCIL | D3D11_BIND_SHADER_RESOURCE);
+    if (!t) return out;
+    D3D11_DEPTH_STENCIL_VIEW_DESC dsvDesc;
+    dsvDesc.Format = dsvFormat;
+    dsvDesc.ViewDimension = D3D11_DSV_DIMENSION_TEXTURE2D;
+    ComPtr<ID3D11DepthStencilView> dsv;
+    EXPECT_EQ(d.device->CreateDepthStencilView(t.Get(), &dsvDesc, dsv.GetAddressOf()), S_OK) << lastError();
+    d.context->ClearDepthStencilView(dsv.Get(), D3D11_CLEAR_DEPTH | D3D11_CLEAR_STENCIL, 1.0f, 0);
+    d.context->OMSetRenderTargets(0, nullptr, dsv.Get());
+    D3D11_DEPTH_STENCIL_DESC incr;
+    incr.DepthFunc = D3D11_COMPARISON_ALWAYS;
+    incr.StencilEnable = TRUE;
+    incr.FrontFace.StencilFunc = incr.BackFace.StencilFunc = D3D11_COMPARISON_ALWAYS;
+    incr.FrontFace.StencilPassOp = incr.BackFace.StencilPassOp = D3D11_STENCIL_OP_INCR_SAT;
+    ComPtr<ID3D11DepthStencilState> state;
+    EXPECT_EQ(d.device->CreateDepthStencilState(&incr, state.GetAddressOf()), S_OK) << lastError();
+    d.context->OMSetDepthStencilState(state.Get(), 0);
+    Shaders pass(d, kDepthPass);
+    pass.set(d);
+    d.context->PSSetShader(nullptr, nullptr, 0);
+    d.context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+    for (UINT width = kSize; width > 0; --width) {
+        D3D11_VIEWPORT viewport{0, 0, float(width), float(kSize), 0, 1};
+        d.context->RSSetViewports(1, &viewport);
+        d.context->Draw(3, 0);
+    }
+    EXPECT_EQ(lastError(), "");
+    d.context->OMSetRenderTargets(0, nullptr, nullptr);
+    d.context->OMSetDepthStencilState(nullptr, 0);
+
+    D3D11_SHADER_RESOURCE_VIEW_DESC srvDesc;
+    srvDesc.Format = stencilView;
+    srvDesc.ViewDimension = D3D11_SRV_DIMENSION_TEXTURE2D;
+    srvDesc.Texture2D.MipLevels = 1;
+    ComPtr<ID3D11ShaderResourceView> stencil, depth;
+    EXPECT_EQ(d.device->CreateShaderResourceView(t.Get(), &srvDesc, stencil.GetAddressOf()), S_OK) << lastError();
+    srvDesc.Format = depthView;
+    EXPECT_EQ(d.device->CreateShaderResourceView(t.Get(), &srvDesc, depth.GetAddressOf()), S_OK) << lastError();
+    if (!stencil || !depth) return out;
+    const std::string full = R"(
+float4 vs(uint id : SV_VertexID) : SV_Position {
+    float2 corner = float2((id << 1) & 2, id & 2);
+    return float4(corner * float2(2, -2) + float2(-1, 1), 0, 1);
+}
+)";
+    const std::vector<std::array<float, 4>> stencils = drawWithTexture(d, full + R"(
+Texture2D<uint4> Stencil : register(t0);
+float4 ps(float4 pos : SV_Position) : SV_Target { uint4 s = Stencil.Load(int3(pos.xy, 0)); return float4(s.g, s.r, s.b, s.a); }
+)",
+                                                                       stencil.Get(), kSize, kSize);
+    const std::vector<std::array<float, 4>> depths = drawWithTexture(d, full + R"(
+Texture2D<float> Depth : register(t0);
+float4 ps(float4 pos : SV_Position) : SV_Target { return Depth.Load(int3(pos.xy, 0)); }
+)",
+                                                                     depth.Get(), kSize, kSize);
+    for (std::size_t i = 0; i < stencils.size() && i < depths.size(); ++i)
+        out.push_back({stencils[i][0], stencils[i][1], stencils[i][2], stencils[i][3], depths[i][0]});
+    return out;
+}
+
+void expectStencilColumns(const std::vector<std::array<float, 5>>& got) {
+    ASSERT_EQ(got.size(), std::size_t(kSize * kSize));
+    for (UINT y = 0; y < kSize; ++y)
+        for (UINT x = 0; x < kSize; ++x) {
+            const std::array<float, 5>& p = got[y * kSize + x];
+            EXPECT_EQ(p[0], float(columnStencil(x))) << "stencil of pixel (" << x << ", " << y << ")";
+            EXPECT_EQ(p[1], 0.0f) << "red of pixel (" << x << ", " << y << ")";
+            EXPECT_EQ(p[2], 0.0f) << "blue of pixel (" << x << ", " << y << ")";
+            EXPECT_EQ(p[3], 1.0f) << "alpha of pixel (" << x << ", " << y << ")";
+            // The last draw to reach column x (viewport width x + 1) wrote its depth, the plane over that viewport.
+            EXPECT_NEAR(p[4], 0.25f * (float(x) + 0.5f) / float(x + 1), 1e-6f) << "depth of pixel (" << x << ", " << y << ")";
+        }
+}
+
+// The stencil of a D24_UNORM_S8_UINT shadow map, read as D3D reads X24_TYPELESS_G8_UINT: (0, stencil, 0, 1).
+TEST(D3D11DepthTexture, R24G8StencilIsReadThroughAnX24TypelessG8UintView) {
+    expectStencilColumns(
+        stencilRoundTrip(DXGI_FORMAT_R24G8_TYPELESS, DXGI_FORMAT_D24_UNORM_S8_UINT, DXGI_FORMAT_X24_TYPELESS_G8_UINT, DXGI_FORMAT_R24_UNORM_X8_TYPELESS));
+}
+
+TEST(D3D11DepthTexture, R32G8X24StencilIsReadThroughAnX32TypelessG8X24UintView) {
+    expectStencilColumns(stencilRoundTrip(DXGI_FORMAT_R32G8X24_TYPELESS, DXGI_FORMAT_D32_FLOAT_S8X24_UINT, DXGI_FORMAT_X32_TYPELESS_G8X24_UINT,
+                                          DXGI_FORMAT_R32_FLOAT_X8X24_TYPELESS));
+}
+
+TEST(D3D11DepthTexture, AStencilViewOfAnotherFamilyIsRefusedNamingTheFormat) {
     Device d;
     ComPtr<ID3D11Texture2D> t = makeTarget(d, DXGI_FORMAT_R32G8X24_TYPELESS, D3D11_BIND_DEPTH_STENCIL | D3D11_BIND_SHADER_RESOURCE);
     ASSERT_TRUE(t);
     D3D11_SHADER_RESOURCE_VIEW_DESC desc;
-    desc.Format = DXGI_FORMAT_X32_TYPELESS_G8X24_UINT;
+    desc.Format = DXGI_FORMAT_X24_TYPELESS_G8_UINT;
     desc.ViewDimension = D3D11_SRV_DIMENSION_TEXTURE2D;
     desc.Texture2D.MipLevels = 1;
     ComPtr<ID3D11ShaderResourceView> srv;
-    EXPECT_EQ(d.device->CreateShaderResourceView(t.Get(), &desc, srv.GetAddressOf()), E_NOTIMPL);
-    EXPECT_NE(lastError().find("DXGI_FORMAT_X32_TYPELESS_G8X24_UINT"), std::string::npos) << lastError();
+    EXPECT_EQ(d.device->CreateShaderResourceView(t.Get(), &desc, srv.GetAddressOf()), E_INVALIDARG);
+    EXPECT_NE(lastError().find("Format = DXGI_FORMAT_X24_TYPELESS_G8_UINT for a DXGI_FORMAT_R32G8X24_TYPELESS texture (its shader-resource view is "
+                               "DXGI_FORMAT_R32_FLOAT_X8X24_TYPELESS, or DXGI_FORMAT_X32_TYPELESS_G8X24_UINT for the stencil)"),
+              std::string::npos)
+        << lastError();
+    // A stencil view of an R32_TYPELESS texture (no stencil) names the format too.
+    ComPtr<ID3D11Texture2D> plain = makeTarget(d, DXGI_FORMAT_R32_TYPELESS, D3D11_BIND_DEPTH_STENCIL | D3D11_BIND_SHADER_RESOURCE);
+    ASSERT_TRUE(plain);
+    EXPECT_EQ(d.device->CreateShaderResourceView(plain.Get(), &desc, srv.GetAddressOf()), E_INVALIDARG);
+    EXPECT_NE(lastError().find("Format = DXGI_FORMAT_X24_TYPELESS_G8_UINT for a DXGI_FORMAT_R32_TYPELESS texture"), std::string::npos) << lastError();
 }
 
 }  // namespace

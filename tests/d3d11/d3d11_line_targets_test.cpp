@@ -1,6 +1,7 @@
 // Render-target and depth-stencil views of 1D textures (D3D11_RTV/DSV_DIMENSION_TEXTURE1D and
 // TEXTURE1DARRAY): draws into a row one texel high, read back through staging copies and compared
-// with the shader's value at each texel centre computed here.
+// with the shader's value at each texel centre computed here; 1D shadow maps (R32_TYPELESS,
+// R16_TYPELESS) drawn into through their depth view and sampled through their depth SRV.
 #include <cmath>
 #include <cstring>
 
@@ -155,6 +156,93 @@ TEST(D3D11LineTargets, A1DDepthViewTestsEachTexel) {
     d.context->Draw(3, 0);
     ASSERT_EQ(lastError(), "");
     expectRamp(readRow(d, colour.Get(), 0), kWidth, [](UINT x, UINT width) { return 0.5f * (float(x) + 0.5f) / float(width) < 0.25f; });
+}
+
+// A 1D shadow map: an R32_TYPELESS 1D texture drawn into through a D32_FLOAT view (the ramp's
+// depth 0.5 * u) and read through an R32_FLOAT view by Load and SampleLevel: each texel the CPU's
+// 0.5 * u at its centre. An R16_TYPELESS one (D16_UNORM / R16_UNORM) to 16-bit precision.
+void expectShadowRow(DXGI_FORMAT typeless, DXGI_FORMAT depthView, DXGI_FORMAT sampledView, float tolerance) {
+    Device d;
+    constexpr UINT kWidth = 16;
+    ComPtr<ID3D11Texture1D> depth = makeLine(d, typeless, kWidth, 1, 1, D3D11_BIND_DEPTH_STENCIL | D3D11_BIND_SHADER_RESOURCE);
+    ASSERT_TRUE(depth);
+    D3D11_DEPTH_STENCIL_VIEW_DESC dsvDesc;
+    dsvDesc.Format = depthView;
+    dsvDesc.ViewDimension = D3D11_DSV_DIMENSION_TEXTURE1D;
+    ComPtr<ID3D11DepthStencilView> dsv;
+    ASSERT_EQ(d.device->CreateDepthStencilView(depth.Get(), &dsvDesc, dsv.GetAddressOf()), S_OK) << lastError();
+    d.context->ClearDepthStencilView(dsv.Get(), D3D11_CLEAR_DEPTH, 1.0f, 0);
+    d.context->OMSetRenderTargets(0, nullptr, dsv.Get());
+    Pipeline pipeline(d, kWidth);
+    d.context->PSSetShader(nullptr, nullptr, 0);  // depth only
+    d.context->Draw(3, 0);
+    ASSERT_EQ(lastError(), "");
+    d.context->OMSetRenderTargets(0, nullptr, nullptr);
+
+    D3D11_SHADER_RESOURCE_VIEW_DESC srvDesc;
+    srvDesc.Format = sampledView;
+    srvDesc.ViewDimension = D3D11_SRV_DIMENSION_TEXTURE1D;
+    srvDesc.Texture1D = {0, 1};
+    ComPtr<ID3D11ShaderResourceView> srv;
+    ASSERT_EQ(d.device->CreateShaderResourceView(depth.Get(), &srvDesc, srv.GetAddressOf()), S_OK) << lastError();
+    D3D11_SAMPLER_DESC pointDesc;
+    pointDesc.Filter = D3D11_FILTER_MIN_MAG_MIP_POINT;
+    ComPtr<ID3D11SamplerState> point;
+    ASSERT_EQ(d.device->CreateSamplerState(&pointDesc, point.GetAddressOf()), S_OK) << lastError();
+    const std::vector<std::array<float, 4>> got = drawWithTexture(d, R"(
+float4 vs(uint id : SV_VertexID) : SV_Position {
+    float2 corner = float2((id << 1) & 2, id & 2);
+    return float4(corner * float2(2, -2) + float2(-1, 1), 0, 1);
+}
+Texture1D<float> Depth : register(t0);
+SamplerState Point : register(s0);
+float4 ps(float4 pos : SV_Position) : SV_Target { return float4(Depth.Load(int2(pos.x, 0)), Depth.SampleLevel(Point, pos.x / 16, 0), 0, 1); }
+)",
+                                                                  srv.Get(), kWidth, 1, point.Get());
+    ASSERT_EQ(got.size(), std::size_t(kWidth));
+    for (UINT x = 0; x < kWidth; ++x) {
+        const float want = 0.5f * (float(x) + 0.5f) / float(kWidth);
+        EXPECT_NEAR(got[x][0], want, tolerance) << "Load at texel " << x;
+        EXPECT_NEAR(got[x][1], want, tolerance) << "SampleLevel at texel " << x;
+    }
+}
+
+TEST(D3D11LineTargets, AR32Typeless1DShadowMapIsDrawnAndSampled) {
+    expectShadowRow(DXGI_FORMAT_R32_TYPELESS, DXGI_FORMAT_D32_FLOAT, DXGI_FORMAT_R32_FLOAT, 1e-6f);
+}
+
+TEST(D3D11LineTargets, AR16Typeless1DShadowMapIsDrawnAndSampled) {
+    expectShadowRow(DXGI_FORMAT_R16_TYPELESS, DXGI_FORMAT_D16_UNORM, DXGI_FORMAT_R16_UNORM, 1.0f / 65535.0f);
+}
+
+TEST(D3D11LineTargets, ATypeless1DDepthTexturesViewsNameTheirFormats) {
+    Device d;
+    ComPtr<ID3D11Texture1D> depth = makeLine(d, DXGI_FORMAT_R24G8_TYPELESS, 8, 1, 1, D3D11_BIND_DEPTH_STENCIL | D3D11_BIND_SHADER_RESOURCE);
+    ASSERT_TRUE(depth);
+    ComPtr<ID3D11ShaderResourceView> srv;
+    EXPECT_EQ(d.device->CreateShaderResourceView(depth.Get(), nullptr, srv.GetAddressOf()), E_INVALIDARG);
+    EXPECT_NE(lastError().find("pDesc is null for a DXGI_FORMAT_R24G8_TYPELESS texture"), std::string::npos) << lastError();
+    D3D11_SHADER_RESOURCE_VIEW_DESC srvDesc;
+    srvDesc.Format = DXGI_FORMAT_R32_FLOAT;
+    srvDesc.ViewDimension = D3D11_SRV_DIMENSION_TEXTURE1D;
+    srvDesc.Texture1D = {0, 1};
+    EXPECT_EQ(d.device->CreateShaderResourceView(depth.Get(), &srvDesc, srv.GetAddressOf()), E_INVALIDARG);
+    EXPECT_NE(lastError().find("Format = DXGI_FORMAT_R32_FLOAT for a DXGI_FORMAT_R24G8_TYPELESS 1D texture (its shader-resource view is "
+                               "DXGI_FORMAT_R24_UNORM_X8_TYPELESS"),
+              std::string::npos)
+        << lastError();
+    D3D11_DEPTH_STENCIL_VIEW_DESC dsvDesc;
+    dsvDesc.Format = DXGI_FORMAT_D32_FLOAT;
+    dsvDesc.ViewDimension = D3D11_DSV_DIMENSION_TEXTURE1D;
+    ComPtr<ID3D11DepthStencilView> dsv;
+    EXPECT_EQ(d.device->CreateDepthStencilView(depth.Get(), &dsvDesc, dsv.GetAddressOf()), E_INVALIDARG);
+    EXPECT_NE(lastError().find("Format = DXGI_FORMAT_D32_FLOAT for a DXGI_FORMAT_R24G8_TYPELESS 1D texture (its depth-stencil view is "
+                               "DXGI_FORMAT_D24_UNORM_S8_UINT)"),
+              std::string::npos)
+        << lastError();
+    dsvDesc.Format = DXGI_FORMAT_D24_UNORM_S8_UINT;
+    dsvDesc.Flags = D3D11_DSV_READ_ONLY_STENCIL;
+    EXPECT_EQ(d.device->CreateDepthStencilView(depth.Get(), &dsvDesc, dsv.GetAddressOf()), S_OK) << lastError();
 }
 
 TEST(D3D11LineTargets, BadViewsAreRefusedNamingTheField) {

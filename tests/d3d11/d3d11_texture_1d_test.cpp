@@ -390,8 +390,13 @@ TEST(D3D11Texture1D, BadDescriptionsNameTheField) {
     EXPECT_EQ(lastError(), "CreateTexture1D: D3D11_TEXTURE1D_DESC.CPUAccessFlags = 0 with USAGE_DYNAMIC (must be D3D11_CPU_ACCESS_WRITE)");
     bad = good;
     bad.BindFlags = D3D11_BIND_DEPTH_STENCIL | D3D11_BIND_SHADER_RESOURCE;  // render targets and depth: d3d11_line_targets_test.cpp
-    EXPECT_EQ(create(d, bad), E_NOTIMPL);
-    EXPECT_NE(lastError().find("BindFlags = 72"), std::string::npos) << lastError();
+    EXPECT_EQ(create(d, bad), E_INVALIDARG);
+    EXPECT_NE(lastError().find("Format = DXGI_FORMAT_R8G8B8A8_UNORM with BIND_DEPTH_STENCIL: not a depth format"), std::string::npos) << lastError();
+    bad.Format = DXGI_FORMAT_D32_FLOAT;  // sampled depth is made typeless
+    EXPECT_EQ(create(d, bad), E_INVALIDARG);
+    EXPECT_NE(lastError().find("BindFlags = 72 with Format = DXGI_FORMAT_D32_FLOAT: a depth texture a shader samples is made typeless (DXGI_FORMAT_R32_TYPELESS)"),
+              std::string::npos)
+        << lastError();
 
     ComPtr<ID3D11Texture1D> t = makeLine(d, 4, 2, 1);
     D3D11_SHADER_RESOURCE_VIEW_DESC view;

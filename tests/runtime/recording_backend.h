@@ -199,9 +199,19 @@ public:
         textureSizes[t] = {width, height};
         return t;
     }
+    BackendObject createCubeView(BackendObject source, SurfaceFormat format, int firstLevel, int levels, int firstLayer) override {
+        return createTextureView(source, format, false, firstLevel, levels, firstLayer, 6);
+    }
+    BackendObject createMultisampleArrayTexture(SurfaceFormat, int samples, int width, int height, int layers, int& given) override {
+        given = samples;
+        const BackendObject t = make("createMultisampleArrayTexture " + std::to_string(width) + "x" + std::to_string(height) + " layers " +
+                                     std::to_string(layers) + " samples " + std::to_string(samples));
+        textureSizes[t] = {width, height};
+        return t;
+    }
     unsigned multisampledUnits(BackendObject) override { return 0; }
-    void copySamples(BackendObject source, BackendObject destination, int, int) override {
-        calls.push_back("copySamples " + std::to_string(source) + " " + std::to_string(destination));
+    void copySamples(const SampleCopy& copy) override {
+        calls.push_back("copySamples " + std::to_string(copy.source) + " " + std::to_string(copy.destination));
     }
     void deleteTexture(BackendObject texture) override { release("deleteTexture", texture); }
     void writeTexture(BackendObject texture, SurfaceFormat, int face, int level, const Rectangle& a, const void*) override {

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "context.h"
+#include "device/pass_emulation.h"
 #include "guarded.h"
 
 namespace fxport::d3d11 {
@@ -138,7 +139,7 @@ void Context::bindStorage(const char* call, const core::ShaderCode& code, const 
         } else if (image && v->image) {
             core.SetUnorderedAccess(b.slot, v->image.get());
         } else if (image) {
-            core.SetUnorderedAccess(b.slot, v->texture->colour.get());
+            core.SetUnorderedAccess(b.slot, v->formatView ? v->formatView.get() : v->texture->colour.get());
         } else {
             checkStride(use, b, *v->buffer);
             core::setStorageBuffer(core, true, b.slot, v->buffer->gpu.get(), v->range.offset, v->range.bytes);
@@ -228,6 +229,11 @@ bool Context::prepare(const char* call) {
             bindStorage(call, *stages[stage], *slots[stage], stage == 1 ? &psUavs_ : nullptr);  // stage 1: the pixel shader
         }
     }
+    // D3D10+ encodes what a draw writes into an _SRGB render-target view (blending in linear):
+    // GL's sRGB write, which changes sRGB attachments only, is on for every draw of this front end.
+    PassEmulation srgbEncoded;
+    srgbEncoded.srgbWrite = true;
+    setPassEmulation(core, srgbEncoded);
     // A read-only depth-stencil view writes no depth (or stencil) whatever the state or the
     // effect pass says, so a shader may sample the texture while it is bound.
     if (depthView_ && (depthView_->desc.Flags & D3D11_DSV_READ_ONLY_DEPTH)) core.DepthStencilState.DepthBufferWriteEnable = false;

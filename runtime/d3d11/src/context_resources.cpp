@@ -1,6 +1,8 @@
 // The immediate context's resource calls: Map/Unmap (CPU copies of dynamic and staging
 // resources), UpdateSubresource, CopyResource and CopySubresourceRegion (GPU to GPU through the
 // device core; staging sides through CPU memory, as D3D's staging resources are), clears, mips.
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include "context.h"
@@ -136,6 +138,9 @@ void Context::CopyResource(ID3D11Resource* pDst, ID3D11Resource* pSrc) {
         if ((td->depth && !td->colour) || (ts->depth && !ts->colour))
             return fail(E_NOTIMPL, "CopyResource: a depth-stencil texture without BIND_SHADER_RESOURCE (a typeless one with it copies)");
         if (td->slices() != ts->slices()) return fail(E_INVALIDARG, "CopyResource: the textures differ in ArraySize");
+        if (td->slices() > 1 && td->desc.SampleDesc.Count > 1)
+            return fail(E_NOTIMPL, "CopyResource: multisampled arrays (SampleDesc.Count = " + std::to_string(td->desc.SampleDesc.Count) +
+                                       ") are not copied yet: resolve their slices (ResolveSubresource)");
         if (td->slices() > 1) {  // arrays: subresource by subresource (through the CPU when one side is staging)
             Subresource at;
             for (UINT sub = 0; splitSubresource(*ts, sub, at); ++sub) writeSubresource(*td, at, nullptr, readSubresource(*ts, at));
@@ -251,7 +256,15 @@ void Context::ClearRenderTargetView(ID3D11RenderTargetView* p, const FLOAT c[4])
     guarded("ClearRenderTargetView", [&] {
         auto* v = own<RenderTargetView>(p, device_);
         if (!v || !c) return fail(E_INVALIDARG, "ClearRenderTargetView: no view of this device, or no colour");
-        core::clearTexture(v->target(), Vector4(c[0], c[1], c[2], c[3]));
+        // D3D converts the colour to the view's format: an _SRGB view stores it sRGB-encoded.
+        const SurfaceFormat f = v->target().Format();
+        const bool srgb = f == SurfaceFormat::ColorSRgb || f == SurfaceFormat::Bgra32SRgb || f == SurfaceFormat::Bgrx32SRgb;
+        auto encoded = [srgb](FLOAT linear) {
+            if (!srgb) return linear;
+            const float x = std::clamp(linear, 0.0f, 1.0f);
+            return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
+        };
+        core::clearTexture(v->target(), Vector4(encoded(c[0]), encoded(c[1]), encoded(c[2]), c[3]));
         return succeed();
     });
 }

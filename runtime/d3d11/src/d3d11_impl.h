@@ -149,6 +149,7 @@ public:
         typed.reset();  // before the buffer it reads may go
         formatView.reset();
         arrayRange.reset();
+        cubeRange.reset();
         lineRange.reset();
         resource()->Release();
     }
@@ -162,6 +163,7 @@ public:
     fxport::Texture* sampled() const {
         if (formatView) return formatView.get();
         if (arrayRange) return arrayRange.get();
+        if (cubeRange) return cubeRange.get();
         if (line) return lineRange ? lineRange.get() : line->texels.get();
         return texture ? texture->sampled() : volume ? volume->texels.get() : nullptr;
     }
@@ -174,6 +176,7 @@ public:
     std::unique_ptr<core::TexelBuffer> typed;  // a typed buffer view (Buffer<T>)
     std::unique_ptr<fxport::Texture2D> formatView;       // a typeless colour texture read in another format of its family
     std::unique_ptr<fxport::Texture2DArray> arrayRange;  // a view of part of an array texture's levels or slices
+    std::unique_ptr<fxport::TextureCube> cubeRange;      // a TEXTURECUBE view of a cube array (its first cube)
     std::unique_ptr<fxport::Texture1D> lineRange;        // a 1D texture seen as another dimension or in part
 };
 // An unordered-access view of a structured or raw buffer, of level 0 of a 2D texture, or of level
@@ -185,6 +188,7 @@ public:
     ~UnorderedAccessView() override {
         typed.reset();
         image.reset();
+        formatView.reset();
         resource->Release();
     }
     void GetResource(ID3D11Resource** r) override { resource->AddRef(); *r = resource; }
@@ -196,6 +200,7 @@ public:
     BufferRange range;                         // buffer views
     std::unique_ptr<core::TexelBuffer> typed;  // a typed buffer view (RWBuffer<T>)
     std::unique_ptr<fxport::Texture1D> image;  // a 1D texture's view (resources_1d.cpp)
+    std::unique_ptr<fxport::Texture2D> formatView;  // a typeless colour texture written in another format of its family
 };
 // A render-target view of a 2D texture (texture set) or of rows of a 1D texture (line set, and
 // `slice` the target over them).
@@ -216,7 +221,7 @@ public:
     Texture* texture = nullptr;
     LineTexture* line = nullptr;
     D3D11_RENDER_TARGET_VIEW_DESC desc;
-    std::unique_ptr<RenderTarget2D> slice;  // a view of slices of an array texture (layered for several)
+    std::unique_ptr<RenderTarget2D> slice;  // a view of slices of an array texture (layered for several), or in another format
 };
 class DepthStencilView final : public Object<ID3D11DepthStencilView> {
 public:
@@ -343,6 +348,8 @@ struct DepthFamily {
     DXGI_FORMAT typeless, depthView, sampledView;
     DepthFormat depth;      // a depth buffer's format (DSV only)
     SurfaceFormat sampled;  // the depth texture's (SRV, or SRV and DSV)
+    DXGI_FORMAT stencilView = DXGI_FORMAT_UNKNOWN;  // an SRV of the stencil (R24G8 / R32G8X24 only)
+    SurfaceFormat stencil = SurfaceFormat::Depth32;  // what that view reads (StencilOf...)
 };
 const DepthFamily* depthFamilyOf(DXGI_FORMAT textureFormat);  // null: not one of them
 const DepthFamily* depthFamilyOfView(DXGI_FORMAT depthView);   // the family whose DSV format this is (D32_FLOAT ...)
@@ -350,7 +357,7 @@ const DepthFamily* depthFamilyOfView(DXGI_FORMAT depthView);   // the family who
 // B8G8R8A8/X8); false for any other format.
 bool typelessColourStorage(DXGI_FORMAT typeless, SurfaceFormat& out);
 // What a view of `viewFormat` reads `t` as: the view's format for a typeless colour texture, the
-// texture's own otherwise.
+// stencil for a typeless depth-stencil texture's stencil view, the texture's own otherwise.
 SurfaceFormat viewSurface(DXGI_FORMAT viewFormat, const Texture& t);
 // A view's Format for texture `t`: its own (or UNKNOWN), a typed member of a typeless colour
 // texture's family, or the typeless depth family's view of that kind; E_NOTIMPL/E_INVALIDARG
@@ -370,6 +377,12 @@ HRESULT createTextureArray(Device* device, const D3D11_TEXTURE2D_DESC& d, const 
 HRESULT arrayShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc, ID3D11ShaderResourceView** pp);
 HRESULT arrayRenderTargetView(Device* device, Texture* t, const D3D11_RENDER_TARGET_VIEW_DESC* pDesc, ID3D11RenderTargetView** pp);
 HRESULT arrayDepthStencilView(Device* device, Texture* t, const D3D11_DEPTH_STENCIL_VIEW_DESC* pDesc, ID3D11DepthStencilView** pp);
+// The slices [first, first + count) a view names, inside the texture's `slices`: E_INVALIDARG
+// naming `at`FirstArraySlice + ArraySize otherwise.
+HRESULT checkSlices(const std::string& at, UINT first, UINT count, int slices);
+// TEXTURE2DMSARRAY views of a multisampled array (resources_multisample_array.cpp).
+HRESULT multisampleArrayShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc, ID3D11ShaderResourceView** pp);
+HRESULT multisampleArrayRenderTargetView(Device* device, Texture* t, const D3D11_RENDER_TARGET_VIEW_DESC* pDesc, ID3D11RenderTargetView** pp);
 // One subresource of a 2D texture or array (texture_subresources.cpp): which level and slice D3D's
 // index names, and its texels, tightly packed, from wherever the texture keeps them (GPU or staging).
 struct Subresource {

@@ -23,7 +23,11 @@ HRESULT rowsOf(const std::string& at, const LineTexture& t, const Desc& given, D
     if (given.ViewDimension != oneD && given.ViewDimension != array)
         return fail(E_INVALIDARG, at + "ViewDimension = " + std::to_string(given.ViewDimension) + " for a 1D texture (TEXTURE1D or TEXTURE1DARRAY)");
     if (given.ViewDimension == oneD && t.desc.ArraySize > 1) return fail(E_INVALIDARG, at + "ViewDimension = TEXTURE1D for an array (TEXTURE1DARRAY)");
-    if (given.Format != DXGI_FORMAT_UNKNOWN && given.Format != t.desc.Format)
+    const DepthFamily* typeless = depthFamilyOf(t.desc.Format);  // a sampled depth texture: its DSV names the depth format
+    if (typeless && given.Format != typeless->depthView)
+        return fail(E_INVALIDARG, at + "Format = " + formatName(given.Format) + " for a " + formatName(t.desc.Format) + " 1D texture (its depth-stencil view is " +
+                                      formatName(typeless->depthView) + ")");
+    if (!typeless && given.Format != DXGI_FORMAT_UNKNOWN && given.Format != t.desc.Format)
         return fail(E_NOTIMPL, at + "Format = " + formatName(given.Format) + " for a " + formatName(t.desc.Format) + " 1D texture: fxport views it in its own format");
     rows = given.ViewDimension == oneD ? Rows{given.Texture1D.MipSlice, 0, 1}
                                        : Rows{given.Texture1DArray.MipSlice, given.Texture1DArray.FirstArraySlice, given.Texture1DArray.ArraySize};
@@ -69,6 +73,8 @@ HRESULT lineRenderTargetView(Device* device, LineTexture* t, const D3D11_RENDER_
 HRESULT lineDepthStencilView(Device* device, LineTexture* t, const D3D11_DEPTH_STENCIL_VIEW_DESC* pDesc, ID3D11DepthStencilView** pp) {
     const char* call = "CreateDepthStencilView";
     if (!(t->desc.BindFlags & D3D11_BIND_DEPTH_STENCIL)) return lacksBind(call, *t, "D3D11_BIND_DEPTH_STENCIL");
+    if (!pDesc && depthFamilyOf(t->desc.Format))
+        return fail(E_INVALIDARG, std::string(call) + ": pDesc is null for a " + formatName(t->desc.Format) + " texture (a typeless texture's view names its Format)");
     D3D11_DEPTH_STENCIL_VIEW_DESC d;
     d.Format = t->desc.Format;
     d.ViewDimension = t->desc.ArraySize > 1 ? D3D11_DSV_DIMENSION_TEXTURE1DARRAY : D3D11_DSV_DIMENSION_TEXTURE1D;
@@ -77,7 +83,9 @@ HRESULT lineDepthStencilView(Device* device, LineTexture* t, const D3D11_DEPTH_S
     if (pDesc) {
         const std::string at = std::string(call) + ": D3D11_DEPTH_STENCIL_VIEW_DESC.";
         if (HRESULT hr = rowsOf(at, *t, *pDesc, D3D11_DSV_DIMENSION_TEXTURE1D, D3D11_DSV_DIMENSION_TEXTURE1DARRAY, rows); FAILED(hr)) return hr;
-        if (HRESULT hr = checkDepthViewFlags(at, pDesc->Flags, t->desc.Format); FAILED(hr)) return hr;
+        const DXGI_FORMAT viewed = pDesc->Format != DXGI_FORMAT_UNKNOWN ? pDesc->Format : t->desc.Format;
+        if (HRESULT hr = checkDepthViewFlags(at, pDesc->Flags, viewed); FAILED(hr)) return hr;
+        d.Format = viewed;
         d.ViewDimension = pDesc->ViewDimension;
         d.Flags = pDesc->Flags;
         d.Texture1D = {rows.level};

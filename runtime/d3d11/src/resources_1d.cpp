@@ -28,15 +28,15 @@ HRESULT checkLineShape(const D3D11_TEXTURE1D_DESC& d, const std::string& at) {
 }
 
 // Binds, usage and misc flags: shader resources, UAVs and render targets, or a depth-stencil
-// texture drawn into only; D3D's usage rules (checkUsage), GENERATE_MIPS only.
+// texture (sampled too when typeless); D3D's usage rules (checkUsage), GENERATE_MIPS only.
 HRESULT checkLineUse(const D3D11_TEXTURE1D_DESC& d, bool hasData, const std::string& at) {
     const UINT known = D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_UNORDERED_ACCESS | D3D11_BIND_RENDER_TARGET | D3D11_BIND_DEPTH_STENCIL;
     if (d.BindFlags & ~known)
         return fail(E_INVALIDARG, at + "BindFlags = " + std::to_string(d.BindFlags) +
                                       ": a 1D texture is bound as SHADER_RESOURCE, UNORDERED_ACCESS, RENDER_TARGET or DEPTH_STENCIL");
-    if ((d.BindFlags & D3D11_BIND_DEPTH_STENCIL) && (d.BindFlags & ~UINT(D3D11_BIND_DEPTH_STENCIL)))
-        return fail(d.BindFlags & (D3D11_BIND_RENDER_TARGET | D3D11_BIND_UNORDERED_ACCESS) ? E_INVALIDARG : E_NOTIMPL,
-                    at + "BindFlags = " + std::to_string(d.BindFlags) + ": fxport's 1D depth textures are DEPTH_STENCIL only (not sampled)");
+    if ((d.BindFlags & D3D11_BIND_DEPTH_STENCIL) && (d.BindFlags & (D3D11_BIND_RENDER_TARGET | D3D11_BIND_UNORDERED_ACCESS)))
+        return fail(E_INVALIDARG, at + "BindFlags = " + std::to_string(d.BindFlags) +
+                                      ": a depth-stencil texture is DEPTH_STENCIL (and SHADER_RESOURCE), not a render target or UAV");
     if ((d.BindFlags & D3D11_BIND_DEPTH_STENCIL) && hasData) return fail(E_INVALIDARG, at + "BindFlags has DEPTH_STENCIL and pInitialData is given");
     if ((d.BindFlags & D3D11_BIND_UNORDERED_ACCESS) && d.Usage != D3D11_USAGE_DEFAULT)
         return fail(E_INVALIDARG, at + "Usage = " + std::to_string(d.Usage) + " with BIND_UNORDERED_ACCESS (must be USAGE_DEFAULT)");
@@ -53,9 +53,15 @@ HRESULT checkLineUse(const D3D11_TEXTURE1D_DESC& d, bool hasData, const std::str
 }
 
 HRESULT checkLineFormat(const D3D11_TEXTURE1D_DESC& d, SurfaceFormat& format, const std::string& at) {
-    if (d.BindFlags & D3D11_BIND_DEPTH_STENCIL) {  // D32_FLOAT, D24_UNORM_S8_UINT ...: a depth texture the DSV draws into
-        const DepthFamily* family = depthFamilyOfView(d.Format);
+    // D32_FLOAT, D24_UNORM_S8_UINT ...: a depth texture the DSV draws into; R32_TYPELESS ... with
+    // SHADER_RESOURCE too: the same depth texture, read through an R32_FLOAT ... view (a 1D shadow map).
+    if (d.BindFlags & D3D11_BIND_DEPTH_STENCIL) {
+        const DepthFamily* family = depthFamilyOf(d.Format);
+        if (!family) family = depthFamilyOfView(d.Format);
         if (!family) return fail(E_INVALIDARG, at + "Format = " + formatName(d.Format) + " with BIND_DEPTH_STENCIL: not a depth format");
+        if ((d.BindFlags & D3D11_BIND_SHADER_RESOURCE) && family->typeless != d.Format)
+            return fail(E_INVALIDARG, at + "BindFlags = " + std::to_string(d.BindFlags) + " with Format = " + formatName(d.Format) +
+                                          ": a depth texture a shader samples is made typeless (" + formatName(family->typeless) + ")");
         format = family->sampled;
         return S_OK;
     }
@@ -96,6 +102,12 @@ HRESULT checkViewSlices(const std::string& at, UINT first, UINT count, UINT slic
 }
 
 HRESULT checkLineViewFormat(const std::string& at, DXGI_FORMAT viewFormat, const LineTexture& t) {
+    if (const DepthFamily* family = depthFamilyOf(t.desc.Format)) {  // a typeless depth texture: its depth view
+        if (viewFormat == family->sampledView) return S_OK;
+        return fail(viewFormat == family->stencilView && viewFormat != DXGI_FORMAT_UNKNOWN ? E_NOTIMPL : E_INVALIDARG,
+                    at + "Format = " + formatName(viewFormat) + " for a " + formatName(t.desc.Format) + " 1D texture (its shader-resource view is " +
+                        formatName(family->sampledView) + "; a 1D stencil view: not yet)");
+    }
     if (viewFormat == DXGI_FORMAT_UNKNOWN || viewFormat == t.desc.Format) return S_OK;
     return fail(E_NOTIMPL, at + "Format = " + formatName(viewFormat) + " for a " + formatName(t.desc.Format) + " 1D texture: fxport views it in its own format");
 }
@@ -163,8 +175,11 @@ HRESULT lineShaderResourceView(Device* device, LineTexture* t, const D3D11_SHADE
     if (!(t->desc.BindFlags & D3D11_BIND_SHADER_RESOURCE))
         return fail(E_INVALIDARG, std::string(call) + ": the texture's BindFlags = " + std::to_string(t->desc.BindFlags) + " lack D3D11_BIND_SHADER_RESOURCE");
     D3D11_SHADER_RESOURCE_VIEW_DESC d = defaultLineView(*t);
+    if (!pDesc && depthFamilyOf(t->desc.Format))
+        return fail(E_INVALIDARG, std::string(call) + ": pDesc is null for a " + formatName(t->desc.Format) + " texture (a typeless texture's view names its Format)");
     if (pDesc)
         if (HRESULT hr = checkLineSrv(*t, *pDesc, d); FAILED(hr)) return hr;
+    if (pDesc && pDesc->Format != DXGI_FORMAT_UNKNOWN) d.Format = pDesc->Format;
     if (!pp) return succeed();
     return guarded(call, [&] {
         auto view = std::unique_ptr<ShaderResourceView, void (*)(ShaderResourceView*)>(new ShaderResourceView(device, t, d),

@@ -4,12 +4,16 @@
 // render-target or depth-stencil view is one slice of one level (a cascaded shadow map: a
 // typeless depth array drawn slice by slice, sampled as a whole) or a layered view of several,
 // drawn into through SV_RenderTargetArrayIndex. D3D numbers subresources level + slice *
-// MipLevels, which pInitialData follows. Not here yet: unordered-access arrays, multisampled
-// arrays (Texture2DMSArray). A cube array's TEXTURECUBEARRAY view is a GL cube map array view of
+// MipLevels, which pInitialData follows. Multisampled arrays (Texture2DMSArray) are made here, their
+// views in resources_multisample_array.cpp. Not here yet: unordered-access arrays. A cube array's TEXTURECUBEARRAY view is a GL cube map array view of
 // its layers.
 #include <cstring>
 
 #include "d3d11_impl.h"
+#include "device/array_format_view.h"
+#include "device/cube_view.h"
+#include "device/multisample_target.h"
+#include "device/target_view.h"
 #include "guarded.h"
 
 namespace fxport::d3d11 {
@@ -18,11 +22,10 @@ namespace {
 
 constexpr UINT kMaxSlices = 2048;  // D3D11_REQ_TEXTURE2D_ARRAY_AXIS_DIMENSION
 
-// What fxport's arrays are not yet, each E_NOTIMPL naming the field.
-HRESULT checkArrayScope(const D3D11_TEXTURE2D_DESC& d, const std::string& at) {
-    if (d.SampleDesc.Count > 1)
-        return fail(E_NOTIMPL, at + "SampleDesc.Count = " + std::to_string(d.SampleDesc.Count) + " with ArraySize = " + std::to_string(d.ArraySize) +
-                                   ": multisampled arrays (Texture2DMSArray) are not supported yet");
+// What fxport's arrays are not yet, each E_NOTIMPL naming the field; a multisampled array
+// (Texture2DMSArray) has the rules of a multisampled texture.
+HRESULT checkArrayScope(const D3D11_TEXTURE2D_DESC& d, const std::string& at, bool hasData) {
+    if (d.SampleDesc.Count > 1) return checkMultisampleDesc(d, hasData);
     if (d.BindFlags & D3D11_BIND_UNORDERED_ACCESS)
         return fail(E_NOTIMPL, at + "BindFlags = " + std::to_string(d.BindFlags) + " with ArraySize = " + std::to_string(d.ArraySize) +
                                    ": fxport's array textures are SHADER_RESOURCE, RENDER_TARGET and DEPTH_STENCIL only (no UAV arrays yet)");
@@ -60,7 +63,7 @@ HRESULT arrayFormat(const D3D11_TEXTURE2D_DESC& d, bool hasData, SurfaceFormat& 
         format = family->sampled;
         return S_OK;
     }
-    if (textureFormat(d.Format, format)) return checkCompressedUse(at, d, format);
+    if (textureFormat(d.Format, format) || typelessColourStorage(d.Format, format)) return checkCompressedUse(at, d, format);
     return fail(d.Format == DXGI_FORMAT_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
                 at + "Format = " + formatName(d.Format) + " (" + std::to_string(d.Format) + "): not an array texture format fxport supports (docs/API.md lists them)");
 }
@@ -70,7 +73,7 @@ HRESULT checkArrayDesc(const D3D11_TEXTURE2D_DESC& d, bool hasData, SurfaceForma
     const std::string at = "CreateTexture2D: D3D11_TEXTURE2D_DESC.";
     if (d.ArraySize > kMaxSlices) return fail(E_INVALIDARG, at + "ArraySize = " + std::to_string(d.ArraySize) + " (1 to 2048)");
     if (d.SampleDesc.Count == 0) return fail(E_INVALIDARG, at + "SampleDesc.Count = 0");
-    if (HRESULT hr = checkArrayScope(d, at); FAILED(hr)) return hr;
+    if (HRESULT hr = checkArrayScope(d, at, hasData); FAILED(hr)) return hr;
     const int full = fullMipCount(d.Width, d.Height);
     if (int(d.MipLevels) > full)
         return fail(E_INVALIDARG, at + "MipLevels = " + std::to_string(d.MipLevels) + " (a " + std::to_string(d.Width) + "x" + std::to_string(d.Height) +
@@ -110,15 +113,14 @@ HRESULT fillArray(Texture& t, const D3D11_SUBRESOURCE_DATA* initial) {
     return S_OK;
 }
 
-// The slices [first, first + count) a view names, inside the texture's `slices`.
+}  // namespace
+
 HRESULT checkSlices(const std::string& at, UINT first, UINT count, int slices) {
     if (count == 0 || first >= UINT(slices) || count > UINT(slices) - first)
         return fail(E_INVALIDARG, at + "FirstArraySlice + ArraySize = " + std::to_string(first) + " + " + std::to_string(count) + " (the texture has " +
                                       std::to_string(slices) + " slices)");
     return S_OK;
 }
-
-}  // namespace
 
 HRESULT createTextureArray(Device* device, const D3D11_TEXTURE2D_DESC& d, const D3D11_SUBRESOURCE_DATA* pInitialData, ID3D11Texture2D** pp) {
     SurfaceFormat format = SurfaceFormat::Color;
@@ -132,6 +134,9 @@ HRESULT createTextureArray(Device* device, const D3D11_TEXTURE2D_DESC& d, const 
         t.desc.MipLevels = UINT(t.levels);
         if (d.Usage == D3D11_USAGE_STAGING)
             for (int sub = 0; sub < t.subresources(); ++sub) t.staging.emplace_back(t.levelBytes(sub % t.levels), 0);
+        else if (d.SampleDesc.Count > 1)
+            t.array = std::make_unique<core::MultisampleArray>(device->core(), int(d.Width), int(d.Height), int(d.ArraySize), format,
+                                                               int(d.SampleDesc.Count));
         else
             t.array = std::make_unique<fxport::Texture2DArray>(device->core(), int(d.Width), int(d.Height), int(d.ArraySize), t.levels, format);
         if (pInitialData)
@@ -170,8 +175,34 @@ HRESULT cubeArrayShaderResourceView(Device* device, Texture* t, const D3D11_SHAD
         auto view = std::unique_ptr<ShaderResourceView, void (*)(ShaderResourceView*)>(new ShaderResourceView(device, t, d),
                                                                                        [](ShaderResourceView* v) { v->Release(); });
         const auto& c = d.TextureCubeArray;
-        view->arrayRange = std::make_unique<fxport::Texture2DArray>(*t->array, int(c.MostDetailedMip), int(c.MipLevels),
-                                                                    fxport::Texture2DArray::Cubes{int(c.First2DArrayFace), int(c.NumCubes)});
+        const fxport::Texture2DArray::Cubes cubes{int(c.First2DArrayFace), int(c.NumCubes)};
+        if (const SurfaceFormat read = viewSurface(d.Format, *t); read != t->format)  // a typeless cube array read as another member
+            view->arrayRange = std::make_unique<core::ArrayFormatView>(*t->array, int(c.MostDetailedMip), int(c.MipLevels), cubes, read);
+        else
+            view->arrayRange = std::make_unique<fxport::Texture2DArray>(*t->array, int(c.MostDetailedMip), int(c.MipLevels), cubes);
+        *pp = view.release();
+        return succeed();
+    });
+}
+
+// A TEXTURECUBE view of a cube array: its first cube (D3D11_TEX_CUBE_SRV names levels only; another
+// cube is a TEXTURECUBEARRAY view of one cube), read by TextureCube through a GL cube map view.
+HRESULT firstCubeShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_RESOURCE_VIEW_DESC& desc, ID3D11ShaderResourceView** pp) {
+    const std::string call = "CreateShaderResourceView", at = call + ": D3D11_SHADER_RESOURCE_VIEW_DESC.";
+    if (HRESULT f = checkViewFormat(call.c_str(), "D3D11_SHADER_RESOURCE_VIEW_DESC", desc.Format, *t, false); FAILED(f)) return f;
+    const auto& c = desc.TextureCube;
+    const UINT levels = c.MipLevels == UINT(-1) && c.MostDetailedMip < UINT(t->levels) ? UINT(t->levels) - c.MostDetailedMip : c.MipLevels;
+    if (c.MostDetailedMip >= UINT(t->levels) || levels == 0 || levels > UINT(t->levels) - c.MostDetailedMip)
+        return fail(E_INVALIDARG, at + "TextureCube = {MostDetailedMip " + std::to_string(c.MostDetailedMip) + ", MipLevels " +
+                                      std::to_string(c.MipLevels) + "} (the texture has " + std::to_string(t->levels) + " levels)");
+    D3D11_SHADER_RESOURCE_VIEW_DESC d = desc;
+    d.TextureCube = {c.MostDetailedMip, levels};
+    if (d.Format == DXGI_FORMAT_UNKNOWN) d.Format = t->desc.Format;
+    if (!pp) return succeed();
+    return guarded(call.c_str(), [&] {
+        auto view = std::unique_ptr<ShaderResourceView, void (*)(ShaderResourceView*)>(new ShaderResourceView(device, t, d),
+                                                                                       [](ShaderResourceView* v) { v->Release(); });
+        view->cubeRange = std::make_unique<core::CubeView>(*t->array, int(c.MostDetailedMip), int(levels), 0, viewSurface(d.Format, *t));
         *pp = view.release();
         return succeed();
     });
@@ -181,9 +212,11 @@ HRESULT cubeArrayShaderResourceView(Device* device, Texture* t, const D3D11_SHAD
 
 HRESULT arrayShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc, ID3D11ShaderResourceView** pp) {
     const std::string call = "CreateShaderResourceView", at = call + ": D3D11_SHADER_RESOURCE_VIEW_DESC.";
+    if (t->desc.SampleDesc.Count > 1) return multisampleArrayShaderResourceView(device, t, pDesc, pp);
     // A cube array is viewed as cubes by default (D3D's view of the whole resource), or as 2D slices.
     if (isCubeArray(*t) && (!pDesc || pDesc->ViewDimension == D3D11_SRV_DIMENSION_TEXTURECUBEARRAY))
         return cubeArrayShaderResourceView(device, t, pDesc, pp);
+    if (isCubeArray(*t) && pDesc->ViewDimension == D3D11_SRV_DIMENSION_TEXTURECUBE) return firstCubeShaderResourceView(device, t, *pDesc, pp);
     D3D11_SHADER_RESOURCE_VIEW_DESC d;
     d.Format = t->desc.Format;
     d.ViewDimension = D3D11_SRV_DIMENSION_TEXTURE2DARRAY;
@@ -192,8 +225,11 @@ HRESULT arrayShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_R
         if (pDesc->ViewDimension != D3D11_SRV_DIMENSION_TEXTURE2DARRAY)
             return fail(pDesc->ViewDimension == D3D11_SRV_DIMENSION_UNKNOWN ? E_INVALIDARG : E_NOTIMPL,
                         at + "ViewDimension = " + std::to_string(pDesc->ViewDimension) + " (fxport views an array texture as D3D11_SRV_DIMENSION_TEXTURE2DARRAY" +
-                            (isCubeArray(*t) ? std::string(", a cube array also as TEXTURECUBEARRAY; a TEXTURECUBE view of it: not yet)") : std::string(")")));
+                            (isCubeArray(*t) ? std::string(", a cube array also as TEXTURECUBEARRAY or TEXTURECUBE)") : std::string(")")));
         if (HRESULT f = checkViewFormat(call.c_str(), "D3D11_SHADER_RESOURCE_VIEW_DESC", pDesc->Format, *t, false); FAILED(f)) return f;
+        if (depthFamilyOf(t->desc.Format) && viewSurface(pDesc->Format, *t) != t->format)
+            return fail(E_NOTIMPL, at + "Format = " + formatName(pDesc->Format) + " of a " + formatName(t->desc.Format) +
+                                       " array: no stencil view of a depth array yet");
         const auto& a = pDesc->Texture2DArray;
         if (a.MostDetailedMip >= UINT(t->levels))
             return fail(E_INVALIDARG, at + "Texture2DArray.MostDetailedMip = " + std::to_string(a.MostDetailedMip) + " (the texture has " +
@@ -211,7 +247,10 @@ HRESULT arrayShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_R
         auto view = std::unique_ptr<ShaderResourceView, void (*)(ShaderResourceView*)>(new ShaderResourceView(device, t, d),
                                                                                        [](ShaderResourceView* v) { v->Release(); });
         const auto& a = d.Texture2DArray;
-        if (a.MostDetailedMip != 0 || a.MipLevels != UINT(t->levels) || a.FirstArraySlice != 0 || a.ArraySize != UINT(t->slices()))
+        if (const SurfaceFormat read = viewSurface(d.Format, *t); read != t->format)  // a typeless array read as another member
+            view->arrayRange = std::make_unique<core::ArrayFormatView>(*t->array, int(a.MostDetailedMip), int(a.MipLevels), int(a.FirstArraySlice),
+                                                                       int(a.ArraySize), read);
+        else if (a.MostDetailedMip != 0 || a.MipLevels != UINT(t->levels) || a.FirstArraySlice != 0 || a.ArraySize != UINT(t->slices()))
             view->arrayRange = std::make_unique<fxport::Texture2DArray>(*t->array, int(a.MostDetailedMip), int(a.MipLevels), int(a.FirstArraySlice),
                                                                         int(a.ArraySize));
         *pp = view.release();
@@ -220,6 +259,7 @@ HRESULT arrayShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_R
 }
 
 HRESULT arrayRenderTargetView(Device* device, Texture* t, const D3D11_RENDER_TARGET_VIEW_DESC* pDesc, ID3D11RenderTargetView** pp) {
+    if (t->desc.SampleDesc.Count > 1) return multisampleArrayRenderTargetView(device, t, pDesc, pp);
     const std::string call = "CreateRenderTargetView", at = call + ": D3D11_RENDER_TARGET_VIEW_DESC.";
     D3D11_RENDER_TARGET_VIEW_DESC d;
     d.Format = t->desc.Format;
@@ -242,7 +282,10 @@ HRESULT arrayRenderTargetView(Device* device, Texture* t, const D3D11_RENDER_TAR
         auto view = std::unique_ptr<RenderTargetView, void (*)(RenderTargetView*)>(new RenderTargetView(device, t, d),
                                                                                    [](RenderTargetView* v) { v->Release(); });
         // Several slices: a layered target, each primitive in the slice its SV_RenderTargetArrayIndex names.
-        view->slice = std::make_unique<RenderTarget2D>(*t->array, int(a.FirstArraySlice), int(a.MipSlice), int(a.ArraySize));
+        if (const SurfaceFormat written = viewSurface(d.Format, *t); written != t->format)  // a typeless array in another member
+            view->slice = std::make_unique<core::TargetView>(*t->array, int(a.FirstArraySlice), int(a.MipSlice), int(a.ArraySize), written);
+        else
+            view->slice = std::make_unique<RenderTarget2D>(*t->array, int(a.FirstArraySlice), int(a.MipSlice), int(a.ArraySize));
         *pp = view.release();
         return succeed();
     });

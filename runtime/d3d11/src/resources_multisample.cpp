@@ -1,8 +1,8 @@
 // Multisampled 2D textures (SampleDesc.Count > 1): the description checks, and ResolveSubresource.
 // fxport's are render targets (a shader may also read them, Texture2DMS, through a TEXTURE2DMS
-// view) of one level and one slice, with the standard sample pattern: GL's fixed sample
-// locations. Their texels reach the CPU as D3D code reads them: resolved into a single-sample
-// texture, then copied to a staging one.
+// view) of one level, with the standard sample pattern: GL's fixed sample locations; arrays of
+// them (Texture2DMSArray) are made in resources_array.cpp. Their texels reach the CPU as D3D code
+// reads them: resolved (a slice at a time) into a single-sample texture, then copied to a staging one.
 #include "context.h"
 #include "d3d11_impl.h"
 #include "device/multisample_target.h"
@@ -25,9 +25,10 @@ HRESULT checkMultisampleDesc(const D3D11_TEXTURE2D_DESC& d, bool hasData) {
     if (d.BindFlags & D3D11_BIND_UNORDERED_ACCESS)
         return fail(E_INVALIDARG, at + "BindFlags = " + std::to_string(d.BindFlags) + ": a multisampled texture has no unordered-access views");
     if (d.MiscFlags) return fail(E_INVALIDARG, at + "MiscFlags = " + std::to_string(d.MiscFlags) + " for a multisampled texture (must be 0)");
-    if (d.ArraySize != 1)
-        return fail(E_NOTIMPL, at + "ArraySize = " + std::to_string(d.ArraySize) + " with SampleDesc.Count = " + std::to_string(count) +
-                                   ": multisampled texture arrays are not supported yet");
+    if (d.ArraySize != 1 && d.BindFlags != (D3D11_BIND_RENDER_TARGET | D3D11_BIND_SHADER_RESOURCE) && d.BindFlags != D3D11_BIND_RENDER_TARGET)
+        return fail(E_NOTIMPL, at + "BindFlags = " + std::to_string(d.BindFlags) + " with ArraySize = " + std::to_string(d.ArraySize) + " and SampleDesc.Count = " +
+                                   std::to_string(count) + ": fxport's multisampled arrays are colour render targets (RENDER_TARGET, and SHADER_RESOURCE; "
+                                   "no multisampled depth arrays yet)");
     // Colour targets (read by Texture2DMS too), or depth-stencil buffers drawn beside them.
     const bool colour = (d.BindFlags & D3D11_BIND_RENDER_TARGET) && !(d.BindFlags & D3D11_BIND_DEPTH_STENCIL);
     if (!colour && d.BindFlags != D3D11_BIND_DEPTH_STENCIL)
@@ -37,22 +38,36 @@ HRESULT checkMultisampleDesc(const D3D11_TEXTURE2D_DESC& d, bool hasData) {
     return S_OK;
 }
 
+// A multisampled texture has one level, so its subresource is its slice; the destination's is
+// D3D's level + slice * MipLevels of a single-sample texture or array of the source's size there.
 void Context::ResolveSubresource(ID3D11Resource* pDst, UINT DstSubresource, ID3D11Resource* pSrc, UINT SrcSubresource, DXGI_FORMAT Format) {
     const char* call = "ResolveSubresource";
     auto *dst = own<Texture>(pDst, device_), *src = own<Texture>(pSrc, device_);
     if (!dst || !src) return note("ResolveSubresource: the resources are not two 2D textures of this device");
     auto* samples = dynamic_cast<core::MultisampleTarget*>(src->colour.get());
-    if (!samples) return note("ResolveSubresource: the source was not made with SampleDesc.Count > 1");
-    if (dst->desc.SampleDesc.Count != 1 || !dst->colour || dst->cube)
-        return note("ResolveSubresource: the destination is not a single-sample 2D texture of USAGE_DEFAULT");
-    if (DstSubresource != 0 || SrcSubresource != 0)
-        return note("ResolveSubresource: DstSubresource = " + std::to_string(DstSubresource) + ", SrcSubresource = " + std::to_string(SrcSubresource) +
-                    ": fxport resolves subresource 0 into subresource 0");
+    auto* layers = dynamic_cast<core::MultisampleArray*>(src->array.get());
+    if (!samples && !layers) return note("ResolveSubresource: the source was not made with SampleDesc.Count > 1");
+    if (dst->desc.SampleDesc.Count != 1 || !(dst->colour || dst->array) || dst->cube || dst->desc.Usage != D3D11_USAGE_DEFAULT)
+        return note("ResolveSubresource: the destination is not a single-sample 2D texture or array of USAGE_DEFAULT");
+    if (SrcSubresource >= UINT(src->slices()))
+        return note("ResolveSubresource: SrcSubresource = " + std::to_string(SrcSubresource) + " (the source has " + std::to_string(src->slices()) +
+                    " slices of one level)");
+    Subresource at;
+    if (!splitSubresource(*dst, DstSubresource, at))
+        return note("ResolveSubresource: DstSubresource = " + std::to_string(DstSubresource) + " (the destination has " +
+                    std::to_string(dst->subresources()) + ")");
+    if (dst->levelWidth(at.level) != int(src->desc.Width) || dst->levelHeight(at.level) != int(src->desc.Height))
+        return note("ResolveSubresource: DstSubresource = " + std::to_string(DstSubresource) + " is " + std::to_string(dst->levelWidth(at.level)) + "x" +
+                    std::to_string(dst->levelHeight(at.level)) + ", the source " + std::to_string(src->desc.Width) + "x" + std::to_string(src->desc.Height));
     if (Format != src->desc.Format || Format != dst->desc.Format)
         return note(std::string("ResolveSubresource: Format = ") + formatName(Format) + " for a " + formatName(src->desc.Format) + " source and a " +
                     formatName(dst->desc.Format) + " destination (fxport resolves between textures of that one format)");
+    if (samples && dst->array)
+        return note("ResolveSubresource: a multisampled 2D texture into a slice of an array: not yet (resolve into a 2D texture)");
     guarded(call, [&] {
-        samples->resolveInto(*dst->colour);
+        if (layers && dst->array) layers->resolveInto(int(SrcSubresource), *dst->array, at.slice, at.level);
+        else if (layers) layers->resolveInto(int(SrcSubresource), *dst->colour);
+        else samples->resolveInto(*dst->colour);
         return succeed();
     });
 }

@@ -7,6 +7,8 @@
 #include <optional>
 
 #include "d3d11_impl.h"
+#include "device/cube_view.h"
+#include "device/target_view.h"
 #include "guarded.h"
 
 namespace fxport::d3d11 {
@@ -39,12 +41,12 @@ HRESULT needsDescription(const char* call, const Texture& t, bool given) {
     return fail(E_INVALIDARG, std::string(call) + ": pDesc is null for a " + formatName(t.desc.Format) + " texture (a typeless texture's view names its Format)");
 }
 
-// Render-target and unordered-access views of a typeless colour texture write its stored format.
+// Render-target and unordered-access views of a typeless colour texture in another member of its
+// family write through a GL texture view of level 0 (a multisampled one: in its stored format only).
 HRESULT checkStoredFormat(const char* call, const char* desc, DXGI_FORMAT viewFormat, const Texture& t) {
-    if (viewSurface(viewFormat, t) == t.format) return S_OK;
-    return fail(E_NOTIMPL, std::string(call) + ": " + desc + ".Format = " + formatName(viewFormat) + " of a " + formatName(t.desc.Format) +
-                               " texture: fxport writes it in the format it stores (" + surfaceFormatName(t.format) +
-                               "); shader-resource views read the others");
+    if (viewSurface(viewFormat, t) == t.format || (t.colour && t.desc.SampleDesc.Count == 1)) return S_OK;
+    return fail(E_NOTIMPL, std::string(call) + ": " + desc + ".Format = " + formatName(viewFormat) + " of a multisampled " + formatName(t.desc.Format) +
+                               " texture: fxport writes it in the format it stores (" + surfaceFormatName(t.format) + ")");
 }
 
 // FirstElement's byte offset must be a multiple of the GL's alignment for a view of part of a
@@ -182,7 +184,7 @@ HRESULT Device::CreateShaderResourceView(ID3D11Resource* pResource, const D3D11_
     }
     if (pDesc && pDesc->Format != DXGI_FORMAT_UNKNOWN) d.Format = pDesc->Format;
     const SurfaceFormat read = viewSurface(d.Format, *t);
-    if (read != t->format && (!t->colour || multisampled))
+    if (read != t->format && ((!t->colour && !t->cube) || multisampled))
         return fail(E_NOTIMPL, std::string(call) + ": D3D11_SHADER_RESOURCE_VIEW_DESC.Format = " + formatName(d.Format) + " of a " +
                                    formatName(t->desc.Format) + " " + (t->cube ? "cube" : "multisampled") +
                                    " texture: fxport reads those in their stored format only");
@@ -190,7 +192,8 @@ HRESULT Device::CreateShaderResourceView(ID3D11Resource* pResource, const D3D11_
     return guarded(call, [&] {
         auto view = std::unique_ptr<ShaderResourceView, void (*)(ShaderResourceView*)>(new ShaderResourceView(this, t, d),
                                                                                        [](ShaderResourceView* v) { v->Release(); });
-        if (read != t->format) view->formatView = std::make_unique<fxport::Texture2D>(*t->colour, read);  // a GL texture view
+        if (read != t->format && t->cube) view->cubeRange = std::make_unique<core::CubeView>(*t->cube, read);  // GL texture views
+        else if (read != t->format) view->formatView = std::make_unique<fxport::Texture2D>(*t->colour, read);
         *ppSRView = view.release();
         return succeed();
     });
@@ -226,8 +229,14 @@ HRESULT Device::CreateRenderTargetView(ID3D11Resource* pResource, const D3D11_RE
                                        std::to_string(pDesc->Texture2D.MipSlice) + ": fxport renders into level 0");
     }
     if (!ppRTView) return succeed();
-    *ppRTView = new RenderTargetView(this, t, d);
-    return succeed();
+    return guarded(call, [&] {
+        auto view = std::unique_ptr<RenderTargetView, void (*)(RenderTargetView*)>(new RenderTargetView(this, t, d),
+                                                                                   [](RenderTargetView* v) { v->Release(); });
+        if (const SurfaceFormat written = viewSurface(d.Format, *t); written != t->format)
+            view->slice = std::make_unique<core::TargetView>(*t->colour, written);  // another member of a typeless family
+        *ppRTView = view.release();
+        return succeed();
+    });
 }
 
 HRESULT Device::CreateDepthStencilView(ID3D11Resource* pResource, const D3D11_DEPTH_STENCIL_VIEW_DESC* pDesc,
@@ -327,6 +336,8 @@ HRESULT Device::CreateUnorderedAccessView(ID3D11Resource* pResource, const D3D11
                                                                                          [](UnorderedAccessView* v) { v->Release(); });
         view->range = range;
         if (typed) view->typed = std::make_unique<core::TexelBuffer>(core(), *b->gpu, *typed, std::size_t(range.count), std::size_t(range.first));
+        if (t && viewSurface(d.Format, *t) != t->format)  // another member of a typeless family: a GL texture view
+            view->formatView = std::make_unique<fxport::Texture2D>(*t->colour, viewSurface(d.Format, *t));
         *ppUAView = view.release();
         return succeed();
     });

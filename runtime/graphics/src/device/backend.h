@@ -107,6 +107,14 @@ struct TextureCopy {
     int sourceLayer = -1, destinationLayer = -1;
 };
 
+// A copySamples: level 0 of `source` (layer `sourceLayer` of an array, -1 for a 2D texture) into
+// level `destinationLevel` of `destination` (layer `destinationLayer`, or -1), width x height texels.
+struct SampleCopy {
+    BackendObject source = 0, destination = 0;
+    int sourceLayer = -1, destinationLayer = -1, destinationLevel = 0;
+    int width = 0, height = 0;
+};
+
 // What a query measures: the samples passing the depth and stencil tests, a GPU timestamp, or one
 // of the pipeline statistics (GL_ARB_pipeline_statistics_query's counters), those in the order of
 // D3D11_QUERY_DATA_PIPELINE_STATISTICS's members (IAVertices ... CSInvocations).
@@ -250,14 +258,20 @@ public:
     // The same over a 2D array's layers read as cubes (a cube map array: `layers` a multiple of 6,
     // square levels; D3D11's TEXTURECUBEARRAY view). 0 when the API cannot make it.
     virtual BackendObject createCubeArrayView(BackendObject source, SurfaceFormat format, int firstLevel, int levels, int firstLayer, int layers) = 0;
+    // The same over six layers from `firstLayer` read as one cube (D3D11's TEXTURECUBE view of a cube array).
+    virtual BackendObject createCubeView(BackendObject source, SurfaceFormat format, int firstLevel, int levels, int firstLayer) = 0;
     // Multisampled 2D textures (D3D10+'s SampleDesc.Count > 1), fixed sample positions: render
     // targets a shader reads sample by sample. `given` is the count the driver made (it may round
-    // up). copySamples copies level 0 between a multisampled and a single-sample texture of one
-    // size and format: a resolve (each pixel the average of its samples, for non-integer formats)
+    // up). copySamples copies between a multisampled texture (or layer) and a single-sample one of
+    // one size and format: a resolve (each pixel the average of its samples, for non-integer formats)
     // or the other way (each sample the source's texel). multisampledUnits: the texture units a
-    // program's sampler2DMS uniforms read, one bit each.
+    // program's sampler2DMS and sampler2DMSArray uniforms read, one bit each.
     virtual BackendObject createMultisampleTexture(SurfaceFormat format, int samples, int width, int height, int& given) = 0;
-    virtual void copySamples(BackendObject source, BackendObject destination, int width, int height) = 0;
+    // The same as an array of `layers` layers (D3D11's Texture2DMSArray). createTextureView of it
+    // gives multisampled views; copySamples reads a layer of it named in the SampleCopy (not a view:
+    // Mesa's blits read a multisampled view's first layer of the array, whatever the view's).
+    virtual BackendObject createMultisampleArrayTexture(SurfaceFormat format, int samples, int width, int height, int layers, int& given) = 0;
+    virtual void copySamples(const SampleCopy& copy) = 0;
     virtual unsigned multisampledUnits(BackendObject program) = 0;
 
     // Depth/stencil buffers (renderbuffers) and framebuffers. createFramebuffer returns 0 and says

@@ -299,6 +299,7 @@ struct GraphicsDevice::Impl {
     BackendObject createTextureView(const std::string& who, BackendObject source, SurfaceFormat format, bool array, int firstLevel, int levels,
                                     int firstLayer, int layers);
     BackendObject createMultisampleTexture(SurfaceFormat format, int samples, int width, int height, int& given);
+    BackendObject createMultisampleArrayTexture(SurfaceFormat format, int samples, int width, int height, int layers, int& given);
     void deleteTexture(BackendObject& name);
     BackendObject createBuffer();
     void deleteBuffer(BackendObject& name);

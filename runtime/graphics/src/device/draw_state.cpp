@@ -194,27 +194,33 @@ void GraphicsDevice::Impl::applyTexturesOf(const ShaderProgram* const* programs,
         const ShaderProgram* program = programs[p];
         if (!program) continue;
         if (!program->multisampledUnits) program->multisampledUnits = program->program ? backend->multisampledUnits(program->program) : 0u;
+        // XNA: an SM 1-3 vertex shader's samplers read VertexTextures[] and VertexSamplerStates[]
+        // by their s# (D3D9's vertex texture samplers); every other sampler Textures[unit].
+        const bool vertexTextures = program->stage == 0 && program->shader->profile.isD3D9();
+        const char* const collection = vertexTextures ? "VertexTextures" : "Textures";
         // An array of samplers (`Texture2D t[3]`) takes a unit per element, from sampler.unit on.
         for (const xlate::SamplerBinding& sampler : program->shader->samplers) {
             for (int element = 0; element < std::max(sampler.elements, 1); ++element) {
                 int unit = sampler.unit + element;
                 if (unit < 0 || unit >= kMaxTextureSlots) continue;
-                Texture* texture = device.Textures[unit].get();
+                const int slot = vertexTextures ? sampler.samplerRegister + element : unit;
+                if (slot < 0 || slot >= kMaxTextureSlots) continue;
+                Texture* texture = (vertexTextures ? device.VertexTextures : device.Textures)[slot].get();
                 BackendObject name = texture ? texture->backendObject() : 0;
                 const bool readsSamples = ((*program->multisampledUnits >> unit) & 1u) != 0;
                 if (texture) {
                     if (&texture->device() != &device)  // its GL name means nothing in this device's context
-                        throw InvalidOperation("Draw: texture " + textureName(texture) + " in Textures[" + std::to_string(unit) +
+                        throw InvalidOperation("Draw: texture " + textureName(texture) + " in " + collection + "[" + std::to_string(slot) +
                                                "] was made by another GraphicsDevice; make it with this one");
                     for (const RenderTargetBinding& b : targets)
                         if (b.RenderTarget == texture)
-                            throw InvalidOperation("Draw: texture " + textureName(texture) + " in Textures[" +
-                                                   std::to_string(unit) + "] is also the current render target; " +
+                            throw InvalidOperation("Draw: texture " + textureName(texture) + " in " + collection + "[" +
+                                                   std::to_string(slot) + "] is also the current render target; " +
                                                    "set another render target (or clear the slot) before sampling it");
                     // GL reads a texture of another dimension than the sampler's as black: a D3D debug-layer error instead.
                     if (shapeOf(texture->kind()) != sampler.kind)
                         throw InvalidOperation(std::string("Draw: ") + program->label + " samples a " + shapeName(sampler.kind) +
-                                               " texture at unit " + std::to_string(unit) + " but Textures[" + std::to_string(unit) +
+                                               " texture at unit " + std::to_string(unit) + " but " + collection + "[" + std::to_string(slot) +
                                                "] holds a " + shapeName(shapeOf(texture->kind())) + " texture " + textureName(texture));
                     if (texture->sampleCount() > 0 && !readsSamples)
                         throw InvalidOperation(std::string("Draw: ") + program->label + " samples unit " + std::to_string(unit) + " as a Texture2D but Textures[" +
@@ -228,8 +234,8 @@ void GraphicsDevice::Impl::applyTexturesOf(const ShaderProgram* const* programs,
                 }
                 // The sampler-object lookup (a map keyed by the state's bytes) runs only when the
                 // slot's state differs from what is bound, not on every draw.
-                const SamplerState& wanted = texture && isIntegerFormat(texture->Format()) ? unfiltered(device.SamplerStates[unit])
-                                                                                             : device.SamplerStates[unit];
+                const SamplerState& given = (vertexTextures ? device.VertexSamplerStates : device.SamplerStates)[slot];
+                const SamplerState& wanted = texture && isIntegerFormat(texture->Format()) ? unfiltered(given) : given;
                 std::size_t u = std::size_t(unit);
                 if (shadow.unknown() || boundSamplers[u] == 0 || !(boundSamplerStates[u] == wanted)) {
                     BackendObject object = samplerFor(wanted);

@@ -673,6 +673,11 @@ BackendObject GraphicsDevice::Impl::createMultisampleTexture(SurfaceFormat forma
     ++live.textures;
     return name;
 }
+BackendObject GraphicsDevice::Impl::createMultisampleArrayTexture(SurfaceFormat format, int samples, int width, int height, int layers, int& given) {
+    const BackendObject name = backend->createMultisampleArrayTexture(format, samples, width, height, layers, given);
+    ++live.textures;
+    return name;
+}
 void GraphicsDevice::Impl::deleteTexture(BackendObject& name) {
     if (!name) return;
     for (int unit = 0; unit < kMaxTextureSlots; ++unit)

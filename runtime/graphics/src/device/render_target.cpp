@@ -52,6 +52,7 @@ RenderTarget2D::RenderTarget2D(Texture2DArray& array, int layer, int level, int 
     : Texture2D(array.device(), "RenderTarget2D", array.levelWidth(level), array.levelHeight(level), array.Format(),
                 array.layerView("a RenderTarget2D over layers", layer, level, layers)),
       usage_(fxport::RenderTargetUsage::PreserveContents) {
+    samples_ = array.sampleCount();  // layers of a multisampled array (core::MultisampleArray)
     checkRenderable(device(), describe(), Format());
     adoptDepth(device(), depth_, DepthFormat::None, Width(), Height());
 }

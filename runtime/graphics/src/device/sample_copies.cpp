@@ -14,7 +14,12 @@ BackendObject GraphicsDevice::Impl::sampleCopyOf(const Texture& texture) {
         copy = createMultisampleTexture(texture.Format(), 1, size.Width, size.Height, given);
     }
     resolvePendingClearBeforeRead(&texture);
-    backend->copySamples(texture.backendObject(), copy, size.Width, size.Height);
+    SampleCopy samples;
+    samples.source = texture.backendObject();
+    samples.destination = copy;
+    samples.width = size.Width;
+    samples.height = size.Height;
+    backend->copySamples(samples);
     return copy;
 }
 

@@ -39,8 +39,10 @@ Texture::Texture(fxport::GraphicsDevice& device, const char* typeName, Kind kind
 
 void Texture::releaseGpuObjects() {
     GraphicsDevice::Impl& d = deviceImpl(device());
-    for (int slot = 0; slot < kMaxTextureSlots; ++slot)
+    for (int slot = 0; slot < kMaxTextureSlots; ++slot) {
         if (device().Textures[slot].get() == this) device().Textures[slot] = nullptr;
+        if (device().VertexTextures[slot].get() == this) device().VertexTextures[slot] = nullptr;
+    }
     for (Effect* effect : d.effects) effectImpl(*effect).forgetTexture(this);
     d.forgetStorage(this);
     d.forgetSampleCopy(this);

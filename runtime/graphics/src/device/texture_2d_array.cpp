@@ -45,6 +45,7 @@ Texture2DArray::Texture2DArray(Texture2DArray& source, int firstLevel, int level
                             source.describe() + ", which has " + std::to_string(source.LevelCount()) + " levels and " +
                             std::to_string(source.Layers()) + " layers");
     name_ = deviceImpl(device()).createTextureView(describe(), source.backendObject(), format_, true, firstLevel, levels, firstLayer, layers);
+    samples_ = source.samples_;  // a view of a multisampled array (core::MultisampleArray) is one too
 }
 
 Texture2DArray::Texture2DArray(Texture2DArray& source, int firstLevel, int levels, Cubes cubes)
@@ -72,7 +73,9 @@ std::uint32_t Texture2DArray::layerView(const char* who, int layer, int level, i
 
 Texture2D::Texture2D(Texture2DArray& array, int layer, int level, int layers)
     : Texture2D(array.device(), "Texture2D", array.levelWidth(level), array.levelHeight(level), array.Format(),
-                array.layerView("a Texture2D over layers", layer, level, layers)) {}
+                array.layerView("a Texture2D over layers", layer, level, layers)) {
+    samples_ = array.sampleCount();
+}
 
 std::size_t Texture2DArray::layerBytes(int level) const {
     return regionBytes(format_, levelWidth(level), levelHeight(level));

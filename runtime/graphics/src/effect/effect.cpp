@@ -109,6 +109,7 @@ std::vector<SamplerSlot> samplerSlotsOf(const xlate::CompiledShader& shader, con
         if (sampler.unit < 0 || sampler.unit >= kMaxTextureSlots) continue;
         SamplerSlot slot;
         slot.unit = sampler.unit;
+        if (shader.profile.stage == xlate::ShaderStage::Vertex && shader.profile.isD3D9()) slot.vertexRegister = sampler.samplerRegister;
         if (!sampler.textureParameter.empty()) {
             auto it = e.parameterIndex.find(sampler.textureParameter);
             if (it != e.parameterIndex.end()) slot.textureParameter = it->second;
@@ -126,6 +127,7 @@ std::vector<SamplerSlot> samplerSlotsOf(const xlate::CompiledShader& shader, con
         for (int k = 1; k < sampler.elements && sampler.unit + k < kMaxTextureSlots; ++k) {
             SamplerSlot element = slot;
             element.unit = sampler.unit + k;
+            if (slot.vertexRegister >= 0) element.vertexRegister = slot.vertexRegister + k;
             element.textureParameter = SamplerSlot{}.textureParameter;
             out.push_back(element);
         }

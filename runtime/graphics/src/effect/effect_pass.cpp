@@ -119,10 +119,15 @@ void EffectPass::applyThis() {
         }
         for (const SamplerSlot& slot : code.code->samplers[shader]) {
             // A texture parameter left unset does not clear the slot: hosts that feed
-            // Textures[n] directly (as the tutorials do) keep working.
+            // Textures[n] directly (as the tutorials do) keep working. An SM 1-3 vertex shader's
+            // sampler is XNA's vertex texture of its s#.
+            const bool vertex = slot.vertexRegister >= 0 && slot.vertexRegister < kMaxTextureSlots;
+            TextureCollection& textures = vertex ? device.VertexTextures : device.Textures;
+            SamplerStateCollection& states = vertex ? device.VertexSamplerStates : device.SamplerStates;
+            const int index = vertex ? slot.vertexRegister : slot.unit;
             if (slot.textureParameter >= 0 && e.textures[std::size_t(slot.textureParameter)])
-                device.Textures[slot.unit] = e.textures[std::size_t(slot.textureParameter)];
-            device.SamplerStates[slot.unit] = samplerStateOver(slot, e, device.SamplerStates[slot.unit]);
+                textures[index] = e.textures[std::size_t(slot.textureParameter)];
+            states[index] = samplerStateOver(slot, e, states[index]);
         }
     }
     // A stage the pass leaves alone keeps its shader (D3D9). When that is one of this effect's (an

@@ -67,6 +67,7 @@ struct SamplerStateFromParameter {
 // One texture unit a shader samples, ready for Apply().
 struct SamplerSlot {
     int unit = 0;
+    int vertexRegister = -1;    // an SM 1-3 vertex shader's sampler: its s#, the GraphicsDevice::VertexTextures slot
     int textureParameter = -1;  // index into the effect's parameters; -1: Textures[unit] as set by the host
     SamplerOverride state;      // decoded once, when no state reads a parameter
     xlate::SamplerStateDesc literal;                       // the states given as values

@@ -104,10 +104,12 @@ public:
     BackendObject createArrayTexture(SurfaceFormat format, int levels, int width, int height, int layers) override;
     BackendObject createLineTexture(SurfaceFormat format, int levels, int width, int layers, bool array) override;
     BackendObject createCubeArrayView(BackendObject source, SurfaceFormat format, int firstLevel, int levels, int firstLayer, int layers) override;
+    BackendObject createCubeView(BackendObject source, SurfaceFormat format, int firstLevel, int levels, int firstLayer) override;
     BackendObject createTextureView(BackendObject source, SurfaceFormat format, bool array, int firstLevel, int levels, int firstLayer,
                                     int layers) override;
     BackendObject createMultisampleTexture(SurfaceFormat format, int samples, int width, int height, int& given) override;
-    void copySamples(BackendObject source, BackendObject destination, int width, int height) override;
+    BackendObject createMultisampleArrayTexture(SurfaceFormat format, int samples, int width, int height, int layers, int& given) override;
+    void copySamples(const SampleCopy& copy) override;
     unsigned multisampledUnits(BackendObject program) override;
 
     BackendObject createRenderbuffer() override;

@@ -85,6 +85,10 @@ const std::array<detail::GlTextureFormat, kSurfaceFormatCount> kFormats = {{
     {GL_RGB8, GL_BGRA, GL_UNSIGNED_BYTE, 4, 4, false, false},   // Bgrx32
     {GL_SRGB8, GL_BGRA, GL_UNSIGNED_BYTE, 4, 4, false, false},  // Bgrx32SRgb
     {GL_DEPTH32F_STENCIL8, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, 8, 1, true, false},  // Depth32Stencil8
+    // Views of the depth-stencil texels (the internal format a view must keep), read as stencil
+    // indices (GlBackend::createTextureView): integers.
+    {GL_DEPTH24_STENCIL8, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, 4, 2, false, true},   // StencilOfDepth24Stencil8
+    {GL_DEPTH32F_STENCIL8, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, 8, 2, false, true},  // StencilOfDepth32Stencil8
 }};
 
 const char* const kFormatNames[] = {
@@ -97,10 +101,10 @@ const char* const kFormatNames[] = {
     "Bgra32", "Bgra32SRgb", "R16", "Rg8", "R8", "Depth24Stencil8", "Depth16",
     "Dxt1", "Dxt3", "Dxt5", "Dxt1SRgb", "Dxt3SRgb", "Dxt5SRgb", "Bc4", "Bc4SNorm", "Bc5", "Bc5SNorm",
     "Bc6hUFloat", "Bc6hSFloat", "Bc7", "Bc7SRgb", "Rg11B10Float", "Rgb9E5Float", "R16SNorm", "Rg16SNorm",
-    "Rgba16SNorm", "Rgb10A2UInt", "Bgrx32", "Bgrx32SRgb", "Depth32Stencil8",
+    "Rgba16SNorm", "Rgb10A2UInt", "Bgrx32", "Bgrx32SRgb", "Depth32Stencil8", "StencilOfDepth24Stencil8", "StencilOfDepth32Stencil8",
 };
 static_assert(std::size(kFormatNames) == kFormats.size(), "one name per SurfaceFormat");
-static_assert(std::size_t(SurfaceFormat::Depth32Stencil8) + 1 == kFormats.size(), "one row per SurfaceFormat");
+static_assert(std::size_t(SurfaceFormat::StencilOfDepth32Stencil8) + 1 == kFormats.size(), "one row per SurfaceFormat");
 
 }  // namespace
 
@@ -150,7 +154,8 @@ bool isColorRenderable(SurfaceFormat format) {
     if (isCompressedFormat(format) || format == SurfaceFormat::Rgb9E5Float) return false;
     return format != SurfaceFormat::NormalizedByte2 && format != SurfaceFormat::NormalizedByte4 && format != SurfaceFormat::Depth32 &&
            format != SurfaceFormat::Depth24Stencil8 && format != SurfaceFormat::Depth16 &&
-           format != SurfaceFormat::Depth32Stencil8 && format != SurfaceFormat::R16SNorm &&
+           format != SurfaceFormat::Depth32Stencil8 && format != SurfaceFormat::StencilOfDepth24Stencil8 &&
+           format != SurfaceFormat::StencilOfDepth32Stencil8 && format != SurfaceFormat::R16SNorm &&
            format != SurfaceFormat::Rg16SNorm && format != SurfaceFormat::Rgba16SNorm;
 }
 

@@ -29,6 +29,17 @@ void applyD3D9Swizzle(GLuint name, SurfaceFormat format) {
     if (channels <= 2) glTextureParameteri(name, GL_TEXTURE_SWIZZLE_B, GL_ONE);
 }
 
+// A view of a depth-stencil texture's stencil (D3D's X24_TYPELESS_G8_UINT ...): GL reads the
+// stencil index into red; D3D's views hold it in green, with 0 in red and blue and 1 in alpha.
+void applyStencilRead(GLuint name, SurfaceFormat format) {
+    if (format != SurfaceFormat::StencilOfDepth24Stencil8 && format != SurfaceFormat::StencilOfDepth32Stencil8) return;
+    glTextureParameteri(name, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_STENCIL_INDEX);
+    glTextureParameteri(name, GL_TEXTURE_SWIZZLE_R, GL_ZERO);
+    glTextureParameteri(name, GL_TEXTURE_SWIZZLE_G, GL_RED);
+    glTextureParameteri(name, GL_TEXTURE_SWIZZLE_B, GL_ZERO);
+    glTextureParameteri(name, GL_TEXTURE_SWIZZLE_A, GL_ONE);
+}
+
 GLenum glStageOf(int stage) {
     switch (stage) {
     case 0: return GL_VERTEX_SHADER;
@@ -163,7 +174,13 @@ BackendObject GlBackend::createTextureView(BackendObject source, SurfaceFormat f
     // A view keeps its source's dimension: a 1D texture's views are 1D (GL allows no other).
     const GLenum sourceTarget = lineTargetOf(source);
     const bool line = sourceTarget == GL_TEXTURE_1D || sourceTarget == GL_TEXTURE_1D_ARRAY;
-    const GLenum target = line ? (array ? GL_TEXTURE_1D_ARRAY : GL_TEXTURE_1D) : (array ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D);
+    // A multisampled array's views are multisampled (GL allows no other); asked once per view made.
+    GLint made = GL_NONE;
+    if (!line) glGetTextureParameteriv(source, GL_TEXTURE_TARGET, &made);
+    const bool samples = made == GL_TEXTURE_2D_MULTISAMPLE_ARRAY || made == GL_TEXTURE_2D_MULTISAMPLE;
+    const GLenum target = line      ? (array ? GL_TEXTURE_1D_ARRAY : GL_TEXTURE_1D)
+                          : samples ? (array ? GL_TEXTURE_2D_MULTISAMPLE_ARRAY : GL_TEXTURE_2D_MULTISAMPLE)
+                                    : (array ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D);
     glTextureView(name, target, source, detail::glFormat(format).internalFormat, GLuint(firstLevel),
                   GLuint(levels), GLuint(firstLayer), GLuint(layers));
     if (!glIsTexture(name)) {  // refused (no GL_ARB_texture_view, or a range outside the source)
@@ -171,6 +188,7 @@ BackendObject GlBackend::createTextureView(BackendObject source, SurfaceFormat f
         return 0;
     }
     applyD3D9Swizzle(name, format);
+    applyStencilRead(name, format);
     if (line) lineTargets_[name] = target;
     return name;
 }
@@ -181,6 +199,19 @@ BackendObject GlBackend::createCubeArrayView(BackendObject source, SurfaceFormat
     glGenTextures(1, &name);
     glTextureView(name, GL_TEXTURE_CUBE_MAP_ARRAY, source, detail::glFormat(format).internalFormat, GLuint(firstLevel), GLuint(levels),
                   GLuint(firstLayer), GLuint(layers));
+    if (!glIsTexture(name)) {
+        glDeleteTextures(1, &name);
+        return 0;
+    }
+    applyD3D9Swizzle(name, format);
+    return name;
+}
+
+// Six layers of a 2D array read as one cube map (ARB_texture_view's compatible targets too).
+BackendObject GlBackend::createCubeView(BackendObject source, SurfaceFormat format, int firstLevel, int levels, int firstLayer) {
+    GLuint name = 0;
+    glGenTextures(1, &name);
+    glTextureView(name, GL_TEXTURE_CUBE_MAP, source, detail::glFormat(format).internalFormat, GLuint(firstLevel), GLuint(levels), GLuint(firstLayer), 6);
     if (!glIsTexture(name)) {
         glDeleteTextures(1, &name);
         return 0;
@@ -200,6 +231,17 @@ BackendObject GlBackend::createMultisampleTexture(SurfaceFormat format, int samp
     return name;
 }
 
+BackendObject GlBackend::createMultisampleArrayTexture(SurfaceFormat format, int samples, int width, int height, int layers, int& given) {
+    GLuint name = 0;
+    glCreateTextures(GL_TEXTURE_2D_MULTISAMPLE_ARRAY, 1, &name);
+    glTextureStorage3DMultisample(name, samples, detail::glFormat(format).internalFormat, width, height, layers, GL_TRUE);
+    GLint made = 0;
+    glGetTextureLevelParameteriv(name, 0, GL_TEXTURE_SAMPLES, &made);
+    given = made;
+    applyD3D9Swizzle(name, format);
+    return name;
+}
+
 unsigned GlBackend::multisampledUnits(BackendObject program) {
     GLint count = 0;
     glGetProgramInterfaceiv(program, GL_UNIFORM, GL_ACTIVE_RESOURCES, &count);
@@ -209,9 +251,10 @@ unsigned GlBackend::multisampledUnits(BackendObject program) {
         GLint values[3] = {0, -1, 0};
         glGetProgramResourceiv(program, GL_UNIFORM, GLuint(i), 3, properties, 3, nullptr, values);
         const GLenum type = GLenum(values[0]);
-        if (values[1] < 0 || (type != GL_SAMPLER_2D_MULTISAMPLE && type != GL_INT_SAMPLER_2D_MULTISAMPLE &&
-                              type != GL_UNSIGNED_INT_SAMPLER_2D_MULTISAMPLE))
-            continue;
+        const bool samples = type == GL_SAMPLER_2D_MULTISAMPLE || type == GL_INT_SAMPLER_2D_MULTISAMPLE ||
+                             type == GL_UNSIGNED_INT_SAMPLER_2D_MULTISAMPLE || type == GL_SAMPLER_2D_MULTISAMPLE_ARRAY ||
+                             type == GL_INT_SAMPLER_2D_MULTISAMPLE_ARRAY || type == GL_UNSIGNED_INT_SAMPLER_2D_MULTISAMPLE_ARRAY;
+        if (values[1] < 0 || !samples) continue;
         for (GLint element = 0; element < std::max(values[2], 1); ++element) {
             GLint unit = -1;
             glGetUniformiv(program, values[1] + element, &unit);

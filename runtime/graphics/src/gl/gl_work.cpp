@@ -65,12 +65,14 @@ void GlBackend::writeVolume(BackendObject texture, SurfaceFormat format, int lev
         glTextureSubImage3D(texture, level, 0, 0, 0, width, height, depth, f.format, f.type, data);
 }
 
-void GlBackend::copySamples(BackendObject source, BackendObject destination, int width, int height) {
+void GlBackend::copySamples(const SampleCopy& c) {
     GLuint fbos[2] = {0, 0};
     glCreateFramebuffers(2, fbos);
-    glNamedFramebufferTexture(fbos[0], GL_COLOR_ATTACHMENT0, source, 0);
+    if (c.sourceLayer >= 0) glNamedFramebufferTextureLayer(fbos[0], GL_COLOR_ATTACHMENT0, c.source, 0, c.sourceLayer);
+    else glNamedFramebufferTexture(fbos[0], GL_COLOR_ATTACHMENT0, c.source, 0);
     glNamedFramebufferReadBuffer(fbos[0], GL_COLOR_ATTACHMENT0);
-    glNamedFramebufferTexture(fbos[1], GL_COLOR_ATTACHMENT0, destination, 0);
+    if (c.destinationLayer >= 0) glNamedFramebufferTextureLayer(fbos[1], GL_COLOR_ATTACHMENT0, c.destination, c.destinationLevel, c.destinationLayer);
+    else glNamedFramebufferTexture(fbos[1], GL_COLOR_ATTACHMENT0, c.destination, c.destinationLevel);
     glNamedFramebufferDrawBuffer(fbos[1], GL_COLOR_ATTACHMENT0);
     // A blit is clipped by the scissor test and writes through the colour mask, neither of which a
     // resolve has: both are set aside for it and put back.
@@ -79,7 +81,7 @@ void GlBackend::copySamples(BackendObject source, BackendObject destination, int
     glGetBooleanv(GL_COLOR_WRITEMASK, mask);  // draw buffer 0's
     glDisable(GL_SCISSOR_TEST);
     glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glBlitNamedFramebuffer(fbos[0], fbos[1], 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBlitNamedFramebuffer(fbos[0], fbos[1], 0, 0, c.width, c.height, 0, 0, c.width, c.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     glColorMaski(0, mask[0], mask[1], mask[2], mask[3]);
     if (scissor) glEnable(GL_SCISSOR_TEST);
     glDeleteFramebuffers(2, fbos);

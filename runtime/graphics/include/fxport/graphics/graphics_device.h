@@ -120,6 +120,12 @@ public:
     fxport::FixedFunctionState FixedFunction;
     TextureCollection Textures;
     SamplerStateCollection SamplerStates;
+    // XNA 4's vertex textures (HiDef): what an SM 1-3 vertex shader's samplers read (tex2Dlod;
+    // D3D9's vertex texture samplers, indexed by the sampler's s#, 0-3), apart from the pixel
+    // samplers' Textures[] and SamplerStates[]. An effect pass sets them for its vertex shader's
+    // samplers, as XNA's effects do. SM 4+ shaders (D3D10/11) use Textures[] for every stage.
+    TextureCollection VertexTextures;
+    SamplerStateCollection VertexSamplerStates;
     IndexBuffer* Indices = nullptr;
     Rectangle ScissorRectangle;
     // Reset to the whole target by SetRenderTarget(s), as in XNA.

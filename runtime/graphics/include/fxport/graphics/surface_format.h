@@ -64,6 +64,11 @@ enum class SurfaceFormat : std::uint8_t {
     Bgrx32,        // BGRX8 unorm in memory (D3D's B8G8R8X8_UNORM): the fourth byte is unused, alpha reads 1
     Bgrx32SRgb,    // the same, sRGB-encoded
     Depth32Stencil8,  // 32-bit float depth and 8-bit stencil in 8 bytes (D3D's R32G8X24_TYPELESS shadow map)
+    // The stencil of a Depth24Stencil8 / Depth32Stencil8 texture, read as an unsigned integer in
+    // green, (0, stencil, 0, 1): D3D's X24_TYPELESS_G8_UINT / X32_TYPELESS_G8X24_UINT views
+    // (Texture2D<uint2>.Load(p).g). Only a view of such a texture has it (Texture2D's view
+    // constructor); never filtered, never a target.
+    StencilOfDepth24Stencil8, StencilOfDepth32Stencil8,
 };
 
 enum class DepthFormat : std::uint8_t {
@@ -71,7 +76,7 @@ enum class DepthFormat : std::uint8_t {
     Depth32F,  // fxport addition (D3D10+'s D32_FLOAT): 32-bit float depth, no stencil
     Depth32FStencil8,  // fxport addition (D3D10+'s D32_FLOAT_S8X24_UINT): 32-bit float depth and 8-bit stencil
 };
-inline constexpr int kSurfaceFormatCount = int(SurfaceFormat::Depth32Stencil8) + 1;
+inline constexpr int kSurfaceFormatCount = int(SurfaceFormat::StencilOfDepth32Stencil8) + 1;
 
 inline bool hasStencil(DepthFormat f) { return f == DepthFormat::Depth24Stencil8 || f == DepthFormat::Depth32FStencil8; }
 
