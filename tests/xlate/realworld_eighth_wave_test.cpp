@@ -15,52 +15,20 @@
 #include "fxport/xlate/diagnostics.h"
 #include "fxport/xlate/effect_compiler.h"
 #include "fxport/xlate/effect_file.h"
+#include "compile_loose.h"
 
 namespace fs = std::filesystem;
 using namespace fxport::xlate;
 
-namespace {
-
-fs::path writeSource(const std::string& name, const std::string& source) {
-    fs::path dir = fs::temp_directory_path() / ("fxport-eighth-wave-" + std::to_string(::getpid()));
-    fs::create_directories((dir / name).parent_path());
-    std::ofstream(dir / name) << source;
-    return dir / name;
-}
-
-CompiledEffect compileLoose(const std::string& source, const std::string& profile, const std::string& entry = "main") {
-    CompileOptions o;
-    o.useCache = false;
-    return compileShaderFiles({{writeSource("shader.hlsl", source).string(), entry, profile}}, o);
-}
-
-std::string glslOf(const std::string& source, const std::string& profile) {
-    try {
-        return compileLoose(source, profile).shaders.at(0).glsl;
-    } catch (const CompileError& err) {
-        ADD_FAILURE() << err.what();
-        return {};
-    }
-}
-
-std::vector<Diagnostic> errorsOf(const std::string& source, const std::string& profile) {
-    try {
-        compileLoose(source, profile);
-    } catch (const CompileError& err) {
-        return err.diagnostics();
-    }
-    ADD_FAILURE() << "compiled";
-    return {};
-}
-
-}  // namespace
+using fxport::test::glslOfLoose;
+using fxport::test::errorsOfLoose;
 
 // OpenXRay's particle.ps: `#define DEPTH_EPSILON 0.1h` and `spaceDepth < -2*DEPTH_EPSILON`. fxc
 // computes half as float, so the product is the float 0.2; glslang refused an int beside the
 // half literal ("Could not perform requested binary operation"). The folded constant is float32's
 // 2 * 0.1.
 TEST(RealworldEighthWave, HalfLiteralsAreFloats) {
-    const std::string glsl = glslOf(
+    const std::string glsl = glslOfLoose(
         "#define EPSILON 0.1h\n"
         "float4 main(float4 c : COLOR0) : SV_Target {\n"
         "    float d = c.x;\n"
@@ -78,7 +46,7 @@ TEST(RealworldEighthWave, HalfLiteralsAreFloats) {
 // FX9001); it is now fxc's refusal, at the call. A call no compiled shader reaches compiles
 // (vkd3d's noise.shader_test), and a function of the shader's own named noise is called instead.
 TEST(RealworldEighthWave, NoiseIsATextureShaderIntrinsic) {
-    const std::vector<Diagnostic> errors = errorsOf(
+    const std::vector<Diagnostic> errors = errorsOfLoose(
         "float4 main(float2 tc : TEXCOORD0) : SV_Target {\n"
         "    return tc.x - noise(tc) * 0.5;\n"
         "}\n",
@@ -86,11 +54,11 @@ TEST(RealworldEighthWave, NoiseIsATextureShaderIntrinsic) {
     ASSERT_EQ(errors.size(), 1u);
     EXPECT_NE(errors[0].message.find("'noise' is a texture-shader (tx_1_0) intrinsic: ps_5_0"), std::string::npos) << errors[0].message;
     EXPECT_EQ(errors[0].location.line, 2);
-    EXPECT_FALSE(glslOf("float4 unused(float2 tc) { return noise(tc); }\n"
+    EXPECT_FALSE(glslOfLoose("float4 unused(float2 tc) { return noise(tc); }\n"
                         "float4 main(float2 tc : TEXCOORD0) : SV_Target { return float4(tc, 0, 1); }\n",
                         "ps_5_0")
                      .empty());
-    const std::string own = glslOf("float noise(float2 p) { return frac(sin(dot(p, float2(12.9898, 78.233))) * 43758.5453); }\n"
+    const std::string own = glslOfLoose("float noise(float2 p) { return frac(sin(dot(p, float2(12.9898, 78.233))) * 43758.5453); }\n"
                                    "float4 main(float2 tc : TEXCOORD0) : SV_Target { return noise(tc); }\n",
                                    "ps_5_0");
     EXPECT_NE(own.find("43758.546875"), std::string::npos) << own;
@@ -101,7 +69,7 @@ TEST(RealworldEighthWave, NoiseIsATextureShaderIntrinsic) {
 // t * t * (3 - 2t) with t = saturate((x - a) / (b - a)), which falls from 1 to 0 there. The GLSL
 // spells fxc's arithmetic; edges that are constants in order keep smoothstep (defined, the same).
 TEST(RealworldEighthWave, ReversedSmoothstepEdgesComputeFxcsCurve) {
-    const std::string glsl = glslOf(
+    const std::string glsl = glslOfLoose(
         "cbuffer C : register(b0) { float near; float far; };\n"
         "float4 main(float4 c : COLOR0) : SV_Target {\n"
         "    return float4(smoothstep(far, near, c.x), smoothstep(0.5, 0.0, c.y), smoothstep(0.2, 0.8, c.z), 1);\n"
@@ -119,7 +87,7 @@ TEST(RealworldEighthWave, ReversedSmoothstepEdgesComputeFxcsCurve) {
 // `clamp(0.1, sin(4 * n), 0.4)`) give b; GLSL's clamp is undefined when min > max. Bounds that are
 // not constants in order are written as fxc computes them; saturate stays a clamp to 0..1.
 TEST(RealworldEighthWave, ReversedClampBoundsGiveTheMaximum) {
-    const std::string glsl = glslOf(
+    const std::string glsl = glslOfLoose(
         "cbuffer C : register(b0) { float lo; float hi; int ilo; int ihi; };\n"
         "float4 main(float4 c : COLOR0, int4 k : TEXCOORD1) : SV_Target {\n"
         "    return float4(clamp(0.1, sin(c.x), 0.4), clamp(c.y, lo, hi), clamp(k.x, ilo, ihi), saturate(c.w));\n"
@@ -143,7 +111,7 @@ TEST(RealworldEighthWave, RoundOfDx9StyleSourceRoundsHalvesToEven) {
         "    float e = tex2Dlod(edges, float4(uv, 0, 0)).r;\n"
         "    return float4(33 * round(4.0 * float2(e, uv.y)), round(uv.x), 1);\n"
         "}\n";
-    const std::string glsl = glslOf(source, "ps_5_0");
+    const std::string glsl = glslOfLoose(source, "ps_5_0");
     EXPECT_NE(glsl.find("roundEven(vec2("), std::string::npos) << glsl;
     EXPECT_NE(glsl.find("roundEven(i0.x)"), std::string::npos) << glsl;
     EXPECT_EQ(glsl.find(" round("), std::string::npos) << glsl;
@@ -156,7 +124,7 @@ TEST(RealworldEighthWave, RoundOfDx9StyleSourceRoundsHalvesToEven) {
 // `&` a float operand (GLSL the driver refuses) and the shift moved the float's bits. The calls
 // are cast to fxc's int type; a constant folds as fxc folds it (sign(-3.0) / 2 + 0.25 is 0.25).
 TEST(RealworldEighthWave, SignIsAnInt) {
-    const std::string glsl = glslOf(
+    const std::string glsl = glslOfLoose(
         "cbuffer C : register(b0) { float d; float3 v; };\n"
         "float4 main() : SV_Target {\n"
         "    int a = sign(d) & 1;\n"
