@@ -31,7 +31,7 @@ namespace fxport {
 
 class GraphicsResource;
 struct ComputeAnalysis;
-struct ComputePasses;
+class ComputePasses;  // compute_passes.h
 class FragmentRuns;  // fragment_tally.h
 namespace core {
 class ByteBuffer;  // front_end_core.h

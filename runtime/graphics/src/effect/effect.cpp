@@ -10,7 +10,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "gl/passes/compute_pass.h"
+#include "device/compute_passes.h"
 #include "device/device_impl.h"
 #include "effect/effect_impl.h"
 #include "fxport/graphics/errors.h"
@@ -155,6 +155,8 @@ EffectWarningHandler& warningHandler() {
 void reportEffectWarning(const std::string& warning) {
     if (const EffectWarningHandler& report = warningHandler()) report(warning);
 }
+
+void forgetTexture(Effect& effect, const Texture* texture) { effectImpl(effect).forgetTexture(texture); }
 
 EffectWarningHandler SetEffectWarningHandler(EffectWarningHandler handler) {
     EffectWarningHandler old = std::move(warningHandler());

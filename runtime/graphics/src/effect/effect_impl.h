@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "effect/constant_block.h"
+#include "effect/effect_notices.h"
 #include "device/backend.h"
 #include "device/impl_access.h"
 #include "device/shader_program.h"
@@ -30,10 +31,6 @@
 #include "effect/pass_states.h"
 
 namespace fxport {
-
-// Hands `warning` to the handler SetEffectWarningHandler installed (stderr by default): for what is
-// found only while drawing (an SRGBWriteEnable pass drawing into a target GL does not encode).
-void reportEffectWarning(const std::string& warning);
 
 struct Effect::Impl {
     // The outline: techniques, passes and parameters; parameter offsets are the block layouts known

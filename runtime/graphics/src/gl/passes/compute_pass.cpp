@@ -155,7 +155,9 @@ PixelBox drawablePixels(const GraphicsDevice& device, int targetWidth, int targe
 using detail::imageFormatOf;
 using detail::linkProgram;
 
-ComputePasses::ComputePasses(GraphicsDevice::Impl& owner)
+std::shared_ptr<ComputePasses> createComputePasses(GraphicsDevice::Impl& device) { return std::make_shared<GlComputePasses>(device); }
+
+GlComputePasses::GlComputePasses(GraphicsDevice::Impl& owner)
     : device(owner), printOutcomes(std::getenv("FXPORT_COMPUTE_PASSES_DEBUG") != nullptr) {
     if (const char* mb = std::getenv("FXPORT_COMPUTE_PASS_CACHE_MB")) {
         char* end = nullptr;
@@ -168,7 +170,7 @@ ComputePasses::ComputePasses(GraphicsDevice::Impl& owner)
     }
 }
 
-ComputePasses::~ComputePasses() {
+GlComputePasses::~GlComputePasses() {
     for (auto& [serial, capture] : capturePrograms)
         if (capture.program) glDeleteProgram(capture.program);
     for (auto& [key, dispatcher] : computePrograms)
@@ -191,7 +193,7 @@ ComputePasses::~ComputePasses() {
     }
 }
 
-void ComputePasses::dropEntry(std::map<EntryKey, ReplayEntry>::iterator it) {
+void GlComputePasses::dropEntry(std::map<EntryKey, ReplayEntry>::iterator it) {
     glDeleteTextures(1, &it->second.store);
     glDeleteBuffers(1, &it->second.vertices);
     entryBytes -= it->second.bytes;
@@ -199,7 +201,7 @@ void ComputePasses::dropEntry(std::map<EntryKey, ReplayEntry>::iterator it) {
     entries.erase(it);
 }
 
-void ComputePasses::forget(const ComputeAnalysis& analysis) {
+void GlComputePasses::forget(const ComputeAnalysis& analysis) {
     const int serial = analysis.serial;
     if (auto it = capturePrograms.find(serial); it != capturePrograms.end()) {
         if (it->second.program) glDeleteProgram(it->second.program);
@@ -227,13 +229,13 @@ void ComputePasses::forget(const ComputeAnalysis& analysis) {
     std::erase_if(userDataHistory, [&](const auto& item) { return item.first.vertexSerial == serial; });
 }
 
-bool ComputePasses::fallBack(const std::string& reason) {
+bool GlComputePasses::fallBack(const std::string& reason) {
     if (printOutcomes) std::fprintf(stderr, "compute pass: %s falls back: %s\n", device.shaders[1]->label.c_str(), reason.c_str());
     ++statistics.fellBack[reason];
     return false;
 }
 
-const ComputeAnalysis& ComputePasses::analysisOf(const ShaderProgram& program) {
+const ComputeAnalysis& GlComputePasses::analysisOf(const ShaderProgram& program) {
     if (!program.computeAnalysis) {
         auto analysis = std::make_shared<ComputeAnalysis>();
         analysis->serial = nextSerial++;
@@ -254,7 +256,7 @@ const ComputeAnalysis& ComputePasses::analysisOf(const ShaderProgram& program) {
     return *program.computeAnalysis;
 }
 
-GLuint ComputePasses::captureProgram(const ShaderProgram& vertex, const ComputeAnalysis& analysis, std::string& refusal) {
+GLuint GlComputePasses::captureProgram(const ShaderProgram& vertex, const ComputeAnalysis& analysis, std::string& refusal) {
     auto it = capturePrograms.find(analysis.serial);
     if (it == capturePrograms.end()) {
         std::vector<std::string> captured{"gl_Position"};
@@ -268,7 +270,7 @@ GLuint ComputePasses::captureProgram(const ShaderProgram& vertex, const ComputeA
     return it->second.program;
 }
 
-GLuint ComputePasses::fillPipeline(const ShaderProgram& vertex, int vertexSerial, const ComputeAnalysis& pixel, std::string& refusal) {
+GLuint GlComputePasses::fillPipeline(const ShaderProgram& vertex, int vertexSerial, const ComputeAnalysis& pixel, std::string& refusal) {
     auto fill = fillPrograms.find(pixel.serial);
     if (fill == fillPrograms.end()) {
         Fill made;
@@ -295,7 +297,7 @@ GLuint ComputePasses::fillPipeline(const ShaderProgram& vertex, int vertexSerial
     return it->second;
 }
 
-ComputePasses::ReplayEntry* ComputePasses::entryFor(const EntryKey& key, int width, int height, int layers, int capturedFloats,
+GlComputePasses::ReplayEntry* GlComputePasses::entryFor(const EntryKey& key, int width, int height, int layers, int capturedFloats,
                                                     std::string& refusal) {
     auto it = entries.find(key);
     if (it != entries.end()) {
@@ -330,12 +332,12 @@ ComputePasses::ReplayEntry* ComputePasses::entryFor(const EntryKey& key, int wid
     return &entries.emplace(key, entry).first->second;
 }
 
-void ComputePasses::readCounters() {
+void GlComputePasses::readCounters() {
     if (!compare.mapped) return;
     for (int i = 0; i < 4; ++i) counters[i] = compare.mapped[i];
 }
 
-ComputePassStatistics ComputePasses::currentStatistics() {
+ComputePassStatistics GlComputePasses::currentStatistics() {
     readCounters();
     ComputePassStatistics s = statistics;
     s.dispatched += long(counters[0]) + long(counters[1]);
@@ -352,7 +354,7 @@ ComputePassStatistics ComputePasses::currentStatistics() {
 // keys, analyses, programs, the entry, the pixel rectangle), and the steps must stay in this order
 // with the device's GL state restored between them. Splitting it belongs with making compute
 // passes a registered pass with plan/try steps (issue 22 item 2), not with moving the file.
-bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCall& call) {
+bool GlComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCall& call) {
     if ((type != PrimitiveType::TriangleList && type != PrimitiveType::TriangleStrip) || primitiveCount > 2) return false;
     GraphicsDevice::Impl& d = device;
     const GraphicsDevice& dev = d.device;

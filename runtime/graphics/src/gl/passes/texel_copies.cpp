@@ -1,4 +1,4 @@
-// Texel-copy reductions (ComputePasses::tryTexelCopies, issue 16): a SpriteBatch batch whose every
+// Texel-copy reductions (GlComputePasses::tryTexelCopies, issue 16): a SpriteBatch batch whose every
 // sprite copies texels 1:1 into a target of the texture's format, under a Min or Max blend. The
 // pixel shader is SpriteBatch's own (tex2D * colour) with a white colour, Point sampling lands on
 // the texel under each pixel centre, so each fragment's output is that texel exactly, and Min/Max
@@ -79,7 +79,7 @@ std::string texelCopyShaderSource(const std::string& imageFormat, BlendOp color,
 
 }  // namespace detail
 
-bool ComputePasses::tryTexelCopies(const Texture2D& texture, const std::vector<detail::TexelCopy>& copies) {
+bool GlComputePasses::tryTexelCopies(const Texture2D& texture, const std::vector<detail::TexelCopy>& copies) {
     GraphicsDevice::Impl& d = device;
     const GraphicsDevice& dev = d.device;
     const BlendState& blend = dev.BlendState;
