@@ -156,7 +156,7 @@ GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters)
     // where this GPU runs them faster.
     const bool computePasses =
         context_ && (optimizations.ComputePasses ? *optimizations.ComputePasses : computePassesAreFaster(*this));
-    if (computePasses) impl_->computePasses = createComputePasses(*impl_);
+    if (computePasses) impl_->computePasses = createComputePasses(*this);
 }
 
 void GraphicsDevice::Reset(const fxport::PresentationParameters& parameters) {

@@ -12,7 +12,6 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "device/device_impl.h"
 #include "fxport/graphics/render_target.h"
 #include "fxport/graphics/texture.h"
 #include "fxport/xlate/compiled_effect.h"
@@ -155,9 +154,9 @@ PixelBox drawablePixels(const GraphicsDevice& device, int targetWidth, int targe
 using detail::imageFormatOf;
 using detail::linkProgram;
 
-std::shared_ptr<ComputePasses> createComputePasses(GraphicsDevice::Impl& device) { return std::make_shared<GlComputePasses>(device); }
+std::shared_ptr<ComputePasses> createComputePasses(GraphicsDevice& device) { return std::make_shared<GlComputePasses>(device); }
 
-GlComputePasses::GlComputePasses(GraphicsDevice::Impl& owner)
+GlComputePasses::GlComputePasses(GraphicsDevice& owner)
     : device(owner), printOutcomes(std::getenv("FXPORT_COMPUTE_PASSES_DEBUG") != nullptr) {
     if (const char* mb = std::getenv("FXPORT_COMPUTE_PASS_CACHE_MB")) {
         char* end = nullptr;
@@ -230,7 +229,7 @@ void GlComputePasses::forget(const ComputeAnalysis& analysis) {
 }
 
 bool GlComputePasses::fallBack(const std::string& reason) {
-    if (printOutcomes) std::fprintf(stderr, "compute pass: %s falls back: %s\n", device.shaders[1]->label.c_str(), reason.c_str());
+    if (printOutcomes) std::fprintf(stderr, "compute pass: %s falls back: %s\n", prepared::shader(device, 1)->label.c_str(), reason.c_str());
     ++statistics.fellBack[reason];
     return false;
 }
@@ -356,38 +355,40 @@ ComputePassStatistics GlComputePasses::currentStatistics() {
 // passes a registered pass with plan/try steps (issue 22 item 2), not with moving the file.
 bool GlComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCall& call) {
     if ((type != PrimitiveType::TriangleList && type != PrimitiveType::TriangleStrip) || primitiveCount > 2) return false;
-    GraphicsDevice::Impl& d = device;
-    const GraphicsDevice& dev = d.device;
-    const ShaderProgram* vertex = d.shaders[0];
-    const ShaderProgram* pixel = d.shaders[1];
-    if (d.shaders[2]) return fallBack("geometry shader");
-    if (d.shaders[kHullStage] || d.shaders[kDomainStage]) return fallBack("tessellation");
-    if (d.storageDirty || !vertex->shader->storage.empty() || !pixel->shader->storage.empty()) return fallBack("UAVs");
+    const GraphicsDevice& dev = device;
+    const std::vector<RenderTargetBinding>& boundTargets = prepared::targets(dev);
+    const int targetWidth = prepared::targetWidth(dev), targetHeight = prepared::targetHeight(dev);
+    const PassEmulation& emulation = prepared::emulation(dev);
+    const ShaderProgram* vertex = prepared::shader(dev, 0);
+    const ShaderProgram* pixel = prepared::shader(dev, 1);
+    if (prepared::shader(dev, 2)) return fallBack("geometry shader");
+    if (prepared::shader(dev, kHullStage) || prepared::shader(dev, kDomainStage)) return fallBack("tessellation");
+    if (prepared::storageWritten(dev) || !vertex->shader->storage.empty() || !pixel->shader->storage.empty()) return fallBack("UAVs");
     // Without a depth buffer GL passes every depth and stencil test and writes nothing (the first
     // target's format says whether it has one, however its storage is made).
-    const DepthFormat depthFormat = d.targets.empty() ? dev.PresentationParameters().DepthStencilFormat
-                                                      : targetDepthFormat(d.targets[0].RenderTarget);
+    const DepthFormat depthFormat = boundTargets.empty() ? dev.PresentationParameters().DepthStencilFormat
+                                                         : targetDepthFormat(boundTargets[0].RenderTarget);
     const DepthStencilState& depth = dev.DepthStencilState;
     if (depthFormat != DepthFormat::None) {
         // A moot test (flush's drawDepthTestMoot: it cannot fail against the buffer's known clear
         // and nothing is written; the G-buffer clear quad under DepthRead) draws what no test draws.
-        if (depth.DepthBufferEnable && !d.drawDepthTestMoot &&
+        if (depth.DepthBufferEnable && !prepared::depthTestMoot(dev) &&
             (depth.DepthBufferWriteEnable || depth.DepthBufferFunction != CompareFunction::Always))
             return fallBack("depth test or write");
         if (depth.StencilEnable) return fallBack("stencil test");
     }
-    if (d.emulation.alphaTest) return fallBack("alpha test");
-    if (d.emulation.fixedFunction) return fallBack("D3D9 fixed-function emulation");
-    if (d.emulation.srgbWrite) return fallBack("sRGB write");
+    if (emulation.alphaTest) return fallBack("alpha test");
+    if (emulation.fixedFunction) return fallBack("D3D9 fixed-function emulation");
+    if (emulation.srgbWrite) return fallBack("sRGB write");
     const RasterizerState& raster = dev.RasterizerState;
     if (raster.FillMode != FillMode::Solid) return fallBack("wireframe");
-    const BlendState& blend = d.drawBlend();  // flush's: a blend onto a zero clear may be a write
+    const BlendState& blend = prepared::blend(dev);  // flush's: a blend onto a zero clear may be a write
     if (blend.MultiSampleMask != -1) return fallBack("multisample mask");
 
     // Targets: formats, blend and masks.
-    const RenderTargetBinding backBuffer(d.backBuffer.get());
-    const RenderTargetBinding* bindings = d.targets.empty() ? &backBuffer : d.targets.data();
-    const std::size_t boundCount = std::max<std::size_t>(d.targets.size(), 1);
+    const RenderTargetBinding backBuffer(prepared::backBuffer(dev));
+    const RenderTargetBinding* bindings = boundTargets.empty() ? &backBuffer : boundTargets.data();
+    const std::size_t boundCount = std::max<std::size_t>(boundTargets.size(), 1);
     const ColorWriteChannels masks[4] = {blend.ColorWriteChannels, blend.ColorWriteChannels1, blend.ColorWriteChannels2,
                                          blend.ColorWriteChannels3};
     std::array<detail::ComputeTarget, kMaxRenderTargets> targets{};
@@ -501,8 +502,8 @@ bool GlComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const Draw
                             std::bit_cast<std::uint32_t>(raster.SlopeScaleDepthBias),
                             int(type),
                             primitiveCount,
-                            d.targetWidth,
-                            d.targetHeight};
+                            targetWidth,
+                            targetHeight};
     if (call.userDataHash != 0) {
         UserDataHistory& history = userDataHistory[entryKey];
         if (history.lastHash == call.userDataHash) history.changedInARow = 0;
@@ -510,12 +511,12 @@ bool GlComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const Draw
         history.lastHash = call.userDataHash;
         if (history.changedInARow >= kChangesBeforeFragments) return fallBack("user vertices change from draw to draw");
     }
-    ReplayEntry* entry = entryFor(entryKey, d.targetWidth, d.targetHeight, detail::replayLayers(pixelAnalysis.pixel),
+    ReplayEntry* entry = entryFor(entryKey, targetWidth, targetHeight, detail::replayLayers(pixelAnalysis.pixel),
                                   vertexCount * floatsPerVertex, refusal);
     if (!entry) return fallBack(refusal);
 
     // The pixels the draw may touch: the viewport (GL clips to it), the targets, the scissor.
-    const auto [x0, y0, x1, y1] = detail::drawablePixels(dev, d.targetWidth, d.targetHeight);
+    const auto [x0, y0, x1, y1] = detail::drawablePixels(dev, targetWidth, targetHeight);
     ++statistics.issued;
     if (x1 <= x0 || y1 <= y0) {  // the fragment stage would draw nothing either
         ++statistics.dispatched;
@@ -536,7 +537,7 @@ bool GlComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const Draw
     glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, captureBuffer, 0, captureBytes);
     glEnable(GL_RASTERIZER_DISCARD);
     glBeginTransformFeedback(GL_TRIANGLES);
-    device.backend->draw(call);
+    prepared::backend(device).draw(call);
     glEndTransformFeedback();
     glDisable(GL_RASTERIZER_DISCARD);  // transform feedback's writes need no barrier before later commands read them
 
@@ -568,10 +569,10 @@ bool GlComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const Draw
     glUseProgram(0);
     glBindProgramPipeline(fill);
     if (!fillFramebuffer) glCreateFramebuffers(1, &fillFramebuffer);
-    if (fillWidth != d.targetWidth || fillHeight != d.targetHeight) {
-        glNamedFramebufferParameteri(fillFramebuffer, GL_FRAMEBUFFER_DEFAULT_WIDTH, d.targetWidth);
-        glNamedFramebufferParameteri(fillFramebuffer, GL_FRAMEBUFFER_DEFAULT_HEIGHT, d.targetHeight);
-        fillWidth = d.targetWidth, fillHeight = d.targetHeight;
+    if (fillWidth != targetWidth || fillHeight != targetHeight) {
+        glNamedFramebufferParameteri(fillFramebuffer, GL_FRAMEBUFFER_DEFAULT_WIDTH, targetWidth);
+        glNamedFramebufferParameteri(fillFramebuffer, GL_FRAMEBUFFER_DEFAULT_HEIGHT, targetHeight);
+        fillWidth = targetWidth, fillHeight = targetHeight;
     }
     glBindFramebuffer(GL_FRAMEBUFFER, fillFramebuffer);
     if (raster.ScissorTestEnable) glDisable(GL_SCISSOR_TEST);
@@ -580,9 +581,9 @@ bool GlComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const Draw
     glBindImageTexture(detail::kStoreUnit, entry->store, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32UI);
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, compare.commands);
     issueDrawIndirect(call, detail::kCommandsFill * 4);
-    glBindFramebuffer(GL_FRAMEBUFFER, d.boundFramebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, prepared::framebuffer(dev));
     if (raster.ScissorTestEnable) glEnable(GL_SCISSOR_TEST);
-    glBindProgramPipeline(d.boundPipeline);
+    glBindProgramPipeline(prepared::pipeline(dev));
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 
     // 4. Pixel stage, over the compare step's rectangle (no groups when the draw may not replay).

@@ -66,9 +66,9 @@ struct ComputeAnalysis {
 
 // The GL implementation of device/compute_passes.h.
 struct GlComputePasses final : ComputePasses {
-    explicit GlComputePasses(GraphicsDevice::Impl& owner);
+    explicit GlComputePasses(GraphicsDevice& owner);
     ~GlComputePasses() override;
-    GraphicsDevice::Impl& device;
+    GraphicsDevice& device;
 
     // Runs the current draw (flushed, vertex array bound) as a compute dispatch when it may.
     // False: draw it as usual.
