@@ -1,6 +1,6 @@
-// INTERNAL: the device's private state: the backend and the shadow of what it has, the caches of
-// backend objects made from immutable descriptions, and the registry of live resources. Effects, textures
-// and buffers reach it through deviceImpl() (device/impl_access.h).
+// INTERNAL: the device's private state: the backend and its shadow, the caches of backend objects made
+// from immutable descriptions, the registry of live resources. device/ reaches it through deviceImpl()
+// (device/impl_access.h); effects and GL passes only through device/effect_programs.h, compute_passes.h.
 #pragma once
 
 #include <array>
@@ -31,7 +31,7 @@ namespace fxport {
 
 class GraphicsResource;
 struct ComputeAnalysis;
-struct ComputePasses;
+class ComputePasses;  // compute_passes.h
 class FragmentRuns;  // fragment_tally.h
 namespace core {
 class ByteBuffer;  // front_end_core.h
@@ -246,7 +246,7 @@ struct GraphicsDevice::Impl {
     // drops the pending colour clear if the draw must write every pixel (pending_clear.cpp).
     void dropColorClearUnderCoveringSprite(const ShaderProgram* spriteVertexShader);
     ClearStatistics clearStats;
-    // DeviceOptimizations::ComputePasses and $FXPORT_COMPUTE_PASSES: null when off (compute_pass.h).
+    // DeviceOptimizations::ComputePasses and $FXPORT_COMPUTE_PASSES: null when off (compute_passes.h).
     std::shared_ptr<ComputePasses> computePasses;
     void executeClear(const Rectangle& rect, unsigned options, const Vector4& color, float depth, int stencil);
     void recordClear(unsigned options, const Vector4& color, float depth, int stencil);

@@ -3,8 +3,8 @@
 // (device/pending_clear.cpp).
 #include "device/draw_hints.h"
 
+#include "device/compute_passes.h"
 #include "device/device_impl.h"
-#include "gl/passes/compute_pass.h"
 
 namespace fxport::hints {
 

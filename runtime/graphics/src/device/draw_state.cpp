@@ -9,7 +9,7 @@
 
 #include "device/device_impl.h"
 #include "device/vertex_input.h"
-#include "effect/effect_impl.h"
+#include "effect/effect_notices.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/texture.h"
 #include "fxport/xlate/compiled_effect.h"

@@ -4,9 +4,8 @@
 #include <cstring>
 #include <iostream>
 
-#include "gl/passes/compute_pass.h"
+#include "device/compute_passes.h"
 #include "device/device_impl.h"
-#include "effect/effect_impl.h"
 #include "fxport/graphics/effect.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/gpu_limits.h"
@@ -157,7 +156,7 @@ GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters)
     // where this GPU runs them faster.
     const bool computePasses =
         context_ && (optimizations.ComputePasses ? *optimizations.ComputePasses : computePassesAreFaster(*this));
-    if (computePasses) impl_->computePasses = std::make_shared<ComputePasses>(*impl_);
+    if (computePasses) impl_->computePasses = createComputePasses(*this);
 }
 
 void GraphicsDevice::Reset(const fxport::PresentationParameters& parameters) {

@@ -7,7 +7,7 @@
 
 #include "device/dds_image.h"
 #include "device/device_impl.h"
-#include "effect/effect_impl.h"
+#include "effect/effect_notices.h"
 #include "fxport/graphics/errors.h"
 #include "device/image_io.h"
 #include "device/surface_formats.h"
@@ -43,7 +43,7 @@ void Texture::releaseGpuObjects() {
         if (device().Textures[slot].get() == this) device().Textures[slot] = nullptr;
         if (device().VertexTextures[slot].get() == this) device().VertexTextures[slot] = nullptr;
     }
-    for (Effect* effect : d.effects) effectImpl(*effect).forgetTexture(this);
+    for (Effect* effect : d.effects) forgetTexture(*effect, this);
     d.forgetStorage(this);
     d.forgetSampleCopy(this);
     d.dropFramebuffersUsing(name_);

@@ -10,8 +10,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "gl/passes/compute_pass.h"
-#include "device/device_impl.h"
+#include "device/effect_programs.h"
 #include "effect/effect_impl.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/graphics_device.h"
@@ -156,6 +155,8 @@ void reportEffectWarning(const std::string& warning) {
     if (const EffectWarningHandler& report = warningHandler()) report(warning);
 }
 
+void forgetTexture(Effect& effect, const Texture* texture) { effectImpl(effect).forgetTexture(texture); }
+
 EffectWarningHandler SetEffectWarningHandler(EffectWarningHandler handler) {
     EffectWarningHandler old = std::move(warningHandler());
     warningHandler() = std::move(handler);
@@ -238,7 +239,7 @@ Effect::Effect(fxport::GraphicsDevice& device, const xlate::CompiledEffect& comp
 void Effect::linkWhole(std::shared_ptr<const xlate::CompiledEffect> whole) {
     Impl& e = *impl_;
     try {
-        Impl::Code& code = e.addCode(std::move(whole), deviceImpl(device()));
+        Impl::Code& code = e.addCode(std::move(whole), device());
         e.whole = &code;
         for (std::size_t t = 0; t < e.techniqueCode.size(); ++t) e.techniqueCode[t] = {&code, int(t)};
     } catch (...) {
@@ -288,7 +289,7 @@ const xlate::CompiledEffect& Effect::compiled() const {
 
 void Effect::Precompile() {
     if (IsDisposed()) throw InvalidOperation("Effect '" + impl_->displayName + "'.Precompile(): the effect was disposed");
-    impl_->compileAll(deviceImpl(device()));
+    impl_->compileAll(device());
 }
 
 const std::string& Effect::sourcePath() const { return impl_->outline.sourcePath; }
@@ -383,7 +384,7 @@ void moveStructValues(const xlate::Parameter& p, const xlate::Parameter& r, cons
 
 }  // namespace
 
-void Effect::Impl::adoptLayouts(const xlate::CompiledEffect& code, GraphicsDevice::Impl& device) {
+void Effect::Impl::adoptLayouts(const xlate::CompiledEffect& code, GraphicsDevice& device) {
     if (code.parameters.size() != outline.parameters.size() || code.uniformBlocks.size() != blocks.size())
         throw InvalidOperation("Effect '" + displayName + "': a technique compiled with " + std::to_string(code.parameters.size()) +
                                " parameters and " + std::to_string(code.uniformBlocks.size()) + " uniform blocks, the effect loaded with " +
@@ -431,8 +432,7 @@ void Effect::Impl::adoptLayouts(const xlate::CompiledEffect& code, GraphicsDevic
         }
         block.constants = std::move(moved);
         block.provisional = false;
-        block.buffer = device.createBuffer();
-        device.backend->allocateBuffer(block.buffer, std::size_t(real.size), nullptr, false);
+        block.buffer = effects::createConstantBuffer(device, std::size_t(real.size));
         block.constants.markDirty(0, real.size);
     }
     for (std::size_t b = 0; b < blocks.size(); ++b)
@@ -441,7 +441,7 @@ void Effect::Impl::adoptLayouts(const xlate::CompiledEffect& code, GraphicsDevic
 
 // --- compiling
 
-Effect::Impl::Code& Effect::Impl::addCode(std::shared_ptr<const xlate::CompiledEffect> effect, GraphicsDevice::Impl& device) {
+Effect::Impl::Code& Effect::Impl::addCode(std::shared_ptr<const xlate::CompiledEffect> effect, GraphicsDevice& device) {
     adoptLayouts(*effect, device);
     auto code = std::make_unique<Code>();
     code->effect = std::move(effect);
@@ -453,7 +453,7 @@ Effect::Impl::Code& Effect::Impl::addCode(std::shared_ptr<const xlate::CompiledE
             p.shader = &shader;
             p.label = displayName + ": " + shader.entryPoint + " (" + shader.profile.name + ")";
             p.mayDiscard = shader.glsl.find("discard") != std::string::npos;
-            p.program = device.createProgram(int(shader.profile.stage), shader, shader.glsl, p.label);
+            p.program = effects::createProgram(device, int(shader.profile.stage), shader, shader.glsl, p.label);
             code->programs.push_back(p);
             code->reads.push_back(blockReadsOf(shader, blocks.size()));
             code->samplers.push_back(samplerSlotsOf(shader, *this));
@@ -466,7 +466,7 @@ Effect::Impl::Code& Effect::Impl::addCode(std::shared_ptr<const xlate::CompiledE
             }
         }
     } catch (...) {
-        for (ShaderProgram& p : code->programs) device.deleteProgram(p.program);
+        for (ShaderProgram& p : code->programs) effects::deleteProgram(device, p.program);
         throw;
     }
     linkMilliseconds += millisecondsSince(started);
@@ -474,7 +474,7 @@ Effect::Impl::Code& Effect::Impl::addCode(std::shared_ptr<const xlate::CompiledE
     return *codes.back();
 }
 
-const Effect::Impl::TechniqueCode& Effect::Impl::ensureCompiled(int technique, GraphicsDevice::Impl& device) {
+const Effect::Impl::TechniqueCode& Effect::Impl::ensureCompiled(int technique, GraphicsDevice& device) {
     TechniqueCode& tc = techniqueCode[std::size_t(technique)];
     if (tc.code) return tc;
     const std::string& name = outline.techniques[std::size_t(technique)].name;
@@ -494,7 +494,7 @@ const Effect::Impl::TechniqueCode& Effect::Impl::ensureCompiled(int technique, G
     return tc;
 }
 
-void Effect::Impl::compileAll(GraphicsDevice::Impl& device) {
+void Effect::Impl::compileAll(GraphicsDevice& device) {
     if (whole) return;
     bool missing = false;
     for (const TechniqueCode& tc : techniqueCode) missing |= tc.code == nullptr;
@@ -514,23 +514,13 @@ void Effect::Impl::compileAll(GraphicsDevice::Impl& device) {
         if (!techniqueCode[t].code) techniqueCode[t] = {&code, int(t)};
 }
 
-void Effect::Impl::releasePrograms(GraphicsDevice::Impl& device) {
+void Effect::Impl::releasePrograms(GraphicsDevice& device) {
     for (auto& code : codes)
-        for (ShaderProgram& p : code->programs) {
-            // The device may still point at this effect's ShaderProgram records (the GL program
-            // itself can outlive them when another effect shares it).
-            for (const ShaderProgram*& bound : device.shaders)
-                if (bound == &p) bound = nullptr;
-            if (device.computeShader == &p) device.computeShader = nullptr;
-            device.deleteProgram(p.program);
-            device.releaseFixedFunctionVariants(p);
-            if (p.computeAnalysis && device.computePasses) device.computePasses->forget(*p.computeAnalysis);
-        }
+        for (ShaderProgram& p : code->programs) effects::releaseProgram(device, p);
 }
 
 void Effect::build() {
     Impl& e = *impl_;
-    GraphicsDevice::Impl& d = deviceImpl(device());
     const xlate::CompiledEffect& c = e.outline;
     e.displayName = std::filesystem::path(c.sourcePath).filename().string();
     if (e.displayName.empty()) e.displayName = "<effect>";
@@ -582,16 +572,13 @@ void Effect::build() {
         Techniques.items_.push_back(std::move(technique));
     }
     CurrentTechnique = Techniques.items_.empty() ? nullptr : Techniques.items_[0].get();
-    d.effects.push_back(this);
+    effects::add(device(), *this);
 }
 
 void Effect::releaseGpuObjects() {
-    GraphicsDevice::Impl& d = deviceImpl(device());
-    impl_->releasePrograms(d);
-    // The device's pass emulation may point into this effect (its SRGBWriteEnable location).
-    if (d.emulation.srgbWriteReported == &impl_->reportedUnencodedSrgbWrite) d.emulation = PassEmulation{};
-    for (Impl::Block& b : impl_->blocks) d.deleteBuffer(b.buffer);
-    d.effects.erase(std::remove(d.effects.begin(), d.effects.end(), this), d.effects.end());
+    impl_->releasePrograms(device());
+    for (Impl::Block& b : impl_->blocks) effects::deleteBuffer(device(), b.buffer);
+    effects::remove(device(), *this, &impl_->reportedUnencodedSrgbWrite);
 }
 
 // --- collections

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "effect/constant_block.h"
+#include "effect/effect_notices.h"
 #include "device/backend.h"
 #include "device/impl_access.h"
 #include "device/shader_program.h"
@@ -30,10 +31,6 @@
 #include "effect/pass_states.h"
 
 namespace fxport {
-
-// Hands `warning` to the handler SetEffectWarningHandler installed (stderr by default): for what is
-// found only while drawing (an SRGBWriteEnable pass drawing into a target GL does not encode).
-void reportEffectWarning(const std::string& warning);
 
 struct Effect::Impl {
     // The outline: techniques, passes and parameters; parameter offsets are the block layouts known
@@ -129,18 +126,18 @@ struct Effect::Impl {
 
     // Block layouts: start provisional, then take the real ones from a compiled effect.
     void layOutProvisionally();
-    void adoptLayouts(const xlate::CompiledEffect& code, GraphicsDevice::Impl& device);
+    void adoptLayouts(const xlate::CompiledEffect& code, GraphicsDevice& device);
     // Moves the value of parameter `index` from its provisional block place to `unread` (a compiled
     // technique says no shader reads it).
     void keepUnreadValue(int index);
 
     // Compiles (if needed) the technique `technique` of the outline and returns its code.
-    const TechniqueCode& ensureCompiled(int technique, GraphicsDevice::Impl& device);
+    const TechniqueCode& ensureCompiled(int technique, GraphicsDevice& device);
     // Compiles every technique not compiled yet, in one xlate call.
-    void compileAll(GraphicsDevice::Impl& device);
+    void compileAll(GraphicsDevice& device);
     // Makes programs and read ranges for a compiled effect and adopts its layouts.
-    Code& addCode(std::shared_ptr<const xlate::CompiledEffect> effect, GraphicsDevice::Impl& device);
-    void releasePrograms(GraphicsDevice::Impl& device);
+    Code& addCode(std::shared_ptr<const xlate::CompiledEffect> effect, GraphicsDevice& device);
+    void releasePrograms(GraphicsDevice& device);
 
     // "float4x4", "float3[8]", "texture2D", for messages.
     static std::string hlslTypeName(const xlate::Parameter& p);

@@ -1,7 +1,7 @@
 // EffectPass::Apply: what the D3D effect framework does at BeginPass/CommitChanges.
 #include <algorithm>
 
-#include "device/device_impl.h"
+#include "device/effect_programs.h"
 #include "effect/effect_impl.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/graphics_device.h"
@@ -76,9 +76,8 @@ void EffectPass::applyThis() {
     if (effect_->IsDisposed()) throw InvalidOperation("EffectPass '" + name_ + "'.Apply(): the effect was disposed");
     Effect::Impl& e = effectImpl(*effect_);
     GraphicsDevice& device = effect_->device();
-    GraphicsDevice::Impl& d = deviceImpl(device);
     // The first Apply of a technique compiles it (xlate, cached) and links its programs.
-    const Effect::Impl::TechniqueCode& code = e.ensureCompiled(technique_, d);
+    const Effect::Impl::TechniqueCode& code = e.ensureCompiled(technique_, device);
     const xlate::CompiledEffect& compiled = *code.code->effect;
     const xlate::Technique& technique = compiled.techniques[std::size_t(code.index)];
     const xlate::Pass& pass = technique.passes[std::size_t(pass_)];
@@ -97,8 +96,8 @@ void EffectPass::applyThis() {
         if (choice.shaders.empty()) {
             // D3D: a stage the pass does not assign keeps its shader -- except the geometry, hull
             // and domain stages, which a pass with a vertex shader and none of its own runs without.
-            if (stage >= 2 && stage < kStageCount && !pass.vertexShader.shaders.empty()) d.shaders[std::size_t(stage)] = nullptr;
-            if (stage == 1 && pass.nullPixelShader) d.shaders[1] = nullptr;  // Effects 10/11's SetPixelShader(NULL): a front end supplies none
+            if (stage >= 2 && stage < kStageCount && !pass.vertexShader.shaders.empty()) effects::bindShader(device, stage, nullptr);
+            if (stage == 1 && pass.nullPixelShader) effects::bindShader(device, 1, nullptr);  // Effects 10/11's SetPixelShader(NULL): a front end supplies none
             continue;
         }
         int chosen = chooseShader(e, choice, technique.name, pass.name);
@@ -107,15 +106,14 @@ void EffectPass::applyThis() {
                                    std::to_string(stage) + " is NULL (#" + std::to_string(chosen) + "); fxport has no fixed-function pipeline to draw with");
         std::size_t shader = std::size_t(chosen);
         const ShaderProgram& program = code.code->programs[shader];
-        if (stage == kComputeStage) d.computeShader = &program;
-        else d.shaders[std::size_t(stage)] = &program;
+        effects::bindShader(device, stage, &program);
         // Only the blocks this shader reads, and of those only the bytes it reads; changes to
         // other constants stay dirty until a shader that reads them is applied.
         const std::vector<Effect::Impl::BlockReads>& reads = code.code->reads[shader];
-        e.uploadRead(reads, *d.backend);
+        e.uploadRead(reads, effects::backend(device));
         for (const Effect::Impl::BlockReads& r : reads) {
             const Effect::Impl::Block& block = e.blocks[std::size_t(r.block)];
-            if (block.buffer) d.wantedUniformBuffers[std::size_t(uniformBindingFor(stage, block.binding))] = block.buffer;
+            if (block.buffer) effects::wantUniformBuffer(device, uniformBindingFor(stage, block.binding), block.buffer);
         }
         for (const SamplerSlot& slot : code.code->samplers[shader]) {
             // A texture parameter left unset does not clear the slot: hosts that feed
@@ -134,10 +132,11 @@ void EffectPass::applyThis() {
     // earlier pass's vertex shader under a pixel-shader-only pass), it reads this effect's
     // constants too: send what changed of those.
     for (int stage = 0; stage < kStageCount; ++stage)  // (a compute shader is another pass's own)
-        if (choices[stage]->shaders.empty() && d.shaders[std::size_t(stage)])
-            if (const auto* reads = e.readsOf(d.shaders[std::size_t(stage)])) e.uploadRead(*reads, *d.backend);
+        if (choices[stage]->shaders.empty())
+            if (const ShaderProgram* kept = effects::boundShader(device, stage))
+                if (const auto* reads = e.readsOf(kept)) e.uploadRead(*reads, effects::backend(device));
     applyPassStates(code.code->passStates[std::size_t(code.index)][std::size_t(pass_)], e, device);
-    d.passApplied = true;
+    effects::passApplied(device);
 }
 
 }  // namespace fxport

@@ -12,7 +12,6 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "device/device_impl.h"
 #include "fxport/graphics/render_target.h"
 #include "fxport/graphics/texture.h"
 #include "fxport/xlate/compiled_effect.h"
@@ -155,7 +154,9 @@ PixelBox drawablePixels(const GraphicsDevice& device, int targetWidth, int targe
 using detail::imageFormatOf;
 using detail::linkProgram;
 
-ComputePasses::ComputePasses(GraphicsDevice::Impl& owner)
+std::shared_ptr<ComputePasses> createComputePasses(GraphicsDevice& device) { return std::make_shared<GlComputePasses>(device); }
+
+GlComputePasses::GlComputePasses(GraphicsDevice& owner)
     : device(owner), printOutcomes(std::getenv("FXPORT_COMPUTE_PASSES_DEBUG") != nullptr) {
     if (const char* mb = std::getenv("FXPORT_COMPUTE_PASS_CACHE_MB")) {
         char* end = nullptr;
@@ -168,7 +169,7 @@ ComputePasses::ComputePasses(GraphicsDevice::Impl& owner)
     }
 }
 
-ComputePasses::~ComputePasses() {
+GlComputePasses::~GlComputePasses() {
     for (auto& [serial, capture] : capturePrograms)
         if (capture.program) glDeleteProgram(capture.program);
     for (auto& [key, dispatcher] : computePrograms)
@@ -191,7 +192,7 @@ ComputePasses::~ComputePasses() {
     }
 }
 
-void ComputePasses::dropEntry(std::map<EntryKey, ReplayEntry>::iterator it) {
+void GlComputePasses::dropEntry(std::map<EntryKey, ReplayEntry>::iterator it) {
     glDeleteTextures(1, &it->second.store);
     glDeleteBuffers(1, &it->second.vertices);
     entryBytes -= it->second.bytes;
@@ -199,7 +200,7 @@ void ComputePasses::dropEntry(std::map<EntryKey, ReplayEntry>::iterator it) {
     entries.erase(it);
 }
 
-void ComputePasses::forget(const ComputeAnalysis& analysis) {
+void GlComputePasses::forget(const ComputeAnalysis& analysis) {
     const int serial = analysis.serial;
     if (auto it = capturePrograms.find(serial); it != capturePrograms.end()) {
         if (it->second.program) glDeleteProgram(it->second.program);
@@ -227,13 +228,13 @@ void ComputePasses::forget(const ComputeAnalysis& analysis) {
     std::erase_if(userDataHistory, [&](const auto& item) { return item.first.vertexSerial == serial; });
 }
 
-bool ComputePasses::fallBack(const std::string& reason) {
-    if (printOutcomes) std::fprintf(stderr, "compute pass: %s falls back: %s\n", device.shaders[1]->label.c_str(), reason.c_str());
+bool GlComputePasses::fallBack(const std::string& reason) {
+    if (printOutcomes) std::fprintf(stderr, "compute pass: %s falls back: %s\n", prepared::shader(device, 1)->label.c_str(), reason.c_str());
     ++statistics.fellBack[reason];
     return false;
 }
 
-const ComputeAnalysis& ComputePasses::analysisOf(const ShaderProgram& program) {
+const ComputeAnalysis& GlComputePasses::analysisOf(const ShaderProgram& program) {
     if (!program.computeAnalysis) {
         auto analysis = std::make_shared<ComputeAnalysis>();
         analysis->serial = nextSerial++;
@@ -254,7 +255,7 @@ const ComputeAnalysis& ComputePasses::analysisOf(const ShaderProgram& program) {
     return *program.computeAnalysis;
 }
 
-GLuint ComputePasses::captureProgram(const ShaderProgram& vertex, const ComputeAnalysis& analysis, std::string& refusal) {
+GLuint GlComputePasses::captureProgram(const ShaderProgram& vertex, const ComputeAnalysis& analysis, std::string& refusal) {
     auto it = capturePrograms.find(analysis.serial);
     if (it == capturePrograms.end()) {
         std::vector<std::string> captured{"gl_Position"};
@@ -268,7 +269,7 @@ GLuint ComputePasses::captureProgram(const ShaderProgram& vertex, const ComputeA
     return it->second.program;
 }
 
-GLuint ComputePasses::fillPipeline(const ShaderProgram& vertex, int vertexSerial, const ComputeAnalysis& pixel, std::string& refusal) {
+GLuint GlComputePasses::fillPipeline(const ShaderProgram& vertex, int vertexSerial, const ComputeAnalysis& pixel, std::string& refusal) {
     auto fill = fillPrograms.find(pixel.serial);
     if (fill == fillPrograms.end()) {
         Fill made;
@@ -295,7 +296,7 @@ GLuint ComputePasses::fillPipeline(const ShaderProgram& vertex, int vertexSerial
     return it->second;
 }
 
-ComputePasses::ReplayEntry* ComputePasses::entryFor(const EntryKey& key, int width, int height, int layers, int capturedFloats,
+GlComputePasses::ReplayEntry* GlComputePasses::entryFor(const EntryKey& key, int width, int height, int layers, int capturedFloats,
                                                     std::string& refusal) {
     auto it = entries.find(key);
     if (it != entries.end()) {
@@ -330,12 +331,12 @@ ComputePasses::ReplayEntry* ComputePasses::entryFor(const EntryKey& key, int wid
     return &entries.emplace(key, entry).first->second;
 }
 
-void ComputePasses::readCounters() {
+void GlComputePasses::readCounters() {
     if (!compare.mapped) return;
     for (int i = 0; i < 4; ++i) counters[i] = compare.mapped[i];
 }
 
-ComputePassStatistics ComputePasses::currentStatistics() {
+ComputePassStatistics GlComputePasses::currentStatistics() {
     readCounters();
     ComputePassStatistics s = statistics;
     s.dispatched += long(counters[0]) + long(counters[1]);
@@ -352,40 +353,42 @@ ComputePassStatistics ComputePasses::currentStatistics() {
 // keys, analyses, programs, the entry, the pixel rectangle), and the steps must stay in this order
 // with the device's GL state restored between them. Splitting it belongs with making compute
 // passes a registered pass with plan/try steps (issue 22 item 2), not with moving the file.
-bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCall& call) {
+bool GlComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCall& call) {
     if ((type != PrimitiveType::TriangleList && type != PrimitiveType::TriangleStrip) || primitiveCount > 2) return false;
-    GraphicsDevice::Impl& d = device;
-    const GraphicsDevice& dev = d.device;
-    const ShaderProgram* vertex = d.shaders[0];
-    const ShaderProgram* pixel = d.shaders[1];
-    if (d.shaders[2]) return fallBack("geometry shader");
-    if (d.shaders[kHullStage] || d.shaders[kDomainStage]) return fallBack("tessellation");
-    if (d.storageDirty || !vertex->shader->storage.empty() || !pixel->shader->storage.empty()) return fallBack("UAVs");
+    const GraphicsDevice& dev = device;
+    const std::vector<RenderTargetBinding>& boundTargets = prepared::targets(dev);
+    const int targetWidth = prepared::targetWidth(dev), targetHeight = prepared::targetHeight(dev);
+    const PassEmulation& emulation = prepared::emulation(dev);
+    const ShaderProgram* vertex = prepared::shader(dev, 0);
+    const ShaderProgram* pixel = prepared::shader(dev, 1);
+    if (prepared::shader(dev, 2)) return fallBack("geometry shader");
+    if (prepared::shader(dev, kHullStage) || prepared::shader(dev, kDomainStage)) return fallBack("tessellation");
+    if (prepared::storageWritten(dev) || !vertex->shader->storage.empty() || !pixel->shader->storage.empty()) return fallBack("UAVs");
     // Without a depth buffer GL passes every depth and stencil test and writes nothing (the first
     // target's format says whether it has one, however its storage is made).
-    const DepthFormat depthFormat = d.targets.empty() ? dev.PresentationParameters().DepthStencilFormat
-                                                      : targetDepthFormat(d.targets[0].RenderTarget);
+    const DepthFormat depthFormat = boundTargets.empty() ? dev.PresentationParameters().DepthStencilFormat
+                                                         : targetDepthFormat(boundTargets[0].RenderTarget);
     const DepthStencilState& depth = dev.DepthStencilState;
     if (depthFormat != DepthFormat::None) {
         // A moot test (flush's drawDepthTestMoot: it cannot fail against the buffer's known clear
         // and nothing is written; the G-buffer clear quad under DepthRead) draws what no test draws.
-        if (depth.DepthBufferEnable && !d.drawDepthTestMoot &&
+        if (depth.DepthBufferEnable && !prepared::depthTestMoot(dev) &&
             (depth.DepthBufferWriteEnable || depth.DepthBufferFunction != CompareFunction::Always))
             return fallBack("depth test or write");
         if (depth.StencilEnable) return fallBack("stencil test");
     }
-    if (d.emulation.alphaTest) return fallBack("alpha test");
-    if (d.emulation.fixedFunction) return fallBack("D3D9 fixed-function emulation");
-    if (d.emulation.srgbWrite) return fallBack("sRGB write");
+    if (emulation.alphaTest) return fallBack("alpha test");
+    if (emulation.fixedFunction) return fallBack("D3D9 fixed-function emulation");
+    if (emulation.srgbWrite) return fallBack("sRGB write");
     const RasterizerState& raster = dev.RasterizerState;
     if (raster.FillMode != FillMode::Solid) return fallBack("wireframe");
-    const BlendState& blend = d.drawBlend();  // flush's: a blend onto a zero clear may be a write
+    const BlendState& blend = prepared::blend(dev);  // flush's: a blend onto a zero clear may be a write
     if (blend.MultiSampleMask != -1) return fallBack("multisample mask");
 
     // Targets: formats, blend and masks.
-    const RenderTargetBinding backBuffer(d.backBuffer.get());
-    const RenderTargetBinding* bindings = d.targets.empty() ? &backBuffer : d.targets.data();
-    const std::size_t boundCount = std::max<std::size_t>(d.targets.size(), 1);
+    const RenderTargetBinding backBuffer(prepared::backBuffer(dev));
+    const RenderTargetBinding* bindings = boundTargets.empty() ? &backBuffer : boundTargets.data();
+    const std::size_t boundCount = std::max<std::size_t>(boundTargets.size(), 1);
     const ColorWriteChannels masks[4] = {blend.ColorWriteChannels, blend.ColorWriteChannels1, blend.ColorWriteChannels2,
                                          blend.ColorWriteChannels3};
     std::array<detail::ComputeTarget, kMaxRenderTargets> targets{};
@@ -499,8 +502,8 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
                             std::bit_cast<std::uint32_t>(raster.SlopeScaleDepthBias),
                             int(type),
                             primitiveCount,
-                            d.targetWidth,
-                            d.targetHeight};
+                            targetWidth,
+                            targetHeight};
     if (call.userDataHash != 0) {
         UserDataHistory& history = userDataHistory[entryKey];
         if (history.lastHash == call.userDataHash) history.changedInARow = 0;
@@ -508,12 +511,12 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
         history.lastHash = call.userDataHash;
         if (history.changedInARow >= kChangesBeforeFragments) return fallBack("user vertices change from draw to draw");
     }
-    ReplayEntry* entry = entryFor(entryKey, d.targetWidth, d.targetHeight, detail::replayLayers(pixelAnalysis.pixel),
+    ReplayEntry* entry = entryFor(entryKey, targetWidth, targetHeight, detail::replayLayers(pixelAnalysis.pixel),
                                   vertexCount * floatsPerVertex, refusal);
     if (!entry) return fallBack(refusal);
 
     // The pixels the draw may touch: the viewport (GL clips to it), the targets, the scissor.
-    const auto [x0, y0, x1, y1] = detail::drawablePixels(dev, d.targetWidth, d.targetHeight);
+    const auto [x0, y0, x1, y1] = detail::drawablePixels(dev, targetWidth, targetHeight);
     ++statistics.issued;
     if (x1 <= x0 || y1 <= y0) {  // the fragment stage would draw nothing either
         ++statistics.dispatched;
@@ -534,7 +537,7 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
     glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, captureBuffer, 0, captureBytes);
     glEnable(GL_RASTERIZER_DISCARD);
     glBeginTransformFeedback(GL_TRIANGLES);
-    device.backend->draw(call);
+    prepared::backend(device).draw(call);
     glEndTransformFeedback();
     glDisable(GL_RASTERIZER_DISCARD);  // transform feedback's writes need no barrier before later commands read them
 
@@ -566,10 +569,10 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
     glUseProgram(0);
     glBindProgramPipeline(fill);
     if (!fillFramebuffer) glCreateFramebuffers(1, &fillFramebuffer);
-    if (fillWidth != d.targetWidth || fillHeight != d.targetHeight) {
-        glNamedFramebufferParameteri(fillFramebuffer, GL_FRAMEBUFFER_DEFAULT_WIDTH, d.targetWidth);
-        glNamedFramebufferParameteri(fillFramebuffer, GL_FRAMEBUFFER_DEFAULT_HEIGHT, d.targetHeight);
-        fillWidth = d.targetWidth, fillHeight = d.targetHeight;
+    if (fillWidth != targetWidth || fillHeight != targetHeight) {
+        glNamedFramebufferParameteri(fillFramebuffer, GL_FRAMEBUFFER_DEFAULT_WIDTH, targetWidth);
+        glNamedFramebufferParameteri(fillFramebuffer, GL_FRAMEBUFFER_DEFAULT_HEIGHT, targetHeight);
+        fillWidth = targetWidth, fillHeight = targetHeight;
     }
     glBindFramebuffer(GL_FRAMEBUFFER, fillFramebuffer);
     if (raster.ScissorTestEnable) glDisable(GL_SCISSOR_TEST);
@@ -578,9 +581,9 @@ bool ComputePasses::tryDraw(PrimitiveType type, int primitiveCount, const DrawCa
     glBindImageTexture(detail::kStoreUnit, entry->store, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32UI);
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, compare.commands);
     issueDrawIndirect(call, detail::kCommandsFill * 4);
-    glBindFramebuffer(GL_FRAMEBUFFER, d.boundFramebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, prepared::framebuffer(dev));
     if (raster.ScissorTestEnable) glEnable(GL_SCISSOR_TEST);
-    glBindProgramPipeline(d.boundPipeline);
+    glBindProgramPipeline(prepared::pipeline(dev));
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 
     // 4. Pixel stage, over the compare step's rectangle (no groups when the draw may not replay).

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "device/compute_passes.h"
 #include "device/draw_hints.h"
 #include "gl/passes/compute_pass_source.h"
 #include "gl/draw_call.h"
@@ -63,28 +64,29 @@ struct ComputeAnalysis {
     int inputsId = 0;  // pixel shaders: names detail::inputSignature (pixel shaders that read the same inputs share replay entries)
 };
 
-struct ComputePasses {
-    explicit ComputePasses(GraphicsDevice::Impl& owner);
-    ~ComputePasses();
-    GraphicsDevice::Impl& device;
+// The GL implementation of device/compute_passes.h.
+struct GlComputePasses final : ComputePasses {
+    explicit GlComputePasses(GraphicsDevice& owner);
+    ~GlComputePasses() override;
+    GraphicsDevice& device;
 
     // Runs the current draw (flushed, vertex array bound) as a compute dispatch when it may.
     // False: draw it as usual.
-    bool tryDraw(PrimitiveType type, int primitiveCount, const DrawCall& draw);
+    bool tryDraw(PrimitiveType type, int primitiveCount, const DrawCall& draw) override;
 
     // SpriteBatch (sprite_batch.cpp), for a batch of sprites drawn with its own effect whose every
     // sprite copies texels 1:1 (white, unrotated, unflipped, whole pixels, Point sampling): under a
     // Min or Max blend the batch's pixels are the min (max) over the sprites covering them and the
     // target, in any order, so one dispatch computes them (texel_copies.cpp). Flushes and
     // dispatches, or returns false (nothing done: draw it as usual).
-    bool tryTexelCopies(const Texture2D& texture, const std::vector<detail::TexelCopy>& copies);
+    bool tryTexelCopies(const Texture2D& texture, const std::vector<detail::TexelCopy>& copies) override;
 
     // Deletes the programs and replay entries made for a shader whose effect releases its programs.
-    void forget(const ComputeAnalysis& analysis);
+    void forget(const ComputeAnalysis& analysis) override;
 
     // The statistics, with the GPU's counters as far as it has got (read without waiting: draws it
     // has not run yet are not counted; a read-back of a target waits for them).
-    ComputePassStatistics currentStatistics();
+    ComputePassStatistics currentStatistics() override;
 
 private:
     bool fallBack(const std::string& reason);

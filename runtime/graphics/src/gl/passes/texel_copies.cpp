@@ -1,4 +1,4 @@
-// Texel-copy reductions (ComputePasses::tryTexelCopies, issue 16): a SpriteBatch batch whose every
+// Texel-copy reductions (GlComputePasses::tryTexelCopies, issue 16): a SpriteBatch batch whose every
 // sprite copies texels 1:1 into a target of the texture's format, under a Min or Max blend. The
 // pixel shader is SpriteBatch's own (tex2D * colour) with a white colour, Point sampling lands on
 // the texel under each pixel centre, so each fragment's output is that texel exactly, and Min/Max
@@ -11,7 +11,6 @@
 #include <cstdio>
 
 #include "gl/passes/compute_pass.h"
-#include "device/device_impl.h"
 #include "fxport/graphics/render_target.h"
 #include "fxport/graphics/texture.h"
 #include "gl/gl_formats.h"
@@ -79,9 +78,10 @@ std::string texelCopyShaderSource(const std::string& imageFormat, BlendOp color,
 
 }  // namespace detail
 
-bool ComputePasses::tryTexelCopies(const Texture2D& texture, const std::vector<detail::TexelCopy>& copies) {
-    GraphicsDevice::Impl& d = device;
-    const GraphicsDevice& dev = d.device;
+bool GlComputePasses::tryTexelCopies(const Texture2D& texture, const std::vector<detail::TexelCopy>& copies) {
+    const GraphicsDevice& dev = device;
+    const std::vector<RenderTargetBinding>& boundTargets = prepared::targets(dev);
+    const PassEmulation& emulation = prepared::emulation(dev);
     const BlendState& blend = dev.BlendState;
     auto reduction = [](BlendFunction f, detail::BlendOp& op) {
         op = f == BlendFunction::Min ? detail::BlendOp::Min : detail::BlendOp::Max;
@@ -91,7 +91,7 @@ bool ComputePasses::tryTexelCopies(const Texture2D& texture, const std::vector<d
     if (!reduction(blend.ColorBlendFunction, color) || !reduction(blend.AlphaBlendFunction, alpha) || copies.empty())
         return false;  // not a reduction: SpriteBatch draws it (and the draw may still be a compute pass)
 
-    const Texture* target = d.targets.empty() ? d.backBuffer.get() : d.targets[0].RenderTarget;
+    const Texture* target = boundTargets.empty() ? prepared::backBuffer(dev) : boundTargets[0].RenderTarget;
     if (target->kind() != Texture::Kind::Texture2D) return fallBack("texel copies: a cube map face target");
     const auto& target2D = *static_cast<const Texture2D*>(target);
     if (target == &texture) return fallBack("texel copies: the sprite texture is the target");
@@ -105,11 +105,11 @@ bool ComputePasses::tryTexelCopies(const Texture2D& texture, const std::vector<d
     const DepthStencilState& depth = dev.DepthStencilState;
     // Without a depth buffer GL passes every depth and stencil test (the first target's format
     // says whether it has one, however its storage is made).
-    const DepthFormat depthFormat = d.targets.empty() ? dev.PresentationParameters().DepthStencilFormat
+    const DepthFormat depthFormat = boundTargets.empty() ? dev.PresentationParameters().DepthStencilFormat
                                                       : static_cast<const RenderTarget2D*>(target)->DepthStencilFormat();
     if (depthFormat != DepthFormat::None && (depth.DepthBufferEnable || depth.StencilEnable))
         return fallBack("texel copies: depth or stencil test");
-    if (d.emulation.alphaTest || d.emulation.fixedFunction || d.emulation.srgbWrite)
+    if (emulation.alphaTest || emulation.fixedFunction || emulation.srgbWrite)
         return fallBack("texel copies: alpha test, D3D9 fixed-function emulation or sRGB write");
     const RasterizerState& raster = dev.RasterizerState;
     // SpriteBatch's sprites are clockwise on screen: CullClockwiseFace culls them all.
@@ -161,7 +161,7 @@ bool ComputePasses::tryTexelCopies(const Texture2D& texture, const std::vector<d
 
     // What a draw does first: the pending clear the blend reads, the state shadow, the
     // bookkeeping of written targets.
-    d.flush("SpriteBatch.End");
+    prepared::flush(device, "SpriteBatch.End");
     ++statistics.issued;
     ++statistics.dispatched;
     if (!copiesBuffer) glCreateBuffers(1, &copiesBuffer);
