@@ -167,6 +167,20 @@ TEST_P(HlslSemantics, LitRaisesTheHalfVectorTermToThePower) {
     }
 }
 
+// ldexp(x, e) = x * 2^e for any float e (fxc: exp then mul); GLSL's ldexp takes an int exponent,
+// which truncated 0.5 to 0 and -1.5 to -1.
+TEST_P(HlslSemantics, LdexpRaisesTwoToAFractionalExponent) {
+    const float x[4] = {3, 3, -2, 5}, e[4] = {0.5f, -1.5f, 2.25f, 3};
+    auto fromUniforms = effect("float4 X; float4 E;", "return ldexp(X, E);");
+    fromUniforms->Parameters["X"].SetValue(Vector4(x[0], x[1], x[2], x[3]));
+    fromUniforms->Parameters["E"].SetValue(Vector4(e[0], e[1], e[2], e[3]));
+    auto fromLiterals = effect("", "return ldexp(float4(3, 3, -2, 5), float4(0.5, -1.5, 2.25, 3));");
+    for (Effect* fx : {fromUniforms.get(), fromLiterals.get()}) {
+        std::vector<float> px = draw(*fx);
+        for (int k = 0; k < 4; ++k) EXPECT_NEAR(px[size_t(k)], x[k] * std::exp2(e[k]), 2e-5 * std::fabs(x[k] * std::exp2(e[k]))) << "channel " << k;
+    }
+}
+
 // fxc folds constants and refuses a divisor that folds to zero: integers at every model, floats
 // at SM2-3 (SM4+ computes inf). The error names the entry point.
 TEST_P(HlslSemantics, DivisionByAConstantZeroIsRefusedAsFxcRefusesIt) {

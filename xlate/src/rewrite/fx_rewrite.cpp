@@ -48,6 +48,7 @@
 #include "rewrite/overload_choices.h"
 #include "rewrite/intrinsic_overrides.h"
 #include "rewrite/scalar_intrinsics.h"
+#include "rewrite/ldexp_calls.h"
 #include "rewrite/sign_results.h"
 #include "rewrite/min_precision_types.h"
 
@@ -480,6 +481,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : intrinsicsAsFxc(syntax)) edits.push_back(std::move(e));
     for (auto& e : scalarIntrinsicCalls(syntax)) edits.push_back(std::move(e));
     for (auto& e : signResultsAsInts(syntax)) edits.push_back(std::move(e));
+    for (auto& e : ldexpAsExp2(syntax)) edits.push_back(std::move(e));
     if (out.dx9Samplers)
         for (auto& e : oneDimensionalSamplingAsRows(syntax)) edits.push_back(std::move(e));
     for (auto& e : mixedShapeConversions(syntax)) edits.push_back(std::move(e));
