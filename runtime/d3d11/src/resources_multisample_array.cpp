@@ -8,28 +8,46 @@
 
 namespace fxport::d3d11 {
 
-HRESULT multisampleArrayShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc, ID3D11ShaderResourceView** pp) {
-    const std::string call = "CreateShaderResourceView", at = call + ": D3D11_SHADER_RESOURCE_VIEW_DESC.";
-    D3D11_SHADER_RESOURCE_VIEW_DESC d;
-    d.Format = t->desc.Format;
-    d.ViewDimension = D3D11_SRV_DIMENSION_TEXTURE2DMSARRAY;
-    d.Texture2DMSArray = {0, UINT(t->slices())};
+namespace {
+
+// The description a view of the whole array or of the slices `pDesc` names, in `d`; both view kinds
+// check alike: only the TEXTURE2DMSARRAY dimension (D3D: a multisampled array is viewed as one, a
+// TEXTURE2DARRAY or TEXTURE2DMS view is an error), a format of the texture's family, slices in range,
+// and the stored format (`verb`: what fxport does with the texels, for the E_NOTIMPL message).
+template <class Desc, class Dimension>
+HRESULT decodeMultisampleArrayView(const std::string& call, const std::string& descName, const Texture& t, const Desc* pDesc,
+                                   Dimension dimension, const char* dimensionName, const char* verb, Desc& d) {
+    const std::string at = call + ": " + descName + ".";
+    d.Format = t.desc.Format;
+    d.ViewDimension = dimension;
+    d.Texture2DMSArray = {0, UINT(t.slices())};
     if (pDesc) {
-        // D3D: a multisampled array is viewed as one (a TEXTURE2DARRAY or TEXTURE2DMS view is an error).
-        if (pDesc->ViewDimension != D3D11_SRV_DIMENSION_TEXTURE2DMSARRAY)
-            return fail(E_INVALIDARG, at + "ViewDimension = " + std::to_string(pDesc->ViewDimension) +
-                                          " for a multisampled array texture (D3D11_SRV_DIMENSION_TEXTURE2DMSARRAY)");
-        if (HRESULT f = checkViewFormat(call.c_str(), "D3D11_SHADER_RESOURCE_VIEW_DESC", pDesc->Format, *t, false); FAILED(f)) return f;
+        if (pDesc->ViewDimension != dimension)
+            return fail(E_INVALIDARG, at + "ViewDimension = " + std::to_string(pDesc->ViewDimension) + " for a multisampled array texture (" +
+                                          dimensionName + ")");
+        if (HRESULT f = checkViewFormat(call.c_str(), descName.c_str(), pDesc->Format, t, false); FAILED(f)) return f;
         const auto& a = pDesc->Texture2DMSArray;
-        if (HRESULT f = checkSlices(at + "Texture2DMSArray.", a.FirstArraySlice, a.ArraySize, t->slices()); FAILED(f)) return f;
+        if (HRESULT f = checkSlices(at + "Texture2DMSArray.", a.FirstArraySlice, a.ArraySize, t.slices()); FAILED(f)) return f;
         d.Texture2DMSArray = a;
         if (pDesc->Format != DXGI_FORMAT_UNKNOWN) d.Format = pDesc->Format;
     }
-    if (viewSurface(d.Format, *t) != t->format)
-        return fail(E_NOTIMPL, at + "Format = " + formatName(d.Format) + " of a " + formatName(t->desc.Format) +
-                                   " multisampled texture: fxport reads those in their stored format only");
+    if (viewSurface(d.Format, t) != t.format)
+        return fail(E_NOTIMPL, at + "Format = " + formatName(d.Format) + " of a " + formatName(t.desc.Format) + " multisampled texture: fxport " +
+                                   verb + " those in their stored format only");
+    return S_OK;
+}
+
+}  // namespace
+
+HRESULT multisampleArrayShaderResourceView(Device* device, Texture* t, const D3D11_SHADER_RESOURCE_VIEW_DESC* pDesc, ID3D11ShaderResourceView** pp) {
+    const char* call = "CreateShaderResourceView";
+    D3D11_SHADER_RESOURCE_VIEW_DESC d;
+    if (HRESULT f = decodeMultisampleArrayView(call, "D3D11_SHADER_RESOURCE_VIEW_DESC", *t, pDesc, D3D11_SRV_DIMENSION_TEXTURE2DMSARRAY,
+                                               "D3D11_SRV_DIMENSION_TEXTURE2DMSARRAY", "reads", d);
+        FAILED(f))
+        return f;
     if (!pp) return succeed();
-    return guarded(call.c_str(), [&] {
+    return guarded(call, [&] {
         auto view = std::unique_ptr<ShaderResourceView, void (*)(ShaderResourceView*)>(new ShaderResourceView(device, t, d),
                                                                                        [](ShaderResourceView* v) { v->Release(); });
         const auto& a = d.Texture2DMSArray;
@@ -41,26 +59,14 @@ HRESULT multisampleArrayShaderResourceView(Device* device, Texture* t, const D3D
 }
 
 HRESULT multisampleArrayRenderTargetView(Device* device, Texture* t, const D3D11_RENDER_TARGET_VIEW_DESC* pDesc, ID3D11RenderTargetView** pp) {
-    const std::string call = "CreateRenderTargetView", at = call + ": D3D11_RENDER_TARGET_VIEW_DESC.";
+    const char* call = "CreateRenderTargetView";
     D3D11_RENDER_TARGET_VIEW_DESC d;
-    d.Format = t->desc.Format;
-    d.ViewDimension = D3D11_RTV_DIMENSION_TEXTURE2DMSARRAY;
-    d.Texture2DMSArray = {0, UINT(t->slices())};
-    if (pDesc) {
-        if (pDesc->ViewDimension != D3D11_RTV_DIMENSION_TEXTURE2DMSARRAY)
-            return fail(E_INVALIDARG, at + "ViewDimension = " + std::to_string(pDesc->ViewDimension) +
-                                          " for a multisampled array texture (D3D11_RTV_DIMENSION_TEXTURE2DMSARRAY)");
-        if (HRESULT f = checkViewFormat(call.c_str(), "D3D11_RENDER_TARGET_VIEW_DESC", pDesc->Format, *t, false); FAILED(f)) return f;
-        const auto& a = pDesc->Texture2DMSArray;
-        if (HRESULT f = checkSlices(at + "Texture2DMSArray.", a.FirstArraySlice, a.ArraySize, t->slices()); FAILED(f)) return f;
-        d.Texture2DMSArray = a;
-        if (pDesc->Format != DXGI_FORMAT_UNKNOWN) d.Format = pDesc->Format;
-    }
-    if (viewSurface(d.Format, *t) != t->format)
-        return fail(E_NOTIMPL, at + "Format = " + formatName(d.Format) + " of a " + formatName(t->desc.Format) +
-                                   " multisampled texture: fxport writes those in their stored format only");
+    if (HRESULT f = decodeMultisampleArrayView(call, "D3D11_RENDER_TARGET_VIEW_DESC", *t, pDesc, D3D11_RTV_DIMENSION_TEXTURE2DMSARRAY,
+                                               "D3D11_RTV_DIMENSION_TEXTURE2DMSARRAY", "writes", d);
+        FAILED(f))
+        return f;
     if (!pp) return succeed();
-    return guarded(call.c_str(), [&] {
+    return guarded(call, [&] {
         auto view = std::unique_ptr<RenderTargetView, void (*)(RenderTargetView*)>(new RenderTargetView(device, t, d),
                                                                                    [](RenderTargetView* v) { v->Release(); });
         const auto& a = d.Texture2DMSArray;
