@@ -38,6 +38,13 @@ std::vector<T> readTexels(Device& d, ID3D11Texture2D* texture, std::size_t perTe
     std::memcpy(out.data(), bytes.data(), out.size() * sizeof(T));
     return out;
 }
+// "vs": one triangle over the whole target from SV_VertexID, no vertex buffer (tests add their "ps").
+inline constexpr const char* kFullScreenVertexShader = R"(
+float4 vs(uint id : SV_VertexID) : SV_Position {
+    float2 corner = float2((id << 1) & 2, id & 2);
+    return float4(corner * float2(2, -2) + float2(-1, 1), 0, 1);
+}
+)";
 // "vs": a full-screen triangle from SV_VertexID; "ps": the texel of t0 under each pixel (Load, no
 // filtering) -- what drawWithTexture draws to read a texture's texels back through a shader.
 extern const char* const kTexelLoadShader;

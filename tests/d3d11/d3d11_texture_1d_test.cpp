@@ -15,12 +15,7 @@
 namespace d3d11test {
 namespace {
 
-const char* const kFullScreen = R"(
-float4 vs(uint id : SV_VertexID) : SV_Position {
-    float2 corner = float2((id << 1) & 2, id & 2);
-    return float4(corner * float2(2, -2) + float2(-1, 1), 0, 1);
-}
-)";
+const char* const kFullScreen = kFullScreenVertexShader;
 
 using Texel = std::array<float, 4>;
 

@@ -10,12 +10,7 @@
 namespace d3d11test {
 namespace {
 
-const char* const kFullScreen = R"(
-float4 vs(uint id : SV_VertexID) : SV_Position {
-    float2 corner = float2((id << 1) & 2, id & 2);
-    return float4(corner * float2(2, -2) + float2(-1, 1), 0, 1);
-}
-)";
+const char* const kFullScreen = kFullScreenVertexShader;
 
 ComPtr<ID3D11Texture2D> floatTarget(Device& d, UINT width, UINT height) {
     D3D11_TEXTURE2D_DESC desc;

@@ -17,12 +17,7 @@ using Rgba = std::array<std::uint8_t, 4>;
 using Texel = std::array<float, 4>;
 constexpr int kSlices = 3, kLevels = 2;
 
-const char* const kFullScreen = R"(
-float4 vs(uint id : SV_VertexID) : SV_Position {
-    float2 corner = float2((id << 1) & 2, id & 2);
-    return float4(corner * float2(2, -2) + float2(-1, 1), 0, 1);
-}
-)";
+const char* const kFullScreen = kFullScreenVertexShader;
 
 // Texel (x, y) of `slice` at `level`: no two alike.
 Rgba colourAt(int slice, int level, int x, int y) {

@@ -17,12 +17,7 @@ namespace {
 
 using Texel = std::array<float, 4>;
 
-const char* const kFullScreen = R"(
-float4 vs(uint id : SV_VertexID) : SV_Position {
-    float2 corner = float2((id << 1) & 2, id & 2);
-    return float4(corner * float2(2, -2) + float2(-1, 1), 0, 1);
-}
-)";
+const char* const kFullScreen = kFullScreenVertexShader;
 
 ComPtr<ID3D11Texture2D> makeTexture(Device& d, DXGI_FORMAT format, UINT width, UINT height, UINT bind, const void* texels = nullptr,
                                     UINT rowPitch = 0) {
