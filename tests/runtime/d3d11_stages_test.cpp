@@ -59,7 +59,8 @@ technique11 Compute
 }
 )";
 
-const std::string kTessellationEffect = std::string(fxport::test::kQuadPatchDeclarations) + fxport::test::kQuadPatchStages + R"(
+// One pass of the four tessellation stages VS, HS, DS and PS, each effect below declares.
+const char* const kTessellationTechnique = R"(
 technique11 Tessellate
 {
     pass P0
@@ -72,9 +73,11 @@ technique11 Tessellate
 }
 )";
 
+const std::string kTessellationEffect = std::string(fxport::test::kQuadPatchDeclarations) + fxport::test::kQuadPatchStages + kTessellationTechnique;
+
 // The clip distance x + 0.25 from the vertex shader, through the hull shader's input and output
 // patch, interpolated by the domain shader and written as its SV_ClipDistance0.
-const char* const kClippedTessellationEffect = R"(struct ControlPoint { float3 pos : POSITION; float clip : SV_ClipDistance0; };
+const std::string kClippedTessellationEffect = std::string(R"(struct ControlPoint { float3 pos : POSITION; float clip : SV_ClipDistance0; };
 struct PatchConstants { float edges[4] : SV_TessFactor; float inside[2] : SV_InsideTessFactor; };
 struct DomainOut { float4 pos : SV_Position; float clip : SV_ClipDistance0; float4 color : COLOR0; };
 
@@ -106,18 +109,7 @@ DomainOut DS(PatchConstants pc, float2 uv : SV_DomainLocation, const OutputPatch
 }
 
 float4 PS(DomainOut i) : SV_Target { return i.color; }
-
-technique11 Tessellate
-{
-    pass P0
-    {
-        SetVertexShader(CompileShader(vs_5_0, VS()));
-        SetHullShader(CompileShader(hs_5_0, HS()));
-        SetDomainShader(CompileShader(ds_5_0, DS()));
-        SetPixelShader(CompileShader(ps_5_0, PS()));
-    }
-}
-)";
+)") + kTessellationTechnique;
 
 EffectPass& pass(Effect& effect, const std::string& name) {
     for (EffectPass& p : effect.CurrentTechnique->Passes)
