@@ -1,0 +1,166 @@
+// See out_of_range_accesses.h.
+#include "spirv/out_of_range_accesses.h"
+
+#include <map>
+#include <vector>
+
+namespace fxport::xlate {
+
+namespace {
+
+constexpr std::uint32_t kCapability = 17, kTypeImage = 25, kTypeRuntimeArray = 29, kTypeStruct = 30, kTypePointer = 32,
+                        kVariable = 59, kLoad = 61, kAccessChain = 65, kInBoundsAccessChain = 66, kArrayLength = 68,
+                        kCompositeConstruct = 80, kCompositeExtract = 81, kImageFetch = 95, kImageRead = 98,
+                        kImageQuerySizeLod = 103, kImageQuerySize = 104, kImageQueryLevels = 106,
+                        kImageQuerySamples = 107, kIAdd = 128, kLogicalAnd = 167, kSelect = 169, kULessThan = 176;
+constexpr std::uint32_t kImageQueryCapability = 50, kDimBuffer = 5;
+constexpr std::uint32_t kUniform = 2, kStorageBuffer = 12;
+constexpr std::uint32_t kLod = 0x2, kConstOffset = 0x8, kSample = 0x40;
+
+// The word index of image operand `bit` of an instruction whose mask is at word 5, 0 when absent.
+size_t imageOperand(const SpirvInstruction& in, std::uint32_t bit) {
+    const std::uint32_t mask = in.word(5);
+    if (in.words.size() < 7 || !(mask & bit)) return 0;
+    size_t at = 6;
+    for (std::uint32_t b = 1; b < bit; b <<= 1)
+        if (mask & b) at += (b == 0x4) ? 2 : 1;  // Grad takes two ids, every other operand one
+    return at < in.words.size() ? at : 0;
+}
+
+bool isConstantZero(const ParsedSpirv& m, std::uint32_t id) {
+    const SpirvInstruction* d = m.definition(id);
+    return d && (d->opcode() == spv_op::ConstantNull || (d->opcode() == spv_op::Constant && d->word(3) == 0));
+}
+
+struct Emitter {
+    ParsedSpirv& m;
+    std::vector<SpirvInstruction>& out;
+    std::uint32_t boolType = m.boolTypeLike(0);
+
+    std::uint32_t emit(std::uint32_t opcode, std::uint32_t type, const std::vector<std::uint32_t>& operands) {
+        out.push_back(m.value(opcode, type, operands));
+        return out.back().words[2];
+    }
+    // Unsigned a < b (a negative int is out of range too), all components, as one bool.
+    std::uint32_t below(std::uint32_t a, std::uint32_t b) {
+        const std::uint32_t count = m.components(m.typeOf(a)).second;
+        std::uint32_t less = emit(kULessThan, m.boolTypeLike(m.typeOf(a)), {a, b});
+        return count == 1 ? less : emit(spv_op::All, boolType, {less});
+    }
+    std::uint32_t both(std::uint32_t a, std::uint32_t b) { return a ? emit(kLogicalAnd, boolType, {a, b}) : b; }
+    // `%result = ok ? value : 0` of a scalar or vector type.
+    SpirvInstruction select(std::uint32_t type, std::uint32_t result, std::uint32_t ok, std::uint32_t value) {
+        const std::uint32_t count = m.components(type).second;
+        if (count > 1) ok = emit(kCompositeConstruct, m.boolTypeLike(type), std::vector<std::uint32_t>(count, ok));
+        return {{spirvFirstWord(kSelect, 6), type, result, ok, value, m.splatConstant(type, 0)}};
+    }
+    // `coordinate + offset`, the offset widened with zeros to the coordinate's components (an
+    // array's layer is not offset).
+    std::uint32_t offset(std::uint32_t coordinate, std::uint32_t offset) {
+        const std::uint32_t type = m.typeOf(coordinate);
+        auto [scalar, count] = m.components(type);
+        const std::uint32_t offsetCount = m.components(m.typeOf(offset)).second;
+        if (offsetCount > count) return coordinate;
+        if (offsetCount < count) {
+            std::vector<std::uint32_t> parts;
+            for (std::uint32_t k = 0; k < count; ++k)
+                parts.push_back(k >= offsetCount ? m.constant(scalar, 0) : offsetCount == 1 ? offset : emit(kCompositeExtract, scalar, {offset, k}));
+            offset = emit(kCompositeConstruct, type, parts);
+        }
+        return emit(kIAdd, type, {coordinate, offset});
+    }
+};
+
+// The texel read `in` (OpImageFetch or OpImageRead) as `inRange ? texel : 0`.
+void guardTexelRead(ParsedSpirv& m, const SpirvInstruction& in, const SpirvInstruction& imageType, std::vector<SpirvInstruction>& out) {
+    Emitter e{m, out};
+    const std::uint32_t image = in.words[3];
+    std::uint32_t coordinate = in.words[4];
+    const std::uint32_t coordinateType = m.typeOf(coordinate);
+    const bool multisampled = imageType.word(6) == 1, sampled = imageType.word(7) == 1;
+    if (size_t at = imageOperand(in, kConstOffset)) coordinate = e.offset(coordinate, in.words[at]);
+    const size_t lodAt = imageOperand(in, kLod), sampleAt = imageOperand(in, kSample);
+    std::uint32_t ok = 0;
+    std::uint32_t size = 0;
+    if (in.opcode() == kImageFetch && sampled && !multisampled && imageType.word(3) != kDimBuffer) {
+        const std::uint32_t lod = lodAt ? in.words[lodAt] : m.constant(m.intType(), 0);
+        size = e.emit(kImageQuerySizeLod, coordinateType, {image, lod});
+        if (lodAt && !isConstantZero(m, lod)) ok = e.below(lod, e.emit(kImageQueryLevels, m.typeOf(lod), {image}));
+    } else {
+        size = e.emit(kImageQuerySize, coordinateType, {image});
+    }
+    ok = e.both(ok, e.below(coordinate, size));
+    if (multisampled && sampleAt)
+        ok = e.both(ok, e.below(in.words[sampleAt], e.emit(kImageQuerySamples, m.typeOf(in.words[sampleAt]), {image})));
+    SpirvInstruction read = in;
+    read.words[2] = m.newId();
+    out.push_back(read);
+    out.push_back(e.select(in.words[1], in.words[2], ok, read.words[2]));
+}
+
+bool isScalarOrVector(const ParsedSpirv& m, std::uint32_t type) {
+    const SpirvInstruction* t = m.definition(m.components(type).first);
+    return t && (t->opcode() == spv_op::TypeInt || t->opcode() == spv_op::TypeFloat || t->opcode() == spv_op::TypeBool);
+}
+
+}  // namespace
+
+// Tests: xlate OutOfRangeReads.*; d3d11 OutOfRangeReads.*.
+bool outOfRangeReadsReadZero(ParsedSpirv& m) {
+    if (!m.has({kImageFetch, kImageRead, kArrayLength, kAccessChain, kInBoundsAccessChain})) return false;
+    // Buffers ending in a runtime array (structured and byte-address buffers): variable -> member.
+    std::map<std::uint32_t, std::uint32_t> runtimeArrayMember;
+    bool hasImageQuery = false;
+    for (const SpirvInstruction& in : m.instructions) {
+        if (in.opcode() == kCapability && in.word(1) == kImageQueryCapability) hasImageQuery = true;
+        if (in.opcode() != kVariable || (in.word(3) != kUniform && in.word(3) != kStorageBuffer)) continue;
+        const SpirvInstruction* pointer = m.definition(in.words[1]);
+        const SpirvInstruction* block = pointer && pointer->opcode() == kTypePointer ? m.definition(pointer->word(3)) : nullptr;
+        if (!block || block->opcode() != kTypeStruct || block->words.size() < 3) continue;
+        const SpirvInstruction* last = m.definition(block->words.back());
+        if (last && last->opcode() == kTypeRuntimeArray) runtimeArrayMember[in.words[2]] = std::uint32_t(block->words.size() - 3);
+    }
+    bool changed = false, capabilityAdded = hasImageQuery || !m.has({kImageFetch, kImageRead});
+    m.rewrite([&](const SpirvInstruction& in, std::vector<SpirvInstruction>& out) {
+        if (in.opcode() == kCapability && !capabilityAdded) {  // texel guards query sizes
+            out.push_back(in);
+            out.push_back({{spirvFirstWord(kCapability, 2), kImageQueryCapability}});
+            capabilityAdded = changed = true;
+            return;
+        }
+        if ((in.opcode() == kImageFetch || in.opcode() == kImageRead) && in.words.size() >= 5) {
+            const SpirvInstruction* imageType = m.definition(m.typeOf(in.words[3]));
+            if (!imageType || imageType->opcode() != kTypeImage || !isScalarOrVector(m, in.words[1])) return out.push_back(in);
+            guardTexelRead(m, in, *imageType, out);
+            changed = true;
+            return;
+        }
+        if (in.opcode() != kLoad || in.words.size() < 4 || !isScalarOrVector(m, in.words[1])) return out.push_back(in);
+        const SpirvInstruction* chain = m.definition(in.words[3]);
+        if (!chain || (chain->opcode() != kAccessChain && chain->opcode() != kInBoundsAccessChain) || chain->words.size() < 6)
+            return out.push_back(in);
+        auto member = runtimeArrayMember.find(chain->words[3]);
+        const SpirvInstruction* first = m.definition(chain->words[4]);
+        if (member == runtimeArrayMember.end() || !first || first->opcode() != spv_op::Constant || first->word(3) != member->second)
+            return out.push_back(in);
+        // index < length; the load reads a clamped element, so that it stays inside the buffer.
+        Emitter e{m, out};
+        const std::uint32_t index = chain->words[5], indexType = m.typeOf(index);
+        const std::uint32_t length = e.emit(kArrayLength, m.uintType(), {chain->words[3], member->second});
+        const std::uint32_t ok = e.emit(kULessThan, e.boolType, {index, length});
+        const std::uint32_t safeIndex = e.emit(kSelect, indexType, {ok, index, m.constant(indexType, 0)});
+        SpirvInstruction safeChain = *chain;
+        safeChain.words[2] = m.newId();
+        safeChain.words[5] = safeIndex;
+        out.push_back(safeChain);
+        SpirvInstruction load = in;
+        load.words[2] = m.newId();
+        load.words[3] = safeChain.words[2];
+        out.push_back(load);
+        out.push_back(e.select(in.words[1], in.words[2], ok, load.words[2]));
+        changed = true;
+    });
+    return changed;
+}
+
+}  // namespace fxport::xlate
