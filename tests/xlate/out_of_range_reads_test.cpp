@@ -70,3 +70,23 @@ TEST(OutOfRangeReads, StructuredAndByteAddressReadsCompareAgainstTheLength) {
     EXPECT_TRUE(has(glsl, ".length()")) << glsl;
     EXPECT_TRUE(has(glsl, "? ")) << glsl;
 }
+
+// RWStructuredBuffer / RWByteAddressBuffer stores and atomics past the end are dropped (GL may
+// write whatever memory follows): each runs under `if (index < length())`; a dropped atomic's
+// original value is 0.
+TEST(OutOfRangeReads, BufferWritesAndAtomicsRunOnlyInsideTheBuffer) {
+    const std::string glsl = glslOfLoose(
+        "RWStructuredBuffer<float2> outv : register(u0);\n"
+        "RWByteAddressBuffer counts : register(u1);\n"
+        "[numthreads(64, 1, 1)] void main(uint3 id : SV_DispatchThreadID) {\n"
+        "    uint before;\n"
+        "    counts.InterlockedAdd(id.x * 4, 1, before);\n"
+        "    for (uint k = 0; k < id.y; ++k) outv[id.x + k] = float2(before, k);\n"
+        "    counts.Store(id.x * 4 + 256, before);\n"
+        "}\n",
+        "cs_5_0");
+    EXPECT_TRUE(has(glsl, "if (")) << glsl;
+    EXPECT_TRUE(has(glsl, "outv_1._data.length()")) << glsl;
+    EXPECT_TRUE(has(glsl, "counts_1._data.length()")) << glsl;
+    EXPECT_TRUE(has(glsl, "atomicAdd(")) << glsl;
+}

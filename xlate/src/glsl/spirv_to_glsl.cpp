@@ -390,7 +390,7 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
             for (PackedBlock& b : packed)
                 if (!b.glslDeclarable && module.reparse()) flattenConstantBuffer(module, b);
             if (module.reparse())
-                runSpirvPasses(module, {integerMatricesAsArrays, fetchOffsetsIntoCoordinates, outOfRangeReadsReadZero, gatherOffsetsAsFourGathers, domainLayerOutputs,
+                runSpirvPasses(module, {integerMatricesAsArrays, fetchOffsetsIntoCoordinates, outOfRangeReadsReadZero, outOfRangeBufferWritesDropped, gatherOffsetsAsFourGathers, domainLayerOutputs,
                                         writeOnlyImagesWithoutFormat});
             spirv = module.assemble();
         }

@@ -2,6 +2,7 @@
 #include "spirv/out_of_range_accesses.h"
 
 #include <map>
+#include <set>
 #include <vector>
 
 namespace fxport::xlate {
@@ -13,6 +14,8 @@ constexpr std::uint32_t kCapability = 17, kTypeImage = 25, kTypeRuntimeArray = 2
                         kCompositeConstruct = 80, kCompositeExtract = 81, kImageFetch = 95, kImageRead = 98,
                         kImageQuerySizeLod = 103, kImageQuerySize = 104, kImageQueryLevels = 106,
                         kImageQuerySamples = 107, kIAdd = 128, kLogicalAnd = 167, kSelect = 169, kULessThan = 176;
+constexpr std::uint32_t kStore = 62, kAtomicLoad = 227, kAtomicStore = 228, kAtomicXor = 242, kPhi = 245, kLoopMerge = 246,
+                        kSelectionMerge = 247, kLabel = 248, kBranch = 249, kBranchConditional = 250;
 constexpr std::uint32_t kImageQueryCapability = 50, kDimBuffer = 5;
 constexpr std::uint32_t kUniform = 2, kStorageBuffer = 12;
 constexpr std::uint32_t kLod = 0x2, kConstOffset = 0x8, kSample = 0x40;
@@ -103,23 +106,40 @@ bool isScalarOrVector(const ParsedSpirv& m, std::uint32_t type) {
     return t && (t->opcode() == spv_op::TypeInt || t->opcode() == spv_op::TypeFloat || t->opcode() == spv_op::TypeBool);
 }
 
-}  // namespace
-
-// Tests: xlate OutOfRangeReads.*; d3d11 OutOfRangeReads.*.
-bool outOfRangeReadsReadZero(ParsedSpirv& m) {
-    if (!m.has({kImageFetch, kImageRead, kArrayLength, kAccessChain, kInBoundsAccessChain})) return false;
-    // Buffers ending in a runtime array (structured and byte-address buffers): variable -> member.
-    std::map<std::uint32_t, std::uint32_t> runtimeArrayMember;
-    bool hasImageQuery = false;
+// Buffers ending in a runtime array (structured and byte-address buffers): variable -> the member.
+std::map<std::uint32_t, std::uint32_t> runtimeArrayBuffers(const ParsedSpirv& m) {
+    std::map<std::uint32_t, std::uint32_t> out;
     for (const SpirvInstruction& in : m.instructions) {
-        if (in.opcode() == kCapability && in.word(1) == kImageQueryCapability) hasImageQuery = true;
         if (in.opcode() != kVariable || (in.word(3) != kUniform && in.word(3) != kStorageBuffer)) continue;
         const SpirvInstruction* pointer = m.definition(in.words[1]);
         const SpirvInstruction* block = pointer && pointer->opcode() == kTypePointer ? m.definition(pointer->word(3)) : nullptr;
         if (!block || block->opcode() != kTypeStruct || block->words.size() < 3) continue;
         const SpirvInstruction* last = m.definition(block->words.back());
-        if (last && last->opcode() == kTypeRuntimeArray) runtimeArrayMember[in.words[2]] = std::uint32_t(block->words.size() - 3);
+        if (last && last->opcode() == kTypeRuntimeArray) out[in.words[2]] = std::uint32_t(block->words.size() - 3);
     }
+    return out;
+}
+
+// The access chain `pointer` is defined by when it indexes the runtime array of one of `buffers`
+// (base, the member's constant, then the element's index), else null.
+const SpirvInstruction* elementChain(const ParsedSpirv& m, const std::map<std::uint32_t, std::uint32_t>& buffers, std::uint32_t pointer) {
+    const SpirvInstruction* chain = m.definition(pointer);
+    if (!chain || (chain->opcode() != kAccessChain && chain->opcode() != kInBoundsAccessChain) || chain->words.size() < 6) return nullptr;
+    auto member = buffers.find(chain->words[3]);
+    const SpirvInstruction* first = m.definition(chain->words[4]);
+    if (member == buffers.end() || !first || first->opcode() != spv_op::Constant || first->word(3) != member->second) return nullptr;
+    return chain;
+}
+
+}  // namespace
+
+// Tests: xlate OutOfRangeReads.*; d3d11 OutOfRangeReads.*.
+bool outOfRangeReadsReadZero(ParsedSpirv& m) {
+    if (!m.has({kImageFetch, kImageRead, kArrayLength, kAccessChain, kInBoundsAccessChain})) return false;
+    const std::map<std::uint32_t, std::uint32_t> runtimeArrayMember = runtimeArrayBuffers(m);
+    bool hasImageQuery = false;
+    for (const SpirvInstruction& in : m.instructions)
+        if (in.opcode() == kCapability && in.word(1) == kImageQueryCapability) hasImageQuery = true;
     bool changed = false, capabilityAdded = hasImageQuery || !m.has({kImageFetch, kImageRead});
     m.rewrite([&](const SpirvInstruction& in, std::vector<SpirvInstruction>& out) {
         if (in.opcode() == kCapability && !capabilityAdded) {  // texel guards query sizes
@@ -136,17 +156,13 @@ bool outOfRangeReadsReadZero(ParsedSpirv& m) {
             return;
         }
         if (in.opcode() != kLoad || in.words.size() < 4 || !isScalarOrVector(m, in.words[1])) return out.push_back(in);
-        const SpirvInstruction* chain = m.definition(in.words[3]);
-        if (!chain || (chain->opcode() != kAccessChain && chain->opcode() != kInBoundsAccessChain) || chain->words.size() < 6)
-            return out.push_back(in);
-        auto member = runtimeArrayMember.find(chain->words[3]);
-        const SpirvInstruction* first = m.definition(chain->words[4]);
-        if (member == runtimeArrayMember.end() || !first || first->opcode() != spv_op::Constant || first->word(3) != member->second)
-            return out.push_back(in);
+        const SpirvInstruction* chain = elementChain(m, runtimeArrayMember, in.words[3]);
+        if (!chain) return out.push_back(in);
+        const std::uint32_t member = runtimeArrayMember.at(chain->words[3]);
         // index < length; the load reads a clamped element, so that it stays inside the buffer.
         Emitter e{m, out};
         const std::uint32_t index = chain->words[5], indexType = m.typeOf(index);
-        const std::uint32_t length = e.emit(kArrayLength, m.uintType(), {chain->words[3], member->second});
+        const std::uint32_t length = e.emit(kArrayLength, m.uintType(), {chain->words[3], member});
         const std::uint32_t ok = e.emit(kULessThan, e.boolType, {index, length});
         const std::uint32_t safeIndex = e.emit(kSelect, indexType, {ok, index, m.constant(indexType, 0)});
         SpirvInstruction safeChain = *chain;
@@ -161,6 +177,62 @@ bool outOfRangeReadsReadZero(ParsedSpirv& m) {
         changed = true;
     });
     return changed;
+}
+
+// Tests: xlate OutOfRangeReads.BufferWritesAndAtomicsRunOnlyInsideTheBuffer; d3d11 D3D11OutOfRangeReads.BufferWritesPastTheViewAreDropped.
+bool outOfRangeBufferWritesDropped(ParsedSpirv& m) {
+    if (!m.has({kStore, kAtomicStore}) && !m.has({229, 230, 231, 232, 233, 234, 235, 236, 237, 238, 239, 240, 241, kAtomicXor}))
+        return false;
+    const std::map<std::uint32_t, std::uint32_t> buffers = runtimeArrayBuffers(m);
+    if (buffers.empty()) return false;
+    // A block holding a loop's merge instruction is not split: its back edges name it as the header.
+    std::set<std::uint32_t> loopHeaders;
+    std::uint32_t label = 0;
+    for (const SpirvInstruction& in : m.instructions) {
+        if (in.opcode() == kLabel) label = in.word(1);
+        if (in.opcode() == kLoopMerge) loopHeaders.insert(label);
+    }
+    // The block each split block's terminator ended in (a phi naming the block names that one now),
+    // and the phis the pass adds (which name the split parts themselves).
+    std::map<std::uint32_t, std::uint32_t> endsIn;
+    std::set<std::uint32_t> newPhis;
+    std::uint32_t block = 0;  // the block the instruction is in: `label` or the last part split from it
+    bool changed = false;
+    m.rewrite([&](const SpirvInstruction& in, std::vector<SpirvInstruction>& out) {
+        if (in.opcode() == kLabel) label = block = in.word(1);
+        const bool store = in.opcode() == kStore || in.opcode() == kAtomicStore;
+        const bool atomic = in.opcode() >= kAtomicLoad && in.opcode() <= kAtomicXor && in.opcode() != kAtomicStore;
+        const size_t pointerAt = store ? 1 : 3;
+        if ((!store && !atomic) || in.words.size() <= pointerAt || loopHeaders.count(label)) return out.push_back(in);
+        const SpirvInstruction* chain = elementChain(m, buffers, in.words[pointerAt]);
+        if (!chain) return out.push_back(in);
+        // if (index < length) { the access } -- an atomic's value is 0 when it was dropped.
+        Emitter e{m, out};
+        const std::uint32_t length = e.emit(kArrayLength, m.uintType(), {chain->words[3], buffers.at(chain->words[3])});
+        const std::uint32_t ok = e.emit(kULessThan, e.boolType, {chain->words[5], length});
+        const std::uint32_t then = m.newId(), merge = m.newId();
+        out.push_back({{spirvFirstWord(kSelectionMerge, 3), merge, 0}});
+        out.push_back({{spirvFirstWord(kBranchConditional, 4), ok, then, merge}});
+        out.push_back({{spirvFirstWord(kLabel, 2), then}});
+        SpirvInstruction access = in;
+        if (atomic) access.words[2] = m.newId();
+        out.push_back(access);
+        out.push_back({{spirvFirstWord(kBranch, 2), merge}});
+        out.push_back({{spirvFirstWord(kLabel, 2), merge}});
+        if (atomic) {
+            out.push_back({{spirvFirstWord(kPhi, 7), in.words[1], in.words[2], access.words[2], then, m.splatConstant(in.words[1], 0), block}});
+            newPhis.insert(in.words[2]);
+        }
+        endsIn[label] = block = merge;
+        changed = true;
+    });
+    if (!changed) return false;
+    for (SpirvInstruction& in : m.instructions) {
+        if (in.opcode() != kPhi || newPhis.count(in.word(2))) continue;
+        for (size_t k = 4; k < in.words.size(); k += 2)
+            if (auto it = endsIn.find(in.words[k]); it != endsIn.end()) in.words[k] = it->second;
+    }
+    return true;
 }
 
 }  // namespace fxport::xlate

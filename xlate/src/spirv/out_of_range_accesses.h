@@ -10,6 +10,9 @@
 //   R32_FLOAT texture reads (0, 0, 0, 1)); the format is not known here, so every channel reads 0.
 // - A scalar or vector OpLoad through an access chain into a buffer's runtime array (structured and
 //   byte-address buffers) reads a clamped element and becomes `index < length ? value : 0`.
+// - A store or atomic through such an access chain (RWStructuredBuffer, RWByteAddressBuffer) runs
+//   only `if (index < length)`: D3D drops it, GL may write another buffer's memory. A dropped
+//   atomic's original value reads 0.
 // Typed UAV stores and atomics out of range need nothing: GL defines them as D3D does (an invalid
 // image store has no effect, an invalid image atomic updates nothing; GL 4.6 section 8.26).
 // Run on the legalised module, after fetch offsets are folded into the coordinates.
@@ -21,5 +24,7 @@ namespace fxport::xlate {
 
 // A pass of parsed_spirv.h; false (unchanged) when the module reads no image texel or buffer element.
 bool outOfRangeReadsReadZero(ParsedSpirv& m);
+// A pass of parsed_spirv.h; false (unchanged) when the module writes no buffer element.
+bool outOfRangeBufferWritesDropped(ParsedSpirv& m);
 
 }  // namespace fxport::xlate
