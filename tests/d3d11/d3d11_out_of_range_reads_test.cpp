@@ -1,7 +1,8 @@
-// D3D11's out-of-range reads (xlate spirv/out_of_range_accesses.h): a Load of a texel or level
+// D3D11's out-of-range accesses (xlate spirv/out_of_range_accesses.h): a Load of a texel or level
 // outside the texture, a typed, structured or raw buffer read past the view's end and a typed UAV
-// read past its end return 0, where GL leaves them undefined (a view of part of a buffer is bound as a
-// range, so GL reads on into the rest of the buffer). Checked against the CPU's copy of the rule.
+// read past its end return 0, and structured and raw stores and atomics past the view are dropped,
+// where GL leaves them undefined (a view of part of a buffer is bound as a range, so GL reads and
+// writes on into the rest of the buffer). Checked against the CPU's copy of the rule.
 #include <cstdint>
 #include <cstring>
 
@@ -109,6 +110,52 @@ void cs(uint3 id : SV_DispatchThreadID) {
         EXPECT_EQ(got[std::size_t(i * 4 + 1)], inside ? in[2 * i + 1] : 0.0f) << "StructuredBuffer[" << i << "].b";
         EXPECT_EQ(got[std::size_t(i * 4 + 2)], inside ? in[i] : 0.0f) << "ByteAddressBuffer.Load(" << 4 * i << ")";
         EXPECT_EQ(got[std::size_t(i * 4 + 3)], inside ? in[i] : 0.0f) << "RWBuffer<float>[" << i << "]";
+    }
+}
+
+// Views of the first 4 elements of 8-element buffers: threads 0..7 store through a structured view
+// and add through a raw view; the stores and atomics past the views are dropped, so elements 4..7 of
+// both buffers keep their contents.
+TEST(D3D11OutOfRangeReads, BufferWritesPastTheViewAreDropped) {
+    Device d;
+    std::uint32_t fill[8];
+    for (std::uint32_t k = 0; k < 8; ++k) fill[k] = 1000 + k;
+    ComPtr<ID3D11Buffer> structured = makeBuffer(d, fill, sizeof fill, D3D11_BIND_UNORDERED_ACCESS, D3D11_RESOURCE_MISC_BUFFER_STRUCTURED, 4);
+    ComPtr<ID3D11Buffer> raw = makeBuffer(d, fill, sizeof fill, D3D11_BIND_UNORDERED_ACCESS, D3D11_RESOURCE_MISC_BUFFER_ALLOW_RAW_VIEWS);
+    ASSERT_TRUE(structured && raw);
+    ComPtr<ID3D11UnorderedAccessView> uavs[2];
+    D3D11_UNORDERED_ACCESS_VIEW_DESC ud{};
+    ud.Format = DXGI_FORMAT_UNKNOWN;
+    ud.ViewDimension = D3D11_UAV_DIMENSION_BUFFER;
+    ud.Buffer.FirstElement = 0;
+    ud.Buffer.NumElements = 4;
+    ASSERT_EQ(d.device->CreateUnorderedAccessView(structured.Get(), &ud, uavs[0].GetAddressOf()), S_OK) << lastError();
+    ud.Format = DXGI_FORMAT_R32_TYPELESS;
+    ud.Buffer.Flags = D3D11_BUFFER_UAV_FLAG_RAW;
+    ASSERT_EQ(d.device->CreateUnorderedAccessView(raw.Get(), &ud, uavs[1].GetAddressOf()), S_OK) << lastError();
+    ComPtr<ID3DBlob> code = compile(R"(
+RWStructuredBuffer<uint> Structured : register(u0);
+RWByteAddressBuffer Raw : register(u1);
+[numthreads(8, 1, 1)]
+void cs(uint3 id : SV_DispatchThreadID) {
+    Structured[id.x] = 7 * id.x;
+    Raw.InterlockedAdd(id.x * 4, 5);
+})",
+                                    "cs", "cs_5_0");
+    ASSERT_TRUE(code);
+    ComPtr<ID3D11ComputeShader> cs;
+    ASSERT_EQ(d.device->CreateComputeShader(code->GetBufferPointer(), code->GetBufferSize(), nullptr, cs.GetAddressOf()), S_OK) << lastError();
+    d.context->CSSetShader(cs.Get(), nullptr, 0);
+    ID3D11UnorderedAccessView* u[2] = {uavs[0].Get(), uavs[1].Get()};
+    d.context->CSSetUnorderedAccessViews(0, 2, u, nullptr);
+    d.context->Dispatch(1, 1, 1);
+    ASSERT_EQ(lastError(), "");
+    const std::vector<std::uint32_t> s = readBuffer<std::uint32_t>(d, structured.Get()), r = readBuffer<std::uint32_t>(d, raw.Get());
+    ASSERT_EQ(s.size(), 8u);
+    ASSERT_EQ(r.size(), 8u);
+    for (std::uint32_t k = 0; k < 8; ++k) {
+        EXPECT_EQ(s[k], k < 4 ? 7 * k : fill[k]) << "structured element " << k;
+        EXPECT_EQ(r[k], k < 4 ? fill[k] + 5 : fill[k]) << "raw word " << k;
     }
 }
 
