@@ -30,9 +30,22 @@ size_t imageOperand(const SpirvInstruction& in, std::uint32_t bit) {
     return at < in.words.size() ? at : 0;
 }
 
+// Whether `id` is a constant scalar or vector of zeros.
 bool isConstantZero(const ParsedSpirv& m, std::uint32_t id) {
     const SpirvInstruction* d = m.definition(id);
+    if (d && d->opcode() == spv_op::ConstantComposite) {
+        for (size_t k = 3; k < d->words.size(); ++k)
+            if (!isConstantZero(m, d->words[k])) return false;
+        return true;
+    }
     return d && (d->opcode() == spv_op::ConstantNull || (d->opcode() == spv_op::Constant && d->word(3) == 0));
+}
+
+// Whether the texel read `in` reads texel 0 (slice 0, level 0, sample 0), which every texture has.
+bool readsFirstTexel(const ParsedSpirv& m, const SpirvInstruction& in) {
+    for (std::uint32_t bit : {kLod, kConstOffset, kSample})
+        if (size_t at = imageOperand(in, bit); at && !isConstantZero(m, in.words[at])) return false;
+    return isConstantZero(m, in.words[4]);
 }
 
 struct Emitter {
@@ -150,7 +163,8 @@ bool outOfRangeReadsReadZero(ParsedSpirv& m) {
         }
         if ((in.opcode() == kImageFetch || in.opcode() == kImageRead) && in.words.size() >= 5) {
             const SpirvInstruction* imageType = m.definition(m.typeOf(in.words[3]));
-            if (!imageType || imageType->opcode() != kTypeImage || !isScalarOrVector(m, in.words[1])) return out.push_back(in);
+            if (!imageType || imageType->opcode() != kTypeImage || !isScalarOrVector(m, in.words[1]) || readsFirstTexel(m, in))
+                return out.push_back(in);
             guardTexelRead(m, in, *imageType, out);
             changed = true;
             return;
