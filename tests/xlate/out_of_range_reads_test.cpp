@@ -90,3 +90,23 @@ TEST(OutOfRangeReads, BufferWritesAndAtomicsRunOnlyInsideTheBuffer) {
     EXPECT_TRUE(has(glsl, "counts_1._data.length()")) << glsl;
     EXPECT_TRUE(has(glsl, "atomicAdd(")) << glsl;
 }
+
+// A whole struct or matrix element read past the end reads zeros (under the same `if`: OpSelect
+// cannot choose a struct in SPIR-V 1.0), and a store to a member of an element is guarded too.
+TEST(OutOfRangeReads, WholeElementReadsAndMemberStoresAreGuarded) {
+    const std::string glsl = glslOfLoose(
+        "struct P { float3 pos; float r; float4x4 m; };\n"
+        "StructuredBuffer<P> parts : register(t0);\n"
+        "RWStructuredBuffer<P> outp : register(u0);\n"
+        "StructuredBuffer<float4x4> mats : register(t1);\n"
+        "[numthreads(64, 1, 1)] void main(uint3 id : SV_DispatchThreadID) {\n"
+        "    P p = parts[id.x + 3];\n"
+        "    p.pos += mul(mats[id.y], float4(1, 2, 3, 4)).xyz;\n"
+        "    outp[id.x] = p;\n"
+        "}\n",
+        "cs_5_0");
+    EXPECT_TRUE(has(glsl, "< uint(parts_1._data.length())")) << glsl;
+    EXPECT_TRUE(has(glsl, "P(vec3(0.0), 0.0, mat4(")) << glsl;
+    EXPECT_TRUE(has(glsl, "< uint(mats_1._data.length())")) << glsl;
+    EXPECT_TRUE(has(glsl, "if (gl_GlobalInvocationID.x < uint(outp_1._data.length()))")) << glsl;
+}

@@ -133,15 +133,23 @@ std::map<std::uint32_t, std::uint32_t> runtimeArrayBuffers(const ParsedSpirv& m)
     return out;
 }
 
-// The access chain `pointer` is defined by when it indexes the runtime array of one of `buffers`
-// (base, the member's constant, then the element's index), else null.
-const SpirvInstruction* elementChain(const ParsedSpirv& m, const std::map<std::uint32_t, std::uint32_t>& buffers, std::uint32_t pointer) {
-    const SpirvInstruction* chain = m.definition(pointer);
-    if (!chain || (chain->opcode() != kAccessChain && chain->opcode() != kInBoundsAccessChain) || chain->words.size() < 6) return nullptr;
-    auto member = buffers.find(chain->words[3]);
-    const SpirvInstruction* first = m.definition(chain->words[4]);
-    if (member == buffers.end() || !first || first->opcode() != spv_op::Constant || first->word(3) != member->second) return nullptr;
-    return chain;
+// The access chains `pointer` is made of when it points into the runtime array of one of
+// `buffers`: `pointer`'s chain first, then each chain its base is, the last one on the buffer itself
+// (base, the member's constant, then the element's index); none when it points elsewhere.
+std::vector<const SpirvInstruction*> elementChains(const ParsedSpirv& m, const std::map<std::uint32_t, std::uint32_t>& buffers,
+                                                   std::uint32_t pointer) {
+    std::vector<const SpirvInstruction*> chains;
+    for (const SpirvInstruction* chain = m.definition(pointer);
+         chain && (chain->opcode() == kAccessChain || chain->opcode() == kInBoundsAccessChain) && chain->words.size() >= 5 && chains.size() < 8;
+         chain = m.definition(chain->words[3])) {
+        chains.push_back(chain);
+        auto member = buffers.find(chain->words[3]);
+        if (member == buffers.end()) continue;
+        const SpirvInstruction* first = m.definition(chain->words[4]);
+        if (chain->words.size() < 6 || !first || first->opcode() != spv_op::Constant || first->word(3) != member->second) break;
+        return chains;
+    }
+    return {};
 }
 
 }  // namespace
@@ -170,22 +178,25 @@ bool outOfRangeReadsReadZero(ParsedSpirv& m) {
             return;
         }
         if (in.opcode() != kLoad || in.words.size() < 4 || !isScalarOrVector(m, in.words[1])) return out.push_back(in);
-        const SpirvInstruction* chain = elementChain(m, runtimeArrayMember, in.words[3]);
-        if (!chain) return out.push_back(in);
-        const std::uint32_t member = runtimeArrayMember.at(chain->words[3]);
-        // index < length; the load reads a clamped element, so that it stays inside the buffer.
+        const std::vector<const SpirvInstruction*> chains = elementChains(m, runtimeArrayMember, in.words[3]);
+        if (chains.empty()) return out.push_back(in);
+        const SpirvInstruction& element = *chains.back();
+        // index < length; the load reads through a clamped index, so that it stays inside the buffer.
         Emitter e{m, out};
-        const std::uint32_t index = chain->words[5], indexType = m.typeOf(index);
-        const std::uint32_t length = e.emit(kArrayLength, m.uintType(), {chain->words[3], member});
+        const std::uint32_t index = element.words[5], indexType = m.typeOf(index);
+        const std::uint32_t length = e.emit(kArrayLength, m.uintType(), {element.words[3], runtimeArrayMember.at(element.words[3])});
         const std::uint32_t ok = e.emit(kULessThan, e.boolType, {index, length});
-        const std::uint32_t safeIndex = e.emit(kSelect, indexType, {ok, index, m.constant(indexType, 0)});
-        SpirvInstruction safeChain = *chain;
-        safeChain.words[2] = m.newId();
-        safeChain.words[5] = safeIndex;
-        out.push_back(safeChain);
+        std::uint32_t safe = e.emit(kSelect, indexType, {ok, index, m.constant(indexType, 0)});
+        for (auto c = chains.rbegin(); c != chains.rend(); ++c) {  // the chains again, from the buffer out
+            SpirvInstruction copy = **c;
+            copy.words[2] = m.newId();
+            copy.words[c == chains.rbegin() ? 5 : 3] = safe;
+            out.push_back(copy);
+            safe = copy.words[2];
+        }
         SpirvInstruction load = in;
         load.words[2] = m.newId();
-        load.words[3] = safeChain.words[2];
+        load.words[3] = safe;
         out.push_back(load);
         out.push_back(e.select(in.words[1], in.words[2], ok, load.words[2]));
         changed = true;
@@ -195,7 +206,7 @@ bool outOfRangeReadsReadZero(ParsedSpirv& m) {
 
 // Tests: xlate OutOfRangeReads.BufferWritesAndAtomicsRunOnlyInsideTheBuffer; d3d11 D3D11OutOfRangeReads.BufferWritesPastTheViewAreDropped.
 bool outOfRangeBufferWritesDropped(ParsedSpirv& m) {
-    if (!m.has({kStore, kAtomicStore}) && !m.has({229, 230, 231, 232, 233, 234, 235, 236, 237, 238, 239, 240, 241, kAtomicXor}))
+    if (!m.has({kStore, kAtomicStore, kLoad}) && !m.has({229, 230, 231, 232, 233, 234, 235, 236, 237, 238, 239, 240, 241, kAtomicXor}))
         return false;
     const std::map<std::uint32_t, std::uint32_t> buffers = runtimeArrayBuffers(m);
     if (buffers.empty()) return false;
@@ -215,15 +226,18 @@ bool outOfRangeBufferWritesDropped(ParsedSpirv& m) {
     m.rewrite([&](const SpirvInstruction& in, std::vector<SpirvInstruction>& out) {
         if (in.opcode() == kLabel) label = block = in.word(1);
         const bool store = in.opcode() == kStore || in.opcode() == kAtomicStore;
-        const bool atomic = in.opcode() >= kAtomicLoad && in.opcode() <= kAtomicXor && in.opcode() != kAtomicStore;
+        // A load of a struct, matrix or array (what OpSelect cannot choose on SPIR-V 1.0) runs here too.
+        const bool atomic = (in.opcode() >= kAtomicLoad && in.opcode() <= kAtomicXor && in.opcode() != kAtomicStore) ||
+                            (in.opcode() == kLoad && in.words.size() >= 4 && !isScalarOrVector(m, in.words[1]));
         const size_t pointerAt = store ? 1 : 3;
         if ((!store && !atomic) || in.words.size() <= pointerAt || loopHeaders.count(label)) return out.push_back(in);
-        const SpirvInstruction* chain = elementChain(m, buffers, in.words[pointerAt]);
-        if (!chain) return out.push_back(in);
-        // if (index < length) { the access } -- an atomic's value is 0 when it was dropped.
+        const std::vector<const SpirvInstruction*> chains = elementChains(m, buffers, in.words[pointerAt]);
+        if (chains.empty()) return out.push_back(in);
+        const SpirvInstruction& element = *chains.back();
+        // if (index < length) { the access } -- an atomic's or a composite's value is 0 when skipped.
         Emitter e{m, out};
-        const std::uint32_t length = e.emit(kArrayLength, m.uintType(), {chain->words[3], buffers.at(chain->words[3])});
-        const std::uint32_t ok = e.emit(kULessThan, e.boolType, {chain->words[5], length});
+        const std::uint32_t length = e.emit(kArrayLength, m.uintType(), {element.words[3], buffers.at(element.words[3])});
+        const std::uint32_t ok = e.emit(kULessThan, e.boolType, {element.words[5], length});
         const std::uint32_t then = m.newId(), merge = m.newId();
         out.push_back({{spirvFirstWord(kSelectionMerge, 3), merge, 0}});
         out.push_back({{spirvFirstWord(kBranchConditional, 4), ok, then, merge}});

@@ -12,7 +12,8 @@
 //   byte-address buffers) reads a clamped element and becomes `index < length ? value : 0`.
 // - A store or atomic through such an access chain (RWStructuredBuffer, RWByteAddressBuffer) runs
 //   only `if (index < length)`: D3D drops it, GL may write another buffer's memory. A dropped
-//   atomic's original value reads 0.
+//   atomic's original value reads 0; so does a whole struct or matrix element read past the end
+//   (which OpSelect cannot choose before SPIR-V 1.4, so it is read under the same `if`).
 // Typed UAV stores and atomics out of range need nothing: GL defines them as D3D does (an invalid
 // image store has no effect, an invalid image atomic updates nothing; GL 4.6 section 8.26).
 // Run on the legalised module, after fetch offsets are folded into the coordinates.
@@ -24,7 +25,7 @@ namespace fxport::xlate {
 
 // A pass of parsed_spirv.h; false (unchanged) when the module reads no image texel or buffer element.
 bool outOfRangeReadsReadZero(ParsedSpirv& m);
-// A pass of parsed_spirv.h; false (unchanged) when the module writes no buffer element.
+// A pass of parsed_spirv.h; false (unchanged) when the module writes no buffer element (nor reads a composite one).
 bool outOfRangeBufferWritesDropped(ParsedSpirv& m);
 
 }  // namespace fxport::xlate
