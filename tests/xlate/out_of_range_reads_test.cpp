@@ -110,3 +110,20 @@ TEST(OutOfRangeReads, WholeElementReadsAndMemberStoresAreGuarded) {
     EXPECT_TRUE(has(glsl, "< uint(mats_1._data.length())")) << glsl;
     EXPECT_TRUE(has(glsl, "if (gl_GlobalInvocationID.x < uint(outp_1._data.length()))")) << glsl;
 }
+
+// A loop whose body the optimiser merged into its header (a do-while without branches): the store
+// and atomic there are guarded too (the header keeps its phis and merge instruction, the rest
+// moves to a block of its own, which is split like any other).
+TEST(OutOfRangeReads, AccessesInLoopHeadersAreGuarded) {
+    const std::string glsl = glslOfLoose(
+        "RWStructuredBuffer<uint> o : register(u0);\n"
+        "RWByteAddressBuffer r : register(u1);\n"
+        "cbuffer C : register(b0) { uint n; };\n"
+        "[numthreads(64, 1, 1)] void main(uint3 id : SV_DispatchThreadID) {\n"
+        "    uint i = id.x;\n"
+        "    do { o[i] = i; uint prev; r.InterlockedMax(i * 4, i, prev); i += prev + n; } while (i < 100);\n"
+        "}\n",
+        "cs_5_0");
+    EXPECT_TRUE(has(glsl, "< uint(o_1._data.length()))")) << glsl;
+    EXPECT_TRUE(has(glsl, "< uint(r_1._data.length()))")) << glsl;
+}

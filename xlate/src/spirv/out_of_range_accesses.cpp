@@ -204,35 +204,60 @@ bool outOfRangeReadsReadZero(ParsedSpirv& m) {
     return changed;
 }
 
-// Tests: xlate OutOfRangeReads.BufferWritesAndAtomicsRunOnlyInsideTheBuffer; d3d11 D3D11OutOfRangeReads.BufferWritesPastTheViewAreDropped.
+// Tests: xlate OutOfRangeReads.BufferWritesAndAtomicsRunOnlyInsideTheBuffer,
+// OutOfRangeReads.AccessesInLoopHeadersAreGuarded; d3d11 D3D11OutOfRangeReads.BufferWritesPastTheViewAreDropped.
 bool outOfRangeBufferWritesDropped(ParsedSpirv& m) {
     if (!m.has({kStore, kAtomicStore, kLoad}) && !m.has({229, 230, 231, 232, 233, 234, 235, 236, 237, 238, 239, 240, 241, kAtomicXor}))
         return false;
     const std::map<std::uint32_t, std::uint32_t> buffers = runtimeArrayBuffers(m);
     if (buffers.empty()) return false;
-    // A block holding a loop's merge instruction is not split: its back edges name it as the header.
-    std::set<std::uint32_t> loopHeaders;
+    // The chains of an access to guard (a store, an atomic, or a load of a struct, matrix or array,
+    // which OpSelect cannot choose on SPIR-V 1.0), none for any other instruction.
+    auto guarded = [&](const SpirvInstruction& in) -> std::vector<const SpirvInstruction*> {
+        const bool store = in.opcode() == kStore || in.opcode() == kAtomicStore;
+        const bool valued = (in.opcode() >= kAtomicLoad && in.opcode() <= kAtomicXor && in.opcode() != kAtomicStore) ||
+                            (in.opcode() == kLoad && in.words.size() >= 4 && !isScalarOrVector(m, in.words[1]));
+        const size_t pointerAt = store ? 1 : 3;
+        if ((!store && !valued) || in.words.size() <= pointerAt) return {};
+        return elementChains(m, buffers, in.words[pointerAt]);
+    };
+    // A loop header with such an access is split first: its phis and merge instruction stay (its back
+    // edges name it), and a branch leads to a new block with the rest, which is split like any other.
+    std::map<std::uint32_t, SpirvInstruction> loopMerges;  // header -> its OpLoopMerge
+    std::set<std::uint32_t> accessBlocks;
     std::uint32_t label = 0;
     for (const SpirvInstruction& in : m.instructions) {
         if (in.opcode() == kLabel) label = in.word(1);
-        if (in.opcode() == kLoopMerge) loopHeaders.insert(label);
+        if (in.opcode() == kLoopMerge) loopMerges[label] = in;
+        if (!guarded(in).empty()) accessBlocks.insert(label);
     }
     // The block each split block's terminator ended in (a phi naming the block names that one now),
     // and the phis the pass adds (which name the split parts themselves).
     std::map<std::uint32_t, std::uint32_t> endsIn;
     std::set<std::uint32_t> newPhis;
-    std::uint32_t block = 0;  // the block the instruction is in: `label` or the last part split from it
+    std::uint32_t block = 0;      // the block the instruction is in: `label` or the last part split from it
+    bool headerPrologue = false;  // in a loop header to split, before its first instruction past the phis
     bool changed = false;
     m.rewrite([&](const SpirvInstruction& in, std::vector<SpirvInstruction>& out) {
-        if (in.opcode() == kLabel) label = block = in.word(1);
-        const bool store = in.opcode() == kStore || in.opcode() == kAtomicStore;
-        // A load of a struct, matrix or array (what OpSelect cannot choose on SPIR-V 1.0) runs here too.
-        const bool atomic = (in.opcode() >= kAtomicLoad && in.opcode() <= kAtomicXor && in.opcode() != kAtomicStore) ||
-                            (in.opcode() == kLoad && in.words.size() >= 4 && !isScalarOrVector(m, in.words[1]));
-        const size_t pointerAt = store ? 1 : 3;
-        if ((!store && !atomic) || in.words.size() <= pointerAt || loopHeaders.count(label)) return out.push_back(in);
-        const std::vector<const SpirvInstruction*> chains = elementChains(m, buffers, in.words[pointerAt]);
-        if (chains.empty()) return out.push_back(in);
+        if (in.opcode() == kLabel) {
+            label = block = in.word(1);
+            headerPrologue = loopMerges.count(label) && accessBlocks.count(label);
+            return out.push_back(in);
+        }
+        if (headerPrologue && in.opcode() != kPhi && in.opcode() != 8 && in.opcode() != 317) {  // OpLine, OpNoLine
+            headerPrologue = false;
+            SpirvInstruction merge = loopMerges.at(label);
+            const std::uint32_t body = m.newId();
+            if (merge.words[2] == label) merge.words[2] = body;  // a header that was its own continue target
+            out.push_back(merge);
+            out.push_back({{spirvFirstWord(kBranch, 2), body}});
+            out.push_back({{spirvFirstWord(kLabel, 2), body}});
+            endsIn[label] = block = body;
+            changed = true;
+        }
+        if (in.opcode() == kLoopMerge && endsIn.count(label)) return;  // placed above
+        const std::vector<const SpirvInstruction*> chains = guarded(in);
+        if (chains.empty() || loopMerges.count(block)) return out.push_back(in);
         const SpirvInstruction& element = *chains.back();
         // if (index < length) { the access } -- an atomic's or a composite's value is 0 when skipped.
         Emitter e{m, out};
@@ -243,11 +268,12 @@ bool outOfRangeBufferWritesDropped(ParsedSpirv& m) {
         out.push_back({{spirvFirstWord(kBranchConditional, 4), ok, then, merge}});
         out.push_back({{spirvFirstWord(kLabel, 2), then}});
         SpirvInstruction access = in;
-        if (atomic) access.words[2] = m.newId();
+        const bool valued = in.opcode() != kStore && in.opcode() != kAtomicStore;
+        if (valued) access.words[2] = m.newId();
         out.push_back(access);
         out.push_back({{spirvFirstWord(kBranch, 2), merge}});
         out.push_back({{spirvFirstWord(kLabel, 2), merge}});
-        if (atomic) {
+        if (valued) {
             out.push_back({{spirvFirstWord(kPhi, 7), in.words[1], in.words[2], access.words[2], then, m.splatConstant(in.words[1], 0), block}});
             newPhis.insert(in.words[2]);
         }

@@ -13,7 +13,9 @@
 // - A store or atomic through such an access chain (RWStructuredBuffer, RWByteAddressBuffer) runs
 //   only `if (index < length)`: D3D drops it, GL may write another buffer's memory. A dropped
 //   atomic's original value reads 0; so does a whole struct or matrix element read past the end
-//   (which OpSelect cannot choose before SPIR-V 1.4, so it is read under the same `if`).
+//   (which OpSelect cannot choose before SPIR-V 1.4, so it is read under the same `if`). A loop
+//   header holding such an access keeps its phis and merge instruction and branches to a new block
+//   with the rest, which is split as any other block.
 // Typed UAV stores and atomics out of range need nothing: GL defines them as D3D does (an invalid
 // image store has no effect, an invalid image atomic updates nothing; GL 4.6 section 8.26).
 // Run on the legalised module, after fetch offsets are folded into the coordinates.
