@@ -154,7 +154,7 @@ std::vector<const SpirvInstruction*> elementChains(const ParsedSpirv& m, const s
 
 }  // namespace
 
-// Tests: xlate OutOfRangeReads.*; d3d11 OutOfRangeReads.*.
+// Tests: xlate OutOfRangeReads.*; d3d11 D3D11OutOfRangeReads.*.
 bool outOfRangeReadsReadZero(ParsedSpirv& m) {
     if (!m.has({kImageFetch, kImageRead, kArrayLength, kAccessChain, kInBoundsAccessChain})) return false;
     const std::map<std::uint32_t, std::uint32_t> runtimeArrayMember = runtimeArrayBuffers(m);
