@@ -124,8 +124,12 @@ TEST(RealworldSeventhWave, SampleIndexersOfMultisampleTextures) {
         "    resolve(id.xy, inputs, outputs);\n"
         "}\n",
         "cs_5_0");
-    EXPECT_NE(glsl.find("ivec2(gl_GlobalInvocationID.xy), int("), std::string::npos) << glsl;  // sample i of image
-    EXPECT_NE(glsl.find("ivec3(uvec3(gl_GlobalInvocationID.xy, 1u)), 3)"), std::string::npos) << glsl;
+    // (Each fetch is compared against the texture's size and samples: out_of_range_accesses.h.)
+    EXPECT_NE(glsl.find(" = ivec2(gl_GlobalInvocationID.xy);"), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find(" = int(_"), std::string::npos) << glsl;  // sample i of image
+    EXPECT_NE(glsl.find("texelFetch(fxport_image_SPIRV_Cross_DummySampler, _"), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find(" = ivec3(uvec3(gl_GlobalInvocationID.xy, 1u));"), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find(", 3), bvec4("), std::string::npos) << glsl;  // sample 3 of stencil
     EXPECT_NE(glsl.find("imageStore(outImage"), std::string::npos) << glsl;
 }
 

@@ -5,6 +5,7 @@
 
 #include "spirv/domain_layer_outputs.h"
 #include "spirv/fetch_offsets.h"
+#include "spirv/out_of_range_accesses.h"
 #include "spirv/gather_offsets.h"
 #include "spirv/integer_matrices.h"
 #include "spirv/live_uniform_bytes.h"
@@ -389,7 +390,7 @@ GlslShader spirvToGlsl(std::vector<std::uint32_t> spirv, ShaderStage stage, cons
             for (PackedBlock& b : packed)
                 if (!b.glslDeclarable && module.reparse()) flattenConstantBuffer(module, b);
             if (module.reparse())
-                runSpirvPasses(module, {integerMatricesAsArrays, fetchOffsetsIntoCoordinates, gatherOffsetsAsFourGathers, domainLayerOutputs,
+                runSpirvPasses(module, {integerMatricesAsArrays, fetchOffsetsIntoCoordinates, outOfRangeReadsReadZero, outOfRangeBufferWritesDropped, gatherOffsetsAsFourGathers, domainLayerOutputs,
                                         writeOnlyImagesWithoutFormat});
             spirv = module.assemble();
         }

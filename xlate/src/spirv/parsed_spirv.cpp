@@ -144,29 +144,43 @@ std::uint32_t ParsedSpirv::addType(std::vector<std::uint32_t> words) {
     return words[1];
 }
 
-std::uint32_t ParsedSpirv::floatTypeLike(std::uint32_t type) {
+std::uint32_t ParsedSpirv::findType(const std::function<bool(const SpirvInstruction&)>& match) const {
+    for (const auto* list : {&instructions, &types_})
+        for (const auto& inst : *list)
+            if (match(inst)) return inst.words[1];
+    return 0;
+}
+
+std::uint32_t ParsedSpirv::vectorLike(std::uint32_t scalar, std::uint32_t type) {
     const std::uint32_t count = components(type).second;
-    auto find = [&](auto match) -> std::uint32_t {
-        for (const auto* list : {&instructions, &types_})
-            for (const auto& inst : *list)
-                if (match(inst)) return inst.words[1];
-        return 0;
-    };
-    std::uint32_t scalar = find([](const SpirvInstruction& i) { return i.opcode() == spv_op::TypeFloat && i.words.size() == 3 && i.words[2] == 32; });
-    if (!scalar) scalar = addType({spirvFirstWord(spv_op::TypeFloat, 3), 0, 32});
     if (count == 1) return scalar;
-    std::uint32_t vector = find([&](const SpirvInstruction& i) {
+    std::uint32_t vector = findType([&](const SpirvInstruction& i) {
         return i.opcode() == spv_op::TypeVector && i.words.size() == 4 && i.words[2] == scalar && i.words[3] == count;
     });
     if (!vector) vector = addType({spirvFirstWord(spv_op::TypeVector, 4), 0, scalar, count});
     return vector;
 }
 
+std::uint32_t ParsedSpirv::floatTypeLike(std::uint32_t type) {
+    std::uint32_t scalar = findType([](const SpirvInstruction& i) { return i.opcode() == spv_op::TypeFloat && i.words.size() == 3 && i.words[2] == 32; });
+    if (!scalar) scalar = addType({spirvFirstWord(spv_op::TypeFloat, 3), 0, 32});
+    return vectorLike(scalar, type);
+}
+
+std::uint32_t ParsedSpirv::boolTypeLike(std::uint32_t type) {
+    std::uint32_t scalar = findType([](const SpirvInstruction& i) { return i.opcode() == spv_op::TypeBool; });
+    if (!scalar) scalar = addType({spirvFirstWord(spv_op::TypeBool, 2), 0});
+    return vectorLike(scalar, type);
+}
+
 std::uint32_t ParsedSpirv::intType() {
-    for (const auto* list : {&instructions, &types_})
-        for (const auto& inst : *list)
-            if (inst.opcode() == spv_op::TypeInt && inst.words.size() == 4 && inst.words[2] == 32 && inst.words[3] == 1) return inst.words[1];
-    return addType({spirvFirstWord(spv_op::TypeInt, 4), 0, 32, 1});
+    std::uint32_t t = findType([](const SpirvInstruction& i) { return i.opcode() == spv_op::TypeInt && i.words.size() == 4 && i.words[2] == 32 && i.words[3] == 1; });
+    return t ? t : addType({spirvFirstWord(spv_op::TypeInt, 4), 0, 32, 1});
+}
+
+std::uint32_t ParsedSpirv::uintType() {
+    std::uint32_t t = findType([](const SpirvInstruction& i) { return i.opcode() == spv_op::TypeInt && i.words.size() == 4 && i.words[2] == 32 && i.words[3] == 0; });
+    return t ? t : addType({spirvFirstWord(spv_op::TypeInt, 4), 0, 32, 0});
 }
 
 std::uint32_t ParsedSpirv::constant(std::uint32_t scalarType, std::uint32_t value) {

@@ -86,8 +86,11 @@ public:
     std::uint32_t composite(std::uint32_t type, const std::vector<std::uint32_t>& parts);
     // The 32-bit float type of the same shape as `type` (a scalar or vector), found or added.
     std::uint32_t floatTypeLike(std::uint32_t type);
-    // The 32-bit signed integer type, found or added.
+    // The bool type of the same shape as `type` (a scalar or vector), found or added.
+    std::uint32_t boolTypeLike(std::uint32_t type);
+    // The 32-bit signed and unsigned integer types, found or added.
     std::uint32_t intType();
+    std::uint32_t uintType();
     // The id of the GLSL.std.450 import, added when the module has none.
     std::uint32_t glslStd450();
 
@@ -102,6 +105,8 @@ public:
 private:
     std::uint32_t addGlobal(std::vector<std::uint32_t> words);  // words[2] is set to a new id
     std::uint32_t addType(std::vector<std::uint32_t> words);    // words[1] is set to a new id
+    std::uint32_t findType(const std::function<bool(const SpirvInstruction&)>& match) const;  // 0 when none
+    std::uint32_t vectorLike(std::uint32_t scalar, std::uint32_t type);  // `scalar`'s vector as wide as `type`
     std::vector<SpirvInstruction> globals_;  // new types and constants, placed by assemble()
     std::vector<SpirvInstruction> types_;    // the new types, for floatTypeLike's look-ups
     SpirvInstruction import_;                // a new GLSL.std.450 import, placed by assemble()
