@@ -134,7 +134,7 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
                                sm2or3 ? SpirvPass(integerNegationInFloats) : nullptr,  // SM2-3 integers are floats
                                sm2or3 ? nullptr : SpirvPass(roundHalvesToEven)});     // round_ne (rounding.h)
     std::string legalizeError;
-    if (!legalizeSpirv(out.words, &legalizeError)) {
+    if (!legalizeSpirv(out.words, &legalizeError, sm2or3)) {
         out.errors.push_back({0, {}, legalizeError});
         return out;
     }
