@@ -15,6 +15,7 @@
 #include "spirv/spirv_fixups.h"
 #include "spirv/pixel_interlock.h"
 #include "spirv/rounding.h"
+#include "spirv/legacy_division.h"
 #include "spirv/static_zero_init.h"
 #include "spirv/tessellation_clip_distances.h"
 #include "spirv/unset_static_resources.h"
@@ -132,6 +133,7 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
     }
     runSpirvPasses(out.words, {applySpirvFixups, structuredBufferStridesAsD3D,
                                sm2or3 ? SpirvPass(integerNegationInFloats) : nullptr,  // SM2-3 integers are floats
+                               sm2or3 ? SpirvPass(divisionAsRcpTimes) : nullptr,       // 0 / 0 is 0 (legacy_division.h)
                                sm2or3 ? nullptr : SpirvPass(roundHalvesToEven)});     // round_ne (rounding.h)
     std::string legalizeError;
     if (!legalizeSpirv(out.words, &legalizeError, sm2or3)) {

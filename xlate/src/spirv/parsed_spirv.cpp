@@ -162,6 +162,24 @@ std::uint32_t ParsedSpirv::floatTypeLike(std::uint32_t type) {
     return vector;
 }
 
+std::uint32_t ParsedSpirv::boolTypeLike(std::uint32_t type) {
+    const std::uint32_t count = components(type).second;
+    auto find = [&](auto match) -> std::uint32_t {
+        for (const auto* list : {&instructions, &types_})
+            for (const auto& inst : *list)
+                if (match(inst)) return inst.words[1];
+        return 0;
+    };
+    std::uint32_t scalar = find([](const SpirvInstruction& i) { return i.opcode() == spv_op::TypeBool && i.words.size() == 2; });
+    if (!scalar) scalar = addType({spirvFirstWord(spv_op::TypeBool, 2), 0});
+    if (count == 1) return scalar;
+    std::uint32_t vector = find([&](const SpirvInstruction& i) {
+        return i.opcode() == spv_op::TypeVector && i.words.size() == 4 && i.words[2] == scalar && i.words[3] == count;
+    });
+    if (!vector) vector = addType({spirvFirstWord(spv_op::TypeVector, 4), 0, scalar, count});
+    return vector;
+}
+
 std::uint32_t ParsedSpirv::intType() {
     for (const auto* list : {&instructions, &types_})
         for (const auto& inst : *list)

@@ -86,6 +86,8 @@ public:
     std::uint32_t composite(std::uint32_t type, const std::vector<std::uint32_t>& parts);
     // The 32-bit float type of the same shape as `type` (a scalar or vector), found or added.
     std::uint32_t floatTypeLike(std::uint32_t type);
+    // The bool type of the same shape as `type` (a scalar or vector), found or added.
+    std::uint32_t boolTypeLike(std::uint32_t type);
     // The 32-bit signed integer type, found or added.
     std::uint32_t intType();
     // The id of the GLSL.std.450 import, added when the module has none.
