@@ -1,4 +1,5 @@
-// SM 2-3 float arithmetic as D3D9 computes it where IEEE differs (xlate/src/spirv/legacy_division.h):
+// SM 2-3 float arithmetic as D3D9 computes it where IEEE differs (xlate/src/spirv/legacy_division.h,
+// ps2_equality.h):
 // each shader is drawn into one float pixel, the operands coming from uniforms (the GPU computes;
 // fxc refuses a constant divisor of 0).
 #include <gtest/gtest.h>
@@ -26,6 +27,19 @@ TEST_P(HlslSm3Floats, ZeroOverZeroIsZero) {
     EXPECT_TRUE(std::isinf(px[1]) && px[1] > 0) << px[1];
     EXPECT_EQ(px[2], 0.0f);
     EXPECT_EQ(px[3], 0.0f);
+}
+
+// ps_2_0 has no compare instruction: fxc's a == b there is (a - b)² == 0, which holds for
+// differences whose square underflows (1e-37 against 0 and -1e-37), not for 1e38 against -1e38
+// (the square is inf); ps_3_0 compares exactly (vkd3d float-comparison L92 and L108).
+TEST_P(HlslSm3Floats, Ps2EqualityIsASquaredDifference) {
+    auto e = effect("float4 A; float4 B;", "return float4(A == B) + 10 * float4(A != B);");
+    e->Parameters["A"].SetValue(Vector4(1e-37f, 1e-37f, 1e38f, 1e38f));
+    e->Parameters["B"].SetValue(Vector4(0.0f, -1e-37f, 1e38f, -1e38f));
+    std::vector<float> px = draw(*e);
+    const bool ps2 = std::string(GetParam()) == "2_0";
+    const float expected[4] = {ps2 ? 1.0f : 10.0f, ps2 ? 1.0f : 10.0f, 1.0f, 10.0f};
+    for (int k = 0; k < 4; ++k) EXPECT_EQ(px[size_t(k)], expected[k]) << "channel " << k;
 }
 
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslSm3Floats, ::testing::Values("2_0", "3_0"),
