@@ -15,7 +15,7 @@ namespace {
 
 class HlslSm3Floats : public OnePixelEffect {};
 
-// fxc's a / b at SM 2-3 is a * rcp(b), and D3D9's multiply makes 0 * inf 0: 0 / 0 and 1 / inf
+// fxc's a / b at SM 2-3 is a * rcp(b), and D3D9's multiply makes 0 * inf 0: 0 / 0 and inf / inf
 // are 0 (vkd3d float-comparison L60), so is 0 / 0 of computed values; 1 / 0 is still inf.
 TEST_P(HlslSm3Floats, ZeroOverZeroIsZero) {
     auto e = effect("float Z; float One; float Inf;", "return float4(Z / Z, One / Z, Inf / Inf, (Z * One) / (Z + Z));");
@@ -27,6 +27,15 @@ TEST_P(HlslSm3Floats, ZeroOverZeroIsZero) {
     EXPECT_TRUE(std::isinf(px[1]) && px[1] > 0) << px[1];
     EXPECT_EQ(px[2], 0.0f);
     EXPECT_EQ(px[3], 0.0f);
+    // Every other quotient is IEEE's, its sign too: -1 / inf and 1 / (1 / -0) are -0 (vkd3d rcp L52).
+    auto s = effect("float Z; float One; float Inf;", "return float4(-One / Inf, One / (One / -Z), Inf / One, 0);");
+    s->Parameters["Z"].SetValue(0.0f);
+    s->Parameters["One"].SetValue(1.0f);
+    s->Parameters["Inf"].SetValue(INFINITY);
+    px = draw(*s);
+    EXPECT_TRUE(px[0] == 0.0f && std::signbit(px[0])) << px[0];
+    EXPECT_TRUE(px[1] == 0.0f && std::signbit(px[1])) << px[1];
+    EXPECT_TRUE(std::isinf(px[2])) << px[2];
 }
 
 // ps_2_0 has no compare instruction: fxc's a == b there is (a - b)² == 0, which holds for
