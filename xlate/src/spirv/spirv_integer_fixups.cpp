@@ -194,9 +194,10 @@ bool integerCastsOfFloatIntegers(ParsedSpirv& m) {
         } else if (d->opcode() == kOpCompositeConstruct && m.components(type).second == d->words.size() - 3) {
             // float4(int4(a, b, ...)) of scalars: each converted on its own, so the rules above meet it.
             const std::uint32_t scalar = m.components(type).first;
+            for (size_t k = 3; k < d->words.size(); ++k)
+                if (m.components(m.typeOf(d->words[k])).second != 1) return out.push_back(inst);
             std::vector<std::uint32_t> parts;
             for (size_t k = 3; k < d->words.size(); ++k) {
-                if (m.components(m.typeOf(d->words[k])).second != 1) return out.push_back(inst);
                 SpirvInstruction part = m.value(spv_op::ConvertSToF, scalar, {d->words[k]});
                 parts.push_back(part.words[2]);
                 out.push_back(std::move(part));
