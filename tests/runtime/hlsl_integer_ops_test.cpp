@@ -98,6 +98,23 @@ TEST_P(HlslSm3Integers, ConstantsFoldExactlyButNegateAsFloats) {
     for (int k = 0; k < 4; ++k) EXPECT_EQ(px[size_t(k)], expected[k]) << "channel " << k;
 }
 
+// An SM2-3 int is a float, so values beyond 32-bit integers stay what they are (vkd3d's
+// arithmetic-int and cast-to-int): INT_MIN / -1 is 2^31, -INT_MIN is 2^31 (a constant and a
+// uniform's), (int) of the uint 0xfffffffe is 4294967294, and (int)f still truncates (-3.6 is -3).
+TEST_P(HlslSm3Integers, ValuesBeyondInt32StayFloats) {
+    auto e = effect("float F;", "int x = -2147483648; int y = -1; uint u = 0xfffffffe; int f = F;"
+                    "return float4(x / y, -x, (float)(int)u, f);");
+    e->Parameters["F"].SetValue(-3.6f);
+    std::vector<float> px = draw(*e);
+    const float expected[4] = {2147483648.0f, 2147483648.0f, float(0xfffffffeu), -3.0f};
+    for (int k = 0; k < 4; ++k) EXPECT_EQ(px[size_t(k)], expected[k]) << "channel " << k;
+    auto n = effect("float A;", "int a = A; return float4(int2(-a, a), -a, 0);");
+    n->Parameters["A"].SetValue(-2147483648.0f);
+    px = draw(*n);
+    const float computed[4] = {2147483648.0f, -2147483648.0f, 2147483648.0f, 0.0f};
+    for (int k = 0; k < 4; ++k) EXPECT_EQ(px[size_t(k)], computed[k]) << "channel " << k;
+}
+
 INSTANTIATE_TEST_SUITE_P(ShaderModels, HlslSm3Integers, ::testing::Values("2_0", "3_0"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string("sm") + p.param; });
 

@@ -121,3 +121,15 @@ TEST(AggregateForms, CastsOfExpressionsToStructs) {
         "    Pair r = (Pair)p.zy;\n    return float4(a.x + a.y, q.lo.y + q.hi.x, q.hi.y, r.x - r.y);\n}\n");
     EXPECT_NE(glsl.find("vec4(4.5, 1.0, 8.0, 3.75)"), std::string::npos) << glsl;
 }
+
+// A scalar cast to an array type fills every element from the scalar, as fxc does (`(float4[4])0`;
+// glslang read it as an array constructor of one argument and refused it): in a local and a global
+// initializer, in an array of arrays and in an assignment, from a literal and from a scalar
+// variable converted to the element type (an int array from 2.75 truncates to 2).
+TEST(AggregateForms, ScalarCastToArrayFillsEveryElement) {
+    const std::string glsl = pixelGlsl(
+        "static const float g[2][2] = (float[2][2])-1;\nfloat4 main() : SV_Target\n{\n"
+        "    float4 a[4] = (float4[4])3;\n    float s = 2.75;\n    int c[2];\n    c = (int[2])s;\n"
+        "    return float4(a[3].y, a[0].w + g[1][0], c[1], g[0][1]);\n}\n");
+    EXPECT_NE(glsl.find("vec4(3.0, 2.0, 2.0, -1.0)"), std::string::npos) << glsl;
+}

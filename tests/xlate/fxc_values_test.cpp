@@ -108,6 +108,18 @@ TEST(FxcValues, InoutUavElementArgumentIsReadBeforeTheCall) {
     EXPECT_EQ(glsl.find("writeonly"), std::string::npos) << glsl;
 }
 
+// combined-samplers L148: a global texture array of two dimensions (xlate/src/rewrite/
+// object_array_dimensions.h) is one array of four on consecutive registers, the last index running
+// fastest, so tex[0][1] is element 1 and tex[1][1] element 3; glslang alone found no texture behind
+// `tex[1][1].Sample` ("unable to find texture symbol").
+TEST(FxcValues, TwoDimensionalTextureArraysAreFlattenedRowByRow) {
+    const std::string glsl = pixelGlsl("Texture2D tex[2][2];\nsampler sam;\nfloat4 main() : sv_target\n{\n"
+                                       "    return 100 * tex[0][1].Load(int3(0, 0, 0)) + tex[1][1].Sample(sam, float2(0, 0));\n}\n");
+    EXPECT_NE(glsl.find("sampler2D fxport_tex_SPIRV_Cross_DummySampler[4]"), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find("texelFetch(fxport_tex_SPIRV_Cross_DummySampler[1]"), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find("texture(fxport_tex_sam[3]"), std::string::npos) << glsl;
+}
+
 // initializer-objects L16: a local array of textures initialized from globals, read by literal
 // indices (xlate/src/rewrite/local_object_arrays.h): each element is its texture, as fxc resolves
 // it; glslang alone wrote a module with an id defined twice.

@@ -27,6 +27,7 @@ constexpr Family kFamilies[] = {
     findFunctionSignatureErrors,
     findComputeOnlyIntrinsicErrors,
     findTextureShaderIntrinsicErrors,
+    findSm4ObjectMethodErrors,
     findMatrixShapeConversionErrors,
     findLvalueCastErrors,
     findEffectKeywordErrors,

@@ -65,6 +65,7 @@ std::vector<std::pair<size_t, Diagnostic>> findStaticSamplerErrors(const EffectS
 std::vector<std::pair<size_t, Diagnostic>> findFunctionSignatureErrors(const EffectSyntax& syntax, const SourceMap& map);
 std::vector<std::pair<size_t, Diagnostic>> findComputeOnlyIntrinsicErrors(const EffectSyntax& syntax, const SourceMap& map);
 std::vector<std::pair<size_t, Diagnostic>> findTextureShaderIntrinsicErrors(const EffectSyntax& syntax, const SourceMap& map);  // texture_shader_intrinsics.cpp
+std::vector<std::pair<size_t, Diagnostic>> findSm4ObjectMethodErrors(const EffectSyntax& syntax, const SourceMap& map);  // sm4_object_methods.cpp
 std::vector<std::pair<size_t, Diagnostic>> findMatrixShapeConversionErrors(const EffectSyntax& syntax, const SourceMap& map);
 std::vector<std::pair<size_t, Diagnostic>> findLvalueCastErrors(const EffectSyntax& syntax, const SourceMap& map);  // lvalue_casts.cpp
 std::vector<std::pair<size_t, Diagnostic>> findEffectKeywordErrors(const EffectSyntax& syntax, const SourceMap& map);  // effect_keywords.cpp

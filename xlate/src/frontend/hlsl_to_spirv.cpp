@@ -15,6 +15,8 @@
 #include "spirv/spirv_fixups.h"
 #include "spirv/pixel_interlock.h"
 #include "spirv/rounding.h"
+#include "spirv/legacy_division.h"
+#include "spirv/ps2_equality.h"
 #include "spirv/static_zero_init.h"
 #include "spirv/tessellation_clip_distances.h"
 #include "spirv/unset_static_resources.h"
@@ -125,6 +127,7 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
     // The SPIR-V passes (parsed_spirv.h), each a function over one parsed module; the spirv-opt
     // runs (the division check, legalisation) work on the words between them.
     const bool sm2or3 = request.shaderModel < 4;
+    const bool ps2 = request.shaderModel == 2 && request.stage == ShaderStage::Pixel;
     runSpirvPasses(out.words, {restoreKeywordIdentifiers, staticVariablesStartAtZero, tessellationClipDistances});  // `precise` as a name (keyword_identifiers.h); statics start at zero before the division check (static_zero_init.h); hull/domain clip distances as built-ins (tessellation_clip_distances.h)
     if (dividesByConstantZero(out.words, sm2or3)) {
         out.errors.push_back({0, {}, "division by zero: a divisor of this shader folds to the constant 0, which fxc refuses", true});
@@ -132,9 +135,11 @@ SpirvModule hlslToSpirv(const HlslToSpirvRequest& request) {
     }
     runSpirvPasses(out.words, {applySpirvFixups, structuredBufferStridesAsD3D,
                                sm2or3 ? SpirvPass(integerNegationInFloats) : nullptr,  // SM2-3 integers are floats
+                               ps2 ? SpirvPass(equalityBySquaredDifference) : nullptr,  // a == b as (a - b)² == 0 (ps2_equality.h)
+                               sm2or3 ? SpirvPass(divisionAsRcpTimes) : nullptr,       // 0 / 0 is 0 (legacy_division.h)
                                sm2or3 ? nullptr : SpirvPass(roundHalvesToEven)});     // round_ne (rounding.h)
     std::string legalizeError;
-    if (!legalizeSpirv(out.words, &legalizeError)) {
+    if (!legalizeSpirv(out.words, &legalizeError, sm2or3)) {
         out.errors.push_back({0, {}, legalizeError});
         return out;
     }

@@ -136,12 +136,80 @@ void declareThroughVector(const EffectSyntax& syntax, const FxFunction& f, size_
     edits.push_back({t[cast].offset, t[stop - 1].end, list + " }"});
 }
 
+// Whether tokens [first, end) are a scalar that can be repeated without changing what the code does:
+// a number, negated or not, or a variable declared scalar (local or global, not an array).
+bool repeatableScalar(const EffectSyntax& syntax, const FxFunction* f, size_t first, size_t end) {
+    const auto& t = syntax.tokens;
+    if (end == first + 2 && t[first].is("-")) ++first;
+    if (end != first + 1) return false;
+    if (t[first].kind == Token::Kind::Number) return true;
+    if (!t[first].isIdent()) return false;
+    auto v = f ? declaredVariable(syntax, *f, t[first].text, first) : std::nullopt;
+    std::string type;
+    if (v && v->dims.empty()) type = v->type;
+    for (const auto& g : syntax.globals)
+        if (!v && g.name == t[first].text && g.arrayDims.empty()) type = g.type;
+    BasicType b = describeBasicType(syntax.resolveType(type));
+    return b.ok && b.rows * b.columns == 1;
+}
+
+// A brace list for an array of `dims` whose every element is `element`: `{ { e, e }, { e, e } }`.
+std::string repeatedList(const std::vector<int>& dims, size_t level, const std::string& element) {
+    if (level == dims.size()) return element;
+    std::string list = "{";
+    for (int k = 0; k < dims[level]; ++k) list += (k ? ", " : " ") + repeatedList(dims, level + 1, element);
+    return list + " }";
+}
+
+// `= (T[N]...) s;` with s a scalar (`float4 a[4] = (float4[4])0;`): fxc fills every element from
+// the scalar, where glslang reads the cast as an array constructor of one argument and refuses it.
+// In an initializer the cast becomes the list of (T)(s); in the statement `y = (T[N]) s;`, one
+// assignment per element. Returns whether it rewrote the cast at i.
+bool rewriteScalarToArrayCast(const EffectSyntax& syntax, const FxFunction* f, size_t i, size_t end, std::vector<TextEdit>& edits) {
+    const auto& t = syntax.tokens;
+    auto cast = castAt(syntax, i, end);
+    if (!cast || cast->first.dims.empty()) return false;
+    const Declared& to = cast->first;
+    BasicType element = describeBasicType(syntax.resolveType(to.type));
+    if (!element.ok) return false;  // a struct: glslang's
+    for (int n : to.dims)
+        if (n < 1) return false;
+    const size_t first = cast->second + 1;
+    size_t stop = first;
+    while (stop < end && !t[stop].is(";")) ++stop;
+    if (stop >= end || !repeatableScalar(syntax, f, first, stop)) return false;
+    const std::string value = "(" + to.type + ")(" + syntax.text({first, stop}) + ")";
+    const bool statement = f && i >= 3 && t[i - 2].isIdent() && (t[i - 3].is(";") || t[i - 3].is("{") || t[i - 3].is("}"));
+    if (!statement) {
+        edits.push_back({t[i].offset, t[stop - 1].end, repeatedList(to.dims, 0, value)});
+        return true;
+    }
+    auto y = declaredVariable(syntax, *f, t[i - 2].text, i - 2);
+    if (!y || y->dims != to.dims) return false;
+    size_t count = 1;
+    for (int n : to.dims) count *= size_t(n);
+    std::string text;
+    for (size_t k = 0; k < count; ++k) {
+        std::string access = t[i - 2].text;
+        size_t rest = k, stride = count;
+        for (int n : to.dims) {
+            stride /= size_t(n);
+            access += "[" + std::to_string(rest / stride) + "]";
+            rest %= stride;
+        }
+        text += access + " = " + value + "; ";
+    }
+    edits.push_back({t[i - 2].offset, t[stop].end, text});
+    return true;
+}
+
 // `= (S[N]) e;`, S a scalar type and e a vector of at least N components (SubD11: `static const
 // uint Val[4] = (uint[4])uint4(4, 4, 4, 4);`): glslang reads the cast as an array constructor of one
 // argument and refuses it. The initializer becomes the list of e's first N components, converted.
 void rewriteVectorToArrayInitializers(const EffectSyntax& syntax, const FxFunction* f, size_t begin, size_t end, std::vector<TextEdit>& edits) {
     const auto& t = syntax.tokens;
     for (size_t i = begin + 1; i + 6 < end; ++i) {
+        if (t[i - 1].is("=") && rewriteScalarToArrayCast(syntax, f, i, end, edits)) continue;
         if (!t[i - 1].is("=") || !t[i].is("(") || !t[i + 1].isIdent() || !t[i + 2].is("[") || t[i + 3].kind != Token::Kind::Number ||
             !t[i + 4].is("]") || !t[i + 5].is(")"))
             continue;

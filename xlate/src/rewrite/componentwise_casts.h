@@ -7,6 +7,8 @@
 //  - `(T) x` with T numeric and x an array or struct variable: T's constructor from x's first
 //    components, each named (`x[0]`, `x.aa.y` ...);
 //  - `y = (T) x;` with T a struct or an array (y declared as T): one assignment per component.
+//  - `(T[N]...) s` with s a scalar literal or variable, in an initializer or `y = (T[N]) s;`: every
+//    element (T)(s), as fxc fills it (`(float4[4])0`; glslang wants one argument per element).
 // Only where x and y are variables whose types the source declares, and every component numeric;
 // a source with fewer components than T is left to glslang, which refuses it as fxc does.
 #pragma once

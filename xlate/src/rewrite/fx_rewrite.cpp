@@ -4,6 +4,7 @@
 #include "rewrite/uniform_object_structs.h"
 #include "rewrite/out_of_range_indices.h"
 #include "rewrite/local_object_arrays.h"
+#include "rewrite/object_array_dimensions.h"
 #include "rewrite/geometry_output_stream.h"
 
 #include "rewrite/aggregate_conversions.h"
@@ -466,6 +467,7 @@ RewrittenEffect rewriteEffect(const std::string& text, const EffectSyntax& synta
     for (auto& e : staticObjectAliases(syntax)) edits.push_back(std::move(e));
     for (auto& e : staticObjectStructs(syntax)) edits.push_back(std::move(e));
     for (auto& e : localObjectArraysResolved(syntax)) edits.push_back(std::move(e));
+    for (auto& e : objectArraysFlattened(syntax)) edits.push_back(std::move(e));
     for (auto& e : shaderValuedDefaultsDropped(syntax)) edits.push_back(std::move(e));
     for (auto& e : respellOneComponentVectors(syntax)) edits.push_back(std::move(e));
     std::vector<TextEdit> vectorSwizzles;  // ahead of lowerMatrixSwizzles' edits of the same tokens (applyEdits keeps order)

@@ -184,7 +184,7 @@ bool runPasses(std::vector<std::uint32_t>& words, std::string* error,
 
 }  // namespace
 
-bool legalizeSpirv(std::vector<std::uint32_t>& words, std::string* error) {
+bool legalizeSpirv(std::vector<std::uint32_t>& words, std::string* error, bool sm2or3) {
     // The order glslang uses for HLSL (its SpirvToolsTransform), so that the GLSL we emit is what it
     // was when glslang ran these passes itself. The two simplification passes fold constants; the
     // division fold that traps in spirv-opt (spirv_integer_fixups.h) runs before each of them, once
@@ -201,7 +201,8 @@ bool legalizeSpirv(std::vector<std::uint32_t>& words, std::string* error) {
             .RegisterPass(spvtools::CreateLocalSingleStoreElimPass());
     });
     if (!ok) return false;
-    runSpirvPasses(words, {foldIntMinByMinusOne});
+    runSpirvPasses(words, {sm2or3 ? SpirvPass(intMinByMinusOneInFloats) : nullptr, foldIntMinByMinusOne,
+                           sm2or3 ? SpirvPass(integerCastsOfFloatIntegers) : nullptr, sm2or3 ? SpirvPass(integerCastsOfFloatIntegers) : nullptr});
     ok = runPasses(words, error, [](spvtools::Optimizer& o) {
         o.RegisterPass(spvtools::CreateSimplificationPass())
             .RegisterPass(spvtools::CreateAggressiveDCEPass())
@@ -214,7 +215,8 @@ bool legalizeSpirv(std::vector<std::uint32_t>& words, std::string* error) {
             .RegisterPass(spvtools::CreateIfConversionPass());
     });
     if (!ok) return false;
-    runSpirvPasses(words, {foldIntMinByMinusOne});
+    runSpirvPasses(words, {sm2or3 ? SpirvPass(intMinByMinusOneInFloats) : nullptr, foldIntMinByMinusOne,
+                           sm2or3 ? SpirvPass(integerCastsOfFloatIntegers) : nullptr, sm2or3 ? SpirvPass(integerCastsOfFloatIntegers) : nullptr});
     return runPasses(words, error, [](spvtools::Optimizer& o) {
         o.RegisterPass(spvtools::CreateSimplificationPass())
             .RegisterPass(spvtools::CreateAggressiveDCEPass())

@@ -24,7 +24,8 @@ bool dividesByConstantZero(const std::vector<std::uint32_t>& words, bool floatsT
 // spirv-opt's legalisation passes for HLSL (what glslang runs when its optimizer is on): inlining,
 // scalar replacement and forwarding of opaque values (samplers passed to functions), dead code.
 // Returns false (and leaves `words` as they were) when spirv-opt refuses the module.
-bool legalizeSpirv(std::vector<std::uint32_t>& words, std::string* error);
+// `sm2or3`: integers are floats (spirv_integer_fixups.h), also where folding meets them.
+bool legalizeSpirv(std::vector<std::uint32_t>& words, std::string* error, bool sm2or3 = false);
 
 // Another round of scalar replacement and store forwarding, for a module that still has a local
 // resource variable after legalizeSpirv (unset_static_resources.h): run only then, so every other

@@ -146,3 +146,71 @@ bool integerNegationInFloats(ParsedSpirv& m) {
 }
 
 }  // namespace fxport::xlate
+
+namespace fxport::xlate {
+
+// Test: runtime HlslSm3Integers.ValuesBeyondInt32StayFloats, conformance arithmetic-int.
+bool intMinByMinusOneInFloats(ParsedSpirv& m) {
+    if (!m.has({spv_op::SDiv})) return false;
+    bool changed = false;
+    m.rewrite([&](const SpirvInstruction& inst, std::vector<SpirvInstruction>& out) {
+        if (inst.opcode() != spv_op::SDiv || inst.words.size() != 5) return out.push_back(inst);
+        auto a = constantComponents(m, inst.words[3]), b = constantComponents(m, inst.words[4]);
+        if (!a || !b || a->size() != b->size()) return out.push_back(inst);
+        bool overflows = false;
+        for (size_t k = 0; k < a->size(); ++k) overflows = overflows || ((*a)[k] == 0x80000000u && (*b)[k] == 0xFFFFFFFFu);
+        if (!overflows) return out.push_back(inst);
+        const std::uint32_t type = inst.words[1], floatType = m.floatTypeLike(type);
+        SpirvInstruction x = m.value(spv_op::ConvertSToF, floatType, {inst.words[3]});
+        SpirvInstruction y = m.value(spv_op::ConvertSToF, floatType, {inst.words[4]});
+        SpirvInstruction q = m.value(spv_op::FDiv, floatType, {x.words[2], y.words[2]});
+        SpirvInstruction back = inst;  // keeps the result id; a float reader of it sees q (integerCastsOfFloatIntegers)
+        back.words = {(4u << 16) | spv_op::ConvertFToS, type, inst.words[2], q.words[2]};
+        out.insert(out.end(), {x, y, q, back});
+        changed = true;
+    });
+    return changed;
+}
+
+// Test: runtime HlslSm3Integers.ValuesBeyondInt32StayFloats, conformance arithmetic-int, cast-to-int.
+bool integerCastsOfFloatIntegers(ParsedSpirv& m) {
+    constexpr std::uint32_t kOpCompositeConstruct = 80, kOpBitcast = 124, kGlslStd450Trunc = 3;
+    if (!m.has({spv_op::ConvertSToF})) return false;
+    bool changed = false;
+    m.rewrite([&](const SpirvInstruction& inst, std::vector<SpirvInstruction>& out) {
+        if (inst.opcode() != spv_op::ConvertSToF || inst.words.size() != 4) return out.push_back(inst);
+        const std::uint32_t type = inst.words[1], operand = inst.words[3];
+        const SpirvInstruction* d = m.definition(operand);
+        if (!d || d->words.size() < 4) return out.push_back(inst);
+        SpirvInstruction r = inst;
+        if (d->opcode() == spv_op::ConvertFToS && m.typeOf(d->words[3]) == type) {
+            // float(int(f)): the int is f truncated, kept as the float it is.
+            r.words = {spirvFirstWord(spv_op::ExtInst, 6), type, inst.words[2], m.glslStd450(), kGlslStd450Trunc, d->words[3]};
+        } else if (d->opcode() == kOpBitcast && d->words.size() == 4) {
+            // float((int)u) of a uint u: the same float as u.
+            const SpirvInstruction* from = m.definition(m.components(m.typeOf(d->words[3])).first);
+            if (!from || from->opcode() != spv_op::TypeInt || from->word(3) != 0) return out.push_back(inst);
+            r.words = {spirvFirstWord(spv_op::ConvertUToF, 4), type, inst.words[2], d->words[3]};
+        } else if (d->opcode() == kOpCompositeConstruct && m.components(type).second == d->words.size() - 3) {
+            // float4(int4(a, b, ...)) of scalars: each converted on its own, so the rules above meet it.
+            const std::uint32_t scalar = m.components(type).first;
+            for (size_t k = 3; k < d->words.size(); ++k)
+                if (m.components(m.typeOf(d->words[k])).second != 1) return out.push_back(inst);
+            std::vector<std::uint32_t> parts;
+            for (size_t k = 3; k < d->words.size(); ++k) {
+                SpirvInstruction part = m.value(spv_op::ConvertSToF, scalar, {d->words[k]});
+                parts.push_back(part.words[2]);
+                out.push_back(std::move(part));
+            }
+            r.words = {spirvFirstWord(kOpCompositeConstruct, 3 + parts.size()), type, inst.words[2]};
+            r.words.insert(r.words.end(), parts.begin(), parts.end());
+        } else {
+            return out.push_back(inst);
+        }
+        out.push_back(std::move(r));
+        changed = true;
+    });
+    return changed;
+}
+
+}  // namespace fxport::xlate

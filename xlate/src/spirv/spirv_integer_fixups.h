@@ -33,4 +33,16 @@ bool integerDivisionInFloats(ParsedSpirv& m);
 // legalisation, so that folding sees the float negation.
 bool integerNegationInFloats(ParsedSpirv& m);
 
+// SM2-3: an int holds any float's integer value, so INT_MIN / -1 of constants is 2^31 (vkd3d's
+// arithmetic-int; D3D10's idiv wraps it to INT_MIN, foldIntMinByMinusOne): the division is done
+// in floats, for integerCastsOfFloatIntegers to carry the quotient to a float reader.
+bool intMinByMinusOneInFloats(ParsedSpirv& m);
+
+// SM2-3: int and uint are floats, so converting one to float changes nothing that SPIR-V's 32-bit
+// integers would wrap: float(int(f)) is trunc(f) (2^31 from -INT_MIN stays 2^31), float((int)u)
+// of a uint is float(u) (0xfffffffe stays 4294967294; vkd3d's cast-to-int). A float conversion of
+// an int vector built from scalars converts each scalar, so that these rules meet them. Runs
+// before each folding of legalisation, so that constants fold through the floats.
+bool integerCastsOfFloatIntegers(ParsedSpirv& m);
+
 }  // namespace fxport::xlate
