@@ -223,7 +223,14 @@ struct GraphicsDevice::Impl {
     void applyShaders();
 
     // Everything a draw needs, compared against the shadow. `what` names the draw call for errors.
+    // A list of steps (draw_state.cpp): checkDrawable, the targets, applyClearPasses, applyBlend,
+    // the depth/stencil, rasterizer, viewport and scissor state, applyShaders, applyTextures,
+    // applyStorage, applyPassEmulation.
     void flush(const char* what);
+    void checkDrawable(const char* what) const;  // a pass applied, tessellation stages agree with the draw
+    const fxport::DepthStencilState& applyClearPasses();  // returns the depth/stencil state the draw has
+    void applyBlend();
+    void applyPassEmulation();
 
     // --- clears of the bound targets not yet sent to the backend (pending_clear.cpp). A clear of the whole
     // target (the one SetRenderTargets does for DiscardContents, and Clear over a full viewport) is

@@ -6,6 +6,7 @@
 
 #include "device/compute_passes.h"
 #include "device/device_impl.h"
+#include "device/optimization_passes.h"
 #include "fxport/graphics/effect.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/gpu_limits.h"
@@ -137,7 +138,7 @@ GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters)
     const DeviceOptimizations optimizations = parameters_.Optimizations.withEnvironment();
     impl_->deferClears = optimizations.DeferClears;
     impl_->honourDiscards = optimizations.HonourDiscards;
-    impl_->lazyDepthStorage = optimizations.LazyDepthStorage;
+    impl_->lazyDepthStorage = kLazyDepthBuilt && optimizations.LazyDepthStorage;  // left out of the build: off
     impl_->dropCoveredClears = optimizations.DropCoveredClears;
 
     // The D3D conventions (docs/DESIGN.md): NDC z in [0,1], and window y from the top row so
@@ -153,10 +154,13 @@ GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters)
     ScissorRectangle = Rectangle(0, 0, parameters_.BackBufferWidth, parameters_.BackBufferHeight);
 
     // Compute passes are the GL backend's own (gl/passes/) and need its context; unset, they run
-    // where this GPU runs them faster.
-    const bool computePasses =
-        context_ && (optimizations.ComputePasses ? *optimizations.ComputePasses : computePassesAreFaster(*this));
-    if (computePasses) impl_->computePasses = createComputePasses(*this);
+    // where this GPU runs them faster. A build without them (FXPORT_PASS_COMPUTE=OFF) has none,
+    // as a context without compute.
+    if constexpr (kComputePassesBuilt) {
+        const bool computePasses =
+            context_ && (optimizations.ComputePasses ? *optimizations.ComputePasses : computePassesAreFaster(*this));
+        if (computePasses) impl_->computePasses = createComputePasses(*this);
+    }
 }
 
 void GraphicsDevice::Reset(const fxport::PresentationParameters& parameters) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "device/device_impl.h"
+#include "device/optimization_passes.h"
 #include "fxport/xlate/compiled_effect.h"
 #include "fxport/graphics/render_target.h"
 
@@ -26,7 +27,7 @@ void GraphicsDevice::Impl::executeClear(const Rectangle& rect, unsigned options,
                                         int stencil) {
     if (options == 0) return;
     if (boundFramebuffer == 0) bindTargets();
-    options = holdDepthClear(rect, options, depth, stencil);  // a depth buffer not made yet (depth_storage.cpp)
+    if constexpr (kLazyDepthBuilt) options = holdDepthClear(rect, options, depth, stencil);  // a depth buffer not made yet (depth_storage.cpp)
     if (options == 0) return;
     noteWrittenTargets((options & kColor) != 0, (options & (kDepth | kStencil)) != 0, rect, true);
     clearStats.executed += channels(options);
@@ -79,7 +80,7 @@ void GraphicsDevice::Impl::discardContents(unsigned options) {
     const unsigned dropped = pendingClear.options & options;
     clearStats.discarded += channels(dropped);
     pendingClear.options &= ~dropped;
-    discardWaitingDepthClear(options, clearStats.discarded);
+    if constexpr (kLazyDepthBuilt) discardWaitingDepthClear(options, clearStats.discarded);
     if (boundFramebuffer == 0) bindTargets();
     const int colorTargets = (options & kColor) ? int(std::max<std::size_t>(1, targets.size())) : 0;
     backend->invalidateFramebuffer(colorTargets, (options & kDepth) != 0, (options & kStencil) != 0);  // boundFramebuffer
@@ -152,7 +153,7 @@ void GraphicsDevice::Impl::leaveBoundTargets() {
     // the target again clears it again.
     clearStats.dropped += channels(pendingClear.options);
     pendingClear.options = 0;
-    leaveDiscardedDepth();
+    if constexpr (kLazyDepthBuilt) leaveDiscardedDepth();
 }
 
 }  // namespace fxport
