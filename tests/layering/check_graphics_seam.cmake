@@ -20,8 +20,7 @@ set(glCallsLeft)  # rule 1: none left
 set(deviceImplLeft)  # rule 2: none left (effects: device/effect_programs.h; GL passes: device/compute_passes.h)
 set(effectImplLeft)  # rule 2: none left (the device tells effects through effect/effect_notices.h)
 set(glHeadersLeft)  # rule 2: none left (the core calls the compute passes through device/compute_passes.h)
-set(passesNotRemovable  # rule 5: pass sources always built (pending clears and the blend fold)
-  ${src}/device/passes/pending_clear.cpp)
+set(passesNotRemovable)  # rule 5: pass sources always built: none left
 set(glFreeInternal  # rule 4
   ${src}/device/backend.h ${src}/device/state_shadow.h ${src}/device/vertex_input.h ${src}/device/vertex_format.h ${src}/device/front_end_core.h
   ${src}/device/device_impl.h ${src}/device/impl_access.h ${src}/device/surface_formats.h ${src}/device/draw_hints.h

@@ -105,7 +105,7 @@ bool GraphicsDevice::Impl::foldMootDepthTest(const fxport::DepthStencilState& wa
 
 // A blend onto the zero clear it reads draws as a write (blendOverZeroClearIsWrite): drawBlend().
 void GraphicsDevice::Impl::foldBlendOverZeroClear() {
-    drawBlendIsWrite = blendOverZeroClearIsWrite();
+    if constexpr (kPendingClearsBuilt) drawBlendIsWrite = blendOverZeroClearIsWrite();
     if (!drawBlendIsWrite) return;
     drawWriteBlend = device.BlendState;
     drawWriteBlend.ColorSourceBlend = drawWriteBlend.AlphaSourceBlend = fxport::Blend::One;

@@ -136,10 +136,10 @@ GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters)
     impl_ = std::make_unique<Impl>(*this, std::move(backend));
     liveDevices().push_back(this);
     const DeviceOptimizations optimizations = parameters_.Optimizations.withEnvironment();
-    impl_->deferClears = optimizations.DeferClears;
+    impl_->deferClears = kPendingClearsBuilt && optimizations.DeferClears;  // left out of the build: off
     impl_->honourDiscards = optimizations.HonourDiscards;
     impl_->lazyDepthStorage = kLazyDepthBuilt && optimizations.LazyDepthStorage;  // left out of the build: off
-    impl_->dropCoveredClears = optimizations.DropCoveredClears;
+    impl_->dropCoveredClears = kPendingClearsBuilt && optimizations.DropCoveredClears;
 
     // The D3D conventions (docs/DESIGN.md): NDC z in [0,1], and window y from the top row so
     // render targets come out top-row-first.
@@ -446,9 +446,11 @@ void GraphicsDevice::Clear(ClearOptions options, Vector4 color, float depth, int
     // D3D9 clears the viewport rectangle, whatever the scissor, write masks and blend say; a clear of
     // the whole target may wait (pending_clear.cpp).
     bool wholeTarget = Viewport.X == 0 && Viewport.Y == 0 && Viewport.Width == d.targetWidth && Viewport.Height == d.targetHeight;
-    if (d.deferClears && wholeTarget) {
-        d.recordClear(bits, color, depth, stencil);
-        return;
+    if constexpr (kPendingClearsBuilt) {
+        if (d.deferClears && wholeTarget) {
+            d.recordClear(bits, color, depth, stencil);
+            return;
+        }
     }
     d.resolvePendingClear(~0u);
     d.executeClear(Rectangle(Viewport.X, Viewport.Y, Viewport.Width, Viewport.Height), bits, color, depth, stencil);

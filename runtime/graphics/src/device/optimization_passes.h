@@ -14,5 +14,8 @@ inline constexpr bool kComputePassesBuilt = FXPORT_PASS_COMPUTE != 0;
 // Lazy depth storage (device/passes/depth_storage.cpp): without it every depth/stencil buffer is
 // made with its target, as with DeviceOptimizations::LazyDepthStorage off.
 inline constexpr bool kLazyDepthBuilt = FXPORT_PASS_LAZY_DEPTH != 0;
+// Pending clears with their folds (device/passes/pending_clear.cpp): without them every clear is
+// executed as it comes and nothing is pending, as with DeferClears and DropCoveredClears off.
+inline constexpr bool kPendingClearsBuilt = FXPORT_PASS_PENDING_CLEARS != 0;
 
 }  // namespace fxport
