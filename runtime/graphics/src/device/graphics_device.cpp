@@ -444,7 +444,7 @@ void GraphicsDevice::Clear(ClearOptions options, Vector4 color, float depth, int
     unsigned bits = unsigned(options) & unsigned(ClearOptions::Target | ClearOptions::DepthBuffer | ClearOptions::Stencil);
     d.clearStats.requested += long((bits & 1u) != 0) + long((bits & 2u) != 0) + long((bits & 4u) != 0);
     // D3D9 clears the viewport rectangle, whatever the scissor, write masks and blend say; a clear of
-    // the whole target may wait (pending_clear.cpp).
+    // the whole target may wait (device/passes/pending_clear.cpp).
     bool wholeTarget = Viewport.X == 0 && Viewport.Y == 0 && Viewport.Width == d.targetWidth && Viewport.Height == d.targetHeight;
     if constexpr (kPendingClearsBuilt) {
         if (d.deferClears && wholeTarget) {
