@@ -6,7 +6,11 @@
 #   3. public headers (runtime/*/include) free of GL: no GL headers, types or constants, and no
 #      internal header;
 #   4. the GL-free internal headers (the backend seam, the state shadow, vertex-input matching,
-#      the front-end core) stay GL-free.
+#      the front-end core) stay GL-free;
+#   5. the optimisation passes are removable: every source under a passes/ folder is added by
+#      runtime/graphics/CMakeLists.txt only inside its if(FXPORT_PASS_<NAME>), no file outside a
+#      passes/ folder includes a header from one, and only device/optimization_passes.h reads the
+#      FXPORT_PASS_ macros (the core reaches a pass under `if constexpr` on its flag there).
 # Both hold everywhere: the folders meet through small GL-free headers instead (device/effect_programs.h,
 # device/compute_passes.h, effect/effect_notices.h; docs/DESIGN.md). The lists of files excepted
 # below are empty and may only stay so: a listed file that no longer breaks its rule fails the test too.
@@ -16,11 +20,13 @@ set(glCallsLeft)  # rule 1: none left
 set(deviceImplLeft)  # rule 2: none left (effects: device/effect_programs.h; GL passes: device/compute_passes.h)
 set(effectImplLeft)  # rule 2: none left (the device tells effects through effect/effect_notices.h)
 set(glHeadersLeft)  # rule 2: none left (the core calls the compute passes through device/compute_passes.h)
+set(passesNotRemovable)  # rule 5: pass sources always built: none left
 set(glFreeInternal  # rule 4
   ${src}/device/backend.h ${src}/device/state_shadow.h ${src}/device/vertex_input.h ${src}/device/vertex_format.h ${src}/device/front_end_core.h
   ${src}/device/device_impl.h ${src}/device/impl_access.h ${src}/device/surface_formats.h ${src}/device/draw_hints.h
   ${src}/diagnostics/fragment_tally.h ${src}/device/gpu_query.h ${src}/device/device_probes.h
-  ${src}/device/shader_program.h ${src}/device/pass_emulation.h ${src}/effect/effect_notices.h ${src}/device/compute_passes.h ${src}/device/effect_programs.h)
+  ${src}/device/shader_program.h ${src}/device/pass_emulation.h ${src}/effect/effect_notices.h ${src}/device/compute_passes.h ${src}/device/effect_programs.h
+  ${src}/device/optimization_passes.h)
 
 set(problems "")
 set(stillListed "")
@@ -89,6 +95,34 @@ foreach(where ${sources})
     if(code MATCHES "[^A-Za-z0-9_](GL[a-z]+|GL_[A-Z0-9_]+)[^A-Za-z0-9_]")
       string(APPEND problems "${where}: a public or GL-free header names a GL type or constant (${CMAKE_MATCH_1})\n")
     endif()
+  endif()
+endforeach()
+
+# 5. removable passes: the sources each if(FXPORT_PASS_<NAME>) ... endif() of the library adds
+file(READ ${SOURCE_DIR}/runtime/graphics/CMakeLists.txt graphicsLists)
+string(REGEX MATCHALL "\nif\\(FXPORT_PASS_[A-Z_]+\\)[^\n]*\n([^e][^\n]*\n)*endif" passBlocks "${graphicsLists}")
+set(removable "")
+foreach(block ${passBlocks})
+  string(REGEX MATCHALL "src/[a-z_/]+\\.cpp" added "${block}")
+  list(APPEND removable ${added})
+endforeach()
+foreach(where ${sources})
+  if(where MATCHES "^${src}/[a-z]+/passes/.*\\.cpp$")
+    string(REPLACE "runtime/graphics/" "" inLists "${where}")
+    list(FIND removable "${inLists}" found)
+    set(broken FALSE)
+    if(found EQUAL -1)
+      set(broken TRUE)
+    endif()
+    judge(${where} broken passesNotRemovable "added to the library outside an if(FXPORT_PASS_<NAME>) (a pass must be removable by its build option)")
+  endif()
+  file(READ ${SOURCE_DIR}/${where} text)
+  string(REGEX REPLACE "//[^\n]*" "" code "${text}")
+  if(NOT where MATCHES "^${src}/[a-z]+/passes/" AND code MATCHES "#[ \t]*include[ \t]*\"[a-z]+/passes/")
+    string(APPEND problems "${where}: includes a pass's header (the core reaches a pass through its interface: device/compute_passes.h, device_impl.h)\n")
+  endif()
+  if(NOT where STREQUAL "${src}/device/optimization_passes.h" AND code MATCHES "FXPORT_PASS_")
+    string(APPEND problems "${where}: reads an FXPORT_PASS_ macro (only device/optimization_passes.h does; use its k...Built flags)\n")
   endif()
 endforeach()
 

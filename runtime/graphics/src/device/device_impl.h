@@ -223,9 +223,17 @@ struct GraphicsDevice::Impl {
     void applyShaders();
 
     // Everything a draw needs, compared against the shadow. `what` names the draw call for errors.
+    // A list of steps (draw_state.cpp): checkDrawable, the targets, applyClearPasses, applyBlend,
+    // the depth/stencil, rasterizer, viewport and scissor state, applyShaders, applyTextures,
+    // applyStorage, applyPassEmulation.
     void flush(const char* what);
+    void checkDrawable(const char* what) const;  // a pass applied, tessellation stages agree with the draw
+    const fxport::DepthStencilState& applyClearPasses();  // returns the depth/stencil state the draw has
+    void applyBlend();
+    void applyPassEmulation();
 
-    // --- clears of the bound targets not yet sent to the backend (pending_clear.cpp). A clear of the whole
+    // --- clears of the bound targets: executed, or pending (device/clears.cpp; recorded only by the pass
+    // device/passes/pending_clear.cpp, FXPORT_PASS_PENDING_CLEARS, with the folds that know it). A clear of the whole
     // target (the one SetRenderTargets does for DiscardContents, and Clear over a full viewport) is
     // recorded per channel, a later clear of the same channel replaces it, and it reaches the backend when
     // something needs that channel: colour before any draw or read-back of a bound target, depth and
@@ -243,20 +251,22 @@ struct GraphicsDevice::Impl {
     bool dropCoveredClears = true;  // DeviceOptimizations::DropCoveredClears and $FXPORT_DROP_COVERED_CLEARS
     void discardContents(unsigned options);               // GraphicsDevice::DiscardContents
     // SpriteBatch, before drawing a batch with a sprite whose rectangle covers the whole viewport:
-    // drops the pending colour clear if the draw must write every pixel (pending_clear.cpp).
+    // drops the pending colour clear if the draw must write every pixel (passes/pending_clear.cpp).
     void dropColorClearUnderCoveringSprite(const ShaderProgram* spriteVertexShader);
     ClearStatistics clearStats;
     // DeviceOptimizations::ComputePasses and $FXPORT_COMPUTE_PASSES: null when off (compute_passes.h).
     std::shared_ptr<ComputePasses> computePasses;
     void executeClear(const Rectangle& rect, unsigned options, const Vector4& color, float depth, int stencil);
-    void recordClear(unsigned options, const Vector4& color, float depth, int stencil);
+    void recordClear(unsigned options, const Vector4& color, float depth, int stencil);  // the pass's
     void resolvePendingClear(unsigned options);           // executes the pending part within `options`
     void resolvePendingClearBeforeDraw(const fxport::DepthStencilState& state);
     void resolvePendingClearBeforeRead(const Texture* texture);
     void leaveBoundTargets();                               // before SetRenderTargets changes them
     fxport::RenderTargetUsage boundUsage() const;           // of the bound targets (the first one's, or the back buffer's)
 
-    // --- depth/stencil storage made when a draw first needs it (depth_storage.cpp)
+    // --- depth/stencil storage (device/depth_buffers.cpp), made when a draw first needs it by the pass
+    // device/passes/depth_storage.cpp (FXPORT_PASS_LAZY_DEPTH: makeDepthStorageFor, holdDepthClear,
+    // discardWaitingDepthClear, leaveDiscardedDepth)
     bool lazyDepthStorage = true;  // DeviceOptimizations::LazyDepthStorage and $FXPORT_LAZY_DEPTH
     DepthStorageStatistics depthStats;
     void adoptDepthStorage(DepthStorage& storage);    // a target made with it: counted; made now unless lazy
@@ -273,7 +283,7 @@ struct GraphicsDevice::Impl {
     bool foldMootDepthTest(const fxport::DepthStencilState& wanted);  // flush: sets drawDepthTestMoot; true: draw with the test off
     // A blend whose every destination is the zero clear executed for this draw, on unsigned-
     // normalized targets, with source factor One and Add, Subtract or Max: src * 1 + 0 * factor is
-    // src (factors are finite there), so the draw writes (pending_clear.cpp, blendOverZeroClearIsWrite).
+    // src (factors are finite there), so the draw writes (passes/pending_clear.cpp, blendOverZeroClearIsWrite).
     // flush decides it; compute_pass.cpp reads drawBlend, the blend the draw has.
     bool blendOverZeroClearIsWrite() const;
     bool drawBlendIsWrite = false;

@@ -1,10 +1,11 @@
 // The draw hints (draw_hints.h), passed on to the optimisations that use them: the texel-copy
 // reduction of compute passes (gl/passes/texel_copies.cpp) and the clear folding
-// (device/pending_clear.cpp).
+// (device/passes/pending_clear.cpp); each only in a build with it (device/optimization_passes.h).
 #include "device/draw_hints.h"
 
 #include "device/compute_passes.h"
 #include "device/device_impl.h"
+#include "device/optimization_passes.h"
 
 namespace fxport::hints {
 
@@ -18,7 +19,8 @@ bool tryTexelCopies(GraphicsDevice& device, const Texture2D& texture, const std:
 }
 
 void nextDrawCoversViewport(GraphicsDevice& device, const void* vertexShader) {
-    deviceImpl(device).dropColorClearUnderCoveringSprite(static_cast<const ShaderProgram*>(vertexShader));
+    if constexpr (kPendingClearsBuilt)
+        deviceImpl(device).dropColorClearUnderCoveringSprite(static_cast<const ShaderProgram*>(vertexShader));
 }
 
 }  // namespace fxport::hints

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "device/device_impl.h"
+#include "device/optimization_passes.h"
 #include "device/vertex_input.h"
 #include "effect/effect_notices.h"
 #include "fxport/graphics/errors.h"
@@ -35,35 +36,60 @@ std::string textureName(const Texture* t) { return t->Name.empty() ? std::string
 }  // namespace
 
 void GraphicsDevice::Impl::flush(const char* what) {
-    if (!passApplied || !shaders[0] || !shaders[1])
-        throw InvalidOperation(std::string(what) +
-                               ": no effect pass is applied (call effect.CurrentTechnique->Passes[i].Apply() first)");
-    checkTessellation(patchDraw, what);
+    checkDrawable(what);
     syncFixedFunction();
     storageBarrier();  // what an earlier dispatch or draw wrote through images or SSBOs, before this draw uses it
     if (boundFramebuffer == 0) bindTargets();
-    makeDepthStorageFor(device.DepthStencilState);  // a buffer nothing needed until now (depth_storage.cpp)
-    const fxport::DepthStencilState& wanted = device.DepthStencilState;
-    const bool testOff = foldMootDepthTest(wanted);
-    foldBlendOverZeroClear();  // decided before the clear is executed (it is pending until then), applied after
-    resolvePendingClearBeforeDraw(testOff ? fxport::DepthStencilState::None : wanted);
-    shadow.setBlend(blendForPixelShader(drawBlend(), shaders[1]->shader->outputTargets));
-    if (trackingBoundTargets && drawBlend().blendingEnabled()) blendedSinceMark = true;
+    const fxport::DepthStencilState& depthStencil = applyClearPasses();
+    applyBlend();
     noteDrawnTargets();
-    shadow.setDepthStencil(testOff ? fxport::DepthStencilState::None : wanted);
+    shadow.setDepthStencil(depthStencil);
     shadow.setRasterizer(device.RasterizerState);
     applyViewport(device.Viewport);
     shadow.setScissor(device.ScissorRectangle, moreScissors);
     applyShaders();
     applyTextures();
     if (applyStorage(shaders.data(), shaders.size(), what)) storageDirty = true;  // the draw writes: barrier before what follows
+    applyPassEmulation();
+    tallyDraw();
+    shadow.settle();
+}
+
+void GraphicsDevice::Impl::checkDrawable(const char* what) const {
+    if (!passApplied || !shaders[0] || !shaders[1])
+        throw InvalidOperation(std::string(what) +
+                               ": no effect pass is applied (call effect.CurrentTechnique->Passes[i].Apply() first)");
+    checkTessellation(patchDraw, what);
+}
+
+// The passes that know the bound targets' pending clear decide what the draw needs of it, in this
+// order: the depth buffer made if this draw is the first to test it (lazy depth storage), a depth
+// test that cannot fail against the known clear turned off, a blend onto a zero clear turned into
+// a write (decided while the clear is still pending), then the clear executed for the channels the
+// draw uses. Returns the depth/stencil state the draw has.
+const fxport::DepthStencilState& GraphicsDevice::Impl::applyClearPasses() {
+    const fxport::DepthStencilState& wanted = device.DepthStencilState;
+    if constexpr (kLazyDepthBuilt) makeDepthStorageFor(wanted);  // a buffer nothing needed until now (depth_storage.cpp)
+    const fxport::DepthStencilState& drawn = foldMootDepthTest(wanted) ? fxport::DepthStencilState::None : wanted;
+    foldBlendOverZeroClear();
+    resolvePendingClearBeforeDraw(drawn);
+    return drawn;
+}
+
+// The draw's blend (drawBlend: the device's, or its fold into a write), colour writes masked past
+// the pixel shader's outputs.
+void GraphicsDevice::Impl::applyBlend() {
+    shadow.setBlend(blendForPixelShader(drawBlend(), shaders[1]->shader->outputTargets));
+    if (trackingBoundTargets && drawBlend().blendingEnabled()) blendedSinceMark = true;
+}
+
+// The D3D9 states the pass emulates beside the shaders: sRGB write, clip planes, point size.
+void GraphicsDevice::Impl::applyPassEmulation() {
     shadow.setSrgbWrite(emulation.srgbWrite);
     const int shaderPlanes = clipPlanesOfShaders();  // a shader's own SV_ClipDistance, else D3D9's user planes
     shadow.setClipPlanes(shaderPlanes > 0 ? shaderPlanes : userClipPlanes());
     applyPointSize(*shaders[shaders[2] ? 2 : shaders[std::size_t(kDomainStage)] ? kDomainStage : 0]);
     if (emulation.srgbWrite) reportUnencodedSrgbWrite();
-    tallyDraw();
-    shadow.settle();
 }
 
 // A depth test that cannot fail against the known clear and writes nothing (DepthRead against
@@ -79,7 +105,7 @@ bool GraphicsDevice::Impl::foldMootDepthTest(const fxport::DepthStencilState& wa
 
 // A blend onto the zero clear it reads draws as a write (blendOverZeroClearIsWrite): drawBlend().
 void GraphicsDevice::Impl::foldBlendOverZeroClear() {
-    drawBlendIsWrite = blendOverZeroClearIsWrite();
+    if constexpr (kPendingClearsBuilt) drawBlendIsWrite = blendOverZeroClearIsWrite();
     if (!drawBlendIsWrite) return;
     drawWriteBlend = device.BlendState;
     drawWriteBlend.ColorSourceBlend = drawWriteBlend.AlphaSourceBlend = fxport::Blend::One;

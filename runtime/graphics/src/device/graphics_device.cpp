@@ -6,6 +6,7 @@
 
 #include "device/compute_passes.h"
 #include "device/device_impl.h"
+#include "device/optimization_passes.h"
 #include "fxport/graphics/effect.h"
 #include "fxport/graphics/errors.h"
 #include "fxport/graphics/gpu_limits.h"
@@ -135,10 +136,10 @@ GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters)
     impl_ = std::make_unique<Impl>(*this, std::move(backend));
     liveDevices().push_back(this);
     const DeviceOptimizations optimizations = parameters_.Optimizations.withEnvironment();
-    impl_->deferClears = optimizations.DeferClears;
+    impl_->deferClears = kPendingClearsBuilt && optimizations.DeferClears;  // left out of the build: off
     impl_->honourDiscards = optimizations.HonourDiscards;
-    impl_->lazyDepthStorage = optimizations.LazyDepthStorage;
-    impl_->dropCoveredClears = optimizations.DropCoveredClears;
+    impl_->lazyDepthStorage = kLazyDepthBuilt && optimizations.LazyDepthStorage;  // left out of the build: off
+    impl_->dropCoveredClears = kPendingClearsBuilt && optimizations.DropCoveredClears;
 
     // The D3D conventions (docs/DESIGN.md): NDC z in [0,1], and window y from the top row so
     // render targets come out top-row-first.
@@ -153,10 +154,13 @@ GraphicsDevice::GraphicsDevice(const fxport::PresentationParameters& parameters)
     ScissorRectangle = Rectangle(0, 0, parameters_.BackBufferWidth, parameters_.BackBufferHeight);
 
     // Compute passes are the GL backend's own (gl/passes/) and need its context; unset, they run
-    // where this GPU runs them faster.
-    const bool computePasses =
-        context_ && (optimizations.ComputePasses ? *optimizations.ComputePasses : computePassesAreFaster(*this));
-    if (computePasses) impl_->computePasses = createComputePasses(*this);
+    // where this GPU runs them faster. A build without them (FXPORT_PASS_COMPUTE=OFF) has none,
+    // as a context without compute.
+    if constexpr (kComputePassesBuilt) {
+        const bool computePasses =
+            context_ && (optimizations.ComputePasses ? *optimizations.ComputePasses : computePassesAreFaster(*this));
+        if (computePasses) impl_->computePasses = createComputePasses(*this);
+    }
 }
 
 void GraphicsDevice::Reset(const fxport::PresentationParameters& parameters) {
@@ -440,11 +444,13 @@ void GraphicsDevice::Clear(ClearOptions options, Vector4 color, float depth, int
     unsigned bits = unsigned(options) & unsigned(ClearOptions::Target | ClearOptions::DepthBuffer | ClearOptions::Stencil);
     d.clearStats.requested += long((bits & 1u) != 0) + long((bits & 2u) != 0) + long((bits & 4u) != 0);
     // D3D9 clears the viewport rectangle, whatever the scissor, write masks and blend say; a clear of
-    // the whole target may wait (pending_clear.cpp).
+    // the whole target may wait (device/passes/pending_clear.cpp).
     bool wholeTarget = Viewport.X == 0 && Viewport.Y == 0 && Viewport.Width == d.targetWidth && Viewport.Height == d.targetHeight;
-    if (d.deferClears && wholeTarget) {
-        d.recordClear(bits, color, depth, stencil);
-        return;
+    if constexpr (kPendingClearsBuilt) {
+        if (d.deferClears && wholeTarget) {
+            d.recordClear(bits, color, depth, stencil);
+            return;
+        }
     }
     d.resolvePendingClear(~0u);
     d.executeClear(Rectangle(Viewport.X, Viewport.Y, Viewport.Width, Viewport.Height), bits, color, depth, stencil);

@@ -6,6 +6,10 @@
 // pixels are the same as executing every clear at once (DeviceOptimizations::DeferClears=false
 // does that; tests compare the two). A depth/stencil buffer that no draw has needed yet does not
 // exist (LazyDepthStorage): a clear of it waits on its target instead (depth_storage.cpp).
+// This file is the pass (FXPORT_PASS_PENDING_CLEARS): recording a clear, and the two folds that
+// know it (a covering sprite drops it, a blend onto its zero colour is a write). Executing what is
+// pending when something needs it is the core's (device/clears.cpp): without the pass nothing is
+// ever pending, as with DeferClears and DropCoveredClears off.
 #include <algorithm>
 #include <vector>
 
@@ -22,67 +26,12 @@ constexpr unsigned kStencil = unsigned(ClearOptions::Stencil);
 long channels(unsigned bits) { return long((bits & kColor) != 0) + long((bits & kDepth) != 0) + long((bits & kStencil) != 0); }
 }  // namespace
 
-void GraphicsDevice::Impl::executeClear(const Rectangle& rect, unsigned options, const Vector4& color, float depth,
-                                        int stencil) {
-    if (options == 0) return;
-    if (boundFramebuffer == 0) bindTargets();
-    options = holdDepthClear(rect, options, depth, stencil);  // a depth buffer not made yet (depth_storage.cpp)
-    if (options == 0) return;
-    noteWrittenTargets((options & kColor) != 0, (options & (kDepth | kStencil)) != 0, rect, true);
-    clearStats.executed += channels(options);
-    const int colorTargets = int(std::max<std::size_t>(1, targets.size()));
-    backend->clearFramebuffer(boundFramebuffer, rect, colorTargets, (options & kColor) != 0, color, (options & kDepth) != 0,
-                              (options & kStencil) != 0, depth, stencil);
-    // Put back what the shadow says the backend has.
-    shadow.reapply();
-}
-
 void GraphicsDevice::Impl::recordClear(unsigned options, const Vector4& color, float depth, int stencil) {
     clearStats.replaced += channels(pendingClear.options & options);
     pendingClear.options |= options;
     if (options & kColor) pendingClear.color = color;
     if (options & kDepth) pendingClear.depth = depth;
     if (options & kStencil) pendingClear.stencil = stencil;
-}
-
-void GraphicsDevice::Impl::resolvePendingClear(unsigned options) {
-    unsigned now = pendingClear.options & options;
-    if (now == 0) return;
-    pendingClear.options &= ~now;
-    executeClear(Rectangle(0, 0, targetWidth, targetHeight), now, pendingClear.color, pendingClear.depth,
-                 pendingClear.stencil);
-}
-
-void GraphicsDevice::Impl::resolvePendingClearBeforeDraw(const fxport::DepthStencilState& state) {
-    if (pendingClear.options == 0) return;
-    // A depth test reads the depth buffer, a stencil test the stencil buffer; writes need a test on
-    // (D3D writes depth only where the depth test is enabled). D24S8 clears both in one call, so a
-    // draw that needs either resolves both.
-    unsigned needed = kColor;
-    if (state.DepthBufferEnable || state.StencilEnable) needed |= kDepth | kStencil;
-    resolvePendingClear(needed);
-}
-
-void GraphicsDevice::Impl::resolvePendingClearBeforeRead(const Texture* texture) {
-    storageBarrier();  // a read-back after a shader wrote the texture as an image (storage_bindings.cpp)
-    if (!(pendingClear.options & kColor)) return;
-    bool bound = targets.empty() ? texture == backBuffer.get()
-                                 : std::any_of(targets.begin(), targets.end(),
-                                               [&](const RenderTargetBinding& b) { return b.RenderTarget == texture; });
-    if (bound) resolvePendingClear(kColor);
-}
-
-void GraphicsDevice::DiscardContents(ClearOptions options) { impl_->discardContents(unsigned(options)); }
-
-void GraphicsDevice::Impl::discardContents(unsigned options) {
-    if (!honourDiscards) return;
-    const unsigned dropped = pendingClear.options & options;
-    clearStats.discarded += channels(dropped);
-    pendingClear.options &= ~dropped;
-    discardWaitingDepthClear(options, clearStats.discarded);
-    if (boundFramebuffer == 0) bindTargets();
-    const int colorTargets = (options & kColor) ? int(std::max<std::size_t>(1, targets.size())) : 0;
-    backend->invalidateFramebuffer(colorTargets, (options & kDepth) != 0, (options & kStencil) != 0);  // boundFramebuffer
 }
 
 // The sprite's rectangle covers the viewport (SpriteBatch checked: an unrotated, unflipped sprite
@@ -140,19 +89,6 @@ bool GraphicsDevice::Impl::blendOverZeroClearIsWrite() const {
     if (targets.empty()) return unsignedNormalized(backBuffer->Format());
     return std::all_of(targets.begin(), targets.end(),
                        [&](const RenderTargetBinding& b) { return unsignedNormalized(b.RenderTarget->Format()); });
-}
-
-void GraphicsDevice::Impl::leaveBoundTargets() {
-    resolvePendingClear(kColor);  // a render target is read as a texture after it is unbound
-    if (boundUsage() != fxport::RenderTargetUsage::DiscardContents) {
-        resolvePendingClear(~0u);
-        return;
-    }
-    // Nothing tested this depth/stencil buffer since the clear, nothing can read it, and binding
-    // the target again clears it again.
-    clearStats.dropped += channels(pendingClear.options);
-    pendingClear.options = 0;
-    leaveDiscardedDepth();
 }
 
 }  // namespace fxport
