@@ -141,3 +141,21 @@ TEST(RealworldEighthWave, SignIsAnInt) {
     EXPECT_EQ(glsl.find("& 1.0"), std::string::npos) << glsl;
     EXPECT_EQ(glsl.find("floatBitsToInt(sign"), std::string::npos) << glsl;
 }
+
+// Two blocks of one function each declare an array of the same name and size (Wicked Engine's
+// depth-of-field post-filter: `float p[9]` then `float3 p[9]`; Luna's GS subdivision: `v[12]`, then
+// `v[6]` ...). The deferral of out-of-range literal indices read the second declaration's size `9`
+// as an index past the first array's end and wrapped it in a call: glslang refused the declaration.
+TEST(RealworldEighthWave, ArraysOfOneNameInTwoBlocksKeepTheirSizes) {
+    const std::string glsl = glslOfLoose(
+        "RWTexture2D<float4> output : register(u0);\n"
+        "[numthreads(8, 8, 1)]\n"
+        "void main(uint3 id : SV_DispatchThreadID) {\n"
+        "    float alpha = 0;\n"
+        "    { float p[9]; p[0] = id.x; p[8] = id.y; alpha = p[4] + p[8]; }\n"
+        "    { float3 p[9]; p[0] = id.x; p[8] = id.y; alpha += p[4].x + p[8].y; }\n"
+        "    output[id.xy] = alpha;\n"
+        "}\n",
+        "cs_5_0");
+    EXPECT_NE(glsl.find("void main()"), std::string::npos) << glsl;
+}

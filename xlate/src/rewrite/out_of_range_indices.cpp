@@ -16,6 +16,9 @@ std::vector<TextEdit> outOfRangeIndicesDeferred(const EffectSyntax& syntax) {
         for (size_t i = f.body.begin; i + 3 < f.body.end; ++i) {  // the body starts after its `{`
             // `name[N]` with the first index of name's first dimension a literal past its end.
             if (!t[i].isIdent() || t[i - 1].is(".") || !t[i + 1].is("[") || t[i + 2].kind != Token::Kind::Number || !t[i + 3].is("]")) continue;
+            // `T name[N]` declares (another block may have declared `name` before with N elements,
+            // and declaredVariable does not see block scopes: Wicked Engine's and Luna's shaders).
+            if (t[i - 1].isIdent() && !t[i - 1].is("return") && !t[i - 1].is("else")) continue;
             const std::string& n = t[i + 2].text;
             if (n.find_first_not_of("0123456789") != std::string::npos) continue;  // 0x.., 1.5, 3u: left to glslang
             auto v = declaredVariable(syntax, f, t[i].text, i);
