@@ -27,7 +27,7 @@ ComPtr<ID3D11Texture2D> target(Device& d, DXGI_FORMAT format) {
     return t;
 }
 
-ComPtr<ID3D11RenderTargetView> viewAs(Device& d, ID3D11Texture2D* t, DXGI_FORMAT format) {
+ComPtr<ID3D11RenderTargetView> targetViewAs(Device& d, ID3D11Texture2D* t, DXGI_FORMAT format) {
     D3D11_RENDER_TARGET_VIEW_DESC desc;
     desc.Format = format;
     desc.ViewDimension = D3D11_RTV_DIMENSION_TEXTURE2D;
@@ -89,7 +89,7 @@ TEST(D3D11SrgbTargets, AnSrgbViewOfATypelessTextureEncodesAndAUnormViewDoesNot) 
     Device d;
     ComPtr<ID3D11Texture2D> t = target(d, DXGI_FORMAT_R8G8B8A8_TYPELESS);
     ASSERT_TRUE(t);
-    ComPtr<ID3D11RenderTargetView> srgb = viewAs(d, t.Get(), DXGI_FORMAT_R8G8B8A8_UNORM_SRGB), unorm = viewAs(d, t.Get(), DXGI_FORMAT_R8G8B8A8_UNORM);
+    ComPtr<ID3D11RenderTargetView> srgb = targetViewAs(d, t.Get(), DXGI_FORMAT_R8G8B8A8_UNORM_SRGB), unorm = targetViewAs(d, t.Get(), DXGI_FORMAT_R8G8B8A8_UNORM);
     ASSERT_TRUE(srgb && unorm);
     expectEncoded(d, t.Get(), srgb.Get(), "R8G8B8A8_UNORM_SRGB view");
     const float clear[4] = {0.5f, 0.25f, 1.0f, 0.5f};

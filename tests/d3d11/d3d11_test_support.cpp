@@ -80,6 +80,29 @@ ComPtr<ID3D11Texture2D> drawTriangleToRgba8(Device& d, ID3DBlob* vsCode, ID3DBlo
     return target;
 }
 
+ComPtr<ID3D11Texture2D> makeFormatTexture(Device& d, DXGI_FORMAT format, UINT width, UINT height, UINT bind, const void* texels, UINT rowPitch) {
+    D3D11_TEXTURE2D_DESC desc;
+    desc.Width = width;
+    desc.Height = height;
+    desc.MipLevels = desc.ArraySize = 1;
+    desc.Format = format;
+    desc.BindFlags = bind;
+    D3D11_SUBRESOURCE_DATA data{texels, rowPitch, 0};
+    ComPtr<ID3D11Texture2D> t;
+    EXPECT_EQ(d.device->CreateTexture2D(&desc, texels ? &data : nullptr, t.GetAddressOf()), S_OK) << lastError();
+    return t;
+}
+
+ComPtr<ID3D11ShaderResourceView> viewAs(Device& d, ID3D11Texture2D* texture, DXGI_FORMAT format) {
+    D3D11_SHADER_RESOURCE_VIEW_DESC desc;
+    desc.Format = format;
+    desc.ViewDimension = D3D11_SRV_DIMENSION_TEXTURE2D;
+    desc.Texture2D.MipLevels = 1;
+    ComPtr<ID3D11ShaderResourceView> view;
+    EXPECT_EQ(d.device->CreateShaderResourceView(texture, &desc, view.GetAddressOf()), S_OK) << lastError();
+    return view;
+}
+
 std::vector<std::uint8_t> readTexelBytes(Device& d, ID3D11Texture2D* texture, std::size_t texelBytes) {
     D3D11_TEXTURE2D_DESC desc;
     texture->GetDesc(&desc);

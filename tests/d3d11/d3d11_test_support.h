@@ -77,6 +77,11 @@ std::vector<T> readBuffer(Device& d, ID3D11Buffer* buffer) {
 // A colour texture: RGBA8, `bind` flags, optional texels.
 ComPtr<ID3D11Texture2D> makeTexture(Device& d, UINT width, UINT height, UINT bind, const std::vector<std::uint32_t>* texels = nullptr);
 
+// A 1-level 2D texture of `format` with `bind` flags, filled from `texels` (rows `rowPitch` bytes apart) if given.
+ComPtr<ID3D11Texture2D> makeFormatTexture(Device& d, DXGI_FORMAT format, UINT width, UINT height, UINT bind, const void* texels = nullptr,
+                                          UINT rowPitch = 0);
+// A TEXTURE2D shader-resource view of `texture`'s level 0 in `format` (a member of its typeless family).
+ComPtr<ID3D11ShaderResourceView> viewAs(Device& d, ID3D11Texture2D* texture, DXGI_FORMAT format);
 // The message GetLastErrorMessage() holds, for EXPECT_THAT-style checks.
 std::string lastError();
 

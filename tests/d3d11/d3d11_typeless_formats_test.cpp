@@ -14,30 +14,6 @@ using Texel = std::array<float, 4>;
 
 float srgbToLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
 
-ComPtr<ID3D11Texture2D> makeTexture2D(Device& d, DXGI_FORMAT format, UINT width, UINT height, const void* texels, UINT rowPitch,
-                                      UINT bind = D3D11_BIND_SHADER_RESOURCE) {
-    D3D11_TEXTURE2D_DESC desc;
-    desc.Width = width;
-    desc.Height = height;
-    desc.MipLevels = desc.ArraySize = 1;
-    desc.Format = format;
-    desc.BindFlags = bind;
-    D3D11_SUBRESOURCE_DATA data{texels, rowPitch, 0};
-    ComPtr<ID3D11Texture2D> t;
-    EXPECT_EQ(d.device->CreateTexture2D(&desc, texels ? &data : nullptr, t.GetAddressOf()), S_OK) << lastError();
-    return t;
-}
-
-ComPtr<ID3D11ShaderResourceView> viewAs(Device& d, ID3D11Texture2D* texture, DXGI_FORMAT format) {
-    D3D11_SHADER_RESOURCE_VIEW_DESC desc;
-    desc.Format = format;
-    desc.ViewDimension = D3D11_SRV_DIMENSION_TEXTURE2D;
-    desc.Texture2D.MipLevels = 1;
-    ComPtr<ID3D11ShaderResourceView> view;
-    EXPECT_EQ(d.device->CreateShaderResourceView(texture, &desc, view.GetAddressOf()), S_OK) << lastError();
-    return view;
-}
-
 void expectTexels(const std::vector<Texel>& got, const std::vector<Texel>& want, float tolerance, const char* what) {
     ASSERT_EQ(got.size(), want.size()) << what;
     for (std::size_t i = 0; i < got.size(); ++i)
@@ -57,7 +33,7 @@ std::vector<Texel> bgrxTexels(bool srgb) {
 
 TEST(D3D11TypelessFormats, B8G8R8X8ReadsAlphaAsOne) {
     Device d;
-    ComPtr<ID3D11Texture2D> t = makeTexture2D(d, DXGI_FORMAT_B8G8R8X8_UNORM, 2, 2, kBgrx, 8);
+    ComPtr<ID3D11Texture2D> t = makeFormatTexture(d, DXGI_FORMAT_B8G8R8X8_UNORM, 2, 2, D3D11_BIND_SHADER_RESOURCE, kBgrx, 8);
     ComPtr<ID3D11ShaderResourceView> view;
     ASSERT_EQ(d.device->CreateShaderResourceView(t.Get(), nullptr, view.GetAddressOf()), S_OK) << lastError();
     expectTexels(drawWithTexture(d, kTexelLoadShader, view.Get(), 2, 2), bgrxTexels(false), 0.5f / 255.0f, "B8G8R8X8_UNORM");
@@ -65,7 +41,7 @@ TEST(D3D11TypelessFormats, B8G8R8X8ReadsAlphaAsOne) {
 
 TEST(D3D11TypelessFormats, B8G8R8X8SrgbDecodes) {
     Device d;
-    ComPtr<ID3D11Texture2D> t = makeTexture2D(d, DXGI_FORMAT_B8G8R8X8_UNORM_SRGB, 2, 2, kBgrx, 8);
+    ComPtr<ID3D11Texture2D> t = makeFormatTexture(d, DXGI_FORMAT_B8G8R8X8_UNORM_SRGB, 2, 2, D3D11_BIND_SHADER_RESOURCE, kBgrx, 8);
     ComPtr<ID3D11ShaderResourceView> view;
     ASSERT_EQ(d.device->CreateShaderResourceView(t.Get(), nullptr, view.GetAddressOf()), S_OK) << lastError();
     expectTexels(drawWithTexture(d, kTexelLoadShader, view.Get(), 2, 2), bgrxTexels(true), 2e-3f, "B8G8R8X8_UNORM_SRGB");
@@ -73,7 +49,7 @@ TEST(D3D11TypelessFormats, B8G8R8X8SrgbDecodes) {
 
 TEST(D3D11TypelessFormats, B8G8R8X8TypelessIsReadAsUnormAndSrgb) {
     Device d;
-    ComPtr<ID3D11Texture2D> t = makeTexture2D(d, DXGI_FORMAT_B8G8R8X8_TYPELESS, 2, 2, kBgrx, 8);
+    ComPtr<ID3D11Texture2D> t = makeFormatTexture(d, DXGI_FORMAT_B8G8R8X8_TYPELESS, 2, 2, D3D11_BIND_SHADER_RESOURCE, kBgrx, 8);
     ASSERT_TRUE(t);
     ComPtr<ID3D11ShaderResourceView> linear = viewAs(d, t.Get(), DXGI_FORMAT_B8G8R8X8_UNORM);
     ComPtr<ID3D11ShaderResourceView> srgb = viewAs(d, t.Get(), DXGI_FORMAT_B8G8R8X8_UNORM_SRGB);
@@ -85,7 +61,7 @@ TEST(D3D11TypelessFormats, B8G8R8X8TypelessIsReadAsUnormAndSrgb) {
 TEST(D3D11TypelessFormats, B8G8R8X8RenderTargetBlendsWithDestinationAlphaOne) {
     // Destination alpha of an X format is 1: src * DEST_ALPHA keeps the source whole.
     Device d;
-    ComPtr<ID3D11Texture2D> target = makeTexture2D(d, DXGI_FORMAT_B8G8R8X8_UNORM, 2, 2, nullptr, 0, D3D11_BIND_RENDER_TARGET);
+    ComPtr<ID3D11Texture2D> target = makeFormatTexture(d, DXGI_FORMAT_B8G8R8X8_UNORM, 2, 2, D3D11_BIND_RENDER_TARGET, nullptr, 0);
     ComPtr<ID3D11RenderTargetView> rtv;
     ASSERT_EQ(d.device->CreateRenderTargetView(target.Get(), nullptr, rtv.GetAddressOf()), S_OK) << lastError();
     const float clear[4] = {0, 0, 0, 0};  // alpha 0 would be stored by a format with alpha
@@ -131,7 +107,7 @@ float4 ps() : SV_Target { return float4(0.2, 0.4, 0.6, 0.5); }
 TEST(D3D11TypelessFormats, R8G8B8A8TypelessIsReadAsUnormSrgbAndSnorm) {
     Device d;
     const std::uint8_t rgba[8] = {0x20, 0x90, 0xe0, 0xff, 0x7f, 0x81, 0x00, 0x40};
-    ComPtr<ID3D11Texture2D> t = makeTexture2D(d, DXGI_FORMAT_R8G8B8A8_TYPELESS, 2, 1, rgba, 8);
+    ComPtr<ID3D11Texture2D> t = makeFormatTexture(d, DXGI_FORMAT_R8G8B8A8_TYPELESS, 2, 1, D3D11_BIND_SHADER_RESOURCE, rgba, 8);
     ASSERT_TRUE(t);
     std::vector<Texel> unorm, srgb, snorm;
     for (int i = 0; i < 2; ++i) {
@@ -171,7 +147,7 @@ TEST(D3D11TypelessFormats, Bc1AndBc3TypelessAreReadAsUnormAndSrgb) {
          {std::tuple{DXGI_FORMAT_BC1_TYPELESS, DXGI_FORMAT_BC1_UNORM, DXGI_FORMAT_BC1_UNORM_SRGB, bc1},
           std::tuple{DXGI_FORMAT_BC3_TYPELESS, DXGI_FORMAT_BC3_UNORM, DXGI_FORMAT_BC3_UNORM_SRGB, bc3}}) {
         Device d;
-        ComPtr<ID3D11Texture2D> t = makeTexture2D(d, typeless, 4, 4, blocks.data(), UINT(blocks.size()));
+        ComPtr<ID3D11Texture2D> t = makeFormatTexture(d, typeless, 4, 4, D3D11_BIND_SHADER_RESOURCE, blocks.data(), UINT(blocks.size()));
         ASSERT_TRUE(t);
         expectTexels(drawWithTexture(d, kTexelLoadShader, viewAs(d, t.Get(), unorm).Get(), 4, 4), std::vector<Texel>(16, rgb565(colour, false)), 1e-6f,
                      "UNORM view");
@@ -189,7 +165,7 @@ TEST(D3D11TypelessFormats, Bc4AndBc5TypelessAreReadAsUnormAndSnorm) {
          {std::tuple{DXGI_FORMAT_BC4_TYPELESS, DXGI_FORMAT_BC4_UNORM, DXGI_FORMAT_BC4_SNORM, bc4, 1},
           std::tuple{DXGI_FORMAT_BC5_TYPELESS, DXGI_FORMAT_BC5_UNORM, DXGI_FORMAT_BC5_SNORM, bc5, 2}}) {
         Device d;
-        ComPtr<ID3D11Texture2D> t = makeTexture2D(d, typeless, 4, 4, blocks.data(), UINT(blocks.size()));
+        ComPtr<ID3D11Texture2D> t = makeFormatTexture(d, typeless, 4, 4, D3D11_BIND_SHADER_RESOURCE, blocks.data(), UINT(blocks.size()));
         ASSERT_TRUE(t);
         const Texel u = {64.0f / 255.0f, channels > 1 ? 64.0f / 255.0f : 0.0f, 0, 1}, s = {64.0f / 127.0f, channels > 1 ? 64.0f / 127.0f : 0.0f, 0, 1};
         expectTexels(drawWithTexture(d, kTexelLoadShader, viewAs(d, t.Get(), unorm).Get(), 4, 4), std::vector<Texel>(16, u), 1e-3f, "UNORM view");
@@ -200,7 +176,7 @@ TEST(D3D11TypelessFormats, Bc4AndBc5TypelessAreReadAsUnormAndSnorm) {
 TEST(D3D11TypelessFormats, ViewsOutsideTheFamilyOrWithoutAFormatAreRefused) {
     Device d;
     const std::vector<std::uint8_t> blocks = bc1Solid(0x1234);
-    ComPtr<ID3D11Texture2D> t = makeTexture2D(d, DXGI_FORMAT_BC1_TYPELESS, 4, 4, blocks.data(), 8);
+    ComPtr<ID3D11Texture2D> t = makeFormatTexture(d, DXGI_FORMAT_BC1_TYPELESS, 4, 4, D3D11_BIND_SHADER_RESOURCE, blocks.data(), 8);
     ASSERT_TRUE(t);
     ComPtr<ID3D11ShaderResourceView> view;
     EXPECT_EQ(d.device->CreateShaderResourceView(t.Get(), nullptr, view.GetAddressOf()), E_INVALIDARG);
@@ -212,14 +188,14 @@ TEST(D3D11TypelessFormats, ViewsOutsideTheFamilyOrWithoutAFormatAreRefused) {
     EXPECT_EQ(d.device->CreateShaderResourceView(t.Get(), &desc, view.GetAddressOf()), E_INVALIDARG);
     EXPECT_NE(lastError().find("DXGI_FORMAT_BC3_UNORM"), std::string::npos) << lastError();
     // A typed texture keeps its own format (D3D casts only typeless ones).
-    ComPtr<ID3D11Texture2D> typed = makeTexture2D(d, DXGI_FORMAT_B8G8R8X8_UNORM, 2, 2, kBgrx, 8);
+    ComPtr<ID3D11Texture2D> typed = makeFormatTexture(d, DXGI_FORMAT_B8G8R8X8_UNORM, 2, 2, D3D11_BIND_SHADER_RESOURCE, kBgrx, 8);
     desc.Format = DXGI_FORMAT_B8G8R8X8_UNORM_SRGB;
     EXPECT_NE(d.device->CreateShaderResourceView(typed.Get(), &desc, view.GetAddressOf()), S_OK);
 }
 
 TEST(D3D11TypelessFormats, RenderTargetViewsWriteTheStoredFormat) {
     Device d;
-    ComPtr<ID3D11Texture2D> t = makeTexture2D(d, DXGI_FORMAT_R8G8B8A8_TYPELESS, 2, 2, nullptr, 0, D3D11_BIND_RENDER_TARGET | D3D11_BIND_SHADER_RESOURCE);
+    ComPtr<ID3D11Texture2D> t = makeFormatTexture(d, DXGI_FORMAT_R8G8B8A8_TYPELESS, 2, 2, D3D11_BIND_RENDER_TARGET | D3D11_BIND_SHADER_RESOURCE, nullptr, 0);
     ASSERT_TRUE(t);
     D3D11_RENDER_TARGET_VIEW_DESC desc;
     desc.Format = DXGI_FORMAT_R8G8B8A8_UNORM;

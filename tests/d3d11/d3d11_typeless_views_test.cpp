@@ -19,30 +19,6 @@ using Texel = std::array<float, 4>;
 
 const char* const kFullScreen = kFullScreenVertexShader;
 
-ComPtr<ID3D11Texture2D> makeTexture(Device& d, DXGI_FORMAT format, UINT width, UINT height, UINT bind, const void* texels = nullptr,
-                                    UINT rowPitch = 0) {
-    D3D11_TEXTURE2D_DESC desc;
-    desc.Width = width;
-    desc.Height = height;
-    desc.MipLevels = desc.ArraySize = 1;
-    desc.Format = format;
-    desc.BindFlags = bind;
-    D3D11_SUBRESOURCE_DATA data{texels, rowPitch, 0};
-    ComPtr<ID3D11Texture2D> t;
-    EXPECT_EQ(d.device->CreateTexture2D(&desc, texels ? &data : nullptr, t.GetAddressOf()), S_OK) << lastError();
-    return t;
-}
-
-ComPtr<ID3D11ShaderResourceView> viewAs(Device& d, ID3D11Texture2D* texture, DXGI_FORMAT format) {
-    D3D11_SHADER_RESOURCE_VIEW_DESC desc;
-    desc.Format = format;
-    desc.ViewDimension = D3D11_SRV_DIMENSION_TEXTURE2D;
-    desc.Texture2D.MipLevels = 1;
-    ComPtr<ID3D11ShaderResourceView> view;
-    EXPECT_EQ(d.device->CreateShaderResourceView(texture, &desc, view.GetAddressOf()), S_OK) << lastError();
-    return view;
-}
-
 ComPtr<ID3D11RenderTargetView> targetAs(Device& d, ID3D11Texture2D* texture, DXGI_FORMAT format) {
     D3D11_RENDER_TARGET_VIEW_DESC desc;
     desc.Format = format;
@@ -90,8 +66,7 @@ constexpr UINT kW = 4, kH = 2;
 
 TEST(D3D11TypelessViews, Rgba8TypelessIsDrawnAndWrittenAsUintAndReadAsUnorm) {
     Device d;
-    ComPtr<ID3D11Texture2D> t = makeTexture(d, DXGI_FORMAT_R8G8B8A8_TYPELESS, kW, kH,
-                                            D3D11_BIND_RENDER_TARGET | D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_UNORDERED_ACCESS);
+    ComPtr<ID3D11Texture2D> t = makeFormatTexture(d, DXGI_FORMAT_R8G8B8A8_TYPELESS, kW, kH, D3D11_BIND_RENDER_TARGET | D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_UNORDERED_ACCESS);
     ASSERT_TRUE(t);
     // The render-target view writes integers: the bytes are those integers.
     ComPtr<ID3D11RenderTargetView> rtv = targetAs(d, t.Get(), DXGI_FORMAT_R8G8B8A8_UINT);
@@ -135,8 +110,7 @@ TEST(D3D11TypelessViews, Rgba16TypelessReadsAsUintAndUnormAndIsDrawnAsUint) {
     Device d;
     std::array<std::uint16_t, kW * kH * 4> texels{};
     for (std::size_t i = 0; i < texels.size(); ++i) texels[i] = std::uint16_t(i * 4099 + 17);
-    ComPtr<ID3D11Texture2D> t = makeTexture(d, DXGI_FORMAT_R16G16B16A16_TYPELESS, kW, kH, D3D11_BIND_RENDER_TARGET | D3D11_BIND_SHADER_RESOURCE,
-                                            texels.data(), kW * 8);
+    ComPtr<ID3D11Texture2D> t = makeFormatTexture(d, DXGI_FORMAT_R16G16B16A16_TYPELESS, kW, kH, D3D11_BIND_RENDER_TARGET | D3D11_BIND_SHADER_RESOURCE, texels.data(), kW * 8);
     ASSERT_TRUE(t);
     const std::vector<Texel> asUint = drawWithTexture(d, std::string(kFullScreen) + R"(
 Texture2D<uint4> T : register(t0);
@@ -167,7 +141,7 @@ float4 ps(float4 pos : SV_Position) : SV_Target { return float4(T.Load(int3(pos.
 TEST(D3D11TypelessViews, Rg32TypelessFloatsReadAsTheirUintBits) {
     Device d;
     const float texels[kW * kH * 2] = {1.5f, -2.25f, 0.1f, 1e30f, -0.0f, 3.0e-38f, 65504.0f, -1.0f, 0.5f, 2.0f, 7.75f, -8.5f, 1.0f / 3.0f, 100.0f, 0.0f, 42.0f};
-    ComPtr<ID3D11Texture2D> t = makeTexture(d, DXGI_FORMAT_R32G32_TYPELESS, kW, kH, D3D11_BIND_SHADER_RESOURCE, texels, kW * 8);
+    ComPtr<ID3D11Texture2D> t = makeFormatTexture(d, DXGI_FORMAT_R32G32_TYPELESS, kW, kH, D3D11_BIND_SHADER_RESOURCE, texels, kW * 8);
     ASSERT_TRUE(t);
     // The bits in 16-bit halves, which a float holds exactly.
     const std::vector<Texel> bits = drawWithTexture(d, std::string(kFullScreen) + R"(
@@ -186,7 +160,7 @@ float4 ps(float4 pos : SV_Position) : SV_Target { uint2 v = T.Load(int3(pos.xy, 
 
 TEST(D3D11TypelessViews, R8TypelessIsWrittenAsUintAndReadAsUnorm) {
     Device d;
-    ComPtr<ID3D11Texture2D> t = makeTexture(d, DXGI_FORMAT_R8_TYPELESS, kW, kH, D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_UNORDERED_ACCESS);
+    ComPtr<ID3D11Texture2D> t = makeFormatTexture(d, DXGI_FORMAT_R8_TYPELESS, kW, kH, D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_UNORDERED_ACCESS);
     ASSERT_TRUE(t);
     D3D11_UNORDERED_ACCESS_VIEW_DESC uavDesc;
     uavDesc.Format = DXGI_FORMAT_R8_UINT;
@@ -208,7 +182,7 @@ RWTexture2D<uint> Out : register(u0);
 
 TEST(D3D11TypelessViews, ViewsOutsideTheFamilyAreRefusedNamingTheFormat) {
     Device d;
-    ComPtr<ID3D11Texture2D> t = makeTexture(d, DXGI_FORMAT_R16G16_TYPELESS, kW, kH, D3D11_BIND_RENDER_TARGET | D3D11_BIND_SHADER_RESOURCE);
+    ComPtr<ID3D11Texture2D> t = makeFormatTexture(d, DXGI_FORMAT_R16G16_TYPELESS, kW, kH, D3D11_BIND_RENDER_TARGET | D3D11_BIND_SHADER_RESOURCE);
     ASSERT_TRUE(t);
     D3D11_RENDER_TARGET_VIEW_DESC desc;
     desc.Format = DXGI_FORMAT_R32_FLOAT;
