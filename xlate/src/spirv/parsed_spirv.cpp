@@ -253,4 +253,19 @@ void runSpirvPasses(std::vector<std::uint32_t>& words, const std::vector<SpirvPa
     if (m.parse(words) && runSpirvPasses(m, passes)) words = m.assemble();
 }
 
+std::optional<std::vector<std::uint32_t>> spirvConstantComponents(const ParsedSpirv& m, std::uint32_t id) {
+    const SpirvInstruction* d = m.definition(id);
+    if (!d) return std::nullopt;
+    if (d->opcode() == spv_op::Constant && d->words.size() == 4) return std::vector<std::uint32_t>{d->words[3]};
+    if (d->opcode() == spv_op::ConstantNull) return std::vector<std::uint32_t>(m.components(d->words[1]).second, 0u);
+    if (d->opcode() != spv_op::ConstantComposite) return std::nullopt;
+    std::vector<std::uint32_t> out;
+    for (size_t k = 3; k < d->words.size(); ++k) {
+        auto part = spirvConstantComponents(m, d->words[k]);
+        if (!part || part->size() != 1) return std::nullopt;
+        out.push_back(part->front());
+    }
+    return out;
+}
+
 }  // namespace fxport::xlate

@@ -7,6 +7,7 @@
 #include <functional>
 #include <initializer_list>
 #include <map>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -130,5 +131,9 @@ bool runSpirvPasses(ParsedSpirv& m, const std::vector<SpirvPass>& passes);
 // The same on `words`, parsed once; they are replaced by the edited module when a pass changed it,
 // and left alone (no pass runs) when SPIRV-Tools cannot parse them.
 void runSpirvPasses(std::vector<std::uint32_t>& words, const std::vector<SpirvPass>& passes);
+
+// The 32-bit components of a constant scalar or vector (OpConstant, OpConstantComposite of them,
+// OpConstantNull); nothing when `id` is not such a constant.
+std::optional<std::vector<std::uint32_t>> spirvConstantComponents(const ParsedSpirv& m, std::uint32_t id);
 
 }  // namespace fxport::xlate

@@ -14,26 +14,10 @@ constexpr std::uint32_t kFClamp = 43, kUClamp = 44, kSClamp = 45, kSmoothStep = 
 constexpr std::uint32_t kOpFSub = 131, kOpFMul = 133;
 constexpr std::uint32_t kOne = 0x3f800000u, kTwo = 0x40000000u, kThree = 0x40400000u;
 
-// The 32-bit components of a constant scalar or vector, nothing for any other value.
-std::optional<std::vector<std::uint32_t>> constantBits(const ParsedSpirv& m, std::uint32_t id) {
-    const SpirvInstruction* d = m.definition(id);
-    if (!d) return std::nullopt;
-    if (d->opcode() == spv_op::Constant && d->words.size() == 4) return std::vector<std::uint32_t>{d->words[3]};
-    if (d->opcode() == spv_op::ConstantNull) return std::vector<std::uint32_t>(m.components(d->words[1]).second, 0u);
-    if (d->opcode() != spv_op::ConstantComposite) return std::nullopt;
-    std::vector<std::uint32_t> out;
-    for (size_t k = 3; k < d->words.size(); ++k) {
-        auto part = constantBits(m, d->words[k]);
-        if (!part || part->size() != 1) return std::nullopt;
-        out.push_back(part->front());
-    }
-    return out;
-}
-
 // Whether `low` and `high` are constants with low < high (strictly, for smoothstep) or low <= high
 // in every component, read as `kind` ('f' float, 's' int, 'u' uint).
 bool constantsInOrder(const ParsedSpirv& m, std::uint32_t low, std::uint32_t high, char kind, bool strict) {
-    auto a = constantBits(m, low), b = constantBits(m, high);
+    auto a = spirvConstantComponents(m, low), b = spirvConstantComponents(m, high);
     if (!a || !b || a->size() != b->size()) return false;
     for (size_t k = 0; k < a->size(); ++k) {
         bool less = false, equal = (*a)[k] == (*b)[k];

@@ -9,23 +9,6 @@ namespace fxport::xlate {
 
 namespace {
 
-// The 32-bit components of a constant scalar or vector (OpConstant, OpConstantComposite of them,
-// OpConstantNull); nothing when `id` is not such a constant.
-std::optional<std::vector<std::uint32_t>> constantComponents(const ParsedSpirv& m, std::uint32_t id) {
-    const SpirvInstruction* d = m.definition(id);
-    if (!d) return std::nullopt;
-    if (d->opcode() == spv_op::Constant && d->words.size() == 4) return std::vector<std::uint32_t>{d->words[3]};
-    if (d->opcode() == spv_op::ConstantNull) return std::vector<std::uint32_t>(m.components(d->words[1]).second, 0u);
-    if (d->opcode() != spv_op::ConstantComposite) return std::nullopt;
-    std::vector<std::uint32_t> out;
-    for (size_t k = 3; k < d->words.size(); ++k) {
-        auto part = constantComponents(m, d->words[k]);
-        if (!part || part->size() != 1) return std::nullopt;
-        out.push_back(part->front());
-    }
-    return out;
-}
-
 bool isShift(std::uint32_t op) {
     return op == spv_op::ShiftLeftLogical || op == spv_op::ShiftRightLogical || op == spv_op::ShiftRightArithmetic;
 }
@@ -39,7 +22,7 @@ bool maskShiftCounts(ParsedSpirv& m) {
         if (!isShift(inst.opcode()) || inst.words.size() != 5) return out.push_back(inst);
         const std::uint32_t count = inst.words[4];
         bool small = false;  // a constant count below 32 (`x << 2`) stays as it is
-        if (auto c = constantComponents(m, count)) {
+        if (auto c = spirvConstantComponents(m, count)) {
             small = true;
             for (std::uint32_t v : *c) small = small && v < 32;
         }
@@ -78,7 +61,7 @@ bool foldIntMinByMinusOne(ParsedSpirv& m) {
         const std::uint32_t op = inst.opcode();
         if ((op != spv_op::SDiv && op != spv_op::SRem) || inst.words.size() != 5)
             return out.push_back(inst);
-        auto a = constantComponents(m, inst.words[3]), b = constantComponents(m, inst.words[4]);
+        auto a = spirvConstantComponents(m, inst.words[3]), b = spirvConstantComponents(m, inst.words[4]);
         if (!a || !b || a->size() != b->size()) return out.push_back(inst);
         bool trap = false;
         for (size_t k = 0; k < a->size(); ++k) {
@@ -155,7 +138,7 @@ bool intMinByMinusOneInFloats(ParsedSpirv& m) {
     bool changed = false;
     m.rewrite([&](const SpirvInstruction& inst, std::vector<SpirvInstruction>& out) {
         if (inst.opcode() != spv_op::SDiv || inst.words.size() != 5) return out.push_back(inst);
-        auto a = constantComponents(m, inst.words[3]), b = constantComponents(m, inst.words[4]);
+        auto a = spirvConstantComponents(m, inst.words[3]), b = spirvConstantComponents(m, inst.words[4]);
         if (!a || !b || a->size() != b->size()) return out.push_back(inst);
         bool overflows = false;
         for (size_t k = 0; k < a->size(); ++k) overflows = overflows || ((*a)[k] == 0x80000000u && (*b)[k] == 0xFFFFFFFFu);
